@@ -1,0 +1,256 @@
+#include "Controller.h"
+#include "Logging.h"
+#include "transport/Transport.h"
+#include <QtMath>
+
+namespace stepdeck {
+
+QString linkStateName(LinkState state)
+{
+    switch (state) {
+    case LinkState::Disconnected: return QStringLiteral("disconnected");
+    case LinkState::Connecting: return QStringLiteral("connecting");
+    case LinkState::Connected: return QStringLiteral("connected");
+    case LinkState::Lost: return QStringLiteral("lost");
+    }
+    return {};
+}
+
+Controller::Controller(Transport* transport, const ControllerOptions& options, QObject* parent)
+    : QObject(parent), m_transport(transport), m_options(options)
+{
+    qRegisterMetaType<stepdeck::LinkState>();
+    qRegisterMetaType<stepdeck::MachineStatus>();
+    qRegisterMetaType<stepdeck::CommandResult>();
+    qRegisterMetaType<stepdeck::TrafficRecord>();
+    qRegisterMetaType<stepdeck::ParameterSet>();
+    m_jogTimer.setInterval(qMax(5, m_options.jogTickMs));
+    m_jogTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_jogTimer, &QTimer::timeout, this, &Controller::onJogTick);
+    m_jogClock.start();
+    m_trafficClock.start();
+}
+
+Controller::~Controller() = default;
+
+void Controller::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    AxisVector relative;
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
+        const AxisStatus axis = m_status.axes.value(it.key());
+        if (!m_status.axes.contains(it.key())) {
+            finishError(id, ErrorKind::InvalidValue,
+                        tr("this machine has no axis %1").arg(axisName(it.key())));
+            return;
+        }
+        if (!axis.positionKnown) {
+            finishError(id, ErrorKind::Refused,
+                        tr("absolute move refused: position of axis %1 is unknown, reference it "
+                           "first")
+                            .arg(axisName(it.key())));
+            return;
+        }
+        relative.insert(it.key(), it.value() - axis.position);
+    }
+    moveRelative(id, relative);
+}
+
+void Controller::feed(RequestId id, const AxisVector&)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no feed mode"));
+}
+
+void Controller::feedStream(RequestId id, const QVector<AxisVector>&)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no single-step feed stream"));
+}
+
+void Controller::velocityMove(RequestId id, const AxisVector&)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no velocity move"));
+}
+
+void Controller::reset(RequestId id)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no reset"));
+}
+
+void Controller::setSpindle(RequestId id, int)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no spindle output"));
+}
+
+void Controller::setCoolant(RequestId id, bool)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no coolant output"));
+}
+
+void Controller::setDrivePower(RequestId id, int)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no drive power setting"));
+}
+
+QString Controller::jogRefusal() const
+{
+    if (m_linkState != LinkState::Connected)
+        return tr("jog refused: not connected");
+    if (m_status.panic)
+        return tr("jog refused: emergency stop is active");
+    return {};
+}
+
+void Controller::setJogVelocity(const AxisVelocities& targets)
+{
+    bool anyNonZero = false;
+    for (double v : targets)
+        anyNonZero = anyNonZero || v != 0.0;
+    if (anyNonZero) {
+        const QString refusal = jogRefusal();
+        if (!refusal.isEmpty()) {
+            m_jogRamp.releaseAll();
+            Q_EMIT jogRefused(refusal);
+            return;
+        }
+    }
+    const Capabilities caps = capabilities();
+    m_jogRamp.setMaxSpeed(caps.maxJogSpeed);
+    if (m_options.jogAccelerationStepsPerS2 <= 0)
+        m_jogRamp.setAcceleration(caps.defaultJogAcceleration);
+    AxisVelocities known;
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
+        if (caps.axes.contains(it.key()))
+            known.insert(it.key(), it.value());
+    }
+    m_jogRamp.setTargets(known);
+    m_leaseRenewedMs = m_jogClock.elapsed();
+    if (!m_jogTimer.isActive() && !m_jogRamp.isIdle()) {
+        m_lastJogTickMs = m_jogClock.elapsed();
+        m_jogTimer.start();
+        onJogTick(); // first step now, not one tick late
+    }
+}
+
+void Controller::endJog()
+{
+    m_jogRamp.releaseAll();
+}
+
+void Controller::setJogAcceleration(double stepsPerS2)
+{
+    if (stepsPerS2 > 0) {
+        m_options.jogAccelerationStepsPerS2 = stepsPerS2;
+        m_jogRamp.setAcceleration(stepsPerS2);
+    }
+}
+
+void Controller::onJogTick()
+{
+    const qint64 now = m_jogClock.elapsed();
+    if (now - m_leaseRenewedMs > m_options.jogLeaseMs) {
+        // The input stopped renewing (frozen GUI, crashed input, dropped key-up): ramp down.
+        for (Axis a : capabilities().axes) {
+            if (m_jogRamp.target(a) != 0.0) {
+                qCInfo(lcJog) << "jog lease expired, ramping down";
+                break;
+            }
+        }
+        m_jogRamp.releaseAll();
+    }
+    const double dt = qMax<qint64>(1, now - m_lastJogTickMs) / 1000.0;
+    m_lastJogTickMs = now;
+    const AxisVelocities before = m_jogRamp.currentVelocities();
+    const AxisVelocities rates = m_jogRamp.advance(dt);
+
+    // Host-side position estimate: integrate the rates that were in force during dt.
+    for (auto it = before.cbegin(); it != before.cend(); ++it) {
+        if (!m_status.axes.contains(it.key()))
+            continue;
+        AxisStatus& axis = m_status.axes[it.key()];
+        const double avg = (it.value() + rates.value(it.key(), 0.0)) / 2.0;
+        if (avg != 0.0) {
+            axis.position += qint64(qRound64(avg * dt));
+            axis.positionEstimated = true;
+        }
+    }
+    AxisVelocities rounded;
+    for (auto it = rates.cbegin(); it != rates.cend(); ++it)
+        rounded.insert(it.key(), double(qRound64(it.value())));
+    if (rounded != m_lastAppliedJog) {
+        m_lastAppliedJog = rounded;
+        for (auto it = rounded.cbegin(); it != rounded.cend(); ++it) {
+            if (m_status.axes.contains(it.key()))
+                m_status.axes[it.key()].commandedVelocity = it.value();
+        }
+        applyJogVelocity(rounded);
+    }
+    if (m_jogRamp.isIdle())
+        m_jogTimer.stop();
+}
+
+void Controller::haltJogImmediately()
+{
+    m_jogRamp.reset();
+    m_jogTimer.stop();
+    m_lastAppliedJog.clear();
+    for (AxisStatus& axis : m_status.axes) {
+        axis.commandedVelocity = 0;
+        axis.jogging = false;
+    }
+}
+
+void Controller::setLinkState(LinkState state, const QString& reason)
+{
+    if (state == m_linkState)
+        return;
+    m_linkState = state;
+    qCInfo(lcController) << "link" << linkStateName(state) << reason;
+    if (state != LinkState::Connected) {
+        haltJogImmediately();
+        m_status.commFault = state == LinkState::Lost;
+        if (state == LinkState::Lost)
+            ++m_status.commFaultCount;
+    } else {
+        m_status.commFault = false;
+    }
+    if (state == LinkState::Connecting || state == LinkState::Lost)
+        markAllUnreferenced();
+    Q_EMIT linkStateChanged(state, reason);
+    publishStatus();
+}
+
+void Controller::publishStatus()
+{
+    Q_EMIT statusChanged(m_status);
+}
+
+void Controller::markAllUnreferenced()
+{
+    for (AxisStatus& axis : m_status.axes) {
+        axis.referenced = false;
+        axis.positionKnown = false;
+    }
+}
+
+void Controller::finishOk(RequestId id, const QVariant& value)
+{
+    Q_EMIT requestFinished(CommandResult::success(id, value));
+}
+
+void Controller::finishError(RequestId id, ErrorKind kind, const QString& message)
+{
+    qCInfo(lcController) << "request" << id << "failed:" << message;
+    Q_EMIT requestFinished(CommandResult::failure(id, kind, message));
+}
+
+void Controller::recordTraffic(TrafficRecord::Direction direction, const QByteArray& bytes,
+                               bool poll)
+{
+    TrafficRecord record;
+    record.direction = direction;
+    record.timestampUs = m_trafficClock.nsecsElapsed() / 1000;
+    record.bytes = bytes;
+    record.poll = poll;
+    Q_EMIT traffic(record);
+}
+
+} // namespace stepdeck

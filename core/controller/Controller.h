@@ -1,0 +1,132 @@
+#pragma once
+#include "controller/ControllerOptions.h"
+#include "controller/JogRamp.h"
+#include "model/Capabilities.h"
+#include "model/CommandResult.h"
+#include "model/MachineStatus.h"
+#include "model/ParameterSchema.h"
+#include "model/Traffic.h"
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+namespace stepdeck {
+
+class Transport;
+
+enum class LinkState { Disconnected, Connecting, Connected, Lost };
+QString linkStateName(LinkState state);
+
+// The protocol adapter for one link (one board, or one bus of addressed drives).
+// Lives in the controller thread (see ControllerSession); never blocks. Every operation that
+// takes a RequestId ends with exactly one requestFinished() carrying that id.
+//
+// The base class owns what is the same for every model: link state, the normalised status,
+// the jog lease and the host-side JogRamp. Adapters implement the protocol.
+class Controller : public QObject
+{
+    Q_OBJECT
+public:
+    Controller(Transport* transport, const ControllerOptions& options, QObject* parent = nullptr);
+    ~Controller() override;
+
+    virtual QString modelId() const = 0;
+    virtual Capabilities capabilities() const = 0;
+    virtual ParameterSchema schema() const = 0;
+
+    LinkState linkState() const { return m_linkState; }
+    const MachineStatus& status() const { return m_status; }
+    Transport* transport() const { return m_transport; }
+    const ControllerOptions& options() const { return m_options; }
+
+    // --- link ---
+    virtual void openLink(RequestId id) = 0;
+    virtual void closeLink() = 0;
+
+    // --- parameters (validated against schema(); invalid values are never sent) ---
+    virtual void readParameters(RequestId id, const QStringList& names) = 0;
+    virtual void writeParameters(RequestId id, const ParameterSet& values, bool verify) = 0;
+
+    // --- motion; refused with ErrorKind::Refused where the manual forbids it ---
+    virtual void moveRelative(RequestId id, const AxisVector& steps) = 0;
+    // Default: converts to a relative move from the host-tracked positions; refused for axes
+    // whose position is unknown.
+    virtual void moveAbsolute(RequestId id, const AxisVector& targets);
+    virtual void feed(RequestId id, const AxisVector& steps);
+    // A stream of single steps: per axis -1, 0 or +1 per step (E-LAB DC2). Default: unsupported.
+    virtual void feedStream(RequestId id, const QVector<AxisVector>& steps);
+    virtual void reference(RequestId id, const QMap<Axis, int>& directions) = 0;
+    virtual void velocityMove(RequestId id, const AxisVector& stepsPerS);
+    // Stop and panic overtake everything queued.
+    virtual void stop(RequestId id) = 0;
+    virtual void panic(RequestId id) = 0;
+    virtual void reset(RequestId id);
+
+    // --- auxiliaries (default: unsupported) ---
+    virtual void setSpindle(RequestId id, int rpm);
+    virtual void setCoolant(RequestId id, bool on);
+    virtual void setDrivePower(RequestId id, int percent);
+
+    // --- status and console ---
+    virtual void refreshStatus(RequestId id) = 0; // one complete status read
+    virtual void sendRaw(RequestId id, const QByteArray& bytes) = 0;
+    virtual void setPollInterval(int ms) = 0;
+
+    // --- jog: a velocity lease, ramped by the core JogRamp in this thread ---
+    // Renews the lease; axes not named keep their target. Unless renewed within
+    // options().jogLeaseMs, every target drops to zero and the axes ramp down by themselves.
+    void setJogVelocity(const AxisVelocities& targets);
+    void endJog(); // release every axis (ramps down)
+    void setJogAcceleration(double stepsPerS2);
+    const JogRamp& jogRamp() const { return m_jogRamp; }
+
+Q_SIGNALS:
+    void linkStateChanged(stepdeck::LinkState state, const QString& reason);
+    void statusChanged(const stepdeck::MachineStatus& status);
+    void requestFinished(const stepdeck::CommandResult& result);
+    void errorOccurred(const QString& message);
+    void traffic(const stepdeck::TrafficRecord& record);
+    void pollRateChanged(double hz);
+    void jogRefused(const QString& reason);
+
+protected:
+    // Sends the ramped jog rates (already limited by the ramp). Adapters coalesce: only the
+    // newest rates matter. Returns false if the rates could not be sent (refusal reported).
+    virtual void applyJogVelocity(const AxisVelocities& stepsPerS) = 0;
+    // Non-empty: why a jog cannot start now (not connected, panic active, ...).
+    virtual QString jogRefusal() const;
+
+    void setLinkState(LinkState state, const QString& reason = {});
+    MachineStatus& mutableStatus() { return m_status; }
+    void publishStatus();
+    // After panic, reset, reconnect or an unexpected stop: nothing is referenced, positions
+    // are unknown until a reference run.
+    void markAllUnreferenced();
+    // Link lost or panic: rates to zero at once, without sending anything.
+    void haltJogImmediately();
+    void finish(const CommandResult& result) { Q_EMIT requestFinished(result); }
+    void finishOk(RequestId id, const QVariant& value = {});
+    void finishError(RequestId id, ErrorKind kind, const QString& message);
+    void recordTraffic(TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);
+    bool jogActive() const { return !m_jogRamp.isIdle(); }
+
+private:
+    void onJogTick();
+
+    QPointer<Transport> m_transport;
+    ControllerOptions m_options;
+    LinkState m_linkState = LinkState::Disconnected;
+    MachineStatus m_status;
+    JogRamp m_jogRamp;
+    QTimer m_jogTimer{this}; // parented: moves with the controller to its thread
+    QElapsedTimer m_jogClock;
+    qint64 m_lastJogTickMs = 0;
+    qint64 m_leaseRenewedMs = 0;
+    AxisVelocities m_lastAppliedJog;
+    QElapsedTimer m_trafficClock;
+};
+
+} // namespace stepdeck
+
+Q_DECLARE_METATYPE(stepdeck::LinkState)

@@ -1,0 +1,18 @@
+#pragma once
+#include "model/Axis.h"
+
+namespace stepdeck {
+
+struct ControllerOptions
+{
+    // Bus address per axis for multi-drive links (Nanotec: X=1,Y=2,Z=3). Empty: model default.
+    QMap<Axis, int> axisAddresses;
+    int pollIntervalMs = 50;
+    int missedPollsForLinkLoss = 3;
+    int commandTimeoutMs = 500;
+    int jogLeaseMs = 300;           // a jog rate not renewed within this ramps to zero
+    int jogTickMs = 20;             // JogRamp update period
+    double jogAccelerationStepsPerS2 = 0; // 0: the model's default
+};
+
+} // namespace stepdeck

@@ -1,0 +1,247 @@
+#include "ControllerSession.h"
+#include "Logging.h"
+#include "transport/LoopbackTransport.h"
+#include "transport/TransportFactory.h"
+#include <QCoreApplication>
+#include <QEvent>
+
+namespace stepdeck {
+
+namespace {
+// A posted function: lets the session choose the event priority of each call, so stop,
+// panic and jog updates overtake ordinary work waiting in the controller thread's queue.
+class FunctionEvent : public QEvent
+{
+public:
+    static QEvent::Type eventType()
+    {
+        static const int type = QEvent::registerEventType();
+        return QEvent::Type(type);
+    }
+    explicit FunctionEvent(std::function<void()> fn) : QEvent(eventType()), m_fn(std::move(fn)) {}
+    void run() { m_fn(); }
+
+private:
+    std::function<void()> m_fn;
+};
+
+class ThreadContext : public QObject
+{
+public:
+    using QObject::QObject;
+    bool event(QEvent* e) override
+    {
+        if (e->type() == FunctionEvent::eventType()) {
+            static_cast<FunctionEvent*>(e)->run();
+            return true;
+        }
+        return QObject::event(e);
+    }
+};
+} // namespace
+
+ControllerSession::ControllerSession(QObject* parent) : QObject(parent)
+{
+    m_thread.setObjectName(QStringLiteral("controller"));
+}
+
+ControllerSession::~ControllerSession()
+{
+    destroy();
+}
+
+bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
+{
+    destroy();
+    m_model = findModel(spec.modelId);
+    if (!m_model) {
+        if (error)
+            *error = tr("unknown controller model '%1' (known: %2)")
+                         .arg(spec.modelId, modelIds().join(QStringLiteral(", ")));
+        return false;
+    }
+    m_spec = spec;
+    m_thread.start();
+    m_context = new ThreadContext;
+    m_context->moveToThread(&m_thread);
+
+    const ModelInfo* model = m_model;
+    Controller* controller = nullptr;
+    Simulator* simulator = nullptr;
+    ThreadContext* context = static_cast<ThreadContext*>(m_context);
+    // Build the stack inside the controller thread so every QObject has the right affinity.
+    QMetaObject::invokeMethod(
+        m_context,
+        [&] {
+            Transport* transport = nullptr;
+            if (spec.port == QLatin1String("sim")) {
+                auto [hostEnd, deviceEnd] = LoopbackTransport::createPair(context);
+                SimulatorOptions simOptions = spec.simulator;
+                simOptions.line = model->line;
+                simulator = model->createSimulator(simOptions);
+                simulator->setParent(context);
+                deviceEnd->open(model->line);
+                simulator->attach(deviceEnd);
+                transport = hostEnd;
+            } else {
+                transport = createTransport(spec.port, context);
+            }
+            controller = model->createController(transport, spec.options);
+            controller->setParent(context);
+        },
+        Qt::BlockingQueuedConnection);
+    m_controller = controller;
+    m_simulator = simulator;
+
+    connect(m_controller, &Controller::linkStateChanged, this,
+            [this](LinkState state, const QString& reason) {
+                m_linkState = state;
+                Q_EMIT linkStateChanged(state, reason);
+            });
+    connect(m_controller, &Controller::statusChanged, this,
+            [this](const MachineStatus& status) {
+                m_status = status;
+                Q_EMIT statusChanged(status);
+            });
+    connect(m_controller, &Controller::pollRateChanged, this, [this](double hz) {
+        m_pollRateHz = hz;
+        Q_EMIT pollRateChanged(hz);
+    });
+    connect(m_controller, &Controller::requestFinished, this, &ControllerSession::requestFinished);
+    connect(m_controller, &Controller::errorOccurred, this, &ControllerSession::errorOccurred);
+    connect(m_controller, &Controller::traffic, this, &ControllerSession::traffic);
+    connect(m_controller, &Controller::jogRefused, this, &ControllerSession::jogRefused);
+    qCInfo(lcSession) << "created" << spec.modelId << "on" << spec.port;
+    return true;
+}
+
+void ControllerSession::destroy()
+{
+    if (!m_context)
+        return;
+    QObject* context = m_context;
+    QMetaObject::invokeMethod(
+        context,
+        [context] {
+            for (Controller* c : context->findChildren<Controller*>())
+                c->closeLink();
+            delete context;
+        },
+        Qt::BlockingQueuedConnection);
+    m_thread.quit();
+    m_thread.wait();
+    m_context = nullptr;
+    m_controller = nullptr;
+    m_simulator = nullptr;
+    m_linkState = LinkState::Disconnected;
+}
+
+Capabilities ControllerSession::capabilities() const
+{
+    return m_model ? m_model->capabilities : Capabilities{};
+}
+
+ParameterSchema ControllerSession::schema() const
+{
+    return m_model ? m_model->schema : ParameterSchema{};
+}
+
+void ControllerSession::post(std::function<void(Controller*)> fn, bool urgent)
+{
+    if (!m_controller)
+        return;
+    Controller* controller = m_controller;
+    QCoreApplication::postEvent(m_context, new FunctionEvent([controller, fn] { fn(controller); }),
+                                urgent ? Qt::HighEventPriority : Qt::NormalEventPriority);
+}
+
+#define STEPDECK_POST(call, urgent)                                                               \
+    const RequestId id = nextId();                                                                \
+    if (!m_controller) {                                                                          \
+        Q_EMIT requestFinished(                                                                   \
+            CommandResult::failure(id, ErrorKind::LinkDown, tr("no controller session")));        \
+        return id;                                                                                \
+    }                                                                                             \
+    post([=](Controller* c) { c->call; }, urgent);                                                \
+    return id;
+
+RequestId ControllerSession::open() { STEPDECK_POST(openLink(id), false) }
+void ControllerSession::close()
+{
+    post([](Controller* c) { c->closeLink(); }, true);
+}
+RequestId ControllerSession::readParameters(const QStringList& names)
+{
+    STEPDECK_POST(readParameters(id, names), false)
+}
+RequestId ControllerSession::writeParameters(const ParameterSet& values, bool verify)
+{
+    STEPDECK_POST(writeParameters(id, values, verify), false)
+}
+RequestId ControllerSession::moveRelative(const AxisVector& steps)
+{
+    STEPDECK_POST(moveRelative(id, steps), false)
+}
+RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
+{
+    STEPDECK_POST(moveAbsolute(id, targets), false)
+}
+RequestId ControllerSession::feed(const AxisVector& steps) { STEPDECK_POST(feed(id, steps), false) }
+RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
+{
+    STEPDECK_POST(feedStream(id, steps), false)
+}
+RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
+{
+    STEPDECK_POST(reference(id, directions), false)
+}
+RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS)
+{
+    STEPDECK_POST(velocityMove(id, stepsPerS), false)
+}
+RequestId ControllerSession::stop() { STEPDECK_POST(stop(id), true) }
+RequestId ControllerSession::panic() { STEPDECK_POST(panic(id), true) }
+RequestId ControllerSession::reset() { STEPDECK_POST(reset(id), true) }
+RequestId ControllerSession::setSpindle(int rpm) { STEPDECK_POST(setSpindle(id, rpm), false) }
+RequestId ControllerSession::setCoolant(bool on) { STEPDECK_POST(setCoolant(id, on), false) }
+RequestId ControllerSession::setDrivePower(int percent)
+{
+    STEPDECK_POST(setDrivePower(id, percent), false)
+}
+RequestId ControllerSession::refreshStatus() { STEPDECK_POST(refreshStatus(id), false) }
+RequestId ControllerSession::sendRaw(const QByteArray& bytes)
+{
+    STEPDECK_POST(sendRaw(id, bytes), false)
+}
+
+#undef STEPDECK_POST
+
+void ControllerSession::setPollInterval(int ms)
+{
+    post([ms](Controller* c) { c->setPollInterval(ms); });
+}
+
+void ControllerSession::setJogVelocity(const AxisVelocities& targets)
+{
+    post([targets](Controller* c) { c->setJogVelocity(targets); }, true);
+}
+
+void ControllerSession::endJog()
+{
+    post([](Controller* c) { c->endJog(); }, true);
+}
+
+void ControllerSession::setJogAcceleration(double stepsPerS2)
+{
+    post([stepsPerS2](Controller* c) { c->setJogAcceleration(stepsPerS2); });
+}
+
+void ControllerSession::withSimulator(std::function<void(Simulator*)> fn)
+{
+    if (!m_simulator)
+        return;
+    Simulator* sim = m_simulator;
+    QCoreApplication::postEvent(m_context, new FunctionEvent([sim, fn] { fn(sim); }));
+}
+
+} // namespace stepdeck

@@ -1,0 +1,96 @@
+#pragma once
+#include "controller/Controller.h"
+#include "protocols/Registry.h"
+#include <QObject>
+#include <QThread>
+#include <atomic>
+#include <functional>
+
+namespace stepdeck {
+
+struct ConnectionSpec
+{
+    QString modelId;
+    QString port; // serial device path, "tcp://HOST:PORT" or "sim" (in-process simulator)
+    ControllerOptions options;
+    SimulatorOptions simulator; // used for port "sim"
+};
+
+// The GUI's and CLI's handle on a controller. It runs the controller stack (transport,
+// adapter, poller, jog ramp and, for "sim", the simulator) in its own thread and talks to it
+// only through queued calls and signals, so the caller never blocks on I/O.
+// Stop, panic and jog updates are posted with high event priority: they overtake queued work.
+class ControllerSession : public QObject
+{
+    Q_OBJECT
+public:
+    explicit ControllerSession(QObject* parent = nullptr);
+    ~ControllerSession() override;
+
+    // Creates the stack for spec in the controller thread. Returns false and says why when
+    // the model is unknown. The link opens with open().
+    bool create(const ConnectionSpec& spec, QString* error);
+    void destroy();
+    bool isCreated() const { return m_controller != nullptr; }
+
+    const ConnectionSpec& spec() const { return m_spec; }
+    const ModelInfo* model() const { return m_model; }
+    Capabilities capabilities() const;
+    ParameterSchema schema() const;
+    LinkState linkState() const { return m_linkState; }
+    const MachineStatus& status() const { return m_status; }
+    double pollRateHz() const { return m_pollRateHz; }
+    bool isSimulated() const { return m_simulator != nullptr; }
+
+    RequestId open();
+    void close();
+    RequestId readParameters(const QStringList& names);
+    RequestId writeParameters(const ParameterSet& values, bool verify);
+    RequestId moveRelative(const AxisVector& steps);
+    RequestId moveAbsolute(const AxisVector& targets);
+    RequestId feed(const AxisVector& steps);
+    RequestId feedStream(const QVector<AxisVector>& steps);
+    RequestId reference(const QMap<Axis, int>& directions);
+    RequestId velocityMove(const AxisVector& stepsPerS);
+    RequestId stop();
+    RequestId panic();
+    RequestId reset();
+    RequestId setSpindle(int rpm);
+    RequestId setCoolant(bool on);
+    RequestId setDrivePower(int percent);
+    RequestId refreshStatus();
+    RequestId sendRaw(const QByteArray& bytes);
+    void setPollInterval(int ms);
+    void setJogVelocity(const AxisVelocities& targets);
+    void endJog();
+    void setJogAcceleration(double stepsPerS2);
+
+    // Runs fn on the in-process simulator in the controller thread (tests, fault injection).
+    void withSimulator(std::function<void(Simulator*)> fn);
+
+Q_SIGNALS:
+    void linkStateChanged(stepdeck::LinkState state, const QString& reason);
+    void statusChanged(const stepdeck::MachineStatus& status);
+    void requestFinished(const stepdeck::CommandResult& result);
+    void errorOccurred(const QString& message);
+    void traffic(const stepdeck::TrafficRecord& record);
+    void pollRateChanged(double hz);
+    void jogRefused(const QString& reason);
+
+private:
+    RequestId nextId() { return ++m_lastId; }
+    void post(std::function<void(Controller*)> fn, bool urgent = false);
+
+    ConnectionSpec m_spec;
+    const ModelInfo* m_model = nullptr;
+    QThread m_thread;
+    QObject* m_context = nullptr;       // lives in m_thread; owns the stack
+    Controller* m_controller = nullptr; // lives in m_thread
+    Simulator* m_simulator = nullptr;   // lives in m_thread
+    LinkState m_linkState = LinkState::Disconnected;
+    MachineStatus m_status;
+    double m_pollRateHz = 0;
+    std::atomic<RequestId> m_lastId{0};
+};
+
+} // namespace stepdeck

@@ -1,0 +1,55 @@
+#pragma once
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+#include <deque>
+
+namespace stepdeck {
+
+// Schedules status polls for an adapter. It never has more than one poll in flight and it
+// yields the line to commands: it only says a poll is due (pollDue), the adapter starts it
+// when its line is free and reports back. N consecutive unanswered polls mean link lost.
+class StatusPoller : public QObject
+{
+    Q_OBJECT
+public:
+    explicit StatusPoller(QObject* parent = nullptr);
+
+    void setInterval(int ms); // default 50 ms
+    int interval() const { return m_intervalMs; }
+    void setMissLimit(int misses); // default 3
+    int missLimit() const { return m_missLimit; }
+
+    void start();
+    void stop();
+    bool isActive() const { return m_active; }
+
+    bool isDue() const;         // active, interval elapsed since last start, none in flight
+    bool isPollInFlight() const { return m_inFlight; }
+    void pollStarted();
+    void pollFinished(bool answered); // answered=false: timeout or garbage
+    int consecutiveMisses() const { return m_misses; }
+
+    // Completed polls per second over the last second.
+    double achievedRateHz() const;
+
+Q_SIGNALS:
+    void pollDue();
+    void linkLost(int missedPolls);
+    void rateChanged(double hz);
+
+private:
+    void onTick();
+
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    int m_intervalMs = 50;
+    int m_missLimit = 3;
+    bool m_active = false;
+    bool m_inFlight = false;
+    qint64 m_lastStartMs = -1;
+    int m_misses = 0;
+    std::deque<qint64> m_completions; // ms timestamps of answered polls in the last second
+};
+
+} // namespace stepdeck

@@ -1,0 +1,39 @@
+#pragma once
+#include "Axis.h"
+#include "LineSettings.h"
+
+namespace stepdeck {
+
+enum class MotionMode {
+    Jog,          // continuous, host-ramped or drive-ramped rate per axis
+    RelativeMove, // positioning by signed step counts
+    AbsoluteMove, // positioning to a target (host-tracked where the model has no absolute move)
+    Feed,         // constant-rate linear feed
+    FeedStream,   // single-step stream (E-LAB DC2)
+    Reference,    // reference (homing) run with a direction per axis
+    Velocity,     // velocity move until stopped
+};
+
+// What a model can do. Drives UI enabling, CLI checks and core refusals.
+struct Capabilities
+{
+    QList<Axis> axes;
+    QList<MotionMode> motionModes;
+    bool spindle = false;
+    bool coolant = false;
+    bool drivePower = false;
+    bool temperature = false;
+    bool startButton = false;
+    bool positionReadback = false; // the device reports absolute positions
+    bool rampedStop = false;
+    bool panic = true;
+    bool resetLine = false;      // hardware reset via a modem line (E-LAB: RTS)
+    bool multiDrive = false;     // several addressed drives on one link (Nanotec)
+    bool hostRampedJog = false;  // the host must ramp jog rates itself (E-LAB manual, jog mode)
+    double maxJogSpeed = 1000;   // steps/s, the ceiling a jog source may request
+    double defaultJogAcceleration = 2000; // steps/s^2 for the host-side JogRamp
+
+    bool has(MotionMode mode) const { return motionModes.contains(mode); }
+};
+
+} // namespace stepdeck

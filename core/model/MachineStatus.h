@@ -1,0 +1,59 @@
+#pragma once
+#include "Axis.h"
+#include <QJsonObject>
+#include <QMetaType>
+#include <QVariantMap>
+#include <optional>
+
+namespace stepdeck {
+
+// Normalised per-axis status. Every model maps its own status words onto this.
+struct AxisStatus
+{
+    bool moving = false;          // positioning, feed, reference or velocity move running
+    bool jogging = false;         // in jog mode with a non-zero rate
+    bool limitSwitch = false;     // a limit switch of this axis is active
+    bool referenceSwitch = false; // the reference switch of this axis is active
+    bool referenced = false;      // referenced since the last panic, reset or reconnect
+    bool positionKnown = false;   // false until referenced (or set by the operator)
+    bool positionEstimated = false; // integrated from jog/velocity rates, not confirmed
+    qint64 position = 0;          // steps, host-side bookkeeping unless the model reads it back
+    double commandedVelocity = 0; // steps/s the host currently commands (jog ramp output)
+};
+
+// One drive on the link (E-LAB: the board; Nanotec: one bus address per axis).
+struct DriveStatus
+{
+    int address = 0;
+    QList<Axis> axes;
+    bool responding = true;
+    QString firmware;
+    QString detail; // model-specific plain-words state ("ready", "position error", ...)
+};
+
+struct MachineStatus
+{
+    bool driveOn = false;
+    bool spindleOn = false;
+    bool busy = false;
+    bool overTemperature = false;
+    bool setupIncomplete = false;
+    bool panic = false;     // emergency stop active (button or host panic not yet cleared)
+    bool commFault = false; // link lost or replies missing
+    std::optional<bool> startButton;
+    std::optional<double> temperatureCelsius;
+    QMap<Axis, AxisStatus> axes;
+    QList<DriveStatus> drives;
+    QVariantMap raw; // the model's raw words, e.g. {"machineState":128,"axeState":5}
+    quint64 resyncCount = 0;
+    quint64 commFaultCount = 0;
+
+    bool anyLimitSwitch() const;
+    bool anyMoving() const;
+    // The JSON contract of `stepdeck-cli status --json` (see issue #2, section 5).
+    QJsonObject toJson(const QString& modelId) const;
+};
+
+} // namespace stepdeck
+
+Q_DECLARE_METATYPE(stepdeck::MachineStatus)

@@ -1,0 +1,275 @@
+#include "ParameterSchema.h"
+#include <QCoreApplication>
+#include <QJsonValue>
+
+namespace stepdeck {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("ParameterSchema", text);
+}
+
+QString rangeText(const ParameterSpec& spec)
+{
+    switch (spec.type) {
+    case ParameterType::Integer:
+        return QStringLiteral("%1..%2").arg(spec.minimum).arg(spec.maximum);
+    case ParameterType::Boolean:
+        return QStringLiteral("on|off");
+    case ParameterType::Choice:
+        return spec.choices.join(QLatin1Char('|'));
+    }
+    return {};
+}
+} // namespace
+
+const ParameterSpec* ParameterSchema::find(const QString& name) const
+{
+    for (const ParameterSpec& spec : m_specs) {
+        if (spec.name == name)
+            return &spec;
+    }
+    return nullptr;
+}
+
+QStringList ParameterSchema::groups() const
+{
+    QStringList out;
+    for (const ParameterSpec& spec : m_specs) {
+        if (!out.contains(spec.group))
+            out << spec.group;
+    }
+    return out;
+}
+
+QVariant ParameterSchema::normalise(const ParameterSpec& spec, const QVariant& value) const
+{
+    switch (spec.type) {
+    case ParameterType::Integer: {
+        bool ok = false;
+        qint64 v = 0;
+        if (value.typeId() == QMetaType::QString) {
+            v = value.toString().trimmed().toLongLong(&ok, 0);
+        } else if (value.typeId() == QMetaType::Double) {
+            const double d = value.toDouble();
+            ok = d == double(qint64(d));
+            v = qint64(d);
+        } else if (value.canConvert<qint64>() && value.typeId() != QMetaType::Bool) {
+            v = value.toLongLong(&ok);
+        }
+        return ok ? QVariant(v) : QVariant();
+    }
+    case ParameterType::Boolean: {
+        if (value.typeId() == QMetaType::Bool)
+            return value;
+        const QString s = value.toString().trimmed().toLower();
+        if (s == "on" || s == "true" || s == "1" || s == "yes")
+            return true;
+        if (s == "off" || s == "false" || s == "0" || s == "no")
+            return false;
+        return {};
+    }
+    case ParameterType::Choice: {
+        const QString s = value.toString().trimmed().toLower();
+        for (const QString& c : spec.choices) {
+            if (c.toLower() == s)
+                return c;
+        }
+        return {};
+    }
+    }
+    return {};
+}
+
+QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVariant& value) const
+{
+    const QVariant v = normalise(spec, value);
+    if (!v.isValid() ||
+        (spec.type == ParameterType::Integer &&
+         (v.toLongLong() < spec.minimum || v.toLongLong() > spec.maximum))) {
+        return tr("%1: value '%2' is out of range (allowed: %3%4)")
+            .arg(spec.name, value.toString(), rangeText(spec),
+                 spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + spec.unit);
+    }
+    return {};
+}
+
+QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& axes) const
+{
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = find(it.key());
+        if (!spec)
+            return tr("unknown parameter '%1'").arg(it.key());
+        if (!spec->writable)
+            return tr("%1 is read-only").arg(spec->name);
+        const ParameterValue& value = it.value();
+        if (spec->perAxis) {
+            if (!value.isPerAxis())
+                return tr("%1 needs one value per axis").arg(spec->name);
+            for (auto a = value.perAxis.cbegin(); a != value.perAxis.cend(); ++a) {
+                if (!axes.contains(a.key()))
+                    return tr("%1: this machine has no axis %2").arg(spec->name, axisName(a.key()));
+                const QString err = validateScalar(*spec, a.value());
+                if (!err.isEmpty())
+                    return QStringLiteral("%1 (%2)").arg(err, axisName(a.key()));
+            }
+        } else {
+            if (value.isPerAxis())
+                return tr("%1 takes a single value, not one per axis").arg(spec->name);
+            const QString err = validateScalar(*spec, value.global);
+            if (!err.isEmpty())
+                return err;
+        }
+    }
+    return {};
+}
+
+bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& axes,
+                                      QString* name, ParameterValue* value,
+                                      QString* error) const
+{
+    const int eq = text.indexOf(QLatin1Char('='));
+    if (eq <= 0) {
+        *error = tr("expected NAME=VALUE, got '%1'").arg(text);
+        return false;
+    }
+    *name = text.left(eq).trimmed();
+    const ParameterSpec* spec = find(*name);
+    if (!spec) {
+        *error = tr("unknown parameter '%1'").arg(*name);
+        return false;
+    }
+    const QStringList parts = text.mid(eq + 1).split(QLatin1Char(','));
+    ParameterValue out;
+    if (spec->perAxis) {
+        // One value for all axes, or exactly one per axis in X,Y,Z(,U) order.
+        if (parts.size() != 1 && parts.size() != axes.size()) {
+            *error = tr("%1 needs 1 or %2 values (axes %3)")
+                         .arg(*name)
+                         .arg(axes.size())
+                         .arg([&] {
+                             QStringList n;
+                             for (Axis a : axes)
+                                 n << axisName(a);
+                             return n.join(QLatin1Char(','));
+                         }());
+            return false;
+        }
+        for (int i = 0; i < axes.size(); ++i) {
+            const QString& raw = parts.size() == 1 ? parts[0] : parts[i];
+            const QString err = validateScalar(*spec, raw);
+            if (!err.isEmpty()) {
+                *error = QStringLiteral("%1 (%2)").arg(err, axisName(axes[i]));
+                return false;
+            }
+            out.perAxis.insert(axes[i], normalise(*spec, raw));
+        }
+    } else {
+        if (parts.size() != 1) {
+            *error = tr("%1 takes a single value").arg(*name);
+            return false;
+        }
+        const QString err = validateScalar(*spec, parts[0]);
+        if (!err.isEmpty()) {
+            *error = err;
+            return false;
+        }
+        out.global = normalise(*spec, parts[0]);
+    }
+    *value = out;
+    return true;
+}
+
+QString ParameterSchema::formatValue(const ParameterSpec& spec, const ParameterValue& value) const
+{
+    auto one = [&](const QVariant& v) {
+        if (spec.type == ParameterType::Boolean)
+            return v.toBool() ? QStringLiteral("on") : QStringLiteral("off");
+        return v.toString();
+    };
+    if (!value.isPerAxis())
+        return one(value.global);
+    QStringList parts;
+    for (auto it = value.perAxis.cbegin(); it != value.perAxis.cend(); ++it)
+        parts << one(it.value());
+    return parts.join(QLatin1Char(','));
+}
+
+QJsonObject ParameterSchema::toJson(const QString& modelId, const ParameterSet& set) const
+{
+    QJsonObject params;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        if (it.value().isPerAxis()) {
+            QJsonObject perAxis;
+            for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
+                perAxis.insert(axisName(a.key()), QJsonValue::fromVariant(a.value()));
+            params.insert(it.key(), perAxis);
+        } else {
+            params.insert(it.key(), QJsonValue::fromVariant(it.value().global));
+        }
+    }
+    return QJsonObject{{"format", "stepdeck-parameters"},
+                       {"version", 1},
+                       {"model", modelId},
+                       {"parameters", params}};
+}
+
+bool ParameterSchema::fromJson(const QJsonObject& json, const QString& modelId,
+                               const QList<Axis>& axes, ParameterSet* set, QString* error) const
+{
+    if (json.value("format").toString() != QLatin1String("stepdeck-parameters")) {
+        *error = tr("not a StepDeck parameter file");
+        return false;
+    }
+    if (json.value("version").toInt() != 1) {
+        *error = tr("unsupported parameter file version %1").arg(json.value("version").toInt());
+        return false;
+    }
+    if (json.value("model").toString() != modelId) {
+        *error = tr("parameter file is for model '%1', not '%2'")
+                     .arg(json.value("model").toString(), modelId);
+        return false;
+    }
+    const QJsonValue paramsValue = json.value("parameters");
+    if (!paramsValue.isObject()) {
+        *error = tr("parameter file has no \"parameters\" object");
+        return false;
+    }
+    const QJsonObject params = paramsValue.toObject();
+    ParameterSet out;
+    for (auto it = params.constBegin(); it != params.constEnd(); ++it) {
+        const ParameterSpec* spec = find(it.key());
+        if (!spec) {
+            *error = tr("unknown parameter '%1'").arg(it.key());
+            return false;
+        }
+        ParameterValue value;
+        if (it.value().isObject()) {
+            const QJsonObject perAxis = it.value().toObject();
+            for (auto a = perAxis.constBegin(); a != perAxis.constEnd(); ++a) {
+                const auto axis = axisFromName(a.key());
+                if (!axis) {
+                    *error = tr("%1: '%2' is not an axis").arg(it.key(), a.key());
+                    return false;
+                }
+                value.perAxis.insert(*axis, normalise(*spec, a.value().toVariant()).isValid()
+                                                ? normalise(*spec, a.value().toVariant())
+                                                : a.value().toVariant());
+            }
+        } else {
+            const QVariant raw = it.value().toVariant();
+            value.global = normalise(*spec, raw).isValid() ? normalise(*spec, raw) : raw;
+        }
+        out.insert(it.key(), value);
+    }
+    const QString err = validate(out, axes);
+    if (!err.isEmpty()) {
+        *error = err;
+        return false;
+    }
+    *set = out;
+    return true;
+}
+
+} // namespace stepdeck

@@ -1,0 +1,81 @@
+#pragma once
+#include "Axis.h"
+#include <QJsonObject>
+#include <QStringList>
+#include <QVariant>
+
+namespace stepdeck {
+
+enum class ParameterType { Integer, Boolean, Choice };
+
+// One device parameter as data: forms, the CLI and import/export are generated from these.
+struct ParameterSpec
+{
+    QString name;  // kebab-case id, e.g. "start-speed"
+    QString label; // English label; UI translates it through the "Parameters" context
+    QString group; // "Speeds", "Acceleration", "Switch polarity", "Power & spindle", ...
+    QString unit;  // "steps/s", "%", "rpm", ...
+    ParameterType type = ParameterType::Integer;
+    qint64 minimum = 0;
+    qint64 maximum = 0;
+    QStringList choices; // Choice: the allowed values, as written in files and on the CLI
+    bool perAxis = false;
+    bool readable = false; // the protocol can read the value back from the device
+    bool writable = true;
+    QVariant defaultValue;
+    QString description; // plain words, shown as tooltip/help
+    QString warning;     // shown before writing (e.g. "communication continues at new address")
+};
+
+// A value for every parameter named: global values as QVariant, per-axis values per axis.
+struct ParameterValue
+{
+    QVariant global;
+    QMap<Axis, QVariant> perAxis;
+    bool isPerAxis() const { return !perAxis.isEmpty(); }
+    bool operator==(const ParameterValue& o) const
+    {
+        return global == o.global && perAxis == o.perAxis;
+    }
+    bool operator!=(const ParameterValue& o) const { return !(*this == o); }
+};
+using ParameterSet = QMap<QString, ParameterValue>;
+
+class ParameterSchema
+{
+public:
+    ParameterSchema() = default;
+    explicit ParameterSchema(QList<ParameterSpec> specs) : m_specs(std::move(specs)) {}
+
+    const QList<ParameterSpec>& specs() const { return m_specs; }
+    const ParameterSpec* find(const QString& name) const;
+    QStringList groups() const;
+
+    // Checks type and range of one scalar value; returns an empty string when valid, else a
+    // sentence naming the parameter and its range.
+    QString validateScalar(const ParameterSpec& spec, const QVariant& value) const;
+    // Checks every entry of a set (unknown names, per-axis shape, type, range, writability).
+    QString validate(const ParameterSet& set, const QList<Axis>& axes) const;
+    // Normalises a scalar to its canonical type (qint64, bool or QString); invalid -> null.
+    QVariant normalise(const ParameterSpec& spec, const QVariant& value) const;
+
+    // "NAME=V[,V,V]" as typed on the CLI; per-axis values in the order of `axes`.
+    bool parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
+                         ParameterValue* value, QString* error) const;
+    QString formatValue(const ParameterSpec& spec, const ParameterValue& value) const;
+
+    // The JSON file format shared by CLI export/import and the setup pages:
+    // {"format":"stepdeck-parameters","version":1,"model":"elab",
+    //  "parameters":{"start-speed":{"X":100,"Y":100,"Z":100},"drive-power":100}}
+    QJsonObject toJson(const QString& modelId, const ParameterSet& set) const;
+    // Parses and validates everything before returning; on error returns false and says why.
+    bool fromJson(const QJsonObject& json, const QString& modelId, const QList<Axis>& axes,
+                  ParameterSet* set, QString* error) const;
+
+private:
+    QList<ParameterSpec> m_specs;
+};
+
+} // namespace stepdeck
+
+Q_DECLARE_METATYPE(stepdeck::ParameterSet)

@@ -1,0 +1,32 @@
+#include "Registry.h"
+#include "protocols/elab/ElabModel.h"
+
+namespace stepdeck {
+
+const QList<ModelInfo>& models()
+{
+    // The one explicit list of models.
+    static const QList<ModelInfo> list{
+        elab::modelInfo(),
+    };
+    return list;
+}
+
+const ModelInfo* findModel(const QString& id)
+{
+    for (const ModelInfo& model : models()) {
+        if (model.id == id)
+            return &model;
+    }
+    return nullptr;
+}
+
+QStringList modelIds()
+{
+    QStringList ids;
+    for (const ModelInfo& model : models())
+        ids << model.id;
+    return ids;
+}
+
+} // namespace stepdeck

@@ -1,0 +1,13 @@
+#pragma once
+#include "protocols/Registry.h"
+
+namespace stepdeck::elab {
+
+// E-LAB line: 57600 baud, 8 data bits, 2 stop bits, no parity (manual: RS232-C). No hardware
+// flow control (RTS is the board's reset) and no software flow control (0x13 is a command).
+LineSettings lineSettings();
+Capabilities capabilities();
+ParameterSchema parameterSchema();
+ModelInfo modelInfo();
+
+} // namespace stepdeck::elab

@@ -1,0 +1,73 @@
+#pragma once
+#include "model/LineSettings.h"
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace stepdeck {
+
+class Transport;
+
+struct SimulatorOptions
+{
+    QList<int> addresses;    // bus addresses of simulated drives (multi-drive models)
+    bool paceOutput = false; // release replies at the line's character rate
+    LineSettings line;       // used for pacing
+    quint32 seed = 1;        // for reproducible "random" faults
+};
+
+// Faults any simulator can inject per reply (one reply = one send() call).
+struct SimulatorFaults
+{
+    int dropReplies = 0;    // the next N replies are not sent
+    int corruptReplies = 0; // the next N replies have a byte flipped
+    int delayMs = 0;        // every reply is held back this long
+    bool silent = false;    // answers nothing at all
+};
+
+// The device side of a protocol (like QGroundControl's MockLink). It receives host bytes and
+// transmits replies; time-based motion lives in the subclasses.
+class Simulator : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Simulator(const SimulatorOptions& options, QObject* parent = nullptr);
+    ~Simulator() override;
+
+    virtual QString modelId() const = 0;
+    const SimulatorOptions& options() const { return m_options; }
+
+    // Connects this simulator to the device end of a link (loopback or pseudo-terminal).
+    void attach(Transport* deviceEnd);
+
+    SimulatorFaults& faults() { return m_faults; }
+    void setFaults(const SimulatorFaults& faults) { m_faults = faults; }
+    void setPacing(bool enabled, const LineSettings& line);
+    qint64 bytesPending() const { return m_paced.size(); }
+
+public Q_SLOTS:
+    virtual void receive(const QByteArray& bytes) = 0;
+
+Q_SIGNALS:
+    void transmit(const QByteArray& bytes);
+
+protected:
+    // Sends one reply, applying injected faults and pacing.
+    void send(const QByteArray& reply);
+    // Sends bytes that are not a reply (flow control), with pacing but no faults.
+    void sendUnsolicited(const QByteArray& bytes);
+
+private:
+    void emitPaced(const QByteArray& bytes);
+    void releasePaced();
+
+    SimulatorOptions m_options;
+    SimulatorFaults m_faults;
+    QByteArray m_paced;
+    QTimer m_paceTimer{this};
+    QElapsedTimer m_paceClock;
+    double m_paceCredit = 0; // characters the line may still carry
+    qint64 m_lastReleaseUs = 0;
+};
+
+} // namespace stepdeck

@@ -1,0 +1,46 @@
+#pragma once
+#include "model/LineSettings.h"
+#include <QByteArray>
+#include <QObject>
+
+namespace stepdeck {
+
+// A byte link to a controller (serial port, TCP device server, in-memory pair).
+// Contract, for every implementation:
+// - open() is asynchronous: exactly one of opened() or failed() follows.
+// - On the first error of any kind the transport closes itself and emits failed() once
+//   (Qt 6.4's QSerialPort otherwise spins on ReadError when the peer vanishes).
+// - write() hands bytes over in order; discardOutput() drops what has not left yet, so a
+//   panic byte written next is not stuck behind queued data.
+class Transport : public QObject
+{
+    Q_OBJECT
+public:
+    using QObject::QObject;
+
+    virtual void open(const LineSettings& settings) = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+    virtual qint64 write(const QByteArray& bytes) = 0;
+    virtual void discardOutput() = 0;
+    virtual qint64 bytesToWrite() const = 0;
+    // Drives the line some boards use as hardware reset (E-LAB: RTS). Returns false and says
+    // why where the link cannot (a pseudo-terminal, TCP, ...).
+    virtual bool setResetLine(bool asserted, QString* error)
+    {
+        Q_UNUSED(asserted)
+        if (error)
+            *error = tr("this link has no modem control lines");
+        return false;
+    }
+    virtual QString description() const = 0;
+
+Q_SIGNALS:
+    void opened();
+    void failed(const QString& reason);
+    void closed();
+    void dataReceived(const QByteArray& bytes);
+    void bytesWritten(qint64 count);
+};
+
+} // namespace stepdeck
