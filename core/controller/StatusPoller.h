@@ -24,7 +24,7 @@ public:
     void stop();
     bool isActive() const { return m_active; }
 
-    bool isDue() const;         // active, interval elapsed since last start, none in flight
+    bool isDue() const; // active, interval elapsed since last start, none in flight
     bool isPollInFlight() const { return m_inFlight; }
     void pollStarted();
     void pollFinished(bool answered); // answered=false: timeout or garbage
@@ -40,6 +40,9 @@ Q_SIGNALS:
 
 private:
     void onTick();
+    void schedule();                // arms the timer for the next due time
+    void maybeEmitRate(bool force); // rateChanged at most every 500 ms
+    qint64 now() const { return m_clock.elapsed(); }
 
     QTimer m_timer;
     QElapsedTimer m_clock;
@@ -50,6 +53,8 @@ private:
     qint64 m_lastStartMs = -1;
     int m_misses = 0;
     std::deque<qint64> m_completions; // ms timestamps of answered polls in the last second
+    qint64 m_lastRateEmitMs = -1;
+    double m_lastRateHz = -1;
 };
 
 } // namespace stepdeck

@@ -1,0 +1,95 @@
+#include "JogRamp.h"
+#include <QtMath>
+
+namespace stepdeck {
+
+JogRamp::JogRamp(double accelerationStepsPerS2, double maxSpeedStepsPerS)
+    : m_acceleration(accelerationStepsPerS2 > 0 ? accelerationStepsPerS2 : 2000),
+      m_maxSpeed(qAbs(maxSpeedStepsPerS))
+{}
+
+void JogRamp::setAcceleration(double stepsPerS2)
+{
+    // A non-positive acceleration would freeze (or invert) the ramp: keep the old value.
+    if (stepsPerS2 > 0)
+        m_acceleration = stepsPerS2;
+}
+
+void JogRamp::setMaxSpeed(double stepsPerS)
+{
+    m_maxSpeed = qAbs(stepsPerS);
+    // Existing targets obey the new ceiling; the rates follow them through the ramp.
+    for (double& t : m_targets)
+        t = qBound(-m_maxSpeed, t, m_maxSpeed);
+}
+
+void JogRamp::setTarget(Axis axis, double stepsPerS)
+{
+    if (!qIsFinite(stepsPerS))
+        stepsPerS = 0.0;
+    m_targets.insert(axis, qBound(-m_maxSpeed, stepsPerS, m_maxSpeed));
+}
+
+void JogRamp::setTargets(const AxisVelocities& targets)
+{
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it)
+        setTarget(it.key(), it.value());
+}
+
+void JogRamp::releaseAll()
+{
+    for (double& t : m_targets)
+        t = 0.0;
+}
+
+void JogRamp::reset()
+{
+    // Keep the axes known (callers see explicit zeros), drop every rate at once.
+    for (double& t : m_targets)
+        t = 0.0;
+    for (double& c : m_current)
+        c = 0.0;
+}
+
+AxisVelocities JogRamp::advance(double dtSeconds)
+{
+    if (!(dtSeconds > 0))
+        return m_current;
+    const double maxStep = m_acceleration * dtSeconds;
+    QList<Axis> axes = m_targets.keys();
+    for (Axis a : m_current.keys()) {
+        if (!axes.contains(a))
+            axes.append(a);
+    }
+    for (Axis a : axes) {
+        const double target = m_targets.value(a, 0.0);
+        const double cur = m_current.value(a, 0.0);
+        double next;
+        if (cur != 0.0 && target != 0.0 && (cur > 0) != (target > 0)) {
+            // Reversal: ramp down to zero and hold there for this tick. The next tick starts
+            // from standstill, so the motor never sees a sign flip within one step.
+            next = cur > 0 ? qMax(0.0, cur - maxStep) : qMin(0.0, cur + maxStep);
+        } else if (qAbs(target - cur) <= maxStep) {
+            next = target;
+        } else {
+            next = cur + (target > cur ? maxStep : -maxStep);
+        }
+        m_current.insert(a, next);
+    }
+    return m_current;
+}
+
+bool JogRamp::isIdle() const
+{
+    for (double c : m_current) {
+        if (c != 0.0)
+            return false;
+    }
+    for (double t : m_targets) {
+        if (t != 0.0)
+            return false;
+    }
+    return true;
+}
+
+} // namespace stepdeck
