@@ -6,6 +6,7 @@
 #include "model/MachineStatus.h"
 #include "model/ParameterSchema.h"
 #include "model/Traffic.h"
+#include "transport/Transport.h"
 #include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
@@ -13,7 +14,7 @@
 
 namespace stepdeck {
 
-class Transport;
+
 
 enum class LinkState { Disconnected, Connecting, Connected, Lost };
 QString linkStateName(LinkState state);
