@@ -404,11 +404,11 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
             m_out << r;
             continue;
         }
-        const bool inGarbage = !m_buffer.isEmpty() && !isControl(m_buffer.at(0));
         if (isControl(c)) {
+            // Every control byte starts a new frame: this is where decoding resynchronises.
             if (!m_buffer.isEmpty())
-                flushInvalid(inGarbage ? trCodec("bytes outside a reply")
-                                       : trCodec("reply interrupted by a new control byte"));
+                flushInvalid(m_discarding ? m_discardReason
+                                          : trCodec("reply interrupted by a new control byte"));
             if (c == ctrl::ACK || c == ctrl::NAK) {
                 Reply r;
                 r.kind = c == ctrl::ACK ? Reply::Kind::Ack : Reply::Kind::Nak;
@@ -422,23 +422,29 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
             }
             continue;
         }
-        if (m_buffer.isEmpty() || inGarbage) {
-            m_buffer.append(c);
-            if (m_buffer.size() >= kMaxFrame)
-                flushInvalid(trCodec("bytes outside a reply"));
-            continue;
-        }
-        const char* pattern = replyPattern(m_buffer.at(0));
-        const int pos = int(m_buffer.size()) - 1;
-        if (!fits(pattern, pos, c)) {
-            m_buffer.append(c);
-            flushInvalid(trCodec("malformed reply"));
-            continue;
+        if (m_buffer.isEmpty() && !m_discarding)
+            startDiscarding(trCodec("bytes outside a reply"));
+        if (!m_discarding) {
+            const int pos = int(m_buffer.size()) - 1;
+            if (!fits(replyPattern(m_buffer.at(0)), pos, c)) {
+                startDiscarding(trCodec("malformed reply"));
+            } else {
+                m_buffer.append(c);
+                completeIfDone();
+                continue;
+            }
         }
         m_buffer.append(c);
-        completeIfDone();
+        if (m_buffer.size() >= kMaxFrame)
+            flushInvalid(m_discardReason);
     }
     return std::exchange(m_out, {});
+}
+
+void ReplyDecoder::startDiscarding(const QString& why)
+{
+    m_discarding = true;
+    m_discardReason = why;
 }
 
 void ReplyDecoder::completeIfDone()
@@ -484,6 +490,7 @@ void ReplyDecoder::flushInvalid(const QString& why)
     r.error = why;
     m_out << r;
     m_buffer.clear();
+    m_discarding = false;
 }
 
 // -------------------------------------------------------------- CommandDecoder

@@ -10,38 +10,38 @@ namespace stepdeck::elab {
 
 // "Steuerzeichen Tabelle und Kommando Liste": host -> controller command bytes.
 namespace ctrl {
-constexpr char SOH = 0x01; // Set Spindle RPM            <SOH>XXXXXXXX#
-constexpr char STX = 0x02; // Set Drive Power            <STX>XX
-constexpr char ETX = 0x03; // Request relative Position  reply <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
-constexpr char EOT = 0x04; // Set FastMove XYZ           <EOT>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
-constexpr char ENQ = 0x05; // Request Machine State      reply <ENQ>BBBB#
-constexpr char ACK = 0x06; // reply: command accepted (as host byte: Request Absolute Position,
-                           // undocumented -- never sent)
-constexpr char BEL = 0x07; // Set Panic Stop
-constexpr char BS = 0x08;  // Set FastMove Z             <BS>ZZZZZZZZ.
-constexpr char HT = 0x09;  // Request Axe State          reply <HT>BB#
-constexpr char LF = 0x0A;  // Request Start Info         reply <ACK> pressed / <NAK> not
-constexpr char VT = 0x0B;  // Set FeedSteps Z            <VT>ZZZZZZZZ.
-constexpr char FF = 0x0C;  // Set FastMove XY            <FF>XXXXXXXX,YYYYYYYY;
-constexpr char CR = 0x0D;  // End Of Feed
-constexpr char SO = 0x0E;  // Set Limit Switch Polarity  <SO>XX,YY;ZZ.
-constexpr char SI = 0x0F;  // Set Cooling ON/OFF         <SI>XX
-constexpr char DLE = 0x10; // Set Reference Switch Pol.  <DLE>XX,YY;ZZ.
-constexpr char XON = 0x11; // controller -> host flow control during a DC2 stream
-constexpr char DC2 = 0x12; // Set FeedSteps XYZ          <DC2><step byte>, no reply
+constexpr char SOH = 0x01;  // Set Spindle RPM            <SOH>XXXXXXXX#
+constexpr char STX = 0x02;  // Set Drive Power            <STX>XX
+constexpr char ETX = 0x03;  // Request relative Position  reply <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
+constexpr char EOT = 0x04;  // Set FastMove XYZ           <EOT>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
+constexpr char ENQ = 0x05;  // Request Machine State      reply <ENQ>BBBB#
+constexpr char ACK = 0x06;  // reply: command accepted (as host byte: Request Absolute Position,
+                            // undocumented -- never sent)
+constexpr char BEL = 0x07;  // Set Panic Stop
+constexpr char BS = 0x08;   // Set FastMove Z             <BS>ZZZZZZZZ.
+constexpr char HT = 0x09;   // Request Axe State          reply <HT>BB#
+constexpr char LF = 0x0A;   // Request Start Info         reply <ACK> pressed / <NAK> not
+constexpr char VT = 0x0B;   // Set FeedSteps Z            <VT>ZZZZZZZZ.
+constexpr char FF = 0x0C;   // Set FastMove XY            <FF>XXXXXXXX,YYYYYYYY;
+constexpr char CR = 0x0D;   // End Of Feed
+constexpr char SO = 0x0E;   // Set Limit Switch Polarity  <SO>XX,YY;ZZ.
+constexpr char SI = 0x0F;   // Set Cooling ON/OFF         <SI>XX
+constexpr char DLE = 0x10;  // Set Reference Switch Pol.  <DLE>XX,YY;ZZ.
+constexpr char XON = 0x11;  // controller -> host flow control during a DC2 stream
+constexpr char DC2 = 0x12;  // Set FeedSteps XYZ          <DC2><step byte>, no reply
 constexpr char XOFF = 0x13; // host -> controller: Force Stop Move; controller -> host: XOFF
-constexpr char DC4 = 0x14; // Set Jog Speed              <DC4>XXXX,YYYY;ZZZZ. (signed)
-constexpr char NAK = 0x15; // reply: command refused
-constexpr char SYN = 0x16; // Request Synchronisation (no reply)
-constexpr char ETB = 0x17; // Request Temperature        reply <ETB>TT#
-constexpr char CAN = 0x18; // Set Velocity Move XYZ      <CAN>XXXX,YYYY;ZZZZ. (signed)
-constexpr char EM = 0x19;  // Set FeedSteps X            <EM>XXXXXXXX,
-constexpr char SUB = 0x1A; // Set FeedSteps Y            <SUB>YYYYYYYY;
-constexpr char ESC = 0x1B; // Set Rampe                  <ESC>S|M|A XXXX,YYYY;ZZZZ.
-constexpr char FS = 0x1C;  // Set Standard Feed Rate     <FS>XXXX,YYYY;ZZZZ.
-constexpr char GS = 0x1D;  // Force Flush Buffer
-constexpr char RS = 0x1E;  // Set Clear Position
-constexpr char US = 0x1F;  // Set Reference Move XYZ     <US>XXXX,YYYY;ZZZZ. (-1/0/+1)
+constexpr char DC4 = 0x14;  // Set Jog Speed              <DC4>XXXX,YYYY;ZZZZ. (signed)
+constexpr char NAK = 0x15;  // reply: command refused
+constexpr char SYN = 0x16;  // Request Synchronisation (no reply)
+constexpr char ETB = 0x17;  // Request Temperature        reply <ETB>TT#
+constexpr char CAN = 0x18;  // Set Velocity Move XYZ      <CAN>XXXX,YYYY;ZZZZ. (signed)
+constexpr char EM = 0x19;   // Set FeedSteps X            <EM>XXXXXXXX,
+constexpr char SUB = 0x1A;  // Set FeedSteps Y            <SUB>YYYYYYYY;
+constexpr char ESC = 0x1B;  // Set Rampe                  <ESC>S|M|A XXXX,YYYY;ZZZZ.
+constexpr char FS = 0x1C;   // Set Standard Feed Rate     <FS>XXXX,YYYY;ZZZZ.
+constexpr char GS = 0x1D;   // Force Flush Buffer
+constexpr char RS = 0x1E;   // Set Clear Position
+constexpr char US = 0x1F;   // Set Reference Move XYZ     <US>XXXX,YYYY;ZZZZ. (-1/0/+1)
 } // namespace ctrl
 
 // RequestMachineState bits (Word, 16 bits).
@@ -99,34 +99,34 @@ bool isValidStepByte(quint8 byte); // bits 7 and 3 clear
 
 // ---- host -> controller encoders (upper-case hex, no spaces; manual section per command) ----
 namespace encode {
-QByteArray requestMachineState();  // <ENQ>
-QByteArray requestAxeState();      // <HT>
-QByteArray requestTemperature();   // <ETB>
-QByteArray requestRelPosition();   // <ETX>
-QByteArray requestStart();         // <LF>
-QByteArray requestSync(int count); // <SYN> x count
-QByteArray panicStop();            // <BEL>
-QByteArray stopMove();             // <XOFF>
-QByteArray flushBuffer();          // <GS>
-QByteArray clearPosition();        // <RS>
-QByteArray endOfFeed();            // <CR>
+QByteArray requestMachineState();                                   // <ENQ>
+QByteArray requestAxeState();                                       // <HT>
+QByteArray requestTemperature();                                    // <ETB>
+QByteArray requestRelPosition();                                    // <ETX>
+QByteArray requestStart();                                          // <LF>
+QByteArray requestSync(int count);                                  // <SYN> x count
+QByteArray panicStop();                                             // <BEL>
+QByteArray stopMove();                                              // <XOFF>
+QByteArray flushBuffer();                                           // <GS>
+QByteArray clearPosition();                                         // <RS>
+QByteArray endOfFeed();                                             // <CR>
 QByteArray limitSwitchPolarity(const Triple<bool>& activeHigh);     // <SO>FF,FF;00.
 QByteArray referenceSwitchPolarity(const Triple<bool>& activeHigh); // <DLE>FF,FF;FF.
 QByteArray ramp(RampKind kind, const Triple<quint16>& values);      // <ESC>S0064,0064;0064.
-QByteArray feedSpeed(const Triple<quint16>& stepsPerS);              // <FS>0064,0064;0064.
-QByteArray drivePower(quint8 percent);                               // <STX>64
-QByteArray spindleRpm(quint32 rpm);                                  // <SOH>000003E8#
-QByteArray coolant(bool on);                                         // <SI>FF / <SI>00
-QByteArray fastMoveXY(qint32 x, qint32 y);                           // <FF>000003E8,FFFFFC18;
-QByteArray fastMoveXYZ(const Triple<qint32>& steps);                 // <EOT>...,...;....
-QByteArray fastMoveZ(qint32 z);                                      // <BS>000003E8.
-QByteArray feedStepsX(qint32 x);                                     // <EM>000003E8,
-QByteArray feedStepsY(qint32 y);                                     // <SUB>000003E8;
-QByteArray feedStepsZ(qint32 z);                                     // <VT>000003E8.
-QByteArray feedStep(quint8 stepByte);                                // <DC2>b
-QByteArray jogSpeed(const Triple<qint16>& stepsPerS);                // <DC4>0064,0064;FF9C.
-QByteArray referenceMove(const Triple<qint16>& directions);          // <US>FFFF,0000;0001.
-QByteArray velocityMove(const Triple<qint16>& stepsPerS);            // <CAN>FC18,0000;03E9.
+QByteArray feedSpeed(const Triple<quint16>& stepsPerS);             // <FS>0064,0064;0064.
+QByteArray drivePower(quint8 percent);                              // <STX>64
+QByteArray spindleRpm(quint32 rpm);                                 // <SOH>000003E8#
+QByteArray coolant(bool on);                                        // <SI>FF / <SI>00
+QByteArray fastMoveXY(qint32 x, qint32 y);                          // <FF>000003E8,FFFFFC18;
+QByteArray fastMoveXYZ(const Triple<qint32>& steps);                // <EOT>...,...;....
+QByteArray fastMoveZ(qint32 z);                                     // <BS>000003E8.
+QByteArray feedStepsX(qint32 x);                                    // <EM>000003E8,
+QByteArray feedStepsY(qint32 y);                                    // <SUB>000003E8;
+QByteArray feedStepsZ(qint32 z);                                    // <VT>000003E8.
+QByteArray feedStep(quint8 stepByte);                               // <DC2>b
+QByteArray jogSpeed(const Triple<qint16>& stepsPerS);               // <DC4>0064,0064;FF9C.
+QByteArray referenceMove(const Triple<qint16>& directions);         // <US>FFFF,0000;0001.
+QByteArray velocityMove(const Triple<qint16>& stepsPerS);           // <CAN>FC18,0000;03E9.
 } // namespace encode
 
 // ---- controller -> host replies ----
@@ -148,8 +148,8 @@ struct Reply
     quint8 axeState = 0;
     quint8 temperature = 0;
     Triple<qint32> positions{};
-    QByteArray raw;   // the bytes of this frame as received
-    QString error;    // for Invalid: why
+    QByteArray raw; // the bytes of this frame as received
+    QString error;  // for Invalid: why
 };
 
 // Replies are self-delimiting, so the decoder needs no knowledge of the request. Any control
@@ -160,25 +160,32 @@ class ReplyDecoder
 public:
     static constexpr int kMaxFrame = 27; // <ETX>8 hex,8 hex;8 hex.
     QList<Reply> feed(const QByteArray& bytes);
-    void reset() { m_buffer.clear(); }
+    void reset()
+    {
+        m_buffer.clear();
+        m_discarding = false;
+    }
     int buffered() const { return int(m_buffer.size()); }
 
 private:
     QList<Reply> m_out;
     QByteArray m_buffer;
+    bool m_discarding = false; // dropping bytes up to the next control byte
+    QString m_discardReason;
     void flushInvalid(const QString& why);
+    void startDiscarding(const QString& why);
     void completeIfDone();
 };
 
 // ---- host -> controller, decoded on the device side (simulator, traffic console) ----
 struct Command
 {
-    char code = 0;           // ctrl::...
+    char code = 0;                        // ctrl::...
     RampKind ramp = RampKind::StartSpeed; // for ESC
-    int valueCount = 0;      // values parsed
-    std::array<qint64, 3> values{}; // decoded with the command's width and signedness
-    quint8 stepByte = 0;     // for DC2
-    bool valid = true;       // false: malformed (the device answers NAK where it answers)
+    int valueCount = 0;                   // values parsed
+    std::array<qint64, 3> values{};       // decoded with the command's width and signedness
+    quint8 stepByte = 0;                  // for DC2
+    bool valid = true; // false: malformed (the device answers NAK where it answers)
     QString error;
     QByteArray raw;
 };
