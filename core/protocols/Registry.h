@@ -2,6 +2,7 @@
 #include "controller/ControllerOptions.h"
 #include "model/Capabilities.h"
 #include "model/LineSettings.h"
+#include "model/ModelPresentation.h"
 #include "model/ParameterSchema.h"
 #include "sim/Simulator.h"
 #include <functional>
@@ -22,6 +23,9 @@ struct ModelInfo
     ParameterSchema schema;
     std::function<Controller*(Transport*, const ControllerOptions&)> createController;
     std::function<Simulator*(const SimulatorOptions&)> createSimulator;
+    // How the UI shows this model's raw words and traffic (optional members; see
+    // model/ModelPresentation.h). The UI never interprets bytes itself.
+    ModelPresentation presentation;
 };
 
 const QList<ModelInfo>& models();

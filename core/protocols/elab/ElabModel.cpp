@@ -1,6 +1,8 @@
 #include "ElabModel.h"
 #include "ElabController.h"
 #include "ElabSimulator.h"
+#include "ElabCodec.h"
+#include <QCoreApplication>
 #include <QtGlobal>
 
 namespace stepdeck::elab {
@@ -139,7 +141,173 @@ ModelInfo modelInfo()
     info.createSimulator = [](const SimulatorOptions& options) {
         return static_cast<Simulator*>(new ElabSimulator(options));
     };
+    info.presentation = presentation();
     return info;
 }
+
+// ---- presentation (status panel tooltips, traffic console) ----
+
+namespace {
+// Plain words for the status panel, after the manual's RequestMachineState and
+// RequestAxeState tables. Marked for lupdate; translated when presentation() is called.
+struct BitText
+{
+    int bit;
+    const char* name;
+    const char* text;
+    bool implemented;
+    bool fault;
+};
+
+constexpr const char* kContext = "stepdeck::elab::Presentation";
+
+const BitText kMachineBits[] = {
+    {0, "tmDriveOn", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The motors are powered."),
+     true, false},
+    {1, "tmSpindleOn",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The spindle motor is switched on."), true,
+     false},
+    {2, "tmBusy", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "At least one axis is moving."),
+     true, false},
+    {3, "tmCOMfail",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "Serial port error (documented, but never set by the firmware)."),
+     false, true},
+    {4, "tmTimeOut",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "Internal error (documented, but never set by the firmware)."),
+     false, true},
+    {5, "tmParmError",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "Parameter error (documented, but never set by the firmware)."),
+     false, true},
+    {6, "tmOverTemp",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "The board temperature is above 50 °C; the drivers may switch off."),
+     true, true},
+    {7, "tmInvSetup",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "Setup incomplete: start speed, max speed and acceleration must all be "
+                       "written before moving."),
+     true, true},
+    {8, "tmLimSwX",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "A limit switch of the X axis is active."),
+     true, true},
+    {9, "tmLimSwY",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "A limit switch of the Y axis is active."),
+     true, true},
+    {10, "tmLimSwZ",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "A limit switch of the Z axis is active."),
+     true, true},
+    {11, "tmRefSwX",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "The reference switch of the X axis is active."),
+     true, false},
+    {12, "tmRefSwY",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "The reference switch of the Y axis is active."),
+     true, false},
+    {13, "tmRefSwZ",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "The reference switch of the Z axis is active."),
+     true, false},
+    {14, "tmPanicStop",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "Emergency stop: the board's panic switch is active or the host sent "
+                       "ForcePanicStop."),
+     true, true},
+};
+
+const BitText kAxeBits[] = {
+    {0, "taXMove",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The X axis runs a move or feed."), true,
+     false},
+    {1, "taXJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The X axis is jogging."),
+     true, false},
+    {2, "taYMove",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Y axis runs a move or feed."), true,
+     false},
+    {3, "taYJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Y axis is jogging."),
+     true, false},
+    {4, "taZMove",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Z axis runs a move or feed."), true,
+     false},
+    {5, "taZJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Z axis is jogging."),
+     true, false},
+    {6, "taLimSw",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
+                       "A limit switch is active: only jog moves are accepted."),
+     true, true},
+    {7, "taRefSw",
+     QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "A reference switch is active."), true,
+     false},
+};
+
+template <size_t N> QList<StatusBitInfo> bitList(const BitText (&table)[N])
+{
+    QList<StatusBitInfo> bits;
+    for (const BitText& t : table) {
+        bits << StatusBitInfo{t.bit, QString::fromLatin1(t.name),
+                              QCoreApplication::translate(kContext, t.text), t.implemented,
+                              t.fault};
+    }
+    return bits;
+}
+} // namespace
+
+ModelPresentation presentation()
+{
+    ModelPresentation p;
+    p.statusWords = [] {
+        // Keys as the adapter publishes them in MachineStatus::raw.
+        StatusWordInfo machineWord{
+            QStringLiteral("machineState"),
+            QCoreApplication::translate(kContext, "Machine state (RequestMachineState)"), 16,
+            bitList(kMachineBits)};
+        StatusWordInfo axeWord{QStringLiteral("axeState"),
+                               QCoreApplication::translate(kContext, "Axis state (RequestAxeState)"),
+                               8, bitList(kAxeBits)};
+        return QList<StatusWordInfo>{machineWord, axeWord};
+    };
+    p.formatTraffic = [](const QByteArray& bytes) { return toMnemonics(bytes); };
+    p.parseTraffic = [](const QString& text, QByteArray* bytes, QString* error) {
+        return fromMnemonics(text, bytes, error);
+    };
+    return p;
+}
+
+
+namespace {
+// Schema labels, groups, units, choices and descriptions are data (English); the UI shows them
+// through QCoreApplication::translate("Parameters", ...). Listed here so lupdate finds them.
+[[maybe_unused]] const char* const kParameterStrings[] = {
+    QT_TRANSLATE_NOOP("Parameters", "steps/s"),
+    QT_TRANSLATE_NOOP("Parameters", "Start speed"),
+    QT_TRANSLATE_NOOP("Parameters", "Speeds"),
+    QT_TRANSLATE_NOOP("Parameters", "Step rate at the start of a ramp (SetStartSpeed, <ESC>S)"),
+    QT_TRANSLATE_NOOP("Parameters", "Max speed"),
+    QT_TRANSLATE_NOOP("Parameters", "Plateau step rate of positioning and reference moves (SetMaxSpeed, <ESC>M)"),
+    QT_TRANSLATE_NOOP("Parameters", "Feed speed"),
+    QT_TRANSLATE_NOOP("Parameters", "Step rate in feed mode; must be below the start speed, feed has no ramp (SetFeedSpeed, <FS>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Acceleration"),
+    QT_TRANSLATE_NOOP("Parameters", "Ramp steepness of positioning moves; sensible values are 500 to 2000 (SetAcceleration, <ESC>A)"),
+    QT_TRANSLATE_NOOP("Parameters", "Switch polarity"),
+    QT_TRANSLATE_NOOP("Parameters", "high"),
+    QT_TRANSLATE_NOOP("Parameters", "low"),
+    QT_TRANSLATE_NOOP("Parameters", "Limit switch polarity"),
+    QT_TRANSLATE_NOOP("Parameters", "Active level of the limit switches (SetSwitchPolarity, <SO>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Reference switch polarity"),
+    QT_TRANSLATE_NOOP("Parameters", "Active level of the reference switches (SetSwitchPolarity, <DLE>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Drive power"),
+    QT_TRANSLATE_NOOP("Parameters", "Power & spindle"),
+    QT_TRANSLATE_NOOP("Parameters", "%"),
+    QT_TRANSLATE_NOOP("Parameters", "Motor current for all axes; the board maps it to off (<25), 33 % (<50), 66 % (<75), 100 % (SetDrivePower, <STX>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Spindle speed"),
+    QT_TRANSLATE_NOOP("Parameters", "rpm"),
+    QT_TRANSLATE_NOOP("Parameters", "0 switches the spindle relay off, anything above switches it on (SetSpindleRPM, <SOH>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Coolant"),
+    QT_TRANSLATE_NOOP("Parameters", "Coolant pump relay RS2 (SetCoolOnOff, <SI>)"),
+};
+} // namespace
 
 } // namespace stepdeck::elab

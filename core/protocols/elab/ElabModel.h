@@ -9,5 +9,7 @@ LineSettings lineSettings();
 Capabilities capabilities();
 ParameterSchema parameterSchema();
 ModelInfo modelInfo();
+// Status bit names and console notation for the UI (model/ModelPresentation.h).
+ModelPresentation presentation();
 
 } // namespace stepdeck::elab
