@@ -1,0 +1,1 @@
+stepdeck_add_test(tst_nanoteccodec SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanoteccodec.cpp LABELS unit)
