@@ -1,0 +1,51 @@
+#pragma once
+#include "ElabCodec.h"
+#include "model/Axis.h"
+#include <QVector>
+
+namespace stepdeck::elab {
+
+// The host side of a <DC2> single-step stream (manual: SetFeedStepXYZ). Produces the step
+// bytes in chunks of whole <DC2><byte> pairs (a pair is never split, so a stop or a poll
+// written between chunks can never be taken for step data) and keeps count of what was
+// handed to the transport. Two sources: explicit single steps, or a straight line between
+// two points split into single steps (integer Bresenham: every axis arrives exactly, no step
+// lost or duplicated). Pure: the adapter owns flow control and writing.
+class ElabCtlStream
+{
+public:
+    static constexpr int kChunkSteps = 8; // 16 bytes inside the transport at most
+
+    // Empty string when every step is -1, 0 or +1 on X, Y or Z; else why not.
+    static QString validate(const QVector<AxisVector>& steps);
+
+    void startSteps(const QVector<AxisVector>& steps);
+    void startLine(const Triple<qint64>& delta);
+    void clear();
+
+    bool isActive() const { return m_active; }
+    void setActive(bool active) { m_active = active; }
+    qint64 total() const { return m_total; }
+    qint64 sent() const { return m_sent; }
+    bool atEnd() const { return m_sent >= m_total; }
+    QList<Axis> axes() const; // axes that take at least one step
+
+    // The next chunk of up to maxSteps pairs; *delta receives the signed steps per axis in it.
+    QByteArray nextChunk(int maxSteps, Triple<qint64>* delta);
+
+    // Flow control from the board (XOFF/XON) and the chunk inside the transport.
+    bool pausedByDevice = false;
+    bool chunkInFlight = false;
+    quint64 requestId = 0;
+
+private:
+    Triple<int> stepAt(qint64 index) const; // 0-based
+
+    bool m_active = false;
+    QVector<AxisVector> m_steps; // explicit source
+    Triple<qint64> m_line{};      // line source (when m_steps is empty)
+    qint64 m_total = 0;
+    qint64 m_sent = 0;
+};
+
+} // namespace stepdeck::elab

@@ -1,0 +1,355 @@
+#include "ElabExchangeQueue.h"
+#include "Logging.h"
+#include "transport/Transport.h"
+
+namespace stepdeck::elab {
+
+namespace {
+bool matches(Expect expect, Reply::Kind kind)
+{
+    switch (expect) {
+    case Expect::None: return false;
+    case Expect::Ack: return kind == Reply::Kind::Ack;
+    case Expect::AckNak: return kind == Reply::Kind::Ack || kind == Reply::Kind::Nak;
+    case Expect::MachineState: return kind == Reply::Kind::MachineState;
+    case Expect::AxeState: return kind == Reply::Kind::AxeState;
+    case Expect::Temperature: return kind == Reply::Kind::Temperature;
+    case Expect::RelPosition: return kind == Reply::Kind::RelPosition;
+    }
+    return false;
+}
+
+QString frameName(const QByteArray& frame)
+{
+    if (frame.isEmpty())
+        return QStringLiteral("(empty)");
+    const QString text = toMnemonics(frame.left(1));
+    return frame.size() > 1 ? text + QStringLiteral("...") : text;
+}
+} // namespace
+
+QString expectName(Expect expect)
+{
+    switch (expect) {
+    case Expect::None: return QStringLiteral("nothing");
+    case Expect::Ack: return QStringLiteral("<ACK>");
+    case Expect::AckNak: return QStringLiteral("<ACK>/<NAK>");
+    case Expect::MachineState: return QStringLiteral("<ENQ>BBBB#");
+    case Expect::AxeState: return QStringLiteral("<HT>BB#");
+    case Expect::Temperature: return QStringLiteral("<ETB>TT#");
+    case Expect::RelPosition: return QStringLiteral("<ETX>X,Y;Z.");
+    }
+    return {};
+}
+
+Expect expectFor(const QByteArray& frame)
+{
+    if (frame.isEmpty())
+        return Expect::None;
+    switch (frame.at(0)) {
+    case ctrl::ENQ: return Expect::MachineState;
+    case ctrl::HT: return Expect::AxeState;
+    case ctrl::ETB: return Expect::Temperature;
+    case ctrl::ETX: return Expect::RelPosition;
+    case ctrl::SYN: // RequestSync: "akzeptiert den Befehl, schickt aber keine Antwort"
+    case ctrl::DC2: // SetFeedStepXYZ: "grundsätzlich keine Antwort"
+        return Expect::None;
+    default: return Expect::AckNak;
+    }
+}
+
+ElabExchangeQueue::ElabExchangeQueue(Transport* transport, QObject* parent)
+    : QObject(parent), m_transport(transport)
+{
+    m_timer.setSingleShot(true);
+    connect(&m_timer, &QTimer::timeout, this, &ElabExchangeQueue::onTimeout);
+    m_clock.start();
+    if (transport) {
+        connect(transport, &Transport::dataReceived, this, &ElabExchangeQueue::onData);
+        connect(transport, &Transport::bytesWritten, this, &ElabExchangeQueue::onBytesWritten);
+    }
+}
+
+void ElabExchangeQueue::enqueue(ElabExchange ex)
+{
+    m_queue.push_back(std::move(ex));
+    pump();
+}
+
+void ElabExchangeQueue::enqueueNext(ElabExchange ex)
+{
+    m_queue.push_front(std::move(ex));
+    pump();
+}
+
+void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
+{
+    if (discardOutput && m_transport) {
+        // Panic: bytes still waiting in the transport would go out before the stop byte.
+        m_transport->discardOutput();
+        m_outstanding = 0;
+    }
+    write(std::move(ex));
+}
+
+void ElabExchangeQueue::pump()
+{
+    const bool writable = !m_held && m_transport && m_transport->isOpen();
+    if (writable && m_inFlight.empty() && !m_queue.empty()) {
+        ElabExchange ex = std::move(m_queue.front());
+        m_queue.pop_front();
+        write(std::move(ex)); // may complete synchronously only through callbacks that pump
+    }
+    const bool busy = !isIdle();
+    if (m_busy && !busy) {
+        m_busy = false;
+        Q_EMIT idle();
+    } else {
+        m_busy = busy;
+    }
+}
+
+void ElabExchangeQueue::write(ElabExchange ex)
+{
+    if (ex.build)
+        ex.frame = ex.build();
+    if (!m_transport || !m_transport->isOpen()) {
+        failExchange(ex, ErrorKind::LinkDown, tr("not connected"));
+        return;
+    }
+    const QByteArray bytes = ex.frame;
+    const bool poll = ex.poll;
+    m_inFlight.push_back(InFlight{std::move(ex), m_clock.elapsed() + m_timeoutMs});
+    m_outstanding += bytes.size();
+    m_busy = true;
+    Q_EMIT trafficOut(bytes, poll);
+    armTimer();
+    if (m_transport->write(bytes) < 0) {
+        qCWarning(lcElab) << "write failed";
+        // The transport reports its own failure (failed()); the controller fails everything.
+    }
+}
+
+void ElabExchangeQueue::onBytesWritten(qint64 count)
+{
+    m_outstanding = qMax<qint64>(0, m_outstanding - count);
+    if (m_outstanding == 0)
+        completeWritten();
+}
+
+void ElabExchangeQueue::completeWritten()
+{
+    // Frames without a reply are done once nothing of ours is left inside the transport.
+    for (auto it = m_inFlight.begin(); it != m_inFlight.end();) {
+        if (it->ex.expect != Expect::None) {
+            ++it;
+            continue;
+        }
+        ElabExchange ex = std::move(it->ex);
+        it = m_inFlight.erase(it);
+        if (ex.onReply)
+            ex.onReply(Reply{});
+        it = m_inFlight.begin(); // callbacks may have changed the list
+    }
+    armTimer();
+    pump();
+}
+
+void ElabExchangeQueue::onData(const QByteArray& bytes)
+{
+    const QList<Reply> replies = m_decoder.feed(bytes);
+    for (const Reply& reply : replies)
+        handleReply(reply);
+}
+
+void ElabExchangeQueue::handleReply(const Reply& reply)
+{
+    if (reply.kind == Reply::Kind::XOn || reply.kind == Reply::Kind::XOff) {
+        // Flow control of the <DC2> buffer may arrive between any two replies; never a reply.
+        Q_EMIT trafficIn(reply.raw, false);
+        Q_EMIT flowControl(reply.kind == Reply::Kind::XOn);
+        return;
+    }
+    auto target = m_inFlight.begin();
+    while (target != m_inFlight.end() && target->ex.expect == Expect::None)
+        ++target;
+    if (target == m_inFlight.end()) {
+        Q_EMIT trafficIn(reply.raw, false);
+        qCWarning(lcElab) << "stray reply with nothing pending:" << toMnemonics(reply.raw);
+        return;
+    }
+    Q_EMIT trafficIn(reply.raw, target->ex.poll);
+    if (!matches(target->ex.expect, reply.kind)) {
+        if (target->ex.tolerateStray) {
+            qCInfo(lcElab) << "skipped stray reply" << toMnemonics(reply.raw);
+            return;
+        }
+        ElabExchange ex = std::move(target->ex);
+        m_inFlight.erase(target);
+        const QString why =
+            reply.kind == Reply::Kind::Invalid
+                ? tr("garbage on the line (%1: %2)").arg(reply.error, toMnemonics(reply.raw))
+                : tr("unexpected reply %1 to %2 (expected %3)")
+                      .arg(toMnemonics(reply.raw), frameName(ex.frame), expectName(ex.expect));
+        const bool resync = ex.owner != kResyncOwner;
+        failExchange(ex, ErrorKind::Protocol, why);
+        if (resync)
+            resynchronise(why);
+        armTimer();
+        pump();
+        return;
+    }
+    ElabExchange ex = std::move(target->ex);
+    m_inFlight.erase(target);
+    armTimer();
+    if (ex.onReply)
+        ex.onReply(reply);
+    pump();
+}
+
+void ElabExchangeQueue::onTimeout()
+{
+    const qint64 now = m_clock.elapsed();
+    QString reason;
+    for (auto it = m_inFlight.begin(); it != m_inFlight.end();) {
+        if (it->deadlineMs > now) {
+            ++it;
+            continue;
+        }
+        ElabExchange ex = std::move(it->ex);
+        it = m_inFlight.erase(it);
+        if (ex.expect == Expect::None && m_transport && m_transport->bytesToWrite() == 0) {
+            // A transport that reports no bytesWritten: nothing is left inside it, so it left.
+            m_outstanding = 0;
+            if (ex.onReply)
+                ex.onReply(Reply{});
+        } else {
+            const QString why = tr("no reply to %1 within %2 ms")
+                                    .arg(frameName(ex.frame))
+                                    .arg(m_timeoutMs);
+            if (ex.owner != kResyncOwner && ex.expect != Expect::None)
+                reason = why;
+            failExchange(ex, ErrorKind::Timeout, why);
+        }
+        it = m_inFlight.begin();
+    }
+    if (!reason.isEmpty())
+        resynchronise(reason);
+    armTimer();
+    pump();
+}
+
+void ElabExchangeQueue::armTimer()
+{
+    if (m_inFlight.empty()) {
+        m_timer.stop();
+        return;
+    }
+    qint64 earliest = m_inFlight.front().deadlineMs;
+    for (const InFlight& f : m_inFlight)
+        earliest = qMin(earliest, f.deadlineMs);
+    m_timer.start(int(qMax<qint64>(0, earliest - m_clock.elapsed())));
+}
+
+void ElabExchangeQueue::failExchange(ElabExchange& ex, ErrorKind kind, const QString& message)
+{
+    if (ex.onError)
+        ex.onError(kind, message);
+}
+
+void ElabExchangeQueue::resynchronise(const QString& reason)
+{
+    if (m_resyncing)
+        return;
+    m_resyncing = true;
+    qCWarning(lcElab) << "resynchronising:" << reason;
+    Q_EMIT resyncStarted(reason);
+    ElabExchange burst;
+    burst.frame = encode::requestSync(m_syncBurst);
+    burst.expect = Expect::None;
+    burst.owner = kResyncOwner;
+    burst.droppable = false;
+    ElabExchange enq;
+    enq.frame = encode::requestMachineState();
+    enq.expect = Expect::MachineState;
+    enq.owner = kResyncOwner;
+    enq.droppable = false;
+    enq.tolerateStray = true; // late replies of the timed-out exchange come first
+    enq.onReply = [this](const Reply& r) {
+        m_resyncing = false;
+        Q_EMIT resyncFinished(true, r.machineState);
+    };
+    enq.onError = [this](ErrorKind, const QString&) {
+        m_resyncing = false;
+        Q_EMIT resyncFinished(false, 0);
+    };
+    burst.onError = [this](ErrorKind, const QString&) {
+        // The burst could not be written: the status request behind it is pointless too.
+        for (auto it = m_queue.begin(); it != m_queue.end(); ++it) {
+            if (it->owner == kResyncOwner) {
+                m_queue.erase(it);
+                break;
+            }
+        }
+        m_resyncing = false;
+        Q_EMIT resyncFinished(false, 0);
+    };
+    m_queue.push_front(std::move(enq));
+    m_queue.push_front(std::move(burst));
+    pump();
+}
+
+void ElabExchangeQueue::dropQueued(ErrorKind kind, const QString& message, bool all)
+{
+    std::deque<ElabExchange> dropped;
+    for (auto it = m_queue.begin(); it != m_queue.end();) {
+        if (all || it->droppable) {
+            dropped.push_back(std::move(*it));
+            it = m_queue.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    if (all)
+        m_resyncing = false;
+    for (ElabExchange& ex : dropped)
+        failExchange(ex, kind, message);
+    pump();
+}
+
+void ElabExchangeQueue::abandonInFlight(ErrorKind kind, const QString& message)
+{
+    std::deque<InFlight> abandoned;
+    abandoned.swap(m_inFlight);
+    m_timer.stop();
+    for (InFlight& f : abandoned) {
+        if (f.ex.owner == kResyncOwner)
+            m_resyncing = false;
+        failExchange(f.ex, kind, message);
+    }
+}
+
+void ElabExchangeQueue::failAll(ErrorKind kind, const QString& message)
+{
+    abandonInFlight(kind, message);
+    dropQueued(kind, message, true);
+    m_decoder.reset();
+    m_outstanding = 0;
+    m_resyncing = false;
+}
+
+void ElabExchangeQueue::restart()
+{
+    failAll(ErrorKind::Cancelled, tr("link restarted"));
+    m_held = false;
+    m_busy = false;
+}
+
+void ElabExchangeQueue::setHeld(bool held)
+{
+    m_held = held;
+    if (!held)
+        pump();
+}
+
+} // namespace stepdeck::elab

@@ -1,0 +1,122 @@
+#pragma once
+#include "ElabCodec.h"
+#include "model/CommandResult.h"
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+#include <deque>
+#include <functional>
+
+namespace stepdeck {
+class Transport;
+}
+
+namespace stepdeck::elab {
+
+// What a frame is answered with ("Aufbau der Befehle und Parameter": commands get <ACK>/<NAK>,
+// requests repeat their control byte with the data; <SYN> and <DC2> get nothing).
+// Ack: only <ACK> is an answer (ForcePanicStop: "Dieser antwortet mit einem <ACK>").
+enum class Expect { None, Ack, AckNak, MachineState, AxeState, Temperature, RelPosition };
+QString expectName(Expect expect);
+// The reply a single command byte gets (for the console's raw frames).
+Expect expectFor(const QByteArray& frame);
+
+// One request/reply pair on the E-LAB line.
+struct ElabExchange
+{
+    QByteArray frame;                  // written as is, unless build is set
+    std::function<QByteArray()> build; // builds the frame when it is written (jog coalescing)
+    Expect expect = Expect::AckNak;
+    quint64 owner = 0;                 // the request it belongs to; 0: internal
+    bool poll = false;                 // status-poller traffic (the console may hide it)
+    bool droppable = true;             // a stop drops it while it is still queued
+    bool tolerateStray = false;        // replies of another kind are skipped, not errors
+    // Expect::None: called with an empty Reply once the bytes have left the transport.
+    std::function<void(const Reply&)> onReply;
+    std::function<void(ErrorKind, const QString&)> onError;
+};
+
+// The line discipline of the E-LAB adapter: one exchange in flight, replies matched in order,
+// a timeout per exchange, at most one frame inside the transport (frames without a reply are
+// complete when the transport reports them written), resynchronisation after a timeout or
+// garbage, and overtaking for stop and panic.
+//
+// Overtaking: stop and panic are written at once, even with an exchange in flight. The board
+// answers in the order it receives, so the overtaking exchange simply joins the in-flight list
+// behind the exchange already written, and replies keep being matched first-in, first-out.
+// For panic the in-flight exchanges are abandoned first (their bytes may have been discarded
+// from the transport, so their replies may or may not come); the panic exchange and the status
+// read behind it tolerate strays, which absorbs such late replies.
+class ElabExchangeQueue : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr quint64 kResyncOwner = ~quint64(0);
+
+    explicit ElabExchangeQueue(Transport* transport, QObject* parent = nullptr);
+
+    void setTimeoutMs(int ms) { m_timeoutMs = qMax(1, ms); }
+    int timeoutMs() const { return m_timeoutMs; }
+    void setSyncBurst(int count) { m_syncBurst = qMax(1, count); }
+
+    void enqueue(ElabExchange ex);     // behind everything queued
+    void enqueueNext(ElabExchange ex); // ahead of everything queued: the next step of a sequence
+    void overtake(ElabExchange ex, bool discardOutput);
+
+    // Queued (not yet written) exchanges finish with kind/message. all=false keeps
+    // non-droppable ones (polls, resynchronisation).
+    void dropQueued(ErrorKind kind, const QString& message, bool all);
+    // Written exchanges whose reply is pending finish now; late replies become strays.
+    void abandonInFlight(ErrorKind kind, const QString& message);
+    void failAll(ErrorKind kind, const QString& message);
+    // "RequestSync": a burst of <SYN>, then RequestMachineState; strays before its reply are
+    // skipped. Runs ahead of queued work, after what is in flight.
+    void resynchronise(const QString& reason);
+    void restart(); // a new link: decoder, counters and pending state cleared
+    void setHeld(bool held); // nothing is written while held (reset pulse)
+
+    bool isIdle() const { return m_queue.empty() && m_inFlight.empty(); }
+    bool isResyncing() const { return m_resyncing; }
+    int inFlightCount() const { return int(m_inFlight.size()); }
+
+Q_SIGNALS:
+    void flowControl(bool resume); // the board's XON (true) / XOFF (false) during a DC2 stream
+    void trafficOut(const QByteArray& bytes, bool poll);
+    void trafficIn(const QByteArray& bytes, bool poll);
+    void resyncStarted(const QString& reason);
+    void resyncFinished(bool ok, quint16 machineState);
+    void idle(); // nothing queued or in flight any more
+
+private:
+    struct InFlight
+    {
+        ElabExchange ex;
+        qint64 deadlineMs = 0;
+    };
+
+    void pump();
+    void write(ElabExchange ex);
+    void onData(const QByteArray& bytes);
+    void onBytesWritten(qint64 count);
+    void onTimeout();
+    void handleReply(const Reply& reply);
+    void completeWritten();
+    void armTimer();
+    void failExchange(ElabExchange& ex, ErrorKind kind, const QString& message);
+
+    QPointer<Transport> m_transport;
+    ReplyDecoder m_decoder;
+    std::deque<ElabExchange> m_queue;
+    std::deque<InFlight> m_inFlight;
+    QTimer m_timer{this};
+    QElapsedTimer m_clock;
+    qint64 m_outstanding = 0; // bytes handed to the transport and not yet reported written
+    int m_timeoutMs = 500;
+    int m_syncBurst = 16;
+    bool m_held = false;
+    bool m_resyncing = false;
+    bool m_busy = false;
+};
+
+} // namespace stepdeck::elab
