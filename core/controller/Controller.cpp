@@ -90,6 +90,17 @@ void Controller::setDrivePower(RequestId id, int)
     finishError(id, ErrorKind::Unsupported, tr("this controller has no drive power setting"));
 }
 
+void Controller::scanBus(RequestId id)
+{
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no bus to scan"));
+}
+
+void Controller::modelOperation(RequestId id, const QString& name, const QVariantMap&)
+{
+    finishError(id, ErrorKind::Unsupported,
+                tr("this controller has no operation '%1'").arg(name));
+}
+
 QString Controller::jogRefusal() const
 {
     if (m_linkState != LinkState::Connected)

@@ -74,6 +74,14 @@ public:
     virtual void sendRaw(RequestId id, const QByteArray& bytes) = 0;
     virtual void setPollInterval(int ms) = 0;
 
+    // --- model-specific (default: unsupported) ---
+    // Lists the drives on a multi-drive bus. Result value: QVariantList of QVariantMaps
+    // {address, hardware, interface, date, firmware}.
+    virtual void scanBus(RequestId id);
+    // A named operation only some models offer (records, error memory, ...); names, args and
+    // result values are documented by the model's controller header.
+    virtual void modelOperation(RequestId id, const QString& name, const QVariantMap& args);
+
     // --- jog: a velocity lease, ramped by the core JogRamp in this thread ---
     // Renews the lease; axes not named keep their target. Unless renewed within
     // options().jogLeaseMs, every target drops to zero and the axes ramp down by themselves.

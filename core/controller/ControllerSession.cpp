@@ -68,6 +68,7 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
     const ModelInfo* model = m_model;
     Controller* controller = nullptr;
     Simulator* simulator = nullptr;
+    Capabilities capabilities;
     ThreadContext* context = static_cast<ThreadContext*>(m_context);
     // Build the stack inside the controller thread so every QObject has the right affinity.
     QMetaObject::invokeMethod(
@@ -78,6 +79,9 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
                 auto [hostEnd, deviceEnd] = LoopbackTransport::createPair(context);
                 SimulatorOptions simOptions = spec.simulator;
                 simOptions.line = model->line;
+                // A bus simulator serves the drives the axis map names unless told otherwise.
+                if (simOptions.addresses.isEmpty())
+                    simOptions.addresses = spec.options.axisAddresses.values();
                 simulator = model->createSimulator(simOptions);
                 simulator->setParent(context);
                 deviceEnd->open(model->line);
@@ -88,10 +92,12 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
             }
             controller = model->createController(transport, spec.options);
             controller->setParent(context);
+            capabilities = controller->capabilities(); // may depend on the axis map
         },
         Qt::BlockingQueuedConnection);
     m_controller = controller;
     m_simulator = simulator;
+    m_capabilities = capabilities;
 
     connect(m_controller, &Controller::linkStateChanged, this,
             [this](LinkState state, const QString& reason) {
@@ -138,7 +144,7 @@ void ControllerSession::destroy()
 
 Capabilities ControllerSession::capabilities() const
 {
-    return m_model ? m_model->capabilities : Capabilities{};
+    return m_controller ? m_capabilities : m_model ? m_model->capabilities : Capabilities{};
 }
 
 ParameterSchema ControllerSession::schema() const
@@ -212,6 +218,12 @@ RequestId ControllerSession::refreshStatus() { STEPDECK_POST(refreshStatus(id), 
 RequestId ControllerSession::sendRaw(const QByteArray& bytes)
 {
     STEPDECK_POST(sendRaw(id, bytes), false)
+}
+
+RequestId ControllerSession::scanBus() { STEPDECK_POST(scanBus(id), false) }
+RequestId ControllerSession::modelOperation(const QString& name, const QVariantMap& args)
+{
+    STEPDECK_POST(modelOperation(id, name, args), false)
 }
 
 #undef STEPDECK_POST

@@ -60,6 +60,8 @@ public:
     RequestId setDrivePower(int percent);
     RequestId refreshStatus();
     RequestId sendRaw(const QByteArray& bytes);
+    RequestId scanBus();
+    RequestId modelOperation(const QString& name, const QVariantMap& args = {});
     void setPollInterval(int ms);
     void setJogVelocity(const AxisVelocities& targets);
     void endJog();
@@ -89,6 +91,7 @@ private:
     Simulator* m_simulator = nullptr;   // lives in m_thread
     LinkState m_linkState = LinkState::Disconnected;
     MachineStatus m_status;
+    Capabilities m_capabilities; // the controller's, read once at create()
     double m_pollRateHz = 0;
     std::atomic<RequestId> m_lastId{0};
 };
