@@ -23,6 +23,8 @@ struct SimulatorFaults
     int corruptReplies = 0; // the next N replies have a byte flipped
     int delayMs = 0;        // every reply is held back this long
     bool silent = false;    // answers nothing at all
+    int forceNak = 0;       // the next N commands answered by ACK/NAK get NAK and are not
+                            // executed (honoured by the model simulators; requests unaffected)
 };
 
 // The device side of a protocol (like QGroundControl's MockLink). It receives host bytes and
@@ -41,6 +43,7 @@ public:
     void attach(Transport* deviceEnd);
 
     SimulatorFaults& faults() { return m_faults; }
+    const SimulatorFaults& faults() const { return m_faults; }
     void setFaults(const SimulatorFaults& faults) { m_faults = faults; }
     void setPacing(bool enabled, const LineSettings& line);
     qint64 bytesPending() const { return m_paced.size(); }

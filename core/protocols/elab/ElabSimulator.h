@@ -1,19 +1,136 @@
 #pragma once
-// SHELL: replaced by the real simulator (issue #2, section 4).
+#include "ElabCodec.h"
+#include "ElabSimAxis.h"
+#include "ElabSimStream.h"
+#include "model/Axis.h"
 #include "sim/Simulator.h"
+#include <QElapsedTimer>
+#include <QTimer>
 
 namespace stepdeck::elab {
 
+// The device side of the E-LAB 3-axis protocol (manual: elab-3axis-stepper-controller.de.txt):
+// every command of the control-character table with the ACK/NAK rules of its notes,
+// time-based motion per axis (ElabSimAxis), switches at configurable positions with the
+// configured polarity, temperature, start and panic buttons, the <DC2> step buffer with
+// XOFF/XON (ElabSimStream) and fault injection. Positions advance by elapsed time; a timer
+// runs only while something moves.
 class ElabSimulator : public Simulator
 {
     Q_OBJECT
 public:
-    explicit ElabSimulator(const SimulatorOptions& options, QObject* parent = nullptr)
-        : Simulator(options, parent)
-    {
-    }
+    explicit ElabSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
+    ~ElabSimulator() override;
+
     QString modelId() const override { return QStringLiteral("elab"); }
-    void receive(const QByteArray&) override {}
+    void receive(const QByteArray& bytes) override;
+
+    // Power-on state: setup incomplete, parameters cleared, positions 0, relays off, buffer
+    // empty. The machine itself (switch positions, wiring, buttons, temperature) stays.
+    void powerOnReset();
+
+    // ---- fault injection (drop/corrupt/delay/silent: faults() of the base class) ----
+    // The next `count` commands that the controller answers with ACK/NAK are refused with NAK
+    // and not executed. Requests (ENQ, HT, ETB, ETX, LF) are not affected.
+    void forceNak(int count) { faults().forceNak = qMax(0, count); }
+    int forcedNaksPending() const { return faults().forceNak; }
+
+    // ---- the machine around the board ----
+    void setTemperature(int celsius);
+    int temperature() const { return m_temperature; }
+    void setStartButton(bool pressed) { m_startButton = pressed; }
+    bool startButton() const { return m_startButton; }
+    void setPanicButton(bool pressed); // Not-Aus: stops everything, sets tmPanicStop
+    bool panicButton() const { return m_panicButton; }
+    // Switches actuated by hand (or stuck), independent of the position.
+    void setLimitSwitchActuated(Axis axis, bool actuated);
+    void setReferenceSwitchActuated(Axis axis, bool actuated);
+    void setLimitPositions(Axis axis, qint64 minimum, qint64 maximum);
+    void setReferencePosition(Axis axis, qint64 position, qint64 window);
+    void setSwitchWiring(Axis axis, bool limitActiveHigh, bool referenceActiveHigh);
+    ElabSimSwitchConfig switchConfig(Axis axis) const;
+    void setPosition(Axis axis, qint64 steps); // places the carriage (test setup)
+    void setStreamBuffer(int capacity, int highWater, int lowWater);
+
+    // ---- observation (tests, stepdeck-sim) ----
+    quint16 machineState();
+    quint8 axeState();
+    qint64 position(Axis axis);
+    bool isMoving(Axis axis);
+    bool isBusy();
+    qint64 remainingSteps(Axis axis);
+    bool limitSwitchActive(Axis axis) const;
+    bool referenceSwitchActive(Axis axis) const;
+    bool limitSwitchLevelHigh(Axis axis) const;
+    ElabSimRamp rampParameters(Axis axis) const;
+    int drivePower() const { return m_drivePower; }
+    quint32 spindleRpm() const { return m_spindleRpm; }
+    bool coolant() const { return m_coolant; }
+    // <DC2> stream: single steps executed per axis (absolute count), step bytes executed,
+    // bytes that arrived with the buffer full, bytes refused (panic, limit, no setup, stopped).
+    qint64 executedSteps(Axis axis) const;
+    qint64 executedStepBytes() const { return m_stream.executed(); }
+    qint64 streamOverflows() const { return m_stream.overflows(); }
+    qint64 streamRejected() const { return m_stream.rejected(); }
+    int streamBuffered() const { return m_stream.size(); }
+    bool streamHostPaused() const { return m_stream.hostPaused(); }
+    bool isTicking() const { return m_tick.isActive(); }
+    qint64 commandsReceived() const { return m_commands; }
+    QString lastNakReason() const { return m_lastNakReason; } // why the last NAK was sent
+
+private:
+    ElabSimAxis& axis(Axis a) { return m_axes[size_t(a)]; }
+    const ElabSimAxis& axis(Axis a) const { return m_axes[size_t(a)]; }
+
+    // ---- protocol (ElabSimulator.cpp) ----
+    void handle(const Command& cmd);
+    bool handleRequest(const Command& cmd);
+    bool refusedByNotes(const Command& cmd, QString* why) const;
+    bool execute(const Command& cmd, QString* why);
+    void ack() { send(QByteArray(1, ctrl::ACK)); }
+    void nak() { send(QByteArray(1, ctrl::NAK)); }
+
+    // ---- commands (ElabSimCommands.cpp) ----
+    bool setupComplete() const { return m_setupDone == 0x7; }
+    bool anyLimitActive() const;
+    bool anyAxisMoving() const;
+    bool busyNow() const { return anyAxisMoving() || m_stream.running(); }
+    bool onlyModeMoving(ElabSimAxis::Mode mode) const;
+    bool canStartMove(QString* why) const;
+    bool doRamp(const Command& cmd, QString* why);
+    bool doPolarity(const Command& cmd, QString* why);
+    bool doFastMove(const Command& cmd, QString* why);
+    bool doFeed(const Command& cmd, QString* why);
+    bool doReference(const Command& cmd, QString* why);
+    bool doVelocity(const Command& cmd, QString* why);
+    bool doJog(const Command& cmd, QString* why);
+    void doStreamStep(const Command& cmd);
+    void stopAll(bool ramped);
+
+    // ---- time (ElabSimulator.cpp) ----
+    void advanceToNow();
+    void advanceStream(double seconds);
+    void checkLimits();
+    double streamRate() const;
+    void sendFlowControl();
+    void updateTimer();
+
+    CommandDecoder m_decoder;
+    std::array<ElabSimAxis, 3> m_axes;
+    ElabSimStream m_stream;
+    QTimer m_tick{this};
+    QElapsedTimer m_clock;
+    qint64 m_lastNs = 0;
+
+    int m_setupDone = 0; // bit 0 start speed, bit 1 max speed, bit 2 acceleration
+    int m_drivePower = 0;
+    quint32 m_spindleRpm = 0;
+    bool m_coolant = false;
+    int m_temperature = 25;
+    bool m_startButton = false;
+    bool m_panicButton = false;
+    qint64 m_commands = 0;
+    QString m_lastNakReason;
 };
 
 } // namespace stepdeck::elab
