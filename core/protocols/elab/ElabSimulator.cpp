@@ -104,6 +104,12 @@ bool ElabSimulator::handleRequest(const Command& cmd)
         send(QByteArray(1, ctrl::ETB) + hex(quint8(m_temperature), 2) + '#');
         return true;
     case ctrl::ETX: { // RequestRelPosition: <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
+        // Interpretation: ForceStopMove says "ist diesem die noch verbleibenden Schritte des
+        // vorausgegangenen FastMove Kommandos bekannt ... kann er mit RequestRelPosition die
+        // jeweils noch verbleibenden Schritte abfragen". So the reply is, per axis, the signed
+        // steps of the last FastMove (or FeedSteps) not executed: 0 after a completed move,
+        // target minus reached after a stop, limit or panic; cleared by SetClearPosition and
+        // by a new move of the axis. The absolute position stays internal (no reply has it).
         QByteArray reply(1, ctrl::ETX);
         const char separators[3] = {',', ';', '.'};
         for (int i = 0; i < 3; ++i)
