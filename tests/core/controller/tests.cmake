@@ -1,0 +1,3 @@
+stepdeck_add_test(tst_jogramp SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogramp.cpp LABELS unit)
+stepdeck_add_test(tst_statuspoller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_statuspoller.cpp LABELS unit)
+stepdeck_add_test(tst_controllerbase SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_controllerbase.cpp LABELS unit)
