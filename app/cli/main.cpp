@@ -1,7 +1,61 @@
-// Placeholder until the executable is written.
+// stepdeck-cli: the technicians' scripting interface (issue #2, section 5; docs/cli.md).
+#include "../common/SignalPipe.h"
+#include "CliArguments.h"
+#include "CliCommands.h"
+#include "CliOutput.h"
+#include "CliSession.h"
 #include <QCoreApplication>
+
+using namespace stepdeck;
+using namespace stepdeck::cli;
+
+namespace {
+// Stderr carries exactly one line on failure; the core's warnings only with --verbose or
+// QT_LOGGING_RULES.
+void quietMessageHandler(QtMsgType type, const QMessageLogContext&, const QString& message)
+{
+    if (type == QtFatalMsg)
+        printError(message);
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
-    return 0;
+    QCoreApplication application(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("stepdeck-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+
+    CliOptions options;
+    QString error;
+    if (!parseArguments(application.arguments().mid(1), &options, &error)) {
+        printError(error);
+        return ExitUsage;
+    }
+    if (options.help) {
+        printLine(usageText());
+        return ExitOk;
+    }
+    if (options.version) {
+        printLine(QStringLiteral("stepdeck-cli %1").arg(QCoreApplication::applicationVersion()));
+        return ExitOk;
+    }
+    if (!options.verbose && qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        qInstallMessageHandler(quietMessageHandler);
+
+    CliSession session(options);
+    const stepdeck::app::SignalPipe signalPipe([&session](int) { session.interrupt(); });
+
+    CliContext context{options, findModel(options.model), session};
+    Outcome outcome = runCommand(context);
+    if (session.interrupted()) {
+        session.stopMotion();
+        outcome = Outcome::failure(
+            ExitInterrupted,
+            session.isConnected()
+                ? QCoreApplication::translate("stepdeck-cli", "interrupted: stop sent")
+                : QCoreApplication::translate("stepdeck-cli", "interrupted"));
+    }
+    if (!outcome.ok())
+        printError(outcome.message);
+    return outcome.code;
 }

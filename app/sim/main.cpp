@@ -1,7 +1,83 @@
-// Placeholder until the executable is written.
+// stepdeck-sim: a simulated controller on a pseudo-terminal (issue #2, section 4).
+// The first stdout line is the slave path; tests read it and point stepdeck-cli at it.
+#include "../common/SignalPipe.h"
+#include "SimScenario.h"
+#include "protocols/Registry.h"
+#include "sim/PtyEndpoint.h"
 #include <QCoreApplication>
+#include <cstdio>
+
+using namespace stepdeck;
+
+namespace {
+void printTo(FILE* stream, const QString& text)
+{
+    const QByteArray bytes = text.toUtf8() + '\n';
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
+    std::fflush(stream);
+}
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-sim", text);
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
-    return 0;
+    QCoreApplication application(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("stepdeck-sim"));
+
+    simapp::SimScenario scenario;
+    QString error;
+    if (!simapp::parseScenario(application.arguments().mid(1), &scenario, &error)) {
+        printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(error));
+        return 2;
+    }
+    if (scenario.help) {
+        printTo(stdout, simapp::simUsage());
+        return 0;
+    }
+    const ModelInfo* model = findModel(scenario.model);
+    if (!model || !model->createSimulator) {
+        printTo(stderr, QStringLiteral("stepdeck-sim: %1")
+                            .arg(tr("unknown controller model '%1' (known: %2)")
+                                     .arg(scenario.model, modelIds().join(QStringLiteral(", ")))));
+        return 2;
+    }
+
+    SimulatorOptions options;
+    options.addresses = scenario.drives;
+    options.paceOutput = scenario.pace;
+    options.line = model->line;
+    Simulator* simulator = model->createSimulator(options);
+    simulator->setParent(&application);
+    if (!simapp::applyScenario(scenario, simulator, &error)) {
+        printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(error));
+        return 2;
+    }
+
+    PtyEndpoint endpoint;
+    if (!endpoint.create(&error)) {
+        printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(error));
+        return 1;
+    }
+    QObject::connect(&endpoint, &Transport::failed, &application, [](const QString& reason) {
+        printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(reason));
+        QCoreApplication::exit(1);
+    });
+    endpoint.open(model->line);
+    simulator->attach(&endpoint);
+
+    // First line, flushed: the contract with tests and scripts.
+    printTo(stdout, endpoint.slavePath());
+    printTo(stderr, tr("stepdeck-sim: %1 (%2) on %3%4; SIGINT/SIGTERM to quit")
+                        .arg(model->id, model->displayName, endpoint.slavePath(),
+                             scenario.pace ? tr(", paced at %1 baud").arg(model->line.baudRate)
+                                           : QString()));
+
+    const stepdeck::app::SignalPipe signalPipe([](int) { QCoreApplication::quit(); });
+    const int code = application.exec();
+    delete simulator; // before the endpoint it is connected to
+    return code;
 }

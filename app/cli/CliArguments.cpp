@@ -1,0 +1,263 @@
+#include "CliArguments.h"
+#include "CliOutput.h"
+#include <QCoreApplication>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+// "--name VALUE" or "--name=VALUE" at args[*i]; advances *i past the value.
+bool optionValue(const QStringList& args, int* i, const QString& name, QString* value,
+                 QString* error)
+{
+    const QString& arg = args.at(*i);
+    if (arg.startsWith(name + QLatin1Char('='))) {
+        *value = arg.mid(name.size() + 1);
+        return true;
+    }
+    if (*i + 1 >= args.size()) {
+        *error = tr("option %1 needs a value").arg(name);
+        return false;
+    }
+    *i += 1;
+    *value = args.at(*i);
+    return true;
+}
+
+bool isOption(const QString& arg, const QString& name)
+{
+    return arg == name || arg.startsWith(name + QLatin1Char('='));
+}
+
+template <typename T, typename Parse>
+bool parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
+                          QString* error, Parse parse)
+{
+    QMap<Axis, T> result;
+    for (const QString& arg : args) {
+        const int eq = arg.indexOf(QLatin1Char('='));
+        const auto axis = eq > 0 ? axisFromName(QStringView(arg).left(eq)) : std::nullopt;
+        if (!axis) {
+            *error = tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg);
+            return false;
+        }
+        if (!axes.contains(*axis)) {
+            *error = tr("this machine has no axis %1").arg(axisName(*axis));
+            return false;
+        }
+        if (result.contains(*axis)) {
+            *error = tr("axis %1 given twice").arg(axisName(*axis));
+            return false;
+        }
+        bool ok = false;
+        const T value = parse(arg.mid(eq + 1).trimmed(), &ok);
+        if (!ok) {
+            *error = tr("%1: '%2' is not a number").arg(axisName(*axis), arg.mid(eq + 1));
+            return false;
+        }
+        result.insert(*axis, value);
+    }
+    if (result.isEmpty()) {
+        *error = tr("no axis given (e.g. X=100 Y=0 Z=-50)");
+        return false;
+    }
+    *out = result;
+    return true;
+}
+} // namespace
+
+bool parseArguments(const QStringList& argv, CliOptions* options, QString* error)
+{
+    CliOptions o;
+    for (int i = 0; i < argv.size(); ++i) {
+        const QString& arg = argv.at(i);
+        QString value;
+        if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
+            o.help = true;
+        } else if (arg == QLatin1String("--version")) {
+            o.version = true;
+        } else if (arg == QLatin1String("--json")) {
+            o.json = true;
+        } else if (arg == QLatin1String("--setup-defaults")) {
+            o.setupDefaults = true;
+        } else if (arg == QLatin1String("--verbose") || arg == QLatin1String("-v")) {
+            o.verbose = true;
+        } else if (isOption(arg, QStringLiteral("--model"))) {
+            if (!optionValue(argv, &i, QStringLiteral("--model"), &o.model, error))
+                return false;
+        } else if (isOption(arg, QStringLiteral("--port"))) {
+            if (!optionValue(argv, &i, QStringLiteral("--port"), &o.port, error))
+                return false;
+        } else if (isOption(arg, QStringLiteral("--address"))) {
+            if (!optionValue(argv, &i, QStringLiteral("--address"), &value, error))
+                return false;
+            bool ok = false;
+            const int n = value.toInt(&ok);
+            if (!ok || n < 0) {
+                *error = tr("--address needs a non-negative number, got '%1'").arg(value);
+                return false;
+            }
+            o.address = n;
+        } else if (isOption(arg, QStringLiteral("--axes"))) {
+            if (!optionValue(argv, &i, QStringLiteral("--axes"), &value, error) ||
+                !parseAxisMap(value, &o.axisAddresses, error))
+                return false;
+        } else if (isOption(arg, QStringLiteral("--timeout"))) {
+            if (!optionValue(argv, &i, QStringLiteral("--timeout"), &value, error))
+                return false;
+            bool ok = false;
+            o.connectTimeoutMs = value.toInt(&ok);
+            if (!ok || o.connectTimeoutMs <= 0) {
+                *error = tr("--timeout needs a positive number of milliseconds");
+                return false;
+            }
+        } else if (o.command.isEmpty() && !arg.startsWith(QLatin1String("--"))) {
+            o.command = arg;
+        } else if (o.command.isEmpty()) {
+            *error = tr("unknown option '%1' (try --help)").arg(arg);
+            return false;
+        } else {
+            o.args << arg; // the command's own arguments and options
+        }
+    }
+    if (o.address && !o.axisAddresses.isEmpty()) {
+        *error = tr("give either --address or --axes, not both");
+        return false;
+    }
+    if (o.command.isEmpty() && !o.help && !o.version) {
+        *error = tr("no command given (try --help)");
+        return false;
+    }
+    *options = o;
+    return true;
+}
+
+bool takeFlag(QStringList* args, const QString& flag)
+{
+    return args->removeAll(flag) > 0;
+}
+
+std::optional<QString> takeOption(QStringList* args, const QString& option, QString* error)
+{
+    for (int i = 0; i < args->size(); ++i) {
+        if (!isOption(args->at(i), option))
+            continue;
+        QString value;
+        int end = i;
+        if (!optionValue(*args, &end, option, &value, error))
+            return std::nullopt;
+        args->erase(args->begin() + i, args->begin() + end + 1);
+        return value;
+    }
+    return std::nullopt;
+}
+
+QString unknownOption(const QStringList& args)
+{
+    for (const QString& arg : args) {
+        if (arg.startsWith(QLatin1String("--")))
+            return tr("unknown option '%1' (try --help)").arg(arg);
+    }
+    return {};
+}
+
+bool parseAxisIntegers(const QStringList& args, const QList<Axis>& axes, AxisVector* out,
+                       QString* error)
+{
+    return parseAxisAssignments<qint64>(
+        args, axes, out, error, [](const QString& s, bool* ok) { return s.toLongLong(ok); });
+}
+
+bool parseAxisDoubles(const QStringList& args, const QList<Axis>& axes, AxisVelocities* out,
+                      QString* error)
+{
+    return parseAxisAssignments<double>(args, axes, out, error,
+                                        [](const QString& s, bool* ok) { return s.toDouble(ok); });
+}
+
+bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error)
+{
+    QMap<Axis, qint64> parsed;
+    if (!parseAxisAssignments<qint64>(
+            text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed, error,
+            [](const QString& s, bool* ok) { return s.toLongLong(ok); })) {
+        *error = tr("--axes: %1").arg(*error);
+        return false;
+    }
+    QMap<Axis, int> result;
+    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it) {
+        if (it.value() < 0 || it.value() > 255) {
+            *error = tr("--axes: address %1 of axis %2 is out of range (allowed: 0..255)")
+                         .arg(it.value())
+                         .arg(axisName(it.key()));
+            return false;
+        }
+        result.insert(it.key(), int(it.value()));
+    }
+    *out = result;
+    return true;
+}
+
+QString usageText()
+{
+    return tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
+              "X=1,Y=2,Z=3] [--json] COMMAND [ARGS]\n"
+              "\n"
+              "Options (before or after the command):\n"
+              "  --model MODEL      controller model (default: elab; see `models`)\n"
+              "  --port PORT        serial device path | tcp://HOST:PORT | sim (in-process\n"
+              "                     simulator; the default)\n"
+              "  --address N        bus address of a single-drive model (axis X=N)\n"
+              "  --axes MAP         axis to bus address map for multi-drive links, e.g.\n"
+              "                     X=1,Y=2,Z=3\n"
+              "  --json             machine-readable output: one JSON object on stdout\n"
+              "  --setup-defaults   write every parameter's schema default before the command\n"
+              "                     (also the switch polarities; see `params`)\n"
+              "  --timeout MS       how long to wait for the link to come up (default 3000)\n"
+              "  --verbose          show the core's log output on stderr\n"
+              "  --help, --version\n"
+              "\n"
+              "Commands:\n"
+              "  ports                       serial ports with description and USB VID:PID\n"
+              "                              (pseudo-terminals are not listed)\n"
+              "  status                      one poll: machine and axis flags, positions,\n"
+              "                              temperature\n"
+              "  set NAME=V[,V,V] ...        write parameters; per-axis values in X,Y,Z(,U)\n"
+              "                              order, or one value for every axis\n"
+              "  get NAME ...                read back where the protocol can, else say it\n"
+              "                              cannot (exit 8)\n"
+              "  export FILE                 parameter set as JSON: values read back where the\n"
+              "                              model can, otherwise the schema defaults (E-LAB\n"
+              "                              parameters are write-only); \"origin\" in the file\n"
+              "                              says which is which\n"
+              "  import FILE                 validates the whole file first, refuses it with\n"
+              "                              one reason if anything is wrong, then writes\n"
+              "                              every parameter in it\n"
+              "  move [--abs] X=N Y=N Z=N    positioning move in steps; waits until idle and\n"
+              "                              prints the positions (--no-wait: return at once)\n"
+              "  jog X=V Y=V Z=V --for MS    jog at V steps/s for MS ms, ramped up and back\n"
+              "                              to zero\n"
+              "  home X=-1 Y=0 Z=1           reference move with a direction per axis; waits\n"
+              "                              until idle (--no-wait)\n"
+              "  velocity X=V Y=V Z=V        velocity move in steps/s; runs until Ctrl-C or\n"
+              "                              SIGTERM (or --for MS), then a ramped stop\n"
+              "  feed X=N Y=N Z=N            feed move; waits until idle (--no-wait: one axis\n"
+              "                              only; a multi-axis feed is streamed by the host)\n"
+              "  stop | panic | reset        ramped stop | emergency stop | hardware reset\n"
+              "  spindle RPM | coolant on|off | power PERCENT\n"
+              "  models                      controller models known to this build\n"
+              "  params                      the model's parameters: range, unit, default\n"
+              "\n"
+              "Positions are tracked by the host on models without position read-back\n"
+              "(E-LAB): every invocation is a new session and starts with positions unknown\n"
+              "(counted from 0), so `move --abs` is refused there; `move`, `home` and `feed`\n"
+              "print the positions they end at.\n"
+              "\n") +
+           exitCodeHelp();
+}
+
+} // namespace stepdeck::cli

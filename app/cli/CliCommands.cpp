@@ -1,0 +1,222 @@
+#include "CliCommands.h"
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QSerialPortInfo>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+struct CommandEntry
+{
+    const char* name;
+    Outcome (*run)(CliContext&, QStringList);
+    bool needsModel;
+};
+
+const CommandEntry kCommands[] = {
+    {"ports", cmdPorts, false},  {"models", cmdModels, false},  {"params", cmdParams, true},
+    {"status", cmdStatus, true}, {"set", cmdSet, true},         {"get", cmdGet, true},
+    {"export", cmdExport, true}, {"import", cmdImport, true},   {"move", cmdMove, true},
+    {"jog", cmdJog, true},       {"home", cmdHome, true},       {"velocity", cmdVelocity, true},
+    {"feed", cmdFeed, true},     {"stop", cmdStop, true},       {"panic", cmdPanic, true},
+    {"reset", cmdReset, true},   {"spindle", cmdSpindle, true}, {"coolant", cmdCoolant, true},
+    {"power", cmdPower, true},
+};
+
+QString rangeText(const ParameterSpec& spec)
+{
+    switch (spec.type) {
+    case ParameterType::Integer:
+        return QStringLiteral("%1..%2").arg(spec.minimum).arg(spec.maximum);
+    case ParameterType::Boolean:
+        return QStringLiteral("on|off");
+    case ParameterType::Choice:
+        return spec.choices.join(QLatin1Char('|'));
+    }
+    return {};
+}
+
+QString typeName(ParameterType type)
+{
+    switch (type) {
+    case ParameterType::Integer:
+        return QStringLiteral("integer");
+    case ParameterType::Boolean:
+        return QStringLiteral("boolean");
+    case ParameterType::Choice:
+        return QStringLiteral("choice");
+    }
+    return {};
+}
+} // namespace
+
+Outcome CliContext::connect()
+{
+    Outcome result = session.connectLink();
+    if (!result.ok() || !options.setupDefaults || setupWritten)
+        return result;
+    setupWritten = true;
+    result = writeParameters(*this, schemaDefaults(*model));
+    if (!result.ok())
+        result.message = tr("--setup-defaults: %1").arg(result.message);
+    return result;
+}
+
+ParameterSet schemaDefaults(const ModelInfo& model)
+{
+    ParameterSet set;
+    for (const ParameterSpec& spec : model.schema.specs()) {
+        if (!spec.writable || !spec.defaultValue.isValid())
+            continue;
+        ParameterValue value;
+        if (spec.perAxis) {
+            for (Axis axis : model.capabilities.axes)
+                value.perAxis.insert(axis, spec.defaultValue);
+        } else {
+            value.global = spec.defaultValue;
+        }
+        set.insert(spec.name, value);
+    }
+    return set;
+}
+
+Outcome writeParameters(CliContext& c, const ParameterSet& set)
+{
+    bool verify = false;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = c.model->schema.find(it.key());
+        verify = verify || (spec && spec->readable);
+    }
+    return c.session.run([&](ControllerSession& s) { return s.writeParameters(set, verify); });
+}
+
+Outcome runCommand(CliContext& context)
+{
+    const QString& name = context.options.command;
+    for (const CommandEntry& entry : kCommands) {
+        if (name != QLatin1String(entry.name))
+            continue;
+        if (entry.needsModel && !context.model) {
+            return Outcome::usage(
+                tr("unknown controller model '%1' (known: %2)")
+                    .arg(context.options.model, modelIds().join(QStringLiteral(", "))));
+        }
+        return entry.run(context, context.options.args);
+    }
+    return Outcome::usage(tr("unknown command '%1' (try --help)").arg(name));
+}
+
+Outcome cmdPorts(CliContext& c, QStringList args)
+{
+    if (!args.isEmpty())
+        return Outcome::usage(tr("ports takes no arguments"));
+    QJsonArray list;
+    QStringList lines;
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
+        const QString vidPid = info.hasVendorIdentifier() && info.hasProductIdentifier()
+                                   ? QStringLiteral("%1:%2")
+                                         .arg(info.vendorIdentifier(), 4, 16, QLatin1Char('0'))
+                                         .arg(info.productIdentifier(), 4, 16, QLatin1Char('0'))
+                                   : QString();
+        list.append(QJsonObject{{"path", info.systemLocation()},
+                                {"description", info.description()},
+                                {"manufacturer", info.manufacturer()},
+                                {"serialNumber", info.serialNumber()},
+                                {"vidPid", vidPid.isEmpty() ? QJsonValue() : QJsonValue(vidPid)}});
+        lines << QStringLiteral("%1  %2  %3%4")
+                     .arg(info.systemLocation(), -16)
+                     .arg(info.description().isEmpty() ? tr("(no description)")
+                                                       : info.description())
+                     .arg(vidPid.isEmpty() ? tr("(not USB)") : vidPid)
+                     .arg(info.manufacturer().isEmpty()
+                              ? QString()
+                              : QStringLiteral("  ") + info.manufacturer());
+    }
+    if (c.json()) {
+        printJson(QJsonObject{{"ports", list}});
+    } else if (lines.isEmpty()) {
+        printLine(tr("no serial ports found (pseudo-terminals are never listed: pass their path "
+                     "with --port)"));
+    } else {
+        for (const QString& line : lines)
+            printLine(line);
+    }
+    return Outcome::success();
+}
+
+Outcome cmdModels(CliContext& c, QStringList args)
+{
+    if (!args.isEmpty())
+        return Outcome::usage(tr("models takes no arguments"));
+    QJsonArray list;
+    for (const ModelInfo& model : models()) {
+        QJsonArray axes;
+        for (Axis a : model.capabilities.axes)
+            axes.append(axisName(a));
+        list.append(QJsonObject{{"id", model.id},
+                                {"name", model.displayName},
+                                {"baudRate", int(model.line.baudRate)},
+                                {"axes", axes}});
+        if (!c.json())
+            printLine(QStringLiteral("%1  %2").arg(model.id, -10).arg(model.displayName));
+    }
+    if (c.json())
+        printJson(QJsonObject{{"models", list}});
+    return Outcome::success();
+}
+
+Outcome cmdParams(CliContext& c, QStringList args)
+{
+    if (!args.isEmpty())
+        return Outcome::usage(tr("params takes no arguments"));
+    QJsonArray list;
+    for (const ParameterSpec& spec : c.model->schema.specs()) {
+        list.append(QJsonObject{{"name", spec.name},
+                                {"label", spec.label},
+                                {"group", spec.group},
+                                {"unit", spec.unit},
+                                {"type", typeName(spec.type)},
+                                {"range", rangeText(spec)},
+                                {"perAxis", spec.perAxis},
+                                {"readable", spec.readable},
+                                {"writable", spec.writable},
+                                {"default", QJsonValue::fromVariant(spec.defaultValue)},
+                                {"description", spec.description}});
+        if (c.json())
+            continue;
+        printLine(QStringLiteral("%1  %2  %3  %4  %5  %6")
+                      .arg(spec.name, -19)
+                      .arg(spec.perAxis ? tr("per axis") : tr("global"), -8)
+                      .arg(QStringLiteral("%1 %2").arg(rangeText(spec), spec.unit).trimmed(), -19)
+                      .arg(tr("default %1").arg(spec.defaultValue.toString()), -14)
+                      .arg(spec.readable ? tr("readable") : tr("write-only"), -10)
+                      .arg(spec.label));
+    }
+    if (c.json())
+        printJson(QJsonObject{{"model", c.model->id}, {"parameters", list}});
+    return Outcome::success();
+}
+
+Outcome cmdStatus(CliContext& c, QStringList args)
+{
+    if (!args.isEmpty())
+        return Outcome::usage(tr("status takes no arguments"));
+    Outcome result = c.connect();
+    if (result.ok())
+        result = c.session.refresh();
+    if (!result.ok())
+        return result;
+    if (c.json())
+        printJson(c.session.status().toJson(c.model->id));
+    else
+        printLine(
+            formatStatus(c.session.status(), *c.model, c.options.port, c.session.linkStateText()));
+    return Outcome::success();
+}
+
+} // namespace stepdeck::cli

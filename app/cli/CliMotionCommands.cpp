@@ -1,0 +1,302 @@
+// Motion and auxiliary commands. Refusals (limit switch, setup incomplete, not idle, position
+// unknown) come from the adapter, which knows the manual's rules; the CLI only checks shapes.
+#include "CliCommands.h"
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QtMath>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+constexpr int kJogRenewMs = 100; // well inside the adapter's jog lease (300 ms)
+
+Outcome connectAndRun(CliContext& c, const std::function<RequestId(ControllerSession&)>& start)
+{
+    Outcome result = c.connect();
+    if (result.ok())
+        result = c.session.run(start);
+    return result;
+}
+
+// After a move: the positions it ended at (they only exist in this session on models that
+// cannot read positions back), or the whole status as JSON.
+Outcome reportPositions(CliContext& c)
+{
+    if (c.json())
+        printJson(c.session.status().toJson(c.model->id));
+    else
+        printLine(tr("positions: %1").arg(formatPositions(c.session.status())));
+    return Outcome::success();
+}
+
+using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
+using CheckValues = std::function<Outcome(const AxisVector&)>;
+
+Outcome positioning(CliContext& c, QStringList args, const QString& command, const StartMove& start,
+                    bool allowAbs, const CheckValues& check = {})
+{
+    const bool absolute = allowAbs && takeFlag(&args, QStringLiteral("--abs"));
+    const bool noWait = takeFlag(&args, QStringLiteral("--no-wait"));
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    AxisVector steps;
+    QString error;
+    if (!parseAxisIntegers(args, c.model->capabilities.axes, &steps, &error))
+        return Outcome::usage(tr("%1: %2").arg(command, error));
+    if (check) {
+        if (const Outcome checked = check(steps); !checked.ok())
+            return checked;
+    }
+    Outcome result = connectAndRun(c, [&](ControllerSession& s) {
+        return absolute ? s.moveAbsolute(steps) : start(s, steps);
+    });
+    if (!result.ok() || noWait)
+        return result;
+    result = c.session.waitUntilIdle();
+    return result.ok() ? reportPositions(c) : result;
+}
+
+// Waits until the host-side ramp has reached zero on every axis and the device is at rest.
+Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    for (;;) {
+        const Outcome polled = c.session.refresh();
+        if (!polled.ok())
+            return polled;
+        bool commanding = false;
+        bool deviceMoving = false;
+        for (const AxisStatus& axis : c.session.status().axes) {
+            commanding = commanding || axis.commandedVelocity != 0.0;
+            deviceMoving = deviceMoving || axis.jogging || axis.moving;
+        }
+        if (!commanding && (!deviceMoving || clock.elapsed() > deadlineMs))
+            return Outcome::success(); // some boards keep their jog-mode bit at rate zero
+        if (clock.elapsed() > deadlineMs) {
+            return Outcome::failure(ExitFailure,
+                                    tr("jog did not ramp down within %1 ms").arg(deadlineMs));
+        }
+        if (!c.session.pause(CliSession::kIdlePollMs))
+            return Outcome::failure(ExitInterrupted, tr("interrupted"));
+    }
+}
+
+bool parseInteger(const QString& text, qint64* value)
+{
+    bool ok = false;
+    *value = text.toLongLong(&ok);
+    return ok;
+}
+
+// The value of a spindle/power command checked like the schema parameter of the same meaning,
+// so the message names the parameter and its range.
+QString checkAgainstSchema(const CliContext& c, const QString& parameter, qint64 value)
+{
+    const ParameterSpec* spec = c.model->schema.find(parameter);
+    return spec ? c.model->schema.validateScalar(*spec, value) : QString();
+}
+
+Outcome noArguments(CliContext& c, const QStringList& args, const QString& command,
+                    const std::function<RequestId(ControllerSession&)>& start)
+{
+    if (!args.isEmpty())
+        return Outcome::usage(tr("%1 takes no arguments").arg(command));
+    return connectAndRun(c, start);
+}
+} // namespace
+
+Outcome cmdMove(CliContext& c, QStringList args)
+{
+    return positioning(
+        c, args, QStringLiteral("move"),
+        [](ControllerSession& s, const AxisVector& v) { return s.moveRelative(v); }, true);
+}
+
+Outcome cmdFeed(CliContext& c, QStringList args)
+{
+    const bool noWait = args.contains(QStringLiteral("--no-wait"));
+    const auto oneAxisUnlessWaiting = [noWait](const AxisVector& steps) {
+        int moving = 0;
+        for (qint64 n : steps)
+            moving += n != 0 ? 1 : 0;
+        // A multi-axis feed is a host-driven <DC2> stream: it ends when this process does.
+        if (noWait && moving > 1)
+            return Outcome::usage(tr("feed --no-wait works for one axis only: a multi-axis "
+                                     "feed is streamed by the host while the CLI runs"));
+        return Outcome::success();
+    };
+    return positioning(
+        c, args, QStringLiteral("feed"),
+        [](ControllerSession& s, const AxisVector& v) { return s.feed(v); }, false,
+        oneAxisUnlessWaiting);
+}
+
+Outcome cmdHome(CliContext& c, QStringList args)
+{
+    const auto directionsValid = [](const AxisVector& directions) {
+        for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
+            if (it.value() < -1 || it.value() > 1) {
+                return Outcome::failure(ExitInvalidValue,
+                                        tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
+                                            .arg(axisName(it.key()))
+                                            .arg(it.value()));
+            }
+        }
+        return Outcome::success();
+    };
+    const auto start = [](ControllerSession& s, const AxisVector& v) {
+        QMap<Axis, int> directions;
+        for (auto it = v.cbegin(); it != v.cend(); ++it)
+            directions.insert(it.key(), int(it.value()));
+        return s.reference(directions);
+    };
+    return positioning(c, args, QStringLiteral("home"), start, false, directionsValid);
+}
+
+// The adapter stops a velocity move when its link closes (nothing runs unattended), so the
+// command keeps the session until SIGINT/SIGTERM or --for MS, then stops with a ramp.
+Outcome cmdVelocity(CliContext& c, QStringList args)
+{
+    QString error;
+    const std::optional<QString> forText = takeOption(&args, QStringLiteral("--for"), &error);
+    if (!error.isEmpty())
+        return Outcome::usage(error);
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    qint64 forMs = -1;
+    if (forText && (!parseInteger(*forText, &forMs) || forMs <= 0))
+        return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
+    AxisVector rates;
+    if (!parseAxisIntegers(args, c.model->capabilities.axes, &rates, &error))
+        return Outcome::usage(tr("velocity: %1").arg(error));
+    Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });
+    if (!result.ok())
+        return result;
+    if (!c.json()) {
+        printLine(forMs > 0 ? tr("velocity move running for %1 ms").arg(forMs)
+                            : tr("velocity move running; Ctrl-C or SIGTERM ends it with a "
+                                 "ramped stop"));
+    }
+    QElapsedTimer clock;
+    clock.start();
+    while (forMs < 0 || clock.elapsed() < forMs) {
+        if (!c.session.pause(CliSession::kIdlePollMs))
+            break;
+        if (result = c.session.refresh(); !result.ok())
+            return result;
+        if (c.session.status().panic || !c.session.status().anyMoving())
+            return c.session.waitUntilIdle(); // ended by itself: says why (limit, panic)
+    }
+    c.session.takeInterrupt(); // the normal way to end it
+    if (result = c.session.run([](ControllerSession& s) { return s.stop(); }); !result.ok())
+        return result;
+    result = c.session.waitUntilIdle();
+    return result.ok() ? reportPositions(c) : result;
+}
+
+Outcome cmdJog(CliContext& c, QStringList args)
+{
+    QString error;
+    const std::optional<QString> forText = takeOption(&args, QStringLiteral("--for"), &error);
+    if (!error.isEmpty())
+        return Outcome::usage(error);
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    qint64 forMs = 0;
+    if (!forText || !parseInteger(*forText, &forMs) || forMs <= 0)
+        return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));
+    AxisVelocities rates;
+    if (!parseAxisDoubles(args, c.model->capabilities.axes, &rates, &error))
+        return Outcome::usage(tr("jog: %1").arg(error));
+    const double maxSpeed = c.model->capabilities.maxJogSpeed;
+    double fastest = 0;
+    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
+        if (qAbs(it.value()) > maxSpeed) {
+            return Outcome::failure(ExitInvalidValue,
+                                    tr("jog: %1=%2 steps/s is out of range (allowed: -%3..%3 "
+                                       "steps/s)")
+                                        .arg(axisName(it.key()))
+                                        .arg(it.value())
+                                        .arg(maxSpeed));
+        }
+        fastest = qMax(fastest, qAbs(it.value()));
+    }
+    if (Outcome result = c.connect(); !result.ok())
+        return result;
+
+    // The jog rate is a lease: renew it well inside the adapter's lease time, or the axes
+    // ramp down by themselves. endJog() then ramps them to zero.
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < forMs && c.session.jogRefusal().isEmpty()) {
+        c.session.session().setJogVelocity(rates);
+        if (!c.session.pause(int(qMin<qint64>(kJogRenewMs, forMs - clock.elapsed()))))
+            return Outcome::failure(ExitInterrupted, tr("interrupted"));
+    }
+    c.session.session().endJog();
+    const double acceleration = c.model->capabilities.defaultJogAcceleration;
+    const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
+    const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
+    if (!c.session.jogRefusal().isEmpty())
+        return Outcome::failure(ExitRefused, c.session.jogRefusal());
+    return rampedDown.ok() ? reportPositions(c) : rampedDown;
+}
+
+Outcome cmdStop(CliContext& c, QStringList args)
+{
+    return noArguments(c, args, QStringLiteral("stop"),
+                       [](ControllerSession& s) { return s.stop(); });
+}
+
+Outcome cmdPanic(CliContext& c, QStringList args)
+{
+    const Outcome result = noArguments(c, args, QStringLiteral("panic"),
+                                       [](ControllerSession& s) { return s.panic(); });
+    if (result.ok() && !c.json())
+        printLine(tr("emergency stop sent; positions are unknown until referenced"));
+    return result;
+}
+
+Outcome cmdReset(CliContext& c, QStringList args)
+{
+    return noArguments(c, args, QStringLiteral("reset"),
+                       [](ControllerSession& s) { return s.reset(); });
+}
+
+Outcome cmdSpindle(CliContext& c, QStringList args)
+{
+    qint64 rpm = 0;
+    if (args.size() != 1 || !parseInteger(args.first(), &rpm))
+        return Outcome::usage(tr("spindle needs one RPM value, e.g. `spindle 500`"));
+    if (const QString e = checkAgainstSchema(c, QStringLiteral("spindle-rpm"), rpm); !e.isEmpty())
+        return Outcome::failure(ExitInvalidValue, e);
+    return connectAndRun(c, [&](ControllerSession& s) { return s.setSpindle(int(rpm)); });
+}
+
+Outcome cmdCoolant(CliContext& c, QStringList args)
+{
+    const QString word = args.size() == 1 ? args.first().toLower() : QString();
+    if (word != QLatin1String("on") && word != QLatin1String("off"))
+        return Outcome::usage(tr("coolant needs on or off"));
+    const bool on = word == QLatin1String("on");
+    return connectAndRun(c, [&](ControllerSession& s) { return s.setCoolant(on); });
+}
+
+Outcome cmdPower(CliContext& c, QStringList args)
+{
+    qint64 percent = 0;
+    if (args.size() != 1 || !parseInteger(args.first(), &percent))
+        return Outcome::usage(tr("power needs one PERCENT value, e.g. `power 66`"));
+    if (const QString e = checkAgainstSchema(c, QStringLiteral("drive-power"), percent);
+        !e.isEmpty())
+        return Outcome::failure(ExitInvalidValue, e);
+    return connectAndRun(c, [&](ControllerSession& s) { return s.setDrivePower(int(percent)); });
+}
+
+} // namespace stepdeck::cli

@@ -1,0 +1,179 @@
+#include "CliOutput.h"
+#include "protocols/Registry.h"
+#include <QCoreApplication>
+#include <QJsonDocument>
+#include <cstdio>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+QString yesNo(bool value)
+{
+    return value ? tr("yes") : tr("no");
+}
+
+QString positionText(const AxisStatus& axis)
+{
+    // Host-tracked positions: without a reference run they count from this session's start;
+    // jog and velocity moves are integrated from the commanded rates.
+    QStringList marks;
+    if (!axis.positionKnown)
+        marks << tr("unknown: not referenced");
+    if (axis.positionEstimated)
+        marks << tr("estimated");
+    const QString text = QString::number(axis.position);
+    return marks.isEmpty() ? text
+                           : QStringLiteral("%1 (%2)").arg(text, marks.join(QStringLiteral("; ")));
+}
+
+QString rawValueText(const QVariant& value)
+{
+    bool ok = false;
+    const qulonglong n = value.toULongLong(&ok);
+    if (ok && value.typeId() != QMetaType::QString && value.typeId() != QMetaType::Bool)
+        return QStringLiteral("0x%1 (%2)").arg(n, 0, 16).arg(n);
+    return value.toString();
+}
+} // namespace
+
+int exitCodeFor(ErrorKind kind)
+{
+    switch (kind) {
+    case ErrorKind::None:
+        return ExitOk;
+    case ErrorKind::Refused:
+        return ExitRefused;
+    case ErrorKind::Nak:
+        return ExitNak;
+    case ErrorKind::Timeout:
+        return ExitTimeout;
+    case ErrorKind::LinkDown:
+        return ExitLinkDown;
+    case ErrorKind::InvalidValue:
+        return ExitInvalidValue;
+    case ErrorKind::Unsupported:
+        return ExitUnsupported;
+    case ErrorKind::Protocol:
+        return ExitProtocol;
+    case ErrorKind::Cancelled:
+        return ExitCancelled;
+    case ErrorKind::VerifyFailed:
+        return ExitVerifyFailed;
+    }
+    return ExitFailure;
+}
+
+QString exitCodeHelp()
+{
+    return tr("Exit codes:\n"
+              "   0  success\n"
+              "   1  other failure\n"
+              "   2  usage: unknown command or option, malformed arguments, unknown model\n"
+              "   3  refused: not sent, the manual forbids it now (limit switch, not idle,\n"
+              "      setup incomplete, position unknown, ...)\n"
+              "   4  NAK: the device refused the command; stderr names the decoded status bits\n"
+              "   5  timeout: no reply in time\n"
+              "   6  link down: could not connect, or the link was lost\n"
+              "   7  invalid value: out of range or wrong type (names parameter and range);\n"
+              "      also a parameter file whose content does not validate; nothing was sent\n"
+              "   8  unsupported: the model cannot do this (e.g. read a parameter back)\n"
+              "   9  protocol: malformed reply from the device\n"
+              "  10  cancelled: dropped by stop, panic or disconnect before it was sent\n"
+              "  11  verify failed: written, but the read-back differs\n"
+              "  12  file: cannot read or write the file, or it is not JSON\n"
+              "  13  motion aborted: a move ended on a limit switch or an emergency stop\n"
+              " 130  interrupted (SIGINT/SIGTERM): motion was stopped, then the CLI quit\n");
+}
+
+Outcome Outcome::from(const CommandResult& result)
+{
+    if (result.ok())
+        return success();
+    return failure(exitCodeFor(result.error), result.message);
+}
+
+void printLine(const QString& line)
+{
+    const QByteArray bytes = line.toUtf8();
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+}
+
+void printJson(const QJsonObject& object)
+{
+    printLine(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)));
+}
+
+void printError(const QString& message)
+{
+    QString line = message.simplified();
+    if (line.isEmpty())
+        line = tr("failed");
+    const QByteArray bytes = QStringLiteral("stepdeck-cli: %1\n").arg(line).toUtf8();
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
+    std::fflush(stderr);
+}
+
+QString formatStatus(const MachineStatus& status, const ModelInfo& model, const QString& port,
+                     const QString& linkState)
+{
+    QStringList machine;
+    machine << (status.driveOn ? tr("drive on") : tr("drive off"));
+    if (status.spindleOn)
+        machine << tr("spindle on");
+    if (status.busy)
+        machine << tr("busy");
+    if (status.setupIncomplete)
+        machine << tr("SETUP INCOMPLETE (write start-speed, max-speed and acceleration)");
+    if (status.overTemperature)
+        machine << tr("OVER TEMPERATURE");
+    if (status.panic)
+        machine << tr("EMERGENCY STOP ACTIVE");
+    if (status.commFault)
+        machine << tr("COMMUNICATION FAULT");
+
+    QStringList lines;
+    lines << tr("Model:        %1 (%2)").arg(model.id, model.displayName);
+    lines << tr("Port:         %1 (%2)").arg(port, linkState);
+    lines << tr("Machine:      %1").arg(machine.join(QStringLiteral(", ")));
+    lines << tr("Temperature:  %1")
+                 .arg(status.temperatureCelsius
+                          ? tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
+                          : tr("not reported"));
+    if (status.startButton)
+        lines << tr("Start button: %1").arg(*status.startButton ? tr("pressed") : tr("released"));
+    lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");
+    for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it) {
+        const AxisStatus& a = it.value();
+        lines << QStringLiteral("%1  %2  %3  %4  %5  %6  %7")
+                     .arg(axisName(it.key()), -4)
+                     .arg(yesNo(a.moving), -6)
+                     .arg(yesNo(a.jogging), -7)
+                     .arg(yesNo(a.limitSwitch), -5)
+                     .arg(yesNo(a.referenceSwitch), -9)
+                     .arg(yesNo(a.referenced), -10)
+                     .arg(positionText(a));
+    }
+    QStringList raw;
+    for (auto it = status.raw.cbegin(); it != status.raw.cend(); ++it)
+        raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.value()));
+    if (!raw.isEmpty())
+        lines << tr("Raw:          %1").arg(raw.join(QStringLiteral(" ")));
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString formatPositions(const MachineStatus& status)
+{
+    QStringList parts;
+    for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it)
+        parts << QStringLiteral("%1=%2").arg(axisName(it.key()), positionText(it.value()));
+    return parts.join(QStringLiteral(" "));
+}
+
+} // namespace stepdeck::cli

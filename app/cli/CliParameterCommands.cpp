@@ -1,0 +1,209 @@
+// set, get, export, import: all driven by the model's ParameterSchema.
+#include "CliCommands.h"
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonDocument>
+#include <QSaveFile>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+QString describe(const ParameterSchema& schema, const ParameterSet& set)
+{
+    QStringList parts;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        if (const ParameterSpec* spec = schema.find(it.key()))
+            parts << QStringLiteral("%1=%2").arg(it.key(), schema.formatValue(*spec, it.value()));
+    }
+    return parts.join(QStringLiteral(" "));
+}
+
+// Reads the readable parameters among names; the result is a ParameterSet.
+Outcome readBack(CliContext& c, const QStringList& names, ParameterSet* out)
+{
+    Outcome result = c.connect();
+    if (!result.ok())
+        return result;
+    const CommandResult read =
+        c.session.call([&](ControllerSession& s) { return s.readParameters(names); });
+    if (!read.ok())
+        return Outcome::from(read);
+    *out = read.value.value<ParameterSet>();
+    return Outcome::success();
+}
+
+// A per-axis parameter in a file must cover every axis: the device takes all axes at once.
+QString checkComplete(const ModelInfo& model, const ParameterSet& set)
+{
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        if (!it.value().isPerAxis())
+            continue;
+        for (Axis axis : model.capabilities.axes) {
+            if (!it.value().perAxis.contains(axis))
+                return tr("%1 has no value for axis %2").arg(it.key(), axisName(axis));
+        }
+    }
+    return {};
+}
+} // namespace
+
+Outcome cmdSet(CliContext& c, QStringList args)
+{
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    if (args.isEmpty())
+        return Outcome::usage(tr("set needs NAME=VALUE[,VALUE,...] (see `params`)"));
+    const ParameterSchema& schema = c.model->schema;
+    const QList<Axis>& axes = c.model->capabilities.axes;
+    ParameterSet set;
+    for (const QString& arg : args) {
+        if (!arg.contains(QLatin1Char('=')))
+            return Outcome::usage(tr("expected NAME=VALUE, got '%1'").arg(arg));
+        QString name;
+        ParameterValue value;
+        QString error;
+        if (!schema.parseAssignment(arg, axes, &name, &value, &error))
+            return Outcome::failure(ExitInvalidValue, error);
+        if (set.contains(name))
+            return Outcome::usage(tr("parameter %1 given twice").arg(name));
+        set.insert(name, value);
+    }
+    if (const QString error = schema.validate(set, axes); !error.isEmpty())
+        return Outcome::failure(ExitInvalidValue, error);
+    Outcome result = c.connect();
+    if (result.ok())
+        result = writeParameters(c, set);
+    if (result.ok() && !c.json())
+        printLine(tr("written: %1").arg(describe(schema, set)));
+    return result;
+}
+
+Outcome cmdGet(CliContext& c, QStringList args)
+{
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    if (args.isEmpty())
+        return Outcome::usage(tr("get needs one or more parameter names (see `params`)"));
+    const ParameterSchema& schema = c.model->schema;
+    QStringList readable;
+    QStringList writeOnly;
+    for (const QString& name : args) {
+        const ParameterSpec* spec = schema.find(name);
+        if (!spec)
+            return Outcome::failure(ExitInvalidValue, tr("unknown parameter '%1'").arg(name));
+        (spec->readable ? readable : writeOnly) << name;
+    }
+    if (!readable.isEmpty()) {
+        ParameterSet values;
+        const Outcome result = readBack(c, readable, &values);
+        if (!result.ok())
+            return result;
+        if (c.json()) {
+            printJson(schema.toJson(c.model->id, values));
+        } else {
+            for (auto it = values.cbegin(); it != values.cend(); ++it)
+                printLine(describe(schema, ParameterSet{{it.key(), it.value()}}));
+        }
+    }
+    if (!writeOnly.isEmpty()) {
+        return Outcome::failure(ExitUnsupported,
+                                tr("%1 cannot be read back: the %2 protocol has no command that "
+                                   "reports it (write-only)")
+                                    .arg(writeOnly.join(QStringLiteral(", ")), c.model->id));
+    }
+    return Outcome::success();
+}
+
+// Export writes every writable parameter: read back from the device where the model can,
+// otherwise the schema default ("origin" in the file says which). E-LAB can read nothing
+// back, so its export is the default set and needs no device; import accepts exactly this
+// format, so export -> edit -> import is the way to keep a machine's setup in a file.
+Outcome cmdExport(CliContext& c, QStringList args)
+{
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    if (args.size() != 1)
+        return Outcome::usage(tr("export needs exactly one FILE"));
+    const QString path = args.first();
+    ParameterSet set = schemaDefaults(*c.model);
+    QStringList readable;
+    for (const ParameterSpec& spec : c.model->schema.specs()) {
+        if (spec.readable && spec.writable)
+            readable << spec.name;
+    }
+    QJsonObject origin;
+    for (auto it = set.cbegin(); it != set.cend(); ++it)
+        origin.insert(it.key(), QStringLiteral("default"));
+    if (!readable.isEmpty()) {
+        ParameterSet values;
+        const Outcome result = readBack(c, readable, &values);
+        if (!result.ok())
+            return result;
+        for (auto it = values.cbegin(); it != values.cend(); ++it) {
+            set.insert(it.key(), it.value());
+            origin.insert(it.key(), QStringLiteral("device"));
+        }
+    }
+    QJsonObject json = c.model->schema.toJson(c.model->id, set);
+    json.insert(QStringLiteral("origin"), origin);
+
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(QJsonDocument(json).toJson(QJsonDocument::Indented)) < 0 || !file.commit()) {
+        return Outcome::failure(ExitFile, tr("cannot write %1: %2").arg(path, file.errorString()));
+    }
+    if (!c.json()) {
+        const qsizetype defaults = set.size() - readable.size();
+        printLine(tr("exported %1 parameters to %2 (%3 read back, %4 schema defaults: %5 cannot "
+                     "report them)")
+                      .arg(set.size())
+                      .arg(path)
+                      .arg(readable.size())
+                      .arg(defaults)
+                      .arg(c.model->id));
+    }
+    return Outcome::success();
+}
+
+Outcome cmdImport(CliContext& c, QStringList args)
+{
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    if (args.size() != 1)
+        return Outcome::usage(tr("import needs exactly one FILE"));
+    const QString path = args.first();
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return Outcome::failure(ExitFile, tr("cannot read %1: %2").arg(path, file.errorString()));
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    if (doc.isNull() || !doc.isObject()) {
+        return Outcome::failure(ExitFile, doc.isNull() ? tr("%1 is not valid JSON: %2 at offset %3")
+                                                             .arg(path, parseError.errorString())
+                                                             .arg(parseError.offset)
+                                                       : tr("%1 is not a JSON object").arg(path));
+    }
+    // Everything is validated before the first byte goes out: a broken file changes nothing.
+    ParameterSet set;
+    QString error;
+    if (!c.model->schema.fromJson(doc.object(), c.model->id, c.model->capabilities.axes, &set,
+                                  &error))
+        return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
+    if (error = checkComplete(*c.model, set); !error.isEmpty())
+        return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
+    if (set.isEmpty())
+        return Outcome::failure(ExitInvalidValue, tr("%1 refused: no parameters in it").arg(path));
+    Outcome result = c.connect();
+    if (result.ok())
+        result = writeParameters(c, set);
+    if (result.ok() && !c.json())
+        printLine(tr("imported %1 parameters from %2").arg(set.size()).arg(path));
+    return result;
+}
+
+} // namespace stepdeck::cli
