@@ -1,5 +1,6 @@
 #include "Registry.h"
 #include "protocols/elab/ElabModel.h"
+#include "protocols/nanotec/NanotecModel.h"
 
 namespace stepdeck {
 
@@ -8,6 +9,7 @@ const QList<ModelInfo>& models()
     // The one explicit list of models.
     static const QList<ModelInfo> list{
         elab::modelInfo(),
+        nanotec::modelInfo(),
     };
     return list;
 }

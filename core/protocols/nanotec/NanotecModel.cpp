@@ -1,0 +1,125 @@
+#include "NanotecModel.h"
+#include "NanotecController.h"
+#include "NanotecSchema.h"
+#include "NanotecSimulator.h"
+
+namespace stepdeck::nanotec {
+
+LineSettings lineSettings()
+{
+    LineSettings line;
+    line.baudRate = 19200;
+    line.dataBits = 8;
+    line.stopBits = 1;
+    line.parity = LineSettings::Parity::None;
+    return line;
+}
+
+QMap<Axis, int> defaultAxisAddresses()
+{
+    return {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
+}
+
+Capabilities capabilities(const QList<Axis>& axes)
+{
+    Capabilities caps;
+    caps.axes = axes;
+    caps.motionModes = {MotionMode::Jog, MotionMode::RelativeMove, MotionMode::AbsoluteMove,
+                        MotionMode::Reference, MotionMode::Velocity};
+    caps.positionReadback = true; // 'C' (5.17)
+    // 'S' stops without a ramp (6.2); only speed-mode runs can be ramped down first.
+    caps.rampedStop = false;
+    caps.panic = true; // '#*S' to every drive at once
+    caps.multiDrive = true;
+    // Speed mode ramps speed and direction changes itself (6.6, !2 p1): the host ramp only
+    // passes the targets through.
+    caps.hostRampedJog = false;
+    caps.maxJogSpeed = 25000; // 'o' range (6.9)
+    caps.defaultJogAcceleration = 1e7;
+    return caps;
+}
+
+namespace {
+constexpr const char* kContext = "stepdeck::nanotec::Presentation";
+
+struct BitText
+{
+    int bit;
+    const char* name;
+    const char* text;
+    bool fault;
+};
+
+const BitText kStatusBits[] = {
+    {0, "ready", QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation", "The drive is ready."),
+     false},
+    {1, "zero", QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation", "Zero position reached."),
+     false},
+    {2, "posError",
+     QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation",
+                       "Position error: the encoder disagrees with the demand position."),
+     true},
+    {3, "input1",
+     QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation",
+                       "Input 1 is still set while the drive is ready again."),
+     false},
+    {4, "mode0", QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation", "Mode, bit 0."), false},
+    {5, "mode1", QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation", "Mode, bit 1."), false},
+    {6, "mode2", QT_TRANSLATE_NOOP("stepdeck::nanotec::Presentation", "Mode, bit 2."), false},
+};
+} // namespace
+
+ModelPresentation presentation()
+{
+    ModelPresentation p;
+    p.statusWords = [] {
+        QList<StatusWordInfo> words;
+        for (Axis axis : allAxes()) {
+            StatusWordInfo w;
+            w.key = QStringLiteral("status") + axisName(axis);
+            w.title = QCoreApplication::translate(kContext, "Drive status %1 ($, 5.21)")
+                          .arg(axisName(axis));
+            w.width = 8;
+            for (const BitText& b : kStatusBits) {
+                StatusBitInfo info;
+                info.bit = b.bit;
+                info.name = QString::fromLatin1(b.name);
+                info.description = QCoreApplication::translate(kContext, b.text);
+                info.fault = b.fault;
+                w.bits << info;
+            }
+            words << w;
+        }
+        return words;
+    };
+    p.formatTraffic = &genericFormatTraffic;
+    // The console's send line: generic escapes; a missing final CR is added (1.1).
+    p.parseTraffic = [](const QString& text, QByteArray* bytes, QString* error) {
+        if (!genericParseTraffic(text, bytes, error))
+            return false;
+        if (!bytes->endsWith('\r'))
+            *bytes += '\r';
+        return true;
+    };
+    return p;
+}
+
+ModelInfo modelInfo()
+{
+    ModelInfo info;
+    info.id = QStringLiteral("nanotec");
+    info.displayName = QStringLiteral("Nanotec SMCI33 / SMCI47-S (RS485 bus)");
+    info.line = lineSettings();
+    info.capabilities = capabilities(defaultAxisAddresses().keys());
+    info.schema = parameterSchema();
+    info.createController = [](Transport* transport, const ControllerOptions& options) {
+        return static_cast<Controller*>(new NanotecController(transport, options));
+    };
+    info.createSimulator = [](const SimulatorOptions& options) {
+        return static_cast<Simulator*>(new NanotecSimulator(options));
+    };
+    info.presentation = presentation();
+    return info;
+}
+
+} // namespace stepdeck::nanotec

@@ -1,0 +1,466 @@
+// Motion on a Nanotec bus, mapped onto the motor modes of the manual: positioning (!1, p1/p2,
+// 6.6), reference runs (p3/p4 with d), speed mode (!2, p1) for jog and velocity moves, 'S' to
+// stop (6.2) and '#*S' for panic.
+#include "Logging.h"
+#include "NanotecController.h"
+#include "transport/Transport.h"
+#include <QtMath>
+
+namespace stepdeck::nanotec {
+
+namespace {
+constexpr qint64 kMaxFrequency = 25000; // 'o' range (6.9)
+constexpr int kMaxRampWaitMs = 3000;    // a longer ramp-down is cut short by 'S'
+
+QByteArray num(const char* cmd, qint64 v)
+{
+    return QByteArray(cmd) + QByteArray::number(v);
+}
+} // namespace
+
+QString NanotecController::motionRefusal(Axis axis, bool needsPosition) const
+{
+    if (!m_drives.contains(axis))
+        return tr("this machine has no axis %1").arg(axisName(axis));
+    if (m_panic)
+        return tr("emergency stop is active; reset it first");
+    const Drive& d = m_drives[axis];
+    if (!d.responding)
+        return tr("%1 is not answering").arg(driveName(axis));
+    if (d.jog != Jog::Idle)
+        return tr("axis %1 runs in speed mode (jog or velocity move); stop it first")
+            .arg(axisName(axis));
+    const DriveState s = decodeStatus(d.status.value_or(0x01));
+    if (d.motionPending || !s.ready)
+        return tr("axis %1 is still moving (the drive is not ready)").arg(axisName(axis));
+    if (s.positionError)
+        return tr("%1 reports a position error; reset it first (reset-position-error)")
+            .arg(driveName(axis));
+    if (needsPosition && !status().axes.value(axis).positionKnown)
+        return tr("absolute move refused: position of axis %1 is unknown, reference it first")
+            .arg(axisName(axis));
+    return {};
+}
+
+void NanotecController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QMap<Axis, QList<QByteArray>> setup;
+    for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
+        if (it.value() == 0 && m_drives.contains(it.key()))
+            continue;
+        if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
+            return finishError(id, ErrorKind::InvalidValue,
+                               tr("move of axis %1: %2 steps exceed the 32-bit range (6.7)")
+                                   .arg(axisName(it.key()))
+                                   .arg(it.value()));
+        const QString why = motionRefusal(it.key(), false);
+        if (!why.isEmpty())
+            return finishError(id, ErrorKind::Refused, why);
+        // 6.6 p=1: 's' is the positive distance, 'd' the direction (1 counts up).
+        setup[it.key()] = {"!1", "p1", num("s", qAbs(it.value())), num("d", it.value() > 0)};
+    }
+    if (setup.isEmpty())
+        return finishOk(id);
+    startPositioning(id, setup, false);
+}
+
+void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QMap<Axis, QList<QByteArray>> setup;
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
+        if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
+            return finishError(
+                id, ErrorKind::InvalidValue,
+                tr("target of axis %1 exceeds the 32-bit range (6.7)").arg(axisName(it.key())));
+        const QString why = motionRefusal(it.key(), true);
+        if (!why.isEmpty())
+            return finishError(id, ErrorKind::Refused, why);
+        // 6.6 p=2: 's' is the target relative to the reference position; 'd' is ignored.
+        setup[it.key()] = {"!1", "p2", num("s", it.value())};
+    }
+    if (setup.isEmpty())
+        return finishOk(id);
+    startPositioning(id, setup, false);
+}
+
+void NanotecController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    referenceWithType(id, directions, false);
+}
+
+void NanotecController::referenceWithType(RequestId id, const QMap<Axis, int>& directions,
+                                          bool internal)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QMap<Axis, QList<QByteArray>> setup;
+    for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
+        if (it.value() == 0 && m_drives.contains(it.key()))
+            continue;
+        const QString why = motionRefusal(it.key(), false);
+        if (!why.isEmpty())
+            return finishError(id, ErrorKind::Refused, why);
+        // 6.6: p=4 runs at the upper speed into the external switch, p=3 at the lower speed
+        // to the encoder index; free travel afterwards as 'l' says (5.6).
+        setup[it.key()] = {"!1", internal ? "p3" : "p4", num("d", it.value() > 0)};
+    }
+    if (setup.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue,
+                           tr("no axis to reference: every direction is 0"));
+    startPositioning(id, setup, true);
+}
+
+void NanotecController::startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
+                                         bool referenceRun)
+{
+    // Set every drive up first, then start them one right after the other.
+    QList<Step> steps;
+    for (auto it = setup.cbegin(); it != setup.cend(); ++it) {
+        for (const QByteArray& body : it.value())
+            steps << exchange(it.key(), body);
+    }
+    auto started = std::make_shared<QList<Axis>>();
+    for (Axis axis : setup.keys()) {
+        steps << [this, axis, started, referenceRun](const Done& done) {
+            exchange(axis, "A")([this, axis, started, referenceRun, done](const Failure& f) {
+                if (f.ok()) {
+                    *started << axis;
+                    Drive& d = m_drives[axis];
+                    d.motionPending = true;
+                    d.referencing = referenceRun;
+                    if (referenceRun) {
+                        AxisStatus& a = mutableStatus().axes[axis];
+                        a.referenced = a.positionKnown = false;
+                    }
+                }
+                done(f);
+            });
+        };
+    }
+    runSteps(steps, [this, id, started](const Failure& f) {
+        if (!f.ok() && f.kind != ErrorKind::Cancelled) {
+            // Never leave some axes of a multi-axis move running alone.
+            for (Axis axis : *started)
+                tolerant(exchange(axis, "S", {}, NanotecBus::Priority::Urgent, 2))(
+                    [](const Failure&) {});
+        }
+        updateStatus();
+        publishStatus();
+        finishWith(id, f);
+    });
+}
+
+// ---------------------------------------------------------------- speed mode
+
+int NanotecController::rampTimeMs(const Drive& d, double fromHz) const
+{
+    // 6.11: acceleration in Hz/ms = 3000 / sqrt(b) - 11.7.
+    const double perMs = 3000.0 / qSqrt(double(qMax<qint64>(1, d.ramp))) - 11.7;
+    const double delta = qMax(0.0, fromHz - double(d.minFrequency));
+    if (delta == 0)
+        return 0;
+    if (perMs <= 0.001)
+        return kMaxRampWaitMs + 1;
+    return int(qCeil(delta / perMs * 1.2)) + 10; // 20 % margin for the drive's rounding
+}
+
+QList<NanotecController::Step> NanotecController::rampDownSteps(Drive& d,
+                                                                NanotecBus::Priority priority)
+{
+    // 6.2: 'S' stops without a ramp and may lose steps at speed, so in speed mode the speed
+    // is first lowered to the start frequency (the drive ramps it) and 'S' follows.
+    const Axis axis = d.axis;
+    const int t = rampTimeMs(d, qAbs(d.jogApplied));
+    const bool cut = t > kMaxRampWaitMs;
+    QList<Step> steps{tolerant(exchange(axis, num("o", d.minFrequency), {}, priority, 1)),
+                      wait(qMin(t, kMaxRampWaitMs)),
+                      tolerant(exchange(axis, "S", {}, priority, 2))};
+    if (cut) {
+        steps << [this, axis](const Done& done) {
+            AxisStatus& a = mutableStatus().axes[axis];
+            a.referenced = a.positionKnown = false;
+            Q_EMIT errorOccurred(tr("axis %1 was stopped at speed (ramp too long); its position "
+                                    "is suspect until referenced")
+                                     .arg(axisName(axis)));
+            done({});
+        };
+    }
+    if (d.savedMaxFrequency > 0)
+        steps << tolerant(exchange(axis, num("o", d.savedMaxFrequency), {}, priority, 1));
+    return steps;
+}
+
+void NanotecController::applyJogVelocity(const AxisVelocities& stepsPerS)
+{
+    for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
+        if (!m_drives.contains(it.key()))
+            continue;
+        Drive& d = m_drives[it.key()];
+        if (d.velocityMove) {
+            if (it.value() != 0)
+                Q_EMIT jogRefused(
+                    tr("axis %1 is in a velocity move; stop it first").arg(axisName(it.key())));
+            continue;
+        }
+        d.jogDesired = it.value();
+        pumpJog(it.key());
+    }
+}
+
+void NanotecController::pumpJog(Axis axis)
+{
+    Drive& d = m_drives[axis];
+    if (d.jogBusy || linkState() != LinkState::Connected)
+        return;
+    const double want = d.jogDesired;
+    const qint64 hz = qBound<qint64>(d.minFrequency, qRound64(qAbs(want)), kMaxFrequency);
+    const double signedHz = want < 0 ? -double(hz) : double(hz);
+    auto after = [this, axis](Jog next, double applied) {
+        return [this, axis, next, applied](const Failure& f) {
+            Drive& dd = m_drives[axis];
+            dd.jogBusy = false;
+            dd.jog = f.ok() ? next : Jog::Idle;
+            dd.jogApplied = f.ok() ? applied : 0;
+            if (!f.ok() && f.kind != ErrorKind::Cancelled) {
+                dd.jogDesired = 0;
+                Q_EMIT jogRefused(f.message);
+            }
+            updateStatus();
+            publishStatus();
+            pumpJog(axis);
+        };
+    };
+    if (d.jog == Jog::Idle) {
+        if (want == 0)
+            return;
+        const QString why = motionRefusal(axis, false);
+        if (!why.isEmpty()) {
+            d.jogDesired = 0;
+            Q_EMIT jogRefused(why);
+            return;
+        }
+        d.savedMaxFrequency = d.maxFrequency;
+        d.jog = Jog::Starting;
+        d.jogBusy = true;
+        // 6.6, speed mode p=1: speed and direction changes are ramped by the drive.
+        runSteps({exchange(axis, "!2"), exchange(axis, "p1"), exchange(axis, num("o", hz)),
+                  exchange(axis, num("d", want > 0)), exchange(axis, "A")},
+                 after(Jog::Running, signedHz));
+        return;
+    }
+    if (d.jog != Jog::Running)
+        return;
+    if (want == 0) {
+        d.jog = Jog::Stopping;
+        d.jogBusy = true;
+        runSteps(rampDownSteps(d, NanotecBus::Priority::Command), after(Jog::Idle, 0));
+        return;
+    }
+    if (signedHz == d.jogApplied)
+        return;
+    QList<Step> steps{exchange(axis, num("o", hz))};
+    if ((signedHz > 0) != (d.jogApplied > 0))
+        steps << exchange(axis, num("d", want > 0));
+    d.jogBusy = true;
+    runSteps(steps, after(Jog::Running, signedHz));
+}
+
+void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QList<Step> steps;
+    for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
+        if (qAbs(it.value()) > kMaxFrequency)
+            return finishError(id, ErrorKind::InvalidValue,
+                               tr("velocity of axis %1: %2 steps/s is outside 0..25000 (6.9)")
+                                   .arg(axisName(it.key()))
+                                   .arg(it.value()));
+        if (it.value() == 0 && m_drives.contains(it.key()))
+            continue;
+        const QString why = motionRefusal(it.key(), false);
+        if (!why.isEmpty())
+            return finishError(id, ErrorKind::Refused, why);
+        const Axis axis = it.key();
+        const qint64 v = it.value();
+        Drive& d = m_drives[axis];
+        const qint64 hz = qBound<qint64>(d.minFrequency, qAbs(v), kMaxFrequency);
+        d.savedMaxFrequency = d.maxFrequency;
+        steps << exchange(axis, "!2") << exchange(axis, "p1") << exchange(axis, num("o", hz))
+              << exchange(axis, num("d", v > 0));
+        steps << [this, axis, hz, v](const Done& done) {
+            exchange(axis, "A")([this, axis, hz, v, done](const Failure& f) {
+                if (f.ok()) {
+                    Drive& dd = m_drives[axis];
+                    dd.jog = Jog::Running;
+                    dd.velocityMove = true;
+                    dd.jogApplied = dd.jogDesired = v < 0 ? -double(hz) : double(hz);
+                }
+                done(f);
+            });
+        };
+    }
+    runSteps(steps, [this, id](const Failure& f) {
+        updateStatus();
+        publishStatus();
+        finishWith(id, f);
+    });
+}
+
+// ---------------------------------------------------------------- stop, panic
+
+void NanotecController::stop(RequestId id)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    haltJogImmediately();
+    // Snapshot first: cancelling the bus ends jog sequences, whose callbacks reset the state.
+    QList<Axis> speedMode, positioning;
+    for (Drive& d : m_drives) {
+        d.jogDesired = 0;
+        if (!d.responding)
+            continue;
+        if (d.jog != Jog::Idle)
+            speedMode << d.axis;
+        else if (d.motionPending || (d.status && !decodeStatus(*d.status).ready))
+            positioning << d.axis;
+    }
+    QMap<Axis, double> speeds;
+    for (Axis a : speedMode)
+        speeds[a] = qAbs(m_drives[a].jogApplied);
+    m_bus->cancelAll();
+    const auto urgent = NanotecBus::Priority::Urgent;
+    QList<Step> steps;
+    int wait = 0;
+    for (Axis a : speedMode) {
+        steps << tolerant(exchange(a, num("o", m_drives[a].minFrequency), {}, urgent, 1));
+        wait = qMax(wait, rampTimeMs(m_drives[a], speeds[a]));
+    }
+    if (wait > 0)
+        steps << this->wait(qMin(wait, kMaxRampWaitMs));
+    for (const Drive& d : m_drives) {
+        if (d.responding)
+            steps << tolerant(exchange(d.axis, "S", {}, urgent, 2));
+    }
+    for (Axis a : positioning) {
+        // 6.2: no ramp; steps may be lost at speed, so the position is suspect.
+        AxisStatus& st = mutableStatus().axes[a];
+        st.referenced = st.positionKnown = false;
+    }
+    if (wait > kMaxRampWaitMs)
+        positioning << speedMode;
+    for (Axis a : speedMode) {
+        Drive& d = m_drives[a];
+        if (d.savedMaxFrequency > 0)
+            steps << tolerant(exchange(a, num("o", d.savedMaxFrequency), {}, urgent, 1));
+    }
+    for (Drive& d : m_drives) {
+        d.jog = Jog::Idle;
+        d.jogBusy = false;
+        d.velocityMove = false;
+        d.motionPending = false;
+        d.referencing = false;
+    }
+    if (!positioning.isEmpty())
+        qCInfo(lcNanotec) << "stopped without ramp; positions suspect:" << positioning.size();
+    runSteps(steps, [this, id](const Failure& f) {
+        if (!f.ok())
+            return finishWith(id, f);
+        confirmStopped(id, m_drives.keys(), tr("stop"));
+    });
+}
+
+void NanotecController::panic(RequestId id)
+{
+    if (!transport() || !transport()->isOpen())
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    haltJogImmediately();
+    for (Drive& d : m_drives)
+        d.jogDesired = 0;
+    m_bus->cancelAll();
+    m_bus->discardOutput(); // the stop must not wait behind queued bytes
+    m_panic = true;
+    markAllUnreferenced();
+    QList<Axis> restore;
+    for (Drive& d : m_drives) {
+        if (d.jog != Jog::Idle && d.savedMaxFrequency > 0)
+            restore << d.axis;
+        d.jog = Jog::Idle;
+        d.jogBusy = false;
+        d.velocityMove = false;
+        d.motionPending = false;
+        d.referencing = false;
+    }
+    updateStatus();
+    publishStatus();
+    NanotecBus::Request r;
+    r.address = kBroadcast; // '#*S': every drive on the bus stops at once (1.1, 6.2)
+    r.body = "S";
+    r.priority = NanotecBus::Priority::Urgent;
+    r.done = [this, id, restore](NanotecBus::Outcome, const Reply&) {
+        confirmStopped(id, m_drives.keys(), tr("emergency stop"));
+        for (Axis a : restore) {
+            tolerant(exchange(a, num("o", m_drives[a].savedMaxFrequency)))([](const Failure&) {});
+        }
+    };
+    m_bus->submit(r);
+}
+
+void NanotecController::confirmStopped(RequestId id, QList<Axis> axes, const QString& context)
+{
+    // Per drive: ready ('$' bit 0) means stopped; otherwise stop it individually, ask again.
+    auto unconfirmed = std::make_shared<QStringList>();
+    QList<Step> steps;
+    const auto urgent = NanotecBus::Priority::Urgent;
+    for (Axis axis : axes) {
+        steps << [this, axis, unconfirmed, urgent](const Done& done) {
+            auto ready = std::make_shared<bool>(false);
+            auto check = sink([this, axis, ready](qint64 v) {
+                applyStatusWord(m_drives[axis], v);
+                *ready = decodeStatus(v).ready;
+            });
+            exchange(axis, "$", check, urgent, 1)([=](const Failure& f) {
+                if (f.kind == ErrorKind::Cancelled)
+                    return done(f);
+                if (f.ok() && *ready)
+                    return done({});
+                runSteps({exchange(axis, "S", {}, urgent, 1), exchange(axis, "$", check, urgent)},
+                         [=](const Failure& f2) {
+                             if (!f2.ok() || !*ready)
+                                 *unconfirmed << driveName(axis);
+                             done(f2.kind == ErrorKind::Cancelled ? f2 : Failure{});
+                         });
+            });
+        };
+    }
+    runSteps(steps, [this, id, unconfirmed, context](const Failure& f) {
+        updateStatus();
+        publishStatus();
+        if (!f.ok())
+            return finishWith(id, f);
+        if (!unconfirmed->isEmpty())
+            return finishError(id, ErrorKind::Timeout,
+                               tr("%1 sent; not confirmed by %2")
+                                   .arg(context, unconfirmed->join(QStringLiteral(", "))));
+        finishOk(id);
+    });
+}
+
+void NanotecController::reset(RequestId id)
+{
+    m_panic = false;
+    updateStatus();
+    publishStatus();
+    finishOk(id);
+}
+
+QString NanotecController::jogRefusal() const
+{
+    return Controller::jogRefusal();
+}
+
+} // namespace stepdeck::nanotec

@@ -1,0 +1,354 @@
+// Step sequencing on the bus, console, bus scan, refresh and the model-specific operations.
+#include "Logging.h"
+#include "NanotecController.h"
+#include "NanotecModel.h"
+#include "transport/Transport.h"
+#include <QTimer>
+
+namespace stepdeck::nanotec {
+
+// ---------------------------------------------------------------- steps
+
+void NanotecController::runSteps(QList<Step> steps, Done done)
+{
+    runFrom(std::make_shared<QList<Step>>(std::move(steps)), 0, std::move(done));
+}
+
+void NanotecController::runFrom(std::shared_ptr<QList<Step>> steps, int index, Done done)
+{
+    if (index >= steps->size()) {
+        done({});
+        return;
+    }
+    (*steps)[index]([steps, index, done](const Failure& f) {
+        if (!f.ok())
+            done(f);
+        else
+            runFrom(steps, index + 1, done);
+    });
+}
+
+NanotecController::Step NanotecController::tolerant(Step step)
+{
+    return [step](const Done& done) {
+        step([done](const Failure& f) {
+            if (!f.ok() && f.kind != ErrorKind::Cancelled)
+                qCInfo(lcNanotec) << "ignored:" << f.message;
+            done(f.kind == ErrorKind::Cancelled ? f : Failure{});
+        });
+    };
+}
+
+NanotecController::Check NanotecController::sink(std::function<void(qint64)> store)
+{
+    return [store](const Reply& r) {
+        if (!r.value)
+            return Failure{ErrorKind::Protocol,
+                           tr("reply '%1' carries no value").arg(QString::fromLatin1(r.raw))};
+        store(*r.value);
+        return Failure{};
+    };
+}
+
+NanotecController::Step NanotecController::exchange(Axis axis, const QByteArray& body, Check check,
+                                                    NanotecBus::Priority priority, int retries)
+{
+    return [this, axis, body, check, priority, retries](const Done& done) {
+        if (!m_drives.contains(axis))
+            return done(
+                {ErrorKind::InvalidValue, tr("this machine has no axis %1").arg(axisName(axis))});
+        NanotecBus::Request r;
+        r.address = m_drives[axis].address; // looked up now: 'm' may have moved the drive
+        r.body = body;
+        r.priority = priority;
+        r.retries = retries;
+        r.done = [this, axis, body, check, done](NanotecBus::Outcome o, const Reply& reply) {
+            if (o != NanotecBus::Outcome::Ok)
+                return done(outcomeFailure(axis, body, o, reply));
+            noteAnswer(m_drives[axis], true);
+            done(check ? check(reply) : Failure{});
+        };
+        m_bus->submit(r);
+    };
+}
+
+NanotecController::Step NanotecController::wait(int ms)
+{
+    return [this, ms](const Done& done) { QTimer::singleShot(ms, this, [done] { done({}); }); };
+}
+
+NanotecController::Failure NanotecController::outcomeFailure(Axis axis, const QByteArray& body,
+                                                             NanotecBus::Outcome outcome,
+                                                             const Reply& reply)
+{
+    const QString cmd = QString::fromLatin1(body);
+    switch (outcome) {
+    case NanotecBus::Outcome::Ok:
+        return {};
+    case NanotecBus::Outcome::Unknown:
+        return {
+            ErrorKind::Nak,
+            tr("%1 does not know the command '%2' (it answered '?')").arg(driveName(axis), cmd)};
+    case NanotecBus::Outcome::Timeout:
+        return {ErrorKind::Timeout, tr("%1 did not answer '%2' in time").arg(driveName(axis), cmd)};
+    case NanotecBus::Outcome::Garbled:
+        return {ErrorKind::Protocol,
+                tr("%1: garbled reply to '%2' (%3)").arg(driveName(axis), cmd, reply.error)};
+    case NanotecBus::Outcome::Cancelled:
+        return {ErrorKind::Cancelled,
+                reply.error.isEmpty() ? tr("'%1' to %2 was cancelled (stop, panic or disconnect)")
+                                            .arg(cmd, driveName(axis))
+                                      : reply.error};
+    }
+    return {};
+}
+
+void NanotecController::finishWith(RequestId id, const Failure& failure, const QVariant& value)
+{
+    if (failure.ok())
+        finishOk(id, value);
+    else
+        finishError(id, failure.kind, failure.message);
+}
+
+NanotecController::Drive* NanotecController::driveFor(const QVariantMap& args, RequestId id)
+{
+    const auto axis =
+        axisFromName(args.value(QStringLiteral("axis"), QStringLiteral("X")).toString());
+    if (!axis || !m_drives.contains(*axis)) {
+        finishError(id, ErrorKind::InvalidValue,
+                    tr("unknown axis '%1' (this machine has %2)")
+                        .arg(args.value(QStringLiteral("axis")).toString())
+                        .arg([this] {
+                            QStringList n;
+                            for (Axis a : m_drives.keys())
+                                n << axisName(a);
+                            return n.join(QLatin1Char(','));
+                        }()));
+        return nullptr;
+    }
+    if (linkState() != LinkState::Connected) {
+        finishError(id, ErrorKind::LinkDown, tr("not connected"));
+        return nullptr;
+    }
+    return &m_drives[*axis];
+}
+
+// ---------------------------------------------------------------- status, console
+
+void NanotecController::refreshStatus(RequestId id)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QList<Step> steps;
+    auto answered = std::make_shared<int>(0);
+    for (Axis axis : m_drives.keys()) {
+        auto ok = std::make_shared<bool>(false);
+        steps << tolerant([this, axis, ok, answered](const Done& done) {
+            runSteps(
+                {exchange(axis, "$", sink([this, axis, ok, answered](qint64 v) {
+                              applyStatusWord(m_drives[axis], v);
+                              *ok = true;
+                              ++*answered;
+                          })),
+                 exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; })),
+                 exchange(axis, "ZY", sink([this, axis](qint64 v) { m_drives[axis].inputs = v; }))},
+                [this, axis, ok, done](const Failure& f) {
+                    if (!*ok && f.kind == ErrorKind::Timeout)
+                        noteAnswer(m_drives[axis], false);
+                    done(f);
+                });
+        });
+    }
+    runSteps(steps, [this, id, answered](const Failure& f) {
+        updateStatus();
+        publishStatus();
+        if (!f.ok())
+            return finishWith(id, f);
+        if (*answered == 0)
+            return finishError(id, ErrorKind::Timeout, tr("no drive answered the status request"));
+        finishOk(id, QVariant::fromValue(status()));
+    });
+}
+
+void NanotecController::sendRaw(RequestId id, const QByteArray& bytes)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    CommandDecoder decoder;
+    QList<Command> frames = decoder.feed(bytes.endsWith('\r') ? bytes : bytes + '\r');
+    if (frames.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue,
+                           tr("not a Nanotec frame: expected '#<address><command>\\r'"));
+    for (const Command& c : frames) {
+        if (!c.valid)
+            return finishError(id, ErrorKind::InvalidValue, c.error);
+        const QString forbidden = forbiddenReason(c.body);
+        if (!forbidden.isEmpty())
+            return finishError(id, ErrorKind::Refused, forbidden);
+    }
+    auto replies = std::make_shared<QStringList>();
+    QList<Step> steps;
+    for (const Command& c : frames) {
+        steps << [this, c, replies](const Done& done) {
+            NanotecBus::Request r;
+            r.address = c.broadcast ? kBroadcast : c.address;
+            r.body = c.body;
+            r.done = [c, replies, done](NanotecBus::Outcome o, const Reply& reply) {
+                if (o == NanotecBus::Outcome::Timeout)
+                    return done({ErrorKind::Timeout, tr("no reply to '%1' from address %2")
+                                                         .arg(QString::fromLatin1(c.body))
+                                                         .arg(c.address)});
+                if (o == NanotecBus::Outcome::Cancelled)
+                    return done({ErrorKind::Cancelled, tr("cancelled")});
+                *replies << QString::fromLatin1(reply.raw);
+                done({});
+            };
+            m_bus->submit(r);
+        };
+    }
+    runSteps(steps, [this, id, replies](const Failure& f) {
+        finishWith(id, f, replies->join(QLatin1Char('\n')));
+    });
+}
+
+// ---------------------------------------------------------------- scan
+
+void NanotecController::scanBus(RequestId id)
+{
+    modelOperation(id, QStringLiteral("scan"), {});
+}
+
+void NanotecController::scan(RequestId id, int first, int last, int timeoutMs)
+{
+    auto found = std::make_shared<QVariantList>();
+    QList<Step> steps;
+    for (int address = first; address <= last; ++address) {
+        steps << [this, address, timeoutMs, found](const Done& done) {
+            NanotecBus::Request r;
+            r.address = address;
+            r.body = "v"; // 5.22: answers with hardware, interface and release date
+            r.timeoutMs = timeoutMs;
+            r.done = [this, address, found, done](NanotecBus::Outcome o, const Reply& reply) {
+                if (o == NanotecBus::Outcome::Cancelled)
+                    return done({ErrorKind::Cancelled, tr("scan cancelled")});
+                if (o == NanotecBus::Outcome::Ok) {
+                    found->append(QVariantMap{{"address", address},
+                                              {"hardware", reply.firmware.hardware},
+                                              {"interface", reply.firmware.interface},
+                                              {"date", reply.firmware.date},
+                                              {"firmware", reply.firmware.text}});
+                    for (Drive& d : m_drives) {
+                        if (d.address == address) {
+                            d.firmware = reply.firmware.text;
+                            noteAnswer(d, true);
+                        }
+                    }
+                }
+                done({});
+            };
+            m_bus->submit(r);
+        };
+    }
+    runSteps(steps, [this, id, found](const Failure& f) {
+        if (linkState() != LinkState::Connected && transport() && transport()->isOpen())
+            transport()->close(); // the port was opened for the scan only
+        finishWith(id, f, *found);
+    });
+}
+
+void NanotecController::runPendingScan()
+{
+    const PendingScan p = *m_pendingScan;
+    m_pendingScan.reset();
+    scan(p.id, p.first, p.last, p.timeoutMs);
+}
+
+// ---------------------------------------------------------------- model operations
+
+void NanotecController::modelOperation(RequestId id, const QString& name, const QVariantMap& args)
+{
+    auto intArg = [&](const char* key, int def) {
+        return args.value(QString::fromLatin1(key), def).toInt();
+    };
+    if (name == QLatin1String("scan")) {
+        PendingScan p{id, intArg("first", kMinAddress), intArg("last", kMaxAddress),
+                      intArg("timeoutMs", 40)};
+        if (!isValidAddress(p.first) || !isValidAddress(p.last) || p.first > p.last)
+            return finishError(id, ErrorKind::InvalidValue,
+                               tr("scan range must lie within 1..254"));
+        if (!transport())
+            return finishError(id, ErrorKind::LinkDown, tr("no transport"));
+        m_pendingScan = p;
+        if (transport()->isOpen())
+            return runPendingScan();
+        transport()->open(lineSettings()); // a scan needs no configured drive
+        return;
+    }
+    if (name == QLatin1String("reference")) {
+        QMap<Axis, int> dirs;
+        const QVariantMap axes = args.value(QStringLiteral("axes")).toMap();
+        for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
+            if (const auto axis = axisFromName(it.key()))
+                dirs.insert(*axis, it.value().toInt());
+        }
+        return referenceWithType(
+            id, dirs, args.value(QStringLiteral("type")).toString() == QLatin1String("internal"));
+    }
+    Drive* d = driveFor(args, id);
+    if (!d)
+        return;
+    const Axis axis = d->axis;
+    const int record = intArg("record", 0);
+    auto simple = [&](const QByteArray& body, bool needsReady) {
+        if (needsReady) {
+            const QString why = motionRefusal(axis, false);
+            if (!why.isEmpty())
+                return finishError(id, ErrorKind::Refused, why);
+        }
+        runSteps({exchange(axis, body)}, [this, id](const Failure& f) { finishWith(id, f); });
+    };
+    if (name == QLatin1String("read-record"))
+        return readRecord(id, axis, record);
+    if (name == QLatin1String("read-all-records"))
+        return readAllRecords(id, axis);
+    if (name == QLatin1String("write-record"))
+        return writeRecord(id, axis, record, args.value(QStringLiteral("values")).toMap());
+    if (name == QLatin1String("load-record") || name == QLatin1String("save-record"))
+        return loadOrSaveRecord(id, axis, record, name == QLatin1String("save-record"));
+    if (name == QLatin1String("read-error-memory"))
+        return readErrorMemory(id, axis);
+    if (name == QLatin1String("reset-position-error"))
+        return simple("D", false);
+    if (name == QLatin1String("trigger"))
+        return simple("T", false);
+    if (name == QLatin1String("speed-step"))
+        return simple(args.value(QStringLiteral("up"), true).toBool() ? "+" : "-", false);
+    if (name == QLatin1String("reset-position")) {
+        // 5.18: the current position becomes the reference position.
+        return runSteps({exchange(axis, "c")}, [this, id, axis](const Failure& f) {
+            if (f.ok()) {
+                AxisStatus& a = mutableStatus().axes[axis];
+                a.referenced = a.positionKnown = true;
+                m_drives[axis].position = 0;
+                updateStatus();
+                publishStatus();
+            }
+            finishWith(id, f);
+        });
+    }
+    if (name == QLatin1String("start-record")) {
+        const QString why = motionRefusal(axis, false);
+        if (!why.isEmpty())
+            return finishError(id, ErrorKind::Refused, why);
+        if (record < 0 || record > kRecordCount)
+            return finishError(id, ErrorKind::InvalidValue, tr("record must be 0..32"));
+        QMap<Axis, QList<QByteArray>> setup;
+        setup[axis] =
+            record > 0 ? QList<QByteArray>{"y" + QByteArray::number(record)} : QList<QByteArray>{};
+        return startPositioning(id, setup, false);
+    }
+    finishError(id, ErrorKind::Unsupported, tr("unknown Nanotec operation '%1'").arg(name));
+}
+
+} // namespace stepdeck::nanotec

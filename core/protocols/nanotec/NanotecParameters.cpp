@@ -1,0 +1,266 @@
+// Parameters, records and the error memory of Nanotec drives. Every write is echoed by the
+// drive even when the value is invalid, and invalid values are silently ignored ("Antwort der
+// Firmware" of each command): only reading the value back with 'Z' confirms a write.
+#include "Logging.h"
+#include "NanotecController.h"
+
+namespace stepdeck::nanotec {
+
+namespace {
+using Cache = std::shared_ptr<QMap<QByteArray, qint64>>;
+
+QByteArray readBody(const ParamDef& def)
+{
+    switch (def.read) {
+    case ParamDef::Read::Z:
+        return 'Z' + def.cmd;
+    case ParamDef::Read::Long:
+        return ':' + def.cmd;
+    case ParamDef::Read::Direct:
+        return def.cmd;
+    case ParamDef::Read::LastError:
+        return "E";
+    }
+    return {};
+}
+
+QByteArray writeBody(const ParamDef& def, qint64 wire)
+{
+    return def.isLong() ? ':' + def.cmd + '=' + QByteArray::number(wire)
+                        : def.cmd + QByteArray::number(wire);
+}
+
+// "ZE<slot><code>" without a sign is ambiguous; the slot we asked for splits it.
+std::optional<qint64> errorCode(const Reply& r, int slot)
+{
+    if (r.index == slot && r.value)
+        return r.value;
+    const QByteArray prefix = QByteArray::number(slot);
+    qint64 code = 0;
+    if (r.text.startsWith(prefix) && parseNumber(r.text.mid(prefix.size()), &code))
+        return code;
+    return std::nullopt;
+}
+
+QString text(const QVariant& v)
+{
+    return v.toString();
+}
+} // namespace
+
+NanotecController::Step NanotecController::readStep(Axis axis, const ParamDef& def,
+                                                    std::function<void(qint64)> store, Cache cache)
+{
+    const QByteArray body = readBody(def);
+    const QByteArray key = axisName(axis).toLatin1() + body;
+    if (def.read == ParamDef::Read::LastError) {
+        // 5.15: 'E' names the slot of the last error, "ZE<slot>" holds its code.
+        return [this, axis, store](const Done& done) {
+            auto slot = std::make_shared<qint64>(0);
+            exchange(axis, "E", sink([slot](qint64 v) { *slot = v; }))([=](const Failure& f) {
+                if (!f.ok() || *slot <= 0) {
+                    if (f.ok())
+                        store(0);
+                    return done(f);
+                }
+                const QByteArray zb = "ZE" + QByteArray::number(*slot);
+                exchange(axis, zb, [=](const Reply& r) {
+                    const auto code = errorCode(r, int(*slot));
+                    if (!code)
+                        return Failure{ErrorKind::Protocol, tr("malformed error memory reply '%1'")
+                                                                .arg(QString::fromLatin1(r.raw))};
+                    store(*code);
+                    return Failure{};
+                })(done);
+            });
+        };
+    }
+    return [this, axis, body, key, store, cache](const Done& done) {
+        if (cache && cache->contains(key)) {
+            store(cache->value(key));
+            return done({});
+        }
+        exchange(axis, body, sink([key, store, cache](qint64 v) {
+                     if (cache)
+                         cache->insert(key, v);
+                     store(v);
+                 }),
+                 NanotecBus::Priority::Command, 1)(done);
+    };
+}
+
+NanotecController::Step NanotecController::writeStep(Axis axis, const ParamDef& def, qint64 wire)
+{
+    const QByteArray body = writeBody(def, wire);
+    return [this, axis, &def, body, wire](const Done& done) {
+        NanotecBus::Request r;
+        r.address = m_drives[axis].address;
+        r.body = body;
+        r.retries = 1; // settings are idempotent
+        // 5.4: after 'm' the drive may already answer at its new address.
+        r.anyAddress = def.cmd == "m";
+        r.done = [this, axis, &def, body, wire, done](NanotecBus::Outcome o, const Reply& rep) {
+            if (o != NanotecBus::Outcome::Ok)
+                return done(outcomeFailure(axis, body, o, rep));
+            if (rep.value && *rep.value != wire)
+                return done(
+                    {ErrorKind::Protocol, tr("%1 echoed '%2' to '%3'")
+                                              .arg(driveName(axis), QString::fromLatin1(rep.raw),
+                                                   QString::fromLatin1(body))});
+            noteWritten(m_drives[axis], def, wire);
+            done({});
+        };
+        m_bus->submit(r);
+    };
+}
+
+NanotecController::Step NanotecController::verifyStep(Axis axis, const ParamDef& def,
+                                                      qint64 expected, Cache cache)
+{
+    return [this, axis, &def, expected, cache](const Done& done) {
+        if (cache)
+            cache->remove(axisName(axis).toLatin1() + readBody(def));
+        auto got = std::make_shared<qint64>(0);
+        readStep(
+            axis, def, [got](qint64 v) { *got = v; }, cache)([=, &def](const Failure& f) {
+            if (!f.ok())
+                return done(f);
+            const qint64 mask = def.fieldMask ? def.fieldMask : ~qint64(0);
+            if ((*got & mask) == (expected & mask))
+                return done({});
+            if (def.cmd == "m")
+                m_drives[axis].address = int(*got); // the drive stayed where it was
+            done({ErrorKind::VerifyFailed,
+                  tr("%1 on %2: wrote %3, but the drive kept %4 (drives echo invalid values and "
+                     "silently ignore them)")
+                      .arg(def.spec.name, driveName(axis), text(fromWire(def, expected)),
+                           text(fromWire(def, *got)))});
+        });
+    };
+}
+
+void NanotecController::noteWritten(Drive& d, const ParamDef& def, qint64 wire)
+{
+    if (def.cmd == "u")
+        d.minFrequency = wire;
+    else if (def.cmd == "o")
+        d.maxFrequency = wire;
+    else if (def.cmd == "b")
+        d.ramp = wire;
+    else if (def.cmd == "e")
+        d.limitSwitchType = wire;
+    else if (def.cmd == "m")
+        d.address = int(wire); // 5.4: communication continues at the new address
+}
+
+void NanotecController::readParameters(RequestId id, const QStringList& names)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QList<const ParamDef*> defs;
+    for (const QString& name : names) {
+        const ParamDef* def = findParam(name);
+        if (!def)
+            return finishError(id, ErrorKind::InvalidValue, tr("unknown parameter '%1'").arg(name));
+        defs << def;
+    }
+    if (names.isEmpty()) {
+        for (const ParamDef& def : parameterTable())
+            defs << &def;
+    }
+    auto result = std::make_shared<ParameterSet>();
+    auto cache = std::make_shared<QMap<QByteArray, qint64>>();
+    QList<Step> steps;
+    for (const ParamDef* def : defs) {
+        for (Axis axis : m_drives.keys()) {
+            steps << readStep(
+                axis, *def,
+                [result, def, axis](qint64 w) {
+                    (*result)[def->spec.name].perAxis.insert(axis, fromWire(*def, w));
+                },
+                cache);
+        }
+    }
+    runSteps(steps, [this, id, result](const Failure& f) {
+        finishWith(id, f, QVariant::fromValue(*result));
+    });
+}
+
+void NanotecController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    const QString invalid = schema().validate(values, axes());
+    if (!invalid.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, invalid);
+    QMap<int, Axis> newAddresses; // 5.4: a used address would end all communication
+    for (auto it = values.cbegin(); it != values.cend(); ++it) {
+        const ParamDef* def = findParam(it.key());
+        for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a) {
+            const QString extra = extraValidation(*def, a.value());
+            if (!extra.isEmpty())
+                return finishError(id, ErrorKind::InvalidValue, extra);
+            if (def->cmd == "m")
+                newAddresses.insert(int(*toWire(*def, a.value())), a.key());
+        }
+    }
+    for (auto it = newAddresses.cbegin(); it != newAddresses.cend(); ++it) {
+        for (const Drive& d : m_drives) {
+            if (d.address == it.key() && d.axis != it.value())
+                return finishError(id, ErrorKind::InvalidValue,
+                                   tr("motor-address %1 is already used by %2")
+                                       .arg(it.key())
+                                       .arg(driveName(d.axis)));
+        }
+    }
+    auto cache = std::make_shared<QMap<QByteArray, qint64>>();
+    QList<Step> steps, last;
+    QMap<Axis, QPair<qint64, qint64>> bitFields; // 'l': mask, bits (5.6)
+    for (const ParamDef& def : parameterTable()) {
+        if (!values.contains(def.spec.name))
+            continue;
+        const ParameterValue& v = values[def.spec.name];
+        for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
+            const qint64 wire = *toWire(def, a.value());
+            if (def.isBitField()) {
+                bitFields[a.key()].first |= def.fieldMask;
+                bitFields[a.key()].second |= wire;
+                continue;
+            }
+            QList<Step>& into = def.cmd == "m" ? last : steps; // address changes go last
+            into << writeStep(a.key(), def, wire);
+            if (verify)
+                into << verifyStep(a.key(), def, wire, cache);
+        }
+    }
+    // The whole 'l' mask as one integer, for the read-modify-write of its groups.
+    static const ParamDef wholeMask = [] {
+        ParamDef d = *findParam(QStringLiteral("limit-switch-behaviour-internal-reference"));
+        d.spec.name = QStringLiteral("limit-switch-behaviour");
+        d.spec.type = ParameterType::Integer;
+        d.fieldMask = 0;
+        return d;
+    }();
+    for (auto it = bitFields.cbegin(); it != bitFields.cend(); ++it) {
+        // The other groups and undocumented bits keep their values.
+        const Axis axis = it.key();
+        const qint64 mask = it.value().first, bits = it.value().second;
+        auto current = std::make_shared<qint64>(0);
+        steps << readStep(
+            axis, wholeMask, [current](qint64 v) { *current = v; }, cache);
+        steps << [this, axis, mask, bits, current, verify, cache](const Done& done) {
+            const qint64 merged = (*current & ~mask) | bits;
+            QList<Step> s{writeStep(axis, wholeMask, merged)};
+            if (verify)
+                s << verifyStep(axis, wholeMask, merged, cache);
+            runSteps(s, done);
+        };
+    }
+    runSteps(steps + last, [this, id](const Failure& f) {
+        updateStatus();
+        publishStatus();
+        finishWith(id, f);
+    });
+}
+
+} // namespace stepdeck::nanotec

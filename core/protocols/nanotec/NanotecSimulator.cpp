@@ -1,0 +1,157 @@
+#include "NanotecSimulator.h"
+#include "Logging.h"
+
+namespace stepdeck::nanotec {
+
+NanotecSimulator::NanotecSimulator(const SimulatorOptions& options, QObject* parent)
+    : Simulator(options, parent)
+{
+    QList<int> addresses = options.addresses.isEmpty() ? QList<int>{1, 2, 3} : options.addresses;
+    for (int address : addresses) {
+        if (isValidAddress(address) && !drive(address))
+            m_drives.push_back(std::make_unique<NanotecDrive>(address));
+    }
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(5);
+    connect(&m_timer, &QTimer::timeout, this, &NanotecSimulator::tick);
+    m_clock.start();
+}
+
+NanotecSimulator::~NanotecSimulator() = default;
+
+NanotecDrive* NanotecSimulator::drive(int address) const
+{
+    for (const auto& d : m_drives) {
+        if (d->address() == address)
+            return d.get();
+    }
+    return nullptr;
+}
+
+QList<NanotecDrive*> NanotecSimulator::drives() const
+{
+    QList<NanotecDrive*> out;
+    for (const auto& d : m_drives)
+        out << d.get();
+    return out;
+}
+
+void NanotecSimulator::setDriveSilent(int address, bool silent)
+{
+    if (NanotecDrive* d = drive(address))
+        d->faults.silent = silent;
+}
+
+void NanotecSimulator::garbleReplies(int address, int count)
+{
+    if (NanotecDrive* d = drive(address))
+        d->faults.garble = count;
+}
+
+void NanotecSimulator::replyFromWrongAddress(int address, int count, int wrongAddress)
+{
+    if (NanotecDrive* d = drive(address)) {
+        d->faults.wrongAddress = count;
+        d->faults.wrongAddressValue = wrongAddress;
+    }
+}
+
+void NanotecSimulator::receive(const QByteArray& bytes)
+{
+    for (const Command& c : m_decoder.feed(bytes)) {
+        if (!c.valid) {
+            qCDebug(lcSimulator) << "nanotec: dropped frame" << c.raw << c.error;
+            continue; // 1.1: a drive only reacts to complete, addressed frames
+        }
+        m_frames << c.raw;
+        execute(c);
+    }
+    ensureTicking();
+}
+
+void NanotecSimulator::execute(const Command& command)
+{
+    if (!command.broadcast) {
+        NanotecDrive* d = drive(command.address);
+        if (!d || d->faults.silent)
+            return;
+        const int address = d->address(); // 'm' moves the drive only after its echo
+        reply(d, address, d->handle(command.body));
+        return;
+    }
+    QList<QByteArray> frames;
+    for (const auto& d : m_drives) {
+        if (d->faults.silent)
+            continue;
+        const int address = d->address();
+        const NanotecDrive::Answer a = d->handle(command.body);
+        if (!a.body.isEmpty())
+            frames << frame(address, a);
+    }
+    if (frames.size() == 1) {
+        send(frames.first());
+    } else if (frames.size() > 1) {
+        // Everybody talks at once on the half-duplex bus: the host sees the bits ORed.
+        QByteArray collision(frames.first().size(), '\0');
+        for (const QByteArray& f : frames) {
+            for (int i = 0; i < collision.size() && i < f.size(); ++i)
+                collision[i] = char(collision.at(i) | f.at(i) | 0x80);
+        }
+        collision[collision.size() - 1] = '\r';
+        send(collision);
+    }
+}
+
+QByteArray NanotecSimulator::frame(int address, const NanotecDrive::Answer& answer) const
+{
+    const QByteArray addr = answer.longForm ? QByteArray::number(address)
+                                            : QByteArray::number(address).rightJustified(3, '0');
+    return addr + answer.body + '\r';
+}
+
+void NanotecSimulator::reply(NanotecDrive* d, int address, const NanotecDrive::Answer& answer)
+{
+    if (answer.body.isEmpty())
+        return;
+    int from = address;
+    if (d->faults.wrongAddress > 0) {
+        --d->faults.wrongAddress;
+        from = d->faults.wrongAddressValue ? d->faults.wrongAddressValue : address + 1;
+    }
+    QByteArray bytes = frame(from, answer);
+    if (d->faults.garble > 0) {
+        --d->faults.garble;
+        bytes[bytes.size() / 2] = char(0xB1); // a destroyed byte; the CR survives
+    }
+    send(bytes);
+}
+
+void NanotecSimulator::ensureTicking()
+{
+    bool active = false;
+    for (const auto& d : m_drives)
+        active = active || d->isActive();
+    if (active && !m_timer.isActive()) {
+        m_lastTickUs = m_clock.nsecsElapsed() / 1000;
+        m_timer.start();
+    } else if (!active) {
+        m_timer.stop();
+    }
+}
+
+void NanotecSimulator::tick()
+{
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    const double dt = qBound(0.0, (now - m_lastTickUs) / 1e6, 0.1);
+    m_lastTickUs = now;
+    for (const auto& d : m_drives) {
+        const int address = d->address();
+        for (const QByteArray& body : d->advance(dt)) {
+            if (!d->faults.silent && !d->answersDisabled())
+                reply(d.get(), address, {body, false});
+        }
+    }
+    ensureTicking();
+}
+
+} // namespace stepdeck::nanotec

@@ -1,0 +1,52 @@
+#pragma once
+#include "NanotecDrive.h"
+#include "sim/Simulator.h"
+#include <QElapsedTimer>
+#include <QTimer>
+#include <memory>
+
+namespace stepdeck::nanotec {
+
+// A bus of simulated Nanotec drives behind one link (SimulatorOptions::addresses; default
+// 1, 2, 3). It frames host commands, hands each to the drive at its address (or to all for
+// '*'), and sends the replies: three-digit address for short replies, unpadded for long ones
+// (the manual's examples "001s1000" and "1:CL_motor_pp+50"). With several drives on the bus
+// a broadcast makes them all answer at once, which on RS485 is a collision: garbage.
+// Motion advances by elapsed time; the timer runs only while a drive is active.
+class NanotecSimulator : public Simulator
+{
+    Q_OBJECT
+public:
+    explicit NanotecSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
+    ~NanotecSimulator() override;
+
+    QString modelId() const override { return QStringLiteral("nanotec"); }
+    void receive(const QByteArray& bytes) override;
+
+    // The drive that currently answers at `address` (after 'm' it moves), or nullptr.
+    NanotecDrive* drive(int address) const;
+    QList<NanotecDrive*> drives() const;
+    QList<QByteArray> receivedFrames() const { return m_frames; } // host frames, in order
+    void clearReceivedFrames() { m_frames.clear(); }
+
+    // ---- fault injection per drive (bus-wide faults: Simulator::faults()) ----
+    void setDriveSilent(int address, bool silent);
+    void garbleReplies(int address, int count);
+    void replyFromWrongAddress(int address, int count, int wrongAddress = 0);
+
+private:
+    void execute(const Command& command);
+    void reply(NanotecDrive* drive, int address, const NanotecDrive::Answer& answer);
+    QByteArray frame(int address, const NanotecDrive::Answer& answer) const;
+    void tick();
+    void ensureTicking();
+
+    std::vector<std::unique_ptr<NanotecDrive>> m_drives;
+    CommandDecoder m_decoder;
+    QList<QByteArray> m_frames;
+    QTimer m_timer{this};
+    QElapsedTimer m_clock;
+    qint64 m_lastTickUs = 0;
+};
+
+} // namespace stepdeck::nanotec
