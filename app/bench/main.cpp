@@ -1,7 +1,142 @@
-// Placeholder until the executable is written.
+// stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "Measurements.h"
+#include "protocols/Registry.h"
 #include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <cmath>
+#include <cstdio>
+
+using namespace stepdeck;
+using namespace stepdeck::bench;
+
+namespace {
+void print(FILE* stream, const QString& text)
+{
+    const QByteArray bytes = text.toUtf8() + '\n';
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
+    std::fflush(stream);
+}
+
+QJsonValue json(const std::optional<double>& value, int decimals)
+{
+    if (!value)
+        return QJsonValue();
+    const double scale = std::pow(10.0, decimals);
+    return std::round(*value * scale) / scale;
+}
+
+QString text(const std::optional<double>& value, int decimals, const QString& unit,
+             const QString& note)
+{
+    if (!value)
+        return QStringLiteral("n/a (%1)").arg(note);
+    return QStringLiteral("%1 %2").arg(*value, 0, 'f', decimals).arg(unit);
+}
+
+void quiet(QtMsgType type, const QMessageLogContext&, const QString& message)
+{
+    if (type == QtFatalMsg || type == QtCriticalMsg)
+        print(stderr, message);
+}
+
+QString lineText(const LineSettings& line)
+{
+    return QStringLiteral("%1 %2N%3").arg(line.baudRate).arg(line.dataBits).arg(line.stopBits);
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
+    QCoreApplication application(argc, argv);
+    const QStringList args = application.arguments().mid(1);
+    const bool asJson = args.contains(QStringLiteral("--json"));
+    for (const QString& arg : args) {
+        if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
+            print(stdout,
+                  QStringLiteral("Usage: stepdeck-bench [--json]\n"
+                                 "Measures the E-LAB adapter against its simulator over a "
+                                 "pseudo-terminal with QSerialPort: poll rate, panic latency and "
+                                 "DC2 feed throughput, unpaced and paced at the line rate.\n"
+                                 "Figures only; takes about 20 s. See docs/benchmark.md."));
+            return 0;
+        }
+        if (arg != QLatin1String("--json")) {
+            print(stderr, QStringLiteral("stepdeck-bench: unknown argument '%1'").arg(arg));
+            return 2;
+        }
+    }
+    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        qInstallMessageHandler(quiet);
+
+    const ModelInfo* model = findModel(QStringLiteral("elab"));
+    if (!model) {
+        print(stderr, QStringLiteral("stepdeck-bench: model elab is not built in"));
+        return 1;
+    }
+    const auto progress = [&](const QString& what) {
+        if (!asJson)
+            print(stderr, QStringLiteral("measuring %1 ...").arg(what));
+    };
+    progress(QStringLiteral("poll rate"));
+    const Figure poll = measurePollRate(*model, false);
+    progress(QStringLiteral("poll rate, paced"));
+    const Figure pollWire = measurePollRate(*model, true);
+    progress(QStringLiteral("panic latency"));
+    const LatencyFigure panic = measurePanicLatency(*model, kPanicRepetitions);
+    progress(QStringLiteral("feed throughput"));
+    const Figure feed = measureFeedThroughput(*model, false);
+    progress(QStringLiteral("feed throughput, paced"));
+    const Figure feedWire = measureFeedThroughput(*model, true);
+
+    QJsonArray notes;
+    for (const auto& [name, note] :
+         {std::pair{"pollRateHz", poll.note}, std::pair{"pollRateWireMaxHz", pollWire.note},
+          std::pair{"panicLatencyMs", panic.note}, std::pair{"feedStepsPerSecond", feed.note},
+          std::pair{"feedWireMaxStepsPerSecond", feedWire.note}}) {
+        if (!note.isEmpty())
+            notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
+    }
+
+    if (asJson) {
+        const QJsonObject out{
+            {"pollRateHz", json(poll.value, 1)},
+            {"pollRateWireMaxHz", json(pollWire.value, 1)},
+            {"panicLatencyMs", QJsonObject{{"median", json(panic.medianMs, 3)},
+                                           {"p99", json(panic.p99Ms, 3)},
+                                           {"samples", panic.samples}}},
+            {"feedStepsPerSecond", json(feed.value, 0)},
+            {"feedWireMaxStepsPerSecond", json(feedWire.value, 0)},
+            {"conditions", QJsonObject{{"model", model->id},
+                                       {"line", lineText(model->line)},
+                                       {"transport", "QSerialPort on a pseudo-terminal"},
+                                       {"pollIntervalMs", kPollIntervalMs},
+                                       {"panicRepetitions", kPanicRepetitions},
+                                       {"feedStreamSteps", kFeedStreamSteps}}},
+            {"notes", notes},
+        };
+        print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
+        return 0;
+    }
+    print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
+                                 "pseudo-terminal; paced = %2 in both directions")
+                      .arg(model->id, lineText(model->line)));
+    print(stdout, QStringLiteral("  poll rate                    %1  (poll interval %2 ms)")
+                      .arg(text(poll.value, 1, QStringLiteral("Hz"), poll.note))
+                      .arg(kPollIntervalMs));
+    print(stdout, QStringLiteral("  poll rate, paced (wire max)  %1")
+                      .arg(text(pollWire.value, 1, QStringLiteral("Hz"), pollWire.note)));
+    print(stdout,
+          QStringLiteral("  panic latency                median %1, p99 %2  (%3 runs, %4-step "
+                         "DC2 stream queued)")
+              .arg(text(panic.medianMs, 3, QStringLiteral("ms"), panic.note),
+                   text(panic.p99Ms, 3, QStringLiteral("ms"), panic.note))
+              .arg(panic.samples)
+              .arg(kFeedStreamSteps));
+    print(stdout, QStringLiteral("  feed throughput              %1")
+                      .arg(text(feed.value, 0, QStringLiteral("steps/s"), feed.note)));
+    print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
+                      .arg(text(feedWire.value, 0, QStringLiteral("steps/s"), feedWire.note)));
     return 0;
 }

@@ -1,0 +1,143 @@
+#include "Measurements.h"
+#include "BenchDevice.h"
+#include "BenchSession.h"
+#include "protocols/Registry.h"
+#include <QtMath>
+#include <algorithm>
+
+namespace stepdeck::bench {
+
+namespace {
+// Ramp and feed parameters at their schema defaults: the simulator powers on with setup
+// incomplete and refuses a feed stream until they are written.
+ParameterSet setupParameters(const ModelInfo& model)
+{
+    ParameterSet set;
+    for (const char* name : {"start-speed", "max-speed", "acceleration", "feed-speed"}) {
+        const ParameterSpec* spec = model.schema.find(QString::fromLatin1(name));
+        if (!spec)
+            continue;
+        ParameterValue value;
+        for (Axis axis : model.capabilities.axes)
+            value.perAxis.insert(axis, spec->defaultValue);
+        set.insert(spec->name, value);
+    }
+    return set;
+}
+
+QVector<AxisVector> stepStream(int steps)
+{
+    const AxisVector oneStep{{Axis::X, 1}}; // shared by every element (implicit sharing)
+    return QVector<AxisVector>(steps, oneStep);
+}
+
+// A device and a connected, set-up host; empty note on success.
+QString prepare(const ModelInfo& model, BenchDevice* device, BenchSession* host, int pollIntervalMs,
+                bool setup)
+{
+    QString error;
+    if (!device->start(&error))
+        return QStringLiteral("simulator: %1").arg(error);
+    if (!host->connectTo(model.id, device->slavePath(), pollIntervalMs, &error))
+        return QStringLiteral("connect: %1").arg(error);
+    if (setup) {
+        const ParameterSet set = setupParameters(model);
+        const CommandResult written =
+            host->call([&](ControllerSession& s) { return s.writeParameters(set, false); }, 5000);
+        if (!written.ok())
+            return QStringLiteral("setup: %1").arg(written.message);
+    }
+    return {};
+}
+
+double percentile(QList<double> samples, double fraction)
+{
+    std::sort(samples.begin(), samples.end());
+    // Nearest rank: with 20 samples p99 is the largest one.
+    const int rank = qMax(1, int(qCeil(fraction * samples.size())));
+    return samples.at(rank - 1);
+}
+
+double median(QList<double> samples)
+{
+    std::sort(samples.begin(), samples.end());
+    const qsizetype n = samples.size();
+    return n % 2 ? samples.at(n / 2) : (samples.at(n / 2 - 1) + samples.at(n / 2)) / 2.0;
+}
+} // namespace
+
+Figure measurePollRate(const ModelInfo& model, bool paced)
+{
+    BenchDevice device(model, {paced, false});
+    BenchSession host;
+    if (const QString error = prepare(model, &device, &host, kPollIntervalMs, false);
+        !error.isEmpty())
+        return {std::nullopt, error};
+    host.idle(kPollWindowMs);
+    if (host.pollRateReports() == 0 || host.lastPollRateHz() <= 0)
+        return {std::nullopt, QStringLiteral("the poller reported no rate")};
+    return {host.lastPollRateHz(), {}};
+}
+
+LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
+{
+    const QVector<AxisVector> stream = stepStream(kFeedStreamSteps);
+    QList<double> samples;
+    LatencyFigure figure;
+    for (int i = 0; i < repetitions; ++i) {
+        // A fresh device and session each time: after a panic the machine must be set up
+        // and referenced again, which is not what is measured here.
+        BenchDevice device(model, {false, false});
+        BenchSession host;
+        if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty()) {
+            figure.note = error;
+            break;
+        }
+        device.resetCounters();
+        host.session().feedStream(stream);
+        if (!host.waitUntil([&] { return device.stepBytes() >= 32; }, 3000)) {
+            figure.note = QStringLiteral("the feed stream did not start");
+            break;
+        }
+        host.idle(30); // the host queue is now held back by the controller's XOFF
+        const qint64 calledNs = nowNs();
+        host.session().panic();
+        if (!host.waitUntil([&] { return device.panicSeenNs() >= 0; }, 2000)) {
+            figure.note = QStringLiteral("a panic byte did not arrive within 2 s");
+            continue;
+        }
+        samples << double(device.panicSeenNs() - calledNs) / 1e6;
+    }
+    figure.samples = int(samples.size());
+    if (!samples.isEmpty()) {
+        figure.medianMs = median(samples);
+        figure.p99Ms = percentile(samples, 0.99);
+    }
+    return figure;
+}
+
+Figure measureFeedThroughput(const ModelInfo& model, bool paced)
+{
+    BenchDevice device(model, {paced, true});
+    BenchSession host;
+    if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty())
+        return {std::nullopt, error};
+    device.resetCounters();
+    host.session().feedStream(stepStream(kFeedStreamSteps));
+    if (!host.waitUntil([&] { return device.stepBytes() > 0; }, 3000))
+        return {std::nullopt, QStringLiteral("the feed stream did not start")};
+    host.waitUntil(
+        [&] {
+            return device.stepBytes() >= kFeedStreamSteps ||
+                   nowNs() - device.firstStepNs() >= qint64(kFeedBudgetMs) * 1000000;
+        },
+        kFeedBudgetMs + 1000);
+    const qint64 steps = device.stepBytes();
+    const double seconds = double(device.lastStepNs() - device.firstStepNs()) / 1e9;
+    host.call([](ControllerSession& s) { return s.panic(); }, 1000); // end the stream
+    if (steps < 2 || seconds <= 0)
+        return {std::nullopt, QStringLiteral("too few steps arrived")};
+    return {double(steps - 1) / seconds, {}};
+}
+
+} // namespace stepdeck::bench

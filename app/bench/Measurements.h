@@ -1,0 +1,39 @@
+#pragma once
+#include <QString>
+#include <optional>
+
+namespace stepdeck {
+struct ModelInfo;
+}
+
+namespace stepdeck::bench {
+
+constexpr int kPollIntervalMs = 1;  // the StatusPoller's floor: polls back to back
+constexpr int kPollWindowMs = 2600; // the poller reports its rate over the last second
+constexpr int kPanicRepetitions = 20;
+constexpr int kFeedStreamSteps = 100000;
+constexpr int kFeedBudgetMs = 3000;
+
+struct Figure
+{
+    std::optional<double> value;
+    QString note; // why there is no value, or what limited it
+};
+
+struct LatencyFigure
+{
+    std::optional<double> medianMs;
+    std::optional<double> p99Ms;
+    int samples = 0;
+    QString note;
+};
+
+// Achieved status polls per second of the adapter against the simulator on a pty.
+Figure measurePollRate(const ModelInfo& model, bool paced);
+// Call of ControllerSession::panic() -> panic byte seen by the simulator, while a
+// kFeedStreamSteps-step DC2 stream is queued behind the controller's XOFF.
+LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions);
+// DC2 single steps delivered to the simulator per second.
+Figure measureFeedThroughput(const ModelInfo& model, bool paced);
+
+} // namespace stepdeck::bench

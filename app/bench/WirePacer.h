@@ -1,0 +1,43 @@
+#pragma once
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+#include <deque>
+#include <functional>
+
+namespace stepdeck::bench {
+
+// A serial wire in one direction: bytes leave back to back, each taking one character time
+// (start + data + parity + stop bits at the baud rate), and are delivered when their last bit
+// would have arrived. Times run on a virtual clock, so no rounding accumulates; delivery
+// itself is quantised by Qt's millisecond timers to within +-0.5 ms (kToleranceUs) of the
+// exact time, early and late alike, without busy-waiting.
+class WirePacer : public QObject
+{
+public:
+    WirePacer(double characterUs, std::function<void(const QByteArray&)> deliver,
+              QObject* parent = nullptr);
+
+    void push(const QByteArray& bytes); // the bytes enter the wire now
+
+private:
+    struct Chunk
+    {
+        QByteArray bytes;
+        double startUs = 0; // when the first remaining byte started on the wire
+    };
+    static constexpr double kToleranceUs = 500;
+
+    void release();
+    double nowUs() const { return double(m_clock.nsecsElapsed()) / 1000.0; }
+
+    double m_characterUs;
+    std::function<void(const QByteArray&)> m_deliver;
+    std::deque<Chunk> m_chunks;
+    double m_lineFreeUs = 0; // when the last byte handed to the wire has been sent
+    QElapsedTimer m_clock;
+    QTimer m_timer;
+};
+
+} // namespace stepdeck::bench
