@@ -16,17 +16,32 @@ struct CommandEntry
     const char* name;
     Outcome (*run)(CliContext&, QStringList);
     bool needsModel;
+    bool ownOptions; // takes options of its own (--abs, --no-wait, --for); checks them itself
 };
 
+// clang-format off
 const CommandEntry kCommands[] = {
-    {"ports", cmdPorts, false},  {"models", cmdModels, false},  {"params", cmdParams, true},
-    {"status", cmdStatus, true}, {"set", cmdSet, true},         {"get", cmdGet, true},
-    {"export", cmdExport, true}, {"import", cmdImport, true},   {"move", cmdMove, true},
-    {"jog", cmdJog, true},       {"home", cmdHome, true},       {"velocity", cmdVelocity, true},
-    {"feed", cmdFeed, true},     {"stop", cmdStop, true},       {"panic", cmdPanic, true},
-    {"reset", cmdReset, true},   {"spindle", cmdSpindle, true}, {"coolant", cmdCoolant, true},
-    {"power", cmdPower, true},
+    {"ports", cmdPorts, false, false},
+    {"models", cmdModels, false, false},
+    {"params", cmdParams, true, false},
+    {"status", cmdStatus, true, false},
+    {"set", cmdSet, true, false},
+    {"get", cmdGet, true, false},
+    {"export", cmdExport, true, false},
+    {"import", cmdImport, true, false},
+    {"move", cmdMove, true, true},
+    {"jog", cmdJog, true, true},
+    {"home", cmdHome, true, true},
+    {"velocity", cmdVelocity, true, true},
+    {"feed", cmdFeed, true, true},
+    {"stop", cmdStop, true, false},
+    {"panic", cmdPanic, true, false},
+    {"reset", cmdReset, true, false},
+    {"spindle", cmdSpindle, true, false},
+    {"coolant", cmdCoolant, true, false},
+    {"power", cmdPower, true, false},
 };
+// clang-format on
 
 QString rangeText(const ParameterSpec& spec)
 {
@@ -101,6 +116,10 @@ Outcome runCommand(CliContext& context)
     for (const CommandEntry& entry : kCommands) {
         if (name != QLatin1String(entry.name))
             continue;
+        if (!entry.ownOptions) {
+            if (const QString e = unknownOption(context.options.args); !e.isEmpty())
+                return Outcome::usage(e);
+        }
         if (entry.needsModel && !context.model) {
             return Outcome::usage(
                 tr("unknown controller model '%1' (known: %2)")

@@ -1,0 +1,398 @@
+// End to end: stepdeck-cli against stepdeck-sim over a real pseudo-terminal with QSerialPort
+// (issue #2, section 6). Each test gets a fresh simulator process (power-on state); each CLI
+// invocation is its own session, so positions are only observable within one invocation
+// (move prints where it ended) -- between invocations only the device state persists.
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestCliEndToEnd : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void statusJson_atPowerOn_hasContractKeys_data();
+    void statusJson_atPowerOn_hasContractKeys();
+    void statusJson_atPowerOn_setupIncomplete();
+    void status_human_showsFlagsAxesAndUnknownPositions();
+    void status_inProcessSim_printsPowerOnState();
+    void move_atPowerOn_refusedForIncompleteSetup();
+    void set_rampParameters_clearsSetupIncomplete();
+    void set_outOfRange_failsNamingParameterAndRange_data();
+    void set_outOfRange_failsNamingParameterAndRange();
+    void move_afterSetup_printsEndPositionsAndIdle();
+    void move_positions_doNotOutliveTheSession();
+    void exportImport_roundTrip_writesTheSetup();
+    void import_brokenFile_refusedAndNothingWritten_data();
+    void import_brokenFile_refusedAndNothingWritten();
+    void get_writeOnlyParameter_saysItCannot();
+    void usageErrors_exitTwoWithOneLine_data();
+    void usageErrors_exitTwoWithOneLine();
+    void port_missing_failsWithLinkDown();
+    void help_documentsExitCodes();
+
+private:
+    struct Run
+    {
+        int exitCode = -1;
+        QByteArray out;
+        QByteArray err;
+    };
+    Run cli(const QStringList& args, int timeoutMs = 20000);
+    QJsonObject statusJson();
+    QString binary(const QString& name) const;
+    QString writeFile(const QString& name, const QByteArray& content);
+
+    QString m_binDir;
+    QProcess* m_sim = nullptr;
+    QString m_pty;
+    QTemporaryDir m_tmp;
+};
+
+QString TestCliEndToEnd::binary(const QString& name) const
+{
+    return QDir(m_binDir).filePath(name);
+}
+
+void TestCliEndToEnd::initTestCase()
+{
+    m_binDir = qEnvironmentVariable("STEPDECK_BIN_DIR");
+    QVERIFY2(!m_binDir.isEmpty(), "STEPDECK_BIN_DIR is not set (run through ctest)");
+    QVERIFY2(QFileInfo(binary("stepdeck-cli")).isExecutable(), qPrintable(binary("stepdeck-cli")));
+    QVERIFY2(QFileInfo(binary("stepdeck-sim")).isExecutable(), qPrintable(binary("stepdeck-sim")));
+    QVERIFY(m_tmp.isValid());
+}
+
+void TestCliEndToEnd::init()
+{
+    m_sim = new QProcess(this);
+    m_sim->setStandardErrorFile(QProcess::nullDevice()); // its one "serving on" line
+    m_sim->start(binary("stepdeck-sim"), {"--model", "elab"});
+    QVERIFY2(m_sim->waitForStarted(5000), qPrintable(m_sim->errorString()));
+    // The contract: the pty path is the first line of stdout, flushed at once.
+    while (!m_sim->canReadLine())
+        QVERIFY2(m_sim->waitForReadyRead(5000), "stepdeck-sim printed no pty path");
+    m_pty = QString::fromLocal8Bit(m_sim->readLine()).trimmed();
+    QVERIFY2(m_pty.startsWith("/dev/"), qPrintable(m_pty));
+    QVERIFY(QFileInfo::exists(m_pty));
+}
+
+void TestCliEndToEnd::cleanup()
+{
+    if (m_sim) {
+        m_sim->terminate(); // SIGTERM: the simulator quits cleanly
+        if (!m_sim->waitForFinished(5000))
+            m_sim->kill();
+        QCOMPARE(m_sim->exitStatus(), QProcess::NormalExit);
+        delete m_sim;
+        m_sim = nullptr;
+    }
+}
+
+TestCliEndToEnd::Run TestCliEndToEnd::cli(const QStringList& args, int timeoutMs)
+{
+    QStringList all = args;
+    if (!args.contains("--port"))
+        all = QStringList{"--model", "elab", "--port", m_pty} + args;
+    QProcess process;
+    process.start(binary("stepdeck-cli"), all);
+    Run run;
+    if (!process.waitForFinished(timeoutMs)) {
+        process.kill();
+        process.waitForFinished();
+        qWarning() << "stepdeck-cli" << all << "did not finish";
+        return run;
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    run.out = process.readAllStandardOutput();
+    run.err = process.readAllStandardError();
+    return run;
+}
+
+QJsonObject TestCliEndToEnd::statusJson()
+{
+    const Run run = cli({"status", "--json"});
+    if (run.exitCode != 0) {
+        qWarning() << "status failed:" << run.err;
+        return {};
+    }
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(run.out, &error);
+    if (!doc.isObject())
+        qWarning() << "not one JSON object:" << run.out << error.errorString();
+    return doc.object();
+}
+
+QString TestCliEndToEnd::writeFile(const QString& name, const QByteArray& content)
+{
+    const QString path = m_tmp.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
+        qWarning() << "cannot write" << path;
+    return path;
+}
+
+void TestCliEndToEnd::statusJson_atPowerOn_hasContractKeys_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<int>("type"); // QJsonValue::Type
+    QTest::newRow("model") << "model" << int(QJsonValue::String);
+    for (const char* key :
+         {"driveOn", "spindleOn", "busy", "overTemperature", "setupIncomplete", "panic"})
+        QTest::newRow(key) << QStringLiteral("machine.%1").arg(key) << int(QJsonValue::Bool);
+    for (const char* axis : {"X", "Y", "Z"}) {
+        for (const char* key :
+             {"moving", "jogging", "limitSwitch", "referenceSwitch", "positionEstimated"}) {
+            const QString path = QStringLiteral("axes.%1.%2").arg(axis, key);
+            QTest::newRow(qPrintable(path)) << path << int(QJsonValue::Bool);
+        }
+        const QString position = QStringLiteral("axes.%1.position").arg(axis);
+        QTest::newRow(qPrintable(position)) << position << int(QJsonValue::Double);
+    }
+    QTest::newRow("temperatureCelsius") << "temperatureCelsius" << int(QJsonValue::Double);
+    QTest::newRow("raw") << "raw" << int(QJsonValue::Object);
+}
+
+void TestCliEndToEnd::statusJson_atPowerOn_hasContractKeys()
+{
+    QFETCH(QString, path);
+    QFETCH(int, type);
+    QJsonValue value = statusJson();
+    for (const QString& key : path.split('.'))
+        value = value.toObject().value(key);
+    QCOMPARE(int(value.type()), type);
+}
+
+void TestCliEndToEnd::statusJson_atPowerOn_setupIncomplete()
+{
+    const Run run = cli({"status", "--json"});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    QCOMPARE(run.out.count('\n'), 1); // exactly one JSON object on one line
+    const QJsonObject status = QJsonDocument::fromJson(run.out).object();
+    QCOMPARE(status.value("model").toString(), QStringLiteral("elab"));
+    QCOMPARE(status.value("machine").toObject().value("setupIncomplete").toBool(), true);
+    QCOMPARE(status.value("machine").toObject().value("panic").toBool(), false);
+    QCOMPARE(status.value("axes").toObject().keys(), (QStringList{"X", "Y", "Z"}));
+}
+
+void TestCliEndToEnd::status_human_showsFlagsAxesAndUnknownPositions()
+{
+    const Run run = cli({"status"});
+    QCOMPARE(run.exitCode, 0);
+    const QString out = QString::fromUtf8(run.out);
+    QVERIFY2(out.contains("SETUP INCOMPLETE"), qPrintable(out));
+    QVERIFY2(out.contains("Temperature:"), qPrintable(out));
+    for (const char* axis : {"\nX ", "\nY ", "\nZ "})
+        QVERIFY2(out.contains(QLatin1String(axis)), qPrintable(out));
+    QVERIFY2(out.contains("unknown"), qPrintable(out)); // not referenced in a new session
+}
+
+void TestCliEndToEnd::status_inProcessSim_printsPowerOnState()
+{
+    const Run run = cli({"--model", "elab", "--port", "sim", "status", "--json"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject status = QJsonDocument::fromJson(run.out).object();
+    QCOMPARE(status.value("machine").toObject().value("setupIncomplete").toBool(), true);
+}
+
+void TestCliEndToEnd::move_atPowerOn_refusedForIncompleteSetup()
+{
+    const Run run = cli({"move", "X=100"});
+    // Refused by the adapter (3) or NAKed by the board (4): either way one line naming setup.
+    QVERIFY2(run.exitCode == 3 || run.exitCode == 4, run.err.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.toLower().contains("setup"), run.err.constData());
+}
+
+void TestCliEndToEnd::set_rampParameters_clearsSetupIncomplete()
+{
+    const Run run =
+        cli({"set", "start-speed=100", "max-speed=2000,2000,1500", "acceleration=1000"});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    QCOMPARE(statusJson().value("machine").toObject().value("setupIncomplete").toBool(), false);
+}
+
+void TestCliEndToEnd::set_outOfRange_failsNamingParameterAndRange_data()
+{
+    QTest::addColumn<QString>("assignment");
+    QTest::addColumn<QString>("parameter");
+    QTest::addColumn<QString>("range");
+    QTest::newRow("speed above 16 bits") << "start-speed=70000"
+                                         << "start-speed"
+                                         << "0..65535";
+    QTest::newRow("one axis negative") << "max-speed=100,-1,100"
+                                       << "max-speed"
+                                       << "0..65535";
+    QTest::newRow("power above 100") << "drive-power=101"
+                                     << "drive-power"
+                                     << "0..100";
+    QTest::newRow("rpm negative") << "spindle-rpm=-1"
+                                  << "spindle-rpm"
+                                  << "0..1000";
+    QTest::newRow("polarity word") << "limit-polarity=sideways"
+                                   << "limit-polarity"
+                                   << "high|low";
+}
+
+void TestCliEndToEnd::set_outOfRange_failsNamingParameterAndRange()
+{
+    QFETCH(QString, assignment);
+    QFETCH(QString, parameter);
+    QFETCH(QString, range);
+    const Run run = cli({"set", assignment});
+    QCOMPARE(run.exitCode, 7);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains(parameter.toUtf8()), run.err.constData());
+    QVERIFY2(run.err.contains(range.toUtf8()), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+}
+
+void TestCliEndToEnd::move_afterSetup_printsEndPositionsAndIdle()
+{
+    QCOMPARE(cli({"set", "start-speed=200", "max-speed=4000", "acceleration=2000"}).exitCode, 0);
+    const Run run = cli({"move", "X=300", "Y=-120", "--json"});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const QJsonObject axes = QJsonDocument::fromJson(run.out).object().value("axes").toObject();
+    QCOMPARE(axes.value("X").toObject().value("position").toDouble(), 300.0);
+    QCOMPARE(axes.value("Y").toObject().value("position").toDouble(), -120.0);
+    QCOMPARE(axes.value("Z").toObject().value("position").toDouble(), 0.0);
+    for (const QString& axis : axes.keys())
+        QCOMPARE(axes.value(axis).toObject().value("moving").toBool(), false); // waited
+
+    const Run human = cli({"move", "Z=40"});
+    QCOMPARE(human.exitCode, 0);
+    QVERIFY2(human.out.contains("Z=40"), human.out.constData());
+}
+
+void TestCliEndToEnd::move_positions_doNotOutliveTheSession()
+{
+    QCOMPARE(cli({"set", "start-speed=200", "max-speed=4000", "acceleration=2000"}).exitCode, 0);
+    QCOMPARE(cli({"move", "X=50"}).exitCode, 0);
+    // A new invocation is a reconnect: nothing referenced, positions unknown (issue #2, sec. 2).
+    const QJsonObject x = statusJson().value("axes").toObject().value("X").toObject();
+    QCOMPARE(x.value("positionKnown").toBool(true), false);
+    QCOMPARE(x.value("referenced").toBool(true), false);
+    // ... so an absolute move is refused with a reason instead of guessing.
+    const Run abs = cli({"move", "--abs", "X=0"});
+    QCOMPARE(abs.exitCode, 3);
+    QVERIFY2(abs.err.contains("unknown"), abs.err.constData());
+}
+
+void TestCliEndToEnd::exportImport_roundTrip_writesTheSetup()
+{
+    const QString path = m_tmp.filePath("setup.json");
+    const Run exported = cli({"export", path});
+    QCOMPARE(exported.exitCode, 0);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(json.value("format").toString(), QStringLiteral("stepdeck-parameters"));
+    QCOMPARE(json.value("model").toString(), QStringLiteral("elab"));
+    const QJsonObject startSpeed =
+        json.value("parameters").toObject().value("start-speed").toObject();
+    QCOMPARE(startSpeed.keys(), (QStringList{"X", "Y", "Z"}));
+    // E-LAB cannot read back: the file says its values are schema defaults.
+    QCOMPARE(json.value("origin").toObject().value("start-speed").toString(),
+             QStringLiteral("default"));
+
+    QCOMPARE(statusJson().value("machine").toObject().value("setupIncomplete").toBool(), true);
+    const Run imported = cli({"import", path});
+    QVERIFY2(imported.exitCode == 0, imported.err.constData());
+    QCOMPARE(statusJson().value("machine").toObject().value("setupIncomplete").toBool(), false);
+}
+
+void TestCliEndToEnd::import_brokenFile_refusedAndNothingWritten_data()
+{
+    QTest::addColumn<QByteArray>("content"); // empty: the file does not exist
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("needle");
+    // Valid ramp entries first: if anything were written before validation, setup would
+    // become complete and the status check below would catch it.
+    const QByteArray head = R"({"format":"stepdeck-parameters","version":1,"model":"elab",
+        "parameters":{"start-speed":{"X":100,"Y":100,"Z":100},
+                      "max-speed":{"X":2000,"Y":2000,"Z":2000},
+                      "acceleration":{"X":1000,"Y":1000,"Z":1000})";
+    QTest::newRow("missing file") << QByteArray() << 12 << "cannot read";
+    QTest::newRow("not JSON") << QByteArray("{ \"format\": ") << 12 << "not valid JSON";
+    QTest::newRow("not a parameter file")
+        << QByteArray(R"({"format":"something-else"})") << 7 << "not a StepDeck parameter file";
+    QTest::newRow("out of range") << head + R"(,"drive-power":250}})" << 7 << "drive-power";
+    QTest::newRow("unknown parameter") << head + R"(,"warp-speed":9}})" << 7 << "warp-speed";
+    QTest::newRow("missing axis") << head + R"(,"feed-speed":{"X":50,"Y":50}}})" << 7 << "axis Z";
+    QTest::newRow("other model") << QByteArray(head).replace("\"elab\"", "\"nanotec\"") + "}}" << 7
+                                 << "nanotec";
+}
+
+void TestCliEndToEnd::import_brokenFile_refusedAndNothingWritten()
+{
+    QFETCH(QByteArray, content);
+    QFETCH(int, exitCode);
+    QFETCH(QString, needle);
+    const QString path = content.isEmpty() ? m_tmp.filePath("does-not-exist.json")
+                                           : writeFile("broken.json", content);
+    const Run run = cli({"import", path});
+    QCOMPARE(run.exitCode, exitCode);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains(needle.toUtf8()), run.err.constData());
+    QCOMPARE(statusJson().value("machine").toObject().value("setupIncomplete").toBool(), true);
+}
+
+void TestCliEndToEnd::get_writeOnlyParameter_saysItCannot()
+{
+    const Run run = cli({"get", "start-speed"});
+    QCOMPARE(run.exitCode, 8);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains("cannot be read back"), run.err.constData());
+}
+
+void TestCliEndToEnd::usageErrors_exitTwoWithOneLine_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command";
+    QTest::newRow("unknown option") << QStringList{"status", "--bogus"} << "unknown option";
+    QTest::newRow("no command") << QStringList{} << "no command";
+    QTest::newRow("axis value not a number") << QStringList{"move", "X=abc"} << "not a number";
+    QTest::newRow("jog without duration") << QStringList{"jog", "X=100"} << "--for";
+    QTest::newRow("unknown model") << QStringList{"--model", "nope", "status"} << "nope";
+}
+
+void TestCliEndToEnd::usageErrors_exitTwoWithOneLine()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, needle);
+    const Run run = cli(QStringList{"--port", m_pty} + args);
+    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains(needle.toUtf8()), run.err.constData());
+}
+
+void TestCliEndToEnd::port_missing_failsWithLinkDown()
+{
+    const Run run = cli({"--port", "/dev/stepdeck-no-such-port", "status"});
+    QCOMPARE(run.exitCode, 6);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains("/dev/stepdeck-no-such-port"), run.err.constData());
+}
+
+void TestCliEndToEnd::help_documentsExitCodes()
+{
+    const Run run = cli({"--help"});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(run.out.contains("Exit codes"));
+    for (const char* command : {"ports", "status", "set", "get", "export", "import", "move", "jog",
+                                "home", "velocity", "feed", "panic", "spindle"})
+        QVERIFY2(run.out.contains(command), command);
+}
+
+QTEST_GUILESS_MAIN(TestCliEndToEnd)
+#include "tst_cli_e2e.moc"
