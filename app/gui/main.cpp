@@ -1,7 +1,82 @@
-// Placeholder until the executable is written.
-#include <QCoreApplication>
+// stepdeck: the operator and technician GUI.
+//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--screenshot DIR] [--lang en|de]
+#include "main/ConnectionBar.h"
+#include "main/MainWindow.h"
+#include "main/ScreenshotScript.h"
+#include "main/Translations.h"
+#include "protocols/Registry.h"
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTextStream>
+#include <QTimer>
+
+using namespace stepdeck;
+
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv);
-    return 0;
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("StepDeck"));
+    QApplication::setOrganizationDomain(QStringLiteral("stepdeck.invalid"));
+    QApplication::setApplicationName(QStringLiteral("StepDeck"));
+    QApplication::setApplicationVersion(QStringLiteral(STEPDECK_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("StepDeck stepper-motor controller GUI"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption simulate(
+        QStringLiteral("simulate"), QStringLiteral("Connect to the in-process simulator of MODEL."),
+        QStringLiteral("MODEL"));
+    const QCommandLineOption model(QStringLiteral("model"), QStringLiteral("Controller model."),
+                                   QStringLiteral("MODEL"));
+    const QCommandLineOption port(QStringLiteral("port"),
+                                  QStringLiteral("Port to connect at start: device path, "
+                                                 "tcp://HOST:PORT or sim."),
+                                  QStringLiteral("PORT"));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Render every main page to DIR as PNG and exit (use with --simulate)."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption lang(QStringLiteral("lang"),
+                                  QStringLiteral("User interface language (en, de)."),
+                                  QStringLiteral("CODE"));
+    parser.addOptions({simulate, model, port, screenshot, lang});
+    parser.process(app);
+
+    ui::translations::install(&app, parser.isSet(lang) ? parser.value(lang)
+                                                       : ui::translations::configured());
+
+    QString modelId = parser.value(model);
+    QString portSpec = parser.value(port);
+    if (parser.isSet(simulate)) {
+        modelId = parser.value(simulate);
+        portSpec = QStringLiteral("sim");
+    }
+    if (!modelId.isEmpty() && !findModel(modelId)) {
+        QTextStream(stderr) << QCoreApplication::translate("main", "unknown model '%1' (known: %2)")
+                                   .arg(modelId, modelIds().join(QStringLiteral(", ")))
+                            << "\n";
+        return 2;
+    }
+
+    ui::MainWindow window;
+    if (!modelId.isEmpty())
+        window.connectionBar()->setSelectedModel(modelId);
+    if (!portSpec.isEmpty()) {
+        window.connectionBar()->setPortSpec(portSpec);
+        window.connectionBar()->connectNow();
+    }
+    window.show();
+
+    if (parser.isSet(screenshot)) {
+        if (portSpec.isEmpty()) {
+            QTextStream(stderr) << "--screenshot needs --simulate MODEL or --port PORT\n";
+            return 2;
+        }
+        auto* script = new ui::ScreenshotScript(&window, parser.value(screenshot), &app);
+        QObject::connect(script, &ui::ScreenshotScript::finished, &app,
+                         [](int code) { QCoreApplication::exit(code); });
+        QTimer::singleShot(0, script, &ui::ScreenshotScript::start);
+    }
+    return app.exec();
 }

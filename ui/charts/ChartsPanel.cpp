@@ -1,0 +1,203 @@
+#include "ChartsPanel.h"
+#include "main/MachineContext.h"
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QLabel>
+#include <QLineSeries>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTimer>
+#include <QValueAxis>
+#include <QtMath>
+
+namespace stepdeck::ui {
+
+ChartsPanel::ChartsPanel(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_sampler(new ChartSampler(this)),
+      m_grid(new QWidget(this)), m_window(new QComboBox(this)),
+      m_pause(new QCheckBox(tr("Pause"), this)), m_timer(new QTimer(this))
+{
+    for (int s : {10, 30, 60, 300})
+        m_window->addItem(s < 60 ? tr("%1 s").arg(s) : tr("%1 min").arg(s / 60), s);
+    m_window->setCurrentIndex(1);
+    auto* csv = new QPushButton(tr("Export CSV\u2026"), this);
+    auto* png = new QPushButton(tr("Export PNG\u2026"), this);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(new QLabel(tr("Time window:"), this));
+    bar->addWidget(m_window);
+    bar->addWidget(m_pause);
+    bar->addStretch(1);
+    bar->addWidget(csv);
+    bar->addWidget(png);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(m_grid, 1);
+    new QGridLayout(m_grid);
+    m_grid->layout()->setContentsMargins(0, 0, 0, 0);
+
+    connect(csv, &QPushButton::clicked, this, &ChartsPanel::exportCsvAs);
+    connect(png, &QPushButton::clicked, this, &ChartsPanel::exportPngAs);
+    connect(m_window, &QComboBox::currentIndexChanged, this, &ChartsPanel::refresh);
+    connect(context, &MachineContext::modelChanged, this, &ChartsPanel::rebuild);
+    connect(context->session(), &ControllerSession::statusChanged, this,
+            [this](const MachineStatus& s) {
+                if (m_context->isConnected())
+                    m_sampler->add(s, m_context->session()->pollRateHz());
+            });
+    m_timer->setInterval(250);
+    connect(m_timer, &QTimer::timeout, this, &ChartsPanel::refresh);
+    m_timer->start();
+    rebuild();
+}
+
+ChartsPanel::Plot ChartsPanel::makePlot(const QString& title, const QString& unit,
+                                        const QStringList& names)
+{
+    Plot plot;
+    plot.chart = new QChart;
+    plot.chart->setTitle(title);
+    plot.chart->setMargins(QMargins(4, 4, 4, 4));
+    plot.chart->legend()->setVisible(names.size() > 1);
+    plot.chart->legend()->setAlignment(Qt::AlignBottom);
+    plot.x = new QValueAxis;
+    plot.x->setTitleText(tr("time [s]"));
+    plot.x->setLabelFormat(QStringLiteral("%.0f"));
+    plot.y = new QValueAxis;
+    plot.y->setTitleText(unit);
+    plot.y->setLabelFormat(QStringLiteral("%.0f"));
+    plot.chart->addAxis(plot.x, Qt::AlignBottom);
+    plot.chart->addAxis(plot.y, Qt::AlignLeft);
+    for (const QString& name : names) {
+        auto* series = new QLineSeries;
+        series->setName(name);
+        plot.chart->addSeries(series);
+        series->attachAxis(plot.x);
+        series->attachAxis(plot.y);
+        series->setUseOpenGL(false);
+        plot.series << series;
+    }
+    plot.view = new QChartView(plot.chart, m_grid);
+    plot.view->setRenderHint(QPainter::Antialiasing);
+    plot.view->setMinimumSize(260, 180);
+    return plot;
+}
+
+void ChartsPanel::rebuild()
+{
+    for (const Plot& p : std::as_const(m_plots))
+        delete p.view; // owns its chart
+    m_plots.clear();
+    QStringList axes;
+    for (Axis a : m_context->axes())
+        axes << axisName(a);
+    m_plots << makePlot(tr("Position"), tr("steps"), axes);
+    m_plots << makePlot(tr("Commanded velocity"), tr("steps/s"), axes);
+    m_plots << makePlot(tr("Temperature"), tr("\u00b0C"), {tr("Temperature")});
+    m_plots << makePlot(tr("Poll rate"), tr("Hz"), {tr("Poll rate")});
+    auto* grid = static_cast<QGridLayout*>(m_grid->layout());
+    for (int i = 0; i < m_plots.size(); ++i)
+        grid->addWidget(m_plots[i].view, i / 2, i % 2);
+    m_sampler->clear();
+    refresh();
+}
+
+double ChartsPanel::windowSeconds() const
+{
+    return m_window->currentData().toDouble();
+}
+
+void ChartsPanel::fill(Plot& plot, const QVector<ChartSample>& samples,
+                       const std::function<double(const ChartSample&, int)>& value)
+{
+    double lo = qInf();
+    double hi = -qInf();
+    for (int i = 0; i < plot.series.size(); ++i) {
+        QList<QPointF> points;
+        points.reserve(samples.size());
+        for (const ChartSample& s : samples) {
+            const double v = value(s, i);
+            if (qIsNaN(v))
+                continue;
+            points << QPointF(s.t, v);
+            lo = qMin(lo, v);
+            hi = qMax(hi, v);
+        }
+        plot.series[i]->replace(points);
+    }
+    if (lo > hi) {
+        lo = 0;
+        hi = 1;
+    }
+    const double pad = qMax(1.0, (hi - lo) * 0.08);
+    plot.y->setRange(lo - pad, hi + pad);
+    const double end =
+        samples.isEmpty() ? windowSeconds() : qMax(samples.last().t, windowSeconds());
+    plot.x->setRange(end - windowSeconds(), end);
+}
+
+void ChartsPanel::refresh()
+{
+    if (m_pause->isChecked() || m_plots.size() < 4)
+        return;
+    m_shown = m_sampler->window(windowSeconds());
+    const QList<Axis> axes = m_context->axes();
+    fill(m_plots[0], m_shown,
+         [&](const ChartSample& s, int i) { return s.position.value(axes.value(i), qQNaN()); });
+    fill(m_plots[1], m_shown,
+         [&](const ChartSample& s, int i) { return s.velocity.value(axes.value(i), qQNaN()); });
+    fill(m_plots[2], m_shown, [](const ChartSample& s, int) { return s.temperature; });
+    fill(m_plots[3], m_shown, [](const ChartSample& s, int) { return s.pollRate; });
+}
+
+int ChartsPanel::pointCount(int chart) const
+{
+    if (chart < 0 || chart >= m_plots.size() || m_plots[chart].series.isEmpty())
+        return 0;
+    return int(m_plots[chart].series.first()->count());
+}
+
+bool ChartsPanel::exportCsv(const QString& path, QString* error) const
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    // The visible data: what the charts show now (frozen while paused).
+    file.write(ChartSampler::toCsv(m_shown, m_context->axes()).toUtf8());
+    return true;
+}
+
+bool ChartsPanel::exportPng(const QString& path, QString* error)
+{
+    if (!m_grid->grab().save(path, "PNG")) {
+        *error = tr("Cannot write %1").arg(path);
+        return false;
+    }
+    return true;
+}
+
+void ChartsPanel::exportCsvAs()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export CSV"), QStringLiteral("stepdeck-charts.csv"), tr("CSV files (*.csv)"));
+    QString error;
+    if (!path.isEmpty() && !exportCsv(path, &error))
+        QMessageBox::warning(this, tr("Export CSV"), error);
+}
+
+void ChartsPanel::exportPngAs()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export PNG"), QStringLiteral("stepdeck-charts.png"), tr("PNG images (*.png)"));
+    QString error;
+    if (!path.isEmpty() && !exportPng(path, &error))
+        QMessageBox::warning(this, tr("Export PNG"), error);
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,46 @@
+#pragma once
+#include "model/Axis.h"
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QFormLayout;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace stepdeck::ui {
+
+class GamepadJogSource;
+class LedIndicator;
+
+// Settings and live view of the physical gamepad: device and dead-man state, stick-to-axis
+// mapping with inversion, dead zone, calibration, and the raw stick positions.
+class GamepadPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit GamepadPanel(GamepadJogSource* source, QWidget* parent = nullptr);
+
+    QString deviceText() const;
+
+private:
+    void refresh();
+    void toggleCalibration();
+
+    GamepadJogSource* m_source;
+    QLabel* m_device;
+    LedIndicator* m_deadmanLed;
+    QCheckBox* m_enabled;
+    QSpinBox* m_deadman;
+    QSpinBox* m_deadZone;
+    QPushButton* m_calibrate;
+    QLabel* m_hint;
+    QMap<Axis, QComboBox*> m_binding;
+    QMap<Axis, QCheckBox*> m_invert;
+    QList<QProgressBar*> m_bars;
+    QFormLayout* m_rawForm;
+};
+
+} // namespace stepdeck::ui

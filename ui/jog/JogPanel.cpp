@@ -1,0 +1,200 @@
+#include "JogPanel.h"
+#include "jog/IncrementalJogWidget.h"
+#include "jog/JogController.h"
+#include "jog/JogSettingsWidget.h"
+#include "jog/JoystickPad.h"
+#include "jog/KeyboardJog.h"
+#include "main/MachineContext.h"
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSlider>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* keyboard,
+                   QWidget* parent)
+    : QWidget(parent), m_context(context), m_jog(jog), m_keyboard(keyboard),
+      m_xy(new JoystickPad(JoystickPad::Mode::TwoAxis, this)),
+      m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
+      m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
+      m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
+      m_keyboardCheck(new QCheckBox(tr("Keyboard jog (arrows, Page Up/Down)"), this)),
+      m_refusal(new QLabel(this)), m_refusalTimer(new QTimer(this)),
+      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
+      m_settings(new JogSettingsWidget(context, jog, keyboard, this))
+{
+    m_xy->setObjectName(QStringLiteral("jogPadXY"));
+    m_z->setObjectName(QStringLiteral("jogStickZ"));
+    m_u->setObjectName(QStringLiteral("jogStickU"));
+    m_xy->setToolTip(tr("Drag the knob to jog X and Y; speed follows the deflection. Release "
+                        "to stop (ramped)."));
+    m_z->setToolTip(tr("Drag to jog Z; release to stop (ramped)."));
+    m_u->setAxisLabels(QString(), QStringLiteral("U"));
+    m_u->setToolTip(tr("Drag to jog U; release to stop (ramped)."));
+    m_response = m_settings->response();
+    for (JoystickPad* pad : {m_xy, m_z, m_u}) {
+        pad->setDeadZone(m_response.deadZone);
+        connect(pad, &JoystickPad::deflectionChanged, this,
+                [this, pad](const QPointF& d) { onPad(pad, d); });
+    }
+
+    auto* layout = new QHBoxLayout(this);
+    auto* pads = new QHBoxLayout;
+    pads->addWidget(m_xy, 3);
+    pads->addWidget(m_z, 1);
+    pads->addWidget(m_u, 1);
+    layout->addLayout(pads, 3);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(buildSidePanel());
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setMinimumWidth(300);
+    layout->addWidget(scroll, 2);
+
+    connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {
+        m_response = r;
+        for (JoystickPad* pad : {m_xy, m_z, m_u})
+            pad->setDeadZone(r.deadZone);
+    });
+    connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
+    connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
+    connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);
+    m_refusalTimer->setSingleShot(true);
+    m_refusalTimer->setInterval(6000);
+    connect(m_refusalTimer, &QTimer::timeout, m_refusal, &QLabel::clear);
+    rebuild();
+}
+
+QWidget* JogPanel::buildSidePanel()
+{
+    auto* side = new QWidget(this);
+    auto* v = new QVBoxLayout(side);
+    v->setContentsMargins(0, 0, 0, 0);
+
+    auto* velocity = new QGroupBox(tr("Commanded jog velocity"), side);
+    velocity->setLayout(m_velocityGrid);
+    v->addWidget(velocity);
+
+    auto* speed = new QGroupBox(tr("Speed override"), side);
+    auto* sv = new QHBoxLayout(speed);
+    m_override->setRange(1, 100);
+    m_override->setValue(QSettings().value(QStringLiteral("jog/override"), 100).toInt());
+    m_override->setFocusPolicy(Qt::NoFocus);
+    m_override->setToolTip(tr("Scales every jog speed (pad, keyboard, gamepad)"));
+    m_overrideValue->setMinimumWidth(48);
+    m_overrideValue->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    sv->addWidget(m_override, 1);
+    sv->addWidget(m_overrideValue);
+    auto applyOverride = [this](int percent) {
+        m_overrideValue->setText(QStringLiteral("%1 %").arg(percent));
+        m_jog->setOverride(percent / 100.0);
+        QSettings().setValue(QStringLiteral("jog/override"), percent);
+    };
+    connect(m_override, &QSlider::valueChanged, this, applyOverride);
+    applyOverride(m_override->value());
+    v->addWidget(speed);
+
+    m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
+    m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
+                                   "active and no text field has the focus"));
+    connect(m_keyboardCheck, &QCheckBox::toggled, m_keyboard, &KeyboardJog::setEnabled);
+    v->addWidget(m_keyboardCheck);
+
+    m_refusal->setObjectName(QStringLiteral("jogRefusal"));
+    m_refusal->setWordWrap(true);
+    m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
+    v->addWidget(m_refusal);
+    v->addWidget(m_incremental);
+    v->addWidget(m_settings);
+    v->addStretch(1);
+    return side;
+}
+
+void JogPanel::rebuild()
+{
+    releaseAll();
+    const QList<Axis> axes = m_context->axes();
+    m_xy->setVisible(axes.contains(Axis::X) || axes.isEmpty());
+    m_xy->setAxisLabels(QStringLiteral("X"),
+                        axes.contains(Axis::Y) || axes.isEmpty() ? QStringLiteral("Y") : QString());
+    m_z->setVisible(axes.contains(Axis::Z));
+    m_u->setVisible(axes.contains(Axis::U));
+
+    while (QLayoutItem* item = m_velocityGrid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_velocity.clear();
+    int row = 0;
+    for (Axis axis : axes) {
+        auto* name = new QLabel(axisName(axis));
+        QFont bold = name->font();
+        bold.setBold(true);
+        name->setFont(bold);
+        auto* value = new QLabel(QStringLiteral("0"));
+        value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        QFont mono(QStringLiteral("monospace"));
+        mono.setStyleHint(QFont::Monospace);
+        mono.setPointSizeF(bold.pointSizeF() * 1.3);
+        value->setFont(mono);
+        value->setMinimumWidth(90);
+        m_velocityGrid->addWidget(name, row, 0);
+        m_velocityGrid->addWidget(value, row, 1);
+        m_velocityGrid->addWidget(new QLabel(tr("steps/s")), row, 2);
+        m_velocity.insert(axis, value);
+        ++row;
+    }
+}
+
+void JogPanel::releaseAll()
+{
+    for (JoystickPad* pad : {m_xy, m_z, m_u})
+        pad->recenter();
+    m_keyboard->releaseAll();
+    m_jog->releaseAll();
+}
+
+void JogPanel::onPad(JoystickPad* pad, const QPointF& d)
+{
+    AxisVelocities fractions;
+    if (pad == m_xy) {
+        fractions.insert(Axis::X, m_response.apply(d.x()));
+        fractions.insert(Axis::Y, m_response.apply(d.y()));
+    } else {
+        fractions.insert(pad == m_z ? Axis::Z : Axis::U, m_response.apply(d.y()));
+    }
+    m_jog->setDeflection(pad, fractions);
+}
+
+void JogPanel::onStatus(const MachineStatus& status)
+{
+    auto fraction = [&](Axis axis) {
+        const double max = m_jog->maxSpeed(axis);
+        return max > 0 ? status.axes.value(axis).commandedVelocity / max : 0.0;
+    };
+    for (auto it = m_velocity.cbegin(); it != m_velocity.cend(); ++it) {
+        const double v = status.axes.value(it.key()).commandedVelocity;
+        it.value()->setText(QString::asprintf("%+.0f", v));
+    }
+    m_xy->setVelocityHint(QPointF(fraction(Axis::X), fraction(Axis::Y)));
+    m_z->setVelocityHint(QPointF(0, fraction(Axis::Z)));
+    m_u->setVelocityHint(QPointF(0, fraction(Axis::U)));
+    m_xy->setLimitActive(0, status.axes.value(Axis::X).limitSwitch);
+    m_xy->setLimitActive(1, status.axes.value(Axis::Y).limitSwitch);
+    m_z->setLimitActive(1, status.axes.value(Axis::Z).limitSwitch);
+    m_u->setLimitActive(1, status.axes.value(Axis::U).limitSwitch);
+}
+
+void JogPanel::showRefusal(const QString& reason)
+{
+    m_refusal->setText(reason);
+    m_refusalTimer->start();
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,66 @@
+#pragma once
+#include "jog/JogResponse.h"
+#include "model/MachineStatus.h"
+#include <QWidget>
+
+class QCheckBox;
+class QGridLayout;
+class QLabel;
+class QSlider;
+class QTimer;
+
+namespace stepdeck::ui {
+
+class IncrementalJogWidget;
+class JogController;
+class JogSettingsWidget;
+class JoystickPad;
+class KeyboardJog;
+class MachineContext;
+
+// The operator's main tool: the X/Y pad, Z (and U) sticks, incremental jog, keyboard jog,
+// speed override, the live commanded velocity per axis and why a jog was refused.
+class JogPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    JogPanel(MachineContext* context, JogController* jog, KeyboardJog* keyboard,
+             QWidget* parent = nullptr);
+
+    JoystickPad* xyPad() const { return m_xy; }
+    JoystickPad* zStick() const { return m_z; }
+    JoystickPad* uStick() const { return m_u; }
+    QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
+    QSlider* overrideSlider() const { return m_override; }
+    QLabel* refusalLabel() const { return m_refusal; }
+    IncrementalJogWidget* incremental() const { return m_incremental; }
+
+public Q_SLOTS:
+    void releaseAll(); // pads back to centre and every jog input released
+
+private:
+    QWidget* buildSidePanel();
+    void rebuild();
+    void onPad(JoystickPad* pad, const QPointF& deflection);
+    void onStatus(const MachineStatus& status);
+    void showRefusal(const QString& reason);
+
+    MachineContext* m_context;
+    JogController* m_jog;
+    KeyboardJog* m_keyboard;
+    JogResponse m_response;
+    JoystickPad* m_xy;
+    JoystickPad* m_z;
+    JoystickPad* m_u;
+    QSlider* m_override;
+    QLabel* m_overrideValue;
+    QCheckBox* m_keyboardCheck;
+    QLabel* m_refusal;
+    QTimer* m_refusalTimer;
+    QGridLayout* m_velocityGrid;
+    QMap<Axis, QLabel*> m_velocity;
+    IncrementalJogWidget* m_incremental;
+    JogSettingsWidget* m_settings;
+};
+
+} // namespace stepdeck::ui

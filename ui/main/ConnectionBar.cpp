@@ -1,0 +1,201 @@
+#include "ConnectionBar.h"
+#include "common/LedIndicator.h"
+#include "main/MachineContext.h"
+#include "main/PortScanner.h"
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+
+namespace stepdeck::ui {
+
+namespace {
+const QString kSim = QStringLiteral("sim");
+}
+
+ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_scanner(new PortScanner(this)),
+      m_model(new QComboBox(this)), m_port(new QComboBox(this)), m_interval(new QSpinBox(this)),
+      m_connect(new QPushButton(tr("Connect"), this)), m_link(new LedIndicator({}, this)),
+      m_rate(new QLabel(this))
+{
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    for (const ModelInfo& model : models())
+        m_model->addItem(model.displayName, model.id);
+    m_model->setToolTip(tr("Controller model"));
+    m_port->setEditable(true);
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setMinimumContentsLength(28);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setToolTip(tr("Serial port, the in-process simulator, tcp://HOST:PORT for a serial "
+                          "device server, or a device path such as /dev/pts/3"));
+    m_port->lineEdit()->setPlaceholderText(tr("port, tcp://host:port or path"));
+    m_interval->setRange(10, 2000);
+    m_interval->setSuffix(tr(" ms"));
+    m_interval->setToolTip(tr("Status poll interval"));
+    m_interval->setValue(QSettings().value(QStringLiteral("connection/pollMs"), 50).toInt());
+    m_connect->setMinimumWidth(110);
+    m_rate->setMinimumWidth(70);
+    m_rate->setToolTip(tr("Achieved status poll rate"));
+
+    layout->addWidget(new QLabel(tr("Model:"), this));
+    layout->addWidget(m_model);
+    layout->addSpacing(8);
+    layout->addWidget(new QLabel(tr("Port:"), this));
+    layout->addWidget(m_port, 1);
+    layout->addWidget(new QLabel(tr("Poll:"), this));
+    layout->addWidget(m_interval);
+    layout->addWidget(m_connect);
+    layout->addSpacing(8);
+    layout->addWidget(m_link);
+    layout->addWidget(m_rate);
+
+    fillPorts();
+    const QSettings settings;
+    setSelectedModel(settings
+                         .value(QStringLiteral("connection/model"),
+                                models().isEmpty() ? QString() : models().first().id)
+                         .toString());
+    setPortSpec(settings.value(QStringLiteral("connection/port"), kSim).toString());
+    m_context->selectModel(selectedModelId());
+
+    connect(m_scanner, &PortScanner::portsChanged, this, &ConnectionBar::fillPorts);
+    connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::toggleConnection);
+    connect(m_port->lineEdit(), &QLineEdit::returnPressed, this, &ConnectionBar::connectNow);
+    connect(m_model, &QComboBox::currentIndexChanged, this,
+            [this] { m_context->selectModel(selectedModelId()); });
+    connect(m_interval, &QSpinBox::valueChanged, this, [this](int ms) {
+        QSettings().setValue(QStringLiteral("connection/pollMs"), ms);
+        m_context->session()->setPollInterval(ms);
+    });
+    ControllerSession* session = m_context->session();
+    connect(session, &ControllerSession::linkStateChanged, this, &ConnectionBar::onLinkState);
+    connect(session, &ControllerSession::pollRateChanged, this, &ConnectionBar::onPollRate);
+    onLinkState(LinkState::Disconnected, {});
+}
+
+QString ConnectionBar::portSpec() const
+{
+    const QString text = m_port->currentText().trimmed();
+    const int index = m_port->findText(text);
+    if (index >= 0)
+        return m_port->itemData(index).toString();
+    if (text.compare(kSim, Qt::CaseInsensitive) == 0)
+        return kSim;
+    return text;
+}
+
+void ConnectionBar::setPortSpec(const QString& spec)
+{
+    const int index = m_port->findData(spec);
+    if (index >= 0)
+        m_port->setCurrentIndex(index);
+    else
+        m_port->setEditText(spec);
+}
+
+QString ConnectionBar::selectedModelId() const
+{
+    return m_model->currentData().toString();
+}
+
+void ConnectionBar::setSelectedModel(const QString& modelId)
+{
+    const int index = m_model->findData(modelId);
+    if (index >= 0)
+        m_model->setCurrentIndex(index);
+}
+
+void ConnectionBar::fillPorts()
+{
+    // Keep what the operator selected or typed across rescans.
+    const QString keep = m_port->count() ? portSpec() : QString();
+    const bool typed = !keep.isEmpty() && m_port->findData(keep) < 0;
+    const QString typedText = m_port->currentText();
+    m_port->blockSignals(true);
+    m_port->clear();
+    m_port->addItem(tr("Simulator (in-process)"), kSim);
+    for (const PortEntry& entry : m_scanner->ports())
+        m_port->addItem(entry.label, entry.path);
+    m_port->blockSignals(false);
+    if (typed)
+        m_port->setEditText(typedText);
+    else if (!keep.isEmpty())
+        setPortSpec(keep);
+}
+
+void ConnectionBar::toggleConnection()
+{
+    const LinkState state = m_context->session()->linkState();
+    if (m_context->session()->isCreated() &&
+        (state == LinkState::Connected || state == LinkState::Connecting))
+        disconnectNow();
+    else
+        connectNow();
+}
+
+void ConnectionBar::connectNow()
+{
+    const QString port = portSpec();
+    if (port.isEmpty()) {
+        Q_EMIT connectionFailed(tr("Choose a port first."));
+        return;
+    }
+    ConnectionSpec spec;
+    spec.modelId = selectedModelId();
+    spec.port = port;
+    spec.options.pollIntervalMs = m_interval->value();
+    QString error;
+    if (!m_context->connectTo(spec, &error)) {
+        Q_EMIT connectionFailed(error);
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("connection/model"), spec.modelId);
+    settings.setValue(QStringLiteral("connection/port"), spec.port);
+}
+
+void ConnectionBar::disconnectNow()
+{
+    m_context->disconnectFromController();
+}
+
+void ConnectionBar::onLinkState(LinkState state, const QString& reason)
+{
+    const bool busy = state == LinkState::Connected || state == LinkState::Connecting;
+    m_connect->setText(busy ? tr("Disconnect") : tr("Connect"));
+    m_model->setEnabled(!busy);
+    m_port->setEnabled(!busy);
+    switch (state) {
+    case LinkState::Disconnected:
+        m_link->setState(LedIndicator::State::Off);
+        m_link->setText(tr("Disconnected"));
+        break;
+    case LinkState::Connecting:
+        m_link->setState(LedIndicator::State::Warning);
+        m_link->setText(tr("Connecting"));
+        break;
+    case LinkState::Connected:
+        m_link->setState(LedIndicator::State::On);
+        m_link->setText(tr("Connected"));
+        break;
+    case LinkState::Lost:
+        m_link->setState(LedIndicator::State::Fault);
+        m_link->setText(tr("Link lost"));
+        break;
+    }
+    m_link->setToolTip(reason);
+    if (!busy)
+        m_rate->setText(tr("\u2013 Hz"));
+}
+
+void ConnectionBar::onPollRate(double hz)
+{
+    m_rate->setText(tr("%1 Hz").arg(hz, 0, 'f', 1));
+}
+
+} // namespace stepdeck::ui

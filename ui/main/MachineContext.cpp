@@ -1,0 +1,132 @@
+#include "MachineContext.h"
+#include <QSettings>
+
+namespace stepdeck::ui {
+
+MachineContext::MachineContext(QObject* parent)
+    : QObject(parent), m_session(new ControllerSession(this))
+{}
+
+MachineContext::~MachineContext()
+{
+    m_session->destroy();
+}
+
+Capabilities MachineContext::capabilities() const
+{
+    return m_model ? m_model->capabilities : Capabilities{};
+}
+
+QList<Axis> MachineContext::axes() const
+{
+    return capabilities().axes;
+}
+
+ParameterSchema MachineContext::schema() const
+{
+    return m_model ? m_model->schema : ParameterSchema{};
+}
+
+QString MachineContext::modelId() const
+{
+    return m_model ? m_model->id : QString();
+}
+
+bool MachineContext::isConnected() const
+{
+    return m_session->isCreated() && m_session->linkState() == LinkState::Connected;
+}
+
+void MachineContext::selectModel(const QString& modelId)
+{
+    const ModelInfo* model = findModel(modelId);
+    if (model == m_model)
+        return;
+    if (m_session->isCreated())
+        m_session->destroy();
+    m_model = model;
+    loadUnits();
+    Q_EMIT modelChanged();
+}
+
+bool MachineContext::connectTo(const ConnectionSpec& spec, QString* error)
+{
+    const ModelInfo* before = m_model;
+    if (!m_session->create(spec, error))
+        return false;
+    m_model = m_session->model();
+    m_port = spec.port;
+    if (m_model != before) {
+        loadUnits();
+        Q_EMIT modelChanged();
+    }
+    m_session->open();
+    return true;
+}
+
+void MachineContext::disconnectFromController()
+{
+    if (m_session->isCreated())
+        m_session->close();
+}
+
+void MachineContext::stop()
+{
+    m_session->stop();
+}
+
+void MachineContext::panic()
+{
+    m_session->panic();
+    Q_EMIT panicTriggered();
+}
+
+QString MachineContext::settingsPrefix(Axis axis) const
+{
+    return QStringLiteral("units/%1/%2/").arg(modelId(), axisName(axis));
+}
+
+void MachineContext::loadUnits()
+{
+    m_units.clear();
+    QSettings settings;
+    for (Axis axis : axes()) {
+        AxisUnits u;
+        const QString p = settingsPrefix(axis);
+        u.stepsPerUnit = settings.value(p + QStringLiteral("stepsPerUnit"), 0.0).toDouble();
+        u.unit = settings.value(p + QStringLiteral("unit"), QStringLiteral("mm")).toString();
+        u.workOffset = settings.value(p + QStringLiteral("workOffset"), 0).toLongLong();
+        m_units.insert(axis, u);
+    }
+}
+
+AxisUnits MachineContext::units(Axis axis) const
+{
+    return m_units.value(axis);
+}
+
+void MachineContext::setUnits(Axis axis, const AxisUnits& units)
+{
+    m_units.insert(axis, units);
+    QSettings settings;
+    const QString p = settingsPrefix(axis);
+    settings.setValue(p + QStringLiteral("stepsPerUnit"), units.stepsPerUnit);
+    settings.setValue(p + QStringLiteral("unit"), units.unit);
+    settings.setValue(p + QStringLiteral("workOffset"), units.workOffset);
+    Q_EMIT unitsChanged();
+}
+
+double MachineContext::toUserUnits(Axis axis, qint64 machineSteps) const
+{
+    const AxisUnits u = units(axis);
+    const qint64 work = machineSteps - u.workOffset;
+    return u.stepsPerUnit > 0 ? double(work) / u.stepsPerUnit : double(work);
+}
+
+QString MachineContext::unitName(Axis axis) const
+{
+    const AxisUnits u = units(axis);
+    return u.stepsPerUnit > 0 ? u.unit : tr("steps");
+}
+
+} // namespace stepdeck::ui

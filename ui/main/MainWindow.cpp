@@ -1,0 +1,351 @@
+#include "MainWindow.h"
+#include "charts/ChartsPanel.h"
+#include "console/TrafficConsole.h"
+#include "gamepad/GamepadDevice.h"
+#include "gamepad/GamepadJogSource.h"
+#include "gamepad/GamepadPanel.h"
+#include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/KeyboardJog.h"
+#include "main/ConnectionBar.h"
+#include "main/MachineContext.h"
+#include "main/SafetyBar.h"
+#include "main/Translations.h"
+#include "position/PositionPanel.h"
+#include "position/ReferencePanel.h"
+#include "setup/SetupPage.h"
+#include "status/StatusPanel.h"
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
+    : QMainWindow(parent), m_context(new MachineContext(this)),
+      m_jog(new JogController(m_context, this)), m_keyboard(new KeyboardJog(this, this)),
+      m_connection(new ConnectionBar(m_context, this)), m_linkLabel(new QLabel(this)),
+      m_errorLabel(new QLabel(this))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    m_jog->addSource(m_keyboard);
+    if (!gamepad)
+        gamepad = createSystemGamepadDevice(this);
+    else if (!gamepad->parent())
+        gamepad->setParent(this);
+    m_gamepadSource = new GamepadJogSource(gamepad, this);
+    m_gamepadSource->loadSettings();
+    m_jog->addSource(m_gamepadSource);
+    buildActions();
+
+    auto* toolbar = addToolBar(tr("Connection"));
+    toolbar->setObjectName(QStringLiteral("connectionToolbar"));
+    toolbar->addWidget(m_connection);
+    toolbar->setMovable(false);
+
+    auto* central = new QWidget(this);
+    auto* v = new QVBoxLayout(central);
+    v->setContentsMargins(4, 4, 4, 4);
+    m_safety = new SafetyBar(m_context, m_stopAction, m_panicAction, m_referenceAction, central);
+    m_jogPanel = new JogPanel(m_context, m_jog, m_keyboard, central);
+    v->addWidget(m_safety);
+    v->addWidget(m_jogPanel, 1);
+    setCentralWidget(central);
+
+    buildDocks();
+    buildMenus();
+
+    m_errorLabel->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
+    statusBar()->addWidget(m_errorLabel, 1);
+    statusBar()->addPermanentWidget(m_linkLabel);
+
+    ControllerSession* session = m_context->session();
+    connect(session, &ControllerSession::linkStateChanged, this, &MainWindow::onLinkState);
+    connect(session, &ControllerSession::errorOccurred, this, &MainWindow::showError);
+    connect(session, &ControllerSession::requestFinished, this, &MainWindow::onResult);
+    connect(session, &ControllerSession::jogRefused, this, &MainWindow::showError);
+    connect(m_connection, &ConnectionBar::connectionFailed, this, &MainWindow::showError);
+    connect(m_setup, &SetupPage::message, statusBar(),
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
+    connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
+            &QAction::setChecked);
+
+    resize(1600, 1000);
+    m_defaultState = saveState();
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    onLinkState(LinkState::Disconnected, {});
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildActions()
+{
+    m_stopAction = new QAction(tr("&Stop"), this);
+    m_stopAction->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_stopAction->setShortcutContext(Qt::ApplicationShortcut);
+    m_stopAction->setToolTip(tr("Ramped stop of all motion (Esc)"));
+    connect(m_stopAction, &QAction::triggered, this, &MainWindow::stopAll);
+    addAction(m_stopAction);
+
+    m_panicAction = new QAction(tr("&Panic stop"), this);
+    m_panicAction->setShortcut(QKeySequence(Qt::Key_F1));
+    m_panicAction->setShortcutContext(Qt::ApplicationShortcut);
+    m_panicAction->setToolTip(tr("Immediate stop without ramp (F1); positions are lost"));
+    connect(m_panicAction, &QAction::triggered, this, &MainWindow::panicAll);
+    addAction(m_panicAction);
+
+    m_referenceAction = new QAction(tr("&Reference all"), this);
+    m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
+    m_connectAction = new QAction(tr("&Connect / Disconnect"), this);
+    m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    connect(m_connectAction, &QAction::triggered, m_connection, &ConnectionBar::toggleConnection);
+    m_resetAction = new QAction(tr("Reset &controller"), this);
+    connect(m_resetAction, &QAction::triggered, this, [this] {
+        m_jogPanel->releaseAll();
+        m_context->session()->reset();
+    });
+    m_keyboardAction = new QAction(tr("&Keyboard jog"), this);
+    m_keyboardAction->setCheckable(true);
+    m_keyboardAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_J));
+    addAction(m_keyboardAction);
+}
+
+void MainWindow::buildDocks()
+{
+    m_position = new PositionPanel(m_context, this);
+    m_reference = new ReferencePanel(m_context, this);
+    m_status = new StatusPanel(m_context, this);
+    m_setup = new SetupPage(m_context, this);
+    m_console = new TrafficConsole(m_context, this);
+    m_charts = new ChartsPanel(m_context, this);
+    m_gamepad = new GamepadPanel(m_gamepadSource, this);
+    connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);
+    connect(m_keyboardAction, &QAction::toggled, m_jogPanel->keyboardCheck(),
+            &QCheckBox::setChecked);
+
+    addDock(m_position, tr("Position"), QStringLiteral("positionDock"), Qt::LeftDockWidgetArea);
+    addDock(m_reference, tr("Referencing"), QStringLiteral("referenceDock"),
+            Qt::LeftDockWidgetArea);
+    QDockWidget* status =
+        addDock(m_status, tr("Status"), QStringLiteral("statusDock"), Qt::RightDockWidgetArea);
+    QDockWidget* pad =
+        addDock(m_gamepad, tr("Gamepad"), QStringLiteral("gamepadDock"), Qt::RightDockWidgetArea);
+    tabifyDockWidget(status, pad);
+    status->raise();
+    QDockWidget* setup =
+        addDock(m_setup, tr("Setup"), QStringLiteral("setupDock"), Qt::BottomDockWidgetArea);
+    QDockWidget* traffic =
+        addDock(m_console, tr("Traffic"), QStringLiteral("trafficDock"), Qt::BottomDockWidgetArea);
+    QDockWidget* charts =
+        addDock(m_charts, tr("Charts"), QStringLiteral("chartsDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(setup, traffic);
+    tabifyDockWidget(traffic, charts);
+    setup->raise();
+    resizeDocks({setup}, {330}, Qt::Vertical);
+    resizeDocks({m_docks.at(0), status}, {400, 390}, Qt::Horizontal);
+    setDockNestingEnabled(true);
+}
+
+QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,
+                                 Qt::DockWidgetArea area)
+{
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    m_docks << dock;
+    return dock;
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_connectAction);
+    file->addSeparator();
+    file->addAction(tr("&Load parameters\u2026"), m_setup, &SetupPage::load);
+    file->addAction(tr("&Save parameters\u2026"), m_setup, &SetupPage::saveAs);
+    file->addAction(tr("Save &traffic\u2026"), m_console, &TrafficConsole::saveAs);
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* machine = menuBar()->addMenu(tr("&Machine"));
+    machine->addAction(m_stopAction);
+    machine->addAction(m_panicAction);
+    machine->addSeparator();
+    machine->addAction(m_referenceAction);
+    machine->addAction(m_keyboardAction);
+    QAction* refresh = machine->addAction(tr("Refresh &status"), this,
+                                          [this] { m_context->session()->refreshStatus(); });
+    refresh->setShortcut(QKeySequence::Refresh);
+    machine->addAction(m_resetAction);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* dock : std::as_const(m_docks))
+        m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(tr("Reset &layout"), this, &MainWindow::resetLayout);
+    QMenu* language = m_viewMenu->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(language);
+    const QString current = translations::configured();
+    QStringList codes{QString()};
+    codes << translations::available();
+    for (const QString& code : codes) {
+        QAction* a = language->addAction(code.isEmpty() ? tr("System default")
+                                                        : translations::languageName(code));
+        a->setCheckable(true);
+        a->setChecked(code == current);
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] {
+            translations::setConfigured(code);
+            QMessageBox::information(this, tr("Language"),
+                                     tr("The language changes when StepDeck is started again."));
+        });
+    }
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About StepDeck"), this, [this] {
+        QMessageBox::about(this, tr("About StepDeck"),
+                           tr("<b>StepDeck</b> %1<br>Operator and technician software for "
+                              "stepper-motor controllers.<br><br>Esc: ramped stop of all "
+                              "motion<br>F1: panic stop (positions are lost)")
+                               .arg(QApplication::applicationVersion()));
+    });
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+QList<QPair<QString, QWidget*>> MainWindow::pages() const
+{
+    QList<QPair<QString, QWidget*>> out{{QStringLiteral("jog"), m_jogPanel}};
+    for (QDockWidget* dock : m_docks) {
+        QString stem = dock->objectName();
+        stem.chop(4); // "Dock"
+        out.append({stem, dock->widget()});
+    }
+    return out;
+}
+
+void MainWindow::raisePage(QWidget* page)
+{
+    for (QDockWidget* dock : std::as_const(m_docks)) {
+        if (dock->widget() == page) {
+            dock->show();
+            dock->raise();
+        }
+    }
+}
+
+void MainWindow::stopAll()
+{
+    m_jogPanel->releaseAll();
+    if (!m_context->session()->isCreated()) {
+        showError(tr("Stop: not connected"));
+        return;
+    }
+    m_context->stop();
+    statusBar()->showMessage(tr("Stop sent"), 3000);
+}
+
+void MainWindow::panicAll()
+{
+    m_jogPanel->releaseAll();
+    if (!m_context->session()->isCreated()) {
+        showError(tr("Panic: not connected"));
+        return;
+    }
+    m_context->panic();
+    showError(tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
+}
+
+void MainWindow::showError(const QString& message)
+{
+    m_lastError = message;
+    m_errorLabel->setText(QStringLiteral("%1  %2").arg(
+        QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), message));
+    m_errorLabel->setToolTip(message);
+}
+
+void MainWindow::onResult(const CommandResult& result)
+{
+    if (!result.ok() && result.error != ErrorKind::Cancelled)
+        showError(result.message);
+}
+
+void MainWindow::onLinkState(LinkState state, const QString& reason)
+{
+    switch (state) {
+    case LinkState::Disconnected:
+        m_linkLabel->setText(tr("Disconnected"));
+        break;
+    case LinkState::Connecting:
+        m_linkLabel->setText(tr("Connecting\u2026"));
+        break;
+    case LinkState::Connected:
+        m_linkLabel->setText(tr("Connected"));
+        break;
+    case LinkState::Lost:
+        m_linkLabel->setText(tr("Link lost"));
+        break;
+    }
+    if (state != LinkState::Connected)
+        m_jogPanel->releaseAll();
+    if (!reason.isEmpty() && state != LinkState::Connected)
+        showError(reason);
+    updateTitle();
+}
+
+void MainWindow::updateTitle()
+{
+    const ModelInfo* model = m_context->model();
+    QString title = QStringLiteral("StepDeck");
+    if (model)
+        title += QStringLiteral(" \u2014 ") + model->displayName;
+    if (m_context->session()->isCreated()) {
+        const QString port =
+            m_context->portName() == QLatin1String("sim") ? tr("simulator") : m_context->portName();
+        title += QStringLiteral(" @ ") + port;
+    }
+    setWindowTitle(title);
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState);
+    for (QDockWidget* dock : std::as_const(m_docks))
+        dock->show();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    m_jogPanel->releaseAll();
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::changeEvent(QEvent* event)
+{
+    // Deactivating the window ends every jog at once: the key-up or mouse release would go to
+    // another window and the axis would keep running until the lease expires.
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+        m_jogPanel->releaseAll();
+    QMainWindow::changeEvent(event);
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,109 @@
+#pragma once
+#include "controller/ControllerSession.h"
+#include <QMainWindow>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+
+namespace stepdeck::ui {
+
+class ChartsPanel;
+class ConnectionBar;
+class GamepadDevice;
+class GamepadJogSource;
+class GamepadPanel;
+class JogController;
+class JogPanel;
+class KeyboardJog;
+class MachineContext;
+class PositionPanel;
+class ReferencePanel;
+class SafetyBar;
+class SetupPage;
+class StatusPanel;
+class TrafficConsole;
+
+// The main window: connection bar, STOP/PANIC and the jog panel in the centre (always
+// visible), and docks for position, referencing, status, setup, traffic and charts.
+// Esc (STOP) and F1 (PANIC) are application-wide shortcuts: they work whatever has focus.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    // gamepad: the physical jog device; nullptr = the system's (SDL2). Tests pass a fake.
+    explicit MainWindow(GamepadDevice* gamepad = nullptr, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    MachineContext* context() const { return m_context; }
+    ConnectionBar* connectionBar() const { return m_connection; }
+    SafetyBar* safetyBar() const { return m_safety; }
+    JogPanel* jogPanel() const { return m_jogPanel; }
+    JogController* jogController() const { return m_jog; }
+    KeyboardJog* keyboardJog() const { return m_keyboard; }
+    PositionPanel* positionPanel() const { return m_position; }
+    ReferencePanel* referencePanel() const { return m_reference; }
+    StatusPanel* statusPanel() const { return m_status; }
+    SetupPage* setupPage() const { return m_setup; }
+    TrafficConsole* trafficConsole() const { return m_console; }
+    ChartsPanel* chartsPanel() const { return m_charts; }
+    GamepadPanel* gamepadPanel() const { return m_gamepad; }
+    GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
+    QAction* stopAction() const { return m_stopAction; }
+    QAction* panicAction() const { return m_panicAction; }
+    QString lastError() const { return m_lastError; }
+
+    // Pages for --screenshot: a file stem and the dock (or central widget) that shows it.
+    QList<QPair<QString, QWidget*>> pages() const;
+    void raisePage(QWidget* page);
+
+public Q_SLOTS:
+    void stopAll();
+    void panicAll();
+    void showError(const QString& message);
+    void resetLayout();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    void buildActions();
+    void buildMenus();
+    void buildDocks();
+    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area);
+    void updateTitle();
+    void onLinkState(LinkState state, const QString& reason);
+    void onResult(const CommandResult& result);
+
+    MachineContext* m_context;
+    JogController* m_jog;
+    KeyboardJog* m_keyboard;
+    ConnectionBar* m_connection;
+    SafetyBar* m_safety = nullptr;
+    JogPanel* m_jogPanel = nullptr;
+    PositionPanel* m_position = nullptr;
+    ReferencePanel* m_reference = nullptr;
+    StatusPanel* m_status = nullptr;
+    SetupPage* m_setup = nullptr;
+    TrafficConsole* m_console = nullptr;
+    ChartsPanel* m_charts = nullptr;
+    GamepadPanel* m_gamepad = nullptr;
+    GamepadJogSource* m_gamepadSource = nullptr;
+    QList<QDockWidget*> m_docks;
+    QMenu* m_viewMenu = nullptr;
+    QAction* m_connectAction = nullptr;
+    QAction* m_stopAction = nullptr;
+    QAction* m_panicAction = nullptr;
+    QAction* m_referenceAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QAction* m_keyboardAction = nullptr;
+    QLabel* m_linkLabel;
+    QLabel* m_errorLabel;
+    QString m_lastError;
+    QByteArray m_defaultState;
+};
+
+} // namespace stepdeck::ui

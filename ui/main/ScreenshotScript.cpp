@@ -1,0 +1,96 @@
+#include "ScreenshotScript.h"
+#include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
+#include "main/MachineContext.h"
+#include "main/MainWindow.h"
+#include "position/ReferencePanel.h"
+#include "setup/SetupPage.h"
+#include <QDateTime>
+#include <QDir>
+#include <QTextStream>
+
+namespace stepdeck::ui {
+
+ScreenshotScript::ScreenshotScript(MainWindow* window, const QString& directory, QObject* parent)
+    : QObject(parent), m_window(window), m_directory(directory)
+{
+    m_poll.setInterval(50);
+    connect(&m_poll, &QTimer::timeout, this, &ScreenshotScript::step);
+}
+
+void ScreenshotScript::waitFor(std::function<bool()> condition, int timeoutMs,
+                               std::function<void()> next)
+{
+    m_condition = std::move(condition);
+    m_next = std::move(next);
+    m_deadline = QDateTime::currentMSecsSinceEpoch() + timeoutMs;
+    m_poll.start();
+}
+
+void ScreenshotScript::step()
+{
+    if (!m_condition() && QDateTime::currentMSecsSinceEpoch() < m_deadline)
+        return;
+    m_poll.stop();
+    auto next = std::move(m_next);
+    next();
+}
+
+void ScreenshotScript::start()
+{
+    MachineContext* context = m_window->context();
+    auto connected = [context] { return context->isConnected(); };
+    auto never = [] { return false; };
+    waitFor(connected, 5000, [=] {
+        if (!context->isConnected()) {
+            QTextStream(stderr) << "screenshot: the simulator did not connect\n";
+            Q_EMIT finished(1);
+            return;
+        }
+        m_window->setupPage()->write(false);
+        waitFor(never, 800, [=] {
+            m_window->referencePanel()->referenceAll();
+            auto referenced = [context] {
+                const MachineStatus& s = context->status();
+                bool all = !s.axes.isEmpty();
+                for (const AxisStatus& a : s.axes)
+                    all = all && a.referenced;
+                return all;
+            };
+            waitFor(referenced, 40000, [=] {
+                // A diagonal jog so the pad, velocities and charts show motion.
+                JoystickPad* pad = m_window->jogPanel()->xyPad();
+                m_window->jogController()->setDeflection(pad, {{Axis::X, 0.6}, {Axis::Y, 0.35}});
+                pad->setVelocityHint(QPointF(0.6, 0.35));
+                waitFor(never, 2500, [=] {
+                    const bool ok = capture();
+                    m_window->jogController()->releaseAll();
+                    waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
+                });
+            });
+        });
+    });
+}
+
+bool ScreenshotScript::capture()
+{
+    m_window->resize(1600, 1000);
+    QCoreApplication::processEvents();
+    QDir dir(m_directory);
+    if (!dir.mkpath(QStringLiteral("."))) {
+        QTextStream(stderr) << "screenshot: cannot create " << m_directory << "\n";
+        return false;
+    }
+    bool ok = m_window->grab().save(dir.filePath(QStringLiteral("main.png")));
+    for (const auto& [stem, page] : m_window->pages()) {
+        m_window->raisePage(page);
+        QCoreApplication::processEvents();
+        ok = m_window->grab().save(dir.filePath(QStringLiteral("window-%1.png").arg(stem))) && ok;
+        ok = page->grab().save(dir.filePath(QStringLiteral("%1.png").arg(stem))) && ok;
+    }
+    QTextStream(stdout) << "screenshots written to " << dir.absolutePath() << "\n";
+    return ok;
+}
+
+} // namespace stepdeck::ui

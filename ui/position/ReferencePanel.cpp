@@ -1,0 +1,203 @@
+#include "ReferencePanel.h"
+#include "common/LedIndicator.h"
+#include "main/MachineContext.h"
+#include "position/ReferenceRunner.h"
+#include <QComboBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+
+namespace stepdeck::ui {
+
+namespace {
+// Default: Z first (clear the work piece), then X and Y together, each towards the negative
+// end where most small machines have their home switches. Both are configurable per axis.
+int defaultDirection(Axis)
+{
+    return -1;
+}
+int defaultOrder(Axis axis)
+{
+    return axis == Axis::Z ? 1 : 2;
+}
+} // namespace
+
+ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_runner(new ReferenceRunner(context, this)),
+      m_grid(new QGridLayout), m_all(new QPushButton(tr("Reference all"), this)),
+      m_cancel(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
+      m_message(new QLabel(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(m_grid);
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_all, 1);
+    row->addWidget(m_cancel);
+    layout->addLayout(row);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_message);
+    layout->addStretch(1);
+    m_all->setObjectName(QStringLiteral("referenceAll"));
+    m_all->setToolTip(tr("Reference every axis in the order given (equal numbers run together)"));
+    m_cancel->setEnabled(false);
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setTextVisible(true);
+    m_message->setWordWrap(true);
+    for (QPushButton* b : {m_all, m_cancel})
+        b->setFocusPolicy(Qt::NoFocus);
+
+    connect(m_all, &QPushButton::clicked, this, &ReferencePanel::referenceAll);
+    connect(m_cancel, &QPushButton::clicked, this, &ReferencePanel::cancel);
+    connect(m_runner, &ReferenceRunner::progress, this, &ReferencePanel::onProgress);
+    connect(m_runner, &ReferenceRunner::finished, this, &ReferencePanel::onFinished);
+    connect(context, &MachineContext::modelChanged, this, &ReferencePanel::rebuild);
+    connect(context->session(), &ControllerSession::statusChanged, this, &ReferencePanel::onStatus);
+    rebuild();
+}
+
+void ReferencePanel::rebuild()
+{
+    while (QLayoutItem* item = m_grid->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_rows.clear();
+    m_grid->addWidget(new QLabel(tr("Axis"), this), 0, 0);
+    m_grid->addWidget(new QLabel(tr("Direction"), this), 0, 1);
+    m_grid->addWidget(new QLabel(tr("Order"), this), 0, 2);
+    m_grid->addWidget(new QLabel(tr("State"), this), 0, 3);
+    const QSettings settings;
+    int r = 1;
+    for (Axis axis : m_context->axes()) {
+        const QString key =
+            QStringLiteral("reference/%1/%2/").arg(m_context->modelId(), axisName(axis));
+        Row row;
+        row.direction = new QComboBox(this);
+        row.direction->addItem(tr("\u2212 (negative)"), -1);
+        row.direction->addItem(tr("+ (positive)"), 1);
+        row.direction->addItem(tr("skip"), 0);
+        row.direction->setCurrentIndex(row.direction->findData(
+            settings.value(key + QStringLiteral("direction"), defaultDirection(axis)).toInt()));
+        row.order = new QSpinBox(this);
+        row.order->setRange(1, 4);
+        row.order->setValue(
+            settings.value(key + QStringLiteral("order"), defaultOrder(axis)).toInt());
+        row.order->setToolTip(tr("Axes with the same number are referenced together; lower "
+                                 "numbers first"));
+        row.led = new LedIndicator(tr("not referenced"), this);
+        row.run = new QPushButton(tr("Reference %1").arg(axisName(axis)), this);
+        row.run->setFocusPolicy(Qt::NoFocus);
+        connect(row.run, &QPushButton::clicked, this, [this, axis] { referenceAxis(axis); });
+        connect(row.direction, &QComboBox::currentIndexChanged, this, &ReferencePanel::store);
+        connect(row.order, &QSpinBox::valueChanged, this, &ReferencePanel::store);
+        auto* name = new QLabel(axisName(axis), this);
+        QFont f = name->font();
+        f.setBold(true);
+        name->setFont(f);
+        m_grid->addWidget(name, r, 0);
+        m_grid->addWidget(row.direction, r, 1);
+        m_grid->addWidget(row.order, r, 2);
+        m_grid->addWidget(row.led, r, 3);
+        m_grid->addWidget(row.run, r, 4);
+        m_rows.insert(axis, row);
+        ++r;
+    }
+    onStatus(m_context->status());
+}
+
+void ReferencePanel::store()
+{
+    QSettings settings;
+    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
+        const QString key =
+            QStringLiteral("reference/%1/%2/").arg(m_context->modelId(), axisName(it.key()));
+        settings.setValue(key + QStringLiteral("direction"),
+                          it.value().direction->currentData().toInt());
+        settings.setValue(key + QStringLiteral("order"), it.value().order->value());
+    }
+}
+
+QMap<Axis, int> ReferencePanel::directions() const
+{
+    QMap<Axis, int> out;
+    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
+        out.insert(it.key(), it.value().direction->currentData().toInt());
+    return out;
+}
+
+QMap<Axis, int> ReferencePanel::order() const
+{
+    QMap<Axis, int> out;
+    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
+        out.insert(it.key(), it.value().order->value());
+    return out;
+}
+
+QString ReferencePanel::messageText() const
+{
+    return m_message->text();
+}
+
+void ReferencePanel::referenceAll()
+{
+    m_runner->start(ReferenceRunner::plan(directions(), order()));
+}
+
+void ReferencePanel::referenceAxis(Axis axis)
+{
+    int direction = directions().value(axis);
+    if (direction == 0)
+        direction = defaultDirection(axis);
+    m_runner->start({ReferenceRunner::Stage{{axis, direction}}});
+}
+
+void ReferencePanel::cancel()
+{
+    m_context->stop();
+    m_runner->cancel(tr("Referencing cancelled."));
+}
+
+void ReferencePanel::onStatus(const MachineStatus& status)
+{
+    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
+        const AxisStatus a = status.axes.value(it.key());
+        const bool running = m_runner->currentAxes().contains(it.key());
+        if (running) {
+            it.value().led->setState(LedIndicator::State::Warning);
+            it.value().led->setText(tr("referencing\u2026"));
+        } else {
+            it.value().led->setOn(a.referenced);
+            it.value().led->setText(a.referenced ? tr("referenced") : tr("not referenced"));
+        }
+    }
+}
+
+void ReferencePanel::onProgress(int stage, int stages, const QString& text)
+{
+    m_progress->setRange(0, stages);
+    m_progress->setValue(stage);
+    m_message->setText(text);
+    m_message->setStyleSheet(QString());
+    const bool running = m_runner->isRunning();
+    m_cancel->setEnabled(running);
+    m_all->setEnabled(!running);
+    onStatus(m_context->status());
+}
+
+void ReferencePanel::onFinished(bool ok, const QString& message)
+{
+    m_message->setText(message);
+    m_message->setStyleSheet(ok ? QStringLiteral("QLabel { color: #2e7d32; }")
+                                : QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
+    if (!ok)
+        m_progress->setValue(0);
+    m_cancel->setEnabled(false);
+    m_all->setEnabled(true);
+    onStatus(m_context->status());
+}
+
+} // namespace stepdeck::ui

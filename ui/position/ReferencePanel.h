@@ -1,0 +1,60 @@
+#pragma once
+#include "model/MachineStatus.h"
+#include <QWidget>
+
+class QComboBox;
+class QGridLayout;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace stepdeck::ui {
+
+class LedIndicator;
+class MachineContext;
+class ReferenceRunner;
+
+// Referencing (homing): direction and order per axis (default Z first, then X and Y),
+// "Reference all" and per-axis runs, progress, and which axes are referenced.
+class ReferencePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit ReferencePanel(MachineContext* context, QWidget* parent = nullptr);
+
+    ReferenceRunner* runner() const { return m_runner; }
+    QMap<Axis, int> directions() const;
+    QMap<Axis, int> order() const;
+    QString messageText() const;
+
+public Q_SLOTS:
+    void referenceAll();
+    void referenceAxis(Axis axis);
+    void cancel();
+
+private:
+    struct Row
+    {
+        QComboBox* direction = nullptr;
+        QSpinBox* order = nullptr;
+        LedIndicator* led = nullptr;
+        QPushButton* run = nullptr;
+    };
+    void rebuild();
+    void store();
+    void onStatus(const MachineStatus& status);
+    void onProgress(int stage, int stages, const QString& text);
+    void onFinished(bool ok, const QString& message);
+
+    MachineContext* m_context;
+    ReferenceRunner* m_runner;
+    QGridLayout* m_grid;
+    QMap<Axis, Row> m_rows;
+    QPushButton* m_all;
+    QPushButton* m_cancel;
+    QProgressBar* m_progress;
+    QLabel* m_message;
+};
+
+} // namespace stepdeck::ui

@@ -1,0 +1,413 @@
+#include "SetupPage.h"
+#include "main/MachineContext.h"
+#include "setup/DiffDialog.h"
+#include "setup/ParameterField.h"
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+
+namespace stepdeck::ui {
+
+namespace {
+QString trParam(const QString& text)
+{
+    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
+}
+} // namespace
+
+SetupPage::SetupPage(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_groups(new QVBoxLayout),
+      m_read(new QPushButton(tr("Read"), this)), m_write(new QPushButton(tr("Write"), this)),
+      m_writeVerify(new QPushButton(tr("Write && verify"), this)), m_info(new QLabel(this)),
+      m_message(new QLabel(this))
+{
+    auto* defaults = new QPushButton(tr("Defaults"), this);
+    auto* save = new QPushButton(tr("Save to file\u2026"), this);
+    auto* loadButton = new QPushButton(tr("Load from file\u2026"), this);
+    m_write->setObjectName(QStringLiteral("setupWrite"));
+    m_read->setToolTip(tr("Read the values back from the controller"));
+    m_write->setToolTip(tr("Write changed values to the controller"));
+    m_writeVerify->setToolTip(tr("Write, then read back and compare where the protocol can"));
+    defaults->setToolTip(tr("Fill the form with the model's default values (nothing is sent)"));
+
+    auto* bar = new QHBoxLayout;
+    for (QPushButton* b : {m_read, m_write, m_writeVerify, defaults})
+        bar->addWidget(b);
+    bar->addStretch(1);
+    bar->addWidget(save);
+    bar->addWidget(loadButton);
+    m_info->setWordWrap(true);
+    m_info->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
+    m_message->setWordWrap(true);
+    m_message->setObjectName(QStringLiteral("setupMessage"));
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(m_info);
+    layout->addLayout(m_groups, 1);
+    layout->addWidget(m_message);
+
+    connect(m_read, &QPushButton::clicked, this, &SetupPage::read);
+    connect(m_write, &QPushButton::clicked, this, [this] { write(false); });
+    connect(m_writeVerify, &QPushButton::clicked, this, [this] { write(true); });
+    connect(defaults, &QPushButton::clicked, this, &SetupPage::resetToDefaults);
+    connect(save, &QPushButton::clicked, this, &SetupPage::saveAs);
+    connect(loadButton, &QPushButton::clicked, this, &SetupPage::load);
+    connect(context, &MachineContext::modelChanged, this, &SetupPage::rebuild);
+    connect(context->session(), &ControllerSession::requestFinished, this, &SetupPage::onResult);
+    connect(context->session(), &ControllerSession::linkStateChanged, this,
+            &SetupPage::refreshButtons);
+    rebuild();
+}
+
+void SetupPage::rebuild()
+{
+    delete m_content;
+    m_fields.clear();
+    m_schema = m_context->schema();
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* inner = new QWidget(scroll);
+    auto* v = new QVBoxLayout(inner);
+    for (const QString& group : m_schema.groups())
+        v->addWidget(buildGroup(group));
+    v->addStretch(1);
+    scroll->setWidget(inner);
+    m_content = scroll;
+    m_groups->addWidget(scroll);
+
+    bool anyReadable = false;
+    for (const ParameterSpec& spec : m_schema.specs())
+        anyReadable = anyReadable || spec.readable;
+    m_read->setVisible(anyReadable);
+    m_info->setText(anyReadable ? QString()
+                                : tr("This controller cannot read parameters back: the fields "
+                                     "show the defaults (or a loaded file) until written."));
+    m_info->setVisible(!anyReadable);
+    refreshButtons();
+}
+
+QWidget* SetupPage::buildGroup(const QString& group)
+{
+    auto* box = new QGroupBox(trParam(group));
+    auto* grid = new QGridLayout(box);
+    const QList<Axis> axes = m_context->axes();
+    bool anyPerAxis = false;
+    for (const ParameterSpec& spec : m_schema.specs())
+        anyPerAxis = anyPerAxis || (spec.group == group && spec.perAxis);
+    if (anyPerAxis) {
+        for (int i = 0; i < axes.size(); ++i) {
+            auto* header = new QLabel(axisName(axes[i]), box);
+            header->setAlignment(Qt::AlignCenter);
+            QFont f = header->font();
+            f.setBold(true);
+            header->setFont(f);
+            grid->addWidget(header, 0, 1 + i);
+        }
+    }
+    int row = 1;
+    for (const ParameterSpec& spec : m_schema.specs()) {
+        if (spec.group != group)
+            continue;
+        auto* label = new QLabel(trParam(spec.label), box);
+        label->setToolTip(trParam(spec.description));
+        grid->addWidget(label, row, 0);
+        auto add = [&](std::optional<Axis> axis, int column, int span) {
+            auto* f = new ParameterField(m_schema, spec, axis, box);
+            connect(f, &ParameterField::edited, this, &SetupPage::refreshButtons);
+            m_fields << f;
+            grid->addWidget(f, row, column, 1, span);
+        };
+        if (spec.perAxis) {
+            for (int i = 0; i < axes.size(); ++i)
+                add(axes[i], 1 + i, 1);
+        } else {
+            add(std::nullopt, 1, qMax(1, int(axes.size())));
+        }
+        grid->addWidget(new QLabel(trParam(spec.unit), box), row, 1 + int(axes.size()));
+        ++row;
+    }
+    grid->setColumnStretch(0, 2);
+    for (int i = 0; i < axes.size(); ++i)
+        grid->setColumnStretch(1 + i, 1);
+    return box;
+}
+
+ParameterField* SetupPage::field(const QString& name, std::optional<Axis> axis) const
+{
+    for (ParameterField* f : m_fields) {
+        if (f->spec().name == name && f->axis() == axis)
+            return f;
+    }
+    return nullptr;
+}
+
+QString SetupPage::messageText() const
+{
+    return m_message->text();
+}
+
+QStringList SetupPage::fieldErrors() const
+{
+    QStringList errors;
+    for (ParameterField* f : m_fields) {
+        const QString err = f->error();
+        if (!err.isEmpty()) {
+            errors << (f->axis() ? QStringLiteral("%1 %2: %3")
+                                       .arg(trParam(f->spec().label), axisName(*f->axis()), err)
+                                 : QStringLiteral("%1: %2").arg(trParam(f->spec().label), err));
+        }
+    }
+    return errors;
+}
+
+bool SetupPage::formValues(ParameterSet* set, QStringList* errors) const
+{
+    const QStringList errs = fieldErrors();
+    if (errors)
+        *errors = errs;
+    if (!errs.isEmpty())
+        return false;
+    ParameterSet out;
+    for (ParameterField* f : m_fields) {
+        if (!f->spec().writable)
+            continue;
+        ParameterValue& v = out[f->spec().name];
+        if (f->axis())
+            v.perAxis.insert(*f->axis(), f->value());
+        else
+            v.global = f->value();
+    }
+    *set = out;
+    return true;
+}
+
+ParameterSet SetupPage::changedValues() const
+{
+    ParameterSet all;
+    if (!formValues(&all, nullptr))
+        return {};
+    QSet<QString> changed;
+    for (ParameterField* f : m_fields) {
+        if (f->isChanged())
+            changed.insert(f->spec().name);
+    }
+    ParameterSet out;
+    for (auto it = all.cbegin(); it != all.cend(); ++it) {
+        if (changed.contains(it.key()))
+            out.insert(it.key(), it.value()); // whole parameter: every axis in one command
+    }
+    return out;
+}
+
+void SetupPage::refreshButtons()
+{
+    const QStringList errors = fieldErrors();
+    const bool connected = m_context->isConnected();
+    const QString why = !errors.isEmpty() ? tr("Cannot write: %1").arg(errors.first())
+                        : !connected      ? tr("Not connected")
+                                          : QString();
+    for (QPushButton* b : {m_write, m_writeVerify}) {
+        b->setEnabled(why.isEmpty());
+        b->setToolTip(why.isEmpty() ? tr("Write changed values to the controller") : why);
+    }
+    m_read->setEnabled(connected);
+    if (!errors.isEmpty())
+        setMessage(tr("Invalid values cannot be written:\n%1").arg(errors.join(QLatin1Char('\n'))),
+                   true);
+    else if (m_message->property("invalidShown").toBool())
+        setMessage(QString(), false);
+    m_message->setProperty("invalidShown", !errors.isEmpty());
+}
+
+bool SetupPage::write(bool verify)
+{
+    QStringList errors;
+    ParameterSet all;
+    if (!formValues(&all, &errors)) {
+        setMessage(tr("Invalid values cannot be written:\n%1").arg(errors.join(QLatin1Char('\n'))),
+                   true);
+        return false;
+    }
+    const ParameterSet set = changedValues();
+    if (set.isEmpty()) {
+        setMessage(tr("Nothing to write: every field matches the controller."), false);
+        return false;
+    }
+    const QString invalid = m_schema.validate(set, m_context->axes());
+    if (!invalid.isEmpty()) {
+        setMessage(tr("Not written: %1").arg(invalid), true);
+        return false;
+    }
+    m_pendingSet = set;
+    m_pendingWrite = m_context->session()->writeParameters(set, verify);
+    setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
+                      : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
+               false);
+    return true;
+}
+
+void SetupPage::read()
+{
+    QStringList names;
+    for (const ParameterSpec& spec : m_schema.specs()) {
+        if (spec.readable)
+            names << spec.name;
+    }
+    if (names.isEmpty()) {
+        setMessage(tr("This controller cannot read parameters back."), true);
+        return;
+    }
+    m_pendingRead = m_context->session()->readParameters(names);
+    setMessage(tr("Reading\u2026"), false);
+}
+
+void SetupPage::onResult(const CommandResult& result)
+{
+    if (result.id == m_pendingWrite && m_pendingWrite != 0) {
+        m_pendingWrite = 0;
+        if (result.ok()) {
+            setBaselines(m_pendingSet);
+            setMessage(
+                tr("Written: %1.").arg(QStringList(m_pendingSet.keys()).join(QStringLiteral(", "))),
+                false);
+        } else {
+            setMessage(tr("Write failed: %1").arg(result.message), true);
+        }
+    } else if (result.id == m_pendingRead && m_pendingRead != 0) {
+        m_pendingRead = 0;
+        if (result.ok() && result.value.canConvert<ParameterSet>()) {
+            const ParameterSet set = result.value.value<ParameterSet>();
+            applyToForm(set);
+            setBaselines(set);
+            setMessage(tr("Read %n parameter(s).", nullptr, int(set.size())), false);
+        } else {
+            setMessage(tr("Read failed: %1").arg(result.message), true);
+        }
+    }
+}
+
+void SetupPage::setBaselines(const ParameterSet& set)
+{
+    for (ParameterField* f : m_fields) {
+        if (!set.contains(f->spec().name))
+            continue;
+        const ParameterValue& v = set.value(f->spec().name);
+        f->setBaseline(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+    }
+    refreshButtons();
+}
+
+void SetupPage::applyToForm(const ParameterSet& set)
+{
+    for (ParameterField* f : m_fields) {
+        if (!set.contains(f->spec().name))
+            continue;
+        const ParameterValue& v = set.value(f->spec().name);
+        f->setValue(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+    }
+    refreshButtons();
+}
+
+void SetupPage::resetToDefaults()
+{
+    for (ParameterField* f : m_fields)
+        f->setValue(f->spec().defaultValue);
+    refreshButtons();
+}
+
+void SetupPage::setMessage(const QString& text, bool error)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(error ? QStringLiteral("QLabel { color: #c62828; }") : QString());
+    if (!text.isEmpty())
+        Q_EMIT message(text);
+}
+
+bool SetupPage::saveToFile(const QString& path, QString* error) const
+{
+    ParameterSet set;
+    QStringList errors;
+    if (!formValues(&set, &errors)) {
+        *error = tr("Not saved: %1").arg(errors.join(QStringLiteral("; ")));
+        return false;
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    file.write(QJsonDocument(m_schema.toJson(m_context->modelId(), set)).toJson());
+    return true;
+}
+
+bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error) const
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = tr("Cannot open %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    if (!doc.isObject()) {
+        *error = tr("%1 is not a parameter file: %2").arg(path, parseError.errorString());
+        return false;
+    }
+    QString why;
+    if (!m_schema.fromJson(doc.object(), m_context->modelId(), m_context->axes(), set, &why)) {
+        *error = tr("%1: %2").arg(QFileInfo(path).fileName(), why);
+        return false;
+    }
+    return true;
+}
+
+void SetupPage::saveAs()
+{
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save parameters"), m_context->modelId() + QStringLiteral("-parameters.json"),
+        tr("Parameter files (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (saveToFile(path, &error))
+        setMessage(tr("Saved to %1.").arg(path), false);
+    else
+        setMessage(error, true);
+}
+
+void SetupPage::load()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameters"), QString(),
+                                                      tr("Parameter files (*.json)"));
+    if (path.isEmpty())
+        return;
+    ParameterSet loaded;
+    QString error;
+    if (!readFile(path, &loaded, &error)) {
+        setMessage(error, true);
+        return;
+    }
+    ParameterSet current;
+    formValues(&current, nullptr);
+    DiffDialog dialog(DiffDialog::compare(m_schema, current, loaded), QFileInfo(path).fileName(),
+                      this);
+    const int choice = dialog.exec();
+    if (choice == DiffDialog::Cancel)
+        return;
+    applyToForm(loaded);
+    setMessage(tr("Loaded %1 into the form.").arg(QFileInfo(path).fileName()), false);
+    if (choice == DiffDialog::LoadAndWrite)
+        write(false);
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,295 @@
+#include "StatusPanel.h"
+#include "common/LedIndicator.h"
+#include "main/MachineContext.h"
+#include "status/RawWordView.h"
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QProgressBar>
+#include <QScrollArea>
+
+namespace stepdeck::ui {
+
+namespace {
+struct FlagText
+{
+    const char* key;
+    const char* label;
+    const char* tip;
+};
+// Normalised machine flags (model/MachineStatus.h), the same for every model.
+const FlagText kMachineFlags[] = {
+    {"driveOn", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Drive on"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "The motors are powered.")},
+    {"spindleOn", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Spindle on"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "The spindle output is on.")},
+    {"busy", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Busy"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "An axis is moving.")},
+    {"overTemperature", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Over-temperature"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "The controller reports over-temperature; the drivers may switch off.")},
+    {"setupIncomplete", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Setup incomplete"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "Speeds and acceleration have not all been written; moves are refused.")},
+    {"panic", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Emergency stop"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "Emergency stop active: panic button or host panic stop.")},
+    {"commFault", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Comm fault"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Replies are missing or the link is lost.")},
+    {"startButton", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Start button"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "The start button on the controller is pressed.")},
+};
+const FlagText kAxisFlags[] = {
+    {"moving", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Moving"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "Positioning, feed, reference or velocity move")},
+    {"jogging", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Jog"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Jogging at a non-zero rate")},
+    {"limit", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Limit"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "A limit switch of this axis is active")},
+    {"refSwitch", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Ref. switch"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "The reference switch is active")},
+    {"referenced", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Referenced"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "Referenced since the last panic, reset or reconnect")},
+};
+} // namespace
+
+StatusPanel::StatusPanel(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_body(new QVBoxLayout(this))
+{
+    m_body->setContentsMargins(0, 0, 0, 0);
+    connect(context, &MachineContext::modelChanged, this, &StatusPanel::rebuild);
+    connect(context->session(), &ControllerSession::statusChanged, this, &StatusPanel::onStatus);
+    connect(context->session(), &ControllerSession::linkStateChanged, this,
+            [this] { onStatus(m_context->status()); });
+    rebuild();
+}
+
+void StatusPanel::rebuild()
+{
+    delete m_content;
+    m_machine.clear();
+    m_axes.clear();
+    m_words.clear();
+    m_genericRaw = nullptr;
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* inner = new QWidget(scroll);
+    auto* v = new QVBoxLayout(inner);
+    v->addWidget(buildMachineGroup());
+    v->addWidget(buildAxesGroup());
+    const ModelInfo* model = m_context->model();
+    if (model && model->presentation.statusWords) {
+        for (const StatusWordInfo& info : model->presentation.statusWords()) {
+            auto* view = new RawWordView(info, inner);
+            m_words << view;
+            v->addWidget(view);
+        }
+    } else {
+        auto* group = new QGroupBox(tr("Raw status"), inner);
+        m_genericRaw = new QLabel(group);
+        m_genericRaw->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        (new QVBoxLayout(group))->addWidget(m_genericRaw);
+        v->addWidget(group);
+    }
+    v->addWidget(buildTemperatureGroup());
+    v->addStretch(1);
+    scroll->setWidget(inner);
+    m_content = scroll;
+    m_body->addWidget(scroll);
+    onStatus(m_context->status());
+}
+
+QWidget* StatusPanel::buildMachineGroup()
+{
+    auto* group = new QGroupBox(tr("Machine"));
+    auto* grid = new QGridLayout(group);
+    const Capabilities caps = m_context->capabilities();
+    int i = 0;
+    for (const FlagText& f : kMachineFlags) {
+        const QString key = QString::fromLatin1(f.key);
+        if (key == QLatin1String("startButton") && !caps.startButton)
+            continue;
+        auto* lamp = new LedIndicator(tr(f.label), group);
+        lamp->setToolTip(tr(f.tip));
+        lamp->setObjectName(key);
+        m_machine.insert(key, lamp);
+        grid->addWidget(lamp, i / 2, i % 2);
+        ++i;
+    }
+    return group;
+}
+
+QWidget* StatusPanel::buildAxesGroup()
+{
+    auto* group = new QGroupBox(tr("Axes"));
+    auto* grid = new QGridLayout(group);
+    int column = 1;
+    for (const FlagText& f : kAxisFlags) {
+        auto* header = new QLabel(tr(f.label), group);
+        header->setToolTip(tr(f.tip));
+        grid->addWidget(header, 0, column++, Qt::AlignCenter);
+    }
+    int row = 1;
+    for (Axis axis : m_context->axes()) {
+        auto* name = new QLabel(axisName(axis), group);
+        QFont bold = name->font();
+        bold.setBold(true);
+        name->setFont(bold);
+        grid->addWidget(name, row, 0);
+        column = 1;
+        for (const FlagText& f : kAxisFlags) {
+            auto* lamp = new LedIndicator({}, group);
+            lamp->setToolTip(QStringLiteral("%1: %2").arg(axisName(axis), tr(f.tip)));
+            m_axes[axis].insert(QString::fromLatin1(f.key), lamp);
+            grid->addWidget(lamp, row, column++, Qt::AlignCenter);
+        }
+        ++row;
+    }
+    return group;
+}
+
+QWidget* StatusPanel::buildTemperatureGroup()
+{
+    auto* group = new QGroupBox(tr("Controller"));
+    auto* grid = new QGridLayout(group);
+    m_temperature = new QLabel(group);
+    QFont big = m_temperature->font();
+    big.setPointSizeF(big.pointSizeF() * 1.6);
+    big.setBold(true);
+    m_temperature->setFont(big);
+    m_temperatureBar = new QProgressBar(group);
+    m_temperatureBar->setRange(0, 70);
+    m_temperatureBar->setTextVisible(false);
+    m_temperatureBar->setMaximumHeight(12);
+    m_temperatureNote = new QLabel(group);
+    m_temperatureNote->setWordWrap(true);
+    m_counters = new QLabel(group);
+    m_drives = new QLabel(group);
+    m_drives->setWordWrap(true);
+    grid->addWidget(new QLabel(tr("Temperature:"), group), 0, 0);
+    grid->addWidget(m_temperature, 0, 1);
+    grid->addWidget(m_temperatureBar, 1, 0, 1, 2);
+    grid->addWidget(m_temperatureNote, 2, 0, 1, 2);
+    grid->addWidget(m_counters, 3, 0, 1, 2);
+    grid->addWidget(m_drives, 4, 0, 1, 2);
+    const bool hasTemperature = m_context->capabilities().temperature;
+    m_temperature->setVisible(hasTemperature);
+    m_temperatureBar->setVisible(hasTemperature);
+    return group;
+}
+
+RawWordView* StatusPanel::rawWord(const QString& key) const
+{
+    for (RawWordView* view : m_words) {
+        if (view->info().key == key)
+            return view;
+    }
+    return nullptr;
+}
+
+QString StatusPanel::temperatureText() const
+{
+    return m_temperature ? m_temperature->text() : QString();
+}
+
+QString StatusPanel::countersText() const
+{
+    return m_counters ? m_counters->text() : QString();
+}
+
+void StatusPanel::onStatus(const MachineStatus& s)
+{
+    const bool live = m_context->session()->isCreated() &&
+                      m_context->session()->linkState() == LinkState::Connected;
+    using S = LedIndicator::State;
+    auto set = [&](const char* key, bool on, S onState) {
+        if (LedIndicator* lamp = m_machine.value(QString::fromLatin1(key)))
+            lamp->setState(!live ? S::Unknown : on ? onState : S::Off);
+    };
+    set("driveOn", s.driveOn, S::On);
+    set("spindleOn", s.spindleOn, S::On);
+    set("busy", s.busy, S::On);
+    set("overTemperature", s.overTemperature, S::Fault);
+    set("setupIncomplete", s.setupIncomplete, S::Warning);
+    set("panic", s.panic, S::Fault);
+    if (LedIndicator* lamp = m_machine.value(QStringLiteral("commFault")))
+        lamp->setOn(s.commFault, S::Fault); // meaningful when the link is down, too
+    set("startButton", s.startButton.value_or(false), S::On);
+    if (LedIndicator* lamp = m_machine.value(QStringLiteral("startButton"));
+        lamp && live && !s.startButton.has_value())
+        lamp->setState(S::Unknown);
+
+    for (auto it = m_axes.cbegin(); it != m_axes.cend(); ++it) {
+        const AxisStatus a = s.axes.value(it.key());
+        const QMap<QString, LedIndicator*>& lamps = it.value();
+        auto axisSet = [&](const char* key, bool on, S onState) {
+            lamps.value(QString::fromLatin1(key))
+                ->setState(!live ? S::Unknown
+                           : on  ? onState
+                                 : S::Off);
+        };
+        axisSet("moving", a.moving, S::On);
+        axisSet("jogging", a.jogging, S::On);
+        axisSet("limit", a.limitSwitch, S::Fault);
+        axisSet("refSwitch", a.referenceSwitch, S::Warning);
+        axisSet("referenced", a.referenced, S::On);
+    }
+    for (RawWordView* view : std::as_const(m_words))
+        view->setValue(live ? s.raw.value(view->info().key) : QVariant());
+    if (m_genericRaw) {
+        QStringList lines;
+        for (auto it = s.raw.cbegin(); it != s.raw.cend(); ++it)
+            lines << QStringLiteral("%1: 0x%2")
+                         .arg(it.key(), QString::number(it.value().toULongLong(), 16).toUpper());
+        m_genericRaw->setText(lines.isEmpty() ? tr("no raw words") : lines.join(QLatin1Char('\n')));
+    }
+    updateTemperature(s);
+    m_counters->setText(tr("Comm faults: %1    Resyncs: %2    Poll rate: %3 Hz")
+                            .arg(s.commFaultCount)
+                            .arg(s.resyncCount)
+                            .arg(m_context->session()->pollRateHz(), 0, 'f', 1));
+    QStringList drives;
+    if (s.drives.size() > 1) {
+        for (const DriveStatus& d : s.drives)
+            drives << tr("Drive %1: %2 %3")
+                          .arg(d.address)
+                          .arg(d.responding ? tr("responding") : tr("NOT RESPONDING"), d.detail);
+    }
+    m_drives->setText(drives.join(QLatin1Char('\n')));
+    m_drives->setVisible(!drives.isEmpty());
+}
+
+void StatusPanel::updateTemperature(const MachineStatus& s)
+{
+    const bool live = m_context->isConnected();
+    if (!live || !s.temperatureCelsius) {
+        m_temperature->setText(QStringLiteral("\u2013 \u00b0C"));
+        m_temperatureBar->setValue(0);
+        m_temperatureNote->setText(QString());
+        return;
+    }
+    const double t = *s.temperatureCelsius;
+    m_temperature->setText(QStringLiteral("%1 \u00b0C").arg(t, 0, 'f', 0));
+    m_temperatureBar->setValue(qBound(0, int(t), 70));
+    QString colour = QStringLiteral("#43a047");
+    QString note;
+    if (s.overTemperature || t >= kTemperatureLimitC) {
+        colour = QStringLiteral("#e53935");
+        note = tr("Over-temperature: the drivers may switch off. Stop and let the controller "
+                  "cool down.");
+    } else if (t >= kTemperatureWarningC) {
+        colour = QStringLiteral("#ffb300");
+        note = tr("Warning: approaching the %1 \u00b0C over-temperature limit.")
+                   .arg(kTemperatureLimitC, 0, 'f', 0);
+    }
+    m_temperatureBar->setStyleSheet(
+        QStringLiteral("QProgressBar::chunk { background: %1; }").arg(colour));
+    m_temperature->setStyleSheet(QStringLiteral("QLabel { color: %1; }").arg(colour));
+    m_temperatureNote->setText(note);
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,55 @@
+#pragma once
+#include "model/MachineStatus.h"
+#include <QWidget>
+
+class QGridLayout;
+class QLabel;
+class QProgressBar;
+class QVBoxLayout;
+
+namespace stepdeck::ui {
+
+class LedIndicator;
+class MachineContext;
+class RawWordView;
+
+// The poller made visible: the normalised machine and axis flags every model maps to, the
+// model's raw words with the manual's bit names, temperature (warning before the 50 degC
+// shutdown), the start button and the comm-fault and resync counters.
+class StatusPanel : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr double kTemperatureWarningC = 45.0;
+    static constexpr double kTemperatureLimitC = 50.0;
+
+    explicit StatusPanel(MachineContext* context, QWidget* parent = nullptr);
+
+    LedIndicator* machineLamp(const QString& key) const { return m_machine.value(key); }
+    RawWordView* rawWord(const QString& key) const;
+    QString temperatureText() const;
+    QString countersText() const;
+
+private:
+    void rebuild();
+    QWidget* buildMachineGroup();
+    QWidget* buildAxesGroup();
+    QWidget* buildTemperatureGroup();
+    void onStatus(const MachineStatus& status);
+    void updateTemperature(const MachineStatus& status);
+
+    MachineContext* m_context;
+    QVBoxLayout* m_body;
+    QWidget* m_content = nullptr;
+    QMap<QString, LedIndicator*> m_machine;
+    QMap<Axis, QMap<QString, LedIndicator*>> m_axes;
+    QList<RawWordView*> m_words;
+    QLabel* m_genericRaw = nullptr;
+    QLabel* m_temperature = nullptr;
+    QProgressBar* m_temperatureBar = nullptr;
+    QLabel* m_temperatureNote = nullptr;
+    QLabel* m_counters = nullptr;
+    QLabel* m_drives = nullptr;
+};
+
+} // namespace stepdeck::ui
