@@ -77,6 +77,8 @@ Outcome CliContext::connect()
         return result;
     setupWritten = true;
     result = writeParameters(*this, schemaDefaults(*model));
+    if (result.ok())
+        result = session.refresh(); // the status words the adapter's rules see are current
     if (!result.ok())
         result.message = tr("--setup-defaults: %1").arg(result.message);
     return result;

@@ -227,7 +227,8 @@ Outcome cmdJog(CliContext& c, QStringList args)
         }
         fastest = qMax(fastest, qAbs(it.value()));
     }
-    if (Outcome result = c.connect(); !result.ok())
+    // A fresh status first: the adapter decides on the first jog from the last words it read.
+    if (Outcome result = c.connect(); !result.ok() || !(result = c.session.refresh()).ok())
         return result;
 
     // The jog rate is a lease: renew it well inside the adapter's lease time, or the axes

@@ -99,7 +99,9 @@ Outcome CliSession::connectLink()
     const CommandResult result = m_finished.take(id);
     if (result.id == id && !result.ok()) {
         return Outcome::failure(exitCodeFor(result.error),
-                                tr("%1: %2").arg(m_options.port, result.message));
+                                result.message.contains(m_options.port)
+                                    ? result.message
+                                    : tr("%1: %2").arg(m_options.port, result.message));
     }
     if (m_session.linkState() != LinkState::Connected) {
         const QString why = !m_lostReason.isEmpty() ? m_lostReason : m_lastError;
