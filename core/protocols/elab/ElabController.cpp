@@ -66,13 +66,18 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
 
 ElabController::~ElabController() = default;
 
-Capabilities ElabController::capabilities() const { return elab::capabilities(); }
-ParameterSchema ElabController::schema() const { return elab::parameterSchema(); }
+Capabilities ElabController::capabilities() const
+{
+    return elab::capabilities();
+}
+ParameterSchema ElabController::schema() const
+{
+    return elab::parameterSchema();
+}
 
 // ------------------------------------------------------------------ sequences
 
-ElabExchange ElabController::exchange(RequestId owner, const QByteArray& frame,
-                                      Expect expect) const
+ElabExchange ElabController::exchange(RequestId owner, const QByteArray& frame, Expect expect) const
 {
     ElabExchange ex;
     ex.owner = owner;
@@ -81,8 +86,8 @@ ElabExchange ElabController::exchange(RequestId owner, const QByteArray& frame,
     return ex;
 }
 
-void ElabController::chain(QList<ElabExchange> steps, bool continuation,
-                           std::function<void()> done, ErrorFn failed)
+void ElabController::chain(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
+                           ErrorFn failed)
 {
     if (steps.isEmpty()) {
         done();
@@ -138,14 +143,17 @@ void ElabController::readStatus(RequestId owner, StatusRead how, std::function<v
         ex.tolerateStray = how.tolerant;
         ex.droppable = !how.poll && owner != 0;
     }
-    chain(steps, how.continuation, [this, done] {
-        publishStatus();
-        done();
-    }, failed);
+    chain(
+        steps, how.continuation,
+        [this, done] {
+            publishStatus();
+            done();
+        },
+        failed);
 }
 
-void ElabController::sendCommand(const Op& op, const QByteArray& frame,
-                                 std::function<void()> onAck, bool continuation)
+void ElabController::sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,
+                                 bool continuation)
 {
     ElabExchange ex = exchange(op.id, frame, Expect::AckNak);
     ex.onReply = [this, op, frame, onAck](const Reply& r) {
@@ -471,15 +479,16 @@ void ElabController::panic(RequestId id)
     // Mid-stream the board may wait for the data byte of a <DC2> pair whose data byte was
     // discarded: a first <BEL> is then taken as the step byte 0x07 (no step bit set, harmless)
     // and the second one is the panic. Outside a stream the second <BEL> is a second panic.
-    ElabExchange ex = exchange(id, streaming ? encode::panicStop() + encode::panicStop()
-                                             : encode::panicStop(),
-                               Expect::Ack);
+    ElabExchange ex =
+        exchange(id, streaming ? encode::panicStop() + encode::panicStop() : encode::panicStop(),
+                 Expect::Ack);
     ex.tolerateStray = true; // replies of abandoned exchanges may still come
     ex.onReply = [this, id](const Reply&) {
         finishOk(id);
         StatusRead how;
         how.continuation = how.tolerant = true;
-        readStatus(0, how, [] {}, [](ErrorKind, const QString&) {});
+        readStatus(
+            0, how, [] {}, [](ErrorKind, const QString&) {});
     };
     ex.onError = [this, id](ErrorKind kind, const QString& message) {
         finishError(id, kind, message);
@@ -560,10 +569,13 @@ void ElabController::writeStep(const Op& op, const QList<ElabParameterWrite>& pl
         return;
     }
     const ElabParameterWrite& w = plan.at(index);
-    sendCommand(op, w.frame, [this, op, plan, index, note] {
-        m_written.insert(plan.at(index).name, plan.at(index).value);
-        writeStep(op, plan, index + 1, note);
-    }, index > 0);
+    sendCommand(
+        op, w.frame,
+        [this, op, plan, index, note] {
+            m_written.insert(plan.at(index).name, plan.at(index).value);
+            writeStep(op, plan, index + 1, note);
+        },
+        index > 0);
 }
 
 void ElabController::readParameters(RequestId id, const QStringList& names)

@@ -83,7 +83,8 @@ ElabCtlMotion::Outcome ElabCtlMotion::update(quint16 machineState, quint8 axeSta
         // The board ramps on its own; the host cannot integrate the distance.
         lost.unite(QSet<Axis>(m_values.keyBegin(), m_values.keyEnd()));
         break;
-    case Kind::None: break;
+    case Kind::None:
+        break;
     }
     out.lostAxes = QList<Axis>(lost.cbegin(), lost.cend());
     std::sort(out.lostAxes.begin(), out.lostAxes.end());

@@ -15,11 +15,11 @@ public:
     struct Outcome
     {
         bool finished = false;
-        bool readRemaining = false;    // a ForceStopMove cut a FastMove/feed short: ask
-                                       // RequestRelPosition for the steps not executed
-        QList<Axis> lostAxes;          // position unknown from now on
-        QList<Axis> referencedAxes;    // reference run ended on the reference switch
-        QString limitMessage;          // a limit switch stopped the motion (once)
+        bool readRemaining = false; // a ForceStopMove cut a FastMove/feed short: ask
+                                    // RequestRelPosition for the steps not executed
+        QList<Axis> lostAxes;       // position unknown from now on
+        QList<Axis> referencedAxes; // reference run ended on the reference switch
+        QString limitMessage;       // a limit switch stopped the motion (once)
     };
 
     // values: signed steps (FastMove, feed), directions (reference), rates (velocity); a

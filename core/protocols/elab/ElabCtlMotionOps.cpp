@@ -224,8 +224,8 @@ void ElabController::pumpStream()
     // At most one small chunk inside the transport: the next one is written when this one has
     // left, and only while the board has not said XOFF. Polls queue up between chunks.
     Triple<qint64> delta{};
-    ElabExchange ex = exchange(id, m_stream.nextChunk(ElabCtlStream::kChunkSteps, &delta),
-                               Expect::None);
+    ElabExchange ex =
+        exchange(id, m_stream.nextChunk(ElabCtlStream::kChunkSteps, &delta), Expect::None);
     m_stream.chunkInFlight = true;
     ex.onReply = [this, delta](const Reply&) {
         for (Axis a : ElabCtlStatusMapper::axes())
@@ -336,7 +336,7 @@ void ElabController::applyJogVelocity(const AxisVelocities& stepsPerS)
     // SetJogSpeed: "Die Werte sind 16bit Integer mit Vorzeichen."
     for (Axis a : ElabCtlStatusMapper::axes()) {
         const double v = qBound(double(std::numeric_limits<qint16>::min()), stepsPerS.value(a),
-                                 double(std::numeric_limits<qint16>::max()));
+                                double(std::numeric_limits<qint16>::max()));
         m_jogRates[size_t(a)] = qint16(qRound(v));
     }
     if (m_jogQueued || linkState() != LinkState::Connected)
@@ -394,14 +394,17 @@ void ElabController::sendJog(bool continuation)
         m_jogMode = false;
         StatusRead how;
         how.continuation = true;
-        readStatus(0, how, [this] {
-            const QString why = tr("jog refused by the board (NAK); machine state: %1; axe "
-                                   "state: %2")
-                                    .arg(describeMachineState(m_machineWord),
-                                         describeAxeState(m_axeWord));
-            Q_EMIT errorOccurred(why);
-            Q_EMIT jogRefused(why);
-        }, [](ErrorKind, const QString&) {});
+        readStatus(
+            0, how,
+            [this] {
+                const QString why =
+                    tr("jog refused by the board (NAK); machine state: %1; axe "
+                       "state: %2")
+                        .arg(describeMachineState(m_machineWord), describeAxeState(m_axeWord));
+                Q_EMIT errorOccurred(why);
+                Q_EMIT jogRefused(why);
+            },
+            [](ErrorKind, const QString&) {});
     };
     ex.onError = [this](ErrorKind kind, const QString& why) {
         m_jogQueued = false;
@@ -429,20 +432,26 @@ void ElabController::setSpindle(RequestId id, int rpm)
     }
     if (!requireLink(id))
         return;
-    sendCommand(Op{id, m_epoch}, encode::spindleRpm(quint32(rpm)), [this, id, rpm] {
-        m_written.insert(QStringLiteral("spindle-rpm"), ParameterValue{qint64(rpm), {}});
-        finishOk(id);
-    }, false);
+    sendCommand(
+        Op{id, m_epoch}, encode::spindleRpm(quint32(rpm)),
+        [this, id, rpm] {
+            m_written.insert(QStringLiteral("spindle-rpm"), ParameterValue{qint64(rpm), {}});
+            finishOk(id);
+        },
+        false);
 }
 
 void ElabController::setCoolant(RequestId id, bool on)
 {
     if (!requireLink(id))
         return;
-    sendCommand(Op{id, m_epoch}, encode::coolant(on), [this, id, on] {
-        m_written.insert(QStringLiteral("coolant"), ParameterValue{on, {}});
-        finishOk(id);
-    }, false);
+    sendCommand(
+        Op{id, m_epoch}, encode::coolant(on),
+        [this, id, on] {
+            m_written.insert(QStringLiteral("coolant"), ParameterValue{on, {}});
+            finishOk(id);
+        },
+        false);
 }
 
 void ElabController::setDrivePower(RequestId id, int percent)
@@ -450,16 +459,18 @@ void ElabController::setDrivePower(RequestId id, int percent)
     // SetDrivePower: "einen Wert zwischen 0 und 100 in einem Hex-Byte".
     if (percent < 0 || percent > 100) {
         finishError(id, ErrorKind::InvalidValue,
-                    tr("drive-power: value '%1' is out of range (allowed: 0..100 %)")
-                        .arg(percent));
+                    tr("drive-power: value '%1' is out of range (allowed: 0..100 %)").arg(percent));
         return;
     }
     if (!requireLink(id))
         return;
-    sendCommand(Op{id, m_epoch}, encode::drivePower(quint8(percent)), [this, id, percent] {
-        m_written.insert(QStringLiteral("drive-power"), ParameterValue{qint64(percent), {}});
-        finishOk(id);
-    }, false);
+    sendCommand(
+        Op{id, m_epoch}, encode::drivePower(quint8(percent)),
+        [this, id, percent] {
+            m_written.insert(QStringLiteral("drive-power"), ParameterValue{qint64(percent), {}});
+            finishOk(id);
+        },
+        false);
 }
 
 } // namespace stepdeck::elab

@@ -16,8 +16,7 @@ const QString kFeed = QStringLiteral("feed-speed");
 
 // Completes a per-axis value from the last written one; empty string when complete.
 QString complete(const ParameterSchema& schema, const ParameterSpec& spec,
-                 const ParameterValue& given, const ParameterSet& lastWritten,
-                 ParameterValue* out)
+                 const ParameterValue& given, const ParameterSet& lastWritten, ParameterValue* out)
 {
     ParameterValue full;
     if (!spec.perAxis) {

@@ -11,10 +11,22 @@ QString tr(const char* text)
 
 // Bit positions per axis: taXMove=0, taXJog=1, taYMove=2, ... (RequestAxeState);
 // tmLimSwX=8.., tmRefSwX=11.. (RequestMachineState).
-quint8 moveBit(Axis axis) { return quint8(1u << (2 * int(axis))); }
-quint8 jogBit(Axis axis) { return quint8(1u << (2 * int(axis) + 1)); }
-quint16 limitBit(Axis axis) { return quint16(machine::LimSwX << int(axis)); }
-quint16 referenceBit(Axis axis) { return quint16(machine::RefSwX << int(axis)); }
+quint8 moveBit(Axis axis)
+{
+    return quint8(1u << (2 * int(axis)));
+}
+quint8 jogBit(Axis axis)
+{
+    return quint8(1u << (2 * int(axis) + 1));
+}
+quint16 limitBit(Axis axis)
+{
+    return quint16(machine::LimSwX << int(axis));
+}
+quint16 referenceBit(Axis axis)
+{
+    return quint16(machine::RefSwX << int(axis));
+}
 constexpr quint8 kMoveBits = axe::XMove | axe::YMove | axe::ZMove;
 constexpr quint8 kJogBits = axe::XJog | axe::YJog | axe::ZJog;
 constexpr quint16 kLimitBits = machine::LimSwX | machine::LimSwY | machine::LimSwZ;
@@ -36,8 +48,14 @@ bool ElabCtlStatusMapper::axisJogging(quint8 axeState, Axis axis)
     return axeState & jogBit(axis);
 }
 
-bool ElabCtlStatusMapper::anyMoveBit(quint8 axeState) { return axeState & kMoveBits; }
-bool ElabCtlStatusMapper::anyJogBit(quint8 axeState) { return axeState & kJogBits; }
+bool ElabCtlStatusMapper::anyMoveBit(quint8 axeState)
+{
+    return axeState & kMoveBits;
+}
+bool ElabCtlStatusMapper::anyJogBit(quint8 axeState)
+{
+    return axeState & kJogBits;
+}
 
 bool ElabCtlStatusMapper::limitSwitch(quint16 machineState, Axis axis)
 {

@@ -43,7 +43,7 @@ private:
 
     bool m_active = false;
     QVector<AxisVector> m_steps; // explicit source
-    Triple<qint64> m_line{};      // line source (when m_steps is empty)
+    Triple<qint64> m_line{};     // line source (when m_steps is empty)
     qint64 m_total = 0;
     qint64 m_sent = 0;
 };

@@ -8,13 +8,20 @@ namespace {
 bool matches(Expect expect, Reply::Kind kind)
 {
     switch (expect) {
-    case Expect::None: return false;
-    case Expect::Ack: return kind == Reply::Kind::Ack;
-    case Expect::AckNak: return kind == Reply::Kind::Ack || kind == Reply::Kind::Nak;
-    case Expect::MachineState: return kind == Reply::Kind::MachineState;
-    case Expect::AxeState: return kind == Reply::Kind::AxeState;
-    case Expect::Temperature: return kind == Reply::Kind::Temperature;
-    case Expect::RelPosition: return kind == Reply::Kind::RelPosition;
+    case Expect::None:
+        return false;
+    case Expect::Ack:
+        return kind == Reply::Kind::Ack;
+    case Expect::AckNak:
+        return kind == Reply::Kind::Ack || kind == Reply::Kind::Nak;
+    case Expect::MachineState:
+        return kind == Reply::Kind::MachineState;
+    case Expect::AxeState:
+        return kind == Reply::Kind::AxeState;
+    case Expect::Temperature:
+        return kind == Reply::Kind::Temperature;
+    case Expect::RelPosition:
+        return kind == Reply::Kind::RelPosition;
     }
     return false;
 }
@@ -31,13 +38,20 @@ QString frameName(const QByteArray& frame)
 QString expectName(Expect expect)
 {
     switch (expect) {
-    case Expect::None: return QStringLiteral("nothing");
-    case Expect::Ack: return QStringLiteral("<ACK>");
-    case Expect::AckNak: return QStringLiteral("<ACK>/<NAK>");
-    case Expect::MachineState: return QStringLiteral("<ENQ>BBBB#");
-    case Expect::AxeState: return QStringLiteral("<HT>BB#");
-    case Expect::Temperature: return QStringLiteral("<ETB>TT#");
-    case Expect::RelPosition: return QStringLiteral("<ETX>X,Y;Z.");
+    case Expect::None:
+        return QStringLiteral("nothing");
+    case Expect::Ack:
+        return QStringLiteral("<ACK>");
+    case Expect::AckNak:
+        return QStringLiteral("<ACK>/<NAK>");
+    case Expect::MachineState:
+        return QStringLiteral("<ENQ>BBBB#");
+    case Expect::AxeState:
+        return QStringLiteral("<HT>BB#");
+    case Expect::Temperature:
+        return QStringLiteral("<ETB>TT#");
+    case Expect::RelPosition:
+        return QStringLiteral("<ETX>X,Y;Z.");
     }
     return {};
 }
@@ -47,14 +61,19 @@ Expect expectFor(const QByteArray& frame)
     if (frame.isEmpty())
         return Expect::None;
     switch (frame.at(0)) {
-    case ctrl::ENQ: return Expect::MachineState;
-    case ctrl::HT: return Expect::AxeState;
-    case ctrl::ETB: return Expect::Temperature;
-    case ctrl::ETX: return Expect::RelPosition;
+    case ctrl::ENQ:
+        return Expect::MachineState;
+    case ctrl::HT:
+        return Expect::AxeState;
+    case ctrl::ETB:
+        return Expect::Temperature;
+    case ctrl::ETX:
+        return Expect::RelPosition;
     case ctrl::SYN: // RequestSync: "akzeptiert den Befehl, schickt aber keine Antwort"
     case ctrl::DC2: // SetFeedStepXYZ: "grundsätzlich keine Antwort"
         return Expect::None;
-    default: return Expect::AckNak;
+    default:
+        return Expect::AckNak;
     }
 }
 
@@ -139,17 +158,20 @@ void ElabExchangeQueue::onBytesWritten(qint64 count)
 
 void ElabExchangeQueue::completeWritten()
 {
-    // Frames without a reply are done once nothing of ours is left inside the transport.
+    // Frames without a reply are done once nothing of ours is left inside the transport. Taken
+    // out first: a callback may write the next frame, which has not left yet.
+    std::deque<ElabExchange> done;
     for (auto it = m_inFlight.begin(); it != m_inFlight.end();) {
-        if (it->ex.expect != Expect::None) {
+        if (it->ex.expect == Expect::None) {
+            done.push_back(std::move(it->ex));
+            it = m_inFlight.erase(it);
+        } else {
             ++it;
-            continue;
         }
-        ElabExchange ex = std::move(it->ex);
-        it = m_inFlight.erase(it);
+    }
+    for (ElabExchange& ex : done) {
         if (ex.onReply)
             ex.onReply(Reply{});
-        it = m_inFlight.begin(); // callbacks may have changed the list
     }
     armTimer();
     pump();
@@ -210,28 +232,29 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
 void ElabExchangeQueue::onTimeout()
 {
     const qint64 now = m_clock.elapsed();
-    QString reason;
+    std::deque<ElabExchange> expired;
     for (auto it = m_inFlight.begin(); it != m_inFlight.end();) {
-        if (it->deadlineMs > now) {
+        if (it->deadlineMs <= now) {
+            expired.push_back(std::move(it->ex));
+            it = m_inFlight.erase(it);
+        } else {
             ++it;
-            continue;
         }
-        ElabExchange ex = std::move(it->ex);
-        it = m_inFlight.erase(it);
+    }
+    QString reason;
+    for (ElabExchange& ex : expired) {
         if (ex.expect == Expect::None && m_transport && m_transport->bytesToWrite() == 0) {
             // A transport that reports no bytesWritten: nothing is left inside it, so it left.
             m_outstanding = 0;
             if (ex.onReply)
                 ex.onReply(Reply{});
-        } else {
-            const QString why = tr("no reply to %1 within %2 ms")
-                                    .arg(frameName(ex.frame))
-                                    .arg(m_timeoutMs);
-            if (ex.owner != kResyncOwner && ex.expect != Expect::None)
-                reason = why;
-            failExchange(ex, ErrorKind::Timeout, why);
+            continue;
         }
-        it = m_inFlight.begin();
+        const QString why =
+            tr("no reply to %1 within %2 ms").arg(frameName(ex.frame)).arg(m_timeoutMs);
+        if (ex.owner != kResyncOwner && ex.expect != Expect::None && reason.isEmpty())
+            reason = why;
+        failExchange(ex, ErrorKind::Timeout, why);
     }
     if (!reason.isEmpty())
         resynchronise(reason);

@@ -28,10 +28,10 @@ struct ElabExchange
     QByteArray frame;                  // written as is, unless build is set
     std::function<QByteArray()> build; // builds the frame when it is written (jog coalescing)
     Expect expect = Expect::AckNak;
-    quint64 owner = 0;                 // the request it belongs to; 0: internal
-    bool poll = false;                 // status-poller traffic (the console may hide it)
-    bool droppable = true;             // a stop drops it while it is still queued
-    bool tolerateStray = false;        // replies of another kind are skipped, not errors
+    quint64 owner = 0;          // the request it belongs to; 0: internal
+    bool poll = false;          // status-poller traffic (the console may hide it)
+    bool droppable = true;      // a stop drops it while it is still queued
+    bool tolerateStray = false; // replies of another kind are skipped, not errors
     // Expect::None: called with an empty Reply once the bytes have left the transport.
     std::function<void(const Reply&)> onReply;
     std::function<void(ErrorKind, const QString&)> onError;
@@ -73,7 +73,7 @@ public:
     // "RequestSync": a burst of <SYN>, then RequestMachineState; strays before its reply are
     // skipped. Runs ahead of queued work, after what is in flight.
     void resynchronise(const QString& reason);
-    void restart(); // a new link: decoder, counters and pending state cleared
+    void restart();          // a new link: decoder, counters and pending state cleared
     void setHeld(bool held); // nothing is written while held (reset pulse)
 
     bool isIdle() const { return m_queue.empty() && m_inFlight.empty(); }
