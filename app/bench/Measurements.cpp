@@ -2,6 +2,7 @@
 #include "BenchDevice.h"
 #include "BenchSession.h"
 #include "protocols/Registry.h"
+#include "protocols/elab/ElabSimulator.h"
 #include <QtMath>
 #include <algorithm>
 
@@ -100,6 +101,10 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
             break;
         }
         host.idle(30); // the host queue is now held back by the controller's XOFF
+        device.withSimulator([&](Simulator* sim) {
+            if (auto* elabSim = qobject_cast<elab::ElabSimulator*>(sim))
+                figure.pausedByXoff += elabSim->streamHostPaused() ? 1 : 0;
+        });
         const qint64 calledNs = nowNs();
         host.session().panic();
         if (!host.waitUntil([&] { return device.panicSeenNs() >= 0; }, 2000)) {

@@ -25,6 +25,7 @@ struct LatencyFigure
     std::optional<double> medianMs;
     std::optional<double> p99Ms;
     int samples = 0;
+    int pausedByXoff = 0; // runs in which the controller had paused the host with XOFF
     QString note;
 };
 

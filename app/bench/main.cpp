@@ -105,7 +105,8 @@ int main(int argc, char** argv)
             {"pollRateWireMaxHz", json(pollWire.value, 1)},
             {"panicLatencyMs", QJsonObject{{"median", json(panic.medianMs, 3)},
                                            {"p99", json(panic.p99Ms, 3)},
-                                           {"samples", panic.samples}}},
+                                           {"samples", panic.samples},
+                                           {"pausedByXoff", panic.pausedByXoff}}},
             {"feedStepsPerSecond", json(feed.value, 0)},
             {"feedWireMaxStepsPerSecond", json(feedWire.value, 0)},
             {"conditions", QJsonObject{{"model", model->id},
@@ -129,11 +130,12 @@ int main(int argc, char** argv)
                       .arg(text(pollWire.value, 1, QStringLiteral("Hz"), pollWire.note)));
     print(stdout,
           QStringLiteral("  panic latency                median %1, p99 %2  (%3 runs, %4-step "
-                         "DC2 stream queued)")
+                         "DC2 stream queued, host held by XOFF in %5)")
               .arg(text(panic.medianMs, 3, QStringLiteral("ms"), panic.note),
                    text(panic.p99Ms, 3, QStringLiteral("ms"), panic.note))
               .arg(panic.samples)
-              .arg(kFeedStreamSteps));
+              .arg(kFeedStreamSteps)
+              .arg(panic.pausedByXoff));
     print(stdout, QStringLiteral("  feed throughput              %1")
                       .arg(text(feed.value, 0, QStringLiteral("steps/s"), feed.note)));
     print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
