@@ -87,8 +87,9 @@ private:
         bool referencing = false;
         bool positionErrorReported = false;
         Jog jog = Jog::Idle;
-        bool jogBusy = false;      // a jog sequence is on the bus
-        bool velocityMove = false; // speed mode started by velocityMove (no lease)
+        bool jogBusy = false;       // a jog sequence is on the bus
+        bool stopScheduled = false; // a zero rate waits out the ramp's zero crossing
+        bool velocityMove = false;  // speed mode started by velocityMove (no lease)
         double jogDesired = 0;
         double jogApplied = 0;
         qint64 savedMaxFrequency = 0; // 'o' before speed mode, restored afterwards
@@ -137,7 +138,7 @@ private:
     QString motionRefusal(Axis axis, bool needsPosition) const;
     void startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
                           bool referenceRun);
-    void pumpJog(Axis axis);
+    void pumpJog(Axis axis, bool zeroConfirmed = false);
     QList<Step> rampDownSteps(Drive& d, NanotecBus::Priority priority);
     int rampTimeMs(const Drive& d, double fromHz) const;
     void referenceWithType(RequestId id, const QMap<Axis, int>& directions, bool internal);

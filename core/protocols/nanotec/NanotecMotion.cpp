@@ -4,6 +4,7 @@
 #include "Logging.h"
 #include "NanotecController.h"
 #include "transport/Transport.h"
+#include <QTimer>
 #include <QtMath>
 
 namespace stepdeck::nanotec {
@@ -191,6 +192,9 @@ QList<NanotecController::Step> NanotecController::rampDownSteps(Drive& d,
     }
     if (d.savedMaxFrequency > 0)
         steps << tolerant(exchange(axis, num("o", d.savedMaxFrequency), {}, priority, 1));
+    // The drive is ready now; later refusals must not go by the status from before 'S'.
+    steps << tolerant(exchange(
+        axis, "$", sink([this, axis](qint64 v) { applyStatusWord(m_drives[axis], v); }), priority));
     return steps;
 }
 
@@ -211,7 +215,7 @@ void NanotecController::applyJogVelocity(const AxisVelocities& stepsPerS)
     }
 }
 
-void NanotecController::pumpJog(Axis axis)
+void NanotecController::pumpJog(Axis axis, bool zeroConfirmed)
 {
     Drive& d = m_drives[axis];
     if (d.jogBusy || linkState() != LinkState::Connected)
@@ -255,6 +259,18 @@ void NanotecController::pumpJog(Axis axis)
     if (d.jog != Jog::Running)
         return;
     if (want == 0) {
+        // The host ramp passes through zero for one tick on a reversal; the drive reverses
+        // by itself (6.6), so only a zero that persists stops the run.
+        if (!zeroConfirmed) {
+            if (!d.stopScheduled) {
+                d.stopScheduled = true;
+                QTimer::singleShot(2 * options().jogTickMs + 10, this, [this, axis] {
+                    m_drives[axis].stopScheduled = false;
+                    pumpJog(axis, true);
+                });
+            }
+            return;
+        }
         d.jog = Jog::Stopping;
         d.jogBusy = true;
         runSteps(rampDownSteps(d, NanotecBus::Priority::Command), after(Jog::Idle, 0));

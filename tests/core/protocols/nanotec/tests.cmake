@@ -1,2 +1,3 @@
 stepdeck_add_test(tst_nanoteccodec SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanoteccodec.cpp LABELS unit)
 stepdeck_add_test(tst_nanotecsimulator SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecsimulator.cpp LABELS unit)
+stepdeck_add_test(tst_nanoteccontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanoteccontroller.cpp LABELS unit)

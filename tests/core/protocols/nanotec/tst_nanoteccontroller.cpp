@@ -1,0 +1,479 @@
+// NanotecController against a simulated bus of drives 1, 2, 3 (axes X, Y, Z) over
+// LoopbackTransport: scan, write & verify, motion in the manual's modes, jog in speed mode,
+// reference run, panic broadcast, silent and misbehaving drives.
+#include "protocols/nanotec/NanotecController.h"
+#include "protocols/nanotec/NanotecModel.h"
+#include "protocols/nanotec/NanotecSimulator.h"
+#include "transport/LoopbackTransport.h"
+#include <QDeadlineTimer>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::nanotec;
+
+class TestNanotecController : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void connect_readsFirmwareAndEnablesAutoStatus();
+    void scan_findsDrives123();
+    void write_verified_reachesEveryDrive();
+    void write_ignoredInvalidValue_isCaughtByReadBack();
+    void write_limitSwitchGroup_keepsOtherGroups();
+    void write_undefinedMaskBits_refusedBeforeSending();
+    void write_motorAddress_followsTheDrive();
+    void read_valuesPerAxis_andLastError();
+    void move_relative_reachesTargetPerDrive();
+    void move_absolute_refusedUntilReferenced();
+    void reference_external_thenAbsoluteMove();
+    void jog_speedMode_rampedByDriveAndStoppedGently();
+    void velocityMove_stop_rampsDownFirst();
+    void panic_broadcastOnce_confirmedPerDrive();
+    void silentDrive_flaggedOthersKeepWorking();
+    void allDrivesSilent_linkLost();
+    void wrongAddressReply_notAttributed();
+    void garbledReply_retriedAndCounted();
+    void sendRaw_refusesForbiddenCommands();
+    void records_writeSaveReadBack();
+    void errorMemory_decoded();
+
+private:
+    CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000);
+    int countFrames(const QByteArray& frame) const;
+
+    NanotecSimulator* m_sim = nullptr;
+    NanotecController* m_ctl = nullptr;
+    QObject* m_owner = nullptr;
+    RequestId m_nextId = 0;
+};
+
+void TestNanotecController::init()
+{
+    m_owner = new QObject;
+    auto [host, device] = LoopbackTransport::createPair(m_owner);
+    SimulatorOptions so;
+    so.addresses = {1, 2, 3};
+    m_sim = new NanotecSimulator(so, m_owner);
+    device->open(lineSettings());
+    m_sim->attach(device);
+    ControllerOptions co;
+    co.axisAddresses = {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
+    co.pollIntervalMs = 20;
+    co.commandTimeoutMs = 100;
+    co.jogLeaseMs = 5000;
+    m_ctl = new NanotecController(host, co, m_owner);
+    QVERIFY(run([this](RequestId id) { m_ctl->openLink(id); }).ok());
+    QCOMPARE(m_ctl->linkState(), LinkState::Connected);
+}
+
+void TestNanotecController::cleanup()
+{
+    delete m_owner;
+}
+
+CommandResult TestNanotecController::run(const std::function<void(RequestId)>& call, int timeoutMs)
+{
+    const RequestId id = ++m_nextId;
+    QSignalSpy spy(m_ctl, &Controller::requestFinished);
+    call(id);
+    auto find = [&]() -> std::optional<CommandResult> {
+        for (const auto& args : spy) {
+            const auto r = args.at(0).value<CommandResult>();
+            if (r.id == id)
+                return r;
+        }
+        return std::nullopt;
+    };
+    // QSignalSpy::wait runs an event loop (QTest::qWaitFor would sleep between rounds).
+    QDeadlineTimer deadline(timeoutMs);
+    while (!find() && !deadline.hasExpired())
+        spy.wait(int(qMax<qint64>(1, deadline.remainingTime())));
+    return find().value_or(CommandResult::failure(id, ErrorKind::Timeout, "test timeout"));
+}
+
+int TestNanotecController::countFrames(const QByteArray& frame) const
+{
+    return int(m_sim->receivedFrames().count(frame));
+}
+
+void TestNanotecController::connect_readsFirmwareAndEnablesAutoStatus()
+{
+    const MachineStatus& st = m_ctl->status();
+    QCOMPARE(st.drives.size(), 3);
+    for (const DriveStatus& d : st.drives) {
+        QVERIFY(d.responding);
+        QCOMPARE(d.firmware, QStringLiteral("SMCI47-S_RS485_04-12-2008"));
+    }
+    QCOMPARE(st.drives[1].address, 2);
+    QCOMPARE(st.drives[1].axes, QList<Axis>{Axis::Y});
+    for (NanotecDrive* d : m_sim->drives())
+        QCOMPARE(d->value('J'), qint64(1));   // 5.31 switched on
+    QVERIFY(!st.axes[Axis::X].positionKnown); // unknown until referenced
+    const Capabilities caps = m_ctl->capabilities();
+    QVERIFY(caps.multiDrive);
+    QVERIFY(!caps.hostRampedJog);
+    QCOMPARE(caps.axes, (QList<Axis>{Axis::X, Axis::Y, Axis::Z}));
+}
+
+void TestNanotecController::scan_findsDrives123()
+{
+    const CommandResult r = run([this](RequestId id) {
+        m_ctl->modelOperation(id, "scan", {{"first", 1}, {"last", 12}, {"timeoutMs", 20}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const QVariantList found = r.value.toList();
+    QCOMPARE(found.size(), 3);
+    for (int i = 0; i < 3; ++i) {
+        const QVariantMap d = found[i].toMap();
+        QCOMPARE(d["address"].toInt(), i + 1);
+        QCOMPARE(d["hardware"].toString(), QStringLiteral("SMCI47-S"));
+        QCOMPARE(d["interface"].toString(), QStringLiteral("RS485"));
+        QCOMPARE(d["date"].toString(), QStringLiteral("04-12-2008"));
+    }
+}
+
+void TestNanotecController::write_verified_reachesEveryDrive()
+{
+    ParameterSet set;
+    set["phase-current"].perAxis = {{Axis::X, 80}, {Axis::Y, 70}, {Axis::Z, 60}};
+    set["step-mode"].perAxis = {{Axis::X, "adaptive"}, {Axis::Y, "16"}, {Axis::Z, "1"}};
+    set["cl-motor-pole-pairs"].perAxis = {{Axis::X, "100"}, {Axis::Y, "50"}, {Axis::Z, "50"}};
+    const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, set, true); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_sim->drive(1)->value('i'), qint64(80));
+    QCOMPARE(m_sim->drive(3)->value('i'), qint64(60));
+    QCOMPARE(m_sim->drive(1)->value('g'), qint64(255));
+    QCOMPARE(m_sim->drive(1)->longValue("CL_motor_pp"), qint64(100));
+    QCOMPARE(m_sim->drive(1)->value('a'), qint64(9)); // 8.6: coupled to the step angle
+    QCOMPARE(countFrames("#1Zi\r"), 1);               // the read-back
+    QCOMPARE(countFrames("#2:CL_motor_pp\r"), 1);
+}
+
+void TestNanotecController::write_ignoredInvalidValue_isCaughtByReadBack()
+{
+    ParameterSet mode;
+    mode["motor-mode"].perAxis = {{Axis::X, "speed"}};
+    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, mode, true); }).ok());
+    // 6.6: p=2 is "nicht belegt" in speed mode; the drive echoes it and ignores it.
+    ParameterSet p;
+    p["positioning-mode"].perAxis = {{Axis::X, 2}};
+    const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, p, true); });
+    QCOMPARE(r.error, ErrorKind::VerifyFailed);
+    QVERIFY(r.message.contains("positioning-mode"));
+    QVERIFY(r.message.contains("drive 1"));
+    QCOMPARE(countFrames("#1p2\r"), 1);
+    // Without verify the same write "succeeds": that is why verify is the default.
+    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, p, false); }).ok());
+}
+
+void TestNanotecController::write_limitSwitchGroup_keepsOtherGroups()
+{
+    ParameterSet set;
+    set["limit-switch-behaviour-external-normal"].perAxis = {{Axis::Y, "stop"}};
+    set["limit-switch-behaviour-internal-reference"].perAxis = {{Axis::Y, "free-forward"}};
+    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, set, true); }).ok());
+    QCOMPARE(m_sim->drive(2)->value('l'), qint64((5154 & ~0x7803) | 0x2000 | 0x0001));
+    const CommandResult r = run([&](RequestId id) {
+        m_ctl->readParameters(id, {"limit-switch-behaviour-external-normal",
+                                   "limit-switch-behaviour-external-reference",
+                                   "limit-switch-behaviour-internal-normal"});
+    });
+    QVERIFY(r.ok());
+    const ParameterSet got = r.value.value<ParameterSet>();
+    QCOMPARE(got["limit-switch-behaviour-external-normal"].perAxis[Axis::Y].toString(),
+             QStringLiteral("stop"));
+    QCOMPARE(got["limit-switch-behaviour-external-reference"].perAxis[Axis::Y].toString(),
+             QStringLiteral("free-backward"));
+    QCOMPARE(got["limit-switch-behaviour-internal-normal"].perAxis[Axis::X].toString(),
+             QStringLiteral("ignore"));
+}
+
+void TestNanotecController::write_undefinedMaskBits_refusedBeforeSending()
+{
+    m_sim->clearReceivedFrames();
+    ParameterSet set;
+    set["io-mask"].perAxis = {{Axis::X, 64}};
+    const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, set, true); });
+    QCOMPARE(r.error, ErrorKind::InvalidValue);
+    ParameterSet range;
+    range["phase-current"].perAxis = {{Axis::X, 151}};
+    QCOMPARE(run([&](RequestId id) { m_ctl->writeParameters(id, range, true); }).error,
+             ErrorKind::InvalidValue);
+    for (const QByteArray& f : m_sim->receivedFrames())
+        QVERIFY2(!f.startsWith("#1L") && !f.startsWith("#1i"), f.constData());
+}
+
+void TestNanotecController::write_motorAddress_followsTheDrive()
+{
+    ParameterSet clash;
+    clash["motor-address"].perAxis = {{Axis::Z, 2}};
+    QCOMPARE(run([&](RequestId id) { m_ctl->writeParameters(id, clash, true); }).error,
+             ErrorKind::InvalidValue);
+    ParameterSet set;
+    set["motor-address"].perAxis = {{Axis::Z, 7}};
+    const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, set, true); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_ctl->addressOf(Axis::Z), 7);
+    QVERIFY(m_sim->drive(7));
+    QVERIFY(!m_sim->drive(3));
+    QVERIFY(run([this](RequestId id) { m_ctl->refreshStatus(id); }).ok());
+    QCOMPARE(m_ctl->status().drives[2].address, 7);
+    QVERIFY(m_ctl->status().drives[2].responding);
+}
+
+void TestNanotecController::read_valuesPerAxis_andLastError()
+{
+    m_sim->drive(2)->pushError(error::Temperature);
+    const CommandResult r = run([&](RequestId id) {
+        m_ctl->readParameters(id, {"phase-current", "cl-motor-pole-pairs", "last-error",
+                                   "direction-reversal", "ramp-mode"});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const ParameterSet got = r.value.value<ParameterSet>();
+    QCOMPARE(got["phase-current"].perAxis[Axis::Z].toLongLong(), qint64(50));
+    QCOMPARE(got["cl-motor-pole-pairs"].perAxis[Axis::X].toString(), QStringLiteral("50"));
+    QCOMPARE(got["last-error"].perAxis[Axis::X].toString(), QStringLiteral("none"));
+    QCOMPARE(got["last-error"].perAxis[Axis::Y].toString(), QStringLiteral("over-temperature"));
+    QCOMPARE(got["direction-reversal"].perAxis[Axis::Y].toBool(), false);
+    QCOMPARE(got["ramp-mode"].perAxis[Axis::Y].toString(), QStringLiteral("trapezoid"));
+    // Everything readable in one go (the setup pages and export do this).
+    const CommandResult all = run([&](RequestId id) { m_ctl->readParameters(id, {}); }, 20000);
+    QVERIFY2(all.ok(), qPrintable(all.message));
+    QCOMPARE(all.value.value<ParameterSet>().size(), parameterTable().size());
+}
+
+void TestNanotecController::move_relative_reachesTargetPerDrive()
+{
+    const CommandResult r = run([this](RequestId id) {
+        m_ctl->moveRelative(id, {{Axis::X, 300}, {Axis::Z, -200}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QVERIFY(m_ctl->status().axes[Axis::X].moving);
+    // Refused while the drive is still moving.
+    QCOMPARE(run([this](RequestId id) {
+                 m_ctl->moveRelative(id, {{Axis::X, 10}});
+             }).error,
+             ErrorKind::Refused);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().anyMoving() && !m_ctl->status().busy, 5000);
+    QCOMPARE(m_sim->drive(1)->position(), qint64(300));
+    QCOMPARE(m_sim->drive(3)->position(), qint64(-200));
+    QCOMPARE(m_sim->drive(2)->position(), qint64(0));
+    QTRY_COMPARE(m_ctl->status().axes[Axis::X].position, qint64(300));
+    QCOMPARE(m_ctl->status().axes[Axis::Z].position, qint64(-200));
+    QVERIFY(!m_ctl->status().axes[Axis::X].positionEstimated);
+    QVERIFY(countFrames("#3d0\r") >= 1);
+}
+
+void TestNanotecController::move_absolute_refusedUntilReferenced()
+{
+    const CommandResult r = run([this](RequestId id) {
+        m_ctl->moveAbsolute(id, {{Axis::Y, 100}});
+    });
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY(r.message.contains("reference"));
+    QCOMPARE(countFrames("#2A\r"), 0);
+    // 5.18 'c' makes the current position the reference.
+    QVERIFY(run([this](RequestId id) {
+                m_ctl->modelOperation(id, "reset-position", {{"axis", "Y"}});
+            }).ok());
+    QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, 100}}); }).ok());
+    QTRY_COMPARE_WITH_TIMEOUT(m_sim->drive(2)->position(), qint64(100), 5000);
+    QVERIFY(countFrames("#2p2\r") == 1);
+}
+
+void TestNanotecController::reference_external_thenAbsoluteMove()
+{
+    NanotecDrive* d = m_sim->drive(1);
+    d->setSwitches(-250, 100000);
+    ParameterSet set;
+    set["limit-switch-behaviour-external-reference"].perAxis = {{Axis::X, "free-forward"}};
+    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, set, true); }).ok());
+    QVERIFY(run([this](RequestId id) { m_ctl->reference(id, {{Axis::X, -1}}); }).ok());
+    QCOMPARE(countFrames("#1p4\r"), 1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].referenced, 5000);
+    QVERIFY(m_ctl->status().axes[Axis::X].positionKnown);
+    QVERIFY(!m_ctl->status().axes[Axis::Y].referenced);
+    QCOMPARE(d->position(), qint64(0));
+    QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::X, 150}}); }).ok());
+    QTRY_COMPARE_WITH_TIMEOUT(d->position(), qint64(150), 5000);
+}
+
+void TestNanotecController::jog_speedMode_rampedByDriveAndStoppedGently()
+{
+    NanotecDrive* d = m_sim->drive(2);
+    m_ctl->setJogVelocity({{Axis::Y, 2000}});
+    QTRY_VERIFY_WITH_TIMEOUT(d->speed() >= 1999, 3000);
+    QCOMPARE(d->value('!'), qint64(2));
+    QVERIFY(m_ctl->status().axes[Axis::Y].jogging);
+    m_ctl->setJogVelocity({{Axis::Y, -1500}}); // direction change: ramped by the drive
+    QTRY_VERIFY_WITH_TIMEOUT(d->speed() <= -1499, 3000);
+    QCOMPARE(countFrames("#2A\r"), 1); // no restart: speed and direction change on the fly
+    m_ctl->endJog();
+    QTRY_VERIFY_WITH_TIMEOUT(d->ready(), 5000);
+    QTRY_VERIFY(!m_ctl->status().axes[Axis::Y].jogging);
+    QVERIFY(!decodeStatus(d->statusWord()).positionError); // lowered to 'u' before 'S'
+    QCOMPARE(d->position(), d->encoderPosition());
+    QCOMPARE(d->value('o'), qint64(1000)); // the record's max frequency is restored
+    const QList<QByteArray> f = m_sim->receivedFrames();
+    QVERIFY(f.indexOf("#2o400\r") >= 0 && f.indexOf("#2o400\r") < f.lastIndexOf("#2S\r"));
+}
+
+void TestNanotecController::velocityMove_stop_rampsDownFirst()
+{
+    QVERIFY(run([this](RequestId id) { m_ctl->velocityMove(id, {{Axis::Z, 3000}}); }).ok());
+    NanotecDrive* d = m_sim->drive(3);
+    QTRY_VERIFY_WITH_TIMEOUT(d->speed() >= 2999, 3000);
+    QVERIFY(m_ctl->status().axes[Axis::Z].moving);
+    const CommandResult r = run([this](RequestId id) { m_ctl->stop(id); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QVERIFY(d->ready());
+    QVERIFY(!decodeStatus(d->statusWord()).positionError);
+    QCOMPARE(d->value('o'), qint64(1000));
+}
+
+void TestNanotecController::panic_broadcastOnce_confirmedPerDrive()
+{
+    QVERIFY(run([this](RequestId id) {
+                m_ctl->velocityMove(id, {{Axis::X, 2000}, {Axis::Y, -2000}});
+            }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->drive(2)->speed() <= -1999, 3000);
+    QSignalSpy status(m_ctl, &Controller::statusChanged);
+    const CommandResult r = run([this](RequestId id) { m_ctl->panic(id); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(countFrames("#*S\r"), 1);
+    for (NanotecDrive* d : m_sim->drives())
+        QVERIFY(d->ready());
+    QVERIFY(m_ctl->status().panic);
+    QVERIFY(!m_ctl->status().axes[Axis::X].positionKnown);
+    const CommandResult refused = run([this](RequestId id) {
+        m_ctl->moveRelative(id, {{Axis::X, 10}});
+    });
+    QCOMPARE(refused.error, ErrorKind::Refused);
+    QSignalSpy jogRefused(m_ctl, &Controller::jogRefused);
+    m_ctl->setJogVelocity({{Axis::X, 500}});
+    QCOMPARE(jogRefused.count(), 1);
+    QVERIFY(run([this](RequestId id) { m_ctl->reset(id); }).ok());
+    QVERIFY(!m_ctl->status().panic);
+}
+
+void TestNanotecController::silentDrive_flaggedOthersKeepWorking()
+{
+    QSignalSpy errors(m_ctl, &Controller::errorOccurred);
+    m_sim->setDriveSilent(2, true);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().drives[1].responding, 3000);
+    QCOMPARE(m_ctl->linkState(), LinkState::Connected);
+    QVERIFY(m_ctl->status().commFault);
+    QVERIFY(m_ctl->status().drives[0].responding);
+    QVERIFY(m_ctl->status().drives[2].responding);
+    QTRY_VERIFY(!errors.isEmpty());
+    QVERIFY(errors.first().at(0).toString().contains("drive 2"));
+    QCOMPARE(run([this](RequestId id) {
+                 m_ctl->moveRelative(id, {{Axis::Y, 10}});
+             }).error,
+             ErrorKind::Refused);
+    QVERIFY(run([this](RequestId id) { m_ctl->moveRelative(id, {{Axis::X, 100}}); }).ok());
+    QTRY_COMPARE_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].position, qint64(100), 5000);
+    m_sim->setDriveSilent(2, false); // back on the bus: picked up by the slower poll of it
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().drives[1].responding, 5000);
+    QVERIFY(!m_ctl->status().commFault);
+}
+
+void TestNanotecController::allDrivesSilent_linkLost()
+{
+    for (int a : {1, 2, 3})
+        m_sim->setDriveSilent(a, true);
+    QTRY_COMPARE_WITH_TIMEOUT(m_ctl->linkState(), LinkState::Lost, 5000);
+}
+
+void TestNanotecController::wrongAddressReply_notAttributed()
+{
+    ParameterSet set;
+    set["phase-current"].perAxis = {{Axis::X, 33}, {Axis::Y, 66}};
+    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, set, true); }).ok());
+    m_ctl->setPollInterval(60000); // keep status polls from taking the fault
+    QTRY_VERIFY(m_ctl->bus()->isIdle());
+    m_sim->replyFromWrongAddress(1, 1, 2); // drive 1's next reply claims to be drive 2
+    const CommandResult r =
+        run([&](RequestId id) { m_ctl->readParameters(id, {"phase-current"}); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const ParameterSet got = r.value.value<ParameterSet>();
+    QCOMPARE(got["phase-current"].perAxis[Axis::X].toLongLong(), qint64(33));
+    QCOMPARE(got["phase-current"].perAxis[Axis::Y].toLongLong(), qint64(66));
+    QCOMPARE(countFrames("#1Zi\r"), 3); // verify, the misattributed one, the retry
+}
+
+void TestNanotecController::garbledReply_retriedAndCounted()
+{
+    const quint64 before = m_ctl->status().resyncCount;
+    m_sim->garbleReplies(3, 1);
+    const CommandResult r = run([&](RequestId id) { m_ctl->readParameters(id, {"idle-current"}); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(r.value.value<ParameterSet>()["idle-current"].perAxis[Axis::Z].toLongLong(),
+             qint64(25));
+    QVERIFY(m_ctl->status().resyncCount > before);
+}
+
+void TestNanotecController::sendRaw_refusesForbiddenCommands()
+{
+    CommandResult r = run([this](RequestId id) { m_ctl->sendRaw(id, "#1Zi\r"); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(r.value.toString(), QStringLiteral("001Zi50"));
+    r = run([this](RequestId id) { m_ctl->sendRaw(id, "#2/"); }); // the console shows '?'
+    QVERIFY(r.ok());
+    QCOMPARE(r.value.toString(), QStringLiteral("002/?"));
+    for (const QByteArray& raw : {QByteArray("#1|0\r"), QByteArray("#*@A\r")}) {
+        r = run([&](RequestId id) { m_ctl->sendRaw(id, raw); });
+        QCOMPARE(r.error, ErrorKind::Refused);
+        QCOMPARE(countFrames(raw), 0);
+    }
+}
+
+void TestNanotecController::records_writeSaveReadBack()
+{
+    const QVariantMap values{
+        {"travel-distance", -1234}, {"max-frequency", 2000}, {"direction", "right"}};
+    CommandResult r = run([&](RequestId id) {
+        m_ctl->modelOperation(id, "write-record",
+                              {{"axis", "Y"}, {"record", 5}, {"values", values}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    r = run([&](RequestId id) {
+        m_ctl->modelOperation(id, "read-record", {{"axis", "Y"}, {"record", 5}});
+    });
+    QVERIFY(r.ok());
+    const QVariantMap got = r.value.toMap()["values"].toMap();
+    QCOMPARE(got["travel-distance"].toLongLong(), qint64(-1234));
+    QCOMPARE(got["max-frequency"].toLongLong(), qint64(2000));
+    QCOMPARE(got["direction"].toString(), QStringLiteral("right"));
+    QCOMPARE(got["ramp"].toLongLong(), qint64(2364)); // untouched field kept
+    r = run([&](RequestId id) { m_ctl->modelOperation(id, "read-all-records", {{"axis", "Y"}}); });
+    QVERIFY(r.ok());
+    QCOMPARE(r.value.toList().size(), kRecordCount);
+    r = run([&](RequestId id) {
+        m_ctl->modelOperation(id, "write-record",
+                              {{"axis", "Y"}, {"record", 5}, {"values", QVariantMap{{"ramp", 0}}}});
+    });
+    QCOMPARE(r.error, ErrorKind::InvalidValue);
+}
+
+void TestNanotecController::errorMemory_decoded()
+{
+    m_sim->drive(3)->pushError(error::Temperature);
+    m_sim->drive(3)->pushError(error::Position);
+    const CommandResult r = run([&](RequestId id) {
+        m_ctl->modelOperation(id, "read-error-memory", {{"axis", "Z"}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const QVariantMap m = r.value.toMap();
+    QCOMPARE(m["last"].toInt(), 2);
+    const QVariantList entries = m["entries"].toList();
+    QCOMPARE(entries.size(), kErrorSlots);
+    QCOMPARE(entries[0].toMap()["name"].toString(), QStringLiteral("ERROR_TEMP"));
+    QCOMPARE(entries[1].toMap()["code"].toInt(), error::Position);
+}
+
+QTEST_GUILESS_MAIN(TestNanotecController)
+#include "tst_nanoteccontroller.moc"
