@@ -57,12 +57,16 @@ void SerialTransport::open(const LineSettings& settings)
     m_failed = false;
     const quint64 gen = ++m_openGeneration;
     m_port.setPortName(m_portName);
-    // Settings before open() take effect atomically with the open; afterwards they are set
-    // once more so a failure is reported against the setting, not lost.
+    // Settings given before open() take effect with the open itself (no moment at Qt's
+    // default 9600 8N1); afterwards they are set once more so that a setting the port refuses
+    // is reported by name rather than lost.
     QString reason;
     m_expectErrors = true;
-    bool ok = m_port.open(QIODevice::ReadWrite);
-    if (!ok)
+    applySettings(settings, nullptr);
+    bool ok = !m_portName.isEmpty() && m_port.open(QIODevice::ReadWrite);
+    if (m_portName.isEmpty())
+        reason = tr("no serial port given");
+    else if (!ok)
         reason = reasonFor(m_port.error());
     else if (!applySettings(settings, &reason))
         ok = false;
