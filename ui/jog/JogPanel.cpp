@@ -29,6 +29,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, this))
 {
+    setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
     m_xy->setObjectName(QStringLiteral("jogPadXY"));
     m_z->setObjectName(QStringLiteral("jogStickZ"));
     m_u->setObjectName(QStringLiteral("jogStickU"));
@@ -103,7 +104,12 @@ QWidget* JogPanel::buildSidePanel()
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
     m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
                                    "active and no text field has the focus"));
-    connect(m_keyboardCheck, &QCheckBox::toggled, m_keyboard, &KeyboardJog::setEnabled);
+    connect(m_keyboardCheck, &QCheckBox::toggled, this, [this](bool on) {
+        m_keyboard->setEnabled(on);
+        // Arrow keys typed into a text field stay there: take the focus so they jog.
+        if (on)
+            setFocus(Qt::OtherFocusReason);
+    });
     v->addWidget(m_keyboardCheck);
 
     m_refusal->setObjectName(QStringLiteral("jogRefusal"));

@@ -20,7 +20,7 @@ ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpe
         m_line->setAlignment(Qt::AlignRight);
         m_line->setMinimumWidth(80);
         tip += QStringLiteral("\n") + tr("Allowed: %1 to %2").arg(spec.minimum).arg(spec.maximum);
-        connect(m_line, &QLineEdit::textEdited, this, [this] {
+        connect(m_line, &QLineEdit::textChanged, this, [this] {
             refreshLook();
             Q_EMIT edited();
         });

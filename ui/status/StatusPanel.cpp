@@ -196,6 +196,11 @@ QString StatusPanel::temperatureText() const
     return m_temperature ? m_temperature->text() : QString();
 }
 
+QString StatusPanel::temperatureNote() const
+{
+    return m_temperatureNote ? m_temperatureNote->text() : QString();
+}
+
 QString StatusPanel::countersText() const
 {
     return m_counters ? m_counters->text() : QString();

@@ -29,6 +29,7 @@ public:
     RawWordView* rawWord(const QString& key) const;
     QString temperatureText() const;
     QString countersText() const;
+    QString temperatureNote() const;
 
 private:
     void rebuild();

@@ -1,0 +1,81 @@
+// Charts: samples follow the status, the time window limits what is shown, pause freezes
+// it, and the visible data exports to CSV and the charts to PNG.
+#include "UiTestSupport.h"
+#include "charts/ChartsPanel.h"
+#include <QCheckBox>
+#include <QImage>
+#include <QTemporaryDir>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestChartsPanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void sampler_window_keepsNewestSeconds();
+    void sampler_csv_headerAndRows();
+    void panel_followsStatus_exportsCsvAndPng();
+};
+
+void TestChartsPanel::sampler_window_keepsNewestSeconds()
+{
+    ui::ChartSampler sampler;
+    sampler.setInterval(0);
+    MachineStatus s;
+    s.axes.insert(Axis::X, AxisStatus{});
+    for (int i = 0; i < 5; ++i)
+        sampler.add(s, 20.0);
+    QCOMPARE(sampler.samples().size(), 5);
+    QVERIFY(sampler.window(3600).size() == 5);
+    QVERIFY(sampler.window(-1).isEmpty());
+}
+
+void TestChartsPanel::sampler_csv_headerAndRows()
+{
+    ui::ChartSample a;
+    a.t = 1.5;
+    a.position = {{Axis::X, 10}, {Axis::Y, -20}};
+    a.velocity = {{Axis::X, 100}, {Axis::Y, 0}};
+    a.temperature = 31;
+    a.pollRate = 19.5;
+    const QString csv = ui::ChartSampler::toCsv({a}, {Axis::X, Axis::Y});
+    const QStringList lines = csv.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 2);
+    QCOMPARE(lines[0], QStringLiteral("time_s,position_X_steps,position_Y_steps,"
+                                      "velocity_X_steps_per_s,velocity_Y_steps_per_s,"
+                                      "temperature_c,poll_rate_hz"));
+    QCOMPARE(lines[1], QStringLiteral("1.500,10,-20,100.0,0.0,31.0,19.5"));
+}
+
+void TestChartsPanel::panel_followsStatus_exportsCsvAndPng()
+{
+    QSettings().clear();
+    UiFixture f;
+    f.window->show();
+    QVERIFY(f.connectSim());
+    ui::ChartsPanel* charts = f.window->chartsPanel();
+    QTRY_VERIFY_WITH_TIMEOUT(charts->sampler()->samples().size() >= 5, 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(charts->pointCount(0) >= 5, 3000);
+    charts->pauseCheck()->setChecked(true);
+    const int frozen = charts->pointCount(0);
+    const int from = f.statusCount;
+    QTRY_VERIFY_WITH_TIMEOUT(f.statusCount - from >= 10, 3000);
+    charts->refresh();
+    QCOMPARE(charts->pointCount(0), frozen);
+
+    QTemporaryDir dir;
+    QString error;
+    const QString csv = dir.filePath(QStringLiteral("c.csv"));
+    QVERIFY2(charts->exportCsv(csv, &error), qPrintable(error));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll().count('\n'), frozen + 1); // header + the visible samples
+    const QString png = dir.filePath(QStringLiteral("c.png"));
+    QVERIFY2(charts->exportPng(png, &error), qPrintable(error));
+    QVERIFY(!QImage(png).isNull());
+}
+
+QTEST_MAIN(TestChartsPanel)
+#include "tst_chartspanel.moc"

@@ -1,0 +1,125 @@
+// Connection bar: lists the simulator and typed ports, connects through a real
+// pseudo-terminal (QSerialPort), and shows the disconnected state without freezing when the
+// peer vanishes (the USB adapter pulled), then reconnects.
+#include "UiTestSupport.h"
+#include "common/LedIndicator.h"
+#include "main/SafetyBar.h"
+#include "sim/PtyEndpoint.h"
+#include <QComboBox>
+#include <QPushButton>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestConnectionBar : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+
+    void portCombo_offersSimulator();
+    void portSpec_typedTcpOrPath_usedVerbatim_data();
+    void portSpec_typedTcpOrPath_usedVerbatim();
+    void pty_peerVanishes_showsDisconnectedWithoutFreezing();
+    void unknownPort_connectFails_saysWhy();
+
+private:
+    bool startPtyDevice();
+    std::unique_ptr<UiFixture> m_f;
+    std::unique_ptr<PtyEndpoint> m_pty;
+    std::unique_ptr<elab::ElabSimulator> m_sim;
+};
+
+void TestConnectionBar::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<UiFixture>();
+    m_f->window->show();
+}
+
+void TestConnectionBar::cleanup()
+{
+    m_f.reset();
+    m_sim.reset();
+    m_pty.reset();
+}
+
+bool TestConnectionBar::startPtyDevice()
+{
+    m_pty = std::make_unique<PtyEndpoint>();
+    QString error;
+    if (!m_pty->create(&error)) {
+        qWarning() << error;
+        return false;
+    }
+    SimulatorOptions options;
+    options.line = findModel(QStringLiteral("elab"))->line;
+    m_sim = std::make_unique<elab::ElabSimulator>(options);
+    QSignalSpy opened(m_pty.get(), &Transport::opened);
+    m_pty->open(options.line);
+    if (!opened.wait(2000))
+        return false;
+    m_sim->attach(m_pty.get());
+    return true;
+}
+
+void TestConnectionBar::portCombo_offersSimulator()
+{
+    QComboBox* combo = m_f->window->connectionBar()->portCombo();
+    QVERIFY(combo->findData(QStringLiteral("sim")) >= 0);
+    QVERIFY(combo->isEditable());
+}
+
+void TestConnectionBar::portSpec_typedTcpOrPath_usedVerbatim_data()
+{
+    QTest::addColumn<QString>("typed");
+    QTest::newRow("tcp") << QStringLiteral("tcp://192.168.1.20:4001");
+    QTest::newRow("pty path") << QStringLiteral("/dev/pts/7");
+}
+
+void TestConnectionBar::portSpec_typedTcpOrPath_usedVerbatim()
+{
+    QFETCH(QString, typed);
+    m_f->window->connectionBar()->setPortSpec(typed);
+    QCOMPARE(m_f->window->connectionBar()->portSpec(), typed);
+}
+
+void TestConnectionBar::pty_peerVanishes_showsDisconnectedWithoutFreezing()
+{
+    QVERIFY(startPtyDevice());
+    ui::ConnectionBar* bar = m_f->window->connectionBar();
+    bar->setSelectedModel(QStringLiteral("elab"));
+    bar->setPortSpec(m_pty->slavePath());
+    QCOMPARE(bar->portSpec(), m_pty->slavePath());
+    bar->connectNow();
+    QVERIFY(m_f->waitConnected(5000));
+    QVERIFY(m_f->window->windowTitle().contains(m_pty->slavePath()));
+    QCOMPARE(bar->connectButton()->text(), QStringLiteral("Disconnect"));
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount > 3, 3000); // polls flow over the pty
+
+    m_pty->vanish();
+    QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->context()->isConnected(), 3000);
+    QTRY_COMPARE(bar->connectButton()->text(), QStringLiteral("Connect"));
+    QVERIFY(!m_f->window->lastError().isEmpty());
+    QVERIFY(m_f->window->safetyBar()->bannerText().contains(QStringLiteral("Link lost")) ||
+            m_f->window->safetyBar()->bannerText().contains(QStringLiteral("Not connected")));
+    // Still responsive: STOP is handled and reports the link state.
+    m_f->window->stopAction()->trigger();
+    QTRY_VERIFY(
+        m_f->window->lastError().contains(QStringLiteral("not connected"), Qt::CaseInsensitive));
+}
+
+void TestConnectionBar::unknownPort_connectFails_saysWhy()
+{
+    ui::ConnectionBar* bar = m_f->window->connectionBar();
+    bar->setPortSpec(QStringLiteral("/dev/does-not-exist-stepdeck"));
+    bar->connectNow();
+    QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->lastError().isEmpty(), 5000);
+    QVERIFY(!m_f->window->context()->isConnected());
+    QTRY_COMPARE(bar->connectButton()->text(), QStringLiteral("Connect"));
+}
+
+QTEST_MAIN(TestConnectionBar)
+#include "tst_connectionbar.moc"

@@ -1,0 +1,248 @@
+// Jog panel against the in-process E-LAB simulator through the ControllerSession: the pad's
+// deflection becomes ramped <DC4> jog commands, release ramps to zero, the lease is renewed
+// while held, refusals are visible, keyboard jog ends on focus loss and ignores auto-repeat.
+#include "UiTestSupport.h"
+#include "console/TrafficConsole.h"
+#include "jog/IncrementalJogWidget.h"
+#include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
+#include "jog/KeyboardJog.h"
+#include <QCheckBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QToolButton>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+namespace {
+void mouse(QWidget* w, QEvent::Type type, const QPointF& pos)
+{
+    const Qt::MouseButtons buttons =
+        type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
+    QMouseEvent e(type, pos, w->mapToGlobal(pos), Qt::LeftButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(w, &e);
+}
+
+QList<qint64> jogValues(const QList<elab::Command>& dc4, int axisIndex)
+{
+    QList<qint64> out;
+    for (const elab::Command& c : dc4)
+        out << c.values[axisIndex];
+    return out;
+}
+} // namespace
+
+class TestJogPanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup() { m_f.reset(); }
+
+    void jog_draggedKnob_rampsUpThenReleaseRampsToZero();
+    void jog_heldKnob_leaseRenewedSpeedHeld();
+    void jog_notConnected_refusedWithVisibleReason();
+    void jog_panicActive_refusedWithVisibleReason();
+    void jog_limitSwitch_shownOnPadEdge();
+    void keyboardJog_focusLoss_endsJog();
+    void keyboardJog_windowDeactivated_endsJog();
+    void keyboardJog_autoRepeat_ignored();
+    void incrementalJog_plusButton_movesByStepSize();
+
+private:
+    bool connectAndSetUp();
+    std::unique_ptr<UiFixture> m_f;
+};
+
+void TestJogPanel::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<UiFixture>();
+    m_f->window->show();
+    QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
+}
+
+bool TestJogPanel::connectAndSetUp()
+{
+    if (!m_f->connectSim())
+        return false;
+    QSignalSpy done(m_f->session, &ControllerSession::requestFinished);
+    const RequestId id = m_f->writeRampSetup();
+    for (int i = 0; i < 100; ++i) {
+        for (const QList<QVariant>& args : done) {
+            const CommandResult r = args.at(0).value<CommandResult>();
+            if (r.id == id)
+                return r.ok();
+        }
+        done.wait(50);
+    }
+    return false;
+}
+
+void TestJogPanel::jog_draggedKnob_rampsUpThenReleaseRampsToZero()
+{
+    QVERIFY(connectAndSetUp());
+    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    const double max = m_f->window->jogController()->maxSpeed(Axis::X);
+    const qsizetype start = m_f->records.size();
+
+    mouse(pad, QEvent::MouseButtonPress, pad->centre());
+    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(1.0, 0.0)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
+
+    // Ramped: several intermediate rates on the way up, never a jump to full speed.
+    const QList<qint64> up = jogValues(m_f->commands(elab::ctrl::DC4, start), 0);
+    QVERIFY2(up.size() >= 3, qPrintable(QString::number(up.size())));
+    QVERIFY(up.first() > 0 && up.first() < qint64(max));
+    for (int i = 1; i < up.size(); ++i)
+        QVERIFY(up.at(i) >= up.at(i - 1));
+    QCOMPARE(up.last(), qint64(max));
+    QCOMPARE(jogValues(m_f->commands(elab::ctrl::DC4, start), 1).last(), qint64(0)); // Y untouched
+
+    const qsizetype released = m_f->records.size();
+    mouse(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(1.0, 0.0)));
+    QVERIFY(!pad->isDragging());
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+    const QList<qint64> down = jogValues(m_f->commands(elab::ctrl::DC4, released), 0);
+    QVERIFY(down.size() >= 3);
+    QVERIFY(down.first() > 0 && down.first() < qint64(max)); // ramps, no step to zero
+    QCOMPARE(down.last(), qint64(0));
+}
+
+void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
+{
+    QVERIFY(connectAndSetUp());
+    ui::JoystickPad* z = m_f->window->jogPanel()->zStick();
+    const double max = m_f->window->jogController()->maxSpeed(Axis::Z);
+    mouse(z, QEvent::MouseButtonPress, z->centre());
+    mouse(z, QEvent::MouseMove, z->pointFor(QPointF(0.0, -1.0)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), -max, 5000);
+    // Far longer than the core's 300 ms lease: the panel keeps renewing it.
+    const int from = m_f->statusCount;
+    double slowest = max;
+    QObject ctx;
+    connect(m_f->session, &ControllerSession::statusChanged, &ctx, [&](const MachineStatus& s) {
+        slowest = qMin(slowest, qAbs(s.axes.value(Axis::Z).commandedVelocity));
+    });
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount - from >= 25, 5000);
+    QCOMPARE(slowest, max);
+    mouse(z, QEvent::MouseButtonRelease, z->centre());
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), 0.0, 5000);
+}
+
+void TestJogPanel::jog_notConnected_refusedWithVisibleReason()
+{
+    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    mouse(pad, QEvent::MouseButtonPress, pad->centre());
+    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.0, 0.8)));
+    QLabel* refusal = m_f->window->jogPanel()->refusalLabel();
+    QVERIFY2(refusal->text().contains(QStringLiteral("not connected")),
+             qPrintable(refusal->text()));
+    QVERIFY(!m_f->window->jogController()->isJogging());
+    mouse(pad, QEvent::MouseButtonRelease, pad->centre());
+}
+
+void TestJogPanel::jog_panicActive_refusedWithVisibleReason()
+{
+    QVERIFY(connectAndSetUp());
+    QVERIFY(m_f->withSim([](elab::ElabSimulator* sim) { sim->setPanicButton(true); }));
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().panic, 3000);
+    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    const qsizetype start = m_f->records.size();
+    mouse(pad, QEvent::MouseButtonPress, pad->centre());
+    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(1.0, 0.0)));
+    QTRY_VERIFY(
+        m_f->window->jogPanel()->refusalLabel()->text().contains(QStringLiteral("emergency stop")));
+    mouse(pad, QEvent::MouseButtonRelease, pad->centre());
+    for (const elab::Command& c : m_f->commands(elab::ctrl::DC4, start))
+        QCOMPARE(c.values[0], qint64(0)); // nothing but zero rates ever sent
+}
+
+void TestJogPanel::jog_limitSwitch_shownOnPadEdge()
+{
+    QVERIFY(connectAndSetUp());
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    QVERIFY(!panel->xyPad()->isLimitActive(1));
+    QVERIFY(
+        m_f->withSim([](elab::ElabSimulator* sim) { sim->setLimitSwitchActuated(Axis::Y, true); }));
+    QTRY_VERIFY_WITH_TIMEOUT(panel->xyPad()->isLimitActive(1), 3000);
+    QVERIFY(!panel->xyPad()->isLimitActive(0));
+    QVERIFY(!panel->zStick()->isLimitActive(1));
+    QVERIFY(m_f->withSim(
+        [](elab::ElabSimulator* sim) { sim->setLimitSwitchActuated(Axis::Y, false); }));
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->xyPad()->isLimitActive(1), 3000);
+}
+
+void TestJogPanel::keyboardJog_focusLoss_endsJog()
+{
+    QVERIFY(connectAndSetUp());
+    m_f->window->jogPanel()->keyboardCheck()->setChecked(true);
+    m_f->window->jogPanel()->xyPad()->window()->setFocus();
+    QTest::keyPress(m_f->window.get(), Qt::Key_Right);
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::X) > 0, 3000);
+    QVERIFY(m_f->window->keyboardJog()->isJogging());
+
+    // The key is never released: moving the focus alone must end the jog.
+    QLineEdit* other = m_f->window->trafficConsole()->sendLine();
+    m_f->window->raisePage(m_f->window->trafficConsole());
+    other->setFocus();
+    QTRY_VERIFY(other->hasFocus());
+    QVERIFY(!m_f->window->keyboardJog()->isJogging());
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+}
+
+void TestJogPanel::keyboardJog_windowDeactivated_endsJog()
+{
+    QVERIFY(connectAndSetUp());
+    m_f->window->jogPanel()->keyboardCheck()->setChecked(true);
+    QTest::keyPress(m_f->window.get(), Qt::Key_PageUp);
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::Z) > 0, 3000);
+    QEvent deactivate(QEvent::WindowDeactivate);
+    QApplication::sendEvent(m_f->window.get(), &deactivate);
+    QVERIFY(!m_f->window->keyboardJog()->isJogging());
+    QVERIFY(!m_f->window->jogController()->isJogging());
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), 0.0, 5000);
+}
+
+void TestJogPanel::keyboardJog_autoRepeat_ignored()
+{
+    QVERIFY(connectAndSetUp());
+    m_f->window->jogPanel()->keyboardCheck()->setChecked(true);
+    ui::KeyboardJog* keyboard = m_f->window->keyboardJog();
+    // An auto-repeat press without a real press first (the real one went elsewhere).
+    QKeyEvent repeat(QEvent::KeyPress, Qt::Key_Left, Qt::NoModifier, QString(), true);
+    QApplication::sendEvent(m_f->window.get(), &repeat);
+    QVERIFY(!keyboard->isJogging());
+    QTest::keyPress(m_f->window.get(), Qt::Key_Left);
+    QVERIFY(keyboard->isJogging());
+    // Auto-repeat release/press pairs neither stop nor restart the motion.
+    QKeyEvent repRelease(QEvent::KeyRelease, Qt::Key_Left, Qt::NoModifier, QString(), true);
+    QApplication::sendEvent(m_f->window.get(), &repRelease);
+    QApplication::sendEvent(m_f->window.get(), &repeat);
+    QVERIFY(keyboard->isJogging());
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::X) < 0, 3000);
+    QTest::keyRelease(m_f->window.get(), Qt::Key_Left);
+    QVERIFY(!keyboard->isJogging());
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+}
+
+void TestJogPanel::incrementalJog_plusButton_movesByStepSize()
+{
+    QVERIFY(connectAndSetUp());
+    const qsizetype start = m_f->records.size();
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    panel->incremental()->setStepSize(1000);
+    panel->incremental()->button(Axis::Y, +1)->click();
+    // FastMoveXY with Y = +1000 (0x3E8): the narrowest command for an X/Y move.
+    QTRY_VERIFY_WITH_TIMEOUT(!m_f->commands(elab::ctrl::FF, start).isEmpty(), 3000);
+    const elab::Command move = m_f->commands(elab::ctrl::FF, start).first();
+    QCOMPARE(move.values[0], qint64(0));
+    QCOMPARE(move.values[1], qint64(1000));
+}
+
+QTEST_MAIN(TestJogPanel)
+#include "tst_jogpanel.moc"

@@ -1,0 +1,120 @@
+// Referencing and the position read-out: Reference all runs Z first, then X and Y together;
+// the read-out shows unknown before and referenced after, estimated after a jog, and the work
+// origin and units apply.
+#include "UiTestSupport.h"
+#include "jog/JogController.h"
+#include "position/PositionPanel.h"
+#include "position/ReferencePanel.h"
+#include "position/ReferenceRunner.h"
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestReferencePanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup() { m_f.reset(); }
+
+    void plan_defaultOrder_zFirstThenXY();
+    void plan_skippedAxis_left_out();
+    void referenceAll_runsStagesInOrder_allReferenced();
+    void position_unknownBeforeReference_estimatedAfterJog();
+    void position_workZeroAndUnits_applied();
+
+private:
+    bool setUp();
+    std::unique_ptr<UiFixture> m_f;
+};
+
+void TestReferencePanel::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<UiFixture>();
+    m_f->window->show();
+    QVERIFY(setUp());
+}
+
+bool TestReferencePanel::setUp()
+{
+    if (!m_f->connectSim())
+        return false;
+    QSignalSpy done(m_f->session, &ControllerSession::requestFinished);
+    m_f->writeRampSetup(5000, 4000);
+    return done.wait(3000) && done.first().at(0).value<CommandResult>().ok();
+}
+
+void TestReferencePanel::plan_defaultOrder_zFirstThenXY()
+{
+    ui::ReferencePanel* panel = m_f->window->referencePanel();
+    const auto stages = ui::ReferenceRunner::plan(panel->directions(), panel->order());
+    QCOMPARE(stages.size(), 2);
+    QCOMPARE(stages[0].keys(), QList<Axis>{Axis::Z});
+    QCOMPARE(stages[1].keys(), (QList<Axis>{Axis::X, Axis::Y}));
+}
+
+void TestReferencePanel::plan_skippedAxis_left_out()
+{
+    const auto stages = ui::ReferenceRunner::plan({{Axis::X, -1}, {Axis::Y, 0}, {Axis::Z, 1}},
+                                                  {{Axis::X, 1}, {Axis::Y, 1}, {Axis::Z, 2}});
+    QCOMPARE(stages.size(), 2);
+    QCOMPARE(stages[0], (ui::ReferenceRunner::Stage{{Axis::X, -1}}));
+    QCOMPARE(stages[1], (ui::ReferenceRunner::Stage{{Axis::Z, 1}}));
+}
+
+void TestReferencePanel::referenceAll_runsStagesInOrder_allReferenced()
+{
+    ui::ReferencePanel* panel = m_f->window->referencePanel();
+    QSignalSpy finished(panel->runner(), &ui::ReferenceRunner::finished);
+    const qsizetype start = m_f->records.size();
+    panel->referenceAll();
+    QVERIFY(finished.wait(30000));
+    QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+    for (const AxisStatus& a : m_f->window->context()->status().axes)
+        QVERIFY(a.referenced);
+    // <US> reference moves: Z alone first, then X and Y together (manual: -1/0/+1 per axis).
+    const QList<elab::Command> runs = m_f->commands(elab::ctrl::US, start);
+    QCOMPARE(runs.size(), 2);
+    QCOMPARE(runs[0].values, (std::array<qint64, 3>{0, 0, -1}));
+    QCOMPARE(runs[1].values, (std::array<qint64, 3>{-1, -1, 0}));
+    QCOMPARE(m_f->window->positionPanel()->stateText(Axis::Z), QStringLiteral("REFERENCED"));
+}
+
+void TestReferencePanel::position_unknownBeforeReference_estimatedAfterJog()
+{
+    ui::PositionPanel* dro = m_f->window->positionPanel();
+    QCOMPARE(dro->stateText(Axis::X), QStringLiteral("UNKNOWN"));
+    QSignalSpy finished(m_f->window->referencePanel()->runner(), &ui::ReferenceRunner::finished);
+    m_f->window->referencePanel()->referenceAxis(Axis::X);
+    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.first().at(0).toBool());
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
+    QObject input;
+    m_f->window->jogController()->setDeflection(&input, {{Axis::X, 0.5}});
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().axes.value(Axis::X).position > 50,
+                             5000);
+    m_f->window->jogController()->releaseAll();
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("ESTIMATED"));
+    QVERIFY(dro->displayedValue(Axis::X).startsWith(QStringLiteral("\u2248")));
+}
+
+void TestReferencePanel::position_workZeroAndUnits_applied()
+{
+    ui::MachineContext* ctx = m_f->window->context();
+    ui::AxisUnits u;
+    u.stepsPerUnit = 200;
+    u.unit = QStringLiteral("mm");
+    u.workOffset = 400;
+    ctx->setUnits(Axis::Y, u);
+    QCOMPARE(ctx->toUserUnits(Axis::Y, 1400), 5.0);
+    QCOMPARE(ctx->unitName(Axis::Y), QStringLiteral("mm"));
+    // Zero: the current position becomes the work origin.
+    m_f->window->positionPanel()->zeroAxis(Axis::Y);
+    QCOMPARE(ctx->units(Axis::Y).workOffset, ctx->status().axes.value(Axis::Y).position);
+    QCOMPARE(m_f->window->positionPanel()->displayedValue(Axis::Y), QStringLiteral("0.000"));
+}
+
+QTEST_MAIN(TestReferencePanel)
+#include "tst_referencepanel.moc"
