@@ -2,6 +2,7 @@
 // (issue #2, section 6). Each test gets a fresh simulator process (power-on state); each CLI
 // invocation is its own session, so positions are only observable within one invocation
 // (move prints where it ended) -- between invocations only the device state persists.
+#include "sim/PtyEndpoint.h"
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -9,6 +10,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
+
+using stepdeck::PtyEndpoint;
 
 class TestCliEndToEnd : public QObject
 {
@@ -36,6 +39,7 @@ private Q_SLOTS:
     void usageErrors_exitTwoWithOneLine_data();
     void usageErrors_exitTwoWithOneLine();
     void port_missing_failsWithLinkDown();
+    void port_silentDevice_failsWithTimeoutNamingPort();
     void help_documentsExitCodes();
 
 private:
@@ -382,6 +386,18 @@ void TestCliEndToEnd::port_missing_failsWithLinkDown()
     QCOMPARE(run.exitCode, 6);
     QCOMPARE(run.err.count('\n'), 1);
     QVERIFY2(run.err.contains("/dev/stepdeck-no-such-port"), run.err.constData());
+}
+
+void TestCliEndToEnd::port_silentDevice_failsWithTimeoutNamingPort()
+{
+    // A pseudo-terminal nobody answers on: powered off, wrong cable, wrong model.
+    PtyEndpoint silent;
+    QString error;
+    QVERIFY2(silent.create(&error), qPrintable(error));
+    const Run run = cli({"--port", silent.slavePath(), "status"});
+    QCOMPARE(run.exitCode, 5);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains(silent.slavePath().toUtf8()), run.err.constData());
 }
 
 void TestCliEndToEnd::help_documentsExitCodes()
