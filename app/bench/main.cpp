@@ -45,6 +45,92 @@ QString lineText(const LineSettings& line)
 {
     return QStringLiteral("%1 %2N%3").arg(line.baudRate).arg(line.dataBits).arg(line.stopBits);
 }
+
+struct Results
+{
+    Figure poll;
+    Figure pollWire;
+    LatencyFigure panic;
+    Figure feed;
+    Figure feedWire;
+};
+
+Results measureAll(const ModelInfo& model, bool showProgress)
+{
+    const auto progress = [&](const char* what) {
+        if (showProgress)
+            print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
+    };
+    Results r;
+    progress("poll rate");
+    r.poll = measurePollRate(model, false);
+    progress("poll rate, paced");
+    r.pollWire = measurePollRate(model, true);
+    progress("panic latency");
+    r.panic = measurePanicLatency(model, kPanicRepetitions);
+    progress("feed throughput");
+    r.feed = measureFeedThroughput(model, false);
+    progress("feed throughput, paced");
+    r.feedWire = measureFeedThroughput(model, true);
+    return r;
+}
+
+void printJson(const Results& r, const ModelInfo& model)
+{
+    QJsonArray notes;
+    for (const auto& [name, note] :
+         {std::pair{"pollRateHz", r.poll.note}, std::pair{"pollRateWireMaxHz", r.pollWire.note},
+          std::pair{"panicLatencyMs", r.panic.note}, std::pair{"feedStepsPerSecond", r.feed.note},
+          std::pair{"feedWireMaxStepsPerSecond", r.feedWire.note}}) {
+        if (!note.isEmpty())
+            notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
+    }
+    const QJsonObject out{
+        {"pollRateHz", json(r.poll.value, 1)},
+        {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
+        {"panicLatencyMs", QJsonObject{{"median", json(r.panic.medianMs, 3)},
+                                       {"p99", json(r.panic.p99Ms, 3)},
+                                       {"samples", r.panic.samples},
+                                       {"pausedByXoff", r.panic.pausedByXoff}}},
+        {"feedStepsPerSecond", json(r.feed.value, 0)},
+        {"feedWireMaxStepsPerSecond", json(r.feedWire.value, 0)},
+        {"conditions", QJsonObject{{"model", model.id},
+                                   {"line", lineText(model.line)},
+                                   {"transport", "QSerialPort on a pseudo-terminal"},
+                                   {"pollIntervalMs", kPollIntervalMs},
+                                   {"panicRepetitions", kPanicRepetitions},
+                                   {"feedStreamSteps", kFeedStreamSteps}}},
+        {"notes", notes},
+    };
+    print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
+}
+
+void printHuman(const Results& r, const ModelInfo& model)
+{
+    const QString hz = QStringLiteral("Hz");
+    const QString ms = QStringLiteral("ms");
+    const QString steps = QStringLiteral("steps/s");
+    print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
+                                 "pseudo-terminal; paced = %2 in both directions")
+                      .arg(model.id, lineText(model.line)));
+    print(stdout, QStringLiteral("  poll rate                    %1  (poll interval %2 ms)")
+                      .arg(text(r.poll.value, 1, hz, r.poll.note))
+                      .arg(kPollIntervalMs));
+    print(stdout, QStringLiteral("  poll rate, paced (wire max)  %1")
+                      .arg(text(r.pollWire.value, 1, hz, r.pollWire.note)));
+    print(stdout,
+          QStringLiteral("  panic latency                median %1, p99 %2  (%3 runs, %4-step "
+                         "DC2 stream queued, host held by XOFF in %5)")
+              .arg(text(r.panic.medianMs, 3, ms, r.panic.note),
+                   text(r.panic.p99Ms, 3, ms, r.panic.note))
+              .arg(r.panic.samples)
+              .arg(kFeedStreamSteps)
+              .arg(r.panic.pausedByXoff));
+    print(stdout, QStringLiteral("  feed throughput              %1")
+                      .arg(text(r.feed.value, 0, steps, r.feed.note)));
+    print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
+                      .arg(text(r.feedWire.value, 0, steps, r.feedWire.note)));
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -59,7 +145,7 @@ int main(int argc, char** argv)
                                  "Measures the E-LAB adapter against its simulator over a "
                                  "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                                  "DC2 feed throughput, unpaced and paced at the line rate.\n"
-                                 "Figures only; takes about 20 s. See docs/benchmark.md."));
+                                 "Figures only; takes 10-20 s. See docs/benchmark.md."));
             return 0;
         }
         if (arg != QLatin1String("--json")) {
@@ -75,70 +161,10 @@ int main(int argc, char** argv)
         print(stderr, QStringLiteral("stepdeck-bench: model elab is not built in"));
         return 1;
     }
-    const auto progress = [&](const QString& what) {
-        if (!asJson)
-            print(stderr, QStringLiteral("measuring %1 ...").arg(what));
-    };
-    progress(QStringLiteral("poll rate"));
-    const Figure poll = measurePollRate(*model, false);
-    progress(QStringLiteral("poll rate, paced"));
-    const Figure pollWire = measurePollRate(*model, true);
-    progress(QStringLiteral("panic latency"));
-    const LatencyFigure panic = measurePanicLatency(*model, kPanicRepetitions);
-    progress(QStringLiteral("feed throughput"));
-    const Figure feed = measureFeedThroughput(*model, false);
-    progress(QStringLiteral("feed throughput, paced"));
-    const Figure feedWire = measureFeedThroughput(*model, true);
-
-    QJsonArray notes;
-    for (const auto& [name, note] :
-         {std::pair{"pollRateHz", poll.note}, std::pair{"pollRateWireMaxHz", pollWire.note},
-          std::pair{"panicLatencyMs", panic.note}, std::pair{"feedStepsPerSecond", feed.note},
-          std::pair{"feedWireMaxStepsPerSecond", feedWire.note}}) {
-        if (!note.isEmpty())
-            notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
-    }
-
-    if (asJson) {
-        const QJsonObject out{
-            {"pollRateHz", json(poll.value, 1)},
-            {"pollRateWireMaxHz", json(pollWire.value, 1)},
-            {"panicLatencyMs", QJsonObject{{"median", json(panic.medianMs, 3)},
-                                           {"p99", json(panic.p99Ms, 3)},
-                                           {"samples", panic.samples},
-                                           {"pausedByXoff", panic.pausedByXoff}}},
-            {"feedStepsPerSecond", json(feed.value, 0)},
-            {"feedWireMaxStepsPerSecond", json(feedWire.value, 0)},
-            {"conditions", QJsonObject{{"model", model->id},
-                                       {"line", lineText(model->line)},
-                                       {"transport", "QSerialPort on a pseudo-terminal"},
-                                       {"pollIntervalMs", kPollIntervalMs},
-                                       {"panicRepetitions", kPanicRepetitions},
-                                       {"feedStreamSteps", kFeedStreamSteps}}},
-            {"notes", notes},
-        };
-        print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
-        return 0;
-    }
-    print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
-                                 "pseudo-terminal; paced = %2 in both directions")
-                      .arg(model->id, lineText(model->line)));
-    print(stdout, QStringLiteral("  poll rate                    %1  (poll interval %2 ms)")
-                      .arg(text(poll.value, 1, QStringLiteral("Hz"), poll.note))
-                      .arg(kPollIntervalMs));
-    print(stdout, QStringLiteral("  poll rate, paced (wire max)  %1")
-                      .arg(text(pollWire.value, 1, QStringLiteral("Hz"), pollWire.note)));
-    print(stdout,
-          QStringLiteral("  panic latency                median %1, p99 %2  (%3 runs, %4-step "
-                         "DC2 stream queued, host held by XOFF in %5)")
-              .arg(text(panic.medianMs, 3, QStringLiteral("ms"), panic.note),
-                   text(panic.p99Ms, 3, QStringLiteral("ms"), panic.note))
-              .arg(panic.samples)
-              .arg(kFeedStreamSteps)
-              .arg(panic.pausedByXoff));
-    print(stdout, QStringLiteral("  feed throughput              %1")
-                      .arg(text(feed.value, 0, QStringLiteral("steps/s"), feed.note)));
-    print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
-                      .arg(text(feedWire.value, 0, QStringLiteral("steps/s"), feedWire.note)));
+    const Results results = measureAll(*model, !asJson);
+    if (asJson)
+        printJson(results, *model);
+    else
+        printHuman(results, *model);
     return 0;
 }
