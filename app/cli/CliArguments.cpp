@@ -70,12 +70,49 @@ bool parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap
 }
 } // namespace
 
+namespace {
+// Global options that carry a value. Returns false with *error set on a bad value; *matched
+// tells whether arg was one of them at all.
+bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matched, QString* error)
+{
+    const QString& arg = argv.at(*i);
+    const QString name = arg.section(QLatin1Char('='), 0, 0);
+    static const QStringList names{"--model", "--port", "--address", "--axes", "--timeout"};
+    *matched = names.contains(name);
+    QString value;
+    if (!*matched || !optionValue(argv, i, name, &value, error))
+        return !*matched;
+    bool ok = true;
+    if (name == QLatin1String("--model")) {
+        o->model = value;
+    } else if (name == QLatin1String("--port")) {
+        o->port = value;
+    } else if (name == QLatin1String("--axes")) {
+        return parseAxisMap(value, &o->axisAddresses, error);
+    } else if (name == QLatin1String("--address")) {
+        const int n = value.toInt(&ok);
+        if (!ok || n < 0) {
+            *error = tr("--address needs a non-negative number, got '%1'").arg(value);
+            return false;
+        }
+        o->address = n;
+    } else {
+        o->connectTimeoutMs = value.toInt(&ok);
+        if (!ok || o->connectTimeoutMs <= 0) {
+            *error = tr("--timeout needs a positive number of milliseconds");
+            return false;
+        }
+    }
+    return true;
+}
+} // namespace
+
 bool parseArguments(const QStringList& argv, CliOptions* options, QString* error)
 {
     CliOptions o;
     for (int i = 0; i < argv.size(); ++i) {
         const QString& arg = argv.at(i);
-        QString value;
+        bool matched = false;
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
             o.help = true;
         } else if (arg == QLatin1String("--version")) {
@@ -86,35 +123,10 @@ bool parseArguments(const QStringList& argv, CliOptions* options, QString* error
             o.setupDefaults = true;
         } else if (arg == QLatin1String("--verbose") || arg == QLatin1String("-v")) {
             o.verbose = true;
-        } else if (isOption(arg, QStringLiteral("--model"))) {
-            if (!optionValue(argv, &i, QStringLiteral("--model"), &o.model, error))
-                return false;
-        } else if (isOption(arg, QStringLiteral("--port"))) {
-            if (!optionValue(argv, &i, QStringLiteral("--port"), &o.port, error))
-                return false;
-        } else if (isOption(arg, QStringLiteral("--address"))) {
-            if (!optionValue(argv, &i, QStringLiteral("--address"), &value, error))
-                return false;
-            bool ok = false;
-            const int n = value.toInt(&ok);
-            if (!ok || n < 0) {
-                *error = tr("--address needs a non-negative number, got '%1'").arg(value);
-                return false;
-            }
-            o.address = n;
-        } else if (isOption(arg, QStringLiteral("--axes"))) {
-            if (!optionValue(argv, &i, QStringLiteral("--axes"), &value, error) ||
-                !parseAxisMap(value, &o.axisAddresses, error))
-                return false;
-        } else if (isOption(arg, QStringLiteral("--timeout"))) {
-            if (!optionValue(argv, &i, QStringLiteral("--timeout"), &value, error))
-                return false;
-            bool ok = false;
-            o.connectTimeoutMs = value.toInt(&ok);
-            if (!ok || o.connectTimeoutMs <= 0) {
-                *error = tr("--timeout needs a positive number of milliseconds");
-                return false;
-            }
+        } else if (!parseValueOption(argv, &i, &o, &matched, error)) {
+            return false;
+        } else if (matched) {
+            continue;
         } else if (o.command.isEmpty() && !arg.startsWith(QLatin1String("--"))) {
             o.command = arg;
         } else if (o.command.isEmpty()) {
