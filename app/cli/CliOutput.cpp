@@ -31,12 +31,26 @@ QString positionText(const AxisStatus& axis)
                            : QStringLiteral("%1 (%2)").arg(text, marks.join(QStringLiteral("; ")));
 }
 
-QString rawValueText(const QVariant& value)
+// A status word in hex with the manual's names of its set bits ("0x0080 tmInvSetup"); any
+// other raw value as it is.
+QString rawValueText(const QString& key, const QVariant& value, const ModelInfo& model)
 {
-    bool ok = false;
-    const qulonglong n = value.toULongLong(&ok);
-    if (ok && value.typeId() != QMetaType::QString && value.typeId() != QMetaType::Bool)
-        return QStringLiteral("0x%1 (%2)").arg(n, 0, 16).arg(n);
+    if (model.presentation.statusWords) {
+        for (const StatusWordInfo& word : model.presentation.statusWords()) {
+            if (word.key != key)
+                continue;
+            const qulonglong bits = value.toULongLong();
+            QStringList set;
+            for (const StatusBitInfo& bit : word.bits) {
+                if (bits & (1ull << bit.bit))
+                    set << bit.name;
+            }
+            const QString hex =
+                QStringLiteral("0x%1").arg(bits, (word.width + 3) / 4, 16, QLatin1Char('0'));
+            return set.isEmpty() ? hex
+                                 : QStringLiteral("%1 (%2)").arg(hex, set.join(QLatin1Char(' ')));
+        }
+    }
     return value.toString();
 }
 } // namespace
@@ -162,7 +176,7 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model, const 
     }
     QStringList raw;
     for (auto it = status.raw.cbegin(); it != status.raw.cend(); ++it)
-        raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.value()));
+        raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.key(), it.value(), model));
     if (!raw.isEmpty())
         lines << tr("Raw:          %1").arg(raw.join(QStringLiteral(" ")));
     return lines.join(QLatin1Char('\n'));
