@@ -97,7 +97,7 @@ void ChartsPanel::rebuild()
         axes << axisName(a);
     m_plots << makePlot(tr("Position"), tr("steps"), axes);
     m_plots << makePlot(tr("Commanded velocity"), tr("steps/s"), axes);
-    m_plots << makePlot(tr("Temperature"), tr("\u00b0C"), {tr("Temperature")});
+    m_plots << makePlot(tr("Temperature"), tr("°C"), {tr("Temperature")});
     m_plots << makePlot(tr("Poll rate"), tr("Hz"), {tr("Poll rate")});
     auto* grid = static_cast<QGridLayout*>(m_grid->layout());
     for (int i = 0; i < m_plots.size(); ++i)

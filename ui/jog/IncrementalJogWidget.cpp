@@ -19,7 +19,7 @@ IncrementalJogWidget::IncrementalJogWidget(MachineContext* context, QWidget* par
     m_custom->setRange(1, 10000000);
     m_custom->setValue(500);
     m_custom->setSuffix(tr(" steps"));
-    m_custom->setEnabled(false);
+    m_custom->setVisible(false);
     m_size->setToolTip(tr("Steps per click of a +/- button"));
 
     auto* layout = new QVBoxLayout(this);
@@ -31,7 +31,7 @@ IncrementalJogWidget::IncrementalJogWidget(MachineContext* context, QWidget* par
     layout->addLayout(m_grid);
 
     connect(m_size, &QComboBox::currentIndexChanged, this,
-            [this] { m_custom->setEnabled(m_size->currentData().toInt() < 0); });
+            [this] { m_custom->setVisible(m_size->currentData().toInt() < 0); });
     connect(context, &MachineContext::modelChanged, this, &IncrementalJogWidget::rebuild);
     rebuild();
 }
@@ -78,6 +78,7 @@ void IncrementalJogWidget::rebuild()
             b->setToolTip(sign < 0 ? tr("Move %1 by minus one step size").arg(axisName(axis))
                                    : tr("Move %1 by plus one step size").arg(axisName(axis)));
             b->setMinimumSize(44, 30);
+            b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
             b->setFocusPolicy(Qt::NoFocus);
             connect(b, &QToolButton::clicked, this, [this, axis, sign] { jog(axis, sign); });
             return b;

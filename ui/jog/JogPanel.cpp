@@ -55,7 +55,8 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     scroll->setWidget(buildSidePanel());
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setMinimumWidth(300);
+    scroll->setMinimumWidth(260);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     layout->addWidget(scroll, 2);
 
     connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {

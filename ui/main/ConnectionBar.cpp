@@ -25,7 +25,7 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
     for (const ModelInfo& model : models())
-        m_model->addItem(model.displayName, model.id);
+        m_model->addItem(modelDisplayName(model), model.id);
     m_model->setToolTip(tr("Controller model"));
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);

@@ -1,7 +1,14 @@
 #include "MachineContext.h"
+#include <QCoreApplication>
 #include <QSettings>
 
 namespace stepdeck::ui {
+
+QString modelDisplayName(const ModelInfo& model)
+{
+    // Registry names are English data; each model's folder lists its name for lupdate.
+    return QCoreApplication::translate("Models", model.displayName.toUtf8().constData());
+}
 
 MachineContext::MachineContext(QObject* parent)
     : QObject(parent), m_session(new ControllerSession(this))

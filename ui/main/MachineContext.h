@@ -4,6 +4,9 @@
 
 namespace stepdeck::ui {
 
+// A model's display name in the current language (context "Models").
+QString modelDisplayName(const ModelInfo& model);
+
 // How one axis is shown: user units and the operator's work origin. Host-side only.
 struct AxisUnits
 {

@@ -156,8 +156,8 @@ void MainWindow::buildDocks()
     tabifyDockWidget(setup, traffic);
     tabifyDockWidget(traffic, charts);
     setup->raise();
-    resizeDocks({setup}, {330}, Qt::Vertical);
-    resizeDocks({m_docks.at(0), status}, {400, 390}, Qt::Horizontal);
+    resizeDocks({setup}, {300}, Qt::Vertical);
+    resizeDocks({m_docks.at(0), status}, {390, 440}, Qt::Horizontal);
     setDockNestingEnabled(true);
 }
 
@@ -314,7 +314,7 @@ void MainWindow::updateTitle()
     const ModelInfo* model = m_context->model();
     QString title = QStringLiteral("StepDeck");
     if (model)
-        title += QStringLiteral(" \u2014 ") + model->displayName;
+        title += QStringLiteral(" \u2014 ") + modelDisplayName(*model);
     if (m_context->session()->isCreated()) {
         const QString port =
             m_context->portName() == QLatin1String("sim") ? tr("simulator") : m_context->portName();

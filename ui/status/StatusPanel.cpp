@@ -288,7 +288,7 @@ void StatusPanel::updateTemperature(const MachineStatus& s)
                   "cool down.");
     } else if (t >= kTemperatureWarningC) {
         colour = QStringLiteral("#ffb300");
-        note = tr("Warning: approaching the %1 \u00b0C over-temperature limit.")
+        note = tr("Warning: approaching the %1 °C over-temperature limit.")
                    .arg(kTemperatureLimitC, 0, 'f', 0);
     }
     m_temperatureBar->setStyleSheet(

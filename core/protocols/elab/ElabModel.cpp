@@ -262,10 +262,13 @@ ModelPresentation presentation()
         // Keys as the adapter publishes them in MachineStatus::raw.
         StatusWordInfo machineWord{
             QStringLiteral("machineState"),
-            QCoreApplication::translate(kContext, "Machine state (RequestMachineState)"), 16,
+            QCoreApplication::translate("stepdeck::elab::Presentation",
+                                        "Machine state (RequestMachineState)"),
+            16,
             bitList(kMachineBits)};
         StatusWordInfo axeWord{QStringLiteral("axeState"),
-                               QCoreApplication::translate(kContext, "Axis state (RequestAxeState)"),
+                               QCoreApplication::translate("stepdeck::elab::Presentation",
+                                                           "Axis state (RequestAxeState)"),
                                8, bitList(kAxeBits)};
         return QList<StatusWordInfo>{machineWord, axeWord};
     };
@@ -308,6 +311,9 @@ namespace {
     QT_TRANSLATE_NOOP("Parameters", "Coolant"),
     QT_TRANSLATE_NOOP("Parameters", "Coolant pump relay RS2 (SetCoolOnOff, <SI>)"),
 };
+// The registry's display name, shown through QCoreApplication::translate("Models", ...).
+[[maybe_unused]] const char* const kModelName =
+    QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller");
 } // namespace
 
 } // namespace stepdeck::elab

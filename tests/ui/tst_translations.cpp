@@ -1,0 +1,115 @@
+// Languages: the German catalogue is complete, and once installed it translates the widgets,
+// the model's parameter labels and core messages (including those core files translate
+// through their own helper contexts).
+#include "UiTestSupport.h"
+#include "main/SafetyBar.h"
+#include "main/Translations.h"
+#include <QPushButton>
+#include <QXmlStreamReader>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestTranslations : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void germanCatalogue_everyMessageTranslated();
+    void effective_configuredOrSystem_data();
+    void effective_configuredOrSystem();
+    void german_installed_translatesUiSchemaAndCore_data();
+    void german_installed_translatesUiSchemaAndCore();
+    void german_mainWindow_showsGermanLabels();
+};
+
+void TestTranslations::germanCatalogue_everyMessageTranslated()
+{
+    QFile file(QStringLiteral(STEPDECK_SOURCE_DIR "/translations/stepdeck_de.ts"));
+    QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
+    QXmlStreamReader xml(&file);
+    QString source;
+    int messages = 0;
+    QStringList missing;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (!xml.isStartElement())
+            continue;
+        if (xml.name() == QLatin1String("source")) {
+            source = xml.readElementText();
+        } else if (xml.name() == QLatin1String("translation")) {
+            ++messages;
+            const bool unfinished =
+                xml.attributes().value(QLatin1String("type")) == QLatin1String("unfinished");
+            const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
+            if (unfinished || text.trimmed().isEmpty())
+                missing << source;
+        }
+    }
+    QVERIFY(!xml.hasError());
+    QVERIFY(messages > 100);
+    QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QStringLiteral(" | "))));
+}
+
+void TestTranslations::effective_configuredOrSystem_data()
+{
+    QTest::addColumn<QString>("configured");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("german chosen") << QStringLiteral("de") << QStringLiteral("de");
+    QTest::newRow("english chosen") << QStringLiteral("en") << QStringLiteral("en");
+    const QString system = QLocale::system().name().left(2);
+    QTest::newRow("system") << QString()
+                            << (system == QLatin1String("de") ? QStringLiteral("de")
+                                                              : QStringLiteral("en"));
+}
+
+void TestTranslations::effective_configuredOrSystem()
+{
+    QFETCH(QString, configured);
+    QFETCH(QString, expected);
+    QCOMPARE(ui::translations::effective(configured), expected);
+}
+
+void TestTranslations::german_installed_translatesUiSchemaAndCore_data()
+{
+    QTest::addColumn<QString>("context");
+    QTest::addColumn<QString>("source");
+    QTest::addColumn<QString>("german");
+    QTest::newRow("widget") << "stepdeck::ui::SafetyBar"
+                            << "STOP  (Esc)"
+                            << "STOPP  (Esc)";
+    QTest::newRow("parameter label") << "Parameters"
+                                     << "Start speed"
+                                     << "Startgeschwindigkeit";
+    QTest::newRow("status bit") << "stepdeck::elab::Presentation"
+                                << "The motors are powered."
+                                << "Die Motoren sind bestromt.";
+    QTest::newRow("core controller") << "stepdeck::Controller"
+                                     << "jog refused: not connected"
+                                     << "Tippbetrieb abgelehnt: nicht verbunden";
+    QTest::newRow("core helper context") << "ParameterSchema"
+                                         << "unknown parameter '%1'"
+                                         << "unbekannter Parameter '%1'";
+}
+
+void TestTranslations::german_installed_translatesUiSchemaAndCore()
+{
+    QFETCH(QString, context);
+    QFETCH(QString, source);
+    QFETCH(QString, german);
+    static const QString lang = ui::translations::install(qApp, QStringLiteral("de"));
+    QCOMPARE(lang, QStringLiteral("de"));
+    QCOMPARE(QCoreApplication::translate(context.toUtf8().constData(), source.toUtf8().constData()),
+             german);
+}
+
+void TestTranslations::german_mainWindow_showsGermanLabels()
+{
+    ui::translations::install(qApp, QStringLiteral("de"));
+    UiFixture f;
+    QCOMPARE(f.window->safetyBar()->stopButton()->text(), QStringLiteral("STOPP  (Esc)"));
+    QCOMPARE(f.window->safetyBar()->panicButton()->text(), QStringLiteral("PANIK  (F1)"));
+}
+
+QTEST_MAIN(TestTranslations)
+#include "tst_translations.moc"

@@ -1,0 +1,2905 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+    <context>
+        <name>ElabCodec</name>
+        <message>
+            <source>motors are powered</source>
+            <translation>Motoren sind bestromt</translation>
+        </message>
+        <message>
+            <source>spindle motor is on</source>
+            <translation>Spindelmotor ist eingeschaltet</translation>
+        </message>
+        <message>
+            <source>axes are moving</source>
+            <translation>Achsen sind in Bewegung</translation>
+        </message>
+        <message>
+            <source>serial port fault (not implemented)</source>
+            <translation>Fehler der seriellen Schnittstelle (nicht implementiert)</translation>
+        </message>
+        <message>
+            <source>internal error (not implemented)</source>
+            <translation>interner Fehler (nicht implementiert)</translation>
+        </message>
+        <message>
+            <source>parameter error (not implemented)</source>
+            <translation>Parameterfehler (nicht implementiert)</translation>
+        </message>
+        <message>
+            <source>internal temperature above 50 °C</source>
+            <translation>Innentemperatur über 50 °C</translation>
+        </message>
+        <message>
+            <source>setup incomplete: start speed, max speed and acceleration not all set</source>
+            <translation>Einrichtung unvollständig: Startgeschwindigkeit, Maximalgeschwindigkeit und Beschleunigung nicht alle gesetzt</translation>
+        </message>
+        <message>
+            <source>a limit switch of the X axis is active</source>
+            <translation>ein Endschalter der X-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>a limit switch of the Y axis is active</source>
+            <translation>ein Endschalter der Y-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>a limit switch of the Z axis is active</source>
+            <translation>ein Endschalter der Z-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>the X reference switch is active</source>
+            <translation>der Referenzschalter der X-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>the Y reference switch is active</source>
+            <translation>der Referenzschalter der Y-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>the Z reference switch is active</source>
+            <translation>der Referenzschalter der Z-Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>the panic (emergency stop) switch is active</source>
+            <translation>der Panik-Schalter (Not-Aus) ist aktiv</translation>
+        </message>
+        <message>
+            <source>X axis in FastMove or feed mode</source>
+            <translation>X-Achse im FastMove- oder Vorschubbetrieb</translation>
+        </message>
+        <message>
+            <source>X axis in jog mode</source>
+            <translation>X-Achse im Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Y axis in FastMove or feed mode</source>
+            <translation>Y-Achse im FastMove- oder Vorschubbetrieb</translation>
+        </message>
+        <message>
+            <source>Y axis in jog mode</source>
+            <translation>Y-Achse im Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Z axis in FastMove or feed mode</source>
+            <translation>Z-Achse im FastMove- oder Vorschubbetrieb</translation>
+        </message>
+        <message>
+            <source>Z axis in jog mode</source>
+            <translation>Z-Achse im Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>a limit switch is active</source>
+            <translation>ein Endschalter ist aktiv</translation>
+        </message>
+        <message>
+            <source>a reference switch is active</source>
+            <translation>ein Referenzschalter ist aktiv</translation>
+        </message>
+    </context>
+    <context>
+        <name>Models</name>
+        <message>
+            <source>E-LAB 3-axis stepper controller</source>
+            <translation>E-LAB 3-Achsen-Schrittmotorsteuerung</translation>
+        </message>
+    </context>
+    <context>
+        <name>Parameters</name>
+        <message>
+            <source>steps/s</source>
+            <translation>Schritte/s</translation>
+        </message>
+        <message>
+            <source>Start speed</source>
+            <translation>Startgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Speeds</source>
+            <translation>Geschwindigkeiten</translation>
+        </message>
+        <message>
+            <source>Step rate at the start of a ramp (SetStartSpeed, &lt;ESC&gt;S)</source>
+            <translation>Schrittrate am Beginn einer Rampe (SetStartSpeed, &lt;ESC&gt;S)</translation>
+        </message>
+        <message>
+            <source>Max speed</source>
+            <translation>Maximalgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Plateau step rate of positioning and reference moves (SetMaxSpeed, &lt;ESC&gt;M)</source>
+            <translation>Schrittrate im Plateau von Positionier- und Referenzfahrten (SetMaxSpeed, &lt;ESC&gt;M)</translation>
+        </message>
+        <message>
+            <source>Feed speed</source>
+            <translation>Vorschubgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Step rate in feed mode; must be below the start speed, feed has no ramp (SetFeedSpeed, &lt;FS&gt;)</source>
+            <translation>Schrittrate im Vorschubbetrieb; muss unter der Startgeschwindigkeit liegen, der Vorschub hat keine Rampe (SetFeedSpeed, &lt;FS&gt;)</translation>
+        </message>
+        <message>
+            <source>Acceleration</source>
+            <translation>Beschleunigung</translation>
+        </message>
+        <message>
+            <source>Ramp steepness of positioning moves; sensible values are 500 to 2000 (SetAcceleration, &lt;ESC&gt;A)</source>
+            <translation>Rampensteilheit von Positionierfahrten; sinnvoll sind 500 bis 2000 (SetAcceleration, &lt;ESC&gt;A)</translation>
+        </message>
+        <message>
+            <source>Switch polarity</source>
+            <translation>Schalterpolarität</translation>
+        </message>
+        <message>
+            <source>high</source>
+            <translation>high</translation>
+        </message>
+        <message>
+            <source>low</source>
+            <translation>low</translation>
+        </message>
+        <message>
+            <source>Limit switch polarity</source>
+            <translation>Polarität der Endschalter</translation>
+        </message>
+        <message>
+            <source>Active level of the limit switches (SetSwitchPolarity, &lt;SO&gt;)</source>
+            <translation>Aktiver Pegel der Endschalter (SetSwitchPolarity, &lt;SO&gt;)</translation>
+        </message>
+        <message>
+            <source>Reference switch polarity</source>
+            <translation>Polarität der Referenzschalter</translation>
+        </message>
+        <message>
+            <source>Active level of the reference switches (SetSwitchPolarity, &lt;DLE&gt;)</source>
+            <translation>Aktiver Pegel der Referenzschalter (SetSwitchPolarity, &lt;DLE&gt;)</translation>
+        </message>
+        <message>
+            <source>Drive power</source>
+            <translation>Motorstrom</translation>
+        </message>
+        <message>
+            <source>Power &amp; spindle</source>
+            <translation>Leistung &amp; Spindel</translation>
+        </message>
+        <message>
+            <source>%</source>
+            <translation>%</translation>
+        </message>
+        <message>
+            <source>Motor current for all axes; the board maps it to off (&lt;25), 33 % (&lt;50), 66 % (&lt;75), 100 % (SetDrivePower, &lt;STX&gt;)</source>
+            <translation>Motorstrom aller Achsen; die Platine setzt ihn auf aus (&lt;25), 33 % (&lt;50), 66 % (&lt;75), 100 % (SetDrivePower, &lt;STX&gt;)</translation>
+        </message>
+        <message>
+            <source>Spindle speed</source>
+            <translation>Spindeldrehzahl</translation>
+        </message>
+        <message>
+            <source>rpm</source>
+            <translation>U/min</translation>
+        </message>
+        <message>
+            <source>0 switches the spindle relay off, anything above switches it on (SetSpindleRPM, &lt;SOH&gt;)</source>
+            <translation>0 schaltet das Spindelrelais aus, jeder größere Wert ein (SetSpindleRPM, &lt;SOH&gt;)</translation>
+        </message>
+        <message>
+            <source>Coolant</source>
+            <translation>Kühlmittel</translation>
+        </message>
+        <message>
+            <source>Coolant pump relay RS2 (SetCoolOnOff, &lt;SI&gt;)</source>
+            <translation>Relais RS2 der Kühlmittelpumpe (SetCoolOnOff, &lt;SI&gt;)</translation>
+        </message>
+    </context>
+    <context>
+        <name>main</name>
+        <message>
+            <source>unknown model '%1' (known: %2)</source>
+            <translation>unbekanntes Modell '%1' (bekannt: %2)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck</name>
+        <message>
+            <source>no controller session</source>
+            <translation>keine Steuerungssitzung</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::Controller</name>
+        <message>
+            <source>this machine has no axis %1</source>
+            <translation>diese Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>absolute move refused: position of axis %1 is unknown, reference it first</source>
+            <translation>Absolutfahrt abgelehnt: Position der Achse %1 ist unbekannt, zuerst referenzieren</translation>
+        </message>
+        <message>
+            <source>this controller has no feed mode</source>
+            <translation>diese Steuerung hat keinen Vorschubbetrieb</translation>
+        </message>
+        <message>
+            <source>this controller has no single-step feed stream</source>
+            <translation>diese Steuerung hat keinen Einzelschritt-Vorschubstrom</translation>
+        </message>
+        <message>
+            <source>this controller has no velocity move</source>
+            <translation>diese Steuerung hat keine Geschwindigkeitsfahrt</translation>
+        </message>
+        <message>
+            <source>this controller has no reset</source>
+            <translation>diese Steuerung hat keinen Reset</translation>
+        </message>
+        <message>
+            <source>this controller has no spindle output</source>
+            <translation>diese Steuerung hat keinen Spindelausgang</translation>
+        </message>
+        <message>
+            <source>this controller has no coolant output</source>
+            <translation>diese Steuerung hat keinen Kühlmittelausgang</translation>
+        </message>
+        <message>
+            <source>this controller has no drive power setting</source>
+            <translation>diese Steuerung hat keine Einstellung des Motorstroms</translation>
+        </message>
+        <message>
+            <source>this controller has no bus to scan</source>
+            <translation>diese Steuerung hat keinen Bus zum Durchsuchen</translation>
+        </message>
+        <message>
+            <source>this controller has no operation '%1'</source>
+            <translation>diese Steuerung kennt die Operation '%1' nicht</translation>
+        </message>
+        <message>
+            <source>jog refused: not connected</source>
+            <translation>Tippbetrieb abgelehnt: nicht verbunden</translation>
+        </message>
+        <message>
+            <source>jog refused: emergency stop is active</source>
+            <translation>Tippbetrieb abgelehnt: Not-Aus ist aktiv</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ControllerSession</name>
+        <message>
+            <source>unknown controller model '%1' (known: %2)</source>
+            <translation>unbekanntes Steuerungsmodell '%1' (bekannt: %2)</translation>
+        </message>
+        <message>
+            <source>no controller session</source>
+            <translation>keine Steuerungssitzung</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ModelPresentation</name>
+        <message>
+            <source>bad hex escape at column %1</source>
+            <translation>ungültige Hex-Angabe in Spalte %1</translation>
+        </message>
+        <message>
+            <source>non-ASCII character at column %1</source>
+            <translation>Nicht-ASCII-Zeichen in Spalte %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ParameterSchema</name>
+        <message>
+            <source>%1: value '%2' is out of range (allowed: %3%4)</source>
+            <translation>%1: Wert '%2' liegt außerhalb des Bereichs (erlaubt: %3%4)</translation>
+        </message>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>%1 is read-only</source>
+            <translation>%1 ist nur lesbar</translation>
+        </message>
+        <message>
+            <source>%1 needs one value per axis</source>
+            <translation>%1 braucht einen Wert pro Achse</translation>
+        </message>
+        <message>
+            <source>%1: this machine has no axis %2</source>
+            <translation>%1: diese Maschine hat keine Achse %2</translation>
+        </message>
+        <message>
+            <source>%1 takes a single value, not one per axis</source>
+            <translation>%1 nimmt einen einzelnen Wert, nicht einen pro Achse</translation>
+        </message>
+        <message>
+            <source>expected NAME=VALUE, got '%1'</source>
+            <translation>NAME=WERT erwartet, erhalten: '%1'</translation>
+        </message>
+        <message>
+            <source>%1 needs 1 or %2 values (axes %3)</source>
+            <translation>%1 braucht 1 oder %2 Werte (Achsen %3)</translation>
+        </message>
+        <message>
+            <source>%1 takes a single value</source>
+            <translation>%1 nimmt einen einzelnen Wert</translation>
+        </message>
+        <message>
+            <source>not a StepDeck parameter file</source>
+            <translation>keine StepDeck-Parameterdatei</translation>
+        </message>
+        <message>
+            <source>unsupported parameter file version %1</source>
+            <translation>nicht unterstützte Version %1 der Parameterdatei</translation>
+        </message>
+        <message>
+            <source>parameter file is for model '%1', not '%2'</source>
+            <translation>Parameterdatei ist für Modell '%1', nicht '%2'</translation>
+        </message>
+        <message>
+            <source>parameter file has no "parameters" object</source>
+            <translation>Parameterdatei hat kein Objekt "parameters"</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not an axis</source>
+            <translation>%1: '%2' ist keine Achse</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::PtyEndpoint</name>
+        <message>
+            <source>cannot create a pseudo-terminal: %1</source>
+            <translation>Pseudo-Terminal kann nicht angelegt werden: %1</translation>
+        </message>
+        <message>
+            <source>cannot configure the pseudo-terminal: %1</source>
+            <translation>Pseudo-Terminal kann nicht eingestellt werden: %1</translation>
+        </message>
+        <message>
+            <source>pseudo-terminal %1: write failed: %2</source>
+            <translation>Pseudo-Terminal %1: Schreiben fehlgeschlagen: %2</translation>
+        </message>
+        <message>
+            <source>pseudo-terminal %1: read failed: %2</source>
+            <translation>Pseudo-Terminal %1: Lesen fehlgeschlagen: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::SerialTransport</name>
+        <message>
+            <source>serial port %1 does not support %2 baud, %3%4%5</source>
+            <translation>serielle Schnittstelle %1 unterstützt %2 Baud, %3%4%5 nicht</translation>
+        </message>
+        <message>
+            <source>no serial port given</source>
+            <translation>keine serielle Schnittstelle angegeben</translation>
+        </message>
+        <message>
+            <source>serial port %1 is not open</source>
+            <translation>serielle Schnittstelle %1 ist nicht geöffnet</translation>
+        </message>
+        <message>
+            <source>serial port %1 cannot drive RTS: %2</source>
+            <translation>serielle Schnittstelle %1 kann RTS nicht schalten: %2</translation>
+        </message>
+        <message>
+            <source>serial port %1 not found</source>
+            <translation>serielle Schnittstelle %1 nicht gefunden</translation>
+        </message>
+        <message>
+            <source>serial port %1 is in use by another program or access is denied</source>
+            <translation>serielle Schnittstelle %1 wird von einem anderen Programm benutzt oder der Zugriff wird verweigert</translation>
+        </message>
+        <message>
+            <source>serial port %1 is already open</source>
+            <translation>serielle Schnittstelle %1 ist bereits geöffnet</translation>
+        </message>
+        <message>
+            <source>serial port %1 lost: the device vanished</source>
+            <translation>serielle Schnittstelle %1 verloren: das Gerät ist verschwunden</translation>
+        </message>
+        <message>
+            <source>serial port %1 lost: writing to it failed</source>
+            <translation>serielle Schnittstelle %1 verloren: Schreiben fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>serial port %1 refused an operation: %2</source>
+            <translation>serielle Schnittstelle %1 hat eine Operation abgelehnt: %2</translation>
+        </message>
+        <message>
+            <source>serial port %1 failed: %2</source>
+            <translation>serielle Schnittstelle %1 fehlgeschlagen: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::TcpTransport</name>
+        <message>
+            <source>%1: no connection within %2 ms</source>
+            <translation>%1: keine Verbindung innerhalb von %2 ms</translation>
+        </message>
+        <message>
+            <source>"%1" is not a TCP address; expected tcp://HOST:PORT</source>
+            <translation>"%1" ist keine TCP-Adresse; erwartet tcp://HOST:PORT</translation>
+        </message>
+        <message>
+            <source>"%1" names no host; expected tcp://HOST:PORT</source>
+            <translation>"%1" nennt keinen Host; erwartet tcp://HOST:PORT</translation>
+        </message>
+        <message>
+            <source>"%1" needs a port between 1 and 65535; expected tcp://HOST:PORT</source>
+            <translation>"%1" braucht einen Port zwischen 1 und 65535; erwartet tcp://HOST:PORT</translation>
+        </message>
+        <message>
+            <source>"%1" has a path; expected tcp://HOST:PORT</source>
+            <translation>"%1" enthält einen Pfad; erwartet tcp://HOST:PORT</translation>
+        </message>
+        <message>
+            <source>"%1" has extra parts; expected tcp://HOST:PORT</source>
+            <translation>"%1" enthält zusätzliche Teile; erwartet tcp://HOST:PORT</translation>
+        </message>
+        <message>
+            <source>%1 lost: the device server closed the connection</source>
+            <translation>%1 verloren: der Geräteserver hat die Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>%1: connection refused</source>
+            <translation>%1: Verbindung abgewiesen</translation>
+        </message>
+        <message>
+            <source>%1: host not found</source>
+            <translation>%1: Host nicht gefunden</translation>
+        </message>
+        <message>
+            <source>%1 lost: %2</source>
+            <translation>%1 verloren: %2</translation>
+        </message>
+        <message>
+            <source>%1: cannot connect: %2</source>
+            <translation>%1: Verbindung nicht möglich: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::Transport</name>
+        <message>
+            <source>this link has no modem control lines</source>
+            <translation>diese Verbindung hat keine Modem-Steuerleitungen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab</name>
+        <message>
+            <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
+            <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
+        </message>
+        <message>
+            <source>feed-speed must be below start-speed (feed mode has no ramp), but start-speed is not known: write start-speed in the same set</source>
+            <translation>feed-speed muss unter start-speed liegen (der Vorschub hat keine Rampe), aber start-speed ist unbekannt: start-speed im selben Satz schreiben</translation>
+        </message>
+        <message>
+            <source>feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no ramp)</source>
+            <translation>feed-speed %1 auf Achse %2 muss unter start-speed %3 liegen (der Vorschub hat keine Rampe)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabController</name>
+        <message>
+            <source>no reply to %1 status polls in a row</source>
+            <translation>keine Antwort auf %1 Statusabfragen in Folge</translation>
+        </message>
+        <message>
+            <source>resynchronising with &lt;SYN&gt; after: %1</source>
+            <translation>Neusynchronisierung mit &lt;SYN&gt; nach: %1</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; machine state %2: %3; axe state %4: %5</source>
+            <translation>%1 mit NAK beantwortet; Maschinenstatus %2: %3; Achsstatus %4: %5</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; the status could not be read: %2</source>
+            <translation>%1 mit NAK beantwortet; der Status konnte nicht gelesen werden: %2</translation>
+        </message>
+        <message>
+            <source>cancelled by a stop, panic or reset</source>
+            <translation>abgebrochen durch Stopp, Panik-Stopp oder Reset</translation>
+        </message>
+        <message>
+            <source>not connected (%1)</source>
+            <translation>nicht verbunden (%1)</translation>
+        </message>
+        <message>
+            <source>no transport</source>
+            <translation>keine Übertragungsstrecke</translation>
+        </message>
+        <message>
+            <source>already connecting</source>
+            <translation>Verbindung wird bereits aufgebaut</translation>
+        </message>
+        <message>
+            <source>the E-LAB board does not answer: %1</source>
+            <translation>die E-LAB-Platine antwortet nicht: %1</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>Verbindung verloren: %1</translation>
+        </message>
+        <message>
+            <source>link closed</source>
+            <translation>Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>geschlossen</translation>
+        </message>
+        <message>
+            <source>nothing to send</source>
+            <translation>nichts zu senden</translation>
+        </message>
+        <message>
+            <source>not connected</source>
+            <translation>nicht verbunden</translation>
+        </message>
+        <message>
+            <source>cancelled by stop</source>
+            <translation>durch Stopp abgebrochen</translation>
+        </message>
+        <message>
+            <source>feed stream stopped</source>
+            <translation>Vorschubstrom gestoppt</translation>
+        </message>
+        <message>
+            <source>cancelled by panic stop</source>
+            <translation>durch Panik-Stopp abgebrochen</translation>
+        </message>
+        <message>
+            <source>cancelled by reset</source>
+            <translation>durch Reset abgebrochen</translation>
+        </message>
+        <message>
+            <source>reset not possible: %1</source>
+            <translation>Reset nicht möglich: %1</translation>
+        </message>
+        <message>
+            <source>no status after reset: %1</source>
+            <translation>kein Status nach dem Reset: %1</translation>
+        </message>
+        <message>
+            <source>written; the E-LAB board cannot read parameters back, nothing verified</source>
+            <translation>geschrieben; die E-LAB-Platine kann Parameter nicht zurücklesen, nichts geprüft</translation>
+        </message>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>E-LAB cannot read parameters back, and this session has not written: %1</source>
+            <translation>E-LAB kann Parameter nicht zurücklesen, und diese Sitzung hat nicht geschrieben: %1</translation>
+        </message>
+        <message>
+            <source>E-LAB cannot read parameters back: these are the values this session last wrote</source>
+            <translation>E-LAB kann Parameter nicht zurücklesen: dies sind die Werte, die diese Sitzung zuletzt geschrieben hat</translation>
+        </message>
+        <message>
+            <source>a limit switch stopped the motion (axis %1): position unknown, reference the axis again</source>
+            <translation>ein Endschalter hat die Bewegung gestoppt (Achse %1): Position unbekannt, Achse neu referenzieren</translation>
+        </message>
+        <message>
+            <source>feed stream step %1: this machine has no axis %2</source>
+            <translation>Vorschubstrom Schritt %1: diese Maschine hat keine Achse %2</translation>
+        </message>
+        <message>
+            <source>feed stream step %1: axis %2 moves %3 steps; a single step is -1, 0 or +1</source>
+            <translation>Vorschubstrom Schritt %1: Achse %2 fährt %3 Schritte; ein Einzelschritt ist -1, 0 oder +1</translation>
+        </message>
+        <message>
+            <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
+            <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
+        </message>
+        <message>
+            <source>feed-speed must be below start-speed (feed mode has no ramp), but start-speed is not known: write start-speed in the same set</source>
+            <translation>feed-speed muss unter start-speed liegen (der Vorschub hat keine Rampe), aber start-speed ist unbekannt: start-speed im selben Satz schreiben</translation>
+        </message>
+        <message>
+            <source>feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no ramp)</source>
+            <translation>feed-speed %1 auf Achse %2 muss unter start-speed %3 liegen (der Vorschub hat keine Rampe)</translation>
+        </message>
+        <message>
+            <source>jog refused: %1</source>
+            <translation>Tippbetrieb abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>jog: %1</source>
+            <translation>Tippbetrieb: %1</translation>
+        </message>
+        <message>
+            <source>jog refused by the board (NAK); machine state: %1; axe state: %2</source>
+            <translation>Tippbetrieb von der Platine abgelehnt (NAK); Maschinenstatus: %1; Achsstatus: %2</translation>
+        </message>
+        <message>
+            <source>this machine has no axis %1</source>
+            <translation>diese Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>%1 %2 for axis %3 is out of range (allowed: %4..%5)</source>
+            <translation>%1 %2 für Achse %3 liegt außerhalb des Bereichs (erlaubt: %4..%5)</translation>
+        </message>
+        <message>
+            <source>position after stop unknown: %1</source>
+            <translation>Position nach dem Stopp unbekannt: %1</translation>
+        </message>
+        <message>
+            <source>step count</source>
+            <translation>Schrittzahl</translation>
+        </message>
+        <message>
+            <source>refused: a feed stream is already running</source>
+            <translation>abgelehnt: ein Vorschubstrom läuft bereits</translation>
+        </message>
+        <message>
+            <source>%1 after %2 of %3 steps</source>
+            <translation>%1 nach %2 von %3 Schritten</translation>
+        </message>
+        <message>
+            <source>reference direction</source>
+            <translation>Referenzrichtung</translation>
+        </message>
+        <message>
+            <source>velocity</source>
+            <translation>Geschwindigkeit</translation>
+        </message>
+        <message>
+            <source>refused: axis %1 cannot reverse during a velocity move; set it to 0 and wait for standstill first</source>
+            <translation>abgelehnt: Achse %1 kann während einer Geschwindigkeitsfahrt nicht umkehren; zuerst auf 0 setzen und Stillstand abwarten</translation>
+        </message>
+        <message>
+            <source>parameter set names a parameter the E-LAB board has no command for</source>
+            <translation>der Parametersatz nennt einen Parameter, für den die E-LAB-Platine keinen Befehl hat</translation>
+        </message>
+        <message>
+            <source>refused: the emergency stop (tmPanicStop) is active</source>
+            <translation>abgelehnt: der Not-Aus (tmPanicStop) ist aktiv</translation>
+        </message>
+        <message>
+            <source>refused: setup incomplete (tmInvSetup): write start-speed, max-speed and acceleration first</source>
+            <translation>abgelehnt: Einrichtung unvollständig (tmInvSetup): zuerst start-speed, max-speed und acceleration schreiben</translation>
+        </message>
+        <message>
+            <source>refused: a limit switch is active (%1); only jog may move the machine off it</source>
+            <translation>abgelehnt: ein Endschalter ist aktiv (%1); nur im Tippbetrieb darf die Maschine davon wegfahren</translation>
+        </message>
+        <message>
+            <source>refused: axes still moving (%1); wait until RequestAxeState reports standstill</source>
+            <translation>abgelehnt: Achsen noch in Bewegung (%1); warten, bis RequestAxeState Stillstand meldet</translation>
+        </message>
+        <message>
+            <source>jog refused: axes still moving (%1); wait until they stand still</source>
+            <translation>Tippbetrieb abgelehnt: Achsen noch in Bewegung (%1); warten, bis sie stillstehen</translation>
+        </message>
+        <message>
+            <source>refused: a limit switch is active (%1)</source>
+            <translation>abgelehnt: ein Endschalter ist aktiv (%1)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabCtlJog</name>
+        <message>
+            <source>jog refused: %1</source>
+            <translation>Tippbetrieb abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>jog: %1</source>
+            <translation>Tippbetrieb: %1</translation>
+        </message>
+        <message>
+            <source>jog refused by the board (NAK); machine state: %1; axe state: %2</source>
+            <translation>Tippbetrieb von der Platine abgelehnt (NAK); Maschinenstatus: %1; Achsstatus: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabCtlLine</name>
+        <message>
+            <source>cancelled by a stop, panic or reset</source>
+            <translation>abgebrochen durch Stopp, Panik-Stopp oder Reset</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; machine state %2: %3; axe state %4: %5</source>
+            <translation>%1 mit NAK beantwortet; Maschinenstatus %2: %3; Achsstatus %4: %5</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; the status could not be read: %2</source>
+            <translation>%1 mit NAK beantwortet; der Status konnte nicht gelesen werden: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabCtlMotionOps</name>
+        <message>
+            <source>this machine has no axis %1</source>
+            <translation>diese Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>%1 %2 for axis %3 is out of range (allowed: %4..%5)</source>
+            <translation>%1 %2 für Achse %3 liegt außerhalb des Bereichs (erlaubt: %4..%5)</translation>
+        </message>
+        <message>
+            <source>position after stop unknown: %1</source>
+            <translation>Position nach dem Stopp unbekannt: %1</translation>
+        </message>
+        <message>
+            <source>step count</source>
+            <translation>Schrittzahl</translation>
+        </message>
+        <message>
+            <source>refused: a feed stream is already running</source>
+            <translation>abgelehnt: ein Vorschubstrom läuft bereits</translation>
+        </message>
+        <message>
+            <source>%1 after %2 of %3 steps</source>
+            <translation>%1 nach %2 von %3 Schritten</translation>
+        </message>
+        <message>
+            <source>reference direction</source>
+            <translation>Referenzrichtung</translation>
+        </message>
+        <message>
+            <source>velocity</source>
+            <translation>Geschwindigkeit</translation>
+        </message>
+        <message>
+            <source>refused: axis %1 cannot reverse during a velocity move; set it to 0 and wait for standstill first</source>
+            <translation>abgelehnt: Achse %1 kann während einer Geschwindigkeitsfahrt nicht umkehren; zuerst auf 0 setzen und Stillstand abwarten</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabCtlParameters</name>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>parameter set names a parameter the E-LAB board has no command for</source>
+            <translation>der Parametersatz nennt einen Parameter, für den die E-LAB-Platine keinen Befehl hat</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabCtlStatusMapper</name>
+        <message>
+            <source>refused: the emergency stop (tmPanicStop) is active</source>
+            <translation>abgelehnt: der Not-Aus (tmPanicStop) ist aktiv</translation>
+        </message>
+        <message>
+            <source>refused: setup incomplete (tmInvSetup): write start-speed, max-speed and acceleration first</source>
+            <translation>abgelehnt: Einrichtung unvollständig (tmInvSetup): zuerst start-speed, max-speed und acceleration schreiben</translation>
+        </message>
+        <message>
+            <source>refused: a limit switch is active (%1); only jog may move the machine off it</source>
+            <translation>abgelehnt: ein Endschalter ist aktiv (%1); nur im Tippbetrieb darf die Maschine davon wegfahren</translation>
+        </message>
+        <message>
+            <source>refused: axes still moving (%1); wait until RequestAxeState reports standstill</source>
+            <translation>abgelehnt: Achsen noch in Bewegung (%1); warten, bis RequestAxeState Stillstand meldet</translation>
+        </message>
+        <message>
+            <source>jog refused: axes still moving (%1); wait until they stand still</source>
+            <translation>Tippbetrieb abgelehnt: Achsen noch in Bewegung (%1); warten, bis sie stillstehen</translation>
+        </message>
+        <message>
+            <source>refused: a limit switch is active (%1)</source>
+            <translation>abgelehnt: ein Endschalter ist aktiv (%1)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::ElabExchangeQueue</name>
+        <message>
+            <source>not connected</source>
+            <translation>nicht verbunden</translation>
+        </message>
+        <message>
+            <source>garbage on the line (%1: %2)</source>
+            <translation>ungültige Daten auf der Leitung (%1: %2)</translation>
+        </message>
+        <message>
+            <source>unexpected reply %1 to %2 (expected %3)</source>
+            <translation>unerwartete Antwort %1 auf %2 (erwartet %3)</translation>
+        </message>
+        <message>
+            <source>no reply to %1 within %2 ms</source>
+            <translation>keine Antwort auf %1 innerhalb von %2 ms</translation>
+        </message>
+        <message>
+            <source>link restarted</source>
+            <translation>Verbindung neu gestartet</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::elab::Presentation</name>
+        <message>
+            <source>The motors are powered.</source>
+            <translation>Die Motoren sind bestromt.</translation>
+        </message>
+        <message>
+            <source>The spindle motor is switched on.</source>
+            <translation>Der Spindelmotor ist eingeschaltet.</translation>
+        </message>
+        <message>
+            <source>At least one axis is moving.</source>
+            <translation>Mindestens eine Achse ist in Bewegung.</translation>
+        </message>
+        <message>
+            <source>Serial port error (documented, but never set by the firmware).</source>
+            <translation>Fehler der seriellen Schnittstelle (dokumentiert, aber von der Firmware nie gesetzt).</translation>
+        </message>
+        <message>
+            <source>Internal error (documented, but never set by the firmware).</source>
+            <translation>Interner Fehler (dokumentiert, aber von der Firmware nie gesetzt).</translation>
+        </message>
+        <message>
+            <source>Parameter error (documented, but never set by the firmware).</source>
+            <translation>Parameterfehler (dokumentiert, aber von der Firmware nie gesetzt).</translation>
+        </message>
+        <message>
+            <source>The board temperature is above 50 °C; the drivers may switch off.</source>
+            <translation>Die Platinentemperatur liegt über 50 °C; die Endstufen können abschalten.</translation>
+        </message>
+        <message>
+            <source>Setup incomplete: start speed, max speed and acceleration must all be written before moving.</source>
+            <translation>Einrichtung unvollständig: Startgeschwindigkeit, Maximalgeschwindigkeit und Beschleunigung müssen vor dem Verfahren geschrieben sein.</translation>
+        </message>
+        <message>
+            <source>A limit switch of the X axis is active.</source>
+            <translation>Ein Endschalter der X-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>A limit switch of the Y axis is active.</source>
+            <translation>Ein Endschalter der Y-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>A limit switch of the Z axis is active.</source>
+            <translation>Ein Endschalter der Z-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>The reference switch of the X axis is active.</source>
+            <translation>Der Referenzschalter der X-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>The reference switch of the Y axis is active.</source>
+            <translation>Der Referenzschalter der Y-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>The reference switch of the Z axis is active.</source>
+            <translation>Der Referenzschalter der Z-Achse ist aktiv.</translation>
+        </message>
+        <message>
+            <source>Emergency stop: the board's panic switch is active or the host sent ForcePanicStop.</source>
+            <translation>Not-Aus: der Panik-Schalter der Platine ist aktiv oder der PC hat ForcePanicStop gesendet.</translation>
+        </message>
+        <message>
+            <source>The X axis runs a move or feed.</source>
+            <translation>Die X-Achse führt eine Fahrt oder einen Vorschub aus.</translation>
+        </message>
+        <message>
+            <source>The X axis is jogging.</source>
+            <translation>Die X-Achse ist im Tippbetrieb.</translation>
+        </message>
+        <message>
+            <source>The Y axis runs a move or feed.</source>
+            <translation>Die Y-Achse führt eine Fahrt oder einen Vorschub aus.</translation>
+        </message>
+        <message>
+            <source>The Y axis is jogging.</source>
+            <translation>Die Y-Achse ist im Tippbetrieb.</translation>
+        </message>
+        <message>
+            <source>The Z axis runs a move or feed.</source>
+            <translation>Die Z-Achse führt eine Fahrt oder einen Vorschub aus.</translation>
+        </message>
+        <message>
+            <source>The Z axis is jogging.</source>
+            <translation>Die Z-Achse ist im Tippbetrieb.</translation>
+        </message>
+        <message>
+            <source>A limit switch is active: only jog moves are accepted.</source>
+            <translation>Ein Endschalter ist aktiv: nur Fahrten im Tippbetrieb werden angenommen.</translation>
+        </message>
+        <message>
+            <source>A reference switch is active.</source>
+            <translation>Ein Referenzschalter ist aktiv.</translation>
+        </message>
+        <message>
+            <source>Machine state (RequestMachineState)</source>
+            <translation>Maschinenstatus (RequestMachineState)</translation>
+        </message>
+        <message>
+            <source>Axis state (RequestAxeState)</source>
+            <translation>Achsstatus (RequestAxeState)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec</name>
+        <message>
+            <source>'|0' is never sent: the drive would stop answering (manual 6.4)</source>
+            <translation>'|0' wird nie gesendet: der Antrieb würde nicht mehr antworten (Handbuch 6.4)</translation>
+        </message>
+        <message>
+            <source>'@A' is never sent: it starts the bootloader (manual 5.32)</source>
+            <translation>'@A' wird nie gesendet: es startet den Bootloader (Handbuch 5.32)</translation>
+        </message>
+        <message>
+            <source>positioning</source>
+            <translation>Positionierung</translation>
+        </message>
+        <message>
+            <source>speed</source>
+            <translation>Drehzahl</translation>
+        </message>
+        <message>
+            <source>flag positioning</source>
+            <translation>Flag-Positionierung</translation>
+        </message>
+        <message>
+            <source>clock-direction</source>
+            <translation>Takt-Richtung</translation>
+        </message>
+        <message>
+            <source>analog</source>
+            <translation>analog</translation>
+        </message>
+        <message>
+            <source>joystick</source>
+            <translation>Joystick</translation>
+        </message>
+        <message>
+            <source>unused</source>
+            <translation>unbenutzt</translation>
+        </message>
+        <message>
+            <source>ready</source>
+            <translation>bereit</translation>
+        </message>
+        <message>
+            <source>busy</source>
+            <translation>beschäftigt</translation>
+        </message>
+        <message>
+            <source>zero position reached</source>
+            <translation>Nullposition erreicht</translation>
+        </message>
+        <message>
+            <source>position error</source>
+            <translation>Positionsfehler</translation>
+        </message>
+        <message>
+            <source>input 1 still set while ready</source>
+            <translation>Eingang 1 noch gesetzt, obwohl bereit</translation>
+        </message>
+        <message>
+            <source>mode %1</source>
+            <translation>Modus %1</translation>
+        </message>
+        <message>
+            <source>no error</source>
+            <translation>kein Fehler</translation>
+        </message>
+        <message>
+            <source>undervoltage</source>
+            <translation>Unterspannung</translation>
+        </message>
+        <message>
+            <source>over-temperature</source>
+            <translation>Übertemperatur</translation>
+        </message>
+        <message>
+            <source>the driver chip reported an error</source>
+            <translation>der Treiberbaustein hat einen Fehler gemeldet</translation>
+        </message>
+        <message>
+            <source>nonsensical data in the EEPROM</source>
+            <translation>unsinnige Daten im EEPROM</translation>
+        </message>
+        <message>
+            <source>internal error</source>
+            <translation>interner Fehler</translation>
+        </message>
+        <message>
+            <source>unknown error code %1</source>
+            <translation>unbekannter Fehlercode %1</translation>
+        </message>
+        <message>
+            <source>read reply without a command</source>
+            <translation>Leseantwort ohne Befehl</translation>
+        </message>
+        <message>
+            <source>error memory reply without a slot number</source>
+            <translation>Antwort des Fehlerspeichers ohne Platznummer</translation>
+        </message>
+        <message>
+            <source>malformed error memory reply</source>
+            <translation>fehlerhafte Antwort des Fehlerspeichers</translation>
+        </message>
+        <message>
+            <source>read reply without a numeric value</source>
+            <translation>Leseantwort ohne Zahlenwert</translation>
+        </message>
+        <message>
+            <source>malformed record string</source>
+            <translation>fehlerhafter Satz-String</translation>
+        </message>
+        <message>
+            <source>long reply without a keyword</source>
+            <translation>lange Antwort ohne Schlüsselwort</translation>
+        </message>
+        <message>
+            <source>long reply without a numeric value</source>
+            <translation>lange Antwort ohne Zahlenwert</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::CommandDecoder</name>
+        <message>
+            <source>frame interrupted by a new '#'</source>
+            <translation>Rahmen durch ein neues '#' unterbrochen</translation>
+        </message>
+        <message>
+            <source>command longer than %1 bytes</source>
+            <translation>Befehl länger als %1 Bytes</translation>
+        </message>
+        <message>
+            <source>command without a valid address</source>
+            <translation>Befehl ohne gültige Adresse</translation>
+        </message>
+        <message>
+            <source>command without a body</source>
+            <translation>Befehl ohne Inhalt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::NanotecBus</name>
+        <message>
+            <source>link is not open</source>
+            <translation>Verbindung ist nicht geöffnet</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::NanotecController</name>
+        <message>
+            <source>axis map: address %1 of axis %2 is invalid or used twice (allowed 1..254, one drive per axis)</source>
+            <translation>Achszuordnung: Adresse %1 der Achse %2 ist ungültig oder doppelt vergeben (erlaubt 1..254, ein Antrieb pro Achse)</translation>
+        </message>
+        <message>
+            <source>no drive answered %1 status sweeps in a row</source>
+            <translation>kein Antrieb hat auf %1 Statusrunden in Folge geantwortet</translation>
+        </message>
+        <message>
+            <source>drive %1 (axis %2)</source>
+            <translation>Antrieb %1 (Achse %2)</translation>
+        </message>
+        <message>
+            <source>no transport</source>
+            <translation>keine Übertragungsstrecke</translation>
+        </message>
+        <message>
+            <source>already connecting</source>
+            <translation>Verbindung wird bereits aufgebaut</translation>
+        </message>
+        <message>
+            <source>connection closed</source>
+            <translation>Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>Verbindung verloren: %1</translation>
+        </message>
+        <message>
+            <source>no drive answered at address %1 (19200 baud 8N1)</source>
+            <translation>kein Antrieb hat unter Adresse %1 geantwortet (19200 Baud 8N1)</translation>
+        </message>
+        <message>
+            <source>no answer from drive %1; the other drives work</source>
+            <translation>keine Antwort von Antrieb %1; die anderen Antriebe arbeiten</translation>
+        </message>
+        <message>
+            <source>%1 stopped answering (%2 status polls unanswered)</source>
+            <translation>%1 antwortet nicht mehr (%2 Statusabfragen unbeantwortet)</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error (encoder deviation above max-encoder-deviation); reset it with reset-position-error</source>
+            <translation>%1 meldet einen Positionsfehler (Geberabweichung über max-encoder-deviation); mit reset-position-error zurücksetzen</translation>
+        </message>
+        <message>
+            <source>not answering</source>
+            <translation>antwortet nicht</translation>
+        </message>
+        <message>
+            <source>no status yet</source>
+            <translation>noch kein Status</translation>
+        </message>
+        <message>
+            <source>this machine has no axis %1</source>
+            <translation>diese Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>emergency stop is active; reset it first</source>
+            <translation>Not-Aus ist aktiv; zuerst zurücksetzen</translation>
+        </message>
+        <message>
+            <source>%1 is not answering</source>
+            <translation>%1 antwortet nicht</translation>
+        </message>
+        <message>
+            <source>axis %1 runs in speed mode (jog or velocity move); stop it first</source>
+            <translation>Achse %1 läuft im Drehzahlmodus (Tippbetrieb oder Geschwindigkeitsfahrt); zuerst stoppen</translation>
+        </message>
+        <message>
+            <source>axis %1 is still moving (the drive is not ready)</source>
+            <translation>Achse %1 ist noch in Bewegung (der Antrieb ist nicht bereit)</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error; reset it first (reset-position-error)</source>
+            <translation>%1 meldet einen Positionsfehler; zuerst zurücksetzen (reset-position-error)</translation>
+        </message>
+        <message>
+            <source>absolute move refused: position of axis %1 is unknown, reference it first</source>
+            <translation>Absolutfahrt abgelehnt: Position der Achse %1 ist unbekannt, zuerst referenzieren</translation>
+        </message>
+        <message>
+            <source>not connected</source>
+            <translation>nicht verbunden</translation>
+        </message>
+        <message>
+            <source>move of axis %1: %2 steps exceed the 32-bit range (6.7)</source>
+            <translation>Fahrt der Achse %1: %2 Schritte überschreiten den 32-Bit-Bereich (6.7)</translation>
+        </message>
+        <message>
+            <source>target of axis %1 exceeds the 32-bit range (6.7)</source>
+            <translation>Ziel der Achse %1 überschreitet den 32-Bit-Bereich (6.7)</translation>
+        </message>
+        <message>
+            <source>no axis to reference: every direction is 0</source>
+            <translation>keine Achse zu referenzieren: jede Richtung ist 0</translation>
+        </message>
+        <message>
+            <source>axis %1 was stopped at speed (ramp too long); its position is suspect until referenced</source>
+            <translation>Achse %1 wurde in voller Fahrt gestoppt (Rampe zu lang); ihre Position ist bis zur Referenzfahrt zweifelhaft</translation>
+        </message>
+        <message>
+            <source>axis %1 is in a velocity move; stop it first</source>
+            <translation>Achse %1 ist in einer Geschwindigkeitsfahrt; zuerst stoppen</translation>
+        </message>
+        <message>
+            <source>velocity of axis %1: %2 steps/s is outside 0..25000 (6.9)</source>
+            <translation>Geschwindigkeit der Achse %1: %2 Schritte/s liegt außerhalb von 0..25000 (6.9)</translation>
+        </message>
+        <message>
+            <source>stop</source>
+            <translation>Stopp</translation>
+        </message>
+        <message>
+            <source>emergency stop</source>
+            <translation>Not-Aus</translation>
+        </message>
+        <message>
+            <source>%1 sent; not confirmed by %2</source>
+            <translation>%1 gesendet; von %2 nicht bestätigt</translation>
+        </message>
+        <message>
+            <source>reply '%1' carries no value</source>
+            <translation>Antwort '%1' enthält keinen Wert</translation>
+        </message>
+        <message>
+            <source>%1 does not know the command '%2' (it answered '?')</source>
+            <translation>%1 kennt den Befehl '%2' nicht (Antwort '?')</translation>
+        </message>
+        <message>
+            <source>%1 did not answer '%2' in time</source>
+            <translation>%1 hat auf '%2' nicht rechtzeitig geantwortet</translation>
+        </message>
+        <message>
+            <source>%1: garbled reply to '%2' (%3)</source>
+            <translation>%1: verstümmelte Antwort auf '%2' (%3)</translation>
+        </message>
+        <message>
+            <source>'%1' to %2 was cancelled (stop, panic or disconnect)</source>
+            <translation>'%1' an %2 wurde abgebrochen (Stopp, Panik-Stopp oder Trennen)</translation>
+        </message>
+        <message>
+            <source>unknown axis '%1' (this machine has %2)</source>
+            <translation>unbekannte Achse '%1' (diese Maschine hat %2)</translation>
+        </message>
+        <message>
+            <source>no drive answered the status request</source>
+            <translation>kein Antrieb hat auf die Statusabfrage geantwortet</translation>
+        </message>
+        <message>
+            <source>not a Nanotec frame: expected '#&lt;address&gt;&lt;command&gt;\r'</source>
+            <translation>kein Nanotec-Rahmen: erwartet '#&lt;Adresse&gt;&lt;Befehl&gt;\r'</translation>
+        </message>
+        <message>
+            <source>no reply to '%1' from address %2</source>
+            <translation>keine Antwort auf '%1' von Adresse %2</translation>
+        </message>
+        <message>
+            <source>cancelled</source>
+            <translation>abgebrochen</translation>
+        </message>
+        <message>
+            <source>scan cancelled</source>
+            <translation>Suche abgebrochen</translation>
+        </message>
+        <message>
+            <source>scan range must lie within 1..254</source>
+            <translation>der Suchbereich muss innerhalb von 1..254 liegen</translation>
+        </message>
+        <message>
+            <source>record must be 0..32</source>
+            <translation>der Satz muss 0..32 sein</translation>
+        </message>
+        <message>
+            <source>unknown Nanotec operation '%1'</source>
+            <translation>unbekannte Nanotec-Operation '%1'</translation>
+        </message>
+        <message>
+            <source>malformed error memory reply '%1'</source>
+            <translation>fehlerhafte Antwort des Fehlerspeichers '%1'</translation>
+        </message>
+        <message>
+            <source>%1 echoed '%2' to '%3'</source>
+            <translation>%1 hat '%2' auf '%3' zurückgegeben</translation>
+        </message>
+        <message>
+            <source>%1 on %2: wrote %3, but the drive kept %4 (drives echo invalid values and silently ignore them)</source>
+            <translation>%1 an %2: %3 geschrieben, aber der Antrieb behielt %4 (Antriebe geben ungültige Werte zurück und ignorieren sie stillschweigend)</translation>
+        </message>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>motor-address %1 is already used by %2</source>
+            <translation>motor-address %1 wird bereits von %2 benutzt</translation>
+        </message>
+        <message>
+            <source>%1 sent no record string: '%2'</source>
+            <translation>%1 hat keinen Satz-String gesendet: '%2'</translation>
+        </message>
+        <message>
+            <source>record must be 0 (RAM) or 1..32, not %1</source>
+            <translation>der Satz muss 0 (RAM) oder 1..32 sein, nicht %1</translation>
+        </message>
+        <message>
+            <source>record must be 1..32, not %1</source>
+            <translation>der Satz muss 1..32 sein, nicht %1</translation>
+        </message>
+        <message>
+            <source>'%1' is not a record setting (section 4)</source>
+            <translation>'%1' ist keine Satzeinstellung (Abschnitt 4)</translation>
+        </message>
+        <message>
+            <source>record %1 of %2: %3 is %4 in the EEPROM, not %5</source>
+            <translation>Satz %1 von %2: %3 ist im EEPROM %4, nicht %5</translation>
+        </message>
+        <message>
+            <source>%1 of record %2 on %3 did not take effect (the drive ignores invalid record numbers)</source>
+            <translation>%1 von Satz %2 an %3 wurde nicht wirksam (der Antrieb ignoriert ungültige Satznummern)</translation>
+        </message>
+        <message>
+            <source>saving</source>
+            <translation>Speichern</translation>
+        </message>
+        <message>
+            <source>loading</source>
+            <translation>Laden</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::Presentation</name>
+        <message>
+            <source>The drive is ready.</source>
+            <translation>Der Antrieb ist bereit.</translation>
+        </message>
+        <message>
+            <source>Zero position reached.</source>
+            <translation>Nullposition erreicht.</translation>
+        </message>
+        <message>
+            <source>Position error: the encoder disagrees with the demand position.</source>
+            <translation>Positionsfehler: der Geber weicht von der Sollposition ab.</translation>
+        </message>
+        <message>
+            <source>Input 1 is still set while the drive is ready again.</source>
+            <translation>Eingang 1 ist noch gesetzt, obwohl der Antrieb wieder bereit ist.</translation>
+        </message>
+        <message>
+            <source>Mode, bit 0.</source>
+            <translation>Modus, Bit 0.</translation>
+        </message>
+        <message>
+            <source>Mode, bit 1.</source>
+            <translation>Modus, Bit 1.</translation>
+        </message>
+        <message>
+            <source>Mode, bit 2.</source>
+            <translation>Modus, Bit 2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::ReplyDecoder</name>
+        <message>
+            <source>non-ASCII bytes in reply</source>
+            <translation>Nicht-ASCII-Bytes in der Antwort</translation>
+        </message>
+        <message>
+            <source>address with more than three digits</source>
+            <translation>Adresse mit mehr als drei Ziffern</translation>
+        </message>
+        <message>
+            <source>reply from invalid address %1</source>
+            <translation>Antwort von ungültiger Adresse %1</translation>
+        </message>
+        <message>
+            <source>reply without a command</source>
+            <translation>Antwort ohne Befehl</translation>
+        </message>
+        <message>
+            <source>reply without an address</source>
+            <translation>Antwort ohne Adresse</translation>
+        </message>
+        <message>
+            <source>malformed firmware string</source>
+            <translation>fehlerhafter Firmware-String</translation>
+        </message>
+        <message>
+            <source>echo with a non-numeric value</source>
+            <translation>Echo mit nicht numerischem Wert</translation>
+        </message>
+        <message>
+            <source>reply longer than %1 bytes</source>
+            <translation>Antwort länger als %1 Bytes</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ChartsPanel</name>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>%1 s</source>
+            <translation>%1 s</translation>
+        </message>
+        <message>
+            <source>%1 min</source>
+            <translation>%1 min</translation>
+        </message>
+        <message>
+            <source>Export CSV…</source>
+            <translation>CSV exportieren…</translation>
+        </message>
+        <message>
+            <source>Export PNG…</source>
+            <translation>PNG exportieren…</translation>
+        </message>
+        <message>
+            <source>Time window:</source>
+            <translation>Zeitfenster:</translation>
+        </message>
+        <message>
+            <source>time [s]</source>
+            <translation>Zeit [s]</translation>
+        </message>
+        <message>
+            <source>Position</source>
+            <translation>Position</translation>
+        </message>
+        <message>
+            <source>steps</source>
+            <translation>Schritte</translation>
+        </message>
+        <message>
+            <source>Commanded velocity</source>
+            <translation>Vorgegebene Geschwindigkeit</translation>
+        </message>
+        <message>
+            <source>steps/s</source>
+            <translation>Schritte/s</translation>
+        </message>
+        <message>
+            <source>Temperature</source>
+            <translation>Temperatur</translation>
+        </message>
+        <message>
+            <source>Poll rate</source>
+            <translation>Abfragerate</translation>
+        </message>
+        <message>
+            <source>Hz</source>
+            <translation>Hz</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write %1</source>
+            <translation>%1 kann nicht geschrieben werden</translation>
+        </message>
+        <message>
+            <source>Export CSV</source>
+            <translation>CSV exportieren</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV-Dateien (*.csv)</translation>
+        </message>
+        <message>
+            <source>Export PNG</source>
+            <translation>PNG exportieren</translation>
+        </message>
+        <message>
+            <source>PNG images (*.png)</source>
+            <translation>PNG-Bilder (*.png)</translation>
+        </message>
+        <message>
+            <source>°C</source>
+            <translation>°C</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ConnectionBar</name>
+        <message>
+            <source>Connect</source>
+            <translation>Verbinden</translation>
+        </message>
+        <message>
+            <source>Controller model</source>
+            <translation>Steuerungsmodell</translation>
+        </message>
+        <message>
+            <source>Serial port, the in-process simulator, tcp://HOST:PORT for a serial device server, or a device path such as /dev/pts/3</source>
+            <translation>Serielle Schnittstelle, der eingebaute Simulator, tcp://HOST:PORT für einen seriellen Geräteserver oder ein Gerätepfad wie /dev/pts/3</translation>
+        </message>
+        <message>
+            <source>port, tcp://host:port or path</source>
+            <translation>Port, tcp://host:port oder Pfad</translation>
+        </message>
+        <message>
+            <source> ms</source>
+            <translation> ms</translation>
+        </message>
+        <message>
+            <source>Status poll interval</source>
+            <translation>Intervall der Statusabfrage</translation>
+        </message>
+        <message>
+            <source>Achieved status poll rate</source>
+            <translation>Erreichte Rate der Statusabfrage</translation>
+        </message>
+        <message>
+            <source>Model:</source>
+            <translation>Modell:</translation>
+        </message>
+        <message>
+            <source>Port:</source>
+            <translation>Port:</translation>
+        </message>
+        <message>
+            <source>Poll:</source>
+            <translation>Abfrage:</translation>
+        </message>
+        <message>
+            <source>Simulator (in-process)</source>
+            <translation>Simulator (eingebaut)</translation>
+        </message>
+        <message>
+            <source>Choose a port first.</source>
+            <translation>Bitte zuerst einen Port wählen.</translation>
+        </message>
+        <message>
+            <source>Disconnect</source>
+            <translation>Trennen</translation>
+        </message>
+        <message>
+            <source>Disconnected</source>
+            <translation>Getrennt</translation>
+        </message>
+        <message>
+            <source>Connecting</source>
+            <translation>Verbinde</translation>
+        </message>
+        <message>
+            <source>Connected</source>
+            <translation>Verbunden</translation>
+        </message>
+        <message>
+            <source>Link lost</source>
+            <translation>Verbindung verloren</translation>
+        </message>
+        <message>
+            <source>– Hz</source>
+            <translation>– Hz</translation>
+        </message>
+        <message>
+            <source>%1 Hz</source>
+            <translation>%1 Hz</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::DiffDialog</name>
+        <message>
+            <source>(not set)</source>
+            <translation>(nicht gesetzt)</translation>
+        </message>
+        <message>
+            <source>on</source>
+            <translation>ein</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <source>Load parameters</source>
+            <translation>Parameter laden</translation>
+        </message>
+        <message>
+            <source>Parameter</source>
+            <translation>Parameter</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Form</source>
+            <translation>Formular</translation>
+        </message>
+        <message>
+            <source>File</source>
+            <translation>Datei</translation>
+        </message>
+        <message>
+            <source>%1 holds the same values as the form.</source>
+            <translation>%1 enthält dieselben Werte wie das Formular.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 changes %n value(s) (highlighted).</source>
+            <translation>
+                <numerusform>%1 ändert %n Wert (hervorgehoben).</numerusform>
+                <numerusform>%1 ändert %n Werte (hervorgehoben).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Load into form</source>
+            <translation>Ins Formular laden</translation>
+        </message>
+        <message>
+            <source>Load and write</source>
+            <translation>Laden und schreiben</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::GamepadJogSource</name>
+        <message>
+            <source>Gamepad</source>
+            <translation>Gamepad</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::GamepadPanel</name>
+        <message>
+            <source>Dead-man button held</source>
+            <translation>Totmanntaste gedrückt</translation>
+        </message>
+        <message>
+            <source>Jog with the gamepad</source>
+            <translation>Mit dem Gamepad verfahren</translation>
+        </message>
+        <message>
+            <source>Calibrate</source>
+            <translation>Kalibrieren</translation>
+        </message>
+        <message>
+            <source>Button that must be held for the sticks to move the machine</source>
+            <translation>Taste, die gedrückt bleiben muss, damit die Sticks die Maschine bewegen</translation>
+        </message>
+        <message>
+            <source>Settings</source>
+            <translation>Einstellungen</translation>
+        </message>
+        <message>
+            <source>Dead-man button:</source>
+            <translation>Totmanntaste:</translation>
+        </message>
+        <message>
+            <source>Dead zone:</source>
+            <translation>Totzone:</translation>
+        </message>
+        <message>
+            <source>Stick mapping</source>
+            <translation>Stick-Zuordnung</translation>
+        </message>
+        <message>
+            <source>not used</source>
+            <translation>nicht benutzt</translation>
+        </message>
+        <message>
+            <source>stick axis %1</source>
+            <translation>Stick-Achse %1</translation>
+        </message>
+        <message>
+            <source>invert</source>
+            <translation>umkehren</translation>
+        </message>
+        <message>
+            <source>Sticks</source>
+            <translation>Sticks</translation>
+        </message>
+        <message>
+            <source>Calibration saved.</source>
+            <translation>Kalibrierung gespeichert.</translation>
+        </message>
+        <message>
+            <source>Finish calibration</source>
+            <translation>Kalibrierung beenden</translation>
+        </message>
+        <message>
+            <source>Leave the sticks at rest, then move each stick to all its ends and press "Finish calibration". The machine does not move while calibrating.</source>
+            <translation>Sticks in Ruhe lassen, dann jeden Stick an alle Anschläge bewegen und „Kalibrierung beenden“ drücken. Während der Kalibrierung bewegt sich die Maschine nicht.</translation>
+        </message>
+        <message>
+            <source>No gamepad support.</source>
+            <translation>Keine Gamepad-Unterstützung.</translation>
+        </message>
+        <message>
+            <source>No gamepad connected. Plug one in; it is picked up at once.</source>
+            <translation>Kein Gamepad angeschlossen. Einfach einstecken; es wird sofort erkannt.</translation>
+        </message>
+        <message>
+            <source>Connected: %1</source>
+            <translation>Verbunden: %1</translation>
+        </message>
+        <message>
+            <source>Axis %1</source>
+            <translation>Achse %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::IncrementalJogWidget</name>
+        <message>
+            <source>Incremental jog</source>
+            <translation>Schrittweises Verfahren</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n step(s)</source>
+            <translation>
+                <numerusform>%n Schritt</numerusform>
+                <numerusform>%n Schritte</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Custom</source>
+            <translation>Eigener Wert</translation>
+        </message>
+        <message>
+            <source> steps</source>
+            <translation> Schritte</translation>
+        </message>
+        <message>
+            <source>Steps per click of a +/- button</source>
+            <translation>Schritte pro Klick auf eine +/−-Taste</translation>
+        </message>
+        <message>
+            <source>Step:</source>
+            <translation>Schritt:</translation>
+        </message>
+        <message>
+            <source>Move %1 by minus one step size</source>
+            <translation>%1 um eine Schrittweite in Minusrichtung verfahren</translation>
+        </message>
+        <message>
+            <source>Move %1 by plus one step size</source>
+            <translation>%1 um eine Schrittweite in Plusrichtung verfahren</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JogController</name>
+        <message>
+            <source>Jog refused: not connected</source>
+            <translation>Tippbetrieb abgelehnt: nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Jog refused: emergency stop is active</source>
+            <translation>Tippbetrieb abgelehnt: Not-Aus ist aktiv</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JogPanel</name>
+        <message>
+            <source>Keyboard jog (arrows, Page Up/Down)</source>
+            <translation>Tastatur-Tippbetrieb (Pfeile, Bild auf/ab)</translation>
+        </message>
+        <message>
+            <source>Drag the knob to jog X and Y; speed follows the deflection. Release to stop (ramped).</source>
+            <translation>Knopf ziehen, um X und Y zu verfahren; die Geschwindigkeit folgt der Auslenkung. Loslassen stoppt (mit Rampe).</translation>
+        </message>
+        <message>
+            <source>Drag to jog Z; release to stop (ramped).</source>
+            <translation>Ziehen, um Z zu verfahren; Loslassen stoppt (mit Rampe).</translation>
+        </message>
+        <message>
+            <source>Drag to jog U; release to stop (ramped).</source>
+            <translation>Ziehen, um U zu verfahren; Loslassen stoppt (mit Rampe).</translation>
+        </message>
+        <message>
+            <source>Commanded jog velocity</source>
+            <translation>Vorgegebene Tippgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Speed override</source>
+            <translation>Geschwindigkeits-Override</translation>
+        </message>
+        <message>
+            <source>Scales every jog speed (pad, keyboard, gamepad)</source>
+            <translation>Skaliert jede Tippgeschwindigkeit (Pad, Tastatur, Gamepad)</translation>
+        </message>
+        <message>
+            <source>Arrows jog X/Y, Page Up/Down jog Z while this window is active and no text field has the focus</source>
+            <translation>Pfeiltasten verfahren X/Y, Bild auf/ab verfährt Z, solange dieses Fenster aktiv ist und kein Textfeld den Fokus hat</translation>
+        </message>
+        <message>
+            <source>steps/s</source>
+            <translation>Schritte/s</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JogSettingsWidget</name>
+        <message>
+            <source>Jog settings</source>
+            <translation>Einstellungen Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Deflection of the pad that gives no motion</source>
+            <translation>Auslenkung des Pads, die keine Bewegung erzeugt</translation>
+        </message>
+        <message>
+            <source>Linear</source>
+            <translation>Linear</translation>
+        </message>
+        <message>
+            <source>Quadratic (fine near centre)</source>
+            <translation>Quadratisch (fein nahe der Mitte)</translation>
+        </message>
+        <message>
+            <source>Cubic (finest near centre)</source>
+            <translation>Kubisch (am feinsten nahe der Mitte)</translation>
+        </message>
+        <message>
+            <source>Keyboard jog speed as a share of the max jog speed</source>
+            <translation>Tastatur-Tippgeschwindigkeit als Anteil der maximalen Tippgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Dead zone:</source>
+            <translation>Totzone:</translation>
+        </message>
+        <message>
+            <source>Response:</source>
+            <translation>Kennlinie:</translation>
+        </message>
+        <message>
+            <source>Keyboard speed:</source>
+            <translation>Tastaturgeschwindigkeit:</translation>
+        </message>
+        <message>
+            <source> steps/s</source>
+            <translation> Schritte/s</translation>
+        </message>
+        <message>
+            <source>Jog speed of axis %1 at full deflection and 100 % override</source>
+            <translation>Tippgeschwindigkeit der Achse %1 bei voller Auslenkung und 100 % Override</translation>
+        </message>
+        <message>
+            <source>Max %1:</source>
+            <translation>Max. %1:</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JoystickPad</name>
+        <message>
+            <source>LIMIT</source>
+            <translation>ENDSCHALTER</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::KeyboardJog</name>
+        <message>
+            <source>Keyboard</source>
+            <translation>Tastatur</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineContext</name>
+        <message>
+            <source>steps</source>
+            <translation>Schritte</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MainWindow</name>
+        <message>
+            <source>Connection</source>
+            <translation>Verbindung</translation>
+        </message>
+        <message>
+            <source>&amp;Stop</source>
+            <translation>&amp;Stopp</translation>
+        </message>
+        <message>
+            <source>Ramped stop of all motion (Esc)</source>
+            <translation>Stopp aller Bewegungen mit Rampe (Esc)</translation>
+        </message>
+        <message>
+            <source>&amp;Panic stop</source>
+            <translation>&amp;Panik-Stopp</translation>
+        </message>
+        <message>
+            <source>Immediate stop without ramp (F1); positions are lost</source>
+            <translation>Sofortiger Stopp ohne Rampe (F1); die Positionen gehen verloren</translation>
+        </message>
+        <message>
+            <source>&amp;Reference all</source>
+            <translation>Alle &amp;referenzieren</translation>
+        </message>
+        <message>
+            <source>&amp;Connect / Disconnect</source>
+            <translation>&amp;Verbinden / Trennen</translation>
+        </message>
+        <message>
+            <source>Reset &amp;controller</source>
+            <translation>&amp;Steuerung zurücksetzen</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard jog</source>
+            <translation>&amp;Tastatur-Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Position</source>
+            <translation>Position</translation>
+        </message>
+        <message>
+            <source>Referencing</source>
+            <translation>Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>Status</source>
+            <translation>Status</translation>
+        </message>
+        <message>
+            <source>Gamepad</source>
+            <translation>Gamepad</translation>
+        </message>
+        <message>
+            <source>Setup</source>
+            <translation>Einrichtung</translation>
+        </message>
+        <message>
+            <source>Traffic</source>
+            <translation>Datenverkehr</translation>
+        </message>
+        <message>
+            <source>Charts</source>
+            <translation>Diagramme</translation>
+        </message>
+        <message>
+            <source>&amp;File</source>
+            <translation>&amp;Datei</translation>
+        </message>
+        <message>
+            <source>&amp;Load parameters…</source>
+            <translation>Parameter &amp;laden…</translation>
+        </message>
+        <message>
+            <source>&amp;Save parameters…</source>
+            <translation>Parameter &amp;speichern…</translation>
+        </message>
+        <message>
+            <source>Save &amp;traffic…</source>
+            <translation>&amp;Datenverkehr speichern…</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>&amp;Beenden</translation>
+        </message>
+        <message>
+            <source>&amp;Machine</source>
+            <translation>&amp;Maschine</translation>
+        </message>
+        <message>
+            <source>Refresh &amp;status</source>
+            <translation>&amp;Status aktualisieren</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>&amp;Ansicht</translation>
+        </message>
+        <message>
+            <source>Reset &amp;layout</source>
+            <translation>&amp;Layout zurücksetzen</translation>
+        </message>
+        <message>
+            <source>&amp;Language</source>
+            <translation>&amp;Sprache</translation>
+        </message>
+        <message>
+            <source>System default</source>
+            <translation>Systemvorgabe</translation>
+        </message>
+        <message>
+            <source>Language</source>
+            <translation>Sprache</translation>
+        </message>
+        <message>
+            <source>The language changes when StepDeck is started again.</source>
+            <translation>Die Sprache ändert sich beim nächsten Start von StepDeck.</translation>
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation>&amp;Hilfe</translation>
+        </message>
+        <message>
+            <source>&amp;About StepDeck</source>
+            <translation>&amp;Über StepDeck</translation>
+        </message>
+        <message>
+            <source>About StepDeck</source>
+            <translation>Über StepDeck</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Operator and technician software for stepper-motor controllers.&lt;br&gt;&lt;br&gt;Esc: ramped stop of all motion&lt;br&gt;F1: panic stop (positions are lost)</source>
+            <translation>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Bedien- und Techniker-Software für Schrittmotorsteuerungen.&lt;br&gt;&lt;br&gt;Esc: Stopp aller Bewegungen mit Rampe&lt;br&gt;F1: Panik-Stopp (die Positionen gehen verloren)</translation>
+        </message>
+        <message>
+            <source>About &amp;Qt</source>
+            <translation>Über &amp;Qt</translation>
+        </message>
+        <message>
+            <source>Stop: not connected</source>
+            <translation>Stopp: nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Stop sent</source>
+            <translation>Stopp gesendet</translation>
+        </message>
+        <message>
+            <source>Panic: not connected</source>
+            <translation>Panik-Stopp: nicht verbunden</translation>
+        </message>
+        <message>
+            <source>PANIC STOP sent: positions are lost, reference all axes before moving.</source>
+            <translation>PANIK-STOPP gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Disconnected</source>
+            <translation>Getrennt</translation>
+        </message>
+        <message>
+            <source>Connecting…</source>
+            <translation>Verbinde…</translation>
+        </message>
+        <message>
+            <source>Connected</source>
+            <translation>Verbunden</translation>
+        </message>
+        <message>
+            <source>Link lost</source>
+            <translation>Verbindung verloren</translation>
+        </message>
+        <message>
+            <source>simulator</source>
+            <translation>Simulator</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ParameterField</name>
+        <message>
+            <source>Allowed: %1 to %2</source>
+            <translation>Erlaubt: %1 bis %2</translation>
+        </message>
+        <message>
+            <source>on</source>
+            <translation>ein</translation>
+        </message>
+        <message>
+            <source>%1: a value is required</source>
+            <translation>%1: ein Wert ist erforderlich</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::PositionPanel</name>
+        <message>
+            <source>Units…</source>
+            <translation>Einheiten…</translation>
+        </message>
+        <message>
+            <source>Steps per mm or per degree for each axis</source>
+            <translation>Schritte pro mm oder pro Grad für jede Achse</translation>
+        </message>
+        <message>
+            <source>Clear work offsets</source>
+            <translation>Werkstück-Nullpunkte löschen</translation>
+        </message>
+        <message>
+            <source>Show machine positions again (work origin = machine origin)</source>
+            <translation>Wieder Maschinenpositionen anzeigen (Werkstück-Nullpunkt = Maschinen-Nullpunkt)</translation>
+        </message>
+        <message>
+            <source>Zero %1</source>
+            <translation>%1 nullen</translation>
+        </message>
+        <message>
+            <source>Set the work origin of %1 at the current position</source>
+            <translation>Werkstück-Nullpunkt von %1 auf die aktuelle Position setzen</translation>
+        </message>
+        <message>
+            <source>machine %1 steps</source>
+            <translation>Maschine %1 Schritte</translation>
+        </message>
+        <message>
+            <source>UNKNOWN</source>
+            <translation>UNBEKANNT</translation>
+        </message>
+        <message>
+            <source>ESTIMATED</source>
+            <translation>GESCHÄTZT</translation>
+        </message>
+        <message>
+            <source>REFERENCED</source>
+            <translation>REFERENZIERT</translation>
+        </message>
+        <message>
+            <source>Not referenced since the last panic, reset or reconnect: the position is counted from where the axis was, not from the machine origin.</source>
+            <translation>Seit dem letzten Panik-Stopp, Reset oder Neuverbinden nicht referenziert: die Position zählt ab dem Ort, an dem die Achse stand, nicht ab dem Maschinen-Nullpunkt.</translation>
+        </message>
+        <message>
+            <source>Integrated from commanded jog rates; the controller did not confirm it.</source>
+            <translation>Aus den vorgegebenen Tippgeschwindigkeiten aufsummiert; die Steuerung hat sie nicht bestätigt.</translation>
+        </message>
+        <message>
+            <source>Referenced and confirmed.</source>
+            <translation>Referenziert und bestätigt.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::RawWordView</name>
+        <message>
+            <source>Raw %1:</source>
+            <translation>Rohwert %1:</translation>
+        </message>
+        <message>
+            <source>bit %1</source>
+            <translation>Bit %1</translation>
+        </message>
+        <message>
+            <source>Not implemented by the firmware: always off.</source>
+            <translation>Von der Firmware nicht implementiert: immer aus.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ReferencePanel</name>
+        <message>
+            <source>Reference all</source>
+            <translation>Alle referenzieren</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+        <message>
+            <source>Reference every axis in the order given (equal numbers run together)</source>
+            <translation>Jede Achse in der angegebenen Reihenfolge referenzieren (gleiche Nummern fahren gemeinsam)</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>Richtung</translation>
+        </message>
+        <message>
+            <source>Order</source>
+            <translation>Reihenfolge</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>Zustand</translation>
+        </message>
+        <message>
+            <source>− (negative)</source>
+            <translation>− (negativ)</translation>
+        </message>
+        <message>
+            <source>+ (positive)</source>
+            <translation>+ (positiv)</translation>
+        </message>
+        <message>
+            <source>skip</source>
+            <translation>auslassen</translation>
+        </message>
+        <message>
+            <source>Axes with the same number are referenced together; lower numbers first</source>
+            <translation>Achsen mit gleicher Nummer werden gemeinsam referenziert; kleinere Nummern zuerst</translation>
+        </message>
+        <message>
+            <source>not referenced</source>
+            <translation>nicht referenziert</translation>
+        </message>
+        <message>
+            <source>Reference %1</source>
+            <translation>%1 referenzieren</translation>
+        </message>
+        <message>
+            <source>Referencing cancelled.</source>
+            <translation>Referenzfahrt abgebrochen.</translation>
+        </message>
+        <message>
+            <source>referencing…</source>
+            <translation>referenziere…</translation>
+        </message>
+        <message>
+            <source>referenced</source>
+            <translation>referenziert</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ReferenceRunner</name>
+        <message>
+            <source>Referencing aborted: the link is down.</source>
+            <translation>Referenzfahrt abgebrochen: die Verbindung ist unterbrochen.</translation>
+        </message>
+        <message>
+            <source>Referencing aborted by the panic stop.</source>
+            <translation>Referenzfahrt durch den Panik-Stopp abgebrochen.</translation>
+        </message>
+        <message>
+            <source>Referencing restarted.</source>
+            <translation>Referenzfahrt neu gestartet.</translation>
+        </message>
+        <message>
+            <source>Nothing to reference: every axis is set to skip.</source>
+            <translation>Nichts zu referenzieren: jede Achse steht auf „auslassen“.</translation>
+        </message>
+        <message>
+            <source>Referencing %1 (stage %2 of %3)…</source>
+            <translation>Referenziere %1 (Stufe %2 von %3)…</translation>
+        </message>
+        <message>
+            <source>Referencing failed: %1</source>
+            <translation>Referenzfahrt fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Referenced.</source>
+            <translation>Referenziert.</translation>
+        </message>
+        <message>
+            <source>All selected axes are referenced.</source>
+            <translation>Alle gewählten Achsen sind referenziert.</translation>
+        </message>
+        <message>
+            <source>Referencing failed: the run ended before the reference switch was reached.</source>
+            <translation>Referenzfahrt fehlgeschlagen: die Fahrt endete, bevor der Referenzschalter erreicht war.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::SafetyBar</name>
+        <message>
+            <source>STOP  (Esc)</source>
+            <translation>STOPP  (Esc)</translation>
+        </message>
+        <message>
+            <source>PANIC  (F1)</source>
+            <translation>PANIK  (F1)</translation>
+        </message>
+        <message>
+            <source>Ramped stop of all motion</source>
+            <translation>Stopp aller Bewegungen mit Rampe</translation>
+        </message>
+        <message>
+            <source>Immediate stop without ramp: steps are lost, the machine must be referenced afterwards</source>
+            <translation>Sofortiger Stopp ohne Rampe: Schritte gehen verloren, die Maschine muss danach referenziert werden</translation>
+        </message>
+        <message>
+            <source>Reference all…</source>
+            <translation>Alle referenzieren…</translation>
+        </message>
+        <message>
+            <source>Link lost: motion stopped by the controller's own safety, positions are unknown. Reconnect, then reference all axes.</source>
+            <translation>Verbindung verloren: die Bewegung wurde durch die Sicherheitsfunktion der Steuerung gestoppt, die Positionen sind unbekannt. Neu verbinden, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Not connected.</source>
+            <translation>Nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>EMERGENCY STOP active: positions are lost. Release the emergency stop, then reference all axes.</source>
+            <translation>NOT-AUS aktiv: die Positionen sind verloren. Not-Aus lösen, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Positions are lost (panic stop or reconnect). Reference the machine before any absolute move.</source>
+            <translation>Die Positionen sind verloren (Panik-Stopp oder Neuverbindung). Vor jeder Absolutfahrt die Maschine referenzieren.</translation>
+        </message>
+        <message>
+            <source>Not referenced: positions are unknown until the axes are referenced.</source>
+            <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
+        </message>
+        <message>
+            <source>Ready: all axes referenced.</source>
+            <translation>Bereit: alle Achsen referenziert.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::SdlGamepadDevice</name>
+        <message>
+            <source>SDL could not start its joystick support: %1</source>
+            <translation>SDL konnte die Joystick-Unterstützung nicht starten: %1</translation>
+        </message>
+        <message>
+            <source>This build has no gamepad support (SDL2 was not found when it was built).</source>
+            <translation>Dieser Build hat keine Gamepad-Unterstützung (SDL2 wurde beim Bauen nicht gefunden).</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::SetupPage</name>
+        <message>
+            <source>Read</source>
+            <translation>Lesen</translation>
+        </message>
+        <message>
+            <source>Write</source>
+            <translation>Schreiben</translation>
+        </message>
+        <message>
+            <source>Write &amp;&amp; verify</source>
+            <translation>Schreiben &amp;&amp; prüfen</translation>
+        </message>
+        <message>
+            <source>Defaults</source>
+            <translation>Standardwerte</translation>
+        </message>
+        <message>
+            <source>Save to file…</source>
+            <translation>In Datei speichern…</translation>
+        </message>
+        <message>
+            <source>Load from file…</source>
+            <translation>Aus Datei laden…</translation>
+        </message>
+        <message>
+            <source>Read the values back from the controller</source>
+            <translation>Werte aus der Steuerung zurücklesen</translation>
+        </message>
+        <message>
+            <source>Write changed values to the controller</source>
+            <translation>Geänderte Werte in die Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>Write, then read back and compare where the protocol can</source>
+            <translation>Schreiben, dann zurücklesen und vergleichen, wo das Protokoll es erlaubt</translation>
+        </message>
+        <message>
+            <source>Fill the form with the model's default values (nothing is sent)</source>
+            <translation>Formular mit den Standardwerten des Modells füllen (es wird nichts gesendet)</translation>
+        </message>
+        <message>
+            <source>This controller cannot read parameters back: the fields show the defaults (or a loaded file) until written.</source>
+            <translation>Diese Steuerung kann Parameter nicht zurücklesen: die Felder zeigen die Standardwerte (oder eine geladene Datei), bis sie geschrieben sind.</translation>
+        </message>
+        <message>
+            <source>Cannot write: %1</source>
+            <translation>Schreiben nicht möglich: %1</translation>
+        </message>
+        <message>
+            <source>Not connected</source>
+            <translation>Nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Invalid values cannot be written:
+%1</source>
+            <translation>Ungültige Werte können nicht geschrieben werden:
+%1</translation>
+        </message>
+        <message>
+            <source>Nothing to write: every field matches the controller.</source>
+            <translation>Nichts zu schreiben: jedes Feld stimmt mit der Steuerung überein.</translation>
+        </message>
+        <message>
+            <source>Not written: %1</source>
+            <translation>Nicht geschrieben: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>Writing and verifying %n parameter(s)…</source>
+            <translation>
+                <numerusform>Schreibe und prüfe %n Parameter…</numerusform>
+                <numerusform>Schreibe und prüfe %n Parameter…</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Writing %n parameter(s)…</source>
+            <translation>
+                <numerusform>Schreibe %n Parameter…</numerusform>
+                <numerusform>Schreibe %n Parameter…</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This controller cannot read parameters back.</source>
+            <translation>Diese Steuerung kann Parameter nicht zurücklesen.</translation>
+        </message>
+        <message>
+            <source>Reading…</source>
+            <translation>Lese…</translation>
+        </message>
+        <message>
+            <source>Written: %1.</source>
+            <translation>Geschrieben: %1.</translation>
+        </message>
+        <message>
+            <source>Write failed: %1</source>
+            <translation>Schreiben fehlgeschlagen: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>Read %n parameter(s).</source>
+            <translation>
+                <numerusform>%n Parameter gelesen.</numerusform>
+                <numerusform>%n Parameter gelesen.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Read failed: %1</source>
+            <translation>Lesen fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Not saved: %1</source>
+            <translation>Nicht gespeichert: %1</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>%1 kann nicht geöffnet werden: %2</translation>
+        </message>
+        <message>
+            <source>%1 is not a parameter file: %2</source>
+            <translation>%1 ist keine Parameterdatei: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>Save parameters</source>
+            <translation>Parameter speichern</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.json)</source>
+            <translation>Parameterdateien (*.json)</translation>
+        </message>
+        <message>
+            <source>Saved to %1.</source>
+            <translation>Gespeichert in %1.</translation>
+        </message>
+        <message>
+            <source>Load parameters</source>
+            <translation>Parameter laden</translation>
+        </message>
+        <message>
+            <source>Loaded %1 into the form.</source>
+            <translation>%1 ins Formular geladen.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::StatusPanel</name>
+        <message>
+            <source>Drive on</source>
+            <translation>Antrieb ein</translation>
+        </message>
+        <message>
+            <source>The motors are powered.</source>
+            <translation>Die Motoren sind bestromt.</translation>
+        </message>
+        <message>
+            <source>Spindle on</source>
+            <translation>Spindel ein</translation>
+        </message>
+        <message>
+            <source>The spindle output is on.</source>
+            <translation>Der Spindelausgang ist eingeschaltet.</translation>
+        </message>
+        <message>
+            <source>Busy</source>
+            <translation>Beschäftigt</translation>
+        </message>
+        <message>
+            <source>An axis is moving.</source>
+            <translation>Eine Achse ist in Bewegung.</translation>
+        </message>
+        <message>
+            <source>Over-temperature</source>
+            <translation>Übertemperatur</translation>
+        </message>
+        <message>
+            <source>The controller reports over-temperature; the drivers may switch off.</source>
+            <translation>Die Steuerung meldet Übertemperatur; die Endstufen können abschalten.</translation>
+        </message>
+        <message>
+            <source>Setup incomplete</source>
+            <translation>Einrichtung unvollständig</translation>
+        </message>
+        <message>
+            <source>Speeds and acceleration have not all been written; moves are refused.</source>
+            <translation>Geschwindigkeiten und Beschleunigung sind nicht alle geschrieben; Fahrten werden abgelehnt.</translation>
+        </message>
+        <message>
+            <source>Emergency stop</source>
+            <translation>Not-Aus</translation>
+        </message>
+        <message>
+            <source>Emergency stop active: panic button or host panic stop.</source>
+            <translation>Not-Aus aktiv: Panik-Taster oder Panik-Stopp vom PC.</translation>
+        </message>
+        <message>
+            <source>Comm fault</source>
+            <translation>Kommunikationsfehler</translation>
+        </message>
+        <message>
+            <source>Replies are missing or the link is lost.</source>
+            <translation>Antworten fehlen oder die Verbindung ist verloren.</translation>
+        </message>
+        <message>
+            <source>Start button</source>
+            <translation>Starttaste</translation>
+        </message>
+        <message>
+            <source>The start button on the controller is pressed.</source>
+            <translation>Die Starttaste an der Steuerung ist gedrückt.</translation>
+        </message>
+        <message>
+            <source>Moving</source>
+            <translation>Fährt</translation>
+        </message>
+        <message>
+            <source>Positioning, feed, reference or velocity move</source>
+            <translation>Positionier-, Vorschub-, Referenz- oder Geschwindigkeitsfahrt</translation>
+        </message>
+        <message>
+            <source>Jog</source>
+            <translation>Tippen</translation>
+        </message>
+        <message>
+            <source>Jogging at a non-zero rate</source>
+            <translation>Tippbetrieb mit einer Rate ungleich null</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Endschalter</translation>
+        </message>
+        <message>
+            <source>A limit switch of this axis is active</source>
+            <translation>Ein Endschalter dieser Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>Ref. switch</source>
+            <translation>Ref.-Schalter</translation>
+        </message>
+        <message>
+            <source>The reference switch is active</source>
+            <translation>Der Referenzschalter ist aktiv</translation>
+        </message>
+        <message>
+            <source>Referenced</source>
+            <translation>Referenziert</translation>
+        </message>
+        <message>
+            <source>Referenced since the last panic, reset or reconnect</source>
+            <translation>Referenziert seit dem letzten Panik-Stopp, Reset oder Neuverbinden</translation>
+        </message>
+        <message>
+            <source>Raw status</source>
+            <translation>Rohstatus</translation>
+        </message>
+        <message>
+            <source>Machine</source>
+            <translation>Maschine</translation>
+        </message>
+        <message>
+            <source>Axes</source>
+            <translation>Achsen</translation>
+        </message>
+        <message>
+            <source>Controller</source>
+            <translation>Steuerung</translation>
+        </message>
+        <message>
+            <source>Temperature:</source>
+            <translation>Temperatur:</translation>
+        </message>
+        <message>
+            <source>no raw words</source>
+            <translation>keine Rohwerte</translation>
+        </message>
+        <message>
+            <source>Comm faults: %1    Resyncs: %2    Poll rate: %3 Hz</source>
+            <translation>Kommunikationsfehler: %1    Neusynchronisierungen: %2    Abfragerate: %3 Hz</translation>
+        </message>
+        <message>
+            <source>Drive %1: %2 %3</source>
+            <translation>Antrieb %1: %2 %3</translation>
+        </message>
+        <message>
+            <source>responding</source>
+            <translation>antwortet</translation>
+        </message>
+        <message>
+            <source>NOT RESPONDING</source>
+            <translation>ANTWORTET NICHT</translation>
+        </message>
+        <message>
+            <source>Over-temperature: the drivers may switch off. Stop and let the controller cool down.</source>
+            <translation>Übertemperatur: die Endstufen können abschalten. Anhalten und die Steuerung abkühlen lassen.</translation>
+        </message>
+        <message>
+            <source>Warning: approaching the %1 °C over-temperature limit.</source>
+            <translation>Warnung: nahe an der Übertemperaturgrenze von %1 °C.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::TrafficConsole</name>
+        <message>
+            <source>Hex</source>
+            <translation>Hex</translation>
+        </message>
+        <message>
+            <source>Hide polls</source>
+            <translation>Abfragen ausblenden</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Send</source>
+            <translation>Senden</translation>
+        </message>
+        <message>
+            <source>Clear</source>
+            <translation>Leeren</translation>
+        </message>
+        <message>
+            <source>Save…</source>
+            <translation>Speichern…</translation>
+        </message>
+        <message>
+            <source>Hide the status poller's requests and replies</source>
+            <translation>Anfragen und Antworten der Statusabfrage ausblenden</translation>
+        </message>
+        <message>
+            <source>Freeze the view; traffic is still recorded</source>
+            <translation>Ansicht einfrieren; der Datenverkehr wird weiter aufgezeichnet</translation>
+        </message>
+        <message>
+            <source>Send raw bytes, e.g. &lt;ENQ&gt; or &lt;DC4&gt;0064,0000;0000.</source>
+            <translation>Rohe Bytes senden, z. B. &lt;ENQ&gt; oder &lt;DC4&gt;0064,0000;0000.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s)</source>
+            <translation>
+                <numerusform>%n Eintrag</numerusform>
+                <numerusform>%n Einträge</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Not sent: %1</source>
+            <translation>Nicht gesendet: %1</translation>
+        </message>
+        <message>
+            <source>Not sent: not connected</source>
+            <translation>Nicht gesendet: nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Send failed: %1</source>
+            <translation>Senden fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Save traffic</source>
+            <translation>Datenverkehr speichern</translation>
+        </message>
+        <message>
+            <source>Log files (*.log *.txt)</source>
+            <translation>Protokolldateien (*.log *.txt)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::UnitsDialog</name>
+        <message>
+            <source>Axis units</source>
+            <translation>Achseinheiten</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Steps per unit</source>
+            <translation>Schritte pro Einheit</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>steps only</source>
+            <translation>nur Schritte</translation>
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>° (degree)</source>
+            <translation>° (Grad)</translation>
+        </message>
+        <message>
+            <source>inch</source>
+            <translation>Zoll</translation>
+        </message>
+    </context>
+    <context>
+        <name>main::main</name>
+        <message>
+            <source>unknown model '%1' (known: %2)</source>
+            <translation>unbekanntes Modell '%1' (bekannt: %2)</translation>
+        </message>
+    </context>
+    <context>
+        <name>ParameterSchema</name>
+        <message>
+            <source>%1: value '%2' is out of range (allowed: %3%4)</source>
+            <translation>%1: Wert '%2' liegt außerhalb des Bereichs (erlaubt: %3%4)</translation>
+        </message>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>%1 is read-only</source>
+            <translation>%1 ist nur lesbar</translation>
+        </message>
+        <message>
+            <source>%1 needs one value per axis</source>
+            <translation>%1 braucht einen Wert pro Achse</translation>
+        </message>
+        <message>
+            <source>%1: this machine has no axis %2</source>
+            <translation>%1: diese Maschine hat keine Achse %2</translation>
+        </message>
+        <message>
+            <source>%1 takes a single value, not one per axis</source>
+            <translation>%1 nimmt einen einzelnen Wert, nicht einen pro Achse</translation>
+        </message>
+        <message>
+            <source>expected NAME=VALUE, got '%1'</source>
+            <translation>NAME=WERT erwartet, erhalten: '%1'</translation>
+        </message>
+        <message>
+            <source>%1 needs 1 or %2 values (axes %3)</source>
+            <translation>%1 braucht 1 oder %2 Werte (Achsen %3)</translation>
+        </message>
+        <message>
+            <source>%1 takes a single value</source>
+            <translation>%1 nimmt einen einzelnen Wert</translation>
+        </message>
+        <message>
+            <source>not a StepDeck parameter file</source>
+            <translation>keine StepDeck-Parameterdatei</translation>
+        </message>
+        <message>
+            <source>unsupported parameter file version %1</source>
+            <translation>nicht unterstützte Version %1 der Parameterdatei</translation>
+        </message>
+        <message>
+            <source>parameter file is for model '%1', not '%2'</source>
+            <translation>Parameterdatei ist für Modell '%1', nicht '%2'</translation>
+        </message>
+        <message>
+            <source>parameter file has no "parameters" object</source>
+            <translation>Parameterdatei hat kein Objekt "parameters"</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not an axis</source>
+            <translation>%1: '%2' ist keine Achse</translation>
+        </message>
+    </context>
+    <context>
+        <name>Nanotec</name>
+        <message>
+            <source>'|0' is never sent: the drive would stop answering (manual 6.4)</source>
+            <translation>'|0' wird nie gesendet: der Antrieb würde nicht mehr antworten (Handbuch 6.4)</translation>
+        </message>
+        <message>
+            <source>'@A' is never sent: it starts the bootloader (manual 5.32)</source>
+            <translation>'@A' wird nie gesendet: es startet den Bootloader (Handbuch 5.32)</translation>
+        </message>
+        <message>
+            <source>positioning</source>
+            <translation>Positionierung</translation>
+        </message>
+        <message>
+            <source>speed</source>
+            <translation>Drehzahl</translation>
+        </message>
+        <message>
+            <source>flag positioning</source>
+            <translation>Flag-Positionierung</translation>
+        </message>
+        <message>
+            <source>clock-direction</source>
+            <translation>Takt-Richtung</translation>
+        </message>
+        <message>
+            <source>analog</source>
+            <translation>analog</translation>
+        </message>
+        <message>
+            <source>joystick</source>
+            <translation>Joystick</translation>
+        </message>
+        <message>
+            <source>unused</source>
+            <translation>unbenutzt</translation>
+        </message>
+        <message>
+            <source>ready</source>
+            <translation>bereit</translation>
+        </message>
+        <message>
+            <source>busy</source>
+            <translation>beschäftigt</translation>
+        </message>
+        <message>
+            <source>zero position reached</source>
+            <translation>Nullposition erreicht</translation>
+        </message>
+        <message>
+            <source>position error</source>
+            <translation>Positionsfehler</translation>
+        </message>
+        <message>
+            <source>input 1 still set while ready</source>
+            <translation>Eingang 1 noch gesetzt, obwohl bereit</translation>
+        </message>
+        <message>
+            <source>mode %1</source>
+            <translation>Modus %1</translation>
+        </message>
+        <message>
+            <source>no error</source>
+            <translation>kein Fehler</translation>
+        </message>
+        <message>
+            <source>undervoltage</source>
+            <translation>Unterspannung</translation>
+        </message>
+        <message>
+            <source>over-temperature</source>
+            <translation>Übertemperatur</translation>
+        </message>
+        <message>
+            <source>the driver chip reported an error</source>
+            <translation>der Treiberbaustein hat einen Fehler gemeldet</translation>
+        </message>
+        <message>
+            <source>nonsensical data in the EEPROM</source>
+            <translation>unsinnige Daten im EEPROM</translation>
+        </message>
+        <message>
+            <source>internal error</source>
+            <translation>interner Fehler</translation>
+        </message>
+        <message>
+            <source>unknown error code %1</source>
+            <translation>unbekannter Fehlercode %1</translation>
+        </message>
+        <message>
+            <source>read reply without a command</source>
+            <translation>Leseantwort ohne Befehl</translation>
+        </message>
+        <message>
+            <source>error memory reply without a slot number</source>
+            <translation>Antwort des Fehlerspeichers ohne Platznummer</translation>
+        </message>
+        <message>
+            <source>malformed error memory reply</source>
+            <translation>fehlerhafte Antwort des Fehlerspeichers</translation>
+        </message>
+        <message>
+            <source>read reply without a numeric value</source>
+            <translation>Leseantwort ohne Zahlenwert</translation>
+        </message>
+        <message>
+            <source>malformed record string</source>
+            <translation>fehlerhafter Satz-String</translation>
+        </message>
+        <message>
+            <source>long reply without a keyword</source>
+            <translation>lange Antwort ohne Schlüsselwort</translation>
+        </message>
+        <message>
+            <source>long reply without a numeric value</source>
+            <translation>lange Antwort ohne Zahlenwert</translation>
+        </message>
+        <message>
+            <source>frame interrupted by a new '#'</source>
+            <translation>Rahmen durch ein neues '#' unterbrochen</translation>
+        </message>
+        <message>
+            <source>command longer than %1 bytes</source>
+            <translation>Befehl länger als %1 Bytes</translation>
+        </message>
+        <message>
+            <source>command without a valid address</source>
+            <translation>Befehl ohne gültige Adresse</translation>
+        </message>
+        <message>
+            <source>command without a body</source>
+            <translation>Befehl ohne Inhalt</translation>
+        </message>
+        <message>
+            <source>non-ASCII bytes in reply</source>
+            <translation>Nicht-ASCII-Bytes in der Antwort</translation>
+        </message>
+        <message>
+            <source>address with more than three digits</source>
+            <translation>Adresse mit mehr als drei Ziffern</translation>
+        </message>
+        <message>
+            <source>reply from invalid address %1</source>
+            <translation>Antwort von ungültiger Adresse %1</translation>
+        </message>
+        <message>
+            <source>reply without a command</source>
+            <translation>Antwort ohne Befehl</translation>
+        </message>
+        <message>
+            <source>reply without an address</source>
+            <translation>Antwort ohne Adresse</translation>
+        </message>
+        <message>
+            <source>malformed firmware string</source>
+            <translation>fehlerhafter Firmware-String</translation>
+        </message>
+        <message>
+            <source>echo with a non-numeric value</source>
+            <translation>Echo mit nicht numerischem Wert</translation>
+        </message>
+        <message>
+            <source>reply longer than %1 bytes</source>
+            <translation>Antwort länger als %1 Bytes</translation>
+        </message>
+    </context>
+</TS>

@@ -1,0 +1,58 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+    <context>
+        <name>stepdeck::ui::DiffDialog</name>
+        <message numerus="yes">
+            <source>%1 changes %n value(s) (highlighted).</source>
+            <translation>
+                <numerusform>%1 changes %n value (highlighted).</numerusform>
+                <numerusform>%1 changes %n values (highlighted).</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::IncrementalJogWidget</name>
+        <message numerus="yes">
+            <source>%n step(s)</source>
+            <translation>
+                <numerusform>%n step</numerusform>
+                <numerusform>%n steps</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::SetupPage</name>
+        <message numerus="yes">
+            <source>Writing and verifying %n parameter(s)…</source>
+            <translation>
+                <numerusform>Writing and verifying %n parameter…</numerusform>
+                <numerusform>Writing and verifying %n parameters…</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Writing %n parameter(s)…</source>
+            <translation>
+                <numerusform>Writing %n parameter…</numerusform>
+                <numerusform>Writing %n parameters…</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Read %n parameter(s).</source>
+            <translation>
+                <numerusform>Read %n parameter.</numerusform>
+                <numerusform>Read %n parameters.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::TrafficConsole</name>
+        <message numerus="yes">
+            <source>%n record(s)</source>
+            <translation>
+                <numerusform>%n record</numerusform>
+                <numerusform>%n records</numerusform>
+            </translation>
+        </message>
+    </context>
+</TS>
