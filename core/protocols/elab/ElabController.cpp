@@ -19,7 +19,11 @@ constexpr int kStartButtonEveryNthPoll = 20;
 
 ElabController::ElabController(Transport* transport, const ControllerOptions& options,
                                QObject* parent)
-    : Controller(transport, options, parent), m_queue(transport, this)
+    : Controller(transport, options, parent), m_queue(transport, this),
+      m_line(m_queue, mutableStatus(), hooks()),
+      m_jog(m_line, ElabCtlJog::Hooks{[this] { haltJogImmediately(); },
+                                      [this](const QString& why) { Q_EMIT jogRefused(why); },
+                                      [this] { return linkState() == LinkState::Connected; }})
 {
     MachineStatus& s = mutableStatus();
     for (Axis a : ElabCtlStatusMapper::axes())
@@ -45,18 +49,13 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
         Q_EMIT errorOccurred(tr("resynchronising with <SYN> after: %1").arg(why));
     });
     connect(&m_queue, &ElabExchangeQueue::resyncFinished, this, [this](bool ok, quint16 word) {
-        if (!ok)
-            return;
-        m_machineWord = word;
-        ElabCtlStatusMapper::applyMachineState(mutableStatus(), word, m_hostPanic);
-        publishStatus();
+        if (ok) {
+            m_line.setMachineWord(word);
+            publishStatus();
+        }
     });
-    connect(&m_queue, &ElabExchangeQueue::flowControl, this, [this](bool resume) {
-        if (!m_stream.isActive())
-            return; // XON/XOFF outside a stream: nothing to pause
-        m_stream.pausedByDevice = !resume;
-        pumpStream();
-    });
+    connect(&m_queue, &ElabExchangeQueue::flowControl, this,
+            [this](bool resume) { m_ops.onFlowControl(resume); });
     if (transport) {
         connect(transport, &Transport::opened, this, &ElabController::onOpened);
         connect(transport, &Transport::failed, this,
@@ -75,155 +74,18 @@ ParameterSchema ElabController::schema() const
     return elab::parameterSchema();
 }
 
-// ------------------------------------------------------------------ sequences
-
-ElabExchange ElabController::exchange(RequestId owner, const QByteArray& frame, Expect expect) const
+ElabCtlHooks ElabController::hooks()
 {
-    ElabExchange ex;
-    ex.owner = owner;
-    ex.frame = frame;
-    ex.expect = expect;
-    return ex;
-}
-
-void ElabController::chain(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
-                           ErrorFn failed)
-{
-    if (steps.isEmpty()) {
-        done();
-        return;
-    }
-    ElabExchange ex = steps.takeFirst();
-    auto handler = ex.onReply;
-    ex.onReply = [this, handler, steps, done, failed](const Reply& r) {
-        if (handler)
-            handler(r);
-        chain(steps, true, done, failed);
+    ElabCtlHooks h;
+    h.ok = [this](RequestId id, const QVariant& value) { finishOk(id, value); };
+    h.fail = [this](RequestId id, ErrorKind kind, const QString& message) {
+        finishError(id, kind, message);
     };
-    ex.onError = failed;
-    if (continuation)
-        m_queue.enqueueNext(std::move(ex));
-    else
-        m_queue.enqueue(std::move(ex));
-}
-
-void ElabController::readStatus(RequestId owner, StatusRead how, std::function<void()> done,
-                                ErrorFn failed)
-{
-    QList<ElabExchange> steps;
-    ElabExchange ht = exchange(owner, encode::requestAxeState(), Expect::AxeState);
-    ht.onReply = [this](const Reply& r) {
-        m_axeWord = r.axeState;
-        ElabCtlStatusMapper::applyAxeState(mutableStatus(), r.axeState);
-    };
-    ElabExchange enq = exchange(owner, encode::requestMachineState(), Expect::MachineState);
-    enq.onReply = [this](const Reply& r) {
-        m_machineWord = r.machineState;
-        ElabCtlStatusMapper::applyMachineState(mutableStatus(), r.machineState, m_hostPanic);
-        afterStatusRead();
-    };
-    steps << ht << enq;
-    if (how.temperature) {
-        ElabExchange etb = exchange(owner, encode::requestTemperature(), Expect::Temperature);
-        etb.onReply = [this](const Reply& r) {
-            ElabCtlStatusMapper::applyTemperature(mutableStatus(), r.temperature);
-        };
-        steps << etb;
-    }
-    if (how.startButton) {
-        // RequestStart: <ACK> pressed, <NAK> not pressed -- a NAK here is an answer, not a fault.
-        ElabExchange lf = exchange(owner, encode::requestStart(), Expect::AckNak);
-        lf.onReply = [this](const Reply& r) {
-            mutableStatus().startButton = r.kind == Reply::Kind::Ack;
-        };
-        steps << lf;
-    }
-    for (ElabExchange& ex : steps) {
-        ex.poll = how.poll;
-        ex.tolerateStray = how.tolerant;
-        ex.droppable = !how.poll && owner != 0;
-    }
-    chain(
-        steps, how.continuation,
-        [this, done] {
-            publishStatus();
-            done();
-        },
-        failed);
-}
-
-void ElabController::sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,
-                                 bool continuation)
-{
-    ElabExchange ex = exchange(op.id, frame, Expect::AckNak);
-    ex.onReply = [this, op, frame, onAck](const Reply& r) {
-        if (r.kind == Reply::Kind::Ack)
-            onAck();
-        else
-            failWithNak(op, frame);
-    };
-    ex.onError = [this, op](ErrorKind kind, const QString& message) {
-        finishError(op.id, kind, message);
-    };
-    if (continuation)
-        m_queue.enqueueNext(std::move(ex));
-    else
-        m_queue.enqueue(std::move(ex));
-}
-
-void ElabController::failWithNak(const Op& op, const QByteArray& frame)
-{
-    // "Im Falle eines <NAK> ist es am besten man liest beide Status Informationen mit
-    // RequestAxeState und RequestMachineState aus".
-    const QString command = toMnemonics(frame);
-    StatusRead how;
-    how.continuation = true;
-    readStatus(
-        op.id, how,
-        [this, op, command] {
-            finishError(op.id, ErrorKind::Nak,
-                        tr("%1 answered NAK; machine state %2: %3; axe state %4: %5")
-                            .arg(command)
-                            .arg(m_machineWord, 4, 16, QLatin1Char('0'))
-                            .arg(describeMachineState(m_machineWord))
-                            .arg(m_axeWord, 2, 16, QLatin1Char('0'))
-                            .arg(describeAxeState(m_axeWord)));
-        },
-        [this, op, command](ErrorKind, const QString& why) {
-            finishError(op.id, ErrorKind::Nak,
-                        tr("%1 answered NAK; the status could not be read: %2").arg(command, why));
-        });
-}
-
-void ElabController::preflight(RequestId id, ElabCtlStatusMapper::Rule rule,
-                               std::function<void(Op)> then)
-{
-    // "Deshalb muss vor jedem Move Kommando solange mit RequestAxeState gepollt werden, bis der
-    // letzte Befehl komplett ausgeführt ist ... Ausserdem darf das LimitSwitch Flag nicht aktiv
-    // sein." The command follows the status read directly (continuation), so nothing else can
-    // start in between.
-    const Op op{id, m_epoch};
-    readStatus(
-        id, StatusRead{},
-        [this, op, rule, then] {
-            if (stale(op))
-                return;
-            const QString refusal = ElabCtlStatusMapper::refusal(rule, m_machineWord, m_axeWord);
-            if (!refusal.isEmpty()) {
-                finishError(op.id, ErrorKind::Refused, refusal);
-                return;
-            }
-            then(op);
-        },
-        [this, id](ErrorKind kind, const QString& why) { finishError(id, kind, why); });
-}
-
-bool ElabController::stale(const Op& op)
-{
-    if (op.epoch == m_epoch)
-        return false;
-    finishError(op.id, ErrorKind::Cancelled, tr("cancelled by a stop, panic or reset"));
-    return true;
+    h.publish = [this] { publishStatus(); };
+    h.statusRead = [this] { m_ops.onStatusRead(); };
+    h.requireLink = [this](RequestId id) { return requireLink(id); };
+    h.error = [this](const QString& message) { Q_EMIT errorOccurred(message); };
+    return h;
 }
 
 bool ElabController::requireLink(RequestId id)
@@ -234,26 +96,45 @@ bool ElabController::requireLink(RequestId id)
     return false;
 }
 
-void ElabController::afterStatusRead()
+QString ElabController::jogRefusal() const
 {
-    const AxisVector values = m_motion.values();
-    const bool stoppedMove = m_motion.stopped();
-    const ElabCtlMotion::Outcome out = m_motion.update(m_machineWord, m_axeWord);
-    MachineStatus& s = mutableStatus();
-    for (Axis a : out.lostAxes) {
-        s.axes[a].referenced = false;
-        s.axes[a].positionKnown = false;
-    }
-    for (Axis a : out.referencedAxes) {
-        AxisStatus& axis = s.axes[a];
-        axis.referenced = axis.positionKnown = true;
-        axis.position = 0;
-        axis.positionEstimated = false;
-    }
-    if (!out.limitMessage.isEmpty())
-        Q_EMIT errorOccurred(out.limitMessage);
-    if (out.readRemaining && stoppedMove)
-        correctPositions(values);
+    const QString base = Controller::jogRefusal();
+    if (!base.isEmpty())
+        return base;
+    if (status().setupIncomplete)
+        return tr("jog refused: setup incomplete (tmInvSetup): write start-speed, max-speed and "
+                  "acceleration first");
+    if (m_ops.streaming())
+        return tr("jog refused: a feed stream is running");
+    return {};
+}
+
+void ElabController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    m_ops.moveRelative(id, steps);
+}
+
+void ElabController::feed(RequestId id, const AxisVector& steps)
+{
+    m_ops.feed(id, steps);
+}
+
+void ElabController::feedStream(RequestId id, const QVector<AxisVector>& steps)
+{
+    m_ops.feedStream(id, steps);
+}
+
+void ElabController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    AxisVector dirs;
+    for (auto it = directions.cbegin(); it != directions.cend(); ++it)
+        dirs.insert(it.key(), it.value());
+    m_ops.reference(id, dirs);
+}
+
+void ElabController::velocityMove(RequestId id, const AxisVector& stepsPerS)
+{
+    m_ops.velocityMove(id, stepsPerS);
 }
 
 // ------------------------------------------------------------------ link
@@ -282,26 +163,22 @@ void ElabController::onOpened()
 {
     if (m_openId == 0)
         return;
-    // Start clean: a half-received command of an earlier session is finished off by the
-    // <SYN> burst (RequestSync), then the status words and the temperature are read.
-    ElabExchange burst = exchange(0, encode::requestSync(16), Expect::None);
+    // Start clean: a half-received command of an earlier session is finished off by a burst of
+    // <SYN> (RequestSync), then the status words, temperature and start button are read.
+    ElabExchange burst = ElabCtlLine::exchange(0, encode::requestSync(16), Expect::None);
     burst.droppable = false;
     m_queue.enqueue(burst);
-    StatusRead how;
-    how.temperature = how.startButton = true;
-    how.tolerant = true;
-    readStatus(
+    ElabCtlLine::StatusRead how;
+    how.temperature = how.startButton = how.tolerant = true;
+    m_line.readStatus(
         0, how,
         [this] {
-            if (m_machineWord & machine::InvSetup)
+            if (m_line.machineWord() & machine::InvSetup)
                 m_written.clear(); // the board lost its setup (power cycle): nothing is known
-            m_hostPanic = false;
-            ElabCtlStatusMapper::applyMachineState(mutableStatus(), m_machineWord, false);
-            markAllUnreferenced();
+            m_line.setHostPanic(false);
             setLinkState(LinkState::Connected);
             m_poller.start();
-            const RequestId id = std::exchange(m_openId, 0);
-            finishOk(id);
+            finishOk(std::exchange(m_openId, 0));
         },
         [this](ErrorKind kind, const QString& why) {
             const RequestId id = std::exchange(m_openId, 0);
@@ -317,12 +194,12 @@ void ElabController::onOpened()
 
 void ElabController::cancelEverything(ErrorKind kind, const QString& message)
 {
-    ++m_epoch;
-    abortStream(kind, message);
-    m_motion.clear();
+    m_line.newEpoch();
+    m_ops.abortStream(kind, message);
+    m_ops.clear();
     m_queue.failAll(kind, message);
     haltJogImmediately();
-    m_jogMode = m_jogQueued = false;
+    m_jog.reset();
 }
 
 void ElabController::linkDown(const QString& reason, bool closeTransport)
@@ -348,8 +225,7 @@ void ElabController::closeLink()
     m_poller.stop();
     Transport* t = transport();
     if (t && t->isOpen() && linkState() == LinkState::Connected &&
-        (jogActive() || m_jogMode || m_motion.kind() == ElabCtlMotion::Kind::Velocity ||
-         m_stream.isActive())) {
+        (jogActive() || m_jog.inJogMode() || m_ops.velocityRunning() || m_ops.streaming())) {
         // Best effort: nothing may keep running unattended (jog, velocity move, stream).
         // "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen".
         const QByteArray stopByte = encode::stopMove();
@@ -366,15 +242,16 @@ void ElabController::closeLink()
 
 void ElabController::startPoll()
 {
+    // The poll goes behind queued commands; it never has more than one cycle in flight.
     if (linkState() != LinkState::Connected || !m_poller.isDue())
         return;
     m_poller.pollStarted();
     ++m_pollCount;
-    StatusRead how;
+    ElabCtlLine::StatusRead how;
     how.poll = true;
     how.temperature = m_pollCount % kTemperatureEveryNthPoll == 1;
     how.startButton = m_pollCount % kStartButtonEveryNthPoll == 0;
-    readStatus(
+    m_line.readStatus(
         0, how, [this] { m_poller.pollFinished(true); },
         [this](ErrorKind kind, const QString&) {
             // Cancelled by panic/stop is not a missed reply; timeouts and garbage are.
@@ -391,9 +268,9 @@ void ElabController::refreshStatus(RequestId id)
 {
     if (!requireLink(id))
         return;
-    StatusRead how;
+    ElabCtlLine::StatusRead how;
     how.temperature = how.startButton = true;
-    readStatus(
+    m_line.readStatus(
         id, how, [this, id] { finishOk(id, QVariant::fromValue(status())); },
         [this, id](ErrorKind kind, const QString& why) { finishError(id, kind, why); });
 }
@@ -407,7 +284,7 @@ void ElabController::sendRaw(RequestId id, const QByteArray& bytes)
         finishError(id, ErrorKind::InvalidValue, tr("nothing to send"));
         return;
     }
-    ElabExchange ex = exchange(id, bytes, expectFor(bytes));
+    ElabExchange ex = ElabCtlLine::exchange(id, bytes, expectFor(bytes));
     ex.onReply = [this, id](const Reply& r) { finishOk(id, r.raw); };
     ex.onError = [this, id](ErrorKind kind, const QString& why) { finishError(id, kind, why); };
     m_queue.enqueue(std::move(ex));
@@ -421,24 +298,23 @@ void ElabController::stop(RequestId id)
         finishError(id, ErrorKind::LinkDown, tr("not connected"));
         return;
     }
-    const bool streaming = m_stream.isActive();
-    ++m_epoch;
+    const bool streaming = m_ops.streaming();
+    m_line.newEpoch();
     // Work not yet written is dropped; polls stay (they are harmless and keep the status).
     m_queue.dropQueued(ErrorKind::Cancelled, tr("cancelled by stop"), false);
-    abortStream(ErrorKind::Cancelled, tr("feed stream stopped"));
+    m_ops.abortStream(ErrorKind::Cancelled, tr("feed stream stopped"));
     // "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen" -- jog included, so the
     // host ramp stops at once instead of fighting the board's brake ramp.
     haltJogImmediately();
-    m_jogMode = m_jogQueued = false;
-    const Op op{id, m_epoch};
-    ElabExchange ex = exchange(id, encode::stopMove(), Expect::AckNak);
+    m_jog.reset();
+    const ElabCtlLine::Op op = m_line.op(id);
+    ElabExchange ex = ElabCtlLine::exchange(id, encode::stopMove(), Expect::AckNak);
     ex.onReply = [this, op, streaming](const Reply& r) {
         if (r.kind != Reply::Kind::Ack) {
-            failWithNak(op, encode::stopMove());
+            m_line.failWithNak(op, encode::stopMove());
             return;
         }
-        m_motion.markStopped(); // after the reply of what was in flight (FIFO)
-        m_motion.endStream();
+        m_ops.onStopAccepted(); // after the reply of what was in flight (FIFO)
         if (!streaming) {
             finishOk(op.id);
             return;
@@ -446,8 +322,8 @@ void ElabController::stop(RequestId id)
         // A stop during <DC2>: the buffer still holds single steps; flush it and end the feed
         // ("Der Buffer kann jetzt mit folgendem Kommando geleert werden": <GS>; "Den Abschluss
         // ... muss immer ein EndOfFeed Kommando sein").
-        sendCommand(op, encode::flushBuffer(), [this, op] {
-            sendCommand(op, encode::endOfFeed(), [this, op] { finishOk(op.id); });
+        m_line.sendCommand(op, encode::flushBuffer(), [this, op] {
+            m_line.sendCommand(op, encode::endOfFeed(), [this, op] { finishOk(op.id); });
         });
     };
     ex.onError = [this, id](ErrorKind kind, const QString& why) { finishError(id, kind, why); };
@@ -462,32 +338,31 @@ void ElabController::panic(RequestId id)
         finishError(id, ErrorKind::LinkDown, tr("not connected"));
         return;
     }
-    const bool streaming = m_stream.isActive();
-    m_hostPanic = true;
+    const bool streaming = m_ops.streaming();
     const QString why = tr("cancelled by panic stop");
-    ++m_epoch;
-    abortStream(ErrorKind::Cancelled, why);
-    m_motion.clear();
+    m_line.newEpoch();
+    m_ops.abortStream(ErrorKind::Cancelled, why);
+    m_ops.clear();
     haltJogImmediately();
-    m_jogMode = m_jogQueued = false;
+    m_jog.reset();
     m_queue.dropQueued(ErrorKind::Cancelled, why, true);
     m_queue.abandonInFlight(ErrorKind::Cancelled, why);
     // "Beim Wiederanlauf muss das System neu initialisiert werden, da ... Schritte verloren
     // gehen."
     markAllUnreferenced();
-    mutableStatus().panic = true;
+    m_line.setHostPanic(true);
     // Mid-stream the board may wait for the data byte of a <DC2> pair whose data byte was
     // discarded: a first <BEL> is then taken as the step byte 0x07 (no step bit set, harmless)
     // and the second one is the panic. Outside a stream the second <BEL> is a second panic.
-    ElabExchange ex =
-        exchange(id, streaming ? encode::panicStop() + encode::panicStop() : encode::panicStop(),
-                 Expect::Ack);
+    const QByteArray frame =
+        streaming ? encode::panicStop() + encode::panicStop() : encode::panicStop();
+    ElabExchange ex = ElabCtlLine::exchange(id, frame, Expect::Ack);
     ex.tolerateStray = true; // replies of abandoned exchanges may still come
     ex.onReply = [this, id](const Reply&) {
         finishOk(id);
-        StatusRead how;
+        ElabCtlLine::StatusRead how;
         how.continuation = how.tolerant = true;
-        readStatus(
+        m_line.readStatus(
             0, how, [] {}, [](ErrorKind, const QString&) {});
     };
     ex.onError = [this, id](ErrorKind kind, const QString& message) {
@@ -514,32 +389,35 @@ void ElabController::reset(RequestId id)
     }
     m_poller.stop();
     m_queue.setHeld(true);
-    const quint64 epoch = m_epoch;
+    const quint64 epoch = m_line.epoch();
     QTimer::singleShot(kResetPulseMs, this, [this, id, epoch] {
-        if (epoch != m_epoch || !transport())
+        if (epoch != m_line.epoch() || !transport())
             return; // link lost meanwhile: the request was already finished
-        QString e;
-        transport()->setResetLine(false, &e);
-        QTimer::singleShot(kResetSettleMs, this, [this, id, epoch] {
-            if (epoch != m_epoch)
-                return;
-            m_queue.setHeld(false);
-            m_hostPanic = false;
-            m_written.clear(); // a reset board has lost its setup
-            StatusRead how;
-            how.temperature = how.tolerant = true;
-            readStatus(
-                id, how,
-                [this, id] {
-                    m_poller.start();
-                    finishOk(id);
-                },
-                [this, id](ErrorKind kind, const QString& why) {
-                    m_poller.start();
-                    finishError(id, kind, tr("no status after reset: %1").arg(why));
-                });
-        });
+        QString ignored;
+        transport()->setResetLine(false, &ignored);
+        QTimer::singleShot(kResetSettleMs, this, [this, id, epoch] { finishReset(id, epoch); });
     });
+}
+
+void ElabController::finishReset(RequestId id, quint64 epoch)
+{
+    if (epoch != m_line.epoch())
+        return;
+    m_queue.setHeld(false);
+    m_line.setHostPanic(false);
+    m_written.clear(); // a reset board has lost its setup
+    ElabCtlLine::StatusRead how;
+    how.temperature = how.tolerant = true;
+    m_line.readStatus(
+        id, how,
+        [this, id] {
+            m_poller.start();
+            finishOk(id);
+        },
+        [this, id](ErrorKind kind, const QString& why) {
+            m_poller.start();
+            finishError(id, kind, tr("no status after reset: %1").arg(why));
+        });
 }
 
 // ------------------------------------------------------------------ parameters
@@ -557,20 +435,19 @@ void ElabController::writeParameters(RequestId id, const ParameterSet& values, b
     const QString note =
         verify ? tr("written; the E-LAB board cannot read parameters back, nothing verified")
                : QString();
-    writeStep(Op{id, m_epoch}, plan, 0, note);
+    writeStep(m_line.op(id), plan, 0, note);
 }
 
-void ElabController::writeStep(const Op& op, const QList<ElabParameterWrite>& plan, int index,
-                               const QString& note)
+void ElabController::writeStep(const ElabCtlLine::Op& op, const QList<ElabParameterWrite>& plan,
+                               int index, const QString& note)
 {
     // One setup command after the other; a NAK stops the sequence (the rest is not sent).
     if (index == plan.size()) {
         finish(CommandResult{op.id, ErrorKind::None, note, {}});
         return;
     }
-    const ElabParameterWrite& w = plan.at(index);
-    sendCommand(
-        op, w.frame,
+    m_line.sendCommand(
+        op, plan.at(index).frame,
         [this, op, plan, index, note] {
             m_written.insert(plan.at(index).name, plan.at(index).value);
             writeStep(op, plan, index + 1, note);
@@ -608,6 +485,51 @@ void ElabController::readParameters(RequestId id, const QStringList& names)
                          tr("E-LAB cannot read parameters back: these are the values this "
                             "session last wrote"),
                          QVariant::fromValue(out)});
+}
+
+// ------------------------------------------------------------------ auxiliaries
+
+void ElabController::writeAuxiliary(RequestId id, const QString& name, const QVariant& value,
+                                    const QByteArray& frame)
+{
+    if (!requireLink(id))
+        return;
+    m_line.sendCommand(
+        m_line.op(id), frame,
+        [this, id, name, value] {
+            m_written.insert(name, ParameterValue{value, {}});
+            finishOk(id);
+        },
+        false);
+}
+
+void ElabController::setSpindle(RequestId id, int rpm)
+{
+    // SetSpindleRPM: "einen Wert zwischen 0 und 1000 in einem long Hex-Word".
+    if (rpm < 0 || rpm > 1000) {
+        finishError(id, ErrorKind::InvalidValue,
+                    tr("spindle-rpm: value '%1' is out of range (allowed: 0..1000 rpm)").arg(rpm));
+        return;
+    }
+    writeAuxiliary(id, QStringLiteral("spindle-rpm"), qint64(rpm),
+                   encode::spindleRpm(quint32(rpm)));
+}
+
+void ElabController::setCoolant(RequestId id, bool on)
+{
+    writeAuxiliary(id, QStringLiteral("coolant"), on, encode::coolant(on));
+}
+
+void ElabController::setDrivePower(RequestId id, int percent)
+{
+    // SetDrivePower: "einen Wert zwischen 0 und 100 in einem Hex-Byte".
+    if (percent < 0 || percent > 100) {
+        finishError(id, ErrorKind::InvalidValue,
+                    tr("drive-power: value '%1' is out of range (allowed: 0..100 %)").arg(percent));
+        return;
+    }
+    writeAuxiliary(id, QStringLiteral("drive-power"), qint64(percent),
+                   encode::drivePower(quint8(percent)));
 }
 
 } // namespace stepdeck::elab

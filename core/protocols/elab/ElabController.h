@@ -1,9 +1,8 @@
 #pragma once
-#include "ElabCodec.h"
-#include "ElabCtlMotion.h"
+#include "ElabCtlJog.h"
+#include "ElabCtlLine.h"
+#include "ElabCtlMotionOps.h"
 #include "ElabCtlParameters.h"
-#include "ElabCtlStatusMapper.h"
-#include "ElabCtlStream.h"
 #include "ElabExchangeQueue.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
@@ -11,22 +10,29 @@
 namespace stepdeck::elab {
 
 // The E-LAB 3-axis adapter (manual: elab-3axis-stepper-controller.de.txt) over a Transport.
-// Line discipline (one exchange in flight, timeouts, resync, overtaking) is ElabExchangeQueue;
-// status words are mapped by ElabCtlStatusMapper; motion bookkeeping is ElabCtlMotion; the
-// <DC2> stream is ElabCtlStream; parameter writes are planned by ElabCtlParameters.
+// This class owns the link, polling, stop/panic/reset and parameters; the pieces:
+//   ElabExchangeQueue   line discipline: one exchange in flight, replies in order, timeouts,
+//                       <SYN> resync, at most one frame inside the transport, overtaking
+//   ElabCtlLine         request sequences: status reads, ACK/NAK commands, pre-flight
+//   ElabCtlStatusMapper status words -> MachineStatus, and the manual's refusal rules
+//   ElabCtlMotionOps    moves, feed, <DC2> stream, reference, velocity; position bookkeeping
+//   ElabCtlJog          <DC4> jog with coalescing
+//   ElabCtlParameters   parameter validation and setup commands
 //
-// Decisions where the manual leaves room (see also docs):
+// Decisions where the manual leaves room:
 // - Standstill before a move, feed, reference, first velocity move or first jog: a pre-flight
 //   reads RequestAxeState and RequestMachineState and refuses at once ("axes still moving")
-//   instead of waiting: callers that want to wait (the CLI) poll the status themselves.
-// - feed() with one axis uses <RS> + SetFeedSteps X/Y/Z; with several axes it becomes a <DC2>
-//   stream of a straight line (the single-axis feed commands cannot run a line together).
+//   instead of waiting; callers that want to wait (the CLI) poll the status themselves.
+// - Moves finish on <ACK>; completion, limit hits and position corrections come from the
+//   status reads that follow.
 // - readParameters(): the board cannot read back; it returns the values this session last
-//   wrote (said so in the message) or fails Unsupported for any never written.
-// - writeParameters(verify=true) succeeds on ACK and says it could not verify.
-// - After the host's panic, status.panic stays set (and jog is refused) until a move, feed,
-//   reference or velocity move is accepted, or after reset/reconnect.
-// - Moves finish on ACK; completion, limit hits and position corrections come from polls.
+//   wrote (said so in the message) or fails Unsupported for any never written. A reset, or a
+//   connect that finds tmInvSetup, forgets them.
+// - writeParameters(verify=true) succeeds on <ACK> and says it could not verify.
+// - After the host's ForcePanicStop, status.panic stays set (and jog is refused) until a move,
+//   feed, reference or velocity move is accepted, or after reset/reconnect. Moves are not
+//   blocked by this latch, only by the board's own tmPanicStop.
+// - A stop also ends jog: "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen".
 class ElabController : public Controller
 {
     Q_OBJECT
@@ -63,72 +69,30 @@ public:
     const StatusPoller& poller() const { return m_poller; }
 
 protected:
-    void applyJogVelocity(const AxisVelocities& stepsPerS) override;
+    void applyJogVelocity(const AxisVelocities& stepsPerS) override { m_jog.apply(stepsPerS); }
     QString jogRefusal() const override;
 
 private:
-    using ErrorFn = std::function<void(ErrorKind, const QString&)>;
-    struct Op
-    {
-        RequestId id = 0;
-        quint64 epoch = 0; // stop, panic, reset and link loss start a new epoch
-    };
-    struct StatusRead
-    {
-        bool poll = false;
-        bool continuation = false; // runs ahead of queued work (next step of a sequence)
-        bool tolerant = false;     // skip stray replies (after panic)
-        bool temperature = false;
-        bool startButton = false;
-    };
-
-    // ---- sequences (ElabController.cpp) ----
-    ElabExchange exchange(RequestId owner, const QByteArray& frame, Expect expect) const;
-    void chain(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
-               ErrorFn failed);
-    void readStatus(RequestId owner, StatusRead how, std::function<void()> done, ErrorFn failed);
-    void sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,
-                     bool continuation = true);
-    void failWithNak(const Op& op, const QByteArray& frame);
-    void preflight(RequestId id, ElabCtlStatusMapper::Rule rule, std::function<void(Op)> then);
-    bool stale(const Op& op);
+    ElabCtlHooks hooks();
     bool requireLink(RequestId id);
-    void afterStatusRead();
-    void writeStep(const Op& op, const QList<ElabParameterWrite>& plan, int index,
-                   const QString& note);
-
-    // ---- link (ElabController.cpp) ----
     void onOpened();
     void linkDown(const QString& reason, bool closeTransport);
     void startPoll();
     void cancelEverything(ErrorKind kind, const QString& message);
-
-    // ---- motion (ElabCtlMotionOps.cpp) ----
-    void motionAccepted(ElabCtlMotion::Kind kind, const AxisVector& values);
-    void startStream(RequestId id, const QVector<AxisVector>& steps, const Triple<qint64>& line);
-    void pumpStream();
-    void abortStream(ErrorKind kind, const QString& message);
-    void sendJog(bool continuation);
-    void correctPositions(const AxisVector& stopped);
-    QString checkAxes(const AxisVector& values, qint64 minimum, qint64 maximum,
-                      const QString& what) const;
+    void finishReset(RequestId id, quint64 epoch);
+    void writeStep(const ElabCtlLine::Op& op, const QList<ElabParameterWrite>& plan, int index,
+                   const QString& note);
+    void writeAuxiliary(RequestId id, const QString& name, const QVariant& value,
+                        const QByteArray& frame);
 
     ElabExchangeQueue m_queue;
+    ElabCtlLine m_line;
+    ElabCtlMotionOps m_ops{m_line};
+    ElabCtlJog m_jog;
     StatusPoller m_poller{this};
-    ElabCtlMotion m_motion;
-    ElabCtlStream m_stream;
     ParameterSet m_written; // the values this session last wrote (the board cannot read back)
-    quint16 m_machineWord = 0;
-    quint8 m_axeWord = 0;
-    bool m_hostPanic = false;
-    quint64 m_epoch = 1;
     quint64 m_pollCount = 0;
     RequestId m_openId = 0;
-    // Jog: the newest ramp output; one DC4 queued at most, built when it is written.
-    Triple<qint16> m_jogRates{};
-    Triple<qint16> m_jogSent{};
-    bool m_jogQueued = false;
-    bool m_jogMode = false;
 };
 
 } // namespace stepdeck::elab

@@ -1,0 +1,55 @@
+#pragma once
+#include "ElabCtlLine.h"
+#include "ElabCtlMotion.h"
+#include "ElabCtlStream.h"
+#include <QVector>
+
+namespace stepdeck::elab {
+
+// The motion commands of the E-LAB adapter (manual sections "Befehle zur Positionierung",
+// "Befehle im Arbeitsmodus", "Befehle zur einfachen Achsen Bewegung"): value checks against
+// the wire types, the standstill pre-flight, the command, and the host-side position
+// bookkeeping (ElabCtlMotion) from the status reads that follow. Also drives the <DC2> stream.
+//
+// - Moves pick the narrowest command: Z only <BS>, X/Y only <FF>, else <EOT>.
+// - feed() with one axis: <RS>, then SetFeedSteps X/Y/Z. With several axes the single-axis
+//   commands cannot run a line together, so it becomes a <DC2> stream of a straight line.
+// - A repeated velocity move changes the rates without standstill (manual: the exception);
+//   a direction reversal of a running axis is refused.
+class ElabCtlMotionOps
+{
+public:
+    explicit ElabCtlMotionOps(ElabCtlLine& line) : m_line(line) {}
+
+    void moveRelative(RequestId id, const AxisVector& steps);
+    void feed(RequestId id, const AxisVector& steps);
+    void feedStream(RequestId id, const QVector<AxisVector>& steps);
+    void reference(RequestId id, const AxisVector& directions);
+    void velocityMove(RequestId id, const AxisVector& stepsPerS);
+
+    // Both status words were read: completion, limit hits, reference results, corrections.
+    void onStatusRead();
+    // ForceStopMove was answered: the running motion was cut short by the host.
+    void onStopAccepted();
+    void onFlowControl(bool resume);
+    void abortStream(ErrorKind kind, const QString& message);
+    void clear() { m_motion.clear(); }
+
+    bool streaming() const { return m_stream.isActive(); }
+    bool velocityRunning() const { return m_motion.kind() == ElabCtlMotion::Kind::Velocity; }
+
+private:
+    void accepted(ElabCtlMotion::Kind kind, const AxisVector& values);
+    void startStream(RequestId id, const QVector<AxisVector>& steps, const Triple<qint64>& line);
+    void pumpStream();
+    void endStream(RequestId id);
+    void correctPositions(const AxisVector& stopped);
+    bool checkAxes(RequestId id, const AxisVector& values, qint64 minimum, qint64 maximum,
+                   const QString& what);
+
+    ElabCtlLine& m_line;
+    ElabCtlMotion m_motion;
+    ElabCtlStream m_stream;
+};
+
+} // namespace stepdeck::elab
