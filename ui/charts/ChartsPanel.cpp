@@ -63,13 +63,14 @@ ChartsPanel::Plot ChartsPanel::makePlot(const QString& title, const QString& uni
     plot.chart->setTitle(title);
     plot.chart->setMargins(QMargins(4, 4, 4, 4));
     plot.chart->legend()->setVisible(names.size() > 1);
-    plot.chart->legend()->setAlignment(Qt::AlignBottom);
+    plot.chart->legend()->setAlignment(Qt::AlignRight); // keeps the height for the plot
     plot.x = new QValueAxis;
     plot.x->setTitleText(tr("time [s]"));
     plot.x->setLabelFormat(QStringLiteral("%.0f"));
+    plot.x->setTickCount(7);
     plot.y = new QValueAxis;
     plot.y->setTitleText(unit);
-    plot.y->setLabelFormat(QStringLiteral("%.0f"));
+    plot.y->setLabelFormat(QStringLiteral("%g"));
     plot.chart->addAxis(plot.x, Qt::AlignBottom);
     plot.chart->addAxis(plot.y, Qt::AlignLeft);
     for (const QString& name : names) {
@@ -83,7 +84,7 @@ ChartsPanel::Plot ChartsPanel::makePlot(const QString& title, const QString& uni
     }
     plot.view = new QChartView(plot.chart, m_grid);
     plot.view->setRenderHint(QPainter::Antialiasing);
-    plot.view->setMinimumSize(260, 180);
+    plot.view->setMinimumSize(260, 200);
     return plot;
 }
 
@@ -134,7 +135,9 @@ void ChartsPanel::fill(Plot& plot, const QVector<ChartSample>& samples,
         hi = 1;
     }
     const double pad = qMax(1.0, (hi - lo) * 0.08);
-    plot.y->setRange(lo - pad, hi + pad);
+    // Rates and temperatures never go below zero: no padding into negative numbers.
+    plot.y->setRange(lo >= 0 ? qMax(0.0, lo - pad) : lo - pad, hi + pad);
+    plot.y->applyNiceNumbers(); // round ticks: no repeated labels on a narrow range
     const double end =
         samples.isEmpty() ? windowSeconds() : qMax(samples.last().t, windowSeconds());
     plot.x->setRange(end - windowSeconds(), end);

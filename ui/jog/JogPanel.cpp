@@ -55,7 +55,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     scroll->setWidget(buildSidePanel());
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setMinimumWidth(260);
+    scroll->setMinimumWidth(330);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     layout->addWidget(scroll, 2);
 

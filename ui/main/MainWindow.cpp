@@ -13,6 +13,7 @@
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
+#include "position/ReferenceRunner.h"
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include <QAction>
@@ -253,6 +254,7 @@ void MainWindow::raisePage(QWidget* page)
 void MainWindow::stopAll()
 {
     m_jogPanel->releaseAll();
+    m_reference->runner()->cancel(tr("Referencing stopped."));
     if (!m_context->session()->isCreated()) {
         showError(tr("Stop: not connected"));
         return;

@@ -8,9 +8,21 @@
 #include "setup/SetupPage.h"
 #include <QDateTime>
 #include <QDir>
+#include <QDockWidget>
+#include <QMouseEvent>
 #include <QTextStream>
 
 namespace stepdeck::ui {
+
+namespace {
+void drag(QWidget* w, QEvent::Type type, const QPointF& pos)
+{
+    QMouseEvent e(type, pos, w->mapToGlobal(pos), Qt::LeftButton,
+                  type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton,
+                  Qt::NoModifier);
+    QCoreApplication::sendEvent(w, &e);
+}
+} // namespace
 
 ScreenshotScript::ScreenshotScript(MainWindow* window, const QString& directory, QObject* parent)
     : QObject(parent), m_window(window), m_directory(directory)
@@ -59,13 +71,14 @@ void ScreenshotScript::start()
                 return all;
             };
             waitFor(referenced, 40000, [=] {
-                // A diagonal jog so the pad, velocities and charts show motion.
+                // A diagonal drag on the pad, as the operator would, so the pad, the
+                // velocities and the charts show motion.
                 JoystickPad* pad = m_window->jogPanel()->xyPad();
-                m_window->jogController()->setDeflection(pad, {{Axis::X, 0.6}, {Axis::Y, 0.35}});
-                pad->setVelocityHint(QPointF(0.6, 0.35));
+                drag(pad, QEvent::MouseButtonPress, pad->centre());
+                drag(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.75, 0.5)));
                 waitFor(never, 2500, [=] {
                     const bool ok = capture();
-                    m_window->jogController()->releaseAll();
+                    drag(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(0.75, 0.5)));
                     waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
                 });
             });
@@ -83,10 +96,27 @@ bool ScreenshotScript::capture()
         return false;
     }
     bool ok = m_window->grab().save(dir.filePath(QStringLiteral("main.png")));
-    for (const auto& [stem, page] : m_window->pages()) {
+    const auto pages = m_window->pages();
+    for (const auto& [stem, page] : pages) {
         m_window->raisePage(page);
         QCoreApplication::processEvents();
         ok = m_window->grab().save(dir.filePath(QStringLiteral("window-%1.png").arg(stem))) && ok;
+    }
+    // Each page on its own at a size that shows all of it: docks float for the picture.
+    static const QMap<QString, QSize> sizes{
+        {QStringLiteral("position"), {480, 400}}, {QStringLiteral("reference"), {560, 300}},
+        {QStringLiteral("status"), {470, 1020}},  {QStringLiteral("setup"), {1100, 760}},
+        {QStringLiteral("traffic"), {1000, 560}}, {QStringLiteral("charts"), {1200, 640}},
+        {QStringLiteral("gamepad"), {440, 560}},
+    };
+    for (const auto& [stem, page] : pages) {
+        auto* dock = qobject_cast<QDockWidget*>(page->parentWidget());
+        if (dock && sizes.contains(stem)) {
+            dock->setFloating(true);
+            dock->resize(sizes.value(stem));
+            dock->show();
+            QCoreApplication::processEvents();
+        }
         ok = page->grab().save(dir.filePath(QStringLiteral("%1.png").arg(stem))) && ok;
     }
     QTextStream(stdout) << "screenshots written to " << dir.absolutePath() << "\n";

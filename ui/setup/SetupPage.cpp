@@ -277,9 +277,12 @@ void SetupPage::onResult(const CommandResult& result)
         m_pendingWrite = 0;
         if (result.ok()) {
             setBaselines(m_pendingSet);
-            setMessage(
-                tr("Written: %1.").arg(QStringList(m_pendingSet.keys()).join(QStringLiteral(", "))),
-                false);
+            QStringList labels;
+            for (const QString& name : m_pendingSet.keys()) {
+                const ParameterSpec* spec = m_schema.find(name);
+                labels << (spec ? trParam(spec->label) : name);
+            }
+            setMessage(tr("Written: %1.").arg(labels.join(QStringLiteral(", "))), false);
         } else {
             setMessage(tr("Write failed: %1").arg(result.message), true);
         }
