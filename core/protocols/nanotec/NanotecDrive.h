@@ -76,6 +76,7 @@ private:
     bool atIndexMark() const;
     int switchBehaviour(bool external, bool reference) const; // bit index in 'l', -1 invalid
     void moveBy(double steps);
+    int freeDirection(int behaviour) const; // 0 forward, 1 backward -> +1/-1
 
     int m_address;
     QMap<char, qint64> m_params;
@@ -105,7 +106,7 @@ private:
     double m_freeLeft = 0;          // steps left of a fixed free travel (index mark)
     bool m_wasSwitch = false;
     double m_lastPhysical = 0;
-    double m_negSwitch = -20000, m_posSwitch = 20000;
+    double m_negSwitch = -3000, m_posSwitch = 3000;
 };
 
 } // namespace stepdeck::nanotec

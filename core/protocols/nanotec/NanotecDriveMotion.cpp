@@ -63,6 +63,13 @@ int NanotecDrive::switchBehaviour(bool external, bool reference) const
     return found;
 }
 
+int NanotecDrive::freeDirection(int behaviour) const
+{
+    // "Freifahrt vorwaerts/rueckwaerts" (5.6), read relative to the run that reached the
+    // switch: backwards backs off it (the factory setting 5154 does this for every group).
+    return behaviour == 0 ? m_dir : -m_dir;
+}
+
 void NanotecDrive::moveBy(double steps)
 {
     m_physical += steps;
@@ -94,7 +101,7 @@ void NanotecDrive::startRun()
         if (m_internalRef)
             m_topSpeed = m_speed; // "mit der unteren Geschwindigkeit"
         else if (m_wasSwitch)
-            beginFreeTravel(switchBehaviour(true, true) == 1 ? -1 : 1, true);
+            beginFreeTravel(freeDirection(switchBehaviour(true, true)), true);
         return;
     }
     if (mode == 1 && p == 1) {
@@ -217,16 +224,16 @@ void NanotecDrive::checkSwitches(QList<QByteArray>*)
     m_lastPhysical = m_physical;
     if (m_run == Run::RefSeek) {
         if (!m_internalRef && now)
-            beginFreeTravel(switchBehaviour(true, true) == 1 ? -1 : 1, true);
+            beginFreeTravel(freeDirection(switchBehaviour(true, true)), true);
         else if (m_internalRef && index)
-            beginFreeTravel(switchBehaviour(false, true) == 1 ? -1 : 1, true);
+            beginFreeTravel(freeDirection(switchBehaviour(false, true)), true);
         return;
     }
     if (m_run != Run::Position && m_run != Run::Speed && m_run != Run::Flag)
         return;
     const int b = hit ? switchBehaviour(true, false) : index ? switchBehaviour(false, false) : 3;
     if (b == 0 || b == 1) {
-        beginFreeTravel(b == 0 ? 1 : -1, false);
+        beginFreeTravel(freeDirection(b), false);
         m_freeLeft = hit ? 0 : kIndexFreeSteps; // an index mark is left after fixed steps
     } else if (b == 2) {
         finishRun(); // "Stopp": the switch stays pressed

@@ -133,16 +133,16 @@ void limitSwitches(Builder& b)
     };
     group("limit-switch-behaviour-internal-reference", "Internal switch, reference run", 0x0003,
           {0x0001, 0x0002}, "free-backward",
-          "Free travel direction after the encoder index in an internal reference run "
-          "(5.6 bits 0-1)");
+          "Free travel after the encoder index in an internal reference run, relative to "
+          "the run: backward leaves the mark again (5.6 bits 0-1)");
     group("limit-switch-behaviour-internal-normal", "Internal switch, normal run", 0x003C,
           {0x0004, 0x0008, 0x0010, 0x0020}, "ignore",
           "What the drive does when it reaches the encoder index during a normal run; useful "
           "when the motor must not turn more than one revolution (5.6 bits 2-5)");
     group("limit-switch-behaviour-external-reference", "External switch, reference run", 0x0600,
           {0x0200, 0x0400}, "free-backward",
-          "Free travel direction after reaching the external switch in an external reference "
-          "run (5.6 bits 9-10)");
+          "Free travel after reaching the external switch in an external reference run, "
+          "relative to the run: backward backs off the switch (5.6 bits 9-10)");
     group("limit-switch-behaviour-external-normal", "External switch, normal run", 0x7800,
           {0x0800, 0x1000, 0x2000, 0x4000}, "free-backward",
           "What the drive does when it reaches the external switch during a normal run; 'stop' "

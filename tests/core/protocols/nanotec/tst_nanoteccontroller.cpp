@@ -20,6 +20,7 @@ private Q_SLOTS:
     void cleanup();
     void connect_readsFirmwareAndEnablesAutoStatus();
     void scan_findsDrives123();
+    void poll_sweepsEveryDrive_reportsRate_fitsLine();
     void write_verified_reachesEveryDrive();
     void write_ignoredInvalidValue_isCaughtByReadBack();
     void write_limitSwitchGroup_keepsOtherGroups();
@@ -133,6 +134,21 @@ void TestNanotecController::scan_findsDrives123()
         QCOMPARE(d["interface"].toString(), QStringLiteral("RS485"));
         QCOMPARE(d["date"].toString(), QStringLiteral("04-12-2008"));
     }
+}
+
+void TestNanotecController::poll_sweepsEveryDrive_reportsRate_fitsLine()
+{
+    QSignalSpy rate(m_ctl, &Controller::pollRateChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(!rate.isEmpty() && rate.last().at(0).toDouble() > 0, 3000);
+    for (int a : {1, 2, 3}) {
+        QVERIFY(countFrames(QByteArray("#") + QByteArray::number(a) + "$\r") > 1);
+        QVERIFY(countFrames(QByteArray("#") + QByteArray::number(a) + "C\r") > 1);
+    }
+    // 3 drives x ~31 characters at 19200 8N1 (0.52 ms each): about 49 ms per sweep.
+    QVERIFY(m_ctl->sweepBudgetMs() >= 45 && m_ctl->sweepBudgetMs() <= 55);
+    m_sim->drive(1)->setSwitches(-100000, -5); // the NC switch on X is now actuated
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].limitSwitch, 3000);
+    QVERIFY(!m_ctl->status().axes[Axis::Y].limitSwitch);
 }
 
 void TestNanotecController::write_verified_reachesEveryDrive()
@@ -288,9 +304,6 @@ void TestNanotecController::reference_external_thenAbsoluteMove()
 {
     NanotecDrive* d = m_sim->drive(1);
     d->setSwitches(-250, 100000);
-    ParameterSet set;
-    set["limit-switch-behaviour-external-reference"].perAxis = {{Axis::X, "free-forward"}};
-    QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, set, true); }).ok());
     QVERIFY(run([this](RequestId id) { m_ctl->reference(id, {{Axis::X, -1}}); }).ok());
     QCOMPARE(countFrames("#1p4\r"), 1);
     QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].referenced, 5000);

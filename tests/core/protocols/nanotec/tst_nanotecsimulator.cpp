@@ -222,10 +222,8 @@ void TestNanotecSimulator::reference_external_freesSwitchAndZeroes()
 {
     NanotecDrive* d = m_sim->drive(1);
     d->setSwitches(-300, 100000);
-    // l = 5154: external reference frees backwards (bit 10); moving left into the switch,
-    // bit 9 (free forward) is what leaves it: set it.
-    ask("#1l4642\r");
-    QCOMPARE(d->value('l'), qint64(4642));
+    // l = 5154 (factory): "free backward" backs off the switch after the reference run.
+    QCOMPARE(d->value('l'), qint64(5154));
     ask("#1!1\r#1p4\r#1d0\r#1A\r");
     QTRY_VERIFY_WITH_TIMEOUT(d->ready(), 5000);
     QVERIFY(d->physicalPosition() < -290); // it ran into the switch ...
