@@ -160,8 +160,19 @@ void NanotecController::onLinkLost(const QString& reason)
 {
     m_poller.stop();
     m_bus->cancelAll();
-    if (transport())
-        transport()->close();
+    // The port itself works, only the drives are silent: a '#*S' costs nothing and stops any
+    // drive that still listens. The port stays open; openLink() starts over on it.
+    NanotecBus::Request stopAll;
+    stopAll.address = kBroadcast;
+    stopAll.body = "S";
+    stopAll.priority = NanotecBus::Priority::Urgent;
+    m_bus->submit(stopAll);
+    for (Drive& d : m_drives) {
+        d.jog = Jog::Idle;
+        d.jogBusy = false;
+        d.velocityMove = false;
+        d.motionPending = false;
+    }
     setLinkState(LinkState::Lost, reason);
     Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
 }
@@ -171,34 +182,41 @@ void NanotecController::initialiseDrives()
     m_initialising = true;
     QList<Step> perDrive;
     for (Axis axis : m_drives.keys()) {
-        // Firmware first (5.22): a drive that does not answer it is flagged and skipped.
-        QList<Step> steps{
-            exchange(
-                axis, "v",
-                [this, axis](const Reply& r) {
-                    m_drives[axis].firmware = r.firmware.text;
-                    return Failure{};
-                },
-                NanotecBus::Priority::Command, 1),
+        // Firmware first (5.22): a drive that does not answer it is flagged and skipped; the
+        // rest only fills caches, so a drive that answers but refuses one of them stays.
+        Step identify = exchange(
+            axis, "v",
+            [this, axis](const Reply& r) {
+                m_drives[axis].firmware = r.firmware.text;
+                return Failure{};
+            },
+            NanotecBus::Priority::Command, 1);
+        QList<Step> rest{
             // Auto status (5.31): a 'j' at the end of every move saves polling for it.
-            exchange(axis, "J1"),
-            exchange(axis, "Ze",
-                     sink([this, axis](qint64 v) { m_drives[axis].limitSwitchType = v; })),
-            exchange(axis, "Zu", sink([this, axis](qint64 v) { m_drives[axis].minFrequency = v; })),
-            exchange(axis, "Zo", sink([this, axis](qint64 v) { m_drives[axis].maxFrequency = v; })),
-            exchange(axis, "Zb", sink([this, axis](qint64 v) { m_drives[axis].ramp = v; })),
-            exchange(axis, "$",
-                     sink([this, axis](qint64 v) { applyStatusWord(m_drives[axis], v); })),
-            exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; })),
+            tolerant(exchange(axis, "J1")),
+            tolerant(exchange(
+                axis, "Ze", sink([this, axis](qint64 v) { m_drives[axis].limitSwitchType = v; }))),
+            tolerant(exchange(axis, "Zu",
+                              sink([this, axis](qint64 v) { m_drives[axis].minFrequency = v; }))),
+            tolerant(exchange(axis, "Zo",
+                              sink([this, axis](qint64 v) { m_drives[axis].maxFrequency = v; }))),
+            tolerant(
+                exchange(axis, "Zb", sink([this, axis](qint64 v) { m_drives[axis].ramp = v; }))),
+            tolerant(exchange(
+                axis, "$", sink([this, axis](qint64 v) { applyStatusWord(m_drives[axis], v); }))),
+            tolerant(
+                exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; }))),
         };
-        perDrive << [this, axis, steps](const Done& done) {
-            runSteps(steps, [this, axis, done](const Failure& f) {
+        perDrive << [this, axis, identify, rest](const Done& done) {
+            identify([this, axis, rest, done](const Failure& f) {
                 Drive& d = m_drives[axis];
-                d.responding = f.ok();
-                d.misses = f.ok() ? 0 : m_poller.missLimit();
+                d.responding = f.kind != ErrorKind::Timeout && f.kind != ErrorKind::Cancelled;
+                d.misses = d.responding ? 0 : m_poller.missLimit();
                 if (!f.ok())
                     qCWarning(lcNanotec) << "initialising" << driveName(axis) << ":" << f.message;
-                done({});
+                if (!d.responding)
+                    return done({});
+                runSteps(rest, [done](const Failure&) { done({}); });
             });
         };
     }

@@ -136,6 +136,7 @@ private:
 
     // --- motion (NanotecMotion.cpp) ---
     QString motionRefusal(Axis axis, bool needsPosition) const;
+    QString unknownAxes(const QList<Axis>& axes) const;
     void startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
                           bool referenceRun);
     void pumpJog(Axis axis, bool zeroConfirmed = false);
@@ -151,6 +152,7 @@ private:
     Step verifyStep(Axis axis, const ParamDef& def, qint64 expected,
                     std::shared_ptr<QMap<QByteArray, qint64>> cache);
     void noteWritten(Drive& d, const ParamDef& def, qint64 wire);
+    QList<Step> motorAddressSteps(Axis axis, int address, bool verify);
     void readRecord(RequestId id, Axis axis, int record);
     void readAllRecords(RequestId id, Axis axis);
     void writeRecord(RequestId id, Axis axis, int record, const QVariantMap& values);

@@ -19,6 +19,15 @@ QByteArray num(const char* cmd, qint64 v)
 }
 } // namespace
 
+QString NanotecController::unknownAxes(const QList<Axis>& axes) const
+{
+    for (Axis a : axes) {
+        if (!m_drives.contains(a))
+            return tr("this machine has no axis %1").arg(axisName(a));
+    }
+    return {};
+}
+
 QString NanotecController::motionRefusal(Axis axis, bool needsPosition) const
 {
     if (!m_drives.contains(axis))
@@ -47,6 +56,8 @@ void NanotecController::moveRelative(RequestId id, const AxisVector& steps)
 {
     if (linkState() != LinkState::Connected)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (const QString bad = unknownAxes(steps.keys()); !bad.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
     for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
         if (it.value() == 0 && m_drives.contains(it.key()))
@@ -71,6 +82,8 @@ void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
 {
     if (linkState() != LinkState::Connected)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (const QString bad = unknownAxes(targets.keys()); !bad.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
@@ -98,6 +111,8 @@ void NanotecController::referenceWithType(RequestId id, const QMap<Axis, int>& d
 {
     if (linkState() != LinkState::Connected)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (const QString bad = unknownAxes(directions.keys()); !bad.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
     for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
         if (it.value() == 0 && m_drives.contains(it.key()))
@@ -232,6 +247,11 @@ void NanotecController::pumpJog(Axis axis, bool zeroConfirmed)
             if (!f.ok() && f.kind != ErrorKind::Cancelled) {
                 dd.jogDesired = 0;
                 Q_EMIT jogRefused(f.message);
+                // 'A' or a speed change may have reached the drive: never leave it running
+                // at a rate nobody controls.
+                if (next == Jog::Running)
+                    tolerant(exchange(axis, "S", {}, NanotecBus::Priority::Urgent, 2))(
+                        [](const Failure&) {});
             }
             updateStatus();
             publishStatus();
@@ -289,6 +309,8 @@ void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
 {
     if (linkState() != LinkState::Connected)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (const QString bad = unknownAxes(stepsPerS.keys()); !bad.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, bad);
     QList<Step> steps;
     for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
         if (qAbs(it.value()) > kMaxFrequency)
@@ -321,6 +343,16 @@ void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
         };
     }
     runSteps(steps, [this, id](const Failure& f) {
+        if (!f.ok() && f.kind != ErrorKind::Cancelled) {
+            for (Drive& d : m_drives) {
+                if (!d.velocityMove)
+                    continue;
+                d.velocityMove = false;
+                d.jog = Jog::Idle;
+                tolerant(exchange(d.axis, "S", {}, NanotecBus::Priority::Urgent, 2))(
+                    [](const Failure&) {});
+            }
+        }
         updateStatus();
         publishStatus();
         finishWith(id, f);

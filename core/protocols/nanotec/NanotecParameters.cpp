@@ -128,8 +128,6 @@ NanotecController::Step NanotecController::verifyStep(Axis axis, const ParamDef&
             const qint64 mask = def.fieldMask ? def.fieldMask : ~qint64(0);
             if ((*got & mask) == (expected & mask))
                 return done({});
-            if (def.cmd == "m")
-                m_drives[axis].address = int(*got); // the drive stayed where it was
             done({ErrorKind::VerifyFailed,
                   tr("%1 on %2: wrote %3, but the drive kept %4 (drives echo invalid values and "
                      "silently ignore them)")
@@ -151,6 +149,57 @@ void NanotecController::noteWritten(Drive& d, const ParamDef& def, qint64 wire)
         d.limitSwitchType = wire;
     else if (def.cmd == "m")
         d.address = int(wire); // 5.4: communication continues at the new address
+}
+
+QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, int address,
+                                                                    bool verify)
+{
+    auto old = std::make_shared<int>(0);
+    QList<Step> steps;
+    // 5.4: a new address already in use on the bus would end all communication. Probe it.
+    steps << [this, axis, address, old](const Done& done) {
+        *old = m_drives[axis].address;
+        if (address == *old)
+            return done({});
+        NanotecBus::Request probe;
+        probe.address = address;
+        probe.body = "v";
+        probe.timeoutMs = qMin(options().commandTimeoutMs, 100);
+        probe.done = [address, done](NanotecBus::Outcome o, const Reply&) {
+            if (o == NanotecBus::Outcome::Cancelled)
+                return done({ErrorKind::Cancelled, tr("cancelled")});
+            if (o != NanotecBus::Outcome::Timeout)
+                return done({ErrorKind::Refused,
+                             tr("motor-address %1 is already used by another drive on the bus; "
+                                "no communication would be possible (manual 5.4)")
+                                 .arg(address)});
+            done({});
+        };
+        m_bus->submit(probe);
+    };
+    steps << writeStep(axis, *findParam(QStringLiteral("motor-address")), address);
+    if (!verify)
+        return steps;
+    steps << [this, axis, address, old](const Done& done) {
+        const Check same = [this, axis, address](const Reply& r) {
+            if (r.value == address)
+                return Failure{};
+            return Failure{ErrorKind::VerifyFailed, tr("%1 reports motor-address %2, not %3")
+                                                        .arg(driveName(axis))
+                                                        .arg(r.value.value_or(-1))
+                                                        .arg(address)};
+        };
+        exchange(axis, "Zm", same, NanotecBus::Priority::Command, 1)([=](const Failure& f) {
+            if (f.kind != ErrorKind::Timeout)
+                return done(f);
+            m_drives[axis].address = *old; // the drive ignored it and stayed where it was
+            done({ErrorKind::VerifyFailed,
+                  tr("%1 did not take motor-address %2: nothing answers there")
+                      .arg(driveName(axis))
+                      .arg(address)});
+        });
+    };
+    return steps;
 }
 
 void NanotecController::readParameters(RequestId id, const QStringList& names)
@@ -227,10 +276,13 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
                 bitFields[a.key()].second |= wire;
                 continue;
             }
-            QList<Step>& into = def.cmd == "m" ? last : steps; // address changes go last
-            into << writeStep(a.key(), def, wire);
+            if (def.cmd == "m") { // address changes go last
+                last << motorAddressSteps(a.key(), int(wire), verify);
+                continue;
+            }
+            steps << writeStep(a.key(), def, wire);
             if (verify)
-                into << verifyStep(a.key(), def, wire, cache);
+                steps << verifyStep(a.key(), def, wire, cache);
         }
     }
     // The whole 'l' mask as one integer, for the read-modify-write of its groups.

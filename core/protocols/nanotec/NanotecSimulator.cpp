@@ -7,10 +7,8 @@ NanotecSimulator::NanotecSimulator(const SimulatorOptions& options, QObject* par
     : Simulator(options, parent)
 {
     QList<int> addresses = options.addresses.isEmpty() ? QList<int>{1, 2, 3} : options.addresses;
-    for (int address : addresses) {
-        if (isValidAddress(address) && !drive(address))
-            m_drives.push_back(std::make_unique<NanotecDrive>(address));
-    }
+    for (int address : addresses)
+        addDrive(address);
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(5);
     connect(&m_timer, &QTimer::timeout, this, &NanotecSimulator::tick);
@@ -26,6 +24,14 @@ NanotecDrive* NanotecSimulator::drive(int address) const
             return d.get();
     }
     return nullptr;
+}
+
+NanotecDrive* NanotecSimulator::addDrive(int address)
+{
+    if (!isValidAddress(address) || drive(address))
+        return nullptr;
+    m_drives.push_back(std::make_unique<NanotecDrive>(address));
+    return m_drives.back().get();
 }
 
 QList<NanotecDrive*> NanotecSimulator::drives() const

@@ -25,6 +25,7 @@ public:
 
     // The drive that currently answers at `address` (after 'm' it moves), or nullptr.
     NanotecDrive* drive(int address) const;
+    NanotecDrive* addDrive(int address); // nullptr if taken or invalid
     QList<NanotecDrive*> drives() const;
     QList<QByteArray> receivedFrames() const { return m_frames; } // host frames, in order
     void clearReceivedFrames() { m_frames.clear(); }

@@ -228,6 +228,13 @@ void TestNanotecController::write_motorAddress_followsTheDrive()
     clash["motor-address"].perAxis = {{Axis::Z, 2}};
     QCOMPARE(run([&](RequestId id) { m_ctl->writeParameters(id, clash, true); }).error,
              ErrorKind::InvalidValue);
+    QVERIFY(m_sim->addDrive(9)); // on the bus, but not in the axis map
+    ParameterSet taken;
+    taken["motor-address"].perAxis = {{Axis::Z, 9}};
+    const CommandResult refused =
+        run([&](RequestId id) { m_ctl->writeParameters(id, taken, true); });
+    QCOMPARE(refused.error, ErrorKind::Refused);
+    QCOMPARE(countFrames("#3m9\r"), 0);
     ParameterSet set;
     set["motor-address"].perAxis = {{Axis::Z, 7}};
     const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, set, true); });
@@ -399,6 +406,13 @@ void TestNanotecController::allDrivesSilent_linkLost()
     for (int a : {1, 2, 3})
         m_sim->setDriveSilent(a, true);
     QTRY_COMPARE_WITH_TIMEOUT(m_ctl->linkState(), LinkState::Lost, 5000);
+    QTRY_COMPARE(countFrames("#*S\r"), 1); // whoever still listens stops
+    QVERIFY(m_ctl->transport()->isOpen()); // the port works; the drives are silent
+    for (int a : {1, 2, 3})
+        m_sim->setDriveSilent(a, false);
+    QVERIFY(run([this](RequestId id) { m_ctl->openLink(id); }).ok());
+    QCOMPARE(m_ctl->linkState(), LinkState::Connected);
+    QVERIFY(!m_ctl->status().commFault);
 }
 
 void TestNanotecController::wrongAddressReply_notAttributed()
