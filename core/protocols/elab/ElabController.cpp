@@ -204,7 +204,9 @@ void ElabController::cancelEverything(ErrorKind kind, const QString& message)
 
 void ElabController::linkDown(const QString& reason, bool closeTransport)
 {
-    if (linkState() == LinkState::Disconnected && m_openId == 0)
+    // Reported once: a transport failure after the poller gave up (or the reverse) is the same
+    // outage.
+    if ((linkState() == LinkState::Disconnected || linkState() == LinkState::Lost) && m_openId == 0)
         return;
     m_poller.stop();
     const bool opening = m_openId != 0;
@@ -225,8 +227,9 @@ void ElabController::closeLink()
     m_poller.stop();
     Transport* t = transport();
     if (t && t->isOpen() && linkState() == LinkState::Connected &&
-        (jogActive() || m_jog.inJogMode() || m_ops.velocityRunning() || m_ops.streaming())) {
-        // Best effort: nothing may keep running unattended (jog, velocity move, stream).
+        (jogActive() || m_jog.inJogMode() || m_ops.openEnded())) {
+        // Best effort: nothing may keep running unattended (jog, velocity or reference move,
+        // stream).
         // "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen".
         const QByteArray stopByte = encode::stopMove();
         recordTraffic(TrafficRecord::Direction::Out, stopByte, false);

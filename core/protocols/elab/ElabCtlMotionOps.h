@@ -36,7 +36,19 @@ public:
     void clear() { m_motion.clear(); }
 
     bool streaming() const { return m_stream.isActive(); }
-    bool velocityRunning() const { return m_motion.kind() == ElabCtlMotion::Kind::Velocity; }
+    // Motion without an end of its own (velocity, reference searching its switch, a stream).
+    bool openEnded() const
+    {
+        using K = ElabCtlMotion::Kind;
+        return streaming() || ((m_motion.kind() == K::Velocity || m_motion.kind() == K::Reference ||
+                                m_motion.kind() == K::Stream) &&
+                               !m_motion.stopped());
+    }
+    // A velocity move the host has not stopped: its rates may change without standstill.
+    bool velocityRunning() const
+    {
+        return m_motion.kind() == ElabCtlMotion::Kind::Velocity && !m_motion.stopped();
+    }
 
 private:
     void accepted(ElabCtlMotion::Kind kind, const AxisVector& values);

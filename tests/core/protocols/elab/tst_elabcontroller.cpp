@@ -227,6 +227,7 @@ private Q_SLOTS:
     void dc2Stream_stop_flushesBufferAndEndsFeed();
     void jog_nak_haltsJogAndSaysWhy();
     void sendRaw_returnsReply();
+    void closeLink_duringVelocityMove_sendsStopFirst();
     void auxiliaries_validateRange();
 };
 
@@ -871,6 +872,20 @@ void TestElabController::sendRaw_returnsReply()
     QCOMPARE(r.value.toByteArray(), bytes("<ACK>"));
     r = rig.run([&](RequestId id) { rig.ctl->sendRaw(id, bytes("<SYN>")); });
     QVERIFY2(r.ok(), qPrintable(r.message));
+}
+
+void TestElabController::closeLink_duringVelocityMove_sendsStopFirst()
+{
+    Rig rig;
+    QVERIFY(rig.connectAndSetup());
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->velocityMove(id, {{Axis::Z, -3500}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(rig.sim->isMoving(Axis::Z), 5000);
+    rig.traffic->clear();
+    rig.ctl->closeLink();
+    QCOMPARE(rig.ctl->linkState(), LinkState::Disconnected);
+    QCOMPARE(rig.framesOut(true), QList<QByteArray>{encode::stopMove()});
+    // Nothing keeps running unattended: the board brakes to standstill.
+    QTRY_VERIFY_WITH_TIMEOUT(!rig.sim->isMoving(Axis::Z), 5000);
 }
 
 QTEST_GUILESS_MAIN(TestElabController)
