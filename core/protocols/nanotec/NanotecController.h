@@ -68,6 +68,7 @@ protected:
     QString jogRefusal() const override;
 
 private:
+    static constexpr int kMaxRampWaitMs = 3000; // a longer ramp-down is cut short by 'S'
     enum class Jog { Idle, Starting, Running, Stopping };
     struct Drive
     {
