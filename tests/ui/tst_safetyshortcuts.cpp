@@ -5,8 +5,11 @@
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "main/SafetyBar.h"
+#include "position/ReferencePanel.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupPage.h"
+#include <QComboBox>
+#include <QDialog>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -25,6 +28,8 @@ private Q_SLOTS:
     void escape_fromAnyFocusedWidget_sendsStop_data();
     void escape_fromAnyFocusedWidget_sendsStop();
     void f1_fromTextField_sendsPanicAndAsksForReferencing();
+    void escape_inModalDialog_stopsAndClosesDialog();
+    void f1_inOpenComboPopup_panics();
     void stopAndPanicButtons_enabledWhileConnected();
     void stop_whileJogging_endsJogAtOnce();
 
@@ -97,6 +102,36 @@ void TestSafetyShortcuts::f1_fromTextField_sendsPanicAndAsksForReferencing()
     QVERIFY(bar->bannerText().contains(QStringLiteral("reference")));
     for (const AxisStatus& a : m_f->window->context()->status().axes)
         QVERIFY(!a.referenced);
+}
+
+void TestSafetyShortcuts::escape_inModalDialog_stopsAndClosesDialog()
+{
+    // Qt blocks the main window's shortcuts while a modal dialog is open.
+    QDialog dialog(m_f->window.get());
+    auto* edit = new QLineEdit(&dialog);
+    dialog.setModal(true);
+    dialog.show();
+    QTRY_VERIFY(QApplication::activeModalWidget() == &dialog);
+    edit->setFocus();
+    QTRY_VERIFY(edit->hasFocus());
+    const qsizetype start = m_f->records.size();
+    QTest::keyClick(edit, Qt::Key_Escape);
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->sent(start).contains(char(elab::ctrl::XOFF)), 3000);
+    QTRY_VERIFY(!dialog.isVisible()); // Esc still closes the dialog
+}
+
+void TestSafetyShortcuts::f1_inOpenComboPopup_panics()
+{
+    QComboBox* combo = m_f->window->referencePanel()->findChild<QComboBox*>();
+    QVERIFY(combo);
+    combo->showPopup();
+    QTRY_VERIFY(QApplication::activePopupWidget());
+    const qsizetype start = m_f->records.size();
+    QWidget* popup = QApplication::activePopupWidget();
+    QTest::keyClick(popup->focusWidget() ? popup->focusWidget() : popup, Qt::Key_F1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->sent(start).contains(char(elab::ctrl::BEL)), 3000);
+    QVERIFY(m_f->window->safetyBar()->positionsLost());
+    combo->hidePopup();
 }
 
 void TestSafetyShortcuts::stopAndPanicButtons_enabledWhileConnected()

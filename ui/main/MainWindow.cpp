@@ -10,6 +10,7 @@
 #include "main/ConnectionBar.h"
 #include "main/MachineContext.h"
 #include "main/SafetyBar.h"
+#include "main/SafetyKeyFilter.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -109,6 +110,7 @@ void MainWindow::buildActions()
     m_panicAction->setToolTip(tr("Immediate stop without ramp (F1); positions are lost"));
     connect(m_panicAction, &QAction::triggered, this, &MainWindow::panicAll);
     addAction(m_panicAction);
+    new SafetyKeyFilter(m_stopAction, m_panicAction, this);
 
     m_referenceAction = new QAction(tr("&Reference all"), this);
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
