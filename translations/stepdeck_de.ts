@@ -506,18 +506,6 @@
             <translation>Neusynchronisierung mit &lt;SYN&gt; nach: %1</translation>
         </message>
         <message>
-            <source>%1 answered NAK; machine state %2: %3; axe state %4: %5</source>
-            <translation>%1 mit NAK beantwortet; Maschinenstatus %2: %3; Achsstatus %4: %5</translation>
-        </message>
-        <message>
-            <source>%1 answered NAK; the status could not be read: %2</source>
-            <translation>%1 mit NAK beantwortet; der Status konnte nicht gelesen werden: %2</translation>
-        </message>
-        <message>
-            <source>cancelled by a stop, panic or reset</source>
-            <translation>abgebrochen durch Stopp, Panik-Stopp oder Reset</translation>
-        </message>
-        <message>
             <source>not connected (%1)</source>
             <translation>nicht verbunden (%1)</translation>
         </message>
@@ -606,6 +594,22 @@
             <translation>Vorschubstrom Schritt %1: Achse %2 fährt %3 Schritte; ein Einzelschritt ist -1, 0 oder +1</translation>
         </message>
         <message>
+            <source>jog refused: setup incomplete (tmInvSetup): write start-speed, max-speed and acceleration first</source>
+            <translation>Tippbetrieb abgelehnt: Einrichtung unvollständig (tmInvSetup): zuerst start-speed, max-speed und acceleration schreiben</translation>
+        </message>
+        <message>
+            <source>jog refused: a feed stream is running</source>
+            <translation>Tippbetrieb abgelehnt: ein Vorschubstrom läuft</translation>
+        </message>
+        <message>
+            <source>spindle-rpm: value '%1' is out of range (allowed: 0..1000 rpm)</source>
+            <translation>spindle-rpm: Wert '%1' liegt außerhalb des Bereichs (erlaubt: 0..1000 U/min)</translation>
+        </message>
+        <message>
+            <source>drive-power: value '%1' is out of range (allowed: 0..100 %)</source>
+            <translation>drive-power: Wert '%1' liegt außerhalb des Bereichs (erlaubt: 0..100 %)</translation>
+        </message>
+        <message>
             <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
             <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
         </message>
@@ -628,6 +632,18 @@
         <message>
             <source>jog refused by the board (NAK); machine state: %1; axe state: %2</source>
             <translation>Tippbetrieb von der Platine abgelehnt (NAK); Maschinenstatus: %1; Achsstatus: %2</translation>
+        </message>
+        <message>
+            <source>cancelled by a stop, panic or reset</source>
+            <translation>abgebrochen durch Stopp, Panik-Stopp oder Reset</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; machine state %2: %3; axe state %4: %5</source>
+            <translation>%1 mit NAK beantwortet; Maschinenstatus %2: %3; Achsstatus %4: %5</translation>
+        </message>
+        <message>
+            <source>%1 answered NAK; the status could not be read: %2</source>
+            <translation>%1 mit NAK beantwortet; der Status konnte nicht gelesen werden: %2</translation>
         </message>
         <message>
             <source>this machine has no axis %1</source>
@@ -1301,6 +1317,18 @@
         <message>
             <source>loading</source>
             <translation>Laden</translation>
+        </message>
+        <message>
+            <source>motor-address %1 is already used by another drive on the bus; no communication would be possible (manual 5.4)</source>
+            <translation>motor-address %1 wird bereits von einem anderen Antrieb am Bus benutzt; eine Kommunikation wäre nicht möglich (Handbuch 5.4)</translation>
+        </message>
+        <message>
+            <source>%1 reports motor-address %2, not %3</source>
+            <translation>%1 meldet motor-address %2, nicht %3</translation>
+        </message>
+        <message>
+            <source>%1 did not take motor-address %2: nothing answers there</source>
+            <translation>%1 hat motor-address %2 nicht übernommen: dort antwortet nichts</translation>
         </message>
     </context>
     <context>
@@ -2008,6 +2036,10 @@
         <message>
             <source>simulator</source>
             <translation>Simulator</translation>
+        </message>
+        <message>
+            <source>Referencing stopped.</source>
+            <translation>Referenzfahrt gestoppt.</translation>
         </message>
     </context>
     <context>

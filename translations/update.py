@@ -11,11 +11,15 @@
    strings filed under a bare namespace under "<namespace>::<FileName>").
 3. --dict FILE.py: fills empty translations from D = {source: german} and numerus forms from
    N = {source: ((de forms), (en forms))}.
-4. Prints what is still untranslated in German; --check exits 1 if anything is.
+4. Keeps every German translation ever made in translations/de_memory.json (source text ->
+   translation), so a string that leaves the sources and comes back later, or moves to another
+   file, is translated again without anyone retyping it.
+5. Prints what is still untranslated in German; --check exits 1 if anything is.
 """
 import argparse
 import collections
 import importlib.util
+import json
 import os
 import re
 import subprocess
@@ -28,6 +32,7 @@ LUPDATE = "/usr/lib/qt6/bin/lupdate"
 SOURCES = ["ui", "core", "app/gui"]
 DE = os.path.join(ROOT, "translations", "stepdeck_de.ts")
 EN = os.path.join(ROOT, "translations", "stepdeck_en.ts")
+MEMORY = os.path.join(ROOT, "translations", "de_memory.json")
 HELPER = re.compile(r'QString\s+\w+\(const char\*\s*\w+\)\s*\{\s*return\s+'
                     r'QCoreApplication::translate\("([^"]+)"', re.S)
 
@@ -170,6 +175,13 @@ def main():
     lupdate(EN, ["-pluralonly"])
     files = message_files()
     d, n = load_dict(args.dict)
+    memory = {"text": {}, "numerus": {}}
+    if os.path.exists(MEMORY):
+        memory = json.load(open(MEMORY, encoding="utf-8"))
+    for src, text in memory["text"].items():
+        d.setdefault(src, text)
+    for src, forms in memory["numerus"].items():
+        n.setdefault(src, (tuple(forms["de"]), tuple(forms["en"])))
     for src, forms in old_de_n.items():
         n.setdefault(src, (forms, old_en_n.get(src, forms)))
     for src, text in old_de.items():
@@ -180,6 +192,16 @@ def main():
         if lang == "de":
             add_runtime_copies(tree, files)
         write(tree, path)
+    new_de, new_de_n = known_translations(DE)
+    _, new_en_n = known_translations(EN)
+    memory["text"].update(new_de)
+    for src, forms in new_de_n.items():
+        memory["numerus"][src] = {"de": list(forms), "en": list(new_en_n.get(src, forms))}
+    with open(MEMORY, "w", encoding="utf-8") as f:
+        json.dump({"text": dict(sorted(memory["text"].items())),
+                   "numerus": dict(sorted(memory["numerus"].items()))},
+                  f, ensure_ascii=False, indent=1)
+        f.write("\n")
     missing = untranslated(ET.parse(DE)) + untranslated(ET.parse(EN))
     for ctx, src in missing:
         print(f"untranslated: [{ctx}] {src!r}")
