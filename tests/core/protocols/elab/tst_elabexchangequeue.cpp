@@ -1,0 +1,197 @@
+// ElabExchangeQueue against a scripted peer: replies matched in order, overtaking, frames
+// without a reply, flow-control bytes between replies, timeouts and garbage with resync.
+#include "TestSupport.h"
+#include "protocols/elab/ElabCodec.h"
+#include "protocols/elab/ElabExchangeQueue.h"
+#include "protocols/elab/ElabModel.h"
+#include "transport/LoopbackTransport.h"
+#include <QtTest>
+#include <memory>
+
+using namespace stepdeck;
+using namespace stepdeck::elab;
+
+namespace {
+QByteArray bytes(const char* mnemonics)
+{
+    QByteArray out;
+    QString error;
+    if (!fromMnemonics(QString::fromLatin1(mnemonics), &out, &error))
+        qFatal("bad mnemonic in test: %s", qPrintable(error));
+    return out;
+}
+
+// The queue on the host end; the test plays the board on the device end.
+struct Peer
+{
+    Peer()
+    {
+        auto [h, d] = LoopbackTransport::createPair();
+        host.reset(h);
+        device.reset(d);
+        host->open(lineSettings());
+        device->open(lineSettings());
+        queue = std::make_unique<ElabExchangeQueue>(host.get());
+        queue->setTimeoutMs(300);
+        received = std::make_unique<QSignalSpy>(device.get(), &Transport::dataReceived);
+        QTRY_VERIFY(host->isOpen());
+    }
+    ~Peer() { queue.reset(); }
+
+    QByteArray seen() const { return test::joinedBytes(*received); }
+    void reply(const char* mnemonics) { device->write(bytes(mnemonics)); }
+
+    // An exchange that records what it got.
+    ElabExchange make(const QByteArray& frame, Expect expect, QStringList* log, const QString& tag)
+    {
+        ElabExchange ex;
+        ex.frame = frame;
+        ex.expect = expect;
+        ex.onReply = [log, tag](const Reply& r) {
+            *log << tag + QLatin1Char(':') +
+                        (r.raw.isEmpty() ? QStringLiteral("written") : toMnemonics(r.raw));
+        };
+        ex.onError = [log, tag](ErrorKind kind, const QString&) {
+            *log << tag + QStringLiteral(":error") + QString::number(int(kind));
+        };
+        return ex;
+    }
+
+    std::unique_ptr<LoopbackTransport> host;
+    std::unique_ptr<LoopbackTransport> device;
+    std::unique_ptr<ElabExchangeQueue> queue;
+    std::unique_ptr<QSignalSpy> received;
+};
+
+QString errorTag(const char* tag, ErrorKind kind)
+{
+    return QString::fromLatin1(tag) + QStringLiteral(":error") + QString::number(int(kind));
+}
+} // namespace
+
+class TestElabExchangeQueue : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void oneInFlight_nextWrittenAfterReply();
+    void overtake_repliesMatchedInOrder();
+    void noReplyFrame_completesOnceWritten();
+    void flowControl_betweenReplies_isNotAReply();
+    void timeout_failsAndSendsSynBurstThenMachineState();
+    void garbage_failsProtocolAndResyncs();
+    void dropQueued_keepsPollsAndInFlight();
+};
+
+void TestElabExchangeQueue::oneInFlight_nextWrittenAfterReply()
+{
+    Peer p;
+    QStringList log;
+    p.queue->enqueue(p.make(encode::requestAxeState(), Expect::AxeState, &log, "a"));
+    p.queue->enqueue(p.make(encode::requestMachineState(), Expect::MachineState, &log, "b"));
+    QTRY_COMPARE(p.seen(), encode::requestAxeState());
+    QVERIFY(test::staysQuiet(*p.received, 50)); // <ENQ> waits for the <HT> reply
+    p.reply("<HT>05#");
+    QTRY_COMPARE(p.seen(), encode::requestAxeState() + encode::requestMachineState());
+    p.reply("<ENQ>0080#");
+    QTRY_COMPARE(log, (QStringList{"a:<HT>05#", "b:<ENQ>0080#"}));
+    QVERIFY(p.queue->isIdle());
+}
+
+void TestElabExchangeQueue::overtake_repliesMatchedInOrder()
+{
+    Peer p;
+    QStringList log;
+    p.queue->enqueue(p.make(bytes("<FF>00000010,00000000;"), Expect::AckNak, &log, "move"));
+    p.queue->enqueue(p.make(encode::requestAxeState(), Expect::AxeState, &log, "queued"));
+    QTRY_COMPARE(p.seen(), bytes("<FF>00000010,00000000;"));
+    p.queue->dropQueued(ErrorKind::Cancelled, "stop", false);
+    p.queue->overtake(p.make(encode::stopMove(), Expect::AckNak, &log, "stop"), false);
+    // Written at once, behind the move that is still waiting for its reply.
+    QTRY_COMPARE(p.seen(), bytes("<FF>00000010,00000000;") + encode::stopMove());
+    p.reply("<NAK><ACK>");
+    QTRY_COMPARE(log.size(), 3);
+    QCOMPARE(log,
+             (QStringList{errorTag("queued", ErrorKind::Cancelled), "move:<NAK>", "stop:<ACK>"}));
+}
+
+void TestElabExchangeQueue::noReplyFrame_completesOnceWritten()
+{
+    Peer p;
+    QStringList log;
+    p.queue->enqueue(
+        p.make(encode::feedStep(0x10) + encode::feedStep(0x11), Expect::None, &log, "chunk"));
+    p.queue->enqueue(p.make(encode::endOfFeed(), Expect::AckNak, &log, "end"));
+    QTRY_COMPARE(log, QStringList{"chunk:written"});
+    QTRY_COMPARE(p.seen(), encode::feedStep(0x10) + encode::feedStep(0x11) + encode::endOfFeed());
+    p.reply("<ACK>");
+    QTRY_COMPARE(log, (QStringList{"chunk:written", "end:<ACK>"}));
+}
+
+void TestElabExchangeQueue::flowControl_betweenReplies_isNotAReply()
+{
+    Peer p;
+    QStringList log;
+    QSignalSpy flow(p.queue.get(), &ElabExchangeQueue::flowControl);
+    p.queue->enqueue(p.make(encode::requestMachineState(), Expect::MachineState, &log, "enq"));
+    QTRY_VERIFY(!p.seen().isEmpty());
+    p.reply("<XOFF><ENQ>00<XON>80#"); // flow control even inside a reply
+    QTRY_COMPARE(log, QStringList{"enq:<ENQ>0080#"});
+    QCOMPARE(flow.size(), 2);
+    QCOMPARE(flow.at(0).at(0).toBool(), false);
+    QCOMPARE(flow.at(1).at(0).toBool(), true);
+}
+
+void TestElabExchangeQueue::timeout_failsAndSendsSynBurstThenMachineState()
+{
+    Peer p;
+    QStringList log;
+    QSignalSpy started(p.queue.get(), &ElabExchangeQueue::resyncStarted);
+    QSignalSpy finished(p.queue.get(), &ElabExchangeQueue::resyncFinished);
+    p.queue->enqueue(p.make(encode::requestAxeState(), Expect::AxeState, &log, "ht"));
+    p.queue->enqueue(p.make(encode::requestTemperature(), Expect::Temperature, &log, "etb"));
+    // No reply: timeout, then <SYN> x16 and <ENQ> ahead of the queued <ETB>.
+    const QByteArray expected =
+        encode::requestAxeState() + QByteArray(16, ctrl::SYN) + encode::requestMachineState();
+    QTRY_COMPARE_WITH_TIMEOUT(p.seen(), expected, 5000);
+    QCOMPARE(log, QStringList{errorTag("ht", ErrorKind::Timeout)});
+    QCOMPARE(started.size(), 1);
+    QVERIFY(started.first().at(0).toString().contains("no reply"));
+    p.reply("<HT>00#<ENQ>0000#"); // the late reply first: skipped
+    QTRY_COMPARE(finished.size(), 1);
+    QCOMPARE(finished.first().at(0).toBool(), true);
+    QTRY_COMPARE(p.seen(), expected + encode::requestTemperature());
+}
+
+void TestElabExchangeQueue::garbage_failsProtocolAndResyncs()
+{
+    Peer p;
+    QStringList log;
+    QSignalSpy started(p.queue.get(), &ElabExchangeQueue::resyncStarted);
+    p.queue->enqueue(p.make(encode::requestAxeState(), Expect::AxeState, &log, "ht"));
+    QTRY_VERIFY(!p.seen().isEmpty());
+    p.reply("<ETB>19#"); // a reply of another kind
+    QTRY_COMPARE(log, QStringList{errorTag("ht", ErrorKind::Protocol)});
+    QCOMPARE(started.size(), 1);
+    QTRY_VERIFY(p.seen().endsWith(QByteArray(16, ctrl::SYN) + encode::requestMachineState()));
+}
+
+void TestElabExchangeQueue::dropQueued_keepsPollsAndInFlight()
+{
+    Peer p;
+    QStringList log;
+    p.queue->enqueue(p.make(encode::requestAxeState(), Expect::AxeState, &log, "inflight"));
+    ElabExchange poll = p.make(encode::requestMachineState(), Expect::MachineState, &log, "poll");
+    poll.droppable = false;
+    p.queue->enqueue(poll);
+    p.queue->enqueue(p.make(bytes("<BS>00000001."), Expect::AckNak, &log, "move"));
+    QTRY_VERIFY(!p.seen().isEmpty());
+    p.queue->dropQueued(ErrorKind::Cancelled, "stop", false);
+    QCOMPARE(log, QStringList{errorTag("move", ErrorKind::Cancelled)});
+    p.reply("<HT>00#");
+    QTRY_COMPARE(p.seen(), encode::requestAxeState() + encode::requestMachineState());
+    p.reply("<ENQ>0000#");
+    QTRY_COMPARE(log.size(), 3);
+}
+
+QTEST_GUILESS_MAIN(TestElabExchangeQueue)
+#include "tst_elabexchangequeue.moc"
