@@ -2058,6 +2058,25 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ParameterFile</name>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2</source>
+            <translation>%1 kann nicht geöffnet werden: %2</translation>
+        </message>
+        <message>
+            <source>%1 is not a parameter file: %2</source>
+            <translation>%1 ist keine Parameterdatei: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::PositionPanel</name>
         <message>
             <source>Units…</source>
@@ -2403,22 +2422,6 @@
         <message>
             <source>Not saved: %1</source>
             <translation>Nicht gespeichert: %1</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>%1 kann nicht geschrieben werden: %2</translation>
-        </message>
-        <message>
-            <source>Cannot open %1: %2</source>
-            <translation>%1 kann nicht geöffnet werden: %2</translation>
-        </message>
-        <message>
-            <source>%1 is not a parameter file: %2</source>
-            <translation>%1 ist keine Parameterdatei: %2</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
         </message>
         <message>
             <source>Save parameters</source>

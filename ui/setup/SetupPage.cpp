@@ -2,13 +2,12 @@
 #include "main/MachineContext.h"
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
+#include "setup/ParameterFile.h"
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
-#include <QJsonDocument>
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
@@ -344,34 +343,12 @@ bool SetupPage::saveToFile(const QString& path, QString* error) const
         *error = tr("Not saved: %1").arg(errors.join(QStringLiteral("; ")));
         return false;
     }
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    file.write(QJsonDocument(m_schema.toJson(m_context->modelId(), set)).toJson());
-    return true;
+    return ParameterFile::save(m_schema, m_context->modelId(), set, path, error);
 }
 
 bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error) const
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = tr("Cannot open %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
-    if (!doc.isObject()) {
-        *error = tr("%1 is not a parameter file: %2").arg(path, parseError.errorString());
-        return false;
-    }
-    QString why;
-    if (!m_schema.fromJson(doc.object(), m_context->modelId(), m_context->axes(), set, &why)) {
-        *error = tr("%1: %2").arg(QFileInfo(path).fileName(), why);
-        return false;
-    }
-    return true;
+    return ParameterFile::load(m_schema, m_context->modelId(), m_context->axes(), path, set, error);
 }
 
 void SetupPage::saveAs()
