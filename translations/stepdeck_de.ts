@@ -1755,10 +1755,6 @@
     <context>
         <name>stepdeck::ui::JogPanel</name>
         <message>
-            <source>Keyboard jog (arrows, Page Up/Down)</source>
-            <translation>Tastatur-Tippbetrieb (Pfeile, Bild auf/ab)</translation>
-        </message>
-        <message>
             <source>Drag the knob to jog X and Y; speed follows the deflection. Release to stop (ramped).</source>
             <translation>Knopf ziehen, um X und Y zu verfahren; die Geschwindigkeit folgt der Auslenkung. Loslassen stoppt (mit Rampe).</translation>
         </message>
@@ -1789,6 +1785,22 @@
         <message>
             <source>steps/s</source>
             <translation>Schritte/s</translation>
+        </message>
+        <message>
+            <source>Keyboard jog</source>
+            <translation>Tastatur-Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Jog settings</source>
+            <translation>Einstellungen Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>Jog settings…</source>
+            <translation>Einstellungen Tippbetrieb…</translation>
+        </message>
+        <message>
+            <source>Max jog speed per axis, dead zone, response curve, keyboard speed</source>
+            <translation>Maximale Tippgeschwindigkeit je Achse, Totzone, Kennlinie, Tastaturgeschwindigkeit</translation>
         </message>
     </context>
     <context>

@@ -6,10 +6,14 @@
 #include "jog/KeyboardJog.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
 #include <QTimer>
@@ -24,10 +28,10 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
-      m_keyboardCheck(new QCheckBox(tr("Keyboard jog (arrows, Page Up/Down)"), this)),
-      m_refusal(new QLabel(this)), m_refusalTimer(new QTimer(this)),
-      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
-      m_settings(new JogSettingsWidget(context, jog, keyboard, this))
+      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_refusal(new QLabel(this)),
+      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
+      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
+      m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
     m_xy->setObjectName(QStringLiteral("jogPadXY"));
@@ -55,8 +59,10 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     scroll->setWidget(buildSidePanel());
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setMinimumWidth(330);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // Never clip the controls (longer labels in German): the pads give way instead.
+    scroll->setMinimumWidth(qMax(300, scroll->widget()->minimumSizeHint().width() +
+                                          scroll->verticalScrollBar()->sizeHint().width() + 6));
     layout->addWidget(scroll, 2);
 
     connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {
@@ -118,7 +124,19 @@ QWidget* JogPanel::buildSidePanel()
     m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
     v->addWidget(m_refusal);
     v->addWidget(m_incremental);
-    v->addWidget(m_settings);
+    // Tuning lives in a dialog: the panel stays narrow enough for the pads.
+    m_settingsDialog->setWindowTitle(tr("Jog settings"));
+    auto* dialogLayout = new QVBoxLayout(m_settingsDialog);
+    dialogLayout->addWidget(m_settings);
+    auto* close = new QDialogButtonBox(QDialogButtonBox::Close, m_settingsDialog);
+    connect(close, &QDialogButtonBox::rejected, m_settingsDialog, &QDialog::hide);
+    dialogLayout->addWidget(close);
+    auto* settingsButton = new QPushButton(tr("Jog settings\u2026"), side);
+    settingsButton->setFocusPolicy(Qt::NoFocus);
+    settingsButton->setToolTip(tr("Max jog speed per axis, dead zone, response curve, keyboard "
+                                  "speed"));
+    connect(settingsButton, &QPushButton::clicked, m_settingsDialog, &QDialog::show);
+    v->addWidget(settingsButton);
     v->addStretch(1);
     return side;
 }

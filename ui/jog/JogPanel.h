@@ -4,6 +4,7 @@
 #include <QWidget>
 
 class QCheckBox;
+class QDialog;
 class QGridLayout;
 class QLabel;
 class QSlider;
@@ -60,6 +61,7 @@ private:
     QGridLayout* m_velocityGrid;
     QMap<Axis, QLabel*> m_velocity;
     IncrementalJogWidget* m_incremental;
+    QDialog* m_settingsDialog;
     JogSettingsWidget* m_settings;
 };
 

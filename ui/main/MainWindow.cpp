@@ -160,7 +160,7 @@ void MainWindow::buildDocks()
     tabifyDockWidget(traffic, charts);
     setup->raise();
     resizeDocks({setup}, {300}, Qt::Vertical);
-    resizeDocks({m_docks.at(0), status}, {390, 440}, Qt::Horizontal);
+    resizeDocks({m_docks.at(0), status}, {390, 470}, Qt::Horizontal);
     setDockNestingEnabled(true);
 }
 
