@@ -25,10 +25,12 @@ const CommandEntry kCommands[] = {
     {"models", cmdModels, false, false},
     {"params", cmdParams, true, false},
     {"status", cmdStatus, true, false},
-    {"set", cmdSet, true, false},
+    {"scan", cmdScan, true, true},
+    {"records", cmdRecords, true, false},
+    {"set", cmdSet, true, true},
     {"get", cmdGet, true, false},
     {"export", cmdExport, true, false},
-    {"import", cmdImport, true, false},
+    {"import", cmdImport, true, true},
     {"move", cmdMove, true, true},
     {"jog", cmdJog, true, true},
     {"home", cmdHome, true, true},
@@ -76,7 +78,7 @@ Outcome CliContext::connect()
     if (!result.ok() || !options.setupDefaults || setupWritten)
         return result;
     setupWritten = true;
-    result = writeParameters(*this, schemaDefaults(*model));
+    result = writeParameters(*this, schemaDefaults(*model, axes()));
     if (result.ok())
         result = session.refresh(); // the status words the adapter's rules see are current
     if (!result.ok())
@@ -84,7 +86,7 @@ Outcome CliContext::connect()
     return result;
 }
 
-ParameterSet schemaDefaults(const ModelInfo& model)
+ParameterSet schemaDefaults(const ModelInfo& model, const QList<Axis>& axes)
 {
     ParameterSet set;
     for (const ParameterSpec& spec : model.schema.specs()) {
@@ -92,7 +94,7 @@ ParameterSet schemaDefaults(const ModelInfo& model)
             continue;
         ParameterValue value;
         if (spec.perAxis) {
-            for (Axis axis : model.capabilities.axes)
+            for (Axis axis : axes)
                 value.perAxis.insert(axis, spec.defaultValue);
         } else {
             value.global = spec.defaultValue;
@@ -102,13 +104,19 @@ ParameterSet schemaDefaults(const ModelInfo& model)
     return set;
 }
 
-Outcome writeParameters(CliContext& c, const ParameterSet& set)
+bool canVerify(const ModelInfo& model, const ParameterSet& set)
 {
-    bool verify = false;
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
-        const ParameterSpec* spec = c.model->schema.find(it.key());
-        verify = verify || (spec && spec->readable);
+        const ParameterSpec* spec = model.schema.find(it.key());
+        if (!spec || !spec->readable)
+            return false;
     }
+    return !set.isEmpty();
+}
+
+Outcome writeParameters(CliContext& c, const ParameterSet& set, bool verify)
+{
+    verify = verify && canVerify(*c.model, set);
     return c.session.run([&](ControllerSession& s) { return s.writeParameters(set, verify); });
 }
 
@@ -126,6 +134,11 @@ Outcome runCommand(CliContext& context)
             return Outcome::usage(
                 tr("unknown controller model '%1' (known: %2)")
                     .arg(context.options.model, modelIds().join(QStringLiteral(", "))));
+        }
+        if (entry.needsModel) {
+            // Builds the stack without opening the port: its capabilities follow the axis map.
+            if (const Outcome created = context.session.create(); !created.ok())
+                return created;
         }
         return entry.run(context, context.options.args);
     }
@@ -235,8 +248,8 @@ Outcome cmdStatus(CliContext& c, QStringList args)
     if (c.json())
         printJson(c.session.status().toJson(c.model->id));
     else
-        printLine(
-            formatStatus(c.session.status(), *c.model, c.options.port, c.session.linkStateText()));
+        printLine(formatStatus(c.session.status(), *c.model, c.capabilities(), c.options.port,
+                               c.session.linkStateText()));
     return Outcome::success();
 }
 

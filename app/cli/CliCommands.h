@@ -17,21 +17,31 @@ struct CliContext
     // Opens the link (once) and, with --setup-defaults, writes the schema defaults.
     Outcome connect();
     bool json() const { return options.json; }
+    // The controller's capabilities and axes. runCommand() creates the stack (no I/O) before
+    // a command that needs a model runs, so these follow the axis map (--address, --axes).
+    Capabilities capabilities() const { return session.capabilities(); }
+    QList<Axis> axes() const { return session.capabilities().axes; }
 };
 
 // Runs options.command; the caller prints the outcome's message and exits with its code.
 Outcome runCommand(CliContext& context);
 
-// Every writable parameter at its schema default, per-axis ones for each axis of the model.
-ParameterSet schemaDefaults(const ModelInfo& model);
-// Writes the set; verifies by read-back where the model can read any of it.
-Outcome writeParameters(CliContext& context, const ParameterSet& set);
+// Every writable parameter at its schema default, per-axis ones for each of `axes`.
+ParameterSet schemaDefaults(const ModelInfo& model, const QList<Axis>& axes);
+// Writes the set. With verify, every value is read back afterwards (issue 4: drives may echo
+// a value and ignore it) -- but only when every parameter in the set is readable; a model
+// that cannot read back (E-LAB) just writes.
+Outcome writeParameters(CliContext& context, const ParameterSet& set, bool verify = true);
+// True when every parameter of set can be read back, so a write can be verified.
+bool canVerify(const ModelInfo& model, const ParameterSet& set);
 
 // Handlers, grouped by file. Each takes the command's own arguments.
 Outcome cmdPorts(CliContext& c, QStringList args);
 Outcome cmdModels(CliContext& c, QStringList args);
 Outcome cmdParams(CliContext& c, QStringList args);
 Outcome cmdStatus(CliContext& c, QStringList args);
+Outcome cmdScan(CliContext& c, QStringList args);
+Outcome cmdRecords(CliContext& c, QStringList args);
 
 Outcome cmdSet(CliContext& c, QStringList args);
 Outcome cmdGet(CliContext& c, QStringList args);

@@ -46,7 +46,7 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
         return Outcome::usage(e);
     AxisVector steps;
     QString error;
-    if (!parseAxisIntegers(args, c.model->capabilities.axes, &steps, &error))
+    if (!parseAxisIntegers(args, c.axes(), &steps, &error))
         return Outcome::usage(tr("%1: %2").arg(command, error));
     if (check) {
         if (const Outcome checked = check(steps); !checked.ok())
@@ -173,7 +173,7 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
     if (forText && (!parseInteger(*forText, &forMs) || forMs <= 0))
         return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
     AxisVector rates;
-    if (!parseAxisIntegers(args, c.model->capabilities.axes, &rates, &error))
+    if (!parseAxisIntegers(args, c.axes(), &rates, &error))
         return Outcome::usage(tr("velocity: %1").arg(error));
     Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });
     if (!result.ok())
@@ -212,9 +212,9 @@ Outcome cmdJog(CliContext& c, QStringList args)
     if (!forText || !parseInteger(*forText, &forMs) || forMs <= 0)
         return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));
     AxisVelocities rates;
-    if (!parseAxisDoubles(args, c.model->capabilities.axes, &rates, &error))
+    if (!parseAxisDoubles(args, c.axes(), &rates, &error))
         return Outcome::usage(tr("jog: %1").arg(error));
-    const double maxSpeed = c.model->capabilities.maxJogSpeed;
+    const double maxSpeed = c.capabilities().maxJogSpeed;
     double fastest = 0;
     for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
         if (qAbs(it.value()) > maxSpeed) {
@@ -241,7 +241,7 @@ Outcome cmdJog(CliContext& c, QStringList args)
             return Outcome::failure(ExitInterrupted, tr("interrupted"));
     }
     c.session.session().endJog();
-    const double acceleration = c.model->capabilities.defaultJogAcceleration;
+    const double acceleration = c.capabilities().defaultJogAcceleration;
     const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
     const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
     if (!c.session.jogRefusal().isEmpty())

@@ -124,6 +124,11 @@ void printJson(const QJsonObject& object)
     printLine(QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Compact)));
 }
 
+void printJson(const QJsonArray& array)
+{
+    printLine(QString::fromUtf8(QJsonDocument(array).toJson(QJsonDocument::Compact)));
+}
+
 void printError(const QString& message)
 {
     QString line = message.simplified();
@@ -134,7 +139,49 @@ void printError(const QString& message)
     std::fflush(stderr);
 }
 
-QString formatStatus(const MachineStatus& status, const ModelInfo& model, const QString& port,
+namespace {
+QString driveLabel(const DriveStatus& drive)
+{
+    QStringList axes;
+    for (Axis a : drive.axes)
+        axes << axisName(a);
+    return axes.isEmpty()
+               ? tr("drive %1").arg(drive.address)
+               : tr("drive %1 (axis %2)").arg(drive.address).arg(axes.join(QLatin1Char(',')));
+}
+
+// "Drives: 2 of 3 answering; silent: drive 2 (axis Y)" and one row per drive.
+QStringList driveLines(const QList<DriveStatus>& drives)
+{
+    QStringList silent;
+    for (const DriveStatus& d : drives) {
+        if (!d.responding)
+            silent << driveLabel(d);
+    }
+    QStringList lines;
+    lines << (silent.isEmpty() ? tr("Drives:       %1 answering").arg(drives.size())
+                               : tr("Drives:       %1 of %2 answering; NOT ANSWERING: %3")
+                                     .arg(drives.size() - silent.size())
+                                     .arg(drives.size())
+                                     .arg(silent.join(QStringLiteral(", "))));
+    lines << tr("Drive  Axes  Responding  Firmware                    State");
+    for (const DriveStatus& d : drives) {
+        QStringList axes;
+        for (Axis a : d.axes)
+            axes << axisName(a);
+        lines << QStringLiteral("%1  %2  %3  %4  %5")
+                     .arg(d.address, -5)
+                     .arg(axes.join(QLatin1Char(',')), -4)
+                     .arg(d.responding ? tr("yes") : tr("NO"), -10)
+                     .arg(d.firmware.isEmpty() ? QStringLiteral("-") : d.firmware, -26)
+                     .arg(d.detail.isEmpty() ? QStringLiteral("-") : d.detail);
+    }
+    return lines;
+}
+} // namespace
+
+QString formatStatus(const MachineStatus& status, const ModelInfo& model,
+                     const Capabilities& capabilities, const QString& port,
                      const QString& linkState)
 {
     QStringList machine;
@@ -156,12 +203,16 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model, const 
     lines << tr("Model:        %1 (%2)").arg(model.id, model.displayName);
     lines << tr("Port:         %1 (%2)").arg(port, linkState);
     lines << tr("Machine:      %1").arg(machine.join(QStringLiteral(", ")));
-    lines << tr("Temperature:  %1")
-                 .arg(status.temperatureCelsius
-                          ? tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
-                          : tr("not reported"));
+    if (capabilities.temperature || status.temperatureCelsius) {
+        lines << tr("Temperature:  %1")
+                     .arg(status.temperatureCelsius
+                              ? tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
+                              : tr("not reported"));
+    }
     if (status.startButton)
         lines << tr("Start button: %1").arg(*status.startButton ? tr("pressed") : tr("released"));
+    if (capabilities.multiDrive && !status.drives.isEmpty())
+        lines << driveLines(status.drives);
     lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");
     for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it) {
         const AxisStatus& a = it.value();

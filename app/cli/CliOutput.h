@@ -1,7 +1,9 @@
 #pragma once
+#include "model/Capabilities.h"
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
 #include "model/ParameterSchema.h"
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QString>
 
@@ -50,12 +52,15 @@ struct Outcome
 // stdout, flushed per line so a pipe sees output as it happens.
 void printLine(const QString& line);
 void printJson(const QJsonObject& object); // one compact JSON object on one line
+void printJson(const QJsonArray& array);   // one compact JSON array on one line (scan, records)
 // stderr: exactly one line (newlines inside the message are folded).
 void printError(const QString& message);
 
 // Human-readable `status`: machine flags, per-axis flags and positions (marked "unknown" or
-// "estimated"), temperature, raw words.
-QString formatStatus(const MachineStatus& status, const ModelInfo& model, const QString& port,
+// "estimated"), temperature (where the model reports one), one row per drive on multi-drive
+// links (silent drives named), raw words.
+QString formatStatus(const MachineStatus& status, const ModelInfo& model,
+                     const Capabilities& capabilities, const QString& port,
                      const QString& linkState);
 // "X=100 Y=0 Z=-5" with the same marks, for move/home/feed.
 QString formatPositions(const MachineStatus& status);

@@ -38,28 +38,39 @@ Outcome readBack(CliContext& c, const QStringList& names, ParameterSet* out)
 }
 
 // A per-axis parameter in a file must cover every axis: the device takes all axes at once.
-QString checkComplete(const ModelInfo& model, const ParameterSet& set)
+QString checkComplete(const QList<Axis>& axes, const ParameterSet& set)
 {
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
         if (!it.value().isPerAxis())
             continue;
-        for (Axis axis : model.capabilities.axes) {
+        for (Axis axis : axes) {
             if (!it.value().perAxis.contains(axis))
                 return tr("%1 has no value for axis %2").arg(it.key(), axisName(axis));
         }
     }
     return {};
 }
+
+// What set/import print after a successful write.
+QString writtenText(const ModelInfo& model, const ParameterSet& set, bool verify)
+{
+    if (!verify)
+        return tr("written (not verified: --no-verify)");
+    return canVerify(model, set)
+               ? tr("written and verified")
+               : tr("written (the %1 protocol cannot read these back)").arg(model.id);
+}
 } // namespace
 
 Outcome cmdSet(CliContext& c, QStringList args)
 {
+    const bool verify = !takeFlag(&args, QStringLiteral("--no-verify"));
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     if (args.isEmpty())
         return Outcome::usage(tr("set needs NAME=VALUE[,VALUE,...] (see `params`)"));
     const ParameterSchema& schema = c.model->schema;
-    const QList<Axis>& axes = c.model->capabilities.axes;
+    const QList<Axis> axes = c.axes();
     ParameterSet set;
     for (const QString& arg : args) {
         if (!arg.contains(QLatin1Char('=')))
@@ -77,9 +88,9 @@ Outcome cmdSet(CliContext& c, QStringList args)
         return Outcome::failure(ExitInvalidValue, error);
     Outcome result = c.connect();
     if (result.ok())
-        result = writeParameters(c, set);
+        result = writeParameters(c, set, verify);
     if (result.ok() && !c.json())
-        printLine(tr("written: %1").arg(describe(schema, set)));
+        printLine(tr("%1: %2").arg(writtenText(*c.model, set, verify), describe(schema, set)));
     return result;
 }
 
@@ -130,7 +141,7 @@ Outcome cmdExport(CliContext& c, QStringList args)
     if (args.size() != 1)
         return Outcome::usage(tr("export needs exactly one FILE"));
     const QString path = args.first();
-    ParameterSet set = schemaDefaults(*c.model);
+    ParameterSet set = schemaDefaults(*c.model, c.axes());
     QStringList readable;
     for (const ParameterSpec& spec : c.model->schema.specs()) {
         if (spec.readable && spec.writable)
@@ -172,6 +183,7 @@ Outcome cmdExport(CliContext& c, QStringList args)
 
 Outcome cmdImport(CliContext& c, QStringList args)
 {
+    const bool verify = !takeFlag(&args, QStringLiteral("--no-verify"));
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     if (args.size() != 1)
@@ -191,18 +203,20 @@ Outcome cmdImport(CliContext& c, QStringList args)
     // Everything is validated before the first byte goes out: a broken file changes nothing.
     ParameterSet set;
     QString error;
-    if (!c.model->schema.fromJson(doc.object(), c.model->id, c.model->capabilities.axes, &set,
-                                  &error))
+    if (!c.model->schema.fromJson(doc.object(), c.model->id, c.axes(), &set, &error))
         return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
-    if (error = checkComplete(*c.model, set); !error.isEmpty())
+    if (error = checkComplete(c.axes(), set); !error.isEmpty())
         return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
     if (set.isEmpty())
         return Outcome::failure(ExitInvalidValue, tr("%1 refused: no parameters in it").arg(path));
     Outcome result = c.connect();
     if (result.ok())
-        result = writeParameters(c, set);
-    if (result.ok() && !c.json())
-        printLine(tr("imported %1 parameters from %2").arg(set.size()).arg(path));
+        result = writeParameters(c, set, verify);
+    if (result.ok() && !c.json()) {
+        printLine(tr("imported %1 parameters from %2: %3")
+                      .arg(set.size())
+                      .arg(path, writtenText(*c.model, set, verify)));
+    }
     return result;
 }
 

@@ -71,9 +71,9 @@ bool CliSession::pause(int ms)
     return !m_interrupted;
 }
 
-Outcome CliSession::connectLink()
+Outcome CliSession::create()
 {
-    if (m_connected)
+    if (m_session.isCreated())
         return Outcome::success();
     ConnectionSpec spec;
     spec.modelId = m_options.model;
@@ -84,6 +84,15 @@ Outcome CliSession::connectLink()
     QString error;
     if (!m_session.create(spec, &error))
         return Outcome::usage(error);
+    return Outcome::success();
+}
+
+Outcome CliSession::connectLink()
+{
+    if (m_connected)
+        return Outcome::success();
+    if (const Outcome created = create(); !created.ok())
+        return created;
 
     const RequestId id = m_session.open();
     const auto settled = [&] {

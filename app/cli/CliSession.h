@@ -24,8 +24,10 @@ public:
     explicit CliSession(const CliOptions& options, QObject* parent = nullptr);
     ~CliSession() override;
 
-    // Creates the stack (unknown model: usage error), opens the link and waits until it is
-    // Connected, at most options.connectTimeoutMs.
+    // Creates the stack (unknown model: usage error) without touching the port; once.
+    Outcome create();
+    // create(), then opens the link and waits until it is Connected, at most
+    // options.connectTimeoutMs.
     Outcome connectLink();
     bool isConnected() const { return m_connected; }
 
@@ -48,6 +50,9 @@ public:
     bool waitFor(const std::function<bool()>& done, int timeoutMs);
 
     ControllerSession& session() { return m_session; }
+    // The controller's own capabilities (after create()): on bus models the axes follow the
+    // axis map (--address 2: only X), unlike ModelInfo::capabilities.
+    Capabilities capabilities() const { return m_session.capabilities(); }
     const MachineStatus& status() const { return m_session.status(); }
     QString linkStateText() const { return linkStateName(m_session.linkState()); }
     QString jogRefusal() const { return m_jogRefusal; }

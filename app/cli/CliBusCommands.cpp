@@ -1,0 +1,147 @@
+// Commands for models with several addressed drives on one link (Nanotec, issue 4): `scan`
+// lists the drives that answer, `records` reads the 32 stored records of one drive. Both go
+// through the generic ControllerSession doors (scanBus, modelOperation); the adapter does the
+// protocol work.
+#include "CliCommands.h"
+#include <QCoreApplication>
+#include <QJsonArray>
+
+namespace stepdeck::cli {
+
+namespace {
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+constexpr int kMinAddress = 1; // Nanotec manual 1.1: addresses 1..254
+constexpr int kMaxAddress = 254;
+constexpr int kScanMsPerAddress = 100; // the adapter waits ~40 ms for a silent address
+
+// "--first N" / "--last N" of scan; false with *error set when malformed.
+bool takeAddress(QStringList* args, const QString& option, int* value, QString* error)
+{
+    const std::optional<QString> text = takeOption(args, option, error);
+    if (!error->isEmpty())
+        return false;
+    if (!text)
+        return true;
+    bool ok = false;
+    *value = text->toInt(&ok);
+    if (!ok || *value < kMinAddress || *value > kMaxAddress) {
+        *error = tr("scan %1 needs an address within %2..%3, got '%4'")
+                     .arg(option)
+                     .arg(kMinAddress)
+                     .arg(kMaxAddress)
+                     .arg(*text);
+        return false;
+    }
+    return true;
+}
+
+QString valueText(const QVariant& value)
+{
+    if (value.typeId() == QMetaType::Bool)
+        return value.toBool() ? QStringLiteral("on") : QStringLiteral("off");
+    return value.toString();
+}
+} // namespace
+
+Outcome cmdScan(CliContext& c, QStringList args)
+{
+    QString error;
+    int first = kMinAddress;
+    int last = kMaxAddress;
+    const bool ranged = args.contains(QStringLiteral("--first")) ||
+                        args.contains(QStringLiteral("--last")) ||
+                        !args.filter(QStringLiteral("--first=")).isEmpty() ||
+                        !args.filter(QStringLiteral("--last=")).isEmpty();
+    if (!takeAddress(&args, QStringLiteral("--first"), &first, &error) ||
+        !takeAddress(&args, QStringLiteral("--last"), &last, &error))
+        return Outcome::usage(error);
+    if (const QString e = unknownOption(args); !e.isEmpty())
+        return Outcome::usage(e);
+    if (!args.isEmpty())
+        return Outcome::usage(tr("scan takes no arguments besides --first N and --last N"));
+    if (first > last)
+        return Outcome::usage(tr("scan: --first %1 lies after --last %2").arg(first).arg(last));
+    if (!c.capabilities().multiDrive) {
+        return Outcome::failure(
+            ExitUnsupported,
+            tr("%1 has no bus to scan: it is one controller on its own link").arg(c.model->id));
+    }
+    // No connect(): a scan needs no configured drive; the adapter opens the port for it.
+    const int timeoutMs =
+        qMax(CliSession::kRequestTimeoutMs, (last - first + 1) * kScanMsPerAddress + 10000);
+    const CommandResult result = c.session.call(
+        [&](ControllerSession& s) {
+            return ranged
+                       ? s.modelOperation(QStringLiteral("scan"), {{QStringLiteral("first"), first},
+                                                                   {QStringLiteral("last"), last}})
+                       : s.scanBus();
+        },
+        timeoutMs);
+    if (!result.ok())
+        return Outcome::from(result);
+    const QVariantList drives = result.value.toList();
+    if (c.json()) {
+        printJson(QJsonArray::fromVariantList(drives));
+        return Outcome::success();
+    }
+    if (drives.isEmpty()) {
+        printLine(tr("no drive answered on addresses %1..%2 of %3")
+                      .arg(first)
+                      .arg(last)
+                      .arg(c.options.port));
+        return Outcome::success();
+    }
+    printLine(tr("Address  Firmware"));
+    for (const QVariant& entry : drives) {
+        const QVariantMap d = entry.toMap();
+        printLine(QStringLiteral("%1  %2")
+                      .arg(d.value(QStringLiteral("address")).toInt(), 7)
+                      .arg(d.value(QStringLiteral("firmware")).toString()));
+    }
+    return Outcome::success();
+}
+
+Outcome cmdRecords(CliContext& c, QStringList args)
+{
+    const QList<Axis> axes = c.axes();
+    std::optional<Axis> axis;
+    if (args.size() == 1)
+        axis = axisFromName(args.first().toUpper());
+    else if (args.isEmpty() && axes.size() == 1)
+        axis = axes.first();
+    if (args.size() > 1 || (args.isEmpty() && !axis))
+        return Outcome::usage(tr("records needs the axis of one drive, e.g. `records X`"));
+    if (!axis || !axes.contains(*axis))
+        return Outcome::usage(tr("records: this machine has no axis %1").arg(args.first()));
+    Outcome outcome = c.connect();
+    if (!outcome.ok())
+        return outcome;
+    const CommandResult result = c.session.call([&](ControllerSession& s) {
+        return s.modelOperation(QStringLiteral("read-all-records"),
+                                {{QStringLiteral("axis"), axisName(*axis)}});
+    });
+    if (!result.ok())
+        return Outcome::from(result);
+    const QVariantList records = result.value.toList();
+    if (c.json()) {
+        printJson(QJsonArray::fromVariantList(records));
+        return Outcome::success();
+    }
+    for (const QVariant& entry : records) {
+        const QVariantMap record = entry.toMap();
+        const QVariantMap values = record.value(QStringLiteral("values")).toMap();
+        QStringList parts;
+        for (auto it = values.cbegin(); it != values.cend(); ++it)
+            parts << QStringLiteral("%1=%2").arg(it.key(), valueText(it.value()));
+        printLine(tr("record %1: %2")
+                      .arg(record.value(QStringLiteral("record")).toInt(), 2)
+                      .arg(parts.join(QLatin1Char(' '))));
+    }
+    return Outcome::success();
+}
+
+} // namespace stepdeck::cli
