@@ -36,6 +36,8 @@ private Q_SLOTS:
     void import_brokenFile_refusedAndNothingWritten_data();
     void import_brokenFile_refusedAndNothingWritten();
     void get_writeOnlyParameter_saysItCannot();
+    void set_writeOnlyModel_saysNothingVerified();
+    void scan_modelWithoutBus_unsupportedInOneLine();
     void usageErrors_exitTwoWithOneLine_data();
     void usageErrors_exitTwoWithOneLine();
     void port_missing_failsWithLinkDown();
@@ -358,6 +360,24 @@ void TestCliEndToEnd::get_writeOnlyParameter_saysItCannot()
     QVERIFY2(run.err.contains("cannot be read back"), run.err.constData());
 }
 
+void TestCliEndToEnd::set_writeOnlyModel_saysNothingVerified()
+{
+    // E-LAB cannot read back: write & verify is not attempted, and the output says so.
+    const Run run = cli({"set", "start-speed=100"});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.out.contains("cannot read these back") && run.out.contains("start-speed=100"),
+             run.out.constData());
+}
+
+void TestCliEndToEnd::scan_modelWithoutBus_unsupportedInOneLine()
+{
+    const Run run = cli({"scan"});
+    QCOMPARE(run.exitCode, 8);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains("no bus to scan"), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+}
+
 void TestCliEndToEnd::usageErrors_exitTwoWithOneLine_data()
 {
     QTest::addColumn<QStringList>("args");
@@ -368,6 +388,12 @@ void TestCliEndToEnd::usageErrors_exitTwoWithOneLine_data()
     QTest::newRow("axis value not a number") << QStringList{"move", "X=abc"} << "not a number";
     QTest::newRow("jog without duration") << QStringList{"jog", "X=100"} << "--for";
     QTest::newRow("unknown model") << QStringList{"--model", "nope", "status"} << "nope";
+    QTest::newRow("set with only --no-verify") << QStringList{"set", "--no-verify"} << "set needs";
+    QTest::newRow("scan address out of range")
+        << QStringList{"scan", "--first", "0"} << "--first needs an address within 1..254";
+    QTest::newRow("scan range reversed")
+        << QStringList{"scan", "--first", "9", "--last=3"} << "lies after";
+    QTest::newRow("records of two axes") << QStringList{"records", "X", "Y"} << "records needs";
 }
 
 void TestCliEndToEnd::usageErrors_exitTwoWithOneLine()

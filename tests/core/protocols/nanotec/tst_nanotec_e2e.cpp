@@ -23,6 +23,15 @@ private Q_SLOTS:
     void move_relative_printsEndPositions();
     void home_thenAbsoluteMove_inOneSession();
     void panic_stopsEveryDrive();
+    void set_byAddress_writesThatDriveOnly();
+    void move_byAddress_movesThatDrive();
+    void scan_listsDrivesWithFirmware();
+    void scan_json_isAnArrayOfDrives();
+    void set_ignoredInvalidValue_verifyFailedNamingValues();
+    void set_noVerify_writesWithoutReadBack();
+    void status_human_axisMap_rowPerDrive();
+    void status_human_silentDriveNamed();
+    void records_byAddress_allThirtyTwo();
 
 private:
     struct Run
@@ -201,6 +210,150 @@ void TestNanotecEndToEnd::panic_stopsEveryDrive()
     const QJsonObject s = statusJson();
     for (const QJsonValue& d : s["drives"].toArray())
         QVERIFY(d.toObject()["detail"].toString().startsWith("ready"));
+}
+
+// Issue 4: `--address N` is one drive as axis X -- the axes come from the controller's axis
+// map, not from the model's default X,Y,Z.
+void TestNanotecEndToEnd::set_byAddress_writesThatDriveOnly()
+{
+    startSim("1,2,3");
+    Run r = cli({"--address", "2", "set", "phase-current=77"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("verified") && r.out.contains("phase-current=77"), r.out.constData());
+    r = cli({"--address", "2", "get", "phase-current"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.out.trimmed(), QByteArray("phase-current=77"));
+    r = cli({"get", "phase-current"}); // the machine: only drive 2 changed (default 50)
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.out.trimmed(), QByteArray("phase-current=50,77,50"));
+    r = cli({"--address", "2", "set", "phase-current=70,70"}, QString());
+    QCOMPARE(r.exitCode, 7); // one axis: two values are one too many
+}
+
+void TestNanotecEndToEnd::move_byAddress_movesThatDrive()
+{
+    startSim("1,2,3");
+    Run r = cli({"--address", "2", "move", "Y=10"}, QString());
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("no axis Y"), r.err.constData());
+    r = cli({"--address", "2", "move", "X=120"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("X=120"), r.out.constData());
+    const QJsonObject axes = statusJson()["axes"].toObject();
+    QCOMPARE(axes["X"].toObject()["position"].toInt(), 0);
+    QCOMPARE(axes["Y"].toObject()["position"].toInt(), 120);
+}
+
+void TestNanotecEndToEnd::scan_listsDrivesWithFirmware()
+{
+    startSim("1,2,3");
+    const Run r = cli({"scan"}, QString()); // the whole range 1..254
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 4); // header and three drives
+    for (int i = 1; i <= 3; ++i) {
+        const QList<QByteArray> cols = lines[i].simplified().split(' ');
+        QCOMPARE(cols.value(0), QByteArray::number(i));
+        QVERIFY2(cols.value(1).startsWith("SMCI47-S_RS485"), lines[i].constData());
+    }
+}
+
+void TestNanotecEndToEnd::scan_json_isAnArrayOfDrives()
+{
+    startSim("1,2,3");
+    const Run r = cli({"--json", "scan", "--last", "10"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.out.count('\n'), 1);
+    const QJsonDocument doc = QJsonDocument::fromJson(r.out);
+    QVERIFY2(doc.isArray(), r.out.constData());
+    const QJsonArray drives = doc.array();
+    QCOMPARE(drives.size(), 3);
+    for (int i = 0; i < 3; ++i) {
+        const QJsonObject d = drives[i].toObject();
+        QCOMPARE(d["address"].toInt(), i + 1);
+        QVERIFY(d["firmware"].toString().startsWith("SMCI47-S_RS485"));
+        QCOMPARE(d["hardware"].toString(), QStringLiteral("SMCI47-S"));
+    }
+}
+
+// Manual 6.6: positioning mode 2 is "nicht belegt" in speed mode; the drive echoes '#1p2' and
+// ignores it (NanotecDrive::validSetting). Only the read-back catches it.
+void TestNanotecEndToEnd::set_ignoredInvalidValue_verifyFailedNamingValues()
+{
+    startSim("1");
+    Run r = cli({"--address", "1", "set", "motor-mode=speed"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    r = cli({"--address", "1", "set", "positioning-mode=2"}, QString());
+    QCOMPARE(r.exitCode, 11);
+    QCOMPARE(r.err.count('\n'), 1);
+    QVERIFY2(r.err.contains("positioning-mode") && r.err.contains("wrote 2") &&
+                 r.err.contains("kept 1"),
+             r.err.constData());
+    QVERIFY(r.out.isEmpty());
+}
+
+void TestNanotecEndToEnd::set_noVerify_writesWithoutReadBack()
+{
+    startSim("1");
+    Run r = cli({"--address", "1", "set", "motor-mode=speed"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    r = cli({"--address", "1", "set", "--no-verify", "positioning-mode=2"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData()); // the echo is all there is
+    QVERIFY2(r.out.contains("not verified"), r.out.constData());
+    r = cli({"--address", "1", "get", "positioning-mode"}, QString());
+    QCOMPARE(r.out.trimmed(), QByteArray("positioning-mode=1")); // ignored, as the manual says
+}
+
+void TestNanotecEndToEnd::status_human_axisMap_rowPerDrive()
+{
+    startSim("1,2,3");
+    const Run r = cli({"status"}, QStringLiteral("X=1,Y=2,Z=3"));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("Drives:       3 answering"), r.out.constData());
+    QVERIFY(!r.out.contains("Temperature")); // the drives report none
+    const QList<QByteArray> lines = r.out.split('\n');
+    for (const char* axis : {"X", "Y", "Z"}) {
+        const int address = axis[0] - 'X' + 1;
+        bool found = false;
+        for (const QByteArray& line : lines) {
+            const QList<QByteArray> cols = line.simplified().split(' ');
+            if (cols.size() >= 5 && cols[0] == QByteArray::number(address) && cols[1] == axis) {
+                found = true;
+                QCOMPARE(cols[2], QByteArray("yes"));
+                QVERIFY(cols[3].startsWith("SMCI47-S_RS485"));
+                QVERIFY2(cols[4].startsWith("ready"), line.constData());
+            }
+        }
+        QVERIFY2(found, axis);
+    }
+}
+
+void TestNanotecEndToEnd::status_human_silentDriveNamed()
+{
+    startSim("1,3");
+    const Run r = cli({"status"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("2 of 3 answering; NOT ANSWERING: drive 2 (axis Y)"),
+             r.out.constData());
+    QVERIFY(r.out.contains("COMMUNICATION FAULT"));
+}
+
+void TestNanotecEndToEnd::records_byAddress_allThirtyTwo()
+{
+    startSim("5");
+    Run r = cli({"--address", "5", "records"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 32);
+    QVERIFY2(lines.first().startsWith("record  1:") && lines.first().contains("travel-distance="),
+             lines.first().constData());
+    QVERIFY(lines.last().startsWith("record 32:"));
+    r = cli({"--address", "5", "--json", "records", "X"}, QString());
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray records = QJsonDocument::fromJson(r.out).array();
+    QCOMPARE(records.size(), 32);
+    QCOMPARE(records[31].toObject()["record"].toInt(), 32);
+    QVERIFY(records[0].toObject()["values"].toObject().contains("positioning-mode"));
 }
 
 QTEST_GUILESS_MAIN(TestNanotecEndToEnd)
