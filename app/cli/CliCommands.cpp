@@ -58,6 +58,13 @@ QString rangeText(const ParameterSpec& spec)
     return {};
 }
 
+QString defaultText(const ParameterSpec& spec)
+{
+    if (spec.type == ParameterType::Boolean)
+        return spec.defaultValue.toBool() ? QStringLiteral("on") : QStringLiteral("off");
+    return spec.defaultValue.toString();
+}
+
 QString typeName(ParameterType type)
 {
     switch (type) {
@@ -78,7 +85,14 @@ Outcome CliContext::connect()
     if (!result.ok() || !options.setupDefaults || setupWritten)
         return result;
     setupWritten = true;
-    result = writeParameters(*this, schemaDefaults(*model, axes()));
+    // Parameters with a warning (Nanotec motor-address: the drive moves to the default
+    // address; closed-loop motor data: over-speed) are never written behind the user's back.
+    ParameterSet defaults = schemaDefaults(*model, axes());
+    for (const ParameterSpec& spec : model->schema.specs()) {
+        if (!spec.warning.isEmpty())
+            defaults.remove(spec.name);
+    }
+    result = writeParameters(*this, defaults);
     if (result.ok())
         result = session.refresh(); // the status words the adapter's rules see are current
     if (!result.ok())
@@ -227,7 +241,7 @@ Outcome cmdParams(CliContext& c, QStringList args)
                       .arg(spec.name, -19)
                       .arg(spec.perAxis ? tr("per axis") : tr("global"), -8)
                       .arg(QStringLiteral("%1 %2").arg(rangeText(spec), spec.unit).trimmed(), -19)
-                      .arg(tr("default %1").arg(spec.defaultValue.toString()), -14)
+                      .arg(tr("default %1").arg(defaultText(spec)), -14)
                       .arg(spec.readable ? tr("readable") : tr("write-only"), -10)
                       .arg(spec.label));
     }
