@@ -32,6 +32,7 @@ private Q_SLOTS:
     void status_human_axisMap_rowPerDrive();
     void status_human_silentDriveNamed();
     void records_byAddress_allThirtyTwo();
+    void setupDefaults_keepsDriveAddresses();
 
 private:
     struct Run
@@ -354,6 +355,23 @@ void TestNanotecEndToEnd::records_byAddress_allThirtyTwo()
     QCOMPARE(records.size(), 32);
     QCOMPARE(records[31].toObject()["record"].toInt(), 32);
     QVERIFY(records[0].toObject()["values"].toObject().contains("positioning-mode"));
+}
+
+// The schema default of motor-address (1) must not be written to every drive: parameters with
+// a warning are left out of --setup-defaults.
+void TestNanotecEndToEnd::setupDefaults_keepsDriveAddresses()
+{
+    startSim("1,2,3");
+    const Run r = cli({"--setup-defaults", "--json", "status"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray drives = QJsonDocument::fromJson(r.out).object()["drives"].toArray();
+    QCOMPARE(drives.size(), 3);
+    for (int i = 0; i < 3; ++i) {
+        QCOMPARE(drives[i].toObject()["address"].toInt(), i + 1);
+        QVERIFY(drives[i].toObject()["responding"].toBool());
+    }
+    const Run scan = cli({"--json", "scan", "--last", "4"}, QString());
+    QCOMPARE(QJsonDocument::fromJson(scan.out).array().size(), 3);
 }
 
 QTEST_GUILESS_MAIN(TestNanotecEndToEnd)
