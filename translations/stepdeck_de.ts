@@ -2455,6 +2455,10 @@
             <source>Loaded %1 into the form.</source>
             <translation>%1 ins Formular geladen.</translation>
         </message>
+        <message>
+            <source>Not written: cancelled.</source>
+            <translation>Nicht geschrieben: abgebrochen.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::StatusPanel</name>
@@ -2714,6 +2718,17 @@
         <message>
             <source>inch</source>
             <translation>Zoll</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WriteWarnings</name>
+        <message>
+            <source>Write parameters</source>
+            <translation>Parameter schreiben</translation>
+        </message>
+        <message>
+            <source>Please read before writing:&lt;br&gt;&lt;br&gt;%1</source>
+            <translation>Bitte vor dem Schreiben lesen:&lt;br&gt;&lt;br&gt;%1</translation>
         </message>
     </context>
     <context>

@@ -5,6 +5,7 @@
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupPage.h"
+#include "setup/WriteWarnings.h"
 #include <QJsonDocument>
 #include <QLineEdit>
 #include <QPushButton>
@@ -39,6 +40,7 @@ private Q_SLOTS:
     void file_saveAndRead_roundTripsInCliFormat();
     void file_broken_rejectedWithReason();
     void diff_loadedFile_listsChangedValues();
+    void warnings_collectedForParametersThatCarryThem();
 
 private:
     ui::SetupPage* page() const { return m_f->window->setupPage(); }
@@ -238,6 +240,24 @@ void TestSetupPage::diff_loadedFile_listsChangedValues()
         }
     }
     QCOMPARE(changed, 1);
+}
+
+void TestSetupPage::warnings_collectedForParametersThatCarryThem()
+{
+    ParameterSpec address;
+    address.name = QStringLiteral("motor-address");
+    address.label = QStringLiteral("Motor address");
+    address.warning = QStringLiteral("communication continues at the new address");
+    ParameterSpec plain;
+    plain.name = QStringLiteral("backlash");
+    const ParameterSchema schema({address, plain});
+    ParameterSet set;
+    set[QStringLiteral("backlash")].global = qint64(3);
+    QVERIFY(ui::WriteWarnings::collect(schema, set).isEmpty());
+    set[QStringLiteral("motor-address")].global = qint64(4);
+    const QStringList warnings = ui::WriteWarnings::collect(schema, set);
+    QCOMPARE(warnings.size(), 1);
+    QVERIFY(warnings.first().contains(QStringLiteral("new address")));
 }
 
 QTEST_MAIN(TestSetupPage)

@@ -3,6 +3,7 @@
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
 #include "setup/ParameterFile.h"
+#include "setup/WriteWarnings.h"
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -55,15 +56,20 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     layout->addWidget(m_message);
 
     connect(m_read, &QPushButton::clicked, this, &SetupPage::read);
-    connect(m_write, &QPushButton::clicked, this, [this] { write(false); });
-    connect(m_writeVerify, &QPushButton::clicked, this, [this] { write(true); });
+    connect(m_write, &QPushButton::clicked, this, [this] { write(false, true); });
+    connect(m_writeVerify, &QPushButton::clicked, this, [this] { write(true, true); });
     connect(defaults, &QPushButton::clicked, this, &SetupPage::resetToDefaults);
     connect(save, &QPushButton::clicked, this, &SetupPage::saveAs);
     connect(loadButton, &QPushButton::clicked, this, &SetupPage::load);
     connect(context, &MachineContext::modelChanged, this, &SetupPage::rebuild);
     connect(context->session(), &ControllerSession::requestFinished, this, &SetupPage::onResult);
-    connect(context->session(), &ControllerSession::linkStateChanged, this,
-            &SetupPage::refreshButtons);
+    connect(context->session(), &ControllerSession::linkStateChanged, this, [this](LinkState st) {
+        refreshButtons();
+        // Where the protocol can read back, the form starts from the device's values, so
+        // Write sends only what the technician changed.
+        if (st == LinkState::Connected && m_anyReadable)
+            read();
+    });
     rebuild();
 }
 
@@ -87,6 +93,7 @@ void SetupPage::rebuild()
     bool anyReadable = false;
     for (const ParameterSpec& spec : m_schema.specs())
         anyReadable = anyReadable || spec.readable;
+    m_anyReadable = anyReadable;
     m_read->setVisible(anyReadable);
     m_info->setText(anyReadable ? QString()
                                 : tr("This controller cannot read parameters back: the fields "
@@ -228,7 +235,7 @@ void SetupPage::refreshButtons()
     m_message->setProperty("invalidShown", !errors.isEmpty());
 }
 
-bool SetupPage::write(bool verify)
+bool SetupPage::write(bool verify, bool confirmWarnings)
 {
     QStringList errors;
     ParameterSet all;
@@ -247,12 +254,22 @@ bool SetupPage::write(bool verify)
         setMessage(tr("Not written: %1").arg(invalid), true);
         return false;
     }
+    if (confirmWarnings && !confirm(set))
+        return false;
     m_pendingSet = set;
     m_pendingWrite = m_context->session()->writeParameters(set, verify);
     setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
                       : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
                false);
     return true;
+}
+
+bool SetupPage::confirm(const ParameterSet& set)
+{
+    if (WriteWarnings::confirm(this, m_schema, set))
+        return true;
+    setMessage(tr("Not written: cancelled."), false);
+    return false;
 }
 
 void SetupPage::read()
@@ -387,7 +404,7 @@ void SetupPage::load()
     applyToForm(loaded);
     setMessage(tr("Loaded %1 into the form.").arg(QFileInfo(path).fileName()), false);
     if (choice == DiffDialog::LoadAndWrite)
-        write(false);
+        write(false, true);
 }
 
 } // namespace stepdeck::ui

@@ -40,7 +40,9 @@ public:
     bool readFile(const QString& path, ParameterSet* set, QString* error) const;
 
 public Q_SLOTS:
-    bool write(bool verify = false); // false: nothing sent (invalid values or nothing changed)
+    // false: nothing sent (invalid values, nothing changed, or a warning not confirmed).
+    // confirmWarnings: ask before writing parameters whose schema entry carries a warning.
+    bool write(bool verify = false, bool confirmWarnings = false);
     void read();
     void resetToDefaults();
     void saveAs();
@@ -56,6 +58,7 @@ private:
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error);
     void setBaselines(const ParameterSet& set);
+    bool confirm(const ParameterSet& set);
 
     MachineContext* m_context;
     ParameterSchema m_schema;
@@ -67,6 +70,7 @@ private:
     QPushButton* m_writeVerify;
     QLabel* m_info;
     QLabel* m_message;
+    bool m_anyReadable = false;
     RequestId m_pendingWrite = 0;
     RequestId m_pendingRead = 0;
     ParameterSet m_pendingSet;
