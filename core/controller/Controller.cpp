@@ -2,16 +2,21 @@
 #include "Logging.h"
 #include "transport/Transport.h"
 #include <QtMath>
+#include <cmath>
 
 namespace stepdeck {
 
 QString linkStateName(LinkState state)
 {
     switch (state) {
-    case LinkState::Disconnected: return QStringLiteral("disconnected");
-    case LinkState::Connecting: return QStringLiteral("connecting");
-    case LinkState::Connected: return QStringLiteral("connected");
-    case LinkState::Lost: return QStringLiteral("lost");
+    case LinkState::Disconnected:
+        return QStringLiteral("disconnected");
+    case LinkState::Connecting:
+        return QStringLiteral("connecting");
+    case LinkState::Connected:
+        return QStringLiteral("connected");
+    case LinkState::Lost:
+        return QStringLiteral("lost");
     }
     return {};
 }
@@ -27,6 +32,8 @@ Controller::Controller(Transport* transport, const ControllerOptions& options, Q
     m_jogTimer.setInterval(qMax(5, m_options.jogTickMs));
     m_jogTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_jogTimer, &QTimer::timeout, this, &Controller::onJogTick);
+    if (m_options.jogAccelerationStepsPerS2 > 0)
+        m_jogRamp.setAcceleration(m_options.jogAccelerationStepsPerS2);
     m_jogClock.start();
     m_trafficClock.start();
 }
@@ -97,8 +104,7 @@ void Controller::scanBus(RequestId id)
 
 void Controller::modelOperation(RequestId id, const QString& name, const QVariantMap&)
 {
-    finishError(id, ErrorKind::Unsupported,
-                tr("this controller has no operation '%1'").arg(name));
+    finishError(id, ErrorKind::Unsupported, tr("this controller has no operation '%1'").arg(name));
 }
 
 QString Controller::jogRefusal() const
@@ -172,16 +178,22 @@ void Controller::onJogTick()
     const AxisVelocities before = m_jogRamp.currentVelocities();
     const AxisVelocities rates = m_jogRamp.advance(dt);
 
-    // Host-side position estimate: integrate the rates that were in force during dt.
+    // Host-side position estimate: integrate the rates that were in force during dt. The
+    // fraction of a step is carried over, so a slow jog (20 steps/s at 20 ms ticks is 0.4
+    // steps a tick) still advances the estimate.
     for (auto it = before.cbegin(); it != before.cend(); ++it) {
         if (!m_status.axes.contains(it.key()))
             continue;
         AxisStatus& axis = m_status.axes[it.key()];
         const double avg = (it.value() + rates.value(it.key(), 0.0)) / 2.0;
-        if (avg != 0.0) {
-            axis.position += qint64(qRound64(avg * dt));
-            axis.positionEstimated = true;
-        }
+        if (avg == 0.0)
+            continue;
+        double& carry = m_jogStepCarry[it.key()];
+        carry += avg * dt;
+        const double whole = std::trunc(carry);
+        carry -= whole;
+        axis.position += qint64(whole);
+        axis.positionEstimated = true;
     }
     AxisVelocities rounded;
     for (auto it = rates.cbegin(); it != rates.cend(); ++it)

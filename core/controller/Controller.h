@@ -14,8 +14,6 @@
 
 namespace stepdeck {
 
-
-
 enum class LinkState { Disconnected, Connecting, Connected, Lost };
 QString linkStateName(LinkState state);
 
@@ -133,6 +131,7 @@ private:
     qint64 m_lastJogTickMs = 0;
     qint64 m_leaseRenewedMs = 0;
     AxisVelocities m_lastAppliedJog;
+    AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
     QElapsedTimer m_trafficClock;
 };
 

@@ -97,6 +97,8 @@ private Q_SLOTS:
     void jog_appliedSteps_boundedByAcceleration();
     void jog_notConnected_refused();
     void linkLost_marksUnreferencedAndZeroesVelocity();
+    void jogAccelerationOption_reachesRamp();
+    void slowJog_estimateAdvancesByFractions();
 
 private:
     LoopbackTransport m_transport;
@@ -236,6 +238,31 @@ void TestControllerBase::linkLost_marksUnreferencedAndZeroesVelocity()
     renew.stop();
     QCOMPARE(c.applied.size(), appliedBefore);
     QVERIFY(c.jogRamp().isIdle());
+}
+
+void TestControllerBase::jogAccelerationOption_reachesRamp()
+{
+    ControllerOptions o = jogOptions(300);
+    o.jogAccelerationStepsPerS2 = 500;
+    FakeAdapter c(&m_transport, o);
+    c.openLink(1);
+    c.setJogVelocity({{Axis::X, 100}});
+    QCOMPARE(c.jogRamp().acceleration(), 500.0);
+}
+
+void TestControllerBase::slowJog_estimateAdvancesByFractions()
+{
+    // 20 steps/s at 10 ms ticks is 0.2 steps a tick: rounding each tick would never move.
+    FakeAdapter c(&m_transport, jogOptions(300));
+    c.openLink(1);
+    QTimer renew;
+    renew.setInterval(30);
+    connect(&renew, &QTimer::timeout, &c, [&c] { c.setJogVelocity({{Axis::Z, 20}}); });
+    c.setJogVelocity({{Axis::Z, 20}});
+    renew.start();
+    QTRY_VERIFY_WITH_TIMEOUT(c.status().axes.value(Axis::Z).position >= 3, 5000);
+    QVERIFY(c.status().axes.value(Axis::Z).positionEstimated);
+    renew.stop();
 }
 
 QTEST_GUILESS_MAIN(TestControllerBase)
