@@ -104,7 +104,8 @@ void SetupPage::rebuild()
 
 QWidget* SetupPage::buildGroup(const QString& group)
 {
-    auto* box = new QGroupBox(trParam(group));
+    // "Power & spindle": the '&' is text, not a keyboard mnemonic.
+    auto* box = new QGroupBox(trParam(group).replace(QLatin1Char('&'), QStringLiteral("&&")));
     auto* grid = new QGridLayout(box);
     const QList<Axis> axes = m_context->axes();
     bool anyPerAxis = false;
