@@ -45,19 +45,6 @@ const CommandEntry kCommands[] = {
 };
 // clang-format on
 
-QString rangeText(const ParameterSpec& spec)
-{
-    switch (spec.type) {
-    case ParameterType::Integer:
-        return QStringLiteral("%1..%2").arg(spec.minimum).arg(spec.maximum);
-    case ParameterType::Boolean:
-        return QStringLiteral("on|off");
-    case ParameterType::Choice:
-        return spec.choices.join(QLatin1Char('|'));
-    }
-    return {};
-}
-
 QString defaultText(const ParameterSpec& spec)
 {
     if (spec.type == ParameterType::Boolean)
@@ -229,7 +216,7 @@ Outcome cmdParams(CliContext& c, QStringList args)
                                 {"group", spec.group},
                                 {"unit", spec.unit},
                                 {"type", typeName(spec.type)},
-                                {"range", rangeText(spec)},
+                                {"range", ParameterSchema::rangeText(spec)},
                                 {"perAxis", spec.perAxis},
                                 {"readable", spec.readable},
                                 {"writable", spec.writable},
@@ -240,7 +227,10 @@ Outcome cmdParams(CliContext& c, QStringList args)
         printLine(QStringLiteral("%1  %2  %3  %4  %5  %6")
                       .arg(spec.name, -19)
                       .arg(spec.perAxis ? tr("per axis") : tr("global"), -8)
-                      .arg(QStringLiteral("%1 %2").arg(rangeText(spec), spec.unit).trimmed(), -19)
+                      .arg(QStringLiteral("%1 %2")
+                               .arg(ParameterSchema::rangeText(spec), spec.unit)
+                               .trimmed(),
+                           -19)
                       .arg(tr("default %1").arg(defaultText(spec)), -14)
                       .arg(spec.readable ? tr("readable") : tr("write-only"), -10)
                       .arg(spec.label));

@@ -10,7 +10,9 @@ QString tr(const char* text)
     return QCoreApplication::translate("ParameterSchema", text);
 }
 
-QString rangeText(const ParameterSpec& spec)
+} // namespace
+
+QString ParameterSchema::rangeText(const ParameterSpec& spec)
 {
     switch (spec.type) {
     case ParameterType::Integer:
@@ -22,7 +24,6 @@ QString rangeText(const ParameterSpec& spec)
     }
     return {};
 }
-} // namespace
 
 const ParameterSpec* ParameterSchema::find(const QString& name) const
 {
@@ -85,9 +86,8 @@ QVariant ParameterSchema::normalise(const ParameterSpec& spec, const QVariant& v
 QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVariant& value) const
 {
     const QVariant v = normalise(spec, value);
-    if (!v.isValid() ||
-        (spec.type == ParameterType::Integer &&
-         (v.toLongLong() < spec.minimum || v.toLongLong() > spec.maximum))) {
+    if (!v.isValid() || (spec.type == ParameterType::Integer &&
+                         (v.toLongLong() < spec.minimum || v.toLongLong() > spec.maximum))) {
         return tr("%1: value '%2' is out of range (allowed: %3%4)")
             .arg(spec.name, value.toString(), rangeText(spec),
                  spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + spec.unit);
@@ -125,9 +125,8 @@ QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& ax
     return {};
 }
 
-bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& axes,
-                                      QString* name, ParameterValue* value,
-                                      QString* error) const
+bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
+                                      ParameterValue* value, QString* error) const
 {
     const int eq = text.indexOf(QLatin1Char('='));
     if (eq <= 0) {
@@ -145,15 +144,12 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
     if (spec->perAxis) {
         // One value for all axes, or exactly one per axis in X,Y,Z(,U) order.
         if (parts.size() != 1 && parts.size() != axes.size()) {
-            *error = tr("%1 needs 1 or %2 values (axes %3)")
-                         .arg(*name)
-                         .arg(axes.size())
-                         .arg([&] {
-                             QStringList n;
-                             for (Axis a : axes)
-                                 n << axisName(a);
-                             return n.join(QLatin1Char(','));
-                         }());
+            *error = tr("%1 needs 1 or %2 values (axes %3)").arg(*name).arg(axes.size()).arg([&] {
+                QStringList n;
+                for (Axis a : axes)
+                    n << axisName(a);
+                return n.join(QLatin1Char(','));
+            }());
             return false;
         }
         for (int i = 0; i < axes.size(); ++i) {

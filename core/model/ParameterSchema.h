@@ -63,6 +63,8 @@ public:
     bool parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
                          ParameterValue* value, QString* error) const;
     QString formatValue(const ParameterSpec& spec, const ParameterValue& value) const;
+    // "0..65535", "on|off" or "high|low": what a value may be, for messages and listings.
+    static QString rangeText(const ParameterSpec& spec);
 
     // The JSON file format shared by CLI export/import and the setup pages:
     // {"format":"stepdeck-parameters","version":1,"model":"elab",

@@ -1,4 +1,5 @@
 // ElabCodec against every example of the E-LAB manual, byte for byte, both directions.
+#include "ElabTestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -6,14 +7,7 @@
 using namespace stepdeck::elab;
 
 namespace {
-QByteArray bytes(const char* mnemonics)
-{
-    QByteArray out;
-    QString error;
-    if (!fromMnemonics(QString::fromLatin1(mnemonics), &out, &error))
-        qFatal("bad mnemonic in test: %s", qPrintable(error));
-    return out;
-}
+using stepdeck::elab::testing::bytes;
 
 // Concatenation of manual replies used by the streaming tests, with the expected kinds.
 struct Stream

@@ -1,6 +1,7 @@
 // ElabController against the real ElabSimulator over an in-memory LoopbackTransport pair:
 // the line discipline, the manual's rules, NAK/timeout/garbage paths, stop/panic overtaking,
 // the DC2 stream with XOFF/XON and link-loss detection.
+#include "ElabTestSupport.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabController.h"
@@ -14,14 +15,7 @@ using namespace stepdeck;
 using namespace stepdeck::elab;
 
 namespace {
-QByteArray bytes(const char* mnemonics)
-{
-    QByteArray out;
-    QString error;
-    if (!fromMnemonics(QString::fromLatin1(mnemonics), &out, &error))
-        qFatal("bad mnemonic in test: %s", qPrintable(error));
-    return out;
-}
+using stepdeck::elab::testing::bytes;
 
 ParameterValue perAxis(qint64 x, qint64 y, qint64 z)
 {

@@ -1,5 +1,6 @@
 // ElabExchangeQueue against a scripted peer: replies matched in order, overtaking, frames
 // without a reply, flow-control bytes between replies, timeouts and garbage with resync.
+#include "ElabTestSupport.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabExchangeQueue.h"
@@ -12,14 +13,7 @@ using namespace stepdeck;
 using namespace stepdeck::elab;
 
 namespace {
-QByteArray bytes(const char* mnemonics)
-{
-    QByteArray out;
-    QString error;
-    if (!fromMnemonics(QString::fromLatin1(mnemonics), &out, &error))
-        qFatal("bad mnemonic in test: %s", qPrintable(error));
-    return out;
-}
+using stepdeck::elab::testing::bytes;
 
 // The queue on the host end; the test plays the board on the device end.
 struct Peer

@@ -1,5 +1,6 @@
 // ElabSimulator: the device side of the E-LAB protocol, driven directly with encoded commands
 // (receive()) and observed through transmit() and its test accessors.
+#include "ElabTestSupport.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabModel.h"
@@ -14,14 +15,7 @@ namespace {
 const QByteArray kAck(1, ctrl::ACK);
 const QByteArray kNak(1, ctrl::NAK);
 
-QByteArray bytes(const char* mnemonics)
-{
-    QByteArray out;
-    QString error;
-    if (!fromMnemonics(QString::fromLatin1(mnemonics), &out, &error))
-        qFatal("bad mnemonic in test: %s", qPrintable(error));
-    return out;
-}
+using stepdeck::elab::testing::bytes;
 
 // A simulator with a spy on its output; ask() returns what one command made it send at once.
 struct Rig
