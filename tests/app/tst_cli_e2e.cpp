@@ -2,6 +2,7 @@
 // (issue #2, section 6). Each test gets a fresh simulator process (power-on state); each CLI
 // invocation is its own session, so positions are only observable within one invocation
 // (move prints where it ended) -- between invocations only the device state persists.
+#include "ProcessSupport.h"
 #include "sim/PtyEndpoint.h"
 #include <QDir>
 #include <QJsonArray>
@@ -45,12 +46,7 @@ private Q_SLOTS:
     void help_documentsExitCodes();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QByteArray out;
-        QByteArray err;
-    };
+    using Run = stepdeck::testing::ProcessRun;
     Run cli(const QStringList& args, int timeoutMs = 20000);
     QJsonObject statusJson();
     QString binary(const QString& name) const;
@@ -79,14 +75,11 @@ void TestCliEndToEnd::initTestCase()
 void TestCliEndToEnd::init()
 {
     m_sim = new QProcess(this);
-    m_sim->setStandardErrorFile(QProcess::nullDevice()); // its one "serving on" line
-    m_sim->start(binary("stepdeck-sim"), {"--model", "elab"});
-    QVERIFY2(m_sim->waitForStarted(5000), qPrintable(m_sim->errorString()));
     // The contract: the pty path is the first line of stdout, flushed at once.
-    while (!m_sim->canReadLine())
-        QVERIFY2(m_sim->waitForReadyRead(5000), "stepdeck-sim printed no pty path");
-    m_pty = QString::fromLocal8Bit(m_sim->readLine()).trimmed();
-    QVERIFY2(m_pty.startsWith("/dev/"), qPrintable(m_pty));
+    QString error;
+    m_pty = stepdeck::testing::startSimulator(m_sim, binary("stepdeck-sim"),
+                                              QStringList{"--model", "elab"}, &error);
+    QVERIFY2(!m_pty.isEmpty(), qPrintable(error));
     QVERIFY(QFileInfo::exists(m_pty));
 }
 
@@ -107,19 +100,7 @@ TestCliEndToEnd::Run TestCliEndToEnd::cli(const QStringList& args, int timeoutMs
     QStringList all = args;
     if (!args.contains("--port"))
         all = QStringList{"--model", "elab", "--port", m_pty} + args;
-    QProcess process;
-    process.start(binary("stepdeck-cli"), all);
-    Run run;
-    if (!process.waitForFinished(timeoutMs)) {
-        process.kill();
-        process.waitForFinished();
-        qWarning() << "stepdeck-cli" << all << "did not finish";
-        return run;
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return stepdeck::testing::runProcess(binary("stepdeck-cli"), all, timeoutMs);
 }
 
 QJsonObject TestCliEndToEnd::statusJson()

@@ -1,6 +1,7 @@
 // End to end: stepdeck-cli against `stepdeck-sim --model nanotec --drives ...` over a real
 // pseudo-terminal (QSerialPort at 19200 8N1). Each CLI invocation is its own session; the
 // drives' settings persist in the simulator process between invocations.
+#include "ProcessSupport.h"
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -35,12 +36,7 @@ private Q_SLOTS:
     void setupDefaults_keepsDriveAddresses();
 
 private:
-    struct Run
-    {
-        int exitCode = -1;
-        QByteArray out;
-        QByteArray err;
-    };
+    using Run = stepdeck::testing::ProcessRun;
     void startSim(const QString& drives);
     Run cli(const QStringList& args, const QString& axes = QStringLiteral("X=1,Y=2,Z=3"));
     QJsonObject statusJson(const QString& axes = QStringLiteral("X=1,Y=2,Z=3"));
@@ -61,14 +57,12 @@ void TestNanotecEndToEnd::initTestCase()
 void TestNanotecEndToEnd::startSim(const QString& drives)
 {
     m_sim = new QProcess(this);
-    m_sim->setStandardErrorFile(QProcess::nullDevice());
-    m_sim->start(QDir(m_binDir).filePath("stepdeck-sim"),
-                 {"--model", "nanotec", "--drives", drives});
-    QVERIFY2(m_sim->waitForStarted(5000), qPrintable(m_sim->errorString()));
-    while (!m_sim->canReadLine())
-        QVERIFY2(m_sim->waitForReadyRead(5000), "stepdeck-sim printed no pty path");
-    m_pty = QString::fromLocal8Bit(m_sim->readLine()).trimmed();
-    QVERIFY2(m_pty.startsWith("/dev/"), qPrintable(m_pty));
+    // The contract: the pty path is the first line of stdout, flushed at once.
+    QString error;
+    m_pty = stepdeck::testing::startSimulator(m_sim, QDir(m_binDir).filePath("stepdeck-sim"),
+                                              QStringList{"--model", "nanotec", "--drives", drives},
+                                              &error);
+    QVERIFY2(!m_pty.isEmpty(), qPrintable(error));
 }
 
 void TestNanotecEndToEnd::cleanup()
@@ -88,19 +82,7 @@ TestNanotecEndToEnd::Run TestNanotecEndToEnd::cli(const QStringList& args, const
     if (!axes.isEmpty())
         all << "--axes" << axes;
     all << args;
-    QProcess process;
-    process.start(QDir(m_binDir).filePath("stepdeck-cli"), all);
-    Run run;
-    if (!process.waitForFinished(30000)) {
-        process.kill();
-        process.waitForFinished();
-        qWarning() << "stepdeck-cli" << all << "did not finish";
-        return run;
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
+    return stepdeck::testing::runProcess(QDir(m_binDir).filePath("stepdeck-cli"), all, 30000);
 }
 
 QJsonObject TestNanotecEndToEnd::statusJson(const QString& axes)
