@@ -10,8 +10,8 @@ struct ControllerOptions
     int pollIntervalMs = 50;
     int missedPollsForLinkLoss = 3;
     int commandTimeoutMs = 500;
-    int jogLeaseMs = 300;           // a jog rate not renewed within this ramps to zero
-    int jogTickMs = 20;             // JogRamp update period
+    int jogLeaseMs = 300;                 // a jog rate not renewed within this ramps to zero
+    int jogTickMs = 20;                   // JogRamp update period
     double jogAccelerationStepsPerS2 = 0; // 0: the model's default
 };
 

@@ -104,11 +104,10 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
                 m_linkState = state;
                 Q_EMIT linkStateChanged(state, reason);
             });
-    connect(m_controller, &Controller::statusChanged, this,
-            [this](const MachineStatus& status) {
-                m_status = status;
-                Q_EMIT statusChanged(status);
-            });
+    connect(m_controller, &Controller::statusChanged, this, [this](const MachineStatus& status) {
+        m_status = status;
+        Q_EMIT statusChanged(status);
+    });
     connect(m_controller, &Controller::pollRateChanged, this, [this](double hz) {
         m_pollRateHz = hz;
         Q_EMIT pollRateChanged(hz);
@@ -161,67 +160,53 @@ void ControllerSession::post(std::function<void(Controller*)> fn, bool urgent)
                                 urgent ? Qt::HighEventPriority : Qt::NormalEventPriority);
 }
 
-#define STEPDECK_POST(call, urgent)                                                               \
-    const RequestId id = nextId();                                                                \
-    if (!m_controller) {                                                                          \
-        Q_EMIT requestFinished(                                                                   \
-            CommandResult::failure(id, ErrorKind::LinkDown, tr("no controller session")));        \
-        return id;                                                                                \
-    }                                                                                             \
-    post([=](Controller* c) { c->call; }, urgent);                                                \
+#define STEPDECK_POST(call, urgent)                                                                \
+    const RequestId id = nextId();                                                                 \
+    if (!m_controller) {                                                                           \
+        Q_EMIT requestFinished(                                                                    \
+            CommandResult::failure(id, ErrorKind::LinkDown, tr("no controller session")));         \
+        return id;                                                                                 \
+    }                                                                                              \
+    post([=](Controller* c) { c->call; }, urgent);                                                 \
     return id;
 
-RequestId ControllerSession::open() { STEPDECK_POST(openLink(id), false) }
+RequestId ControllerSession::open()
+{
+    STEPDECK_POST(openLink(id), false)
+}
 void ControllerSession::close()
 {
     post([](Controller* c) { c->closeLink(); }, true);
 }
-RequestId ControllerSession::readParameters(const QStringList& names)
-{
-    STEPDECK_POST(readParameters(id, names), false)
-}
-RequestId ControllerSession::writeParameters(const ParameterSet& values, bool verify)
-{
-    STEPDECK_POST(writeParameters(id, values, verify), false)
-}
-RequestId ControllerSession::moveRelative(const AxisVector& steps)
-{
-    STEPDECK_POST(moveRelative(id, steps), false)
-}
-RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
-{
-    STEPDECK_POST(moveAbsolute(id, targets), false)
-}
-RequestId ControllerSession::feed(const AxisVector& steps) { STEPDECK_POST(feed(id, steps), false) }
-RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
-{
-    STEPDECK_POST(feedStream(id, steps), false)
-}
-RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
-{
-    STEPDECK_POST(reference(id, directions), false)
-}
-RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS)
-{
-    STEPDECK_POST(velocityMove(id, stepsPerS), false)
-}
-RequestId ControllerSession::stop() { STEPDECK_POST(stop(id), true) }
-RequestId ControllerSession::panic() { STEPDECK_POST(panic(id), true) }
-RequestId ControllerSession::reset() { STEPDECK_POST(reset(id), true) }
-RequestId ControllerSession::setSpindle(int rpm) { STEPDECK_POST(setSpindle(id, rpm), false) }
-RequestId ControllerSession::setCoolant(bool on) { STEPDECK_POST(setCoolant(id, on), false) }
-RequestId ControllerSession::setDrivePower(int percent)
-{
-    STEPDECK_POST(setDrivePower(id, percent), false)
-}
-RequestId ControllerSession::refreshStatus() { STEPDECK_POST(refreshStatus(id), false) }
-RequestId ControllerSession::sendRaw(const QByteArray& bytes)
-{
-    STEPDECK_POST(sendRaw(id, bytes), false)
-}
+RequestId ControllerSession::readParameters(const QStringList& names){
+    STEPDECK_POST(readParameters(id, names),
+                  false)} RequestId ControllerSession::writeParameters(const ParameterSet& values,
+                                                                       bool verify){
+    STEPDECK_POST(writeParameters(id, values, verify),
+                  false)} RequestId ControllerSession::moveRelative(const AxisVector& steps){
+    STEPDECK_POST(moveRelative(id, steps),
+                  false)} RequestId ControllerSession::moveAbsolute(const AxisVector& targets){
+    STEPDECK_POST(moveAbsolute(id, targets),
+                  false)} RequestId ControllerSession::feed(const AxisVector& steps){
+    STEPDECK_POST(feed(id, steps),
+                  false)} RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps){
+    STEPDECK_POST(feedStream(id, steps),
+                  false)} RequestId ControllerSession::reference(const QMap<Axis, int>& directions){
+    STEPDECK_POST(reference(id, directions),
+                  false)} RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS){
+    STEPDECK_POST(velocityMove(id, stepsPerS), false)} RequestId ControllerSession::stop(){
+    STEPDECK_POST(stop(id), true)} RequestId ControllerSession::panic(){
+    STEPDECK_POST(panic(id), true)} RequestId ControllerSession::reset(){
+    STEPDECK_POST(reset(id), true)} RequestId ControllerSession::setSpindle(int rpm){
+    STEPDECK_POST(setSpindle(id, rpm), false)} RequestId ControllerSession::setCoolant(bool on){
+    STEPDECK_POST(setCoolant(id, on),
+                  false)} RequestId ControllerSession::setDrivePower(int percent){
+    STEPDECK_POST(setDrivePower(id, percent), false)} RequestId ControllerSession::refreshStatus(){
+    STEPDECK_POST(refreshStatus(id), false)} RequestId
+    ControllerSession::sendRaw(const QByteArray& bytes){STEPDECK_POST(sendRaw(id, bytes), false)}
 
-RequestId ControllerSession::scanBus() { STEPDECK_POST(scanBus(id), false) }
-RequestId ControllerSession::modelOperation(const QString& name, const QVariantMap& args)
+RequestId ControllerSession::scanBus(){STEPDECK_POST(scanBus(id), false)} RequestId
+    ControllerSession::modelOperation(const QString& name, const QVariantMap& args)
 {
     STEPDECK_POST(modelOperation(id, name, args), false)
 }

@@ -5,10 +5,14 @@ namespace stepdeck {
 QString axisName(Axis axis)
 {
     switch (axis) {
-    case Axis::X: return QStringLiteral("X");
-    case Axis::Y: return QStringLiteral("Y");
-    case Axis::Z: return QStringLiteral("Z");
-    case Axis::U: return QStringLiteral("U");
+    case Axis::X:
+        return QStringLiteral("X");
+    case Axis::Y:
+        return QStringLiteral("Y");
+    case Axis::Z:
+        return QStringLiteral("Z");
+    case Axis::U:
+        return QStringLiteral("U");
     }
     return QStringLiteral("?");
 }

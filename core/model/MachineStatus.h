@@ -10,15 +10,15 @@ namespace stepdeck {
 // Normalised per-axis status. Every model maps its own status words onto this.
 struct AxisStatus
 {
-    bool moving = false;          // positioning, feed, reference or velocity move running
-    bool jogging = false;         // in jog mode with a non-zero rate
-    bool limitSwitch = false;     // a limit switch of this axis is active
-    bool referenceSwitch = false; // the reference switch of this axis is active
-    bool referenced = false;      // referenced since the last panic, reset or reconnect
-    bool positionKnown = false;   // false until referenced (or set by the operator)
+    bool moving = false;            // positioning, feed, reference or velocity move running
+    bool jogging = false;           // in jog mode with a non-zero rate
+    bool limitSwitch = false;       // a limit switch of this axis is active
+    bool referenceSwitch = false;   // the reference switch of this axis is active
+    bool referenced = false;        // referenced since the last panic, reset or reconnect
+    bool positionKnown = false;     // false until referenced (or set by the operator)
     bool positionEstimated = false; // integrated from jog/velocity rates, not confirmed
-    qint64 position = 0;          // steps, host-side bookkeeping unless the model reads it back
-    double commandedVelocity = 0; // steps/s the host currently commands (jog ramp output)
+    qint64 position = 0;            // steps, host-side bookkeeping unless the model reads it back
+    double commandedVelocity = 0;   // steps/s the host currently commands (jog ramp output)
 };
 
 // One drive on the link (E-LAB: the board; Nanotec: one bus address per axis).

@@ -15,8 +15,8 @@ namespace stepdeck {
 struct StatusBitInfo
 {
     int bit = 0;
-    QString name;        // the manual's name, e.g. "tmDriveOn" (never translated)
-    QString description; // plain words, already translated, e.g. "the motors are powered"
+    QString name;            // the manual's name, e.g. "tmDriveOn" (never translated)
+    QString description;     // plain words, already translated, e.g. "the motors are powered"
     bool implemented = true; // false: documented but the firmware never sets it
     bool fault = false;      // shown as a warning/error colour when set
 };
@@ -24,8 +24,8 @@ struct StatusBitInfo
 // A raw status word as published in MachineStatus::raw under `key`.
 struct StatusWordInfo
 {
-    QString key;   // key in MachineStatus::raw, e.g. "machineState"
-    QString title; // translated heading, e.g. "Machine state (RequestMachineState)"
+    QString key;    // key in MachineStatus::raw, e.g. "machineState"
+    QString title;  // translated heading, e.g. "Machine state (RequestMachineState)"
     int width = 16; // bits, for the hex display width
     QList<StatusBitInfo> bits;
 };

@@ -20,7 +20,12 @@ void LoopbackTransport::open(const LineSettings& settings)
     m_settings = settings;
     m_open = true;
     QMetaObject::invokeMethod(
-        this, [this] { if (m_open) Q_EMIT opened(); }, Qt::QueuedConnection);
+        this,
+        [this] {
+            if (m_open)
+                Q_EMIT opened();
+        },
+        Qt::QueuedConnection);
 }
 
 void LoopbackTransport::close()

@@ -1,7 +1,7 @@
 #include "ElabModel.h"
+#include "ElabCodec.h"
 #include "ElabController.h"
 #include "ElabSimulator.h"
-#include "ElabCodec.h"
 #include <QCoreApplication>
 #include <QtGlobal>
 
@@ -21,8 +21,8 @@ Capabilities capabilities()
 {
     Capabilities caps;
     caps.axes = {Axis::X, Axis::Y, Axis::Z};
-    caps.motionModes = {MotionMode::Jog,  MotionMode::RelativeMove, MotionMode::AbsoluteMove,
-                        MotionMode::Feed, MotionMode::FeedStream,   MotionMode::Reference,
+    caps.motionModes = {MotionMode::Jog,     MotionMode::RelativeMove, MotionMode::AbsoluteMove,
+                        MotionMode::Feed,    MotionMode::FeedStream,   MotionMode::Reference,
                         MotionMode::Velocity};
     caps.spindle = true;
     caps.coolant = true;
@@ -222,18 +222,18 @@ const BitText kAxeBits[] = {
     {0, "taXMove",
      QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The X axis runs a move or feed."), true,
      false},
-    {1, "taXJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The X axis is jogging."),
-     true, false},
+    {1, "taXJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The X axis is jogging."), true,
+     false},
     {2, "taYMove",
      QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Y axis runs a move or feed."), true,
      false},
-    {3, "taYJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Y axis is jogging."),
-     true, false},
+    {3, "taYJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Y axis is jogging."), true,
+     false},
     {4, "taZMove",
      QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Z axis runs a move or feed."), true,
      false},
-    {5, "taZJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Z axis is jogging."),
-     true, false},
+    {5, "taZJog", QT_TRANSLATE_NOOP("stepdeck::elab::Presentation", "The Z axis is jogging."), true,
+     false},
     {6, "taLimSw",
      QT_TRANSLATE_NOOP("stepdeck::elab::Presentation",
                        "A limit switch is active: only jog moves are accepted."),
@@ -264,8 +264,7 @@ ModelPresentation presentation()
             QStringLiteral("machineState"),
             QCoreApplication::translate("stepdeck::elab::Presentation",
                                         "Machine state (RequestMachineState)"),
-            16,
-            bitList(kMachineBits)};
+            16, bitList(kMachineBits)};
         StatusWordInfo axeWord{QStringLiteral("axeState"),
                                QCoreApplication::translate("stepdeck::elab::Presentation",
                                                            "Axis state (RequestAxeState)"),
@@ -279,7 +278,6 @@ ModelPresentation presentation()
     return p;
 }
 
-
 namespace {
 // Schema labels, groups, units, choices and descriptions are data (English); the UI shows them
 // through QCoreApplication::translate("Parameters", ...). Listed here so lupdate finds them.
@@ -289,25 +287,32 @@ namespace {
     QT_TRANSLATE_NOOP("Parameters", "Speeds"),
     QT_TRANSLATE_NOOP("Parameters", "Step rate at the start of a ramp (SetStartSpeed, <ESC>S)"),
     QT_TRANSLATE_NOOP("Parameters", "Max speed"),
-    QT_TRANSLATE_NOOP("Parameters", "Plateau step rate of positioning and reference moves (SetMaxSpeed, <ESC>M)"),
+    QT_TRANSLATE_NOOP("Parameters",
+                      "Plateau step rate of positioning and reference moves (SetMaxSpeed, <ESC>M)"),
     QT_TRANSLATE_NOOP("Parameters", "Feed speed"),
-    QT_TRANSLATE_NOOP("Parameters", "Step rate in feed mode; must be below the start speed, feed has no ramp (SetFeedSpeed, <FS>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Step rate in feed mode; must be below the start speed, feed "
+                                    "has no ramp (SetFeedSpeed, <FS>)"),
     QT_TRANSLATE_NOOP("Parameters", "Acceleration"),
-    QT_TRANSLATE_NOOP("Parameters", "Ramp steepness of positioning moves; sensible values are 500 to 2000 (SetAcceleration, <ESC>A)"),
+    QT_TRANSLATE_NOOP("Parameters", "Ramp steepness of positioning moves; sensible values are 500 "
+                                    "to 2000 (SetAcceleration, <ESC>A)"),
     QT_TRANSLATE_NOOP("Parameters", "Switch polarity"),
     QT_TRANSLATE_NOOP("Parameters", "high"),
     QT_TRANSLATE_NOOP("Parameters", "low"),
     QT_TRANSLATE_NOOP("Parameters", "Limit switch polarity"),
     QT_TRANSLATE_NOOP("Parameters", "Active level of the limit switches (SetSwitchPolarity, <SO>)"),
     QT_TRANSLATE_NOOP("Parameters", "Reference switch polarity"),
-    QT_TRANSLATE_NOOP("Parameters", "Active level of the reference switches (SetSwitchPolarity, <DLE>)"),
+    QT_TRANSLATE_NOOP("Parameters",
+                      "Active level of the reference switches (SetSwitchPolarity, <DLE>)"),
     QT_TRANSLATE_NOOP("Parameters", "Drive power"),
     QT_TRANSLATE_NOOP("Parameters", "Power & spindle"),
     QT_TRANSLATE_NOOP("Parameters", "%"),
-    QT_TRANSLATE_NOOP("Parameters", "Motor current for all axes; the board maps it to off (<25), 33 % (<50), 66 % (<75), 100 % (SetDrivePower, <STX>)"),
+    QT_TRANSLATE_NOOP("Parameters", "Motor current for all axes; the board maps it to off (<25), "
+                                    "33 % (<50), 66 % (<75), 100 % (SetDrivePower, <STX>)"),
     QT_TRANSLATE_NOOP("Parameters", "Spindle speed"),
     QT_TRANSLATE_NOOP("Parameters", "rpm"),
-    QT_TRANSLATE_NOOP("Parameters", "0 switches the spindle relay off, anything above switches it on (SetSpindleRPM, <SOH>)"),
+    QT_TRANSLATE_NOOP(
+        "Parameters",
+        "0 switches the spindle relay off, anything above switches it on (SetSpindleRPM, <SOH>)"),
     QT_TRANSLATE_NOOP("Parameters", "Coolant"),
     QT_TRANSLATE_NOOP("Parameters", "Coolant pump relay RS2 (SetCoolOnOff, <SI>)"),
 };
