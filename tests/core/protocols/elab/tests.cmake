@@ -2,5 +2,6 @@ stepdeck_add_test(tst_elabcodec SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcodec.
 stepdeck_add_test(tst_elabsimaxis SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabsimaxis.cpp LABELS unit)
 stepdeck_add_test(tst_elabsimstream SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabsimstream.cpp LABELS unit)
 stepdeck_add_test(tst_elabsimulator SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabsimulator.cpp LABELS unit)
-stepdeck_add_test(tst_elabcontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcontroller.cpp LABELS unit)
+stepdeck_add_test(tst_elabcontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcontroller.cpp ${CMAKE_CURRENT_LIST_DIR}/ElabControllerRig.h LABELS unit)
+stepdeck_add_test(tst_elabcontrollermotion SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcontrollermotion.cpp ${CMAKE_CURRENT_LIST_DIR}/ElabControllerRig.h LABELS unit)
 stepdeck_add_test(tst_elabexchangequeue SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabexchangequeue.cpp LABELS unit)
