@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 #include "charts/ChartsPanel.h"
 #include "console/TrafficConsole.h"
+#include "drives/DrivePanel.h"
 #include "gamepad/GamepadDevice.h"
 #include "gamepad/GamepadJogSource.h"
 #include "gamepad/GamepadPanel.h"
@@ -15,6 +16,7 @@
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
+#include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include <QAction>
@@ -81,6 +83,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     connect(m_setup, &SetupPage::message, statusBar(),
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
+    connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);
 
@@ -91,6 +94,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     onLinkState(LinkState::Disconnected, {});
     updateTitle();
+    updateModelDocks();
 }
 
 MainWindow::~MainWindow() = default;
@@ -137,6 +141,8 @@ void MainWindow::buildDocks()
     m_console = new TrafficConsole(m_context, this);
     m_charts = new ChartsPanel(m_context, this);
     m_gamepad = new GamepadPanel(m_gamepadSource, this);
+    m_drivePanel = new DrivePanel(m_context, this);
+    m_records = new RecordsPage(m_context, this);
     connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);
     connect(m_keyboardAction, &QAction::toggled, m_jogPanel->keyboardCheck(),
             &QCheckBox::setChecked);
@@ -149,6 +155,9 @@ void MainWindow::buildDocks()
     QDockWidget* pad =
         addDock(m_gamepad, tr("Gamepad"), QStringLiteral("gamepadDock"), Qt::RightDockWidgetArea);
     tabifyDockWidget(status, pad);
+    m_drivesDock =
+        addDock(m_drivePanel, tr("Drives"), QStringLiteral("drivesDock"), Qt::RightDockWidgetArea);
+    tabifyDockWidget(pad, m_drivesDock);
     status->raise();
     QDockWidget* setup =
         addDock(m_setup, tr("Setup"), QStringLiteral("setupDock"), Qt::BottomDockWidgetArea);
@@ -158,6 +167,9 @@ void MainWindow::buildDocks()
         addDock(m_charts, tr("Charts"), QStringLiteral("chartsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(setup, traffic);
     tabifyDockWidget(traffic, charts);
+    m_recordsDock =
+        addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(charts, m_recordsDock);
     setup->raise();
     resizeDocks({setup}, {300}, Qt::Vertical);
     resizeDocks({m_docks.at(0), status}, {390, 470}, Qt::Horizontal);
@@ -236,6 +248,8 @@ QList<QPair<QString, QWidget*>> MainWindow::pages() const
 {
     QList<QPair<QString, QWidget*>> out{{QStringLiteral("jog"), m_jogPanel}};
     for (QDockWidget* dock : m_docks) {
+        if (!dock->toggleViewAction()->isVisible())
+            continue; // a page this model does not have
         QString stem = dock->objectName();
         stem.chop(4); // "Dock"
         out.append({stem, dock->widget()});
@@ -332,6 +346,22 @@ void MainWindow::resetLayout()
     restoreState(m_defaultState);
     for (QDockWidget* dock : std::as_const(m_docks))
         dock->show();
+    updateModelDocks();
+}
+
+void MainWindow::updateModelDocks()
+{
+    // A dock the model cannot use is hidden and leaves the View menu too.
+    const Capabilities caps = m_context->capabilities();
+    const QList<QPair<QDockWidget*, bool>> docks{{m_drivesDock, caps.multiDrive},
+                                                 {m_recordsDock, caps.records}};
+    for (const auto& [dock, available] : docks) {
+        dock->toggleViewAction()->setVisible(available);
+        if (!available)
+            dock->hide();
+        else if (dock->isHidden())
+            dock->show();
+    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

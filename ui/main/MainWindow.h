@@ -11,6 +11,7 @@ namespace stepdeck::ui {
 
 class ChartsPanel;
 class ConnectionBar;
+class DrivePanel;
 class GamepadDevice;
 class GamepadJogSource;
 class GamepadPanel;
@@ -19,6 +20,7 @@ class JogPanel;
 class KeyboardJog;
 class MachineContext;
 class PositionPanel;
+class RecordsPage;
 class ReferencePanel;
 class SafetyBar;
 class SetupPage;
@@ -49,6 +51,8 @@ public:
     TrafficConsole* trafficConsole() const { return m_console; }
     ChartsPanel* chartsPanel() const { return m_charts; }
     GamepadPanel* gamepadPanel() const { return m_gamepad; }
+    DrivePanel* drivePanel() const { return m_drivePanel; }
+    RecordsPage* recordsPage() const { return m_records; }
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
@@ -75,6 +79,7 @@ private:
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);
     void updateTitle();
+    void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
     void onResult(const CommandResult& result);
 
@@ -91,6 +96,10 @@ private:
     TrafficConsole* m_console = nullptr;
     ChartsPanel* m_charts = nullptr;
     GamepadPanel* m_gamepad = nullptr;
+    DrivePanel* m_drivePanel = nullptr;
+    RecordsPage* m_records = nullptr;
+    QDockWidget* m_drivesDock = nullptr;
+    QDockWidget* m_recordsDock = nullptr;
     GamepadJogSource* m_gamepadSource = nullptr;
     QList<QDockWidget*> m_docks;
     QMenu* m_viewMenu = nullptr;

@@ -107,7 +107,8 @@ bool ScreenshotScript::capture()
         {QStringLiteral("position"), {480, 400}}, {QStringLiteral("reference"), {560, 300}},
         {QStringLiteral("status"), {470, 1020}},  {QStringLiteral("setup"), {1100, 760}},
         {QStringLiteral("traffic"), {1000, 560}}, {QStringLiteral("charts"), {1200, 640}},
-        {QStringLiteral("gamepad"), {440, 560}},
+        {QStringLiteral("gamepad"), {440, 560}},  {QStringLiteral("drives"), {620, 520}},
+        {QStringLiteral("records"), {1300, 820}},
     };
     for (const auto& [stem, page] : pages) {
         auto* dock = qobject_cast<QDockWidget*>(page->parentWidget());

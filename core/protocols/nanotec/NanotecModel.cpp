@@ -31,6 +31,7 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.rampedStop = false;
     caps.panic = true; // '#*S' to every drive at once
     caps.multiDrive = true;
+    caps.records = true; // "read-all-records", "write-record", ... (section 4, 5.15)
     // Speed mode ramps speed and direction changes itself (6.6, !2 p1): the host ramp only
     // passes the targets through.
     caps.hostRampedJog = false;

@@ -1,0 +1,40 @@
+#pragma once
+// GUI tests of a Nanotec machine: the main window connected to the in-process bus simulator
+// with the axis map X=1, Y=2, Z=3.
+#include "UiTestSupport.h"
+#include "protocols/nanotec/NanotecSimulator.h"
+
+namespace stepdeck::test {
+
+class NanotecUiFixture : public UiFixture
+{
+public:
+    bool connectNanotec()
+    {
+        ConnectionSpec spec{QStringLiteral("nanotec"), QStringLiteral("sim"), {}, {}};
+        spec.options.axisAddresses = {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
+        spec.simulator.addresses = {1, 2, 3};
+        QString error;
+        if (!window->context()->connectTo(spec, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        return waitConnected();
+    }
+
+    bool withBus(std::function<void(nanotec::NanotecSimulator*)> fn)
+    {
+        auto done = std::make_shared<std::atomic_bool>(false);
+        session->withSimulator([fn, done](Simulator* s) {
+            fn(static_cast<nanotec::NanotecSimulator*>(s));
+            *done = true;
+        });
+        QElapsedTimer t;
+        t.start();
+        while (!*done && t.elapsed() < 5000)
+            QTest::qWait(5);
+        return *done;
+    }
+};
+
+} // namespace stepdeck::test

@@ -1,0 +1,95 @@
+// Drive list: every drive of a Nanotec machine with its per-drive status; a drive that goes
+// silent is marked while the others keep answering; the dock exists only for multi-drive
+// models.
+#include "../NanotecUiFixture.h"
+#include "drives/DrivePanel.h"
+#include <QDockWidget>
+#include <QPushButton>
+#include <QTableWidget>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestDrivePanel : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup() { m_f.reset(); }
+
+    void driveList_showsThreeDrivesWithAxes();
+    void driveList_silentDriveMarkedRed();
+    void scan_listsDrivesOnTheBus();
+    void dock_hiddenForSingleBoardModel();
+
+private:
+    ui::DrivePanel* panel() const { return m_f->window->drivePanel(); }
+    QString text(int row, int column) const
+    {
+        const QTableWidgetItem* item = panel()->driveTable()->item(row, column);
+        return item ? item->text() : QString();
+    }
+    std::unique_ptr<NanotecUiFixture> m_f;
+};
+
+void TestDrivePanel::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec());
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount > 2, 5000);
+}
+
+void TestDrivePanel::driveList_showsThreeDrivesWithAxes()
+{
+    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    QCOMPARE(text(0, ui::DrivePanel::Address), QStringLiteral("1"));
+    QCOMPARE(text(0, ui::DrivePanel::Axes), QStringLiteral("X"));
+    QCOMPARE(text(2, ui::DrivePanel::Address), QStringLiteral("3"));
+    QCOMPARE(text(2, ui::DrivePanel::Axes), QStringLiteral("Z"));
+    QCOMPARE(panel()->silentCount(), 0);
+    QVERIFY(!m_f->window->findChild<QDockWidget*>(QStringLiteral("drivesDock"))->isHidden());
+}
+
+void TestDrivePanel::driveList_silentDriveMarkedRed()
+{
+    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, true); }));
+    QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 1, 10000);
+    const QTableWidgetItem* silent = panel()->driveTable()->item(1, ui::DrivePanel::Responding);
+    QVERIFY(silent->text().contains(QStringLiteral("NOT RESPONDING")));
+    QCOMPARE(silent->background().color(), QColor(0xc6, 0x28, 0x28));
+    QVERIFY(!text(0, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
+    QVERIFY(!text(2, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
+
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, false); }));
+    QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 0, 10000);
+}
+
+void TestDrivePanel::scan_listsDrivesOnTheBus()
+{
+    QVERIFY(panel()->scanButton()->isEnabled());
+    panel()->scanRange(1, 5);
+    QVERIFY(!panel()->scanButton()->isEnabled());
+    QTRY_COMPARE_WITH_TIMEOUT(panel()->foundTable()->rowCount(), 3, 10000);
+    QCOMPARE(panel()->foundTable()->item(1, ui::DrivePanel::FoundAddress)->text(),
+             QStringLiteral("2"));
+    QVERIFY(!panel()->foundTable()->item(0, ui::DrivePanel::FoundFirmware)->text().isEmpty());
+    QTRY_VERIFY(panel()->scanButton()->isEnabled());
+}
+
+void TestDrivePanel::dock_hiddenForSingleBoardModel()
+{
+    m_f->window->context()->disconnectFromController();
+    m_f->window->context()->selectModel(QStringLiteral("elab"));
+    QTRY_VERIFY(m_f->window->findChild<QDockWidget*>(QStringLiteral("drivesDock"))->isHidden());
+    bool listed = false;
+    for (const auto& page : m_f->window->pages())
+        listed = listed || page.first == QLatin1String("drives");
+    QVERIFY(!listed);
+}
+
+QTEST_MAIN(TestDrivePanel)
+#include "tst_drivepanel.moc"

@@ -1,0 +1,86 @@
+// Records page: all 32 records of a drive in a table, a record edited and written (stored and
+// verified by the adapter), and the error memory decoded.
+#include "../NanotecUiFixture.h"
+#include "records/RecordsPage.h"
+#include <QComboBox>
+#include <QDockWidget>
+#include <QSpinBox>
+#include <QTableWidget>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestRecordsPage : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup() { m_f.reset(); }
+
+    void readAll_fills32Records();
+    void writeRecord_editedValueStored();
+    void errorMemory_decoded();
+
+private:
+    ui::RecordsPage* page() const { return m_f->window->recordsPage(); }
+    std::unique_ptr<NanotecUiFixture> m_f;
+};
+
+void TestRecordsPage::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec());
+    QVERIFY(!m_f->window->findChild<QDockWidget*>(QStringLiteral("recordsDock"))->isHidden());
+    QCOMPARE(page()->axisCombo()->count(), 3);
+}
+
+void TestRecordsPage::readAll_fills32Records()
+{
+    page()->axisCombo()->setCurrentIndex(1); // Y, drive 2
+    page()->readAll();
+    QVERIFY(page()->busy());
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QVERIFY2(!page()->stateText().startsWith(QStringLiteral("Failed")),
+             qPrintable(page()->stateText()));
+    QCOMPARE(page()->recordTable()->rowCount(), 32);
+    QVERIFY(page()->columns().contains(QStringLiteral("max-frequency")));
+    const int col = int(page()->columns().indexOf(QStringLiteral("max-frequency")));
+    for (int row = 0; row < 32; ++row)
+        QVERIFY2(page()->recordTable()->item(row, col), qPrintable(QString::number(row)));
+}
+
+void TestRecordsPage::writeRecord_editedValueStored()
+{
+    page()->readAll();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    const int col = int(page()->columns().indexOf(QStringLiteral("max-frequency")));
+    QVERIFY(col >= 0);
+    page()->recordSpin()->setValue(5);
+    page()->recordTable()->item(4, col)->setData(Qt::EditRole, 1234);
+    page()->writeRecord();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QVERIFY2(page()->stateText().contains(QStringLiteral("verified")),
+             qPrintable(page()->stateText()));
+
+    // Read back from the drive: the EEPROM holds the new value.
+    page()->recordTable()->item(4, col)->setData(Qt::EditRole, 0);
+    page()->readAll();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QCOMPARE(page()->recordTable()->item(4, col)->data(Qt::EditRole).toLongLong(), 1234);
+}
+
+void TestRecordsPage::errorMemory_decoded()
+{
+    page()->readErrorMemory();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QVERIFY2(!page()->stateText().startsWith(QStringLiteral("Failed")),
+             qPrintable(page()->stateText()));
+    QVERIFY(page()->errorTable()->rowCount() > 0);
+    QVERIFY(!page()->errorTable()->item(0, 2)->text().isEmpty()); // decoded name
+}
+
+QTEST_MAIN(TestRecordsPage)
+#include "tst_recordspage.moc"
