@@ -209,6 +209,798 @@
             <source>Coolant pump relay RS2 (SetCoolOnOff, &lt;SI&gt;)</source>
             <translation>Relais RS2 der Kühlmittelpumpe (SetCoolOnOff, &lt;SI&gt;)</translation>
         </message>
+        <message>
+            <source>Motor</source>
+            <translation>Motor</translation>
+        </message>
+        <message>
+            <source>Phase current</source>
+            <translation>Phasenstrom</translation>
+        </message>
+        <message>
+            <source>Motor current relative to the drive's full scale; values above 100 should be avoided (5.1)</source>
+            <translation>Motorstrom bezogen auf den Vollausschlag der Steuerung; Werte über 100 sollten vermieden werden (5.1)</translation>
+        </message>
+        <message>
+            <source>Idle current</source>
+            <translation>Ruhestrom</translation>
+        </message>
+        <message>
+            <source>Current at standstill, relative to full scale (not to the phase current); values above 100 should be avoided (5.2)</source>
+            <translation>Strom im Stillstand, bezogen auf den Vollausschlag (nicht auf den Phasenstrom); Werte über 100 sollten vermieden werden (5.2)</translation>
+        </message>
+        <message>
+            <source>Step mode</source>
+            <translation>Schrittweite</translation>
+        </message>
+        <message>
+            <source>1</source>
+            <translation>1</translation>
+        </message>
+        <message>
+            <source>2</source>
+            <translation>2</translation>
+        </message>
+        <message>
+            <source>4</source>
+            <translation>4</translation>
+        </message>
+        <message>
+            <source>5</source>
+            <translation>5</translation>
+        </message>
+        <message>
+            <source>8</source>
+            <translation>8</translation>
+        </message>
+        <message>
+            <source>10</source>
+            <translation>10</translation>
+        </message>
+        <message>
+            <source>16</source>
+            <translation>16</translation>
+        </message>
+        <message>
+            <source>32</source>
+            <translation>32</translation>
+        </message>
+        <message>
+            <source>64</source>
+            <translation>64</translation>
+        </message>
+        <message>
+            <source>adaptive</source>
+            <translation>adaptiv</translation>
+        </message>
+        <message>
+            <source>Microsteps per full step; 'adaptive' selects the adaptive step mode (5.3)</source>
+            <translation>Mikroschritte je Vollschritt; 'adaptive' wählt die adaptive Schrittweite (5.3)</translation>
+        </message>
+        <message>
+            <source>Step angle</source>
+            <translation>Schrittwinkel</translation>
+        </message>
+        <message>
+            <source>deg</source>
+            <translation>°</translation>
+        </message>
+        <message>
+            <source>0.9</source>
+            <translation>0,9</translation>
+        </message>
+        <message>
+            <source>1.8</source>
+            <translation>1,8</translation>
+        </message>
+        <message>
+            <source>Full-step angle of the motor in degrees, needed to convert encoder positions; changes cl-motor-pole-pairs as well (5.8, 8.6)</source>
+            <translation>Vollschrittwinkel des Motors in Grad, nötig zur Umrechnung der Encoderpositionen; ändert auch cl-motor-pole-pairs (5.8, 8.6)</translation>
+        </message>
+        <message>
+            <source>Motor mode</source>
+            <translation>Motormodus</translation>
+        </message>
+        <message>
+            <source>positioning</source>
+            <translation>Positionierung</translation>
+        </message>
+        <message>
+            <source>speed</source>
+            <translation>Drehzahl</translation>
+        </message>
+        <message>
+            <source>flag-positioning</source>
+            <translation>Flag-Positionierung</translation>
+        </message>
+        <message>
+            <source>clock-direction</source>
+            <translation>Takt-Richtung</translation>
+        </message>
+        <message>
+            <source>analog</source>
+            <translation>analog</translation>
+        </message>
+        <message>
+            <source>joystick</source>
+            <translation>Joystick</translation>
+        </message>
+        <message>
+            <source>Operating mode (5.5). Moves, jog and reference runs switch the mode themselves.</source>
+            <translation>Betriebsart (5.5). Fahrten, Tippbetrieb und Referenzfahrten stellen den Modus selbst um.</translation>
+        </message>
+        <message>
+            <source>Motor address</source>
+            <translation>Motoradresse</translation>
+        </message>
+        <message>
+            <source>RS485 bus address of the drive (5.4)</source>
+            <translation>RS485-Busadresse der Steuerung (5.4)</translation>
+        </message>
+        <message>
+            <source>Communication continues at the new address. It must not be used by another drive on the bus, or no communication is possible any more (manual 5.4).</source>
+            <translation>Die Kommunikation läuft unter der neuen Adresse weiter. Sie darf von keiner anderen Steuerung am Bus benutzt werden, sonst ist keine Kommunikation mehr möglich (Handbuch 5.4).</translation>
+        </message>
+        <message>
+            <source>Backlash</source>
+            <translation>Umkehrspiel</translation>
+        </message>
+        <message>
+            <source>steps</source>
+            <translation>Schritte</translation>
+        </message>
+        <message>
+            <source>Steps made on a direction change before the position counts, to take up gear play (5.33)</source>
+            <translation>Schritte bei einem Richtungswechsel, bevor die Position zählt, um Getriebespiel auszugleichen (5.33)</translation>
+        </message>
+        <message>
+            <source>Send status after moves</source>
+            <translation>Status nach Fahrten senden</translation>
+        </message>
+        <message>
+            <source>The drive sends its status ('j') by itself at the end of every move; the adapter switches this on when it connects (5.31)</source>
+            <translation>Die Steuerung sendet ihren Status ('j') selbst am Ende jeder Fahrt; der Adapter schaltet das beim Verbinden ein (5.31)</translation>
+        </message>
+        <message>
+            <source>Ramp shape</source>
+            <translation>Rampenform</translation>
+        </message>
+        <message>
+            <source>trapezoid</source>
+            <translation>Trapez</translation>
+        </message>
+        <message>
+            <source>sinus</source>
+            <translation>Sinus</translation>
+        </message>
+        <message>
+            <source>Ramp of the positioning mode (5.34)</source>
+            <translation>Rampe des Positioniermodus (5.34)</translation>
+        </message>
+        <message>
+            <source>Brake</source>
+            <translation>Bremse</translation>
+        </message>
+        <message>
+            <source>Brake release delay</source>
+            <translation>Verzögerung Bremse lösen</translation>
+        </message>
+        <message>
+            <source>ms</source>
+            <translation>ms</translation>
+        </message>
+        <message>
+            <source>Wait between switching the motor current on and releasing the brake (5.35)</source>
+            <translation>Wartezeit zwischen Einschalten des Motorstroms und Lösen der Bremse (5.35)</translation>
+        </message>
+        <message>
+            <source>Motion delay after brake release</source>
+            <translation>Bewegungsverzögerung nach Lösen der Bremse</translation>
+        </message>
+        <message>
+            <source>Wait between releasing the brake and allowing motion (5.36)</source>
+            <translation>Wartezeit zwischen Lösen der Bremse und Freigabe der Bewegung (5.36)</translation>
+        </message>
+        <message>
+            <source>Current-off delay after braking</source>
+            <translation>Verzögerung Strom aus nach dem Bremsen</translation>
+        </message>
+        <message>
+            <source>Wait between engaging the brake and switching the motor current off (5.37)</source>
+            <translation>Wartezeit zwischen Schließen der Bremse und Abschalten des Motorstroms (5.37)</translation>
+        </message>
+        <message>
+            <source>Limit switches</source>
+            <translation>Endschalter</translation>
+        </message>
+        <message>
+            <source>External limit switch type</source>
+            <translation>Typ des externen Endschalters</translation>
+        </message>
+        <message>
+            <source>normally-closed</source>
+            <translation>Öffner</translation>
+        </message>
+        <message>
+            <source>normally-open</source>
+            <translation>Schließer</translation>
+        </message>
+        <message>
+            <source>Switch between +5 V and input 6: a normally closed switch ('Oeffner') reads high until it is actuated (5.7)</source>
+            <translation>Schalter zwischen +5 V und Eingang 6: ein Öffner liest high, bis er betätigt wird (5.7)</translation>
+        </message>
+        <message>
+            <source>Internal switch, reference run</source>
+            <translation>Interner Schalter, Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>free-forward</source>
+            <translation>vorwärts freifahren</translation>
+        </message>
+        <message>
+            <source>free-backward</source>
+            <translation>rückwärts freifahren</translation>
+        </message>
+        <message>
+            <source>Free travel after the encoder index in an internal reference run, relative to the run: backward leaves the mark again (5.6 bits 0-1)</source>
+            <translation>Freifahren nach dem Encoder-Index bei einer internen Referenzfahrt, bezogen auf die Fahrt: rückwärts verlässt die Marke wieder (5.6 Bits 0-1)</translation>
+        </message>
+        <message>
+            <source>Internal switch, normal run</source>
+            <translation>Interner Schalter, normale Fahrt</translation>
+        </message>
+        <message>
+            <source>stop</source>
+            <translation>Stopp</translation>
+        </message>
+        <message>
+            <source>ignore</source>
+            <translation>ignorieren</translation>
+        </message>
+        <message>
+            <source>What the drive does when it reaches the encoder index during a normal run; useful when the motor must not turn more than one revolution (5.6 bits 2-5)</source>
+            <translation>Verhalten der Steuerung, wenn sie während einer normalen Fahrt den Encoder-Index erreicht; nützlich, wenn der Motor nicht mehr als eine Umdrehung machen darf (5.6 Bits 2-5)</translation>
+        </message>
+        <message>
+            <source>External switch, reference run</source>
+            <translation>Externer Schalter, Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>Free travel after reaching the external switch in an external reference run, relative to the run: backward backs off the switch (5.6 bits 9-10)</source>
+            <translation>Freifahren nach Erreichen des externen Schalters bei einer externen Referenzfahrt, bezogen auf die Fahrt: rückwärts fährt vom Schalter weg (5.6 Bits 9-10)</translation>
+        </message>
+        <message>
+            <source>External switch, normal run</source>
+            <translation>Externer Schalter, normale Fahrt</translation>
+        </message>
+        <message>
+            <source>What the drive does when it reaches the external switch during a normal run; 'stop' limits the travel hard (5.6 bits 11-14)</source>
+            <translation>Verhalten der Steuerung, wenn sie während einer normalen Fahrt den externen Schalter erreicht; 'stop' begrenzt den Weg hart (5.6 Bits 11-14)</translation>
+        </message>
+        <message>
+            <source>Encoder &amp; error correction</source>
+            <translation>Encoder &amp; Fehlerkorrektur</translation>
+        </message>
+        <message>
+            <source>Error correction</source>
+            <translation>Fehlerkorrektur</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <source>after-move</source>
+            <translation>nach der Fahrt</translation>
+        </message>
+        <message>
+            <source>during-move</source>
+            <translation>während der Fahrt</translation>
+        </message>
+        <message>
+            <source>Position check by the encoder. Must be 'off' for motors without an encoder, or the drive keeps correcting. 'during-move' is not implemented by the firmware (5.9)</source>
+            <translation>Positionsprüfung durch den Encoder. Muss bei Motoren ohne Encoder 'off' sein, sonst korrigiert die Steuerung ständig. 'during-move' ist in der Firmware nicht implementiert (5.9)</translation>
+        </message>
+        <message>
+            <source>Correction record</source>
+            <translation>Korrektursatz</translation>
+        </message>
+        <message>
+            <source>Record used for the correction run (5.10)</source>
+            <translation>Für die Korrekturfahrt benutzter Satz (5.10)</translation>
+        </message>
+        <message>
+            <source>Encoder direction</source>
+            <translation>Encoderrichtung</translation>
+        </message>
+        <message>
+            <source>normal</source>
+            <translation>normal</translation>
+        </message>
+        <message>
+            <source>reversed</source>
+            <translation>umgekehrt</translation>
+        </message>
+        <message>
+            <source>Reverses the counting direction of the encoder (5.11)</source>
+            <translation>Kehrt die Zählrichtung des Encoders um (5.11)</translation>
+        </message>
+        <message>
+            <source>Settle time</source>
+            <translation>Einschwingzeit</translation>
+        </message>
+        <message>
+            <source>x10 ms</source>
+            <translation>x10 ms</translation>
+        </message>
+        <message>
+            <source>Wait between the end of a run and the encoder check; the drive reports ready only after it (5.12)</source>
+            <translation>Wartezeit zwischen Fahrtende und Encoderprüfung; die Steuerung meldet erst danach bereit (5.12)</translation>
+        </message>
+        <message>
+            <source>Max encoder deviation</source>
+            <translation>Maximale Encoderabweichung</translation>
+        </message>
+        <message>
+            <source>Allowed difference between demand and encoder position; must be above 0 for step modes finer than 1/10 (1.8 deg) or 1/5 (0.9 deg) (5.13)</source>
+            <translation>Erlaubte Differenz zwischen Soll- und Encoderposition; muss bei Schrittweiten feiner als 1/10 (1,8°) bzw. 1/5 (0,9°) über 0 liegen (5.13)</translation>
+        </message>
+        <message>
+            <source>Inputs &amp; outputs</source>
+            <translation>Ein- &amp; Ausgänge</translation>
+        </message>
+        <message>
+            <source>I/O used by firmware</source>
+            <translation>Von der Firmware benutzte E/A</translation>
+        </message>
+        <message>
+            <source>bitmask</source>
+            <translation>Bitmaske</translation>
+        </message>
+        <message>
+            <source>Bit set: the firmware uses the I/O; clear: free for the user. Bits 0-5 inputs 1-6, 16-17 outputs 1-2. All bits are written at once (5.24)</source>
+            <translation>Bit gesetzt: die Firmware benutzt den Ein-/Ausgang; gelöscht: frei für den Anwender. Bits 0-5 Eingänge 1-6, 16-17 Ausgänge 1-2. Alle Bits werden auf einmal geschrieben (5.24)</translation>
+        </message>
+        <message>
+            <source>I/O polarity</source>
+            <translation>E/A-Polarität</translation>
+        </message>
+        <message>
+            <source>Bit set: normal polarity, clear: inverted. Bits 0-5 inputs 1-6, 16-17 outputs 1-2 (5.25)</source>
+            <translation>Bit gesetzt: normale Polarität, gelöscht: invertiert. Bits 0-5 Eingänge 1-6, 16-17 Ausgänge 1-2 (5.25)</translation>
+        </message>
+        <message>
+            <source>Input interrupts</source>
+            <translation>Eingangs-Interrupts</translation>
+        </message>
+        <message>
+            <source>Interrupt on every edge of inputs 1-6 (bits 0-5); input 6 reacts to one edge only (5.26)</source>
+            <translation>Interrupt bei jeder Flanke der Eingänge 1-6 (Bits 0-5); Eingang 6 reagiert nur auf eine Flanke (5.26)</translation>
+        </message>
+        <message>
+            <source>Interrupts on rising edge</source>
+            <translation>Interrupts bei steigender Flanke</translation>
+        </message>
+        <message>
+            <source>Inputs (bits 0-5) whose interrupt reacts to rising edges (5.27)</source>
+            <translation>Eingänge (Bits 0-5), deren Interrupt auf steigende Flanken reagiert (5.27)</translation>
+        </message>
+        <message>
+            <source>Interrupts on falling edge</source>
+            <translation>Interrupts bei fallender Flanke</translation>
+        </message>
+        <message>
+            <source>Inputs (bits 0-5) whose interrupt reacts to falling edges (5.28)</source>
+            <translation>Eingänge (Bits 0-5), deren Interrupt auf fallende Flanken reagiert (5.28)</translation>
+        </message>
+        <message>
+            <source>Debounce time</source>
+            <translation>Entprellzeit</translation>
+        </message>
+        <message>
+            <source>Wait after an input change until the signal counts as stable (5.29)</source>
+            <translation>Wartezeit nach einer Eingangsänderung, bis das Signal als stabil gilt (5.29)</translation>
+        </message>
+        <message>
+            <source>Outputs</source>
+            <translation>Ausgänge</translation>
+        </message>
+        <message>
+            <source>Output 1 = bit 16 (65536), output 2 = bit 17 (131072); only outputs freed with io-mask follow (5.30)</source>
+            <translation>Ausgang 1 = Bit 16 (65536), Ausgang 2 = Bit 17 (131072); nur mit io-mask freigegebene Ausgänge folgen (5.30)</translation>
+        </message>
+        <message>
+            <source>Input states</source>
+            <translation>Eingangszustände</translation>
+        </message>
+        <message>
+            <source>Inputs 1-6 (bits 0-5); bit 6 is 0 while the encoder is at its index mark (read with ZY, 5.30)</source>
+            <translation>Eingänge 1-6 (Bits 0-5); Bit 6 ist 0, solange der Encoder auf seiner Indexmarke steht (gelesen mit ZY, 5.30)</translation>
+        </message>
+        <message>
+            <source>Record</source>
+            <translation>Satz</translation>
+        </message>
+        <message>
+            <source>Positioning mode</source>
+            <translation>Positionierart</translation>
+        </message>
+        <message>
+            <source>Meaning depends on the motor mode (6.6). Positioning: 1 relative, 2 absolute, 3 internal reference run, 4 external reference run. Speed: 1 speed mode; 2 is not used there and is ignored.</source>
+            <translation>Die Bedeutung hängt vom Motormodus ab (6.6). Positionierung: 1 relativ, 2 absolut, 3 interne Referenzfahrt, 4 externe Referenzfahrt. Drehzahl: 1 Drehzahlmodus; 2 wird dort nicht benutzt und ignoriert.</translation>
+        </message>
+        <message>
+            <source>Travel distance</source>
+            <translation>Verfahrweg</translation>
+        </message>
+        <message>
+            <source>Relative: distance (positive, direction from 'direction'); absolute: target position. Full steps in adaptive mode (6.7)</source>
+            <translation>Relativ: Weg (positiv, Richtung aus 'direction'); absolut: Zielposition. Vollschritte im adaptiven Modus (6.7)</translation>
+        </message>
+        <message>
+            <source>Minimum frequency</source>
+            <translation>Minimalfrequenz</translation>
+        </message>
+        <message>
+            <source>Hz</source>
+            <translation>Hz</translation>
+        </message>
+        <message>
+            <source>Start speed of a run in steps per second (6.8)</source>
+            <translation>Startgeschwindigkeit einer Fahrt in Schritten pro Sekunde (6.8)</translation>
+        </message>
+        <message>
+            <source>Maximum frequency</source>
+            <translation>Maximalfrequenz</translation>
+        </message>
+        <message>
+            <source>Top speed reached after the acceleration ramp, in steps per second (6.9)</source>
+            <translation>Nach der Beschleunigungsrampe erreichte Höchstgeschwindigkeit in Schritten pro Sekunde (6.9)</translation>
+        </message>
+        <message>
+            <source>Maximum frequency 2</source>
+            <translation>Maximalfrequenz 2</translation>
+        </message>
+        <message>
+            <source>Top speed after the trigger in flag positioning mode (6.10)</source>
+            <translation>Höchstgeschwindigkeit nach dem Trigger im Flag-Positioniermodus (6.10)</translation>
+        </message>
+        <message>
+            <source>Ramp</source>
+            <translation>Rampe</translation>
+        </message>
+        <message>
+            <source>Acceleration and braking ramp: acceleration in Hz/ms = 3000 / sqrt(ramp) - 11.7 (6.11)</source>
+            <translation>Beschleunigungs- und Bremsrampe: Beschleunigung in Hz/ms = 3000 / sqrt(Rampe) - 11,7 (6.11)</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>Richtung</translation>
+        </message>
+        <message>
+            <source>left</source>
+            <translation>links</translation>
+        </message>
+        <message>
+            <source>right</source>
+            <translation>rechts</translation>
+        </message>
+        <message>
+            <source>Direction of rotation; 'right' counts positions up (6.12)</source>
+            <translation>Drehrichtung; 'right' zählt die Position aufwärts (6.12)</translation>
+        </message>
+        <message>
+            <source>Reverse on repetition</source>
+            <translation>Richtungsumkehr bei Wiederholung</translation>
+        </message>
+        <message>
+            <source>Reverse the direction on every repetition of the record (6.13)</source>
+            <translation>Richtung bei jeder Wiederholung des Satzes umkehren (6.13)</translation>
+        </message>
+        <message>
+            <source>Repetitions</source>
+            <translation>Wiederholungen</translation>
+        </message>
+        <message>
+            <source>Number of runs of the record; 0 repeats endlessly (6.14)</source>
+            <translation>Anzahl der Durchläufe des Satzes; 0 wiederholt endlos (6.14)</translation>
+        </message>
+        <message>
+            <source>Record pause</source>
+            <translation>Satzpause</translation>
+        </message>
+        <message>
+            <source>Pause between repetitions or before the next record (6.15)</source>
+            <translation>Pause zwischen Wiederholungen oder vor dem Folgesatz (6.15)</translation>
+        </message>
+        <message>
+            <source>Next record</source>
+            <translation>Folgesatz</translation>
+        </message>
+        <message>
+            <source>Record run after this one; 0: none (6.16)</source>
+            <translation>Nach diesem ausgeführter Satz; 0: keiner (6.16)</translation>
+        </message>
+        <message>
+            <source>Analog &amp; joystick</source>
+            <translation>Analog &amp; Joystick</translation>
+        </message>
+        <message>
+            <source>Joystick dead zone</source>
+            <translation>Joystick-Totzone</translation>
+        </message>
+        <message>
+            <source>Range around the middle of the analog input in which the motor stands still in joystick mode (7.1)</source>
+            <translation>Bereich um die Mitte des Analogeingangs, in dem der Motor im Joystickmodus stillsteht (7.1)</translation>
+        </message>
+        <message>
+            <source>Analog filter</source>
+            <translation>Analogfilter</translation>
+        </message>
+        <message>
+            <source>samples</source>
+            <translation>Messwerte</translation>
+        </message>
+        <message>
+            <source>Samples averaged for the analog input in analog and joystick mode (7.2)</source>
+            <translation>Gemittelte Messwerte des Analogeingangs im Analog- und Joystickmodus (7.2)</translation>
+        </message>
+        <message>
+            <source>Analog range start</source>
+            <translation>Anfang des Analogbereichs</translation>
+        </message>
+        <message>
+            <source>x0.1 V</source>
+            <translation>x0,1 V</translation>
+        </message>
+        <message>
+            <source>Start of the analog input range (7.3)</source>
+            <translation>Anfang des Analogeingangsbereichs (7.3)</translation>
+        </message>
+        <message>
+            <source>Analog range end</source>
+            <translation>Ende des Analogbereichs</translation>
+        </message>
+        <message>
+            <source>End of the analog input range (7.4)</source>
+            <translation>Ende des Analogeingangsbereichs (7.4)</translation>
+        </message>
+        <message>
+            <source>Analog input dead zone</source>
+            <translation>Totzone des Analogeingangs</translation>
+        </message>
+        <message>
+            <source>Dead zone of the analog input in percent of the range, joystick mode (7.5)</source>
+            <translation>Totzone des Analogeingangs in Prozent des Bereichs, Joystickmodus (7.5)</translation>
+        </message>
+        <message>
+            <source>Closed loop</source>
+            <translation>Regelung (Closed Loop)</translation>
+        </message>
+        <message>
+            <source>Closed loop enabled</source>
+            <translation>Regelung eingeschaltet</translation>
+        </message>
+        <message>
+            <source>Activates the control loop; only possible after the special reference run (mode 8) since power-on (8.1)</source>
+            <translation>Aktiviert die Regelung; nur nach der speziellen Referenzfahrt (Modus 8) seit dem Einschalten möglich (8.1)</translation>
+        </message>
+        <message>
+            <source>If pole pairs or encoder counts do not match the motor, or no calibration run was made for this motor, the motor can speed up beyond its mechanical limits (manual 8.1).</source>
+            <translation>Passen Polpaare oder Encoderinkremente nicht zum Motor oder wurde für diesen Motor keine Kalibrierfahrt gemacht, kann der Motor über seine mechanischen Grenzen hinaus beschleunigen (Handbuch 8.1).</translation>
+        </message>
+        <message>
+            <source>Position window</source>
+            <translation>Positionsfenster</translation>
+        </message>
+        <message>
+            <source>increments</source>
+            <translation>Inkremente</translation>
+        </message>
+        <message>
+            <source>Tolerance around the target that counts as reached (8.2)</source>
+            <translation>Toleranz um das Ziel, die als erreicht gilt (8.2)</translation>
+        </message>
+        <message>
+            <source>Position window time</source>
+            <translation>Zeit im Positionsfenster</translation>
+        </message>
+        <message>
+            <source>How long the position must stay in the window (8.3)</source>
+            <translation>Wie lange die Position im Fenster bleiben muss (8.3)</translation>
+        </message>
+        <message>
+            <source>Following error window</source>
+            <translation>Schleppfehlerfenster</translation>
+        </message>
+        <message>
+            <source>Largest allowed following error; beyond it a position error switches the loop off (8.4)</source>
+            <translation>Größter erlaubter Schleppfehler; darüber schaltet ein Positionsfehler die Regelung ab (8.4)</translation>
+        </message>
+        <message>
+            <source>Following error time</source>
+            <translation>Schleppfehlerzeit</translation>
+        </message>
+        <message>
+            <source>How long the following error may exceed the window (8.5)</source>
+            <translation>Wie lange der Schleppfehler das Fenster überschreiten darf (8.5)</translation>
+        </message>
+        <message>
+            <source>Motor pole pairs</source>
+            <translation>Polpaare des Motors</translation>
+        </message>
+        <message>
+            <source>50</source>
+            <translation>50</translation>
+        </message>
+        <message>
+            <source>100</source>
+            <translation>100</translation>
+        </message>
+        <message>
+            <source>Quarter of the full steps per revolution; changes step-angle as well (8.6)</source>
+            <translation>Ein Viertel der Vollschritte je Umdrehung; ändert auch step-angle (8.6)</translation>
+        </message>
+        <message>
+            <source>If pole pairs or encoder counts do not match the motor, or no calibration run was made for this motor, the motor can speed up beyond its mechanical limits (manual 8.1). The firmware must be restarted (power off) after a change.</source>
+            <translation>Passen Polpaare oder Encoderinkremente nicht zum Motor oder wurde für diesen Motor keine Kalibrierfahrt gemacht, kann der Motor über seine mechanischen Grenzen hinaus beschleunigen (Handbuch 8.1). Nach einer Änderung muss die Firmware neu gestartet werden (Spannung aus).</translation>
+        </message>
+        <message>
+            <source>Encoder increments</source>
+            <translation>Encoderinkremente</translation>
+        </message>
+        <message>
+            <source>1600</source>
+            <translation>1600</translation>
+        </message>
+        <message>
+            <source>2000</source>
+            <translation>2000</translation>
+        </message>
+        <message>
+            <source>Encoder increments per cl-encoder-revolutions (8.7)</source>
+            <translation>Encoderinkremente je cl-encoder-revolutions (8.7)</translation>
+        </message>
+        <message>
+            <source>Encoder revolutions</source>
+            <translation>Encoderumdrehungen</translation>
+        </message>
+        <message>
+            <source>Shaft revolutions for cl-encoder-increments; always 1 (8.8)</source>
+            <translation>Wellenumdrehungen für cl-encoder-increments; immer 1 (8.8)</translation>
+        </message>
+        <message>
+            <source>Other values stop the control loop from working. The firmware must be restarted (power off) after a change.</source>
+            <translation>Andere Werte setzen die Regelung außer Funktion. Nach einer Änderung muss die Firmware neu gestartet werden (Spannung aus).</translation>
+        </message>
+        <message>
+            <source>Speed loop P numerator</source>
+            <translation>Drehzahlregler P-Zähler</translation>
+        </message>
+        <message>
+            <source>Numerator of the controller term (8.9-8.20)</source>
+            <translation>Zähler des Reglerterms (8.9-8.20)</translation>
+        </message>
+        <message>
+            <source>Speed loop P denominator</source>
+            <translation>Drehzahlregler P-Nenner</translation>
+        </message>
+        <message>
+            <source>2^n</source>
+            <translation>2^n</translation>
+        </message>
+        <message>
+            <source>Denominator of the controller term as a power of two: 0 = 1, 1 = 2, 2 = 4, ... (8.9-8.20)</source>
+            <translation>Nenner des Reglerterms als Zweierpotenz: 0 = 1, 1 = 2, 2 = 4, ... (8.9-8.20)</translation>
+        </message>
+        <message>
+            <source>Speed loop I numerator</source>
+            <translation>Drehzahlregler I-Zähler</translation>
+        </message>
+        <message>
+            <source>Speed loop I denominator</source>
+            <translation>Drehzahlregler I-Nenner</translation>
+        </message>
+        <message>
+            <source>Speed loop D numerator</source>
+            <translation>Drehzahlregler D-Zähler</translation>
+        </message>
+        <message>
+            <source>Speed loop D denominator</source>
+            <translation>Drehzahlregler D-Nenner</translation>
+        </message>
+        <message>
+            <source>Position loop P numerator</source>
+            <translation>Lageregler P-Zähler</translation>
+        </message>
+        <message>
+            <source>Position loop P denominator</source>
+            <translation>Lageregler P-Nenner</translation>
+        </message>
+        <message>
+            <source>Position loop I numerator</source>
+            <translation>Lageregler I-Zähler</translation>
+        </message>
+        <message>
+            <source>Position loop I denominator</source>
+            <translation>Lageregler I-Nenner</translation>
+        </message>
+        <message>
+            <source>Position loop D numerator</source>
+            <translation>Lageregler D-Zähler</translation>
+        </message>
+        <message>
+            <source>Position loop D denominator</source>
+            <translation>Lageregler D-Nenner</translation>
+        </message>
+        <message>
+            <source>Status</source>
+            <translation>Status</translation>
+        </message>
+        <message>
+            <source>Position</source>
+            <translation>Position</translation>
+        </message>
+        <message>
+            <source>Position in steps of the current step mode, relative to the last reference (5.17)</source>
+            <translation>Position in Schritten der aktuellen Schrittweite, bezogen auf die letzte Referenz (5.17)</translation>
+        </message>
+        <message>
+            <source>Encoder position</source>
+            <translation>Encoderposition</translation>
+        </message>
+        <message>
+            <source>Position according to the encoder (5.16)</source>
+            <translation>Position laut Encoder (5.16)</translation>
+        </message>
+        <message>
+            <source>Bit 0 ready, 1 zero position reached, 2 position error, 3 input 1 set while ready, 4-6 mode (5.21)</source>
+            <translation>Bit 0 bereit, 1 Nullposition erreicht, 2 Positionsfehler, 3 Eingang 1 gesetzt, obwohl bereit, 4-6 Modus (5.21)</translation>
+        </message>
+        <message>
+            <source>Bus address</source>
+            <translation>Busadresse</translation>
+        </message>
+        <message>
+            <source>The address the drive answers at (5.20)</source>
+            <translation>Die Adresse, unter der die Steuerung antwortet (5.20)</translation>
+        </message>
+        <message>
+            <source>Last error</source>
+            <translation>Letzter Fehler</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
+        </message>
+        <message>
+            <source>low-voltage</source>
+            <translation>Unterspannung</translation>
+        </message>
+        <message>
+            <source>over-temperature</source>
+            <translation>Übertemperatur</translation>
+        </message>
+        <message>
+            <source>driver</source>
+            <translation>Treiber</translation>
+        </message>
+        <message>
+            <source>eeprom</source>
+            <translation>EEPROM</translation>
+        </message>
+        <message>
+            <source>position</source>
+            <translation>Position</translation>
+        </message>
+        <message>
+            <source>internal</source>
+            <translation>intern</translation>
+        </message>
+        <message>
+            <source>Most recent entry of the error memory (5.15)</source>
+            <translation>Jüngster Eintrag des Fehlerspeichers (5.15)</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -1618,6 +2410,80 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::DrivePanel</name>
+        <message>
+            <source>Address</source>
+            <translation>Adresse</translation>
+        </message>
+        <message>
+            <source>Axes</source>
+            <translation>Achsen</translation>
+        </message>
+        <message>
+            <source>Responding</source>
+            <translation>Antwortet</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>Zustand</translation>
+        </message>
+        <message>
+            <source>Hardware</source>
+            <translation>Hardware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Scan bus</source>
+            <translation>Bus durchsuchen</translation>
+        </message>
+        <message>
+            <source>Ask every address 1..254 for its firmware (a few seconds); the drives of this machine keep their status meanwhile</source>
+            <translation>Jede Adresse 1..254 nach ihrer Firmware fragen (einige Sekunden); die Antriebe dieser Maschine behalten währenddessen ihren Status</translation>
+        </message>
+        <message>
+            <source>Drives of this machine</source>
+            <translation>Antriebe dieser Maschine</translation>
+        </message>
+        <message>
+            <source>Scanning addresses 1..254…</source>
+            <translation>Durchsuche Adressen 1..254…</translation>
+        </message>
+        <message>
+            <source>Scanning addresses %1..%2…</source>
+            <translation>Durchsuche Adressen %1..%2…</translation>
+        </message>
+        <message>
+            <source>Scan failed: %1</source>
+            <translation>Suche fehlgeschlagen: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n drive(s) found</source>
+            <translation>
+                <numerusform>%n Antrieb gefunden</numerusform>
+                <numerusform>%n Antriebe gefunden</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>✔ yes</source>
+            <translation>✔ ja</translation>
+        </message>
+        <message>
+            <source>✖ NOT RESPONDING</source>
+            <translation>✖ ANTWORTET NICHT</translation>
+        </message>
+        <message>
+            <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
+            <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::GamepadJogSource</name>
         <message>
             <source>Gamepad</source>
@@ -2053,6 +2919,14 @@
             <source>Referencing stopped.</source>
             <translation>Referenzfahrt gestoppt.</translation>
         </message>
+        <message>
+            <source>Drives</source>
+            <translation>Antriebe</translation>
+        </message>
+        <message>
+            <source>Records</source>
+            <translation>Sätze</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ParameterField</name>
@@ -2156,6 +3030,128 @@
         <message>
             <source>Not implemented by the firmware: always off.</source>
             <translation>Von der Firmware nicht implementiert: immer aus.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::RecordsPage</name>
+        <message>
+            <source>Drive:</source>
+            <translation>Antrieb:</translation>
+        </message>
+        <message>
+            <source>Record:</source>
+            <translation>Satz:</translation>
+        </message>
+        <message>
+            <source>Read all</source>
+            <translation>Alle lesen</translation>
+        </message>
+        <message>
+            <source>Read records 1..32 from the drive's EEPROM ('Z&lt;n&gt;|', 6.4)</source>
+            <translation>Sätze 1..32 aus dem EEPROM des Antriebs lesen ('Z&lt;n&gt;|', 6.4)</translation>
+        </message>
+        <message>
+            <source>Write record</source>
+            <translation>Satz schreiben</translation>
+        </message>
+        <message>
+            <source>Write the selected row into the record, store it and read it back (6.5)</source>
+            <translation>Die gewählte Zeile in den Satz schreiben, speichern und zurücklesen (6.5)</translation>
+        </message>
+        <message>
+            <source>Save to EEPROM</source>
+            <translation>Im EEPROM speichern</translation>
+        </message>
+        <message>
+            <source>Store the drive's current settings (RAM) as the selected record ('&gt;', 6.5)</source>
+            <translation>Die aktuellen Einstellungen des Antriebs (RAM) als gewählten Satz speichern ('&gt;', 6.5)</translation>
+        </message>
+        <message>
+            <source>Load record</source>
+            <translation>Satz laden</translation>
+        </message>
+        <message>
+            <source>Load the selected record into the drive's current settings ('y', 6.3)</source>
+            <translation>Den gewählten Satz in die aktuellen Einstellungen des Antriebs laden ('y', 6.3)</translation>
+        </message>
+        <message>
+            <source>Error memory</source>
+            <translation>Fehlerspeicher</translation>
+        </message>
+        <message>
+            <source>Read error memory</source>
+            <translation>Fehlerspeicher lesen</translation>
+        </message>
+        <message>
+            <source>Slot</source>
+            <translation>Platz</translation>
+        </message>
+        <message>
+            <source>Code</source>
+            <translation>Code</translation>
+        </message>
+        <message>
+            <source>Error</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>Meaning</source>
+            <translation>Bedeutung</translation>
+        </message>
+        <message>
+            <source>Axis %1</source>
+            <translation>Achse %1</translation>
+        </message>
+        <message>
+            <source>Reading records 1..%1 of axis %2…</source>
+            <translation>Lese Sätze 1..%1 der Achse %2…</translation>
+        </message>
+        <message>
+            <source>Read the records first: there is nothing to write for record %1.</source>
+            <translation>Zuerst die Sätze lesen: für Satz %1 gibt es nichts zu schreiben.</translation>
+        </message>
+        <message>
+            <source>Writing record %1…</source>
+            <translation>Schreibe Satz %1…</translation>
+        </message>
+        <message>
+            <source>Saving the current settings as record %1…</source>
+            <translation>Speichere die aktuellen Einstellungen als Satz %1…</translation>
+        </message>
+        <message>
+            <source>Loading record %1…</source>
+            <translation>Lade Satz %1…</translation>
+        </message>
+        <message>
+            <source>Reading the error memory…</source>
+            <translation>Lese den Fehlerspeicher…</translation>
+        </message>
+        <message>
+            <source>Failed: %1</source>
+            <translation>Fehlgeschlagen: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) read.</source>
+            <translation>
+                <numerusform>%n Satz gelesen.</numerusform>
+                <numerusform>%n Sätze gelesen.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Record %1 written, saved and verified.</source>
+            <translation>Satz %1 geschrieben, gespeichert und geprüft.</translation>
+        </message>
+        <message>
+            <source>Current settings saved as record %1.</source>
+            <translation>Aktuelle Einstellungen als Satz %1 gespeichert.</translation>
+        </message>
+        <message>
+            <source>Record %1 loaded into the drive's current settings.</source>
+            <translation>Satz %1 in die aktuellen Einstellungen des Antriebs geladen.</translation>
+        </message>
+        <message>
+            <source>Last entry: slot %1</source>
+            <translation>Letzter Eintrag: Platz %1</translation>
         </message>
     </context>
     <context>

@@ -12,12 +12,32 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::DrivePanel</name>
+        <message numerus="yes">
+            <source>%n drive(s) found</source>
+            <translation>
+                <numerusform>%n drive found</numerusform>
+                <numerusform>%n drives found</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>
         <message numerus="yes">
             <source>%n step(s)</source>
             <translation>
                 <numerusform>%n step</numerusform>
                 <numerusform>%n steps</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::RecordsPage</name>
+        <message numerus="yes">
+            <source>%n record(s) read.</source>
+            <translation>
+                <numerusform>%n record read.</numerusform>
+                <numerusform>%n records read.</numerusform>
             </translation>
         </message>
     </context>
