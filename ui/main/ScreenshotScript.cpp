@@ -1,15 +1,18 @@
 #include "ScreenshotScript.h"
+#include "drives/DrivePanel.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "main/MachineContext.h"
 #include "main/MainWindow.h"
 #include "position/ReferencePanel.h"
+#include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
 #include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
 #include <QMouseEvent>
+#include <QTableWidget>
 #include <QTextStream>
 
 namespace stepdeck::ui {
@@ -71,19 +74,42 @@ void ScreenshotScript::start()
                 return all;
             };
             waitFor(referenced, 40000, [=] {
-                // A diagonal drag on the pad, as the operator would, so the pad, the
-                // velocities and the charts show motion.
-                JoystickPad* pad = m_window->jogPanel()->xyPad();
-                drag(pad, QEvent::MouseButtonPress, pad->centre());
-                drag(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.75, 0.5)));
-                waitFor(never, 2500, [=] {
-                    const bool ok = capture();
-                    drag(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(0.75, 0.5)));
-                    waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
+                fillModelPages([=] {
+                    // A diagonal drag on the pad, as the operator would, so the pad, the
+                    // velocities and the charts show motion.
+                    JoystickPad* pad = m_window->jogPanel()->xyPad();
+                    drag(pad, QEvent::MouseButtonPress, pad->centre());
+                    drag(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.75, 0.5)));
+                    waitFor(never, 2500, [=] {
+                        const bool ok = capture();
+                        drag(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(0.75, 0.5)));
+                        waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
+                    });
                 });
             });
         });
     });
+}
+
+void ScreenshotScript::fillModelPages(std::function<void()> next)
+{
+    const Capabilities caps = m_window->context()->capabilities();
+    RecordsPage* records = m_window->recordsPage();
+    DrivePanel* drives = m_window->drivePanel();
+    auto scan = [=] {
+        if (!caps.multiDrive)
+            return next();
+        drives->scanRange(1, 5); // the simulated bus; a full scan takes seconds
+        waitFor([drives] { return drives->foundTable()->rowCount() > 0; }, 10000, next);
+    };
+    if (!caps.records)
+        return scan();
+    records->readAll();
+    waitFor([records] { return !records->busy(); }, 20000,
+            [=] {
+                records->readErrorMemory();
+                waitFor([records] { return !records->busy(); }, 10000, scan);
+            });
 }
 
 bool ScreenshotScript::capture()

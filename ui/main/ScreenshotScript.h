@@ -24,6 +24,8 @@ private:
     void step();
     void waitFor(std::function<bool()> condition, int timeoutMs, std::function<void()> next);
     bool capture();
+    // Fills the model-specific pages (records, error memory, bus scan), then calls next.
+    void fillModelPages(std::function<void()> next);
 
     MainWindow* m_window;
     QString m_directory;
