@@ -3033,6 +3033,17 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::RecordDelegate</name>
+        <message>
+            <source>yes</source>
+            <translation>ja</translation>
+        </message>
+        <message>
+            <source>no</source>
+            <translation>nein</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::RecordsPage</name>
         <message>
             <source>Drive:</source>

@@ -1,4 +1,5 @@
 #include "RecordsPage.h"
+#include "RecordDelegate.h"
 #include "main/MachineContext.h"
 #include <QComboBox>
 #include <QCoreApplication>
@@ -28,8 +29,8 @@ QTableWidgetItem* readOnlyCell(const QVariant& value)
 RecordsPage::RecordsPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_axis(new QComboBox(this)),
       m_record(new QSpinBox(this)), m_table(new QTableWidget(kRecords, 0, this)),
-      m_errors(new QTableWidget(0, 4, this)), m_state(new QLabel(this)),
-      m_lastError(new QLabel(this))
+      m_errors(new QTableWidget(0, 4, this)), m_delegate(new RecordDelegate(this)),
+      m_state(new QLabel(this)), m_lastError(new QLabel(this))
 {
     m_axis->setObjectName(QStringLiteral("recordAxis"));
     m_record->setObjectName(QStringLiteral("recordNumber"));
@@ -78,6 +79,7 @@ RecordsPage::RecordsPage(MachineContext* context, QWidget* parent)
     m_errors->horizontalHeader()->setStretchLastSection(true);
     m_errors->setEditTriggers(QAbstractItemView::NoEditTriggers);
 
+    m_table->setItemDelegate(m_delegate);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     QStringList rows;
@@ -259,6 +261,12 @@ void RecordsPage::onRecords(const QVariantList& records)
         if (!ordered.contains(c))
             ordered << c;
     m_columns = ordered;
+    QList<ParameterSpec> specs;
+    for (const QString& c : std::as_const(m_columns)) {
+        const ParameterSpec* spec = schema.find(c);
+        specs << (spec ? *spec : ParameterSpec{});
+    }
+    m_delegate->setColumns(specs);
     m_table->clearContents();
     m_table->setColumnCount(int(m_columns.size()));
     QStringList titles;

@@ -11,6 +11,7 @@ class QTableWidget;
 namespace stepdeck::ui {
 
 class MachineContext;
+class RecordDelegate;
 
 // The technician's page for a drive's stored records (Nanotec section 4, 6.3-6.5) and its
 // error memory (5.15), all through the model's operations ("read-all-records", "write-record",
@@ -56,6 +57,7 @@ private:
     QSpinBox* m_record;
     QTableWidget* m_table;
     QTableWidget* m_errors;
+    RecordDelegate* m_delegate;
     QLabel* m_state;
     QLabel* m_lastError;
     QList<QPushButton*> m_buttons;

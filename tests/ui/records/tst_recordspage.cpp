@@ -21,6 +21,7 @@ private Q_SLOTS:
     void readAll_fills32Records();
     void writeRecord_editedValueStored();
     void errorMemory_decoded();
+    void choiceCell_editedFromSchemaChoices();
 
 private:
     ui::RecordsPage* page() const { return m_f->window->recordsPage(); }
@@ -80,6 +81,33 @@ void TestRecordsPage::errorMemory_decoded()
              qPrintable(page()->stateText()));
     QVERIFY(page()->errorTable()->rowCount() > 0);
     QVERIFY(!page()->errorTable()->item(0, 2)->text().isEmpty()); // decoded name
+}
+
+void TestRecordsPage::choiceCell_editedFromSchemaChoices()
+{
+    page()->readAll();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    const int col = int(page()->columns().indexOf(QStringLiteral("direction")));
+    QVERIFY(col >= 0);
+    QTableWidget* table = page()->recordTable();
+    const QModelIndex index = table->model()->index(2, col);
+    QAbstractItemDelegate* delegate = table->itemDelegate();
+    std::unique_ptr<QWidget> editor(delegate->createEditor(table, {}, index));
+    auto* combo = qobject_cast<QComboBox*>(editor.get());
+    QVERIFY(combo);
+    QCOMPARE(combo->count(), 2); // left, right (6.12)
+    combo->setCurrentIndex(combo->findData(QStringLiteral("right")));
+    delegate->setModelData(combo, table->model(), index);
+    QCOMPARE(index.data(Qt::EditRole).toString(), QStringLiteral("right"));
+
+    page()->recordSpin()->setValue(3);
+    page()->writeRecord();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QVERIFY2(page()->stateText().contains(QStringLiteral("verified")),
+             qPrintable(page()->stateText()));
+    page()->readAll();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QCOMPARE(table->item(2, col)->data(Qt::EditRole).toString(), QStringLiteral("right"));
 }
 
 QTEST_MAIN(TestRecordsPage)
