@@ -52,7 +52,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     ControllerSession* session = m_context->session();
     connect(session, &ControllerSession::statusChanged, this, &DrivePanel::onStatus);
     connect(session, &ControllerSession::requestFinished, this, &DrivePanel::onResult);
-    connect(session, &ControllerSession::linkStateChanged, this, &DrivePanel::updateEnabled);
+    connect(session, &ControllerSession::linkStateChanged, this, &DrivePanel::onLinkState);
     connect(m_scan, &QPushButton::clicked, this, &DrivePanel::scanBus);
     updateEnabled();
 }
@@ -110,6 +110,8 @@ void DrivePanel::showFound(const QVariantList& drives)
 
 void DrivePanel::onStatus(const MachineStatus& status)
 {
+    if (!m_context->isConnected())
+        return; // a last status queued behind the disconnect
     m_drives->setRowCount(int(status.drives.size()));
     m_silent = 0;
     for (int r = 0; r < status.drives.size(); ++r) {
@@ -134,6 +136,16 @@ void DrivePanel::onStatus(const MachineStatus& status)
         m_drives->setItem(r, Detail, cell(d.detail));
     }
     m_drives->resizeColumnsToContents();
+}
+
+void DrivePanel::onLinkState(LinkState state)
+{
+    // Without a link the last answers say nothing about the drives any more.
+    if (state == LinkState::Disconnected) {
+        m_drives->setRowCount(0);
+        m_silent = 0;
+    }
+    updateEnabled();
 }
 
 void DrivePanel::updateEnabled()

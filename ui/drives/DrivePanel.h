@@ -1,4 +1,5 @@
 #pragma once
+#include "controller/Controller.h"
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
@@ -39,6 +40,7 @@ private:
     void onStatus(const MachineStatus& status);
     void onResult(const CommandResult& result);
     void showFound(const QVariantList& drives);
+    void onLinkState(LinkState state);
     void updateEnabled();
 
     MachineContext* m_context;

@@ -21,6 +21,7 @@ private Q_SLOTS:
     void driveList_showsThreeDrivesWithAxes();
     void driveList_silentDriveMarkedRed();
     void scan_listsDrivesOnTheBus();
+    void disconnect_clearsDriveList();
     void dock_hiddenForSingleBoardModel();
 
 private:
@@ -78,6 +79,14 @@ void TestDrivePanel::scan_listsDrivesOnTheBus()
              QStringLiteral("2"));
     QVERIFY(!panel()->foundTable()->item(0, ui::DrivePanel::FoundFirmware)->text().isEmpty());
     QTRY_VERIFY(panel()->scanButton()->isEnabled());
+}
+
+void TestDrivePanel::disconnect_clearsDriveList()
+{
+    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    m_f->window->context()->disconnectFromController();
+    QTRY_COMPARE(panel()->driveTable()->rowCount(), 0);
+    QVERIFY(!panel()->scanButton()->isEnabled());
 }
 
 void TestDrivePanel::dock_hiddenForSingleBoardModel()
