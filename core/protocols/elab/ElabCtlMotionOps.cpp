@@ -122,15 +122,26 @@ void ElabCtlMotionOps::correctPositions(const AxisVector& stopped)
     m_line.submit(std::move(etx), true);
 }
 
-void ElabCtlMotionOps::moveRelative(RequestId id, const AxisVector& steps)
+std::optional<AxisVector> ElabCtlMotionOps::stepsToSend(RequestId id, const AxisVector& steps)
 {
+    // Signed 32-bit step counts (manual: "Die Werte sind 32bit Integer"); an all-zero move has
+    // nothing to send and succeeds at once.
     if (!checkAxes(id, steps, kInt32Min, kInt32Max, tr("step count")))
-        return;
+        return std::nullopt;
     const AxisVector move = nonZero(steps);
     if (move.isEmpty()) {
         m_line.hooks().ok(id, {});
-        return;
+        return std::nullopt;
     }
+    return move;
+}
+
+void ElabCtlMotionOps::moveRelative(RequestId id, const AxisVector& steps)
+{
+    const std::optional<AxisVector> checked = stepsToSend(id, steps);
+    if (!checked)
+        return;
+    const AxisVector& move = *checked;
     // The narrowest command: SetFastMoveZ <BS>, SetFastMoveXY <FF>, else SetFastMoveXYZ <EOT>.
     QByteArray frame;
     if (!move.contains(Axis::X) && !move.contains(Axis::Y))
@@ -149,13 +160,10 @@ void ElabCtlMotionOps::moveRelative(RequestId id, const AxisVector& steps)
 
 void ElabCtlMotionOps::feed(RequestId id, const AxisVector& steps)
 {
-    if (!checkAxes(id, steps, kInt32Min, kInt32Max, tr("step count")))
+    const std::optional<AxisVector> checked = stepsToSend(id, steps);
+    if (!checked)
         return;
-    const AxisVector move = nonZero(steps);
-    if (move.isEmpty()) {
-        m_line.hooks().ok(id, {});
-        return;
-    }
+    const AxisVector& move = *checked;
     if (move.size() > 1) {
         startStream(id, {}, triple<qint64>(move));
         return;

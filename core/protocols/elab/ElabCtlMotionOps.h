@@ -3,6 +3,7 @@
 #include "ElabCtlMotion.h"
 #include "ElabCtlStream.h"
 #include <QVector>
+#include <optional>
 
 namespace stepdeck::elab {
 
@@ -56,6 +57,8 @@ private:
     void pumpStream();
     void endStream(RequestId id);
     void correctPositions(const AxisVector& stopped);
+    // Validated non-zero steps, or nullopt when the request is already finished.
+    std::optional<AxisVector> stepsToSend(RequestId id, const AxisVector& steps);
     bool checkAxes(RequestId id, const AxisVector& values, qint64 minimum, qint64 maximum,
                    const QString& what);
 
