@@ -27,11 +27,11 @@ struct Capabilities
     bool positionReadback = false; // the device reports absolute positions
     bool rampedStop = false;
     bool panic = true;
-    bool resetLine = false;      // hardware reset via a modem line (E-LAB: RTS)
-    bool multiDrive = false;     // several addressed drives on one link (Nanotec)
-    bool records = false;        // stored records and error memory as model operations (Nanotec)
-    bool hostRampedJog = false;  // the host must ramp jog rates itself (E-LAB manual, jog mode)
-    double maxJogSpeed = 1000;   // steps/s, the ceiling a jog source may request
+    bool resetLine = false;     // hardware reset via a modem line (E-LAB: RTS)
+    bool multiDrive = false;    // several addressed drives on one link (Nanotec)
+    bool records = false;       // stored records and error memory as model operations (Nanotec)
+    bool hostRampedJog = false; // the host must ramp jog rates itself (E-LAB manual, jog mode)
+    double maxJogSpeed = 1000;  // steps/s, the ceiling a jog source may request
     double defaultJogAcceleration = 2000; // steps/s^2 for the host-side JogRamp
 
     bool has(MotionMode mode) const { return motionModes.contains(mode); }
