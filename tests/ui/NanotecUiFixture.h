@@ -24,16 +24,7 @@ public:
 
     bool withBus(std::function<void(nanotec::NanotecSimulator*)> fn)
     {
-        auto done = std::make_shared<std::atomic_bool>(false);
-        session->withSimulator([fn, done](Simulator* s) {
-            fn(static_cast<nanotec::NanotecSimulator*>(s));
-            *done = true;
-        });
-        QElapsedTimer t;
-        t.start();
-        while (!*done && t.elapsed() < 5000)
-            QTest::qWait(5);
-        return *done;
+        return withSimulatorAs<nanotec::NanotecSimulator>(std::move(fn));
     }
 };
 

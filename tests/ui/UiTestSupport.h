@@ -74,12 +74,13 @@ public:
         return session->writeParameters(set, false);
     }
 
-    // Runs fn on the simulator in the controller thread and waits until it ran.
-    bool withSim(std::function<void(elab::ElabSimulator*)> fn)
+    // Runs fn on the in-process simulator (of type Sim) in the controller thread and waits,
+    // running the event loop, until it ran.
+    template <typename Sim> bool withSimulatorAs(std::function<void(Sim*)> fn)
     {
         auto done = std::make_shared<std::atomic_bool>(false);
         session->withSimulator([fn, done](Simulator* s) {
-            fn(static_cast<elab::ElabSimulator*>(s));
+            fn(static_cast<Sim*>(s));
             *done = true;
         });
         QElapsedTimer t;
@@ -87,6 +88,11 @@ public:
         while (!*done && t.elapsed() < 5000)
             QTest::qWait(5);
         return *done;
+    }
+
+    bool withSim(std::function<void(elab::ElabSimulator*)> fn)
+    {
+        return withSimulatorAs<elab::ElabSimulator>(std::move(fn));
     }
 
     // Host -> device bytes of everything recorded since `from` (poll traffic excluded).
