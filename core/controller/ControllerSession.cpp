@@ -160,58 +160,117 @@ void ControllerSession::post(std::function<void(Controller*)> fn, bool urgent)
                                 urgent ? Qt::HighEventPriority : Qt::NormalEventPriority);
 }
 
-#define STEPDECK_POST(call, urgent)                                                                \
-    const RequestId id = nextId();                                                                 \
-    if (!m_controller) {                                                                           \
-        Q_EMIT requestFinished(                                                                    \
-            CommandResult::failure(id, ErrorKind::LinkDown, tr("no controller session")));         \
-        return id;                                                                                 \
-    }                                                                                              \
-    post([=](Controller* c) { c->call; }, urgent);                                                 \
+RequestId ControllerSession::submit(std::function<void(Controller*, RequestId)> call, bool urgent)
+{
+    const RequestId id = nextId();
+    if (!m_controller) {
+        Q_EMIT requestFinished(
+            CommandResult::failure(id, ErrorKind::LinkDown, tr("no controller session")));
+        return id;
+    }
+    post([call, id](Controller* c) { call(c, id); }, urgent);
     return id;
+}
 
 RequestId ControllerSession::open()
 {
-    STEPDECK_POST(openLink(id), false)
+    return submit([](Controller* c, RequestId id) { c->openLink(id); });
 }
+
 void ControllerSession::close()
 {
     post([](Controller* c) { c->closeLink(); }, true);
 }
-RequestId ControllerSession::readParameters(const QStringList& names){
-    STEPDECK_POST(readParameters(id, names),
-                  false)} RequestId ControllerSession::writeParameters(const ParameterSet& values,
-                                                                       bool verify){
-    STEPDECK_POST(writeParameters(id, values, verify),
-                  false)} RequestId ControllerSession::moveRelative(const AxisVector& steps){
-    STEPDECK_POST(moveRelative(id, steps),
-                  false)} RequestId ControllerSession::moveAbsolute(const AxisVector& targets){
-    STEPDECK_POST(moveAbsolute(id, targets),
-                  false)} RequestId ControllerSession::feed(const AxisVector& steps){
-    STEPDECK_POST(feed(id, steps),
-                  false)} RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps){
-    STEPDECK_POST(feedStream(id, steps),
-                  false)} RequestId ControllerSession::reference(const QMap<Axis, int>& directions){
-    STEPDECK_POST(reference(id, directions),
-                  false)} RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS){
-    STEPDECK_POST(velocityMove(id, stepsPerS), false)} RequestId ControllerSession::stop(){
-    STEPDECK_POST(stop(id), true)} RequestId ControllerSession::panic(){
-    STEPDECK_POST(panic(id), true)} RequestId ControllerSession::reset(){
-    STEPDECK_POST(reset(id), true)} RequestId ControllerSession::setSpindle(int rpm){
-    STEPDECK_POST(setSpindle(id, rpm), false)} RequestId ControllerSession::setCoolant(bool on){
-    STEPDECK_POST(setCoolant(id, on),
-                  false)} RequestId ControllerSession::setDrivePower(int percent){
-    STEPDECK_POST(setDrivePower(id, percent), false)} RequestId ControllerSession::refreshStatus(){
-    STEPDECK_POST(refreshStatus(id), false)} RequestId
-    ControllerSession::sendRaw(const QByteArray& bytes){STEPDECK_POST(sendRaw(id, bytes), false)}
 
-RequestId ControllerSession::scanBus(){STEPDECK_POST(scanBus(id), false)} RequestId
-    ControllerSession::modelOperation(const QString& name, const QVariantMap& args)
+RequestId ControllerSession::readParameters(const QStringList& names)
 {
-    STEPDECK_POST(modelOperation(id, name, args), false)
+    return submit([=](Controller* c, RequestId id) { c->readParameters(id, names); });
 }
 
-#undef STEPDECK_POST
+RequestId ControllerSession::writeParameters(const ParameterSet& values, bool verify)
+{
+    return submit([=](Controller* c, RequestId id) { c->writeParameters(id, values, verify); });
+}
+
+RequestId ControllerSession::moveRelative(const AxisVector& steps)
+{
+    return submit([=](Controller* c, RequestId id) { c->moveRelative(id, steps); });
+}
+
+RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
+{
+    return submit([=](Controller* c, RequestId id) { c->moveAbsolute(id, targets); });
+}
+
+RequestId ControllerSession::feed(const AxisVector& steps)
+{
+    return submit([=](Controller* c, RequestId id) { c->feed(id, steps); });
+}
+
+RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
+{
+    return submit([=](Controller* c, RequestId id) { c->feedStream(id, steps); });
+}
+
+RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
+{
+    return submit([=](Controller* c, RequestId id) { c->reference(id, directions); });
+}
+
+RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS)
+{
+    return submit([=](Controller* c, RequestId id) { c->velocityMove(id, stepsPerS); });
+}
+
+RequestId ControllerSession::stop()
+{
+    return submit([](Controller* c, RequestId id) { c->stop(id); }, true);
+}
+
+RequestId ControllerSession::panic()
+{
+    return submit([](Controller* c, RequestId id) { c->panic(id); }, true);
+}
+
+RequestId ControllerSession::reset()
+{
+    return submit([](Controller* c, RequestId id) { c->reset(id); }, true);
+}
+
+RequestId ControllerSession::setSpindle(int rpm)
+{
+    return submit([=](Controller* c, RequestId id) { c->setSpindle(id, rpm); });
+}
+
+RequestId ControllerSession::setCoolant(bool on)
+{
+    return submit([=](Controller* c, RequestId id) { c->setCoolant(id, on); });
+}
+
+RequestId ControllerSession::setDrivePower(int percent)
+{
+    return submit([=](Controller* c, RequestId id) { c->setDrivePower(id, percent); });
+}
+
+RequestId ControllerSession::refreshStatus()
+{
+    return submit([](Controller* c, RequestId id) { c->refreshStatus(id); });
+}
+
+RequestId ControllerSession::sendRaw(const QByteArray& bytes)
+{
+    return submit([=](Controller* c, RequestId id) { c->sendRaw(id, bytes); });
+}
+
+RequestId ControllerSession::scanBus()
+{
+    return submit([](Controller* c, RequestId id) { c->scanBus(id); });
+}
+
+RequestId ControllerSession::modelOperation(const QString& name, const QVariantMap& args)
+{
+    return submit([=](Controller* c, RequestId id) { c->modelOperation(id, name, args); });
+}
 
 void ControllerSession::setPollInterval(int ms)
 {

@@ -82,6 +82,8 @@ Q_SIGNALS:
 private:
     RequestId nextId() { return ++m_lastId; }
     void post(std::function<void(Controller*)> fn, bool urgent = false);
+    // Posts call with a fresh request id; without a controller the id finishes as LinkDown.
+    RequestId submit(std::function<void(Controller*, RequestId)> call, bool urgent = false);
 
     ConnectionSpec m_spec;
     const ModelInfo* m_model = nullptr;
