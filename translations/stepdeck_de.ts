@@ -1010,13 +1010,6 @@
         </message>
     </context>
     <context>
-        <name>stepdeck</name>
-        <message>
-            <source>no controller session</source>
-            <translation>keine Steuerungssitzung</translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::Controller</name>
         <message>
             <source>this machine has no axis %1</source>
@@ -1069,6 +1062,10 @@
         <message>
             <source>jog refused: emergency stop is active</source>
             <translation>Tippbetrieb abgelehnt: Not-Aus ist aktiv</translation>
+        </message>
+        <message>
+            <source>this controller has no stop command: use the machine's emergency stop to stop it; motion only ends when the current move arrives</source>
+            <translation>diese Steuerung hat keinen Stopp-Befehl: zum Anhalten den Not-Halt der Maschine benutzen; eine Bewegung endet erst, wenn die laufende Fahrt ihr Ziel erreicht</translation>
         </message>
     </context>
     <context>

@@ -40,6 +40,17 @@ Controller::Controller(Transport* transport, const ControllerOptions& options, Q
 
 Controller::~Controller() = default;
 
+QString Controller::noStopCommandText()
+{
+    return tr("this controller has no stop command: use the machine's emergency stop to stop "
+              "it; motion only ends when the current move arrives");
+}
+
+void Controller::refuseNoStopCommand(RequestId id)
+{
+    finishError(id, ErrorKind::Unsupported, noStopCommandText());
+}
+
 void Controller::moveAbsolute(RequestId id, const AxisVector& targets)
 {
     AxisVector relative;

@@ -34,6 +34,9 @@ public:
     virtual Capabilities capabilities() const = 0;
     virtual ParameterSchema schema() const = 0;
 
+    // What the operator reads when the model has no stop command (Capabilities::stopCommand).
+    static QString noStopCommandText();
+
     LinkState linkState() const { return m_linkState; }
     const MachineStatus& status() const { return m_status; }
     Transport* transport() const { return m_transport; }
@@ -113,6 +116,8 @@ protected:
     // Link lost or panic: rates to zero at once, without sending anything.
     void haltJogImmediately();
     void finish(const CommandResult& result) { Q_EMIT requestFinished(result); }
+    // stop()/panic() of a model without a stop command: Unsupported, noStopCommandText().
+    void refuseNoStopCommand(RequestId id);
     void finishOk(RequestId id, const QVariant& value = {});
     void finishError(RequestId id, ErrorKind kind, const QString& message);
     void recordTraffic(TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);

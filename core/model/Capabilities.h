@@ -26,6 +26,10 @@ struct Capabilities
     bool startButton = false;
     bool positionReadback = false; // the device reports absolute positions
     bool rampedStop = false;
+    // false: the protocol documents no stop command at all (EMIS SMC-IC4, laser motor axes).
+    // stop and panic are then refused Unsupported with Controller::noStopCommandText(), the GUI
+    // says so permanently next to STOP/PANIC, and jog is built so that every chunk ends by itself.
+    bool stopCommand = true;
     bool panic = true;
     bool resetLine = false;     // hardware reset via a modem line (E-LAB: RTS)
     bool multiDrive = false;    // several addressed drives on one link (Nanotec)

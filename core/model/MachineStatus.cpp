@@ -29,7 +29,8 @@ QJsonObject MachineStatus::toJson(const QString& modelId) const
                         {"overTemperature", overTemperature},
                         {"setupIncomplete", setupIncomplete},
                         {"panic", panic},
-                        {"commFault", commFault}};
+                        {"commFault", commFault},
+                        {"motionUnconfirmed", motionUnconfirmed}};
     if (startButton)
         machine.insert("startButton", *startButton);
     QJsonObject axesJson;

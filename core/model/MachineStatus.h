@@ -40,6 +40,10 @@ struct MachineStatus
     bool setupIncomplete = false;
     bool panic = false;     // emergency stop active (button or host panic not yet cleared)
     bool commFault = false; // link lost or replies missing
+    // The host stopped tracking a motion without the device confirming standstill (link lost,
+    // stop not acknowledged, a model without a stop command): the machine may still be moving.
+    // Cleared only by a status read from the device that shows every axis standing still.
+    bool motionUnconfirmed = false;
     std::optional<bool> startButton;
     std::optional<double> temperatureCelsius;
     QMap<Axis, AxisStatus> axes;
