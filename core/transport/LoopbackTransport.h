@@ -15,6 +15,7 @@ public:
     // Creates two connected ends.
     static std::pair<LoopbackTransport*, LoopbackTransport*> createPair(QObject* parent = nullptr);
     void setPeer(LoopbackTransport* peer) { m_peer = peer; }
+    LoopbackTransport* peer() const { return m_peer; }
 
     void open(const LineSettings& settings) override;
     void close() override;

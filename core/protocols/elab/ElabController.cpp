@@ -27,6 +27,7 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
     s.drives = {DriveStatus{0, ElabCtlStatusMapper::axes(), true, {}, {}}};
 
     m_queue.setTimeoutMs(options.commandTimeoutMs);
+    m_queue.setCharacterTimeUs(elab::lineSettings().characterTimeUs());
     m_poller.setInterval(options.pollIntervalMs);
     m_poller.setMissLimit(options.missedPollsForLinkLoss);
     connect(&m_poller, &StatusPoller::pollDue, this, &ElabController::startPoll);

@@ -38,8 +38,9 @@ public:
     void clear() { m_motion.clear(); }
 
     bool streaming() const { return m_stream.isActive(); }
-    // A motion the host started and has not yet seen end (any kind).
-    bool motionTracked() const { return m_motion.isActive(); }
+    // A motion the host started and has not yet seen end (any kind), a velocity axis that
+    // still brakes after its rate 0 included.
+    bool motionTracked() const { return m_motion.isActive() || !m_velocitySign.isEmpty(); }
     // The direction (+1/-1, 0: none) of the tracked motion on this axis.
     int direction(Axis axis) const
     {

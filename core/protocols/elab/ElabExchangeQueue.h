@@ -67,6 +67,12 @@ public:
     void setTimeoutMs(int ms) { m_timeoutMs = qMax(1, ms); }
     int timeoutMs() const { return m_timeoutMs; }
     void setSyncBurst(int count) { m_syncBurst = qMax(1, count); }
+    // The line's character time: frames without a reply complete when they are on the wire,
+    // not when the kernel took them (see completeWritten()).
+    void setCharacterTimeUs(double us) { m_characterTimeUs = qMax(1.0, us); }
+    // Bytes that may still wait in the process and the kernel when a frame without a reply
+    // counts as sent: one <DC2> pair.
+    static constexpr qint64 kWireLowWaterBytes = 2;
 
     void enqueue(ElabExchange ex);     // behind everything queued
     void enqueueNext(ElabExchange ex); // ahead of everything queued: the next step of a sequence
@@ -121,7 +127,9 @@ private:
     std::deque<ElabExchange> m_queue;
     std::deque<InFlight> m_inFlight;
     QTimer m_timer{this};
+    QTimer m_paceTimer{this}; // re-checks the kernel's output queue while it drains
     QElapsedTimer m_clock;
+    double m_characterTimeUs = 191; // 57600 8N2
     qint64 m_outstanding = 0; // bytes handed to the transport and not yet reported written
     int m_timeoutMs = 500;
     int m_syncBurst = 16;

@@ -59,6 +59,10 @@ void ElabSimulator::handle(const Command& cmd)
 {
     ++m_commands;
     advanceToNow();
+    if (m_dropReplyTo != 0 && cmd.code == m_dropReplyTo) {
+        m_dropReplyTo = 0;
+        ++faults().dropReplies; // executed, but its reply is lost on the line
+    }
     if (cmd.code == 0) {
         // Bytes outside any command (line noise): nothing to answer.
         qCDebug(lcSimulator) << "elab sim: ignored" << cmd.raw.toHex() << cmd.error;

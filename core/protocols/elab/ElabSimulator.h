@@ -33,6 +33,8 @@ public:
     // The next `count` commands that the controller answers with ACK/NAK are refused with NAK
     // and not executed. Requests (ENQ, HT, ETB, ETX, LF) are not affected.
     void forceNak(int count) { faults().forceNak = qMax(0, count); }
+    // The reply to the next command with this control byte is lost (e.g. the ACK of a <DC4>).
+    void dropNextReplyTo(char code) { m_dropReplyTo = code; }
     int forcedNaksPending() const { return faults().forceNak; }
 
     // ---- the machine around the board ----
@@ -132,6 +134,7 @@ private:
     bool m_panicButton = false;
     qint64 m_commands = 0;
     QString m_lastNakReason;
+    char m_dropReplyTo = 0;
 };
 
 } // namespace stepdeck::elab
