@@ -65,6 +65,7 @@ public:
 protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override;
     QString jogRefusal() const override;
+    QString jogAxisRefusal(Axis axis, double target) const override;
     // Safety contract (NanotecStop.cpp): 'S' to every drive that may move, answering or not
     // (6.2: in speed mode the only way to end it), then '#*S' to all as the last resort.
     void sendSafetyStop(std::function<void(bool)> done) override;
@@ -146,6 +147,7 @@ private:
     // --- motion (NanotecMotion.cpp) ---
     QString motionRefusal(Axis axis, bool needsPosition) const;
     QString unknownAxes(const QList<Axis>& axes) const;
+    QString belowStartFrequency(Axis axis, double stepsPerS) const; // non-empty: refused
     // verify: per axis the settings that must read back before 'A' ('!', 'p', 's', 'd', 'o').
     void startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
                           bool referenceRun,

@@ -233,6 +233,26 @@ QList<NanotecController::Step> NanotecController::rampDownSteps(Drive& d,
     return steps;
 }
 
+QString NanotecController::belowStartFrequency(Axis axis, double stepsPerS) const
+{
+    // 6.6 speed mode runs between the start frequency 'u' and 'o'; a lower speed cannot be
+    // run, and raising it silently would move faster than the operator asked.
+    if (!m_drives.contains(axis))
+        return {};
+    const qint64 u = m_drives[axis].minFrequency;
+    if (stepsPerS == 0 || qAbs(stepsPerS) >= double(u))
+        return {};
+    return tr("axis %1: %2 steps/s is below the drive's start frequency u=%3 steps/s; refused")
+        .arg(axisName(axis))
+        .arg(qAbs(stepsPerS))
+        .arg(u);
+}
+
+QString NanotecController::jogAxisRefusal(Axis axis, double target) const
+{
+    return belowStartFrequency(axis, target);
+}
+
 void NanotecController::applyJogVelocity(const AxisVelocities& stepsPerS)
 {
     for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
@@ -343,6 +363,8 @@ void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
         const QString why = motionRefusal(it.key(), false);
         if (!why.isEmpty())
             return finishError(id, ErrorKind::Refused, why);
+        if (const QString slow = belowStartFrequency(it.key(), double(it.value())); !slow.isEmpty())
+            return finishError(id, ErrorKind::Refused, slow);
         const Axis axis = it.key();
         const qint64 v = it.value();
         Drive& d = m_drives[axis];
