@@ -1431,6 +1431,10 @@
             <translation>Stopp gesendet, von der Steuerung nicht bestätigt (%1): %2</translation>
         </message>
         <message>
+            <source>%1; already written: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
             <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
             <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
         </message>
@@ -1443,10 +1447,6 @@
             <translation>feed-speed %1 auf Achse %2 muss unter start-speed %3 liegen (der Vorschub hat keine Rampe)</translation>
         </message>
         <message>
-            <source>jog refused: %1</source>
-            <translation>Tippbetrieb abgelehnt: %1</translation>
-        </message>
-        <message>
             <source>jog: %1</source>
             <translation>Tippbetrieb: %1</translation>
         </message>
@@ -1457,6 +1457,10 @@
         <message>
             <source>jog: %1; the board may still be jogging</source>
             <translation>Joggen: %1; die Steuerung joggt womöglich noch</translation>
+        </message>
+        <message>
+            <source>jog not started: %1</source>
+            <translation type="unfinished" />
         </message>
         <message>
             <source>cancelled by a stop, panic or reset</source>
@@ -1546,10 +1550,6 @@
     <context>
         <name>stepdeck::elab::ElabCtlJog</name>
         <message>
-            <source>jog refused: %1</source>
-            <translation>Tippbetrieb abgelehnt: %1</translation>
-        </message>
-        <message>
             <source>jog: %1</source>
             <translation>Tippbetrieb: %1</translation>
         </message>
@@ -1560,6 +1560,10 @@
         <message>
             <source>jog: %1; the board may still be jogging</source>
             <translation>Joggen: %1; die Steuerung joggt womöglich noch</translation>
+        </message>
+        <message>
+            <source>jog not started: %1</source>
+            <translation type="unfinished" />
         </message>
     </context>
     <context>
@@ -1671,10 +1675,6 @@
         <message>
             <source>not connected</source>
             <translation>nicht verbunden</translation>
-        </message>
-        <message>
-            <source>garbage on the line (%1: %2)</source>
-            <translation>ungültige Daten auf der Leitung (%1: %2)</translation>
         </message>
         <message>
             <source>unexpected reply %1 to %2 (expected %3)</source>
@@ -2174,6 +2174,22 @@
         <message>
             <source>%1 sent; not confirmed by %2: %3</source>
             <translation>%1 gesendet; nicht bestätigt von %2: %3</translation>
+        </message>
+        <message>
+            <source>axis %1: %2 steps/s is below the drive's start frequency u=%3 steps/s; refused</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>jog on axis %1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1; already written: %2</source>
+            <translation type="unfinished" />
         </message>
     </context>
     <context>

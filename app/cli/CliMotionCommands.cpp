@@ -275,6 +275,13 @@ Outcome cmdJog(CliContext& c, QStringList args)
     const double acceleration = c.capabilities().defaultJogAcceleration;
     const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
     const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
+    if (!c.session.jogRefusal().isEmpty() && c.session.status().commFault) {
+        // Refused because a drive stopped answering: a communication fault, judged like one.
+        c.session.waitFor([&c] { return c.session.linkLost(); }, c.session.linkVerdictMs());
+        if (!c.session.linkLost()) {
+            return stopThenFail(c, Outcome::failure(ExitLinkDown, c.session.jogRefusal()));
+        }
+    }
     if (c.session.linkLost())
         return c.session.linkLostOutcome();
     if (!c.session.jogRefusal().isEmpty())

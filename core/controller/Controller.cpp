@@ -411,8 +411,9 @@ void Controller::setLinkState(LinkState state, const QString& reason)
     }
     if (state == LinkState::Connecting || state == LinkState::Lost)
         markAllUnreferenced();
-    Q_EMIT linkStateChanged(state, reason);
+    // The status first: whoever reacts to the link state reads the status that goes with it.
     publishStatus();
+    Q_EMIT linkStateChanged(state, reason);
 }
 
 void Controller::publishStatus()

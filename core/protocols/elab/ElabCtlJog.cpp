@@ -47,10 +47,14 @@ void ElabCtlJog::apply(const AxisVelocities& stepsPerS)
             m_line.hooks().publish();
             m_hooks.refused(refusal);
         },
-        [this](ErrorKind, const QString& why) {
+        [this](ErrorKind kind, const QString& why) {
             m_queued = false;
             m_hooks.halt();
-            m_hooks.refused(tr("jog refused: %1").arg(why));
+            if (kind == ErrorKind::Cancelled)
+                return;
+            // The status could not be read: a communication fault (the poller decides about
+            // the link), not a refusal by the manual's rules.
+            m_line.hooks().error(tr("jog not started: %1").arg(why));
         });
 }
 

@@ -153,6 +153,8 @@ private:
                           bool referenceRun,
                           const QMap<Axis, QMap<QByteArray, qint64>>& verify = {});
     void pumpJog(Axis axis, bool zeroConfirmed = false);
+    Step setting(Axis axis, const QByteArray& body); // an idempotent setting, retried once
+    Step startRun(Axis axis); // 'A', its lost echo settled by the status word
     QList<Step> rampDownSteps(Drive& d, NanotecBus::Priority priority);
     int rampTimeMs(const Drive& d, double fromHz) const;
     void referenceWithType(RequestId id, const QMap<Axis, int>& directions, bool internal);

@@ -153,7 +153,7 @@ void NanotecController::startPositioning(RequestId id, const QMap<Axis, QList<QB
     QList<Step> steps;
     for (auto it = setup.cbegin(); it != setup.cend(); ++it) {
         for (const QByteArray& body : it.value())
-            steps << exchange(it.key(), body);
+            steps << setting(it.key(), body);
     }
     for (auto it = verify.cbegin(); it != verify.cend(); ++it) {
         for (auto v = it.value().cbegin(); v != it.value().cend(); ++v)
@@ -162,7 +162,7 @@ void NanotecController::startPositioning(RequestId id, const QMap<Axis, QList<QB
     auto started = std::make_shared<QList<Axis>>();
     for (Axis axis : setup.keys()) {
         steps << [this, axis, started, referenceRun](const Done& done) {
-            exchange(axis, "A")([this, axis, started, referenceRun, done](const Failure& f) {
+            startRun(axis)([this, axis, started, referenceRun, done](const Failure& f) {
                 if (f.ok()) {
                     *started << axis;
                     Drive& d = m_drives[axis];
@@ -191,6 +191,33 @@ void NanotecController::startPositioning(RequestId id, const QMap<Axis, QList<QB
 }
 
 // ---------------------------------------------------------------- speed mode
+
+NanotecController::Step NanotecController::setting(Axis axis, const QByteArray& body)
+{
+    // Settings are idempotent: a reply garbled by line noise is simply asked again.
+    return exchange(axis, body, {}, NanotecBus::Priority::Command, 1);
+}
+
+NanotecController::Step NanotecController::startRun(Axis axis)
+{
+    // 'A' is not idempotent (a second 'A' could repeat a relative move). When its echo is
+    // lost or garbled, the status tells whether it started: running means it did (5.21).
+    return [this, axis](const Done& done) {
+        exchange(axis, "A")([this, axis, done](const Failure& f) {
+            if (f.ok() || (f.kind != ErrorKind::Protocol && f.kind != ErrorKind::Timeout))
+                return done(f);
+            auto running = std::make_shared<bool>(false);
+            auto check = sink([this, axis, running](qint64 v) {
+                applyStatusWord(m_drives[axis], v);
+                *running = !decodeStatus(v).ready;
+            });
+            exchange(axis, "$", check, NanotecBus::Priority::Command,
+                     1)([f, running, done](const Failure& read) {
+                done(read.ok() && *running ? Failure{} : f);
+            });
+        });
+    };
+}
 
 int NanotecController::rampTimeMs(const Drive& d, double fromHz) const
 {
@@ -286,7 +313,15 @@ void NanotecController::pumpJog(Axis axis, bool zeroConfirmed)
             dd.jogApplied = f.ok() ? applied : 0;
             if (!f.ok() && f.kind != ErrorKind::Cancelled) {
                 dd.jogDesired = 0;
-                Q_EMIT jogRefused(f.message);
+                // A drive that refused is a refusal; silence or garbage is a communication
+                // fault, which the poller judges (one fault, one exit code).
+                const bool commFault = f.kind == ErrorKind::Timeout ||
+                                       f.kind == ErrorKind::Protocol ||
+                                       f.kind == ErrorKind::LinkDown;
+                if (commFault)
+                    Q_EMIT errorOccurred(tr("jog on axis %1: %2").arg(axisName(axis), f.message));
+                else
+                    Q_EMIT jogRefused(f.message);
                 // 'A' or a speed change may have reached the drive: never leave it running
                 // at a rate nobody controls.
                 if (next == Jog::Running)
@@ -311,8 +346,8 @@ void NanotecController::pumpJog(Axis axis, bool zeroConfirmed)
         d.jog = Jog::Starting;
         d.jogBusy = true;
         // 6.6, speed mode p=1: speed and direction changes are ramped by the drive.
-        runSteps({exchange(axis, "!2"), exchange(axis, "p1"), exchange(axis, num("o", hz)),
-                  exchange(axis, num("d", want > 0)), exchange(axis, "A")},
+        runSteps({setting(axis, "!2"), setting(axis, "p1"), setting(axis, num("o", hz)),
+                  setting(axis, num("d", want > 0)), startRun(axis)},
                  after(Jog::Running, signedHz));
         return;
     }
@@ -370,10 +405,10 @@ void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
         Drive& d = m_drives[axis];
         const qint64 hz = qBound<qint64>(d.minFrequency, qAbs(v), kMaxFrequency);
         d.savedMaxFrequency = d.maxFrequency;
-        steps << exchange(axis, "!2") << exchange(axis, "p1") << exchange(axis, num("o", hz))
+        steps << setting(axis, "!2") << setting(axis, "p1") << setting(axis, num("o", hz))
               << exchange(axis, num("d", v > 0));
         steps << [this, axis, hz, v](const Done& done) {
-            exchange(axis, "A")([this, axis, hz, v, done](const Failure& f) {
+            startRun(axis)([this, axis, hz, v, done](const Failure& f) {
                 if (f.ok()) {
                     Drive& dd = m_drives[axis];
                     dd.jog = Jog::Running;
