@@ -77,7 +77,8 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
 {
     const QString& arg = argv.at(*i);
     const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model", "--port", "--address", "--axes", "--timeout"};
+    static const QStringList names{"--model",   "--port",    "--address",
+                                   "--axes",    "--timeout", "--reset-line"};
     *matched = names.contains(name);
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))
@@ -89,6 +90,13 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
         o->port = value;
     } else if (name == QLatin1String("--axes")) {
         return parseAxisMap(value, &o->axisAddresses, error);
+    } else if (name == QLatin1String("--reset-line")) {
+        const std::optional<LineSettings::ResetLine> line = resetLineFromName(value);
+        if (!line) {
+            *error = tr("--reset-line needs rts or dtr, got '%1'").arg(value);
+            return false;
+        }
+        o->resetLine = *line;
     } else if (name == QLatin1String("--address")) {
         const int n = value.toInt(&ok);
         if (!ok || n < 0) {
@@ -231,6 +239,8 @@ QString usageText()
               "  --setup-defaults   write every parameter's schema default before the command\n"
               "                     (also the switch polarities; see `params`)\n"
               "  --timeout MS       how long to wait for the link to come up (default 3000)\n"
+              "  --reset-line L     rts (default) or dtr: the modem line wired to the\n"
+              "                     board's reset input (E-LAB `reset`); both are held low\n"
               "  --verbose          show the core's log output on stderr\n"
               "  --help, --version\n"
               "\n"
@@ -254,13 +264,16 @@ QString usageText()
               "                              every parameter in it (verified like set;\n"
               "                              --no-verify)\n"
               "  move [--abs] X=N Y=N Z=N    positioning move in steps; waits until idle and\n"
-              "                              prints the positions (--no-wait: return at once)\n"
+              "                              prints the positions (--no-wait: return at once;\n"
+              "                              --timeout MS: stop it and exit 5 past MS)\n"
               "  jog X=V Y=V Z=V --for MS    jog at V steps/s for MS ms, ramped up and back\n"
               "                              to zero\n"
               "  home X=-1 Y=0 Z=1           reference move with a direction per axis; waits\n"
-              "                              until idle (--no-wait)\n"
-              "  velocity X=V Y=V Z=V        velocity move in steps/s; runs until Ctrl-C or\n"
-              "                              SIGTERM (or --for MS), then a ramped stop\n"
+              "                              until idle and prints the positions (--no-wait;\n"
+              "                              --timeout MS: stop it and exit 5 past MS)\n"
+              "  velocity X=V Y=V Z=V        velocity move in steps/s; runs until Ctrl-C,\n"
+              "                              SIGTERM or SIGHUP (or --for MS), then a ramped\n"
+              "                              stop\n"
               "  feed X=N Y=N Z=N            feed move; waits until idle (--no-wait: one axis\n"
               "                              only; a multi-axis feed is streamed by the host)\n"
               "  stop | panic | reset        ramped stop | emergency stop | hardware reset\n"

@@ -1,4 +1,5 @@
 #pragma once
+#include "model/LineSettings.h"
 #include "model/Axis.h"
 #include <QStringList>
 #include <optional>
@@ -19,6 +20,8 @@ struct CliOptions
     bool help = false;
     bool version = false;
     int connectTimeoutMs = 3000;
+    // --reset-line rts|dtr: the modem line wired to the board's reset input (E-LAB).
+    LineSettings::ResetLine resetLine = LineSettings::ResetLine::Rts;
     QString command;
     QStringList args;
 };

@@ -92,7 +92,8 @@ QString exitCodeHelp()
               "      setup incomplete, position unknown, ...)\n"
               "   4  NAK: the device refused the command; stderr names the decoded status bits\n"
               "   5  timeout: no reply in time\n"
-              "   6  link down: could not connect, or the link was lost\n"
+              "   6  link down: could not connect, or the link was lost (also a controller\n"
+              "      that stopped answering during any command)\n"
               "   7  invalid value: out of range or wrong type (names parameter and range);\n"
               "      also a parameter file whose content does not validate; nothing was sent\n"
               "   8  unsupported: the model cannot do this (e.g. read a parameter back)\n"
@@ -101,7 +102,9 @@ QString exitCodeHelp()
               "  11  verify failed: written, but the read-back differs\n"
               "  12  file: cannot read or write the file, or it is not JSON\n"
               "  13  motion aborted: a move ended on a limit switch or an emergency stop\n"
-              " 130  interrupted (SIGINT/SIGTERM): motion was stopped, then the CLI quit\n");
+              " 130  interrupted (SIGINT/SIGTERM/SIGHUP): motion was stopped (a ramped stop;\n"
+              "      the message says whether the controller acknowledged it), then the CLI\n"
+              "      quit\n");
 }
 
 Outcome Outcome::from(const CommandResult& result)
