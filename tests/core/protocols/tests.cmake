@@ -1,0 +1,3 @@
+# Across models: the safety contract's fault-injection matrix through the generic interface.
+stepdeck_add_test(tst_faultmatrix SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_faultmatrix.cpp
+                  LABELS integration TIMEOUT 300)
