@@ -1432,7 +1432,7 @@
         </message>
         <message>
             <source>%1; already written: %2</source>
-            <translation type="unfinished" />
+            <translation>%1; bereits geschrieben: %2</translation>
         </message>
         <message>
             <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
@@ -1460,7 +1460,7 @@
         </message>
         <message>
             <source>jog not started: %1</source>
-            <translation type="unfinished" />
+            <translation>Joggen nicht gestartet: %1</translation>
         </message>
         <message>
             <source>cancelled by a stop, panic or reset</source>
@@ -1563,7 +1563,7 @@
         </message>
         <message>
             <source>jog not started: %1</source>
-            <translation type="unfinished" />
+            <translation>Joggen nicht gestartet: %1</translation>
         </message>
     </context>
     <context>
@@ -2177,19 +2177,19 @@
         </message>
         <message>
             <source>axis %1: %2 steps/s is below the drive's start frequency u=%3 steps/s; refused</source>
-            <translation type="unfinished" />
+            <translation>Achse %1: %2 Schritte/s liegt unter der Startfrequenz u=%3 Schritte/s der Steuerung; abgelehnt</translation>
         </message>
         <message>
             <source>jog on axis %1: %2</source>
-            <translation type="unfinished" />
+            <translation>Joggen auf Achse %1: %2</translation>
         </message>
         <message>
             <source>%1 (%2)</source>
-            <translation type="unfinished" />
+            <translation>%1 (%2)</translation>
         </message>
         <message>
             <source>%1; already written: %2</source>
-            <translation type="unfinished" />
+            <translation>%1; bereits geschrieben: %2</translation>
         </message>
     </context>
     <context>
