@@ -1148,6 +1148,14 @@
             <source>%1: '%2' is not an axis</source>
             <translation>%1: '%2' ist keine Achse</translation>
         </message>
+        <message>
+            <source>%1: '%2' is not a decimal integer (allowed: %3%4)</source>
+            <translation>%1: '%2' ist keine ganze Dezimalzahl (erlaubt: %3%4)</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not a finite number (allowed: %3%4)</source>
+            <translation>%1: '%2' ist keine endliche Zahl (erlaubt: %3%4)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::PtyEndpoint</name>
@@ -3799,6 +3807,14 @@
         <message>
             <source>%1: '%2' is not an axis</source>
             <translation>%1: '%2' ist keine Achse</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not a decimal integer (allowed: %3%4)</source>
+            <translation>%1: '%2' ist keine ganze Dezimalzahl (erlaubt: %3%4)</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not a finite number (allowed: %3%4)</source>
+            <translation>%1: '%2' ist keine endliche Zahl (erlaubt: %3%4)</translation>
         </message>
     </context>
     <context>

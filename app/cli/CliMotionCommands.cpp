@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QtMath>
+#include <limits>
 
 namespace stepdeck::cli {
 
@@ -45,9 +46,8 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     AxisVector steps;
-    QString error;
-    if (!parseAxisIntegers(args, c.axes(), &steps, &error))
-        return Outcome::usage(tr("%1: %2").arg(command, error));
+    if (const Outcome parsed = parseAxisIntegers(command, args, c.axes(), &steps); !parsed.ok())
+        return parsed;
     if (check) {
         if (const Outcome checked = check(steps); !checked.ok())
             return checked;
@@ -87,19 +87,31 @@ Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
     }
 }
 
-bool parseInteger(const QString& text, qint64* value)
+// A positive number of milliseconds (--for MS), decimal.
+bool parseDuration(const QString& text, qint64* ms)
 {
-    bool ok = false;
-    *value = text.toLongLong(&ok);
-    return ok;
+    return numbers::parseInteger(text, 1, std::numeric_limits<qint64>::max(), ms) ==
+           NumberError::None;
 }
 
-// The value of a spindle/power command checked like the schema parameter of the same meaning,
-// so the message names the parameter and its range.
-QString checkAgainstSchema(const CliContext& c, const QString& parameter, qint64 value)
+// The value of a spindle/power command, read and checked like the schema parameter of the
+// same meaning (decimal; the message names the parameter and its range). A non-finite value
+// is a usage error, anything else refused an invalid value.
+Outcome readSchemaValue(const CliContext& c, const QString& parameter, const QString& text,
+                        qint64* value)
 {
+    if (numbers::isNonFiniteWord(text))
+        return Outcome::usage(tr("%1: '%2' is not a finite number").arg(parameter, text));
     const ParameterSpec* spec = c.model->schema.find(parameter);
-    return spec ? c.model->schema.validateScalar(*spec, value) : QString();
+    if (!spec) { // the adapter says whether the model can do it at all
+        if (numbers::parseInteger(text, value) != NumberError::None)
+            return Outcome::usage(tr("'%1' is not a decimal number").arg(text));
+        return Outcome::success();
+    }
+    if (const QString e = c.model->schema.validateScalar(*spec, text); !e.isEmpty())
+        return Outcome::failure(ExitInvalidValue, e);
+    *value = c.model->schema.normalise(*spec, text).toLongLong();
+    return Outcome::success();
 }
 
 Outcome noArguments(CliContext& c, const QStringList& args, const QString& command,
@@ -170,11 +182,13 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     qint64 forMs = -1;
-    if (forText && (!parseInteger(*forText, &forMs) || forMs <= 0))
+    if (forText && !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
     AxisVector rates;
-    if (!parseAxisIntegers(args, c.axes(), &rates, &error))
-        return Outcome::usage(tr("velocity: %1").arg(error));
+    if (const Outcome parsed =
+            parseAxisIntegers(QStringLiteral("velocity"), args, c.axes(), &rates);
+        !parsed.ok())
+        return parsed;
     Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });
     if (!result.ok())
         return result;
@@ -209,11 +223,12 @@ Outcome cmdJog(CliContext& c, QStringList args)
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     qint64 forMs = 0;
-    if (!forText || !parseInteger(*forText, &forMs) || forMs <= 0)
+    if (!forText || !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));
     AxisVelocities rates;
-    if (!parseAxisDoubles(args, c.axes(), &rates, &error))
-        return Outcome::usage(tr("jog: %1").arg(error));
+    if (const Outcome parsed = parseAxisDoubles(QStringLiteral("jog"), args, c.axes(), &rates);
+        !parsed.ok())
+        return parsed;
     const double maxSpeed = c.capabilities().maxJogSpeed;
     double fastest = 0;
     for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
@@ -273,10 +288,11 @@ Outcome cmdReset(CliContext& c, QStringList args)
 Outcome cmdSpindle(CliContext& c, QStringList args)
 {
     qint64 rpm = 0;
-    if (args.size() != 1 || !parseInteger(args.first(), &rpm))
+    if (args.size() != 1)
         return Outcome::usage(tr("spindle needs one RPM value, e.g. `spindle 500`"));
-    if (const QString e = checkAgainstSchema(c, QStringLiteral("spindle-rpm"), rpm); !e.isEmpty())
-        return Outcome::failure(ExitInvalidValue, e);
+    if (const Outcome read = readSchemaValue(c, QStringLiteral("spindle-rpm"), args.first(), &rpm);
+        !read.ok())
+        return read;
     return connectAndRun(c, [&](ControllerSession& s) { return s.setSpindle(int(rpm)); });
 }
 
@@ -292,11 +308,12 @@ Outcome cmdCoolant(CliContext& c, QStringList args)
 Outcome cmdPower(CliContext& c, QStringList args)
 {
     qint64 percent = 0;
-    if (args.size() != 1 || !parseInteger(args.first(), &percent))
+    if (args.size() != 1)
         return Outcome::usage(tr("power needs one PERCENT value, e.g. `power 66`"));
-    if (const QString e = checkAgainstSchema(c, QStringLiteral("drive-power"), percent);
-        !e.isEmpty())
-        return Outcome::failure(ExitInvalidValue, e);
+    if (const Outcome read =
+            readSchemaValue(c, QStringLiteral("drive-power"), args.first(), &percent);
+        !read.ok())
+        return read;
     return connectAndRun(c, [&](ControllerSession& s) { return s.setDrivePower(int(percent)); });
 }
 

@@ -1,4 +1,5 @@
 #include "SimScenario.h"
+#include "model/NumberParsing.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "sim/Simulator.h"
@@ -44,8 +45,8 @@ bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* er
     bool okMax = false;
     LimitRange limit;
     if (range.size() == 2) {
-        limit.minimum = range[0].toLongLong(&okMin);
-        limit.maximum = range[1].toLongLong(&okMax);
+        okMin = numbers::parseInteger(range[0], &limit.minimum) == NumberError::None;
+        okMax = numbers::parseInteger(range[1], &limit.maximum) == NumberError::None;
     }
     if (!axis || !okMin || !okMax || limit.minimum >= limit.maximum) {
         *error = tr("--limit expects AXIS=MIN:MAX with MIN < MAX, e.g. X=-1000:1000, got '%1'")
@@ -60,8 +61,8 @@ bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* 
 {
     const int eq = text.indexOf(QLatin1Char('='));
     const auto axis = eq > 0 ? axisFromName(QStringView(text).left(eq)) : std::nullopt;
-    bool ok = false;
-    const qint64 steps = text.mid(eq + 1).toLongLong(&ok);
+    qint64 steps = 0;
+    const bool ok = numbers::parseInteger(text.mid(eq + 1), &steps) == NumberError::None;
     if (!axis || !ok) {
         *error = tr("--position expects AXIS=STEPS, e.g. X=500, got '%1'").arg(text);
         return false;
@@ -90,23 +91,22 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
             if (!takeValue(args, &i, &value, error))
                 return false;
             for (const QString& part : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-                bool ok = false;
-                const int address = part.toInt(&ok);
-                if (!ok || address < 0) {
+                int address = 0;
+                if (numbers::parseInt(part, 0, 255, &address) != NumberError::None) {
                     *error = tr("--drives expects addresses like 1,2,3, got '%1'").arg(value);
                     return false;
                 }
                 s.drives << address;
             }
         } else if (name == QLatin1String("--temperature")) {
-            bool ok = false;
             if (!takeValue(args, &i, &value, error))
                 return false;
-            s.temperature = value.toInt(&ok);
-            if (!ok) {
+            int celsius = 0;
+            if (numbers::parseInt(value, -273, 1000, &celsius) != NumberError::None) {
                 *error = tr("--temperature expects whole degrees Celsius, got '%1'").arg(value);
                 return false;
             }
+            s.temperature = celsius;
         } else if (name == QLatin1String("--limit")) {
             if (!takeValue(args, &i, &value, error) || !parseLimit(value, &s.limits, error))
                 return false;
