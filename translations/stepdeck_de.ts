@@ -1858,6 +1858,18 @@
             <source>long reply without a numeric value</source>
             <translation>lange Antwort ohne Zahlenwert</translation>
         </message>
+        <message>
+            <source>read reply for record '%1' (records are 1..%2)</source>
+            <translation>Leseantwort für Satz '%1' (Sätze sind 1..%2)</translation>
+        </message>
+        <message>
+            <source>'%1' is not a record setting (section 4)</source>
+            <translation>'%1' ist keine Satzeinstellung (Abschnitt 4)</translation>
+        </message>
+        <message>
+            <source>record setting '%1' given twice</source>
+            <translation>Satzeinstellung '%1' zweimal angegeben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::nanotec::CommandDecoder</name>
@@ -3934,6 +3946,18 @@
         <message>
             <source>long reply without a numeric value</source>
             <translation>lange Antwort ohne Zahlenwert</translation>
+        </message>
+        <message>
+            <source>read reply for record '%1' (records are 1..%2)</source>
+            <translation>Leseantwort für Satz '%1' (Sätze sind 1..%2)</translation>
+        </message>
+        <message>
+            <source>'%1' is not a record setting (section 4)</source>
+            <translation>'%1' ist keine Satzeinstellung (Abschnitt 4)</translation>
+        </message>
+        <message>
+            <source>record setting '%1' given twice</source>
+            <translation>Satzeinstellung '%1' zweimal angegeben</translation>
         </message>
         <message>
             <source>frame interrupted by a new '#'</source>
