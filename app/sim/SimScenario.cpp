@@ -4,6 +4,7 @@
 #include "protocols/elab/ElabSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
+#include <limits>
 
 namespace stepdeck::simapp {
 
@@ -70,6 +71,58 @@ bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* 
     positions->insert(*axis, steps);
     return true;
 }
+// "--drop 0.01": a probability 0..1, decimal.
+bool parseProbability(const QString& option, const QString& text, double* value, QString* error)
+{
+    if (numbers::parseReal(text, value) != NumberError::None || *value < 0 || *value > 1) {
+        *error = tr("%1 expects a probability from 0 to 1 (e.g. 0.01), got '%2'").arg(option, text);
+        return false;
+    }
+    return true;
+}
+
+// --drop, --corrupt, --noise, --freeze-after, --seed; *matched tells whether name was one.
+bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
+                      bool* matched, QString* error)
+{
+    static const QStringList names{"--drop", "--corrupt", "--noise", "--freeze-after", "--seed"};
+    *matched = names.contains(name);
+    QString value;
+    if (!*matched)
+        return true;
+    if (!takeValue(args, i, &value, error))
+        return false;
+    if (name == QLatin1String("--drop"))
+        return parseProbability(name, value, &s->dropProbability, error);
+    if (name == QLatin1String("--corrupt"))
+        return parseProbability(name, value, &s->corruptProbability, error);
+    if (name == QLatin1String("--noise")) {
+        if (numbers::parseReal(value, &s->noiseBytesPerSecond) != NumberError::None ||
+            s->noiseBytesPerSecond < 0 || s->noiseBytesPerSecond > 100000) {
+            *error = tr("--noise expects bytes per second from 0 to 100000, got '%1'").arg(value);
+            return false;
+        }
+        return true;
+    }
+    if (name == QLatin1String("--freeze-after")) {
+        if (numbers::parseInteger(value, 0, std::numeric_limits<int>::max(), &s->freezeAfterMs) !=
+            NumberError::None) {
+            *error = tr("--freeze-after expects milliseconds (0 or more), got '%1'").arg(value);
+            return false;
+        }
+        return true;
+    }
+    qint64 seed = 0;
+    if (numbers::parseInteger(value, 0, std::numeric_limits<quint32>::max(), &seed) !=
+        NumberError::None) {
+        *error = tr("--seed expects a number from 0 to %1, got '%2'")
+                     .arg(std::numeric_limits<quint32>::max())
+                     .arg(value);
+        return false;
+    }
+    s->seed = quint32(seed);
+    return true;
+}
 } // namespace
 
 bool parseScenario(const QStringList& args, SimScenario* scenario, QString* error)
@@ -78,6 +131,11 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
     for (int i = 0; i < args.size(); ++i) {
         const QString name = optionName(args.at(i));
         QString value;
+        bool fault = false;
+        if (!parseFaultOption(name, args, &i, &s, &fault, error))
+            return false;
+        if (fault)
+            continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
         } else if (name == QLatin1String("--pace")) {
@@ -127,6 +185,8 @@ QString simUsage()
     return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [--pace] [--setup-complete]\n"
               "                    [--temperature C] [--limit AXIS=MIN:MAX]... [--position "
               "AXIS=STEPS]...\n"
+              "                    [--drop P] [--corrupt P] [--noise BYTES_PER_S]\n"
+              "                    [--freeze-after MS] [--seed N]\n"
               "\n"
               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
@@ -140,7 +200,24 @@ QString simUsage()
               "                     (the board powers on with setup incomplete)\n"
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on\n");
+              "  --position AXIS=STEPS  where the carriage stands at power-on\n"
+              "\n"
+              "Faults (random, reproducible with the same --seed and the same traffic):\n"
+              "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
+              "  --corrupt P        each reply has one random byte replaced with probability P\n"
+              "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
+              "                     inside replies\n"
+              "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
+              "                     all while the terminal stays open (a frozen peer)\n"
+              "  --seed N           seed of the fault generator (default 1)\n");
+}
+
+void applyFaults(const SimScenario& scenario, Simulator* simulator)
+{
+    simulator->faults().dropProbability = scenario.dropProbability;
+    simulator->faults().corruptProbability = scenario.corruptProbability;
+    simulator->setNoise(scenario.noiseBytesPerSecond);
+    simulator->freezeAfter(scenario.freezeAfterMs);
 }
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
