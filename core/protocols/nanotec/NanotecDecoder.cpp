@@ -209,13 +209,17 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
     QList<Reply> out;
     for (char c : bytes) {
         if (m_discarding) {
+            ++m_unframed;
             if (c == '\r')
                 m_discarding = false;
             continue;
         }
-        if (c == '\n' || (c == '\0' && m_buffer.isEmpty()))
+        if (c == '\n' || (c == '\0' && m_buffer.isEmpty())) {
+            ++m_unframed;
             continue; // line feeds some adapters add; idle-line zeros
+        }
         if (c == '\r') {
+            ++m_unframed;
             if (!m_buffer.isEmpty())
                 out << parse(m_buffer);
             m_buffer.clear();
@@ -253,12 +257,16 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         if (ch == '#') {
             if (m_inFrame && m_buffer.size() > 1)
                 fail(tr("frame interrupted by a new '#'"));
+            else if (m_inFrame)
+                ++m_unframed; // "##": the first '#' began an empty frame
             m_buffer = "#";
             m_inFrame = true;
             continue;
         }
-        if (!m_inFrame)
+        if (!m_inFrame) {
+            ++m_unframed;
             continue; // 1.1: a command always begins with '#'
+        }
         if (ch != '\r') {
             m_buffer += ch;
             if (m_buffer.size() > kMaxFrame) {

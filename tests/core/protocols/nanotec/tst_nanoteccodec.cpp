@@ -86,6 +86,8 @@ private Q_SLOTS:
     void record_formatRoundTrip();
     void commandDecoder_framesAndAddresses();
     void commandDecoder_garbageAndInterruptedFrames();
+    void decoders_everyByteAccountedFor_data();
+    void decoders_everyByteAccountedFor();
     void errorCodes_namedAsInManual();
 };
 
@@ -468,6 +470,49 @@ void TestNanotecCodec::commandDecoder_garbageAndInterruptedFrames()
     c = decoder.feed("\r#1A\r");
     QCOMPARE(c.size(), 1);
     QCOMPARE(c[0].body, QByteArray("A"));
+}
+
+// Every byte fed is in a frame's raw, still buffered, or counted as outside frames
+// (terminators, filler, garbage before '#', dropped tails). fuzz_nanotec_command found "##"
+// losing the first '#'.
+void TestNanotecCodec::decoders_everyByteAccountedFor_data()
+{
+    QTest::addColumn<QByteArray>("wire");
+    QTest::addColumn<bool>("commands"); // CommandDecoder, else ReplyDecoder
+    QTest::newRow("double hash") << QByteArray("##1A\r") << true;
+    QTest::newRow("hashes and garbage") << QByteArray("x#\r##2s5#3A\r###") << true;
+    QTest::newRow("overlong command")
+        << QByteArray("#1s" + QByteArray(200, '9') + "\r#1A\r") << true;
+    QTest::newRow("replies with filler")
+        << QByteArray("001A\r\n") + QByteArray(2, '\0') + QByteArray("002$17\r\r") << false;
+    QTest::newRow("overlong reply")
+        << QByteArray("001s" + QByteArray(200, '1') + "\r001A\r") << false;
+    QTest::newRow("unfinished reply") << QByteArray("001A\r002s10") << false;
+}
+
+void TestNanotecCodec::decoders_everyByteAccountedFor()
+{
+    QFETCH(QByteArray, wire);
+    QFETCH(bool, commands);
+    qsizetype inRaw = 0;
+    qsizetype buffered = 0;
+    qint64 outside = 0;
+    if (commands) {
+        CommandDecoder decoder;
+        for (char c : wire) {
+            for (const Command& cmd : decoder.feed(QByteArray(1, c)))
+                inRaw += cmd.raw.size();
+        }
+        buffered = decoder.buffered();
+        outside = decoder.unframedBytes();
+    } else {
+        ReplyDecoder decoder;
+        for (const Reply& r : decoder.feed(wire))
+            inRaw += r.raw.size();
+        buffered = decoder.buffered();
+        outside = decoder.unframedBytes();
+    }
+    QCOMPARE(inRaw + buffered + outside, wire.size());
 }
 
 void TestNanotecCodec::errorCodes_namedAsInManual()
