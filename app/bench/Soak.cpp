@@ -6,6 +6,7 @@
 #include "SoakHost.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
+#include <cstdio>
 
 namespace stepdeck::bench {
 
@@ -50,6 +51,7 @@ private:
     QString injectFault();
     void clearFaults();
     void record(const SoakHost::Outcome& outcome);
+    void recoverIfRefused(const SoakHost::Outcome& outcome);
     void cmdMove(bool wait);
     void cmdJog();
     void cmdVelocity();
@@ -227,6 +229,29 @@ void SoakRun::record(const SoakHost::Outcome& outcome)
         return;
     }
     ++m_fig.results[kindName(outcome.result.error)];
+    static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
+    if (verbose && !outcome.result.ok()) {
+        const QByteArray line =
+            QStringLiteral("%1: %2: %3\n")
+                .arg(m_model.id, kindName(outcome.result.error), outcome.result.message)
+                .toUtf8();
+        std::fwrite(line.constData(), 1, size_t(line.size()), stderr);
+    }
+}
+
+// What an operator does after a refusal the model's manual says how to clear.
+void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
+{
+    if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
+        return;
+    for (const QString& operation : m_model.recovery) {
+        for (Axis a : m_host.session().capabilities().axes) {
+            ++m_fig.recoveries;
+            record(m_host.call([&](ControllerSession& s) {
+                return s.modelOperation(operation, {{QStringLiteral("axis"), axisName(a)}});
+            }));
+        }
+    }
 }
 
 void SoakRun::cmdMove(bool wait)
@@ -242,6 +267,7 @@ void SoakRun::cmdMove(bool wait)
     const SoakHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.moveRelative(steps); });
     record(out);
+    recoverIfRefused(out);
     const bool ok = out.finished && out.result.ok();
     for (auto it = steps.cbegin(); it != steps.cend(); ++it)
         m_commanded.append({it.key(), it.value(), ok});
@@ -276,6 +302,7 @@ void SoakRun::cmdVelocity()
     const SoakHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.velocityMove(rates); });
     record(out);
+    recoverIfRefused(out);
     if (!out.finished || !out.result.ok())
         return;
     m_host.idle(between(50, 300));

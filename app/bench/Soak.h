@@ -28,6 +28,7 @@ struct SoakFigures
     qint64 deviceMoves = 0;       // per axis
     qint64 unconfirmedMoves = 0;  // device started it, host was told it failed
     qint64 unmatchedDeviceMoves = 0;
+    qint64 recoveries = 0;         // operator actions after refused moves (SoakModel::recovery)
     QMap<QString, qint64> faults;  // injected, by kind
     QMap<QString, qint64> results; // command results, by error kind
     double seconds = 0;

@@ -57,6 +57,7 @@ SoakModel nanotecModel()
     m.id = QStringLiteral("nanotec");
     m.simulator.addresses = axisOf.keys();
     m.readable = {QStringLiteral("phase-current"), QStringLiteral("max-frequency")};
+    m.recovery = {QStringLiteral("reset-position-error")};
     m.setup = {
         {QStringLiteral("max-frequency"), perAxis(8000, axisOf.values())},
         {QStringLiteral("ramp"), perAxis(20, axisOf.values())}}; // ramp 20: ~660 Hz/ms (6.11)

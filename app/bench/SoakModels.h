@@ -20,9 +20,12 @@ struct SoakModel
 {
     QString id;
     SimulatorOptions simulator;
-    ParameterSet setup;                      // written at the start of every session
-    QStringList readable;                    // parameters `get` reads back (empty: none can be)
-    std::function<void(Simulator*)> prepare; // once, before the first session
+    ParameterSet setup;   // written at the start of every session
+    QStringList readable; // parameters `get` reads back (empty: none can be)
+    // Model operations an operator runs per axis after a refused move, e.g. Nanotec
+    // "reset-position-error" after an abrupt stop lost steps (5.14).
+    QStringList recovery;
+    std::function<void(Simulator*)> prepare;            // once, before the first session
     std::function<QList<Axis>(Simulator*)> movingAxes;  // axes in motion at the device
     std::function<QList<DeviceMove>(Simulator*)> moves; // accepted so far, in order
     std::function<void(Simulator*)> halt;               // stops everything at the device

@@ -46,6 +46,7 @@ template <typename F> void eachCounter(F f, SoakFigures& s)
     f("deviceMoves", s.deviceMoves);
     f("unconfirmedMoves", s.unconfirmedMoves);
     f("unmatchedDeviceMoves", s.unmatchedDeviceMoves);
+    f("recoveries", s.recoveries);
 }
 } // namespace
 
@@ -83,8 +84,9 @@ QString SoakFigures::toText() const
                "  peer vanished %12 times; link lost without a vanish %13; failed connects %14; "
                "axes found moving after a vanish %15\n"
                "  moves (per axis): host told success %16, device started %17, started although "
-               "the host was told it failed %18, device moves matching no command %19\n"
-               "  results: %20")
+               "the host was told it failed %18, device moves matching no command %19; operator "
+               "recoveries after refusals %20\n"
+               "  results: %21")
         .arg(model)
         .arg(commands)
         .arg(seed)
@@ -104,6 +106,7 @@ QString SoakFigures::toText() const
         .arg(deviceMoves)
         .arg(unconfirmedMoves)
         .arg(unmatchedDeviceMoves)
+        .arg(recoveries)
         .arg(mapText(results));
 }
 
