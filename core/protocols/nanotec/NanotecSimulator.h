@@ -27,8 +27,7 @@ public:
     NanotecDrive* drive(int address) const;
     NanotecDrive* addDrive(int address); // nullptr if taken or invalid
     QList<NanotecDrive*> drives() const;
-    QList<QByteArray> receivedFrames() const { return m_frames; } // host frames, in order
-    void clearReceivedFrames() { m_frames.clear(); }
+    bool standingStill() override; // no drive turns its motor (after advancing to now)
 
     // Positioning runs ('A' in mode 1, positioning p1/p2) the drives started, in order, with
     // the steps each was to travel: soak runs compare them with the host's successful moves.
@@ -52,7 +51,6 @@ private:
 
     std::vector<std::unique_ptr<NanotecDrive>> m_drives;
     CommandDecoder m_decoder;
-    QList<QByteArray> m_frames;
     QList<StartedMove> m_startedMoves;
     QTimer m_timer{this};
     QElapsedTimer m_clock;

@@ -1,16 +1,11 @@
 // NanotecController against a simulated bus of drives 1, 2, 3 (axes X, Y, Z) over
 // LoopbackTransport: scan, write & verify, motion in the manual's modes, jog in speed mode,
 // reference run, panic broadcast, silent and misbehaving drives.
-#include "protocols/nanotec/NanotecController.h"
-#include "protocols/nanotec/NanotecModel.h"
-#include "protocols/nanotec/NanotecSimulator.h"
-#include "transport/LoopbackTransport.h"
-#include <QDeadlineTimer>
-#include <QSignalSpy>
-#include <QtTest>
+#include "NanotecRig.h"
 
 using namespace stepdeck;
 using namespace stepdeck::nanotec;
+using nanotectest::NanotecRig;
 
 class TestNanotecController : public QObject
 {
@@ -18,7 +13,7 @@ class TestNanotecController : public QObject
 private Q_SLOTS:
     void init();
     void cleanup();
-    void connect_readsFirmwareAndEnablesAutoStatus();
+    void connect_readsFirmwareAndSwitchesAutoStatusOff();
     void scan_findsDrives123();
     void poll_sweepsEveryDrive_reportsRate_fitsLine();
     void write_verified_reachesEveryDrive();
@@ -42,65 +37,31 @@ private Q_SLOTS:
     void errorMemory_decoded();
 
 private:
-    CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000);
-    int countFrames(const QByteArray& frame) const;
+    CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000)
+    {
+        return m_rig->run(call, timeoutMs);
+    }
+    int countFrames(const QByteArray& frame) const { return m_rig->countFrames(frame); }
 
+    std::unique_ptr<NanotecRig> m_rig;
     NanotecSimulator* m_sim = nullptr;
     NanotecController* m_ctl = nullptr;
-    QObject* m_owner = nullptr;
-    RequestId m_nextId = 0;
 };
 
 void TestNanotecController::init()
 {
-    m_owner = new QObject;
-    auto [host, device] = LoopbackTransport::createPair(m_owner);
-    SimulatorOptions so;
-    so.addresses = {1, 2, 3};
-    m_sim = new NanotecSimulator(so, m_owner);
-    device->open(lineSettings());
-    m_sim->attach(device);
-    ControllerOptions co;
-    co.axisAddresses = {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
-    co.pollIntervalMs = 20;
-    co.commandTimeoutMs = 100;
-    co.jogLeaseMs = 5000;
-    m_ctl = new NanotecController(host, co, m_owner);
-    QVERIFY(run([this](RequestId id) { m_ctl->openLink(id); }).ok());
-    QCOMPARE(m_ctl->linkState(), LinkState::Connected);
+    m_rig = std::make_unique<NanotecRig>();
+    m_sim = m_rig->sim;
+    m_ctl = m_rig->ctl;
+    QVERIFY(m_rig->connect());
 }
 
 void TestNanotecController::cleanup()
 {
-    delete m_owner;
+    m_rig.reset();
 }
 
-CommandResult TestNanotecController::run(const std::function<void(RequestId)>& call, int timeoutMs)
-{
-    const RequestId id = ++m_nextId;
-    QSignalSpy spy(m_ctl, &Controller::requestFinished);
-    call(id);
-    auto find = [&]() -> std::optional<CommandResult> {
-        for (const auto& args : spy) {
-            const auto r = args.at(0).value<CommandResult>();
-            if (r.id == id)
-                return r;
-        }
-        return std::nullopt;
-    };
-    // QSignalSpy::wait runs an event loop (QTest::qWaitFor would sleep between rounds).
-    QDeadlineTimer deadline(timeoutMs);
-    while (!find() && !deadline.hasExpired())
-        spy.wait(int(qMax<qint64>(1, deadline.remainingTime())));
-    return find().value_or(CommandResult::failure(id, ErrorKind::Timeout, "test timeout"));
-}
-
-int TestNanotecController::countFrames(const QByteArray& frame) const
-{
-    return int(m_sim->receivedFrames().count(frame));
-}
-
-void TestNanotecController::connect_readsFirmwareAndEnablesAutoStatus()
+void TestNanotecController::connect_readsFirmwareAndSwitchesAutoStatusOff()
 {
     const MachineStatus& st = m_ctl->status();
     QCOMPARE(st.drives.size(), 3);
@@ -111,7 +72,7 @@ void TestNanotecController::connect_readsFirmwareAndEnablesAutoStatus()
     QCOMPARE(st.drives[1].address, 2);
     QCOMPARE(st.drives[1].axes, QList<Axis>{Axis::Y});
     for (NanotecDrive* d : m_sim->drives())
-        QCOMPARE(d->value('J'), qint64(1));   // 5.31 switched on
+        QCOMPARE(d->value('J'), qint64(0));   // 5.31 off: 'j' would collide with polls
     QVERIFY(!st.axes[Axis::X].positionKnown); // unknown until referenced
     const Capabilities caps = m_ctl->capabilities();
     QVERIFY(caps.multiDrive);
