@@ -1,5 +1,6 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
 #include "Measurements.h"
+#include "SoakMain.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -137,15 +138,28 @@ int main(int argc, char** argv)
 {
     QCoreApplication application(argc, argv);
     const QStringList args = application.arguments().mid(1);
+    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+        qInstallMessageHandler(quiet);
+    if (const int code = soakMain(application.applicationFilePath(), args); code >= 0)
+        return code;
     const bool asJson = args.contains(QStringLiteral("--json"));
     for (const QString& arg : args) {
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            print(stdout,
-                  QStringLiteral("Usage: stepdeck-bench [--json]\n"
-                                 "Measures the E-LAB adapter against its simulator over a "
-                                 "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                                 "DC2 feed throughput, unpaced and paced at the line rate.\n"
-                                 "Figures only; takes 10-20 s. See docs/benchmark.md."));
+            print(stdout, QStringLiteral(
+                              "Usage: stepdeck-bench [--json]\n"
+                              "       stepdeck-bench --soak N [--model M] [--seed S] [--json]\n"
+                              "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                              "Measures the E-LAB adapter against its simulator over a "
+                              "pseudo-terminal with QSerialPort: poll rate, panic latency and "
+                              "DC2 feed throughput, unpaced and paced at the line rate.\n"
+                              "Figures only; takes 10-20 s.\n"
+                              "--soak N: N random commands with ~1 % injected faults (dropped, "
+                              "corrupted, delayed replies, noise, peer vanish) against every "
+                              "simulator (or M); counts crashes, hangs, axes left moving, lost and "
+                              "duplicated moves; exit 1 unless all are 0.\n"
+                              "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
+                              "-write); time until the host reports it.\n"
+                              "See docs/benchmark.md."));
             return 0;
         }
         if (arg != QLatin1String("--json")) {
@@ -153,9 +167,6 @@ int main(int argc, char** argv)
             return 2;
         }
     }
-    if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
-        qInstallMessageHandler(quiet);
-
     const ModelInfo* model = findModel(QStringLiteral("elab"));
     if (!model) {
         print(stderr, QStringLiteral("stepdeck-bench: model elab is not built in"));

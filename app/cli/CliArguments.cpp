@@ -1,6 +1,8 @@
 #include "CliArguments.h"
 #include "CliOutput.h"
+#include "model/NumberParsing.h"
 #include <QCoreApplication>
+#include <limits>
 
 namespace stepdeck::cli {
 
@@ -33,40 +35,49 @@ bool isOption(const QString& arg, const QString& name)
     return arg == name || arg.startsWith(name + QLatin1Char('='));
 }
 
+// Parse: (QStringView text, T* value) -> NumberError. A failure is an Outcome whose message
+// does not name the command yet.
 template <typename T, typename Parse>
-bool parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
-                          QString* error, Parse parse)
+Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
+                             Parse parse)
 {
     QMap<Axis, T> result;
     for (const QString& arg : args) {
         const int eq = arg.indexOf(QLatin1Char('='));
         const auto axis = eq > 0 ? axisFromName(QStringView(arg).left(eq)) : std::nullopt;
-        if (!axis) {
-            *error = tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg);
-            return false;
-        }
-        if (!axes.contains(*axis)) {
-            *error = tr("this machine has no axis %1").arg(axisName(*axis));
-            return false;
-        }
-        if (result.contains(*axis)) {
-            *error = tr("axis %1 given twice").arg(axisName(*axis));
-            return false;
-        }
-        bool ok = false;
-        const T value = parse(arg.mid(eq + 1).trimmed(), &ok);
-        if (!ok) {
-            *error = tr("%1: '%2' is not a number").arg(axisName(*axis), arg.mid(eq + 1));
-            return false;
+        if (!axis)
+            return Outcome::usage(tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg));
+        if (!axes.contains(*axis))
+            return Outcome::usage(tr("this machine has no axis %1").arg(axisName(*axis)));
+        if (result.contains(*axis))
+            return Outcome::usage(tr("axis %1 given twice").arg(axisName(*axis)));
+        T value{};
+        const QString text = arg.mid(eq + 1);
+        switch (parse(QStringView(text), &value)) {
+        case NumberError::None:
+            break;
+        case NumberError::Malformed:
+            return Outcome::usage(
+                tr("%1: '%2' is not a decimal number").arg(axisName(*axis), text));
+        case NumberError::NonFinite:
+            return Outcome::usage(tr("%1: '%2' is not a finite number").arg(axisName(*axis), text));
+        case NumberError::OutOfRange:
+            return Outcome::failure(ExitInvalidValue,
+                                    tr("%1: '%2' is out of range").arg(axisName(*axis), text));
         }
         result.insert(*axis, value);
     }
-    if (result.isEmpty()) {
-        *error = tr("no axis given (e.g. X=100 Y=0 Z=-50)");
-        return false;
-    }
+    if (result.isEmpty())
+        return Outcome::usage(tr("no axis given (e.g. X=100 Y=0 Z=-50)"));
     *out = result;
-    return true;
+    return Outcome::success();
+}
+
+Outcome named(const QString& command, Outcome outcome)
+{
+    if (!outcome.ok())
+        outcome.message = tr("%1: %2").arg(command, outcome.message);
+    return outcome;
 }
 } // namespace
 
@@ -83,7 +94,6 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))
         return !*matched;
-    bool ok = true;
     if (name == QLatin1String("--model")) {
         o->model = value;
     } else if (name == QLatin1String("--port")) {
@@ -98,15 +108,15 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
         }
         o->resetLine = *line;
     } else if (name == QLatin1String("--address")) {
-        const int n = value.toInt(&ok);
-        if (!ok || n < 0) {
+        int n = 0;
+        if (numbers::parseInt(value, 0, std::numeric_limits<int>::max(), &n) != NumberError::None) {
             *error = tr("--address needs a non-negative number, got '%1'").arg(value);
             return false;
         }
         o->address = n;
     } else {
-        o->connectTimeoutMs = value.toInt(&ok);
-        if (!ok || o->connectTimeoutMs <= 0) {
+        if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), &o->connectTimeoutMs) !=
+            NumberError::None) {
             *error = tr("--timeout needs a positive number of milliseconds");
             return false;
         }
@@ -185,39 +195,37 @@ QString unknownOption(const QStringList& args)
     return {};
 }
 
-bool parseAxisIntegers(const QStringList& args, const QList<Axis>& axes, AxisVector* out,
-                       QString* error)
+Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                          AxisVector* out)
 {
-    return parseAxisAssignments<qint64>(
-        args, axes, out, error, [](const QString& s, bool* ok) { return s.toLongLong(ok); });
+    return named(command,
+                 parseAxisAssignments<qint64>(args, axes, out, [](QStringView s, qint64* v) {
+                     return numbers::parseInteger(s, v);
+                 }));
 }
 
-bool parseAxisDoubles(const QStringList& args, const QList<Axis>& axes, AxisVelocities* out,
-                      QString* error)
+Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                         AxisVelocities* out)
 {
-    return parseAxisAssignments<double>(args, axes, out, error,
-                                        [](const QString& s, bool* ok) { return s.toDouble(ok); });
+    return named(command,
+                 parseAxisAssignments<double>(args, axes, out, [](QStringView s, double* v) {
+                     return numbers::parseReal(s, v);
+                 }));
 }
 
 bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error)
 {
     QMap<Axis, qint64> parsed;
-    if (!parseAxisAssignments<qint64>(
-            text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed, error,
-            [](const QString& s, bool* ok) { return s.toLongLong(ok); })) {
-        *error = tr("--axes: %1").arg(*error);
+    const Outcome read = parseAxisAssignments<qint64>(
+        text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed,
+        [](QStringView s, qint64* v) { return numbers::parseInteger(s, 0, 255, v); });
+    if (!read.ok()) {
+        *error = tr("--axes: %1 (addresses 0..255)").arg(read.message);
         return false;
     }
     QMap<Axis, int> result;
-    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it) {
-        if (it.value() < 0 || it.value() > 255) {
-            *error = tr("--axes: address %1 of axis %2 is out of range (allowed: 0..255)")
-                         .arg(it.value())
-                         .arg(axisName(it.key()));
-            return false;
-        }
+    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it)
         result.insert(it.key(), int(it.value()));
-    }
     *out = result;
     return true;
 }

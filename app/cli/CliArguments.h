@@ -1,5 +1,6 @@
 #pragma once
 #include "model/LineSettings.h"
+#include "CliOutput.h"
 #include "model/Axis.h"
 #include <QStringList>
 #include <optional>
@@ -40,11 +41,15 @@ std::optional<QString> takeOption(QStringList* args, const QString& option, QStr
 // Any leftover "--something" is a usage error.
 QString unknownOption(const QStringList& args);
 
-// "X=N Y=N" -> per-axis integers. Axes must belong to `axes`, none twice, at least one.
-bool parseAxisIntegers(const QStringList& args, const QList<Axis>& axes, AxisVector* out,
-                       QString* error);
-bool parseAxisDoubles(const QStringList& args, const QList<Axis>& axes, AxisVelocities* out,
-                      QString* error);
+// "X=N Y=N" -> per-axis integers (decimal, NumberParsing.h). Axes must belong to `axes`, none
+// twice, at least one. A failure's message starts with `command`; a malformed or non-finite
+// number ("abc", "0x40", "nan", "inf") is a usage error (exit 2), a decimal number beyond
+// what the type holds an invalid value (exit 7).
+Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                          AxisVector* out);
+// The same for decimal rates ("X=-1500.5", "Y=1e3").
+Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                         AxisVelocities* out);
 // "X=1,Y=2,Z=3" (the --axes map).
 bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error);
 

@@ -26,9 +26,7 @@ bool takeAddress(QStringList* args, const QString& option, int* value, QString* 
         return false;
     if (!text)
         return true;
-    bool ok = false;
-    *value = text->toInt(&ok);
-    if (!ok || *value < kMinAddress || *value > kMaxAddress) {
+    if (numbers::parseInt(*text, kMinAddress, kMaxAddress, value) != NumberError::None) {
         *error = tr("scan %1 needs an address within %2..%3, got '%4'")
                      .arg(option)
                      .arg(kMinAddress)

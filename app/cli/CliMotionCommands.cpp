@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QtMath>
 #include <climits>
+#include <limits>
 
 namespace stepdeck::cli {
 
@@ -14,11 +15,11 @@ QString tr(const char* text)
     return QCoreApplication::translate("stepdeck-cli", text);
 }
 
-bool parseInteger(const QString& text, qint64* value)
+// A positive number of milliseconds (--for MS, --timeout MS), decimal.
+bool parseDuration(const QString& text, qint64* ms)
 {
-    bool ok = false;
-    *value = text.toLongLong(&ok);
-    return ok;
+    return numbers::parseInteger(text, 1, std::numeric_limits<qint64>::max(), ms) ==
+           NumberError::None;
 }
 
 constexpr int kJogRenewMs = 100; // well inside the adapter's jog lease (300 ms)
@@ -64,15 +65,14 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
     if (!optionError.isEmpty())
         return Outcome::usage(optionError);
     qint64 timeoutMs = -1;
-    if (timeoutText && (!parseInteger(*timeoutText, &timeoutMs) || timeoutMs <= 0))
+    if (timeoutText && !parseDuration(*timeoutText, &timeoutMs))
         return Outcome::usage(
             tr("%1 --timeout needs a positive number of milliseconds").arg(command));
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     AxisVector steps;
-    QString error;
-    if (!parseAxisIntegers(args, c.axes(), &steps, &error))
-        return Outcome::usage(tr("%1: %2").arg(command, error));
+    if (const Outcome parsed = parseAxisIntegers(command, args, c.axes(), &steps); !parsed.ok())
+        return parsed;
     if (check) {
         if (const Outcome checked = check(steps); !checked.ok())
             return checked;
@@ -118,12 +118,24 @@ Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
     }
 }
 
-// The value of a spindle/power command checked like the schema parameter of the same meaning,
-// so the message names the parameter and its range.
-QString checkAgainstSchema(const CliContext& c, const QString& parameter, qint64 value)
+// The value of a spindle/power command, read and checked like the schema parameter of the
+// same meaning (decimal; the message names the parameter and its range). A non-finite value
+// is a usage error, anything else refused an invalid value.
+Outcome readSchemaValue(const CliContext& c, const QString& parameter, const QString& text,
+                        qint64* value)
 {
+    if (numbers::isNonFiniteWord(text))
+        return Outcome::usage(tr("%1: '%2' is not a finite number").arg(parameter, text));
     const ParameterSpec* spec = c.model->schema.find(parameter);
-    return spec ? c.model->schema.validateScalar(*spec, value) : QString();
+    if (!spec) { // the adapter says whether the model can do it at all
+        if (numbers::parseInteger(text, value) != NumberError::None)
+            return Outcome::usage(tr("'%1' is not a decimal number").arg(text));
+        return Outcome::success();
+    }
+    if (const QString e = c.model->schema.validateScalar(*spec, text); !e.isEmpty())
+        return Outcome::failure(ExitInvalidValue, e);
+    *value = c.model->schema.normalise(*spec, text).toLongLong();
+    return Outcome::success();
 }
 
 Outcome noArguments(CliContext& c, const QStringList& args, const QString& command,
@@ -195,11 +207,13 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     qint64 forMs = -1;
-    if (forText && (!parseInteger(*forText, &forMs) || forMs <= 0))
+    if (forText && !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
     AxisVector rates;
-    if (!parseAxisIntegers(args, c.axes(), &rates, &error))
-        return Outcome::usage(tr("velocity: %1").arg(error));
+    if (const Outcome parsed =
+            parseAxisIntegers(QStringLiteral("velocity"), args, c.axes(), &rates);
+        !parsed.ok())
+        return parsed;
     Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });
     if (!result.ok())
         return c.session.linkLost() ? c.session.linkLostOutcome() : result;
@@ -235,11 +249,12 @@ Outcome cmdJog(CliContext& c, QStringList args)
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     qint64 forMs = 0;
-    if (!forText || !parseInteger(*forText, &forMs) || forMs <= 0)
+    if (!forText || !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));
     AxisVelocities rates;
-    if (!parseAxisDoubles(args, c.axes(), &rates, &error))
-        return Outcome::usage(tr("jog: %1").arg(error));
+    if (const Outcome parsed = parseAxisDoubles(QStringLiteral("jog"), args, c.axes(), &rates);
+        !parsed.ok())
+        return parsed;
     const double maxSpeed = c.capabilities().maxJogSpeed;
     double fastest = 0;
     for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
@@ -313,10 +328,11 @@ Outcome cmdReset(CliContext& c, QStringList args)
 Outcome cmdSpindle(CliContext& c, QStringList args)
 {
     qint64 rpm = 0;
-    if (args.size() != 1 || !parseInteger(args.first(), &rpm))
+    if (args.size() != 1)
         return Outcome::usage(tr("spindle needs one RPM value, e.g. `spindle 500`"));
-    if (const QString e = checkAgainstSchema(c, QStringLiteral("spindle-rpm"), rpm); !e.isEmpty())
-        return Outcome::failure(ExitInvalidValue, e);
+    if (const Outcome read = readSchemaValue(c, QStringLiteral("spindle-rpm"), args.first(), &rpm);
+        !read.ok())
+        return read;
     return connectAndRun(c, [&](ControllerSession& s) { return s.setSpindle(int(rpm)); });
 }
 
@@ -332,11 +348,12 @@ Outcome cmdCoolant(CliContext& c, QStringList args)
 Outcome cmdPower(CliContext& c, QStringList args)
 {
     qint64 percent = 0;
-    if (args.size() != 1 || !parseInteger(args.first(), &percent))
+    if (args.size() != 1)
         return Outcome::usage(tr("power needs one PERCENT value, e.g. `power 66`"));
-    if (const QString e = checkAgainstSchema(c, QStringLiteral("drive-power"), percent);
-        !e.isEmpty())
-        return Outcome::failure(ExitInvalidValue, e);
+    if (const Outcome read =
+            readSchemaValue(c, QStringLiteral("drive-power"), args.first(), &percent);
+        !read.ok())
+        return read;
     return connectAndRun(c, [&](ControllerSession& s) { return s.setDrivePower(int(percent)); });
 }
 

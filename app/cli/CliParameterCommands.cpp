@@ -78,8 +78,12 @@ Outcome cmdSet(CliContext& c, QStringList args)
         QString name;
         ParameterValue value;
         QString error;
-        if (!schema.parseAssignment(arg, axes, &name, &value, &error))
-            return Outcome::failure(ExitInvalidValue, error);
+        NumberError numberError = NumberError::None;
+        if (!schema.parseAssignment(arg, axes, &name, &value, &error, &numberError)) {
+            // nan/inf are no value of any parameter: a usage error like anywhere else.
+            return Outcome::failure(
+                numberError == NumberError::NonFinite ? ExitUsage : ExitInvalidValue, error);
+        }
         if (set.contains(name))
             return Outcome::usage(tr("parameter %1 given twice").arg(name));
         set.insert(name, value);

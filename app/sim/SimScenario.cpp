@@ -1,8 +1,10 @@
 #include "SimScenario.h"
+#include "model/NumberParsing.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
+#include <limits>
 
 namespace stepdeck::simapp {
 
@@ -44,8 +46,8 @@ bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* er
     bool okMax = false;
     LimitRange limit;
     if (range.size() == 2) {
-        limit.minimum = range[0].toLongLong(&okMin);
-        limit.maximum = range[1].toLongLong(&okMax);
+        okMin = numbers::parseInteger(range[0], &limit.minimum) == NumberError::None;
+        okMax = numbers::parseInteger(range[1], &limit.maximum) == NumberError::None;
     }
     if (!axis || !okMin || !okMax || limit.minimum >= limit.maximum) {
         *error = tr("--limit expects AXIS=MIN:MAX with MIN < MAX, e.g. X=-1000:1000, got '%1'")
@@ -60,13 +62,65 @@ bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* 
 {
     const int eq = text.indexOf(QLatin1Char('='));
     const auto axis = eq > 0 ? axisFromName(QStringView(text).left(eq)) : std::nullopt;
-    bool ok = false;
-    const qint64 steps = text.mid(eq + 1).toLongLong(&ok);
+    qint64 steps = 0;
+    const bool ok = numbers::parseInteger(text.mid(eq + 1), &steps) == NumberError::None;
     if (!axis || !ok) {
         *error = tr("--position expects AXIS=STEPS, e.g. X=500, got '%1'").arg(text);
         return false;
     }
     positions->insert(*axis, steps);
+    return true;
+}
+// "--drop 0.01": a probability 0..1, decimal.
+bool parseProbability(const QString& option, const QString& text, double* value, QString* error)
+{
+    if (numbers::parseReal(text, value) != NumberError::None || *value < 0 || *value > 1) {
+        *error = tr("%1 expects a probability from 0 to 1 (e.g. 0.01), got '%2'").arg(option, text);
+        return false;
+    }
+    return true;
+}
+
+// --drop, --corrupt, --noise, --freeze-after, --seed; *matched tells whether name was one.
+bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
+                      bool* matched, QString* error)
+{
+    static const QStringList names{"--drop", "--corrupt", "--noise", "--freeze-after", "--seed"};
+    *matched = names.contains(name);
+    QString value;
+    if (!*matched)
+        return true;
+    if (!takeValue(args, i, &value, error))
+        return false;
+    if (name == QLatin1String("--drop"))
+        return parseProbability(name, value, &s->dropProbability, error);
+    if (name == QLatin1String("--corrupt"))
+        return parseProbability(name, value, &s->corruptProbability, error);
+    if (name == QLatin1String("--noise")) {
+        if (numbers::parseReal(value, &s->noiseBytesPerSecond) != NumberError::None ||
+            s->noiseBytesPerSecond < 0 || s->noiseBytesPerSecond > 100000) {
+            *error = tr("--noise expects bytes per second from 0 to 100000, got '%1'").arg(value);
+            return false;
+        }
+        return true;
+    }
+    if (name == QLatin1String("--freeze-after")) {
+        if (numbers::parseInteger(value, 0, std::numeric_limits<int>::max(), &s->freezeAfterMs) !=
+            NumberError::None) {
+            *error = tr("--freeze-after expects milliseconds (0 or more), got '%1'").arg(value);
+            return false;
+        }
+        return true;
+    }
+    qint64 seed = 0;
+    if (numbers::parseInteger(value, 0, std::numeric_limits<quint32>::max(), &seed) !=
+        NumberError::None) {
+        *error = tr("--seed expects a number from 0 to %1, got '%2'")
+                     .arg(std::numeric_limits<quint32>::max())
+                     .arg(value);
+        return false;
+    }
+    s->seed = quint32(seed);
     return true;
 }
 } // namespace
@@ -77,6 +131,11 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
     for (int i = 0; i < args.size(); ++i) {
         const QString name = optionName(args.at(i));
         QString value;
+        bool fault = false;
+        if (!parseFaultOption(name, args, &i, &s, &fault, error))
+            return false;
+        if (fault)
+            continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
         } else if (name == QLatin1String("--pace")) {
@@ -90,23 +149,22 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
             if (!takeValue(args, &i, &value, error))
                 return false;
             for (const QString& part : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-                bool ok = false;
-                const int address = part.toInt(&ok);
-                if (!ok || address < 0) {
+                int address = 0;
+                if (numbers::parseInt(part, 0, 255, &address) != NumberError::None) {
                     *error = tr("--drives expects addresses like 1,2,3, got '%1'").arg(value);
                     return false;
                 }
                 s.drives << address;
             }
         } else if (name == QLatin1String("--temperature")) {
-            bool ok = false;
             if (!takeValue(args, &i, &value, error))
                 return false;
-            s.temperature = value.toInt(&ok);
-            if (!ok) {
+            int celsius = 0;
+            if (numbers::parseInt(value, -273, 1000, &celsius) != NumberError::None) {
                 *error = tr("--temperature expects whole degrees Celsius, got '%1'").arg(value);
                 return false;
             }
+            s.temperature = celsius;
         } else if (name == QLatin1String("--limit")) {
             if (!takeValue(args, &i, &value, error) || !parseLimit(value, &s.limits, error))
                 return false;
@@ -127,6 +185,8 @@ QString simUsage()
     return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [--pace] [--setup-complete]\n"
               "                    [--temperature C] [--limit AXIS=MIN:MAX]... [--position "
               "AXIS=STEPS]...\n"
+              "                    [--drop P] [--corrupt P] [--noise BYTES_PER_S]\n"
+              "                    [--freeze-after MS] [--seed N]\n"
               "\n"
               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
@@ -140,7 +200,24 @@ QString simUsage()
               "                     (the board powers on with setup incomplete)\n"
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on\n");
+              "  --position AXIS=STEPS  where the carriage stands at power-on\n"
+              "\n"
+              "Faults (random, reproducible with the same --seed and the same traffic):\n"
+              "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
+              "  --corrupt P        each reply has one random byte replaced with probability P\n"
+              "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
+              "                     inside replies\n"
+              "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
+              "                     all while the terminal stays open (a frozen peer)\n"
+              "  --seed N           seed of the fault generator (default 1)\n");
+}
+
+void applyFaults(const SimScenario& scenario, Simulator* simulator)
+{
+    simulator->faults().dropProbability = scenario.dropProbability;
+    simulator->faults().corruptProbability = scenario.corruptProbability;
+    simulator->setNoise(scenario.noiseBytesPerSecond);
+    simulator->freezeAfter(scenario.freezeAfterMs);
 }
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)

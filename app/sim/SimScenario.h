@@ -25,6 +25,12 @@ struct SimScenario
     std::optional<int> temperature;
     QMap<Axis, LimitRange> limits;
     QMap<Axis, qint64> positions;
+    // Faults (issue 12), reproducible through the seed.
+    double dropProbability = 0;
+    double corruptProbability = 0;
+    double noiseBytesPerSecond = 0;
+    qint64 freezeAfterMs = -1;
+    quint32 seed = 1;
     bool help = false;
 };
 
@@ -35,5 +41,8 @@ QString simUsage();
 // simulator that is not attached yet: its replies to the setup commands go nowhere.
 // Returns false and says why when the model does not support an option.
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error);
+// Switches the scenario's faults on. Call after applyScenario(), so that the setup replies
+// neither draw random faults nor start the freeze clock.
+void applyFaults(const SimScenario& scenario, Simulator* simulator);
 
 } // namespace stepdeck::simapp

@@ -50,12 +50,14 @@ int main(int argc, char** argv)
     options.addresses = scenario.drives;
     options.paceOutput = scenario.pace;
     options.line = model->line;
+    options.seed = scenario.seed;
     Simulator* simulator = model->createSimulator(options);
     simulator->setParent(&application);
     if (!simapp::applyScenario(scenario, simulator, &error)) {
         printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(error));
         return 2;
     }
+    simapp::applyFaults(scenario, simulator);
 
     PtyEndpoint endpoint;
     if (!endpoint.create(&error)) {

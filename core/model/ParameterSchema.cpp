@@ -1,4 +1,5 @@
 #include "ParameterSchema.h"
+#include "NumberParsing.h"
 #include <QCoreApplication>
 #include <QJsonValue>
 
@@ -10,6 +11,14 @@ QString tr(const char* text)
     return QCoreApplication::translate("ParameterSchema", text);
 }
 
+// How an integer value's text failed to be a number at all (None: it is one, perhaps outside
+// the parameter's range).
+void readingProblem(const ParameterSpec& spec, const QString& raw, NumberError* numberError)
+{
+    qint64 ignored = 0;
+    if (numberError && spec.type == ParameterType::Integer)
+        *numberError = numbers::parseInteger(raw, &ignored);
+}
 } // namespace
 
 QString ParameterSchema::rangeText(const ParameterSpec& spec)
@@ -48,18 +57,9 @@ QVariant ParameterSchema::normalise(const ParameterSpec& spec, const QVariant& v
 {
     switch (spec.type) {
     case ParameterType::Integer: {
-        bool ok = false;
         qint64 v = 0;
-        if (value.typeId() == QMetaType::QString) {
-            v = value.toString().trimmed().toLongLong(&ok, 0);
-        } else if (value.typeId() == QMetaType::Double) {
-            const double d = value.toDouble();
-            ok = d == double(qint64(d));
-            v = qint64(d);
-        } else if (value.canConvert<qint64>() && value.typeId() != QMetaType::Bool) {
-            v = value.toLongLong(&ok);
-        }
-        return ok ? QVariant(v) : QVariant();
+        return numbers::integerFromVariant(value, &v) == NumberError::None ? QVariant(v)
+                                                                           : QVariant();
     }
     case ParameterType::Boolean: {
         if (value.typeId() == QMetaType::Bool)
@@ -85,14 +85,29 @@ QVariant ParameterSchema::normalise(const ParameterSpec& spec, const QVariant& v
 
 QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVariant& value) const
 {
-    const QVariant v = normalise(spec, value);
-    if (!v.isValid() || (spec.type == ParameterType::Integer &&
-                         (v.toLongLong() < spec.minimum || v.toLongLong() > spec.maximum))) {
-        return tr("%1: value '%2' is out of range (allowed: %3%4)")
-            .arg(spec.name, value.toString(), rangeText(spec),
-                 spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + spec.unit);
+    const QString range = rangeText(spec);
+    const QString unit = spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + spec.unit;
+    if (spec.type == ParameterType::Integer) {
+        qint64 v = 0;
+        switch (numbers::integerFromVariant(value, &v)) {
+        case NumberError::None:
+            if (v >= spec.minimum && v <= spec.maximum)
+                return {};
+            break;
+        case NumberError::Malformed:
+            return tr("%1: '%2' is not a decimal integer (allowed: %3%4)")
+                .arg(spec.name, value.toString(), range, unit);
+        case NumberError::NonFinite:
+            return tr("%1: '%2' is not a finite number (allowed: %3%4)")
+                .arg(spec.name, value.toString(), range, unit);
+        case NumberError::OutOfRange:
+            break;
+        }
+    } else if (normalise(spec, value).isValid()) {
+        return {};
     }
-    return {};
+    return tr("%1: value '%2' is out of range (allowed: %3%4)")
+        .arg(spec.name, value.toString(), range, unit);
 }
 
 QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& axes) const
@@ -126,8 +141,11 @@ QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& ax
 }
 
 bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
-                                      ParameterValue* value, QString* error) const
+                                      ParameterValue* value, QString* error,
+                                      NumberError* numberError) const
 {
+    if (numberError)
+        *numberError = NumberError::None;
     const int eq = text.indexOf(QLatin1Char('='));
     if (eq <= 0) {
         *error = tr("expected NAME=VALUE, got '%1'").arg(text);
@@ -157,6 +175,7 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
             const QString err = validateScalar(*spec, raw);
             if (!err.isEmpty()) {
                 *error = QStringLiteral("%1 (%2)").arg(err, axisName(axes[i]));
+                readingProblem(*spec, raw, numberError);
                 return false;
             }
             out.perAxis.insert(axes[i], normalise(*spec, raw));
@@ -169,6 +188,7 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
         const QString err = validateScalar(*spec, parts[0]);
         if (!err.isEmpty()) {
             *error = err;
+            readingProblem(*spec, parts[0], numberError);
             return false;
         }
         out.global = normalise(*spec, parts[0]);

@@ -1,5 +1,6 @@
 #pragma once
 #include "Axis.h"
+#include "NumberParsing.h"
 #include <QJsonObject>
 #include <QStringList>
 #include <QVariant>
@@ -57,11 +58,16 @@ public:
     // Checks every entry of a set (unknown names, per-axis shape, type, range, writability).
     QString validate(const ParameterSet& set, const QList<Axis>& axes) const;
     // Normalises a scalar to its canonical type (qint64, bool or QString); invalid -> null.
+    // Integers: decimal text only ("0100" is 100, "0x40" invalid), doubles only when finite,
+    // whole and within qint64 (NumberParsing.h).
     QVariant normalise(const ParameterSpec& spec, const QVariant& value) const;
 
-    // "NAME=V[,V,V]" as typed on the CLI; per-axis values in the order of `axes`.
+    // "NAME=V[,V,V]" as typed on the CLI; per-axis values in the order of `axes`. Numbers
+    // are decimal (NumberParsing.h). On a refused integer value, *numberError (if given) says
+    // whether its text was a number at all (None: it was, but outside the range).
     bool parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
-                         ParameterValue* value, QString* error) const;
+                         ParameterValue* value, QString* error,
+                         NumberError* numberError = nullptr) const;
     QString formatValue(const ParameterSpec& spec, const ParameterValue& value) const;
     // "0..65535", "on|off" or "high|low": what a value may be, for messages and listings.
     static QString rangeText(const ParameterSpec& spec);

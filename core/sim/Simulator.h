@@ -2,6 +2,7 @@
 #include "model/LineSettings.h"
 #include <QElapsedTimer>
 #include <QObject>
+#include <QRandomGenerator>
 #include <QTimer>
 
 namespace stepdeck {
@@ -25,6 +26,24 @@ struct SimulatorFaults
     bool silent = false;    // answers nothing at all
     int forceNak = 0;       // the next N commands answered by ACK/NAK get NAK and are not
                             // executed (honoured by the model simulators; requests unaffected)
+
+    // Random faults per reply, drawn from a generator seeded with SimulatorOptions::seed, so
+    // the same seed and the same traffic give the same faults (stepdeck-sim --drop/--corrupt).
+    double dropProbability = 0;    // the reply is not sent
+    double corruptProbability = 0; // one random byte of the reply is replaced by another
+    double delayProbability = 0;   // the reply is held back 1..delayMaxMs
+    int delayMaxMs = 0;
+};
+
+// What the injected faults did so far (for soak runs and --help-less reproduction reports).
+struct SimulatorFaultCounts
+{
+    qint64 replies = 0; // replies that reached send()
+    qint64 dropped = 0;
+    qint64 corrupted = 0;
+    qint64 delayed = 0;
+    qint64 noiseBytes = 0;
+    bool frozen = false;
 };
 
 // The device side of a protocol (like QGroundControl's MockLink). It receives host bytes and
@@ -47,6 +66,16 @@ public:
     void setFaults(const SimulatorFaults& faults) { m_faults = faults; }
     void setPacing(bool enabled, const LineSettings& line);
     qint64 bytesPending() const { return m_paced.size(); }
+
+    // Line noise: random bytes (any value) sent unasked at this mean rate, between and
+    // inside replies as they happen to fall; 0 ends it. Not affected by `silent`: the line
+    // is noisy whether the device talks or not.
+    void setNoise(double bytesPerSecond);
+    double noise() const { return m_noiseRate; }
+    // A frozen peer: answers normally for `ms` from its next reply on, then nothing at all
+    // (faults().silent) while the port stays open. Negative: never (and unfreezes).
+    void freezeAfter(qint64 ms);
+    const SimulatorFaultCounts& faultCounts() const { return m_counts; }
 
     // What this device received: every complete frame its codec decoded, in order (the newest
     // kReceivedLogSize). Safety tests assert on these, never only on the host's own state.
@@ -73,6 +102,8 @@ protected:
 private:
     void emitPaced(const QByteArray& bytes);
     void releasePaced();
+    bool chance(double probability);
+    void emitNoise();
 
     SimulatorOptions m_options;
     SimulatorFaults m_faults;
@@ -82,6 +113,16 @@ private:
     QElapsedTimer m_paceClock;
     double m_paceCredit = 0; // characters the line may still carry
     qint64 m_lastReleaseUs = 0;
+
+    QRandomGenerator m_faultRng; // per-reply decisions
+    QRandomGenerator m_noiseRng; // noise bytes: independent of the reply traffic
+    SimulatorFaultCounts m_counts;
+    double m_noiseRate = 0;
+    double m_noiseCredit = 0;
+    QTimer m_noiseTimer{this};
+    QElapsedTimer m_noiseClock;
+    qint64 m_freezeAfterMs = -1;
+    QTimer m_freezeTimer{this};
 };
 
 } // namespace stepdeck

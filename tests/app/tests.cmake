@@ -7,3 +7,10 @@ stepdeck_add_test(tst_peer_vanish SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_peer_van
 stepdeck_add_test(tst_cli_safety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_safety.cpp
                   LABELS integration TIMEOUT 600)
 add_dependencies(tst_cli_safety stepdeck-cli)
+stepdeck_add_test(tst_sim_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sim_e2e.cpp
+                  LABELS integration)
+add_dependencies(tst_sim_e2e stepdeck-cli stepdeck-sim)
+# Not a timed test: a short soak and replug run must finish without crash, hang or moving axes.
+stepdeck_add_test(tst_soak_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_soak_smoke.cpp
+                  LABELS integration TIMEOUT 600)
+add_dependencies(tst_soak_smoke stepdeck-bench)

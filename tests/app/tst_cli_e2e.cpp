@@ -31,6 +31,8 @@ private Q_SLOTS:
     void set_rampParameters_clearsSetupIncomplete();
     void set_outOfRange_failsNamingParameterAndRange_data();
     void set_outOfRange_failsNamingParameterAndRange();
+    void numbers_decimalOnly_nonFiniteIsUsage_data();
+    void numbers_decimalOnly_nonFiniteIsUsage();
     void move_afterSetup_printsEndPositionsAndIdle();
     void move_positions_doNotOutliveTheSession();
     void exportImport_roundTrip_writesTheSetup();
@@ -243,6 +245,58 @@ void TestCliEndToEnd::set_outOfRange_failsNamingParameterAndRange()
     QVERIFY(run.out.isEmpty());
 }
 
+// Issue 12: "0100" was octal (64 %), "0x40" hex, "jog X=nan" exited 0. Values are decimal;
+// anything else is an invalid value (7), a non-finite number a usage error (2).
+void TestCliEndToEnd::numbers_decimalOnly_nonFiniteIsUsage_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("needle"); // on stdout for exit 0, else the one stderr line
+    QTest::newRow("0100 is one hundred")
+        << QStringList{"set", "drive-power=0100"} << 0 << "drive-power=100";
+    QTest::newRow("010 is ten") << QStringList{"set", "drive-power=010"} << 0 << "drive-power=10";
+    QTest::newRow("per axis with leading zeros")
+        << QStringList{"set", "start-speed=0100,020,0003"} << 0 << "start-speed=100,20,3";
+    QTest::newRow("hex refused") << QStringList{"set", "drive-power=0x40"} << 7
+                                 << "not a decimal integer";
+    QTest::newRow("set nan") << QStringList{"set", "drive-power=nan"} << 2 << "not a finite number";
+    QTest::newRow("set inf on one axis")
+        << QStringList{"set", "max-speed=100,inf,100"} << 2 << "not a finite number";
+    QTest::newRow("jog nan") << QStringList{"jog", "X=nan", "--for", "200"} << 2
+                             << "not a finite number";
+    QTest::newRow("jog inf") << QStringList{"jog", "X=inf", "--for", "200"} << 2
+                             << "not a finite number";
+    QTest::newRow("jog -Infinity")
+        << QStringList{"jog", "Y=-Infinity", "--for", "200"} << 2 << "not a finite number";
+    QTest::newRow("jog beyond double")
+        << QStringList{"jog", "X=1e400", "--for", "200"} << 7 << "out of range";
+    QTest::newRow("velocity nan") << QStringList{"velocity", "X=nan", "--for", "200"} << 2
+                                  << "not a finite number";
+    QTest::newRow("move hex") << QStringList{"move", "X=0x40"} << 2 << "not a decimal number";
+    QTest::newRow("move beyond 64 bits")
+        << QStringList{"move", "X=99999999999999999999"} << 7 << "out of range";
+    QTest::newRow("power hex") << QStringList{"power", "0x40"} << 7 << "not a decimal integer";
+    QTest::newRow("power nan") << QStringList{"power", "nan"} << 2 << "not a finite number";
+    QTest::newRow("jog --for hex") << QStringList{"jog", "X=10", "--for", "0x10"} << 2 << "--for";
+}
+
+void TestCliEndToEnd::numbers_decimalOnly_nonFiniteIsUsage()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    QFETCH(QString, needle);
+    const Run run = cli(args);
+    QVERIFY2(run.exitCode == exitCode,
+             qPrintable(QStringLiteral("exit %1: %2").arg(run.exitCode).arg(run.err.constData())));
+    if (exitCode == 0) {
+        QVERIFY2(run.out.contains(needle.toUtf8()), run.out.constData());
+    } else {
+        QCOMPARE(run.err.count('\n'), 1);
+        QVERIFY2(run.err.contains(needle.toUtf8()), run.err.constData());
+        QVERIFY(run.out.isEmpty());
+    }
+}
+
 void TestCliEndToEnd::move_afterSetup_printsEndPositionsAndIdle()
 {
     QCOMPARE(cli({"set", "start-speed=200", "max-speed=4000", "acceleration=2000"}).exitCode, 0);
@@ -315,6 +369,9 @@ void TestCliEndToEnd::import_brokenFile_refusedAndNothingWritten_data()
     QTest::newRow("out of range") << head + R"(,"drive-power":250}})" << 7 << "drive-power";
     QTest::newRow("unknown parameter") << head + R"(,"warp-speed":9}})" << 7 << "warp-speed";
     QTest::newRow("missing axis") << head + R"(,"feed-speed":{"X":50,"Y":50}}})" << 7 << "axis Z";
+    QTest::newRow("huge number") << head + R"(,"drive-power":1e300}})" << 7 << "out of range";
+    QTest::newRow("hex text") << head + R"(,"drive-power":"0x40"}})" << 7
+                              << "not a decimal integer";
     QTest::newRow("other model") << QByteArray(head).replace("\"elab\"", "\"nanotec\"") + "}}" << 7
                                  << "nanotec";
 }
@@ -366,7 +423,8 @@ void TestCliEndToEnd::usageErrors_exitTwoWithOneLine_data()
     QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command";
     QTest::newRow("unknown option") << QStringList{"status", "--bogus"} << "unknown option";
     QTest::newRow("no command") << QStringList{} << "no command";
-    QTest::newRow("axis value not a number") << QStringList{"move", "X=abc"} << "not a number";
+    QTest::newRow("axis value not a number")
+        << QStringList{"move", "X=abc"} << "not a decimal number";
     QTest::newRow("jog without duration") << QStringList{"jog", "X=100"} << "--for";
     QTest::newRow("unknown model") << QStringList{"--model", "nope", "status"} << "nope";
     QTest::newRow("set with only --no-verify") << QStringList{"set", "--no-verify"} << "set needs";

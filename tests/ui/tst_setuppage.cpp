@@ -109,6 +109,14 @@ void TestSetupPage::write_firstTime_sendsEveryParameterWithExactBytes_data()
     QTest::newRow("drive power") << QStringLiteral("drive-power") << QStringList{"50"}
                                  << QByteArray("\x02"
                                                "32");
+    // Issue 12: a leading zero made the value octal ("0100" wrote 64 %). Decimal, always.
+    QTest::newRow("leading zeros are decimal")
+        << QStringLiteral("drive-power") << QStringList{"0100"}
+        << QByteArray("\x02"
+                      "64");
+    QTest::newRow("per-axis leading zeros")
+        << QStringLiteral("start-speed") << QStringList{"0100", "00100", "+100"}
+        << QByteArray("\x1bS0064,0064;0064.");
 }
 
 void TestSetupPage::write_firstTime_sendsEveryParameterWithExactBytes()
@@ -154,6 +162,9 @@ void TestSetupPage::outOfRange_cannotBeWrittenAndSaysWhy_data()
     QTest::newRow("negative speed") << QStringLiteral("max-speed") << QStringLiteral("-5");
     QTest::newRow("not a number") << QStringLiteral("acceleration") << QStringLiteral("fast");
     QTest::newRow("power above 100") << QStringLiteral("drive-power") << QStringLiteral("101");
+    QTest::newRow("hex") << QStringLiteral("drive-power") << QStringLiteral("0x40");
+    QTest::newRow("exponent") << QStringLiteral("max-speed") << QStringLiteral("1e3");
+    QTest::newRow("nan") << QStringLiteral("acceleration") << QStringLiteral("nan");
     QTest::newRow("empty") << QStringLiteral("feed-speed") << QString();
 }
 

@@ -328,6 +328,25 @@ QByteArray velocityMove(const Triple<qint16>& v)
 }
 } // namespace encode
 
+namespace encodeReply {
+QByteArray machineState(quint16 word)
+{
+    return QByteArray(1, ctrl::ENQ) + hex(word, 4) + '#';
+}
+QByteArray axeState(quint8 byte)
+{
+    return QByteArray(1, ctrl::HT) + hex(byte, 2) + '#';
+}
+QByteArray temperature(quint8 celsius)
+{
+    return QByteArray(1, ctrl::ETB) + hex(celsius, 2) + '#';
+}
+QByteArray relPosition(const Triple<qint32>& remaining)
+{
+    return triple(ctrl::ETX, remaining, 8);
+}
+} // namespace encodeReply
+
 // ---------------------------------------------------------------- ReplyDecoder
 
 QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
@@ -479,8 +498,10 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
             tryParse();
             continue;
         }
-        if (c == ' ' && !m_buffer.isEmpty() && isControl(m_buffer.at(0)))
-            continue; // the manual's own examples have spaces ("<SO>FF, FF;00."): tolerate them
+        if (c == ' ' && !m_buffer.isEmpty() && isControl(m_buffer.at(0))) {
+            ++m_unframed; // the manual's own examples have spaces ("<SO>FF, FF;00."): tolerated
+            continue;
+        }
         m_buffer.append(c);
         if (!isControl(m_buffer.at(0))) {
             if (m_buffer.size() >= kMaxFrame)

@@ -129,6 +129,14 @@ QByteArray referenceMove(const Triple<qint16>& directions);         // <US>FFFF,
 QByteArray velocityMove(const Triple<qint16>& stepsPerS);           // <CAN>FC18,0000;03E9.
 } // namespace encode
 
+// ---- controller -> host encoders ("Allgemeine Befehle"; the simulator's replies) ----
+namespace encodeReply {
+QByteArray machineState(quint16 word);                   // <ENQ>0080#
+QByteArray axeState(quint8 byte);                        // <HT>05#
+QByteArray temperature(quint8 celsius);                  // <ETB>19#
+QByteArray relPosition(const Triple<qint32>& remaining); // <ETX>00000000,FFFFFF9C;00000000.
+} // namespace encodeReply
+
 // ---- controller -> host replies ----
 struct Reply
 {
@@ -158,7 +166,7 @@ struct Reply
 class ReplyDecoder
 {
 public:
-    static constexpr int kMaxFrame = 27; // <ETX>8 hex,8 hex;8 hex.
+    static constexpr int kMaxFrame = 28; // <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ. (1 + 27 bytes)
     QList<Reply> feed(const QByteArray& bytes);
     void reset()
     {
@@ -196,10 +204,15 @@ public:
     static constexpr int kMaxFrame = 28;
     QList<Command> feed(const QByteArray& bytes);
     void reset();
+    int buffered() const { return int(m_buffer.size()); }
+    // Bytes consumed that no command's raw carries: the blanks tolerated inside parameters.
+    // Every byte fed is in a raw, in buffered() or counted here.
+    qint64 unframedBytes() const { return m_unframed; }
 
 private:
     QList<Command> m_out;
     QByteArray m_buffer;
+    qint64 m_unframed = 0;
     bool m_expectStepByte = false; // after DC2 the next byte is raw data
     void complete(bool valid, const QString& error = {});
     bool tryParse(); // true when m_buffer holds a complete frame (emitted)

@@ -9,11 +9,6 @@ namespace stepdeck::elab {
 namespace {
 constexpr int kTickMs = 5;              // motion update interval while something moves
 constexpr double kSliceSeconds = 0.002; // axes and stream advance together in slices this long
-
-QByteArray hex(quint64 value, int digits)
-{
-    return QByteArray::number(value, 16).toUpper().rightJustified(digits, '0').right(digits);
-}
 } // namespace
 
 ElabSimulator::ElabSimulator(const SimulatorOptions& options, QObject* parent)
@@ -87,6 +82,7 @@ void ElabSimulator::handle(const Command& cmd)
         ok = execute(cmd, &why);
     }
     if (ok) {
+        journal(cmd);
         ack();
     } else {
         m_lastNakReason = why;
@@ -97,18 +93,34 @@ void ElabSimulator::handle(const Command& cmd)
     updateTimer();
 }
 
+void ElabSimulator::journal(const Command& cmd)
+{
+    // FastMove XYZ <EOT>, XY <FF> (X, Y) and Z <BS> (Z only): the values in axis order.
+    QList<Axis> axes;
+    if (cmd.code == ctrl::EOT)
+        axes = {Axis::X, Axis::Y, Axis::Z};
+    else if (cmd.code == ctrl::FF)
+        axes = {Axis::X, Axis::Y};
+    else if (cmd.code == ctrl::BS)
+        axes = {Axis::Z};
+    for (int i = 0; i < axes.size(); ++i) {
+        if (cmd.values[size_t(i)] != 0)
+            m_acceptedMoves.append({axes[i], cmd.values[size_t(i)]});
+    }
+}
+
 // Requests answer with data (or nothing) and never take part in forced NAKs.
 bool ElabSimulator::handleRequest(const Command& cmd)
 {
     switch (cmd.code) {
     case ctrl::ENQ: // RequestMachineState: <ENQ>BBBB#
-        send(QByteArray(1, ctrl::ENQ) + hex(machineState(), 4) + '#');
+        send(encodeReply::machineState(machineState()));
         return true;
     case ctrl::HT: // RequestAxeState: <HT>BB#
-        send(QByteArray(1, ctrl::HT) + hex(axeState(), 2) + '#');
+        send(encodeReply::axeState(axeState()));
         return true;
     case ctrl::ETB: // RequestTemperature: <ETB>TT#
-        send(QByteArray(1, ctrl::ETB) + hex(quint8(m_temperature), 2) + '#');
+        send(encodeReply::temperature(quint8(m_temperature)));
         return true;
     case ctrl::ETX: { // RequestRelPosition: <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
         // Interpretation: ForceStopMove says "ist diesem die noch verbleibenden Schritte des
@@ -117,11 +129,10 @@ bool ElabSimulator::handleRequest(const Command& cmd)
         // steps of the last FastMove (or FeedSteps) not executed: 0 after a completed move,
         // target minus reached after a stop, limit or panic; cleared by SetClearPosition and
         // by a new move of the axis. The absolute position stays internal (no reply has it).
-        QByteArray reply(1, ctrl::ETX);
-        const char separators[3] = {',', ';', '.'};
-        for (int i = 0; i < 3; ++i)
-            reply += hex(quint32(qint32(m_axes[size_t(i)].remaining())), 8) + separators[i];
-        send(reply);
+        Triple<qint32> remaining{};
+        for (size_t i = 0; i < 3; ++i)
+            remaining[i] = qint32(m_axes[i].remaining());
+        send(encodeReply::relPosition(remaining));
         return true;
     }
     case ctrl::LF: { // RequestStart: <ACK> pressed, <NAK> not (and notes 1, 2 of the table)

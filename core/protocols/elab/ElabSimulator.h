@@ -79,6 +79,14 @@ public:
     bool streamHostPaused() const { return m_stream.hostPaused(); }
     bool isTicking() const { return m_tick.isActive(); }
     qint64 commandsReceived() const { return m_commands; }
+    // Positioning moves (FastMove XY/XYZ/Z) the board accepted with ACK, per axis, in order:
+    // soak runs compare them with the moves the host was told succeeded.
+    struct AcceptedMove
+    {
+        Axis axis;
+        qint64 steps;
+    };
+    const QList<AcceptedMove>& acceptedMoves() const { return m_acceptedMoves; }
     QString lastNakReason() const { return m_lastNakReason; } // why the last NAK was sent
 
 private:
@@ -90,6 +98,7 @@ private:
     bool handleRequest(const Command& cmd);
     bool refusedByNotes(const Command& cmd, QString* why) const;
     bool execute(const Command& cmd, QString* why);
+    void journal(const Command& accepted);
     void ack() { send(QByteArray(1, ctrl::ACK)); }
     void nak() { send(QByteArray(1, ctrl::NAK)); }
 
@@ -133,6 +142,7 @@ private:
     bool m_startButton = false;
     bool m_panicButton = false;
     qint64 m_commands = 0;
+    QList<AcceptedMove> m_acceptedMoves;
     QString m_lastNakReason;
     char m_dropReplyTo = 0;
 };

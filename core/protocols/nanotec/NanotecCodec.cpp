@@ -170,6 +170,9 @@ std::optional<qint64> RecordData::value(char cmd) const
     return std::nullopt;
 }
 
+// Section 4's table names repetitions 'w', but 6.14, the command index and the example reply
+// of 6.4 ("...W+1P+0N+0") all say 'W', and no command 'w' exists: we read the table's 'w' as
+// a typo for 'W'.
 const QByteArray& recordFieldOrder()
 {
     static const QByteArray order("psuonbdtWPN");

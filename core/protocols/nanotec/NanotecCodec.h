@@ -132,11 +132,16 @@ public:
     QList<Reply> feed(const QByteArray& bytes);
     void reset();
     int buffered() const { return int(m_buffer.size()); }
+    // Bytes consumed that no reply's raw carries: the CR terminators, line feeds and idle
+    // zeros between frames, the dropped tail of an overlong frame. Every byte fed is in a
+    // raw, in buffered() or counted here.
+    qint64 unframedBytes() const { return m_unframed; }
     static Reply parse(const QByteArray& frame); // one frame without CR
 
 private:
     QByteArray m_buffer;
     bool m_discarding = false; // an overlong frame: drop until the next CR
+    qint64 m_unframed = 0;
 };
 
 // ---- host -> drive, decoded on the device side (simulator, console) ----
@@ -158,10 +163,15 @@ public:
     static constexpr int kMaxFrame = 96;
     QList<Command> feed(const QByteArray& bytes);
     void reset();
+    int buffered() const { return int(m_buffer.size()); }
+    // Bytes consumed that no command's raw carries: bytes before a '#' and the dropped tail of
+    // an overlong frame. Every byte fed is in a raw, in buffered() or counted here.
+    qint64 unframedBytes() const { return m_unframed; }
 
 private:
     QByteArray m_buffer;
     bool m_inFrame = false;
+    qint64 m_unframed = 0;
 };
 
 } // namespace stepdeck::nanotec

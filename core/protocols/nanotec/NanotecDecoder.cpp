@@ -15,11 +15,6 @@ bool isDigit(char c)
     return c >= '0' && c <= '9';
 }
 
-bool isLetter(char c)
-{
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
-}
-
 int leadingDigits(const QByteArray& text, int from = 0)
 {
     int n = from;
@@ -88,7 +83,15 @@ Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
         return r;
     }
     const int digits = leadingDigits(body, 1);
-    r.record = digits > 0 ? body.mid(1, digits).toInt() : 0;
+    // 5.19 / 6.4: a record number names an EEPROM record 1..32 ("Z5s", "Z5|"); no number is
+    // the record in RAM. "Z0..", "Z05.." or "Z33.." are nothing the drive sends.
+    if (digits > 0) {
+        r.record = digits <= 2 && body.at(1) != '0' ? body.mid(1, digits).toInt() : 0;
+        if (r.record < 1 || r.record > kRecordCount)
+            return invalid(raw, tr("read reply for record '%1' (records are 1..%2)")
+                                    .arg(QString::fromLatin1(body.mid(1, digits)))
+                                    .arg(kRecordCount));
+    }
     const QList<Pair> pairs = splitPairs(body.mid(1 + digits));
     if (pairs.isEmpty())
         return invalid(raw, tr("read reply without a command"));
@@ -106,8 +109,13 @@ Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
     r.key = body.left(1 + digits) + '|';
     r.recordData.record = r.record;
     for (const Pair& p : pairs) {
+        // 6.4 sends "all settings of the record": the ones section 4 lists, each once.
+        if (!recordFieldOrder().contains(p.cmd))
+            return invalid(raw, tr("'%1' is not a record setting (section 4)").arg(QChar(p.cmd)));
+        if (r.recordData.value(p.cmd))
+            return invalid(raw, tr("record setting '%1' given twice").arg(QChar(p.cmd)));
         qint64 v = 0;
-        if (!isLetter(p.cmd) || !parseNumber(p.text, &v))
+        if (!parseNumber(p.text, &v))
             return invalid(raw, tr("malformed record string"));
         r.recordData.fields << qMakePair(p.cmd, v);
     }
@@ -201,13 +209,17 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
     QList<Reply> out;
     for (char c : bytes) {
         if (m_discarding) {
+            ++m_unframed;
             if (c == '\r')
                 m_discarding = false;
             continue;
         }
-        if (c == '\n' || (c == '\0' && m_buffer.isEmpty()))
+        if (c == '\n' || (c == '\0' && m_buffer.isEmpty())) {
+            ++m_unframed;
             continue; // line feeds some adapters add; idle-line zeros
+        }
         if (c == '\r') {
+            ++m_unframed;
             if (!m_buffer.isEmpty())
                 out << parse(m_buffer);
             m_buffer.clear();
@@ -245,12 +257,16 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         if (ch == '#') {
             if (m_inFrame && m_buffer.size() > 1)
                 fail(tr("frame interrupted by a new '#'"));
+            else if (m_inFrame)
+                ++m_unframed; // "##": the first '#' began an empty frame
             m_buffer = "#";
             m_inFrame = true;
             continue;
         }
-        if (!m_inFrame)
+        if (!m_inFrame) {
+            ++m_unframed;
             continue; // 1.1: a command always begins with '#'
+        }
         if (ch != '\r') {
             m_buffer += ch;
             if (m_buffer.size() > kMaxFrame) {

@@ -82,7 +82,16 @@ void NanotecSimulator::execute(const Command& command)
         if (!d || d->faults.silent)
             return;
         const int address = d->address(); // 'm' moves the drive only after its echo
+        const bool wasReady = d->ready();
+        const qint64 before = d->position();
         reply(d, address, d->handle(command.body));
+        // 6.6: p1 travels 's' in direction 'd', p2 to position 's' (mode '!' 1: positioning).
+        const qint64 p = d->value('p');
+        if (command.body == "A" && wasReady && !d->ready() && d->value('!') == 1 &&
+            (p == 1 || p == 2)) {
+            const qint64 s = d->value('s');
+            m_startedMoves.append({address, p == 1 ? (d->value('d') ? s : -s) : s - before});
+        }
         return;
     }
     QList<QByteArray> frames;

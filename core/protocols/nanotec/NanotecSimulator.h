@@ -29,6 +29,14 @@ public:
     QList<NanotecDrive*> drives() const;
     bool standingStill() override; // no drive turns its motor (after advancing to now)
 
+    // Positioning runs ('A' in mode 1, positioning p1/p2) the drives started, in order, with
+    // the steps each was to travel: soak runs compare them with the host's successful moves.
+    struct StartedMove
+    {
+        int address;
+        qint64 steps;
+    };
+    const QList<StartedMove>& startedMoves() const { return m_startedMoves; }
     // ---- fault injection per drive (bus-wide faults: Simulator::faults()) ----
     void setDriveSilent(int address, bool silent);
     void garbleReplies(int address, int count);
@@ -43,6 +51,7 @@ private:
 
     std::vector<std::unique_ptr<NanotecDrive>> m_drives;
     CommandDecoder m_decoder;
+    QList<StartedMove> m_startedMoves;
     QTimer m_timer{this};
     QElapsedTimer m_clock;
     qint64 m_lastTickUs = 0;

@@ -7,6 +7,8 @@
 
 using namespace stepdeck;
 
+Q_DECLARE_METATYPE(stepdeck::NumberError)
+
 namespace {
 const QList<Axis> kXyz{Axis::X, Axis::Y, Axis::Z};
 
@@ -36,10 +38,14 @@ private Q_SLOTS:
     void parseAssignment_wrongCount_isError();
     void parseAssignment_errors_data();
     void parseAssignment_errors();
+    void parseAssignment_numbersAreDecimal_data();
+    void parseAssignment_numbersAreDecimal();
     void json_roundTrip_keepsEveryValue();
     void fromJson_validFile_parses();
     void fromJson_brokenFile_namesTheCause_data();
     void fromJson_brokenFile_namesTheCause();
+    void fromJson_numbers_data();
+    void fromJson_numbers();
 
 private:
     ParameterSchema m_schema = elab::parameterSchema();
@@ -167,6 +173,51 @@ void TestParameterSchema::parseAssignment_errors()
     QVERIFY2(error.contains(mention), qPrintable(error));
 }
 
+void TestParameterSchema::parseAssignment_numbersAreDecimal_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<qint64>("value");            // -1: refused
+    QTest::addColumn<NumberError>("numberError"); // how the text failed to be a number
+    QTest::addColumn<QString>("mention");         // in the error
+    const auto none = NumberError::None;
+    QTest::newRow("leading zero is decimal") << "drive-power=0100" << qint64(100) << none << "";
+    QTest::newRow("010 is ten") << "drive-power=010" << qint64(10) << none << "";
+    QTest::newRow("plus sign") << "drive-power=+66" << qint64(66) << none << "";
+    QTest::newRow("hex refused") << "drive-power=0x40" << qint64(-1) << NumberError::Malformed
+                                 << "not a decimal integer";
+    QTest::newRow("exponent refused")
+        << "drive-power=1e2" << qint64(-1) << NumberError::Malformed << "0..100";
+    QTest::newRow("nan") << "drive-power=nan" << qint64(-1) << NumberError::NonFinite
+                         << "not a finite number";
+    QTest::newRow("inf on one axis")
+        << "start-speed=1,inf,1" << qint64(-1) << NumberError::NonFinite << "(Y)";
+    QTest::newRow("beyond 64 bits") << "drive-power=99999999999999999999" << qint64(-1)
+                                    << NumberError::OutOfRange << "out of range";
+    QTest::newRow("in 64 bits, out of the parameter's range")
+        << "drive-power=101" << qint64(-1) << none << "0..100";
+}
+
+void TestParameterSchema::parseAssignment_numbersAreDecimal()
+{
+    QFETCH(QString, text);
+    QFETCH(qint64, value);
+    QFETCH(NumberError, numberError);
+    QFETCH(QString, mention);
+    QString name, error;
+    ParameterValue parsed;
+    NumberError why = NumberError::Malformed;
+    const bool ok = m_schema.parseAssignment(text, kXyz, &name, &parsed, &error, &why);
+    QCOMPARE(ok, value >= 0);
+    QCOMPARE(why, numberError);
+    if (ok) {
+        const QVariant got = parsed.isPerAxis() ? parsed.perAxis.value(Axis::X) : parsed.global;
+        QCOMPARE(got.typeId(), int(QMetaType::LongLong));
+        QCOMPARE(got.toLongLong(), value);
+    } else {
+        QVERIFY2(error.contains(mention), qPrintable(error));
+    }
+}
+
 void TestParameterSchema::json_roundTrip_keepsEveryValue()
 {
     ParameterSet set;
@@ -273,6 +324,49 @@ void TestParameterSchema::fromJson_brokenFile_namesTheCause()
         QVERIFY2(error.contains(m), qPrintable(QStringLiteral("'%1' lacks '%2'").arg(error, m)));
     // Validated before anything is returned: the output is left alone.
     QCOMPARE(set.keys(), QStringList{"untouched"});
+}
+
+// Numbers in files: JSON numbers are range-checked as doubles before any conversion (1e300 was
+// undefined behaviour), text is decimal only.
+void TestParameterSchema::fromJson_numbers_data()
+{
+    QTest::addColumn<QByteArray>("value"); // JSON text of "drive-power"
+    QTest::addColumn<qint64>("expected");  // -1: refused
+    QTest::addColumn<QString>("mention");
+    QTest::newRow("integer") << QByteArray("66") << qint64(66) << "";
+    QTest::newRow("whole double") << QByteArray("66.0") << qint64(66) << "";
+    QTest::newRow("exponent that is whole") << QByteArray("6.6e1") << qint64(66) << "";
+    QTest::newRow("decimal text") << QByteArray("\"0100\"") << qint64(100) << "";
+    QTest::newRow("hex text") << QByteArray("\"0x40\"") << qint64(-1) << "not a decimal integer";
+    QTest::newRow("octal-looking text") << QByteArray("\"010\"") << qint64(10) << "";
+    QTest::newRow("1e300") << QByteArray("1e300") << qint64(-1) << "out of range";
+    QTest::newRow("-1e300") << QByteArray("-1e300") << qint64(-1) << "out of range";
+    QTest::newRow("2^63") << QByteArray("9223372036854775808") << qint64(-1) << "out of range";
+    QTest::newRow("fraction") << QByteArray("12.5") << qint64(-1) << "not a decimal integer";
+    QTest::newRow("nan text") << QByteArray("\"nan\"") << qint64(-1) << "not a finite number";
+    QTest::newRow("boolean") << QByteArray("true") << qint64(-1) << "drive-power";
+    QTest::newRow("null") << QByteArray("null") << qint64(-1) << "drive-power";
+}
+
+void TestParameterSchema::fromJson_numbers()
+{
+    QFETCH(QByteArray, value);
+    QFETCH(qint64, expected);
+    QFETCH(QString, mention);
+    const QByteArray text = R"({"format":"stepdeck-parameters","version":1,"model":"elab",)"
+                            R"("parameters":{"drive-power":)" +
+                            value + "}}";
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
+    QVERIFY2(doc.isObject(), qPrintable(parseError.errorString()));
+    ParameterSet set;
+    QString error;
+    const bool ok = m_schema.fromJson(doc.object(), "elab", kXyz, &set, &error);
+    QCOMPARE(ok, expected >= 0);
+    if (ok)
+        QCOMPARE(set.value("drive-power").global.toLongLong(), expected);
+    else
+        QVERIFY2(error.contains(mention), qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(TestParameterSchema)

@@ -67,6 +67,8 @@ private Q_SLOTS:
     void replyDecoder_interruptedFrame_reportedAndNextDecoded();
     void replyDecoder_xonInsideFrame_passesThrough();
     void replyDecoder_endlessGarbage_bufferStaysBounded();
+    void replyDecoder_longestManualReply_withinFrameBound();
+    void commandDecoder_everyByteAccountedFor();
     void stepByte_roundTrip_data();
     void stepByte_roundTrip();
     void mnemonics_roundTripEveryByte();
@@ -79,6 +81,17 @@ void TestElabCodec::encode_matchesManual_data()
     QTest::addColumn<QByteArray>("encoded");
     QTest::addColumn<QByteArray>("manual");
     // Each row: the encoder's output and the example as printed in the manual.
+    // Replies (the simulator's side), as printed under the requests.
+    QTest::newRow("reply temperature 20 C") << encodeReply::temperature(20) << bytes("<ETB>14#");
+    QTest::newRow("reply setup incomplete")
+        << encodeReply::machineState(0x0080) << bytes("<ENQ>0080#");
+    QTest::newRow("reply X and Y moving") << encodeReply::axeState(0x05) << bytes("<HT>05#");
+    QTest::newRow("reply X jogging") << encodeReply::axeState(0x02) << bytes("<HT>02#");
+    QTest::newRow("reply position -1/16/255")
+        << encodeReply::relPosition({-1, 16, 255}) << bytes("<ETX>FFFFFFFF,00000010;000000FF.");
+    QTest::newRow("reply position 1F1F1F1F")
+        << encodeReply::relPosition({0x1F1F1F1F, 0x1E1E1E1E, -1})
+        << bytes("<ETX>1F1F1F1F,1E1E1E1E;FFFFFFFF.");
     QTest::newRow("RequestTemperature") << encode::requestTemperature() << bytes("<ETB>");
     QTest::newRow("RequestRelPosition") << encode::requestRelPosition() << bytes("<ETX>");
     QTest::newRow("RequestStart") << encode::requestStart() << bytes("<LF>");
@@ -394,6 +407,35 @@ void TestElabCodec::replyDecoder_endlessGarbage_bufferStaysBounded()
     QVERIFY(invalid > 0);
     const QList<Reply> after = decoder.feed(bytes("<ACK>"));
     QCOMPARE(after.last().kind, Reply::Kind::Ack);
+}
+
+// Found by fuzz_elab_reply: kMaxFrame said 27, but <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ. is 28.
+void TestElabCodec::replyDecoder_longestManualReply_withinFrameBound()
+{
+    ReplyDecoder decoder;
+    const QList<Reply> replies = decoder.feed(manualReplies().wire);
+    QCOMPARE(kindsOf(replies), manualReplies().kinds);
+    for (const Reply& r : replies)
+        QVERIFY2(r.raw.size() <= ReplyDecoder::kMaxFrame, qPrintable(toMnemonics(r.raw)));
+    // Garbage of any length leaves in pieces no longer than that bound.
+    for (const Reply& r : decoder.feed(bytes("<ETX>") + QByteArray(100, 'F')))
+        QVERIFY(r.raw.size() <= ReplyDecoder::kMaxFrame);
+    QVERIFY(decoder.buffered() <= ReplyDecoder::kMaxFrame);
+}
+
+// Every byte fed is in a command's raw, still buffered, or a tolerated blank.
+void TestElabCodec::commandDecoder_everyByteAccountedFor()
+{
+    const QByteArray wire = bytes("<SO>FF, FF;00.<ESC>S0064, 0064;0064.junk<DC2><x25><ENQ><FS>00");
+    CommandDecoder decoder;
+    qsizetype inRaw = 0;
+    for (char c : wire) {
+        for (const Command& cmd : decoder.feed(QByteArray(1, c)))
+            inRaw += cmd.raw.size();
+    }
+    QCOMPARE(decoder.unframedBytes(), qint64(2)); // the two blanks
+    QCOMPARE(decoder.buffered(), 3);              // "<FS>00" is not complete yet
+    QCOMPARE(inRaw + decoder.buffered() + decoder.unframedBytes(), wire.size());
 }
 
 void TestElabCodec::stepByte_roundTrip_data()

@@ -73,6 +73,8 @@ private Q_SLOTS:
     void decode_longReplies_acceptBothAddressForms();
     void decode_firmwareString_splitsBlocks();
     void decode_recordString_fieldsInManualOrder();
+    void decode_recordString_onlySection4Fields_data();
+    void decode_recordString_onlySection4Fields();
     void decode_errorMemory_slotAndCode();
     void decode_byteByByte_sameAsWhole();
     void decode_randomChunks_sameAsWhole();
@@ -84,6 +86,8 @@ private Q_SLOTS:
     void record_formatRoundTrip();
     void commandDecoder_framesAndAddresses();
     void commandDecoder_garbageAndInterruptedFrames();
+    void decoders_everyByteAccountedFor_data();
+    void decoders_everyByteAccountedFor();
     void errorCodes_namedAsInManual();
 };
 
@@ -263,6 +267,52 @@ void TestNanotecCodec::decode_recordString_fieldsInManualOrder()
     QVERIFY(!d.value('x').has_value());
 }
 
+// Issue 12: "001Z0E1s0" was taken as a record with fields E and s. A record string (6.4)
+// carries the settings of section 4 (p s u o n b d t W P N), each once, of record 1..32 or RAM.
+void TestNanotecCodec::decode_recordString_onlySection4Fields_data()
+{
+    QTest::addColumn<QByteArray>("frame");
+    QTest::addColumn<bool>("valid");
+    QTest::addColumn<QString>("why"); // part of the error when invalid
+    QTest::newRow("6.4 example") << QByteArray("Zp+1s+1u+400o+860n+1000b+55800d+1t+0W+1P+0N+0")
+                                 << true << "";
+    QTest::newRow("6.4 example, record 5, address")
+        << QByteArray("001Z5p+1s+400u+400o+1000n+1000b+2364d+0t+0W+1P+0N+0") << true << "";
+    QTest::newRow("record 32") << QByteArray("001Z32p+1s+4") << true << "";
+    QTest::newRow("a subset") << QByteArray("001Zp+1N+0") << true << "";
+    QTest::newRow("issue example") << QByteArray("001Z0E1s0") << false << "record '0'";
+    QTest::newRow("letter E in RAM record") << QByteArray("001Zs+0E1") << false << "'E'";
+    QTest::newRow("any letter") << QByteArray("001Zp+1Q+5") << false << "'Q'";
+    QTest::newRow("lower-case w of the table") << QByteArray("001Zp+1w+1") << false << "'w'";
+    QTest::newRow("a symbol") << QByteArray("001Zp+1$+1") << false << "'$'";
+    QTest::newRow("field twice") << QByteArray("001Zp+1s+1p+2") << false << "twice";
+    QTest::newRow("record 0") << QByteArray("001Z0p+1s+1") << false << "record '0'";
+    QTest::newRow("record 33") << QByteArray("001Z33p+1s+1") << false << "record '33'";
+    QTest::newRow("record with leading zero")
+        << QByteArray("001Z05p+1s+1") << false << "record '05'";
+    QTest::newRow("record number overflow")
+        << QByteArray("001Z99999999999p+1s+1") << false << "record";
+    QTest::newRow("read of record 40") << QByteArray("001Z40s100") << false << "record '40'";
+    QTest::newRow("field without value") << QByteArray("001Zp+1s") << false << "malformed";
+}
+
+void TestNanotecCodec::decode_recordString_onlySection4Fields()
+{
+    QFETCH(QByteArray, frame);
+    QFETCH(bool, valid);
+    QFETCH(QString, why);
+    const Reply r = ReplyDecoder::parse(frame);
+    if (valid) {
+        QVERIFY2(r.kind == Reply::Kind::Record, qPrintable(r.error));
+        for (const auto& field : r.recordData.fields)
+            QVERIFY(recordFieldOrder().contains(field.first));
+    } else {
+        QCOMPARE(r.kind, Reply::Kind::Invalid);
+        QVERIFY2(r.error.contains(why), qPrintable(r.error));
+        QCOMPARE(r.raw, frame); // every byte accounted for
+    }
+}
+
 void TestNanotecCodec::decode_errorMemory_slotAndCode()
 {
     ReplyDecoder decoder;
@@ -420,6 +470,49 @@ void TestNanotecCodec::commandDecoder_garbageAndInterruptedFrames()
     c = decoder.feed("\r#1A\r");
     QCOMPARE(c.size(), 1);
     QCOMPARE(c[0].body, QByteArray("A"));
+}
+
+// Every byte fed is in a frame's raw, still buffered, or counted as outside frames
+// (terminators, filler, garbage before '#', dropped tails). fuzz_nanotec_command found "##"
+// losing the first '#'.
+void TestNanotecCodec::decoders_everyByteAccountedFor_data()
+{
+    QTest::addColumn<QByteArray>("wire");
+    QTest::addColumn<bool>("commands"); // CommandDecoder, else ReplyDecoder
+    QTest::newRow("double hash") << QByteArray("##1A\r") << true;
+    QTest::newRow("hashes and garbage") << QByteArray("x#\r##2s5#3A\r###") << true;
+    QTest::newRow("overlong command")
+        << QByteArray("#1s" + QByteArray(200, '9') + "\r#1A\r") << true;
+    QTest::newRow("replies with filler")
+        << QByteArray("001A\r\n") + QByteArray(2, '\0') + QByteArray("002$17\r\r") << false;
+    QTest::newRow("overlong reply")
+        << QByteArray("001s" + QByteArray(200, '1') + "\r001A\r") << false;
+    QTest::newRow("unfinished reply") << QByteArray("001A\r002s10") << false;
+}
+
+void TestNanotecCodec::decoders_everyByteAccountedFor()
+{
+    QFETCH(QByteArray, wire);
+    QFETCH(bool, commands);
+    qsizetype inRaw = 0;
+    qsizetype buffered = 0;
+    qint64 outside = 0;
+    if (commands) {
+        CommandDecoder decoder;
+        for (char c : wire) {
+            for (const Command& cmd : decoder.feed(QByteArray(1, c)))
+                inRaw += cmd.raw.size();
+        }
+        buffered = decoder.buffered();
+        outside = decoder.unframedBytes();
+    } else {
+        ReplyDecoder decoder;
+        for (const Reply& r : decoder.feed(wire))
+            inRaw += r.raw.size();
+        buffered = decoder.buffered();
+        outside = decoder.unframedBytes();
+    }
+    QCOMPARE(inRaw + buffered + outside, wire.size());
 }
 
 void TestNanotecCodec::errorCodes_namedAsInManual()

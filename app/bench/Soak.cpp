@@ -1,0 +1,372 @@
+// stepdeck-bench --soak: random commands with injected faults against a simulator on a
+// pseudo-terminal, checked at the DEVICE (docs/benchmark.md, "Fault soak").
+#include "Soak.h"
+#include "BenchDevice.h"
+#include "SoakDevice.h"
+#include "SoakHost.h"
+#include <QElapsedTimer>
+#include <QRandomGenerator>
+#include <cstdio>
+
+namespace stepdeck::bench {
+
+namespace {
+constexpr double kFaultProbability = 0.01; // per command
+constexpr int kLeftMovingGraceMs = 3000;   // a ramped stop is over long before this
+constexpr int kMoveWindow = 200;           // move sizes repeat only after this many moves
+
+QString kindName(ErrorKind kind)
+{
+    static const char* names[] = {"ok",        "refused",      "nak",         "timeout",
+                                  "linkDown",  "invalidValue", "unsupported", "protocol",
+                                  "cancelled", "verifyFailed"};
+    return QString::fromLatin1(names[int(kind)]);
+}
+
+class SoakRun
+{
+public:
+    SoakRun(const SoakModel& model, int commands, quint32 seed,
+            const std::function<void(const QString&)>& progress)
+        : m_model(model), m_device(model, seed), m_rng(seed), m_progress(progress)
+    {
+        m_fig.model = model.id;
+        m_fig.commands = commands;
+        m_fig.seed = seed;
+    }
+
+    SoakFigures run();
+
+private:
+    struct Commanded
+    {
+        Axis axis;
+        qint64 steps;
+        bool ok;
+    };
+
+    bool startSession();
+    void endSession();
+    void oneCommand();
+    QString injectFault();
+    void clearFaults();
+    void record(const SoakHost::Outcome& outcome);
+    void recoverIfRefused(const SoakHost::Outcome& outcome);
+    void cmdMove(bool wait);
+    void cmdJog();
+    void cmdVelocity();
+    void cmdParameters(bool write);
+    void checkAxesAtRest();
+    void compareMoves();
+    int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
+
+    const SoakModel& m_model;
+    SoakDevice m_device;
+    SoakHost m_host;
+    QRandomGenerator m_rng;
+    std::function<void(const QString&)> m_progress;
+    SoakFigures m_fig;
+    QList<Commanded> m_commanded;
+    int m_moveIndex = 0;
+    int m_done = 0;
+    bool m_vanishing = false;
+};
+
+SoakFigures SoakRun::run()
+{
+    QElapsedTimer clock;
+    clock.start();
+    QString error;
+    if (!m_device.start(&error)) {
+        m_fig.results.insert(QStringLiteral("deviceFailed: ") + error, 1);
+        return m_fig;
+    }
+    int failedConnects = 0;
+    while (m_done < m_fig.commands && failedConnects < 20) {
+        if (!startSession()) {
+            ++failedConnects;
+            continue;
+        }
+        failedConnects = 0;
+        const int length = between(20, 200);
+        for (int i = 0; i < length && m_done < m_fig.commands && m_host.connected(); ++i)
+            oneCommand();
+        endSession();
+        if (m_progress && m_fig.sessions % 10 == 0)
+            m_progress(QStringLiteral("%1: %2/%3 commands")
+                           .arg(m_model.id)
+                           .arg(m_done)
+                           .arg(m_fig.commands));
+    }
+    compareMoves();
+    m_fig.seconds = clock.elapsed() / 1000.0;
+    return m_fig;
+}
+
+bool SoakRun::startSession()
+{
+    QString error;
+    if (!m_device.present() && !m_device.reappear(&error))
+        return false;
+    m_fig.movingAtReconnect += m_device.movingAxes().size(); // left by an unplugged host
+    if (!m_host.connectTo(m_model.id, m_device.slavePath(), &error)) {
+        ++m_fig.connectFailures;
+        m_host.disconnect();
+        return false;
+    }
+    ++m_fig.sessions;
+    m_vanishing = false;
+    if (!m_model.setup.isEmpty()) {
+        record(m_host.call(
+            [&](ControllerSession& s) { return s.writeParameters(m_model.setup, false); }));
+    }
+    return true;
+}
+
+void SoakRun::endSession()
+{
+    if (m_vanishing || !m_device.present()) {
+        // The peer vanished: wait until the host noticed, then start over on a new terminal.
+        m_host.waitUntil([&] { return !m_host.connected(); }, 2000);
+        ++m_fig.vanishes;
+        m_host.disconnect();
+        return;
+    }
+    const bool lost = !m_host.connected();
+    m_host.disconnect();
+    if (lost) {
+        ++m_fig.linkLosses;
+        m_device.halt(); // nobody could stop the axes over a dead link
+        return;
+    }
+    checkAxesAtRest();
+}
+
+// After an orderly close the adapter must have stopped everything it started.
+void SoakRun::checkAxesAtRest()
+{
+    QElapsedTimer clock;
+    clock.start();
+    QList<Axis> moving = m_device.movingAxes();
+    while (!moving.isEmpty() && clock.elapsed() < kLeftMovingGraceMs) {
+        m_host.idle(20);
+        moving = m_device.movingAxes();
+    }
+    if (moving.isEmpty())
+        return;
+    m_fig.axesLeftMoving += moving.size();
+    m_device.halt(); // so the next session starts at rest and is judged on its own
+    m_host.waitUntil([&] { return m_device.movingAxes().isEmpty(); }, kLeftMovingGraceMs);
+}
+
+QString SoakRun::injectFault()
+{
+    if (m_rng.generateDouble() >= kFaultProbability)
+        return {};
+    static const QStringList kinds{"drop", "corrupt", "delay", "noise", "vanish"};
+    const QString kind = kinds.at(int(m_rng.bounded(int(kinds.size()))));
+    ++m_fig.faults[kind];
+    if (kind == QLatin1String("drop")) {
+        m_device.withSimulator([](Simulator* s) { s->faults().dropReplies = 1; });
+    } else if (kind == QLatin1String("corrupt")) {
+        m_device.withSimulator([](Simulator* s) { s->faults().corruptReplies = 1; });
+    } else if (kind == QLatin1String("delay")) {
+        m_device.withSimulator([](Simulator* s) {
+            s->faults().delayProbability = 1.0;
+            s->faults().delayMaxMs = 800;
+        });
+    } else if (kind == QLatin1String("noise")) {
+        m_device.noiseBurst(between(1, 16));
+    } else {
+        m_vanishing = true;
+        m_device.vanishLater(between(0, 60)); // lands within the command
+    }
+    return kind;
+}
+
+void SoakRun::clearFaults()
+{
+    m_device.withSimulator([](Simulator* s) {
+        s->faults().dropReplies = 0;
+        s->faults().corruptReplies = 0;
+        s->faults().delayProbability = 0;
+    });
+}
+
+void SoakRun::oneCommand()
+{
+    const QString fault = injectFault();
+    const int pick = int(m_rng.bounded(100));
+    if (pick < 20) {
+        record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
+    } else if (pick < 45) {
+        cmdMove(true);
+    } else if (pick < 50) {
+        cmdMove(false);
+    } else if (pick < 65) {
+        cmdJog();
+    } else if (pick < 75) {
+        cmdVelocity();
+    } else if (pick < 80) {
+        record(m_host.call([](ControllerSession& s) { return s.stop(); }));
+    } else if (pick < 90) {
+        cmdParameters(true);
+    } else {
+        cmdParameters(false);
+    }
+    ++m_done;
+    if (!fault.isEmpty()) {
+        clearFaults();
+        if (fault == QLatin1String("vanish")) // give it time to land if the command was quick
+            m_host.waitUntil([&] { return !m_host.connected(); }, 500);
+    }
+}
+
+void SoakRun::record(const SoakHost::Outcome& outcome)
+{
+    if (!outcome.finished) {
+        ++m_fig.hangs;
+        return;
+    }
+    ++m_fig.results[kindName(outcome.result.error)];
+    static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
+    if (verbose && !outcome.result.ok()) {
+        const QByteArray line =
+            QStringLiteral("%1: %2: %3\n")
+                .arg(m_model.id, kindName(outcome.result.error), outcome.result.message)
+                .toUtf8();
+        std::fwrite(line.constData(), 1, size_t(line.size()), stderr);
+    }
+}
+
+// What an operator does after a refusal the model's manual says how to clear.
+void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
+{
+    if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
+        return;
+    for (const QString& operation : m_model.recovery) {
+        for (Axis a : m_host.session().capabilities().axes) {
+            ++m_fig.recoveries;
+            record(m_host.call([&](ControllerSession& s) {
+                return s.modelOperation(operation, {{QStringLiteral("axis"), axisName(a)}});
+            }));
+        }
+    }
+}
+
+void SoakRun::cmdMove(bool wait)
+{
+    // Sizes unique within kMoveWindow moves, so the device's journal can be matched.
+    const qint64 size = 20 + (m_moveIndex++ % kMoveWindow);
+    AxisVector steps;
+    const Capabilities caps = m_host.session().capabilities();
+    for (Axis a : caps.axes) {
+        if (steps.isEmpty() || m_rng.bounded(2))
+            steps.insert(a, m_rng.bounded(2) ? size : -size);
+    }
+    const SoakHost::Outcome out =
+        m_host.call([&](ControllerSession& s) { return s.moveRelative(steps); });
+    record(out);
+    recoverIfRefused(out);
+    const bool ok = out.finished && out.result.ok();
+    for (auto it = steps.cbegin(); it != steps.cend(); ++it)
+        m_commanded.append({it.key(), it.value(), ok});
+    if (ok && wait)
+        m_host.waitIdle(5000);
+}
+
+void SoakRun::cmdJog()
+{
+    AxisVelocities rates;
+    const Capabilities caps = m_host.session().capabilities();
+    const double ceiling = qMin(2000.0, caps.maxJogSpeed);
+    rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
+                 (m_rng.bounded(2) ? 1 : -1) * between(100, int(ceiling)));
+    const int ms = between(100, 400);
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < ms && m_host.connected()) {
+        m_host.session().setJogVelocity(rates);
+        m_host.idle(100);
+    }
+    m_host.session().endJog();
+    m_host.waitIdle(3000);
+}
+
+void SoakRun::cmdVelocity()
+{
+    const Capabilities caps = m_host.session().capabilities();
+    AxisVector rates;
+    rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
+                 (m_rng.bounded(2) ? 1 : -1) * between(100, 2000));
+    const SoakHost::Outcome out =
+        m_host.call([&](ControllerSession& s) { return s.velocityMove(rates); });
+    record(out);
+    recoverIfRefused(out);
+    if (!out.finished || !out.result.ok())
+        return;
+    m_host.idle(between(50, 300));
+    record(m_host.call([](ControllerSession& s) { return s.stop(); }));
+    m_host.waitIdle(3000);
+}
+
+void SoakRun::cmdParameters(bool write)
+{
+    if (write && !m_model.setup.isEmpty()) {
+        const bool verify = !m_model.readable.isEmpty() && m_rng.bounded(2);
+        record(m_host.call(
+            [&](ControllerSession& s) { return s.writeParameters(m_model.setup, verify); }));
+    } else {
+        const QStringList names =
+            m_model.readable.isEmpty() ? QStringList{m_model.setup.firstKey()} : m_model.readable;
+        record(m_host.call([&](ControllerSession& s) { return s.readParameters(names); }));
+    }
+}
+
+// Per axis, in order: every device move matches the next commanded move of that size (moves
+// in between were not started); one commanded move started twice is a duplicate.
+void SoakRun::compareMoves()
+{
+    const QList<DeviceMove> device = m_device.moves();
+    m_fig.deviceMoves = device.size();
+    for (Axis axis : allAxes()) {
+        QList<Commanded> wanted;
+        for (const Commanded& c : m_commanded) {
+            if (c.axis == axis)
+                wanted << c;
+        }
+        QList<int> starts(wanted.size(), 0);
+        int next = 0;
+        for (const DeviceMove& d : device) {
+            if (d.axis != axis)
+                continue;
+            int k = next;
+            while (k < wanted.size() && wanted[k].steps != d.steps && k < next + kMoveWindow)
+                ++k;
+            if (next > 0 && wanted[next - 1].steps == d.steps) {
+                ++starts[next - 1]; // the previous move once more
+            } else if (k < wanted.size() && wanted[k].steps == d.steps) {
+                ++starts[k];
+                next = k + 1;
+            } else {
+                ++m_fig.unmatchedDeviceMoves;
+            }
+        }
+        for (int i = 0; i < wanted.size(); ++i) {
+            m_fig.hostMovesOk += wanted[i].ok ? 1 : 0;
+            m_fig.lostMoves += wanted[i].ok && starts[i] == 0 ? 1 : 0;
+            m_fig.duplicatedMoves += qMax(0, starts[i] - 1);
+            m_fig.unconfirmedMoves += !wanted[i].ok && starts[i] > 0 ? 1 : 0;
+        }
+    }
+}
+} // namespace
+
+SoakFigures runSoak(const SoakModel& model, int commands, quint32 seed,
+                    const std::function<void(const QString&)>& progress)
+{
+    SoakRun run(model, commands, seed, progress);
+    return run.run();
+}
+
+} // namespace stepdeck::bench

@@ -1,0 +1,51 @@
+#pragma once
+#include "SoakModels.h"
+#include <QJsonObject>
+#include <QMap>
+
+namespace stepdeck::bench {
+
+// The result of one model's soak (stepdeck-bench --soak N): the five figures that must be 0,
+// then what happened on the way.
+struct SoakFigures
+{
+    QString model;
+    int commands = 0;
+    quint32 seed = 0;
+    // must be 0
+    qint64 crashes = 0;         // the soak process died (set by the parent, see main.cpp)
+    qint64 hangs = 0;           // requests without a result within SoakHost::kRequestBoundMs
+    qint64 axesLeftMoving = 0;  // axes still moving 3 s after an orderly session end
+    qint64 lostMoves = 0;       // host told success, device never started the move
+    qint64 duplicatedMoves = 0; // device started one commanded move more than once
+    // what happened
+    qint64 sessions = 0;
+    qint64 vanishes = 0;
+    qint64 linkLosses = 0; // sessions that ended with the link lost without a vanish
+    qint64 connectFailures = 0;
+    qint64 movingAtReconnect = 0; // axes the device kept moving while its host was gone
+    qint64 hostMovesOk = 0;       // per axis
+    qint64 deviceMoves = 0;       // per axis
+    qint64 unconfirmedMoves = 0;  // device started it, host was told it failed
+    qint64 unmatchedDeviceMoves = 0;
+    qint64 recoveries = 0;         // operator actions after refused moves (SoakModel::recovery)
+    QMap<QString, qint64> faults;  // injected, by kind
+    QMap<QString, qint64> results; // command results, by error kind
+    double seconds = 0;
+
+    bool clean() const
+    {
+        return crashes == 0 && hangs == 0 && axesLeftMoving == 0 && lostMoves == 0 &&
+               duplicatedMoves == 0;
+    }
+    QJsonObject toJson() const;
+    static SoakFigures fromJson(const QJsonObject& json);
+    QString toText() const;
+};
+
+// Runs `commands` random commands against the model's simulator over a pseudo-terminal with
+// ~1 % injected faults; progress lines go to `progress` (may be empty).
+SoakFigures runSoak(const SoakModel& model, int commands, quint32 seed,
+                    const std::function<void(const QString&)>& progress);
+
+} // namespace stepdeck::bench

@@ -1,0 +1,94 @@
+#include "SoakHost.h"
+#include "BenchDevice.h"
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QTimer>
+
+namespace stepdeck::bench {
+
+namespace {
+constexpr int kWakeMs = 2;
+}
+
+SoakHost::SoakHost(QObject* parent) : QObject(parent)
+{
+    connect(&m_session, &ControllerSession::requestFinished, this,
+            [this](const CommandResult& result) { m_finished.insert(result.id, result); });
+    connect(&m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
+        if (state != LinkState::Connected && state != LinkState::Connecting && m_linkLeftNs < 0)
+            m_linkLeftNs = nowNs();
+    });
+}
+
+SoakHost::~SoakHost()
+{
+    m_session.destroy();
+}
+
+bool SoakHost::waitUntil(const std::function<bool()>& done, int timeoutMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (clock.elapsed() >= timeoutMs)
+            return false;
+        QEventLoop loop;
+        QTimer::singleShot(kWakeMs, &loop, &QEventLoop::quit);
+        loop.exec();
+    }
+    return true;
+}
+
+void SoakHost::idle(int ms)
+{
+    waitUntil([] { return false; }, ms);
+}
+
+bool SoakHost::connectTo(const QString& modelId, const QString& port, QString* error)
+{
+    m_session.destroy();
+    m_finished.clear();
+    m_linkLeftNs = -1;
+    ConnectionSpec spec;
+    spec.modelId = modelId;
+    spec.port = port;
+    spec.options.pollIntervalMs = 20;
+    if (!m_session.create(spec, error))
+        return false;
+    const RequestId id = m_session.open();
+    waitUntil([&] { return connected() || m_finished.contains(id); }, 5000);
+    if (connected()) {
+        m_linkLeftNs = -1; // what happened while connecting does not count
+        return true;
+    }
+    *error = m_finished.contains(id) ? m_finished.value(id).message
+                                     : QStringLiteral("link did not come up within 5 s");
+    return false;
+}
+
+void SoakHost::disconnect()
+{
+    if (m_session.isCreated()) {
+        m_session.close();
+        waitUntil([&] { return m_session.linkState() != LinkState::Connected; }, 3000);
+        m_session.destroy();
+    }
+}
+
+SoakHost::Outcome SoakHost::call(const std::function<RequestId(ControllerSession&)>& start,
+                                 int boundMs)
+{
+    const RequestId id = start(m_session);
+    Outcome out;
+    out.finished = waitUntil([&] { return m_finished.contains(id); }, boundMs);
+    if (out.finished)
+        out.result = m_finished.take(id);
+    return out;
+}
+
+bool SoakHost::waitIdle(int timeoutMs)
+{
+    return waitUntil([&] { return !connected() || !m_session.status().anyMoving(); }, timeoutMs);
+}
+
+} // namespace stepdeck::bench

@@ -1,0 +1,102 @@
+#include "SoakModels.h"
+#include "protocols/elab/ElabCodec.h"
+#include "protocols/elab/ElabSimulator.h"
+#include "protocols/nanotec/NanotecSimulator.h"
+
+namespace stepdeck::bench {
+
+namespace {
+constexpr qint64 kFar = 1'000'000'000; // switches out of reach of any soak run
+
+ParameterValue perAxis(qint64 value, const QList<Axis>& axes)
+{
+    ParameterValue v;
+    for (Axis a : axes)
+        v.perAxis.insert(a, value);
+    return v;
+}
+
+SoakModel elabModel()
+{
+    const QList<Axis> xyz{Axis::X, Axis::Y, Axis::Z};
+    SoakModel m;
+    m.id = QStringLiteral("elab");
+    m.setup = {{QStringLiteral("start-speed"), perAxis(500, xyz)},
+               {QStringLiteral("max-speed"), perAxis(8000, xyz)},
+               {QStringLiteral("acceleration"), perAxis(20000, xyz)},
+               {QStringLiteral("feed-speed"), perAxis(200, xyz)}};
+    m.prepare = [xyz](Simulator* s) {
+        auto* sim = qobject_cast<elab::ElabSimulator*>(s);
+        for (Axis a : xyz)
+            sim->setLimitPositions(a, -kFar, kFar);
+    };
+    m.movingAxes = [xyz](Simulator* s) {
+        auto* sim = qobject_cast<elab::ElabSimulator*>(s);
+        QList<Axis> out;
+        for (Axis a : xyz) {
+            if (sim->isMoving(a))
+                out << a;
+        }
+        return out;
+    };
+    m.moves = [](Simulator* s) {
+        QList<DeviceMove> out;
+        for (const auto& move : qobject_cast<elab::ElabSimulator*>(s)->acceptedMoves())
+            out.append({move.axis, move.steps});
+        return out;
+    };
+    // ForceStopMove, as the host would send it; the ACK goes nowhere between sessions.
+    m.halt = [](Simulator* s) { s->receive(elab::encode::stopMove()); };
+    return m;
+}
+
+SoakModel nanotecModel()
+{
+    const QMap<int, Axis> axisOf{{1, Axis::X}, {2, Axis::Y}, {3, Axis::Z}}; // the CLI's default
+    SoakModel m;
+    m.id = QStringLiteral("nanotec");
+    m.simulator.addresses = axisOf.keys();
+    m.readable = {QStringLiteral("phase-current"), QStringLiteral("max-frequency")};
+    m.recovery = {QStringLiteral("reset-position-error")};
+    m.setup = {
+        {QStringLiteral("max-frequency"), perAxis(8000, axisOf.values())},
+        {QStringLiteral("ramp"), perAxis(20, axisOf.values())}}; // ramp 20: ~660 Hz/ms (6.11)
+    m.prepare = [](Simulator* s) {
+        for (nanotec::NanotecDrive* d : qobject_cast<nanotec::NanotecSimulator*>(s)->drives())
+            d->setSwitches(-kFar, kFar);
+    };
+    m.movingAxes = [axisOf](Simulator* s) {
+        QList<Axis> out;
+        for (nanotec::NanotecDrive* d : qobject_cast<nanotec::NanotecSimulator*>(s)->drives()) {
+            if (d->isActive() && axisOf.contains(d->address()))
+                out << axisOf.value(d->address());
+        }
+        return out;
+    };
+    m.moves = [axisOf](Simulator* s) {
+        QList<DeviceMove> out;
+        for (const auto& move : qobject_cast<nanotec::NanotecSimulator*>(s)->startedMoves())
+            out.append({axisOf.value(move.address, Axis::U), move.steps});
+        return out;
+    };
+    m.halt = [](Simulator* s) { s->receive("#*S\r"); }; // 6.2: every drive stops
+    return m;
+}
+} // namespace
+
+const QList<SoakModel>& soakModels()
+{
+    static const QList<SoakModel> models{elabModel(), nanotecModel()};
+    return models;
+}
+
+const SoakModel* findSoakModel(const QString& id)
+{
+    for (const SoakModel& m : soakModels()) {
+        if (m.id == id)
+            return &m;
+    }
+    return nullptr;
+}
+
+} // namespace stepdeck::bench

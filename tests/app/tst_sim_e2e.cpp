@@ -1,0 +1,159 @@
+// stepdeck-sim's fault options (issue 12): --drop, --corrupt, --noise, --freeze-after, --seed,
+// run as processes on a real pseudo-terminal against stepdeck-cli and QSerialPort.
+#include "ProcessSupport.h"
+#include <QDir>
+#include <QFileInfo>
+#include <QSerialPort>
+#include <QtTest>
+
+class TestSimEndToEnd : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanup();
+
+    void badFaultOption_exitTwoWithOneLine_data();
+    void badFaultOption_exitTwoWithOneLine();
+    void help_listsTheFaultOptions();
+    void drop_everyReply_cliTimesOut();
+    void freezeAfter_zero_cliTimesOut();
+    void corrupt_everyReply_cliFailsWithoutCrash();
+    void noise_bytesArriveUnasked();
+    void lowFaultRates_statusStillWorks();
+
+private:
+    using Run = stepdeck::testing::ProcessRun;
+    QString binary(const QString& name) const { return QDir(m_binDir).filePath(name); }
+    QString startSim(const QStringList& args);
+    Run cli(const QStringList& args);
+
+    QString m_binDir;
+    QProcess* m_sim = nullptr;
+};
+
+void TestSimEndToEnd::initTestCase()
+{
+    m_binDir = qEnvironmentVariable("STEPDECK_BIN_DIR");
+    QVERIFY2(!m_binDir.isEmpty(), "STEPDECK_BIN_DIR is not set (run through ctest)");
+    QVERIFY(QFileInfo(binary("stepdeck-sim")).isExecutable());
+    QVERIFY(QFileInfo(binary("stepdeck-cli")).isExecutable());
+}
+
+void TestSimEndToEnd::cleanup()
+{
+    if (!m_sim)
+        return;
+    m_sim->terminate();
+    if (!m_sim->waitForFinished(5000))
+        m_sim->kill();
+    QCOMPARE(m_sim->exitStatus(), QProcess::NormalExit); // no crash under any fault
+    delete m_sim;
+    m_sim = nullptr;
+}
+
+QString TestSimEndToEnd::startSim(const QStringList& args)
+{
+    m_sim = new QProcess(this);
+    QString error;
+    const QString pty =
+        stepdeck::testing::startSimulator(m_sim, binary("stepdeck-sim"), args, &error);
+    if (pty.isEmpty())
+        qWarning() << "stepdeck-sim" << args << error;
+    return pty;
+}
+
+TestSimEndToEnd::Run TestSimEndToEnd::cli(const QStringList& args)
+{
+    return stepdeck::testing::runProcess(binary("stepdeck-cli"), args, 20000);
+}
+
+void TestSimEndToEnd::badFaultOption_exitTwoWithOneLine_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("drop above 1") << QStringList{"--drop", "2"} << "--drop";
+    QTest::newRow("drop nan") << QStringList{"--drop", "nan"} << "--drop";
+    QTest::newRow("drop percent") << QStringList{"--drop=1%"} << "probability";
+    QTest::newRow("corrupt negative") << QStringList{"--corrupt", "-0.1"} << "--corrupt";
+    QTest::newRow("noise negative") << QStringList{"--noise", "-5"} << "--noise";
+    QTest::newRow("noise inf") << QStringList{"--noise", "inf"} << "--noise";
+    QTest::newRow("freeze-after word") << QStringList{"--freeze-after", "soon"} << "--freeze-after";
+    QTest::newRow("freeze-after hex") << QStringList{"--freeze-after", "0x10"} << "--freeze-after";
+    QTest::newRow("seed negative") << QStringList{"--seed", "-1"} << "--seed";
+    QTest::newRow("seed missing") << QStringList{"--seed"} << "needs a value";
+}
+
+void TestSimEndToEnd::badFaultOption_exitTwoWithOneLine()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, needle);
+    const Run run = stepdeck::testing::runProcess(binary("stepdeck-sim"), args, 10000);
+    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains(needle.toUtf8()), run.err.constData());
+    QVERIFY(run.out.isEmpty()); // no pty path: nothing to connect to
+}
+
+void TestSimEndToEnd::help_listsTheFaultOptions()
+{
+    const Run run = stepdeck::testing::runProcess(binary("stepdeck-sim"), {"--help"}, 10000);
+    QCOMPARE(run.exitCode, 0);
+    for (const char* option : {"--drop", "--corrupt", "--noise", "--freeze-after", "--seed"})
+        QVERIFY2(run.out.contains(option), option);
+}
+
+void TestSimEndToEnd::drop_everyReply_cliTimesOut()
+{
+    const QString pty = startSim({"--drop", "1"});
+    QVERIFY(!pty.isEmpty());
+    const Run run = cli({"--port", pty, "status"});
+    QCOMPARE(run.exitCode, 5);
+    QCOMPARE(run.err.count('\n'), 1);
+}
+
+void TestSimEndToEnd::freezeAfter_zero_cliTimesOut()
+{
+    // The clock starts at the first reply: the first request is answered, then nothing.
+    const QString pty = startSim({"--model", "nanotec", "--drives", "1", "--freeze-after", "0"});
+    QVERIFY(!pty.isEmpty());
+    const Run run = cli({"--model", "nanotec", "--address", "1", "--port", pty, "status"});
+    QVERIFY2(run.exitCode == 5 || run.exitCode == 6, run.err.constData()); // timeout / link lost
+    QCOMPARE(run.err.count('\n'), 1);
+}
+
+void TestSimEndToEnd::corrupt_everyReply_cliFailsWithoutCrash()
+{
+    const QString pty = startSim({"--corrupt", "1", "--seed", "4"});
+    QVERIFY(!pty.isEmpty());
+    const Run run = cli({"--port", pty, "status"});
+    // Every reply broken: a timeout or a protocol error, never a crash or a success.
+    QVERIFY2(run.exitCode == 5 || run.exitCode == 9, run.err.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+}
+
+void TestSimEndToEnd::noise_bytesArriveUnasked()
+{
+    const QString pty = startSim({"--noise", "2000", "--seed", "9"});
+    QVERIFY(!pty.isEmpty());
+    QSerialPort port(pty);
+    QVERIFY2(port.open(QIODevice::ReadOnly), qPrintable(port.errorString()));
+    QByteArray received;
+    while (received.size() < 50 && port.waitForReadyRead(5000))
+        received += port.readAll();
+    QVERIFY2(received.size() >= 50, qPrintable(QString::number(received.size())));
+}
+
+void TestSimEndToEnd::lowFaultRates_statusStillWorks()
+{
+    // Faults off by default and only where asked: 0 % drop and corruption change nothing.
+    const QString pty =
+        startSim({"--drop", "0", "--corrupt", "0.0", "--noise", "0", "--seed", "2"});
+    QVERIFY(!pty.isEmpty());
+    const Run run = cli({"--port", pty, "status", "--json"});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(run.out.contains("\"model\""));
+}
+
+QTEST_GUILESS_MAIN(TestSimEndToEnd)
+#include "tst_sim_e2e.moc"

@@ -1,0 +1,97 @@
+// Smoke test of the fault soak and replug tools (issue 12): a short stepdeck-bench --soak and
+// --replug must run to the end against every simulator with no crash, no hang and no axis
+// left moving at the device. The figures themselves (docs/benchmark.md) come from long runs
+// by hand; nothing here is timed.
+#include "ProcessSupport.h"
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+class TestSoakSmoke : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void soak_fiftyCommands_noCrashHangOrAxisLeftMoving();
+    void replug_everyPhase_noticedEveryTime();
+    void badArguments_exitTwo_data();
+    void badArguments_exitTwo();
+
+private:
+    QJsonObject runJson(const QStringList& args, int* exitCode);
+    QString m_bench;
+};
+
+void TestSoakSmoke::initTestCase()
+{
+    m_bench = QDir(qEnvironmentVariable("STEPDECK_BIN_DIR")).filePath("stepdeck-bench");
+    QVERIFY2(QFileInfo(m_bench).isExecutable(), qPrintable(m_bench));
+}
+
+QJsonObject TestSoakSmoke::runJson(const QStringList& args, int* exitCode)
+{
+    const auto run = stepdeck::testing::runProcess(m_bench, args, 240000);
+    *exitCode = run.exitCode;
+    const QJsonDocument doc = QJsonDocument::fromJson(run.out.trimmed());
+    if (!doc.isObject())
+        qWarning() << "no JSON:" << run.out << run.err;
+    return doc.object();
+}
+
+void TestSoakSmoke::soak_fiftyCommands_noCrashHangOrAxisLeftMoving()
+{
+    int exitCode = 0;
+    const QJsonObject out = runJson({"--soak", "50", "--seed", "12", "--json"}, &exitCode);
+    const QJsonArray models = out.value("soak").toArray();
+    QCOMPARE(models.size(), 2); // elab and nanotec
+    for (const QJsonValue& v : models) {
+        const QJsonObject m = v.toObject();
+        const QByteArray name = m.value("model").toString().toUtf8();
+        QVERIFY2(m.value("sessions").toInt() > 0, name);
+        QVERIFY2(m.value("results").toObject().value("ok").toInt() > 0, name); // it did work
+        QVERIFY2(m.value("deviceMoves").toInt() > 0, name); // moves reached the device
+        QCOMPARE(m.value("crashes").toInt(-1), 0);
+        QCOMPARE(m.value("hangs").toInt(-1), 0);
+        QCOMPARE(m.value("axesLeftMoving").toInt(-1), 0);
+    }
+    QVERIFY(exitCode == 0 || exitCode == 1); // 1: a figure was not 0 (the checks above say which)
+}
+
+void TestSoakSmoke::replug_everyPhase_noticedEveryTime()
+{
+    int exitCode = 0;
+    const QJsonObject out = runJson({"--replug", "4", "--json"}, &exitCode);
+    QCOMPARE(exitCode, 0);
+    const QJsonArray models = out.value("replug").toArray();
+    QCOMPARE(models.size(), 2);
+    for (const QJsonValue& v : models) {
+        const QJsonObject m = v.toObject();
+        QCOMPARE(m.value("reconnectFailures").toInt(-1), 0);
+        QCOMPARE(m.value("notNoticed").toInt(-1), 0);
+        QCOMPARE(m.value("samples").toInt(), 4); // poll, jog, stream, write
+    }
+}
+
+void TestSoakSmoke::badArguments_exitTwo_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("count zero") << QStringList{"--soak", "0"};
+    QTest::newRow("count hex") << QStringList{"--soak", "0x10"};
+    QTest::newRow("unknown model") << QStringList{"--soak", "5", "--model", "warp"};
+    QTest::newRow("both") << QStringList{"--soak", "5", "--replug", "5"};
+    QTest::newRow("seed negative") << QStringList{"--replug", "1", "--seed", "-1"};
+}
+
+void TestSoakSmoke::badArguments_exitTwo()
+{
+    QFETCH(QStringList, args);
+    const auto run = stepdeck::testing::runProcess(m_bench, args, 20000);
+    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.err.count('\n'), 1);
+}
+
+QTEST_GUILESS_MAIN(TestSoakSmoke)
+#include "tst_soak_smoke.moc"
