@@ -3,6 +3,8 @@
 // origin and units apply.
 #include "UiTestSupport.h"
 #include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
@@ -34,6 +36,7 @@ void TestReferencePanel::init()
     QSettings().clear();
     m_f = std::make_unique<UiFixture>();
     m_f->window->show();
+    QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
     QVERIFY(setUp());
 }
 
@@ -91,11 +94,12 @@ void TestReferencePanel::position_unknownBeforeReference_estimatedAfterJog()
     QVERIFY(finished.wait(30000));
     QVERIFY(finished.first().at(0).toBool());
     QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
-    QObject input;
-    m_f->window->jogController()->setDeflection(&input, {{Axis::X, 0.5}});
+    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    pointerPress(pad, pad->centre());
+    pointerMove(pad, pad->pointFor(QPointF(0.7, 0.0)));
     QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().axes.value(Axis::X).position > 50,
                              5000);
-    m_f->window->jogController()->releaseAll();
+    pointerRelease(pad, pad->pointFor(QPointF(0.7, 0.0)));
     QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("ESTIMATED"));
     QVERIFY(dro->displayedValue(Axis::X).startsWith(QStringLiteral("\u2248")));
 }

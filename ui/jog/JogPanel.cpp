@@ -4,6 +4,7 @@
 #include "jog/JogSettingsWidget.h"
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
+#include "jog/PadJogSource.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QDialog>
@@ -42,11 +43,12 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     m_z->setToolTip(tr("Drag to jog Z; release to stop (ramped)."));
     m_u->setAxisLabels(QString(), QStringLiteral("U"));
     m_u->setToolTip(tr("Drag to jog U; release to stop (ramped)."));
-    m_response = m_settings->response();
-    for (JoystickPad* pad : {m_xy, m_z, m_u}) {
-        pad->setDeadZone(m_response.deadZone);
-        connect(pad, &JoystickPad::deflectionChanged, this,
-                [this, pad](const QPointF& d) { onPad(pad, d); });
+    m_padSources = {new PadJogSource(m_xy, Axis::X, Axis::Y, this),
+                    new PadJogSource(m_z, std::nullopt, Axis::Z, this),
+                    new PadJogSource(m_u, std::nullopt, Axis::U, this)};
+    for (PadJogSource* source : std::as_const(m_padSources)) {
+        source->setResponse(m_settings->response());
+        m_jog->addSource(source);
     }
 
     auto* layout = new QHBoxLayout(this);
@@ -66,9 +68,8 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     layout->addWidget(scroll, 2);
 
     connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {
-        m_response = r;
-        for (JoystickPad* pad : {m_xy, m_z, m_u})
-            pad->setDeadZone(r.deadZone);
+        for (PadJogSource* source : std::as_const(m_padSources))
+            source->setResponse(r);
     });
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
     connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
@@ -179,22 +180,7 @@ void JogPanel::rebuild()
 
 void JogPanel::releaseAll()
 {
-    for (JoystickPad* pad : {m_xy, m_z, m_u})
-        pad->recenter();
-    m_keyboard->releaseAll();
-    m_jog->releaseAll();
-}
-
-void JogPanel::onPad(JoystickPad* pad, const QPointF& d)
-{
-    AxisVelocities fractions;
-    if (pad == m_xy) {
-        fractions.insert(Axis::X, m_response.apply(d.x()));
-        fractions.insert(Axis::Y, m_response.apply(d.y()));
-    } else {
-        fractions.insert(pad == m_z ? Axis::Z : Axis::U, m_response.apply(d.y()));
-    }
-    m_jog->setDeflection(pad, fractions);
+    m_jog->releaseAll(); // latches every source: pads re-centre, held keys need a new press
 }
 
 void JogPanel::onStatus(const MachineStatus& status)

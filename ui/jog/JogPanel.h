@@ -1,5 +1,4 @@
 #pragma once
-#include "jog/JogResponse.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
 
@@ -18,6 +17,7 @@ class JogSettingsWidget;
 class JoystickPad;
 class KeyboardJog;
 class MachineContext;
+class PadJogSource;
 
 // The operator's main tool: the X/Y pad, Z (and U) sticks, incremental jog, keyboard jog,
 // speed override, the live commanded velocity per axis and why a jog was refused.
@@ -42,17 +42,16 @@ public Q_SLOTS:
 private:
     QWidget* buildSidePanel();
     void rebuild();
-    void onPad(JoystickPad* pad, const QPointF& deflection);
     void onStatus(const MachineStatus& status);
     void showRefusal(const QString& reason);
 
     MachineContext* m_context;
     JogController* m_jog;
     KeyboardJog* m_keyboard;
-    JogResponse m_response;
     JoystickPad* m_xy;
     JoystickPad* m_z;
     JoystickPad* m_u;
+    QList<PadJogSource*> m_padSources;
     QSlider* m_override;
     QLabel* m_overrideValue;
     QCheckBox* m_keyboardCheck;
