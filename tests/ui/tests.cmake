@@ -6,3 +6,6 @@ foreach(_t tst_jogpanel tst_safetyshortcuts tst_setuppage tst_gamepadjog tst_con
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
 target_compile_definitions(tst_translations PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# Source policy: no modal or native dialog under ui/ (issue 7, rule 5).
+stepdeck_add_test(tst_dialogpolicy SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_dialogpolicy.cpp LABELS unit)
+target_compile_definitions(tst_dialogpolicy PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")

@@ -1,8 +1,8 @@
 #include "TrafficConsole.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -226,13 +226,13 @@ bool TrafficConsole::saveToFile(const QString& path, QString* error) const
 
 void TrafficConsole::saveAs()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save traffic"), QStringLiteral("traffic.log"), tr("Log files (*.log *.txt)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!saveToFile(path, &error))
-        m_sendError->setText(error);
+    dialogs::saveFile(this, QStringLiteral("traffic"), tr("Save traffic"),
+                      QStringLiteral("traffic.log"), tr("Log files (*.log *.txt)"),
+                      [this](const QString& path) {
+                          QString error;
+                          if (!saveToFile(path, &error))
+                              m_sendError->setText(error);
+                      });
 }
 
 } // namespace stepdeck::ui

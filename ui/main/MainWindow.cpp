@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 #include "charts/ChartsPanel.h"
+#include "common/Dialogs.h"
 #include "console/TrafficConsole.h"
 #include "drives/DrivePanel.h"
 #include "gamepad/GamepadDevice.h"
@@ -29,6 +30,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -63,6 +65,8 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     v->setContentsMargins(4, 4, 4, 4);
     m_safety = new SafetyBar(m_context, m_stopAction, m_panicAction, m_referenceAction, central);
     m_jogPanel = new JogPanel(m_context, m_jog, m_keyboard, central);
+    m_safetyKeys->addButton(m_safety->stopButton(), m_stopAction);
+    m_safetyKeys->addButton(m_safety->panicButton(), m_panicAction);
     v->addWidget(m_safety);
     v->addWidget(m_jogPanel, 1);
     setCentralWidget(central);
@@ -114,7 +118,7 @@ void MainWindow::buildActions()
     m_panicAction->setToolTip(tr("Immediate stop without ramp (F1); positions are lost"));
     connect(m_panicAction, &QAction::triggered, this, &MainWindow::panicAll);
     addAction(m_panicAction);
-    new SafetyKeyFilter(m_stopAction, m_panicAction, this);
+    m_safetyKeys = new SafetyKeyFilter(m_stopAction, m_panicAction, this);
 
     m_referenceAction = new QAction(tr("&Reference all"), this);
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
@@ -228,20 +232,27 @@ void MainWindow::buildMenus()
         group->addAction(a);
         connect(a, &QAction::triggered, this, [this, code] {
             translations::setConfigured(code);
-            QMessageBox::information(this, tr("Language"),
-                                     tr("The language changes when StepDeck is started again."));
+            dialogs::message(this, QMessageBox::Information, tr("Language"),
+                             tr("The language changes when StepDeck is started again."));
         });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About StepDeck"), this, [this] {
-        QMessageBox::about(this, tr("About StepDeck"),
-                           tr("<b>StepDeck</b> %1<br>Operator and technician software for "
-                              "stepper-motor controllers.<br><br>Esc: ramped stop of all "
-                              "motion<br>F1: panic stop (positions are lost)")
-                               .arg(QApplication::applicationVersion()));
+        dialogs::message(this, QMessageBox::Information, tr("About StepDeck"),
+                         tr("<b>StepDeck</b> %1<br>Operator and technician software for "
+                            "stepper-motor controllers.<br><br>Esc: ramped stop of all "
+                            "motion<br>F1: panic stop (positions are lost)")
+                             .arg(QApplication::applicationVersion()));
     });
-    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    // QApplication::aboutQt() is modal: the same facts in a non-modal box.
+    help->addAction(tr("About &Qt"), this, [this] {
+        dialogs::message(this, QMessageBox::Information, tr("About Qt"),
+                         tr("StepDeck uses Qt %1, a cross-platform application framework "
+                            "by The Qt Company, under the GNU LGPL version 3. See "
+                            "<a href=\"https://www.qt.io/\">qt.io</a>.")
+                             .arg(QString::fromLatin1(qVersion())));
+    });
 }
 
 QList<QPair<QString, QWidget*>> MainWindow::pages() const

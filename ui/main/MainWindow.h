@@ -23,6 +23,7 @@ class PositionPanel;
 class RecordsPage;
 class ReferencePanel;
 class SafetyBar;
+class SafetyKeyFilter;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -88,6 +89,7 @@ private:
     KeyboardJog* m_keyboard;
     ConnectionBar* m_connection;
     SafetyBar* m_safety = nullptr;
+    SafetyKeyFilter* m_safetyKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
     PositionPanel* m_position = nullptr;
     ReferencePanel* m_reference = nullptr;

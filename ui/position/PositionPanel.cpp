@@ -1,4 +1,5 @@
 #include "PositionPanel.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "position/UnitsDialog.h"
 #include <QGridLayout>
@@ -159,8 +160,7 @@ void PositionPanel::clearOffsets()
 
 void PositionPanel::editUnits()
 {
-    UnitsDialog dialog(m_context, this);
-    dialog.exec();
+    dialogs::showForPart(new UnitsDialog(m_context, window()), this);
 }
 
 } // namespace stepdeck::ui

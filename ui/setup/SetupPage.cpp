@@ -1,15 +1,16 @@
 #include "SetupPage.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
 #include "setup/ParameterFile.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 
@@ -255,22 +256,29 @@ bool SetupPage::write(bool verify, bool confirmWarnings)
         setMessage(tr("Not written: %1").arg(invalid), true);
         return false;
     }
-    if (confirmWarnings && !confirm(set))
-        return false;
+    if (!confirmWarnings) {
+        send(set, verify);
+        return true;
+    }
+    QPointer<SetupPage> self(this);
+    WriteWarnings::confirm(this, m_schema, set, [self, set, verify](bool confirmed) {
+        if (!self)
+            return;
+        if (confirmed)
+            self->send(set, verify);
+        else
+            self->setMessage(tr("Not written: cancelled."), false);
+    });
+    return true;
+}
+
+void SetupPage::send(const ParameterSet& set, bool verify)
+{
     m_pendingSet = set;
     m_pendingWrite = m_context->session()->writeParameters(set, verify);
     setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
                       : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
                false);
-    return true;
-}
-
-bool SetupPage::confirm(const ParameterSet& set)
-{
-    if (WriteWarnings::confirm(this, m_schema, set))
-        return true;
-    setMessage(tr("Not written: cancelled."), false);
-    return false;
 }
 
 void SetupPage::read()
@@ -371,41 +379,46 @@ bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error)
 
 void SetupPage::saveAs()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save parameters"), m_context->modelId() + QStringLiteral("-parameters.json"),
-        tr("Parameter files (*.json)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (saveToFile(path, &error))
-        setMessage(tr("Saved to %1.").arg(path), false);
-    else
-        setMessage(error, true);
+    dialogs::saveFile(this, QStringLiteral("parameters"), tr("Save parameters"),
+                      m_context->modelId() + QStringLiteral("-parameters.json"),
+                      tr("Parameter files (*.json)"), [this](const QString& path) {
+                          QString error;
+                          if (saveToFile(path, &error))
+                              setMessage(tr("Saved to %1.").arg(path), false);
+                          else
+                              setMessage(error, true);
+                      });
 }
 
 void SetupPage::load()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameters"), QString(),
-                                                      tr("Parameter files (*.json)"));
-    if (path.isEmpty())
-        return;
+    dialogs::openFile(this, QStringLiteral("parameters"), tr("Load parameters"),
+                      tr("Parameter files (*.json)"),
+                      [this](const QString& path) { loadFile(path); });
+}
+
+DiffDialog* SetupPage::loadFile(const QString& path)
+{
     ParameterSet loaded;
     QString error;
     if (!readFile(path, &loaded, &error)) {
         setMessage(error, true);
-        return;
+        return nullptr;
     }
     ParameterSet current;
     formValues(&current, nullptr);
-    DiffDialog dialog(DiffDialog::compare(m_schema, current, loaded), QFileInfo(path).fileName(),
-                      this);
-    const int choice = dialog.exec();
-    if (choice == DiffDialog::Cancel)
-        return;
-    applyToForm(loaded);
-    setMessage(tr("Loaded %1 into the form.").arg(QFileInfo(path).fileName()), false);
-    if (choice == DiffDialog::LoadAndWrite)
-        write(false, true);
+    const QString name = QFileInfo(path).fileName();
+    auto* dialog = new DiffDialog(DiffDialog::compare(m_schema, current, loaded), name, window());
+    connect(dialog, &QDialog::finished, this, [this, loaded, name](int choice) {
+        if (choice == DiffDialog::Cancel)
+            return;
+        applyToForm(loaded);
+        setMessage(tr("Loaded %1 into the form.").arg(name), false);
+        if (choice == DiffDialog::LoadAndWrite)
+            write(false, true);
+    });
+    dialogs::showForPart(dialog, this);
+    return dialog;
 }
 
 } // namespace stepdeck::ui

@@ -10,6 +10,7 @@ class QVBoxLayout;
 
 namespace stepdeck::ui {
 
+class DiffDialog;
 class MachineContext;
 class ParameterField;
 
@@ -40,13 +41,17 @@ public:
     bool readFile(const QString& path, ParameterSet* set, QString* error) const;
 
 public Q_SLOTS:
-    // false: nothing sent (invalid values, nothing changed, or a warning not confirmed).
-    // confirmWarnings: ask before writing parameters whose schema entry carries a warning.
+    // false: nothing sent (invalid values or nothing changed). confirmWarnings: ask before
+    // writing parameters whose schema entry carries a warning (true then means "sent or
+    // waiting for the answer").
     bool write(bool verify = false, bool confirmWarnings = false);
     void read();
     void resetToDefaults();
     void saveAs();
     void load();
+    // Shows what the file changes (non-modal); the technician loads, loads and writes, or
+    // cancels. nullptr when the file cannot be read (the message says why).
+    DiffDialog* loadFile(const QString& path);
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -58,7 +63,7 @@ private:
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error);
     void setBaselines(const ParameterSet& set);
-    bool confirm(const ParameterSet& set);
+    void send(const ParameterSet& set, bool verify);
 
     MachineContext* m_context;
     ParameterSchema m_schema;
