@@ -2730,6 +2730,22 @@
             <source>Keyboard</source>
             <translation>Tastatur</translation>
         </message>
+        <message>
+            <source>←/→ X</source>
+            <translation>←/→ X</translation>
+        </message>
+        <message>
+            <source>↓/↑ Y</source>
+            <translation>↓/↑ Y</translation>
+        </message>
+        <message>
+            <source>Page Down/Up Z</source>
+            <translation>Bild ab/auf Z</translation>
+        </message>
+        <message>
+            <source>End/Home U</source>
+            <translation>Ende/Pos1 U</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineContext</name>
@@ -2923,6 +2939,25 @@
         <message>
             <source>Records</source>
             <translation>Sätze</translation>
+        </message>
+        <message>
+            <source>About Qt</source>
+            <translation>Über Qt</translation>
+        </message>
+        <message>
+            <source>StepDeck uses Qt %1, a cross-platform application framework by The Qt Company, under the GNU LGPL version 3. See &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</source>
+            <translation>StepDeck verwendet Qt %1, ein plattformübergreifendes Anwendungs-Framework von The Qt Company, unter der GNU LGPL Version 3. Siehe &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::PadJogSource</name>
+        <message>
+            <source>Pad %1</source>
+            <translation>Joystick %1</translation>
+        </message>
+        <message>
+            <source>Pad</source>
+            <translation>Joystick</translation>
         </message>
     </context>
     <context>
@@ -3269,6 +3304,61 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::SafetyBanner</name>
+        <message>
+            <source>the controller may still be moving: use the machine's emergency stop</source>
+            <translation>die Steuerung bewegt sich möglicherweise noch: den Not-Aus der Maschine benutzen</translation>
+        </message>
+        <message>
+            <source>Link lost while the machine was moving: %1. Positions are unknown: reconnect, then reference all axes.</source>
+            <translation>Verbindung während einer Bewegung verloren: %1. Die Positionen sind unbekannt: neu verbinden, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Link lost: positions are unknown. Reconnect, then reference all axes.</source>
+            <translation>Verbindung verloren: die Positionen sind unbekannt. Neu verbinden, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Disconnected while the machine was moving: no standstill was confirmed; %1.</source>
+            <translation>Während einer Bewegung getrennt: kein Stillstand wurde bestätigt; %1.</translation>
+        </message>
+        <message>
+            <source>Connecting…</source>
+            <translation>Verbinde…</translation>
+        </message>
+        <message>
+            <source>Not connected.</source>
+            <translation>Nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>No standstill confirmed by the controller: %1.</source>
+            <translation>Die Steuerung hat keinen Stillstand bestätigt: %1.</translation>
+        </message>
+        <message>
+            <source>PANIC STOP sent: positions are lost; reference all axes before any absolute move.</source>
+            <translation>PANIK-STOPP gesendet: die Positionen sind verloren; vor jeder Absolutfahrt alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>EMERGENCY STOP active on the machine: positions are lost. Release the emergency stop, then reference all axes.</source>
+            <translation>NOT-AUS an der Maschine aktiv: die Positionen sind verloren. Den Not-Aus entriegeln, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Setup incomplete: write the setup (start speed, max speed, acceleration) on the Setup page first. The controller refuses every move until then.</source>
+            <translation>Setup unvollständig: zuerst das Setup (Startgeschwindigkeit, Maximalgeschwindigkeit, Beschleunigung) auf der Seite Setup schreiben. Bis dahin lehnt die Steuerung jede Fahrt ab.</translation>
+        </message>
+        <message>
+            <source>Ready: all axes referenced.</source>
+            <translation>Bereit: alle Achsen referenziert.</translation>
+        </message>
+        <message>
+            <source>Positions are lost (panic stop or reconnect). Reference the machine before any absolute move.</source>
+            <translation>Die Positionen sind verloren (Panik-Stopp oder Neuverbindung). Vor jeder Absolutfahrt die Maschine referenzieren.</translation>
+        </message>
+        <message>
+            <source>Not referenced: positions are unknown until the axes are referenced.</source>
+            <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::SafetyBar</name>
         <message>
             <source>STOP  (Esc)</source>
@@ -3291,28 +3381,20 @@
             <translation>Alle referenzieren…</translation>
         </message>
         <message>
-            <source>Link lost: motion stopped by the controller's own safety, positions are unknown. Reconnect, then reference all axes.</source>
-            <translation>Verbindung verloren: die Bewegung wurde durch die Sicherheitsfunktion der Steuerung gestoppt, die Positionen sind unbekannt. Neu verbinden, dann alle Achsen referenzieren.</translation>
+            <source>STOP  (Esc)
+does not stop the controller</source>
+            <translation>STOPP  (Esc)
+hält die Steuerung nicht an</translation>
         </message>
         <message>
-            <source>Not connected.</source>
-            <translation>Nicht verbunden.</translation>
+            <source>PANIC  (F1)
+does not stop the controller</source>
+            <translation>PANIK  (F1)
+hält die Steuerung nicht an</translation>
         </message>
         <message>
-            <source>EMERGENCY STOP active: positions are lost. Release the emergency stop, then reference all axes.</source>
-            <translation>NOT-AUS aktiv: die Positionen sind verloren. Not-Aus lösen, dann alle Achsen referenzieren.</translation>
-        </message>
-        <message>
-            <source>Positions are lost (panic stop or reconnect). Reference the machine before any absolute move.</source>
-            <translation>Die Positionen sind verloren (Panik-Stopp oder Neuverbindung). Vor jeder Absolutfahrt die Maschine referenzieren.</translation>
-        </message>
-        <message>
-            <source>Not referenced: positions are unknown until the axes are referenced.</source>
-            <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
-        </message>
-        <message>
-            <source>Ready: all axes referenced.</source>
-            <translation>Bereit: alle Achsen referenziert.</translation>
+            <source>Ends every jog input and the host's queued work; %1</source>
+            <translation>Beendet jede Tipp-Eingabe und die wartenden Aufträge des Rechners; %1</translation>
         </message>
     </context>
     <context>

@@ -21,6 +21,9 @@ MachineContext::~MachineContext()
 
 Capabilities MachineContext::capabilities() const
 {
+    // The session's are the controller's own (they may depend on the axis map).
+    if (m_session->isCreated())
+        return m_session->capabilities();
     return m_model ? m_model->capabilities : Capabilities{};
 }
 
