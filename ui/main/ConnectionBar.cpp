@@ -27,9 +27,14 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     for (const ModelInfo& model : models())
         m_model->addItem(modelDisplayName(model), model.id);
     m_model->setToolTip(tr("Controller model"));
+    // Both combos give way on a narrow screen (issue 11: the bar must fit 1024 px); the
+    // popup lists still show the full names.
+    m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_model->setMinimumContentsLength(14);
+    m_model->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setMinimumContentsLength(28);
+    m_port->setMinimumContentsLength(18);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("Serial port, the in-process simulator, tcp://HOST:PORT for a serial "
                           "device server, or a device path such as /dev/pts/3"));
@@ -43,10 +48,10 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     m_rate->setToolTip(tr("Achieved status poll rate"));
 
     layout->addWidget(new QLabel(tr("Model:"), this));
-    layout->addWidget(m_model);
+    layout->addWidget(m_model, 1);
     layout->addSpacing(8);
     layout->addWidget(new QLabel(tr("Port:"), this));
-    layout->addWidget(m_port, 1);
+    layout->addWidget(m_port, 2);
     layout->addWidget(new QLabel(tr("Poll:"), this));
     layout->addWidget(m_interval);
     layout->addWidget(m_connect);

@@ -31,6 +31,8 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -74,7 +76,12 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     buildDocks();
     buildMenus();
 
+    m_linkLabel->setObjectName(QStringLiteral("linkState"));
+    m_errorLabel->setObjectName(QStringLiteral("statusMessage"));
     m_errorLabel->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
+    // A long message wraps instead of widening the window; it is always readable.
+    m_errorLabel->setWordWrap(true);
+    m_errorLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_errorLabel, 1);
     statusBar()->addPermanentWidget(m_linkLabel);
 
@@ -91,7 +98,12 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);
 
-    resize(1600, 1000);
+    // Fit the screen (issue 11): at most 1600x1000, never more than the screen offers.
+    QSize size(1600, 1000);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size());
+    resize(size);
+    applyDefaultDockSizes();
     m_defaultState = saveState();
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -175,9 +187,20 @@ void MainWindow::buildDocks()
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);
     setup->raise();
-    resizeDocks({setup}, {300}, Qt::Vertical);
-    resizeDocks({m_docks.at(0), status}, {390, 470}, Qt::Horizontal);
     setDockNestingEnabled(true);
+}
+
+void MainWindow::applyDefaultDockSizes()
+{
+    // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
+    // side docks about a quarter of the width each, the bottom tabs a third of the height.
+    QDockWidget* position = findChild<QDockWidget*>(QStringLiteral("positionDock"));
+    QDockWidget* status = findChild<QDockWidget*>(QStringLiteral("statusDock"));
+    QDockWidget* setup = findChild<QDockWidget*>(QStringLiteral("setupDock"));
+    resizeDocks({position, status},
+                {qBound(220, width() * 29 / 100, 470), qBound(220, width() * 24 / 100, 470)},
+                Qt::Horizontal);
+    resizeDocks({setup}, {qBound(160, height() / 3, 320)}, Qt::Vertical);
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,
@@ -185,7 +208,14 @@ QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QS
 {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
-    dock->setWidget(widget);
+    // A page scrolls instead of forcing its size on the window (issue 11: the window must
+    // fit 1024x768; docks add up their minimum sizes otherwise).
+    auto* scroll = new QScrollArea(dock);
+    scroll->setObjectName(name + QStringLiteral("Scroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(widget);
+    dock->setWidget(scroll);
     addDockWidget(area, dock);
     m_docks << dock;
     return dock;
@@ -217,7 +247,7 @@ void MainWindow::buildMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : std::as_const(m_docks))
         m_viewMenu->addAction(dock->toggleViewAction());
-    m_viewMenu->addSeparator();
+    m_viewSeparator = m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("Reset &layout"), this, &MainWindow::resetLayout);
     QMenu* language = m_viewMenu->addMenu(tr("&Language"));
     auto* group = new QActionGroup(language);
@@ -255,6 +285,21 @@ void MainWindow::buildMenus()
     });
 }
 
+QWidget* MainWindow::pageOf(QDockWidget* dock)
+{
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    return scroll ? scroll->widget() : dock->widget();
+}
+
+QDockWidget* MainWindow::dockOf(QWidget* page) const
+{
+    for (QDockWidget* dock : m_docks) {
+        if (pageOf(dock) == page)
+            return dock;
+    }
+    return nullptr;
+}
+
 QList<QPair<QString, QWidget*>> MainWindow::pages() const
 {
     QList<QPair<QString, QWidget*>> out{{QStringLiteral("jog"), m_jogPanel}};
@@ -263,19 +308,27 @@ QList<QPair<QString, QWidget*>> MainWindow::pages() const
             continue; // a page this model does not have
         QString stem = dock->objectName();
         stem.chop(4); // "Dock"
-        out.append({stem, dock->widget()});
+        out.append({stem, pageOf(dock)});
     }
     return out;
 }
 
 void MainWindow::raisePage(QWidget* page)
 {
-    for (QDockWidget* dock : std::as_const(m_docks)) {
-        if (dock->widget() == page) {
-            dock->show();
-            dock->raise();
-        }
+    if (QDockWidget* dock = dockOf(page)) {
+        dock->show();
+        dock->raise();
     }
+}
+
+QDockWidget* MainWindow::addPage(QWidget* page, const QString& title, const QString& name,
+                                 Qt::DockWidgetArea area, QWidget* tabWith)
+{
+    QDockWidget* dock = addDock(page, title, name, area);
+    if (QDockWidget* other = tabWith ? dockOf(tabWith) : nullptr)
+        tabifyDockWidget(other, dock);
+    m_viewMenu->insertAction(m_viewSeparator, dock->toggleViewAction());
+    return dock;
 }
 
 void MainWindow::stopAll()
@@ -355,6 +408,7 @@ void MainWindow::updateTitle()
 void MainWindow::resetLayout()
 {
     restoreState(m_defaultState);
+    applyDefaultDockSizes(); // for the window's size now
     for (QDockWidget* dock : std::as_const(m_docks))
         dock->show();
     updateModelDocks();

@@ -59,9 +59,15 @@ public:
     QAction* panicAction() const { return m_panicAction; }
     QString lastError() const { return m_lastError; }
 
-    // Pages for --screenshot: a file stem and the dock (or central widget) that shows it.
+    // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
+    // central jog panel).
     QList<QPair<QString, QWidget*>> pages() const;
     void raisePage(QWidget* page);
+    QDockWidget* dockOf(QWidget* page) const;
+    // For model pages added by other parts (e.g. a model's own page): a dock with the page in
+    // a scroll area, tabbed with the dock of tabWith (if given), listed in the View menu.
+    QDockWidget* addPage(QWidget* page, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area, QWidget* tabWith = nullptr);
 
 public Q_SLOTS:
     void stopAll();
@@ -79,6 +85,8 @@ private:
     void buildDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);
+    static QWidget* pageOf(QDockWidget* dock);
+    void applyDefaultDockSizes();
     void updateTitle();
     void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
@@ -105,6 +113,7 @@ private:
     GamepadJogSource* m_gamepadSource = nullptr;
     QList<QDockWidget*> m_docks;
     QMenu* m_viewMenu = nullptr;
+    QAction* m_viewSeparator = nullptr;
     QAction* m_connectAction = nullptr;
     QAction* m_stopAction = nullptr;
     QAction* m_panicAction = nullptr;

@@ -140,6 +140,15 @@ bool ScreenshotScript::capture()
         QCoreApplication::processEvents();
         ok = m_window->grab().save(dir.filePath(QStringLiteral("window-%1.png").arg(stem))) && ok;
     }
+    // What an operator sees on a 1366x768 screen with the default layout (issue 11).
+    m_window->resize(1366, 768);
+    m_window->resetLayout();
+    m_window->raisePage(m_window->setupPage());
+    QCoreApplication::processEvents();
+    ok = m_window->grab().save(dir.filePath(QStringLiteral("main-1366x768.png"))) && ok;
+    m_window->resize(1600, 1000);
+    m_window->resetLayout();
+    QCoreApplication::processEvents();
     // Each page on its own at a size that shows all of it: docks float for the picture.
     static const QMap<QString, QSize> sizes{
         {QStringLiteral("position"), {480, 400}}, {QStringLiteral("reference"), {560, 300}},
@@ -149,7 +158,7 @@ bool ScreenshotScript::capture()
         {QStringLiteral("records"), {1300, 820}},
     };
     for (const auto& [stem, page] : pages) {
-        auto* dock = qobject_cast<QDockWidget*>(page->parentWidget());
+        QDockWidget* dock = m_window->dockOf(page);
         if (dock && sizes.contains(stem)) {
             dock->setFloating(true);
             dock->resize(sizes.value(stem));
