@@ -2351,6 +2351,10 @@
             <source>%1 Hz</source>
             <translation>%1 Hz</translation>
         </message>
+        <message>
+            <source>No reply since %1</source>
+            <translation>Keine Antwort seit %1</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>
@@ -2909,22 +2913,6 @@
             <translation>PANIK-STOPP gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
         </message>
         <message>
-            <source>Disconnected</source>
-            <translation>Getrennt</translation>
-        </message>
-        <message>
-            <source>Connecting…</source>
-            <translation>Verbinde…</translation>
-        </message>
-        <message>
-            <source>Connected</source>
-            <translation>Verbunden</translation>
-        </message>
-        <message>
-            <source>Link lost</source>
-            <translation>Verbindung verloren</translation>
-        </message>
-        <message>
             <source>simulator</source>
             <translation>Simulator</translation>
         </message>
@@ -3047,6 +3035,46 @@
         <message>
             <source>Referenced and confirmed.</source>
             <translation>Referenziert und bestätigt.</translation>
+        </message>
+        <message>
+            <source>last known: machine %1 steps</source>
+            <translation>zuletzt bekannt: Maschine %1 Schritte</translation>
+        </message>
+        <message>
+            <source>NO LINK</source>
+            <translation>KEINE VERBINDUNG</translation>
+        </message>
+        <message>
+            <source>The link is down: this is the last value before it ended, not the position now.</source>
+            <translation>Die Verbindung ist getrennt: dies ist der letzte Wert davor, nicht die aktuelle Position.</translation>
+        </message>
+        <message>
+            <source>moving to %1 (machine %2 steps)</source>
+            <translation>fährt nach %1 (Maschine %2 Schritte)</translation>
+        </message>
+        <message>
+            <source>MOVING</source>
+            <translation>FÄHRT</translation>
+        </message>
+        <message>
+            <source>Estimated from the ramp parameters; the controller reports no position during a move. The target is shown below.</source>
+            <translation>Aus den Rampenparametern geschätzt; die Steuerung meldet während einer Fahrt keine Position. Das Ziel steht darunter.</translation>
+        </message>
+        <message>
+            <source>The controller reports no position during a move and the ramp parameters are not known in this session. The target is shown below.</source>
+            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt. Das Ziel steht darunter.</translation>
+        </message>
+        <message>
+            <source>Read back from the controller while moving.</source>
+            <translation>Während der Fahrt von der Steuerung zurückgelesen.</translation>
+        </message>
+        <message>
+            <source>SET</source>
+            <translation>GESETZT</translation>
+        </message>
+        <message>
+            <source>Known, but not from a reference run of this session.</source>
+            <translation>Bekannt, aber nicht aus einer Referenzfahrt dieser Sitzung.</translation>
         </message>
     </context>
     <context>
@@ -3262,6 +3290,26 @@
         <message>
             <source>referenced</source>
             <translation>referenziert</translation>
+        </message>
+        <message>
+            <source>the panic stop</source>
+            <translation>Panik-Stopp</translation>
+        </message>
+        <message>
+            <source>unknown (no link)</source>
+            <translation>unbekannt (keine Verbindung)</translation>
+        </message>
+        <message>
+            <source>the link is down</source>
+            <translation>Verbindung getrennt</translation>
+        </message>
+        <message>
+            <source>a panic stop, reset or limit switch</source>
+            <translation>Panik-Stopp, Reset oder Endschalter</translation>
+        </message>
+        <message>
+            <source>The axes are no longer referenced (%1): reference them again.</source>
+            <translation>Die Achsen sind nicht mehr referenziert (%1): erneut referenzieren.</translation>
         </message>
     </context>
     <context>

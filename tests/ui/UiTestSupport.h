@@ -175,7 +175,7 @@ public:
                                {QStringLiteral("max-speed"), perAxis(maxSpeed)},
                                {QStringLiteral("acceleration"), perAxis(acceleration)},
                                {QStringLiteral("feed-speed"), perAxis(50)}};
-        return session->writeParameters(set, false);
+        return window->context()->writeParameters(set, false); // known to the UI afterwards
     }
 
     // Runs fn on the in-process simulator (of type Sim) in the controller thread and waits,

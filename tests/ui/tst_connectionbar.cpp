@@ -24,6 +24,8 @@ private Q_SLOTS:
     void portSpec_typedTcpOrPath_usedVerbatim();
     void pty_peerVanishes_showsDisconnectedWithoutFreezing();
     void unknownPort_connectFails_saysWhy();
+    void silentDevice_replyOverdue_amberBeforeLinkLost();
+    void failedConnect_thenConnected_oldErrorCleared();
 
 private:
     bool startPtyDevice();
@@ -119,6 +121,38 @@ void TestConnectionBar::unknownPort_connectFails_saysWhy()
     QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->lastError().isEmpty(), 5000);
     QVERIFY(!m_f->window->context()->isConnected());
     QTRY_COMPARE(bar->connectButton()->text(), QStringLiteral("Connect"));
+}
+
+void TestConnectionBar::silentDevice_replyOverdue_amberBeforeLinkLost()
+{
+    QVERIFY(m_f->connectSim());
+    ui::ConnectionBar* bar = m_f->window->connectionBar();
+    QTRY_COMPARE(bar->linkText(), QStringLiteral("Connected"));
+    QVERIFY(!bar->replyOverdue());
+    QStringList seen; // link text, with the link state at that moment
+    QObject ctx;
+    connect(bar, &ui::ConnectionBar::linkTextChanged, &ctx, [&](const QString& text) {
+        seen << QStringLiteral("%1 (%2)").arg(text, linkStateName(m_f->session->linkState()));
+    });
+    QVERIFY(m_f->withSim([](elab::ElabSimulator* sim) { sim->faults().silent = true; }));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        bar->replyOverdue() || m_f->session->linkState() != LinkState::Connected, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_f->session->linkState(), LinkState::Lost, 20000);
+    QTRY_COMPARE(bar->linkText(), QStringLiteral("Link lost"));
+    // "No reply since HH:mm:ss" was shown, amber, while the link still counted as up.
+    QVERIFY2(!seen.isEmpty() && seen.first().startsWith(QStringLiteral("No reply since ")) &&
+                 seen.first().endsWith(QStringLiteral("(connected)")),
+             qPrintable(seen.join(QStringLiteral("; "))));
+}
+
+void TestConnectionBar::failedConnect_thenConnected_oldErrorCleared()
+{
+    ui::ConnectionBar* bar = m_f->window->connectionBar();
+    bar->setPortSpec(QStringLiteral("/dev/does-not-exist-stepdeck"));
+    bar->connectNow();
+    QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->lastError().isEmpty(), 5000);
+    QVERIFY(m_f->connectSim());
+    QTRY_COMPARE(m_f->window->lastError(), QString()); // its cause has ended
 }
 
 QTEST_MAIN(TestConnectionBar)

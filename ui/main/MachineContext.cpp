@@ -12,7 +12,41 @@ QString modelDisplayName(const ModelInfo& model)
 
 MachineContext::MachineContext(QObject* parent)
     : QObject(parent), m_session(new ControllerSession(this))
-{}
+{
+    connect(m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
+        if (state != LinkState::Connected)
+            forgetKnownParameters(); // a new link may meet a reset or power-cycled device
+    });
+    connect(m_session, &ControllerSession::statusChanged, this, [this](const MachineStatus& s) {
+        // A board that reports its setup incomplete again has lost it (power cycle).
+        if (s.setupIncomplete && !m_setupIncomplete)
+            forgetKnownParameters();
+        m_setupIncomplete = s.setupIncomplete;
+    });
+    connect(m_session, &ControllerSession::requestFinished, this, [this](const CommandResult& r) {
+        if (m_pendingWrites.contains(r.id)) {
+            const ParameterSet written = m_pendingWrites.take(r.id);
+            if (r.ok())
+                addKnownParameters(written);
+        } else if (m_pendingReads.remove(r.id) && r.ok() && r.value.canConvert<ParameterSet>()) {
+            addKnownParameters(r.value.value<ParameterSet>());
+        }
+    });
+}
+
+RequestId MachineContext::writeParameters(const ParameterSet& values, bool verify)
+{
+    const RequestId id = m_session->writeParameters(values, verify);
+    m_pendingWrites.insert(id, values);
+    return id;
+}
+
+RequestId MachineContext::readParameters(const QStringList& names)
+{
+    const RequestId id = m_session->readParameters(names);
+    m_pendingReads.insert(id);
+    return id;
+}
 
 MachineContext::~MachineContext()
 {
@@ -89,6 +123,34 @@ void MachineContext::panic()
 {
     m_session->panic();
     Q_EMIT panicTriggered();
+}
+
+void MachineContext::reset()
+{
+    m_session->reset();
+    forgetKnownParameters();
+}
+
+void MachineContext::addKnownParameters(const ParameterSet& set)
+{
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        ParameterValue& known = m_known[it.key()];
+        if (it.value().isPerAxis()) {
+            for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
+                known.perAxis.insert(a.key(), a.value());
+        } else {
+            known.global = it.value().global;
+        }
+    }
+    Q_EMIT knownParametersChanged();
+}
+
+void MachineContext::forgetKnownParameters()
+{
+    m_known.clear();
+    m_pendingWrites.clear(); // answers to requests of an earlier link count for nothing
+    m_pendingReads.clear();
+    Q_EMIT knownParametersChanged();
 }
 
 QString MachineContext::settingsPrefix(Axis axis) const

@@ -40,6 +40,19 @@ public:
     bool connectTo(const ConnectionSpec& spec, QString* error);
     void disconnectFromController();
 
+    // Parameter values known to be on the device in this link session: written successfully
+    // or read back. Forgotten (knownParametersLost) whenever the device's values may have
+    // changed behind the host's back: every (re)connect, link loss, reset, and a board that
+    // reports setup incomplete again (power cycle). A write-only controller's form counts
+    // nothing as written unless it is in here (issue 11).
+    const ParameterSet& knownParameters() const { return m_known; }
+    // Session reads and writes that keep knownParameters() up to date: a successful write
+    // adds what was written, a read adds what came back.
+    RequestId writeParameters(const ParameterSet& values, bool verify);
+    RequestId readParameters(const QStringList& names);
+    void addKnownParameters(const ParameterSet& set); // merged per axis
+    void forgetKnownParameters();
+
     AxisUnits units(Axis axis) const;
     void setUnits(Axis axis, const AxisUnits& units);
     // Machine position in steps -> work position in user units (or steps when none set).
@@ -51,10 +64,12 @@ Q_SIGNALS:
     void unitsChanged();
     // A UI-level event: the operator pressed panic (positions are lost from now on).
     void panicTriggered();
+    void knownParametersChanged();
 
 public Q_SLOTS:
     void stop();
     void panic();
+    void reset(); // the controller's reset: its values are unknown afterwards
 
 private:
     void loadUnits();
@@ -64,6 +79,10 @@ private:
     const ModelInfo* m_model = nullptr;
     QString m_port;
     QMap<Axis, AxisUnits> m_units;
+    ParameterSet m_known;
+    QMap<RequestId, ParameterSet> m_pendingWrites;
+    QSet<RequestId> m_pendingReads;
+    bool m_setupIncomplete = false;
 };
 
 } // namespace stepdeck::ui

@@ -13,6 +13,7 @@
 #include "main/MachineContext.h"
 #include "main/SafetyBar.h"
 #include "main/SafetyKeyFilter.h"
+#include "main/StatusMessages.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -44,7 +45,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     : QMainWindow(parent), m_context(new MachineContext(this)),
       m_jog(new JogController(m_context, this)), m_keyboard(new KeyboardJog(this, this)),
       m_connection(new ConnectionBar(m_context, this)), m_linkLabel(new QLabel(this)),
-      m_errorLabel(new QLabel(this))
+      m_errorLabel(new QLabel(this)), m_messages(new StatusMessages(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_jog->addSource(m_keyboard);
@@ -86,13 +87,34 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     statusBar()->addPermanentWidget(m_linkLabel);
 
     ControllerSession* session = m_context->session();
+    using Owner = StatusMessages::Owner;
+    connect(m_messages, &StatusMessages::changed, this, &MainWindow::showMessages);
     connect(session, &ControllerSession::linkStateChanged, this, &MainWindow::onLinkState);
-    connect(session, &ControllerSession::errorOccurred, this, &MainWindow::showError);
+    connect(session, &ControllerSession::errorOccurred, this,
+            [this](const QString& text) { m_messages->show(Owner::Controller, text); });
     connect(session, &ControllerSession::requestFinished, this, &MainWindow::onResult);
-    connect(session, &ControllerSession::jogRefused, this, &MainWindow::showError);
-    connect(m_connection, &ConnectionBar::connectionFailed, this, &MainWindow::showError);
-    connect(m_setup, &SetupPage::message, statusBar(),
-            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(session, &ControllerSession::jogRefused, this,
+            [this](const QString& text) { m_messages->show(Owner::Jog, text); });
+    connect(m_jog, &JogController::targetsChanged, this, [this](const AxisVelocities& t) {
+        if (!t.isEmpty())
+            m_messages->clear(Owner::Jog); // jogging works again
+    });
+    connect(session, &ControllerSession::statusChanged, this, [this](const MachineStatus& s) {
+        if (!s.panic)
+            m_messages->clear(Owner::Safety);
+    });
+    connect(m_connection, &ConnectionBar::connectionFailed, this,
+            [this](const QString& text) { m_messages->show(Owner::Link, text); });
+    connect(m_connection, &ConnectionBar::linkTextChanged, this,
+            [this](const QString& text, bool warning) {
+                m_linkLabel->setText(text);
+                m_linkLabel->setStyleSheet(warning ? QStringLiteral("QLabel { color: #b26a00; "
+                                                                    "font-weight: bold; }")
+                                                   : QString());
+            });
+    connect(m_setup, &SetupPage::message, this, [this](const QString& text) {
+        m_messages->show(Owner::Setup, text, StatusMessages::Severity::Info, 8000);
+    });
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
@@ -109,6 +131,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     onLinkState(LinkState::Disconnected, {});
+    m_linkLabel->setText(m_connection->linkText());
     updateTitle();
     updateModelDocks();
 }
@@ -140,7 +163,7 @@ void MainWindow::buildActions()
     m_resetAction = new QAction(tr("Reset &controller"), this);
     connect(m_resetAction, &QAction::triggered, this, [this] {
         m_jogPanel->releaseAll();
-        m_context->session()->reset();
+        m_context->reset();
     });
     m_keyboardAction = new QAction(tr("&Keyboard jog"), this);
     m_keyboardAction->setCheckable(true);
@@ -340,7 +363,9 @@ void MainWindow::stopAll()
         return;
     }
     m_context->stop();
-    statusBar()->showMessage(tr("Stop sent"), 3000);
+    // Sent, not confirmed: what the device does shows in the banner and the status.
+    m_messages->show(StatusMessages::Owner::Safety, tr("Stop sent"), StatusMessages::Severity::Info,
+                     3000);
 }
 
 void MainWindow::panicAll()
@@ -351,43 +376,47 @@ void MainWindow::panicAll()
         return;
     }
     m_context->panic();
-    showError(tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
+    m_messages->show(StatusMessages::Owner::Safety,
+                     tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
 }
 
 void MainWindow::showError(const QString& message)
 {
-    m_lastError = message;
-    m_errorLabel->setText(QStringLiteral("%1  %2").arg(
-        QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), message));
-    m_errorLabel->setToolTip(message);
+    m_messages->show(StatusMessages::Owner::General, message);
+}
+
+QString MainWindow::lastError() const
+{
+    return m_messages->currentText();
+}
+
+void MainWindow::showMessages()
+{
+    m_errorLabel->setText(m_messages->currentLine());
+    m_errorLabel->setStyleSheet(m_messages->currentSeverity() == StatusMessages::Severity::Error
+                                    ? QStringLiteral("QLabel { color: #c62828; }")
+                                    : QString());
+    m_errorLabel->setToolTip(m_messages->history().join(QLatin1Char('\n')));
 }
 
 void MainWindow::onResult(const CommandResult& result)
 {
     if (!result.ok() && result.error != ErrorKind::Cancelled)
-        showError(result.message);
+        m_messages->show(StatusMessages::Owner::Request, result.message);
 }
 
 void MainWindow::onLinkState(LinkState state, const QString& reason)
 {
-    switch (state) {
-    case LinkState::Disconnected:
-        m_linkLabel->setText(tr("Disconnected"));
-        break;
-    case LinkState::Connecting:
-        m_linkLabel->setText(tr("Connecting\u2026"));
-        break;
-    case LinkState::Connected:
-        m_linkLabel->setText(tr("Connected"));
-        break;
-    case LinkState::Lost:
-        m_linkLabel->setText(tr("Link lost"));
-        break;
-    }
+    using Owner = StatusMessages::Owner;
     if (state != LinkState::Connected)
         m_jogPanel->releaseAll();
-    if (!reason.isEmpty() && state != LinkState::Connected)
-        showError(reason);
+    if (state == LinkState::Connected) {
+        // A new link: what the last one reported is over.
+        for (Owner owner : {Owner::Link, Owner::Controller, Owner::Request, Owner::Jog})
+            m_messages->clear(owner);
+    } else if (!reason.isEmpty()) {
+        m_messages->show(Owner::Link, reason);
+    }
     updateTitle();
 }
 

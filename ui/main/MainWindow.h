@@ -24,6 +24,7 @@ class RecordsPage;
 class ReferencePanel;
 class SafetyBar;
 class SafetyKeyFilter;
+class StatusMessages;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -57,7 +58,9 @@ public:
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
-    QString lastError() const { return m_lastError; }
+    // The status bar's current message (empty when its cause has ended or it expired).
+    QString lastError() const;
+    StatusMessages* messages() const { return m_messages; }
 
     // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
     // central jog panel).
@@ -91,6 +94,7 @@ private:
     void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
     void onResult(const CommandResult& result);
+    void showMessages();
 
     MachineContext* m_context;
     JogController* m_jog;
@@ -122,7 +126,7 @@ private:
     QAction* m_keyboardAction = nullptr;
     QLabel* m_linkLabel;
     QLabel* m_errorLabel;
-    QString m_lastError;
+    StatusMessages* m_messages;
     QByteArray m_defaultState;
 };
 

@@ -1,17 +1,22 @@
 #include "PositionPanel.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
+#include "position/MoveEstimate.h"
 #include "position/UnitsDialog.h"
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTimer>
 #include <QToolButton>
 
 namespace stepdeck::ui {
 
 PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_grid(new QGridLayout)
+    : QWidget(parent), m_context(context), m_grid(new QGridLayout), m_moveTick(new QTimer(this))
 {
+    // The estimate advances between status reads.
+    m_moveTick->setInterval(100);
+    connect(m_moveTick, &QTimer::timeout, this, [this] { onStatus(m_context->status()); });
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(m_grid);
     auto* buttons = new QHBoxLayout;
@@ -35,6 +40,11 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     connect(context, &MachineContext::unitsChanged, this,
             [this] { onStatus(m_context->status()); });
     connect(context->session(), &ControllerSession::statusChanged, this, &PositionPanel::onStatus);
+    connect(context->session(), &ControllerSession::linkStateChanged, this, [this] {
+        m_moves.clear();
+        m_idlePosition.clear();
+        onStatus(m_context->status());
+    });
     rebuild();
 }
 
@@ -91,44 +101,113 @@ void PositionPanel::rebuild()
 
 void PositionPanel::onStatus(const MachineStatus& status)
 {
+    bool anyMove = false;
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
-        const Axis axis = it.key();
-        const Row& row = it.value();
-        const AxisStatus a = status.axes.value(axis);
-        const AxisUnits u = m_context->units(axis);
-        const double value = m_context->toUserUnits(axis, a.position);
-        QString text =
-            u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
-        if (a.positionEstimated && a.positionKnown)
-            text.prepend(QStringLiteral("\u2248"));
-        row.value->setText(text);
-        row.unit->setText(m_context->unitName(axis));
-        row.steps->setText(tr("machine %1 steps").arg(a.position));
-        QString state;
-        QString style;
-        if (!a.positionKnown) {
-            state = tr("UNKNOWN");
-            style = QStringLiteral("background:#ffcdd2; color:#8e0000;");
-            row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: #6b7780;"
-                                                    " border-radius: 4px; padding: 2px 8px; }"));
-        } else {
-            state = a.positionEstimated ? tr("ESTIMATED") : tr("REFERENCED");
-            style = a.positionEstimated ? QStringLiteral("background:#ffe082; color:#4e3400;")
-                                        : QStringLiteral("background:#c8e6c9; color:#1b5e20;");
-            row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: #7CFC9A;"
-                                                    " border-radius: 4px; padding: 2px 8px; }"));
+        showAxis(it.key(), it.value(), status.axes.value(it.key()));
+        anyMove = anyMove || m_moves.value(it.key()).active;
+    }
+    if (anyMove && !m_moveTick->isActive())
+        m_moveTick->start();
+    else if (!anyMove)
+        m_moveTick->stop();
+}
+
+std::optional<qint64> PositionPanel::estimate(Axis axis, const MoveTrack& move) const
+{
+    // The E-LAB ramp parameters by their schema names, as written or read in this session.
+    const ParameterSet& known = m_context->knownParameters();
+    auto value = [&](const char* name) {
+        return known.value(QString::fromLatin1(name)).perAxis.value(axis).toDouble();
+    };
+    const MoveProfile profile{value("start-speed"), value("max-speed"), value("acceleration")};
+    if (!profile.isValid())
+        return std::nullopt;
+    const qint64 distance = qAbs(move.to - move.from);
+    const double done =
+        MoveEstimate::travelled(double(distance), profile, move.clock.elapsed() / 1000.0);
+    return move.from + (move.to >= move.from ? 1 : -1) * qint64(done);
+}
+
+void PositionPanel::setState(const Row& row, const QString& state, const QString& style, bool dim,
+                             const QString& tip)
+{
+    row.state->setText(state);
+    row.state->setStyleSheet(
+        QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
+            .arg(style));
+    row.state->setToolTip(tip);
+    row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: %1;"
+                                            " border-radius: 4px; padding: 2px 8px; }")
+                                 .arg(dim ? QStringLiteral("#6b7780") : QStringLiteral("#7CFC9A")));
+}
+
+void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
+{
+    static const QString red = QStringLiteral("background:#ffcdd2; color:#8e0000;");
+    static const QString amber = QStringLiteral("background:#ffe082; color:#4e3400;");
+    static const QString green = QStringLiteral("background:#c8e6c9; color:#1b5e20;");
+    static const QString grey = QStringLiteral("background:#eceff1; color:#37474f;");
+    const AxisUnits u = m_context->units(axis);
+    auto format = [&](qint64 steps) {
+        const double value = m_context->toUserUnits(axis, steps);
+        return u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
+    };
+    row.unit->setText(m_context->unitName(axis));
+    MoveTrack& move = m_moves[axis];
+
+    if (!m_context->isConnected()) {
+        move.active = false;
+        row.value->setText(format(a.position));
+        row.steps->setText(tr("last known: machine %1 steps").arg(a.position));
+        setState(row, tr("NO LINK"), grey, true,
+                 tr("The link is down: this is the last value before it ended, not the "
+                    "position now."));
+        return;
+    }
+    const bool readback = m_context->capabilities().positionReadback;
+    if (a.moving && !readback) {
+        // The core already counts the target; show where the axis probably is.
+        if (!move.active) {
+            move.active = true;
+            move.from = m_idlePosition.value(axis, a.position);
+            move.clock.start();
         }
-        row.state->setText(state);
-        row.state->setStyleSheet(
-            QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
-                .arg(style));
-        row.state->setToolTip(
-            !a.positionKnown
-                ? tr("Not referenced since the last panic, reset or reconnect: the position "
-                     "is counted from where the axis was, not from the machine origin.")
-            : a.positionEstimated
-                ? tr("Integrated from commanded jog rates; the controller did not confirm it.")
-                : tr("Referenced and confirmed."));
+        move.to = a.position;
+        const std::optional<qint64> now = estimate(axis, move);
+        row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
+                               : QStringLiteral("\u2248 \u2026"));
+        row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
+        setState(row, tr("MOVING"), amber, false,
+                 now ? tr("Estimated from the ramp parameters; the controller reports no "
+                          "position during a move. The target is shown below.")
+                     : tr("The controller reports no position during a move and the ramp "
+                          "parameters are not known in this session. The target is shown "
+                          "below."));
+        return;
+    }
+    move.active = false;
+    if (!a.moving)
+        m_idlePosition.insert(axis, a.position);
+    QString text = format(a.position);
+    if (a.positionEstimated && a.positionKnown)
+        text.prepend(QStringLiteral("\u2248"));
+    row.value->setText(text);
+    row.steps->setText(tr("machine %1 steps").arg(a.position));
+    if (!a.positionKnown) {
+        setState(row, tr("UNKNOWN"), red, true,
+                 tr("Not referenced since the last panic, reset or reconnect: the position "
+                    "is counted from where the axis was, not from the machine origin."));
+    } else if (a.moving) {
+        setState(row, tr("MOVING"), amber, false,
+                 tr("Read back from the controller while moving."));
+    } else if (a.positionEstimated) {
+        setState(row, tr("ESTIMATED"), amber, false,
+                 tr("Integrated from commanded jog rates; the controller did not confirm it."));
+    } else if (a.referenced) {
+        setState(row, tr("REFERENCED"), green, false, tr("Referenced and confirmed."));
+    } else {
+        setState(row, tr("SET"), amber, false,
+                 tr("Known, but not from a reference run of this session."));
     }
 }
 
@@ -140,6 +219,11 @@ QString PositionPanel::displayedValue(Axis axis) const
 QString PositionPanel::stateText(Axis axis) const
 {
     return m_rows.contains(axis) ? m_rows.value(axis).state->text() : QString();
+}
+
+QString PositionPanel::detailText(Axis axis) const
+{
+    return m_rows.contains(axis) ? m_rows.value(axis).steps->text() : QString();
 }
 
 void PositionPanel::zeroAxis(Axis axis)

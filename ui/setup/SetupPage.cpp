@@ -275,7 +275,7 @@ bool SetupPage::write(bool verify, bool confirmWarnings)
 void SetupPage::send(const ParameterSet& set, bool verify)
 {
     m_pendingSet = set;
-    m_pendingWrite = m_context->session()->writeParameters(set, verify);
+    m_pendingWrite = m_context->writeParameters(set, verify);
     setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
                       : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
                false);
@@ -292,7 +292,7 @@ void SetupPage::read()
         setMessage(tr("This controller cannot read parameters back."), true);
         return;
     }
-    m_pendingRead = m_context->session()->readParameters(names);
+    m_pendingRead = m_context->readParameters(names);
     setMessage(tr("Reading\u2026"), false);
 }
 

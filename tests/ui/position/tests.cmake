@@ -1,0 +1,3 @@
+# Position read-out: the estimate of a positioning move (pure).
+stepdeck_add_test(tst_moveestimate SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_moveestimate.cpp
+                  LABELS unit LIBS stepdeck_ui)
