@@ -151,11 +151,11 @@
         </message>
         <message>
             <source>high</source>
-            <translation>high</translation>
+            <translation>High-aktiv</translation>
         </message>
         <message>
             <source>low</source>
-            <translation>low</translation>
+            <translation>Low-aktiv</translation>
         </message>
         <message>
             <source>Limit switch polarity</source>
@@ -2951,16 +2951,32 @@
     <context>
         <name>stepdeck::ui::ParameterField</name>
         <message>
-            <source>Allowed: %1 to %2</source>
-            <translation>Erlaubt: %1 bis %2</translation>
-        </message>
-        <message>
             <source>on</source>
             <translation>ein</translation>
         </message>
         <message>
             <source>%1: a value is required</source>
             <translation>%1: ein Wert ist erforderlich</translation>
+        </message>
+        <message>
+            <source>Allowed: %1 to %2 %3</source>
+            <translation>Erlaubt: %1 bis %2 %3</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is out of range (allowed: %3 to %4 %5)</source>
+            <translation>%1: '%2' liegt außerhalb des Bereichs (erlaubt: %3 bis %4 %5)</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not allowed</source>
+            <translation>%1: '%2' ist nicht erlaubt</translation>
+        </message>
+        <message>
+            <source>Unknown: the value could not be read. It is written only if you set it.</source>
+            <translation>Unbekannt: der Wert konnte nicht gelesen werden. Er wird nur geschrieben, wenn Sie ihn setzen.</translation>
         </message>
     </context>
     <context>
@@ -3487,20 +3503,12 @@ hält die Steuerung nicht an</translation>
             <translation>Werte aus der Steuerung zurücklesen</translation>
         </message>
         <message>
-            <source>Write changed values to the controller</source>
-            <translation>Geänderte Werte in die Steuerung schreiben</translation>
-        </message>
-        <message>
             <source>Write, then read back and compare where the protocol can</source>
             <translation>Schreiben, dann zurücklesen und vergleichen, wo das Protokoll es erlaubt</translation>
         </message>
         <message>
             <source>Fill the form with the model's default values (nothing is sent)</source>
             <translation>Formular mit den Standardwerten des Modells füllen (es wird nichts gesendet)</translation>
-        </message>
-        <message>
-            <source>This controller cannot read parameters back: the fields show the defaults (or a loaded file) until written.</source>
-            <translation>Diese Steuerung kann Parameter nicht zurücklesen: die Felder zeigen die Standardwerte (oder eine geladene Datei), bis sie geschrieben sind.</translation>
         </message>
         <message>
             <source>Cannot write: %1</source>
@@ -3515,10 +3523,6 @@ hält die Steuerung nicht an</translation>
 %1</source>
             <translation>Ungültige Werte können nicht geschrieben werden:
 %1</translation>
-        </message>
-        <message>
-            <source>Nothing to write: every field matches the controller.</source>
-            <translation>Nichts zu schreiben: jedes Feld stimmt mit der Steuerung überein.</translation>
         </message>
         <message>
             <source>Not written: %1</source>
@@ -3562,10 +3566,6 @@ hält die Steuerung nicht an</translation>
             </translation>
         </message>
         <message>
-            <source>Read failed: %1</source>
-            <translation>Lesen fehlgeschlagen: %1</translation>
-        </message>
-        <message>
             <source>Not saved: %1</source>
             <translation>Nicht gespeichert: %1</translation>
         </message>
@@ -3592,6 +3592,26 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Not written: cancelled.</source>
             <translation>Nicht geschrieben: abgebrochen.</translation>
+        </message>
+        <message>
+            <source>Write all</source>
+            <translation>Alles schreiben</translation>
+        </message>
+        <message>
+            <source>This controller cannot read parameters back: the fields show the defaults (or a loaded file) until written. After every connect, reset or power cycle nothing counts as written.</source>
+            <translation>Diese Steuerung kann Parameter nicht zurücklesen: die Felder zeigen die Vorgabewerte (oder eine geladene Datei), bis sie geschrieben sind. Nach jedem Verbinden, Reset oder Aus- und Einschalten gilt nichts als geschrieben.</translation>
+        </message>
+        <message>
+            <source>Write every value on the page to the controller</source>
+            <translation>Jeden Wert der Seite zur Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>Write what is changed or not known to be on the controller</source>
+            <translation>Schreiben, was geändert ist oder von dem nicht bekannt ist, dass es in der Steuerung steht</translation>
+        </message>
+        <message>
+            <source>Read failed: %1. Values that could not be read are shown as unknown; they are written only if you set them.</source>
+            <translation>Lesen fehlgeschlagen: %1. Werte, die nicht gelesen werden konnten, werden als unbekannt angezeigt; sie werden nur geschrieben, wenn Sie sie setzen.</translation>
         </message>
     </context>
     <context>
@@ -3852,6 +3872,78 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>inch</source>
             <translation>Zoll</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePlan</name>
+        <message>
+            <source>Nothing to write: every value was written or read in this session and nothing changed since.</source>
+            <translation>Nichts zu schreiben: jeder Wert wurde in dieser Sitzung geschrieben oder gelesen, und seitdem hat sich nichts geändert.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Nothing to write: %n value(s) could not be read (%1); they are written only once you set them.</source>
+            <translation>
+                <numerusform>Nichts zu schreiben: %n Wert konnte nicht gelesen werden (%1); er wird erst geschrieben, wenn Sie ihn setzen.</numerusform>
+                <numerusform>Nichts zu schreiben: %n Werte konnten nicht gelesen werden (%1); sie werden erst geschrieben, wenn Sie sie setzen.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Nothing to write: every field matches the controller.</source>
+            <translation>Nichts zu schreiben: jedes Feld stimmt mit der Steuerung überein.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePreview</name>
+        <message>
+            <source>on</source>
+            <translation>ein</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <source>all</source>
+            <translation>alle</translation>
+        </message>
+        <message>
+            <source>Drive %1 (%2)</source>
+            <translation>Antrieb %1 (%2)</translation>
+        </message>
+        <message>
+            <source>Write parameters</source>
+            <translation>Parameter schreiben</translation>
+        </message>
+        <message numerus="yes">
+            <source>These %n value(s) will be sent, and nothing else:</source>
+            <translation>
+                <numerusform>Dieser %n Wert wird gesendet, sonst nichts:</numerusform>
+                <numerusform>Diese %n Werte werden gesendet, sonst nichts:</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Drive</source>
+            <translation>Antrieb</translation>
+        </message>
+        <message>
+            <source>Parameter</source>
+            <translation>Parameter</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>Please read before writing:&lt;br&gt;%1</source>
+            <translation>Bitte vor dem Schreiben lesen:&lt;br&gt;%1</translation>
+        </message>
+        <message>
+            <source>Write</source>
+            <translation>Schreiben</translation>
         </message>
     </context>
     <context>

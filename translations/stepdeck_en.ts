@@ -75,4 +75,24 @@
             </translation>
         </message>
     </context>
+    <context>
+        <name>stepdeck::ui::WritePlan</name>
+        <message numerus="yes">
+            <source>Nothing to write: %n value(s) could not be read (%1); they are written only once you set them.</source>
+            <translation>
+                <numerusform>Nothing to write: %n value could not be read (%1); it is written only once you set it.</numerusform>
+                <numerusform>Nothing to write: %n values could not be read (%1); they are written only once you set them.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePreview</name>
+        <message numerus="yes">
+            <source>These %n value(s) will be sent, and nothing else:</source>
+            <translation>
+                <numerusform>This %n value will be sent, and nothing else:</numerusform>
+                <numerusform>These %n values will be sent, and nothing else:</numerusform>
+            </translation>
+        </message>
+    </context>
 </TS>
