@@ -2355,6 +2355,10 @@
             <source>No reply since %1</source>
             <translation>Keine Antwort seit %1</translation>
         </message>
+        <message>
+            <source>Connect failed</source>
+            <translation>Verbindung fehlgeschlagen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>
@@ -2453,14 +2457,6 @@
             <translation>Antriebe dieser Maschine</translation>
         </message>
         <message>
-            <source>Scanning addresses 1..254…</source>
-            <translation>Durchsuche Adressen 1..254…</translation>
-        </message>
-        <message>
-            <source>Scanning addresses %1..%2…</source>
-            <translation>Durchsuche Adressen %1..%2…</translation>
-        </message>
-        <message>
             <source>Scan failed: %1</source>
             <translation>Suche fehlgeschlagen: %1</translation>
         </message>
@@ -2482,6 +2478,25 @@
         <message>
             <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
             <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+        <message>
+            <source>Stop the scan after the addresses being asked now</source>
+            <translation>Die Suche nach den gerade abgefragten Adressen beenden</translation>
+        </message>
+        <message>
+            <source>Scanning addresses %1..%2 (%3..%4 now)…</source>
+            <translation>Suche Adressen %1..%2 (jetzt %3..%4)…</translation>
+        </message>
+        <message numerus="yes">
+            <source>Scan cancelled after address %1: %n drive(s) found</source>
+            <translation>
+                <numerusform>Suche nach Adresse %1 abgebrochen: %n Antrieb gefunden</numerusform>
+                <numerusform>Suche nach Adresse %1 abgebrochen: %n Antriebe gefunden</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -2646,10 +2661,6 @@
             <translation>Skaliert jede Tippgeschwindigkeit (Pad, Tastatur, Gamepad)</translation>
         </message>
         <message>
-            <source>Arrows jog X/Y, Page Up/Down jog Z while this window is active and no text field has the focus</source>
-            <translation>Pfeiltasten verfahren X/Y, Bild auf/ab verfährt Z, solange dieses Fenster aktiv ist und kein Textfeld den Fokus hat</translation>
-        </message>
-        <message>
             <source>steps/s</source>
             <translation>Schritte/s</translation>
         </message>
@@ -2668,6 +2679,30 @@
         <message>
             <source>Max jog speed per axis, dead zone, response curve, keyboard speed</source>
             <translation>Maximale Tippgeschwindigkeit je Achse, Totzone, Kennlinie, Tastaturgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Keyboard jog: off (Ctrl+J)</source>
+            <translation>Tastatur-Tippbetrieb: aus (Strg+J)</translation>
+        </message>
+        <message>
+            <source>Keyboard jog: on, but not connected</source>
+            <translation>Tastatur-Tippbetrieb: ein, aber nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Keyboard jog paused: the StepDeck window is not active</source>
+            <translation>Tastatur-Tippbetrieb pausiert: das StepDeck-Fenster ist nicht aktiv</translation>
+        </message>
+        <message>
+            <source>Keyboard jog paused: a text field has the focus, the arrows edit it. Click the jog panel to resume.</source>
+            <translation>Tastatur-Tippbetrieb pausiert: ein Textfeld hat den Fokus, die Pfeile bearbeiten es. Zum Fortsetzen auf das Tipp-Feld klicken.</translation>
+        </message>
+        <message>
+            <source>Keyboard jog ON: %1</source>
+            <translation>Tastatur-Tippbetrieb EIN: %1</translation>
+        </message>
+        <message>
+            <source>Arrows jog X/Y, Page Up/Down jog Z while this window is active and no text field has the focus (Ctrl+J)</source>
+            <translation>Pfeile tippen X/Y, Bild auf/ab tippen Z, solange dieses Fenster aktiv ist und kein Textfeld den Fokus hat (Strg+J)</translation>
         </message>
     </context>
     <context>
@@ -2990,12 +3025,16 @@
             <translation>%1 kann nicht geöffnet werden: %2</translation>
         </message>
         <message>
-            <source>%1 is not a parameter file: %2</source>
-            <translation>%1 ist keine Parameterdatei: %2</translation>
-        </message>
-        <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1, line %2, column %3: %4</source>
+            <translation>%1, Zeile %2, Spalte %3: %4</translation>
+        </message>
+        <message>
+            <source>%1 is not a parameter file: it holds no JSON object</source>
+            <translation>%1 ist keine Parameterdatei: sie enthält kein JSON-Objekt</translation>
         </message>
     </context>
     <context>

@@ -20,6 +20,13 @@
                 <numerusform>%n drives found</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Scan cancelled after address %1: %n drive(s) found</source>
+            <translation>
+                <numerusform>Scan cancelled after address %1: %n drive found</numerusform>
+                <numerusform>Scan cancelled after address %1: %n drives found</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>

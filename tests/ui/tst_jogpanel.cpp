@@ -39,7 +39,8 @@ private Q_SLOTS:
 
     void jog_draggedKnob_rampsUpThenReleaseRampsToZero();
     void jog_heldKnob_leaseRenewedSpeedHeld();
-    void jog_notConnected_refusedWithVisibleReason();
+    void jog_notConnected_controlsDisabled();
+    void keyboardJog_stateAndKeysShownOnPanel();
     void jog_panicActive_refusedWithVisibleReason();
     void jog_limitSwitch_shownOnPadEdge();
     void keyboardJog_focusLoss_endsJog();
@@ -134,16 +135,51 @@ void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
     QVERIFY2(m_f->simStandsStill(Axis::Z, 5, &why), qPrintable(why));
 }
 
-void TestJogPanel::jog_notConnected_refusedWithVisibleReason()
+void TestJogPanel::jog_notConnected_controlsDisabled()
 {
-    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    // Without a connection the pads and step buttons are disabled: nothing to drag.
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    QVERIFY(!panel->xyPad()->isEnabled());
+    QVERIFY(!panel->zStick()->isEnabled());
+    QVERIFY(!panel->incremental()->isEnabled());
+    ui::JoystickPad* pad = panel->xyPad();
     pointerPress(pad, pad->centre());
     pointerMove(pad, pad->pointFor(QPointF(0.0, 0.8)));
-    QLabel* refusal = m_f->window->jogPanel()->refusalLabel();
-    QVERIFY2(refusal->text().contains(QStringLiteral("not connected")),
-             qPrintable(refusal->text()));
+    QVERIFY(!pad->isDragging());
     QVERIFY(!m_f->window->jogController()->isJogging());
     pointerRelease(pad, pad->centre());
+    QVERIFY(connectAndSetUp());
+    QVERIFY(panel->xyPad()->isEnabled());
+    QVERIFY(panel->incremental()->isEnabled());
+}
+
+void TestJogPanel::keyboardJog_stateAndKeysShownOnPanel()
+{
+    QVERIFY(connectAndSetUp());
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    QVERIFY2(panel->keyboardStateText().contains(QStringLiteral("off")),
+             qPrintable(panel->keyboardStateText()));
+    panel->keyboardCheck()->setChecked(true);
+    QTRY_VERIFY(panel->hasFocus());
+    const QString on = panel->keyboardStateText();
+    QVERIFY2(on.contains(QStringLiteral("ON")) && on.contains(QStringLiteral("\u2190/\u2192 X")) &&
+                 on.contains(QStringLiteral("Page Down/Up Z")),
+             qPrintable(on));
+    // A text field takes the focus: the arrows edit the field, the panel says jog is paused.
+    QLineEdit* line = m_f->window->trafficConsole()->sendLine();
+    m_f->window->raisePage(m_f->window->trafficConsole());
+    line->setText(QStringLiteral("abc"));
+    line->setFocus();
+    QTRY_VERIFY(line->hasFocus());
+    QTRY_VERIFY2(panel->keyboardStateText().contains(QStringLiteral("paused")),
+                 qPrintable(panel->keyboardStateText()));
+    line->setCursorPosition(3);
+    QTest::keyClick(line, Qt::Key_Left);
+    QCOMPARE(line->cursorPosition(), 2);
+    QVERIFY(!m_f->window->keyboardJog()->isJogging());
+    QVERIFY(!m_f->simAxis(Axis::X).moving);
+    panel->setFocus();
+    QTRY_VERIFY(panel->keyboardStateText().contains(QStringLiteral("ON")));
 }
 
 void TestJogPanel::jog_panicActive_refusedWithVisibleReason()

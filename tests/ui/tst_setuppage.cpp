@@ -41,6 +41,7 @@ private Q_SLOTS:
     void outOfRange_cannotBeWrittenAndSaysWhy();
     void file_saveAndRead_roundTripsInCliFormat();
     void file_broken_rejectedWithReason();
+    void file_brokenJson_namesLineAndColumn();
     void diff_loadedFile_listsChangedValues();
     void warnings_collectedForParametersThatCarryThem();
     void write_afterReconnect_sendsEveryParameterAgain();
@@ -231,6 +232,24 @@ void TestSetupPage::file_broken_rejectedWithReason()
     QString error;
     QVERIFY(!page()->readFile(path, &loaded, &error));
     QVERIFY2(error.contains(QStringLiteral("drive-power")), qPrintable(error));
+}
+
+void TestSetupPage::file_brokenJson_namesLineAndColumn()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("typo.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    // A missing comma at the end of line 3: the parser stops at the next key, on line 4
+    // (Qt's offset points just inside its opening quote: column 4).
+    file.write("{\n  \"format\": \"stepdeck-parameters\",\n  \"version\": 1\n  \"model\": "
+               "\"elab\"\n}\n");
+    file.close();
+    ParameterSet loaded;
+    QString error;
+    QVERIFY(!page()->readFile(path, &loaded, &error));
+    QVERIFY2(error.contains(QStringLiteral("line 4, column 4")), qPrintable(error));
+    QVERIFY(error.contains(QStringLiteral("typo.json")));
 }
 
 void TestSetupPage::diff_loadedFile_listsChangedValues()

@@ -1,4 +1,5 @@
 #include "TrafficConsole.h"
+#include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
@@ -73,6 +74,9 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     });
     connect(clearButton, &QPushButton::clicked, this, &TrafficConsole::clear);
     connect(save, &QPushButton::clicked, this, &TrafficConsole::saveAs);
+    auto* gate = new ConnectionGate(context, this); // raw bytes need a connection
+    gate->add(m_send);
+    gate->add(m_sendButton);
     connect(m_send, &QLineEdit::returnPressed, this, &TrafficConsole::sendCurrentLine);
     connect(m_sendButton, &QPushButton::clicked, this, &TrafficConsole::sendCurrentLine);
     connect(m_send, &QLineEdit::textEdited, m_sendError, &QLabel::clear);

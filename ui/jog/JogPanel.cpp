@@ -1,4 +1,5 @@
 #include "JogPanel.h"
+#include "common/ConnectionGate.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
@@ -29,9 +30,10 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
-      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_refusal(new QLabel(this)),
-      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
-      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
+      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
+      m_refusal(new QLabel(this)), m_refusalTimer(new QTimer(this)),
+      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
+      m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
@@ -74,10 +76,46 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
     connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
     connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);
+    // Jogging needs a connection: the pads and step buttons say so by being disabled.
+    m_gate = new ConnectionGate(m_context, this);
+    for (QWidget* w : {static_cast<QWidget*>(m_xy), static_cast<QWidget*>(m_z),
+                       static_cast<QWidget*>(m_u), static_cast<QWidget*>(m_incremental)})
+        m_gate->add(w);
+    connect(m_gate, &ConnectionGate::changed, this, &JogPanel::showKeyboardState);
     m_refusalTimer->setSingleShot(true);
     m_refusalTimer->setInterval(6000);
     connect(m_refusalTimer, &QTimer::timeout, m_refusal, &QLabel::clear);
     rebuild();
+}
+
+QString JogPanel::keyboardStateText() const
+{
+    return m_keyboardState->text();
+}
+
+void JogPanel::showKeyboardState()
+{
+    QString text;
+    QString style;
+    if (!m_keyboardCheck->isChecked()) {
+        text = tr("Keyboard jog: off (Ctrl+J)");
+        style = QStringLiteral("color: palette(dark);");
+    } else if (!m_context->isConnected()) {
+        text = tr("Keyboard jog: on, but not connected");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else if (!m_keyboard->windowActive()) {
+        text = tr("Keyboard jog paused: the StepDeck window is not active");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else if (m_keyboard->textFieldHasFocus()) {
+        text = tr("Keyboard jog paused: a text field has the focus, the arrows edit it. Click "
+                  "the jog panel to resume.");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else {
+        text = tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(m_context->axes()));
+        style = QStringLiteral("color: #1b5e20; font-weight: bold;");
+    }
+    m_keyboardState->setText(text);
+    m_keyboardState->setStyleSheet(QStringLiteral("QLabel { %1 }").arg(style));
 }
 
 QWidget* JogPanel::buildSidePanel()
@@ -111,14 +149,20 @@ QWidget* JogPanel::buildSidePanel()
 
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
     m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
-                                   "active and no text field has the focus"));
+                                   "active and no text field has the focus (Ctrl+J)"));
     connect(m_keyboardCheck, &QCheckBox::toggled, this, [this](bool on) {
         m_keyboard->setEnabled(on);
         // Arrow keys typed into a text field stay there: take the focus so they jog.
         if (on)
             setFocus(Qt::OtherFocusReason);
+        showKeyboardState();
     });
+    connect(m_keyboard, &KeyboardJog::pausedChanged, this, &JogPanel::showKeyboardState);
     v->addWidget(m_keyboardCheck);
+    // On or off, and which keys: on the panel itself, not only in a tooltip.
+    m_keyboardState->setObjectName(QStringLiteral("keyboardJogState"));
+    m_keyboardState->setWordWrap(true);
+    v->addWidget(m_keyboardState);
 
     m_refusal->setObjectName(QStringLiteral("jogRefusal"));
     m_refusal->setWordWrap(true);
@@ -151,6 +195,7 @@ void JogPanel::rebuild()
                         axes.contains(Axis::Y) || axes.isEmpty() ? QStringLiteral("Y") : QString());
     m_z->setVisible(axes.contains(Axis::Z));
     m_u->setVisible(axes.contains(Axis::U));
+    showKeyboardState();
 
     while (QLayoutItem* item = m_velocityGrid->takeAt(0)) {
         delete item->widget();

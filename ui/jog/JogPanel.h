@@ -11,6 +11,7 @@ class QTimer;
 
 namespace stepdeck::ui {
 
+class ConnectionGate;
 class IncrementalJogWidget;
 class JogController;
 class JogSettingsWidget;
@@ -34,6 +35,7 @@ public:
     QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
+    QString keyboardStateText() const; // "Keyboard jog ON: ←/→ X, ...", "... paused ..."
     IncrementalJogWidget* incremental() const { return m_incremental; }
 
 public Q_SLOTS:
@@ -44,6 +46,7 @@ private:
     void rebuild();
     void onStatus(const MachineStatus& status);
     void showRefusal(const QString& reason);
+    void showKeyboardState();
 
     MachineContext* m_context;
     JogController* m_jog;
@@ -55,6 +58,8 @@ private:
     QSlider* m_override;
     QLabel* m_overrideValue;
     QCheckBox* m_keyboardCheck;
+    QLabel* m_keyboardState;
+    ConnectionGate* m_gate = nullptr;
     QLabel* m_refusal;
     QTimer* m_refusalTimer;
     QGridLayout* m_velocityGrid;

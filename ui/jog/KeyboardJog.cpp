@@ -103,17 +103,24 @@ void KeyboardJog::releaseAll()
     Q_EMIT changed();
 }
 
-bool KeyboardJog::accepts() const
+bool KeyboardJog::windowActive() const
 {
-    if (!m_window || !m_window->isActiveWindow())
-        return false;
+    return m_window && m_window->isActiveWindow();
+}
+
+bool KeyboardJog::textFieldHasFocus() const
+{
     QWidget* focus = QApplication::focusWidget();
     if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
         qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QTextEdit*>(focus))
-        return false;
-    if (auto* combo = qobject_cast<QComboBox*>(focus))
-        return !combo->isEditable();
-    return true;
+        return true;
+    auto* combo = qobject_cast<QComboBox*>(focus);
+    return combo && combo->isEditable();
+}
+
+bool KeyboardJog::accepts() const
+{
+    return windowActive() && !textFieldHasFocus();
 }
 
 void KeyboardJog::checkPaused()

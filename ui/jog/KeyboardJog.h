@@ -47,6 +47,8 @@ public:
     bool isJogging() const { return !m_held.isEmpty(); }
     // Keys typed now would go to a text field (or the window is not active): no jog.
     bool isPaused() const { return !accepts(); }
+    bool windowActive() const;
+    bool textFieldHasFocus() const;
     // The proof windows (tests shorten them; 0 restores the default).
     void setProofWindows(int firstRepeatMs, int repeatMs);
     int firstRepeatWindowMs() const;

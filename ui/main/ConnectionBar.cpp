@@ -188,7 +188,12 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
     m_port->setEnabled(!busy);
     switch (state) {
     case LinkState::Disconnected:
-        showLink(LedIndicator::State::Off, tr("Disconnected"));
+        // A connect that never got through says so (the reason is the tooltip and the
+        // status bar message).
+        if (m_lastState == LinkState::Connecting && !reason.isEmpty())
+            showLink(LedIndicator::State::Fault, tr("Connect failed"));
+        else
+            showLink(LedIndicator::State::Off, tr("Disconnected"));
         break;
     case LinkState::Connecting:
         showLink(LedIndicator::State::Warning, tr("Connecting"));
@@ -204,6 +209,7 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
         break;
     }
     m_link->setToolTip(reason);
+    m_lastState = state;
     if (state == LinkState::Connected)
         m_replyWatch->start();
     else

@@ -68,6 +68,7 @@ private:
     QElapsedTimer m_sinceReply;
     QTime m_lastReply;
     bool m_overdue = false;
+    LinkState m_lastState = LinkState::Disconnected;
 };
 
 } // namespace stepdeck::ui

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 #include "charts/ChartsPanel.h"
+#include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "console/TrafficConsole.h"
 #include "drives/DrivePanel.h"
@@ -265,6 +266,10 @@ void MainWindow::buildMenus()
     QAction* refresh = machine->addAction(tr("Refresh &status"), this,
                                           [this] { m_context->session()->refreshStatus(); });
     refresh->setShortcut(QKeySequence::Refresh);
+    // These need a connection; STOP and PANIC never are disabled (they say why instead).
+    auto* gate = new ConnectionGate(m_context, this);
+    for (QAction* a : {refresh, m_referenceAction, m_resetAction})
+        gate->add(a);
     machine->addAction(m_resetAction);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));

@@ -1,4 +1,5 @@
 #include "PositionPanel.h"
+#include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "position/MoveEstimate.h"
@@ -12,7 +13,8 @@
 namespace stepdeck::ui {
 
 PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_grid(new QGridLayout), m_moveTick(new QTimer(this))
+    : QWidget(parent), m_context(context), m_grid(new QGridLayout), m_moveTick(new QTimer(this)),
+      m_gate(new ConnectionGate(context, this))
 {
     // The estimate advances between status reads.
     m_moveTick->setInterval(100);
@@ -86,6 +88,7 @@ void PositionPanel::rebuild()
             tr("Set the work origin of %1 at the current position").arg(axisName(axis)));
         zero->setFocusPolicy(Qt::NoFocus);
         connect(zero, &QToolButton::clicked, this, [this, axis] { zeroAxis(axis); });
+        m_gate->add(zero); // a zero needs the position now, not the last one known
         m_grid->addWidget(name, 2 * r, 0, 2, 1);
         m_grid->addWidget(row.value, 2 * r, 1);
         m_grid->addWidget(row.unit, 2 * r, 2);

@@ -11,6 +11,7 @@ class QToolButton;
 
 namespace stepdeck::ui {
 
+class ConnectionGate;
 class MachineContext;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
@@ -64,6 +65,7 @@ private:
     QMap<Axis, qint64> m_idlePosition; // where each axis was when last seen standing
     QMap<Axis, MoveTrack> m_moves;
     QTimer* m_moveTick;
+    ConnectionGate* m_gate;
 };
 
 } // namespace stepdeck::ui

@@ -168,6 +168,11 @@ void ReferencePanel::cancel()
 void ReferencePanel::onStatus(const MachineStatus& status)
 {
     const bool live = m_context->isConnected();
+    // Referencing needs a connection (and no run in progress).
+    const bool idle = !m_runner->isRunning();
+    m_all->setEnabled(live && idle);
+    for (const Row& row : std::as_const(m_rows))
+        row.run->setEnabled(live && idle);
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
         const AxisStatus a = status.axes.value(it.key());
         const bool running = m_runner->currentAxes().contains(it.key());
@@ -212,9 +217,7 @@ void ReferencePanel::onProgress(int stage, int stages, const QString& text)
     m_progress->setValue(stage);
     m_message->setText(text);
     m_message->setStyleSheet(QString());
-    const bool running = m_runner->isRunning();
-    m_cancel->setEnabled(running);
-    m_all->setEnabled(!running);
+    m_cancel->setEnabled(m_runner->isRunning());
     onStatus(m_context->status());
 }
 
@@ -234,7 +237,6 @@ void ReferencePanel::onFinished(bool ok, const QString& message)
     if (!ok)
         m_progress->setValue(0);
     m_cancel->setEnabled(false);
-    m_all->setEnabled(true);
     onStatus(m_context->status());
 }
 
