@@ -1,6 +1,7 @@
 #pragma once
 #include "controller/ControllerOptions.h"
 #include "controller/JogRamp.h"
+#include "controller/SoftLimits.h"
 #include "model/Capabilities.h"
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
@@ -91,6 +92,13 @@ public:
     void setJogAcceleration(double stepsPerS2);
     const JogRamp& jogRamp() const { return m_jogRamp; }
 
+    // --- soft limits (issue 11): the jog ramp keeps inside them on every tick; moves are
+    // checked by ControllerSession before they reach the adapter ---
+    void setSoftLimits(const SoftLimits& limits) { m_softLimits = limits; }
+    const SoftLimits& softLimits() const { return m_softLimits; }
+    // refusal non-empty: finishes id as Refused with it and returns true.
+    bool refuse(RequestId id, const QString& refusal);
+
 Q_SIGNALS:
     void linkStateChanged(stepdeck::LinkState state, const QString& reason);
     void statusChanged(const stepdeck::MachineStatus& status);
@@ -125,6 +133,7 @@ protected:
 
 private:
     void onJogTick();
+    void keepJogInsideSoftLimits(double dt);
 
     QPointer<Transport> m_transport;
     ControllerOptions m_options;
@@ -137,6 +146,8 @@ private:
     qint64 m_leaseRenewedMs = 0;
     AxisVelocities m_lastAppliedJog;
     AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
+    SoftLimits m_softLimits;
+    QString m_softLimitNote; // the last jog refusal said for a soft limit
     QElapsedTimer m_trafficClock;
 };
 

@@ -90,6 +90,7 @@ void MachineContext::selectModel(const QString& modelId)
         m_session->destroy();
     m_model = model;
     loadUnits();
+    loadSoftLimits();
     Q_EMIT modelChanged();
 }
 
@@ -102,6 +103,7 @@ bool MachineContext::connectTo(const ConnectionSpec& spec, QString* error)
     m_port = spec.port;
     if (m_model != before) {
         loadUnits();
+        loadSoftLimits();
         Q_EMIT modelChanged();
     }
     m_session->open();
@@ -170,6 +172,49 @@ void MachineContext::loadUnits()
         u.workOffset = settings.value(p + QStringLiteral("workOffset"), 0).toLongLong();
         m_units.insert(axis, u);
     }
+}
+
+void MachineContext::loadSoftLimits()
+{
+    m_softLimits = SoftLimits{};
+    const QSettings settings;
+    for (Axis axis : axes()) {
+        const QString p = QStringLiteral("softLimits/%1/%2/").arg(modelId(), axisName(axis));
+        AxisSoftLimit l;
+        l.enabled = settings.value(p + QStringLiteral("enabled"), true).toBool();
+        l.rangeSet = settings.value(p + QStringLiteral("rangeSet"), false).toBool();
+        l.minimum = settings.value(p + QStringLiteral("minimum"), 0).toLongLong();
+        l.maximum = settings.value(p + QStringLiteral("maximum"), 0).toLongLong();
+        l.rangeSet = l.rangeSet && l.maximum > l.minimum;
+        m_softLimits.set(axis, l);
+    }
+    m_session->setSoftLimits(m_softLimits);
+    Q_EMIT softLimitsChanged();
+}
+
+void MachineContext::setSoftLimit(Axis axis, const AxisSoftLimit& limit)
+{
+    AxisSoftLimit l = limit;
+    l.rangeSet = l.rangeSet && l.maximum > l.minimum;
+    m_softLimits.set(axis, l);
+    QSettings settings;
+    const QString p = QStringLiteral("softLimits/%1/%2/").arg(modelId(), axisName(axis));
+    settings.setValue(p + QStringLiteral("enabled"), l.enabled);
+    settings.setValue(p + QStringLiteral("rangeSet"), l.rangeSet);
+    settings.setValue(p + QStringLiteral("minimum"), l.minimum);
+    settings.setValue(p + QStringLiteral("maximum"), l.maximum);
+    m_session->setSoftLimits(m_softLimits);
+    Q_EMIT softLimitsChanged();
+}
+
+qint64 MachineContext::toMachineSteps(Axis axis, double userValue) const
+{
+    const AxisUnits u = units(axis);
+    const double steps = u.stepsPerUnit > 0 ? userValue * u.stepsPerUnit : userValue;
+    if (!qIsFinite(steps))
+        return u.workOffset;
+    // double -> qint64 outside the range is undefined: bound it first (far beyond any axis).
+    return qRound64(qBound(-1e15, steps, 1e15)) + u.workOffset;
 }
 
 AxisUnits MachineContext::units(Axis axis) const

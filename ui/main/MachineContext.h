@@ -53,6 +53,13 @@ public:
     void addKnownParameters(const ParameterSet& set); // merged per axis
     void forgetKnownParameters();
 
+    // Soft limits per axis in machine steps (issue 11), stored per model; the session
+    // enforces them in the controller thread for every move and jog.
+    SoftLimits softLimits() const { return m_softLimits; }
+    void setSoftLimit(Axis axis, const AxisSoftLimit& limit);
+    // Machine steps for a work position typed in user units (the inverse of toUserUnits).
+    qint64 toMachineSteps(Axis axis, double userValue) const;
+
     AxisUnits units(Axis axis) const;
     void setUnits(Axis axis, const AxisUnits& units);
     // Machine position in steps -> work position in user units (or steps when none set).
@@ -65,6 +72,7 @@ Q_SIGNALS:
     // A UI-level event: the operator pressed panic (positions are lost from now on).
     void panicTriggered();
     void knownParametersChanged();
+    void softLimitsChanged();
 
 public Q_SLOTS:
     void stop();
@@ -73,6 +81,7 @@ public Q_SLOTS:
 
 private:
     void loadUnits();
+    void loadSoftLimits();
     QString settingsPrefix(Axis axis) const;
 
     ControllerSession* m_session;
@@ -80,6 +89,7 @@ private:
     QString m_port;
     QMap<Axis, AxisUnits> m_units;
     ParameterSet m_known;
+    SoftLimits m_softLimits;
     QMap<RequestId, ParameterSet> m_pendingWrites;
     QSet<RequestId> m_pendingReads;
     bool m_setupIncomplete = false;

@@ -2,7 +2,9 @@
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
+#include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
+#include "position/SoftLimitsDialog.h"
 #include "position/UnitsDialog.h"
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -14,7 +16,7 @@ namespace stepdeck::ui {
 
 PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_grid(new QGridLayout), m_moveTick(new QTimer(this)),
-      m_gate(new ConnectionGate(context, this))
+      m_gate(new ConnectionGate(context, this)), m_goTo(new GoToWidget(context, this))
 {
     // The estimate advances between status reads.
     m_moveTick->setInterval(100);
@@ -28,13 +30,21 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     auto* clear = new QToolButton(this);
     clear->setText(tr("Clear work offsets"));
     clear->setToolTip(tr("Show machine positions again (work origin = machine origin)"));
-    for (QToolButton* b : {units, clear})
+    auto* limits = new QToolButton(this);
+    limits->setText(tr("Soft limits\u2026"));
+    limits->setToolTip(tr("Travel range per axis that jog and moves must not leave"));
+    for (QToolButton* b : {units, clear, limits})
         b->setFocusPolicy(Qt::NoFocus);
     buttons->addWidget(units);
     buttons->addWidget(clear);
+    buttons->addWidget(limits);
     buttons->addStretch(1);
     layout->addLayout(buttons);
+    layout->addWidget(m_goTo);
     layout->addStretch(1);
+    connect(limits, &QToolButton::clicked, this, &PositionPanel::editSoftLimits);
+    connect(context, &MachineContext::softLimitsChanged, this,
+            [this] { onStatus(m_context->status()); });
 
     connect(units, &QToolButton::clicked, this, &PositionPanel::editUnits);
     connect(clear, &QToolButton::clicked, this, &PositionPanel::clearOffsets);
@@ -82,6 +92,8 @@ void PositionPanel::rebuild()
         row.state = new QLabel(this);
         row.state->setAlignment(Qt::AlignCenter);
         row.state->setMinimumWidth(84);
+        row.limits = new QLabel(this);
+        row.limits->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
         auto* zero = new QToolButton(this);
         zero->setText(tr("Zero %1").arg(axisName(axis)));
         zero->setToolTip(
@@ -94,6 +106,7 @@ void PositionPanel::rebuild()
         m_grid->addWidget(row.unit, 2 * r, 2);
         m_grid->addWidget(row.state, 2 * r, 3);
         m_grid->addWidget(row.steps, 2 * r + 1, 1);
+        m_grid->addWidget(row.limits, 2 * r + 1, 2);
         m_grid->addWidget(zero, 2 * r + 1, 3);
         m_rows.insert(axis, row);
         ++r;
@@ -156,6 +169,22 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         return u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
     };
     row.unit->setText(m_context->unitName(axis));
+    const AxisSoftLimit limit = m_context->softLimits().limit(axis);
+    if (!limit.rangeSet) {
+        row.limits->setText(tr("no soft limits"));
+        row.limits->setToolTip(tr("No travel range set for %1 (Soft limits\u2026)")
+                                   .arg(axisName(axis)));
+    } else {
+        const bool active = m_context->isConnected() &&
+                            m_context->softLimits().isActive(axis, m_context->status());
+        row.limits->setText(
+            !limit.enabled ? tr("limits off")
+            : active       ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
+                           : tr("limits %1..%2 (after referencing)")
+                                 .arg(limit.minimum)
+                                 .arg(limit.maximum));
+        row.limits->setToolTip(tr("Soft limits of %1 in machine steps").arg(axisName(axis)));
+    }
     MoveTrack& move = m_moves[axis];
 
     if (!m_context->isConnected()) {
@@ -243,6 +272,16 @@ void PositionPanel::clearOffsets()
         u.workOffset = 0;
         m_context->setUnits(axis, u);
     }
+}
+
+void PositionPanel::editSoftLimits()
+{
+    dialogs::showForPart(new SoftLimitsDialog(m_context, window()), this);
+}
+
+QString PositionPanel::limitsText(Axis axis) const
+{
+    return m_rows.contains(axis) ? m_rows.value(axis).limits->text() : QString();
 }
 
 void PositionPanel::editUnits()

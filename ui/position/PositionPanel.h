@@ -12,6 +12,7 @@ class QToolButton;
 namespace stepdeck::ui {
 
 class ConnectionGate;
+class GoToWidget;
 class MachineContext;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
@@ -30,11 +31,14 @@ public:
     QString displayedValue(Axis axis) const; // the large digits, for tests
     QString stateText(Axis axis) const;
     QString detailText(Axis axis) const; // the line below: machine steps, or the target
+    QString limitsText(Axis axis) const;
+    GoToWidget* goTo() const { return m_goTo; }
 
 public Q_SLOTS:
     void zeroAxis(Axis axis);
     void clearOffsets();
     void editUnits();
+    void editSoftLimits();
 
 private:
     struct Row
@@ -43,6 +47,7 @@ private:
         QLabel* unit = nullptr;
         QLabel* steps = nullptr;
         QLabel* state = nullptr;
+        QLabel* limits = nullptr;
     };
     struct MoveTrack
     {
@@ -66,6 +71,7 @@ private:
     QMap<Axis, MoveTrack> m_moves;
     QTimer* m_moveTick;
     ConnectionGate* m_gate;
+    GoToWidget* m_goTo;
 };
 
 } // namespace stepdeck::ui
