@@ -151,11 +151,11 @@
         </message>
         <message>
             <source>high</source>
-            <translation>high</translation>
+            <translation>High-aktiv</translation>
         </message>
         <message>
             <source>low</source>
-            <translation>low</translation>
+            <translation>Low-aktiv</translation>
         </message>
         <message>
             <source>Limit switch polarity</source>
@@ -2423,6 +2423,14 @@
             <source>%1 Hz</source>
             <translation>%1 Hz</translation>
         </message>
+        <message>
+            <source>No reply since %1</source>
+            <translation>Keine Antwort seit %1</translation>
+        </message>
+        <message>
+            <source>Connect failed</source>
+            <translation>Verbindung fehlgeschlagen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>
@@ -2521,14 +2529,6 @@
             <translation>Antriebe dieser Maschine</translation>
         </message>
         <message>
-            <source>Scanning addresses 1..254…</source>
-            <translation>Durchsuche Adressen 1..254…</translation>
-        </message>
-        <message>
-            <source>Scanning addresses %1..%2…</source>
-            <translation>Durchsuche Adressen %1..%2…</translation>
-        </message>
-        <message>
             <source>Scan failed: %1</source>
             <translation>Suche fehlgeschlagen: %1</translation>
         </message>
@@ -2550,6 +2550,25 @@
         <message>
             <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
             <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+        <message>
+            <source>Stop the scan after the addresses being asked now</source>
+            <translation>Die Suche nach den gerade abgefragten Adressen beenden</translation>
+        </message>
+        <message>
+            <source>Scanning addresses %1..%2 (%3..%4 now)…</source>
+            <translation>Suche Adressen %1..%2 (jetzt %3..%4)…</translation>
+        </message>
+        <message numerus="yes">
+            <source>Scan cancelled after address %1: %n drive(s) found</source>
+            <translation>
+                <numerusform>Suche nach Adresse %1 abgebrochen: %n Antrieb gefunden</numerusform>
+                <numerusform>Suche nach Adresse %1 abgebrochen: %n Antriebe gefunden</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -2714,10 +2733,6 @@
             <translation>Skaliert jede Tippgeschwindigkeit (Pad, Tastatur, Gamepad)</translation>
         </message>
         <message>
-            <source>Arrows jog X/Y, Page Up/Down jog Z while this window is active and no text field has the focus</source>
-            <translation>Pfeiltasten verfahren X/Y, Bild auf/ab verfährt Z, solange dieses Fenster aktiv ist und kein Textfeld den Fokus hat</translation>
-        </message>
-        <message>
             <source>steps/s</source>
             <translation>Schritte/s</translation>
         </message>
@@ -2736,6 +2751,30 @@
         <message>
             <source>Max jog speed per axis, dead zone, response curve, keyboard speed</source>
             <translation>Maximale Tippgeschwindigkeit je Achse, Totzone, Kennlinie, Tastaturgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Keyboard jog: off (Ctrl+J)</source>
+            <translation>Tastatur-Tippbetrieb: aus (Strg+J)</translation>
+        </message>
+        <message>
+            <source>Keyboard jog: on, but not connected</source>
+            <translation>Tastatur-Tippbetrieb: ein, aber nicht verbunden</translation>
+        </message>
+        <message>
+            <source>Keyboard jog paused: the StepDeck window is not active</source>
+            <translation>Tastatur-Tippbetrieb pausiert: das StepDeck-Fenster ist nicht aktiv</translation>
+        </message>
+        <message>
+            <source>Keyboard jog paused: a text field has the focus, the arrows edit it. Click the jog panel to resume.</source>
+            <translation>Tastatur-Tippbetrieb pausiert: ein Textfeld hat den Fokus, die Pfeile bearbeiten es. Zum Fortsetzen auf das Tipp-Feld klicken.</translation>
+        </message>
+        <message>
+            <source>Keyboard jog ON: %1</source>
+            <translation>Tastatur-Tippbetrieb EIN: %1</translation>
+        </message>
+        <message>
+            <source>Arrows jog X/Y, Page Up/Down jog Z while this window is active and no text field has the focus (Ctrl+J)</source>
+            <translation>Pfeile tippen X/Y, Bild auf/ab tippen Z, solange dieses Fenster aktiv ist und kein Textfeld den Fokus hat (Strg+J)</translation>
         </message>
     </context>
     <context>
@@ -2801,6 +2840,22 @@
         <message>
             <source>Keyboard</source>
             <translation>Tastatur</translation>
+        </message>
+        <message>
+            <source>←/→ X</source>
+            <translation>←/→ X</translation>
+        </message>
+        <message>
+            <source>↓/↑ Y</source>
+            <translation>↓/↑ Y</translation>
+        </message>
+        <message>
+            <source>Page Down/Up Z</source>
+            <translation>Bild ab/auf Z</translation>
+        </message>
+        <message>
+            <source>End/Home U</source>
+            <translation>Ende/Pos1 U</translation>
         </message>
     </context>
     <context>
@@ -2965,22 +3020,6 @@
             <translation>PANIK-STOPP gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
         </message>
         <message>
-            <source>Disconnected</source>
-            <translation>Getrennt</translation>
-        </message>
-        <message>
-            <source>Connecting…</source>
-            <translation>Verbinde…</translation>
-        </message>
-        <message>
-            <source>Connected</source>
-            <translation>Verbunden</translation>
-        </message>
-        <message>
-            <source>Link lost</source>
-            <translation>Verbindung verloren</translation>
-        </message>
-        <message>
             <source>simulator</source>
             <translation>Simulator</translation>
         </message>
@@ -2996,13 +3035,28 @@
             <source>Records</source>
             <translation>Sätze</translation>
         </message>
+        <message>
+            <source>About Qt</source>
+            <translation>Über Qt</translation>
+        </message>
+        <message>
+            <source>StepDeck uses Qt %1, a cross-platform application framework by The Qt Company, under the GNU LGPL version 3. See &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</source>
+            <translation>StepDeck verwendet Qt %1, ein plattformübergreifendes Anwendungs-Framework von The Qt Company, unter der GNU LGPL Version 3. Siehe &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::PadJogSource</name>
+        <message>
+            <source>Pad %1</source>
+            <translation>Joystick %1</translation>
+        </message>
+        <message>
+            <source>Pad</source>
+            <translation>Joystick</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ParameterField</name>
-        <message>
-            <source>Allowed: %1 to %2</source>
-            <translation>Erlaubt: %1 bis %2</translation>
-        </message>
         <message>
             <source>on</source>
             <translation>ein</translation>
@@ -3010,6 +3064,26 @@
         <message>
             <source>%1: a value is required</source>
             <translation>%1: ein Wert ist erforderlich</translation>
+        </message>
+        <message>
+            <source>Allowed: %1 to %2 %3</source>
+            <translation>Erlaubt: %1 bis %2 %3</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is out of range (allowed: %3 to %4 %5)</source>
+            <translation>%1: '%2' liegt außerhalb des Bereichs (erlaubt: %3 bis %4 %5)</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not allowed</source>
+            <translation>%1: '%2' ist nicht erlaubt</translation>
+        </message>
+        <message>
+            <source>Unknown: the value could not be read. It is written only if you set it.</source>
+            <translation>Unbekannt: der Wert konnte nicht gelesen werden. Er wird nur geschrieben, wenn Sie ihn setzen.</translation>
         </message>
     </context>
     <context>
@@ -3023,12 +3097,16 @@
             <translation>%1 kann nicht geöffnet werden: %2</translation>
         </message>
         <message>
-            <source>%1 is not a parameter file: %2</source>
-            <translation>%1 ist keine Parameterdatei: %2</translation>
-        </message>
-        <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1, line %2, column %3: %4</source>
+            <translation>%1, Zeile %2, Spalte %3: %4</translation>
+        </message>
+        <message>
+            <source>%1 is not a parameter file: it holds no JSON object</source>
+            <translation>%1 ist keine Parameterdatei: sie enthält kein JSON-Objekt</translation>
         </message>
     </context>
     <context>
@@ -3084,6 +3162,46 @@
         <message>
             <source>Referenced and confirmed.</source>
             <translation>Referenziert und bestätigt.</translation>
+        </message>
+        <message>
+            <source>last known: machine %1 steps</source>
+            <translation>zuletzt bekannt: Maschine %1 Schritte</translation>
+        </message>
+        <message>
+            <source>NO LINK</source>
+            <translation>KEINE VERBINDUNG</translation>
+        </message>
+        <message>
+            <source>The link is down: this is the last value before it ended, not the position now.</source>
+            <translation>Die Verbindung ist getrennt: dies ist der letzte Wert davor, nicht die aktuelle Position.</translation>
+        </message>
+        <message>
+            <source>moving to %1 (machine %2 steps)</source>
+            <translation>fährt nach %1 (Maschine %2 Schritte)</translation>
+        </message>
+        <message>
+            <source>MOVING</source>
+            <translation>FÄHRT</translation>
+        </message>
+        <message>
+            <source>Estimated from the ramp parameters; the controller reports no position during a move. The target is shown below.</source>
+            <translation>Aus den Rampenparametern geschätzt; die Steuerung meldet während einer Fahrt keine Position. Das Ziel steht darunter.</translation>
+        </message>
+        <message>
+            <source>The controller reports no position during a move and the ramp parameters are not known in this session. The target is shown below.</source>
+            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt. Das Ziel steht darunter.</translation>
+        </message>
+        <message>
+            <source>Read back from the controller while moving.</source>
+            <translation>Während der Fahrt von der Steuerung zurückgelesen.</translation>
+        </message>
+        <message>
+            <source>SET</source>
+            <translation>GESETZT</translation>
+        </message>
+        <message>
+            <source>Known, but not from a reference run of this session.</source>
+            <translation>Bekannt, aber nicht aus einer Referenzfahrt dieser Sitzung.</translation>
         </message>
     </context>
     <context>
@@ -3300,6 +3418,26 @@
             <source>referenced</source>
             <translation>referenziert</translation>
         </message>
+        <message>
+            <source>the panic stop</source>
+            <translation>Panik-Stopp</translation>
+        </message>
+        <message>
+            <source>unknown (no link)</source>
+            <translation>unbekannt (keine Verbindung)</translation>
+        </message>
+        <message>
+            <source>the link is down</source>
+            <translation>Verbindung getrennt</translation>
+        </message>
+        <message>
+            <source>a panic stop, reset or limit switch</source>
+            <translation>Panik-Stopp, Reset oder Endschalter</translation>
+        </message>
+        <message>
+            <source>The axes are no longer referenced (%1): reference them again.</source>
+            <translation>Die Achsen sind nicht mehr referenziert (%1): erneut referenzieren.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ReferenceRunner</name>
@@ -3341,6 +3479,61 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::SafetyBanner</name>
+        <message>
+            <source>the controller may still be moving: use the machine's emergency stop</source>
+            <translation>die Steuerung bewegt sich möglicherweise noch: den Not-Aus der Maschine benutzen</translation>
+        </message>
+        <message>
+            <source>Link lost while the machine was moving: %1. Positions are unknown: reconnect, then reference all axes.</source>
+            <translation>Verbindung während einer Bewegung verloren: %1. Die Positionen sind unbekannt: neu verbinden, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Link lost: positions are unknown. Reconnect, then reference all axes.</source>
+            <translation>Verbindung verloren: die Positionen sind unbekannt. Neu verbinden, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Disconnected while the machine was moving: no standstill was confirmed; %1.</source>
+            <translation>Während einer Bewegung getrennt: kein Stillstand wurde bestätigt; %1.</translation>
+        </message>
+        <message>
+            <source>Connecting…</source>
+            <translation>Verbinde…</translation>
+        </message>
+        <message>
+            <source>Not connected.</source>
+            <translation>Nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>No standstill confirmed by the controller: %1.</source>
+            <translation>Die Steuerung hat keinen Stillstand bestätigt: %1.</translation>
+        </message>
+        <message>
+            <source>PANIC STOP sent: positions are lost; reference all axes before any absolute move.</source>
+            <translation>PANIK-STOPP gesendet: die Positionen sind verloren; vor jeder Absolutfahrt alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>EMERGENCY STOP active on the machine: positions are lost. Release the emergency stop, then reference all axes.</source>
+            <translation>NOT-AUS an der Maschine aktiv: die Positionen sind verloren. Den Not-Aus entriegeln, dann alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Setup incomplete: write the setup (start speed, max speed, acceleration) on the Setup page first. The controller refuses every move until then.</source>
+            <translation>Setup unvollständig: zuerst das Setup (Startgeschwindigkeit, Maximalgeschwindigkeit, Beschleunigung) auf der Seite Setup schreiben. Bis dahin lehnt die Steuerung jede Fahrt ab.</translation>
+        </message>
+        <message>
+            <source>Ready: all axes referenced.</source>
+            <translation>Bereit: alle Achsen referenziert.</translation>
+        </message>
+        <message>
+            <source>Positions are lost (panic stop or reconnect). Reference the machine before any absolute move.</source>
+            <translation>Die Positionen sind verloren (Panik-Stopp oder Neuverbindung). Vor jeder Absolutfahrt die Maschine referenzieren.</translation>
+        </message>
+        <message>
+            <source>Not referenced: positions are unknown until the axes are referenced.</source>
+            <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::SafetyBar</name>
         <message>
             <source>STOP  (Esc)</source>
@@ -3363,28 +3556,20 @@
             <translation>Alle referenzieren…</translation>
         </message>
         <message>
-            <source>Link lost: motion stopped by the controller's own safety, positions are unknown. Reconnect, then reference all axes.</source>
-            <translation>Verbindung verloren: die Bewegung wurde durch die Sicherheitsfunktion der Steuerung gestoppt, die Positionen sind unbekannt. Neu verbinden, dann alle Achsen referenzieren.</translation>
+            <source>STOP  (Esc)
+does not stop the controller</source>
+            <translation>STOPP  (Esc)
+hält die Steuerung nicht an</translation>
         </message>
         <message>
-            <source>Not connected.</source>
-            <translation>Nicht verbunden.</translation>
+            <source>PANIC  (F1)
+does not stop the controller</source>
+            <translation>PANIK  (F1)
+hält die Steuerung nicht an</translation>
         </message>
         <message>
-            <source>EMERGENCY STOP active: positions are lost. Release the emergency stop, then reference all axes.</source>
-            <translation>NOT-AUS aktiv: die Positionen sind verloren. Not-Aus lösen, dann alle Achsen referenzieren.</translation>
-        </message>
-        <message>
-            <source>Positions are lost (panic stop or reconnect). Reference the machine before any absolute move.</source>
-            <translation>Die Positionen sind verloren (Panik-Stopp oder Neuverbindung). Vor jeder Absolutfahrt die Maschine referenzieren.</translation>
-        </message>
-        <message>
-            <source>Not referenced: positions are unknown until the axes are referenced.</source>
-            <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
-        </message>
-        <message>
-            <source>Ready: all axes referenced.</source>
-            <translation>Bereit: alle Achsen referenziert.</translation>
+            <source>Ends every jog input and the host's queued work; %1</source>
+            <translation>Beendet jede Tipp-Eingabe und die wartenden Aufträge des Rechners; %1</translation>
         </message>
     </context>
     <context>
@@ -3429,20 +3614,12 @@
             <translation>Werte aus der Steuerung zurücklesen</translation>
         </message>
         <message>
-            <source>Write changed values to the controller</source>
-            <translation>Geänderte Werte in die Steuerung schreiben</translation>
-        </message>
-        <message>
             <source>Write, then read back and compare where the protocol can</source>
             <translation>Schreiben, dann zurücklesen und vergleichen, wo das Protokoll es erlaubt</translation>
         </message>
         <message>
             <source>Fill the form with the model's default values (nothing is sent)</source>
             <translation>Formular mit den Standardwerten des Modells füllen (es wird nichts gesendet)</translation>
-        </message>
-        <message>
-            <source>This controller cannot read parameters back: the fields show the defaults (or a loaded file) until written.</source>
-            <translation>Diese Steuerung kann Parameter nicht zurücklesen: die Felder zeigen die Standardwerte (oder eine geladene Datei), bis sie geschrieben sind.</translation>
         </message>
         <message>
             <source>Cannot write: %1</source>
@@ -3457,10 +3634,6 @@
 %1</source>
             <translation>Ungültige Werte können nicht geschrieben werden:
 %1</translation>
-        </message>
-        <message>
-            <source>Nothing to write: every field matches the controller.</source>
-            <translation>Nichts zu schreiben: jedes Feld stimmt mit der Steuerung überein.</translation>
         </message>
         <message>
             <source>Not written: %1</source>
@@ -3504,10 +3677,6 @@
             </translation>
         </message>
         <message>
-            <source>Read failed: %1</source>
-            <translation>Lesen fehlgeschlagen: %1</translation>
-        </message>
-        <message>
             <source>Not saved: %1</source>
             <translation>Nicht gespeichert: %1</translation>
         </message>
@@ -3534,6 +3703,26 @@
         <message>
             <source>Not written: cancelled.</source>
             <translation>Nicht geschrieben: abgebrochen.</translation>
+        </message>
+        <message>
+            <source>Write all</source>
+            <translation>Alles schreiben</translation>
+        </message>
+        <message>
+            <source>This controller cannot read parameters back: the fields show the defaults (or a loaded file) until written. After every connect, reset or power cycle nothing counts as written.</source>
+            <translation>Diese Steuerung kann Parameter nicht zurücklesen: die Felder zeigen die Vorgabewerte (oder eine geladene Datei), bis sie geschrieben sind. Nach jedem Verbinden, Reset oder Aus- und Einschalten gilt nichts als geschrieben.</translation>
+        </message>
+        <message>
+            <source>Write every value on the page to the controller</source>
+            <translation>Jeden Wert der Seite zur Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>Write what is changed or not known to be on the controller</source>
+            <translation>Schreiben, was geändert ist oder von dem nicht bekannt ist, dass es in der Steuerung steht</translation>
+        </message>
+        <message>
+            <source>Read failed: %1. Values that could not be read are shown as unknown; they are written only if you set them.</source>
+            <translation>Lesen fehlgeschlagen: %1. Werte, die nicht gelesen werden konnten, werden als unbekannt angezeigt; sie werden nur geschrieben, wenn Sie sie setzen.</translation>
         </message>
     </context>
     <context>
@@ -3794,6 +3983,78 @@
         <message>
             <source>inch</source>
             <translation>Zoll</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePlan</name>
+        <message>
+            <source>Nothing to write: every value was written or read in this session and nothing changed since.</source>
+            <translation>Nichts zu schreiben: jeder Wert wurde in dieser Sitzung geschrieben oder gelesen, und seitdem hat sich nichts geändert.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Nothing to write: %n value(s) could not be read (%1); they are written only once you set them.</source>
+            <translation>
+                <numerusform>Nichts zu schreiben: %n Wert konnte nicht gelesen werden (%1); er wird erst geschrieben, wenn Sie ihn setzen.</numerusform>
+                <numerusform>Nichts zu schreiben: %n Werte konnten nicht gelesen werden (%1); sie werden erst geschrieben, wenn Sie sie setzen.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Nothing to write: every field matches the controller.</source>
+            <translation>Nichts zu schreiben: jedes Feld stimmt mit der Steuerung überein.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePreview</name>
+        <message>
+            <source>on</source>
+            <translation>ein</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <source>all</source>
+            <translation>alle</translation>
+        </message>
+        <message>
+            <source>Drive %1 (%2)</source>
+            <translation>Antrieb %1 (%2)</translation>
+        </message>
+        <message>
+            <source>Write parameters</source>
+            <translation>Parameter schreiben</translation>
+        </message>
+        <message numerus="yes">
+            <source>These %n value(s) will be sent, and nothing else:</source>
+            <translation>
+                <numerusform>Dieser %n Wert wird gesendet, sonst nichts:</numerusform>
+                <numerusform>Diese %n Werte werden gesendet, sonst nichts:</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Drive</source>
+            <translation>Antrieb</translation>
+        </message>
+        <message>
+            <source>Parameter</source>
+            <translation>Parameter</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>Please read before writing:&lt;br&gt;%1</source>
+            <translation>Bitte vor dem Schreiben lesen:&lt;br&gt;%1</translation>
+        </message>
+        <message>
+            <source>Write</source>
+            <translation>Schreiben</translation>
         </message>
     </context>
     <context>

@@ -20,6 +20,13 @@
                 <numerusform>%n drives found</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Scan cancelled after address %1: %n drive(s) found</source>
+            <translation>
+                <numerusform>Scan cancelled after address %1: %n drive found</numerusform>
+                <numerusform>Scan cancelled after address %1: %n drives found</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>
@@ -72,6 +79,26 @@
             <translation>
                 <numerusform>%n record</numerusform>
                 <numerusform>%n records</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePlan</name>
+        <message numerus="yes">
+            <source>Nothing to write: %n value(s) could not be read (%1); they are written only once you set them.</source>
+            <translation>
+                <numerusform>Nothing to write: %n value could not be read (%1); it is written only once you set it.</numerusform>
+                <numerusform>Nothing to write: %n values could not be read (%1); they are written only once you set them.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WritePreview</name>
+        <message numerus="yes">
+            <source>These %n value(s) will be sent, and nothing else:</source>
+            <translation>
+                <numerusform>This %n value will be sent, and nothing else:</numerusform>
+                <numerusform>These %n values will be sent, and nothing else:</numerusform>
             </translation>
         </message>
     </context>

@@ -211,6 +211,7 @@ void Controller::onJogTick()
     }
     const double dt = qMax<qint64>(1, now - m_lastJogTickMs) / 1000.0;
     m_lastJogTickMs = now;
+    keepJogInsideSoftLimits(qMax(dt, m_options.jogTickMs / 1000.0));
     const AxisVelocities before = m_jogRamp.currentVelocities();
     const AxisVelocities rates = m_jogRamp.advance(dt);
 
@@ -244,6 +245,34 @@ void Controller::onJogTick()
     }
     if (m_jogRamp.isIdle())
         m_jogTimer.stop();
+}
+
+void Controller::keepJogInsideSoftLimits(double lookaheadS)
+{
+    if (m_softLimits.all().isEmpty())
+        return;
+    AxisVelocities targets;
+    for (Axis a : capabilities().axes)
+        targets.insert(a, m_jogRamp.target(a));
+    QString why;
+    const AxisVelocities limited =
+        m_softLimits.limitJog(m_status, targets, m_jogRamp.currentVelocities(),
+                              m_jogRamp.acceleration(), lookaheadS, &why);
+    for (auto it = limited.cbegin(); it != limited.cend(); ++it) {
+        if (it.value() != targets.value(it.key()))
+            m_jogRamp.setTarget(it.key(), it.value()); // brakes now, stops inside the limit
+    }
+    if (!why.isEmpty() && why != m_softLimitNote)
+        Q_EMIT jogRefused(why);
+    m_softLimitNote = why;
+}
+
+bool Controller::refuse(RequestId id, const QString& refusal)
+{
+    if (refusal.isEmpty())
+        return false;
+    finishError(id, ErrorKind::Refused, refusal);
+    return true;
 }
 
 void Controller::haltJogImmediately()

@@ -1,6 +1,7 @@
 #pragma once
 #include "controller/ControllerOptions.h"
 #include "controller/JogRamp.h"
+#include "controller/SoftLimits.h"
 #include "model/Capabilities.h"
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
@@ -100,6 +101,13 @@ public:
     void setJogAcceleration(double stepsPerS2);
     const JogRamp& jogRamp() const { return m_jogRamp; }
 
+    // --- soft limits (issue 11): the jog ramp keeps inside them on every tick; moves are
+    // checked by ControllerSession before they reach the adapter ---
+    void setSoftLimits(const SoftLimits& limits) { m_softLimits = limits; }
+    const SoftLimits& softLimits() const { return m_softLimits; }
+    // refusal non-empty: finishes id as Refused with it and returns true.
+    bool refuse(RequestId id, const QString& refusal);
+
 Q_SIGNALS:
     void linkStateChanged(stepdeck::LinkState state, const QString& reason);
     void statusChanged(const stepdeck::MachineStatus& status);
@@ -175,6 +183,7 @@ private:
     void runSafetyStop(std::function<void(bool mayMove, bool acknowledged)> then);
     void completeClose(bool mayMove, bool acknowledged);
     void reportLinkLoss(const QString& reason, bool motionUnconfirmed);
+    void keepJogInsideSoftLimits(double dt);
 
     QPointer<Transport> m_transport;
     ControllerOptions m_options;
@@ -187,6 +196,8 @@ private:
     qint64 m_leaseRenewedMs = 0;
     AxisVelocities m_lastAppliedJog;
     AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
+    SoftLimits m_softLimits;
+    QString m_softLimitNote; // the last jog refusal said for a soft limit
     QElapsedTimer m_trafficClock;
     QTimer m_safetyTimer{this};
     std::function<void()> m_safetyTimeout;

@@ -71,6 +71,7 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
     Simulator* simulator = nullptr;
     Capabilities capabilities;
     ThreadContext* context = static_cast<ThreadContext*>(m_context);
+    const SoftLimits limits = m_softLimits;
     // Build the stack inside the controller thread so every QObject has the right affinity.
     QMetaObject::invokeMethod(
         m_context,
@@ -93,6 +94,7 @@ bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
             }
             controller = model->createController(transport, spec.options);
             controller->setParent(context);
+            controller->setSoftLimits(limits);
             capabilities = controller->capabilities(); // may depend on the axis map
         },
         Qt::BlockingQueuedConnection);
@@ -205,24 +207,38 @@ RequestId ControllerSession::writeParameters(const ParameterSet& values, bool ve
     return submit([=](Controller* c, RequestId id) { c->writeParameters(id, values, verify); });
 }
 
+// Moves are checked against the soft limits in the controller thread, with the controller's
+// own status, before the adapter sees them.
 RequestId ControllerSession::moveRelative(const AxisVector& steps)
 {
-    return submit([=](Controller* c, RequestId id) { c->moveRelative(id, steps); });
+    return submit([=](Controller* c, RequestId id) {
+        if (!c->refuse(id, c->softLimits().checkRelative(c->status(), steps)))
+            c->moveRelative(id, steps);
+    });
 }
 
 RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
 {
-    return submit([=](Controller* c, RequestId id) { c->moveAbsolute(id, targets); });
+    return submit([=](Controller* c, RequestId id) {
+        if (!c->refuse(id, c->softLimits().checkTargets(c->status(), targets)))
+            c->moveAbsolute(id, targets);
+    });
 }
 
 RequestId ControllerSession::feed(const AxisVector& steps)
 {
-    return submit([=](Controller* c, RequestId id) { c->feed(id, steps); });
+    return submit([=](Controller* c, RequestId id) {
+        if (!c->refuse(id, c->softLimits().checkRelative(c->status(), steps)))
+            c->feed(id, steps);
+    });
 }
 
 RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
 {
-    return submit([=](Controller* c, RequestId id) { c->feedStream(id, steps); });
+    return submit([=](Controller* c, RequestId id) {
+        if (!c->refuse(id, c->softLimits().checkStream(c->status(), steps)))
+            c->feedStream(id, steps);
+    });
 }
 
 RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
@@ -232,7 +248,10 @@ RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
 
 RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS)
 {
-    return submit([=](Controller* c, RequestId id) { c->velocityMove(id, stepsPerS); });
+    return submit([=](Controller* c, RequestId id) {
+        if (!c->refuse(id, c->softLimits().checkVelocity(c->status(), stepsPerS)))
+            c->velocityMove(id, stepsPerS);
+    });
 }
 
 RequestId ControllerSession::stop()
@@ -303,6 +322,12 @@ void ControllerSession::endJog()
 void ControllerSession::setJogAcceleration(double stepsPerS2)
 {
     post([stepsPerS2](Controller* c) { c->setJogAcceleration(stepsPerS2); });
+}
+
+void ControllerSession::setSoftLimits(const SoftLimits& limits)
+{
+    m_softLimits = limits;
+    post([limits](Controller* c) { c->setSoftLimits(limits); }, true);
 }
 
 void ControllerSession::withSimulator(std::function<void(Simulator*)> fn)

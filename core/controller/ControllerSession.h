@@ -69,6 +69,10 @@ public:
     void setJogVelocity(const AxisVelocities& targets);
     void endJog();
     void setJogAcceleration(double stepsPerS2);
+    // Soft limits the controller enforces for moves and jog (see SoftLimits); kept across
+    // create() so a reconnect enforces them at once.
+    void setSoftLimits(const SoftLimits& limits);
+    SoftLimits softLimits() const { return m_softLimits; }
 
     // Runs fn on the in-process simulator in the controller thread (tests, fault injection).
     void withSimulator(std::function<void(Simulator*)> fn);
@@ -98,6 +102,7 @@ private:
     MachineStatus m_status;
     Capabilities m_capabilities; // the controller's, read once at create()
     double m_pollRateHz = 0;
+    SoftLimits m_softLimits;
     std::atomic<RequestId> m_lastId{0};
 };
 

@@ -1,6 +1,10 @@
 #pragma once
 // A scriptable gamepad for the jog tests: this machine has no input devices.
+// Like the SDL backend it is sampled periodically while plugged in (sampled() every
+// kSampleMs); setSampling(false) freezes the device (a stalled driver or poll: samples stop
+// while the stick and the dead-man button stay where they were).
 #include "gamepad/GamepadDevice.h"
+#include <QTimer>
 #include <QVector>
 
 namespace stepdeck::test {
@@ -9,7 +13,16 @@ class FakeGamepadDevice : public ui::GamepadDevice
 {
     Q_OBJECT
 public:
-    explicit FakeGamepadDevice(QObject* parent = nullptr) : ui::GamepadDevice(parent) {}
+    static constexpr int kSampleMs = 20;
+
+    explicit FakeGamepadDevice(QObject* parent = nullptr) : ui::GamepadDevice(parent)
+    {
+        m_sampler.setInterval(kSampleMs);
+        connect(&m_sampler, &QTimer::timeout, this, [this] {
+            ++m_samples;
+            Q_EMIT sampled();
+        });
+    }
 
     bool isConnected() const override { return m_connected; }
     QString name() const override { return QStringLiteral("Fake Pad"); }
@@ -25,6 +38,7 @@ public:
             m_axes.fill(0.0);
             m_buttons.fill(false);
         }
+        updateSampler();
         Q_EMIT connectedChanged(connected);
     }
     void moveAxis(int index, double value)
@@ -37,9 +51,26 @@ public:
         m_buttons[index] = down;
         Q_EMIT buttonChanged(index, down);
     }
+    void setSampling(bool on)
+    {
+        m_sampling = on;
+        updateSampler();
+    }
+    int samples() const { return m_samples; }
 
 private:
+    void updateSampler()
+    {
+        if (m_connected && m_sampling)
+            m_sampler.start();
+        else
+            m_sampler.stop();
+    }
+
     bool m_connected = false;
+    bool m_sampling = true;
+    int m_samples = 0;
+    QTimer m_sampler{this};
     QVector<double> m_axes = QVector<double>(6, 0.0);
     QVector<bool> m_buttons = QVector<bool>(16, false);
 };

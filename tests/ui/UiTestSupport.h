@@ -3,12 +3,15 @@
 // in-process E-LAB simulator through the ControllerSession, and the traffic it produced.
 #include "FakeGamepadDevice.h"
 #include "TestSupport.h"
+#include "controller/Controller.h"
 #include "main/ConnectionBar.h"
 #include "main/MachineContext.h"
 #include "main/MainWindow.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
+#include "transport/LoopbackTransport.h"
 #include <QApplication>
+#include <QMutex>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QtTest>
@@ -40,13 +43,114 @@ public:
                          [this](const MachineStatus&) { ++statusCount; });
     }
 
-    // Connects through the connection bar to the in-process simulator.
+    // Connects through the connection bar to the in-process simulator, and records every
+    // byte the simulated device receives (deviceBytes()).
     bool connectSim()
     {
         window->connectionBar()->setSelectedModel(QStringLiteral("elab"));
         window->connectionBar()->setPortSpec(QStringLiteral("sim"));
         window->connectionBar()->connectNow();
-        return waitConnected();
+        return waitConnected() && recordDevice();
+    }
+
+    // Connected, and the E-LAB ramp setup written (the board refuses motion without it).
+    bool connectAndSetUp()
+    {
+        if (!connectSim())
+            return false;
+        QSignalSpy done(session, &ControllerSession::requestFinished);
+        const RequestId id = writeRampSetup();
+        for (int i = 0; i < 100; ++i) {
+            for (const QList<QVariant>& args : done) {
+                const CommandResult r = args.at(0).value<CommandResult>();
+                if (r.id == id)
+                    return r.ok();
+            }
+            done.wait(50);
+        }
+        return false;
+    }
+
+    // Taps the device end of the in-process link: what the simulator really received (after
+    // any discardOutput()), in the controller thread.
+    bool recordDevice()
+    {
+        auto device = m_device;
+        return withSimulatorAs<Simulator>([device](Simulator* sim) {
+            QObject* stack = sim->parent();
+            const Controller* controller = stack->findChild<Controller*>();
+            for (LoopbackTransport* end : stack->findChildren<LoopbackTransport*>()) {
+                if (controller && end == controller->transport())
+                    continue;
+                QObject::connect(
+                    end, &Transport::dataReceived, end,
+                    [device](const QByteArray& bytes) {
+                        QMutexLocker lock(&device->mutex);
+                        device->bytes += bytes;
+                    },
+                    Qt::DirectConnection);
+            }
+        });
+    }
+
+    QByteArray deviceBytes() const
+    {
+        QMutexLocker lock(&m_device->mutex);
+        return m_device->bytes;
+    }
+    qsizetype deviceMark() const { return deviceBytes().size(); }
+
+    // Commands with the given code the device received since `mark`, decoded, in order.
+    QList<elab::Command> deviceCommands(char code, qsizetype mark = 0) const
+    {
+        elab::CommandDecoder decoder;
+        QList<elab::Command> out;
+        for (const elab::Command& c : decoder.feed(deviceBytes().mid(mark)))
+            if (c.code == code)
+                out << c;
+        return out;
+    }
+
+    struct SimAxis
+    {
+        bool moving = false;
+        qint64 position = 0;
+    };
+    SimAxis simAxis(Axis axis)
+    {
+        SimAxis out;
+        withSim([&out, axis](elab::ElabSimulator* sim) {
+            out.moving = sim->isMoving(axis);
+            out.position = sim->position(axis);
+        });
+        return out;
+    }
+
+    // The simulated axis has stopped, and stays where it stopped over `polls` further status
+    // rounds. False (with the reason in *why) otherwise.
+    bool simStandsStill(Axis axis, int polls, QString* why)
+    {
+        QElapsedTimer t;
+        t.start();
+        while (simAxis(axis).moving && t.elapsed() < 5000)
+            QTest::qWait(10);
+        const SimAxis stopped = simAxis(axis);
+        if (stopped.moving) {
+            *why = QStringLiteral("axis %1 still moving after 5 s").arg(axisName(axis));
+            return false;
+        }
+        const int from = statusCount;
+        while (statusCount - from < polls && t.elapsed() < 15000)
+            QTest::qWait(10);
+        const SimAxis later = simAxis(axis);
+        if (later.moving || later.position != stopped.position) {
+            *why = QStringLiteral("axis %1 moved again: %2 -> %3")
+                       .arg(axisName(axis))
+                       .arg(stopped.position)
+                       .arg(later.position);
+            return false;
+        }
+        return true;
     }
 
     bool waitConnected(int timeoutMs = 5000)
@@ -71,7 +175,7 @@ public:
                                {QStringLiteral("max-speed"), perAxis(maxSpeed)},
                                {QStringLiteral("acceleration"), perAxis(acceleration)},
                                {QStringLiteral("feed-speed"), perAxis(50)}};
-        return session->writeParameters(set, false);
+        return window->context()->writeParameters(set, false); // known to the UI afterwards
     }
 
     // Runs fn on the in-process simulator (of type Sim) in the controller thread and waits,
@@ -128,6 +232,65 @@ public:
     ControllerSession* session;
     QList<TrafficRecord> records;
     int statusCount = 0;
+
+private:
+    struct DeviceLog
+    {
+        QMutex mutex;
+        QByteArray bytes;
+    };
+    std::shared_ptr<DeviceLog> m_device = std::make_shared<DeviceLog>();
+};
+
+// Real pointer input through the window system (QGuiApplication::mouseButtons() follows it,
+// as it does for a physical mouse); positions are in w's coordinates.
+inline void pointerPress(QWidget* w, const QPointF& pos)
+{
+    QTest::mousePress(w->window()->windowHandle(), Qt::LeftButton, Qt::NoModifier,
+                      w->mapTo(w->window(), pos.toPoint()));
+}
+inline void pointerMove(QWidget* w, const QPointF& pos)
+{
+    QTest::mouseMove(w->window()->windowHandle(), w->mapTo(w->window(), pos.toPoint()));
+}
+inline void pointerRelease(QWidget* w, const QPointF& pos)
+{
+    QTest::mouseRelease(w->window()->windowHandle(), Qt::LeftButton, Qt::NoModifier,
+                        w->mapTo(w->window(), pos.toPoint()));
+}
+inline void pointerClick(QWidget* w)
+{
+    QTest::mouseClick(w->window()->windowHandle(), Qt::LeftButton, Qt::NoModifier,
+                      w->mapTo(w->window(), w->rect().center()));
+}
+
+// A held key as the platform delivers it: auto-repeat presses at 30 Hz to whatever has the
+// focus, until stopped. Stopping without a key-up is a lost key-up.
+class KeyRepeater : public QObject
+{
+public:
+    explicit KeyRepeater(int key) : m_key(key)
+    {
+        m_timer.setInterval(33);
+        QObject::connect(&m_timer, &QTimer::timeout, this, [this] {
+            QWidget* target = QApplication::focusWidget();
+            if (!target)
+                target = QApplication::activeWindow();
+            if (!target)
+                return;
+            QKeyEvent repeat(QEvent::KeyPress, m_key, Qt::NoModifier, QString(), true);
+            QApplication::sendEvent(target, &repeat);
+            ++m_sent;
+        });
+    }
+    void start() { m_timer.start(); }
+    void stop() { m_timer.stop(); }
+    int sent() const { return m_sent; }
+
+private:
+    int m_key;
+    int m_sent = 0;
+    QTimer m_timer{this};
 };
 
 } // namespace stepdeck::test

@@ -1,6 +1,6 @@
 // The physical gamepad as a jog source, through a fake device: nothing moves without the
 // dead-man button, the dead zone swallows rest noise, calibration re-centres a stick, and
-// unplugging the pad mid-jog ramps the axes to zero.
+// unplugging the pad mid-jog ramps the axes to zero -- checked at the simulated axis too.
 #include "UiTestSupport.h"
 #include "gamepad/GamepadJogSource.h"
 #include "gamepad/GamepadPanel.h"
@@ -39,17 +39,14 @@ void TestGamepadJog::init()
     QSettings().clear();
     m_f = std::make_unique<UiFixture>();
     m_f->window->show();
+    QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
     QVERIFY(connectAndSetUp());
     m_f->gamepad->plug(true);
 }
 
 bool TestGamepadJog::connectAndSetUp()
 {
-    if (!m_f->connectSim())
-        return false;
-    QSignalSpy done(m_f->session, &ControllerSession::requestFinished);
-    m_f->writeRampSetup();
-    return done.wait(3000) && done.first().at(0).value<CommandResult>().ok();
+    return m_f->connectAndSetUp();
 }
 
 void TestGamepadJog::stick_withoutDeadman_movesNothing()
@@ -64,6 +61,8 @@ void TestGamepadJog::stick_withoutDeadman_movesNothing()
     QCOMPARE(m_f->commanded(Axis::X), 0.0);
     for (const elab::Command& c : m_f->commands(elab::ctrl::DC4, start))
         QCOMPARE(c.values[0], qint64(0));
+    QVERIFY(!m_f->simAxis(Axis::X).moving);
+    QCOMPARE(m_f->simAxis(Axis::X).position, qint64(0));
 }
 
 void TestGamepadJog::stick_withDeadman_jogsAndReleaseRampsToZero()
@@ -72,12 +71,17 @@ void TestGamepadJog::stick_withDeadman_jogsAndReleaseRampsToZero()
     m_f->gamepad->press(kDeadman, true);
     const double max = m_f->window->jogController()->maxSpeed(Axis::X);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
+    QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     const qsizetype released = m_f->records.size();
+    const qsizetype atDevice = m_f->deviceMark();
     m_f->gamepad->press(kDeadman, false); // stick still deflected: the button alone stops
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
+    QCOMPARE(m_f->commanded(Axis::X), 0.0);
     const QList<elab::Command> down = m_f->commands(elab::ctrl::DC4, released);
     QVERIFY(down.size() >= 2);
     QVERIFY(down.first().values[0] > 0); // ramped, not a step to zero
+    QCOMPARE(m_f->deviceCommands(elab::ctrl::DC4, atDevice).last().values[0], qint64(0));
 }
 
 void TestGamepadJog::unplug_midJog_rampsToZero()
@@ -85,10 +89,13 @@ void TestGamepadJog::unplug_midJog_rampsToZero()
     m_f->gamepad->moveAxis(1, -1.0); // left stick up (SDL: negative) -> +Y
     m_f->gamepad->press(kDeadman, true);
     QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::Y) > 100, 5000);
+    QTRY_VERIFY(m_f->simAxis(Axis::Y).moving);
     const qsizetype unplugged = m_f->records.size();
     m_f->gamepad->plug(false);
     QVERIFY(!m_f->window->jogController()->isJogging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Y), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::Y, 5, &why), qPrintable(why));
+    QCOMPARE(m_f->commanded(Axis::Y), 0.0);
     const QList<elab::Command> down = m_f->commands(elab::ctrl::DC4, unplugged);
     QVERIFY(!down.isEmpty());
     QCOMPARE(down.last().values[1], qint64(0));

@@ -1,6 +1,8 @@
 // Jog panel against the in-process E-LAB simulator through the ControllerSession: the pad's
 // deflection becomes ramped <DC4> jog commands, release ramps to zero, the lease is renewed
-// while held, refusals are visible, keyboard jog ends on focus loss and ignores auto-repeat.
+// while held (the pointer proves it), refusals are visible, keyboard jog ends on focus loss
+// and a repeat of a key that is not held starts nothing. Every end is checked at the
+// simulated axis, not only at the host's commanded velocity.
 #include "UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include "jog/IncrementalJogWidget.h"
@@ -18,14 +20,6 @@ using namespace stepdeck;
 using namespace stepdeck::test;
 
 namespace {
-void mouse(QWidget* w, QEvent::Type type, const QPointF& pos)
-{
-    const Qt::MouseButtons buttons =
-        type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
-    QMouseEvent e(type, pos, w->mapToGlobal(pos), Qt::LeftButton, buttons, Qt::NoModifier);
-    QApplication::sendEvent(w, &e);
-}
-
 QList<qint64> jogValues(const QList<elab::Command>& dc4, int axisIndex)
 {
     QList<qint64> out;
@@ -41,16 +35,17 @@ class TestJogPanel : public QObject
 private Q_SLOTS:
     void initTestCase() { isolateSettings(); }
     void init();
-    void cleanup() { m_f.reset(); }
+    void cleanup();
 
     void jog_draggedKnob_rampsUpThenReleaseRampsToZero();
     void jog_heldKnob_leaseRenewedSpeedHeld();
-    void jog_notConnected_refusedWithVisibleReason();
+    void jog_notConnected_controlsDisabled();
+    void keyboardJog_stateAndKeysShownOnPanel();
     void jog_panicActive_refusedWithVisibleReason();
     void jog_limitSwitch_shownOnPadEdge();
     void keyboardJog_focusLoss_endsJog();
     void keyboardJog_windowDeactivated_endsJog();
-    void keyboardJog_autoRepeat_ignored();
+    void keyboardJog_repeatOfUnheldKey_startsNothing();
     void incrementalJog_plusButton_movesByStepSize();
 
 private:
@@ -66,21 +61,16 @@ void TestJogPanel::init()
     QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
 }
 
+void TestJogPanel::cleanup()
+{
+    if (QGuiApplication::mouseButtons() & Qt::LeftButton)
+        QTest::mouseRelease(m_f->window->windowHandle(), Qt::LeftButton);
+    m_f.reset();
+}
+
 bool TestJogPanel::connectAndSetUp()
 {
-    if (!m_f->connectSim())
-        return false;
-    QSignalSpy done(m_f->session, &ControllerSession::requestFinished);
-    const RequestId id = m_f->writeRampSetup();
-    for (int i = 0; i < 100; ++i) {
-        for (const QList<QVariant>& args : done) {
-            const CommandResult r = args.at(0).value<CommandResult>();
-            if (r.id == id)
-                return r.ok();
-        }
-        done.wait(50);
-    }
-    return false;
+    return m_f->connectAndSetUp();
 }
 
 void TestJogPanel::jog_draggedKnob_rampsUpThenReleaseRampsToZero()
@@ -90,9 +80,10 @@ void TestJogPanel::jog_draggedKnob_rampsUpThenReleaseRampsToZero()
     const double max = m_f->window->jogController()->maxSpeed(Axis::X);
     const qsizetype start = m_f->records.size();
 
-    mouse(pad, QEvent::MouseButtonPress, pad->centre());
-    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(1.0, 0.0)));
+    pointerPress(pad, pad->centre());
+    pointerMove(pad, pad->pointFor(QPointF(1.0, 0.0)));
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
+    QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
 
     // Ramped: several intermediate rates on the way up, never a jump to full speed.
     const QList<qint64> up = jogValues(m_f->commands(elab::ctrl::DC4, start), 0);
@@ -104,13 +95,18 @@ void TestJogPanel::jog_draggedKnob_rampsUpThenReleaseRampsToZero()
     QCOMPARE(jogValues(m_f->commands(elab::ctrl::DC4, start), 1).last(), qint64(0)); // Y untouched
 
     const qsizetype released = m_f->records.size();
-    mouse(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(1.0, 0.0)));
+    const qsizetype atDevice = m_f->deviceMark();
+    pointerRelease(pad, pad->pointFor(QPointF(1.0, 0.0)));
     QVERIFY(!pad->isDragging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
+    QCOMPARE(m_f->commanded(Axis::X), 0.0);
     const QList<qint64> down = jogValues(m_f->commands(elab::ctrl::DC4, released), 0);
     QVERIFY(down.size() >= 3);
     QVERIFY(down.first() > 0 && down.first() < qint64(max)); // ramps, no step to zero
     QCOMPARE(down.last(), qint64(0));
+    // ... and the board received exactly that ramp.
+    QCOMPARE(jogValues(m_f->deviceCommands(elab::ctrl::DC4, atDevice), 0), down);
 }
 
 void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
@@ -118,10 +114,11 @@ void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
     QVERIFY(connectAndSetUp());
     ui::JoystickPad* z = m_f->window->jogPanel()->zStick();
     const double max = m_f->window->jogController()->maxSpeed(Axis::Z);
-    mouse(z, QEvent::MouseButtonPress, z->centre());
-    mouse(z, QEvent::MouseMove, z->pointFor(QPointF(0.0, -1.0)));
+    pointerPress(z, z->centre());
+    pointerMove(z, z->pointFor(QPointF(0.0, -1.0)));
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), -max, 5000);
-    // Far longer than the core's 300 ms lease: the panel keeps renewing it.
+    const qint64 start = m_f->simAxis(Axis::Z).position;
+    // Far longer than the core's 300 ms lease: the held button renews it.
     const int from = m_f->statusCount;
     double slowest = max;
     QObject ctx;
@@ -130,20 +127,59 @@ void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
     });
     QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount - from >= 25, 5000);
     QCOMPARE(slowest, max);
-    mouse(z, QEvent::MouseButtonRelease, z->centre());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), 0.0, 5000);
+    const UiFixture::SimAxis during = m_f->simAxis(Axis::Z);
+    QVERIFY(during.moving);
+    QVERIFY(during.position < start);
+    pointerRelease(z, z->centre());
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::Z, 5, &why), qPrintable(why));
 }
 
-void TestJogPanel::jog_notConnected_refusedWithVisibleReason()
+void TestJogPanel::jog_notConnected_controlsDisabled()
 {
-    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
-    mouse(pad, QEvent::MouseButtonPress, pad->centre());
-    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.0, 0.8)));
-    QLabel* refusal = m_f->window->jogPanel()->refusalLabel();
-    QVERIFY2(refusal->text().contains(QStringLiteral("not connected")),
-             qPrintable(refusal->text()));
+    // Without a connection the pads and step buttons are disabled: nothing to drag.
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    QVERIFY(!panel->xyPad()->isEnabled());
+    QVERIFY(!panel->zStick()->isEnabled());
+    QVERIFY(!panel->incremental()->isEnabled());
+    ui::JoystickPad* pad = panel->xyPad();
+    pointerPress(pad, pad->centre());
+    pointerMove(pad, pad->pointFor(QPointF(0.0, 0.8)));
+    QVERIFY(!pad->isDragging());
     QVERIFY(!m_f->window->jogController()->isJogging());
-    mouse(pad, QEvent::MouseButtonRelease, pad->centre());
+    pointerRelease(pad, pad->centre());
+    QVERIFY(connectAndSetUp());
+    QVERIFY(panel->xyPad()->isEnabled());
+    QVERIFY(panel->incremental()->isEnabled());
+}
+
+void TestJogPanel::keyboardJog_stateAndKeysShownOnPanel()
+{
+    QVERIFY(connectAndSetUp());
+    ui::JogPanel* panel = m_f->window->jogPanel();
+    QVERIFY2(panel->keyboardStateText().contains(QStringLiteral("off")),
+             qPrintable(panel->keyboardStateText()));
+    panel->keyboardCheck()->setChecked(true);
+    QTRY_VERIFY(panel->hasFocus());
+    const QString on = panel->keyboardStateText();
+    QVERIFY2(on.contains(QStringLiteral("ON")) && on.contains(QStringLiteral("\u2190/\u2192 X")) &&
+                 on.contains(QStringLiteral("Page Down/Up Z")),
+             qPrintable(on));
+    // A text field takes the focus: the arrows edit the field, the panel says jog is paused.
+    QLineEdit* line = m_f->window->trafficConsole()->sendLine();
+    m_f->window->raisePage(m_f->window->trafficConsole());
+    line->setText(QStringLiteral("abc"));
+    line->setFocus();
+    QTRY_VERIFY(line->hasFocus());
+    QTRY_VERIFY2(panel->keyboardStateText().contains(QStringLiteral("paused")),
+                 qPrintable(panel->keyboardStateText()));
+    line->setCursorPosition(3);
+    QTest::keyClick(line, Qt::Key_Left);
+    QCOMPARE(line->cursorPosition(), 2);
+    QVERIFY(!m_f->window->keyboardJog()->isJogging());
+    QVERIFY(!m_f->simAxis(Axis::X).moving);
+    panel->setFocus();
+    QTRY_VERIFY(panel->keyboardStateText().contains(QStringLiteral("ON")));
 }
 
 void TestJogPanel::jog_panicActive_refusedWithVisibleReason()
@@ -153,13 +189,17 @@ void TestJogPanel::jog_panicActive_refusedWithVisibleReason()
     QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().panic, 3000);
     ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
     const qsizetype start = m_f->records.size();
-    mouse(pad, QEvent::MouseButtonPress, pad->centre());
-    mouse(pad, QEvent::MouseMove, pad->pointFor(QPointF(1.0, 0.0)));
+    const qsizetype atDevice = m_f->deviceMark();
+    pointerPress(pad, pad->centre());
+    pointerMove(pad, pad->pointFor(QPointF(1.0, 0.0)));
     QTRY_VERIFY(
         m_f->window->jogPanel()->refusalLabel()->text().contains(QStringLiteral("emergency stop")));
-    mouse(pad, QEvent::MouseButtonRelease, pad->centre());
+    pointerRelease(pad, pad->centre());
     for (const elab::Command& c : m_f->commands(elab::ctrl::DC4, start))
         QCOMPARE(c.values[0], qint64(0)); // nothing but zero rates ever sent
+    for (const elab::Command& c : m_f->deviceCommands(elab::ctrl::DC4, atDevice))
+        QCOMPARE(c.values[0], qint64(0));
+    QVERIFY(!m_f->simAxis(Axis::X).moving);
 }
 
 void TestJogPanel::jog_limitSwitch_shownOnPadEdge()
@@ -184,6 +224,7 @@ void TestJogPanel::keyboardJog_focusLoss_endsJog()
     m_f->window->jogPanel()->xyPad()->window()->setFocus();
     QTest::keyPress(m_f->window.get(), Qt::Key_Right);
     QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::X) > 0, 3000);
+    QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     QVERIFY(m_f->window->keyboardJog()->isJogging());
 
     // The key is never released: moving the focus alone must end the jog.
@@ -192,7 +233,9 @@ void TestJogPanel::keyboardJog_focusLoss_endsJog()
     other->setFocus();
     QTRY_VERIFY(other->hasFocus());
     QVERIFY(!m_f->window->keyboardJog()->isJogging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
+    QCOMPARE(m_f->commanded(Axis::X), 0.0);
 }
 
 void TestJogPanel::keyboardJog_windowDeactivated_endsJog()
@@ -201,14 +244,19 @@ void TestJogPanel::keyboardJog_windowDeactivated_endsJog()
     m_f->window->jogPanel()->keyboardCheck()->setChecked(true);
     QTest::keyPress(m_f->window.get(), Qt::Key_PageUp);
     QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::Z) > 0, 3000);
-    QEvent deactivate(QEvent::WindowDeactivate);
-    QApplication::sendEvent(m_f->window.get(), &deactivate);
+    QTRY_VERIFY(m_f->simAxis(Axis::Z).moving);
+    // Another window takes the focus; the key-up would go there.
+    QWidget other;
+    other.show();
+    other.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&other));
     QVERIFY(!m_f->window->keyboardJog()->isJogging());
     QVERIFY(!m_f->window->jogController()->isJogging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::Z, 5, &why), qPrintable(why));
 }
 
-void TestJogPanel::keyboardJog_autoRepeat_ignored()
+void TestJogPanel::keyboardJog_repeatOfUnheldKey_startsNothing()
 {
     QVERIFY(connectAndSetUp());
     m_f->window->jogPanel()->keyboardCheck()->setChecked(true);
@@ -225,9 +273,12 @@ void TestJogPanel::keyboardJog_autoRepeat_ignored()
     QApplication::sendEvent(m_f->window.get(), &repeat);
     QVERIFY(keyboard->isJogging());
     QTRY_VERIFY_WITH_TIMEOUT(m_f->commanded(Axis::X) < 0, 3000);
+    QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     QTest::keyRelease(m_f->window.get(), Qt::Key_Left);
     QVERIFY(!keyboard->isJogging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 5000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
+    QCOMPARE(m_f->commanded(Axis::X), 0.0);
 }
 
 void TestJogPanel::incrementalJog_plusButton_movesByStepSize()

@@ -3,6 +3,8 @@
 // origin and units apply.
 #include "UiTestSupport.h"
 #include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
@@ -23,8 +25,12 @@ private Q_SLOTS:
     void referenceAll_runsStagesInOrder_allReferenced();
     void position_unknownBeforeReference_estimatedAfterJog();
     void position_workZeroAndUnits_applied();
+    void position_duringMove_estimateAndTargetNotReferenced();
+    void position_disconnected_showsNoLinkNotReferenced();
+    void successMessage_afterPanic_replaced();
 
 private:
+    bool referenceX();
     bool setUp();
     std::unique_ptr<UiFixture> m_f;
 };
@@ -34,6 +40,7 @@ void TestReferencePanel::init()
     QSettings().clear();
     m_f = std::make_unique<UiFixture>();
     m_f->window->show();
+    QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
     QVERIFY(setUp());
 }
 
@@ -91,11 +98,12 @@ void TestReferencePanel::position_unknownBeforeReference_estimatedAfterJog()
     QVERIFY(finished.wait(30000));
     QVERIFY(finished.first().at(0).toBool());
     QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
-    QObject input;
-    m_f->window->jogController()->setDeflection(&input, {{Axis::X, 0.5}});
+    ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
+    pointerPress(pad, pad->centre());
+    pointerMove(pad, pad->pointFor(QPointF(0.7, 0.0)));
     QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().axes.value(Axis::X).position > 50,
                              5000);
-    m_f->window->jogController()->releaseAll();
+    pointerRelease(pad, pad->pointFor(QPointF(0.7, 0.0)));
     QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("ESTIMATED"));
     QVERIFY(dro->displayedValue(Axis::X).startsWith(QStringLiteral("\u2248")));
 }
@@ -114,6 +122,66 @@ void TestReferencePanel::position_workZeroAndUnits_applied()
     m_f->window->positionPanel()->zeroAxis(Axis::Y);
     QCOMPARE(ctx->units(Axis::Y).workOffset, ctx->status().axes.value(Axis::Y).position);
     QCOMPARE(m_f->window->positionPanel()->displayedValue(Axis::Y), QStringLiteral("0.000"));
+}
+
+bool TestReferencePanel::referenceX()
+{
+    QSignalSpy finished(m_f->window->referencePanel()->runner(), &ui::ReferenceRunner::finished);
+    m_f->window->referencePanel()->referenceAxis(Axis::X);
+    return finished.wait(30000) && finished.first().at(0).toBool();
+}
+
+void TestReferencePanel::position_duringMove_estimateAndTargetNotReferenced()
+{
+    // E-LAB reports no position during a move; the core counts the target at once. The
+    // read-out must show an estimate and the target, not the target as if reached.
+    QVERIFY(referenceX());
+    ui::PositionPanel* dro = m_f->window->positionPanel();
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
+    m_f->session->moveRelative({{Axis::X, 8000}});
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(Axis::X), QStringLiteral("MOVING"), 3000);
+    QVERIFY(dro->detailText(Axis::X).contains(QStringLiteral("8000")));
+    QVERIFY(m_f->simAxis(Axis::X).moving);
+    // While it moves the value is an estimate between start and target.
+    bool inBetween = false;
+    QObject ctx;
+    connect(m_f->session, &ControllerSession::statusChanged, &ctx, [&] {
+        const QString shown = dro->displayedValue(Axis::X);
+        if (dro->stateText(Axis::X) == QLatin1String("MOVING")) {
+            QVERIFY(shown.startsWith(QStringLiteral("\u2248")));
+            QVERIFY(dro->stateText(Axis::X) != QLatin1String("REFERENCED"));
+            bool ok = false;
+            const qint64 v = shown.mid(1).toLongLong(&ok);
+            inBetween = inBetween || (ok && v > 0 && v < 8000);
+        }
+    });
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(Axis::X), QStringLiteral("REFERENCED"), 15000);
+    QVERIFY(inBetween);
+    QCOMPARE(dro->displayedValue(Axis::X), QStringLiteral("8000"));
+    QVERIFY(!m_f->simAxis(Axis::X).moving);
+}
+
+void TestReferencePanel::position_disconnected_showsNoLinkNotReferenced()
+{
+    QVERIFY(referenceX());
+    ui::PositionPanel* dro = m_f->window->positionPanel();
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
+    m_f->window->context()->disconnectFromController();
+    QTRY_VERIFY(!m_f->window->context()->isConnected());
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("NO LINK"));
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+        QVERIFY(dro->stateText(a) != QLatin1String("REFERENCED"));
+}
+
+void TestReferencePanel::successMessage_afterPanic_replaced()
+{
+    QVERIFY(referenceX());
+    ui::ReferencePanel* panel = m_f->window->referencePanel();
+    QVERIFY(panel->messageText().contains(QStringLiteral("referenced")));
+    m_f->window->panicAction()->trigger();
+    QVERIFY2(!panel->messageText().contains(QStringLiteral("are referenced")),
+             qPrintable(panel->messageText()));
+    QVERIFY(panel->messageText().contains(QStringLiteral("no longer referenced")));
 }
 
 QTEST_MAIN(TestReferencePanel)

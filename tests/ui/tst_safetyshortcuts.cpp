@@ -1,5 +1,7 @@
-// STOP (Esc) and PANIC (F1) work whatever widget has the focus, and after a panic the UI says
-// that positions are lost and asks for referencing.
+// STOP (Esc) and PANIC (F1) work in every state of the window (issue 7, rule 5): whatever
+// widget has the focus, inside an item-view cell editor, with a file dialog or a message box
+// open, with a popup open -- by key and by clicking the buttons. Dialogs are non-modal, so
+// the buttons stay clickable. After a panic the UI says that positions are lost.
 #include "UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include "jog/JogController.h"
@@ -10,9 +12,13 @@
 #include "setup/SetupPage.h"
 #include <QComboBox>
 #include <QDialog>
+#include <QDockWidget>
+#include <QFileDialog>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTableWidget>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -32,9 +38,20 @@ private Q_SLOTS:
     void f1_inOpenComboPopup_panics();
     void stopAndPanicButtons_enabledWhileConnected();
     void stop_whileJogging_endsJogAtOnce();
+    void keys_inCellEditor_stopAndPanic_data();
+    void keys_inCellEditor_stopAndPanic();
+    void fileDialog_nonModal_keysAndButtonsWork_data();
+    void fileDialog_nonModal_keysAndButtonsWork();
+    void messageBox_nonModal_keysAndButtonsWork_data();
+    void messageBox_nonModal_keysAndButtonsWork();
+    void popupOpen_clickOnStop_stops();
 
 private:
     QWidget* focusTarget(const QString& which) const;
+    // Esc/F1 typed into `target`, or the STOP/PANIC button clicked through the window
+    // system; the device must receive <XOFF> or <BEL>.
+    void actAndExpect(const QString& how, QWidget* target);
+    template <typename T> T* topLevel() const;
     std::unique_ptr<UiFixture> m_f;
 };
 
@@ -153,13 +170,145 @@ void TestSafetyShortcuts::stop_whileJogging_endsJogAtOnce()
     m_f->writeRampSetup();
     QTRY_VERIFY_WITH_TIMEOUT(!done.isEmpty(), 3000);
     m_f->window->jogPanel()->setFocus();
-    QObject input; // a held jog input; the controller renews the lease while it is deflected
-    m_f->window->jogController()->setDeflection(&input, {{Axis::X, 1.0}});
+    m_f->gamepad->plug(true); // a held jog input that proves itself with fresh samples
+    m_f->gamepad->moveAxis(0, 1.0);
+    m_f->gamepad->press(9, true);
     const double max = m_f->window->jogController()->maxSpeed(Axis::X);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
+    QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
+    const qsizetype atDevice = m_f->deviceMark();
     QTest::keyClick(m_f->window.get(), Qt::Key_Escape);
     QVERIFY(!m_f->window->jogController()->isJogging());
-    QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), 0.0, 3000);
+    QString why;
+    QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
+    QVERIFY(m_f->deviceBytes().mid(atDevice).contains(elab::ctrl::XOFF));
+    QCOMPARE(m_f->commanded(Axis::X), 0.0);
+}
+
+template <typename T> T* TestSafetyShortcuts::topLevel() const
+{
+    for (QWidget* w : QApplication::topLevelWidgets()) {
+        if (auto* t = qobject_cast<T*>(w); t && t->isVisible())
+            return t;
+    }
+    return nullptr;
+}
+
+void TestSafetyShortcuts::actAndExpect(const QString& how, QWidget* target)
+{
+    ui::SafetyBar* bar = m_f->window->safetyBar();
+    const qsizetype start = m_f->deviceMark();
+    const bool panic = how.contains(QLatin1String("PANIC")) || how.contains(QLatin1String("F1"));
+    if (how == QLatin1String("Esc"))
+        QTest::keyClick(target, Qt::Key_Escape);
+    else if (how == QLatin1String("F1"))
+        QTest::keyClick(target, Qt::Key_F1);
+    else
+        pointerClick(panic ? bar->panicButton() : bar->stopButton());
+    const char expected = panic ? elab::ctrl::BEL : elab::ctrl::XOFF;
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->deviceBytes().mid(start).contains(expected), 3000);
+}
+
+void TestSafetyShortcuts::keys_inCellEditor_stopAndPanic_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::newRow("Esc") << QStringLiteral("Esc");
+    QTest::newRow("F1") << QStringLiteral("F1");
+}
+
+void TestSafetyShortcuts::keys_inCellEditor_stopAndPanic()
+{
+    // An item view's delegate accepts ShortcutOverride for Esc (to cancel the edit), so a
+    // plain window shortcut never fires inside a cell editor.
+    QFETCH(QString, how);
+    auto* table = new QTableWidget(2, 2);
+    table->setItem(0, 0, new QTableWidgetItem(QStringLiteral("100")));
+    auto* dock = new QDockWidget(QStringLiteral("cells"), m_f->window.get());
+    dock->setWidget(table);
+    m_f->window->addDockWidget(Qt::BottomDockWidgetArea, dock);
+    dock->show();
+    table->editItem(table->item(0, 0));
+    QTRY_VERIFY(qobject_cast<QLineEdit*>(QApplication::focusWidget()));
+    QWidget* editor = QApplication::focusWidget();
+    actAndExpect(how, editor);
+    if (how == QLatin1String("Esc"))
+        QTRY_VERIFY(!qobject_cast<QLineEdit*>(QApplication::focusWidget())); // edit cancelled
+}
+
+void TestSafetyShortcuts::fileDialog_nonModal_keysAndButtonsWork_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::newRow("Esc") << QStringLiteral("Esc");
+    QTest::newRow("F1") << QStringLiteral("F1");
+    QTest::newRow("STOP button") << QStringLiteral("STOP button");
+    QTest::newRow("PANIC button") << QStringLiteral("PANIC button");
+}
+
+void TestSafetyShortcuts::fileDialog_nonModal_keysAndButtonsWork()
+{
+    QFETCH(QString, how);
+    ui::SetupPage* setup = m_f->window->setupPage();
+    m_f->window->raisePage(setup);
+    setup->saveAs();
+    QFileDialog* dialog = topLevel<QFileDialog>();
+    QVERIFY(dialog);
+    QVERIFY(dialog->testOption(QFileDialog::DontUseNativeDialog));
+    QCOMPARE(QApplication::activeModalWidget(), nullptr);
+    QVERIFY(!setup->isEnabled()); // the page it belongs to waits for it
+    QVERIFY(QTest::qWaitForWindowActive(dialog));
+    QWidget* focus = dialog->focusWidget() ? dialog->focusWidget() : dialog;
+    actAndExpect(how, focus);
+    if (how == QLatin1String("Esc")) {
+        QTRY_VERIFY(!dialog->isVisible()); // Esc still closes the dialog
+        QTRY_VERIFY(setup->isEnabled());
+    } else {
+        dialog->reject();
+    }
+}
+
+void TestSafetyShortcuts::messageBox_nonModal_keysAndButtonsWork_data()
+{
+    fileDialog_nonModal_keysAndButtonsWork_data();
+}
+
+void TestSafetyShortcuts::messageBox_nonModal_keysAndButtonsWork()
+{
+    QFETCH(QString, how);
+    QAction* about = nullptr;
+    for (QAction* a : m_f->window->findChildren<QAction*>()) {
+        if (a->text().contains(QStringLiteral("About StepDeck")))
+            about = a;
+    }
+    QVERIFY(about);
+    about->trigger();
+    QMessageBox* box = topLevel<QMessageBox>();
+    QVERIFY(box);
+    QCOMPARE(QApplication::activeModalWidget(), nullptr);
+    QVERIFY(QTest::qWaitForWindowActive(box));
+    QWidget* focus = box->focusWidget() ? box->focusWidget() : box;
+    actAndExpect(how, focus);
+    if (how == QLatin1String("Esc"))
+        QTRY_VERIFY(!box->isVisible());
+    else
+        box->close();
+}
+
+void TestSafetyShortcuts::popupOpen_clickOnStop_stops()
+{
+    QComboBox* combo = m_f->window->referencePanel()->findChild<QComboBox*>();
+    QVERIFY(combo);
+    combo->showPopup();
+    QTRY_VERIFY(QApplication::activePopupWidget());
+    QWidget* popup = QApplication::activePopupWidget();
+    const qsizetype start = m_f->deviceMark();
+    // The press goes to the popup (it has the mouse), at the STOP button's position.
+    QPushButton* stop = m_f->window->safetyBar()->stopButton();
+    const QPoint global = stop->mapToGlobal(stop->rect().center());
+    QMouseEvent press(QEvent::MouseButtonPress, popup->mapFromGlobal(global), global,
+                      Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(popup, &press);
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->deviceBytes().mid(start).contains(elab::ctrl::XOFF), 3000);
+    combo->hidePopup();
 }
 
 QTEST_MAIN(TestSafetyShortcuts)

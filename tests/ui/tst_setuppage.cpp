@@ -1,6 +1,8 @@
 // Setup pages generated from the schema: a form write produces the exact E-LAB bytes, an
-// out-of-range entry cannot be written and says why, files round-trip in the CLI's JSON
-// format, and a loaded file is compared with the form before anything is written.
+// out-of-range entry cannot be written and says why (in the UI's words), files round-trip
+// in the CLI's JSON format, and a loaded file is compared with the form before anything is
+// written. E-LAB is write-only: after a reconnect or power cycle nothing counts as written,
+// Write all always exists, and load-and-write writes the whole file.
 #include "UiTestSupport.h"
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
@@ -39,8 +41,14 @@ private Q_SLOTS:
     void outOfRange_cannotBeWrittenAndSaysWhy();
     void file_saveAndRead_roundTripsInCliFormat();
     void file_broken_rejectedWithReason();
+    void file_brokenJson_namesLineAndColumn();
     void diff_loadedFile_listsChangedValues();
     void warnings_collectedForParametersThatCarryThem();
+    void write_afterReconnect_sendsEveryParameterAgain();
+    void write_afterPowerCycle_sendsEveryParameterAgain();
+    void writeAll_afterFullWrite_sendsEveryParameterAgain();
+    void loadAndWrite_writesTheWholeFile();
+    void nothingToWrite_saysWhy();
 
 private:
     ui::SetupPage* page() const { return m_f->window->setupPage(); }
@@ -183,12 +191,15 @@ void TestSetupPage::outOfRange_cannotBeWrittenAndSaysWhy()
     QCOMPARE(field->lineEdit()->property("fieldState").toString(), QStringLiteral("invalid"));
     QVERIFY(!page()->writeButton()->isEnabled());
     QVERIFY(!page()->writeVerifyButton()->isEnabled());
-    QVERIFY2(page()->writeButton()->toolTip().contains(name),
+    // Named as the form names it (translated label and axis), not by the file's key.
+    const QString label = field->displayName();
+    QVERIFY(label != name);
+    QVERIFY2(page()->writeButton()->toolTip().contains(label),
              qPrintable(page()->writeButton()->toolTip()));
     const qsizetype start = m_f->records.size();
     QVERIFY(!page()->write(false)); // even when called directly
     QVERIFY(page()->messageText().contains(QStringLiteral("cannot be written")));
-    QVERIFY(page()->messageText().contains(name));
+    QVERIFY2(page()->messageText().contains(label), qPrintable(page()->messageText()));
     QVERIFY(m_f->sent(start).isEmpty());
 }
 
@@ -235,6 +246,24 @@ void TestSetupPage::file_broken_rejectedWithReason()
     QVERIFY2(error.contains(QStringLiteral("drive-power")), qPrintable(error));
 }
 
+void TestSetupPage::file_brokenJson_namesLineAndColumn()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("typo.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    // A missing comma at the end of line 3: the parser stops at the next key, on line 4
+    // (Qt's offset points just inside its opening quote: column 4).
+    file.write("{\n  \"format\": \"stepdeck-parameters\",\n  \"version\": 1\n  \"model\": "
+               "\"elab\"\n}\n");
+    file.close();
+    ParameterSet loaded;
+    QString error;
+    QVERIFY(!page()->readFile(path, &loaded, &error));
+    QVERIFY2(error.contains(QStringLiteral("line 4, column 4")), qPrintable(error));
+    QVERIFY(error.contains(QStringLiteral("typo.json")));
+}
+
 void TestSetupPage::diff_loadedFile_listsChangedValues()
 {
     ParameterSet current;
@@ -270,6 +299,90 @@ void TestSetupPage::warnings_collectedForParametersThatCarryThem()
     const QStringList warnings = ui::WriteWarnings::collect(schema, set);
     QCOMPARE(warnings.size(), 1);
     QVERIFY(warnings.first().contains(QStringLiteral("new address")));
+}
+
+namespace {
+// The setup commands of one full E-LAB write, in the order the page sends them.
+QStringList setupCommands(const QString& mnemonics)
+{
+    QStringList out;
+    for (const char* c : {"<ESC>S", "<ESC>M", "<ESC>A", "<FS>", "<STX>"}) {
+        if (mnemonics.contains(QString::fromLatin1(c)))
+            out << QString::fromLatin1(c);
+    }
+    return out;
+}
+const QStringList kEverySetupCommand{QStringLiteral("<ESC>S"), QStringLiteral("<ESC>M"),
+                                     QStringLiteral("<ESC>A"), QStringLiteral("<FS>"),
+                                     QStringLiteral("<STX>")};
+} // namespace
+
+void TestSetupPage::write_afterReconnect_sendsEveryParameterAgain()
+{
+    QVERIFY(writeAndWait(false));
+    QVERIFY(!page()->write(false)); // all written in this session, nothing changed
+    m_f->window->context()->disconnectFromController();
+    QTRY_VERIFY(!m_f->window->context()->isConnected());
+    QVERIFY(m_f->connectSim());
+    // The board may have been reset or replaced meanwhile: nothing counts as written.
+    QVERIFY(page()->field(QStringLiteral("max-speed"), Axis::X)->isChanged());
+    const qsizetype start = m_f->deviceMark();
+    QVERIFY(writeAndWait(false));
+    QCOMPARE(setupCommands(elab::toMnemonics(m_f->deviceBytes().mid(start))), kEverySetupCommand);
+}
+
+void TestSetupPage::write_afterPowerCycle_sendsEveryParameterAgain()
+{
+    QVERIFY(writeAndWait(false));
+    QTRY_VERIFY(!m_f->window->context()->status().setupIncomplete);
+    QVERIFY(!page()->write(false));
+    // The board loses power and comes back: it reports its setup incomplete again.
+    QVERIFY(m_f->withSim([](elab::ElabSimulator* sim) { sim->powerOnReset(); }));
+    QTRY_VERIFY(m_f->window->context()->status().setupIncomplete);
+    QVERIFY(m_f->window->context()->knownParameters().isEmpty());
+    const qsizetype start = m_f->deviceMark();
+    QVERIFY(writeAndWait(false));
+    QCOMPARE(setupCommands(elab::toMnemonics(m_f->deviceBytes().mid(start))), kEverySetupCommand);
+    QTRY_VERIFY(!m_f->window->context()->status().setupIncomplete);
+}
+
+void TestSetupPage::writeAll_afterFullWrite_sendsEveryParameterAgain()
+{
+    QVERIFY(writeAndWait(false));
+    QVERIFY(page()->writeAllButton()->isVisible());
+    QVERIFY(page()->writeAllButton()->isEnabled());
+    const qsizetype start = m_f->deviceMark();
+    QVERIFY(page()->writeAll(false));
+    QTRY_VERIFY(page()->messageText().startsWith(QStringLiteral("Written")));
+    QTRY_COMPARE(setupCommands(elab::toMnemonics(m_f->deviceBytes().mid(start))),
+                 kEverySetupCommand);
+}
+
+void TestSetupPage::loadAndWrite_writesTheWholeFile()
+{
+    QVERIFY(writeAndWait(false));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("same.json"));
+    QString error;
+    QVERIFY2(page()->saveToFile(path, &error), qPrintable(error));
+    // The file holds what the board already has: "Load and write" still writes all of it.
+    ui::DiffDialog* diff = page()->loadFile(path);
+    QVERIFY(diff);
+    QCOMPARE(diff->changedCount(), 0);
+    QVERIFY(!diff->isModal());
+    const qsizetype start = m_f->deviceMark();
+    diff->done(ui::DiffDialog::LoadAndWrite);
+    QTRY_VERIFY(page()->messageText().startsWith(QStringLiteral("Written")));
+    QTRY_COMPARE(setupCommands(elab::toMnemonics(m_f->deviceBytes().mid(start))),
+                 kEverySetupCommand);
+}
+
+void TestSetupPage::nothingToWrite_saysWhy()
+{
+    QVERIFY(writeAndWait(false));
+    QVERIFY(!page()->write(false));
+    QVERIFY2(page()->messageText().contains(QStringLiteral("written or read in this session")),
+             qPrintable(page()->messageText()));
 }
 
 QTEST_MAIN(TestSetupPage)

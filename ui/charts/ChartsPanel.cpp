@@ -1,11 +1,11 @@
 #include "ChartsPanel.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QGridLayout>
 #include <QLabel>
 #include <QLineSeries>
@@ -187,20 +187,24 @@ bool ChartsPanel::exportPng(const QString& path, QString* error)
 
 void ChartsPanel::exportCsvAs()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export CSV"), QStringLiteral("stepdeck-charts.csv"), tr("CSV files (*.csv)"));
-    QString error;
-    if (!path.isEmpty() && !exportCsv(path, &error))
-        QMessageBox::warning(this, tr("Export CSV"), error);
+    dialogs::saveFile(this, QStringLiteral("charts"), tr("Export CSV"),
+                      QStringLiteral("stepdeck-charts.csv"), tr("CSV files (*.csv)"),
+                      [this](const QString& path) {
+                          QString error;
+                          if (!exportCsv(path, &error))
+                              dialogs::message(this, QMessageBox::Warning, tr("Export CSV"), error);
+                      });
 }
 
 void ChartsPanel::exportPngAs()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export PNG"), QStringLiteral("stepdeck-charts.png"), tr("PNG images (*.png)"));
-    QString error;
-    if (!path.isEmpty() && !exportPng(path, &error))
-        QMessageBox::warning(this, tr("Export PNG"), error);
+    dialogs::saveFile(this, QStringLiteral("charts"), tr("Export PNG"),
+                      QStringLiteral("stepdeck-charts.png"), tr("PNG images (*.png)"),
+                      [this](const QString& path) {
+                          QString error;
+                          if (!exportPng(path, &error))
+                              dialogs::message(this, QMessageBox::Warning, tr("Export PNG"), error);
+                      });
 }
 
 } // namespace stepdeck::ui

@@ -1,8 +1,9 @@
 #include "TrafficConsole.h"
+#include "common/ConnectionGate.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -73,6 +74,9 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     });
     connect(clearButton, &QPushButton::clicked, this, &TrafficConsole::clear);
     connect(save, &QPushButton::clicked, this, &TrafficConsole::saveAs);
+    auto* gate = new ConnectionGate(context, this); // raw bytes need a connection
+    gate->add(m_send);
+    gate->add(m_sendButton);
     connect(m_send, &QLineEdit::returnPressed, this, &TrafficConsole::sendCurrentLine);
     connect(m_sendButton, &QPushButton::clicked, this, &TrafficConsole::sendCurrentLine);
     connect(m_send, &QLineEdit::textEdited, m_sendError, &QLabel::clear);
@@ -226,13 +230,13 @@ bool TrafficConsole::saveToFile(const QString& path, QString* error) const
 
 void TrafficConsole::saveAs()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save traffic"), QStringLiteral("traffic.log"), tr("Log files (*.log *.txt)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!saveToFile(path, &error))
-        m_sendError->setText(error);
+    dialogs::saveFile(this, QStringLiteral("traffic"), tr("Save traffic"),
+                      QStringLiteral("traffic.log"), tr("Log files (*.log *.txt)"),
+                      [this](const QString& path) {
+                          QString error;
+                          if (!saveToFile(path, &error))
+                              m_sendError->setText(error);
+                      });
 }
 
 } // namespace stepdeck::ui

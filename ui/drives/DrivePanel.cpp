@@ -2,6 +2,7 @@
 #include "main/MachineContext.h"
 #include <QHeaderView>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -33,7 +34,9 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
       m_drives(makeTable({tr("Address"), tr("Axes"), tr("Responding"), tr("Firmware"), tr("State")},
                          this)),
       m_found(makeTable({tr("Address"), tr("Hardware"), tr("Firmware"), tr("Date")}, this)),
-      m_scan(new QPushButton(tr("Scan bus"), this)), m_scanState(new QLabel(this))
+      m_scan(new QPushButton(tr("Scan bus"), this)),
+      m_cancelScan(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
+      m_scanState(new QLabel(this))
 {
     m_drives->setObjectName(QStringLiteral("driveTable"));
     m_found->setObjectName(QStringLiteral("foundTable"));
@@ -45,8 +48,15 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     v->addWidget(m_drives, 2);
     auto* row = new QHBoxLayout;
     row->addWidget(m_scan);
-    row->addWidget(m_scanState, 1);
+    row->addWidget(m_cancelScan);
+    row->addWidget(m_progress, 1);
+    m_cancelScan->setObjectName(QStringLiteral("cancelScanButton"));
+    m_cancelScan->setToolTip(tr("Stop the scan after the addresses being asked now"));
+    m_progress->setTextVisible(true);
+    m_progress->setValue(0);
+    m_scanState->setWordWrap(true);
     v->addLayout(row);
+    v->addWidget(m_scanState);
     v->addWidget(m_found, 1);
 
     ControllerSession* session = m_context->session();
@@ -54,6 +64,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     connect(session, &ControllerSession::requestFinished, this, &DrivePanel::onResult);
     connect(session, &ControllerSession::linkStateChanged, this, &DrivePanel::onLinkState);
     connect(m_scan, &QPushButton::clicked, this, &DrivePanel::scanBus);
+    connect(m_cancelScan, &QPushButton::clicked, this, &DrivePanel::cancelScan);
     updateEnabled();
 }
 
@@ -64,12 +75,7 @@ QString DrivePanel::scanState() const
 
 void DrivePanel::scanBus()
 {
-    if (!m_context->isConnected() || m_scanId)
-        return;
-    m_found->setRowCount(0);
-    m_scanState->setText(tr("Scanning addresses 1..254\u2026"));
-    m_scanId = m_context->session()->scanBus();
-    updateEnabled();
+    scanRange(1, 254);
 }
 
 void DrivePanel::scanRange(int first, int last)
@@ -77,9 +83,40 @@ void DrivePanel::scanRange(int first, int last)
     if (!m_context->isConnected() || m_scanId)
         return;
     m_found->setRowCount(0);
-    m_scanState->setText(tr("Scanning addresses %1..%2\u2026").arg(first).arg(last));
+    m_foundDrives.clear();
+    m_scanFirst = first;
+    m_scanNext = first;
+    m_scanLast = last;
+    m_scanCancelled = false;
+    m_progress->setRange(first - 1, last);
+    m_progress->setValue(first - 1);
+    scanNextChunk();
+}
+
+void DrivePanel::scanNextChunk()
+{
+    const int last = qMin(m_scanLast, m_scanNext + kScanChunk - 1);
+    m_scanState->setText(tr("Scanning addresses %1..%2 (%3..%4 now)\u2026")
+                             .arg(m_scanFirst)
+                             .arg(m_scanLast)
+                             .arg(m_scanNext)
+                             .arg(last));
     m_scanId = m_context->session()->modelOperation(QStringLiteral("scan"),
-                                                    {{"first", first}, {"last", last}});
+                                                    {{"first", m_scanNext}, {"last", last}});
+    m_scanNext = last + 1;
+    updateEnabled();
+}
+
+void DrivePanel::cancelScan()
+{
+    if (m_scanId)
+        m_scanCancelled = true; // takes effect when the chunk in flight answers
+}
+
+void DrivePanel::endScan(const QString& text)
+{
+    m_scanId = 0;
+    m_scanState->setText(text);
     updateEnabled();
 }
 
@@ -87,12 +124,24 @@ void DrivePanel::onResult(const CommandResult& result)
 {
     if (result.id != m_scanId || !m_scanId)
         return;
-    m_scanId = 0;
-    if (result.ok())
-        showFound(result.value.toList());
-    else
-        m_scanState->setText(tr("Scan failed: %1").arg(result.message));
-    updateEnabled();
+    if (!result.ok()) {
+        endScan(tr("Scan failed: %1").arg(result.message));
+        return;
+    }
+    m_foundDrives += result.value.toList();
+    showFound(m_foundDrives);
+    m_progress->setValue(m_scanNext - 1);
+    if (m_scanCancelled) {
+        endScan(tr("Scan cancelled after address %1: %n drive(s) found", nullptr,
+                   int(m_foundDrives.size()))
+                    .arg(m_scanNext - 1));
+        return;
+    }
+    if (m_scanNext > m_scanLast) {
+        endScan(tr("%n drive(s) found", nullptr, int(m_foundDrives.size())));
+        return;
+    }
+    scanNextChunk();
 }
 
 void DrivePanel::showFound(const QVariantList& drives)
@@ -105,7 +154,6 @@ void DrivePanel::showFound(const QVariantList& drives)
         m_found->setItem(r, FoundFirmware, cell(d.value(QStringLiteral("firmware")).toString()));
         m_found->setItem(r, FoundDate, cell(d.value(QStringLiteral("date")).toString()));
     }
-    m_scanState->setText(tr("%n drive(s) found", nullptr, int(drives.size())));
 }
 
 void DrivePanel::onStatus(const MachineStatus& status)
@@ -151,6 +199,7 @@ void DrivePanel::onLinkState(LinkState state)
 void DrivePanel::updateEnabled()
 {
     m_scan->setEnabled(m_context->isConnected() && !m_scanId);
+    m_cancelScan->setEnabled(m_scanId != 0);
 }
 
 } // namespace stepdeck::ui

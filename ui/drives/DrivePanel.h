@@ -5,6 +5,7 @@
 #include <QWidget>
 
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QTableWidget;
 
@@ -15,6 +16,8 @@ class MachineContext;
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
 // per-drive status from the poller, and a bus scan listing every drive that answers.
 // A drive that stopped answering is marked red: the others keep working.
+// The scan runs in chunks of kScanChunk addresses (one "scan" model operation each), so it
+// shows progress and can be cancelled between chunks; what was found so far stays listed.
 class DrivePanel : public QWidget
 {
     Q_OBJECT
@@ -26,15 +29,21 @@ public:
 
     QTableWidget* driveTable() const { return m_drives; }
     QTableWidget* foundTable() const { return m_found; }
+    static constexpr int kScanChunk = 16;
+
     QPushButton* scanButton() const { return m_scan; }
+    QPushButton* cancelScanButton() const { return m_cancelScan; }
+    QProgressBar* scanProgress() const { return m_progress; }
+    bool isScanning() const { return m_scanId != 0; }
     QString scanState() const;
     // Number of drives the status shows as not answering.
     int silentCount() const { return m_silent; }
 
 public Q_SLOTS:
-    void scanBus();
+    void scanBus(); // addresses 1..254
     // A partial scan (addresses first..last), e.g. for a quick check of a small bus.
     void scanRange(int first, int last);
+    void cancelScan(); // stops after the chunk in flight
 
 private:
     void onStatus(const MachineStatus& status);
@@ -42,13 +51,22 @@ private:
     void showFound(const QVariantList& drives);
     void onLinkState(LinkState state);
     void updateEnabled();
+    void scanNextChunk();
+    void endScan(const QString& text);
 
     MachineContext* m_context;
     QTableWidget* m_drives;
     QTableWidget* m_found;
     QPushButton* m_scan;
+    QPushButton* m_cancelScan;
+    QProgressBar* m_progress;
     QLabel* m_scanState;
     RequestId m_scanId = 0;
+    int m_scanFirst = 0;
+    int m_scanNext = 0; // first address of the next chunk
+    int m_scanLast = 0;
+    bool m_scanCancelled = false;
+    QVariantList m_foundDrives;
     int m_silent = 0;
 };
 

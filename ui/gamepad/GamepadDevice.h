@@ -5,6 +5,8 @@ namespace stepdeck::ui {
 
 // A physical joystick or gamepad as raw axes (-1..1, as the device reports them) and
 // buttons, with hot-plug. The SDL2 backend is SdlGamepadDevice; tests use a fake.
+// sampled() follows every fresh read of the device (SDL: each poll, every 10 ms), whether or
+// not anything changed: a held stick only proves it is still held by these samples.
 class GamepadDevice : public QObject
 {
     Q_OBJECT
@@ -24,6 +26,7 @@ Q_SIGNALS:
     void connectedChanged(bool connected);
     void axisChanged(int index, double value);
     void buttonChanged(int index, bool pressed);
+    void sampled(); // the device was read just now; axis() and button() are current
 };
 
 // The platform's device: SDL2 when built with it, otherwise a device that never connects and

@@ -24,16 +24,59 @@ GamepadJogSource::GamepadJogSource(GamepadDevice* device, QObject* parent)
     m_bindings.insert(Axis::Z, {3, true});
     m_bindings.insert(Axis::U, {2, false});
     m_response.deadZone = 0.12; // physical sticks rarely rest at exactly zero
-    connect(device, &GamepadDevice::connectedChanged, this, &GamepadJogSource::update);
+    m_clock.start();
+    // Every change is a sample too.
+    connect(device, &GamepadDevice::connectedChanged, this, [this] {
+        onSample();
+        update();
+    });
     connect(device, &GamepadDevice::axisChanged, this, [this](int index, double value) {
         if (m_calibrating) {
             AxisCalibration& c = m_calibration[index];
             c.minimum = qMin(c.minimum, value);
             c.maximum = qMax(c.maximum, value);
         }
+        onSample();
         update();
     });
-    connect(device, &GamepadDevice::buttonChanged, this, &GamepadJogSource::update);
+    connect(device, &GamepadDevice::buttonChanged, this, [this] {
+        onSample();
+        update();
+    });
+    connect(device, &GamepadDevice::sampled, this, &GamepadJogSource::onSample);
+}
+
+void GamepadJogSource::onSample()
+{
+    const bool wasProven = isProven();
+    if (deadmanHeld())
+        m_provenMs = m_clock.elapsed();
+    // A sample only renews the proof; the controller re-reads it at its next renewal. Only a
+    // proof that had lapsed needs a report (the axes may move again).
+    if (!wasProven && isProven() && !m_last.isEmpty())
+        Q_EMIT changed();
+}
+
+bool GamepadJogSource::isProven() const
+{
+    return m_provenMs >= 0 && m_clock.elapsed() - m_provenMs <= kSampleWindowMs;
+}
+
+AxisVelocities GamepadJogSource::heldDeflection()
+{
+    if (m_last.isEmpty()) {
+        m_latched = false; // back in neutral (or dead-man released): the latch is over
+        return {};
+    }
+    if (m_latched || !isProven())
+        return {};
+    return m_last;
+}
+
+void GamepadJogSource::latch()
+{
+    m_latched = !m_last.isEmpty();
+    Q_EMIT changed();
 }
 
 void GamepadJogSource::setEnabled(bool enabled)
@@ -92,7 +135,7 @@ void GamepadJogSource::finishCalibration()
     update();
 }
 
-void GamepadJogSource::update()
+AxisVelocities GamepadJogSource::readSticks() const
 {
     AxisVelocities fractions;
     // No dead-man, no motion: the button must be held for as long as the axes move.
@@ -109,16 +152,19 @@ void GamepadJogSource::update()
                 fractions.insert(it.key(), v);
         }
     }
-    publish(fractions);
-    Q_EMIT stateChanged();
+    return fractions;
 }
 
-void GamepadJogSource::publish(const AxisVelocities& fractions)
+void GamepadJogSource::update()
 {
-    if (fractions == m_last)
-        return;
-    m_last = fractions;
-    Q_EMIT deflectionChanged(fractions);
+    const AxisVelocities fractions = readSticks();
+    if (fractions.isEmpty())
+        m_latched = false;
+    if (fractions != m_last) {
+        m_last = fractions;
+        Q_EMIT changed();
+    }
+    Q_EMIT stateChanged();
 }
 
 void GamepadJogSource::loadSettings()

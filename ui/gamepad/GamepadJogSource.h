@@ -1,6 +1,7 @@
 #pragma once
 #include "jog/JogInputSource.h"
 #include "jog/JogResponse.h"
+#include <QElapsedTimer>
 #include <QPointer>
 
 namespace stepdeck::ui {
@@ -26,13 +27,22 @@ struct StickBinding
 // A physical gamepad as a jog source. Motion only while the dead-man button is held:
 // releasing it, unplugging the device or disabling the source releases every axis at once
 // (the core ramps them to zero). Stick values pass calibration, dead zone and response curve.
+// Proof of holding: a device sample (GamepadDevice::sampled() or a change) with the dead-man
+// held, no older than kSampleWindowMs; a device that stops delivering samples counts as
+// released. After STOP, PANIC or focus loss the pad is latched until the sticks are back in
+// their dead zone or the dead-man button is released.
 class GamepadJogSource : public JogInputSource
 {
     Q_OBJECT
 public:
+    static constexpr int kSampleWindowMs = 150; // SDL samples every 10 ms
+
     explicit GamepadJogSource(GamepadDevice* device, QObject* parent = nullptr);
 
     QString sourceName() const override { return tr("Gamepad"); }
+    AxisVelocities heldDeflection() override;
+    void latch() override;
+    bool isLatched() const { return m_latched; }
     GamepadDevice* device() const { return m_device; }
 
     void setEnabled(bool enabled);
@@ -50,6 +60,7 @@ public:
     void finishCalibration();
     bool isCalibrating() const { return m_calibrating; }
 
+    // The stick deflection now (dead-man held), whether or not it is proven or latched.
     AxisVelocities fractions() const { return m_last; }
     void loadSettings();
     void saveSettings() const;
@@ -59,7 +70,9 @@ Q_SIGNALS:
 
 private:
     void update();
-    void publish(const AxisVelocities& fractions);
+    void onSample();
+    bool isProven() const;
+    AxisVelocities readSticks() const;
 
     QPointer<GamepadDevice> m_device;
     bool m_enabled = true;
@@ -69,6 +82,9 @@ private:
     QMap<int, AxisCalibration> m_calibration;
     bool m_calibrating = false;
     AxisVelocities m_last;
+    bool m_latched = false;
+    QElapsedTimer m_clock;
+    qint64 m_provenMs = -1; // last sample with the dead-man held
 };
 
 } // namespace stepdeck::ui

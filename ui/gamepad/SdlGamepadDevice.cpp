@@ -131,6 +131,8 @@ void SdlGamepadDevice::poll()
             break;
         }
     }
+    if (m_handle)
+        Q_EMIT sampled(); // SDL_PollEvent pumped the device: its state is fresh
 }
 
 GamepadDevice* createSystemGamepadDevice(QObject* parent)

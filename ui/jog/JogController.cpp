@@ -1,6 +1,7 @@
 #include "JogController.h"
 #include "jog/JogInputSource.h"
 #include "main/MachineContext.h"
+#include <QGuiApplication>
 #include <QSettings>
 #include <QtMath>
 
@@ -10,7 +11,7 @@ JogController::JogController(MachineContext* context, QObject* parent)
     : QObject(parent), m_context(context)
 {
     m_renew.setInterval(kRenewMs);
-    connect(&m_renew, &QTimer::timeout, this, &JogController::send);
+    connect(&m_renew, &QTimer::timeout, this, [this] { update(true); });
     connect(context, &MachineContext::modelChanged, this, [this] {
         releaseAll();
         loadSettings();
@@ -25,40 +26,40 @@ JogController::JogController(MachineContext* context, QObject* parent)
             releaseAll();
     });
     connect(context, &MachineContext::panicTriggered, this, &JogController::releaseAll);
+    connect(qGuiApp, &QGuiApplication::applicationStateChanged, this,
+            [this](Qt::ApplicationState state) {
+                if (state != Qt::ApplicationActive)
+                    releaseAll();
+            });
     loadSettings();
 }
 
 void JogController::addSource(JogInputSource* source)
 {
-    connect(source, &JogInputSource::deflectionChanged, this,
-            [this, source](const AxisVelocities& f) { setDeflection(source, f); });
-    connect(source, &QObject::destroyed, this, [this, source] { release(source); });
+    m_sources.append(source);
+    connect(source, &JogInputSource::changed, this, [this] { update(); });
+    connect(source, &QObject::destroyed, this, [this] { update(); });
 }
 
-void JogController::setDeflection(const QObject* source, const AxisVelocities& fractions)
+QList<JogInputSource*> JogController::sources() const
 {
-    AxisVelocities clean;
-    for (auto it = fractions.cbegin(); it != fractions.cend(); ++it) {
-        if (it.value() != 0.0)
-            clean.insert(it.key(), qBound(-1.0, it.value(), 1.0));
+    QList<JogInputSource*> out;
+    for (const QPointer<JogInputSource>& s : m_sources) {
+        if (s)
+            out << s.data();
     }
-    if (clean.isEmpty())
-        m_inputs.remove(source);
-    else
-        m_inputs.insert(source, clean);
-    update();
-}
-
-void JogController::release(const QObject* source)
-{
-    if (m_inputs.remove(source))
-        update();
+    return out;
 }
 
 void JogController::releaseAll()
 {
+    if (m_releasing)
+        return;
+    m_releasing = true; // latching makes sources emit changed(): not a new deflection
+    for (JogInputSource* source : sources())
+        source->latch();
+    m_releasing = false;
     const bool wasActive = m_active;
-    m_inputs.clear();
     m_targets.clear();
     m_active = false;
     m_renew.stop();
@@ -120,13 +121,19 @@ QString JogController::refusal() const
     return {};
 }
 
-void JogController::update()
+AxisVelocities JogController::provenTargets()
 {
+    // Focus loss stops jogging: no StepDeck window active, no source counts as held.
+    if (QGuiApplication::applicationState() != Qt::ApplicationActive)
+        return {};
+    QList<AxisVelocities> inputs;
+    for (JogInputSource* source : sources())
+        inputs << source->heldDeflection();
     AxisVelocities targets;
     for (Axis axis : m_context->axes()) {
         double fraction = 0.0;
-        for (const AxisVelocities& input : std::as_const(m_inputs)) {
-            const double f = input.value(axis, 0.0);
+        for (const AxisVelocities& input : std::as_const(inputs)) {
+            const double f = qBound(-1.0, input.value(axis, 0.0), 1.0);
             if (qAbs(f) > qAbs(fraction))
                 fraction = f;
         }
@@ -134,21 +141,51 @@ void JogController::update()
         if (v != 0.0)
             targets.insert(axis, double(qRound64(v)));
     }
+    return targets;
+}
+
+void JogController::stopSending()
+{
+    m_lastRefusal.clear();
+    if (m_active) {
+        m_active = false;
+        m_renew.stop();
+        AxisVelocities zeros;
+        for (Axis axis : m_context->axes())
+            zeros.insert(axis, 0.0);
+        m_context->session()->setJogVelocity(zeros);
+        m_context->session()->endJog();
+    }
+    if (!m_targets.isEmpty()) {
+        m_targets.clear();
+        Q_EMIT targetsChanged(m_targets);
+    }
+}
+
+void JogController::update(bool renewal)
+{
+    if (m_releasing)
+        return;
+    // Reading a proof can end a drag (a lost mouse release), which reports a change from
+    // inside this call: run again afterwards instead of nesting.
+    if (m_updating) {
+        m_updateAgain = true;
+        return;
+    }
+    m_updating = true;
+    do {
+        m_updateAgain = false;
+        updateOnce(renewal);
+        renewal = false;
+    } while (m_updateAgain && !m_releasing);
+    m_updating = false;
+}
+
+void JogController::updateOnce(bool renewal)
+{
+    const AxisVelocities targets = provenTargets();
     if (targets.isEmpty()) {
-        m_lastRefusal.clear();
-        if (m_active) {
-            m_active = false;
-            m_renew.stop();
-            AxisVelocities zeros;
-            for (Axis axis : m_context->axes())
-                zeros.insert(axis, 0.0);
-            m_context->session()->setJogVelocity(zeros);
-            m_context->session()->endJog();
-        }
-        if (!m_targets.isEmpty()) {
-            m_targets.clear();
-            Q_EMIT targetsChanged(m_targets);
-        }
+        stopSending();
         return;
     }
     const QString why = refusal();
@@ -170,18 +207,12 @@ void JogController::update()
     const bool changed = full != m_targets;
     m_targets = full;
     m_active = true;
-    if (changed) {
-        send();
+    if (changed || renewal)
+        m_context->session()->setJogVelocity(m_targets); // renews the lease: just proven
+    if (changed)
         Q_EMIT targetsChanged(m_targets);
-    }
     if (!m_renew.isActive())
         m_renew.start();
-}
-
-void JogController::send()
-{
-    if (m_active)
-        m_context->session()->setJogVelocity(m_targets);
 }
 
 } // namespace stepdeck::ui

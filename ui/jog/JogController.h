@@ -1,7 +1,8 @@
 #pragma once
 #include "model/Axis.h"
-#include <QHash>
+#include <QList>
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 
 namespace stepdeck::ui {
@@ -10,9 +11,13 @@ class JogInputSource;
 class MachineContext;
 
 // Combines every jog input into per-axis velocities and sends them to the controller
-// session. While any axis is deflected it renews the core's jog lease every kRenewMs; when
-// all inputs are released it sends zero targets and endJog(), and the core JogRamp ramps the
-// axes down. The ramp itself lives in the core, never here.
+// session. The core's jog lease (ControllerOptions::jogLeaseMs) is renewed only with proof:
+// every kRenewMs the controller asks each source what it can prove is still held
+// (JogInputSource::heldDeflection()) and sends only that; a source without fresh proof
+// contributes zero, so a lost key-up, mouse release or gamepad sample ends in a ramp to zero
+// like a release. When nothing is held it sends zero targets and endJog(); the core JogRamp
+// ramps the axes down. The ramp itself lives in the core, never here.
+// Jog runs only while a StepDeck window is the active window (focus loss stops jogging).
 class JogController : public QObject
 {
     Q_OBJECT
@@ -22,9 +27,8 @@ public:
     explicit JogController(MachineContext* context, QObject* parent = nullptr);
 
     // Per axis the largest magnitude over all sources wins.
-    void setDeflection(const QObject* source, const AxisVelocities& fractions);
-    void release(const QObject* source);
     void addSource(JogInputSource* source);
+    QList<JogInputSource*> sources() const;
 
     void setMaxSpeed(Axis axis, double stepsPerS);
     double maxSpeed(Axis axis) const;
@@ -36,7 +40,8 @@ public:
     bool isJogging() const;
 
 public Q_SLOTS:
-    // Everything to zero at once (focus loss, STOP, PANIC, link loss).
+    // STOP, PANIC, focus loss, link loss: every target to zero at once, and every source is
+    // latched: what is held now moves nothing until it has been released (rule 4).
     void releaseAll();
 
 Q_SIGNALS:
@@ -44,17 +49,24 @@ Q_SIGNALS:
     void targetsChanged(const stepdeck::AxisVelocities& targets);
 
 private:
-    void update();
-    void send();
+    // Reads every source's proof and sends what changed; renewal: send even if unchanged
+    // (this renews the core lease, and only with what was just proven).
+    void update(bool renewal = false);
+    void updateOnce(bool renewal);
+    AxisVelocities provenTargets();
+    void stopSending();
     void loadSettings();
     QString refusal() const;
 
     MachineContext* m_context;
-    QHash<const QObject*, AxisVelocities> m_inputs;
+    QList<QPointer<JogInputSource>> m_sources;
     QMap<Axis, double> m_maxSpeed;
     double m_override = 1.0;
     AxisVelocities m_targets;
     bool m_active = false;
+    bool m_releasing = false;
+    bool m_updating = false;
+    bool m_updateAgain = false;
     QString m_lastRefusal;
     QTimer m_renew;
 };

@@ -1,9 +1,11 @@
 #include "JogPanel.h"
+#include "common/ConnectionGate.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
+#include "jog/PadJogSource.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QDialog>
@@ -28,9 +30,10 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
-      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_refusal(new QLabel(this)),
-      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
-      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
+      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
+      m_refusal(new QLabel(this)), m_refusalTimer(new QTimer(this)),
+      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
+      m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
@@ -42,11 +45,12 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     m_z->setToolTip(tr("Drag to jog Z; release to stop (ramped)."));
     m_u->setAxisLabels(QString(), QStringLiteral("U"));
     m_u->setToolTip(tr("Drag to jog U; release to stop (ramped)."));
-    m_response = m_settings->response();
-    for (JoystickPad* pad : {m_xy, m_z, m_u}) {
-        pad->setDeadZone(m_response.deadZone);
-        connect(pad, &JoystickPad::deflectionChanged, this,
-                [this, pad](const QPointF& d) { onPad(pad, d); });
+    m_padSources = {new PadJogSource(m_xy, Axis::X, Axis::Y, this),
+                    new PadJogSource(m_z, std::nullopt, Axis::Z, this),
+                    new PadJogSource(m_u, std::nullopt, Axis::U, this)};
+    for (PadJogSource* source : std::as_const(m_padSources)) {
+        source->setResponse(m_settings->response());
+        m_jog->addSource(source);
     }
 
     auto* layout = new QHBoxLayout(this);
@@ -66,17 +70,52 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     layout->addWidget(scroll, 2);
 
     connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {
-        m_response = r;
-        for (JoystickPad* pad : {m_xy, m_z, m_u})
-            pad->setDeadZone(r.deadZone);
+        for (PadJogSource* source : std::as_const(m_padSources))
+            source->setResponse(r);
     });
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
     connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
     connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);
+    // Jogging needs a connection: the pads and step buttons say so by being disabled.
+    m_gate = new ConnectionGate(m_context, this);
+    for (QWidget* w : {static_cast<QWidget*>(m_xy), static_cast<QWidget*>(m_z),
+                       static_cast<QWidget*>(m_u), static_cast<QWidget*>(m_incremental)})
+        m_gate->add(w);
+    connect(m_gate, &ConnectionGate::changed, this, &JogPanel::showKeyboardState);
     m_refusalTimer->setSingleShot(true);
     m_refusalTimer->setInterval(6000);
     connect(m_refusalTimer, &QTimer::timeout, m_refusal, &QLabel::clear);
     rebuild();
+}
+
+QString JogPanel::keyboardStateText() const
+{
+    return m_keyboardState->text();
+}
+
+void JogPanel::showKeyboardState()
+{
+    QString text;
+    QString style;
+    if (!m_keyboardCheck->isChecked()) {
+        text = tr("Keyboard jog: off (Ctrl+J)");
+        style = QStringLiteral("color: palette(dark);");
+    } else if (!m_context->isConnected()) {
+        text = tr("Keyboard jog: on, but not connected");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else if (!m_keyboard->windowActive()) {
+        text = tr("Keyboard jog paused: the StepDeck window is not active");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else if (m_keyboard->textFieldHasFocus()) {
+        text = tr("Keyboard jog paused: a text field has the focus, the arrows edit it. Click "
+                  "the jog panel to resume.");
+        style = QStringLiteral("color: #b26a00; font-weight: bold;");
+    } else {
+        text = tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(m_context->axes()));
+        style = QStringLiteral("color: #1b5e20; font-weight: bold;");
+    }
+    m_keyboardState->setText(text);
+    m_keyboardState->setStyleSheet(QStringLiteral("QLabel { %1 }").arg(style));
 }
 
 QWidget* JogPanel::buildSidePanel()
@@ -110,14 +149,20 @@ QWidget* JogPanel::buildSidePanel()
 
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
     m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
-                                   "active and no text field has the focus"));
+                                   "active and no text field has the focus (Ctrl+J)"));
     connect(m_keyboardCheck, &QCheckBox::toggled, this, [this](bool on) {
         m_keyboard->setEnabled(on);
         // Arrow keys typed into a text field stay there: take the focus so they jog.
         if (on)
             setFocus(Qt::OtherFocusReason);
+        showKeyboardState();
     });
+    connect(m_keyboard, &KeyboardJog::pausedChanged, this, &JogPanel::showKeyboardState);
     v->addWidget(m_keyboardCheck);
+    // On or off, and which keys: on the panel itself, not only in a tooltip.
+    m_keyboardState->setObjectName(QStringLiteral("keyboardJogState"));
+    m_keyboardState->setWordWrap(true);
+    v->addWidget(m_keyboardState);
 
     m_refusal->setObjectName(QStringLiteral("jogRefusal"));
     m_refusal->setWordWrap(true);
@@ -150,6 +195,7 @@ void JogPanel::rebuild()
                         axes.contains(Axis::Y) || axes.isEmpty() ? QStringLiteral("Y") : QString());
     m_z->setVisible(axes.contains(Axis::Z));
     m_u->setVisible(axes.contains(Axis::U));
+    showKeyboardState();
 
     while (QLayoutItem* item = m_velocityGrid->takeAt(0)) {
         delete item->widget();
@@ -179,22 +225,7 @@ void JogPanel::rebuild()
 
 void JogPanel::releaseAll()
 {
-    for (JoystickPad* pad : {m_xy, m_z, m_u})
-        pad->recenter();
-    m_keyboard->releaseAll();
-    m_jog->releaseAll();
-}
-
-void JogPanel::onPad(JoystickPad* pad, const QPointF& d)
-{
-    AxisVelocities fractions;
-    if (pad == m_xy) {
-        fractions.insert(Axis::X, m_response.apply(d.x()));
-        fractions.insert(Axis::Y, m_response.apply(d.y()));
-    } else {
-        fractions.insert(pad == m_z ? Axis::Z : Axis::U, m_response.apply(d.y()));
-    }
-    m_jog->setDeflection(pad, fractions);
+    m_jog->releaseAll(); // latches every source: pads re-centre, held keys need a new press
 }
 
 void JogPanel::onStatus(const MachineStatus& status)

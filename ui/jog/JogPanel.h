@@ -1,5 +1,4 @@
 #pragma once
-#include "jog/JogResponse.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
 
@@ -12,12 +11,14 @@ class QTimer;
 
 namespace stepdeck::ui {
 
+class ConnectionGate;
 class IncrementalJogWidget;
 class JogController;
 class JogSettingsWidget;
 class JoystickPad;
 class KeyboardJog;
 class MachineContext;
+class PadJogSource;
 
 // The operator's main tool: the X/Y pad, Z (and U) sticks, incremental jog, keyboard jog,
 // speed override, the live commanded velocity per axis and why a jog was refused.
@@ -34,6 +35,7 @@ public:
     QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
+    QString keyboardStateText() const; // "Keyboard jog ON: ←/→ X, ...", "... paused ..."
     IncrementalJogWidget* incremental() const { return m_incremental; }
 
 public Q_SLOTS:
@@ -42,20 +44,22 @@ public Q_SLOTS:
 private:
     QWidget* buildSidePanel();
     void rebuild();
-    void onPad(JoystickPad* pad, const QPointF& deflection);
     void onStatus(const MachineStatus& status);
     void showRefusal(const QString& reason);
+    void showKeyboardState();
 
     MachineContext* m_context;
     JogController* m_jog;
     KeyboardJog* m_keyboard;
-    JogResponse m_response;
     JoystickPad* m_xy;
     JoystickPad* m_z;
     JoystickPad* m_u;
+    QList<PadJogSource*> m_padSources;
     QSlider* m_override;
     QLabel* m_overrideValue;
     QCheckBox* m_keyboardCheck;
+    QLabel* m_keyboardState;
+    ConnectionGate* m_gate = nullptr;
     QLabel* m_refusal;
     QTimer* m_refusalTimer;
     QGridLayout* m_velocityGrid;

@@ -5,6 +5,7 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QStyleHints>
 #include <QTextEdit>
 
 namespace stepdeck::ui {
@@ -35,11 +36,16 @@ const KeyAxis* lookup(int key)
 KeyboardJog::KeyboardJog(QWidget* window, QObject* parent)
     : JogInputSource(parent), m_window(window)
 {
-    connect(qApp, &QApplication::focusChanged, this, &KeyboardJog::releaseAll);
+    m_clock.start();
+    connect(qApp, &QApplication::focusChanged, this, [this] {
+        releaseAll();
+        checkPaused();
+    });
     connect(qApp, &QGuiApplication::applicationStateChanged, this,
             [this](Qt::ApplicationState state) {
                 if (state != Qt::ApplicationActive)
                     releaseAll();
+                checkPaused();
             });
 }
 
@@ -66,7 +72,27 @@ void KeyboardJog::setSpeedFraction(double fraction)
 {
     m_fraction = qBound(0.01, fraction, 1.0);
     if (!m_held.isEmpty())
-        publish();
+        Q_EMIT changed();
+}
+
+void KeyboardJog::setProofWindows(int firstRepeatMs, int repeatMs)
+{
+    m_firstWindowMs = qMax(0, firstRepeatMs);
+    m_repeatWindowMs = qMax(0, repeatMs);
+}
+
+int KeyboardJog::firstRepeatWindowMs() const
+{
+    return m_firstWindowMs > 0 ? m_firstWindowMs : kFirstRepeatWindowMs;
+}
+
+int KeyboardJog::repeatWindowMs() const
+{
+    if (m_repeatWindowMs > 0)
+        return m_repeatWindowMs;
+    const int rate = QGuiApplication::styleHints()->keyboardAutoRepeatRate(); // per second
+    const int interval = rate > 0 ? 1000 / rate : 100;
+    return qMax(kMinRepeatWindowMs, 3 * interval);
 }
 
 void KeyboardJog::releaseAll()
@@ -74,19 +100,84 @@ void KeyboardJog::releaseAll()
     if (m_held.isEmpty())
         return;
     m_held.clear();
-    publish();
+    Q_EMIT changed();
+}
+
+bool KeyboardJog::windowActive() const
+{
+    return m_window && m_window->isActiveWindow();
+}
+
+bool KeyboardJog::textFieldHasFocus() const
+{
+    QWidget* focus = QApplication::focusWidget();
+    if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
+        qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QTextEdit*>(focus))
+        return true;
+    auto* combo = qobject_cast<QComboBox*>(focus);
+    return combo && combo->isEditable();
 }
 
 bool KeyboardJog::accepts() const
 {
-    if (!m_window || !m_window->isActiveWindow())
+    return windowActive() && !textFieldHasFocus();
+}
+
+void KeyboardJog::checkPaused()
+{
+    const bool paused = !accepts();
+    if (paused != m_paused) {
+        m_paused = paused;
+        Q_EMIT pausedChanged(paused);
+    }
+}
+
+bool KeyboardJog::isFresh(const HeldKey& key, qint64 now) const
+{
+    return now - key.provenMs <= (key.repeating ? repeatWindowMs() : firstRepeatWindowMs());
+}
+
+AxisVelocities KeyboardJog::heldDeflection()
+{
+    const qint64 now = m_clock.elapsed();
+    AxisVelocities fractions;
+    for (auto it = m_held.cbegin(); it != m_held.cend(); ++it) {
+        const KeyAxis* k = lookup(it.key());
+        if (k && isFresh(it.value(), now))
+            fractions[k->axis] += k->sign * m_fraction;
+    }
+    return fractions;
+}
+
+bool KeyboardJog::handleKey(QKeyEvent* key)
+{
+    const KeyAxis* k = lookup(key->key());
+    if (!k || key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
-    QWidget* focus = QApplication::focusWidget();
-    if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
-        qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QTextEdit*>(focus))
+    const bool press = key->type() == QEvent::KeyPress;
+    const auto held = m_held.find(k->key);
+    if (press && held == m_held.end() && !accepts())
+        return false; // typed into a text field, or not our window
+    if (!press && held == m_held.end())
         return false;
-    if (auto* combo = qobject_cast<QComboBox*>(focus))
-        return !combo->isEditable();
+    if (key->isAutoRepeat()) {
+        // Proof that the key is still held. A repeat of a key not held (released by a focus
+        // change, STOP, or pressed elsewhere) starts nothing.
+        if (press && held != m_held.end()) {
+            const bool wasFresh = isFresh(*held, m_clock.elapsed());
+            held->provenMs = m_clock.elapsed();
+            held->repeating = true;
+            if (!wasFresh)
+                Q_EMIT changed(); // revived
+        }
+        return true;
+    }
+    if (press) {
+        m_held.insert(k->key, HeldKey{m_clock.elapsed(), false});
+    } else {
+        m_held.erase(held);
+    }
+    Q_EMIT changed();
     return true;
 }
 
@@ -94,25 +185,10 @@ bool KeyboardJog::eventFilter(QObject* watched, QEvent* event)
 {
     switch (event->type()) {
     case QEvent::KeyPress:
-    case QEvent::KeyRelease: {
-        auto* key = static_cast<QKeyEvent*>(event);
-        const KeyAxis* k = lookup(key->key());
-        if (!k || key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-            break;
-        const bool press = event->type() == QEvent::KeyPress;
-        if (press && !accepts())
-            break;
-        if (!press && !m_held.contains(k->key))
-            break;
-        if (!key->isAutoRepeat()) {
-            if (press)
-                m_held.insert(k->key);
-            else
-                m_held.remove(k->key);
-            publish();
-        }
-        return true; // consumed, auto-repeat included
-    }
+    case QEvent::KeyRelease:
+        if (handleKey(static_cast<QKeyEvent*>(event)))
+            return true; // consumed, auto-repeat included
+        break;
     case QEvent::WindowDeactivate:
         if (watched == m_window)
             releaseAll();
@@ -123,14 +199,18 @@ bool KeyboardJog::eventFilter(QObject* watched, QEvent* event)
     return JogInputSource::eventFilter(watched, event);
 }
 
-void KeyboardJog::publish()
+QString KeyboardJog::keyLegend(const QList<Axis>& axes)
 {
-    AxisVelocities fractions;
-    for (const KeyAxis& k : kKeys) {
-        if (m_held.contains(k.key))
-            fractions[k.axis] += k.sign * m_fraction;
-    }
-    Q_EMIT deflectionChanged(fractions);
+    QStringList parts;
+    if (axes.contains(Axis::X))
+        parts << tr("\u2190/\u2192 X");
+    if (axes.contains(Axis::Y))
+        parts << tr("\u2193/\u2191 Y");
+    if (axes.contains(Axis::Z))
+        parts << tr("Page Down/Up Z");
+    if (axes.contains(Axis::U))
+        parts << tr("End/Home U");
+    return parts.join(QStringLiteral(", "));
 }
 
 } // namespace stepdeck::ui

@@ -1,5 +1,4 @@
 #include "ConnectionBar.h"
-#include "common/LedIndicator.h"
 #include "main/MachineContext.h"
 #include "main/PortScanner.h"
 #include <QComboBox>
@@ -9,6 +8,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTimer>
 
 namespace stepdeck::ui {
 
@@ -20,16 +20,21 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_scanner(new PortScanner(this)),
       m_model(new QComboBox(this)), m_port(new QComboBox(this)), m_interval(new QSpinBox(this)),
       m_connect(new QPushButton(tr("Connect"), this)), m_link(new LedIndicator({}, this)),
-      m_rate(new QLabel(this))
+      m_rate(new QLabel(this)), m_replyWatch(new QTimer(this))
 {
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
     for (const ModelInfo& model : models())
         m_model->addItem(modelDisplayName(model), model.id);
     m_model->setToolTip(tr("Controller model"));
+    // Both combos give way on a narrow screen (issue 11: the bar must fit 1024 px); the
+    // popup lists still show the full names.
+    m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_model->setMinimumContentsLength(14);
+    m_model->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setMinimumContentsLength(28);
+    m_port->setMinimumContentsLength(18);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("Serial port, the in-process simulator, tcp://HOST:PORT for a serial "
                           "device server, or a device path such as /dev/pts/3"));
@@ -43,10 +48,10 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     m_rate->setToolTip(tr("Achieved status poll rate"));
 
     layout->addWidget(new QLabel(tr("Model:"), this));
-    layout->addWidget(m_model);
+    layout->addWidget(m_model, 1);
     layout->addSpacing(8);
     layout->addWidget(new QLabel(tr("Port:"), this));
-    layout->addWidget(m_port, 1);
+    layout->addWidget(m_port, 2);
     layout->addWidget(new QLabel(tr("Poll:"), this));
     layout->addWidget(m_interval);
     layout->addWidget(m_connect);
@@ -75,6 +80,17 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     ControllerSession* session = m_context->session();
     connect(session, &ControllerSession::linkStateChanged, this, &ConnectionBar::onLinkState);
     connect(session, &ControllerSession::pollRateChanged, this, &ConnectionBar::onPollRate);
+    // Any byte from the device is a reply; polls run every few tens of milliseconds.
+    connect(session, &ControllerSession::traffic, this, [this](const TrafficRecord& r) {
+        if (r.direction != TrafficRecord::Direction::In)
+            return;
+        m_sinceReply.start();
+        m_lastReply = QTime::currentTime();
+        if (m_overdue)
+            checkReplies();
+    });
+    m_replyWatch->setInterval(100);
+    connect(m_replyWatch, &QTimer::timeout, this, &ConnectionBar::checkReplies);
     onLinkState(LinkState::Disconnected, {});
 }
 
@@ -172,25 +188,67 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
     m_port->setEnabled(!busy);
     switch (state) {
     case LinkState::Disconnected:
-        m_link->setState(LedIndicator::State::Off);
-        m_link->setText(tr("Disconnected"));
+        // A connect that never got through says so (the reason is the tooltip and the
+        // status bar message).
+        if (m_lastState == LinkState::Connecting && !reason.isEmpty())
+            showLink(LedIndicator::State::Fault, tr("Connect failed"));
+        else
+            showLink(LedIndicator::State::Off, tr("Disconnected"));
         break;
     case LinkState::Connecting:
-        m_link->setState(LedIndicator::State::Warning);
-        m_link->setText(tr("Connecting"));
+        showLink(LedIndicator::State::Warning, tr("Connecting"));
         break;
     case LinkState::Connected:
-        m_link->setState(LedIndicator::State::On);
-        m_link->setText(tr("Connected"));
+        m_sinceReply.start(); // the link was just confirmed
+        m_lastReply = QTime::currentTime();
+        m_overdue = false;
+        showLink(LedIndicator::State::On, tr("Connected"));
         break;
     case LinkState::Lost:
-        m_link->setState(LedIndicator::State::Fault);
-        m_link->setText(tr("Link lost"));
+        showLink(LedIndicator::State::Fault, tr("Link lost"));
         break;
     }
     m_link->setToolTip(reason);
+    m_lastState = state;
+    if (state == LinkState::Connected)
+        m_replyWatch->start();
+    else
+        m_replyWatch->stop();
     if (!busy)
         m_rate->setText(tr("\u2013 Hz"));
+}
+
+int ConnectionBar::overdueAfterMs() const
+{
+    return qMax(400, 4 * m_interval->value());
+}
+
+void ConnectionBar::checkReplies()
+{
+    if (!m_context->isConnected())
+        return;
+    const bool overdue = m_sinceReply.isValid() && m_sinceReply.elapsed() > overdueAfterMs();
+    if (overdue == m_overdue)
+        return;
+    m_overdue = overdue;
+    if (overdue)
+        showLink(LedIndicator::State::Warning,
+                 tr("No reply since %1").arg(m_lastReply.toString(QStringLiteral("HH:mm:ss"))));
+    else
+        showLink(LedIndicator::State::On, tr("Connected"));
+}
+
+void ConnectionBar::showLink(LedIndicator::State state, const QString& text)
+{
+    m_link->setState(state);
+    m_link->setText(text);
+    Q_EMIT linkTextChanged(text, state == LedIndicator::State::Warning ||
+                                     state == LedIndicator::State::Fault);
+}
+
+QString ConnectionBar::linkText() const
+{
+    return m_link->text();
 }
 
 void ConnectionBar::onPollRate(double hz)

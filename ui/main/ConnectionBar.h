@@ -1,15 +1,18 @@
 #pragma once
+#include "common/LedIndicator.h"
 #include "controller/Controller.h"
+#include <QElapsedTimer>
+#include <QTime>
 #include <QWidget>
 
 class QComboBox;
 class QLabel;
 class QPushButton;
 class QSpinBox;
+class QTimer;
 
 namespace stepdeck::ui {
 
-class LedIndicator;
 class MachineContext;
 class PortScanner;
 
@@ -29,6 +32,13 @@ public:
 
     QComboBox* portCombo() const { return m_port; }
     QPushButton* connectButton() const { return m_connect; }
+    LedIndicator* linkLamp() const { return m_link; }
+    // "Connected", "No reply since 14:03:07", "Link lost", ...: what the lamp says.
+    QString linkText() const;
+    // Connected, but the device has not answered for several poll intervals: shown at once
+    // (amber), before the core declares the link lost.
+    bool replyOverdue() const { return m_overdue; }
+    int overdueAfterMs() const;
 
 public Q_SLOTS:
     void connectNow();
@@ -37,11 +47,14 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void connectionFailed(const QString& reason);
+    void linkTextChanged(const QString& text, bool warning);
 
 private:
     void fillPorts();
     void onLinkState(LinkState state, const QString& reason);
     void onPollRate(double hz);
+    void checkReplies();
+    void showLink(LedIndicator::State state, const QString& text);
 
     MachineContext* m_context;
     PortScanner* m_scanner;
@@ -51,6 +64,11 @@ private:
     QPushButton* m_connect;
     LedIndicator* m_link;
     QLabel* m_rate;
+    QTimer* m_replyWatch;
+    QElapsedTimer m_sinceReply;
+    QTime m_lastReply;
+    bool m_overdue = false;
+    LinkState m_lastState = LinkState::Disconnected;
 };
 
 } // namespace stepdeck::ui

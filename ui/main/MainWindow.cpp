@@ -1,5 +1,7 @@
 #include "MainWindow.h"
 #include "charts/ChartsPanel.h"
+#include "common/ConnectionGate.h"
+#include "common/Dialogs.h"
 #include "console/TrafficConsole.h"
 #include "drives/DrivePanel.h"
 #include "gamepad/GamepadDevice.h"
@@ -12,6 +14,7 @@
 #include "main/MachineContext.h"
 #include "main/SafetyBar.h"
 #include "main/SafetyKeyFilter.h"
+#include "main/StatusMessages.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -29,6 +32,9 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -40,7 +46,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     : QMainWindow(parent), m_context(new MachineContext(this)),
       m_jog(new JogController(m_context, this)), m_keyboard(new KeyboardJog(this, this)),
       m_connection(new ConnectionBar(m_context, this)), m_linkLabel(new QLabel(this)),
-      m_errorLabel(new QLabel(this))
+      m_errorLabel(new QLabel(this)), m_messages(new StatusMessages(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_jog->addSource(m_keyboard);
@@ -63,6 +69,8 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     v->setContentsMargins(4, 4, 4, 4);
     m_safety = new SafetyBar(m_context, m_stopAction, m_panicAction, m_referenceAction, central);
     m_jogPanel = new JogPanel(m_context, m_jog, m_keyboard, central);
+    m_safetyKeys->addButton(m_safety->stopButton(), m_stopAction);
+    m_safetyKeys->addButton(m_safety->panicButton(), m_panicAction);
     v->addWidget(m_safety);
     v->addWidget(m_jogPanel, 1);
     setCentralWidget(central);
@@ -70,29 +78,61 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     buildDocks();
     buildMenus();
 
+    m_linkLabel->setObjectName(QStringLiteral("linkState"));
+    m_errorLabel->setObjectName(QStringLiteral("statusMessage"));
     m_errorLabel->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
+    // A long message wraps instead of widening the window; it is always readable.
+    m_errorLabel->setWordWrap(true);
+    m_errorLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_errorLabel, 1);
     statusBar()->addPermanentWidget(m_linkLabel);
 
     ControllerSession* session = m_context->session();
+    using Owner = StatusMessages::Owner;
+    connect(m_messages, &StatusMessages::changed, this, &MainWindow::showMessages);
     connect(session, &ControllerSession::linkStateChanged, this, &MainWindow::onLinkState);
-    connect(session, &ControllerSession::errorOccurred, this, &MainWindow::showError);
+    connect(session, &ControllerSession::errorOccurred, this,
+            [this](const QString& text) { m_messages->show(Owner::Controller, text); });
     connect(session, &ControllerSession::requestFinished, this, &MainWindow::onResult);
-    connect(session, &ControllerSession::jogRefused, this, &MainWindow::showError);
-    connect(m_connection, &ConnectionBar::connectionFailed, this, &MainWindow::showError);
-    connect(m_setup, &SetupPage::message, statusBar(),
-            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(session, &ControllerSession::jogRefused, this,
+            [this](const QString& text) { m_messages->show(Owner::Jog, text); });
+    connect(m_jog, &JogController::targetsChanged, this, [this](const AxisVelocities& t) {
+        if (!t.isEmpty())
+            m_messages->clear(Owner::Jog); // jogging works again
+    });
+    connect(session, &ControllerSession::statusChanged, this, [this](const MachineStatus& s) {
+        if (!s.panic)
+            m_messages->clear(Owner::Safety);
+    });
+    connect(m_connection, &ConnectionBar::connectionFailed, this,
+            [this](const QString& text) { m_messages->show(Owner::Link, text); });
+    connect(m_connection, &ConnectionBar::linkTextChanged, this,
+            [this](const QString& text, bool warning) {
+                m_linkLabel->setText(text);
+                m_linkLabel->setStyleSheet(warning ? QStringLiteral("QLabel { color: #b26a00; "
+                                                                    "font-weight: bold; }")
+                                                   : QString());
+            });
+    connect(m_setup, &SetupPage::message, this, [this](const QString& text) {
+        m_messages->show(Owner::Setup, text, StatusMessages::Severity::Info, 8000);
+    });
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);
 
-    resize(1600, 1000);
+    // Fit the screen (issue 11): at most 1600x1000, never more than the screen offers.
+    QSize size(1600, 1000);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size());
+    resize(size);
+    applyDefaultDockSizes();
     m_defaultState = saveState();
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     onLinkState(LinkState::Disconnected, {});
+    m_linkLabel->setText(m_connection->linkText());
     updateTitle();
     updateModelDocks();
 }
@@ -114,7 +154,7 @@ void MainWindow::buildActions()
     m_panicAction->setToolTip(tr("Immediate stop without ramp (F1); positions are lost"));
     connect(m_panicAction, &QAction::triggered, this, &MainWindow::panicAll);
     addAction(m_panicAction);
-    new SafetyKeyFilter(m_stopAction, m_panicAction, this);
+    m_safetyKeys = new SafetyKeyFilter(m_stopAction, m_panicAction, this);
 
     m_referenceAction = new QAction(tr("&Reference all"), this);
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
@@ -124,7 +164,7 @@ void MainWindow::buildActions()
     m_resetAction = new QAction(tr("Reset &controller"), this);
     connect(m_resetAction, &QAction::triggered, this, [this] {
         m_jogPanel->releaseAll();
-        m_context->session()->reset();
+        m_context->reset();
     });
     m_keyboardAction = new QAction(tr("&Keyboard jog"), this);
     m_keyboardAction->setCheckable(true);
@@ -171,9 +211,20 @@ void MainWindow::buildDocks()
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);
     setup->raise();
-    resizeDocks({setup}, {300}, Qt::Vertical);
-    resizeDocks({m_docks.at(0), status}, {390, 470}, Qt::Horizontal);
     setDockNestingEnabled(true);
+}
+
+void MainWindow::applyDefaultDockSizes()
+{
+    // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
+    // side docks about a quarter of the width each, the bottom tabs a third of the height.
+    QDockWidget* position = findChild<QDockWidget*>(QStringLiteral("positionDock"));
+    QDockWidget* status = findChild<QDockWidget*>(QStringLiteral("statusDock"));
+    QDockWidget* setup = findChild<QDockWidget*>(QStringLiteral("setupDock"));
+    resizeDocks({position, status},
+                {qBound(220, width() * 29 / 100, 470), qBound(220, width() * 24 / 100, 470)},
+                Qt::Horizontal);
+    resizeDocks({setup}, {qBound(160, height() / 3, 320)}, Qt::Vertical);
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,
@@ -181,7 +232,14 @@ QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QS
 {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name);
-    dock->setWidget(widget);
+    // A page scrolls instead of forcing its size on the window (issue 11: the window must
+    // fit 1024x768; docks add up their minimum sizes otherwise).
+    auto* scroll = new QScrollArea(dock);
+    scroll->setObjectName(name + QStringLiteral("Scroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(widget);
+    dock->setWidget(scroll);
     addDockWidget(area, dock);
     m_docks << dock;
     return dock;
@@ -208,12 +266,16 @@ void MainWindow::buildMenus()
     QAction* refresh = machine->addAction(tr("Refresh &status"), this,
                                           [this] { m_context->session()->refreshStatus(); });
     refresh->setShortcut(QKeySequence::Refresh);
+    // These need a connection; STOP and PANIC never are disabled (they say why instead).
+    auto* gate = new ConnectionGate(m_context, this);
+    for (QAction* a : {refresh, m_referenceAction, m_resetAction})
+        gate->add(a);
     machine->addAction(m_resetAction);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : std::as_const(m_docks))
         m_viewMenu->addAction(dock->toggleViewAction());
-    m_viewMenu->addSeparator();
+    m_viewSeparator = m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("Reset &layout"), this, &MainWindow::resetLayout);
     QMenu* language = m_viewMenu->addMenu(tr("&Language"));
     auto* group = new QActionGroup(language);
@@ -228,20 +290,42 @@ void MainWindow::buildMenus()
         group->addAction(a);
         connect(a, &QAction::triggered, this, [this, code] {
             translations::setConfigured(code);
-            QMessageBox::information(this, tr("Language"),
-                                     tr("The language changes when StepDeck is started again."));
+            dialogs::message(this, QMessageBox::Information, tr("Language"),
+                             tr("The language changes when StepDeck is started again."));
         });
     }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About StepDeck"), this, [this] {
-        QMessageBox::about(this, tr("About StepDeck"),
-                           tr("<b>StepDeck</b> %1<br>Operator and technician software for "
-                              "stepper-motor controllers.<br><br>Esc: ramped stop of all "
-                              "motion<br>F1: panic stop (positions are lost)")
-                               .arg(QApplication::applicationVersion()));
+        dialogs::message(this, QMessageBox::Information, tr("About StepDeck"),
+                         tr("<b>StepDeck</b> %1<br>Operator and technician software for "
+                            "stepper-motor controllers.<br><br>Esc: ramped stop of all "
+                            "motion<br>F1: panic stop (positions are lost)")
+                             .arg(QApplication::applicationVersion()));
     });
-    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    // QApplication::aboutQt() is modal: the same facts in a non-modal box.
+    help->addAction(tr("About &Qt"), this, [this] {
+        dialogs::message(this, QMessageBox::Information, tr("About Qt"),
+                         tr("StepDeck uses Qt %1, a cross-platform application framework "
+                            "by The Qt Company, under the GNU LGPL version 3. See "
+                            "<a href=\"https://www.qt.io/\">qt.io</a>.")
+                             .arg(QString::fromLatin1(qVersion())));
+    });
+}
+
+QWidget* MainWindow::pageOf(QDockWidget* dock)
+{
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    return scroll ? scroll->widget() : dock->widget();
+}
+
+QDockWidget* MainWindow::dockOf(QWidget* page) const
+{
+    for (QDockWidget* dock : m_docks) {
+        if (pageOf(dock) == page)
+            return dock;
+    }
+    return nullptr;
 }
 
 QList<QPair<QString, QWidget*>> MainWindow::pages() const
@@ -252,19 +336,27 @@ QList<QPair<QString, QWidget*>> MainWindow::pages() const
             continue; // a page this model does not have
         QString stem = dock->objectName();
         stem.chop(4); // "Dock"
-        out.append({stem, dock->widget()});
+        out.append({stem, pageOf(dock)});
     }
     return out;
 }
 
 void MainWindow::raisePage(QWidget* page)
 {
-    for (QDockWidget* dock : std::as_const(m_docks)) {
-        if (dock->widget() == page) {
-            dock->show();
-            dock->raise();
-        }
+    if (QDockWidget* dock = dockOf(page)) {
+        dock->show();
+        dock->raise();
     }
+}
+
+QDockWidget* MainWindow::addPage(QWidget* page, const QString& title, const QString& name,
+                                 Qt::DockWidgetArea area, QWidget* tabWith)
+{
+    QDockWidget* dock = addDock(page, title, name, area);
+    if (QDockWidget* other = tabWith ? dockOf(tabWith) : nullptr)
+        tabifyDockWidget(other, dock);
+    m_viewMenu->insertAction(m_viewSeparator, dock->toggleViewAction());
+    return dock;
 }
 
 void MainWindow::stopAll()
@@ -276,7 +368,9 @@ void MainWindow::stopAll()
         return;
     }
     m_context->stop();
-    statusBar()->showMessage(tr("Stop sent"), 3000);
+    // Sent, not confirmed: what the device does shows in the banner and the status.
+    m_messages->show(StatusMessages::Owner::Safety, tr("Stop sent"), StatusMessages::Severity::Info,
+                     3000);
 }
 
 void MainWindow::panicAll()
@@ -287,43 +381,47 @@ void MainWindow::panicAll()
         return;
     }
     m_context->panic();
-    showError(tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
+    m_messages->show(StatusMessages::Owner::Safety,
+                     tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
 }
 
 void MainWindow::showError(const QString& message)
 {
-    m_lastError = message;
-    m_errorLabel->setText(QStringLiteral("%1  %2").arg(
-        QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), message));
-    m_errorLabel->setToolTip(message);
+    m_messages->show(StatusMessages::Owner::General, message);
+}
+
+QString MainWindow::lastError() const
+{
+    return m_messages->currentText();
+}
+
+void MainWindow::showMessages()
+{
+    m_errorLabel->setText(m_messages->currentLine());
+    m_errorLabel->setStyleSheet(m_messages->currentSeverity() == StatusMessages::Severity::Error
+                                    ? QStringLiteral("QLabel { color: #c62828; }")
+                                    : QString());
+    m_errorLabel->setToolTip(m_messages->history().join(QLatin1Char('\n')));
 }
 
 void MainWindow::onResult(const CommandResult& result)
 {
     if (!result.ok() && result.error != ErrorKind::Cancelled)
-        showError(result.message);
+        m_messages->show(StatusMessages::Owner::Request, result.message);
 }
 
 void MainWindow::onLinkState(LinkState state, const QString& reason)
 {
-    switch (state) {
-    case LinkState::Disconnected:
-        m_linkLabel->setText(tr("Disconnected"));
-        break;
-    case LinkState::Connecting:
-        m_linkLabel->setText(tr("Connecting\u2026"));
-        break;
-    case LinkState::Connected:
-        m_linkLabel->setText(tr("Connected"));
-        break;
-    case LinkState::Lost:
-        m_linkLabel->setText(tr("Link lost"));
-        break;
-    }
+    using Owner = StatusMessages::Owner;
     if (state != LinkState::Connected)
         m_jogPanel->releaseAll();
-    if (!reason.isEmpty() && state != LinkState::Connected)
-        showError(reason);
+    if (state == LinkState::Connected) {
+        // A new link: what the last one reported is over.
+        for (Owner owner : {Owner::Link, Owner::Controller, Owner::Request, Owner::Jog})
+            m_messages->clear(owner);
+    } else if (!reason.isEmpty()) {
+        m_messages->show(Owner::Link, reason);
+    }
     updateTitle();
 }
 
@@ -344,6 +442,7 @@ void MainWindow::updateTitle()
 void MainWindow::resetLayout()
 {
     restoreState(m_defaultState);
+    applyDefaultDockSizes(); // for the window's size now
     for (QDockWidget* dock : std::as_const(m_docks))
         dock->show();
     updateModelDocks();

@@ -23,6 +23,8 @@ class PositionPanel;
 class RecordsPage;
 class ReferencePanel;
 class SafetyBar;
+class SafetyKeyFilter;
+class StatusMessages;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -56,11 +58,19 @@ public:
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
-    QString lastError() const { return m_lastError; }
+    // The status bar's current message (empty when its cause has ended or it expired).
+    QString lastError() const;
+    StatusMessages* messages() const { return m_messages; }
 
-    // Pages for --screenshot: a file stem and the dock (or central widget) that shows it.
+    // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
+    // central jog panel).
     QList<QPair<QString, QWidget*>> pages() const;
     void raisePage(QWidget* page);
+    QDockWidget* dockOf(QWidget* page) const;
+    // For model pages added by other parts (e.g. a model's own page): a dock with the page in
+    // a scroll area, tabbed with the dock of tabWith (if given), listed in the View menu.
+    QDockWidget* addPage(QWidget* page, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area, QWidget* tabWith = nullptr);
 
 public Q_SLOTS:
     void stopAll();
@@ -78,16 +88,20 @@ private:
     void buildDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);
+    static QWidget* pageOf(QDockWidget* dock);
+    void applyDefaultDockSizes();
     void updateTitle();
     void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
     void onResult(const CommandResult& result);
+    void showMessages();
 
     MachineContext* m_context;
     JogController* m_jog;
     KeyboardJog* m_keyboard;
     ConnectionBar* m_connection;
     SafetyBar* m_safety = nullptr;
+    SafetyKeyFilter* m_safetyKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
     PositionPanel* m_position = nullptr;
     ReferencePanel* m_reference = nullptr;
@@ -103,6 +117,7 @@ private:
     GamepadJogSource* m_gamepadSource = nullptr;
     QList<QDockWidget*> m_docks;
     QMenu* m_viewMenu = nullptr;
+    QAction* m_viewSeparator = nullptr;
     QAction* m_connectAction = nullptr;
     QAction* m_stopAction = nullptr;
     QAction* m_panicAction = nullptr;
@@ -111,7 +126,7 @@ private:
     QAction* m_keyboardAction = nullptr;
     QLabel* m_linkLabel;
     QLabel* m_errorLabel;
-    QString m_lastError;
+    StatusMessages* m_messages;
     QByteArray m_defaultState;
 };
 

@@ -1,5 +1,6 @@
 #include "SafetyBar.h"
 #include "main/MachineContext.h"
+#include "main/SafetyBanner.h"
 #include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -7,23 +8,32 @@
 
 namespace stepdeck::ui {
 
+namespace {
+bool showsMotion(const MachineStatus& s)
+{
+    if (s.busy || s.anyMoving() || s.motionUnconfirmed)
+        return true;
+    for (const AxisStatus& a : s.axes) {
+        if (a.jogging || a.commandedVelocity != 0.0)
+            return true;
+    }
+    return false;
+}
+} // namespace
+
 SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAction* reference,
                      QWidget* parent)
     : QWidget(parent), m_context(context), m_stop(new QPushButton(this)),
-      m_panic(new QPushButton(this)), m_reference(new QPushButton(this)), m_banner(new QLabel(this))
+      m_panic(new QPushButton(this)), m_reference(new QPushButton(this)),
+      m_banner(new QLabel(this)), m_noStop(new QLabel(this))
 {
     setObjectName(QStringLiteral("safetyBar"));
     m_stop->setObjectName(QStringLiteral("stopButton"));
     m_panic->setObjectName(QStringLiteral("panicButton"));
-    m_stop->setText(tr("STOP  (Esc)"));
-    m_panic->setText(tr("PANIC  (F1)"));
-    m_stop->setToolTip(tr("Ramped stop of all motion"));
-    m_panic->setToolTip(tr("Immediate stop without ramp: steps are lost, the machine must be "
-                           "referenced afterwards"));
     m_reference->setText(tr("Reference all\u2026"));
     for (QPushButton* b : {m_stop, m_panic}) {
         b->setFocusPolicy(Qt::NoFocus); // never steal focus from what the operator typed in
-        b->setMinimumSize(150, 48);
+        b->setMinimumSize(140, 48);
         QFont f = b->font();
         f.setBold(true);
         f.setPointSizeF(f.pointSizeF() * 1.35);
@@ -40,11 +50,17 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
     m_banner->setWordWrap(true);
     m_banner->setMinimumHeight(40);
     m_banner->setMargin(6);
+    m_noStop->setObjectName(QStringLiteral("noStopCommandNote"));
+    m_noStop->setWordWrap(true);
+    m_noStop->setMaximumWidth(260);
+    m_noStop->setStyleSheet(QStringLiteral("QLabel { background:#ffcdd2; color:#8e0000; "
+                                           "font-weight:bold; border-radius:4px; padding:4px; }"));
 
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(m_stop);
     layout->addWidget(m_panic);
+    layout->addWidget(m_noStop);
     auto* right = new QVBoxLayout;
     right->setSpacing(4);
     right->addWidget(m_banner, 1);
@@ -59,17 +75,40 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
     connect(m_reference, &QPushButton::clicked, reference, &QAction::trigger);
 
     ControllerSession* session = context->session();
-    connect(session, &ControllerSession::statusChanged, this, &SafetyBar::refresh);
-    connect(session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
-        if (state == LinkState::Connecting || state == LinkState::Lost)
-            m_positionsLost = true; // reconnect: nothing is referenced any more
-        refresh();
-    });
+    connect(session, &ControllerSession::statusChanged, this, &SafetyBar::onStatus);
+    connect(session, &ControllerSession::linkStateChanged, this, &SafetyBar::onLinkState);
     connect(context, &MachineContext::panicTriggered, this, [this] {
         m_positionsLost = true;
+        m_hadReferenced = true;
+        m_hostPanicSent = true;
+        m_sawPanic = false; // statuses from before the panic may still arrive
         refresh();
     });
+    connect(context, &MachineContext::modelChanged, this, &SafetyBar::applyCapabilities);
+    connect(session, &ControllerSession::linkStateChanged, this, &SafetyBar::applyCapabilities);
+    applyCapabilities();
     refresh();
+}
+
+void SafetyBar::applyCapabilities()
+{
+    showCapabilities(m_context->capabilities());
+}
+
+void SafetyBar::showCapabilities(const Capabilities& caps)
+{
+    const bool canStop = caps.stopCommand;
+    m_stop->setText(canStop ? tr("STOP  (Esc)") : tr("STOP  (Esc)\ndoes not stop the controller"));
+    m_panic->setText(canStop ? tr("PANIC  (F1)") : tr("PANIC  (F1)\ndoes not stop the controller"));
+    m_stop->setToolTip(canStop ? tr("Ramped stop of all motion")
+                               : tr("Ends every jog input and the host's queued work; %1")
+                                     .arg(Controller::noStopCommandText()));
+    m_panic->setToolTip(canStop ? tr("Immediate stop without ramp: steps are lost, the machine "
+                                     "must be referenced afterwards")
+                                : tr("Ends every jog input and the host's queued work; %1")
+                                      .arg(Controller::noStopCommandText()));
+    m_noStop->setText(Controller::noStopCommandText());
+    m_noStop->setVisible(!canStop);
 }
 
 QString SafetyBar::bannerText() const
@@ -77,53 +116,68 @@ QString SafetyBar::bannerText() const
     return m_banner->text();
 }
 
+QString SafetyBar::bannerSeverity() const
+{
+    return m_banner->property("severity").toString();
+}
+
+void SafetyBar::onStatus(const MachineStatus& status)
+{
+    if (m_context->isConnected()) {
+        for (const AxisStatus& a : status.axes)
+            m_hadReferenced = m_hadReferenced || a.referenced;
+        m_lastShowedMotion = showsMotion(status);
+        if (!m_lastShowedMotion)
+            m_movingWhenLinkEnded = false; // the device itself reports standstill
+        if (m_sawPanic && !status.panic)
+            m_hostPanicSent = false; // a new motion cleared the panic
+        m_sawPanic = status.panic;
+    }
+    refresh();
+}
+
+void SafetyBar::onLinkState(LinkState state)
+{
+    // A reconnect loses what was referenced; a first connection has nothing to lose.
+    if ((state == LinkState::Connecting || state == LinkState::Lost) && m_hadReferenced)
+        m_positionsLost = true;
+    if (state == LinkState::Lost || state == LinkState::Disconnected)
+        m_movingWhenLinkEnded = m_movingWhenLinkEnded || m_lastShowedMotion;
+    if (state != LinkState::Connected) {
+        m_lastShowedMotion = false;
+        m_hostPanicSent = false;
+    }
+    refresh();
+}
+
 void SafetyBar::refresh()
 {
     const MachineStatus& status = m_context->status();
-    bool allReferenced = !status.axes.isEmpty();
+    bool allReferenced = !status.axes.isEmpty() && m_context->isConnected();
     for (const AxisStatus& axis : status.axes)
         allReferenced = allReferenced && axis.referenced;
     if (allReferenced)
         m_positionsLost = false;
 
-    QString text;
-    QString style;
-    bool offerReference = false;
-    if (!m_context->isConnected()) {
-        text = m_context->session()->linkState() == LinkState::Lost
-                   ? tr("Link lost: motion stopped by the controller's own safety, positions are "
-                        "unknown. Reconnect, then reference all axes.")
-                   : tr("Not connected.");
-        style = m_context->session()->linkState() == LinkState::Lost ? QStringLiteral("fault")
-                                                                     : QStringLiteral("idle");
-    } else if (status.panic) {
-        text = tr("EMERGENCY STOP active: positions are lost. Release the emergency stop, then "
-                  "reference all axes.");
-        style = QStringLiteral("fault");
-    } else if (m_positionsLost) {
-        text = tr("Positions are lost (panic stop or reconnect). Reference the machine before "
-                  "any absolute move.");
-        style = QStringLiteral("fault");
-        offerReference = true;
-    } else if (!allReferenced) {
-        text = tr("Not referenced: positions are unknown until the axes are referenced.");
-        style = QStringLiteral("warning");
-        offerReference = true;
-    } else {
-        text = tr("Ready: all axes referenced.");
-        style = QStringLiteral("ok");
-    }
+    SafetyBannerInput in;
+    in.link = m_context->session()->isCreated() ? m_context->session()->linkState()
+                                                : LinkState::Disconnected;
+    in.status = status;
+    in.positionsLost = m_positionsLost;
+    in.movingWhenLinkEnded = m_movingWhenLinkEnded;
+    in.hostPanicSent = m_hostPanicSent;
+    const SafetyBannerText banner = SafetyBanner::compute(in);
     static const QMap<QString, QString> colours{
         {QStringLiteral("fault"), QStringLiteral("background:#ffcdd2; color:#8e0000;")},
         {QStringLiteral("warning"), QStringLiteral("background:#ffe082; color:#4e3400;")},
         {QStringLiteral("ok"), QStringLiteral("background:#c8e6c9; color:#1b5e20;")},
         {QStringLiteral("idle"), QStringLiteral("background:#eceff1; color:#37474f;")},
     };
-    m_banner->setText(text);
+    m_banner->setText(banner.text);
     m_banner->setStyleSheet(QStringLiteral("QLabel { %1 border-radius: 4px; font-weight: bold; }")
-                                .arg(colours.value(style)));
-    m_banner->setProperty("severity", style);
-    m_reference->setVisible(offerReference);
+                                .arg(colours.value(banner.severity)));
+    m_banner->setProperty("severity", banner.severity);
+    m_reference->setVisible(banner.offerReference);
 }
 
 } // namespace stepdeck::ui

@@ -10,10 +10,15 @@ namespace stepdeck::ui {
 
 class MachineContext;
 
-// STOP and PANIC, always visible, plus the banner that says what the operator must do next:
-// after a panic or a reconnect the positions are lost and the machine must be referenced.
-// The buttons trigger the window's actions, whose shortcuts (Esc, F1) work whatever widget
-// has the focus.
+// STOP and PANIC, always visible, plus the banner that says what the operator must do next
+// (SafetyBanner: a machine that may still be moving first, then panic, setup, referencing).
+// The buttons trigger the window's actions, whose keys (Esc, F1) work whatever widget has
+// the focus (SafetyKeyFilter).
+// A model without a stop command (Capabilities::stopCommand false): STOP and PANIC stay
+// enabled -- they still end every jog input and cancel the host's queued work at once, which
+// is what ends a chunked jog on such a model -- but their labels say "does not stop the
+// controller", and Controller::noStopCommandText() stands permanently next to them. A
+// disabled button would tell an operator in a hurry nothing; this tells where to reach.
 class SafetyBar : public QWidget
 {
     Q_OBJECT
@@ -24,17 +29,33 @@ public:
     QPushButton* stopButton() const { return m_stop; }
     QPushButton* panicButton() const { return m_panic; }
     QString bannerText() const;
+    QString bannerSeverity() const;
+    QLabel* noStopNote() const { return m_noStop; }
     bool positionsLost() const { return m_positionsLost; }
+    // The link ended while the last status showed motion, and no standstill was seen since.
+    bool movingWhenLinkEnded() const { return m_movingWhenLinkEnded; }
+    // Labels and the permanent note for a model's capabilities (called on every model and
+    // link change with the context's).
+    void showCapabilities(const Capabilities& caps);
 
 private:
     void refresh();
+    void onStatus(const MachineStatus& status);
+    void onLinkState(LinkState state);
+    void applyCapabilities();
 
     MachineContext* m_context;
     QPushButton* m_stop;
     QPushButton* m_panic;
     QPushButton* m_reference;
     QLabel* m_banner;
+    QLabel* m_noStop;
     bool m_positionsLost = false;
+    bool m_lastShowedMotion = false;
+    bool m_movingWhenLinkEnded = false;
+    bool m_hostPanicSent = false;
+    bool m_sawPanic = false;
+    bool m_hadReferenced = false; // some axis was referenced in this window's lifetime
 };
 
 } // namespace stepdeck::ui

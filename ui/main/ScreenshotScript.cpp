@@ -8,21 +8,22 @@
 #include "position/ReferencePanel.h"
 #include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
+#include <QCheckBox>
 #include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
-#include <QMouseEvent>
+#include <QKeyEvent>
 #include <QTableWidget>
 #include <QTextStream>
 
 namespace stepdeck::ui {
 
 namespace {
-void drag(QWidget* w, QEvent::Type type, const QPointF& pos)
+// The script jogs as an operator at the keyboard does: a press, then the key's auto-repeat,
+// which is what proves to KeyboardJog that the key is still held.
+void key(QWidget* w, QEvent::Type type, int code, bool autoRepeat)
 {
-    QMouseEvent e(type, pos, w->mapToGlobal(pos), Qt::LeftButton,
-                  type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton,
-                  Qt::NoModifier);
+    QKeyEvent e(type, code, Qt::NoModifier, QString(), autoRepeat);
     QCoreApplication::sendEvent(w, &e);
 }
 } // namespace
@@ -32,6 +33,11 @@ ScreenshotScript::ScreenshotScript(MainWindow* window, const QString& directory,
 {
     m_poll.setInterval(50);
     connect(&m_poll, &QTimer::timeout, this, &ScreenshotScript::step);
+    m_repeat.setInterval(33); // a typical keyboard auto-repeat rate (30 Hz)
+    connect(&m_repeat, &QTimer::timeout, this, [this] {
+        for (int code : {int(Qt::Key_Right), int(Qt::Key_Up)})
+            key(m_window->jogPanel(), QEvent::KeyPress, code, true);
+    });
 }
 
 void ScreenshotScript::waitFor(std::function<bool()> condition, int timeoutMs,
@@ -75,14 +81,20 @@ void ScreenshotScript::start()
             };
             waitFor(referenced, 40000, [=] {
                 fillModelPages([=] {
-                    // A diagonal drag on the pad, as the operator would, so the pad, the
-                    // velocities and the charts show motion.
-                    JoystickPad* pad = m_window->jogPanel()->xyPad();
-                    drag(pad, QEvent::MouseButtonPress, pad->centre());
-                    drag(pad, QEvent::MouseMove, pad->pointFor(QPointF(0.75, 0.5)));
+                    // A diagonal keyboard jog (Right + Up held), so the pad's velocity
+                    // marker, the velocities and the charts show motion.
+                    JogPanel* jog = m_window->jogPanel();
+                    jog->keyboardCheck()->setChecked(true);
+                    jog->setFocus(Qt::OtherFocusReason);
+                    m_window->activateWindow();
+                    for (int code : {int(Qt::Key_Right), int(Qt::Key_Up)})
+                        key(jog, QEvent::KeyPress, code, false);
+                    m_repeat.start();
                     waitFor(never, 2500, [=] {
                         const bool ok = capture();
-                        drag(pad, QEvent::MouseButtonRelease, pad->pointFor(QPointF(0.75, 0.5)));
+                        m_repeat.stop();
+                        for (int code : {int(Qt::Key_Right), int(Qt::Key_Up)})
+                            key(jog, QEvent::KeyRelease, code, false);
                         waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
                     });
                 });
@@ -128,6 +140,15 @@ bool ScreenshotScript::capture()
         QCoreApplication::processEvents();
         ok = m_window->grab().save(dir.filePath(QStringLiteral("window-%1.png").arg(stem))) && ok;
     }
+    // What an operator sees on a 1366x768 screen with the default layout (issue 11).
+    m_window->resize(1366, 768);
+    m_window->resetLayout();
+    m_window->raisePage(m_window->setupPage());
+    QCoreApplication::processEvents();
+    ok = m_window->grab().save(dir.filePath(QStringLiteral("main-1366x768.png"))) && ok;
+    m_window->resize(1600, 1000);
+    m_window->resetLayout();
+    QCoreApplication::processEvents();
     // Each page on its own at a size that shows all of it: docks float for the picture.
     static const QMap<QString, QSize> sizes{
         {QStringLiteral("position"), {480, 400}}, {QStringLiteral("reference"), {560, 300}},
@@ -137,7 +158,7 @@ bool ScreenshotScript::capture()
         {QStringLiteral("records"), {1300, 820}},
     };
     for (const auto& [stem, page] : pages) {
-        auto* dock = qobject_cast<QDockWidget*>(page->parentWidget());
+        QDockWidget* dock = m_window->dockOf(page);
         if (dock && sizes.contains(stem)) {
             dock->setFloating(true);
             dock->resize(sizes.value(stem));

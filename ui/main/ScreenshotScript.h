@@ -30,6 +30,7 @@ private:
     MainWindow* m_window;
     QString m_directory;
     QTimer m_poll;
+    QTimer m_repeat; // key auto-repeat of the scripted jog
     std::function<bool()> m_condition;
     std::function<void()> m_next;
     qint64 m_deadline = 0;

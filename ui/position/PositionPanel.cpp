@@ -1,16 +1,26 @@
 #include "PositionPanel.h"
+#include "common/ConnectionGate.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
+#include "position/GoToWidget.h"
+#include "position/MoveEstimate.h"
+#include "position/SoftLimitsDialog.h"
 #include "position/UnitsDialog.h"
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTimer>
 #include <QToolButton>
 
 namespace stepdeck::ui {
 
 PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_grid(new QGridLayout)
+    : QWidget(parent), m_context(context), m_grid(new QGridLayout), m_moveTick(new QTimer(this)),
+      m_gate(new ConnectionGate(context, this)), m_goTo(new GoToWidget(context, this))
 {
+    // The estimate advances between status reads.
+    m_moveTick->setInterval(100);
+    connect(m_moveTick, &QTimer::timeout, this, [this] { onStatus(m_context->status()); });
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(m_grid);
     auto* buttons = new QHBoxLayout;
@@ -20,13 +30,21 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     auto* clear = new QToolButton(this);
     clear->setText(tr("Clear work offsets"));
     clear->setToolTip(tr("Show machine positions again (work origin = machine origin)"));
-    for (QToolButton* b : {units, clear})
+    auto* limits = new QToolButton(this);
+    limits->setText(tr("Soft limits\u2026"));
+    limits->setToolTip(tr("Travel range per axis that jog and moves must not leave"));
+    for (QToolButton* b : {units, clear, limits})
         b->setFocusPolicy(Qt::NoFocus);
     buttons->addWidget(units);
     buttons->addWidget(clear);
+    buttons->addWidget(limits);
     buttons->addStretch(1);
     layout->addLayout(buttons);
+    layout->addWidget(m_goTo);
     layout->addStretch(1);
+    connect(limits, &QToolButton::clicked, this, &PositionPanel::editSoftLimits);
+    connect(context, &MachineContext::softLimitsChanged, this,
+            [this] { onStatus(m_context->status()); });
 
     connect(units, &QToolButton::clicked, this, &PositionPanel::editUnits);
     connect(clear, &QToolButton::clicked, this, &PositionPanel::clearOffsets);
@@ -34,6 +52,11 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     connect(context, &MachineContext::unitsChanged, this,
             [this] { onStatus(m_context->status()); });
     connect(context->session(), &ControllerSession::statusChanged, this, &PositionPanel::onStatus);
+    connect(context->session(), &ControllerSession::linkStateChanged, this, [this] {
+        m_moves.clear();
+        m_idlePosition.clear();
+        onStatus(m_context->status());
+    });
     rebuild();
 }
 
@@ -69,17 +92,21 @@ void PositionPanel::rebuild()
         row.state = new QLabel(this);
         row.state->setAlignment(Qt::AlignCenter);
         row.state->setMinimumWidth(84);
+        row.limits = new QLabel(this);
+        row.limits->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
         auto* zero = new QToolButton(this);
         zero->setText(tr("Zero %1").arg(axisName(axis)));
         zero->setToolTip(
             tr("Set the work origin of %1 at the current position").arg(axisName(axis)));
         zero->setFocusPolicy(Qt::NoFocus);
         connect(zero, &QToolButton::clicked, this, [this, axis] { zeroAxis(axis); });
+        m_gate->add(zero); // a zero needs the position now, not the last one known
         m_grid->addWidget(name, 2 * r, 0, 2, 1);
         m_grid->addWidget(row.value, 2 * r, 1);
         m_grid->addWidget(row.unit, 2 * r, 2);
         m_grid->addWidget(row.state, 2 * r, 3);
         m_grid->addWidget(row.steps, 2 * r + 1, 1);
+        m_grid->addWidget(row.limits, 2 * r + 1, 2);
         m_grid->addWidget(zero, 2 * r + 1, 3);
         m_rows.insert(axis, row);
         ++r;
@@ -90,44 +117,129 @@ void PositionPanel::rebuild()
 
 void PositionPanel::onStatus(const MachineStatus& status)
 {
+    bool anyMove = false;
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
-        const Axis axis = it.key();
-        const Row& row = it.value();
-        const AxisStatus a = status.axes.value(axis);
-        const AxisUnits u = m_context->units(axis);
-        const double value = m_context->toUserUnits(axis, a.position);
-        QString text =
-            u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
-        if (a.positionEstimated && a.positionKnown)
-            text.prepend(QStringLiteral("\u2248"));
-        row.value->setText(text);
-        row.unit->setText(m_context->unitName(axis));
-        row.steps->setText(tr("machine %1 steps").arg(a.position));
-        QString state;
-        QString style;
-        if (!a.positionKnown) {
-            state = tr("UNKNOWN");
-            style = QStringLiteral("background:#ffcdd2; color:#8e0000;");
-            row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: #6b7780;"
-                                                    " border-radius: 4px; padding: 2px 8px; }"));
-        } else {
-            state = a.positionEstimated ? tr("ESTIMATED") : tr("REFERENCED");
-            style = a.positionEstimated ? QStringLiteral("background:#ffe082; color:#4e3400;")
-                                        : QStringLiteral("background:#c8e6c9; color:#1b5e20;");
-            row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: #7CFC9A;"
-                                                    " border-radius: 4px; padding: 2px 8px; }"));
+        showAxis(it.key(), it.value(), status.axes.value(it.key()));
+        anyMove = anyMove || m_moves.value(it.key()).active;
+    }
+    if (anyMove && !m_moveTick->isActive())
+        m_moveTick->start();
+    else if (!anyMove)
+        m_moveTick->stop();
+}
+
+std::optional<qint64> PositionPanel::estimate(Axis axis, const MoveTrack& move) const
+{
+    // The E-LAB ramp parameters by their schema names, as written or read in this session.
+    const ParameterSet& known = m_context->knownParameters();
+    auto value = [&](const char* name) {
+        return known.value(QString::fromLatin1(name)).perAxis.value(axis).toDouble();
+    };
+    const MoveProfile profile{value("start-speed"), value("max-speed"), value("acceleration")};
+    if (!profile.isValid())
+        return std::nullopt;
+    const qint64 distance = qAbs(move.to - move.from);
+    const double done =
+        MoveEstimate::travelled(double(distance), profile, move.clock.elapsed() / 1000.0);
+    return move.from + (move.to >= move.from ? 1 : -1) * qint64(done);
+}
+
+void PositionPanel::setState(const Row& row, const QString& state, const QString& style, bool dim,
+                             const QString& tip)
+{
+    row.state->setText(state);
+    row.state->setStyleSheet(
+        QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
+            .arg(style));
+    row.state->setToolTip(tip);
+    row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: %1;"
+                                            " border-radius: 4px; padding: 2px 8px; }")
+                                 .arg(dim ? QStringLiteral("#6b7780") : QStringLiteral("#7CFC9A")));
+}
+
+void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
+{
+    static const QString red = QStringLiteral("background:#ffcdd2; color:#8e0000;");
+    static const QString amber = QStringLiteral("background:#ffe082; color:#4e3400;");
+    static const QString green = QStringLiteral("background:#c8e6c9; color:#1b5e20;");
+    static const QString grey = QStringLiteral("background:#eceff1; color:#37474f;");
+    const AxisUnits u = m_context->units(axis);
+    auto format = [&](qint64 steps) {
+        const double value = m_context->toUserUnits(axis, steps);
+        return u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
+    };
+    row.unit->setText(m_context->unitName(axis));
+    const AxisSoftLimit limit = m_context->softLimits().limit(axis);
+    if (!limit.rangeSet) {
+        row.limits->setText(tr("no soft limits"));
+        row.limits->setToolTip(tr("No travel range set for %1 (Soft limits\u2026)")
+                                   .arg(axisName(axis)));
+    } else {
+        const bool active = m_context->isConnected() &&
+                            m_context->softLimits().isActive(axis, m_context->status());
+        row.limits->setText(
+            !limit.enabled ? tr("limits off")
+            : active       ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
+                           : tr("limits %1..%2 (after referencing)")
+                                 .arg(limit.minimum)
+                                 .arg(limit.maximum));
+        row.limits->setToolTip(tr("Soft limits of %1 in machine steps").arg(axisName(axis)));
+    }
+    MoveTrack& move = m_moves[axis];
+
+    if (!m_context->isConnected()) {
+        move.active = false;
+        row.value->setText(format(a.position));
+        row.steps->setText(tr("last known: machine %1 steps").arg(a.position));
+        setState(row, tr("NO LINK"), grey, true,
+                 tr("The link is down: this is the last value before it ended, not the "
+                    "position now."));
+        return;
+    }
+    const bool readback = m_context->capabilities().positionReadback;
+    if (a.moving && !readback) {
+        // The core already counts the target; show where the axis probably is.
+        if (!move.active) {
+            move.active = true;
+            move.from = m_idlePosition.value(axis, a.position);
+            move.clock.start();
         }
-        row.state->setText(state);
-        row.state->setStyleSheet(
-            QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
-                .arg(style));
-        row.state->setToolTip(
-            !a.positionKnown
-                ? tr("Not referenced since the last panic, reset or reconnect: the position "
-                     "is counted from where the axis was, not from the machine origin.")
-            : a.positionEstimated
-                ? tr("Integrated from commanded jog rates; the controller did not confirm it.")
-                : tr("Referenced and confirmed."));
+        move.to = a.position;
+        const std::optional<qint64> now = estimate(axis, move);
+        row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
+                               : QStringLiteral("\u2248 \u2026"));
+        row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
+        setState(row, tr("MOVING"), amber, false,
+                 now ? tr("Estimated from the ramp parameters; the controller reports no "
+                          "position during a move. The target is shown below.")
+                     : tr("The controller reports no position during a move and the ramp "
+                          "parameters are not known in this session. The target is shown "
+                          "below."));
+        return;
+    }
+    move.active = false;
+    if (!a.moving)
+        m_idlePosition.insert(axis, a.position);
+    QString text = format(a.position);
+    if (a.positionEstimated && a.positionKnown)
+        text.prepend(QStringLiteral("\u2248"));
+    row.value->setText(text);
+    row.steps->setText(tr("machine %1 steps").arg(a.position));
+    if (!a.positionKnown) {
+        setState(row, tr("UNKNOWN"), red, true,
+                 tr("Not referenced since the last panic, reset or reconnect: the position "
+                    "is counted from where the axis was, not from the machine origin."));
+    } else if (a.moving) {
+        setState(row, tr("MOVING"), amber, false,
+                 tr("Read back from the controller while moving."));
+    } else if (a.positionEstimated) {
+        setState(row, tr("ESTIMATED"), amber, false,
+                 tr("Integrated from commanded jog rates; the controller did not confirm it."));
+    } else if (a.referenced) {
+        setState(row, tr("REFERENCED"), green, false, tr("Referenced and confirmed."));
+    } else {
+        setState(row, tr("SET"), amber, false,
+                 tr("Known, but not from a reference run of this session."));
     }
 }
 
@@ -139,6 +251,11 @@ QString PositionPanel::displayedValue(Axis axis) const
 QString PositionPanel::stateText(Axis axis) const
 {
     return m_rows.contains(axis) ? m_rows.value(axis).state->text() : QString();
+}
+
+QString PositionPanel::detailText(Axis axis) const
+{
+    return m_rows.contains(axis) ? m_rows.value(axis).steps->text() : QString();
 }
 
 void PositionPanel::zeroAxis(Axis axis)
@@ -157,10 +274,19 @@ void PositionPanel::clearOffsets()
     }
 }
 
+void PositionPanel::editSoftLimits()
+{
+    dialogs::showForPart(new SoftLimitsDialog(m_context, window()), this);
+}
+
+QString PositionPanel::limitsText(Axis axis) const
+{
+    return m_rows.contains(axis) ? m_rows.value(axis).limits->text() : QString();
+}
+
 void PositionPanel::editUnits()
 {
-    UnitsDialog dialog(m_context, this);
-    dialog.exec();
+    dialogs::showForPart(new UnitsDialog(m_context, window()), this);
 }
 
 } // namespace stepdeck::ui

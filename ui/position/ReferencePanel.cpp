@@ -56,6 +56,10 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     connect(m_runner, &ReferenceRunner::finished, this, &ReferencePanel::onFinished);
     connect(context, &MachineContext::modelChanged, this, &ReferencePanel::rebuild);
     connect(context->session(), &ControllerSession::statusChanged, this, &ReferencePanel::onStatus);
+    connect(context->session(), &ControllerSession::linkStateChanged, this,
+            [this] { onStatus(m_context->status()); });
+    connect(context, &MachineContext::panicTriggered, this,
+            [this] { invalidateSuccess(tr("the panic stop")); });
     rebuild();
 }
 
@@ -163,10 +167,19 @@ void ReferencePanel::cancel()
 
 void ReferencePanel::onStatus(const MachineStatus& status)
 {
+    const bool live = m_context->isConnected();
+    // Referencing needs a connection (and no run in progress).
+    const bool idle = !m_runner->isRunning();
+    m_all->setEnabled(live && idle);
+    for (const Row& row : std::as_const(m_rows))
+        row.run->setEnabled(live && idle);
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
         const AxisStatus a = status.axes.value(it.key());
         const bool running = m_runner->currentAxes().contains(it.key());
-        if (running) {
+        if (!live) {
+            it.value().led->setState(LedIndicator::State::Unknown);
+            it.value().led->setText(tr("unknown (no link)"));
+        } else if (running) {
             it.value().led->setState(LedIndicator::State::Warning);
             it.value().led->setText(tr("referencing\u2026"));
         } else {
@@ -174,6 +187,28 @@ void ReferencePanel::onStatus(const MachineStatus& status)
             it.value().led->setText(a.referenced ? tr("referenced") : tr("not referenced"));
         }
     }
+    // "All selected axes are referenced" holds only while they are.
+    if (!live) {
+        invalidateSuccess(tr("the link is down"));
+    } else {
+        for (Axis axis : std::as_const(m_successAxes)) {
+            if (!status.axes.value(axis).referenced) {
+                invalidateSuccess(tr("a panic stop, reset or limit switch"));
+                break;
+            }
+        }
+    }
+}
+
+void ReferencePanel::invalidateSuccess(const QString& cause)
+{
+    if (m_successAxes.isEmpty())
+        return;
+    m_successAxes.clear();
+    m_message->setText(
+        tr("The axes are no longer referenced (%1): reference them again.").arg(cause));
+    m_message->setStyleSheet(QStringLiteral("QLabel { color: #b26a00; font-weight: bold; }"));
+    m_progress->setValue(0);
 }
 
 void ReferencePanel::onProgress(int stage, int stages, const QString& text)
@@ -182,21 +217,26 @@ void ReferencePanel::onProgress(int stage, int stages, const QString& text)
     m_progress->setValue(stage);
     m_message->setText(text);
     m_message->setStyleSheet(QString());
-    const bool running = m_runner->isRunning();
-    m_cancel->setEnabled(running);
-    m_all->setEnabled(!running);
+    m_cancel->setEnabled(m_runner->isRunning());
     onStatus(m_context->status());
 }
 
 void ReferencePanel::onFinished(bool ok, const QString& message)
 {
+    m_successAxes.clear();
+    if (ok) {
+        for (auto it = m_context->status().axes.cbegin(); it != m_context->status().axes.cend();
+             ++it) {
+            if (it.value().referenced)
+                m_successAxes << it.key();
+        }
+    }
     m_message->setText(message);
     m_message->setStyleSheet(ok ? QStringLiteral("QLabel { color: #2e7d32; }")
                                 : QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
     if (!ok)
         m_progress->setValue(0);
     m_cancel->setEnabled(false);
-    m_all->setEnabled(true);
     onStatus(m_context->status());
 }
 

@@ -46,6 +46,8 @@ private:
     void onStatus(const MachineStatus& status);
     void onProgress(int stage, int stages, const QString& text);
     void onFinished(bool ok, const QString& message);
+    // The success message no longer holds: replace it with what happened.
+    void invalidateSuccess(const QString& cause);
 
     MachineContext* m_context;
     ReferenceRunner* m_runner;
@@ -55,6 +57,7 @@ private:
     QPushButton* m_cancel;
     QProgressBar* m_progress;
     QLabel* m_message;
+    QList<Axis> m_successAxes; // referenced by the last successful run, still referenced
 };
 
 } // namespace stepdeck::ui

@@ -7,19 +7,34 @@
 
 namespace stepdeck::ui {
 
+namespace {
+QString trParam(const QString& text)
+{
+    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
+}
+// Choice values that several models share, shown translated; files keep the values.
+[[maybe_unused]] const char* const kSharedChoices[] = {
+    QT_TRANSLATE_NOOP("Parameters", "low"),
+    QT_TRANSLATE_NOOP("Parameters", "high"),
+};
+} // namespace
+
 ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpec& spec,
                                std::optional<Axis> axis, QWidget* parent)
     : QWidget(parent), m_schema(schema), m_spec(spec), m_axis(axis)
 {
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    QString tip = QCoreApplication::translate("Parameters", spec.description.toUtf8().constData());
+    m_tip = trParam(spec.description);
     switch (spec.type) {
     case ParameterType::Integer:
         m_line = new QLineEdit(this);
         m_line->setAlignment(Qt::AlignRight);
         m_line->setMinimumWidth(80);
-        tip += QStringLiteral("\n") + tr("Allowed: %1 to %2").arg(spec.minimum).arg(spec.maximum);
+        m_tip +=
+            QStringLiteral("\n") +
+            tr("Allowed: %1 to %2 %3").arg(spec.minimum).arg(spec.maximum).arg(trParam(spec.unit));
+        connect(m_line, &QLineEdit::textEdited, this, &ParameterField::userEdit);
         connect(m_line, &QLineEdit::textChanged, this, [this] {
             refreshLook();
             Q_EMIT edited();
@@ -28,6 +43,7 @@ ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpe
         break;
     case ParameterType::Boolean:
         m_check = new QCheckBox(tr("on"), this);
+        connect(m_check, &QCheckBox::clicked, this, &ParameterField::userEdit);
         connect(m_check, &QCheckBox::toggled, this, [this] {
             refreshLook();
             Q_EMIT edited();
@@ -37,8 +53,9 @@ ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpe
     case ParameterType::Choice:
         m_combo = new QComboBox(this);
         for (const QString& c : spec.choices)
-            m_combo->addItem(QCoreApplication::translate("Parameters", c.toUtf8().constData()), c);
+            m_combo->addItem(translatedChoice(c), c);
         connect(m_combo, &QComboBox::activated, this, [this] {
+            userEdit();
             refreshLook();
             Q_EMIT edited();
         });
@@ -47,8 +64,18 @@ ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpe
     }
     if (!spec.writable)
         editor()->setEnabled(false);
-    editor()->setToolTip(tip);
     setValue(spec.defaultValue);
+}
+
+QString ParameterField::translatedChoice(const QString& choice)
+{
+    return trParam(choice);
+}
+
+QString ParameterField::displayName() const
+{
+    const QString label = trParam(m_spec.label);
+    return m_axis ? QStringLiteral("%1 %2").arg(label, axisName(*m_axis)) : label;
 }
 
 QWidget* ParameterField::editor() const
@@ -60,6 +87,17 @@ QWidget* ParameterField::editor() const
     return m_combo;
 }
 
+void ParameterField::userEdit()
+{
+    m_explicit = true;
+    if (m_unknown && !m_line) {
+        m_unknown = false; // a check box or choice has a value as soon as it is touched
+        if (m_check)
+            m_check->setTristate(false);
+        refreshLook();
+    }
+}
+
 QVariant ParameterField::rawValue() const
 {
     if (m_line)
@@ -69,18 +107,31 @@ QVariant ParameterField::rawValue() const
     return m_combo->currentData();
 }
 
+bool ParameterField::isUnknown() const
+{
+    return m_unknown && (!m_line || m_line->text().trimmed().isEmpty());
+}
+
 QVariant ParameterField::value() const
 {
+    if (isUnknown())
+        return {};
     return isValid() ? m_schema.normalise(m_spec, rawValue()) : QVariant();
 }
 
-void ParameterField::setValue(const QVariant& value)
+void ParameterField::setValue(const QVariant& value, bool explicitValue)
 {
+    m_unknown = false;
+    if (!explicitValue)
+        m_deviceUnknown = false; // read back
+    m_explicit = explicitValue;
     const QVariant v = m_schema.normalise(m_spec, value);
     if (m_line) {
+        m_line->setPlaceholderText(QString());
         m_line->setText(v.isValid() ? QString::number(v.toLongLong()) : value.toString());
     } else if (m_check) {
         const QSignalBlocker block(m_check);
+        m_check->setTristate(false);
         m_check->setChecked(v.toBool());
     } else {
         m_combo->setCurrentIndex(qMax(0, m_combo->findData(v.toString())));
@@ -88,11 +139,42 @@ void ParameterField::setValue(const QVariant& value)
     refreshLook();
 }
 
+void ParameterField::setUnknown()
+{
+    m_explicit = false;
+    if (m_line) {
+        const QSignalBlocker block(m_line);
+        m_line->clear();
+        m_line->setPlaceholderText(tr("unknown"));
+    } else if (m_check) {
+        const QSignalBlocker block(m_check);
+        m_check->setTristate(true);
+        m_check->setCheckState(Qt::PartiallyChecked);
+    } else {
+        m_combo->setCurrentIndex(-1);
+    }
+    m_unknown = true;
+    m_deviceUnknown = true;
+    refreshLook();
+}
+
 QString ParameterField::error() const
 {
+    if (isUnknown())
+        return {};
+    const QString name = displayName();
     if (m_line && m_line->text().trimmed().isEmpty())
-        return tr("%1: a value is required").arg(m_spec.name);
-    return m_schema.validateScalar(m_spec, rawValue());
+        return tr("%1: a value is required").arg(name);
+    if (m_schema.validateScalar(m_spec, rawValue()).isEmpty())
+        return {};
+    if (m_spec.type == ParameterType::Integer)
+        return tr("%1: '%2' is out of range (allowed: %3 to %4 %5)")
+            .arg(name, rawValue().toString())
+            .arg(m_spec.minimum)
+            .arg(m_spec.maximum)
+            .arg(trParam(m_spec.unit))
+            .trimmed();
+    return tr("%1: '%2' is not allowed").arg(name, rawValue().toString());
 }
 
 void ParameterField::setBaseline(const QVariant& value)
@@ -103,28 +185,41 @@ void ParameterField::setBaseline(const QVariant& value)
 
 bool ParameterField::isChanged() const
 {
-    return !m_baseline.isValid() || value() != m_baseline;
+    // The last read of this value failed: what the device holds is unknown, whatever an
+    // earlier read said; only the technician's own choice goes out.
+    if (m_deviceUnknown)
+        return m_explicit && value().isValid();
+    if (!m_baseline.isValid())
+        return !m_spec.readable || (m_explicit && value().isValid());
+    return value() != m_baseline;
 }
 
 void ParameterField::refreshLook()
 {
     const QString err = error();
     QWidget* e = editor();
+    QString state;
     if (!err.isEmpty()) {
         e->setStyleSheet(QStringLiteral("background: #ffcdd2; color: #8e0000;"));
-        e->setProperty("fieldState", QStringLiteral("invalid"));
-    } else if (m_baseline.isValid() && value() != m_baseline) {
+        state = QStringLiteral("invalid");
+    } else if (isUnknown()) {
+        e->setStyleSheet(QStringLiteral("background: #eceff1; color: #607d8b;"));
+        state = QStringLiteral("unknown");
+    } else if ((m_baseline.isValid() || m_deviceUnknown) && isChanged()) {
         e->setStyleSheet(QStringLiteral("background: #fff59d;"));
-        e->setProperty("fieldState", QStringLiteral("changed"));
+        state = QStringLiteral("changed");
     } else {
         e->setStyleSheet(QString());
-        e->setProperty("fieldState", QStringLiteral("clean"));
+        state = QStringLiteral("clean");
     }
-    if (m_line)
-        m_line->setToolTip(err.isEmpty()
-                               ? m_line->toolTip().section(QStringLiteral("\n\u26a0"), 0, 0)
-                               : m_line->toolTip().section(QStringLiteral("\n\u26a0"), 0, 0) +
-                                     QStringLiteral("\n\u26a0 ") + err);
+    e->setProperty("fieldState", state);
+    QString tip = m_tip;
+    if (state == QLatin1String("unknown"))
+        tip += QStringLiteral("\n") + tr("Unknown: the value could not be read. It is written "
+                                         "only if you set it.");
+    if (!err.isEmpty())
+        tip += QStringLiteral("\n\u26a0 ") + err;
+    e->setToolTip(tip);
 }
 
 } // namespace stepdeck::ui

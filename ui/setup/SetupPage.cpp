@@ -1,15 +1,15 @@
 #include "SetupPage.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
-#include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
-#include "setup/ParameterFile.h"
+#include "setup/WritePlan.h"
+#include "setup/WritePreview.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 
@@ -25,20 +25,21 @@ QString trParam(const QString& text)
 SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_groups(new QVBoxLayout),
       m_read(new QPushButton(tr("Read"), this)), m_write(new QPushButton(tr("Write"), this)),
-      m_writeVerify(new QPushButton(tr("Write && verify"), this)), m_info(new QLabel(this)),
+      m_writeVerify(new QPushButton(tr("Write && verify"), this)),
+      m_writeAll(new QPushButton(tr("Write all"), this)), m_info(new QLabel(this)),
       m_message(new QLabel(this))
 {
     auto* defaults = new QPushButton(tr("Defaults"), this);
     auto* save = new QPushButton(tr("Save to file\u2026"), this);
     auto* loadButton = new QPushButton(tr("Load from file\u2026"), this);
     m_write->setObjectName(QStringLiteral("setupWrite"));
+    m_writeAll->setObjectName(QStringLiteral("setupWriteAll"));
     m_read->setToolTip(tr("Read the values back from the controller"));
-    m_write->setToolTip(tr("Write changed values to the controller"));
     m_writeVerify->setToolTip(tr("Write, then read back and compare where the protocol can"));
     defaults->setToolTip(tr("Fill the form with the model's default values (nothing is sent)"));
 
     auto* bar = new QHBoxLayout;
-    for (QPushButton* b : {m_read, m_write, m_writeVerify, defaults})
+    for (QPushButton* b : {m_read, m_write, m_writeVerify, m_writeAll, defaults})
         bar->addWidget(b);
     bar->addStretch(1);
     bar->addWidget(save);
@@ -58,17 +59,21 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     connect(m_read, &QPushButton::clicked, this, &SetupPage::read);
     connect(m_write, &QPushButton::clicked, this, [this] { write(false, true); });
     connect(m_writeVerify, &QPushButton::clicked, this, [this] { write(true, true); });
+    connect(m_writeAll, &QPushButton::clicked, this, [this] { writeAll(false, true); });
     connect(defaults, &QPushButton::clicked, this, &SetupPage::resetToDefaults);
     connect(save, &QPushButton::clicked, this, &SetupPage::saveAs);
     connect(loadButton, &QPushButton::clicked, this, &SetupPage::load);
     connect(context, &MachineContext::modelChanged, this, &SetupPage::rebuild);
     connect(context->session(), &ControllerSession::requestFinished, this, &SetupPage::onResult);
+    connect(context, &MachineContext::knownParametersChanged, this, &SetupPage::applyKnown);
     connect(context->session(), &ControllerSession::linkStateChanged, this, [this](LinkState st) {
         refreshButtons();
         // Where the protocol can read back, the form starts from the device's values, so
-        // Write sends only what the technician changed.
-        if (st == LinkState::Connected && m_anyReadable)
+        // Write sends only what the technician changed; until then they are unknown.
+        if (st == LinkState::Connected && m_anyReadable) {
+            markReadableUnknown();
             read();
+        }
     });
     rebuild();
 }
@@ -95,10 +100,33 @@ void SetupPage::rebuild()
         anyReadable = anyReadable || spec.readable;
     m_anyReadable = anyReadable;
     m_read->setVisible(anyReadable);
-    m_info->setText(anyReadable ? QString()
-                                : tr("This controller cannot read parameters back: the fields "
-                                     "show the defaults (or a loaded file) until written."));
+    m_info->setText(
+        anyReadable ? QString()
+                    : tr("This controller cannot read parameters back: the fields show the "
+                         "defaults (or a loaded file) until written. After every connect, reset "
+                         "or power cycle nothing counts as written."));
     m_info->setVisible(!anyReadable);
+    if (anyReadable)
+        markReadableUnknown(); // not read yet: never shown as defaults
+    applyKnown();
+}
+
+void SetupPage::markReadableUnknown()
+{
+    for (ParameterField* f : std::as_const(m_fields)) {
+        if (f->spec().readable && !f->isExplicit())
+            f->setUnknown();
+    }
+    refreshButtons();
+}
+
+void SetupPage::applyKnown()
+{
+    const ParameterSet& known = m_context->knownParameters();
+    for (ParameterField* f : std::as_const(m_fields)) {
+        const ParameterValue v = known.value(f->spec().name);
+        f->setBaseline(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+    }
     refreshButtons();
 }
 
@@ -158,6 +186,11 @@ ParameterField* SetupPage::field(const QString& name, std::optional<Axis> axis) 
     return nullptr;
 }
 
+WritePreview* SetupPage::openPreview() const
+{
+    return m_preview.data();
+}
+
 QString SetupPage::messageText() const
 {
     return m_message->text();
@@ -167,12 +200,9 @@ QStringList SetupPage::fieldErrors() const
 {
     QStringList errors;
     for (ParameterField* f : m_fields) {
-        const QString err = f->error();
-        if (!err.isEmpty()) {
-            errors << (f->axis() ? QStringLiteral("%1 %2: %3")
-                                       .arg(trParam(f->spec().label), axisName(*f->axis()), err)
-                                 : QStringLiteral("%1: %2").arg(trParam(f->spec().label), err));
-        }
+        const QString err = f->error(); // names the field by its translated label
+        if (!err.isEmpty())
+            errors << err;
     }
     return errors;
 }
@@ -186,8 +216,8 @@ bool SetupPage::formValues(ParameterSet* set, QStringList* errors) const
         return false;
     ParameterSet out;
     for (ParameterField* f : m_fields) {
-        if (!f->spec().writable)
-            continue;
+        if (!f->spec().writable || !f->value().isValid())
+            continue; // unknown values are not part of the form's values
         ParameterValue& v = out[f->spec().name];
         if (f->axis())
             v.perAxis.insert(*f->axis(), f->value());
@@ -200,20 +230,9 @@ bool SetupPage::formValues(ParameterSet* set, QStringList* errors) const
 
 ParameterSet SetupPage::changedValues() const
 {
-    ParameterSet all;
-    if (!formValues(&all, nullptr))
+    if (!fieldErrors().isEmpty())
         return {};
-    QSet<QString> changed;
-    for (ParameterField* f : m_fields) {
-        if (f->isChanged())
-            changed.insert(f->spec().name);
-    }
-    ParameterSet out;
-    for (auto it = all.cbegin(); it != all.cend(); ++it) {
-        if (changed.contains(it.key()))
-            out.insert(it.key(), it.value()); // whole parameter: every axis in one command
-    }
-    return out;
+    return WritePlan::build(m_fields, WritePlan::Scope::Changed).set;
 }
 
 void SetupPage::refreshButtons()
@@ -223,9 +242,12 @@ void SetupPage::refreshButtons()
     const QString why = !errors.isEmpty() ? tr("Cannot write: %1").arg(errors.first())
                         : !connected      ? tr("Not connected")
                                           : QString();
-    for (QPushButton* b : {m_write, m_writeVerify}) {
+    for (QPushButton* b : {m_write, m_writeVerify, m_writeAll}) {
         b->setEnabled(why.isEmpty());
-        b->setToolTip(why.isEmpty() ? tr("Write changed values to the controller") : why);
+        b->setToolTip(!why.isEmpty()    ? why
+                      : b == m_writeAll ? tr("Write every value on the page to the controller")
+                                        : tr("Write what is changed or not known to be on the "
+                                             "controller"));
     }
     m_read->setEnabled(connected);
     if (!errors.isEmpty())
@@ -236,41 +258,67 @@ void SetupPage::refreshButtons()
     m_message->setProperty("invalidShown", !errors.isEmpty());
 }
 
-bool SetupPage::write(bool verify, bool confirmWarnings)
+bool SetupPage::write(bool verify, bool confirm)
 {
-    QStringList errors;
-    ParameterSet all;
-    if (!formValues(&all, &errors)) {
+    return writePlanned(int(WritePlan::Scope::Changed), verify, confirm);
+}
+
+bool SetupPage::writeAll(bool verify, bool confirm)
+{
+    return writePlanned(int(WritePlan::Scope::All), verify, confirm);
+}
+
+bool SetupPage::writePlanned(int scope, bool verify, bool confirm)
+{
+    const QStringList errors = fieldErrors();
+    if (!errors.isEmpty()) {
         setMessage(tr("Invalid values cannot be written:\n%1").arg(errors.join(QLatin1Char('\n'))),
                    true);
         return false;
     }
-    const ParameterSet set = changedValues();
-    if (set.isEmpty()) {
-        setMessage(tr("Nothing to write: every field matches the controller."), false);
+    const WritePlan plan = WritePlan::build(m_fields, WritePlan::Scope(scope));
+    if (plan.set.isEmpty()) {
+        setMessage(plan.nothingToWriteText(), false);
         return false;
     }
+    return writeSet(plan.set, verify, confirm);
+}
+
+bool SetupPage::writeSet(const ParameterSet& set, bool verify, bool confirm)
+{
     const QString invalid = m_schema.validate(set, m_context->axes());
     if (!invalid.isEmpty()) {
         setMessage(tr("Not written: %1").arg(invalid), true);
         return false;
     }
-    if (confirmWarnings && !confirm(set))
-        return false;
-    m_pendingSet = set;
-    m_pendingWrite = m_context->session()->writeParameters(set, verify);
-    setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
-                      : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
-               false);
+    // A multi-drive bus shows exactly what goes to which drive first; others ask only for
+    // the schema's warnings.
+    const bool preview =
+        m_context->capabilities().multiDrive || !WriteWarnings::collect(m_schema, set).isEmpty();
+    if (!confirm || !preview) {
+        send(set, verify);
+        return true;
+    }
+    auto* dialog = new WritePreview(m_schema, set,
+                                    m_context->session()->spec().options.axisAddresses, window());
+    connect(dialog, &QDialog::finished, this, [this, set, verify](int result) {
+        if (result == QDialog::Accepted)
+            send(set, verify);
+        else
+            setMessage(tr("Not written: cancelled."), false);
+    });
+    dialogs::showForPart(dialog, this);
+    m_preview = dialog;
     return true;
 }
 
-bool SetupPage::confirm(const ParameterSet& set)
+void SetupPage::send(const ParameterSet& set, bool verify)
 {
-    if (WriteWarnings::confirm(this, m_schema, set))
-        return true;
-    setMessage(tr("Not written: cancelled."), false);
-    return false;
+    m_pendingSet = set;
+    m_pendingWrite = m_context->writeParameters(set, verify);
+    setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
+                      : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
+               false);
 }
 
 void SetupPage::read()
@@ -284,7 +332,7 @@ void SetupPage::read()
         setMessage(tr("This controller cannot read parameters back."), true);
         return;
     }
-    m_pendingRead = m_context->session()->readParameters(names);
+    m_pendingRead = m_context->readParameters(names);
     setMessage(tr("Reading\u2026"), false);
 }
 
@@ -293,7 +341,7 @@ void SetupPage::onResult(const CommandResult& result)
     if (result.id == m_pendingWrite && m_pendingWrite != 0) {
         m_pendingWrite = 0;
         if (result.ok()) {
-            setBaselines(m_pendingSet);
+            // The context now knows the values (its baselines follow, applyKnown()).
             QStringList labels;
             for (const QString& name : m_pendingSet.keys()) {
                 const ParameterSpec* spec = m_schema.find(name);
@@ -305,24 +353,32 @@ void SetupPage::onResult(const CommandResult& result)
         }
     } else if (result.id == m_pendingRead && m_pendingRead != 0) {
         m_pendingRead = 0;
-        if (result.ok() && result.value.canConvert<ParameterSet>()) {
-            const ParameterSet set = result.value.value<ParameterSet>();
-            applyToForm(set);
-            setBaselines(set);
+        // A failed read may still carry what could be read (some drives answered).
+        const ParameterSet set = result.value.canConvert<ParameterSet>()
+                                     ? result.value.value<ParameterSet>()
+                                     : ParameterSet{};
+        showRead(set);
+        if (result.ok())
             setMessage(tr("Read %n parameter(s).", nullptr, int(set.size())), false);
-        } else {
-            setMessage(tr("Read failed: %1").arg(result.message), true);
-        }
+        else
+            setMessage(tr("Read failed: %1. Values that could not be read are shown as "
+                          "unknown; they are written only if you set them.")
+                           .arg(result.message),
+                       true);
     }
 }
 
-void SetupPage::setBaselines(const ParameterSet& set)
+void SetupPage::showRead(const ParameterSet& set)
 {
-    for (ParameterField* f : m_fields) {
-        if (!set.contains(f->spec().name))
+    for (ParameterField* f : std::as_const(m_fields)) {
+        if (!f->spec().readable)
             continue;
-        const ParameterValue& v = set.value(f->spec().name);
-        f->setBaseline(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+        const ParameterValue v = set.value(f->spec().name);
+        const QVariant value = f->axis() ? v.perAxis.value(*f->axis()) : v.global;
+        if (value.isValid())
+            f->setValue(value);
+        else if (!f->isExplicit())
+            f->setUnknown(); // never a default in place of a value that could not be read
     }
     refreshButtons();
 }
@@ -333,7 +389,7 @@ void SetupPage::applyToForm(const ParameterSet& set)
         if (!set.contains(f->spec().name))
             continue;
         const ParameterValue& v = set.value(f->spec().name);
-        f->setValue(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+        f->setValue(f->axis() ? v.perAxis.value(*f->axis()) : v.global, true);
     }
     refreshButtons();
 }
@@ -341,7 +397,7 @@ void SetupPage::applyToForm(const ParameterSet& set)
 void SetupPage::resetToDefaults()
 {
     for (ParameterField* f : m_fields)
-        f->setValue(f->spec().defaultValue);
+        f->setValue(f->spec().defaultValue, true);
     refreshButtons();
 }
 
@@ -351,61 +407,6 @@ void SetupPage::setMessage(const QString& text, bool error)
     m_message->setStyleSheet(error ? QStringLiteral("QLabel { color: #c62828; }") : QString());
     if (!text.isEmpty())
         Q_EMIT message(text);
-}
-
-bool SetupPage::saveToFile(const QString& path, QString* error) const
-{
-    ParameterSet set;
-    QStringList errors;
-    if (!formValues(&set, &errors)) {
-        *error = tr("Not saved: %1").arg(errors.join(QStringLiteral("; ")));
-        return false;
-    }
-    return ParameterFile::save(m_schema, m_context->modelId(), set, path, error);
-}
-
-bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error) const
-{
-    return ParameterFile::load(m_schema, m_context->modelId(), m_context->axes(), path, set, error);
-}
-
-void SetupPage::saveAs()
-{
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save parameters"), m_context->modelId() + QStringLiteral("-parameters.json"),
-        tr("Parameter files (*.json)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (saveToFile(path, &error))
-        setMessage(tr("Saved to %1.").arg(path), false);
-    else
-        setMessage(error, true);
-}
-
-void SetupPage::load()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameters"), QString(),
-                                                      tr("Parameter files (*.json)"));
-    if (path.isEmpty())
-        return;
-    ParameterSet loaded;
-    QString error;
-    if (!readFile(path, &loaded, &error)) {
-        setMessage(error, true);
-        return;
-    }
-    ParameterSet current;
-    formValues(&current, nullptr);
-    DiffDialog dialog(DiffDialog::compare(m_schema, current, loaded), QFileInfo(path).fileName(),
-                      this);
-    const int choice = dialog.exec();
-    if (choice == DiffDialog::Cancel)
-        return;
-    applyToForm(loaded);
-    setMessage(tr("Loaded %1 into the form.").arg(QFileInfo(path).fileName()), false);
-    if (choice == DiffDialog::LoadAndWrite)
-        write(false, true);
 }
 
 } // namespace stepdeck::ui

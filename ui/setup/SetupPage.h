@@ -1,6 +1,7 @@
 #pragma once
 #include "model/CommandResult.h"
 #include "model/ParameterSchema.h"
+#include <QPointer>
 #include <QWidget>
 #include <optional>
 
@@ -10,13 +11,18 @@ class QVBoxLayout;
 
 namespace stepdeck::ui {
 
+class DiffDialog;
 class MachineContext;
 class ParameterField;
+class WritePreview;
 
 // Setup pages for technicians, generated from the model's ParameterSchema: one group box per
 // schema group, one column per axis, range-checked editors, changed fields highlighted;
-// Read (where the protocol can), Write, Write & verify, and Save/Load in the CLI's JSON format
-// with a diff before a loaded file is written. Invalid values are never written.
+// Read (where the protocol can), Write, Write & verify, Write all, and Save/Load in the CLI's
+// JSON format with a diff before a loaded file is written. Invalid values are never written.
+// What counts as already on the device is MachineContext::knownParameters() (forgotten on
+// every reconnect, reset and power cycle); what Write sends is a WritePlan. A multi-drive
+// model previews exactly what goes to which drive before anything is sent (WritePreview).
 class SetupPage : public QWidget
 {
     Q_OBJECT
@@ -27,26 +33,34 @@ public:
     QPushButton* writeButton() const { return m_write; }
     QPushButton* writeVerifyButton() const { return m_writeVerify; }
     QPushButton* readButton() const { return m_read; }
+    QPushButton* writeAllButton() const { return m_writeAll; }
+    WritePreview* openPreview() const; // the last preview, while open
     QString messageText() const;
 
     // Every field's value; false and the reasons when a field is invalid.
     bool formValues(ParameterSet* set, QStringList* errors) const;
     QStringList fieldErrors() const;
-    // Fields that differ from the device (or whose device value is unknown), whole parameters.
+    // What Write would send now (WritePlan, scope Changed).
     ParameterSet changedValues() const;
+    // Values the technician chose (a file, the defaults): explicit, shown as changed.
     void applyToForm(const ParameterSet& set);
 
     bool saveToFile(const QString& path, QString* error) const;
     bool readFile(const QString& path, ParameterSet* set, QString* error) const;
 
 public Q_SLOTS:
-    // false: nothing sent (invalid values, nothing changed, or a warning not confirmed).
-    // confirmWarnings: ask before writing parameters whose schema entry carries a warning.
-    bool write(bool verify = false, bool confirmWarnings = false);
+    // false: nothing sent (invalid values or nothing to write; the message says why).
+    // confirm: show the preview (multi-drive) or the schema's warnings first, when there are
+    // any (true then means "sent or waiting for the answer").
+    bool write(bool verify = false, bool confirm = false);
+    bool writeAll(bool verify = false, bool confirm = false);
     void read();
     void resetToDefaults();
     void saveAs();
     void load();
+    // Shows what the file changes (non-modal); the technician loads, loads and writes, or
+    // cancels. nullptr when the file cannot be read (the message says why).
+    DiffDialog* loadFile(const QString& path);
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -57,8 +71,12 @@ private:
     void refreshButtons();
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error);
-    void setBaselines(const ParameterSet& set);
-    bool confirm(const ParameterSet& set);
+    void applyKnown();          // baselines from what the context knows on the device
+    void markReadableUnknown(); // readable values not read (yet): unknown, not defaults
+    void showRead(const ParameterSet& set);
+    bool writePlanned(int scope, bool verify, bool confirm);
+    bool writeSet(const ParameterSet& set, bool verify, bool confirm);
+    void send(const ParameterSet& set, bool verify);
 
     MachineContext* m_context;
     ParameterSchema m_schema;
@@ -68,6 +86,8 @@ private:
     QPushButton* m_read;
     QPushButton* m_write;
     QPushButton* m_writeVerify;
+    QPushButton* m_writeAll;
+    QPointer<WritePreview> m_preview;
     QLabel* m_info;
     QLabel* m_message;
     bool m_anyReadable = false;

@@ -1,5 +1,5 @@
 #include "WriteWarnings.h"
-#include <QMessageBox>
+#include "common/Dialogs.h"
 
 namespace stepdeck::ui {
 
@@ -23,16 +23,20 @@ QStringList WriteWarnings::collect(const ParameterSchema& schema, const Paramete
     return warnings;
 }
 
-bool WriteWarnings::confirm(QWidget* parent, const ParameterSchema& schema, const ParameterSet& set)
+void WriteWarnings::confirm(QWidget* part, const ParameterSchema& schema, const ParameterSet& set,
+                            std::function<void(bool)> done)
 {
     const QStringList warnings = collect(schema, set);
-    if (warnings.isEmpty())
-        return true;
-    const auto answer = QMessageBox::warning(
-        parent, tr("Write parameters"),
+    if (warnings.isEmpty()) {
+        done(true);
+        return;
+    }
+    QMessageBox* box = dialogs::message(
+        part, QMessageBox::Warning, tr("Write parameters"),
         tr("Please read before writing:<br><br>%1").arg(warnings.join(QStringLiteral("<br>"))),
-        QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
-    return answer == QMessageBox::Ok;
+        QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel,
+        [done](QMessageBox::StandardButton answer) { done(answer == QMessageBox::Ok); });
+    box->setObjectName(QStringLiteral("writeWarnings"));
 }
 
 } // namespace stepdeck::ui

@@ -4,6 +4,7 @@
 #include "../NanotecUiFixture.h"
 #include "drives/DrivePanel.h"
 #include <QDockWidget>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 
@@ -21,6 +22,7 @@ private Q_SLOTS:
     void driveList_showsThreeDrivesWithAxes();
     void driveList_silentDriveMarkedRed();
     void scan_listsDrivesOnTheBus();
+    void scan_showsProgressAndCanBeCancelled();
     void disconnect_clearsDriveList();
     void dock_hiddenForSingleBoardModel();
 
@@ -79,6 +81,40 @@ void TestDrivePanel::scan_listsDrivesOnTheBus()
              QStringLiteral("2"));
     QVERIFY(!panel()->foundTable()->item(0, ui::DrivePanel::FoundFirmware)->text().isEmpty());
     QTRY_VERIFY(panel()->scanButton()->isEnabled());
+}
+
+void TestDrivePanel::scan_showsProgressAndCanBeCancelled()
+{
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));
+    panel()->scanBus(); // 1..254, chunk by chunk
+    QVERIFY(panel()->isScanning());
+    QVERIFY(panel()->cancelScanButton()->isEnabled());
+    QCOMPARE(panel()->scanProgress()->maximum(), 254);
+    // The first chunk (1..16) holds the three drives.
+    QTRY_VERIFY_WITH_TIMEOUT(panel()->scanProgress()->value() >= ui::DrivePanel::kScanChunk, 10000);
+    QCOMPARE(panel()->foundTable()->rowCount(), 3);
+    panel()->cancelScanButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel()->isScanning(), 10000);
+    QVERIFY2(panel()->scanState().contains(QStringLiteral("cancelled")),
+             qPrintable(panel()->scanState()));
+    QCOMPARE(panel()->foundTable()->rowCount(), 3); // what was found stays
+    QVERIFY(panel()->scanButton()->isEnabled());
+    QVERIFY(!panel()->cancelScanButton()->isEnabled());
+    // The bus was asked no further than the chunk in flight when it was cancelled.
+    const int stoppedAt = panel()->scanProgress()->value();
+    QVERIFY(stoppedAt < 254);
+    QList<QByteArray> frames;
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    int highest = 0;
+    for (const QByteArray& f : frames) {
+        if (f.endsWith("v") || f.endsWith("v\r")) {
+            bool ok = false;
+            const int address = f.mid(1, f.indexOf('v') - 1).toInt(&ok);
+            if (ok)
+                highest = qMax(highest, address);
+        }
+    }
+    QCOMPARE(highest, stoppedAt);
 }
 
 void TestDrivePanel::disconnect_clearsDriveList()

@@ -1,0 +1,4 @@
+# Jog safety (issue 7, rules 3 and 4) asserted at the in-process E-LAB simulator.
+stepdeck_add_test(tst_jogsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogsafety.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui TIMEOUT 300)

@@ -1,0 +1,143 @@
+// The setup page on a Nanotec bus (values read back per drive): a value that could not be
+// read is shown as unknown, never as a default; a one-field edit with a silent drive on the
+// bus writes that one value and nothing else; the preview lists exactly what will be sent,
+// per drive, before anything is sent. Checked at the simulated bus (frames it received).
+#include "../NanotecUiFixture.h"
+#include "setup/ParameterField.h"
+#include "setup/SetupPage.h"
+#include "setup/WritePreview.h"
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+namespace {
+// Host frames that change something: not the status sweep ('$', 'C') and not reads ('Z...').
+QList<QByteArray> writes(const QList<QByteArray>& frames)
+{
+    QList<QByteArray> out;
+    for (const QByteArray& f : frames) {
+        qsizetype i = 1; // after '#'
+        while (i < f.size() &&
+               (std::isdigit(static_cast<unsigned char>(f.at(i))) || f.at(i) == '*'))
+            ++i;
+        const char cmd = i < f.size() ? f.at(i) : '\0';
+        if (cmd != 'Z' && cmd != '$' && cmd != 'C')
+            out << f.trimmed();
+    }
+    return out;
+}
+} // namespace
+
+class TestNanotecSetup : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup() { m_f.reset(); }
+
+    void connect_readsDeviceValues_notDefaults();
+    void silentDrive_failedRead_valuesUnknown();
+    void oneFieldEdit_withSilentDrive_previewAndWriteOnlyThatValue();
+    void preview_cancelled_sendsNothing();
+
+private:
+    ui::SetupPage* page() const { return m_f->window->setupPage(); }
+    ui::ParameterField* current(Axis axis) const
+    {
+        return page()->field(QStringLiteral("phase-current"), axis);
+    }
+    void silenceDrive2AndRead();
+    std::unique_ptr<NanotecUiFixture> m_f;
+};
+
+void TestNanotecSetup::init()
+{
+    QSettings().clear();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec());
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Read ")), 15000);
+}
+
+void TestNanotecSetup::connect_readsDeviceValues_notDefaults()
+{
+    // Drive 2 holds 77 % (the schema default is 50 %): the form shows the drive's value.
+    m_f->session->sendRaw(QByteArrayLiteral("#2i77\r"));
+    page()->read();
+    QTRY_COMPARE_WITH_TIMEOUT(current(Axis::Y)->value().toLongLong(), qint64(77), 15000);
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+        QVERIFY(!current(a)->isUnknown());
+        QVERIFY(current(a)->baseline().isValid());
+        QVERIFY(!current(a)->isChanged());
+    }
+    QVERIFY(page()->changedValues().isEmpty());
+}
+
+void TestNanotecSetup::silenceDrive2AndRead()
+{
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, true); }));
+    page()->read();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Read failed")),
+                             20000);
+}
+
+void TestNanotecSetup::silentDrive_failedRead_valuesUnknown()
+{
+    silenceDrive2AndRead();
+    ui::ParameterField* y = current(Axis::Y);
+    QVERIFY(y->isUnknown());
+    QVERIFY(y->lineEdit()->text().isEmpty()); // not the default "50"
+    QCOMPARE(y->lineEdit()->property("fieldState").toString(), QStringLiteral("unknown"));
+    QVERIFY(y->isValid()); // unknown is no error: the rest can still be written
+    QVERIFY(page()->writeButton()->isEnabled());
+    QVERIFY(!y->isChanged());
+    QVERIFY(page()->changedValues().isEmpty()); // nothing is written without a choice
+}
+
+void TestNanotecSetup::oneFieldEdit_withSilentDrive_previewAndWriteOnlyThatValue()
+{
+    silenceDrive2AndRead();
+    QLineEdit* edit = current(Axis::X)->lineEdit();
+    edit->setFocus();
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("60"));
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));
+    page()->writeButton()->click();
+    ui::WritePreview* preview = page()->openPreview();
+    QVERIFY(preview);
+    QVERIFY(!preview->isModal());
+    QCOMPARE(preview->rowCount(), 1); // exactly what will be sent
+    QCOMPARE(preview->table()->item(0, 0)->text(), QStringLiteral("Drive 1 (X)"));
+    QCOMPARE(preview->table()->item(0, 2)->text(), QStringLiteral("60"));
+    QList<QByteArray> frames;
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    QVERIFY(writes(frames).isEmpty()); // nothing before the technician says so
+    preview->accept();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Written")), 10000);
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    QCOMPARE(writes(frames), QList<QByteArray>{QByteArray("#1i60")});
+}
+
+void TestNanotecSetup::preview_cancelled_sendsNothing()
+{
+    QLineEdit* edit = current(Axis::Z)->lineEdit();
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("70"));
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));
+    page()->writeButton()->click();
+    QVERIFY(page()->openPreview());
+    QVERIFY(!page()->isEnabled()); // the page waits for the answer
+    page()->openPreview()->reject();
+    QTRY_VERIFY(page()->isEnabled());
+    QVERIFY(page()->messageText().contains(QStringLiteral("cancelled")));
+    QList<QByteArray> frames;
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    QVERIFY(writes(frames).isEmpty());
+}
+
+QTEST_MAIN(TestNanotecSetup)
+#include "tst_nanotecsetup.moc"

@@ -1,0 +1,106 @@
+#include "StatusMessages.h"
+
+namespace stepdeck::ui {
+
+namespace {
+QString stamp(const QDateTime& t)
+{
+    return t.time().toString(QStringLiteral("HH:mm:ss"));
+}
+} // namespace
+
+StatusMessages::StatusMessages(QObject* parent) : QObject(parent)
+{
+    m_expiry.setSingleShot(true);
+    connect(&m_expiry, &QTimer::timeout, this, &StatusMessages::expire);
+}
+
+void StatusMessages::show(Owner owner, const QString& text, Severity severity, int lifetimeMs)
+{
+    if (text.isEmpty()) {
+        clear(owner);
+        return;
+    }
+    const QDateTime now = QDateTime::currentDateTime();
+    m_messages.insert(owner,
+                      Message{text, severity, now, now.addMSecs(qMax(1, lifetimeMs)), ++m_order});
+    m_history.prepend(QStringLiteral("%1  %2").arg(stamp(now), text));
+    while (m_history.size() > kHistory)
+        m_history.removeLast();
+    expire(); // also re-arms the timer for the next expiry
+    Q_EMIT changed();
+}
+
+void StatusMessages::clear(Owner owner)
+{
+    if (m_messages.remove(owner)) {
+        expire();
+        Q_EMIT changed();
+    }
+}
+
+void StatusMessages::clearAll()
+{
+    if (m_messages.isEmpty())
+        return;
+    m_messages.clear();
+    Q_EMIT changed();
+}
+
+void StatusMessages::expire()
+{
+    const QDateTime now = QDateTime::currentDateTime();
+    bool removed = false;
+    QDateTime next;
+    for (auto it = m_messages.begin(); it != m_messages.end();) {
+        if (it->expires <= now) {
+            it = m_messages.erase(it);
+            removed = true;
+        } else {
+            if (!next.isValid() || it->expires < next)
+                next = it->expires;
+            ++it;
+        }
+    }
+    if (next.isValid())
+        m_expiry.start(int(qBound(qint64(1), now.msecsTo(next), qint64(24 * 3600 * 1000))));
+    else
+        m_expiry.stop();
+    if (removed && sender() == &m_expiry)
+        Q_EMIT changed();
+}
+
+const StatusMessages::Message* StatusMessages::newest() const
+{
+    const Message* best = nullptr;
+    for (const Message& m : m_messages) {
+        if (!best || m.order > best->order)
+            best = &m;
+    }
+    return best;
+}
+
+QString StatusMessages::currentText() const
+{
+    const Message* m = newest();
+    return m ? m->text : QString();
+}
+
+QString StatusMessages::currentLine() const
+{
+    const Message* m = newest();
+    return m ? QStringLiteral("%1  %2").arg(stamp(m->shown), m->text) : QString();
+}
+
+StatusMessages::Severity StatusMessages::currentSeverity() const
+{
+    const Message* m = newest();
+    return m ? m->severity : Severity::Info;
+}
+
+QStringList StatusMessages::history() const
+{
+    return m_history;
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,113 @@
+#include "WritePreview.h"
+#include "setup/ParameterField.h"
+#include "setup/WriteWarnings.h"
+#include <QCoreApplication>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+namespace {
+QString trParam(const QString& text)
+{
+    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
+}
+
+QString shown(const ParameterSpec& spec, const QVariant& v)
+{
+    switch (spec.type) {
+    case ParameterType::Boolean:
+        return v.toBool() ? WritePreview::tr("on") : WritePreview::tr("off");
+    case ParameterType::Choice:
+        return ParameterField::translatedChoice(v.toString());
+    case ParameterType::Integer:
+        break;
+    }
+    return v.toString();
+}
+} // namespace
+
+QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const ParameterSet& set,
+                                            const QMap<Axis, int>& driveAddresses)
+{
+    QMap<QString, QList<Row>> byDrive; // grouped per drive, drives in axis order
+    QList<Row> global;
+    for (const ParameterSpec& spec : schema.specs()) {
+        if (!set.contains(spec.name))
+            continue;
+        const ParameterValue& v = set.value(spec.name);
+        if (!v.isPerAxis()) {
+            global << Row{tr("all"), trParam(spec.label), shown(spec, v.global),
+                          trParam(spec.unit)};
+            continue;
+        }
+        for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
+            const QString drive =
+                driveAddresses.contains(a.key())
+                    ? tr("Drive %1 (%2)").arg(driveAddresses.value(a.key())).arg(axisName(a.key()))
+                    : axisName(a.key());
+            byDrive[QString::number(int(a.key())) + drive]
+                << Row{drive, trParam(spec.label), shown(spec, a.value()), trParam(spec.unit)};
+        }
+    }
+    QList<Row> out = global;
+    for (const QList<Row>& drive : std::as_const(byDrive))
+        out << drive;
+    return out;
+}
+
+WritePreview::WritePreview(const ParameterSchema& schema, const ParameterSet& set,
+                           const QMap<Axis, int>& driveAddresses, QWidget* parent)
+    : QDialog(parent), m_table(new QTableWidget(this))
+{
+    setObjectName(QStringLiteral("writePreview"));
+    setWindowTitle(tr("Write parameters"));
+    const QList<Row> list = rows(schema, set, driveAddresses);
+    auto* intro = new QLabel(
+        tr("These %n value(s) will be sent, and nothing else:", nullptr, int(list.size())), this);
+    intro->setWordWrap(true);
+    m_table->setColumnCount(4);
+    m_table->setHorizontalHeaderLabels({tr("Drive"), tr("Parameter"), tr("Value"), tr("Unit")});
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setRowCount(int(list.size()));
+    for (int r = 0; r < list.size(); ++r) {
+        const Row& row = list.at(r);
+        const QStringList cells{row.drive, row.parameter, row.value, row.unit};
+        for (int c = 0; c < cells.size(); ++c)
+            m_table->setItem(r, c, new QTableWidgetItem(cells.at(c)));
+    }
+    m_table->resizeColumnsToContents();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    auto* layout = new QVBoxLayout(this);
+    const QStringList warnings = WriteWarnings::collect(schema, set);
+    if (!warnings.isEmpty()) {
+        auto* warn = new QLabel(
+            tr("Please read before writing:<br>%1").arg(warnings.join(QStringLiteral("<br>"))),
+            this);
+        warn->setWordWrap(true);
+        warn->setStyleSheet(QStringLiteral("QLabel { background:#ffe082; padding:6px; }"));
+        layout->addWidget(warn);
+    }
+    layout->addWidget(intro);
+    layout->addWidget(m_table, 1);
+    auto* buttons = new QDialogButtonBox(this);
+    buttons->addButton(tr("Write"), QDialogButtonBox::AcceptRole)
+        ->setObjectName(QStringLiteral("writeButton"));
+    buttons->addButton(QDialogButtonBox::Cancel);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+    resize(560, 420);
+}
+
+int WritePreview::rowCount() const
+{
+    return m_table->rowCount();
+}
+
+} // namespace stepdeck::ui
