@@ -1,0 +1,353 @@
+// Link, connect sequence, status polling and the normalised status of the SMC-IC4.
+#include "EmisController.h"
+#include "EmisModel.h"
+#include "Logging.h"
+#include "transport/Transport.h"
+
+namespace stepdeck::emis {
+
+EmisController::EmisController(Transport* transport, const ControllerOptions& options,
+                               QObject* parent)
+    : Controller(transport, options, parent)
+{
+    for (Axis axis : allAxes()) {
+        m_tracks.insert(axis, Track{});
+        mutableStatus().axes.insert(axis, AxisStatus{});
+    }
+    for (int i = 0; i < kOutputCount; ++i)
+        mutableStatus().outputs << std::nullopt;
+    m_link = new EmisLink(transport, this);
+    m_link->setDefaultTimeout(options.commandTimeoutMs);
+    connect(m_link, &EmisLink::arrived, this, &EmisController::onArrived);
+    connect(m_link, &EmisLink::stray, this, [this](const QString& what) {
+        ++mutableStatus().resyncCount;
+        qCInfo(lcEmis) << what;
+    });
+    connect(m_link, &EmisLink::traffic, this,
+            [this](TrafficRecord::Direction dir, const QByteArray& bytes, bool poll) {
+                recordTraffic(dir, bytes, poll);
+            });
+    m_userPollMs = options.pollIntervalMs;
+    m_poller.setMissLimit(options.missedPollsForLinkLoss);
+    m_poller.setInterval(m_userPollMs);
+    connect(&m_poller, &StatusPoller::pollDue, this, &EmisController::onPollDue);
+    connect(&m_poller, &StatusPoller::linkLost, this, [this](int misses) {
+        onLinkLost(tr("the SMC-IC4 did not answer %1 input polls (@IG) in a row").arg(misses));
+    });
+    connect(&m_poller, &StatusPoller::rateChanged, this, &Controller::pollRateChanged);
+    m_deadlineTimer.setSingleShot(true);
+    connect(&m_deadlineTimer, &QTimer::timeout, this, &EmisController::checkDeadlines);
+    m_clock.start();
+    if (transport) {
+        connect(transport, &Transport::opened, this, &EmisController::onOpened);
+        connect(transport, &Transport::failed, this, &EmisController::onTransportFailed);
+    }
+    syncStatus();
+}
+
+EmisController::~EmisController() = default;
+
+Capabilities EmisController::capabilities() const
+{
+    return emis::capabilities();
+}
+
+ParameterSchema EmisController::schema() const
+{
+    return parameterSchema();
+}
+
+void EmisController::setPollInterval(int ms)
+{
+    m_userPollMs = qMax(1, ms);
+    m_poller.setInterval(m_userPollMs);
+}
+
+// ---------------------------------------------------------------- link
+
+void EmisController::openLink(RequestId id)
+{
+    if (linkState() == LinkState::Connected)
+        return finishOk(id);
+    if (!transport())
+        return finishError(id, ErrorKind::LinkDown, tr("no transport"));
+    if (m_openId)
+        return finishError(id, ErrorKind::Refused, tr("already connecting"));
+    m_openId = id;
+    for (Track& t : m_tracks) {
+        // A new session: positions count from here, nothing referenced. An axis that may
+        // still be moving stays unconfirmed until its arrival or a reference run proves it.
+        const bool unconfirmed = t.unconfirmed;
+        t = Track{};
+        t.unconfirmed = unconfirmed;
+    }
+    changeLink(LinkState::Connecting);
+    if (transport()->isOpen())
+        onOpened();
+    else
+        transport()->open(lineSettings());
+}
+
+void EmisController::onOpened()
+{
+    if (!m_openId)
+        return;
+    m_link->reset();
+    // 9.1 identifies the board; 9.15 tells the stored values (tolerant: the manual shows no
+    // example answer); 9.2 gives the inputs, so the first status is complete.
+    request(encode::version(), EmisLink::Expect::Ack, [this](const EmisLink::Result& r) {
+        if (r.outcome != EmisLink::Outcome::Ok) {
+            return finishOpen(r.outcome == EmisLink::Outcome::Timeout ? ErrorKind::Timeout
+                                                                      : failureKind(r),
+                              tr("no answer from an SMC-IC4 to @V (115200 baud 8N1): %1")
+                                  .arg(failureText(encode::version(), r)));
+        }
+        mutableStatus().deviceFirmware = parseVersion(r.text).value_or(QString());
+        readStoredParameters(0, [this](const EmisLink::Result& stored) {
+            if (stored.outcome != EmisLink::Outcome::Ok)
+                qCInfo(lcEmis) << "*PRSYS not understood; stored values unknown";
+            request(encode::allInputs(), EmisLink::Expect::Ack, [this](const EmisLink::Result& in) {
+                if (const auto levels = parseAllInputs(in.text))
+                    applyInputs(*levels);
+                finishOpen(ErrorKind::None, {});
+            });
+        });
+    });
+}
+
+void EmisController::finishOpen(ErrorKind kind, const QString& message)
+{
+    const RequestId id = std::exchange(m_openId, 0);
+    if (kind != ErrorKind::None) {
+        if (transport())
+            transport()->close();
+        changeLink(LinkState::Disconnected, message);
+        if (id)
+            finishError(id, kind, message);
+        return;
+    }
+    changeLink(LinkState::Connected);
+    m_poller.start();
+    publish();
+    if (id)
+        finishOk(id);
+}
+
+void EmisController::closeLink()
+{
+    m_poller.stop();
+    stopTrackingMotion(tr("connection closed"));
+    m_link->cancelAll();
+    if (transport() && transport()->isOpen())
+        transport()->close();
+    if (m_openId)
+        finishError(std::exchange(m_openId, 0), ErrorKind::Cancelled, tr("connection closed"));
+    changeLink(LinkState::Disconnected);
+}
+
+void EmisController::onTransportFailed(const QString& reason)
+{
+    m_poller.stop();
+    stopTrackingMotion(reason);
+    m_link->cancelAll();
+    if (m_openId)
+        finishError(std::exchange(m_openId, 0), ErrorKind::LinkDown, reason);
+    if (linkState() == LinkState::Connected || linkState() == LinkState::Connecting) {
+        changeLink(LinkState::Lost, reason);
+        Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
+    }
+}
+
+void EmisController::onLinkLost(const QString& reason)
+{
+    // The port works, the board is silent. Nothing could stop it anyway; the port stays open
+    // and openLink() starts over on it.
+    m_poller.stop();
+    stopTrackingMotion(reason);
+    m_link->cancelAll();
+    changeLink(LinkState::Lost, reason);
+    Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
+}
+
+void EmisController::stopTrackingMotion(const QString& reason)
+{
+    haltJogImmediately();
+    m_jogRates.clear();
+    m_jogSending = false;
+    m_jogSpeedChanged.clear(); // the work speeds the jog changed are unknown to the next session
+    for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
+        if (!it->awaiting)
+            continue;
+        it->awaiting = false;
+        it->overdue = false;
+        it->jogChunk = false;
+        markLost(it.key());
+        qCWarning(lcEmis) << "stopped tracking axis" << axisName(it.key())
+                          << "while it moved:" << reason;
+    }
+    m_deadlineTimer.stop();
+    updateMotionUnconfirmed();
+}
+
+// ---------------------------------------------------------------- requests
+
+void EmisController::request(const QByteArray& bytes, EmisLink::Expect expect, Handler done,
+                             int timeoutMs, int storedCount, bool exclusive)
+{
+    EmisLink::Request r;
+    r.bytes = bytes;
+    r.expect = expect;
+    r.timeoutMs = timeoutMs;
+    r.storedCount = storedCount;
+    r.exclusive = exclusive;
+    r.done = std::move(done);
+    m_link->submit(std::move(r));
+}
+
+bool EmisController::requireLink(RequestId id)
+{
+    if (linkState() == LinkState::Connected)
+        return true;
+    finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    return false;
+}
+
+ErrorKind EmisController::failureKind(const EmisLink::Result& r) const
+{
+    switch (r.outcome) {
+    case EmisLink::Outcome::Ok:
+        return ErrorKind::None;
+    case EmisLink::Outcome::Refused:
+        return ErrorKind::Nak;
+    case EmisLink::Outcome::Timeout:
+        return ErrorKind::Timeout;
+    case EmisLink::Outcome::Protocol:
+        return ErrorKind::Protocol;
+    case EmisLink::Outcome::Cancelled:
+        return ErrorKind::Cancelled;
+    }
+    return ErrorKind::Protocol;
+}
+
+QString EmisController::failureText(const QByteArray& bytes, const EmisLink::Result& r) const
+{
+    const QString command = formatTraffic(bytes);
+    switch (r.outcome) {
+    case EmisLink::Outcome::Ok:
+        return {};
+    case EmisLink::Outcome::Refused:
+        return tr("the SMC-IC4 refused '%1' (<BEL>: invalid value, or the motor is still "
+                  "moving)")
+            .arg(command);
+    case EmisLink::Outcome::Timeout:
+        return r.detail.isEmpty()
+                   ? tr("no reply to '%1' in time").arg(command)
+                   : tr("no complete reply to '%1' in time: %2").arg(command, r.detail);
+    case EmisLink::Outcome::Protocol:
+        return tr("unexpected reply to '%1': %2").arg(command, r.detail);
+    case EmisLink::Outcome::Cancelled:
+        return r.detail.isEmpty() ? tr("'%1' was cancelled (disconnect)").arg(command) : r.detail;
+    }
+    return {};
+}
+
+void EmisController::finishFailure(RequestId id, const QByteArray& bytes, const EmisLink::Result& r)
+{
+    finishError(id, failureKind(r), failureText(bytes, r));
+}
+
+// ---------------------------------------------------------------- status
+
+void EmisController::onPollDue()
+{
+    if (linkState() != LinkState::Connected || !m_link->isIdle() || m_link->isExclusive())
+        return; // commands first; an input program being written owns the line
+    m_poller.pollStarted();
+    EmisLink::Request r;
+    r.bytes = encode::allInputs();
+    r.poll = true;
+    r.timeoutMs = qMin(options().commandTimeoutMs, 200);
+    r.done = [this](const EmisLink::Result& res) {
+        if (res.outcome == EmisLink::Outcome::Cancelled)
+            return;
+        const auto levels =
+            res.outcome == EmisLink::Outcome::Ok ? parseAllInputs(res.text) : std::nullopt;
+        if (levels)
+            applyInputs(*levels);
+        m_poller.pollFinished(levels.has_value());
+        if (levels)
+            publish();
+    };
+    m_link->submit(std::move(r));
+}
+
+void EmisController::refreshStatus(RequestId id)
+{
+    if (!requireLink(id))
+        return;
+    request(encode::allInputs(), EmisLink::Expect::Ack, [this, id](const EmisLink::Result& r) {
+        if (r.outcome != EmisLink::Outcome::Ok)
+            return finishFailure(id, encode::allInputs(), r);
+        const auto levels = parseAllInputs(r.text);
+        if (!levels) {
+            return finishError(id, ErrorKind::Protocol,
+                               tr("@IG answered '%1', not eight input levels (9.2)")
+                                   .arg(QString::fromLatin1(r.text)));
+        }
+        applyInputs(*levels);
+        publish();
+        finishOk(id, QVariant::fromValue(status()));
+    });
+}
+
+void EmisController::applyInputs(const QList<bool>& levels)
+{
+    mutableStatus().inputs = levels;
+    qint64 word = 0;
+    for (int i = 0; i < levels.size(); ++i)
+        word |= levels[i] ? (qint64(1) << i) : 0;
+    mutableStatus().raw.insert(QStringLiteral("inputs"), word);
+}
+
+void EmisController::syncStatus()
+{
+    MachineStatus& s = mutableStatus();
+    bool busy = false;
+    for (auto it = m_tracks.cbegin(); it != m_tracks.cend(); ++it) {
+        const Track& t = it.value();
+        AxisStatus& a = s.axes[it.key()];
+        a.position = t.position;
+        a.referenced = t.referenced && !t.lost;
+        a.positionKnown = a.referenced;
+        a.positionEstimated = t.lost;
+        const bool running = t.awaiting && !t.overdue;
+        a.moving = running && !t.jogChunk;
+        a.jogging = (running && t.jogChunk) || m_jogRates.value(it.key(), 0.0) != 0.0;
+        a.limitSwitch = false; // the SMC-IC4 has no limit switch inputs
+        // 5.2.1: inputs 1-4 are the reference switches X, Y, Z, U; a normally open switch is
+        // active at high level, a normally closed one at low level.
+        const int index = int(it.key());
+        const bool level = s.inputs && index < s.inputs->size() && s.inputs->at(index);
+        a.referenceSwitch = m_known.switchNc.value(it.key(), false) ? !level : level;
+        busy = busy || running;
+    }
+    s.busy = busy;
+}
+
+void EmisController::publish()
+{
+    syncStatus();
+    publishStatus();
+}
+
+void EmisController::changeLink(LinkState state, const QString& reason)
+{
+    if (state == LinkState::Connecting || state == LinkState::Lost) {
+        for (Track& t : m_tracks)
+            t.referenced = false; // unknown until referenced in the new session
+    }
+    syncStatus(); // setLinkState() publishes: the base's jog estimate must not leak into it
+    setLinkState(state, reason);
+}
+
+} // namespace stepdeck::emis
