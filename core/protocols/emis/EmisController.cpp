@@ -93,6 +93,7 @@ void EmisController::onOpened()
     if (!m_openId)
         return;
     m_link->reset();
+    m_link->settle(kSettleMs);
     // 9.1 identifies the board; 9.15 tells the stored values (tolerant: the manual shows no
     // example answer); 9.2 gives the inputs, so the first status is complete.
     request(encode::version(), EmisLink::Expect::Ack, [this](const EmisLink::Result& r) {
@@ -332,6 +333,9 @@ void EmisController::syncStatus()
         busy = busy || running;
     }
     s.busy = busy;
+    // One supply feeds logic and motor drivers (manual 4): a board that answers has its
+    // drivers powered; there is no enable command.
+    s.driveOn = linkState() == LinkState::Connected;
 }
 
 void EmisController::publish()

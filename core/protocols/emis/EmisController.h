@@ -47,6 +47,7 @@ class EmisController : public Controller
 public:
     static constexpr double kJogChunkSeconds = 0.2;
     static constexpr int kStoreTimeoutMs = 3000; // per step of a flash write (##, programs)
+    static constexpr int kSettleMs = 50;         // after opening, stale input is dropped
 
     EmisController(Transport* transport, const ControllerOptions& options,
                    QObject* parent = nullptr);

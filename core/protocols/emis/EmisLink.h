@@ -67,6 +67,9 @@ public:
     bool isIdle() const { return !m_current && m_queue.empty() && !m_guard.isActive(); }
     bool busy() const { return m_current.has_value(); }
     void reset(); // after (re)opening: fresh decoder, nothing pending
+    // Drops whatever arrives in the next ms (stale replies of an earlier session waiting in
+    // the port's buffers) before the first command goes out.
+    void settle(int ms) { m_guard.start(ms); }
 
 Q_SIGNALS:
     void arrived(stepdeck::Axis axis);

@@ -68,9 +68,9 @@ bool currents(const ParameterSet& set, const CurrentPartners& partners,
                 Plan::tr("%1 of axis %2 needs %3 in the same set: the SMC-IC4 sets run and idle "
                          "current with one command (c,x100,20, manual 9.8) and the value of %3 "
                          "is not known")
-                    .arg(runKnown ? QStringLiteral("idle-current") : QStringLiteral("run-current"),
+                    .arg(runKnown ? QStringLiteral("run-current") : QStringLiteral("idle-current"),
                          axisName(a),
-                         runKnown ? QStringLiteral("run-current") : QStringLiteral("idle-current"));
+                         runKnown ? QStringLiteral("idle-current") : QStringLiteral("run-current"));
             return false;
         }
         out->insert(a, {run.contains(a) ? run[a] : partners.runKnown[a],

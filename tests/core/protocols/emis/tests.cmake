@@ -3,3 +3,4 @@ stepdeck_add_test(tst_emisgrammar SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emisgram
 stepdeck_add_test(tst_emissimulator SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emissimulator.cpp LABELS unit)
 stepdeck_add_test(tst_emiscontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emiscontroller.cpp ${CMAKE_CURRENT_LIST_DIR}/EmisControllerRig.h LABELS unit)
 stepdeck_add_test(tst_emiscontrollermotion SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emiscontrollermotion.cpp ${CMAKE_CURRENT_LIST_DIR}/EmisControllerRig.h LABELS unit)
+stepdeck_add_test(tst_emis_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emis_e2e.cpp LABELS integration)

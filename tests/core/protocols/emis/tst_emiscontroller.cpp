@@ -126,7 +126,8 @@ void TestEmisController::write_currentAlone_needsPartner()
     const int before = int(m_rig.commands().size());
     CommandResult r = m_rig.write({"run-current=80"});
     QCOMPARE(r.error, ErrorKind::InvalidValue);
-    QVERIFY(r.message.contains("idle-current"));
+    QVERIFY2(r.message.startsWith("run-current of axis X needs idle-current"),
+             qPrintable(r.message));
     QCOMPARE(m_rig.commands().size(), before);
     QVERIFY(m_rig.write({"run-current=80", "idle-current=10,0,25,5"}).ok());
     QVERIFY(m_rig.commands().contains("c,z80,25"));
