@@ -47,6 +47,9 @@ struct Capabilities
     // Programs stored per input that the device runs by itself (EMIS 9.17): model operations
     // "write-input-program", "erase-input-program".
     bool inputPrograms = false;
+    // false: the device chooses the direction of its reference runs (EMIS 9.9); a reference
+    // request then takes 1 (reference this axis) or 0 (leave it out) per axis.
+    bool referenceDirection = true;
     double maxJogSpeed = 1000;            // steps/s, the ceiling a jog source may request
     double defaultJogAcceleration = 2000; // steps/s^2 for the host-side JogRamp
 

@@ -94,9 +94,17 @@ void EmisController::onOpened()
         return;
     m_link->reset();
     m_link->settle(kSettleMs);
-    // 9.1 identifies the board; 9.15 tells the stored values (tolerant: the manual shows no
-    // example answer); 9.2 gives the inputs, so the first status is complete.
-    request(encode::version(), EmisLink::Expect::Ack, [this](const EmisLink::Result& r) {
+    identify(1);
+}
+
+void EmisController::identify(int retries)
+{
+    // 9.1 identifies the board (once more after a timeout: a board just powered up may miss
+    // the first command); 9.15 tells the stored values (tolerant: the manual shows no example
+    // answer); 9.2 gives the inputs, so the first status is complete.
+    request(encode::version(), EmisLink::Expect::Ack, [this, retries](const EmisLink::Result& r) {
+        if (r.outcome == EmisLink::Outcome::Timeout && retries > 0 && m_openId)
+            return identify(retries - 1);
         if (r.outcome != EmisLink::Outcome::Ok) {
             return finishOpen(r.outcome == EmisLink::Outcome::Timeout ? ErrorKind::Timeout
                                                                       : failureKind(r),
@@ -118,6 +126,8 @@ void EmisController::onOpened()
 
 void EmisController::finishOpen(ErrorKind kind, const QString& message)
 {
+    if (!m_openId)
+        return; // closed or failed meanwhile: already finished
     const RequestId id = std::exchange(m_openId, 0);
     if (kind != ErrorKind::None) {
         if (transport())

@@ -24,7 +24,8 @@ namespace stepdeck::emis {
 // modelOperation() names (args -> result value):
 //   "set-output"              {output 1..7, on}                      A<n>,<0|1> (9.3)
 //   "reference"               {axes "XYZU", simultaneous=false}      $H... (9.9)
-//   "store-parameters"        {parameters: ParameterSet}             "##" writes (9.14)
+//   "store-parameters"        {parameters: ParameterSet, skipUnstorable=false} -> {commands,
+//                             skipped}                              "##" writes (9.14)
 //   "read-stored-parameters"  {} -> {parameters: ParameterSet, entries: [text], notes: [text]}
 //   "clear-stored-parameters" {}                                     *PESYS (9.16)
 //   "write-input-program"     {input 1..8, title, commands: [text], force=false} (9.17)
@@ -110,6 +111,7 @@ private:
 
     // --- link and status (EmisController.cpp) ---
     void onOpened();
+    void identify(int retries);
     void onTransportFailed(const QString& reason);
     void onLinkLost(const QString& reason);
     void finishOpen(ErrorKind kind, const QString& message);

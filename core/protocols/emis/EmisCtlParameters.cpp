@@ -56,10 +56,10 @@ void EmisController::writeParameters(RequestId id, const ParameterSet& values, b
         return finishError(id, ErrorKind::Refused,
                            tr("parameters are written while every axis stands still"));
     }
-    CurrentPartners partners;
-    partners.runKnown = intsOf(m_written.value(QStringLiteral("run-current")));
-    partners.idleKnown = intsOf(m_written.value(QStringLiteral("idle-current")));
-    const ParameterPlan plan = planWorking(values, partners);
+    // The partner of a lone run or idle current: written in this session, else the stored
+    // power-on value (*PRSYS at connect).
+    const ParameterPlan plan =
+        planWorking(values, CurrentPartners{m_known.runCurrent, m_known.idleCurrent});
     if (!plan.ok())
         return finishError(id, plan.error, plan.message);
     runFrames(id, plan.frames, 0, [this, id, values] {
@@ -167,7 +167,17 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
 {
     if (!requireLink(id))
         return;
-    const ParameterSet set = args.value(QStringLiteral("parameters")).value<ParameterSet>();
+    ParameterSet set = args.value(QStringLiteral("parameters")).value<ParameterSet>();
+    // skipUnstorable: a whole setup form; what has no system entry is left out and named.
+    QStringList skipped;
+    if (args.value(QStringLiteral("skipUnstorable")).toBool()) {
+        for (const QString& name : set.keys()) {
+            if (!storableParameters().contains(name)) {
+                set.remove(name);
+                skipped << name;
+            }
+        }
+    }
     if (set.isEmpty())
         return finishError(id, ErrorKind::InvalidValue, tr("no parameters to store"));
     if (const QString e = schema().validate(set, allAxes()); !e.isEmpty())
@@ -184,7 +194,7 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
     const ParameterPlan plan = planStore(set, partners);
     if (!plan.ok())
         return finishError(id, plan.error, plan.message);
-    runFrames(id, plan.frames, 0, [this, id, plan, set] {
+    runFrames(id, plan.frames, 0, [this, id, plan, set, skipped] {
         QStringList written;
         for (const ParameterPlan::Frame& f : plan.frames) {
             written << QString::fromLatin1(f.bytes.chopped(1));
@@ -194,7 +204,8 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
         noteStored(m_stored);
         if (set.contains(QStringLiteral("reference-switch-type")))
             publish(); // the switch type applies at once
-        finishOk(id, QVariantMap{{QStringLiteral("commands"), texts(written)}});
+        finishOk(id, QVariantMap{{QStringLiteral("commands"), texts(written)},
+                                 {QStringLiteral("skipped"), texts(skipped)}});
     });
 }
 

@@ -33,6 +33,7 @@ Capabilities capabilities()
     caps.digitalOutputs = kOutputCount;
     caps.storedParameters = true;
     caps.inputPrograms = true;
+    caps.referenceDirection = false; // "$Hx" has no direction (9.9)
     return caps;
 }
 
@@ -41,17 +42,17 @@ ParameterSpec spec(const char* name, const char* label, const char* group, const
                    qint64 minimum, qint64 maximum, bool perAxis, QVariant def, const char* desc)
 {
     ParameterSpec s;
-    s.name = QString::fromLatin1(name);
-    s.label = QString::fromLatin1(label);
-    s.group = QString::fromLatin1(group);
-    s.unit = QString::fromLatin1(unit);
+    s.name = QString::fromUtf8(name);
+    s.label = QString::fromUtf8(label);
+    s.group = QString::fromUtf8(group);
+    s.unit = QString::fromUtf8(unit);
     s.type = ParameterType::Integer;
     s.minimum = minimum;
     s.maximum = maximum;
     s.perAxis = perAxis;
     s.readable = false; // no command reads a working value back; `get` reports *PRSYS
     s.defaultValue = std::move(def);
-    s.description = QString::fromLatin1(desc);
+    s.description = QString::fromUtf8(desc);
     return s;
 }
 } // namespace
@@ -114,7 +115,6 @@ ParameterSchema parameterSchema()
 // ---- presentation ----
 
 namespace {
-constexpr const char* kContext = "stepdeck::emis::Presentation";
 
 const char* controlName(char c)
 {
@@ -186,10 +186,10 @@ bool parseTraffic(const QString& text, QByteArray* bytes, QString* error)
             }
             if (!known) {
                 if (error)
-                    *error =
-                        QCoreApplication::translate(kContext, "unknown control name at column %1 "
-                                                              "(known: <CR> <STX> <ETX> <xNN>)")
-                            .arg(i + 1);
+                    *error = QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                         "unknown control name at column %1 "
+                                                         "(known: <CR> <STX> <ETX> <xNN>)")
+                                 .arg(i + 1);
                 return false;
             }
             i = end;
@@ -197,7 +197,8 @@ bool parseTraffic(const QString& text, QByteArray* bytes, QString* error)
             out += char(ch.unicode());
         } else {
             if (error)
-                *error = QCoreApplication::translate(kContext, "non-ASCII character at column %1")
+                *error = QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                     "non-ASCII character at column %1")
                              .arg(i + 1);
             return false;
         }
@@ -214,25 +215,35 @@ ModelPresentation presentation()
     p.statusWords = [] {
         StatusWordInfo w;
         w.key = QStringLiteral("inputs");
-        w.title = QCoreApplication::translate(kContext, "Inputs (@IG, 9.2)");
+        w.title = QCoreApplication::translate("stepdeck::emis::Presentation", "Inputs (@IG, 9.2)");
         w.width = 8;
         for (int i = 0; i < kInputCount; ++i) {
             StatusBitInfo bit;
             bit.bit = i;
             bit.name = QStringLiteral("IN%1").arg(i + 1);
             bit.description =
-                i < 4 ? QCoreApplication::translate(kContext,
+                i < 4 ? QCoreApplication::translate("stepdeck::emis::Presentation",
                                                     "Input %1: reference switch of axis %2 (or a "
                                                     "free input when no switch is wired).")
                             .arg(i + 1)
                             .arg(axisName(Axis(i)))
-                      : QCoreApplication::translate(kContext, "Input %1: free input.").arg(i + 1);
+                      : QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                    "Input %1: free input.")
+                            .arg(i + 1);
             w.bits << bit;
         }
         return QList<StatusWordInfo>{w};
     };
     p.formatTraffic = &formatTraffic;
     p.parseTraffic = &parseTraffic;
+    p.checkProgramCommand = [](const QString& line) {
+        for (QChar c : line) {
+            if (c.unicode() < 0x20 || c.unicode() >= 0x7F)
+                return QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                   "not printable ASCII");
+        }
+        return validateProgramLine(line.trimmed().toLatin1());
+    };
     return p;
 }
 

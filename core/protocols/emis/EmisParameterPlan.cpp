@@ -65,9 +65,10 @@ bool currents(const ParameterSet& set, const CurrentPartners& partners,
         if (!runKnown || !idleKnown) {
             plan->error = ErrorKind::InvalidValue;
             plan->message =
-                Plan::tr("%1 of axis %2 needs %3 in the same set: the SMC-IC4 sets run and idle "
-                         "current with one command (c,x100,20, manual 9.8) and the value of %3 "
-                         "is not known")
+                ParameterPlan::tr(
+                    "%1 of axis %2 needs %3 in the same set: the SMC-IC4 sets run and idle "
+                    "current with one command (c,x100,20, manual 9.8) and the value of %3 "
+                    "is not known")
                     .arg(runKnown ? QStringLiteral("run-current") : QStringLiteral("idle-current"),
                          axisName(a),
                          runKnown ? QStringLiteral("idle-current") : QStringLiteral("run-current"));
@@ -172,9 +173,10 @@ ParameterPlan planStore(const ParameterSet& set, const CurrentPartners& partners
     }
     if (!notStorable.isEmpty()) {
         plan.error = ErrorKind::Unsupported;
-        plan.message = Plan::tr("%1 cannot be stored: the SMC-IC4 has no system parameter for "
-                                "it (manual 9.14); use set")
-                           .arg(names(notStorable));
+        plan.message =
+            ParameterPlan::tr("%1 cannot be stored: the SMC-IC4 has no system parameter for "
+                              "it (manual 9.14); use set")
+                .arg(names(notStorable));
         return plan;
     }
     QMap<Axis, QPair<qint64, qint64>> runIdle;
@@ -252,7 +254,8 @@ ParameterSet storedValues(const SystemParameters& stored, QStringList* notes)
                 same = same && v == first;
             out.insert(QStringLiteral("reference-speed"), ParameterValue{first, {}});
             if (!same && notes) {
-                *notes << Plan::tr("reference-speed is stored per motor (%1); %2 is the first")
+                *notes << ParameterPlan::tr(
+                              "reference-speed is stored per motor (%1); %2 is the first")
                               .arg(QString::fromLatin1(formatSystemEntry(*e)))
                               .arg(first);
             }
@@ -263,8 +266,9 @@ ParameterSet storedValues(const SystemParameters& stored, QStringList* notes)
             break;
         case Key::SmcFlex:
             if (notes) {
-                *notes << Plan::tr("an SMCflex compatibility entry is stored (%1); store --clear "
-                                   "(*PESYS) erases it")
+                *notes << ParameterPlan::tr(
+                              "an SMCflex compatibility entry is stored (%1); store --clear "
+                              "(*PESYS) erases it")
                               .arg(QString::fromLatin1(formatSystemEntry(*e)));
             }
             break;
@@ -274,8 +278,8 @@ ParameterSet storedValues(const SystemParameters& stored, QStringList* notes)
         QStringList raw;
         for (const QByteArray& u : stored.unparsed)
             raw << QString::fromLatin1(u);
-        *notes
-            << Plan::tr("not understood in the *PRSYS answer: %1").arg(raw.join(QLatin1Char(' ')));
+        *notes << ParameterPlan::tr("not understood in the *PRSYS answer: %1")
+                      .arg(raw.join(QLatin1Char(' ')));
     }
     return out;
 }

@@ -26,8 +26,8 @@ public:
 
 // Run and idle current are written together ("c,x100,20", 9.8; "##c,x100,0,...", 9.14): a
 // set that names only one of them takes the other from `runKnown` / `idleKnown` (the values
-// the adapter knows: written in this session for `set`, stored for `store`), or fails with
-// InvalidValue naming what is missing.
+// the adapter knows: written in this session or stored for `set`, stored for `store`), or
+// fails with InvalidValue naming what is missing.
 struct CurrentPartners
 {
     QMap<Axis, qint64> runKnown;
