@@ -1001,6 +1001,114 @@
             <source>Most recent entry of the error memory (5.15)</source>
             <translation>Jüngster Eintrag des Fehlerspeichers (5.15)</translation>
         </message>
+        <message>
+            <source>Speed at which every move starts and ends its ramp (#S, 9.4)</source>
+            <translation>Geschwindigkeit, mit der jede Fahrt ihre Rampe beginnt und beendet (#S, 9.4)</translation>
+        </message>
+        <message>
+            <source>Work speed</source>
+            <translation>Arbeitsgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Speed of vector moves after the ramp (#E1, 9.5)</source>
+            <translation>Geschwindigkeit der Vektorfahrten nach der Rampe (#E1, 9.5)</translation>
+        </message>
+        <message>
+            <source>Time from start speed to work speed and back, all motors (#R, 9.6)</source>
+            <translation>Zeit von der Start- zur Arbeitsgeschwindigkeit und zurück, alle Motoren (#R, 9.6)</translation>
+        </message>
+        <message>
+            <source>Referencing</source>
+            <translation>Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>Reference speed</source>
+            <translation>Referenzgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>Speed of reference runs, one value for all motors (#E9, 9.5)</source>
+            <translation>Geschwindigkeit der Referenzfahrten, ein Wert für alle Motoren (#E9, 9.5)</translation>
+        </message>
+        <message>
+            <source>Offset after referencing</source>
+            <translation>Offset nach Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>Steps the motor moves out of its switch after a reference run (#O, 9.10); not a system parameter</source>
+            <translation>Schritte, die der Motor nach der Referenzfahrt aus dem Schalter fährt (#O, 9.10); kein Systemparameter</translation>
+        </message>
+        <message>
+            <source>Reference switch type</source>
+            <translation>Referenzschaltertyp</translation>
+        </message>
+        <message>
+            <source>NO: normally open (Schließer, the default), NC: normally closed (Öffner); inputs 1-4 (##REFSW, 9.14, 5.2.1)</source>
+            <translation>NO: Schließer (Standard), NC: Öffner; Eingänge 1-4 (##REFSW, 9.14, 5.2.1)</translation>
+        </message>
+        <message>
+            <source>NO</source>
+            <translation>NO</translation>
+        </message>
+        <message>
+            <source>NC</source>
+            <translation>NC</translation>
+        </message>
+        <message>
+            <source>The type must match the wired switches, or reference runs end in the wrong place. It is stored in the board's system parameters and kept after power-off.</source>
+            <translation>Der Typ muss zu den verdrahteten Schaltern passen, sonst enden Referenzfahrten an der falschen Stelle. Er wird in den Systemparametern der Steuerung gespeichert und bleibt nach dem Ausschalten erhalten.</translation>
+        </message>
+        <message>
+            <source>Drive</source>
+            <translation>Antrieb</translation>
+        </message>
+        <message>
+            <source>Step resolution</source>
+            <translation>Schrittauflösung</translation>
+        </message>
+        <message>
+            <source>microsteps</source>
+            <translation>Mikroschritte</translation>
+        </message>
+        <message>
+            <source>Microsteps per full step (D, 9.7)</source>
+            <translation>Mikroschritte je Vollschritt (D, 9.7)</translation>
+        </message>
+        <message>
+            <source>Changes the length of a step: every position, distance and speed in steps changes its meaning.</source>
+            <translation>Ändert die Länge eines Schritts: jede Position, Strecke und Geschwindigkeit in Schritten bekommt eine andere Bedeutung.</translation>
+        </message>
+        <message>
+            <source>Run current</source>
+            <translation>Arbeitsstrom</translation>
+        </message>
+        <message>
+            <source>Motor current while moving, % of the driver's rating (c, 9.8)</source>
+            <translation>Motorstrom während der Fahrt, % vom Nennstrom der Endstufe (c, 9.8)</translation>
+        </message>
+        <message>
+            <source>A current above the motor's rating overheats motor and driver stage.</source>
+            <translation>Ein Strom über dem Nennstrom des Motors überhitzt Motor und Endstufe.</translation>
+        </message>
+        <message>
+            <source>Motor current at standstill, % of the driver's rating (c, 9.8); 0 leaves the motor without holding torque</source>
+            <translation>Motorstrom im Stillstand, % vom Nennstrom der Endstufe (c, 9.8); 0 lässt den Motor ohne Haltemoment</translation>
+        </message>
+        <message>
+            <source>Interpolation</source>
+            <translation>Interpolation</translation>
+        </message>
+        <message>
+            <source>On: the axes of a vector move arrive together; off: each axis moves at its own speed (IP, 9.12)</source>
+            <translation>Ein: die Achsen einer Vektorfahrt kommen gleichzeitig ins Ziel; aus: jede Achse fährt mit ihrer eigenen Geschwindigkeit (IP, 9.12)</translation>
+        </message>
+        <message>
+            <source>128</source>
+            <translation>128</translation>
+        </message>
+        <message>
+            <source>256</source>
+            <translation>256</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -1733,6 +1841,370 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::emis::EmisController</name>
+        <message>
+            <source>the SMC-IC4 did not answer %1 input polls (@IG) in a row</source>
+            <translation>die SMC-IC4 hat %1 Eingangsabfragen (@IG) in Folge nicht beantwortet</translation>
+        </message>
+        <message>
+            <source>no transport</source>
+            <translation>keine Übertragungsstrecke</translation>
+        </message>
+        <message>
+            <source>already connecting</source>
+            <translation>Verbindung wird bereits aufgebaut</translation>
+        </message>
+        <message>
+            <source>no answer from an SMC-IC4 to @V (115200 baud 8N1): %1</source>
+            <translation>keine Antwort einer SMC-IC4 auf @V (115200 Baud 8N1): %1</translation>
+        </message>
+        <message>
+            <source>connection closed</source>
+            <translation>Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>Verbindung verloren: %1</translation>
+        </message>
+        <message>
+            <source>not connected</source>
+            <translation>nicht verbunden</translation>
+        </message>
+        <message>
+            <source>the SMC-IC4 refused '%1' (&lt;BEL&gt;: invalid value, or the motor is still moving)</source>
+            <translation>die SMC-IC4 hat '%1' abgelehnt (&lt;BEL&gt;: ungültiger Wert, oder der Motor fährt noch)</translation>
+        </message>
+        <message>
+            <source>no reply to '%1' in time</source>
+            <translation>keine Antwort auf '%1' in der vorgesehenen Zeit</translation>
+        </message>
+        <message>
+            <source>no complete reply to '%1' in time: %2</source>
+            <translation>keine vollständige Antwort auf '%1' in der vorgesehenen Zeit: %2</translation>
+        </message>
+        <message>
+            <source>unexpected reply to '%1': %2</source>
+            <translation>unerwartete Antwort auf '%1': %2</translation>
+        </message>
+        <message>
+            <source>'%1' was cancelled (disconnect)</source>
+            <translation>'%1' wurde abgebrochen (Verbindung getrennt)</translation>
+        </message>
+        <message>
+            <source>@IG answered '%1', not eight input levels (9.2)</source>
+            <translation>@IG antwortete '%1' statt acht Eingangspegeln (9.2)</translation>
+        </message>
+        <message>
+            <source>jog refused: an input program is being written</source>
+            <translation>Tippbetrieb abgelehnt: ein Eingangsprogramm wird gerade geschrieben</translation>
+        </message>
+        <message>
+            <source>jog refused: an axis may still be moving (its arrival never came); reference it first</source>
+            <translation>Tippbetrieb abgelehnt: eine Achse fährt womöglich noch (ihre Ankunft kam nie); zuerst referenzieren</translation>
+        </message>
+        <message>
+            <source>after jogging, the work speed of axis %1 stays at %2 steps/s: its value before is not known (write work-speed)</source>
+            <translation>nach dem Tippbetrieb bleibt die Arbeitsgeschwindigkeit der Achse %1 bei %2 Schritten/s: ihr Wert davor ist nicht bekannt (work-speed schreiben)</translation>
+        </message>
+        <message>
+            <source>axis %1 is still moving (its arrival &lt;DC%2&gt; has not come; the board would answer &lt;BEL&gt;)</source>
+            <translation>Achse %1 fährt noch (ihre Ankunft &lt;DC%2&gt; ist nicht gekommen; die Steuerung würde mit &lt;BEL&gt; antworten)</translation>
+        </message>
+        <message>
+            <source>axis %1 is jogging</source>
+            <translation>Achse %1 ist im Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>axis %1: the arrival of its last move never came, it may still be moving; reference it first</source>
+            <translation>Achse %1: die Ankunft ihrer letzten Fahrt kam nie, sie fährt womöglich noch; zuerst referenzieren</translation>
+        </message>
+        <message>
+            <source>move of axis %1 by %2 steps is out of range (allowed: -%3..%3)</source>
+            <translation>Fahrt der Achse %1 um %2 Schritte liegt außerhalb des Bereichs (erlaubt: -%3..%3)</translation>
+        </message>
+        <message>
+            <source>absolute move refused: position of axis %1 is unknown, reference it first</source>
+            <translation>Absolutfahrt abgelehnt: Position der Achse %1 ist unbekannt, zuerst referenzieren</translation>
+        </message>
+        <message>
+            <source>target %1 of axis %2 is out of range (allowed: -%3..%3)</source>
+            <translation>Ziel %1 der Achse %2 liegt außerhalb des Bereichs (erlaubt: -%3..%3)</translation>
+        </message>
+        <message>
+            <source>move refused: %1</source>
+            <translation>Fahrt abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>move refused: an input program is being written</source>
+            <translation>Fahrt abgelehnt: ein Eingangsprogramm wird gerade geschrieben</translation>
+        </message>
+        <message>
+            <source>axis %1: the SMC-IC4 chooses the direction of its reference run itself (9.9); use 1 to reference the axis, 0 to leave it out</source>
+            <translation>Achse %1: die SMC-IC4 wählt die Richtung ihrer Referenzfahrt selbst (9.9); 1 referenziert die Achse, 0 lässt sie aus</translation>
+        </message>
+        <message>
+            <source>name at least one axis to reference</source>
+            <translation>mindestens eine Achse zum Referenzieren angeben</translation>
+        </message>
+        <message>
+            <source>reference run refused: %1</source>
+            <translation>Referenzfahrt abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>reference run refused: an input program is being written</source>
+            <translation>Referenzfahrt abgelehnt: ein Eingangsprogramm wird gerade geschrieben</translation>
+        </message>
+        <message>
+            <source>axis %1: its arrival &lt;DC%2&gt; did not come in time; it may still be moving (use the machine's emergency stop if it does); its position is unknown until it is referenced</source>
+            <translation>Achse %1: ihre Ankunft &lt;DC%2&gt; kam nicht rechtzeitig; sie fährt womöglich noch (dann den Not-Halt der Maschine benutzen); ihre Position ist bis zur Referenzfahrt unbekannt</translation>
+        </message>
+        <message>
+            <source>output '%1' does not exist (outputs 1..%2, manual 9.3)</source>
+            <translation>Ausgang '%1' gibt es nicht (Ausgänge 1..%2, Handbuch 9.3)</translation>
+        </message>
+        <message>
+            <source>unknown axis '%1' (this machine has X, Y, Z, U)</source>
+            <translation>unbekannte Achse '%1' (diese Maschine hat X, Y, Z, U)</translation>
+        </message>
+        <message>
+            <source>input '%1' does not exist (inputs 1..%2)</source>
+            <translation>Eingang '%1' gibt es nicht (Eingänge 1..%2)</translation>
+        </message>
+        <message>
+            <source>the program title must be printable ASCII of at most %1 characters (no umlauts)</source>
+            <translation>der Programmtitel muss aus höchstens %1 druckbaren ASCII-Zeichen bestehen (keine Umlaute)</translation>
+        </message>
+        <message>
+            <source>not printable ASCII</source>
+            <translation>kein druckbares ASCII</translation>
+        </message>
+        <message>
+            <source>program command %1 ('%2'): %3</source>
+            <translation>Programmbefehl %1 ('%2'): %3</translation>
+        </message>
+        <message>
+            <source>a program needs at least one command</source>
+            <translation>ein Programm braucht mindestens einen Befehl</translation>
+        </message>
+        <message>
+            <source>input %1 carries the reference switch of axis %2: a program on it can make the controller misbehave (manual 5.2.2); force it only if no switch is wired there</source>
+            <translation>an Eingang %1 liegt der Referenzschalter der Achse %2: ein Programm darauf kann zu Fehlverhalten der Steuerung führen (Handbuch 5.2.2); nur erzwingen, wenn dort kein Schalter angeschlossen ist</translation>
+        </message>
+        <message>
+            <source>input programs are written while every axis stands still</source>
+            <translation>Eingangsprogramme werden geschrieben, während alle Achsen stillstehen</translation>
+        </message>
+        <message>
+            <source>the partial program was erased (*PEIN%1)</source>
+            <translation>das unvollständige Programm wurde gelöscht (*PEIN%1)</translation>
+        </message>
+        <message>
+            <source>erasing the partial program (*PEIN%1) failed too: check the input before using it</source>
+            <translation>das Löschen des unvollständigen Programms (*PEIN%1) ist ebenfalls fehlgeschlagen: den Eingang vor der Benutzung prüfen</translation>
+        </message>
+        <message>
+            <source>program for input %1 not stored: %2; %3</source>
+            <translation>Programm für Eingang %1 nicht gespeichert: %2; %3</translation>
+        </message>
+        <message>
+            <source>the console sends one SMC-IC4 command at a time</source>
+            <translation>die Konsole sendet jeweils einen SMC-IC4-Befehl</translation>
+        </message>
+        <message>
+            <source>input programs are written with the program editor, not the console</source>
+            <translation>Eingangsprogramme werden mit dem Programmeditor geschrieben, nicht mit der Konsole</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message numerus="yes">
+            <source> (%n command(s) before it were accepted)</source>
+            <translation>
+                <numerusform> (%n Befehl davor wurde angenommen)</numerusform>
+                <numerusform> (%n Befehle davor wurden angenommen)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>parameters are written while every axis stands still</source>
+            <translation>Parameter werden geschrieben, während alle Achsen stillstehen</translation>
+        </message>
+        <message>
+            <source>unknown parameter '%1'</source>
+            <translation>unbekannter Parameter '%1'</translation>
+        </message>
+        <message>
+            <source>%1 cannot be read back: the SMC-IC4 reports no working values (only the stored system parameters, *PRSYS)</source>
+            <translation>%1 kann nicht zurückgelesen werden: die SMC-IC4 meldet keine Arbeitswerte (nur die gespeicherten Systemparameter, *PRSYS)</translation>
+        </message>
+        <message>
+            <source>no parameters to store</source>
+            <translation>keine Parameter zum Speichern</translation>
+        </message>
+        <message>
+            <source>system parameters are stored while every axis stands still</source>
+            <translation>Systemparameter werden gespeichert, während alle Achsen stillstehen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::EmisLink</name>
+        <message>
+            <source>the link is not open</source>
+            <translation>die Verbindung ist nicht offen</translation>
+        </message>
+        <message>
+            <source>garbage on the line: %1</source>
+            <translation>unlesbare Daten auf der Leitung: %1</translation>
+        </message>
+        <message>
+            <source>reply nobody waited for: '%1' (late, or sent by the board by itself)</source>
+            <translation>Antwort, auf die niemand wartete: '%1' (verspätet, oder von der Steuerung selbst gesendet)</translation>
+        </message>
+        <message>
+            <source>&lt;NAK&gt; instead of &lt;ACK&gt;</source>
+            <translation>&lt;NAK&gt; statt &lt;ACK&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;ACK&gt; instead of &lt;NAK&gt;</source>
+            <translation>&lt;ACK&gt; statt &lt;NAK&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;NAK&gt; while storing</source>
+            <translation>&lt;NAK&gt; beim Speichern</translation>
+        </message>
+        <message>
+            <source>'%1' where "Ready!" was expected</source>
+            <translation>'%1', wo "Ready!" erwartet war</translation>
+        </message>
+        <message>
+            <source>no "Ready!" after the first &lt;ACK&gt;</source>
+            <translation>kein "Ready!" nach dem ersten &lt;ACK&gt;</translation>
+        </message>
+        <message>
+            <source>%1 of %2 entries acknowledged after "Ready!"</source>
+            <translation>%1 von %2 Einträgen nach "Ready!" quittiert</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::Grammar</name>
+        <message>
+            <source>'%1' is malformed (see the SMC-IC4 manual, chapter 9)</source>
+            <translation>'%1' ist fehlerhaft (siehe SMC-IC4-Handbuch, Kapitel 9)</translation>
+        </message>
+        <message>
+            <source>'%1' names axis %2 twice</source>
+            <translation>'%1' nennt Achse %2 zweimal</translation>
+        </message>
+        <message>
+            <source>unknown command '%1'</source>
+            <translation>unbekannter Befehl '%1'</translation>
+        </message>
+        <message>
+            <source>%1: value %2 is out of range (allowed: %3..%4)</source>
+            <translation>%1: Wert %2 liegt außerhalb des Bereichs (erlaubt: %3..%4)</translation>
+        </message>
+        <message>
+            <source>%1: %2 is not a step resolution (1, 2, 4, ..., 256)</source>
+            <translation>%1: %2 ist keine Schrittauflösung (1, 2, 4, ..., 256)</translation>
+        </message>
+        <message>
+            <source>text before &lt;ETX&gt;: '%1'</source>
+            <translation>Text vor &lt;ETX&gt;: '%1'</translation>
+        </message>
+        <message>
+            <source>a command holds printable ASCII characters only</source>
+            <translation>ein Befehl enthält nur druckbare ASCII-Zeichen</translation>
+        </message>
+        <message>
+            <source>empty command</source>
+            <translation>leerer Befehl</translation>
+        </message>
+        <message>
+            <source>a program header ends with &lt;STX&gt;, not &lt;CR&gt;</source>
+            <translation>ein Programmkopf endet mit &lt;STX&gt;, nicht mit &lt;CR&gt;</translation>
+        </message>
+        <message>
+            <source>program title longer than %1 characters</source>
+            <translation>Programmtitel länger als %1 Zeichen</translation>
+        </message>
+        <message>
+            <source>'%1' cannot be part of an input program: queries, system parameters and program commands are not stored</source>
+            <translation>'%1' kann nicht Teil eines Eingangsprogramms sein: Abfragen, Systemparameter und Programmbefehle werden nicht gespeichert</translation>
+        </message>
+        <message>
+            <source>system parameter '%1' is malformed (see the manual, 9.14)</source>
+            <translation>Systemparameter '%1' ist fehlerhaft (siehe Handbuch, 9.14)</translation>
+        </message>
+        <message>
+            <source>unknown system parameter '%1' (9.14 knows D, c, REFSW, S, E, E9, R)</source>
+            <translation>unbekannter Systemparameter '%1' (9.14 kennt D, c, REFSW, S, E, E9, R)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::ParameterPlan</name>
+        <message>
+            <source>%1 of axis %2 needs %3 in the same set: the SMC-IC4 sets run and idle current with one command (c,x100,20, manual 9.8) and the value of %3 is not known</source>
+            <translation>%1 der Achse %2 braucht %3 im selben Satz: die SMC-IC4 setzt Arbeits- und Ruhestrom mit einem Befehl (c,x100,20, Handbuch 9.8), und der Wert von %3 ist nicht bekannt</translation>
+        </message>
+        <message>
+            <source>%1 cannot be stored: the SMC-IC4 has no system parameter for it (manual 9.14); use set</source>
+            <translation>%1 kann nicht gespeichert werden: die SMC-IC4 hat dafür keinen Systemparameter (Handbuch 9.14); set verwenden</translation>
+        </message>
+        <message>
+            <source>reference-speed is stored per motor (%1); %2 is the first</source>
+            <translation>reference-speed ist je Motor gespeichert (%1); %2 ist der erste Wert</translation>
+        </message>
+        <message>
+            <source>an SMCflex compatibility entry is stored (%1); store --clear (*PESYS) erases it</source>
+            <translation>ein Eintrag für SMCflex-Kompatibilität ist gespeichert (%1); store --clear (*PESYS) löscht ihn</translation>
+        </message>
+        <message>
+            <source>not understood in the *PRSYS answer: %1</source>
+            <translation>in der *PRSYS-Antwort nicht verstanden: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::Presentation</name>
+        <message>
+            <source>unknown control name at column %1 (known: &lt;CR&gt; &lt;STX&gt; &lt;ETX&gt; &lt;xNN&gt;)</source>
+            <translation>unbekannter Steuerzeichenname in Spalte %1 (bekannt: &lt;CR&gt; &lt;STX&gt; &lt;ETX&gt; &lt;xNN&gt;)</translation>
+        </message>
+        <message>
+            <source>non-ASCII character at column %1</source>
+            <translation>Nicht-ASCII-Zeichen in Spalte %1</translation>
+        </message>
+        <message>
+            <source>Inputs (@IG, 9.2)</source>
+            <translation>Eingänge (@IG, 9.2)</translation>
+        </message>
+        <message>
+            <source>Input %1: reference switch of axis %2 (or a free input when no switch is wired).</source>
+            <translation>Eingang %1: Referenzschalter der Achse %2 (oder ein freier Eingang, wenn kein Schalter angeschlossen ist).</translation>
+        </message>
+        <message>
+            <source>Input %1: free input.</source>
+            <translation>Eingang %1: freier Eingang.</translation>
+        </message>
+        <message>
+            <source>not printable ASCII</source>
+            <translation>kein druckbares ASCII</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::ReplyDecoder</name>
+        <message numerus="yes">
+            <source>%n byte(s) that are neither text nor a reply terminator</source>
+            <translation>
+                <numerusform>%n Byte, das weder Text noch ein Antwortende ist</numerusform>
+                <numerusform>%n Bytes, die weder Text noch ein Antwortende sind</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>reply text longer than %1 bytes without a terminator</source>
+            <translation>Antworttext länger als %1 Bytes ohne Abschlusszeichen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::nanotec</name>
         <message>
             <source>'|0' is never sent: the drive would stop answering (manual 6.4)</source>
@@ -2407,6 +2879,45 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::DigitalIoGroup</name>
+        <message>
+            <source>Inputs and outputs</source>
+            <translation>Ein- und Ausgänge</translation>
+        </message>
+        <message>
+            <source>Inputs:</source>
+            <translation>Eingänge:</translation>
+        </message>
+        <message>
+            <source>Input %1: level as last read (lit: high)</source>
+            <translation>Eingang %1: zuletzt gelesener Pegel (leuchtet: High)</translation>
+        </message>
+        <message>
+            <source>Outputs:</source>
+            <translation>Ausgänge:</translation>
+        </message>
+        <message>
+            <source>on</source>
+            <translation>ein</translation>
+        </message>
+        <message>
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <source>Output %1: state unknown (not switched in this session; the controller cannot report it); click to switch it on</source>
+            <translation>Ausgang %1: Zustand unbekannt (in dieser Sitzung nicht geschaltet; die Steuerung kann ihn nicht melden); klicken, um ihn einzuschalten</translation>
+        </message>
+        <message>
+            <source>Output %1: on; click to switch it off</source>
+            <translation>Ausgang %1: ein; klicken, um ihn auszuschalten</translation>
+        </message>
+        <message>
+            <source>Output %1: off; click to switch it on</source>
+            <translation>Ausgang %1: aus; klicken, um ihn einzuschalten</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DrivePanel</name>
         <message>
             <source>Address</source>
@@ -2602,6 +3113,105 @@
         <message>
             <source>Move %1 by plus one step size</source>
             <translation>%1 um eine Schrittweite in Plusrichtung verfahren</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::InputProgramsPage</name>
+        <message>
+            <source>Write to controller</source>
+            <translation>In die Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>Write anyway</source>
+            <translation>Trotzdem schreiben</translation>
+        </message>
+        <message>
+            <source>Erase from controller</source>
+            <translation>In der Steuerung löschen</translation>
+        </message>
+        <message>
+            <source>e.g. Input 8: vector move X</source>
+            <translation>z. B. Eingang 8: Vektorfahrt X</translation>
+        </message>
+        <message>
+            <source>One command per line, e.g.
+$H,x
+L1,x191
+W1500</source>
+            <translation>Ein Befehl je Zeile, z. B.
+$H,x
+L1,x191
+W1500</translation>
+        </message>
+        <message>
+            <source>The input carries a reference switch: write only if no switch is wired to it</source>
+            <translation>An dem Eingang liegt ein Referenzschalter: nur schreiben, wenn dort kein Schalter angeschlossen ist</translation>
+        </message>
+        <message>
+            <source>Title:</source>
+            <translation>Titel:</translation>
+        </message>
+        <message>
+            <source>Commands:</source>
+            <translation>Befehle:</translation>
+        </message>
+        <message>
+            <source>The controller cannot read its programs back: the list shows what was written or erased from here.</source>
+            <translation>Die Steuerung kann ihre Programme nicht zurücklesen: die Liste zeigt, was von hier aus geschrieben oder gelöscht wurde.</translation>
+        </message>
+        <message>
+            <source>not written from here</source>
+            <translation>nicht von hier geschrieben</translation>
+        </message>
+        <message>
+            <source>written %1</source>
+            <translation>geschrieben %1</translation>
+        </message>
+        <message>
+            <source>erased %1</source>
+            <translation>gelöscht %1</translation>
+        </message>
+        <message>
+            <source>Input %1: %2
+%3</source>
+            <translation>Eingang %1: %2
+%3</translation>
+        </message>
+        <message>
+            <source>(no title)</source>
+            <translation>(kein Titel)</translation>
+        </message>
+        <message>
+            <source>Title: printable ASCII only (no umlauts)</source>
+            <translation>Titel: nur druckbares ASCII (keine Umlaute)</translation>
+        </message>
+        <message>
+            <source>A program needs at least one command.</source>
+            <translation>Ein Programm braucht mindestens einen Befehl.</translation>
+        </message>
+        <message>
+            <source>Line %1: %2</source>
+            <translation>Zeile %1: %2</translation>
+        </message>
+        <message>
+            <source>Every command is valid.</source>
+            <translation>Alle Befehle sind gültig.</translation>
+        </message>
+        <message>
+            <source>Writing the program of input %1…</source>
+            <translation>Das Programm von Eingang %1 wird geschrieben…</translation>
+        </message>
+        <message>
+            <source>Erasing the program of input %1…</source>
+            <translation>Das Programm von Eingang %1 wird gelöscht…</translation>
+        </message>
+        <message>
+            <source>The program of input %1 is erased.</source>
+            <translation>Das Programm von Eingang %1 ist gelöscht.</translation>
+        </message>
+        <message>
+            <source>The program of input %1 is stored in the controller.</source>
+            <translation>Das Programm von Eingang %1 ist in der Steuerung gespeichert.</translation>
         </message>
     </context>
     <context>
@@ -2924,6 +3534,10 @@
             <source>Records</source>
             <translation>Sätze</translation>
         </message>
+        <message>
+            <source>Input programs</source>
+            <translation>Eingangsprogramme</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ParameterField</name>
@@ -3227,6 +3841,14 @@
         <message>
             <source>referenced</source>
             <translation>referenziert</translation>
+        </message>
+        <message>
+            <source>reference</source>
+            <translation>referenzieren</translation>
+        </message>
+        <message>
+            <source>The controller chooses the direction of its reference run itself</source>
+            <translation>Die Steuerung wählt die Richtung ihrer Referenzfahrt selbst</translation>
         </message>
     </context>
     <context>
@@ -3617,6 +4239,85 @@
         <message>
             <source>Warning: approaching the %1 °C over-temperature limit.</source>
             <translation>Warnung: nahe an der Übertemperaturgrenze von %1 °C.</translation>
+        </message>
+        <message>
+            <source>Motion unconfirmed</source>
+            <translation>Bewegung unbestätigt</translation>
+        </message>
+        <message>
+            <source>The controller did not confirm that the machine stands still (a move never reported its arrival, or the link was lost while it ran): it may still be moving.</source>
+            <translation>Die Steuerung hat nicht bestätigt, dass die Maschine stillsteht (eine Fahrt hat ihre Ankunft nie gemeldet, oder die Verbindung brach während der Fahrt ab): sie bewegt sich womöglich noch.</translation>
+        </message>
+        <message>
+            <source>Firmware: %1</source>
+            <translation>Firmware: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::StoredParametersBar</name>
+        <message>
+            <source>Store as power-on values…</source>
+            <translation>Als Einschaltwerte speichern…</translation>
+        </message>
+        <message>
+            <source>Read stored values</source>
+            <translation>Gespeicherte Werte lesen</translation>
+        </message>
+        <message>
+            <source>Write the form's values into the controller's own memory: it starts with them after every power-on</source>
+            <translation>Die Werte des Formulars in den Speicher der Steuerung schreiben: sie startet nach jedem Einschalten mit ihnen</translation>
+        </message>
+        <message>
+            <source>Read the values stored in the controller into the form</source>
+            <translation>Die in der Steuerung gespeicherten Werte ins Formular lesen</translation>
+        </message>
+        <message>
+            <source>Invalid values cannot be stored: %1</source>
+            <translation>Ungültige Werte können nicht gespeichert werden: %1</translation>
+        </message>
+        <message>
+            <source>Store power-on values</source>
+            <translation>Einschaltwerte speichern</translation>
+        </message>
+        <message>
+            <source>Store the form's values in the controller? It starts with them after every power-on. Values without a stored form are left out.%1</source>
+            <translation>Die Werte des Formulars in der Steuerung speichern? Sie startet nach jedem Einschalten mit ihnen. Werte ohne gespeicherte Form werden ausgelassen.%1</translation>
+        </message>
+        <message>
+            <source>Not stored: cancelled.</source>
+            <translation>Nicht gespeichert: abgebrochen.</translation>
+        </message>
+        <message>
+            <source>Storing…</source>
+            <translation>Wird gespeichert…</translation>
+        </message>
+        <message>
+            <source>Reading the stored values…</source>
+            <translation>Die gespeicherten Werte werden gelesen…</translation>
+        </message>
+        <message>
+            <source>Not stored: %1</source>
+            <translation>Nicht gespeichert: %1</translation>
+        </message>
+        <message>
+            <source>Stored as power-on values.</source>
+            <translation>Als Einschaltwerte gespeichert.</translation>
+        </message>
+        <message>
+            <source>Stored as power-on values; not stored (no stored form): %1.</source>
+            <translation>Als Einschaltwerte gespeichert; nicht gespeichert (keine gespeicherte Form): %1.</translation>
+        </message>
+        <message>
+            <source>Reading the stored values failed: %1</source>
+            <translation>Das Lesen der gespeicherten Werte ist fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Nothing is stored: the controller starts with its defaults.</source>
+            <translation>Nichts gespeichert: die Steuerung startet mit ihren Standardwerten.</translation>
+        </message>
+        <message>
+            <source>Stored values in the form: %1.%2</source>
+            <translation>Gespeicherte Werte im Formular: %1.%2</translation>
         </message>
     </context>
     <context>

@@ -3,6 +3,7 @@
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
 #include "setup/ParameterFile.h"
+#include "setup/StoredParametersBar.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
 #include <QFileDialog>
@@ -51,7 +52,8 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(bar);
-    layout->addWidget(m_info);
+    layout->addWidget(new StoredParametersBar(context, this, this)); // hidden unless the model
+    layout->addWidget(m_info);                                       // keeps power-on values
     layout->addLayout(m_groups, 1);
     layout->addWidget(m_message);
 
