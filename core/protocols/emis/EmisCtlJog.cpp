@@ -24,8 +24,9 @@ QString EmisController::jogRefusal() const
 
 void EmisController::applyJogVelocity(const AxisVelocities& stepsPerS)
 {
-    for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it)
-        m_jogRates.insert(it.key(), it.value());
+    // The ramp's complete output: an axis it no longer names has rate zero (no stale rate may
+    // keep a chunk chain going).
+    m_jogRates = stepsPerS;
     pumpJog();
     publish();
 }

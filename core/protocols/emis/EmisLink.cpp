@@ -1,6 +1,7 @@
 #include "EmisLink.h"
 #include "Logging.h"
 #include "transport/Transport.h"
+#include <QScopedValueRollback>
 
 namespace stepdeck::emis {
 
@@ -34,6 +35,12 @@ void EmisLink::reset()
 
 void EmisLink::submit(Request request)
 {
+    if (m_cancelling) {
+        // A callback of cancelAll() asked for more: it is cancelled as well, never sent.
+        if (request.done)
+            request.done(Result{Outcome::Cancelled, {}, 0, {}, false});
+        return;
+    }
     m_queue.push_back(std::move(request));
     pump();
 }
@@ -51,6 +58,7 @@ void EmisLink::cancelAll()
     m_current.reset();
     std::deque<Request> dropped = std::move(m_queue);
     m_queue.clear();
+    const QScopedValueRollback<bool> cancelling(m_cancelling, true);
     // The one on the line was sent: the board may be executing it.
     if (current && current->done)
         current->done(Result{Outcome::Cancelled, {}, 0, {}, true});

@@ -92,6 +92,7 @@ private:
     int m_acks = 0;
     QByteArray m_firstText;
     bool m_exclusive = false;
+    bool m_cancelling = false;
     QTimer m_timer{this};
     // After a timeout the line stays quiet briefly, so a late reply is not taken for the
     // answer to the next command.
