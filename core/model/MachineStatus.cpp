@@ -15,7 +15,7 @@ bool MachineStatus::anyLimitSwitch() const
 bool MachineStatus::anyMoving() const
 {
     for (const AxisStatus& a : axes) {
-        if (a.moving || a.jogging)
+        if (a.moving || a.jogging || a.motionUnknown)
             return true;
     }
     return busy;
@@ -36,15 +36,15 @@ QJsonObject MachineStatus::toJson(const QString& modelId) const
     QJsonObject axesJson;
     for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
         const AxisStatus& a = it.value();
-        axesJson.insert(axisName(it.key()),
-                        QJsonObject{{"moving", a.moving},
-                                    {"jogging", a.jogging},
-                                    {"limitSwitch", a.limitSwitch},
-                                    {"referenceSwitch", a.referenceSwitch},
-                                    {"referenced", a.referenced},
-                                    {"position", double(a.position)},
-                                    {"positionKnown", a.positionKnown},
-                                    {"positionEstimated", a.positionEstimated}});
+        axesJson.insert(axisName(it.key()), QJsonObject{{"moving", a.moving},
+                                                        {"jogging", a.jogging},
+                                                        {"limitSwitch", a.limitSwitch},
+                                                        {"referenceSwitch", a.referenceSwitch},
+                                                        {"referenced", a.referenced},
+                                                        {"position", double(a.position)},
+                                                        {"positionKnown", a.positionKnown},
+                                                        {"positionEstimated", a.positionEstimated},
+                                                        {"motionUnknown", a.motionUnknown}});
     }
     QJsonObject out{{"model", modelId}, {"machine", machine}, {"axes", axesJson}};
     out.insert("temperatureCelsius",

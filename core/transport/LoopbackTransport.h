@@ -15,6 +15,7 @@ public:
     // Creates two connected ends.
     static std::pair<LoopbackTransport*, LoopbackTransport*> createPair(QObject* parent = nullptr);
     void setPeer(LoopbackTransport* peer) { m_peer = peer; }
+    LoopbackTransport* peer() const { return m_peer; }
 
     void open(const LineSettings& settings) override;
     void close() override;
@@ -22,6 +23,7 @@ public:
     qint64 write(const QByteArray& bytes) override;
     void discardOutput() override;
     qint64 bytesToWrite() const override { return 0; }
+    bool flushOutput(int) override { return m_open; } // bytes are handed over at write()
     QString description() const override { return QStringLiteral("loopback"); }
 
     // Test hook: the link breaks as if the peer vanished (emits failed once, closes).

@@ -1,6 +1,7 @@
 #include "ElabExchangeQueue.h"
 #include "Logging.h"
 #include "transport/Transport.h"
+#include <algorithm>
 
 namespace stepdeck::elab {
 
@@ -82,6 +83,9 @@ ElabExchangeQueue::ElabExchangeQueue(Transport* transport, QObject* parent)
 {
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &ElabExchangeQueue::onTimeout);
+    m_paceTimer.setSingleShot(true);
+    m_paceTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_paceTimer, &QTimer::timeout, this, &ElabExchangeQueue::completeWritten);
     m_clock.start();
     if (transport) {
         connect(transport, &Transport::dataReceived, this, &ElabExchangeQueue::onData);
@@ -107,6 +111,7 @@ void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
         // Panic: bytes still waiting in the transport would go out before the stop byte.
         m_transport->discardOutput();
         m_outstanding = 0;
+        m_paceTimer.stop();
     }
     write(std::move(ex));
 }
@@ -158,6 +163,21 @@ void ElabExchangeQueue::onBytesWritten(qint64 count)
 
 void ElabExchangeQueue::completeWritten()
 {
+    // bytesWritten only means "the kernel took it": on a real port kilobytes can wait in the
+    // tty/USB buffer, where the board's XOFF cannot hold them back and a stop would queue
+    // behind them. So a frame without a reply counts as sent once the kernel's queue is down to
+    // one <DC2> pair; until then the queue is looked at again after the time the line needs.
+    const bool unanswered =
+        std::any_of(m_inFlight.cbegin(), m_inFlight.cend(),
+                    [](const InFlight& f) { return f.ex.expect == Expect::None; });
+    if (unanswered && m_transport) {
+        const qint64 pending = m_transport->pendingOutputBytes();
+        if (pending > kWireLowWaterBytes) {
+            const double us = double(pending - kWireLowWaterBytes) * m_characterTimeUs;
+            m_paceTimer.start(qMax(1, int(us / 1000.0 + 0.5)));
+            return;
+        }
+    }
     // Frames without a reply are done once nothing of ours is left inside the transport. Taken
     // out first: a callback may write the next frame, which has not left yet.
     std::deque<ElabExchange> done;
@@ -206,17 +226,25 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
             qCInfo(lcElab) << "skipped stray reply" << toMnemonics(reply.raw);
             return;
         }
+        if (reply.kind == Reply::Kind::Invalid) {
+            // Noise, or the reply itself destroyed: keep waiting; a destroyed reply times out.
+            qCInfo(lcElab) << "skipped noise" << toMnemonics(reply.raw) << reply.error;
+            Q_EMIT noise(reply.raw);
+            return;
+        }
         ElabExchange ex = std::move(target->ex);
         m_inFlight.erase(target);
         const QString why =
-            reply.kind == Reply::Kind::Invalid
-                ? tr("garbage on the line (%1: %2)").arg(reply.error, toMnemonics(reply.raw))
-                : tr("unexpected reply %1 to %2 (expected %3)")
-                      .arg(toMnemonics(reply.raw), frameName(ex.frame), expectName(ex.expect));
-        const bool resync = ex.owner != kResyncOwner;
-        failExchange(ex, ErrorKind::Protocol, why);
-        if (resync)
-            resynchronise(why);
+            tr("unexpected reply %1 to %2 (expected %3)")
+                .arg(toMnemonics(reply.raw), frameName(ex.frame), expectName(ex.expect));
+        if (ex.retries > 0 && ex.owner != kResyncOwner) {
+            retryAfterResync(std::move(ex), why);
+        } else {
+            const bool resync = ex.owner != kResyncOwner;
+            failExchange(ex, ErrorKind::Protocol, why);
+            if (resync)
+                resynchronise(why);
+        }
         armTimer();
         pump();
         return;
@@ -252,6 +280,10 @@ void ElabExchangeQueue::onTimeout()
         }
         const QString why =
             tr("no reply to %1 within %2 ms").arg(frameName(ex.frame)).arg(m_timeoutMs);
+        if (ex.retries > 0 && !ex.poll && ex.owner != kResyncOwner) {
+            retryAfterResync(std::move(ex), why);
+            continue;
+        }
         if (ex.owner != kResyncOwner && ex.expect != Expect::None && reason.isEmpty())
             reason = why;
         failExchange(ex, ErrorKind::Timeout, why);
@@ -322,6 +354,18 @@ void ElabExchangeQueue::resynchronise(const QString& reason)
     pump();
 }
 
+void ElabExchangeQueue::retryAfterResync(ElabExchange ex, const QString& why)
+{
+    --ex.retries;
+    qCInfo(lcElab) << "retrying" << frameName(ex.frame) << "after:" << why;
+    resynchronise(why);
+    // Right behind the resynchronisation's own exchanges (if still queued), ahead of the rest.
+    auto it = m_queue.begin();
+    while (it != m_queue.end() && it->owner == kResyncOwner)
+        ++it;
+    m_queue.insert(it, std::move(ex));
+}
+
 void ElabExchangeQueue::dropQueued(ErrorKind kind, const QString& message, bool all)
 {
     std::deque<ElabExchange> dropped;
@@ -354,6 +398,7 @@ void ElabExchangeQueue::abandonInFlight(ErrorKind kind, const QString& message)
 
 void ElabExchangeQueue::failAll(ErrorKind kind, const QString& message)
 {
+    m_paceTimer.stop();
     abandonInFlight(kind, message);
     dropQueued(kind, message, true);
     m_decoder.reset();

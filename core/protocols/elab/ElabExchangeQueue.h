@@ -32,6 +32,9 @@ struct ElabExchange
     bool poll = false;          // status-poller traffic (the console may hide it)
     bool droppable = true;      // a stop drops it while it is still queued
     bool tolerateStray = false; // replies of another kind are skipped, not errors
+    // Idempotent requests (status reads): re-sent after a resynchronisation when the reply was
+    // of another kind or, outside polls, did not come in time. Polls count misses instead.
+    int retries = 0;
     // Expect::None: called with an empty Reply once the bytes have left the transport.
     std::function<void(const Reply&)> onReply;
     std::function<void(ErrorKind, const QString&)> onError;
@@ -41,6 +44,11 @@ struct ElabExchange
 // a timeout per exchange, at most one frame inside the transport (frames without a reply are
 // complete when the transport reports them written), resynchronisation after a timeout or
 // garbage, and overtaking for stop and panic.
+//
+// Line noise: bytes the decoder cannot read as a reply are skipped while an exchange waits
+// (noise in front of a reply must not cost the reply); a reply destroyed by noise then times
+// out like any lost reply. Idempotent requests are retried after resynchronisation, so
+// occasional noise is survived and only persistent garbage fails (polls miss, link lost).
 //
 // Overtaking: stop and panic are written at once, even with an exchange in flight. The board
 // answers in the order it receives, so the overtaking exchange simply joins the in-flight list
@@ -59,6 +67,12 @@ public:
     void setTimeoutMs(int ms) { m_timeoutMs = qMax(1, ms); }
     int timeoutMs() const { return m_timeoutMs; }
     void setSyncBurst(int count) { m_syncBurst = qMax(1, count); }
+    // The line's character time: frames without a reply complete when they are on the wire,
+    // not when the kernel took them (see completeWritten()).
+    void setCharacterTimeUs(double us) { m_characterTimeUs = qMax(1.0, us); }
+    // Bytes that may still wait in the process and the kernel when a frame without a reply
+    // counts as sent: one <DC2> pair.
+    static constexpr qint64 kWireLowWaterBytes = 2;
 
     void enqueue(ElabExchange ex);     // behind everything queued
     void enqueueNext(ElabExchange ex); // ahead of everything queued: the next step of a sequence
@@ -86,7 +100,8 @@ Q_SIGNALS:
     void trafficIn(const QByteArray& bytes, bool poll);
     void resyncStarted(const QString& reason);
     void resyncFinished(bool ok, quint16 machineState);
-    void idle(); // nothing queued or in flight any more
+    void noise(const QByteArray& bytes); // skipped bytes that were no reply
+    void idle();                         // nothing queued or in flight any more
 
 private:
     struct InFlight
@@ -104,13 +119,17 @@ private:
     void completeWritten();
     void armTimer();
     void failExchange(ElabExchange& ex, ErrorKind kind, const QString& message);
+    // Resynchronises, then sends ex again right behind the resynchronisation.
+    void retryAfterResync(ElabExchange ex, const QString& why);
 
     QPointer<Transport> m_transport;
     ReplyDecoder m_decoder;
     std::deque<ElabExchange> m_queue;
     std::deque<InFlight> m_inFlight;
     QTimer m_timer{this};
+    QTimer m_paceTimer{this}; // re-checks the kernel's output queue while it drains
     QElapsedTimer m_clock;
+    double m_characterTimeUs = 191; // 57600 8N2
     qint64 m_outstanding = 0; // bytes handed to the transport and not yet reported written
     int m_timeoutMs = 500;
     int m_syncBurst = 16;

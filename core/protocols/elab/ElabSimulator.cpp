@@ -48,14 +48,21 @@ void ElabSimulator::powerOnReset()
 void ElabSimulator::receive(const QByteArray& bytes)
 {
     const QList<Command> commands = m_decoder.feed(bytes);
-    for (const Command& cmd : commands)
+    for (const Command& cmd : commands) {
+        if (cmd.code != 0)
+            noteReceived(cmd.raw); // line noise outside any command is not a frame
         handle(cmd);
+    }
 }
 
 void ElabSimulator::handle(const Command& cmd)
 {
     ++m_commands;
     advanceToNow();
+    if (m_dropReplyTo != 0 && cmd.code == m_dropReplyTo) {
+        m_dropReplyTo = 0;
+        ++faults().dropReplies; // executed, but its reply is lost on the line
+    }
     if (cmd.code == 0) {
         // Bytes outside any command (line noise): nothing to answer.
         qCDebug(lcSimulator) << "elab sim: ignored" << cmd.raw.toHex() << cmd.error;

@@ -33,6 +33,8 @@ public:
     // The next `count` commands that the controller answers with ACK/NAK are refused with NAK
     // and not executed. Requests (ENQ, HT, ETB, ETX, LF) are not affected.
     void forceNak(int count) { faults().forceNak = qMax(0, count); }
+    // The reply to the next command with this control byte is lost (e.g. the ACK of a <DC4>).
+    void dropNextReplyTo(char code) { m_dropReplyTo = code; }
     int forcedNaksPending() const { return faults().forceNak; }
 
     // ---- the machine around the board ----
@@ -58,6 +60,7 @@ public:
     qint64 position(Axis axis);
     bool isMoving(Axis axis);
     bool isBusy();
+    bool standingStill() override { return !isBusy(); }
     qint64 remainingSteps(Axis axis);
     bool limitSwitchActive(Axis axis) const;
     bool referenceSwitchActive(Axis axis) const;
@@ -131,6 +134,7 @@ private:
     bool m_panicButton = false;
     qint64 m_commands = 0;
     QString m_lastNakReason;
+    char m_dropReplyTo = 0;
 };
 
 } // namespace stepdeck::elab

@@ -32,7 +32,8 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
     m_poller.setInterval(m_userPollMs);
     connect(&m_poller, &StatusPoller::pollDue, this, &EmisController::onPollDue);
     connect(&m_poller, &StatusPoller::linkLost, this, [this](int misses) {
-        onLinkLost(tr("the SMC-IC4 did not answer %1 input polls (@IG) in a row").arg(misses));
+        // The port works, the board is silent: the base keeps the port open and reports.
+        loseLink(tr("the SMC-IC4 did not answer %1 input polls (@IG) in a row").arg(misses));
     });
     connect(&m_poller, &StatusPoller::rateChanged, this, &Controller::pollRateChanged);
     m_deadlineTimer.setSingleShot(true);
@@ -40,7 +41,8 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
     m_clock.start();
     if (transport) {
         connect(transport, &Transport::opened, this, &EmisController::onOpened);
-        connect(transport, &Transport::failed, this, &EmisController::onTransportFailed);
+        connect(transport, &Transport::failed, this,
+                [this](const QString& reason) { handleTransportFailure(reason); });
     }
     syncStatus();
 }
@@ -144,40 +146,38 @@ void EmisController::finishOpen(ErrorKind kind, const QString& message)
         finishOk(id);
 }
 
-void EmisController::closeLink()
+void EmisController::sendSafetyStop(std::function<void(bool acknowledged)> done)
 {
-    m_poller.stop();
-    stopTrackingMotion(tr("connection closed"));
-    m_link->cancelAll();
-    if (transport() && transport()->isOpen())
-        transport()->close();
-    if (m_openId)
-        finishError(std::exchange(m_openId, 0), ErrorKind::Cancelled, tr("connection closed"));
-    changeLink(LinkState::Disconnected);
+    // No stop command (chapter 9): nothing to send. The jog chain ends here, so no further
+    // chunk goes out; a chunk or move under way ends by itself when it arrives.
+    m_jogRates.clear();
+    haltJogImmediately();
+    done(!motionMayBeRunning());
 }
 
-void EmisController::onTransportFailed(const QString& reason)
+bool EmisController::motionMayBeRunning() const
 {
-    m_poller.stop();
-    stopTrackingMotion(reason);
-    m_link->cancelAll();
-    if (m_openId)
-        finishError(std::exchange(m_openId, 0), ErrorKind::LinkDown, reason);
-    if (linkState() == LinkState::Connected || linkState() == LinkState::Connecting) {
-        changeLink(LinkState::Lost, reason);
-        Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
+    if (m_jogSending)
+        return true; // a chunk may be on its way
+    for (const Track& t : m_tracks) {
+        if (t.awaiting || t.startPending || t.unconfirmed)
+            return true;
     }
+    return false;
 }
 
-void EmisController::onLinkLost(const QString& reason)
+void EmisController::abortHostSide(ErrorKind kind, const QString& message)
 {
-    // The port works, the board is silent. Nothing could stop it anyway; the port stays open
-    // and openLink() starts over on it.
     m_poller.stop();
-    stopTrackingMotion(reason);
-    m_link->cancelAll();
-    changeLink(LinkState::Lost, reason);
-    Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
+    if (m_openId)
+        finishError(std::exchange(m_openId, 0), kind, message);
+    stopTrackingMotion(message);
+    m_abort = qMakePair(kind, message);
+    m_link->cancelAll(); // every pending request finishes with kind and message
+    m_abort.reset();
+    m_programming = false;
+    m_link->setExclusive(false);
+    syncStatus(); // the base publishes next: no stale jog estimate in it
 }
 
 void EmisController::stopTrackingMotion(const QString& reason)
@@ -225,6 +225,8 @@ bool EmisController::requireLink(RequestId id)
 
 ErrorKind EmisController::failureKind(const EmisLink::Result& r) const
 {
+    if (m_abort && r.outcome == EmisLink::Outcome::Cancelled)
+        return m_abort->first;
     switch (r.outcome) {
     case EmisLink::Outcome::Ok:
         return ErrorKind::None;
@@ -242,6 +244,8 @@ ErrorKind EmisController::failureKind(const EmisLink::Result& r) const
 
 QString EmisController::failureText(const QByteArray& bytes, const EmisLink::Result& r) const
 {
+    if (m_abort && r.outcome == EmisLink::Outcome::Cancelled)
+        return m_abort->second;
     const QString command = formatTraffic(bytes);
     switch (r.outcome) {
     case EmisLink::Outcome::Ok:

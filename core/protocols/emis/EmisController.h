@@ -59,7 +59,6 @@ public:
     ParameterSchema schema() const override;
 
     void openLink(RequestId id) override;
-    void closeLink() override;
     void readParameters(RequestId id, const QStringList& names) override;
     void writeParameters(RequestId id, const ParameterSet& values, bool verify) override;
     void moveRelative(RequestId id, const AxisVector& steps) override;
@@ -79,6 +78,12 @@ public:
 protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override;
     QString jogRefusal() const override;
+    // The safety contract of the base (closeLink, loseLink, handleTransportFailure): there is
+    // no stop to send, so the safety stop ends the jog chain and reports whether anything may
+    // still move; abortHostSide() ends everything host-side through stopTrackingMotion().
+    void sendSafetyStop(std::function<void(bool acknowledged)> done) override;
+    void abortHostSide(ErrorKind kind, const QString& message) override;
+    bool motionMayBeRunning() const override;
 
 private:
     struct Track
@@ -112,14 +117,13 @@ private:
     // --- link and status (EmisController.cpp) ---
     void onOpened();
     void identify(int retries);
-    void onTransportFailed(const QString& reason);
-    void onLinkLost(const QString& reason);
     void finishOpen(ErrorKind kind, const QString& message);
     void onPollDue();
     void applyInputs(const QList<bool>& levels);
-    // What the host does when it stops tracking motion (link lost, closed): there is no stop
-    // command to send, so it sends nothing; it stops the jog chain, and every axis whose
-    // arrival is still awaited becomes unconfirmed with an unknown position.
+    // What the host does when it stops tracking motion (link lost, closed; called by
+    // abortHostSide()): there is no stop command to send, so it sends nothing; it stops the jog
+    // chain, and every axis whose arrival is still awaited becomes unconfirmed with an unknown
+    // position.
     void stopTrackingMotion(const QString& reason);
     void syncStatus();
     void publish();
@@ -180,6 +184,8 @@ private:
     QElapsedTimer m_clock;
     int m_referenceDeadlineMs = 120000;
     RequestId m_openId = 0;
+    // While abortHostSide() cancels the link's requests, they finish with its kind and message.
+    std::optional<QPair<ErrorKind, QString>> m_abort;
     int m_userPollMs = 50;
     bool m_programming = false;
     // jog

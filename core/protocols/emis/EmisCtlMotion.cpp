@@ -342,7 +342,10 @@ void EmisController::updateMotionUnconfirmed()
     bool unconfirmed = false;
     for (const Track& t : m_tracks)
         unconfirmed = unconfirmed || t.unconfirmed;
-    mutableStatus().motionUnconfirmed = unconfirmed;
+    if (unconfirmed)
+        mutableStatus().motionUnconfirmed = true; // said by the caller, naming the axis
+    else if (status().motionUnconfirmed)
+        noteStandstillConfirmed(); // every awaited arrival came: the board proved standstill
 }
 
 } // namespace stepdeck::emis

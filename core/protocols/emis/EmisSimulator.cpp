@@ -264,6 +264,7 @@ void EmisSimulator::execute(const CommandDecoder::Frame& frame)
         return;
     }
     m_commands << (frame.terminator == kEtx ? QByteArray("<ETX>") : frame.text);
+    noteReceived(frame.text + frame.terminator); // the base's log, terminator included
     if (faults().forceNak > 0 || (!m_bellOn.isEmpty() && frame.text == m_bellOn)) {
         if (frame.text == m_bellOn)
             m_bellOn.clear();

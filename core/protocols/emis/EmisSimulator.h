@@ -47,6 +47,7 @@ public:
     ~EmisSimulator() override;
 
     QString modelId() const override { return QStringLiteral("emis"); }
+    bool standingStill() override { return !anyMoving(); }
     void receive(const QByteArray& bytes) override;
 
     // ---- what the device saw and does ----

@@ -66,9 +66,13 @@ public:
 // Simulator, link and controller; the controller is destroyed first.
 struct Rig
 {
-    explicit Rig(const ControllerOptions& options = defaultOptions(), bool resetLine = false)
+    // host: a custom host end (e.g. KernelBufferTransport); the rig owns it.
+    explicit Rig(const ControllerOptions& options = defaultOptions(), bool resetLine = false,
+                 LoopbackTransport* customHost = nullptr)
     {
-        LoopbackTransport* host = resetLine ? new ResetLineLoopback : new LoopbackTransport;
+        LoopbackTransport* host = customHost  ? customHost
+                                  : resetLine ? new ResetLineLoopback
+                                              : new LoopbackTransport;
         auto* device = new LoopbackTransport;
         host->setPeer(device);
         device->setPeer(host);
@@ -131,6 +135,36 @@ struct Rig
     bool connect()
     {
         return run([this](RequestId id) { ctl->openLink(id); }).ok();
+    }
+    // A new adapter on the same link (a restarted host): fresh spies.
+    void replaceController(const ControllerOptions& options)
+    {
+        ctl = std::make_unique<ElabController>(hostEnd.get(), options);
+        results = std::make_unique<QSignalSpy>(ctl.get(), &Controller::requestFinished);
+        traffic = std::make_unique<QSignalSpy>(ctl.get(), &Controller::traffic);
+        errors = std::make_unique<QSignalSpy>(ctl.get(), &Controller::errorOccurred);
+        jogRefusals = std::make_unique<QSignalSpy>(ctl.get(), &Controller::jogRefused);
+    }
+    // closeLink() under the safety contract is asynchronous: waits for closeFinished.
+    bool close(int timeoutMs = 5000)
+    {
+        QSignalSpy closed(ctl.get(), &Controller::closeFinished);
+        ctl->closeLink();
+        return closed.count() == 1 || closed.wait(timeoutMs);
+    }
+    // Renews the jog lease every 50 ms until done() or timeoutMs; false on timeout.
+    bool jogUntil(const AxisVelocities& rates, const std::function<bool()>& done,
+                  int timeoutMs = 5000)
+    {
+        QElapsedTimer t;
+        t.start();
+        while (!done()) {
+            if (t.elapsed() > timeoutMs)
+                return false;
+            ctl->setJogVelocity(rates);
+            QSignalSpy(ctl.get(), &Controller::statusChanged).wait(50);
+        }
+        return true;
     }
     // A complete setup: start 3000, max 5000, acceleration 20000 (short ramps), feed 2000.
     bool setup()

@@ -100,6 +100,7 @@ void TestEmisController::silentBoard_linkLostByMissedPolls()
     QTRY_COMPARE(m_rig.ctl->linkState(), LinkState::Lost);
     QVERIFY(m_rig.ctl->status().commFault);
     QVERIFY(!m_rig.ctl->status().motionUnconfirmed); // nothing was moving
+    QVERIFY(m_rig.host->isOpen());                   // the port stays open (base safety contract)
 }
 
 void TestEmisController::write_workingValues_commandsAsInManual()

@@ -299,10 +299,16 @@ void TestEmisControllerMotion::closeLink_whileMoving_unconfirmed()
 {
     QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::Y, 500}}); }).ok());
     QSignalSpy status(m_rig.ctl, &Controller::statusChanged);
-    m_rig.ctl->closeLink();
+    QSignalSpy closed(m_rig.ctl, &Controller::closeFinished);
+    const qsizetype seen = m_rig.sim->receivedCommands().size();
+    m_rig.ctl->closeLink(); // no stop command exists: nothing can be sent to stop the move
+    QTRY_COMPARE(closed.size(), 1);
     QCOMPARE(m_rig.ctl->linkState(), LinkState::Disconnected);
     QVERIFY(!status.isEmpty());
     QVERIFY(status.last().at(0).value<MachineStatus>().motionUnconfirmed);
+    QCOMPARE(m_rig.sim->receivedCommands().size(), seen);
+    QVERIFY(m_rig.sim->isMoving(Axis::Y)); // the board goes on until the move arrives
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.sim->standingStill(), 10000);
 }
 
 QTEST_GUILESS_MAIN(TestEmisControllerMotion)
