@@ -2,6 +2,26 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
     <context>
+        <name>stepdeck::emis::EmisController</name>
+        <message numerus="yes">
+            <source> (%n command(s) before it were accepted)</source>
+            <translation>
+                <numerusform> (%n command before it was accepted)</numerusform>
+                <numerusform> (%n commands before it were accepted)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::emis::ReplyDecoder</name>
+        <message numerus="yes">
+            <source>%n byte(s) that are neither text nor a reply terminator</source>
+            <translation>
+                <numerusform>%n byte that is neither text nor a reply terminator</numerusform>
+                <numerusform>%n bytes that are neither text nor a reply terminator</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DiffDialog</name>
         <message numerus="yes">
             <source>%1 changes %n value(s) (highlighted).</source>

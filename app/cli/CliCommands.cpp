@@ -42,6 +42,9 @@ const CommandEntry kCommands[] = {
     {"spindle", cmdSpindle, true, false},
     {"coolant", cmdCoolant, true, false},
     {"power", cmdPower, true, false},
+    {"store", cmdStore, true, true},
+    {"output", cmdOutput, true, false},
+    {"program", cmdProgram, true, true},
 };
 // clang-format on
 

@@ -60,4 +60,10 @@ Outcome cmdSpindle(CliContext& c, QStringList args);
 Outcome cmdCoolant(CliContext& c, QStringList args);
 Outcome cmdPower(CliContext& c, QStringList args);
 
+// Stored system parameters, outputs and input programs (CliEmisCommands.cpp).
+Outcome cmdStore(CliContext& c, QStringList args);
+Outcome cmdGetStored(CliContext& c, QStringList args); // `get` on models with stored values
+Outcome cmdOutput(CliContext& c, QStringList args);
+Outcome cmdProgram(CliContext& c, QStringList args);
+
 } // namespace stepdeck::cli

@@ -85,6 +85,13 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
     result = c.session.waitUntilIdle(int(qMin<qint64>(timeoutMs, INT_MAX)));
     if (result.code == ExitTimeout)
         return stopThenFail(c, result); // never left running past the caller's deadline
+    if (result.ok() && c.session.status().motionUnconfirmed) {
+        // A model without position read-back (EMIS) lost an arrival: nothing proves the stop.
+        return Outcome::failure(ExitTimeout,
+                                tr("the device did not confirm that the move arrived: an axis "
+                                   "may still be moving; positions are unknown until "
+                                   "referenced"));
+    }
     return result.ok() ? reportPositions(c) : result;
 }
 
@@ -175,8 +182,16 @@ Outcome cmdFeed(CliContext& c, QStringList args)
 
 Outcome cmdHome(CliContext& c, QStringList args)
 {
-    const auto directionsValid = [](const AxisVector& directions) {
+    // --simultaneous: every named axis at once (EMIS "$Hxy,a", manual 9.9).
+    const bool simultaneous = takeFlag(&args, QStringLiteral("--simultaneous"));
+    const auto directionsValid = [simultaneous](const AxisVector& directions) {
         for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
+            if (simultaneous && it.value() == -1) {
+                return Outcome::failure(ExitInvalidValue,
+                                        tr("home --simultaneous: axis %1 takes 1 (reference) or "
+                                           "0 (leave out)")
+                                            .arg(axisName(it.key())));
+            }
             if (it.value() < -1 || it.value() > 1) {
                 return Outcome::failure(ExitInvalidValue,
                                         tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
@@ -186,7 +201,15 @@ Outcome cmdHome(CliContext& c, QStringList args)
         }
         return Outcome::success();
     };
-    const auto start = [](ControllerSession& s, const AxisVector& v) {
+    const auto start = [simultaneous](ControllerSession& s, const AxisVector& v) {
+        if (simultaneous) {
+            QString axes;
+            for (auto it = v.cbegin(); it != v.cend(); ++it)
+                axes += it.value() != 0 ? axisName(it.key()) : QString();
+            return s.modelOperation(
+                QStringLiteral("reference"),
+                {{QStringLiteral("axes"), axes}, {QStringLiteral("simultaneous"), true}});
+        }
         QMap<Axis, int> directions;
         for (auto it = v.cbegin(); it != v.cend(); ++it)
             directions.insert(it.key(), int(it.value()));

@@ -201,6 +201,8 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
         machine << tr("EMERGENCY STOP ACTIVE");
     if (status.commFault)
         machine << tr("COMMUNICATION FAULT");
+    if (status.motionUnconfirmed)
+        machine << tr("MOTION UNCONFIRMED (an axis may still be moving)");
 
     QStringList lines;
     lines << tr("Model:        %1 (%2)").arg(model.id, model.displayName);
@@ -212,8 +214,26 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
                               ? tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
                               : tr("not reported"));
     }
+    if (!status.deviceFirmware.isEmpty())
+        lines << tr("Firmware:     %1").arg(status.deviceFirmware);
     if (status.startButton)
         lines << tr("Start button: %1").arg(*status.startButton ? tr("pressed") : tr("released"));
+    if (status.inputs) {
+        QString levels;
+        for (bool level : *status.inputs)
+            levels += level ? QLatin1Char('1') : QLatin1Char('0');
+        lines << tr("Inputs:       %1 (input 1 first)").arg(levels);
+    }
+    if (!status.outputs.isEmpty()) {
+        QStringList states;
+        for (int i = 0; i < status.outputs.size(); ++i) {
+            const auto& o = status.outputs[i];
+            states << QStringLiteral("%1:%2").arg(i + 1).arg(!o ? QStringLiteral("?")
+                                                                : (*o ? tr("on") : tr("off")));
+        }
+        lines << tr("Outputs:      %1 (? = not switched in this session)")
+                     .arg(states.join(QLatin1Char(' ')));
+    }
     if (capabilities.multiDrive && !status.drives.isEmpty())
         lines << driveLines(status.drives);
     lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");

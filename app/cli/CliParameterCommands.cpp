@@ -100,6 +100,8 @@ Outcome cmdSet(CliContext& c, QStringList args)
 
 Outcome cmdGet(CliContext& c, QStringList args)
 {
+    if (c.capabilities().storedParameters)
+        return cmdGetStored(c, args); // what the device keeps for power-on
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     if (args.isEmpty())

@@ -2,6 +2,7 @@
 #include "model/NumberParsing.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
+#include "protocols/emis/EmisSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
 #include <limits>
@@ -200,7 +201,8 @@ QString simUsage()
               "                     (the board powers on with setup incomplete)\n"
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on\n"
+              "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
+              "                     from the reference switch)\n"
               "\n"
               "Faults (random, reproducible with the same --seed and the same traffic):\n"
               "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
@@ -220,8 +222,27 @@ void applyFaults(const SimScenario& scenario, Simulator* simulator)
     simulator->freezeAfter(scenario.freezeAfterMs);
 }
 
+namespace {
+// EMIS SMC-IC4: --position is where the carriage stands, in steps from its reference switch
+// (the board's own counter starts at 0 there, as at power-on).
+bool applyEmisScenario(const SimScenario& scenario, emis::EmisSimulator* sim, QString* error)
+{
+    if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
+        *error = tr("--setup-complete, --temperature and --limit are not supported for model "
+                    "emis");
+        return false;
+    }
+    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
+        sim->setPhysicalPosition(it.key(), it.value());
+    sim->powerCycle(); // the counters start at 0 where the carriages stand
+    return true;
+}
+} // namespace
+
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
 {
+    if (auto* emisSim = qobject_cast<emis::EmisSimulator*>(simulator))
+        return applyEmisScenario(scenario, emisSim, error);
     auto* elabSim = qobject_cast<elab::ElabSimulator*>(simulator);
     const bool needsModelApi = scenario.setupComplete || scenario.temperature ||
                                !scenario.limits.isEmpty() || !scenario.positions.isEmpty();

@@ -35,7 +35,22 @@ struct Capabilities
     bool multiDrive = false;    // several addressed drives on one link (Nanotec)
     bool records = false;       // stored records and error memory as model operations (Nanotec)
     bool hostRampedJog = false; // the host must ramp jog rates itself (E-LAB manual, jog mode)
-    double maxJogSpeed = 1000;  // steps/s, the ceiling a jog source may request
+    // Digital inputs and outputs of the controller itself (EMIS SMC-IC4: 8 inputs, 7 outputs).
+    // Their levels come in MachineStatus::inputs / outputs; an output is switched with
+    // Controller::modelOperation("set-output", {output: 1..N, on: bool}).
+    int digitalInputs = 0;
+    int digitalOutputs = 0;
+    // A power-on parameter set kept by the device (EMIS "##" system parameters): the CLI's
+    // `store` / `get`, model operations "store-parameters", "read-stored-parameters",
+    // "clear-stored-parameters" (documented by the model's controller header).
+    bool storedParameters = false;
+    // Programs stored per input that the device runs by itself (EMIS 9.17): model operations
+    // "write-input-program", "erase-input-program".
+    bool inputPrograms = false;
+    // false: the device chooses the direction of its reference runs (EMIS 9.9); a reference
+    // request then takes 1 (reference this axis) or 0 (leave it out) per axis.
+    bool referenceDirection = true;
+    double maxJogSpeed = 1000;            // steps/s, the ceiling a jog source may request
     double defaultJogAcceleration = 2000; // steps/s^2 for the host-side JogRamp
 
     bool has(MotionMode mode) const { return motionModes.contains(mode); }

@@ -63,6 +63,20 @@ QJsonObject MachineStatus::toJson(const QString& modelId) const
         }
         out.insert("drives", drivesJson);
     }
+    if (inputs) {
+        QJsonArray levels;
+        for (bool level : *inputs)
+            levels.append(level);
+        out.insert("inputs", levels);
+    }
+    if (!outputs.isEmpty()) {
+        QJsonArray states;
+        for (const std::optional<bool>& state : outputs)
+            states.append(state ? QJsonValue(*state) : QJsonValue());
+        out.insert("outputs", states);
+    }
+    if (!deviceFirmware.isEmpty())
+        out.insert("device", QJsonObject{{"firmware", deviceFirmware}});
     out.insert("raw", QJsonObject::fromVariantMap(raw));
     return out;
 }

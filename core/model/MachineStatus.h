@@ -47,6 +47,12 @@ struct MachineStatus
     // stop not acknowledged, a model without a stop command): the machine may still be moving.
     // Cleared only by a status read from the device that shows every axis standing still.
     bool motionUnconfirmed = false;
+    // Digital I/O of the controller (Capabilities::digitalInputs / digitalOutputs), input 1
+    // first. Inputs as last read; outputs as the host last switched them in this session
+    // (nullopt: unknown, e.g. after connecting), and the controller's own firmware string.
+    std::optional<QList<bool>> inputs;
+    QList<std::optional<bool>> outputs;
+    QString deviceFirmware;
     std::optional<bool> startButton;
     std::optional<double> temperatureCelsius;
     QMap<Axis, AxisStatus> axes;

@@ -38,6 +38,9 @@ struct ModelPresentation
     std::function<QString(const QByteArray&)> formatTraffic;
     // The console's send line back into bytes; false and a reason on bad notation.
     std::function<bool(const QString&, QByteArray*, QString*)> parseTraffic;
+    // Models with input programs (Capabilities::inputPrograms): why one command line cannot be
+    // part of a program (grammar, range, kind), already translated; empty when it can.
+    std::function<QString(const QString&)> checkProgramCommand;
 };
 
 // Generic notation for ASCII protocols: printable bytes as they are, "\r", "\n", "\t" and

@@ -1,5 +1,6 @@
 #include "Registry.h"
 #include "protocols/elab/ElabModel.h"
+#include "protocols/emis/EmisModel.h"
 #include "protocols/nanotec/NanotecModel.h"
 
 namespace stepdeck {
@@ -10,6 +11,7 @@ const QList<ModelInfo>& models()
     static const QList<ModelInfo> list{
         elab::modelInfo(),
         nanotec::modelInfo(),
+        emis::modelInfo(),
     };
     return list;
 }

@@ -19,6 +19,7 @@
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
+#include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
@@ -210,6 +211,10 @@ void MainWindow::buildDocks()
     m_recordsDock =
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);
+    m_programs = new InputProgramsPage(m_context, this);
+    m_programsDock = addDock(m_programs, tr("Input programs"), QStringLiteral("inputProgramsDock"),
+                             Qt::BottomDockWidgetArea);
+    tabifyDockWidget(m_recordsDock, m_programsDock);
     setup->raise();
     setDockNestingEnabled(true);
 }
@@ -453,7 +458,8 @@ void MainWindow::updateModelDocks()
     // A dock the model cannot use is hidden and leaves the View menu too.
     const Capabilities caps = m_context->capabilities();
     const QList<QPair<QDockWidget*, bool>> docks{{m_drivesDock, caps.multiDrive},
-                                                 {m_recordsDock, caps.records}};
+                                                 {m_recordsDock, caps.records},
+                                                 {m_programsDock, caps.inputPrograms}};
     for (const auto& [dock, available] : docks) {
         dock->toggleViewAction()->setVisible(available);
         if (!available)

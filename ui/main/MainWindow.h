@@ -15,6 +15,7 @@ class DrivePanel;
 class GamepadDevice;
 class GamepadJogSource;
 class GamepadPanel;
+class InputProgramsPage;
 class JogController;
 class JogPanel;
 class KeyboardJog;
@@ -55,6 +56,7 @@ public:
     GamepadPanel* gamepadPanel() const { return m_gamepad; }
     DrivePanel* drivePanel() const { return m_drivePanel; }
     RecordsPage* recordsPage() const { return m_records; }
+    InputProgramsPage* inputProgramsPage() const { return m_programs; }
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
@@ -114,6 +116,8 @@ private:
     RecordsPage* m_records = nullptr;
     QDockWidget* m_drivesDock = nullptr;
     QDockWidget* m_recordsDock = nullptr;
+    InputProgramsPage* m_programs = nullptr;
+    QDockWidget* m_programsDock = nullptr;
     GamepadJogSource* m_gamepadSource = nullptr;
     QList<QDockWidget*> m_docks;
     QMenu* m_viewMenu = nullptr;

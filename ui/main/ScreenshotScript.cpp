@@ -6,6 +6,7 @@
 #include "main/MachineContext.h"
 #include "main/MainWindow.h"
 #include "position/ReferencePanel.h"
+#include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
 #include <QCheckBox>
@@ -13,6 +14,10 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QKeyEvent>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QPlainTextEdit>
+#include <QPushButton>
 #include <QTableWidget>
 #include <QTextStream>
 
@@ -114,6 +119,15 @@ void ScreenshotScript::fillModelPages(std::function<void()> next)
         drives->scanRange(1, 5); // the simulated bus; a full scan takes seconds
         waitFor([drives] { return drives->foundTable()->rowCount() > 0; }, 10000, next);
     };
+    if (caps.inputPrograms) {
+        // The manual's example program (9.17) on input 8, written to the simulator.
+        InputProgramsPage* programs = m_window->inputProgramsPage();
+        programs->selectInput(8);
+        programs->titleEdit()->setText(QStringLiteral("Eingang 8: Vektorfahrt X-Motor"));
+        programs->commandsEdit()->setPlainText(QStringLiteral("L1,x191\nW1500"));
+        programs->writeProgram();
+        return waitFor([programs] { return programs->writeButton()->isEnabled(); }, 5000, scan);
+    }
     if (!caps.records)
         return scan();
     records->readAll();
@@ -155,7 +169,7 @@ bool ScreenshotScript::capture()
         {QStringLiteral("status"), {470, 1020}},  {QStringLiteral("setup"), {1100, 760}},
         {QStringLiteral("traffic"), {1000, 560}}, {QStringLiteral("charts"), {1200, 640}},
         {QStringLiteral("gamepad"), {440, 560}},  {QStringLiteral("drives"), {620, 520}},
-        {QStringLiteral("records"), {1300, 820}},
+        {QStringLiteral("records"), {1300, 820}}, {QStringLiteral("inputPrograms"), {1000, 480}},
     };
     for (const auto& [stem, page] : pages) {
         QDockWidget* dock = m_window->dockOf(page);

@@ -75,17 +75,27 @@ void ReferencePanel::rebuild()
     m_grid->addWidget(new QLabel(tr("Order"), this), 0, 2);
     m_grid->addWidget(new QLabel(tr("State"), this), 0, 3);
     const QSettings settings;
+    // Some controllers choose the direction of their reference runs themselves (EMIS 9.9).
+    const bool directed = m_context->capabilities().referenceDirection;
     int r = 1;
     for (Axis axis : m_context->axes()) {
         const QString key =
             QStringLiteral("reference/%1/%2/").arg(m_context->modelId(), axisName(axis));
         Row row;
         row.direction = new QComboBox(this);
-        row.direction->addItem(tr("\u2212 (negative)"), -1);
-        row.direction->addItem(tr("+ (positive)"), 1);
+        if (directed) {
+            row.direction->addItem(tr("\u2212 (negative)"), -1);
+            row.direction->addItem(tr("+ (positive)"), 1);
+        } else {
+            row.direction->addItem(tr("reference"), 1);
+            row.direction->setToolTip(
+                tr("The controller chooses the direction of its reference run itself"));
+        }
         row.direction->addItem(tr("skip"), 0);
-        row.direction->setCurrentIndex(row.direction->findData(
-            settings.value(key + QStringLiteral("direction"), defaultDirection(axis)).toInt()));
+        const int fallback = directed ? defaultDirection(axis) : 1;
+        const int index = row.direction->findData(
+            settings.value(key + QStringLiteral("direction"), fallback).toInt());
+        row.direction->setCurrentIndex(index >= 0 ? index : row.direction->findData(fallback));
         row.order = new QSpinBox(this);
         row.order->setRange(1, 4);
         row.order->setValue(
@@ -155,7 +165,7 @@ void ReferencePanel::referenceAxis(Axis axis)
 {
     int direction = directions().value(axis);
     if (direction == 0)
-        direction = defaultDirection(axis);
+        direction = m_context->capabilities().referenceDirection ? defaultDirection(axis) : 1;
     m_runner->start({ReferenceRunner::Stage{{axis, direction}}});
 }
 

@@ -4,6 +4,8 @@
 #include "setup/ParameterField.h"
 #include "setup/WritePlan.h"
 #include "setup/WritePreview.h"
+#include "setup/ParameterFile.h"
+#include "setup/StoredParametersBar.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
 #include <QGridLayout>
@@ -52,7 +54,8 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(bar);
-    layout->addWidget(m_info);
+    layout->addWidget(new StoredParametersBar(context, this, this)); // hidden unless the model
+    layout->addWidget(m_info);                                       // keeps power-on values
     layout->addLayout(m_groups, 1);
     layout->addWidget(m_message);
 

@@ -1,6 +1,7 @@
 #include "StatusPanel.h"
 #include "common/LedIndicator.h"
 #include "main/MachineContext.h"
+#include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"
 #include <QGridLayout>
 #include <QGroupBox>
@@ -36,6 +37,11 @@ const FlagText kMachineFlags[] = {
                        "Emergency stop active: panic button or host panic stop.")},
     {"commFault", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Comm fault"),
      QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Replies are missing or the link is lost.")},
+    {"motionUnconfirmed", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Motion unconfirmed"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "The controller did not confirm that the machine stands still (a move "
+                       "never reported its arrival, or the link was lost while it ran): it may "
+                       "still be moving.")},
     {"startButton", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Start button"),
      QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
                        "The start button on the controller is pressed.")},
@@ -74,6 +80,7 @@ void StatusPanel::rebuild()
     m_axes.clear();
     m_words.clear();
     m_genericRaw = nullptr;
+    m_io = nullptr;
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -81,6 +88,11 @@ void StatusPanel::rebuild()
     auto* v = new QVBoxLayout(inner);
     v->addWidget(buildMachineGroup());
     v->addWidget(buildAxesGroup());
+    const Capabilities caps = m_context->capabilities();
+    if (caps.digitalInputs > 0 || caps.digitalOutputs > 0) {
+        m_io = new DigitalIoGroup(m_context, caps.digitalInputs, caps.digitalOutputs, inner);
+        v->addWidget(m_io);
+    }
     const ModelInfo* model = m_context->model();
     if (model && model->presentation.statusWords) {
         for (const StatusWordInfo& info : model->presentation.statusWords()) {
@@ -170,13 +182,18 @@ QWidget* StatusPanel::buildTemperatureGroup()
     m_counters = new QLabel(group);
     m_drives = new QLabel(group);
     m_drives->setWordWrap(true);
-    grid->addWidget(new QLabel(tr("Temperature:"), group), 0, 0);
+    m_firmware = new QLabel(group);
+    m_firmware->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* temperatureLabel = new QLabel(tr("Temperature:"), group);
+    grid->addWidget(temperatureLabel, 0, 0);
     grid->addWidget(m_temperature, 0, 1);
     grid->addWidget(m_temperatureBar, 1, 0, 1, 2);
     grid->addWidget(m_temperatureNote, 2, 0, 1, 2);
     grid->addWidget(m_counters, 3, 0, 1, 2);
     grid->addWidget(m_drives, 4, 0, 1, 2);
+    grid->addWidget(m_firmware, 5, 0, 1, 2);
     const bool hasTemperature = m_context->capabilities().temperature;
+    temperatureLabel->setVisible(hasTemperature);
     m_temperature->setVisible(hasTemperature);
     m_temperatureBar->setVisible(hasTemperature);
     return group;
@@ -201,6 +218,11 @@ QString StatusPanel::temperatureNote() const
     return m_temperatureNote ? m_temperatureNote->text() : QString();
 }
 
+QString StatusPanel::firmwareText() const
+{
+    return m_firmware ? m_firmware->text() : QString();
+}
+
 QString StatusPanel::countersText() const
 {
     return m_counters ? m_counters->text() : QString();
@@ -221,6 +243,8 @@ void StatusPanel::onStatus(const MachineStatus& s)
     set("overTemperature", s.overTemperature, S::Fault);
     set("setupIncomplete", s.setupIncomplete, S::Warning);
     set("panic", s.panic, S::Fault);
+    if (LedIndicator* lamp = m_machine.value(QStringLiteral("motionUnconfirmed")))
+        lamp->setOn(s.motionUnconfirmed, S::Fault); // stays meaningful after the link is lost
     if (LedIndicator* lamp = m_machine.value(QStringLiteral("commFault")))
         lamp->setOn(s.commFault, S::Fault); // meaningful when the link is down, too
     set("startButton", s.startButton.value_or(false), S::On);
@@ -266,6 +290,11 @@ void StatusPanel::onStatus(const MachineStatus& s)
     }
     m_drives->setText(drives.join(QLatin1Char('\n')));
     m_drives->setVisible(!drives.isEmpty());
+    m_firmware->setText(s.deviceFirmware.isEmpty() ? QString()
+                                                   : tr("Firmware: %1").arg(s.deviceFirmware));
+    m_firmware->setVisible(!s.deviceFirmware.isEmpty());
+    if (m_io)
+        m_io->setStatus(s, live);
 }
 
 void StatusPanel::updateTemperature(const MachineStatus& s)

@@ -9,13 +9,15 @@ class QVBoxLayout;
 
 namespace stepdeck::ui {
 
+class DigitalIoGroup;
 class LedIndicator;
 class MachineContext;
 class RawWordView;
 
 // The poller made visible: the normalised machine and axis flags every model maps to, the
 // model's raw words with the manual's bit names, temperature (warning before the 50 degC
-// shutdown), the start button and the comm-fault and resync counters.
+// shutdown), the start button, the controller's digital inputs and outputs (outputs
+// switchable), its firmware, and the comm-fault and resync counters.
 class StatusPanel : public QWidget
 {
     Q_OBJECT
@@ -30,6 +32,8 @@ public:
     QString temperatureText() const;
     QString countersText() const;
     QString temperatureNote() const;
+    DigitalIoGroup* digitalIo() const { return m_io; } // nullptr: the model has no I/O
+    QString firmwareText() const;
 
 private:
     void rebuild();
@@ -51,6 +55,8 @@ private:
     QLabel* m_temperatureNote = nullptr;
     QLabel* m_counters = nullptr;
     QLabel* m_drives = nullptr;
+    QLabel* m_firmware = nullptr;
+    DigitalIoGroup* m_io = nullptr;
 };
 
 } // namespace stepdeck::ui

@@ -58,6 +58,7 @@ private Q_SLOTS:
     void toJson_temperature_nullWhenUnknown();
     void toJson_raw_keepsTheWords();
     void anyLimitSwitch_anyMoving();
+    void toJson_digitalIo_onlyWhenReported();
 };
 
 void TestMachineStatus::toJson_topLevelKeys()
@@ -160,6 +161,28 @@ void TestMachineStatus::anyLimitSwitch_anyMoving()
     QVERIFY(s.anyMoving());
     s.axes[Axis::X].limitSwitch = true;
     QVERIFY(s.anyLimitSwitch());
+}
+
+void TestMachineStatus::toJson_digitalIo_onlyWhenReported()
+{
+    MachineStatus s;
+    QJsonObject json = s.toJson("elab");
+    QVERIFY(!json.contains("inputs"));
+    QVERIFY(!json.contains("outputs"));
+    QVERIFY(!json.contains("device"));
+    s.inputs = QList<bool>{true, false, false, false, false, false, false, true};
+    s.outputs = {true, std::nullopt, false};
+    s.deviceFirmware = "SMC-IC4 v1.07";
+    json = s.toJson("emis");
+    const QJsonArray inputs = json["inputs"].toArray();
+    QCOMPARE(inputs.size(), 8);
+    QVERIFY(inputs.first().isBool() && inputs.first().toBool());
+    QVERIFY(!inputs.at(1).toBool(true));
+    const QJsonArray outputs = json["outputs"].toArray();
+    QCOMPARE(outputs.size(), 3);
+    QVERIFY(outputs.at(0).toBool());
+    QVERIFY(outputs.at(1).isNull()); // not switched in this session: unknown
+    QCOMPARE(json["device"].toObject()["firmware"].toString(), QStringLiteral("SMC-IC4 v1.07"));
 }
 
 QTEST_GUILESS_MAIN(TestMachineStatus)

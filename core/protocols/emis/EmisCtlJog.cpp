@@ -1,0 +1,139 @@
+// Jog without a stop command: a chain of short relative vector moves (9.11).
+#include "EmisController.h"
+#include "Logging.h"
+#include <QtMath>
+
+namespace stepdeck::emis {
+
+namespace {
+// A jog speed within this fraction of the one the board already has is not rewritten.
+constexpr double kSpeedTolerance = 0.1;
+} // namespace
+
+QString EmisController::jogRefusal() const
+{
+    if (QString base = Controller::jogRefusal(); !base.isEmpty())
+        return base;
+    if (m_programming)
+        return tr("jog refused: an input program is being written");
+    if (status().motionUnconfirmed)
+        return tr("jog refused: an axis may still be moving (its arrival never came); "
+                  "reference it first");
+    return {};
+}
+
+void EmisController::applyJogVelocity(const AxisVelocities& stepsPerS)
+{
+    // The ramp's complete output: an axis it no longer names has rate zero (no stale rate may
+    // keep a chunk chain going).
+    m_jogRates = stepsPerS;
+    pumpJog();
+    publish();
+}
+
+void EmisController::pumpJog()
+{
+    if (m_jogSending || linkState() != LinkState::Connected)
+        return;
+    // Every axis that stands still and has a rate gets its next chunk; axes ready together
+    // share one vector command. An axis whose chunk is under way is never sent another (the
+    // board would answer <BEL>): it gets its next chunk when its <DCn> arrives.
+    QList<VectorTarget> chunk;
+    QList<QByteArray> speedWrites;
+    for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
+        const Axis axis = it.key();
+        const double rate = it.value();
+        const Track& t = m_tracks[axis];
+        if (rate == 0.0 || t.awaiting || t.unconfirmed)
+            continue;
+        // At most kJogChunkSeconds of travel at the commanded rate; a chunk of one step at a
+        // very low rate runs fast enough to end within that time too.
+        const qint64 steps = qMax<qint64>(1, qint64(std::floor(qAbs(rate) * kJogChunkSeconds)));
+        const qint64 speed =
+            qBound(limits::kSpeedMin,
+                   qMax(qRound64(qAbs(rate)), qint64(std::ceil(double(steps) / kJogChunkSeconds))),
+                   limits::kSpeedMax);
+        const qint64 current = m_jogSpeed.value(axis, -1);
+        if (current < 0 || qAbs(double(current - speed)) > kSpeedTolerance * double(speed)) {
+            speedWrites << encode::workSpeed(axis, speed);
+            m_jogSpeed.insert(axis, speed);
+            m_jogSpeedChanged.insert(axis);
+        }
+        chunk << VectorTarget{axis, rate > 0 ? steps : -steps, false};
+    }
+    if (chunk.isEmpty()) {
+        finishJogIfIdle();
+        return;
+    }
+    m_jogSending = true;
+    sendJogChunk(speedWrites, chunk);
+}
+
+void EmisController::sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk)
+{
+    if (!speedWrites.isEmpty()) {
+        const QByteArray write = speedWrites.takeFirst();
+        request(write, EmisLink::Expect::Ack,
+                [this, write, speedWrites, chunk](const EmisLink::Result& r) {
+                    if (r.outcome == EmisLink::Outcome::Ok)
+                        return sendJogChunk(speedWrites, chunk);
+                    m_jogSending = false;
+                    if (r.outcome != EmisLink::Outcome::Cancelled)
+                        haltJog(failureText(write, r));
+                });
+        return;
+    }
+    // The lease is checked again right before the move goes out: an axis released meanwhile
+    // gets no new chunk.
+    QList<VectorTarget> still;
+    for (const VectorTarget& t : chunk) {
+        const double rate = m_jogRates.value(t.axis, 0.0);
+        if ((rate > 0 && t.value > 0) || (rate < 0 && t.value < 0))
+            still << t;
+    }
+    if (still.isEmpty() || linkState() != LinkState::Connected) {
+        m_jogSending = false;
+        finishJogIfIdle();
+        return;
+    }
+    startVector(0, still, true);
+}
+
+void EmisController::finishJogIfIdle()
+{
+    if (m_jogSending)
+        return;
+    for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
+        if (it.value() != 0.0 || m_tracks[it.key()].jogChunk)
+            return;
+    }
+    // The jog is over: give every axis its work speed back (9.5).
+    for (Axis axis : std::as_const(m_jogSpeedChanged)) {
+        if (m_known.workSpeed.contains(axis)) {
+            const QByteArray write = encode::workSpeed(axis, m_known.workSpeed[axis]);
+            request(write, EmisLink::Expect::Ack, [this, write](const EmisLink::Result& r) {
+                if (r.outcome != EmisLink::Outcome::Ok && r.outcome != EmisLink::Outcome::Cancelled)
+                    Q_EMIT errorOccurred(failureText(write, r));
+            });
+        } else {
+            Q_EMIT errorOccurred(tr("after jogging, the work speed of axis %1 stays at %2 "
+                                    "steps/s: its value before is not known (write work-speed)")
+                                     .arg(axisName(axis))
+                                     .arg(m_jogSpeed.value(axis)));
+        }
+    }
+    m_jogSpeedChanged.clear();
+    m_jogSpeed.clear();
+}
+
+void EmisController::haltJog(const QString& reason)
+{
+    qCInfo(lcEmis) << "jog halted:" << reason;
+    m_jogRates.clear();
+    haltJogImmediately();
+    Q_EMIT jogRefused(reason);
+    finishJogIfIdle();
+    publish();
+}
+
+} // namespace stepdeck::emis

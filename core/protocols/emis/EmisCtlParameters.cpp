@@ -1,0 +1,232 @@
+// Working values (set), system parameters (store, *PRSYS, *PESYS).
+#include "EmisController.h"
+#include "Logging.h"
+
+namespace stepdeck::emis {
+
+namespace {
+constexpr int kReadSystemTimeoutMs = 2000;
+
+QVariantList texts(const QStringList& list)
+{
+    QVariantList out;
+    for (const QString& s : list)
+        out << s;
+    return out;
+}
+
+QMap<Axis, qint64> intsOf(const ParameterValue& v)
+{
+    QMap<Axis, qint64> out;
+    for (auto it = v.perAxis.cbegin(); it != v.perAxis.cend(); ++it)
+        out.insert(it.key(), it.value().toString().toLongLong(nullptr, 10));
+    return out;
+}
+} // namespace
+
+void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& frames, int index,
+                               std::function<void()> onDone)
+{
+    if (index >= frames.size())
+        return onDone();
+    const ParameterPlan::Frame& f = frames[index];
+    const bool stored = f.storedCount > 0;
+    request(
+        f.bytes, stored ? EmisLink::Expect::Stored : EmisLink::Expect::Ack,
+        [this, id, frames, index, onDone](const EmisLink::Result& r) {
+            if (r.outcome == EmisLink::Outcome::Ok)
+                return runFrames(id, frames, index + 1, onDone);
+            QString text =
+                tr("%1: %2").arg(frames[index].parameter, failureText(frames[index].bytes, r));
+            if (index > 0)
+                text += tr(" (%n command(s) before it were accepted)", nullptr, index);
+            finishError(id, failureKind(r), text);
+        },
+        stored ? kStoreTimeoutMs : 0, f.storedCount);
+}
+
+void EmisController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+{
+    Q_UNUSED(verify) // the SMC-IC4 cannot read working values back
+    if (!requireLink(id))
+        return;
+    if (const QString e = schema().validate(values, allAxes()); !e.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, e);
+    if (anyAwaiting() || jogActive() || m_programming) {
+        return finishError(id, ErrorKind::Refused,
+                           tr("parameters are written while every axis stands still"));
+    }
+    // The partner of a lone run or idle current: written in this session, else the stored
+    // power-on value (*PRSYS at connect).
+    const ParameterPlan plan =
+        planWorking(values, CurrentPartners{m_known.runCurrent, m_known.idleCurrent});
+    if (!plan.ok())
+        return finishError(id, plan.error, plan.message);
+    runFrames(id, plan.frames, 0, [this, id, values] {
+        noteWritten(values);
+        publish();
+        finishOk(id);
+    });
+}
+
+void EmisController::noteWritten(const ParameterSet& set)
+{
+    const ParameterSchema s = schema();
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        // Per-axis values are kept per axis, so a later set of one axis keeps the others.
+        ParameterValue& kept = m_written[it.key()];
+        const ParameterSpec* spec = s.find(it.key());
+        if (spec && spec->perAxis) {
+            for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
+                kept.perAxis.insert(a.key(), s.normalise(*spec, a.value()));
+        } else if (spec) {
+            kept.global = s.normalise(*spec, it.value().global);
+        }
+    }
+    const auto axisInts = [this](const char* name) {
+        return intsOf(m_written.value(QLatin1String(name)));
+    };
+    m_known.startSpeed.insert(axisInts("start-speed"));
+    m_known.workSpeed.insert(axisInts("work-speed"));
+    m_known.runCurrent.insert(axisInts("run-current"));
+    m_known.idleCurrent.insert(axisInts("idle-current"));
+    if (m_written.contains(QStringLiteral("ramp")))
+        m_known.ramp = m_written.value(QStringLiteral("ramp")).global.toLongLong();
+    const ParameterValue types = m_written.value(QStringLiteral("reference-switch-type"));
+    for (auto it = types.perAxis.cbegin(); it != types.perAxis.cend(); ++it)
+        m_known.switchNc.insert(it.key(), it.value().toString() == QLatin1String("NC"));
+}
+
+void EmisController::readParameters(RequestId id, const QStringList& names)
+{
+    ParameterSet out;
+    QStringList unknown;
+    for (const QString& name : names) {
+        if (!schema().find(name))
+            return finishError(id, ErrorKind::InvalidValue, tr("unknown parameter '%1'").arg(name));
+        if (m_written.contains(name))
+            out.insert(name, m_written.value(name));
+        else
+            unknown << name;
+    }
+    if (!unknown.isEmpty()) {
+        return finishError(id, ErrorKind::Unsupported,
+                           tr("%1 cannot be read back: the SMC-IC4 reports no working values "
+                              "(only the stored system parameters, *PRSYS)")
+                               .arg(unknown.join(QStringLiteral(", "))));
+    }
+    finishOk(id, QVariant::fromValue(out)); // the values written in this session
+}
+
+void EmisController::noteStored(const SystemParameters& stored)
+{
+    m_stored = stored;
+    const ParameterSet values = storedValues(stored, nullptr);
+    const auto fill = [&values, this](const char* name, QMap<Axis, qint64>* known) {
+        if (m_written.contains(QLatin1String(name)))
+            return; // written in this session: that is the working value
+        known->insert(intsOf(values.value(QLatin1String(name))));
+    };
+    fill("start-speed", &m_known.startSpeed);
+    fill("work-speed", &m_known.workSpeed);
+    fill("run-current", &m_known.runCurrent);
+    fill("idle-current", &m_known.idleCurrent);
+    if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))
+        m_known.ramp = values.value(QStringLiteral("ramp")).global.toLongLong();
+    // ##REFSW is the only way to set the switch type: the stored value is the working one.
+    if (const SystemEntry* e = stored.find(SystemEntry::Key::ReferenceSwitch))
+        m_known.switchNc.insert(e->normallyClosed);
+}
+
+void EmisController::readStoredParameters(RequestId id, Handler after)
+{
+    if (!after && !requireLink(id))
+        return;
+    request(
+        encode::readSystem(), EmisLink::Expect::Ack,
+        [this, id, after](const EmisLink::Result& r) {
+            if (r.outcome == EmisLink::Outcome::Ok)
+                noteStored(parseSystemParameters(r.text));
+            if (after)
+                return after(r);
+            if (r.outcome != EmisLink::Outcome::Ok)
+                return finishFailure(id, encode::readSystem(), r);
+            QStringList notes;
+            const ParameterSet values = storedValues(m_stored, &notes);
+            QStringList entries;
+            for (const SystemEntry& e : m_stored.entries)
+                entries << QStringLiteral("##") + QString::fromLatin1(formatSystemEntry(e));
+            finishOk(id, QVariantMap{{QStringLiteral("parameters"), QVariant::fromValue(values)},
+                                     {QStringLiteral("entries"), texts(entries)},
+                                     {QStringLiteral("notes"), texts(notes)}});
+        },
+        kReadSystemTimeoutMs);
+}
+
+void EmisController::storeParameters(RequestId id, const QVariantMap& args)
+{
+    if (!requireLink(id))
+        return;
+    ParameterSet set = args.value(QStringLiteral("parameters")).value<ParameterSet>();
+    // skipUnstorable: a whole setup form; what has no system entry is left out and named.
+    QStringList skipped;
+    if (args.value(QStringLiteral("skipUnstorable")).toBool()) {
+        for (const QString& name : set.keys()) {
+            if (!storableParameters().contains(name)) {
+                set.remove(name);
+                skipped << name;
+            }
+        }
+    }
+    if (set.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, tr("no parameters to store"));
+    if (const QString e = schema().validate(set, allAxes()); !e.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, e);
+    if (anyAwaiting() || jogActive() || m_programming) {
+        return finishError(id, ErrorKind::Refused,
+                           tr("system parameters are stored while every axis stands still"));
+    }
+    CurrentPartners partners;
+    if (const SystemEntry* c = m_stored.find(SystemEntry::Key::Currents)) {
+        partners.runKnown = c->values;
+        partners.idleKnown = c->idle;
+    }
+    const ParameterPlan plan = planStore(set, partners);
+    if (!plan.ok())
+        return finishError(id, plan.error, plan.message);
+    runFrames(id, plan.frames, 0, [this, id, plan, set, skipped] {
+        QStringList written;
+        for (const ParameterPlan::Frame& f : plan.frames) {
+            written << QString::fromLatin1(f.bytes.chopped(1));
+            if (const auto entry = parseSystemEntry(f.bytes.mid(2).chopped(1), nullptr))
+                m_stored.entries << *entry; // later entries override (SystemParameters::find)
+        }
+        noteStored(m_stored);
+        if (set.contains(QStringLiteral("reference-switch-type")))
+            publish(); // the switch type applies at once
+        finishOk(id, QVariantMap{{QStringLiteral("commands"), texts(written)},
+                                 {QStringLiteral("skipped"), texts(skipped)}});
+    });
+}
+
+void EmisController::clearStoredParameters(RequestId id)
+{
+    if (!requireLink(id))
+        return;
+    request(
+        encode::clearSystem(), EmisLink::Expect::Ack,
+        [this, id](const EmisLink::Result& r) {
+            if (r.outcome != EmisLink::Outcome::Ok)
+                return finishFailure(id, encode::clearSystem(), r);
+            // 9.16: erases the SMCflex compatibility entry; the others stay.
+            m_stored.entries.erase(std::remove_if(m_stored.entries.begin(), m_stored.entries.end(),
+                                                  [](const SystemEntry& e) {
+                                                      return e.key == SystemEntry::Key::SmcFlex;
+                                                  }),
+                                   m_stored.entries.end());
+            finishOk(id);
+        },
+        kStoreTimeoutMs);
+}
+
+} // namespace stepdeck::emis

@@ -1,0 +1,250 @@
+#include "EmisModel.h"
+#include "EmisCodec.h"
+#include "EmisGrammar.h"
+
+namespace stepdeck::emis {
+
+LineSettings lineSettings()
+{
+    LineSettings line;
+    line.baudRate = 115200;
+    line.dataBits = 8;
+    line.stopBits = 1;
+    line.parity = LineSettings::Parity::None;
+    return line;
+}
+
+Capabilities capabilities()
+{
+    Capabilities caps;
+    caps.axes = {Axis::X, Axis::Y, Axis::Z, Axis::U};
+    // Jog is a chain of short vector moves (EmisController); no feed and no velocity move:
+    // without a stop command nothing may run that does not end by itself.
+    caps.motionModes = {MotionMode::Jog, MotionMode::RelativeMove, MotionMode::AbsoluteMove,
+                        MotionMode::Reference};
+    caps.positionReadback = false; // chapter 9 has no position query
+    caps.rampedStop = false;
+    caps.stopCommand = false; // chapter 9 documents no stop command at all
+    caps.panic = false;
+    caps.hostRampedJog = false; // every chunk is a vector move with the board's own ramp (9.6)
+    caps.maxJogSpeed = 10000;   // steps/s; the work speed a jog chunk runs at
+    caps.defaultJogAcceleration = 1e7; // the host ramp passes the targets through
+    caps.digitalInputs = kInputCount;
+    caps.digitalOutputs = kOutputCount;
+    caps.storedParameters = true;
+    caps.inputPrograms = true;
+    caps.referenceDirection = false; // "$Hx" has no direction (9.9)
+    return caps;
+}
+
+namespace {
+ParameterSpec spec(const char* name, const char* label, const char* group, const char* unit,
+                   qint64 minimum, qint64 maximum, bool perAxis, QVariant def, const char* desc)
+{
+    ParameterSpec s;
+    s.name = QString::fromUtf8(name);
+    s.label = QString::fromUtf8(label);
+    s.group = QString::fromUtf8(group);
+    s.unit = QString::fromUtf8(unit);
+    s.type = ParameterType::Integer;
+    s.minimum = minimum;
+    s.maximum = maximum;
+    s.perAxis = perAxis;
+    s.readable = false; // no command reads a working value back; `get` reports *PRSYS
+    s.defaultValue = std::move(def);
+    s.description = QString::fromUtf8(desc);
+    return s;
+}
+} // namespace
+
+ParameterSchema parameterSchema()
+{
+    using namespace limits;
+    QList<ParameterSpec> specs;
+    specs << spec("start-speed", "Start speed", "Speeds", "steps/s", kSpeedMin, kSpeedMax, true,
+                  200, "Speed at which every move starts and ends its ramp (#S, 9.4)");
+    specs << spec("work-speed", "Work speed", "Speeds", "steps/s", kSpeedMin, kSpeedMax, true, 1000,
+                  "Speed of vector moves after the ramp (#E1, 9.5)");
+    specs << spec("ramp", "Ramp", "Speeds", "ms", kRampMin, kRampMax, false, 100,
+                  "Time from start speed to work speed and back, all motors (#R, 9.6)");
+    specs << spec("reference-speed", "Reference speed", "Referencing", "steps/s", kSpeedMin,
+                  kSpeedMax, false, 400,
+                  "Speed of reference runs, one value for all motors (#E9, 9.5)");
+    specs << spec("reference-offset", "Offset after referencing", "Referencing", "steps", 0,
+                  kOffsetMax, true, 10,
+                  "Steps the motor moves out of its switch after a reference run (#O, 9.10); "
+                  "not a system parameter");
+    ParameterSpec switchType = spec("reference-switch-type", "Reference switch type", "Referencing",
+                                    "", 0, 0, true, QStringLiteral("NO"),
+                                    "NO: normally open (Schließer, the default), NC: normally "
+                                    "closed (Öffner); inputs 1-4 (##REFSW, 9.14, 5.2.1)");
+    switchType.type = ParameterType::Choice;
+    switchType.choices = {QStringLiteral("NO"), QStringLiteral("NC")};
+    switchType.warning = QStringLiteral(
+        "The type must match the wired switches, or reference runs end in the wrong place. It "
+        "is stored in the board's system parameters and kept after power-off.");
+    specs << switchType;
+
+    ParameterSpec resolution =
+        spec("step-resolution", "Step resolution", "Drive", "microsteps", 0, 0, true,
+             QStringLiteral("16"), "Microsteps per full step (D, 9.7)");
+    resolution.type = ParameterType::Choice;
+    for (int v = 1; v <= 256; v *= 2)
+        resolution.choices << QString::number(v);
+    resolution.warning = QStringLiteral(
+        "Changes the length of a step: every position, distance and speed in steps changes its "
+        "meaning.");
+    specs << resolution;
+    ParameterSpec run = spec("run-current", "Run current", "Drive", "%", 0, kRunCurrentMax, true,
+                             100, "Motor current while moving, % of the driver's rating (c, 9.8)");
+    run.warning =
+        QStringLiteral("A current above the motor's rating overheats motor and driver stage.");
+    specs << run;
+    specs << spec("idle-current", "Idle current", "Drive", "%", 0, kIdleCurrentMax, true, 20,
+                  "Motor current at standstill, % of the driver's rating (c, 9.8); 0 leaves the "
+                  "motor without holding torque");
+    ParameterSpec interpolation =
+        spec("interpolation", "Interpolation", "Drive", "", 0, 0, false, true,
+             "On: the axes of a vector move arrive together; off: each "
+             "axis moves at its own speed (IP, 9.12)");
+    interpolation.type = ParameterType::Boolean;
+    specs << interpolation;
+    return ParameterSchema(specs);
+}
+
+// ---- presentation ----
+
+namespace {
+
+const char* controlName(char c)
+{
+    switch (c) {
+    case kCr:
+        return "<CR>";
+    case kStx:
+        return "<STX>";
+    case kEtx:
+        return "<ETX>";
+    case kAck:
+        return "<ACK>";
+    case kBel:
+        return "<BEL>";
+    case kNak:
+        return "<NAK>";
+    case 0x11:
+        return "<DC1>";
+    case 0x12:
+        return "<DC2>";
+    case 0x13:
+        return "<DC3>";
+    case 0x14:
+        return "<DC4>";
+    case '\n':
+        return "<LF>";
+    default:
+        return nullptr;
+    }
+}
+} // namespace
+
+QString formatTraffic(const QByteArray& bytes)
+{
+    QString out;
+    for (char c : bytes) {
+        const auto b = static_cast<unsigned char>(c);
+        if (const char* name = controlName(c))
+            out += QLatin1String(name);
+        else if (b >= 0x20 && b < 0x7F && c != '<')
+            out += QLatin1Char(c);
+        else
+            out += QStringLiteral("<x%1>").arg(
+                QString::number(b, 16).toUpper().rightJustified(2, QLatin1Char('0')));
+    }
+    return out;
+}
+
+bool parseTraffic(const QString& text, QByteArray* bytes, QString* error)
+{
+    QByteArray out;
+    for (int i = 0; i < text.size(); ++i) {
+        const QChar ch = text.at(i);
+        if (ch == QLatin1Char('<')) {
+            const int end = text.indexOf(QLatin1Char('>'), i);
+            const QString token = end > i ? text.mid(i, end - i + 1).toUpper() : QString();
+            bool known = false;
+            for (int b = 0; b < 0x20 && !known; ++b) {
+                const char* name = controlName(char(b));
+                if (name && token == QLatin1String(name)) {
+                    out += char(b);
+                    known = true;
+                }
+            }
+            bool ok = false;
+            if (!known && token.size() == 5 && token.startsWith(QLatin1String("<X"))) {
+                out += char(token.mid(2, 2).toInt(&ok, 16));
+                known = ok;
+            }
+            if (!known) {
+                if (error)
+                    *error = QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                         "unknown control name at column %1 "
+                                                         "(known: <CR> <STX> <ETX> <xNN>)")
+                                 .arg(i + 1);
+                return false;
+            }
+            i = end;
+        } else if (ch.unicode() >= 0x20 && ch.unicode() < 0x7F) {
+            out += char(ch.unicode());
+        } else {
+            if (error)
+                *error = QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                     "non-ASCII character at column %1")
+                             .arg(i + 1);
+            return false;
+        }
+    }
+    if (!out.endsWith(kCr) && !out.endsWith(kStx) && !out.endsWith(kEtx))
+        out += kCr;
+    *bytes = out;
+    return true;
+}
+
+ModelPresentation presentation()
+{
+    ModelPresentation p;
+    p.statusWords = [] {
+        StatusWordInfo w;
+        w.key = QStringLiteral("inputs");
+        w.title = QCoreApplication::translate("stepdeck::emis::Presentation", "Inputs (@IG, 9.2)");
+        w.width = 8;
+        for (int i = 0; i < kInputCount; ++i) {
+            StatusBitInfo bit;
+            bit.bit = i;
+            bit.name = QStringLiteral("IN%1").arg(i + 1);
+            bit.description =
+                i < 4 ? QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                    "Input %1: reference switch of axis %2 (or a "
+                                                    "free input when no switch is wired).")
+                            .arg(i + 1)
+                            .arg(axisName(Axis(i)))
+                      : QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                    "Input %1: free input.")
+                            .arg(i + 1);
+            w.bits << bit;
+        }
+        return QList<StatusWordInfo>{w};
+    };
+    p.formatTraffic = &formatTraffic;
+    p.parseTraffic = &parseTraffic;
+    p.checkProgramCommand = [](const QString& line) {
+        for (QChar c : line) {
+            if (c.unicode() < 0x20 || c.unicode() >= 0x7F)
+                return QCoreApplication::translate("stepdeck::emis::Presentation",
+                                                   "not printable ASCII");
+        }
+        return validateProgramLine(line.trimmed().toLatin1());
+    };
+    return p;
+}
+
+} // namespace stepdeck::emis

@@ -1,0 +1,126 @@
+#pragma once
+#include "EmisGrammar.h"
+#include "EmisSimAxis.h"
+#include "sim/Simulator.h"
+#include <QElapsedTimer>
+#include <QTimer>
+#include <array>
+
+namespace stepdeck::emis {
+
+// The device side of an SMC-IC4 (chapter 9): four motors with ramps, reference switches on
+// inputs 1-4, inputs 5-8 set by tests, seven outputs, the "##" system parameters (loaded into
+// the working values at power-on), input programs, and faults.
+//
+// Replies follow the manual's examples literally: "@V SMC-IC4 v1.07<ACK>", "$Hx<NAK>" then
+// "<DC1>", "<NAK> " then "<DC1>" for vector moves, "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>" for
+// system parameters, "*PESYS <ACK>", "*PEIN1 <ACK>". Invalid commands or values and moves of a
+// motor that is still moving are answered with <BEL> and not executed.
+//
+// Readings where the manual is silent:
+// - "##" writes are stored for the next power-on (powerCycle()); only ##REFSW, which has no
+//   working command, takes effect at once.
+// - After a reference run the board's position counter is 0 (after leaving the switch by the
+//   offset); at power-on it starts at 0 wherever the carriage stands.
+// - Programming an input (*PWIN..<ETX>) stores the program; running it on an input edge is
+//   not simulated.
+// - *PRSYS lists the stored entries as "##<entry>" separated by CR LF, closed by <ACK>.
+class EmisSimulator : public Simulator
+{
+    Q_OBJECT
+public:
+    static constexpr const char* kFirmware = "SMC-IC4 v1.07";
+    struct Working
+    {
+        QMap<Axis, qint64> startSpeed, workSpeed, offset, resolution, runCurrent, idleCurrent;
+        qint64 referenceSpeed = 400;
+        qint64 ramp = 100;
+        bool interpolation = true;
+    };
+    struct InputProgram
+    {
+        QByteArray title;
+        QList<QByteArray> commands;
+    };
+
+    explicit EmisSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
+    ~EmisSimulator() override;
+
+    QString modelId() const override { return QStringLiteral("emis"); }
+    bool standingStill() override { return !anyMoving(); }
+    void receive(const QByteArray& bytes) override;
+
+    // ---- what the device saw and does ----
+    QList<QByteArray> receivedCommands() const { return m_commands; } // framed texts, in order
+    void clearReceivedCommands() { m_commands.clear(); }
+    qint64 position(Axis axis) const; // the board's counter
+    qint64 physicalPosition(Axis axis) const { return axisRef(axis).physical(); }
+    bool isMoving(Axis axis) const;
+    bool anyMoving() const;
+    bool isReferenced(Axis axis) const { return m_referenced[int(axis)]; }
+    QList<bool> inputLevels() const;
+    bool output(int number) const; // 1..7
+    const Working& working() const { return m_working; }
+    QList<SystemEntry> storedEntries() const { return m_stored; }
+    std::optional<InputProgram> program(int input) const;
+    int arrivalsDropped() const { return m_arrivalsDropped; }
+    // Moves and reference runs refused with <BEL> because a named motor was still moving.
+    int busyRefusals() const { return m_busyRefusals; }
+
+    // ---- scenario and faults ----
+    void setPhysicalPosition(Axis axis, qint64 steps); // the board's counter does not change
+    void setSwitchPosition(Axis axis,
+                           std::optional<qint64> steps);  // active at/below; nullopt: none
+    void setSwitchWiring(Axis axis, bool normallyClosed); // the switch as wired
+    void setInput(int number, bool level);                // inputs 5..8
+    void dropArrivals(int count); // the next `count` <DCn> are not sent (the motor still stops)
+    void bellOn(const QByteArray& command) { m_bellOn = command; } // <BEL> the next time it comes
+    void powerCycle(); // working values from the stored ones, counters 0, outputs off
+
+private:
+    EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }
+    const EmisSimAxis& axisRef(Axis axis) const { return m_axes[size_t(axis)]; }
+    void execute(const CommandDecoder::Frame& frame);
+    QByteArray run(const Command& c); // the reply; empty: none
+    QByteArray runProgramming(const Command& c, char terminator);
+    QByteArray runVector(const Command& c);
+    QByteArray runHome(const Command& c);
+    QByteArray runSystemWrite(const Command& c);
+    void applyWorking(const Command& c);
+    void storeEntry(const SystemEntry& entry);
+    void loadWorkingFromStored();
+    bool switchActive(Axis axis, qint64 physical) const;
+    bool switchLevel(Axis axis, qint64 physical) const;
+    EmisSimAxis::Profile profile(Axis axis) const;
+    void startNextReference();
+    void arrived(Axis axis);
+    void tick();
+    void ensureTicking();
+
+    std::array<EmisSimAxis, 4> m_axes;
+    std::array<qint64, 4> m_origin{}; // physical step that the board's counter calls 0
+    std::array<bool, 4> m_referenced{};
+    std::array<std::optional<qint64>, 4> m_switchAt;
+    std::array<bool, 4> m_wiredNc{};
+    std::array<bool, 4> m_referencing{};
+    QList<Axis> m_referenceQueue;       // sequential reference runs still to do ($Hxyzu)
+    std::array<bool, 4> m_freeInputs{}; // inputs 5..8
+    std::array<bool, 7> m_outputs{};
+    Working m_working;
+    QList<SystemEntry> m_stored;
+    QMap<int, InputProgram> m_programs;
+    int m_programming = 0; // input being programmed (9.17), 0: none
+    bool m_programHeader = false;
+    InputProgram m_draft;
+    int m_dropArrivals = 0;
+    int m_arrivalsDropped = 0;
+    int m_busyRefusals = 0;
+    QByteArray m_bellOn;
+    CommandDecoder m_decoder;
+    QList<QByteArray> m_commands;
+    QTimer m_timer{this};
+    QElapsedTimer m_clock;
+    qint64 m_lastTickUs = 0;
+};
+
+} // namespace stepdeck::emis

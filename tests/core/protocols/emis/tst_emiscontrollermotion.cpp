@@ -1,0 +1,315 @@
+// EmisController motion against the in-process SMC-IC4 simulator: vector moves, reference runs,
+// host-tracked positions, the chunked jog and its lease, lost arrivals and lost links. The
+// safety tests assert what the simulated board saw and that its motors stand still.
+#include "EmisControllerRig.h"
+#include "TestSupport.h"
+
+using namespace stepdeck;
+using namespace stepdeck::emis;
+using stepdeck::test::EmisRig;
+
+namespace {
+// Lets the event loop run for ms (timers, the simulator, polls) without waiting for anything.
+void letRun(int ms)
+{
+    QTimer never;
+    QSignalSpy quiet(&never, &QTimer::timeout);
+    stepdeck::test::staysQuiet(quiet, ms);
+}
+} // namespace
+
+class TestEmisControllerMotion : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void move_relative_positionsFromArrivals();
+    void move_busyAxis_refusedNotSent_otherAxisMayJoin();
+    void move_absolute_refusedUntilReferenced_thenUpperCase();
+    void reference_sequentialAndSimultaneous();
+    void reference_minusOne_invalid();
+    void lostArrival_deadline_motionUnconfirmed_untilReferenced();
+    void noNakReply_lateArrivalStillCounts();
+    void unexpectedArrival_positionUnknown();
+    void jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival();
+    void jog_leaseExpires_noNewChunk_boardStandsStill();
+    void jog_twoAxes_shareOneVector();
+    void jog_boardSilent_haltsAndUnconfirmed();
+    void linkFailure_whileMoving_unconfirmed_positionsUnknown();
+    void closeLink_whileMoving_unconfirmed();
+
+private:
+    void fastMotion(); // short ramps, quick speeds: tests stay short
+    QList<qint64> chunkSteps(char axisLetter) const;
+    EmisRig m_rig;
+};
+
+void TestEmisControllerMotion::init()
+{
+    QVERIFY(m_rig.setUp());
+}
+
+void TestEmisControllerMotion::cleanup()
+{
+    m_rig.tearDown();
+}
+
+void TestEmisControllerMotion::fastMotion()
+{
+    QVERIFY(m_rig.write({"ramp=20", "start-speed=500", "work-speed=4000", "reference-speed=4000"})
+                .ok());
+    m_rig.sim->clearReceivedCommands();
+}
+
+QList<qint64> TestEmisControllerMotion::chunkSteps(char axisLetter) const
+{
+    QList<qint64> out;
+    for (const QByteArray& c : m_rig.commandsStartingWith("L1,")) {
+        for (const QByteArray& field : c.mid(3).split(',')) {
+            if (field.startsWith(axisLetter))
+                out << field.mid(1).toLongLong();
+        }
+    }
+    return out;
+}
+
+void TestEmisControllerMotion::move_relative_positionsFromArrivals()
+{
+    fastMotion();
+    const AxisVector steps{{Axis::X, 300}, {Axis::Y, -150}, {Axis::U, 0}};
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, steps); }).ok());
+    QCOMPARE(m_rig.commands(), QList<QByteArray>{"L1,x300,y-150"});
+    QVERIFY(m_rig.axis(Axis::X).moving); // between <NAK> and <DC1>
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::X).position, 300);
+    QCOMPARE(m_rig.axis(Axis::Y).position, -150);
+    QCOMPARE(m_rig.sim->position(Axis::X), 300);
+    QVERIFY(!m_rig.axis(Axis::X).positionKnown); // relative bookkeeping, not referenced
+    QVERIFY(!m_rig.axis(Axis::X).positionEstimated);
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+}
+
+void TestEmisControllerMotion::move_busyAxis_refusedNotSent_otherAxisMayJoin()
+{
+    QVERIFY(m_rig.write({"work-speed=300", "start-speed=100"}).ok());
+    m_rig.sim->clearReceivedCommands();
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 600}}); }).ok());
+    const CommandResult busy = m_rig.run([&](RequestId id) {
+        m_rig.ctl->moveRelative(id, {{Axis::X, 10}});
+    });
+    QCOMPARE(busy.error, ErrorKind::Refused);
+    const CommandResult home = m_rig.run([&](RequestId id) {
+        m_rig.ctl->reference(id, {{Axis::X, 1}});
+    });
+    QCOMPARE(home.error, ErrorKind::Refused);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::U, 5}}); }).ok());
+    QCOMPARE(m_rig.commands(), (QList<QByteArray>{"L1,x600", "L1,u5"}));
+    QCOMPARE(m_rig.sim->busyRefusals(), 0);
+}
+
+void TestEmisControllerMotion::move_absolute_refusedUntilReferenced_thenUpperCase()
+{
+    fastMotion();
+    CommandResult r = m_rig.run([&](RequestId id) {
+        m_rig.ctl->moveAbsolute(id, {{Axis::Z, 50}});
+    });
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY(m_rig.commands().isEmpty());
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::Z, 1}}); }).ok());
+    QCOMPARE(m_rig.commands(), QList<QByteArray>{"$Hz"});
+    QTRY_VERIFY(m_rig.axis(Axis::Z).referenced);
+    QVERIFY(m_rig.axis(Axis::Z).positionKnown);
+    QCOMPARE(m_rig.axis(Axis::Z).position, 0);
+    r = m_rig.run([&](RequestId id) { m_rig.ctl->moveAbsolute(id, {{Axis::Z, 50}}); });
+    QVERIFY(r.ok());
+    QCOMPARE(m_rig.commands().last(), QByteArray("L1,Z50"));
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::Z).position, 50);
+    QVERIFY(m_rig.axis(Axis::Z).positionKnown);
+    QCOMPARE(m_rig.sim->position(Axis::Z), 50);
+}
+
+void TestEmisControllerMotion::reference_sequentialAndSimultaneous()
+{
+    fastMotion();
+    QVERIFY(m_rig
+                .run([&](RequestId id) {
+                    m_rig.ctl->reference(id, {{Axis::U, 1}, {Axis::X, 1}, {Axis::Y, 0}});
+                })
+                .ok());
+    QCOMPARE(m_rig.commands(), QList<QByteArray>{"$Hxu"});
+    QTRY_VERIFY(m_rig.axis(Axis::X).referenced && m_rig.axis(Axis::U).referenced);
+    QVERIFY(!m_rig.axis(Axis::Y).referenced);
+    QVERIFY(m_rig.operation("reference", {{"axes", "YZ"}, {"simultaneous", true}}).ok());
+    QCOMPARE(m_rig.commands().last(), QByteArray("$Hyz,a"));
+    QTRY_VERIFY(m_rig.axis(Axis::Y).referenced && m_rig.axis(Axis::Z).referenced);
+    QVERIFY(m_rig.sim->isReferenced(Axis::Z));
+}
+
+void TestEmisControllerMotion::reference_minusOne_invalid()
+{
+    const CommandResult r = m_rig.run([&](RequestId id) {
+        m_rig.ctl->reference(id, {{Axis::X, -1}});
+    });
+    QCOMPARE(r.error, ErrorKind::InvalidValue);
+    QVERIFY(m_rig.commandsStartingWith("$H").isEmpty());
+}
+
+void TestEmisControllerMotion::lostArrival_deadline_motionUnconfirmed_untilReferenced()
+{
+    fastMotion();
+    QSignalSpy errors(m_rig.ctl, &Controller::errorOccurred);
+    m_rig.sim->dropArrivals(1);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 40}}); }).ok());
+    QTRY_VERIFY(m_rig.ctl->status().motionUnconfirmed);
+    QVERIFY(!errors.isEmpty());
+    QVERIFY(errors.last().at(0).toString().contains("DC1"));
+    QVERIFY(m_rig.axis(Axis::X).positionEstimated);
+    QVERIFY(!m_rig.axis(Axis::X).positionKnown);
+    QVERIFY(!m_rig.axis(Axis::X).moving); // not claimed either way: motionUnconfirmed says it
+    const CommandResult again = m_rig.run([&](RequestId id) {
+        m_rig.ctl->moveRelative(id, {{Axis::X, 5}});
+    });
+    QCOMPARE(again.error, ErrorKind::Refused);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
+    QTRY_VERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    QVERIFY(m_rig.axis(Axis::X).positionKnown);
+}
+
+void TestEmisControllerMotion::noNakReply_lateArrivalStillCounts()
+{
+    fastMotion();
+    m_rig.sim->faults().dropReplies = 1; // the <NAK> is lost, the move runs
+    const CommandResult r = m_rig.run([&](RequestId id) {
+        m_rig.ctl->moveRelative(id, {{Axis::Y, 30}});
+    });
+    QCOMPARE(r.error, ErrorKind::Timeout);
+    QVERIFY(m_rig.ctl->status().motionUnconfirmed || m_rig.sim->position(Axis::Y) == 30);
+    QTRY_VERIFY(!m_rig.ctl->status().motionUnconfirmed); // its <DC2> proves the arrival
+    QCOMPARE(m_rig.axis(Axis::Y).position, 30);
+    QVERIFY(!m_rig.axis(Axis::Y).positionEstimated); // <DC2> proves the whole move ran
+}
+
+void TestEmisControllerMotion::unexpectedArrival_positionUnknown()
+{
+    fastMotion();
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::U, 1}}); }).ok());
+    QTRY_VERIFY(m_rig.axis(Axis::U).positionKnown);
+    m_rig.sim->receive("L1,u7\r"); // moved by something else (an input program)
+    QTRY_VERIFY(!m_rig.axis(Axis::U).positionKnown);
+    QVERIFY(m_rig.axis(Axis::U).positionEstimated);
+}
+
+void TestEmisControllerMotion::jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival()
+{
+    fastMotion();
+    QVERIFY(m_rig.write({"work-speed=4000"}).ok()); // known, so the jog can give it back
+    m_rig.sim->clearReceivedCommands();
+    QTimer renew; // the input renews the lease every 50 ms
+    connect(&renew, &QTimer::timeout, this, [this] {
+        m_rig.ctl->setJogVelocity({{Axis::X, 600}});
+    });
+    renew.start(50);
+    m_rig.ctl->setJogVelocity({{Axis::X, 600}});
+    QTRY_VERIFY(chunkSteps('x').size() >= 4);
+    renew.stop();
+    m_rig.ctl->endJog();
+    QTRY_VERIFY(!m_rig.anyMoving() && !m_rig.sim->anyMoving());
+    const QList<qint64> chunks = chunkSteps('x');
+    QVERIFY2(chunks.size() >= 3, qPrintable(QString::number(chunks.size())));
+    for (qint64 n : chunks)
+        QVERIFY(n > 0 && n <= 120);         // 600 steps/s for at most 0.2 s
+    QCOMPARE(m_rig.sim->busyRefusals(), 0); // never a move for a motor still moving
+    QCOMPARE(m_rig.commands().first(), QByteArray("#E1,x600"));
+    QTRY_COMPARE(m_rig.commands().last(), QByteArray("#E1,x4000")); // work speed given back
+    qint64 sum = 0;
+    for (qint64 n : chunks)
+        sum += n;
+    QCOMPARE(m_rig.axis(Axis::X).position, sum);
+    QCOMPARE(m_rig.sim->position(Axis::X), sum); // host bookkeeping = the board's own
+    QVERIFY(!m_rig.axis(Axis::X).positionEstimated);
+}
+
+void TestEmisControllerMotion::jog_leaseExpires_noNewChunk_boardStandsStill()
+{
+    fastMotion();
+    m_rig.ctl->setJogVelocity({{Axis::Y, -500}}); // once; never renewed (a frozen input)
+    QTRY_VERIFY(!chunkSteps('y').isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.ctl->jogRamp().isIdle(), 2000);
+    QTRY_VERIFY(!m_rig.sim->anyMoving());
+    const qsizetype chunks = chunkSteps('y').size();
+    QVERIFY2(chunks <= 3, qPrintable(QString::number(chunks))); // 300 ms lease, ~0.2 s chunks
+    for (qint64 n : chunkSteps('y'))
+        QVERIFY(n >= -100 && n < 0);
+    // No chunk after the lease: the board stays still.
+    letRun(400);
+    QCOMPARE(chunkSteps('y').size(), chunks);
+    QVERIFY(!m_rig.sim->anyMoving());
+    QCOMPARE(m_rig.axis(Axis::Y).position, m_rig.sim->position(Axis::Y));
+}
+
+void TestEmisControllerMotion::jog_twoAxes_shareOneVector()
+{
+    fastMotion();
+    m_rig.ctl->setJogVelocity({{Axis::X, 500}, {Axis::U, -250}});
+    QTRY_VERIFY(!m_rig.commandsStartingWith("L1,").isEmpty());
+    QCOMPARE(m_rig.commandsStartingWith("L1,").first(), QByteArray("L1,x100,u-50"));
+    m_rig.ctl->endJog();
+    QTRY_VERIFY(!m_rig.anyMoving() && !m_rig.sim->anyMoving());
+    QCOMPARE(m_rig.axis(Axis::U).position, m_rig.sim->position(Axis::U));
+}
+
+void TestEmisControllerMotion::jog_boardSilent_haltsAndUnconfirmed()
+{
+    fastMotion();
+    QSignalSpy refused(m_rig.ctl, &Controller::jogRefused);
+    QTimer renew;
+    connect(&renew, &QTimer::timeout, this, [this] {
+        m_rig.ctl->setJogVelocity({{Axis::Z, 400}});
+    });
+    renew.start(50);
+    m_rig.ctl->setJogVelocity({{Axis::Z, 400}});
+    QTRY_VERIFY(chunkSteps('z').size() >= 2);
+    m_rig.sim->faults().silent = true;
+    QTRY_VERIFY(m_rig.ctl->status().motionUnconfirmed);
+    QTRY_VERIFY(!refused.isEmpty() || m_rig.ctl->linkState() == LinkState::Lost);
+    const qsizetype sent = chunkSteps('z').size();
+    QTRY_VERIFY(!m_rig.sim->anyMoving()); // the chunk under way ended by itself
+    letRun(300);                          // the input keeps asking: nothing more goes out
+    QCOMPARE(chunkSteps('z').size(), sent);
+    renew.stop();
+    QVERIFY(!m_rig.axis(Axis::Z).positionKnown);
+}
+
+void TestEmisControllerMotion::linkFailure_whileMoving_unconfirmed_positionsUnknown()
+{
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
+    QTRY_VERIFY(m_rig.axis(Axis::X).positionKnown);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 500}}); }).ok());
+    m_rig.host->simulateFailure("unplugged");
+    QTRY_COMPARE(m_rig.ctl->linkState(), LinkState::Lost);
+    QVERIFY(m_rig.ctl->status().motionUnconfirmed);
+    QVERIFY(!m_rig.axis(Axis::X).positionKnown);
+    QVERIFY(m_rig.axis(Axis::X).positionEstimated);
+    QVERIFY(!m_rig.axis(Axis::X).moving);
+}
+
+void TestEmisControllerMotion::closeLink_whileMoving_unconfirmed()
+{
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::Y, 500}}); }).ok());
+    QSignalSpy status(m_rig.ctl, &Controller::statusChanged);
+    QSignalSpy closed(m_rig.ctl, &Controller::closeFinished);
+    const qsizetype seen = m_rig.sim->receivedCommands().size();
+    m_rig.ctl->closeLink(); // no stop command exists: nothing can be sent to stop the move
+    QTRY_COMPARE(closed.size(), 1);
+    QCOMPARE(m_rig.ctl->linkState(), LinkState::Disconnected);
+    QVERIFY(!status.isEmpty());
+    QVERIFY(status.last().at(0).value<MachineStatus>().motionUnconfirmed);
+    QCOMPARE(m_rig.sim->receivedCommands().size(), seen);
+    QVERIFY(m_rig.sim->isMoving(Axis::Y)); // the board goes on until the move arrives
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.sim->standingStill(), 10000);
+}
+
+QTEST_GUILESS_MAIN(TestEmisControllerMotion)
+#include "tst_emiscontrollermotion.moc"
