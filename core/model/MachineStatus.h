@@ -7,6 +7,10 @@
 
 namespace stepdeck {
 
+// The switch an axis last reported stopping at, on models that report events rather than
+// switch levels (laser motor axes: end switch = Limit, home switch = Reference).
+enum class SwitchEvent : quint8 { None, Limit, Reference };
+
 // Normalised per-axis status. Every model maps its own status words onto this.
 struct AxisStatus
 {
@@ -19,6 +23,7 @@ struct AxisStatus
     bool positionEstimated = false; // integrated from jog/velocity rates, not confirmed
     qint64 position = 0;            // steps, host-side bookkeeping unless the model reads it back
     double commandedVelocity = 0;   // steps/s the host currently commands (jog ramp output)
+    SwitchEvent lastSwitch = SwitchEvent::None;
 };
 
 // One drive on the link (E-LAB: the board; Nanotec: one bus address per axis).
@@ -45,6 +50,7 @@ struct MachineStatus
     // Cleared only by a status read from the device that shows every axis standing still.
     bool motionUnconfirmed = false;
     std::optional<bool> startButton;
+    std::optional<bool> doorOpen; // door switch, where the model reports one (laser status 3/4)
     std::optional<double> temperatureCelsius;
     QMap<Axis, AxisStatus> axes;
     QList<DriveStatus> drives;
