@@ -77,7 +77,8 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
 {
     const QString& arg = argv.at(*i);
     const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model", "--port", "--address", "--axes", "--timeout"};
+    static const QStringList names{"--model", "--port",    "--address",
+                                   "--axes",  "--timeout", "--arrival-timeout"};
     *matched = names.contains(name);
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))
@@ -96,6 +97,12 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
             return false;
         }
         o->address = n;
+    } else if (name == QLatin1String("--arrival-timeout")) {
+        o->arrivalTimeoutMs = value.toInt(&ok, 10);
+        if (!ok || o->arrivalTimeoutMs <= 0) {
+            *error = tr("--arrival-timeout needs a positive number of milliseconds");
+            return false;
+        }
     } else {
         o->connectTimeoutMs = value.toInt(&ok);
         if (!ok || o->connectTimeoutMs <= 0) {
@@ -231,6 +238,8 @@ QString usageText()
               "  --setup-defaults   write every parameter's schema default before the command\n"
               "                     (also the switch polarities; see `params`)\n"
               "  --timeout MS       how long to wait for the link to come up (default 3000)\n"
+              "  --arrival-timeout MS  how long move and home wait for the axes to report\n"
+              "                     arrival (laser-axis; default 60000, the laser's own)\n"
               "  --verbose          show the core's log output on stderr\n"
               "  --help, --version\n"
               "\n"
@@ -269,6 +278,12 @@ QString usageText()
               "                              address and firmware string (multi-drive models\n"
               "                              such as nanotec; others exit 8)\n"
               "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"
+              "  laser-bridge LASER_PORT [--map 1=X,2=Y,3=Z] [--scale STEPS_PER_UNIT]\n"
+              "               [--home X=-1,Y=-1,Z=-1] [--door-input N]\n"
+              "                              be the motor axes of a laser marker: answer its\n"
+              "                              frames on LASER_PORT (9600 8N1) with this\n"
+              "                              controller; runs until SIGINT/SIGTERM/SIGHUP,\n"
+              "                              stops the motion it started and exits 0\n"
               "  models                      controller models known to this build\n"
               "  params                      the model's parameters: range, unit, default\n"
               "\n"

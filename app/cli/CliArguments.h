@@ -19,6 +19,7 @@ struct CliOptions
     bool help = false;
     bool version = false;
     int connectTimeoutMs = 3000;
+    int arrivalTimeoutMs = 60000; // --arrival-timeout: models that report arrival (laser-axis)
     QString command;
     QStringList args;
 };

@@ -211,6 +211,8 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
     }
     if (status.startButton)
         lines << tr("Start button: %1").arg(*status.startButton ? tr("pressed") : tr("released"));
+    if (status.doorOpen)
+        lines << tr("Door:         %1").arg(*status.doorOpen ? tr("OPEN") : tr("closed"));
     if (capabilities.multiDrive && !status.drives.isEmpty())
         lines << driveLines(status.drives);
     lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");

@@ -79,6 +79,7 @@ Outcome CliSession::create()
     spec.modelId = m_options.model;
     spec.port = m_options.port;
     spec.options.axisAddresses = m_options.axisAddresses;
+    spec.options.arrivalTimeoutMs = m_options.arrivalTimeoutMs;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
     QString error;

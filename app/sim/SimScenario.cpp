@@ -1,8 +1,10 @@
 #include "SimScenario.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
+#include "protocols/laser/LaserAxisSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
+#include <QtMath>
 
 namespace stepdeck::simapp {
 
@@ -56,17 +58,30 @@ bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* er
     return true;
 }
 
-bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* error)
+bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* error,
+                   const QString& option = QStringLiteral("--position"))
 {
     const int eq = text.indexOf(QLatin1Char('='));
     const auto axis = eq > 0 ? axisFromName(QStringView(text).left(eq)) : std::nullopt;
     bool ok = false;
-    const qint64 steps = text.mid(eq + 1).toLongLong(&ok);
+    const qint64 steps = text.mid(eq + 1).toLongLong(&ok, 10);
     if (!axis || !ok) {
-        *error = tr("--position expects AXIS=STEPS, e.g. X=500, got '%1'").arg(text);
+        *error = tr("%1 expects AXIS=STEPS, e.g. X=500, got '%2'").arg(option, text);
         return false;
     }
     positions->insert(*axis, steps);
+    return true;
+}
+
+bool parseSpeed(const QString& text, std::optional<double>* speed, QString* error)
+{
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok || !qIsFinite(value) || value < 1 || value > 1e7) {
+        *error = tr("--speed expects units per second from 1 to 10000000, got '%1'").arg(text);
+        return false;
+    }
+    *speed = value;
     return true;
 }
 } // namespace
@@ -113,6 +128,17 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--position")) {
             if (!takeValue(args, &i, &value, error) || !parsePosition(value, &s.positions, error))
                 return false;
+        } else if (name == QLatin1String("--end-switch")) {
+            if (!takeValue(args, &i, &value, error) ||
+                !parsePosition(value, &s.endSwitches, error, name))
+                return false;
+        } else if (name == QLatin1String("--speed")) {
+            if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.speed, error))
+                return false;
+        } else if (name == QLatin1String("--silent")) {
+            s.silent = true;
+        } else if (name == QLatin1String("--garbage")) {
+            s.garbage = true;
         } else {
             *error = tr("unknown argument '%1' (try --help)").arg(args.at(i));
             return false;
@@ -140,11 +166,53 @@ QString simUsage()
               "                     (the board powers on with setup incomplete)\n"
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on\n");
+              "  --position AXIS=STEPS  where the carriage stands at power-on (laser-axis:\n"
+              "                     units from the home switch)\n"
+              "\n"
+              "laser-axis only:\n"
+              "  --speed UNITS      axis speed in position units per second (default 10000)\n"
+              "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
+              "  --silent           the axes move but never send a status frame\n"
+              "  --garbage          a malformed line before every status frame\n");
 }
+
+namespace {
+bool applyLaserScenario(const SimScenario& scenario, laser::LaserAxisSimulator* sim, QString* error)
+{
+    if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
+        *error = tr("--setup-complete, --temperature and --limit are not supported for model "
+                    "laser-axis");
+        return false;
+    }
+    for (const QMap<Axis, qint64>* map : {&scenario.positions, &scenario.endSwitches}) {
+        if (map->contains(Axis::U)) {
+            *error = tr("model laser-axis has no axis U");
+            return false;
+        }
+    }
+    if (scenario.speed)
+        sim->setSpeed(*scenario.speed);
+    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
+        sim->powerOn(it.key(), it.value());
+    for (auto it = scenario.endSwitches.cbegin(); it != scenario.endSwitches.cend(); ++it)
+        sim->config(it.key()).endSwitch = it.value();
+    sim->faults().silent = scenario.silent;
+    sim->setGarbageBeforeStatus(scenario.garbage);
+    return true;
+}
+} // namespace
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
 {
+    if (auto* laserSim = qobject_cast<laser::LaserAxisSimulator*>(simulator))
+        return applyLaserScenario(scenario, laserSim, error);
+    const bool laserOnly =
+        scenario.speed || !scenario.endSwitches.isEmpty() || scenario.silent || scenario.garbage;
+    if (laserOnly) {
+        *error = tr("--speed, --end-switch, --silent and --garbage are only supported for model "
+                    "laser-axis");
+        return false;
+    }
     auto* elabSim = qobject_cast<elab::ElabSimulator*>(simulator);
     const bool needsModelApi = scenario.setupComplete || scenario.temperature ||
                                !scenario.limits.isEmpty() || !scenario.positions.isEmpty();

@@ -25,6 +25,11 @@ struct SimScenario
     std::optional<int> temperature;
     QMap<Axis, LimitRange> limits;
     QMap<Axis, qint64> positions;
+    // laser-axis: speed in units/s, end switch positions, faults
+    std::optional<double> speed;
+    QMap<Axis, qint64> endSwitches;
+    bool silent = false;
+    bool garbage = false;
     bool help = false;
 };
 

@@ -1,5 +1,6 @@
 #include "Registry.h"
 #include "protocols/elab/ElabModel.h"
+#include "protocols/laser/LaserModel.h"
 #include "protocols/nanotec/NanotecModel.h"
 
 namespace stepdeck {
@@ -10,6 +11,7 @@ const QList<ModelInfo>& models()
     static const QList<ModelInfo> list{
         elab::modelInfo(),
         nanotec::modelInfo(),
+        laser::modelInfo(),
     };
     return list;
 }

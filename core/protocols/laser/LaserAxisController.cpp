@@ -102,11 +102,11 @@ void LaserAxisController::stopTrackingMotion(ErrorKind kind, const QString& reas
         mutableStatus().axes[it.key()].moving = false;
         moving << axisName(it.key());
     }
-    for (const Pending& p : std::exchange(m_pending, {}))
-        finishError(p.id, kind, reason);
     m_decoder.reset();
     updateMachineFlags();
     publishStatus();
+    for (const Pending& p : std::exchange(m_pending, {}))
+        finishError(p.id, kind, reason);
     if (!moving.isEmpty()) {
         Q_EMIT errorOccurred(tr("no longer tracking axis %1 on its way to a target: the protocol "
                                 "has no stop command; it goes on unless the machine's emergency "

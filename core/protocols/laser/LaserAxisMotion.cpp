@@ -125,22 +125,23 @@ void LaserAxisController::onStatusFrame(const StatusFrame& frame)
 {
     if (!m_tracks.contains(frame.axis))
         return;
-    Track& track = m_tracks[frame.axis];
+    const Track& track = m_tracks[frame.axis];
     AxisStatus& axis = mutableStatus().axes[frame.axis];
     axis.position = frame.position;
     axis.positionKnown = true;
     axis.positionEstimated = false;
+    bool settles = false;
     switch (frame.status) {
     case Status::TargetReached:
         axis.limitSwitch = axis.referenceSwitch = false;
         if (track.awaiting && track.command == Command::Home)
             axis.referenced = true; // '0' after a home command: the axis is home
-        settle(frame.axis, false);
+        settles = true;
         break;
     case Status::EndSwitch:
         axis.limitSwitch = true;
         axis.lastSwitch = SwitchEvent::Limit;
-        settle(frame.axis, true);
+        settles = true;
         break;
     case Status::HomeSwitch:
         // "The home position is also the '0' position of the axis."
@@ -148,8 +149,7 @@ void LaserAxisController::onStatusFrame(const StatusFrame& frame)
         axis.lastSwitch = SwitchEvent::Reference;
         axis.referenced = true;
         // On the way to a target the axis homes first and goes on: not the end of a move.
-        if (!(track.awaiting && track.command == Command::Move))
-            settle(frame.axis, false);
+        settles = !(track.awaiting && track.command == Command::Move);
         break;
     case Status::DoorOpened:
     case Status::DoorClosed:
@@ -157,6 +157,8 @@ void LaserAxisController::onStatusFrame(const StatusFrame& frame)
         mutableStatus().doorOpen = frame.status == Status::DoorOpened;
         break;
     }
+    if (settles)
+        return settle(frame.axis, frame.status == Status::EndSwitch);
     updateMachineFlags();
     publishStatus();
 }
@@ -168,6 +170,10 @@ void LaserAxisController::settle(Axis axis, bool endSwitch)
     track.awaiting = false;
     track.unconfirmed = false;
     mutableStatus().axes[axis].moving = false;
+    // The status first, then the results: whoever waits for a result reads a current status.
+    updateMachineFlags();
+    publishStatus();
+    armDeadline();
     if (endSwitch && wasAwaiting) {
         Q_EMIT errorOccurred(tr("axis %1 stopped at its end switch at %2 before reaching %3")
                                  .arg(axisName(axis))
@@ -188,7 +194,6 @@ void LaserAxisController::settle(Axis axis, bool endSwitch)
             value.insert(QStringLiteral("endSwitch"), done.endSwitch);
         finishOk(done.id, value.isEmpty() ? QVariant() : QVariant(value));
     }
-    armDeadline();
 }
 
 void LaserAxisController::armDeadline()
@@ -209,17 +214,22 @@ void LaserAxisController::armDeadline()
 void LaserAxisController::onDeadline()
 {
     const qint64 now = m_clock.elapsed();
+    QList<QPair<Axis, QString>> expired;
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting || it->deadlineMs > now)
             continue;
-        const Axis axis = it.key();
         it->awaiting = false; // still unconfirmed: it may be moving yet
-        mutableStatus().axes[axis].moving = false;
-        const QString why = tr("axis %1 did not report reaching its target %2 within %3 s; it may "
-                               "still be moving")
-                                .arg(axisName(axis))
-                                .arg(it->command == Command::Home ? 0 : it->target)
-                                .arg(options().arrivalTimeoutMs / 1000.0);
+        mutableStatus().axes[it.key()].moving = false;
+        expired.append({it.key(), tr("axis %1 did not report reaching its target %2 within %3 s; "
+                                     "it may still be moving")
+                                      .arg(axisName(it.key()))
+                                      .arg(it->command == Command::Home ? 0 : it->target)
+                                      .arg(options().arrivalTimeoutMs / 1000.0)});
+    }
+    armDeadline();
+    updateMachineFlags();
+    publishStatus();
+    for (const auto& [axis, why] : expired) {
         qCWarning(lcLaser) << why;
         for (int i = m_pending.size() - 1; i >= 0; --i) {
             if (m_pending.at(i).waiting.contains(axis))
@@ -227,9 +237,6 @@ void LaserAxisController::onDeadline()
         }
         Q_EMIT errorOccurred(why);
     }
-    armDeadline();
-    updateMachineFlags();
-    publishStatus();
 }
 
 void LaserAxisController::updateMachineFlags()

@@ -1,0 +1,178 @@
+// End to end over pseudo-terminals: `stepdeck-cli --model laser-axis` against
+// `stepdeck-sim --model laser-axis`.
+#include "ProcessSupport.h"
+#include "protocols/laser/LaserCodec.h"
+#include "sim/PtyEndpoint.h"
+#include <QDir>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QtTest>
+#include <csignal>
+
+using namespace stepdeck;
+using stepdeck::testing::ProcessRun;
+
+class TestCliLaserEndToEnd : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void cleanup();
+
+    void home_sendsHomeFrame_succeeds();
+    void moveAbs_waitsForArrival_printsPosition();
+    void moveAbs_outOfRange_exit7();
+    void moveRelative_positionUnknown_exit3();
+    void moveAbs_endSwitch_exit13();
+    void moveAbs_silentAxes_exit5();
+    void moveAbs_noWait_returnsBeforeArrival();
+    void stopAndPanic_noStopCommand_exit8_data();
+    void stopAndPanic_noStopCommand_exit8();
+    void statusJson_laserAxis_contract();
+
+private:
+    QString binary(const QString& name) const { return QDir(m_binDir).filePath(name); }
+    QString startSim(const QStringList& args);
+    ProcessRun cli(const QStringList& args, int timeoutMs = 30000);
+
+    QString m_binDir;
+    QProcess* m_sim = nullptr;
+    QString m_pty;
+};
+
+void TestCliLaserEndToEnd::initTestCase()
+{
+    m_binDir = qEnvironmentVariable("STEPDECK_BIN_DIR");
+    QVERIFY2(!m_binDir.isEmpty(), "STEPDECK_BIN_DIR is not set (run through ctest)");
+    QVERIFY(QFileInfo(binary("stepdeck-cli")).isExecutable());
+    QVERIFY(QFileInfo(binary("stepdeck-sim")).isExecutable());
+}
+
+void TestCliLaserEndToEnd::cleanup()
+{
+    if (m_sim) {
+        m_sim->terminate();
+        if (!m_sim->waitForFinished(5000))
+            m_sim->kill();
+        delete m_sim;
+        m_sim = nullptr;
+    }
+}
+
+QString TestCliLaserEndToEnd::startSim(const QStringList& args)
+{
+    m_sim = new QProcess(this);
+    QString error;
+    m_pty = testing::startSimulator(m_sim, binary("stepdeck-sim"), args, &error);
+    if (m_pty.isEmpty())
+        qWarning() << error;
+    return m_pty;
+}
+
+ProcessRun TestCliLaserEndToEnd::cli(const QStringList& args, int timeoutMs)
+{
+    return testing::runProcess(binary("stepdeck-cli"),
+                               QStringList{"--model", "laser-axis", "--port", m_pty} + args,
+                               timeoutMs);
+}
+
+void TestCliLaserEndToEnd::home_sendsHomeFrame_succeeds()
+{
+    QVERIFY(!startSim({"--model", "laser-axis"}).isEmpty());
+    const ProcessRun r = cli({"home", "X=1"});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.contains("X=0"), r.out.constData());
+    QVERIFY(r.err.isEmpty());
+}
+
+void TestCliLaserEndToEnd::moveAbs_waitsForArrival_printsPosition()
+{
+    QVERIFY(!startSim({"--model", "laser-axis", "--speed", "50000"}).isEmpty());
+    const ProcessRun r = cli({"--json", "move", "--abs", "Y=150"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject s = QJsonDocument::fromJson(r.out).object();
+    const QJsonObject y = s["axes"].toObject()["Y"].toObject();
+    QCOMPARE(y["position"].toInt(), 150);
+    QVERIFY(y["positionKnown"].toBool());
+    QVERIFY(!y["moving"].toBool());
+    QVERIFY(!s["machine"].toObject()["motionUnconfirmed"].toBool());
+}
+
+void TestCliLaserEndToEnd::moveAbs_outOfRange_exit7()
+{
+    QVERIFY(!startSim({"--model", "laser-axis"}).isEmpty());
+    const ProcessRun r = cli({"move", "--abs", "X=100000"});
+    QCOMPARE(r.exitCode, 7);
+    QVERIFY2(r.err.contains("0..99999"), r.err.constData());
+    QCOMPARE(r.err.count('\n'), 1);
+    QCOMPARE(cli({"move", "--abs", "X=-1"}).exitCode, 7);
+}
+
+void TestCliLaserEndToEnd::moveRelative_positionUnknown_exit3()
+{
+    QVERIFY(!startSim({"--model", "laser-axis"}).isEmpty());
+    const ProcessRun r = cli({"move", "X=10"});
+    QCOMPARE(r.exitCode, 3);
+    QVERIFY2(r.err.contains("unknown"), r.err.constData());
+}
+
+void TestCliLaserEndToEnd::moveAbs_endSwitch_exit13()
+{
+    QVERIFY(!startSim({"--model", "laser-axis", "--end-switch", "Y=100"}).isEmpty());
+    const ProcessRun r = cli({"move", "--abs", "Y=150"});
+    QCOMPARE(r.exitCode, 13);
+    QVERIFY2(r.err.contains("end switch"), r.err.constData());
+    QVERIFY2(r.err.contains("Y=100"), r.err.constData());
+}
+
+void TestCliLaserEndToEnd::moveAbs_silentAxes_exit5()
+{
+    QVERIFY(!startSim({"--model", "laser-axis", "--silent"}).isEmpty());
+    const ProcessRun r = cli({"--arrival-timeout", "300", "move", "--abs", "Z=20"});
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.err.contains("axis Z"), r.err.constData());
+}
+
+void TestCliLaserEndToEnd::moveAbs_noWait_returnsBeforeArrival()
+{
+    // The end switch frame would make a waiting move exit 13; --no-wait returns before it.
+    QVERIFY(
+        !startSim({"--model", "laser-axis", "--speed", "200", "--end-switch", "X=100"}).isEmpty());
+    const ProcessRun r = cli({"move", "--no-wait", "--abs", "X=500"});
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(cli({"move", "--no-wait", "--abs", "X=100000"}).exitCode, 7);
+}
+
+void TestCliLaserEndToEnd::stopAndPanic_noStopCommand_exit8_data()
+{
+    QTest::addColumn<QString>("command");
+    QTest::newRow("stop") << "stop";
+    QTest::newRow("panic") << "panic";
+}
+
+void TestCliLaserEndToEnd::stopAndPanic_noStopCommand_exit8()
+{
+    QFETCH(QString, command);
+    QVERIFY(!startSim({"--model", "laser-axis"}).isEmpty());
+    const ProcessRun r = cli({command});
+    QCOMPARE(r.exitCode, 8);
+    QVERIFY2(r.err.contains("no stop command"), r.err.constData());
+    QVERIFY2(r.err.contains("emergency stop"), r.err.constData());
+    QCOMPARE(r.err.count('\n'), 1);
+}
+
+void TestCliLaserEndToEnd::statusJson_laserAxis_contract()
+{
+    QVERIFY(!startSim({"--model", "laser-axis"}).isEmpty());
+    const ProcessRun r = cli({"status", "--json"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject s = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(s["model"].toString(), QStringLiteral("laser-axis"));
+    QCOMPARE(s["axes"].toObject().keys(), (QStringList{"X", "Y", "Z"}));
+    QVERIFY(!s["axes"].toObject()["X"].toObject()["positionKnown"].toBool());
+    QVERIFY(!s["machine"].toObject().contains("doorOpen")); // not reported yet
+}
+
+QTEST_GUILESS_MAIN(TestCliLaserEndToEnd)
+#include "tst_cli_laser_e2e.moc"
