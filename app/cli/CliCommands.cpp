@@ -42,6 +42,7 @@ const CommandEntry kCommands[] = {
     {"spindle", cmdSpindle, true, false},
     {"coolant", cmdCoolant, true, false},
     {"power", cmdPower, true, false},
+    {"laser-bridge", cmdLaserBridge, true, true},
 };
 // clang-format on
 

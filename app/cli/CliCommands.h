@@ -60,4 +60,6 @@ Outcome cmdSpindle(CliContext& c, QStringList args);
 Outcome cmdCoolant(CliContext& c, QStringList args);
 Outcome cmdPower(CliContext& c, QStringList args);
 
+Outcome cmdLaserBridge(CliContext& c, QStringList args); // CliBridgeCommand.cpp
+
 } // namespace stepdeck::cli

@@ -8,7 +8,7 @@
 
 namespace stepdeck::app {
 
-// Turns SIGINT/SIGTERM into a call on the event loop (self-pipe: the handler only writes one
+// Turns SIGINT/SIGTERM/SIGHUP into a call on the event loop (self-pipe: the handler only writes one
 // byte), so an interrupted jog can still send its stop and the simulator can quit cleanly.
 // One instance per process.
 class SignalPipe
@@ -30,11 +30,13 @@ public:
         action.sa_flags = SA_RESTART;
         sigaction(SIGINT, &action, nullptr);
         sigaction(SIGTERM, &action, nullptr);
+        sigaction(SIGHUP, &action, nullptr); // the terminal or the service manager went away
     }
     ~SignalPipe()
     {
         std::signal(SIGINT, SIG_DFL);
         std::signal(SIGTERM, SIG_DFL);
+        std::signal(SIGHUP, SIG_DFL);
         delete m_notifier;
         for (int& fd : s_fds) {
             if (fd >= 0)

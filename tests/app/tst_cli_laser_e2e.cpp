@@ -1,5 +1,6 @@
 // End to end over pseudo-terminals: `stepdeck-cli --model laser-axis` against
-// `stepdeck-sim --model laser-axis`.
+// `stepdeck-sim --model laser-axis`, and `stepdeck-cli laser-bridge` with a scripted laser on a
+// pty of this test and the E-LAB simulator process behind it.
 #include "ProcessSupport.h"
 #include "protocols/laser/LaserCodec.h"
 #include "sim/PtyEndpoint.h"
@@ -31,14 +32,22 @@ private Q_SLOTS:
     void stopAndPanic_noStopCommand_exit8();
     void statusJson_laserAxis_contract();
 
+    void bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion_data();
+    void bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion();
+    void bridge_malformedFrame_loggedIgnored();
+    void bridge_usageErrors_data();
+    void bridge_usageErrors();
+
 private:
     QString binary(const QString& name) const { return QDir(m_binDir).filePath(name); }
     QString startSim(const QStringList& args);
     ProcessRun cli(const QStringList& args, int timeoutMs = 30000);
+    bool waitForLine(QProcess* p, const QByteArray& containing, QByteArray* all, int ms);
 
     QString m_binDir;
     QProcess* m_sim = nullptr;
     QString m_pty;
+    QByteArray m_laserGot;
 };
 
 void TestCliLaserEndToEnd::initTestCase()
@@ -58,6 +67,7 @@ void TestCliLaserEndToEnd::cleanup()
         delete m_sim;
         m_sim = nullptr;
     }
+    m_laserGot.clear();
 }
 
 QString TestCliLaserEndToEnd::startSim(const QStringList& args)
@@ -172,6 +182,120 @@ void TestCliLaserEndToEnd::statusJson_laserAxis_contract()
     QCOMPARE(s["axes"].toObject().keys(), (QStringList{"X", "Y", "Z"}));
     QVERIFY(!s["axes"].toObject()["X"].toObject()["positionKnown"].toBool());
     QVERIFY(!s["machine"].toObject().contains("doorOpen")); // not reported yet
+}
+
+// ---------------------------------------------------------------- laser-bridge
+
+bool TestCliLaserEndToEnd::waitForLine(QProcess* p, const QByteArray& containing, QByteArray* all,
+                                       int ms)
+{
+    QElapsedTimer t;
+    t.start();
+    while (!all->contains(containing) && t.elapsed() < ms) {
+        p->waitForReadyRead(50);
+        *all += p->readAllStandardOutput();
+    }
+    return all->contains(containing);
+}
+
+void TestCliLaserEndToEnd::bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+    QTest::newRow("SIGINT") << int(SIGINT);
+    QTest::newRow("SIGHUP") << int(SIGHUP);
+}
+
+void TestCliLaserEndToEnd::bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion()
+{
+    QFETCH(int, signal);
+    QVERIFY(!startSim({"--model", "elab", "--setup-complete", "--position", "X=-19500"}).isEmpty());
+    PtyEndpoint laser;
+    QVERIFY(laser.create());
+    laser.open({});
+    connect(&laser, &Transport::dataReceived, this,
+            [this](const QByteArray& b) { m_laserGot += b; });
+
+    QProcess bridge;
+    bridge.start(binary("stepdeck-cli"),
+                 {"--model", "elab", "--port", m_pty, "laser-bridge", laser.slavePath()});
+    QByteArray out;
+    QVERIFY2(waitForLine(&bridge, "serving the laser", &out, 10000), out.constData());
+
+    laser.write("1100000\r");
+    QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("1000002\r"), 15000);
+    laser.write("2199999\r"); // about 20 s of travel
+    QVERIFY(waitForLine(&bridge, "move X to 99999", &out, 5000));
+    QTest::qWait(300); // under way (the board ramps up)
+    ::kill(pid_t(bridge.processId()), signal);
+    QVERIFY(bridge.waitForFinished(10000));
+    out += bridge.readAllStandardOutput();
+    QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(bridge.exitCode(), 0);
+    QVERIFY2(out.contains("stopping the motion the bridge started"), out.constData());
+    QCOMPARE(m_laserGot, QByteArray("1000002\r")); // no '0' for a target never reached
+
+    // The board itself: standing well before the target (the move would take ~20 s).
+    QElapsedTimer t;
+    t.start();
+    bool moving = true;
+    while (moving && t.elapsed() < 8000) {
+        const ProcessRun s =
+            testing::runProcess(binary("stepdeck-cli"),
+                                {"--model", "elab", "--port", m_pty, "--json", "status"}, 10000);
+        QCOMPARE(s.exitCode, 0);
+        moving = QJsonDocument::fromJson(s.out)["axes"]["X"]["moving"].toBool();
+    }
+    QVERIFY(!moving);
+}
+
+void TestCliLaserEndToEnd::bridge_malformedFrame_loggedIgnored()
+{
+    QVERIFY(!startSim({"--model", "elab", "--setup-complete"}).isEmpty());
+    PtyEndpoint laser;
+    QVERIFY(laser.create());
+    laser.open({});
+    connect(&laser, &Transport::dataReceived, this,
+            [this](const QByteArray& b) { m_laserGot += b; });
+    QProcess bridge;
+    bridge.start(binary("stepdeck-cli"), {"--model", "elab", "--port", m_pty, "laser-bridge",
+                                          laser.slavePath(), "--map", "1=X"});
+    QByteArray out;
+    QVERIFY2(waitForLine(&bridge, "serving the laser", &out, 10000), out.constData());
+    laser.write("2x00150\r2300150\r");
+    QVERIFY2(waitForLine(&bridge, "not mapped", &out, 5000), out.constData());
+    QVERIFY(out.contains("ignored malformed frame"));
+    bridge.terminate();
+    QVERIFY(bridge.waitForFinished(10000));
+    QCOMPARE(bridge.exitCode(), 0);
+    QVERIFY(m_laserGot.isEmpty());
+}
+
+void TestCliLaserEndToEnd::bridge_usageErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::newRow("no port") << QStringList{"laser-bridge"} << 2;
+    QTest::newRow("two ports") << QStringList{"laser-bridge", "/dev/a", "/dev/b"} << 2;
+    QTest::newRow("bad map") << QStringList{"laser-bridge", "/dev/a", "--map", "1=Q"} << 2;
+    QTest::newRow("bad scale") << QStringList{"laser-bridge", "/dev/a", "--scale", "nan"} << 2;
+    QTest::newRow("bad home") << QStringList{"laser-bridge", "/dev/a", "--home", "X=2"} << 2;
+    QTest::newRow("unknown option") << QStringList{"laser-bridge", "/dev/a", "--fast"} << 2;
+    QTest::newRow("axis U on elab") << QStringList{"laser-bridge", "/dev/a", "--map", "1=U"} << 2;
+    QTest::newRow("door on elab") << QStringList{"laser-bridge", "/dev/null-laser", "--door-input",
+                                                 "1"}
+                                  << 8;
+    QTest::newRow("laser port missing") << QStringList{"laser-bridge", "/dev/no-such-laser"} << 6;
+}
+
+void TestCliLaserEndToEnd::bridge_usageErrors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    const ProcessRun r = testing::runProcess(
+        binary("stepdeck-cli"), QStringList{"--model", "elab", "--port", "sim"} + args, 20000);
+    QCOMPARE(r.exitCode, exitCode);
+    QCOMPARE(r.err.count('\n'), 1);
 }
 
 QTEST_GUILESS_MAIN(TestCliLaserEndToEnd)
