@@ -97,10 +97,61 @@
         </message>
     </context>
     <context>
+        <name>LaserBridgeConfig</name>
+        <message>
+            <source>--map expects LASER_AXIS=AXIS pairs such as 1=X,2=Y,3=Z, got '%1'</source>
+            <translation>--map erwartet Paare LASERACHSE=ACHSE wie 1=X,2=Y,3=Z, nicht '%1'</translation>
+        </message>
+        <message>
+            <source>--map: '%1=%2' is not LASER_AXIS=AXIS (laser axes 1, 2, 3; axes X, Y, Z, U)</source>
+            <translation>--map: '%1=%2' ist nicht LASERACHSE=ACHSE (Laserachsen 1, 2, 3; Achsen X, Y, Z, U)</translation>
+        </message>
+        <message>
+            <source>--map: laser axis %1 is mapped twice</source>
+            <translation>--map: Laserachse %1 ist zweimal zugeordnet</translation>
+        </message>
+        <message>
+            <source>--scale expects steps per laser unit, a number above 0 and at most %1, got '%2'</source>
+            <translation>--scale erwartet Schritte pro Lasereinheit, eine Zahl über 0 und höchstens %1, nicht '%2'</translation>
+        </message>
+        <message>
+            <source>--home expects AXIS=-1 or AXIS=1 per axis, e.g. X=-1,Y=-1,Z=1, got '%1'</source>
+            <translation>--home erwartet ACHSE=-1 oder ACHSE=1 je Achse, z. B. X=-1,Y=-1,Z=1, nicht '%1'</translation>
+        </message>
+        <message>
+            <source>--door-input expects an input number from 1 to 64, got '%1'</source>
+            <translation>--door-input erwartet eine Eingangsnummer von 1 bis 64, nicht '%1'</translation>
+        </message>
+        <message>
+            <source>the axis map is empty: map at least one laser axis</source>
+            <translation>die Achszuordnung ist leer: mindestens eine Laserachse zuordnen</translation>
+        </message>
+        <message>
+            <source>the controller has no axis %1 (laser axis %2)</source>
+            <translation>die Steuerung hat keine Achse %1 (Laserachse %2)</translation>
+        </message>
+        <message>
+            <source>axis %1 is mapped to two laser axes</source>
+            <translation>Achse %1 ist zwei Laserachsen zugeordnet</translation>
+        </message>
+        <message>
+            <source>--home names axis %1, which no laser axis is mapped to</source>
+            <translation>--home nennt Achse %1, der keine Laserachse zugeordnet ist</translation>
+        </message>
+        <message>
+            <source>the scale must be above 0 and at most %1 steps per laser unit</source>
+            <translation>der Maßstab muss über 0 und höchstens %1 Schritte pro Lasereinheit betragen</translation>
+        </message>
+    </context>
+    <context>
         <name>Models</name>
         <message>
             <source>E-LAB 3-axis stepper controller</source>
             <translation>E-LAB 3-Achsen-Schrittmotorsteuerung</translation>
+        </message>
+        <message>
+            <source>Laser marker motor axes (RS232)</source>
+            <translation>Motorachsen eines Markierlasers (RS232)</translation>
         </message>
     </context>
     <context>
@@ -1270,6 +1321,173 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::bridge::LaserBridge</name>
+        <message>
+            <source>the controller did not confirm the stop in time</source>
+            <translation>die Steuerung hat den Stopp nicht rechtzeitig bestätigt</translation>
+        </message>
+        <message>
+            <source>no controller session or laser port</source>
+            <translation>keine Steuerungsverbindung oder kein Laser-Port</translation>
+        </message>
+        <message>
+            <source>serving the laser on %1 (9600 8N1): laser axes %2, %3 steps per laser unit</source>
+            <translation>bediene den Laser an %1 (9600 8N1): Laserachsen %2, %3 Schritte pro Lasereinheit</translation>
+        </message>
+        <message>
+            <source>laser port: %1</source>
+            <translation>Laser-Port: %1</translation>
+        </message>
+        <message>
+            <source>ignored malformed frame: %1</source>
+            <translation>fehlerhaften Rahmen ignoriert: %1</translation>
+        </message>
+        <message>
+            <source>laser axis %1 is not mapped to a controller axis</source>
+            <translation>Laserachse %1 ist keiner Steuerungsachse zugeordnet</translation>
+        </message>
+        <message>
+            <source>the bridge is stopping</source>
+            <translation>die Brücke wird angehalten</translation>
+        </message>
+        <message>
+            <source>door open: %1 waits until the door closes</source>
+            <translation>Tür offen: %1 wartet, bis die Tür geschlossen ist</translation>
+        </message>
+        <message>
+            <source>door opened</source>
+            <translation>Tür geöffnet</translation>
+        </message>
+        <message>
+            <source>door closed</source>
+            <translation>Tür geschlossen</translation>
+        </message>
+        <message>
+            <source>stopping the motion the bridge started</source>
+            <translation>stoppe die Bewegung, die die Brücke gestartet hat</translation>
+        </message>
+        <message>
+            <source>the controller has no stop command: the axes go on to their targets; use the machine's emergency stop to stop them</source>
+            <translation>die Steuerung hat keinen Stoppbefehl: die Achsen fahren weiter zu ihren Zielen; zum Anhalten den Not-Halt der Maschine benutzen</translation>
+        </message>
+        <message>
+            <source>laser bridge stopped</source>
+            <translation>Laserbrücke angehalten</translation>
+        </message>
+        <message>
+            <source>laser  -&gt;</source>
+            <translation>Laser  -&gt;</translation>
+        </message>
+        <message>
+            <source>laser &lt;- </source>
+            <translation>Laser &lt;- </translation>
+        </message>
+        <message>
+            <source>ignored  </source>
+            <translation>ignoriert</translation>
+        </message>
+        <message>
+            <source>note     </source>
+            <translation>Hinweis  </translation>
+        </message>
+        <message>
+            <source>ERROR    </source>
+            <translation>FEHLER   </translation>
+        </message>
+        <message>
+            <source>idle</source>
+            <translation>bereit</translation>
+        </message>
+        <message>
+            <source>referencing</source>
+            <translation>referenziert gerade</translation>
+        </message>
+        <message>
+            <source>moving</source>
+            <translation>fährt</translation>
+        </message>
+        <message>
+            <source>waiting for the controller</source>
+            <translation>wartet auf die Steuerung</translation>
+        </message>
+        <message>
+            <source>stopping to retarget</source>
+            <translation>stoppt für ein neues Ziel</translation>
+        </message>
+        <message>
+            <source>%1: %2; no answer to the laser (it raises its timeout alarm)</source>
+            <translation>%1: %2; keine Antwort an den Laser (er meldet seinen Zeitüberschreitungsalarm)</translation>
+        </message>
+        <message>
+            <source>the controller is not connected</source>
+            <translation>die Steuerung ist nicht verbunden</translation>
+        </message>
+        <message>
+            <source>the operator is jogging axis %1</source>
+            <translation>der Bediener verfährt Achse %1 im Tippbetrieb</translation>
+        </message>
+        <message>
+            <source>axis %1 not referenced since the bridge started: referencing it first</source>
+            <translation>Achse %1 ist seit dem Start der Brücke nicht referenziert: zuerst Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>target x scale is out of range</source>
+            <translation>Ziel x Maßstab liegt außerhalb des Bereichs</translation>
+        </message>
+        <message>
+            <source>new target for axis %1 while it moves: stopping first</source>
+            <translation>neues Ziel für Achse %1 während der Fahrt: zuerst stoppen</translation>
+        </message>
+        <message>
+            <source>new target for axis %1 while it moves: the controller cannot retarget without a ramped stop, so it arrives first</source>
+            <translation>neues Ziel für Achse %1 während der Fahrt: die Steuerung kann ohne Stopp mit Rampe kein neues Ziel anfahren, daher kommt sie zuerst an</translation>
+        </message>
+        <message>
+            <source>the controller has no stop command: the axes go on to their targets</source>
+            <translation>die Steuerung hat keinen Stoppbefehl: die Achsen fahren weiter zu ihren Zielen</translation>
+        </message>
+        <message>
+            <source>the controller's status could not be read: %1</source>
+            <translation>der Status der Steuerung konnte nicht gelesen werden: %1</translation>
+        </message>
+        <message>
+            <source>controller refused at an active limit switch: %1</source>
+            <translation>Steuerung lehnt an einem aktiven Endschalter ab: %1</translation>
+        </message>
+        <message>
+            <source>axis %1 waits until the controller is idle (%2)</source>
+            <translation>Achse %1 wartet, bis die Steuerung bereit ist (%2)</translation>
+        </message>
+        <message>
+            <source>the controller did not take it: %1</source>
+            <translation>die Steuerung hat es nicht angenommen: %1</translation>
+        </message>
+        <message>
+            <source>the operator took over axis %1</source>
+            <translation>der Bediener hat Achse %1 übernommen</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped before it was referenced</source>
+            <translation>Achse %1 hat vor dem Referenzieren angehalten</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped at %2 steps, short of its target %3 (stopped by the operator?)</source>
+            <translation>Achse %1 hat bei %2 Schritten vor ihrem Ziel %3 angehalten (vom Bediener gestoppt?)</translation>
+        </message>
+        <message>
+            <source>an unknown position</source>
+            <translation>einer unbekannten Position</translation>
+        </message>
+        <message>
+            <source>stop failed: %1</source>
+            <translation>Stopp fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>status after the stop: %1</source>
+            <translation>Status nach dem Stopp: %1</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::elab</name>
         <message>
             <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
@@ -1730,6 +1948,144 @@
         <message>
             <source>Axis state (RequestAxeState)</source>
             <translation>Achsstatus (RequestAxeState)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::laser::LaserAxisController</name>
+        <message>
+            <source>the port did not take the bytes in time</source>
+            <translation>der Port hat die Bytes nicht rechtzeitig übernommen</translation>
+        </message>
+        <message>
+            <source>no transport</source>
+            <translation>keine Übertragungsstrecke</translation>
+        </message>
+        <message>
+            <source>already connecting</source>
+            <translation>Verbindung wird bereits aufgebaut</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>Verbindung verloren: %1</translation>
+        </message>
+        <message>
+            <source>link closed</source>
+            <translation>Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>geschlossen</translation>
+        </message>
+        <message>
+            <source>no longer tracking axis %1 on its way to a target: the protocol has no stop command; it goes on unless the machine's emergency stop is used</source>
+            <translation>Achse %1 wird auf dem Weg zu ihrem Ziel nicht mehr verfolgt: das Protokoll hat keinen Stoppbefehl; sie fährt weiter, außer der Not-Halt der Maschine wird benutzt</translation>
+        </message>
+        <message>
+            <source>not connected</source>
+            <translation>nicht verbunden</translation>
+        </message>
+        <message>
+            <source>malformed status frame from the axes ignored (%1): %2</source>
+            <translation>fehlerhafte Statusmeldung der Achsen ignoriert (%1): %2</translation>
+        </message>
+        <message>
+            <source>the laser motor-axis protocol has no parameters: it only knows home and move to position</source>
+            <translation>das Motorachsen-Protokoll des Lasers hat keine Parameter: es kennt nur Referenzfahrt und Fahrt auf Position</translation>
+        </message>
+        <message>
+            <source>jog refused: the laser motor axes have no jog command; jog moves them by short targets, one after the other</source>
+            <translation>Tippbetrieb abgelehnt: die Motorachsen des Lasers haben keinen Tippbefehl; der Tippbetrieb fährt sie in kurzen Zielen, eines nach dem anderen</translation>
+        </message>
+        <message>
+            <source>this machine has no axis %1</source>
+            <translation>diese Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>target %1 for axis %2 is out of range (allowed: 0..%3)</source>
+            <translation>Ziel %1 für Achse %2 liegt außerhalb des Bereichs (erlaubt: 0..%3)</translation>
+        </message>
+        <message>
+            <source>relative move refused: the position of axis %1 is unknown (no status frame from it in this session); home it or move it to an absolute target first</source>
+            <translation>Relativfahrt abgelehnt: die Position von Achse %1 ist unbekannt (in dieser Sitzung keine Statusmeldung von ihr); zuerst Referenzfahrt oder Fahrt auf ein absolutes Ziel</translation>
+        </message>
+        <message>
+            <source>no axis to home: every direction is 0</source>
+            <translation>keine Achse zu referenzieren: jede Richtung ist 0</translation>
+        </message>
+        <message>
+            <source>replaced by a newer target for axis %1</source>
+            <translation>durch ein neueres Ziel für Achse %1 ersetzt</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped at its end switch at %2 before reaching %3</source>
+            <translation>Achse %1 hat an ihrem Endschalter bei %2 angehalten, bevor sie %3 erreichte</translation>
+        </message>
+        <message>
+            <source>axis %1 did not report reaching its target %2 within %3 s; it may still be moving</source>
+            <translation>Achse %1 hat das Erreichen ihres Ziels %2 nicht innerhalb von %3 s gemeldet; sie fährt möglicherweise noch</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::laser::LaserCodec</name>
+        <message>
+            <source>no error</source>
+            <translation>kein Fehler</translation>
+        </message>
+        <message>
+            <source>wrong length (a frame is 7 digits and CR)</source>
+            <translation>falsche Länge (ein Rahmen ist 7 Ziffern und CR)</translation>
+        </message>
+        <message>
+            <source>too long (more than 7 characters before the CR)</source>
+            <translation>zu lang (mehr als 7 Zeichen vor dem CR)</translation>
+        </message>
+        <message>
+            <source>a character that is not a digit</source>
+            <translation>ein Zeichen, das keine Ziffer ist</translation>
+        </message>
+        <message>
+            <source>unknown axis (only 1, 2 and 3 exist)</source>
+            <translation>unbekannte Achse (nur 1, 2 und 3 gibt es)</translation>
+        </message>
+        <message>
+            <source>unknown command (only 1 home and 2 move)</source>
+            <translation>unbekannter Befehl (nur 1 Referenzfahrt und 2 Fahrt)</translation>
+        </message>
+        <message>
+            <source>unknown status (only 0 to 4)</source>
+            <translation>unbekannter Status (nur 0 bis 4)</translation>
+        </message>
+        <message>
+            <source>home %1</source>
+            <translation>Referenzfahrt %1</translation>
+        </message>
+        <message>
+            <source>move %1 to %2</source>
+            <translation>%1 auf %2 fahren</translation>
+        </message>
+        <message>
+            <source>target reached</source>
+            <translation>Ziel erreicht</translation>
+        </message>
+        <message>
+            <source>end switch</source>
+            <translation>Endschalter</translation>
+        </message>
+        <message>
+            <source>home switch</source>
+            <translation>Referenzschalter</translation>
+        </message>
+        <message>
+            <source>door opened</source>
+            <translation>Tür geöffnet</translation>
+        </message>
+        <message>
+            <source>door closed</source>
+            <translation>Tür geschlossen</translation>
+        </message>
+        <message>
+            <source>%1 at %2: %3</source>
+            <translation>%1 bei %2: %3</translation>
         </message>
     </context>
     <context>
@@ -2665,6 +3021,10 @@
             <source>Max jog speed per axis, dead zone, response curve, keyboard speed</source>
             <translation>Maximale Tippgeschwindigkeit je Achse, Totzone, Kennlinie, Tastaturgeschwindigkeit</translation>
         </message>
+        <message>
+            <source>This controller has no jog command: the pad, keys and gamepad move it by short targets, each sent only after the previous one arrived. Releasing ends jogging after the short move under way. Incremental jog moves by the step size.</source>
+            <translation>Diese Steuerung hat keinen Tippbefehl: Joystick, Tasten und Gamepad fahren sie in kurzen Zielen, jedes erst nachdem das vorige erreicht ist. Loslassen beendet den Tippbetrieb nach der laufenden kurzen Fahrt. Schrittweises Tippen fährt um die Schrittweite.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::JogSettingsWidget</name>
@@ -2729,6 +3089,153 @@
         <message>
             <source>Keyboard</source>
             <translation>Tastatur</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::LaserBridgePage</name>
+        <message>
+            <source>Start bridge</source>
+            <translation>Brücke starten</translation>
+        </message>
+        <message>
+            <source>Stop bridge</source>
+            <translation>Brücke anhalten</translation>
+        </message>
+        <message>
+            <source>Laser axis</source>
+            <translation>Laserachse</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>Zustand</translation>
+        </message>
+        <message>
+            <source>Target</source>
+            <translation>Ziel</translation>
+        </message>
+        <message>
+            <source>Referenced</source>
+            <translation>Referenziert</translation>
+        </message>
+        <message>
+            <source>Last answer</source>
+            <translation>Letzte Antwort</translation>
+        </message>
+        <message>
+            <source>Laser frames and answers:</source>
+            <translation>Rahmen des Lasers und Antworten:</translation>
+        </message>
+        <message>
+            <source>Not running.</source>
+            <translation>Läuft nicht.</translation>
+        </message>
+        <message>
+            <source>Laser bridge</source>
+            <translation>Laserbrücke</translation>
+        </message>
+        <message>
+            <source>StepDeck answers the laser marker's motor-axis frames (RS232, 9600 8N1) with the connected controller.</source>
+            <translation>StepDeck beantwortet die Motorachsen-Rahmen des Markierlasers (RS232, 9600 8N1) mit der verbundenen Steuerung.</translation>
+        </message>
+        <message>
+            <source>The serial port cabled to the laser's XYZ-control port</source>
+            <translation>Die serielle Schnittstelle, die mit dem XYZ-Steuerport des Lasers verbunden ist</translation>
+        </message>
+        <message>
+            <source>Laser port:</source>
+            <translation>Laser-Port:</translation>
+        </message>
+        <message>
+            <source>Controller steps per laser position unit: a target goes to target x scale steps from the reference</source>
+            <translation>Schritte der Steuerung pro Positionseinheit des Lasers: ein Ziel wird zu Ziel x Maßstab Schritten ab der Referenz</translation>
+        </message>
+        <message>
+            <source>Steps per laser unit:</source>
+            <translation>Schritte pro Lasereinheit:</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
+        </message>
+        <message>
+            <source>A controller input wired to the door switch (set = door open), where the controller publishes its inputs</source>
+            <translation>Ein Eingang der Steuerung, an dem der Türschalter hängt (gesetzt = Tür offen), wo die Steuerung ihre Eingänge meldet</translation>
+        </message>
+        <message>
+            <source>Door switch input:</source>
+            <translation>Eingang Türschalter:</translation>
+        </message>
+        <message>
+            <source>Controller axis</source>
+            <translation>Steuerungsachse</translation>
+        </message>
+        <message>
+            <source>Reference direction</source>
+            <translation>Referenzrichtung</translation>
+        </message>
+        <message>
+            <source>negative (-1)</source>
+            <translation>negativ (-1)</translation>
+        </message>
+        <message>
+            <source>positive (+1)</source>
+            <translation>positiv (+1)</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>STOP, PANIC and jog keep priority over the bridge: a target the operator stopped is not answered (the laser raises its timeout alarm), and targets that arrive while the operator jogs are dropped.</source>
+            <translation>STOPP, PANIK und Tippbetrieb haben Vorrang vor der Brücke: ein Ziel, das der Bediener gestoppt hat, wird nicht beantwortet (der Laser meldet seinen Zeitüberschreitungsalarm), und Ziele, die während des Tippbetriebs ankommen, werden verworfen.</translation>
+        </message>
+        <message>
+            <source>not used</source>
+            <translation>nicht benutzt</translation>
+        </message>
+        <message>
+            <source>Connect the controller first.</source>
+            <translation>Zuerst die Steuerung verbinden.</translation>
+        </message>
+        <message>
+            <source>Choose the laser's port.</source>
+            <translation>Den Port des Lasers wählen.</translation>
+        </message>
+        <message>
+            <source>The laser's port is the controller's port.</source>
+            <translation>Der Port des Lasers ist der Port der Steuerung.</translation>
+        </message>
+        <message>
+            <source>This controller publishes no inputs: no door switch input.</source>
+            <translation>Diese Steuerung meldet keine Eingänge: kein Türschalter-Eingang möglich.</translation>
+        </message>
+        <message>
+            <source>Running: answering the laser on %1.</source>
+            <translation>Läuft: beantwortet den Laser an %1.</translation>
+        </message>
+        <message>
+            <source>Laser bridge failed: %1</source>
+            <translation>Laserbrücke fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Opening %1…</source>
+            <translation>Öffne %1…</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Halte an…</translation>
+        </message>
+        <message>
+            <source>yes</source>
+            <translation>ja</translation>
+        </message>
+        <message>
+            <source>no</source>
+            <translation>nein</translation>
         </message>
     </context>
     <context>
@@ -2923,6 +3430,10 @@
         <message>
             <source>Records</source>
             <translation>Sätze</translation>
+        </message>
+        <message>
+            <source>Laser bridge</source>
+            <translation>Laserbrücke</translation>
         </message>
     </context>
     <context>
@@ -3617,6 +4128,13 @@
         <message>
             <source>Warning: approaching the %1 °C over-temperature limit.</source>
             <translation>Warnung: nahe an der Übertemperaturgrenze von %1 °C.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::TargetJogger</name>
+        <message>
+            <source>Jog ended: axis %1 reached its end switch</source>
+            <translation>Tippbetrieb beendet: Achse %1 hat ihren Endschalter erreicht</translation>
         </message>
     </context>
     <context>

@@ -1,5 +1,6 @@
 #include "JogController.h"
 #include "jog/JogInputSource.h"
+#include "jog/TargetJogger.h"
 #include "main/MachineContext.h"
 #include <QSettings>
 #include <QtMath>
@@ -7,8 +8,12 @@
 namespace stepdeck::ui {
 
 JogController::JogController(MachineContext* context, QObject* parent)
-    : QObject(parent), m_context(context)
+    : QObject(parent), m_context(context), m_targetJog(new TargetJogger(context->session(), this))
 {
+    connect(m_targetJog, &TargetJogger::refused, this, [this](const QString& reason) {
+        m_lastRefusal = reason;
+        Q_EMIT refused(reason);
+    });
     m_renew.setInterval(kRenewMs);
     connect(&m_renew, &QTimer::timeout, this, &JogController::send);
     connect(context, &MachineContext::modelChanged, this, [this] {
@@ -62,6 +67,7 @@ void JogController::releaseAll()
     m_targets.clear();
     m_active = false;
     m_renew.stop();
+    m_targetJog->release();
     if (wasActive) {
         m_context->session()->endJog();
         Q_EMIT targetsChanged(m_targets);
@@ -139,6 +145,7 @@ void JogController::update()
         if (m_active) {
             m_active = false;
             m_renew.stop();
+            m_targetJog->release();
             AxisVelocities zeros;
             for (Axis axis : m_context->axes())
                 zeros.insert(axis, 0.0);
@@ -180,7 +187,11 @@ void JogController::update()
 
 void JogController::send()
 {
-    if (m_active)
+    if (!m_active)
+        return;
+    if (m_context->capabilities().jogByTargets)
+        m_targetJog->setVelocities(m_targets); // short targets, one after the other
+    else
         m_context->session()->setJogVelocity(m_targets);
 }
 

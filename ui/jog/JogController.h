@@ -8,6 +8,7 @@ namespace stepdeck::ui {
 
 class JogInputSource;
 class MachineContext;
+class TargetJogger;
 
 // Combines every jog input into per-axis velocities and sends them to the controller
 // session. While any axis is deflected it renews the core's jog lease every kRenewMs; when
@@ -33,6 +34,8 @@ public:
     double override() const { return m_override; }
 
     AxisVelocities targets() const { return m_targets; }
+    // Controllers without a jog command (Capabilities::jogByTargets) jog through this.
+    TargetJogger* targetJogger() const { return m_targetJog; }
     bool isJogging() const;
 
 public Q_SLOTS:
@@ -50,6 +53,7 @@ private:
     QString refusal() const;
 
     MachineContext* m_context;
+    TargetJogger* m_targetJog;
     QHash<const QObject*, AxisVelocities> m_inputs;
     QMap<Axis, double> m_maxSpeed;
     double m_override = 1.0;

@@ -34,6 +34,7 @@ public:
     QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
+    QLabel* jogModeNote() const { return m_jogModeNote; }
     IncrementalJogWidget* incremental() const { return m_incremental; }
 
 public Q_SLOTS:
@@ -57,6 +58,7 @@ private:
     QLabel* m_overrideValue;
     QCheckBox* m_keyboardCheck;
     QLabel* m_refusal;
+    QLabel* m_jogModeNote; // how jog works on models without a jog command
     QTimer* m_refusalTimer;
     QGridLayout* m_velocityGrid;
     QMap<Axis, QLabel*> m_velocity;

@@ -1,4 +1,5 @@
 #include "MainWindow.h"
+#include "bridge/LaserBridgePage.h"
 #include "charts/ChartsPanel.h"
 #include "console/TrafficConsole.h"
 #include "drives/DrivePanel.h"
@@ -170,6 +171,10 @@ void MainWindow::buildDocks()
     m_recordsDock =
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);
+    m_laserBridge = new LaserBridgePage(m_context, this);
+    tabifyDockWidget(m_recordsDock,
+                     addDock(m_laserBridge, tr("Laser bridge"), QStringLiteral("laserBridgeDock"),
+                             Qt::BottomDockWidgetArea));
     setup->raise();
     resizeDocks({setup}, {300}, Qt::Vertical);
     resizeDocks({m_docks.at(0), status}, {390, 470}, Qt::Horizontal);

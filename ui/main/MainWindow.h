@@ -18,6 +18,7 @@ class GamepadPanel;
 class JogController;
 class JogPanel;
 class KeyboardJog;
+class LaserBridgePage;
 class MachineContext;
 class PositionPanel;
 class RecordsPage;
@@ -53,6 +54,7 @@ public:
     GamepadPanel* gamepadPanel() const { return m_gamepad; }
     DrivePanel* drivePanel() const { return m_drivePanel; }
     RecordsPage* recordsPage() const { return m_records; }
+    LaserBridgePage* laserBridgePage() const { return m_laserBridge; }
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
@@ -98,6 +100,7 @@ private:
     GamepadPanel* m_gamepad = nullptr;
     DrivePanel* m_drivePanel = nullptr;
     RecordsPage* m_records = nullptr;
+    LaserBridgePage* m_laserBridge = nullptr;
     QDockWidget* m_drivesDock = nullptr;
     QDockWidget* m_recordsDock = nullptr;
     GamepadJogSource* m_gamepadSource = nullptr;

@@ -5,7 +5,6 @@ namespace stepdeck::laser {
 
 namespace {
 constexpr char kLf = '\n';
-constexpr const char* kContext = "stepdeck::laser::LaserCodec";
 
 bool isDigit(char c)
 {
@@ -113,20 +112,25 @@ QString describeError(DecodeError error)
 {
     switch (error) {
     case DecodeError::None:
-        return QCoreApplication::translate(kContext, "no error");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec", "no error");
     case DecodeError::WrongLength:
-        return QCoreApplication::translate(kContext, "wrong length (a frame is 7 digits and CR)");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
+                                           "wrong length (a frame is 7 digits and CR)");
     case DecodeError::Overlong:
-        return QCoreApplication::translate(kContext,
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
                                            "too long (more than 7 characters before the CR)");
     case DecodeError::NotDigit:
-        return QCoreApplication::translate(kContext, "a character that is not a digit");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
+                                           "a character that is not a digit");
     case DecodeError::UnknownAxis:
-        return QCoreApplication::translate(kContext, "unknown axis (only 1, 2 and 3 exist)");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
+                                           "unknown axis (only 1, 2 and 3 exist)");
     case DecodeError::UnknownCommand:
-        return QCoreApplication::translate(kContext, "unknown command (only 1 home and 2 move)");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
+                                           "unknown command (only 1 home and 2 move)");
     case DecodeError::UnknownStatus:
-        return QCoreApplication::translate(kContext, "unknown status (only 0 to 4)");
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec",
+                                           "unknown status (only 0 to 4)");
     }
     return {};
 }
@@ -223,8 +227,9 @@ QList<DecodedStatus> StatusDecoder::feed(const QByteArray& bytes)
 QString commandText(const CommandFrame& frame)
 {
     if (frame.command == Command::Home)
-        return QCoreApplication::translate(kContext, "home %1").arg(axisName(frame.axis));
-    return QCoreApplication::translate(kContext, "move %1 to %2")
+        return QCoreApplication::translate("stepdeck::laser::LaserCodec", "home %1")
+            .arg(axisName(frame.axis));
+    return QCoreApplication::translate("stepdeck::laser::LaserCodec", "move %1 to %2")
         .arg(axisName(frame.axis))
         .arg(frame.position);
 }
@@ -234,22 +239,22 @@ QString statusText(const StatusFrame& frame)
     QString what;
     switch (frame.status) {
     case Status::TargetReached:
-        what = QCoreApplication::translate(kContext, "target reached");
+        what = QCoreApplication::translate("stepdeck::laser::LaserCodec", "target reached");
         break;
     case Status::EndSwitch:
-        what = QCoreApplication::translate(kContext, "end switch");
+        what = QCoreApplication::translate("stepdeck::laser::LaserCodec", "end switch");
         break;
     case Status::HomeSwitch:
-        what = QCoreApplication::translate(kContext, "home switch");
+        what = QCoreApplication::translate("stepdeck::laser::LaserCodec", "home switch");
         break;
     case Status::DoorOpened:
-        what = QCoreApplication::translate(kContext, "door opened");
+        what = QCoreApplication::translate("stepdeck::laser::LaserCodec", "door opened");
         break;
     case Status::DoorClosed:
-        what = QCoreApplication::translate(kContext, "door closed");
+        what = QCoreApplication::translate("stepdeck::laser::LaserCodec", "door closed");
         break;
     }
-    return QCoreApplication::translate(kContext, "%1 at %2: %3")
+    return QCoreApplication::translate("stepdeck::laser::LaserCodec", "%1 at %2: %3")
         .arg(axisName(frame.axis))
         .arg(frame.position)
         .arg(what);
