@@ -198,12 +198,18 @@ void TestLaserBridgeEndToEnd::elab_shutdown_stopsMotionItStarted()
 {
     LaserBridgeRig rig;
     QVERIFY(elabRig(rig, 1500));
-    rig.laserSends("2290000\r");
-    QTRY_VERIFY_WITH_TIMEOUT(elabMoving(rig, Axis::Y), 10000);
+    rig.laserSends("1200000\r");
+    QVERIFY(rig.waitAnswers(1));
+    const qint64 reference = elabPosition(rig, Axis::Y);
+    rig.laserSends("2290000\r"); // a minute of travel
+    QTRY_VERIFY_WITH_TIMEOUT(elabPosition(rig, Axis::Y) > reference + 200, 10000);
     QSignalSpy finished(rig.bridge.get(), &bridge::LaserBridge::finished);
     rig.bridge->shutdown();
     QVERIFY(finished.count() > 0 || finished.wait(5000));
-    QTRY_VERIFY_WITH_TIMEOUT(!elabMoving(rig, Axis::Y), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!elabMoving(rig, Axis::Y), 5000); // the board's ramped stop
+    QVERIFY(elabPosition(rig, Axis::Y) < reference + 5000);
+    QVERIFY(rig.toController.contains(elab::encode::stopMove()));
+    QCOMPARE(rig.answers().size(), 1); // no answer for the abandoned target
     QVERIFY(!rig.laserPort->isOpen());
     QVERIFY(!rig.bridge->isRunning());
 }

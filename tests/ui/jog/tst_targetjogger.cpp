@@ -128,6 +128,16 @@ void TestTargetJogger::deflect_shortTargetsOneAfterTheOther_releaseStops()
         QCOMPARE(got.at(i).command, laser::Command::Move);
         QCOMPARE(got.at(i).position, 200 * i);
     }
+    // And each one was reached and reported before the next went out: one status frame per
+    // command, at that command's target (a target sent ahead would have replaced the previous
+    // one, which then never reports).
+    QList<QByteArray> reported;
+    m_f->withSimulatorAs<LaserAxisSimulator>(
+        [&](LaserAxisSimulator* s) { reported = s->sentStatusFrames(); });
+    QCOMPARE(reported.size(), got.size());
+    for (int i = 1; i < got.size(); ++i)
+        QCOMPARE(reported.at(i),
+                 laser::encodeStatus({Axis::X, 200 * i, laser::Status::TargetReached}));
     // Released: nothing more goes out.
     QSignalSpy traffic(m_f->session, &ControllerSession::traffic);
     QTest::qWait(300);
