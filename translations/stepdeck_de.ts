@@ -4129,6 +4129,14 @@
             <source>Warning: approaching the %1 °C over-temperature limit.</source>
             <translation>Warnung: nahe an der Übertemperaturgrenze von %1 °C.</translation>
         </message>
+        <message>
+            <source>Door open</source>
+            <translation>Tür offen</translation>
+        </message>
+        <message>
+            <source>The door switch reports the door open (grey: not reported yet).</source>
+            <translation>Der Türschalter meldet die Tür offen (grau: noch nicht gemeldet).</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::TargetJogger</name>

@@ -47,6 +47,7 @@ struct Capabilities
     // No jog stream: jog inputs become short targets, the next one sent only after the
     // previous one arrived, never a target far ahead (laser motor axes).
     bool jogByTargets = false;
+    bool doorSwitch = false; // the device reports a door switch (MachineStatus::doorOpen)
 
     bool has(MotionMode mode) const { return motionModes.contains(mode); }
 };

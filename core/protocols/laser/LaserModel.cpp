@@ -29,6 +29,7 @@ Capabilities capabilities()
     caps.statusQuery = false;   // "The axis can send at any time a status response"
     caps.reportsArrival = true; // "... after having reached its last commanded target"
     caps.jogByTargets = true;   // no jog command: short targets one after the other
+    caps.doorSwitch = true;     // status '3' door opened, '4' door closed
     // Position units per second a jog target may cover per second of stick deflection; the
     // protocol has no speed, so this only sizes the short targets.
     caps.maxJogSpeed = 2000;
