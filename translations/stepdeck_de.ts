@@ -409,10 +409,6 @@
             <translation>Status nach Fahrten senden</translation>
         </message>
         <message>
-            <source>The drive sends its status ('j') by itself at the end of every move; the adapter switches this on when it connects (5.31)</source>
-            <translation>Die Steuerung sendet ihren Status ('j') selbst am Ende jeder Fahrt; der Adapter schaltet das beim Verbinden ein (5.31)</translation>
-        </message>
-        <message>
             <source>Ramp shape</source>
             <translation>Rampenform</translation>
         </message>
@@ -1052,6 +1048,14 @@
             <source>Most recent entry of the error memory (5.15)</source>
             <translation>Jüngster Eintrag des Fehlerspeichers (5.15)</translation>
         </message>
+        <message>
+            <source>The drive sends its status ('j') by itself at the end of every move (5.31). StepDeck polls the bus and switches this off when it connects</source>
+            <translation>Die Steuerung sendet ihren Status ('j') am Ende jeder Fahrt von selbst (5.31). StepDeck fragt den Bus zyklisch ab und schaltet dies beim Verbinden aus</translation>
+        </message>
+        <message>
+            <source>On a half-duplex RS485 bus that is being polled, a status the drive sends by itself collides with the poll of another drive. StepDeck switches it off again on the next connect.</source>
+            <translation>Auf einem abgefragten Halbduplex-RS485-Bus kollidiert ein von der Steuerung selbst gesendeter Status mit der Abfrage einer anderen Steuerung. StepDeck schaltet ihn beim nächsten Verbinden wieder aus.</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -1117,6 +1121,26 @@
         <message>
             <source>this controller has no stop command: use the machine's emergency stop to stop it; motion only ends when the current move arrives</source>
             <translation>diese Steuerung hat keinen Stopp-Befehl: zum Anhalten den Not-Halt der Maschine benutzen; eine Bewegung endet erst, wenn die laufende Fahrt ihr Ziel erreicht</translation>
+        </message>
+        <message>
+            <source>the controller did not confirm the stop and may still be moving: use the machine's emergency stop</source>
+            <translation>die Steuerung hat den Stopp nicht bestätigt und bewegt sich womöglich noch: den Not-Halt der Maschine benutzen</translation>
+        </message>
+        <message>
+            <source>link closed</source>
+            <translation>Verbindung geschlossen</translation>
+        </message>
+        <message>
+            <source>closed</source>
+            <translation>geschlossen</translation>
+        </message>
+        <message>
+            <source>link lost: %1</source>
+            <translation>Verbindung verloren: %1</translation>
+        </message>
+        <message>
+            <source>link lost: %1; %2</source>
+            <translation>Verbindung verloren: %1; %2</translation>
         </message>
     </context>
     <context>
@@ -1234,10 +1258,6 @@
             <translation>serielle Schnittstelle %1 ist nicht geöffnet</translation>
         </message>
         <message>
-            <source>serial port %1 cannot drive RTS: %2</source>
-            <translation>serielle Schnittstelle %1 kann RTS nicht schalten: %2</translation>
-        </message>
-        <message>
             <source>serial port %1 not found</source>
             <translation>serielle Schnittstelle %1 nicht gefunden</translation>
         </message>
@@ -1264,6 +1284,10 @@
         <message>
             <source>serial port %1 failed: %2</source>
             <translation>serielle Schnittstelle %1 fehlgeschlagen: %2</translation>
+        </message>
+        <message>
+            <source>serial port %1 cannot drive %2: %3</source>
+            <translation>serielle Schnittstelle %1 kann %2 nicht schalten: %3</translation>
         </message>
     </context>
     <context>
@@ -1529,18 +1553,6 @@
             <translation>die E-LAB-Platine antwortet nicht: %1</translation>
         </message>
         <message>
-            <source>link lost: %1</source>
-            <translation>Verbindung verloren: %1</translation>
-        </message>
-        <message>
-            <source>link closed</source>
-            <translation>Verbindung geschlossen</translation>
-        </message>
-        <message>
-            <source>closed</source>
-            <translation>geschlossen</translation>
-        </message>
-        <message>
             <source>nothing to send</source>
             <translation>nichts zu senden</translation>
         </message>
@@ -1617,6 +1629,30 @@
             <translation>drive-power: Wert '%1' liegt außerhalb des Bereichs (erlaubt: 0..100 %)</translation>
         </message>
         <message>
+            <source>refused: a motion is running; setup and outputs are written only at standstill</source>
+            <translation>abgelehnt: eine Bewegung läuft; Einstellungen und Ausgänge werden nur im Stillstand geschrieben</translation>
+        </message>
+        <message>
+            <source>the board reports motion the host did not command (%1): stopping it</source>
+            <translation>die Steuerung meldet eine Bewegung, die der Host nicht befohlen hat (%1): sie wird gestoppt</translation>
+        </message>
+        <message>
+            <source>the limit switch of axis %1 turned active: jog stopped; only jogging away from it is allowed</source>
+            <translation>der Endschalter der Achse %1 hat angesprochen: Joggen gestoppt; nur Joggen vom Schalter weg ist erlaubt</translation>
+        </message>
+        <message>
+            <source>jog refused: axis %1 is on its limit switch; only jogging away from it (%2) is allowed</source>
+            <translation>Joggen abgelehnt: Achse %1 steht auf ihrem Endschalter; nur Joggen vom Schalter weg (%2) ist erlaubt</translation>
+        </message>
+        <message>
+            <source>stop sent, not acknowledged by the board (%1): %2</source>
+            <translation>Stopp gesendet, von der Steuerung nicht bestätigt (%1): %2</translation>
+        </message>
+        <message>
+            <source>%1; already written: %2</source>
+            <translation>%1; bereits geschrieben: %2</translation>
+        </message>
+        <message>
             <source>%1: no value for axis %2 and none written before; give all axes (X,Y,Z)</source>
             <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
         </message>
@@ -1639,6 +1675,10 @@
         <message>
             <source>jog refused by the board (NAK); machine state: %1; axe state: %2</source>
             <translation>Tippbetrieb von der Platine abgelehnt (NAK); Maschinenstatus: %1; Achsstatus: %2</translation>
+        </message>
+        <message>
+            <source>jog: %1; the board may still be jogging</source>
+            <translation>Joggen: %1; die Steuerung joggt womöglich noch</translation>
         </message>
         <message>
             <source>cancelled by a stop, panic or reset</source>
@@ -1689,6 +1729,10 @@
             <translation>abgelehnt: Achse %1 kann während einer Geschwindigkeitsfahrt nicht umkehren; zuerst auf 0 setzen und Stillstand abwarten</translation>
         </message>
         <message>
+            <source>axis %1 did not come to a standstill; the reversed velocity was not sent</source>
+            <translation>Achse %1 ist nicht zum Stillstand gekommen; die umgekehrte Geschwindigkeit wurde nicht gesendet</translation>
+        </message>
+        <message>
             <source>parameter set names a parameter the E-LAB board has no command for</source>
             <translation>der Parametersatz nennt einen Parameter, für den die E-LAB-Platine keinen Befehl hat</translation>
         </message>
@@ -1716,6 +1760,10 @@
             <source>refused: a limit switch is active (%1)</source>
             <translation>abgelehnt: ein Endschalter ist aktiv (%1)</translation>
         </message>
+        <message>
+            <source>refused: axes are moving (%1); setup and outputs are written only at standstill</source>
+            <translation>abgelehnt: Achsen bewegen sich (%1); Einstellungen und Ausgänge werden nur im Stillstand geschrieben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabCtlJog</name>
@@ -1730,6 +1778,10 @@
         <message>
             <source>jog refused by the board (NAK); machine state: %1; axe state: %2</source>
             <translation>Tippbetrieb von der Platine abgelehnt (NAK); Maschinenstatus: %1; Achsstatus: %2</translation>
+        </message>
+        <message>
+            <source>jog: %1; the board may still be jogging</source>
+            <translation>Joggen: %1; die Steuerung joggt womöglich noch</translation>
         </message>
     </context>
     <context>
@@ -1785,6 +1837,14 @@
             <source>refused: axis %1 cannot reverse during a velocity move; set it to 0 and wait for standstill first</source>
             <translation>abgelehnt: Achse %1 kann während einer Geschwindigkeitsfahrt nicht umkehren; zuerst auf 0 setzen und Stillstand abwarten</translation>
         </message>
+        <message>
+            <source>cancelled by a stop, panic or reset</source>
+            <translation>abgebrochen durch Stopp, Panik-Stopp oder Reset</translation>
+        </message>
+        <message>
+            <source>axis %1 did not come to a standstill; the reversed velocity was not sent</source>
+            <translation>Achse %1 ist nicht zum Stillstand gekommen; die umgekehrte Geschwindigkeit wurde nicht gesendet</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabCtlParameters</name>
@@ -1823,16 +1883,16 @@
             <source>refused: a limit switch is active (%1)</source>
             <translation>abgelehnt: ein Endschalter ist aktiv (%1)</translation>
         </message>
+        <message>
+            <source>refused: axes are moving (%1); setup and outputs are written only at standstill</source>
+            <translation>abgelehnt: Achsen bewegen sich (%1); Einstellungen und Ausgänge werden nur im Stillstand geschrieben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabExchangeQueue</name>
         <message>
             <source>not connected</source>
             <translation>nicht verbunden</translation>
-        </message>
-        <message>
-            <source>garbage on the line (%1: %2)</source>
-            <translation>ungültige Daten auf der Leitung (%1: %2)</translation>
         </message>
         <message>
             <source>unexpected reply %1 to %2 (expected %3)</source>
@@ -1965,22 +2025,6 @@
             <translation>Verbindung wird bereits aufgebaut</translation>
         </message>
         <message>
-            <source>link lost: %1</source>
-            <translation>Verbindung verloren: %1</translation>
-        </message>
-        <message>
-            <source>link closed</source>
-            <translation>Verbindung geschlossen</translation>
-        </message>
-        <message>
-            <source>closed</source>
-            <translation>geschlossen</translation>
-        </message>
-        <message>
-            <source>no longer tracking axis %1 on its way to a target: the protocol has no stop command; it goes on unless the machine's emergency stop is used</source>
-            <translation>Achse %1 wird auf dem Weg zu ihrem Ziel nicht mehr verfolgt: das Protokoll hat keinen Stoppbefehl; sie fährt weiter, außer der Not-Halt der Maschine wird benutzt</translation>
-        </message>
-        <message>
             <source>not connected</source>
             <translation>nicht verbunden</translation>
         </message>
@@ -2023,6 +2067,10 @@
         <message>
             <source>axis %1 did not report reaching its target %2 within %3 s; it may still be moving</source>
             <translation>Achse %1 hat das Erreichen ihres Ziels %2 nicht innerhalb von %3 s gemeldet; sie fährt möglicherweise noch</translation>
+        </message>
+        <message>
+            <source>no longer tracking axis %1 on its way to a target: the protocol has no stop command; it goes on unless the machine's emergency stop is used</source>
+            <translation>Achse %1 wird auf dem Weg zu ihrem Ziel nicht mehr verfolgt: das Protokoll hat keinen Stoppbefehl; sie fährt weiter, außer der Not-Halt der Maschine wird benutzt</translation>
         </message>
     </context>
     <context>
@@ -2256,14 +2304,6 @@
             <translation>Verbindung wird bereits aufgebaut</translation>
         </message>
         <message>
-            <source>connection closed</source>
-            <translation>Verbindung geschlossen</translation>
-        </message>
-        <message>
-            <source>link lost: %1</source>
-            <translation>Verbindung verloren: %1</translation>
-        </message>
-        <message>
             <source>no drive answered at address %1 (19200 baud 8N1)</source>
             <translation>kein Antrieb hat unter Adresse %1 geantwortet (19200 Baud 8N1)</translation>
         </message>
@@ -2350,10 +2390,6 @@
         <message>
             <source>emergency stop</source>
             <translation>Not-Aus</translation>
-        </message>
-        <message>
-            <source>%1 sent; not confirmed by %2</source>
-            <translation>%1 gesendet; von %2 nicht bestätigt</translation>
         </message>
         <message>
             <source>reply '%1' carries no value</source>
@@ -2474,6 +2510,22 @@
         <message>
             <source>%1 did not take motor-address %2: nothing answers there</source>
             <translation>%1 hat motor-address %2 nicht übernommen: dort antwortet nichts</translation>
+        </message>
+        <message>
+            <source>%1 reads %2=%3 instead of %4 (the drive ignored the setting); not started</source>
+            <translation>%1 liest %2=%3 statt %4 (die Steuerung hat die Einstellung ignoriert); nicht gestartet</translation>
+        </message>
+        <message>
+            <source>%1 sent; not confirmed by %2: %3</source>
+            <translation>%1 gesendet; nicht bestätigt von %2: %3</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>%1; already written: %2</source>
+            <translation>%1; bereits geschrieben: %2</translation>
         </message>
     </context>
     <context>

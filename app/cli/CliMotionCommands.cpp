@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QtMath>
+#include <climits>
 
 namespace stepdeck::cli {
 
@@ -11,6 +12,13 @@ namespace {
 QString tr(const char* text)
 {
     return QCoreApplication::translate("stepdeck-cli", text);
+}
+
+bool parseInteger(const QString& text, qint64* value)
+{
+    bool ok = false;
+    *value = text.toLongLong(&ok);
+    return ok;
 }
 
 constexpr int kJogRenewMs = 100; // well inside the adapter's jog lease (300 ms)
@@ -34,6 +42,14 @@ Outcome reportPositions(CliContext& c)
     return Outcome::success();
 }
 
+// A failure while motion runs: the motion is stopped before the command returns.
+Outcome stopThenFail(CliContext& c, const Outcome& failure)
+{
+    if (!c.session.linkLost() && !c.session.interrupted())
+        c.session.stopMotion();
+    return failure;
+}
+
 using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
 using CheckValues = std::function<Outcome(const AxisVector&)>;
 using StartRequest = std::function<RequestId(ControllerSession&)>;
@@ -41,7 +57,7 @@ using StartRequest = std::function<RequestId(ControllerSession&)>;
 // Models whose moves finish when the axes report arrival (laser-axis): the request itself is
 // the wait, up to --arrival-timeout (exit 5 after it). An axis that reported its end switch
 // instead of the target ends the command with exit 13.
-Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWait)
+Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWait, int waitMs)
 {
     Outcome result = c.connect();
     if (!result.ok())
@@ -65,7 +81,8 @@ Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWa
             return Outcome::from(*early);
         return result;
     }
-    const CommandResult done = c.session.call(start, c.options.arrivalTimeoutMs + 5000);
+    const CommandResult done =
+        c.session.call(start, waitMs > 0 ? waitMs : c.options.arrivalTimeoutMs + 5000);
     if (!done.ok())
         return Outcome::from(done);
     const QStringList endSwitch =
@@ -87,6 +104,15 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
 {
     const bool absolute = allowAbs && takeFlag(&args, QStringLiteral("--abs"));
     const bool noWait = takeFlag(&args, QStringLiteral("--no-wait"));
+    QString optionError;
+    const std::optional<QString> timeoutText =
+        takeOption(&args, QStringLiteral("--timeout"), &optionError);
+    if (!optionError.isEmpty())
+        return Outcome::usage(optionError);
+    qint64 timeoutMs = -1;
+    if (timeoutText && (!parseInteger(*timeoutText, &timeoutMs) || timeoutMs <= 0))
+        return Outcome::usage(
+            tr("%1 --timeout needs a positive number of milliseconds").arg(command));
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     AxisVector steps;
@@ -103,26 +129,29 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
             [&](ControllerSession& s) {
                 return absolute ? s.moveAbsolute(steps) : start(s, steps);
             },
-            noWait);
+            noWait, int(qMin<qint64>(timeoutMs, INT_MAX)));
     }
     Outcome result = connectAndRun(c, [&](ControllerSession& s) {
         return absolute ? s.moveAbsolute(steps) : start(s, steps);
     });
     if (!result.ok() || noWait)
         return result;
-    result = c.session.waitUntilIdle();
+    result = c.session.waitUntilIdle(int(qMin<qint64>(timeoutMs, INT_MAX)));
+    if (result.code == ExitTimeout)
+        return stopThenFail(c, result); // never left running past the caller's deadline
     return result.ok() ? reportPositions(c) : result;
 }
 
-// Waits until the host-side ramp has reached zero on every axis and the device is at rest.
+// Waits until the host-side ramp has reached zero on every axis and the device is at rest,
+// from the statuses the poller delivers (a status request of its own could time out by
+// chance while the poller is about to declare the link lost: one fault, one exit code).
 Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
 {
     QElapsedTimer clock;
     clock.start();
     for (;;) {
-        const Outcome polled = c.session.refresh();
-        if (!polled.ok())
-            return polled;
+        if (c.session.linkLost())
+            return c.session.linkLostOutcome();
         bool commanding = false;
         bool deviceMoving = false;
         for (const AxisStatus& axis : c.session.status().axes) {
@@ -132,19 +161,15 @@ Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
         if (!commanding && (!deviceMoving || clock.elapsed() > deadlineMs))
             return Outcome::success(); // some boards keep their jog-mode bit at rate zero
         if (clock.elapsed() > deadlineMs) {
+            const Outcome stopped = c.session.stopMotion();
             return Outcome::failure(ExitFailure,
-                                    tr("jog did not ramp down within %1 ms").arg(deadlineMs));
+                                    tr("jog did not ramp down within %1 ms; %2")
+                                        .arg(deadlineMs)
+                                        .arg(stopped.ok() ? tr("stopped") : stopped.message));
         }
         if (!c.session.pause(CliSession::kIdlePollMs))
             return Outcome::failure(ExitInterrupted, tr("interrupted"));
     }
-}
-
-bool parseInteger(const QString& text, qint64* value)
-{
-    bool ok = false;
-    *value = text.toLongLong(&ok);
-    return ok;
 }
 
 // The value of a spindle/power command checked like the schema parameter of the same meaning,
@@ -212,8 +237,9 @@ Outcome cmdHome(CliContext& c, QStringList args)
     return positioning(c, args, QStringLiteral("home"), start, false, directionsValid);
 }
 
-// The adapter stops a velocity move when its link closes (nothing runs unattended), so the
-// command keeps the session until SIGINT/SIGTERM or --for MS, then stops with a ramp.
+// The velocity move runs until SIGINT/SIGTERM/SIGHUP or --for MS, then stops with a ramp.
+// Any failure meanwhile stops it too before the command returns; and should this process end
+// any other way, the adapter's close sends the stop (safety contract).
 Outcome cmdVelocity(CliContext& c, QStringList args)
 {
     QString error;
@@ -230,27 +256,28 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
         return Outcome::usage(tr("velocity: %1").arg(error));
     Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });
     if (!result.ok())
-        return result;
+        return c.session.linkLost() ? c.session.linkLostOutcome() : result;
     if (!c.json()) {
         printLine(forMs > 0 ? tr("velocity move running for %1 ms").arg(forMs)
-                            : tr("velocity move running; Ctrl-C or SIGTERM ends it with a "
-                                 "ramped stop"));
+                            : tr("velocity move running; Ctrl-C, SIGTERM or SIGHUP ends it with "
+                                 "a ramped stop"));
     }
     QElapsedTimer clock;
     clock.start();
     while (forMs < 0 || clock.elapsed() < forMs) {
         if (!c.session.pause(CliSession::kIdlePollMs))
             break;
-        if (result = c.session.refresh(); !result.ok())
-            return result;
-        if (c.session.status().panic || !c.session.status().anyMoving())
-            return c.session.waitUntilIdle(); // ended by itself: says why (limit, panic)
+        if (c.session.linkLost())
+            return c.session.linkLostOutcome();
+        const MachineStatus& st = c.session.status();
+        if (st.panic || !st.anyMoving()) // ended by itself: says why (limit, panic)
+            return stopThenFail(c, c.session.waitUntilIdle());
     }
     c.session.takeInterrupt(); // the normal way to end it
-    if (result = c.session.run([](ControllerSession& s) { return s.stop(); }); !result.ok())
+    if (result = c.session.stopMotion(); !result.ok())
         return result;
     result = c.session.waitUntilIdle();
-    return result.ok() ? reportPositions(c) : result;
+    return result.ok() ? reportPositions(c) : stopThenFail(c, result);
 }
 
 Outcome cmdJog(CliContext& c, QStringList args)
@@ -285,10 +312,15 @@ Outcome cmdJog(CliContext& c, QStringList args)
         return result;
 
     // The jog rate is a lease: renew it well inside the adapter's lease time, or the axes
-    // ramp down by themselves. endJog() then ramps them to zero.
+    // ramp down by themselves. endJog() then ramps them to zero. A lost link ends the loop at
+    // once with exit 6 (the adapter has sent its stop), whatever the jog refusal says.
     QElapsedTimer clock;
     clock.start();
-    while (clock.elapsed() < forMs && c.session.jogRefusal().isEmpty()) {
+    while (clock.elapsed() < forMs) {
+        if (c.session.linkLost())
+            return c.session.linkLostOutcome();
+        if (!c.session.jogRefusal().isEmpty())
+            break;
         c.session.session().setJogVelocity(rates);
         if (!c.session.pause(int(qMin<qint64>(kJogRenewMs, forMs - clock.elapsed()))))
             return Outcome::failure(ExitInterrupted, tr("interrupted"));
@@ -297,8 +329,10 @@ Outcome cmdJog(CliContext& c, QStringList args)
     const double acceleration = c.capabilities().defaultJogAcceleration;
     const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
     const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
+    if (c.session.linkLost())
+        return c.session.linkLostOutcome();
     if (!c.session.jogRefusal().isEmpty())
-        return Outcome::failure(ExitRefused, c.session.jogRefusal());
+        return stopThenFail(c, Outcome::failure(ExitRefused, c.session.jogRefusal()));
     return rampedDown.ok() ? reportPositions(c) : rampedDown;
 }
 

@@ -128,6 +128,22 @@ Outcome CliSession::connectLink()
     return Outcome::success();
 }
 
+int CliSession::linkVerdictMs() const
+{
+    // The poller declares the link lost after its miss limit of unanswered polls, each up to a
+    // command timeout apart; then the adapter's safety stop runs (bounded) first.
+    const ControllerOptions o = m_session.spec().options;
+    return o.missedPollsForLinkLoss * (o.commandTimeoutMs + o.pollIntervalMs) + 1500;
+}
+
+Outcome CliSession::linkLostOutcome() const
+{
+    QString why = tr("link lost: %1").arg(m_lostReason.isEmpty() ? m_lastError : m_lostReason);
+    if (status().motionUnconfirmed)
+        why = tr("%1; %2").arg(why, Controller::mayStillBeMovingText());
+    return Outcome::failure(ExitLinkDown, why);
+}
+
 CommandResult CliSession::call(const std::function<RequestId(ControllerSession&)>& start,
                                int timeoutMs)
 {
@@ -138,8 +154,21 @@ CommandResult CliSession::call(const std::function<RequestId(ControllerSession&)
         // more precise message wins.
         waitFor([&] { return m_finished.contains(id); }, 250);
     }
-    if (m_finished.contains(id))
-        return m_finished.take(id);
+    if (m_finished.contains(id)) {
+        CommandResult result = m_finished.take(id);
+        const ErrorKind e = result.error;
+        if (m_connected && !m_interrupted &&
+            (e == ErrorKind::Timeout || e == ErrorKind::Cancelled || e == ErrorKind::Protocol)) {
+            // One fault, one exit code: if the controller stopped answering altogether, the
+            // poller is about to declare the link lost -- that is the fault, not this request.
+            waitFor([this] { return m_lost; }, linkVerdictMs());
+        }
+        if (m_lost && !result.ok() && result.error != ErrorKind::LinkDown) {
+            const Outcome lost = linkLostOutcome();
+            result = CommandResult::failure(id, ErrorKind::LinkDown, lost.message);
+        }
+        return result;
+    }
     if (m_interrupted)
         return CommandResult::failure(id, ErrorKind::Cancelled, tr("interrupted"));
     if (m_lost) {
@@ -156,12 +185,25 @@ Outcome CliSession::refresh()
     return run([](ControllerSession& s) { return s.refreshStatus(); });
 }
 
-Outcome CliSession::waitUntilIdle()
+Outcome CliSession::waitUntilIdle(int deadlineMs)
 {
+    QElapsedTimer clock;
+    clock.start();
     for (;;) {
         const Outcome polled = refresh();
         if (!polled.ok())
             return polled;
+        QStringList unknown;
+        for (auto it = status().axes.cbegin(); it != status().axes.cend(); ++it) {
+            if (it.value().motionUnknown)
+                unknown << axisName(it.key());
+        }
+        if (!unknown.isEmpty()) {
+            return Outcome::failure(ExitLinkDown,
+                                    tr("no status from the drive of axis %1: it may still be "
+                                       "moving")
+                                        .arg(unknown.join(QStringLiteral(", "))));
+        }
         if (status().panic) {
             return Outcome::failure(ExitMotionAborted,
                                     tr("motion aborted: emergency stop is active (positions are "
@@ -169,6 +211,10 @@ Outcome CliSession::waitUntilIdle()
         }
         if (!status().anyMoving())
             break;
+        if (deadlineMs >= 0 && clock.elapsed() > deadlineMs) {
+            return Outcome::failure(ExitTimeout,
+                                    tr("the motion did not end within %1 ms").arg(deadlineMs));
+        }
         if (!pause(kIdlePollMs))
             return Outcome::failure(ExitInterrupted, tr("interrupted"));
     }
@@ -192,14 +238,36 @@ void CliSession::interrupt()
     wake();
 }
 
-void CliSession::stopMotion()
+Outcome CliSession::stopMotion()
 {
     if (!m_connected)
-        return;
-    m_interrupted = false; // let the stop's own wait run
+        return Outcome::success();
+    if (m_lost) // the adapter sent its stop when the link went down
+        return linkLostOutcome();
+    const bool wasInterrupted = std::exchange(m_interrupted, false); // let the waits run
+    // A jog ramps down first (the host ramp is the jog's only brake); then the model's stop
+    // for whatever else may run (a velocity or reference move brakes on the board).
     m_session.endJog();
-    call([](ControllerSession& s) { return s.stop(); }, 1000);
-    m_interrupted = true;
+    waitFor(
+        [this] {
+            for (const AxisStatus& a : status().axes) {
+                if (a.commandedVelocity != 0.0)
+                    return false;
+            }
+            return true;
+        },
+        kJogRampDownMs);
+    const CommandResult stopped = call([](ControllerSession& s) { return s.stop(); }, 3000);
+    m_interrupted = wasInterrupted;
+    if (stopped.ok())
+        return Outcome::success();
+    if (stopped.error == ErrorKind::Unsupported)
+        return Outcome::from(stopped);
+    return Outcome::failure(
+        exitCodeFor(stopped.error),
+        stopped.message.contains(Controller::mayStillBeMovingText())
+            ? stopped.message
+            : tr("%1; %2").arg(stopped.message, Controller::mayStillBeMovingText()));
 }
 
 } // namespace stepdeck::cli

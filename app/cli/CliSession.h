@@ -20,6 +20,7 @@ class CliSession : public QObject
 public:
     static constexpr int kRequestTimeoutMs = 30000; // safety net; adapters time out sooner
     static constexpr int kIdlePollMs = 50;
+    static constexpr int kJogRampDownMs = 5000; // bound for a jog's host ramp to reach zero
 
     explicit CliSession(const CliOptions& options, QObject* parent = nullptr);
     ~CliSession() override;
@@ -41,9 +42,14 @@ public:
     }
     // One complete status read; status() is current afterwards.
     Outcome refresh();
-    // Polls until no axis moves. A move that ends on a limit switch or an emergency stop is
-    // reported as ExitMotionAborted.
-    Outcome waitUntilIdle();
+    // Polls until no axis moves (deadlineMs < 0: no deadline; past it: ExitTimeout). A move
+    // that ends on a limit switch or an emergency stop is reported as ExitMotionAborted; an
+    // axis whose drive stopped answering as ExitLinkDown.
+    Outcome waitUntilIdle(int deadlineMs = -1);
+    // The link went down (lost or closed) after it was up. The adapter has sent its stop.
+    bool linkLost() const { return m_lost; }
+    // ExitLinkDown with the reason, and whether the controller may still be moving.
+    Outcome linkLostOutcome() const;
     // Runs the event loop for ms (jog lease renewal, poll spacing); false when interrupted.
     bool pause(int ms);
     // Waits until done() or timeout (ms < 0: no deadline); false on timeout or interrupt.
@@ -57,12 +63,17 @@ public:
     QString linkStateText() const { return linkStateName(m_session.linkState()); }
     QString jogRefusal() const { return m_jogRefusal; }
 
-    // SIGINT/SIGTERM: ends every wait; stopMotion() then ends jogs and sends a ramped stop.
+    // SIGINT/SIGTERM/SIGHUP: ends every wait; stopMotion() then ramps jogs down and stops.
     void interrupt();
     bool interrupted() const { return m_interrupted; }
     // For commands that end normally on a signal (velocity): clears and returns the flag.
     bool takeInterrupt() { return std::exchange(m_interrupted, false); }
-    void stopMotion();
+    // Ramps every jog down, then sends the model's stop and waits for its answer. Success only
+    // when the controller acknowledged the stop; the failure says that it may still move.
+    Outcome stopMotion();
+    // How long a failed request waits for the link verdict: a controller that stopped
+    // answering is a lost link (exit 6) whatever the request was, not a timeout by chance.
+    int linkVerdictMs() const;
 
 private:
     void wake();

@@ -48,12 +48,17 @@ int main(int argc, char** argv)
     CliContext context{options, findModel(options.model), session};
     Outcome outcome = runCommand(context);
     if (session.interrupted()) {
-        session.stopMotion();
-        outcome = Outcome::failure(
-            ExitInterrupted,
-            session.isConnected()
-                ? QCoreApplication::translate("stepdeck-cli", "interrupted: stop sent")
-                : QCoreApplication::translate("stepdeck-cli", "interrupted"));
+        // Ramped stop, then exit 130; the line says whether the controller confirmed it.
+        const bool connected = session.isConnected();
+        const Outcome stopped = session.stopMotion();
+        const QString text =
+            !connected ? QCoreApplication::translate("stepdeck-cli", "interrupted")
+            : stopped.ok()
+                ? QCoreApplication::translate("stepdeck-cli",
+                                              "interrupted: the controller acknowledged the stop")
+                : QCoreApplication::translate("stepdeck-cli", "interrupted: %1")
+                      .arg(stopped.message);
+        outcome = Outcome::failure(ExitInterrupted, text);
     }
     if (!outcome.ok())
         printError(outcome.message);

@@ -8,8 +8,9 @@
 
 namespace stepdeck::app {
 
-// Turns SIGINT/SIGTERM/SIGHUP into a call on the event loop (self-pipe: the handler only writes one
-// byte), so an interrupted jog can still send its stop and the simulator can quit cleanly.
+// Turns SIGINT/SIGTERM/SIGHUP into a call on the event loop (self-pipe: the handler only
+// writes one byte), so an interrupted jog can still send its stop and the simulator can quit
+// cleanly. SIGHUP (terminal closed, ssh dropped) must not kill a process mid-motion.
 // One instance per process.
 class SignalPipe
 {
@@ -28,15 +29,13 @@ public:
         action.sa_handler = &SignalPipe::handle;
         sigemptyset(&action.sa_mask);
         action.sa_flags = SA_RESTART;
-        sigaction(SIGINT, &action, nullptr);
-        sigaction(SIGTERM, &action, nullptr);
-        sigaction(SIGHUP, &action, nullptr); // the terminal or the service manager went away
+        for (int signalNumber : kSignals)
+            sigaction(signalNumber, &action, nullptr);
     }
     ~SignalPipe()
     {
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
-        std::signal(SIGHUP, SIG_DFL);
+        for (int signalNumber : kSignals)
+            std::signal(signalNumber, SIG_DFL);
         delete m_notifier;
         for (int& fd : s_fds) {
             if (fd >= 0)
@@ -46,6 +45,8 @@ public:
     }
     SignalPipe(const SignalPipe&) = delete;
     SignalPipe& operator=(const SignalPipe&) = delete;
+
+    static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
 private:
     static void handle(int signalNumber)

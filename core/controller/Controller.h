@@ -11,6 +11,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
+#include <functional>
 
 namespace stepdeck {
 
@@ -44,7 +45,15 @@ public:
 
     // --- link ---
     virtual void openLink(RequestId id) = 0;
-    virtual void closeLink() = 0;
+    // Closes the link under the safety contract (docs/architecture.md): the model's stop for
+    // anything that may move goes out first, overtaking queued work; the transport is flushed
+    // (bounded) and only then closed. Asynchronous and bounded by safetyStopTimeoutMs();
+    // closeFinished() follows exactly once. One policy for every model, hence not virtual.
+    void closeLink();
+    bool isClosing() const { return m_closing; }
+    // What the operator reads when the host lost track of a motion the device did not
+    // confirm as stopped.
+    static QString mayStillBeMovingText();
 
     // --- parameters (validated against schema(); invalid values are never sent) ---
     virtual void readParameters(RequestId id, const QStringList& names) = 0;
@@ -99,13 +108,46 @@ Q_SIGNALS:
     void traffic(const stepdeck::TrafficRecord& record);
     void pollRateChanged(double hz);
     void jogRefused(const QString& reason);
+    void closeFinished();
 
 protected:
+    // ---- the safety contract: what every adapter provides ----
+    // Sends this model's documented stop for everything that may be moving: drops queued work,
+    // ends host-driven motion (jog ramp, streams) and writes the stop ahead of anything else.
+    // Calls done(acknowledged) at most once; acknowledged = the device confirmed the stop.
+    // A model without a stop command calls done(false) at once unless nothing is in motion.
+    virtual void sendSafetyStop(std::function<void(bool acknowledged)> done) = 0;
+    // Ends everything host-side without I/O: queues, poller, jog, streams; every pending
+    // request (an open in progress included) finishes with kind and message.
+    virtual void abortHostSide(ErrorKind kind, const QString& message) = 0;
+    // Whether anything may move as far as the host can tell (tracked motion, jog, status bits
+    // of the last read, an unanswered motion command).
+    virtual bool motionMayBeRunning() const = 0;
+    // How long the safety stop may take before the host gives up waiting for its reply.
+    virtual int safetyStopTimeoutMs() const { return 400; }
+
+    // Replies stopped (polls unanswered, persistent garbage) while the port is still open:
+    // the safety stop goes out first, then the link counts as Lost. The port stays open so
+    // that STOP and PANIC can still be written.
+    void loseLink(const QString& reason);
+    // The transport failed (port vanished, unplugged): nothing can be written any more.
+    void handleTransportFailure(const QString& reason);
+    bool isLosingLink() const { return m_losing; }
+    // The port is open and the link Connected or Lost: a stop or panic can be written.
+    bool canWriteStop() const;
+    // A status read from the device showed every axis standing still.
+    void noteStandstillConfirmed();
+    // The host stopped tracking a motion that the device did not confirm as stopped.
+    void markMotionUnconfirmed();
+
     // Sends the ramped jog rates (already limited by the ramp). Adapters coalesce: only the
     // newest rates matter. Returns false if the rates could not be sent (refusal reported).
     virtual void applyJogVelocity(const AxisVelocities& stepsPerS) = 0;
     // Non-empty: why a jog cannot start now (not connected, panic active, ...).
     virtual QString jogRefusal() const;
+    // Non-empty: why this axis may not jog at this non-zero target (into an active limit
+    // switch, below the drive's start frequency, ...). The axis then gets target 0.
+    virtual QString jogAxisRefusal(Axis axis, double target) const;
 
     void setLinkState(LinkState state, const QString& reason = {});
     MachineStatus& mutableStatus() { return m_status; }
@@ -115,6 +157,10 @@ protected:
     void markAllUnreferenced();
     // Link lost or panic: rates to zero at once, without sending anything.
     void haltJogImmediately();
+    // One axis to zero at once (a limit switch turned active under it); the next jog tick
+    // sends the new rates.
+    void haltJogAxis(Axis axis) { m_jogRamp.stopAxis(axis); }
+    double jogRate(Axis axis) const { return m_jogRamp.current(axis); }
     void finish(const CommandResult& result) { Q_EMIT requestFinished(result); }
     // stop()/panic() of a model without a stop command: Unsupported, noStopCommandText().
     void refuseNoStopCommand(RequestId id);
@@ -125,6 +171,10 @@ protected:
 
 private:
     void onJogTick();
+    // Runs sendSafetyStop() bounded by safetyStopTimeoutMs(), then `then(mayMove, acked)`.
+    void runSafetyStop(std::function<void(bool mayMove, bool acknowledged)> then);
+    void completeClose(bool mayMove, bool acknowledged);
+    void reportLinkLoss(const QString& reason, bool motionUnconfirmed);
 
     QPointer<Transport> m_transport;
     ControllerOptions m_options;
@@ -138,6 +188,11 @@ private:
     AxisVelocities m_lastAppliedJog;
     AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
     QElapsedTimer m_trafficClock;
+    QTimer m_safetyTimer{this};
+    std::function<void()> m_safetyTimeout;
+    quint64 m_safetyToken = 0;
+    bool m_closing = false;
+    bool m_losing = false;
 };
 
 } // namespace stepdeck

@@ -1,5 +1,6 @@
 #pragma once
 #include "model/Axis.h"
+#include "model/LineSettings.h"
 
 namespace stepdeck {
 
@@ -17,6 +18,9 @@ struct ControllerOptions
     int jogLeaseMs = 300;                 // a jog rate not renewed within this ramps to zero
     int jogTickMs = 20;                   // JogRamp update period
     double jogAccelerationStepsPerS2 = 0; // 0: the model's default
+    // The modem line wired to the board's reset input (E-LAB: RTS by the manual's text, DTR by
+    // its pin table); the other line is held de-asserted too.
+    LineSettings::ResetLine resetLine = LineSettings::ResetLine::Rts;
 };
 
 } // namespace stepdeck

@@ -4,6 +4,7 @@
 #include "transport/TransportFactory.h"
 #include <QCoreApplication>
 #include <QEvent>
+#include <QSemaphore>
 
 namespace stepdeck {
 
@@ -125,14 +126,26 @@ void ControllerSession::destroy()
     if (!m_context)
         return;
     QObject* context = m_context;
+    // The safety contract first: the adapter's stop goes out and is flushed before the port
+    // closes. That close is asynchronous (it waits, bounded, for the stop's reply), so this
+    // thread waits for closeFinished -- the controller thread keeps running meanwhile.
+    auto closed = std::make_shared<QSemaphore>();
     QMetaObject::invokeMethod(
         context,
-        [context] {
-            for (Controller* c : context->findChildren<Controller*>())
+        [context, closed] {
+            const QList<Controller*> controllers = context->findChildren<Controller*>();
+            for (Controller* c : controllers) {
+                QObject::connect(c, &Controller::closeFinished, c, [closed] { closed->release(); });
                 c->closeLink();
-            delete context;
+            }
+            if (controllers.isEmpty())
+                closed->release();
         },
-        Qt::BlockingQueuedConnection);
+        Qt::QueuedConnection);
+    if (!closed->tryAcquire(1, kDestroyCloseWaitMs))
+        qCWarning(lcSession) << "close did not finish within" << kDestroyCloseWaitMs << "ms";
+    QMetaObject::invokeMethod(
+        context, [context] { delete context; }, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
     m_context = nullptr;

@@ -24,6 +24,9 @@ class ControllerSession : public QObject
 {
     Q_OBJECT
 public:
+    // destroy() waits at most this long for the adapter's safety stop and close.
+    static constexpr int kDestroyCloseWaitMs = 3000;
+
     explicit ControllerSession(QObject* parent = nullptr);
     ~ControllerSession() override;
 

@@ -51,6 +51,14 @@ void JogRamp::reset()
         c = 0.0;
 }
 
+void JogRamp::stopAxis(Axis axis)
+{
+    if (m_targets.contains(axis))
+        m_targets[axis] = 0.0;
+    if (m_current.contains(axis))
+        m_current[axis] = 0.0;
+}
+
 AxisVelocities JogRamp::advance(double dtSeconds)
 {
     if (!(dtSeconds > 0))

@@ -20,6 +20,7 @@ public:
     void setTargets(const AxisVelocities& targets); // axes not named keep their target
     void releaseAll();                              // every target to zero (ramps down)
     void reset();                                   // targets and rates to zero at once
+    void stopAxis(Axis axis);                       // one axis: target and rate to zero at once
 
     double target(Axis axis) const { return m_targets.value(axis, 0.0); }
     double current(Axis axis) const { return m_current.value(axis, 0.0); }

@@ -1,5 +1,6 @@
 #pragma once
-#include <QtGlobal>
+#include <QString>
+#include <optional>
 
 namespace stepdeck {
 
@@ -10,6 +11,10 @@ struct LineSettings
     int dataBits = 8;
     int stopBits = 1; // 1 or 2
     enum class Parity { None, Even, Odd } parity = Parity::None;
+    // The modem line some boards use as hardware reset. E-LAB: the manual's text says RTS, its
+    // pin table puts the reset on the DE-9 pin that is DTR, so the user chooses (RTS default).
+    // The transport holds both lines de-asserted on open.
+    enum class ResetLine { Rts, Dtr } resetLine = ResetLine::Rts;
 
     // Bits on the wire per character (start + data + parity + stop) for pacing estimates.
     int bitsPerCharacter() const
@@ -19,5 +24,9 @@ struct LineSettings
     // Microseconds one character occupies on the wire.
     double characterTimeUs() const { return 1e6 * bitsPerCharacter() / double(baudRate); }
 };
+
+// "rts" / "dtr" (CLI --reset-line, settings); nullopt for anything else.
+std::optional<LineSettings::ResetLine> resetLineFromName(const QString& name);
+QString resetLineName(LineSettings::ResetLine line);
 
 } // namespace stepdeck

@@ -15,7 +15,7 @@ bool MachineStatus::anyLimitSwitch() const
 bool MachineStatus::anyMoving() const
 {
     for (const AxisStatus& a : axes) {
-        if (a.moving || a.jogging)
+        if (a.moving || a.jogging || a.motionUnknown)
             return true;
     }
     return busy;
@@ -45,7 +45,8 @@ QJsonObject MachineStatus::toJson(const QString& modelId) const
                          {"referenced", a.referenced},
                          {"position", double(a.position)},
                          {"positionKnown", a.positionKnown},
-                         {"positionEstimated", a.positionEstimated}};
+                         {"positionEstimated", a.positionEstimated},
+                         {"motionUnknown", a.motionUnknown}};
         if (a.lastSwitch != SwitchEvent::None)
             axis.insert("lastSwitch", a.lastSwitch == SwitchEvent::Limit ? "limit" : "reference");
         axesJson.insert(axisName(it.key()), axis);

@@ -23,6 +23,9 @@ struct AxisStatus
     bool positionEstimated = false; // integrated from jog/velocity rates, not confirmed
     qint64 position = 0;            // steps, host-side bookkeeping unless the model reads it back
     double commandedVelocity = 0;   // steps/s the host currently commands (jog ramp output)
+    // No fresh status for this axis (its drive stopped answering): moving/jogging are the last
+    // known values and the axis may be moving. Never shown as idle.
+    bool motionUnknown = false;
     SwitchEvent lastSwitch = SwitchEvent::None;
 };
 

@@ -1,7 +1,9 @@
 #include "PtyEndpoint.h"
 #include "Logging.h"
+#include <QDeadlineTimer>
 #include <QMetaObject>
 #include <QSocketNotifier>
+#include <QThread>
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
@@ -159,6 +161,18 @@ void PtyEndpoint::flushOut()
         m_writeNotifier->setEnabled(!m_out.isEmpty());
     if (total > 0)
         Q_EMIT bytesWritten(total);
+}
+
+bool PtyEndpoint::flushOutput(int timeoutMs)
+{
+    // The device side rarely needs this (stepdeck-sim's last words); a bounded retry loop.
+    QDeadlineTimer deadline(qMax(0, timeoutMs));
+    flushOut();
+    while (!m_out.isEmpty() && m_master >= 0 && !deadline.hasExpired()) {
+        QThread::usleep(500);
+        flushOut();
+    }
+    return m_master >= 0 && m_out.isEmpty();
 }
 
 void PtyEndpoint::onWritable()

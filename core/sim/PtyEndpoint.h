@@ -31,6 +31,7 @@ public:
     qint64 write(const QByteArray& bytes) override;
     void discardOutput() override { m_out.clear(); }
     qint64 bytesToWrite() const override { return m_out.size(); }
+    bool flushOutput(int timeoutMs) override;
     QString description() const override { return m_slavePath; }
 
     // Test hook, "peer vanishes mid-move": closes the pty as if the USB adapter had been

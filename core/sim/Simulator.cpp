@@ -21,6 +21,13 @@ void Simulator::attach(Transport* deviceEnd)
             [deviceEnd](const QByteArray& bytes) { deviceEnd->write(bytes); });
 }
 
+void Simulator::noteReceived(const QByteArray& frame)
+{
+    if (m_received.size() >= kReceivedLogSize)
+        m_received.remove(0, kReceivedLogSize / 4); // amortised: drop the oldest quarter
+    m_received.append(frame);
+}
+
 void Simulator::setPacing(bool enabled, const LineSettings& line)
 {
     m_options.paceOutput = enabled;

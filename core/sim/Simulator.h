@@ -48,6 +48,15 @@ public:
     void setPacing(bool enabled, const LineSettings& line);
     qint64 bytesPending() const { return m_paced.size(); }
 
+    // What this device received: every complete frame its codec decoded, in order (the newest
+    // kReceivedLogSize). Safety tests assert on these, never only on the host's own state.
+    static constexpr int kReceivedLogSize = 20000;
+    QList<QByteArray> receivedFrames() const { return m_received; }
+    int countReceived(const QByteArray& frame) const { return int(m_received.count(frame)); }
+    void clearReceivedFrames() { m_received.clear(); }
+    // True when no axis of the simulated machine moves (the device's own view).
+    virtual bool standingStill() = 0;
+
 public Q_SLOTS:
     virtual void receive(const QByteArray& bytes) = 0;
 
@@ -55,6 +64,7 @@ Q_SIGNALS:
     void transmit(const QByteArray& bytes);
 
 protected:
+    void noteReceived(const QByteArray& frame);
     // Sends one reply, applying injected faults and pacing.
     void send(const QByteArray& reply);
     // Sends bytes that are not a reply (flow control), with pacing but no faults.
@@ -66,6 +76,7 @@ private:
 
     SimulatorOptions m_options;
     SimulatorFaults m_faults;
+    QList<QByteArray> m_received;
     QByteArray m_paced;
     QTimer m_paceTimer{this};
     QElapsedTimer m_paceClock;

@@ -22,6 +22,7 @@ public:
     qint64 write(const QByteArray& bytes) override;
     void discardOutput() override;
     qint64 bytesToWrite() const override { return 0; }
+    bool flushOutput(int) override { return m_open; } // bytes are handed over at write()
     QString description() const override { return QStringLiteral("loopback"); }
 
     // Test hook: the link breaks as if the peer vanished (emits failed once, closes).

@@ -1,6 +1,9 @@
 #include "SerialTransport.h"
 #include "Logging.h"
+#include <QDeadlineTimer>
 #include <QMetaObject>
+#include <sys/ioctl.h>
+#include <termios.h>
 
 namespace stepdeck {
 
@@ -56,6 +59,7 @@ void SerialTransport::open(const LineSettings& settings)
         close();
     m_failed = false;
     const quint64 gen = ++m_openGeneration;
+    m_resetLine = settings.resetLine;
     m_port.setPortName(m_portName);
     // Settings given before open() take effect with the open itself (no moment at Qt's
     // default 9600 8N1); afterwards they are set once more so that a setting the port refuses
@@ -86,11 +90,14 @@ void SerialTransport::open(const LineSettings& settings)
             Qt::QueuedConnection);
         return;
     }
-    // Hold RTS low: on E-LAB boards RTS is the reset line. Pseudo-terminals refuse the ioctl
-    // ("Inappropriate ioctl"), which is expected there and not worth a word.
-    QString rtsError;
-    if (!setResetLine(false, &rtsError))
-        qCDebug(lcTransport) << "RTS not controllable:" << rtsError;
+    // Hold both modem lines low: one of them is the board's reset line, and the other one must
+    // not be left asserted either (the E-LAB manual names RTS, its pin table DTR).
+    // Pseudo-terminals refuse the ioctl ("Inappropriate ioctl"), which is expected there.
+    for (const auto line : {LineSettings::ResetLine::Rts, LineSettings::ResetLine::Dtr}) {
+        QString lineError;
+        if (!driveLine(line, false, &lineError))
+            qCDebug(lcTransport) << "modem line not controllable:" << lineError;
+    }
     qCInfo(lcTransport) << "opened" << m_portName << settings.baudRate;
     QMetaObject::invokeMethod(
         this,
@@ -141,8 +148,45 @@ qint64 SerialTransport::bytesToWrite() const
     return isOpen() ? m_port.bytesToWrite() : 0;
 }
 
+bool SerialTransport::flushOutput(int timeoutMs)
+{
+    if (!isOpen())
+        return false;
+    // QSerialPort::close() drops its write buffer: wait until the kernel has taken all of it.
+    const QDeadlineTimer deadline(qMax(0, timeoutMs));
+    m_expectErrors = true;
+    while (m_port.bytesToWrite() > 0 && !deadline.hasExpired()) {
+        if (!m_port.waitForBytesWritten(int(qMax<qint64>(1, deadline.remainingTime()))))
+            break;
+    }
+    m_expectErrors = false;
+    const bool left = m_port.isOpen() && m_port.bytesToWrite() == 0;
+    if (!left)
+        qCWarning(lcTransport) << "flush: bytes still queued after" << timeoutMs << "ms";
+    return left;
+}
+
+qint64 SerialTransport::pendingOutputBytes() const
+{
+    if (!isOpen())
+        return 0;
+    qint64 pending = m_port.bytesToWrite();
+    int kernelQueue = 0;
+    // TIOCOUTQ: bytes in the tty/USB-serial driver not yet on the wire (0 where unsupported).
+    if (m_port.handle() >= 0 && ::ioctl(m_port.handle(), TIOCOUTQ, &kernelQueue) == 0)
+        pending += qMax(0, kernelQueue);
+    return pending;
+}
+
 bool SerialTransport::setResetLine(bool asserted, QString* error)
 {
+    return driveLine(m_resetLine, asserted, error);
+}
+
+bool SerialTransport::driveLine(LineSettings::ResetLine line, bool asserted, QString* error)
+{
+    const QString name =
+        line == LineSettings::ResetLine::Dtr ? QStringLiteral("DTR") : QStringLiteral("RTS");
     if (!isOpen()) {
         if (error)
             *error = tr("serial port %1 is not open").arg(m_portName);
@@ -151,12 +195,13 @@ bool SerialTransport::setResetLine(bool asserted, QString* error)
     // A refused ioctl (pseudo-terminal, some USB adapters) is an answer, not a broken link:
     // report it through the return value and keep the port open.
     m_expectErrors = true;
-    const bool ok = m_port.setRequestToSend(asserted);
+    const bool ok = line == LineSettings::ResetLine::Dtr ? m_port.setDataTerminalReady(asserted)
+                                                         : m_port.setRequestToSend(asserted);
     m_expectErrors = false;
     if (!ok) {
         if (error)
-            *error =
-                tr("serial port %1 cannot drive RTS: %2").arg(m_portName, m_port.errorString());
+            *error = tr("serial port %1 cannot drive %2: %3")
+                         .arg(m_portName, name, m_port.errorString());
         m_port.clearError();
     }
     return ok;

@@ -1,5 +1,6 @@
 #include "TcpTransport.h"
 #include "Logging.h"
+#include <QDeadlineTimer>
 #include <QMetaObject>
 #include <QUrl>
 
@@ -114,6 +115,21 @@ void TcpTransport::discardOutput()
 qint64 TcpTransport::bytesToWrite() const
 {
     return m_open ? m_pending.size() + m_socket.bytesToWrite() : 0;
+}
+
+bool TcpTransport::flushOutput(int timeoutMs)
+{
+    if (!m_open)
+        return false;
+    // The small-chunk queue first, then the socket's own buffer, all within one deadline.
+    const QDeadlineTimer deadline(qMax(0, timeoutMs));
+    while (m_open && bytesToWrite() > 0 && !deadline.hasExpired()) {
+        if (m_socket.bytesToWrite() == 0)
+            pump();
+        if (!m_socket.waitForBytesWritten(int(qMax<qint64>(1, deadline.remainingTime()))))
+            break;
+    }
+    return m_open && bytesToWrite() == 0;
 }
 
 void TcpTransport::pump()

@@ -28,6 +28,7 @@ public:
     qint64 write(const QByteArray& bytes) override;
     void discardOutput() override;
     qint64 bytesToWrite() const override;
+    bool flushOutput(int timeoutMs) override;
     QString description() const override { return m_url; }
 
     void setConnectTimeout(int ms) { m_connectTimeoutMs = ms; }

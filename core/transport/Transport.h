@@ -12,6 +12,9 @@ namespace stepdeck {
 //   (Qt 6.4's QSerialPort otherwise spins on ReadError when the peer vanishes).
 // - write() hands bytes over in order; discardOutput() drops what has not left yet, so a
 //   panic byte written next is not stuck behind queued data.
+// - A byte counts as sent only once it has left the process: write() merely queues it, and
+//   close() throws away what is still queued. flushOutput() waits (bounded) until the queue
+//   has been handed to the operating system; every stop written before a close goes through it.
 class Transport : public QObject
 {
     Q_OBJECT
@@ -24,8 +27,16 @@ public:
     virtual qint64 write(const QByteArray& bytes) = 0;
     virtual void discardOutput() = 0;
     virtual qint64 bytesToWrite() const = 0;
-    // Drives the line some boards use as hardware reset (E-LAB: RTS). Returns false and says
-    // why where the link cannot (a pseudo-terminal, TCP, ...).
+    // Blocks at most timeoutMs until everything written has left the process (serial: handed
+    // to the kernel's tty queue). Returns true when nothing of ours is left in the process.
+    // Only for the last bytes before a close: the caller's thread is blocked meanwhile.
+    virtual bool flushOutput(int timeoutMs) = 0;
+    // Bytes written and not yet on the wire as far as this host can tell: the process's own
+    // queue plus, for a serial port, the kernel's output queue (TIOCOUTQ). A stream paced on
+    // this keeps the kernel from holding kilobytes the device's XOFF cannot hold back.
+    virtual qint64 pendingOutputBytes() const { return bytesToWrite(); }
+    // Drives the line some boards use as hardware reset (LineSettings::resetLine given to
+    // open()). Returns false and says why where the link cannot (a pseudo-terminal, TCP, ...).
     virtual bool setResetLine(bool asserted, QString* error)
     {
         Q_UNUSED(asserted)

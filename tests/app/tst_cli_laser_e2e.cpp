@@ -235,7 +235,9 @@ void TestCliLaserEndToEnd::bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion
     QVERIFY2(out.contains("stopping the motion the bridge started"), out.constData());
     QCOMPARE(m_laserGot, QByteArray("1000002\r")); // no '0' for a target never reached
 
-    // The board itself: standing well before the target (the move would take ~20 s).
+    // The board itself: standing well before the target (the move would take ~20 s). A status
+    // read that meets the board still braking is cancelled by the adapter's own safety stop
+    // (exit 10: it stops motion it did not command); read again.
     QElapsedTimer t;
     t.start();
     bool moving = true;
@@ -243,8 +245,9 @@ void TestCliLaserEndToEnd::bridge_homeAndMove_thenSignal_exitsZeroAndStopsMotion
         const ProcessRun s =
             testing::runProcess(binary("stepdeck-cli"),
                                 {"--model", "elab", "--port", m_pty, "--json", "status"}, 10000);
-        QCOMPARE(s.exitCode, 0);
-        moving = QJsonDocument::fromJson(s.out)["axes"]["X"]["moving"].toBool();
+        QVERIFY2(s.exitCode == 0 || s.exitCode == 10, s.err.constData());
+        if (s.exitCode == 0)
+            moving = QJsonDocument::fromJson(s.out)["axes"]["X"]["moving"].toBool();
     }
     QVERIFY(!moving);
 }

@@ -139,7 +139,8 @@ void TestSetupPage::write_changedField_sendsOnlyItsCommand()
     QCOMPARE(field->lineEdit()->property("fieldState").toString(), QStringLiteral("changed"));
     const qsizetype start = m_f->records.size();
     QVERIFY(writeAndWait(false));
-    QCOMPARE(elab::toMnemonics(m_f->sent(start)), QStringLiteral("<ESC>S0064,00C8;0064."));
+    // The standstill read (<HT><ENQ>) precedes every setup write.
+    QCOMPARE(elab::toMnemonics(m_f->sent(start)), QStringLiteral("<HT><ENQ><ESC>S0064,00C8;0064."));
     QVERIFY(!field->isChanged());
     QVERIFY(!writeAndWait(false)); // nothing left to write
 }

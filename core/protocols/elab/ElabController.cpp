@@ -8,11 +8,6 @@
 namespace stepdeck::elab {
 
 namespace {
-// RS232-C: "Der Reset wird durch eine Logische 1 auf der RTS-Leitung ausgelöst. Diese muss
-// mindestens für 100msec im High Zustand verharren ... Nachdem die Leitung auf Low gezogen
-// wurde, sind weitere 100mSec zu warten." A margin on both.
-constexpr int kResetPulseMs = 120;
-constexpr int kResetSettleMs = 120;
 constexpr int kTemperatureEveryNthPoll = 10;
 constexpr int kStartButtonEveryNthPoll = 20;
 } // namespace
@@ -23,7 +18,8 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
       m_line(m_queue, mutableStatus(), hooks()),
       m_jog(m_line, ElabCtlJog::Hooks{[this] { haltJogImmediately(); },
                                       [this](const QString& why) { Q_EMIT jogRefused(why); },
-                                      [this] { return linkState() == LinkState::Connected; }})
+                                      [this] { return linkState() == LinkState::Connected; },
+                                      [this](const QString& why) { stopUntracked(why); }})
 {
     MachineStatus& s = mutableStatus();
     for (Axis a : ElabCtlStatusMapper::axes())
@@ -36,7 +32,7 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
     connect(&m_poller, &StatusPoller::pollDue, this, &ElabController::startPoll);
     connect(&m_poller, &StatusPoller::rateChanged, this, &Controller::pollRateChanged);
     connect(&m_poller, &StatusPoller::linkLost, this, [this](int misses) {
-        linkDown(tr("no reply to %1 status polls in a row").arg(misses), true);
+        loseLink(tr("no reply to %1 status polls in a row").arg(misses));
     });
     connect(&m_queue, &ElabExchangeQueue::trafficOut, this, [this](const QByteArray& b, bool p) {
         recordTraffic(TrafficRecord::Direction::Out, b, p);
@@ -59,7 +55,7 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
     if (transport) {
         connect(transport, &Transport::opened, this, &ElabController::onOpened);
         connect(transport, &Transport::failed, this,
-                [this](const QString& reason) { linkDown(reason, false); });
+                [this](const QString& reason) { handleTransportFailure(reason); });
     }
 }
 
@@ -79,10 +75,18 @@ ElabCtlHooks ElabController::hooks()
     ElabCtlHooks h;
     h.ok = [this](RequestId id, const QVariant& value) { finishOk(id, value); };
     h.fail = [this](RequestId id, ErrorKind kind, const QString& message) {
-        finishError(id, kind, message);
+        const QStringList written = m_writeProgress.take(id);
+        finishError(id, kind,
+                    written.isEmpty()
+                        ? message
+                        : tr("%1; already written: %2").arg(message, written.join(", ")));
     };
     h.publish = [this] { publishStatus(); };
-    h.statusRead = [this] { m_ops.onStatusRead(); };
+    h.statusRead = [this] {
+        trackLimitSwitches(); // before the motion bookkeeping forgets the direction
+        m_ops.onStatusRead();
+        checkUntrackedMotion();
+    };
     h.requireLink = [this](RequestId id) { return requireLink(id); };
     h.error = [this](const QString& message) { Q_EMIT errorOccurred(message); };
     return h;
@@ -90,7 +94,7 @@ ElabCtlHooks ElabController::hooks()
 
 bool ElabController::requireLink(RequestId id)
 {
-    if (linkState() == LinkState::Connected)
+    if (linkState() == LinkState::Connected && !isClosing() && !isLosingLink())
         return true;
     finishError(id, ErrorKind::LinkDown, tr("not connected (%1)").arg(linkStateName(linkState())));
     return false;
@@ -155,8 +159,11 @@ void ElabController::openLink(RequestId id)
     }
     m_openId = id;
     m_queue.restart();
+    m_limitApproach.clear();
     setLinkState(LinkState::Connecting);
-    transport()->open(elab::lineSettings());
+    LineSettings line = elab::lineSettings();
+    line.resetLine = options().resetLine;
+    transport()->open(line);
 }
 
 void ElabController::onOpened()
@@ -202,47 +209,6 @@ void ElabController::cancelEverything(ErrorKind kind, const QString& message)
     m_jog.reset();
 }
 
-void ElabController::linkDown(const QString& reason, bool closeTransport)
-{
-    // Reported once: a transport failure after the poller gave up (or the reverse) is the same
-    // outage.
-    if ((linkState() == LinkState::Disconnected || linkState() == LinkState::Lost) && m_openId == 0)
-        return;
-    m_poller.stop();
-    const bool opening = m_openId != 0;
-    cancelEverything(ErrorKind::LinkDown, tr("link lost: %1").arg(reason));
-    if (closeTransport && transport())
-        transport()->close();
-    if (opening) {
-        finishError(std::exchange(m_openId, 0), ErrorKind::LinkDown, reason);
-        setLinkState(LinkState::Disconnected, reason);
-        return;
-    }
-    setLinkState(LinkState::Lost, reason);
-    Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
-}
-
-void ElabController::closeLink()
-{
-    m_poller.stop();
-    Transport* t = transport();
-    if (t && t->isOpen() && linkState() == LinkState::Connected &&
-        (jogActive() || m_jog.inJogMode() || m_ops.openEnded())) {
-        // Best effort: nothing may keep running unattended (jog, velocity or reference move,
-        // stream).
-        // "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen".
-        const QByteArray stopByte = encode::stopMove();
-        recordTraffic(TrafficRecord::Direction::Out, stopByte, false);
-        t->write(stopByte);
-    }
-    cancelEverything(ErrorKind::Cancelled, tr("link closed"));
-    if (m_openId != 0)
-        finishError(std::exchange(m_openId, 0), ErrorKind::Cancelled, tr("link closed"));
-    if (t)
-        t->close();
-    setLinkState(LinkState::Disconnected, tr("closed"));
-}
-
 void ElabController::startPoll()
 {
     // The poll goes behind queued commands; it never has more than one cycle in flight.
@@ -252,8 +218,11 @@ void ElabController::startPoll()
     ++m_pollCount;
     ElabCtlLine::StatusRead how;
     how.poll = true;
-    how.temperature = m_pollCount % kTemperatureEveryNthPoll == 1;
-    how.startButton = m_pollCount % kStartButtonEveryNthPoll == 0;
+    // During a motion only the status words go out (manual, during a feed: "keine weiteren
+    // Kommandos"; a stream's timing suffers from every extra exchange).
+    const bool quiet = motionMayBeRunning();
+    how.temperature = !quiet && m_pollCount % kTemperatureEveryNthPoll == 1;
+    how.startButton = !quiet && m_pollCount % kStartButtonEveryNthPoll == 0;
     m_line.readStatus(
         0, how, [this] { m_poller.pollFinished(true); },
         [this](ErrorKind kind, const QString&) {
@@ -293,136 +262,6 @@ void ElabController::sendRaw(RequestId id, const QByteArray& bytes)
     m_queue.enqueue(std::move(ex));
 }
 
-// ------------------------------------------------------------------ stop, panic, reset
-
-void ElabController::stop(RequestId id)
-{
-    if (!transport() || !transport()->isOpen() || linkState() != LinkState::Connected) {
-        finishError(id, ErrorKind::LinkDown, tr("not connected"));
-        return;
-    }
-    const bool streaming = m_ops.streaming();
-    m_line.newEpoch();
-    // Work not yet written is dropped; polls stay (they are harmless and keep the status).
-    m_queue.dropQueued(ErrorKind::Cancelled, tr("cancelled by stop"), false);
-    m_ops.abortStream(ErrorKind::Cancelled, tr("feed stream stopped"));
-    // "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen" -- jog included, so the
-    // host ramp stops at once instead of fighting the board's brake ramp.
-    haltJogImmediately();
-    m_jog.reset();
-    const ElabCtlLine::Op op = m_line.op(id);
-    ElabExchange ex = ElabCtlLine::exchange(id, encode::stopMove(), Expect::AckNak);
-    ex.onReply = [this, op, streaming](const Reply& r) {
-        if (r.kind != Reply::Kind::Ack) {
-            m_line.failWithNak(op, encode::stopMove());
-            return;
-        }
-        m_ops.onStopAccepted(); // after the reply of what was in flight (FIFO)
-        if (!streaming) {
-            finishOk(op.id);
-            return;
-        }
-        // A stop during <DC2>: the buffer still holds single steps; flush it and end the feed
-        // ("Der Buffer kann jetzt mit folgendem Kommando geleert werden": <GS>; "Den Abschluss
-        // ... muss immer ein EndOfFeed Kommando sein").
-        m_line.sendCommand(op, encode::flushBuffer(), [this, op] {
-            m_line.sendCommand(op, encode::endOfFeed(), [this, op] { finishOk(op.id); });
-        });
-    };
-    ex.onError = [this, id](ErrorKind kind, const QString& why) { finishError(id, kind, why); };
-    m_queue.overtake(std::move(ex), false);
-    publishStatus();
-}
-
-void ElabController::panic(RequestId id)
-{
-    Transport* t = transport();
-    if (!t || !t->isOpen()) {
-        finishError(id, ErrorKind::LinkDown, tr("not connected"));
-        return;
-    }
-    const bool streaming = m_ops.streaming();
-    const QString why = tr("cancelled by panic stop");
-    m_line.newEpoch();
-    m_ops.abortStream(ErrorKind::Cancelled, why);
-    m_ops.clear();
-    haltJogImmediately();
-    m_jog.reset();
-    m_queue.dropQueued(ErrorKind::Cancelled, why, true);
-    m_queue.abandonInFlight(ErrorKind::Cancelled, why);
-    // "Beim Wiederanlauf muss das System neu initialisiert werden, da ... Schritte verloren
-    // gehen."
-    markAllUnreferenced();
-    m_line.setHostPanic(true);
-    // Mid-stream the board may wait for the data byte of a <DC2> pair whose data byte was
-    // discarded: a first <BEL> is then taken as the step byte 0x07 (no step bit set, harmless)
-    // and the second one is the panic. Outside a stream the second <BEL> is a second panic.
-    const QByteArray frame =
-        streaming ? encode::panicStop() + encode::panicStop() : encode::panicStop();
-    ElabExchange ex = ElabCtlLine::exchange(id, frame, Expect::Ack);
-    ex.tolerateStray = true; // replies of abandoned exchanges may still come
-    ex.onReply = [this, id](const Reply&) {
-        finishOk(id);
-        ElabCtlLine::StatusRead how;
-        how.continuation = how.tolerant = true;
-        m_line.readStatus(
-            0, how, [] {}, [](ErrorKind, const QString&) {});
-    };
-    ex.onError = [this, id](ErrorKind kind, const QString& message) {
-        finishError(id, kind, message);
-    };
-    m_queue.overtake(std::move(ex), true);
-    publishStatus();
-}
-
-void ElabController::reset(RequestId id)
-{
-    Transport* t = transport();
-    if (!t || !t->isOpen() || linkState() != LinkState::Connected) {
-        finishError(id, ErrorKind::LinkDown, tr("not connected"));
-        return;
-    }
-    cancelEverything(ErrorKind::Cancelled, tr("cancelled by reset"));
-    markAllUnreferenced();
-    publishStatus();
-    QString error;
-    if (!t->setResetLine(true, &error)) {
-        finishError(id, ErrorKind::Unsupported, tr("reset not possible: %1").arg(error));
-        return;
-    }
-    m_poller.stop();
-    m_queue.setHeld(true);
-    const quint64 epoch = m_line.epoch();
-    QTimer::singleShot(kResetPulseMs, this, [this, id, epoch] {
-        if (epoch != m_line.epoch() || !transport())
-            return; // link lost meanwhile: the request was already finished
-        QString ignored;
-        transport()->setResetLine(false, &ignored);
-        QTimer::singleShot(kResetSettleMs, this, [this, id, epoch] { finishReset(id, epoch); });
-    });
-}
-
-void ElabController::finishReset(RequestId id, quint64 epoch)
-{
-    if (epoch != m_line.epoch())
-        return;
-    m_queue.setHeld(false);
-    m_line.setHostPanic(false);
-    m_written.clear(); // a reset board has lost its setup
-    ElabCtlLine::StatusRead how;
-    how.temperature = how.tolerant = true;
-    m_line.readStatus(
-        id, how,
-        [this, id] {
-            m_poller.start();
-            finishOk(id);
-        },
-        [this, id](ErrorKind kind, const QString& why) {
-            m_poller.start();
-            finishError(id, kind, tr("no status after reset: %1").arg(why));
-        });
-}
-
 // ------------------------------------------------------------------ parameters
 
 void ElabController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
@@ -435,10 +274,24 @@ void ElabController::writeParameters(RequestId id, const ParameterSet& values, b
     }
     if (!requireLink(id))
         return;
+    if (const QString busy = hostMotionRefusal(); !busy.isEmpty()) {
+        finishError(id, ErrorKind::Refused, busy);
+        return;
+    }
     const QString note =
         verify ? tr("written; the E-LAB board cannot read parameters back, nothing verified")
                : QString();
-    writeStep(m_line.op(id), plan, 0, note);
+    // The board must stand still (RequestAxeState first), and the writes follow directly.
+    m_line.preflight(id, ElabCtlStatusMapper::Rule::Standstill,
+                     [this, plan, note](ElabCtlLine::Op op) { writeStep(op, plan, 0, note); });
+}
+
+QString ElabController::hostMotionRefusal() const
+{
+    if (jogActive() || m_jog.mayRun() || m_ops.motionTracked() || m_ops.streaming())
+        return tr("refused: a motion is running; setup and outputs are written only at "
+                  "standstill");
+    return {};
 }
 
 void ElabController::writeStep(const ElabCtlLine::Op& op, const QList<ElabParameterWrite>& plan,
@@ -446,16 +299,19 @@ void ElabController::writeStep(const ElabCtlLine::Op& op, const QList<ElabParame
 {
     // One setup command after the other; a NAK stops the sequence (the rest is not sent).
     if (index == plan.size()) {
+        m_writeProgress.remove(op.id);
         finish(CommandResult{op.id, ErrorKind::None, note, {}});
         return;
     }
-    m_line.sendCommand(
-        op, plan.at(index).frame,
-        [this, op, plan, index, note] {
-            m_written.insert(plan.at(index).name, plan.at(index).value);
-            writeStep(op, plan, index + 1, note);
-        },
-        index > 0);
+    if (m_line.stale(op))
+        return;
+    m_line.sendCommand(op, plan.at(index).frame, [this, op, plan, index, note] {
+        m_written.insert(plan.at(index).name, plan.at(index).value);
+        QStringList& done = m_writeProgress[op.id];
+        if (!done.contains(plan.at(index).name))
+            done << plan.at(index).name;
+        writeStep(op, plan, index + 1, note);
+    });
 }
 
 void ElabController::readParameters(RequestId id, const QStringList& names)
@@ -497,13 +353,17 @@ void ElabController::writeAuxiliary(RequestId id, const QString& name, const QVa
 {
     if (!requireLink(id))
         return;
-    m_line.sendCommand(
-        m_line.op(id), frame,
-        [this, id, name, value] {
-            m_written.insert(name, ParameterValue{value, {}});
-            finishOk(id);
-        },
-        false);
+    if (const QString busy = hostMotionRefusal(); !busy.isEmpty()) {
+        finishError(id, ErrorKind::Refused, busy);
+        return;
+    }
+    m_line.preflight(id, ElabCtlStatusMapper::Rule::Standstill,
+                     [this, id, name, value, frame](ElabCtlLine::Op op) {
+                         m_line.sendCommand(op, frame, [this, id, name, value] {
+                             m_written.insert(name, ParameterValue{value, {}});
+                             finishOk(id);
+                         });
+                     });
 }
 
 void ElabController::setSpindle(RequestId id, int rpm)

@@ -32,7 +32,12 @@ namespace stepdeck::elab {
 // - After the host's ForcePanicStop, status.panic stays set (and jog is refused) until a move,
 //   feed, reference or velocity move is accepted, or after reset/reconnect. Moves are not
 //   blocked by this latch, only by the board's own tmPanicStop.
-// - A stop also ends jog: "ForceStopMove stoppt sofort jegliche Bewegung mit Bremsrampen".
+// - Stop (STOP, close, link loss): <XOFF> ForceStopMove for moves, feeds and streams
+//   ("stoppt sofort jegliche Bewegung mit Bremsrampen"), and <DC4> with zero rates whenever the
+//   board may be in jog mode: the jog section lists only SetJogSpeed and ForcePanicStop, and
+//   "Nullwerte stoppen den betreffenden Motor". See ElabControllerStop.cpp.
+// - Whenever a status read shows move or jog bits the host did not command (a lost jog ACK, a
+//   motion from before this session), the host stops them and says so.
 class ElabController : public Controller
 {
     Q_OBJECT
@@ -46,7 +51,6 @@ public:
     ParameterSchema schema() const override;
 
     void openLink(RequestId id) override;
-    void closeLink() override;
     void readParameters(RequestId id, const QStringList& names) override;
     void writeParameters(RequestId id, const ParameterSet& values, bool verify) override;
     void moveRelative(RequestId id, const AxisVector& steps) override;
@@ -71,15 +75,33 @@ public:
 protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override { m_jog.apply(stepsPerS); }
     QString jogRefusal() const override;
+    QString jogAxisRefusal(Axis axis, double target) const override;
+    void sendSafetyStop(std::function<void(bool)> done) override;
+    void abortHostSide(ErrorKind kind, const QString& message) override;
+    bool motionMayBeRunning() const override;
 
 private:
     ElabCtlHooks hooks();
     bool requireLink(RequestId id);
+    QString hostMotionRefusal() const; // non-empty while the host runs or tracks a motion
+    // Limit switches and jog (ElabControllerStop.cpp): a limit that turns active under a
+    // jogging or moving axis remembers the direction that reached it.
+    void trackLimitSwitches();
     void onOpened();
-    void linkDown(const QString& reason, bool closeTransport);
     void startPoll();
     void cancelEverything(ErrorKind kind, const QString& message);
     void finishReset(RequestId id, quint64 epoch);
+    // --- stop paths (ElabControllerStop.cpp) ---
+    bool jogMayRun() const; // host jog, board jog mode, an unanswered <DC4>, jog bits
+    // Writes the stop for whatever may move ahead of queued work. done(acknowledged, failure
+    // kind, failure text): failure is Nak when the board refused a stop frame, else the error
+    // of the exchange that got no answer.
+    using StopDone = std::function<void(bool acknowledged, ErrorKind failure, const QString&)>;
+    void writeStop(RequestId owner, StopDone done);
+    // A status read showed motion the host does not track: stop it and say so (once until
+    // the board reports standstill again).
+    void checkUntrackedMotion();
+    void stopUntracked(const QString& why);
     void writeStep(const ElabCtlLine::Op& op, const QList<ElabParameterWrite>& plan, int index,
                    const QString& note);
     void writeAuxiliary(RequestId id, const QString& name, const QVariant& value,
@@ -91,8 +113,12 @@ private:
     ElabCtlJog m_jog;
     StatusPoller m_poller{this};
     ParameterSet m_written; // the values this session last wrote (the board cannot read back)
+    // Per running parameter write: the names already acknowledged, for the failure message.
+    QHash<RequestId, QStringList> m_writeProgress;
     quint64 m_pollCount = 0;
     RequestId m_openId = 0;
+    bool m_untrackedStopSent = false; // latched until a status read shows standstill
+    QMap<Axis, int> m_limitApproach;  // axis -> direction (+1/-1) that ran into its active limit
 };
 
 } // namespace stepdeck::elab

@@ -59,10 +59,12 @@ void ElabCtlJog::send(bool continuation)
     ElabExchange ex = ElabCtlLine::exchange(0, {}, Expect::AckNak);
     ex.build = [this] {
         m_queued = false; // from now on a new rate needs a new <DC4>
+        m_awaiting = true;
         m_sent = m_rates;
         return encode::jogSpeed(m_rates);
     };
     ex.onReply = [this](const Reply& r) {
+        m_awaiting = false;
         if (r.kind == Reply::Kind::Ack) {
             // "Der Modus wird automatisch wieder verlassen, wenn alle 3 Achsen eine Steprate
             // mit dem Wert 0 erhalten."
@@ -72,10 +74,19 @@ void ElabCtlJog::send(bool continuation)
         nak();
     };
     ex.onError = [this](ErrorKind kind, const QString& why) {
-        m_queued = false;
+        const bool written = m_awaiting;
+        m_queued = m_awaiting = false;
         if (kind == ErrorKind::Cancelled)
             return;
         m_hooks.halt();
+        // The <DC4> may have reached the board (only its reply was lost or garbled): the host
+        // no longer knows whether it jogs, so it stops it (zero rates and ForceStopMove) and
+        // reads the status instead of assuming standstill.
+        if (written && m_hooks.uncertain) {
+            m_jogMode = true; // treated as jogging until the zero rates are answered
+            m_hooks.uncertain(tr("jog: %1; the board may still be jogging").arg(why));
+            return;
+        }
         m_jogMode = false;
         m_line.hooks().error(tr("jog: %1").arg(why));
     };

@@ -15,13 +15,17 @@ public:
         std::function<void()> halt;                  // Controller::haltJogImmediately
         std::function<void(const QString&)> refused; // jogRefused
         std::function<bool()> connected;
+        // A <DC4> got no usable reply (timeout, garbage): whether the board jogs is unknown.
+        std::function<void(const QString&)> uncertain;
     };
 
     ElabCtlJog(ElabCtlLine& line, Hooks hooks);
 
     void apply(const AxisVelocities& stepsPerS);
-    void reset() { m_queued = m_jogMode = false; } // stop, panic, reset, link loss
+    void reset() { m_queued = m_jogMode = m_awaiting = false; } // stop, panic, reset, link loss
     bool inJogMode() const { return m_jogMode; }
+    // The board may be jogging: in jog mode, or a <DC4> is queued or unanswered.
+    bool mayRun() const { return m_jogMode || m_queued || m_awaiting; }
 
 private:
     void send(bool continuation);
@@ -32,6 +36,7 @@ private:
     Triple<qint16> m_rates{}; // the newest ramp output
     Triple<qint16> m_sent{};  // the rates of the <DC4> on the line
     bool m_queued = false;
+    bool m_awaiting = false; // written, reply pending
     bool m_jogMode = false;
 };
 

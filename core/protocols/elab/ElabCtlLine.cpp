@@ -4,6 +4,8 @@
 namespace stepdeck::elab {
 
 namespace {
+constexpr int kStatusRetries = 2;
+
 QString tr(const char* text)
 {
     return QCoreApplication::translate("stepdeck::elab::ElabController", text);
@@ -101,6 +103,7 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
         ex.poll = how.poll;
         ex.tolerateStray = how.tolerant;
         ex.droppable = !how.poll && owner != 0;
+        ex.retries = kStatusRetries; // requests are idempotent: noise costs a retry, not a fault
     }
     chain(
         steps, how.continuation,

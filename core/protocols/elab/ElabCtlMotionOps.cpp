@@ -1,6 +1,7 @@
 #include "ElabCtlMotionOps.h"
 #include "Logging.h"
 #include <QCoreApplication>
+#include <QTimer>
 #include <limits>
 
 namespace stepdeck::elab {
@@ -32,6 +33,8 @@ AxisVector nonZero(const AxisVector& values)
     return out;
 }
 
+constexpr int kReversalPollMs = 50;
+constexpr qint64 kReversalWaitMs = 10000; // a braking ramp far longer than this is a fault
 constexpr qint64 kInt32Min = std::numeric_limits<qint32>::min();
 constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
 constexpr qint64 kInt16Min = std::numeric_limits<qint16>::min();
@@ -65,6 +68,12 @@ void ElabCtlMotionOps::accepted(ElabCtlMotion::Kind kind, const AxisVector& valu
 {
     using K = ElabCtlMotion::Kind;
     m_motion.start(kind, values);
+    if (kind == K::Velocity) {
+        for (auto it = values.cbegin(); it != values.cend(); ++it) {
+            if (it.value() != 0)
+                m_velocitySign.insert(it.key(), it.value() > 0 ? 1 : -1);
+        }
+    }
     m_line.setHostPanic(false); // the operator has started again after a panic
     for (auto it = m_motion.values().cbegin(); it != m_motion.values().cend(); ++it) {
         AxisStatus& axis = m_line.status().axes[it.key()];
@@ -79,8 +88,22 @@ void ElabCtlMotionOps::accepted(ElabCtlMotion::Kind kind, const AxisVector& valu
 
 void ElabCtlMotionOps::onStatusRead()
 {
+    for (Axis a : m_velocitySign.keys()) {
+        if (!ElabCtlStatusMapper::axisMoving(m_line.axeWord(), a))
+            m_velocitySign.remove(a);
+    }
     const AxisVector values = m_motion.values();
     const ElabCtlMotion::Outcome out = m_motion.update(m_line.machineWord(), m_line.axeWord());
+    if (!out.limitMessage.isEmpty() && m_stream.isActive()) {
+        // A limit switch ends a <DC2> stream at once ("Wenn eine Fahrt einen Endschalter
+        // erreicht hat, dann wird diese auch immer sofort abgebrochen"): no more steps, the
+        // board's buffer flushed and the feed ended.
+        abortStream(ErrorKind::Refused, out.limitMessage);
+        const ElabCtlLine::Op internal = m_line.op(0);
+        m_line.sendCommand(internal, encode::flushBuffer(), [this, internal] {
+            m_line.sendCommand(internal, encode::endOfFeed(), [] {});
+        });
+    }
     MachineStatus& s = m_line.status();
     for (Axis a : out.lostAxes)
         s.axes[a].referenced = s.axes[a].positionKnown = false;
@@ -325,6 +348,7 @@ void ElabCtlMotionOps::velocityMove(RequestId id, const AxisVector& stepsPerS)
         return;
     const bool running = velocityRunning();
     AxisVector rates = running ? m_motion.values() : AxisVector();
+    QList<Axis> reversing;
     for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
         const qint64 before = rates.value(it.key());
         if (before != 0 && it.value() != 0 && (before > 0) != (it.value() > 0)) {
@@ -335,19 +359,54 @@ void ElabCtlMotionOps::velocityMove(RequestId id, const AxisVector& stepsPerS)
                                     .arg(axisName(it.key())));
             return;
         }
+        // Commanded 0 but maybe still braking: the new sign waits for its standstill.
+        const int lastSign = m_velocitySign.value(it.key(), 0);
+        if (before == 0 && it.value() != 0 && lastSign != 0 && (it.value() > 0) != (lastSign > 0))
+            reversing << it.key();
         rates.insert(it.key(), it.value());
     }
     if (!running && nonZero(rates).isEmpty()) {
         m_line.hooks().ok(id, {});
         return;
     }
-    // The first VelocityMove needs standstill; later ones only change the rates.
-    m_line.preflight(id, running ? Rule::VelocityUpdate : Rule::Move, [this, rates](Op op) {
-        m_line.sendCommand(op, encode::velocityMove(triple<qint16>(rates)), [this, op, rates] {
-            accepted(ElabCtlMotion::Kind::Velocity, rates);
-            m_line.hooks().ok(op.id, {});
+    sendVelocity(id, rates, running, reversing, m_clock.elapsed() + kReversalWaitMs,
+                 m_line.epoch());
+}
+
+void ElabCtlMotionOps::sendVelocity(RequestId id, const AxisVector& rates, bool running,
+                                    const QList<Axis>& reversing, qint64 deadlineMs, quint64 epoch)
+{
+    if (epoch != m_line.epoch()) {
+        m_line.hooks().fail(id, ErrorKind::Cancelled, tr("cancelled by a stop, panic or reset"));
+        return;
+    }
+    // The first VelocityMove needs standstill; later ones only change the rates, except for an
+    // axis that reverses: "dann muss gewartet werden, bis diese Achse zum Stillstand gekommen
+    // ist (pollen des Achsen Status)".
+    m_line.preflight(
+        id, running ? Rule::VelocityUpdate : Rule::Move,
+        [this, rates, running, reversing, deadlineMs](Op op) {
+            for (Axis a : reversing) {
+                if (!ElabCtlStatusMapper::axisMoving(m_line.axeWord(), a))
+                    continue;
+                if (m_clock.elapsed() > deadlineMs) {
+                    m_line.hooks().fail(op.id, ErrorKind::Timeout,
+                                        tr("axis %1 did not come to a standstill; the reversed "
+                                           "velocity was not sent")
+                                            .arg(axisName(a)));
+                    return;
+                }
+                QTimer::singleShot(kReversalPollMs, &m_line.queue(), [=] {
+                    sendVelocity(op.id, rates, running, reversing, deadlineMs, op.epoch);
+                });
+                return;
+            }
+            const QByteArray frame = encode::velocityMove(triple<qint16>(rates));
+            m_line.sendCommand(op, frame, [this, op, rates] {
+                accepted(ElabCtlMotion::Kind::Velocity, rates);
+                m_line.hooks().ok(op.id, {});
+            });
         });
-    });
 }
 
 } // namespace stepdeck::elab

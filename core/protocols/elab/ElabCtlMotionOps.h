@@ -2,6 +2,7 @@
 #include "ElabCtlLine.h"
 #include "ElabCtlMotion.h"
 #include "ElabCtlStream.h"
+#include <QElapsedTimer>
 #include <QVector>
 #include <optional>
 
@@ -20,7 +21,7 @@ namespace stepdeck::elab {
 class ElabCtlMotionOps
 {
 public:
-    explicit ElabCtlMotionOps(ElabCtlLine& line) : m_line(line) {}
+    explicit ElabCtlMotionOps(ElabCtlLine& line) : m_line(line) { m_clock.start(); }
 
     void moveRelative(RequestId id, const AxisVector& steps);
     void feed(RequestId id, const AxisVector& steps);
@@ -37,6 +38,14 @@ public:
     void clear() { m_motion.clear(); }
 
     bool streaming() const { return m_stream.isActive(); }
+    // A motion the host started and has not yet seen end (any kind).
+    bool motionTracked() const { return m_motion.isActive(); }
+    // The direction (+1/-1, 0: none) of the tracked motion on this axis.
+    int direction(Axis axis) const
+    {
+        const qint64 v = m_motion.values().value(axis);
+        return m_motion.kind() == ElabCtlMotion::Kind::Stream ? 0 : v > 0 ? 1 : v < 0 ? -1 : 0;
+    }
     // Motion without an end of its own (velocity, reference searching its switch, a stream).
     bool openEnded() const
     {
@@ -61,10 +70,18 @@ private:
     std::optional<AxisVector> stepsToSend(RequestId id, const AxisVector& steps);
     bool checkAxes(RequestId id, const AxisVector& values, qint64 minimum, qint64 maximum,
                    const QString& what);
+    // Sends a VelocityMove once the axes in `reversing` report standstill (polled, bounded).
+    void sendVelocity(RequestId id, const AxisVector& rates, bool running,
+                      const QList<Axis>& reversing, qint64 deadlineMs, quint64 epoch);
 
     ElabCtlLine& m_line;
     ElabCtlMotion m_motion;
     ElabCtlStream m_stream;
+    // Per axis the sign of the last non-zero velocity the board accepted, until a status read
+    // shows that axis standing: "Eine Drehrichtungs Umkehr ist bei laufendem Motor hier nicht
+    // möglich ... dann muss gewartet werden, bis diese Achse zum Stillstand gekommen ist".
+    QMap<Axis, int> m_velocitySign;
+    QElapsedTimer m_clock;
 };
 
 } // namespace stepdeck::elab

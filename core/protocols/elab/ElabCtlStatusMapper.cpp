@@ -100,6 +100,16 @@ void ElabCtlStatusMapper::applyTemperature(MachineStatus& status, quint8 celsius
 
 QString ElabCtlStatusMapper::refusal(Rule rule, quint16 machineState, quint8 axeState)
 {
+    if (rule == Rule::Standstill) {
+        // "Sind Positionier- oder Arbeits Kommandos beim Controller in Arbeit, so muss der Host
+        // den Status des Controllers abfragen, bevor er weitere Kommandos absetzen kann"; during
+        // a feed "keine weiteren Kommandos". Setup is what fixes tmInvSetup, so it is no reason.
+        if (anyMoveBit(axeState) || anyJogBit(axeState) || (machineState & machine::Busy))
+            return tr("refused: axes are moving (%1); setup and outputs are written only at "
+                      "standstill")
+                .arg(describeAxeState(axeState & (kMoveBits | kJogBits)));
+        return {};
+    }
     // "Allgemeine Hinweise" and the notes of every move section: a correct setup first, the
     // emergency stop released, standstill (RequestAxeState until idle) and, except for jog,
     // no active limit switch.
@@ -129,6 +139,8 @@ QString ElabCtlStatusMapper::refusal(Rule rule, quint16 machineState, quint8 axe
         if ((machineState & kLimitBits) || (axeState & axe::LimSw))
             return tr("refused: a limit switch is active (%1)")
                 .arg(describeMachineState(machineState & kLimitBits));
+        return {};
+    case Rule::Standstill:
         return {};
     }
     return {};

@@ -30,6 +30,7 @@ public:
         Move, // FastMove, feed, reference, first velocity move, DC2 stream
         FirstJog,
         VelocityUpdate, // a running velocity move may be changed without waiting for idle
+        Standstill,     // setup, polarity, power, spindle, coolant: only while nothing moves
     };
     // Non-empty: why the manual forbids the command now (the rule is named).
     static QString refusal(Rule rule, quint16 machineState, quint8 axeState);

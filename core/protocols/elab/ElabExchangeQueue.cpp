@@ -206,17 +206,25 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
             qCInfo(lcElab) << "skipped stray reply" << toMnemonics(reply.raw);
             return;
         }
+        if (reply.kind == Reply::Kind::Invalid) {
+            // Noise, or the reply itself destroyed: keep waiting; a destroyed reply times out.
+            qCInfo(lcElab) << "skipped noise" << toMnemonics(reply.raw) << reply.error;
+            Q_EMIT noise(reply.raw);
+            return;
+        }
         ElabExchange ex = std::move(target->ex);
         m_inFlight.erase(target);
         const QString why =
-            reply.kind == Reply::Kind::Invalid
-                ? tr("garbage on the line (%1: %2)").arg(reply.error, toMnemonics(reply.raw))
-                : tr("unexpected reply %1 to %2 (expected %3)")
-                      .arg(toMnemonics(reply.raw), frameName(ex.frame), expectName(ex.expect));
-        const bool resync = ex.owner != kResyncOwner;
-        failExchange(ex, ErrorKind::Protocol, why);
-        if (resync)
-            resynchronise(why);
+            tr("unexpected reply %1 to %2 (expected %3)")
+                .arg(toMnemonics(reply.raw), frameName(ex.frame), expectName(ex.expect));
+        if (ex.retries > 0 && ex.owner != kResyncOwner) {
+            retryAfterResync(std::move(ex), why);
+        } else {
+            const bool resync = ex.owner != kResyncOwner;
+            failExchange(ex, ErrorKind::Protocol, why);
+            if (resync)
+                resynchronise(why);
+        }
         armTimer();
         pump();
         return;
@@ -252,6 +260,10 @@ void ElabExchangeQueue::onTimeout()
         }
         const QString why =
             tr("no reply to %1 within %2 ms").arg(frameName(ex.frame)).arg(m_timeoutMs);
+        if (ex.retries > 0 && !ex.poll && ex.owner != kResyncOwner) {
+            retryAfterResync(std::move(ex), why);
+            continue;
+        }
         if (ex.owner != kResyncOwner && ex.expect != Expect::None && reason.isEmpty())
             reason = why;
         failExchange(ex, ErrorKind::Timeout, why);
@@ -320,6 +332,18 @@ void ElabExchangeQueue::resynchronise(const QString& reason)
     m_queue.push_front(std::move(enq));
     m_queue.push_front(std::move(burst));
     pump();
+}
+
+void ElabExchangeQueue::retryAfterResync(ElabExchange ex, const QString& why)
+{
+    --ex.retries;
+    qCInfo(lcElab) << "retrying" << frameName(ex.frame) << "after:" << why;
+    resynchronise(why);
+    // Right behind the resynchronisation's own exchanges (if still queued), ahead of the rest.
+    auto it = m_queue.begin();
+    while (it != m_queue.end() && it->owner == kResyncOwner)
+        ++it;
+    m_queue.insert(it, std::move(ex));
 }
 
 void ElabExchangeQueue::dropQueued(ErrorKind kind, const QString& message, bool all)

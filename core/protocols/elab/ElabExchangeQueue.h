@@ -32,6 +32,9 @@ struct ElabExchange
     bool poll = false;          // status-poller traffic (the console may hide it)
     bool droppable = true;      // a stop drops it while it is still queued
     bool tolerateStray = false; // replies of another kind are skipped, not errors
+    // Idempotent requests (status reads): re-sent after a resynchronisation when the reply was
+    // of another kind or, outside polls, did not come in time. Polls count misses instead.
+    int retries = 0;
     // Expect::None: called with an empty Reply once the bytes have left the transport.
     std::function<void(const Reply&)> onReply;
     std::function<void(ErrorKind, const QString&)> onError;
@@ -41,6 +44,11 @@ struct ElabExchange
 // a timeout per exchange, at most one frame inside the transport (frames without a reply are
 // complete when the transport reports them written), resynchronisation after a timeout or
 // garbage, and overtaking for stop and panic.
+//
+// Line noise: bytes the decoder cannot read as a reply are skipped while an exchange waits
+// (noise in front of a reply must not cost the reply); a reply destroyed by noise then times
+// out like any lost reply. Idempotent requests are retried after resynchronisation, so
+// occasional noise is survived and only persistent garbage fails (polls miss, link lost).
 //
 // Overtaking: stop and panic are written at once, even with an exchange in flight. The board
 // answers in the order it receives, so the overtaking exchange simply joins the in-flight list
@@ -86,7 +94,8 @@ Q_SIGNALS:
     void trafficIn(const QByteArray& bytes, bool poll);
     void resyncStarted(const QString& reason);
     void resyncFinished(bool ok, quint16 machineState);
-    void idle(); // nothing queued or in flight any more
+    void noise(const QByteArray& bytes); // skipped bytes that were no reply
+    void idle();                         // nothing queued or in flight any more
 
 private:
     struct InFlight
@@ -104,6 +113,8 @@ private:
     void completeWritten();
     void armTimer();
     void failExchange(ElabExchange& ex, ErrorKind kind, const QString& message);
+    // Resynchronises, then sends ex again right behind the resynchronisation.
+    void retryAfterResync(ElabExchange ex, const QString& why);
 
     QPointer<Transport> m_transport;
     ReplyDecoder m_decoder;

@@ -282,10 +282,14 @@ double ElabSimulator::streamRate() const
 void ElabSimulator::stopAll(bool ramped)
 {
     for (ElabSimAxis& a : m_axes) {
-        if (ramped)
-            a.rampStop();
-        else
+        if (!ramped)
             a.hardStop();
+        else if (a.mode() != Mode::Jog)
+            a.rampStop();
+        // Reading of the manual: the jog mode lists only SetJogSpeed and ForcePanicStop
+        // ("Parameter und Kommandos" of "Der Jog-Modus"), and zero rates are the documented
+        // way to stop a jog. So ForceStopMove is answered but leaves a jogging axis running;
+        // a host that relies on it to end a jog is caught by the tests.
     }
     if (ramped) {
         if (m_stream.running())

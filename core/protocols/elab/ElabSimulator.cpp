@@ -48,8 +48,11 @@ void ElabSimulator::powerOnReset()
 void ElabSimulator::receive(const QByteArray& bytes)
 {
     const QList<Command> commands = m_decoder.feed(bytes);
-    for (const Command& cmd : commands)
+    for (const Command& cmd : commands) {
+        if (cmd.code != 0)
+            noteReceived(cmd.raw); // line noise outside any command is not a frame
         handle(cmd);
+    }
 }
 
 void ElabSimulator::handle(const Command& cmd)

@@ -58,6 +58,7 @@ public:
     qint64 position(Axis axis);
     bool isMoving(Axis axis);
     bool isBusy();
+    bool standingStill() override { return !isBusy(); }
     qint64 remainingSteps(Axis axis);
     bool limitSwitchActive(Axis axis) const;
     bool referenceSwitchActive(Axis axis) const;

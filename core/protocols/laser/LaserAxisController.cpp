@@ -24,7 +24,7 @@ LaserAxisController::LaserAxisController(Transport* transport, const ControllerO
     });
     if (transport) {
         connect(transport, &Transport::opened, this, &LaserAxisController::onTransportOpened);
-        connect(transport, &Transport::failed, this, &LaserAxisController::onTransportFailed);
+        connect(transport, &Transport::failed, this, &LaserAxisController::handleTransportFailure);
         connect(transport, &Transport::dataReceived, this, &LaserAxisController::onData);
         connect(transport, &Transport::bytesWritten, this, &LaserAxisController::onBytesWritten);
     }
@@ -66,52 +66,56 @@ void LaserAxisController::onTransportOpened()
     finishOk(std::exchange(m_openId, 0));
 }
 
-void LaserAxisController::onTransportFailed(const QString& reason)
+// ---------------------------------------------------------------- safety contract
+
+void LaserAxisController::sendSafetyStop(std::function<void(bool)> done)
 {
-    if (m_openId != 0)
-        finishError(std::exchange(m_openId, 0), ErrorKind::LinkDown, reason);
-    stopTrackingMotion(ErrorKind::LinkDown, tr("link lost: %1").arg(reason));
-    if (linkState() == LinkState::Connected || linkState() == LinkState::Connecting) {
-        setLinkState(LinkState::Lost, reason);
-        Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
+    // "Move to home" and "move to position" are the only commands: there is no stop to send.
+    // Acknowledged only when nothing was in motion to begin with.
+    done(!motionMayBeRunning());
+}
+
+bool LaserAxisController::motionMayBeRunning() const
+{
+    for (const Track& t : std::as_const(m_tracks)) {
+        if (t.awaiting || t.unconfirmed)
+            return true;
     }
+    return false;
 }
 
-void LaserAxisController::closeLink()
+void LaserAxisController::abortHostSide(ErrorKind kind, const QString& message)
 {
-    stopTrackingMotion(ErrorKind::Cancelled, tr("link closed"));
-    if (m_openId != 0)
-        finishError(std::exchange(m_openId, 0), ErrorKind::Cancelled, tr("link closed"));
-    if (transport() && transport()->isOpen())
-        transport()->close();
-    setLinkState(LinkState::Disconnected, tr("closed"));
-}
-
-void LaserAxisController::stopTrackingMotion(ErrorKind kind, const QString& reason)
-{
+    // The host stops tracking: every request in flight ends; an axis with a target out stays
+    // unconfirmed until a status frame from it proves it stopped.
     m_deadline.stop();
     m_syncTimeout.stop();
+    if (m_openId != 0)
+        finishError(std::exchange(m_openId, 0), kind, message);
     for (RequestId id : std::exchange(m_syncs, {}))
-        finishError(id, kind, reason);
-    QStringList moving;
+        finishError(id, kind, message);
+    QStringList heading;
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting)
             continue;
         it->awaiting = false;
-        it->unconfirmed = true; // cleared only by a status frame from that axis
+        it->unconfirmed = true;
         mutableStatus().axes[it.key()].moving = false;
-        moving << axisName(it.key());
+        heading << axisName(it.key());
     }
     m_decoder.reset();
     updateMachineFlags();
     publishStatus();
     for (const Pending& p : std::exchange(m_pending, {}))
-        finishError(p.id, kind, reason);
-    if (!moving.isEmpty()) {
+        finishError(p.id, kind, message);
+    // MachineStatus::motionUnconfirmed was set when the targets went out, so the base's "may
+    // still be moving" would not be said again on a close: say it here, once, with the axes.
+    // (A link loss is reported by the base with that text already.)
+    if (!heading.isEmpty() && kind != ErrorKind::LinkDown) {
         Q_EMIT errorOccurred(tr("no longer tracking axis %1 on its way to a target: the protocol "
                                 "has no stop command; it goes on unless the machine's emergency "
                                 "stop is used")
-                                 .arg(moving.join(QStringLiteral(", "))));
+                                 .arg(heading.join(QStringLiteral(", "))));
     }
 }
 

@@ -39,7 +39,6 @@ public:
     ParameterSchema schema() const override { return {}; }
 
     void openLink(RequestId id) override;
-    void closeLink() override;
     void readParameters(RequestId id, const QStringList& names) override;
     void writeParameters(RequestId id, const ParameterSet& values, bool verify) override;
     void moveRelative(RequestId id, const AxisVector& steps) override;
@@ -52,6 +51,12 @@ public:
     void setPollInterval(int) override {} // nothing to poll
 
 protected:
+    // The safety contract of the Controller base. The protocol has no stop command: nothing
+    // can be sent; closing or losing the link while a target is out leaves the motion
+    // unconfirmed (the axis goes on to its target) until a status frame proves it stopped.
+    void sendSafetyStop(std::function<void(bool acknowledged)> done) override;
+    void abortHostSide(ErrorKind kind, const QString& message) override;
+    bool motionMayBeRunning() const override;
     void applyJogVelocity(const AxisVelocities&) override {} // never non-zero: no jog stream
     QString jogRefusal() const override;
 
@@ -75,15 +80,9 @@ private:
 
     // --- link (LaserAxisController.cpp) ---
     void onTransportOpened();
-    void onTransportFailed(const QString& reason);
     void onBytesWritten();
     void onData(const QByteArray& bytes);
     bool requireLink(RequestId id);
-    // What the host does when it stops tracking motion (link closed or lost): the protocol
-    // has no stop command, so nothing can be sent; every request in flight ends, every axis
-    // with a target out stays "motion unconfirmed" until a status frame proves it stopped.
-    // One place, so the Controller base's close/link-loss policy can call it later.
-    void stopTrackingMotion(ErrorKind kind, const QString& reason);
 
     // --- motion (LaserAxisMotion.cpp) ---
     QString checkTargets(const AxisVector& targets) const;

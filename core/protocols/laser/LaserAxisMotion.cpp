@@ -112,8 +112,8 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
     }
     recordTraffic(TrafficRecord::Direction::Out, frames, false);
     if (transport()->write(frames) < 0) {
-        stopTrackingMotion(ErrorKind::LinkDown, tr("not connected"));
-        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+        finishError(id, ErrorKind::LinkDown, tr("not connected"));
+        return abortHostSide(ErrorKind::LinkDown, tr("not connected"));
     }
     m_pending << pending;
     armDeadline();
@@ -249,7 +249,12 @@ void LaserAxisController::updateMachineFlags()
         unconfirmed = unconfirmed || t.unconfirmed;
     }
     s.busy = busy;
-    s.motionUnconfirmed = unconfirmed;
+    // A target out and no status frame back yet: the host cannot know that the axis stands.
+    // Cleared only when every axis has reported since its last target.
+    if (unconfirmed)
+        s.motionUnconfirmed = true;
+    else
+        noteStandstillConfirmed();
 }
 
 } // namespace stepdeck::laser

@@ -52,6 +52,16 @@ qint64 LaserAxisSimulator::position(Axis axis)
     return axis_(axis).position();
 }
 
+bool LaserAxisSimulator::standingStill()
+{
+    advanceToNow();
+    for (const LaserSimAxis& a : m_axes) {
+        if (a.isMoving())
+            return false;
+    }
+    return true;
+}
+
 bool LaserAxisSimulator::isMoving(Axis axis)
 {
     advanceToNow();
@@ -68,6 +78,7 @@ void LaserAxisSimulator::receive(const QByteArray& bytes)
             qCDebug(lcSimulator) << "laser-axis sim: ignored" << d.raw << describeError(d.error);
             continue;
         }
+        noteReceived(d.raw);
         m_commands << *d.frame;
         execute(*d.frame);
     }

@@ -24,6 +24,7 @@ public:
 
     QString modelId() const override { return QStringLiteral("laser-axis"); }
     void receive(const QByteArray& bytes) override;
+    bool standingStill() override; // no axis moves (after advancing to now)
 
     // ---- the machine ----
     LaserSimAxisConfig& config(Axis axis) { return axis_(axis).config(); }

@@ -40,12 +40,13 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
     m_poller.setMissLimit(options.missedPollsForLinkLoss);
     connect(&m_poller, &StatusPoller::pollDue, this, &NanotecController::onPollDue);
     connect(&m_poller, &StatusPoller::linkLost, this, [this](int misses) {
-        onLinkLost(tr("no drive answered %1 status sweeps in a row").arg(misses));
+        loseLink(tr("no drive answered %1 status sweeps in a row").arg(misses));
     });
     connect(&m_poller, &StatusPoller::rateChanged, this, &Controller::pollRateChanged);
     if (transport) {
         connect(transport, &Transport::opened, this, &NanotecController::onTransportOpened);
-        connect(transport, &Transport::failed, this, &NanotecController::onTransportFailed);
+        connect(transport, &Transport::failed, this,
+                [this](const QString& reason) { handleTransportFailure(reason); });
     }
     updateStatus();
 }
@@ -111,24 +112,6 @@ void NanotecController::openLink(RequestId id)
         transport()->open(lineSettings());
 }
 
-void NanotecController::closeLink()
-{
-    m_poller.stop();
-    m_bus->cancelAll();
-    for (Drive& d : m_drives) {
-        d.jog = Jog::Idle;
-        d.jogBusy = false;
-        d.motionPending = false;
-    }
-    if (transport() && transport()->isOpen())
-        transport()->close();
-    if (m_pendingOpen) {
-        finishError(m_pendingOpen, ErrorKind::Cancelled, tr("connection closed"));
-        m_pendingOpen = 0;
-    }
-    setLinkState(LinkState::Disconnected);
-}
-
 void NanotecController::onTransportOpened()
 {
     m_bus->resetDecoder();
@@ -136,45 +119,6 @@ void NanotecController::onTransportOpened()
         initialiseDrives();
     else if (m_pendingScan)
         runPendingScan();
-}
-
-void NanotecController::onTransportFailed(const QString& reason)
-{
-    m_poller.stop();
-    m_bus->cancelAll();
-    if (m_pendingOpen) {
-        finishError(m_pendingOpen, ErrorKind::LinkDown, reason);
-        m_pendingOpen = 0;
-    }
-    if (m_pendingScan) {
-        finishError(m_pendingScan->id, ErrorKind::LinkDown, reason);
-        m_pendingScan.reset();
-    }
-    if (linkState() == LinkState::Connected || linkState() == LinkState::Connecting) {
-        setLinkState(LinkState::Lost, reason);
-        Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
-    }
-}
-
-void NanotecController::onLinkLost(const QString& reason)
-{
-    m_poller.stop();
-    m_bus->cancelAll();
-    // The port itself works, only the drives are silent: a '#*S' costs nothing and stops any
-    // drive that still listens. The port stays open; openLink() starts over on it.
-    NanotecBus::Request stopAll;
-    stopAll.address = kBroadcast;
-    stopAll.body = "S";
-    stopAll.priority = NanotecBus::Priority::Urgent;
-    m_bus->submit(stopAll);
-    for (Drive& d : m_drives) {
-        d.jog = Jog::Idle;
-        d.jogBusy = false;
-        d.velocityMove = false;
-        d.motionPending = false;
-    }
-    setLinkState(LinkState::Lost, reason);
-    Q_EMIT errorOccurred(tr("link lost: %1").arg(reason));
 }
 
 void NanotecController::initialiseDrives()
@@ -192,8 +136,9 @@ void NanotecController::initialiseDrives()
             },
             NanotecBus::Priority::Command, 1);
         QList<Step> rest{
-            // Auto status (5.31): a 'j' at the end of every move saves polling for it.
-            tolerant(exchange(axis, "J1")),
+            // Auto status off (5.31): on a polled half-duplex bus a 'j' the drive sends by
+            // itself collides with the poll of another drive.
+            tolerant(exchange(axis, "J0")),
             tolerant(exchange(
                 axis, "Ze", sink([this, axis](qint64 v) { m_drives[axis].limitSwitchType = v; }))),
             tolerant(exchange(axis, "Zu",

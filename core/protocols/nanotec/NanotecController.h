@@ -41,7 +41,6 @@ public:
     ParameterSchema schema() const override;
 
     void openLink(RequestId id) override;
-    void closeLink() override;
     void readParameters(RequestId id, const QStringList& names) override;
     void writeParameters(RequestId id, const ParameterSet& values, bool verify) override;
     void moveRelative(RequestId id, const AxisVector& steps) override;
@@ -66,6 +65,12 @@ public:
 protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override;
     QString jogRefusal() const override;
+    // Safety contract (NanotecStop.cpp): 'S' to every drive that may move, answering or not
+    // (6.2: in speed mode the only way to end it), then '#*S' to all as the last resort.
+    void sendSafetyStop(std::function<void(bool)> done) override;
+    void abortHostSide(ErrorKind kind, const QString& message) override;
+    bool motionMayBeRunning() const override;
+    int safetyStopTimeoutMs() const override;
 
 private:
     static constexpr int kMaxRampWaitMs = 3000; // a longer ramp-down is cut short by 'S'
@@ -112,7 +117,12 @@ private:
     Step tolerant(Step step); // failures are logged, the sequence goes on
     static Check sink(std::function<void(qint64)> store);
     Step exchange(Axis axis, const QByteArray& body, Check check = {},
-                  NanotecBus::Priority priority = NanotecBus::Priority::Command, int retries = 0);
+                  NanotecBus::Priority priority = NanotecBus::Priority::Command, int retries = 0,
+                  int timeoutMs = 0);
+    // Reads 'Z<cmd>' and fails VerifyFailed unless it equals expected (the drive echoes
+    // invalid values and silently ignores them, so only a read-back proves a setting).
+    Step expectValue(Axis axis, const QByteArray& cmd, qint64 expected);
+    bool mayMove(const Drive& d) const; // as far as the host can tell
     Step wait(int ms);
     Failure outcomeFailure(Axis axis, const QByteArray& body, NanotecBus::Outcome outcome,
                            const Reply& reply);
@@ -122,8 +132,6 @@ private:
 
     // --- link and status (NanotecController.cpp) ---
     void onTransportOpened();
-    void onTransportFailed(const QString& reason);
-    void onLinkLost(const QString& reason);
     void initialiseDrives();
     void onPollDue();
     void pollDrive(QList<Axis> remaining, bool withInputs, std::shared_ptr<bool> answered);
@@ -138,8 +146,10 @@ private:
     // --- motion (NanotecMotion.cpp) ---
     QString motionRefusal(Axis axis, bool needsPosition) const;
     QString unknownAxes(const QList<Axis>& axes) const;
+    // verify: per axis the settings that must read back before 'A' ('!', 'p', 's', 'd', 'o').
     void startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
-                          bool referenceRun);
+                          bool referenceRun,
+                          const QMap<Axis, QMap<QByteArray, qint64>>& verify = {});
     void pumpJog(Axis axis, bool zeroConfirmed = false);
     QList<Step> rampDownSteps(Drive& d, NanotecBus::Priority priority);
     int rampTimeMs(const Drive& d, double fromHz) const;

@@ -58,6 +58,7 @@ void NanotecController::moveRelative(RequestId id, const AxisVector& steps)
     if (const QString bad = unknownAxes(steps.keys()); !bad.isEmpty())
         return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
+    QMap<Axis, QMap<QByteArray, qint64>> verify;
     for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
         if (it.value() == 0 && m_drives.contains(it.key()))
             continue;
@@ -71,10 +72,15 @@ void NanotecController::moveRelative(RequestId id, const AxisVector& steps)
             return finishError(id, ErrorKind::Refused, why);
         // 6.6 p=1: 's' is the positive distance, 'd' the direction (1 counts up).
         setup[it.key()] = {"!1", "p1", num("s", qAbs(it.value())), num("d", it.value() > 0)};
+        verify[it.key()] = {{"!", 1},
+                            {"p", 1},
+                            {"s", qAbs(it.value())},
+                            {"d", it.value() > 0},
+                            {"o", m_drives[it.key()].maxFrequency}};
     }
     if (setup.isEmpty())
         return finishOk(id);
-    startPositioning(id, setup, false);
+    startPositioning(id, setup, false, verify);
 }
 
 void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
@@ -84,6 +90,7 @@ void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
     if (const QString bad = unknownAxes(targets.keys()); !bad.isEmpty())
         return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
+    QMap<Axis, QMap<QByteArray, qint64>> verify;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
             return finishError(
@@ -94,10 +101,12 @@ void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
             return finishError(id, ErrorKind::Refused, why);
         // 6.6 p=2: 's' is the target relative to the reference position; 'd' is ignored.
         setup[it.key()] = {"!1", "p2", num("s", it.value())};
+        verify[it.key()] = {
+            {"!", 1}, {"p", 2}, {"s", it.value()}, {"o", m_drives[it.key()].maxFrequency}};
     }
     if (setup.isEmpty())
         return finishOk(id);
-    startPositioning(id, setup, false);
+    startPositioning(id, setup, false, verify);
 }
 
 void NanotecController::reference(RequestId id, const QMap<Axis, int>& directions)
@@ -113,6 +122,7 @@ void NanotecController::referenceWithType(RequestId id, const QMap<Axis, int>& d
     if (const QString bad = unknownAxes(directions.keys()); !bad.isEmpty())
         return finishError(id, ErrorKind::InvalidValue, bad);
     QMap<Axis, QList<QByteArray>> setup;
+    QMap<Axis, QMap<QByteArray, qint64>> verify;
     for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
         if (it.value() == 0 && m_drives.contains(it.key()))
             continue;
@@ -122,21 +132,32 @@ void NanotecController::referenceWithType(RequestId id, const QMap<Axis, int>& d
         // 6.6: p=4 runs at the upper speed into the external switch, p=3 at the lower speed
         // to the encoder index; free travel afterwards as 'l' says (5.6).
         setup[it.key()] = {"!1", internal ? "p3" : "p4", num("d", it.value() > 0)};
+        verify[it.key()] = {{"!", 1},
+                            {"p", internal ? 3 : 4},
+                            {"d", it.value() > 0},
+                            {"o", m_drives[it.key()].maxFrequency}};
     }
     if (setup.isEmpty())
         return finishError(id, ErrorKind::InvalidValue,
                            tr("no axis to reference: every direction is 0"));
-    startPositioning(id, setup, true);
+    startPositioning(id, setup, true, verify);
 }
 
 void NanotecController::startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
-                                         bool referenceRun)
+                                         bool referenceRun,
+                                         const QMap<Axis, QMap<QByteArray, qint64>>& verify)
 {
-    // Set every drive up first, then start them one right after the other.
+    // Set every drive up first and read back what 'A' runs with (a drive left in speed mode by
+    // a jog, or a value it ignored, would start the wrong run), then start them one right
+    // after the other.
     QList<Step> steps;
     for (auto it = setup.cbegin(); it != setup.cend(); ++it) {
         for (const QByteArray& body : it.value())
             steps << exchange(it.key(), body);
+    }
+    for (auto it = verify.cbegin(); it != verify.cend(); ++it) {
+        for (auto v = it.value().cbegin(); v != it.value().cend(); ++v)
+            steps << expectValue(it.key(), v.key(), v.value());
     }
     auto started = std::make_shared<QList<Axis>>();
     for (Axis axis : setup.keys()) {

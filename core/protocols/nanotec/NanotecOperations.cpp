@@ -51,9 +51,10 @@ NanotecController::Check NanotecController::sink(std::function<void(qint64)> sto
 }
 
 NanotecController::Step NanotecController::exchange(Axis axis, const QByteArray& body, Check check,
-                                                    NanotecBus::Priority priority, int retries)
+                                                    NanotecBus::Priority priority, int retries,
+                                                    int timeoutMs)
 {
-    return [this, axis, body, check, priority, retries](const Done& done) {
+    return [this, axis, body, check, priority, retries, timeoutMs](const Done& done) {
         if (!m_drives.contains(axis))
             return done(
                 {ErrorKind::InvalidValue, tr("this machine has no axis %1").arg(axisName(axis))});
@@ -62,6 +63,7 @@ NanotecController::Step NanotecController::exchange(Axis axis, const QByteArray&
         r.body = body;
         r.priority = priority;
         r.retries = retries;
+        r.timeoutMs = timeoutMs;
         r.done = [this, axis, body, check, done](NanotecBus::Outcome o, const Reply& reply) {
             if (o != NanotecBus::Outcome::Ok)
                 return done(outcomeFailure(axis, body, o, reply));
@@ -70,6 +72,22 @@ NanotecController::Step NanotecController::exchange(Axis axis, const QByteArray&
         };
         m_bus->submit(r);
     };
+}
+
+NanotecController::Step NanotecController::expectValue(Axis axis, const QByteArray& cmd,
+                                                       qint64 expected)
+{
+    auto check = [this, axis, cmd, expected](const Reply& r) {
+        if (r.value && *r.value == expected)
+            return Failure{};
+        return Failure{ErrorKind::VerifyFailed,
+                       tr("%1 reads %2=%3 instead of %4 (the drive ignored the setting); not "
+                          "started")
+                           .arg(driveName(axis), QString::fromLatin1(cmd),
+                                r.value ? QString::number(*r.value) : QStringLiteral("?"))
+                           .arg(expected)};
+    };
+    return exchange(axis, "Z" + cmd, check, NanotecBus::Priority::Command, 1);
 }
 
 NanotecController::Step NanotecController::wait(int ms)
@@ -343,10 +361,13 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
             return finishError(id, ErrorKind::Refused, why);
         if (record < 0 || record > kRecordCount)
             return finishError(id, ErrorKind::InvalidValue, tr("record must be 0..32"));
+        // '!1' first: a drive left in speed mode by a jog would run the record in speed mode
+        // (the mode is not part of a record, 6.3/5.5).
         QMap<Axis, QList<QByteArray>> setup;
-        setup[axis] =
-            record > 0 ? QList<QByteArray>{"y" + QByteArray::number(record)} : QList<QByteArray>{};
-        return startPositioning(id, setup, false);
+        setup[axis] = {"!1"};
+        if (record > 0)
+            setup[axis] << "y" + QByteArray::number(record);
+        return startPositioning(id, setup, false, {{axis, {{"!", 1}}}});
     }
     finishError(id, ErrorKind::Unsupported, tr("unknown Nanotec operation '%1'").arg(name));
 }

@@ -58,8 +58,12 @@ namespace {
         "Steps made on a direction change before the position counts, to take up gear play (5.33)"),
     QT_TRANSLATE_NOOP("Parameters", "Send status after moves"),
     QT_TRANSLATE_NOOP("Parameters",
-                      "The drive sends its status ('j') by itself at the end of every move; the "
-                      "adapter switches this on when it connects (5.31)"),
+                      "The drive sends its status ('j') by itself at the end of every move (5.31). "
+                      "StepDeck polls the bus and switches this off when it connects"),
+    QT_TRANSLATE_NOOP("Parameters",
+                      "On a half-duplex RS485 bus that is being polled, a status the drive sends "
+                      "by itself collides with the poll of another drive. StepDeck switches it "
+                      "off again on the next connect."),
     QT_TRANSLATE_NOOP("Parameters", "Ramp shape"),
     QT_TRANSLATE_NOOP("Parameters", "trapezoid"),
     QT_TRANSLATE_NOOP("Parameters", "sinus"),

@@ -263,6 +263,7 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
         }
     }
     auto cache = std::make_shared<QMap<QByteArray, qint64>>();
+    auto written = std::make_shared<QStringList>(); // for the message when a later one fails
     QList<Step> steps, last;
     QMap<Axis, QPair<qint64, qint64>> bitFields; // 'l': mask, bits (5.6)
     for (const ParamDef& def : parameterTable()) {
@@ -280,7 +281,15 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
                 last << motorAddressSteps(a.key(), int(wire), verify);
                 continue;
             }
-            steps << writeStep(a.key(), def, wire);
+            const QString label = tr("%1 (%2)").arg(def.spec.name, driveName(a.key()));
+            steps <<
+                [this, written, label, step = writeStep(a.key(), def, wire)](const Done& done) {
+                    step([written, label, done](const Failure& f) {
+                        if (f.ok())
+                            *written << label;
+                        done(f);
+                    });
+                };
             if (verify)
                 steps << verifyStep(a.key(), def, wire, cache);
         }
@@ -308,9 +317,13 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
             runSteps(s, done);
         };
     }
-    runSteps(steps + last, [this, id](const Failure& f) {
+    runSteps(steps + last, [this, id, written](const Failure& f) {
         updateStatus();
         publishStatus();
+        if (!f.ok() && !written->isEmpty())
+            return finishWith(id,
+                              {f.kind, tr("%1; already written: %2")
+                                           .arg(f.message, written->join(QStringLiteral(", ")))});
         finishWith(id, f);
     });
 }

@@ -52,9 +52,14 @@ void motor(Builder& b)
     b.add("backlash", "Backlash", "z", 0, 9999, "steps", 0,
           "Steps made on a direction change before the position counts, to take up gear play "
           "(5.33)");
-    b.boolean("auto-status", "Send status after moves", "J", true,
-              "The drive sends its status ('j') by itself at the end of every move; the adapter "
-              "switches this on when it connects (5.31)");
+    ParamDef& autoStatus = b.boolean(
+        "auto-status", "Send status after moves", "J", false,
+        "The drive sends its status ('j') by itself at the end of every move (5.31). StepDeck "
+        "polls the bus and switches this off when it connects");
+    autoStatus.spec.warning = QStringLiteral(
+        "On a half-duplex RS485 bus that is being polled, a status the drive sends by itself "
+        "collides with the poll of another drive. StepDeck switches it off again on the next "
+        "connect.");
     b.choice("ramp-mode", "Ramp shape", "CL_ramp_mode", {{"trapezoid", 0}, {"sinus", 1}},
              "trapezoid", "Ramp of the positioning mode (5.34)", Read::Long);
     b.group = QStringLiteral("Brake");

@@ -69,7 +69,7 @@ void NanotecSimulator::receive(const QByteArray& bytes)
             qCDebug(lcSimulator) << "nanotec: dropped frame" << c.raw << c.error;
             continue; // 1.1: a drive only reacts to complete, addressed frames
         }
-        m_frames << c.raw;
+        noteReceived(c.raw);
         execute(c);
     }
     ensureTicking();
@@ -143,6 +143,16 @@ void NanotecSimulator::ensureTicking()
     } else if (!active) {
         m_timer.stop();
     }
+}
+
+bool NanotecSimulator::standingStill()
+{
+    tick();
+    for (const auto& d : m_drives) {
+        if (d->speed() != 0.0)
+            return false;
+    }
+    return true;
 }
 
 void NanotecSimulator::tick()

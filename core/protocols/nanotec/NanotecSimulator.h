@@ -27,8 +27,7 @@ public:
     NanotecDrive* drive(int address) const;
     NanotecDrive* addDrive(int address); // nullptr if taken or invalid
     QList<NanotecDrive*> drives() const;
-    QList<QByteArray> receivedFrames() const { return m_frames; } // host frames, in order
-    void clearReceivedFrames() { m_frames.clear(); }
+    bool standingStill() override; // no drive turns its motor (after advancing to now)
 
     // ---- fault injection per drive (bus-wide faults: Simulator::faults()) ----
     void setDriveSilent(int address, bool silent);
@@ -44,7 +43,6 @@ private:
 
     std::vector<std::unique_ptr<NanotecDrive>> m_drives;
     CommandDecoder m_decoder;
-    QList<QByteArray> m_frames;
     QTimer m_timer{this};
     QElapsedTimer m_clock;
     qint64 m_lastTickUs = 0;

@@ -176,7 +176,8 @@ void NanotecController::updateStatus()
         const bool ready = d.status && decodeStatus(*d.status).ready;
         a.jogging = d.jog != Jog::Idle && !d.velocityMove;
         a.moving = !a.jogging && ((d.status && !ready) || d.jog != Jog::Idle || d.motionPending);
-        busy = busy || a.moving || a.jogging;
+        a.motionUnknown = !d.responding; // a silent drive is never shown as idle
+        busy = busy || a.moving || a.jogging || a.motionUnknown;
         a.position = d.position;
         a.positionEstimated = false;
         if (d.inputs) {
@@ -196,6 +197,8 @@ void NanotecController::updateStatus()
     st.driveOn = connected && responding;
     st.commFault = linkState() == LinkState::Lost || (connected && silent);
     st.panic = m_panic;
+    if (connected && !busy && !jogActive())
+        noteStandstillConfirmed(); // every drive answered and is ready
 }
 
 } // namespace stepdeck::nanotec

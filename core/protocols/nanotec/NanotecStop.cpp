@@ -14,9 +14,106 @@ QByteArray num(const char* cmd, qint64 v)
 }
 } // namespace
 
+bool NanotecController::mayMove(const Drive& d) const
+{
+    // A silent drive is unknown: whatever it did last may still go on.
+    return !d.responding || d.jog != Jog::Idle || d.velocityMove || d.motionPending ||
+           d.referencing || (d.status && !decodeStatus(*d.status).ready);
+}
+
+bool NanotecController::motionMayBeRunning() const
+{
+    if (jogActive() || status().motionUnconfirmed)
+        return true;
+    for (const Drive& d : m_drives) {
+        if (mayMove(d))
+            return true;
+    }
+    return false;
+}
+
+int NanotecController::safetyStopTimeoutMs() const
+{
+    // One short exchange per drive (a silent one costs its timeout) plus the broadcast guard.
+    return int(m_drives.size()) * (pollTimeoutMs() + 20) + 150;
+}
+
+void NanotecController::sendSafetyStop(std::function<void(bool)> done)
+{
+    haltJogImmediately();
+    m_poller.stop();
+    m_bus->cancelAll();
+    QList<Axis> targets;
+    for (const Drive& d : m_drives) {
+        if (mayMove(d))
+            targets << d.axis;
+    }
+    if (targets.isEmpty() && !jogActive())
+        return done(true);
+    // 6.2: 'S' is the only way to end speed mode. Written to every drive that may move, silent
+    // or not, without a ramp (there is no time for one when the host lets go); then '#*S' to
+    // every drive on the bus as the last resort for one whose address or echo was lost.
+    auto echoed = std::make_shared<int>(0);
+    QList<Step> steps;
+    for (Axis a : targets) {
+        steps << tolerant([this, a, echoed](const Done& stepDone) {
+            exchange(a, "S", {}, NanotecBus::Priority::Urgent, 0,
+                     pollTimeoutMs())([echoed, stepDone](const Failure& f) {
+                if (f.ok())
+                    ++*echoed;
+                stepDone(f);
+            });
+        });
+    }
+    steps << [this](const Done& stepDone) {
+        NanotecBus::Request all;
+        all.address = kBroadcast;
+        all.body = "S";
+        all.priority = NanotecBus::Priority::Urgent;
+        all.done = [stepDone](NanotecBus::Outcome, const Reply&) { stepDone({}); };
+        m_bus->submit(all);
+    };
+    for (Drive& d : m_drives) {
+        d.jogDesired = 0;
+        d.jog = Jog::Idle;
+        d.jogBusy = false;
+        d.velocityMove = false;
+        d.motionPending = false;
+        d.referencing = false;
+        if (targets.contains(d.axis)) {
+            AxisStatus& st = mutableStatus().axes[d.axis];
+            st.referenced = st.positionKnown = false; // 6.2: no ramp, steps may be lost
+        }
+    }
+    const int expected = int(targets.size());
+    runSteps(steps, [echoed, expected, done](const Failure&) { done(*echoed == expected); });
+}
+
+void NanotecController::abortHostSide(ErrorKind kind, const QString& message)
+{
+    m_poller.stop();
+    m_bus->cancelAll();
+    haltJogImmediately();
+    for (Drive& d : m_drives) {
+        d.jogDesired = 0;
+        d.jog = Jog::Idle;
+        d.jogBusy = false;
+        d.velocityMove = false;
+        d.motionPending = false;
+        d.referencing = false;
+    }
+    m_initialising = false;
+    if (m_pendingOpen)
+        finishError(std::exchange(m_pendingOpen, 0), kind, message);
+    if (m_pendingScan) {
+        finishError(m_pendingScan->id, kind, message);
+        m_pendingScan.reset();
+    }
+}
+
 void NanotecController::stop(RequestId id)
 {
-    if (linkState() != LinkState::Connected)
+    if (!canWriteStop())
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
     haltJogImmediately();
     // Snapshot first: cancelling the bus ends jog sequences, whose callbacks reset the state.
@@ -43,10 +140,9 @@ void NanotecController::stop(RequestId id)
     }
     if (wait > 0)
         steps << this->wait(qMin(wait, kMaxRampWaitMs));
-    for (const Drive& d : m_drives) {
-        if (d.responding)
-            steps << tolerant(exchange(d.axis, "S", {}, urgent, 2));
-    }
+    // Every drive, a silent one included: it may have stopped answering but still listen.
+    for (const Drive& d : m_drives)
+        steps << tolerant(exchange(d.axis, "S", {}, urgent, d.responding ? 2 : 0));
     for (Axis a : positioning) {
         // 6.2: no ramp; steps may be lost at speed, so the position is suspect.
         AxisStatus& st = mutableStatus().axes[a];
@@ -143,10 +239,13 @@ void NanotecController::confirmStopped(RequestId id, QList<Axis> axes, const QSt
         publishStatus();
         if (!f.ok())
             return finishWith(id, f);
-        if (!unconfirmed->isEmpty())
-            return finishError(id, ErrorKind::Timeout,
-                               tr("%1 sent; not confirmed by %2")
-                                   .arg(context, unconfirmed->join(QStringLiteral(", "))));
+        if (!unconfirmed->isEmpty()) {
+            markMotionUnconfirmed();
+            return finishError(
+                id, ErrorKind::Timeout,
+                tr("%1 sent; not confirmed by %2: %3")
+                    .arg(context, unconfirmed->join(QStringLiteral(", ")), mayStillBeMovingText()));
+        }
         finishOk(id);
     });
 }

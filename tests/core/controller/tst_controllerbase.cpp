@@ -1,5 +1,6 @@
-// The Controller base class's jog machinery (lease, ramp, refusal, link loss), through a
-// tiny fake adapter that records what would be sent.
+// The Controller base class's jog machinery (lease, ramp, refusal, link loss) and its safety
+// contract (stop before close, flush, link loss keeps the port open, unconfirmed motion),
+// through a tiny fake adapter and a transport that record what happens in which order.
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "transport/LoopbackTransport.h" // complete Transport type first
@@ -9,6 +10,39 @@
 using namespace stepdeck;
 
 namespace {
+
+// A transport that logs writes, flushes and closes in order ("write STOP", "flush", "close").
+class RecordingTransport : public Transport
+{
+public:
+    QStringList log;
+    bool open_ = false;
+    void open(const LineSettings&) override { open_ = true; }
+    void close() override
+    {
+        log << QStringLiteral("close");
+        open_ = false;
+    }
+    bool isOpen() const override { return open_; }
+    qint64 write(const QByteArray& bytes) override
+    {
+        log << QStringLiteral("write ") + QString::fromLatin1(bytes);
+        return bytes.size();
+    }
+    void discardOutput() override { log << QStringLiteral("discard"); }
+    qint64 bytesToWrite() const override { return 0; }
+    bool flushOutput(int) override
+    {
+        log << QStringLiteral("flush");
+        return true;
+    }
+    QString description() const override { return QStringLiteral("recording"); }
+    void fail(const QString& why)
+    {
+        open_ = false;
+        Q_EMIT failed(why);
+    }
+};
 
 struct AppliedJog
 {
@@ -45,7 +79,6 @@ public:
         setLinkState(LinkState::Connected);
         finishOk(id);
     }
-    void closeLink() override { setLinkState(LinkState::Disconnected); }
     void readParameters(RequestId id, const QStringList&) override { finishOk(id); }
     void writeParameters(RequestId id, const ParameterSet&, bool) override { finishOk(id); }
     void moveRelative(RequestId id, const AxisVector&) override { finishOk(id); }
@@ -57,7 +90,13 @@ public:
     void setPollInterval(int) override {}
 
     // Test hooks into the protected base.
-    void loseLink() { setLinkState(LinkState::Lost, QStringLiteral("test: peer vanished")); }
+    void simulatePollLoss() { loseLink(QStringLiteral("test: no replies")); }
+    void simulateTransportFailure() { handleTransportFailure(QStringLiteral("test: unplugged")); }
+    void confirmStandstill()
+    {
+        noteStandstillConfirmed();
+        publishStatus();
+    }
     void markReferenced()
     {
         for (AxisStatus& a : mutableStatus().axes) {
@@ -68,8 +107,22 @@ public:
 
     QList<AppliedJog> applied;
     QElapsedTimer clock;
+    bool moving = false; // motionMayBeRunning()
+    bool ackStop = true; // sendSafetyStop() answers at once; false: never
+    int safetyStops = 0;
+    QStringList aborted; // abortHostSide() messages
 
 protected:
+    void sendSafetyStop(std::function<void(bool)> done) override
+    {
+        ++safetyStops;
+        transport()->write("STOP");
+        if (ackStop)
+            done(true);
+    }
+    void abortHostSide(ErrorKind, const QString& message) override { aborted << message; }
+    bool motionMayBeRunning() const override { return moving || jogActive(); }
+    int safetyStopTimeoutMs() const override { return 50; }
     void applyJogVelocity(const AxisVelocities& stepsPerS) override
     {
         applied.append({clock.elapsed(), stepsPerS});
@@ -99,6 +152,12 @@ private Q_SLOTS:
     void linkLost_marksUnreferencedAndZeroesVelocity();
     void jogAccelerationOption_reachesRamp();
     void slowJog_estimateAdvancesByFractions();
+    void closeLink_writesStopThenFlushesThenCloses();
+    void closeLink_stopUnanswered_marksMotionUnconfirmed();
+    void closeLink_notOpen_sendsNothing();
+    void pollLoss_sendsStopAndKeepsPortOpen();
+    void transportFailure_whileMoving_marksMotionUnconfirmed();
+    void motionUnconfirmed_clearedOnlyByDeviceStandstill();
 
 private:
     LoopbackTransport m_transport;
@@ -216,7 +275,7 @@ void TestControllerBase::linkLost_marksUnreferencedAndZeroesVelocity()
     renew.start();
     QTRY_VERIFY_WITH_TIMEOUT(c.status().axes.value(Axis::X).commandedVelocity > 0, 5000);
 
-    c.loseLink();
+    c.simulatePollLoss();
     QCOMPARE(c.linkState(), LinkState::Lost);
     QCOMPARE(link.count(), 1);
     QCOMPARE(link.first().at(0).value<LinkState>(), LinkState::Lost);
@@ -263,6 +322,105 @@ void TestControllerBase::slowJog_estimateAdvancesByFractions()
     QTRY_VERIFY_WITH_TIMEOUT(c.status().axes.value(Axis::Z).position >= 3, 5000);
     QVERIFY(c.status().axes.value(Axis::Z).positionEstimated);
     renew.stop();
+}
+
+void TestControllerBase::closeLink_writesStopThenFlushesThenCloses()
+{
+    RecordingTransport t;
+    t.open({});
+    FakeAdapter c(&t, jogOptions(300));
+    c.openLink(1);
+    c.moving = true;
+    QSignalSpy finished(&c, &Controller::closeFinished);
+    c.closeLink();
+    QCOMPARE(finished.count(), 1);
+    // The stop left the process before the port was closed.
+    QCOMPARE(t.log, (QStringList{"write STOP", "flush", "close"}));
+    QCOMPARE(c.linkState(), LinkState::Disconnected);
+    QVERIFY(!c.status().motionUnconfirmed);
+    QCOMPARE(c.aborted.size(), 1);
+}
+
+void TestControllerBase::closeLink_stopUnanswered_marksMotionUnconfirmed()
+{
+    RecordingTransport t;
+    t.open({});
+    FakeAdapter c(&t, jogOptions(300));
+    c.openLink(1);
+    c.moving = true;
+    c.ackStop = false;
+    QSignalSpy finished(&c, &Controller::closeFinished);
+    QSignalSpy errors(&c, &Controller::errorOccurred);
+    c.closeLink();
+    QCOMPARE(finished.count(), 0); // waits (bounded) for the stop's reply
+    QVERIFY(finished.wait(2000));
+    QCOMPARE(t.log, (QStringList{"write STOP", "flush", "close"}));
+    QVERIFY(c.status().motionUnconfirmed);
+    bool said = false;
+    for (const QList<QVariant>& e : errors)
+        said = said || e.at(0).toString() == Controller::mayStillBeMovingText();
+    QVERIFY(said);
+    c.closeLink(); // a second close is harmless and finishes at once
+    QCOMPARE(finished.count(), 2);
+}
+
+void TestControllerBase::closeLink_notOpen_sendsNothing()
+{
+    RecordingTransport t;
+    FakeAdapter c(&t, jogOptions(300));
+    QSignalSpy finished(&c, &Controller::closeFinished);
+    c.moving = true;
+    c.closeLink();
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(c.safetyStops, 0);
+    QVERIFY(!t.log.contains(QStringLiteral("write STOP")));
+}
+
+void TestControllerBase::pollLoss_sendsStopAndKeepsPortOpen()
+{
+    RecordingTransport t;
+    t.open({});
+    FakeAdapter c(&t, jogOptions(300));
+    c.openLink(1);
+    c.moving = true;
+    c.ackStop = false;
+    QSignalSpy link(&c, &Controller::linkStateChanged);
+    c.simulatePollLoss();
+    QCOMPARE(c.linkState(), LinkState::Connected); // the stop goes out first
+    QTRY_COMPARE_WITH_TIMEOUT(c.linkState(), LinkState::Lost, 2000);
+    QCOMPARE(t.log, (QStringList{"write STOP"}));
+    QVERIFY(t.isOpen()); // PANIC and STOP can still be written
+    QVERIFY(c.status().motionUnconfirmed);
+    QCOMPARE(c.aborted.size(), 1);
+}
+
+void TestControllerBase::transportFailure_whileMoving_marksMotionUnconfirmed()
+{
+    RecordingTransport t;
+    t.open({});
+    FakeAdapter c(&t, jogOptions(300));
+    c.openLink(1);
+    c.moving = true;
+    c.simulateTransportFailure();
+    QCOMPARE(c.linkState(), LinkState::Lost);
+    QVERIFY(c.status().motionUnconfirmed);
+    QCOMPARE(c.safetyStops, 0); // nothing can be written to a vanished port
+    QVERIFY(t.log.isEmpty());
+}
+
+void TestControllerBase::motionUnconfirmed_clearedOnlyByDeviceStandstill()
+{
+    RecordingTransport t;
+    t.open({});
+    FakeAdapter c(&t, jogOptions(300));
+    c.openLink(1);
+    c.moving = true;
+    c.simulateTransportFailure();
+    QVERIFY(c.status().motionUnconfirmed);
+    c.openLink(2); // reconnecting alone proves nothing
+    QVERIFY(c.status().motionUnconfirmed);
+    c.confirmStandstill();
+    QVERIFY(!c.status().motionUnconfirmed);
 }
 
 QTEST_GUILESS_MAIN(TestControllerBase)

@@ -68,7 +68,11 @@ void TestElabController::writeParameters_exactBytes()
     const CommandResult r = rig.run([&](RequestId id) { rig.ctl->writeParameters(id, set, true); });
     QVERIFY2(r.ok(), qPrintable(r.message));
     QVERIFY2(r.message.contains("cannot read parameters back"), qPrintable(r.message));
-    const QList<QByteArray> expected{bytes("<ESC>S0064,0064;0064."),
+    // Standstill first ("Sind Positionier- oder Arbeits Kommandos beim Controller in Arbeit, so
+    // muss der Host den Status des Controllers abfragen"), then the writes back to back.
+    const QList<QByteArray> expected{bytes("<HT>"),
+                                     bytes("<ENQ>"),
+                                     bytes("<ESC>S0064,0064;0064."),
                                      bytes("<ESC>M1388,1388;1388."),
                                      bytes("<ESC>A03E8,03E8;03E8."),
                                      bytes("<FS>0032,0032;0032."),
@@ -151,7 +155,8 @@ void TestElabController::readParameters_returnsLastWritten_orUnsupported()
     change.insert("max-speed", onlyY);
     rig.traffic->clear();
     QVERIFY(rig.run([&](RequestId id) { rig.ctl->writeParameters(id, change, false); }).ok());
-    QCOMPARE(rig.framesOut(false), QList<QByteArray>{bytes("<ESC>M1388,0FA0;1388.")});
+    QCOMPARE(rig.framesOut(false),
+             (QList<QByteArray>{bytes("<HT>"), bytes("<ENQ>"), bytes("<ESC>M1388,0FA0;1388.")}));
     r = rig.run([&](RequestId id) { rig.ctl->readParameters(id, {"max-speed"}); });
     QVERIFY2(r.ok(), qPrintable(r.message));
     const auto values = r.value.value<ParameterSet>();
@@ -171,7 +176,9 @@ void TestElabController::linkLoss_afterThreeMissedPolls()
     QCOMPARE(links.last().at(0).value<LinkState>(), LinkState::Lost);
     QVERIFY2(links.last().at(1).toString().contains("3 status polls"),
              qPrintable(links.last().at(1).toString()));
-    QVERIFY(!rig.hostEnd->isOpen());
+    // The stop went out before the link was declared lost, and the port stays open for PANIC.
+    QVERIFY(rig.sim->countReceived(encode::stopMove()) >= 1);
+    QVERIFY(rig.hostEnd->isOpen());
     QVERIFY(rig.ctl->status().commFault);
     const CommandResult r = rig.run([&](RequestId id) {
         rig.ctl->moveRelative(id, {{Axis::X, 1}});
@@ -218,8 +225,11 @@ void TestElabController::auxiliaries_validateRange()
     QVERIFY(rig.run([&](RequestId id) { rig.ctl->setSpindle(id, 1000); }).ok());
     QVERIFY(rig.run([&](RequestId id) { rig.ctl->setCoolant(id, true); }).ok());
     QVERIFY(rig.run([&](RequestId id) { rig.ctl->setDrivePower(id, 66); }).ok());
+    // Each output write is preceded by the standstill read (<HT><ENQ>).
     QCOMPARE(rig.framesOut(false),
-             (QList<QByteArray>{bytes("<SOH>000003E8#"), bytes("<SI>FF"), bytes("<STX>42")}));
+             (QList<QByteArray>{bytes("<HT>"), bytes("<ENQ>"), bytes("<SOH>000003E8#"),
+                                bytes("<HT>"), bytes("<ENQ>"), bytes("<SI>FF"), bytes("<HT>"),
+                                bytes("<ENQ>"), bytes("<STX>42")}));
     QCOMPARE(rig.sim->spindleRpm(), quint32(1000));
     QVERIFY(rig.sim->coolant());
     QCOMPARE(rig.sim->drivePower(), 66);
@@ -267,12 +277,16 @@ void TestElabController::closeLink_duringVelocityMove_sendsStopFirst()
     QVERIFY(rig.connectAndSetup());
     QVERIFY(rig.run([&](RequestId id) { rig.ctl->velocityMove(id, {{Axis::Z, -3500}}); }).ok());
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim->isMoving(Axis::Z), 5000);
-    rig.traffic->clear();
+    rig.sim->clearReceivedFrames();
+    QSignalSpy closed(rig.ctl.get(), &Controller::closeFinished);
     rig.ctl->closeLink();
+    QVERIFY(closed.count() == 1 || closed.wait(3000));
     QCOMPARE(rig.ctl->linkState(), LinkState::Disconnected);
-    QCOMPARE(rig.framesOut(true), QList<QByteArray>{encode::stopMove()});
+    // What the device saw: the stop, nothing else, and it was acknowledged before the close.
+    QCOMPARE(rig.sim->receivedFrames(), QList<QByteArray>{encode::stopMove()});
+    QVERIFY(!rig.ctl->status().motionUnconfirmed);
     // Nothing keeps running unattended: the board brakes to standstill.
-    QTRY_VERIFY_WITH_TIMEOUT(!rig.sim->isMoving(Axis::Z), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.sim->standingStill(), 5000);
 }
 
 QTEST_GUILESS_MAIN(TestElabController)

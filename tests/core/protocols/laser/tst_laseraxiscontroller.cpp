@@ -353,6 +353,8 @@ void TestLaserAxisController::linkLost_duringMove_failsRequestUnconfirmed()
     QCOMPARE(rig.controller->linkState(), LinkState::Lost);
     QVERIFY(rig.controller->status().motionUnconfirmed);
     QVERIFY(!rig.axis(Axis::Y).positionKnown);
+    QVERIFY(rig.errors.join("\n").contains(Controller::mayStillBeMovingText())); // said once
+    QCOMPARE(rig.errors.filter("link lost").size(), 1);
 }
 
 void TestLaserAxisController::parameters_unsupported()
