@@ -88,8 +88,8 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
 {
     const QString& arg = argv.at(*i);
     const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model",   "--port",    "--address",
-                                   "--axes",    "--timeout", "--reset-line"};
+    static const QStringList names{"--model",      "--port",    "--address",       "--axes",
+                                   "--timeout",    "--reset-line", "--arrival-timeout"};
     *matched = names.contains(name);
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))
@@ -114,6 +114,12 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
             return false;
         }
         o->address = n;
+    } else if (name == QLatin1String("--arrival-timeout")) {
+        if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), &o->arrivalTimeoutMs) !=
+            NumberError::None) {
+            *error = tr("--arrival-timeout needs a positive number of milliseconds");
+            return false;
+        }
     } else {
         if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), &o->connectTimeoutMs) !=
             NumberError::None) {
@@ -249,6 +255,8 @@ QString usageText()
               "  --timeout MS       how long to wait for the link to come up (default 3000)\n"
               "  --reset-line L     rts (default) or dtr: the modem line wired to the\n"
               "                     board's reset input (E-LAB `reset`); both are held low\n"
+              "  --arrival-timeout MS  how long move and home wait for the axes to report\n"
+              "                     arrival (laser-axis; default 60000, the laser's own)\n"
               "  --verbose          show the core's log output on stderr\n"
               "  --help, --version\n"
               "\n"
@@ -299,6 +307,12 @@ QString usageText()
               "  program N --title TEXT CMD...  store the input program of input N (emis;\n"
               "                              inputs 1-4 carry the reference switches: --force);\n"
               "                              program N --erase deletes it\n"
+              "  laser-bridge LASER_PORT [--map 1=X,2=Y,3=Z] [--scale STEPS_PER_UNIT]\n"
+              "               [--home X=-1,Y=-1,Z=-1] [--door-input N]\n"
+              "                              be the motor axes of a laser marker: answer its\n"
+              "                              frames on LASER_PORT (9600 8N1) with this\n"
+              "                              controller; runs until SIGINT/SIGTERM/SIGHUP,\n"
+              "                              stops the motion it started and exits 0\n"
               "  models                      controller models known to this build\n"
               "  params                      the model's parameters: range, unit, default\n"
               "\n"

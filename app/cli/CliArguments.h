@@ -23,6 +23,7 @@ struct CliOptions
     int connectTimeoutMs = 3000;
     // --reset-line rts|dtr: the modem line wired to the board's reset input (E-LAB).
     LineSettings::ResetLine resetLine = LineSettings::ResetLine::Rts;
+    int arrivalTimeoutMs = 60000; // --arrival-timeout: models that report arrival (laser-axis)
     QString command;
     QStringList args;
 };

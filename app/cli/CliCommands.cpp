@@ -45,6 +45,7 @@ const CommandEntry kCommands[] = {
     {"store", cmdStore, true, true},
     {"output", cmdOutput, true, false},
     {"program", cmdProgram, true, true},
+    {"laser-bridge", cmdLaserBridge, true, true},
 };
 // clang-format on
 

@@ -65,5 +65,6 @@ Outcome cmdStore(CliContext& c, QStringList args);
 Outcome cmdGetStored(CliContext& c, QStringList args); // `get` on models with stored values
 Outcome cmdOutput(CliContext& c, QStringList args);
 Outcome cmdProgram(CliContext& c, QStringList args);
+Outcome cmdLaserBridge(CliContext& c, QStringList args); // CliBridgeCommand.cpp
 
 } // namespace stepdeck::cli

@@ -53,6 +53,52 @@ Outcome stopThenFail(CliContext& c, const Outcome& failure)
 
 using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
 using CheckValues = std::function<Outcome(const AxisVector&)>;
+using StartRequest = std::function<RequestId(ControllerSession&)>;
+
+// Models whose moves finish when the axes report arrival (laser-axis): the request itself is
+// the wait, up to --arrival-timeout (exit 5 after it). An axis that reported its end switch
+// instead of the target ends the command with exit 13.
+Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWait, int waitMs)
+{
+    Outcome result = c.connect();
+    if (!result.ok())
+        return result;
+    if (noWait) {
+        // The target only has to leave the process: the status read returns once the port took
+        // every byte. A refusal (range, unknown position) has finished by then.
+        RequestId moveId = 0;
+        std::optional<CommandResult> early;
+        const QMetaObject::Connection watch = QObject::connect(
+            &c.session.session(), &ControllerSession::requestFinished, [&](const CommandResult& r) {
+                if (r.id == moveId)
+                    early = r;
+            });
+        result = c.session.run([&](ControllerSession& s) {
+            moveId = start(s);
+            return s.refreshStatus();
+        });
+        QObject::disconnect(watch);
+        if (result.ok() && early && !early->ok())
+            return Outcome::from(*early);
+        return result;
+    }
+    const CommandResult done =
+        c.session.call(start, waitMs > 0 ? waitMs : c.options.arrivalTimeoutMs + 5000);
+    if (!done.ok())
+        return Outcome::from(done);
+    const QStringList endSwitch =
+        done.value.toMap().value(QStringLiteral("endSwitch")).toStringList();
+    if (!endSwitch.isEmpty()) {
+        if (c.json())
+            printJson(c.session.status().toJson(c.model->id));
+        return Outcome::failure(
+            ExitMotionAborted,
+            tr("motion aborted: axis %1 stopped at its end switch (status 1) "
+               "before reaching its target; positions: %2")
+                .arg(endSwitch.join(QStringLiteral(", ")), formatPositions(c.session.status())));
+    }
+    return reportPositions(c);
+}
 
 Outcome positioning(CliContext& c, QStringList args, const QString& command, const StartMove& start,
                     bool allowAbs, const CheckValues& check = {})
@@ -76,6 +122,14 @@ Outcome positioning(CliContext& c, QStringList args, const QString& command, con
     if (check) {
         if (const Outcome checked = check(steps); !checked.ok())
             return checked;
+    }
+    if (c.capabilities().reportsArrival) {
+        return positioningByArrival(
+            c,
+            [&](ControllerSession& s) {
+                return absolute ? s.moveAbsolute(steps) : start(s, steps);
+            },
+            noWait, int(qMin<qint64>(timeoutMs, INT_MAX)));
     }
     Outcome result = connectAndRun(c, [&](ControllerSession& s) {
         return absolute ? s.moveAbsolute(steps) : start(s, steps);

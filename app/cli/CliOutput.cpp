@@ -234,6 +234,8 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
         lines << tr("Outputs:      %1 (? = not switched in this session)")
                      .arg(states.join(QLatin1Char(' ')));
     }
+    if (status.doorOpen)
+        lines << tr("Door:         %1").arg(*status.doorOpen ? tr("OPEN") : tr("closed"));
     if (capabilities.multiDrive && !status.drives.isEmpty())
         lines << driveLines(status.drives);
     lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");

@@ -80,6 +80,7 @@ Outcome CliSession::create()
     spec.port = m_options.port;
     spec.options.axisAddresses = m_options.axisAddresses;
     spec.options.resetLine = m_options.resetLine;
+    spec.options.arrivalTimeoutMs = m_options.arrivalTimeoutMs;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
     QString error;

@@ -3,8 +3,10 @@
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
+#include "protocols/laser/LaserAxisSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
+#include <QtMath>
 #include <limits>
 
 namespace stepdeck::simapp {
@@ -59,19 +61,21 @@ bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* er
     return true;
 }
 
-bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* error)
+bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* error,
+                   const QString& option = QStringLiteral("--position"))
 {
     const int eq = text.indexOf(QLatin1Char('='));
     const auto axis = eq > 0 ? axisFromName(QStringView(text).left(eq)) : std::nullopt;
     qint64 steps = 0;
     const bool ok = numbers::parseInteger(text.mid(eq + 1), &steps) == NumberError::None;
     if (!axis || !ok) {
-        *error = tr("--position expects AXIS=STEPS, e.g. X=500, got '%1'").arg(text);
+        *error = tr("%1 expects AXIS=STEPS, e.g. X=500, got '%2'").arg(option, text);
         return false;
     }
     positions->insert(*axis, steps);
     return true;
 }
+
 // "--drop 0.01": a probability 0..1, decimal.
 bool parseProbability(const QString& option, const QString& text, double* value, QString* error)
 {
@@ -124,6 +128,17 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
     s->seed = quint32(seed);
     return true;
 }
+
+bool parseSpeed(const QString& text, std::optional<double>* speed, QString* error)
+{
+    double value = 0;
+    if (numbers::parseReal(text, &value) != NumberError::None || !qIsFinite(value) || value < 1 || value > 1e7) {
+        *error = tr("--speed expects units per second from 1 to 10000000, got '%1'").arg(text);
+        return false;
+    }
+    *speed = value;
+    return true;
+}
 } // namespace
 
 bool parseScenario(const QStringList& args, SimScenario* scenario, QString* error)
@@ -172,6 +187,17 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--position")) {
             if (!takeValue(args, &i, &value, error) || !parsePosition(value, &s.positions, error))
                 return false;
+        } else if (name == QLatin1String("--end-switch")) {
+            if (!takeValue(args, &i, &value, error) ||
+                !parsePosition(value, &s.endSwitches, error, name))
+                return false;
+        } else if (name == QLatin1String("--speed")) {
+            if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.speed, error))
+                return false;
+        } else if (name == QLatin1String("--silent")) {
+            s.silent = true;
+        } else if (name == QLatin1String("--garbage")) {
+            s.garbage = true;
         } else {
             *error = tr("unknown argument '%1' (try --help)").arg(args.at(i));
             return false;
@@ -188,6 +214,7 @@ QString simUsage()
               "AXIS=STEPS]...\n"
               "                    [--drop P] [--corrupt P] [--noise BYTES_PER_S]\n"
               "                    [--freeze-after MS] [--seed N]\n"
+              "                    [--speed UNITS] [--end-switch AXIS=POS]... [--silent] [--garbage]\n"
               "\n"
               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
@@ -202,7 +229,14 @@ QString simUsage()
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
               "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
-              "                     from the reference switch)\n"
+              "                     from the reference switch; laser-axis: units from the\n"
+              "                     home switch)\n"
+              "\n"
+              "laser-axis only:\n"
+              "  --speed UNITS      axis speed in position units per second (default 10000)\n"
+              "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
+              "  --silent           the axes move but never send a status frame\n"
+              "  --garbage          a malformed line before every status frame\n"
               "\n"
               "Faults (random, reproducible with the same --seed and the same traffic):\n"
               "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
@@ -237,12 +271,45 @@ bool applyEmisScenario(const SimScenario& scenario, emis::EmisSimulator* sim, QS
     sim->powerCycle(); // the counters start at 0 where the carriages stand
     return true;
 }
+
+bool applyLaserScenario(const SimScenario& scenario, laser::LaserAxisSimulator* sim, QString* error)
+{
+    if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
+        *error = tr("--setup-complete, --temperature and --limit are not supported for model "
+                    "laser-axis");
+        return false;
+    }
+    for (const QMap<Axis, qint64>* map : {&scenario.positions, &scenario.endSwitches}) {
+        if (map->contains(Axis::U)) {
+            *error = tr("model laser-axis has no axis U");
+            return false;
+        }
+    }
+    if (scenario.speed)
+        sim->setSpeed(*scenario.speed);
+    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
+        sim->powerOn(it.key(), it.value());
+    for (auto it = scenario.endSwitches.cbegin(); it != scenario.endSwitches.cend(); ++it)
+        sim->config(it.key()).endSwitch = it.value();
+    sim->faults().silent = scenario.silent;
+    sim->setGarbageBeforeStatus(scenario.garbage);
+    return true;
+}
 } // namespace
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
 {
     if (auto* emisSim = qobject_cast<emis::EmisSimulator*>(simulator))
         return applyEmisScenario(scenario, emisSim, error);
+    if (auto* laserSim = qobject_cast<laser::LaserAxisSimulator*>(simulator))
+        return applyLaserScenario(scenario, laserSim, error);
+    const bool laserOnly =
+        scenario.speed || !scenario.endSwitches.isEmpty() || scenario.silent || scenario.garbage;
+    if (laserOnly) {
+        *error = tr("--speed, --end-switch, --silent and --garbage are only supported for model "
+                    "laser-axis");
+        return false;
+    }
     auto* elabSim = qobject_cast<elab::ElabSimulator*>(simulator);
     const bool needsModelApi = scenario.setupComplete || scenario.temperature ||
                                !scenario.limits.isEmpty() || !scenario.positions.isEmpty();

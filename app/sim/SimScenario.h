@@ -31,6 +31,11 @@ struct SimScenario
     double noiseBytesPerSecond = 0;
     qint64 freezeAfterMs = -1;
     quint32 seed = 1;
+    // laser-axis: speed in units/s, end switch positions, faults
+    std::optional<double> speed;
+    QMap<Axis, qint64> endSwitches;
+    bool silent = false;
+    bool garbage = false;
     bool help = false;
 };
 

@@ -11,6 +11,10 @@ struct ControllerOptions
     int pollIntervalMs = 50;
     int missedPollsForLinkLoss = 3;
     int commandTimeoutMs = 500;
+    // Models that report arrival (Capabilities::reportsArrival): how long a move or home waits
+    // for it. Laser motor axes: "If the target-position is not reached within 60 seconds the
+    // laser emits a timeout alarm."
+    int arrivalTimeoutMs = 60000;
     int jogLeaseMs = 300;                 // a jog rate not renewed within this ramps to zero
     int jogTickMs = 20;                   // JogRamp update period
     double jogAccelerationStepsPerS2 = 0; // 0: the model's default

@@ -53,6 +53,17 @@ struct Capabilities
     double maxJogSpeed = 1000;            // steps/s, the ceiling a jog source may request
     double defaultJogAcceleration = 2000; // steps/s^2 for the host-side JogRamp
 
+    // false: the device has no status request and only reports by itself (laser motor axes);
+    // refreshStatus() then returns what it last reported.
+    bool statusQuery = true;
+    // Move and home requests finish only when the device reports that the axes arrived, or
+    // with Timeout after ControllerOptions::arrivalTimeoutMs (laser motor axes).
+    bool reportsArrival = false;
+    // No jog stream: jog inputs become short targets, the next one sent only after the
+    // previous one arrived, never a target far ahead (laser motor axes).
+    bool jogByTargets = false;
+    bool doorSwitch = false; // the device reports a door switch (MachineStatus::doorOpen)
+
     bool has(MotionMode mode) const { return motionModes.contains(mode); }
 };
 

@@ -33,18 +33,23 @@ QJsonObject MachineStatus::toJson(const QString& modelId) const
                         {"motionUnconfirmed", motionUnconfirmed}};
     if (startButton)
         machine.insert("startButton", *startButton);
+    if (doorOpen)
+        machine.insert("doorOpen", *doorOpen);
     QJsonObject axesJson;
     for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
         const AxisStatus& a = it.value();
-        axesJson.insert(axisName(it.key()), QJsonObject{{"moving", a.moving},
-                                                        {"jogging", a.jogging},
-                                                        {"limitSwitch", a.limitSwitch},
-                                                        {"referenceSwitch", a.referenceSwitch},
-                                                        {"referenced", a.referenced},
-                                                        {"position", double(a.position)},
-                                                        {"positionKnown", a.positionKnown},
-                                                        {"positionEstimated", a.positionEstimated},
-                                                        {"motionUnknown", a.motionUnknown}});
+        QJsonObject axis{{"moving", a.moving},
+                         {"jogging", a.jogging},
+                         {"limitSwitch", a.limitSwitch},
+                         {"referenceSwitch", a.referenceSwitch},
+                         {"referenced", a.referenced},
+                         {"position", double(a.position)},
+                         {"positionKnown", a.positionKnown},
+                         {"positionEstimated", a.positionEstimated},
+                         {"motionUnknown", a.motionUnknown}};
+        if (a.lastSwitch != SwitchEvent::None)
+            axis.insert("lastSwitch", a.lastSwitch == SwitchEvent::Limit ? "limit" : "reference");
+        axesJson.insert(axisName(it.key()), axis);
     }
     QJsonObject out{{"model", modelId}, {"machine", machine}, {"axes", axesJson}};
     out.insert("temperatureCelsius",

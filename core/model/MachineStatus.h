@@ -7,6 +7,10 @@
 
 namespace stepdeck {
 
+// The switch an axis last reported stopping at, on models that report events rather than
+// switch levels (laser motor axes: end switch = Limit, home switch = Reference).
+enum class SwitchEvent : quint8 { None, Limit, Reference };
+
 // Normalised per-axis status. Every model maps its own status words onto this.
 struct AxisStatus
 {
@@ -22,6 +26,7 @@ struct AxisStatus
     // No fresh status for this axis (its drive stopped answering): moving/jogging are the last
     // known values and the axis may be moving. Never shown as idle.
     bool motionUnknown = false;
+    SwitchEvent lastSwitch = SwitchEvent::None;
 };
 
 // One drive on the link (E-LAB: the board; Nanotec: one bus address per axis).
@@ -54,6 +59,7 @@ struct MachineStatus
     QList<std::optional<bool>> outputs;
     QString deviceFirmware;
     std::optional<bool> startButton;
+    std::optional<bool> doorOpen; // door switch, where the model reports one (laser status 3/4)
     std::optional<double> temperatureCelsius;
     QMap<Axis, AxisStatus> axes;
     QList<DriveStatus> drives;

@@ -1,6 +1,7 @@
 #include "Registry.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/emis/EmisModel.h"
+#include "protocols/laser/LaserModel.h"
 #include "protocols/nanotec/NanotecModel.h"
 
 namespace stepdeck {
@@ -12,6 +13,7 @@ const QList<ModelInfo>& models()
         elab::modelInfo(),
         nanotec::modelInfo(),
         emis::modelInfo(),
+        laser::modelInfo(),
     };
     return list;
 }

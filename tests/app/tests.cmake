@@ -17,3 +17,6 @@ add_dependencies(tst_soak_smoke stepdeck-bench)
 stepdeck_add_test(tst_cli_emis_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_emis_e2e.cpp
                   LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_emis_e2e stepdeck-cli stepdeck-sim)
+stepdeck_add_test(tst_cli_laser_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_laser_e2e.cpp
+                  LABELS integration TIMEOUT 300)
+add_dependencies(tst_cli_laser_e2e stepdeck-cli stepdeck-sim)

@@ -8,6 +8,7 @@
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
+#include "protocols/laser/LaserAxisSimulator.h"
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -23,6 +24,7 @@ private Q_SLOTS:
     void plan_defaultOrder_zFirstThenXY();
     void plan_skippedAxis_left_out();
     void referenceAll_runsStagesInOrder_allReferenced();
+    void referenceAll_laserAxes_finishOnTheirReports();
     void position_unknownBeforeReference_estimatedAfterJog();
     void position_workZeroAndUnits_applied();
     void position_duringMove_estimateAndTargetNotReferenced();
@@ -182,6 +184,26 @@ void TestReferencePanel::successMessage_afterPanic_replaced()
     QVERIFY2(!panel->messageText().contains(QStringLiteral("are referenced")),
              qPrintable(panel->messageText()));
     QVERIFY(panel->messageText().contains(QStringLiteral("no longer referenced")));
+}
+
+void TestReferencePanel::referenceAll_laserAxes_finishOnTheirReports()
+{
+    // No poller: the runner learns the end of each stage from the request itself.
+    ConnectionSpec spec{QStringLiteral("laser-axis"), QStringLiteral("sim"), {}, {}};
+    QString error;
+    QVERIFY2(m_f->window->context()->connectTo(spec, &error), qPrintable(error));
+    QVERIFY(m_f->waitConnected());
+    QSignalSpy finished(m_f->window->referencePanel()->runner(), &ui::ReferenceRunner::finished);
+    m_f->window->referencePanel()->referenceAll();
+    QVERIFY(finished.wait(10000));
+    QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+    bool homed = false;
+    QVERIFY(m_f->withSimulatorAs<laser::LaserAxisSimulator>([&](laser::LaserAxisSimulator* s) {
+        homed = s->isHomed(Axis::X) && s->isHomed(Axis::Y) && s->isHomed(Axis::Z);
+    }));
+    QVERIFY(homed);
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+        QVERIFY(m_f->window->context()->status().axes.value(a).referenced);
 }
 
 QTEST_MAIN(TestReferencePanel)

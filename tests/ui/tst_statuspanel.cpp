@@ -2,6 +2,7 @@
 // temperature warning before the 50 degC bit, and the counters.
 #include "UiTestSupport.h"
 #include "common/LedIndicator.h"
+#include "protocols/laser/LaserAxisSimulator.h"
 #include "status/RawWordView.h"
 #include "status/StatusPanel.h"
 
@@ -21,6 +22,7 @@ private Q_SLOTS:
     void temperature_warnsBeforeOverTemperature_data();
     void temperature_warnsBeforeOverTemperature();
     void counters_shown();
+    void door_lampOnlyWhereReported_followsTheSwitch();
 
 private:
     ui::StatusPanel* panel() const { return m_f->window->statusPanel(); }
@@ -96,6 +98,25 @@ void TestStatusPanel::counters_shown()
 {
     QVERIFY(panel()->countersText().contains(QStringLiteral("Comm faults: 0")));
     QVERIFY(panel()->countersText().contains(QStringLiteral("Resyncs:")));
+}
+
+void TestStatusPanel::door_lampOnlyWhereReported_followsTheSwitch()
+{
+    using State = ui::LedIndicator::State;
+    QVERIFY(!panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))); // E-LAB: none
+    ConnectionSpec spec{QStringLiteral("laser-axis"), QStringLiteral("sim"), {}, {}};
+    QString error;
+    QVERIFY2(m_f->window->context()->connectTo(spec, &error), qPrintable(error));
+    QVERIFY(m_f->waitConnected());
+    ui::LedIndicator* door = nullptr;
+    QTRY_VERIFY((door = panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))));
+    QTRY_COMPARE(door->state(), State::Unknown); // no frame about the door yet
+    QVERIFY(m_f->withSimulatorAs<laser::LaserAxisSimulator>(
+        [](laser::LaserAxisSimulator* s) { s->setDoorOpen(true); }));
+    QTRY_COMPARE(door->state(), State::Warning);
+    QVERIFY(m_f->withSimulatorAs<laser::LaserAxisSimulator>(
+        [](laser::LaserAxisSimulator* s) { s->setDoorOpen(false); }));
+    QTRY_COMPARE(door->state(), State::Off);
 }
 
 QTEST_MAIN(TestStatusPanel)

@@ -1,5 +1,6 @@
 #include "JogController.h"
 #include "jog/JogInputSource.h"
+#include "jog/TargetJogger.h"
 #include "main/MachineContext.h"
 #include <QGuiApplication>
 #include <QSettings>
@@ -8,8 +9,12 @@
 namespace stepdeck::ui {
 
 JogController::JogController(MachineContext* context, QObject* parent)
-    : QObject(parent), m_context(context)
+    : QObject(parent), m_context(context), m_targetJog(new TargetJogger(context->session(), this))
 {
+    connect(m_targetJog, &TargetJogger::refused, this, [this](const QString& reason) {
+        m_lastRefusal = reason;
+        Q_EMIT refused(reason);
+    });
     m_renew.setInterval(kRenewMs);
     connect(&m_renew, &QTimer::timeout, this, [this] { update(true); });
     connect(context, &MachineContext::modelChanged, this, [this] {
@@ -63,6 +68,7 @@ void JogController::releaseAll()
     m_targets.clear();
     m_active = false;
     m_renew.stop();
+    m_targetJog->release();
     if (wasActive) {
         m_context->session()->endJog();
         Q_EMIT targetsChanged(m_targets);
@@ -150,6 +156,7 @@ void JogController::stopSending()
     if (m_active) {
         m_active = false;
         m_renew.stop();
+        m_targetJog->release();
         AxisVelocities zeros;
         for (Axis axis : m_context->axes())
             zeros.insert(axis, 0.0);
@@ -207,8 +214,14 @@ void JogController::updateOnce(bool renewal)
     const bool changed = full != m_targets;
     m_targets = full;
     m_active = true;
-    if (changed || renewal)
-        m_context->session()->setJogVelocity(m_targets); // renews the lease: just proven
+    if (changed || renewal) {
+        // Renews the lease with what was just proven. Controllers without a jog command get
+        // short targets, the next one only while the input is still proven held.
+        if (m_context->capabilities().jogByTargets)
+            m_targetJog->setVelocities(m_targets);
+        else
+            m_context->session()->setJogVelocity(m_targets);
+    }
     if (changed)
         Q_EMIT targetsChanged(m_targets);
     if (!m_renew.isActive())

@@ -9,6 +9,7 @@ namespace stepdeck::ui {
 
 class JogInputSource;
 class MachineContext;
+class TargetJogger;
 
 // Combines every jog input into per-axis velocities and sends them to the controller
 // session. The core's jog lease (ControllerOptions::jogLeaseMs) is renewed only with proof:
@@ -37,6 +38,8 @@ public:
     double override() const { return m_override; }
 
     AxisVelocities targets() const { return m_targets; }
+    // Controllers without a jog command (Capabilities::jogByTargets) jog through this.
+    TargetJogger* targetJogger() const { return m_targetJog; }
     bool isJogging() const;
 
 public Q_SLOTS:
@@ -60,6 +63,7 @@ private:
 
     MachineContext* m_context;
     QList<QPointer<JogInputSource>> m_sources;
+    TargetJogger* m_targetJog;
     QMap<Axis, double> m_maxSpeed;
     double m_override = 1.0;
     AxisVelocities m_targets;

@@ -31,7 +31,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
       m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
-      m_refusal(new QLabel(this)), m_refusalTimer(new QTimer(this)),
+      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
       m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
       m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
@@ -164,6 +164,13 @@ QWidget* JogPanel::buildSidePanel()
     m_keyboardState->setWordWrap(true);
     v->addWidget(m_keyboardState);
 
+    m_jogModeNote->setObjectName(QStringLiteral("jogModeNote"));
+    m_jogModeNote->setWordWrap(true);
+    m_jogModeNote->setText(
+        tr("This controller has no jog command: the pad, keys and gamepad move it by short "
+           "targets, each sent only after the previous one arrived. Releasing ends jogging "
+           "after the short move under way. Incremental jog moves by the step size."));
+    v->addWidget(m_jogModeNote);
     m_refusal->setObjectName(QStringLiteral("jogRefusal"));
     m_refusal->setWordWrap(true);
     m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
@@ -189,6 +196,7 @@ QWidget* JogPanel::buildSidePanel()
 void JogPanel::rebuild()
 {
     releaseAll();
+    m_jogModeNote->setVisible(m_context->capabilities().jogByTargets);
     const QList<Axis> axes = m_context->axes();
     m_xy->setVisible(axes.contains(Axis::X) || axes.isEmpty());
     m_xy->setAxisLabels(QStringLiteral("X"),

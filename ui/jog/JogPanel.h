@@ -36,6 +36,7 @@ public:
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
     QString keyboardStateText() const; // "Keyboard jog ON: ←/→ X, ...", "... paused ..."
+    QLabel* jogModeNote() const { return m_jogModeNote; }
     IncrementalJogWidget* incremental() const { return m_incremental; }
 
 public Q_SLOTS:
@@ -61,6 +62,7 @@ private:
     QLabel* m_keyboardState;
     ConnectionGate* m_gate = nullptr;
     QLabel* m_refusal;
+    QLabel* m_jogModeNote; // how jog works on models without a jog command
     QTimer* m_refusalTimer;
     QGridLayout* m_velocityGrid;
     QMap<Axis, QLabel*> m_velocity;

@@ -1,4 +1,5 @@
 #include "MainWindow.h"
+#include "bridge/LaserBridgePage.h"
 #include "charts/ChartsPanel.h"
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
@@ -215,6 +216,10 @@ void MainWindow::buildDocks()
     m_programsDock = addDock(m_programs, tr("Input programs"), QStringLiteral("inputProgramsDock"),
                              Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_recordsDock, m_programsDock);
+    m_laserBridge = new LaserBridgePage(m_context, this);
+    tabifyDockWidget(m_recordsDock,
+                     addDock(m_laserBridge, tr("Laser bridge"), QStringLiteral("laserBridgeDock"),
+                             Qt::BottomDockWidgetArea));
     setup->raise();
     setDockNestingEnabled(true);
 }

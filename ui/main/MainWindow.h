@@ -19,6 +19,7 @@ class InputProgramsPage;
 class JogController;
 class JogPanel;
 class KeyboardJog;
+class LaserBridgePage;
 class MachineContext;
 class PositionPanel;
 class RecordsPage;
@@ -57,6 +58,7 @@ public:
     DrivePanel* drivePanel() const { return m_drivePanel; }
     RecordsPage* recordsPage() const { return m_records; }
     InputProgramsPage* inputProgramsPage() const { return m_programs; }
+    LaserBridgePage* laserBridgePage() const { return m_laserBridge; }
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
@@ -114,6 +116,7 @@ private:
     GamepadPanel* m_gamepad = nullptr;
     DrivePanel* m_drivePanel = nullptr;
     RecordsPage* m_records = nullptr;
+    LaserBridgePage* m_laserBridge = nullptr;
     QDockWidget* m_drivesDock = nullptr;
     QDockWidget* m_recordsDock = nullptr;
     InputProgramsPage* m_programs = nullptr;

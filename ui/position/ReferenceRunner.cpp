@@ -84,6 +84,10 @@ void ReferenceRunner::onResult(const CommandResult& result)
     }
     m_accepted = true;
     m_acceptedAt.start();
+    // Models that report arrival (laser axes) finish the request only when the run is over:
+    // the status published before this result is the evidence, and no poll follows.
+    if (m_context->capabilities().reportsArrival)
+        m_sawMotion = true;
     onStatus(m_context->status());
 }
 

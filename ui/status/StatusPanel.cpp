@@ -45,6 +45,9 @@ const FlagText kMachineFlags[] = {
     {"startButton", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Start button"),
      QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
                        "The start button on the controller is pressed.")},
+    {"doorOpen", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Door open"),
+     QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel",
+                       "The door switch reports the door open (grey: not reported yet).")},
 };
 const FlagText kAxisFlags[] = {
     {"moving", QT_TRANSLATE_NOOP("stepdeck::ui::StatusPanel", "Moving"),
@@ -123,7 +126,8 @@ QWidget* StatusPanel::buildMachineGroup()
     int i = 0;
     for (const FlagText& f : kMachineFlags) {
         const QString key = QString::fromLatin1(f.key);
-        if (key == QLatin1String("startButton") && !caps.startButton)
+        if ((key == QLatin1String("startButton") && !caps.startButton) ||
+            (key == QLatin1String("doorOpen") && !caps.doorSwitch))
             continue;
         auto* lamp = new LedIndicator(tr(f.label), group);
         lamp->setToolTip(tr(f.tip));
@@ -250,6 +254,10 @@ void StatusPanel::onStatus(const MachineStatus& s)
     set("startButton", s.startButton.value_or(false), S::On);
     if (LedIndicator* lamp = m_machine.value(QStringLiteral("startButton"));
         lamp && live && !s.startButton.has_value())
+        lamp->setState(S::Unknown);
+    set("doorOpen", s.doorOpen.value_or(false), S::Warning);
+    if (LedIndicator* lamp = m_machine.value(QStringLiteral("doorOpen"));
+        lamp && live && !s.doorOpen.has_value())
         lamp->setState(S::Unknown);
 
     for (auto it = m_axes.cbegin(); it != m_axes.cend(); ++it) {

@@ -14,6 +14,7 @@ public:
     using Simulator::Simulator;
     QString modelId() const override { return QStringLiteral("echo"); }
     void receive(const QByteArray& bytes) override { send(bytes); }
+    bool standingStill() override { return true; } // nothing ever moves
 };
 
 SimulatorOptions seeded(quint32 seed)

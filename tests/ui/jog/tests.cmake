@@ -2,3 +2,7 @@
 stepdeck_add_test(tst_jogsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogsafety.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui TIMEOUT 300)
+# Jog by short targets (Capabilities::jogByTargets) against the in-process laser-axis simulator.
+stepdeck_add_test(tst_targetjogger SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_targetjogger.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

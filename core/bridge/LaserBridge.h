@@ -1,0 +1,165 @@
+#pragma once
+#include "bridge/LaserBridgeConfig.h"
+#include "controller/ControllerSession.h"
+#include "protocols/laser/LaserCodec.h"
+#include <QDateTime>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+namespace stepdeck {
+class Transport;
+}
+
+namespace stepdeck::bridge {
+
+// StepDeck as the motor axes of a laser marker (manual: laser-motoraxis-rs232.en.txt), with
+// any controller behind it. The bridge answers the laser's frames on the laser port (9600 8N1)
+// and drives the controller only through its ControllerSession, respecting its capabilities
+// and refusals -- so the CLI command `laser-bridge` and the GUI's Laser bridge page share it.
+//
+// Per laser axis:
+// - home: the controller's reference run for the mapped axis; answers '2' at 00000.
+// - move: goes to target x scale steps from the reference; answers '0' with the position in
+//   laser units once the axis stands at the target. An axis not referenced since the bridge
+//   started (or unreferenced by the controller since) is referenced first.
+// - A target that arrives while the axis moves replaces the old one: controllers with a
+//   ramped stop are stopped, and once they stand every axis goes on to its newest target;
+//   others (no stop, or a stop that loses the position) first arrive, then go to the newest.
+// - A move the controller refuses because another axis moves waits until it is idle; one it
+//   refuses at an active limit switch is answered '1'; other refusals are logged and not
+//   answered (the laser raises its timeout alarm).
+// - An axis that stops at a limit switch is answered '1', at its reference switch '2'; one that
+//   stops short for another reason (the operator's STOP or PANIC) is not answered: the
+//   operator keeps priority. Targets that arrive while the operator jogs are dropped.
+// - Malformed frames are logged and ignored; they never move anything.
+// - Door (setDoorOpen, e.g. from a controller input): open stops motion where the controller
+//   can and answers '3'; closed answers '4' and the axes go on to their targets.
+class LaserBridge : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Phase { Idle, Referencing, Moving, Waiting, Stopping };
+    struct AxisView
+    {
+        Axis laserAxis = Axis::X;
+        Axis controllerAxis = Axis::X;
+        Phase phase = Phase::Idle;
+        std::optional<laser::CommandFrame> target; // the laser's newest unanswered command
+        bool referenced = false;                   // referenced by the bridge since it started
+        std::optional<laser::StatusFrame> lastAnswer;
+    };
+    struct LogEntry
+    {
+        enum class Kind { FromLaser, ToLaser, Ignored, Note, Error };
+        QDateTime time;
+        Kind kind = Kind::Note;
+        QByteArray frame; // without CR; empty for notes
+        QString text;
+    };
+
+    LaserBridge(ControllerSession* session, Transport* laserPort, const LaserBridgeConfig& config,
+                QObject* parent = nullptr);
+    ~LaserBridge() override;
+
+    const LaserBridgeConfig& config() const { return m_config; }
+    // Opens the laser port (9600 8N1): started() or failed() follows.
+    void start();
+    // Stops the motion the bridge started (where the controller has a stop), closes the laser
+    // port; finished() follows (at once when nothing moves).
+    void shutdown();
+    bool isRunning() const { return m_running; }
+    QList<AxisView> axes() const;
+    static QString phaseName(Phase phase);
+    // The door switch on a controller input: models that publish their digital inputs as the
+    // bitmask MachineStatus::raw["inputs"] (bit 0 = input 1). Set means the door is open.
+    // std::nullopt where the model publishes no inputs.
+    static std::optional<bool> doorInputState(const MachineStatus& status, int input);
+    static QString formatLogEntry(const LogEntry& entry);
+
+public Q_SLOTS:
+    void setDoorOpen(bool open);
+
+Q_SIGNALS:
+    void started();
+    void failed(const QString& reason);
+    void finished();
+    void logged(const stepdeck::bridge::LaserBridge::LogEntry& entry);
+    void axisChanged(const stepdeck::bridge::LaserBridge::AxisView& view);
+
+private:
+    struct Job
+    {
+        enum class Kind { None, Reference, Move };
+        Kind kind = Kind::None;
+        RequestId id = 0;          // the motion request
+        RequestId confirmId = 0;   // the status read that confirms standstill
+        bool accepted = false;     // the controller took it; waiting for standstill
+        laser::CommandFrame frame; // the laser command it serves
+        qint64 steps = 0;          // Move: target in controller steps
+    };
+    struct Slot
+    {
+        Axis laserAxis = Axis::X;
+        Axis axis = Axis::X; // on the controller
+        std::optional<laser::CommandFrame> wanted;
+        Job job;
+        bool referenced = false;
+        bool waitingForIdle = false;
+        std::optional<laser::StatusFrame> lastAnswer;
+    };
+    enum class StopStage { None, Requested, Settling, Confirming };
+
+    // --- laser side (LaserBridge.cpp) ---
+    void onLaserOpened();
+    void onLaserFailed(const QString& reason);
+    void onLaserData(const QByteArray& bytes);
+    void onCommand(const laser::CommandFrame& frame);
+    void answer(Slot& slot, laser::Status status, std::optional<qint64> steps);
+    void reportDoor(laser::Status status);
+    void log(LogEntry::Kind kind, const QString& text, const QByteArray& frame = {});
+    void publish(const Slot& slot);
+    void finishShutdown();
+
+    // --- controller side (LaserBridgeMotion.cpp) ---
+    void dispatch(Slot& slot);
+    void startReference(Slot& slot);
+    void startMove(Slot& slot);
+    void retarget(Slot& slot);
+    bool canStopToRetarget() const;
+    void requestStop();
+    void onResult(const CommandResult& result);
+    void onStatus(const MachineStatus& status);
+    void checkStandstill(Slot& slot);
+    void conclude(Slot& slot);
+    void concludeReference(Slot& slot, const AxisStatus& axis);
+    void concludeMove(Slot& slot, const AxisStatus& axis);
+    void onRefused(Slot& slot, const CommandResult& result);
+    void onStopResult(const CommandResult& result);
+    void advanceStop();
+    void redispatchAll();
+    bool controllerIdle() const;
+    bool referencedNow(const Slot& slot) const;
+    Slot* slotForRequest(RequestId id);
+    void drop(Slot& slot, const QString& why);
+
+    QPointer<ControllerSession> m_session;
+    QPointer<Transport> m_laser;
+    LaserBridgeConfig m_config;
+    Capabilities m_caps;
+    laser::CommandDecoder m_decoder;
+    QMap<Axis, Slot> m_slots; // by laser axis
+    StopStage m_stop = StopStage::None;
+    RequestId m_stopId = 0;
+    RequestId m_stopConfirmId = 0;
+    bool m_running = false;
+    bool m_shuttingDown = false;
+    bool m_doorOpen = false;
+    bool m_doorReportPending = false; // '3' goes out when the stop for the door has settled
+    QTimer m_shutdownTimeout{this};
+};
+
+} // namespace stepdeck::bridge
+
+Q_DECLARE_METATYPE(stepdeck::bridge::LaserBridge::LogEntry)
+Q_DECLARE_METATYPE(stepdeck::bridge::LaserBridge::AxisView)

@@ -1,0 +1,310 @@
+// The controller side of the bridge: reference and move requests through the session,
+// standstill confirmed by a status read, retargeting by stop where the controller allows it.
+#include "LaserBridge.h"
+#include "Logging.h"
+
+namespace stepdeck::bridge {
+
+using namespace stepdeck::laser;
+
+bool LaserBridge::referencedNow(const Slot& slot) const
+{
+    // Referenced by the bridge since it started, and not lost since (panic, reconnect, a stop
+    // without ramp): the controller's own flag says the latter.
+    const AxisStatus axis = m_session->status().axes.value(slot.axis);
+    return slot.referenced && axis.referenced && axis.positionKnown;
+}
+
+bool LaserBridge::controllerIdle() const
+{
+    for (const AxisStatus& a : m_session->status().axes) {
+        if (a.moving || a.jogging)
+            return false;
+    }
+    return true;
+}
+
+void LaserBridge::drop(Slot& slot, const QString& why)
+{
+    log(LogEntry::Kind::Error,
+        tr("%1: %2; no answer to the laser (it raises its timeout alarm)")
+            .arg(slot.wanted ? commandText(*slot.wanted) : axisName(slot.laserAxis), why));
+    slot.wanted.reset();
+    slot.waitingForIdle = false;
+    publish(slot);
+}
+
+void LaserBridge::dispatch(Slot& slot)
+{
+    slot.waitingForIdle = false;
+    if (!slot.wanted || m_shuttingDown)
+        return;
+    if (!m_session || m_session->linkState() != LinkState::Connected)
+        return drop(slot, tr("the controller is not connected"));
+    if (m_session->status().axes.value(slot.axis).jogging)
+        return drop(slot, tr("the operator is jogging axis %1").arg(axisName(slot.axis)));
+    if (slot.wanted->command == Command::Home || !referencedNow(slot))
+        startReference(slot);
+    else
+        startMove(slot);
+    publish(slot);
+}
+
+void LaserBridge::startReference(Slot& slot)
+{
+    const int direction = m_config.homeDirection(slot.axis);
+    if (slot.wanted->command == Command::Move) {
+        log(LogEntry::Kind::Note, tr("axis %1 not referenced since the bridge started: "
+                                     "referencing it first")
+                                      .arg(axisName(slot.axis)));
+    }
+    slot.referenced = false;
+    slot.job = Job{Job::Kind::Reference, 0, 0, false, *slot.wanted, 0};
+    slot.job.id = m_session->reference({{slot.axis, direction}});
+}
+
+void LaserBridge::startMove(Slot& slot)
+{
+    // Range-checked as double first: target x scale can leave the integer range.
+    const double steps = double(slot.wanted->position) * m_config.scale;
+    if (!(qAbs(steps) < 9e15))
+        return drop(slot, tr("target x scale is out of range"));
+    slot.job = Job{Job::Kind::Move, 0, 0, false, *slot.wanted, qRound64(steps)};
+    slot.job.id = m_session->moveAbsolute({{slot.axis, slot.job.steps}});
+}
+
+bool LaserBridge::canStopToRetarget() const
+{
+    // A stop that loses the position (no ramp: Nanotec 'S') would force a new reference run
+    // for every retarget; such controllers finish the move first.
+    return m_caps.stopCommand && m_caps.rampedStop;
+}
+
+void LaserBridge::retarget(Slot& slot)
+{
+    if (!slot.job.accepted || slot.job.confirmId != 0)
+        return; // the request or its confirmation is under way; conclude() sees the new target
+    if (canStopToRetarget()) {
+        log(LogEntry::Kind::Note,
+            tr("new target for axis %1 while it moves: stopping first").arg(axisName(slot.axis)));
+        requestStop();
+    } else {
+        log(LogEntry::Kind::Note, tr("new target for axis %1 while it moves: the controller "
+                                     "cannot retarget without a ramped stop, so it arrives "
+                                     "first")
+                                      .arg(axisName(slot.axis)));
+    }
+}
+
+void LaserBridge::requestStop()
+{
+    if (m_stop != StopStage::None || !m_session)
+        return;
+    bool anyJob = false;
+    for (const Slot& slot : std::as_const(m_slots))
+        anyJob = anyJob || slot.job.kind != Job::Kind::None;
+    if (!anyJob)
+        return;
+    if (!m_caps.stopCommand) {
+        log(LogEntry::Kind::Error,
+            tr("the controller has no stop command: the axes go on to their targets"));
+        return;
+    }
+    m_stop = StopStage::Requested;
+    m_stopId = m_session->stop();
+    for (const Slot& slot : std::as_const(m_slots))
+        publish(slot);
+}
+
+LaserBridge::Slot* LaserBridge::slotForRequest(RequestId id)
+{
+    for (Slot& slot : m_slots) {
+        if (slot.job.kind != Job::Kind::None && (slot.job.id == id || slot.job.confirmId == id))
+            return &slot;
+    }
+    return nullptr;
+}
+
+void LaserBridge::onResult(const CommandResult& result)
+{
+    if (result.id == m_stopId || (m_stopConfirmId != 0 && result.id == m_stopConfirmId))
+        return onStopResult(result);
+    Slot* slot = slotForRequest(result.id);
+    if (!slot)
+        return; // not the bridge's (the operator's pages share the session)
+    if (result.id == slot->job.confirmId) {
+        slot->job.confirmId = 0;
+        if (!result.ok()) {
+            slot->job = Job{};
+            return drop(*slot,
+                        tr("the controller's status could not be read: %1").arg(result.message));
+        }
+        return conclude(*slot);
+    }
+    if (!result.ok())
+        return onRefused(*slot, result);
+    slot->job.accepted = true;
+    const bool superseded = slot->wanted && !(*slot->wanted == slot->job.frame);
+    if (superseded && canStopToRetarget())
+        requestStop();
+    else if (m_stop == StopStage::None)
+        checkStandstill(*slot);
+}
+
+void LaserBridge::onRefused(Slot& slot, const CommandResult& result)
+{
+    const Job job = std::exchange(slot.job, Job{});
+    publish(slot);
+    if (m_stop != StopStage::None || m_shuttingDown)
+        return; // the stop under way dropped it; redispatchAll() sends the newest target
+    if (slot.wanted && !(*slot.wanted == job.frame))
+        return dispatch(slot); // superseded meanwhile
+    const AxisStatus axis = m_session->status().axes.value(slot.axis);
+    if (result.error == ErrorKind::Refused && axis.limitSwitch) {
+        log(LogEntry::Kind::Note,
+            tr("controller refused at an active limit switch: %1").arg(result.message));
+        return answer(slot, Status::EndSwitch,
+                      axis.positionKnown ? std::optional<qint64>(axis.position) : std::nullopt);
+    }
+    if (result.error == ErrorKind::Refused && !controllerIdle()) {
+        slot.waitingForIdle = true;
+        log(LogEntry::Kind::Note, tr("axis %1 waits until the controller is idle (%2)")
+                                      .arg(axisName(slot.axis), result.message));
+        return publish(slot);
+    }
+    drop(slot, tr("the controller did not take it: %1").arg(result.message));
+}
+
+void LaserBridge::onStatus(const MachineStatus& status)
+{
+    if (!m_running || m_shuttingDown)
+        return;
+    if (m_config.doorInput) {
+        if (const std::optional<bool> open = doorInputState(status, *m_config.doorInput))
+            setDoorOpen(*open);
+    }
+    if (m_stop != StopStage::None)
+        return advanceStop();
+    for (Slot& slot : m_slots) {
+        if (slot.job.kind != Job::Kind::None && slot.job.accepted && slot.job.confirmId == 0)
+            checkStandstill(slot);
+    }
+    if (!controllerIdle() || m_doorOpen)
+        return;
+    for (Slot& slot : m_slots) {
+        if (slot.waitingForIdle && slot.job.kind == Job::Kind::None)
+            dispatch(slot);
+    }
+}
+
+void LaserBridge::checkStandstill(Slot& slot)
+{
+    const AxisStatus axis = m_session->status().axes.value(slot.axis);
+    if (axis.jogging) {
+        slot.job = Job{};
+        return drop(slot, tr("the operator took over axis %1").arg(axisName(slot.axis)));
+    }
+    if (axis.moving)
+        return;
+    // Standing: one more complete status read, so a position the adapter corrects after a
+    // stop (E-LAB RequestRelPosition) is in before the bridge answers.
+    slot.job.confirmId = m_session->refreshStatus();
+}
+
+void LaserBridge::conclude(Slot& slot)
+{
+    const AxisStatus axis = m_session->status().axes.value(slot.axis);
+    if (axis.moving) { // moving again (the operator, or a late status): wait once more
+        if (m_stop == StopStage::None)
+            checkStandstill(slot);
+        return;
+    }
+    if (slot.job.kind == Job::Kind::Reference)
+        concludeReference(slot, axis);
+    else
+        concludeMove(slot, axis);
+}
+
+void LaserBridge::concludeReference(Slot& slot, const AxisStatus& axis)
+{
+    slot.job = Job{};
+    if (axis.referenced && axis.positionKnown) {
+        slot.referenced = true;
+        if (slot.wanted && slot.wanted->command == Command::Home)
+            return answer(slot, Status::HomeSwitch, qint64(0));
+        return dispatch(slot); // home before the first move: now the move
+    }
+    if (axis.limitSwitch)
+        return answer(slot, Status::EndSwitch, std::nullopt);
+    drop(slot, tr("axis %1 stopped before it was referenced").arg(axisName(slot.axis)));
+}
+
+void LaserBridge::concludeMove(Slot& slot, const AxisStatus& axis)
+{
+    const Job job = std::exchange(slot.job, Job{});
+    if (slot.wanted && !(*slot.wanted == job.frame))
+        return dispatch(slot); // a newer target arrived while it moved
+    const std::optional<qint64> at =
+        axis.positionKnown ? std::optional<qint64>(axis.position) : std::nullopt;
+    if (axis.limitSwitch)
+        return answer(slot, Status::EndSwitch, at);
+    if (at && *at == job.steps)
+        return answer(slot, Status::TargetReached, at);
+    if (axis.referenceSwitch)
+        return answer(slot, Status::HomeSwitch, at);
+    drop(slot, tr("axis %1 stopped at %2 steps, short of its target %3 (stopped by the operator?)")
+                   .arg(axisName(slot.axis))
+                   .arg(at ? QString::number(*at) : tr("an unknown position"))
+                   .arg(job.steps));
+}
+
+void LaserBridge::onStopResult(const CommandResult& result)
+{
+    if (result.id == m_stopId) {
+        m_stopId = 0;
+        if (!result.ok()) {
+            log(LogEntry::Kind::Error, tr("stop failed: %1").arg(result.message));
+            if (m_shuttingDown)
+                return finishShutdown();
+            // Back to waiting for arrival: the jobs still run.
+            m_stop = StopStage::None;
+            if (std::exchange(m_doorReportPending, false))
+                reportDoor(Status::DoorOpened);
+            return;
+        }
+        if (m_shuttingDown)
+            return finishShutdown();
+        m_stop = StopStage::Settling;
+        return advanceStop();
+    }
+    m_stopConfirmId = 0;
+    if (!result.ok())
+        log(LogEntry::Kind::Error, tr("status after the stop: %1").arg(result.message));
+    m_stop = StopStage::None;
+    if (std::exchange(m_doorReportPending, false))
+        reportDoor(Status::DoorOpened);
+    redispatchAll();
+}
+
+void LaserBridge::advanceStop()
+{
+    if (m_stop != StopStage::Settling || !controllerIdle())
+        return;
+    m_stop = StopStage::Confirming;
+    m_stopConfirmId = m_session->refreshStatus();
+}
+
+void LaserBridge::redispatchAll()
+{
+    for (Slot& slot : m_slots) {
+        slot.job = Job{};
+        slot.waitingForIdle = slot.wanted.has_value();
+        if (m_doorOpen || !slot.wanted) {
+            publish(slot);
+            continue;
+        }
+        dispatch(slot);
+    }
+}
+
+} // namespace stepdeck::bridge

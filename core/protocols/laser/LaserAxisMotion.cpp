@@ -1,0 +1,260 @@
+// Targets out, status frames in: the motion part of the laser-axis adapter.
+#include "LaserAxisController.h"
+#include "Logging.h"
+#include "transport/Transport.h"
+
+namespace stepdeck::laser {
+
+QString LaserAxisController::checkTargets(const AxisVector& targets) const
+{
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
+        if (!m_tracks.contains(it.key()))
+            return tr("this machine has no axis %1").arg(axisName(it.key()));
+        if (!isValidPosition(it.value())) {
+            return tr("target %1 for axis %2 is out of range (allowed: 0..%3)")
+                .arg(it.value())
+                .arg(axisName(it.key()))
+                .arg(kMaxPosition);
+        }
+    }
+    return {};
+}
+
+void LaserAxisController::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    if (const QString bad = checkTargets(targets); !bad.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, bad);
+    if (!requireLink(id))
+        return;
+    if (targets.isEmpty())
+        return finishOk(id);
+    QMap<Axis, int> out;
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it)
+        out.insert(it.key(), int(it.value()));
+    sendTargets(id, Command::Move, out);
+}
+
+void LaserAxisController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    AxisVector targets;
+    for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
+        if (!m_tracks.contains(it.key())) {
+            return finishError(id, ErrorKind::InvalidValue,
+                               tr("this machine has no axis %1").arg(axisName(it.key())));
+        }
+        // From the target the axis is heading for, else from where it last said it is.
+        const Track& track = m_tracks[it.key()];
+        const AxisStatus& axis = status().axes.value(it.key());
+        if (!track.awaiting && !axis.positionKnown) {
+            return finishError(id, ErrorKind::Refused,
+                               tr("relative move refused: the position of axis %1 is unknown (no "
+                                  "status frame from it in this session); home it or move it to "
+                                  "an absolute target first")
+                                   .arg(axisName(it.key())));
+        }
+        const qint64 from = track.awaiting && track.command == Command::Move ? track.target
+                            : track.awaiting                                 ? 0
+                                                                             : axis.position;
+        targets.insert(it.key(), from + it.value());
+    }
+    moveAbsolute(id, targets);
+}
+
+void LaserAxisController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    // The axis homes toward its home switch whatever the direction; 0 leaves an axis out, as
+    // on the other models.
+    QMap<Axis, int> homes;
+    for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
+        if (!m_tracks.contains(it.key())) {
+            return finishError(id, ErrorKind::InvalidValue,
+                               tr("this machine has no axis %1").arg(axisName(it.key())));
+        }
+        if (it.value() != 0)
+            homes.insert(it.key(), 0);
+    }
+    if (homes.isEmpty()) {
+        return finishError(id, ErrorKind::InvalidValue,
+                           tr("no axis to home: every direction is 0"));
+    }
+    if (!requireLink(id))
+        return;
+    sendTargets(id, Command::Home, homes);
+}
+
+void LaserAxisController::replaceTargetOf(Axis axis)
+{
+    // "the axis should discard the previous target-position and proceed directly to the last
+    // commanded target-position": whoever waited for the old one learns it was replaced.
+    for (int i = m_pending.size() - 1; i >= 0; --i) {
+        if (!m_pending.at(i).waiting.contains(axis))
+            continue;
+        const RequestId id = m_pending.takeAt(i).id;
+        finishError(id, ErrorKind::Cancelled,
+                    tr("replaced by a newer target for axis %1").arg(axisName(axis)));
+    }
+}
+
+void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets)
+{
+    QByteArray frames;
+    Pending pending{id, command, {}, {}};
+    const qint64 deadline = m_clock.elapsed() + qMax(1, options().arrivalTimeoutMs);
+    for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
+        replaceTargetOf(it.key());
+        frames += encodeCommand({command, it.key(), it.value()});
+        Track& track = m_tracks[it.key()];
+        track = Track{true, true, command, it.value(), deadline};
+        AxisStatus& axis = mutableStatus().axes[it.key()];
+        axis.moving = true; // commanded; MachineStatus::motionUnconfirmed says it is not seen
+        axis.limitSwitch = axis.referenceSwitch = false;
+        pending.waiting << it.key();
+    }
+    recordTraffic(TrafficRecord::Direction::Out, frames, false);
+    if (transport()->write(frames) < 0) {
+        finishError(id, ErrorKind::LinkDown, tr("not connected"));
+        return abortHostSide(ErrorKind::LinkDown, tr("not connected"));
+    }
+    m_pending << pending;
+    armDeadline();
+    updateMachineFlags();
+    publishStatus();
+}
+
+void LaserAxisController::onStatusFrame(const StatusFrame& frame)
+{
+    if (!m_tracks.contains(frame.axis))
+        return;
+    const Track& track = m_tracks[frame.axis];
+    AxisStatus& axis = mutableStatus().axes[frame.axis];
+    axis.position = frame.position;
+    axis.positionKnown = true;
+    axis.positionEstimated = false;
+    bool settles = false;
+    switch (frame.status) {
+    case Status::TargetReached:
+        axis.limitSwitch = axis.referenceSwitch = false;
+        if (track.awaiting && track.command == Command::Home)
+            axis.referenced = true; // '0' after a home command: the axis is home
+        settles = true;
+        break;
+    case Status::EndSwitch:
+        axis.limitSwitch = true;
+        axis.lastSwitch = SwitchEvent::Limit;
+        settles = true;
+        break;
+    case Status::HomeSwitch:
+        // "The home position is also the '0' position of the axis."
+        axis.referenceSwitch = true;
+        axis.lastSwitch = SwitchEvent::Reference;
+        axis.referenced = true;
+        // On the way to a target the axis homes first and goes on: not the end of a move.
+        settles = !(track.awaiting && track.command == Command::Move);
+        break;
+    case Status::DoorOpened:
+    case Status::DoorClosed:
+        // The door stops the motor but not its attempt to reach the target: keep waiting.
+        mutableStatus().doorOpen = frame.status == Status::DoorOpened;
+        break;
+    }
+    if (settles)
+        return settle(frame.axis, frame.status == Status::EndSwitch);
+    updateMachineFlags();
+    publishStatus();
+}
+
+void LaserAxisController::settle(Axis axis, bool endSwitch)
+{
+    Track& track = m_tracks[axis];
+    const bool wasAwaiting = track.awaiting;
+    track.awaiting = false;
+    track.unconfirmed = false;
+    mutableStatus().axes[axis].moving = false;
+    // The status first, then the results: whoever waits for a result reads a current status.
+    updateMachineFlags();
+    publishStatus();
+    armDeadline();
+    if (endSwitch && wasAwaiting) {
+        Q_EMIT errorOccurred(tr("axis %1 stopped at its end switch at %2 before reaching %3")
+                                 .arg(axisName(axis))
+                                 .arg(status().axes.value(axis).position)
+                                 .arg(track.target));
+    }
+    for (int i = m_pending.size() - 1; i >= 0; --i) {
+        Pending& p = m_pending[i];
+        if (!p.waiting.removeOne(axis))
+            continue;
+        if (endSwitch)
+            p.endSwitch << axisName(axis);
+        if (!p.waiting.isEmpty())
+            continue;
+        const Pending done = m_pending.takeAt(i);
+        QVariantMap value;
+        if (!done.endSwitch.isEmpty())
+            value.insert(QStringLiteral("endSwitch"), done.endSwitch);
+        finishOk(done.id, value.isEmpty() ? QVariant() : QVariant(value));
+    }
+}
+
+void LaserAxisController::armDeadline()
+{
+    qint64 earliest = -1;
+    for (const Track& t : std::as_const(m_tracks)) {
+        if (t.awaiting && (earliest < 0 || t.deadlineMs < earliest))
+            earliest = t.deadlineMs;
+    }
+    if (earliest < 0) {
+        m_deadline.stop();
+        return;
+    }
+    m_deadline.start(
+        int(qBound<qint64>(0, earliest - m_clock.elapsed(), qint64(24) * 3600 * 1000)));
+}
+
+void LaserAxisController::onDeadline()
+{
+    const qint64 now = m_clock.elapsed();
+    QList<QPair<Axis, QString>> expired;
+    for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
+        if (!it->awaiting || it->deadlineMs > now)
+            continue;
+        it->awaiting = false; // still unconfirmed: it may be moving yet
+        mutableStatus().axes[it.key()].moving = false;
+        expired.append({it.key(), tr("axis %1 did not report reaching its target %2 within %3 s; "
+                                     "it may still be moving")
+                                      .arg(axisName(it.key()))
+                                      .arg(it->command == Command::Home ? 0 : it->target)
+                                      .arg(options().arrivalTimeoutMs / 1000.0)});
+    }
+    armDeadline();
+    updateMachineFlags();
+    publishStatus();
+    for (const auto& [axis, why] : expired) {
+        qCWarning(lcLaser) << why;
+        for (int i = m_pending.size() - 1; i >= 0; --i) {
+            if (m_pending.at(i).waiting.contains(axis))
+                finishError(m_pending.takeAt(i).id, ErrorKind::Timeout, why);
+        }
+        Q_EMIT errorOccurred(why);
+    }
+}
+
+void LaserAxisController::updateMachineFlags()
+{
+    MachineStatus& s = mutableStatus();
+    bool busy = false;
+    bool unconfirmed = false;
+    for (const Track& t : std::as_const(m_tracks)) {
+        busy = busy || t.awaiting;
+        unconfirmed = unconfirmed || t.unconfirmed;
+    }
+    s.busy = busy;
+    // A target out and no status frame back yet: the host cannot know that the axis stands.
+    // Cleared only when every axis has reported since its last target.
+    if (unconfirmed)
+        s.motionUnconfirmed = true;
+    else
+        noteStandstillConfirmed();
+}
+
+} // namespace stepdeck::laser

@@ -1,0 +1,76 @@
+#include "LaserModel.h"
+#include "LaserAxisController.h"
+#include "LaserAxisSimulator.h"
+#include "LaserCodec.h"
+#include <QCoreApplication>
+
+namespace stepdeck::laser {
+
+LineSettings lineSettings()
+{
+    LineSettings line;
+    line.baudRate = 9600;
+    line.dataBits = 8;
+    line.stopBits = 1;
+    line.parity = LineSettings::Parity::None;
+    return line;
+}
+
+Capabilities capabilities()
+{
+    Capabilities caps;
+    caps.axes = {Axis::X, Axis::Y, Axis::Z}; // "up to 3 motoraxis"
+    // Relative moves are converted to targets from the last reported position.
+    caps.motionModes = {MotionMode::RelativeMove, MotionMode::AbsoluteMove, MotionMode::Reference};
+    caps.positionReadback = true; // "actual-position" in every status response
+    caps.rampedStop = false;
+    caps.stopCommand = false; // only "move to home" and "move to position" exist
+    caps.panic = false;
+    caps.statusQuery = false;   // "The axis can send at any time a status response"
+    caps.reportsArrival = true; // "... after having reached its last commanded target"
+    caps.jogByTargets = true;   // no jog command: short targets one after the other
+    caps.doorSwitch = true;     // status '3' door opened, '4' door closed
+    // Position units per second a jog target may cover per second of stick deflection; the
+    // protocol has no speed, so this only sizes the short targets.
+    caps.maxJogSpeed = 2000;
+    caps.defaultJogAcceleration = 1e9; // no host ramp: each target is a move of its own
+    return caps;
+}
+
+ModelPresentation presentation()
+{
+    ModelPresentation p;
+    p.formatTraffic = &genericFormatTraffic;
+    p.parseTraffic = [](const QString& text, QByteArray* bytes, QString* error) {
+        if (!genericParseTraffic(text, bytes, error))
+            return false;
+        if (!bytes->endsWith(kCr))
+            *bytes += kCr;
+        return true;
+    };
+    return p;
+}
+
+ModelInfo modelInfo()
+{
+    ModelInfo info;
+    info.id = QStringLiteral("laser-axis");
+    info.displayName = QStringLiteral("Laser marker motor axes (RS232)");
+    info.line = lineSettings();
+    info.capabilities = capabilities();
+    info.schema = ParameterSchema{};
+    info.createController = [](Transport* transport, const ControllerOptions& options) {
+        return static_cast<Controller*>(new LaserAxisController(transport, options));
+    };
+    info.createSimulator = [](const SimulatorOptions& options) {
+        return static_cast<Simulator*>(new LaserAxisSimulator(options));
+    };
+    info.presentation = presentation();
+    return info;
+}
+
+// The registry's display name, shown through QCoreApplication::translate("Models", ...).
+[[maybe_unused]] static const char* const kDisplayNameForTranslation =
+    QT_TRANSLATE_NOOP("Models", "Laser marker motor axes (RS232)");
+
+} // namespace stepdeck::laser
