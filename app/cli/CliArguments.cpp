@@ -77,8 +77,8 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
 {
     const QString& arg = argv.at(*i);
     const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model",   "--port",    "--address",
-                                   "--axes",    "--timeout", "--reset-line"};
+    static const QStringList names{"--model", "--port",    "--address",
+                                   "--axes",  "--timeout", "--reset-line"};
     *matched = names.contains(name);
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))
@@ -278,7 +278,10 @@ QString usageText()
               "                              only; a multi-axis feed is streamed by the host)\n"
               "  stop | panic | reset        ramped stop | emergency stop | hardware reset\n"
               "  spindle RPM | coolant on|off | power PERCENT\n"
-              "  scan [--first N] [--last N] drives answering on the bus (addresses 1..254):\n"
+              "                              spindle speed, coolant, drive power in percent\n"
+              "                              (checked against the parameter ranges)\n"
+              "  scan [--first N] [--last N]\n"
+              "                              drives answering on the bus (addresses 1..254):\n"
               "                              address and firmware string (multi-drive models\n"
               "                              such as nanotec; others exit 8)\n"
               "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"

@@ -79,6 +79,8 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         QString value;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
+        } else if (name == QLatin1String("--version") || name == QLatin1String("-v")) {
+            s.version = true;
         } else if (name == QLatin1String("--pace")) {
             s.pace = true;
         } else if (name == QLatin1String("--setup-complete")) {
@@ -124,14 +126,13 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
 
 QString simUsage()
 {
-    return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [--pace] [--setup-complete]\n"
-              "                    [--temperature C] [--limit AXIS=MIN:MAX]... [--position "
-              "AXIS=STEPS]...\n"
+    return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
               "\n"
               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
               "until SIGINT/SIGTERM.\n"
               "\n"
+              "Options:\n"
               "  --model MODEL      controller model (default elab)\n"
               "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
               "  --pace             release replies at the line's character rate (57600 8N2\n"
@@ -140,7 +141,8 @@ QString simUsage()
               "                     (the board powers on with setup incomplete)\n"
               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on\n");
+              "  --position AXIS=STEPS  where the carriage stands at power-on\n"
+              "  --help, --version\n");
 }
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)

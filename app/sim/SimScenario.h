@@ -26,6 +26,7 @@ struct SimScenario
     QMap<Axis, LimitRange> limits;
     QMap<Axis, qint64> positions;
     bool help = false;
+    bool version = false;
 };
 
 bool parseScenario(const QStringList& args, SimScenario* scenario, QString* error);
