@@ -7,18 +7,47 @@
 #include "protocols/Registry.h"
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QTextStream>
 #include <QTimer>
 
 using namespace stepdeck;
 
+namespace {
+// --help and --version are answered before QApplication connects to a display: they must work
+// over ssh, in scripts and in a build chroot (the man page is generated from --help).
+bool asksForTextOnly(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArrayView arg(argv[i]);
+        if (arg == "--")
+            break;
+        if (arg == "-h" || arg == "-?" || arg == "--help" || arg == "--help-all" || arg == "-v" ||
+            arg == "--version")
+            return true;
+    }
+    return false;
+}
+
+// The window icon from resources/stepdeck.qrc; the installed desktop entry and the hicolor
+// icons carry the same picture for menus and the task bar (resources/icons).
+QIcon applicationIcon()
+{
+    QIcon icon;
+    for (const int size : {16, 24, 32, 48, 64, 128, 256})
+        icon.addFile(QStringLiteral(":/icons/stepdeck-%1.png").arg(size), QSize(size, size));
+    return icon;
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
-    QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("StepDeck"));
     QApplication::setOrganizationDomain(QStringLiteral("stepdeck.invalid"));
     QApplication::setApplicationName(QStringLiteral("StepDeck"));
     QApplication::setApplicationVersion(QStringLiteral(STEPDECK_VERSION));
+    // Wayland app id and X11 desktop-file hint: ties the windows to the menu entry's icon.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.stepdeck.StepDeck"));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("StepDeck stepper-motor controller GUI"));
@@ -41,6 +70,14 @@ int main(int argc, char** argv)
                                   QStringLiteral("User interface language (en, de)."),
                                   QStringLiteral("CODE"));
     parser.addOptions({simulate, model, port, screenshot, lang});
+    if (asksForTextOnly(argc, argv)) {
+        const QCoreApplication textOnly(argc, argv);
+        parser.process(textOnly); // prints help or version (or the usage error) and exits
+        return 0;
+    }
+
+    QApplication app(argc, argv);
+    QApplication::setWindowIcon(applicationIcon());
     parser.process(app);
 
     ui::translations::install(&app, parser.isSet(lang) ? parser.value(lang)

@@ -154,6 +154,8 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
             continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
+        } else if (name == QLatin1String("--version") || name == QLatin1String("-v")) {
+            s.version = true;
         } else if (name == QLatin1String("--pace")) {
             s.pace = true;
         } else if (name == QLatin1String("--setup-complete")) {
@@ -209,17 +211,13 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
 
 QString simUsage()
 {
-    return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [--pace] [--setup-complete]\n"
-              "                    [--temperature C] [--limit AXIS=MIN:MAX]... [--position "
-              "AXIS=STEPS]...\n"
-              "                    [--drop P] [--corrupt P] [--noise BYTES_PER_S]\n"
-              "                    [--freeze-after MS] [--seed N]\n"
-              "                    [--speed UNITS] [--end-switch AXIS=POS]... [--silent] [--garbage]\n"
+    return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
               "\n"
               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
               "until SIGINT/SIGTERM.\n"
               "\n"
+              "Options:\n"
               "  --model MODEL      controller model (default elab)\n"
               "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
               "  --pace             release replies at the line's character rate (57600 8N2\n"
@@ -245,7 +243,8 @@ QString simUsage()
               "                     inside replies\n"
               "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
               "                     all while the terminal stays open (a frozen peer)\n"
-              "  --seed N           seed of the fault generator (default 1)\n");
+              "  --seed N           seed of the fault generator (default 1)\n"
+              "  --help, --version\n");
 }
 
 void applyFaults(const SimScenario& scenario, Simulator* simulator)

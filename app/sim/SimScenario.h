@@ -37,6 +37,7 @@ struct SimScenario
     bool silent = false;
     bool garbage = false;
     bool help = false;
+    bool version = false;
 };
 
 bool parseScenario(const QStringList& args, SimScenario* scenario, QString* error);

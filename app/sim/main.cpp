@@ -27,6 +27,7 @@ int main(int argc, char** argv)
 {
     QCoreApplication application(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("stepdeck-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(STEPDECK_VERSION));
 
     simapp::SimScenario scenario;
     QString error;
@@ -36,6 +37,11 @@ int main(int argc, char** argv)
     }
     if (scenario.help) {
         printTo(stdout, simapp::simUsage());
+        return 0;
+    }
+    if (scenario.version) {
+        printTo(stdout,
+                QStringLiteral("stepdeck-sim %1").arg(QCoreApplication::applicationVersion()));
         return 0;
     }
     const ModelInfo* model = findModel(scenario.model);
