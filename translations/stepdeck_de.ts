@@ -3087,7 +3087,7 @@
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::ParameterFile</name>
+        <name>stepdeck::ParameterFile</name>
         <message>
             <source>Cannot write %1: %2</source>
             <translation>%1 kann nicht geschrieben werden: %2</translation>

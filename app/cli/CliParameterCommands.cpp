@@ -1,9 +1,7 @@
 // set, get, export, import: all driven by the model's ParameterSchema.
 #include "CliCommands.h"
+#include "model/ParameterFile.h"
 #include <QCoreApplication>
-#include <QFile>
-#include <QJsonDocument>
-#include <QSaveFile>
 
 namespace stepdeck::cli {
 
@@ -166,14 +164,10 @@ Outcome cmdExport(CliContext& c, QStringList args)
             origin.insert(it.key(), QStringLiteral("device"));
         }
     }
-    QJsonObject json = c.model->schema.toJson(c.model->id, set);
-    json.insert(QStringLiteral("origin"), origin);
-
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(QJsonDocument(json).toJson(QJsonDocument::Indented)) < 0 || !file.commit()) {
-        return Outcome::failure(ExitFile, tr("cannot write %1: %2").arg(path, file.errorString()));
-    }
+    QString error;
+    if (ParameterFile::save(c.model->schema, c.model->id, set, path, &error,
+                            {{QStringLiteral("origin"), origin}}) != ParameterFile::Status::Ok)
+        return Outcome::failure(ExitFile, error);
     if (!c.json()) {
         const qsizetype defaults = set.size() - readable.size();
         printLine(tr("exported %1 parameters to %2 (%3 read back, %4 schema defaults: %5 cannot "
@@ -195,22 +189,18 @@ Outcome cmdImport(CliContext& c, QStringList args)
     if (args.size() != 1)
         return Outcome::usage(tr("import needs exactly one FILE"));
     const QString path = args.first();
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return Outcome::failure(ExitFile, tr("cannot read %1: %2").arg(path, file.errorString()));
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
-    if (doc.isNull() || !doc.isObject()) {
-        return Outcome::failure(ExitFile, doc.isNull() ? tr("%1 is not valid JSON: %2 at offset %3")
-                                                             .arg(path, parseError.errorString())
-                                                             .arg(parseError.offset)
-                                                       : tr("%1 is not a JSON object").arg(path));
-    }
     // Everything is validated before the first byte goes out: a broken file changes nothing.
     ParameterSet set;
     QString error;
-    if (!c.model->schema.fromJson(doc.object(), c.model->id, c.axes(), &set, &error))
-        return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
+    switch (ParameterFile::load(c.model->schema, c.model->id, c.axes(), path, &set, &error)) {
+    case ParameterFile::Status::Ok:
+        break;
+    case ParameterFile::Status::FileError:
+    case ParameterFile::Status::NotJson:
+        return Outcome::failure(ExitFile, error);
+    case ParameterFile::Status::Invalid:
+        return Outcome::failure(ExitInvalidValue, error);
+    }
     if (error = checkComplete(c.axes(), set); !error.isEmpty())
         return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
     if (set.isEmpty())

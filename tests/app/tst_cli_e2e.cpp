@@ -362,8 +362,8 @@ void TestCliEndToEnd::import_brokenFile_refusedAndNothingWritten_data()
         "parameters":{"start-speed":{"X":100,"Y":100,"Z":100},
                       "max-speed":{"X":2000,"Y":2000,"Z":2000},
                       "acceleration":{"X":1000,"Y":1000,"Z":1000})";
-    QTest::newRow("missing file") << QByteArray() << 12 << "cannot read";
-    QTest::newRow("not JSON") << QByteArray("{ \"format\": ") << 12 << "not valid JSON";
+    QTest::newRow("missing file") << QByteArray() << 12 << "Cannot open";
+    QTest::newRow("not JSON") << QByteArray("{ \"format\": ") << 12 << "line 1, column";
     QTest::newRow("not a parameter file")
         << QByteArray(R"({"format":"something-else"})") << 7 << "not a StepDeck parameter file";
     QTest::newRow("out of range") << head + R"(,"drive-power":250}})" << 7 << "drive-power";

@@ -2,8 +2,8 @@
 #include "SetupPage.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
+#include "model/ParameterFile.h"
 #include "setup/DiffDialog.h"
-#include "setup/ParameterFile.h"
 #include <QFileInfo>
 
 namespace stepdeck::ui {
@@ -16,12 +16,14 @@ bool SetupPage::saveToFile(const QString& path, QString* error) const
         *error = tr("Not saved: %1").arg(errors.join(QStringLiteral("; ")));
         return false;
     }
-    return ParameterFile::save(m_schema, m_context->modelId(), set, path, error);
+    return ParameterFile::save(m_schema, m_context->modelId(), set, path, error) ==
+           ParameterFile::Status::Ok;
 }
 
 bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error) const
 {
-    return ParameterFile::load(m_schema, m_context->modelId(), m_context->axes(), path, set, error);
+    return ParameterFile::load(m_schema, m_context->modelId(), m_context->axes(), path, set,
+                               error) == ParameterFile::Status::Ok;
 }
 
 void SetupPage::saveAs()
