@@ -1,78 +1,43 @@
 #!/usr/bin/env python3
-"""Refreshes translations/stepdeck_*.ts from the sources and checks that German is complete.
+"""Refreshes translations/stepdeck_*.ts and fills German from the translation memory.
 
-  translations/update.py [--dict FILE.py ...] [--check]
+  translations/update.py [--build DIR] [--dict FILE.py ...] [--check]
 
-1. lupdate over ui/, core/ and app/gui/ (German: every string; English: plural forms only).
-2. Several core files translate through a small helper, e.g.
-     QString tr(const char* t) { return QCoreApplication::translate("ParameterSchema", t); }
-   lupdate files those strings under the enclosing class or namespace instead, so at run time
-   they would stay English. Each such string is also filed under the helper's context (and
-   strings filed under a bare namespace under "<namespace>::<FileName>").
-3. --dict FILE.py: fills empty translations from D = {source: german} and numerus forms from
+1. Builds CMake's `update_translations` target in DIR (default: build/, as configured by
+   tools/test or tools/run): plain lupdate over ui/, core/ and app/gui/main.cpp (German: every
+   string; English: plural forms only). Every string is filed under the context it is looked
+   up under at run time, because the sources only use the patterns lupdate understands:
+   tr() in Q_OBJECT classes, Q_DECLARE_TR_FUNCTIONS(Qualified::Name) in other classes, and
+   QT_TRANSLATE_NOOP / QCoreApplication::translate with a literal context.
+2. Fills empty German translations from translations/de_memory.json (source text -> German,
+   every translation ever made, so a string that moves to another context or file, or comes
+   back later, is translated again without anyone retyping it), from the previous .ts, and
+   from --dict FILE.py: D = {source: german}; numerus forms from
    N = {source: ((de forms), (en forms))}.
-4. Keeps every German translation ever made in translations/de_memory.json (source text ->
-   translation), so a string that leaves the sources and comes back later, or moves to another
-   file, is translated again without anyone retyping it.
-5. Prints what is still untranslated in German; --check exits 1 if anything is.
+3. Adds the German of the .ts to the memory and prints what is still untranslated; --check
+   exits 1 if anything is.
 """
 import argparse
-import collections
 import importlib.util
 import json
 import os
-import re
 import subprocess
 import sys
-import tempfile
 import xml.etree.ElementTree as ET
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LUPDATE = "/usr/lib/qt6/bin/lupdate"
-SOURCES = ["ui", "core", "app/gui"]
 DE = os.path.join(ROOT, "translations", "stepdeck_de.ts")
 EN = os.path.join(ROOT, "translations", "stepdeck_en.ts")
 MEMORY = os.path.join(ROOT, "translations", "de_memory.json")
-HELPER = re.compile(r'QString\s+\w+\(const char\*\s*\w+\)\s*\{\s*return\s+'
-                    r'QCoreApplication::translate\("([^"]+)"', re.S)
 
 
-def lupdate(ts, extra=()):
-    cmd = [LUPDATE, "-locations", "none", "-no-obsolete", *extra, *SOURCES, "-ts", ts]
-    subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-
-
-def message_files():
-    """(context, source) -> set of files, from a throw-away lupdate run with locations."""
-    out = collections.defaultdict(set)
-    with tempfile.TemporaryDirectory() as tmp:
-        ts = os.path.join(tmp, "probe.ts")
-        subprocess.run([LUPDATE, "-locations", "absolute", *SOURCES, "-ts", ts], cwd=ROOT,
-                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        for ctx in ET.parse(ts).getroot().iter("context"):
-            name = ctx.findtext("name")
-            for msg in ctx.iter("message"):
-                for loc in msg.iter("location"):
-                    path = os.path.normpath(os.path.join(tmp, loc.get("filename")))
-                    out[(name, msg.findtext("source"))].add(path)
-    return out
-
-
-def runtime_contexts(context, files):
-    """Contexts the string is looked up under at run time, besides lupdate's own."""
-    extra = set()
-    for path in files:
-        try:
-            text = open(path, encoding="utf-8").read()
-        except OSError:
-            continue
-        helpers = set(HELPER.findall(text))
-        extra |= helpers
-        last = context.split("::")[-1]
-        if not helpers and (not last or last[0].islower()):  # a bare namespace
-            extra.add(context + "::" + os.path.splitext(os.path.basename(path))[0])
-    extra.discard(context)
-    return extra
+def update_translations(build):
+    """lupdate through CMake, exactly as `cmake --build BUILD --target update_translations`."""
+    if not os.path.exists(os.path.join(build, "CMakeCache.txt")):
+        sys.exit(f"{build} is not a configured build directory: run tools/test once, or "
+                 f"cmake -S . -B {build} -G Ninja")
+    subprocess.run(["cmake", "--build", build, "--target", "update_translations"], check=True,
+                   stdout=subprocess.DEVNULL)
 
 
 def load_dict(paths):
@@ -104,27 +69,6 @@ def fill(tree, d, n, lang):
             # source match counts.
             tr.text = d[src]
             tr.attrib.pop("type", None)
-
-
-def add_runtime_copies(tree, files):
-    root = tree.getroot()
-    contexts = {c.findtext("name"): c for c in root.iter("context")}
-    copies = []
-    for ctx in list(contexts.values()):
-        name = ctx.findtext("name")
-        for msg in ctx.iter("message"):
-            for target in runtime_contexts(name, files.get((name, msg.findtext("source")), ())):
-                copies.append((target, msg))
-    for target, msg in copies:
-        ctx = contexts.get(target)
-        if ctx is None:
-            ctx = ET.SubElement(root, "context")
-            ET.SubElement(ctx, "name").text = target
-            contexts[target] = ctx
-        if any(m.findtext("source") == msg.findtext("source") for m in ctx.iter("message")):
-            continue
-        copy = ET.fromstring(ET.tostring(msg))
-        ctx.append(copy)
 
 
 def write(tree, path):
@@ -166,14 +110,13 @@ def known_translations(path):
 
 def main():
     ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--dict", action="append", default=[])
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
     old_de, old_de_n = known_translations(DE)
     old_en, old_en_n = known_translations(EN)
-    lupdate(DE)
-    lupdate(EN, ["-pluralonly"])
-    files = message_files()
+    update_translations(os.path.abspath(args.build))
     d, n = load_dict(args.dict)
     memory = {"text": {}, "numerus": {}}
     if os.path.exists(MEMORY):
@@ -189,8 +132,6 @@ def main():
     for path, lang in ((DE, "de"), (EN, "en")):
         tree = ET.parse(path)
         fill(tree, d, n, lang)
-        if lang == "de":
-            add_runtime_copies(tree, files)
         write(tree, path)
     new_de, new_de_n = known_translations(DE)
     _, new_en_n = known_translations(EN)
@@ -198,8 +139,8 @@ def main():
     for src, forms in new_de_n.items():
         memory["numerus"][src] = {"de": list(forms), "en": list(new_en_n.get(src, forms))}
     with open(MEMORY, "w", encoding="utf-8") as f:
-        json.dump({"text": dict(sorted(memory["text"].items())),
-                   "numerus": dict(sorted(memory["numerus"].items()))},
+        json.dump({"numerus": dict(sorted(memory["numerus"].items())),
+                   "text": dict(sorted(memory["text"].items()))},
                   f, ensure_ascii=False, indent=1)
         f.write("\n")
     missing = untranslated(ET.parse(DE)) + untranslated(ET.parse(EN))

@@ -1,16 +1,10 @@
 #include "ParameterSchema.h"
 #include "NumberParsing.h"
-#include <QCoreApplication>
 #include <QJsonValue>
 
 namespace stepdeck {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("ParameterSchema", text);
-}
-
 // How an integer value's text failed to be a number at all (None: it is one, perhaps outside
 // the parameter's range).
 void readingProblem(const ParameterSpec& spec, const QString& raw, NumberError* numberError)

@@ -1,6 +1,7 @@
 #pragma once
 #include "Axis.h"
 #include "NumberParsing.h"
+#include <QCoreApplication>
 #include <QJsonObject>
 #include <QStringList>
 #include <QVariant>
@@ -44,6 +45,7 @@ using ParameterSet = QMap<QString, ParameterValue>;
 
 class ParameterSchema
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::ParameterSchema)
 public:
     ParameterSchema() = default;
     explicit ParameterSchema(QList<ParameterSpec> specs) : m_specs(std::move(specs)) {}

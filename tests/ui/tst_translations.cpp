@@ -1,9 +1,13 @@
 // Languages: the German catalogue is complete, and once installed it translates the widgets,
-// the model's parameter labels and core messages (including those core files translate
-// through their own helper contexts).
+// the model's parameter labels and core messages (tr() of Q_DECLARE_TR_FUNCTIONS classes and
+// codec texts included: lupdate files each string under its run-time context).
 #include "UiTestSupport.h"
 #include "main/SafetyBar.h"
 #include "main/Translations.h"
+#include "model/ParameterFile.h"
+#include "protocols/elab/ElabCodec.h"
+#include "protocols/elab/ElabModel.h"
+#include "protocols/nanotec/NanotecCodec.h"
 #include <QPushButton>
 #include <QXmlStreamReader>
 
@@ -20,6 +24,7 @@ private Q_SLOTS:
     void effective_configuredOrSystem();
     void german_installed_translatesUiSchemaAndCore_data();
     void german_installed_translatesUiSchemaAndCore();
+    void german_coreMessagesAtRunTime();
     void german_mainWindow_showsGermanLabels();
 };
 
@@ -87,9 +92,12 @@ void TestTranslations::german_installed_translatesUiSchemaAndCore_data()
     QTest::newRow("core controller") << "stepdeck::Controller"
                                      << "jog refused: not connected"
                                      << "Tippbetrieb abgelehnt: nicht verbunden";
-    QTest::newRow("core helper context") << "ParameterSchema"
-                                         << "unknown parameter '%1'"
-                                         << "unbekannter Parameter '%1'";
+    QTest::newRow("core Q_DECLARE_TR_FUNCTIONS") << "stepdeck::ParameterSchema"
+                                                 << "unknown parameter '%1'"
+                                                 << "unbekannter Parameter '%1'";
+    QTest::newRow("codec context") << "stepdeck::elab::Codec"
+                                   << "unexpected control byte"
+                                   << "unerwartetes Steuerzeichen";
 }
 
 void TestTranslations::german_installed_translatesUiSchemaAndCore()
@@ -101,6 +109,36 @@ void TestTranslations::german_installed_translatesUiSchemaAndCore()
     QCOMPARE(lang, QStringLiteral("de"));
     QCOMPARE(QCoreApplication::translate(context.toUtf8().constData(), source.toUtf8().constData()),
              german);
+}
+
+// The messages as core code builds them, with the German catalogue installed: the contexts
+// the code uses at run time are the ones lupdate filed the strings under.
+void TestTranslations::german_coreMessagesAtRunTime()
+{
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("de")), QStringLiteral("de"));
+    const ParameterSchema schema = elab::parameterSchema();
+    ParameterSet set;
+    set[QStringLiteral("warp-speed")].global = qint64(1);
+    QCOMPARE(schema.validate(set, {Axis::X, Axis::Y, Axis::Z}),
+             QStringLiteral("unbekannter Parameter 'warp-speed'"));
+
+    QString error;
+    ParameterSet loaded;
+    QCOMPARE(ParameterFile::load(schema, QStringLiteral("elab"), {Axis::X},
+                                 QStringLiteral("/nonexistent/p.json"), &loaded, &error),
+             ParameterFile::Status::FileError);
+    QVERIFY2(error.startsWith(QStringLiteral("/nonexistent/p.json kann nicht geöffnet werden: ")),
+             qPrintable(error));
+
+    QCOMPARE(nanotec::forbiddenReason("@A"),
+             QStringLiteral("'@A' wird nie gesendet: es startet den Bootloader (Handbuch 5.32)"));
+
+    elab::ReplyDecoder decoder;
+    QStringList errors;
+    for (const elab::Reply& reply : decoder.feed(QByteArray("xyz\x06")))
+        errors << reply.error;
+    QVERIFY2(errors.contains(QStringLiteral("Bytes außerhalb einer Antwort")),
+             qPrintable(errors.join(QStringLiteral(" | "))));
 }
 
 void TestTranslations::german_mainWindow_showsGermanLabels()

@@ -4,7 +4,6 @@
 namespace stepdeck::elab {
 
 namespace {
-
 // Payload patterns, after the control byte: 'h' is one hex digit, '?' one of S/M/A (the
 // ramp selector of <ESC>), anything else a literal separator. The separators ", ; . #" also
 // check the telegram (manual: "Aufbau der Befehle und Parameter").
@@ -155,11 +154,6 @@ template <typename T> QByteArray triple(char code, const Triple<T>& v, int digit
     QByteArray out(1, code);
     out += hex(U(v[0]), digits) + ',' + hex(U(v[1]), digits) + ';' + hex(U(v[2]), digits) + '.';
     return out;
-}
-
-QString trCodec(const char* text)
-{
-    return QCoreApplication::translate("ElabCodec", text);
 }
 
 } // namespace
@@ -366,7 +360,7 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
             // Every control byte starts a new frame: this is where decoding resynchronises.
             if (!m_buffer.isEmpty())
                 flushInvalid(m_discarding ? m_discardReason
-                                          : trCodec("reply interrupted by a new control byte"));
+                                          : Codec::tr("reply interrupted by a new control byte"));
             if (c == ctrl::ACK || c == ctrl::NAK) {
                 Reply r;
                 r.kind = c == ctrl::ACK ? Reply::Kind::Ack : Reply::Kind::Nak;
@@ -376,16 +370,16 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
                 m_buffer.append(c);
             } else {
                 m_buffer.append(c);
-                flushInvalid(trCodec("unexpected control byte"));
+                flushInvalid(Codec::tr("unexpected control byte"));
             }
             continue;
         }
         if (m_buffer.isEmpty() && !m_discarding)
-            startDiscarding(trCodec("bytes outside a reply"));
+            startDiscarding(Codec::tr("bytes outside a reply"));
         if (!m_discarding) {
             const int pos = int(m_buffer.size()) - 1;
             if (!fits(replyPattern(m_buffer.at(0)), pos, c)) {
-                startDiscarding(trCodec("malformed reply"));
+                startDiscarding(Codec::tr("malformed reply"));
             } else {
                 m_buffer.append(c);
                 completeIfDone();
@@ -474,7 +468,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
             cmd.raw = m_buffer;
             cmd.valid = isValidStepByte(step);
             if (!cmd.valid)
-                cmd.error = trCodec("step byte has bit 7 or bit 3 set");
+                cmd.error = Codec::tr("step byte has bit 7 or bit 3 set");
             m_out << cmd;
             m_buffer.clear();
             continue;
@@ -482,8 +476,8 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         if (isControl(c)) {
             if (!m_buffer.isEmpty())
                 complete(false, isControl(m_buffer.at(0))
-                                    ? trCodec("command interrupted by a new control byte")
-                                    : trCodec("bytes outside a command"));
+                                    ? Codec::tr("command interrupted by a new control byte")
+                                    : Codec::tr("bytes outside a command"));
             if (c == ctrl::DC2) {
                 m_buffer.append(c);
                 m_expectStepByte = true;
@@ -492,7 +486,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
             const Format* format = commandFormat(c);
             m_buffer.append(c);
             if (!format) {
-                complete(false, trCodec("unknown command byte"));
+                complete(false, Codec::tr("unknown command byte"));
                 continue;
             }
             tryParse();
@@ -505,13 +499,13 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         m_buffer.append(c);
         if (!isControl(m_buffer.at(0))) {
             if (m_buffer.size() >= kMaxFrame)
-                complete(false, trCodec("bytes outside a command"));
+                complete(false, Codec::tr("bytes outside a command"));
             continue;
         }
         const Format* format = commandFormat(m_buffer.at(0));
         const int pos = int(m_buffer.size()) - 2;
         if (!fits(format->pattern, pos, c)) {
-            complete(false, trCodec("malformed parameters"));
+            complete(false, Codec::tr("malformed parameters"));
             continue;
         }
         tryParse();

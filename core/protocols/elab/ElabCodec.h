@@ -1,5 +1,6 @@
 #pragma once
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QList>
 #include <QString>
 #include <array>
@@ -7,6 +8,12 @@
 // E-LAB 3-axis stepper controller byte protocol (manual: elab-3axis-stepper-controller.de.txt).
 // Pure and streaming: no I/O, no timers, bounded buffers.
 namespace stepdeck::elab {
+
+// The translation context of the codec's texts (decode errors, status bit descriptions).
+class Codec
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::Codec)
+};
 
 // "Steuerzeichen Tabelle und Kommando Liste": host -> controller command bytes.
 namespace ctrl {

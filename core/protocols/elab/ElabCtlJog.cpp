@@ -4,12 +4,7 @@
 
 namespace stepdeck::elab {
 
-namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck::elab::ElabController", text);
-}
-} // namespace
+namespace {} // namespace
 
 ElabCtlJog::ElabCtlJog(ElabCtlLine& line, Hooks hooks) : m_line(line), m_hooks(std::move(hooks)) {}
 

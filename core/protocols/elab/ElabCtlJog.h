@@ -1,5 +1,6 @@
 #pragma once
 #include "ElabCtlLine.h"
+#include <QCoreApplication>
 
 namespace stepdeck::elab {
 
@@ -9,6 +10,7 @@ namespace stepdeck::elab {
 // standstill is preceded by the standstill check; an active limit switch does not stop jog.
 class ElabCtlJog
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlJog)
 public:
     struct Hooks
     {

@@ -5,11 +5,6 @@ namespace stepdeck::elab {
 
 namespace {
 constexpr int kStatusRetries = 2;
-
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck::elab::ElabController", text);
-}
 } // namespace
 
 ElabCtlLine::ElabCtlLine(ElabExchangeQueue& queue, MachineStatus& status, ElabCtlHooks hooks)

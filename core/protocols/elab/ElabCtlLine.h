@@ -2,6 +2,7 @@
 #include "ElabCtlStatusMapper.h"
 #include "ElabExchangeQueue.h"
 #include "model/MachineStatus.h"
+#include <QCoreApplication>
 #include <functional>
 
 namespace stepdeck::elab {
@@ -23,6 +24,7 @@ struct ElabCtlHooks
 // one sequence run back to back: each next step is queued ahead of other work.
 class ElabCtlLine
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlLine)
 public:
     using ErrorFn = std::function<void(ErrorKind, const QString&)>;
     struct Op

@@ -10,11 +10,6 @@ using Rule = ElabCtlStatusMapper::Rule;
 using Op = ElabCtlLine::Op;
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck::elab::ElabController", text);
-}
-
 template <typename T> Triple<T> triple(const AxisVector& values)
 {
     Triple<T> t{};

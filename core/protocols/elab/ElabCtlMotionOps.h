@@ -2,6 +2,7 @@
 #include "ElabCtlLine.h"
 #include "ElabCtlMotion.h"
 #include "ElabCtlStream.h"
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QVector>
 #include <optional>
@@ -20,6 +21,7 @@ namespace stepdeck::elab {
 //   a direction reversal of a running axis is refused.
 class ElabCtlMotionOps
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlMotionOps)
 public:
     explicit ElabCtlMotionOps(ElabCtlLine& line) : m_line(line) { m_clock.start(); }
 

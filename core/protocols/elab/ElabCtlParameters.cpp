@@ -6,11 +6,6 @@
 namespace stepdeck::elab {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck::elab::ElabController", text);
-}
-
 const QString kStart = QStringLiteral("start-speed");
 const QString kFeed = QStringLiteral("feed-speed");
 
@@ -29,8 +24,9 @@ QString complete(const ParameterSchema& schema, const ParameterSpec& spec,
         if (!v.isValid())
             v = lastWritten.value(spec.name).perAxis.value(a);
         if (!v.isValid())
-            return tr("%1: no value for axis %2 and none written before; give all axes "
-                      "(X,Y,Z)")
+            return ElabCtlParameters::tr(
+                       "%1: no value for axis %2 and none written before; give all axes "
+                       "(X,Y,Z)")
                 .arg(spec.name, axisName(a));
         full.perAxis.insert(a, schema.normalise(spec, v));
     }
@@ -94,14 +90,16 @@ QString checkFeedBelowStart(const QList<ElabParameterWrite>& plan, const Paramet
     if (!touched || feed.perAxis.isEmpty())
         return {};
     if (start.perAxis.isEmpty())
-        return tr("feed-speed must be below start-speed (feed mode has no ramp), but start-speed "
-                  "is not known: write start-speed in the same set");
+        return ElabCtlParameters::tr(
+            "feed-speed must be below start-speed (feed mode has no ramp), but start-speed "
+            "is not known: write start-speed in the same set");
     for (Axis a : ElabCtlStatusMapper::axes()) {
         const qint64 f = feed.perAxis.value(a).toLongLong();
         const qint64 s = start.perAxis.value(a).toLongLong();
         if (f >= s)
-            return tr("feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no "
-                      "ramp)")
+            return ElabCtlParameters::tr(
+                       "feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no "
+                       "ramp)")
                 .arg(f)
                 .arg(axisName(a))
                 .arg(s);

@@ -1,6 +1,7 @@
 #pragma once
 #include "model/ParameterSchema.h"
 #include <QByteArray>
+#include <QCoreApplication>
 
 namespace stepdeck::elab {
 
@@ -24,6 +25,7 @@ struct ElabParameterWrite
 // <DLE>, <STX>, <SOH>, <SI>.
 class ElabCtlParameters
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlParameters)
 public:
     // Returns an empty string and fills *plan, or a sentence naming the parameter and why.
     static QString plan(const ParameterSchema& schema, const ParameterSet& set,

@@ -4,11 +4,6 @@
 namespace stepdeck::elab {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck::elab::ElabController", text);
-}
-
 // Bit positions per axis: taXMove=0, taXJog=1, taYMove=2, ... (RequestAxeState);
 // tmLimSwX=8.., tmRefSwX=11.. (RequestMachineState).
 quint8 moveBit(Axis axis)

@@ -1,6 +1,7 @@
 #pragma once
 #include "ElabCodec.h"
 #include "model/MachineStatus.h"
+#include <QCoreApplication>
 
 namespace stepdeck::elab {
 
@@ -8,6 +9,7 @@ namespace stepdeck::elab {
 // commands the manual forbids right now. Pure: no I/O.
 class ElabCtlStatusMapper
 {
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlStatusMapper)
 public:
     static const QList<Axis>& axes(); // X, Y, Z
     static int index(Axis axis) { return int(axis); }

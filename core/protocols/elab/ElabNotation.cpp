@@ -6,19 +6,14 @@
 namespace stepdeck::elab {
 
 namespace {
-QString trCodec(const char* text)
-{
-    return QCoreApplication::translate("ElabCodec", text);
-}
-
 QString describeBits(quint32 word, const QList<BitName>& names)
 {
     QStringList parts;
     for (const BitName& b : names) {
         if (word & (1u << b.bit))
-            parts << QStringLiteral("%1 (%2)").arg(QLatin1String(b.name), trCodec(b.description));
+            parts << QStringLiteral("%1 (%2)").arg(QLatin1String(b.name), Codec::tr(b.description));
     }
-    return parts.isEmpty() ? trCodec("none") : parts.join(QStringLiteral(", "));
+    return parts.isEmpty() ? Codec::tr("none") : parts.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -27,24 +22,35 @@ const QList<BitName>& machineStateBits()
 {
     // RequestMachineState: "In dem Status hat jedes Bit eine spezielle Information".
     static const QList<BitName> bits{
-        {0, "tmDriveOn", QT_TRANSLATE_NOOP("ElabCodec", "motors are powered")},
-        {1, "tmSpindleOn", QT_TRANSLATE_NOOP("ElabCodec", "spindle motor is on")},
-        {2, "tmBusy", QT_TRANSLATE_NOOP("ElabCodec", "axes are moving")},
-        {3, "tmCOMfail", QT_TRANSLATE_NOOP("ElabCodec", "serial port fault (not implemented)")},
-        {4, "tmTimeOut", QT_TRANSLATE_NOOP("ElabCodec", "internal error (not implemented)")},
-        {5, "tmParmError", QT_TRANSLATE_NOOP("ElabCodec", "parameter error (not implemented)")},
-        {6, "tmOverTemp", QT_TRANSLATE_NOOP("ElabCodec", "internal temperature above 50 °C")},
+        {0, "tmDriveOn", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "motors are powered")},
+        {1, "tmSpindleOn", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "spindle motor is on")},
+        {2, "tmBusy", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "axes are moving")},
+        {3, "tmCOMfail",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "serial port fault (not implemented)")},
+        {4, "tmTimeOut",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "internal error (not implemented)")},
+        {5, "tmParmError",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "parameter error (not implemented)")},
+        {6, "tmOverTemp",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "internal temperature above 50 °C")},
         {7, "tmInvSetup",
          QT_TRANSLATE_NOOP(
-             "ElabCodec", "setup incomplete: start speed, max speed and acceleration not all set")},
-        {8, "tmLimSwX", QT_TRANSLATE_NOOP("ElabCodec", "a limit switch of the X axis is active")},
-        {9, "tmLimSwY", QT_TRANSLATE_NOOP("ElabCodec", "a limit switch of the Y axis is active")},
-        {10, "tmLimSwZ", QT_TRANSLATE_NOOP("ElabCodec", "a limit switch of the Z axis is active")},
-        {11, "tmRefSwX", QT_TRANSLATE_NOOP("ElabCodec", "the X reference switch is active")},
-        {12, "tmRefSwY", QT_TRANSLATE_NOOP("ElabCodec", "the Y reference switch is active")},
-        {13, "tmRefSwZ", QT_TRANSLATE_NOOP("ElabCodec", "the Z reference switch is active")},
+             "stepdeck::elab::Codec",
+             "setup incomplete: start speed, max speed and acceleration not all set")},
+        {8, "tmLimSwX",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "a limit switch of the X axis is active")},
+        {9, "tmLimSwY",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "a limit switch of the Y axis is active")},
+        {10, "tmLimSwZ",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "a limit switch of the Z axis is active")},
+        {11, "tmRefSwX",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "the X reference switch is active")},
+        {12, "tmRefSwY",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "the Y reference switch is active")},
+        {13, "tmRefSwZ",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "the Z reference switch is active")},
         {14, "tmPanicStop",
-         QT_TRANSLATE_NOOP("ElabCodec", "the panic (emergency stop) switch is active")},
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "the panic (emergency stop) switch is active")},
     };
     return bits;
 }
@@ -53,14 +59,17 @@ const QList<BitName>& axeStateBits()
 {
     // RequestAxeState: "Lese den Status der Achsen".
     static const QList<BitName> bits{
-        {0, "taXMove", QT_TRANSLATE_NOOP("ElabCodec", "X axis in FastMove or feed mode")},
-        {1, "taXJog", QT_TRANSLATE_NOOP("ElabCodec", "X axis in jog mode")},
-        {2, "taYMove", QT_TRANSLATE_NOOP("ElabCodec", "Y axis in FastMove or feed mode")},
-        {3, "taYJog", QT_TRANSLATE_NOOP("ElabCodec", "Y axis in jog mode")},
-        {4, "taZMove", QT_TRANSLATE_NOOP("ElabCodec", "Z axis in FastMove or feed mode")},
-        {5, "taZJog", QT_TRANSLATE_NOOP("ElabCodec", "Z axis in jog mode")},
-        {6, "taLimSw", QT_TRANSLATE_NOOP("ElabCodec", "a limit switch is active")},
-        {7, "taRefSw", QT_TRANSLATE_NOOP("ElabCodec", "a reference switch is active")},
+        {0, "taXMove",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "X axis in FastMove or feed mode")},
+        {1, "taXJog", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "X axis in jog mode")},
+        {2, "taYMove",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "Y axis in FastMove or feed mode")},
+        {3, "taYJog", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "Y axis in jog mode")},
+        {4, "taZMove",
+         QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "Z axis in FastMove or feed mode")},
+        {5, "taZJog", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "Z axis in jog mode")},
+        {6, "taLimSw", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "a limit switch is active")},
+        {7, "taRefSw", QT_TRANSLATE_NOOP("stepdeck::elab::Codec", "a reference switch is active")},
     };
     return bits;
 }
@@ -122,7 +131,7 @@ bool fromMnemonics(const QString& text, QByteArray* bytes, QString* error)
         const QChar ch = text.at(i);
         if (ch != QLatin1Char('<')) {
             if (ch.unicode() > 126) {
-                *error = trCodec("character %1 at position %2 is not ASCII").arg(ch).arg(i + 1);
+                *error = Codec::tr("character %1 at position %2 is not ASCII").arg(ch).arg(i + 1);
                 return false;
             }
             out += char(ch.unicode());
@@ -130,7 +139,7 @@ bool fromMnemonics(const QString& text, QByteArray* bytes, QString* error)
         }
         const int end = text.indexOf(QLatin1Char('>'), i);
         if (end < 0) {
-            *error = trCodec("'<' at position %1 is not closed").arg(i + 1);
+            *error = Codec::tr("'<' at position %1 is not closed").arg(i + 1);
             return false;
         }
         const QString name = text.mid(i + 1, end - i - 1).toUpper();
@@ -152,7 +161,7 @@ bool fromMnemonics(const QString& text, QByteArray* bytes, QString* error)
             }
         }
         if (!found) {
-            *error = trCodec("unknown mnemonic <%1> at position %2").arg(name).arg(i + 1);
+            *error = Codec::tr("unknown mnemonic <%1> at position %2").arg(name).arg(i + 1);
             return false;
         }
         i = end;

@@ -4,11 +4,6 @@
 namespace stepdeck::nanotec {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("Nanotec", text);
-}
-
 bool isDigit(char c)
 {
     return c >= '0' && c <= '9';
@@ -94,10 +89,10 @@ QString forbiddenReason(const QByteArray& body)
     if (b.startsWith('|')) {
         qint64 v = 1;
         if (b.size() == 1 || !parseNumber(b.mid(1), &v) || v != 1)
-            return tr("'|0' is never sent: the drive would stop answering (manual 6.4)");
+            return Codec::tr("'|0' is never sent: the drive would stop answering (manual 6.4)");
     }
     if (b.startsWith("@A"))
-        return tr("'@A' is never sent: it starts the bootloader (manual 5.32)");
+        return Codec::tr("'@A' is never sent: it starts the bootloader (manual 5.32)");
     return {};
 }
 
@@ -210,19 +205,19 @@ QString motorModeName(int mode)
 {
     switch (mode) {
     case 1:
-        return tr("positioning");
+        return Codec::tr("positioning");
     case 2:
-        return tr("speed");
+        return Codec::tr("speed");
     case 3:
-        return tr("flag positioning");
+        return Codec::tr("flag positioning");
     case 4:
-        return tr("clock-direction");
+        return Codec::tr("clock-direction");
     case 5:
-        return tr("analog");
+        return Codec::tr("analog");
     case 6:
-        return tr("joystick");
+        return Codec::tr("joystick");
     default:
-        return tr("unused");
+        return Codec::tr("unused");
     }
 }
 
@@ -230,14 +225,14 @@ QString describeStatus(qint64 word)
 {
     const DriveState s = decodeStatus(word);
     QStringList parts;
-    parts << (s.ready ? tr("ready") : tr("busy"));
+    parts << (s.ready ? Codec::tr("ready") : Codec::tr("busy"));
     if (s.zeroReached)
-        parts << tr("zero position reached");
+        parts << Codec::tr("zero position reached");
     if (s.positionError)
-        parts << tr("position error");
+        parts << Codec::tr("position error");
     if (s.input1WhileReady)
-        parts << tr("input 1 still set while ready");
-    parts << tr("mode %1").arg(motorModeName(s.mode));
+        parts << Codec::tr("input 1 still set while ready");
+    parts << Codec::tr("mode %1").arg(motorModeName(s.mode));
     return parts.join(QStringLiteral(", "));
 }
 
@@ -267,21 +262,21 @@ QString errorCodeDescription(int code)
 {
     switch (code) {
     case 0:
-        return tr("no error");
+        return Codec::tr("no error");
     case error::LowVoltage:
-        return tr("undervoltage");
+        return Codec::tr("undervoltage");
     case error::Temperature:
-        return tr("over-temperature");
+        return Codec::tr("over-temperature");
     case error::Driver:
-        return tr("the driver chip reported an error");
+        return Codec::tr("the driver chip reported an error");
     case error::Eeprom:
-        return tr("nonsensical data in the EEPROM");
+        return Codec::tr("nonsensical data in the EEPROM");
     case error::Position:
-        return tr("position error");
+        return Codec::tr("position error");
     case error::Internal:
-        return tr("internal error");
+        return Codec::tr("internal error");
     default:
-        return tr("unknown error code %1").arg(code);
+        return Codec::tr("unknown error code %1").arg(code);
     }
 }
 

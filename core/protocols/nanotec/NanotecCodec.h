@@ -1,5 +1,6 @@
 #pragma once
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QList>
 #include <QPair>
 #include <QString>
@@ -9,6 +10,12 @@
 // nanotec-smci33-smci47s-command-reference.de.txt). Pure and streaming: no I/O, no timers,
 // bounded buffers.
 namespace stepdeck::nanotec {
+
+// The translation context of the codec's texts (decode errors, status bit descriptions).
+class Codec
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::nanotec::Codec)
+};
 
 // Section 1.1: addresses 1..254; '*' addresses every drive on the bus. 0 and 255 are reserved
 // for EEPROM failures (5.4), so they never name a drive here.

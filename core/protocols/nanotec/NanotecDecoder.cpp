@@ -5,11 +5,6 @@
 namespace stepdeck::nanotec {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("Nanotec", text);
-}
-
 bool isDigit(char c)
 {
     return c >= '0' && c <= '9';
@@ -63,7 +58,7 @@ QList<Pair> splitPairs(const QByteArray& text)
 Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
 {
     if (body.size() < 2)
-        return invalid(raw, tr("read reply without a command"));
+        return invalid(raw, Codec::tr("read reply without a command"));
     if (body.at(1) == 'E') {
         // "ZE<slot><code>": unambiguous only when the code carries a sign ("ZE5+8").
         r.kind = Reply::Kind::Read;
@@ -71,12 +66,12 @@ Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
         const QByteArray rest = body.mid(2);
         const int digits = leadingDigits(rest);
         if (digits == 0)
-            return invalid(raw, tr("error memory reply without a slot number"));
+            return invalid(raw, Codec::tr("error memory reply without a slot number"));
         r.text = rest;
         if (digits < rest.size()) {
             qint64 code = 0;
             if (!parseNumber(rest.mid(digits), &code))
-                return invalid(raw, tr("malformed error memory reply"));
+                return invalid(raw, Codec::tr("malformed error memory reply"));
             r.index = rest.left(digits).toInt();
             r.value = code;
         }
@@ -88,17 +83,17 @@ Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
     if (digits > 0) {
         r.record = digits <= 2 && body.at(1) != '0' ? body.mid(1, digits).toInt() : 0;
         if (r.record < 1 || r.record > kRecordCount)
-            return invalid(raw, tr("read reply for record '%1' (records are 1..%2)")
+            return invalid(raw, Codec::tr("read reply for record '%1' (records are 1..%2)")
                                     .arg(QString::fromLatin1(body.mid(1, digits)))
                                     .arg(kRecordCount));
     }
     const QList<Pair> pairs = splitPairs(body.mid(1 + digits));
     if (pairs.isEmpty())
-        return invalid(raw, tr("read reply without a command"));
+        return invalid(raw, Codec::tr("read reply without a command"));
     if (pairs.size() == 1) {
         qint64 v = 0;
         if (!parseNumber(pairs[0].text, &v))
-            return invalid(raw, tr("read reply without a numeric value"));
+            return invalid(raw, Codec::tr("read reply without a numeric value"));
         r.kind = Reply::Kind::Read;
         r.key = body.left(1 + digits) + pairs[0].cmd;
         r.text = pairs[0].text;
@@ -111,12 +106,13 @@ Reply parseZ(const QByteArray& raw, const QByteArray& body, Reply r)
     for (const Pair& p : pairs) {
         // 6.4 sends "all settings of the record": the ones section 4 lists, each once.
         if (!recordFieldOrder().contains(p.cmd))
-            return invalid(raw, tr("'%1' is not a record setting (section 4)").arg(QChar(p.cmd)));
+            return invalid(raw,
+                           Codec::tr("'%1' is not a record setting (section 4)").arg(QChar(p.cmd)));
         if (r.recordData.value(p.cmd))
-            return invalid(raw, tr("record setting '%1' given twice").arg(QChar(p.cmd)));
+            return invalid(raw, Codec::tr("record setting '%1' given twice").arg(QChar(p.cmd)));
         qint64 v = 0;
         if (!parseNumber(p.text, &v))
-            return invalid(raw, tr("malformed record string"));
+            return invalid(raw, Codec::tr("malformed record string"));
         r.recordData.fields << qMakePair(p.cmd, v);
     }
     return r;
@@ -131,7 +127,7 @@ Reply parseLong(const QByteArray& raw, const QByteArray& body, Reply r)
     }
     r.key = commandKey(body);
     if (r.key.size() < 2)
-        return invalid(raw, tr("long reply without a keyword"));
+        return invalid(raw, Codec::tr("long reply without a keyword"));
     QByteArray rest = body.mid(r.key.size());
     if (!rest.isEmpty() && rest[0] == '=') {
         r.assignment = true;
@@ -139,7 +135,7 @@ Reply parseLong(const QByteArray& raw, const QByteArray& body, Reply r)
     }
     qint64 v = 0;
     if (!parseNumber(rest, &v))
-        return invalid(raw, tr("long reply without a numeric value"));
+        return invalid(raw, Codec::tr("long reply without a numeric value"));
     r.kind = Reply::Kind::Long;
     r.text = rest;
     r.value = v;
@@ -151,7 +147,7 @@ Reply ReplyDecoder::parse(const QByteArray& frame)
 {
     for (char c : frame) {
         if (c < 0x20 || c >= 0x7F)
-            return invalid(frame, tr("non-ASCII bytes in reply"));
+            return invalid(frame, Codec::tr("non-ASCII bytes in reply"));
     }
     if (frame.startsWith('#')) {
         Reply r;
@@ -163,17 +159,17 @@ Reply ReplyDecoder::parse(const QByteArray& frame)
     r.raw = frame;
     const int digits = leadingDigits(frame);
     if (digits > 3)
-        return invalid(frame, tr("address with more than three digits"));
+        return invalid(frame, Codec::tr("address with more than three digits"));
     if (digits > 0) {
         r.address = frame.left(digits).toInt();
         if (r.address < 1 || r.address > 255)
-            return invalid(frame, tr("reply from invalid address %1").arg(r.address));
+            return invalid(frame, Codec::tr("reply from invalid address %1").arg(r.address));
     }
     const QByteArray body = frame.mid(digits);
     if (body.isEmpty())
-        return invalid(frame, tr("reply without a command"));
+        return invalid(frame, Codec::tr("reply without a command"));
     if (digits == 0 && body.at(0) != 'Z')
-        return invalid(frame, tr("reply without an address"));
+        return invalid(frame, Codec::tr("reply without an address"));
     if (body.at(0) == ':')
         return parseLong(frame, body, r);
     if (body.endsWith('?')) {
@@ -184,7 +180,7 @@ Reply ReplyDecoder::parse(const QByteArray& frame)
     if (body.at(0) == 'v' && body.size() > 1 && body.at(1) == ' ') {
         const auto fw = parseFirmware(body.mid(2));
         if (!fw)
-            return invalid(frame, tr("malformed firmware string"));
+            return invalid(frame, Codec::tr("malformed firmware string"));
         r.kind = Reply::Kind::Firmware;
         r.key = "v";
         r.firmware = *fw;
@@ -198,7 +194,7 @@ Reply ReplyDecoder::parse(const QByteArray& frame)
     if (!r.text.isEmpty()) {
         qint64 v = 0;
         if (!parseNumber(r.text, &v))
-            return invalid(frame, tr("echo with a non-numeric value"));
+            return invalid(frame, Codec::tr("echo with a non-numeric value"));
         r.value = v;
     }
     return r;
@@ -227,7 +223,7 @@ QList<Reply> ReplyDecoder::feed(const QByteArray& bytes)
         }
         m_buffer += c;
         if (m_buffer.size() > kMaxFrame) {
-            out << invalid(m_buffer, tr("reply longer than %1 bytes").arg(kMaxFrame));
+            out << invalid(m_buffer, Codec::tr("reply longer than %1 bytes").arg(kMaxFrame));
             m_buffer.clear();
             m_discarding = true; // resynchronise at the next CR
         }
@@ -256,7 +252,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
     for (char ch : bytes) {
         if (ch == '#') {
             if (m_inFrame && m_buffer.size() > 1)
-                fail(tr("frame interrupted by a new '#'"));
+                fail(Codec::tr("frame interrupted by a new '#'"));
             else if (m_inFrame)
                 ++m_unframed; // "##": the first '#' began an empty frame
             m_buffer = "#";
@@ -270,7 +266,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         if (ch != '\r') {
             m_buffer += ch;
             if (m_buffer.size() > kMaxFrame) {
-                fail(tr("command longer than %1 bytes").arg(kMaxFrame));
+                fail(Codec::tr("command longer than %1 bytes").arg(kMaxFrame));
                 m_buffer.clear();
                 m_inFrame = false;
             }
@@ -289,7 +285,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
             bodyStart = leadingDigits(f);
             if (bodyStart == 0 || bodyStart > 3) {
                 c.valid = false;
-                c.error = tr("command without a valid address");
+                c.error = Codec::tr("command without a valid address");
             } else {
                 c.address = f.left(bodyStart).toInt();
             }
@@ -297,7 +293,7 @@ QList<Command> CommandDecoder::feed(const QByteArray& bytes)
         c.body = f.mid(bodyStart);
         if (c.valid && c.body.isEmpty()) {
             c.valid = false;
-            c.error = tr("command without a body");
+            c.error = Codec::tr("command without a body");
         }
         out << c;
     }

@@ -78,7 +78,8 @@ ModelPresentation presentation()
         for (Axis axis : allAxes()) {
             StatusWordInfo w;
             w.key = QStringLiteral("status") + axisName(axis);
-            w.title = QCoreApplication::translate(kContext, "Drive status %1 ($, 5.21)")
+            w.title = QCoreApplication::translate("stepdeck::nanotec::Presentation",
+                                                  "Drive status %1 ($, 5.21)")
                           .arg(axisName(axis));
             w.width = 8;
             for (const BitText& b : kStatusBits) {
