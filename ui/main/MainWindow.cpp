@@ -108,6 +108,9 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     });
     connect(m_connection, &ConnectionBar::connectionFailed, this,
             [this](const QString& text) { m_messages->show(Owner::Link, text); });
+    // Shown after the new link cleared the old link messages; it stays until it expires.
+    connect(m_connection, &ConnectionBar::reconnected, this,
+            [this](const QString& text) { m_messages->show(Owner::General, text); });
     connect(m_connection, &ConnectionBar::linkTextChanged, this,
             [this](const QString& text, bool warning) {
                 m_linkLabel->setText(text);
