@@ -140,6 +140,14 @@ void ConnectionBar::setPortSpec(const QString& spec)
         m_port->setEditText(spec);
 }
 
+bool ConnectionBar::setPollInterval(int ms)
+{
+    if (ms < m_interval->minimum() || ms > m_interval->maximum())
+        return false;
+    m_interval->setValue(ms);
+    return true;
+}
+
 QString ConnectionBar::selectedModelId() const
 {
     return m_model->currentData().toString();

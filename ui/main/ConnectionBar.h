@@ -37,6 +37,9 @@ public:
     QString portSpec() const;
     void setPortSpec(const QString& spec);
     QString selectedModelId() const;
+    // The status poll interval for the next connect (and the current link); false when ms is
+    // outside the range the field offers.
+    bool setPollInterval(int ms);
     void setSelectedModel(const QString& modelId);
 
     QComboBox* portCombo() const { return m_port; }
