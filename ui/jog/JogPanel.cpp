@@ -1,5 +1,6 @@
 #include "JogPanel.h"
 #include "common/ConnectionGate.h"
+#include "common/StyleSheet.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
@@ -31,9 +32,9 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
       m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
-      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
-      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
-      m_settingsDialog(new QDialog(this)),
+      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)),
+      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
+      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
@@ -115,7 +116,7 @@ void JogPanel::showKeyboardState()
         style = QStringLiteral("color: #1b5e20; font-weight: bold;");
     }
     m_keyboardState->setText(text);
-    m_keyboardState->setStyleSheet(QStringLiteral("QLabel { %1 }").arg(style));
+    setStyleSheetIfChanged(m_keyboardState, QStringLiteral("QLabel { %1 }").arg(style));
 }
 
 QWidget* JogPanel::buildSidePanel()

@@ -212,6 +212,8 @@ void MainWindow::buildDocks()
         addDock(m_charts, tr("Charts"), QStringLiteral("chartsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(setup, traffic);
     tabifyDockWidget(traffic, charts);
+    // Charts behind another tab are not redrawn (issue 10, idle cost).
+    connect(charts, &QDockWidget::visibilityChanged, m_charts, &ChartsPanel::setOnScreen);
     m_recordsDock =
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);
