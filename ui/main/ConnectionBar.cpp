@@ -35,11 +35,11 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     // Both combos give way on a narrow screen (issue 11: the bar must fit 1024 px); the
     // popup lists still show the full names.
     m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_model->setMinimumContentsLength(14);
+    m_model->setMinimumContentsLength(13);
     m_model->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setMinimumContentsLength(18);
+    m_port->setMinimumContentsLength(15);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("Serial port, the in-process simulator, tcp://HOST:PORT for a serial "
                           "device server, or a device path such as /dev/pts/3"));
