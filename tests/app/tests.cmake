@@ -20,3 +20,7 @@ add_dependencies(tst_cli_emis_e2e stepdeck-cli stepdeck-sim)
 stepdeck_add_test(tst_cli_laser_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_laser_e2e.cpp
                   LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_laser_e2e stepdeck-cli stepdeck-sim)
+# stepdeck-bench --gui-idle runs and prints figures (issue 10); not timed.
+stepdeck_add_test(tst_guiidle_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_guiidle_smoke.cpp
+                  LABELS integration TIMEOUT 120)
+add_dependencies(tst_guiidle_smoke stepdeck-bench stepdeck-sim stepdeck)
