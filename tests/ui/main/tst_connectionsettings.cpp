@@ -4,11 +4,14 @@
 // back -- positions unknown, nothing resumed, the operator told. Settings are isolated
 // (QStandardPaths test mode): the user's files are never touched.
 #include "../UiTestSupport.h"
+#include "jog/JogPanel.h"
 #include "main/ConnectionSettings.h"
 #include "main/PortScanner.h"
 #include "main/PortWatcher.h"
+#include "protocols/elab/ElabCodec.h"
 #include "sim/PtyEndpoint.h"
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QMenu>
@@ -27,11 +30,22 @@ struct PtyDevice
     std::unique_ptr<elab::ElabSimulator> sim;
     QByteArray received;
 
-    bool start()
+    // setUp: the board's ramp setup already written (motion allowed), as after a replug of
+    // the USB adapter alone: the board itself kept its power.
+    bool start(bool setUp = false)
     {
         SimulatorOptions options;
         options.line = findModel(QStringLiteral("elab"))->line;
         sim = std::make_unique<elab::ElabSimulator>(options);
+        if (setUp) { // through the protocol, before the host is attached (its ACKs go nowhere)
+            using namespace elab;
+            const Triple<quint16> start{100, 100, 100};
+            const Triple<quint16> max{5000, 5000, 5000};
+            const Triple<quint16> accel{1000, 1000, 1000};
+            sim->receive(encode::ramp(RampKind::StartSpeed, start) +
+                         encode::ramp(RampKind::MaxSpeed, max) +
+                         encode::ramp(RampKind::Acceleration, accel));
+        }
         QSignalSpy opened(pty.get(), &Transport::opened);
         pty->open(options.line);
         if (!opened.wait(2000))
@@ -222,7 +236,7 @@ void TestConnectionSettings::restart_restoresModelPortIntervalAndLayout()
 void TestConnectionSettings::usbDeviceBack_reconnects_unreferenced_nothingResumed()
 {
     auto first = std::make_unique<PtyDevice>();
-    QVERIFY(first->start());
+    QVERIFY(first->start(true));
     FakePorts fake;
     fake.set({usbEntry(first->pty->slavePath())});
     UiFixture f;
@@ -238,6 +252,14 @@ void TestConnectionSettings::usbDeviceBack_reconnects_unreferenced_nothingResume
     bar->connectNow();
     QVERIFY(f.waitConnected());
     QTRY_VERIFY(bar->portWatcher()->isWatching());
+    // The operator jogs X with the keyboard and keeps the key held through it all.
+    f.window->show();
+    QVERIFY(QTest::qWaitForWindowActive(f.window.get()));
+    f.window->jogPanel()->keyboardCheck()->setChecked(true);
+    QTest::keyPress(f.window.get(), Qt::Key_Right);
+    KeyRepeater held(Qt::Key_Right);
+    held.start();
+    QTRY_VERIFY_WITH_TIMEOUT(first->sim->isMoving(Axis::X), 3000); // jogging works here
 
     // Unplugged: the port vanishes, the scan no longer lists it.
     first->pty->vanish();
@@ -248,7 +270,7 @@ void TestConnectionSettings::usbDeviceBack_reconnects_unreferenced_nothingResume
 
     // Plugged in again: the same adapter under another path.
     PtyDevice second;
-    QVERIFY(second.start());
+    QVERIFY(second.start(true));
     fake.set({usbEntry(second.pty->slavePath())});
     QVERIFY(rescanned(bar));
     QVERIFY(f.waitConnected());
@@ -259,9 +281,11 @@ void TestConnectionSettings::usbDeviceBack_reconnects_unreferenced_nothingResume
     QTRY_VERIFY(f.statusCount > polls + 5); // it polls and nothing else happens
     for (const AxisStatus& axis : f.window->context()->status().axes)
         QVERIFY(!axis.referenced);
+    QVERIFY(held.sent() > 0); // the key was held all along
     QCOMPARE(second.motionCodes(), QList<char>{});
     for (Axis axis : {Axis::X, Axis::Y, Axis::Z})
         QVERIFY(!second.sim->isMoving(axis));
+    held.stop();
 }
 
 void TestConnectionSettings::operatorDisconnect_deviceBack_staysDisconnected()
