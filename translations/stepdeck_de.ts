@@ -1410,15 +1410,15 @@
         <name>stepdeck::SoftLimits</name>
         <message>
             <source>refused: axis %1 would reach %2, beyond its soft limit %3</source>
-            <translation type="unfinished" />
+            <translation>abgelehnt: Achse %1 würde %2 erreichen, jenseits ihres Software-Endschalters %3</translation>
         </message>
         <message>
             <source>refused: a velocity move has no end, and axis %1 has soft limits; jog or move to a position instead</source>
-            <translation type="unfinished" />
+            <translation>abgelehnt: Eine Geschwindigkeitsfahrt hat kein Ende, und Achse %1 hat Software-Endschalter; stattdessen tippen oder eine Position anfahren</translation>
         </message>
         <message>
             <source>jog stopped: axis %1 at its soft limit %2</source>
-            <translation type="unfinished" />
+            <translation>Tippbetrieb angehalten: Achse %1 an ihrem Software-Endschalter %2</translation>
         </message>
     </context>
     <context>
@@ -3587,55 +3587,55 @@
         <name>stepdeck::ui::GoToWidget</name>
         <message>
             <source>Go to position</source>
-            <translation type="unfinished" />
+            <translation>Position anfahren</translation>
         </message>
         <message>
             <source>Go</source>
-            <translation type="unfinished" />
+            <translation>Anfahren</translation>
         </message>
         <message>
             <source>Go to work zero</source>
-            <translation type="unfinished" />
+            <translation>Werkstücknullpunkt anfahren</translation>
         </message>
         <message>
             <source>Move the axes with a value to that work position (all at once)</source>
-            <translation type="unfinished" />
+            <translation>Die Achsen mit einem Wert auf diese Werkstückposition fahren (gleichzeitig)</translation>
         </message>
         <message>
             <source>Move every axis to its work zero (all at once)</source>
-            <translation type="unfinished" />
+            <translation>Alle Achsen auf ihren Werkstücknullpunkt fahren (gleichzeitig)</translation>
         </message>
         <message>
             <source>Work position of %1 in %2; empty: %1 stays</source>
-            <translation type="unfinished" />
+            <translation>Werkstückposition von %1 in %2; leer: %1 bleibt stehen</translation>
         </message>
         <message>
             <source>Reference the machine to go to a position.</source>
-            <translation type="unfinished" />
+            <translation>Referenzieren Sie die Maschine, um eine Position anzufahren.</translation>
         </message>
         <message>
             <source>%1: '%2' is not a number</source>
-            <translation type="unfinished" />
+            <translation>%1: „%2“ ist keine Zahl</translation>
         </message>
         <message>
             <source>Enter a position for at least one axis.</source>
-            <translation type="unfinished" />
+            <translation>Geben Sie für mindestens eine Achse eine Position ein.</translation>
         </message>
         <message>
             <source>work zero</source>
-            <translation type="unfinished" />
+            <translation>Werkstücknullpunkt</translation>
         </message>
         <message>
             <source>Moving to %1…</source>
-            <translation type="unfinished" />
+            <translation>Fahre nach %1…</translation>
         </message>
         <message>
             <source>Not moved: %1</source>
-            <translation type="unfinished" />
+            <translation>Nicht gefahren: %1</translation>
         </message>
         <message>
             <source>Move accepted by the controller.</source>
-            <translation type="unfinished" />
+            <translation>Fahrt von der Steuerung angenommen.</translation>
         </message>
     </context>
     <context>
@@ -4444,35 +4444,35 @@ W1500</translation>
         </message>
         <message>
             <source>Soft limits…</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter…</translation>
         </message>
         <message>
             <source>Travel range per axis that jog and moves must not leave</source>
-            <translation type="unfinished" />
+            <translation>Verfahrbereich je Achse, den Tippbetrieb und Fahrten nicht verlassen dürfen</translation>
         </message>
         <message>
             <source>no soft limits</source>
-            <translation type="unfinished" />
+            <translation>keine Software-Endschalter</translation>
         </message>
         <message>
             <source>No travel range set for %1 (Soft limits…)</source>
-            <translation type="unfinished" />
+            <translation>Kein Verfahrbereich für %1 gesetzt (Software-Endschalter…)</translation>
         </message>
         <message>
             <source>limits off</source>
-            <translation type="unfinished" />
+            <translation>Grenzen aus</translation>
         </message>
         <message>
             <source>limits %1..%2</source>
-            <translation type="unfinished" />
+            <translation>Grenzen %1..%2</translation>
         </message>
         <message>
             <source>limits %1..%2 (after referencing)</source>
-            <translation type="unfinished" />
+            <translation>Grenzen %1..%2 (nach dem Referenzieren)</translation>
         </message>
         <message>
             <source>Soft limits of %1 in machine steps</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter von %1 in Maschinenschritten</translation>
         </message>
     </context>
     <context>
@@ -5008,11 +5008,11 @@ hält die Steuerung nicht an</translation>
         <name>stepdeck::ui::SoftLimitsDialog</name>
         <message>
             <source>Soft limits</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter</translation>
         </message>
         <message>
             <source>Jog and moves stop or are refused at these positions (machine steps) once the axis is referenced. Minimum equal to maximum: no limit set.</source>
-            <translation type="unfinished" />
+            <translation>Tippbetrieb und Fahrten halten an diesen Positionen (Maschinenschritte) an oder werden abgelehnt, sobald die Achse referenziert ist. Minimum gleich Maximum: keine Grenze gesetzt.</translation>
         </message>
         <message>
             <source>Axis</source>
@@ -5020,15 +5020,15 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>On</source>
-            <translation type="unfinished" />
+            <translation>Ein</translation>
         </message>
         <message>
             <source>Minimum</source>
-            <translation type="unfinished" />
+            <translation>Minimum</translation>
         </message>
         <message>
             <source>Maximum</source>
-            <translation type="unfinished" />
+            <translation>Maximum</translation>
         </message>
         <message>
             <source> steps</source>
@@ -5036,15 +5036,15 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>here</source>
-            <translation type="unfinished" />
+            <translation>hier</translation>
         </message>
         <message>
             <source>The current position of %1</source>
-            <translation type="unfinished" />
+            <translation>Die aktuelle Position von %1</translation>
         </message>
         <message>
             <source>Axis %1: the minimum lies above the maximum.</source>
-            <translation type="unfinished" />
+            <translation>Achse %1: Das Minimum liegt über dem Maximum.</translation>
         </message>
     </context>
     <context>
@@ -5287,6 +5287,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Stored values in the form: %1.%2</source>
             <translation>Gespeicherte Werte im Formular: %1.%2</translation>
+        </message>
+        <message>
+            <source>Not stored: not connected.</source>
+            <translation>Nicht gespeichert: nicht verbunden.</translation>
         </message>
     </context>
     <context>
