@@ -3247,6 +3247,50 @@
             <source>Connect failed</source>
             <translation>Verbindung fehlgeschlagen</translation>
         </message>
+        <message>
+            <source>Reset:</source>
+            <translation>Reset:</translation>
+        </message>
+        <message>
+            <source>RTS</source>
+            <translation>RTS</translation>
+        </message>
+        <message>
+            <source>DTR</source>
+            <translation>DTR</translation>
+        </message>
+        <message>
+            <source>The modem line wired to the controller's reset input</source>
+            <translation>Die Modemleitung, die mit dem Reset-Eingang der Steuerung verbunden ist</translation>
+        </message>
+        <message>
+            <source>Recent ports and reconnect options</source>
+            <translation>Zuletzt benutzte Ports und Optionen zum Wiederverbinden</translation>
+        </message>
+        <message>
+            <source>Connection options</source>
+            <translation>Verbindungsoptionen</translation>
+        </message>
+        <message>
+            <source>Recent ports</source>
+            <translation>Zuletzt benutzte Ports</translation>
+        </message>
+        <message>
+            <source>Reconnect when the USB device returns</source>
+            <translation>Wieder verbinden, wenn das USB-Gerät zurückkommt</translation>
+        </message>
+        <message>
+            <source>When the USB adapter of a lost link is plugged in again (same vendor, product and serial number), connect again. Positions count as unknown afterwards and nothing resumes by itself.</source>
+            <translation>Wird der USB-Adapter einer verlorenen Verbindung wieder eingesteckt (gleicher Hersteller, gleiches Produkt, gleiche Seriennummer), wird wieder verbunden. Die Positionen gelten danach als unbekannt, und nichts läuft von selbst weiter.</translation>
+        </message>
+        <message>
+            <source>(none yet)</source>
+            <translation>(noch keine)</translation>
+        </message>
+        <message>
+            <source>Reconnected to %1: the USB device came back. Positions are unknown until the axes are referenced; nothing was resumed (no jog, move or bridge).</source>
+            <translation>Wieder verbunden mit %1: Das USB-Gerät ist zurück. Die Positionen sind unbekannt, bis die Achsen referenziert sind; nichts wurde fortgesetzt (kein Joggen, keine Fahrt, keine Brücke).</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>

@@ -1,4 +1,5 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "GuiIdle.h"
 #include "Measurements.h"
 #include "SoakMain.h"
 #include "protocols/Registry.h"
@@ -140,6 +141,8 @@ int main(int argc, char** argv)
     const QStringList args = application.arguments().mid(1);
     if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
         qInstallMessageHandler(quiet);
+    if (const int code = guiIdleMain(QCoreApplication::applicationDirPath(), args); code >= 0)
+        return code;
     if (const int code = soakMain(application.applicationFilePath(), args); code >= 0)
         return code;
     const bool asJson = args.contains(QStringLiteral("--json"));
@@ -149,6 +152,8 @@ int main(int argc, char** argv)
                               "Usage: stepdeck-bench [--json]\n"
                               "       stepdeck-bench --soak N [--model M] [--seed S] [--json]\n"
                               "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                              "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
+                              "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
                               "Measures the E-LAB adapter against its simulator over a "
                               "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                               "DC2 feed throughput, unpaced and paced at the line rate.\n"
@@ -159,6 +164,8 @@ int main(int argc, char** argv)
                               "duplicated moves; exit 1 unless all are 0.\n"
                               "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
                               "-write); time until the host reports it.\n"
+                              "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
+                              "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
                               "See docs/benchmark.md."));
             return 0;
         }

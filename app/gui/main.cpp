@@ -1,5 +1,6 @@
 // stepdeck: the operator and technician GUI.
-//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--screenshot DIR] [--lang en|de]
+//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--poll-interval MS] [--screenshot DIR]
+//   [--lang en|de]
 #include "../common/SignalPipe.h"
 #include "main/ConnectionBar.h"
 #include "main/MainWindow.h"
@@ -73,7 +74,10 @@ int main(int argc, char** argv)
     const QCommandLineOption lang(QStringLiteral("lang"),
                                   QStringLiteral("User interface language (en, de)."),
                                   QStringLiteral("CODE"));
-    parser.addOptions({simulate, model, port, screenshot, lang});
+    const QCommandLineOption pollInterval(QStringLiteral("poll-interval"),
+                                          QStringLiteral("Status poll interval in milliseconds."),
+                                          QStringLiteral("MS"));
+    parser.addOptions({simulate, model, port, screenshot, lang, pollInterval});
     if (asksForTextOnly(argc, argv)) {
         const QCoreApplication textOnly(argc, argv);
         parser.process(textOnly); // prints help or version (or the usage error) and exits
@@ -112,6 +116,14 @@ int main(int argc, char** argv)
     }
 
     ui::MainWindow window;
+    if (parser.isSet(pollInterval)) {
+        bool ok = false;
+        const int ms = parser.value(pollInterval).toInt(&ok, 10);
+        if (!ok || !window.connectionBar()->setPollInterval(ms)) {
+            QTextStream(stderr) << "--poll-interval needs milliseconds (10..2000)\n";
+            return 2;
+        }
+    }
     if (!modelId.isEmpty())
         window.connectionBar()->setSelectedModel(modelId);
     if (!portSpec.isEmpty()) {

@@ -27,3 +27,7 @@ add_dependencies(tst_gui_signals stepdeck)
 stepdeck_add_test(tst_port_permission SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_port_permission.cpp
                   LABELS integration)
 add_dependencies(tst_port_permission stepdeck-cli)
+# stepdeck-bench --gui-idle runs and prints figures (issue 10); not timed.
+stepdeck_add_test(tst_guiidle_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_guiidle_smoke.cpp
+                  LABELS integration TIMEOUT 120)
+add_dependencies(tst_guiidle_smoke stepdeck-bench stepdeck-sim stepdeck)

@@ -1,6 +1,7 @@
 // Charts: samples follow the status, the time window limits what is shown, pause freezes
 // it, and the visible data exports to CSV and the charts to PNG.
 #include "UiTestSupport.h"
+#include "setup/SetupPage.h"
 #include "charts/ChartsPanel.h"
 #include <QCheckBox>
 #include <QImage>
@@ -57,7 +58,17 @@ void TestChartsPanel::panel_followsStatus_exportsCsvAndPng()
     QVERIFY(f.connectSim());
     ui::ChartsPanel* charts = f.window->chartsPanel();
     QTRY_VERIFY_WITH_TIMEOUT(charts->sampler()->samples().size() >= 5, 5000);
+    f.window->raisePage(charts);
     QTRY_VERIFY_WITH_TIMEOUT(charts->pointCount(0) >= 5, 3000);
+    // Behind another tab the charts are not redrawn (idle cost), the samples still collect,
+    // and showing the panel brings it up to date at once.
+    f.window->raisePage(f.window->setupPage());
+    const int hidden = charts->pointCount(0);
+    const int before = f.statusCount;
+    QTRY_VERIFY_WITH_TIMEOUT(f.statusCount - before >= 10, 3000);
+    QCOMPARE(charts->pointCount(0), hidden);
+    f.window->raisePage(charts);
+    QTRY_VERIFY(charts->pointCount(0) > hidden);
     charts->pauseCheck()->setChecked(true);
     const int frozen = charts->pointCount(0);
     const int from = f.statusCount;

@@ -51,7 +51,6 @@ ChartsPanel::ChartsPanel(MachineContext* context, QWidget* parent)
             });
     m_timer->setInterval(250);
     connect(m_timer, &QTimer::timeout, this, &ChartsPanel::refresh);
-    m_timer->start();
     rebuild();
 }
 
@@ -141,6 +140,37 @@ void ChartsPanel::fill(Plot& plot, const QVector<ChartSample>& samples,
     const double end =
         samples.isEmpty() ? windowSeconds() : qMax(samples.last().t, windowSeconds());
     plot.x->setRange(end - windowSeconds(), end);
+}
+
+void ChartsPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    updateTimer();
+}
+
+void ChartsPanel::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    updateTimer();
+}
+
+void ChartsPanel::setOnScreen(bool onScreen)
+{
+    m_onScreen = onScreen;
+    updateTimer();
+}
+
+void ChartsPanel::updateTimer()
+{
+    const bool shown = isVisible() && m_onScreen;
+    if (shown == m_timer->isActive())
+        return;
+    if (shown) {
+        refresh(); // up to date at once
+        m_timer->start();
+    } else {
+        m_timer->stop();
+    }
 }
 
 void ChartsPanel::refresh()

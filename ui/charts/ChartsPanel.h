@@ -31,10 +31,22 @@ public:
 
 public Q_SLOTS:
     void refresh();
+    // Whether the panel is on screen where visibility alone does not tell: a dock behind
+    // another tab stays "visible" to QWidget (MainWindow feeds QDockWidget::visibilityChanged).
+    void setOnScreen(bool onScreen);
     void exportCsvAs();
     void exportPngAs();
 
+protected:
+    // The charts redraw only while visible (issue 10, idle cost: a chart in a hidden tab
+    // re-plotting at 4 Hz cost more than the rest of the window); samples are still collected,
+    // and showing the panel brings it up to date at once.
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+
 private:
+    void updateTimer();
+    bool m_onScreen = true;
     struct Plot
     {
         QChart* chart = nullptr;

@@ -12,9 +12,17 @@ namespace stepdeck::ui::dialogs {
 namespace {
 const char* const kOpenDialogs = "stepdeckOpenDialogs";
 
+const QString kAnyFolder = QStringLiteral("dialogs/lastFolder");
+
 QString folderKey(const QString& key)
 {
     return QStringLiteral("dialogs/%1/folder").arg(key);
+}
+
+QString existingFolder(const QString& settingsKey)
+{
+    const QString stored = QSettings().value(settingsKey).toString();
+    return !stored.isEmpty() && QDir(stored).exists() ? stored : QString();
 }
 
 QFileDialog* fileDialog(QWidget* part, const QString& key, const QString& title,
@@ -27,7 +35,7 @@ QFileDialog* fileDialog(QWidget* part, const QString& key, const QString& title,
                      [key, done = std::move(done)](const QString& path) {
                          if (path.isEmpty())
                              return;
-                         QSettings().setValue(folderKey(key), QFileInfo(path).absolutePath());
+                         rememberFolder(key, QFileInfo(path).absolutePath());
                          if (done)
                              done(path);
                      });
@@ -60,10 +68,19 @@ void showForPart(QDialog* dialog, QWidget* part)
 
 QString lastFolder(const QString& key)
 {
-    const QString stored = QSettings().value(folderKey(key)).toString();
-    if (!stored.isEmpty() && QDir(stored).exists())
-        return stored;
-    return QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QString folder = existingFolder(folderKey(key));
+    if (folder.isEmpty())
+        folder = existingFolder(kAnyFolder); // a dialog used for the first time
+    if (folder.isEmpty())
+        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return folder;
+}
+
+void rememberFolder(const QString& key, const QString& folder)
+{
+    QSettings settings;
+    settings.setValue(folderKey(key), folder);
+    settings.setValue(kAnyFolder, folder);
 }
 
 QFileDialog* saveFile(QWidget* part, const QString& key, const QString& title,

@@ -19,6 +19,8 @@ void LedIndicator::setState(State state)
 
 void LedIndicator::setText(const QString& text)
 {
+    if (text == m_text)
+        return; // the lamps are set on every status poll
     m_text = text;
     updateGeometry();
     update();

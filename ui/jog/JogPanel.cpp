@@ -1,5 +1,6 @@
 #include "JogPanel.h"
 #include "common/ConnectionGate.h"
+#include "common/StyleSheet.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
@@ -115,7 +116,7 @@ void JogPanel::showKeyboardState()
         style = QStringLiteral("color: #1b5e20; font-weight: bold;");
     }
     m_keyboardState->setText(text);
-    m_keyboardState->setStyleSheet(QStringLiteral("QLabel { %1 }").arg(style));
+    setStyleSheetIfChanged(m_keyboardState, QStringLiteral("QLabel { %1 }").arg(style));
 }
 
 QWidget* JogPanel::buildSidePanel()

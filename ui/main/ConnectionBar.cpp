@@ -1,6 +1,8 @@
 #include "ConnectionBar.h"
+#include "main/ConnectionSettings.h"
 #include "main/MachineContext.h"
 #include "main/PortScanner.h"
+#include "main/PortWatcher.h"
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -9,6 +11,7 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTimer>
+#include <QToolButton>
 
 namespace stepdeck::ui {
 
@@ -18,7 +21,9 @@ const QString kSim = QStringLiteral("sim");
 
 ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_scanner(new PortScanner(this)),
-      m_model(new QComboBox(this)), m_port(new QComboBox(this)), m_interval(new QSpinBox(this)),
+      m_watcher(new PortWatcher(this)), m_model(new QComboBox(this)), m_port(new QComboBox(this)),
+      m_resetLabel(new QLabel(tr("Reset:"), this)), m_resetLine(new QComboBox(this)),
+      m_options(new QToolButton(this)), m_interval(new QSpinBox(this)),
       m_connect(new QPushButton(tr("Connect"), this)), m_link(new LedIndicator({}, this)),
       m_rate(new QLabel(this)), m_replyWatch(new QTimer(this))
 {
@@ -30,11 +35,11 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     // Both combos give way on a narrow screen (issue 11: the bar must fit 1024 px); the
     // popup lists still show the full names.
     m_model->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_model->setMinimumContentsLength(14);
+    m_model->setMinimumContentsLength(13);
     m_model->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setMinimumContentsLength(18);
+    m_port->setMinimumContentsLength(15);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("Serial port, the in-process simulator, tcp://HOST:PORT for a serial "
                           "device server, or a device path such as /dev/pts/3"));
@@ -43,6 +48,13 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     m_interval->setSuffix(tr(" ms"));
     m_interval->setToolTip(tr("Status poll interval"));
     m_interval->setValue(QSettings().value(QStringLiteral("connection/pollMs"), 50).toInt());
+    // Issue 7: the E-LAB manual's text names RTS as the reset line, its DE-9 pin table the
+    // DTR pin; the operator picks what the cable wires (the CLI's --reset-line).
+    m_resetLine->addItem(tr("RTS"), resetLineName(LineSettings::ResetLine::Rts));
+    m_resetLine->addItem(tr("DTR"), resetLineName(LineSettings::ResetLine::Dtr));
+    m_resetLine->setToolTip(tr("The modem line wired to the controller's reset input"));
+    m_resetLabel->setBuddy(m_resetLine);
+    buildOptions();
     m_connect->setMinimumWidth(110);
     m_rate->setMinimumWidth(70);
     m_rate->setToolTip(tr("Achieved status poll rate"));
@@ -52,6 +64,9 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     layout->addSpacing(8);
     layout->addWidget(new QLabel(tr("Port:"), this));
     layout->addWidget(m_port, 2);
+    layout->addWidget(m_options);
+    layout->addWidget(m_resetLabel);
+    layout->addWidget(m_resetLine);
     layout->addWidget(new QLabel(tr("Poll:"), this));
     layout->addWidget(m_interval);
     layout->addWidget(m_connect);
@@ -67,12 +82,23 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
                          .toString());
     setPortSpec(settings.value(QStringLiteral("connection/port"), kSim).toString());
     m_context->selectModel(selectedModelId());
+    updateResetLine();
 
     connect(m_scanner, &PortScanner::portsChanged, this, &ConnectionBar::fillPorts);
+    connect(m_scanner, &PortScanner::scanned, this, &ConnectionBar::onPortsScanned);
+    connect(m_watcher, &PortWatcher::deviceReturned, this, &ConnectionBar::onDeviceReturned);
+    connect(m_resetLine, &QComboBox::activated, this, [this] {
+        const auto line = resetLineFromName(m_resetLine->currentData().toString());
+        connectionsettings::setResetLine(selectedModelId(),
+                                         line.value_or(LineSettings::ResetLine::Rts));
+    });
     connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::toggleConnection);
     connect(m_port->lineEdit(), &QLineEdit::returnPressed, this, &ConnectionBar::connectNow);
-    connect(m_model, &QComboBox::currentIndexChanged, this,
-            [this] { m_context->selectModel(selectedModelId()); });
+    connect(m_model, &QComboBox::currentIndexChanged, this, [this] {
+        m_watcher->forget(); // another model: the old link is not coming back
+        m_context->selectModel(selectedModelId());
+        updateResetLine();
+    });
     connect(m_interval, &QSpinBox::valueChanged, this, [this](int ms) {
         QSettings().setValue(QStringLiteral("connection/pollMs"), ms);
         m_context->session()->setPollInterval(ms);
@@ -114,6 +140,14 @@ void ConnectionBar::setPortSpec(const QString& spec)
         m_port->setEditText(spec);
 }
 
+bool ConnectionBar::setPollInterval(int ms)
+{
+    if (ms < m_interval->minimum() || ms > m_interval->maximum())
+        return false;
+    m_interval->setValue(ms);
+    return true;
+}
+
 QString ConnectionBar::selectedModelId() const
 {
     return m_model->currentData().toString();
@@ -137,6 +171,11 @@ void ConnectionBar::fillPorts()
     m_port->addItem(tr("Simulator (in-process)"), kSim);
     for (const PortEntry& entry : m_scanner->ports())
         m_port->addItem(entry.label, entry.path);
+    // Recent ports the scan cannot list (ptys, tcp://): one click away.
+    for (const QString& recent : connectionsettings::recentPorts()) {
+        if (m_port->findData(recent) < 0)
+            m_port->addItem(recent, recent);
+    }
     m_port->blockSignals(false);
     if (typed)
         m_port->setEditText(typedText);
@@ -154,29 +193,46 @@ void ConnectionBar::toggleConnection()
         connectNow();
 }
 
+ConnectionSpec ConnectionBar::currentSpec() const
+{
+    ConnectionSpec spec;
+    spec.modelId = selectedModelId();
+    spec.port = portSpec();
+    spec.options.pollIntervalMs = m_interval->value();
+    // The same choice the CLI passes with --reset-line (CliSession).
+    spec.options.resetLine = connectionsettings::resetLine(spec.modelId);
+    return spec;
+}
+
 void ConnectionBar::connectNow()
 {
-    const QString port = portSpec();
-    if (port.isEmpty()) {
+    const ConnectionSpec spec = currentSpec();
+    if (spec.port.isEmpty()) {
         Q_EMIT connectionFailed(tr("Choose a port first."));
         return;
     }
-    ConnectionSpec spec;
-    spec.modelId = selectedModelId();
-    spec.port = port;
-    spec.options.pollIntervalMs = m_interval->value();
+    m_watcher->forget(); // the operator chose: follow the device of this link from now on
+    m_reconnecting = false;
+    connectWith(spec);
+}
+
+bool ConnectionBar::connectWith(const ConnectionSpec& spec)
+{
     QString error;
     if (!m_context->connectTo(spec, &error)) {
         Q_EMIT connectionFailed(error);
-        return;
+        return false;
     }
     QSettings settings;
     settings.setValue(QStringLiteral("connection/model"), spec.modelId);
     settings.setValue(QStringLiteral("connection/port"), spec.port);
+    return true;
 }
 
 void ConnectionBar::disconnectNow()
 {
+    m_watcher->forget(); // the operator ended the link: it does not come back by itself
+    m_reconnecting = false;
     m_context->disconnectFromController();
 }
 
@@ -186,10 +242,15 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
     m_connect->setText(busy ? tr("Disconnect") : tr("Connect"));
     m_model->setEnabled(!busy);
     m_port->setEnabled(!busy);
+    m_resetLine->setEnabled(!busy);
     switch (state) {
     case LinkState::Disconnected:
         // A connect that never got through says so (the reason is the tooltip and the
         // status bar message).
+        if (m_lastState == LinkState::Connecting && m_reconnecting) {
+            m_reconnecting = false;
+            m_watcher->reconnectFailed(); // tried again on the next scan that lists it
+        }
         if (m_lastState == LinkState::Connecting && !reason.isEmpty())
             showLink(LedIndicator::State::Fault, tr("Connect failed"));
         else
@@ -199,6 +260,7 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
         showLink(LedIndicator::State::Warning, tr("Connecting"));
         break;
     case LinkState::Connected:
+        onConnected();
         m_sinceReply.start(); // the link was just confirmed
         m_lastReply = QTime::currentTime();
         m_overdue = false;

@@ -108,6 +108,9 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     });
     connect(m_connection, &ConnectionBar::connectionFailed, this,
             [this](const QString& text) { m_messages->show(Owner::Link, text); });
+    // Shown after the new link cleared the old link messages; it stays until it expires.
+    connect(m_connection, &ConnectionBar::reconnected, this,
+            [this](const QString& text) { m_messages->show(Owner::General, text); });
     connect(m_connection, &ConnectionBar::linkTextChanged, this,
             [this](const QString& text, bool warning) {
                 m_linkLabel->setText(text);
@@ -209,6 +212,8 @@ void MainWindow::buildDocks()
         addDock(m_charts, tr("Charts"), QStringLiteral("chartsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(setup, traffic);
     tabifyDockWidget(traffic, charts);
+    // Charts behind another tab are not redrawn (issue 10, idle cost).
+    connect(charts, &QDockWidget::visibilityChanged, m_charts, &ChartsPanel::setOnScreen);
     m_recordsDock =
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);

@@ -1,14 +1,33 @@
 #include "PortScanner.h"
 #include <QSerialPortInfo>
+#include <QThread>
 
 namespace stepdeck::ui {
 
-PortScanner::PortScanner(QObject* parent) : QObject(parent)
+PortScanner::PortScanner(QObject* parent, ScanFunction scanFunction)
+    : QObject(parent), m_thread(new QThread(this)), m_worker(new QObject),
+      m_scan(scanFunction ? std::move(scanFunction) : ScanFunction(&PortScanner::scan))
 {
+    m_thread->setObjectName(QStringLiteral("PortScanner"));
+    m_worker->moveToThread(m_thread);
+    connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    m_thread->start(QThread::LowPriority);
     m_timer.setInterval(2000);
     connect(&m_timer, &QTimer::timeout, this, &PortScanner::rescan);
     m_timer.start();
-    m_ports = scan();
+    rescan();
+}
+
+PortScanner::~PortScanner()
+{
+    m_thread->quit();
+    m_thread->wait();
+}
+
+void PortScanner::setScanFunction(ScanFunction scanFunction)
+{
+    QMutexLocker lock(&m_scanMutex);
+    m_scan = std::move(scanFunction);
 }
 
 QList<PortEntry> PortScanner::scan()
@@ -16,26 +35,56 @@ QList<PortEntry> PortScanner::scan()
     QList<PortEntry> list;
     const auto infos = QSerialPortInfo::availablePorts();
     for (const QSerialPortInfo& info : infos) {
-        QString label = info.portName();
+        PortEntry entry;
+        entry.path = info.systemLocation();
+        entry.label = info.portName();
         if (!info.description().isEmpty())
-            label += QStringLiteral(" \u2013 ") + info.description();
+            entry.label += QStringLiteral(" \u2013 ") + info.description();
         if (info.hasVendorIdentifier() && info.hasProductIdentifier()) {
-            label += QStringLiteral(" (%1:%2)")
-                         .arg(info.vendorIdentifier(), 4, 16, QLatin1Char('0'))
-                         .arg(info.productIdentifier(), 4, 16, QLatin1Char('0'));
+            entry.usb = true;
+            entry.vendorId = info.vendorIdentifier();
+            entry.productId = info.productIdentifier();
+            entry.serialNumber = info.serialNumber();
+            entry.label += QStringLiteral(" (%1:%2)")
+                               .arg(entry.vendorId, 4, 16, QLatin1Char('0'))
+                               .arg(entry.productId, 4, 16, QLatin1Char('0'));
         }
-        list << PortEntry{info.systemLocation(), label};
+        list << entry;
     }
     return list;
 }
 
 void PortScanner::rescan()
 {
-    QList<PortEntry> now = scan();
-    if (now == m_ports)
+    if (m_busy) {
+        m_again = true; // one more once the running scan is back
         return;
-    m_ports = now;
-    Q_EMIT portsChanged();
+    }
+    m_busy = true;
+    QMetaObject::invokeMethod(m_worker, [this] {
+        QList<PortEntry> ports;
+        {
+            QMutexLocker lock(&m_scanMutex);
+            if (m_scan)
+                ports = m_scan();
+        }
+        QMetaObject::invokeMethod(
+            this, [this, ports] { apply(ports); }, Qt::QueuedConnection);
+    });
+}
+
+void PortScanner::apply(const QList<PortEntry>& ports)
+{
+    m_busy = false;
+    const bool changed = ports != m_ports;
+    m_ports = ports;
+    if (changed)
+        Q_EMIT portsChanged();
+    Q_EMIT scanned(m_ports);
+    if (m_again) {
+        m_again = false;
+        rescan();
+    }
 }
 
 } // namespace stepdeck::ui

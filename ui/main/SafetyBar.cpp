@@ -1,4 +1,5 @@
 #include "SafetyBar.h"
+#include "common/StyleSheet.h"
 #include "main/MachineContext.h"
 #include "main/SafetyBanner.h"
 #include <QAction>
@@ -174,8 +175,9 @@ void SafetyBar::refresh()
         {QStringLiteral("idle"), QStringLiteral("background:#eceff1; color:#37474f;")},
     };
     m_banner->setText(banner.text);
-    m_banner->setStyleSheet(QStringLiteral("QLabel { %1 border-radius: 4px; font-weight: bold; }")
-                                .arg(colours.value(banner.severity)));
+    setStyleSheetIfChanged(m_banner,
+                           QStringLiteral("QLabel { %1 border-radius: 4px; font-weight: bold; }")
+                               .arg(colours.value(banner.severity)));
     m_banner->setProperty("severity", banner.severity);
     m_reference->setVisible(banner.offerReference);
 }

@@ -1,6 +1,7 @@
 #include "PositionPanel.h"
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
+#include "common/StyleSheet.h"
 #include "main/MachineContext.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
@@ -148,13 +149,15 @@ void PositionPanel::setState(const Row& row, const QString& state, const QString
                              const QString& tip)
 {
     row.state->setText(state);
-    row.state->setStyleSheet(
+    setStyleSheetIfChanged(
+        row.state,
         QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
             .arg(style));
     row.state->setToolTip(tip);
-    row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: %1;"
-                                            " border-radius: 4px; padding: 2px 8px; }")
-                                 .arg(dim ? QStringLiteral("#6b7780") : QStringLiteral("#7CFC9A")));
+    setStyleSheetIfChanged(row.value,
+                           QStringLiteral("QLabel { background: #101418; color: %1;"
+                                          " border-radius: 4px; padding: 2px 8px; }")
+                               .arg(dim ? QStringLiteral("#6b7780") : QStringLiteral("#7CFC9A")));
 }
 
 void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
@@ -172,17 +175,16 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
-        row.limits->setToolTip(tr("No travel range set for %1 (Soft limits\u2026)")
-                                   .arg(axisName(axis)));
+        row.limits->setToolTip(
+            tr("No travel range set for %1 (Soft limits\u2026)").arg(axisName(axis)));
     } else {
-        const bool active = m_context->isConnected() &&
-                            m_context->softLimits().isActive(axis, m_context->status());
+        const bool active =
+            m_context->isConnected() && m_context->softLimits().isActive(axis, m_context->status());
         row.limits->setText(
             !limit.enabled ? tr("limits off")
-            : active       ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
-                           : tr("limits %1..%2 (after referencing)")
-                                 .arg(limit.minimum)
-                                 .arg(limit.maximum));
+            : active
+                ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
+                : tr("limits %1..%2 (after referencing)").arg(limit.minimum).arg(limit.maximum));
         row.limits->setToolTip(tr("Soft limits of %1 in machine steps").arg(axisName(axis)));
     }
     MoveTrack& move = m_moves[axis];

@@ -1,5 +1,6 @@
 #include "StatusPanel.h"
 #include "common/LedIndicator.h"
+#include "common/StyleSheet.h"
 #include "main/MachineContext.h"
 #include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"
@@ -328,9 +329,9 @@ void StatusPanel::updateTemperature(const MachineStatus& s)
         note = tr("Warning: approaching the %1 °C over-temperature limit.")
                    .arg(kTemperatureLimitC, 0, 'f', 0);
     }
-    m_temperatureBar->setStyleSheet(
-        QStringLiteral("QProgressBar::chunk { background: %1; }").arg(colour));
-    m_temperature->setStyleSheet(QStringLiteral("QLabel { color: %1; }").arg(colour));
+    setStyleSheetIfChanged(m_temperatureBar,
+                           QStringLiteral("QProgressBar::chunk { background: %1; }").arg(colour));
+    setStyleSheetIfChanged(m_temperature, QStringLiteral("QLabel { color: %1; }").arg(colour));
     m_temperatureNote->setText(note);
 }
 
