@@ -3,6 +3,7 @@
 // through the generic ControllerSession doors (scanBus, modelOperation); the adapter does the
 // protocol work.
 #include "CliCommands.h"
+#include "protocols/nanotec/NanotecCodec.h"
 #include <QCoreApplication>
 #include <QJsonArray>
 
@@ -14,8 +15,9 @@ QString tr(const char* text)
     return QCoreApplication::translate("stepdeck-cli", text);
 }
 
-constexpr int kMinAddress = 1; // Nanotec manual 1.1: addresses 1..254
-constexpr int kMaxAddress = 254;
+// The bus address range is the core's (Nanotec manual 1.1: 1..254), not a second copy.
+using nanotec::kMaxAddress;
+using nanotec::kMinAddress;
 constexpr int kScanMsPerAddress = 100; // the adapter waits ~40 ms for a silent address
 
 // "--first N" / "--last N" of scan; false with *error set when malformed.
