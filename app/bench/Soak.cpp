@@ -12,8 +12,12 @@ namespace stepdeck::bench {
 
 namespace {
 constexpr double kFaultProbability = 0.01; // per command
-constexpr int kLeftMovingGraceMs = 3000;   // a ramped stop is over long before this
-constexpr int kMoveWindow = 200;           // move sizes repeat only after this many moves
+// A ramped stop is over long before this. Models without a stop command (EMIS, laser axes)
+// are not stopped at the session end: every target the soak sends (at most 219 steps or
+// units, or one jog chunk, at 2000 per second or more) is reached long before this, so an
+// axis still moving then is one the host left moving.
+constexpr int kLeftMovingGraceMs = 3000;
+constexpr int kMoveWindow = 200; // move sizes repeat only after this many moves
 
 QString kindName(ErrorKind kind)
 {
@@ -57,6 +61,7 @@ private:
     void cmdVelocity();
     void cmdParameters(bool write);
     void checkAxesAtRest();
+    void settleAfterLinkLoss();
     void compareMoves();
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
@@ -67,6 +72,7 @@ private:
     std::function<void(const QString&)> m_progress;
     SoakFigures m_fig;
     QList<Commanded> m_commanded;
+    QList<QPair<int, int>> m_jogRanges; // device journal indices [first, end) made by jogs
     int m_moveIndex = 0;
     int m_done = 0;
     bool m_vanishing = false;
@@ -120,6 +126,11 @@ bool SoakRun::startSession()
         record(m_host.call(
             [&](ControllerSession& s) { return s.writeParameters(m_model.setup, false); }));
     }
+    if (m_model.anchor) {
+        AxisVector here;
+        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+        record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
+    }
     return true;
 }
 
@@ -136,7 +147,7 @@ void SoakRun::endSession()
     m_host.disconnect();
     if (lost) {
         ++m_fig.linkLosses;
-        m_device.halt(); // nobody could stop the axes over a dead link
+        settleAfterLinkLoss();
         return;
     }
     checkAxesAtRest();
@@ -157,6 +168,20 @@ void SoakRun::checkAxesAtRest()
     m_fig.axesLeftMoving += moving.size();
     m_device.halt(); // so the next session starts at rest and is judged on its own
     m_host.waitUntil([&] { return m_device.movingAxes().isEmpty(); }, kLeftMovingGraceMs);
+}
+
+// Nobody could stop the axes over a dead link: the model's stop at the device; a model
+// without a stop command gets the time its targets need, then the machine's emergency stop.
+void SoakRun::settleAfterLinkLoss()
+{
+    if (m_model.stopCommand) {
+        m_device.halt();
+        return;
+    }
+    if (m_host.waitUntil([&] { return m_device.movingAxes().isEmpty(); }, kLeftMovingGraceMs))
+        return;
+    ++m_fig.emergencyStops;
+    m_device.halt();
 }
 
 QString SoakRun::injectFault()
@@ -196,6 +221,7 @@ void SoakRun::clearFaults()
 void SoakRun::oneCommand()
 {
     const QString fault = injectFault();
+    const Capabilities caps = m_host.session().capabilities();
     const int pick = int(m_rng.bounded(100));
     if (pick < 20) {
         record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
@@ -205,10 +231,13 @@ void SoakRun::oneCommand()
         cmdMove(false);
     } else if (pick < 65) {
         cmdJog();
-    } else if (pick < 75) {
+    } else if (pick < 75 && caps.motionModes.contains(MotionMode::Velocity)) {
         cmdVelocity();
-    } else if (pick < 80) {
+    } else if (pick < 80 && caps.stopCommand) {
         record(m_host.call([](ControllerSession& s) { return s.stop(); }));
+    } else if (pick < 80) {
+        // No velocity move or no stop command (EMIS, laser axes): a status request instead.
+        record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
     } else if (pick < 90) {
         cmdParameters(true);
     } else {
@@ -283,6 +312,7 @@ void SoakRun::cmdJog()
     rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
                  (m_rng.bounded(2) ? 1 : -1) * between(100, int(ceiling)));
     const int ms = between(100, 400);
+    const int journalBefore = int(m_device.moves().size());
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < ms && m_host.connected()) {
@@ -291,6 +321,11 @@ void SoakRun::cmdJog()
     }
     m_host.session().endJog();
     m_host.waitIdle(3000);
+    // Models that jog by targets (EMIS, laser axes) leave moves in the device journal that no
+    // commanded move stands for: they are counted apart and left out of the matching.
+    const int journalAfter = int(m_device.moves().size());
+    if (journalAfter > journalBefore)
+        m_jogRanges.append({journalBefore, journalAfter});
 }
 
 void SoakRun::cmdVelocity()
@@ -327,7 +362,12 @@ void SoakRun::cmdParameters(bool write)
 // in between were not started); one commanded move started twice is a duplicate.
 void SoakRun::compareMoves()
 {
-    const QList<DeviceMove> device = m_device.moves();
+    QList<DeviceMove> device = m_device.moves();
+    for (int r = int(m_jogRanges.size()) - 1; r >= 0; --r) {
+        const auto [first, end] = m_jogRanges.at(r);
+        m_fig.jogMoves += end - first;
+        device.remove(first, end - first);
+    }
     m_fig.deviceMoves = device.size();
     for (Axis axis : allAxes()) {
         QList<Commanded> wanted;
