@@ -3,8 +3,8 @@
 // simulated axes: what they received and that they stand still afterwards.
 #include "../UiTestSupport.h"
 #include "jog/IncrementalJogWidget.h"
-#include "jog/JogInputSource.h"
 #include "jog/JogController.h"
+#include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -128,6 +128,10 @@ void TestTargetJogger::note_shownForLaserAxesOnly()
     QVERIFY(connectLaser());
     QTRY_VERIFY(!m_f->window->jogPanel()->jogModeNote()->isHidden());
     QVERIFY(m_f->window->jogPanel()->jogModeNote()->text().contains("short targets"));
+    // The protocol has no stop command: the permanent note stands next to STOP/PANIC.
+    QLabel* noStop = m_f->window->safetyBar()->noStopNote();
+    QVERIFY(!noStop->isHidden());
+    QVERIFY2(noStop->text().contains("emergency stop"), qPrintable(noStop->text()));
 }
 
 void TestTargetJogger::deflect_shortTargetsOneAfterTheOther_releaseStops()
