@@ -347,6 +347,11 @@ void SoakRun::cmdVelocity()
 
 void SoakRun::cmdParameters(bool write)
 {
+    if (m_model.setup.isEmpty() && m_model.readable.isEmpty()) {
+        // No parameters at all (the laser axes): a status request instead.
+        record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
+        return;
+    }
     if (write && !m_model.setup.isEmpty()) {
         const bool verify = !m_model.readable.isEmpty() && m_rng.bounded(2);
         record(m_host.call(
