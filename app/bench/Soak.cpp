@@ -62,6 +62,7 @@ private:
     void cmdParameters(bool write);
     void checkAxesAtRest();
     void settleAfterLinkLoss();
+    void closeJogRange();
     void compareMoves();
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
@@ -73,6 +74,7 @@ private:
     SoakFigures m_fig;
     QList<Commanded> m_commanded;
     QList<QPair<int, int>> m_jogRanges; // device journal indices [first, end) made by jogs
+    int m_jogJournalStart = -1;         // journal size when the last jog began; -1: closed
     int m_moveIndex = 0;
     int m_done = 0;
     bool m_vanishing = false;
@@ -104,6 +106,7 @@ SoakFigures SoakRun::run()
                            .arg(m_done)
                            .arg(m_fig.commands));
     }
+    closeJogRange();
     compareMoves();
     m_fig.seconds = clock.elapsed() / 1000.0;
     return m_fig;
@@ -136,6 +139,7 @@ bool SoakRun::startSession()
 
 void SoakRun::endSession()
 {
+    closeJogRange();
     if (m_vanishing || !m_device.present()) {
         // The peer vanished: wait until the host noticed, then start over on a new terminal.
         m_host.waitUntil([&] { return !m_host.connected(); }, 2000);
@@ -218,8 +222,23 @@ void SoakRun::clearFaults()
     });
 }
 
+// Models that jog by targets (EMIS, laser axes) leave moves in the device journal that no
+// commanded move stands for: everything the device accepts from the start of a jog burst to
+// the start of the next command (late chunks included) is counted apart and left out of the
+// matching. Other models journal no jog moves.
+void SoakRun::closeJogRange()
+{
+    if (m_jogJournalStart < 0)
+        return;
+    const int end = int(m_device.moves().size());
+    if (end > m_jogJournalStart)
+        m_jogRanges.append({m_jogJournalStart, end});
+    m_jogJournalStart = -1;
+}
+
 void SoakRun::oneCommand()
 {
+    closeJogRange();
     const QString fault = injectFault();
     const Capabilities caps = m_host.session().capabilities();
     const int pick = int(m_rng.bounded(100));
@@ -312,7 +331,7 @@ void SoakRun::cmdJog()
     rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
                  (m_rng.bounded(2) ? 1 : -1) * between(100, int(ceiling)));
     const int ms = between(100, 400);
-    const int journalBefore = int(m_device.moves().size());
+    m_jogJournalStart = int(m_device.moves().size());
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < ms && m_host.connected()) {
@@ -321,11 +340,6 @@ void SoakRun::cmdJog()
     }
     m_host.session().endJog();
     m_host.waitIdle(3000);
-    // Models that jog by targets (EMIS, laser axes) leave moves in the device journal that no
-    // commanded move stands for: they are counted apart and left out of the matching.
-    const int journalAfter = int(m_device.moves().size());
-    if (journalAfter > journalBefore)
-        m_jogRanges.append({journalBefore, journalAfter});
 }
 
 void SoakRun::cmdVelocity()
