@@ -292,6 +292,13 @@ void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
         return;
+    if (m_model.anchor) {
+        // "home it or move it to an absolute target first": where the device says it stands.
+        ++m_fig.recoveries;
+        AxisVector here;
+        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+        record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
+    }
     for (const QString& operation : m_model.recovery) {
         for (Axis a : m_host.session().capabilities().axes) {
             ++m_fig.recoveries;
