@@ -1360,6 +1360,25 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::SerialPortAccess</name>
+        <message>
+            <source>serial port %1 is in use by another program</source>
+            <translation>serielle Schnittstelle %1 wird von einem anderen Programm benutzt</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied although you are in its group '%2': check the device's permissions (ls -l %1)</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert, obwohl Sie in ihrer Gruppe '%2' sind: Prüfen Sie die Rechte des Geräts (ls -l %1)</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied: you were added to the group '%2', but this session does not have it yet: log out and in again</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert: Sie wurden der Gruppe '%2' hinzugefügt, diese Sitzung hat sie aber noch nicht: Melden Sie sich ab und wieder an</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied: your user is not in the group '%2' that owns it. Join it (sudo adduser %3 %2), then log out and in again</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert: Ihr Benutzer ist nicht in der Gruppe '%2', der sie gehört. Treten Sie ihr bei (sudo adduser %3 %2) und melden Sie sich dann ab und wieder an</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::SerialTransport</name>
         <message>
             <source>serial port %1 does not support %2 baud, %3%4%5</source>
@@ -1376,10 +1395,6 @@
         <message>
             <source>serial port %1 not found</source>
             <translation>serielle Schnittstelle %1 nicht gefunden</translation>
-        </message>
-        <message>
-            <source>serial port %1 is in use by another program or access is denied</source>
-            <translation>serielle Schnittstelle %1 wird von einem anderen Programm benutzt oder der Zugriff wird verweigert</translation>
         </message>
         <message>
             <source>serial port %1 is already open</source>
