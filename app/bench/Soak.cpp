@@ -12,8 +12,12 @@ namespace stepdeck::bench {
 
 namespace {
 constexpr double kFaultProbability = 0.01; // per command
-constexpr int kLeftMovingGraceMs = 3000;   // a ramped stop is over long before this
-constexpr int kMoveWindow = 200;           // move sizes repeat only after this many moves
+// A ramped stop is over long before this. Models without a stop command (EMIS, laser axes)
+// are not stopped at the session end: every target the soak sends (at most 219 steps or
+// units, or one jog chunk, at 2000 per second or more) is reached long before this, so an
+// axis still moving then is one the host left moving.
+constexpr int kLeftMovingGraceMs = 3000;
+constexpr int kMoveWindow = 200; // move sizes repeat only after this many moves
 
 QString kindName(ErrorKind kind)
 {
@@ -57,6 +61,8 @@ private:
     void cmdVelocity();
     void cmdParameters(bool write);
     void checkAxesAtRest();
+    void settleAfterLinkLoss();
+    void closeJogRange();
     void compareMoves();
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
@@ -67,6 +73,8 @@ private:
     std::function<void(const QString&)> m_progress;
     SoakFigures m_fig;
     QList<Commanded> m_commanded;
+    QList<QPair<int, int>> m_jogRanges; // device journal indices [first, end) made by jogs
+    int m_jogJournalStart = -1;         // journal size when the last jog began; -1: closed
     int m_moveIndex = 0;
     int m_done = 0;
     bool m_vanishing = false;
@@ -98,6 +106,7 @@ SoakFigures SoakRun::run()
                            .arg(m_done)
                            .arg(m_fig.commands));
     }
+    closeJogRange();
     compareMoves();
     m_fig.seconds = clock.elapsed() / 1000.0;
     return m_fig;
@@ -120,11 +129,17 @@ bool SoakRun::startSession()
         record(m_host.call(
             [&](ControllerSession& s) { return s.writeParameters(m_model.setup, false); }));
     }
+    if (m_model.anchor) {
+        AxisVector here;
+        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+        record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
+    }
     return true;
 }
 
 void SoakRun::endSession()
 {
+    closeJogRange();
     if (m_vanishing || !m_device.present()) {
         // The peer vanished: wait until the host noticed, then start over on a new terminal.
         m_host.waitUntil([&] { return !m_host.connected(); }, 2000);
@@ -136,7 +151,7 @@ void SoakRun::endSession()
     m_host.disconnect();
     if (lost) {
         ++m_fig.linkLosses;
-        m_device.halt(); // nobody could stop the axes over a dead link
+        settleAfterLinkLoss();
         return;
     }
     checkAxesAtRest();
@@ -157,6 +172,20 @@ void SoakRun::checkAxesAtRest()
     m_fig.axesLeftMoving += moving.size();
     m_device.halt(); // so the next session starts at rest and is judged on its own
     m_host.waitUntil([&] { return m_device.movingAxes().isEmpty(); }, kLeftMovingGraceMs);
+}
+
+// Nobody could stop the axes over a dead link: the model's stop at the device; a model
+// without a stop command gets the time its targets need, then the machine's emergency stop.
+void SoakRun::settleAfterLinkLoss()
+{
+    if (m_model.stopCommand) {
+        m_device.halt();
+        return;
+    }
+    if (m_host.waitUntil([&] { return m_device.movingAxes().isEmpty(); }, kLeftMovingGraceMs))
+        return;
+    ++m_fig.emergencyStops;
+    m_device.halt();
 }
 
 QString SoakRun::injectFault()
@@ -193,9 +222,25 @@ void SoakRun::clearFaults()
     });
 }
 
+// Models that jog by targets (EMIS, laser axes) leave moves in the device journal that no
+// commanded move stands for: everything the device accepts from the start of a jog burst to
+// the start of the next command (late chunks included) is counted apart and left out of the
+// matching. Other models journal no jog moves.
+void SoakRun::closeJogRange()
+{
+    if (m_jogJournalStart < 0)
+        return;
+    const int end = int(m_device.moves().size());
+    if (end > m_jogJournalStart)
+        m_jogRanges.append({m_jogJournalStart, end});
+    m_jogJournalStart = -1;
+}
+
 void SoakRun::oneCommand()
 {
+    closeJogRange();
     const QString fault = injectFault();
+    const Capabilities caps = m_host.session().capabilities();
     const int pick = int(m_rng.bounded(100));
     if (pick < 20) {
         record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
@@ -205,10 +250,13 @@ void SoakRun::oneCommand()
         cmdMove(false);
     } else if (pick < 65) {
         cmdJog();
-    } else if (pick < 75) {
+    } else if (pick < 75 && caps.motionModes.contains(MotionMode::Velocity)) {
         cmdVelocity();
-    } else if (pick < 80) {
+    } else if (pick < 80 && caps.stopCommand) {
         record(m_host.call([](ControllerSession& s) { return s.stop(); }));
+    } else if (pick < 80) {
+        // No velocity move or no stop command (EMIS, laser axes): a status request instead.
+        record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
     } else if (pick < 90) {
         cmdParameters(true);
     } else {
@@ -244,6 +292,13 @@ void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
         return;
+    if (m_model.anchor) {
+        // "home it or move it to an absolute target first": where the device says it stands.
+        ++m_fig.recoveries;
+        AxisVector here;
+        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+        record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
+    }
     for (const QString& operation : m_model.recovery) {
         for (Axis a : m_host.session().capabilities().axes) {
             ++m_fig.recoveries;
@@ -283,6 +338,7 @@ void SoakRun::cmdJog()
     rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
                  (m_rng.bounded(2) ? 1 : -1) * between(100, int(ceiling)));
     const int ms = between(100, 400);
+    m_jogJournalStart = int(m_device.moves().size());
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < ms && m_host.connected()) {
@@ -312,6 +368,11 @@ void SoakRun::cmdVelocity()
 
 void SoakRun::cmdParameters(bool write)
 {
+    if (m_model.setup.isEmpty() && m_model.readable.isEmpty()) {
+        // No parameters at all (the laser axes): a status request instead.
+        record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
+        return;
+    }
     if (write && !m_model.setup.isEmpty()) {
         const bool verify = !m_model.readable.isEmpty() && m_rng.bounded(2);
         record(m_host.call(
@@ -327,7 +388,12 @@ void SoakRun::cmdParameters(bool write)
 // in between were not started); one commanded move started twice is a duplicate.
 void SoakRun::compareMoves()
 {
-    const QList<DeviceMove> device = m_device.moves();
+    QList<DeviceMove> device = m_device.moves();
+    for (int r = int(m_jogRanges.size()) - 1; r >= 0; --r) {
+        const auto [first, end] = m_jogRanges.at(r);
+        m_fig.jogMoves += end - first;
+        device.remove(first, end - first);
+    }
     m_fig.deviceMoves = device.size();
     for (Axis axis : allAxes()) {
         QList<Commanded> wanted;

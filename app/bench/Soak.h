@@ -13,9 +13,11 @@ struct SoakFigures
     int commands = 0;
     quint32 seed = 0;
     // must be 0
-    qint64 crashes = 0;         // the soak process died (set by the parent, see main.cpp)
-    qint64 hangs = 0;           // requests without a result within SoakHost::kRequestBoundMs
-    qint64 axesLeftMoving = 0;  // axes still moving 3 s after an orderly session end
+    qint64 crashes = 0; // the soak process died (set by the parent, see main.cpp)
+    qint64 hangs = 0;   // requests without a result within SoakHost::kRequestBoundMs
+    // axes still moving 3 s after an orderly session end; for models without a stop command
+    // (EMIS, laser axes) the same window, in which every target the soak sends is reached
+    qint64 axesLeftMoving = 0;
     qint64 lostMoves = 0;       // host told success, device never started the move
     qint64 duplicatedMoves = 0; // device started one commanded move more than once
     // what happened
@@ -29,6 +31,8 @@ struct SoakFigures
     qint64 unconfirmedMoves = 0;  // device started it, host was told it failed
     qint64 unmatchedDeviceMoves = 0;
     qint64 recoveries = 0;         // operator actions after refused moves (SoakModel::recovery)
+    qint64 jogMoves = 0;           // device moves made by jogs (EMIS, laser: target chunks)
+    qint64 emergencyStops = 0;     // no stop command: axes still moving after a lost link
     QMap<QString, qint64> faults;  // injected, by kind
     QMap<QString, qint64> results; // command results, by error kind
     double seconds = 0;

@@ -53,6 +53,11 @@ bool SoakHost::connectTo(const QString& modelId, const QString& port, QString* e
     spec.modelId = modelId;
     spec.port = port;
     spec.options.pollIntervalMs = 20;
+    // Models that learn of an arrival only from the device (laser status frames) wait this
+    // long for it (--arrival-timeout in the CLI, 60 s by default). Every target of the soak
+    // arrives within a fraction of a second, so a lost arrival frame is reported as a timeout
+    // after 3 s instead of outlasting kRequestBoundMs and counting as a hang.
+    spec.options.arrivalTimeoutMs = 3000;
     if (!m_session.create(spec, error))
         return false;
     const RequestId id = m_session.open();

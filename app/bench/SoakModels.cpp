@@ -1,7 +1,12 @@
 #include "SoakModels.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
+#include "protocols/emis/EmisSimulator.h"
+#include "protocols/laser/LaserAxisSimulator.h"
+#include "protocols/laser/LaserCodec.h"
 #include "protocols/nanotec/NanotecSimulator.h"
+#include <QElapsedTimer>
+#include <QThread>
 
 namespace stepdeck::bench {
 
@@ -82,11 +87,97 @@ SoakModel nanotecModel()
     m.halt = [](Simulator* s) { s->receive("#*S\r"); }; // 6.2: every drive stops
     return m;
 }
+
+SoakModel emisModel()
+{
+    const QList<Axis> xyzu = allAxes();
+    SoakModel m;
+    m.id = QStringLiteral("emis");
+    m.setup = {{QStringLiteral("start-speed"), perAxis(500, xyzu)},
+               {QStringLiteral("work-speed"), perAxis(4000, xyzu)},
+               {QStringLiteral("ramp"), ParameterValue{QVariant(qint64(50)), {}}}};
+    m.prepare = [xyzu](Simulator* s) {
+        auto* sim = qobject_cast<emis::EmisSimulator*>(s);
+        for (Axis a : xyzu)
+            sim->setSwitchPosition(a, std::nullopt); // no reference switch within reach
+    };
+    m.movingAxes = [xyzu](Simulator* s) {
+        auto* sim = qobject_cast<emis::EmisSimulator*>(s);
+        QList<Axis> out;
+        for (Axis a : xyzu) {
+            if (sim->isMoving(a))
+                out << a;
+        }
+        return out;
+    };
+    m.moves = [](Simulator* s) {
+        QList<DeviceMove> out;
+        for (const auto& move : qobject_cast<emis::EmisSimulator*>(s)->acceptedMoves())
+            out.append({move.axis, move.steps});
+        return out;
+    };
+    // The SMC-IC4 has no stop command (chapter 9): the machine's emergency stop.
+    m.halt = [](Simulator* s) { qobject_cast<emis::EmisSimulator*>(s)->emergencyStop(); };
+    m.stopCommand = false;
+    return m;
+}
+
+SoakModel laserModel()
+{
+    const QList<Axis> xyz{Axis::X, Axis::Y, Axis::Z};
+    SoakModel m;
+    m.id = QStringLiteral("laser-axis");
+    // Every axis homed and standing mid-range (the protocol's positions are 0..99999), so the
+    // random walk of the soak's moves stays inside; then 2000 units/s, no ramps.
+    m.prepare = [xyz](Simulator* s) {
+        auto* sim = qobject_cast<laser::LaserAxisSimulator*>(s);
+        const bool silent = s->faults().silent;
+        s->faults().silent = true; // the status frames of the set-up reach nobody
+        sim->setSpeed(1e9);
+        for (Axis a : xyz) {
+            sim->config(a).endSwitch = kFar;
+            sim->receive(laser::encodeMove(a, laser::kMaxPosition / 2));
+        }
+        QElapsedTimer clock;
+        clock.start();
+        while (!sim->standingStill() && clock.elapsed() < 2000)
+            QThread::msleep(1);
+        sim->clearAcceptedMoves();
+        sim->setSpeed(2000);
+        s->faults().silent = silent;
+    };
+    m.movingAxes = [xyz](Simulator* s) {
+        auto* sim = qobject_cast<laser::LaserAxisSimulator*>(s);
+        QList<Axis> out;
+        for (Axis a : xyz) {
+            if (sim->isMoving(a))
+                out << a;
+        }
+        return out;
+    };
+    m.moves = [](Simulator* s) {
+        QList<DeviceMove> out;
+        for (const auto& move : qobject_cast<laser::LaserAxisSimulator*>(s)->acceptedMoves())
+            out.append({move.axis, move.steps});
+        return out;
+    };
+    // The protocol has no stop command: the machine's emergency stop.
+    m.halt = [](Simulator* s) { qobject_cast<laser::LaserAxisSimulator*>(s)->emergencyStop(); };
+    m.stopCommand = false;
+    m.anchor = [xyz](Simulator* s) {
+        auto* sim = qobject_cast<laser::LaserAxisSimulator*>(s);
+        AxisVector out;
+        for (Axis a : xyz)
+            out.insert(a, sim->position(a));
+        return out;
+    };
+    return m;
+}
 } // namespace
 
 const QList<SoakModel>& soakModels()
 {
-    static const QList<SoakModel> models{elabModel(), nanotecModel()};
+    static const QList<SoakModel> models{elabModel(), nanotecModel(), emisModel(), laserModel()};
     return models;
 }
 

@@ -28,7 +28,15 @@ struct SoakModel
     std::function<void(Simulator*)> prepare;            // once, before the first session
     std::function<QList<Axis>(Simulator*)> movingAxes;  // axes in motion at the device
     std::function<QList<DeviceMove>(Simulator*)> moves; // accepted so far, in order
-    std::function<void(Simulator*)> halt;               // stops everything at the device
+    // Stops everything at the device. For models whose protocol has no stop command
+    // (Capabilities::stopCommand false: EMIS, laser axes) this is the machine's emergency stop,
+    // i.e. what an operator would press; the soak uses it only where the figures say so.
+    std::function<void(Simulator*)> halt;
+    bool stopCommand = true; // Capabilities::stopCommand, known also while disconnected
+    // Absolute targets the host sends at the start of every session, or empty: the laser
+    // axes report their position only in a status frame after a command, so the host first
+    // sends each axis to where it stands (a zero-length move the device journal leaves out).
+    std::function<AxisVector(Simulator*)> anchor;
 };
 
 // The models a soak covers; adding one is one line in SoakModels.cpp.

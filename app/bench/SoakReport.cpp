@@ -47,6 +47,8 @@ template <typename F> void eachCounter(F f, SoakFigures& s)
     f("unconfirmedMoves", s.unconfirmedMoves);
     f("unmatchedDeviceMoves", s.unmatchedDeviceMoves);
     f("recoveries", s.recoveries);
+    f("jogMoves", s.jogMoves);
+    f("emergencyStops", s.emergencyStops);
 }
 } // namespace
 
@@ -85,8 +87,10 @@ QString SoakFigures::toText() const
                "axes found moving after a vanish %15\n"
                "  moves (per axis): host told success %16, device started %17, started although "
                "the host was told it failed %18, device moves matching no command %19; operator "
-               "recoveries after refusals %20\n"
-               "  results: %21")
+               "recoveries after refusals %20; device moves made by jogs (not matched) %21\n"
+               "  emergency stops at the device (models without a stop command, axes still "
+               "moving after a lost link) %22\n"
+               "  results: %23")
         .arg(model)
         .arg(commands)
         .arg(seed)
@@ -107,6 +111,8 @@ QString SoakFigures::toText() const
         .arg(unconfirmedMoves)
         .arg(unmatchedDeviceMoves)
         .arg(recoveries)
+        .arg(jogMoves)
+        .arg(emergencyStops)
         .arg(mapText(results));
 }
 

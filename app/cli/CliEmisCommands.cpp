@@ -3,6 +3,7 @@
 // program commands happen in the adapter (nothing is sent when they fail); these handlers
 // parse the arguments and print the results.
 #include "CliCommands.h"
+#include "model/NumberParsing.h"
 #include <QCoreApplication>
 
 namespace stepdeck::cli {
@@ -13,11 +14,21 @@ struct CliEmis
     Q_DECLARE_TR_FUNCTIONS(stepdeck::cli::CliEmis)
 };
 
-bool parseNumber(const QString& text, qint64* value)
+// Decimal only, through NumberParsing like every other number of the CLI: a malformed or
+// non-finite number is a usage error (exit 2), a decimal one beyond qint64 is out of range
+// (exit 7, as the range checks of the callers).
+std::optional<Outcome> parseNumber(const QString& text, qint64* value, const QString& usage)
 {
-    bool ok = false;
-    *value = text.toLongLong(&ok, 10);
-    return ok;
+    switch (numbers::parseInteger(text, value)) {
+    case NumberError::None:
+        return std::nullopt;
+    case NumberError::OutOfRange:
+        return Outcome::failure(ExitInvalidValue, CliEmis::tr("'%1' is out of range").arg(text));
+    case NumberError::Malformed:
+    case NumberError::NonFinite:
+        break;
+    }
+    return Outcome::usage(usage);
 }
 
 Outcome unsupported(const CliContext& c, const QString& what)
@@ -83,8 +94,12 @@ Outcome cmdStore(CliContext& c, QStringList args)
         ParameterValue value;
         if (!arg.contains(QLatin1Char('=')))
             return Outcome::usage(CliEmis::tr("expected NAME=VALUE, got '%1'").arg(arg));
-        if (!schema.parseAssignment(arg, c.axes(), &name, &value, &error))
-            return Outcome::failure(ExitInvalidValue, error);
+        NumberError numberError = NumberError::None;
+        if (!schema.parseAssignment(arg, c.axes(), &name, &value, &error, &numberError)) {
+            // nan/inf are no value of any parameter: a usage error, as for `set`.
+            return Outcome::failure(
+                numberError == NumberError::NonFinite ? ExitUsage : ExitInvalidValue, error);
+        }
         if (set.contains(name))
             return Outcome::usage(CliEmis::tr("parameter %1 given twice").arg(name));
         set.insert(name, value);
@@ -162,10 +177,12 @@ Outcome cmdOutput(CliContext& c, QStringList args)
     if (outputs == 0)
         return unsupported(c, CliEmis::tr("switchable outputs"));
     qint64 number = 0;
+    const QString usage = CliEmis::tr("output needs N on|off, e.g. `output 3 on`");
     const QString state = args.size() == 2 ? args[1].toLower() : QString();
-    if (args.size() != 2 || !parseNumber(args[0], &number) ||
-        (state != QLatin1String("on") && state != QLatin1String("off")))
-        return Outcome::usage(CliEmis::tr("output needs N on|off, e.g. `output 3 on`"));
+    if (args.size() != 2 || (state != QLatin1String("on") && state != QLatin1String("off")))
+        return Outcome::usage(usage);
+    if (const auto failed = parseNumber(args[0], &number, usage))
+        return *failed;
     if (number < 1 || number > outputs) {
         return Outcome::failure(
             ExitInvalidValue,
@@ -195,9 +212,12 @@ Outcome cmdProgram(CliContext& c, QStringList args)
     if (const QString e = unknownOption(args); !e.isEmpty())
         return Outcome::usage(e);
     qint64 input = 0;
-    if (args.isEmpty() || !parseNumber(args.first(), &input))
-        return Outcome::usage(CliEmis::tr("program needs the input number first: `program N "
-                                          "--title TEXT COMMAND...` or `program N --erase`"));
+    const QString usage = CliEmis::tr("program needs the input number first: `program N "
+                                      "--title TEXT COMMAND...` or `program N --erase`");
+    if (args.isEmpty())
+        return Outcome::usage(usage);
+    if (const auto failed = parseNumber(args.first(), &input, usage))
+        return *failed;
     args.removeFirst();
     if (erase) {
         if (!args.isEmpty() || title)

@@ -1,4 +1,5 @@
 #include "LaserBridgeConfig.h"
+#include "model/NumberParsing.h"
 #include "protocols/laser/LaserCodec.h"
 #include <QtMath>
 
@@ -30,8 +31,9 @@ bool LaserBridgeConfig::parseMap(const QString& text, QMap<Axis, Axis>* map, QSt
         return false;
     }
     for (const auto& [laserText, axisText] : pairs) {
-        bool ok = false;
-        const int number = laserText.toInt(&ok, 10);
+        int number = 0;
+        const bool ok =
+            numbers::parseInt(laserText, 1, laser::kAxisCount, &number) == NumberError::None;
         const std::optional<Axis> laserAxis = laser::axisFromNumber(ok ? number : 0);
         const std::optional<Axis> axis = axisFromName(axisText);
         if (!laserAxis.has_value() || !axis.has_value()) {
@@ -53,8 +55,8 @@ bool LaserBridgeConfig::parseMap(const QString& text, QMap<Axis, Axis>* map, QSt
 
 bool LaserBridgeConfig::parseScale(const QString& text, double* scale, QString* error)
 {
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
+    double value = 0;
+    const bool ok = numbers::parseReal(text, &value) == NumberError::None;
     if (!ok || !qIsFinite(value) || value <= 0 || value > kMaxScale) {
         *error = tr("--scale expects steps per laser unit, a number above 0 and at most %1, got "
                     "'%2'")
@@ -73,9 +75,9 @@ bool LaserBridgeConfig::parseHome(const QString& text, QMap<Axis, int>* directio
     bool ok = splitPairs(text, &pairs);
     for (const auto& [axisText, dirText] : pairs) {
         const std::optional<Axis> axis = axisFromName(axisText);
-        bool numberOk = false;
-        const int direction = dirText.toInt(&numberOk, 10);
-        if (!axis || !numberOk || (direction != -1 && direction != 1) || out.contains(*axis)) {
+        int direction = 0;
+        const bool numberOk = numbers::parseInt(dirText, -1, 1, &direction) == NumberError::None;
+        if (!axis || !numberOk || direction == 0 || out.contains(*axis)) {
             ok = false;
             break;
         }
@@ -92,9 +94,9 @@ bool LaserBridgeConfig::parseHome(const QString& text, QMap<Axis, int>* directio
 
 bool LaserBridgeConfig::parseDoorInput(const QString& text, int* input, QString* error)
 {
-    bool ok = false;
-    const int value = text.trimmed().toInt(&ok, 10);
-    if (!ok || value < 1 || value > 64) {
+    int value = 0;
+    const bool ok = numbers::parseInt(text, 1, 64, &value) == NumberError::None;
+    if (!ok) {
         *error = tr("--door-input expects an input number from 1 to 64, got '%1'").arg(text);
         return false;
     }

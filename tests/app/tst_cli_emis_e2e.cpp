@@ -27,6 +27,8 @@ private Q_SLOTS:
     void store_get_clear();
     void output_switch();
     void program_writeForceErase();
+    void numbers_decimalOnly_exitCodes_data();
+    void numbers_decimalOnly_exitCodes();
 
 private:
     using Run = stepdeck::testing::ProcessRun;
@@ -208,6 +210,45 @@ void TestCliEmisEndToEnd::program_writeForceErase()
                                            {"--model", "elab", "program", "7", "--erase"}, 30000)
                  .exitCode,
              8); // E-LAB has no input programs
+}
+
+void TestCliEmisEndToEnd::numbers_decimalOnly_exitCodes_data()
+{
+    // Issue 12: one notation (NumberParsing) for every number, one code per fault: malformed
+    // or non-finite numbers are usage errors (2), decimal ones out of range are refused (7).
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::newRow("output 03: decimal 3") << QStringList{"output", "03", "on"} << 0;
+    QTest::newRow("output +3") << QStringList{"output", "+3", "off"} << 0;
+    QTest::newRow("output hex") << QStringList{"output", "0x3", "on"} << 2;
+    QTest::newRow("output nan") << QStringList{"output", "nan", "on"} << 2;
+    QTest::newRow("output 3.0") << QStringList{"output", "3.0", "on"} << 2;
+    QTest::newRow("output huge") << QStringList{"output", "99999999999999999999", "on"} << 7;
+    QTest::newRow("output -1") << QStringList{"output", "-1", "on"} << 7;
+    QTest::newRow("program hex") << QStringList{"program", "0x7", "--erase"} << 2;
+    QTest::newRow("program inf") << QStringList{"program", "inf", "--erase"} << 2;
+    QTest::newRow("program huge") << QStringList{"program", "99999999999999999999", "--erase"} << 7;
+    QTest::newRow("program 07: decimal 7") << QStringList{"program", "07", "--erase"} << 0;
+    QTest::newRow("store nan") << QStringList{"store", "ramp=nan"} << 2;
+    QTest::newRow("store hex") << QStringList{"store", "ramp=0x10"} << 7;
+    QTest::newRow("store 0100: decimal 100") << QStringList{"store", "ramp=0100"} << 0;
+    QTest::newRow("arrival-timeout nan")
+        << QStringList{"--arrival-timeout", "nan", "move", "X=1"} << 2;
+    QTest::newRow("arrival-timeout hex")
+        << QStringList{"--arrival-timeout", "0x10", "move", "X=1"} << 2;
+    QTest::newRow("move nan") << QStringList{"move", "X=nan"} << 2;
+    QTest::newRow("move 1e3") << QStringList{"move", "U=1e3"} << 2;
+    QTest::newRow("jog inf") << QStringList{"jog", "U=inf", "--for", "100"} << 2;
+}
+
+void TestCliEmisEndToEnd::numbers_decimalOnly_exitCodes()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    const Run r = cli(args);
+    QVERIFY2(r.exitCode == exitCode,
+             qPrintable(
+                 QStringLiteral("exit %1: %2").arg(r.exitCode).arg(QString::fromLocal8Bit(r.err))));
 }
 
 QTEST_GUILESS_MAIN(TestCliEmisEndToEnd)

@@ -21,6 +21,11 @@ private Q_SLOTS:
     void corrupt_everyReply_cliFailsWithoutCrash();
     void noise_bytesArriveUnasked();
     void lowFaultRates_statusStillWorks();
+    // The same options on the simulators of EMIS and the laser axes (Simulator base class).
+    void faults_emisAndLaser_data();
+    void faults_emisAndLaser();
+    void noise_emisAndLaser_data();
+    void noise_emisAndLaser();
 
 private:
     using Run = stepdeck::testing::ProcessRun;
@@ -153,6 +158,89 @@ void TestSimEndToEnd::lowFaultRates_statusStillWorks()
     const Run run = cli({"--port", pty, "status", "--json"});
     QVERIFY2(run.exitCode == 0, run.err.constData());
     QVERIFY(run.out.contains("\"model\""));
+}
+
+void TestSimEndToEnd::faults_emisAndLaser_data()
+{
+    QTest::addColumn<QStringList>("simArgs");
+    QTest::addColumn<QList<QStringList>>("cliRuns"); // all but the last must exit 0
+    QTest::addColumn<QList<int>>("lastExit");        // the allowed codes of the last run
+    const QStringList emis{"--model", "emis"};
+    const QStringList laser{"--model", "laser-axis", "--speed", "50000"};
+    const QStringList laserMove{"--model", "laser-axis", "--arrival-timeout", "500", "move",
+                                "--abs",   "X=20"};
+    const QStringList emisStatus{"--model", "emis", "status"};
+    QTest::newRow("emis: no fault") << emis << QList<QStringList>{emisStatus} << QList<int>{0};
+    QTest::newRow("emis: every reply dropped")
+        << emis + QStringList{"--drop", "1"} << QList<QStringList>{emisStatus} << QList<int>{5};
+    // One byte of every reply replaced: the reply reading is lenient (an answer after the
+    // last echo, 9.x), so a poll may still find a valid answer; what must hold is a defined
+    // code, one line, no crash (cleanup()).
+    QTest::newRow("emis: every reply corrupted")
+        << emis + QStringList{"--corrupt", "1", "--seed", "4"} << QList<QStringList>{emisStatus}
+        << QList<int>{0, 5, 6, 9};
+    // The first reply (the connect probe @V) is answered, then nothing: the adapter's link
+    // supervision (three unanswered input polls @IG) declares the link lost, exit 6, whichever
+    // command runs -- EMIS-specific ones included.
+    for (const QStringList& command :
+         {QStringList{"status"}, QStringList{"output", "3", "on"},
+          QStringList{"program", "7", "--erase"}, QStringList{"store", "ramp=100"},
+          QStringList{"move", "X=10"}}) {
+        QTest::addRow("emis: frozen, %s", qPrintable(command.join(' ')))
+            << emis + QStringList{"--freeze-after", "0"}
+            << QList<QStringList>{QStringList{"--model", "emis"} + command} << QList<int>{6};
+    }
+    QTest::newRow("laser: no fault") << laser << QList<QStringList>{laserMove} << QList<int>{0};
+    QTest::newRow("laser: every frame dropped")
+        << laser + QStringList{"--drop", "1"} << QList<QStringList>{laserMove} << QList<int>{5};
+    QTest::newRow("laser: every frame corrupted")
+        << laser + QStringList{"--corrupt", "1", "--seed", "4"} << QList<QStringList>{laserMove}
+        << QList<int>{5, 9};
+    QTest::newRow("laser: frozen after the first frame")
+        << laser + QStringList{"--freeze-after", "0"} << QList<QStringList>{laserMove, laserMove}
+        << QList<int>{5};
+}
+
+void TestSimEndToEnd::faults_emisAndLaser()
+{
+    QFETCH(QStringList, simArgs);
+    QFETCH(QList<QStringList>, cliRuns);
+    QFETCH(QList<int>, lastExit);
+    const QString pty = startSim(simArgs);
+    QVERIFY(!pty.isEmpty());
+    for (int i = 0; i < cliRuns.size(); ++i) {
+        const Run run = cli(QStringList{"--port", pty} + cliRuns[i]);
+        if (i + 1 < cliRuns.size()) {
+            QVERIFY2(run.exitCode == 0, run.err.constData());
+            continue;
+        }
+        QVERIFY2(lastExit.contains(run.exitCode),
+                 qPrintable(QStringLiteral("exit %1: %2")
+                                .arg(run.exitCode)
+                                .arg(QString::fromLocal8Bit(run.err))));
+        if (run.exitCode != 0)
+            QCOMPARE(run.err.count('\n'), 1);
+    }
+}
+
+void TestSimEndToEnd::noise_emisAndLaser_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::newRow("emis") << "emis";
+    QTest::newRow("laser-axis") << "laser-axis";
+}
+
+void TestSimEndToEnd::noise_emisAndLaser()
+{
+    QFETCH(QString, model);
+    const QString pty = startSim({"--model", model, "--noise", "2000", "--seed", "9"});
+    QVERIFY(!pty.isEmpty());
+    QSerialPort port(pty);
+    QVERIFY2(port.open(QIODevice::ReadOnly), qPrintable(port.errorString()));
+    QByteArray received;
+    while (received.size() < 50 && port.waitForReadyRead(5000))
+        received += port.readAll();
+    QVERIFY2(received.size() >= 50, qPrintable(QString::number(received.size())));
 }
 
 QTEST_GUILESS_MAIN(TestSimEndToEnd)

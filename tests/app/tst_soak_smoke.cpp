@@ -46,7 +46,7 @@ void TestSoakSmoke::soak_fiftyCommands_noCrashHangOrAxisLeftMoving()
     int exitCode = 0;
     const QJsonObject out = runJson({"--soak", "50", "--seed", "12", "--json"}, &exitCode);
     const QJsonArray models = out.value("soak").toArray();
-    QCOMPARE(models.size(), 2); // elab and nanotec
+    QCOMPARE(models.size(), 4); // elab, nanotec, emis, laser-axis
     for (const QJsonValue& v : models) {
         const QJsonObject m = v.toObject();
         const QByteArray name = m.value("model").toString().toUtf8();
@@ -66,7 +66,7 @@ void TestSoakSmoke::replug_everyPhase_noticedEveryTime()
     const QJsonObject out = runJson({"--replug", "4", "--json"}, &exitCode);
     QCOMPARE(exitCode, 0);
     const QJsonArray models = out.value("replug").toArray();
-    QCOMPARE(models.size(), 2);
+    QCOMPARE(models.size(), 4);
     for (const QJsonValue& v : models) {
         const QJsonObject m = v.toObject();
         QCOMPARE(m.value("reconnectFailures").toInt(-1), 0);

@@ -14,6 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 CTRL = {name: i for i, name in enumerate(
     "NUL SOH STX ETX EOT ENQ ACK BEL BS HT LF VT FF CR SO SI DLE XON DC2 XOFF DC4 NAK SYN "
     "ETB CAN EM SUB ESC FS GS RS US".split())}
+CTRL.update(DC1=0x11, DC3=0x13)  # the EMIS manual's names of XON and XOFF
 
 
 def mnemonics(text):
@@ -66,6 +67,37 @@ NANOTEC_COMMANDS = [
     "#1Zs\r", "#1Z5s\r", "#1L0\r", "#1ZE5\r", "#1Z|\r", "#1Z5|\r", "#254s-50\r", "#3$\r",
     "#1|0\r", "#1@A\r", "noise#1s10#2A\r#x\r#3\r", "##1A\r",
 ]
+# EMIS SMC-IC4 manual, chapter 9: commands (host -> board) of 9.1-9.18, the input programs of
+# 9.17 with their <STX> headers and <ETX>, and malformed ones ...
+EMIS_COMMANDS = [
+    "@V<CR>", "@I1<CR>", "@IG<CR>", "A1,1<CR>", "#S200<CR>", "#S,x200<CR>", "#E1,1000<CR>",
+    "#E1,x1000<CR>", "#E9,400<CR>", "#R100<CR>", "D,x32<CR>", "c,x100,20<CR>", "$Hx<CR>",
+    "$Hxyzu<CR>", "$Hxyzu,a<CR>", "#Ox,10<CR>", "L1,x1000<CR>", "L1,x-1000<CR>",
+    "L1,x1000,y-2000<CR>", "L1,X1000<CR>", "IP1<CR>", "W500<CR>", "##D,x32,y16,z64,u1<CR>",
+    "##c,x100,0,y100,0,z100,20,u100,0<CR>", "##REFSW,xNO,yNO,zNO,uNC<CR>",
+    "##S,x200,y200,z200,u200<CR>", "##E,x1800,y1800,z600,u1000<CR>",
+    "##E9,x400,y400,z200,u300<CR>", "##R,100<CR>", "##S,200,1800,100<CR>", "*PRSYS<CR>",
+    "*PESYS<CR>",
+    "*PWIN7<CR>IJ7,1 Eingang 7: Referenzfahrt X-Motor <STX>$H,x<CR><ETX>",
+    "*PWIN8<CR>IJ8,1 Eingang 8: Vektorfahrt X-Motor <STX>L1,x191<CR>W1500<CR><ETX>",
+    "*PEIN1<CR>", "@V<CR><LF>@IG<CR><LF>", "L1,x+0001000,x5<CR>", "$Hxx<CR>", "A9,2<CR>",
+    "W99999999999999999999<CR>", "D,X32<CR>", "#S,x<CR>", "IJ7<CR>", "text<ETX>",
+]
+# ... and replies (board -> host), as the manual prints them (with echoes and blanks).
+EMIS_REPLIES = [
+    "@V SMC-IC4 v1.07<ACK>", "@I1 0<ACK>", "@IG 10000000<ACK>", "<ACK>", "$Hx<NAK><DC1>",
+    "$Hxyzu<NAK><DC1><DC2><DC3><DC4>", "$Hxyzu<NAK><DC4><DC2><DC1><DC3>", "<NAK> <DC1>",
+    "<NAK> <DC1><DC2>", "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>", "*PESYS <ACK>",
+    "*PRSYS:##D,x32,y16,z64,u1<CR><LF>##R,100<CR><LF>##REFSW,xNO,yNO,zNO,uNC<ACK>",
+    "*PRSYS:D,x32;c,x100,0,y100,0 ##S,200,1800,100##E9,x400<ACK>", "<BEL>", "A9,2<BEL>",
+    "@IG 100<DC2>00000<ACK>", "garbage<x80><xFF>@V<ACK>", "@IG 1000 0000<ACK>",
+]
+LASER_COMMANDS = ["1100000\r", "2200150\r", "2399999\r", "1312345\r", "2100000\r\n",
+                  "9100000\r", "2400000\r", "22001\r", "220015000000\r2100001\r",
+                  "21x0000\r", "\r\r2200150"]
+LASER_STATUS = ["2001500\r", "1000000\r", "1999991\r", "3000042\r", "2001503\r",
+                "1123454\r\n", "2001505\r", "4000000\r", "200150\r", "20015000\r2001500\r",
+                "20a1500\r"]
 # The parameter-file format (docs/cli.md) with values of both models, and broken ones.
 PARAMETER_FILES = [
     {"format": "stepdeck-parameters", "version": 1, "model": "elab",
@@ -92,6 +124,17 @@ DICTS = {
     "nanotec_reply": [b"\r", b"001", b"Z", b"ZE", b":CL_", b"=", b"?", b"v ", b"+", b"-", b"|"]
     + [c.encode() for c in "psuonbdtWPN$CIAj"],
     "nanotec_command": [b"#", b"\r", b"*", b"Z", b"ZE", b":CL_motor_pp", b"=", b"|", b"@A"],
+    "emis_command": [mnemonics(f"<{n}>") for n in ("CR", "STX", "ETX", "LF")]
+    + [w.encode() for w in ("@V", "@I", "@IG", "A", "#S", "#S,", "#E1,", "#E9,", "#R", "D,",
+                             "c,", "$H", ",a", "#O", "L1,", "IP", "W", "##", "REFSW", "NO",
+                             "NC", "*PRSYS", "*PESYS", "*PWIN", "*PEIN", "IJ", ",1 ", "x",
+                             "y", "z", "u", "X", "-", "+", ",")],
+    "emis_reply": [mnemonics(f"<{n}>") for n in ("ACK", "NAK", "BEL", "DC1", "DC2", "DC3",
+                                                   "DC4", "CR", "LF")]
+    + [w.encode() for w in ("@V", "@IG", "@I1", "Ready!", "*PRSYS:", "*PESYS", "##", "D,",
+                             "c,", "REFSW", "E9,", "R,", "S,", "x", "y", "z", "u", "NO", "NC")],
+    "laser_command": [b"\r", b"\n", b"1", b"2", b"3", b"00000", b"99999"],
+    "laser_status": [b"\r", b"\n", b"0", b"1", b"2", b"3", b"4", b"00000", b"99999"],
     "parameter_file": [b'"format"', b'"stepdeck-parameters"', b'"version"', b'"model"',
                        b'"elab"', b'"nanotec"', b'"parameters"', b'"X"', b'"Y"', b'"Z"',
                        b'"U"', b"1e300", b"-0.0", b"true", b"null", b'"drive-power"',
@@ -123,6 +166,10 @@ def main():
     write("elab_command", [mnemonics(t) for t in ELAB_COMMANDS])
     write("nanotec_reply", [t.encode("latin-1") for t in NANOTEC_REPLIES])
     write("nanotec_command", [t.encode("latin-1") for t in NANOTEC_COMMANDS])
+    write("emis_command", [mnemonics(t) for t in EMIS_COMMANDS])
+    write("emis_reply", [mnemonics(t) for t in EMIS_REPLIES])
+    write("laser_command", [t.encode() for t in LASER_COMMANDS])
+    write("laser_status", [t.encode() for t in LASER_STATUS])
     write("parameter_file", [json.dumps(f).encode() for f in PARAMETER_FILES])
     write("assignment", [t.encode() for t in ASSIGNMENTS])
     for target, words in DICTS.items():

@@ -237,6 +237,7 @@ QByteArray programErase(int input)
 
 void ReplyDecoder::reset()
 {
+    m_skipped = 0;
     m_text.clear();
     m_garbage.clear();
     m_discarding = false;
@@ -271,12 +272,14 @@ QList<Event> ReplyDecoder::feed(const QByteArray& bytes)
             flushGarbage(&out);
             if (m_discarding) {
                 m_discarding = false; // the overlong text's own terminator
+                ++m_skipped;
                 continue;
             }
             Event e;
             e.kind =
                 c == kAck ? Event::Kind::Ack : (c == kNak ? Event::Kind::Nak : Event::Kind::Bell);
             e.text = m_text.trimmed();
+            m_skipped += m_text.size() - e.text.size();
             m_text.clear();
             out.append(e);
             continue;
@@ -291,10 +294,10 @@ QList<Event> ReplyDecoder::feed(const QByteArray& bytes)
             continue;
         }
         flushGarbage(&out);
-        if (m_discarding)
+        if (m_discarding || (m_text.isEmpty() && isBlank(c))) {
+            ++m_skipped; // an overlong tail, or blanks between terminators ("<NAK> <DC1>")
             continue;
-        if (m_text.isEmpty() && isBlank(c))
-            continue; // blanks between terminators ("<NAK> <DC1>")
+        }
         m_text += c;
         if (m_text.size() > kMaxText) {
             Event e;

@@ -113,10 +113,15 @@ public:
     QList<Event> feed(const QByteArray& bytes);
     void reset();
     int buffered() const { return int(m_text.size() + m_garbage.size()); }
+    // Bytes consumed without appearing in an event: blanks around a text, and the tail and
+    // terminator of an overlong text. Every fed byte is in an event's text or raw, is a
+    // terminator, is buffered or is counted here (checked by the fuzz target).
+    qint64 skippedBytes() const { return m_skipped; }
 
 private:
     void flushGarbage(QList<Event>* out);
 
+    qint64 m_skipped = 0;
     QByteArray m_text;
     QByteArray m_garbage;
     bool m_discarding = false; // overlong text: drop until its terminator

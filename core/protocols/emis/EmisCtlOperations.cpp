@@ -1,15 +1,16 @@
 // Model operations (outputs, reference runs, system parameters, input programs) and the console.
 #include "EmisController.h"
 #include "Logging.h"
+#include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
 
 namespace {
 std::optional<int> numberArg(const QVariantMap& args, const char* key, int minimum, int maximum)
 {
-    bool ok = false;
-    const qint64 n = args.value(QLatin1String(key)).toString().toLongLong(&ok, 10);
-    if (!ok || n < minimum || n > maximum)
+    qint64 n = 0;
+    if (numbers::integerFromVariant(args.value(QLatin1String(key)), &n) != NumberError::None ||
+        n < minimum || n > maximum)
         return std::nullopt;
     return int(n);
 }

@@ -1,6 +1,7 @@
 // Working values (set), system parameters (store, *PRSYS, *PESYS).
 #include "EmisController.h"
 #include "Logging.h"
+#include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
 
@@ -15,11 +16,18 @@ QVariantList texts(const QStringList& list)
     return out;
 }
 
+// Read back and normalised values; decimal only, like every number (NumberParsing).
+qint64 intOf(const QVariant& v)
+{
+    qint64 n = 0;
+    return numbers::integerFromVariant(v, &n) == NumberError::None ? n : 0;
+}
+
 QMap<Axis, qint64> intsOf(const ParameterValue& v)
 {
     QMap<Axis, qint64> out;
     for (auto it = v.perAxis.cbegin(); it != v.perAxis.cend(); ++it)
-        out.insert(it.key(), it.value().toString().toLongLong(nullptr, 10));
+        out.insert(it.key(), intOf(it.value()));
     return out;
 }
 } // namespace
@@ -91,7 +99,7 @@ void EmisController::noteWritten(const ParameterSet& set)
     m_known.runCurrent.insert(axisInts("run-current"));
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
-        m_known.ramp = m_written.value(QStringLiteral("ramp")).global.toLongLong();
+        m_known.ramp = intOf(m_written.value(QStringLiteral("ramp")).global);
     const ParameterValue types = m_written.value(QStringLiteral("reference-switch-type"));
     for (auto it = types.perAxis.cbegin(); it != types.perAxis.cend(); ++it)
         m_known.switchNc.insert(it.key(), it.value().toString() == QLatin1String("NC"));
@@ -132,7 +140,7 @@ void EmisController::noteStored(const SystemParameters& stored)
     fill("run-current", &m_known.runCurrent);
     fill("idle-current", &m_known.idleCurrent);
     if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))
-        m_known.ramp = values.value(QStringLiteral("ramp")).global.toLongLong();
+        m_known.ramp = intOf(values.value(QStringLiteral("ramp")).global);
     // ##REFSW is the only way to set the switch type: the stored value is the working one.
     if (const SystemEntry* e = stored.find(SystemEntry::Key::ReferenceSwitch))
         m_known.switchNc.insert(e->normallyClosed);

@@ -433,6 +433,7 @@ QString validateProgramLine(const QByteArray& line)
 
 void CommandDecoder::reset()
 {
+    m_skipped = 0;
     m_buffer.clear();
     m_discarding = false;
 }
@@ -450,14 +451,17 @@ QList<CommandDecoder::Frame> CommandDecoder::feed(const QByteArray& bytes)
             m_discarding = false;
             if (f.overlong || !f.text.isEmpty() || c != kCr)
                 out << f; // an empty <CR> line (CR LF CR) is no command
+            else
+                ++m_skipped;
             continue;
         }
-        if (m_discarding)
+        if (m_discarding || (m_buffer.isEmpty() && (c == '\n' || c == ' ' || c == '\t'))) {
+            ++m_skipped; // an overlong tail; LF of a CR LF terminal, blanks between commands
             continue;
-        if (m_buffer.isEmpty() && (c == '\n' || c == ' ' || c == '\t'))
-            continue; // LF of a CR LF terminal, blanks between commands
+        }
         m_buffer += c;
         if (m_buffer.size() > kMaxFrame) {
+            m_skipped += m_buffer.size();
             m_buffer.clear();
             m_discarding = true;
         }

@@ -142,10 +142,15 @@ public:
     };
     QList<Frame> feed(const QByteArray& bytes);
     void reset();
+    int buffered() const { return int(m_buffer.size()); }
+    // Bytes consumed without appearing in a frame's text or terminator: LF and blanks between
+    // commands, empty <CR> lines and the tail of an overlong frame (checked by the fuzz target).
+    qint64 skippedBytes() const { return m_skipped; }
 
 private:
     QByteArray m_buffer;
     bool m_discarding = false;
+    qint64 m_skipped = 0;
 };
 
 } // namespace stepdeck::emis

@@ -1,15 +1,19 @@
 #include "EmisParameterPlan.h"
+#include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
 
 namespace {
 using Plan = ParameterPlan;
 
+// The values were normalised and range-checked by the schema before a plan is made; this
+// reads them the one way numbers are read (decimal text or an integral value, never octal,
+// never a double cast beyond qint64). Anything else reads as 0, which every range check of
+// the plan's commands refuses.
 qint64 intOf(const QVariant& v)
 {
-    bool ok = false;
-    const qint64 n = v.toString().toLongLong(&ok, 10);
-    return ok ? n : v.toLongLong();
+    qint64 n = 0;
+    return numbers::integerFromVariant(v, &n) == NumberError::None ? n : 0;
 }
 
 QMap<Axis, qint64> perAxis(const ParameterValue& value)

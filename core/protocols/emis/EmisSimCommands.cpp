@@ -148,6 +148,8 @@ QByteArray EmisSimulator::runVector(const Command& c)
     for (const VectorTarget& t : c.targets) {
         const qint64 relative = t.absolute ? t.value - position(t.axis) : t.value;
         targets.insert(t.axis, axisRef(t.axis).physical() + relative);
+        if (relative != 0)
+            m_accepted.append({t.axis, relative});
         const double speed = qMax<double>(1, m_working.workSpeed.value(t.axis));
         slowest = qMax(slowest, double(qAbs(relative)) / speed);
     }

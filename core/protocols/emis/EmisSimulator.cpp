@@ -96,6 +96,16 @@ void EmisSimulator::dropArrivals(int count)
     m_dropArrivals = count;
 }
 
+void EmisSimulator::emergencyStop()
+{
+    m_referenceQueue.clear();
+    for (Axis axis : allAxes()) {
+        EmisSimAxis& a = axisRef(axis);
+        a.setPhysical(a.physical()); // idle where it stands
+        m_referencing[size_t(axis)] = false;
+    }
+}
+
 void EmisSimulator::powerCycle()
 {
     for (Axis axis : allAxes()) {

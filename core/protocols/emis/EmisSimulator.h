@@ -64,6 +64,14 @@ public:
     QList<SystemEntry> storedEntries() const { return m_stored; }
     std::optional<InputProgram> program(int input) const;
     int arrivalsDropped() const { return m_arrivalsDropped; }
+    // Vector moves (9.11) the board accepted, per axis with their relative length in steps
+    // (absolute targets converted at acceptance), in order; zero-length targets are left out.
+    struct AcceptedMove
+    {
+        Axis axis;
+        qint64 steps;
+    };
+    QList<AcceptedMove> acceptedMoves() const { return m_accepted; }
     // Moves and reference runs refused with <BEL> because a named motor was still moving.
     int busyRefusals() const { return m_busyRefusals; }
 
@@ -76,6 +84,9 @@ public:
     void dropArrivals(int count); // the next `count` <DCn> are not sent (the motor still stops)
     void bellOn(const QByteArray& command) { m_bellOn = command; } // <BEL> the next time it comes
     void powerCycle(); // working values from the stored ones, counters 0, outputs off
+    // The machine's emergency-stop circuit (the board has no stop command): every motor
+    // stands where it is at once, reference runs are abandoned, no <DCn> follows.
+    void emergencyStop();
 
 private:
     EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }
@@ -112,6 +123,7 @@ private:
     int m_programming = 0; // input being programmed (9.17), 0: none
     bool m_programHeader = false;
     InputProgram m_draft;
+    QList<AcceptedMove> m_accepted;
     int m_dropArrivals = 0;
     int m_arrivalsDropped = 0;
     int m_busyRefusals = 0;

@@ -219,7 +219,12 @@ void LaserAxisController::onDeadline()
         if (!it->awaiting || it->deadlineMs > now)
             continue;
         it->awaiting = false; // still unconfirmed: it may be moving yet
-        mutableStatus().axes[it.key()].moving = false;
+        AxisStatus& axis = mutableStatus().axes[it.key()];
+        axis.moving = false;
+        // The axis is somewhere between where it was and the target: a relative move from the
+        // last reported position would go to the wrong place (found by the fault soak). The
+        // next status frame makes it known again.
+        axis.positionKnown = false;
         expired.append({it.key(), tr("axis %1 did not report reaching its target %2 within %3 s; "
                                      "it may still be moving")
                                       .arg(axisName(it.key()))

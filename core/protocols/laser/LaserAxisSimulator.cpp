@@ -90,10 +90,21 @@ void LaserAxisSimulator::execute(const CommandFrame& command)
     LaserSimAxis& a = axis_(command.axis);
     // A new target replaces the old one; its status follows on the next tick, also for a
     // target the axis already stands on.
-    if (command.command == Command::Home)
+    if (command.command == Command::Home) {
         a.home();
-    else
-        a.moveTo(command.position);
+        return;
+    }
+    if (const qint64 steps = command.position - a.position(); steps != 0)
+        m_accepted.append({command.axis, steps});
+    a.moveTo(command.position);
+}
+
+void LaserAxisSimulator::emergencyStop()
+{
+    advanceToNow();
+    for (LaserSimAxis& a : m_axes)
+        a.stop();
+    updateTimer();
 }
 
 void LaserAxisSimulator::setDoorOpen(bool open)

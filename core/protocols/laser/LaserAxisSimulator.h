@@ -40,11 +40,23 @@ public:
     void setGarbageBeforeStatus(bool on) { m_garbage = on; }
     // Sends a status frame on its own (tests: unsolicited frames).
     void reportStatus(Axis axis, Status status);
+    // The machine's emergency stop (the protocol has no stop command): every axis stands
+    // where it is and forgets its target; no status frame follows.
+    void emergencyStop();
 
     // ---- observation ----
     QList<CommandFrame> receivedCommands() const { return m_commands; }
     void clearReceivedCommands() { m_commands.clear(); }
     int rejectedFrames() const { return m_rejected; }
+    // Move commands the axes accepted, with their length in laser units from where the axis
+    // stood (its own count) to the target, in order; zero-length ones are left out.
+    struct AcceptedMove
+    {
+        Axis axis;
+        qint64 steps;
+    };
+    QList<AcceptedMove> acceptedMoves() const { return m_accepted; }
+    void clearAcceptedMoves() { m_accepted.clear(); }
     QList<QByteArray> sentStatusFrames() const { return m_sent; }
     qint64 position(Axis axis);
     bool isMoving(Axis axis);
@@ -63,6 +75,7 @@ private:
     CommandDecoder m_decoder;
     std::array<LaserSimAxis, kAxisCount> m_axes;
     QList<CommandFrame> m_commands;
+    QList<AcceptedMove> m_accepted;
     QList<QByteArray> m_sent;
     int m_rejected = 0;
     bool m_doorOpen = false;

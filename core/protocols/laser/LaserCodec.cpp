@@ -172,7 +172,9 @@ QList<FrameSplitter::Piece> FrameSplitter::feed(const QByteArray& bytes)
     QList<Piece> out;
     for (char c : bytes) {
         if (c == kCr) {
-            if (!m_discarding) {
+            if (m_discarding) {
+                ++m_dropped;
+            } else {
                 out << Piece{m_buffer, m_buffer.size() == kBodySize ? DecodeError::None
                                                                     : DecodeError::WrongLength};
             }
@@ -183,8 +185,10 @@ QList<FrameSplitter::Piece> FrameSplitter::feed(const QByteArray& bytes)
         }
         const bool skipLf = c == kLf && m_afterCr;
         m_afterCr = false;
-        if (skipLf || m_discarding)
+        if (skipLf || m_discarding) {
+            ++m_dropped;
             continue;
+        }
         if (m_buffer.size() == kBodySize) {
             // An eighth character: report once, then drop everything up to the next CR.
             out << Piece{m_buffer + c, DecodeError::Overlong};
@@ -199,6 +203,7 @@ QList<FrameSplitter::Piece> FrameSplitter::feed(const QByteArray& bytes)
 
 void FrameSplitter::reset()
 {
+    m_dropped = 0;
     m_buffer.clear();
     m_discarding = false;
     m_afterCr = false;

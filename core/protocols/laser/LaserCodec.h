@@ -108,8 +108,12 @@ public:
     QList<Piece> feed(const QByteArray& bytes);
     void reset();
     int buffered() const { return int(m_buffer.size()); }
+    // Bytes consumed without appearing in a piece (body or its CR): a LF after a CR, and the
+    // tail and CR of an overlong run (checked by the fuzz targets).
+    qint64 droppedBytes() const { return m_dropped; }
 
 private:
+    qint64 m_dropped = 0;
     QByteArray m_buffer;
     bool m_discarding = false;
     bool m_afterCr = false;
@@ -122,6 +126,7 @@ public:
     QList<DecodedCommand> feed(const QByteArray& bytes);
     void reset() { m_splitter.reset(); }
     int buffered() const { return m_splitter.buffered(); }
+    qint64 droppedBytes() const { return m_splitter.droppedBytes(); }
 
 private:
     FrameSplitter m_splitter;
@@ -134,6 +139,7 @@ public:
     QList<DecodedStatus> feed(const QByteArray& bytes);
     void reset() { m_splitter.reset(); }
     int buffered() const { return m_splitter.buffered(); }
+    qint64 droppedBytes() const { return m_splitter.droppedBytes(); }
 
 private:
     FrameSplitter m_splitter;

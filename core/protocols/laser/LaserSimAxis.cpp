@@ -26,6 +26,12 @@ void LaserSimAxis::home()
     m_thenMove = false;
 }
 
+void LaserSimAxis::stop()
+{
+    m_phase = Phase::Idle;
+    m_thenMove = false;
+}
+
 void LaserSimAxis::moveTo(int target)
 {
     // "If the axis has not yet been in its home position since power-up the axis should first

@@ -32,6 +32,7 @@ public:
     void home();               // command '1'
     void moveTo(int target);   // command '2'
     void setHalted(bool halt); // door open: stands still, keeps its target
+    void stop();               // emergency stop: stands still, forgets its target
     Event advance(double seconds);
 
     qint64 position() const; // the axis' own count, as reported in status frames

@@ -40,6 +40,9 @@ void TestLaserBridgeConfig::parseMap_invalid_data()
     QTest::newRow("laser axis 0") << "0=X";
     QTest::newRow("octal-looking") << "01x=X";
     QTest::newRow("hex") << "0x1=X";
+    QTest::newRow("nan") << "nan=X";
+    QTest::newRow("fraction") << "1.0=X";
+    QTest::newRow("huge") << "99999999999999999999=X";
     QTest::newRow("no axis") << "1=";
     QTest::newRow("bad axis") << "1=Q";
     QTest::newRow("twice") << "1=X,1=Y";
@@ -70,6 +73,14 @@ void TestLaserBridgeConfig::parseScale_data()
     QTest::newRow("nan") << "nan" << false << 0.0;
     QTest::newRow("inf") << "inf" << false << 0.0;
     QTest::newRow("text") << "two" << false << 0.0;
+    // The one notation of NumberParsing: blanks around and a sign are fine, nothing else.
+    QTest::newRow("blanks, sign") << " +2.5 " << true << 2.5;
+    QTest::newRow("exponent") << "1e3" << true << 1000.0;
+    QTest::newRow("hex") << "0x10" << false << 0.0;
+    QTest::newRow("hex float") << "0x1p3" << false << 0.0;
+    QTest::newRow("comma") << "1,5" << false << 0.0;
+    QTest::newRow("beyond double") << "1e400" << false << 0.0;
+    QTest::newRow("-inf") << "-Infinity" << false << 0.0;
 }
 
 void TestLaserBridgeConfig::parseScale()
@@ -92,7 +103,10 @@ void TestLaserBridgeConfig::parseHome_validAndInvalid()
     QString error;
     QVERIFY(LaserBridgeConfig::parseHome("X=-1,Y=1", &dirs, &error));
     QCOMPARE(dirs, (QMap<Axis, int>{{Axis::X, -1}, {Axis::Y, 1}}));
-    for (const char* bad : {"X=0", "X=2", "X=-1,X=1", "X", "Q=1", "X=+1x"})
+    QVERIFY(LaserBridgeConfig::parseHome("X=+1,Y=-01", &dirs, &error));
+    QCOMPARE(dirs, (QMap<Axis, int>{{Axis::X, 1}, {Axis::Y, -1}}));
+    for (const char* bad : {"X=0", "X=2", "X=-1,X=1", "X", "Q=1", "X=+1x", "X=nan", "X=-1.0",
+                            "X=0x1", "X=-99999999999999999999"})
         QVERIFY2(!LaserBridgeConfig::parseHome(bad, &dirs, &error), bad);
     LaserBridgeConfig cfg;
     cfg.homeDirections = {{Axis::Y, 1}};
@@ -108,7 +122,9 @@ void TestLaserBridgeConfig::parseDoorInput_decimalOnly()
     QCOMPARE(input, 3);
     QVERIFY(LaserBridgeConfig::parseDoorInput("010", &input, &error));
     QCOMPARE(input, 10); // decimal, not octal
-    for (const char* bad : {"0", "65", "0x3", "-1", "x"})
+    QVERIFY(LaserBridgeConfig::parseDoorInput(" +4 ", &input, &error));
+    QCOMPARE(input, 4);
+    for (const char* bad : {"0", "65", "0x3", "-1", "x", "nan", "3.0", "1e1", "99999999999"})
         QVERIFY2(!LaserBridgeConfig::parseDoorInput(bad, &input, &error), bad);
 }
 

@@ -6,6 +6,7 @@
 #include "common/LedIndicator.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
+#include "main/SafetyBar.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "programs/InputProgramsPage.h"
@@ -16,6 +17,7 @@
 #include "status/StatusPanel.h"
 #include <QComboBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
 
@@ -74,6 +76,7 @@ void TestEmisMainWindow::uAxis_everywhere()
     QCOMPARE(w->referencePanel()->directions().keys(),
              (QList<Axis>{Axis::X, Axis::Y, Axis::Z, Axis::U}));
     QCOMPARE(w->context()->axes().size(), 4);
+    QVERIFY(!w->positionPanel()->displayedValue(Axis::U).isEmpty()); // a U row in the panel
     auto* programsDock = w->dockOf(w->inputProgramsPage());
     QVERIFY(programsDock && programsDock->toggleViewAction()->isVisible());
 }
@@ -157,6 +160,11 @@ void TestEmisMainWindow::lostArrival_motionUnconfirmedLamp()
 
 void TestEmisMainWindow::stop_refusedWithEmergencyStopText()
 {
+    // The board has no stop command: the permanent note next to STOP/PANIC says so before
+    // anyone presses them, and the buttons say they do not stop the controller.
+    QLabel* note = m_f->window->safetyBar()->noStopNote();
+    QVERIFY(!note->isHidden());
+    QVERIFY2(note->text().contains("emergency stop"), qPrintable(note->text()));
     m_f->window->stopAll();
     QTRY_VERIFY(m_f->window->lastError().contains("emergency stop"));
     m_f->window->panicAll();

@@ -7,6 +7,7 @@
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
+#include "main/SafetyBar.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include <QLabel>
 
@@ -128,6 +129,10 @@ void TestTargetJogger::note_shownForLaserAxesOnly()
     QVERIFY(connectLaser());
     QTRY_VERIFY(!m_f->window->jogPanel()->jogModeNote()->isHidden());
     QVERIFY(m_f->window->jogPanel()->jogModeNote()->text().contains("short targets"));
+    // The protocol has no stop command: the permanent note stands next to STOP/PANIC.
+    QLabel* noStop = m_f->window->safetyBar()->noStopNote();
+    QVERIFY(!noStop->isHidden());
+    QVERIFY2(noStop->text().contains("emergency stop"), qPrintable(noStop->text()));
 }
 
 void TestTargetJogger::deflect_shortTargetsOneAfterTheOther_releaseStops()

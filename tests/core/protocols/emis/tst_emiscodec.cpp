@@ -102,6 +102,7 @@ private Q_SLOTS:
     void decode_garbage_reportedAndResynchronised();
     void decode_overlongText_boundedAndDroppedToTerminator();
     void decode_blanksAndLineEnds_trimmed();
+    void decode_everyByteAccountedFor();
     void answers_versionAndInputs();
     void answers_malformedInputs_rejected_data();
     void answers_malformedInputs_rejected();
@@ -279,6 +280,22 @@ void TestEmisCodec::decode_blanksAndLineEnds_trimmed()
     ReplyDecoder decoder;
     QCOMPARE(describe(decoder.feed("\r\n @IG 01000001 \r\n\x06  \x15\t\x14")),
              (QStringList{"A:@IG 01000001", "N:", "DC4"}));
+}
+
+void TestEmisCodec::decode_everyByteAccountedFor()
+{
+    // Found while writing the fuzz target: blanks and overlong tails vanished without a count.
+    // Every byte is in an event (text, raw, terminator), buffered or skipped.
+    const QByteArray in = QByteArray("\r\n @IG 01000001 \r\n\x06  \x15\t\x14\x80x\x06") +
+                          QByteArray(ReplyDecoder::kMaxText + 3, 'A') + "zz\x06" + " @V";
+    ReplyDecoder decoder;
+    qint64 accounted = 0;
+    for (const Event& e : decoder.feed(in))
+        accounted += e.kind == Event::Kind::Invalid ? e.raw.size() : 1 + e.text.size();
+    QCOMPARE(decoder.buffered(), 2); // "@V", the blank before it skipped
+    // ten blanks; the overlong text's last two 'A', "zz" and its <ACK>
+    QCOMPARE(decoder.skippedBytes(), 10 + 5);
+    QCOMPARE(accounted + decoder.buffered() + decoder.skippedBytes(), in.size());
 }
 
 void TestEmisCodec::answers_versionAndInputs()

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void decoder_framesCrStxEtx();
     void decoder_randomChunks_sameFrames();
     void decoder_overlong_boundedAndResyncs();
+    void decoder_everyByteAccountedFor();
 };
 
 void TestEmisGrammar::parse_manualCommands_data()
@@ -368,6 +369,22 @@ void TestEmisGrammar::decoder_overlong_boundedAndResyncs()
     QVERIFY(frames[0].overlong);
     QVERIFY(frames[0].text.isEmpty());
     QCOMPARE(frames[1].text, QByteArray("@V"));
+}
+
+void TestEmisGrammar::decoder_everyByteAccountedFor()
+{
+    const QByteArray in = QByteArray("\r\n @V\r\n\r IJ7,1 t\x02\x03") +
+                          QByteArray(CommandDecoder::kMaxFrame + 10, 'L') + "\r" + "@I";
+    CommandDecoder decoder;
+    qint64 accounted = 0;
+    const QList<CommandDecoder::Frame> frames = decoder.feed(in);
+    QCOMPARE(frames.size(), 4); // @V, the header, <ETX>, the overlong frame
+    for (const CommandDecoder::Frame& f : frames)
+        accounted += f.text.size() + 1;
+    QCOMPARE(decoder.buffered(), 2);
+    // CR, LF, blank; LF, empty CR, blank; the overlong frame's kMaxFrame + 10 bytes
+    QCOMPARE(decoder.skippedBytes(), 6 + CommandDecoder::kMaxFrame + 10);
+    QCOMPARE(accounted + decoder.buffered() + decoder.skippedBytes(), in.size());
 }
 
 QTEST_GUILESS_MAIN(TestEmisGrammar)

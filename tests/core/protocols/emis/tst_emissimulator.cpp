@@ -27,6 +27,8 @@ private Q_SLOTS:
     void vector_nakThenArrival_positionCounted();
     void vector_busyAxis_bell_otherAxisMayJoin();
     void vector_absolute_usesBoardCounter();
+    void acceptedMoves_journalsAcceptedVectorsOnly();
+    void emergencyStop_axesStandAtOnce_noArrival();
     void vector_interpolation_axesArriveTogether();
     void home_sequential_arrivalsInOrder_counterZero();
     void home_simultaneous_arrivalsAsSwitchesAreReached();
@@ -166,6 +168,40 @@ void TestEmisSimulator::vector_absolute_usesBoardCounter()
     QCOMPARE(sendAndTake("L1,Z-100\r"), QByteArray(1, NAK) + ' ');
     QTRY_VERIFY(m_out.contains(char(0x13)));
     QCOMPARE(m_sim->position(Axis::Z), -100);
+}
+
+void TestEmisSimulator::acceptedMoves_journalsAcceptedVectorsOnly()
+{
+    // The soak's device journal (stepdeck-bench --soak): relative lengths, absolute targets
+    // converted, <BEL>-refused and zero-length moves left out.
+    sendAndTake("#R10\r#S500\r#E1,200\r");
+    QCOMPARE(sendAndTake("L1,x40,y-30\r"), QByteArray(1, NAK) + ' ');
+    QCOMPARE(sendAndTake("L1,x10\r"), QByteArray(1, BEL)); // X still moving
+    QTRY_VERIFY_WITH_TIMEOUT(!m_sim->anyMoving(), 5000);
+    QCOMPARE(sendAndTake("L1,X25,z0\r"), QByteArray(1, NAK) + ' ');
+    QTRY_VERIFY_WITH_TIMEOUT(!m_sim->anyMoving(), 5000);
+    const auto moves = m_sim->acceptedMoves();
+    QCOMPARE(moves.size(), 3);
+    QCOMPARE(moves[0].axis, Axis::X);
+    QCOMPARE(moves[0].steps, 40);
+    QCOMPARE(moves[1].axis, Axis::Y);
+    QCOMPARE(moves[1].steps, -30);
+    QCOMPARE(moves[2].axis, Axis::X);
+    QCOMPARE(moves[2].steps, -15); // absolute 25 from 40
+}
+
+void TestEmisSimulator::emergencyStop_axesStandAtOnce_noArrival()
+{
+    sendAndTake("#R10\r#S100\r#E1,200\r");
+    QCOMPARE(sendAndTake("L1,x100000\r"), QByteArray(1, NAK) + ' ');
+    QTRY_VERIFY(m_sim->position(Axis::X) > 0);
+    m_sim->emergencyStop();
+    QVERIFY(!m_sim->anyMoving());
+    const qint64 stoppedAt = m_sim->position(Axis::X);
+    QVERIFY(stoppedAt < 100000);
+    QVERIFY(!m_out.contains(char(0x11))); // no arrival: the target was never reached
+    QCOMPARE(sendAndTake("L1,x10\r"), QByteArray(1, NAK) + ' '); // the board takes new moves
+    QTRY_COMPARE(m_sim->position(Axis::X), stoppedAt + 10);
 }
 
 void TestEmisSimulator::vector_interpolation_axesArriveTogether()

@@ -74,6 +74,7 @@ private Q_SLOTS:
     void moveAbsolute_endSwitch_finishesNamingIt();
     void moveAbsolute_newTarget_replacesOldRequest();
     void moveAbsolute_silentAxis_timesOutUnconfirmed();
+    void arrivalTimeout_positionUnknown_relativeRefused();
     void stopAndPanic_unsupported_nothingSent();
     void jog_refusedNoStream();
     void unsolicitedFrames_doorAndSwitchAndPosition();
@@ -258,6 +259,29 @@ void TestLaserAxisController::moveAbsolute_silentAxis_timesOutUnconfirmed()
     rig.sim->faults().silent = false;
     QTRY_VERIFY_WITH_TIMEOUT(!rig.controller->status().motionUnconfirmed, 10000);
     QCOMPARE(rig.axis(Axis::Z).position, qint64(400));
+}
+
+void TestLaserAxisController::arrivalTimeout_positionUnknown_relativeRefused()
+{
+    // stepdeck-bench --soak: after a lost status frame a relative move went from the last
+    // reported position, i.e. to the wrong target.
+    Rig rig(150);
+    QVERIFY(rig.open());
+    RequestId id = rig.id();
+    rig.controller->moveAbsolute(id, {{Axis::X, 100}});
+    QVERIFY(rig.waitFor(id));
+    QVERIFY(rig.axis(Axis::X).positionKnown);
+    rig.sim->faults().silent = true;
+    id = rig.id();
+    rig.controller->moveAbsolute(id, {{Axis::X, 400}});
+    QVERIFY(rig.waitFor(id));
+    QCOMPARE(rig.results[id].error, ErrorKind::Timeout);
+    QVERIFY(!rig.axis(Axis::X).positionKnown);
+    id = rig.id();
+    rig.controller->moveRelative(id, {{Axis::X, 50}});
+    QVERIFY(rig.waitFor(id));
+    QCOMPARE(rig.results[id].error, ErrorKind::Refused);
+    QCOMPARE(rig.sim->receivedCommands().size(), 2); // nothing sent for the relative move
 }
 
 void TestLaserAxisController::stopAndPanic_unsupported_nothingSent()

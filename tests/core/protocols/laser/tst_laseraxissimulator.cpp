@@ -24,6 +24,7 @@ private Q_SLOTS:
     void silentFault_movesButSaysNothing();
     void garbageFault_precedesEveryStatus();
     void threeAxes_independent();
+    void acceptedMoves_journalAndEmergencyStop();
 
 private:
     // Frames sent since the test began, decoded on the laser side.
@@ -188,6 +189,35 @@ void TestLaserAxisSimulator::threeAxes_independent()
     QCOMPARE(got, (QList<StatusFrame>{{Axis::X, 10, Status::TargetReached},
                                       {Axis::Y, 20, Status::TargetReached},
                                       {Axis::Z, 30, Status::TargetReached}}));
+}
+
+void TestLaserAxisSimulator::acceptedMoves_journalAndEmergencyStop()
+{
+    // The soak's device journal: lengths from where the axis stood, zero-length moves and
+    // home commands left out; the emergency stop leaves the axes where they are, silently.
+    m_sim->receive(encodeMove(Axis::X, 100));
+    QVERIFY(waitForStatuses(1));
+    m_sim->receive(encodeMove(Axis::X, 100) + encodeHome(Axis::Y));
+    QVERIFY(waitForStatuses(3));
+    m_sim->receive(encodeMove(Axis::X, 40));
+    QVERIFY(waitForStatuses(4));
+    const auto moves = m_sim->acceptedMoves();
+    QCOMPARE(moves.size(), 2);
+    QCOMPARE(moves[0].steps, 100);
+    QCOMPARE(moves[1].steps, -60);
+    m_sim->clearAcceptedMoves();
+    QVERIFY(m_sim->acceptedMoves().isEmpty());
+
+    m_sim->setSpeed(2000);
+    m_sim->receive(encodeMove(Axis::Z, 90000)); // 45 s away
+    QTRY_VERIFY(m_sim->position(Axis::Z) > 0);
+    const int before = int(statuses().size());
+    m_sim->emergencyStop();
+    QVERIFY(!m_sim->isMoving(Axis::Z));
+    QVERIFY(!m_sim->isTicking());
+    QVERIFY(m_sim->position(Axis::Z) < 90000);
+    QVERIFY(test::staysQuiet(*m_spy, 100));
+    QCOMPARE(statuses().size(), before);
 }
 
 QTEST_GUILESS_MAIN(TestLaserAxisSimulator)

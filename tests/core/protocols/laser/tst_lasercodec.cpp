@@ -96,6 +96,7 @@ private Q_SLOTS:
     void decode_frameWithoutCr_staysBuffered();
     void decode_allByteValues_neverCrashesOrGrows();
     void directions_areNotMixedUp();
+    void decode_everyByteAccountedFor();
 };
 
 void TestLaserCodec::encodeCommand_goldens_data()
@@ -334,6 +335,19 @@ void TestLaserCodec::directions_areNotMixedUp()
     QCOMPARE(commands.feed("2001500\r").first().error, DecodeError::UnknownAxis);
     QCOMPARE(commandText({Command::Move, Axis::Y, 150}), QStringLiteral("move Y to 150"));
     QCOMPARE(statusText({Axis::Y, 150, Status::EndSwitch}), QStringLiteral("Y at 150: end switch"));
+}
+
+void TestLaserCodec::decode_everyByteAccountedFor()
+{
+    // Every byte is in a frame's raw, its CR, buffered, or dropped (LF after CR, overlong tail).
+    const QByteArray in = "2200150\r\n1234567890\r12\r\r\n\n220";
+    CommandDecoder decoder;
+    qint64 accounted = 0;
+    for (const DecodedCommand& d : decoder.feed(in))
+        accounted += d.raw.size() + (d.error == DecodeError::Overlong ? 0 : 1);
+    QCOMPARE(decoder.buffered(), 4);             // the second LF is a character of the next frame
+    QCOMPARE(decoder.droppedBytes(), 1 + 3 + 1); // LF; "890" and CR of the overlong run; LF
+    QCOMPARE(accounted + decoder.buffered() + decoder.droppedBytes(), in.size());
 }
 
 QTEST_GUILESS_MAIN(TestLaserCodec)
