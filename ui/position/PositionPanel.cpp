@@ -168,7 +168,18 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         const double value = m_context->toUserUnits(axis, steps);
         return u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
     };
-    row.unit->setText(m_context->unitName(axis));
+    // The large digits are work coordinates once a work zero is set: say so next to them;
+    // the line below always gives the machine position.
+    if (u.workOffset != 0) {
+        row.unit->setText(tr("%1 work").arg(m_context->unitName(axis)));
+        row.unit->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
+                                "(machine %2 steps)")
+                                 .arg(axisName(axis))
+                                 .arg(u.workOffset));
+    } else {
+        row.unit->setText(m_context->unitName(axis));
+        row.unit->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
+    }
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
@@ -180,10 +191,17 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         row.limits->setText(
             !limit.enabled ? tr("limits off")
             : active       ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
-                           : tr("limits %1..%2 (after referencing)")
+                           : tr("limits %1..%2 not applied: not referenced")
                                  .arg(limit.minimum)
                                  .arg(limit.maximum));
-        row.limits->setToolTip(tr("Soft limits of %1 in machine steps").arg(axisName(axis)));
+        row.limits->setToolTip(
+            active ? tr("Soft limits of %1 in machine steps: jog stops and moves are refused "
+                        "there")
+                         .arg(axisName(axis))
+                   : tr("Soft limits of %1 in machine steps apply only while the axis is "
+                        "referenced: an unreferenced position says nothing about where the "
+                        "machine is")
+                         .arg(axisName(axis)));
     }
     MoveTrack& move = m_moves[axis];
 
