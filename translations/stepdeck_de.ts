@@ -1410,15 +1410,15 @@
         <name>stepdeck::SoftLimits</name>
         <message>
             <source>refused: axis %1 would reach %2, beyond its soft limit %3</source>
-            <translation type="unfinished" />
+            <translation>abgelehnt: Achse %1 würde %2 erreichen, jenseits ihres Software-Endschalters %3</translation>
         </message>
         <message>
             <source>refused: a velocity move has no end, and axis %1 has soft limits; jog or move to a position instead</source>
-            <translation type="unfinished" />
+            <translation>abgelehnt: eine Geschwindigkeitsfahrt hat kein Ende, und Achse %1 hat Software-Endschalter; stattdessen im Tippbetrieb verfahren oder eine Position anfahren</translation>
         </message>
         <message>
             <source>jog stopped: axis %1 at its soft limit %2</source>
-            <translation type="unfinished" />
+            <translation>Tippbetrieb gestoppt: Achse %1 steht an ihrem Software-Endschalter %2</translation>
         </message>
     </context>
     <context>
@@ -3543,27 +3543,27 @@
         <name>stepdeck::ui::GoToWidget</name>
         <message>
             <source>Go to position</source>
-            <translation type="unfinished" />
+            <translation>Position anfahren</translation>
         </message>
         <message>
             <source>Go</source>
-            <translation type="unfinished" />
+            <translation>Anfahren</translation>
         </message>
         <message>
             <source>Go to work zero</source>
-            <translation type="unfinished" />
+            <translation>Werkstück-Nullpunkt anfahren</translation>
         </message>
         <message>
             <source>Move the axes with a value to that work position (all at once)</source>
-            <translation type="unfinished" />
+            <translation>Die Achsen mit einem Wert auf diese Werkstückposition fahren (alle gleichzeitig)</translation>
         </message>
         <message>
             <source>Move every axis to its work zero (all at once)</source>
-            <translation type="unfinished" />
+            <translation>Jede Achse auf ihren Werkstück-Nullpunkt fahren (alle gleichzeitig)</translation>
         </message>
         <message>
             <source>Work position of %1 in %2; empty: %1 stays</source>
-            <translation type="unfinished" />
+            <translation>Werkstückposition von %1 in %2; leer: %1 bleibt stehen</translation>
         </message>
         <message>
             <source>Not connected.</source>
@@ -3571,35 +3571,35 @@
         </message>
         <message>
             <source>Reference the machine to go to a position (axis %1 is not referenced).</source>
-            <translation type="unfinished" />
+            <translation>Zum Anfahren einer Position die Maschine referenzieren (Achse %1 ist nicht referenziert).</translation>
         </message>
         <message>
             <source>The machine is moving: go to a position once it stands still.</source>
-            <translation type="unfinished" />
+            <translation>Die Maschine bewegt sich: eine Position erst anfahren, wenn sie stillsteht.</translation>
         </message>
         <message>
             <source>%1: '%2' is not a number</source>
-            <translation type="unfinished" />
+            <translation>%1: „%2“ ist keine Zahl</translation>
         </message>
         <message>
             <source>Enter a position for at least one axis.</source>
-            <translation type="unfinished" />
+            <translation>Für mindestens eine Achse eine Position eingeben.</translation>
         </message>
         <message>
             <source>work zero</source>
-            <translation type="unfinished" />
+            <translation>Werkstück-Nullpunkt</translation>
         </message>
         <message>
             <source>Moving to %1…</source>
-            <translation type="unfinished" />
+            <translation>Fahre auf %1 …</translation>
         </message>
         <message>
             <source>Not moved: %1</source>
-            <translation type="unfinished" />
+            <translation>Nicht gefahren: %1</translation>
         </message>
         <message>
             <source>Move accepted by the controller.</source>
-            <translation type="unfinished" />
+            <translation>Fahrt von der Steuerung angenommen.</translation>
         </message>
     </context>
     <context>
@@ -4408,51 +4408,51 @@ W1500</translation>
         </message>
         <message>
             <source>Soft limits…</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter …</translation>
         </message>
         <message>
             <source>Travel range per axis that jog and moves must not leave</source>
-            <translation type="unfinished" />
+            <translation>Verfahrbereich je Achse, den Tippbetrieb und Fahrten nicht verlassen dürfen</translation>
         </message>
         <message>
             <source>%1 work</source>
-            <translation type="unfinished" />
+            <translation>%1 Werkstück</translation>
         </message>
         <message>
             <source>Work position: the machine position minus the work zero of %1 (machine %2 steps)</source>
-            <translation type="unfinished" />
+            <translation>Werkstückposition: Maschinenposition minus Werkstück-Nullpunkt von %1 (Maschine %2 Schritte)</translation>
         </message>
         <message>
             <source>Machine position (no work zero set for %1)</source>
-            <translation type="unfinished" />
+            <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
         </message>
         <message>
             <source>no soft limits</source>
-            <translation type="unfinished" />
+            <translation>keine Software-Endschalter</translation>
         </message>
         <message>
             <source>No travel range set for %1 (Soft limits…)</source>
-            <translation type="unfinished" />
+            <translation>Kein Verfahrbereich für %1 gesetzt (Software-Endschalter …)</translation>
         </message>
         <message>
             <source>limits off</source>
-            <translation type="unfinished" />
+            <translation>Endschalter aus</translation>
         </message>
         <message>
             <source>limits %1..%2</source>
-            <translation type="unfinished" />
+            <translation>Grenzen %1..%2</translation>
         </message>
         <message>
             <source>limits %1..%2 not applied: not referenced</source>
-            <translation type="unfinished" />
+            <translation>Grenzen %1..%2 nicht wirksam: nicht referenziert</translation>
         </message>
         <message>
             <source>Soft limits of %1 in machine steps: jog stops and moves are refused there</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter von %1 in Maschinenschritten: dort stoppt der Tippbetrieb, Fahrten darüber hinaus werden abgelehnt</translation>
         </message>
         <message>
             <source>Soft limits of %1 in machine steps apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter von %1 in Maschinenschritten gelten nur, solange die Achse referenziert ist: eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
         </message>
     </context>
     <context>
@@ -4988,11 +4988,11 @@ hält die Steuerung nicht an</translation>
         <name>stepdeck::ui::SoftLimitsDialog</name>
         <message>
             <source>Soft limits</source>
-            <translation type="unfinished" />
+            <translation>Software-Endschalter</translation>
         </message>
         <message>
             <source>Jog and moves stop or are refused at these positions (machine steps) once the axis is referenced. Minimum equal to maximum: no limit set.</source>
-            <translation type="unfinished" />
+            <translation>Der Tippbetrieb stoppt und Fahrten werden abgelehnt an diesen Positionen (Maschinenschritte), sobald die Achse referenziert ist. Minimum gleich Maximum: keine Grenze gesetzt.</translation>
         </message>
         <message>
             <source>Axis</source>
@@ -5000,15 +5000,15 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>On</source>
-            <translation type="unfinished" />
+            <translation>Ein</translation>
         </message>
         <message>
             <source>Minimum</source>
-            <translation type="unfinished" />
+            <translation>Minimum</translation>
         </message>
         <message>
             <source>Maximum</source>
-            <translation type="unfinished" />
+            <translation>Maximum</translation>
         </message>
         <message>
             <source> steps</source>
@@ -5016,15 +5016,15 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>here</source>
-            <translation type="unfinished" />
+            <translation>hier</translation>
         </message>
         <message>
             <source>The current position of %1</source>
-            <translation type="unfinished" />
+            <translation>Die aktuelle Position von %1</translation>
         </message>
         <message>
             <source>Axis %1: the minimum lies above the maximum.</source>
-            <translation type="unfinished" />
+            <translation>Achse %1: das Minimum liegt über dem Maximum.</translation>
         </message>
     </context>
     <context>

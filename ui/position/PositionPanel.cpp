@@ -183,17 +183,16 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
-        row.limits->setToolTip(tr("No travel range set for %1 (Soft limits\u2026)")
-                                   .arg(axisName(axis)));
+        row.limits->setToolTip(
+            tr("No travel range set for %1 (Soft limits\u2026)").arg(axisName(axis)));
     } else {
-        const bool active = m_context->isConnected() &&
-                            m_context->softLimits().isActive(axis, m_context->status());
-        row.limits->setText(
-            !limit.enabled ? tr("limits off")
-            : active       ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
-                           : tr("limits %1..%2 not applied: not referenced")
-                                 .arg(limit.minimum)
-                                 .arg(limit.maximum));
+        const bool active =
+            m_context->isConnected() && m_context->softLimits().isActive(axis, m_context->status());
+        row.limits->setText(!limit.enabled ? tr("limits off")
+                            : active ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
+                                     : tr("limits %1..%2 not applied: not referenced")
+                                           .arg(limit.minimum)
+                                           .arg(limit.maximum));
         row.limits->setToolTip(
             active ? tr("Soft limits of %1 in machine steps: jog stops and moves are refused "
                         "there")
