@@ -4428,7 +4428,7 @@ W1500</translation>
         </message>
         <message>
             <source>no soft limits</source>
-            <translation>keine Software-Endschalter</translation>
+            <translation>keine Grenzen</translation>
         </message>
         <message>
             <source>No travel range set for %1 (Soft limits…)</source>
@@ -4444,7 +4444,7 @@ W1500</translation>
         </message>
         <message>
             <source>limits %1..%2 not applied: not referenced</source>
-            <translation>Grenzen %1..%2 nicht wirksam: nicht referenziert</translation>
+            <translation>%1..%2 unwirksam (nicht referenziert)</translation>
         </message>
         <message>
             <source>Soft limits of %1 in machine steps: jog stops and moves are refused there</source>

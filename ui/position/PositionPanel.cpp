@@ -35,11 +35,15 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     limits->setToolTip(tr("Travel range per axis that jog and moves must not leave"));
     for (QToolButton* b : {units, clear, limits})
         b->setFocusPolicy(Qt::NoFocus);
+    // Two lines: in German one line of three would widen the dock past a 1366x768 screen.
     buttons->addWidget(units);
-    buttons->addWidget(clear);
     buttons->addWidget(limits);
     buttons->addStretch(1);
     layout->addLayout(buttons);
+    auto* offsets = new QHBoxLayout;
+    offsets->addWidget(clear);
+    offsets->addStretch(1);
+    layout->addLayout(offsets);
     layout->addWidget(m_goTo);
     layout->addStretch(1);
     connect(limits, &QToolButton::clicked, this, &PositionPanel::editSoftLimits);
@@ -63,6 +67,12 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
 void PositionPanel::rebuild()
 {
     while (QLayoutItem* item = m_grid->takeAt(0)) {
+        if (QLayout* inner = item->layout()) { // a row's detail line
+            while (QLayoutItem* sub = inner->takeAt(0)) {
+                delete sub->widget();
+                delete sub;
+            }
+        }
         delete item->widget();
         delete item;
     }
@@ -105,8 +115,14 @@ void PositionPanel::rebuild()
         m_grid->addWidget(row.value, 2 * r, 1);
         m_grid->addWidget(row.unit, 2 * r, 2);
         m_grid->addWidget(row.state, 2 * r, 3);
-        m_grid->addWidget(row.steps, 2 * r + 1, 1);
-        m_grid->addWidget(row.limits, 2 * r + 1, 2);
+        // The soft limits share the line of the machine position (left of it): a column of
+        // their own would push the state off a 1366x768 screen.
+        auto* detail = new QHBoxLayout;
+        detail->setContentsMargins(0, 0, 0, 0);
+        detail->addWidget(row.limits);
+        detail->addStretch(1);
+        detail->addWidget(row.steps);
+        m_grid->addLayout(detail, 2 * r + 1, 1, 1, 2);
         m_grid->addWidget(zero, 2 * r + 1, 3);
         m_rows.insert(axis, row);
         ++r;
