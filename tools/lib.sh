@@ -17,21 +17,31 @@ STEPDECK_PACKAGES=(
 stepdeck_log() { printf '==> %s\n' "$*" >&2; }
 stepdeck_die() { printf 'error: %s\n' "$*" >&2; exit 1; }
 
+# What tools/test adds: the validators of the desktop entry and the AppStream metainfo
+# (tests/resources/tst_desktopintegration skips without them).
+STEPDECK_TEST_PACKAGES=(desktop-file-utils appstream)
+
+# What tools/package adds: help2man writes the man pages from --help/--version at build time,
+# dpkg-dev (dpkg-shlibdeps) and file are what CPack's DEB generator needs for the Depends line.
+STEPDECK_PACKAGE_PACKAGES=(help2man dpkg-dev file desktop-file-utils appstream)
+
+# stepdeck_missing_packages [extra packages...]
 stepdeck_missing_packages() {
     local p
-    for p in "${STEPDECK_PACKAGES[@]}"; do
+    for p in "${STEPDECK_PACKAGES[@]}" "$@"; do
         if ! dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q 'install ok installed'; then
             printf '%s\n' "$p"
         fi
     done
 }
 
+# stepdeck_install_packages [extra packages...]
 # Installs only what is missing; apt-get update runs once, and only if something is missing.
 stepdeck_install_packages() {
     command -v dpkg-query >/dev/null 2>&1 ||
         stepdeck_die "dpkg-query not found: tools/ expect Debian 12 (bookworm) or a derivative"
     local missing
-    mapfile -t missing < <(stepdeck_missing_packages)
+    mapfile -t missing < <(stepdeck_missing_packages "$@")
     if [ "${#missing[@]}" -eq 0 ]; then
         return 0
     fi
@@ -51,6 +61,7 @@ stepdeck_install_packages() {
 }
 
 # stepdeck_build BUILD_DIR [extra cmake -D options...]
+# STEPDECK_BUILD_TYPE overrides the configuration (default RelWithDebInfo).
 stepdeck_build() {
     local dir=$1
     shift
@@ -62,7 +73,7 @@ stepdeck_build() {
     stepdeck_log "configuring $dir"
     mkdir -p "$dir"
     cmake -S "$STEPDECK_ROOT" -B "$dir" "${generator[@]}" \
-        -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >"$dir/configure.log" 2>&1 || {
+        -DCMAKE_BUILD_TYPE="${STEPDECK_BUILD_TYPE:-RelWithDebInfo}" "$@" >"$dir/configure.log" 2>&1 || {
         cat "$dir/configure.log" >&2
         stepdeck_die "cmake configure failed ($dir)"
     }

@@ -1360,6 +1360,25 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::SerialPortAccess</name>
+        <message>
+            <source>serial port %1 is in use by another program</source>
+            <translation>serielle Schnittstelle %1 wird von einem anderen Programm benutzt</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied although you are in its group '%2': check the device's permissions (ls -l %1)</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert, obwohl Sie in ihrer Gruppe '%2' sind: Prüfen Sie die Rechte des Geräts (ls -l %1)</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied: you were added to the group '%2', but this session does not have it yet: log out and in again</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert: Sie wurden der Gruppe '%2' hinzugefügt, diese Sitzung hat sie aber noch nicht: Melden Sie sich ab und wieder an</translation>
+        </message>
+        <message>
+            <source>serial port %1: access denied: your user is not in the group '%2' that owns it. Join it (sudo adduser %3 %2), then log out and in again</source>
+            <translation>serielle Schnittstelle %1: Zugriff verweigert: Ihr Benutzer ist nicht in der Gruppe '%2', der sie gehört. Treten Sie ihr bei (sudo adduser %3 %2) und melden Sie sich dann ab und wieder an</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::SerialTransport</name>
         <message>
             <source>serial port %1 does not support %2 baud, %3%4%5</source>
@@ -1376,10 +1395,6 @@
         <message>
             <source>serial port %1 not found</source>
             <translation>serielle Schnittstelle %1 nicht gefunden</translation>
-        </message>
-        <message>
-            <source>serial port %1 is in use by another program or access is denied</source>
-            <translation>serielle Schnittstelle %1 wird von einem anderen Programm benutzt oder der Zugriff wird verweigert</translation>
         </message>
         <message>
             <source>serial port %1 is already open</source>
@@ -1414,11 +1429,11 @@
         </message>
         <message>
             <source>refused: a velocity move has no end, and axis %1 has soft limits; jog or move to a position instead</source>
-            <translation>abgelehnt: eine Geschwindigkeitsfahrt hat kein Ende, und Achse %1 hat Software-Endschalter; stattdessen im Tippbetrieb verfahren oder eine Position anfahren</translation>
+            <translation>abgelehnt: Eine Geschwindigkeitsfahrt hat kein Ende, und Achse %1 hat Software-Endschalter; stattdessen tippen oder eine Position anfahren</translation>
         </message>
         <message>
             <source>jog stopped: axis %1 at its soft limit %2</source>
-            <translation>Tippbetrieb gestoppt: Achse %1 steht an ihrem Software-Endschalter %2</translation>
+            <translation>Tippbetrieb angehalten: Achse %1 an ihrem Software-Endschalter %2</translation>
         </message>
     </context>
     <context>
@@ -3551,19 +3566,43 @@
         </message>
         <message>
             <source>Go to work zero</source>
-            <translation>Werkstück-Nullpunkt anfahren</translation>
+            <translation>Werkstücknullpunkt anfahren</translation>
         </message>
         <message>
             <source>Move the axes with a value to that work position (all at once)</source>
-            <translation>Die Achsen mit einem Wert auf diese Werkstückposition fahren (alle gleichzeitig)</translation>
+            <translation>Die Achsen mit einem Wert auf diese Werkstückposition fahren (gleichzeitig)</translation>
         </message>
         <message>
             <source>Move every axis to its work zero (all at once)</source>
-            <translation>Jede Achse auf ihren Werkstück-Nullpunkt fahren (alle gleichzeitig)</translation>
+            <translation>Alle Achsen auf ihren Werkstücknullpunkt fahren (gleichzeitig)</translation>
         </message>
         <message>
             <source>Work position of %1 in %2; empty: %1 stays</source>
             <translation>Werkstückposition von %1 in %2; leer: %1 bleibt stehen</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not a number</source>
+            <translation>%1: „%2“ ist keine Zahl</translation>
+        </message>
+        <message>
+            <source>Enter a position for at least one axis.</source>
+            <translation>Geben Sie für mindestens eine Achse eine Position ein.</translation>
+        </message>
+        <message>
+            <source>work zero</source>
+            <translation>Werkstücknullpunkt</translation>
+        </message>
+        <message>
+            <source>Moving to %1…</source>
+            <translation>Fahre nach %1…</translation>
+        </message>
+        <message>
+            <source>Not moved: %1</source>
+            <translation>Nicht gefahren: %1</translation>
+        </message>
+        <message>
+            <source>Move accepted by the controller.</source>
+            <translation>Fahrt von der Steuerung angenommen.</translation>
         </message>
         <message>
             <source>Not connected.</source>
@@ -3576,30 +3615,6 @@
         <message>
             <source>The machine is moving: go to a position once it stands still.</source>
             <translation>Die Maschine bewegt sich: eine Position erst anfahren, wenn sie stillsteht.</translation>
-        </message>
-        <message>
-            <source>%1: '%2' is not a number</source>
-            <translation>%1: „%2“ ist keine Zahl</translation>
-        </message>
-        <message>
-            <source>Enter a position for at least one axis.</source>
-            <translation>Für mindestens eine Achse eine Position eingeben.</translation>
-        </message>
-        <message>
-            <source>work zero</source>
-            <translation>Werkstück-Nullpunkt</translation>
-        </message>
-        <message>
-            <source>Moving to %1…</source>
-            <translation>Fahre auf %1 …</translation>
-        </message>
-        <message>
-            <source>Not moved: %1</source>
-            <translation>Nicht gefahren: %1</translation>
-        </message>
-        <message>
-            <source>Move accepted by the controller.</source>
-            <translation>Fahrt von der Steuerung angenommen.</translation>
         </message>
     </context>
     <context>
@@ -4408,11 +4423,27 @@ W1500</translation>
         </message>
         <message>
             <source>Soft limits…</source>
-            <translation>Software-Endschalter …</translation>
+            <translation>Software-Endschalter…</translation>
         </message>
         <message>
             <source>Travel range per axis that jog and moves must not leave</source>
             <translation>Verfahrbereich je Achse, den Tippbetrieb und Fahrten nicht verlassen dürfen</translation>
+        </message>
+        <message>
+            <source>no soft limits</source>
+            <translation>keine Grenzen</translation>
+        </message>
+        <message>
+            <source>No travel range set for %1 (Soft limits…)</source>
+            <translation>Kein Verfahrbereich für %1 gesetzt (Software-Endschalter…)</translation>
+        </message>
+        <message>
+            <source>limits off</source>
+            <translation>Grenzen aus</translation>
+        </message>
+        <message>
+            <source>limits %1..%2</source>
+            <translation>Grenzen %1..%2</translation>
         </message>
         <message>
             <source>%1 work</source>
@@ -4425,22 +4456,6 @@ W1500</translation>
         <message>
             <source>Machine position (no work zero set for %1)</source>
             <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
-        </message>
-        <message>
-            <source>no soft limits</source>
-            <translation>keine Grenzen</translation>
-        </message>
-        <message>
-            <source>No travel range set for %1 (Soft limits…)</source>
-            <translation>Kein Verfahrbereich für %1 gesetzt (Software-Endschalter …)</translation>
-        </message>
-        <message>
-            <source>limits off</source>
-            <translation>Endschalter aus</translation>
-        </message>
-        <message>
-            <source>limits %1..%2</source>
-            <translation>Grenzen %1..%2</translation>
         </message>
         <message>
             <source>limits %1..%2 not applied: not referenced</source>
@@ -4992,7 +5007,7 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>Jog and moves stop or are refused at these positions (machine steps) once the axis is referenced. Minimum equal to maximum: no limit set.</source>
-            <translation>Der Tippbetrieb stoppt und Fahrten werden abgelehnt an diesen Positionen (Maschinenschritte), sobald die Achse referenziert ist. Minimum gleich Maximum: keine Grenze gesetzt.</translation>
+            <translation>Tippbetrieb und Fahrten halten an diesen Positionen (Maschinenschritte) an oder werden abgelehnt, sobald die Achse referenziert ist. Minimum gleich Maximum: keine Grenze gesetzt.</translation>
         </message>
         <message>
             <source>Axis</source>
@@ -5024,7 +5039,7 @@ hält die Steuerung nicht an</translation>
         </message>
         <message>
             <source>Axis %1: the minimum lies above the maximum.</source>
-            <translation>Achse %1: das Minimum liegt über dem Maximum.</translation>
+            <translation>Achse %1: Das Minimum liegt über dem Maximum.</translation>
         </message>
     </context>
     <context>
@@ -5267,6 +5282,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Stored values in the form: %1.%2</source>
             <translation>Gespeicherte Werte im Formular: %1.%2</translation>
+        </message>
+        <message>
+            <source>Not stored: not connected.</source>
+            <translation>Nicht gespeichert: nicht verbunden.</translation>
         </message>
     </context>
     <context>

@@ -88,8 +88,8 @@ bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matc
 {
     const QString& arg = argv.at(*i);
     const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model",      "--port",    "--address",       "--axes",
-                                   "--timeout",    "--reset-line", "--arrival-timeout"};
+    static const QStringList names{"--model",   "--port",       "--address",        "--axes",
+                                   "--timeout", "--reset-line", "--arrival-timeout"};
     *matched = names.contains(name);
     QString value;
     if (!*matched || !optionValue(argv, i, name, &value, error))

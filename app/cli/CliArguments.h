@@ -1,7 +1,7 @@
 #pragma once
-#include "model/LineSettings.h"
 #include "CliOutput.h"
 #include "model/Axis.h"
+#include "model/LineSettings.h"
 #include <QStringList>
 #include <optional>
 

@@ -1,5 +1,6 @@
 // stepdeck: the operator and technician GUI.
 //   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--screenshot DIR] [--lang en|de]
+#include "../common/SignalPipe.h"
 #include "main/ConnectionBar.h"
 #include "main/MainWindow.h"
 #include "main/ScreenshotScript.h"
@@ -8,12 +9,15 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
+#include <QLoggingCategory>
 #include <QTextStream>
 #include <QTimer>
 
 using namespace stepdeck;
 
 namespace {
+Q_LOGGING_CATEGORY(lcGui, "stepdeck.gui")
+
 // --help and --version are answered before QApplication connects to a display: they must work
 // over ssh, in scripts and in a build chroot (the man page is generated from --help).
 bool asksForTextOnly(int argc, char** argv)
@@ -79,6 +83,17 @@ int main(int argc, char** argv)
     QApplication app(argc, argv);
     QApplication::setWindowIcon(applicationIcon());
     parser.process(app);
+
+    // SIGTERM (logout, `kill`), SIGHUP and SIGINT end the program the way closing the window
+    // does: the window's close path releases every jog and saves the layout, the event loop
+    // ends with 0, and destroying the window closes the session (the model's stop, flushed,
+    // then the port closed: ControllerSession::destroy). Installed before the window exists,
+    // so SDL (which is told not to, see SdlGamepadDevice) never sees a default handler.
+    const stepdeck::app::SignalPipe signalPipe([](int signalNumber) {
+        qCInfo(lcGui) << "signal" << signalNumber << "received: closing";
+        QApplication::closeAllWindows();
+        QCoreApplication::quit();
+    });
 
     ui::translations::install(&app, parser.isSet(lang) ? parser.value(lang)
                                                        : ui::translations::configured());

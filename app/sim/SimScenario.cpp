@@ -132,7 +132,8 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
 bool parseSpeed(const QString& text, std::optional<double>* speed, QString* error)
 {
     double value = 0;
-    if (numbers::parseReal(text, &value) != NumberError::None || !qIsFinite(value) || value < 1 || value > 1e7) {
+    if (numbers::parseReal(text, &value) != NumberError::None || !qIsFinite(value) || value < 1 ||
+        value > 1e7) {
         *error = tr("--speed expects units per second from 1 to 10000000, got '%1'").arg(text);
         return false;
     }

@@ -1,5 +1,6 @@
 #include "SerialTransport.h"
 #include "Logging.h"
+#include "SerialPortAccess.h"
 #include <QDeadlineTimer>
 #include <QMetaObject>
 #include <sys/ioctl.h>
@@ -251,8 +252,8 @@ QString SerialTransport::reasonFor(QSerialPort::SerialPortError error) const
     case QSerialPort::DeviceNotFoundError:
         return tr("serial port %1 not found").arg(m_portName);
     case QSerialPort::PermissionError:
-        return tr("serial port %1 is in use by another program or access is denied")
-            .arg(m_portName);
+        // Access denied (names the group to join) or locked by another program.
+        return SerialPortAccess::probe(m_portName).deniedText();
     case QSerialPort::OpenError:
         return tr("serial port %1 is already open").arg(m_portName);
     case QSerialPort::ReadError:

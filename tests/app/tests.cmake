@@ -20,3 +20,10 @@ add_dependencies(tst_cli_emis_e2e stepdeck-cli stepdeck-sim)
 stepdeck_add_test(tst_cli_laser_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_laser_e2e.cpp
                   LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_laser_e2e stepdeck-cli stepdeck-sim)
+# The GUI binary as a desktop program: --help without a display, SIGTERM/SIGHUP end it cleanly.
+stepdeck_add_test(tst_gui_signals SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_gui_signals.cpp
+                  LABELS integration TIMEOUT 300)
+add_dependencies(tst_gui_signals stepdeck)
+stepdeck_add_test(tst_port_permission SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_port_permission.cpp
+                  LABELS integration)
+add_dependencies(tst_port_permission stepdeck-cli)

@@ -19,6 +19,10 @@ SdlGamepadDevice::SdlGamepadDevice(QObject* parent) : GamepadDevice(parent)
 {
     // No SDL window: without this hint SDL drops joystick events of an unfocused app.
     SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
+    // SDL's own SIGINT/SIGTERM handlers would turn the signals into SDL_QUIT events nobody
+    // reads, so `kill` and logout could not end StepDeck: the application handles them itself
+    // (app/gui/main.cpp). Must be set before any SDL_Init*.
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
     if (SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER | SDL_INIT_JOYSTICK) != 0) {
         m_error = tr("SDL could not start its joystick support: %1")
                       .arg(QString::fromUtf8(SDL_GetError()));

@@ -31,9 +31,9 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
       m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
-      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
-      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
-      m_settingsDialog(new QDialog(this)),
+      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)),
+      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
+      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field

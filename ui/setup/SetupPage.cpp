@@ -2,10 +2,10 @@
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "setup/ParameterField.h"
-#include "setup/WritePlan.h"
-#include "setup/WritePreview.h"
 #include "setup/ParameterFile.h"
 #include "setup/StoredParametersBar.h"
+#include "setup/WritePlan.h"
+#include "setup/WritePreview.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
 #include <QGridLayout>

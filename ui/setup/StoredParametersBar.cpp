@@ -1,4 +1,5 @@
 #include "StoredParametersBar.h"
+#include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "setup/SetupPage.h"
 #include "setup/WriteWarnings.h"
@@ -75,26 +76,40 @@ bool StoredParametersBar::store(bool ask)
         return false;
     }
     if (ask) {
+        // Non-modal (issue 7 rule 5): STOP and PANIC stay usable while the question is open.
         const ParameterSchema schema = m_context->schema();
         const QStringList warnings = WriteWarnings::collect(schema, set);
-        const auto answer = QMessageBox::question(
-            this, tr("Store power-on values"),
+        dialogs::message(
+            this, QMessageBox::Question, tr("Store power-on values"),
             tr("Store the form's values in the controller? It starts with them after every "
                "power-on. Values without a stored form are left out.%1")
                 .arg(warnings.isEmpty()
                          ? QString()
-                         : QStringLiteral("<br><br>") + warnings.join(QStringLiteral("<br>"))));
-        if (answer != QMessageBox::Yes) {
-            setMessage(tr("Not stored: cancelled."), false);
-            return false;
-        }
+                         : QStringLiteral("<br><br>") + warnings.join(QStringLiteral("<br>"))),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No,
+            [this, set](QMessageBox::StandardButton answer) {
+                if (answer == QMessageBox::Yes)
+                    sendStore(set);
+                else
+                    setMessage(tr("Not stored: cancelled."), false);
+            });
+        return true;
+    }
+    sendStore(set);
+    return true;
+}
+
+void StoredParametersBar::sendStore(const ParameterSet& set)
+{
+    if (!m_context->isConnected()) {
+        setMessage(tr("Not stored: not connected."), true);
+        return;
     }
     m_pendingStore = m_context->session()->modelOperation(
         QStringLiteral("store-parameters"),
         {{QStringLiteral("parameters"), QVariant::fromValue(set)},
          {QStringLiteral("skipUnstorable"), true}});
     setMessage(tr("Storing\u2026"), false);
-    return true;
 }
 
 void StoredParametersBar::readStored()

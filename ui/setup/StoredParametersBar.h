@@ -1,5 +1,6 @@
 #pragma once
 #include "model/CommandResult.h"
+#include "model/ParameterSchema.h"
 #include <QWidget>
 
 class QLabel;
@@ -25,6 +26,7 @@ public:
 
 public Q_SLOTS:
     // ask: confirm with the technician first (tests pass false). false: nothing sent.
+    // ask: a non-modal question first; the store is sent once it is answered Yes.
     bool store(bool ask = true);
     void readStored();
 
@@ -32,6 +34,7 @@ private:
     void refresh();
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error);
+    void sendStore(const ParameterSet& set);
 
     MachineContext* m_context;
     SetupPage* m_page;

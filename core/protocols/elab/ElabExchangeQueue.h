@@ -130,7 +130,7 @@ private:
     QTimer m_paceTimer{this}; // re-checks the kernel's output queue while it drains
     QElapsedTimer m_clock;
     double m_characterTimeUs = 191; // 57600 8N2
-    qint64 m_outstanding = 0; // bytes handed to the transport and not yet reported written
+    qint64 m_outstanding = 0;       // bytes handed to the transport and not yet reported written
     int m_timeoutMs = 500;
     int m_syncBurst = 16;
     bool m_held = false;

@@ -3,7 +3,9 @@
 #include "NanotecController.h"
 #include "NanotecModel.h"
 #include "transport/Transport.h"
+#include <QSet>
 #include <QTimer>
+#include <algorithm>
 
 namespace stepdeck::nanotec {
 
@@ -240,35 +242,51 @@ void NanotecController::scanBus(RequestId id)
 void NanotecController::scan(RequestId id, int first, int last, int timeoutMs)
 {
     auto found = std::make_shared<QVariantList>();
+    auto seen = std::make_shared<QSet<int>>();
+    auto note = [this, first, last, found, seen](const Reply& reply) {
+        if (reply.kind != Reply::Kind::Firmware || reply.address < first || reply.address > last ||
+            seen->contains(reply.address))
+            return;
+        seen->insert(reply.address);
+        found->append(QVariantMap{{"address", reply.address},
+                                  {"hardware", reply.firmware.hardware},
+                                  {"interface", reply.firmware.interface},
+                                  {"date", reply.firmware.date},
+                                  {"firmware", reply.firmware.text}});
+        for (Drive& d : m_drives) {
+            if (d.address == reply.address) {
+                d.firmware = reply.firmware.text;
+                noteAnswer(d, true);
+            }
+        }
+    };
+    // The per-address timeout is short (254 addresses): a drive that answers a little late
+    // (a loaded host, a slow USB adapter) is still found -- its 'v' reply arrives while the
+    // next address is probed and would otherwise be dropped as unsolicited.
+    const QMetaObject::Connection late = connect(m_bus, &NanotecBus::unsolicited, this, note);
     QList<Step> steps;
     for (int address = first; address <= last; ++address) {
-        steps << [this, address, timeoutMs, found](const Done& done) {
+        steps << [this, address, timeoutMs, note](const Done& done) {
             NanotecBus::Request r;
             r.address = address;
             r.body = "v"; // 5.22: answers with hardware, interface and release date
             r.timeoutMs = timeoutMs;
-            r.done = [this, address, found, done](NanotecBus::Outcome o, const Reply& reply) {
+            r.done = [note, done](NanotecBus::Outcome o, const Reply& reply) {
                 if (o == NanotecBus::Outcome::Cancelled)
                     return done({ErrorKind::Cancelled, tr("scan cancelled")});
-                if (o == NanotecBus::Outcome::Ok) {
-                    found->append(QVariantMap{{"address", address},
-                                              {"hardware", reply.firmware.hardware},
-                                              {"interface", reply.firmware.interface},
-                                              {"date", reply.firmware.date},
-                                              {"firmware", reply.firmware.text}});
-                    for (Drive& d : m_drives) {
-                        if (d.address == address) {
-                            d.firmware = reply.firmware.text;
-                            noteAnswer(d, true);
-                        }
-                    }
-                }
+                if (o == NanotecBus::Outcome::Ok)
+                    note(reply);
                 done({});
             };
             m_bus->submit(r);
         };
     }
-    runSteps(steps, [this, id, found](const Failure& f) {
+    runSteps(steps, [this, id, found, late](const Failure& f) {
+        disconnect(late);
+        std::sort(found->begin(), found->end(), [](const QVariant& a, const QVariant& b) {
+            return a.toMap().value(QStringLiteral("address")).toInt() <
+                   b.toMap().value(QStringLiteral("address")).toInt();
+        });
         if (linkState() != LinkState::Connected && transport() && transport()->isOpen())
             transport()->close(); // the port was opened for the scan only
         finishWith(id, f, *found);

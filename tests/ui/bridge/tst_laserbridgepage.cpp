@@ -84,9 +84,9 @@ bool TestLaserBridgePage::startOnLaserPty()
 
 void TestLaserBridgePage::page_isADock_startNeedsConnection()
 {
-    auto* dock = m_f->window->findChild<QDockWidget*>(QStringLiteral("laserBridgeDock"));
+    QDockWidget* dock = m_f->window->dockOf(page());
     QVERIFY(dock);
-    QCOMPARE(dock->widget(), page());
+    QCOMPARE(dock->objectName(), QStringLiteral("laserBridgeDock"));
     QVERIFY(!page()->startButton()->isEnabled()); // nothing connected yet
     page()->startBridge();
     QVERIFY(page()->stateLabel()->text().contains("Connect the controller"));

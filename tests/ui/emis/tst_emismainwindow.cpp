@@ -23,14 +23,6 @@ using namespace stepdeck;
 using namespace stepdeck::test;
 
 namespace {
-void mouse(QWidget* w, QEvent::Type type, const QPointF& pos)
-{
-    const Qt::MouseButtons buttons =
-        type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
-    QMouseEvent e(type, pos, w->mapToGlobal(pos), Qt::LeftButton, buttons, Qt::NoModifier);
-    QApplication::sendEvent(w, &e);
-}
-
 QList<QByteArray> vectorMoves(const QList<QByteArray>& commands)
 {
     QList<QByteArray> out;
@@ -82,7 +74,7 @@ void TestEmisMainWindow::uAxis_everywhere()
     QCOMPARE(w->referencePanel()->directions().keys(),
              (QList<Axis>{Axis::X, Axis::Y, Axis::Z, Axis::U}));
     QCOMPARE(w->context()->axes().size(), 4);
-    auto* programsDock = qobject_cast<QDockWidget*>(w->inputProgramsPage()->parentWidget());
+    auto* programsDock = w->dockOf(w->inputProgramsPage());
     QVERIFY(programsDock && programsDock->toggleViewAction()->isVisible());
 }
 
@@ -91,11 +83,11 @@ void TestEmisMainWindow::uStick_jogsInChunks_releaseSendsNoMore()
     m_f->window->show(); // jog needs the active window (losing it ends every jog)
     QVERIFY(QTest::qWaitForWindowActive(m_f->window.get()));
     ui::JoystickPad* u = m_f->window->jogPanel()->uStick();
-    mouse(u, QEvent::MouseButtonPress, u->centre());
-    mouse(u, QEvent::MouseMove, u->pointFor(QPointF(0.0, 1.0)));
+    pointerPress(u, u->centre());
+    pointerMove(u, u->pointFor(QPointF(0.0, 1.0)));
     QTRY_VERIFY_WITH_TIMEOUT(vectorMoves(m_f->boardCommands()).size() >= 2, 5000);
 
-    mouse(u, QEvent::MouseButtonRelease, u->centre());
+    pointerRelease(u, u->centre());
     QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->context()->status().anyMoving(), 5000);
     bool still = false;
     QTRY_VERIFY_WITH_TIMEOUT(
@@ -202,8 +194,7 @@ void TestEmisMainWindow::storedBar_hiddenForElab()
     auto* bar = m_f->window->setupPage()->findChild<ui::StoredParametersBar*>();
     QVERIFY(bar && !bar->isVisibleTo(m_f->window->setupPage()));
     QVERIFY(!m_f->window->statusPanel()->digitalIo());
-    auto* programsDock =
-        qobject_cast<QDockWidget*>(m_f->window->inputProgramsPage()->parentWidget());
+    auto* programsDock = m_f->window->dockOf(m_f->window->inputProgramsPage());
     QVERIFY(!programsDock->toggleViewAction()->isVisible());
 }
 

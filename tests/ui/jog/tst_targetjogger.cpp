@@ -3,8 +3,8 @@
 // simulated axes: what they received and that they stand still afterwards.
 #include "../UiTestSupport.h"
 #include "jog/IncrementalJogWidget.h"
-#include "jog/JogInputSource.h"
 #include "jog/JogController.h"
+#include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
 #include "protocols/laser/LaserAxisSimulator.h"

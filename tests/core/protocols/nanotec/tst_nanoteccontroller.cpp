@@ -15,6 +15,7 @@ private Q_SLOTS:
     void cleanup();
     void connect_readsFirmwareAndSwitchesAutoStatusOff();
     void scan_findsDrives123();
+    void scan_repliesLaterThanTheTimeout_stillFound();
     void poll_sweepsEveryDrive_reportsRate_fitsLine();
     void write_verified_reachesEveryDrive();
     void write_ignoredInvalidValue_isCaughtByReadBack();
@@ -95,6 +96,21 @@ void TestNanotecController::scan_findsDrives123()
         QCOMPARE(d["interface"].toString(), QStringLiteral("RS485"));
         QCOMPARE(d["date"].toString(), QStringLiteral("04-12-2008"));
     }
+}
+
+void TestNanotecController::scan_repliesLaterThanTheTimeout_stillFound()
+{
+    // Every reply comes 15 ms after the probe's timeout: each 'v' reply arrives while the
+    // next address is probed. A loaded host or a slow adapter must not hide drives.
+    m_sim->faults().delayMs = 35;
+    const CommandResult r = run([this](RequestId id) {
+        m_ctl->modelOperation(id, "scan", {{"first", 1}, {"last", 12}, {"timeoutMs", 20}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const QVariantList found = r.value.toList();
+    QCOMPARE(found.size(), 3);
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(found[i].toMap()["address"].toInt(), i + 1); // in address order, once each
 }
 
 void TestNanotecController::poll_sweepsEveryDrive_reportsRate_fitsLine()
