@@ -3583,10 +3583,6 @@
             <translation>Werkstückposition von %1 in %2; leer: %1 bleibt stehen</translation>
         </message>
         <message>
-            <source>Reference the machine to go to a position.</source>
-            <translation>Referenzieren Sie die Maschine, um eine Position anzufahren.</translation>
-        </message>
-        <message>
             <source>%1: '%2' is not a number</source>
             <translation>%1: „%2“ ist keine Zahl</translation>
         </message>
@@ -3609,6 +3605,18 @@
         <message>
             <source>Move accepted by the controller.</source>
             <translation>Fahrt von der Steuerung angenommen.</translation>
+        </message>
+        <message>
+            <source>Not connected.</source>
+            <translation>Nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>Reference the machine to go to a position (axis %1 is not referenced).</source>
+            <translation>Zum Anfahren einer Position die Maschine referenzieren (Achse %1 ist nicht referenziert).</translation>
+        </message>
+        <message>
+            <source>The machine is moving: go to a position once it stands still.</source>
+            <translation>Die Maschine bewegt sich: eine Position erst anfahren, wenn sie stillsteht.</translation>
         </message>
     </context>
     <context>
@@ -4402,7 +4410,7 @@ W1500</translation>
         </message>
         <message>
             <source>no soft limits</source>
-            <translation>keine Software-Endschalter</translation>
+            <translation>keine Grenzen</translation>
         </message>
         <message>
             <source>No travel range set for %1 (Soft limits…)</source>
@@ -4417,12 +4425,28 @@ W1500</translation>
             <translation>Grenzen %1..%2</translation>
         </message>
         <message>
-            <source>limits %1..%2 (after referencing)</source>
-            <translation>Grenzen %1..%2 (nach dem Referenzieren)</translation>
+            <source>%1 work</source>
+            <translation>%1 Werkstück</translation>
         </message>
         <message>
-            <source>Soft limits of %1 in machine steps</source>
-            <translation>Software-Endschalter von %1 in Maschinenschritten</translation>
+            <source>Work position: the machine position minus the work zero of %1 (machine %2 steps)</source>
+            <translation>Werkstückposition: Maschinenposition minus Werkstück-Nullpunkt von %1 (Maschine %2 Schritte)</translation>
+        </message>
+        <message>
+            <source>Machine position (no work zero set for %1)</source>
+            <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
+        </message>
+        <message>
+            <source>limits %1..%2 not applied: not referenced</source>
+            <translation>%1..%2 unwirksam (nicht referenziert)</translation>
+        </message>
+        <message>
+            <source>Soft limits of %1 in machine steps: jog stops and moves are refused there</source>
+            <translation>Software-Endschalter von %1 in Maschinenschritten: dort stoppt der Tippbetrieb, Fahrten darüber hinaus werden abgelehnt</translation>
+        </message>
+        <message>
+            <source>Soft limits of %1 in machine steps apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
+            <translation>Software-Endschalter von %1 in Maschinenschritten gelten nur, solange die Achse referenziert ist: eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
         </message>
     </context>
     <context>

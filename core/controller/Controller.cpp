@@ -143,6 +143,11 @@ QString Controller::jogAxisRefusal(Axis, double) const
     return {};
 }
 
+double Controller::jogStopDistance(Axis axis, double speed) const
+{
+    return SoftLimits::rampStopDistance(m_jogRamp.acceleration())(axis, speed);
+}
+
 void Controller::setJogVelocity(const AxisVelocities& targets)
 {
     bool anyNonZero = false;
@@ -255,9 +260,9 @@ void Controller::keepJogInsideSoftLimits(double lookaheadS)
     for (Axis a : capabilities().axes)
         targets.insert(a, m_jogRamp.target(a));
     QString why;
-    const AxisVelocities limited =
-        m_softLimits.limitJog(m_status, targets, m_jogRamp.currentVelocities(),
-                              m_jogRamp.acceleration(), lookaheadS, &why);
+    const AxisVelocities limited = m_softLimits.limitJog(
+        m_status, targets, m_jogRamp.currentVelocities(), m_jogRamp.acceleration(), lookaheadS,
+        [this](Axis axis, double speed) { return jogStopDistance(axis, speed); }, &why);
     for (auto it = limited.cbegin(); it != limited.cend(); ++it) {
         if (it.value() != targets.value(it.key()))
             m_jogRamp.setTarget(it.key(), it.value()); // brakes now, stops inside the limit
@@ -265,14 +270,6 @@ void Controller::keepJogInsideSoftLimits(double lookaheadS)
     if (!why.isEmpty() && why != m_softLimitNote)
         Q_EMIT jogRefused(why);
     m_softLimitNote = why;
-}
-
-bool Controller::refuse(RequestId id, const QString& refusal)
-{
-    if (refusal.isEmpty())
-        return false;
-    finishError(id, ErrorKind::Refused, refusal);
-    return true;
 }
 
 void Controller::haltJogImmediately()

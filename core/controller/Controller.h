@@ -101,10 +101,19 @@ public:
     void setJogAcceleration(double stepsPerS2);
     const JogRamp& jogRamp() const { return m_jogRamp; }
 
-    // --- soft limits (issue 11): the jog ramp keeps inside them on every tick; moves are
-    // checked by ControllerSession before they reach the adapter ---
+    // --- soft limits (issue 11, ControllerLimits.cpp): the jog ramp keeps inside them on
+    // every tick; ControllerSession sends every move through the guarded calls, which refuse
+    // (ErrorKind::Refused, nothing sent) a target beyond an active limit ---
     void setSoftLimits(const SoftLimits& limits) { m_softLimits = limits; }
     const SoftLimits& softLimits() const { return m_softLimits; }
+    void guardedMoveRelative(RequestId id, const AxisVector& steps);
+    void guardedMoveAbsolute(RequestId id, const AxisVector& targets);
+    void guardedFeed(RequestId id, const AxisVector& steps);
+    void guardedFeedStream(RequestId id, const QVector<AxisVector>& steps);
+    void guardedVelocityMove(RequestId id, const AxisVector& stepsPerS); // no end: refused
+    // One short jog move (Capabilities::jogByTargets): shortened to end at the limit;
+    // refused with the reason once every axis named stands at its limit.
+    void jogStep(RequestId id, const AxisVector& steps);
     // refusal non-empty: finishes id as Refused with it and returns true.
     bool refuse(RequestId id, const QString& refusal);
 
@@ -156,6 +165,10 @@ protected:
     // Non-empty: why this axis may not jog at this non-zero target (into an active limit
     // switch, below the drive's start frequency, ...). The axis then gets target 0.
     virtual QString jogAxisRefusal(Axis axis, double target) const;
+    // Soft limits: how far (steps) an axis jogging at `speed` still travels after its jog
+    // target drops to zero. Default: the host JogRamp's braking distance (E-LAB: the host
+    // ramps, the board follows each rate). A model whose drive ramps by itself overrides it.
+    virtual double jogStopDistance(Axis axis, double speed) const;
 
     void setLinkState(LinkState state, const QString& reason = {});
     MachineStatus& mutableStatus() { return m_status; }

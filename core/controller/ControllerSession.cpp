@@ -208,37 +208,30 @@ RequestId ControllerSession::writeParameters(const ParameterSet& values, bool ve
 }
 
 // Moves are checked against the soft limits in the controller thread, with the controller's
-// own status, before the adapter sees them.
+// own status, before the adapter sees them (Controller::guarded*).
 RequestId ControllerSession::moveRelative(const AxisVector& steps)
 {
-    return submit([=](Controller* c, RequestId id) {
-        if (!c->refuse(id, c->softLimits().checkRelative(c->status(), steps)))
-            c->moveRelative(id, steps);
-    });
+    return submit([=](Controller* c, RequestId id) { c->guardedMoveRelative(id, steps); });
 }
 
 RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
 {
-    return submit([=](Controller* c, RequestId id) {
-        if (!c->refuse(id, c->softLimits().checkTargets(c->status(), targets)))
-            c->moveAbsolute(id, targets);
-    });
+    return submit([=](Controller* c, RequestId id) { c->guardedMoveAbsolute(id, targets); });
+}
+
+RequestId ControllerSession::jogStep(const AxisVector& steps)
+{
+    return submit([=](Controller* c, RequestId id) { c->jogStep(id, steps); });
 }
 
 RequestId ControllerSession::feed(const AxisVector& steps)
 {
-    return submit([=](Controller* c, RequestId id) {
-        if (!c->refuse(id, c->softLimits().checkRelative(c->status(), steps)))
-            c->feed(id, steps);
-    });
+    return submit([=](Controller* c, RequestId id) { c->guardedFeed(id, steps); });
 }
 
 RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
 {
-    return submit([=](Controller* c, RequestId id) {
-        if (!c->refuse(id, c->softLimits().checkStream(c->status(), steps)))
-            c->feedStream(id, steps);
-    });
+    return submit([=](Controller* c, RequestId id) { c->guardedFeedStream(id, steps); });
 }
 
 RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
@@ -248,10 +241,7 @@ RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
 
 RequestId ControllerSession::velocityMove(const AxisVector& stepsPerS)
 {
-    return submit([=](Controller* c, RequestId id) {
-        if (!c->refuse(id, c->softLimits().checkVelocity(c->status(), stepsPerS)))
-            c->velocityMove(id, stepsPerS);
-    });
+    return submit([=](Controller* c, RequestId id) { c->guardedVelocityMove(id, stepsPerS); });
 }
 
 RequestId ControllerSession::stop()

@@ -51,6 +51,10 @@ public:
     RequestId writeParameters(const ParameterSet& values, bool verify);
     RequestId moveRelative(const AxisVector& steps);
     RequestId moveAbsolute(const AxisVector& targets);
+    // One short jog move of a model that jogs by targets (Capabilities::jogByTargets): a
+    // relative move shortened so that it ends at the soft limit at the latest; refused with
+    // the reason once every axis stands at its limit.
+    RequestId jogStep(const AxisVector& steps);
     RequestId feed(const AxisVector& steps);
     RequestId feedStream(const QVector<AxisVector>& steps);
     RequestId reference(const QMap<Axis, int>& directions);

@@ -46,8 +46,7 @@ QString SoftLimits::checkRelative(const MachineStatus& status, const AxisVector&
     return checkTargets(status, targets);
 }
 
-QString SoftLimits::checkStream(const MachineStatus& status,
-                                const QVector<AxisVector>& steps) const
+QString SoftLimits::checkStream(const MachineStatus& status, const QVector<AxisVector>& steps) const
 {
     AxisVector position;
     for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it)
@@ -77,9 +76,22 @@ QString SoftLimits::checkVelocity(const MachineStatus& status, const AxisVector&
     return {};
 }
 
+SoftLimits::StopDistance SoftLimits::rampStopDistance(double deceleration)
+{
+    return [deceleration](Axis, double speed) {
+        return deceleration > 0 ? speed * speed / (2 * deceleration) : 0.0;
+    };
+}
+
+QString SoftLimits::jogStoppedText(Axis axis, qint64 limit)
+{
+    return tr("jog stopped: axis %1 at its soft limit %2").arg(axisName(axis)).arg(limit);
+}
+
 AxisVelocities SoftLimits::limitJog(const MachineStatus& status, const AxisVelocities& targets,
-                                    const AxisVelocities& current, double deceleration,
-                                    double lookaheadS, QString* why) const
+                                    const AxisVelocities& current, double acceleration,
+                                    double lookaheadS, const StopDistance& stopDistance,
+                                    QString* why) const
 {
     AxisVelocities out = targets;
     if (why)
@@ -93,22 +105,51 @@ AxisVelocities SoftLimits::limitJog(const MachineStatus& status, const AxisVeloc
         const double p = double(status.axes.value(axis).position);
         const double v = current.value(axis, 0.0);
         // Where the axis comes to rest if it is held back at the next look: it may still
-        // speed up until then (same direction only), then brakes at `deceleration`.
+        // speed up until then (same direction only), then stops within stopDistance.
         const double lookahead = qMax(0.0, lookaheadS);
         double speed = (v > 0) == (target > 0) ? std::fabs(v) : 0.0;
-        speed = qMax(speed, qMin(std::fabs(target), speed + deceleration * lookahead));
-        const double braking = deceleration > 0 ? speed * speed / (2 * deceleration) : 0.0;
-        const double reach = braking + speed * lookahead + 1.0;
+        speed = qMax(speed, qMin(std::fabs(target), speed + acceleration * lookahead));
+        const double stopping = stopDistance ? stopDistance(axis, speed) : 0.0;
+        const double reach = stopping + speed * lookahead + 1.0;
         const bool towardsMax = target > 0;
-        const bool blocked = towardsMax ? p + reach >= double(l.maximum)
-                                        : p - reach <= double(l.minimum);
+        const bool blocked =
+            towardsMax ? p + reach >= double(l.maximum) : p - reach <= double(l.minimum);
         if (!blocked)
             continue;
         out.insert(axis, 0.0);
         if (why && why->isEmpty())
-            *why = tr("jog stopped: axis %1 at its soft limit %2")
-                       .arg(axisName(axis))
-                       .arg(towardsMax ? l.maximum : l.minimum);
+            *why = jogStoppedText(axis, towardsMax ? l.maximum : l.minimum);
+    }
+    return out;
+}
+
+qint64 SoftLimits::room(Axis axis, int direction, const MachineStatus& status) const
+{
+    if (!isActive(axis, status))
+        return -1;
+    const AxisSoftLimit l = m_limits.value(axis);
+    const qint64 p = status.axes.value(axis).position;
+    return qMax<qint64>(0, direction > 0 ? l.maximum - p : p - l.minimum);
+}
+
+AxisVector SoftLimits::clipRelative(const MachineStatus& status, const AxisVector& steps,
+                                    QString* why) const
+{
+    AxisVector out;
+    if (why)
+        why->clear();
+    for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
+        const qint64 s = it.value();
+        const qint64 left = s == 0 ? -1 : room(it.key(), s > 0 ? 1 : -1, status);
+        if (left < 0 || qAbs(s) <= left) {
+            out.insert(it.key(), s);
+            continue;
+        }
+        out.insert(it.key(), s > 0 ? left : -left);
+        if (left == 0 && why && why->isEmpty()) {
+            const AxisSoftLimit l = m_limits.value(it.key());
+            *why = jogStoppedText(it.key(), s > 0 ? l.maximum : l.minimum);
+        }
     }
     return out;
 }

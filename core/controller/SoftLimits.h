@@ -1,6 +1,7 @@
 #pragma once
 #include "model/MachineStatus.h"
 #include <QCoreApplication>
+#include <functional>
 
 namespace stepdeck {
 
@@ -12,7 +13,7 @@ namespace stepdeck {
 // position says nothing about where the machine is). Pure.
 struct AxisSoftLimit
 {
-    bool enabled = true;  // on by default: it applies as soon as a range is set
+    bool enabled = true;   // on by default: it applies as soon as a range is set
     bool rangeSet = false; // no range configured: nothing to enforce
     qint64 minimum = 0;
     qint64 maximum = 0;
@@ -43,13 +44,29 @@ public:
     // A velocity move has no end: refused on an axis whose limits are enforced.
     QString checkVelocity(const MachineStatus& status, const AxisVector& stepsPerS) const;
 
-    // Jog: the target rates limited so that each axis, decelerating at `deceleration`, stops
-    // before its limit: a rate towards a limit drops to zero once the braking distance at the
-    // current rate (plus `lookaheadS` of travel) reaches it; at or beyond a limit only motion
-    // back inside is allowed. *why names the first axis held back (empty if none).
+    // How far an axis still travels (steps) after the host sets its jog target to zero at
+    // this speed (steps/s): the model's braking distance plus what the latency adds.
+    using StopDistance = std::function<double(Axis axis, double speed)>;
+    // The braking distance of a ramp decelerating at `deceleration` steps/s^2.
+    static StopDistance rampStopDistance(double deceleration);
+
+    // Jog: the target rates limited so that each axis stops before its limit: a rate towards a
+    // limit drops to zero once the stop distance at the speed the axis may reach by the next
+    // look (`lookaheadS` from now, speeding up at `acceleration`) plus the travel until then
+    // reaches it; at or beyond a limit only motion back inside is allowed. *why names the
+    // first axis held back (empty if none).
     AxisVelocities limitJog(const MachineStatus& status, const AxisVelocities& targets,
-                            const AxisVelocities& current, double deceleration,
-                            double lookaheadS, QString* why) const;
+                            const AxisVelocities& current, double acceleration, double lookaheadS,
+                            const StopDistance& stopDistance, QString* why) const;
+
+    // A relative move shortened per axis so that it ends at the soft limit at the latest (a
+    // jog chunk or jog target must not cross it). An axis at or beyond its limit in the
+    // direction of its move gets 0 and *why says so (models that jog by short moves).
+    AxisVector clipRelative(const MachineStatus& status, const AxisVector& steps,
+                            QString* why) const;
+    // Steps axis may still travel in direction (+1/-1) before its limit; -1: no limit applies.
+    qint64 room(Axis axis, int direction, const MachineStatus& status) const;
+    static QString jogStoppedText(Axis axis, qint64 limit);
 
 private:
     QString beyond(Axis axis, qint64 target) const;

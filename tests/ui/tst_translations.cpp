@@ -8,6 +8,8 @@
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/nanotec/NanotecCodec.h"
+#include "setup/ParameterField.h"
+#include <QComboBox>
 #include <QPushButton>
 #include <QXmlStreamReader>
 
@@ -26,6 +28,7 @@ private Q_SLOTS:
     void german_installed_translatesUiSchemaAndCore();
     void german_coreMessagesAtRunTime();
     void german_mainWindow_showsGermanLabels();
+    void german_polarity_labelsGermanValuesKept();
 };
 
 void TestTranslations::germanCatalogue_everyMessageTranslated()
@@ -147,6 +150,26 @@ void TestTranslations::german_mainWindow_showsGermanLabels()
     UiFixture f;
     QCOMPARE(f.window->safetyBar()->stopButton()->text(), QStringLiteral("STOPP  (Esc)"));
     QCOMPARE(f.window->safetyBar()->panicButton()->text(), QStringLiteral("PANIK  (F1)"));
+}
+
+void TestTranslations::german_polarity_labelsGermanValuesKept()
+{
+    // Issue 11: the polarity choices read German; the value (and the file format) keeps
+    // low/high.
+    ui::translations::install(qApp, QStringLiteral("de"));
+    const ParameterSchema schema = findModel(QStringLiteral("elab"))->schema;
+    const ParameterSpec* spec = schema.find(QStringLiteral("limit-polarity"));
+    QVERIFY(spec);
+    ui::ParameterField field(schema, *spec, Axis::X);
+    auto* combo = qobject_cast<QComboBox*>(field.editor());
+    QVERIFY(combo);
+    QStringList labels;
+    for (int i = 0; i < combo->count(); ++i)
+        labels << combo->itemText(i);
+    QCOMPARE(labels, (QStringList{QStringLiteral("High-aktiv"), QStringLiteral("Low-aktiv")}));
+    field.setValue(QStringLiteral("low"), true);
+    QCOMPARE(combo->currentText(), QStringLiteral("Low-aktiv"));
+    QCOMPARE(field.value().toString(), QStringLiteral("low"));
 }
 
 QTEST_MAIN(TestTranslations)

@@ -47,7 +47,7 @@ void TargetJogger::sendNext()
         steps.insert(it.key(), chunkSteps(it.value()));
     if (steps.isEmpty())
         return;
-    m_inFlight = m_session->moveRelative(steps);
+    m_inFlight = m_session->jogStep(steps); // never beyond a soft limit
 }
 
 void TargetJogger::onResult(const CommandResult& result)

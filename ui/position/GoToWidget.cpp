@@ -64,19 +64,41 @@ void GoToWidget::rebuild()
     refresh();
 }
 
+QString GoToWidget::refusal() const
+{
+    // For a referenced machine at rest only: an absolute target means nothing otherwise, and
+    // a new target while an axis moves would replace a move the operator did not end.
+    if (!m_context->isConnected())
+        return tr("Not connected.");
+    const MachineStatus& status = m_context->status();
+    for (Axis axis : m_context->axes()) {
+        if (!status.axes.value(axis).referenced)
+            return tr("Reference the machine to go to a position (axis %1 is not referenced).")
+                .arg(axisName(axis));
+    }
+    bool moving = status.busy || status.motionUnconfirmed;
+    for (const AxisStatus& a : status.axes)
+        moving = moving || a.moving || a.jogging || a.motionUnknown;
+    if (moving)
+        return tr("The machine is moving: go to a position once it stands still.");
+    return {};
+}
+
 void GoToWidget::refresh()
 {
-    // For a referenced machine only: an absolute target means nothing otherwise.
-    bool referenced = m_context->isConnected() && !m_context->axes().isEmpty();
-    for (Axis axis : m_context->axes())
-        referenced = referenced && m_context->status().axes.value(axis).referenced;
-    m_go->setEnabled(referenced && !m_pending);
-    m_zero->setEnabled(referenced && !m_pending);
-    if (!referenced && m_context->isConnected() && m_message->text().isEmpty())
-        m_message->setText(tr("Reference the machine to go to a position."));
-    else if (referenced && m_message->property("referenceHint").toBool())
+    const QString why = m_context->isConnected() ? refusal() : QString();
+    const bool ready = why.isEmpty() && m_context->isConnected() && !m_context->axes().isEmpty();
+    m_go->setEnabled(ready && !m_pending);
+    m_zero->setEnabled(ready && !m_pending);
+    // The reason stays on screen while it holds; a result of the last move is kept.
+    if (!why.isEmpty() && !m_pending && (m_message->text().isEmpty() || m_showingReason)) {
+        m_message->setStyleSheet(QString());
+        m_message->setText(why);
+        m_showingReason = true;
+    } else if (why.isEmpty() && m_showingReason) {
         m_message->clear();
-    m_message->setProperty("referenceHint", !referenced);
+        m_showingReason = false;
+    }
 }
 
 void GoToWidget::goToTargets()
@@ -91,6 +113,7 @@ void GoToWidget::goToTargets()
         const double value = QLocale().toDouble(text, &ok);
         if (!ok) {
             m_message->setText(tr("%1: '%2' is not a number").arg(axisName(it.key()), text));
+            m_showingReason = false;
             return;
         }
         targets.insert(it.key(), m_context->toMachineSteps(it.key(), value));
@@ -98,6 +121,7 @@ void GoToWidget::goToTargets()
     }
     if (targets.isEmpty()) {
         m_message->setText(tr("Enter a position for at least one axis."));
+        m_showingReason = false;
         return;
     }
     send(targets, shown.join(QStringLiteral(", ")));
@@ -113,6 +137,12 @@ void GoToWidget::goToWorkZero()
 
 void GoToWidget::send(const AxisVector& machineTargets, const QString& what)
 {
+    if (const QString why = refusal(); !why.isEmpty()) {
+        m_message->setText(why);
+        m_showingReason = true;
+        return;
+    }
+    m_showingReason = false;
     m_pending = m_context->session()->moveAbsolute(machineTargets);
     m_message->setStyleSheet(QString());
     m_message->setText(tr("Moving to %1\u2026").arg(what));
@@ -124,6 +154,7 @@ void GoToWidget::onResult(const CommandResult& result)
     if (result.id != m_pending || !m_pending)
         return;
     m_pending = 0;
+    m_showingReason = false;
     if (!result.ok()) {
         m_message->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
         m_message->setText(tr("Not moved: %1").arg(result.message));

@@ -24,6 +24,8 @@ public:
     QPushButton* goButton() const { return m_go; }
     QPushButton* workZeroButton() const { return m_zero; }
     QString messageText() const;
+    // Non-empty: why no target can be sent now (not connected, not referenced, moving).
+    QString refusal() const;
 
 public Q_SLOTS:
     void goToTargets();
@@ -42,6 +44,7 @@ private:
     QPushButton* m_zero;
     QLabel* m_message;
     RequestId m_pending = 0;
+    bool m_showingReason = false; // m_message holds refusal(), replaced when it changes
 };
 
 } // namespace stepdeck::ui

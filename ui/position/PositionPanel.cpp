@@ -36,11 +36,15 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     limits->setToolTip(tr("Travel range per axis that jog and moves must not leave"));
     for (QToolButton* b : {units, clear, limits})
         b->setFocusPolicy(Qt::NoFocus);
+    // Two lines: in German one line of three would widen the dock past a 1366x768 screen.
     buttons->addWidget(units);
-    buttons->addWidget(clear);
     buttons->addWidget(limits);
     buttons->addStretch(1);
     layout->addLayout(buttons);
+    auto* offsets = new QHBoxLayout;
+    offsets->addWidget(clear);
+    offsets->addStretch(1);
+    layout->addLayout(offsets);
     layout->addWidget(m_goTo);
     layout->addStretch(1);
     connect(limits, &QToolButton::clicked, this, &PositionPanel::editSoftLimits);
@@ -64,6 +68,12 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
 void PositionPanel::rebuild()
 {
     while (QLayoutItem* item = m_grid->takeAt(0)) {
+        if (QLayout* inner = item->layout()) { // a row's detail line
+            while (QLayoutItem* sub = inner->takeAt(0)) {
+                delete sub->widget();
+                delete sub;
+            }
+        }
         delete item->widget();
         delete item;
     }
@@ -106,8 +116,14 @@ void PositionPanel::rebuild()
         m_grid->addWidget(row.value, 2 * r, 1);
         m_grid->addWidget(row.unit, 2 * r, 2);
         m_grid->addWidget(row.state, 2 * r, 3);
-        m_grid->addWidget(row.steps, 2 * r + 1, 1);
-        m_grid->addWidget(row.limits, 2 * r + 1, 2);
+        // The soft limits share the line of the machine position (left of it): a column of
+        // their own would push the state off a 1366x768 screen.
+        auto* detail = new QHBoxLayout;
+        detail->setContentsMargins(0, 0, 0, 0);
+        detail->addWidget(row.limits);
+        detail->addStretch(1);
+        detail->addWidget(row.steps);
+        m_grid->addLayout(detail, 2 * r + 1, 1, 1, 2);
         m_grid->addWidget(zero, 2 * r + 1, 3);
         m_rows.insert(axis, row);
         ++r;
@@ -171,7 +187,18 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         const double value = m_context->toUserUnits(axis, steps);
         return u.stepsPerUnit > 0 ? QString::number(value, 'f', 3) : QString::number(qint64(value));
     };
-    row.unit->setText(m_context->unitName(axis));
+    // The large digits are work coordinates once a work zero is set: say so next to them;
+    // the line below always gives the machine position.
+    if (u.workOffset != 0) {
+        row.unit->setText(tr("%1 work").arg(m_context->unitName(axis)));
+        row.unit->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
+                                "(machine %2 steps)")
+                                 .arg(axisName(axis))
+                                 .arg(u.workOffset));
+    } else {
+        row.unit->setText(m_context->unitName(axis));
+        row.unit->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
+    }
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
@@ -180,12 +207,19 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     } else {
         const bool active =
             m_context->isConnected() && m_context->softLimits().isActive(axis, m_context->status());
-        row.limits->setText(
-            !limit.enabled ? tr("limits off")
-            : active
-                ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
-                : tr("limits %1..%2 (after referencing)").arg(limit.minimum).arg(limit.maximum));
-        row.limits->setToolTip(tr("Soft limits of %1 in machine steps").arg(axisName(axis)));
+        row.limits->setText(!limit.enabled ? tr("limits off")
+                            : active ? tr("limits %1..%2").arg(limit.minimum).arg(limit.maximum)
+                                     : tr("limits %1..%2 not applied: not referenced")
+                                           .arg(limit.minimum)
+                                           .arg(limit.maximum));
+        row.limits->setToolTip(
+            active ? tr("Soft limits of %1 in machine steps: jog stops and moves are refused "
+                        "there")
+                         .arg(axisName(axis))
+                   : tr("Soft limits of %1 in machine steps apply only while the axis is "
+                        "referenced: an unreferenced position says nothing about where the "
+                        "machine is")
+                         .arg(axisName(axis)));
     }
     MoveTrack& move = m_moves[axis];
 

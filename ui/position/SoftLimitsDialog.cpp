@@ -84,8 +84,8 @@ void SoftLimitsDialog::accept()
 {
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
         if (it->minimum->value() > it->maximum->value()) {
-            m_problem->setText(tr("Axis %1: the minimum lies above the maximum.")
-                                   .arg(axisName(it.key())));
+            m_problem->setText(
+                tr("Axis %1: the minimum lies above the maximum.").arg(axisName(it.key())));
             return;
         }
     }

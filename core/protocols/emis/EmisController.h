@@ -154,6 +154,8 @@ private:
     // --- jog (EmisCtlJog.cpp) ---
     void pumpJog();
     void sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk);
+    // A jog chunk ends at the soft limit; 0 and *why at the limit.
+    qint64 clipToSoftLimit(Axis axis, qint64 steps, QString* why) const;
     void finishJogIfIdle();
     void haltJog(const QString& reason);
 
@@ -190,6 +192,7 @@ private:
     bool m_programming = false;
     // jog
     AxisVelocities m_jogRates;     // the newest rates from the ramp
+    QString m_softLimitSaid;       // the last jog refusal for a soft limit (said once)
     bool m_jogSending = false;     // a chunk (with its speed writes) is on its way
     QMap<Axis, qint64> m_jogSpeed; // work speed the board has for jogging, per axis
     QSet<Axis> m_jogSpeedChanged;  // axes whose work speed must be set back after the jog

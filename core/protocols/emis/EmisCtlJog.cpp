@@ -40,6 +40,7 @@ void EmisController::pumpJog()
     // board would answer <BEL>): it gets its next chunk when its <DCn> arrives.
     QList<VectorTarget> chunk;
     QList<QByteArray> speedWrites;
+    QMap<Axis, QString> atLimit;
     for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
         const Axis axis = it.key();
         const double rate = it.value();
@@ -49,6 +50,15 @@ void EmisController::pumpJog()
         // At most kJogChunkSeconds of travel at the commanded rate; a chunk of one step at a
         // very low rate runs fast enough to end within that time too.
         const qint64 steps = qMax<qint64>(1, qint64(std::floor(qAbs(rate) * kJogChunkSeconds)));
+        // Soft limits: a chunk ends at the limit at the latest (no ramp to wait for: the
+        // board ramps each chunk down by itself before its target). From the bookkeeping of
+        // arrived moves, which is exact here: the next chunk only goes after an arrival.
+        QString why;
+        const qint64 clipped = clipToSoftLimit(axis, rate > 0 ? steps : -steps, &why);
+        if (clipped == 0) {
+            atLimit.insert(axis, why);
+            continue;
+        }
         const qint64 speed =
             qBound(limits::kSpeedMin,
                    qMax(qRound64(qAbs(rate)), qint64(std::ceil(double(steps) / kJogChunkSeconds))),
@@ -59,14 +69,31 @@ void EmisController::pumpJog()
             m_jogSpeed.insert(axis, speed);
             m_jogSpeedChanged.insert(axis);
         }
-        chunk << VectorTarget{axis, rate > 0 ? steps : -steps, false};
+        chunk << VectorTarget{axis, clipped, false};
     }
+    for (auto it = atLimit.cbegin(); it != atLimit.cend(); ++it) {
+        m_jogRates.insert(it.key(), 0.0);
+        haltJogAxis(it.key()); // the operator pushes again to move back inside
+        if (it.value() != m_softLimitSaid)
+            Q_EMIT jogRefused(it.value());
+    }
+    m_softLimitSaid = atLimit.isEmpty() ? QString() : atLimit.first();
     if (chunk.isEmpty()) {
         finishJogIfIdle();
         return;
     }
     m_jogSending = true;
     sendJogChunk(speedWrites, chunk);
+}
+
+qint64 EmisController::clipToSoftLimit(Axis axis, qint64 steps, QString* why) const
+{
+    MachineStatus bookkept = status();
+    const Track t = m_tracks.value(axis);
+    AxisStatus& a = bookkept.axes[axis];
+    a.position = t.position;
+    a.referenced = a.positionKnown = t.referenced && !t.lost;
+    return softLimits().clipRelative(bookkept, {{axis, steps}}, why).value(axis);
 }
 
 void EmisController::sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk)

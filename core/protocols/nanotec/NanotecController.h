@@ -66,6 +66,8 @@ protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override;
     QString jogRefusal() const override;
     QString jogAxisRefusal(Axis axis, double target) const override;
+    // The drive's own speed-mode ramp and the bus latency (NanotecMotion.cpp).
+    double jogStopDistance(Axis axis, double speed) const override;
     // Safety contract (NanotecStop.cpp): 'S' to every drive that may move, answering or not
     // (6.2: in speed mode the only way to end it), then '#*S' to all as the last resort.
     void sendSafetyStop(std::function<void(bool)> done) override;

@@ -280,6 +280,26 @@ QString NanotecController::jogAxisRefusal(Axis axis, double target) const
     return belowStartFrequency(axis, target);
 }
 
+double NanotecController::jogStopDistance(Axis axis, double speed) const
+{
+    // Soft limits. In speed mode the drive ramps by itself (6.6), so a jog target of zero
+    // ends in rampDownSteps(): the zero must persist for 2 jog ticks (+10 ms), 'o' = u goes out
+    // behind at most one poll exchange, the drive ramps from speed down to u at its ramp b
+    // (6.11), runs at u for the rest of the waited ramp time, then 'S' (the bus again).
+    // The position the host checks is the last 'C' plus its own estimate, at most one sweep
+    // old. Conservative on purpose: the axis stops short of the limit, never beyond it.
+    const Drive d = m_drives.value(axis);
+    const double u = double(d.minFrequency);
+    const double v = qMax(speed, u);
+    const double perS2 = (3000.0 / qSqrt(double(qMax<qint64>(1, d.ramp))) - 11.7) * 1000.0;
+    const double braking =
+        perS2 > 1.0 ? (v * v - u * u) / (2 * perS2) : v * kMaxRampWaitMs / 1000.0;
+    const double latencyS =
+        (2.0 * options().jogTickMs + 10 + qMax(m_userPollMs, sweepBudgetMs()) + 40) / 1000.0;
+    const double atStartFrequencyS = (rampTimeMs(d, v) + 40) / 1000.0;
+    return v * latencyS + 1.2 * braking + u * atStartFrequencyS;
+}
+
 void NanotecController::applyJogVelocity(const AxisVelocities& stepsPerS)
 {
     for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {

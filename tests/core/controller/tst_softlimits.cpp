@@ -38,6 +38,8 @@ private Q_SLOTS:
     void velocity_refusedOnLimitedAxis();
     void jog_brakesToStopInsideTheLimit();
     void jog_atTheLimit_mayOnlyMoveBack();
+    void jog_driveRampedStopDistance_brakesEarlier();
+    void clip_chunkEndsAtTheLimit();
 };
 
 void TestSoftLimits::move_data()
@@ -84,7 +86,7 @@ void TestSoftLimits::stream_checkedAtEveryStep()
     const SoftLimits l = xWithin(-10, 10);
     QVector<AxisVector> out(15, AxisVector{{Axis::X, 1}});
     QVector<AxisVector> back(15, AxisVector{{Axis::X, -1}});
-    QVERIFY(!l.checkStream(at(0), out).isEmpty());     // passes 10 on the way
+    QVERIFY(!l.checkStream(at(0), out).isEmpty());        // passes 10 on the way
     QVERIFY(!l.checkStream(at(0), out + back).isEmpty()); // even if it ends inside
     QVERIFY(l.checkStream(at(0), QVector<AxisVector>(10, {{Axis::X, 1}})).isEmpty());
 }
@@ -110,9 +112,9 @@ void TestSoftLimits::jog_brakesToStopInsideTheLimit()
         ramp.setTarget(Axis::X, 1000); // the operator keeps pushing
         s.axes[Axis::X].position = qint64(position);
         QString why;
-        const AxisVelocities limited =
-            l.limitJog(s, {{Axis::X, ramp.target(Axis::X)}}, ramp.currentVelocities(),
-                       ramp.acceleration(), dt, &why);
+        const AxisVelocities limited = l.limitJog(
+            s, {{Axis::X, ramp.target(Axis::X)}}, ramp.currentVelocities(), ramp.acceleration(), dt,
+            SoftLimits::rampStopDistance(ramp.acceleration()), &why);
         ramp.setTarget(Axis::X, limited.value(Axis::X));
         if (!why.isEmpty())
             said = why;
@@ -129,16 +131,50 @@ void TestSoftLimits::jog_brakesToStopInsideTheLimit()
 void TestSoftLimits::jog_atTheLimit_mayOnlyMoveBack()
 {
     const SoftLimits l = xWithin(-1000, 5000);
+    const SoftLimits::StopDistance brake = SoftLimits::rampStopDistance(2000);
     QString why;
-    QCOMPARE(l.limitJog(at(5000), {{Axis::X, 300}}, {}, 2000, 0.02, &why).value(Axis::X), 0.0);
+    QCOMPARE(l.limitJog(at(5000), {{Axis::X, 300}}, {}, 2000, 0.02, brake, &why).value(Axis::X),
+             0.0);
     QVERIFY(!why.isEmpty());
-    QCOMPARE(l.limitJog(at(5000), {{Axis::X, -300}}, {}, 2000, 0.02, &why).value(Axis::X),
+    QCOMPARE(l.limitJog(at(5000), {{Axis::X, -300}}, {}, 2000, 0.02, brake, &why).value(Axis::X),
              -300.0);
     QVERIFY(why.isEmpty());
-    QCOMPARE(l.limitJog(at(7000), {{Axis::X, -300}}, {}, 2000, 0.02, &why).value(Axis::X),
+    QCOMPARE(l.limitJog(at(7000), {{Axis::X, -300}}, {}, 2000, 0.02, brake, &why).value(Axis::X),
              -300.0); // beyond (limits changed): back inside is allowed
-    QCOMPARE(l.limitJog(at(0, false), {{Axis::X, 300}}, {}, 2000, 0.02, &why).value(Axis::X),
+    QCOMPARE(l.limitJog(at(0, false), {{Axis::X, 300}}, {}, 2000, 0.02, brake, &why).value(Axis::X),
              300.0); // not referenced: not enforced
+}
+
+void TestSoftLimits::jog_driveRampedStopDistance_brakesEarlier()
+{
+    // A drive that ramps by itself (Nanotec) needs its own, longer stop distance: at 4000
+    // the host ramp would go on, the drive's distance of 600 steps holds it back.
+    const SoftLimits l = xWithin(-100000, 5000);
+    QString why;
+    const AxisVelocities fast{{Axis::X, 1000}};
+    QCOMPARE(l.limitJog(at(4000), fast, fast, 2000, 0.02, SoftLimits::rampStopDistance(2000), &why)
+                 .value(Axis::X),
+             1000.0);
+    QVERIFY(why.isEmpty());
+    const SoftLimits::StopDistance drive = [](Axis, double) { return 1000.0; };
+    QCOMPARE(l.limitJog(at(4000), fast, fast, 2000, 0.02, drive, &why).value(Axis::X), 0.0);
+    QVERIFY(why.contains(QStringLiteral("soft limit 5000")));
+}
+
+void TestSoftLimits::clip_chunkEndsAtTheLimit()
+{
+    const SoftLimits l = xWithin(-10, 100);
+    QString why;
+    QCOMPARE(l.clipRelative(at(90), {{Axis::X, 40}, {Axis::Y, 40}}, &why),
+             (AxisVector{{Axis::X, 10}, {Axis::Y, 40}}));
+    QVERIFY(why.isEmpty()); // it still moves: the next chunk says it
+    QCOMPARE(l.clipRelative(at(100), {{Axis::X, 40}}, &why), (AxisVector{{Axis::X, 0}}));
+    QVERIFY(why.contains(QStringLiteral("soft limit 100")));
+    QCOMPARE(l.clipRelative(at(100), {{Axis::X, -40}}, &why), (AxisVector{{Axis::X, -40}}));
+    QCOMPARE(l.clipRelative(at(-5), {{Axis::X, -40}}, &why), (AxisVector{{Axis::X, -5}}));
+    QCOMPARE(l.clipRelative(at(100, false), {{Axis::X, 40}}, &why), (AxisVector{{Axis::X, 40}}));
+    QCOMPARE(l.room(Axis::X, +1, at(90)), qint64(10));
+    QCOMPARE(l.room(Axis::X, +1, at(90, false)), qint64(-1));
 }
 
 QTEST_MAIN(TestSoftLimits)

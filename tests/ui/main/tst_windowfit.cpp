@@ -53,11 +53,15 @@ void TestWindowFit::screen_fitsAndShowsSafetyWidgets_data()
 {
     QTest::addColumn<QSize>("screen");
     QTest::addColumn<QString>("language");
-    // English first: a German translator, once installed, stays for the process.
+    QTest::addColumn<QString>("model");
+    // English first: a German translator, once installed, stays for the process. Every model:
+    // EMIS adds the U axis, digital I/O and the input-program page, laser axes their jog note.
     for (const char* lang : {"en", "de"}) {
-        for (const QSize size : {QSize(1366, 768), QSize(1024, 768)})
-            QTest::addRow("%dx%d %s", size.width(), size.height(), lang)
-                << size << QString::fromLatin1(lang);
+        for (const char* model : {"elab", "emis", "laser-axis", "nanotec"}) {
+            for (const QSize size : {QSize(1366, 768), QSize(1024, 768)})
+                QTest::addRow("%s %dx%d %s", model, size.width(), size.height(), lang)
+                    << size << QString::fromLatin1(lang) << QString::fromLatin1(model);
+        }
     }
 }
 
@@ -65,13 +69,18 @@ void TestWindowFit::screen_fitsAndShowsSafetyWidgets()
 {
     QFETCH(QSize, screen);
     QFETCH(QString, language);
+    QFETCH(QString, model);
     QSettings().clear();
     ui::translations::install(qApp, language);
     m_f = std::make_unique<UiFixture>();
     ui::MainWindow* w = m_f->window.get();
     w->show();
-    QVERIFY(m_f->connectSim());
-    QTRY_VERIFY(m_f->statusCount > 3);
+    w->connectionBar()->setSelectedModel(model);
+    w->connectionBar()->setPortSpec(QStringLiteral("sim"));
+    w->connectionBar()->connectNow();
+    QVERIFY(m_f->waitConnected());
+    QCOMPARE(w->context()->modelId(), model);
+    QTRY_VERIFY(m_f->statusCount > 1);
 
     QString sizes;
     for (QDockWidget* dock : w->findChildren<QDockWidget*>()) {
