@@ -11,6 +11,7 @@
 #include "protocols/elab/ElabSimulator.h"
 #include "transport/LoopbackTransport.h"
 #include <QApplication>
+#include <QFileInfo>
 #include <QMutex>
 #include <QSettings>
 #include <QStandardPaths>
@@ -20,12 +21,16 @@
 
 namespace stepdeck::test {
 
-// Settings of a test run never touch the user's and start empty.
+// Settings of a test run never touch the user's and start empty. One settings file per test
+// executable: ctest runs UI tests in parallel, and a shared file let one test's connection
+// overwrite another's remembered ports.
 inline void isolateSettings()
 {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("StepDeckTest"));
-    QCoreApplication::setApplicationName(QStringLiteral("StepDeckUiTest"));
+    QCoreApplication::setApplicationName(
+        QStringLiteral("StepDeckUiTest-%1")
+            .arg(QFileInfo(QCoreApplication::applicationFilePath()).fileName()));
     QSettings().clear();
 }
 
