@@ -1,8 +1,8 @@
 // Charts: samples follow the status, the time window limits what is shown, pause freezes
 // it, and the visible data exports to CSV and the charts to PNG.
 #include "UiTestSupport.h"
-#include "setup/SetupPage.h"
 #include "charts/ChartsPanel.h"
+#include "setup/SetupPage.h"
 #include <QCheckBox>
 #include <QImage>
 #include <QTemporaryDir>
