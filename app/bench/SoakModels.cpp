@@ -13,6 +13,28 @@ namespace stepdeck::bench {
 namespace {
 constexpr qint64 kFar = 1'000'000'000; // switches out of reach of any soak run
 
+// The probes every model's simulator answers the same way (isMoving, acceptedMoves).
+template <typename Sim> std::function<QList<Axis>(Simulator*)> movingAxesOf(QList<Axis> axes)
+{
+    return [axes](Simulator* s) {
+        auto* sim = qobject_cast<Sim*>(s);
+        QList<Axis> out;
+        for (Axis a : axes) {
+            if (sim->isMoving(a))
+                out << a;
+        }
+        return out;
+    };
+}
+
+template <typename Sim> QList<DeviceMove> acceptedMovesOf(Simulator* s)
+{
+    QList<DeviceMove> out;
+    for (const auto& move : qobject_cast<Sim*>(s)->acceptedMoves())
+        out.append({move.axis, move.steps});
+    return out;
+}
+
 ParameterValue perAxis(qint64 value, const QList<Axis>& axes)
 {
     ParameterValue v;
@@ -35,21 +57,8 @@ SoakModel elabModel()
         for (Axis a : xyz)
             sim->setLimitPositions(a, -kFar, kFar);
     };
-    m.movingAxes = [xyz](Simulator* s) {
-        auto* sim = qobject_cast<elab::ElabSimulator*>(s);
-        QList<Axis> out;
-        for (Axis a : xyz) {
-            if (sim->isMoving(a))
-                out << a;
-        }
-        return out;
-    };
-    m.moves = [](Simulator* s) {
-        QList<DeviceMove> out;
-        for (const auto& move : qobject_cast<elab::ElabSimulator*>(s)->acceptedMoves())
-            out.append({move.axis, move.steps});
-        return out;
-    };
+    m.movingAxes = movingAxesOf<elab::ElabSimulator>(xyz);
+    m.moves = acceptedMovesOf<elab::ElabSimulator>;
     // ForceStopMove, as the host would send it; the ACK goes nowhere between sessions.
     m.halt = [](Simulator* s) { s->receive(elab::encode::stopMove()); };
     return m;
@@ -101,21 +110,8 @@ SoakModel emisModel()
         for (Axis a : xyzu)
             sim->setSwitchPosition(a, std::nullopt); // no reference switch within reach
     };
-    m.movingAxes = [xyzu](Simulator* s) {
-        auto* sim = qobject_cast<emis::EmisSimulator*>(s);
-        QList<Axis> out;
-        for (Axis a : xyzu) {
-            if (sim->isMoving(a))
-                out << a;
-        }
-        return out;
-    };
-    m.moves = [](Simulator* s) {
-        QList<DeviceMove> out;
-        for (const auto& move : qobject_cast<emis::EmisSimulator*>(s)->acceptedMoves())
-            out.append({move.axis, move.steps});
-        return out;
-    };
+    m.movingAxes = movingAxesOf<emis::EmisSimulator>(xyzu);
+    m.moves = acceptedMovesOf<emis::EmisSimulator>;
     // The SMC-IC4 has no stop command (chapter 9): the machine's emergency stop.
     m.halt = [](Simulator* s) { qobject_cast<emis::EmisSimulator*>(s)->emergencyStop(); };
     m.stopCommand = false;
@@ -146,21 +142,8 @@ SoakModel laserModel()
         sim->setSpeed(2000);
         s->faults().silent = silent;
     };
-    m.movingAxes = [xyz](Simulator* s) {
-        auto* sim = qobject_cast<laser::LaserAxisSimulator*>(s);
-        QList<Axis> out;
-        for (Axis a : xyz) {
-            if (sim->isMoving(a))
-                out << a;
-        }
-        return out;
-    };
-    m.moves = [](Simulator* s) {
-        QList<DeviceMove> out;
-        for (const auto& move : qobject_cast<laser::LaserAxisSimulator*>(s)->acceptedMoves())
-            out.append({move.axis, move.steps});
-        return out;
-    };
+    m.movingAxes = movingAxesOf<laser::LaserAxisSimulator>(xyz);
+    m.moves = acceptedMovesOf<laser::LaserAxisSimulator>;
     // The protocol has no stop command: the machine's emergency stop.
     m.halt = [](Simulator* s) { qobject_cast<laser::LaserAxisSimulator*>(s)->emergencyStop(); };
     m.stopCommand = false;
