@@ -3,6 +3,7 @@
 // each cell asserts what the DEVICE saw -- the model's stop frames at the simulator and the
 // simulated axes standing still -- or, where nothing can reach the device (the port vanished),
 // that the host says the motion is unconfirmed instead of claiming a stop.
+#include "ModelBench.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
@@ -42,43 +43,13 @@ bool isStopFrame(const QString& model, const QByteArray& frame)
 }
 
 // One model's adapter against its simulator over an in-memory link.
-struct Bench
+struct Bench : test::ModelBench
 {
-    explicit Bench(const ModelInfo* model) : info(model)
-    {
-        auto [h, d] = LoopbackTransport::createPair();
-        host.reset(h);
-        device.reset(d);
-        SimulatorOptions so;
-        so.line = info->line;
-        so.addresses = {1, 2, 3};
-        sim.reset(info->createSimulator(so));
-        device->open(info->line);
-        sim->attach(device.get());
-        ControllerOptions co;
-        co.pollIntervalMs = 20;
-        co.commandTimeoutMs = 150;
-        co.jogLeaseMs = 2000;
-        ctl.reset(info->createController(host.get(), co));
-        results = std::make_unique<QSignalSpy>(ctl.get(), &Controller::requestFinished);
-    }
-    ~Bench() { ctl.reset(); }
+    explicit Bench(const ModelInfo* model) : ModelBench(model, 150) {}
 
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000)
     {
-        const RequestId id = ++nextId;
-        call(id);
-        QDeadlineTimer deadline(timeoutMs);
-        for (;;) {
-            for (const QList<QVariant>& args : *results) {
-                const auto r = args.at(0).value<CommandResult>();
-                if (r.id == id)
-                    return r;
-            }
-            if (deadline.hasExpired())
-                return CommandResult::failure(id, ErrorKind::Timeout, "test: no result");
-            results->wait(20);
-        }
+        return ModelBench::run(call, timeoutMs);
     }
     // Schema defaults where the device needs a setup before it moves (E-LAB tmInvSetup).
     bool prepare()
@@ -134,13 +105,6 @@ struct Bench
         return false;
     }
 
-    const ModelInfo* info;
-    std::unique_ptr<LoopbackTransport> host;
-    std::unique_ptr<LoopbackTransport> device;
-    std::unique_ptr<Simulator> sim;
-    std::unique_ptr<Controller> ctl;
-    std::unique_ptr<QSignalSpy> results;
-    RequestId nextId = 0;
     RequestId stream = 0;
 };
 } // namespace

@@ -5,6 +5,7 @@
 // axes: no jog chunk or jog target crosses the limit), a move, velocity move or target beyond
 // the limit is refused with the reason and not one new frame reaches the device, a move
 // inside goes, and an unreferenced axis is not held by limits.
+#include "ModelBench.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
@@ -25,44 +26,16 @@ using namespace stepdeck;
 namespace {
 constexpr qint64 kTravel = 2000; // the limit lies this far from the referenced position
 
-struct Bench
+struct Bench : test::ModelBench
 {
-    explicit Bench(const ModelInfo* model) : info(model), id(model->id)
+    explicit Bench(const ModelInfo* model) : ModelBench(model, 500), id(model->id)
     {
-        auto [h, d] = LoopbackTransport::createPair();
-        host.reset(h);
-        device.reset(d);
-        SimulatorOptions so;
-        so.line = info->line;
-        so.addresses = {1, 2, 3};
-        sim.reset(info->createSimulator(so));
-        device->open(info->line);
-        sim->attach(device.get());
-        ControllerOptions co;
-        co.pollIntervalMs = 20;
-        co.commandTimeoutMs = 500;
-        co.jogLeaseMs = 2000;
-        ctl.reset(info->createController(host.get(), co));
-        results = std::make_unique<QSignalSpy>(ctl.get(), &Controller::requestFinished);
         refusals = std::make_unique<QSignalSpy>(ctl.get(), &Controller::jogRefused);
     }
-    ~Bench() { ctl.reset(); }
 
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 10000)
     {
-        const RequestId rid = ++nextId;
-        call(rid);
-        QDeadlineTimer deadline(timeoutMs);
-        for (;;) {
-            for (const QList<QVariant>& args : *results) {
-                const auto r = args.at(0).value<CommandResult>();
-                if (r.id == rid)
-                    return r;
-            }
-            if (deadline.hasExpired())
-                return CommandResult::failure(rid, ErrorKind::Timeout, "test: no result");
-            results->wait(20);
-        }
+        return ModelBench::run(call, timeoutMs);
     }
     bool write(const QStringList& assignments)
     {
@@ -133,15 +106,8 @@ struct Bench
         return false;
     }
 
-    const ModelInfo* info;
     QString id;
-    std::unique_ptr<LoopbackTransport> host;
-    std::unique_ptr<LoopbackTransport> device;
-    std::unique_ptr<Simulator> sim;
-    std::unique_ptr<Controller> ctl;
-    std::unique_ptr<QSignalSpy> results;
     std::unique_ptr<QSignalSpy> refusals;
-    RequestId nextId = 0;
 };
 } // namespace
 
