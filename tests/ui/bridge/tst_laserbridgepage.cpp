@@ -75,11 +75,7 @@ bool TestLaserBridgePage::startOnLaserPty()
     });
     page()->portCombo()->setCurrentText(m_laser->slavePath());
     page()->startButton()->click();
-    QElapsedTimer t;
-    t.start();
-    while (!page()->isRunning() && t.elapsed() < 5000)
-        QTest::qWait(10);
-    return page()->isRunning();
+    return QTest::qWaitFor([this] { return page()->isRunning(); }, 5000);
 }
 
 void TestLaserBridgePage::page_isADock_startNeedsConnection()
