@@ -153,8 +153,10 @@ void TestGuiSignals::sigterm_onPtyDevice_deviceGetsStopThenPortClosed()
     QCOMPARE(gui.exitCode(), 0);
     // The safety contract at the device: the model's stop (<XOFF>, ForceStopMove) arrived
     // after the signal, before the port was closed, and nothing moves.
-    QVERIFY2(sim.countReceived(elab::encode::stopMove()) >= 1,
-             "the device received no ForceStopMove after SIGTERM");
+    // The GUI has exited; what it wrote before may still sit in the pty for this test's event
+    // loop to read: wait for it, bounded.
+    QTRY_VERIFY2_WITH_TIMEOUT(sim.countReceived(elab::encode::stopMove()) >= 1,
+                              "the device received no ForceStopMove after SIGTERM", 3000);
     QVERIFY(sim.standingStill());
     // The port is free again: the GUI closed it (and released Qt's lock on it).
     QSerialPort again(device.slavePath());
