@@ -190,42 +190,6 @@
             <translation>Schrittweite</translation>
         </message>
         <message>
-            <source>1</source>
-            <translation>1</translation>
-        </message>
-        <message>
-            <source>2</source>
-            <translation>2</translation>
-        </message>
-        <message>
-            <source>4</source>
-            <translation>4</translation>
-        </message>
-        <message>
-            <source>5</source>
-            <translation>5</translation>
-        </message>
-        <message>
-            <source>8</source>
-            <translation>8</translation>
-        </message>
-        <message>
-            <source>10</source>
-            <translation>10</translation>
-        </message>
-        <message>
-            <source>16</source>
-            <translation>16</translation>
-        </message>
-        <message>
-            <source>32</source>
-            <translation>32</translation>
-        </message>
-        <message>
-            <source>64</source>
-            <translation>64</translation>
-        </message>
-        <message>
             <source>adaptive</source>
             <translation>adaptiv</translation>
         </message>
@@ -240,14 +204,6 @@
         <message>
             <source>deg</source>
             <translation>°</translation>
-        </message>
-        <message>
-            <source>0.9</source>
-            <translation>0,9</translation>
-        </message>
-        <message>
-            <source>1.8</source>
-            <translation>1,8</translation>
         </message>
         <message>
             <source>Full-step angle of the motor in degrees, needed to convert encoder positions; changes cl-motor-pole-pairs as well (5.8, 8.6)</source>
@@ -782,14 +738,6 @@
             <translation>Polpaare des Motors</translation>
         </message>
         <message>
-            <source>50</source>
-            <translation>50</translation>
-        </message>
-        <message>
-            <source>100</source>
-            <translation>100</translation>
-        </message>
-        <message>
             <source>Quarter of the full steps per revolution; changes step-angle as well (8.6)</source>
             <translation>Ein Viertel der Vollschritte je Umdrehung; ändert auch step-angle (8.6)</translation>
         </message>
@@ -800,14 +748,6 @@
         <message>
             <source>Encoder increments</source>
             <translation>Encoderinkremente</translation>
-        </message>
-        <message>
-            <source>1600</source>
-            <translation>1600</translation>
-        </message>
-        <message>
-            <source>2000</source>
-            <translation>2000</translation>
         </message>
         <message>
             <source>Encoder increments per cl-encoder-revolutions (8.7)</source>
@@ -1060,14 +1000,6 @@
         <message>
             <source>On: the axes of a vector move arrive together; off: each axis moves at its own speed (IP, 9.12)</source>
             <translation>Ein: die Achsen einer Vektorfahrt kommen gleichzeitig ins Ziel; aus: jede Achse fährt mit ihrer eigenen Geschwindigkeit (IP, 9.12)</translation>
-        </message>
-        <message>
-            <source>128</source>
-            <translation>128</translation>
-        </message>
-        <message>
-            <source>256</source>
-            <translation>256</translation>
         </message>
     </context>
     <context>
@@ -1819,20 +1751,8 @@
             <translation>Vorschubstrom Schritt %1: Achse %2 fährt %3 Schritte; ein Einzelschritt ist -1, 0 oder +1</translation>
         </message>
         <message>
-            <source>jog refused: setup incomplete (tmInvSetup): write start-speed, max-speed and acceleration first</source>
-            <translation>Tippbetrieb abgelehnt: Einrichtung unvollständig (tmInvSetup): zuerst start-speed, max-speed und acceleration schreiben</translation>
-        </message>
-        <message>
             <source>jog refused: a feed stream is running</source>
             <translation>Tippbetrieb abgelehnt: ein Vorschubstrom läuft</translation>
-        </message>
-        <message>
-            <source>spindle-rpm: value '%1' is out of range (allowed: 0..1000 rpm)</source>
-            <translation>spindle-rpm: Wert '%1' liegt außerhalb des Bereichs (erlaubt: 0..1000 U/min)</translation>
-        </message>
-        <message>
-            <source>drive-power: value '%1' is out of range (allowed: 0..100 %)</source>
-            <translation>drive-power: Wert '%1' liegt außerhalb des Bereichs (erlaubt: 0..100 %)</translation>
         </message>
         <message>
             <source>refused: a motion is running; setup and outputs are written only at standstill</source>
@@ -1857,6 +1777,10 @@
         <message>
             <source>%1; already written: %2</source>
             <translation>%1; bereits geschrieben: %2</translation>
+        </message>
+        <message>
+            <source>jog refused: setup incomplete (tmInvSetup): %1</source>
+            <translation>Tippbetrieb abgelehnt: Einrichtung unvollständig (tmInvSetup): %1</translation>
         </message>
     </context>
     <context>
@@ -1955,12 +1879,16 @@
             <translation>%1: kein Wert für Achse %2 und keiner zuvor geschrieben; alle Achsen angeben (X,Y,Z)</translation>
         </message>
         <message>
-            <source>feed-speed must be below start-speed (feed mode has no ramp), but start-speed is not known: write start-speed in the same set</source>
-            <translation>feed-speed muss unter start-speed liegen (der Vorschub hat keine Rampe), aber start-speed ist unbekannt: start-speed im selben Satz schreiben</translation>
+            <source>%1 must be below %2 (feed mode has no ramp), but %2 is not known: write %2 in the same set</source>
+            <translation>%1 muss unter %2 liegen (der Vorschub hat keine Rampe), aber %2 ist unbekannt: %2 im selben Satz schreiben</translation>
         </message>
         <message>
-            <source>feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no ramp)</source>
-            <translation>feed-speed %1 auf Achse %2 muss unter start-speed %3 liegen (der Vorschub hat keine Rampe)</translation>
+            <source>%1 %2 on axis %3 must be below %4 %5 (feed mode has no ramp)</source>
+            <translation>%1 %2 auf Achse %3 muss unter %4 %5 liegen (der Vorschub hat keine Rampe)</translation>
+        </message>
+        <message>
+            <source>write %1, %2 and %3 first</source>
+            <translation>zuerst %1, %2 und %3 schreiben</translation>
         </message>
     </context>
     <context>
@@ -1968,10 +1896,6 @@
         <message>
             <source>refused: the emergency stop (tmPanicStop) is active</source>
             <translation>abgelehnt: der Not-Aus (tmPanicStop) ist aktiv</translation>
-        </message>
-        <message>
-            <source>refused: setup incomplete (tmInvSetup): write start-speed, max-speed and acceleration first</source>
-            <translation>abgelehnt: Einrichtung unvollständig (tmInvSetup): zuerst start-speed, max-speed und acceleration schreiben</translation>
         </message>
         <message>
             <source>refused: a limit switch is active (%1); only jog may move the machine off it</source>
@@ -1992,6 +1916,10 @@
         <message>
             <source>refused: axes are moving (%1); setup and outputs are written only at standstill</source>
             <translation>abgelehnt: Achsen bewegen sich (%1); Einstellungen und Ausgänge werden nur im Stillstand geschrieben</translation>
+        </message>
+        <message>
+            <source>refused: setup incomplete (tmInvSetup): %1</source>
+            <translation>abgelehnt: Einrichtung unvollständig (tmInvSetup): %1</translation>
         </message>
     </context>
     <context>
@@ -2171,10 +2099,6 @@
             <translation>Tippbetrieb abgelehnt: eine Achse fährt womöglich noch (ihre Ankunft kam nie); zuerst referenzieren</translation>
         </message>
         <message>
-            <source>after jogging, the work speed of axis %1 stays at %2 steps/s: its value before is not known (write work-speed)</source>
-            <translation>nach dem Tippbetrieb bleibt die Arbeitsgeschwindigkeit der Achse %1 bei %2 Schritten/s: ihr Wert davor ist nicht bekannt (work-speed schreiben)</translation>
-        </message>
-        <message>
             <source>axis %1 is still moving (its arrival &lt;DC%2&gt; has not come; the board would answer &lt;BEL&gt;)</source>
             <translation>Achse %1 fährt noch (ihre Ankunft &lt;DC%2&gt; ist nicht gekommen; die Steuerung würde mit &lt;BEL&gt; antworten)</translation>
         </message>
@@ -2313,6 +2237,10 @@
             <source>system parameters are stored while every axis stands still</source>
             <translation>Systemparameter werden gespeichert, während alle Achsen stillstehen</translation>
         </message>
+        <message>
+            <source>after jogging, the work speed of axis %1 stays at %2 steps/s: its value before is not known (write %3)</source>
+            <translation>nach dem Tippbetrieb bleibt die Arbeitsgeschwindigkeit der Achse %1 bei %2 Schritten/s: ihr Wert davor ist nicht bekannt (%3 schreiben)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::emis::EmisLink</name>
@@ -2419,16 +2347,16 @@
             <translation>%1 kann nicht gespeichert werden: die SMC-IC4 hat dafür keinen Systemparameter (Handbuch 9.14); set verwenden</translation>
         </message>
         <message>
-            <source>reference-speed is stored per motor (%1); %2 is the first</source>
-            <translation>reference-speed ist je Motor gespeichert (%1); %2 ist der erste Wert</translation>
-        </message>
-        <message>
             <source>an SMCflex compatibility entry is stored (%1); store --clear (*PESYS) erases it</source>
             <translation>ein Eintrag für SMCflex-Kompatibilität ist gespeichert (%1); store --clear (*PESYS) löscht ihn</translation>
         </message>
         <message>
             <source>not understood in the *PRSYS answer: %1</source>
             <translation>in der *PRSYS-Antwort nicht verstanden: %1</translation>
+        </message>
+        <message>
+            <source>%1 is stored per motor (%2); %3 is the first</source>
+            <translation>%1 ist je Motor gespeichert (%2); %3 ist der erste Wert</translation>
         </message>
     </context>
     <context>
@@ -2819,10 +2747,6 @@
             <translation>%1 antwortet nicht mehr (%2 Statusabfragen unbeantwortet)</translation>
         </message>
         <message>
-            <source>%1 reports a position error (encoder deviation above max-encoder-deviation); reset it with reset-position-error</source>
-            <translation>%1 meldet einen Positionsfehler (Geberabweichung über max-encoder-deviation); mit reset-position-error zurücksetzen</translation>
-        </message>
-        <message>
             <source>not answering</source>
             <translation>antwortet nicht</translation>
         </message>
@@ -2967,10 +2891,6 @@
             <translation>unbekannter Parameter '%1'</translation>
         </message>
         <message>
-            <source>motor-address %1 is already used by %2</source>
-            <translation>motor-address %1 wird bereits von %2 benutzt</translation>
-        </message>
-        <message>
             <source>%1 sent no record string: '%2'</source>
             <translation>%1 hat keinen Satz-String gesendet: '%2'</translation>
         </message>
@@ -3003,18 +2923,6 @@
             <translation>Laden</translation>
         </message>
         <message>
-            <source>motor-address %1 is already used by another drive on the bus; no communication would be possible (manual 5.4)</source>
-            <translation>motor-address %1 wird bereits von einem anderen Antrieb am Bus benutzt; eine Kommunikation wäre nicht möglich (Handbuch 5.4)</translation>
-        </message>
-        <message>
-            <source>%1 reports motor-address %2, not %3</source>
-            <translation>%1 meldet motor-address %2, nicht %3</translation>
-        </message>
-        <message>
-            <source>%1 did not take motor-address %2: nothing answers there</source>
-            <translation>%1 hat motor-address %2 nicht übernommen: dort antwortet nichts</translation>
-        </message>
-        <message>
             <source>%1 reads %2=%3 instead of %4 (the drive ignored the setting); not started</source>
             <translation>%1 liest %2=%3 statt %4 (die Steuerung hat die Einstellung ignoriert); nicht gestartet</translation>
         </message>
@@ -3037,6 +2945,26 @@
         <message>
             <source>%1; already written: %2</source>
             <translation>%1; bereits geschrieben: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2 is already used by another drive on the bus; no communication would be possible (manual 5.4)</source>
+            <translation>%1 %2 wird bereits von einem anderen Antrieb am Bus benutzt; eine Kommunikation wäre nicht möglich (Handbuch 5.4)</translation>
+        </message>
+        <message>
+            <source>%1 reports %2 %3, not %4</source>
+            <translation>%1 meldet %2 %3, nicht %4</translation>
+        </message>
+        <message>
+            <source>%1 did not take %2 %3: nothing answers there</source>
+            <translation>%1 hat %2 %3 nicht übernommen: dort antwortet nichts</translation>
+        </message>
+        <message>
+            <source>%1 %2 is already used by %3</source>
+            <translation>%1 %2 wird bereits von %3 benutzt</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error (encoder deviation above %2); reset it with reset-position-error</source>
+            <translation>%1 meldet einen Positionsfehler (Geberabweichung über %2); mit reset-position-error zurücksetzen</translation>
         </message>
     </context>
     <context>

@@ -28,6 +28,24 @@ QString ParameterSchema::rangeText(const ParameterSpec& spec)
     return {};
 }
 
+QString ParameterSchema::displayText(const QString& english)
+{
+    if (english.isEmpty())
+        return {};
+    return QCoreApplication::translate(kTranslationContext, english.toUtf8().constData());
+}
+
+QString ParameterSchema::displayUnitSuffix(const ParameterSpec& spec)
+{
+    return spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + displayText(spec.unit);
+}
+
+QString ParameterSchema::displayLabel(const QString& name) const
+{
+    const ParameterSpec* spec = find(name);
+    return spec ? displayLabel(*spec) : name;
+}
+
 const ParameterSpec* ParameterSchema::find(const QString& name) const
 {
     for (const ParameterSpec& spec : m_specs) {
@@ -79,8 +97,14 @@ QVariant ParameterSchema::normalise(const ParameterSpec& spec, const QVariant& v
 
 QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVariant& value) const
 {
+    return scalarError(displayLabel(spec), spec, value);
+}
+
+QString ParameterSchema::scalarError(const QString& who, const ParameterSpec& spec,
+                                     const QVariant& value) const
+{
     const QString range = rangeText(spec);
-    const QString unit = spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + spec.unit;
+    const QString unit = displayUnitSuffix(spec);
     if (spec.type == ParameterType::Integer) {
         qint64 v = 0;
         switch (numbers::integerFromVariant(value, &v)) {
@@ -90,10 +114,10 @@ QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVarian
             break;
         case NumberError::Malformed:
             return tr("%1: '%2' is not a decimal integer (allowed: %3%4)")
-                .arg(spec.name, value.toString(), range, unit);
+                .arg(who, value.toString(), range, unit);
         case NumberError::NonFinite:
             return tr("%1: '%2' is not a finite number (allowed: %3%4)")
-                .arg(spec.name, value.toString(), range, unit);
+                .arg(who, value.toString(), range, unit);
         case NumberError::OutOfRange:
             break;
         }
@@ -101,32 +125,38 @@ QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVarian
         return {};
     }
     return tr("%1: value '%2' is out of range (allowed: %3%4)")
-        .arg(spec.name, value.toString(), range, unit);
+        .arg(who, value.toString(), range, unit);
 }
 
 QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& axes) const
+{
+    return check(set, axes, false);
+}
+
+QString ParameterSchema::check(const ParameterSet& set, const QList<Axis>& axes, bool byKey) const
 {
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
         const ParameterSpec* spec = find(it.key());
         if (!spec)
             return tr("unknown parameter '%1'").arg(it.key());
+        const QString who = byKey ? spec->name : displayLabel(*spec);
         if (!spec->writable)
-            return tr("%1 is read-only").arg(spec->name);
+            return tr("%1 is read-only").arg(who);
         const ParameterValue& value = it.value();
         if (spec->perAxis) {
             if (!value.isPerAxis())
-                return tr("%1 needs one value per axis").arg(spec->name);
+                return tr("%1 needs one value per axis").arg(who);
             for (auto a = value.perAxis.cbegin(); a != value.perAxis.cend(); ++a) {
                 if (!axes.contains(a.key()))
-                    return tr("%1: this machine has no axis %2").arg(spec->name, axisName(a.key()));
-                const QString err = validateScalar(*spec, a.value());
+                    return tr("%1: this machine has no axis %2").arg(who, axisName(a.key()));
+                const QString err = scalarError(who, *spec, a.value());
                 if (!err.isEmpty())
                     return QStringLiteral("%1 (%2)").arg(err, axisName(a.key()));
             }
         } else {
             if (value.isPerAxis())
-                return tr("%1 takes a single value, not one per axis").arg(spec->name);
-            const QString err = validateScalar(*spec, value.global);
+                return tr("%1 takes a single value, not one per axis").arg(who);
+            const QString err = scalarError(who, *spec, value.global);
             if (!err.isEmpty())
                 return err;
         }
@@ -166,7 +196,7 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
         }
         for (int i = 0; i < axes.size(); ++i) {
             const QString& raw = parts.size() == 1 ? parts[0] : parts[i];
-            const QString err = validateScalar(*spec, raw);
+            const QString err = scalarError(*name, *spec, raw);
             if (!err.isEmpty()) {
                 *error = QStringLiteral("%1 (%2)").arg(err, axisName(axes[i]));
                 readingProblem(*spec, raw, numberError);
@@ -179,7 +209,7 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
             *error = tr("%1 takes a single value").arg(*name);
             return false;
         }
-        const QString err = validateScalar(*spec, parts[0]);
+        const QString err = scalarError(*name, *spec, parts[0]);
         if (!err.isEmpty()) {
             *error = err;
             readingProblem(*spec, parts[0], numberError);
@@ -273,7 +303,7 @@ bool ParameterSchema::fromJson(const QJsonObject& json, const QString& modelId,
         }
         out.insert(it.key(), value);
     }
-    const QString err = validate(out, axes);
+    const QString err = check(out, axes, true); // names the keys, as the file does
     if (!err.isEmpty()) {
         *error = err;
         return false;

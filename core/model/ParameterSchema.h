@@ -13,8 +13,11 @@ enum class ParameterType { Integer, Boolean, Choice };
 // One device parameter as data: forms, the CLI and import/export are generated from these.
 struct ParameterSpec
 {
-    QString name;  // kebab-case id, e.g. "start-speed"
-    QString label; // English label; UI translates it through the "Parameters" context
+    QString name; // kebab-case id, e.g. "start-speed"
+    // label, group, unit, choices, description and warning are English data, marked with
+    // QT_TRANSLATE_NOOP("Parameters", ...) where the model's table is written; show them through
+    // ParameterSchema::displayText() and friends.
+    QString label; // e.g. "Start speed"
     QString group; // "Speeds", "Acceleration", "Switch polarity", "Power & spindle", ...
     QString unit;  // "steps/s", "%", "rpm", ...
     ParameterType type = ParameterType::Integer;
@@ -50,14 +53,29 @@ public:
     ParameterSchema() = default;
     explicit ParameterSchema(QList<ParameterSpec> specs) : m_specs(std::move(specs)) {}
 
+    // The one translation context of every model's schema words: the same word ("Idle
+    // current", "steps/s") is translated once for all models.
+    static constexpr const char* kTranslationContext = "Parameters";
+    // A schema word (label, group, unit, choice, description, warning) in the language of the
+    // installed translator; "" stays "".
+    static QString displayText(const QString& english);
+    static QString displayLabel(const ParameterSpec& spec) { return displayText(spec.label); }
+    // " steps/s" (translated, with its leading space) or "" for parameters without a unit.
+    static QString displayUnitSuffix(const ParameterSpec& spec);
+
     const QList<ParameterSpec>& specs() const { return m_specs; }
     const ParameterSpec* find(const QString& name) const;
+    // The translated label of the named parameter, or the name itself if the schema has none.
+    QString displayLabel(const QString& name) const;
     QStringList groups() const;
 
     // Checks type and range of one scalar value; returns an empty string when valid, else a
-    // sentence naming the parameter and its range.
+    // sentence naming the parameter by its translated label, with its range and unit.
     QString validateScalar(const ParameterSpec& spec, const QVariant& value) const;
     // Checks every entry of a set (unknown names, per-axis shape, type, range, writability).
+    // Messages name parameters by their translated label; an unknown one by the key given.
+    // (parseAssignment() and fromJson() name the key instead: it is what the user typed or
+    // what the file holds.)
     QString validate(const ParameterSet& set, const QList<Axis>& axes) const;
     // Normalises a scalar to its canonical type (qint64, bool or QString); invalid -> null.
     // Integers: decimal text only ("0100" is 100, "0x40" invalid), doubles only when finite,
@@ -65,8 +83,9 @@ public:
     QVariant normalise(const ParameterSpec& spec, const QVariant& value) const;
 
     // "NAME=V[,V,V]" as typed on the CLI; per-axis values in the order of `axes`. Numbers
-    // are decimal (NumberParsing.h). On a refused integer value, *numberError (if given) says
-    // whether its text was a number at all (None: it was, but outside the range).
+    // are decimal (NumberParsing.h). Messages name the parameter by the key, as typed. On a refused
+    // integer value, *numberError (if given) says whether its text was a number at all (None: it
+    // was, but outside the range).
     bool parseAssignment(const QString& text, const QList<Axis>& axes, QString* name,
                          ParameterValue* value, QString* error,
                          NumberError* numberError = nullptr) const;
@@ -83,6 +102,11 @@ public:
                   ParameterSet* set, QString* error) const;
 
 private:
+    // validateScalar() naming the parameter `who` (its label, or the key the user typed).
+    QString scalarError(const QString& who, const ParameterSpec& spec, const QVariant& value) const;
+    // validate(), naming parameters by key (byKey) or by translated label.
+    QString check(const ParameterSet& set, const QList<Axis>& axes, bool byKey) const;
+
     QList<ParameterSpec> m_specs;
 };
 

@@ -6,6 +6,7 @@
 #include "main/Translations.h"
 #include "model/ParameterFile.h"
 #include "protocols/elab/ElabCodec.h"
+#include "protocols/elab/ElabCtlParameters.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/nanotec/NanotecCodec.h"
 #include "setup/ParameterField.h"
@@ -29,7 +30,54 @@ private Q_SLOTS:
     void german_coreMessagesAtRunTime();
     void german_mainWindow_showsGermanLabels();
     void german_polarity_labelsGermanValuesKept();
+    void german_schemaWords_everyOneTranslated();
+    void german_validationMessages_nameLabelsNotKeys_data();
+    void german_validationMessages_nameLabelsNotKeys();
+    void german_elabRules_nameLabelsNotKeys();
+    void german_typedOrFiledNames_keepTheKey();
 };
+
+namespace {
+// Sources with a finished German translation in the schema words' context.
+QSet<QString> translatedSchemaWords()
+{
+    QSet<QString> out;
+    QFile file(QStringLiteral(STEPDECK_SOURCE_DIR "/translations/stepdeck_de.ts"));
+    if (!file.open(QIODevice::ReadOnly))
+        return out;
+    QXmlStreamReader xml(&file);
+    QString context, source;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (!xml.isStartElement())
+            continue;
+        if (xml.name() == QLatin1String("name")) {
+            context = xml.readElementText();
+        } else if (xml.name() == QLatin1String("source")) {
+            source = xml.readElementText();
+        } else if (xml.name() == QLatin1String("translation")) {
+            const bool unfinished =
+                xml.attributes().value(QLatin1String("type")) == QLatin1String("unfinished");
+            const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
+            if (context == QLatin1String(ParameterSchema::kTranslationContext) && !unfinished &&
+                !text.isEmpty())
+                out.insert(source);
+        }
+    }
+    return out;
+}
+
+// The schema keys (kebab-case names) a message quotes.
+QStringList keysIn(const ParameterSchema& schema, const QString& message)
+{
+    QStringList keys;
+    for (const ParameterSpec& spec : schema.specs()) {
+        if (spec.name.contains(QLatin1Char('-')) && message.contains(spec.name))
+            keys << spec.name;
+    }
+    return keys;
+}
+} // namespace
 
 void TestTranslations::germanCatalogue_everyMessageTranslated()
 {
@@ -170,6 +218,126 @@ void TestTranslations::german_polarity_labelsGermanValuesKept()
     field.setValue(QStringLiteral("low"), true);
     QCOMPARE(combo->currentText(), QStringLiteral("Low-aktiv"));
     QCOMPARE(field.value().toString(), QStringLiteral("low"));
+    combo->setCurrentIndex(0);
+    QCOMPARE(field.value().toString(), QStringLiteral("high"));
+
+    // The file format keeps the values.
+    ParameterSet set;
+    set[spec->name].perAxis = {{Axis::X, field.value()}, {Axis::Y, QStringLiteral("low")}};
+    const QJsonObject perAxis = schema.toJson(QStringLiteral("elab"), set)
+                                    .value(QStringLiteral("parameters"))
+                                    .toObject()
+                                    .value(spec->name)
+                                    .toObject();
+    QCOMPARE(perAxis.value(QStringLiteral("X")).toString(), QStringLiteral("high"));
+    QCOMPARE(perAxis.value(QStringLiteral("Y")).toString(), QStringLiteral("low"));
+}
+
+// Issue 10: the schema tables mark their words with QT_TRANSLATE_NOOP; every word of every
+// model (numbers excepted) has a German translation, so no setup page shows English.
+void TestTranslations::german_schemaWords_everyOneTranslated()
+{
+    const QSet<QString> translated = translatedSchemaWords();
+    QVERIFY(translated.size() > 200);
+    QStringList missing;
+    for (const ModelInfo& model : models()) {
+        for (const ParameterSpec& spec : model.schema.specs()) {
+            QStringList words{spec.group, spec.label, spec.unit, spec.description, spec.warning};
+            for (const QString& choice : spec.choices) {
+                bool number = false;
+                choice.toDouble(&number);
+                if (!number)
+                    words << choice;
+            }
+            for (const QString& w : std::as_const(words)) {
+                if (!w.isEmpty() && !translated.contains(w))
+                    missing << QStringLiteral("%1/%2: %3").arg(model.id, spec.name, w);
+            }
+        }
+    }
+    QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QStringLiteral(" | "))));
+}
+
+void TestTranslations::german_validationMessages_nameLabelsNotKeys_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("elab") << "elab"
+                          << "max-speed"
+                          << "Maximalgeschwindigkeit: Wert '70000' liegt außerhalb des Bereichs "
+                             "(erlaubt: 0..65535 Schritte/s) (X)";
+    QTest::newRow("nanotec") << "nanotec"
+                             << "phase-current"
+                             << "Phasenstrom: Wert '70000' liegt außerhalb des Bereichs "
+                                "(erlaubt: 0..150 %) (X)";
+    QTest::newRow("emis") << "emis"
+                          << "reference-speed"
+                          << "Referenzgeschwindigkeit: Wert '70000' liegt außerhalb des Bereichs "
+                             "(erlaubt: 1..65535 Schritte/s)";
+}
+
+// Issue 11: a refusal on the German screen names the parameter as the form does (its label,
+// with the unit translated), not by its file key.
+void TestTranslations::german_validationMessages_nameLabelsNotKeys()
+{
+    QFETCH(QString, model);
+    QFETCH(QString, name);
+    QFETCH(QString, expected);
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("de")), QStringLiteral("de"));
+    const ModelInfo* info = findModel(model);
+    QVERIFY(info);
+    const ParameterSpec* spec = info->schema.find(name);
+    QVERIFY(spec);
+    ParameterSet set;
+    if (spec->perAxis)
+        set[name].perAxis.insert(Axis::X, qint64(70000));
+    else
+        set[name].global = qint64(70000);
+    const QString message = info->schema.validate(set, info->capabilities.axes);
+    QCOMPARE(message, expected);
+    QVERIFY2(keysIn(info->schema, message).isEmpty(), qPrintable(message));
+}
+
+void TestTranslations::german_elabRules_nameLabelsNotKeys()
+{
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("de")), QStringLiteral("de"));
+    const ParameterSchema schema = elab::parameterSchema();
+    ParameterSet set;
+    for (const char* name : {"start-speed", "feed-speed"}) {
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+            set[QLatin1String(name)].perAxis.insert(a, qint64(100));
+    }
+    set[QStringLiteral("feed-speed")].perAxis[Axis::X] = qint64(150);
+    QList<elab::ElabParameterWrite> plan;
+    const QString feed = elab::ElabCtlParameters::plan(schema, set, {}, &plan);
+    QCOMPARE(feed,
+             QStringLiteral("Vorschubgeschwindigkeit 150 auf Achse X muss unter "
+                            "Startgeschwindigkeit 100 liegen (der Vorschub hat keine Rampe)"));
+    const QString setup = elab::ElabCtlParameters::setupIncompleteHint();
+    QCOMPARE(setup, QStringLiteral("zuerst Startgeschwindigkeit, Maximalgeschwindigkeit und "
+                                   "Beschleunigung schreiben"));
+    QVERIFY(keysIn(schema, feed + setup).isEmpty());
+}
+
+// Where the user typed the key (NAME=VALUE) or the file holds it, the message names the key.
+void TestTranslations::german_typedOrFiledNames_keepTheKey()
+{
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("de")), QStringLiteral("de"));
+    const ParameterSchema schema = elab::parameterSchema();
+    QString name, error;
+    ParameterValue value;
+    QVERIFY(!schema.parseAssignment(QStringLiteral("drive-power=101"), {Axis::X}, &name, &value,
+                                    &error));
+    QCOMPARE(error, QStringLiteral("drive-power: Wert '101' liegt außerhalb des Bereichs "
+                                   "(erlaubt: 0..100 %)"));
+    const QJsonObject file{{"format", "stepdeck-parameters"},
+                           {"version", 1},
+                           {"model", "elab"},
+                           {"parameters", QJsonObject{{"drive-power", 101}}}};
+    ParameterSet set;
+    QVERIFY(!schema.fromJson(file, QStringLiteral("elab"), {Axis::X}, &set, &error));
+    QVERIFY2(error.startsWith(QStringLiteral("drive-power: Wert '101'")), qPrintable(error));
 }
 
 QTEST_MAIN(TestTranslations)

@@ -5,13 +5,6 @@
 
 namespace stepdeck::ui {
 
-namespace {
-QString translated(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
-} // namespace
-
 RecordDelegate::RecordDelegate(QObject* parent) : QStyledItemDelegate(parent) {}
 
 const ParameterSpec* RecordDelegate::specAt(const QModelIndex& index) const
@@ -27,7 +20,7 @@ QString RecordDelegate::displayText(const QVariant& value, const QLocale& locale
     if (value.typeId() == QMetaType::Bool)
         return value.toBool() ? tr("yes") : tr("no");
     if (value.typeId() == QMetaType::QString)
-        return translated(value.toString());
+        return ParameterSchema::displayText(value.toString());
     return QStyledItemDelegate::displayText(value, locale);
 }
 
@@ -41,7 +34,7 @@ QWidget* RecordDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
     case ParameterType::Choice: {
         auto* combo = new QComboBox(parent);
         for (const QString& c : spec->choices)
-            combo->addItem(translated(c), c);
+            combo->addItem(ParameterSchema::displayText(c), c);
         return combo;
     }
     case ParameterType::Boolean: {

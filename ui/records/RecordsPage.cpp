@@ -236,7 +236,7 @@ QString RecordsPage::columnTitle(const QString& name) const
     const ParameterSpec* spec = schema.find(name);
     if (!spec)
         return name;
-    QString title = QCoreApplication::translate("Parameters", spec->label.toUtf8().constData());
+    QString title = ParameterSchema::displayText(spec->label);
     if (!spec->unit.isEmpty())
         title += QStringLiteral(" [%1]").arg(spec->unit);
     return title;

@@ -18,7 +18,7 @@ QString displayValue(const ParameterSpec& spec, const QVariant& v)
         return v.toBool() ? QCoreApplication::translate("stepdeck::ui::DiffDialog", "on")
                           : QCoreApplication::translate("stepdeck::ui::DiffDialog", "off");
     if (spec.type == ParameterType::Choice)
-        return QCoreApplication::translate("Parameters", v.toString().toUtf8().constData());
+        return ParameterSchema::displayText(v.toString());
     return v.toString();
 }
 } // namespace
@@ -30,8 +30,7 @@ QList<DiffDialog::Row> DiffDialog::compare(const ParameterSchema& schema,
     for (const ParameterSpec& spec : schema.specs()) {
         if (!loaded.contains(spec.name))
             continue;
-        const QString label =
-            QCoreApplication::translate("Parameters", spec.label.toUtf8().constData());
+        const QString label = ParameterSchema::displayText(spec.label);
         const ParameterValue now = current.value(spec.name);
         const ParameterValue then = loaded.value(spec.name);
         if (spec.perAxis) {

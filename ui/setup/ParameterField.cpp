@@ -7,33 +7,22 @@
 
 namespace stepdeck::ui {
 
-namespace {
-QString trParam(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
-// Choice values that several models share, shown translated; files keep the values.
-[[maybe_unused]] const char* const kSharedChoices[] = {
-    QT_TRANSLATE_NOOP("Parameters", "low"),
-    QT_TRANSLATE_NOOP("Parameters", "high"),
-};
-} // namespace
-
 ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpec& spec,
                                std::optional<Axis> axis, QWidget* parent)
     : QWidget(parent), m_schema(schema), m_spec(spec), m_axis(axis)
 {
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    m_tip = trParam(spec.description);
+    m_tip = ParameterSchema::displayText(spec.description);
     switch (spec.type) {
     case ParameterType::Integer:
         m_line = new QLineEdit(this);
         m_line->setAlignment(Qt::AlignRight);
         m_line->setMinimumWidth(80);
-        m_tip +=
-            QStringLiteral("\n") +
-            tr("Allowed: %1 to %2 %3").arg(spec.minimum).arg(spec.maximum).arg(trParam(spec.unit));
+        m_tip += QStringLiteral("\n") + tr("Allowed: %1 to %2 %3")
+                                            .arg(spec.minimum)
+                                            .arg(spec.maximum)
+                                            .arg(ParameterSchema::displayText(spec.unit));
         connect(m_line, &QLineEdit::textEdited, this, &ParameterField::userEdit);
         connect(m_line, &QLineEdit::textChanged, this, [this] {
             refreshLook();
@@ -69,12 +58,12 @@ ParameterField::ParameterField(const ParameterSchema& schema, const ParameterSpe
 
 QString ParameterField::translatedChoice(const QString& choice)
 {
-    return trParam(choice);
+    return ParameterSchema::displayText(choice);
 }
 
 QString ParameterField::displayName() const
 {
-    const QString label = trParam(m_spec.label);
+    const QString label = ParameterSchema::displayText(m_spec.label);
     return m_axis ? QStringLiteral("%1 %2").arg(label, axisName(*m_axis)) : label;
 }
 
@@ -172,7 +161,7 @@ QString ParameterField::error() const
             .arg(name, rawValue().toString())
             .arg(m_spec.minimum)
             .arg(m_spec.maximum)
-            .arg(trParam(m_spec.unit))
+            .arg(ParameterSchema::displayText(m_spec.unit))
             .trimmed();
     return tr("%1: '%2' is not allowed").arg(name, rawValue().toString());
 }

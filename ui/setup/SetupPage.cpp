@@ -16,13 +16,6 @@
 
 namespace stepdeck::ui {
 
-namespace {
-QString trParam(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
-} // namespace
-
 SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_groups(new QVBoxLayout),
       m_read(new QPushButton(tr("Read"), this)), m_write(new QPushButton(tr("Write"), this)),
@@ -135,7 +128,8 @@ void SetupPage::applyKnown()
 QWidget* SetupPage::buildGroup(const QString& group)
 {
     // "Power & spindle": the '&' is text, not a keyboard mnemonic.
-    auto* box = new QGroupBox(trParam(group).replace(QLatin1Char('&'), QStringLiteral("&&")));
+    auto* box = new QGroupBox(
+        ParameterSchema::displayText(group).replace(QLatin1Char('&'), QStringLiteral("&&")));
     auto* grid = new QGridLayout(box);
     const QList<Axis> axes = m_context->axes();
     bool anyPerAxis = false;
@@ -155,8 +149,8 @@ QWidget* SetupPage::buildGroup(const QString& group)
     for (const ParameterSpec& spec : m_schema.specs()) {
         if (spec.group != group)
             continue;
-        auto* label = new QLabel(trParam(spec.label), box);
-        label->setToolTip(trParam(spec.description));
+        auto* label = new QLabel(ParameterSchema::displayText(spec.label), box);
+        label->setToolTip(ParameterSchema::displayText(spec.description));
         grid->addWidget(label, row, 0);
         auto add = [&](std::optional<Axis> axis, int column, int span) {
             auto* f = new ParameterField(m_schema, spec, axis, box);
@@ -170,7 +164,8 @@ QWidget* SetupPage::buildGroup(const QString& group)
         } else {
             add(std::nullopt, 1, qMax(1, int(axes.size())));
         }
-        grid->addWidget(new QLabel(trParam(spec.unit), box), row, 1 + int(axes.size()));
+        grid->addWidget(new QLabel(ParameterSchema::displayText(spec.unit), box), row,
+                        1 + int(axes.size()));
         ++row;
     }
     grid->setColumnStretch(0, 2);
@@ -347,7 +342,7 @@ void SetupPage::onResult(const CommandResult& result)
             QStringList labels;
             for (const QString& name : m_pendingSet.keys()) {
                 const ParameterSpec* spec = m_schema.find(name);
-                labels << (spec ? trParam(spec->label) : name);
+                labels << (spec ? ParameterSchema::displayText(spec->label) : name);
             }
             setMessage(tr("Written: %1.").arg(labels.join(QStringLiteral(", "))), false);
         } else {

@@ -12,17 +12,13 @@
 namespace stepdeck::ui {
 
 namespace {
-QString trParam(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
 
 QStringList labels(const ParameterSchema& schema, const QStringList& names)
 {
     QStringList out;
     for (const QString& name : names) {
         const ParameterSpec* spec = schema.find(name);
-        out << (spec ? trParam(spec->label) : name);
+        out << (spec ? ParameterSchema::displayText(spec->label) : name);
     }
     return out;
 }

@@ -12,10 +12,6 @@
 namespace stepdeck::ui {
 
 namespace {
-QString trParam(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
 
 QString shown(const ParameterSpec& spec, const QVariant& v)
 {
@@ -41,8 +37,8 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
             continue;
         const ParameterValue& v = set.value(spec.name);
         if (!v.isPerAxis()) {
-            global << Row{tr("all"), trParam(spec.label), shown(spec, v.global),
-                          trParam(spec.unit)};
+            global << Row{tr("all"), ParameterSchema::displayText(spec.label),
+                          shown(spec, v.global), ParameterSchema::displayText(spec.unit)};
             continue;
         }
         for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
@@ -51,7 +47,8 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
                     ? tr("Drive %1 (%2)").arg(driveAddresses.value(a.key())).arg(axisName(a.key()))
                     : axisName(a.key());
             byDrive[QString::number(int(a.key())) + drive]
-                << Row{drive, trParam(spec.label), shown(spec, a.value()), trParam(spec.unit)};
+                << Row{drive, ParameterSchema::displayText(spec.label), shown(spec, a.value()),
+                       ParameterSchema::displayText(spec.unit)};
         }
     }
     QList<Row> out = global;

@@ -3,13 +3,6 @@
 
 namespace stepdeck::ui {
 
-namespace {
-QString trParam(const QString& text)
-{
-    return QCoreApplication::translate("Parameters", text.toUtf8().constData());
-}
-} // namespace
-
 QStringList WriteWarnings::collect(const ParameterSchema& schema, const ParameterSet& set)
 {
     QStringList warnings;
@@ -17,8 +10,8 @@ QStringList WriteWarnings::collect(const ParameterSchema& schema, const Paramete
         const ParameterSpec* spec = schema.find(it.key());
         if (spec && !spec->warning.isEmpty())
             warnings << QStringLiteral("<b>%1</b>: %2")
-                            .arg(trParam(spec->label).toHtmlEscaped(),
-                                 trParam(spec->warning).toHtmlEscaped());
+                            .arg(ParameterSchema::displayText(spec->label).toHtmlEscaped(),
+                                 ParameterSchema::displayText(spec->warning).toHtmlEscaped());
     }
     return warnings;
 }

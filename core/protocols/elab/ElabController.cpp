@@ -107,8 +107,8 @@ QString ElabController::jogRefusal() const
     if (!base.isEmpty())
         return base;
     if (status().setupIncomplete)
-        return tr("jog refused: setup incomplete (tmInvSetup): write start-speed, max-speed and "
-                  "acceleration first");
+        return tr("jog refused: setup incomplete (tmInvSetup): %1")
+            .arg(ElabCtlParameters::setupIncompleteHint());
     if (m_ops.streaming())
         return tr("jog refused: a feed stream is running");
     return {};
@@ -372,7 +372,7 @@ void ElabController::setSpindle(RequestId id, int rpm)
     // SetSpindleRPM: "einen Wert zwischen 0 und 1000 in einem long Hex-Word".
     if (rpm < 0 || rpm > 1000) {
         finishError(id, ErrorKind::InvalidValue,
-                    tr("spindle-rpm: value '%1' is out of range (allowed: 0..1000 rpm)").arg(rpm));
+                    schema().validateScalar(*schema().find(QStringLiteral("spindle-rpm")), rpm));
         return;
     }
     writeAuxiliary(id, QStringLiteral("spindle-rpm"), qint64(rpm),
@@ -388,8 +388,9 @@ void ElabController::setDrivePower(RequestId id, int percent)
 {
     // SetDrivePower: "einen Wert zwischen 0 und 100 in einem Hex-Byte".
     if (percent < 0 || percent > 100) {
-        finishError(id, ErrorKind::InvalidValue,
-                    tr("drive-power: value '%1' is out of range (allowed: 0..100 %)").arg(percent));
+        finishError(
+            id, ErrorKind::InvalidValue,
+            schema().validateScalar(*schema().find(QStringLiteral("drive-power")), percent));
         return;
     }
     writeAuxiliary(id, QStringLiteral("drive-power"), qint64(percent),

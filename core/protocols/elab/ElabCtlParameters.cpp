@@ -1,6 +1,7 @@
 #include "ElabCtlParameters.h"
 #include "ElabCodec.h"
 #include "ElabCtlStatusMapper.h"
+#include "ElabModel.h"
 #include <QCoreApplication>
 
 namespace stepdeck::elab {
@@ -27,7 +28,7 @@ QString complete(const ParameterSchema& schema, const ParameterSpec& spec,
             return ElabCtlParameters::tr(
                        "%1: no value for axis %2 and none written before; give all axes "
                        "(X,Y,Z)")
-                .arg(spec.name, axisName(a));
+                .arg(ParameterSchema::displayLabel(spec), axisName(a));
         full.perAxis.insert(a, schema.normalise(spec, v));
     }
     *out = full;
@@ -75,7 +76,8 @@ QByteArray frameFor(const QString& name, const ParameterValue& v)
 
 // SetFeedSpeed: "die Arbeitsgeschwindigkeit [muss] unterhalb der Startgeschwindigkeit des
 // Motors sein, da hier keine Rampe gefahren wird."
-QString checkFeedBelowStart(const QList<ElabParameterWrite>& plan, const ParameterSet& last)
+QString checkFeedBelowStart(const ParameterSchema& schema, const QList<ElabParameterWrite>& plan,
+                            const ParameterSet& last)
 {
     ParameterValue start = last.value(kStart);
     ParameterValue feed = last.value(kFeed);
@@ -90,18 +92,18 @@ QString checkFeedBelowStart(const QList<ElabParameterWrite>& plan, const Paramet
     if (!touched || feed.perAxis.isEmpty())
         return {};
     if (start.perAxis.isEmpty())
-        return ElabCtlParameters::tr(
-            "feed-speed must be below start-speed (feed mode has no ramp), but start-speed "
-            "is not known: write start-speed in the same set");
+        return ElabCtlParameters::tr("%1 must be below %2 (feed mode has no ramp), but %2 is not "
+                                     "known: write %2 in the same set")
+            .arg(schema.displayLabel(kFeed), schema.displayLabel(kStart));
     for (Axis a : ElabCtlStatusMapper::axes()) {
         const qint64 f = feed.perAxis.value(a).toLongLong();
         const qint64 s = start.perAxis.value(a).toLongLong();
         if (f >= s)
-            return ElabCtlParameters::tr(
-                       "feed-speed %1 on axis %2 must be below start-speed %3 (feed mode has no "
-                       "ramp)")
+            return ElabCtlParameters::tr("%1 %2 on axis %3 must be below %4 %5 (feed mode has no "
+                                         "ramp)")
+                .arg(schema.displayLabel(kFeed))
                 .arg(f)
-                .arg(axisName(a))
+                .arg(axisName(a), schema.displayLabel(kStart))
                 .arg(s);
     }
     return {};
@@ -142,11 +144,19 @@ QString ElabCtlParameters::plan(const ParameterSchema& schema, const ParameterSe
     }
     if (plan.size() != set.size())
         return tr("parameter set names a parameter the E-LAB board has no command for");
-    const QString rule = checkFeedBelowStart(plan, lastWritten);
+    const QString rule = checkFeedBelowStart(schema, plan, lastWritten);
     if (!rule.isEmpty())
         return rule;
     *out = plan;
     return {};
+}
+
+QString ElabCtlParameters::setupIncompleteHint()
+{
+    const ParameterSchema schema = parameterSchema();
+    return tr("write %1, %2 and %3 first")
+        .arg(schema.displayLabel(kStart), schema.displayLabel(QStringLiteral("max-speed")),
+             schema.displayLabel(QStringLiteral("acceleration")));
 }
 
 } // namespace stepdeck::elab

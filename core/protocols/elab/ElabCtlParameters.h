@@ -32,6 +32,9 @@ public:
                         const ParameterSet& lastWritten, QList<ElabParameterWrite>* plan);
     // The manual's setup order of the parameter names.
     static const QStringList& order();
+    // "write Start speed, Max speed and Acceleration first": the end of the refusals while
+    // the board reports tmInvSetup, with the parameters' translated labels.
+    static QString setupIncompleteHint();
 };
 
 } // namespace stepdeck::elab

@@ -1,4 +1,5 @@
 #include "ElabCtlStatusMapper.h"
+#include "ElabCtlParameters.h"
 #include <QCoreApplication>
 
 namespace stepdeck::elab {
@@ -111,8 +112,8 @@ QString ElabCtlStatusMapper::refusal(Rule rule, quint16 machineState, quint8 axe
     if (machineState & machine::PanicStop)
         return tr("refused: the emergency stop (tmPanicStop) is active");
     if (machineState & machine::InvSetup)
-        return tr("refused: setup incomplete (tmInvSetup): write start-speed, max-speed and "
-                  "acceleration first");
+        return tr("refused: setup incomplete (tmInvSetup): %1")
+            .arg(ElabCtlParameters::setupIncompleteHint());
     switch (rule) {
     case Rule::Move:
         if ((machineState & kLimitBits) || (axeState & axe::LimSw))

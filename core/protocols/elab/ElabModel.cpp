@@ -191,43 +191,6 @@ ModelPresentation presentation()
 }
 
 namespace {
-// Schema labels, groups, units, choices and descriptions are data (English); the UI shows them
-// through QCoreApplication::translate("Parameters", ...). Listed here so lupdate finds them.
-[[maybe_unused]] const char* const kParameterStrings[] = {
-    QT_TRANSLATE_NOOP("Parameters", "steps/s"),
-    QT_TRANSLATE_NOOP("Parameters", "Start speed"),
-    QT_TRANSLATE_NOOP("Parameters", "Speeds"),
-    QT_TRANSLATE_NOOP("Parameters", "Step rate at the start of a ramp (SetStartSpeed, <ESC>S)"),
-    QT_TRANSLATE_NOOP("Parameters", "Max speed"),
-    QT_TRANSLATE_NOOP("Parameters",
-                      "Plateau step rate of positioning and reference moves (SetMaxSpeed, <ESC>M)"),
-    QT_TRANSLATE_NOOP("Parameters", "Feed speed"),
-    QT_TRANSLATE_NOOP("Parameters", "Step rate in feed mode; must be below the start speed, feed "
-                                    "has no ramp (SetFeedSpeed, <FS>)"),
-    QT_TRANSLATE_NOOP("Parameters", "Acceleration"),
-    QT_TRANSLATE_NOOP("Parameters", "Ramp steepness of positioning moves; sensible values are 500 "
-                                    "to 2000 (SetAcceleration, <ESC>A)"),
-    QT_TRANSLATE_NOOP("Parameters", "Switch polarity"),
-    QT_TRANSLATE_NOOP("Parameters", "high"),
-    QT_TRANSLATE_NOOP("Parameters", "low"),
-    QT_TRANSLATE_NOOP("Parameters", "Limit switch polarity"),
-    QT_TRANSLATE_NOOP("Parameters", "Active level of the limit switches (SetSwitchPolarity, <SO>)"),
-    QT_TRANSLATE_NOOP("Parameters", "Reference switch polarity"),
-    QT_TRANSLATE_NOOP("Parameters",
-                      "Active level of the reference switches (SetSwitchPolarity, <DLE>)"),
-    QT_TRANSLATE_NOOP("Parameters", "Drive power"),
-    QT_TRANSLATE_NOOP("Parameters", "Power & spindle"),
-    QT_TRANSLATE_NOOP("Parameters", "%"),
-    QT_TRANSLATE_NOOP("Parameters", "Motor current for all axes; the board maps it to off (<25), "
-                                    "33 % (<50), 66 % (<75), 100 % (SetDrivePower, <STX>)"),
-    QT_TRANSLATE_NOOP("Parameters", "Spindle speed"),
-    QT_TRANSLATE_NOOP("Parameters", "rpm"),
-    QT_TRANSLATE_NOOP(
-        "Parameters",
-        "0 switches the spindle relay off, anything above switches it on (SetSpindleRPM, <SOH>)"),
-    QT_TRANSLATE_NOOP("Parameters", "Coolant"),
-    QT_TRANSLATE_NOOP("Parameters", "Coolant pump relay RS2 (SetCoolOnOff, <SI>)"),
-};
 // The registry's display name, shown through QCoreApplication::translate("Models", ...).
 [[maybe_unused]] const char* const kModelName =
     QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller");

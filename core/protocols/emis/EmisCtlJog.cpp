@@ -144,9 +144,10 @@ void EmisController::finishJogIfIdle()
             });
         } else {
             Q_EMIT errorOccurred(tr("after jogging, the work speed of axis %1 stays at %2 "
-                                    "steps/s: its value before is not known (write work-speed)")
+                                    "steps/s: its value before is not known (write %3)")
                                      .arg(axisName(axis))
-                                     .arg(m_jogSpeed.value(axis)));
+                                     .arg(m_jogSpeed.value(axis))
+                                     .arg(schema().displayLabel(QStringLiteral("work-speed"))));
         }
     }
     m_jogSpeedChanged.clear();

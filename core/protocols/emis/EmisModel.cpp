@@ -61,52 +61,84 @@ ParameterSchema parameterSchema()
 {
     using namespace limits;
     QList<ParameterSpec> specs;
-    specs << spec("start-speed", "Start speed", "Speeds", "steps/s", kSpeedMin, kSpeedMax, true,
-                  200, "Speed at which every move starts and ends its ramp (#S, 9.4)");
-    specs << spec("work-speed", "Work speed", "Speeds", "steps/s", kSpeedMin, kSpeedMax, true, 1000,
-                  "Speed of vector moves after the ramp (#E1, 9.5)");
-    specs << spec("ramp", "Ramp", "Speeds", "ms", kRampMin, kRampMax, false, 100,
-                  "Time from start speed to work speed and back, all motors (#R, 9.6)");
-    specs << spec("reference-speed", "Reference speed", "Referencing", "steps/s", kSpeedMin,
-                  kSpeedMax, false, 400,
-                  "Speed of reference runs, one value for all motors (#E9, 9.5)");
-    specs << spec("reference-offset", "Offset after referencing", "Referencing", "steps", 0,
-                  kOffsetMax, true, 10,
-                  "Steps the motor moves out of its switch after a reference run (#O, 9.10); "
-                  "not a system parameter");
-    ParameterSpec switchType = spec("reference-switch-type", "Reference switch type", "Referencing",
-                                    "", 0, 0, true, QStringLiteral("NO"),
-                                    "NO: normally open (Schließer, the default), NC: normally "
-                                    "closed (Öffner); inputs 1-4 (##REFSW, 9.14, 5.2.1)");
+    specs << spec(
+        "start-speed", QT_TRANSLATE_NOOP("Parameters", "Start speed"),
+        QT_TRANSLATE_NOOP("Parameters", "Speeds"), QT_TRANSLATE_NOOP("Parameters", "steps/s"),
+        kSpeedMin, kSpeedMax, true, 200,
+        QT_TRANSLATE_NOOP("Parameters",
+                          "Speed at which every move starts and ends its ramp (#S, 9.4)"));
+    specs << spec(
+        "work-speed", QT_TRANSLATE_NOOP("Parameters", "Work speed"),
+        QT_TRANSLATE_NOOP("Parameters", "Speeds"), QT_TRANSLATE_NOOP("Parameters", "steps/s"),
+        kSpeedMin, kSpeedMax, true, 1000,
+        QT_TRANSLATE_NOOP("Parameters", "Speed of vector moves after the ramp (#E1, 9.5)"));
+    specs << spec(
+        "ramp", QT_TRANSLATE_NOOP("Parameters", "Ramp"), QT_TRANSLATE_NOOP("Parameters", "Speeds"),
+        QT_TRANSLATE_NOOP("Parameters", "ms"), kRampMin, kRampMax, false, 100,
+        QT_TRANSLATE_NOOP("Parameters",
+                          "Time from start speed to work speed and back, all motors (#R, 9.6)"));
+    specs << spec(
+        "reference-speed", QT_TRANSLATE_NOOP("Parameters", "Reference speed"),
+        QT_TRANSLATE_NOOP("Parameters", "Referencing"), QT_TRANSLATE_NOOP("Parameters", "steps/s"),
+        kSpeedMin, kSpeedMax, false, 400,
+        QT_TRANSLATE_NOOP("Parameters",
+                          "Speed of reference runs, one value for all motors (#E9, 9.5)"));
+    specs << spec("reference-offset", QT_TRANSLATE_NOOP("Parameters", "Offset after referencing"),
+                  QT_TRANSLATE_NOOP("Parameters", "Referencing"),
+                  QT_TRANSLATE_NOOP("Parameters", "steps"), 0, kOffsetMax, true, 10,
+                  QT_TRANSLATE_NOOP(
+                      "Parameters",
+                      "Steps the motor moves out of its switch after a reference run (#O, 9.10); "
+                      "not a system parameter"));
+    ParameterSpec switchType = spec(
+        "reference-switch-type", QT_TRANSLATE_NOOP("Parameters", "Reference switch type"),
+        QT_TRANSLATE_NOOP("Parameters", "Referencing"), "", 0, 0, true, QStringLiteral("NO"),
+        QT_TRANSLATE_NOOP("Parameters", "NO: normally open (Schließer, the default), NC: normally "
+                                        "closed (Öffner); inputs 1-4 (##REFSW, 9.14, 5.2.1)"));
     switchType.type = ParameterType::Choice;
-    switchType.choices = {QStringLiteral("NO"), QStringLiteral("NC")};
-    switchType.warning = QStringLiteral(
+    switchType.choices = {QString::fromUtf8(QT_TRANSLATE_NOOP("Parameters", "NO")),
+                          QString::fromUtf8(QT_TRANSLATE_NOOP("Parameters", "NC"))};
+    switchType.warning = QStringLiteral(QT_TRANSLATE_NOOP(
+        "Parameters",
         "The type must match the wired switches, or reference runs end in the wrong place. It "
-        "is stored in the board's system parameters and kept after power-off.");
+        "is stored in the board's system parameters and kept after power-off."));
     specs << switchType;
 
     ParameterSpec resolution =
-        spec("step-resolution", "Step resolution", "Drive", "microsteps", 0, 0, true,
-             QStringLiteral("16"), "Microsteps per full step (D, 9.7)");
+        spec("step-resolution", QT_TRANSLATE_NOOP("Parameters", "Step resolution"),
+             QT_TRANSLATE_NOOP("Parameters", "Drive"),
+             QT_TRANSLATE_NOOP("Parameters", "microsteps"), 0, 0, true, QStringLiteral("16"),
+             QT_TRANSLATE_NOOP("Parameters", "Microsteps per full step (D, 9.7)"));
     resolution.type = ParameterType::Choice;
     for (int v = 1; v <= 256; v *= 2)
         resolution.choices << QString::number(v);
-    resolution.warning = QStringLiteral(
+    resolution.warning = QStringLiteral(QT_TRANSLATE_NOOP(
+        "Parameters",
         "Changes the length of a step: every position, distance and speed in steps changes its "
-        "meaning.");
+        "meaning."));
     specs << resolution;
-    ParameterSpec run = spec("run-current", "Run current", "Drive", "%", 0, kRunCurrentMax, true,
-                             100, "Motor current while moving, % of the driver's rating (c, 9.8)");
-    run.warning =
-        QStringLiteral("A current above the motor's rating overheats motor and driver stage.");
+    ParameterSpec run =
+        spec("run-current", QT_TRANSLATE_NOOP("Parameters", "Run current"),
+             QT_TRANSLATE_NOOP("Parameters", "Drive"), QT_TRANSLATE_NOOP("Parameters", "%"), 0,
+             kRunCurrentMax, true, 100,
+             QT_TRANSLATE_NOOP("Parameters",
+                               "Motor current while moving, % of the driver's rating (c, 9.8)"));
+    run.warning = QString::fromUtf8(QT_TRANSLATE_NOOP(
+        "Parameters", "A current above the motor's rating overheats motor and driver stage."));
     specs << run;
-    specs << spec("idle-current", "Idle current", "Drive", "%", 0, kIdleCurrentMax, true, 20,
-                  "Motor current at standstill, % of the driver's rating (c, 9.8); 0 leaves the "
-                  "motor without holding torque");
-    ParameterSpec interpolation =
-        spec("interpolation", "Interpolation", "Drive", "", 0, 0, false, true,
-             "On: the axes of a vector move arrive together; off: each "
-             "axis moves at its own speed (IP, 9.12)");
+    specs << spec(
+        "idle-current", QT_TRANSLATE_NOOP("Parameters", "Idle current"),
+        QT_TRANSLATE_NOOP("Parameters", "Drive"), QT_TRANSLATE_NOOP("Parameters", "%"), 0,
+        kIdleCurrentMax, true, 20,
+        QT_TRANSLATE_NOOP(
+            "Parameters",
+            "Motor current at standstill, % of the driver's rating (c, 9.8); 0 leaves the "
+            "motor without holding torque"));
+    ParameterSpec interpolation = spec(
+        "interpolation", QT_TRANSLATE_NOOP("Parameters", "Interpolation"),
+        QT_TRANSLATE_NOOP("Parameters", "Drive"), "", 0, 0, false, true,
+        QT_TRANSLATE_NOOP("Parameters", "On: the axes of a vector move arrive together; off: each "
+                                        "axis moves at its own speed (IP, 9.12)"));
     interpolation.type = ParameterType::Boolean;
     specs << interpolation;
     return ParameterSchema(specs);

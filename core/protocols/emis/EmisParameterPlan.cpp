@@ -1,4 +1,5 @@
 #include "EmisParameterPlan.h"
+#include "EmisModel.h"
 #include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
@@ -258,9 +259,10 @@ ParameterSet storedValues(const SystemParameters& stored, QStringList* notes)
                 same = same && v == first;
             out.insert(QStringLiteral("reference-speed"), ParameterValue{first, {}});
             if (!same && notes) {
-                *notes << ParameterPlan::tr(
-                              "reference-speed is stored per motor (%1); %2 is the first")
-                              .arg(QString::fromLatin1(formatSystemEntry(*e)))
+                *notes << ParameterPlan::tr("%1 is stored per motor (%2); %3 is the first")
+                              .arg(
+                                  parameterSchema().displayLabel(QStringLiteral("reference-speed")),
+                                  QString::fromLatin1(formatSystemEntry(*e)))
                               .arg(first);
             }
             break;

@@ -131,8 +131,8 @@ NanotecController::Step NanotecController::verifyStep(Axis axis, const ParamDef&
             done({ErrorKind::VerifyFailed,
                   tr("%1 on %2: wrote %3, but the drive kept %4 (drives echo invalid values and "
                      "silently ignore them)")
-                      .arg(def.spec.name, driveName(axis), text(fromWire(def, expected)),
-                           text(fromWire(def, *got)))});
+                      .arg(ParameterSchema::displayLabel(def.spec), driveName(axis),
+                           text(fromWire(def, expected)), text(fromWire(def, *got)))});
         });
     };
 }
@@ -169,10 +169,12 @@ QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, i
             if (o == NanotecBus::Outcome::Cancelled)
                 return done({ErrorKind::Cancelled, tr("cancelled")});
             if (o != NanotecBus::Outcome::Timeout)
-                return done({ErrorKind::Refused,
-                             tr("motor-address %1 is already used by another drive on the bus; "
-                                "no communication would be possible (manual 5.4)")
-                                 .arg(address)});
+                return done(
+                    {ErrorKind::Refused, tr("%1 %2 is already used by another drive on the bus; no "
+                                            "communication would be possible (manual 5.4)")
+                                             .arg(ParameterSchema::displayLabel(
+                                                 findParam(QStringLiteral("motor-address"))->spec))
+                                             .arg(address)});
             done({});
         };
         m_bus->submit(probe);
@@ -184,18 +186,22 @@ QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, i
         const Check same = [this, axis, address](const Reply& r) {
             if (r.value == address)
                 return Failure{};
-            return Failure{ErrorKind::VerifyFailed, tr("%1 reports motor-address %2, not %3")
-                                                        .arg(driveName(axis))
-                                                        .arg(r.value.value_or(-1))
-                                                        .arg(address)};
+            return Failure{
+                ErrorKind::VerifyFailed,
+                tr("%1 reports %2 %3, not %4")
+                    .arg(driveName(axis), ParameterSchema::displayLabel(
+                                              findParam(QStringLiteral("motor-address"))->spec))
+                    .arg(r.value.value_or(-1))
+                    .arg(address)};
         };
         exchange(axis, "Zm", same, NanotecBus::Priority::Command, 1)([=](const Failure& f) {
             if (f.kind != ErrorKind::Timeout)
                 return done(f);
             m_drives[axis].address = *old; // the drive ignored it and stayed where it was
             done({ErrorKind::VerifyFailed,
-                  tr("%1 did not take motor-address %2: nothing answers there")
-                      .arg(driveName(axis))
+                  tr("%1 did not take %2 %3: nothing answers there")
+                      .arg(driveName(axis), ParameterSchema::displayLabel(
+                                                findParam(QStringLiteral("motor-address"))->spec))
                       .arg(address)});
         });
     };
@@ -257,7 +263,9 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
         for (const Drive& d : m_drives) {
             if (d.address == it.key() && d.axis != it.value())
                 return finishError(id, ErrorKind::InvalidValue,
-                                   tr("motor-address %1 is already used by %2")
+                                   tr("%1 %2 is already used by %3")
+                                       .arg(ParameterSchema::displayLabel(
+                                           findParam(QStringLiteral("motor-address"))->spec))
                                        .arg(it.key())
                                        .arg(driveName(d.axis)));
         }
@@ -281,7 +289,8 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
                 last << motorAddressSteps(a.key(), int(wire), verify);
                 continue;
             }
-            const QString label = tr("%1 (%2)").arg(def.spec.name, driveName(a.key()));
+            const QString label =
+                tr("%1 (%2)").arg(ParameterSchema::displayLabel(def.spec), driveName(a.key()));
             steps <<
                 [this, written, label, step = writeStep(a.key(), def, wire)](const Done& done) {
                     step([written, label, done](const Failure& f) {

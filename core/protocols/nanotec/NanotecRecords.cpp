@@ -106,8 +106,8 @@ void NanotecController::writeRecord(RequestId id, Axis axis, int record, const Q
                 return done({ErrorKind::VerifyFailed,
                              tr("record %1 of %2: %3 is %4 in the EEPROM, not %5")
                                  .arg(record)
-                                 .arg(driveName(axis), it.key(), stored->value(it.key()).toString(),
-                                      want.toString())});
+                                 .arg(driveName(axis), ParameterSchema::displayLabel(def->spec),
+                                      stored->value(it.key()).toString(), want.toString())});
         }
         done({});
     };

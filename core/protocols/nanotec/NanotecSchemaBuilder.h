@@ -1,5 +1,9 @@
 #pragma once
-// Internal to the schema table (NanotecSchema.cpp, NanotecSchemaMore.cpp).
+// Internal to the schema table (NanotecSchema.cpp, NanotecSchemaMore.cpp). Labels, groups,
+// units, words of choices, descriptions and warnings are written inside
+// QT_TRANSLATE_NOOP("Parameters", ...) where the table names them, so lupdate files them under
+// the context ParameterSchema::displayText() translates them with. Numeric choices ("16") and
+// parameter names stay unmarked: they are not translated.
 #include "NanotecSchema.h"
 
 namespace stepdeck::nanotec::schema {
@@ -16,9 +20,9 @@ struct Builder
     {
         ParamDef d;
         d.spec.name = QString::fromLatin1(name);
-        d.spec.label = QString::fromLatin1(label);
+        d.spec.label = QString::fromUtf8(label);
         d.spec.group = group;
-        d.spec.unit = QString::fromLatin1(unit);
+        d.spec.unit = QString::fromUtf8(unit);
         d.spec.type = ParameterType::Integer;
         d.spec.minimum = min;
         d.spec.maximum = max;
@@ -26,7 +30,7 @@ struct Builder
         d.spec.readable = true;
         d.spec.writable = read == Read::Z || read == Read::Long;
         d.spec.defaultValue = def;
-        d.spec.description = QString::fromLatin1(desc);
+        d.spec.description = QString::fromUtf8(desc);
         d.cmd = cmd;
         d.read = read;
         defs << d;
@@ -39,10 +43,10 @@ struct Builder
         ParamDef& d = add(name, label, cmd, 0, 0, "", 0, desc, read);
         d.spec.type = ParameterType::Choice;
         for (const auto& e : entries) {
-            d.spec.choices << QString::fromLatin1(e.first);
+            d.spec.choices << QString::fromUtf8(e.first);
             d.choiceValues << e.second;
         }
-        d.spec.defaultValue = QString::fromLatin1(def);
+        d.spec.defaultValue = QString::fromUtf8(def);
         return d;
     }
     ParamDef& boolean(const char* name, const char* label, const char* cmd, bool def,

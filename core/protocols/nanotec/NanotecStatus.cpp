@@ -115,9 +115,12 @@ void NanotecController::applyStatusWord(Drive& d, qint64 word)
     }
     if (s.positionError && !d.positionErrorReported) {
         d.positionErrorReported = true;
-        Q_EMIT errorOccurred(tr("%1 reports a position error (encoder deviation above "
-                                "max-encoder-deviation); reset it with reset-position-error")
-                                 .arg(driveName(d.axis)));
+        Q_EMIT errorOccurred(
+            tr("%1 reports a position error (encoder deviation above %2); reset it with "
+               "reset-position-error")
+                .arg(driveName(d.axis),
+                     ParameterSchema::displayLabel(
+                         findParam(QStringLiteral("max-encoder-deviation"))->spec)));
     }
     if (!s.positionError)
         d.positionErrorReported = false;

@@ -5,4 +5,3 @@ stepdeck_add_test(tst_emiscontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emisc
 stepdeck_add_test(tst_emiscontrollermotion SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emiscontrollermotion.cpp ${CMAKE_CURRENT_LIST_DIR}/EmisControllerRig.h LABELS unit)
 stepdeck_add_test(tst_emis_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emis_e2e.cpp LABELS integration)
 stepdeck_add_test(tst_emismodel SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emismodel.cpp LABELS unit)
-target_compile_definitions(tst_emismodel PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")

@@ -1,42 +1,9 @@
-// The SMC-IC4 model data: line settings, capabilities, the schema's ranges and German words
-// (the UI translates them through the "Parameters" context; EmisParameterStrings.cpp lists
-// them for lupdate), and the console notation.
+// The SMC-IC4 model data: line settings, capabilities, the schema's ranges and the console
+// notation (that every schema word has a German translation: tst_translations).
 #include "protocols/emis/EmisModel.h"
-#include <QFile>
-#include <QSet>
-#include <QXmlStreamReader>
 #include <QtTest>
 
 using namespace stepdeck;
-
-namespace {
-QSet<QString> translatedParameterStrings(const QString& path)
-{
-    QSet<QString> out;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return out;
-    QXmlStreamReader xml(&file);
-    QString context, source;
-    while (!xml.atEnd()) {
-        xml.readNext();
-        if (!xml.isStartElement())
-            continue;
-        if (xml.name() == QLatin1String("name")) {
-            context = xml.readElementText();
-        } else if (xml.name() == QLatin1String("source")) {
-            source = xml.readElementText();
-        } else if (xml.name() == QLatin1String("translation")) {
-            const bool unfinished =
-                xml.attributes().value(QLatin1String("type")) == QLatin1String("unfinished");
-            const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
-            if (context == QLatin1String("Parameters") && !unfinished && !text.isEmpty())
-                out.insert(source);
-        }
-    }
-    return out;
-}
-} // namespace
 
 class TestEmisModel : public QObject
 {
@@ -45,7 +12,6 @@ private Q_SLOTS:
     void line_115200_8N1();
     void capabilities_noStop_fourAxes_io();
     void schema_rangesFromManual();
-    void schemaStrings_allTranslatedInGerman();
     void traffic_controlNames_roundTrip();
     void traffic_badNotation_refused();
     void presentation_checksProgramCommands();
@@ -91,24 +57,6 @@ void TestEmisModel::schema_rangesFromManual()
     QVERIFY(schema.find("reference-switch-type")->perAxis);
     for (const ParameterSpec& spec : schema.specs())
         QVERIFY2(!spec.readable, qPrintable(spec.name)); // working values: no read command
-}
-
-void TestEmisModel::schemaStrings_allTranslatedInGerman()
-{
-    const QSet<QString> translated = translatedParameterStrings(
-        QStringLiteral(STEPDECK_SOURCE_DIR "/translations/stepdeck_de.ts"));
-    QVERIFY(translated.size() > 50);
-    QStringList missing;
-    const ParameterSchema schema = emis::parameterSchema();
-    for (const ParameterSpec& spec : schema.specs()) {
-        QStringList words{spec.group, spec.label, spec.unit, spec.description, spec.warning};
-        words << spec.choices;
-        for (const QString& w : std::as_const(words)) {
-            if (!w.isEmpty() && !translated.contains(w) && !missing.contains(w))
-                missing << w;
-        }
-    }
-    QVERIFY2(missing.isEmpty(), qPrintable(missing.join(" | ")));
 }
 
 void TestEmisModel::traffic_controlNames_roundTrip()
