@@ -1,4 +1,5 @@
 #include "CliOutput.h"
+#include "CliText.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QJsonDocument>
@@ -7,14 +8,9 @@
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 QString yesNo(bool value)
 {
-    return value ? tr("yes") : tr("no");
+    return value ? CliText::tr("yes") : CliText::tr("no");
 }
 
 QString positionText(const AxisStatus& axis)
@@ -23,9 +19,9 @@ QString positionText(const AxisStatus& axis)
     // jog and velocity moves are integrated from the commanded rates.
     QStringList marks;
     if (!axis.positionKnown)
-        marks << tr("unknown: not referenced");
+        marks << CliText::tr("unknown: not referenced");
     if (axis.positionEstimated)
-        marks << tr("estimated");
+        marks << CliText::tr("estimated");
     const QString text = QString::number(axis.position);
     return marks.isEmpty() ? text
                            : QStringLiteral("%1 (%2)").arg(text, marks.join(QStringLiteral("; ")));
@@ -84,27 +80,28 @@ int exitCodeFor(ErrorKind kind)
 
 QString exitCodeHelp()
 {
-    return tr("Exit codes:\n"
-              "   0  success\n"
-              "   1  other failure\n"
-              "   2  usage: unknown command or option, malformed arguments, unknown model\n"
-              "   3  refused: not sent, the manual forbids it now (limit switch, not idle,\n"
-              "      setup incomplete, position unknown, ...)\n"
-              "   4  NAK: the device refused the command; stderr names the decoded status bits\n"
-              "   5  timeout: no reply in time\n"
-              "   6  link down: could not connect, or the link was lost (also a controller\n"
-              "      that stopped answering during any command)\n"
-              "   7  invalid value: out of range or wrong type (names parameter and range);\n"
-              "      also a parameter file whose content does not validate; nothing was sent\n"
-              "   8  unsupported: the model cannot do this (e.g. read a parameter back)\n"
-              "   9  protocol: malformed reply from the device\n"
-              "  10  cancelled: dropped by stop, panic or disconnect before it was sent\n"
-              "  11  verify failed: written, but the read-back differs\n"
-              "  12  file: cannot read or write the file, or it is not JSON\n"
-              "  13  motion aborted: a move ended on a limit switch or an emergency stop\n"
-              " 130  interrupted (SIGINT/SIGTERM/SIGHUP): motion was stopped (a ramped stop;\n"
-              "      the message says whether the controller acknowledged it), then the CLI\n"
-              "      quit\n");
+    return CliText::tr(
+        "Exit codes:\n"
+        "   0  success\n"
+        "   1  other failure\n"
+        "   2  usage: unknown command or option, malformed arguments, unknown model\n"
+        "   3  refused: not sent, the manual forbids it now (limit switch, not idle,\n"
+        "      setup incomplete, position unknown, ...)\n"
+        "   4  NAK: the device refused the command; stderr names the decoded status bits\n"
+        "   5  timeout: no reply in time\n"
+        "   6  link down: could not connect, or the link was lost (also a controller\n"
+        "      that stopped answering during any command)\n"
+        "   7  invalid value: out of range or wrong type (names parameter and range);\n"
+        "      also a parameter file whose content does not validate; nothing was sent\n"
+        "   8  unsupported: the model cannot do this (e.g. read a parameter back)\n"
+        "   9  protocol: malformed reply from the device\n"
+        "  10  cancelled: dropped by stop, panic or disconnect before it was sent\n"
+        "  11  verify failed: written, but the read-back differs\n"
+        "  12  file: cannot read or write the file, or it is not JSON\n"
+        "  13  motion aborted: a move ended on a limit switch or an emergency stop\n"
+        " 130  interrupted (SIGINT/SIGTERM/SIGHUP): motion was stopped (a ramped stop;\n"
+        "      the message says whether the controller acknowledged it), then the CLI\n"
+        "      quit\n");
 }
 
 Outcome Outcome::from(const CommandResult& result)
@@ -136,7 +133,7 @@ void printError(const QString& message)
 {
     QString line = message.simplified();
     if (line.isEmpty())
-        line = tr("failed");
+        line = CliText::tr("failed");
     const QByteArray bytes = QStringLiteral("stepdeck-cli: %1\n").arg(line).toUtf8();
     std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
     std::fflush(stderr);
@@ -148,9 +145,10 @@ QString driveLabel(const DriveStatus& drive)
     QStringList axes;
     for (Axis a : drive.axes)
         axes << axisName(a);
-    return axes.isEmpty()
-               ? tr("drive %1").arg(drive.address)
-               : tr("drive %1 (axis %2)").arg(drive.address).arg(axes.join(QLatin1Char(',')));
+    return axes.isEmpty() ? CliText::tr("drive %1").arg(drive.address)
+                          : CliText::tr("drive %1 (axis %2)")
+                                .arg(drive.address)
+                                .arg(axes.join(QLatin1Char(',')));
 }
 
 // "Drives: 2 of 3 answering; silent: drive 2 (axis Y)" and one row per drive.
@@ -162,12 +160,12 @@ QStringList driveLines(const QList<DriveStatus>& drives)
             silent << driveLabel(d);
     }
     QStringList lines;
-    lines << (silent.isEmpty() ? tr("Drives:       %1 answering").arg(drives.size())
-                               : tr("Drives:       %1 of %2 answering; NOT ANSWERING: %3")
+    lines << (silent.isEmpty() ? CliText::tr("Drives:       %1 answering").arg(drives.size())
+                               : CliText::tr("Drives:       %1 of %2 answering; NOT ANSWERING: %3")
                                      .arg(drives.size() - silent.size())
                                      .arg(drives.size())
                                      .arg(silent.join(QStringLiteral(", "))));
-    lines << tr("Drive  Axes  Responding  Firmware                    State");
+    lines << CliText::tr("Drive  Axes  Responding  Firmware                    State");
     for (const DriveStatus& d : drives) {
         QStringList axes;
         for (Axis a : d.axes)
@@ -175,7 +173,7 @@ QStringList driveLines(const QList<DriveStatus>& drives)
         lines << QStringLiteral("%1  %2  %3  %4  %5")
                      .arg(d.address, -5)
                      .arg(axes.join(QLatin1Char(',')), -4)
-                     .arg(d.responding ? tr("yes") : tr("NO"), -10)
+                     .arg(d.responding ? CliText::tr("yes") : CliText::tr("NO"), -10)
                      .arg(d.firmware.isEmpty() ? QStringLiteral("-") : d.firmware, -26)
                      .arg(d.detail.isEmpty() ? QStringLiteral("-") : d.detail);
     }
@@ -188,57 +186,59 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
                      const QString& linkState)
 {
     QStringList machine;
-    machine << (status.driveOn ? tr("drive on") : tr("drive off"));
+    machine << (status.driveOn ? CliText::tr("drive on") : CliText::tr("drive off"));
     if (status.spindleOn)
-        machine << tr("spindle on");
+        machine << CliText::tr("spindle on");
     if (status.busy)
-        machine << tr("busy");
+        machine << CliText::tr("busy");
     if (status.setupIncomplete)
-        machine << tr("SETUP INCOMPLETE (write start-speed, max-speed and acceleration)");
+        machine << CliText::tr("SETUP INCOMPLETE (write start-speed, max-speed and acceleration)");
     if (status.overTemperature)
-        machine << tr("OVER TEMPERATURE");
+        machine << CliText::tr("OVER TEMPERATURE");
     if (status.panic)
-        machine << tr("EMERGENCY STOP ACTIVE");
+        machine << CliText::tr("EMERGENCY STOP ACTIVE");
     if (status.commFault)
-        machine << tr("COMMUNICATION FAULT");
+        machine << CliText::tr("COMMUNICATION FAULT");
     if (status.motionUnconfirmed)
-        machine << tr("MOTION UNCONFIRMED (an axis may still be moving)");
+        machine << CliText::tr("MOTION UNCONFIRMED (an axis may still be moving)");
 
     QStringList lines;
-    lines << tr("Model:        %1 (%2)").arg(model.id, model.displayName);
-    lines << tr("Port:         %1 (%2)").arg(port, linkState);
-    lines << tr("Machine:      %1").arg(machine.join(QStringLiteral(", ")));
+    lines << CliText::tr("Model:        %1 (%2)").arg(model.id, model.displayName);
+    lines << CliText::tr("Port:         %1 (%2)").arg(port, linkState);
+    lines << CliText::tr("Machine:      %1").arg(machine.join(QStringLiteral(", ")));
     if (capabilities.temperature || status.temperatureCelsius) {
-        lines << tr("Temperature:  %1")
+        lines << CliText::tr("Temperature:  %1")
                      .arg(status.temperatureCelsius
-                              ? tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
-                              : tr("not reported"));
+                              ? CliText::tr("%1 °C").arg(*status.temperatureCelsius, 0, 'f', 1)
+                              : CliText::tr("not reported"));
     }
     if (!status.deviceFirmware.isEmpty())
-        lines << tr("Firmware:     %1").arg(status.deviceFirmware);
+        lines << CliText::tr("Firmware:     %1").arg(status.deviceFirmware);
     if (status.startButton)
-        lines << tr("Start button: %1").arg(*status.startButton ? tr("pressed") : tr("released"));
+        lines << CliText::tr("Start button: %1")
+                     .arg(*status.startButton ? CliText::tr("pressed") : CliText::tr("released"));
     if (status.inputs) {
         QString levels;
         for (bool level : *status.inputs)
             levels += level ? QLatin1Char('1') : QLatin1Char('0');
-        lines << tr("Inputs:       %1 (input 1 first)").arg(levels);
+        lines << CliText::tr("Inputs:       %1 (input 1 first)").arg(levels);
     }
     if (!status.outputs.isEmpty()) {
         QStringList states;
         for (int i = 0; i < status.outputs.size(); ++i) {
             const auto& o = status.outputs[i];
-            states << QStringLiteral("%1:%2").arg(i + 1).arg(!o ? QStringLiteral("?")
-                                                                : (*o ? tr("on") : tr("off")));
+            states << QStringLiteral("%1:%2").arg(i + 1).arg(
+                !o ? QStringLiteral("?") : (*o ? CliText::tr("on") : CliText::tr("off")));
         }
-        lines << tr("Outputs:      %1 (? = not switched in this session)")
+        lines << CliText::tr("Outputs:      %1 (? = not switched in this session)")
                      .arg(states.join(QLatin1Char(' ')));
     }
     if (status.doorOpen)
-        lines << tr("Door:         %1").arg(*status.doorOpen ? tr("OPEN") : tr("closed"));
+        lines << CliText::tr("Door:         %1")
+                     .arg(*status.doorOpen ? CliText::tr("OPEN") : CliText::tr("closed"));
     if (capabilities.multiDrive && !status.drives.isEmpty())
         lines << driveLines(status.drives);
-    lines << tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");
+    lines << CliText::tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");
     for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it) {
         const AxisStatus& a = it.value();
         lines << QStringLiteral("%1  %2  %3  %4  %5  %6  %7")
@@ -254,7 +254,7 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
     for (auto it = status.raw.cbegin(); it != status.raw.cend(); ++it)
         raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.key(), it.value(), model));
     if (!raw.isEmpty())
-        lines << tr("Raw:          %1").arg(raw.join(QStringLiteral(" ")));
+        lines << CliText::tr("Raw:          %1").arg(raw.join(QStringLiteral(" ")));
     return lines.join(QLatin1Char('\n'));
 }
 

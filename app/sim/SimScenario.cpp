@@ -12,11 +12,6 @@
 namespace stepdeck::simapp {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-sim", text);
-}
-
 bool takeValue(const QStringList& args, int* i, QString* value, QString* error)
 {
     const QString& arg = args.at(*i);
@@ -26,7 +21,7 @@ bool takeValue(const QStringList& args, int* i, QString* value, QString* error)
         return true;
     }
     if (*i + 1 >= args.size()) {
-        *error = tr("option %1 needs a value").arg(arg);
+        *error = SimText::tr("option %1 needs a value").arg(arg);
         return false;
     }
     *value = args.at(++*i);
@@ -53,8 +48,9 @@ bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* er
         okMax = numbers::parseInteger(range[1], &limit.maximum) == NumberError::None;
     }
     if (!axis || !okMin || !okMax || limit.minimum >= limit.maximum) {
-        *error = tr("--limit expects AXIS=MIN:MAX with MIN < MAX, e.g. X=-1000:1000, got '%1'")
-                     .arg(text);
+        *error =
+            SimText::tr("--limit expects AXIS=MIN:MAX with MIN < MAX, e.g. X=-1000:1000, got '%1'")
+                .arg(text);
         return false;
     }
     limits->insert(*axis, limit);
@@ -69,7 +65,7 @@ bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* 
     qint64 steps = 0;
     const bool ok = numbers::parseInteger(text.mid(eq + 1), &steps) == NumberError::None;
     if (!axis || !ok) {
-        *error = tr("%1 expects AXIS=STEPS, e.g. X=500, got '%2'").arg(option, text);
+        *error = SimText::tr("%1 expects AXIS=STEPS, e.g. X=500, got '%2'").arg(option, text);
         return false;
     }
     positions->insert(*axis, steps);
@@ -80,7 +76,8 @@ bool parsePosition(const QString& text, QMap<Axis, qint64>* positions, QString* 
 bool parseProbability(const QString& option, const QString& text, double* value, QString* error)
 {
     if (numbers::parseReal(text, value) != NumberError::None || *value < 0 || *value > 1) {
-        *error = tr("%1 expects a probability from 0 to 1 (e.g. 0.01), got '%2'").arg(option, text);
+        *error = SimText::tr("%1 expects a probability from 0 to 1 (e.g. 0.01), got '%2'")
+                     .arg(option, text);
         return false;
     }
     return true;
@@ -104,7 +101,8 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
     if (name == QLatin1String("--noise")) {
         if (numbers::parseReal(value, &s->noiseBytesPerSecond) != NumberError::None ||
             s->noiseBytesPerSecond < 0 || s->noiseBytesPerSecond > 100000) {
-            *error = tr("--noise expects bytes per second from 0 to 100000, got '%1'").arg(value);
+            *error = SimText::tr("--noise expects bytes per second from 0 to 100000, got '%1'")
+                         .arg(value);
             return false;
         }
         return true;
@@ -112,7 +110,8 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
     if (name == QLatin1String("--freeze-after")) {
         if (numbers::parseInteger(value, 0, std::numeric_limits<int>::max(), &s->freezeAfterMs) !=
             NumberError::None) {
-            *error = tr("--freeze-after expects milliseconds (0 or more), got '%1'").arg(value);
+            *error =
+                SimText::tr("--freeze-after expects milliseconds (0 or more), got '%1'").arg(value);
             return false;
         }
         return true;
@@ -120,7 +119,7 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
     qint64 seed = 0;
     if (numbers::parseInteger(value, 0, std::numeric_limits<quint32>::max(), &seed) !=
         NumberError::None) {
-        *error = tr("--seed expects a number from 0 to %1, got '%2'")
+        *error = SimText::tr("--seed expects a number from 0 to %1, got '%2'")
                      .arg(std::numeric_limits<quint32>::max())
                      .arg(value);
         return false;
@@ -134,7 +133,8 @@ bool parseSpeed(const QString& text, std::optional<double>* speed, QString* erro
     double value = 0;
     if (numbers::parseReal(text, &value) != NumberError::None || !qIsFinite(value) || value < 1 ||
         value > 1e7) {
-        *error = tr("--speed expects units per second from 1 to 10000000, got '%1'").arg(text);
+        *error =
+            SimText::tr("--speed expects units per second from 1 to 10000000, got '%1'").arg(text);
         return false;
     }
     *speed = value;
@@ -170,7 +170,8 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
             for (const QString& part : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
                 int address = 0;
                 if (numbers::parseInt(part, 0, 255, &address) != NumberError::None) {
-                    *error = tr("--drives expects addresses like 1,2,3, got '%1'").arg(value);
+                    *error =
+                        SimText::tr("--drives expects addresses like 1,2,3, got '%1'").arg(value);
                     return false;
                 }
                 s.drives << address;
@@ -180,7 +181,8 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
                 return false;
             int celsius = 0;
             if (numbers::parseInt(value, -273, 1000, &celsius) != NumberError::None) {
-                *error = tr("--temperature expects whole degrees Celsius, got '%1'").arg(value);
+                *error =
+                    SimText::tr("--temperature expects whole degrees Celsius, got '%1'").arg(value);
                 return false;
             }
             s.temperature = celsius;
@@ -202,7 +204,7 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--garbage")) {
             s.garbage = true;
         } else {
-            *error = tr("unknown argument '%1' (try --help)").arg(args.at(i));
+            *error = SimText::tr("unknown argument '%1' (try --help)").arg(args.at(i));
             return false;
         }
     }
@@ -212,40 +214,41 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
 
 QString simUsage()
 {
-    return tr("Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
-              "\n"
-              "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
-              "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
-              "until SIGINT/SIGTERM.\n"
-              "\n"
-              "Options:\n"
-              "  --model MODEL      controller model (default elab)\n"
-              "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
-              "  --pace             release replies at the line's character rate (57600 8N2\n"
-              "                     for elab), so timing is like a real serial line\n"
-              "  --setup-complete   start with start/max speed and acceleration written\n"
-              "                     (the board powers on with setup incomplete)\n"
-              "  --temperature C    board temperature (above 50 sets over-temperature)\n"
-              "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-              "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
-              "                     from the reference switch; laser-axis: units from the\n"
-              "                     home switch)\n"
-              "\n"
-              "laser-axis only:\n"
-              "  --speed UNITS      axis speed in position units per second (default 10000)\n"
-              "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
-              "  --silent           the axes move but never send a status frame\n"
-              "  --garbage          a malformed line before every status frame\n"
-              "\n"
-              "Faults (random, reproducible with the same --seed and the same traffic):\n"
-              "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
-              "  --corrupt P        each reply has one random byte replaced with probability P\n"
-              "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
-              "                     inside replies\n"
-              "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
-              "                     all while the terminal stays open (a frozen peer)\n"
-              "  --seed N           seed of the fault generator (default 1)\n"
-              "  --help, --version\n");
+    return SimText::tr(
+        "Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
+        "\n"
+        "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
+        "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
+        "until SIGINT/SIGTERM.\n"
+        "\n"
+        "Options:\n"
+        "  --model MODEL      controller model (default elab)\n"
+        "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
+        "  --pace             release replies at the line's character rate (57600 8N2\n"
+        "                     for elab), so timing is like a real serial line\n"
+        "  --setup-complete   start with start/max speed and acceleration written\n"
+        "                     (the board powers on with setup incomplete)\n"
+        "  --temperature C    board temperature (above 50 sets over-temperature)\n"
+        "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
+        "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
+        "                     from the reference switch; laser-axis: units from the\n"
+        "                     home switch)\n"
+        "\n"
+        "laser-axis only:\n"
+        "  --speed UNITS      axis speed in position units per second (default 10000)\n"
+        "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
+        "  --silent           the axes move but never send a status frame\n"
+        "  --garbage          a malformed line before every status frame\n"
+        "\n"
+        "Faults (random, reproducible with the same --seed and the same traffic):\n"
+        "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
+        "  --corrupt P        each reply has one random byte replaced with probability P\n"
+        "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
+        "                     inside replies\n"
+        "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
+        "                     all while the terminal stays open (a frozen peer)\n"
+        "  --seed N           seed of the fault generator (default 1)\n"
+        "  --help, --version\n");
 }
 
 void applyFaults(const SimScenario& scenario, Simulator* simulator)
@@ -262,8 +265,9 @@ namespace {
 bool applyEmisScenario(const SimScenario& scenario, emis::EmisSimulator* sim, QString* error)
 {
     if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
-        *error = tr("--setup-complete, --temperature and --limit are not supported for model "
-                    "emis");
+        *error =
+            SimText::tr("--setup-complete, --temperature and --limit are not supported for model "
+                        "emis");
         return false;
     }
     for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
@@ -275,13 +279,14 @@ bool applyEmisScenario(const SimScenario& scenario, emis::EmisSimulator* sim, QS
 bool applyLaserScenario(const SimScenario& scenario, laser::LaserAxisSimulator* sim, QString* error)
 {
     if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
-        *error = tr("--setup-complete, --temperature and --limit are not supported for model "
-                    "laser-axis");
+        *error =
+            SimText::tr("--setup-complete, --temperature and --limit are not supported for model "
+                        "laser-axis");
         return false;
     }
     for (const QMap<Axis, qint64>* map : {&scenario.positions, &scenario.endSwitches}) {
         if (map->contains(Axis::U)) {
-            *error = tr("model laser-axis has no axis U");
+            *error = SimText::tr("model laser-axis has no axis U");
             return false;
         }
     }
@@ -306,8 +311,9 @@ bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* e
     const bool laserOnly =
         scenario.speed || !scenario.endSwitches.isEmpty() || scenario.silent || scenario.garbage;
     if (laserOnly) {
-        *error = tr("--speed, --end-switch, --silent and --garbage are only supported for model "
-                    "laser-axis");
+        *error = SimText::tr(
+            "--speed, --end-switch, --silent and --garbage are only supported for model "
+            "laser-axis");
         return false;
     }
     auto* elabSim = qobject_cast<elab::ElabSimulator*>(simulator);
@@ -315,8 +321,8 @@ bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* e
                                !scenario.limits.isEmpty() || !scenario.positions.isEmpty();
     if (!elabSim) {
         if (needsModelApi) {
-            *error = tr("--setup-complete, --temperature, --limit and --position are only "
-                        "supported for model elab");
+            *error = SimText::tr("--setup-complete, --temperature, --limit and --position are only "
+                                 "supported for model elab");
             return false;
         }
         return true;
@@ -339,14 +345,14 @@ bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* e
         elabSim->setTemperature(*scenario.temperature);
     for (auto it = scenario.limits.cbegin(); it != scenario.limits.cend(); ++it) {
         if (it.key() == Axis::U) {
-            *error = tr("model elab has no axis U");
+            *error = SimText::tr("model elab has no axis U");
             return false;
         }
         elabSim->setLimitPositions(it.key(), it.value().minimum, it.value().maximum);
     }
     for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it) {
         if (it.key() == Axis::U) {
-            *error = tr("model elab has no axis U");
+            *error = SimText::tr("model elab has no axis U");
             return false;
         }
         elabSim->setPosition(it.key(), it.value());

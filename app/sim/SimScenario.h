@@ -1,5 +1,6 @@
 #pragma once
 #include "model/Axis.h"
+#include <QCoreApplication>
 #include <QStringList>
 #include <optional>
 
@@ -8,6 +9,12 @@ class Simulator;
 }
 
 namespace stepdeck::simapp {
+
+// The texts of stepdeck-sim (English: the program installs no translator).
+class SimText
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::simapp::SimText)
+};
 
 struct LimitRange
 {

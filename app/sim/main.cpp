@@ -17,10 +17,6 @@ void printTo(FILE* stream, const QString& text)
     std::fflush(stream);
 }
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-sim", text);
-}
 } // namespace
 
 int main(int argc, char** argv)
@@ -47,7 +43,7 @@ int main(int argc, char** argv)
     const ModelInfo* model = findModel(scenario.model);
     if (!model || !model->createSimulator) {
         printTo(stderr, QStringLiteral("stepdeck-sim: %1")
-                            .arg(tr("unknown controller model '%1' (known: %2)")
+                            .arg(simapp::SimText::tr("unknown controller model '%1' (known: %2)")
                                      .arg(scenario.model, modelIds().join(QStringLiteral(", ")))));
         return 2;
     }
@@ -79,10 +75,12 @@ int main(int argc, char** argv)
 
     // First line, flushed: the contract with tests and scripts.
     printTo(stdout, endpoint.slavePath());
-    printTo(stderr, tr("stepdeck-sim: %1 (%2) on %3%4; SIGINT/SIGTERM to quit")
-                        .arg(model->id, model->displayName, endpoint.slavePath(),
-                             scenario.pace ? tr(", paced at %1 baud").arg(model->line.baudRate)
-                                           : QString()));
+    printTo(stderr,
+            simapp::SimText::tr("stepdeck-sim: %1 (%2) on %3%4; SIGINT/SIGTERM to quit")
+                .arg(model->id, model->displayName, endpoint.slavePath(),
+                     scenario.pace
+                         ? simapp::SimText::tr(", paced at %1 baud").arg(model->line.baudRate)
+                         : QString()));
 
     const stepdeck::app::SignalPipe signalPipe([](int) { QCoreApplication::quit(); });
     const int code = application.exec();
