@@ -99,7 +99,9 @@ void TestParameterSchema::validateScalar_ranges()
     const QString error = m_schema.validateScalar(*spec, value);
     QCOMPARE(error.isEmpty(), valid);
     if (!valid) {
-        QVERIFY2(error.contains(name), qPrintable(error));
+        // Named by the label the form shows, not by the key (issue 11).
+        QVERIFY2(error.startsWith(spec->label + QLatin1Char(':')), qPrintable(error));
+        QVERIFY2(!error.contains(name), qPrintable(error));
         QVERIFY2(error.contains(range), qPrintable(error));
     }
 }

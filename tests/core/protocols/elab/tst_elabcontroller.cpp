@@ -95,7 +95,7 @@ void TestElabController::writeParameters_outOfRange_sendsNothing_data()
     ParameterSet tooFast;
     tooFast.insert("start-speed", perAxis(100, 100, 100));
     tooFast.insert("max-speed", perAxis(5000, 70000, 5000));
-    QTest::newRow("max-speed above 16 bits") << tooFast << "max-speed";
+    QTest::newRow("max-speed above 16 bits") << tooFast << "Max speed: value '70000'";
 
     ParameterSet power;
     power.insert("drive-power", global(101));
@@ -108,11 +108,12 @@ void TestElabController::writeParameters_outOfRange_sendsNothing_data()
     ParameterSet feedAbove;
     feedAbove.insert("start-speed", perAxis(100, 100, 100));
     feedAbove.insert("feed-speed", perAxis(50, 100, 50));
-    QTest::newRow("feed not below start") << feedAbove << "below start-speed";
+    QTest::newRow("feed not below start")
+        << feedAbove << "Feed speed 100 on axis Y must be below Start speed 100";
 
     ParameterSet feedAlone;
     feedAlone.insert("feed-speed", perAxis(50, 50, 50));
-    QTest::newRow("feed without start") << feedAlone << "start-speed";
+    QTest::newRow("feed without start") << feedAlone << "but Start speed is not known";
 
     ParameterSet partial;
     ParameterValue onlyX;

@@ -269,7 +269,7 @@ void TestNanotecEndToEnd::set_ignoredInvalidValue_verifyFailedNamingValues()
     r = cli({"--address", "1", "set", "positioning-mode=2"}, QString());
     QCOMPARE(r.exitCode, 11);
     QCOMPARE(r.err.count('\n'), 1);
-    QVERIFY2(r.err.contains("positioning-mode") && r.err.contains("wrote 2") &&
+    QVERIFY2(r.err.contains("Positioning mode") && r.err.contains("wrote 2") &&
                  r.err.contains("kept 1"),
              r.err.constData());
     QVERIFY(r.out.isEmpty());

@@ -155,7 +155,7 @@ void TestNanotecController::write_ignoredInvalidValue_isCaughtByReadBack()
     p["positioning-mode"].perAxis = {{Axis::X, 2}};
     const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, p, true); });
     QCOMPARE(r.error, ErrorKind::VerifyFailed);
-    QVERIFY(r.message.contains("positioning-mode"));
+    QVERIFY2(r.message.contains("Positioning mode"), qPrintable(r.message));
     QVERIFY(r.message.contains("drive 1"));
     QCOMPARE(countFrames("#1p2\r"), 1);
     // Without verify the same write "succeeds": that is why verify is the default.
