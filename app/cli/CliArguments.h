@@ -59,6 +59,8 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
 
 QString usageText();
 
+// --- the commands' AXIS=VALUE arguments (CliAxisArguments.cpp) ---
+
 // "X=N Y=N" -> per-axis integers (decimal, NumberParsing.h). Axes must belong to `axes`, none
 // twice, at least one. A failure's message starts with `command`; a malformed or non-finite
 // number ("abc", "0x40", "nan", "inf") is a usage error (exit 2), a decimal number beyond
@@ -68,5 +70,9 @@ Outcome parseAxisIntegers(const QString& command, const QStringList& args, const
 // The same for decimal rates ("X=-1500.5", "Y=1e3").
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
                          AxisVelocities* out);
+// "X=1,Y=2,Z=3" (the --axes map; CliAxisArguments.cpp like the two above). Only the syntax is
+// checked here; which addresses a bus allows is the model's (e.g. nanotec::kMinAddress..
+// kMaxAddress), checked when the controller is created.
+bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error);
 
 } // namespace stepdeck::cli
