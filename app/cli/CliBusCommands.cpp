@@ -50,7 +50,7 @@ Outcome cmdScan(CliContext& c, QStringList args)
     QString error;
     int first = kMinAddress;
     int last = kMaxAddress;
-    const bool ranged = c.options.flag("first") || c.options.flag("last");
+    const bool ranged = c.options.value("first") || c.options.value("last");
     if (!readAddress(c.options, "first", &first, &error) ||
         !readAddress(c.options, "last", &last, &error))
         return Outcome::usage(error);
