@@ -47,6 +47,7 @@ private:
         Axis axis;
         qint64 steps;
         bool ok;
+        int journalBefore; // device journal size when the command was sent
     };
 
     bool startSession();
@@ -64,6 +65,8 @@ private:
     void settleAfterLinkLoss();
     void closeJogRange();
     void compareMoves();
+    void reportUnmatched(Axis axis, int j, const DeviceMove& d, const QList<Commanded>& wanted,
+                         int next);
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
     const SoakModel& m_model;
@@ -233,6 +236,8 @@ void SoakRun::closeJogRange()
     const int end = int(m_device.moves().size());
     if (end > m_jogJournalStart)
         m_jogRanges.append({m_jogJournalStart, end});
+    if (qEnvironmentVariableIsSet("STEPDECK_SOAK_TRACE"))
+        std::fprintf(stderr, "jog range %d..%d\n", m_jogJournalStart, end);
     m_jogJournalStart = -1;
 }
 
@@ -242,6 +247,9 @@ void SoakRun::oneCommand()
     const QString fault = injectFault();
     const Capabilities caps = m_host.session().capabilities();
     const int pick = int(m_rng.bounded(100));
+    if (qEnvironmentVariableIsSet("STEPDECK_SOAK_TRACE"))
+        std::fprintf(stderr, "cmd %d pick %d fault '%s' journal %d\n", m_done, pick,
+                     qPrintable(fault), int(m_device.moves().size()));
     if (pick < 20) {
         record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
     } else if (pick < 45) {
@@ -319,13 +327,14 @@ void SoakRun::cmdMove(bool wait)
         if (steps.isEmpty() || m_rng.bounded(2))
             steps.insert(a, m_rng.bounded(2) ? size : -size);
     }
+    const int journalBefore = int(m_device.moves().size());
     const SoakHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.moveRelative(steps); });
     record(out);
     recoverIfRefused(out);
     const bool ok = out.finished && out.result.ok();
     for (auto it = steps.cbegin(); it != steps.cend(); ++it)
-        m_commanded.append({it.key(), it.value(), ok});
+        m_commanded.append({it.key(), it.value(), ok, journalBefore});
     if (ok && wait)
         m_host.waitIdle(5000);
 }
@@ -385,16 +394,25 @@ void SoakRun::cmdParameters(bool write)
 }
 
 // Per axis, in order: every device move matches the next commanded move of that size (moves
-// in between were not started); one commanded move started twice is a duplicate.
+// in between were not started); one commanded move started twice is a duplicate. A device
+// move can only stand for a command sent before the device journaled it: without that bound
+// one device move that stands for no command (e.g. a late jog chunk) matched a command of the
+// same size up to kMoveWindow moves later, and every move after it then counted as lost and
+// unmatched.
 void SoakRun::compareMoves()
 {
-    QList<DeviceMove> device = m_device.moves();
-    for (int r = int(m_jogRanges.size()) - 1; r >= 0; --r) {
-        const auto [first, end] = m_jogRanges.at(r);
-        m_fig.jogMoves += end - first;
-        device.remove(first, end - first);
+    const QList<DeviceMove> journal = m_device.moves();
+    QList<int> indices; // journal indices of the moves made by commands
+    int r = 0;
+    for (int j = 0; j < journal.size(); ++j) {
+        while (r < m_jogRanges.size() && j >= m_jogRanges.at(r).second)
+            ++r;
+        if (r < m_jogRanges.size() && j >= m_jogRanges.at(r).first)
+            ++m_fig.jogMoves;
+        else
+            indices << j;
     }
-    m_fig.deviceMoves = device.size();
+    m_fig.deviceMoves = indices.size();
     for (Axis axis : allAxes()) {
         QList<Commanded> wanted;
         for (const Commanded& c : m_commanded) {
@@ -403,19 +421,23 @@ void SoakRun::compareMoves()
         }
         QList<int> starts(wanted.size(), 0);
         int next = 0;
-        for (const DeviceMove& d : device) {
+        for (int j : indices) {
+            const DeviceMove& d = journal.at(j);
             if (d.axis != axis)
                 continue;
             int k = next;
-            while (k < wanted.size() && wanted[k].steps != d.steps && k < next + kMoveWindow)
+            while (k < wanted.size() && wanted[k].journalBefore <= j &&
+                   wanted[k].steps != d.steps && k < next + kMoveWindow)
                 ++k;
             if (next > 0 && wanted[next - 1].steps == d.steps) {
                 ++starts[next - 1]; // the previous move once more
-            } else if (k < wanted.size() && wanted[k].steps == d.steps) {
+            } else if (k < wanted.size() && wanted[k].journalBefore <= j &&
+                       wanted[k].steps == d.steps) {
                 ++starts[k];
                 next = k + 1;
             } else {
                 ++m_fig.unmatchedDeviceMoves;
+                reportUnmatched(axis, j, d, wanted, next);
             }
         }
         for (int i = 0; i < wanted.size(); ++i) {
@@ -425,6 +447,28 @@ void SoakRun::compareMoves()
             m_fig.unconfirmedMoves += !wanted[i].ok && starts[i] > 0 ? 1 : 0;
         }
     }
+}
+
+// STEPDECK_SOAK_VERBOSE: the first unmatched device moves with the commands around them.
+void SoakRun::reportUnmatched(Axis axis, int j, const DeviceMove& d, const QList<Commanded>& wanted,
+                              int next)
+{
+    static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
+    if (!verbose || m_fig.unmatchedDeviceMoves > 20)
+        return;
+    QString line = QStringLiteral("unmatched: axis %1, journal %2, steps %3; commands:")
+                       .arg(axisName(axis))
+                       .arg(j)
+                       .arg(d.steps);
+    for (int i = qMax(0, next - 3); i < qMin(int(wanted.size()), next + 3); ++i)
+        line += QStringLiteral(" [%1%2 %3 %4@%5]")
+                    .arg(i == next ? QStringLiteral(">") : QString())
+                    .arg(i)
+                    .arg(wanted[i].steps)
+                    .arg(wanted[i].ok ? QStringLiteral("ok") : QStringLiteral("failed"))
+                    .arg(wanted[i].journalBefore);
+    line += QLatin1Char('\n');
+    std::fputs(qPrintable(line), stderr);
 }
 } // namespace
 

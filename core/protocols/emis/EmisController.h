@@ -154,6 +154,7 @@ private:
     // --- jog (EmisCtlJog.cpp) ---
     void pumpJog();
     void sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk);
+    bool jogHeld(Axis axis, double direction) const; // the input still asks for this way
     // A jog chunk ends at the soft limit; 0 and *why at the limit.
     qint64 clipToSoftLimit(Axis axis, qint64 steps, QString* why) const;
     void finishJogIfIdle();

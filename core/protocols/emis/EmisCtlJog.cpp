@@ -45,7 +45,7 @@ void EmisController::pumpJog()
         const Axis axis = it.key();
         const double rate = it.value();
         const Track& t = m_tracks[axis];
-        if (rate == 0.0 || t.awaiting || t.unconfirmed)
+        if (!jogHeld(axis, rate) || t.awaiting || t.unconfirmed)
             continue;
         // At most kJogChunkSeconds of travel at the commanded rate; a chunk of one step at a
         // very low rate runs fast enough to end within that time too.
@@ -86,6 +86,16 @@ void EmisController::pumpJog()
     sendJogChunk(speedWrites, chunk);
 }
 
+bool EmisController::jogHeld(Axis axis, double direction) const
+{
+    // Both the ramp's rate and the input's target (the lease) in this direction. After a
+    // release the host ramp still runs down for a while; a chunk started then would move the
+    // axis after the operator let go (the board ramps the chunk under way down by itself).
+    const double rate = m_jogRates.value(axis, 0.0);
+    const double held = jogRamp().target(axis);
+    return direction != 0.0 && rate * direction > 0.0 && held * direction > 0.0;
+}
+
 qint64 EmisController::clipToSoftLimit(Axis axis, qint64 steps, QString* why) const
 {
     MachineStatus bookkept = status();
@@ -114,8 +124,7 @@ void EmisController::sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTar
     // gets no new chunk.
     QList<VectorTarget> still;
     for (const VectorTarget& t : chunk) {
-        const double rate = m_jogRates.value(t.axis, 0.0);
-        if ((rate > 0 && t.value > 0) || (rate < 0 && t.value < 0))
+        if (jogHeld(t.axis, double(t.value)))
             still << t;
     }
     if (still.isEmpty() || linkState() != LinkState::Connected) {

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void unexpectedArrival_positionUnknown();
     void jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival();
     void jog_leaseExpires_noNewChunk_boardStandsStill();
+    void jog_released_noChunkWhileTheHostRampRunsDown();
     void jog_twoAxes_shareOneVector();
     void jog_boardSilent_haltsAndUnconfirmed();
     void linkFailure_whileMoving_unconfirmed_positionsUnknown();
@@ -247,6 +248,32 @@ void TestEmisControllerMotion::jog_leaseExpires_noNewChunk_boardStandsStill()
     QCOMPARE(chunkSteps('y').size(), chunks);
     QVERIFY(!m_rig.sim->anyMoving());
     QCOMPARE(m_rig.axis(Axis::Y).position, m_rig.sim->position(Axis::Y));
+}
+
+void TestEmisControllerMotion::jog_released_noChunkWhileTheHostRampRunsDown()
+{
+    fastMotion();
+    // A slow host ramp: after the release its rate stays above zero for about a second, long
+    // after the chunk under way has arrived. No chunk may start in that time.
+    m_rig.ctl->setJogAcceleration(500);
+    QTimer renew;
+    connect(&renew, &QTimer::timeout, this, [this] {
+        m_rig.ctl->setJogVelocity({{Axis::Z, 600}});
+    });
+    renew.start(50);
+    m_rig.ctl->setJogVelocity({{Axis::Z, 600}});
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_rig.ctl->jogRamp().current(Axis::Z) > 300.0 && !chunkSteps('z').isEmpty(), 5000);
+    renew.stop();
+    m_rig.ctl->endJog();
+    const qsizetype chunks = chunkSteps('z').size();
+    QVERIFY(m_rig.ctl->jogRamp().current(Axis::Z) > 300.0); // the host ramp runs down, ...
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.ctl->jogRamp().isIdle(), 3000);
+    QTRY_VERIFY(!m_rig.sim->anyMoving()); // ... the chunk under way arrives ...
+    letRun(200);
+    QCOMPARE(chunkSteps('z').size(), chunks); // ... and the board got nothing more
+    QVERIFY(!m_rig.sim->anyMoving());
+    QCOMPARE(m_rig.axis(Axis::Z).position, m_rig.sim->position(Axis::Z));
 }
 
 void TestEmisControllerMotion::jog_twoAxes_shareOneVector()
