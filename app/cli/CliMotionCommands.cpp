@@ -43,12 +43,24 @@ Outcome reportPositions(CliContext& c)
     return Outcome::success();
 }
 
-// A failure while motion runs: the motion is stopped before the command returns.
+// A failure while motion runs: the motion is stopped before the command returns, and the
+// command returns once the device reports standstill (bounded), so that the axes are at rest
+// when the CLI exits -- or the message says they may not be. Without the wait, a board still
+// braking on its stop ramp was found moving by the next command.
 Outcome stopThenFail(CliContext& c, const Outcome& failure)
 {
-    if (!c.session.linkLost() && !c.session.interrupted())
-        c.session.stopMotion();
-    return failure;
+    constexpr int kStopSettleMs = 5000;
+    if (c.session.linkLost() || c.session.interrupted())
+        return failure;
+    const Outcome stopped = c.session.stopMotion();
+    if (!stopped.ok())
+        return Outcome::failure(failure.code, tr("%1; %2").arg(failure.message, stopped.message));
+    const Outcome still = c.session.waitUntilIdle(kStopSettleMs);
+    if (!still.ok()) {
+        return Outcome::failure(failure.code,
+                                tr("%1; after the stop: %2").arg(failure.message, still.message));
+    }
+    return Outcome::failure(failure.code, tr("%1; stopped").arg(failure.message));
 }
 
 using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
