@@ -1,6 +1,9 @@
+// The command line of stepdeck-cli, parsed with QCommandLineParser (docs/cli.md): the global
+// options up to the command name, then the rest with the global options plus the command's own.
 #include "CliArguments.h"
 #include "CliOutput.h"
 #include "model/NumberParsing.h"
+#include <QCommandLineParser>
 #include <QCoreApplication>
 #include <limits>
 
@@ -12,153 +15,283 @@ QString tr(const char* text)
     return QCoreApplication::translate("stepdeck-cli", text);
 }
 
-// "--name VALUE" or "--name=VALUE" at args[*i]; advances *i past the value.
-bool optionValue(const QStringList& args, int* i, const QString& name, QString* value,
-                 QString* error)
+// The global options: the parser's table and the "Options" part of --help. names: the short
+// name (if any) first, the long name last; help: lines of the description.
+struct GlobalOption
 {
-    const QString& arg = args.at(*i);
-    if (arg.startsWith(name + QLatin1Char('='))) {
-        *value = arg.mid(name.size() + 1);
+    const char* names;
+    const char* valueName;
+    const char* help;
+};
+
+// clang-format off
+const GlobalOption kGlobalOptions[] = {
+    {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "controller model (default: elab; see `models`)")},
+    {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "serial device path | tcp://HOST:PORT | sim (in-process\nsimulator; the default)")},
+    {"address", "N", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "bus address of one drive (it becomes axis X)")},
+    {"axes", "MAP", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "axis to bus address map for multi-drive links, e.g.\nX=1,Y=2,Z=3 (nanotec default); "
+        "only these axes exist")},
+    {"json", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+        "machine-readable output: one JSON line on stdout (an\nobject; an array for scan and "
+        "records)")},
+    {"setup-defaults", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+        "write every parameter's schema default before the command\n(also the switch "
+        "polarities; see `params`)")},
+    {"timeout", "MS", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "how long to wait for the link to come up (default 3000;\nafter move, home and feed: "
+        "their own --timeout)")},
+    {"reset-line", "L", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "rts (default) or dtr: the modem line wired to the\nboard's reset input (E-LAB `reset`); "
+        "both are held low")},
+    {"arrival-timeout", "MS", QT_TRANSLATE_NOOP("stepdeck-cli",
+        "how long move and home wait for the axes to report\narrival (laser-axis; default "
+        "60000, the laser's own)")},
+    {"v,verbose", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+        "show the core's log output on stderr")},
+    {"h,help", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli", "show this help and exit")},
+    {"version", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli", "show the version and exit")},
+};
+// clang-format on
+
+QStringList namesOf(const GlobalOption& option)
+{
+    return QString::fromLatin1(option.names).split(QLatin1Char(','));
+}
+
+const GlobalOption* findGlobal(const QString& name)
+{
+    for (const GlobalOption& option : kGlobalOptions) {
+        if (namesOf(option).contains(name))
+            return &option;
+    }
+    return nullptr;
+}
+
+// Every global option except those named in `shadowed` (the command's own of the same name).
+void addGlobalOptions(QCommandLineParser* parser, const QStringList& shadowed = {})
+{
+    for (const GlobalOption& global : kGlobalOptions) {
+        QCommandLineOption option(namesOf(global));
+        if (global.valueName)
+            option.setValueName(QString::fromLatin1(global.valueName));
+        if (!shadowed.contains(option.names().constLast()))
+            parser->addOption(option);
+    }
+}
+
+QString optionsHelp()
+{
+    constexpr int kColumn = 21; // where the descriptions start, as in the Commands part
+    QString text = tr("Options (before or after the command):\n");
+    for (const GlobalOption& option : kGlobalOptions) {
+        QStringList names;
+        for (const QString& name : namesOf(option))
+            names << (name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--")) + name;
+        QString left = QStringLiteral("  ") + names.join(QStringLiteral(", "));
+        if (option.valueName)
+            left += QLatin1Char(' ') + QLatin1String(option.valueName);
+        left = left.size() < kColumn ? left.leftJustified(kColumn) : left + QStringLiteral("  ");
+        const QString indent = QStringLiteral("\n") + QString(kColumn, QLatin1Char(' '));
+        text += left + tr(option.help).split(QLatin1Char('\n')).join(indent) + QLatin1Char('\n');
+    }
+    return text + QLatin1Char('\n');
+}
+
+// QCommandLineParser reads "-1" as the short option "1", but a negative number is a value, as
+// it always was (`output -1 on` is a number out of range, exit 7, not an unknown option). Such
+// an argument is hidden from the parser behind a NUL, which no real argument contains, and
+// restored afterwards.
+const QChar kNumberMark(0);
+
+QStringList hideNegativeNumbers(QStringList arguments)
+{
+    for (QString& arg : arguments) {
+        if (arg.size() > 1 && arg.at(0) == QLatin1Char('-') &&
+            (arg.at(1).isDigit() || arg.at(1) == QLatin1Char('.')))
+            arg.prepend(kNumberMark);
+    }
+    return arguments;
+}
+
+QString restored(QString arg)
+{
+    if (arg.startsWith(kNumberMark))
+        arg.remove(0, 1);
+    return arg;
+}
+
+QStringList restored(QStringList arguments)
+{
+    for (QString& arg : arguments)
+        arg = restored(arg);
+    return arguments;
+}
+
+// One line for a parse failure: unknown options by name, Qt's own text for the rest
+// ("Missing value after '--for'.").
+QString parseError(const QCommandLineParser& parser)
+{
+    const QStringList unknown = parser.unknownOptionNames();
+    if (!unknown.isEmpty()) {
+        const QString& name = unknown.constFirst();
+        const QString dashes = name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--");
+        return tr("unknown option '%1' (try --help)").arg(dashes + name);
+    }
+    QString text = parser.errorText();
+    if (text.endsWith(QLatin1Char('.')))
+        text.chop(1);
+    if (!text.isEmpty())
+        text[0] = text.at(0).toLower();
+    return tr("%1 (try --help)").arg(text);
+}
+
+// A positive number of milliseconds (--timeout, --arrival-timeout).
+bool parseMilliseconds(const QString& name, const QString& value, int* out, QString* error)
+{
+    if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), out) == NumberError::None)
         return true;
-    }
-    if (*i + 1 >= args.size()) {
-        *error = tr("option %1 needs a value").arg(name);
-        return false;
-    }
-    *i += 1;
-    *value = args.at(*i);
-    return true;
+    *error = tr("--%1 needs a positive number of milliseconds").arg(name);
+    return false;
 }
 
-bool isOption(const QString& arg, const QString& name)
+// A global option with a value, by its long name. False with *error set on a bad value.
+bool applyValue(const QString& name, const QString& value, CliOptions* o, QString* error)
 {
-    return arg == name || arg.startsWith(name + QLatin1Char('='));
-}
-
-// Parse: (QStringView text, T* value) -> NumberError. A failure is an Outcome whose message
-// does not name the command yet.
-template <typename T, typename Parse>
-Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
-                             Parse parse)
-{
-    QMap<Axis, T> result;
-    for (const QString& arg : args) {
-        const int eq = arg.indexOf(QLatin1Char('='));
-        const auto axis = eq > 0 ? axisFromName(QStringView(arg).left(eq)) : std::nullopt;
-        if (!axis)
-            return Outcome::usage(tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg));
-        if (!axes.contains(*axis))
-            return Outcome::usage(tr("this machine has no axis %1").arg(axisName(*axis)));
-        if (result.contains(*axis))
-            return Outcome::usage(tr("axis %1 given twice").arg(axisName(*axis)));
-        T value{};
-        const QString text = arg.mid(eq + 1);
-        switch (parse(QStringView(text), &value)) {
-        case NumberError::None:
-            break;
-        case NumberError::Malformed:
-            return Outcome::usage(
-                tr("%1: '%2' is not a decimal number").arg(axisName(*axis), text));
-        case NumberError::NonFinite:
-            return Outcome::usage(tr("%1: '%2' is not a finite number").arg(axisName(*axis), text));
-        case NumberError::OutOfRange:
-            return Outcome::failure(ExitInvalidValue,
-                                    tr("%1: '%2' is out of range").arg(axisName(*axis), text));
-        }
-        result.insert(*axis, value);
-    }
-    if (result.isEmpty())
-        return Outcome::usage(tr("no axis given (e.g. X=100 Y=0 Z=-50)"));
-    *out = result;
-    return Outcome::success();
-}
-
-Outcome named(const QString& command, Outcome outcome)
-{
-    if (!outcome.ok())
-        outcome.message = tr("%1: %2").arg(command, outcome.message);
-    return outcome;
-}
-} // namespace
-
-namespace {
-// Global options that carry a value. Returns false with *error set on a bad value; *matched
-// tells whether arg was one of them at all.
-bool parseValueOption(const QStringList& argv, int* i, CliOptions* o, bool* matched, QString* error)
-{
-    const QString& arg = argv.at(*i);
-    const QString name = arg.section(QLatin1Char('='), 0, 0);
-    static const QStringList names{"--model",   "--port",       "--address",        "--axes",
-                                   "--timeout", "--reset-line", "--arrival-timeout"};
-    *matched = names.contains(name);
-    QString value;
-    if (!*matched || !optionValue(argv, i, name, &value, error))
-        return !*matched;
-    if (name == QLatin1String("--model")) {
+    if (name == QLatin1String("model")) {
         o->model = value;
-    } else if (name == QLatin1String("--port")) {
+    } else if (name == QLatin1String("port")) {
         o->port = value;
-    } else if (name == QLatin1String("--axes")) {
+    } else if (name == QLatin1String("axes")) {
         return parseAxisMap(value, &o->axisAddresses, error);
-    } else if (name == QLatin1String("--reset-line")) {
+    } else if (name == QLatin1String("reset-line")) {
         const std::optional<LineSettings::ResetLine> line = resetLineFromName(value);
         if (!line) {
             *error = tr("--reset-line needs rts or dtr, got '%1'").arg(value);
             return false;
         }
         o->resetLine = *line;
-    } else if (name == QLatin1String("--address")) {
+    } else if (name == QLatin1String("address")) {
         int n = 0;
         if (numbers::parseInt(value, 0, std::numeric_limits<int>::max(), &n) != NumberError::None) {
             *error = tr("--address needs a non-negative number, got '%1'").arg(value);
             return false;
         }
         o->address = n;
-    } else if (name == QLatin1String("--arrival-timeout")) {
-        if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), &o->arrivalTimeoutMs) !=
-            NumberError::None) {
-            *error = tr("--arrival-timeout needs a positive number of milliseconds");
-            return false;
-        }
+    } else if (name == QLatin1String("arrival-timeout")) {
+        return parseMilliseconds(name, value, &o->arrivalTimeoutMs, error);
     } else {
-        if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), &o->connectTimeoutMs) !=
-            NumberError::None) {
-            *error = tr("--timeout needs a positive number of milliseconds");
-            return false;
+        return parseMilliseconds(name, value, &o->connectTimeoutMs, error);
+    }
+    return true;
+}
+
+// A global option without a value, by its long name.
+void applyFlag(const QString& name, CliOptions* o)
+{
+    if (name == QLatin1String("json"))
+        o->json = true;
+    else if (name == QLatin1String("setup-defaults"))
+        o->setupDefaults = true;
+    else if (name == QLatin1String("verbose"))
+        o->verbose = true;
+    else if (name == QLatin1String("help"))
+        o->help = true;
+    else
+        o->version = true;
+}
+
+// The options `parser` found: the command's own into o->commandOptions, the global ones into
+// their fields (a later occurrence wins).
+bool applyOptions(const QCommandLineParser& parser, const CommandSyntax* command, CliOptions* o,
+                  QString* error)
+{
+    for (const QString& name : parser.optionNames()) {
+        if (command) {
+            for (const CommandOption& own : command->options) {
+                if (name == QLatin1String(own.name))
+                    o->commandOptions.insert(name, own.valueName ? restored(parser.value(name))
+                                                                 : QString());
+            }
+            if (o->commandOptions.contains(name))
+                continue;
+        }
+        const GlobalOption* global = findGlobal(name);
+        const QString longName = namesOf(*global).constLast();
+        if (global->valueName) {
+            if (!applyValue(longName, restored(parser.value(name)), o, error))
+                return false;
+        } else {
+            applyFlag(longName, o);
         }
     }
     return true;
 }
+
+const CommandSyntax* findCommand(const QList<CommandSyntax>& commands, const QString& name)
+{
+    for (const CommandSyntax& command : commands) {
+        if (name == QLatin1String(command.name))
+            return &command;
+    }
+    return nullptr;
+}
+
+// The arguments after the command name, with the global options plus the command's own.
+bool parseCommandPart(const QString& program, const QStringList& rest, const CommandSyntax& command,
+                      CliOptions* o, QString* error)
+{
+    QCommandLineParser parser;
+    QStringList own;
+    for (const CommandOption& option : command.options) {
+        QCommandLineOption parserOption(QString::fromLatin1(option.name));
+        if (option.valueName)
+            parserOption.setValueName(QString::fromLatin1(option.valueName));
+        parser.addOption(parserOption);
+        own << parserOption.names();
+    }
+    addGlobalOptions(&parser, own);
+    if (!parser.parse(QStringList{program} + rest)) {
+        *error = parseError(parser);
+        return false;
+    }
+    o->args = restored(parser.positionalArguments());
+    return applyOptions(parser, &command, o, error);
+}
 } // namespace
 
-bool parseArguments(const QStringList& argv, CliOptions* options, QString* error)
+std::optional<QString> CliOptions::value(const char* name) const
+{
+    const auto it = commandOptions.constFind(QLatin1String(name));
+    return it == commandOptions.cend() ? std::nullopt : std::optional<QString>(*it);
+}
+
+bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& commands,
+                    CliOptions* options, QString* error)
 {
     CliOptions o;
-    for (int i = 0; i < argv.size(); ++i) {
-        const QString& arg = argv.at(i);
-        bool matched = false;
-        if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            o.help = true;
-        } else if (arg == QLatin1String("--version")) {
-            o.version = true;
-        } else if (arg == QLatin1String("--json")) {
-            o.json = true;
-        } else if (arg == QLatin1String("--setup-defaults")) {
-            o.setupDefaults = true;
-        } else if (arg == QLatin1String("--verbose") || arg == QLatin1String("-v")) {
-            o.verbose = true;
-        } else if (!parseValueOption(argv, &i, &o, &matched, error)) {
+    QCommandLineParser global; // up to the command name; the rest stays positional
+    global.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
+    addGlobalOptions(&global);
+    if (!global.parse(hideNegativeNumbers(arguments))) {
+        *error = parseError(global);
+        return false;
+    }
+    if (!applyOptions(global, nullptr, &o, error))
+        return false;
+    const QStringList positional = global.positionalArguments();
+    if (!positional.isEmpty()) {
+        o.command = restored(positional.constFirst());
+        const CommandSyntax* command = findCommand(commands, o.command);
+        if (!command) {
+            *error = tr("unknown command '%1' (try --help)").arg(o.command);
             return false;
-        } else if (matched) {
-            continue;
-        } else if (o.command.isEmpty() && !arg.startsWith(QLatin1String("--"))) {
-            o.command = arg;
-        } else if (o.command.isEmpty()) {
-            *error = tr("unknown option '%1' (try --help)").arg(arg);
-            return false;
-        } else {
-            o.args << arg; // the command's own arguments and options
         }
+        if (!parseCommandPart(arguments.value(0), positional.mid(1), *command, &o, error))
+            return false;
     }
     if (o.address && !o.axisAddresses.isEmpty()) {
         *error = tr("give either --address or --axes, not both");
@@ -172,95 +305,13 @@ bool parseArguments(const QStringList& argv, CliOptions* options, QString* error
     return true;
 }
 
-bool takeFlag(QStringList* args, const QString& flag)
-{
-    return args->removeAll(flag) > 0;
-}
-
-std::optional<QString> takeOption(QStringList* args, const QString& option, QString* error)
-{
-    for (int i = 0; i < args->size(); ++i) {
-        if (!isOption(args->at(i), option))
-            continue;
-        QString value;
-        int end = i;
-        if (!optionValue(*args, &end, option, &value, error))
-            return std::nullopt;
-        args->erase(args->begin() + i, args->begin() + end + 1);
-        return value;
-    }
-    return std::nullopt;
-}
-
-QString unknownOption(const QStringList& args)
-{
-    for (const QString& arg : args) {
-        if (arg.startsWith(QLatin1String("--")))
-            return tr("unknown option '%1' (try --help)").arg(arg);
-    }
-    return {};
-}
-
-Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                          AxisVector* out)
-{
-    return named(command,
-                 parseAxisAssignments<qint64>(args, axes, out, [](QStringView s, qint64* v) {
-                     return numbers::parseInteger(s, v);
-                 }));
-}
-
-Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                         AxisVelocities* out)
-{
-    return named(command,
-                 parseAxisAssignments<double>(args, axes, out, [](QStringView s, double* v) {
-                     return numbers::parseReal(s, v);
-                 }));
-}
-
-bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error)
-{
-    QMap<Axis, qint64> parsed;
-    const Outcome read = parseAxisAssignments<qint64>(
-        text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed,
-        [](QStringView s, qint64* v) { return numbers::parseInteger(s, 0, 255, v); });
-    if (!read.ok()) {
-        *error = tr("--axes: %1 (addresses 0..255)").arg(read.message);
-        return false;
-    }
-    QMap<Axis, int> result;
-    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it)
-        result.insert(it.key(), int(it.value()));
-    *out = result;
-    return true;
-}
-
 QString usageText()
 {
     return tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
               "X=1,Y=2,Z=3] [--json] COMMAND [ARGS]\n"
-              "\n"
-              "Options (before or after the command):\n"
-              "  --model MODEL      controller model (default: elab; see `models`)\n"
-              "  --port PORT        serial device path | tcp://HOST:PORT | sim (in-process\n"
-              "                     simulator; the default)\n"
-              "  --address N        bus address of one drive (it becomes axis X)\n"
-              "  --axes MAP         axis to bus address map for multi-drive links, e.g.\n"
-              "                     X=1,Y=2,Z=3 (nanotec default); only these axes exist\n"
-              "  --json             machine-readable output: one JSON line on stdout (an\n"
-              "                     object; an array for scan and records)\n"
-              "  --setup-defaults   write every parameter's schema default before the command\n"
-              "                     (also the switch polarities; see `params`)\n"
-              "  --timeout MS       how long to wait for the link to come up (default 3000)\n"
-              "  --reset-line L     rts (default) or dtr: the modem line wired to the\n"
-              "                     board's reset input (E-LAB `reset`); both are held low\n"
-              "  --arrival-timeout MS  how long move and home wait for the axes to report\n"
-              "                     arrival (laser-axis; default 60000, the laser's own)\n"
-              "  --verbose          show the core's log output on stderr\n"
-              "  --help, --version\n"
-              "\n"
-              "Commands:\n"
+              "\n") +
+           optionsHelp() +
+           tr("Commands:\n"
               "  ports                       serial ports with description and USB VID:PID\n"
               "                              (pseudo-terminals are not listed)\n"
               "  status                      one poll: machine and axis flags, positions,\n"
@@ -323,6 +374,9 @@ QString usageText()
               "(E-LAB): every invocation is a new session and starts with positions unknown\n"
               "(counted from 0), so `move --abs` is refused there; `move`, `home` and `feed`\n"
               "print the positions they end at.\n"
+              "\n"
+              "Arguments that start with '-' are options: an unknown option or one of another\n"
+              "command is a usage error (exit 2). Everything after `--` is an argument.\n"
               "\n") +
            exitCodeHelp();
 }

@@ -2,13 +2,30 @@
 #include "CliOutput.h"
 #include "model/Axis.h"
 #include "model/LineSettings.h"
+#include <QList>
+#include <QMap>
 #include <QStringList>
 #include <optional>
 
 namespace stepdeck::cli {
 
-// The command line split into global options (accepted before or after the command) and the
-// command with its own arguments and options (--abs, --no-wait, --for MS stay in `args`).
+// An option of one command (`move --abs`, `jog --for MS`). valueName is null for a flag.
+struct CommandOption
+{
+    const char* name;
+    const char* valueName = nullptr;
+};
+
+// What the parser knows of a command: its name and its own options. Everything else after
+// the command name is the command's positional arguments.
+struct CommandSyntax
+{
+    const char* name;
+    QList<CommandOption> options;
+};
+
+// The command line: global options (accepted before or after the command), the command, its
+// positional arguments and the options of its own it was given.
 struct CliOptions
 {
     QString model = QStringLiteral("elab");
@@ -25,22 +42,24 @@ struct CliOptions
     LineSettings::ResetLine resetLine = LineSettings::ResetLine::Rts;
     int arrivalTimeoutMs = 60000; // --arrival-timeout: models that report arrival (laser-axis)
     QString command;
-    QStringList args;
+    QStringList args;                      // the command's positional arguments
+    QMap<QString, QString> commandOptions; // its own options: name -> value (empty for a flag)
+
+    bool flag(const char* name) const { return commandOptions.contains(QLatin1String(name)); }
+    std::optional<QString> value(const char* name) const;
 };
 
-// argv without the program name. Returns false with a one-line reason on a usage error.
-bool parseArguments(const QStringList& argv, CliOptions* options, QString* error);
+// arguments as QCoreApplication::arguments() gives them (program name first), parsed with
+// QCommandLineParser: first the global options up to the command name, then the rest with
+// the global options plus the command's own (where a name is both, as `move --timeout MS`,
+// the command's wins after the command). Returns false with a one-line reason on a usage
+// error: unknown command or option, a missing or malformed option value.
+bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& commands,
+                    CliOptions* options, QString* error);
 
 QString usageText();
 
-// --- helpers for the commands' own arguments ---
-
-// Removes a flag ("--abs") from args; true if it was there.
-bool takeFlag(QStringList* args, const QString& flag);
-// Removes "--for MS" / "--for=MS"; std::nullopt when absent. *error is set when malformed.
-std::optional<QString> takeOption(QStringList* args, const QString& option, QString* error);
-// Any leftover "--something" is a usage error.
-QString unknownOption(const QStringList& args);
+// --- the commands' AXIS=VALUE arguments (CliAxisArguments.cpp) ---
 
 // "X=N Y=N" -> per-axis integers (decimal, NumberParsing.h). Axes must belong to `axes`, none
 // twice, at least one. A failure's message starts with `command`; a malformed or non-finite
@@ -51,7 +70,9 @@ Outcome parseAxisIntegers(const QString& command, const QStringList& args, const
 // The same for decimal rates ("X=-1500.5", "Y=1e3").
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
                          AxisVelocities* out);
-// "X=1,Y=2,Z=3" (the --axes map).
+// "X=1,Y=2,Z=3" (the --axes map; CliAxisArguments.cpp like the two above). Only the syntax is
+// checked here; which addresses a bus allows is the model's (e.g. nanotec::kMinAddress..
+// kMaxAddress), checked when the controller is created.
 bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error);
 
 } // namespace stepdeck::cli

@@ -34,24 +34,17 @@ private:
 
 Outcome LaserBridgeCommand::parse(QStringList args)
 {
-    QString error;
-    const auto option = [&](const char* name) {
-        return takeOption(&args, QString::fromLatin1(name), &error);
-    };
-    const std::optional<QString> map = option("--map");
-    const std::optional<QString> scale = error.isEmpty() ? option("--scale") : std::nullopt;
-    const std::optional<QString> home = error.isEmpty() ? option("--home") : std::nullopt;
-    const std::optional<QString> door = error.isEmpty() ? option("--door-input") : std::nullopt;
-    if (!error.isEmpty())
-        return Outcome::usage(error);
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const std::optional<QString> map = m_c.options.value("map");
+    const std::optional<QString> scale = m_c.options.value("scale");
+    const std::optional<QString> home = m_c.options.value("home");
+    const std::optional<QString> door = m_c.options.value("door-input");
     if (args.size() != 1) {
         return Outcome::usage(tr("laser-bridge needs exactly one LASER_PORT (the serial port the "
                                  "laser's XYZ-control port is cabled to)"));
     }
     m_laserPort = args.first();
     int doorInput = 0;
+    QString error;
     if ((map && !LaserBridgeConfig::parseMap(*map, &m_config.axisMap, &error)) ||
         (scale && !LaserBridgeConfig::parseScale(*scale, &m_config.scale, &error)) ||
         (home && !LaserBridgeConfig::parseHome(*home, &m_config.homeDirections, &error)) ||

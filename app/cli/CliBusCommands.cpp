@@ -21,16 +21,14 @@ using nanotec::kMinAddress;
 constexpr int kScanMsPerAddress = 100; // the adapter waits ~40 ms for a silent address
 
 // "--first N" / "--last N" of scan; false with *error set when malformed.
-bool takeAddress(QStringList* args, const QString& option, int* value, QString* error)
+bool readAddress(const CliOptions& options, const char* option, int* value, QString* error)
 {
-    const std::optional<QString> text = takeOption(args, option, error);
-    if (!error->isEmpty())
-        return false;
+    const std::optional<QString> text = options.value(option);
     if (!text)
         return true;
     if (numbers::parseInt(*text, kMinAddress, kMaxAddress, value) != NumberError::None) {
-        *error = tr("scan %1 needs an address within %2..%3, got '%4'")
-                     .arg(option)
+        *error = tr("scan --%1 needs an address within %2..%3, got '%4'")
+                     .arg(QLatin1String(option))
                      .arg(kMinAddress)
                      .arg(kMaxAddress)
                      .arg(*text);
@@ -52,15 +50,10 @@ Outcome cmdScan(CliContext& c, QStringList args)
     QString error;
     int first = kMinAddress;
     int last = kMaxAddress;
-    const bool ranged = args.contains(QStringLiteral("--first")) ||
-                        args.contains(QStringLiteral("--last")) ||
-                        !args.filter(QStringLiteral("--first=")).isEmpty() ||
-                        !args.filter(QStringLiteral("--last=")).isEmpty();
-    if (!takeAddress(&args, QStringLiteral("--first"), &first, &error) ||
-        !takeAddress(&args, QStringLiteral("--last"), &last, &error))
+    const bool ranged = c.options.value("first") || c.options.value("last");
+    if (!readAddress(c.options, "first", &first, &error) ||
+        !readAddress(c.options, "last", &last, &error))
         return Outcome::usage(error);
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     if (!args.isEmpty())
         return Outcome::usage(tr("scan takes no arguments besides --first N and --last N"));
     if (first > last)

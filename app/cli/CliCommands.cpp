@@ -13,39 +13,41 @@ QString tr(const char* text)
 
 struct CommandEntry
 {
-    const char* name;
     Outcome (*run)(CliContext&, QStringList);
     bool needsModel;
-    bool ownOptions; // takes options of its own (--abs, --no-wait, --for); checks them itself
+    CommandSyntax syntax; // its name and own options (docs/cli.md, "Command options")
 };
+
+const QList<CommandOption> kPositioningOptions{{"no-wait"}, {"timeout", "MS"}};
 
 // clang-format off
 const CommandEntry kCommands[] = {
-    {"ports", cmdPorts, false, false},
-    {"models", cmdModels, false, false},
-    {"params", cmdParams, true, false},
-    {"status", cmdStatus, true, false},
-    {"scan", cmdScan, true, true},
-    {"records", cmdRecords, true, false},
-    {"set", cmdSet, true, true},
-    {"get", cmdGet, true, false},
-    {"export", cmdExport, true, false},
-    {"import", cmdImport, true, true},
-    {"move", cmdMove, true, true},
-    {"jog", cmdJog, true, true},
-    {"home", cmdHome, true, true},
-    {"velocity", cmdVelocity, true, true},
-    {"feed", cmdFeed, true, true},
-    {"stop", cmdStop, true, false},
-    {"panic", cmdPanic, true, false},
-    {"reset", cmdReset, true, false},
-    {"spindle", cmdSpindle, true, false},
-    {"coolant", cmdCoolant, true, false},
-    {"power", cmdPower, true, false},
-    {"store", cmdStore, true, true},
-    {"output", cmdOutput, true, false},
-    {"program", cmdProgram, true, true},
-    {"laser-bridge", cmdLaserBridge, true, true},
+    {cmdPorts, false, {"ports", {}}},
+    {cmdModels, false, {"models", {}}},
+    {cmdParams, true, {"params", {}}},
+    {cmdStatus, true, {"status", {}}},
+    {cmdScan, true, {"scan", {{"first", "N"}, {"last", "N"}}}},
+    {cmdRecords, true, {"records", {}}},
+    {cmdSet, true, {"set", {{"no-verify"}}}},
+    {cmdGet, true, {"get", {}}},
+    {cmdExport, true, {"export", {}}},
+    {cmdImport, true, {"import", {{"no-verify"}}}},
+    {cmdMove, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
+    {cmdJog, true, {"jog", {{"for", "MS"}}}},
+    {cmdHome, true, {"home", kPositioningOptions + QList<CommandOption>{{"simultaneous"}}}},
+    {cmdVelocity, true, {"velocity", {{"for", "MS"}}}},
+    {cmdFeed, true, {"feed", kPositioningOptions}},
+    {cmdStop, true, {"stop", {}}},
+    {cmdPanic, true, {"panic", {}}},
+    {cmdReset, true, {"reset", {}}},
+    {cmdSpindle, true, {"spindle", {}}},
+    {cmdCoolant, true, {"coolant", {}}},
+    {cmdPower, true, {"power", {}}},
+    {cmdStore, true, {"store", {{"clear"}}}},
+    {cmdOutput, true, {"output", {}}},
+    {cmdProgram, true, {"program", {{"title", "TEXT"}, {"erase"}, {"force"}}}},
+    {cmdLaserBridge, true, {"laser-bridge", {{"map", "MAP"}, {"scale", "STEPS_PER_UNIT"},
+                                             {"home", "DIRECTIONS"}, {"door-input", "N"}}}},
 };
 // clang-format on
 
@@ -125,16 +127,20 @@ Outcome writeParameters(CliContext& c, const ParameterSet& set, bool verify)
     return c.session.run([&](ControllerSession& s) { return s.writeParameters(set, verify); });
 }
 
+QList<CommandSyntax> commandSyntax()
+{
+    QList<CommandSyntax> syntax;
+    for (const CommandEntry& entry : kCommands)
+        syntax << entry.syntax;
+    return syntax;
+}
+
 Outcome runCommand(CliContext& context)
 {
     const QString& name = context.options.command;
     for (const CommandEntry& entry : kCommands) {
-        if (name != QLatin1String(entry.name))
+        if (name != QLatin1String(entry.syntax.name))
             continue;
-        if (!entry.ownOptions) {
-            if (const QString e = unknownOption(context.options.args); !e.isEmpty())
-                return Outcome::usage(e);
-        }
         if (entry.needsModel && !context.model) {
             return Outcome::usage(
                 tr("unknown controller model '%1' (known: %2)")

@@ -23,6 +23,9 @@ struct CliContext
     QList<Axis> axes() const { return session.capabilities().axes; }
 };
 
+// Every command with its own options, for parseArguments().
+QList<CommandSyntax> commandSyntax();
+
 // Runs options.command; the caller prints the outcome's message and exits with its code.
 Outcome runCommand(CliContext& context);
 
@@ -35,7 +38,8 @@ Outcome writeParameters(CliContext& context, const ParameterSet& set, bool verif
 // True when every parameter of set can be read back, so a write can be verified.
 bool canVerify(const ModelInfo& model, const ParameterSet& set);
 
-// Handlers, grouped by file. Each takes the command's own arguments.
+// Handlers, grouped by file. Each takes the command's positional arguments; its own options
+// (commandSyntax()) are in context.options.
 Outcome cmdPorts(CliContext& c, QStringList args);
 Outcome cmdModels(CliContext& c, QStringList args);
 Outcome cmdParams(CliContext& c, QStringList args);

@@ -72,7 +72,7 @@ Outcome cmdStore(CliContext& c, QStringList args)
 {
     if (!c.capabilities().storedParameters)
         return unsupported(c, CliEmis::tr("stored system parameters"));
-    if (takeFlag(&args, QStringLiteral("--clear"))) {
+    if (c.options.flag("clear")) {
         if (!args.isEmpty())
             return Outcome::usage(CliEmis::tr("store --clear takes no other arguments"));
         const Outcome result = connectAndCall(c, QStringLiteral("clear-stored-parameters"), {});
@@ -83,8 +83,6 @@ Outcome cmdStore(CliContext& c, QStringList args)
         }
         return result;
     }
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     if (args.isEmpty())
         return Outcome::usage(CliEmis::tr("store needs NAME=VALUE[,VALUE,...] or --clear"));
     const ParameterSchema& schema = c.model->schema;
@@ -121,8 +119,6 @@ Outcome cmdStore(CliContext& c, QStringList args)
 
 Outcome cmdGetStored(CliContext& c, QStringList args)
 {
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     const ParameterSchema& schema = c.model->schema;
     for (const QString& name : args) {
         if (!schema.find(name))
@@ -203,14 +199,9 @@ Outcome cmdProgram(CliContext& c, QStringList args)
 {
     if (!c.capabilities().inputPrograms)
         return unsupported(c, CliEmis::tr("input programs"));
-    const bool erase = takeFlag(&args, QStringLiteral("--erase"));
-    const bool force = takeFlag(&args, QStringLiteral("--force"));
-    QString error;
-    const std::optional<QString> title = takeOption(&args, QStringLiteral("--title"), &error);
-    if (!error.isEmpty())
-        return Outcome::usage(error);
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const bool erase = c.options.flag("erase");
+    const bool force = c.options.flag("force");
+    const std::optional<QString> title = c.options.value("title");
     qint64 input = 0;
     const QString usage = CliEmis::tr("program needs the input number first: `program N "
                                       "--title TEXT COMMAND...` or `program N --erase`");

@@ -43,12 +43,24 @@ Outcome reportPositions(CliContext& c)
     return Outcome::success();
 }
 
-// A failure while motion runs: the motion is stopped before the command returns.
+// A failure while motion runs: the motion is stopped before the command returns, and the
+// command returns once the device reports standstill (bounded), so that the axes are at rest
+// when the CLI exits -- or the message says they may not be. Without the wait, a board still
+// braking on its stop ramp was found moving by the next command.
 Outcome stopThenFail(CliContext& c, const Outcome& failure)
 {
-    if (!c.session.linkLost() && !c.session.interrupted())
-        c.session.stopMotion();
-    return failure;
+    constexpr int kStopSettleMs = 5000;
+    if (c.session.linkLost() || c.session.interrupted())
+        return failure;
+    const Outcome stopped = c.session.stopMotion();
+    if (!stopped.ok())
+        return Outcome::failure(failure.code, tr("%1; %2").arg(failure.message, stopped.message));
+    const Outcome still = c.session.waitUntilIdle(kStopSettleMs);
+    if (!still.ok()) {
+        return Outcome::failure(failure.code,
+                                tr("%1; after the stop: %2").arg(failure.message, still.message));
+    }
+    return Outcome::failure(failure.code, tr("%1; stopped").arg(failure.message));
 }
 
 using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
@@ -100,22 +112,16 @@ Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWa
     return reportPositions(c);
 }
 
-Outcome positioning(CliContext& c, QStringList args, const QString& command, const StartMove& start,
-                    bool allowAbs, const CheckValues& check = {})
+Outcome positioning(CliContext& c, const QStringList& args, const QString& command,
+                    const StartMove& start, const CheckValues& check = {})
 {
-    const bool absolute = allowAbs && takeFlag(&args, QStringLiteral("--abs"));
-    const bool noWait = takeFlag(&args, QStringLiteral("--no-wait"));
-    QString optionError;
-    const std::optional<QString> timeoutText =
-        takeOption(&args, QStringLiteral("--timeout"), &optionError);
-    if (!optionError.isEmpty())
-        return Outcome::usage(optionError);
+    const bool absolute = c.options.flag("abs"); // only move has it
+    const bool noWait = c.options.flag("no-wait");
+    const std::optional<QString> timeoutText = c.options.value("timeout");
     qint64 timeoutMs = -1;
     if (timeoutText && !parseDuration(*timeoutText, &timeoutMs))
         return Outcome::usage(
             tr("%1 --timeout needs a positive number of milliseconds").arg(command));
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     AxisVector steps;
     if (const Outcome parsed = parseAxisIntegers(command, args, c.axes(), &steps); !parsed.ok())
         return parsed;
@@ -210,14 +216,13 @@ Outcome noArguments(CliContext& c, const QStringList& args, const QString& comma
 
 Outcome cmdMove(CliContext& c, QStringList args)
 {
-    return positioning(
-        c, args, QStringLiteral("move"),
-        [](ControllerSession& s, const AxisVector& v) { return s.moveRelative(v); }, true);
+    return positioning(c, args, QStringLiteral("move"),
+                       [](ControllerSession& s, const AxisVector& v) { return s.moveRelative(v); });
 }
 
 Outcome cmdFeed(CliContext& c, QStringList args)
 {
-    const bool noWait = args.contains(QStringLiteral("--no-wait"));
+    const bool noWait = c.options.flag("no-wait");
     const auto oneAxisUnlessWaiting = [noWait](const AxisVector& steps) {
         int moving = 0;
         for (qint64 n : steps)
@@ -230,14 +235,13 @@ Outcome cmdFeed(CliContext& c, QStringList args)
     };
     return positioning(
         c, args, QStringLiteral("feed"),
-        [](ControllerSession& s, const AxisVector& v) { return s.feed(v); }, false,
-        oneAxisUnlessWaiting);
+        [](ControllerSession& s, const AxisVector& v) { return s.feed(v); }, oneAxisUnlessWaiting);
 }
 
 Outcome cmdHome(CliContext& c, QStringList args)
 {
     // --simultaneous: every named axis at once (EMIS "$Hxy,a", manual 9.9).
-    const bool simultaneous = takeFlag(&args, QStringLiteral("--simultaneous"));
+    const bool simultaneous = c.options.flag("simultaneous");
     const auto directionsValid = [simultaneous](const AxisVector& directions) {
         for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
             if (simultaneous && it.value() == -1) {
@@ -269,7 +273,7 @@ Outcome cmdHome(CliContext& c, QStringList args)
             directions.insert(it.key(), int(it.value()));
         return s.reference(directions);
     };
-    return positioning(c, args, QStringLiteral("home"), start, false, directionsValid);
+    return positioning(c, args, QStringLiteral("home"), start, directionsValid);
 }
 
 // The velocity move runs until SIGINT/SIGTERM/SIGHUP or --for MS, then stops with a ramp.
@@ -277,12 +281,7 @@ Outcome cmdHome(CliContext& c, QStringList args)
 // any other way, the adapter's close sends the stop (safety contract).
 Outcome cmdVelocity(CliContext& c, QStringList args)
 {
-    QString error;
-    const std::optional<QString> forText = takeOption(&args, QStringLiteral("--for"), &error);
-    if (!error.isEmpty())
-        return Outcome::usage(error);
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const std::optional<QString> forText = c.options.value("for");
     qint64 forMs = -1;
     if (forText && !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
@@ -319,12 +318,7 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
 
 Outcome cmdJog(CliContext& c, QStringList args)
 {
-    QString error;
-    const std::optional<QString> forText = takeOption(&args, QStringLiteral("--for"), &error);
-    if (!error.isEmpty())
-        return Outcome::usage(error);
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const std::optional<QString> forText = c.options.value("for");
     qint64 forMs = 0;
     if (!forText || !parseDuration(*forText, &forMs))
         return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));

@@ -62,9 +62,7 @@ QString writtenText(const ModelInfo& model, const ParameterSet& set, bool verify
 
 Outcome cmdSet(CliContext& c, QStringList args)
 {
-    const bool verify = !takeFlag(&args, QStringLiteral("--no-verify"));
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const bool verify = !c.options.flag("no-verify");
     if (args.isEmpty())
         return Outcome::usage(tr("set needs NAME=VALUE[,VALUE,...] (see `params`)"));
     const ParameterSchema& schema = c.model->schema;
@@ -100,8 +98,6 @@ Outcome cmdGet(CliContext& c, QStringList args)
 {
     if (c.capabilities().storedParameters)
         return cmdGetStored(c, args); // what the device keeps for power-on
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     if (args.isEmpty())
         return Outcome::usage(tr("get needs one or more parameter names (see `params`)"));
     const ParameterSchema& schema = c.model->schema;
@@ -140,8 +136,6 @@ Outcome cmdGet(CliContext& c, QStringList args)
 // format, so export -> edit -> import is the way to keep a machine's setup in a file.
 Outcome cmdExport(CliContext& c, QStringList args)
 {
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
     if (args.size() != 1)
         return Outcome::usage(tr("export needs exactly one FILE"));
     const QString path = args.first();
@@ -183,9 +177,7 @@ Outcome cmdExport(CliContext& c, QStringList args)
 
 Outcome cmdImport(CliContext& c, QStringList args)
 {
-    const bool verify = !takeFlag(&args, QStringLiteral("--no-verify"));
-    if (const QString e = unknownOption(args); !e.isEmpty())
-        return Outcome::usage(e);
+    const bool verify = !c.options.flag("no-verify");
     if (args.size() != 1)
         return Outcome::usage(tr("import needs exactly one FILE"));
     const QString path = args.first();

@@ -27,7 +27,7 @@ int main(int argc, char** argv)
 
     CliOptions options;
     QString error;
-    if (!parseArguments(application.arguments().mid(1), &options, &error)) {
+    if (!parseArguments(application.arguments(), commandSyntax(), &options, &error)) {
         printError(error);
         return ExitUsage;
     }

@@ -35,6 +35,7 @@ private Q_SLOTS:
     void numbers_decimalOnly_nonFiniteIsUsage();
     void move_afterSetup_printsEndPositionsAndIdle();
     void move_positions_doNotOutliveTheSession();
+    void move_timeoutAfterTheCommand_reachesTheMove();
     void exportImport_roundTrip_writesTheSetup();
     void import_brokenFile_refusedAndNothingWritten_data();
     void import_brokenFile_refusedAndNothingWritten();
@@ -328,6 +329,16 @@ void TestCliEndToEnd::move_positions_doNotOutliveTheSession()
     QVERIFY2(abs.err.contains("unknown"), abs.err.constData());
 }
 
+void TestCliEndToEnd::move_timeoutAfterTheCommand_reachesTheMove()
+{
+    // `--timeout MS` after move is the motion's (docs/cli.md), not the link's: the move runs
+    // into it and the CLI exits 5 naming it.
+    QCOMPARE(cli({"set", "start-speed=50", "max-speed=200", "acceleration=4000"}).exitCode, 0);
+    const Run run = cli({"move", "X=100000", "--timeout", "300"});
+    QCOMPARE(run.exitCode, 5);
+    QVERIFY2(run.err.contains("within 300 ms"), run.err.constData());
+}
+
 void TestCliEndToEnd::exportImport_roundTrip_writesTheSetup()
 {
     const QString path = m_tmp.filePath("setup.json");
@@ -422,6 +433,10 @@ void TestCliEndToEnd::usageErrors_exitTwoWithOneLine_data()
     QTest::addColumn<QString>("needle");
     QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command";
     QTest::newRow("unknown option") << QStringList{"status", "--bogus"} << "unknown option";
+    QTest::newRow("option of another command")
+        << QStringList{"status", "--for", "5"} << "unknown option '--for'";
+    QTest::newRow("option without its value")
+        << QStringList{"jog", "X=100", "--for"} << "missing value after '--for'";
     QTest::newRow("no command") << QStringList{} << "no command";
     QTest::newRow("axis value not a number")
         << QStringList{"move", "X=abc"} << "not a decimal number";

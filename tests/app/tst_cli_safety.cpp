@@ -50,6 +50,8 @@ private Q_SLOTS:
     void deviceGoesSilent_whileMoving_stopReachesDevice_exit6_data();
     void deviceGoesSilent_whileMoving_stopReachesDevice_exit6();
     void portVanishes_whileJogging_exit6_saysItMayStillMove();
+    void moveTimeout_stopReachesDevice_exit5_data();
+    void moveTimeout_stopReachesDevice_exit5();
     void lineNoise_duringMotion_survived_deviceEndsStill_data();
     void lineNoise_duringMotion_survived_deviceEndsStill();
 
@@ -187,6 +189,32 @@ void TestCliSafety::deviceGoesSilent_whileMoving_stopReachesDevice_exit6()
              stderrText().constData());
     QVERIFY(m_sim->countReceived(stopFrame(model, command)) >= 1);
     QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 5000);
+}
+
+void TestCliSafety::moveTimeout_stopReachesDevice_exit5_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QString>("target");
+    QTest::newRow("elab") << QStringLiteral("elab") << QStringLiteral("X=100000");
+    QTest::newRow("nanotec") << QStringLiteral("nanotec") << QStringLiteral("X=2500");
+}
+
+void TestCliSafety::moveTimeout_stopReachesDevice_exit5()
+{
+    // `move --timeout MS`: the caller's deadline passes while the axis runs; the CLI must
+    // stop it before it lets go (docs/cli.md), and exit only once the device stands still.
+    QFETCH(QString, model);
+    QFETCH(QString, target);
+    startDevice(model);
+    startCli(model, {"move", target, "--timeout", "150"});
+    QVERIFY(finished());
+    QVERIFY2(m_cli->exitCode() == 5, stderrText().constData());
+    QVERIFY2(stderrText().contains("within 150 ms"), stderrText().constData());
+    QVERIFY2(m_sim->countReceived(stopFrame(model, QStringLiteral("move"))) >= 1,
+             stderrText().constData());
+    QVERIFY2(stderrText().contains("stopped"), stderrText().constData());
+    // The CLI returned once the device reported standstill: nothing left braking.
+    QVERIFY(m_sim->standingStill());
 }
 
 void TestCliSafety::portVanishes_whileJogging_exit6_saysItMayStillMove()

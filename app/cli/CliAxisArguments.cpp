@@ -1,0 +1,104 @@
+// AXIS=VALUE arguments ("X=100 Y=-5", "X=1.5e3") and the --axes map ("X=1,Y=2"): decimal
+// numbers only (core/model/NumberParsing), a usage error for anything else.
+#include "CliArguments.h"
+#include "model/NumberParsing.h"
+#include <QCoreApplication>
+#include <limits>
+
+namespace stepdeck::cli {
+
+namespace {
+struct CliAxisArguments
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::cli::CliAxisArguments)
+};
+
+// Parse: (QStringView text, T* value) -> NumberError. A failure is an Outcome whose message
+// does not name the command yet.
+template <typename T, typename Parse>
+Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
+                             Parse parse)
+{
+    QMap<Axis, T> result;
+    for (const QString& arg : args) {
+        const int eq = arg.indexOf(QLatin1Char('='));
+        const auto axis = eq > 0 ? axisFromName(QStringView(arg).left(eq)) : std::nullopt;
+        if (!axis)
+            return Outcome::usage(
+                CliAxisArguments::tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg));
+        if (!axes.contains(*axis))
+            return Outcome::usage(
+                CliAxisArguments::tr("this machine has no axis %1").arg(axisName(*axis)));
+        if (result.contains(*axis))
+            return Outcome::usage(CliAxisArguments::tr("axis %1 given twice").arg(axisName(*axis)));
+        T value{};
+        const QString text = arg.mid(eq + 1);
+        switch (parse(QStringView(text), &value)) {
+        case NumberError::None:
+            break;
+        case NumberError::Malformed:
+            return Outcome::usage(CliAxisArguments::tr("%1: '%2' is not a decimal number")
+                                      .arg(axisName(*axis), text));
+        case NumberError::NonFinite:
+            return Outcome::usage(
+                CliAxisArguments::tr("%1: '%2' is not a finite number").arg(axisName(*axis), text));
+        case NumberError::OutOfRange:
+            return Outcome::failure(
+                ExitInvalidValue,
+                CliAxisArguments::tr("%1: '%2' is out of range").arg(axisName(*axis), text));
+        }
+        result.insert(*axis, value);
+    }
+    if (result.isEmpty())
+        return Outcome::usage(CliAxisArguments::tr("no axis given (e.g. X=100 Y=0 Z=-50)"));
+    *out = result;
+    return Outcome::success();
+}
+
+Outcome named(const QString& command, Outcome outcome)
+{
+    if (!outcome.ok())
+        outcome.message = CliAxisArguments::tr("%1: %2").arg(command, outcome.message);
+    return outcome;
+}
+
+} // namespace
+
+Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                          AxisVector* out)
+{
+    return named(command,
+                 parseAxisAssignments<qint64>(args, axes, out, [](QStringView s, qint64* v) {
+                     return numbers::parseInteger(s, v);
+                 }));
+}
+
+Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
+                         AxisVelocities* out)
+{
+    return named(command,
+                 parseAxisAssignments<double>(args, axes, out, [](QStringView s, double* v) {
+                     return numbers::parseReal(s, v);
+                 }));
+}
+
+bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error)
+{
+    QMap<Axis, qint64> parsed;
+    const Outcome read = parseAxisAssignments<qint64>(
+        text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed,
+        [](QStringView s, qint64* v) {
+            return numbers::parseInteger(s, 0, std::numeric_limits<int>::max(), v);
+        });
+    if (!read.ok()) {
+        *error = CliAxisArguments::tr("--axes: %1").arg(read.message);
+        return false;
+    }
+    QMap<Axis, int> result;
+    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it)
+        result.insert(it.key(), int(it.value()));
+    *out = result;
+    return true;
+}
+
+} // namespace stepdeck::cli
