@@ -2,6 +2,7 @@
 // options up to the command name, then the rest with the global options plus the command's own.
 #include "CliArguments.h"
 #include "CliOutput.h"
+#include "CliText.h"
 #include "model/NumberParsing.h"
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -10,11 +11,6 @@
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 // The global options: the parser's table and the "Options" part of --help. names: the short
 // name (if any) first, the long name last; help: lines of the description.
 struct GlobalOption
@@ -86,7 +82,7 @@ void addGlobalOptions(QCommandLineParser* parser, const QStringList& shadowed = 
 QString optionsHelp()
 {
     constexpr int kColumn = 21; // where the descriptions start, as in the Commands part
-    QString text = tr("Options (before or after the command):\n");
+    QString text = CliText::tr("Options (before or after the command):\n");
     for (const GlobalOption& option : kGlobalOptions) {
         QStringList names;
         for (const QString& name : namesOf(option))
@@ -96,7 +92,8 @@ QString optionsHelp()
             left += QLatin1Char(' ') + QLatin1String(option.valueName);
         left = left.size() < kColumn ? left.leftJustified(kColumn) : left + QStringLiteral("  ");
         const QString indent = QStringLiteral("\n") + QString(kColumn, QLatin1Char(' '));
-        text += left + tr(option.help).split(QLatin1Char('\n')).join(indent) + QLatin1Char('\n');
+        text += left + CliText::tr(option.help).split(QLatin1Char('\n')).join(indent) +
+                QLatin1Char('\n');
     }
     return text + QLatin1Char('\n');
 }
@@ -139,14 +136,14 @@ QString parseError(const QCommandLineParser& parser)
     if (!unknown.isEmpty()) {
         const QString& name = unknown.constFirst();
         const QString dashes = name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--");
-        return tr("unknown option '%1' (try --help)").arg(dashes + name);
+        return CliText::tr("unknown option '%1' (try --help)").arg(dashes + name);
     }
     QString text = parser.errorText();
     if (text.endsWith(QLatin1Char('.')))
         text.chop(1);
     if (!text.isEmpty())
         text[0] = text.at(0).toLower();
-    return tr("%1 (try --help)").arg(text);
+    return CliText::tr("%1 (try --help)").arg(text);
 }
 
 // A positive number of milliseconds (--timeout, --arrival-timeout).
@@ -154,7 +151,7 @@ bool parseMilliseconds(const QString& name, const QString& value, int* out, QStr
 {
     if (numbers::parseInt(value, 1, std::numeric_limits<int>::max(), out) == NumberError::None)
         return true;
-    *error = tr("--%1 needs a positive number of milliseconds").arg(name);
+    *error = CliText::tr("--%1 needs a positive number of milliseconds").arg(name);
     return false;
 }
 
@@ -170,14 +167,14 @@ bool applyValue(const QString& name, const QString& value, CliOptions* o, QStrin
     } else if (name == QLatin1String("reset-line")) {
         const std::optional<LineSettings::ResetLine> line = resetLineFromName(value);
         if (!line) {
-            *error = tr("--reset-line needs rts or dtr, got '%1'").arg(value);
+            *error = CliText::tr("--reset-line needs rts or dtr, got '%1'").arg(value);
             return false;
         }
         o->resetLine = *line;
     } else if (name == QLatin1String("address")) {
         int n = 0;
         if (numbers::parseInt(value, 0, std::numeric_limits<int>::max(), &n) != NumberError::None) {
-            *error = tr("--address needs a non-negative number, got '%1'").arg(value);
+            *error = CliText::tr("--address needs a non-negative number, got '%1'").arg(value);
             return false;
         }
         o->address = n;
@@ -287,18 +284,18 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
         o.command = restored(positional.constFirst());
         const CommandSyntax* command = findCommand(commands, o.command);
         if (!command) {
-            *error = tr("unknown command '%1' (try --help)").arg(o.command);
+            *error = CliText::tr("unknown command '%1' (try --help)").arg(o.command);
             return false;
         }
         if (!parseCommandPart(arguments.value(0), positional.mid(1), *command, &o, error))
             return false;
     }
     if (o.address && !o.axisAddresses.isEmpty()) {
-        *error = tr("give either --address or --axes, not both");
+        *error = CliText::tr("give either --address or --axes, not both");
         return false;
     }
     if (o.command.isEmpty() && !o.help && !o.version) {
-        *error = tr("no command given (try --help)");
+        *error = CliText::tr("no command given (try --help)");
         return false;
     }
     *options = o;
@@ -307,77 +304,78 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
 
 QString usageText()
 {
-    return tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
-              "X=1,Y=2,Z=3] [--json] COMMAND [ARGS]\n"
-              "\n") +
+    return CliText::tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
+                       "X=1,Y=2,Z=3] [--json] COMMAND [ARGS]\n"
+                       "\n") +
            optionsHelp() +
-           tr("Commands:\n"
-              "  ports                       serial ports with description and USB VID:PID\n"
-              "                              (pseudo-terminals are not listed)\n"
-              "  status                      one poll: machine and axis flags, positions,\n"
-              "                              temperature\n"
-              "  set NAME=V[,V,V] ...        write parameters; per-axis values in X,Y,Z(,U)\n"
-              "                              order, or one value for every axis; models that\n"
-              "                              can read them back verify every value (exit 11\n"
-              "                              if a drive kept another one; --no-verify)\n"
-              "  get NAME ...                read back where the protocol can, else say it\n"
-              "                              cannot (exit 8)\n"
-              "  export FILE                 parameter set as JSON: values read back where the\n"
-              "                              model can, otherwise the schema defaults (E-LAB\n"
-              "                              parameters are write-only); \"origin\" in the file\n"
-              "                              says which is which\n"
-              "  import FILE                 validates the whole file first, refuses it with\n"
-              "                              one reason if anything is wrong, then writes\n"
-              "                              every parameter in it (verified like set;\n"
-              "                              --no-verify)\n"
-              "  move [--abs] X=N Y=N Z=N    positioning move in steps; waits until idle and\n"
-              "                              prints the positions (--no-wait: return at once;\n"
-              "                              --timeout MS: stop it and exit 5 past MS)\n"
-              "  jog X=V Y=V Z=V --for MS    jog at V steps/s for MS ms, ramped up and back\n"
-              "                              to zero\n"
-              "  home X=-1 Y=0 Z=1           reference move with a direction per axis; waits\n"
-              "                              until idle and prints the positions (--no-wait;\n"
-              "                              --timeout MS: stop it and exit 5 past MS; emis:\n"
-              "                              X=1 selects an axis, --simultaneous runs them\n"
-              "                              together)\n"
-              "  velocity X=V Y=V Z=V        velocity move in steps/s; runs until Ctrl-C,\n"
-              "                              SIGTERM or SIGHUP (or --for MS), then a ramped\n"
-              "                              stop\n"
-              "  feed X=N Y=N Z=N            feed move; waits until idle (--no-wait: one axis\n"
-              "                              only; a multi-axis feed is streamed by the host)\n"
-              "  stop | panic | reset        ramped stop | emergency stop | hardware reset\n"
-              "  spindle RPM | coolant on|off | power PERCENT\n"
-              "                              spindle speed, coolant, drive power in percent\n"
-              "                              (checked against the parameter ranges)\n"
-              "  scan [--first N] [--last N]\n"
-              "                              drives answering on the bus (addresses 1..254):\n"
-              "                              address and firmware string (multi-drive models\n"
-              "                              such as nanotec; others exit 8)\n"
-              "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"
-              "  store NAME=V[,V,V,V] ...    write power-on values (emis system parameters,\n"
-              "                              ##...); store --clear sends *PESYS; `get` then\n"
-              "                              reads the stored values back (*PRSYS)\n"
-              "  output N on|off             switch a digital output (emis: 1..7)\n"
-              "  program N --title TEXT CMD...  store the input program of input N (emis;\n"
-              "                              inputs 1-4 carry the reference switches: --force);\n"
-              "                              program N --erase deletes it\n"
-              "  laser-bridge LASER_PORT [--map 1=X,2=Y,3=Z] [--scale STEPS_PER_UNIT]\n"
-              "               [--home X=-1,Y=-1,Z=-1] [--door-input N]\n"
-              "                              be the motor axes of a laser marker: answer its\n"
-              "                              frames on LASER_PORT (9600 8N1) with this\n"
-              "                              controller; runs until SIGINT/SIGTERM/SIGHUP,\n"
-              "                              stops the motion it started and exits 0\n"
-              "  models                      controller models known to this build\n"
-              "  params                      the model's parameters: range, unit, default\n"
-              "\n"
-              "Positions are tracked by the host on models without position read-back\n"
-              "(E-LAB): every invocation is a new session and starts with positions unknown\n"
-              "(counted from 0), so `move --abs` is refused there; `move`, `home` and `feed`\n"
-              "print the positions they end at.\n"
-              "\n"
-              "Arguments that start with '-' are options: an unknown option or one of another\n"
-              "command is a usage error (exit 2). Everything after `--` is an argument.\n"
-              "\n") +
+           CliText::tr(
+               "Commands:\n"
+               "  ports                       serial ports with description and USB VID:PID\n"
+               "                              (pseudo-terminals are not listed)\n"
+               "  status                      one poll: machine and axis flags, positions,\n"
+               "                              temperature\n"
+               "  set NAME=V[,V,V] ...        write parameters; per-axis values in X,Y,Z(,U)\n"
+               "                              order, or one value for every axis; models that\n"
+               "                              can read them back verify every value (exit 11\n"
+               "                              if a drive kept another one; --no-verify)\n"
+               "  get NAME ...                read back where the protocol can, else say it\n"
+               "                              cannot (exit 8)\n"
+               "  export FILE                 parameter set as JSON: values read back where the\n"
+               "                              model can, otherwise the schema defaults (E-LAB\n"
+               "                              parameters are write-only); \"origin\" in the file\n"
+               "                              says which is which\n"
+               "  import FILE                 validates the whole file first, refuses it with\n"
+               "                              one reason if anything is wrong, then writes\n"
+               "                              every parameter in it (verified like set;\n"
+               "                              --no-verify)\n"
+               "  move [--abs] X=N Y=N Z=N    positioning move in steps; waits until idle and\n"
+               "                              prints the positions (--no-wait: return at once;\n"
+               "                              --timeout MS: stop it and exit 5 past MS)\n"
+               "  jog X=V Y=V Z=V --for MS    jog at V steps/s for MS ms, ramped up and back\n"
+               "                              to zero\n"
+               "  home X=-1 Y=0 Z=1           reference move with a direction per axis; waits\n"
+               "                              until idle and prints the positions (--no-wait;\n"
+               "                              --timeout MS: stop it and exit 5 past MS; emis:\n"
+               "                              X=1 selects an axis, --simultaneous runs them\n"
+               "                              together)\n"
+               "  velocity X=V Y=V Z=V        velocity move in steps/s; runs until Ctrl-C,\n"
+               "                              SIGTERM or SIGHUP (or --for MS), then a ramped\n"
+               "                              stop\n"
+               "  feed X=N Y=N Z=N            feed move; waits until idle (--no-wait: one axis\n"
+               "                              only; a multi-axis feed is streamed by the host)\n"
+               "  stop | panic | reset        ramped stop | emergency stop | hardware reset\n"
+               "  spindle RPM | coolant on|off | power PERCENT\n"
+               "                              spindle speed, coolant, drive power in percent\n"
+               "                              (checked against the parameter ranges)\n"
+               "  scan [--first N] [--last N]\n"
+               "                              drives answering on the bus (addresses 1..254):\n"
+               "                              address and firmware string (multi-drive models\n"
+               "                              such as nanotec; others exit 8)\n"
+               "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"
+               "  store NAME=V[,V,V,V] ...    write power-on values (emis system parameters,\n"
+               "                              ##...); store --clear sends *PESYS; `get` then\n"
+               "                              reads the stored values back (*PRSYS)\n"
+               "  output N on|off             switch a digital output (emis: 1..7)\n"
+               "  program N --title TEXT CMD...  store the input program of input N (emis;\n"
+               "                              inputs 1-4 carry the reference switches: --force);\n"
+               "                              program N --erase deletes it\n"
+               "  laser-bridge LASER_PORT [--map 1=X,2=Y,3=Z] [--scale STEPS_PER_UNIT]\n"
+               "               [--home X=-1,Y=-1,Z=-1] [--door-input N]\n"
+               "                              be the motor axes of a laser marker: answer its\n"
+               "                              frames on LASER_PORT (9600 8N1) with this\n"
+               "                              controller; runs until SIGINT/SIGTERM/SIGHUP,\n"
+               "                              stops the motion it started and exits 0\n"
+               "  models                      controller models known to this build\n"
+               "  params                      the model's parameters: range, unit, default\n"
+               "\n"
+               "Positions are tracked by the host on models without position read-back\n"
+               "(E-LAB): every invocation is a new session and starts with positions unknown\n"
+               "(counted from 0), so `move --abs` is refused there; `move`, `home` and `feed`\n"
+               "print the positions they end at.\n"
+               "\n"
+               "Arguments that start with '-' are options: an unknown option or one of another\n"
+               "command is a usage error (exit 2). Everything after `--` is an argument.\n"
+               "\n") +
            exitCodeHelp();
 }
 

@@ -3,6 +3,7 @@
 // through the generic ControllerSession doors (scanBus, modelOperation); the adapter does the
 // protocol work.
 #include "CliCommands.h"
+#include "CliText.h"
 #include "protocols/nanotec/NanotecCodec.h"
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -10,11 +11,6 @@
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 // The bus address range is the core's (Nanotec manual 1.1: 1..254), not a second copy.
 using nanotec::kMaxAddress;
 using nanotec::kMinAddress;
@@ -27,7 +23,7 @@ bool readAddress(const CliOptions& options, const char* option, int* value, QStr
     if (!text)
         return true;
     if (numbers::parseInt(*text, kMinAddress, kMaxAddress, value) != NumberError::None) {
-        *error = tr("scan --%1 needs an address within %2..%3, got '%4'")
+        *error = CliText::tr("scan --%1 needs an address within %2..%3, got '%4'")
                      .arg(QLatin1String(option))
                      .arg(kMinAddress)
                      .arg(kMaxAddress)
@@ -55,13 +51,16 @@ Outcome cmdScan(CliContext& c, QStringList args)
         !readAddress(c.options, "last", &last, &error))
         return Outcome::usage(error);
     if (!args.isEmpty())
-        return Outcome::usage(tr("scan takes no arguments besides --first N and --last N"));
+        return Outcome::usage(
+            CliText::tr("scan takes no arguments besides --first N and --last N"));
     if (first > last)
-        return Outcome::usage(tr("scan: --first %1 lies after --last %2").arg(first).arg(last));
+        return Outcome::usage(
+            CliText::tr("scan: --first %1 lies after --last %2").arg(first).arg(last));
     if (!c.capabilities().multiDrive) {
         return Outcome::failure(
             ExitUnsupported,
-            tr("%1 has no bus to scan: it is one controller on its own link").arg(c.model->id));
+            CliText::tr("%1 has no bus to scan: it is one controller on its own link")
+                .arg(c.model->id));
     }
     // No connect(): a scan needs no configured drive; the adapter opens the port for it.
     const int timeoutMs =
@@ -82,13 +81,13 @@ Outcome cmdScan(CliContext& c, QStringList args)
         return Outcome::success();
     }
     if (drives.isEmpty()) {
-        printLine(tr("no drive answered on addresses %1..%2 of %3")
+        printLine(CliText::tr("no drive answered on addresses %1..%2 of %3")
                       .arg(first)
                       .arg(last)
                       .arg(c.options.port));
         return Outcome::success();
     }
-    printLine(tr("Address  Firmware"));
+    printLine(CliText::tr("Address  Firmware"));
     for (const QVariant& entry : drives) {
         const QVariantMap d = entry.toMap();
         printLine(QStringLiteral("%1  %2")
@@ -107,9 +106,10 @@ Outcome cmdRecords(CliContext& c, QStringList args)
     else if (args.isEmpty() && axes.size() == 1)
         axis = axes.first();
     if (args.size() > 1 || (args.isEmpty() && !axis))
-        return Outcome::usage(tr("records needs the axis of one drive, e.g. `records X`"));
+        return Outcome::usage(CliText::tr("records needs the axis of one drive, e.g. `records X`"));
     if (!axis || !axes.contains(*axis))
-        return Outcome::usage(tr("records: this machine has no axis %1").arg(args.first()));
+        return Outcome::usage(
+            CliText::tr("records: this machine has no axis %1").arg(args.first()));
     Outcome outcome = c.connect();
     if (!outcome.ok())
         return outcome;
@@ -130,7 +130,7 @@ Outcome cmdRecords(CliContext& c, QStringList args)
         QStringList parts;
         for (auto it = values.cbegin(); it != values.cend(); ++it)
             parts << QStringLiteral("%1=%2").arg(it.key(), valueText(it.value()));
-        printLine(tr("record %1: %2")
+        printLine(CliText::tr("record %1: %2")
                       .arg(record.value(QStringLiteral("record")).toInt(), 2)
                       .arg(parts.join(QLatin1Char(' '))));
     }

@@ -1,4 +1,5 @@
 #include "CliCommands.h"
+#include "CliText.h"
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QSerialPortInfo>
@@ -6,11 +7,6 @@
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 struct CommandEntry
 {
     Outcome (*run)(CliContext&, QStringList);
@@ -89,7 +85,7 @@ Outcome CliContext::connect()
     if (result.ok())
         result = session.refresh(); // the status words the adapter's rules see are current
     if (!result.ok())
-        result.message = tr("--setup-defaults: %1").arg(result.message);
+        result.message = CliText::tr("--setup-defaults: %1").arg(result.message);
     return result;
 }
 
@@ -143,7 +139,7 @@ Outcome runCommand(CliContext& context)
             continue;
         if (entry.needsModel && !context.model) {
             return Outcome::usage(
-                tr("unknown controller model '%1' (known: %2)")
+                CliText::tr("unknown controller model '%1' (known: %2)")
                     .arg(context.options.model, modelIds().join(QStringLiteral(", "))));
         }
         if (entry.needsModel) {
@@ -153,13 +149,13 @@ Outcome runCommand(CliContext& context)
         }
         return entry.run(context, context.options.args);
     }
-    return Outcome::usage(tr("unknown command '%1' (try --help)").arg(name));
+    return Outcome::usage(CliText::tr("unknown command '%1' (try --help)").arg(name));
 }
 
 Outcome cmdPorts(CliContext& c, QStringList args)
 {
     if (!args.isEmpty())
-        return Outcome::usage(tr("ports takes no arguments"));
+        return Outcome::usage(CliText::tr("ports takes no arguments"));
     QJsonArray list;
     QStringList lines;
     for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
@@ -175,9 +171,9 @@ Outcome cmdPorts(CliContext& c, QStringList args)
                                 {"vidPid", vidPid.isEmpty() ? QJsonValue() : QJsonValue(vidPid)}});
         lines << QStringLiteral("%1  %2  %3%4")
                      .arg(info.systemLocation(), -16)
-                     .arg(info.description().isEmpty() ? tr("(no description)")
+                     .arg(info.description().isEmpty() ? CliText::tr("(no description)")
                                                        : info.description())
-                     .arg(vidPid.isEmpty() ? tr("(not USB)") : vidPid)
+                     .arg(vidPid.isEmpty() ? CliText::tr("(not USB)") : vidPid)
                      .arg(info.manufacturer().isEmpty()
                               ? QString()
                               : QStringLiteral("  ") + info.manufacturer());
@@ -185,8 +181,9 @@ Outcome cmdPorts(CliContext& c, QStringList args)
     if (c.json()) {
         printJson(QJsonObject{{"ports", list}});
     } else if (lines.isEmpty()) {
-        printLine(tr("no serial ports found (pseudo-terminals are never listed: pass their path "
-                     "with --port)"));
+        printLine(
+            CliText::tr("no serial ports found (pseudo-terminals are never listed: pass their path "
+                        "with --port)"));
     } else {
         for (const QString& line : lines)
             printLine(line);
@@ -197,7 +194,7 @@ Outcome cmdPorts(CliContext& c, QStringList args)
 Outcome cmdModels(CliContext& c, QStringList args)
 {
     if (!args.isEmpty())
-        return Outcome::usage(tr("models takes no arguments"));
+        return Outcome::usage(CliText::tr("models takes no arguments"));
     QJsonArray list;
     for (const ModelInfo& model : models()) {
         QJsonArray axes;
@@ -218,7 +215,7 @@ Outcome cmdModels(CliContext& c, QStringList args)
 Outcome cmdParams(CliContext& c, QStringList args)
 {
     if (!args.isEmpty())
-        return Outcome::usage(tr("params takes no arguments"));
+        return Outcome::usage(CliText::tr("params takes no arguments"));
     QJsonArray list;
     for (const ParameterSpec& spec : c.model->schema.specs()) {
         list.append(QJsonObject{{"name", spec.name},
@@ -236,13 +233,13 @@ Outcome cmdParams(CliContext& c, QStringList args)
             continue;
         printLine(QStringLiteral("%1  %2  %3  %4  %5  %6")
                       .arg(spec.name, -19)
-                      .arg(spec.perAxis ? tr("per axis") : tr("global"), -8)
+                      .arg(spec.perAxis ? CliText::tr("per axis") : CliText::tr("global"), -8)
                       .arg(QStringLiteral("%1 %2")
                                .arg(ParameterSchema::rangeText(spec), spec.unit)
                                .trimmed(),
                            -19)
-                      .arg(tr("default %1").arg(defaultText(spec)), -14)
-                      .arg(spec.readable ? tr("readable") : tr("write-only"), -10)
+                      .arg(CliText::tr("default %1").arg(defaultText(spec)), -14)
+                      .arg(spec.readable ? CliText::tr("readable") : CliText::tr("write-only"), -10)
                       .arg(spec.label));
     }
     if (c.json())
@@ -253,7 +250,7 @@ Outcome cmdParams(CliContext& c, QStringList args)
 Outcome cmdStatus(CliContext& c, QStringList args)
 {
     if (!args.isEmpty())
-        return Outcome::usage(tr("status takes no arguments"));
+        return Outcome::usage(CliText::tr("status takes no arguments"));
     Outcome result = c.connect();
     if (result.ok())
         result = c.session.refresh();

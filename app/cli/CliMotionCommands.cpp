@@ -1,6 +1,7 @@
 // Motion and auxiliary commands. Refusals (limit switch, setup incomplete, not idle, position
 // unknown) come from the adapter, which knows the manual's rules; the CLI only checks shapes.
 #include "CliCommands.h"
+#include "CliText.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QtMath>
@@ -10,11 +11,6 @@
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 // A positive number of milliseconds (--for MS, --timeout MS), decimal.
 bool parseDuration(const QString& text, qint64* ms)
 {
@@ -39,7 +35,7 @@ Outcome reportPositions(CliContext& c)
     if (c.json())
         printJson(c.session.status().toJson(c.model->id));
     else
-        printLine(tr("positions: %1").arg(formatPositions(c.session.status())));
+        printLine(CliText::tr("positions: %1").arg(formatPositions(c.session.status())));
     return Outcome::success();
 }
 
@@ -54,13 +50,15 @@ Outcome stopThenFail(CliContext& c, const Outcome& failure)
         return failure;
     const Outcome stopped = c.session.stopMotion();
     if (!stopped.ok())
-        return Outcome::failure(failure.code, tr("%1; %2").arg(failure.message, stopped.message));
+        return Outcome::failure(failure.code,
+                                CliText::tr("%1; %2").arg(failure.message, stopped.message));
     const Outcome still = c.session.waitUntilIdle(kStopSettleMs);
     if (!still.ok()) {
-        return Outcome::failure(failure.code,
-                                tr("%1; after the stop: %2").arg(failure.message, still.message));
+        return Outcome::failure(
+            failure.code,
+            CliText::tr("%1; after the stop: %2").arg(failure.message, still.message));
     }
-    return Outcome::failure(failure.code, tr("%1; stopped").arg(failure.message));
+    return Outcome::failure(failure.code, CliText::tr("%1; stopped").arg(failure.message));
 }
 
 using StartMove = std::function<RequestId(ControllerSession&, const AxisVector&)>;
@@ -105,8 +103,8 @@ Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWa
             printJson(c.session.status().toJson(c.model->id));
         return Outcome::failure(
             ExitMotionAborted,
-            tr("motion aborted: axis %1 stopped at its end switch (status 1) "
-               "before reaching its target; positions: %2")
+            CliText::tr("motion aborted: axis %1 stopped at its end switch (status 1) "
+                        "before reaching its target; positions: %2")
                 .arg(endSwitch.join(QStringLiteral(", ")), formatPositions(c.session.status())));
     }
     return reportPositions(c);
@@ -121,7 +119,7 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
     qint64 timeoutMs = -1;
     if (timeoutText && !parseDuration(*timeoutText, &timeoutMs))
         return Outcome::usage(
-            tr("%1 --timeout needs a positive number of milliseconds").arg(command));
+            CliText::tr("%1 --timeout needs a positive number of milliseconds").arg(command));
     AxisVector steps;
     if (const Outcome parsed = parseAxisIntegers(command, args, c.axes(), &steps); !parsed.ok())
         return parsed;
@@ -147,10 +145,10 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
         return stopThenFail(c, result); // never left running past the caller's deadline
     if (result.ok() && c.session.status().motionUnconfirmed) {
         // A model without position read-back (EMIS) lost an arrival: nothing proves the stop.
-        return Outcome::failure(ExitTimeout,
-                                tr("the device did not confirm that the move arrived: an axis "
-                                   "may still be moving; positions are unknown until "
-                                   "referenced"));
+        return Outcome::failure(
+            ExitTimeout, CliText::tr("the device did not confirm that the move arrived: an axis "
+                                     "may still be moving; positions are unknown until "
+                                     "referenced"));
     }
     return result.ok() ? reportPositions(c) : result;
 }
@@ -175,13 +173,13 @@ Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
             return Outcome::success(); // some boards keep their jog-mode bit at rate zero
         if (clock.elapsed() > deadlineMs) {
             const Outcome stopped = c.session.stopMotion();
-            return Outcome::failure(ExitFailure,
-                                    tr("jog did not ramp down within %1 ms; %2")
-                                        .arg(deadlineMs)
-                                        .arg(stopped.ok() ? tr("stopped") : stopped.message));
+            return Outcome::failure(
+                ExitFailure, CliText::tr("jog did not ramp down within %1 ms; %2")
+                                 .arg(deadlineMs)
+                                 .arg(stopped.ok() ? CliText::tr("stopped") : stopped.message));
         }
         if (!c.session.pause(CliSession::kIdlePollMs))
-            return Outcome::failure(ExitInterrupted, tr("interrupted"));
+            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
     }
 }
 
@@ -192,11 +190,11 @@ Outcome readSchemaValue(const CliContext& c, const QString& parameter, const QSt
                         qint64* value)
 {
     if (numbers::isNonFiniteWord(text))
-        return Outcome::usage(tr("%1: '%2' is not a finite number").arg(parameter, text));
+        return Outcome::usage(CliText::tr("%1: '%2' is not a finite number").arg(parameter, text));
     const ParameterSpec* spec = c.model->schema.find(parameter);
     if (!spec) { // the adapter says whether the model can do it at all
         if (numbers::parseInteger(text, value) != NumberError::None)
-            return Outcome::usage(tr("'%1' is not a decimal number").arg(text));
+            return Outcome::usage(CliText::tr("'%1' is not a decimal number").arg(text));
         return Outcome::success();
     }
     if (const QString e = c.model->schema.validateScalar(*spec, text); !e.isEmpty())
@@ -209,7 +207,7 @@ Outcome noArguments(CliContext& c, const QStringList& args, const QString& comma
                     const std::function<RequestId(ControllerSession&)>& start)
 {
     if (!args.isEmpty())
-        return Outcome::usage(tr("%1 takes no arguments").arg(command));
+        return Outcome::usage(CliText::tr("%1 takes no arguments").arg(command));
     return connectAndRun(c, start);
 }
 } // namespace
@@ -229,8 +227,9 @@ Outcome cmdFeed(CliContext& c, QStringList args)
             moving += n != 0 ? 1 : 0;
         // A multi-axis feed is a host-driven <DC2> stream: it ends when this process does.
         if (noWait && moving > 1)
-            return Outcome::usage(tr("feed --no-wait works for one axis only: a multi-axis "
-                                     "feed is streamed by the host while the CLI runs"));
+            return Outcome::usage(
+                CliText::tr("feed --no-wait works for one axis only: a multi-axis "
+                            "feed is streamed by the host while the CLI runs"));
         return Outcome::success();
     };
     return positioning(
@@ -245,16 +244,18 @@ Outcome cmdHome(CliContext& c, QStringList args)
     const auto directionsValid = [simultaneous](const AxisVector& directions) {
         for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
             if (simultaneous && it.value() == -1) {
-                return Outcome::failure(ExitInvalidValue,
-                                        tr("home --simultaneous: axis %1 takes 1 (reference) or "
-                                           "0 (leave out)")
-                                            .arg(axisName(it.key())));
+                return Outcome::failure(
+                    ExitInvalidValue,
+                    CliText::tr("home --simultaneous: axis %1 takes 1 (reference) or "
+                                "0 (leave out)")
+                        .arg(axisName(it.key())));
             }
             if (it.value() < -1 || it.value() > 1) {
-                return Outcome::failure(ExitInvalidValue,
-                                        tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
-                                            .arg(axisName(it.key()))
-                                            .arg(it.value()));
+                return Outcome::failure(
+                    ExitInvalidValue,
+                    CliText::tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
+                        .arg(axisName(it.key()))
+                        .arg(it.value()));
             }
         }
         return Outcome::success();
@@ -284,7 +285,8 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
     const std::optional<QString> forText = c.options.value("for");
     qint64 forMs = -1;
     if (forText && !parseDuration(*forText, &forMs))
-        return Outcome::usage(tr("velocity --for needs a positive number of milliseconds"));
+        return Outcome::usage(
+            CliText::tr("velocity --for needs a positive number of milliseconds"));
     AxisVector rates;
     if (const Outcome parsed =
             parseAxisIntegers(QStringLiteral("velocity"), args, c.axes(), &rates);
@@ -294,9 +296,10 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
     if (!result.ok())
         return c.session.linkLost() ? c.session.linkLostOutcome() : result;
     if (!c.json()) {
-        printLine(forMs > 0 ? tr("velocity move running for %1 ms").arg(forMs)
-                            : tr("velocity move running; Ctrl-C, SIGTERM or SIGHUP ends it with "
-                                 "a ramped stop"));
+        printLine(forMs > 0
+                      ? CliText::tr("velocity move running for %1 ms").arg(forMs)
+                      : CliText::tr("velocity move running; Ctrl-C, SIGTERM or SIGHUP ends it with "
+                                    "a ramped stop"));
     }
     QElapsedTimer clock;
     clock.start();
@@ -321,7 +324,8 @@ Outcome cmdJog(CliContext& c, QStringList args)
     const std::optional<QString> forText = c.options.value("for");
     qint64 forMs = 0;
     if (!forText || !parseDuration(*forText, &forMs))
-        return Outcome::usage(tr("jog needs --for MS (a positive number of milliseconds)"));
+        return Outcome::usage(
+            CliText::tr("jog needs --for MS (a positive number of milliseconds)"));
     AxisVelocities rates;
     if (const Outcome parsed = parseAxisDoubles(QStringLiteral("jog"), args, c.axes(), &rates);
         !parsed.ok())
@@ -330,12 +334,13 @@ Outcome cmdJog(CliContext& c, QStringList args)
     double fastest = 0;
     for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
         if (qAbs(it.value()) > maxSpeed) {
-            return Outcome::failure(ExitInvalidValue,
-                                    tr("jog: %1=%2 steps/s is out of range (allowed: -%3..%3 "
-                                       "steps/s)")
-                                        .arg(axisName(it.key()))
-                                        .arg(it.value())
-                                        .arg(maxSpeed));
+            return Outcome::failure(
+                ExitInvalidValue,
+                CliText::tr("jog: %1=%2 steps/s is out of range (allowed: -%3..%3 "
+                            "steps/s)")
+                    .arg(axisName(it.key()))
+                    .arg(it.value())
+                    .arg(maxSpeed));
         }
         fastest = qMax(fastest, qAbs(it.value()));
     }
@@ -355,7 +360,7 @@ Outcome cmdJog(CliContext& c, QStringList args)
             break;
         c.session.session().setJogVelocity(rates);
         if (!c.session.pause(int(qMin<qint64>(kJogRenewMs, forMs - clock.elapsed()))))
-            return Outcome::failure(ExitInterrupted, tr("interrupted"));
+            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
     }
     c.session.session().endJog();
     const double acceleration = c.capabilities().defaultJogAcceleration;
@@ -386,7 +391,7 @@ Outcome cmdPanic(CliContext& c, QStringList args)
     const Outcome result = noArguments(c, args, QStringLiteral("panic"),
                                        [](ControllerSession& s) { return s.panic(); });
     if (result.ok() && !c.json())
-        printLine(tr("emergency stop sent; positions are unknown until referenced"));
+        printLine(CliText::tr("emergency stop sent; positions are unknown until referenced"));
     return result;
 }
 
@@ -400,7 +405,7 @@ Outcome cmdSpindle(CliContext& c, QStringList args)
 {
     qint64 rpm = 0;
     if (args.size() != 1)
-        return Outcome::usage(tr("spindle needs one RPM value, e.g. `spindle 500`"));
+        return Outcome::usage(CliText::tr("spindle needs one RPM value, e.g. `spindle 500`"));
     if (const Outcome read = readSchemaValue(c, QStringLiteral("spindle-rpm"), args.first(), &rpm);
         !read.ok())
         return read;
@@ -411,7 +416,7 @@ Outcome cmdCoolant(CliContext& c, QStringList args)
 {
     const QString word = args.size() == 1 ? args.first().toLower() : QString();
     if (word != QLatin1String("on") && word != QLatin1String("off"))
-        return Outcome::usage(tr("coolant needs on or off"));
+        return Outcome::usage(CliText::tr("coolant needs on or off"));
     const bool on = word == QLatin1String("on");
     return connectAndRun(c, [&](ControllerSession& s) { return s.setCoolant(on); });
 }
@@ -420,7 +425,7 @@ Outcome cmdPower(CliContext& c, QStringList args)
 {
     qint64 percent = 0;
     if (args.size() != 1)
-        return Outcome::usage(tr("power needs one PERCENT value, e.g. `power 66`"));
+        return Outcome::usage(CliText::tr("power needs one PERCENT value, e.g. `power 66`"));
     if (const Outcome read =
             readSchemaValue(c, QStringLiteral("drive-power"), args.first(), &percent);
         !read.ok())

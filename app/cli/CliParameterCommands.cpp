@@ -1,16 +1,12 @@
 // set, get, export, import: all driven by the model's ParameterSchema.
 #include "CliCommands.h"
+#include "CliText.h"
 #include "model/ParameterFile.h"
 #include <QCoreApplication>
 
 namespace stepdeck::cli {
 
 namespace {
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("stepdeck-cli", text);
-}
-
 QString describe(const ParameterSchema& schema, const ParameterSet& set)
 {
     QStringList parts;
@@ -43,7 +39,7 @@ QString checkComplete(const QList<Axis>& axes, const ParameterSet& set)
             continue;
         for (Axis axis : axes) {
             if (!it.value().perAxis.contains(axis))
-                return tr("%1 has no value for axis %2").arg(it.key(), axisName(axis));
+                return CliText::tr("%1 has no value for axis %2").arg(it.key(), axisName(axis));
         }
     }
     return {};
@@ -53,10 +49,10 @@ QString checkComplete(const QList<Axis>& axes, const ParameterSet& set)
 QString writtenText(const ModelInfo& model, const ParameterSet& set, bool verify)
 {
     if (!verify)
-        return tr("written (not verified: --no-verify)");
+        return CliText::tr("written (not verified: --no-verify)");
     return canVerify(model, set)
-               ? tr("written and verified")
-               : tr("written (the %1 protocol cannot read these back)").arg(model.id);
+               ? CliText::tr("written and verified")
+               : CliText::tr("written (the %1 protocol cannot read these back)").arg(model.id);
 }
 } // namespace
 
@@ -64,13 +60,13 @@ Outcome cmdSet(CliContext& c, QStringList args)
 {
     const bool verify = !c.options.flag("no-verify");
     if (args.isEmpty())
-        return Outcome::usage(tr("set needs NAME=VALUE[,VALUE,...] (see `params`)"));
+        return Outcome::usage(CliText::tr("set needs NAME=VALUE[,VALUE,...] (see `params`)"));
     const ParameterSchema& schema = c.model->schema;
     const QList<Axis> axes = c.axes();
     ParameterSet set;
     for (const QString& arg : args) {
         if (!arg.contains(QLatin1Char('=')))
-            return Outcome::usage(tr("expected NAME=VALUE, got '%1'").arg(arg));
+            return Outcome::usage(CliText::tr("expected NAME=VALUE, got '%1'").arg(arg));
         QString name;
         ParameterValue value;
         QString error;
@@ -81,7 +77,7 @@ Outcome cmdSet(CliContext& c, QStringList args)
                 numberError == NumberError::NonFinite ? ExitUsage : ExitInvalidValue, error);
         }
         if (set.contains(name))
-            return Outcome::usage(tr("parameter %1 given twice").arg(name));
+            return Outcome::usage(CliText::tr("parameter %1 given twice").arg(name));
         set.insert(name, value);
     }
     if (const QString error = schema.validate(set, axes); !error.isEmpty())
@@ -90,7 +86,8 @@ Outcome cmdSet(CliContext& c, QStringList args)
     if (result.ok())
         result = writeParameters(c, set, verify);
     if (result.ok() && !c.json())
-        printLine(tr("%1: %2").arg(writtenText(*c.model, set, verify), describe(schema, set)));
+        printLine(
+            CliText::tr("%1: %2").arg(writtenText(*c.model, set, verify), describe(schema, set)));
     return result;
 }
 
@@ -99,14 +96,15 @@ Outcome cmdGet(CliContext& c, QStringList args)
     if (c.capabilities().storedParameters)
         return cmdGetStored(c, args); // what the device keeps for power-on
     if (args.isEmpty())
-        return Outcome::usage(tr("get needs one or more parameter names (see `params`)"));
+        return Outcome::usage(CliText::tr("get needs one or more parameter names (see `params`)"));
     const ParameterSchema& schema = c.model->schema;
     QStringList readable;
     QStringList writeOnly;
     for (const QString& name : args) {
         const ParameterSpec* spec = schema.find(name);
         if (!spec)
-            return Outcome::failure(ExitInvalidValue, tr("unknown parameter '%1'").arg(name));
+            return Outcome::failure(ExitInvalidValue,
+                                    CliText::tr("unknown parameter '%1'").arg(name));
         (spec->readable ? readable : writeOnly) << name;
     }
     if (!readable.isEmpty()) {
@@ -122,10 +120,11 @@ Outcome cmdGet(CliContext& c, QStringList args)
         }
     }
     if (!writeOnly.isEmpty()) {
-        return Outcome::failure(ExitUnsupported,
-                                tr("%1 cannot be read back: the %2 protocol has no command that "
-                                   "reports it (write-only)")
-                                    .arg(writeOnly.join(QStringLiteral(", ")), c.model->id));
+        return Outcome::failure(
+            ExitUnsupported,
+            CliText::tr("%1 cannot be read back: the %2 protocol has no command that "
+                        "reports it (write-only)")
+                .arg(writeOnly.join(QStringLiteral(", ")), c.model->id));
     }
     return Outcome::success();
 }
@@ -137,7 +136,7 @@ Outcome cmdGet(CliContext& c, QStringList args)
 Outcome cmdExport(CliContext& c, QStringList args)
 {
     if (args.size() != 1)
-        return Outcome::usage(tr("export needs exactly one FILE"));
+        return Outcome::usage(CliText::tr("export needs exactly one FILE"));
     const QString path = args.first();
     ParameterSet set = schemaDefaults(*c.model, c.axes());
     QStringList readable;
@@ -164,13 +163,14 @@ Outcome cmdExport(CliContext& c, QStringList args)
         return Outcome::failure(ExitFile, error);
     if (!c.json()) {
         const qsizetype defaults = set.size() - readable.size();
-        printLine(tr("exported %1 parameters to %2 (%3 read back, %4 schema defaults: %5 cannot "
-                     "report them)")
-                      .arg(set.size())
-                      .arg(path)
-                      .arg(readable.size())
-                      .arg(defaults)
-                      .arg(c.model->id));
+        printLine(
+            CliText::tr("exported %1 parameters to %2 (%3 read back, %4 schema defaults: %5 cannot "
+                        "report them)")
+                .arg(set.size())
+                .arg(path)
+                .arg(readable.size())
+                .arg(defaults)
+                .arg(c.model->id));
     }
     return Outcome::success();
 }
@@ -179,7 +179,7 @@ Outcome cmdImport(CliContext& c, QStringList args)
 {
     const bool verify = !c.options.flag("no-verify");
     if (args.size() != 1)
-        return Outcome::usage(tr("import needs exactly one FILE"));
+        return Outcome::usage(CliText::tr("import needs exactly one FILE"));
     const QString path = args.first();
     // Everything is validated before the first byte goes out: a broken file changes nothing.
     ParameterSet set;
@@ -194,14 +194,15 @@ Outcome cmdImport(CliContext& c, QStringList args)
         return Outcome::failure(ExitInvalidValue, error);
     }
     if (error = checkComplete(c.axes(), set); !error.isEmpty())
-        return Outcome::failure(ExitInvalidValue, tr("%1 refused: %2").arg(path, error));
+        return Outcome::failure(ExitInvalidValue, CliText::tr("%1 refused: %2").arg(path, error));
     if (set.isEmpty())
-        return Outcome::failure(ExitInvalidValue, tr("%1 refused: no parameters in it").arg(path));
+        return Outcome::failure(ExitInvalidValue,
+                                CliText::tr("%1 refused: no parameters in it").arg(path));
     Outcome result = c.connect();
     if (result.ok())
         result = writeParameters(c, set, verify);
     if (result.ok() && !c.json()) {
-        printLine(tr("imported %1 parameters from %2: %3")
+        printLine(CliText::tr("imported %1 parameters from %2: %3")
                       .arg(set.size())
                       .arg(path, writtenText(*c.model, set, verify)));
     }
