@@ -41,6 +41,13 @@ NanotecController::Step NanotecController::tolerant(Step step)
     };
 }
 
+namespace {
+// Status reads are idempotent: one garbled or lost reply (line noise) is asked again before
+// the request fails (issue 12: occasional noise is survived, persistent garbage fails).
+constexpr NanotecBus::Priority kStatusPriority = NanotecBus::Priority::Command;
+constexpr int kStatusRetries = 1;
+} // namespace
+
 NanotecController::Check NanotecController::sink(std::function<void(qint64)> store)
 {
     return [store](const Reply& r) {
@@ -170,9 +177,12 @@ void NanotecController::refreshStatus(RequestId id)
                               applyStatusWord(m_drives[axis], v);
                               *ok = true;
                               ++*answered;
-                          })),
-                 exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; })),
-                 exchange(axis, "ZY", sink([this, axis](qint64 v) { m_drives[axis].inputs = v; }))},
+                          }),
+                          kStatusPriority, kStatusRetries),
+                 exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; }),
+                          kStatusPriority, kStatusRetries),
+                 exchange(axis, "ZY", sink([this, axis](qint64 v) { m_drives[axis].inputs = v; }),
+                          kStatusPriority, kStatusRetries)},
                 [this, axis, ok, done](const Failure& f) {
                     if (!*ok && f.kind == ErrorKind::Timeout)
                         noteAnswer(m_drives[axis], false);

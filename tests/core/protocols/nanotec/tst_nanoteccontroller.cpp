@@ -33,6 +33,8 @@ private Q_SLOTS:
     void allDrivesSilent_linkLost();
     void wrongAddressReply_notAttributed();
     void garbledReply_retriedAndCounted();
+    void statusRead_oneReplyGarbledOrLost_askedAgain_data();
+    void statusRead_oneReplyGarbledOrLost_askedAgain();
     void sendRaw_refusesForbiddenCommands();
     void records_writeSaveReadBack();
     void errorMemory_decoded();
@@ -418,6 +420,32 @@ void TestNanotecController::garbledReply_retriedAndCounted()
     QCOMPARE(r.value.value<ParameterSet>()["idle-current"].perAxis[Axis::Z].toLongLong(),
              qint64(25));
     QVERIFY(m_ctl->status().resyncCount > before);
+}
+
+void TestNanotecController::statusRead_oneReplyGarbledOrLost_askedAgain_data()
+{
+    QTest::addColumn<bool>("lost");
+    QTest::newRow("garbled") << false;
+    QTest::newRow("lost") << true;
+}
+
+void TestNanotecController::statusRead_oneReplyGarbledOrLost_askedAgain()
+{
+    // Issue 12: occasional line noise is survived. A status read is idempotent; one bad
+    // reply is asked again, and the status request succeeds with every drive answering.
+    QFETCH(bool, lost);
+    if (lost)
+        m_sim->faults().dropReplies = 1;
+    else
+        m_sim->garbleReplies(1, 1);
+    const int statusReads = countFrames("#1$\r");
+    const int positionReads = countFrames("#1C\r");
+    const CommandResult r = run([this](RequestId id) { m_ctl->refreshStatus(id); });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(countFrames("#1$\r"), statusReads + 2);   // asked again ...
+    QCOMPARE(countFrames("#1C\r"), positionReads + 1); // ... and drive 1 read to the end
+    for (const AxisStatus& a : m_ctl->status().axes)
+        QVERIFY(!a.motionUnknown);
 }
 
 void TestNanotecController::sendRaw_refusesForbiddenCommands()
