@@ -19,6 +19,13 @@ constexpr double kFaultProbability = 0.01; // per command
 constexpr int kLeftMovingGraceMs = 3000;
 constexpr int kMoveWindow = 200; // move sizes repeat only after this many moves
 
+// STEPDECK_SOAK_TRACE: each command and jog range with the device journal's size.
+bool traceEnabled()
+{
+    static const bool trace = qEnvironmentVariableIsSet("STEPDECK_SOAK_TRACE");
+    return trace;
+}
+
 QString kindName(ErrorKind kind)
 {
     static const char* names[] = {"ok",        "refused",      "nak",         "timeout",
@@ -236,7 +243,7 @@ void SoakRun::closeJogRange()
     const int end = int(m_device.moves().size());
     if (end > m_jogJournalStart)
         m_jogRanges.append({m_jogJournalStart, end});
-    if (qEnvironmentVariableIsSet("STEPDECK_SOAK_TRACE"))
+    if (traceEnabled())
         std::fprintf(stderr, "jog range %d..%d\n", m_jogJournalStart, end);
     m_jogJournalStart = -1;
 }
@@ -247,7 +254,7 @@ void SoakRun::oneCommand()
     const QString fault = injectFault();
     const Capabilities caps = m_host.session().capabilities();
     const int pick = int(m_rng.bounded(100));
-    if (qEnvironmentVariableIsSet("STEPDECK_SOAK_TRACE"))
+    if (traceEnabled())
         std::fprintf(stderr, "cmd %d pick %d fault '%s' journal %d\n", m_done, pick,
                      qPrintable(fault), int(m_device.moves().size()));
     if (pick < 20) {
@@ -425,14 +432,16 @@ void SoakRun::compareMoves()
             const DeviceMove& d = journal.at(j);
             if (d.axis != axis)
                 continue;
+            // Commands sent before the device journaled this move, within the window.
+            const auto candidate = [&](int k) {
+                return k < wanted.size() && k < next + kMoveWindow && wanted[k].journalBefore <= j;
+            };
             int k = next;
-            while (k < wanted.size() && wanted[k].journalBefore <= j &&
-                   wanted[k].steps != d.steps && k < next + kMoveWindow)
+            while (candidate(k) && wanted[k].steps != d.steps)
                 ++k;
             if (next > 0 && wanted[next - 1].steps == d.steps) {
                 ++starts[next - 1]; // the previous move once more
-            } else if (k < wanted.size() && wanted[k].journalBefore <= j &&
-                       wanted[k].steps == d.steps) {
+            } else if (candidate(k) && wanted[k].steps == d.steps) {
                 ++starts[k];
                 next = k + 1;
             } else {

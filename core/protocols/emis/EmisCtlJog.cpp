@@ -93,7 +93,7 @@ bool EmisController::jogHeld(Axis axis, double direction) const
     // axis after the operator let go (the board ramps the chunk under way down by itself).
     const double rate = m_jogRates.value(axis, 0.0);
     const double held = jogRamp().target(axis);
-    return direction != 0.0 && rate * direction > 0.0 && held * direction > 0.0;
+    return rate * direction > 0.0 && held * direction > 0.0;
 }
 
 qint64 EmisController::clipToSoftLimit(Axis axis, qint64 steps, QString* why) const
