@@ -22,34 +22,34 @@ struct GlobalOption
 
 // clang-format off
 const GlobalOption kGlobalOptions[] = {
-    {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "controller model (default: elab; see `models`)")},
-    {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "serial device path | tcp://HOST:PORT | sim (in-process\nsimulator; the default)")},
-    {"address", "N", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"address", "N", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "bus address of one drive (it becomes axis X)")},
-    {"axes", "MAP", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"axes", "MAP", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "axis to bus address map for multi-drive links, e.g.\nX=1,Y=2,Z=3 (nanotec default); "
         "only these axes exist")},
-    {"json", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"json", nullptr, QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "machine-readable output: one JSON line on stdout (an\nobject; an array for scan and "
         "records)")},
-    {"setup-defaults", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"setup-defaults", nullptr, QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "write every parameter's schema default before the command\n(also the switch "
         "polarities; see `params`)")},
-    {"timeout", "MS", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"timeout", "MS", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "how long to wait for the link to come up (default 3000;\nafter move, home and feed: "
         "their own --timeout)")},
-    {"reset-line", "L", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"reset-line", "L", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "rts (default) or dtr: the modem line wired to the\nboard's reset input (E-LAB `reset`); "
         "both are held low")},
-    {"arrival-timeout", "MS", QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"arrival-timeout", "MS", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "how long move and home wait for the axes to report\narrival (laser-axis; default "
         "60000, the laser's own)")},
-    {"v,verbose", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli",
+    {"v,verbose", nullptr, QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "show the core's log output on stderr")},
-    {"h,help", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli", "show this help and exit")},
-    {"version", nullptr, QT_TRANSLATE_NOOP("stepdeck-cli", "show the version and exit")},
+    {"h,help", nullptr, QT_TRANSLATE_NOOP("stepdeck::cli::CliText", "show this help and exit")},
+    {"version", nullptr, QT_TRANSLATE_NOOP("stepdeck::cli::CliText", "show the version and exit")},
 };
 // clang-format on
 

@@ -4,6 +4,7 @@
 #include "CliCommands.h"
 #include "CliOutput.h"
 #include "CliSession.h"
+#include "CliText.h"
 #include <QCoreApplication>
 
 using namespace stepdeck;
@@ -51,13 +52,10 @@ int main(int argc, char** argv)
         // Ramped stop, then exit 130; the line says whether the controller confirmed it.
         const bool connected = session.isConnected();
         const Outcome stopped = session.stopMotion();
-        const QString text =
-            !connected ? QCoreApplication::translate("stepdeck-cli", "interrupted")
-            : stopped.ok()
-                ? QCoreApplication::translate("stepdeck-cli",
-                                              "interrupted: the controller acknowledged the stop")
-                : QCoreApplication::translate("stepdeck-cli", "interrupted: %1")
-                      .arg(stopped.message);
+        const QString text = !connected ? CliText::tr("interrupted")
+                             : stopped.ok()
+                                 ? CliText::tr("interrupted: the controller acknowledged the stop")
+                                 : CliText::tr("interrupted: %1").arg(stopped.message);
         outcome = Outcome::failure(ExitInterrupted, text);
     }
     if (!outcome.ok())
