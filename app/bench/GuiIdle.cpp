@@ -155,6 +155,117 @@ void stop(QProcess& p)
         p.waitForFinished(2000);
     }
 }
+struct Figures
+{
+    double seconds = 0;
+    double cpuPercent = 0;
+    qint64 rssLastKb = 0;
+    qint64 rssMaxKb = 0;
+    qint64 hwmKb = 0;
+    double simBytesPerSecond = 0;
+    bool polling = false;
+    bool guiAlive = false;
+};
+
+// The first stdout line of stepdeck-sim is its terminal's path.
+QString startSimulator(const QString& appDir, QProcess* sim)
+{
+    sim->start(QDir(appDir).filePath(QStringLiteral("stepdeck-sim")),
+               {QStringLiteral("--model"), QStringLiteral("elab")});
+    QString ptyPath;
+    QElapsedTimer t;
+    t.start();
+    while (ptyPath.isEmpty() && t.elapsed() < 5000 && sim->waitForReadyRead(200))
+        ptyPath = QString::fromUtf8(sim->readLine()).trimmed();
+    return ptyPath;
+}
+
+bool startGui(const QString& appDir, const Options& o, const QString& ptyPath,
+              const QString& configDir, Xvfb* xvfb, QProcess* gui, QString* error)
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), configDir); // never the user's settings
+    if (o.platform == QLatin1String("xvfb")) {
+        if (!xvfb->start(error))
+            return false;
+        env.insert(QStringLiteral("DISPLAY"), xvfb->display);
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+    } else {
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    }
+    gui->setProcessEnvironment(env);
+    gui->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    gui->start(QDir(appDir).filePath(QStringLiteral("stepdeck")),
+               {QStringLiteral("--model"), QStringLiteral("elab"), QStringLiteral("--port"),
+                ptyPath, QStringLiteral("--poll-interval"), QString::number(o.pollMs)});
+    if (!gui->waitForStarted(5000)) {
+        *error = QStringLiteral("the GUI did not start");
+        return false;
+    }
+    return true;
+}
+
+Figures sample(const Options& o, QProcess* gui, qint64 simPid)
+{
+    const qint64 guiPid = gui->processId();
+    Figures f;
+    const qint64 ticks0 = cpuTicks(guiPid);
+    const qint64 simRead0 = procValue(simPid, "io", "rchar");
+    QElapsedTimer window;
+    window.start();
+    const qint64 durationMs = qint64(o.seconds) * 1000;
+    while (window.elapsed() < durationMs && gui->state() == QProcess::Running) {
+        QThread::msleep(quint64(qMin<qint64>(500, durationMs - window.elapsed() + 1)));
+        f.rssLastKb = procValue(guiPid, "status", "VmRSS");
+        f.rssMaxKb = qMax(f.rssMaxKb, f.rssLastKb);
+    }
+    f.seconds = window.elapsed() / 1000.0;
+    const qint64 ticks1 = cpuTicks(guiPid);
+    const qint64 simRead1 = procValue(simPid, "io", "rchar");
+    f.hwmKb = procValue(guiPid, "status", "VmHWM");
+    f.guiAlive = gui->state() == QProcess::Running && ticks1 >= 0;
+    f.cpuPercent = 100.0 * double(ticks1 - ticks0) / double(sysconf(_SC_CLK_TCK)) / f.seconds;
+    f.simBytesPerSecond = double(simRead1 - simRead0) / f.seconds;
+    f.polling = simRead0 >= 0 && simRead1 > simRead0;
+    return f;
+}
+
+void report(const Options& o, const Figures& f, const QString& ptyPath)
+{
+    const QString platform = o.platform == QLatin1String("xvfb")
+                                 ? QStringLiteral("Xvfb 1366x768 (xcb)")
+                                 : QStringLiteral("offscreen");
+    if (o.json) {
+        const QJsonObject out{{"guiCpuPercentOfOneCore", f.cpuPercent},
+                              {"guiRssMiB", f.rssLastKb / 1024.0},
+                              {"guiRssMaxMiB", f.rssMaxKb / 1024.0},
+                              {"guiVmHwmMiB", f.hwmKb / 1024.0},
+                              {"seconds", f.seconds},
+                              {"warmupSeconds", o.warmupSeconds},
+                              {"pollIntervalMs", o.pollMs},
+                              {"platform", platform},
+                              {"simReadBytesPerSecond", f.simBytesPerSecond},
+                              {"polling", f.polling}};
+        print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
+        return;
+    }
+    print(stdout, QStringLiteral("stepdeck-bench --gui-idle: stepdeck on %1, E-LAB via "
+                                 "stepdeck-sim on %2, poll interval %3 ms")
+                      .arg(platform, ptyPath)
+                      .arg(o.pollMs));
+    print(stdout, QStringLiteral("  GUI CPU   %1 % of one core  (utime+stime over %2 s, after "
+                                 "%3 s warm-up)")
+                      .arg(f.cpuPercent, 0, 'f', 2)
+                      .arg(f.seconds, 0, 'f', 1)
+                      .arg(o.warmupSeconds));
+    print(stdout, QStringLiteral("  GUI RSS   %1 MiB at the end, max %2 MiB (VmHWM %3 MiB)")
+                      .arg(f.rssLastKb / 1024.0, 0, 'f', 1)
+                      .arg(f.rssMaxKb / 1024.0, 0, 'f', 1)
+                      .arg(f.hwmKb / 1024.0, 0, 'f', 1));
+    print(stdout, QStringLiteral("  link      simulator read %1 bytes/s%2")
+                      .arg(f.simBytesPerSecond, 0, 'f', 0)
+                      .arg(f.polling ? QString() : QStringLiteral("  (NOT POLLING)")));
+}
 } // namespace
 
 int guiIdleMain(const QString& appDir, const QStringList& args)
@@ -171,111 +282,31 @@ int guiIdleMain(const QString& appDir, const QStringList& args)
         o.platform = QStandardPaths::findExecutable(QStringLiteral("Xvfb")).isEmpty()
                          ? QStringLiteral("offscreen")
                          : QStringLiteral("xvfb");
-
     QProcess sim;
-    sim.start(QDir(appDir).filePath(QStringLiteral("stepdeck-sim")),
-              {QStringLiteral("--model"), QStringLiteral("elab")});
-    QString ptyPath;
-    QElapsedTimer t;
-    t.start();
-    while (ptyPath.isEmpty() && t.elapsed() < 5000 && sim.waitForReadyRead(200))
-        ptyPath = QString::fromUtf8(sim.readLine()).trimmed();
+    const QString ptyPath = startSimulator(appDir, &sim);
     if (ptyPath.isEmpty()) {
         print(stderr, QStringLiteral("stepdeck-bench: stepdeck-sim did not start"));
         stop(sim);
         return 1;
     }
-
     Xvfb xvfb;
-    QTemporaryDir config; // the GUI's settings: never the user's
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path());
-    if (o.platform == QLatin1String("xvfb")) {
-        if (!xvfb.start(&error)) {
-            print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
-            stop(sim);
-            return 1;
-        }
-        env.insert(QStringLiteral("DISPLAY"), xvfb.display);
-        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
-    } else {
-        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    }
+    QTemporaryDir config;
     QProcess gui;
-    gui.setProcessEnvironment(env);
-    gui.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    gui.start(QDir(appDir).filePath(QStringLiteral("stepdeck")),
-              {QStringLiteral("--model"), QStringLiteral("elab"), QStringLiteral("--port"), ptyPath,
-               QStringLiteral("--poll-interval"), QString::number(o.pollMs)});
-    if (!gui.waitForStarted(5000)) {
-        print(stderr, QStringLiteral("stepdeck-bench: the GUI did not start"));
+    if (!startGui(appDir, o, ptyPath, config.path(), &xvfb, &gui, &error)) {
+        print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
         stop(sim);
         return 1;
     }
-    const qint64 guiPid = gui.processId();
-    const qint64 simPid = sim.processId();
     QThread::msleep(quint64(o.warmupSeconds) * 1000);
-
-    const double ticksPerSecond = double(sysconf(_SC_CLK_TCK));
-    const qint64 ticks0 = cpuTicks(guiPid);
-    const qint64 simRead0 = procValue(simPid, "io", "rchar");
-    qint64 rssMaxKb = 0;
-    qint64 rssLastKb = 0;
-    QElapsedTimer window;
-    window.start();
-    while (window.elapsed() < qint64(o.seconds) * 1000 && gui.state() == QProcess::Running) {
-        QThread::msleep(qMin<qint64>(500, qint64(o.seconds) * 1000 - window.elapsed() + 1));
-        rssLastKb = procValue(guiPid, "status", "VmRSS");
-        rssMaxKb = qMax(rssMaxKb, rssLastKb);
-    }
-    const double elapsed = window.elapsed() / 1000.0;
-    const qint64 ticks1 = cpuTicks(guiPid);
-    const qint64 simRead1 = procValue(simPid, "io", "rchar");
-    const qint64 hwmKb = procValue(guiPid, "status", "VmHWM");
-    const bool alive = gui.state() == QProcess::Running && ticks1 >= 0;
+    const Figures figures = sample(o, &gui, sim.processId());
     stop(gui);
     stop(sim);
-    if (!alive) {
+    if (!figures.guiAlive) {
         print(stderr, QStringLiteral("stepdeck-bench: the GUI exited during the measurement"));
         return 1;
     }
-    const double cpuPercent = 100.0 * double(ticks1 - ticks0) / ticksPerSecond / elapsed;
-    const double simBytesPerSecond = double(simRead1 - simRead0) / elapsed;
-    const bool polling = simRead0 >= 0 && simRead1 > simRead0;
-    const QString platform = o.platform == QLatin1String("xvfb")
-                                 ? QStringLiteral("Xvfb 1366x768 (xcb)")
-                                 : QStringLiteral("offscreen");
-    if (o.json) {
-        const QJsonObject out{{"guiCpuPercentOfOneCore", cpuPercent},
-                              {"guiRssMiB", rssLastKb / 1024.0},
-                              {"guiRssMaxMiB", rssMaxKb / 1024.0},
-                              {"guiVmHwmMiB", hwmKb / 1024.0},
-                              {"seconds", elapsed},
-                              {"warmupSeconds", o.warmupSeconds},
-                              {"pollIntervalMs", o.pollMs},
-                              {"platform", platform},
-                              {"simReadBytesPerSecond", simBytesPerSecond},
-                              {"polling", polling}};
-        print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
-    } else {
-        print(stdout, QStringLiteral("stepdeck-bench --gui-idle: stepdeck on %1, E-LAB via "
-                                     "stepdeck-sim on %2, poll interval %3 ms")
-                          .arg(platform, ptyPath)
-                          .arg(o.pollMs));
-        print(stdout, QStringLiteral("  GUI CPU   %1 % of one core  (utime+stime over %2 s, after "
-                                     "%3 s warm-up)")
-                          .arg(cpuPercent, 0, 'f', 2)
-                          .arg(elapsed, 0, 'f', 1)
-                          .arg(o.warmupSeconds));
-        print(stdout, QStringLiteral("  GUI RSS   %1 MiB at the end, max %2 MiB (VmHWM %3 MiB)")
-                          .arg(rssLastKb / 1024.0, 0, 'f', 1)
-                          .arg(rssMaxKb / 1024.0, 0, 'f', 1)
-                          .arg(hwmKb / 1024.0, 0, 'f', 1));
-        print(stdout, QStringLiteral("  link      simulator read %1 bytes/s%2")
-                          .arg(simBytesPerSecond, 0, 'f', 0)
-                          .arg(polling ? QString() : QStringLiteral("  (NOT POLLING)")));
-    }
-    return polling ? 0 : 1;
+    report(o, figures, ptyPath);
+    return figures.polling ? 0 : 1;
 }
 
 } // namespace stepdeck::bench
