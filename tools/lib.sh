@@ -77,7 +77,22 @@ stepdeck_build() {
         cat "$dir/configure.log" >&2
         stepdeck_die "cmake configure failed ($dir)"
     }
+    stepdeck_warn_low_disk "$dir"
     stepdeck_log "building $dir"
-    cmake --build "$dir" --parallel "$(nproc 2>/dev/null || echo 2)" ||
+    cmake --build "$dir" --parallel "$(nproc 2>/dev/null || echo 2)" || {
+        stepdeck_warn_low_disk "$dir"
         stepdeck_die "build failed ($dir)"
+    }
+}
+
+# stepdeck_warn_low_disk DIR
+# A compiler that runs out of disk can fail without a word of its own (seen in CI: a FAILED
+# object and no diagnostic). A full build needs about 3 GB, the sanitizer build about 6 GB.
+stepdeck_warn_low_disk() {
+    local avail_kb
+    avail_kb=$(df -Pk "$1" 2>/dev/null | awk 'NR == 2 { print $4 }')
+    if [ -n "$avail_kb" ] && [ "$avail_kb" -lt $((4 * 1024 * 1024)) ]; then
+        printf 'warning: only %s MB free on the disk of %s; a build needs a few GB\n' \
+            "$((avail_kb / 1024))" "$1" >&2
+    fi
 }

@@ -172,11 +172,11 @@ Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
         if (!commanding && (!deviceMoving || clock.elapsed() > deadlineMs))
             return Outcome::success(); // some boards keep their jog-mode bit at rate zero
         if (clock.elapsed() > deadlineMs) {
-            const Outcome stopped = c.session.stopMotion();
-            return Outcome::failure(
-                ExitFailure, CliText::tr("jog did not ramp down within %1 ms; %2")
-                                 .arg(deadlineMs)
-                                 .arg(stopped.ok() ? CliText::tr("stopped") : stopped.message));
+            // "stopped" only once the device reports standstill, as after any other failure.
+            return stopThenFail(
+                c, Outcome::failure(
+                       ExitFailure,
+                       CliText::tr("jog did not ramp down within %1 ms").arg(deadlineMs)));
         }
         if (!c.session.pause(CliSession::kIdlePollMs))
             return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
