@@ -189,6 +189,9 @@ protected:
     void finishError(RequestId id, ErrorKind kind, const QString& message);
     void recordTraffic(TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);
     bool jogActive() const { return !m_jogRamp.isIdle(); }
+    // When the jog tick that computes the rates now being applied read its clock (ms on the
+    // controller's jog clock): the ramp's own time base, for adapters that stamp their sends.
+    qint64 jogTickMs() const { return m_lastJogTickMs; }
 
 private:
     void onJogTick();
