@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
@@ -30,8 +31,8 @@ const QList<Axis> kLaserAxes{Axis::X, Axis::Y, Axis::Z};
 enum Column { ColLaser, ColAxis, ColState, ColTarget, ColReferenced, ColAnswer, ColCount };
 } // namespace
 
-LaserBridgePage::LaserBridgePage(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_port(new QComboBox(this)),
+LaserBridgePage::LaserBridgePage(MachineContext* context, PortScanner* ports, QWidget* parent)
+    : QWidget(parent), m_context(context), m_ports(ports), m_port(new QComboBox(this)),
       m_scale(new QDoubleSpinBox(this)), m_doorInput(new QSpinBox(this)),
       m_start(new QPushButton(tr("Start bridge"), this)),
       m_stop(new QPushButton(tr("Stop bridge"), this)), m_state(new QLabel(this)),
@@ -107,9 +108,9 @@ QWidget* LaserBridgePage::buildForm()
     v->addWidget(intro);
     auto* form = new QFormLayout;
     m_port->setEditable(true);
-    for (const PortEntry& entry : PortScanner::scan())
-        m_port->addItem(entry.label, entry.path);
+    fillPorts();
     m_port->setCurrentText(QString());
+    connect(m_ports, &PortScanner::portsChanged, this, &LaserBridgePage::fillPorts);
     m_port->lineEdit()->setPlaceholderText(QStringLiteral("/dev/ttyUSB1"));
     m_port->setToolTip(tr("The serial port cabled to the laser's XYZ-control port"));
     form->addRow(tr("Laser port:"), m_port);
@@ -163,6 +164,18 @@ QWidget* LaserBridgePage::buildForm()
     v->addWidget(priority);
     v->addStretch(1);
     return box;
+}
+
+// The scanner's list, refreshed when ports come and go; what the technician typed or chose
+// stays in the field (a pty is never listed and is typed).
+void LaserBridgePage::fillPorts()
+{
+    const QString current = m_port->currentText();
+    const QSignalBlocker block(m_port);
+    m_port->clear();
+    for (const PortEntry& entry : m_ports->ports())
+        m_port->addItem(entry.label, entry.path);
+    m_port->setCurrentText(current);
 }
 
 void LaserBridgePage::rebuildAxisChoices()

@@ -17,6 +17,7 @@ class Transport;
 namespace stepdeck::ui {
 
 class MachineContext;
+class PortScanner;
 
 // The Laser bridge page: StepDeck is the motor axes of a laser marker, with the connected
 // controller behind it (core: bridge::LaserBridge). The operator chooses the laser's port, the
@@ -27,7 +28,9 @@ class LaserBridgePage : public QWidget
 {
     Q_OBJECT
 public:
-    explicit LaserBridgePage(MachineContext* context, QWidget* parent = nullptr);
+    // ports: the application's port scanner (the connection bar's); the page lists what it
+    // found and never enumerates ports in the GUI thread itself.
+    LaserBridgePage(MachineContext* context, PortScanner* ports, QWidget* parent = nullptr);
     ~LaserBridgePage() override;
 
     QComboBox* portCombo() const { return m_port; }
@@ -50,6 +53,7 @@ public Q_SLOTS:
 private:
     QWidget* buildForm();
     void rebuildAxisChoices();
+    void fillPorts();
     bool configFromForm(bridge::LaserBridgeConfig* config, QString* error) const;
     void appendLog(const bridge::LaserBridge::LogEntry& entry);
     void showAxis(const bridge::LaserBridge::AxisView& view);
@@ -58,6 +62,7 @@ private:
     void setState(const QString& text, bool error = false);
 
     MachineContext* m_context;
+    PortScanner* m_ports;
     QComboBox* m_port;
     QMap<Axis, QComboBox*> m_map;  // per laser axis: the controller axis (or none)
     QMap<Axis, QComboBox*> m_home; // per laser axis: reference direction

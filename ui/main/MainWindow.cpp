@@ -221,7 +221,7 @@ void MainWindow::buildDocks()
     m_programsDock = addDock(m_programs, tr("Input programs"), QStringLiteral("inputProgramsDock"),
                              Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_recordsDock, m_programsDock);
-    m_laserBridge = new LaserBridgePage(m_context, this);
+    m_laserBridge = new LaserBridgePage(m_context, m_connection->portScanner(), this);
     tabifyDockWidget(m_recordsDock,
                      addDock(m_laserBridge, tr("Laser bridge"), QStringLiteral("laserBridgeDock"),
                              Qt::BottomDockWidgetArea));

@@ -3,6 +3,8 @@
 // stop; refusals in the form; German labels.
 #include "../UiTestSupport.h"
 #include "bridge/LaserBridgePage.h"
+#include "main/ConnectionBar.h"
+#include "main/PortScanner.h"
 #include "main/Translations.h"
 #include "sim/PtyEndpoint.h"
 #include <QComboBox>
@@ -26,6 +28,7 @@ private Q_SLOTS:
     void cleanup();
 
     void page_isADock_startNeedsConnection();
+    void portList_followsTheScanner_keepsTypedPort();
     void start_homeAndMove_answeredLoggedAndShownPerAxis();
     void stop_closesLaserPortAndSaysSo();
     void form_invalidChoices_refusedWithReason();
@@ -87,6 +90,28 @@ void TestLaserBridgePage::page_isADock_startNeedsConnection()
     page()->startBridge();
     QVERIFY(page()->stateLabel()->text().contains("Connect the controller"));
     QVERIFY(!page()->isRunning());
+}
+
+// The page lists the ports the application's scanner found in its worker thread (never an
+// enumeration of its own in the GUI thread); a port that comes or goes updates the list, and
+// a typed path stays in the field.
+void TestLaserBridgePage::portList_followsTheScanner_keepsTypedPort()
+{
+    ui::PortScanner* scanner = m_f->window->connectionBar()->portScanner();
+    ui::PortEntry usb;
+    usb.path = QStringLiteral("/dev/ttyUSB7");
+    usb.label = QStringLiteral("ttyUSB7 \u2013 FT232R USB UART (0403:6001)");
+    scanner->setScanFunction([usb] { return QList<ui::PortEntry>{usb}; });
+    page()->portCombo()->setCurrentText(m_laser->slavePath());
+
+    scanner->rescan();
+    QTRY_VERIFY(page()->portCombo()->findData(usb.path) >= 0);
+    QCOMPARE(page()->portCombo()->currentText(), m_laser->slavePath());
+
+    scanner->setScanFunction([] { return QList<ui::PortEntry>{}; });
+    scanner->rescan();
+    QTRY_COMPARE(page()->portCombo()->count(), 0);
+    QCOMPARE(page()->portCombo()->currentText(), m_laser->slavePath());
 }
 
 void TestLaserBridgePage::start_homeAndMove_answeredLoggedAndShownPerAxis()
@@ -156,7 +181,7 @@ void TestLaserBridgePage::german_pageLabelsTranslated()
     QTranslator translator;
     QVERIFY(translator.load(QStringLiteral(":/i18n/stepdeck_de.qm")));
     QCoreApplication::installTranslator(&translator);
-    ui::LaserBridgePage german(m_f->window->context());
+    ui::LaserBridgePage german(m_f->window->context(), m_f->window->connectionBar()->portScanner());
     QCoreApplication::removeTranslator(&translator);
     QCOMPARE(german.startButton()->text(), QStringLiteral("Brücke starten"));
     QCOMPARE(german.stopButton()->text(), QStringLiteral("Brücke anhalten"));
