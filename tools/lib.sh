@@ -87,7 +87,7 @@ stepdeck_build() {
 
 # stepdeck_warn_low_disk DIR
 # A compiler that runs out of disk can fail without a word of its own (seen in CI: a FAILED
-# object and no diagnostic). A full build needs about 3 GB, the sanitizer build about 6 GB.
+# object and no diagnostic). A full build needs about 3 GB, the sanitizer build about 7 GB.
 stepdeck_warn_low_disk() {
     local avail_kb
     avail_kb=$(df -Pk "$1" 2>/dev/null | awk 'NR == 2 { print $4 }')
