@@ -52,6 +52,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     for (PadJogSource* source : std::as_const(m_padSources)) {
         source->setResponse(m_settings->response());
         m_jog->addSource(source);
+        connect(source, &PadJogSource::interrupted, this, &JogPanel::showRefusal);
     }
 
     auto* layout = new QHBoxLayout(this);

@@ -72,9 +72,9 @@ QSize JoystickPad::minimumSizeHint() const
     return m_mode == Mode::TwoAxis ? QSize(180, 180) : QSize(76, 180);
 }
 
-QRectF JoystickPad::travel() const
+QRectF JoystickPad::travelIn(const QRectF& frame) const
 {
-    const QRectF area = QRectF(rect()).adjusted(kMargin, kMargin, -kMargin, -kMargin);
+    const QRectF area = frame.adjusted(kMargin, kMargin, -kMargin, -kMargin);
     if (m_mode == Mode::Vertical)
         return QRectF(area.center().x(), area.top() + kKnobRadius, 0,
                       area.height() - 2 * kKnobRadius);
@@ -96,11 +96,18 @@ QPointF JoystickPad::pointFor(const QPointF& deflection) const
                    t.center().y() - deflection.y() * t.height() / 2);
 }
 
-void JoystickPad::dragTo(const QPointF& pos)
+QRect JoystickPad::frameOnScreen() const
 {
-    const QRectF t = travel();
-    const double dx = t.width() > 0 ? (pos.x() - t.center().x()) / (t.width() / 2) : 0.0;
-    const double dy = t.height() > 0 ? (t.center().y() - pos.y()) / (t.height() / 2) : 0.0;
+    return QRect(mapToGlobal(QPoint(0, 0)), size());
+}
+
+void JoystickPad::dragTo(const QPointF& globalPos)
+{
+    // Measured against the frame the press began in (see the class comment): a pad that
+    // moved since cannot turn the same pointer position into another direction.
+    const QRectF t = travelIn(QRectF(m_pressFrame));
+    const double dx = t.width() > 0 ? (globalPos.x() - t.center().x()) / (t.width() / 2) : 0.0;
+    const double dy = t.height() > 0 ? (t.center().y() - globalPos.y()) / (t.height() / 2) : 0.0;
     const QPointF d(m_mode == Mode::Vertical ? 0.0 : qBound(-1.0, dx, 1.0), qBound(-1.0, dy, 1.0));
     m_shown = d;
     update();
@@ -116,13 +123,15 @@ void JoystickPad::mousePressEvent(QMouseEvent* event)
         return;
     m_spring->stop();
     m_dragging = true;
-    dragTo(event->position());
+    m_pressFrame = frameOnScreen();
+    watchAncestors(true);
+    dragTo(event->globalPosition());
 }
 
 void JoystickPad::mouseMoveEvent(QMouseEvent* event)
 {
-    if (m_dragging)
-        dragTo(event->position());
+    if (m_dragging && confirmFrameHeld())
+        dragTo(event->globalPosition());
 }
 
 void JoystickPad::mouseReleaseEvent(QMouseEvent* event)
@@ -131,10 +140,58 @@ void JoystickPad::mouseReleaseEvent(QMouseEvent* event)
         recenter();
 }
 
+bool JoystickPad::confirmFrameHeld()
+{
+    if (!m_dragging)
+        return false;
+    if (frameOnScreen() == m_pressFrame)
+        return true;
+    recenter();
+    Q_EMIT dragInterrupted();
+    return false;
+}
+
+void JoystickPad::moveEvent(QMoveEvent* event)
+{
+    QWidget::moveEvent(event);
+    confirmFrameHeld();
+}
+
+void JoystickPad::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    confirmFrameHeld();
+}
+
+bool JoystickPad::eventFilter(QObject* watched, QEvent* event)
+{
+    // An ancestor that moves or resizes can carry the pad along without the pad itself
+    // getting a move event (its position inside the parent did not change).
+    if (event->type() == QEvent::Move || event->type() == QEvent::Resize)
+        confirmFrameHeld();
+    return QWidget::eventFilter(watched, event);
+}
+
+void JoystickPad::watchAncestors(bool on)
+{
+    for (const QPointer<QWidget>& w : std::as_const(m_watched)) {
+        if (w)
+            w->removeEventFilter(this);
+    }
+    m_watched.clear();
+    if (!on)
+        return;
+    for (QWidget* w = parentWidget(); w; w = w->parentWidget()) {
+        w->installEventFilter(this);
+        m_watched.append(w);
+    }
+}
+
 void JoystickPad::recenter()
 {
     const bool was = m_dragging || !m_deflection.isNull();
     m_dragging = false;
+    watchAncestors(false);
     m_deflection = QPointF();
     if (!m_shown.isNull()) {
         m_spring->stop();

@@ -9,6 +9,10 @@ PadJogSource::PadJogSource(JoystickPad* pad, std::optional<Axis> horizontal,
     : JogInputSource(parent), m_pad(pad), m_horizontal(horizontal), m_vertical(vertical)
 {
     connect(pad, &JoystickPad::deflectionChanged, this, &JogInputSource::changed);
+    connect(pad, &JoystickPad::dragInterrupted, this, [this] {
+        Q_EMIT interrupted(tr("Jog ended: the pad moved under the held pointer. Release the "
+                              "button and press again."));
+    });
 }
 
 QString PadJogSource::sourceName() const
@@ -33,6 +37,10 @@ AxisVelocities PadJogSource::heldDeflection()
         m_pad->recenter();
         return {};
     }
+    // The frame check runs here too, not only on pointer and move events: a renewal never
+    // carries a deflection measured on a pad that has moved since the press.
+    if (!m_pad->confirmFrameHeld())
+        return {};
     const QPointF d = m_pad->deflection();
     AxisVelocities fractions;
     if (m_horizontal)

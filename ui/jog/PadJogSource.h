@@ -13,7 +13,8 @@ class JoystickPad;
 // a mouse release that never reached the pad (grabbed by another window, lost by the window
 // system) ends the drag there and then, as a release would. STOP, PANIC and focus loss
 // re-centre the pad: the drag is over, and moving the still-held mouse moves nothing until
-// the button is pressed again.
+// the button is pressed again. So does a pad that moved or resized under the held pointer
+// (JoystickPad::confirmFrameHeld, checked at every renewal as well).
 class PadJogSource : public JogInputSource
 {
     Q_OBJECT
@@ -29,6 +30,10 @@ public:
 
     void setResponse(const JogResponse& response);
     JoystickPad* pad() const { return m_pad; }
+
+Q_SIGNALS:
+    // The drag was ended by the pad, not by the operator (it moved under the pointer).
+    void interrupted(const QString& reason);
 
 private:
     QPointer<JoystickPad> m_pad;

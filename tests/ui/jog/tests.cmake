@@ -6,3 +6,7 @@ stepdeck_add_test(tst_jogsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogsafety.
 stepdeck_add_test(tst_targetjogger SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_targetjogger.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# A held jog never reverses when the layout moves under it (issue 16, safety contract rule 6).
+stepdeck_add_test(tst_jogholdstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogholdstill.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui TIMEOUT 300)
