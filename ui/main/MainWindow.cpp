@@ -13,6 +13,8 @@
 #include "jog/KeyboardJog.h"
 #include "main/ConnectionBar.h"
 #include "main/MachineContext.h"
+#include "main/MessageLine.h"
+#include "main/MessageLog.h"
 #include "main/SafetyBar.h"
 #include "main/SafetyKeyFilter.h"
 #include "main/StatusMessages.h"
@@ -48,7 +50,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     : QMainWindow(parent), m_context(new MachineContext(this)),
       m_jog(new JogController(m_context, this)), m_keyboard(new KeyboardJog(this, this)),
       m_connection(new ConnectionBar(m_context, this)), m_linkLabel(new QLabel(this)),
-      m_errorLabel(new QLabel(this)), m_messages(new StatusMessages(this))
+      m_messages(new StatusMessages(this)), m_messageLine(new MessageLine(m_messages, this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_jog->addSource(m_keyboard);
@@ -81,17 +83,13 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     buildMenus();
 
     m_linkLabel->setObjectName(QStringLiteral("linkState"));
-    m_errorLabel->setObjectName(QStringLiteral("statusMessage"));
-    m_errorLabel->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
-    // A long message wraps instead of widening the window; it is always readable.
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    statusBar()->addWidget(m_errorLabel, 1);
+    // One line whatever the message (elided, the full text in its tooltip and the log).
+    statusBar()->addWidget(m_messageLine, 1);
     statusBar()->addPermanentWidget(m_linkLabel);
+    connect(m_messageLine, &MessageLine::logRequested, this, [this] { raisePage(m_log); });
 
     ControllerSession* session = m_context->session();
     using Owner = StatusMessages::Owner;
-    connect(m_messages, &StatusMessages::changed, this, &MainWindow::showMessages);
     connect(session, &ControllerSession::linkStateChanged, this, &MainWindow::onLinkState);
     connect(session, &ControllerSession::errorOccurred, this,
             [this](const QString& text) { m_messages->show(Owner::Controller, text); });
@@ -225,6 +223,11 @@ void MainWindow::buildDocks()
     tabifyDockWidget(m_recordsDock,
                      addDock(m_laserBridge, tr("Laser bridge"), QStringLiteral("laserBridgeDock"),
                              Qt::BottomDockWidgetArea));
+    m_log = new MessageLog(m_messages, this);
+    QDockWidget* log =
+        addDock(m_log, tr("Messages"), QStringLiteral("messagesDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(traffic, log);
+    connect(log, &QDockWidget::visibilityChanged, m_messageLine, &MessageLine::setLogOnScreen);
     setup->raise();
     setDockNestingEnabled(true);
 }
@@ -408,15 +411,6 @@ void MainWindow::showError(const QString& message)
 QString MainWindow::lastError() const
 {
     return m_messages->currentText();
-}
-
-void MainWindow::showMessages()
-{
-    m_errorLabel->setText(m_messages->currentLine());
-    m_errorLabel->setStyleSheet(m_messages->currentSeverity() == StatusMessages::Severity::Error
-                                    ? QStringLiteral("QLabel { color: #c62828; }")
-                                    : QString());
-    m_errorLabel->setToolTip(m_messages->history().join(QLatin1Char('\n')));
 }
 
 void MainWindow::onResult(const CommandResult& result)
