@@ -17,6 +17,7 @@
 #include "main/MessageLog.h"
 #include "main/SafetyBar.h"
 #include "main/SafetyKeyFilter.h"
+#include "main/ScreenBound.h"
 #include "main/StatusMessages.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
@@ -129,6 +130,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     if (const QScreen* screen = QGuiApplication::primaryScreen())
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
+    new ScreenBound(this); // and never grows past it by itself (issue 16)
     applyDefaultDockSizes();
     m_defaultState = saveState();
     const QSettings settings;
