@@ -189,6 +189,7 @@ void MainWindow::buildDocks()
     m_drivePanel = new DrivePanel(m_context, this);
     m_records = new RecordsPage(m_context, this);
     connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);
+    m_position->setReferenceRunner(m_reference->runner());
     connect(m_keyboardAction, &QAction::toggled, m_jogPanel->keyboardCheck(),
             &QCheckBox::setChecked);
 
@@ -237,12 +238,14 @@ void MainWindow::buildDocks()
 void MainWindow::applyDefaultDockSizes()
 {
     // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
-    // side docks about a quarter of the width each, the bottom tabs a third of the height.
+    // side docks a third and a fifth of the width, the bottom tabs a third of the height.
     QDockWidget* position = findChild<QDockWidget*>(QStringLiteral("positionDock"));
     QDockWidget* status = findChild<QDockWidget*>(QStringLiteral("statusDock"));
     QDockWidget* setup = findChild<QDockWidget*>(QStringLiteral("setupDock"));
+    // The read-out needs the room (issue 16: its state badge and Zero were cut at 1366x768);
+    // the status lamps arrange themselves in one column when narrow.
     resizeDocks({position, status},
-                {qBound(220, width() * 29 / 100, 470), qBound(220, width() * 24 / 100, 470)},
+                {qBound(220, width() * 32 / 100, 480), qBound(220, width() * 20 / 100, 470)},
                 Qt::Horizontal);
     resizeDocks({setup}, {qBound(160, height() / 3, 320)}, Qt::Vertical);
 }
