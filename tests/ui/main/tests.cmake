@@ -20,3 +20,6 @@ stepdeck_add_test(tst_layoutholdsstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_lay
 # Issue 16: the one-line message line (elided, tooltip, re-elided on resize) and the log.
 stepdeck_add_test(tst_messageline SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_messageline.cpp
                   LABELS unit LIBS stepdeck_ui)
+# Issue 16: a window whose layout minimum grows stays on its screen.
+stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbound.cpp
+                  LABELS ui LIBS stepdeck_ui)
