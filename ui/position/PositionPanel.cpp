@@ -266,15 +266,17 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         }
         move.to = a.position;
         const std::optional<qint64> now = estimate(axis, move);
+        // Without an estimate (ramp unknown, e.g. EMIS or after a reset) the digits say where
+        // the axis is heading, dimmed: a lone "≈ …" read as a blank or broken read-out.
         row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
-                               : QStringLiteral("\u2248 \u2026"));
+                               : QStringLiteral("\u2192") + format(move.to));
         row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
-        setState(row, tr("MOVING"), amber, false,
+        setState(row, tr("MOVING"), amber, !now,
                  now ? tr("Estimated from the ramp parameters; the controller reports no "
                           "position during a move. The target is shown below.")
                      : tr("The controller reports no position during a move and the ramp "
-                          "parameters are not known in this session. The target is shown "
-                          "below."));
+                          "parameters are not known in this session: the target is shown "
+                          "(\u2192), not where the axis is now."));
         return;
     }
     move.active = false;
