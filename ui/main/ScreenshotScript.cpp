@@ -100,7 +100,10 @@ void ScreenshotScript::start()
                         m_repeat.stop();
                         for (int code : {int(Qt::Key_Right), int(Qt::Key_Up)})
                             key(jog, QEvent::KeyRelease, code, false);
-                        waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
+                        waitFor(never, 600, [=] {
+                            captureLayoutStates(
+                                [=](bool statesOk) { Q_EMIT finished(ok && statesOk ? 0 : 1); });
+                        });
                     });
                 });
             });
