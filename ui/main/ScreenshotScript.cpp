@@ -144,6 +144,7 @@ void ScreenshotScript::fillModelPages(std::function<void()> next)
 bool ScreenshotScript::capture()
 {
     m_window->resize(1600, 1000);
+    m_window->resetLayout(); // the default dock shares of this size, not of the start size
     QCoreApplication::processEvents();
     QDir dir(m_directory);
     if (!dir.mkpath(QStringLiteral("."))) {
