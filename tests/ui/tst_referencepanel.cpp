@@ -28,6 +28,8 @@ private Q_SLOTS:
     void position_unknownBeforeReference_estimatedAfterJog();
     void position_workZeroAndUnits_applied();
     void position_duringMove_estimateAndTargetNotReferenced();
+    void position_duringReferenceRun_saysReferencingNotMovingTo();
+    void position_duringMove_rampUnknown_showsTargetNeverBlank();
     void position_disconnected_showsNoLinkNotReferenced();
     void successMessage_afterPanic_replaced();
 
@@ -161,6 +163,50 @@ void TestReferencePanel::position_duringMove_estimateAndTargetNotReferenced()
     QVERIFY(inBetween);
     QCOMPARE(dro->displayedValue(Axis::X), QStringLiteral("8000"));
     QVERIFY(!m_f->simAxis(Axis::X).moving);
+}
+
+void TestReferencePanel::position_duringReferenceRun_saysReferencingNotMovingTo()
+{
+    // Issue 16: the read-out said "moving to 0" while the axis searched its switch.
+    ui::PositionPanel* dro = m_f->window->positionPanel();
+    QSignalSpy finished(m_f->window->referencePanel()->runner(), &ui::ReferenceRunner::finished);
+    bool sawReferencing = false;
+    QString wrongDetail;
+    QObject ctx;
+    connect(m_f->session, &ControllerSession::statusChanged, &ctx, [&] {
+        if (!m_f->window->referencePanel()->runner()->isRunning())
+            return;
+        const QString detail = dro->detailText(Axis::X);
+        if (dro->stateText(Axis::X) == QLatin1String("REFERENCING") &&
+            detail == QStringLiteral("referencing\u2026") &&
+            !dro->displayedValue(Axis::X).isEmpty())
+            sawReferencing = true;
+        else if (detail.contains(QStringLiteral("moving to")) && wrongDetail.isEmpty())
+            wrongDetail = detail;
+    });
+    m_f->window->referencePanel()->referenceAxis(Axis::X);
+    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.first().at(0).toBool());
+    QVERIFY2(wrongDetail.isEmpty(), qPrintable(wrongDetail));
+    QVERIFY(sawReferencing);
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
+    QCOMPARE(dro->detailText(Axis::X), QStringLiteral("machine 0 steps"));
+}
+
+void TestReferencePanel::position_duringMove_rampUnknown_showsTargetNeverBlank()
+{
+    // Without the ramp parameters (a model whose names differ, or after a reset) there is no
+    // estimate: the digits show the target, marked with an arrow, never a lone "≈".
+    QVERIFY(referenceX());
+    ui::PositionPanel* dro = m_f->window->positionPanel();
+    QTRY_COMPARE(dro->stateText(Axis::X), QStringLiteral("REFERENCED"));
+    m_f->window->context()->forgetKnownParameters();
+    m_f->session->moveRelative({{Axis::X, 6000}});
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(Axis::X), QStringLiteral("MOVING"), 3000);
+    QCOMPARE(dro->displayedValue(Axis::X), QStringLiteral("\u21926000"));
+    QVERIFY(dro->detailText(Axis::X).contains(QStringLiteral("6000")));
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(Axis::X), QStringLiteral("REFERENCED"), 15000);
+    QCOMPARE(dro->displayedValue(Axis::X), QStringLiteral("6000"));
 }
 
 void TestReferencePanel::position_disconnected_showsNoLinkNotReferenced()

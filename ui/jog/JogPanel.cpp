@@ -1,5 +1,6 @@
 #include "JogPanel.h"
 #include "common/ConnectionGate.h"
+#include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
@@ -31,10 +32,11 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
-      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)), m_keyboardState(new QLabel(this)),
-      m_refusal(new QLabel(this)), m_jogModeNote(new QLabel(this)),
-      m_refusalTimer(new QTimer(this)), m_velocityGrid(new QGridLayout),
-      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
+      m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)),
+      m_keyboardState(new ElidedLabel(this)), m_refusal(new ElidedLabel(this, 2)),
+      m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
+      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
+      m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
@@ -95,28 +97,34 @@ QString JogPanel::keyboardStateText() const
     return m_keyboardState->text();
 }
 
+QStringList JogPanel::keyboardStateTexts() const
+{
+    return {tr("Keyboard jog: off (Ctrl+J)"), tr("Keyboard jog: on, but not connected"),
+            tr("Keyboard jog paused: the StepDeck window is not active"),
+            tr("Keyboard jog paused: a text field has the focus, the arrows edit it. Click "
+               "the jog panel to resume."),
+            tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(m_context->axes()))};
+}
+
 void JogPanel::showKeyboardState()
 {
-    QString text;
-    QString style;
-    if (!m_keyboardCheck->isChecked()) {
-        text = tr("Keyboard jog: off (Ctrl+J)");
-        style = QStringLiteral("color: palette(dark);");
-    } else if (!m_context->isConnected()) {
-        text = tr("Keyboard jog: on, but not connected");
-        style = QStringLiteral("color: #b26a00; font-weight: bold;");
-    } else if (!m_keyboard->windowActive()) {
-        text = tr("Keyboard jog paused: the StepDeck window is not active");
-        style = QStringLiteral("color: #b26a00; font-weight: bold;");
-    } else if (m_keyboard->textFieldHasFocus()) {
-        text = tr("Keyboard jog paused: a text field has the focus, the arrows edit it. Click "
-                  "the jog panel to resume.");
-        style = QStringLiteral("color: #b26a00; font-weight: bold;");
-    } else {
-        text = tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(m_context->axes()));
-        style = QStringLiteral("color: #1b5e20; font-weight: bold;");
-    }
-    m_keyboardState->setText(text);
+    enum { Off, NotConnected, Inactive, TextField, On };
+    int state = On;
+    if (!m_keyboardCheck->isChecked())
+        state = Off;
+    else if (!m_context->isConnected())
+        state = NotConnected;
+    else if (!m_keyboard->windowActive())
+        state = Inactive;
+    else if (m_keyboard->textFieldHasFocus())
+        state = TextField;
+    static const QString amber = QStringLiteral("color: #b26a00; font-weight: bold;");
+    const QString style = state == Off  ? QStringLiteral("color: palette(dark);")
+                          : state == On ? QStringLiteral("color: #1b5e20; font-weight: bold;")
+                                        : amber;
+    const QStringList texts = keyboardStateTexts();
+    m_keyboardState->setReservedTexts(texts); // the legend follows the model's axes
+    m_keyboardState->setText(texts.at(state));
     setStyleSheetIfChanged(m_keyboardState, QStringLiteral("QLabel { %1 }").arg(style));
 }
 
@@ -163,7 +171,9 @@ QWidget* JogPanel::buildSidePanel()
     v->addWidget(m_keyboardCheck);
     // On or off, and which keys: on the panel itself, not only in a tooltip.
     m_keyboardState->setObjectName(QStringLiteral("keyboardJogState"));
-    m_keyboardState->setWordWrap(true);
+    // The room of its longest state: the step buttons below never move (issue 16).
+    m_keyboardState->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_keyboardState->setReservedTexts(keyboardStateTexts());
     v->addWidget(m_keyboardState);
 
     m_jogModeNote->setObjectName(QStringLiteral("jogModeNote"));
@@ -174,7 +184,8 @@ QWidget* JogPanel::buildSidePanel()
            "after the short move under way. Incremental jog moves by the step size."));
     v->addWidget(m_jogModeNote);
     m_refusal->setObjectName(QStringLiteral("jogRefusal"));
-    m_refusal->setWordWrap(true);
+    // Two lines reserved, a longer reason elided (full text in the tooltip and the log).
+    m_refusal->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
     v->addWidget(m_refusal);
     v->addWidget(m_incremental);

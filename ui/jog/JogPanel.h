@@ -1,4 +1,5 @@
 #pragma once
+#include "common/ElidedLabel.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
 
@@ -48,6 +49,7 @@ private:
     void onStatus(const MachineStatus& status);
     void showRefusal(const QString& reason);
     void showKeyboardState();
+    QStringList keyboardStateTexts() const; // every text m_keyboardState can show
 
     MachineContext* m_context;
     JogController* m_jog;
@@ -59,9 +61,9 @@ private:
     QSlider* m_override;
     QLabel* m_overrideValue;
     QCheckBox* m_keyboardCheck;
-    QLabel* m_keyboardState;
+    ElidedLabel* m_keyboardState;
     ConnectionGate* m_gate = nullptr;
-    QLabel* m_refusal;
+    ElidedLabel* m_refusal;
     QLabel* m_jogModeNote; // how jog works on models without a jog command
     QTimer* m_refusalTimer;
     QGridLayout* m_velocityGrid;

@@ -13,8 +13,11 @@
 #include "jog/KeyboardJog.h"
 #include "main/ConnectionBar.h"
 #include "main/MachineContext.h"
+#include "main/MessageLine.h"
+#include "main/MessageLog.h"
 #include "main/SafetyBar.h"
 #include "main/SafetyKeyFilter.h"
+#include "main/ScreenBound.h"
 #include "main/StatusMessages.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
@@ -48,7 +51,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     : QMainWindow(parent), m_context(new MachineContext(this)),
       m_jog(new JogController(m_context, this)), m_keyboard(new KeyboardJog(this, this)),
       m_connection(new ConnectionBar(m_context, this)), m_linkLabel(new QLabel(this)),
-      m_errorLabel(new QLabel(this)), m_messages(new StatusMessages(this))
+      m_messages(new StatusMessages(this)), m_messageLine(new MessageLine(m_messages, this))
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_jog->addSource(m_keyboard);
@@ -81,17 +84,13 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     buildMenus();
 
     m_linkLabel->setObjectName(QStringLiteral("linkState"));
-    m_errorLabel->setObjectName(QStringLiteral("statusMessage"));
-    m_errorLabel->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
-    // A long message wraps instead of widening the window; it is always readable.
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    statusBar()->addWidget(m_errorLabel, 1);
+    // One line whatever the message (elided, the full text in its tooltip and the log).
+    statusBar()->addWidget(m_messageLine, 1);
     statusBar()->addPermanentWidget(m_linkLabel);
+    connect(m_messageLine, &MessageLine::logRequested, this, [this] { raisePage(m_log); });
 
     ControllerSession* session = m_context->session();
     using Owner = StatusMessages::Owner;
-    connect(m_messages, &StatusMessages::changed, this, &MainWindow::showMessages);
     connect(session, &ControllerSession::linkStateChanged, this, &MainWindow::onLinkState);
     connect(session, &ControllerSession::errorOccurred, this,
             [this](const QString& text) { m_messages->show(Owner::Controller, text); });
@@ -131,6 +130,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     if (const QScreen* screen = QGuiApplication::primaryScreen())
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
+    new ScreenBound(this); // and never grows past it by itself (issue 16)
     applyDefaultDockSizes();
     m_defaultState = saveState();
     const QSettings settings;
@@ -189,6 +189,7 @@ void MainWindow::buildDocks()
     m_drivePanel = new DrivePanel(m_context, this);
     m_records = new RecordsPage(m_context, this);
     connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);
+    m_position->setReferenceRunner(m_reference->runner());
     connect(m_keyboardAction, &QAction::toggled, m_jogPanel->keyboardCheck(),
             &QCheckBox::setChecked);
 
@@ -225,6 +226,11 @@ void MainWindow::buildDocks()
     tabifyDockWidget(m_recordsDock,
                      addDock(m_laserBridge, tr("Laser bridge"), QStringLiteral("laserBridgeDock"),
                              Qt::BottomDockWidgetArea));
+    m_log = new MessageLog(m_messages, this);
+    QDockWidget* log =
+        addDock(m_log, tr("Messages"), QStringLiteral("messagesDock"), Qt::BottomDockWidgetArea);
+    tabifyDockWidget(traffic, log);
+    connect(log, &QDockWidget::visibilityChanged, m_messageLine, &MessageLine::setLogOnScreen);
     setup->raise();
     setDockNestingEnabled(true);
 }
@@ -232,12 +238,14 @@ void MainWindow::buildDocks()
 void MainWindow::applyDefaultDockSizes()
 {
     // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
-    // side docks about a quarter of the width each, the bottom tabs a third of the height.
+    // side docks a third and a fifth of the width, the bottom tabs a third of the height.
     QDockWidget* position = findChild<QDockWidget*>(QStringLiteral("positionDock"));
     QDockWidget* status = findChild<QDockWidget*>(QStringLiteral("statusDock"));
     QDockWidget* setup = findChild<QDockWidget*>(QStringLiteral("setupDock"));
+    // The read-out needs the room (issue 16: its state badge and Zero were cut at 1366x768);
+    // the status lamps arrange themselves in one column when narrow.
     resizeDocks({position, status},
-                {qBound(220, width() * 29 / 100, 470), qBound(220, width() * 24 / 100, 470)},
+                {qBound(220, width() * 32 / 100, 480), qBound(220, width() * 20 / 100, 470)},
                 Qt::Horizontal);
     resizeDocks({setup}, {qBound(160, height() / 3, 320)}, Qt::Vertical);
 }
@@ -408,15 +416,6 @@ void MainWindow::showError(const QString& message)
 QString MainWindow::lastError() const
 {
     return m_messages->currentText();
-}
-
-void MainWindow::showMessages()
-{
-    m_errorLabel->setText(m_messages->currentLine());
-    m_errorLabel->setStyleSheet(m_messages->currentSeverity() == StatusMessages::Severity::Error
-                                    ? QStringLiteral("QLabel { color: #c62828; }")
-                                    : QString());
-    m_errorLabel->setToolTip(m_messages->history().join(QLatin1Char('\n')));
 }
 
 void MainWindow::onResult(const CommandResult& result)

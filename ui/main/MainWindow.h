@@ -21,6 +21,8 @@ class JogPanel;
 class KeyboardJog;
 class LaserBridgePage;
 class MachineContext;
+class MessageLine;
+class MessageLog;
 class PositionPanel;
 class RecordsPage;
 class ReferencePanel;
@@ -65,6 +67,8 @@ public:
     // The status bar's current message (empty when its cause has ended or it expired).
     QString lastError() const;
     StatusMessages* messages() const { return m_messages; }
+    MessageLine* messageLine() const { return m_messageLine; }
+    MessageLog* messageLog() const { return m_log; }
 
     // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
     // central jog panel).
@@ -98,7 +102,6 @@ private:
     void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
     void onResult(const CommandResult& result);
-    void showMessages();
 
     MachineContext* m_context;
     JogController* m_jog;
@@ -132,8 +135,9 @@ private:
     QAction* m_resetAction = nullptr;
     QAction* m_keyboardAction = nullptr;
     QLabel* m_linkLabel;
-    QLabel* m_errorLabel;
     StatusMessages* m_messages;
+    MessageLine* m_messageLine;
+    MessageLog* m_log = nullptr;
     QByteArray m_defaultState;
 };
 

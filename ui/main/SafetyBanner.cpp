@@ -2,6 +2,12 @@
 
 namespace stepdeck::ui {
 
+QString SafetyBanner::setupPageTitle()
+{
+    // The title of the setup page's dock as the window shows it (German: "Einrichtung").
+    return QCoreApplication::translate("stepdeck::ui::MainWindow", "Setup");
+}
+
 QString SafetyBanner::mayStillMoveText()
 {
     return tr("the controller may still be moving: use the machine's emergency stop");
@@ -47,7 +53,8 @@ SafetyBannerText SafetyBanner::compute(const SafetyBannerInput& in)
                 QStringLiteral("fault")};
     if (s.setupIncomplete)
         return {tr("Setup incomplete: write the setup (start speed, max speed, acceleration) "
-                   "on the Setup page first. The controller refuses every move until then."),
+                   "on the %1 page first. The controller refuses every move until then.")
+                    .arg(setupPageTitle()),
                 QStringLiteral("warning")};
     bool allReferenced = !s.axes.isEmpty();
     for (const AxisStatus& axis : s.axes)
@@ -60,6 +67,31 @@ SafetyBannerText SafetyBanner::compute(const SafetyBannerInput& in)
                 QStringLiteral("fault"), true};
     return {tr("Not referenced: positions are unknown until the axes are referenced."),
             QStringLiteral("warning"), true};
+}
+
+QStringList SafetyBanner::possibleTexts()
+{
+    QStringList out;
+    for (LinkState link :
+         {LinkState::Disconnected, LinkState::Connecting, LinkState::Connected, LinkState::Lost}) {
+        for (int flags = 0; flags < (1 << 7); ++flags) {
+            SafetyBannerInput in;
+            in.link = link;
+            in.status.motionUnconfirmed = flags & 1;
+            in.movingWhenLinkEnded = flags & 2;
+            in.status.panic = flags & 4;
+            in.hostPanicSent = flags & 8;
+            in.status.setupIncomplete = flags & 16;
+            in.positionsLost = flags & 32;
+            AxisStatus axis;
+            axis.referenced = flags & 64;
+            in.status.axes.insert(Axis::X, axis);
+            const QString text = compute(in).text;
+            if (!out.contains(text))
+                out << text;
+        }
+    }
+    return out;
 }
 
 } // namespace stepdeck::ui

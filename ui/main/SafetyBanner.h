@@ -34,6 +34,11 @@ public:
     static SafetyBannerText compute(const SafetyBannerInput& in);
     // The warning STOP and PANIC carry permanently for a model without a stop command.
     static QString mayStillMoveText();
+    // Every text compute() can return (in the current language): the banner reserves the
+    // room of the longest, so a new state never re-flows the window (issue 16).
+    static QStringList possibleTexts();
+    // The setup page's title, as the banner names it.
+    static QString setupPageTitle();
 
 private:
     static SafetyBannerText disconnected(const SafetyBannerInput& in);

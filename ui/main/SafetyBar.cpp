@@ -1,4 +1,5 @@
 #include "SafetyBar.h"
+#include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "main/MachineContext.h"
 #include "main/SafetyBanner.h"
@@ -26,7 +27,7 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
                      QWidget* parent)
     : QWidget(parent), m_context(context), m_stop(new QPushButton(this)),
       m_panic(new QPushButton(this)), m_reference(new QPushButton(this)),
-      m_banner(new QLabel(this)), m_noStop(new QLabel(this))
+      m_banner(new ElidedLabel(this)), m_noStop(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("safetyBar"));
     m_stop->setObjectName(QStringLiteral("stopButton"));
@@ -35,41 +36,40 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
     for (QPushButton* b : {m_stop, m_panic}) {
         b->setFocusPolicy(Qt::NoFocus); // never steal focus from what the operator typed in
         b->setMinimumSize(140, 48);
-        QFont f = b->font();
-        f.setBold(true);
-        f.setPointSizeF(f.pointSizeF() * 1.35);
-        b->setFont(f);
     }
     m_stop->setStyleSheet(QStringLiteral(
         "QPushButton { background: #ffb300; color: #1a1a1a; border: 2px solid #c68400;"
-        " border-radius: 6px; } QPushButton:pressed { background: #c68400; }"));
-    m_panic->setStyleSheet(
-        QStringLiteral("QPushButton { background: #d32f2f; color: white; border: 2px solid #8e0000;"
-                       " border-radius: 6px; } QPushButton:pressed { background: #8e0000; }"));
+        " border-radius: 6px; padding: 2px 10px; } QPushButton:pressed { background: #c68400; }"));
+    m_panic->setStyleSheet(QStringLiteral(
+        "QPushButton { background: #d32f2f; color: white; border: 2px solid #8e0000;"
+        " border-radius: 6px; padding: 2px 10px; } QPushButton:pressed { background: #8e0000; }"));
     m_reference->setFocusPolicy(Qt::NoFocus);
+    // Offered or not, the button keeps its room: the banner below never moves.
+    QSizePolicy keep = m_reference->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_reference->setSizePolicy(keep);
+    // Banner and note span the whole width and reserve the room of their longest text: a new
+    // state never moves the jog pad below them, and safety texts are never cut (issue 16).
     m_banner->setObjectName(QStringLiteral("safetyBanner"));
-    m_banner->setWordWrap(true);
-    m_banner->setMinimumHeight(40);
     m_banner->setMargin(6);
+    m_banner->setReservedTexts(SafetyBanner::possibleTexts());
     m_noStop->setObjectName(QStringLiteral("noStopCommandNote"));
-    m_noStop->setWordWrap(true);
-    m_noStop->setMaximumWidth(260);
+    m_noStop->setMargin(4);
+    m_noStop->setReservedTexts({Controller::noStopCommandText()});
     m_noStop->setStyleSheet(QStringLiteral("QLabel { background:#ffcdd2; color:#8e0000; "
-                                           "font-weight:bold; border-radius:4px; padding:4px; }"));
+                                           "font-weight:bold; border-radius:4px; }"));
 
-    auto* layout = new QHBoxLayout(this);
+    auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
-    layout->addWidget(m_stop);
-    layout->addWidget(m_panic);
+    layout->setSpacing(4);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_stop);
+    buttons->addWidget(m_panic);
+    buttons->addStretch(1);
+    buttons->addWidget(m_reference, 0, Qt::AlignBottom);
+    layout->addLayout(buttons);
     layout->addWidget(m_noStop);
-    auto* right = new QVBoxLayout;
-    right->setSpacing(4);
-    right->addWidget(m_banner, 1);
-    auto* referenceRow = new QHBoxLayout;
-    referenceRow->addStretch(1);
-    referenceRow->addWidget(m_reference);
-    right->addLayout(referenceRow);
-    layout->addLayout(right, 1);
+    layout->addWidget(m_banner);
 
     connect(m_stop, &QPushButton::clicked, stop, &QAction::trigger);
     connect(m_panic, &QPushButton::clicked, panic, &QAction::trigger);
@@ -99,6 +99,13 @@ void SafetyBar::applyCapabilities()
 void SafetyBar::showCapabilities(const Capabilities& caps)
 {
     const bool canStop = caps.stopCommand;
+    // Two-line labels in a smaller type, so both buttons fit beside each other at 1366x768.
+    for (QPushButton* b : {m_stop, m_panic}) {
+        QFont f = font();
+        f.setBold(true);
+        f.setPointSizeF(f.pointSizeF() * (canStop ? 1.35 : 1.1));
+        b->setFont(f);
+    }
     m_stop->setText(canStop ? tr("STOP  (Esc)") : tr("STOP  (Esc)\ndoes not stop the controller"));
     m_panic->setText(canStop ? tr("PANIC  (F1)") : tr("PANIC  (F1)\ndoes not stop the controller"));
     m_stop->setToolTip(canStop ? tr("Ramped stop of all motion")

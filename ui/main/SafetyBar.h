@@ -1,4 +1,5 @@
 #pragma once
+#include "common/ElidedLabel.h"
 #include "controller/Controller.h"
 #include <QWidget>
 
@@ -31,6 +32,7 @@ public:
     QString bannerText() const;
     QString bannerSeverity() const;
     QLabel* noStopNote() const { return m_noStop; }
+    ElidedLabel* banner() const { return m_banner; }
     bool positionsLost() const { return m_positionsLost; }
     // The link ended while the last status showed motion, and no standstill was seen since.
     bool movingWhenLinkEnded() const { return m_movingWhenLinkEnded; }
@@ -48,8 +50,8 @@ private:
     QPushButton* m_stop;
     QPushButton* m_panic;
     QPushButton* m_reference;
-    QLabel* m_banner;
-    QLabel* m_noStop;
+    ElidedLabel* m_banner;
+    ElidedLabel* m_noStop;
     bool m_positionsLost = false;
     bool m_lastShowedMotion = false;
     bool m_movingWhenLinkEnded = false;

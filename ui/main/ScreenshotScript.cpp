@@ -100,7 +100,10 @@ void ScreenshotScript::start()
                         m_repeat.stop();
                         for (int code : {int(Qt::Key_Right), int(Qt::Key_Up)})
                             key(jog, QEvent::KeyRelease, code, false);
-                        waitFor(never, 600, [=] { Q_EMIT finished(ok ? 0 : 1); });
+                        waitFor(never, 600, [=] {
+                            captureLayoutStates(
+                                [=](bool statesOk) { Q_EMIT finished(ok && statesOk ? 0 : 1); });
+                        });
                     });
                 });
             });
@@ -141,6 +144,7 @@ void ScreenshotScript::fillModelPages(std::function<void()> next)
 bool ScreenshotScript::capture()
 {
     m_window->resize(1600, 1000);
+    m_window->resetLayout(); // the default dock shares of this size, not of the start size
     QCoreApplication::processEvents();
     QDir dir(m_directory);
     if (!dir.mkpath(QStringLiteral("."))) {

@@ -24,10 +24,12 @@ void StatusMessages::show(Owner owner, const QString& text, Severity severity, i
     const QDateTime now = QDateTime::currentDateTime();
     m_messages.insert(owner,
                       Message{text, severity, now, now.addMSecs(qMax(1, lifetimeMs)), ++m_order});
-    m_history.prepend(QStringLiteral("%1  %2").arg(stamp(now), text));
-    while (m_history.size() > kHistory)
-        m_history.removeLast();
+    m_log.append(LogEntry{now, severity, text});
+    ++m_logged;
+    while (m_log.size() > kLogLimit)
+        m_log.removeFirst();
     expire(); // also re-arms the timer for the next expiry
+    Q_EMIT logged(m_log.constLast());
     Q_EMIT changed();
 }
 
@@ -98,9 +100,10 @@ StatusMessages::Severity StatusMessages::currentSeverity() const
     return m ? m->severity : Severity::Info;
 }
 
-QStringList StatusMessages::history() const
+QString StatusMessages::logLine(const LogEntry& entry)
 {
-    return m_history;
+    return QStringLiteral("%1  %2").arg(entry.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
+                                        entry.text);
 }
 
 } // namespace stepdeck::ui

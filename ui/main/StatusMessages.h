@@ -11,7 +11,8 @@ namespace stepdeck::ui {
 // clears or replaces it (a link error when the link is back, a jog refusal when jogging
 // works), and every message also expires after its lifetime (default kLifetimeMs), so an
 // error from minutes ago is never shown as current. The line shows the newest live message
-// with its time; the tooltip keeps the recent history, so nothing is lost.
+// with its time; every message also goes into the log (time-stamped, the newest kLogLimit
+// kept) that the window's message log shows, so nothing is lost when a message ends.
 class StatusMessages : public QObject
 {
     Q_OBJECT
@@ -19,7 +20,14 @@ public:
     enum class Owner { General, Link, Controller, Request, Jog, Safety, Setup };
     enum class Severity { Info, Error };
     static constexpr int kLifetimeMs = 60000;
-    static constexpr int kHistory = 12;
+    static constexpr int kLogLimit = 500;
+
+    struct LogEntry
+    {
+        QDateTime time;
+        Severity severity = Severity::Error;
+        QString text;
+    };
 
     explicit StatusMessages(QObject* parent = nullptr);
 
@@ -31,10 +39,15 @@ public:
     QString currentText() const; // the newest live message, without its time
     QString currentLine() const; // "HH:mm:ss  text"
     Severity currentSeverity() const;
-    QStringList history() const; // newest first, with times
+    // Every message shown, oldest first, at most kLogLimit (the oldest are dropped).
+    const QList<LogEntry>& log() const { return m_log; }
+    // Messages logged since the start, including those dropped from the log.
+    quint64 loggedCount() const { return m_logged; }
+    static QString logLine(const LogEntry& entry); // "yyyy-MM-dd HH:mm:ss  text"
 
 Q_SIGNALS:
     void changed();
+    void logged(const stepdeck::ui::StatusMessages::LogEntry& entry);
 
 private:
     struct Message
@@ -49,7 +62,8 @@ private:
     void expire();
 
     QMap<Owner, Message> m_messages;
-    QStringList m_history;
+    QList<LogEntry> m_log;
+    quint64 m_logged = 0;
     quint64 m_order = 0;
     QTimer m_expiry;
 };

@@ -1,4 +1,5 @@
 #include "GoToWidget.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include <QDoubleValidator>
 #include <QGridLayout>
@@ -11,12 +12,14 @@ namespace stepdeck::ui {
 GoToWidget::GoToWidget(MachineContext* context, QWidget* parent)
     : QGroupBox(tr("Go to position"), parent), m_context(context), m_fields(new QWidget(this)),
       m_go(new QPushButton(tr("Go"), this)), m_zero(new QPushButton(tr("Go to work zero"), this)),
-      m_message(new QLabel(this))
+      m_message(new ElidedLabel(this, 2))
 {
     setObjectName(QStringLiteral("goToPosition"));
     m_go->setToolTip(tr("Move the axes with a value to that work position (all at once)"));
     m_zero->setToolTip(tr("Move every axis to its work zero (all at once)"));
-    m_message->setWordWrap(true);
+    // Two lines reserved, longer reasons elided with the full text in the tooltip: a message
+    // never moves the fields and buttons around it (issue 16).
+    m_message->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_fields);
     auto* buttons = new QHBoxLayout;

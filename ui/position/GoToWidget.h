@@ -9,6 +9,7 @@ class QPushButton;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class MachineContext;
 
 // "Go to position" (work coordinates in the axis' units; empty fields stay where they are)
@@ -42,7 +43,7 @@ private:
     QWidget* m_fields;
     QPushButton* m_go;
     QPushButton* m_zero;
-    QLabel* m_message;
+    ElidedLabel* m_message;
     RequestId m_pending = 0;
     bool m_showingReason = false; // m_message holds refusal(), replaced when it changes
 };

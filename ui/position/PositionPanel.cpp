@@ -1,10 +1,13 @@
 #include "PositionPanel.h"
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
+#include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "main/MachineContext.h"
+#include "position/DroValueLabel.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
+#include "position/ReferenceRunner.h"
 #include "position/SoftLimitsDialog.h"
 #include "position/UnitsDialog.h"
 #include <QGridLayout>
@@ -85,26 +88,31 @@ void PositionPanel::rebuild()
     QFont axisFont = font();
     axisFont.setPointSizeF(font().pointSizeF() * 2.2);
     axisFont.setBold(true);
+    // The state badge is as wide as its longest word in this language: a new state never
+    // widens the row (issue 16: MOVING pushed the badge and Zero off the dock).
+    QFont badgeFont = font();
+    badgeFont.setBold(true);
+    int badgeWidth = 0;
+    for (const QString& state : stateWords())
+        badgeWidth = qMax(badgeWidth, QFontMetrics(badgeFont).horizontalAdvance(state) + 12);
     int r = 0;
     for (Axis axis : m_context->axes()) {
         Row row;
         auto* name = new QLabel(axisName(axis), this);
         name->setFont(axisFont);
-        row.value = new QLabel(this);
-        row.value->setFont(big);
-        row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        row.value->setMinimumWidth(
-            QFontMetrics(big).horizontalAdvance(QStringLiteral("-0000.000")));
+        row.value = new DroValueLabel(this);
+        row.value->setDigitFont(big);
         row.value->setStyleSheet(QStringLiteral("QLabel { background: #101418; color: #7CFC9A; "
                                                 "border-radius: 4px; padding: 2px 8px; }"));
-        row.unit = new QLabel(this);
-        row.steps = new QLabel(this);
+        row.steps = new ElidedLabel(this);
         row.steps->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        row.steps->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
         row.state = new QLabel(this);
         row.state->setAlignment(Qt::AlignCenter);
-        row.state->setMinimumWidth(84);
-        row.limits = new QLabel(this);
+        row.state->setFixedWidth(badgeWidth);
+        row.limits = new ElidedLabel(this);
         row.limits->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
+        row.limits->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
         auto* zero = new QToolButton(this);
         zero->setText(tr("Zero %1").arg(axisName(axis)));
         zero->setToolTip(
@@ -114,17 +122,15 @@ void PositionPanel::rebuild()
         m_gate->add(zero); // a zero needs the position now, not the last one known
         m_grid->addWidget(name, 2 * r, 0, 2, 1);
         m_grid->addWidget(row.value, 2 * r, 1);
-        m_grid->addWidget(row.unit, 2 * r, 2);
-        m_grid->addWidget(row.state, 2 * r, 3);
-        // The soft limits share the line of the machine position (left of it): a column of
-        // their own would push the state off a 1366x768 screen.
+        m_grid->addWidget(row.state, 2 * r, 2);
+        // The line below spans the badge's column too: soft limits (when set), the machine
+        // position or the target, and Zero. Its labels elide rather than widen the row.
         auto* detail = new QHBoxLayout;
         detail->setContentsMargins(0, 0, 0, 0);
-        detail->addWidget(row.limits);
-        detail->addStretch(1);
-        detail->addWidget(row.steps);
+        detail->addWidget(row.limits, 2);
+        detail->addWidget(row.steps, 3);
+        detail->addWidget(zero);
         m_grid->addLayout(detail, 2 * r + 1, 1, 1, 2);
-        m_grid->addWidget(zero, 2 * r + 1, 3);
         m_rows.insert(axis, row);
         ++r;
     }
@@ -189,17 +195,20 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     };
     // The large digits are work coordinates once a work zero is set: say so next to them;
     // the line below always gives the machine position.
+    row.value->setReservedText(u.stepsPerUnit > 0 ? QStringLiteral("\u2248-00000.000")
+                                                  : QStringLiteral("\u2248-0000000"));
     if (u.workOffset != 0) {
-        row.unit->setText(tr("%1 work").arg(m_context->unitName(axis)));
-        row.unit->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
-                                "(machine %2 steps)")
-                                 .arg(axisName(axis))
-                                 .arg(u.workOffset));
+        row.value->setUnit(tr("%1 work").arg(m_context->unitName(axis)));
+        row.value->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
+                                 "(machine %2 steps)")
+                                  .arg(axisName(axis))
+                                  .arg(u.workOffset));
     } else {
-        row.unit->setText(m_context->unitName(axis));
-        row.unit->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
+        row.value->setUnit(m_context->unitName(axis));
+        row.value->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
     }
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
+    row.limits->setVisible(limit.rangeSet); // without a range the line is the position's
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
         row.limits->setToolTip(
@@ -233,6 +242,21 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         return;
     }
     const bool readback = m_context->capabilities().positionReadback;
+    if (m_referencing && m_referencing->currentAxes().contains(axis)) {
+        // A reference run: the position is found when the axis reaches its switch; the
+        // target the core counts until then ("moving to 0") means nothing.
+        move.active = false;
+        const qint64 shown = readback ? a.position : m_idlePosition.value(axis, a.position);
+        row.value->setText(format(shown));
+        row.steps->setText(readback ? tr("referencing\u2026 (machine %1 steps)").arg(shown)
+                                    : tr("referencing\u2026"));
+        setState(row, tr("REFERENCING"), amber, !readback,
+                 readback ? tr("Reference run: read back from the controller; the position is "
+                               "set when the axis reaches its reference switch.")
+                          : tr("Reference run: the last position before it; the position is "
+                               "set when the axis reaches its reference switch."));
+        return;
+    }
     if (a.moving && !readback) {
         // The core already counts the target; show where the axis probably is.
         if (!move.active) {
@@ -242,15 +266,17 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         }
         move.to = a.position;
         const std::optional<qint64> now = estimate(axis, move);
+        // Without an estimate (ramp unknown, e.g. EMIS or after a reset) the digits say where
+        // the axis is heading, dimmed: a lone "≈ …" read as a blank or broken read-out.
         row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
-                               : QStringLiteral("\u2248 \u2026"));
+                               : QStringLiteral("\u2192") + format(move.to));
         row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
-        setState(row, tr("MOVING"), amber, false,
+        setState(row, tr("MOVING"), amber, !now,
                  now ? tr("Estimated from the ramp parameters; the controller reports no "
                           "position during a move. The target is shown below.")
                      : tr("The controller reports no position during a move and the ramp "
-                          "parameters are not known in this session. The target is shown "
-                          "below."));
+                          "parameters are not known in this session: the target is shown "
+                          "(\u2192), not where the axis is now."));
         return;
     }
     move.active = false;
@@ -277,6 +303,20 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         setState(row, tr("SET"), amber, false,
                  tr("Known, but not from a reference run of this session."));
     }
+}
+
+void PositionPanel::setReferenceRunner(const ReferenceRunner* runner)
+{
+    m_referencing = runner;
+    connect(runner, &ReferenceRunner::progress, this, [this] { onStatus(m_context->status()); });
+    connect(runner, &ReferenceRunner::finished, this, [this] { onStatus(m_context->status()); });
+    onStatus(m_context->status());
+}
+
+QStringList PositionPanel::stateWords()
+{
+    return {tr("NO LINK"),    tr("MOVING"), tr("UNKNOWN"),    tr("ESTIMATED"),
+            tr("REFERENCED"), tr("SET"),    tr("REFERENCING")};
 }
 
 QString PositionPanel::displayedValue(Axis axis) const

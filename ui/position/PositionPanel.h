@@ -12,8 +12,11 @@ class QToolButton;
 namespace stepdeck::ui {
 
 class ConnectionGate;
+class DroValueLabel;
+class ElidedLabel;
 class GoToWidget;
 class MachineContext;
+class ReferenceRunner;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
 // position in steps, and how it is known: REFERENCED (referenced and standing still),
@@ -21,7 +24,9 @@ class MachineContext;
 // the link ended, not current). During a positioning move on a model without position
 // read-back the core already holds the target: the panel shows its own estimate of where the
 // axis is (MoveEstimate, from the ramp parameters known in this session) marked with ≈,
-// and the target separately. Zero sets the work origin at the current position.
+// and the target separately; during a reference run it says so (REFERENCING). Zero sets the
+// work origin at the current position. No text widens a row (issue 16): the digits fit their
+// box, the state badge is as wide as its longest word, the line below elides.
 class PositionPanel : public QWidget
 {
     Q_OBJECT
@@ -33,6 +38,10 @@ public:
     QString detailText(Axis axis) const; // the line below: machine steps, or the target
     QString limitsText(Axis axis) const;
     GoToWidget* goTo() const { return m_goTo; }
+    // The runner whose current axes the read-out shows as referencing.
+    void setReferenceRunner(const ReferenceRunner* runner);
+    // Every word the state badge can show, in the current language.
+    static QStringList stateWords();
 
 public Q_SLOTS:
     void zeroAxis(Axis axis);
@@ -43,11 +52,10 @@ public Q_SLOTS:
 private:
     struct Row
     {
-        QLabel* value = nullptr;
-        QLabel* unit = nullptr;
-        QLabel* steps = nullptr;
+        DroValueLabel* value = nullptr; // digits and unit
+        ElidedLabel* steps = nullptr;   // machine position, target or "referencing"
         QLabel* state = nullptr;
-        QLabel* limits = nullptr;
+        ElidedLabel* limits = nullptr;
     };
     struct MoveTrack
     {
@@ -72,6 +80,7 @@ private:
     QTimer* m_moveTick;
     ConnectionGate* m_gate;
     GoToWidget* m_goTo;
+    const ReferenceRunner* m_referencing = nullptr;
 };
 
 } // namespace stepdeck::ui

@@ -1,4 +1,5 @@
 #include "ReferencePanel.h"
+#include "common/ElidedLabel.h"
 #include "common/LedIndicator.h"
 #include "main/MachineContext.h"
 #include "position/ReferenceRunner.h"
@@ -29,7 +30,7 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_runner(new ReferenceRunner(context, this)),
       m_grid(new QGridLayout), m_all(new QPushButton(tr("Reference all"), this)),
       m_cancel(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
-      m_message(new QLabel(this))
+      m_message(new ElidedLabel(this, 2))
 {
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(m_grid);
@@ -46,7 +47,9 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
     m_progress->setTextVisible(true);
-    m_message->setWordWrap(true);
+    // Two lines reserved, longer messages elided (the full text in the tooltip): a message
+    // never moves what is below it (issue 16).
+    m_message->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     for (QPushButton* b : {m_all, m_cancel})
         b->setFocusPolicy(Qt::NoFocus);
 
@@ -102,7 +105,9 @@ void ReferencePanel::rebuild()
             settings.value(key + QStringLiteral("order"), defaultOrder(axis)).toInt());
         row.order->setToolTip(tr("Axes with the same number are referenced together; lower "
                                  "numbers first"));
-        row.led = new LedIndicator(tr("not referenced"), this);
+        // The lamp alone (its state in the tooltip; the DRO says REFERENCED or UNKNOWN):
+        // "unknown (no link)" beside it pushed the Reference buttons off the dock.
+        row.led = new LedIndicator({}, this);
         row.run = new QPushButton(tr("Reference %1").arg(axisName(axis)), this);
         row.run->setFocusPolicy(Qt::NoFocus);
         connect(row.run, &QPushButton::clicked, this, [this, axis] { referenceAxis(axis); });
@@ -115,7 +120,7 @@ void ReferencePanel::rebuild()
         m_grid->addWidget(name, r, 0);
         m_grid->addWidget(row.direction, r, 1);
         m_grid->addWidget(row.order, r, 2);
-        m_grid->addWidget(row.led, r, 3);
+        m_grid->addWidget(row.led, r, 3, Qt::AlignCenter);
         m_grid->addWidget(row.run, r, 4);
         m_rows.insert(axis, row);
         ++r;
@@ -186,15 +191,16 @@ void ReferencePanel::onStatus(const MachineStatus& status)
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
         const AxisStatus a = status.axes.value(it.key());
         const bool running = m_runner->currentAxes().contains(it.key());
+        LedIndicator* led = it.value().led;
         if (!live) {
-            it.value().led->setState(LedIndicator::State::Unknown);
-            it.value().led->setText(tr("unknown (no link)"));
+            led->setState(LedIndicator::State::Unknown);
+            led->setToolTip(tr("unknown (no link)"));
         } else if (running) {
-            it.value().led->setState(LedIndicator::State::Warning);
-            it.value().led->setText(tr("referencing\u2026"));
+            led->setState(LedIndicator::State::Warning);
+            led->setToolTip(tr("referencing\u2026"));
         } else {
-            it.value().led->setOn(a.referenced);
-            it.value().led->setText(a.referenced ? tr("referenced") : tr("not referenced"));
+            led->setOn(a.referenced);
+            led->setToolTip(a.referenced ? tr("referenced") : tr("not referenced"));
         }
     }
     // "All selected axes are referenced" holds only while they are.

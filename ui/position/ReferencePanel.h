@@ -11,6 +11,7 @@ class QSpinBox;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class LedIndicator;
 class MachineContext;
 class ReferenceRunner;
@@ -56,7 +57,7 @@ private:
     QPushButton* m_all;
     QPushButton* m_cancel;
     QProgressBar* m_progress;
-    QLabel* m_message;
+    ElidedLabel* m_message;
     QList<Axis> m_successAxes; // referenced by the last successful run, still referenced
 };
 

@@ -3,8 +3,8 @@
 #include "main/MachineContext.h"
 #include <QGridLayout>
 #include <QLabel>
-#include <QPushButton>
 #include <QSignalBlocker>
+#include <QToolButton>
 
 namespace stepdeck::ui {
 
@@ -12,26 +12,39 @@ DigitalIoGroup::DigitalIoGroup(MachineContext* context, int inputs, int outputs,
     : QGroupBox(tr("Inputs and outputs"), parent), m_context(context)
 {
     setObjectName(QStringLiteral("digitalIo"));
+    // Four per row under their heading: eight inputs in one row were cut off by a dock at
+    // 1366x768 (issue 16). An output's switch is as wide as its widest text ("7 off"), so a
+    // new state never moves its neighbours.
+    constexpr int kPerRow = 4;
     auto* grid = new QGridLayout(this);
-    grid->addWidget(new QLabel(tr("Inputs:"), this), 0, 0);
+    grid->addWidget(new QLabel(tr("Inputs:"), this), 0, 0, 1, kPerRow);
+    const int inputRows = (inputs + kPerRow - 1) / kPerRow;
     for (int i = 0; i < inputs; ++i) {
         auto* lamp = new LedIndicator(QString::number(i + 1), this);
         lamp->setToolTip(tr("Input %1: level as last read (lit: high)").arg(i + 1));
         m_inputs << lamp;
-        grid->addWidget(lamp, 0, 1 + i);
+        grid->addWidget(lamp, 1 + i / kPerRow, i % kPerRow);
     }
-    grid->addWidget(new QLabel(tr("Outputs:"), this), 1, 0);
+    const int outputsRow = 1 + inputRows;
+    grid->addWidget(new QLabel(tr("Outputs:"), this), outputsRow, 0, 1, kPerRow);
     for (int i = 0; i < outputs; ++i) {
-        auto* button = new QPushButton(this);
+        auto* button = new QToolButton(this);
         button->setCheckable(true);
         button->setFocusPolicy(Qt::NoFocus);
-        button->setMinimumWidth(36);
-        connect(button, &QPushButton::clicked, this, [this, i] { toggle(i + 1); });
+        button->ensurePolished();
+        int width = 0;
+        for (const QString& text :
+             {outputText(i + 1, true), outputText(i + 1, false), outputText(i + 1, std::nullopt)}) {
+            button->setText(text);
+            width = qMax(width, button->sizeHint().width());
+        }
+        button->setFixedWidth(width);
+        connect(button, &QToolButton::clicked, this, [this, i] { toggle(i + 1); });
         m_outputs << button;
         m_known << std::nullopt;
-        grid->addWidget(button, 1, 1 + i);
+        grid->addWidget(button, outputsRow + 1 + i / kPerRow, i % kPerRow);
     }
-    grid->setColumnStretch(qMax(inputs, outputs) + 1, 1);
+    grid->setColumnStretch(kPerRow, 1);
     setStatus(MachineStatus{}, false);
 }
 
@@ -45,13 +58,11 @@ void DigitalIoGroup::setStatus(const MachineStatus& status, bool live)
     }
     for (int i = 0; i < m_outputs.size(); ++i) {
         m_known[i] = i < status.outputs.size() ? status.outputs.at(i) : std::nullopt;
-        QPushButton* b = m_outputs[i];
+        QToolButton* b = m_outputs[i];
         const QSignalBlocker block(b);
         b->setEnabled(live);
         b->setChecked(m_known[i].value_or(false));
-        b->setText(m_known[i]
-                       ? QStringLiteral("%1 %2").arg(i + 1).arg(*m_known[i] ? tr("on") : tr("off"))
-                       : QStringLiteral("%1 ?").arg(i + 1));
+        b->setText(outputText(i + 1, m_known[i]));
         b->setToolTip(m_known[i] ? (*m_known[i] ? tr("Output %1: on; click to switch it off")
                                                 : tr("Output %1: off; click to switch it on"))
                                        .arg(i + 1)
@@ -59,6 +70,12 @@ void DigitalIoGroup::setStatus(const MachineStatus& status, bool live)
                                       "the controller cannot report it); click to switch it on")
                                        .arg(i + 1));
     }
+}
+
+QString DigitalIoGroup::outputText(int number, std::optional<bool> on)
+{
+    return on ? QStringLiteral("%1 %2").arg(number).arg(*on ? tr("on") : tr("off"))
+              : QStringLiteral("%1 ?").arg(number);
 }
 
 void DigitalIoGroup::toggle(int number)

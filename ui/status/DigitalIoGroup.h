@@ -2,7 +2,7 @@
 #include "model/MachineStatus.h"
 #include <QGroupBox>
 
-class QPushButton;
+class QToolButton;
 
 namespace stepdeck::ui {
 
@@ -21,14 +21,15 @@ public:
 
     void setStatus(const MachineStatus& status, bool live);
     LedIndicator* inputLamp(int number) const { return m_inputs.value(number - 1); }
-    QPushButton* outputSwitch(int number) const { return m_outputs.value(number - 1); }
+    QToolButton* outputSwitch(int number) const { return m_outputs.value(number - 1); }
 
 private:
     void toggle(int number);
+    static QString outputText(int number, std::optional<bool> on);
 
     MachineContext* m_context;
     QList<LedIndicator*> m_inputs;
-    QList<QPushButton*> m_outputs;
+    QList<QToolButton*> m_outputs;
     QList<std::optional<bool>> m_known;
 };
 

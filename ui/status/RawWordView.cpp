@@ -1,6 +1,7 @@
 #include "RawWordView.h"
 #include "common/LedIndicator.h"
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 
 namespace stepdeck::ui {
@@ -14,10 +15,13 @@ RawWordView::RawWordView(const StatusWordInfo& info, QWidget* parent)
     mono.setBold(true);
     m_hex->setFont(mono);
     m_hex->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(new QLabel(tr("Raw %1:").arg(info.key), this), 0, 0);
-    layout->addWidget(m_hex, 0, 1);
-    const int columns = 2;
-    int i = 0;
+    // The heading spans the lamp columns: it does not widen the first one.
+    auto* heading = new QHBoxLayout;
+    heading->addWidget(new QLabel(tr("Raw %1:").arg(info.key), this));
+    heading->addWidget(m_hex);
+    heading->addStretch(1);
+    layout->addLayout(heading, 0, 0, 1, 2);
+    m_grid = layout;
     for (const StatusBitInfo& bit : info.bits) {
         auto* lamp = new LedIndicator(bit.name, this);
         lamp->setObjectName(bit.name);
@@ -30,11 +34,50 @@ RawWordView::RawWordView(const StatusWordInfo& info, QWidget* parent)
             lamp->setEnabled(false);
         }
         lamp->setToolTip(tip);
-        layout->addWidget(lamp, 1 + i / columns, i % columns);
         m_lamps.append({bit, lamp});
-        ++i;
     }
+    setColumns(2);
     setValue({});
+}
+
+QSize RawWordView::minimumSizeHint() const
+{
+    const QSize inside = layout()->totalMinimumSize();
+    return QSize(inside.width(), QGroupBox::minimumSizeHint().height());
+}
+
+void RawWordView::resizeEvent(QResizeEvent* event)
+{
+    QGroupBox::resizeEvent(event);
+    // Room for the title: the frame's width less the space around the title (about 3 em).
+    const QString shown = fontMetrics().elidedText(m_info.title, Qt::ElideRight,
+                                                   width() - 3 * fontMetrics().height());
+    if (shown != title()) {
+        setTitle(shown);
+        setToolTip(shown == m_info.title ? QString() : m_info.title);
+    }
+}
+
+void RawWordView::setColumns(int columns)
+{
+    columns = qBound(1, columns, 2);
+    if (columns == m_columns)
+        return;
+    m_columns = columns;
+    for (const auto& entry : std::as_const(m_lamps))
+        m_grid->removeWidget(entry.second);
+    for (int i = 0; i < m_lamps.size(); ++i)
+        m_grid->addWidget(m_lamps.at(i).second, 1 + i / columns, i % columns);
+}
+
+void RawWordView::fitWidth(int room)
+{
+    int cell = 0;
+    for (const auto& entry : std::as_const(m_lamps))
+        cell = qMax(cell, entry.second->sizeHint().width());
+    const QMargins margins = m_grid->contentsMargins();
+    const int inside = room - (width() - contentsRect().width()) - margins.left() - margins.right();
+    setColumns(inside >= 2 * cell + m_grid->horizontalSpacing() ? 2 : 1);
 }
 
 void RawWordView::setValue(const QVariant& value)

@@ -2,6 +2,7 @@
 #include "model/ModelPresentation.h"
 #include <QGroupBox>
 
+class QGridLayout;
 class QLabel;
 
 namespace stepdeck::ui {
@@ -20,10 +21,23 @@ public:
     QString hexText() const;
     LedIndicator* lamp(const QString& bitName) const;
     const StatusWordInfo& info() const { return m_info; }
+    // Two lamp columns if they fit into room pixels (the width the view may take), else one.
+    void fitWidth(int room);
+    int columns() const { return m_columns; }
+
+    // The title does not count: it is elided to the width (full in the tooltip).
+    QSize minimumSizeHint() const override;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void setColumns(int columns);
+
     StatusWordInfo m_info;
     QLabel* m_hex;
+    QGridLayout* m_grid = nullptr;
+    int m_columns = 0;
     QList<QPair<StatusBitInfo, LedIndicator*>> m_lamps;
 };
 

@@ -4,6 +4,7 @@
 #include "main/MachineContext.h"
 #include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"
+#include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
@@ -81,6 +82,9 @@ void StatusPanel::rebuild()
 {
     delete m_content;
     m_machine.clear();
+    m_machineOrder.clear();
+    m_machineGroup = nullptr;
+    m_machineGrid = nullptr;
     m_axes.clear();
     m_words.clear();
     m_genericRaw = nullptr;
@@ -116,15 +120,18 @@ void StatusPanel::rebuild()
     scroll->setWidget(inner);
     m_content = scroll;
     m_body->addWidget(scroll);
+    scroll->viewport()->installEventFilter(this); // machine lamps: two columns if they fit
+    arrangeColumns();
     onStatus(m_context->status());
 }
 
 QWidget* StatusPanel::buildMachineGroup()
 {
     auto* group = new QGroupBox(tr("Machine"));
-    auto* grid = new QGridLayout(group);
+    m_machineGroup = group;
+    m_machineGrid = new QGridLayout(group);
+    m_machineColumns = 0;
     const Capabilities caps = m_context->capabilities();
-    int i = 0;
     for (const FlagText& f : kMachineFlags) {
         const QString key = QString::fromLatin1(f.key);
         if ((key == QLatin1String("startButton") && !caps.startButton) ||
@@ -134,31 +141,64 @@ QWidget* StatusPanel::buildMachineGroup()
         lamp->setToolTip(tr(f.tip));
         lamp->setObjectName(key);
         m_machine.insert(key, lamp);
-        grid->addWidget(lamp, i / 2, i % 2);
-        ++i;
+        m_machineOrder << lamp;
     }
     return group;
 }
 
+void StatusPanel::arrangeColumns()
+{
+    if (!m_content || !m_machineGrid)
+        return;
+    // The room the scroll area offers, not the groups' own widths (which two columns widen).
+    const QMargins inner = m_content->widget()->layout()->contentsMargins();
+    const int room = m_content->viewport()->width() - inner.left() - inner.right();
+    for (RawWordView* view : std::as_const(m_words))
+        view->fitWidth(room);
+    int cell = 0;
+    for (const LedIndicator* lamp : std::as_const(m_machineOrder))
+        cell = qMax(cell, lamp->sizeHint().width());
+    const QMargins grid = m_machineGrid->contentsMargins();
+    const int frame = m_machineGroup->width() - m_machineGroup->contentsRect().width();
+    const int inside = room - frame - grid.left() - grid.right();
+    const int columns = inside >= 2 * cell + m_machineGrid->horizontalSpacing() ? 2 : 1;
+    if (columns == m_machineColumns)
+        return;
+    m_machineColumns = columns;
+    for (LedIndicator* lamp : std::as_const(m_machineOrder))
+        m_machineGrid->removeWidget(lamp);
+    for (int i = 0; i < m_machineOrder.size(); ++i)
+        m_machineGrid->addWidget(m_machineOrder.at(i), i / columns, i % columns);
+}
+
+bool StatusPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    if (m_content && watched == m_content->viewport() && event->type() == QEvent::Resize)
+        arrangeColumns();
+    return QWidget::eventFilter(watched, event);
+}
+
 QWidget* StatusPanel::buildAxesGroup()
 {
+    // One row per flag, one column per axis: as narrow as a dock at 1366x768 allows, in
+    // German too (issue 16: five flag columns were cut off).
     auto* group = new QGroupBox(tr("Axes"));
     auto* grid = new QGridLayout(group);
     int column = 1;
-    for (const FlagText& f : kAxisFlags) {
-        auto* header = new QLabel(tr(f.label), group);
-        header->setToolTip(tr(f.tip));
-        grid->addWidget(header, 0, column++, Qt::AlignCenter);
-    }
-    int row = 1;
     for (Axis axis : m_context->axes()) {
         auto* name = new QLabel(axisName(axis), group);
         QFont bold = name->font();
         bold.setBold(true);
         name->setFont(bold);
-        grid->addWidget(name, row, 0);
+        grid->addWidget(name, 0, column++, Qt::AlignCenter);
+    }
+    int row = 1;
+    for (const FlagText& f : kAxisFlags) {
+        auto* label = new QLabel(tr(f.label), group);
+        label->setToolTip(tr(f.tip));
+        grid->addWidget(label, row, 0);
         column = 1;
-        for (const FlagText& f : kAxisFlags) {
+        for (Axis axis : m_context->axes()) {
             auto* lamp = new LedIndicator({}, group);
             lamp->setToolTip(QStringLiteral("%1: %2").arg(axisName(axis), tr(f.tip)));
             m_axes[axis].insert(QString::fromLatin1(f.key), lamp);
@@ -166,6 +206,7 @@ QWidget* StatusPanel::buildAxesGroup()
         }
         ++row;
     }
+    grid->setColumnStretch(column, 1);
     return group;
 }
 
@@ -185,10 +226,12 @@ QWidget* StatusPanel::buildTemperatureGroup()
     m_temperatureNote = new QLabel(group);
     m_temperatureNote->setWordWrap(true);
     m_counters = new QLabel(group);
+    m_counters->setWordWrap(true); // at the panel's end: wrapping moves nothing below
     m_drives = new QLabel(group);
     m_drives->setWordWrap(true);
     m_firmware = new QLabel(group);
     m_firmware->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_firmware->setWordWrap(true);
     auto* temperatureLabel = new QLabel(tr("Temperature:"), group);
     grid->addWidget(temperatureLabel, 0, 0);
     grid->addWidget(m_temperature, 0, 1);

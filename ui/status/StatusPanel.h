@@ -5,6 +5,7 @@
 class QGridLayout;
 class QLabel;
 class QProgressBar;
+class QScrollArea;
 class QVBoxLayout;
 
 namespace stepdeck::ui {
@@ -35,9 +36,13 @@ public:
     DigitalIoGroup* digitalIo() const { return m_io; } // nullptr: the model has no I/O
     QString firmwareText() const;
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void rebuild();
     QWidget* buildMachineGroup();
+    void arrangeColumns(); // lamps in two columns where they fit, else one
     QWidget* buildAxesGroup();
     QWidget* buildTemperatureGroup();
     void onStatus(const MachineStatus& status);
@@ -45,8 +50,12 @@ private:
 
     MachineContext* m_context;
     QVBoxLayout* m_body;
-    QWidget* m_content = nullptr;
+    QScrollArea* m_content = nullptr;
     QMap<QString, LedIndicator*> m_machine;
+    QList<LedIndicator*> m_machineOrder;
+    QWidget* m_machineGroup = nullptr;
+    QGridLayout* m_machineGrid = nullptr;
+    int m_machineColumns = 0;
     QMap<Axis, QMap<QString, LedIndicator*>> m_axes;
     QList<RawWordView*> m_words;
     QLabel* m_genericRaw = nullptr;

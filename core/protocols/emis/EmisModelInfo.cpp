@@ -5,11 +5,16 @@
 
 namespace stepdeck::emis {
 
+namespace {
+// The registry's display name, shown through QCoreApplication::translate("Models", ...).
+const char* const kDisplayName = QT_TRANSLATE_NOOP("Models", "EMIS SMC-IC4 4-axis controller");
+} // namespace
+
 ModelInfo modelInfo()
 {
     ModelInfo info;
     info.id = QStringLiteral("emis");
-    info.displayName = QStringLiteral("EMIS SMC-IC4 4-axis controller");
+    info.displayName = QString::fromLatin1(kDisplayName);
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();

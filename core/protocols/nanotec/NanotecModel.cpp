@@ -106,11 +106,17 @@ ModelPresentation presentation()
     return p;
 }
 
+namespace {
+// The registry's display name, shown through QCoreApplication::translate("Models", ...).
+const char* const kDisplayName =
+    QT_TRANSLATE_NOOP("Models", "Nanotec SMCI33 / SMCI47-S (RS485 bus)");
+} // namespace
+
 ModelInfo modelInfo()
 {
     ModelInfo info;
     info.id = QStringLiteral("nanotec");
-    info.displayName = QStringLiteral("Nanotec SMCI33 / SMCI47-S (RS485 bus)");
+    info.displayName = QString::fromLatin1(kDisplayName);
     info.line = lineSettings();
     info.capabilities = capabilities(defaultAxisAddresses().keys());
     info.schema = parameterSchema();

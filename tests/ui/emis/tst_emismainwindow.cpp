@@ -20,6 +20,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QToolButton>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -135,7 +136,7 @@ void TestEmisMainWindow::status_inputsFollowBoard_outputsSwitchable()
     m_f->withEmis([](emis::EmisSimulator* s) { s->setInput(6, true); });
     QTRY_COMPARE(io->inputLamp(6)->state(), ui::LedIndicator::State::On);
     QCOMPARE(io->inputLamp(5)->state(), ui::LedIndicator::State::Off);
-    QPushButton* out3 = io->outputSwitch(3);
+    QAbstractButton* out3 = io->outputSwitch(3);
     QVERIFY(out3->text().contains('?'));
     out3->click();
     bool on = false;

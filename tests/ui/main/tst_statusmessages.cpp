@@ -1,5 +1,6 @@
 // The status bar's message line: every message has an owner that clears or replaces it,
-// every message expires, the newest live one is shown, and the history keeps them all.
+// every message expires, the newest live one is shown, and the log keeps them all with their
+// times, bounded.
 #include "main/StatusMessages.h"
 #include <QSignalSpy>
 #include <QtTest>
@@ -14,7 +15,8 @@ private Q_SLOTS:
     void newest_isShown_andOwnerClearsOnlyItsOwn();
     void sameOwner_replaces();
     void message_expires();
-    void history_keepsTheRecentMessages();
+    void log_keepsEveryMessageWithItsTime();
+    void log_isBounded_oldestDropped();
 };
 
 void TestStatusMessages::newest_isShown_andOwnerClearsOnlyItsOwn()
@@ -53,17 +55,39 @@ void TestStatusMessages::message_expires()
     QVERIFY(changed.count() >= 4); // three shows and the expiry
 }
 
-void TestStatusMessages::history_keepsTheRecentMessages()
+void TestStatusMessages::log_keepsEveryMessageWithItsTime()
 {
     StatusMessages m;
-    for (int i = 0; i < StatusMessages::kHistory + 3; ++i)
-        m.show(Owner::General, QStringLiteral("message %1").arg(i));
-    m.clearAll();
+    QSignalSpy logged(&m, &StatusMessages::logged);
+    const QDateTime before = QDateTime::currentDateTime();
+    m.show(Owner::Link, QStringLiteral("link lost"));
+    m.show(Owner::Setup, QStringLiteral("Written: Start speed."), StatusMessages::Severity::Info);
+    m.clearAll(); // the line is empty again; the log is not
     QCOMPARE(m.currentText(), QString());
-    const QStringList history = m.history();
-    QCOMPARE(history.size(), StatusMessages::kHistory);
-    QVERIFY(
-        history.first().endsWith(QStringLiteral("message %1").arg(StatusMessages::kHistory + 2)));
+    QCOMPARE(logged.count(), 2);
+    const QList<StatusMessages::LogEntry>& log = m.log();
+    QCOMPARE(log.size(), 2);
+    QCOMPARE(log.at(0).text, QStringLiteral("link lost"));
+    QCOMPARE(log.at(0).severity, StatusMessages::Severity::Error);
+    QCOMPARE(log.at(1).severity, StatusMessages::Severity::Info);
+    QVERIFY(log.at(0).time >= before && log.at(1).time >= log.at(0).time);
+    QVERIFY(log.at(1).time <= QDateTime::currentDateTime());
+    // Date and time: a log read the next morning still says when.
+    QCOMPARE(StatusMessages::logLine(log.at(0)),
+             log.at(0).time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) +
+                 QStringLiteral("  link lost"));
+}
+
+void TestStatusMessages::log_isBounded_oldestDropped()
+{
+    StatusMessages m;
+    const int total = StatusMessages::kLogLimit + 7;
+    for (int i = 0; i < total; ++i)
+        m.show(Owner::General, QStringLiteral("message %1").arg(i));
+    QCOMPARE(m.log().size(), StatusMessages::kLogLimit);
+    QCOMPARE(m.loggedCount(), quint64(total));
+    QCOMPARE(m.log().constFirst().text, QStringLiteral("message 7"));
+    QCOMPARE(m.log().constLast().text, QStringLiteral("message %1").arg(total - 1));
 }
 
 QTEST_MAIN(TestStatusMessages)
