@@ -143,6 +143,28 @@ bool parseAddresses(const QString& option, const QString& text, QList<int>* out,
     return true;
 }
 
+// nanotec: --no-encoder LIST, --calibration-ms MS; *matched tells whether name was one.
+bool parseNanotecOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
+                        bool* matched, QString* error)
+{
+    *matched = name == QLatin1String("--no-encoder") || name == QLatin1String("--calibration-ms");
+    QString value;
+    if (!*matched)
+        return true;
+    if (!takeValue(args, i, &value, error))
+        return false;
+    if (name == QLatin1String("--no-encoder"))
+        return parseAddresses(name, value, &s->noEncoder, error);
+    int ms = 0;
+    if (numbers::parseInt(value, 20, 3600000, &ms) != NumberError::None) {
+        *error = SimText::tr("--calibration-ms expects milliseconds from 20 to 3600000, got '%1'")
+                     .arg(value);
+        return false;
+    }
+    s->calibrationMs = ms;
+    return true;
+}
+
 bool parseSpeed(const QString& text, std::optional<double>* speed, QString* error)
 {
     double value = 0;
@@ -164,9 +186,11 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         const QString name = optionName(args.at(i));
         QString value;
         bool fault = false;
-        if (!parseFaultOption(name, args, &i, &s, &fault, error))
+        bool nanotecOption = false;
+        if (!parseFaultOption(name, args, &i, &s, &fault, error) ||
+            !parseNanotecOption(name, args, &i, &s, &nanotecOption, error))
             return false;
-        if (fault)
+        if (fault || nanotecOption)
             continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
@@ -214,21 +238,6 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--speed")) {
             if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.speed, error))
                 return false;
-        } else if (name == QLatin1String("--no-encoder")) {
-            if (!takeValue(args, &i, &value, error) ||
-                !parseAddresses(name, value, &s.noEncoder, error))
-                return false;
-        } else if (name == QLatin1String("--calibration-ms")) {
-            int ms = 0;
-            if (!takeValue(args, &i, &value, error))
-                return false;
-            if (numbers::parseInt(value, 20, 3600000, &ms) != NumberError::None) {
-                *error = SimText::tr("--calibration-ms expects milliseconds from 20 to 3600000, "
-                                     "got '%1'")
-                             .arg(value);
-                return false;
-            }
-            s.calibrationMs = ms;
         } else if (name == QLatin1String("--silent")) {
             s.silent = true;
         } else if (name == QLatin1String("--garbage")) {

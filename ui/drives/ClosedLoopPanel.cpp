@@ -68,6 +68,13 @@ ClosedLoopPanel::ClosedLoopPanel(MachineContext* context, QWidget* parent)
     m_progress->setValue(0);
     m_progress->setTextVisible(false);
     m_progress->setMaximumHeight(m_progress->fontMetrics().height());
+    buildLayout();
+    connectParts();
+    onModelChanged();
+}
+
+void ClosedLoopPanel::buildLayout()
+{
     auto* grid = new QGridLayout(this);
     grid->addWidget(new QLabel(tr("Drive:"), this), 0, 0);
     grid->addWidget(m_axis, 0, 1);
@@ -87,7 +94,10 @@ ClosedLoopPanel::ClosedLoopPanel(MachineContext* context, QWidget* parent)
     grid->addWidget(m_resetError, 6, 0, 1, 2);
     grid->addWidget(m_message, 6, 2, 1, 2);
     grid->setColumnStretch(2, 1);
+}
 
+void ClosedLoopPanel::connectParts()
+{
     m_poll.setInterval(kPollMs);
     connect(&m_poll, &QTimer::timeout, this, &ClosedLoopPanel::pollState);
     ControllerSession* session = m_context->session();
@@ -104,7 +114,6 @@ ClosedLoopPanel::ClosedLoopPanel(MachineContext* context, QWidget* parent)
     connect(m_enable, &QPushButton::clicked, this, &ClosedLoopPanel::askEnable);
     connect(m_disable, &QPushButton::clicked, this, &ClosedLoopPanel::disable);
     connect(m_resetError, &QPushButton::clicked, this, &ClosedLoopPanel::resetError);
-    onModelChanged();
 }
 
 QString ClosedLoopPanel::motorDataText() const

@@ -60,6 +60,8 @@ public Q_SLOTS:
 
 private:
     enum class Step { None, Check, Calibrate, Reference, Enable, Disable, ResetError };
+    void buildLayout();
+    void connectParts();
     void confirmThen(const QString& title, const QString& text, std::function<void()> go);
     void send(Step step, const QString& operation, const QVariantMap& extra = {});
     void onResult(const CommandResult& result);
