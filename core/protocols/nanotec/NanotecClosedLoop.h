@@ -61,7 +61,8 @@ private:
         qint64 restoreMode = 1;
         qint64 position = 0;
         std::optional<qint64> encoder;
-        bool ended = false; // the drive said ready; its result is being read
+        bool ended = false;   // the drive said ready; its result is being read
+        bool sawBusy = false; // a status word of the run showed the drive busy
     };
     struct Memory // what this connection saw of one drive
     {

@@ -56,8 +56,9 @@ void NanotecClosedLoop::begin(RequestId id, Axis axis, Kind kind, qint64 previou
     m_memory[axis].enabled.reset(); // what the drive does with closed loop meanwhile is its own
     m_ctl->updateStatus();
     m_ctl->publishStatus();
+    // The first look right after 'A': a run that turns the motor is busy then.
     const quint64 generation = run.generation;
-    QTimer::singleShot(kMonitorMs, this, [this, axis, generation] { monitor(axis, generation); });
+    QTimer::singleShot(0, this, [this, axis, generation] { monitor(axis, generation); });
 }
 
 void NanotecClosedLoop::monitor(Axis axis, quint64 generation)
@@ -100,9 +101,10 @@ void NanotecClosedLoop::monitor(Axis axis, quint64 generation)
 
 void NanotecClosedLoop::onMonitored(Axis axis, quint64 generation, qint64 word)
 {
-    const Run& run = m_runs[axis];
+    Run& run = m_runs[axis];
     if (word >= 0 && decodeStatus(word).ready)
         return readResult(axis, generation, decodeStatus(word).positionError);
+    run.sawBusy = run.sawBusy || word >= 0;
     if (!m_ctl->m_drives[axis].responding) {
         // Letting go of a motion: its stop first (safety contract), answered or not.
         memoryOf(axis, run.kind) = cl::kResultAborted;
@@ -158,7 +160,16 @@ void NanotecClosedLoop::readResult(Axis axis, quint64 generation, bool failed)
                           {cl::kPosition, run.position}};
         if (run.encoder)
             value.insert(cl::kEncoderPosition, *run.encoder);
-        memoryOf(axis, run.kind) = failed ? cl::kResultFailed : cl::kResultDone;
+        // A calibration turns the motor for a while: a drive ready at the first look right
+        // after 'A' did not run it (a firmware without mode 101?) -- not claimed as done.
+        const bool unconfirmed = !failed && run.kind == Kind::Calibration && !run.sawBusy;
+        memoryOf(axis, run.kind) = failed || unconfirmed ? cl::kResultFailed : cl::kResultDone;
+        if (unconfirmed) {
+            return endRun(axis, ErrorKind::VerifyFailed,
+                          tr("%1 was ready again at the first status read after 'A': that the "
+                             "%2 ran is not confirmed")
+                              .arg(m_ctl->driveName(axis), runName(run.kind)));
+        }
         if (!failed)
             return endRun(axis, ErrorKind::None, {}, value);
         endRun(axis, ErrorKind::Nak, failureText(axis, run.kind, int(*code)));

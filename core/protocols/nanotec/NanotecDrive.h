@@ -63,6 +63,8 @@ public:
         int garble = 0;            // the next N replies get a byte destroyed
         int wrongAddress = 0;      // the next N replies carry another address
         int wrongAddressValue = 0; // 0: address + 1
+        // Keeps '!101' / '!8' but does not run them on 'A' (a firmware without closed loop).
+        bool closedLoopRunsIgnored = false;
     };
     Faults faults;
 

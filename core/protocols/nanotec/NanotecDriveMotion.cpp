@@ -82,6 +82,9 @@ void NanotecDrive::start()
 {
     if (!ready())
         return; // a run is in progress
+    const qint64 mode = m_params.value('!');
+    if (faults.closedLoopRunsIgnored && (mode == 8 || mode == 101))
+        return;
     m_runsDone = 0;
     startRun();
 }

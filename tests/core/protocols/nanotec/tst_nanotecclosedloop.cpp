@@ -22,6 +22,7 @@ private Q_SLOTS:
     void check_wrongMotorData_namedAndRunsRefused();
     void calibrate_progressVisible_resultReadBack_modeRestored();
     void calibrate_withoutEncoder_failsNamingTheDrivesError();
+    void calibrate_neverSeenBusy_notClaimedAsDone();
     void stop_duringCalibration_driveStandsStill_requestAborted_data();
     void stop_duringCalibration_driveStandsStill_requestAborted();
     void linkLoss_duringCalibration_stopReachesDrive();
@@ -157,6 +158,17 @@ void TestNanotecClosedLoop::calibrate_withoutEncoder_failsNamingTheDrivesError()
     QCOMPARE(m_rig->sim->drive(1)->value('!'), qint64(1));
     QCOMPARE(state().value(cl::kCalibration).toString(), QString(cl::kResultFailed));
     QVERIFY(m_rig->sim->standingStill());
+}
+
+void TestNanotecClosedLoop::calibrate_neverSeenBusy_notClaimedAsDone()
+{
+    // A drive that keeps '!101' but does not run it on 'A': ready at once, nothing proves
+    // that a calibration ran.
+    m_rig->sim->drive(1)->faults.closedLoopRunsIgnored = true;
+    const CommandResult r = operation(cl::kCalibrate);
+    QCOMPARE(r.error, ErrorKind::VerifyFailed);
+    QVERIFY2(r.message.contains("not confirmed"), qPrintable(r.message));
+    QCOMPARE(state().value(cl::kCalibration).toString(), QString(cl::kResultFailed));
 }
 
 void TestNanotecClosedLoop::stop_duringCalibration_driveStandsStill_requestAborted_data()
