@@ -71,4 +71,9 @@ Outcome cmdOutput(CliContext& c, QStringList args);
 Outcome cmdProgram(CliContext& c, QStringList args);
 Outcome cmdLaserBridge(CliContext& c, QStringList args); // CliBridgeCommand.cpp
 
+// The closed-loop workflow of encoder drives (CliClosedLoopCommands.cpp, model/ClosedLoop.h).
+Outcome cmdClosedLoop(CliContext& c, QStringList args); // check, on, off, reset-error
+Outcome cmdCalibrate(CliContext& c, QStringList args);
+Outcome homeClosedLoop(CliContext& c, const QStringList& args); // `home --closed-loop`
+
 } // namespace stepdeck::cli

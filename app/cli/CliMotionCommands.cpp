@@ -239,6 +239,8 @@ Outcome cmdFeed(CliContext& c, QStringList args)
 
 Outcome cmdHome(CliContext& c, QStringList args)
 {
+    if (c.options.flag("closed-loop")) // the closed-loop reference run (manual 8.1)
+        return homeClosedLoop(c, args);
     // --simultaneous: every named axis at once (EMIS "$Hxy,a", manual 9.9).
     const bool simultaneous = c.options.flag("simultaneous");
     const auto directionsValid = [simultaneous](const AxisVector& directions) {

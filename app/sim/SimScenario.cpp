@@ -4,6 +4,7 @@
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
 #include "protocols/laser/LaserAxisSimulator.h"
+#include "protocols/nanotec/NanotecSimulator.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
 #include <QtMath>
@@ -128,6 +129,42 @@ bool parseFaultOption(const QString& name, const QStringList& args, int* i, SimS
     return true;
 }
 
+// "1,3": bus addresses (--no-encoder).
+bool parseAddresses(const QString& option, const QString& text, QList<int>* out, QString* error)
+{
+    for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        int address = 0;
+        if (numbers::parseInt(part, 1, 254, &address) != NumberError::None) {
+            *error = SimText::tr("%1 expects bus addresses like 1,3, got '%2'").arg(option, text);
+            return false;
+        }
+        *out << address;
+    }
+    return true;
+}
+
+// nanotec: --no-encoder LIST, --calibration-ms MS; *matched tells whether name was one.
+bool parseNanotecOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
+                        bool* matched, QString* error)
+{
+    *matched = name == QLatin1String("--no-encoder") || name == QLatin1String("--calibration-ms");
+    QString value;
+    if (!*matched)
+        return true;
+    if (!takeValue(args, i, &value, error))
+        return false;
+    if (name == QLatin1String("--no-encoder"))
+        return parseAddresses(name, value, &s->noEncoder, error);
+    int ms = 0;
+    if (numbers::parseInt(value, 20, 3600000, &ms) != NumberError::None) {
+        *error = SimText::tr("--calibration-ms expects milliseconds from 20 to 3600000, got '%1'")
+                     .arg(value);
+        return false;
+    }
+    s->calibrationMs = ms;
+    return true;
+}
+
 bool parseSpeed(const QString& text, std::optional<double>* speed, QString* error)
 {
     double value = 0;
@@ -149,9 +186,11 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         const QString name = optionName(args.at(i));
         QString value;
         bool fault = false;
-        if (!parseFaultOption(name, args, &i, &s, &fault, error))
+        bool nanotecOption = false;
+        if (!parseFaultOption(name, args, &i, &s, &fault, error) ||
+            !parseNanotecOption(name, args, &i, &s, &nanotecOption, error))
             return false;
-        if (fault)
+        if (fault || nanotecOption)
             continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
@@ -234,6 +273,11 @@ QString simUsage()
         "                     from the reference switch; laser-axis: units from the\n"
         "                     home switch)\n"
         "\n"
+        "nanotec only (closed loop, manual 8.1):\n"
+        "  --no-encoder LIST  drives (addresses) without encoder: their calibration and\n"
+        "                     closed-loop reference runs fail with a position error\n"
+        "  --calibration-ms MS  how long a calibration run (!101) takes (default 5000)\n"
+        "\n"
         "laser-axis only:\n"
         "  --speed UNITS      axis speed in position units per second (default 10000)\n"
         "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
@@ -300,10 +344,33 @@ bool applyLaserScenario(const SimScenario& scenario, laser::LaserAxisSimulator* 
     sim->setGarbageBeforeStatus(scenario.garbage);
     return true;
 }
+// nanotec: drives without encoder and the duration of a calibration run (manual 8.1).
+bool applyNanotecOptions(const SimScenario& scenario, Simulator* simulator, QString* error)
+{
+    auto* nanotecSim = qobject_cast<nanotec::NanotecSimulator*>(simulator);
+    if (!nanotecSim && (!scenario.noEncoder.isEmpty() || scenario.calibrationMs)) {
+        *error = SimText::tr("--no-encoder and --calibration-ms are only supported for model "
+                             "nanotec");
+        return false;
+    }
+    if (nanotecSim && scenario.calibrationMs)
+        nanotecSim->setCalibrationMs(*scenario.calibrationMs);
+    for (int address : scenario.noEncoder) {
+        if (!nanotecSim->drive(address)) {
+            *error =
+                SimText::tr("--no-encoder: no drive at address %1 (see --drives)").arg(address);
+            return false;
+        }
+        nanotecSim->setEncoderConnected(address, false);
+    }
+    return true;
+}
 } // namespace
 
 bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
 {
+    if (!applyNanotecOptions(scenario, simulator, error))
+        return false;
     if (auto* emisSim = qobject_cast<emis::EmisSimulator*>(simulator))
         return applyEmisScenario(scenario, emisSim, error);
     if (auto* laserSim = qobject_cast<laser::LaserAxisSimulator*>(simulator))

@@ -43,6 +43,9 @@ struct SimScenario
     QMap<Axis, qint64> endSwitches;
     bool silent = false;
     bool garbage = false;
+    // nanotec: drives without encoder, duration of a calibration run (manual 8.1)
+    QList<int> noEncoder;
+    std::optional<int> calibrationMs;
     bool help = false;
     bool version = false;
 };

@@ -31,9 +31,12 @@ struct Capabilities
     // says so permanently next to STOP/PANIC, and jog is built so that every chunk ends by itself.
     bool stopCommand = true;
     bool panic = true;
-    bool resetLine = false;     // hardware reset via a modem line (E-LAB: RTS)
-    bool multiDrive = false;    // several addressed drives on one link (Nanotec)
-    bool records = false;       // stored records and error memory as model operations (Nanotec)
+    bool resetLine = false;  // hardware reset via a modem line (E-LAB: RTS)
+    bool multiDrive = false; // several addressed drives on one link (Nanotec)
+    bool records = false;    // stored records and error memory as model operations (Nanotec)
+    // The closed-loop commissioning workflow as model operations (model/ClosedLoop.h): motor
+    // data check, calibration run, closed-loop reference run, enable (Nanotec manual 8.1).
+    bool closedLoop = false;
     bool hostRampedJog = false; // the host must ramp jog rates itself (E-LAB manual, jog mode)
     // Digital inputs and outputs of the controller itself (EMIS SMC-IC4: 8 inputs, 7 outputs).
     // Their levels come in MachineStatus::inputs / outputs; an output is switched with

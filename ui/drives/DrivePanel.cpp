@@ -1,4 +1,5 @@
 #include "DrivePanel.h"
+#include "ClosedLoopPanel.h"
 #include "main/MachineContext.h"
 #include <QHeaderView>
 #include <QLabel>
@@ -34,6 +35,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
       m_drives(makeTable({tr("Address"), tr("Axes"), tr("Responding"), tr("Firmware"), tr("State")},
                          this)),
       m_found(makeTable({tr("Address"), tr("Hardware"), tr("Firmware"), tr("Date")}, this)),
+      m_closedLoop(new ClosedLoopPanel(context, this)),
       m_scan(new QPushButton(tr("Scan bus"), this)),
       m_cancelScan(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
       m_scanState(new QLabel(this))
@@ -46,6 +48,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     auto* v = new QVBoxLayout(this);
     v->addWidget(new QLabel(tr("Drives of this machine"), this));
     v->addWidget(m_drives, 2);
+    v->addWidget(m_closedLoop);
     auto* row = new QHBoxLayout;
     row->addWidget(m_scan);
     row->addWidget(m_cancelScan);

@@ -11,6 +11,7 @@ class QTableWidget;
 
 namespace stepdeck::ui {
 
+class ClosedLoopPanel;
 class MachineContext;
 
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
@@ -29,6 +30,8 @@ public:
 
     QTableWidget* driveTable() const { return m_drives; }
     QTableWidget* foundTable() const { return m_found; }
+    // Commissioning of closed loop (models with Capabilities::closedLoop; hidden otherwise).
+    ClosedLoopPanel* closedLoopPanel() const { return m_closedLoop; }
     static constexpr int kScanChunk = 16;
 
     QPushButton* scanButton() const { return m_scan; }
@@ -57,6 +60,7 @@ private:
     MachineContext* m_context;
     QTableWidget* m_drives;
     QTableWidget* m_found;
+    ClosedLoopPanel* m_closedLoop;
     QPushButton* m_scan;
     QPushButton* m_cancelScan;
     QProgressBar* m_progress;

@@ -1,6 +1,7 @@
 // Link, drive initialisation, status sweeps and the normalised status of a Nanotec bus.
 #include "NanotecController.h"
 #include "Logging.h"
+#include "NanotecClosedLoop.h"
 #include "NanotecModel.h"
 #include "transport/Transport.h"
 #include <QtMath>
@@ -29,6 +30,7 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
         mutableStatus().axes.insert(it.key(), AxisStatus{});
     }
     m_bus = new NanotecBus(transport, this);
+    m_closedLoop = new NanotecClosedLoop(this);
     m_bus->setDefaultTimeout(options.commandTimeoutMs);
     connect(m_bus, &NanotecBus::unsolicited, this, &NanotecController::onUnsolicited);
     connect(m_bus, &NanotecBus::garbage, this, [this] { ++mutableStatus().resyncCount; });

@@ -6,6 +6,8 @@
 
 namespace stepdeck::nanotec {
 
+class NanotecClosedLoop;
+
 // Adapter for a bus of Nanotec SMCI33 / SMCI47-S drives: one drive per axis, each at its
 // RS485 address (ControllerOptions::axisAddresses; default X=1, Y=2, Z=3), all behind one
 // half-duplex link run by NanotecBus.
@@ -28,9 +30,13 @@ namespace stepdeck::nanotec {
 //   "trigger"            {axis}    'T' (7.8), flag positioning mode
 //   "speed-step"         {axis, up=true}  '+' / '-' (7.6, 7.7), speed mode
 //   "reference"          {axes{X:-1,...}, type="external"|"internal"} (6.6 p4 / p3)
+//   the closed-loop workflow of model/ClosedLoop.h (manual 8.1), run by NanotecClosedLoop
 class NanotecController : public Controller
 {
     Q_OBJECT
+    // Drives calibration and closed-loop reference runs through the exchange steps below.
+    friend class NanotecClosedLoop;
+
 public:
     NanotecController(Transport* transport, const ControllerOptions& options,
                       QObject* parent = nullptr);
@@ -178,6 +184,7 @@ private:
     Step readRecordStep(Axis axis, int record, std::shared_ptr<QVariantMap> out);
 
     NanotecBus* m_bus = nullptr;
+    NanotecClosedLoop* m_closedLoop = nullptr; // child
     StatusPoller m_poller{this};
     QMap<Axis, Drive> m_drives;
     RequestId m_pendingOpen = 0;

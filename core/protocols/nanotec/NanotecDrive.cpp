@@ -182,7 +182,9 @@ NanotecDrive::Answer NanotecDrive::handleLong(const QByteArray& body)
     if (key == "CL_ramp_mode")
         valid = inRange(v, 0, 1);
     else if (key == "CL_enable")
-        valid = v == 0; // 8.1: '1' needs the special reference run '!8' since power-on
+        // 8.1: '1' needs the special reference run '!8' since power-on (and the calibration run
+        // '!101' for this motor); without them it is ignored.
+        valid = v == 0 || (v == 1 && m_closedLoop.acceptsEnable());
     else if (key == "CL_position_window" || key == "CL_following_error_window" ||
              key == "CL_rotenc_inc" || key == "CL_rotenc_rev")
         valid = inRange(v, 0, 4294967295LL);
@@ -253,7 +255,9 @@ bool NanotecDrive::validSetting(char cmd, qint64 v) const
     case 'm':
         return inRange(v, kMinAddress, kMaxAddress);
     case '!':
-        return inRange(v, 1, 6) && ready(); // no mode change during a run
+        // 5.5 lists modes 1..6 (its "1 bis 5" contradicts its own list); 8.1 adds mode 8, the
+        // closed-loop reference run, and 101, the calibration run. No change during a run.
+        return (inRange(v, 1, 6) || v == 8 || v == 101) && ready();
     case 'l':
         return onlyBits(v, 0xFFFF) && exactlyOne(v, 0x0003) && exactlyOne(v, 0x003C) &&
                exactlyOne(v, 0x0600) && exactlyOne(v, 0x7800);
@@ -360,7 +364,10 @@ quint8 NanotecDrive::statusWord() const
     s.ready = ready();
     s.zeroReached = position() == 0;
     s.positionError = m_positionError;
-    s.mode = int(m_params.value('!'));
+    // Bits 4-6 hold modes 0..7 (5.21); the closed-loop runs 8 and 101 do not fit, so they
+    // read as 0 "unbenutzt" (our reading: the manual says nothing about them there).
+    const qint64 mode = m_params.value('!');
+    s.mode = mode >= 1 && mode <= 6 ? int(mode) : 0;
     return encodeStatus(s);
 }
 

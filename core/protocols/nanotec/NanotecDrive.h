@@ -1,5 +1,6 @@
 #pragma once
 #include "NanotecCodec.h"
+#include "NanotecDriveClosedLoop.h"
 #include <QByteArray>
 #include <QList>
 #include <QMap>
@@ -33,7 +34,11 @@ public:
     qint64 value(char cmd) const { return m_params.value(cmd); }
     qint64 longValue(const QByteArray& keyword) const { return m_long.value(keyword); }
     qint64 position() const { return qRound64(m_count); }
-    qint64 encoderPosition() const { return qRound64(m_physical - m_encoderOffset); }
+    qint64 encoderPosition() const
+    {
+        return m_closedLoop.encoderConnected() ? qRound64(m_physical - m_encoderOffset)
+                                               : m_closedLoop.frozenEncoder();
+    }
     double physicalPosition() const { return m_physical; }
     double speed() const { return m_speed * m_dir; } // signed steps/s
     quint8 statusWord() const;
@@ -44,6 +49,13 @@ public:
     void pushError(int code); // error memory (5.15)
     int lastErrorSlot() const { return m_lastSlot; }
     bool answersDisabled() const { return m_silentMode; } // after '|0' (6.4)
+    // Encoder, calibration (!101) and closed-loop reference run (!8) of manual 8.1.
+    const DriveClosedLoop& closedLoop() const { return m_closedLoop; }
+    void setEncoderConnected(bool connected)
+    {
+        m_closedLoop.setEncoderConnected(connected, encoderPosition());
+    }
+    void setCalibrationMs(int ms) { m_closedLoop.setCalibrationMs(ms); }
 
     struct Faults
     {
@@ -51,11 +63,13 @@ public:
         int garble = 0;            // the next N replies get a byte destroyed
         int wrongAddress = 0;      // the next N replies carry another address
         int wrongAddressValue = 0; // 0: address + 1
+        // Keeps '!101' / '!8' but does not run them on 'A' (a firmware without closed loop).
+        bool closedLoopRunsIgnored = false;
     };
     Faults faults;
 
 private:
-    enum class Run { Idle, Position, Speed, Flag, RefSeek, RefFree, FreeTravel };
+    enum class Run { Idle, Position, Speed, Flag, RefSeek, RefFree, FreeTravel, ClosedLoop };
 
     Answer handleLong(const QByteArray& body);
     Answer handleRead(const QByteArray& body);
@@ -76,6 +90,8 @@ private:
     bool atIndexMark() const;
     int switchBehaviour(bool external, bool reference) const; // bit index in 'l', -1 invalid
     void moveBy(double steps);
+    void startClosedLoopRun(qint64 mode); // !101 / !8 (NanotecDriveClosedLoop.h)
+    void stepClosedLoop(double dt);
     int freeDirection(int behaviour) const; // 0 forward, 1 backward -> +1/-1
 
     int m_address;
@@ -86,6 +102,7 @@ private:
     int m_lastSlot = 0;
     bool m_silentMode = false;
     bool m_positionError = false;
+    DriveClosedLoop m_closedLoop;
 
     // motion
     Run m_run = Run::Idle;

@@ -43,6 +43,8 @@ qint64 NanotecDrive::stepsPerRevolution() const
 
 bool NanotecDrive::atIndexMark() const
 {
+    if (!m_closedLoop.encoderConnected())
+        return false; // the index mark is the encoder's (5.30 bit 6)
     const double rev = double(stepsPerRevolution());
     return qAbs(m_physical - qRound64(m_physical / rev) * rev) < 0.5;
 }
@@ -80,6 +82,9 @@ void NanotecDrive::start()
 {
     if (!ready())
         return; // a run is in progress
+    const qint64 mode = m_params.value('!');
+    if (faults.closedLoopRunsIgnored && (mode == 8 || mode == 101))
+        return;
     m_runsDone = 0;
     startRun();
 }
@@ -96,6 +101,8 @@ void NanotecDrive::startRun()
     m_topSpeed = double(m_params.value('o'));
     m_lastPhysical = m_physical;
     m_wasSwitch = externalSwitchActuated();
+    if (mode == 8 || mode == 101)
+        return startClosedLoopRun(mode);
     if (m_reference && mode >= 1 && mode <= 4) {
         m_run = Run::RefSeek;
         if (m_internalRef)
@@ -137,6 +144,7 @@ void NanotecDrive::stopNow()
     if (m_run != Run::Idle && m_speed > u * 1.05)
         m_physical += m_dir * (qRound((m_speed - u) / 200.0) + 1);
     m_restartAfterHold = false;
+    m_closedLoop.interrupt();
     finishRun(false);
     m_holdMs = 0; // 'S' brings the drive to ready at once
 }
@@ -251,6 +259,9 @@ QList<QByteArray> NanotecDrive::advance(double dt)
         break;
     case Run::Speed:
         stepSpeed(dt);
+        break;
+    case Run::ClosedLoop:
+        stepClosedLoop(dt);
         break;
     case Run::Flag:
         if (m_flagTriggered) {

@@ -32,6 +32,8 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.panic = true; // '#*S' to every drive at once
     caps.multiDrive = true;
     caps.records = true; // "read-all-records", "write-record", ... (section 4, 5.15)
+    // Calibration and closed-loop reference runs, closed loop on/off (8.1, NanotecClosedLoop).
+    caps.closedLoop = true;
     // Speed mode ramps speed and direction changes itself (6.6, !2 p1): the host ramp only
     // passes the targets through.
     caps.hostRampedJog = false;

@@ -1,5 +1,6 @@
 // Step sequencing on the bus, console, bus scan, refresh and the model-specific operations.
 #include "Logging.h"
+#include "NanotecClosedLoop.h"
 #include "NanotecController.h"
 #include "NanotecModel.h"
 #include "transport/Transport.h"
@@ -345,6 +346,8 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
     if (!d)
         return;
     const Axis axis = d->axis;
+    if (NanotecClosedLoop::isOperation(name))
+        return m_closedLoop->operation(id, name, axis, args);
     const int record = intArg("record", 0);
     auto simple = [&](const QByteArray& body, bool needsReady) {
         if (needsReady) {

@@ -57,11 +57,16 @@ void motor(Builder& b)
          {QT_TRANSLATE_NOOP("Parameters", "flag-positioning"), 3},
          {QT_TRANSLATE_NOOP("Parameters", "clock-direction"), 4},
          {QT_TRANSLATE_NOOP("Parameters", "analog"), 5},
-         {QT_TRANSLATE_NOOP("Parameters", "joystick"), 6}},
+         {QT_TRANSLATE_NOOP("Parameters", "joystick"), 6},
+         // 8.1: the closed-loop reference run and the calibration run are modes as well.
+         {QT_TRANSLATE_NOOP("Parameters", "closed-loop-reference"), 8},
+         {QT_TRANSLATE_NOOP("Parameters", "calibration"), 101}},
         "positioning",
         QT_TRANSLATE_NOOP(
             "Parameters",
-            "Operating mode (5.5). Moves, jog and reference runs switch the mode themselves."));
+            "Operating mode (5.5, 8.1). Moves, jog and reference runs switch the mode themselves; "
+            "the closed-loop workflow runs calibration and closed-loop-reference and sets the "
+            "mode of before again afterwards."));
     ParamDef& addr =
         b.add("motor-address", QT_TRANSLATE_NOOP("Parameters", "Motor address"), "m", 1, 254, "", 1,
               QT_TRANSLATE_NOOP("Parameters", "RS485 bus address of the drive (5.4)"));

@@ -62,6 +62,18 @@ void NanotecSimulator::replyFromWrongAddress(int address, int count, int wrongAd
     }
 }
 
+void NanotecSimulator::setEncoderConnected(int address, bool connected)
+{
+    if (NanotecDrive* d = drive(address))
+        d->setEncoderConnected(connected);
+}
+
+void NanotecSimulator::setCalibrationMs(int ms)
+{
+    for (const auto& d : m_drives)
+        d->setCalibrationMs(ms);
+}
+
 void NanotecSimulator::receive(const QByteArray& bytes)
 {
     for (const Command& c : m_decoder.feed(bytes)) {

@@ -41,6 +41,10 @@ public:
     void setDriveSilent(int address, bool silent);
     void garbleReplies(int address, int count);
     void replyFromWrongAddress(int address, int count, int wrongAddress = 0);
+    // Closed loop (manual 8.1, NanotecDriveClosedLoop.h): an unplugged encoder makes the
+    // calibration and closed-loop reference runs fail; how long a calibration run takes.
+    void setEncoderConnected(int address, bool connected);
+    void setCalibrationMs(int ms); // every drive on the bus
 
 private:
     void execute(const Command& command);

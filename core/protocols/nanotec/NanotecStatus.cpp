@@ -1,6 +1,7 @@
 // Status sweeps ('$', 'C' and now and then 'ZY' per drive), the auto status 'j' (5.31),
 // silent drives and the normalised MachineStatus of a Nanotec bus.
 #include "Logging.h"
+#include "NanotecClosedLoop.h"
 #include "NanotecController.h"
 
 namespace stepdeck::nanotec {
@@ -173,6 +174,8 @@ void NanotecController::updateStatus()
         ds.detail = !d.responding ? tr("not answering")
                     : d.status    ? describeStatus(*d.status)
                                   : tr("no status yet");
+        if (const QString run = m_closedLoop->runDetail(d.axis); !run.isEmpty() && d.responding)
+            ds.detail = run + QStringLiteral("; ") + ds.detail; // mode 8/101 fit no status bits
         st.drives << ds;
         silent = silent || !d.responding;
         responding = responding || d.responding;

@@ -1,6 +1,7 @@
 // Stop and panic on a Nanotec bus: 'S' has no ramp (6.2), so speed-mode runs are lowered to
 // the start frequency first; panic is one '#*S' to every drive (1.1), confirmed per drive.
 #include "Logging.h"
+#include "NanotecClosedLoop.h"
 #include "NanotecController.h"
 #include "transport/Transport.h"
 
@@ -94,6 +95,7 @@ void NanotecController::abortHostSide(ErrorKind kind, const QString& message)
     m_poller.stop();
     m_bus->cancelAll();
     haltJogImmediately();
+    m_closedLoop->abortAll(kind, message);
     for (Drive& d : m_drives) {
         d.jogDesired = 0;
         d.jog = Jog::Idle;
@@ -131,6 +133,7 @@ void NanotecController::stop(RequestId id)
     for (Axis a : speedMode)
         speeds[a] = qAbs(m_drives[a].jogApplied);
     m_bus->cancelAll();
+    m_closedLoop->abortAll(ErrorKind::Cancelled, tr("stopped"));
     const auto urgent = NanotecBus::Priority::Urgent;
     QList<Step> steps;
     int wait = 0;
@@ -181,6 +184,7 @@ void NanotecController::panic(RequestId id)
     m_bus->cancelAll();
     m_bus->discardOutput(); // the stop must not wait behind queued bytes
     m_panic = true;
+    m_closedLoop->abortAll(ErrorKind::Cancelled, tr("emergency stop"));
     markAllUnreferenced();
     QList<Axis> restore;
     for (Drive& d : m_drives) {
