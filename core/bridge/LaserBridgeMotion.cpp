@@ -52,7 +52,7 @@ void LaserBridge::dispatch(Slot& slot)
 
 void LaserBridge::startReference(Slot& slot)
 {
-    const int direction = m_config.homeDirection(slot.axis);
+    const int direction = m_config.referenceRequest(slot.axis, m_caps);
     if (slot.wanted->command == Command::Move) {
         log(LogEntry::Kind::Note, tr("axis %1 not referenced since the bridge started: "
                                      "referencing it first")

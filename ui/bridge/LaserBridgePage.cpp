@@ -134,9 +134,7 @@ QWidget* LaserBridgePage::buildForm()
     int row = 1;
     for (Axis laserAxis : kLaserAxes) {
         auto* map = new QComboBox(box);
-        auto* home = new QComboBox(box);
-        home->addItem(tr("negative (-1)"), -1);
-        home->addItem(tr("positive (+1)"), 1);
+        auto* home = new QComboBox(box); // filled by rebuildAxisChoices()
         m_map.insert(laserAxis, map);
         m_home.insert(laserAxis, home);
         grid->addWidget(
@@ -181,6 +179,9 @@ void LaserBridgePage::fillPorts()
 void LaserBridgePage::rebuildAxisChoices()
 {
     const QList<Axis> axes = m_context->axes();
+    // Some controllers choose the direction of their reference runs themselves (EMIS 9.9),
+    // as the reference panel shows too.
+    const bool directed = m_context->capabilities().referenceDirection;
     for (Axis laserAxis : kLaserAxes) {
         QComboBox* map = m_map.value(laserAxis);
         map->clear();
@@ -189,7 +190,19 @@ void LaserBridgePage::rebuildAxisChoices()
             map->addItem(axisName(a), int(a));
         const int same = map->findData(int(laserAxis));
         map->setCurrentIndex(same >= 0 ? same : 0);
+        QComboBox* home = m_home.value(laserAxis);
+        home->clear();
+        if (directed) {
+            home->addItem(tr("negative (-1)"), -1);
+            home->addItem(tr("positive (+1)"), 1);
+            home->setToolTip(QString());
+        } else {
+            home->addItem(tr("chosen by the controller"), 0);
+            home->setToolTip(tr("The controller chooses the direction of its reference run "
+                                "itself"));
+        }
     }
+    updateControls();
 }
 
 bool LaserBridgePage::isRunning() const
@@ -206,7 +219,8 @@ bool LaserBridgePage::configFromForm(LaserBridgeConfig* config, QString* error) 
         if (axis < 0)
             continue;
         c.axisMap.insert(laserAxis, Axis(axis));
-        c.homeDirections.insert(Axis(axis), m_home.value(laserAxis)->currentData().toInt());
+        if (const int direction = m_home.value(laserAxis)->currentData().toInt(); direction != 0)
+            c.homeDirections.insert(Axis(axis), direction);
     }
     c.scale = m_scale->value();
     if (m_doorInput->value() > 0)
@@ -315,9 +329,10 @@ void LaserBridgePage::updateControls()
     m_stop->setEnabled(active);
     for (QWidget* w : std::initializer_list<QWidget*>{m_port, m_scale, m_doorInput})
         w->setEnabled(!active);
+    const bool directed = m_context->capabilities().referenceDirection;
     for (Axis a : kLaserAxes) {
         m_map.value(a)->setEnabled(!active);
-        m_home.value(a)->setEnabled(!active);
+        m_home.value(a)->setEnabled(!active && directed);
     }
 }
 

@@ -1,7 +1,7 @@
 // Laser bridge page: the main window connected to the in-process E-LAB simulator, a scripted
 // laser on a real pty; start, a home and a move answered, the live log and the axis table,
 // stop; refusals in the form; German labels.
-#include "../UiTestSupport.h"
+#include "../EmisUiFixture.h"
 #include "bridge/LaserBridgePage.h"
 #include "main/ConnectionBar.h"
 #include "main/PortScanner.h"
@@ -31,6 +31,7 @@ private Q_SLOTS:
     void portList_followsTheScanner_keepsTypedPort();
     void start_homeAndMove_answeredLoggedAndShownPerAxis();
     void stop_closesLaserPortAndSaysSo();
+    void emisBehind_referenceDirectionByController_homeAnswered();
     void form_invalidChoices_refusedWithReason();
     void german_pageLabelsTranslated();
     void window_withPage_fitsSmallScreen();
@@ -39,14 +40,14 @@ private:
     ui::LaserBridgePage* page() const { return m_f->window->laserBridgePage(); }
     bool startOnLaserPty();
 
-    std::unique_ptr<UiFixture> m_f;
+    std::unique_ptr<EmisUiFixture> m_f;
     std::unique_ptr<PtyEndpoint> m_laser;
     QByteArray m_laserGot;
 };
 
 void TestLaserBridgePage::init()
 {
-    m_f = std::make_unique<UiFixture>();
+    m_f = std::make_unique<EmisUiFixture>();
     m_f->window->show();
     m_laser = std::make_unique<PtyEndpoint>();
     QVERIFY(m_laser->create());
@@ -153,6 +154,27 @@ void TestLaserBridgePage::stop_closesLaserPortAndSaysSo()
     QSignalSpy quiet(m_laser.get(), &Transport::dataReceived);
     QVERIFY(test::staysQuiet(quiet, 200));
     QVERIFY(m_laserGot.isEmpty());
+}
+
+// The EMIS board chooses the direction of its reference runs (9.9): the page offers none and
+// the bridge's home is answered with the bridge's defaults.
+void TestLaserBridgePage::emisBehind_referenceDirectionByController_homeAnswered()
+{
+    QVERIFY(m_f->connectEmis());
+    QVERIFY(m_f->withEmis([](emis::EmisSimulator* s) {
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+            s->setSwitchPosition(a, -20);
+    }));
+    QComboBox* home = page()->homeCombo(Axis::X);
+    QCOMPARE(home->count(), 1);
+    QCOMPARE(home->currentText(), QStringLiteral("chosen by the controller"));
+    QVERIFY(!home->isEnabled());
+    page()->portCombo()->setCurrentText(m_laser->slavePath());
+    page()->startButton()->click();
+    QTRY_VERIFY(page()->isRunning());
+    m_laser->write("1100000\r");
+    QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("1000002\r"), 10000);
+    QVERIFY(m_f->boardCommands().contains("$Hx")); // the board's own reference run of X
 }
 
 void TestLaserBridgePage::form_invalidChoices_refusedWithReason()
