@@ -296,6 +296,12 @@ void LaserBridgePage::onFinished()
 void LaserBridgePage::appendLog(const LaserBridge::LogEntry& entry)
 {
     m_log->appendPlainText(LaserBridge::formatLogEntry(entry));
+    // A target not answered, a door not reported, a stop that failed: shown at once, whatever
+    // the laser was told, and kept until the bridge is started again.
+    if (entry.kind == LaserBridge::LogEntry::Kind::Error) {
+        setState(tr("At %1: %2").arg(entry.time.toString(QStringLiteral("HH:mm:ss")), entry.text),
+                 true);
+    }
 }
 
 void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
@@ -314,7 +320,11 @@ void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
     }
     m_table->item(row, ColLaser)->setText(QString::number(laser::axisNumber(view.laserAxis)));
     m_table->item(row, ColAxis)->setText(axisName(view.controllerAxis));
-    m_table->item(row, ColState)->setText(LaserBridge::phaseName(view.phase));
+    QTableWidgetItem* state = m_table->item(row, ColState);
+    state->setText(LaserBridge::phaseName(view.phase));
+    state->setToolTip(view.failure);
+    state->setForeground(view.failure.isEmpty() ? palette().text()
+                                                : QBrush(QColor(0xc6, 0x28, 0x28)));
     m_table->item(row, ColTarget)
         ->setText(view.target ? laser::commandText(*view.target) : QStringLiteral("-"));
     m_table->item(row, ColReferenced)->setText(view.referenced ? tr("yes") : tr("no"));

@@ -32,6 +32,7 @@ private Q_SLOTS:
     void start_homeAndMove_answeredLoggedAndShownPerAxis();
     void stop_closesLaserPortAndSaysSo();
     void emisBehind_referenceDirectionByController_homeAnswered();
+    void controllerFailsMidMove_failureShownAtOnce_laserToldNothing();
     void form_invalidChoices_refusedWithReason();
     void german_pageLabelsTranslated();
     void window_withPage_fitsSmallScreen();
@@ -175,6 +176,31 @@ void TestLaserBridgePage::emisBehind_referenceDirectionByController_homeAnswered
     m_laser->write("1100000\r");
     QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("1000002\r"), 10000);
     QVERIFY(m_f->boardCommands().contains("$Hx")); // the board's own reference run of X
+}
+
+// The controller's link fails while the bridge's move runs: the page shows it at once (state
+// line in red, the axis row "target not reached" with the reason); the laser gets no frame
+// (the position is unknown, the protocol has no error status: its timeout alarm follows).
+void TestLaserBridgePage::controllerFailsMidMove_failureShownAtOnce_laserToldNothing()
+{
+    QVERIFY(startOnLaserPty());
+    m_laser->write("1200000\r");
+    QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("2000002\r"), 10000);
+    m_laser->write("2290000\r"); // long on its way
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->session->status().axes.value(Axis::Y).moving, 5000);
+    m_f->withSim([](elab::ElabSimulator* s) { s->faults().silent = true; });
+    QTRY_VERIFY_WITH_TIMEOUT(page()->stateLabel()->text().contains("link was lost"), 10000);
+    const QString state = page()->stateLabel()->text();
+    QVERIFY2(state.contains("move Y to 90000") && state.contains("no answer to the laser"),
+             qPrintable(state));
+    QVERIFY(page()->stateLabel()->property("error").toBool());
+    const QTableWidgetItem* row = page()->axisTable()->item(1, 2);
+    QCOMPARE(row->text(), QStringLiteral("target not reached"));
+    QVERIFY(row->toolTip().contains("link was lost"));
+    QTRY_VERIFY(!page()->isRunning()); // the page lets go of the laser port, as before
+    QVERIFY(page()->stateLabel()->text().contains("link was lost")); // and keeps saying why
+    QCOMPARE(m_laserGot, QByteArray("2000002\r"));
+    m_f->withSim([](elab::ElabSimulator* s) { s->faults().silent = false; });
 }
 
 void TestLaserBridgePage::form_invalidChoices_refusedWithReason()
