@@ -15,7 +15,8 @@ constexpr int kShutdownStopMs = 3000; // the controller's stop gets this long at
 
 LaserBridge::LaserBridge(ControllerSession* session, Transport* laserPort,
                          const LaserBridgeConfig& config, QObject* parent)
-    : QObject(parent), m_session(session), m_laser(laserPort), m_config(config)
+    : QObject(parent), m_session(session), m_laser(laserPort), m_config(config),
+      m_answers(config.scale)
 {
     qRegisterMetaType<stepdeck::bridge::LaserBridge::LogEntry>();
     qRegisterMetaType<stepdeck::bridge::LaserBridge::AxisView>();
@@ -39,6 +40,7 @@ LaserBridge::LaserBridge(ControllerSession* session, Transport* laserPort,
     if (m_session) {
         connect(m_session, &ControllerSession::requestFinished, this, &LaserBridge::onResult);
         connect(m_session, &ControllerSession::statusChanged, this, &LaserBridge::onStatus);
+        connect(m_session, &ControllerSession::linkStateChanged, this, &LaserBridge::onLinkState);
     }
 }
 
@@ -116,6 +118,7 @@ void LaserBridge::onCommand(const CommandFrame& frame)
     Slot& slot = m_slots[frame.axis];
     slot.wanted = frame;
     slot.waitingForIdle = false;
+    slot.failure.clear();
     if (m_doorOpen) {
         log(LogEntry::Kind::Note,
             tr("door open: %1 waits until the door closes").arg(commandText(frame)));
@@ -129,16 +132,18 @@ void LaserBridge::onCommand(const CommandFrame& frame)
     publish(slot);
 }
 
-void LaserBridge::answer(Slot& slot, Status status, std::optional<qint64> steps)
+void LaserBridge::reply(Slot& slot, const LaserAnswer& answer)
 {
-    int position = 0;
-    if (steps)
-        position =
-            int(qBound<qint64>(0, qRound64(double(*steps) / m_config.scale), qint64(kMaxPosition)));
-    const StatusFrame frame{slot.laserAxis, position, status};
+    if (!answer.sent())
+        return drop(slot, answer.withheld);
+    send(slot, *answer.frame);
+}
+
+void LaserBridge::send(Slot& slot, const StatusFrame& frame)
+{
     const QByteArray bytes = encodeStatus(frame);
     slot.lastAnswer = frame;
-    if (status != Status::DoorOpened && status != Status::DoorClosed)
+    if (frame.status != Status::DoorOpened && frame.status != Status::DoorClosed)
         slot.wanted.reset();
     if (m_laser && m_laser->isOpen())
         m_laser->write(bytes);
@@ -159,35 +164,48 @@ void LaserBridge::setDoorOpen(bool open)
         // the '3' goes out once the axes stand, with the positions they stopped at.
         requestStop();
         if (m_stop == StopStage::None)
-            reportDoor(Status::DoorOpened);
+            reportDoor(true);
         else
             m_doorReportPending = true;
         return;
     }
     if (std::exchange(m_doorReportPending, false))
-        reportDoor(Status::DoorOpened);
-    reportDoor(Status::DoorClosed);
+        reportDoor(true);
+    reportDoor(false);
     if (m_stop == StopStage::None)
         redispatchAll(); // "it should not prevent the motor from trying to reach its target"
 }
 
-void LaserBridge::reportDoor(Status status)
+void LaserBridge::reportDoor(bool open)
 {
     // Reading of the manual: each axis that stopped for the door reports it; with none on its
-    // way to a target the first mapped axis reports it for the machine.
+    // way to a target the first mapped axis that can reports it for the machine. An axis whose
+    // position is unknown cannot (every frame carries the position): that is an error.
     QList<Axis> reporting;
     for (const Slot& slot : std::as_const(m_slots)) {
         if (slot.wanted)
             reporting << slot.laserAxis;
     }
-    if (reporting.isEmpty() && !m_slots.isEmpty())
-        reporting << m_slots.firstKey();
-    for (Axis a : reporting) {
+    const bool forMachine = reporting.isEmpty();
+    if (forMachine)
+        reporting = m_slots.keys();
+    QStringList untold;
+    for (Axis a : std::as_const(reporting)) {
         Slot& slot = m_slots[a];
         const AxisStatus axis =
             m_session ? m_session->status().axes.value(slot.axis) : AxisStatus{};
-        const bool known = axis.positionKnown && !axis.moving;
-        answer(slot, status, known ? std::optional<qint64>(axis.position) : std::nullopt);
+        const LaserAnswer answer = m_answers.door(a, slot.axis, axis, open);
+        if (!answer.sent()) {
+            untold << answer.withheld;
+            continue;
+        }
+        send(slot, *answer.frame);
+        if (forMachine)
+            return;
+    }
+    if (!untold.isEmpty()) {
+        log(LogEntry::Kind::Error,
+            tr("not reported to the laser: %1").arg(untold.join(QStringLiteral("; "))));
     }
 }
 
@@ -196,6 +214,8 @@ void LaserBridge::shutdown()
     if (m_shuttingDown)
         return;
     m_shuttingDown = true;
+    if (m_session && m_session->linkState() != LinkState::Connected)
+        dropTargetsOfLostLink(); // they cannot be reached: say so before letting go
     bool busy = m_stop != StopStage::None;
     for (Slot& slot : m_slots) {
         busy = busy || slot.job.kind != Job::Kind::None;
@@ -241,34 +261,6 @@ void LaserBridge::log(LogEntry::Kind kind, const QString& text, const QByteArray
     Q_EMIT logged(entry);
 }
 
-QString LaserBridge::formatLogEntry(const LogEntry& entry)
-{
-    QString kind;
-    switch (entry.kind) {
-    case LogEntry::Kind::FromLaser:
-        kind = tr("laser  ->");
-        break;
-    case LogEntry::Kind::ToLaser:
-        kind = tr("laser <- ");
-        break;
-    case LogEntry::Kind::Ignored:
-        kind = tr("ignored  ");
-        break;
-    case LogEntry::Kind::Note:
-        kind = tr("note     ");
-        break;
-    case LogEntry::Kind::Error:
-        kind = tr("ERROR    ");
-        break;
-    }
-    const QString frame = entry.frame.isEmpty() ? QString() : genericFormatTraffic(entry.frame);
-    return QStringLiteral("%1  %2  %3  %4")
-        .arg(entry.time.toString(QStringLiteral("HH:mm:ss.zzz")))
-        .arg(kind)
-        .arg(frame, -8)
-        .arg(entry.text);
-}
-
 std::optional<bool> LaserBridge::doorInputState(const MachineStatus& status, int input)
 {
     const QVariant inputs = status.raw.value(QStringLiteral("inputs"));
@@ -290,6 +282,8 @@ QString LaserBridge::phaseName(Phase phase)
         return tr("waiting for the controller");
     case Phase::Stopping:
         return tr("stopping to retarget");
+    case Phase::Failed:
+        return tr("target not reached");
     }
     return {};
 }
@@ -304,6 +298,7 @@ QList<LaserBridge::AxisView> LaserBridge::axes() const
         view.target = slot.wanted;
         view.referenced = slot.referenced;
         view.lastAnswer = slot.lastAnswer;
+        view.failure = slot.failure;
         if (m_stop != StopStage::None && slot.job.kind != Job::Kind::None)
             view.phase = Phase::Stopping;
         else if (slot.job.kind == Job::Kind::Reference)
@@ -312,6 +307,8 @@ QList<LaserBridge::AxisView> LaserBridge::axes() const
             view.phase = Phase::Moving;
         else if (slot.waitingForIdle || (slot.wanted && m_doorOpen))
             view.phase = Phase::Waiting;
+        else if (!slot.failure.isEmpty())
+            view.phase = Phase::Failed;
         out << view;
     }
     return out;

@@ -1,8 +1,9 @@
 #pragma once
+#include "bridge/LaserAnswerPolicy.h"
 #include "bridge/LaserBridgeConfig.h"
+#include "bridge/LaserBridgeLog.h"
 #include "controller/ControllerSession.h"
 #include "protocols/laser/LaserCodec.h"
-#include <QDateTime>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
@@ -18,8 +19,9 @@ namespace stepdeck::bridge {
 // and drives the controller only through its ControllerSession, respecting its capabilities
 // and refusals -- so the CLI command `laser-bridge` and the GUI's Laser bridge page share it.
 //
-// Per laser axis:
-// - home: the controller's reference run for the mapped axis; answers '2' at 00000.
+// Per laser axis (what is answered, and when nothing is: LaserAnswerPolicy):
+// - home: the controller's reference run (its direction as Capabilities::referenceDirection
+//   allows); answers '2' with the position after it (0).
 // - move: goes to target x scale steps from the reference; answers '0' with the position in
 //   laser units once the axis stands at the target. An axis not referenced since the bridge
 //   started (or unreferenced by the controller since) is referenced first.
@@ -32,6 +34,9 @@ namespace stepdeck::bridge {
 // - An axis that stops at a limit switch is answered '1', at its reference switch '2'; one that
 //   stops short for another reason (the operator's STOP or PANIC) is not answered: the
 //   operator keeps priority. Targets that arrive while the operator jogs are dropped.
+// - A target not answered (stopped short, position unknown, the controller failed or its link
+//   went down) is logged as an error and shown in AxisView::failure at once; the laser raises
+//   its own timeout alarm. No answer ever carries a position the controller does not know.
 // - Malformed frames are logged and ignored; they never move anything.
 // - Door (setDoorOpen, e.g. from a controller input): open stops motion where the controller
 //   can and answers '3'; closed answers '4' and the axes go on to their targets.
@@ -39,7 +44,7 @@ class LaserBridge : public QObject
 {
     Q_OBJECT
 public:
-    enum class Phase { Idle, Referencing, Moving, Waiting, Stopping };
+    enum class Phase { Idle, Referencing, Moving, Waiting, Stopping, Failed };
     struct AxisView
     {
         Axis laserAxis = Axis::X;
@@ -48,15 +53,9 @@ public:
         std::optional<laser::CommandFrame> target; // the laser's newest unanswered command
         bool referenced = false;                   // referenced by the bridge since it started
         std::optional<laser::StatusFrame> lastAnswer;
+        QString failure; // the last target not answered and why; cleared by the next command
     };
-    struct LogEntry
-    {
-        enum class Kind { FromLaser, ToLaser, Ignored, Note, Error };
-        QDateTime time;
-        Kind kind = Kind::Note;
-        QByteArray frame; // without CR; empty for notes
-        QString text;
-    };
+    using LogEntry = LaserBridgeLogEntry;
 
     LaserBridge(ControllerSession* session, Transport* laserPort, const LaserBridgeConfig& config,
                 QObject* parent = nullptr);
@@ -75,7 +74,10 @@ public:
     // bitmask MachineStatus::raw["inputs"] (bit 0 = input 1). Set means the door is open.
     // std::nullopt where the model publishes no inputs.
     static std::optional<bool> doorInputState(const MachineStatus& status, int input);
-    static QString formatLogEntry(const LogEntry& entry);
+    static QString formatLogEntry(const LogEntry& entry)
+    {
+        return formatLaserBridgeLogEntry(entry);
+    }
 
 public Q_SLOTS:
     void setDoorOpen(bool open);
@@ -107,6 +109,7 @@ private:
         bool referenced = false;
         bool waitingForIdle = false;
         std::optional<laser::StatusFrame> lastAnswer;
+        QString failure;
     };
     enum class StopStage { None, Requested, Settling, Confirming };
 
@@ -115,8 +118,9 @@ private:
     void onLaserFailed(const QString& reason);
     void onLaserData(const QByteArray& bytes);
     void onCommand(const laser::CommandFrame& frame);
-    void answer(Slot& slot, laser::Status status, std::optional<qint64> steps);
-    void reportDoor(laser::Status status);
+    void reply(Slot& slot, const LaserAnswer& answer); // the frame, else drop()
+    void send(Slot& slot, const laser::StatusFrame& frame);
+    void reportDoor(bool open);
     void log(LogEntry::Kind kind, const QString& text, const QByteArray& frame = {});
     void publish(const Slot& slot);
     void finishShutdown();
@@ -130,10 +134,10 @@ private:
     void requestStop();
     void onResult(const CommandResult& result);
     void onStatus(const MachineStatus& status);
+    void onLinkState(LinkState state);
+    void dropTargetsOfLostLink();
     void checkStandstill(Slot& slot);
     void conclude(Slot& slot);
-    void concludeReference(Slot& slot, const AxisStatus& axis);
-    void concludeMove(Slot& slot, const AxisStatus& axis);
     void onRefused(Slot& slot, const CommandResult& result);
     void onStopResult(const CommandResult& result);
     void advanceStop();
@@ -146,6 +150,7 @@ private:
     QPointer<ControllerSession> m_session;
     QPointer<Transport> m_laser;
     LaserBridgeConfig m_config;
+    LaserAnswerPolicy m_answers;
     Capabilities m_caps;
     laser::CommandDecoder m_decoder;
     QMap<Axis, Slot> m_slots; // by laser axis

@@ -118,6 +118,9 @@ QString LaserBridgeConfig::validate(const Capabilities& controller) const
             return tr("axis %1 is mapped to two laser axes").arg(axisName(it.value()));
         used << it.value();
     }
+    if (!homeDirections.isEmpty() && !controller.referenceDirection)
+        return tr("--home: this controller chooses the direction of its reference runs itself; "
+                  "leave --home out");
     for (auto it = homeDirections.cbegin(); it != homeDirections.cend(); ++it) {
         if (!used.contains(it.key()))
             return tr("--home names axis %1, which no laser axis is mapped to")

@@ -17,13 +17,19 @@ public:
 
     QMap<Axis, Axis> axisMap{{Axis::X, Axis::X}, {Axis::Y, Axis::Y}, {Axis::Z, Axis::Z}};
     double scale = 1.0; // controller steps per laser unit; targets go to target x scale
-    // Reference direction per controller axis (-1 or +1); axes not named: -1.
+    // Reference direction per controller axis (-1 or +1); axes not named: -1. Only for
+    // controllers whose reference runs take a direction (Capabilities::referenceDirection).
     QMap<Axis, int> homeDirections;
     // A digital input of the controller wired to the door switch (1-based), if any.
     std::optional<int> doorInput;
 
-    int homeDirection(Axis controllerAxis) const
+    // What the bridge passes to ControllerSession::reference() for this axis: the configured
+    // direction (default -1), or 1 ("reference this axis") where the controller chooses the
+    // direction itself (EMIS 9.9), as the GUI's reference panel does.
+    int referenceRequest(Axis controllerAxis, const Capabilities& controller) const
     {
+        if (!controller.referenceDirection)
+            return 1;
         return homeDirections.value(controllerAxis, -1);
     }
 
@@ -36,7 +42,8 @@ public:
     static bool parseDoorInput(const QString& text, int* input, QString* error);
 
     // Against the controller behind: every mapped axis exists, none twice, directions only for
-    // mapped axes. Empty when fine, else one sentence.
+    // mapped axes and only where the controller's reference runs take one. Empty when fine,
+    // else one sentence.
     QString validate(const Capabilities& controller) const;
     // "1=X,2=Y,3=Z" (the inverse of parseMap).
     QString mapText() const;

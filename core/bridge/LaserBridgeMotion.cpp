@@ -26,9 +26,10 @@ bool LaserBridge::controllerIdle() const
 
 void LaserBridge::drop(Slot& slot, const QString& why)
 {
-    log(LogEntry::Kind::Error,
+    slot.failure =
         tr("%1: %2; no answer to the laser (it raises its timeout alarm)")
-            .arg(slot.wanted ? commandText(*slot.wanted) : axisName(slot.laserAxis), why));
+            .arg(slot.wanted ? commandText(*slot.wanted) : axisName(slot.laserAxis), why);
+    log(LogEntry::Kind::Error, slot.failure);
     slot.wanted.reset();
     slot.waitingForIdle = false;
     publish(slot);
@@ -52,7 +53,7 @@ void LaserBridge::dispatch(Slot& slot)
 
 void LaserBridge::startReference(Slot& slot)
 {
-    const int direction = m_config.homeDirection(slot.axis);
+    const int direction = m_config.referenceRequest(slot.axis, m_caps);
     if (slot.wanted->command == Command::Move) {
         log(LogEntry::Kind::Note, tr("axis %1 not referenced since the bridge started: "
                                      "referencing it first")
@@ -163,8 +164,7 @@ void LaserBridge::onRefused(Slot& slot, const CommandResult& result)
     if (result.error == ErrorKind::Refused && axis.limitSwitch) {
         log(LogEntry::Kind::Note,
             tr("controller refused at an active limit switch: %1").arg(result.message));
-        return answer(slot, Status::EndSwitch,
-                      axis.positionKnown ? std::optional<qint64>(axis.position) : std::nullopt);
+        return reply(slot, m_answers.refusedAtLimit(slot.laserAxis, slot.axis, axis));
     }
     if (result.error == ErrorKind::Refused && !controllerIdle()) {
         slot.waitingForIdle = true;
@@ -173,6 +173,27 @@ void LaserBridge::onRefused(Slot& slot, const CommandResult& result)
         return publish(slot);
     }
     drop(slot, tr("the controller did not take it: %1").arg(result.message));
+}
+
+void LaserBridge::onLinkState(LinkState state)
+{
+    if (state != LinkState::Connected && m_running && !m_shuttingDown)
+        dropTargetsOfLostLink();
+}
+
+void LaserBridge::dropTargetsOfLostLink()
+{
+    // Nothing can be reached or confirmed any more: the controller may still be moving and
+    // its positions are unknown. Every open target is dropped at once, with the reason.
+    const QString why = m_session && m_session->linkState() == LinkState::Lost
+                            ? tr("the controller's link was lost")
+                            : tr("the controller is not connected");
+    for (Slot& slot : m_slots) {
+        if (!slot.wanted && slot.job.kind == Job::Kind::None)
+            continue;
+        slot.job = Job{};
+        drop(slot, why);
+    }
 }
 
 void LaserBridge::onStatus(const MachineStatus& status)
@@ -219,43 +240,18 @@ void LaserBridge::conclude(Slot& slot)
             checkStandstill(slot);
         return;
     }
-    if (slot.job.kind == Job::Kind::Reference)
-        concludeReference(slot, axis);
-    else
-        concludeMove(slot, axis);
-}
-
-void LaserBridge::concludeReference(Slot& slot, const AxisStatus& axis)
-{
-    slot.job = Job{};
-    if (axis.referenced && axis.positionKnown) {
+    const Job job = std::exchange(slot.job, Job{});
+    if (job.kind == Job::Kind::Reference) {
+        if (!(axis.referenced && axis.positionKnown))
+            return reply(slot, m_answers.referenceFailed(slot.laserAxis, slot.axis, axis));
         slot.referenced = true;
         if (slot.wanted && slot.wanted->command == Command::Home)
-            return answer(slot, Status::HomeSwitch, qint64(0));
+            return reply(slot, m_answers.referenced(slot.laserAxis, slot.axis, axis));
         return dispatch(slot); // home before the first move: now the move
     }
-    if (axis.limitSwitch)
-        return answer(slot, Status::EndSwitch, std::nullopt);
-    drop(slot, tr("axis %1 stopped before it was referenced").arg(axisName(slot.axis)));
-}
-
-void LaserBridge::concludeMove(Slot& slot, const AxisStatus& axis)
-{
-    const Job job = std::exchange(slot.job, Job{});
     if (slot.wanted && !(*slot.wanted == job.frame))
         return dispatch(slot); // a newer target arrived while it moved
-    const std::optional<qint64> at =
-        axis.positionKnown ? std::optional<qint64>(axis.position) : std::nullopt;
-    if (axis.limitSwitch)
-        return answer(slot, Status::EndSwitch, at);
-    if (at && *at == job.steps)
-        return answer(slot, Status::TargetReached, at);
-    if (axis.referenceSwitch)
-        return answer(slot, Status::HomeSwitch, at);
-    drop(slot, tr("axis %1 stopped at %2 steps, short of its target %3 (stopped by the operator?)")
-                   .arg(axisName(slot.axis))
-                   .arg(at ? QString::number(*at) : tr("an unknown position"))
-                   .arg(job.steps));
+    reply(slot, m_answers.moveEnded(slot.laserAxis, slot.axis, axis, job.steps));
 }
 
 void LaserBridge::onStopResult(const CommandResult& result)
@@ -269,7 +265,7 @@ void LaserBridge::onStopResult(const CommandResult& result)
             // Back to waiting for arrival: the jobs still run.
             m_stop = StopStage::None;
             if (std::exchange(m_doorReportPending, false))
-                reportDoor(Status::DoorOpened);
+                reportDoor(true);
             return;
         }
         if (m_shuttingDown)
@@ -282,7 +278,7 @@ void LaserBridge::onStopResult(const CommandResult& result)
         log(LogEntry::Kind::Error, tr("status after the stop: %1").arg(result.message));
     m_stop = StopStage::None;
     if (std::exchange(m_doorReportPending, false))
-        reportDoor(Status::DoorOpened);
+        reportDoor(true);
     redispatchAll();
 }
 

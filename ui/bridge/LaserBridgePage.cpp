@@ -134,9 +134,7 @@ QWidget* LaserBridgePage::buildForm()
     int row = 1;
     for (Axis laserAxis : kLaserAxes) {
         auto* map = new QComboBox(box);
-        auto* home = new QComboBox(box);
-        home->addItem(tr("negative (-1)"), -1);
-        home->addItem(tr("positive (+1)"), 1);
+        auto* home = new QComboBox(box); // filled by rebuildAxisChoices()
         m_map.insert(laserAxis, map);
         m_home.insert(laserAxis, home);
         grid->addWidget(
@@ -181,6 +179,9 @@ void LaserBridgePage::fillPorts()
 void LaserBridgePage::rebuildAxisChoices()
 {
     const QList<Axis> axes = m_context->axes();
+    // Some controllers choose the direction of their reference runs themselves (EMIS 9.9),
+    // as the reference panel shows too.
+    const bool directed = m_context->capabilities().referenceDirection;
     for (Axis laserAxis : kLaserAxes) {
         QComboBox* map = m_map.value(laserAxis);
         map->clear();
@@ -189,7 +190,19 @@ void LaserBridgePage::rebuildAxisChoices()
             map->addItem(axisName(a), int(a));
         const int same = map->findData(int(laserAxis));
         map->setCurrentIndex(same >= 0 ? same : 0);
+        QComboBox* home = m_home.value(laserAxis);
+        home->clear();
+        if (directed) {
+            home->addItem(tr("negative (-1)"), -1);
+            home->addItem(tr("positive (+1)"), 1);
+            home->setToolTip(QString());
+        } else {
+            home->addItem(tr("chosen by the controller"), 0);
+            home->setToolTip(tr("The controller chooses the direction of its reference run "
+                                "itself"));
+        }
     }
+    updateControls();
 }
 
 bool LaserBridgePage::isRunning() const
@@ -206,7 +219,8 @@ bool LaserBridgePage::configFromForm(LaserBridgeConfig* config, QString* error) 
         if (axis < 0)
             continue;
         c.axisMap.insert(laserAxis, Axis(axis));
-        c.homeDirections.insert(Axis(axis), m_home.value(laserAxis)->currentData().toInt());
+        if (const int direction = m_home.value(laserAxis)->currentData().toInt(); direction != 0)
+            c.homeDirections.insert(Axis(axis), direction);
     }
     c.scale = m_scale->value();
     if (m_doorInput->value() > 0)
@@ -282,6 +296,12 @@ void LaserBridgePage::onFinished()
 void LaserBridgePage::appendLog(const LaserBridge::LogEntry& entry)
 {
     m_log->appendPlainText(LaserBridge::formatLogEntry(entry));
+    // A target not answered, a door not reported, a stop that failed: shown at once, whatever
+    // the laser was told, and kept until the bridge is started again.
+    if (entry.kind == LaserBridge::LogEntry::Kind::Error) {
+        setState(tr("At %1: %2").arg(entry.time.toString(QStringLiteral("HH:mm:ss")), entry.text),
+                 true);
+    }
 }
 
 void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
@@ -300,7 +320,11 @@ void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
     }
     m_table->item(row, ColLaser)->setText(QString::number(laser::axisNumber(view.laserAxis)));
     m_table->item(row, ColAxis)->setText(axisName(view.controllerAxis));
-    m_table->item(row, ColState)->setText(LaserBridge::phaseName(view.phase));
+    QTableWidgetItem* state = m_table->item(row, ColState);
+    state->setText(LaserBridge::phaseName(view.phase));
+    state->setToolTip(view.failure);
+    state->setForeground(view.failure.isEmpty() ? palette().text()
+                                                : QBrush(QColor(0xc6, 0x28, 0x28)));
     m_table->item(row, ColTarget)
         ->setText(view.target ? laser::commandText(*view.target) : QStringLiteral("-"));
     m_table->item(row, ColReferenced)->setText(view.referenced ? tr("yes") : tr("no"));
@@ -315,9 +339,10 @@ void LaserBridgePage::updateControls()
     m_stop->setEnabled(active);
     for (QWidget* w : std::initializer_list<QWidget*>{m_port, m_scale, m_doorInput})
         w->setEnabled(!active);
+    const bool directed = m_context->capabilities().referenceDirection;
     for (Axis a : kLaserAxes) {
         m_map.value(a)->setEnabled(!active);
-        m_home.value(a)->setEnabled(!active);
+        m_home.value(a)->setEnabled(!active && directed);
     }
 }
 

@@ -60,6 +60,7 @@ void LaserAxisController::onTransportOpened()
     // Nothing to ask: the axes have no status request. The link is up when the port is; what
     // the axes do becomes known from their status frames.
     m_decoder.reset();
+    m_rawDecoder.reset();
     if (m_openId == 0)
         return;
     setLinkState(LinkState::Connected);
@@ -192,6 +193,7 @@ void LaserAxisController::sendRaw(RequestId id, const QByteArray& bytes)
     recordTraffic(TrafficRecord::Direction::Out, bytes, false);
     if (transport()->write(bytes) < 0)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    trackRawCommands(bytes);
     finishOk(id);
 }
 

@@ -26,6 +26,9 @@ namespace stepdeck::laser {
 //   process, with the status as last reported.
 // - Status frames are read at any time: positions, the switch each axis last reported, the
 //   door (MachineStatus::doorOpen after '3' / '4').
+// - sendRaw() (the traffic console): command frames in the bytes are tracked like any target
+//   (moving, motion unconfirmed until the axis reports, the arrival deadline), so a close
+//   while such a move runs warns that the axis may still be moving.
 class LaserAxisController : public Controller
 {
     Q_OBJECT
@@ -87,6 +90,8 @@ private:
     // --- motion (LaserAxisMotion.cpp) ---
     QString checkTargets(const AxisVector& targets) const;
     void sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets);
+    void trackTarget(const CommandFrame& frame, qint64 deadlineMs);
+    void trackRawCommands(const QByteArray& bytes);
     void replaceTargetOf(Axis axis);
     void onStatusFrame(const StatusFrame& frame);
     void settle(Axis axis, bool endSwitch);
@@ -95,6 +100,7 @@ private:
     void updateMachineFlags();
 
     StatusDecoder m_decoder;
+    CommandDecoder m_rawDecoder; // command frames in the bytes sent by sendRaw()
     QMap<Axis, Track> m_tracks;
     QList<Pending> m_pending;
     QList<RequestId> m_syncs; // refreshStatus() waiting for the output to drain

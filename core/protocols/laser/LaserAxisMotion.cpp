@@ -101,13 +101,9 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
     Pending pending{id, command, {}, {}};
     const qint64 deadline = m_clock.elapsed() + qMax(1, options().arrivalTimeoutMs);
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
-        replaceTargetOf(it.key());
-        frames += encodeCommand({command, it.key(), it.value()});
-        Track& track = m_tracks[it.key()];
-        track = Track{true, true, command, it.value(), deadline};
-        AxisStatus& axis = mutableStatus().axes[it.key()];
-        axis.moving = true; // commanded; MachineStatus::motionUnconfirmed says it is not seen
-        axis.limitSwitch = axis.referenceSwitch = false;
+        const CommandFrame frame{command, it.key(), it.value()};
+        frames += encodeCommand(frame);
+        trackTarget(frame, deadline);
         pending.waiting << it.key();
     }
     recordTraffic(TrafficRecord::Direction::Out, frames, false);
@@ -116,6 +112,37 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
         return abortHostSide(ErrorKind::LinkDown, tr("not connected"));
     }
     m_pending << pending;
+    armDeadline();
+    updateMachineFlags();
+    publishStatus();
+}
+
+void LaserAxisController::trackTarget(const CommandFrame& frame, qint64 deadlineMs)
+{
+    replaceTargetOf(frame.axis);
+    m_tracks[frame.axis] = Track{true, true, frame.command, frame.position, deadlineMs};
+    AxisStatus& axis = mutableStatus().axes[frame.axis];
+    axis.moving = true; // commanded; MachineStatus::motionUnconfirmed says it is not seen
+    axis.limitSwitch = axis.referenceSwitch = false;
+}
+
+void LaserAxisController::trackRawCommands(const QByteArray& bytes)
+{
+    // A frame typed in the traffic console moves the axis like any target: it replaces the
+    // axis' target (a request waiting for the old one is cancelled, as the axis discards it)
+    // and stays unconfirmed until the axis reports. Malformed frames are ignored by the axes
+    // (the simulator does the same), so they are not tracked.
+    const qint64 deadline = m_clock.elapsed() + qMax(1, options().arrivalTimeoutMs);
+    bool any = false;
+    for (const DecodedCommand& d : m_rawDecoder.feed(bytes)) {
+        if (!d.ok() || !m_tracks.contains(d.frame->axis))
+            continue;
+        qCInfo(lcLaser) << "raw command tracked:" << commandText(*d.frame);
+        trackTarget(*d.frame, deadline);
+        any = true;
+    }
+    if (!any)
+        return;
     armDeadline();
     updateMachineFlags();
     publishStatus();

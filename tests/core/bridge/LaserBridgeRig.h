@@ -1,11 +1,14 @@
 #pragma once
 // The laser bridge end to end: a scripted laser on the master of a real pseudo-terminal, the
-// bridge on its slave through QSerialPort (SerialTransport, 9600 8N1), and behind it the
-// E-LAB or Nanotec simulator in a ControllerSession (port "sim"). Tests assert the frames the
-// laser got and what the simulated device did.
+// bridge on its slave through QSerialPort (SerialTransport, 9600 8N1), and behind it a model's
+// simulator in a ControllerSession: in the session's thread (port "sim", connectController) or
+// on a second pseudo-terminal in the test's thread (connectControllerOnPty), so both links run
+// through real serial ports. Tests assert the frames the laser got and what the simulated
+// device did.
 #include "TestSupport.h"
 #include "bridge/LaserBridge.h"
 #include "controller/ControllerSession.h"
+#include "protocols/Registry.h"
 #include "protocols/laser/LaserCodec.h"
 #include "sim/PtyEndpoint.h"
 #include "transport/SerialTransport.h"
@@ -27,16 +30,58 @@ public:
         bridge.reset();
         laserPort.reset();
         laserEnd.reset();
+        if (ptySim && session) {
+            // The simulator answers the close's safety stop from this thread: let it, rather
+            // than block in the session's destructor until its wait runs out.
+            session->close();
+            if (!QTest::qWaitFor([this] { return session->linkState() == LinkState::Disconnected; },
+                                 3000))
+                qWarning() << "the controller did not close";
+        }
         session.reset();
+        ptySim.reset();
+        controllerEnd.reset();
     }
 
     // The controller behind, connected (E-LAB: ramps written so it moves at all).
-    bool connectController(const QString& modelId, int maxSpeed = 4000)
+    bool connectController(const QString& modelId, int maxSpeed = 4000,
+                           const ControllerOptions& options = {})
     {
-        session = std::make_unique<ControllerSession>();
         ConnectionSpec spec;
         spec.modelId = modelId;
         spec.port = QStringLiteral("sim");
+        spec.options = options;
+        return connectSession(spec, maxSpeed);
+    }
+
+    // The model's simulator on the device side of a second pseudo-terminal (ptySim, in this
+    // thread), the controller on its slave through QSerialPort, connected.
+    bool connectControllerOnPty(const QString& modelId, const ControllerOptions& options = {})
+    {
+        const ModelInfo* model = findModel(modelId);
+        if (!model)
+            return false;
+        controllerEnd = std::make_unique<PtyEndpoint>();
+        if (!controllerEnd->create())
+            return false;
+        SimulatorOptions simOptions;
+        simOptions.line = model->line;
+        ptySim.reset(model->createSimulator(simOptions));
+        controllerEnd->open(model->line);
+        ptySim->attach(controllerEnd.get());
+        ConnectionSpec spec;
+        spec.modelId = modelId;
+        spec.port = controllerEnd->slavePath();
+        spec.options = options;
+        return connectSession(spec, 4000);
+    }
+
+    template <typename Sim> Sim* simOnPty() const { return static_cast<Sim*>(ptySim.get()); }
+
+    bool connectSession(const ConnectionSpec& spec, int maxSpeed)
+    {
+        const QString modelId = spec.modelId;
+        session = std::make_unique<ControllerSession>();
         QString error;
         if (!session->create(spec, &error))
             return false;
@@ -150,6 +195,8 @@ public:
         return n;
     }
 
+    std::unique_ptr<PtyEndpoint> controllerEnd; // connectControllerOnPty
+    std::unique_ptr<Simulator> ptySim;
     std::unique_ptr<ControllerSession> session;
     std::unique_ptr<PtyEndpoint> laserEnd;
     std::unique_ptr<SerialTransport> laserPort;

@@ -65,7 +65,7 @@ private Q_SLOTS:
     void elab_home_answersHomeSwitch_deviceAtReference();
     void elab_firstMove_referencesFirst_thenScaledTarget();
     void elab_retargetWhileMoving_stopsThenNewestTarget();
-    void elab_endSwitch_answersOne();
+    void elab_endSwitch_positionLost_noAnswerErrorSaysWhy();
     void elab_door_stopsAnswersThree_closedAnswersFourAndArrives();
     void elab_operatorStop_keepsPriority_noAnswer();
     void elab_shutdown_stopsMotionItStarted();
@@ -136,19 +136,26 @@ void TestLaserBridgeEndToEnd::elab_retargetWhileMoving_stopsThenNewestTarget()
     QCOMPARE(rig.logCount(Kind::Note, "stopping first"), 1);
 }
 
-void TestLaserBridgeEndToEnd::elab_endSwitch_answersOne()
+// The E-LAB board stops at a limit switch without a ramp and its position is lost (the adapter
+// marks it unknown): every status frame carries the position, so the laser gets no frame with
+// a made-up one (it used to get "1000001"); the error says why.
+void TestLaserBridgeEndToEnd::elab_endSwitch_positionLost_noAnswerErrorSaysWhy()
 {
     LaserBridgeRig rig;
     QVERIFY(elabRig(rig));
     rig.onSim<elab::ElabSimulator>(
         [](elab::ElabSimulator* s) { s->setLimitPositions(Axis::X, -100000, 100); });
     rig.laserSends("2100900\r");
-    QVERIFY(rig.waitAnswers(1));
-    const StatusFrame got = rig.answers().first();
-    QCOMPARE(got.status, Status::EndSwitch);
-    QCOMPARE(got.axis, Axis::X);
+    QTRY_COMPARE_WITH_TIMEOUT(
+        rig.logCount(Kind::Error, "limit switch, but its position is unknown"), 1, 10000);
     QVERIFY(!elabMoving(rig, Axis::X));
     QVERIFY(elabPosition(rig, Axis::X) <= 101);
+    QVERIFY(!rig.session->status().axes.value(Axis::X).positionKnown);
+    QVERIFY(rig.laserQuiet(200));
+    QVERIFY(rig.fromBridge.isEmpty());
+    const auto views = rig.bridge->axes();
+    QCOMPARE(views.first().phase, bridge::LaserBridge::Phase::Failed);
+    QVERIFY(views.first().failure.contains("move X to 900"));
 }
 
 void TestLaserBridgeEndToEnd::elab_door_stopsAnswersThree_closedAnswersFourAndArrives()

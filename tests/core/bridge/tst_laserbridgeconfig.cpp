@@ -16,6 +16,8 @@ private Q_SLOTS:
     void parseScale_data();
     void parseScale();
     void parseHome_validAndInvalid();
+    void referenceRequest_followsController_data();
+    void referenceRequest_followsController();
     void parseDoorInput_decimalOnly();
     void validate_againstController();
     void defaults_identityMapScaleOne();
@@ -108,10 +110,32 @@ void TestLaserBridgeConfig::parseHome_validAndInvalid()
     for (const char* bad : {"X=0", "X=2", "X=-1,X=1", "X", "Q=1", "X=+1x", "X=nan", "X=-1.0",
                             "X=0x1", "X=-99999999999999999999"})
         QVERIFY2(!LaserBridgeConfig::parseHome(bad, &dirs, &error), bad);
+}
+
+void TestLaserBridgeConfig::referenceRequest_followsController_data()
+{
+    QTest::addColumn<bool>("directed"); // Capabilities::referenceDirection
+    QTest::addColumn<int>("x");
+    QTest::addColumn<int>("y");
+    QTest::newRow("directed: configured or -1") << true << -1 << 1;
+    QTest::newRow("controller chooses: 1") << false << 1 << 1;
+}
+
+void TestLaserBridgeConfig::referenceRequest_followsController()
+{
+    QFETCH(bool, directed);
+    QFETCH(int, x);
+    QFETCH(int, y);
+    Capabilities caps;
+    caps.axes = {Axis::X, Axis::Y};
+    caps.referenceDirection = directed;
     LaserBridgeConfig cfg;
-    cfg.homeDirections = {{Axis::Y, 1}};
-    QCOMPARE(cfg.homeDirection(Axis::Y), 1);
-    QCOMPARE(cfg.homeDirection(Axis::X), -1);
+    cfg.axisMap = {{Axis::X, Axis::X}, {Axis::Y, Axis::Y}};
+    if (directed)
+        cfg.homeDirections = {{Axis::Y, 1}};
+    QCOMPARE(cfg.validate(caps), QString());
+    QCOMPARE(cfg.referenceRequest(Axis::X, caps), x);
+    QCOMPARE(cfg.referenceRequest(Axis::Y, caps), y);
 }
 
 void TestLaserBridgeConfig::parseDoorInput_decimalOnly()
@@ -141,7 +165,13 @@ void TestLaserBridgeConfig::validate_againstController()
     cfg.axisMap = {{Axis::X, Axis::X}};
     cfg.homeDirections = {{Axis::Y, 1}};
     QVERIFY(cfg.validate(twoAxes).contains("--home"));
+    // A controller that chooses the direction of its reference runs (EMIS): no --home at all.
+    Capabilities undirected = twoAxes;
+    undirected.referenceDirection = false;
+    cfg.homeDirections = {{Axis::X, 1}};
+    QVERIFY(cfg.validate(undirected).contains("chooses the direction"));
     cfg.homeDirections.clear();
+    QCOMPARE(cfg.validate(undirected), QString());
     cfg.scale = 0;
     QVERIFY(!cfg.validate(twoAxes).isEmpty());
     cfg.axisMap.clear();

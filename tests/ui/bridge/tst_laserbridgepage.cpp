@@ -1,7 +1,7 @@
 // Laser bridge page: the main window connected to the in-process E-LAB simulator, a scripted
 // laser on a real pty; start, a home and a move answered, the live log and the axis table,
 // stop; refusals in the form; German labels.
-#include "../UiTestSupport.h"
+#include "../EmisUiFixture.h"
 #include "bridge/LaserBridgePage.h"
 #include "main/ConnectionBar.h"
 #include "main/PortScanner.h"
@@ -31,6 +31,8 @@ private Q_SLOTS:
     void portList_followsTheScanner_keepsTypedPort();
     void start_homeAndMove_answeredLoggedAndShownPerAxis();
     void stop_closesLaserPortAndSaysSo();
+    void emisBehind_referenceDirectionByController_homeAnswered();
+    void controllerFailsMidMove_failureShownAtOnce_laserToldNothing();
     void form_invalidChoices_refusedWithReason();
     void german_pageLabelsTranslated();
     void window_withPage_fitsSmallScreen();
@@ -39,14 +41,14 @@ private:
     ui::LaserBridgePage* page() const { return m_f->window->laserBridgePage(); }
     bool startOnLaserPty();
 
-    std::unique_ptr<UiFixture> m_f;
+    std::unique_ptr<EmisUiFixture> m_f;
     std::unique_ptr<PtyEndpoint> m_laser;
     QByteArray m_laserGot;
 };
 
 void TestLaserBridgePage::init()
 {
-    m_f = std::make_unique<UiFixture>();
+    m_f = std::make_unique<EmisUiFixture>();
     m_f->window->show();
     m_laser = std::make_unique<PtyEndpoint>();
     QVERIFY(m_laser->create());
@@ -153,6 +155,52 @@ void TestLaserBridgePage::stop_closesLaserPortAndSaysSo()
     QSignalSpy quiet(m_laser.get(), &Transport::dataReceived);
     QVERIFY(test::staysQuiet(quiet, 200));
     QVERIFY(m_laserGot.isEmpty());
+}
+
+// The EMIS board chooses the direction of its reference runs (9.9): the page offers none and
+// the bridge's home is answered with the bridge's defaults.
+void TestLaserBridgePage::emisBehind_referenceDirectionByController_homeAnswered()
+{
+    QVERIFY(m_f->connectEmis());
+    QVERIFY(m_f->withEmis([](emis::EmisSimulator* s) {
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+            s->setSwitchPosition(a, -20);
+    }));
+    QComboBox* home = page()->homeCombo(Axis::X);
+    QCOMPARE(home->count(), 1);
+    QCOMPARE(home->currentText(), QStringLiteral("chosen by the controller"));
+    QVERIFY(!home->isEnabled());
+    page()->portCombo()->setCurrentText(m_laser->slavePath());
+    page()->startButton()->click();
+    QTRY_VERIFY(page()->isRunning());
+    m_laser->write("1100000\r");
+    QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("1000002\r"), 10000);
+    QVERIFY(m_f->boardCommands().contains("$Hx")); // the board's own reference run of X
+}
+
+// The controller's link fails while the bridge's move runs: the page shows it at once (state
+// line in red, the axis row "target not reached" with the reason); the laser gets no frame
+// (the position is unknown, the protocol has no error status: its timeout alarm follows).
+void TestLaserBridgePage::controllerFailsMidMove_failureShownAtOnce_laserToldNothing()
+{
+    QVERIFY(startOnLaserPty());
+    m_laser->write("1200000\r");
+    QTRY_COMPARE_WITH_TIMEOUT(m_laserGot, QByteArray("2000002\r"), 10000);
+    m_laser->write("2290000\r"); // long on its way
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->session->status().axes.value(Axis::Y).moving, 5000);
+    m_f->withSim([](elab::ElabSimulator* s) { s->faults().silent = true; });
+    QTRY_VERIFY_WITH_TIMEOUT(page()->stateLabel()->text().contains("link was lost"), 10000);
+    const QString state = page()->stateLabel()->text();
+    QVERIFY2(state.contains("move Y to 90000") && state.contains("no answer to the laser"),
+             qPrintable(state));
+    QVERIFY(page()->stateLabel()->property("error").toBool());
+    const QTableWidgetItem* row = page()->axisTable()->item(1, 2);
+    QCOMPARE(row->text(), QStringLiteral("target not reached"));
+    QVERIFY(row->toolTip().contains("link was lost"));
+    QTRY_VERIFY(!page()->isRunning()); // the page lets go of the laser port, as before
+    QVERIFY(page()->stateLabel()->text().contains("link was lost")); // and keeps saying why
+    QCOMPARE(m_laserGot, QByteArray("2000002\r"));
+    m_f->withSim([](elab::ElabSimulator* s) { s->faults().silent = false; });
 }
 
 void TestLaserBridgePage::form_invalidChoices_refusedWithReason()

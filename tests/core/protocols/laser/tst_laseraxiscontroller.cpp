@@ -81,6 +81,9 @@ private Q_SLOTS:
     void garbage_ignoredFramesStillRead();
     void close_duringMove_cancelsAndLeavesUnconfirmed();
     void linkLost_duringMove_failsRequestUnconfirmed();
+    void sendRaw_commandFrame_closeWhileMoving_warnsMayStillMove_data();
+    void sendRaw_commandFrame_closeWhileMoving_warnsMayStillMove();
+    void sendRaw_moveFrame_arrivalConfirmsStandstill();
     void parameters_unsupported();
     void refreshStatus_noQuery_returnsLastReport();
 };
@@ -379,6 +382,64 @@ void TestLaserAxisController::linkLost_duringMove_failsRequestUnconfirmed()
     QVERIFY(!rig.axis(Axis::Y).positionKnown);
     QVERIFY(rig.errors.join("\n").contains(Controller::mayStillBeMovingText())); // said once
     QCOMPARE(rig.errors.filter("link lost").size(), 1);
+}
+
+// A frame typed in the traffic console moves the axis like a move request: the host tracks it
+// (moving, motion unconfirmed), and closing while it runs says it may still be moving.
+void TestLaserAxisController::sendRaw_commandFrame_closeWhileMoving_warnsMayStillMove_data()
+{
+    QTest::addColumn<QList<QByteArray>>("pieces");
+    QTest::addColumn<QString>("axisLetter");
+    QTest::newRow("move") << QList<QByteArray>{"2105000\r"} << "X";
+    QTest::newRow("home") << QList<QByteArray>{"1200000\r"} << "Y";
+    QTest::newRow("move in two pieces") << QList<QByteArray>{"230", "5000\r"} << "Z";
+}
+
+void TestLaserAxisController::sendRaw_commandFrame_closeWhileMoving_warnsMayStillMove()
+{
+    QFETCH(QList<QByteArray>, pieces);
+    QFETCH(QString, axisLetter);
+    const Axis axis = axisFromName(axisLetter).value();
+    Rig rig;
+    rig.sim->setSpeed(500);
+    rig.sim->powerOn(axis, 3000); // a home run has 3000 units to go
+    QVERIFY(rig.open());
+    for (const QByteArray& piece : pieces) {
+        const RequestId id = rig.id();
+        rig.controller->sendRaw(id, piece);
+        QVERIFY(rig.waitFor(id));
+        QVERIFY(rig.results[id].ok());
+    }
+    QTRY_VERIFY(rig.sim->isMoving(axis)); // the device took the frame
+    QVERIFY(rig.axis(axis).moving);
+    QVERIFY(rig.controller->status().motionUnconfirmed);
+    rig.controller->closeLink();
+    QCOMPARE(rig.controller->linkState(), LinkState::Disconnected);
+    QVERIFY(rig.controller->status().motionUnconfirmed);
+    const QString errors = rig.errors.join("\n");
+    QVERIFY2(errors.contains(QStringLiteral("no longer tracking axis %1").arg(axisName(axis))),
+             qPrintable(errors));
+    QVERIFY(errors.contains("no stop command"));
+    QVERIFY(rig.sim->isMoving(axis)); // nothing stopped it: the warning is the truth
+}
+
+void TestLaserAxisController::sendRaw_moveFrame_arrivalConfirmsStandstill()
+{
+    Rig rig;
+    QVERIFY(rig.open());
+    const RequestId waiting = rig.id();
+    rig.sim->setSpeed(500);
+    rig.controller->moveAbsolute(waiting, {{Axis::X, 5000}});
+    const RequestId raw = rig.id();
+    rig.controller->sendRaw(raw, "2100040\r"); // replaces the target, as on the axes
+    QVERIFY(rig.waitFor(waiting));
+    QCOMPARE(rig.results[waiting].error, ErrorKind::Cancelled);
+    QTRY_VERIFY(!rig.axis(Axis::X).moving);
+    QCOMPARE(rig.axis(Axis::X).position, qint64(40));
+    QCOMPARE(rig.sim->position(Axis::X), qint64(40));
+    QVERIFY(!rig.sim->isMoving(Axis::X));
+    QVERIFY(!rig.controller->status().motionUnconfirmed);
+    QVERIFY(!rig.controller->status().busy);
 }
 
 void TestLaserAxisController::parameters_unsupported()
