@@ -6,27 +6,6 @@
 namespace stepdeck::elab {
 
 namespace {
-bool matches(Expect expect, Reply::Kind kind)
-{
-    switch (expect) {
-    case Expect::None:
-        return false;
-    case Expect::Ack:
-        return kind == Reply::Kind::Ack;
-    case Expect::AckNak:
-        return kind == Reply::Kind::Ack || kind == Reply::Kind::Nak;
-    case Expect::MachineState:
-        return kind == Reply::Kind::MachineState;
-    case Expect::AxeState:
-        return kind == Reply::Kind::AxeState;
-    case Expect::Temperature:
-        return kind == Reply::Kind::Temperature;
-    case Expect::RelPosition:
-        return kind == Reply::Kind::RelPosition;
-    }
-    return false;
-}
-
 QString frameName(const QByteArray& frame)
 {
     if (frame.isEmpty())
@@ -35,48 +14,6 @@ QString frameName(const QByteArray& frame)
     return frame.size() > 1 ? text + QStringLiteral("...") : text;
 }
 } // namespace
-
-QString expectName(Expect expect)
-{
-    switch (expect) {
-    case Expect::None:
-        return QStringLiteral("nothing");
-    case Expect::Ack:
-        return QStringLiteral("<ACK>");
-    case Expect::AckNak:
-        return QStringLiteral("<ACK>/<NAK>");
-    case Expect::MachineState:
-        return QStringLiteral("<ENQ>BBBB#");
-    case Expect::AxeState:
-        return QStringLiteral("<HT>BB#");
-    case Expect::Temperature:
-        return QStringLiteral("<ETB>TT#");
-    case Expect::RelPosition:
-        return QStringLiteral("<ETX>X,Y;Z.");
-    }
-    return {};
-}
-
-Expect expectFor(const QByteArray& frame)
-{
-    if (frame.isEmpty())
-        return Expect::None;
-    switch (frame.at(0)) {
-    case ctrl::ENQ:
-        return Expect::MachineState;
-    case ctrl::HT:
-        return Expect::AxeState;
-    case ctrl::ETB:
-        return Expect::Temperature;
-    case ctrl::ETX:
-        return Expect::RelPosition;
-    case ctrl::SYN: // RequestSync: "akzeptiert den Befehl, schickt aber keine Antwort"
-    case ctrl::DC2: // SetFeedStepXYZ: "grundsätzlich keine Antwort"
-        return Expect::None;
-    default:
-        return Expect::AckNak;
-    }
-}
 
 ElabExchangeQueue::ElabExchangeQueue(Transport* transport, QObject* parent)
     : QObject(parent), m_transport(transport)
@@ -221,7 +158,7 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
         return;
     }
     Q_EMIT trafficIn(reply.raw, target->ex.poll);
-    if (!matches(target->ex.expect, reply.kind)) {
+    if (!expectMatches(target->ex.expect, reply.kind)) {
         if (target->ex.tolerateStray) {
             qCInfo(lcElab) << "skipped stray reply" << toMnemonics(reply.raw);
             return;

@@ -1,5 +1,6 @@
 #pragma once
 #include "ElabCodec.h"
+#include "ElabExpect.h"
 #include "model/CommandResult.h"
 #include <QElapsedTimer>
 #include <QObject>
@@ -13,14 +14,6 @@ class Transport;
 }
 
 namespace stepdeck::elab {
-
-// What a frame is answered with ("Aufbau der Befehle und Parameter": commands get <ACK>/<NAK>,
-// requests repeat their control byte with the data; <SYN> and <DC2> get nothing).
-// Ack: only <ACK> is an answer (ForcePanicStop: "Dieser antwortet mit einem <ACK>").
-enum class Expect { None, Ack, AckNak, MachineState, AxeState, Temperature, RelPosition };
-QString expectName(Expect expect);
-// The reply a single command byte gets (for the console's raw frames).
-Expect expectFor(const QByteArray& frame);
 
 // One request/reply pair on the E-LAB line.
 struct ElabExchange
