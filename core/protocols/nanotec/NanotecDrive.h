@@ -51,6 +51,9 @@ public:
         int garble = 0;            // the next N replies get a byte destroyed
         int wrongAddress = 0;      // the next N replies carry another address
         int wrongAddressValue = 0; // 0: address + 1
+        // Settings (command characters) echoed but not kept, as an invalid value would be:
+        // a drive whose firmware ignores them.
+        QByteArray ignoredSettings;
     };
     Faults faults;
 

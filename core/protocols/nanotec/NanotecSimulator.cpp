@@ -62,6 +62,12 @@ void NanotecSimulator::replyFromWrongAddress(int address, int count, int wrongAd
     }
 }
 
+void NanotecSimulator::ignoreSetting(int address, char command)
+{
+    if (NanotecDrive* d = drive(address); d && !d->faults.ignoredSettings.contains(command))
+        d->faults.ignoredSettings += command;
+}
+
 void NanotecSimulator::receive(const QByteArray& bytes)
 {
     for (const Command& c : m_decoder.feed(bytes)) {

@@ -41,6 +41,8 @@ public:
     void setDriveSilent(int address, bool silent);
     void garbleReplies(int address, int count);
     void replyFromWrongAddress(int address, int count, int wrongAddress = 0);
+    // The drive echoes writes of this setting (e.g. 'i') and keeps its old value.
+    void ignoreSetting(int address, char command);
 
 private:
     void execute(const Command& command);
