@@ -100,11 +100,19 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
             figure.note = QStringLiteral("the feed stream did not start");
             break;
         }
-        host.idle(30); // the host queue is now held back by the controller's XOFF
-        device.withSimulator([&](Simulator* sim) {
-            if (auto* elabSim = qobject_cast<elab::ElabSimulator*>(sim))
-                figure.pausedByXoff += elabSim->streamHostPaused() ? 1 : 0;
-        });
+        // Until the controller's XOFF holds the host back (the stream is paced by the wire, so
+        // filling the board's buffer takes its time), at most 1 s.
+        bool paused = false;
+        host.waitUntil(
+            [&] {
+                device.withSimulator([&](Simulator* sim) {
+                    if (auto* elabSim = qobject_cast<elab::ElabSimulator*>(sim))
+                        paused = elabSim->streamHostPaused();
+                });
+                return paused;
+            },
+            1000);
+        figure.pausedByXoff += paused ? 1 : 0;
         const qint64 calledNs = nowNs();
         host.session().panic();
         if (!host.waitUntil([&] { return device.panicSeenNs() >= 0; }, 2000)) {

@@ -5,7 +5,8 @@ namespace stepdeck::bench {
 
 WirePacer::WirePacer(double characterUs, std::function<void(const QByteArray&)> deliver,
                      QObject* parent)
-    : QObject(parent), m_characterUs(characterUs), m_deliver(std::move(deliver)), m_timer(this)
+    : QObject(parent), m_characterUs(characterUs), m_deliver(std::move(deliver)),
+      m_wire(characterUs), m_timer(this)
 {
     m_clock.start();
     m_timer.setSingleShot(true);
@@ -17,8 +18,7 @@ void WirePacer::push(const QByteArray& bytes)
 {
     if (bytes.isEmpty())
         return;
-    const double start = qMax(nowUs(), m_lineFreeUs);
-    m_lineFreeUs = start + m_characterUs * double(bytes.size());
+    const double start = double(m_wire.write(bytes.size(), m_clock.nsecsElapsed())) / 1000.0;
     m_chunks.push_back({bytes, start});
     if (!m_timer.isActive())
         release();

@@ -1,4 +1,5 @@
 #pragma once
+#include "transport/WireBudget.h"
 #include <QByteArray>
 #include <QElapsedTimer>
 #include <QObject>
@@ -9,10 +10,11 @@
 namespace stepdeck::bench {
 
 // A serial wire in one direction: bytes leave back to back, each taking one character time
-// (start + data + parity + stop bits at the baud rate), and are delivered when their last bit
-// would have arrived. Times run on a virtual clock, so no rounding accumulates; delivery
-// itself is quantised by Qt's millisecond timers to within +-0.5 ms (kToleranceUs) of the
-// exact time, early and late alike, without busy-waiting.
+// (start + data + parity + stop bits at the baud rate; core's WireBudget, the same model the
+// E-LAB stream paces by), and are delivered when their last bit would have arrived. Times run on a
+// virtual clock, so no rounding accumulates; delivery itself is quantised by Qt's millisecond
+// timers to within +-0.5 ms (kToleranceUs) of the exact time, early and late alike, without
+// busy-waiting.
 class WirePacer : public QObject
 {
 public:
@@ -35,7 +37,7 @@ private:
     double m_characterUs;
     std::function<void(const QByteArray&)> m_deliver;
     std::deque<Chunk> m_chunks;
-    double m_lineFreeUs = 0; // when the last byte handed to the wire has been sent
+    WireBudget m_wire; // when the bytes handed to the wire start and finish
     QElapsedTimer m_clock;
     QTimer m_timer;
 };

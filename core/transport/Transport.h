@@ -31,9 +31,10 @@ public:
     // to the kernel's tty queue). Returns true when nothing of ours is left in the process.
     // Only for the last bytes before a close: the caller's thread is blocked meanwhile.
     virtual bool flushOutput(int timeoutMs) = 0;
-    // Bytes written and not yet on the wire as far as this host can tell: the process's own
-    // queue plus, for a serial port, the kernel's output queue (TIOCOUTQ). A stream paced on
-    // this keeps the kernel from holding kilobytes the device's XOFF cannot hold back.
+    // Bytes written and not yet on the wire as far as the driver tells: the process's own
+    // queue plus, for a serial port, the kernel's output queue (TIOCOUTQ). Not the whole
+    // truth: a pseudo-terminal reports no queue and a USB adapter's own FIFO is not counted,
+    // so streams pace by wire time as well (WireBudget).
     virtual qint64 pendingOutputBytes() const { return bytesToWrite(); }
     // Drives the line some boards use as hardware reset (LineSettings::resetLine given to
     // open()). Returns false and says why where the link cannot (a pseudo-terminal, TCP, ...).

@@ -3,6 +3,8 @@
 // everything at once and reports it written (as QSerialPort's bytesWritten does once write(2)
 // succeeded), but the bytes reach the peer only at the line's character rate. A pty never
 // shows this backlog, so tests of wire pacing use this instead.
+// reportsQueue=false: the buffer is a USB adapter's own FIFO, which the driver does not count
+// (pendingOutputBytes() stays 0 as TIOCOUTQ would): only the host's wire budget holds it back.
 #include "model/LineSettings.h"
 #include "transport/LoopbackTransport.h"
 #include <QElapsedTimer>
@@ -13,8 +15,10 @@ namespace stepdeck::testing {
 class KernelBufferTransport : public LoopbackTransport
 {
 public:
-    explicit KernelBufferTransport(const LineSettings& line, QObject* parent = nullptr)
-        : LoopbackTransport(parent), m_characterTimeUs(line.characterTimeUs())
+    explicit KernelBufferTransport(const LineSettings& line, bool reportsQueue = true,
+                                   QObject* parent = nullptr)
+        : LoopbackTransport(parent), m_characterTimeUs(line.characterTimeUs()),
+          m_reportsQueue(reportsQueue)
     {
         m_release.setTimerType(Qt::PreciseTimer);
         m_release.setInterval(1);
@@ -37,7 +41,7 @@ public:
         return bytes.size();
     }
     void discardOutput() override { m_kernel.clear(); } // tcflush(TCOFLUSH)
-    qint64 pendingOutputBytes() const override { return m_kernel.size(); }
+    qint64 pendingOutputBytes() const override { return m_reportsQueue ? m_kernel.size() : 0; }
     qint64 maxQueued() const { return m_maxQueued; } // the deepest the kernel queue got
 
 private:
@@ -57,6 +61,7 @@ private:
     }
 
     double m_characterTimeUs;
+    bool m_reportsQueue;
     QByteArray m_kernel;
     QTimer m_release{this};
     QElapsedTimer m_clock;

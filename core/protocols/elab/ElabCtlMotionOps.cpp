@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QTimer>
 #include <limits>
+#include <memory>
 
 namespace stepdeck::elab {
 
@@ -269,19 +270,33 @@ void ElabCtlMotionOps::pumpStream()
         endStream(id);
         return;
     }
-    // At most one small chunk inside the transport: the next one is written when this one has
-    // left, and only while the board has not said XOFF. Polls queue up between chunks.
-    Triple<qint64> delta{};
-    ElabExchange ex = ElabCtlLine::exchange(
-        id, m_stream.nextChunk(ElabCtlStream::kChunkSteps, &delta), Expect::None);
+    // One chunk at a time, and never more than one chunk beyond what the line can have
+    // carried (the queue's wire window): after the board's XOFF at most that is on its way.
+    // The chunk is built when it is written, as many pairs as fit the window then, and none if
+    // the board said XOFF (or the stream ended) while it waited behind a poll.
+    static_assert(2 * ElabCtlStream::kChunkSteps == ElabExchangeQueue::kWireWindowBytes);
+    auto delta = std::make_shared<Triple<qint64>>();
+    ElabExchange ex = ElabCtlLine::exchange(id, {}, Expect::None);
+    ex.wireRoom = 2; // one <DC2> pair
+    ex.build = [this, id, delta] {
+        if (!m_stream.isActive() || m_stream.requestId != id || m_stream.pausedByDevice)
+            return QByteArray();
+        const qint64 pairs = m_line.queue().wireRoomBytes() / 2;
+        return m_stream.nextChunk(int(qBound<qint64>(1, pairs, qint64(ElabCtlStream::kChunkSteps))),
+                                  delta.get());
+    };
     m_stream.chunkInFlight = true;
-    ex.onReply = [this, delta](const Reply&) {
+    ex.onReply = [this, id, delta](const Reply&) {
         for (Axis a : ElabCtlStatusMapper::axes())
-            m_line.status().axes[a].position += delta[size_t(a)];
+            m_line.status().axes[a].position += (*delta)[size_t(a)];
+        if (!m_stream.isActive() || m_stream.requestId != id)
+            return; // that stream has ended
         m_stream.chunkInFlight = false;
         pumpStream();
     };
-    ex.onError = [this](ErrorKind kind, const QString& why) {
+    ex.onError = [this, id](ErrorKind kind, const QString& why) {
+        if (!m_stream.isActive() || m_stream.requestId != id)
+            return;
         m_stream.chunkInFlight = false;
         abortStream(kind, why);
     };

@@ -14,7 +14,9 @@ namespace stepdeck::elab {
 class ElabCtlStream
 {
 public:
-    static constexpr int kChunkSteps = 8; // 16 bytes inside the transport at most
+    // The most pairs beyond what the line can have carried (ElabExchangeQueue's wire window):
+    // what may still arrive after the board's XOFF. Chunks are at most this long.
+    static constexpr int kChunkSteps = 8;
 
     // Empty string when every step is -1, 0 or +1 on X, Y or Z; else why not.
     static QString validate(const QVector<AxisVector>& steps);

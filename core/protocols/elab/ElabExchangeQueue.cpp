@@ -1,32 +1,12 @@
 #include "ElabExchangeQueue.h"
 #include "Logging.h"
 #include "transport/Transport.h"
+#include <QtMath>
 #include <algorithm>
 
 namespace stepdeck::elab {
 
 namespace {
-bool matches(Expect expect, Reply::Kind kind)
-{
-    switch (expect) {
-    case Expect::None:
-        return false;
-    case Expect::Ack:
-        return kind == Reply::Kind::Ack;
-    case Expect::AckNak:
-        return kind == Reply::Kind::Ack || kind == Reply::Kind::Nak;
-    case Expect::MachineState:
-        return kind == Reply::Kind::MachineState;
-    case Expect::AxeState:
-        return kind == Reply::Kind::AxeState;
-    case Expect::Temperature:
-        return kind == Reply::Kind::Temperature;
-    case Expect::RelPosition:
-        return kind == Reply::Kind::RelPosition;
-    }
-    return false;
-}
-
 QString frameName(const QByteArray& frame)
 {
     if (frame.isEmpty())
@@ -36,50 +16,9 @@ QString frameName(const QByteArray& frame)
 }
 } // namespace
 
-QString expectName(Expect expect)
-{
-    switch (expect) {
-    case Expect::None:
-        return QStringLiteral("nothing");
-    case Expect::Ack:
-        return QStringLiteral("<ACK>");
-    case Expect::AckNak:
-        return QStringLiteral("<ACK>/<NAK>");
-    case Expect::MachineState:
-        return QStringLiteral("<ENQ>BBBB#");
-    case Expect::AxeState:
-        return QStringLiteral("<HT>BB#");
-    case Expect::Temperature:
-        return QStringLiteral("<ETB>TT#");
-    case Expect::RelPosition:
-        return QStringLiteral("<ETX>X,Y;Z.");
-    }
-    return {};
-}
-
-Expect expectFor(const QByteArray& frame)
-{
-    if (frame.isEmpty())
-        return Expect::None;
-    switch (frame.at(0)) {
-    case ctrl::ENQ:
-        return Expect::MachineState;
-    case ctrl::HT:
-        return Expect::AxeState;
-    case ctrl::ETB:
-        return Expect::Temperature;
-    case ctrl::ETX:
-        return Expect::RelPosition;
-    case ctrl::SYN: // RequestSync: "akzeptiert den Befehl, schickt aber keine Antwort"
-    case ctrl::DC2: // SetFeedStepXYZ: "grundsätzlich keine Antwort"
-        return Expect::None;
-    default:
-        return Expect::AckNak;
-    }
-}
-
 ElabExchangeQueue::ElabExchangeQueue(Transport* transport, QObject* parent)
-    : QObject(parent), m_transport(transport)
+    : QObject(parent), m_transport(transport),
+      m_window([this] { return m_transport ? m_transport->pendingOutputBytes() : 0; })
 {
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &ElabExchangeQueue::onTimeout);
@@ -118,8 +57,14 @@ void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
 
 void ElabExchangeQueue::pump()
 {
-    const bool writable = !m_held && m_transport && m_transport->isOpen();
-    if (writable && m_inFlight.empty() && !m_queue.empty()) {
+    // A loop only because a built frame may turn out empty and leave nothing in flight.
+    while (!m_held && m_transport && m_transport->isOpen() && m_inFlight.empty() &&
+           !m_queue.empty()) {
+        const qint64 room = m_queue.front().wireRoom;
+        if (room > 0 && wireRoomBytes() < room) {
+            armPace(m_window.nsUntilOnTheWayAtMost(kWireWindowBytes - room));
+            break;
+        }
         ElabExchange ex = std::move(m_queue.front());
         m_queue.pop_front();
         write(std::move(ex)); // may complete synchronously only through callbacks that pump
@@ -141,6 +86,12 @@ void ElabExchangeQueue::write(ElabExchange ex)
         failExchange(ex, ErrorKind::LinkDown, tr("not connected"));
         return;
     }
+    if (ex.frame.isEmpty() && ex.expect == Expect::None) {
+        // Built to nothing (a stream chunk after the board's XOFF): done without a write.
+        if (ex.onReply)
+            ex.onReply(Reply{});
+        return;
+    }
     const QByteArray bytes = ex.frame;
     const bool poll = ex.poll;
     m_inFlight.push_back(InFlight{std::move(ex), m_clock.elapsed() + m_timeoutMs});
@@ -156,25 +107,38 @@ void ElabExchangeQueue::write(ElabExchange ex)
 
 void ElabExchangeQueue::onBytesWritten(qint64 count)
 {
+    // On the line from now on: until the transport handed them on (QSerialPort writes from
+    // its own buffer in a later event-loop pass) they count as pending, not as carried.
+    m_window.wrote(count);
     m_outstanding = qMax<qint64>(0, m_outstanding - count);
     if (m_outstanding == 0)
         completeWritten();
+}
+
+qint64 ElabExchangeQueue::wireRoomBytes() const
+{
+    return qMax<qint64>(0, kWireWindowBytes - m_window.onTheWay());
+}
+
+void ElabExchangeQueue::armPace(qint64 ns)
+{
+    m_paceTimer.start(qMax(1, qCeil(double(ns) / 1e6)));
 }
 
 void ElabExchangeQueue::completeWritten()
 {
     // bytesWritten only means "the kernel took it": on a real port kilobytes can wait in the
     // tty/USB buffer, where the board's XOFF cannot hold them back and a stop would queue
-    // behind them. So a frame without a reply counts as sent once the kernel's queue is down to
-    // one <DC2> pair; until then the queue is looked at again after the time the line needs.
+    // behind them; a pty or a USB adapter's own FIFO does not even report them. So a frame
+    // without a reply counts as sent once neither the driver nor the wire budget leaves more
+    // than one <DC2> pair on its way; until then this looks again when the line should be there.
     const bool unanswered =
         std::any_of(m_inFlight.cbegin(), m_inFlight.cend(),
                     [](const InFlight& f) { return f.ex.expect == Expect::None; });
     if (unanswered && m_transport) {
-        const qint64 pending = m_transport->pendingOutputBytes();
-        if (pending > kWireLowWaterBytes) {
-            const double us = double(pending - kWireLowWaterBytes) * m_characterTimeUs;
-            m_paceTimer.start(qMax(1, int(us / 1000.0 + 0.5)));
+        const qint64 wait = m_window.nsUntilOnTheWayAtMost(kWireLowWaterBytes);
+        if (wait > 0) {
+            armPace(wait);
             return;
         }
     }
@@ -221,7 +185,7 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
         return;
     }
     Q_EMIT trafficIn(reply.raw, target->ex.poll);
-    if (!matches(target->ex.expect, reply.kind)) {
+    if (!expectMatches(target->ex.expect, reply.kind)) {
         if (target->ex.tolerateStray) {
             qCInfo(lcElab) << "skipped stray reply" << toMnemonics(reply.raw);
             return;
@@ -409,6 +373,7 @@ void ElabExchangeQueue::failAll(ErrorKind kind, const QString& message)
 void ElabExchangeQueue::restart()
 {
     failAll(ErrorKind::Cancelled, tr("link restarted"));
+    m_window.clear();
     m_held = false;
     m_busy = false;
 }

@@ -1,5 +1,7 @@
 #pragma once
 #include "ElabCodec.h"
+#include "ElabExpect.h"
+#include "ElabWireWindow.h"
 #include "model/CommandResult.h"
 #include <QElapsedTimer>
 #include <QObject>
@@ -14,14 +16,6 @@ class Transport;
 
 namespace stepdeck::elab {
 
-// What a frame is answered with ("Aufbau der Befehle und Parameter": commands get <ACK>/<NAK>,
-// requests repeat their control byte with the data; <SYN> and <DC2> get nothing).
-// Ack: only <ACK> is an answer (ForcePanicStop: "Dieser antwortet mit einem <ACK>").
-enum class Expect { None, Ack, AckNak, MachineState, AxeState, Temperature, RelPosition };
-QString expectName(Expect expect);
-// The reply a single command byte gets (for the console's raw frames).
-Expect expectFor(const QByteArray& frame);
-
 // One request/reply pair on the E-LAB line.
 struct ElabExchange
 {
@@ -35,15 +29,27 @@ struct ElabExchange
     // Idempotent requests (status reads): re-sent after a resynchronisation when the reply was
     // of another kind or, outside polls, did not come in time. Polls count misses instead.
     int retries = 0;
-    // Expect::None: called with an empty Reply once the bytes have left the transport.
+    // Written only once this many bytes fit into the wire window (wireRoomBytes()); 0: any
+    // time. A <DC2> chunk needs room for one pair and is built (build) to fill the room.
+    qint64 wireRoom = 0;
+    // Expect::None: called with an empty Reply once the bytes have left the transport (also
+    // when build made nothing to send).
     std::function<void(const Reply&)> onReply;
     std::function<void(ErrorKind, const QString&)> onError;
 };
 
 // The line discipline of the E-LAB adapter: one exchange in flight, replies matched in order,
-// a timeout per exchange, at most one frame inside the transport (frames without a reply are
-// complete when the transport reports them written), resynchronisation after a timeout or
-// garbage, and overtaking for stop and panic.
+// a timeout per exchange, at most one frame inside the transport, resynchronisation after a
+// timeout or garbage, and overtaking for stop and panic.
+//
+// Frames without a reply (<DC2> chunks, <SYN> bursts) are complete when they are on the wire,
+// not when the transport took them: when neither the driver (pendingOutputBytes: Qt's queue
+// and TIOCOUTQ) nor the wire budget (WireBudget: what the line can have carried at its
+// character rate since the bytes were written) leaves more than kWireLowWaterBytes on the way.
+// (ElabWireWindow). The wire budget is the part that holds on a pseudo-terminal, which reports
+// no queue, and on a USB adapter, whose own FIFO TIOCOUTQ does not count. A frame with wireRoom is
+// written only while at most kWireWindowBytes - wireRoom are beyond the line by either count, so
+// the stream never has more than one chunk on its way when the board says XOFF.
 //
 // Line noise: bytes the decoder cannot read as a reply are skipped while an exchange waits
 // (noise in front of a reply must not cost the reply); a reply destroyed by noise then times
@@ -67,12 +73,19 @@ public:
     void setTimeoutMs(int ms) { m_timeoutMs = qMax(1, ms); }
     int timeoutMs() const { return m_timeoutMs; }
     void setSyncBurst(int count) { m_syncBurst = qMax(1, count); }
-    // The line's character time: frames without a reply complete when they are on the wire,
-    // not when the kernel took them (see completeWritten()).
-    void setCharacterTimeUs(double us) { m_characterTimeUs = qMax(1.0, us); }
-    // Bytes that may still wait in the process and the kernel when a frame without a reply
-    // counts as sent: one <DC2> pair.
+    // The line's character time (57600 8N2: 191 us), for the wire budget.
+    void setCharacterTimeUs(double us) { m_window.setCharacterTimeUs(us); }
+    // Bytes that may still be on their way when a frame without a reply counts as sent: one
+    // <DC2> pair.
     static constexpr qint64 kWireLowWaterBytes = 2;
+    // The most of our bytes that may be beyond what the line can have carried when a frame
+    // with wireRoom is written: one stream chunk (ElabCtlStream::kChunkSteps pairs).
+    static constexpr qint64 kWireWindowBytes = 16;
+    // Bytes that fit into the wire window now: kWireWindowBytes less the larger of the wire
+    // budget's backlog and what the transport reports still pending.
+    qint64 wireRoomBytes() const;
+    // The wire budget's monotonic clock in ns (ElabWireWindow::setClock).
+    void setWireClock(std::function<qint64()> nowNs) { m_window.setClock(std::move(nowNs)); }
 
     void enqueue(ElabExchange ex);     // behind everything queued
     void enqueueNext(ElabExchange ex); // ahead of everything queued: the next step of a sequence
@@ -117,6 +130,7 @@ private:
     void onTimeout();
     void handleReply(const Reply& reply);
     void completeWritten();
+    void armPace(qint64 ns);
     void armTimer();
     void failExchange(ElabExchange& ex, ErrorKind kind, const QString& message);
     // Resynchronises, then sends ex again right behind the resynchronisation.
@@ -127,10 +141,10 @@ private:
     std::deque<ElabExchange> m_queue;
     std::deque<InFlight> m_inFlight;
     QTimer m_timer{this};
-    QTimer m_paceTimer{this}; // re-checks the kernel's output queue while it drains
+    QTimer m_paceTimer{this}; // re-checks the wire while what we wrote is on its way
     QElapsedTimer m_clock;
-    double m_characterTimeUs = 191; // 57600 8N2
-    qint64 m_outstanding = 0;       // bytes handed to the transport and not yet reported written
+    ElabWireWindow m_window;
+    qint64 m_outstanding = 0; // bytes handed to the transport and not yet reported written
     int m_timeoutMs = 500;
     int m_syncBurst = 16;
     bool m_held = false;

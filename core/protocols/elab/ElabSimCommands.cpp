@@ -252,6 +252,7 @@ bool ElabSimulator::doJog(const Command& cmd, QString* why)
 // counted as rejected; a ForceStopMove or a limit switch halts the stream until GS/RS.
 void ElabSimulator::doStreamStep(const Command& cmd)
 {
+    m_stream.noteArrival();
     if (!m_stream.running()) {
         QString why;
         if (!cmd.valid || refusedByNotes(cmd, &why) || !canStartMove(&why) || m_stream.halted() ||

@@ -43,6 +43,7 @@ ElabSimStream::Flow ElabSimStream::flow()
 {
     if (!m_hostPaused && size() >= m_highWater) {
         m_hostPaused = true;
+        m_afterXOff = 0;
         return Flow::SendXOff;
     }
     if (m_hostPaused && size() <= m_lowWater) {
@@ -50,6 +51,14 @@ ElabSimStream::Flow ElabSimStream::flow()
         return Flow::SendXOn;
     }
     return Flow::None;
+}
+
+void ElabSimStream::noteArrival()
+{
+    if (!m_hostPaused)
+        return;
+    ++m_afterXOff;
+    m_mostAfterXOff = qMax(m_mostAfterXOff, m_afterXOff);
 }
 
 void ElabSimStream::start()
@@ -90,6 +99,8 @@ void ElabSimStream::clearCounters()
     m_overflows = 0;
     m_rejected = 0;
     m_executed = 0;
+    m_afterXOff = 0;
+    m_mostAfterXOff = 0;
 }
 
 void ElabSimStream::reset()

@@ -31,6 +31,12 @@ public:
     // Which flow-control byte the host must get now, if any (updates the paused state).
     Flow flow();
     bool hostPaused() const { return m_hostPaused; }
+    // A <DC2> pair arrived (buffered, rejected or overflowing alike). Between an XOFF and the
+    // next XON such pairs are the host's reaction time and whatever it had on the way: a host
+    // paced by the wire sends at most one chunk after the XOFF (docs/architecture.md).
+    void noteArrival();
+    int pairsAfterLastXOff() const { return m_afterXOff; }
+    int mostPairsAfterXOff() const { return m_mostAfterXOff; }
 
     // ---- stream state ----
     void start(); // first <DC2>: execution starts at once
@@ -59,6 +65,8 @@ private:
     bool m_running = false;
     bool m_endPending = false;
     bool m_halted = false;
+    int m_afterXOff = 0;     // pairs that arrived since the last XOFF (while paused)
+    int m_mostAfterXOff = 0; // the most of them after any one XOFF
     double m_credit = 0;
     qint64 m_overflows = 0;
     qint64 m_rejected = 0;

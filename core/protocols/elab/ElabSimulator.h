@@ -77,6 +77,8 @@ public:
     qint64 streamRejected() const { return m_stream.rejected(); }
     int streamBuffered() const { return m_stream.size(); }
     bool streamHostPaused() const { return m_stream.hostPaused(); }
+    // The most <DC2> pairs that arrived after one of the board's XOFFs, before its XON.
+    int streamMostPairsAfterXOff() const { return m_stream.mostPairsAfterXOff(); }
     bool isTicking() const { return m_tick.isActive(); }
     qint64 commandsReceived() const { return m_commands; }
     // Positioning moves (FastMove XY/XYZ/Z) the board accepted with ACK, per axis, in order:

@@ -176,6 +176,8 @@ private:
                     std::shared_ptr<QMap<QByteArray, qint64>> cache);
     void noteWritten(Drive& d, const ParamDef& def, qint64 wire);
     QList<Step> motorAddressSteps(Axis axis, int address, bool verify);
+    // Why a parameter write is refused before anything is sent (empty: it is not).
+    QString writeRefusal(const ParameterSet& values) const;
     void readRecord(RequestId id, Axis axis, int record);
     void readAllRecords(RequestId id, Axis axis);
     void writeRecord(RequestId id, Axis axis, int record, const QVariantMap& values);

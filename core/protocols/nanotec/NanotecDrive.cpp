@@ -98,7 +98,7 @@ NanotecDrive::Answer NanotecDrive::handle(const QByteArray& body)
                 m_silentMode = v == 0;
             a.body = body;
         } else {
-            if (validSetting(c, v))
+            if (validSetting(c, v) && !faults.ignoredSettings.contains(c))
                 applySetting(c, v);
             a.body = body; // echoed even when invalid, and then ignored
         }

@@ -65,6 +65,9 @@ public:
         int wrongAddressValue = 0; // 0: address + 1
         // Keeps '!101' / '!8' but does not run them on 'A' (a firmware without closed loop).
         bool closedLoopRunsIgnored = false;
+        // Settings (command characters) echoed but not kept, as an invalid value would be:
+        // a drive whose firmware ignores them.
+        QByteArray ignoredSettings;
     };
     Faults faults;
 

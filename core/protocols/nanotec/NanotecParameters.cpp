@@ -241,20 +241,18 @@ void NanotecController::readParameters(RequestId id, const QStringList& names)
     });
 }
 
-void NanotecController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+QString NanotecController::writeRefusal(const ParameterSet& values) const
 {
-    if (linkState() != LinkState::Connected)
-        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
     const QString invalid = schema().validate(values, axes());
     if (!invalid.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, invalid);
+        return invalid;
     QMap<int, Axis> newAddresses; // 5.4: a used address would end all communication
     for (auto it = values.cbegin(); it != values.cend(); ++it) {
         const ParamDef* def = findParam(it.key());
         for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a) {
             const QString extra = extraValidation(*def, a.value());
             if (!extra.isEmpty())
-                return finishError(id, ErrorKind::InvalidValue, extra);
+                return extra;
             if (def->cmd == "m")
                 newAddresses.insert(int(*toWire(*def, a.value())), a.key());
         }
@@ -262,48 +260,77 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
     for (auto it = newAddresses.cbegin(); it != newAddresses.cend(); ++it) {
         for (const Drive& d : m_drives) {
             if (d.address == it.key() && d.axis != it.value())
-                return finishError(id, ErrorKind::InvalidValue,
-                                   tr("%1 %2 is already used by %3")
-                                       .arg(ParameterSchema::displayLabel(
-                                           findParam(QStringLiteral("motor-address"))->spec))
-                                       .arg(it.key())
-                                       .arg(driveName(d.axis)));
+                return tr("%1 %2 is already used by %3")
+                    .arg(ParameterSchema::displayLabel(
+                        findParam(QStringLiteral("motor-address"))->spec))
+                    .arg(it.key())
+                    .arg(driveName(d.axis));
         }
     }
-    auto cache = std::make_shared<QMap<QByteArray, qint64>>();
-    auto written = std::make_shared<QStringList>(); // for the message when a later one fails
-    QList<Step> steps, last;
-    QMap<Axis, QPair<qint64, qint64>> bitFields; // 'l': mask, bits (5.6)
-    for (const ParamDef& def : parameterTable()) {
-        if (!values.contains(def.spec.name))
-            continue;
-        const ParameterValue& v = values[def.spec.name];
-        for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
-            const qint64 wire = *toWire(def, a.value());
-            if (def.isBitField()) {
-                bitFields[a.key()].first |= def.fieldMask;
-                bitFields[a.key()].second |= wire;
-                continue;
-            }
-            if (def.cmd == "m") { // address changes go last
-                last << motorAddressSteps(a.key(), int(wire), verify);
-                continue;
-            }
-            const QString label =
-                tr("%1 (%2)").arg(ParameterSchema::displayLabel(def.spec), driveName(a.key()));
-            steps <<
-                [this, written, label, step = writeStep(a.key(), def, wire)](const Done& done) {
-                    step([written, label, done](const Failure& f) {
-                        if (f.ok())
-                            *written << label;
-                        done(f);
-                    });
-                };
-            if (verify)
-                steps << verifyStep(a.key(), def, wire, cache);
+    return {};
+}
+
+namespace {
+// What the message of a failed write may call written. Drives echo invalid values and ignore
+// them, so only a value read back is "written"; one echoed but not read back (no verify, or
+// the read-back itself failed) is only "sent"; one read back as something else is neither
+// (the failure itself says what the drive kept).
+struct WriteProgress
+{
+    QStringList written;
+    QStringList sent;
+
+    void echoed(const QStringList& labels) { sent << labels; }
+    void readBack(const QStringList& labels, bool kept)
+    {
+        for (const QString& label : labels) {
+            sent.removeOne(label);
+            if (kept)
+                written << label;
         }
     }
-    // The whole 'l' mask as one integer, for the read-modify-write of its groups.
+    QString describe(const QString& failure) const
+    {
+        QString text = failure;
+        if (!written.isEmpty())
+            text = NanotecController::tr("%1; already written: %2")
+                       .arg(text, written.join(QStringLiteral(", ")));
+        if (!sent.isEmpty())
+            text = NanotecController::tr("%1; sent but not read back: %2")
+                       .arg(text, sent.join(QStringLiteral(", ")));
+        return text;
+    }
+};
+
+// A step whose success (the drive's echo) makes `labels` "sent".
+template <typename Step>
+auto echoing(std::shared_ptr<WriteProgress> progress, Step step, QStringList labels)
+{
+    return [progress, step, labels](const auto& done) {
+        step([progress, labels, done](const auto& f) {
+            if (f.ok())
+                progress->echoed(labels);
+            done(f);
+        });
+    };
+}
+
+// A read-back step: its result decides whether `labels` are "written".
+template <typename Step>
+auto readingBack(std::shared_ptr<WriteProgress> progress, Step step, QStringList labels)
+{
+    return [progress, step, labels](const auto& done) {
+        step([progress, labels, done](const auto& f) {
+            if (f.ok() || f.kind == ErrorKind::VerifyFailed)
+                progress->readBack(labels, f.ok());
+            done(f);
+        });
+    };
+}
+
+// The whole 'l' mask (5.6) as one integer, for the read-modify-write of its groups.
+const ParamDef& wholeLimitMask()
+{
     static const ParamDef wholeMask = [] {
         ParamDef d = *findParam(QStringLiteral("limit-switch-behaviour-internal-reference"));
         d.spec.name = QStringLiteral("limit-switch-behaviour");
@@ -311,29 +338,71 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
         d.fieldMask = 0;
         return d;
     }();
+    return wholeMask;
+}
+} // namespace
+
+void NanotecController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+{
+    if (linkState() != LinkState::Connected)
+        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (const QString refusal = writeRefusal(values); !refusal.isEmpty())
+        return finishError(id, ErrorKind::InvalidValue, refusal);
+    auto cache = std::make_shared<QMap<QByteArray, qint64>>();
+    auto progress = std::make_shared<WriteProgress>();
+    QList<Step> steps, last;
+    QMap<Axis, QPair<qint64, qint64>> bitFields; // 'l': mask, bits (5.6)
+    QMap<Axis, QStringList> bitFieldLabels;
+    for (const ParamDef& def : parameterTable()) {
+        if (!values.contains(def.spec.name))
+            continue;
+        const ParameterValue& v = values[def.spec.name];
+        for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
+            const qint64 wire = *toWire(def, a.value());
+            const QStringList label{
+                tr("%1 (%2)").arg(ParameterSchema::displayLabel(def.spec), driveName(a.key()))};
+            if (def.isBitField()) {
+                bitFields[a.key()].first |= def.fieldMask;
+                bitFields[a.key()].second |= wire;
+                bitFieldLabels[a.key()] << label;
+                continue;
+            }
+            if (def.cmd == "m") { // address changes go last: probe, write, read back
+                QList<Step> address = motorAddressSteps(a.key(), int(wire), verify);
+                Q_ASSERT(address.size() == (verify ? 3 : 2)); // probe, write[, read back]
+                address[1] = echoing(progress, address[1], label);
+                if (verify)
+                    address[2] = readingBack(progress, address[2], label);
+                last << address;
+                continue;
+            }
+            steps << echoing(progress, writeStep(a.key(), def, wire), label);
+            if (verify)
+                steps << readingBack(progress, verifyStep(a.key(), def, wire, cache), label);
+        }
+    }
+    const ParamDef& wholeMask = wholeLimitMask();
     for (auto it = bitFields.cbegin(); it != bitFields.cend(); ++it) {
         // The other groups and undocumented bits keep their values.
         const Axis axis = it.key();
         const qint64 mask = it.value().first, bits = it.value().second;
+        const QStringList labels = bitFieldLabels.value(axis);
         auto current = std::make_shared<qint64>(0);
         steps << readStep(
             axis, wholeMask, [current](qint64 v) { *current = v; }, cache);
-        steps << [this, axis, mask, bits, current, verify, cache](const Done& done) {
+        steps << [this, axis, mask, bits, labels, current, verify, cache, progress,
+                  &wholeMask](const Done& done) {
             const qint64 merged = (*current & ~mask) | bits;
-            QList<Step> s{writeStep(axis, wholeMask, merged)};
+            QList<Step> s{echoing(progress, writeStep(axis, wholeMask, merged), labels)};
             if (verify)
-                s << verifyStep(axis, wholeMask, merged, cache);
+                s << readingBack(progress, verifyStep(axis, wholeMask, merged, cache), labels);
             runSteps(s, done);
         };
     }
-    runSteps(steps + last, [this, id, written](const Failure& f) {
+    runSteps(steps + last, [this, id, progress](const Failure& f) {
         updateStatus();
         publishStatus();
-        if (!f.ok() && !written->isEmpty())
-            return finishWith(id,
-                              {f.kind, tr("%1; already written: %2")
-                                           .arg(f.message, written->join(QStringLiteral(", ")))});
-        finishWith(id, f);
+        finishWith(id, f.ok() ? f : Failure{f.kind, progress->describe(f.message)});
     });
 }
 

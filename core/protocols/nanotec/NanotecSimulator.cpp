@@ -74,6 +74,12 @@ void NanotecSimulator::setCalibrationMs(int ms)
         d->setCalibrationMs(ms);
 }
 
+void NanotecSimulator::ignoreSetting(int address, char command)
+{
+    if (NanotecDrive* d = drive(address); d && !d->faults.ignoredSettings.contains(command))
+        d->faults.ignoredSettings += command;
+}
+
 void NanotecSimulator::receive(const QByteArray& bytes)
 {
     for (const Command& c : m_decoder.feed(bytes)) {

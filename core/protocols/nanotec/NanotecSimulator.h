@@ -45,6 +45,8 @@ public:
     // calibration and closed-loop reference runs fail; how long a calibration run takes.
     void setEncoderConnected(int address, bool connected);
     void setCalibrationMs(int ms); // every drive on the bus
+    // The drive echoes writes of this setting (e.g. 'i') and keeps its old value.
+    void ignoreSetting(int address, char command);
 
 private:
     void execute(const Command& command);

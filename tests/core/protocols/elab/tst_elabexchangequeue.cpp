@@ -27,6 +27,7 @@ struct Peer
         device->open(lineSettings());
         queue = std::make_unique<ElabExchangeQueue>(host.get());
         queue->setTimeoutMs(300);
+        queue->setCharacterTimeUs(lineSettings().characterTimeUs());
         received = std::make_unique<QSignalSpy>(device.get(), &Transport::dataReceived);
         QTRY_VERIFY(host->isOpen());
     }
@@ -70,6 +71,8 @@ private Q_SLOTS:
     void oneInFlight_nextWrittenAfterReply();
     void overtake_repliesMatchedInOrder();
     void noReplyFrame_completesOnceWritten();
+    void noReplyFrame_linkReportsNoQueue_completesWhenTheLineCarriedIt();
+    void wireRoomFrame_builtToFitOneChunkBeyondTheLine();
     void flowControl_betweenReplies_isNotAReply();
     void timeout_failsAndSendsSynBurstThenMachineState();
     void garbage_failsProtocolAndResyncs();
@@ -119,6 +122,72 @@ void TestElabExchangeQueue::noReplyFrame_completesOnceWritten()
     QTRY_COMPARE(p.seen(), encode::feedStep(0x10) + encode::feedStep(0x11) + encode::endOfFeed());
     p.reply("<ACK>");
     QTRY_COMPARE(log, (QStringList{"chunk:written", "end:<ACK>"}));
+}
+
+// A loopback link, like a pty, takes everything at once and reports nothing pending: only the
+// wire budget (on an invented clock here) says when 16 bytes can have left at 57600 8N2.
+void TestElabExchangeQueue::noReplyFrame_linkReportsNoQueue_completesWhenTheLineCarriedIt()
+{
+    Peer p;
+    qint64 nowNs = 1000000000;
+    p.queue->setWireClock([&nowNs] { return nowNs; });
+    const double characterNs = lineSettings().characterTimeUs() * 1000.0;
+    QStringList log;
+    QByteArray chunk;
+    for (int i = 0; i < 8; ++i)
+        chunk += encode::feedStep(0x10);
+    p.queue->enqueue(p.make(chunk, Expect::None, &log, "chunk"));
+    p.queue->enqueue(p.make(encode::endOfFeed(), Expect::AckNak, &log, "end"));
+    QTRY_COMPARE(p.seen(), chunk);
+    QVERIFY(test::staysQuiet(*p.received, 50)); // the line has carried nothing yet
+    QVERIFY(log.isEmpty());
+    nowNs += qint64(13.5 * characterNs); // 2.5 bytes still on the line: more than one pair
+    QVERIFY(test::staysQuiet(*p.received, 50));
+    QVERIFY(log.isEmpty());
+    nowNs += qint64(0.5 * characterNs) + 1; // one pair left
+    QTRY_COMPARE(log, QStringList{"chunk:written"});
+    QTRY_COMPARE(p.seen(), chunk + encode::endOfFeed());
+}
+
+// A frame with wireRoom waits for room in the window and is built to fill it: never more
+// than one chunk (16 bytes) beyond what the line can have carried, by the wire budget.
+void TestElabExchangeQueue::wireRoomFrame_builtToFitOneChunkBeyondTheLine()
+{
+    Peer p;
+    qint64 nowNs = 1000000000;
+    p.queue->setWireClock([&nowNs] { return nowNs; });
+    const double characterNs = lineSettings().characterTimeUs() * 1000.0;
+    QStringList log;
+    QList<qint64> roomAtBuild;
+    auto paced = [&](const char* tag) {
+        ElabExchange ex = p.make({}, Expect::None, &log, QString::fromLatin1(tag));
+        ex.wireRoom = 2;
+        ex.build = [&p, &roomAtBuild] {
+            const qint64 room = p.queue->wireRoomBytes();
+            roomAtBuild << room;
+            return QByteArray(int(room), char(0x10));
+        };
+        return ex;
+    };
+    // 16 bytes answered at once (the loopback carries them instantly): the reply frees the
+    // queue, but by the wire budget the line still has all 16 to carry.
+    const QByteArray command(16, 'A');
+    p.queue->enqueue(p.make(command, Expect::AckNak, &log, "cmd"));
+    QTRY_COMPARE(p.seen(), command);
+    p.reply("<ACK>");
+    QTRY_COMPARE(log, QStringList{"cmd:<ACK>"});
+    p.queue->enqueue(paced("a"));
+    QVERIFY(test::staysQuiet(*p.received, 50)); // no room: not even one pair
+    QVERIFY(roomAtBuild.isEmpty());
+    nowNs += qint64(2 * characterNs) + 1; // two bytes carried: room for one pair
+    QTRY_COMPARE(p.seen(), command + QByteArray(2, char(0x10)));
+    QCOMPARE(roomAtBuild, QList<qint64>{2});
+    // "a" completes once at most one pair is on its way; the next one gets the room left.
+    nowNs += qint64(14 * characterNs) + 1;
+    QTRY_COMPARE(log, (QStringList{"cmd:<ACK>", "a:written"}));
+    p.queue->enqueue(paced("b"));
+    QTRY_COMPARE(roomAtBuild, (QList<qint64>{2, 14}));
+    QTRY_COMPARE(p.seen(), command + QByteArray(16, char(0x10)));
 }
 
 void TestElabExchangeQueue::flowControl_betweenReplies_isNotAReply()

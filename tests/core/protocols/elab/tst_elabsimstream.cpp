@@ -86,6 +86,7 @@ private Q_SLOTS:
     void buffer_watermarks_askForXoffThenXon();
     void buffer_full_countsOverflow();
     void buffer_underrun_earnsNoCredit();
+    void buffer_pairsAfterXoff_countedUntilXon();
     void dc2Stream_sendsXoffXon_andExecutesEveryStep();
     void dc2Stream_hostIgnoringXoff_overflowsCounted();
     void dc2Stream_stopKeepsBuffer_flushSendsXon();
@@ -137,6 +138,38 @@ void TestElabSimStream::buffer_underrun_earnsNoCredit()
     s.pop();
     QCOMPARE(s.due(0.005, 100.0), 0);
     QCOMPARE(s.due(0.005, 100.0), 1);
+}
+
+void TestElabSimStream::buffer_pairsAfterXoff_countedUntilXon()
+{
+    ElabSimStream s;
+    s.configure(16, 4, 1);
+    for (int i = 0; i < 4; ++i) {
+        s.noteArrival(); // before the XOFF: not counted
+        s.push(0x10);
+    }
+    QCOMPARE(s.flow(), ElabSimStream::Flow::SendXOff);
+    for (int i = 0; i < 3; ++i) {
+        s.noteArrival();
+        s.push(0x10);
+    }
+    QCOMPARE(s.pairsAfterLastXOff(), 3);
+    s.start();
+    QCOMPARE(s.due(10.0, 1.0), 7);
+    for (int i = 0; i < 7; ++i)
+        s.pop();
+    QCOMPARE(s.flow(), ElabSimStream::Flow::SendXOn);
+    s.noteArrival(); // after the XON: not counted
+    QCOMPARE(s.pairsAfterLastXOff(), 3);
+    for (int i = 0; i < 4; ++i)
+        s.push(0x10);
+    QCOMPARE(s.flow(), ElabSimStream::Flow::SendXOff);
+    QCOMPARE(s.pairsAfterLastXOff(), 0); // a new XOFF starts a new count
+    s.noteArrival();
+    QCOMPARE(s.pairsAfterLastXOff(), 1);
+    QCOMPARE(s.mostPairsAfterXOff(), 3);
+    s.clearCounters();
+    QCOMPARE(s.mostPairsAfterXOff(), 0);
 }
 
 void TestElabSimStream::dc2Stream_sendsXoffXon_andExecutesEveryStep()
@@ -199,6 +232,8 @@ void TestElabSimStream::dc2Stream_hostIgnoringXoff_overflowsCounted()
         frames += encode::feedStep(encodeStepByte(1, 0, 0));
     sim.receive(frames);
     QCOMPARE(test::joinedBytes(spy), QByteArray(1, ctrl::XOFF));
+    // Everything behind the XOFF (the first step ran at once, so the 49th pair made 48).
+    QCOMPARE(sim.streamMostPairsAfterXOff(), 200 - 49);
     QVERIFY(sim.streamOverflows() > 0);
     QCOMPARE(sim.streamOverflows() + sim.streamBuffered() + sim.executedStepBytes(), qint64(200));
     QCOMPARE(sim.executedSteps(Axis::X), sim.executedStepBytes());

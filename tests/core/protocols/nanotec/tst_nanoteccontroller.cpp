@@ -19,6 +19,8 @@ private Q_SLOTS:
     void poll_sweepsEveryDrive_reportsRate_fitsLine();
     void write_verified_reachesEveryDrive();
     void write_ignoredInvalidValue_isCaughtByReadBack();
+    void write_valueTheDriveDidNotKeep_notListedAsWritten();
+    void write_unverifiedEchoes_listedAsSentNotWritten();
     void write_limitSwitchGroup_keepsOtherGroups();
     void write_undefinedMaskBits_refusedBeforeSending();
     void write_motorAddress_followsTheDrive();
@@ -162,6 +164,47 @@ void TestNanotecController::write_ignoredInvalidValue_isCaughtByReadBack()
     QCOMPARE(countFrames("#1p2\r"), 1);
     // Without verify the same write "succeeds": that is why verify is the default.
     QVERIFY(run([&](RequestId id) { m_ctl->writeParameters(id, p, false); }).ok());
+}
+
+// A drive whose firmware ignores a valid phase current: the read-back catches it, and the
+// message lists only what the drives kept as "already written" (issue 18, item 13).
+void TestNanotecController::write_valueTheDriveDidNotKeep_notListedAsWritten()
+{
+    m_sim->ignoreSetting(1, 'i');
+    ParameterSet one;
+    one["phase-current"].perAxis = {{Axis::X, 80}};
+    CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, one, true); });
+    QCOMPARE(r.error, ErrorKind::VerifyFailed);
+    QVERIFY2(r.message.contains("wrote 80, but the drive kept 50"), qPrintable(r.message));
+    QVERIFY2(!r.message.contains("already written"), qPrintable(r.message));
+    QVERIFY2(!r.message.contains("not read back"), qPrintable(r.message));
+    QCOMPARE(m_sim->drive(1)->value('i'), qint64(50)); // what the device kept
+
+    // Drives are written in axis order: the one that ignores the value comes last here.
+    m_sim->drive(1)->faults.ignoredSettings.clear();
+    m_sim->ignoreSetting(2, 'i');
+    ParameterSet two;
+    two["phase-current"].perAxis = {{Axis::X, 70}, {Axis::Y, 80}};
+    r = run([&](RequestId id) { m_ctl->writeParameters(id, two, true); });
+    QCOMPARE(r.error, ErrorKind::VerifyFailed);
+    QCOMPARE(m_sim->drive(1)->value('i'), qint64(70));
+    QCOMPARE(m_sim->drive(2)->value('i'), qint64(50));
+    const QString written = r.message.section(QStringLiteral("; already written: "), 1);
+    QVERIFY2(written == QStringLiteral("Phase current (drive 1 (axis X))"), qPrintable(r.message));
+}
+
+// Without verify an echo is all there is: a later failure lists the echoed values as sent,
+// never as written (the drive may have ignored them).
+void TestNanotecController::write_unverifiedEchoes_listedAsSentNotWritten()
+{
+    m_sim->setDriveSilent(2, true);
+    ParameterSet set;
+    set["phase-current"].perAxis = {{Axis::X, 70}, {Axis::Y, 80}};
+    const CommandResult r = run([&](RequestId id) { m_ctl->writeParameters(id, set, false); });
+    QVERIFY(!r.ok());
+    QVERIFY2(!r.message.contains("already written"), qPrintable(r.message));
+    QVERIFY2(r.message.endsWith("; sent but not read back: Phase current (drive 1 (axis X))"),
+             qPrintable(r.message));
 }
 
 void TestNanotecController::write_limitSwitchGroup_keepsOtherGroups()
