@@ -1,4 +1,5 @@
 #include "BenchSession.h"
+#include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
@@ -40,7 +41,12 @@ bool BenchSession::connectTo(const QString& modelId, const QString& port, int po
     spec.modelId = modelId;
     spec.port = port;
     spec.options.pollIntervalMs = pollIntervalMs;
-    if (!m_session.create(spec, error))
+    const ModelInfo* model = findModel(modelId);
+    if (!model) {
+        *error = unknownModelText(modelId);
+        return false;
+    }
+    if (!m_session.create(*model, spec, error))
         return false;
     const RequestId id = m_session.open();
     const bool connected = waitUntil(

@@ -1,5 +1,6 @@
 #include "SoakHost.h"
 #include "BenchDevice.h"
+#include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
@@ -58,7 +59,12 @@ bool SoakHost::connectTo(const QString& modelId, const QString& port, QString* e
     // arrives within a fraction of a second, so a lost arrival frame is reported as a timeout
     // after 3 s instead of outlasting kRequestBoundMs and counting as a hang.
     spec.options.arrivalTimeoutMs = 3000;
-    if (!m_session.create(spec, error))
+    const ModelInfo* model = findModel(modelId);
+    if (!model) {
+        *error = unknownModelText(modelId);
+        return false;
+    }
+    if (!m_session.create(*model, spec, error))
         return false;
     const RequestId id = m_session.open();
     waitUntil([&] { return connected() || m_finished.contains(id); }, 5000);

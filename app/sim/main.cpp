@@ -4,6 +4,7 @@
 #include "SimScenario.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
+#include "sim/Simulator.h"
 #include <QCoreApplication>
 #include <cstdio>
 

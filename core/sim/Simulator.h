@@ -55,7 +55,6 @@ public:
     explicit Simulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~Simulator() override;
 
-    virtual QString modelId() const = 0;
     const SimulatorOptions& options() const { return m_options; }
 
     // Connects this simulator to the device end of a link (loopback or pseudo-terminal).

@@ -1,5 +1,6 @@
 #include "DrivePanel.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include <QHeaderView>
 #include <QLabel>
 #include <QProgressBar>
@@ -75,7 +76,8 @@ QString DrivePanel::scanState() const
 
 void DrivePanel::scanBus()
 {
-    scanRange(1, 254);
+    const Capabilities caps = m_context->capabilities();
+    scanRange(caps.minBusAddress, caps.maxBusAddress);
 }
 
 void DrivePanel::scanRange(int first, int last)
@@ -101,7 +103,7 @@ void DrivePanel::scanNextChunk()
                              .arg(m_scanLast)
                              .arg(m_scanNext)
                              .arg(last));
-    m_scanId = m_context->session()->modelOperation(QStringLiteral("scan"),
+    m_scanId = m_context->session()->modelOperation(operation::kScan,
                                                     {{"first", m_scanNext}, {"last", last}});
     m_scanNext = last + 1;
     updateEnabled();

@@ -40,7 +40,7 @@ public:
     int silentCount() const { return m_silent; }
 
 public Q_SLOTS:
-    void scanBus(); // addresses 1..254
+    void scanBus(); // every address the model's bus allows (Nanotec: 1..254)
     // A partial scan (addresses first..last), e.g. for a quick check of a small bus.
     void scanRange(int first, int last);
     void cancelScan(); // stops after the chunk in flight

@@ -43,18 +43,14 @@ ModelInfo modelInfo()
 {
     ModelInfo info;
     info.id = QStringLiteral("elab");
-    info.displayName = QStringLiteral("E-LAB 3-axis stepper controller");
+    // Shown through QCoreApplication::translate("Models", ...).
+    info.displayName =
+        QString::fromUtf8(QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller"));
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new ElabController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new ElabSimulator(options));
-    };
     info.presentation = presentation();
-    return info;
+    return describeModel<ElabController, ElabSimulator>(std::move(info));
 }
 
 // ---- presentation (status panel tooltips, traffic console) ----
@@ -189,11 +185,5 @@ ModelPresentation presentation()
     };
     return p;
 }
-
-namespace {
-// The registry's display name, shown through QCoreApplication::translate("Models", ...).
-[[maybe_unused]] const char* const kModelName =
-    QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller");
-} // namespace
 
 } // namespace stepdeck::elab

@@ -22,7 +22,6 @@ public:
     explicit ElabSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~ElabSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("elab"); }
     void receive(const QByteArray& bytes) override;
 
     // Power-on state: setup incomplete, parameters cleared, positions 0, relays off, buffer

@@ -13,14 +13,8 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new EmisController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new EmisSimulator(options));
-    };
     info.presentation = presentation();
-    return info;
+    return describeModel<EmisController, EmisSimulator>(std::move(info));
 }
 
 } // namespace stepdeck::emis

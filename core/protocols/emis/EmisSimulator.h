@@ -46,7 +46,6 @@ public:
     explicit EmisSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~EmisSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("emis"); }
     bool standingStill() override { return !anyMoving(); }
     void receive(const QByteArray& bytes) override;
 

@@ -22,7 +22,6 @@ public:
     explicit LaserAxisSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~LaserAxisSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("laser-axis"); }
     void receive(const QByteArray& bytes) override;
     bool standingStill() override; // no axis moves (after advancing to now)
 

@@ -1,4 +1,5 @@
 #include "NanotecModel.h"
+#include "NanotecCodec.h"
 #include "NanotecController.h"
 #include "NanotecSchema.h"
 #include "NanotecSimulator.h"
@@ -31,6 +32,8 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.rampedStop = false;
     caps.panic = true; // '#*S' to every drive at once
     caps.multiDrive = true;
+    caps.minBusAddress = kMinAddress; // 1.1
+    caps.maxBusAddress = kMaxAddress;
     caps.records = true; // "read-all-records", "write-record", ... (section 4, 5.15)
     // Speed mode ramps speed and direction changes itself (6.6, !2 p1): the host ramp only
     // passes the targets through.
@@ -114,14 +117,8 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities(defaultAxisAddresses().keys());
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new NanotecController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new NanotecSimulator(options));
-    };
     info.presentation = presentation();
-    return info;
+    return describeModel<NanotecController, NanotecSimulator>(std::move(info));
 }
 
 } // namespace stepdeck::nanotec

@@ -1,5 +1,5 @@
 #pragma once
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::nanotec {
 

@@ -20,7 +20,6 @@ public:
     explicit NanotecSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~NanotecSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("nanotec"); }
     void receive(const QByteArray& bytes) override;
 
     // The drive that currently answers at `address` (after 'm' it moves), or nullptr.

@@ -6,6 +6,7 @@
 #include "TestSupport.h"
 #include "bridge/LaserBridge.h"
 #include "controller/ControllerSession.h"
+#include "protocols/Registry.h"
 #include "protocols/laser/LaserCodec.h"
 #include "sim/PtyEndpoint.h"
 #include "transport/SerialTransport.h"
@@ -38,7 +39,8 @@ public:
         spec.modelId = modelId;
         spec.port = QStringLiteral("sim");
         QString error;
-        if (!session->create(spec, &error))
+        const ModelInfo* model = findModel(modelId);
+        if (!model || !session->create(*model, spec, &error))
             return false;
         QObject::connect(session.get(), &ControllerSession::requestFinished, session.get(),
                          [this](const CommandResult& r) { results.insert(r.id, r); });

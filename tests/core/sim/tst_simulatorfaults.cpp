@@ -12,7 +12,6 @@ class EchoSimulator : public Simulator
 {
 public:
     using Simulator::Simulator;
-    QString modelId() const override { return QStringLiteral("echo"); }
     void receive(const QByteArray& bytes) override { send(bytes); }
     bool standingStill() override { return true; } // nothing ever moves
 };
