@@ -1,11 +1,14 @@
 #include "ElabModel.h"
 #include "ElabCodec.h"
 #include "ElabController.h"
+#include "ElabLogging.h"
 #include "ElabSimulator.h"
 #include <QCoreApplication>
 #include <QtGlobal>
 
 namespace stepdeck::elab {
+
+Q_LOGGING_CATEGORY(lcElab, "stepdeck.elab", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -49,7 +52,14 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
+    // tmInvSetup until the ramp is written; feeds need their speed.
+    info.setupBeforeMotion = {QStringLiteral("start-speed"), QStringLiteral("max-speed"),
+                              QStringLiteral("acceleration"), QStringLiteral("feed-speed")};
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
+    info.streamBench = streamBenchProfile();
     info.presentation = presentation();
+    info.logging = &lcElab;
     return describeModel<ElabController, ElabSimulator>(std::move(info));
 }
 

@@ -1,9 +1,12 @@
 // The registry entry of the SMC-IC4 (core/protocols/Registry.cpp).
 #include "EmisController.h"
+#include "EmisLogging.h"
 #include "EmisModel.h"
 #include "EmisSimulator.h"
 
 namespace stepdeck::emis {
+
+Q_LOGGING_CATEGORY(lcEmis, "stepdeck.emis", QtWarningMsg)
 
 ModelInfo modelInfo()
 {
@@ -13,7 +16,10 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
+    info.logging = &lcEmis;
     return describeModel<EmisController, EmisSimulator>(std::move(info));
 }
 

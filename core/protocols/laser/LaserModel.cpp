@@ -2,9 +2,12 @@
 #include "LaserAxisController.h"
 #include "LaserAxisSimulator.h"
 #include "LaserCodec.h"
+#include "LaserLogging.h"
 #include <QCoreApplication>
 
 namespace stepdeck::laser {
+
+Q_LOGGING_CATEGORY(lcLaser, "stepdeck.laser", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -61,7 +64,10 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = ParameterSchema{};
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
+    info.logging = &lcLaser;
     return describeModel<LaserAxisController, LaserAxisSimulator>(std::move(info));
 }
 

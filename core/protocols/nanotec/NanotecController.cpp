@@ -1,6 +1,7 @@
 // Link, drive initialisation, status sweeps and the normalised status of a Nanotec bus.
 #include "NanotecController.h"
 #include "Logging.h"
+#include "NanotecLogging.h"
 #include "NanotecModel.h"
 #include "transport/Transport.h"
 #include <QtMath>

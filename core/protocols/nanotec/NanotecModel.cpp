@@ -1,10 +1,13 @@
 #include "NanotecModel.h"
 #include "NanotecCodec.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "NanotecSchema.h"
 #include "NanotecSimulator.h"
 
 namespace stepdeck::nanotec {
+
+Q_LOGGING_CATEGORY(lcNanotec, "stepdeck.nanotec", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -117,7 +120,10 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities(defaultAxisAddresses().keys());
     info.schema = parameterSchema();
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
+    info.logging = &lcNanotec;
     return describeModel<NanotecController, NanotecSimulator>(std::move(info));
 }
 

@@ -1,6 +1,7 @@
 // Step sequencing on the bus, console, bus scan, refresh and the model-specific operations.
 #include "Logging.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "NanotecModel.h"
 #include "model/ModelOperations.h"
 #include "transport/Transport.h"

@@ -2,6 +2,7 @@
 // silent drives and the normalised MachineStatus of a Nanotec bus.
 #include "Logging.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 
 namespace stepdeck::nanotec {
 

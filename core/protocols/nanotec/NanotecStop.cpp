@@ -2,6 +2,7 @@
 // the start frequency first; panic is one '#*S' to every drive (1.1), confirmed per drive.
 #include "Logging.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "transport/Transport.h"
 
 namespace stepdeck::nanotec {

@@ -14,6 +14,10 @@ public:
     using Simulator::Simulator;
     void receive(const QByteArray& bytes) override { send(bytes); }
     bool standingStill() override { return true; } // nothing ever moves
+    bool isMoving(Axis) override { return false; }
+    qint64 position(Axis) override { return 0; }
+    QList<SimulatedMove> acceptedMoves() const override { return {}; }
+    void emergencyStop() override {}
 };
 
 SimulatorOptions seeded(quint32 seed)
