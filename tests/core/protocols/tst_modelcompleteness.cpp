@@ -149,7 +149,8 @@ void TestModelCompleteness::simulator_probesSeeWhatTheDeviceDoes()
     test::ModelBench b(findModel(model), 500);
     const ModelInfo& m = *b.info;
     const Axis axis = m.capabilities.axes.first();
-    m.soak.prepare(b.sim.get());
+    if (m.soak.prepare) // its absence fails descriptor_everyPartFilledIn
+        m.soak.prepare(b.sim.get());
     QVERIFY(b.sim->standingStill());
     QVERIFY(!b.sim->isMoving(axis));
     QVERIFY(b.run([&](RequestId id) { b.ctl->openLink(id); }, 5000).ok());
