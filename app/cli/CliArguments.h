@@ -28,7 +28,7 @@ struct CommandSyntax
 // positional arguments and the options of its own it was given.
 struct CliOptions
 {
-    QString model = QStringLiteral("elab");
+    QString model; // parseArguments() starts from the first registered model (E-LAB)
     QString port = QStringLiteral("sim");
     std::optional<int> address;    // --address N: X=N for a single-drive model
     QMap<Axis, int> axisAddresses; // --axes X=1,Y=2,Z=3

@@ -38,7 +38,7 @@ struct SoakProfile
     ParameterSet setup;            // written at the start of every session
     QStringList readable;          // parameters `get` reads back (empty: none can be)
     // Model operations (model/ModelOperations.h) an operator runs per axis after a refused
-    // move, e.g. Nanotec reset-position-error after an abrupt stop lost steps (5.14).
+    // move, e.g. Nanotec kResetPositionError after an abrupt stop lost steps (5.14).
     QStringList recovery;
     // Once, before the first session: e.g. switches out of the soak's reach.
     std::function<void(Simulator*)> prepare;

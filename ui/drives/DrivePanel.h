@@ -16,7 +16,7 @@ class MachineContext;
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
 // per-drive status from the poller, and a bus scan listing every drive that answers.
 // A drive that stopped answering is marked red: the others keep working.
-// The scan runs in chunks of kScanChunk addresses (one "scan" model operation each), so it
+// The scan runs in chunks of kScanChunk addresses (one operation::kScan each), so it
 // shows progress and can be cancelled between chunks; what was found so far stays listed.
 class DrivePanel : public QWidget
 {
