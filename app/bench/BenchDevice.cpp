@@ -1,9 +1,9 @@
 #include "BenchDevice.h"
 #include "WirePacer.h"
-#include "protocols/Registry.h"
-#include "protocols/elab/ElabCodec.h"
-#include "protocols/elab/ElabSimulator.h"
 #include "sim/PtyEndpoint.h"
+#include "sim/TrafficMeter.h"
+#include <QRandomGenerator>
+#include <QTimer>
 #include <chrono>
 
 namespace stepdeck::bench {
@@ -19,12 +19,36 @@ qint64 nowNs()
 class BenchDevice::Worker : public QObject
 {
 public:
-    PtyEndpoint* endpoint = nullptr;
+    void toHost(const QByteArray& bytes)
+    {
+        if (endpoint)
+            endpoint->write(bytes);
+    }
+    void toDevice(const QByteArray& bytes)
+    {
+        if (meter)
+            meter->scan(bytes, nowNs());
+        simulator->receive(bytes);
+    }
+
     Simulator* simulator = nullptr;
+    PtyEndpoint* endpoint = nullptr;
+    WirePacer* fromHost = nullptr; // paced only
+    TrafficMeter* meter = nullptr;
+    QRandomGenerator noise;
 };
 
-BenchDevice::BenchDevice(const ModelInfo& model, const Config& config)
-    : m_model(model), m_config(config)
+BenchDevice::Config BenchDevice::soakConfig(const ModelInfo& model, quint32 seed)
+{
+    Config config;
+    config.seed = seed;
+    config.addresses = model.soak.simulatorAddresses;
+    config.prepare = model.soak.prepare;
+    return config;
+}
+
+BenchDevice::BenchDevice(const ModelInfo& model, Config config)
+    : m_model(model), m_config(std::move(config))
 {
     m_thread.setObjectName(QStringLiteral("bench-device"));
 }
@@ -32,12 +56,12 @@ BenchDevice::BenchDevice(const ModelInfo& model, const Config& config)
 BenchDevice::~BenchDevice()
 {
     if (m_worker) {
-        Worker* worker = m_worker;
+        Worker* w = m_worker;
         QMetaObject::invokeMethod(
-            worker,
-            [worker] {
-                delete worker->simulator; // before the endpoint and pacers it talks to
-                delete worker;
+            w,
+            [w] {
+                delete w->simulator; // before the endpoint and pacers it talks to
+                delete w;
             },
             Qt::BlockingQueuedConnection);
     }
@@ -47,48 +71,87 @@ BenchDevice::~BenchDevice()
 
 bool BenchDevice::start(QString* error)
 {
+    if (!m_model.createSimulator) {
+        *error = QStringLiteral("model %1 has no simulator in this build").arg(m_model.id);
+        return false;
+    }
+    if (m_config.metered) {
+        if (!m_model.streamBench.supported()) {
+            *error = QStringLiteral("model %1 has no stream to measure").arg(m_model.id);
+            return false;
+        }
+        m_meter = m_model.streamBench.createMeter();
+    }
     m_thread.start();
     m_worker = new Worker;
     m_worker->moveToThread(&m_thread);
     Worker* w = m_worker;
+    w->meter = m_meter.get();
     bool ok = false;
     QMetaObject::invokeMethod(
         w,
         [&] {
-            // Paced, both directions run through a WirePacer here rather than the
-            // simulator's own output pacing, so requests and replies share one wire model.
             SimulatorOptions options;
+            options.addresses = m_config.addresses;
             options.line = m_model.line;
+            options.seed = m_config.seed;
             w->simulator = m_model.createSimulator(options);
             w->simulator->setParent(w);
-            if (m_config.unlimitedStreamBuffer) {
-                if (auto* elabSim = qobject_cast<elab::ElabSimulator*>(w->simulator))
-                    elabSim->setStreamBuffer(1 << 24, (1 << 24) - 64, 1 << 23);
-            }
-            w->endpoint = new PtyEndpoint(w);
-            if (!w->endpoint->create(error))
-                return;
-            w->endpoint->open(m_model.line);
-            const auto toHost = [w](const QByteArray& bytes) { w->endpoint->write(bytes); };
-            const auto toDevice = [this, w](const QByteArray& bytes) {
-                scan(bytes);
-                w->simulator->receive(bytes);
-            };
-            if (!m_config.paced) {
-                QObject::connect(w->simulator, &Simulator::transmit, w, toHost);
-                QObject::connect(w->endpoint, &Transport::dataReceived, w, toDevice);
-            } else {
+            w->noise.seed(m_config.seed ^ 0x5eed);
+            if (m_config.prepare)
+                m_config.prepare(w->simulator);
+            const auto toHost = [w](const QByteArray& bytes) { w->toHost(bytes); };
+            if (m_config.paced) {
+                // Both directions through a WirePacer here rather than the simulator's own
+                // output pacing, so requests and replies share one wire model.
                 const double characterUs = m_model.line.characterTimeUs();
                 auto* out = new WirePacer(characterUs, toHost, w);
-                auto* in = new WirePacer(characterUs, toDevice, w);
+                w->fromHost = new WirePacer(
+                    characterUs, [w](const QByteArray& bytes) { w->toDevice(bytes); }, w);
                 QObject::connect(w->simulator, &Simulator::transmit, out, &WirePacer::push);
-                QObject::connect(w->endpoint, &Transport::dataReceived, in, &WirePacer::push);
+            } else {
+                QObject::connect(w->simulator, &Simulator::transmit, w, toHost);
             }
-            m_slavePath = w->endpoint->slavePath();
-            ok = true;
+            ok = openEndpoint(error);
         },
         Qt::BlockingQueuedConnection);
     return ok;
+}
+
+bool BenchDevice::openEndpoint(QString* error)
+{
+    Worker* w = m_worker;
+    w->endpoint = new PtyEndpoint(w);
+    if (!w->endpoint->create(error)) {
+        delete w->endpoint;
+        w->endpoint = nullptr;
+        return false;
+    }
+    w->endpoint->open(m_model.line);
+    if (w->fromHost) {
+        QObject::connect(w->endpoint, &Transport::dataReceived, w->fromHost, &WirePacer::push);
+    } else {
+        QObject::connect(w->endpoint, &Transport::dataReceived, w,
+                         [w](const QByteArray& bytes) { w->toDevice(bytes); });
+    }
+    m_slavePath = w->endpoint->slavePath();
+    m_present = true;
+    return true;
+}
+
+void BenchDevice::closeEndpoint(bool later)
+{
+    Worker* w = m_worker;
+    if (!w->endpoint)
+        return;
+    m_vanishNs = nowNs();
+    w->endpoint->vanish();
+    if (later)
+        w->endpoint->deleteLater();
+    else
+        delete w->endpoint; // its connections to the simulator go with it
+    w->endpoint = nullptr;
+    m_present = false;
 }
 
 void BenchDevice::withSimulator(const std::function<void(Simulator*)>& fn)
@@ -98,32 +161,78 @@ void BenchDevice::withSimulator(const std::function<void(Simulator*)>& fn)
         w, [w, &fn] { fn(w->simulator); }, Qt::BlockingQueuedConnection);
 }
 
-void BenchDevice::resetCounters()
+qint64 BenchDevice::vanish()
 {
-    m_stepBytes = 0;
-    m_firstStepNs = -1;
-    m_lastStepNs = -1;
-    m_panicNs = -1;
+    QMetaObject::invokeMethod(
+        m_worker, [this] { closeEndpoint(false); }, Qt::BlockingQueuedConnection);
+    return m_vanishNs.load();
 }
 
-void BenchDevice::scan(const QByteArray& bytes)
+void BenchDevice::vanishLater(int afterMs)
 {
-    // E-LAB framing (manual, SetFeedStepXYZ): <DC2> is followed by one raw step byte, which
-    // may take any value with bits 7 and 3 clear -- including 0x07, so track the pairs.
-    const qint64 now = nowNs();
-    for (const char byte : bytes) {
-        if (m_afterDc2) {
-            m_afterDc2 = false;
-            if (m_firstStepNs.load() < 0)
-                m_firstStepNs = now;
-            m_lastStepNs = now;
-            ++m_stepBytes;
-        } else if (byte == elab::ctrl::DC2) {
-            m_afterDc2 = true;
-        } else if (byte == elab::ctrl::BEL && m_panicNs.load() < 0) {
-            m_panicNs = now;
+    Worker* w = m_worker;
+    QMetaObject::invokeMethod(
+        w, [this, w, afterMs] { QTimer::singleShot(afterMs, w, [this] { closeEndpoint(true); }); });
+}
+
+bool BenchDevice::reappear(QString* error)
+{
+    bool ok = false;
+    Worker* w = m_worker;
+    QMetaObject::invokeMethod(
+        w,
+        [&] {
+            if (w->endpoint) { // still there: a vanishLater() that has not fired yet
+                w->endpoint->vanish();
+                delete w->endpoint;
+                w->endpoint = nullptr;
+            }
+            ok = openEndpoint(error);
+        },
+        Qt::BlockingQueuedConnection);
+    return ok;
+}
+
+void BenchDevice::noiseBurst(int bytes)
+{
+    Worker* w = m_worker;
+    QMetaObject::invokeMethod(w, [w, bytes] {
+        if (!w->endpoint)
+            return;
+        QByteArray noise(bytes, Qt::Uninitialized);
+        for (char& c : noise)
+            c = char(w->noise.bounded(256));
+        w->endpoint->write(noise);
+    });
+}
+
+QList<Axis> BenchDevice::movingAxes()
+{
+    QList<Axis> out;
+    withSimulator([&](Simulator* s) {
+        for (Axis a : m_model.capabilities.axes) {
+            if (s->isMoving(a))
+                out << a;
         }
-    }
+    });
+    return out;
+}
+
+QList<SimulatedMove> BenchDevice::moves()
+{
+    QList<SimulatedMove> out;
+    withSimulator([&](Simulator* s) { out = s->acceptedMoves(); });
+    return out;
+}
+
+void BenchDevice::halt()
+{
+    withSimulator([](Simulator* s) {
+        const bool silent = s->faults().silent;
+        s->faults().silent = true; // nobody is listening; keep the line clean for the next host
+        s->emergencyStop();
+        s->faults().silent = silent;
+    });
 }
 
 } // namespace stepdeck::bench

@@ -1,13 +1,7 @@
 #include "BenchSession.h"
-#include <QElapsedTimer>
-#include <QEventLoop>
-#include <QTimer>
+#include "EventWait.h"
 
 namespace stepdeck::bench {
-
-namespace {
-constexpr int kWakeMs = 2; // how often a wait re-checks its condition
-}
 
 BenchSession::BenchSession(QObject* parent) : QObject(parent)
 {
@@ -21,26 +15,16 @@ BenchSession::BenchSession(QObject* parent) : QObject(parent)
 
 bool BenchSession::waitUntil(const std::function<bool()>& done, int timeoutMs)
 {
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (clock.elapsed() >= timeoutMs)
-            return false;
-        QEventLoop loop;
-        QTimer::singleShot(kWakeMs, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-    return true;
+    return bench::waitUntil(done, timeoutMs);
 }
 
-bool BenchSession::connectTo(const QString& modelId, const QString& port, int pollIntervalMs,
+bool BenchSession::connectTo(const ModelInfo& model, const QString& port, int pollIntervalMs,
                              QString* error)
 {
     ConnectionSpec spec;
-    spec.modelId = modelId;
     spec.port = port;
     spec.options.pollIntervalMs = pollIntervalMs;
-    if (!m_session.create(spec, error))
+    if (!m_session.create(model, spec, error))
         return false;
     const RequestId id = m_session.open();
     const bool connected = waitUntil(

@@ -13,9 +13,9 @@ public:
     explicit BenchSession(QObject* parent = nullptr);
 
     // Opens port with the model's adapter and waits for LinkState::Connected.
-    bool connectTo(const QString& modelId, const QString& port, int pollIntervalMs, QString* error);
+    bool connectTo(const ModelInfo& model, const QString& port, int pollIntervalMs, QString* error);
     CommandResult call(const std::function<RequestId(ControllerSession&)>& start, int timeoutMs);
-    // Runs the event loop until done() or timeoutMs; false on timeout.
+    // Runs the event loop until done() or timeoutMs; false on timeout (EventWait.h).
     bool waitUntil(const std::function<bool()>& done, int timeoutMs);
     void idle(int ms)
     {

@@ -1,4 +1,5 @@
 #include "GuiIdle.h"
+#include "protocols/Registry.h"
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -167,11 +168,17 @@ struct Figures
     bool guiAlive = false;
 };
 
+// The GUI and the simulator run the first registered model (E-LAB).
+QString idleModel()
+{
+    return models().first().id;
+}
+
 // The first stdout line of stepdeck-sim is its terminal's path.
 QString startSimulator(const QString& appDir, QProcess* sim)
 {
     sim->start(QDir(appDir).filePath(QStringLiteral("stepdeck-sim")),
-               {QStringLiteral("--model"), QStringLiteral("elab")});
+               {QStringLiteral("--model"), idleModel()});
     QString ptyPath;
     QElapsedTimer t;
     t.start();
@@ -196,8 +203,8 @@ bool startGui(const QString& appDir, const Options& o, const QString& ptyPath,
     gui->setProcessEnvironment(env);
     gui->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     gui->start(QDir(appDir).filePath(QStringLiteral("stepdeck")),
-               {QStringLiteral("--model"), QStringLiteral("elab"), QStringLiteral("--port"),
-                ptyPath, QStringLiteral("--poll-interval"), QString::number(o.pollMs)});
+               {QStringLiteral("--model"), idleModel(), QStringLiteral("--port"), ptyPath,
+                QStringLiteral("--poll-interval"), QString::number(o.pollMs)});
     if (!gui->waitForStarted(5000)) {
         *error = QStringLiteral("the GUI did not start");
         return false;

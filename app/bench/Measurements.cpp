@@ -1,21 +1,21 @@
 #include "Measurements.h"
 #include "BenchDevice.h"
 #include "BenchSession.h"
-#include "protocols/Registry.h"
-#include "protocols/elab/ElabSimulator.h"
+#include "sim/TrafficMeter.h"
 #include <QtMath>
 #include <algorithm>
 
 namespace stepdeck::bench {
 
 namespace {
-// Ramp and feed parameters at their schema defaults: the simulator powers on with setup
-// incomplete and refuses a feed stream until they are written.
+// What the device wants written before it moves (ModelInfo::setupBeforeMotion), at the schema
+// defaults: the E-LAB simulator powers on with setup incomplete and refuses a feed stream
+// until its ramp and feed parameters are written.
 ParameterSet setupParameters(const ModelInfo& model)
 {
     ParameterSet set;
-    for (const char* name : {"start-speed", "max-speed", "acceleration", "feed-speed"}) {
-        const ParameterSpec* spec = model.schema.find(QString::fromLatin1(name));
+    for (const QString& name : model.setupBeforeMotion) {
+        const ParameterSpec* spec = model.schema.find(name);
         if (!spec)
             continue;
         ParameterValue value;
@@ -39,7 +39,7 @@ QString prepare(const ModelInfo& model, BenchDevice* device, BenchSession* host,
     QString error;
     if (!device->start(&error))
         return QStringLiteral("simulator: %1").arg(error);
-    if (!host->connectTo(model.id, device->slavePath(), pollIntervalMs, &error))
+    if (!host->connectTo(model, device->slavePath(), pollIntervalMs, &error))
         return QStringLiteral("connect: %1").arg(error);
     if (setup) {
         const ParameterSet set = setupParameters(model);
@@ -69,7 +69,9 @@ double median(QList<double> samples)
 
 Figure measurePollRate(const ModelInfo& model, bool paced)
 {
-    BenchDevice device(model, {paced, false});
+    BenchDevice::Config config;
+    config.paced = paced;
+    BenchDevice device(model, config);
     BenchSession host;
     if (const QString error = prepare(model, &device, &host, kPollIntervalMs, false);
         !error.isEmpty())
@@ -88,15 +90,18 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
     for (int i = 0; i < repetitions; ++i) {
         // A fresh device and session each time: after a panic the machine must be set up
         // and referenced again, which is not what is measured here.
-        BenchDevice device(model, {false, false});
+        BenchDevice::Config config;
+        config.metered = true;
+        BenchDevice device(model, config);
         BenchSession host;
         if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty()) {
             figure.note = error;
             break;
         }
-        device.resetCounters();
+        TrafficMeter* meter = device.meter();
+        meter->reset();
         host.session().feedStream(stream);
-        if (!host.waitUntil([&] { return device.stepBytes() >= 32; }, 3000)) {
+        if (!host.waitUntil([&] { return meter->stepBytes() >= 32; }, 3000)) {
             figure.note = QStringLiteral("the feed stream did not start");
             break;
         }
@@ -105,21 +110,19 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
         bool paused = false;
         host.waitUntil(
             [&] {
-                device.withSimulator([&](Simulator* sim) {
-                    if (auto* elabSim = qobject_cast<elab::ElabSimulator*>(sim))
-                        paused = elabSim->streamHostPaused();
-                });
+                device.withSimulator(
+                    [&](Simulator* sim) { paused = model.streamBench.hostPaused(sim); });
                 return paused;
             },
             1000);
         figure.pausedByXoff += paused ? 1 : 0;
         const qint64 calledNs = nowNs();
         host.session().panic();
-        if (!host.waitUntil([&] { return device.panicSeenNs() >= 0; }, 2000)) {
+        if (!host.waitUntil([&] { return meter->panicSeenNs() >= 0; }, 2000)) {
             figure.note = QStringLiteral("a panic byte did not arrive within 2 s");
             continue;
         }
-        samples << double(device.panicSeenNs() - calledNs) / 1e6;
+        samples << double(meter->panicSeenNs() - calledNs) / 1e6;
     }
     figure.samples = int(samples.size());
     if (!samples.isEmpty()) {
@@ -131,22 +134,27 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
 
 Figure measureFeedThroughput(const ModelInfo& model, bool paced)
 {
-    BenchDevice device(model, {paced, true});
+    BenchDevice::Config config;
+    config.paced = paced;
+    config.metered = true;
+    config.prepare = model.streamBench.unlimitBuffer;
+    BenchDevice device(model, config);
     BenchSession host;
     if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty())
         return {std::nullopt, error};
-    device.resetCounters();
+    const TrafficMeter* meter = device.meter();
+    device.meter()->reset();
     host.session().feedStream(stepStream(kFeedStreamSteps));
-    if (!host.waitUntil([&] { return device.stepBytes() > 0; }, 3000))
+    if (!host.waitUntil([&] { return meter->stepBytes() > 0; }, 3000))
         return {std::nullopt, QStringLiteral("the feed stream did not start")};
     host.waitUntil(
         [&] {
-            return device.stepBytes() >= kFeedStreamSteps ||
-                   nowNs() - device.firstStepNs() >= qint64(kFeedBudgetMs) * 1000000;
+            return meter->stepBytes() >= kFeedStreamSteps ||
+                   nowNs() - meter->firstStepNs() >= qint64(kFeedBudgetMs) * 1000000;
         },
         kFeedBudgetMs + 1000);
-    const qint64 steps = device.stepBytes();
-    const double seconds = double(device.lastStepNs() - device.firstStepNs()) / 1e9;
+    const qint64 steps = meter->stepBytes();
+    const double seconds = double(meter->lastStepNs() - meter->firstStepNs()) / 1e9;
     host.call([](ControllerSession& s) { return s.panic(); }, 1000); // end the stream
     if (steps < 2 || seconds <= 0)
         return {std::nullopt, QStringLiteral("too few steps arrived")};

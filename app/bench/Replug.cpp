@@ -1,6 +1,5 @@
 #include "Replug.h"
 #include "BenchDevice.h"
-#include "SoakDevice.h"
 #include "SoakHost.h"
 #include <QElapsedTimer>
 #include <QJsonArray>
@@ -33,7 +32,7 @@ Stats stats(QList<double> v)
 }
 
 // Starts the phase's activity on a connected host; the vanish follows while it runs.
-void startActivity(const QString& phase, SoakHost& host, const SoakModel& model,
+void startActivity(const QString& phase, SoakHost& host, const SoakProfile& profile,
                    QRandomGenerator& rng)
 {
     ControllerSession& s = host.session();
@@ -54,12 +53,12 @@ void startActivity(const QString& phase, SoakHost& host, const SoakModel& model,
         }
         host.idle(30 + int(rng.bounded(50)));
     } else {
-        s.writeParameters(model.setup, !model.readable.isEmpty());
+        s.writeParameters(profile.setup, !profile.readable.isEmpty());
     }
 }
 } // namespace
 
-ReplugFigures runReplug(const SoakModel& model, int cycles, quint32 seed,
+ReplugFigures runReplug(const ModelInfo& model, int cycles, quint32 seed,
                         const std::function<void(const QString&)>& progress)
 {
     ReplugFigures fig;
@@ -68,7 +67,7 @@ ReplugFigures runReplug(const SoakModel& model, int cycles, quint32 seed,
     QElapsedTimer clock;
     clock.start();
     QRandomGenerator rng(seed);
-    SoakDevice device(model, seed);
+    BenchDevice device(model, BenchDevice::soakConfig(model, seed));
     SoakHost host;
     QString error;
     if (!device.start(&error)) {
@@ -78,16 +77,18 @@ ReplugFigures runReplug(const SoakModel& model, int cycles, quint32 seed,
     for (int i = 0; i < cycles; ++i) {
         const QString phase = kPhases.at(i % kPhases.size());
         if ((!device.present() && !device.reappear(&error)) ||
-            !host.connectTo(model.id, device.slavePath(), &error)) {
+            !host.connectTo(model, device.slavePath(), &error)) {
             ++fig.reconnectFailures;
             host.disconnect();
             continue;
         }
         fig.axesMovingAfterReconnect += device.movingAxes().size();
         device.halt();
-        if (!model.setup.isEmpty())
-            host.call([&](ControllerSession& s) { return s.writeParameters(model.setup, false); });
-        startActivity(phase, host, model, rng);
+        if (!model.soak.setup.isEmpty()) {
+            host.call(
+                [&](ControllerSession& s) { return s.writeParameters(model.soak.setup, false); });
+        }
+        startActivity(phase, host, model.soak, rng);
         if (phase == QLatin1String("write"))
             device.vanishLater(int(rng.bounded(3))); // while the write is on the line
         else

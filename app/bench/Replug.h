@@ -1,5 +1,5 @@
 #pragma once
-#include "SoakModels.h"
+#include "model/ModelInfo.h"
 #include <QJsonObject>
 
 namespace stepdeck::bench {
@@ -21,7 +21,7 @@ struct ReplugFigures
     QString toText() const;
 };
 
-ReplugFigures runReplug(const SoakModel& model, int cycles, quint32 seed,
+ReplugFigures runReplug(const ModelInfo& model, int cycles, quint32 seed,
                         const std::function<void(const QString&)>& progress);
 
 } // namespace stepdeck::bench

@@ -2,7 +2,6 @@
 // pseudo-terminal, checked at the DEVICE (docs/benchmark.md, "Fault soak").
 #include "Soak.h"
 #include "BenchDevice.h"
-#include "SoakDevice.h"
 #include "SoakHost.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
@@ -37,9 +36,10 @@ QString kindName(ErrorKind kind)
 class SoakRun
 {
 public:
-    SoakRun(const SoakModel& model, int commands, quint32 seed,
+    SoakRun(const ModelInfo& model, int commands, quint32 seed,
             const std::function<void(const QString&)>& progress)
-        : m_model(model), m_device(model, seed), m_rng(seed), m_progress(progress)
+        : m_model(model), m_profile(model.soak),
+          m_device(model, BenchDevice::soakConfig(model, seed)), m_rng(seed), m_progress(progress)
     {
         m_fig.model = model.id;
         m_fig.commands = commands;
@@ -72,12 +72,14 @@ private:
     void settleAfterLinkLoss();
     void closeJogRange();
     void compareMoves();
-    void reportUnmatched(Axis axis, int j, const DeviceMove& d, const QList<Commanded>& wanted,
+    AxisVector whereAxesStand();
+    void reportUnmatched(Axis axis, int j, const SimulatedMove& d, const QList<Commanded>& wanted,
                          int next);
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
-    const SoakModel& m_model;
-    SoakDevice m_device;
+    const ModelInfo& m_model;
+    const SoakProfile& m_profile;
+    BenchDevice m_device;
     SoakHost m_host;
     QRandomGenerator m_rng;
     std::function<void(const QString&)> m_progress;
@@ -128,23 +130,33 @@ bool SoakRun::startSession()
     if (!m_device.present() && !m_device.reappear(&error))
         return false;
     m_fig.movingAtReconnect += m_device.movingAxes().size(); // left by an unplugged host
-    if (!m_host.connectTo(m_model.id, m_device.slavePath(), &error)) {
+    if (!m_host.connectTo(m_model, m_device.slavePath(), &error)) {
         ++m_fig.connectFailures;
         m_host.disconnect();
         return false;
     }
     ++m_fig.sessions;
     m_vanishing = false;
-    if (!m_model.setup.isEmpty()) {
+    if (!m_profile.setup.isEmpty()) {
         record(m_host.call(
-            [&](ControllerSession& s) { return s.writeParameters(m_model.setup, false); }));
+            [&](ControllerSession& s) { return s.writeParameters(m_profile.setup, false); }));
     }
-    if (m_model.anchor) {
-        AxisVector here;
-        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+    if (m_profile.anchorPositions) {
+        const AxisVector here = whereAxesStand();
         record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
     }
     return true;
+}
+
+// Every axis where the device says it stands (SoakProfile::anchorPositions).
+AxisVector SoakRun::whereAxesStand()
+{
+    AxisVector out;
+    m_device.withSimulator([&](Simulator* s) {
+        for (Axis a : m_model.capabilities.axes)
+            out.insert(a, s->position(a));
+    });
+    return out;
 }
 
 void SoakRun::endSession()
@@ -188,7 +200,7 @@ void SoakRun::checkAxesAtRest()
 // without a stop command gets the time its targets need, then the machine's emergency stop.
 void SoakRun::settleAfterLinkLoss()
 {
-    if (m_model.stopCommand) {
+    if (m_model.capabilities.stopCommand) {
         m_device.halt();
         return;
     }
@@ -307,14 +319,13 @@ void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
         return;
-    if (m_model.anchor) {
+    if (m_profile.anchorPositions) {
         // "home it or move it to an absolute target first": where the device says it stands.
         ++m_fig.recoveries;
-        AxisVector here;
-        m_device.withSimulator([&](Simulator* s) { here = m_model.anchor(s); });
+        const AxisVector here = whereAxesStand();
         record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
     }
-    for (const QString& operation : m_model.recovery) {
+    for (const QString& operation : m_profile.recovery) {
         for (Axis a : m_host.session().capabilities().axes) {
             ++m_fig.recoveries;
             record(m_host.call([&](ControllerSession& s) {
@@ -384,18 +395,19 @@ void SoakRun::cmdVelocity()
 
 void SoakRun::cmdParameters(bool write)
 {
-    if (m_model.setup.isEmpty() && m_model.readable.isEmpty()) {
+    if (m_profile.setup.isEmpty() && m_profile.readable.isEmpty()) {
         // No parameters at all (the laser axes): a status request instead.
         record(m_host.call([](ControllerSession& s) { return s.refreshStatus(); }));
         return;
     }
-    if (write && !m_model.setup.isEmpty()) {
-        const bool verify = !m_model.readable.isEmpty() && m_rng.bounded(2);
+    if (write && !m_profile.setup.isEmpty()) {
+        const bool verify = !m_profile.readable.isEmpty() && m_rng.bounded(2);
         record(m_host.call(
-            [&](ControllerSession& s) { return s.writeParameters(m_model.setup, verify); }));
+            [&](ControllerSession& s) { return s.writeParameters(m_profile.setup, verify); }));
     } else {
-        const QStringList names =
-            m_model.readable.isEmpty() ? QStringList{m_model.setup.firstKey()} : m_model.readable;
+        const QStringList names = m_profile.readable.isEmpty()
+                                      ? QStringList{m_profile.setup.firstKey()}
+                                      : m_profile.readable;
         record(m_host.call([&](ControllerSession& s) { return s.readParameters(names); }));
     }
 }
@@ -408,7 +420,7 @@ void SoakRun::cmdParameters(bool write)
 // unmatched.
 void SoakRun::compareMoves()
 {
-    const QList<DeviceMove> journal = m_device.moves();
+    const QList<SimulatedMove> journal = m_device.moves();
     QList<int> indices; // journal indices of the moves made by commands
     int r = 0;
     for (int j = 0; j < journal.size(); ++j) {
@@ -429,7 +441,7 @@ void SoakRun::compareMoves()
         QList<int> starts(wanted.size(), 0);
         int next = 0;
         for (int j : indices) {
-            const DeviceMove& d = journal.at(j);
+            const SimulatedMove& d = journal.at(j);
             if (d.axis != axis)
                 continue;
             // Commands sent before the device journaled this move, within the window.
@@ -459,8 +471,8 @@ void SoakRun::compareMoves()
 }
 
 // STEPDECK_SOAK_VERBOSE: the first unmatched device moves with the commands around them.
-void SoakRun::reportUnmatched(Axis axis, int j, const DeviceMove& d, const QList<Commanded>& wanted,
-                              int next)
+void SoakRun::reportUnmatched(Axis axis, int j, const SimulatedMove& d,
+                              const QList<Commanded>& wanted, int next)
 {
     static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
     if (!verbose || m_fig.unmatchedDeviceMoves > 20)
@@ -481,7 +493,7 @@ void SoakRun::reportUnmatched(Axis axis, int j, const DeviceMove& d, const QList
 }
 } // namespace
 
-SoakFigures runSoak(const SoakModel& model, int commands, quint32 seed,
+SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed,
                     const std::function<void(const QString&)>& progress)
 {
     SoakRun run(model, commands, seed, progress);

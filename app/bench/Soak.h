@@ -1,5 +1,5 @@
 #pragma once
-#include "SoakModels.h"
+#include "model/ModelInfo.h"
 #include <QJsonObject>
 #include <QMap>
 
@@ -30,7 +30,7 @@ struct SoakFigures
     qint64 deviceMoves = 0;       // per axis
     qint64 unconfirmedMoves = 0;  // device started it, host was told it failed
     qint64 unmatchedDeviceMoves = 0;
-    qint64 recoveries = 0;         // operator actions after refused moves (SoakModel::recovery)
+    qint64 recoveries = 0;         // operator actions after refused moves (SoakProfile::recovery)
     qint64 jogMoves = 0;           // device moves made by jogs (EMIS, laser: target chunks)
     qint64 emergencyStops = 0;     // no stop command: axes still moving after a lost link
     QMap<QString, qint64> faults;  // injected, by kind
@@ -48,8 +48,9 @@ struct SoakFigures
 };
 
 // Runs `commands` random commands against the model's simulator over a pseudo-terminal with
-// ~1 % injected faults; progress lines go to `progress` (may be empty).
-SoakFigures runSoak(const SoakModel& model, int commands, quint32 seed,
+// ~1 % injected faults, as its ModelInfo::soak profile says; progress lines go to `progress`
+// (may be empty).
+SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed,
                     const std::function<void(const QString&)>& progress);
 
 } // namespace stepdeck::bench

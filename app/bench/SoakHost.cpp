@@ -1,14 +1,8 @@
 #include "SoakHost.h"
 #include "BenchDevice.h"
-#include <QElapsedTimer>
-#include <QEventLoop>
-#include <QTimer>
+#include "EventWait.h"
 
 namespace stepdeck::bench {
-
-namespace {
-constexpr int kWakeMs = 2;
-}
 
 SoakHost::SoakHost(QObject* parent) : QObject(parent)
 {
@@ -27,16 +21,7 @@ SoakHost::~SoakHost()
 
 bool SoakHost::waitUntil(const std::function<bool()>& done, int timeoutMs)
 {
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (clock.elapsed() >= timeoutMs)
-            return false;
-        QEventLoop loop;
-        QTimer::singleShot(kWakeMs, &loop, &QEventLoop::quit);
-        loop.exec();
-    }
-    return true;
+    return bench::waitUntil(done, timeoutMs);
 }
 
 void SoakHost::idle(int ms)
@@ -44,13 +29,12 @@ void SoakHost::idle(int ms)
     waitUntil([] { return false; }, ms);
 }
 
-bool SoakHost::connectTo(const QString& modelId, const QString& port, QString* error)
+bool SoakHost::connectTo(const ModelInfo& model, const QString& port, QString* error)
 {
     m_session.destroy();
     m_finished.clear();
     m_linkLeftNs = -1;
     ConnectionSpec spec;
-    spec.modelId = modelId;
     spec.port = port;
     spec.options.pollIntervalMs = 20;
     // Models that learn of an arrival only from the device (laser status frames) wait this
@@ -58,7 +42,7 @@ bool SoakHost::connectTo(const QString& modelId, const QString& port, QString* e
     // arrives within a fraction of a second, so a lost arrival frame is reported as a timeout
     // after 3 s instead of outlasting kRequestBoundMs and counting as a hang.
     spec.options.arrivalTimeoutMs = 3000;
-    if (!m_session.create(spec, error))
+    if (!m_session.create(model, spec, error))
         return false;
     const RequestId id = m_session.open();
     waitUntil([&] { return connected() || m_finished.contains(id); }, 5000);

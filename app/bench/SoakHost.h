@@ -17,7 +17,7 @@ public:
     ~SoakHost() override;
 
     // Creates the stack on port and waits until Connected; false with *error otherwise.
-    bool connectTo(const QString& modelId, const QString& port, QString* error);
+    bool connectTo(const ModelInfo& model, const QString& port, QString* error);
     // Orderly end: close (the adapter stops what it tracks), then destroy the stack.
     void disconnect();
     bool connected() const { return m_session.linkState() == LinkState::Connected; }

@@ -5,6 +5,7 @@
 #include "Replug.h"
 #include "Soak.h"
 #include "model/NumberParsing.h"
+#include "protocols/Registry.h"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QProcess>
@@ -18,7 +19,7 @@ struct Options
 {
     int soak = 0;
     int replug = 0;
-    QString model; // empty: every soak model
+    QString model; // empty: every registered model
     quint32 seed = 1;
     bool json = false;
     bool child = false;
@@ -65,10 +66,10 @@ bool parse(const QStringList& args, Options* o, QString* error)
     return true;
 }
 
-QList<const SoakModel*> selected(const Options& o, QString* error)
+QList<const ModelInfo*> selected(const Options& o, QString* error)
 {
-    QList<const SoakModel*> out;
-    for (const SoakModel& m : soakModels()) {
+    QList<const ModelInfo*> out;
+    for (const ModelInfo& m : models()) {
         if (o.model.isEmpty() || m.id == o.model)
             out << &m;
     }
@@ -78,7 +79,7 @@ QList<const SoakModel*> selected(const Options& o, QString* error)
 }
 
 // Runs one model's soak in a child process and reads its figures.
-SoakFigures soakInChild(const QString& program, const SoakModel& model, const Options& o)
+SoakFigures soakInChild(const QString& program, const ModelInfo& model, const Options& o)
 {
     QProcess child;
     child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
@@ -110,8 +111,8 @@ SoakFigures soakInChild(const QString& program, const SoakModel& model, const Op
 int soak(const QString& program, const Options& o)
 {
     QString error;
-    const QList<const SoakModel*> models = selected(o, &error);
-    if (models.isEmpty()) {
+    const QList<const ModelInfo*> chosen = selected(o, &error);
+    if (chosen.isEmpty()) {
         print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
         return 2;
     }
@@ -120,14 +121,14 @@ int soak(const QString& program, const Options& o)
             print(stderr, line);
     };
     if (o.child) { // one model, in this process; the parent reads the last line
-        const SoakFigures fig = runSoak(*models.first(), o.soak, o.seed, progress);
+        const SoakFigures fig = runSoak(*chosen.first(), o.soak, o.seed, progress);
         print(stdout,
               QString::fromUtf8(QJsonDocument(fig.toJson()).toJson(QJsonDocument::Compact)));
         return 0;
     }
     QJsonArray all;
     bool clean = true;
-    for (const SoakModel* m : models) {
+    for (const ModelInfo* m : chosen) {
         const SoakFigures fig = soakInChild(program, *m, o);
         clean = clean && fig.clean();
         all.append(fig.toJson());
@@ -143,13 +144,13 @@ int soak(const QString& program, const Options& o)
 int replug(const Options& o)
 {
     QString error;
-    const QList<const SoakModel*> models = selected(o, &error);
-    if (models.isEmpty()) {
+    const QList<const ModelInfo*> chosen = selected(o, &error);
+    if (chosen.isEmpty()) {
         print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
         return 2;
     }
     QJsonArray all;
-    for (const SoakModel* m : models) {
+    for (const ModelInfo* m : chosen) {
         const ReplugFigures fig = runReplug(*m, o.replug, o.seed, [&](const QString& line) {
             if (!o.json)
                 print(stderr, line);

@@ -154,7 +154,8 @@ int main(int argc, char** argv)
                               "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
                               "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
                               "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                              "Measures the E-LAB adapter against its simulator over a "
+                              "Measures the first model with a feed stream (E-LAB) against its "
+                              "simulator over a "
                               "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                               "DC2 feed throughput, unpaced and paced at the line rate.\n"
                               "Figures only; takes 10-20 s.\n"
@@ -174,9 +175,16 @@ int main(int argc, char** argv)
             return 2;
         }
     }
-    const ModelInfo* model = findModel(QStringLiteral("elab"));
+    // The figures need a stream to queue behind and to meter: the first registered model
+    // whose descriptor has one (ModelInfo::streamBench; E-LAB).
+    const ModelInfo* model = nullptr;
+    for (const ModelInfo& m : models()) {
+        if (!model && m.streamBench.supported())
+            model = &m;
+    }
     if (!model) {
-        print(stderr, QStringLiteral("stepdeck-bench: model elab is not built in"));
+        print(stderr, QStringLiteral("stepdeck-bench: no model with a stream to measure is "
+                                     "built in"));
         return 1;
     }
     const Results results = measureAll(*model, !asJson);

@@ -4,6 +4,7 @@
 #include "CliOutput.h"
 #include "CliText.h"
 #include "model/NumberParsing.h"
+#include "protocols/Registry.h"
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <limits>
@@ -270,6 +271,7 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
                     CliOptions* options, QString* error)
 {
     CliOptions o;
+    o.model = models().first().id;
     QCommandLineParser global; // up to the command name; the rest stays positional
     global.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
     addGlobalOptions(&global);

@@ -28,7 +28,7 @@ struct CommandSyntax
 // positional arguments and the options of its own it was given.
 struct CliOptions
 {
-    QString model = QStringLiteral("elab");
+    QString model; // parseArguments() starts from the first registered model (E-LAB)
     QString port = QStringLiteral("sim");
     std::optional<int> address;    // --address N: X=N for a single-drive model
     QMap<Axis, int> axisAddresses; // --axes X=1,Y=2,Z=3
@@ -71,8 +71,8 @@ Outcome parseAxisIntegers(const QString& command, const QStringList& args, const
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
                          AxisVelocities* out);
 // "X=1,Y=2,Z=3" (the --axes map; CliAxisArguments.cpp like the two above). Only the syntax is
-// checked here; which addresses a bus allows is the model's (e.g. nanotec::kMinAddress..
-// kMaxAddress), checked when the controller is created.
+// checked here; which addresses a bus allows is the model's (Capabilities::minBusAddress..
+// maxBusAddress), checked when the controller is created.
 bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error);
 
 } // namespace stepdeck::cli

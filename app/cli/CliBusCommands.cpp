@@ -4,29 +4,52 @@
 // protocol work.
 #include "CliCommands.h"
 #include "CliText.h"
-#include "protocols/nanotec/NanotecCodec.h"
+#include "model/ModelOperations.h"
 #include <QCoreApplication>
 #include <QJsonArray>
 
 namespace stepdeck::cli {
 
 namespace {
-// The bus address range is the core's (Nanotec manual 1.1: 1..254), not a second copy.
-using nanotec::kMaxAddress;
-using nanotec::kMinAddress;
 constexpr int kScanMsPerAddress = 100; // the adapter waits ~40 ms for a silent address
 
+struct AddressRange
+{
+    int first = 0;
+    int last = 0;
+};
+
+// The bus addresses are the model's (Capabilities::minBusAddress..maxBusAddress, e.g. Nanotec
+// manual 1.1: 1..254), not a second copy. A model without a bus has none; its --first/--last
+// are read against the range of any bus this build knows, so a malformed address is a usage
+// error whatever the model, and the scan itself is then refused as unsupported.
+AddressRange busAddresses(const Capabilities& caps)
+{
+    if (caps.multiDrive)
+        return {caps.minBusAddress, caps.maxBusAddress};
+    AddressRange any{0, -1};
+    for (const ModelInfo& model : models()) {
+        const Capabilities& c = model.capabilities;
+        if (!c.multiDrive)
+            continue;
+        any.first = any.last < any.first ? c.minBusAddress : qMin(any.first, c.minBusAddress);
+        any.last = qMax(any.last, c.maxBusAddress);
+    }
+    return any;
+}
+
 // "--first N" / "--last N" of scan; false with *error set when malformed.
-bool readAddress(const CliOptions& options, const char* option, int* value, QString* error)
+bool readAddress(const CliOptions& options, const char* option, const AddressRange& range,
+                 int* value, QString* error)
 {
     const std::optional<QString> text = options.value(option);
     if (!text)
         return true;
-    if (numbers::parseInt(*text, kMinAddress, kMaxAddress, value) != NumberError::None) {
+    if (numbers::parseInt(*text, range.first, range.last, value) != NumberError::None) {
         *error = CliText::tr("scan --%1 needs an address within %2..%3, got '%4'")
                      .arg(QLatin1String(option))
-                     .arg(kMinAddress)
-                     .arg(kMaxAddress)
+                     .arg(range.first)
+                     .arg(range.last)
                      .arg(*text);
         return false;
     }
@@ -44,11 +67,12 @@ QString valueText(const QVariant& value)
 Outcome cmdScan(CliContext& c, QStringList args)
 {
     QString error;
-    int first = kMinAddress;
-    int last = kMaxAddress;
+    const AddressRange range = busAddresses(c.capabilities());
+    int first = range.first;
+    int last = range.last;
     const bool ranged = c.options.value("first") || c.options.value("last");
-    if (!readAddress(c.options, "first", &first, &error) ||
-        !readAddress(c.options, "last", &last, &error))
+    if (!readAddress(c.options, "first", range, &first, &error) ||
+        !readAddress(c.options, "last", range, &last, &error))
         return Outcome::usage(error);
     if (!args.isEmpty())
         return Outcome::usage(
@@ -67,10 +91,9 @@ Outcome cmdScan(CliContext& c, QStringList args)
         qMax(CliSession::kRequestTimeoutMs, (last - first + 1) * kScanMsPerAddress + 10000);
     const CommandResult result = c.session.call(
         [&](ControllerSession& s) {
-            return ranged
-                       ? s.modelOperation(QStringLiteral("scan"), {{QStringLiteral("first"), first},
-                                                                   {QStringLiteral("last"), last}})
-                       : s.scanBus();
+            return ranged ? s.modelOperation(operation::kScan, {{QStringLiteral("first"), first},
+                                                                {QStringLiteral("last"), last}})
+                          : s.scanBus();
         },
         timeoutMs);
     if (!result.ok())
@@ -114,7 +137,7 @@ Outcome cmdRecords(CliContext& c, QStringList args)
     if (!outcome.ok())
         return outcome;
     const CommandResult result = c.session.call([&](ControllerSession& s) {
-        return s.modelOperation(QStringLiteral("read-all-records"),
+        return s.modelOperation(operation::kReadAllRecords,
                                 {{QStringLiteral("axis"), axisName(*axis)}});
     });
     if (!result.ok())

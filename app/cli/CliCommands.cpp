@@ -1,8 +1,8 @@
 #include "CliCommands.h"
 #include "CliText.h"
+#include "transport/PortListing.h"
 #include <QCoreApplication>
 #include <QJsonArray>
-#include <QSerialPortInfo>
 
 namespace stepdeck::cli {
 
@@ -161,25 +161,20 @@ Outcome cmdPorts(CliContext& c, QStringList args)
         return Outcome::usage(CliText::tr("ports takes no arguments"));
     QJsonArray list;
     QStringList lines;
-    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts()) {
-        const QString vidPid = info.hasVendorIdentifier() && info.hasProductIdentifier()
-                                   ? QStringLiteral("%1:%2")
-                                         .arg(info.vendorIdentifier(), 4, 16, QLatin1Char('0'))
-                                         .arg(info.productIdentifier(), 4, 16, QLatin1Char('0'))
-                                   : QString();
-        list.append(QJsonObject{{"path", info.systemLocation()},
-                                {"description", info.description()},
-                                {"manufacturer", info.manufacturer()},
-                                {"serialNumber", info.serialNumber()},
+    for (const SerialPortListing& port : listSerialPorts()) {
+        const QString vidPid = port.vidPid();
+        list.append(QJsonObject{{"path", port.path},
+                                {"description", port.description},
+                                {"manufacturer", port.manufacturer},
+                                {"serialNumber", port.serialNumber},
                                 {"vidPid", vidPid.isEmpty() ? QJsonValue() : QJsonValue(vidPid)}});
         lines << QStringLiteral("%1  %2  %3%4")
-                     .arg(info.systemLocation(), -16)
-                     .arg(info.description().isEmpty() ? CliText::tr("(no description)")
-                                                       : info.description())
+                     .arg(port.path, -16)
+                     .arg(port.description.isEmpty() ? CliText::tr("(no description)")
+                                                     : port.description)
                      .arg(vidPid.isEmpty() ? CliText::tr("(not USB)") : vidPid)
-                     .arg(info.manufacturer().isEmpty()
-                              ? QString()
-                              : QStringLiteral("  ") + info.manufacturer());
+                     .arg(port.manufacturer.isEmpty() ? QString()
+                                                      : QStringLiteral("  ") + port.manufacturer);
     }
     if (c.json()) {
         printJson(QJsonObject{{"ports", list}});

@@ -3,6 +3,7 @@
 // program commands happen in the adapter (nothing is sent when they fail); these handlers
 // parse the arguments and print the results.
 #include "CliCommands.h"
+#include "model/ModelOperations.h"
 #include "model/NumberParsing.h"
 #include <QCoreApplication>
 
@@ -75,7 +76,7 @@ Outcome cmdStore(CliContext& c, QStringList args)
     if (c.options.flag("clear")) {
         if (!args.isEmpty())
             return Outcome::usage(CliEmis::tr("store --clear takes no other arguments"));
-        const Outcome result = connectAndCall(c, QStringLiteral("clear-stored-parameters"), {});
+        const Outcome result = connectAndCall(c, operation::kClearStoredParameters, {});
         if (result.ok() && !c.json()) {
             printLine(CliEmis::tr("*PESYS sent: the SMCflex compatibility entry is erased; the "
                                   "other system parameters stay until they are overwritten "
@@ -106,7 +107,7 @@ Outcome cmdStore(CliContext& c, QStringList args)
         return Outcome::failure(ExitInvalidValue, error);
     QVariant value;
     const Outcome result =
-        connectAndCall(c, QStringLiteral("store-parameters"),
+        connectAndCall(c, operation::kStoreParameters,
                        {{QStringLiteral("parameters"), QVariant::fromValue(set)}}, &value);
     if (result.ok() && !c.json()) {
         printLine(CliEmis::tr("stored as power-on values: %1 (sent: %2)")
@@ -126,7 +127,7 @@ Outcome cmdGetStored(CliContext& c, QStringList args)
                                     CliEmis::tr("unknown parameter '%1'").arg(name));
     }
     QVariant value;
-    const Outcome result = connectAndCall(c, QStringLiteral("read-stored-parameters"), {}, &value);
+    const Outcome result = connectAndCall(c, operation::kReadStoredParameters, {}, &value);
     if (!result.ok())
         return result;
     const QVariantMap map = value.toMap();
@@ -186,7 +187,7 @@ Outcome cmdOutput(CliContext& c, QStringList args)
     }
     const bool on = state == QLatin1String("on");
     const Outcome result =
-        connectAndCall(c, QStringLiteral("set-output"),
+        connectAndCall(c, operation::kSetOutput,
                        {{QStringLiteral("output"), int(number)}, {QStringLiteral("on"), on}});
     if (result.ok() && !c.json())
         printLine(CliEmis::tr("output %1 %2")
@@ -213,8 +214,8 @@ Outcome cmdProgram(CliContext& c, QStringList args)
     if (erase) {
         if (!args.isEmpty() || title)
             return Outcome::usage(CliEmis::tr("program N --erase takes nothing else"));
-        const Outcome result = connectAndCall(c, QStringLiteral("erase-input-program"),
-                                              {{QStringLiteral("input"), input}});
+        const Outcome result =
+            connectAndCall(c, operation::kEraseInputProgram, {{QStringLiteral("input"), input}});
         if (result.ok() && !c.json())
             printLine(CliEmis::tr("program of input %1 erased").arg(input));
         return result;
@@ -223,7 +224,7 @@ Outcome cmdProgram(CliContext& c, QStringList args)
         return Outcome::usage(CliEmis::tr("program N needs --title TEXT (the program's header)"));
     if (args.isEmpty())
         return Outcome::usage(CliEmis::tr("program N --title TEXT needs at least one command"));
-    const Outcome result = connectAndCall(c, QStringLiteral("write-input-program"),
+    const Outcome result = connectAndCall(c, operation::kWriteInputProgram,
                                           {{QStringLiteral("input"), input},
                                            {QStringLiteral("title"), *title},
                                            {QStringLiteral("commands"), args},

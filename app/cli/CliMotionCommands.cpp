@@ -2,6 +2,7 @@
 // unknown) come from the adapter, which knows the manual's rules; the CLI only checks shapes.
 #include "CliCommands.h"
 #include "CliText.h"
+#include "model/ModelOperations.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QtMath>
@@ -268,7 +269,7 @@ Outcome cmdHome(CliContext& c, QStringList args)
             for (auto it = v.cbegin(); it != v.cend(); ++it)
                 axes += it.value() != 0 ? axisName(it.key()) : QString();
             return s.modelOperation(
-                QStringLiteral("reference"),
+                operation::kReference,
                 {{QStringLiteral("axes"), axes}, {QStringLiteral("simultaneous"), true}});
         }
         QMap<Axis, int> directions;

@@ -1,4 +1,5 @@
 #include "CliSession.h"
+#include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -84,7 +85,10 @@ Outcome CliSession::create()
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
     QString error;
-    if (!m_session.create(spec, &error))
+    const ModelInfo* model = findModel(spec.modelId);
+    if (!model)
+        return Outcome::usage(unknownModelText(spec.modelId));
+    if (!m_session.create(*model, spec, &error))
         return Outcome::usage(error);
     return Outcome::success();
 }

@@ -1,10 +1,6 @@
 #include "SimScenario.h"
 #include "model/NumberParsing.h"
-#include "protocols/elab/ElabCodec.h"
-#include "protocols/elab/ElabSimulator.h"
-#include "protocols/emis/EmisSimulator.h"
-#include "protocols/laser/LaserAxisSimulator.h"
-#include "protocols/nanotec/NanotecSimulator.h"
+#include "protocols/Registry.h"
 #include "sim/Simulator.h"
 #include <QCoreApplication>
 #include <QtMath>
@@ -36,14 +32,14 @@ QString optionName(const QString& arg)
 }
 
 // "X=-1000:1000"
-bool parseLimit(const QString& text, QMap<Axis, LimitRange>* limits, QString* error)
+bool parseLimit(const QString& text, QMap<Axis, SwitchRange>* limits, QString* error)
 {
     const int eq = text.indexOf(QLatin1Char('='));
     const auto axis = eq > 0 ? axisFromName(QStringView(text).left(eq)) : std::nullopt;
     const QStringList range = text.mid(eq + 1).split(QLatin1Char(':'));
     bool okMin = false;
     bool okMax = false;
-    LimitRange limit;
+    SwitchRange limit;
     if (range.size() == 2) {
         okMin = numbers::parseInteger(range[0], &limit.minimum) == NumberError::None;
         okMax = numbers::parseInteger(range[1], &limit.maximum) == NumberError::None;
@@ -143,9 +139,10 @@ bool parseAddresses(const QString& option, const QString& text, QList<int>* out,
     return true;
 }
 
-// nanotec: --no-encoder LIST, --calibration-ms MS; *matched tells whether name was one.
-bool parseNanotecOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
-                        bool* matched, QString* error)
+// Closed loop (Nanotec manual 8.1): --no-encoder LIST, --calibration-ms MS; *matched tells
+// whether name was one.
+bool parseClosedLoopOption(const QString& name, const QStringList& args, int* i,
+                           SimulatorScenario* s, bool* matched, QString* error)
 {
     *matched = name == QLatin1String("--no-encoder") || name == QLatin1String("--calibration-ms");
     QString value;
@@ -154,7 +151,7 @@ bool parseNanotecOption(const QString& name, const QStringList& args, int* i, Si
     if (!takeValue(args, i, &value, error))
         return false;
     if (name == QLatin1String("--no-encoder"))
-        return parseAddresses(name, value, &s->noEncoder, error);
+        return parseAddresses(name, value, &s->drivesWithoutEncoder, error);
     int ms = 0;
     if (numbers::parseInt(value, 20, 3600000, &ms) != NumberError::None) {
         *error = SimText::tr("--calibration-ms expects milliseconds from 20 to 3600000, got '%1'")
@@ -186,11 +183,11 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         const QString name = optionName(args.at(i));
         QString value;
         bool fault = false;
-        bool nanotecOption = false;
+        bool closedLoop = false;
         if (!parseFaultOption(name, args, &i, &s, &fault, error) ||
-            !parseNanotecOption(name, args, &i, &s, &nanotecOption, error))
+            !parseClosedLoopOption(name, args, &i, &s.machine, &closedLoop, error))
             return false;
-        if (fault || nanotecOption)
+        if (fault || closedLoop)
             continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
@@ -199,7 +196,7 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--pace")) {
             s.pace = true;
         } else if (name == QLatin1String("--setup-complete")) {
-            s.setupComplete = true;
+            s.machine.setupComplete = true;
         } else if (name == QLatin1String("--model")) {
             if (!takeValue(args, &i, &s.model, error))
                 return false;
@@ -224,24 +221,25 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
                     SimText::tr("--temperature expects whole degrees Celsius, got '%1'").arg(value);
                 return false;
             }
-            s.temperature = celsius;
+            s.machine.temperature = celsius;
         } else if (name == QLatin1String("--limit")) {
-            if (!takeValue(args, &i, &value, error) || !parseLimit(value, &s.limits, error))
+            if (!takeValue(args, &i, &value, error) || !parseLimit(value, &s.machine.limits, error))
                 return false;
         } else if (name == QLatin1String("--position")) {
-            if (!takeValue(args, &i, &value, error) || !parsePosition(value, &s.positions, error))
+            if (!takeValue(args, &i, &value, error) ||
+                !parsePosition(value, &s.machine.positions, error))
                 return false;
         } else if (name == QLatin1String("--end-switch")) {
             if (!takeValue(args, &i, &value, error) ||
-                !parsePosition(value, &s.endSwitches, error, name))
+                !parsePosition(value, &s.machine.endSwitches, error, name))
                 return false;
         } else if (name == QLatin1String("--speed")) {
-            if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.speed, error))
+            if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.machine.speed, error))
                 return false;
         } else if (name == QLatin1String("--silent")) {
-            s.silent = true;
+            s.machine.silent = true;
         } else if (name == QLatin1String("--garbage")) {
-            s.garbage = true;
+            s.machine.garbage = true;
         } else {
             *error = SimText::tr("unknown argument '%1' (try --help)").arg(args.at(i));
             return false;
@@ -254,45 +252,46 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
 QString simUsage()
 {
     return SimText::tr(
-        "Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
-        "\n"
-        "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
-        "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
-        "until SIGINT/SIGTERM.\n"
-        "\n"
-        "Options:\n"
-        "  --model MODEL      controller model (default elab)\n"
-        "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
-        "  --pace             release replies at the line's character rate (57600 8N2\n"
-        "                     for elab), so timing is like a real serial line\n"
-        "  --setup-complete   start with start/max speed and acceleration written\n"
-        "                     (the board powers on with setup incomplete)\n"
-        "  --temperature C    board temperature (above 50 sets over-temperature)\n"
-        "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
-        "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
-        "                     from the reference switch; laser-axis: units from the\n"
-        "                     home switch)\n"
-        "\n"
-        "nanotec only (closed loop, manual 8.1):\n"
-        "  --no-encoder LIST  drives (addresses) without encoder: their calibration and\n"
-        "                     closed-loop reference runs fail with a position error\n"
-        "  --calibration-ms MS  how long a calibration run (!101) takes (default 5000)\n"
-        "\n"
-        "laser-axis only:\n"
-        "  --speed UNITS      axis speed in position units per second (default 10000)\n"
-        "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
-        "  --silent           the axes move but never send a status frame\n"
-        "  --garbage          a malformed line before every status frame\n"
-        "\n"
-        "Faults (random, reproducible with the same --seed and the same traffic):\n"
-        "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
-        "  --corrupt P        each reply has one random byte replaced with probability P\n"
-        "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
-        "                     inside replies\n"
-        "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
-        "                     all while the terminal stays open (a frozen peer)\n"
-        "  --seed N           seed of the fault generator (default 1)\n"
-        "  --help, --version\n");
+               "Usage: stepdeck-sim [--model MODEL] [--drives 1,2,3] [OPTION]...\n"
+               "\n"
+               "Simulates a controller on a new pseudo-terminal. The first line on stdout is the\n"
+               "terminal's path; open it with `stepdeck-cli --port PATH ...` or the GUI. Serves\n"
+               "until SIGINT/SIGTERM.\n"
+               "\n"
+               "Options:\n"
+               "  --model MODEL      controller model: %1 (default %2)\n"
+               "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
+               "  --pace             release replies at the line's character rate (57600 8N2\n"
+               "                     for elab), so timing is like a real serial line\n"
+               "  --setup-complete   start with start/max speed and acceleration written\n"
+               "                     (the board powers on with setup incomplete)\n"
+               "  --temperature C    board temperature (above 50 sets over-temperature)\n"
+               "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
+               "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
+               "                     from the reference switch; laser-axis: units from the\n"
+               "                     home switch)\n"
+               "\n"
+               "nanotec only (closed loop, manual 8.1):\n"
+               "  --no-encoder LIST  drives (addresses) without encoder: their calibration and\n"
+               "                     closed-loop reference runs fail with a position error\n"
+               "  --calibration-ms MS  how long a calibration run (!101) takes (default 5000)\n"
+               "\n"
+               "laser-axis only:\n"
+               "  --speed UNITS      axis speed in position units per second (default 10000)\n"
+               "  --end-switch AXIS=POS  the end switch of an axis at this position\n"
+               "  --silent           the axes move but never send a status frame\n"
+               "  --garbage          a malformed line before every status frame\n"
+               "\n"
+               "Faults (random, reproducible with the same --seed and the same traffic):\n"
+               "  --drop P           each reply is lost with probability P (0..1, e.g. 0.01)\n"
+               "  --corrupt P        each reply has one random byte replaced with probability P\n"
+               "  --noise N          N random bytes per second (mean) sent unasked, between and\n"
+               "                     inside replies\n"
+               "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
+               "                     all while the terminal stays open (a frozen peer)\n"
+               "  --seed N           seed of the fault generator (default 1)\n"
+               "  --help, --version\n")
+        .arg(modelIds().join(QStringLiteral(", ")), models().first().id);
 }
 
 void applyFaults(const SimScenario& scenario, Simulator* simulator)
@@ -304,127 +303,45 @@ void applyFaults(const SimScenario& scenario, Simulator* simulator)
 }
 
 namespace {
-// EMIS SMC-IC4: --position is where the carriage stands, in steps from its reference switch
-// (the board's own counter starts at 0 there, as at power-on).
-bool applyEmisScenario(const SimScenario& scenario, emis::EmisSimulator* sim, QString* error)
+// The command-line name of each machine option, for the refusals.
+QString optionNames(ScenarioOptions options)
 {
-    if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
-        *error =
-            SimText::tr("--setup-complete, --temperature and --limit are not supported for model "
-                        "emis");
-        return false;
+    static const QList<QPair<ScenarioOption, const char*>> names{
+        {ScenarioOption::SetupComplete, "--setup-complete"},
+        {ScenarioOption::Temperature, "--temperature"},
+        {ScenarioOption::Limits, "--limit"},
+        {ScenarioOption::Positions, "--position"},
+        {ScenarioOption::Speed, "--speed"},
+        {ScenarioOption::EndSwitches, "--end-switch"},
+        {ScenarioOption::Silent, "--silent"},
+        {ScenarioOption::Garbage, "--garbage"},
+        {ScenarioOption::NoEncoder, "--no-encoder"},
+        {ScenarioOption::CalibrationMs, "--calibration-ms"}};
+    QStringList out;
+    for (const auto& [option, name] : names) {
+        if (options.testFlag(option))
+            out << QLatin1String(name);
     }
-    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
-        sim->setPhysicalPosition(it.key(), it.value());
-    sim->powerCycle(); // the counters start at 0 where the carriages stand
-    return true;
-}
-
-bool applyLaserScenario(const SimScenario& scenario, laser::LaserAxisSimulator* sim, QString* error)
-{
-    if (scenario.setupComplete || scenario.temperature || !scenario.limits.isEmpty()) {
-        *error =
-            SimText::tr("--setup-complete, --temperature and --limit are not supported for model "
-                        "laser-axis");
-        return false;
-    }
-    for (const QMap<Axis, qint64>* map : {&scenario.positions, &scenario.endSwitches}) {
-        if (map->contains(Axis::U)) {
-            *error = SimText::tr("model laser-axis has no axis U");
-            return false;
-        }
-    }
-    if (scenario.speed)
-        sim->setSpeed(*scenario.speed);
-    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
-        sim->powerOn(it.key(), it.value());
-    for (auto it = scenario.endSwitches.cbegin(); it != scenario.endSwitches.cend(); ++it)
-        sim->config(it.key()).endSwitch = it.value();
-    sim->faults().silent = scenario.silent;
-    sim->setGarbageBeforeStatus(scenario.garbage);
-    return true;
-}
-// nanotec: drives without encoder and the duration of a calibration run (manual 8.1).
-bool applyNanotecOptions(const SimScenario& scenario, Simulator* simulator, QString* error)
-{
-    auto* nanotecSim = qobject_cast<nanotec::NanotecSimulator*>(simulator);
-    if (!nanotecSim && (!scenario.noEncoder.isEmpty() || scenario.calibrationMs)) {
-        *error = SimText::tr("--no-encoder and --calibration-ms are only supported for model "
-                             "nanotec");
-        return false;
-    }
-    if (nanotecSim && scenario.calibrationMs)
-        nanotecSim->setCalibrationMs(*scenario.calibrationMs);
-    for (int address : scenario.noEncoder) {
-        if (!nanotecSim->drive(address)) {
-            *error =
-                SimText::tr("--no-encoder: no drive at address %1 (see --drives)").arg(address);
-            return false;
-        }
-        nanotecSim->setEncoderConnected(address, false);
-    }
-    return true;
+    return out.join(QStringLiteral(", "));
 }
 } // namespace
 
-bool applyScenario(const SimScenario& scenario, Simulator* simulator, QString* error)
+bool applyScenario(const SimScenario& scenario, const ModelInfo& model, Simulator* simulator,
+                   QString* error)
 {
-    if (!applyNanotecOptions(scenario, simulator, error))
-        return false;
-    if (auto* emisSim = qobject_cast<emis::EmisSimulator*>(simulator))
-        return applyEmisScenario(scenario, emisSim, error);
-    if (auto* laserSim = qobject_cast<laser::LaserAxisSimulator*>(simulator))
-        return applyLaserScenario(scenario, laserSim, error);
-    const bool laserOnly =
-        scenario.speed || !scenario.endSwitches.isEmpty() || scenario.silent || scenario.garbage;
-    if (laserOnly) {
-        *error = SimText::tr(
-            "--speed, --end-switch, --silent and --garbage are only supported for model "
-            "laser-axis");
+    const ScenarioOptions unsupported = scenario.machine.used() & ~model.scenario.options;
+    if (unsupported) {
+        *error =
+            SimText::tr("%1: not supported for model %2").arg(optionNames(unsupported), model.id);
         return false;
     }
-    auto* elabSim = qobject_cast<elab::ElabSimulator*>(simulator);
-    const bool needsModelApi = scenario.setupComplete || scenario.temperature ||
-                               !scenario.limits.isEmpty() || !scenario.positions.isEmpty();
-    if (!elabSim) {
-        if (needsModelApi) {
-            *error = SimText::tr("--setup-complete, --temperature, --limit and --position are only "
-                                 "supported for model elab");
+    for (Axis axis : scenario.machine.axes()) {
+        if (!model.capabilities.axes.contains(axis)) {
+            *error = SimText::tr("model %1 has no axis %2").arg(model.id, axisName(axis));
             return false;
         }
-        return true;
     }
-    if (scenario.setupComplete) {
-        // Through the protocol itself, exactly as a host would do it (manual: Setup Befehle);
-        // the simulator is not attached yet, so its ACKs go nowhere.
-        using namespace elab;
-        const Triple<quint16> start{100, 100, 100};
-        const Triple<quint16> max{5000, 5000, 5000};
-        const Triple<quint16> accel{1000, 1000, 1000};
-        const bool paced = simulator->options().paceOutput;
-        simulator->setPacing(false, simulator->options().line);
-        elabSim->receive(encode::ramp(RampKind::StartSpeed, start) +
-                         encode::ramp(RampKind::MaxSpeed, max) +
-                         encode::ramp(RampKind::Acceleration, accel));
-        simulator->setPacing(paced, simulator->options().line);
-    }
-    if (scenario.temperature)
-        elabSim->setTemperature(*scenario.temperature);
-    for (auto it = scenario.limits.cbegin(); it != scenario.limits.cend(); ++it) {
-        if (it.key() == Axis::U) {
-            *error = SimText::tr("model elab has no axis U");
-            return false;
-        }
-        elabSim->setLimitPositions(it.key(), it.value().minimum, it.value().maximum);
-    }
-    for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it) {
-        if (it.key() == Axis::U) {
-            *error = SimText::tr("model elab has no axis U");
-            return false;
-        }
-        elabSim->setPosition(it.key(), it.value());
-    }
-    return true;
+    return !model.scenario.apply || model.scenario.apply(scenario.machine, simulator, error);
 }
 
 } // namespace stepdeck::simapp

@@ -4,6 +4,7 @@
 #include "SimScenario.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
+#include "sim/Simulator.h"
 #include <QCoreApplication>
 #include <cstdio>
 
@@ -40,7 +41,8 @@ int main(int argc, char** argv)
                 QStringLiteral("stepdeck-sim %1").arg(QCoreApplication::applicationVersion()));
         return 0;
     }
-    const ModelInfo* model = findModel(scenario.model);
+    const ModelInfo* model =
+        scenario.model.isEmpty() ? &models().first() : findModel(scenario.model);
     if (!model || !model->createSimulator) {
         printTo(stderr, QStringLiteral("stepdeck-sim: %1")
                             .arg(simapp::SimText::tr("unknown controller model '%1' (known: %2)")
@@ -55,7 +57,7 @@ int main(int argc, char** argv)
     options.seed = scenario.seed;
     Simulator* simulator = model->createSimulator(options);
     simulator->setParent(&application);
-    if (!simapp::applyScenario(scenario, simulator, &error)) {
+    if (!simapp::applyScenario(scenario, *model, simulator, &error)) {
         printTo(stderr, QStringLiteral("stepdeck-sim: %1").arg(error));
         return 2;
     }

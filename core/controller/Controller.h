@@ -32,7 +32,6 @@ public:
     Controller(Transport* transport, const ControllerOptions& options, QObject* parent = nullptr);
     ~Controller() override;
 
-    virtual QString modelId() const = 0;
     virtual Capabilities capabilities() const = 0;
     virtual ParameterSchema schema() const = 0;
 

@@ -51,17 +51,20 @@ ControllerSession::~ControllerSession()
     destroy();
 }
 
-bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
+bool ControllerSession::create(const ModelInfo& modelInfo, const ConnectionSpec& connection,
+                               QString* error)
 {
     destroy();
-    m_model = findModel(spec.modelId);
-    if (!m_model) {
+    if (!modelInfo.createController ||
+        (connection.port == QLatin1String("sim") && !modelInfo.createSimulator)) {
         if (error)
-            *error = tr("unknown controller model '%1' (known: %2)")
-                         .arg(spec.modelId, modelIds().join(QStringLiteral(", ")));
+            *error = tr("model %1 cannot be built in this program").arg(modelInfo.id);
         return false;
     }
-    m_spec = spec;
+    m_model = &modelInfo;
+    m_spec = connection;
+    m_spec.modelId = modelInfo.id;
+    const ConnectionSpec& spec = m_spec;
     m_thread.start();
     m_context = new ThreadContext;
     m_context->moveToThread(&m_thread);

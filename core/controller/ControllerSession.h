@@ -1,6 +1,7 @@
 #pragma once
 #include "controller/Controller.h"
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
+#include "sim/Simulator.h"
 #include <QObject>
 #include <QThread>
 #include <atomic>
@@ -10,8 +11,8 @@ namespace stepdeck {
 
 struct ConnectionSpec
 {
-    QString modelId;
-    QString port; // serial device path, "tcp://HOST:PORT" or "sim" (in-process simulator)
+    QString modelId; // how the GUI and CLI name the model; create() takes the descriptor
+    QString port;    // serial device path, "tcp://HOST:PORT" or "sim" (in-process simulator)
     ControllerOptions options;
     SimulatorOptions simulator; // used for port "sim"
 };
@@ -30,9 +31,10 @@ public:
     explicit ControllerSession(QObject* parent = nullptr);
     ~ControllerSession() override;
 
-    // Creates the stack for spec in the controller thread. Returns false and says why when
-    // the model is unknown. The link opens with open().
-    bool create(const ConnectionSpec& spec, QString* error);
+    // Creates the model's stack for spec in the controller thread; spec().modelId becomes
+    // model.id. model must outlive the session (the registry's entries do). Returns false and
+    // says why when the model cannot be built. The link opens with open().
+    bool create(const ModelInfo& model, const ConnectionSpec& spec, QString* error);
     void destroy();
     bool isCreated() const { return m_controller != nullptr; }
 

@@ -33,22 +33,26 @@ struct Capabilities
     bool panic = true;
     bool resetLine = false;  // hardware reset via a modem line (E-LAB: RTS)
     bool multiDrive = false; // several addressed drives on one link (Nanotec)
-    bool records = false;    // stored records and error memory as model operations (Nanotec)
+    // multiDrive: the addresses a drive on the bus may have (Nanotec 1.1: 1..254).
+    int minBusAddress = 0;
+    int maxBusAddress = 0;
+    bool records = false;       // stored records and error memory as model operations (Nanotec)
     // The closed-loop commissioning workflow as model operations (model/ClosedLoop.h): motor
     // data check, calibration run, closed-loop reference run, enable (Nanotec manual 8.1).
     bool closedLoop = false;
     bool hostRampedJog = false; // the host must ramp jog rates itself (E-LAB manual, jog mode)
     // Digital inputs and outputs of the controller itself (EMIS SMC-IC4: 8 inputs, 7 outputs).
     // Their levels come in MachineStatus::inputs / outputs; an output is switched with
-    // Controller::modelOperation("set-output", {output: 1..N, on: bool}).
+    // Controller::modelOperation(operation::kSetOutput, {output: 1..N, on: bool}).
     int digitalInputs = 0;
     int digitalOutputs = 0;
     // A power-on parameter set kept by the device (EMIS "##" system parameters): the CLI's
-    // `store` / `get`, model operations "store-parameters", "read-stored-parameters",
-    // "clear-stored-parameters" (documented by the model's controller header).
+    // `store` / `get`, model operations kStoreParameters, kReadStoredParameters,
+    // kClearStoredParameters (model/ModelOperations.h; arguments in the model's controller
+    // header).
     bool storedParameters = false;
     // Programs stored per input that the device runs by itself (EMIS 9.17): model operations
-    // "write-input-program", "erase-input-program".
+    // kWriteInputProgram, kEraseInputProgram.
     bool inputPrograms = false;
     // false: the device chooses the direction of its reference runs (EMIS 9.9); a reference
     // request then takes 1 (reference this axis) or 0 (leave it out) per axis.

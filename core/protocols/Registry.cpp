@@ -3,6 +3,7 @@
 #include "protocols/emis/EmisModel.h"
 #include "protocols/laser/LaserModel.h"
 #include "protocols/nanotec/NanotecModel.h"
+#include <QCoreApplication>
 
 namespace stepdeck {
 
@@ -33,6 +34,13 @@ QStringList modelIds()
     for (const ModelInfo& model : models())
         ids << model.id;
     return ids;
+}
+
+QString unknownModelText(const QString& id)
+{
+    return QCoreApplication::translate("stepdeck::ControllerSession",
+                                       "unknown controller model '%1' (known: %2)")
+        .arg(id, modelIds().join(QStringLiteral(", ")));
 }
 
 } // namespace stepdeck

@@ -35,6 +35,11 @@ void Simulator::attach(Transport* deviceEnd)
             [deviceEnd](const QByteArray& bytes) { deviceEnd->write(bytes); });
 }
 
+bool Simulator::isStopFrame(const QByteArray&) const
+{
+    return false;
+}
+
 void Simulator::noteReceived(const QByteArray& frame)
 {
     if (m_received.size() >= kReceivedLogSize)

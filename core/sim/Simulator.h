@@ -1,4 +1,5 @@
 #pragma once
+#include "model/Axis.h"
 #include "model/LineSettings.h"
 #include <QElapsedTimer>
 #include <QObject>
@@ -46,6 +47,13 @@ struct SimulatorFaultCounts
     bool frozen = false;
 };
 
+// One positioning move a simulated device accepted, on one axis (Simulator::acceptedMoves).
+struct SimulatedMove
+{
+    Axis axis;
+    qint64 steps;
+};
+
 // The device side of a protocol (like QGroundControl's MockLink). It receives host bytes and
 // transmits replies; time-based motion lives in the subclasses.
 class Simulator : public QObject
@@ -55,7 +63,6 @@ public:
     explicit Simulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~Simulator() override;
 
-    virtual QString modelId() const = 0;
     const SimulatorOptions& options() const { return m_options; }
 
     // Connects this simulator to the device end of a link (loopback or pseudo-terminal).
@@ -83,8 +90,25 @@ public:
     QList<QByteArray> receivedFrames() const { return m_received; }
     int countReceived(const QByteArray& frame) const { return int(m_received.count(frame)); }
     void clearReceivedFrames() { m_received.clear(); }
+    // ---- probes: what the simulated machine itself does (soak runs, the fault matrix,
+    // tests). Every model's simulator answers them; axes are the model's (Capabilities). ----
     // True when no axis of the simulated machine moves (the device's own view).
     virtual bool standingStill() = 0;
+    // True when this axis moves at the device now.
+    virtual bool isMoving(Axis axis) = 0;
+    // Where the axis stands by the device's own count.
+    virtual qint64 position(Axis axis) = 0;
+    // Positioning moves the device accepted, per axis with their length, in order: soak runs
+    // compare them with the moves the host was told succeeded. Models that jog by short moves
+    // (EMIS, laser axes) journal those too.
+    virtual QList<SimulatedMove> acceptedMoves() const = 0;
+    // Stops every axis at once, as a person at the machine would: a model whose protocol has a
+    // stop takes it as if the host had sent it, the others (Capabilities::stopCommand false)
+    // through the machine's emergency-stop circuit. Nothing is reported to the host.
+    virtual void emergencyStop() = 0;
+    // True when a frame as noteReceived() logged it is one of the manual's stop commands
+    // (tests assert that the device received a stop). Models without a stop command: never.
+    virtual bool isStopFrame(const QByteArray& frame) const;
 
 public Q_SLOTS:
     virtual void receive(const QByteArray& bytes) = 0;

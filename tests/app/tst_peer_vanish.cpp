@@ -182,7 +182,7 @@ void TestPeerVanish::peerVanishes_throughSession_linkLostReportedOnce()
     spec.modelId = "elab";
     spec.port = m_device->slavePath();
     QString error;
-    QVERIFY2(session.create(spec, &error), qPrintable(error));
+    QVERIFY2(session.create(*findModel(spec.modelId), spec, &error), qPrintable(error));
     QSignalSpy links(&session, &ControllerSession::linkStateChanged);
     QSignalSpy errors(&session, &ControllerSession::errorOccurred);
     QSignalSpy results(&session, &ControllerSession::requestFinished);

@@ -3,6 +3,7 @@
 // left moving at the device. The figures themselves (docs/benchmark.md) come from long runs
 // by hand; nothing here is timed.
 #include "ProcessSupport.h"
+#include "protocols/Registry.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -46,7 +47,7 @@ void TestSoakSmoke::soak_fiftyCommands_noCrashHangOrAxisLeftMoving()
     int exitCode = 0;
     const QJsonObject out = runJson({"--soak", "50", "--seed", "12", "--json"}, &exitCode);
     const QJsonArray models = out.value("soak").toArray();
-    QCOMPARE(models.size(), 4); // elab, nanotec, emis, laser-axis
+    QCOMPARE(models.size(), stepdeck::models().size()); // every registered model
     for (const QJsonValue& v : models) {
         const QJsonObject m = v.toObject();
         const QByteArray name = m.value("model").toString().toUtf8();
@@ -66,7 +67,7 @@ void TestSoakSmoke::replug_everyPhase_noticedEveryTime()
     const QJsonObject out = runJson({"--replug", "4", "--json"}, &exitCode);
     QCOMPARE(exitCode, 0);
     const QJsonArray models = out.value("replug").toArray();
-    QCOMPARE(models.size(), 4);
+    QCOMPARE(models.size(), stepdeck::models().size());
     for (const QJsonValue& v : models) {
         const QJsonObject m = v.toObject();
         QCOMPARE(m.value("reconnectFailures").toInt(-1), 0);

@@ -7,6 +7,7 @@
 #include "main/ConnectionBar.h"
 #include "main/MachineContext.h"
 #include "main/MainWindow.h"
+#include "protocols/Registry.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "transport/LoopbackTransport.h"

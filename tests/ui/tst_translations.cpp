@@ -1,6 +1,7 @@
 // Languages: the German catalogue is complete, and once installed it translates the widgets,
 // the model's parameter labels and core messages (tr() of Q_DECLARE_TR_FUNCTIONS classes and
 // codec texts included: lupdate files each string under its run-time context).
+#include "SchemaWords.h"
 #include "UiTestSupport.h"
 #include "main/SafetyBar.h"
 #include "main/Translations.h"
@@ -38,33 +39,10 @@ private Q_SLOTS:
 };
 
 namespace {
-// Sources with a finished German translation in the schema words' context.
 QSet<QString> translatedSchemaWords()
 {
-    QSet<QString> out;
-    QFile file(QStringLiteral(STEPDECK_SOURCE_DIR "/translations/stepdeck_de.ts"));
-    if (!file.open(QIODevice::ReadOnly))
-        return out;
-    QXmlStreamReader xml(&file);
-    QString context, source;
-    while (!xml.atEnd()) {
-        xml.readNext();
-        if (!xml.isStartElement())
-            continue;
-        if (xml.name() == QLatin1String("name")) {
-            context = xml.readElementText();
-        } else if (xml.name() == QLatin1String("source")) {
-            source = xml.readElementText();
-        } else if (xml.name() == QLatin1String("translation")) {
-            const bool unfinished =
-                xml.attributes().value(QLatin1String("type")) == QLatin1String("unfinished");
-            const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
-            if (context == QLatin1String(ParameterSchema::kTranslationContext) && !unfinished &&
-                !text.isEmpty())
-                out.insert(source);
-        }
-    }
-    return out;
+    return test::translatedSchemaWords(
+        QStringLiteral(STEPDECK_SOURCE_DIR "/translations/stepdeck_de.ts"));
 }
 
 // The schema keys (kebab-case names) a message quotes.
@@ -240,21 +218,8 @@ void TestTranslations::german_schemaWords_everyOneTranslated()
     const QSet<QString> translated = translatedSchemaWords();
     QVERIFY(translated.size() > 200);
     QStringList missing;
-    for (const ModelInfo& model : models()) {
-        for (const ParameterSpec& spec : model.schema.specs()) {
-            QStringList words{spec.group, spec.label, spec.unit, spec.description, spec.warning};
-            for (const QString& choice : spec.choices) {
-                bool number = false;
-                choice.toDouble(&number);
-                if (!number)
-                    words << choice;
-            }
-            for (const QString& w : std::as_const(words)) {
-                if (!w.isEmpty() && !translated.contains(w))
-                    missing << QStringLiteral("%1/%2: %3").arg(model.id, spec.name, w);
-            }
-        }
-    }
+    for (const ModelInfo& model : models())
+        missing << test::untranslatedSchemaWords(model, translated);
     QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QStringLiteral(" | "))));
 }
 

@@ -1,6 +1,7 @@
 #include "DrivePanel.h"
 #include "ClosedLoopPanel.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include <QHeaderView>
 #include <QLabel>
 #include <QProgressBar>
@@ -78,7 +79,8 @@ QString DrivePanel::scanState() const
 
 void DrivePanel::scanBus()
 {
-    scanRange(1, 254);
+    const Capabilities caps = m_context->capabilities();
+    scanRange(caps.minBusAddress, caps.maxBusAddress);
 }
 
 void DrivePanel::scanRange(int first, int last)
@@ -104,7 +106,7 @@ void DrivePanel::scanNextChunk()
                              .arg(m_scanLast)
                              .arg(m_scanNext)
                              .arg(last));
-    m_scanId = m_context->session()->modelOperation(QStringLiteral("scan"),
+    m_scanId = m_context->session()->modelOperation(operation::kScan,
                                                     {{"first", m_scanNext}, {"last", last}});
     m_scanNext = last + 1;
     updateEnabled();

@@ -17,7 +17,7 @@ class MachineContext;
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
 // per-drive status from the poller, and a bus scan listing every drive that answers.
 // A drive that stopped answering is marked red: the others keep working.
-// The scan runs in chunks of kScanChunk addresses (one "scan" model operation each), so it
+// The scan runs in chunks of kScanChunk addresses (one operation::kScan each), so it
 // shows progress and can be cancelled between chunks; what was found so far stays listed.
 class DrivePanel : public QWidget
 {
@@ -43,7 +43,7 @@ public:
     int silentCount() const { return m_silent; }
 
 public Q_SLOTS:
-    void scanBus(); // addresses 1..254
+    void scanBus(); // every address the model's bus allows (Nanotec: 1..254)
     // A partial scan (addresses first..last), e.g. for a quick check of a small bus.
     void scanRange(int first, int last);
     void cancelScan(); // stops after the chunk in flight

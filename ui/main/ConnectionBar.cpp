@@ -3,6 +3,7 @@
 #include "main/MachineContext.h"
 #include "main/PortScanner.h"
 #include "main/PortWatcher.h"
+#include "protocols/Registry.h"
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>

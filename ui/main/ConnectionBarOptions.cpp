@@ -5,6 +5,7 @@
 #include "main/MachineContext.h"
 #include "main/PortScanner.h"
 #include "main/PortWatcher.h"
+#include "protocols/Registry.h"
 #include <QAction>
 #include <QComboBox>
 #include <QLabel>

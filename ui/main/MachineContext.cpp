@@ -1,4 +1,5 @@
 #include "MachineContext.h"
+#include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QSettings>
 
@@ -97,7 +98,13 @@ void MachineContext::selectModel(const QString& modelId)
 bool MachineContext::connectTo(const ConnectionSpec& spec, QString* error)
 {
     const ModelInfo* before = m_model;
-    if (!m_session->create(spec, error))
+    const ModelInfo* model = findModel(spec.modelId);
+    if (!model) {
+        if (error)
+            *error = unknownModelText(spec.modelId);
+        return false;
+    }
+    if (!m_session->create(*model, spec, error))
         return false;
     m_model = m_session->model();
     m_port = spec.port;

@@ -1,5 +1,5 @@
 #include "PortScanner.h"
-#include <QSerialPortInfo>
+#include "transport/PortListing.h"
 #include <QThread>
 
 namespace stepdeck::ui {
@@ -33,21 +33,18 @@ void PortScanner::setScanFunction(ScanFunction scanFunction)
 QList<PortEntry> PortScanner::scan()
 {
     QList<PortEntry> list;
-    const auto infos = QSerialPortInfo::availablePorts();
-    for (const QSerialPortInfo& info : infos) {
+    for (const SerialPortListing& port : listSerialPorts()) {
         PortEntry entry;
-        entry.path = info.systemLocation();
-        entry.label = info.portName();
-        if (!info.description().isEmpty())
-            entry.label += QStringLiteral(" \u2013 ") + info.description();
-        if (info.hasVendorIdentifier() && info.hasProductIdentifier()) {
+        entry.path = port.path;
+        entry.label = port.name;
+        if (!port.description.isEmpty())
+            entry.label += QStringLiteral(" \u2013 ") + port.description;
+        if (port.usb) {
             entry.usb = true;
-            entry.vendorId = info.vendorIdentifier();
-            entry.productId = info.productIdentifier();
-            entry.serialNumber = info.serialNumber();
-            entry.label += QStringLiteral(" (%1:%2)")
-                               .arg(entry.vendorId, 4, 16, QLatin1Char('0'))
-                               .arg(entry.productId, 4, 16, QLatin1Char('0'));
+            entry.vendorId = port.vendorId;
+            entry.productId = port.productId;
+            entry.serialNumber = port.serialNumber;
+            entry.label += QStringLiteral(" (%1)").arg(port.vidPid());
         }
         list << entry;
     }

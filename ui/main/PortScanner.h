@@ -25,7 +25,7 @@ struct PortEntry
     }
 };
 
-// Lists serial ports with QSerialPortInfo and rescans periodically, so ports that appear or
+// Lists serial ports (core's listSerialPorts()) and rescans periodically, so ports that appear or
 // vanish (USB adapters) show up without a restart. QSerialPortInfo does not list ptys: the
 // connection bar accepts a typed path for those.
 // The enumeration (udev/sysfs, can take tens of milliseconds) runs in a worker thread: the
@@ -43,7 +43,7 @@ public:
     const QList<PortEntry>& ports() const { return m_ports; }
     void setInterval(int ms) { m_timer.setInterval(ms); }
     void setScanFunction(ScanFunction scan);
-    // Blocking enumeration with QSerialPortInfo.
+    // Blocking enumeration (listSerialPorts()) as entries of the connection bar.
     static QList<PortEntry> scan();
 
 public Q_SLOTS:

@@ -1,5 +1,6 @@
 #include "InputProgramsPage.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include <QDateTime>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -230,7 +231,7 @@ bool InputProgramsPage::writeProgram(bool force)
         return false;
     m_pendingInput = input;
     m_pendingErase = false;
-    m_pending = m_context->session()->modelOperation(QStringLiteral("write-input-program"),
+    m_pending = m_context->session()->modelOperation(operation::kWriteInputProgram,
                                                      {{QStringLiteral("input"), input},
                                                       {QStringLiteral("title"), m_title->text()},
                                                       {QStringLiteral("commands"), commandLines()},
@@ -247,7 +248,7 @@ void InputProgramsPage::eraseProgram()
         return;
     m_pendingInput = input;
     m_pendingErase = true;
-    m_pending = m_context->session()->modelOperation(QStringLiteral("erase-input-program"),
+    m_pending = m_context->session()->modelOperation(operation::kEraseInputProgram,
                                                      {{QStringLiteral("input"), input}});
     setMessage(tr("Erasing the program of input %1\u2026").arg(input), false);
     refresh();

@@ -1,6 +1,7 @@
 #include "RecordsPage.h"
 #include "RecordDelegate.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QFormLayout>
@@ -143,7 +144,7 @@ void RecordsPage::start(Pending what, const QString& operation, const QVariantMa
 
 void RecordsPage::readAll()
 {
-    start(Pending::ReadAll, QStringLiteral("read-all-records"),
+    start(Pending::ReadAll, operation::kReadAllRecords,
           {{"axis", m_axis->currentData().toString()}},
           tr("Reading records 1..%1 of axis %2\u2026")
               .arg(kRecords)
@@ -165,25 +166,25 @@ void RecordsPage::writeRecord()
     }
     QVariantMap args = target();
     args.insert(QStringLiteral("values"), values);
-    start(Pending::Write, QStringLiteral("write-record"), args,
+    start(Pending::Write, operation::kWriteRecord, args,
           tr("Writing record %1\u2026").arg(row + 1));
 }
 
 void RecordsPage::saveRecord()
 {
-    start(Pending::Save, QStringLiteral("save-record"), target(),
+    start(Pending::Save, operation::kSaveRecord, target(),
           tr("Saving the current settings as record %1\u2026").arg(m_record->value()));
 }
 
 void RecordsPage::loadRecord()
 {
-    start(Pending::Load, QStringLiteral("load-record"), target(),
+    start(Pending::Load, operation::kLoadRecord, target(),
           tr("Loading record %1\u2026").arg(m_record->value()));
 }
 
 void RecordsPage::readErrorMemory()
 {
-    start(Pending::Errors, QStringLiteral("read-error-memory"),
+    start(Pending::Errors, operation::kReadErrorMemory,
           {{"axis", m_axis->currentData().toString()}}, tr("Reading the error memory\u2026"));
 }
 

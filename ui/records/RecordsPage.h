@@ -14,8 +14,8 @@ class MachineContext;
 class RecordDelegate;
 
 // The technician's page for a drive's stored records (Nanotec section 4, 6.3-6.5) and its
-// error memory (5.15), all through the model's operations ("read-all-records", "write-record",
-// "save-record", "load-record", "read-error-memory"); shown for models with
+// error memory (5.15), all through the model's operations (operation::kReadAllRecords,
+// kWriteRecord, kSaveRecord, kLoadRecord, kReadErrorMemory); shown for models with
 // Capabilities::records. Values are the schema's (names, units, choices), never bytes.
 class RecordsPage : public QWidget
 {

@@ -1,6 +1,7 @@
 #include "StoredParametersBar.h"
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include "setup/SetupPage.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
@@ -102,15 +103,14 @@ void StoredParametersBar::sendStore(const ParameterSet& set)
         return;
     }
     m_pendingStore = m_context->session()->modelOperation(
-        QStringLiteral("store-parameters"),
-        {{QStringLiteral("parameters"), QVariant::fromValue(set)},
-         {QStringLiteral("skipUnstorable"), true}});
+        operation::kStoreParameters, {{QStringLiteral("parameters"), QVariant::fromValue(set)},
+                                      {QStringLiteral("skipUnstorable"), true}});
     setMessage(tr("Storing\u2026"), false);
 }
 
 void StoredParametersBar::readStored()
 {
-    m_pendingRead = m_context->session()->modelOperation(QStringLiteral("read-stored-parameters"));
+    m_pendingRead = m_context->session()->modelOperation(operation::kReadStoredParameters);
     setMessage(tr("Reading the stored values\u2026"), false);
 }
 

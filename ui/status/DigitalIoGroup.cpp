@@ -1,6 +1,7 @@
 #include "DigitalIoGroup.h"
 #include "common/LedIndicator.h"
 #include "main/MachineContext.h"
+#include "model/ModelOperations.h"
 #include <QGridLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -82,8 +83,7 @@ void DigitalIoGroup::toggle(int number)
 {
     const bool on = !m_known.value(number - 1).value_or(false);
     m_context->session()->modelOperation(
-        QStringLiteral("set-output"),
-        {{QStringLiteral("output"), number}, {QStringLiteral("on"), on}});
+        operation::kSetOutput, {{QStringLiteral("output"), number}, {QStringLiteral("on"), on}});
     // The switch shows the confirmed state: undo the click until the status says otherwise.
     setStatus(m_context->status(), m_context->isConnected());
 }

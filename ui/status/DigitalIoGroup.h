@@ -12,7 +12,7 @@ class MachineContext;
 // The controller's own digital inputs and outputs (Capabilities::digitalInputs / Outputs):
 // one lamp per input level, one switch per output. An output shows what the host last
 // switched in this session ("?" until then: such controllers cannot report their outputs);
-// clicking sends modelOperation("set-output") and the switch follows the confirmed status.
+// clicking sends operation::kSetOutput and the switch follows the confirmed status.
 class DigitalIoGroup : public QGroupBox
 {
     Q_OBJECT

@@ -46,7 +46,6 @@ public:
                    QObject* parent = nullptr);
     ~ElabController() override;
 
-    QString modelId() const override { return QStringLiteral("elab"); }
     Capabilities capabilities() const override;
     ParameterSchema schema() const override;
 

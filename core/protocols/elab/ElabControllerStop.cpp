@@ -2,6 +2,7 @@
 // "Safety contract"). Manual sections: "Stop Befehle", "Befehle im Jogbetrieb",
 // "SetFeedStepXYZ", "RS232-C" (reset).
 #include "ElabController.h"
+#include "ElabLogging.h"
 #include "Logging.h"
 #include "transport/Transport.h"
 #include <QTimer>

@@ -1,4 +1,5 @@
 #include "ElabExchangeQueue.h"
+#include "ElabLogging.h"
 #include "Logging.h"
 #include "transport/Transport.h"
 #include <QtMath>

@@ -1,11 +1,14 @@
 #include "ElabModel.h"
 #include "ElabCodec.h"
 #include "ElabController.h"
+#include "ElabLogging.h"
 #include "ElabSimulator.h"
 #include <QCoreApplication>
 #include <QtGlobal>
 
 namespace stepdeck::elab {
+
+Q_LOGGING_CATEGORY(lcElab, "stepdeck.elab", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -43,18 +46,21 @@ ModelInfo modelInfo()
 {
     ModelInfo info;
     info.id = QStringLiteral("elab");
-    info.displayName = QStringLiteral("E-LAB 3-axis stepper controller");
+    // Shown through QCoreApplication::translate("Models", ...).
+    info.displayName =
+        QString::fromUtf8(QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller"));
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new ElabController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new ElabSimulator(options));
-    };
+    // tmInvSetup until the ramp is written; feeds need their speed.
+    info.setupBeforeMotion = {QStringLiteral("start-speed"), QStringLiteral("max-speed"),
+                              QStringLiteral("acceleration"), QStringLiteral("feed-speed")};
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
+    info.streamBench = streamBenchProfile();
     info.presentation = presentation();
-    return info;
+    info.logging = &lcElab;
+    return describeModel<ElabController, ElabSimulator>(std::move(info));
 }
 
 // ---- presentation (status panel tooltips, traffic console) ----
@@ -189,11 +195,5 @@ ModelPresentation presentation()
     };
     return p;
 }
-
-namespace {
-// The registry's display name, shown through QCoreApplication::translate("Models", ...).
-[[maybe_unused]] const char* const kModelName =
-    QT_TRANSLATE_NOOP("Models", "E-LAB 3-axis stepper controller");
-} // namespace
 
 } // namespace stepdeck::elab

@@ -1,5 +1,5 @@
 #pragma once
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::elab {
 
@@ -9,6 +9,11 @@ LineSettings lineSettings();
 Capabilities capabilities();
 ParameterSchema parameterSchema();
 ModelInfo modelInfo();
+// The simulator beyond the protocol: stepdeck-sim's machine options, the fault soak and the
+// DC2 stream meter of the benchmarks (ElabSimProfile.cpp).
+ScenarioSupport scenarioSupport();
+SoakProfile soakProfile();
+StreamBenchProfile streamBenchProfile();
 // Status bit names and console notation for the UI (model/ModelPresentation.h).
 ModelPresentation presentation();
 

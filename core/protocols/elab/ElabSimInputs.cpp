@@ -128,4 +128,19 @@ qint64 ElabSimulator::executedSteps(Axis a) const
     return axis(a).executedSingleSteps();
 }
 
+void ElabSimulator::emergencyStop()
+{
+    const bool silent = faults().silent;
+    faults().silent = true; // nobody asked: the ACK stays at the device
+    receive(encode::stopMove());
+    faults().silent = silent;
+}
+
+bool ElabSimulator::isStopFrame(const QByteArray& frame) const
+{
+    return frame == encode::stopMove() || frame == encode::panicStop() ||
+           frame == encode::panicStop() + encode::panicStop() ||
+           frame == encode::jogSpeed({0, 0, 0});
+}
+
 } // namespace stepdeck::elab

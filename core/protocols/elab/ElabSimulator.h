@@ -22,7 +22,6 @@ public:
     explicit ElabSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~ElabSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("elab"); }
     void receive(const QByteArray& bytes) override;
 
     // Power-on state: setup incomplete, parameters cleared, positions 0, relays off, buffer
@@ -57,10 +56,14 @@ public:
     // ---- observation (tests, stepdeck-sim) ----
     quint16 machineState();
     quint8 axeState();
-    qint64 position(Axis axis);
-    bool isMoving(Axis axis);
+    qint64 position(Axis axis) override;
+    bool isMoving(Axis axis) override;
     bool isBusy();
     bool standingStill() override { return !isBusy(); }
+    // ForceStopMove as the host sends it (the reply goes nowhere).
+    void emergencyStop() override;
+    // ForceStopMove, ForcePanicStop (single or doubled) and a zero jog rate (<DC4>0,0,0).
+    bool isStopFrame(const QByteArray& frame) const override;
     qint64 remainingSteps(Axis axis);
     bool limitSwitchActive(Axis axis) const;
     bool referenceSwitchActive(Axis axis) const;
@@ -83,12 +86,8 @@ public:
     qint64 commandsReceived() const { return m_commands; }
     // Positioning moves (FastMove XY/XYZ/Z) the board accepted with ACK, per axis, in order:
     // soak runs compare them with the moves the host was told succeeded.
-    struct AcceptedMove
-    {
-        Axis axis;
-        qint64 steps;
-    };
-    const QList<AcceptedMove>& acceptedMoves() const { return m_acceptedMoves; }
+    using AcceptedMove = SimulatedMove;
+    QList<SimulatedMove> acceptedMoves() const override { return m_acceptedMoves; }
     QString lastNakReason() const { return m_lastNakReason; } // why the last NAK was sent
 
 private:

@@ -1,5 +1,6 @@
 // Link, connect sequence, status polling and the normalised status of the SMC-IC4.
 #include "EmisController.h"
+#include "EmisLogging.h"
 #include "EmisModel.h"
 #include "Logging.h"
 #include "transport/Transport.h"

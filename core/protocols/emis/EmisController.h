@@ -54,7 +54,6 @@ public:
                    QObject* parent = nullptr);
     ~EmisController() override;
 
-    QString modelId() const override { return QStringLiteral("emis"); }
     Capabilities capabilities() const override;
     ParameterSchema schema() const override;
 

@@ -1,5 +1,6 @@
 // Jog without a stop command: a chain of short relative vector moves (9.11).
 #include "EmisController.h"
+#include "EmisLogging.h"
 #include "Logging.h"
 #include <QtMath>
 

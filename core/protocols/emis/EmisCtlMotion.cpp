@@ -1,5 +1,6 @@
 // Vector moves (9.11), reference runs (9.9), arrivals and their deadlines.
 #include "EmisController.h"
+#include "EmisLogging.h"
 #include "Logging.h"
 #include <QtMath>
 

@@ -1,6 +1,7 @@
 // Model operations (outputs, reference runs, system parameters, input programs) and the console.
 #include "EmisController.h"
 #include "Logging.h"
+#include "model/ModelOperations.h"
 #include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
@@ -27,19 +28,19 @@ bool printableAscii(const QString& text)
 
 void EmisController::modelOperation(RequestId id, const QString& name, const QVariantMap& args)
 {
-    if (name == QLatin1String("set-output"))
+    if (name == operation::kSetOutput)
         return setOutput(id, args);
-    if (name == QLatin1String("reference"))
+    if (name == operation::kReference)
         return referenceOperation(id, args);
-    if (name == QLatin1String("store-parameters"))
+    if (name == operation::kStoreParameters)
         return storeParameters(id, args);
-    if (name == QLatin1String("read-stored-parameters"))
+    if (name == operation::kReadStoredParameters)
         return readStoredParameters(id);
-    if (name == QLatin1String("clear-stored-parameters"))
+    if (name == operation::kClearStoredParameters)
         return clearStoredParameters(id);
-    if (name == QLatin1String("write-input-program"))
+    if (name == operation::kWriteInputProgram)
         return writeInputProgram(id, args);
-    if (name == QLatin1String("erase-input-program"))
+    if (name == operation::kEraseInputProgram)
         return eraseInputProgram(id, args);
     Controller::modelOperation(id, name, args);
 }

@@ -1,4 +1,5 @@
 #include "EmisLink.h"
+#include "EmisLogging.h"
 #include "Logging.h"
 #include "transport/Transport.h"
 #include <QScopedValueRollback>

@@ -1,5 +1,5 @@
 #pragma once
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::emis {
 
@@ -10,6 +10,10 @@ LineSettings lineSettings();
 Capabilities capabilities();
 ParameterSchema parameterSchema();
 ModelInfo modelInfo();
+// The simulator beyond the protocol: stepdeck-sim's machine options and the fault soak
+// (EmisSimProfile.cpp).
+ScenarioSupport scenarioSupport();
+SoakProfile soakProfile();
 // Input names and console notation for the UI (model/ModelPresentation.h).
 ModelPresentation presentation();
 // Console notation: printable text as it is, control bytes by their manual names

@@ -1,5 +1,6 @@
 // The registry entry of the SMC-IC4 (core/protocols/Registry.cpp).
 #include "EmisController.h"
+#include "EmisLogging.h"
 #include "EmisModel.h"
 #include "EmisSimulator.h"
 
@@ -9,6 +10,7 @@ namespace {
 // The registry's display name, shown through QCoreApplication::translate("Models", ...).
 const char* const kDisplayName = QT_TRANSLATE_NOOP("Models", "EMIS SMC-IC4 4-axis controller");
 } // namespace
+Q_LOGGING_CATEGORY(lcEmis, "stepdeck.emis", QtWarningMsg)
 
 ModelInfo modelInfo()
 {
@@ -18,14 +20,11 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new EmisController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new EmisSimulator(options));
-    };
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
-    return info;
+    info.logging = &lcEmis;
+    return describeModel<EmisController, EmisSimulator>(std::move(info));
 }
 
 } // namespace stepdeck::emis

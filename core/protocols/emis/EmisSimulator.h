@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <array>
+#include <utility>
 
 namespace stepdeck::emis {
 
@@ -46,7 +47,6 @@ public:
     explicit EmisSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~EmisSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("emis"); }
     bool standingStill() override { return !anyMoving(); }
     void receive(const QByteArray& bytes) override;
 
@@ -54,8 +54,10 @@ public:
     QList<QByteArray> receivedCommands() const { return m_commands; } // framed texts, in order
     void clearReceivedCommands() { m_commands.clear(); }
     qint64 position(Axis axis) const; // the board's counter
+    qint64 position(Axis axis) override { return std::as_const(*this).position(axis); }
     qint64 physicalPosition(Axis axis) const { return axisRef(axis).physical(); }
     bool isMoving(Axis axis) const;
+    bool isMoving(Axis axis) override { return std::as_const(*this).isMoving(axis); }
     bool anyMoving() const;
     bool isReferenced(Axis axis) const { return m_referenced[int(axis)]; }
     QList<bool> inputLevels() const;
@@ -66,12 +68,8 @@ public:
     int arrivalsDropped() const { return m_arrivalsDropped; }
     // Vector moves (9.11) the board accepted, per axis with their relative length in steps
     // (absolute targets converted at acceptance), in order; zero-length targets are left out.
-    struct AcceptedMove
-    {
-        Axis axis;
-        qint64 steps;
-    };
-    QList<AcceptedMove> acceptedMoves() const { return m_accepted; }
+    using AcceptedMove = SimulatedMove;
+    QList<SimulatedMove> acceptedMoves() const override { return m_accepted; }
     // Moves and reference runs refused with <BEL> because a named motor was still moving.
     int busyRefusals() const { return m_busyRefusals; }
 
@@ -86,7 +84,7 @@ public:
     void powerCycle(); // working values from the stored ones, counters 0, outputs off
     // The machine's emergency-stop circuit (the board has no stop command): every motor
     // stands where it is at once, reference runs are abandoned, no <DCn> follows.
-    void emergencyStop();
+    void emergencyStop() override;
 
 private:
     EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }

@@ -1,5 +1,6 @@
 // Link, status frames and the requests without motion of the laser-axis adapter.
 #include "LaserAxisController.h"
+#include "LaserLogging.h"
 #include "LaserModel.h"
 #include "Logging.h"
 #include "transport/Transport.h"

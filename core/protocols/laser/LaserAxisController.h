@@ -37,7 +37,6 @@ public:
                         QObject* parent = nullptr);
     ~LaserAxisController() override;
 
-    QString modelId() const override { return QStringLiteral("laser-axis"); }
     Capabilities capabilities() const override;
     ParameterSchema schema() const override { return {}; }
 

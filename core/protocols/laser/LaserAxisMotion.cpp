@@ -1,5 +1,6 @@
 // Targets out, status frames in: the motion part of the laser-axis adapter.
 #include "LaserAxisController.h"
+#include "LaserLogging.h"
 #include "Logging.h"
 #include "transport/Transport.h"
 

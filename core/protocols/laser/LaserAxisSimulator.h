@@ -22,7 +22,6 @@ public:
     explicit LaserAxisSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~LaserAxisSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("laser-axis"); }
     void receive(const QByteArray& bytes) override;
     bool standingStill() override; // no axis moves (after advancing to now)
 
@@ -42,7 +41,7 @@ public:
     void reportStatus(Axis axis, Status status);
     // The machine's emergency stop (the protocol has no stop command): every axis stands
     // where it is and forgets its target; no status frame follows.
-    void emergencyStop();
+    void emergencyStop() override;
 
     // ---- observation ----
     QList<CommandFrame> receivedCommands() const { return m_commands; }
@@ -50,16 +49,12 @@ public:
     int rejectedFrames() const { return m_rejected; }
     // Move commands the axes accepted, with their length in laser units from where the axis
     // stood (its own count) to the target, in order; zero-length ones are left out.
-    struct AcceptedMove
-    {
-        Axis axis;
-        qint64 steps;
-    };
-    QList<AcceptedMove> acceptedMoves() const { return m_accepted; }
+    using AcceptedMove = SimulatedMove;
+    QList<SimulatedMove> acceptedMoves() const override { return m_accepted; }
     void clearAcceptedMoves() { m_accepted.clear(); }
     QList<QByteArray> sentStatusFrames() const { return m_sent; }
-    qint64 position(Axis axis);
-    bool isMoving(Axis axis);
+    qint64 position(Axis axis) override;
+    bool isMoving(Axis axis) override;
     bool isHomed(Axis axis) const { return axis_(axis).homed(); }
     bool isTicking() const { return m_tick.isActive(); }
 

@@ -2,9 +2,12 @@
 #include "LaserAxisController.h"
 #include "LaserAxisSimulator.h"
 #include "LaserCodec.h"
+#include "LaserLogging.h"
 #include <QCoreApplication>
 
 namespace stepdeck::laser {
+
+Q_LOGGING_CATEGORY(lcLaser, "stepdeck.laser", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -55,22 +58,17 @@ ModelInfo modelInfo()
 {
     ModelInfo info;
     info.id = QStringLiteral("laser-axis");
-    info.displayName = QStringLiteral("Laser marker motor axes (RS232)");
+    // Shown through QCoreApplication::translate("Models", ...).
+    info.displayName =
+        QString::fromUtf8(QT_TRANSLATE_NOOP("Models", "Laser marker motor axes (RS232)"));
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = ParameterSchema{};
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new LaserAxisController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new LaserAxisSimulator(options));
-    };
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
-    return info;
+    info.logging = &lcLaser;
+    return describeModel<LaserAxisController, LaserAxisSimulator>(std::move(info));
 }
-
-// The registry's display name, shown through QCoreApplication::translate("Models", ...).
-[[maybe_unused]] static const char* const kDisplayNameForTranslation =
-    QT_TRANSLATE_NOOP("Models", "Laser marker motor axes (RS232)");
 
 } // namespace stepdeck::laser

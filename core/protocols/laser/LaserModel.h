@@ -1,5 +1,5 @@
 #pragma once
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::laser {
 
@@ -11,5 +11,9 @@ Capabilities capabilities();
 // Console notation: the frames as ASCII; a missing final CR is added.
 ModelPresentation presentation();
 ModelInfo modelInfo();
+// The simulator beyond the protocol: stepdeck-sim's machine options and the fault soak
+// (LaserSimProfile.cpp).
+ScenarioSupport scenarioSupport();
+SoakProfile soakProfile();
 
 } // namespace stepdeck::laser

@@ -1,5 +1,6 @@
 #include "NanotecBus.h"
 #include "Logging.h"
+#include "NanotecLogging.h"
 #include "transport/Transport.h"
 
 namespace stepdeck::nanotec {

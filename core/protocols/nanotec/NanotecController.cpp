@@ -2,6 +2,7 @@
 #include "NanotecController.h"
 #include "Logging.h"
 #include "NanotecClosedLoop.h"
+#include "NanotecLogging.h"
 #include "NanotecModel.h"
 #include "transport/Transport.h"
 #include <QtMath>

@@ -42,7 +42,6 @@ public:
                       QObject* parent = nullptr);
     ~NanotecController() override;
 
-    QString modelId() const override { return QStringLiteral("nanotec"); }
     Capabilities capabilities() const override;
     ParameterSchema schema() const override;
 

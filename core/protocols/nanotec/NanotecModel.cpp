@@ -1,9 +1,13 @@
 #include "NanotecModel.h"
+#include "NanotecCodec.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "NanotecSchema.h"
 #include "NanotecSimulator.h"
 
 namespace stepdeck::nanotec {
+
+Q_LOGGING_CATEGORY(lcNanotec, "stepdeck.nanotec", QtWarningMsg)
 
 LineSettings lineSettings()
 {
@@ -31,6 +35,8 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.rampedStop = false;
     caps.panic = true; // '#*S' to every drive at once
     caps.multiDrive = true;
+    caps.minBusAddress = kMinAddress; // 1.1
+    caps.maxBusAddress = kMaxAddress;
     caps.records = true; // "read-all-records", "write-record", ... (section 4, 5.15)
     // Calibration and closed-loop reference runs, closed loop on/off (8.1, NanotecClosedLoop).
     caps.closedLoop = true;
@@ -122,14 +128,11 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities(defaultAxisAddresses().keys());
     info.schema = parameterSchema();
-    info.createController = [](Transport* transport, const ControllerOptions& options) {
-        return static_cast<Controller*>(new NanotecController(transport, options));
-    };
-    info.createSimulator = [](const SimulatorOptions& options) {
-        return static_cast<Simulator*>(new NanotecSimulator(options));
-    };
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
     info.presentation = presentation();
-    return info;
+    info.logging = &lcNanotec;
+    return describeModel<NanotecController, NanotecSimulator>(std::move(info));
 }
 
 } // namespace stepdeck::nanotec

@@ -1,5 +1,5 @@
 #pragma once
-#include "protocols/Registry.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::nanotec {
 
@@ -10,6 +10,10 @@ LineSettings lineSettings();
 QMap<Axis, int> defaultAxisAddresses();
 Capabilities capabilities(const QList<Axis>& axes);
 ModelInfo modelInfo();
+// The simulator beyond the protocol: stepdeck-sim's machine options and the fault soak
+// (NanotecSimProfile.cpp).
+ScenarioSupport scenarioSupport();
+SoakProfile soakProfile();
 // Status bit names (5.21) and console notation for the UI (model/ModelPresentation.h).
 ModelPresentation presentation();
 

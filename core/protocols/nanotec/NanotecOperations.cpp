@@ -2,7 +2,9 @@
 #include "Logging.h"
 #include "NanotecClosedLoop.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "NanotecModel.h"
+#include "model/ModelOperations.h"
 #include "transport/Transport.h"
 #include <QSet>
 #include <QTimer>
@@ -247,7 +249,7 @@ void NanotecController::sendRaw(RequestId id, const QByteArray& bytes)
 
 void NanotecController::scanBus(RequestId id)
 {
-    modelOperation(id, QStringLiteral("scan"), {});
+    modelOperation(id, operation::kScan, {});
 }
 
 void NanotecController::scan(RequestId id, int first, int last, int timeoutMs)
@@ -318,7 +320,7 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
     auto intArg = [&](const char* key, int def) {
         return args.value(QString::fromLatin1(key), def).toInt();
     };
-    if (name == QLatin1String("scan")) {
+    if (name == operation::kScan) {
         PendingScan p{id, intArg("first", kMinAddress), intArg("last", kMaxAddress),
                       intArg("timeoutMs", 40)};
         if (!isValidAddress(p.first) || !isValidAddress(p.last) || p.first > p.last)
@@ -332,7 +334,7 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
         transport()->open(lineSettings()); // a scan needs no configured drive
         return;
     }
-    if (name == QLatin1String("reference")) {
+    if (name == operation::kReference) {
         QMap<Axis, int> dirs;
         const QVariantMap axes = args.value(QStringLiteral("axes")).toMap();
         for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
@@ -357,23 +359,23 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
         }
         runSteps({exchange(axis, body)}, [this, id](const Failure& f) { finishWith(id, f); });
     };
-    if (name == QLatin1String("read-record"))
+    if (name == operation::kReadRecord)
         return readRecord(id, axis, record);
-    if (name == QLatin1String("read-all-records"))
+    if (name == operation::kReadAllRecords)
         return readAllRecords(id, axis);
-    if (name == QLatin1String("write-record"))
+    if (name == operation::kWriteRecord)
         return writeRecord(id, axis, record, args.value(QStringLiteral("values")).toMap());
-    if (name == QLatin1String("load-record") || name == QLatin1String("save-record"))
-        return loadOrSaveRecord(id, axis, record, name == QLatin1String("save-record"));
-    if (name == QLatin1String("read-error-memory"))
+    if (name == operation::kLoadRecord || name == operation::kSaveRecord)
+        return loadOrSaveRecord(id, axis, record, name == operation::kSaveRecord);
+    if (name == operation::kReadErrorMemory)
         return readErrorMemory(id, axis);
-    if (name == QLatin1String("reset-position-error"))
+    if (name == operation::kResetPositionError)
         return simple("D", false);
-    if (name == QLatin1String("trigger"))
+    if (name == operation::kTrigger)
         return simple("T", false);
-    if (name == QLatin1String("speed-step"))
+    if (name == operation::kSpeedStep)
         return simple(args.value(QStringLiteral("up"), true).toBool() ? "+" : "-", false);
-    if (name == QLatin1String("reset-position")) {
+    if (name == operation::kResetPosition) {
         // 5.18: the current position becomes the reference position.
         return runSteps({exchange(axis, "c")}, [this, id, axis](const Failure& f) {
             if (f.ok()) {
@@ -386,7 +388,7 @@ void NanotecController::modelOperation(RequestId id, const QString& name, const 
             finishWith(id, f);
         });
     }
-    if (name == QLatin1String("start-record")) {
+    if (name == operation::kStartRecord) {
         const QString why = motionRefusal(axis, false);
         if (!why.isEmpty())
             return finishError(id, ErrorKind::Refused, why);

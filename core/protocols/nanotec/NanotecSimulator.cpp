@@ -1,5 +1,6 @@
 #include "NanotecSimulator.h"
 #include "Logging.h"
+#include "NanotecModel.h"
 
 namespace stepdeck::nanotec {
 
@@ -195,6 +196,43 @@ void NanotecSimulator::tick()
         }
     }
     ensureTicking();
+}
+
+bool NanotecSimulator::isMoving(Axis axis)
+{
+    const NanotecDrive* d = drive(defaultAxisAddresses().value(axis, -1));
+    return d && d->isActive();
+}
+
+qint64 NanotecSimulator::position(Axis axis)
+{
+    const NanotecDrive* d = drive(defaultAxisAddresses().value(axis, -1));
+    return d ? d->position() : 0;
+}
+
+QList<SimulatedMove> NanotecSimulator::acceptedMoves() const
+{
+    QMap<int, Axis> axisAt;
+    const QMap<Axis, int> addresses = defaultAxisAddresses();
+    for (auto it = addresses.cbegin(); it != addresses.cend(); ++it)
+        axisAt.insert(it.value(), it.key());
+    QList<SimulatedMove> out;
+    for (const StartedMove& move : m_startedMoves)
+        out.append({axisAt.value(move.address, Axis::U), move.steps});
+    return out;
+}
+
+void NanotecSimulator::emergencyStop()
+{
+    const bool silent = faults().silent;
+    faults().silent = true; // nobody asked: no reply leaves the device
+    receive("#*S\r");       // 6.2: every drive stops
+    faults().silent = silent;
+}
+
+bool NanotecSimulator::isStopFrame(const QByteArray& frame) const
+{
+    return frame.startsWith('#') && frame.endsWith("S\r"); // '#1S', '#*S'
 }
 
 } // namespace stepdeck::nanotec

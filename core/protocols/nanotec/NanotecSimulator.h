@@ -20,7 +20,6 @@ public:
     explicit NanotecSimulator(const SimulatorOptions& options, QObject* parent = nullptr);
     ~NanotecSimulator() override;
 
-    QString modelId() const override { return QStringLiteral("nanotec"); }
     void receive(const QByteArray& bytes) override;
 
     // The drive that currently answers at `address` (after 'm' it moves), or nullptr.
@@ -28,6 +27,15 @@ public:
     NanotecDrive* addDrive(int address); // nullptr if taken or invalid
     QList<NanotecDrive*> drives() const;
     bool standingStill() override; // no drive turns its motor (after advancing to now)
+
+    // The probes of the base class name axes as the default machine does (X=1, Y=2, Z=3,
+    // defaultAxisAddresses()); an axis without a drive at its address neither moves nor has
+    // a position, and started moves of drives at other addresses are journaled as axis U.
+    bool isMoving(Axis axis) override; // the drive is active (moving, settling, pausing)
+    qint64 position(Axis axis) override;
+    QList<SimulatedMove> acceptedMoves() const override;      // startedMoves() by axis
+    void emergencyStop() override;                            // '#*S' (6.2), replies go nowhere
+    bool isStopFrame(const QByteArray& frame) const override; // 'S' to one drive or to all
 
     // Positioning runs ('A' in mode 1, positioning p1/p2) the drives started, in order, with
     // the steps each was to travel: soak runs compare them with the host's successful moves.

@@ -3,6 +3,7 @@
 #include "Logging.h"
 #include "NanotecClosedLoop.h"
 #include "NanotecController.h"
+#include "NanotecLogging.h"
 #include "transport/Transport.h"
 
 namespace stepdeck::nanotec {

@@ -83,7 +83,8 @@ public:
         const QString modelId = spec.modelId;
         session = std::make_unique<ControllerSession>();
         QString error;
-        if (!session->create(spec, &error))
+        const ModelInfo* model = findModel(modelId);
+        if (!model || !session->create(*model, spec, &error))
             return false;
         QObject::connect(session.get(), &ControllerSession::requestFinished, session.get(),
                          [this](const CommandResult& r) { results.insert(r.id, r); });

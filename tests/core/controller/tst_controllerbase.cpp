@@ -60,7 +60,6 @@ public:
             mutableStatus().axes.insert(a, AxisStatus{});
     }
 
-    QString modelId() const override { return QStringLiteral("fake"); }
     Capabilities capabilities() const override
     {
         Capabilities caps;

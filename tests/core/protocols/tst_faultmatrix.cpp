@@ -7,7 +7,6 @@
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
-#include "protocols/elab/ElabCodec.h"
 #include "sim/Simulator.h"
 #include "transport/LoopbackTransport.h"
 #include <QDeadlineTimer>
@@ -31,17 +30,6 @@ const char* motionName(Motion m)
     return names[int(m)];
 }
 
-// Frames that stop motion on each model (the manual's stop commands).
-bool isStopFrame(const QString& model, const QByteArray& frame)
-{
-    if (model == QLatin1String("elab")) {
-        return frame == elab::encode::stopMove() || frame == elab::encode::panicStop() ||
-               frame == elab::encode::panicStop() + elab::encode::panicStop() ||
-               frame == elab::encode::jogSpeed({0, 0, 0});
-    }
-    return frame.endsWith("S\r") && frame.startsWith('#'); // '#1S', '#*S'
-}
-
 // One model's adapter against its simulator over an in-memory link.
 struct Bench : test::ModelBench
 {
@@ -51,15 +39,16 @@ struct Bench : test::ModelBench
     {
         return ModelBench::run(call, timeoutMs);
     }
-    // Schema defaults where the device needs a setup before it moves (E-LAB tmInvSetup).
+    // Schema defaults where the device needs a setup before it moves
+    // (ModelInfo::setupBeforeMotion, E-LAB tmInvSetup).
     bool prepare()
     {
         if (!run([this](RequestId id) { ctl->openLink(id); }).ok())
             return false;
-        if (info->id != QLatin1String("elab"))
+        if (info->setupBeforeMotion.isEmpty())
             return true;
         ParameterSet set;
-        for (const QString name : {"start-speed", "max-speed", "acceleration", "feed-speed"}) {
+        for (const QString& name : info->setupBeforeMotion) {
             const ParameterSpec* spec = info->schema.find(name);
             ParameterValue v;
             for (Axis a : info->capabilities.axes)
@@ -99,7 +88,7 @@ struct Bench : test::ModelBench
     bool stopFrameReceived() const
     {
         for (const QByteArray& f : sim->receivedFrames()) {
-            if (isStopFrame(info->id, f))
+            if (sim->isStopFrame(f)) // the manual's stop commands (Simulator::isStopFrame)
                 return true;
         }
         return false;

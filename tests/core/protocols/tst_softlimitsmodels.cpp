@@ -10,7 +10,6 @@
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
 #include "protocols/elab/ElabSimulator.h"
-#include "protocols/emis/EmisSimulator.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "protocols/nanotec/NanotecDrive.h"
 #include "protocols/nanotec/NanotecSimulator.h"
@@ -89,16 +88,7 @@ struct Bench : test::ModelBench
             results->wait(20);
         return ctl->status().axes.value(Axis::X).referenced;
     }
-    qint64 simX()
-    {
-        if (id == QLatin1String("elab"))
-            return static_cast<elab::ElabSimulator*>(sim.get())->position(Axis::X);
-        if (id == QLatin1String("emis"))
-            return static_cast<emis::EmisSimulator*>(sim.get())->position(Axis::X);
-        if (id == QLatin1String("laser-axis"))
-            return static_cast<laser::LaserAxisSimulator*>(sim.get())->position(Axis::X);
-        return static_cast<nanotec::NanotecSimulator*>(sim.get())->drive(1)->position();
-    }
+    qint64 simX() { return sim->position(Axis::X); } // the device's own count
     qint64 hostX() const { return ctl->status().axes.value(Axis::X).position; }
     bool saidSoftLimit() const
     {

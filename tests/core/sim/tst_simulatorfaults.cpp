@@ -12,9 +12,12 @@ class EchoSimulator : public Simulator
 {
 public:
     using Simulator::Simulator;
-    QString modelId() const override { return QStringLiteral("echo"); }
     void receive(const QByteArray& bytes) override { send(bytes); }
     bool standingStill() override { return true; } // nothing ever moves
+    bool isMoving(Axis) override { return false; }
+    qint64 position(Axis) override { return 0; }
+    QList<SimulatedMove> acceptedMoves() const override { return {}; }
+    void emergencyStop() override {}
 };
 
 SimulatorOptions seeded(quint32 seed)

@@ -164,7 +164,7 @@ void TestEmisEndToEnd::registrySession_connectsAndMoves()
     spec.port = m_device->slavePath();
     spec.options.pollIntervalMs = 20;
     QString error;
-    QVERIFY2(session.create(spec, &error), qPrintable(error));
+    QVERIFY2(session.create(*model, spec, &error), qPrintable(error));
     QSignalSpy finished(&session, &ControllerSession::requestFinished);
     session.open();
     QTRY_COMPARE(session.linkState(), LinkState::Connected);
