@@ -6,6 +6,7 @@
 #include "CliCommands.h"
 #include "CliText.h"
 #include "model/ClosedLoop.h"
+#include "model/ModelOperations.h"
 #include <QElapsedTimer>
 #include <QJsonObject>
 
@@ -160,7 +161,7 @@ Outcome resetPositionError(CliContext& c, Axis axis)
 {
     // 5.14 'D': the drive's own operation; the position becomes the encoder's.
     const Outcome r = c.session.run([&](ControllerSession& s) {
-        return s.modelOperation(QStringLiteral("reset-position-error"),
+        return s.modelOperation(operation::kResetPositionError,
                                 {{cl::kAxis, axisName(axis)}});
     });
     if (r.ok() && !c.json())

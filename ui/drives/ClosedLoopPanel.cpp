@@ -3,6 +3,7 @@
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "model/ClosedLoop.h"
+#include "model/ModelOperations.h"
 #include <QComboBox>
 #include <QGridLayout>
 #include <QLabel>
@@ -286,7 +287,7 @@ void ClosedLoopPanel::disable()
 void ClosedLoopPanel::resetError()
 {
     // The drive's own operation (5.14 'D'): clears the error, position := encoder position.
-    send(Step::ResetError, QStringLiteral("reset-position-error"));
+    send(Step::ResetError, operation::kResetPositionError);
 }
 
 void ClosedLoopPanel::pollState()

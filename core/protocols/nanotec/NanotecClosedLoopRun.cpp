@@ -1,6 +1,7 @@
 // A calibration or closed-loop reference run in progress: watched on the drive ('$', 'C', 'I')
 // until it is ready again, then its result read back (readings: NanotecClosedLoop.h).
 #include "Logging.h"
+#include "NanotecLogging.h"
 #include "NanotecClosedLoop.h"
 #include <QTimer>
 
