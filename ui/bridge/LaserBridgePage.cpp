@@ -1,4 +1,5 @@
 #include "LaserBridgePage.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include "main/PortScanner.h"
 #include "transport/Transport.h"
@@ -35,7 +36,7 @@ LaserBridgePage::LaserBridgePage(MachineContext* context, PortScanner* ports, QW
     : QWidget(parent), m_context(context), m_ports(ports), m_port(new QComboBox(this)),
       m_scale(new QDoubleSpinBox(this)), m_doorInput(new QSpinBox(this)),
       m_start(new QPushButton(tr("Start bridge"), this)),
-      m_stop(new QPushButton(tr("Stop bridge"), this)), m_state(new QLabel(this)),
+      m_stop(new QPushButton(tr("Stop bridge"), this)), m_state(new ElidedLabel(this, 2)),
       m_table(new QTableWidget(0, ColCount, this)), m_log(new QPlainTextEdit(this))
 {
     m_table->setHorizontalHeaderLabels({tr("Laser axis"), tr("Axis"), tr("State"), tr("Target"),
@@ -150,7 +151,8 @@ QWidget* LaserBridgePage::buildForm()
     buttons->addWidget(m_start);
     buttons->addWidget(m_stop);
     v->addLayout(buttons);
-    m_state->setWordWrap(true);
+    // Two lines reserved (full text in the tooltip): the note below never moves.
+    m_state->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_state->setObjectName(QStringLiteral("laserBridgeState"));
     v->addWidget(m_state);
     auto* priority = new QLabel(tr("STOP, PANIC and jog keep priority over the bridge: a target "

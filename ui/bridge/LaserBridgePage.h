@@ -1,5 +1,6 @@
 #pragma once
 #include "bridge/LaserBridge.h"
+#include "common/ElidedLabel.h"
 #include <QWidget>
 
 class QComboBox;
@@ -70,7 +71,7 @@ private:
     QSpinBox* m_doorInput;
     QPushButton* m_start;
     QPushButton* m_stop;
-    QLabel* m_state;
+    ElidedLabel* m_state;
     QTableWidget* m_table;
     QPlainTextEdit* m_log;
     Transport* m_laserPort = nullptr;

@@ -1,6 +1,7 @@
 #include "TrafficConsole.h"
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QFile>
@@ -24,7 +25,7 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_view(new QPlainTextEdit(this)),
       m_hex(new QCheckBox(tr("Hex"), this)), m_hidePolls(new QCheckBox(tr("Hide polls"), this)),
       m_pause(new QCheckBox(tr("Pause"), this)), m_send(new QLineEdit(this)),
-      m_sendButton(new QPushButton(tr("Send"), this)), m_sendError(new QLabel(this)),
+      m_sendButton(new QPushButton(tr("Send"), this)), m_sendError(new ElidedLabel(this, 2)),
       m_count(new QLabel(this)), m_refresh(new QTimer(this))
 {
     auto* clearButton = new QPushButton(tr("Clear"), this);
@@ -52,7 +53,9 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     m_send->setPlaceholderText(tr("Send raw bytes, e.g. <ENQ> or <DC4>0064,0000;0000."));
     m_send->setClearButtonEnabled(true);
     m_sendError->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
-    m_sendError->setWordWrap(true);
+    // Two lines reserved, a longer error elided (full text in the tooltip): the send field
+    // above never moves while the operator types (issue 16).
+    m_sendError->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
 
     auto* sendRow = new QHBoxLayout;
     sendRow->addWidget(m_send, 1);

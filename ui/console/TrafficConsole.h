@@ -1,4 +1,5 @@
 #pragma once
+#include "common/ElidedLabel.h"
 #include "model/CommandResult.h"
 #include "model/Traffic.h"
 #include <QWidget>
@@ -58,7 +59,7 @@ private:
     QCheckBox* m_pause;
     QLineEdit* m_send;
     QPushButton* m_sendButton;
-    QLabel* m_sendError;
+    ElidedLabel* m_sendError;
     QLabel* m_count;
     QTimer* m_refresh;
     RequestId m_pendingSend = 0;

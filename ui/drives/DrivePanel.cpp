@@ -1,5 +1,6 @@
 #include "DrivePanel.h"
 #include "ClosedLoopPanel.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QHeaderView>
@@ -39,7 +40,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
       m_closedLoop(new ClosedLoopPanel(context, this)),
       m_scan(new QPushButton(tr("Scan bus"), this)),
       m_cancelScan(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
-      m_scanState(new QLabel(this))
+      m_scanState(new ElidedLabel(this, 2))
 {
     m_drives->setObjectName(QStringLiteral("driveTable"));
     m_found->setObjectName(QStringLiteral("foundTable"));
@@ -58,7 +59,8 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     m_cancelScan->setToolTip(tr("Stop the scan after the addresses being asked now"));
     m_progress->setTextVisible(true);
     m_progress->setValue(0);
-    m_scanState->setWordWrap(true);
+    // Two lines reserved (full text in the tooltip): the found list below never moves.
+    m_scanState->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     v->addLayout(row);
     v->addWidget(m_scanState);
     v->addWidget(m_found, 1);

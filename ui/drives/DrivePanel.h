@@ -12,6 +12,7 @@ class QTableWidget;
 namespace stepdeck::ui {
 
 class ClosedLoopPanel;
+class ElidedLabel;
 class MachineContext;
 
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
@@ -64,7 +65,7 @@ private:
     QPushButton* m_scan;
     QPushButton* m_cancelScan;
     QProgressBar* m_progress;
-    QLabel* m_scanState;
+    ElidedLabel* m_scanState;
     RequestId m_scanId = 0;
     int m_scanFirst = 0;
     int m_scanNext = 0; // first address of the next chunk

@@ -1,4 +1,5 @@
 #include "GamepadPanel.h"
+#include "common/ElidedLabel.h"
 #include "common/LedIndicator.h"
 #include "gamepad/GamepadDevice.h"
 #include "gamepad/GamepadJogSource.h"
@@ -19,14 +20,16 @@ constexpr int kMaxStickAxes = 8;
 }
 
 GamepadPanel::GamepadPanel(GamepadJogSource* source, QWidget* parent)
-    : QWidget(parent), m_source(source), m_device(new QLabel(this)),
+    : QWidget(parent), m_source(source), m_device(new ElidedLabel(this, 2)),
       m_deadmanLed(new LedIndicator(tr("Dead-man button held"), this)),
       m_enabled(new QCheckBox(tr("Jog with the gamepad"), this)), m_deadman(new QSpinBox(this)),
       m_deadZone(new QSpinBox(this)), m_calibrate(new QPushButton(tr("Calibrate"), this)),
-      m_hint(new QLabel(this)), m_rawForm(new QFormLayout)
+      m_hint(new ElidedLabel(this, 3)), m_rawForm(new QFormLayout)
 {
-    m_device->setWordWrap(true);
-    m_hint->setWordWrap(true);
+    // Reserved lines (the full text in the tooltip): a gamepad plugged in or a calibration
+    // hint never moves the settings the operator is changing (issue 16).
+    for (ElidedLabel* label : {m_device, m_hint})
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_enabled->setChecked(source->isEnabled());
     m_deadman->setRange(0, 31);
     m_deadman->setValue(qMax(0, source->deadmanButton()));

@@ -12,6 +12,7 @@ class QSpinBox;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class GamepadJogSource;
 class LedIndicator;
 
@@ -30,13 +31,13 @@ private:
     void toggleCalibration();
 
     GamepadJogSource* m_source;
-    QLabel* m_device;
+    ElidedLabel* m_device;
     LedIndicator* m_deadmanLed;
     QCheckBox* m_enabled;
     QSpinBox* m_deadman;
     QSpinBox* m_deadZone;
     QPushButton* m_calibrate;
-    QLabel* m_hint;
+    ElidedLabel* m_hint;
     QMap<Axis, QComboBox*> m_binding;
     QMap<Axis, QCheckBox*> m_invert;
     QList<QProgressBar*> m_bars;

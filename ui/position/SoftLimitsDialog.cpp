@@ -1,4 +1,5 @@
 #include "SoftLimitsDialog.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -20,7 +21,7 @@ int toSpin(qint64 steps)
 } // namespace
 
 SoftLimitsDialog::SoftLimitsDialog(MachineContext* context, QWidget* parent)
-    : QDialog(parent), m_context(context), m_problem(new QLabel(this))
+    : QDialog(parent), m_context(context), m_problem(new ElidedLabel(this, 2))
 {
     setObjectName(QStringLiteral("softLimitsDialog"));
     setWindowTitle(tr("Soft limits"));
@@ -69,7 +70,8 @@ SoftLimitsDialog::SoftLimitsDialog(MachineContext* context, QWidget* parent)
         ++r;
     }
     m_problem->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
-    m_problem->setWordWrap(true);
+    // Two lines reserved (the full text in the tooltip): OK and Cancel never move.
+    m_problem->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);

@@ -8,6 +8,7 @@ class QSpinBox;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class MachineContext;
 
 // Soft limits per axis, in machine steps: on/off, minimum and maximum, and "here" buttons
@@ -29,7 +30,7 @@ private:
     };
     MachineContext* m_context;
     QMap<Axis, Row> m_rows;
-    QLabel* m_problem;
+    ElidedLabel* m_problem;
 };
 
 } // namespace stepdeck::ui

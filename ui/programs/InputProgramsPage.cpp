@@ -1,4 +1,5 @@
 #include "InputProgramsPage.h"
+#include "common/ElidedLabel.h"
 #include "main/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QDateTime>
@@ -36,17 +37,20 @@ QString inputDescription(const ModelInfo* model, int n)
 
 InputProgramsPage::InputProgramsPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_list(new QListWidget(this)),
-      m_title(new QLineEdit(this)), m_commands(new QPlainTextEdit(this)), m_check(new QLabel(this)),
-      m_write(new QPushButton(tr("Write to controller"), this)),
+      m_title(new QLineEdit(this)), m_commands(new QPlainTextEdit(this)),
+      m_check(new ElidedLabel(this, 2)), m_write(new QPushButton(tr("Write to controller"), this)),
       m_force(new QPushButton(tr("Write anyway"), this)),
-      m_erase(new QPushButton(tr("Erase from controller"), this)), m_message(new QLabel(this))
+      m_erase(new QPushButton(tr("Erase from controller"), this)),
+      m_message(new ElidedLabel(this, 2))
 {
     m_title->setMaxLength(kTitleMax);
     m_title->setPlaceholderText(tr("e.g. Input 8: vector move X"));
     m_commands->setPlaceholderText(tr("One command per line, e.g.\n$H,x\nL1,x191\nW1500"));
     m_commands->setTabChangesFocus(true);
-    m_check->setWordWrap(true);
-    m_message->setWordWrap(true);
+    // Two lines reserved each, longer texts elided (the full text in the tooltip): the check
+    // that follows the typing never moves the editor or the buttons (issue 16).
+    for (ElidedLabel* label : {m_check, m_message})
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_force->setVisible(false);
     m_force->setToolTip(tr("The input carries a reference switch: write only if no switch is "
                            "wired to it"));

@@ -10,6 +10,7 @@ class QPushButton;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class MachineContext;
 
 // Programs the controller runs by itself when an input becomes active (Capabilities::
@@ -56,11 +57,11 @@ private:
     QListWidget* m_list;
     QLineEdit* m_title;
     QPlainTextEdit* m_commands;
-    QLabel* m_check;
+    ElidedLabel* m_check;
     QPushButton* m_write;
     QPushButton* m_force;
     QPushButton* m_erase;
-    QLabel* m_message;
+    ElidedLabel* m_message;
     RequestId m_pending = 0;
     int m_pendingInput = 0;
     bool m_pendingErase = false;
