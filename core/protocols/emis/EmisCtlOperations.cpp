@@ -256,7 +256,7 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
             if (r.outcome != EmisLink::Outcome::Ok)
                 return finishFailure(id, frame, r);
             if (c.kind == Command::Kind::SystemWrite) {
-                m_stored.entries << c.system;
+                m_stored.store(c.system);
                 noteStored(m_stored);
             } else if (c.kind == Command::Kind::ReadSystem) {
                 noteStored(parseSystemParameters(r.text));

@@ -207,7 +207,7 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
         for (const ParameterPlan::Frame& f : plan.frames) {
             written << QString::fromLatin1(f.bytes.chopped(1));
             if (const auto entry = parseSystemEntry(f.bytes.mid(2).chopped(1), nullptr))
-                m_stored.entries << *entry; // later entries override (SystemParameters::find)
+                m_stored.store(*entry); // keeps the motors the entry does not name
         }
         noteStored(m_stored);
         if (set.contains(QStringLiteral("reference-switch-type")))

@@ -24,6 +24,7 @@ private Q_SLOTS:
     void write_bellFromBoard_namesCommand();
     void read_returnsValuesWrittenInSession();
     void store_systemForms_readyParsed_readBack();
+    void store_partialEntry_otherMotorsStayKnown();
     void store_notStorable_unsupportedNothingSent();
     void store_missingAcks_timeoutNamesCount();
     void clear_sendsPesys();
@@ -197,6 +198,34 @@ void TestEmisController::store_systemForms_readyParsed_readBack()
              QString("NC"));
     QCOMPARE(stored.value("ramp").global.toLongLong(), 100);
     QCOMPARE(read.value.toMap().value("entries").toList().size(), 5);
+}
+
+void TestEmisController::store_partialEntry_otherMotorsStayKnown()
+{
+    // A later "##c" for X alone must not hide Y's stored currents from the host: a store of
+    // Y's run current takes its idle current from the first, full entry.
+    const auto store = [this](const ParameterSet& set) {
+        return m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(set)}});
+    };
+    const auto perAxis = [](qint64 x, qint64 y, qint64 z, qint64 u) {
+        return ParameterValue{{}, {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}, {Axis::U, u}}};
+    };
+    ParameterSet all{{"run-current", perAxis(100, 100, 100, 100)},
+                     {"idle-current", perAxis(0, 5, 20, 0)}};
+    const CommandResult first = store(all);
+    QVERIFY2(first.ok(), qPrintable(first.message));
+    ParameterSet xOnly{{"run-current", ParameterValue{{}, {{Axis::X, 50}}}},
+                       {"idle-current", ParameterValue{{}, {{Axis::X, 10}}}}};
+    QVERIFY(store(xOnly).ok());
+    const CommandResult r = store({{"run-current", ParameterValue{{}, {{Axis::Y, 80}}}}});
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("##c"),
+             (QList<QByteArray>{"##c,x100,0,y100,5,z100,20,u100,0", "##c,x50,10", "##c,y80,5"}));
+    const QList<SystemEntry> stored = m_rig.sim->storedEntries();
+    QCOMPARE(stored.size(), 1);
+    QCOMPARE(stored.first().values.value(Axis::Y), 80);
+    QCOMPARE(stored.first().idle.value(Axis::Y), 5);
+    QCOMPARE(stored.first().values.value(Axis::X), 50);
 }
 
 void TestEmisController::store_notStorable_unsupportedNothingSent()

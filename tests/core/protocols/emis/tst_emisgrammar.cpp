@@ -31,6 +31,7 @@ private Q_SLOTS:
     void prsys_lenientSeparators_data();
     void prsys_lenientSeparators();
     void prsys_formatRoundTrip();
+    void prsys_partialEntry_keepsMotorsItDoesNotName();
     void decoder_framesCrStxEtx();
     void decoder_randomChunks_sameFrames();
     void decoder_overlong_boundedAndResyncs();
@@ -322,10 +323,26 @@ void TestEmisGrammar::prsys_formatRoundTrip()
     const QByteArray text = formatSystemParameters(entries);
     QVERIFY(text.startsWith("*PRSYS:##D,"));
     const SystemParameters p = parseSystemParameters(text);
-    QCOMPARE(p.entries.size(), 4);
+    QCOMPARE(p.entries.size(), 3);
     QCOMPARE(p.find(SystemEntry::Key::Ramp)->ramp, 300); // the later entry wins
     QVERIFY(p.find(SystemEntry::Key::ReferenceSwitch)->normallyClosed.value(Axis::Y));
     QVERIFY(p.unparsed.isEmpty());
+}
+
+void TestEmisGrammar::prsys_partialEntry_keepsMotorsItDoesNotName()
+{
+    SystemParameters p = parseSystemParameters("*PRSYS:##c,x100,0,y100,0,z100,20,u100,0\r\n"
+                                               "##c,x50,10");
+    QCOMPARE(p.entries.size(), 1);
+    const SystemEntry* c = p.find(SystemEntry::Key::Currents);
+    QCOMPARE(c->values,
+             (QMap<Axis, qint64>{{Axis::X, 50}, {Axis::Y, 100}, {Axis::Z, 100}, {Axis::U, 100}}));
+    QCOMPARE(c->idle.value(Axis::X), 10);
+    QCOMPARE(c->idle.value(Axis::Z), 20);
+    p.store(*parseSystemEntry("REFSW,uNC", nullptr));
+    p.store(*parseSystemEntry("REFSW,xNC", nullptr));
+    QCOMPARE(p.find(SystemEntry::Key::ReferenceSwitch)->normallyClosed,
+             (QMap<Axis, bool>{{Axis::X, true}, {Axis::U, true}}));
 }
 
 void TestEmisGrammar::decoder_framesCrStxEtx()
