@@ -137,6 +137,7 @@ private:
 
     // --- motion (EmisCtlMotion.cpp) ---
     QString busyAxes(const QList<Axis>& axes, bool forReference) const;
+    QString unknownAbsolute(const QList<VectorTarget>& targets) const; // refusal, or empty
     void startVector(RequestId id, const QList<VectorTarget>& targets, bool jog);
     void startHome(RequestId id, const QList<Axis>& axes, bool simultaneous);
     void onArrived(Axis axis);

@@ -68,12 +68,6 @@ void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
         return;
     QList<VectorTarget> list;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
-        if (!status().axes.value(it.key()).positionKnown) {
-            return finishError(id, ErrorKind::Refused,
-                               tr("absolute move refused: position of axis %1 is unknown, "
-                                  "reference it first")
-                                   .arg(axisName(it.key())));
-        }
         if (qAbs(it.value()) > limits::kVectorMax) {
             return finishError(id, ErrorKind::InvalidValue,
                                tr("target %1 of axis %2 is out of range (allowed: -%3..%3)")
@@ -83,9 +77,22 @@ void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
         }
         list << VectorTarget{it.key(), it.value(), true}; // "L1,X1000" (9.11)
     }
+    if (const QString refusal = unknownAbsolute(list); !refusal.isEmpty())
+        return finishError(id, ErrorKind::Refused, refusal);
     if (list.isEmpty())
         return finishOk(id);
     startVector(id, list, false);
+}
+
+QString EmisController::unknownAbsolute(const QList<VectorTarget>& targets) const
+{
+    for (const VectorTarget& t : targets) {
+        if (t.absolute && !status().axes.value(t.axis).positionKnown) {
+            return tr("absolute move refused: position of axis %1 is unknown, reference it first")
+                .arg(axisName(t.axis));
+        }
+    }
+    return {};
 }
 
 void EmisController::startVector(RequestId id, const QList<VectorTarget>& targets, bool jog)

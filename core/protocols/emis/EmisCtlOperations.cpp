@@ -230,12 +230,9 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
         return finishError(id, ErrorKind::InvalidValue, e);
     switch (c.kind) {
     case Command::Kind::Vector: // through the bookkeeping, so positions stay right
-        if (c.targets.first().absolute) {
-            AxisVector targets;
-            for (const VectorTarget& t : c.targets)
-                targets.insert(t.axis, t.value);
-            return moveAbsolute(id, targets);
-        }
+        // Each target as typed: "L1,X100,y50" moves X to 100 and Y by 50 (9.11).
+        if (const QString refusal = unknownAbsolute(c.targets); !refusal.isEmpty())
+            return finishError(id, ErrorKind::Refused, refusal);
         return startVector(id, c.targets, false);
     case Command::Kind::Home:
         return startHome(id, c.axes, c.simultaneous);

@@ -35,6 +35,7 @@ private Q_SLOTS:
     void program_lineRefusedByBoard_partialProgramErased();
     void program_erase();
     void console_commandsRoutedThroughBookkeeping();
+    void console_mixedVector_eachTargetAsTyped();
 
 private:
     EmisRig m_rig;
@@ -361,6 +362,32 @@ void TestEmisController::console_commandsRoutedThroughBookkeeping()
     QCOMPARE(r.error, ErrorKind::Refused);
     r = m_rig.run([this](RequestId id) { m_rig.ctl->sendRaw(id, "#S0\r"); });
     QCOMPARE(r.error, ErrorKind::InvalidValue);
+}
+
+void TestEmisController::console_mixedVector_eachTargetAsTyped()
+{
+    const auto console = [this](const QByteArray& line) {
+        return m_rig.run([&](RequestId id) { m_rig.ctl->sendRaw(id, line + "\r"); });
+    };
+    // Z is not referenced: its absolute target is refused, whatever comes first.
+    CommandResult r = console("L1,x10,Z5");
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY2(r.message.contains("axis Z"), qPrintable(r.message));
+    QVERIFY(m_rig.commandsStartingWith("L1").isEmpty());
+    QVERIFY(m_rig.operation("reference", {{"axes", "XY"}, {"simultaneous", true}}).ok());
+    QTRY_VERIFY(m_rig.axis(Axis::X).referenced && m_rig.axis(Axis::Y).referenced);
+    QVERIFY(console("L1,y30").ok());
+    QTRY_VERIFY(!m_rig.anyMoving());
+    // X absolute, Y relative (9.11): the board moves Y by 50 more.
+    r = console("L1,X100,y50");
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("L1").last(), QByteArray("L1,X100,y50"));
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.sim->position(Axis::X), 100);
+    QCOMPARE(m_rig.sim->position(Axis::Y), 80);
+    QCOMPARE(m_rig.axis(Axis::X).position, 100);
+    QCOMPARE(m_rig.axis(Axis::Y).position, 80);
+    QVERIFY(m_rig.axis(Axis::Y).positionKnown);
 }
 
 QTEST_GUILESS_MAIN(TestEmisController)
