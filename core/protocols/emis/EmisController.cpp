@@ -289,7 +289,9 @@ void EmisController::onPollDue()
             res.outcome == EmisLink::Outcome::Ok ? parseAllInputs(res.text) : std::nullopt;
         if (levels)
             applyInputs(*levels);
-        m_poller.pollFinished(levels.has_value());
+        // A <BEL> is a refusal (read as "busy" while a motor moves), so the board is there:
+        // only silence and garbage count towards link loss. The inputs keep their last levels.
+        m_poller.pollFinished(levels || res.outcome == EmisLink::Outcome::Refused);
         if (levels)
             publish();
     };

@@ -37,6 +37,8 @@ QByteArray EmisSimulator::run(const Command& c)
     case K::Input:
         return ack(c.text + ' ' + (inputLevels().value(c.number - 1) ? '1' : '0'));
     case K::AllInputs: {
+        if (m_bellOnPollWhileMoving && anyMoving())
+            return bel();
         QByteArray bits;
         for (bool level : inputLevels())
             bits += level ? '1' : '0';

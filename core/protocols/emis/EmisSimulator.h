@@ -83,6 +83,9 @@ public:
     void setInput(int number, bool level);                // inputs 5..8
     void dropArrivals(int count); // the next `count` <DCn> are not sent (the motor still stops)
     void bellOn(const QByteArray& command) { m_bellOn = command; } // <BEL> the next time it comes
+    // A board that refuses the input query while a motor moves (<BEL>: "busy", a reading the
+    // manual allows, chapter 9 introduction).
+    void setBellOnPollWhileMoving(bool on) { m_bellOnPollWhileMoving = on; }
     void powerCycle(); // working values from the stored ones, counters 0, outputs off
     // The machine's emergency-stop circuit (the board has no stop command): every motor
     // stands where it is at once, reference runs are abandoned, no <DCn> follows.
@@ -128,6 +131,7 @@ private:
     int m_arrivalsDropped = 0;
     int m_busyRefusals = 0;
     QByteArray m_bellOn;
+    bool m_bellOnPollWhileMoving = false;
     CommandDecoder m_decoder;
     QList<QByteArray> m_commands;
     QTimer m_timer{this};

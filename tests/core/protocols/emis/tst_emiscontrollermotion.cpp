@@ -30,6 +30,7 @@ private Q_SLOTS:
     void reference_sequentialAndSimultaneous();
     void reference_minusOne_invalid();
     void lostArrival_deadline_motionUnconfirmed_untilReferenced();
+    void pollRefusedWhileMoving_linkStays_moveArrives();
     void noNakReply_lateArrivalStillCounts();
     void unexpectedArrival_positionUnknown();
     void jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival();
@@ -176,6 +177,25 @@ void TestEmisControllerMotion::lostArrival_deadline_motionUnconfirmed_untilRefer
     QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
     QTRY_VERIFY(!m_rig.ctl->status().motionUnconfirmed);
     QVERIFY(m_rig.axis(Axis::X).positionKnown);
+}
+
+void TestEmisControllerMotion::pollRefusedWhileMoving_linkStays_moveArrives()
+{
+    // The board answers every @IG with <BEL> while a motor moves: a refusal, not silence.
+    QVERIFY(m_rig.write({"ramp=20", "start-speed=500", "work-speed=500"}).ok());
+    m_rig.sim->clearReceivedCommands();
+    m_rig.sim->setBellOnPollWhileMoving(true);
+    QSignalSpy link(m_rig.ctl, &Controller::linkStateChanged);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 300}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_rig.sim->anyMoving(), 5000); // 0.6 s at 500 steps/s
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QVERIFY(link.isEmpty()); // never Lost
+    QCOMPARE(m_rig.ctl->linkState(), LinkState::Connected);
+    QVERIFY2(m_rig.sim->receivedCommands().count("@IG") > 5, "polled while moving");
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    QCOMPARE(m_rig.axis(Axis::X).position, 300);
+    QCOMPARE(m_rig.sim->position(Axis::X), 300);
+    QVERIFY(!m_rig.axis(Axis::X).positionEstimated);
 }
 
 void TestEmisControllerMotion::noNakReply_lateArrivalStillCounts()
