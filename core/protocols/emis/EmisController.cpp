@@ -203,13 +203,13 @@ void EmisController::stopTrackingMotion(const QString& reason)
 // ---------------------------------------------------------------- requests
 
 void EmisController::request(const QByteArray& bytes, EmisLink::Expect expect, Handler done,
-                             int timeoutMs, int storedCount, bool exclusive)
+                             int timeoutMs, int storedMotors, bool exclusive)
 {
     EmisLink::Request r;
     r.bytes = bytes;
     r.expect = expect;
     r.timeoutMs = timeoutMs;
-    r.storedCount = storedCount;
+    r.storedMotors = storedMotors;
     r.exclusive = exclusive;
     r.done = std::move(done);
     m_link->submit(std::move(r));

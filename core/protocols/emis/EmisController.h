@@ -130,7 +130,7 @@ private:
     void changeLink(LinkState state, const QString& reason = {});
     bool requireLink(RequestId id);
     void request(const QByteArray& bytes, EmisLink::Expect expect, Handler done, int timeoutMs = 0,
-                 int storedCount = 0, bool exclusive = false);
+                 int storedMotors = 0, bool exclusive = false);
     QString failureText(const QByteArray& bytes, const EmisLink::Result& r) const;
     ErrorKind failureKind(const EmisLink::Result& r) const;
     void finishFailure(RequestId id, const QByteArray& bytes, const EmisLink::Result& r);

@@ -270,7 +270,7 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
             publish();
             finishOk(id, QString::fromLatin1(r.text));
         },
-        stored ? kStoreTimeoutMs : 0, stored ? c.system.storedCount() : 0);
+        stored ? kStoreTimeoutMs : 0, stored ? c.system.motorCount() : 0);
 }
 
 } // namespace stepdeck::emis

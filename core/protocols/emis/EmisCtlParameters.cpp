@@ -38,7 +38,7 @@ void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& 
     if (index >= frames.size())
         return onDone();
     const ParameterPlan::Frame& f = frames[index];
-    const bool stored = f.storedCount > 0;
+    const bool stored = f.storedMotors > 0;
     request(
         f.bytes, stored ? EmisLink::Expect::Stored : EmisLink::Expect::Ack,
         [this, id, frames, index, onDone](const EmisLink::Result& r) {
@@ -50,7 +50,7 @@ void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& 
                 text += tr(" (%n command(s) before it were accepted)", nullptr, index);
             finishError(id, failureKind(r), text);
         },
-        stored ? kStoreTimeoutMs : 0, f.storedCount);
+        stored ? kStoreTimeoutMs : 0, f.storedMotors);
 }
 
 void EmisController::writeParameters(RequestId id, const ParameterSet& values, bool verify)

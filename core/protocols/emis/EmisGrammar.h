@@ -51,9 +51,9 @@ struct SystemEntry
     qint64 ramp = 0;                                  // Ramp
     qint64 flexStart = 0, flexWork = 0, flexRamp = 0; // SmcFlex
 
-    // How many <ACK> follow "Ready!" (9.14): one per motor the entry applies to. Every example
-    // in 9.14 shows four, also "##R,100" and "##S,200,1800,100", which apply to all motors.
-    int storedCount() const;
+    // The motors the entry names ("##R,100" and "##S,200,1800,100" apply to all four): the
+    // fewest <ACK>s after "Ready!" a board may send for it (kStoredAcks).
+    int motorCount() const;
 };
 std::optional<SystemEntry> parseSystemEntry(const QByteArray& entry, QString* error);
 QByteArray formatSystemEntry(const SystemEntry& entry); // without "##" and <CR>

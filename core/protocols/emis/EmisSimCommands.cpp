@@ -169,11 +169,18 @@ QByteArray EmisSimulator::runVector(const Command& c)
 QByteArray EmisSimulator::runSystemWrite(const Command& c)
 {
     storeEntry(c.system);
-    // 9.14: "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>": one <ACK> per stored entry after Ready!.
-    QByteArray reply = ack() + " Ready! ";
-    for (int i = 0; i < c.system.storedCount(); ++i)
-        reply += (i ? " " : "") + ack();
-    return reply;
+    // 9.14: "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>", each <ACK> after "Ready!" once its part of
+    // the flash is written.
+    const int acks = (m_storedAcksPerMotor ? c.system.motorCount() : kStoredAcks) -
+                     std::exchange(m_withheldAcks, 0);
+    QList<QByteArray> parts{ack()};
+    for (int i = 0; i < acks; ++i)
+        parts << (i ? QByteArray(" ") : QByteArray(" Ready! ")) + ack();
+    if (m_flashWriteMs == 0)
+        return parts.join();
+    m_flashParts = parts.mid(1);
+    m_flashTimer.start(m_flashWriteMs);
+    return parts.first();
 }
 
 void EmisSimulator::storeEntry(const SystemEntry& entry)

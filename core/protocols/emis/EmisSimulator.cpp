@@ -17,6 +17,7 @@ EmisSimulator::EmisSimulator(const SimulatorOptions& options, QObject* parent)
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(5);
     connect(&m_timer, &QTimer::timeout, this, &EmisSimulator::tick);
+    connect(&m_flashTimer, &QTimer::timeout, this, &EmisSimulator::flashWritten);
     m_clock.start();
     powerCycle();
 }
@@ -118,6 +119,9 @@ void EmisSimulator::powerCycle()
     m_outputs.fill(false);
     m_programming = 0;
     m_decoder.reset();
+    m_flashTimer.stop();
+    m_flashParts.clear();
+    m_waitingInput.clear();
     loadWorkingFromStored();
 }
 
@@ -262,8 +266,29 @@ void EmisSimulator::ensureTicking()
 
 void EmisSimulator::receive(const QByteArray& bytes)
 {
-    for (const CommandDecoder::Frame& frame : m_decoder.feed(bytes))
-        execute(frame);
+    if (m_flashTimer.isActive()) {
+        m_waitingInput += bytes;
+        return;
+    }
+    const QList<CommandDecoder::Frame> frames = m_decoder.feed(bytes);
+    for (int i = 0; i < frames.size(); ++i) {
+        execute(frames[i]);
+        if (m_flashTimer.isActive()) { // a "##" write: the rest waits until it is done
+            for (const CommandDecoder::Frame& later : frames.mid(i + 1))
+                m_waitingInput += later.text + later.terminator;
+            return;
+        }
+    }
+}
+
+void EmisSimulator::flashWritten()
+{
+    if (!m_flashParts.isEmpty())
+        send(m_flashParts.takeFirst());
+    if (!m_flashParts.isEmpty())
+        return;
+    m_flashTimer.stop();
+    receive(std::exchange(m_waitingInput, QByteArray()));
 }
 
 void EmisSimulator::execute(const CommandDecoder::Frame& frame)

@@ -25,6 +25,10 @@ namespace stepdeck::emis {
 // - Programming an input (*PWIN..<ETX>) stores the program; running it on an input edge is
 //   not simulated.
 // - *PRSYS lists the stored entries as "##<entry>" separated by CR LF, closed by <ACK>.
+// - A "##" write answers its <ACK> at once, then "Ready!" and the further <ACK>s one flash
+//   write time apart (setFlashWriteMs); kStoredAcks of them, or one per motor the entry
+//   names (setStoredAcksPerMotor), the two readings of 9.14. Commands that come meanwhile
+//   wait until the flash is written (one controller, busy writing).
 class EmisSimulator : public Simulator
 {
     Q_OBJECT
@@ -86,6 +90,9 @@ public:
     // A board that refuses the input query while a motor moves (<BEL>: "busy", a reading the
     // manual allows, chapter 9 introduction).
     void setBellOnPollWhileMoving(bool on) { m_bellOnPollWhileMoving = on; }
+    void setFlashWriteMs(int ms) { m_flashWriteMs = qMax(0, ms); } // 0: the whole reply at once
+    void setStoredAcksPerMotor(bool on) { m_storedAcksPerMotor = on; }
+    void withholdStoredAcks(int count) { m_withheldAcks = count; } // the next "##" sends fewer
     void powerCycle(); // working values from the stored ones, counters 0, outputs off
     // The machine's emergency-stop circuit (the board has no stop command): every motor
     // stands where it is at once, reference runs are abandoned, no <DCn> follows.
@@ -110,6 +117,7 @@ private:
     void arrived(Axis axis);
     void tick();
     void ensureTicking();
+    void flashWritten(); // the next part of a "##" reply; input that waited is taken then
 
     std::array<EmisSimAxis, 4> m_axes;
     std::array<qint64, 4> m_origin{}; // physical step that the board's counter calls 0
@@ -132,6 +140,12 @@ private:
     int m_busyRefusals = 0;
     QByteArray m_bellOn;
     bool m_bellOnPollWhileMoving = false;
+    int m_flashWriteMs = 10;
+    bool m_storedAcksPerMotor = false;
+    int m_withheldAcks = 0;
+    QList<QByteArray> m_flashParts; // the rest of a "##" reply, one part per flash write
+    QTimer m_flashTimer{this};
+    QByteArray m_waitingInput; // received while the flash is written
     CommandDecoder m_decoder;
     QList<QByteArray> m_commands;
     QTimer m_timer{this};

@@ -89,7 +89,7 @@ QByteArray perAxisText(const QMap<Axis, qint64>& values)
 }
 } // namespace
 
-int SystemEntry::storedCount() const
+int SystemEntry::motorCount() const
 {
     switch (key) {
     case Key::ReferenceSwitch:

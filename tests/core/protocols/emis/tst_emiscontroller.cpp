@@ -27,6 +27,8 @@ private Q_SLOTS:
     void store_partialEntry_otherMotorsStayKnown();
     void store_notStorable_unsupportedNothingSent();
     void store_missingAcks_timeoutNamesCount();
+    void store_entryOfOneMotor_fourAcksRead_nextReplyIsItsOwn();
+    void store_boardAcksPerMotor_quietLineEndsWrite();
     void clear_sendsPesys();
     void output_switchedAndTracked();
     void program_sequenceAsInManual_noPollInBetween();
@@ -246,7 +248,7 @@ void TestEmisController::store_notStorable_unsupportedNothingSent()
 
 void TestEmisController::store_missingAcks_timeoutNamesCount()
 {
-    m_rig.sim->faults().corruptReplies = 1; // the last <ACK> of the reply arrives garbled
+    m_rig.sim->withholdStoredAcks(1); // the last <ACK> of the reply never comes
     ParameterSet set{{"ramp", ParameterValue{200, {}}}};
     const CommandResult r =
         m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(set)}});
@@ -254,8 +256,52 @@ void TestEmisController::store_missingAcks_timeoutNamesCount()
     QVERIFY2(r.message.contains("3 of 4"), qPrintable(r.message));
 }
 
+void TestEmisController::store_entryOfOneMotor_fourAcksRead_nextReplyIsItsOwn()
+{
+    // "##REFSW,xNC" names one motor; the board sends four <ACK>s after "Ready!" as every
+    // example of 9.14 shows, a flash write apart. None may be taken for the next reply: the
+    // move queued behind the write gets its own <NAK>.
+    const int resyncs = m_rig.ctl->status().resyncCount;
+    QSignalSpy finished(m_rig.ctl, &Controller::requestFinished);
+    const ParameterSet nc{{"reference-switch-type", ParameterValue{{}, {{Axis::X, "NC"}}}}};
+    const RequestId writeId = 1000;
+    const CommandResult move = m_rig.run([&](RequestId id) {
+        m_rig.ctl->writeParameters(writeId, nc, false);
+        m_rig.ctl->moveRelative(id, {{Axis::X, 20}});
+    });
+    QVERIFY2(move.ok(), qPrintable(move.message));
+    QVERIFY(!finished.isEmpty());
+    QCOMPARE(finished.first().at(0).value<CommandResult>().id, writeId);
+    QVERIFY(finished.first().at(0).value<CommandResult>().ok());
+    QCOMPARE(m_rig.commandsStartingWith("##"), QList<QByteArray>{"##REFSW,xNC"});
+    QCOMPARE(m_rig.commandsStartingWith("L1"), QList<QByteArray>{"L1,x20"});
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::X).position, 20);
+    QCOMPARE(m_rig.sim->position(Axis::X), 20);
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    QCOMPARE(m_rig.ctl->status().resyncCount, resyncs); // no reply went astray
+}
+
+void TestEmisController::store_boardAcksPerMotor_quietLineEndsWrite()
+{
+    // The other reading of 9.14: one <ACK> per motor the entry names. The write ends when
+    // the line stays quiet after them.
+    m_rig.sim->setStoredAcksPerMotor(true);
+    const int resyncs = m_rig.ctl->status().resyncCount;
+    const ParameterSet speeds{{"work-speed", ParameterValue{{}, {{Axis::X, 800}, {Axis::Y, 900}}}}};
+    const CommandResult r =
+        m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(speeds)}});
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("##"), QList<QByteArray>{"##E,x800,y900"});
+    QCOMPARE(m_rig.sim->storedEntries().first().values.value(Axis::Y), 900);
+    QVERIFY(m_rig.operation("set-output", {{"output", 2}, {"on", true}}).ok());
+    QVERIFY(m_rig.sim->output(2));
+    QCOMPARE(m_rig.ctl->status().resyncCount, resyncs);
+}
+
 void TestEmisController::clear_sendsPesys()
 {
+    m_rig.sim->setFlashWriteMs(0);
     m_rig.sim->receive("##S,200,1800,100\r"); // an SMCflex entry from elsewhere
     QVERIFY(m_rig.operation("clear-stored-parameters").ok());
     QCOMPARE(m_rig.commands().last(), QByteArray("*PESYS"));

@@ -25,7 +25,7 @@ private Q_SLOTS:
     void program_allowedAndRefused();
     void system_manualEntries_data();
     void system_manualEntries();
-    void system_storedCount();
+    void system_motorCount();
     void system_malformed_data();
     void system_malformed();
     void prsys_lenientSeparators_data();
@@ -254,14 +254,14 @@ void TestEmisGrammar::system_manualEntries()
     const auto parsed = parseSystemEntry(entry, &error);
     QVERIFY2(parsed.has_value(), qPrintable(error));
     QCOMPARE(formatSystemEntry(*parsed), entry); // the manual's own spelling comes back
-    QCOMPARE(parsed->storedCount(), 4);          // 9.14: four <ACK> after "Ready!" each time
+    QCOMPARE(parsed->motorCount(), 4);           // every example names (or applies to) all four
 }
 
-void TestEmisGrammar::system_storedCount()
+void TestEmisGrammar::system_motorCount()
 {
     const auto e = parseSystemEntry("D,x32,z64", nullptr);
     QVERIFY(e);
-    QCOMPARE(e->storedCount(), 2);
+    QCOMPARE(e->motorCount(), 2);
     QCOMPARE(e->values.value(Axis::Z), 64);
     const auto c = parseSystemEntry("c,x100,0,y100,0,z100,20,u100,0", nullptr);
     QCOMPARE(c->idle.value(Axis::Z), 20);
