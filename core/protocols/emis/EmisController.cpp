@@ -19,6 +19,8 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
     m_link = new EmisLink(transport, this);
     m_link->setDefaultTimeout(options.commandTimeoutMs);
     connect(m_link, &EmisLink::arrived, this, &EmisController::onArrived);
+    // No answer in time: the board may have been reset (5.8), its work speeds are unknown.
+    connect(m_link, &EmisLink::timedOut, this, [this] { m_speeds.forgetBoard(); });
     connect(m_link, &EmisLink::stray, this, [this](const QString& what) {
         ++mutableStatus().resyncCount;
         qCInfo(lcEmis) << what;
@@ -83,6 +85,7 @@ void EmisController::openLink(RequestId id)
         t = Track{};
         t.unconfirmed = unconfirmed;
     }
+    m_speeds.forgetBoard(); // an earlier session (or program) may have left any work speed
     changeLink(LinkState::Connecting);
     if (transport()->isOpen())
         onOpened();
@@ -185,7 +188,7 @@ void EmisController::stopTrackingMotion(const QString& reason)
     haltJogImmediately();
     m_jogRates.clear();
     m_jogSending = false;
-    m_jogSpeedChanged.clear(); // the work speeds the jog changed are unknown to the next session
+    m_speeds.forgetBoard();
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting)
             continue;

@@ -1,6 +1,7 @@
 #pragma once
 #include "EmisLink.h"
 #include "EmisParameterPlan.h"
+#include "EmisWorkSpeeds.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
 
@@ -39,9 +40,10 @@ namespace stepdeck::emis {
 //   <ACK>); arrival is status (moving, positions).
 // - readParameters() returns the working values written in this session (the board cannot
 //   report them); the stored values come from "read-stored-parameters" (*PRSYS).
-// - A jog runs each chunk at the commanded rate by setting the axis' work speed (#E1); when the
-//   jog ends the work speed is set back to the last value known (written in this session or
-//   stored).
+// - A jog runs each chunk at the commanded rate by setting the axis' work speed (#E1). Every
+//   positioning move first sets the work speed of each of its axes the board is not known to
+//   have (EmisWorkSpeeds: written in this session, else stored, else 1000), so no move runs at
+//   a jog rate left on the board; when a jog ends the work speed is set back the same way.
 class EmisController : public Controller
 {
     Q_OBJECT
@@ -108,7 +110,7 @@ private:
     };
     struct Known // working values as far as the host knows them (written, else stored)
     {
-        QMap<Axis, qint64> startSpeed, workSpeed, runCurrent, idleCurrent;
+        QMap<Axis, qint64> startSpeed, runCurrent, idleCurrent; // work speed: m_speeds
         QMap<Axis, bool> switchNc;
         std::optional<qint64> ramp;
     };
@@ -154,7 +156,7 @@ private:
 
     // --- jog (EmisCtlJog.cpp) ---
     void pumpJog();
-    void sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk);
+    void sendJogChunk(QList<EmisWorkSpeeds::Write> speedWrites, QList<VectorTarget> chunk);
     bool jogHeld(Axis axis, double direction) const; // the input still asks for this way
     // A jog chunk ends at the soft limit; 0 and *why at the limit.
     qint64 clipToSoftLimit(Axis axis, qint64 steps, QString* why) const;
@@ -182,6 +184,7 @@ private:
     StatusPoller m_poller{this};
     QMap<Axis, Track> m_tracks;
     Known m_known;
+    EmisWorkSpeeds m_speeds;
     ParameterSet m_written;    // working values written in this session
     SystemParameters m_stored; // the system parameters as last read or written
     QTimer m_deadlineTimer{this};
@@ -193,11 +196,9 @@ private:
     int m_userPollMs = 50;
     bool m_programming = false;
     // jog
-    AxisVelocities m_jogRates;     // the newest rates from the ramp
-    QString m_softLimitSaid;       // the last jog refusal for a soft limit (said once)
-    bool m_jogSending = false;     // a chunk (with its speed writes) is on its way
-    QMap<Axis, qint64> m_jogSpeed; // work speed the board has for jogging, per axis
-    QSet<Axis> m_jogSpeedChanged;  // axes whose work speed must be set back after the jog
+    AxisVelocities m_jogRates; // the newest rates from the ramp
+    QString m_softLimitSaid;   // the last jog refusal for a soft limit (said once)
+    bool m_jogSending = false; // a chunk (with its speed writes) is on its way
 };
 
 } // namespace stepdeck::emis

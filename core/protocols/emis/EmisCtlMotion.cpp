@@ -1,5 +1,6 @@
 // Vector moves (9.11), reference runs (9.9), arrivals and their deadlines.
 #include "EmisController.h"
+#include "EmisWorkSpeedWrites.h"
 #include "Logging.h"
 #include <QtMath>
 
@@ -7,7 +8,6 @@ namespace stepdeck::emis {
 
 namespace {
 constexpr double kDefaultStartSpeed = 200; // schema defaults, when nothing is known
-constexpr double kDefaultWorkSpeed = 1000;
 constexpr double kDefaultRampMs = 100;
 } // namespace
 
@@ -106,33 +106,42 @@ void EmisController::startVector(RequestId id, const QList<VectorTarget>& target
         return finishError(id, ErrorKind::Refused,
                            tr("move refused: an input program is being "
                               "written"));
+    // A jog chunk set its speed already; a positioning move sets its axes' work speeds first.
+    const auto failed =
+        jog ? std::make_shared<SpeedWriteFailure>() : queueMoveSpeeds(*m_link, m_speeds, axes);
     const QByteArray bytes = encode::vector(targets);
     const qint64 deadline = moveDeadlineMs(targets);
     for (const VectorTarget& t : targets)
         m_tracks[t.axis].startPending = true;
-    request(bytes, EmisLink::Expect::Start,
-            [this, id, bytes, targets, jog, deadline](const EmisLink::Result& r) {
-                const qint64 due = m_clock.elapsed() + deadline;
-                for (const VectorTarget& t : targets) {
-                    const qint64 steps = t.absolute ? t.value - m_tracks[t.axis].position : t.value;
-                    settleStart(t.axis, r, false, jog, steps, due);
-                }
-                armDeadlineTimer();
-                updateMotionUnconfirmed();
-                publish();
-                if (jog) {
-                    m_jogSending = false;
-                    if (r.outcome != EmisLink::Outcome::Ok)
-                        haltJog(failureText(bytes, r));
-                    else
-                        pumpJog(); // axes that became ready meanwhile
-                    return;
-                }
-                if (r.outcome == EmisLink::Outcome::Ok)
-                    finishOk(id);
-                else
-                    finishFailure(id, bytes, r);
-            });
+    EmisLink::Request move;
+    move.bytes = bytes;
+    move.expect = EmisLink::Expect::Start;
+    move.cancelIf = [failed] { return failed->has_value(); };
+    move.done = [this, id, bytes, targets, jog, deadline, failed](const EmisLink::Result& r) {
+        const qint64 due = m_clock.elapsed() + deadline;
+        for (const VectorTarget& t : targets) {
+            const qint64 steps = t.absolute ? t.value - m_tracks[t.axis].position : t.value;
+            settleStart(t.axis, r, false, jog, steps, due);
+        }
+        armDeadlineTimer();
+        updateMotionUnconfirmed();
+        publish();
+        if (jog) {
+            m_jogSending = false;
+            if (r.outcome != EmisLink::Outcome::Ok)
+                haltJog(failureText(bytes, r));
+            else
+                pumpJog(); // axes that became ready meanwhile
+            return;
+        }
+        if (r.outcome == EmisLink::Outcome::Ok)
+            finishOk(id);
+        else if (*failed && !r.sent)
+            finishFailure(id, (*failed)->first, (*failed)->second);
+        else
+            finishFailure(id, bytes, r);
+    };
+    m_link->submit(std::move(move));
 }
 
 void EmisController::settleStart(Axis axis, const EmisLink::Result& r, bool reference, bool jog,
@@ -173,7 +182,7 @@ qint64 EmisController::moveDeadlineMs(const QList<VectorTarget>& targets) const
     double longest = 0;
     for (const VectorTarget& t : targets) {
         const double start = double(m_known.startSpeed.value(t.axis, qint64(kDefaultStartSpeed)));
-        const double work = double(m_known.workSpeed.value(t.axis, qint64(kDefaultWorkSpeed)));
+        const double work = double(m_speeds.moveSpeed(t.axis)); // set right before the move
         const double distance =
             double(qAbs(t.absolute ? t.value - m_tracks[t.axis].position : t.value));
         longest = qMax(longest, 1000.0 * distance / qMax(1.0, qMin(start, work)));
@@ -249,6 +258,7 @@ void EmisController::onArrived(Axis axis)
             qCWarning(lcEmis) << "arrival of axis" << axisName(axis) << "that nobody awaited";
             t.lost = true;
             t.referenced = false;
+            m_speeds.forgetBoard(); // a program may have set its own speeds
         }
         updateMotionUnconfirmed();
         publish();
@@ -297,6 +307,7 @@ void EmisController::markOverdue(Axis axis)
     t.lostBefore = t.lost;
     t.referencedBefore = t.referenced;
     markLost(axis);
+    m_speeds.forgetBoard(); // the board may have been reset (5.8): working values stored ones
 }
 
 void EmisController::markLost(Axis axis)

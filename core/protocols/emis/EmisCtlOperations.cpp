@@ -261,11 +261,12 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
                 mutableStatus().outputs[c.number - 1] = c.on;
             } else if (c.kind == Command::Kind::Ramp) {
                 m_known.ramp = c.value;
-            } else if (c.kind == Command::Kind::StartSpeed || c.kind == Command::Kind::WorkSpeed) {
-                auto& known =
-                    c.kind == Command::Kind::StartSpeed ? m_known.startSpeed : m_known.workSpeed;
+            } else if (c.kind == Command::Kind::StartSpeed) {
                 for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
-                    known.insert(a, c.value);
+                    m_known.startSpeed.insert(a, c.value);
+            } else if (c.kind == Command::Kind::WorkSpeed) {
+                for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
+                    m_speeds.setWritten(a, c.value);
             }
             publish();
             finishOk(id, QString::fromLatin1(r.text));

@@ -70,6 +70,8 @@ void EmisController::writeParameters(RequestId id, const ParameterSet& values, b
         planWorking(values, CurrentPartners{m_known.runCurrent, m_known.idleCurrent});
     if (!plan.ok())
         return finishError(id, plan.error, plan.message);
+    if (values.contains(QStringLiteral("work-speed")))
+        m_speeds.forgetBoard(); // until the writes are confirmed (a failure says no more)
     runFrames(id, plan.frames, 0, [this, id, values] {
         noteWritten(values);
         publish();
@@ -95,7 +97,9 @@ void EmisController::noteWritten(const ParameterSet& set)
         return intsOf(m_written.value(QLatin1String(name)));
     };
     m_known.startSpeed.insert(axisInts("start-speed"));
-    m_known.workSpeed.insert(axisInts("work-speed"));
+    const QMap<Axis, qint64> work = intsOf(set.value(QStringLiteral("work-speed")));
+    for (auto it = work.cbegin(); it != work.cend(); ++it)
+        m_speeds.setWritten(it.key(), it.value()); // the board acknowledged it just now
     m_known.runCurrent.insert(axisInts("run-current"));
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
@@ -136,7 +140,7 @@ void EmisController::noteStored(const SystemParameters& stored)
         known->insert(intsOf(values.value(QLatin1String(name))));
     };
     fill("start-speed", &m_known.startSpeed);
-    fill("work-speed", &m_known.workSpeed);
+    m_speeds.setStored(intsOf(values.value(QStringLiteral("work-speed"))));
     fill("run-current", &m_known.runCurrent);
     fill("idle-current", &m_known.idleCurrent);
     if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))

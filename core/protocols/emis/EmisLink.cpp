@@ -85,6 +85,10 @@ void EmisLink::pump()
         complete(Result{Outcome::Cancelled, {}, 0, tr("the link is not open"), false});
         return;
     }
+    if (m_current->cancelIf && m_current->cancelIf()) {
+        complete(Result{Outcome::Cancelled, {}, 0, {}, false});
+        return;
+    }
     m_stage = 0;
     m_acks = 0;
     m_firstText.clear();
@@ -190,6 +194,7 @@ void EmisLink::onTimeout()
     if (!m_current->poll)
         qCInfo(lcEmis) << "timeout; the line stays quiet for" << kGuardMs << "ms";
     m_guard.start(kGuardMs); // before complete(): the next request waits for it
+    Q_EMIT timedOut();
     complete(Result{Outcome::Timeout, {}, m_acks, detail});
 }
 

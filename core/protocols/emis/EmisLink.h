@@ -56,6 +56,9 @@ public:
         int timeoutMs = 0;    // 0: defaultTimeout()
         bool poll = false;
         bool exclusive = false;
+        // Asked when it is its turn: true ends it Cancelled, never sent (a move whose work
+        // speed write, queued right before it, was not taken).
+        std::function<bool()> cancelIf;
         Handler done;
     };
 
@@ -78,6 +81,7 @@ public:
 Q_SIGNALS:
     void arrived(stepdeck::Axis axis);
     void stray(const QString& what); // a reply nobody waited for, or garbage
+    void timedOut();                 // a request (poll or command) got no complete reply in time
     void traffic(stepdeck::TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);
 
 private:

@@ -151,7 +151,7 @@ QByteArray EmisSimulator::runVector(const Command& c)
         const qint64 relative = t.absolute ? t.value - position(t.axis) : t.value;
         targets.insert(t.axis, axisRef(t.axis).physical() + relative);
         if (relative != 0)
-            m_accepted.append({t.axis, relative});
+            m_accepted.append({t.axis, relative, m_working.workSpeed.value(t.axis)});
         const double speed = qMax<double>(1, m_working.workSpeed.value(t.axis));
         slowest = qMax(slowest, double(qAbs(relative)) / speed);
     }

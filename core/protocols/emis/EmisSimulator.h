@@ -74,6 +74,7 @@ public:
     {
         Axis axis;
         qint64 steps;
+        qint64 workSpeed = 0; // the axis' work speed (#E1, 9.5) when it was accepted
     };
     QList<AcceptedMove> acceptedMoves() const { return m_accepted; }
     // Moves and reference runs refused with <BEL> because a named motor was still moving.
