@@ -194,8 +194,8 @@ void EmisLink::onTimeout()
     if (!m_current->poll)
         qCInfo(lcEmis) << "timeout; the line stays quiet for" << kGuardMs << "ms";
     m_guard.start(kGuardMs); // before complete(): the next request waits for it
-    Q_EMIT timedOut();
     complete(Result{Outcome::Timeout, {}, m_acks, detail});
+    Q_EMIT timedOut(); // after its own handler: what that settles comes first
 }
 
 void EmisLink::complete(const Result& result)

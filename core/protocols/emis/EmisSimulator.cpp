@@ -107,6 +107,14 @@ void EmisSimulator::emergencyStop()
     }
 }
 
+void EmisSimulator::externalReset(int bootMs)
+{
+    emergencyStop();
+    powerCycle();
+    m_bootMs = bootMs;
+    m_booting.start();
+}
+
 void EmisSimulator::powerCycle()
 {
     for (Axis axis : allAxes()) {
@@ -266,6 +274,8 @@ void EmisSimulator::ensureTicking()
 
 void EmisSimulator::receive(const QByteArray& bytes)
 {
+    if (m_booting.isValid() && !m_booting.hasExpired(m_bootMs))
+        return; // restarting after a reset: the bytes are lost
     if (m_flashTimer.isActive()) {
         m_waitingInput += bytes;
         return;

@@ -98,6 +98,10 @@ public:
     // The machine's emergency-stop circuit (the board has no stop command): every motor
     // stands where it is at once, reference runs are abandoned, no <DCn> follows.
     void emergencyStop();
+    // A button on the reset input (5.8): every motor stops where it is, no <DCn> follows, then
+    // the board starts like after a power cycle; while it starts (bootMs; the manual gives no
+    // time) it takes no command and answers nothing.
+    void externalReset(int bootMs);
 
 private:
     EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }
@@ -147,6 +151,8 @@ private:
     QList<QByteArray> m_flashParts; // the rest of a "##" reply, one part per flash write
     QTimer m_flashTimer{this};
     QByteArray m_waitingInput; // received while the flash is written
+    QElapsedTimer m_booting;   // valid: restarting after a reset until m_bootMs
+    int m_bootMs = 0;
     CommandDecoder m_decoder;
     QList<QByteArray> m_commands;
     QTimer m_timer{this};
