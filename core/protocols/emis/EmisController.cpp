@@ -19,16 +19,8 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
     m_link = new EmisLink(transport, this);
     m_link->setDefaultTimeout(options.commandTimeoutMs);
     connect(m_link, &EmisLink::arrived, this, &EmisController::onArrived);
-    // No answer in time: the board may have been reset (5.8) and be starting again. Then its
-    // position counters start at 0 (absolute targets mean something else: every axis counts
-    // as not referenced), its outputs are off and its work speeds the stored ones.
-    connect(m_link, &EmisLink::timedOut, this, [this] {
-        m_speeds.forgetBoard();
-        for (Track& t : m_tracks)
-            t.referenced = false;
-        for (std::optional<bool>& output : mutableStatus().outputs)
-            output.reset();
-    });
+    // No answer in time: the board may be starting again after a reset (5.8).
+    connect(m_link, &EmisLink::timedOut, this, &EmisController::suspectReset);
     connect(m_link, &EmisLink::stray, this, [this](const QString& what) {
         ++mutableStatus().resyncCount;
         qCInfo(lcEmis) << what;

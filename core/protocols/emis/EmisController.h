@@ -20,7 +20,11 @@ namespace stepdeck::emis {
 //   deadline, or a link lost while moves run, sets MachineStatus::motionUnconfirmed and makes the
 //   axis' position unknown until it is referenced again.
 // - The poller reads the inputs (@IG); inputs 1-4 are the reference switches (normally open
-//   unless reference-switch-type says NC). Missed polls mean link lost.
+//   unless reference-switch-type says NC). Polls without an answer (silence, garbage) mean link
+//   lost; a <BEL> is an answer.
+// - The reset input (5.8) is what stops the board. A request without an answer or an arrival
+//   that never comes may be a reset: every axis then counts as not referenced, the outputs as
+//   unknown, the work speeds as forgotten (suspectReset()).
 //
 // modelOperation() names (args -> result value):
 //   "set-output"              {output 1..7, on}                      A<n>,<0|1> (9.3)
@@ -44,6 +48,10 @@ namespace stepdeck::emis {
 //   positioning move first sets the work speed of each of its axes the board is not known to
 //   have (EmisWorkSpeeds: written in this session, else stored, else 1000), so no move runs at
 //   a jog rate left on the board; when a jog ends the work speed is set back the same way.
+// - <BEL> means "refused, not executed" (an invalid value or a motor still moving); *PRSYS is
+//   read as closed by <ACK> (the manual shows no closing byte; otherwise the read times out and
+//   the stored values stay unknown); an absolute target where the axis stands is not sent (how
+//   the board answers a move of no length, 9.11 does not say). docs/cli.md lists these.
 class EmisController : public Controller
 {
     Q_OBJECT
@@ -148,6 +156,10 @@ private:
     void armDeadlineTimer();
     void markLost(Axis axis);
     void markOverdue(Axis axis);
+    // The board may have been reset (5.8): its position counters start at 0 (absolute targets
+    // mean something else, so no axis counts as referenced), its outputs are off and its work
+    // speeds are the stored ones.
+    void suspectReset();
     void settleStart(Axis axis, const EmisLink::Result& r, bool reference, bool jog, qint64 steps,
                      qint64 deadlineMs);
     qint64 moveDeadlineMs(const QList<VectorTarget>& targets) const;

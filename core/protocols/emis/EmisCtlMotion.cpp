@@ -79,8 +79,16 @@ void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
     }
     if (const QString refusal = unknownAbsolute(list); !refusal.isEmpty())
         return finishError(id, ErrorKind::Refused, refusal);
+    QList<Axis> axes;
+    for (const VectorTarget& t : list)
+        axes << t.axis;
+    if (const QString busy = busyAxes(axes, false); !busy.isEmpty())
+        return finishError(id, ErrorKind::Refused, tr("move refused: %1").arg(busy));
+    // A target where the axis stands is left out, like a relative 0: whether the board answers
+    // a move of no length with <NAK> and <DCn> the manual does not say (9.11).
+    list.removeIf([this](const VectorTarget& t) { return t.value == m_tracks[t.axis].position; });
     if (list.isEmpty())
-        return finishOk(id);
+        return finishOk(id); // nothing to move: nothing sent
     startVector(id, list, false);
 }
 
@@ -307,7 +315,16 @@ void EmisController::markOverdue(Axis axis)
     t.lostBefore = t.lost;
     t.referencedBefore = t.referenced;
     markLost(axis);
-    m_speeds.forgetBoard(); // the board may have been reset (5.8): working values stored ones
+    suspectReset(); // a reset (5.8) ends a move without its <DCn>
+}
+
+void EmisController::suspectReset()
+{
+    m_speeds.forgetBoard();
+    for (Track& t : m_tracks)
+        t.referenced = false;
+    for (std::optional<bool>& output : mutableStatus().outputs)
+        output.reset();
 }
 
 void EmisController::markLost(Axis axis)

@@ -132,6 +132,13 @@ void TestEmisControllerMotion::move_absolute_refusedUntilReferenced_thenUpperCas
     QCOMPARE(m_rig.axis(Axis::Z).position, 50);
     QVERIFY(m_rig.axis(Axis::Z).positionKnown);
     QCOMPARE(m_rig.sim->position(Axis::Z), 50);
+    // Where it stands already: nothing to move, nothing sent (9.11 leaves open how the board
+    // answers a move of no length).
+    const qsizetype sent = m_rig.commandsStartingWith("L1").size();
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveAbsolute(id, {{Axis::Z, 50}}); }).ok());
+    QCOMPARE(m_rig.commandsStartingWith("L1").size(), sent);
+    QVERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::Z).position, 50);
 }
 
 void TestEmisControllerMotion::reference_sequentialAndSimultaneous()
@@ -365,8 +372,11 @@ void TestEmisControllerMotion::externalReset_whileMoving_positionUnknownUntilRef
     // A button on the reset input (5.8) is the way to stop the board: the move under way ends
     // without its <DC1>, the host says so after the deadline and wants a reference run.
     fastMotion();
-    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
-    QTRY_VERIFY(m_rig.axis(Axis::X).positionKnown);
+    QVERIFY(m_rig.run([&](RequestId id) {
+                     m_rig.ctl->reference(id, {{Axis::X, 1}, {Axis::Y, 1}});
+                 })
+                .ok());
+    QTRY_VERIFY(m_rig.axis(Axis::X).positionKnown && m_rig.axis(Axis::Y).positionKnown);
     QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 600}}); }).ok());
     QTRY_VERIFY(m_rig.sim->isMoving(Axis::X));
     m_rig.sim->externalReset(0);
@@ -374,6 +384,8 @@ void TestEmisControllerMotion::externalReset_whileMoving_positionUnknownUntilRef
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.ctl->status().motionUnconfirmed, 10000);
     QVERIFY(!m_rig.axis(Axis::X).positionKnown);
     QVERIFY(m_rig.axis(Axis::X).positionEstimated);
+    QVERIFY(!m_rig.axis(Axis::Y).positionKnown); // its counter was reset too
+    QVERIFY(!m_rig.axis(Axis::Y).positionEstimated);
     QCOMPARE(m_rig.run([&](RequestId id) {
                       m_rig.ctl->moveRelative(id, {{Axis::X, 5}});
                   })
