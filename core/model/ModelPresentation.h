@@ -41,6 +41,12 @@ struct ModelPresentation
     // Models with input programs (Capabilities::inputPrograms): why one command line cannot be
     // part of a program (grammar, range, kind), already translated; empty when it can.
     std::function<QString(const QString&)> checkProgramCommand;
+    // Models without a stop command (Capabilities::stopCommand false): what stops the
+    // controller instead and what the host does afterwards, already translated, short (it
+    // stands permanently next to STOP/PANIC instead of Controller::noStopCommandText()), and
+    // the longer explanation for its tooltip.
+    std::function<QString()> noStopNote;
+    std::function<QString()> noStopNoteDetail;
 };
 
 // Generic notation for ASCII protocols: printable bytes as they are, "\r", "\n", "\t" and

@@ -3,6 +3,7 @@
 #include "common/StyleSheet.h"
 #include "main/MachineContext.h"
 #include "main/SafetyBanner.h"
+#include "protocols/Registry.h"
 #include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -93,10 +94,11 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
 
 void SafetyBar::applyCapabilities()
 {
-    showCapabilities(m_context->capabilities());
+    const ModelInfo* model = m_context->model();
+    showCapabilities(m_context->capabilities(), model ? model->presentation : ModelPresentation{});
 }
 
-void SafetyBar::showCapabilities(const Capabilities& caps)
+void SafetyBar::showCapabilities(const Capabilities& caps, const ModelPresentation& presentation)
 {
     const bool canStop = caps.stopCommand;
     // Two-line labels in a smaller type, so both buttons fit beside each other at 1366x768.
@@ -115,7 +117,10 @@ void SafetyBar::showCapabilities(const Capabilities& caps)
                                      "must be referenced afterwards")
                                 : tr("Ends every jog input and the host's queued work; %1")
                                       .arg(Controller::noStopCommandText()));
-    m_noStop->setText(Controller::noStopCommandText());
+    m_noStop->setText(presentation.noStopNote ? presentation.noStopNote()
+                                              : Controller::noStopCommandText());
+    m_noStop->setToolTip(presentation.noStopNoteDetail ? presentation.noStopNoteDetail()
+                                                       : QString());
     m_noStop->setVisible(!canStop);
 }
 

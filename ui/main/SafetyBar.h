@@ -1,6 +1,7 @@
 #pragma once
 #include "common/ElidedLabel.h"
 #include "controller/Controller.h"
+#include "model/ModelPresentation.h"
 #include <QWidget>
 
 class QAction;
@@ -18,8 +19,9 @@ class MachineContext;
 // A model without a stop command (Capabilities::stopCommand false): STOP and PANIC stay
 // enabled -- they still end every jog input and cancel the host's queued work at once, which
 // is what ends a chunked jog on such a model -- but their labels say "does not stop the
-// controller", and Controller::noStopCommandText() stands permanently next to them. A
-// disabled button would tell an operator in a hurry nothing; this tells where to reach.
+// controller", and Controller::noStopCommandText() -- or the model's own note, which names
+// what stops its controller instead (EMIS: the reset input) -- stands permanently next to
+// them. A disabled button would tell an operator in a hurry nothing; this tells where to reach.
 class SafetyBar : public QWidget
 {
     Q_OBJECT
@@ -37,8 +39,8 @@ public:
     // The link ended while the last status showed motion, and no standstill was seen since.
     bool movingWhenLinkEnded() const { return m_movingWhenLinkEnded; }
     // Labels and the permanent note for a model's capabilities (called on every model and
-    // link change with the context's).
-    void showCapabilities(const Capabilities& caps);
+    // link change with the context's). `presentation`: the model's own no-stop note, if any.
+    void showCapabilities(const Capabilities& caps, const ModelPresentation& presentation = {});
 
 private:
     void refresh();

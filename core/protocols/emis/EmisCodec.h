@@ -20,7 +20,13 @@ constexpr char kBel = 0x07; // the board refuses (invalid value, axis busy)
 constexpr char kNak = 0x15; // a move started (9.9, 9.11)
 constexpr char kDc1 = 0x11; // DC1..DC4: axis X..U arrived (9.9, 9.11)
 
-constexpr int kInputCount = 8;  // 5.2: inputs 1..8, 1..4 carry the reference switches
+constexpr int kInputCount = 8; // 5.2: inputs 1..8, 1..4 carry the reference switches
+// 9.14: the <ACK>s after "Ready!" of a "##" write. Every example shows four, also "##R,100"
+// and "##S,200,1800,100"; the text ("entsprechend der Anzahl von eingetragenen
+// Systemparametern") could mean fewer for an entry naming fewer motors. StepDeck reads every
+// entry the same way: four, or at least one per motor it names followed by a quiet line
+// (EmisLink::Expect::Stored).
+constexpr int kStoredAcks = 4;
 constexpr int kOutputCount = 7; // 5.3: outputs 1..7
 
 // 'x', 'y', 'z', 'u' as in every per-axis command of chapter 9.

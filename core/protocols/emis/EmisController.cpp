@@ -20,6 +20,8 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
     m_link = new EmisLink(transport, this);
     m_link->setDefaultTimeout(options.commandTimeoutMs);
     connect(m_link, &EmisLink::arrived, this, &EmisController::onArrived);
+    // No answer in time: the board may be starting again after a reset (5.8).
+    connect(m_link, &EmisLink::timedOut, this, &EmisController::suspectReset);
     connect(m_link, &EmisLink::stray, this, [this](const QString& what) {
         ++mutableStatus().resyncCount;
         qCInfo(lcEmis) << what;
@@ -84,6 +86,7 @@ void EmisController::openLink(RequestId id)
         t = Track{};
         t.unconfirmed = unconfirmed;
     }
+    m_speeds.forgetBoard(); // an earlier session (or program) may have left any work speed
     changeLink(LinkState::Connecting);
     if (transport()->isOpen())
         onOpened();
@@ -186,7 +189,7 @@ void EmisController::stopTrackingMotion(const QString& reason)
     haltJogImmediately();
     m_jogRates.clear();
     m_jogSending = false;
-    m_jogSpeedChanged.clear(); // the work speeds the jog changed are unknown to the next session
+    m_speeds.forgetBoard();
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting)
             continue;
@@ -204,13 +207,13 @@ void EmisController::stopTrackingMotion(const QString& reason)
 // ---------------------------------------------------------------- requests
 
 void EmisController::request(const QByteArray& bytes, EmisLink::Expect expect, Handler done,
-                             int timeoutMs, int storedCount, bool exclusive)
+                             int timeoutMs, int storedMotors, bool exclusive)
 {
     EmisLink::Request r;
     r.bytes = bytes;
     r.expect = expect;
     r.timeoutMs = timeoutMs;
-    r.storedCount = storedCount;
+    r.storedMotors = storedMotors;
     r.exclusive = exclusive;
     r.done = std::move(done);
     m_link->submit(std::move(r));
@@ -290,7 +293,9 @@ void EmisController::onPollDue()
             res.outcome == EmisLink::Outcome::Ok ? parseAllInputs(res.text) : std::nullopt;
         if (levels)
             applyInputs(*levels);
-        m_poller.pollFinished(levels.has_value());
+        // A <BEL> is a refusal (read as "busy" while a motor moves), so the board is there:
+        // only silence and garbage count towards link loss. The inputs keep their last levels.
+        m_poller.pollFinished(levels || res.outcome == EmisLink::Outcome::Refused);
         if (levels)
             publish();
     };

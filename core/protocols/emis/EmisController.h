@@ -1,6 +1,7 @@
 #pragma once
 #include "EmisLink.h"
 #include "EmisParameterPlan.h"
+#include "EmisWorkSpeeds.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
 
@@ -19,7 +20,11 @@ namespace stepdeck::emis {
 //   deadline, or a link lost while moves run, sets MachineStatus::motionUnconfirmed and makes the
 //   axis' position unknown until it is referenced again.
 // - The poller reads the inputs (@IG); inputs 1-4 are the reference switches (normally open
-//   unless reference-switch-type says NC). Missed polls mean link lost.
+//   unless reference-switch-type says NC). Polls without an answer (silence, garbage) mean link
+//   lost; a <BEL> is an answer.
+// - The reset input (5.8) is what stops the board. A request without an answer or an arrival
+//   that never comes may be a reset: every axis then counts as not referenced, the outputs as
+//   unknown, the work speeds as forgotten (suspectReset()).
 //
 // modelOperation() names (args -> result value):
 //   "set-output"              {output 1..7, on}                      A<n>,<0|1> (9.3)
@@ -39,9 +44,14 @@ namespace stepdeck::emis {
 //   <ACK>); arrival is status (moving, positions).
 // - readParameters() returns the working values written in this session (the board cannot
 //   report them); the stored values come from "read-stored-parameters" (*PRSYS).
-// - A jog runs each chunk at the commanded rate by setting the axis' work speed (#E1); when the
-//   jog ends the work speed is set back to the last value known (written in this session or
-//   stored).
+// - A jog runs each chunk at the commanded rate by setting the axis' work speed (#E1). Every
+//   positioning move first sets the work speed of each of its axes the board is not known to
+//   have (EmisWorkSpeeds: written in this session, else stored, else 1000), so no move runs at
+//   a jog rate left on the board; when a jog ends the work speed is set back the same way.
+// - <BEL> means "refused, not executed" (an invalid value or a motor still moving); *PRSYS is
+//   read as closed by <ACK> (the manual shows no closing byte; otherwise the read times out and
+//   the stored values stay unknown); an absolute target where the axis stands is not sent (how
+//   the board answers a move of no length, 9.11 does not say). docs/cli.md lists these.
 class EmisController : public Controller
 {
     Q_OBJECT
@@ -107,7 +117,7 @@ private:
     };
     struct Known // working values as far as the host knows them (written, else stored)
     {
-        QMap<Axis, qint64> startSpeed, workSpeed, runCurrent, idleCurrent;
+        QMap<Axis, qint64> startSpeed, runCurrent, idleCurrent; // work speed: m_speeds
         QMap<Axis, bool> switchNc;
         std::optional<qint64> ramp;
     };
@@ -129,13 +139,14 @@ private:
     void changeLink(LinkState state, const QString& reason = {});
     bool requireLink(RequestId id);
     void request(const QByteArray& bytes, EmisLink::Expect expect, Handler done, int timeoutMs = 0,
-                 int storedCount = 0, bool exclusive = false);
+                 int storedMotors = 0, bool exclusive = false);
     QString failureText(const QByteArray& bytes, const EmisLink::Result& r) const;
     ErrorKind failureKind(const EmisLink::Result& r) const;
     void finishFailure(RequestId id, const QByteArray& bytes, const EmisLink::Result& r);
 
     // --- motion (EmisCtlMotion.cpp) ---
     QString busyAxes(const QList<Axis>& axes, bool forReference) const;
+    QString unknownAbsolute(const QList<VectorTarget>& targets) const; // refusal, or empty
     void startVector(RequestId id, const QList<VectorTarget>& targets, bool jog);
     void startHome(RequestId id, const QList<Axis>& axes, bool simultaneous);
     void onArrived(Axis axis);
@@ -144,6 +155,10 @@ private:
     void armDeadlineTimer();
     void markLost(Axis axis);
     void markOverdue(Axis axis);
+    // The board may have been reset (5.8): its position counters start at 0 (absolute targets
+    // mean something else, so no axis counts as referenced), its outputs are off and its work
+    // speeds are the stored ones.
+    void suspectReset();
     void settleStart(Axis axis, const EmisLink::Result& r, bool reference, bool jog, qint64 steps,
                      qint64 deadlineMs);
     qint64 moveDeadlineMs(const QList<VectorTarget>& targets) const;
@@ -152,7 +167,7 @@ private:
 
     // --- jog (EmisCtlJog.cpp) ---
     void pumpJog();
-    void sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk);
+    void sendJogChunk(QList<EmisWorkSpeeds::Write> speedWrites, QList<VectorTarget> chunk);
     bool jogHeld(Axis axis, double direction) const; // the input still asks for this way
     // A jog chunk ends at the soft limit; 0 and *why at the limit.
     qint64 clipToSoftLimit(Axis axis, qint64 steps, QString* why) const;
@@ -180,6 +195,7 @@ private:
     StatusPoller m_poller{this};
     QMap<Axis, Track> m_tracks;
     Known m_known;
+    EmisWorkSpeeds m_speeds;
     ParameterSet m_written;    // working values written in this session
     SystemParameters m_stored; // the system parameters as last read or written
     QTimer m_deadlineTimer{this};
@@ -191,11 +207,9 @@ private:
     int m_userPollMs = 50;
     bool m_programming = false;
     // jog
-    AxisVelocities m_jogRates;     // the newest rates from the ramp
-    QString m_softLimitSaid;       // the last jog refusal for a soft limit (said once)
-    bool m_jogSending = false;     // a chunk (with its speed writes) is on its way
-    QMap<Axis, qint64> m_jogSpeed; // work speed the board has for jogging, per axis
-    QSet<Axis> m_jogSpeedChanged;  // axes whose work speed must be set back after the jog
+    AxisVelocities m_jogRates; // the newest rates from the ramp
+    QString m_softLimitSaid;   // the last jog refusal for a soft limit (said once)
+    bool m_jogSending = false; // a chunk (with its speed writes) is on its way
 };
 
 } // namespace stepdeck::emis

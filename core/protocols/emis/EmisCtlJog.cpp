@@ -1,15 +1,11 @@
 // Jog without a stop command: a chain of short relative vector moves (9.11).
 #include "EmisController.h"
 #include "EmisLogging.h"
+#include "EmisWorkSpeedWrites.h"
 #include "Logging.h"
 #include <QtMath>
 
 namespace stepdeck::emis {
-
-namespace {
-// A jog speed within this fraction of the one the board already has is not rewritten.
-constexpr double kSpeedTolerance = 0.1;
-} // namespace
 
 QString EmisController::jogRefusal() const
 {
@@ -40,7 +36,7 @@ void EmisController::pumpJog()
     // share one vector command. An axis whose chunk is under way is never sent another (the
     // board would answer <BEL>): it gets its next chunk when its <DCn> arrives.
     QList<VectorTarget> chunk;
-    QList<QByteArray> speedWrites;
+    QList<EmisWorkSpeeds::Write> speedWrites;
     QMap<Axis, QString> atLimit;
     for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
         const Axis axis = it.key();
@@ -64,12 +60,8 @@ void EmisController::pumpJog()
             qBound(limits::kSpeedMin,
                    qMax(qRound64(qAbs(rate)), qint64(std::ceil(double(steps) / kJogChunkSeconds))),
                    limits::kSpeedMax);
-        const qint64 current = m_jogSpeed.value(axis, -1);
-        if (current < 0 || qAbs(double(current - speed)) > kSpeedTolerance * double(speed)) {
-            speedWrites << encode::workSpeed(axis, speed);
-            m_jogSpeed.insert(axis, speed);
-            m_jogSpeedChanged.insert(axis);
-        }
+        if (m_speeds.jogNeedsWrite(axis, speed))
+            speedWrites << EmisWorkSpeeds::Write{axis, speed};
         chunk << VectorTarget{axis, clipped, false};
     }
     for (auto it = atLimit.cbegin(); it != atLimit.cend(); ++it) {
@@ -107,18 +99,19 @@ qint64 EmisController::clipToSoftLimit(Axis axis, qint64 steps, QString* why) co
     return softLimits().clipRelative(bookkept, {{axis, steps}}, why).value(axis);
 }
 
-void EmisController::sendJogChunk(QList<QByteArray> speedWrites, QList<VectorTarget> chunk)
+void EmisController::sendJogChunk(QList<EmisWorkSpeeds::Write> speedWrites,
+                                  QList<VectorTarget> chunk)
 {
     if (!speedWrites.isEmpty()) {
-        const QByteArray write = speedWrites.takeFirst();
-        request(write, EmisLink::Expect::Ack,
-                [this, write, speedWrites, chunk](const EmisLink::Result& r) {
-                    if (r.outcome == EmisLink::Outcome::Ok)
-                        return sendJogChunk(speedWrites, chunk);
-                    m_jogSending = false;
-                    if (r.outcome != EmisLink::Outcome::Cancelled)
-                        haltJog(failureText(write, r));
-                });
+        const EmisWorkSpeeds::Write write = speedWrites.takeFirst();
+        writeWorkSpeed(*m_link, m_speeds, write,
+                       [this, write, speedWrites, chunk](const EmisLink::Result& r) {
+                           if (r.outcome == EmisLink::Outcome::Ok)
+                               return sendJogChunk(speedWrites, chunk);
+                           m_jogSending = false;
+                           if (r.outcome != EmisLink::Outcome::Cancelled)
+                               haltJog(failureText(encode::workSpeed(write.axis, write.speed), r));
+                       });
         return;
     }
     // The lease is checked again right before the move goes out: an axis released meanwhile
@@ -144,24 +137,14 @@ void EmisController::finishJogIfIdle()
         if (it.value() != 0.0 || m_tracks[it.key()].jogChunk)
             return;
     }
-    // The jog is over: give every axis its work speed back (9.5).
-    for (Axis axis : std::as_const(m_jogSpeedChanged)) {
-        if (m_known.workSpeed.contains(axis)) {
-            const QByteArray write = encode::workSpeed(axis, m_known.workSpeed[axis]);
-            request(write, EmisLink::Expect::Ack, [this, write](const EmisLink::Result& r) {
-                if (r.outcome != EmisLink::Outcome::Ok && r.outcome != EmisLink::Outcome::Cancelled)
-                    Q_EMIT errorOccurred(failureText(write, r));
-            });
-        } else {
-            Q_EMIT errorOccurred(tr("after jogging, the work speed of axis %1 stays at %2 "
-                                    "steps/s: its value before is not known (write %3)")
-                                     .arg(axisName(axis))
-                                     .arg(m_jogSpeed.value(axis))
-                                     .arg(schema().displayLabel(QStringLiteral("work-speed"))));
-        }
+    // The jog is over: every jogged axis gets its move speed back (9.5), for the board's own
+    // input programs and the next session. Moves do not depend on it: each sets its speed.
+    for (const EmisWorkSpeeds::Write& w : m_speeds.writesToRestore()) {
+        writeWorkSpeed(*m_link, m_speeds, w, [this, w](const EmisLink::Result& r) {
+            if (r.outcome != EmisLink::Outcome::Ok && r.outcome != EmisLink::Outcome::Cancelled)
+                Q_EMIT errorOccurred(failureText(encode::workSpeed(w.axis, w.speed), r));
+        });
     }
-    m_jogSpeedChanged.clear();
-    m_jogSpeed.clear();
 }
 
 void EmisController::haltJog(const QString& reason)

@@ -1,6 +1,7 @@
 // Vector moves (9.11), reference runs (9.9), arrivals and their deadlines.
 #include "EmisController.h"
 #include "EmisLogging.h"
+#include "EmisWorkSpeedWrites.h"
 #include "Logging.h"
 #include <QtMath>
 
@@ -8,7 +9,6 @@ namespace stepdeck::emis {
 
 namespace {
 constexpr double kDefaultStartSpeed = 200; // schema defaults, when nothing is known
-constexpr double kDefaultWorkSpeed = 1000;
 constexpr double kDefaultRampMs = 100;
 } // namespace
 
@@ -69,12 +69,6 @@ void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
         return;
     QList<VectorTarget> list;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
-        if (!status().axes.value(it.key()).positionKnown) {
-            return finishError(id, ErrorKind::Refused,
-                               tr("absolute move refused: position of axis %1 is unknown, "
-                                  "reference it first")
-                                   .arg(axisName(it.key())));
-        }
         if (qAbs(it.value()) > limits::kVectorMax) {
             return finishError(id, ErrorKind::InvalidValue,
                                tr("target %1 of axis %2 is out of range (allowed: -%3..%3)")
@@ -84,9 +78,30 @@ void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
         }
         list << VectorTarget{it.key(), it.value(), true}; // "L1,X1000" (9.11)
     }
+    if (const QString refusal = unknownAbsolute(list); !refusal.isEmpty())
+        return finishError(id, ErrorKind::Refused, refusal);
+    QList<Axis> axes;
+    for (const VectorTarget& t : list)
+        axes << t.axis;
+    if (const QString busy = busyAxes(axes, false); !busy.isEmpty())
+        return finishError(id, ErrorKind::Refused, tr("move refused: %1").arg(busy));
+    // A target where the axis stands is left out, like a relative 0: whether the board answers
+    // a move of no length with <NAK> and <DCn> the manual does not say (9.11).
+    list.removeIf([this](const VectorTarget& t) { return t.value == m_tracks[t.axis].position; });
     if (list.isEmpty())
-        return finishOk(id);
+        return finishOk(id); // nothing to move: nothing sent
     startVector(id, list, false);
+}
+
+QString EmisController::unknownAbsolute(const QList<VectorTarget>& targets) const
+{
+    for (const VectorTarget& t : targets) {
+        if (t.absolute && !status().axes.value(t.axis).positionKnown) {
+            return tr("absolute move refused: position of axis %1 is unknown, reference it first")
+                .arg(axisName(t.axis));
+        }
+    }
+    return {};
 }
 
 void EmisController::startVector(RequestId id, const QList<VectorTarget>& targets, bool jog)
@@ -100,33 +115,42 @@ void EmisController::startVector(RequestId id, const QList<VectorTarget>& target
         return finishError(id, ErrorKind::Refused,
                            tr("move refused: an input program is being "
                               "written"));
+    // A jog chunk set its speed already; a positioning move sets its axes' work speeds first.
+    const auto failed =
+        jog ? std::make_shared<SpeedWriteFailure>() : queueMoveSpeeds(*m_link, m_speeds, axes);
     const QByteArray bytes = encode::vector(targets);
     const qint64 deadline = moveDeadlineMs(targets);
     for (const VectorTarget& t : targets)
         m_tracks[t.axis].startPending = true;
-    request(bytes, EmisLink::Expect::Start,
-            [this, id, bytes, targets, jog, deadline](const EmisLink::Result& r) {
-                const qint64 due = m_clock.elapsed() + deadline;
-                for (const VectorTarget& t : targets) {
-                    const qint64 steps = t.absolute ? t.value - m_tracks[t.axis].position : t.value;
-                    settleStart(t.axis, r, false, jog, steps, due);
-                }
-                armDeadlineTimer();
-                updateMotionUnconfirmed();
-                publish();
-                if (jog) {
-                    m_jogSending = false;
-                    if (r.outcome != EmisLink::Outcome::Ok)
-                        haltJog(failureText(bytes, r));
-                    else
-                        pumpJog(); // axes that became ready meanwhile
-                    return;
-                }
-                if (r.outcome == EmisLink::Outcome::Ok)
-                    finishOk(id);
-                else
-                    finishFailure(id, bytes, r);
-            });
+    EmisLink::Request move;
+    move.bytes = bytes;
+    move.expect = EmisLink::Expect::Start;
+    move.cancelIf = [failed] { return failed->has_value(); };
+    move.done = [this, id, bytes, targets, jog, deadline, failed](const EmisLink::Result& r) {
+        const qint64 due = m_clock.elapsed() + deadline;
+        for (const VectorTarget& t : targets) {
+            const qint64 steps = t.absolute ? t.value - m_tracks[t.axis].position : t.value;
+            settleStart(t.axis, r, false, jog, steps, due);
+        }
+        armDeadlineTimer();
+        updateMotionUnconfirmed();
+        publish();
+        if (jog) {
+            m_jogSending = false;
+            if (r.outcome != EmisLink::Outcome::Ok)
+                haltJog(failureText(bytes, r));
+            else
+                pumpJog(); // axes that became ready meanwhile
+            return;
+        }
+        if (r.outcome == EmisLink::Outcome::Ok)
+            finishOk(id);
+        else if (*failed && !r.sent)
+            finishFailure(id, (*failed)->first, (*failed)->second);
+        else
+            finishFailure(id, bytes, r);
+    };
+    m_link->submit(std::move(move));
 }
 
 void EmisController::settleStart(Axis axis, const EmisLink::Result& r, bool reference, bool jog,
@@ -167,7 +191,7 @@ qint64 EmisController::moveDeadlineMs(const QList<VectorTarget>& targets) const
     double longest = 0;
     for (const VectorTarget& t : targets) {
         const double start = double(m_known.startSpeed.value(t.axis, qint64(kDefaultStartSpeed)));
-        const double work = double(m_known.workSpeed.value(t.axis, qint64(kDefaultWorkSpeed)));
+        const double work = double(m_speeds.moveSpeed(t.axis)); // set right before the move
         const double distance =
             double(qAbs(t.absolute ? t.value - m_tracks[t.axis].position : t.value));
         longest = qMax(longest, 1000.0 * distance / qMax(1.0, qMin(start, work)));
@@ -243,6 +267,7 @@ void EmisController::onArrived(Axis axis)
             qCWarning(lcEmis) << "arrival of axis" << axisName(axis) << "that nobody awaited";
             t.lost = true;
             t.referenced = false;
+            m_speeds.forgetBoard(); // a program may have set its own speeds
         }
         updateMotionUnconfirmed();
         publish();
@@ -291,6 +316,16 @@ void EmisController::markOverdue(Axis axis)
     t.lostBefore = t.lost;
     t.referencedBefore = t.referenced;
     markLost(axis);
+    suspectReset(); // a reset (5.8) ends a move without its <DCn>
+}
+
+void EmisController::suspectReset()
+{
+    m_speeds.forgetBoard();
+    for (Track& t : m_tracks)
+        t.referenced = false;
+    for (std::optional<bool>& output : mutableStatus().outputs)
+        output.reset();
 }
 
 void EmisController::markLost(Axis axis)

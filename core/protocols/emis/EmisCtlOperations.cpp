@@ -231,12 +231,9 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
         return finishError(id, ErrorKind::InvalidValue, e);
     switch (c.kind) {
     case Command::Kind::Vector: // through the bookkeeping, so positions stay right
-        if (c.targets.first().absolute) {
-            AxisVector targets;
-            for (const VectorTarget& t : c.targets)
-                targets.insert(t.axis, t.value);
-            return moveAbsolute(id, targets);
-        }
+        // Each target as typed: "L1,X100,y50" moves X to 100 and Y by 50 (9.11).
+        if (const QString refusal = unknownAbsolute(c.targets); !refusal.isEmpty())
+            return finishError(id, ErrorKind::Refused, refusal);
         return startVector(id, c.targets, false);
     case Command::Kind::Home:
         return startHome(id, c.axes, c.simultaneous);
@@ -257,7 +254,7 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
             if (r.outcome != EmisLink::Outcome::Ok)
                 return finishFailure(id, frame, r);
             if (c.kind == Command::Kind::SystemWrite) {
-                m_stored.entries << c.system;
+                m_stored.store(c.system);
                 noteStored(m_stored);
             } else if (c.kind == Command::Kind::ReadSystem) {
                 noteStored(parseSystemParameters(r.text));
@@ -265,16 +262,17 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
                 mutableStatus().outputs[c.number - 1] = c.on;
             } else if (c.kind == Command::Kind::Ramp) {
                 m_known.ramp = c.value;
-            } else if (c.kind == Command::Kind::StartSpeed || c.kind == Command::Kind::WorkSpeed) {
-                auto& known =
-                    c.kind == Command::Kind::StartSpeed ? m_known.startSpeed : m_known.workSpeed;
+            } else if (c.kind == Command::Kind::StartSpeed) {
                 for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
-                    known.insert(a, c.value);
+                    m_known.startSpeed.insert(a, c.value);
+            } else if (c.kind == Command::Kind::WorkSpeed) {
+                for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
+                    m_speeds.setWritten(a, c.value);
             }
             publish();
             finishOk(id, QString::fromLatin1(r.text));
         },
-        stored ? kStoreTimeoutMs : 0, stored ? c.system.storedCount() : 0);
+        stored ? kStoreTimeoutMs : 0, stored ? c.system.motorCount() : 0);
 }
 
 } // namespace stepdeck::emis

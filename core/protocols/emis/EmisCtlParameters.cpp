@@ -38,7 +38,7 @@ void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& 
     if (index >= frames.size())
         return onDone();
     const ParameterPlan::Frame& f = frames[index];
-    const bool stored = f.storedCount > 0;
+    const bool stored = f.storedMotors > 0;
     request(
         f.bytes, stored ? EmisLink::Expect::Stored : EmisLink::Expect::Ack,
         [this, id, frames, index, onDone](const EmisLink::Result& r) {
@@ -50,7 +50,7 @@ void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& 
                 text += tr(" (%n command(s) before it were accepted)", nullptr, index);
             finishError(id, failureKind(r), text);
         },
-        stored ? kStoreTimeoutMs : 0, f.storedCount);
+        stored ? kStoreTimeoutMs : 0, f.storedMotors);
 }
 
 void EmisController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
@@ -70,6 +70,8 @@ void EmisController::writeParameters(RequestId id, const ParameterSet& values, b
         planWorking(values, CurrentPartners{m_known.runCurrent, m_known.idleCurrent});
     if (!plan.ok())
         return finishError(id, plan.error, plan.message);
+    if (values.contains(QStringLiteral("work-speed")))
+        m_speeds.forgetBoard(); // until the writes are confirmed (a failure says no more)
     runFrames(id, plan.frames, 0, [this, id, values] {
         noteWritten(values);
         publish();
@@ -95,7 +97,9 @@ void EmisController::noteWritten(const ParameterSet& set)
         return intsOf(m_written.value(QLatin1String(name)));
     };
     m_known.startSpeed.insert(axisInts("start-speed"));
-    m_known.workSpeed.insert(axisInts("work-speed"));
+    const QMap<Axis, qint64> work = intsOf(set.value(QStringLiteral("work-speed")));
+    for (auto it = work.cbegin(); it != work.cend(); ++it)
+        m_speeds.setWritten(it.key(), it.value()); // the board acknowledged it just now
     m_known.runCurrent.insert(axisInts("run-current"));
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
@@ -136,7 +140,7 @@ void EmisController::noteStored(const SystemParameters& stored)
         known->insert(intsOf(values.value(QLatin1String(name))));
     };
     fill("start-speed", &m_known.startSpeed);
-    fill("work-speed", &m_known.workSpeed);
+    m_speeds.setStored(intsOf(values.value(QStringLiteral("work-speed"))));
     fill("run-current", &m_known.runCurrent);
     fill("idle-current", &m_known.idleCurrent);
     if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))
@@ -207,7 +211,7 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
         for (const ParameterPlan::Frame& f : plan.frames) {
             written << QString::fromLatin1(f.bytes.chopped(1));
             if (const auto entry = parseSystemEntry(f.bytes.mid(2).chopped(1), nullptr))
-                m_stored.entries << *entry; // later entries override (SystemParameters::find)
+                m_stored.store(*entry); // keeps the motors the entry does not name
         }
         noteStored(m_stored);
         if (set.contains(QStringLiteral("reference-switch-type")))

@@ -51,9 +51,9 @@ struct SystemEntry
     qint64 ramp = 0;                                  // Ramp
     qint64 flexStart = 0, flexWork = 0, flexRamp = 0; // SmcFlex
 
-    // How many <ACK> follow "Ready!" (9.14): one per motor the entry applies to. Every example
-    // in 9.14 shows four, also "##R,100" and "##S,200,1800,100", which apply to all motors.
-    int storedCount() const;
+    // The motors the entry names ("##R,100" and "##S,200,1800,100" apply to all four): the
+    // fewest <ACK>s after "Ready!" a board may send for it (kStoredAcks).
+    int motorCount() const;
 };
 std::optional<SystemEntry> parseSystemEntry(const QByteArray& entry, QString* error);
 QByteArray formatSystemEntry(const SystemEntry& entry); // without "##" and <CR>
@@ -61,12 +61,17 @@ QByteArray formatSystemEntry(const SystemEntry& entry); // without "##" and <CR>
 // 9.15: "*PRSYS:" followed by the stored entries. The manual shows no example of the list, so
 // the reading is lenient: entries in the "##" write syntax, with or without the "##",
 // separated by blanks, CR, LF, ';' or the next "##". Entries that do not parse are kept in
-// `unparsed` and otherwise ignored; a later entry of the same key overrides an earlier one.
+// `unparsed` and otherwise ignored. Entries of the same kind are applied in order (store()).
 struct SystemParameters
 {
-    QList<SystemEntry> entries;
+    QList<SystemEntry> entries; // at most one per key
     QList<QByteArray> unparsed;
-    const SystemEntry* find(SystemEntry::Key key) const; // the last entry of that key
+    const SystemEntry* find(SystemEntry::Key key) const;
+    // Applies a "##" write to this copy. A later entry overrides the values it names and keeps
+    // the motors it does not name ("##c,x50,10" after "##c,x100,0,y100,0,..." changes only X):
+    // the manual (9.14, 9.16 "können einfach überschrieben werden") does not say what happens
+    // to the motors a write leaves out; StepDeck reads it as "they keep their stored values".
+    void store(const SystemEntry& entry);
 };
 SystemParameters parseSystemParameters(const QByteArray& text);
 QByteArray formatSystemParameters(const QList<SystemEntry>& entries); // "*PRSYS:##D,...\r\n##R,100"

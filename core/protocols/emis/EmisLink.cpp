@@ -86,6 +86,10 @@ void EmisLink::pump()
         complete(Result{Outcome::Cancelled, {}, 0, tr("the link is not open"), false});
         return;
     }
+    if (m_current->cancelIf && m_current->cancelIf()) {
+        complete(Result{Outcome::Cancelled, {}, 0, {}, false});
+        return;
+    }
     m_stage = 0;
     m_acks = 0;
     m_firstText.clear();
@@ -163,11 +167,12 @@ void EmisLink::onStoredEvent(const Event& e)
     } else {
         ++m_acks;
     }
-    if (m_stage == 2 && m_acks >= m_current->storedCount) {
+    if (m_stage == 2 && m_acks >= kStoredAcks) {
         complete(Result{Outcome::Ok, m_firstText, m_acks, {}});
         return;
     }
-    // Writing the flash takes its time per entry: every step restarts the timeout.
+    // Writing the flash takes its time per entry: every step restarts the timeout. Past
+    // storedMotors, the timeout is the quiet line that ends the write (onTimeout).
     m_timer.start(m_current->timeoutMs > 0 ? m_current->timeoutMs : m_defaultTimeoutMs);
 }
 
@@ -176,16 +181,22 @@ void EmisLink::onTimeout()
     if (!m_current)
         return;
     QString detail;
+    if (m_current->expect == Expect::Stored && m_stage == 2 &&
+        m_acks >= qMax(1, m_current->storedMotors)) {
+        complete(Result{Outcome::Ok, m_firstText, m_acks, {}}); // quiet after one per motor
+        return;
+    }
     if (m_current->expect == Expect::Stored && m_stage > 0) {
-        detail = m_stage == 1 ? tr("no \"Ready!\" after the first <ACK>")
-                              : tr("%1 of %2 entries acknowledged after \"Ready!\"")
-                                    .arg(m_acks)
-                                    .arg(m_current->storedCount);
+        detail =
+            m_stage == 1
+                ? tr("no \"Ready!\" after the first <ACK>")
+                : tr("%1 of %2 entries acknowledged after \"Ready!\"").arg(m_acks).arg(kStoredAcks);
     }
     if (!m_current->poll)
         qCInfo(lcEmis) << "timeout; the line stays quiet for" << kGuardMs << "ms";
     m_guard.start(kGuardMs); // before complete(): the next request waits for it
     complete(Result{Outcome::Timeout, {}, m_acks, detail});
+    Q_EMIT timedOut(); // after its own handler: what that settles comes first
 }
 
 void EmisLink::complete(const Result& result)

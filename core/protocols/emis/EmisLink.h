@@ -24,9 +24,13 @@ class EmisLink : public QObject
     Q_OBJECT
 public:
     enum class Expect {
-        Ack,    // <ACK>, text optional (echo or answer)
-        Start,  // <NAK>: a move or reference run started (9.9, 9.11)
-        Stored, // <ACK>, "Ready!" <ACK>, then the rest of storedCount <ACK>s (9.14)
+        Ack,   // <ACK>, text optional (echo or answer)
+        Start, // <NAK>: a move or reference run started (9.9, 9.11)
+        // <ACK>, "Ready!" <ACK>, then more <ACK>s (9.14): done at kStoredAcks after "Ready!",
+        // or at storedMotors or more when the line then stays quiet for the timeout (a board
+        // that acknowledges per motor named). Never earlier: an <ACK> still to come would be
+        // taken as the reply to the next command.
+        Stored,
     };
     enum class Outcome {
         Ok,
@@ -48,10 +52,13 @@ public:
     {
         QByteArray bytes; // with its terminator
         Expect expect = Expect::Ack;
-        int storedCount = 0;
-        int timeoutMs = 0; // 0: defaultTimeout()
+        int storedMotors = 0; // Stored: the motors the entry names (SystemEntry::motorCount)
+        int timeoutMs = 0;    // 0: defaultTimeout()
         bool poll = false;
         bool exclusive = false;
+        // Asked when it is its turn: true ends it Cancelled, never sent (a move whose work
+        // speed write, queued right before it, was not taken).
+        std::function<bool()> cancelIf;
         Handler done;
     };
 
@@ -74,6 +81,7 @@ public:
 Q_SIGNALS:
     void arrived(stepdeck::Axis axis);
     void stray(const QString& what); // a reply nobody waited for, or garbage
+    void timedOut();                 // a request (poll or command) got no complete reply in time
     void traffic(stepdeck::TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);
 
 private:

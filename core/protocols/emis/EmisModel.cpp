@@ -241,6 +241,26 @@ bool parseTraffic(const QString& text, QByteArray* bytes, QString* error)
     return true;
 }
 
+QString noStopNote()
+{
+    return QCoreApplication::translate(
+        "stepdeck::emis::Presentation",
+        "no stop command: a button on the reset input (manual 5.8) or the machine's emergency "
+        "stop stops it; positions are then unknown until referenced");
+}
+
+QString noStopNoteDetail()
+{
+    return QCoreApplication::translate(
+        "stepdeck::emis::Presentation",
+        "A move only ends when it arrives. A reset (a normally open button on the board's reset "
+        "input) stops every motor at once and restarts the board with its stored values. "
+        "StepDeck sees it when a move's arrival does not come (that axis: motion unconfirmed, "
+        "position unknown) or when the board does not answer while it restarts; either way every "
+        "axis then counts as not referenced and the outputs as unknown. A reset it could not see "
+        "leaves the positions it shows: reference the axes after every reset.");
+}
+
 ModelPresentation presentation()
 {
     ModelPresentation p;
@@ -276,6 +296,8 @@ ModelPresentation presentation()
         }
         return validateProgramLine(line.trimmed().toLatin1());
     };
+    p.noStopNote = &noStopNote;
+    p.noStopNoteDetail = &noStopNoteDetail;
     return p;
 }
 

@@ -16,6 +16,10 @@ ScenarioSupport scenarioSupport();
 SoakProfile soakProfile();
 // Input names and console notation for the UI (model/ModelPresentation.h).
 ModelPresentation presentation();
+// The note next to STOP/PANIC: the reset input (5.8) stops the board; what the host does after
+// a reset. noStopNoteDetail(): the longer text for its tooltip.
+QString noStopNote();
+QString noStopNoteDetail();
 // Console notation: printable text as it is, control bytes by their manual names
 // ("<CR>", "<ACK>", "<NAK>", "<DC1>", "<BEL>", "<STX>", "<ETX>"), others as <xNN>.
 QString formatTraffic(const QByteArray& bytes);

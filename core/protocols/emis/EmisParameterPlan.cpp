@@ -41,9 +41,9 @@ bool allEqualOnFourAxes(const QMap<Axis, qint64>& values)
     return true;
 }
 
-void add(Plan* plan, const QByteArray& bytes, const QString& parameter, int storedCount = 0)
+void add(Plan* plan, const QByteArray& bytes, const QString& parameter, int storedMotors = 0)
 {
-    plan->frames << Plan::Frame{bytes, parameter, storedCount};
+    plan->frames << Plan::Frame{bytes, parameter, storedMotors};
 }
 
 // Run and idle current per axis, completed from the partners; false with the plan's error set.

@@ -14,9 +14,9 @@ struct ParameterPlan
 public:
     struct Frame
     {
-        QByteArray bytes;    // the command with its <CR>
-        QString parameter;   // the parameter(s) it writes, for messages
-        int storedCount = 0; // "##" writes: the <ACK>s expected after "Ready!" (9.14)
+        QByteArray bytes;     // the command with its <CR>
+        QString parameter;    // the parameter(s) it writes, for messages
+        int storedMotors = 0; // "##" writes: the motors the entry names (EmisLink, 9.14)
     };
     QList<Frame> frames;
     ErrorKind error = ErrorKind::None;

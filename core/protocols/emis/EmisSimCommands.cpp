@@ -37,6 +37,8 @@ QByteArray EmisSimulator::run(const Command& c)
     case K::Input:
         return ack(c.text + ' ' + (inputLevels().value(c.number - 1) ? '1' : '0'));
     case K::AllInputs: {
+        if (m_bellOnPollWhileMoving && anyMoving())
+            return bel();
         QByteArray bits;
         for (bool level : inputLevels())
             bits += level ? '1' : '0';
@@ -149,7 +151,7 @@ QByteArray EmisSimulator::runVector(const Command& c)
         const qint64 relative = t.absolute ? t.value - position(t.axis) : t.value;
         targets.insert(t.axis, axisRef(t.axis).physical() + relative);
         if (relative != 0)
-            m_accepted.append({t.axis, relative});
+            m_accepted.append({t.axis, relative, m_working.workSpeed.value(t.axis)});
         const double speed = qMax<double>(1, m_working.workSpeed.value(t.axis));
         slowest = qMax(slowest, double(qAbs(relative)) / speed);
     }
@@ -167,11 +169,18 @@ QByteArray EmisSimulator::runVector(const Command& c)
 QByteArray EmisSimulator::runSystemWrite(const Command& c)
 {
     storeEntry(c.system);
-    // 9.14: "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>": one <ACK> per stored entry after Ready!.
-    QByteArray reply = ack() + " Ready! ";
-    for (int i = 0; i < c.system.storedCount(); ++i)
-        reply += (i ? " " : "") + ack();
-    return reply;
+    // 9.14: "<ACK> Ready! <ACK> <ACK> <ACK> <ACK>", each <ACK> after "Ready!" once its part of
+    // the flash is written.
+    const int acks = (m_storedAcksPerMotor ? c.system.motorCount() : kStoredAcks) -
+                     std::exchange(m_withheldAcks, 0);
+    QList<QByteArray> parts{ack()};
+    for (int i = 0; i < acks; ++i)
+        parts << (i ? QByteArray(" ") : QByteArray(" Ready! ")) + ack();
+    if (m_flashWriteMs == 0)
+        return parts.join();
+    m_flashParts = parts.mid(1);
+    m_flashTimer.start(m_flashWriteMs);
+    return parts.first();
 }
 
 void EmisSimulator::storeEntry(const SystemEntry& entry)

@@ -17,6 +17,7 @@ EmisSimulator::EmisSimulator(const SimulatorOptions& options, QObject* parent)
     m_timer.setTimerType(Qt::PreciseTimer);
     m_timer.setInterval(5);
     connect(&m_timer, &QTimer::timeout, this, &EmisSimulator::tick);
+    connect(&m_flashTimer, &QTimer::timeout, this, &EmisSimulator::flashWritten);
     m_clock.start();
     powerCycle();
 }
@@ -106,6 +107,14 @@ void EmisSimulator::emergencyStop()
     }
 }
 
+void EmisSimulator::externalReset(int bootMs)
+{
+    emergencyStop();
+    powerCycle();
+    m_bootMs = bootMs;
+    m_booting.start();
+}
+
 void EmisSimulator::powerCycle()
 {
     for (Axis axis : allAxes()) {
@@ -118,6 +127,9 @@ void EmisSimulator::powerCycle()
     m_outputs.fill(false);
     m_programming = 0;
     m_decoder.reset();
+    m_flashTimer.stop();
+    m_flashParts.clear();
+    m_waitingInput.clear();
     loadWorkingFromStored();
 }
 
@@ -262,8 +274,31 @@ void EmisSimulator::ensureTicking()
 
 void EmisSimulator::receive(const QByteArray& bytes)
 {
-    for (const CommandDecoder::Frame& frame : m_decoder.feed(bytes))
-        execute(frame);
+    if (m_booting.isValid() && !m_booting.hasExpired(m_bootMs))
+        return; // restarting after a reset: the bytes are lost
+    if (m_flashTimer.isActive()) {
+        m_waitingInput += bytes;
+        return;
+    }
+    const QList<CommandDecoder::Frame> frames = m_decoder.feed(bytes);
+    for (int i = 0; i < frames.size(); ++i) {
+        execute(frames[i]);
+        if (m_flashTimer.isActive()) { // a "##" write: the rest waits until it is done
+            for (const CommandDecoder::Frame& later : frames.mid(i + 1))
+                m_waitingInput += later.text + later.terminator;
+            return;
+        }
+    }
+}
+
+void EmisSimulator::flashWritten()
+{
+    if (!m_flashParts.isEmpty())
+        send(m_flashParts.takeFirst());
+    if (!m_flashParts.isEmpty())
+        return;
+    m_flashTimer.stop();
+    receive(std::exchange(m_waitingInput, QByteArray()));
 }
 
 void EmisSimulator::execute(const CommandDecoder::Frame& frame)
@@ -287,6 +322,15 @@ void EmisSimulator::execute(const CommandDecoder::Frame& frame)
     const QByteArray reply = m_programming ? runProgramming(c, frame.terminator) : run(c);
     if (!reply.isEmpty())
         send(reply);
+}
+
+QList<SimulatedMove> EmisSimulator::acceptedMoves() const
+{
+    QList<SimulatedMove> out;
+    out.reserve(m_accepted.size());
+    for (const AcceptedMove& m : m_accepted)
+        out.append({m.axis, m.steps});
+    return out;
 }
 
 } // namespace stepdeck::emis

@@ -26,6 +26,10 @@ namespace stepdeck::emis {
 // - Programming an input (*PWIN..<ETX>) stores the program; running it on an input edge is
 //   not simulated.
 // - *PRSYS lists the stored entries as "##<entry>" separated by CR LF, closed by <ACK>.
+// - A "##" write answers its <ACK> at once, then "Ready!" and the further <ACK>s one flash
+//   write time apart (setFlashWriteMs); kStoredAcks of them, or one per motor the entry
+//   names (setStoredAcksPerMotor), the two readings of 9.14. Commands that come meanwhile
+//   wait until the flash is written (one controller, busy writing).
 class EmisSimulator : public Simulator
 {
     Q_OBJECT
@@ -68,8 +72,16 @@ public:
     int arrivalsDropped() const { return m_arrivalsDropped; }
     // Vector moves (9.11) the board accepted, per axis with their relative length in steps
     // (absolute targets converted at acceptance), in order; zero-length targets are left out.
-    using AcceptedMove = SimulatedMove;
-    QList<SimulatedMove> acceptedMoves() const override { return m_accepted; }
+    struct AcceptedMove
+    {
+        Axis axis;
+        qint64 steps;
+        qint64 workSpeed = 0; // the axis' work speed (#E1, 9.5) when it was accepted
+    };
+    // The probe the soak and the fault matrix ask (Simulator::acceptedMoves) ...
+    QList<SimulatedMove> acceptedMoves() const override;
+    // ... and the same moves with the work speed each ran at.
+    QList<AcceptedMove> acceptedMovesWithSpeed() const { return m_accepted; }
     // Moves and reference runs refused with <BEL> because a named motor was still moving.
     int busyRefusals() const { return m_busyRefusals; }
 
@@ -81,10 +93,20 @@ public:
     void setInput(int number, bool level);                // inputs 5..8
     void dropArrivals(int count); // the next `count` <DCn> are not sent (the motor still stops)
     void bellOn(const QByteArray& command) { m_bellOn = command; } // <BEL> the next time it comes
+    // A board that refuses the input query while a motor moves (<BEL>: "busy", a reading the
+    // manual allows, chapter 9 introduction).
+    void setBellOnPollWhileMoving(bool on) { m_bellOnPollWhileMoving = on; }
+    void setFlashWriteMs(int ms) { m_flashWriteMs = qMax(0, ms); } // 0: the whole reply at once
+    void setStoredAcksPerMotor(bool on) { m_storedAcksPerMotor = on; }
+    void withholdStoredAcks(int count) { m_withheldAcks = count; } // the next "##" sends fewer
     void powerCycle(); // working values from the stored ones, counters 0, outputs off
     // The machine's emergency-stop circuit (the board has no stop command): every motor
     // stands where it is at once, reference runs are abandoned, no <DCn> follows.
     void emergencyStop() override;
+    // A button on the reset input (5.8): every motor stops where it is, no <DCn> follows, then
+    // the board starts like after a power cycle; while it starts (bootMs; the manual gives no
+    // time) it takes no command and answers nothing.
+    void externalReset(int bootMs);
 
 private:
     EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }
@@ -105,6 +127,7 @@ private:
     void arrived(Axis axis);
     void tick();
     void ensureTicking();
+    void flashWritten(); // the next part of a "##" reply; input that waited is taken then
 
     std::array<EmisSimAxis, 4> m_axes;
     std::array<qint64, 4> m_origin{}; // physical step that the board's counter calls 0
@@ -126,6 +149,15 @@ private:
     int m_arrivalsDropped = 0;
     int m_busyRefusals = 0;
     QByteArray m_bellOn;
+    bool m_bellOnPollWhileMoving = false;
+    int m_flashWriteMs = 10;
+    bool m_storedAcksPerMotor = false;
+    int m_withheldAcks = 0;
+    QList<QByteArray> m_flashParts; // the rest of a "##" reply, one part per flash write
+    QTimer m_flashTimer{this};
+    QByteArray m_waitingInput; // received while the flash is written
+    QElapsedTimer m_booting;   // valid: restarting after a reset until m_bootMs
+    int m_bootMs = 0;
     CommandDecoder m_decoder;
     QList<QByteArray> m_commands;
     QTimer m_timer{this};

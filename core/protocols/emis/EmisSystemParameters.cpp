@@ -89,7 +89,7 @@ QByteArray perAxisText(const QMap<Axis, qint64>& values)
 }
 } // namespace
 
-int SystemEntry::storedCount() const
+int SystemEntry::motorCount() const
 {
     switch (key) {
     case Key::ReferenceSwitch:
@@ -180,11 +180,28 @@ QByteArray formatSystemEntry(const SystemEntry& e)
 
 const SystemEntry* SystemParameters::find(SystemEntry::Key key) const
 {
-    for (auto it = entries.crbegin(); it != entries.crend(); ++it) {
-        if (it->key == key)
-            return &*it;
+    for (const SystemEntry& e : entries) {
+        if (e.key == key)
+            return &e;
     }
     return nullptr;
+}
+
+void SystemParameters::store(const SystemEntry& entry)
+{
+    for (SystemEntry& e : entries) {
+        if (e.key != entry.key)
+            continue;
+        e.values.insert(entry.values);
+        e.idle.insert(entry.idle);
+        e.normallyClosed.insert(entry.normallyClosed);
+        e.ramp = entry.ramp;
+        e.flexStart = entry.flexStart;
+        e.flexWork = entry.flexWork;
+        e.flexRamp = entry.flexRamp;
+        return;
+    }
+    entries << entry;
 }
 
 SystemParameters parseSystemParameters(const QByteArray& text)
@@ -202,7 +219,7 @@ SystemParameters parseSystemParameters(const QByteArray& text)
             if (piece.isEmpty())
                 continue; // "##" splits into empty pieces
             if (const auto entry = parseSystemEntry(piece, nullptr))
-                out.entries << *entry;
+                out.store(*entry);
             else
                 out.unparsed << piece;
         }

@@ -166,6 +166,10 @@ void TestEmisMainWindow::stop_refusedWithEmergencyStopText()
     QLabel* note = m_f->window->safetyBar()->noStopNote();
     QVERIFY(!note->isHidden());
     QVERIFY2(note->text().contains("emergency stop"), qPrintable(note->text()));
+    // The SMC-IC4's own way to stop (5.8) and what the host does afterwards.
+    QVERIFY2(note->text().contains("reset input (manual 5.8)"), qPrintable(note->text()));
+    QVERIFY2(note->text().contains("unknown until referenced"), qPrintable(note->text()));
+    QVERIFY2(note->toolTip().contains("not referenced"), qPrintable(note->toolTip()));
     m_f->window->stopAll();
     QTRY_VERIFY(m_f->window->lastError().contains("emergency stop"));
     m_f->window->panicAll();

@@ -5,3 +5,5 @@ stepdeck_add_test(tst_emiscontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emisc
 stepdeck_add_test(tst_emiscontrollermotion SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emiscontrollermotion.cpp ${CMAKE_CURRENT_LIST_DIR}/EmisControllerRig.h LABELS unit)
 stepdeck_add_test(tst_emis_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emis_e2e.cpp LABELS integration)
 stepdeck_add_test(tst_emismodel SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emismodel.cpp LABELS unit)
+stepdeck_add_test(tst_emisworkspeeds SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emisworkspeeds.cpp LABELS unit)
+stepdeck_add_test(tst_emiscontrollerworkspeed SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emiscontrollerworkspeed.cpp ${CMAKE_CURRENT_LIST_DIR}/EmisControllerRig.h LABELS unit)

@@ -24,8 +24,11 @@ private Q_SLOTS:
     void write_bellFromBoard_namesCommand();
     void read_returnsValuesWrittenInSession();
     void store_systemForms_readyParsed_readBack();
+    void store_partialEntry_otherMotorsStayKnown();
     void store_notStorable_unsupportedNothingSent();
     void store_missingAcks_timeoutNamesCount();
+    void store_entryOfOneMotor_fourAcksRead_nextReplyIsItsOwn();
+    void store_boardAcksPerMotor_quietLineEndsWrite();
     void clear_sendsPesys();
     void output_switchedAndTracked();
     void program_sequenceAsInManual_noPollInBetween();
@@ -34,6 +37,7 @@ private Q_SLOTS:
     void program_lineRefusedByBoard_partialProgramErased();
     void program_erase();
     void console_commandsRoutedThroughBookkeeping();
+    void console_mixedVector_eachTargetAsTyped();
 
 private:
     EmisRig m_rig;
@@ -199,6 +203,34 @@ void TestEmisController::store_systemForms_readyParsed_readBack()
     QCOMPARE(read.value.toMap().value("entries").toList().size(), 5);
 }
 
+void TestEmisController::store_partialEntry_otherMotorsStayKnown()
+{
+    // A later "##c" for X alone must not hide Y's stored currents from the host: a store of
+    // Y's run current takes its idle current from the first, full entry.
+    const auto store = [this](const ParameterSet& set) {
+        return m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(set)}});
+    };
+    const auto perAxis = [](qint64 x, qint64 y, qint64 z, qint64 u) {
+        return ParameterValue{{}, {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}, {Axis::U, u}}};
+    };
+    ParameterSet all{{"run-current", perAxis(100, 100, 100, 100)},
+                     {"idle-current", perAxis(0, 5, 20, 0)}};
+    const CommandResult first = store(all);
+    QVERIFY2(first.ok(), qPrintable(first.message));
+    ParameterSet xOnly{{"run-current", ParameterValue{{}, {{Axis::X, 50}}}},
+                       {"idle-current", ParameterValue{{}, {{Axis::X, 10}}}}};
+    QVERIFY(store(xOnly).ok());
+    const CommandResult r = store({{"run-current", ParameterValue{{}, {{Axis::Y, 80}}}}});
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("##c"),
+             (QList<QByteArray>{"##c,x100,0,y100,5,z100,20,u100,0", "##c,x50,10", "##c,y80,5"}));
+    const QList<SystemEntry> stored = m_rig.sim->storedEntries();
+    QCOMPARE(stored.size(), 1);
+    QCOMPARE(stored.first().values.value(Axis::Y), 80);
+    QCOMPARE(stored.first().idle.value(Axis::Y), 5);
+    QCOMPARE(stored.first().values.value(Axis::X), 50);
+}
+
 void TestEmisController::store_notStorable_unsupportedNothingSent()
 {
     ParameterSet set{{"interpolation", ParameterValue{true, {}}}};
@@ -216,7 +248,7 @@ void TestEmisController::store_notStorable_unsupportedNothingSent()
 
 void TestEmisController::store_missingAcks_timeoutNamesCount()
 {
-    m_rig.sim->faults().corruptReplies = 1; // the last <ACK> of the reply arrives garbled
+    m_rig.sim->withholdStoredAcks(1); // the last <ACK> of the reply never comes
     ParameterSet set{{"ramp", ParameterValue{200, {}}}};
     const CommandResult r =
         m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(set)}});
@@ -224,8 +256,52 @@ void TestEmisController::store_missingAcks_timeoutNamesCount()
     QVERIFY2(r.message.contains("3 of 4"), qPrintable(r.message));
 }
 
+void TestEmisController::store_entryOfOneMotor_fourAcksRead_nextReplyIsItsOwn()
+{
+    // "##REFSW,xNC" names one motor; the board sends four <ACK>s after "Ready!" as every
+    // example of 9.14 shows, a flash write apart. None may be taken for the next reply: the
+    // move queued behind the write gets its own <NAK>.
+    const int resyncs = m_rig.ctl->status().resyncCount;
+    QSignalSpy finished(m_rig.ctl, &Controller::requestFinished);
+    const ParameterSet nc{{"reference-switch-type", ParameterValue{{}, {{Axis::X, "NC"}}}}};
+    const RequestId writeId = 1000;
+    const CommandResult move = m_rig.run([&](RequestId id) {
+        m_rig.ctl->writeParameters(writeId, nc, false);
+        m_rig.ctl->moveRelative(id, {{Axis::X, 20}});
+    });
+    QVERIFY2(move.ok(), qPrintable(move.message));
+    QVERIFY(!finished.isEmpty());
+    QCOMPARE(finished.first().at(0).value<CommandResult>().id, writeId);
+    QVERIFY(finished.first().at(0).value<CommandResult>().ok());
+    QCOMPARE(m_rig.commandsStartingWith("##"), QList<QByteArray>{"##REFSW,xNC"});
+    QCOMPARE(m_rig.commandsStartingWith("L1"), QList<QByteArray>{"L1,x20"});
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::X).position, 20);
+    QCOMPARE(m_rig.sim->position(Axis::X), 20);
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    QCOMPARE(m_rig.ctl->status().resyncCount, resyncs); // no reply went astray
+}
+
+void TestEmisController::store_boardAcksPerMotor_quietLineEndsWrite()
+{
+    // The other reading of 9.14: one <ACK> per motor the entry names. The write ends when
+    // the line stays quiet after them.
+    m_rig.sim->setStoredAcksPerMotor(true);
+    const int resyncs = m_rig.ctl->status().resyncCount;
+    const ParameterSet speeds{{"work-speed", ParameterValue{{}, {{Axis::X, 800}, {Axis::Y, 900}}}}};
+    const CommandResult r =
+        m_rig.operation("store-parameters", {{"parameters", QVariant::fromValue(speeds)}});
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("##"), QList<QByteArray>{"##E,x800,y900"});
+    QCOMPARE(m_rig.sim->storedEntries().first().values.value(Axis::Y), 900);
+    QVERIFY(m_rig.operation("set-output", {{"output", 2}, {"on", true}}).ok());
+    QVERIFY(m_rig.sim->output(2));
+    QCOMPARE(m_rig.ctl->status().resyncCount, resyncs);
+}
+
 void TestEmisController::clear_sendsPesys()
 {
+    m_rig.sim->setFlashWriteMs(0);
     m_rig.sim->receive("##S,200,1800,100\r"); // an SMCflex entry from elsewhere
     QVERIFY(m_rig.operation("clear-stored-parameters").ok());
     QCOMPARE(m_rig.commands().last(), QByteArray("*PESYS"));
@@ -332,6 +408,32 @@ void TestEmisController::console_commandsRoutedThroughBookkeeping()
     QCOMPARE(r.error, ErrorKind::Refused);
     r = m_rig.run([this](RequestId id) { m_rig.ctl->sendRaw(id, "#S0\r"); });
     QCOMPARE(r.error, ErrorKind::InvalidValue);
+}
+
+void TestEmisController::console_mixedVector_eachTargetAsTyped()
+{
+    const auto console = [this](const QByteArray& line) {
+        return m_rig.run([&](RequestId id) { m_rig.ctl->sendRaw(id, line + "\r"); });
+    };
+    // Z is not referenced: its absolute target is refused, whatever comes first.
+    CommandResult r = console("L1,x10,Z5");
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY2(r.message.contains("axis Z"), qPrintable(r.message));
+    QVERIFY(m_rig.commandsStartingWith("L1").isEmpty());
+    QVERIFY(m_rig.operation("reference", {{"axes", "XY"}, {"simultaneous", true}}).ok());
+    QTRY_VERIFY(m_rig.axis(Axis::X).referenced && m_rig.axis(Axis::Y).referenced);
+    QVERIFY(console("L1,y30").ok());
+    QTRY_VERIFY(!m_rig.anyMoving());
+    // X absolute, Y relative (9.11): the board moves Y by 50 more.
+    r = console("L1,X100,y50");
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(m_rig.commandsStartingWith("L1").last(), QByteArray("L1,X100,y50"));
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.sim->position(Axis::X), 100);
+    QCOMPARE(m_rig.sim->position(Axis::Y), 80);
+    QCOMPARE(m_rig.axis(Axis::X).position, 100);
+    QCOMPARE(m_rig.axis(Axis::Y).position, 80);
+    QVERIFY(m_rig.axis(Axis::Y).positionKnown);
 }
 
 QTEST_GUILESS_MAIN(TestEmisController)

@@ -30,6 +30,7 @@ private Q_SLOTS:
     void reference_sequentialAndSimultaneous();
     void reference_minusOne_invalid();
     void lostArrival_deadline_motionUnconfirmed_untilReferenced();
+    void pollRefusedWhileMoving_linkStays_moveArrives();
     void noNakReply_lateArrivalStillCounts();
     void unexpectedArrival_positionUnknown();
     void jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival();
@@ -39,6 +40,8 @@ private Q_SLOTS:
     void jog_boardSilent_haltsAndUnconfirmed();
     void linkFailure_whileMoving_unconfirmed_positionsUnknown();
     void closeLink_whileMoving_unconfirmed();
+    void externalReset_whileMoving_positionUnknownUntilReferenced();
+    void externalReset_whileIdle_silenceSeen_positionsAndOutputsUnknown();
 
 private:
     void fastMotion(); // short ramps, quick speeds: tests stay short
@@ -129,6 +132,13 @@ void TestEmisControllerMotion::move_absolute_refusedUntilReferenced_thenUpperCas
     QCOMPARE(m_rig.axis(Axis::Z).position, 50);
     QVERIFY(m_rig.axis(Axis::Z).positionKnown);
     QCOMPARE(m_rig.sim->position(Axis::Z), 50);
+    // Where it stands already: nothing to move, nothing sent (9.11 leaves open how the board
+    // answers a move of no length).
+    const qsizetype sent = m_rig.commandsStartingWith("L1").size();
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveAbsolute(id, {{Axis::Z, 50}}); }).ok());
+    QCOMPARE(m_rig.commandsStartingWith("L1").size(), sent);
+    QVERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::Z).position, 50);
 }
 
 void TestEmisControllerMotion::reference_sequentialAndSimultaneous()
@@ -176,6 +186,25 @@ void TestEmisControllerMotion::lostArrival_deadline_motionUnconfirmed_untilRefer
     QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
     QTRY_VERIFY(!m_rig.ctl->status().motionUnconfirmed);
     QVERIFY(m_rig.axis(Axis::X).positionKnown);
+}
+
+void TestEmisControllerMotion::pollRefusedWhileMoving_linkStays_moveArrives()
+{
+    // The board answers every @IG with <BEL> while a motor moves: a refusal, not silence.
+    QVERIFY(m_rig.write({"ramp=20", "start-speed=500", "work-speed=500"}).ok());
+    m_rig.sim->clearReceivedCommands();
+    m_rig.sim->setBellOnPollWhileMoving(true);
+    QSignalSpy link(m_rig.ctl, &Controller::linkStateChanged);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 300}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_rig.sim->anyMoving(), 5000); // 0.6 s at 500 steps/s
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QVERIFY(link.isEmpty()); // never Lost
+    QCOMPARE(m_rig.ctl->linkState(), LinkState::Connected);
+    QVERIFY2(m_rig.sim->receivedCommands().count("@IG") > 5, "polled while moving");
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    QCOMPARE(m_rig.axis(Axis::X).position, 300);
+    QCOMPARE(m_rig.sim->position(Axis::X), 300);
+    QVERIFY(!m_rig.axis(Axis::X).positionEstimated);
 }
 
 void TestEmisControllerMotion::noNakReply_lateArrivalStillCounts()
@@ -336,6 +365,60 @@ void TestEmisControllerMotion::closeLink_whileMoving_unconfirmed()
     QCOMPARE(m_rig.sim->receivedCommands().size(), seen);
     QVERIFY(m_rig.sim->isMoving(Axis::Y)); // the board goes on until the move arrives
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.sim->standingStill(), 10000);
+}
+
+void TestEmisControllerMotion::externalReset_whileMoving_positionUnknownUntilReferenced()
+{
+    // A button on the reset input (5.8) is the way to stop the board: the move under way ends
+    // without its <DC1>, the host says so after the deadline and wants a reference run.
+    fastMotion();
+    QVERIFY(m_rig.run([&](RequestId id) {
+                     m_rig.ctl->reference(id, {{Axis::X, 1}, {Axis::Y, 1}});
+                 })
+                .ok());
+    QTRY_VERIFY(m_rig.axis(Axis::X).positionKnown && m_rig.axis(Axis::Y).positionKnown);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 600}}); }).ok());
+    QTRY_VERIFY(m_rig.sim->isMoving(Axis::X));
+    m_rig.sim->externalReset(0);
+    QVERIFY(m_rig.sim->standingStill());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.ctl->status().motionUnconfirmed, 10000);
+    QVERIFY(!m_rig.axis(Axis::X).positionKnown);
+    QVERIFY(m_rig.axis(Axis::X).positionEstimated);
+    QVERIFY(!m_rig.axis(Axis::Y).positionKnown); // its counter was reset too
+    QVERIFY(!m_rig.axis(Axis::Y).positionEstimated);
+    QCOMPARE(m_rig.run([&](RequestId id) {
+                      m_rig.ctl->moveRelative(id, {{Axis::X, 5}});
+                  })
+                 .error,
+             ErrorKind::Refused);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::X, 1}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.axis(Axis::X).positionKnown, 10000);
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+    // The reset gave the board its stored working values: the host writes its work speed again.
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 50}}); }).ok());
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.sim->acceptedMovesWithSpeed().last().workSpeed, 4000);
+    QCOMPARE(m_rig.sim->position(Axis::X), 50);
+    QCOMPARE(m_rig.axis(Axis::X).position, 50);
+}
+
+void TestEmisControllerMotion::externalReset_whileIdle_silenceSeen_positionsAndOutputsUnknown()
+{
+    // While the board restarts it answers nothing: a poll without an answer may be a reset, so
+    // the host no longer trusts absolute positions or the outputs it switched.
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->reference(id, {{Axis::Y, 1}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.axis(Axis::Y).positionKnown, 10000);
+    QVERIFY(m_rig.operation("set-output", {{"output", 3}, {"on", true}}).ok());
+    QCOMPARE(m_rig.ctl->status().outputs.at(2), std::optional<bool>(true));
+    m_rig.sim->externalReset(150);
+    QVERIFY(!m_rig.sim->output(3));
+    QTRY_VERIFY(!m_rig.axis(Axis::Y).positionKnown);
+    QVERIFY(!m_rig.ctl->status().outputs.at(2).has_value());
+    QCOMPARE(m_rig.ctl->linkState(), LinkState::Connected); // fewer than three missed polls
+    const CommandResult absolute = m_rig.run([&](RequestId id) {
+        m_rig.ctl->moveAbsolute(id, {{Axis::Y, 10}});
+    });
+    QCOMPARE(absolute.error, ErrorKind::Refused);
 }
 
 QTEST_GUILESS_MAIN(TestEmisControllerMotion)

@@ -25,12 +25,13 @@ private Q_SLOTS:
     void program_allowedAndRefused();
     void system_manualEntries_data();
     void system_manualEntries();
-    void system_storedCount();
+    void system_motorCount();
     void system_malformed_data();
     void system_malformed();
     void prsys_lenientSeparators_data();
     void prsys_lenientSeparators();
     void prsys_formatRoundTrip();
+    void prsys_partialEntry_keepsMotorsItDoesNotName();
     void decoder_framesCrStxEtx();
     void decoder_randomChunks_sameFrames();
     void decoder_overlong_boundedAndResyncs();
@@ -253,14 +254,14 @@ void TestEmisGrammar::system_manualEntries()
     const auto parsed = parseSystemEntry(entry, &error);
     QVERIFY2(parsed.has_value(), qPrintable(error));
     QCOMPARE(formatSystemEntry(*parsed), entry); // the manual's own spelling comes back
-    QCOMPARE(parsed->storedCount(), 4);          // 9.14: four <ACK> after "Ready!" each time
+    QCOMPARE(parsed->motorCount(), 4);           // every example names (or applies to) all four
 }
 
-void TestEmisGrammar::system_storedCount()
+void TestEmisGrammar::system_motorCount()
 {
     const auto e = parseSystemEntry("D,x32,z64", nullptr);
     QVERIFY(e);
-    QCOMPARE(e->storedCount(), 2);
+    QCOMPARE(e->motorCount(), 2);
     QCOMPARE(e->values.value(Axis::Z), 64);
     const auto c = parseSystemEntry("c,x100,0,y100,0,z100,20,u100,0", nullptr);
     QCOMPARE(c->idle.value(Axis::Z), 20);
@@ -322,10 +323,26 @@ void TestEmisGrammar::prsys_formatRoundTrip()
     const QByteArray text = formatSystemParameters(entries);
     QVERIFY(text.startsWith("*PRSYS:##D,"));
     const SystemParameters p = parseSystemParameters(text);
-    QCOMPARE(p.entries.size(), 4);
+    QCOMPARE(p.entries.size(), 3);
     QCOMPARE(p.find(SystemEntry::Key::Ramp)->ramp, 300); // the later entry wins
     QVERIFY(p.find(SystemEntry::Key::ReferenceSwitch)->normallyClosed.value(Axis::Y));
     QVERIFY(p.unparsed.isEmpty());
+}
+
+void TestEmisGrammar::prsys_partialEntry_keepsMotorsItDoesNotName()
+{
+    SystemParameters p = parseSystemParameters("*PRSYS:##c,x100,0,y100,0,z100,20,u100,0\r\n"
+                                               "##c,x50,10");
+    QCOMPARE(p.entries.size(), 1);
+    const SystemEntry* c = p.find(SystemEntry::Key::Currents);
+    QCOMPARE(c->values,
+             (QMap<Axis, qint64>{{Axis::X, 50}, {Axis::Y, 100}, {Axis::Z, 100}, {Axis::U, 100}}));
+    QCOMPARE(c->idle.value(Axis::X), 10);
+    QCOMPARE(c->idle.value(Axis::Z), 20);
+    p.store(*parseSystemEntry("REFSW,uNC", nullptr));
+    p.store(*parseSystemEntry("REFSW,xNC", nullptr));
+    QCOMPARE(p.find(SystemEntry::Key::ReferenceSwitch)->normallyClosed,
+             (QMap<Axis, bool>{{Axis::X, true}, {Axis::U, true}}));
 }
 
 void TestEmisGrammar::decoder_framesCrStxEtx()

@@ -35,7 +35,7 @@ private Q_SLOTS:
     void home_switchTypeMismatch_endsAtOnce();
     void invalidValues_bell_notExecuted_data();
     void invalidValues_bell_notExecuted();
-    void systemWrite_readyAndOneAckPerEntry_storedForPowerOn();
+    void systemWrite_readyAndFourAcks_spacedByFlashWrite_storedForPowerOn();
     void readSystem_listsStoredEntries();
     void clearSystem_erasesSmcFlexOnly();
     void program_writeAndErase();
@@ -257,7 +257,8 @@ void TestEmisSimulator::home_switchTypeMismatch_endsAtOnce()
     QTRY_VERIFY(m_out.contains(char(0x11)));
     QVERIFY(m_sim->physicalPosition(Axis::X) > 400); // "referenced" far from the switch
 
-    QCOMPARE(sendAndTake("##REFSW,xNC\r"), QByteArray("\x06 Ready! \x06"));
+    QCOMPARE(sendAndTake("##REFSW,xNC\r"), QByteArray(1, ACK));
+    QTRY_COMPARE(m_out.count(ACK), kStoredAcks);
     sendAndTake("#E9,20000\r$Hx\r");
     QTRY_VERIFY(m_out.contains(char(0x11)));
     QVERIFY(qAbs(m_sim->physicalPosition(Axis::X)) <= 1);
@@ -284,11 +285,22 @@ void TestEmisSimulator::invalidValues_bell_notExecuted()
     QCOMPARE(m_sim->working().resolution, before.resolution);
 }
 
-void TestEmisSimulator::systemWrite_readyAndOneAckPerEntry_storedForPowerOn()
+void TestEmisSimulator::systemWrite_readyAndFourAcks_spacedByFlashWrite_storedForPowerOn()
 {
-    QCOMPARE(sendAndTake("##D,x32,y16,z64,u1\r"), QByteArray("\x06 Ready! \x06 \x06 \x06 \x06"));
+    // The first <ACK> at once, "Ready!" and the further ones as the flash is written (9.14);
+    // a command that comes meanwhile is answered after them.
+    QCOMPARE(sendAndTake("##D,x32,y16,z64,u1\r@V\r"), QByteArray(1, ACK));
+    QTRY_COMPARE(m_out, QByteArray(" Ready! \x06 \x06 \x06 \x06@V SMC-IC4 v1.07\x06"));
+    QCOMPARE(m_sim->receivedCommands().last(), QByteArray("@V"));
+    m_sim->setFlashWriteMs(0);
     QCOMPARE(sendAndTake("##R,250\r"), QByteArray("\x06 Ready! \x06 \x06 \x06 \x06"));
     QCOMPARE(sendAndTake("##E,x1800,y1800,z600,u1000\r").count(ACK), 5);
+    QCOMPARE(sendAndTake("##E9,x400\r").count(ACK), 5); // four also for an entry of one motor
+    m_sim->setStoredAcksPerMotor(true);                 // the other reading of 9.14
+    QCOMPARE(sendAndTake("##E9,x400,z200\r"), QByteArray("\x06 Ready! \x06 \x06"));
+    QCOMPARE(sendAndTake("##R,250\r").count(ACK), 5); // applies to all four motors
+    m_sim->withholdStoredAcks(1);
+    QCOMPARE(sendAndTake("##R,250\r").count(ACK), 4);
     QCOMPARE(m_sim->working().resolution.value(Axis::X), 16); // not before the next power-on
     QCOMPARE(m_sim->working().ramp, 100);
     m_sim->powerCycle();
@@ -302,6 +314,7 @@ void TestEmisSimulator::systemWrite_readyAndOneAckPerEntry_storedForPowerOn()
 void TestEmisSimulator::readSystem_listsStoredEntries()
 {
     QCOMPARE(sendAndTake("*PRSYS\r"), QByteArray("*PRSYS:") + ACK);
+    m_sim->setFlashWriteMs(0); // the whole "##" replies at once
     sendAndTake("##D,x32,y16,z64,u1\r##REFSW,xNO,yNO,zNO,uNC\r##D,x8\r");
     const QByteArray reply = sendAndTake("*PRSYS\r");
     QCOMPARE(reply, QByteArray("*PRSYS:##D,x8,y16,z64,u1\r\n##REFSW,xNO,yNO,zNO,uNC") + ACK);
@@ -309,6 +322,7 @@ void TestEmisSimulator::readSystem_listsStoredEntries()
 
 void TestEmisSimulator::clearSystem_erasesSmcFlexOnly()
 {
+    m_sim->setFlashWriteMs(0);
     sendAndTake("##S,200,1800,100\r##R,100\r");
     QCOMPARE(m_sim->storedEntries().size(), 2);
     QCOMPARE(sendAndTake("*PESYS\r"), QByteArray("*PESYS ") + ACK);
