@@ -1,5 +1,6 @@
 #include "ControllerSession.h"
 #include "Logging.h"
+#include "model/NearestName.h"
 #include "transport/LoopbackTransport.h"
 #include "transport/TransportFactory.h"
 #include <QCoreApplication>
@@ -51,14 +52,22 @@ ControllerSession::~ControllerSession()
     destroy();
 }
 
+QString ControllerSession::unknownModelText(const QString& modelId)
+{
+    const QString known = modelIds().join(QStringLiteral(", "));
+    const QString close = names::nearest(modelId, modelIds());
+    return close.isEmpty() ? tr("unknown controller model '%1' (known: %2)").arg(modelId, known)
+                           : tr("unknown controller model '%1' (did you mean %2? known: %3)")
+                                 .arg(modelId, close, known);
+}
+
 bool ControllerSession::create(const ConnectionSpec& spec, QString* error)
 {
     destroy();
     m_model = findModel(spec.modelId);
     if (!m_model) {
         if (error)
-            *error = tr("unknown controller model '%1' (known: %2)")
-                         .arg(spec.modelId, modelIds().join(QStringLiteral(", ")));
+            *error = unknownModelText(spec.modelId);
         return false;
     }
     m_spec = spec;

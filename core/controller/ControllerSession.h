@@ -33,6 +33,8 @@ public:
     // Creates the stack for spec in the controller thread. Returns false and says why when
     // the model is unknown. The link opens with open().
     bool create(const ConnectionSpec& spec, QString* error);
+    // "unknown controller model 'nanotek' (did you mean nanotec? known: ...)".
+    static QString unknownModelText(const QString& modelId);
     void destroy();
     bool isCreated() const { return m_controller != nullptr; }
 

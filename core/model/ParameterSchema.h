@@ -67,6 +67,9 @@ public:
     const ParameterSpec* find(const QString& name) const;
     // The translated label of the named parameter, or the name itself if the schema has none.
     QString displayLabel(const QString& name) const;
+    // "unknown parameter 'strat-speed' (did you mean start-speed?)": for a key the user typed
+    // or a file holds, with the nearest parameter name when one is close (NearestName.h).
+    QString unknownNameText(const QString& name) const;
     QStringList groups() const;
 
     // Checks type and range of one scalar value; returns an empty string when valid, else a
