@@ -75,6 +75,13 @@ public:
     // Checks type and range of one scalar value; returns an empty string when valid, else a
     // sentence naming the parameter by its translated label, with its range and unit.
     QString validateScalar(const ParameterSpec& spec, const QVariant& value) const;
+    // The same, naming the parameter `who` (the setup page's "Max speed X"): the form and the
+    // files say the same about the same text ("'abc' is not a decimal integer").
+    QString validateScalar(const ParameterSpec& spec, const QVariant& value,
+                           const QString& who) const
+    {
+        return scalarError(who, spec, value);
+    }
     // Checks every entry of a set (unknown names, per-axis shape, type, range, writability).
     // Messages name parameters by their translated label; an unknown one by the key given.
     // (parseAssignment() and fromJson() name the key instead: it is what the user typed or
