@@ -27,6 +27,7 @@ class ReferencePanel;
 class SafetyBar;
 class SafetyKeyFilter;
 class StatusMessages;
+class StopFeedback;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -134,6 +135,7 @@ private:
     QLabel* m_linkLabel;
     QLabel* m_errorLabel;
     StatusMessages* m_messages;
+    StopFeedback* m_stopFeedback = nullptr;
     QByteArray m_defaultState;
 };
 

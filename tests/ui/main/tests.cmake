@@ -11,3 +11,7 @@ stepdeck_add_test(tst_portwatcher SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_portwatc
 stepdeck_add_test(tst_connectionsettings SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_connectionsettings.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# STOP feedback at device standstill, refusals that end with their cause (issue 16).
+stepdeck_add_test(tst_stopfeedback SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_stopfeedback.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
