@@ -3,6 +3,7 @@
 #include "CliArguments.h"
 #include "CliOutput.h"
 #include "CliText.h"
+#include "model/NearestName.h"
 #include "model/NumberParsing.h"
 #include "protocols/Registry.h"
 #include <QCommandLineParser>
@@ -129,14 +130,33 @@ QStringList restored(QStringList arguments)
     return arguments;
 }
 
-// One line for a parse failure: unknown options by name, Qt's own text for the rest
-// ("Missing value after '--for'.").
-QString parseError(const QCommandLineParser& parser)
+// The long names of the global options and of `command`'s own: what an unknown option may
+// have meant.
+QStringList knownOptionNames(const CommandSyntax* command)
+{
+    QStringList names;
+    for (const GlobalOption& option : kGlobalOptions)
+        names << namesOf(option).constLast();
+    if (command) {
+        for (const CommandOption& option : command->options)
+            names << QString::fromLatin1(option.name);
+    }
+    return names;
+}
+
+// One line for a parse failure: unknown options by name (with the nearest known one, if
+// any), Qt's own text for the rest ("Missing value after '--for'.").
+QString parseError(const QCommandLineParser& parser, const CommandSyntax* command)
 {
     const QStringList unknown = parser.unknownOptionNames();
     if (!unknown.isEmpty()) {
         const QString& name = unknown.constFirst();
         const QString dashes = name.size() == 1 ? QStringLiteral("-") : QStringLiteral("--");
+        const QString close =
+            name.size() > 1 ? names::nearest(name, knownOptionNames(command)) : QString();
+        if (!close.isEmpty())
+            return CliText::tr("unknown option '%1' (did you mean --%2?)")
+                .arg(dashes + name, close);
         return CliText::tr("unknown option '%1' (try --help)").arg(dashes + name);
     }
     QString text = parser.errorText();
@@ -253,7 +273,7 @@ bool parseCommandPart(const QString& program, const QStringList& rest, const Com
     }
     addGlobalOptions(&parser, own);
     if (!parser.parse(QStringList{program} + rest)) {
-        *error = parseError(parser);
+        *error = parseError(parser, &command);
         return false;
     }
     o->args = restored(parser.positionalArguments());
@@ -276,7 +296,7 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
     global.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsPositionalArguments);
     addGlobalOptions(&global);
     if (!global.parse(hideNegativeNumbers(arguments))) {
-        *error = parseError(global);
+        *error = parseError(global, nullptr);
         return false;
     }
     if (!applyOptions(global, nullptr, &o, error))
@@ -286,7 +306,7 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
         o.command = restored(positional.constFirst());
         const CommandSyntax* command = findCommand(commands, o.command);
         if (!command) {
-            *error = CliText::tr("unknown command '%1' (try --help)").arg(o.command);
+            *error = unknownCommandText(o.command, commands);
             return false;
         }
         if (!parseCommandPart(arguments.value(0), positional.mid(1), *command, &o, error))
@@ -302,6 +322,17 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
     }
     *options = o;
     return true;
+}
+
+QString unknownCommandText(const QString& name, const QList<CommandSyntax>& commands)
+{
+    QStringList known;
+    for (const CommandSyntax& command : commands)
+        known << QString::fromLatin1(command.name);
+    const QString close = names::nearest(name, known);
+    return close.isEmpty()
+               ? CliText::tr("unknown command '%1' (try --help)").arg(name)
+               : CliText::tr("unknown command '%1' (did you mean %2?)").arg(name, close);
 }
 
 QString usageText()

@@ -58,6 +58,9 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
                     CliOptions* options, QString* error);
 
 QString usageText();
+// "unknown command 'stauts' (did you mean status?)": the nearest command name, when one is
+// close (NearestName.h); else a pointer to --help.
+QString unknownCommandText(const QString& name, const QList<CommandSyntax>& commands);
 
 // --- the commands' AXIS=VALUE arguments (CliAxisArguments.cpp) ---
 

@@ -19,16 +19,26 @@ template <typename T, typename Parse>
 Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
                              Parse parse)
 {
+    QStringList names;
+    for (Axis a : axes)
+        names << axisName(a);
+    const auto noSuchAxis = [&names](const QString& name) {
+        return Outcome::usage(CliAxisArguments::tr("this machine has no axis %1 (its axes: %2)")
+                                  .arg(name, names.join(QStringLiteral(", "))));
+    };
     QMap<Axis, T> result;
     for (const QString& arg : args) {
         const int eq = arg.indexOf(QLatin1Char('='));
-        const auto axis = eq > 0 ? axisFromName(QStringView(arg).left(eq)) : std::nullopt;
+        const QString name = eq > 0 ? arg.left(eq).trimmed() : QString();
+        const auto axis = axisFromName(name);
+        // One letter before '=' is meant as an axis ("Q=5"): say there is no such axis.
+        if (!axis && name.size() == 1 && name.at(0).isLetter())
+            return noSuchAxis(name.toUpper());
         if (!axis)
             return Outcome::usage(
                 CliAxisArguments::tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg));
         if (!axes.contains(*axis))
-            return Outcome::usage(
-                CliAxisArguments::tr("this machine has no axis %1").arg(axisName(*axis)));
+            return noSuchAxis(axisName(*axis));
         if (result.contains(*axis))
             return Outcome::usage(CliAxisArguments::tr("axis %1 given twice").arg(axisName(*axis)));
         T value{};

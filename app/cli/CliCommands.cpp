@@ -141,9 +141,7 @@ Outcome runCommand(CliContext& context)
         if (name != QLatin1String(entry.syntax.name))
             continue;
         if (entry.needsModel && !context.model) {
-            return Outcome::usage(
-                CliText::tr("unknown controller model '%1' (known: %2)")
-                    .arg(context.options.model, modelIds().join(QStringLiteral(", "))));
+            return Outcome::usage(unknownModelText(context.options.model));
         }
         if (entry.needsModel) {
             // Builds the stack without opening the port: its capabilities follow the axis map.
@@ -152,7 +150,7 @@ Outcome runCommand(CliContext& context)
         }
         return entry.run(context, context.options.args);
     }
-    return Outcome::usage(CliText::tr("unknown command '%1' (try --help)").arg(name));
+    return Outcome::usage(unknownCommandText(name, commandSyntax()));
 }
 
 Outcome cmdPorts(CliContext& c, QStringList args)

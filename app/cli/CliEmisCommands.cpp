@@ -123,8 +123,7 @@ Outcome cmdGetStored(CliContext& c, QStringList args)
     const ParameterSchema& schema = c.model->schema;
     for (const QString& name : args) {
         if (!schema.find(name))
-            return Outcome::failure(ExitInvalidValue,
-                                    CliEmis::tr("unknown parameter '%1'").arg(name));
+            return Outcome::failure(ExitInvalidValue, schema.unknownNameText(name));
     }
     QVariant value;
     const Outcome result = connectAndCall(c, operation::kReadStoredParameters, {}, &value);

@@ -103,8 +103,7 @@ Outcome cmdGet(CliContext& c, QStringList args)
     for (const QString& name : args) {
         const ParameterSpec* spec = schema.find(name);
         if (!spec)
-            return Outcome::failure(ExitInvalidValue,
-                                    CliText::tr("unknown parameter '%1'").arg(name));
+            return Outcome::failure(ExitInvalidValue, schema.unknownNameText(name));
         (spec->readable ? readable : writeOnly) << name;
     }
     if (!readable.isEmpty()) {

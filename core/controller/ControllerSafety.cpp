@@ -100,7 +100,9 @@ void Controller::handleTransportFailure(const QString& reason)
     m_safetyTimer.stop();
     m_safetyTimeout = nullptr;
     m_closing = m_losing = false;
-    abortHostSide(ErrorKind::LinkDown, tr("link lost: %1").arg(reason));
+    // A port that failed while opening ("no such port: /dev/ttyUSB9") never had a link to lose.
+    const bool opening = m_linkState == LinkState::Connecting;
+    abortHostSide(ErrorKind::LinkDown, opening ? reason : tr("link lost: %1").arg(reason));
     if (wasClosing) {
         completeClose(mayMove, false);
         return;

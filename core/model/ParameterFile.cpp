@@ -55,6 +55,13 @@ ParameterFile::Status ParameterFile::load(const ParameterSchema& schema, const Q
         *error = tr("Cannot open %1: %2").arg(path, file.errorString());
         return Status::FileError;
     }
+    if (text.trimmed().isEmpty()) {
+        // Qt calls this "line 1, column 1: illegal value": say what is wrong in plain words.
+        *error =
+            tr("%1 is empty: a StepDeck parameter file holds a JSON object with the parameters")
+                .arg(QFileInfo(path).fileName());
+        return Status::NotJson;
+    }
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
     if (parseError.error != QJsonParseError::NoError) {

@@ -1,4 +1,5 @@
 #include "ParameterSchema.h"
+#include "NearestName.h"
 #include "NumberParsing.h"
 #include <QJsonValue>
 
@@ -44,6 +45,16 @@ QString ParameterSchema::displayLabel(const QString& name) const
 {
     const ParameterSpec* spec = find(name);
     return spec ? displayLabel(*spec) : name;
+}
+
+QString ParameterSchema::unknownNameText(const QString& name) const
+{
+    QStringList names;
+    for (const ParameterSpec& spec : m_specs)
+        names << spec.name;
+    const QString close = names::nearest(name, names);
+    return close.isEmpty() ? tr("unknown parameter '%1'").arg(name)
+                           : tr("unknown parameter '%1' (did you mean %2?)").arg(name, close);
 }
 
 const ParameterSpec* ParameterSchema::find(const QString& name) const
@@ -138,7 +149,7 @@ QString ParameterSchema::check(const ParameterSet& set, const QList<Axis>& axes,
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
         const ParameterSpec* spec = find(it.key());
         if (!spec)
-            return tr("unknown parameter '%1'").arg(it.key());
+            return unknownNameText(it.key());
         const QString who = byKey ? spec->name : displayLabel(*spec);
         if (!spec->writable)
             return tr("%1 is read-only").arg(who);
@@ -178,7 +189,7 @@ bool ParameterSchema::parseAssignment(const QString& text, const QList<Axis>& ax
     *name = text.left(eq).trimmed();
     const ParameterSpec* spec = find(*name);
     if (!spec) {
-        *error = tr("unknown parameter '%1'").arg(*name);
+        *error = unknownNameText(*name);
         return false;
     }
     const QStringList parts = text.mid(eq + 1).split(QLatin1Char(','));
@@ -281,7 +292,7 @@ bool ParameterSchema::fromJson(const QJsonObject& json, const QString& modelId,
     for (auto it = params.constBegin(); it != params.constEnd(); ++it) {
         const ParameterSpec* spec = find(it.key());
         if (!spec) {
-            *error = tr("unknown parameter '%1'").arg(it.key());
+            *error = unknownNameText(it.key());
             return false;
         }
         ParameterValue value;

@@ -67,11 +67,21 @@ public:
     const ParameterSpec* find(const QString& name) const;
     // The translated label of the named parameter, or the name itself if the schema has none.
     QString displayLabel(const QString& name) const;
+    // "unknown parameter 'strat-speed' (did you mean start-speed?)": for a key the user typed
+    // or a file holds, with the nearest parameter name when one is close (NearestName.h).
+    QString unknownNameText(const QString& name) const;
     QStringList groups() const;
 
     // Checks type and range of one scalar value; returns an empty string when valid, else a
     // sentence naming the parameter by its translated label, with its range and unit.
     QString validateScalar(const ParameterSpec& spec, const QVariant& value) const;
+    // The same, naming the parameter `who` (the setup page's "Max speed X"): the form and the
+    // files say the same about the same text ("'abc' is not a decimal integer").
+    QString validateScalar(const ParameterSpec& spec, const QVariant& value,
+                           const QString& who) const
+    {
+        return scalarError(who, spec, value);
+    }
     // Checks every entry of a set (unknown names, per-axis shape, type, range, writability).
     // Messages name parameters by their translated label; an unknown one by the key given.
     // (parseAssignment() and fromJson() name the key instead: it is what the user typed or

@@ -1,4 +1,5 @@
 #include "Registry.h"
+#include "model/NearestName.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/emis/EmisModel.h"
 #include "protocols/laser/LaserModel.h"
@@ -38,9 +39,15 @@ QStringList modelIds()
 
 QString unknownModelText(const QString& id)
 {
+    const QString known = modelIds().join(QStringLiteral(", "));
+    const QString close = names::nearest(id, modelIds());
+    if (close.isEmpty())
+        return QCoreApplication::translate("stepdeck::ControllerSession",
+                                           "unknown controller model '%1' (known: %2)")
+            .arg(id, known);
     return QCoreApplication::translate("stepdeck::ControllerSession",
-                                       "unknown controller model '%1' (known: %2)")
-        .arg(id, modelIds().join(QStringLiteral(", ")));
+                                       "unknown controller model '%1' (did you mean %2? known: %3)")
+        .arg(id, close, known);
 }
 
 } // namespace stepdeck

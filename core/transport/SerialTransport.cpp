@@ -250,7 +250,7 @@ QString SerialTransport::reasonFor(QSerialPort::SerialPortError error) const
 {
     switch (error) {
     case QSerialPort::DeviceNotFoundError:
-        return tr("serial port %1 not found").arg(m_portName);
+        return tr("no such port: %1").arg(m_portName);
     case QSerialPort::PermissionError:
         // Access denied (names the group to join) or locked by another program.
         return SerialPortAccess::probe(m_portName).deniedText();

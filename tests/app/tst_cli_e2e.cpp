@@ -45,6 +45,8 @@ private Q_SLOTS:
     void usageErrors_exitTwoWithOneLine_data();
     void usageErrors_exitTwoWithOneLine();
     void port_missing_failsWithLinkDown();
+    void unknownNames_suggestTheNearest_data();
+    void unknownNames_suggestTheNearest();
     void port_silentDevice_failsWithTimeoutNamingPort();
     void help_documentsExitCodes();
 
@@ -462,10 +464,38 @@ void TestCliEndToEnd::usageErrors_exitTwoWithOneLine()
 
 void TestCliEndToEnd::port_missing_failsWithLinkDown()
 {
+    // A path that does not exist says so: there never was a link to lose (issue 16).
     const Run run = cli({"--port", "/dev/stepdeck-no-such-port", "status"});
     QCOMPARE(run.exitCode, 6);
+    QCOMPARE(run.err, QByteArray("stepdeck-cli: no such port: /dev/stepdeck-no-such-port\n"));
+}
+
+void TestCliEndToEnd::unknownNames_suggestTheNearest_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("line");
+    QTest::newRow("command") << QStringList{"stauts"} << 2
+                             << "unknown command 'stauts' (did you mean status?)";
+    QTest::newRow("axis") << QStringList{"move", "X=100", "Q=5"} << 2
+                          << "move: this machine has no axis Q (its axes: X, Y, Z)";
+    QTest::newRow("model") << QStringList{"--model", "nanotek", "status"} << 2
+                           << "unknown controller model 'nanotek' (did you mean nanotec?";
+    QTest::newRow("parameter to set") << QStringList{"set", "strat-speed=100"} << 7
+                                      << "unknown parameter 'strat-speed' (did you mean "
+                                         "start-speed?)";
+    QTest::newRow("parameter to get") << QStringList{"get", "max-sped"} << 7
+                                      << "unknown parameter 'max-sped' (did you mean max-speed?)";
+}
+
+void TestCliEndToEnd::unknownNames_suggestTheNearest()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, line);
+    const Run run = cli(QStringList{"--port", m_pty} + args);
+    QTEST(run.exitCode, "exitCode");
     QCOMPARE(run.err.count('\n'), 1);
-    QVERIFY2(run.err.contains("/dev/stepdeck-no-such-port"), run.err.constData());
+    QVERIFY2(run.err.startsWith("stepdeck-cli: " + line.toUtf8()), run.err.constData());
 }
 
 void TestCliEndToEnd::port_silentDevice_failsWithTimeoutNamingPort()

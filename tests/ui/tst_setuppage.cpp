@@ -49,6 +49,9 @@ private Q_SLOTS:
     void writeAll_afterFullWrite_sendsEveryParameterAgain();
     void loadAndWrite_writesTheWholeFile();
     void nothingToWrite_saysWhy();
+    void writeAndVerify_writeOnly_saysNothingVerified();
+    void invalid_formAndFileSayTheSame();
+    void invalid_everyReasonListed_messageStaysOneLine();
 
 private:
     ui::SetupPage* page() const { return m_f->window->setupPage(); }
@@ -383,6 +386,74 @@ void TestSetupPage::nothingToWrite_saysWhy()
     QVERIFY(!page()->write(false));
     QVERIFY2(page()->messageText().contains(QStringLiteral("written or read in this session")),
              qPrintable(page()->messageText()));
+}
+
+void TestSetupPage::writeAndVerify_writeOnly_saysNothingVerified()
+{
+    // Issue 16: E-LAB cannot read back; "Write & verify" must not read like a verified write.
+    type(page()->field(QStringLiteral("drive-power")), QStringLiteral("40"));
+    const qsizetype start = m_f->deviceMark();
+    QVERIFY(writeAndWait(true));
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Written: ")),
+             qPrintable(page()->messageText()));
+    QVERIFY2(page()->messageText().contains(QStringLiteral("Nothing could be verified")),
+             qPrintable(page()->messageText()));
+    QVERIFY(!page()->messageText().contains(QStringLiteral("verified by")));
+    QVERIFY(m_f->deviceBytes().mid(start).contains(QByteArray("\x02"
+                                                              "28"))); // it was written
+}
+
+void TestSetupPage::invalid_formAndFileSayTheSame()
+{
+    // Issue 16: the form said "out of range" for "abc" where a file said "not a decimal integer".
+    ui::ParameterField* field = page()->field(QStringLiteral("drive-power"));
+    type(field, QStringLiteral("abc"));
+    QVERIFY2(field->error().contains(QStringLiteral("'abc' is not a decimal integer")),
+             qPrintable(field->error()));
+    QVERIFY(!field->error().contains(QStringLiteral("out of range")));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("abc.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format":"stepdeck-parameters","version":1,"model":"elab",
+                  "parameters":{"drive-power":"abc"}})");
+    file.close();
+    ParameterSet loaded;
+    QString error;
+    QVERIFY(!page()->readFile(path, &loaded, &error));
+    // The same words after the name (the form names the field, the file its key).
+    const QString reason = field->error().section(QStringLiteral(": "), 1, -1);
+    QVERIFY2(error.endsWith(reason), qPrintable(error + QStringLiteral(" / ") + reason));
+    // And a number outside the range is "out of range" in both.
+    type(field, QStringLiteral("101"));
+    QVERIFY2(field->error().contains(QStringLiteral("'101' is out of range")),
+             qPrintable(field->error()));
+}
+
+void TestSetupPage::invalid_everyReasonListed_messageStaysOneLine()
+{
+    QWidget* line = page()->findChild<QWidget*>(QStringLiteral("setupMessage"));
+    QVERIFY(line);
+    const int height = line->sizeHint().height();
+    QStringList names;
+    const QStringList speeds{"start-speed", "max-speed", "acceleration", "feed-speed"};
+    for (const QString& name : speeds) {
+        for (Axis a : {Axis::X, Axis::Y}) {
+            ui::ParameterField* field = page()->field(name, a);
+            type(field, a == Axis::X ? QStringLiteral("abc") : QStringLiteral("99999999"));
+            names << field->displayName();
+        }
+    }
+    const QString text = page()->messageText();
+    QVERIFY2(text.startsWith(QStringLiteral("Invalid values cannot be written (8): ")),
+             qPrintable(text));
+    for (const QString& name : names) // none cut off after the third
+        QVERIFY2(text.contains(name + QStringLiteral(": ")), qPrintable(name));
+    QCOMPARE(line->toolTip().count(QLatin1Char('\n')), 8); // one reason per line
+    // One line high, whatever it says: the form above it does not move.
+    QCOMPARE(line->sizeHint().height(), height);
+    QCOMPARE(line->minimumSizeHint().height(), height);
+    QVERIFY(!page()->write(false));
 }
 
 QTEST_MAIN(TestSetupPage)

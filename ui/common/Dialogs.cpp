@@ -72,8 +72,22 @@ QString lastFolder(const QString& key)
     if (folder.isEmpty())
         folder = existingFolder(kAnyFolder); // a dialog used for the first time
     if (folder.isEmpty())
-        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        folder = defaultFolder();
     return folder;
+}
+
+QString defaultFolder()
+{
+    // Documents need not exist (a fresh account, a machine set up without a desktop): the
+    // dialog would open somewhere else and a save there fail. Create it; where that is not
+    // allowed, the home folder, and as a last resort the temporary one.
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (!documents.isEmpty() && QDir().mkpath(documents) && QFileInfo(documents).isWritable())
+        return documents;
+    const QFileInfo home(QDir::homePath());
+    if (home.isDir() && home.isWritable())
+        return home.absoluteFilePath();
+    return QDir::tempPath();
 }
 
 void rememberFolder(const QString& key, const QString& folder)

@@ -23,13 +23,16 @@ void showForPart(QDialog* dialog, QWidget* part);
 // A non-native, non-modal file dialog. done(path) runs when a file was chosen (not on
 // cancel). Every file dialog goes through these (issue 11: they remember the last folder):
 // the folder is remembered per key (QSettings "dialogs/<key>/folder"); a key used for the
-// first time starts in the folder any file dialog used last, else in Documents.
+// first time starts in the folder any file dialog used last, else in defaultFolder().
 QFileDialog* saveFile(QWidget* part, const QString& key, const QString& title,
                       const QString& defaultName, const QString& filter,
                       std::function<void(const QString&)> done);
 QFileDialog* openFile(QWidget* part, const QString& key, const QString& title,
                       const QString& filter, std::function<void(const QString&)> done);
 QString lastFolder(const QString& key);
+// Where a dialog starts without a remembered folder: Documents, created if missing (issue 16);
+// the home folder where that cannot be done; else the temporary folder. Always exists.
+QString defaultFolder();
 void rememberFolder(const QString& key, const QString& folder);
 
 // A non-modal message box; done(button) runs with the button chosen (Esc: the escape

@@ -11,10 +11,8 @@ namespace stepdeck::ui {
 JogController::JogController(MachineContext* context, QObject* parent)
     : QObject(parent), m_context(context), m_targetJog(new TargetJogger(context->session(), this))
 {
-    connect(m_targetJog, &TargetJogger::refused, this, [this](const QString& reason) {
-        m_lastRefusal = reason;
-        Q_EMIT refused(reason);
-    });
+    connect(m_targetJog, &TargetJogger::refused, this,
+            [this](const QString& reason) { noteRefusal(reason, RefusalCause::Other); });
     m_renew.setInterval(kRenewMs);
     connect(&m_renew, &QTimer::timeout, this, [this] { update(true); });
     connect(context, &MachineContext::modelChanged, this, [this] {
@@ -23,13 +21,15 @@ JogController::JogController(MachineContext* context, QObject* parent)
     });
     ControllerSession* session = context->session();
     connect(session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
-        m_lastRefusal = reason;
-        Q_EMIT refused(reason);
+        // The core refuses for the same reason the status shows (emergency stop), or its own.
+        noteRefusal(reason, m_context->status().panic ? RefusalCause::Panic : RefusalCause::Other);
     });
     connect(session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)
             releaseAll();
+        checkRefusalCause();
     });
+    connect(session, &ControllerSession::statusChanged, this, &JogController::checkRefusalCause);
     connect(context, &MachineContext::panicTriggered, this, &JogController::releaseAll);
     connect(qGuiApp, &QGuiApplication::applicationStateChanged, this,
             [this](Qt::ApplicationState state) {
@@ -127,6 +127,28 @@ QString JogController::refusal() const
     return {};
 }
 
+void JogController::noteRefusal(const QString& reason, RefusalCause cause)
+{
+    m_lastRefusal = reason;
+    m_refusalCause = cause;
+    Q_EMIT refused(reason);
+}
+
+void JogController::checkRefusalCause()
+{
+    // A refusal stays on screen while its cause holds, and not after (issue 16): "emergency
+    // stop is active" ends with the emergency stop, "not connected" with the new link.
+    // Other refusals (a limit switch, a soft limit) end when jogging works again or expire.
+    const bool ended = (m_refusalCause == RefusalCause::Panic && m_context->isConnected() &&
+                        !m_context->status().panic) ||
+                       (m_refusalCause == RefusalCause::NotConnected && m_context->isConnected());
+    if (!ended)
+        return;
+    m_refusalCause = RefusalCause::None;
+    m_lastRefusal.clear();
+    Q_EMIT refusalEnded();
+}
+
 AxisVelocities JogController::provenTargets()
 {
     // Focus loss stops jogging: no StepDeck window active, no source counts as held.
@@ -200,13 +222,13 @@ void JogController::updateOnce(bool renewal)
         // Not sent at all; the operator sees the reason next to the pad.
         if (m_active)
             releaseAll();
-        if (why != m_lastRefusal) {
-            m_lastRefusal = why;
-            Q_EMIT refused(why);
-        }
+        if (why != m_lastRefusal)
+            noteRefusal(why, m_context->isConnected() ? RefusalCause::Panic
+                                                      : RefusalCause::NotConnected);
         return;
     }
     m_lastRefusal.clear();
+    m_refusalCause = RefusalCause::None;
     // Axes no longer deflected get an explicit zero so they ramp down.
     AxisVelocities full;
     for (Axis axis : m_context->axes())

@@ -49,6 +49,9 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void refused(const QString& reason);
+    // The cause of the last refusal has ended (emergency stop released, link back): whatever
+    // shows it is to be cleared.
+    void refusalEnded();
     void targetsChanged(const stepdeck::AxisVelocities& targets);
 
 private:
@@ -60,6 +63,9 @@ private:
     void stopSending();
     void loadSettings();
     QString refusal() const;
+    enum class RefusalCause { None, NotConnected, Panic, Other };
+    void noteRefusal(const QString& reason, RefusalCause cause);
+    void checkRefusalCause();
 
     MachineContext* m_context;
     QList<QPointer<JogInputSource>> m_sources;
@@ -72,6 +78,7 @@ private:
     bool m_updating = false;
     bool m_updateAgain = false;
     QString m_lastRefusal;
+    RefusalCause m_refusalCause = RefusalCause::None;
     QTimer m_renew;
 };
 

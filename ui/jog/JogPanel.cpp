@@ -78,6 +78,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
             source->setResponse(r);
     });
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
+    connect(m_jog, &JogController::refusalEnded, m_refusal, &QLabel::clear);
     connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
     connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);
     // Jogging needs a connection: the pads and step buttons say so by being disabled.

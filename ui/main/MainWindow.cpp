@@ -19,6 +19,7 @@
 #include "main/SafetyKeyFilter.h"
 #include "main/ScreenBound.h"
 #include "main/StatusMessages.h"
+#include "main/StopFeedback.h"
 #include "main/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -101,6 +102,9 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
         if (!t.isEmpty())
             m_messages->clear(Owner::Jog); // jogging works again
     });
+    // A refusal whose cause has ended (the emergency stop was released) is no longer true.
+    connect(m_jog, &JogController::refusalEnded, this, [this] { m_messages->clear(Owner::Jog); });
+    m_stopFeedback = new StopFeedback(m_context, m_messages, this);
     connect(session, &ControllerSession::statusChanged, this, [this](const MachineStatus& s) {
         if (!s.panic)
             m_messages->clear(Owner::Safety);
@@ -384,16 +388,15 @@ QDockWidget* MainWindow::addPage(QWidget* page, const QString& title, const QStr
 
 void MainWindow::stopAll()
 {
+    const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
     m_reference->runner()->cancel(tr("Referencing stopped."));
     if (!m_context->session()->isCreated()) {
         showError(tr("Stop: not connected"));
         return;
     }
-    m_context->stop();
-    // Sent, not confirmed: what the device does shows in the banner and the status.
-    m_messages->show(StatusMessages::Owner::Safety, tr("Stop sent"), StatusMessages::Severity::Info,
-                     3000);
+    // Sent, not confirmed: "stopped" follows only once the controller reports standstill.
+    m_stopFeedback->stopSent(m_context->session()->stop(), moving);
 }
 
 void MainWindow::panicAll()

@@ -29,6 +29,7 @@ class ReferencePanel;
 class SafetyBar;
 class SafetyKeyFilter;
 class StatusMessages;
+class StopFeedback;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -138,6 +139,7 @@ private:
     StatusMessages* m_messages;
     MessageLine* m_messageLine;
     MessageLog* m_log = nullptr;
+    StopFeedback* m_stopFeedback = nullptr;
     QByteArray m_defaultState;
 };
 

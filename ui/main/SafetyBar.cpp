@@ -33,7 +33,7 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
     setObjectName(QStringLiteral("safetyBar"));
     m_stop->setObjectName(QStringLiteral("stopButton"));
     m_panic->setObjectName(QStringLiteral("panicButton"));
-    m_reference->setText(tr("Reference all\u2026"));
+    m_reference->setText(tr("Reference all")); // it runs at once: no "…" (issue 16)
     for (QPushButton* b : {m_stop, m_panic}) {
         b->setFocusPolicy(Qt::NoFocus); // never steal focus from what the operator typed in
         b->setMinimumSize(140, 48);

@@ -3,6 +3,7 @@
 #include "main/MachineContext.h"
 #include <QDoubleValidator>
 #include <QGridLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -36,7 +37,25 @@ GoToWidget::GoToWidget(MachineContext* context, QWidget* parent)
     connect(session, &ControllerSession::statusChanged, this, &GoToWidget::refresh);
     connect(session, &ControllerSession::linkStateChanged, this, &GoToWidget::refresh);
     connect(session, &ControllerSession::requestFinished, this, &GoToWidget::onResult);
+    connect(session, &ControllerSession::statusChanged, this, &GoToWidget::followMove);
     rebuild();
+}
+
+bool GoToWidget::eventFilter(QObject* watched, QEvent* event)
+{
+    // Enter in a target field is the Go button (issue 16), with the button's checks: nothing
+    // moves while the button could not be pressed (its reason is on show then).
+    if (event->type() == QEvent::KeyPress && watched->parent() == m_fields) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+            if (m_go->isEnabled())
+                goToTargets();
+            else
+                refresh();
+            return true;
+        }
+    }
+    return QGroupBox::eventFilter(watched, event);
 }
 
 QString GoToWidget::messageText() const
@@ -55,6 +74,7 @@ void GoToWidget::rebuild()
     for (Axis axis : m_context->axes()) {
         auto* edit = new QLineEdit(m_fields);
         edit->setValidator(new QDoubleValidator(edit));
+        edit->installEventFilter(this);
         edit->setAlignment(Qt::AlignRight);
         edit->setPlaceholderText(m_context->unitName(axis));
         edit->setToolTip(tr("Work position of %1 in %2; empty: %1 stays")
@@ -147,6 +167,8 @@ void GoToWidget::send(const AxisVector& machineTargets, const QString& what)
     }
     m_showingReason = false;
     m_pending = m_context->session()->moveAbsolute(machineTargets);
+    m_following.clear();
+    m_sentAxes = machineTargets.keys();
     m_message->setStyleSheet(QString());
     m_message->setText(tr("Moving to %1\u2026").arg(what));
     refresh();
@@ -161,10 +183,36 @@ void GoToWidget::onResult(const CommandResult& result)
     if (!result.ok()) {
         m_message->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
         m_message->setText(tr("Not moved: %1").arg(result.message));
+    } else if (m_context->capabilities().reportsArrival) {
+        // The request ended with the axes' own report of arrival.
+        m_message->setText(tr("Target reached: the controller reported the arrival."));
     } else {
         m_message->setText(tr("Move accepted by the controller."));
+        m_following = m_sentAxes; // true until the move ends (followMove)
+        followMove(m_context->status());
     }
     refresh();
+}
+
+void GoToWidget::followMove(const MachineStatus& status)
+{
+    if (m_following.isEmpty())
+        return;
+    if (!m_context->isConnected()) {
+        m_following.clear();
+        return;
+    }
+    // Ended only by the controller's word: every axis of the move reported standing still.
+    if (status.busy || status.motionUnconfirmed)
+        return;
+    for (Axis axis : std::as_const(m_following)) {
+        const AxisStatus a = status.axes.value(axis);
+        if (a.moving || a.motionUnknown)
+            return;
+    }
+    m_following.clear();
+    m_message->setStyleSheet(QString());
+    m_message->setText(tr("The move has ended: the controller reports the axes at standstill."));
 }
 
 } // namespace stepdeck::ui

@@ -32,8 +32,13 @@ public Q_SLOTS:
     void goToTargets();
     void goToWorkZero();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void rebuild();
+    // After "Move accepted": the message is replaced once the move's axes stand still.
+    void followMove(const MachineStatus& status);
     void refresh();
     void onResult(const CommandResult& result);
     void send(const AxisVector& machineTargets, const QString& what);
@@ -45,6 +50,8 @@ private:
     QPushButton* m_zero;
     ElidedLabel* m_message;
     RequestId m_pending = 0;
+    QList<Axis> m_sentAxes;       // the axes of the move in flight
+    QList<Axis> m_following;      // an accepted move whose end is awaited
     bool m_showingReason = false; // m_message holds refusal(), replaced when it changes
 };
 

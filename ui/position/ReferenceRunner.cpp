@@ -63,15 +63,32 @@ void ReferenceRunner::startStage()
     m_accepted = false;
     m_sawMotion = false;
     m_sawUnreferenced = false;
+    m_phase = Phase::Sent;
     QStringList names;
     for (Axis a : currentAxes())
         names << axisName(a);
-    Q_EMIT progress(m_current, int(m_stages.size()),
-                    tr("Referencing %1 (stage %2 of %3)\u2026")
-                        .arg(names.join(QStringLiteral(", ")))
-                        .arg(m_current + 1)
-                        .arg(m_stages.size()));
+    m_stageText = tr("Referencing %1 (stage %2 of %3)\u2026")
+                      .arg(names.join(QStringLiteral(", ")))
+                      .arg(m_current + 1)
+                      .arg(m_stages.size());
+    emitProgress();
     m_request = m_context->session()->reference(m_stages.at(m_current));
+}
+
+void ReferenceRunner::reachPhase(Phase phase)
+{
+    if (phase <= m_phase)
+        return;
+    m_phase = phase;
+    emitProgress();
+}
+
+void ReferenceRunner::emitProgress()
+{
+    // Stages done plus the steps of this stage the controller confirmed (the request
+    // accepted, its motion seen): known steps of the run, no guess of how far the axis is.
+    Q_EMIT progress(m_current * kPhases + int(m_phase), int(m_stages.size()) * kPhases,
+                    m_stageText);
 }
 
 void ReferenceRunner::onResult(const CommandResult& result)
@@ -84,6 +101,7 @@ void ReferenceRunner::onResult(const CommandResult& result)
     }
     m_accepted = true;
     m_acceptedAt.start();
+    reachPhase(Phase::Accepted);
     // Models that report arrival (laser axes) finish the request only when the run is over:
     // the status published before this result is the evidence, and no poll follows.
     if (m_context->capabilities().reportsArrival)
@@ -93,7 +111,7 @@ void ReferenceRunner::onResult(const CommandResult& result)
 
 void ReferenceRunner::onStatus(const MachineStatus& status)
 {
-    if (!isRunning() || !m_accepted)
+    if (!isRunning())
         return;
     bool allReferenced = true;
     bool moving = status.busy;
@@ -102,6 +120,10 @@ void ReferenceRunner::onStatus(const MachineStatus& status)
         allReferenced = allReferenced && axis.referenced;
         moving = moving || axis.moving;
     }
+    if (moving)
+        reachPhase(Phase::Moving); // also before the request's answer (laser axes)
+    if (!m_accepted)
+        return;
     m_sawMotion = m_sawMotion || moving;
     m_sawUnreferenced = m_sawUnreferenced || !allReferenced;
     // A status from before the run may still say "referenced": require evidence of the run.
@@ -109,7 +131,8 @@ void ReferenceRunner::onStatus(const MachineStatus& status)
         ++m_current;
         if (m_current >= m_stages.size()) {
             m_current = -1;
-            Q_EMIT progress(int(m_stages.size()), int(m_stages.size()), tr("Referenced."));
+            Q_EMIT progress(int(m_stages.size()) * kPhases, int(m_stages.size()) * kPhases,
+                            tr("Referenced."));
             Q_EMIT finished(true, tr("All selected axes are referenced."));
             return;
         }

@@ -31,11 +31,19 @@ public:
     static QList<Stage> plan(const QMap<Axis, int>& directions, const QMap<Axis, int>& order);
 
 Q_SIGNALS:
-    void progress(int stage, int stages, const QString& text);
+    // done of total steps: each stage counts kPhases (sent, accepted by the controller, its
+    // motion reported, referenced), so the bar moves during a stage too (issue 16).
+    void progress(int done, int total, const QString& text);
     void finished(bool ok, const QString& message);
 
+public:
+    static constexpr int kPhases = 3;
+
 private:
+    enum class Phase { Sent = 0, Accepted = 1, Moving = 2 };
     void startStage();
+    void reachPhase(Phase phase);
+    void emitProgress();
     void onResult(const CommandResult& result);
     void onStatus(const MachineStatus& status);
     void fail(const QString& message);
@@ -48,6 +56,8 @@ private:
     bool m_sawMotion = false;
     bool m_sawUnreferenced = false;
     QElapsedTimer m_acceptedAt;
+    Phase m_phase = Phase::Sent;
+    QString m_stageText;
 };
 
 } // namespace stepdeck::ui

@@ -154,16 +154,9 @@ QString ParameterField::error() const
     const QString name = displayName();
     if (m_line && m_line->text().trimmed().isEmpty())
         return tr("%1: a value is required").arg(name);
-    if (m_schema.validateScalar(m_spec, rawValue()).isEmpty())
-        return {};
-    if (m_spec.type == ParameterType::Integer)
-        return tr("%1: '%2' is out of range (allowed: %3 to %4 %5)")
-            .arg(name, rawValue().toString())
-            .arg(m_spec.minimum)
-            .arg(m_spec.maximum)
-            .arg(ParameterSchema::displayText(m_spec.unit))
-            .trimmed();
-    return tr("%1: '%2' is not allowed").arg(name, rawValue().toString());
+    // The schema's words, as for a file or the CLI: "not a decimal integer" for "abc", "out
+    // of range" only for a number outside the range.
+    return m_schema.validateScalar(m_spec, rawValue(), name);
 }
 
 void ParameterField::setBaseline(const QVariant& value)

@@ -2,9 +2,11 @@
 #include "common/Dialogs.h"
 #include "main/MachineContext.h"
 #include "setup/ParameterField.h"
+#include "setup/SetupMessageLine.h"
 #include "setup/StoredParametersBar.h"
 #include "setup/WritePlan.h"
 #include "setup/WritePreview.h"
+#include "setup/WriteResultText.h"
 #include "setup/WriteWarnings.h"
 #include <QCoreApplication>
 #include <QGridLayout>
@@ -21,7 +23,7 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
       m_read(new QPushButton(tr("Read"), this)), m_write(new QPushButton(tr("Write"), this)),
       m_writeVerify(new QPushButton(tr("Write && verify"), this)),
       m_writeAll(new QPushButton(tr("Write all"), this)), m_info(new QLabel(this)),
-      m_message(new QLabel(this))
+      m_message(new SetupMessageLine(this))
 {
     auto* defaults = new QPushButton(tr("Defaults"), this);
     auto* save = new QPushButton(tr("Save to file\u2026"), this);
@@ -40,7 +42,6 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     bar->addWidget(loadButton);
     m_info->setWordWrap(true);
     m_info->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
-    m_message->setWordWrap(true);
     m_message->setObjectName(QStringLiteral("setupMessage"));
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
@@ -190,7 +191,15 @@ WritePreview* SetupPage::openPreview() const
 
 QString SetupPage::messageText() const
 {
-    return m_message->text();
+    return m_message->fullText();
+}
+
+QString SetupPage::invalidText(const QStringList& errors)
+{
+    // One line (the page and the status bar show one line); every reason, none dropped.
+    return tr("Invalid values cannot be written (%1): %2")
+        .arg(errors.size())
+        .arg(errors.join(QStringLiteral("; ")));
 }
 
 QStringList SetupPage::fieldErrors() const
@@ -248,8 +257,7 @@ void SetupPage::refreshButtons()
     }
     m_read->setEnabled(connected);
     if (!errors.isEmpty())
-        setMessage(tr("Invalid values cannot be written:\n%1").arg(errors.join(QLatin1Char('\n'))),
-                   true);
+        setMessage(invalidText(errors), true, errors);
     else if (m_message->property("invalidShown").toBool())
         setMessage(QString(), false);
     m_message->setProperty("invalidShown", !errors.isEmpty());
@@ -269,8 +277,7 @@ bool SetupPage::writePlanned(int scope, bool verify, bool confirm)
 {
     const QStringList errors = fieldErrors();
     if (!errors.isEmpty()) {
-        setMessage(tr("Invalid values cannot be written:\n%1").arg(errors.join(QLatin1Char('\n'))),
-                   true);
+        setMessage(invalidText(errors), true, errors);
         return false;
     }
     const WritePlan plan = WritePlan::build(m_fields, WritePlan::Scope(scope));
@@ -312,6 +319,7 @@ bool SetupPage::writeSet(const ParameterSet& set, bool verify, bool confirm)
 void SetupPage::send(const ParameterSet& set, bool verify)
 {
     m_pendingSet = set;
+    m_pendingVerify = verify;
     m_pendingWrite = m_context->writeParameters(set, verify);
     setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
                       : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
@@ -339,12 +347,7 @@ void SetupPage::onResult(const CommandResult& result)
         m_pendingWrite = 0;
         if (result.ok()) {
             // The context now knows the values (its baselines follow, applyKnown()).
-            QStringList labels;
-            for (const QString& name : m_pendingSet.keys()) {
-                const ParameterSpec* spec = m_schema.find(name);
-                labels << (spec ? ParameterSchema::displayText(spec->label) : name);
-            }
-            setMessage(tr("Written: %1.").arg(labels.join(QStringLiteral(", "))), false);
+            setMessage(WriteResultText::success(m_schema, m_pendingSet, m_pendingVerify), false);
         } else {
             setMessage(tr("Write failed: %1").arg(result.message), true);
         }
@@ -398,9 +401,9 @@ void SetupPage::resetToDefaults()
     refreshButtons();
 }
 
-void SetupPage::setMessage(const QString& text, bool error)
+void SetupPage::setMessage(const QString& text, bool error, const QStringList& details)
 {
-    m_message->setText(text);
+    m_message->setMessage(text, details);
     m_message->setStyleSheet(error ? QStringLiteral("QLabel { color: #c62828; }") : QString());
     if (!text.isEmpty())
         Q_EMIT message(text);

@@ -14,6 +14,7 @@ namespace stepdeck::ui {
 class DiffDialog;
 class MachineContext;
 class ParameterField;
+class SetupMessageLine;
 class WritePreview;
 
 // Setup pages for technicians, generated from the model's ParameterSchema: one group box per
@@ -70,7 +71,8 @@ private:
     QWidget* buildGroup(const QString& group);
     void refreshButtons();
     void onResult(const CommandResult& result);
-    void setMessage(const QString& text, bool error);
+    void setMessage(const QString& text, bool error, const QStringList& details = {});
+    static QString invalidText(const QStringList& errors);
     void applyKnown();          // baselines from what the context knows on the device
     void markReadableUnknown(); // readable values not read (yet): unknown, not defaults
     void showRead(const ParameterSet& set);
@@ -89,11 +91,12 @@ private:
     QPushButton* m_writeAll;
     QPointer<WritePreview> m_preview;
     QLabel* m_info;
-    QLabel* m_message;
+    SetupMessageLine* m_message;
     bool m_anyReadable = false;
     RequestId m_pendingWrite = 0;
     RequestId m_pendingRead = 0;
     ParameterSet m_pendingSet;
+    bool m_pendingVerify = false;
 };
 
 } // namespace stepdeck::ui

@@ -27,6 +27,10 @@ private Q_SLOTS:
     void parse_usageErrors_data();
     void parse_usageErrors();
     void parse_globalValues();
+    void parse_misspelledNames_suggestNearest_data();
+    void parse_misspelledNames_suggestNearest();
+    void axisValues_unknownAxis_namesItAndTheAxes_data();
+    void axisValues_unknownAxis_namesItAndTheAxes();
     void axisValues_decimalOnly_data();
     void axisValues_decimalOnly();
 };
@@ -147,7 +151,9 @@ void TestCliArguments::parse_usageErrors_data()
         << QStringList{"--axes", "X=abc", "status"} << "--axes: X: 'abc' is not a decimal number";
     QTest::newRow("axes nan") << QStringList{"--axes", "X=nan", "status"} << "--axes: X:";
     QTest::newRow("axes unknown axis")
-        << QStringList{"--axes", "Q=1", "status"} << "expected AXIS=VALUE";
+        << QStringList{"--axes", "Q=1", "status"} << "--axes: this machine has no axis Q";
+    QTest::newRow("axes not an assignment")
+        << QStringList{"--axes", "XY=1", "status"} << "expected AXIS=VALUE";
     QTest::newRow("address and axes")
         << QStringList{"--address", "2", "--axes", "X=1", "status"} << "either --address or --axes";
     QTest::newRow("reset line") << QStringList{"--reset-line", "cts", "reset"}
@@ -190,6 +196,66 @@ void TestCliArguments::parse_globalValues()
             qPrintable(error));
         QVERIFY2(shown.help || shown.version, qPrintable(args.join(' ')));
     }
+}
+
+void TestCliArguments::parse_misspelledNames_suggestNearest_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected"); // the whole message
+
+    QTest::newRow("command, swapped letters")
+        << QStringList{"stauts"} << "unknown command 'stauts' (did you mean status?)";
+    QTest::newRow("command, letter missing")
+        << QStringList{"mve", "X=1"} << "unknown command 'mve' (did you mean move?)";
+    QTest::newRow("command, prefix") << QStringList{"laser", "/dev/ttyS0"}
+                                     << "unknown command 'laser' (did you mean laser-bridge?)";
+    QTest::newRow("command, nothing close")
+        << QStringList{"frobnicate"} << "unknown command 'frobnicate' (try --help)";
+    QTest::newRow("global option before the command")
+        << QStringList{"--modle", "elab", "status"}
+        << "unknown option '--modle' (did you mean --model?)";
+    QTest::newRow("global option after the command")
+        << QStringList{"status", "--josn"} << "unknown option '--josn' (did you mean --json?)";
+    QTest::newRow("the command's own option")
+        << QStringList{"move", "X=1", "--no-wiat"}
+        << "unknown option '--no-wiat' (did you mean --no-wait?)";
+    // Another command's option is not offered: it would be refused just the same.
+    QTest::newRow("option of another command")
+        << QStringList{"status", "--abs"} << "unknown option '--abs' (try --help)";
+}
+
+void TestCliArguments::parse_misspelledNames_suggestNearest()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    CliOptions options;
+    QString error;
+    QVERIFY(!parseArguments(QStringList{"stepdeck-cli"} + args, commandSyntax(), &options, &error));
+    QCOMPARE(error, expected);
+}
+
+void TestCliArguments::axisValues_unknownAxis_namesItAndTheAxes_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("letter that is no axis")
+        << QStringList{"X=100", "Q=5"} << "move: this machine has no axis Q (its axes: X, Y, Z)";
+    QTest::newRow("lower case") << QStringList{"q=5"}
+                                << "move: this machine has no axis Q (its axes: X, Y, Z)";
+    QTest::newRow("axis of another machine")
+        << QStringList{"U=1"} << "move: this machine has no axis U (its axes: X, Y, Z)";
+    QTest::newRow("not an assignment")
+        << QStringList{"speed=5"} << "move: expected AXIS=VALUE (e.g. X=100), got 'speed=5'";
+}
+
+void TestCliArguments::axisValues_unknownAxis_namesItAndTheAxes()
+{
+    QFETCH(QStringList, args);
+    AxisVector steps;
+    const Outcome outcome =
+        parseAxisIntegers(QStringLiteral("move"), args, {Axis::X, Axis::Y, Axis::Z}, &steps);
+    QCOMPARE(outcome.code, int(ExitUsage));
+    QTEST(outcome.message, "expected");
 }
 
 void TestCliArguments::axisValues_decimalOnly_data()

@@ -112,7 +112,10 @@ void TestParameterFile::load_broken_namesTheCause_data()
                             << Status::NotJson << "f.json, line 3, column 4: ";
     QTest::newRow("column counts characters")
         << QByteArray("{\"\xc3\xa4\xc3\xb6\": 1,,}") << Status::NotJson << "line 1, column 11";
-    QTest::newRow("empty") << QByteArray() << Status::NotJson << "f.json, line 1, column 1";
+    QTest::newRow("empty") << QByteArray() << Status::NotJson
+                           << "f.json is empty: a StepDeck parameter file holds a JSON object";
+    QTest::newRow("only blank lines")
+        << QByteArray(" \n\t\r\n") << Status::NotJson << "f.json is empty";
     QTest::newRow("array") << QByteArray("[1, 2]") << Status::NotJson
                            << "is not a parameter file: it holds no JSON object";
     QTest::newRow("other format") << QByteArray(R"({"format":"x"})") << Status::Invalid
@@ -121,6 +124,10 @@ void TestParameterFile::load_broken_namesTheCause_data()
                                   << "f.json: unknown parameter 'warp-speed'";
     QTest::newRow("out of range") << kHead + R"(,"drive-power":101}})" << Status::Invalid
                                   << "drive-power: value '101' is out of range";
+    // The same words as the setup page's field for the same text (issue 16).
+    QTest::newRow("not a number") << kHead + R"(,"drive-power":"abc"}})" << Status::Invalid
+                                  << "drive-power: 'abc' is not a decimal integer (allowed: "
+                                     "0..100 %)";
     QTest::newRow("huge number") << kHead + R"(,"drive-power":1e300}})" << Status::Invalid
                                  << "drive-power";
     QTest::newRow("not an axis") << kHead + R"(,"feed-speed":{"X":5,"W":5}}})" << Status::Invalid

@@ -20,10 +20,19 @@ private Q_SLOTS:
     void init() { QSettings().clear(); }
     void chosenFile_folderRemembered_perKey_andForNewKeys();
     void vanishedFolder_notOffered();
+    void documentsMissing_createdAndOffered();
+    void documentsCannotBeMade_homeOffered();
+
+private:
+    QTemporaryDir m_home;
 };
 
 void TestDialogs::initTestCase()
 {
+    // A home of the test's own: the default folder may be created (issue 16), never in the
+    // home of whoever runs the tests.
+    QVERIFY(m_home.isValid());
+    qputenv("HOME", QFile::encodeName(m_home.path()));
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("StepDeckTest"));
     QCoreApplication::setApplicationName(QStringLiteral("StepDeckDialogsTest"));
@@ -82,6 +91,32 @@ void TestDialogs::vanishedFolder_notOffered()
              QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
     dialogs::rememberFolder(QStringLiteral("charts"), kept.path());
     QCOMPARE(dialogs::lastFolder(QStringLiteral("parameters")), kept.path());
+}
+
+void TestDialogs::documentsMissing_createdAndOffered()
+{
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QVERIFY2(documents.startsWith(m_home.path()), qPrintable(documents));
+    QDir(documents).removeRecursively();
+    QVERIFY(!QDir(documents).exists());
+    // A save dialog opened for the first time starts in Documents, which now exists: the
+    // suggested path (e.g. ~/Documents/elab-parameters.json) can be written.
+    QCOMPARE(dialogs::lastFolder(QStringLiteral("parameters")), documents);
+    QVERIFY(QFileInfo(documents).isDir());
+    QFile file(QDir(documents).filePath(QStringLiteral("elab-parameters.json")));
+    QVERIFY2(file.open(QIODevice::WriteOnly), qPrintable(file.errorString()));
+}
+
+void TestDialogs::documentsCannotBeMade_homeOffered()
+{
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QDir(documents).removeRecursively();
+    QFile blocker(documents); // a file where the folder should be: no folder can be made
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    QCOMPARE(dialogs::lastFolder(QStringLiteral("parameters")),
+             QFileInfo(m_home.path()).absoluteFilePath());
+    QVERIFY(QFile::remove(documents));
 }
 
 QTEST_MAIN(TestDialogs)

@@ -23,3 +23,7 @@ stepdeck_add_test(tst_messageline SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_messagel
 # Issue 16: a window whose layout minimum grows stays on its screen.
 stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbound.cpp
                   LABELS ui LIBS stepdeck_ui)
+# STOP feedback at device standstill, refusals that end with their cause (issue 16).
+stepdeck_add_test(tst_stopfeedback SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_stopfeedback.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

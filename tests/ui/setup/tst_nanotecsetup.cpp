@@ -43,6 +43,7 @@ private Q_SLOTS:
     void silentDrive_failedRead_valuesUnknown();
     void oneFieldEdit_withSilentDrive_previewAndWriteOnlyThatValue();
     void preview_cancelled_sendsNothing();
+    void writeAndVerify_saysWhatWasReadBack();
 
 private:
     ui::SetupPage* page() const { return m_f->window->setupPage(); }
@@ -137,6 +138,26 @@ void TestNanotecSetup::preview_cancelled_sendsNothing()
     QList<QByteArray> frames;
     QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
     QVERIFY(writes(frames).isEmpty());
+}
+
+void TestNanotecSetup::writeAndVerify_saysWhatWasReadBack()
+{
+    // Issue 16: "Write & verify" names what the drives were asked for again and reported back.
+    QLineEdit* edit = current(Axis::Y)->lineEdit();
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("66"));
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));
+    QVERIFY(page()->write(true, false));
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Written")), 10000);
+    const QString label = current(Axis::Y)->spec().label; // English: no translator installed
+    QCOMPARE(page()->messageText(),
+             QStringLiteral("Written and verified by reading back: %1 (Y).").arg(label));
+    // It was read back: the drive received the read of 'i' after the write.
+    QList<QByteArray> frames;
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    const qsizetype written = frames.indexOf(QByteArray("#2i66\r"));
+    QVERIFY2(written >= 0, frames.join(' ').constData());
+    QVERIFY(frames.mid(written).contains(QByteArray("#2Zi\r")));
 }
 
 QTEST_MAIN(TestNanotecSetup)

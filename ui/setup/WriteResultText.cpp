@@ -1,0 +1,43 @@
+#include "WriteResultText.h"
+
+namespace stepdeck::ui {
+
+QString WriteResultText::describe(const ParameterSchema& schema, const ParameterSet& set)
+{
+    QStringList parts;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = schema.find(it.key());
+        const QString label = spec ? ParameterSchema::displayLabel(*spec) : it.key();
+        QStringList axes;
+        for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
+            axes << axisName(a.key());
+        parts << (axes.isEmpty()
+                      ? label
+                      : QStringLiteral("%1 (%2)").arg(label, axes.join(QStringLiteral(", "))));
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
+QString WriteResultText::success(const ParameterSchema& schema, const ParameterSet& set,
+                                 bool verify)
+{
+    if (!verify)
+        return tr("Written: %1.").arg(describe(schema, set));
+    ParameterSet readBack;
+    ParameterSet writeOnly;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = schema.find(it.key());
+        (spec && spec->readable ? readBack : writeOnly).insert(it.key(), it.value());
+    }
+    if (readBack.isEmpty())
+        return tr("Written: %1. Nothing could be verified: this controller cannot read these "
+                  "values back.")
+            .arg(describe(schema, writeOnly));
+    if (writeOnly.isEmpty())
+        return tr("Written and verified by reading back: %1.").arg(describe(schema, readBack));
+    return tr("Written and verified by reading back: %1. Written but not verified (this "
+              "controller cannot read them back): %2.")
+        .arg(describe(schema, readBack), describe(schema, writeOnly));
+}
+
+} // namespace stepdeck::ui
