@@ -131,7 +131,10 @@ void MachineContext::stop()
 void MachineContext::panic()
 {
     m_session->panic();
-    Q_EMIT panicTriggered();
+    // Only a panic the model can send loses positions; EMIS and laser axes refuse it (the
+    // refusal says why), and their positions stay what they were.
+    if (capabilities().panic)
+        Q_EMIT panicTriggered();
 }
 
 void MachineContext::reset()

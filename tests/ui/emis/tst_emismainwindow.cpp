@@ -174,6 +174,8 @@ void TestEmisMainWindow::stop_refusedWithEmergencyStopText()
     QTRY_VERIFY(m_f->window->lastError().contains("emergency stop"));
     m_f->window->panicAll();
     QTRY_VERIFY(m_f->window->lastError().contains("no stop command"));
+    // A refused panic sent nothing: positions are not declared lost by it.
+    QVERIFY(!m_f->window->safetyBar()->positionsLost());
 }
 
 void TestEmisMainWindow::storedValues_storeAndReadBack()
