@@ -2,6 +2,61 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
     <context>
+        <name>LaserAnswerPolicy</name>
+        <message>
+            <source>it may still be moving</source>
+            <translation>sie fährt womöglich noch</translation>
+        </message>
+        <message>
+            <source>its position is unknown</source>
+            <translation>ihre Position ist unbekannt</translation>
+        </message>
+        <message>
+            <source>its position (%1 steps, %2 laser units) is outside the laser's range 0..%3</source>
+            <translation>ihre Position (%1 Schritte, %2 Lasereinheiten) liegt außerhalb des Laserbereichs 0..%3</translation>
+        </message>
+        <message>
+            <source>%1, but %2</source>
+            <translation>%1, aber %2</translation>
+        </message>
+        <message>
+            <source>axis %1 is referenced</source>
+            <translation>Achse %1 ist referenziert</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped at a limit switch before it was referenced</source>
+            <translation>Achse %1 hat vor dem Referenzieren an einem Endschalter angehalten</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped before it was referenced</source>
+            <translation>Achse %1 hat vor dem Referenzieren angehalten</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped at a limit switch</source>
+            <translation>Achse %1 hat an einem Endschalter angehalten</translation>
+        </message>
+        <message>
+            <source>axis %1 did not confirm reaching its target %2 steps: %3</source>
+            <translation>Achse %1 hat das Erreichen ihres Ziels %2 Schritte nicht bestätigt: %3</translation>
+        </message>
+        <message>
+            <source>axis %1 stopped at %2 steps, short of its target %3 (stopped by the operator?)</source>
+            <translation>Achse %1 hat bei %2 Schritten vor ihrem Ziel %3 angehalten (vom Bediener gestoppt?)</translation>
+        </message>
+        <message>
+            <source>axis %1 stands at an active limit switch</source>
+            <translation>Achse %1 steht an einem aktiven Endschalter</translation>
+        </message>
+        <message>
+            <source>the door opened (axis %1)</source>
+            <translation>die Tür wurde geöffnet (Achse %1)</translation>
+        </message>
+        <message>
+            <source>the door closed (axis %1)</source>
+            <translation>die Tür wurde geschlossen (Achse %1)</translation>
+        </message>
+    </context>
+    <context>
         <name>LaserBridgeConfig</name>
         <message>
             <source>--map expects LASER_AXIS=AXIS pairs such as 1=X,2=Y,3=Z, got '%1'</source>
@@ -47,6 +102,10 @@
             <source>the scale must be above 0 and at most %1 steps per laser unit</source>
             <translation>der Maßstab muss über 0 und höchstens %1 Schritte pro Lasereinheit betragen</translation>
         </message>
+        <message>
+            <source>--home: this controller chooses the direction of its reference runs itself; leave --home out</source>
+            <translation>--home: diese Steuerung wählt die Richtung ihrer Referenzfahrten selbst; --home weglassen</translation>
+        </message>
     </context>
     <context>
         <name>Models</name>
@@ -57,6 +116,14 @@
         <message>
             <source>Laser marker motor axes (RS232)</source>
             <translation>Motorachsen eines Markierlasers (RS232)</translation>
+        </message>
+        <message>
+            <source>EMIS SMC-IC4 4-axis controller</source>
+            <translation>EMIS SMC-IC4 4-Achsen-Steuerung</translation>
+        </message>
+        <message>
+            <source>Nanotec SMCI33 / SMCI47-S (RS485 bus)</source>
+            <translation>Nanotec SMCI33 / SMCI47-S (RS485-Bus)</translation>
         </message>
     </context>
     <context>
@@ -236,10 +303,6 @@
         <message>
             <source>joystick</source>
             <translation>Joystick</translation>
-        </message>
-        <message>
-            <source>Operating mode (5.5). Moves, jog and reference runs switch the mode themselves.</source>
-            <translation>Betriebsart (5.5). Fahrten, Tippbetrieb und Referenzfahrten stellen den Modus selbst um.</translation>
         </message>
         <message>
             <source>Motor address</source>
@@ -1001,6 +1064,18 @@
             <source>On: the axes of a vector move arrive together; off: each axis moves at its own speed (IP, 9.12)</source>
             <translation>Ein: die Achsen einer Vektorfahrt kommen gleichzeitig ins Ziel; aus: jede Achse fährt mit ihrer eigenen Geschwindigkeit (IP, 9.12)</translation>
         </message>
+        <message>
+            <source>closed-loop-reference</source>
+            <translation>Regelungs-Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>calibration</source>
+            <translation>Kalibrierfahrt</translation>
+        </message>
+        <message>
+            <source>Operating mode (5.5, 8.1). Moves, jog and reference runs switch the mode themselves; the closed-loop workflow runs calibration and closed-loop-reference and sets the mode of before again afterwards.</source>
+            <translation>Betriebsart (5.5, 8.1). Fahrten, Tippbetrieb und Referenzfahrten stellen den Modus selbst um; die Inbetriebnahme der Regelung fährt Kalibrierfahrt und Regelungs-Referenzfahrt und stellt danach den vorherigen Modus wieder ein.</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -1098,6 +1173,14 @@
             <source>no controller session</source>
             <translation>keine Steuerungssitzung</translation>
         </message>
+        <message>
+            <source>model %1 cannot be built in this program</source>
+            <translation>Modell %1 kann in diesem Programm nicht erzeugt werden</translation>
+        </message>
+        <message>
+            <source>unknown controller model '%1' (did you mean %2? known: %3)</source>
+            <translation>unbekanntes Steuerungsmodell '%1' (meinten Sie %2? bekannt: %3)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ModelPresentation</name>
@@ -1131,6 +1214,10 @@
         <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1 is empty: a StepDeck parameter file holds a JSON object with the parameters</source>
+            <translation>%1 ist leer: Eine StepDeck-Parameterdatei enthält ein JSON-Objekt mit den Parametern</translation>
         </message>
     </context>
     <context>
@@ -1199,6 +1286,10 @@
             <source>%1: '%2' is not a finite number (allowed: %3%4)</source>
             <translation>%1: '%2' ist keine endliche Zahl (erlaubt: %3%4)</translation>
         </message>
+        <message>
+            <source>unknown parameter '%1' (did you mean %2?)</source>
+            <translation>unbekannter Parameter '%1' (meinten Sie %2?)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::PtyEndpoint</name>
@@ -1253,10 +1344,6 @@
             <translation>serielle Schnittstelle %1 ist nicht geöffnet</translation>
         </message>
         <message>
-            <source>serial port %1 not found</source>
-            <translation>serielle Schnittstelle %1 nicht gefunden</translation>
-        </message>
-        <message>
             <source>serial port %1 is already open</source>
             <translation>serielle Schnittstelle %1 ist bereits geöffnet</translation>
         </message>
@@ -1279,6 +1366,10 @@
         <message>
             <source>serial port %1 cannot drive %2: %3</source>
             <translation>serielle Schnittstelle %1 kann %2 nicht schalten: %3</translation>
+        </message>
+        <message>
+            <source>no such port: %1</source>
+            <translation>Schnittstelle existiert nicht: %1</translation>
         </message>
     </context>
     <context>
@@ -1497,24 +1588,24 @@
             <translation>der Bediener hat Achse %1 übernommen</translation>
         </message>
         <message>
-            <source>axis %1 stopped before it was referenced</source>
-            <translation>Achse %1 hat vor dem Referenzieren angehalten</translation>
-        </message>
-        <message>
-            <source>axis %1 stopped at %2 steps, short of its target %3 (stopped by the operator?)</source>
-            <translation>Achse %1 hat bei %2 Schritten vor ihrem Ziel %3 angehalten (vom Bediener gestoppt?)</translation>
-        </message>
-        <message>
-            <source>an unknown position</source>
-            <translation>einer unbekannten Position</translation>
-        </message>
-        <message>
             <source>stop failed: %1</source>
             <translation>Stopp fehlgeschlagen: %1</translation>
         </message>
         <message>
             <source>status after the stop: %1</source>
             <translation>Status nach dem Stopp: %1</translation>
+        </message>
+        <message>
+            <source>not reported to the laser: %1</source>
+            <translation>dem Laser nicht gemeldet: %1</translation>
+        </message>
+        <message>
+            <source>target not reached</source>
+            <translation>Ziel nicht erreicht</translation>
+        </message>
+        <message>
+            <source>the controller's link was lost</source>
+            <translation>die Verbindung zur Steuerung ist verloren</translation>
         </message>
     </context>
     <context>
@@ -2237,10 +2328,6 @@
             <source>system parameters are stored while every axis stands still</source>
             <translation>Systemparameter werden gespeichert, während alle Achsen stillstehen</translation>
         </message>
-        <message>
-            <source>after jogging, the work speed of axis %1 stays at %2 steps/s: its value before is not known (write %3)</source>
-            <translation>nach dem Tippbetrieb bleibt die Arbeitsgeschwindigkeit der Achse %1 bei %2 Schritten/s: ihr Wert davor ist nicht bekannt (%3 schreiben)</translation>
-        </message>
     </context>
     <context>
         <name>stepdeck::emis::EmisLink</name>
@@ -2384,6 +2471,14 @@
         <message>
             <source>not printable ASCII</source>
             <translation>kein druckbares ASCII</translation>
+        </message>
+        <message>
+            <source>no stop command: a button on the reset input (manual 5.8) or the machine's emergency stop stops it; positions are then unknown until referenced</source>
+            <translation>kein Stopp-Befehl: ein Taster am Reset-Eingang (Handbuch 5.8) oder der Not-Halt der Maschine hält sie an; die Positionen sind danach bis zur Referenzfahrt unbekannt</translation>
+        </message>
+        <message>
+            <source>A move only ends when it arrives. A reset (a normally open button on the board's reset input) stops every motor at once and restarts the board with its stored values. StepDeck sees it when a move's arrival does not come (that axis: motion unconfirmed, position unknown) or when the board does not answer while it restarts; either way every axis then counts as not referenced and the outputs as unknown. A reset it could not see leaves the positions it shows: reference the axes after every reset.</source>
+            <translation>Eine Fahrt endet erst, wenn sie ihr Ziel erreicht. Ein Reset (ein Schließer am Reset-Eingang der Steuerung) hält alle Motoren sofort an und startet die Steuerung mit ihren gespeicherten Werten neu. StepDeck bemerkt ihn, wenn die Ankunftsmeldung einer Fahrt ausbleibt (diese Achse: Bewegung unbestätigt, Position unbekannt) oder die Steuerung während des Neustarts nicht antwortet; in beiden Fällen gilt danach jede Achse als nicht referenziert und die Ausgänge als unbekannt. Nach einem Reset, den StepDeck nicht bemerken konnte, bleiben die angezeigten Positionen stehen: nach jedem Reset die Achsen referenzieren.</translation>
         </message>
     </context>
     <context>
@@ -2713,6 +2808,109 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::nanotec::NanotecClosedLoop</name>
+        <message>
+            <source>%1 is already in its %2</source>
+            <translation>%1 ist bereits in seiner %2</translation>
+        </message>
+        <message>
+            <source>direction of the closed-loop reference run must be -1 or 1, not %1</source>
+            <translation>die Richtung der Regelungs-Referenzfahrt muss -1 oder 1 sein, nicht %1</translation>
+        </message>
+        <message>
+            <source>calibration run (!101)</source>
+            <translation>Kalibrierfahrt (!101)</translation>
+        </message>
+        <message>
+            <source>closed-loop reference run (!8)</source>
+            <translation>Regelungs-Referenzfahrt (!8)</translation>
+        </message>
+        <message>
+            <source>motor pole pairs %1: closed loop works with 50 or 100 only (8.6)</source>
+            <translation>Polpaare des Motors %1: die Regelung arbeitet nur mit 50 oder 100 (8.6)</translation>
+        </message>
+        <message>
+            <source>encoder increments %1: closed loop works with 1600 or 2000 only (8.7)</source>
+            <translation>Encoderinkremente %1: die Regelung arbeitet nur mit 1600 oder 2000 (8.7)</translation>
+        </message>
+        <message>
+            <source>encoder revolutions %1: closed loop works with 1 only (8.8)</source>
+            <translation>Encoderumdrehungen %1: die Regelung arbeitet nur mit 1 (8.8)</translation>
+        </message>
+        <message>
+            <source>closed loop not enabled on %1: %2; with wrong motor data the motor can speed up beyond its mechanical limits (manual 8.1)</source>
+            <translation>Regelung an %1 nicht eingeschaltet: %2; mit falschen Motordaten kann der Motor über seine mechanische Belastbarkeit hinaus hochdrehen (Handbuch 8.1)</translation>
+        </message>
+        <message>
+            <source>%1 ignored closed loop on: it needs the calibration run (!101) for this motor and the closed-loop reference run (!8) since it was switched on (manual 8.1)</source>
+            <translation>%1 hat „Regelung ein“ ignoriert: er braucht die Kalibrierfahrt (!101) für diesen Motor und seit dem Einschalten die Regelungs-Referenzfahrt (!8) (Handbuch 8.1)</translation>
+        </message>
+        <message>
+            <source>%1 kept closed loop on</source>
+            <translation>%1 hat die Regelung eingeschaltet gelassen</translation>
+        </message>
+        <message>
+            <source>closed loop is on; switch it off first</source>
+            <translation>die Regelung ist eingeschaltet; zuerst ausschalten</translation>
+        </message>
+        <message>
+            <source>%1 not started on %2: %3</source>
+            <translation>%1 an %2 nicht gestartet: %3</translation>
+        </message>
+        <message>
+            <source>%1 running, %2 s</source>
+            <translation>%1 läuft, %2 s</translation>
+        </message>
+        <message>
+            <source>%1 stopped answering during its %2; %3</source>
+            <translation>%1 antwortet während seiner %2 nicht mehr; %3</translation>
+        </message>
+        <message>
+            <source>%1 of %2 did not end within %3 s; stopped ('S')</source>
+            <translation>%1 von %2 endete nicht innerhalb von %3 s; gestoppt ('S')</translation>
+        </message>
+        <message>
+            <source>%1 was ready again at the first status read after 'A': that the %2 ran is not confirmed</source>
+            <translation>%1 war bei der ersten Statusabfrage nach 'A' schon wieder bereit: dass die %2 gelaufen ist, ist nicht bestätigt</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>no entry in the error memory</source>
+            <translation>kein Eintrag im Fehlerspeicher</translation>
+        </message>
+        <message>
+            <source>is the encoder connected? The drive is not calibrated</source>
+            <translation>ist der Encoder angeschlossen? Der Antrieb ist nicht kalibriert</translation>
+        </message>
+        <message>
+            <source>is the encoder connected? The axis is not referenced and closed loop cannot be switched on</source>
+            <translation>ist der Encoder angeschlossen? Die Achse ist nicht referenziert, und die Regelung kann nicht eingeschaltet werden</translation>
+        </message>
+        <message>
+            <source>%1 of %2 failed: the drive reports a position error (%3); %4. Clear the error with reset-position-error (5.14) before the next run</source>
+            <translation>%1 von %2 fehlgeschlagen: der Antrieb meldet einen Positionsfehler (%3); %4. Den Fehler vor der nächsten Fahrt mit reset-position-error (5.14) zurücksetzen</translation>
+        </message>
+        <message>
+            <source>the drive is not calibrated; run it again</source>
+            <translation>der Antrieb ist nicht kalibriert; die Fahrt wiederholen</translation>
+        </message>
+        <message>
+            <source>the axis is not referenced</source>
+            <translation>die Achse ist nicht referenziert</translation>
+        </message>
+        <message>
+            <source>%1 of %2 ended, but its result was not read back (%3)</source>
+            <translation>%1 von %2 ist beendet, ihr Ergebnis wurde aber nicht zurückgelesen (%3)</translation>
+        </message>
+        <message>
+            <source>%1 of %2 aborted (%3): %4</source>
+            <translation>%1 von %2 abgebrochen (%3): %4</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::nanotec::NanotecController</name>
         <message>
             <source>axis map: address %1 of axis %2 is invalid or used twice (allowed 1..254, one drive per axis)</source>
@@ -2966,6 +3164,21 @@
             <source>%1 reports a position error (encoder deviation above %2); reset it with reset-position-error</source>
             <translation>%1 meldet einen Positionsfehler (Geberabweichung über %2); mit reset-position-error zurücksetzen</translation>
         </message>
+        <message>
+            <source>%1; sent but not read back: %2</source>
+            <translation>%1; gesendet, aber nicht zurückgelesen: %2</translation>
+        </message>
+        <message>
+            <source>stopped</source>
+            <translation>gestoppt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::nanotec::NanotecSimulator</name>
+        <message>
+            <source>--no-encoder: no drive at address %1 (see --drives)</source>
+            <translation>--no-encoder: kein Antrieb mit Adresse %1 (siehe --drives)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::nanotec::Presentation</name>
@@ -3087,6 +3300,237 @@
         <message>
             <source>°C</source>
             <translation>°C</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ClosedLoopPanel</name>
+        <message>
+            <source>Closed loop (manual 8.1)</source>
+            <translation>Regelung (Handbuch 8.1)</translation>
+        </message>
+        <message>
+            <source>1 Check motor data</source>
+            <translation>1 Motordaten prüfen</translation>
+        </message>
+        <message>
+            <source>Read pole pairs, encoder increments and revolutions, the encoder position and whether closed loop is on; nothing moves</source>
+            <translation>Polpaare, Encoderinkremente und -umdrehungen, Encoderposition und den Zustand der Regelung lesen; nichts bewegt sich</translation>
+        </message>
+        <message>
+            <source>2 Calibration run…</source>
+            <translation>2 Kalibrierfahrt…</translation>
+        </message>
+        <message>
+            <source>Mode 101: once for every newly connected motor, also of the same type. The motor turns.</source>
+            <translation>Modus 101: einmal für jeden neu angeschlossenen Motor, auch gleichen Typs. Der Motor dreht sich.</translation>
+        </message>
+        <message>
+            <source>3 Reference run…</source>
+            <translation>3 Referenzfahrt…</translation>
+        </message>
+        <message>
+            <source>Mode 8: after every power-on, before closed loop can be switched on. The motor turns.</source>
+            <translation>Modus 8: nach jedem Einschalten, bevor die Regelung eingeschaltet werden kann. Der Motor dreht sich.</translation>
+        </message>
+        <message>
+            <source>4 Closed loop on…</source>
+            <translation>4 Regelung ein…</translation>
+        </message>
+        <message>
+            <source>Switch closed loop on and read it back; the drive ignores it without the reference run since power-on</source>
+            <translation>Regelung einschalten und zurücklesen; ohne Referenzfahrt seit dem Einschalten ignoriert der Antrieb das</translation>
+        </message>
+        <message>
+            <source>Off</source>
+            <translation>Aus</translation>
+        </message>
+        <message>
+            <source>Switch closed loop off and read it back</source>
+            <translation>Regelung ausschalten und zurücklesen</translation>
+        </message>
+        <message>
+            <source>Reset position error</source>
+            <translation>Positionsfehler zurücksetzen</translation>
+        </message>
+        <message>
+            <source>Clear the drive's position error; its position becomes the encoder's (manual 5.14)</source>
+            <translation>Den Positionsfehler des Antriebs löschen; seine Position wird die des Encoders (Handbuch 5.14)</translation>
+        </message>
+        <message>
+            <source>The drive (axis) to commission</source>
+            <translation>Der Antrieb (die Achse), der in Betrieb genommen wird</translation>
+        </message>
+        <message>
+            <source>+ (d=1)</source>
+            <translation>+ (d=1)</translation>
+        </message>
+        <message>
+            <source>− (d=0)</source>
+            <translation>− (d=0)</translation>
+        </message>
+        <message>
+            <source>Direction of the reference run ('d', manual 6.12)</source>
+            <translation>Richtung der Referenzfahrt ('d', Handbuch 6.12)</translation>
+        </message>
+        <message>
+            <source>Drive:</source>
+            <translation>Antrieb:</translation>
+        </message>
+        <message>
+            <source>not checked in this connection</source>
+            <translation>in dieser Verbindung nicht geprüft</translation>
+        </message>
+        <message>
+            <source>Calibration run</source>
+            <translation>Kalibrierfahrt</translation>
+        </message>
+        <message>
+            <source>The calibration run (mode 101) of axis %1 turns the motor. Let the shaft turn freely; STOP and PANIC end the run at once.
+
+Manual 8.1: a calibration run is needed every time a motor is connected, even one of the same type. Pole pairs, encoder increments and revolutions must match the motor: otherwise closed loop can speed the motor up beyond its mechanical limits.
+
+Start the calibration run now?</source>
+            <translation>Die Kalibrierfahrt (Modus 101) von Achse %1 dreht den Motor. Die Welle muss frei drehen können; STOPP und PANIK beenden die Fahrt sofort.
+
+Handbuch 8.1: Jedes Mal, wenn ein Motor angeschlossen wird, auch einer gleichen Typs, ist eine Kalibrierfahrt nötig. Polpaare, Encoderinkremente und -umdrehungen müssen zum Motor passen, sonst kann die Regelung den Motor über seine mechanische Belastbarkeit hinaus hochdrehen.
+
+Kalibrierfahrt jetzt starten?</translation>
+        </message>
+        <message>
+            <source>Closed-loop reference run</source>
+            <translation>Regelungs-Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>The closed-loop reference run (mode 8) of axis %1 turns the motor in the direction %2 until the encoder's index mark. STOP and PANIC end it at once.
+
+Manual 8.1: closed loop can only be switched on after this run since the drive was switched on.
+
+Start the reference run now?</source>
+            <translation>Die Regelungs-Referenzfahrt (Modus 8) von Achse %1 dreht den Motor in Richtung %2 bis zum Indexstrich des Encoders. STOPP und PANIK beenden sie sofort.
+
+Handbuch 8.1: Die Regelung lässt sich erst einschalten, wenn diese Fahrt seit dem Einschalten des Antriebs gelaufen ist.
+
+Referenzfahrt jetzt starten?</translation>
+        </message>
+        <message>
+            <source>Closed loop on</source>
+            <translation>Regelung ein</translation>
+        </message>
+        <message>
+            <source>ATTENTION (manual 8.1): if pole pairs or encoder data do not match the motor, or this motor was never calibrated on this drive, closed loop can speed the motor up beyond its mechanical limits.
+
+Switch closed loop on for axis %1?</source>
+            <translation>ACHTUNG (Handbuch 8.1): Passen Polpaare oder Encoderdaten nicht zum Motor oder wurde dieser Motor an diesem Antrieb nie kalibriert, kann die Regelung den Motor über seine mechanische Belastbarkeit hinaus hochdrehen.
+
+Regelung für Achse %1 einschalten?</translation>
+        </message>
+        <message>
+            <source>running…</source>
+            <translation>läuft…</translation>
+        </message>
+        <message>
+            <source>done in this connection</source>
+            <translation>in dieser Verbindung erledigt</translation>
+        </message>
+        <message>
+            <source>FAILED: the drive reported an error</source>
+            <translation>FEHLGESCHLAGEN: der Antrieb hat einen Fehler gemeldet</translation>
+        </message>
+        <message>
+            <source>aborted: not complete</source>
+            <translation>abgebrochen: nicht vollständig</translation>
+        </message>
+        <message>
+            <source>not run in this connection (the drive cannot report it)</source>
+            <translation>in dieser Verbindung nicht gelaufen (der Antrieb kann es nicht melden)</translation>
+        </message>
+        <message>
+            <source>ended after %1 s: position %2, encoder %3 (read back)</source>
+            <translation>beendet nach %1 s: Position %2, Encoder %3 (zurückgelesen)</translation>
+        </message>
+        <message>
+            <source>Calibration run done.</source>
+            <translation>Kalibrierfahrt erledigt.</translation>
+        </message>
+        <message>
+            <source>Reference run done: the axis is referenced.</source>
+            <translation>Referenzfahrt erledigt: die Achse ist referenziert.</translation>
+        </message>
+        <message>
+            <source>Closed loop is on (read back).</source>
+            <translation>Regelung ist eingeschaltet (zurückgelesen).</translation>
+        </message>
+        <message>
+            <source>Closed loop is off (read back).</source>
+            <translation>Regelung ist ausgeschaltet (zurückgelesen).</translation>
+        </message>
+        <message>
+            <source>Position error cleared; the position is the encoder's now.</source>
+            <translation>Positionsfehler gelöscht; die Position ist jetzt die des Encoders.</translation>
+        </message>
+        <message>
+            <source>pole pairs %1, encoder %2 increments per %3 revolution(s), step angle %4°; encoder position %5, position %6</source>
+            <translation>Polpaare %1, Encoder %2 Inkremente je %3 Umdrehung(en), Schrittwinkel %4°; Encoderposition %5, Position %6</translation>
+        </message>
+        <message>
+            <source>CANNOT WORK: %1 (%2)</source>
+            <translation>FUNKTIONIERT NICHT: %1 (%2)</translation>
+        </message>
+        <message>
+            <source>unknown: not read in this connection</source>
+            <translation>unbekannt: in dieser Verbindung nicht gelesen</translation>
+        </message>
+        <message>
+            <source>on (read back)</source>
+            <translation>ein (zurückgelesen)</translation>
+        </message>
+        <message>
+            <source>off (read back)</source>
+            <translation>aus (zurückgelesen)</translation>
+        </message>
+        <message>
+            <source>not read yet</source>
+            <translation>noch nicht gelesen</translation>
+        </message>
+        <message>
+            <source>calibration run: %1 s, position %2, encoder %3</source>
+            <translation>Kalibrierfahrt: %1 s, Position %2, Encoder %3</translation>
+        </message>
+        <message>
+            <source>reference run: %1 s, position %2, encoder %3</source>
+            <translation>Referenzfahrt: %1 s, Position %2, Encoder %3</translation>
+        </message>
+        <message>
+            <source>Connect, then check the motor data.</source>
+            <translation>Verbinden, dann die Motordaten prüfen.</translation>
+        </message>
+        <message>
+            <source>Next: 1, check the motor data.</source>
+            <translation>Als Nächstes: 1, die Motordaten prüfen.</translation>
+        </message>
+        <message>
+            <source>Correct the motor data first (Setup, closed loop).</source>
+            <translation>Zuerst die Motordaten korrigieren (Einrichtung, Regelung).</translation>
+        </message>
+        <message>
+            <source>Next: 2, the calibration run again (is the encoder connected?).</source>
+            <translation>Als Nächstes: 2, die Kalibrierfahrt wiederholen (ist der Encoder angeschlossen?).</translation>
+        </message>
+        <message>
+            <source>Next: 2, the calibration run for a newly connected motor; else 3.</source>
+            <translation>Als Nächstes: 2, die Kalibrierfahrt für einen neu angeschlossenen Motor; sonst 3.</translation>
+        </message>
+        <message>
+            <source>Next: 3, the reference run.</source>
+            <translation>Als Nächstes: 3, die Referenzfahrt.</translation>
+        </message>
+        <message>
+            <source>Next: 4, closed loop on.</source>
+            <translation>Als Nächstes: 4, Regelung ein.</translation>
+        </message>
+        <message>
+            <source>Closed loop is on.</source>
+            <translation>Die Regelung ist eingeschaltet.</translation>
         </message>
     </context>
     <context>
@@ -3546,6 +3990,14 @@
             <source>The machine is moving: go to a position once it stands still.</source>
             <translation>Die Maschine bewegt sich: eine Position erst anfahren, wenn sie stillsteht.</translation>
         </message>
+        <message>
+            <source>Target reached: the controller reported the arrival.</source>
+            <translation>Ziel erreicht: Die Steuerung hat die Ankunft gemeldet.</translation>
+        </message>
+        <message>
+            <source>The move has ended: the controller reports the axes at standstill.</source>
+            <translation>Die Fahrt ist beendet: Die Steuerung meldet die Achsen im Stillstand.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>
@@ -3997,6 +4449,18 @@ W1500</translation>
             <source>no</source>
             <translation>nein</translation>
         </message>
+        <message>
+            <source>chosen by the controller</source>
+            <translation>von der Steuerung gewählt</translation>
+        </message>
+        <message>
+            <source>The controller chooses the direction of its reference run itself</source>
+            <translation>Die Steuerung wählt die Richtung ihrer Referenzfahrt selbst</translation>
+        </message>
+        <message>
+            <source>At %1: %2</source>
+            <translation>Um %1: %2</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineContext</name>
@@ -4148,10 +4612,6 @@ W1500</translation>
             <translation>Stopp: nicht verbunden</translation>
         </message>
         <message>
-            <source>Stop sent</source>
-            <translation>Stopp gesendet</translation>
-        </message>
-        <message>
             <source>Panic: not connected</source>
             <translation>Panik-Stopp: nicht verbunden</translation>
         </message>
@@ -4191,6 +4651,32 @@ W1500</translation>
             <source>Laser bridge</source>
             <translation>Laserbrücke</translation>
         </message>
+        <message>
+            <source>Messages</source>
+            <translation>Meldungen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MessageLine</name>
+        <message>
+            <source>Open the message log: every message with its time</source>
+            <translation>Meldungsprotokoll öffnen: jede Meldung mit ihrer Uhrzeit</translation>
+        </message>
+        <message>
+            <source>Messages (%1)</source>
+            <translation>Meldungen (%1)</translation>
+        </message>
+        <message>
+            <source>Messages</source>
+            <translation>Meldungen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MessageLog</name>
+        <message>
+            <source>Every message of the status line with its time, the newest at the bottom (the last %1 are kept).</source>
+            <translation>Jede Meldung der Statuszeile mit ihrer Uhrzeit, die neueste unten (die letzten %1 bleiben erhalten).</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::PadJogSource</name>
@@ -4201,6 +4687,10 @@ W1500</translation>
         <message>
             <source>Pad</source>
             <translation>Joystick</translation>
+        </message>
+        <message>
+            <source>Jog ended: the pad moved under the held pointer. Release the button and press again.</source>
+            <translation>Tippen beendet: Das Pad hat sich unter dem gehaltenen Zeiger bewegt. Maustaste loslassen und neu drücken.</translation>
         </message>
     </context>
     <context>
@@ -4220,14 +4710,6 @@ W1500</translation>
         <message>
             <source>unknown</source>
             <translation>unbekannt</translation>
-        </message>
-        <message>
-            <source>%1: '%2' is out of range (allowed: %3 to %4 %5)</source>
-            <translation>%1: '%2' liegt außerhalb des Bereichs (erlaubt: %3 bis %4 %5)</translation>
-        </message>
-        <message>
-            <source>%1: '%2' is not allowed</source>
-            <translation>%1: '%2' ist nicht erlaubt</translation>
         </message>
         <message>
             <source>Unknown: the value could not be read. It is written only if you set it.</source>
@@ -4313,10 +4795,6 @@ W1500</translation>
             <translation>Aus den Rampenparametern geschätzt; die Steuerung meldet während einer Fahrt keine Position. Das Ziel steht darunter.</translation>
         </message>
         <message>
-            <source>The controller reports no position during a move and the ramp parameters are not known in this session. The target is shown below.</source>
-            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt. Das Ziel steht darunter.</translation>
-        </message>
-        <message>
             <source>Read back from the controller while moving.</source>
             <translation>Während der Fahrt von der Steuerung zurückgelesen.</translation>
         </message>
@@ -4375,6 +4853,30 @@ W1500</translation>
         <message>
             <source>Soft limits of %1 in machine steps apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
             <translation>Software-Endschalter von %1 in Maschinenschritten gelten nur, solange die Achse referenziert ist: eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
+        </message>
+        <message>
+            <source>referencing… (machine %1 steps)</source>
+            <translation>referenziere… (Maschine %1 Schritte)</translation>
+        </message>
+        <message>
+            <source>referencing…</source>
+            <translation>referenziere…</translation>
+        </message>
+        <message>
+            <source>REFERENCING</source>
+            <translation>REFERENZFAHRT</translation>
+        </message>
+        <message>
+            <source>Reference run: read back from the controller; the position is set when the axis reaches its reference switch.</source>
+            <translation>Referenzfahrt: von der Steuerung zurückgelesen; die Position wird gesetzt, wenn die Achse ihren Referenzschalter erreicht.</translation>
+        </message>
+        <message>
+            <source>Reference run: the last position before it; the position is set when the axis reaches its reference switch.</source>
+            <translation>Referenzfahrt: die letzte Position davor; die Position wird gesetzt, wenn die Achse ihren Referenzschalter erreicht.</translation>
+        </message>
+        <message>
+            <source>The controller reports no position during a move and the ramp parameters are not known in this session: the target is shown (→), not where the axis is now.</source>
+            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt: angezeigt wird das Ziel (→), nicht wo die Achse jetzt ist.</translation>
         </message>
     </context>
     <context>
@@ -4698,10 +5200,6 @@ W1500</translation>
             <translation>NOT-AUS an der Maschine aktiv: die Positionen sind verloren. Den Not-Aus entriegeln, dann alle Achsen referenzieren.</translation>
         </message>
         <message>
-            <source>Setup incomplete: write the setup (start speed, max speed, acceleration) on the Setup page first. The controller refuses every move until then.</source>
-            <translation>Setup unvollständig: zuerst das Setup (Startgeschwindigkeit, Maximalgeschwindigkeit, Beschleunigung) auf der Seite Setup schreiben. Bis dahin lehnt die Steuerung jede Fahrt ab.</translation>
-        </message>
-        <message>
             <source>Ready: all axes referenced.</source>
             <translation>Bereit: alle Achsen referenziert.</translation>
         </message>
@@ -4712,6 +5210,10 @@ W1500</translation>
         <message>
             <source>Not referenced: positions are unknown until the axes are referenced.</source>
             <translation>Nicht referenziert: die Positionen sind unbekannt, bis die Achsen referenziert sind.</translation>
+        </message>
+        <message>
+            <source>Setup incomplete: write the setup (start speed, max speed, acceleration) on the %1 page first. The controller refuses every move until then.</source>
+            <translation>Einrichtung unvollständig: zuerst die Einrichtung (Startgeschwindigkeit, Maximalgeschwindigkeit, Beschleunigung) auf der Seite %1 schreiben. Bis dahin lehnt die Steuerung jede Fahrt ab.</translation>
         </message>
     </context>
     <context>
@@ -4733,10 +5235,6 @@ W1500</translation>
             <translation>Sofortiger Stopp ohne Rampe: Schritte gehen verloren, die Maschine muss danach referenziert werden</translation>
         </message>
         <message>
-            <source>Reference all…</source>
-            <translation>Alle referenzieren…</translation>
-        </message>
-        <message>
             <source>STOP  (Esc)
 does not stop the controller</source>
             <translation>STOPP  (Esc)
@@ -4751,6 +5249,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Ends every jog input and the host's queued work; %1</source>
             <translation>Beendet jede Tipp-Eingabe und die wartenden Aufträge des Rechners; %1</translation>
+        </message>
+        <message>
+            <source>Reference all</source>
+            <translation>Alle referenzieren</translation>
         </message>
     </context>
     <context>
@@ -4811,12 +5313,6 @@ hält die Steuerung nicht an</translation>
             <translation>Nicht verbunden</translation>
         </message>
         <message>
-            <source>Invalid values cannot be written:
-%1</source>
-            <translation>Ungültige Werte können nicht geschrieben werden:
-%1</translation>
-        </message>
-        <message>
             <source>Not written: %1</source>
             <translation>Nicht geschrieben: %1</translation>
         </message>
@@ -4841,10 +5337,6 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Reading…</source>
             <translation>Lese…</translation>
-        </message>
-        <message>
-            <source>Written: %1.</source>
-            <translation>Geschrieben: %1.</translation>
         </message>
         <message>
             <source>Write failed: %1</source>
@@ -4904,6 +5396,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Read failed: %1. Values that could not be read are shown as unknown; they are written only if you set them.</source>
             <translation>Lesen fehlgeschlagen: %1. Werte, die nicht gelesen werden konnten, werden als unbekannt angezeigt; sie werden nur geschrieben, wenn Sie sie setzen.</translation>
+        </message>
+        <message>
+            <source>Invalid values cannot be written (%1): %2</source>
+            <translation>Ungültige Werte können nicht geschrieben werden (%1): %2</translation>
         </message>
     </context>
     <context>
@@ -5122,6 +5618,25 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Firmware: %1</source>
             <translation>Firmware: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::StopFeedback</name>
+        <message>
+            <source>Stop sent: waiting for the controller to report standstill…</source>
+            <translation>Stopp gesendet: Warten, bis die Steuerung Stillstand meldet…</translation>
+        </message>
+        <message>
+            <source>Stop sent</source>
+            <translation>Stopp gesendet</translation>
+        </message>
+        <message>
+            <source>Stopped: the controller reports every axis at standstill.</source>
+            <translation>Gestoppt: Die Steuerung meldet alle Achsen im Stillstand.</translation>
+        </message>
+        <message>
+            <source>Every axis is at standstill, as the controller reports.</source>
+            <translation>Alle Achsen stehen still, wie die Steuerung meldet.</translation>
         </message>
     </context>
     <context>
@@ -5377,6 +5892,25 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Write</source>
             <translation>Schreiben</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::WriteResultText</name>
+        <message>
+            <source>Written: %1.</source>
+            <translation>Geschrieben: %1.</translation>
+        </message>
+        <message>
+            <source>Written: %1. Nothing could be verified: this controller cannot read these values back.</source>
+            <translation>Geschrieben: %1. Nichts konnte geprüft werden: Diese Steuerung kann diese Werte nicht zurücklesen.</translation>
+        </message>
+        <message>
+            <source>Written and verified by reading back: %1.</source>
+            <translation>Geschrieben und durch Zurücklesen geprüft: %1.</translation>
+        </message>
+        <message>
+            <source>Written and verified by reading back: %1. Written but not verified (this controller cannot read them back): %2.</source>
+            <translation>Geschrieben und durch Zurücklesen geprüft: %1. Geschrieben, aber nicht geprüft (diese Steuerung kann sie nicht zurücklesen): %2.</translation>
         </message>
     </context>
     <context>
