@@ -161,8 +161,7 @@ Outcome resetPositionError(CliContext& c, Axis axis)
 {
     // 5.14 'D': the drive's own operation; the position becomes the encoder's.
     const Outcome r = c.session.run([&](ControllerSession& s) {
-        return s.modelOperation(operation::kResetPositionError,
-                                {{cl::kAxis, axisName(axis)}});
+        return s.modelOperation(operation::kResetPositionError, {{cl::kAxis, axisName(axis)}});
     });
     if (r.ok() && !c.json())
         printLine(CliText::tr("position error of axis %1 cleared; its position is the encoder's "

@@ -36,7 +36,7 @@ struct Capabilities
     // multiDrive: the addresses a drive on the bus may have (Nanotec 1.1: 1..254).
     int minBusAddress = 0;
     int maxBusAddress = 0;
-    bool records = false;       // stored records and error memory as model operations (Nanotec)
+    bool records = false; // stored records and error memory as model operations (Nanotec)
     // The closed-loop commissioning workflow as model operations (model/ClosedLoop.h): motor
     // data check, calibration run, closed-loop reference run, enable (Nanotec manual 8.1).
     bool closedLoop = false;

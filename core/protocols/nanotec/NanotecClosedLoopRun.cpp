@@ -1,8 +1,8 @@
 // A calibration or closed-loop reference run in progress: watched on the drive ('$', 'C', 'I')
 // until it is ready again, then its result read back (readings: NanotecClosedLoop.h).
 #include "Logging.h"
-#include "NanotecLogging.h"
 #include "NanotecClosedLoop.h"
+#include "NanotecLogging.h"
 #include <QTimer>
 
 namespace stepdeck::nanotec {
