@@ -80,7 +80,13 @@ StatusPanel::StatusPanel(MachineContext* context, QWidget* parent)
 
 void StatusPanel::rebuild()
 {
+    // The viewport's filter goes first: QScrollArea's destructor would otherwise hand the
+    // half-destroyed viewport's events to eventFilter() (UBSan: not a QAbstractScrollArea).
+    if (m_viewport)
+        m_viewport->removeEventFilter(this);
+    m_viewport = nullptr;
     delete m_content;
+    m_content = nullptr;
     m_machine.clear();
     m_machineOrder.clear();
     m_machineGroup = nullptr;
@@ -120,7 +126,8 @@ void StatusPanel::rebuild()
     scroll->setWidget(inner);
     m_content = scroll;
     m_body->addWidget(scroll);
-    scroll->viewport()->installEventFilter(this); // machine lamps: two columns if they fit
+    m_viewport = scroll->viewport();
+    m_viewport->installEventFilter(this); // machine lamps: two columns if they fit
     arrangeColumns();
     onStatus(m_context->status());
 }
@@ -173,7 +180,7 @@ void StatusPanel::arrangeColumns()
 
 bool StatusPanel::eventFilter(QObject* watched, QEvent* event)
 {
-    if (m_content && watched == m_content->viewport() && event->type() == QEvent::Resize)
+    if (m_viewport && watched == m_viewport && event->type() == QEvent::Resize)
         arrangeColumns();
     return QWidget::eventFilter(watched, event);
 }

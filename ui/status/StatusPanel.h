@@ -51,6 +51,7 @@ private:
     MachineContext* m_context;
     QVBoxLayout* m_body;
     QScrollArea* m_content = nullptr;
+    QWidget* m_viewport = nullptr; // m_content's viewport, watched for resizes
     QMap<QString, LedIndicator*> m_machine;
     QList<LedIndicator*> m_machineOrder;
     QWidget* m_machineGroup = nullptr;
