@@ -243,7 +243,12 @@ double MachineContext::toUserUnits(Axis axis, qint64 machineSteps) const
 QString MachineContext::unitName(Axis axis) const
 {
     const AxisUnits u = units(axis);
-    return u.stepsPerUnit > 0 ? u.unit : tr("steps");
+    return u.stepsPerUnit > 0 ? u.unit : machineUnitName();
+}
+
+QString MachineContext::machineUnitName() const
+{
+    return QCoreApplication::translate("Units", capabilities().positionUnit);
 }
 
 } // namespace stepdeck::ui

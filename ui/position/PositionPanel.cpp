@@ -226,7 +226,8 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     if (!m_context->isConnected()) {
         move.active = false;
         row.value->setText(format(a.position));
-        row.steps->setText(tr("last known: machine %1 steps").arg(a.position));
+        row.steps->setText(
+            tr("last known: machine %1 %2").arg(a.position).arg(m_context->machineUnitName()));
         setState(row, tr("NO LINK"), grey, true,
                  tr("The link is down: this is the last value before it ended, not the "
                     "position now."));
@@ -244,7 +245,10 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         const std::optional<qint64> now = estimate(axis, move);
         row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
                                : QStringLiteral("\u2248 \u2026"));
-        row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
+        row.steps->setText(tr("moving to %1 (machine %2 %3)")
+                               .arg(format(move.to))
+                               .arg(move.to)
+                               .arg(m_context->machineUnitName()));
         setState(row, tr("MOVING"), amber, false,
                  now ? tr("Estimated from the ramp parameters; the controller reports no "
                           "position during a move. The target is shown below.")
@@ -260,7 +264,7 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     if (a.positionEstimated && a.positionKnown)
         text.prepend(QStringLiteral("\u2248"));
     row.value->setText(text);
-    row.steps->setText(tr("machine %1 steps").arg(a.position));
+    row.steps->setText(tr("machine %1 %2").arg(a.position).arg(m_context->machineUnitName()));
     if (!a.positionKnown) {
         setState(row, tr("UNKNOWN"), red, true,
                  tr("Not referenced since the last panic, reset or reconnect: the position "

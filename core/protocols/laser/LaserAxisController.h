@@ -65,7 +65,7 @@ private:
     struct Track
     {
         bool awaiting = false;    // a target was sent and its status has not come yet
-        bool unconfirmed = false; // the axis may be moving: no status proved it stopped
+        bool unconfirmed = false; // tracking lost and no status frame since: it may move
         Command command = Command::Move;
         int target = 0;
         qint64 deadlineMs = 0;

@@ -104,9 +104,12 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
         replaceTargetOf(it.key());
         frames += encodeCommand({command, it.key(), it.value()});
         Track& track = m_tracks[it.key()];
-        track = Track{true, true, command, it.value(), deadline};
+        // Tracked, not unconfirmed: the host waits for this axis' report (issue 16: "Motion
+        // unconfirmed" lit red during every normal jog). An axis the host had lost track of
+        // stays unconfirmed until a status frame from it comes.
+        track = Track{true, track.unconfirmed, command, it.value(), deadline};
         AxisStatus& axis = mutableStatus().axes[it.key()];
-        axis.moving = true; // commanded; MachineStatus::motionUnconfirmed says it is not seen
+        axis.moving = true; // commanded; its status frame ends it
         axis.limitSwitch = axis.referenceSwitch = false;
         pending.waiting << it.key();
     }
@@ -218,7 +221,8 @@ void LaserAxisController::onDeadline()
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting || it->deadlineMs > now)
             continue;
-        it->awaiting = false; // still unconfirmed: it may be moving yet
+        it->awaiting = false;
+        it->unconfirmed = true; // no longer tracked, and it may be moving yet
         AxisStatus& axis = mutableStatus().axes[it.key()];
         axis.moving = false;
         // The axis is somewhere between where it was and the target: a relative move from the
@@ -254,8 +258,9 @@ void LaserAxisController::updateMachineFlags()
         unconfirmed = unconfirmed || t.unconfirmed;
     }
     s.busy = busy;
-    // A target out and no status frame back yet: the host cannot know that the axis stands.
-    // Cleared only when every axis has reported since its last target.
+    // An axis the host stopped tracking (arrival overdue, link closed or lost while a target
+    // was out) may still move: motion unconfirmed (docs/architecture.md) until a status frame
+    // from every such axis came. A target being tracked is motion, shown as busy/moving.
     if (unconfirmed)
         s.motionUnconfirmed = true;
     else
