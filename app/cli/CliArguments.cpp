@@ -383,6 +383,8 @@ QString usageText()
                "                              address and firmware string (multi-drive models\n"
                "                              such as nanotec; others exit 8)\n"
                "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"
+               "  reset-position-error [AXIS] clear a drive's position error; its position\n"
+               "                              becomes the encoder's (nanotec 'D')\n"
                "  store NAME=V[,V,V,V] ...    write power-on values (emis system parameters,\n"
                "                              ##...); store --clear sends *PESYS; `get` then\n"
                "                              reads the stored values back (*PRSYS)\n"

@@ -24,6 +24,7 @@ const CommandEntry kCommands[] = {
     {cmdStatus, true, {"status", {}}},
     {cmdScan, true, {"scan", {{"first", "N"}, {"last", "N"}}}},
     {cmdRecords, true, {"records", {}}},
+    {cmdResetPositionError, true, {"reset-position-error", {}}},
     {cmdSet, true, {"set", {{"no-verify"}}}},
     {cmdGet, true, {"get", {}}},
     {cmdExport, true, {"export", {}}},

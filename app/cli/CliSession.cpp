@@ -83,6 +83,9 @@ Outcome CliSession::create()
     spec.options.arrivalTimeoutMs = m_options.arrivalTimeoutMs;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
+    // The core's messages name this program's commands (the GUI names its buttons).
+    spec.options.actionNames.insert(QStringLiteral("reset-position-error"),
+                                    tr("`stepdeck-cli reset-position-error AXIS`"));
     QString error;
     if (!m_session.create(spec, &error))
         return Outcome::usage(error);

@@ -12,6 +12,7 @@ class QTableWidget;
 namespace stepdeck::ui {
 
 class MachineContext;
+class PositionErrorResetButton;
 
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
 // per-drive status from the poller, and a bus scan listing every drive that answers.
@@ -32,6 +33,7 @@ public:
     static constexpr int kScanChunk = 16;
 
     QPushButton* scanButton() const { return m_scan; }
+    PositionErrorResetButton* resetPositionErrorButton() const { return m_resetError; }
     QPushButton* cancelScanButton() const { return m_cancelScan; }
     QProgressBar* scanProgress() const { return m_progress; }
     bool isScanning() const { return m_scanId != 0; }
@@ -61,6 +63,7 @@ private:
     QPushButton* m_cancelScan;
     QProgressBar* m_progress;
     QLabel* m_scanState;
+    PositionErrorResetButton* m_resetError = nullptr;
     RequestId m_scanId = 0;
     int m_scanFirst = 0;
     int m_scanNext = 0; // first address of the next chunk

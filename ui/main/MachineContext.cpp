@@ -1,4 +1,5 @@
 #include "MachineContext.h"
+#include "drives/PositionErrorResetButton.h"
 #include <QCoreApplication>
 #include <QSettings>
 
@@ -94,8 +95,12 @@ void MachineContext::selectModel(const QString& modelId)
     Q_EMIT modelChanged();
 }
 
-bool MachineContext::connectTo(const ConnectionSpec& spec, QString* error)
+bool MachineContext::connectTo(const ConnectionSpec& given, QString* error)
 {
+    // The core's messages name this window's buttons, not CLI commands (issue 16).
+    ConnectionSpec spec = given;
+    spec.options.actionNames.insert(PositionErrorResetButton::operationName(),
+                                    PositionErrorResetButton::actionName());
     const ModelInfo* before = m_model;
     if (!m_session->create(spec, error))
         return false;

@@ -6,3 +6,5 @@ stepdeck_add_test(tst_nanotec_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotec_
 add_dependencies(tst_nanotec_e2e stepdeck-cli stepdeck-sim)
 stepdeck_add_test(tst_nanotecsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecsafety.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
+stepdeck_add_test(tst_nanotecpositionerror SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecpositionerror.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
