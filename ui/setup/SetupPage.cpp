@@ -312,6 +312,8 @@ bool SetupPage::writeAll(bool verify, bool confirm)
 
 bool SetupPage::writePlanned(int scope, bool verify, bool confirm)
 {
+    if (!hasSettableParameters())
+        return false;
     const QStringList errors = fieldErrors();
     if (!errors.isEmpty()) {
         setMessage(invalidText(errors), true, errors);

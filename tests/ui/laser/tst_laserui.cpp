@@ -59,6 +59,13 @@ void TestLaserUi::readOut_namesUnitsNotSteps()
         m_f->window->positionPanel()->detailText(Axis::X).endsWith(QStringLiteral(" units")),
         qPrintable(m_f->window->positionPanel()->detailText(Axis::X)));
     QVERIFY(!m_f->window->positionPanel()->detailText(Axis::X).contains(QStringLiteral("steps")));
+    // The commanded jog rates too.
+    QStringList rateUnits;
+    for (QLabel* label : m_f->window->jogPanel()->findChildren<QLabel*>()) {
+        if (label->text().endsWith(QStringLiteral("/s")))
+            rateUnits << label->text();
+    }
+    QCOMPARE(rateUnits, (QStringList{"units/s", "units/s", "units/s"}));
 }
 
 void TestLaserUi::idleLink_staysGreen_saysThereIsNoPoll()
@@ -135,6 +142,10 @@ void TestLaserUi::setupPage_noParameters_noButtonsAndSaysWhy()
         said =
             said || (label->isVisible() && label->text().contains(QStringLiteral("no parameters")));
     QVERIFY(said);
+    // Write (called directly, as the screenshot script does) sends nothing and says why.
+    QVERIFY(!page->write(false));
+    QVERIFY2(page->messageText().contains(QStringLiteral("no parameters")),
+             qPrintable(page->messageText()));
     // The File menu's Save parameters... opens no dialog for nothing and says why.
     page->saveAs();
     QVERIFY(m_f->window->findChildren<QFileDialog*>().isEmpty());
