@@ -395,6 +395,8 @@ QString usageText()
                "                              result (exit 4 when the drive reports a failure)\n"
                "  home --closed-loop X=1      the closed-loop reference run (!8), needed after\n"
                "                              every power-on before closed loop can be on\n"
+               "  reset-position-error [AXIS] clear a drive's position error; its position\n"
+               "                              becomes the encoder's (nanotec 'D')\n"
                "  store NAME=V[,V,V,V] ...    write power-on values (emis system parameters,\n"
                "                              ##...); store --clear sends *PESYS; `get` then\n"
                "                              reads the stored values back (*PRSYS)\n"

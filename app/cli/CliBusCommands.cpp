@@ -120,7 +120,9 @@ Outcome cmdScan(CliContext& c, QStringList args)
     return Outcome::success();
 }
 
-Outcome cmdRecords(CliContext& c, QStringList args)
+namespace {
+// The one drive a command is for: AXIS, or the only axis there is (--address N).
+Outcome driveAxis(const CliContext& c, const QString& command, const QStringList& args, Axis* out)
 {
     const QList<Axis> axes = c.axes();
     std::optional<Axis> axis;
@@ -129,10 +131,43 @@ Outcome cmdRecords(CliContext& c, QStringList args)
     else if (args.isEmpty() && axes.size() == 1)
         axis = axes.first();
     if (args.size() > 1 || (args.isEmpty() && !axis))
-        return Outcome::usage(CliText::tr("records needs the axis of one drive, e.g. `records X`"));
+        return Outcome::usage(
+            CliText::tr("%1 needs the axis of one drive, e.g. `%1 X`").arg(command));
     if (!axis || !axes.contains(*axis))
         return Outcome::usage(
-            CliText::tr("records: this machine has no axis %1").arg(args.first()));
+            CliText::tr("%1: this machine has no axis %2").arg(command, args.first()));
+    *out = *axis;
+    return Outcome::success();
+}
+} // namespace
+
+Outcome cmdResetPositionError(CliContext& c, QStringList args)
+{
+    // Nanotec 'D' (5.14): the position becomes the encoder's, the position error is cleared.
+    Axis axis = Axis::X;
+    if (const Outcome parsed = driveAxis(c, QStringLiteral("reset-position-error"), args, &axis);
+        !parsed.ok())
+        return parsed;
+    Outcome outcome = c.connect();
+    if (!outcome.ok())
+        return outcome;
+    outcome = c.session.run([&](ControllerSession& s) {
+        return s.modelOperation(QStringLiteral("reset-position-error"),
+                                {{QStringLiteral("axis"), axisName(axis)}});
+    });
+    if (outcome.ok() && !c.json())
+        printLine(CliText::tr("position error of axis %1 reset: its position is the encoder's")
+                      .arg(axisName(axis)));
+    return outcome;
+}
+
+Outcome cmdRecords(CliContext& c, QStringList args)
+{
+    Axis axisValue = Axis::X;
+    if (const Outcome parsed = driveAxis(c, QStringLiteral("records"), args, &axisValue);
+        !parsed.ok())
+        return parsed;
+    const std::optional<Axis> axis = axisValue;
     Outcome outcome = c.connect();
     if (!outcome.ok())
         return outcome;

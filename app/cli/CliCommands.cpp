@@ -26,6 +26,7 @@ const CommandEntry kCommands[] = {
     {cmdRecords, true, {"records", {}}},
     {cmdClosedLoop, true, {"closed-loop", {}}},
     {cmdCalibrate, true, {"calibrate", {}}},
+    {cmdResetPositionError, true, {"reset-position-error", {}}},
     {cmdSet, true, {"set", {{"no-verify"}}}},
     {cmdGet, true, {"get", {}}},
     {cmdExport, true, {"export", {}}},

@@ -46,6 +46,7 @@ Outcome cmdParams(CliContext& c, QStringList args);
 Outcome cmdStatus(CliContext& c, QStringList args);
 Outcome cmdScan(CliContext& c, QStringList args);
 Outcome cmdRecords(CliContext& c, QStringList args);
+Outcome cmdResetPositionError(CliContext& c, QStringList args);
 
 Outcome cmdSet(CliContext& c, QStringList args);
 Outcome cmdGet(CliContext& c, QStringList args);

@@ -84,6 +84,9 @@ Outcome CliSession::create()
     spec.options.arrivalTimeoutMs = m_options.arrivalTimeoutMs;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
+    // The core's messages name this program's commands (the GUI names its buttons).
+    spec.options.actionNames.insert(QStringLiteral("reset-position-error"),
+                                    tr("`stepdeck-cli reset-position-error AXIS`"));
     QString error;
     const ModelInfo* model = findModel(spec.modelId);
     if (!model)

@@ -36,6 +36,9 @@ Controller::Controller(Transport* transport, const ControllerOptions& options, Q
         m_jogRamp.setAcceleration(m_options.jogAccelerationStepsPerS2);
     m_jogClock.start();
     m_trafficClock.start();
+    m_stepJogLease.setSingleShot(true);
+    m_stepJogLease.setInterval(qMax(1, m_options.jogLeaseMs));
+    connect(&m_stepJogLease, &QTimer::timeout, this, &Controller::endStepJog);
     m_safetyTimer.setSingleShot(true);
     connect(&m_safetyTimer, &QTimer::timeout, this, [this] {
         if (auto timeout = std::exchange(m_safetyTimeout, nullptr))
@@ -191,6 +194,33 @@ void Controller::setJogVelocity(const AxisVelocities& targets)
 void Controller::endJog()
 {
     m_jogRamp.releaseAll();
+    endStepJog();
+}
+
+void Controller::noteFinished(const CommandResult& result)
+{
+    if (m_jogStepId == 0 || result.id != m_jogStepId)
+        return;
+    m_jogStepId = 0;
+    if (result.ok())
+        m_stepJogLease.start(); // the next step comes at once while the input is held
+    else
+        endStepJog(); // refused, replaced or timed out: the jog ended here
+}
+
+void Controller::endStepJog()
+{
+    m_stepJogLease.stop();
+    m_jogStepId = 0;
+    bool changed = false;
+    for (Axis axis : std::exchange(m_stepJogAxes, {})) {
+        if (m_status.axes.contains(axis) && m_status.axes[axis].commandedVelocity != 0.0) {
+            m_status.axes[axis].commandedVelocity = 0;
+            changed = true;
+        }
+    }
+    if (changed)
+        publishStatus();
 }
 
 void Controller::setJogAcceleration(double stepsPerS2)
@@ -277,6 +307,9 @@ void Controller::haltJogImmediately()
     m_jogRamp.reset();
     m_jogTimer.stop();
     m_lastAppliedJog.clear();
+    m_stepJogLease.stop();
+    m_jogStepId = 0;
+    m_stepJogAxes.clear();
     for (AxisStatus& axis : m_status.axes) {
         axis.commandedVelocity = 0;
         axis.jogging = false;
@@ -319,13 +352,13 @@ void Controller::markAllUnreferenced()
 
 void Controller::finishOk(RequestId id, const QVariant& value)
 {
-    Q_EMIT requestFinished(CommandResult::success(id, value));
+    finish(CommandResult::success(id, value));
 }
 
 void Controller::finishError(RequestId id, ErrorKind kind, const QString& message)
 {
     qCInfo(lcController) << "request" << id << "failed:" << message;
-    Q_EMIT requestFinished(CommandResult::failure(id, kind, message));
+    finish(CommandResult::failure(id, kind, message));
 }
 
 void Controller::recordTraffic(TrafficRecord::Direction direction, const QByteArray& bytes,

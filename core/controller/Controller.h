@@ -111,8 +111,10 @@ public:
     void guardedFeedStream(RequestId id, const QVector<AxisVector>& steps);
     void guardedVelocityMove(RequestId id, const AxisVector& stepsPerS); // no end: refused
     // One short jog move (Capabilities::jogByTargets): shortened to end at the limit;
-    // refused with the reason once every axis named stands at its limit.
-    void jogStep(RequestId id, const AxisVector& steps);
+    // refused with the reason once every axis named stands at its limit. stepsPerS: the jog
+    // rate each target stands for; it is the axes' commandedVelocity while the host jogs by
+    // targets (until endJog(), a failed step, or no next step within the jog lease).
+    void jogStep(RequestId id, const AxisVector& steps, const AxisVelocities& stepsPerS = {});
     // refusal non-empty: finishes id as Refused with it and returns true.
     bool refuse(RequestId id, const QString& refusal);
 
@@ -181,7 +183,11 @@ protected:
     // sends the new rates.
     void haltJogAxis(Axis axis) { m_jogRamp.stopAxis(axis); }
     double jogRate(Axis axis) const { return m_jogRamp.current(axis); }
-    void finish(const CommandResult& result) { Q_EMIT requestFinished(result); }
+    void finish(const CommandResult& result)
+    {
+        noteFinished(result);
+        Q_EMIT requestFinished(result);
+    }
     // stop()/panic() of a model without a stop command: Unsupported, noStopCommandText().
     void refuseNoStopCommand(RequestId id);
     void finishOk(RequestId id, const QVariant& value = {});
@@ -199,6 +205,10 @@ private:
     void completeClose(bool mayMove, bool acknowledged);
     void reportLinkLoss(const QString& reason, bool motionUnconfirmed);
     void keepJogInsideSoftLimits(double dt);
+    // Jogging by targets: a finished step starts the lease for the next one (ok) or ends the
+    // commanded rates (failed); endStepJog() sets them back to zero.
+    void noteFinished(const CommandResult& result);
+    void endStepJog();
 
     QPointer<Transport> m_transport;
     ControllerOptions m_options;
@@ -211,6 +221,9 @@ private:
     qint64 m_leaseRenewedMs = 0;
     AxisVelocities m_lastAppliedJog;
     AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
+    RequestId m_jogStepId = 0;     // the jog step in flight (jogging by targets)
+    QList<Axis> m_stepJogAxes;     // axes whose commandedVelocity a jog step set
+    QTimer m_stepJogLease{this};
     SoftLimits m_softLimits;
     QString m_softLimitNote; // the last jog refusal said for a soft limit
     QElapsedTimer m_trafficClock;

@@ -35,7 +35,7 @@ void Controller::guardedVelocityMove(RequestId id, const AxisVector& stepsPerS)
         velocityMove(id, stepsPerS);
 }
 
-void Controller::jogStep(RequestId id, const AxisVector& steps)
+void Controller::jogStep(RequestId id, const AxisVector& steps, const AxisVelocities& stepsPerS)
 {
     // Models that jog by short targets: the target ends at the limit at the latest; no ramp
     // to wait for (each target is a move of its own that ends there by itself).
@@ -43,8 +43,20 @@ void Controller::jogStep(RequestId id, const AxisVector& steps)
     AxisVector clipped = m_softLimits.clipRelative(m_status, steps, &why);
     for (auto it = clipped.begin(); it != clipped.end();)
         it = it.value() == 0 ? clipped.erase(it) : std::next(it);
-    if (clipped.isEmpty() && refuse(id, why))
+    if (clipped.isEmpty() && refuse(id, why)) {
+        endStepJog();
         return;
+    }
+    // The rate the host commands now, as a jog stream's would be (issue 16: the jog panel
+    // showed +0 while the laser axes moved); the adapter publishes it with the target.
+    m_stepJogLease.stop();
+    m_jogStepId = id;
+    for (auto it = m_status.axes.begin(); it != m_status.axes.end(); ++it) {
+        const double rate = clipped.contains(it.key()) ? stepsPerS.value(it.key(), 0.0) : 0.0;
+        it->commandedVelocity = rate;
+        if (rate != 0.0 && !m_stepJogAxes.contains(it.key()))
+            m_stepJogAxes << it.key();
+    }
     moveRelative(id, clipped);
 }
 

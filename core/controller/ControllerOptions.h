@@ -21,6 +21,11 @@ struct ControllerOptions
     // The modem line wired to the board's reset input (E-LAB: RTS by the manual's text, DTR by
     // its pin table); the other line is held de-asserted too.
     LineSettings::ResetLine resetLine = LineSettings::ResetLine::Rts;
+    // How this front end lets the operator run a model operation (Controller::modelOperation
+    // name -> words), for messages that say what to do next: the CLI names its command, the
+    // GUI its button. Without an entry a message says it in neutral words (issue 16: the GUI
+    // told operators to run `reset-position-error`, a CLI word).
+    QMap<QString, QString> actionNames;
 };
 
 } // namespace stepdeck

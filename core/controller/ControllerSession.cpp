@@ -222,9 +222,9 @@ RequestId ControllerSession::moveAbsolute(const AxisVector& targets)
     return submit([=](Controller* c, RequestId id) { c->guardedMoveAbsolute(id, targets); });
 }
 
-RequestId ControllerSession::jogStep(const AxisVector& steps)
+RequestId ControllerSession::jogStep(const AxisVector& steps, const AxisVelocities& stepsPerS)
 {
-    return submit([=](Controller* c, RequestId id) { c->jogStep(id, steps); });
+    return submit([=](Controller* c, RequestId id) { c->jogStep(id, steps, stepsPerS); });
 }
 
 RequestId ControllerSession::feed(const AxisVector& steps)

@@ -55,8 +55,9 @@ public:
     RequestId moveAbsolute(const AxisVector& targets);
     // One short jog move of a model that jogs by targets (Capabilities::jogByTargets): a
     // relative move shortened so that it ends at the soft limit at the latest; refused with
-    // the reason once every axis stands at its limit.
-    RequestId jogStep(const AxisVector& steps);
+    // the reason once every axis stands at its limit. stepsPerS: the jog rates the steps stand
+    // for (published as the axes' commandedVelocity while jogging by targets).
+    RequestId jogStep(const AxisVector& steps, const AxisVelocities& stepsPerS = {});
     RequestId feed(const AxisVector& steps);
     RequestId feedStream(const QVector<AxisVector>& steps);
     RequestId reference(const QMap<Axis, int>& directions);

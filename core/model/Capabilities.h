@@ -70,6 +70,11 @@ struct Capabilities
     // previous one arrived, never a target far ahead (laser motor axes).
     bool jogByTargets = false;
     bool doorSwitch = false; // the device reports a door switch (MachineStatus::doorOpen)
+    // What the protocol's positions count: English data, shown through
+    // QCoreApplication::translate("Units", positionUnit). Step counters count "steps"; the
+    // laser motor-axis protocol's positions are plain numbers 0..99999 whose unit the axis
+    // defines (its manual names none), so they are "units", never steps.
+    const char* positionUnit = QT_TRANSLATE_NOOP("Units", "steps");
 
     bool has(MotionMode mode) const { return motionModes.contains(mode); }
 };

@@ -47,6 +47,7 @@ private Q_SLOTS:
     void port_missing_failsWithLinkDown();
     void unknownNames_suggestTheNearest_data();
     void unknownNames_suggestTheNearest();
+    void resetPositionError_nanotecDrive_orUnsupported();
     void port_silentDevice_failsWithTimeoutNamingPort();
     void help_documentsExitCodes();
 
@@ -518,6 +519,19 @@ void TestCliEndToEnd::help_documentsExitCodes()
     for (const char* command : {"ports", "status", "set", "get", "export", "import", "move", "jog",
                                 "home", "velocity", "feed", "panic", "spindle"})
         QVERIFY2(run.out.contains(command), command);
+}
+
+void TestCliEndToEnd::resetPositionError_nanotecDrive_orUnsupported()
+{
+    // Issue 16: the command the Nanotec messages name (the GUI names its button instead).
+    const Run reset = cli({"--model", "nanotec", "--port", "sim", "reset-position-error", "Y"});
+    QVERIFY2(reset.exitCode == 0, reset.err.constData());
+    QVERIFY2(reset.out.contains("position error of axis Y reset"), reset.out.constData());
+    const Run noAxis = cli({"--model", "nanotec", "--port", "sim", "reset-position-error", "Q"});
+    QCOMPARE(noAxis.exitCode, 2);
+    const Run elab = cli({"--port", m_pty, "reset-position-error", "X"});
+    QCOMPARE(elab.exitCode, 8);
+    QCOMPARE(elab.err.count('\n'), 1);
 }
 
 QTEST_GUILESS_MAIN(TestCliEndToEnd)

@@ -95,8 +95,10 @@ void ChartsPanel::rebuild()
     QStringList axes;
     for (Axis a : m_context->axes())
         axes << axisName(a);
-    m_plots << makePlot(tr("Position"), tr("steps"), axes);
-    m_plots << makePlot(tr("Commanded velocity"), tr("steps/s"), axes);
+    // In the model's position unit (laser axes: units, issue 16).
+    const QString unit = m_context->machineUnitName();
+    m_plots << makePlot(tr("Position"), unit, axes);
+    m_plots << makePlot(tr("Commanded velocity"), tr("%1/s").arg(unit), axes);
     m_plots << makePlot(tr("Temperature"), tr("°C"), {tr("Temperature")});
     m_plots << makePlot(tr("Poll rate"), tr("Hz"), {tr("Poll rate")});
     auto* grid = static_cast<QGridLayout*>(m_grid->layout());

@@ -1,6 +1,7 @@
 #include "DrivePanel.h"
 #include "ClosedLoopPanel.h"
 #include "common/ElidedLabel.h"
+#include "drives/PositionErrorResetButton.h"
 #include "main/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QHeaderView>
@@ -50,7 +51,15 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     auto* v = new QVBoxLayout(this);
     v->addWidget(new QLabel(tr("Drives of this machine"), this));
     v->addWidget(m_drives, 2);
+    // Named by the core's position-error messages (ControllerOptions::actionNames).
+    m_resetError = new PositionErrorResetButton(context, m_drives, this);
+    auto* driveActions = new QHBoxLayout;
+    driveActions->addWidget(m_resetError);
+    driveActions->addStretch(1);
+    v->addLayout(driveActions);
     v->addWidget(m_closedLoop);
+    connect(m_resetError, &PositionErrorResetButton::message, this,
+            [this](const QString& text) { m_scanState->setText(text); });
     auto* row = new QHBoxLayout;
     row->addWidget(m_scan);
     row->addWidget(m_cancelScan);

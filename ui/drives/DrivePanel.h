@@ -14,6 +14,7 @@ namespace stepdeck::ui {
 class ClosedLoopPanel;
 class ElidedLabel;
 class MachineContext;
+class PositionErrorResetButton;
 
 // The drives of a multi-drive model (Nanotec: one RS485 address per axis) with their
 // per-drive status from the poller, and a bus scan listing every drive that answers.
@@ -36,6 +37,7 @@ public:
     static constexpr int kScanChunk = 16;
 
     QPushButton* scanButton() const { return m_scan; }
+    PositionErrorResetButton* resetPositionErrorButton() const { return m_resetError; }
     QPushButton* cancelScanButton() const { return m_cancelScan; }
     QProgressBar* scanProgress() const { return m_progress; }
     bool isScanning() const { return m_scanId != 0; }
@@ -66,6 +68,7 @@ private:
     QPushButton* m_cancelScan;
     QProgressBar* m_progress;
     ElidedLabel* m_scanState;
+    PositionErrorResetButton* m_resetError = nullptr;
     RequestId m_scanId = 0;
     int m_scanFirst = 0;
     int m_scanNext = 0; // first address of the next chunk

@@ -239,7 +239,8 @@ void JogPanel::rebuild()
         value->setMinimumWidth(90);
         m_velocityGrid->addWidget(name, row, 0);
         m_velocityGrid->addWidget(value, row, 1);
-        m_velocityGrid->addWidget(new QLabel(tr("steps/s")), row, 2);
+        // The model's position unit (laser axes: "units/s", issue 16).
+        m_velocityGrid->addWidget(new QLabel(tr("%1/s").arg(m_context->machineUnitName())), row, 2);
         m_velocity.insert(axis, value);
         ++row;
     }

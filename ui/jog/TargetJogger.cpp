@@ -47,7 +47,8 @@ void TargetJogger::sendNext()
         steps.insert(it.key(), chunkSteps(it.value()));
     if (steps.isEmpty())
         return;
-    m_inFlight = m_session->jogStep(steps); // never beyond a soft limit
+    // Never beyond a soft limit; the rates are what the panel shows as commanded.
+    m_inFlight = m_session->jogStep(steps, m_velocities);
 }
 
 void TargetJogger::onResult(const CommandResult& result)

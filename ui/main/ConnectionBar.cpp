@@ -273,12 +273,22 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
     }
     m_link->setToolTip(reason);
     m_lastState = state;
-    if (state == LinkState::Connected)
+    // Without a status request (laser motor axes) silence is what a healthy idle link sounds
+    // like: no reply watch, and the rate field says why there is none (issue 16).
+    const bool polled = m_context->capabilities().statusQuery;
+    if (state == LinkState::Connected && polled)
         m_replyWatch->start();
     else
         m_replyWatch->stop();
-    if (!busy)
+    if (state == LinkState::Connected && !polled) {
+        m_rate->setText(tr("no status poll"));
+        m_rate->setToolTip(tr("This protocol has no status request: the controller reports only "
+                              "by itself (after a move, at a switch or the door). Silence on an "
+                              "idle link is normal and is not checked."));
+    } else if (!busy) {
         m_rate->setText(tr("\u2013 Hz"));
+        m_rate->setToolTip(tr("Achieved status poll rate"));
+    }
 }
 
 int ConnectionBar::overdueAfterMs() const
@@ -288,7 +298,7 @@ int ConnectionBar::overdueAfterMs() const
 
 void ConnectionBar::checkReplies()
 {
-    if (!m_context->isConnected())
+    if (!m_context->isConnected() || !m_context->capabilities().statusQuery)
         return;
     const bool overdue = m_sinceReply.isValid() && m_sinceReply.elapsed() > overdueAfterMs();
     if (overdue == m_overdue)
@@ -316,6 +326,8 @@ QString ConnectionBar::linkText() const
 
 void ConnectionBar::onPollRate(double hz)
 {
+    if (!m_context->capabilities().statusQuery)
+        return; // nothing is polled: the field keeps saying so
     m_rate->setText(tr("%1 Hz").arg(hz, 0, 'f', 1));
 }
 

@@ -1,5 +1,6 @@
 #include "MachineContext.h"
 #include "protocols/Registry.h"
+#include "drives/PositionErrorResetButton.h"
 #include <QCoreApplication>
 #include <QSettings>
 
@@ -95,8 +96,12 @@ void MachineContext::selectModel(const QString& modelId)
     Q_EMIT modelChanged();
 }
 
-bool MachineContext::connectTo(const ConnectionSpec& spec, QString* error)
+bool MachineContext::connectTo(const ConnectionSpec& given, QString* error)
 {
+    // The core's messages name this window's buttons, not CLI commands (issue 16).
+    ConnectionSpec spec = given;
+    spec.options.actionNames.insert(PositionErrorResetButton::operationName(),
+                                    PositionErrorResetButton::actionName());
     const ModelInfo* before = m_model;
     const ModelInfo* model = findModel(spec.modelId);
     if (!model) {
@@ -253,7 +258,12 @@ double MachineContext::toUserUnits(Axis axis, qint64 machineSteps) const
 QString MachineContext::unitName(Axis axis) const
 {
     const AxisUnits u = units(axis);
-    return u.stepsPerUnit > 0 ? u.unit : tr("steps");
+    return u.stepsPerUnit > 0 ? u.unit : machineUnitName();
+}
+
+QString MachineContext::machineUnitName() const
+{
+    return QCoreApplication::translate("Units", capabilities().positionUnit);
 }
 
 } // namespace stepdeck::ui

@@ -65,6 +65,9 @@ public:
     // Machine position in steps -> work position in user units (or steps when none set).
     double toUserUnits(Axis axis, qint64 machineSteps) const;
     QString unitName(Axis axis) const;
+    // What the model's machine positions count, translated ("steps"; laser axes: "units"):
+    // Capabilities::positionUnit, never a guess from the model id.
+    QString machineUnitName() const;
 
 Q_SIGNALS:
     void modelChanged();

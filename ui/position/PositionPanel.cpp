@@ -200,9 +200,10 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     if (u.workOffset != 0) {
         row.value->setUnit(tr("%1 work").arg(m_context->unitName(axis)));
         row.value->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
-                                 "(machine %2 steps)")
+                                 "(machine %2 %3)")
                                   .arg(axisName(axis))
-                                  .arg(u.workOffset));
+                                  .arg(u.workOffset)
+                                  .arg(m_context->machineUnitName()));
     } else {
         row.value->setUnit(m_context->unitName(axis));
         row.value->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
@@ -222,20 +223,23 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
                                            .arg(limit.minimum)
                                            .arg(limit.maximum));
         row.limits->setToolTip(
-            active ? tr("Soft limits of %1 in machine steps: jog stops and moves are refused "
+            active ? tr("Soft limits of %1 in machine %2: jog stops and moves are refused "
                         "there")
                          .arg(axisName(axis))
-                   : tr("Soft limits of %1 in machine steps apply only while the axis is "
+                         .arg(m_context->machineUnitName())
+                   : tr("Soft limits of %1 in machine %2 apply only while the axis is "
                         "referenced: an unreferenced position says nothing about where the "
                         "machine is")
-                         .arg(axisName(axis)));
+                         .arg(axisName(axis))
+                         .arg(m_context->machineUnitName()));
     }
     MoveTrack& move = m_moves[axis];
 
     if (!m_context->isConnected()) {
         move.active = false;
         row.value->setText(format(a.position));
-        row.steps->setText(tr("last known: machine %1 steps").arg(a.position));
+        row.steps->setText(
+            tr("last known: machine %1 %2").arg(a.position).arg(m_context->machineUnitName()));
         setState(row, tr("NO LINK"), grey, true,
                  tr("The link is down: this is the last value before it ended, not the "
                     "position now."));
@@ -270,7 +274,10 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
         // the axis is heading, dimmed: a lone "≈ …" read as a blank or broken read-out.
         row.value->setText(now ? QStringLiteral("\u2248") + format(*now)
                                : QStringLiteral("\u2192") + format(move.to));
-        row.steps->setText(tr("moving to %1 (machine %2 steps)").arg(format(move.to)).arg(move.to));
+        row.steps->setText(tr("moving to %1 (machine %2 %3)")
+                               .arg(format(move.to))
+                               .arg(move.to)
+                               .arg(m_context->machineUnitName()));
         setState(row, tr("MOVING"), amber, !now,
                  now ? tr("Estimated from the ramp parameters; the controller reports no "
                           "position during a move. The target is shown below.")
@@ -286,7 +293,7 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
     if (a.positionEstimated && a.positionKnown)
         text.prepend(QStringLiteral("\u2248"));
     row.value->setText(text);
-    row.steps->setText(tr("machine %1 steps").arg(a.position));
+    row.steps->setText(tr("machine %1 %2").arg(a.position).arg(m_context->machineUnitName()));
     if (!a.positionKnown) {
         setState(row, tr("UNKNOWN"), red, true,
                  tr("Not referenced since the last panic, reset or reconnect: the position "

@@ -33,6 +33,7 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     m_read->setToolTip(tr("Read the values back from the controller"));
     m_writeVerify->setToolTip(tr("Write, then read back and compare where the protocol can"));
     defaults->setToolTip(tr("Fill the form with the model's default values (nothing is sent)"));
+    m_formButtons = {defaults, save, loadButton};
 
     auto* bar = new QHBoxLayout;
     for (QPushButton* b : {m_read, m_write, m_writeVerify, m_writeAll, defaults})
@@ -102,6 +103,7 @@ void SetupPage::rebuild()
                          "defaults (or a loaded file) until written. After every connect, reset "
                          "or power cycle nothing counts as written."));
     m_info->setVisible(!anyReadable);
+    showWhetherAnythingIsSettable();
     if (anyReadable)
         markReadableUnknown(); // not read yet: never shown as defaults
     applyKnown();
@@ -124,6 +126,41 @@ void SetupPage::applyKnown()
         f->setBaseline(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
     }
     refreshButtons();
+}
+
+bool SetupPage::hasSettableParameters()
+{
+    for (const ParameterSpec& spec : m_schema.specs()) {
+        if (spec.writable)
+            return true;
+    }
+    setMessage(noParametersText(), true);
+    return false;
+}
+
+QString SetupPage::noParametersText()
+{
+    return tr("This controller's protocol has no parameters to set: there is nothing to write, "
+              "read, save or load here.");
+}
+
+void SetupPage::showWhetherAnythingIsSettable()
+{
+    // A protocol without parameters (laser motor axes) gets no empty form with buttons that
+    // would do nothing (issue 16): it says why instead. (Before a model is chosen the page
+    // stays as it is.)
+    bool anyWritable = false;
+    for (const ParameterSpec& spec : m_schema.specs())
+        anyWritable = anyWritable || spec.writable;
+    const bool none = !anyWritable && m_context->model();
+    for (QPushButton* b : {m_write, m_writeVerify, m_writeAll})
+        b->setVisible(!none);
+    for (QPushButton* b : std::as_const(m_formButtons))
+        b->setVisible(!none);
+    if (none) {
+        m_read->setVisible(false);
+        m_info->setText(noParametersText());
+    }
 }
 
 QWidget* SetupPage::buildGroup(const QString& group)
@@ -275,6 +312,8 @@ bool SetupPage::writeAll(bool verify, bool confirm)
 
 bool SetupPage::writePlanned(int scope, bool verify, bool confirm)
 {
+    if (!hasSettableParameters())
+        return false;
     const QStringList errors = fieldErrors();
     if (!errors.isEmpty()) {
         setMessage(invalidText(errors), true, errors);

@@ -73,8 +73,11 @@ private:
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error, const QStringList& details = {});
     static QString invalidText(const QStringList& errors);
-    void applyKnown();          // baselines from what the context knows on the device
-    void markReadableUnknown(); // readable values not read (yet): unknown, not defaults
+    void applyKnown();                    // baselines from what the context knows on the device
+    void markReadableUnknown();           // readable values not read (yet): unknown, not defaults
+    void showWhetherAnythingIsSettable(); // no writable parameter: no form buttons, a reason
+    bool hasSettableParameters();         // false: says why
+    static QString noParametersText();
     void showRead(const ParameterSet& set);
     bool writePlanned(int scope, bool verify, bool confirm);
     bool writeSet(const ParameterSet& set, bool verify, bool confirm);
@@ -89,6 +92,7 @@ private:
     QPushButton* m_write;
     QPushButton* m_writeVerify;
     QPushButton* m_writeAll;
+    QList<QPushButton*> m_formButtons; // Defaults, Save to file, Load from file
     QPointer<WritePreview> m_preview;
     QLabel* m_info;
     SetupMessageLine* m_message;

@@ -28,6 +28,8 @@ bool SetupPage::readFile(const QString& path, ParameterSet* set, QString* error)
 
 void SetupPage::saveAs()
 {
+    if (!hasSettableParameters())
+        return; // the page says why (File menu: the same words in the status bar)
     dialogs::saveFile(this, QStringLiteral("parameters"), tr("Save parameters"),
                       m_context->modelId() + QStringLiteral("-parameters.json"),
                       tr("Parameter files (*.json)"), [this](const QString& path) {
@@ -41,6 +43,8 @@ void SetupPage::saveAs()
 
 void SetupPage::load()
 {
+    if (!hasSettableParameters())
+        return;
     dialogs::openFile(this, QStringLiteral("parameters"), tr("Load parameters"),
                       tr("Parameter files (*.json)"),
                       [this](const QString& path) { loadFile(path); });

@@ -110,8 +110,8 @@ void LaserAxisController::abortHostSide(ErrorKind kind, const QString& message)
     publishStatus();
     for (const Pending& p : std::exchange(m_pending, {}))
         finishError(p.id, kind, message);
-    // MachineStatus::motionUnconfirmed was set when the targets went out, so the base's "may
-    // still be moving" would not be said again on a close: say it here, once, with the axes.
+    // MachineStatus::motionUnconfirmed is set here (updateMachineFlags), before the base's
+    // close could say "may still be moving": say it here, once, with the axes and why.
     // (A link loss is reported by the base with that text already.)
     if (!heading.isEmpty() && kind != ErrorKind::LinkDown) {
         Q_EMIT errorOccurred(tr("no longer tracking axis %1 on its way to a target: the protocol "

@@ -67,7 +67,7 @@ private:
     struct Track
     {
         bool awaiting = false;    // a target was sent and its status has not come yet
-        bool unconfirmed = false; // the axis may be moving: no status proved it stopped
+        bool unconfirmed = false; // tracking lost and no status frame since: it may move
         Command command = Command::Move;
         int target = 0;
         qint64 deadlineMs = 0;
@@ -89,7 +89,7 @@ private:
     // --- motion (LaserAxisMotion.cpp) ---
     QString checkTargets(const AxisVector& targets) const;
     void sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets);
-    void trackTarget(const CommandFrame& frame, qint64 deadlineMs);
+    void trackTarget(const CommandFrame& frame, qint64 deadlineMs, bool unconfirmed);
     void trackRawCommands(const QByteArray& bytes);
     void replaceTargetOf(Axis axis);
     void onStatusFrame(const StatusFrame& frame);

@@ -104,7 +104,10 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         const CommandFrame frame{command, it.key(), it.value()};
         frames += encodeCommand(frame);
-        trackTarget(frame, deadline);
+        // Tracked, not unconfirmed: the host waits for this axis' report (issue 16: "Motion
+        // unconfirmed" lit red during every normal jog). An axis the host had lost track of
+        // stays unconfirmed until a status frame from it comes.
+        trackTarget(frame, deadline, m_tracks.value(it.key()).unconfirmed);
         pending.waiting << it.key();
     }
     recordTraffic(TrafficRecord::Direction::Out, frames, false);
@@ -118,12 +121,13 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
     publishStatus();
 }
 
-void LaserAxisController::trackTarget(const CommandFrame& frame, qint64 deadlineMs)
+void LaserAxisController::trackTarget(const CommandFrame& frame, qint64 deadlineMs,
+                                      bool unconfirmed)
 {
     replaceTargetOf(frame.axis);
-    m_tracks[frame.axis] = Track{true, true, frame.command, frame.position, deadlineMs};
+    m_tracks[frame.axis] = Track{true, unconfirmed, frame.command, frame.position, deadlineMs};
     AxisStatus& axis = mutableStatus().axes[frame.axis];
-    axis.moving = true; // commanded; MachineStatus::motionUnconfirmed says it is not seen
+    axis.moving = true; // commanded; its status frame ends it
     axis.limitSwitch = axis.referenceSwitch = false;
 }
 
@@ -139,7 +143,7 @@ void LaserAxisController::trackRawCommands(const QByteArray& bytes)
         if (!d.ok() || !m_tracks.contains(d.frame->axis))
             continue;
         qCInfo(lcLaser) << "raw command tracked:" << commandText(*d.frame);
-        trackTarget(*d.frame, deadline);
+        trackTarget(*d.frame, deadline, true);
         any = true;
     }
     if (!any)
@@ -246,7 +250,8 @@ void LaserAxisController::onDeadline()
     for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
         if (!it->awaiting || it->deadlineMs > now)
             continue;
-        it->awaiting = false; // still unconfirmed: it may be moving yet
+        it->awaiting = false;
+        it->unconfirmed = true; // no longer tracked, and it may be moving yet
         AxisStatus& axis = mutableStatus().axes[it.key()];
         axis.moving = false;
         // The axis is somewhere between where it was and the target: a relative move from the
@@ -282,8 +287,9 @@ void LaserAxisController::updateMachineFlags()
         unconfirmed = unconfirmed || t.unconfirmed;
     }
     s.busy = busy;
-    // A target out and no status frame back yet: the host cannot know that the axis stands.
-    // Cleared only when every axis has reported since its last target.
+    // An axis the host stopped tracking (arrival overdue, link closed or lost while a target
+    // was out) may still move: motion unconfirmed (docs/architecture.md) until a status frame
+    // from every such axis came. A target being tracked is motion, shown as busy/moving.
     if (unconfirmed)
         s.motionUnconfirmed = true;
     else

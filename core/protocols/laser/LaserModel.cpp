@@ -33,6 +33,8 @@ Capabilities capabilities()
     caps.reportsArrival = true; // "... after having reached its last commanded target"
     caps.jogByTargets = true;   // no jog command: short targets one after the other
     caps.doorSwitch = true;     // status '3' door opened, '4' door closed
+    // "target-position [0...99999]": a number without a unit (the axis gives it meaning).
+    caps.positionUnit = QT_TRANSLATE_NOOP("Units", "units");
     // Position units per second a jog target may cover per second of stick deflection; the
     // protocol has no speed, so this only sizes the short targets.
     caps.maxJogSpeed = 2000;

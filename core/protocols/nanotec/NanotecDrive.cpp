@@ -382,6 +382,12 @@ QByteArray NanotecDrive::inputsWord() const
     return QByteArray::number(w);
 }
 
+void NanotecDrive::injectPositionError()
+{
+    m_positionError = true;
+    pushError(error::Position);
+}
+
 void NanotecDrive::pushError(int code)
 {
     // 5.15: 32 slots used as a ring; after slot 32 the next error goes to slot 1.

@@ -47,6 +47,9 @@ public:
     void setSwitches(double negative, double positive);
     bool externalSwitchActuated() const;
     void pushError(int code); // error memory (5.15)
+    // Test fault: the encoder found the motor off its demand position (5.9/5.13: status bit
+    // "Positionsfehler", error memory 'Position'); 'D' (5.14) clears it.
+    void injectPositionError();
     int lastErrorSlot() const { return m_lastSlot; }
     bool answersDisabled() const { return m_silentMode; } // after '|0' (6.4)
     // Encoder, calibration (!101) and closed-loop reference run (!8) of manual 8.1.

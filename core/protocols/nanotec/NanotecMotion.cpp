@@ -42,9 +42,13 @@ QString NanotecController::motionRefusal(Axis axis, bool needsPosition) const
     const DriveState s = decodeStatus(d.status.value_or(0x01));
     if (d.motionPending || !s.ready)
         return tr("axis %1 is still moving (the drive is not ready)").arg(axisName(axis));
-    if (s.positionError)
-        return tr("%1 reports a position error; reset it first (reset-position-error)")
-            .arg(driveName(axis));
+    if (s.positionError) {
+        const QString how = options().actionNames.value(QStringLiteral("reset-position-error"));
+        return how.isEmpty() ? tr("%1 reports a position error; reset the position error first")
+                                   .arg(driveName(axis))
+                             : tr("%1 reports a position error; reset it first with %2")
+                                   .arg(driveName(axis), how);
+    }
     if (needsPosition && !status().axes.value(axis).positionKnown)
         return tr("absolute move refused: position of axis %1 is unknown, reference it first")
             .arg(axisName(axis));

@@ -117,12 +117,16 @@ void NanotecController::applyStatusWord(Drive& d, qint64 word)
     }
     if (s.positionError && !d.positionErrorReported) {
         d.positionErrorReported = true;
+        const QString deviation =
+            ParameterSchema::displayLabel(findParam(QStringLiteral("max-encoder-deviation"))->spec);
+        const QString how = options().actionNames.value(QStringLiteral("reset-position-error"));
         Q_EMIT errorOccurred(
-            tr("%1 reports a position error (encoder deviation above %2); reset it with "
-               "reset-position-error")
-                .arg(driveName(d.axis),
-                     ParameterSchema::displayLabel(
-                         findParam(QStringLiteral("max-encoder-deviation"))->spec)));
+            how.isEmpty()
+                ? tr("%1 reports a position error (encoder deviation above %2); reset the "
+                     "position error to go on")
+                      .arg(driveName(d.axis), deviation)
+                : tr("%1 reports a position error (encoder deviation above %2); reset it with %3")
+                      .arg(driveName(d.axis), deviation, how));
     }
     if (!s.positionError)
         d.positionErrorReported = false;

@@ -86,6 +86,8 @@ private Q_SLOTS:
     void sendRaw_moveFrame_arrivalConfirmsStandstill();
     void parameters_unsupported();
     void refreshStatus_noQuery_returnsLastReport();
+    void newTarget_afterLostTrack_staysUnconfirmedUntilReport();
+    void jogStep_commandedVelocity_untilEndOrLease();
 };
 
 void TestLaserAxisController::capabilities_honest()
@@ -100,6 +102,9 @@ void TestLaserAxisController::capabilities_honest()
     QVERIFY(caps.has(MotionMode::AbsoluteMove));
     QVERIFY(caps.has(MotionMode::Reference));
     QVERIFY(laser::modelInfo().schema.specs().isEmpty());
+    // Positions are the protocol's plain numbers, not steps (issue 16).
+    QCOMPARE(QString::fromLatin1(caps.positionUnit), QStringLiteral("units"));
+    QCOMPARE(QString::fromLatin1(Capabilities{}.positionUnit), QStringLiteral("steps"));
     QCOMPARE(laser::lineSettings().baudRate, 9600);
     QCOMPARE(laser::lineSettings().stopBits, 1);
 }
@@ -119,7 +124,9 @@ void TestLaserAxisController::home_sendsFrame_succeedsOnHomeSwitch()
     const RequestId id = rig.id();
     rig.controller->reference(id, {{Axis::X, 1}, {Axis::Y, 0}});
     QVERIFY(rig.controller->status().busy);
-    QVERIFY(rig.controller->status().motionUnconfirmed);
+    QVERIFY(rig.axis(Axis::X).moving);
+    // Tracked, awaiting its report: motion, not "unconfirmed" (issue 16: red on every jog).
+    QVERIFY(!rig.controller->status().motionUnconfirmed);
     QVERIFY(rig.waitFor(id));
     QVERIFY(rig.results[id].ok());
     QCOMPARE(rig.sim->receivedCommands(), (QList<CommandFrame>{{Command::Home, Axis::X, 0}}));
@@ -253,6 +260,7 @@ void TestLaserAxisController::moveAbsolute_silentAxis_timesOutUnconfirmed()
     QVERIFY(rig.open());
     const RequestId id = rig.id();
     rig.controller->moveAbsolute(id, {{Axis::Z, 400}});
+    QVERIFY(!rig.controller->status().motionUnconfirmed); // tracked until the deadline
     QVERIFY(rig.waitFor(id));
     QCOMPARE(rig.results[id].error, ErrorKind::Timeout);
     QVERIFY(rig.results[id].message.contains("Z"));
@@ -467,6 +475,62 @@ void TestLaserAxisController::refreshStatus_noQuery_returnsLastReport()
     QTest::qWait(20);
     QVERIFY(rig.sim->receivedCommands().isEmpty());
     QCOMPARE(rig.sim->rejectedFrames(), 0); // nothing at all went to the axes
+}
+
+void TestLaserAxisController::newTarget_afterLostTrack_staysUnconfirmedUntilReport()
+{
+    Rig rig(150);
+    rig.sim->faults().silent = true;
+    rig.sim->setSpeed(2000);
+    QVERIFY(rig.open());
+    const RequestId lost = rig.id();
+    rig.controller->moveAbsolute(lost, {{Axis::Y, 300}});
+    QVERIFY(rig.waitFor(lost));
+    QVERIFY(rig.controller->status().motionUnconfirmed);
+    // A new target does not prove the old motion ended: still unconfirmed ...
+    const RequestId next = rig.id();
+    rig.controller->moveAbsolute(next, {{Axis::Y, 350}});
+    QVERIFY(rig.controller->status().motionUnconfirmed);
+    // ... until the axis itself reports.
+    rig.sim->faults().silent = false;
+    QTRY_VERIFY_WITH_TIMEOUT(!rig.controller->status().motionUnconfirmed, 10000);
+    QVERIFY(!rig.sim->isMoving(Axis::Y));
+    QCOMPARE(rig.sim->position(Axis::Y), qint64(350));
+}
+
+void TestLaserAxisController::jogStep_commandedVelocity_untilEndOrLease()
+{
+    // Jog by targets: the rate each short target stands for is the commanded velocity (the
+    // jog panel showed +0 while the axes moved, issue 16).
+    Rig rig;
+    rig.sim->setSpeed(1000);
+    QVERIFY(rig.open());
+    const RequestId home = rig.id();
+    rig.controller->reference(home, {{Axis::X, 1}});
+    QVERIFY(rig.waitFor(home));
+    const RequestId step = rig.id();
+    rig.controller->jogStep(step, {{Axis::X, 100}}, {{Axis::X, 500.0}});
+    QCOMPARE(rig.axis(Axis::X).commandedVelocity, 500.0);
+    QCOMPARE(rig.axis(Axis::Y).commandedVelocity, 0.0);
+    QVERIFY(!rig.controller->status().motionUnconfirmed);
+    QTRY_VERIFY(rig.sim->isMoving(Axis::X));
+    QVERIFY(rig.waitFor(step));
+    QVERIFY(rig.results[step].ok());
+    QCOMPARE(rig.axis(Axis::X).commandedVelocity, 500.0); // the next step may follow at once
+    const RequestId again = rig.id();
+    rig.controller->jogStep(again, {{Axis::X, 100}}, {{Axis::X, 400.0}});
+    QCOMPARE(rig.axis(Axis::X).commandedVelocity, 400.0);
+    rig.controller->endJog(); // released: nothing more commanded, the step ends by itself
+    QCOMPARE(rig.axis(Axis::X).commandedVelocity, 0.0);
+    QVERIFY(rig.waitFor(again));
+    QCOMPARE(rig.sim->position(Axis::X), qint64(200));
+    // No next step within the lease after one ended: zero again without endJog().
+    const RequestId last = rig.id();
+    rig.controller->jogStep(last, {{Axis::X, -50}}, {{Axis::X, -250.0}});
+    QCOMPARE(rig.axis(Axis::X).commandedVelocity, -250.0);
+    QVERIFY(rig.waitFor(last));
+    QTRY_COMPARE(rig.axis(Axis::X).commandedVelocity, 0.0);
+    QVERIFY(!rig.sim->isMoving(Axis::X));
 }
 
 QTEST_GUILESS_MAIN(TestLaserAxisController)

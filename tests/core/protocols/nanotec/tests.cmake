@@ -9,3 +9,5 @@ stepdeck_add_test(tst_nanotecclosedloop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_na
                   ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
 stepdeck_add_test(tst_nanotecsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecsafety.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
+stepdeck_add_test(tst_nanotecpositionerror SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecpositionerror.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
