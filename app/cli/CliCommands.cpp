@@ -20,6 +20,7 @@ const QList<CommandOption> kPositioningOptions{{"no-wait"}, {"timeout", "MS"}};
 const CommandEntry kCommands[] = {
     {cmdPorts, false, {"ports", {}}},
     {cmdModels, false, {"models", {}}},
+    {cmdMachine, false, {"machine", {}}},
     {cmdParams, true, {"params", {}}},
     {cmdStatus, true, {"status", {}}},
     {cmdScan, true, {"scan", {{"first", "N"}, {"last", "N"}}}},

@@ -42,6 +42,7 @@ bool canVerify(const ModelInfo& model, const ParameterSet& set);
 // (commandSyntax()) are in context.options.
 Outcome cmdPorts(CliContext& c, QStringList args);
 Outcome cmdModels(CliContext& c, QStringList args);
+Outcome cmdMachine(CliContext& c, QStringList args); // CliMachineCommands.cpp
 Outcome cmdParams(CliContext& c, QStringList args);
 Outcome cmdStatus(CliContext& c, QStringList args);
 Outcome cmdScan(CliContext& c, QStringList args);

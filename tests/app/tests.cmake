@@ -35,3 +35,8 @@ add_dependencies(tst_guiidle_smoke stepdeck-bench stepdeck-sim stepdeck)
 stepdeck_add_test(tst_cli_closedloop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_closedloop.cpp
                   LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_closedloop stepdeck-cli)
+# stepdeck-cli machine check: machine descriptions validated without opening anything.
+stepdeck_add_test(tst_cli_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_machine.cpp
+                  LABELS integration)
+add_dependencies(tst_cli_machine stepdeck-cli)
+target_compile_definitions(tst_cli_machine PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")

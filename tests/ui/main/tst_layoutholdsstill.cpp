@@ -178,7 +178,12 @@ void TestLayoutHoldsStill::longMessage_movesNothing_textsInFull()
         QTRY_VERIFY(!w->context()->isConnected());
         connectModel(model);
     } else if (state == QLatin1String("panic")) {
-        w->panicAll(); // its banner and status line (refused on a model without a stop)
+        // Its banner and status line (refused on a model without a stop). The panic's result
+        // comes from the controller thread: wait for it, or it could overwrite the long
+        // message below when it comes late (seen under ASan).
+        QSignalSpy results(w->context()->session(), &ControllerSession::requestFinished);
+        w->panicAll();
+        QTRY_VERIFY(!results.isEmpty());
         QTRY_VERIFY(!w->lastError().isEmpty());
     }
     if (QTest::currentTestFailed())

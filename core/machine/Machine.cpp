@@ -1,0 +1,211 @@
+#include "Machine.h"
+#include "MachineFile.h"
+#include "protocols/Registry.h"
+
+namespace stepdeck::machine {
+
+namespace {
+// A machine's soft limits in units, as the controller enforces them in steps (the session
+// checks every move and limits the jog ramp: a GUI or program cannot go around them).
+SoftLimits stepLimitsOf(const MachineDescription& d, const QString& controllerId)
+{
+    SoftLimits limits;
+    for (const MachineAxis& a : d.axes) {
+        if (a.controller != controllerId || !a.hasSoftLimits())
+            continue;
+        const qint64 first = a.toSteps(*a.softMinimum);
+        const qint64 second = a.toSteps(*a.softMaximum);
+        AxisSoftLimit limit;
+        limit.rangeSet = true;
+        limit.minimum = qMin(first, second); // an inverted axis swaps the ends
+        limit.maximum = qMax(first, second);
+        limits.set(a.axis, limit);
+    }
+    return limits;
+}
+
+ConnectionSpec specOf(const MachineController& c)
+{
+    ConnectionSpec spec;
+    spec.modelId = c.modelId;
+    spec.port = c.port;
+    spec.options.axisAddresses = c.busAddresses;
+    if (c.resetLine)
+        spec.options.resetLine = *c.resetLine;
+    spec.simulator.addresses = c.busAddresses.values();
+    return spec;
+}
+} // namespace
+
+Machine::Machine(QObject* parent) : QObject(parent) {}
+
+Machine::~Machine()
+{
+    destroy();
+}
+
+bool Machine::create(const MachineDescription& description, QString* error)
+{
+    destroy();
+    MachineFileError invalid;
+    if (!MachineFile::validate(description, &invalid)) {
+        if (error)
+            *error = invalid.text();
+        return false;
+    }
+    m_description = description;
+    for (const MachineController& c : m_description.controllers) {
+        auto session = std::make_unique<ControllerSession>();
+        QString why;
+        if (!session->create(*findModel(c.modelId), specOf(c), &why)) {
+            if (error)
+                *error = tr("controller \"%1\": %2").arg(c.id, why);
+            destroy();
+            return false;
+        }
+        session->setSoftLimits(stepLimitsOf(m_description, c.id));
+        watch(c.id, session.get());
+        m_sessions.push_back(std::move(session));
+    }
+    return true;
+}
+
+void Machine::destroy()
+{
+    // Every session's destroy() stops its controller and flushes the stop before it closes;
+    // they are told in turn, but none of them waits for I/O of another.
+    for (auto& s : m_sessions)
+        s->disconnect(this);
+    m_sessions.clear();
+    for (const PendingMove& m : std::as_const(m_moves))
+        Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));
+    m_moves.clear();
+}
+
+ControllerSession* Machine::session(const QString& controllerId) const
+{
+    for (qsizetype i = 0; i < m_description.controllers.size(); ++i) {
+        if (m_description.controllers.at(i).id == controllerId && i < qsizetype(m_sessions.size()))
+            return m_sessions.at(i).get();
+    }
+    return nullptr;
+}
+
+QString Machine::controllerIdOf(const ControllerSession* session) const
+{
+    for (size_t i = 0; i < m_sessions.size(); ++i) {
+        if (m_sessions.at(i).get() == session)
+            return m_description.controllers.at(qsizetype(i)).id;
+    }
+    return {};
+}
+
+void Machine::open()
+{
+    for (auto& s : m_sessions)
+        s->open();
+}
+
+void Machine::close()
+{
+    for (auto& s : m_sessions)
+        s->close();
+}
+
+void Machine::stop()
+{
+    // Posted to every session (urgent: ahead of queued work) before anything is awaited:
+    // a slow link never holds back the stop of another controller.
+    for (auto& s : m_sessions)
+        s->stop();
+}
+
+void Machine::panic()
+{
+    for (auto& s : m_sessions)
+        s->panic();
+}
+
+void Machine::watch(const QString& controllerId, ControllerSession* session)
+{
+    connect(session, &ControllerSession::linkStateChanged, this,
+            [this, controllerId](LinkState state, const QString& reason) {
+                onLinkState(controllerId, state, reason);
+            });
+    connect(session, &ControllerSession::statusChanged, this, [this, session] {
+        onStatus(session);
+        Q_EMIT statusChanged();
+    });
+    connect(session, &ControllerSession::requestFinished, this,
+            [this, session](const CommandResult& r) { onResult(session, r); });
+}
+
+void Machine::onLinkState(const QString& controllerId, LinkState state, const QString& reason)
+{
+    Q_EMIT statusChanged();
+    if (state != LinkState::Lost)
+        return;
+    const ControllerSession* lost = session(controllerId);
+    stopAllBut(lost);
+    const QString message = tr("controller \"%1\" lost its link (%2): the other controllers were "
+                               "told to stop")
+                                .arg(controllerId, reason);
+    Q_EMIT controllerFailed(controllerId, message);
+    failMovesOf(lost, message);
+}
+
+void Machine::stopAllBut(const ControllerSession* failed)
+{
+    for (auto& s : m_sessions) {
+        if (s.get() != failed && s->linkState() == LinkState::Connected &&
+            s->capabilities().stopCommand)
+            s->stop();
+    }
+}
+
+MachineAxisStatus Machine::axisStatus(const MachineAxis& axis) const
+{
+    MachineAxisStatus out;
+    out.axis = &axis;
+    const ControllerSession* s = session(axis.controller);
+    if (!s)
+        return out;
+    const AxisStatus a = s->status().axes.value(axis.axis);
+    out.steps = a.position;
+    out.position = axis.toUnits(a.position);
+    out.moving = a.moving || a.jogging || a.motionUnknown;
+    if (s->linkState() != LinkState::Connected || !a.positionKnown)
+        out.known = PositionKnowledge::Unknown;
+    else if (a.positionEstimated || a.motionUnknown)
+        out.known = PositionKnowledge::Estimated;
+    else
+        out.known = PositionKnowledge::Referenced;
+    return out;
+}
+
+MachineState Machine::state(QString* controllerId) const
+{
+    MachineState worst = MachineState::Idle;
+    QString cause;
+    for (size_t i = 0; i < m_sessions.size(); ++i) {
+        const ControllerSession& s = *m_sessions.at(i);
+        MachineState here = MachineState::Idle;
+        if (s.linkState() == LinkState::Lost)
+            here = MachineState::LinkLost;
+        else if (s.linkState() != LinkState::Connected)
+            here = MachineState::Disconnected;
+        else if (s.status().panic)
+            here = MachineState::Fault;
+        else if (s.status().anyMoving())
+            here = MachineState::Moving;
+        if (int(here) > int(worst)) {
+            worst = here;
+            cause = m_description.controllers.at(qsizetype(i)).id;
+        }
+    }
+    if (controllerId)
+        *controllerId = cause;
+    return worst;
+}
+
+} // namespace stepdeck::machine

@@ -1,0 +1,115 @@
+#pragma once
+#include "MachineDescription.h"
+#include "controller/ControllerSession.h"
+#include <QObject>
+#include <memory>
+#include <vector>
+
+namespace stepdeck::machine {
+
+// How a shown position is known (docs/machines.md): read back or confirmed by a reference
+// run, estimated by the host, or unknown until the axis is referenced.
+enum class PositionKnowledge { Referenced, Estimated, Unknown };
+
+struct MachineAxisStatus
+{
+    const MachineAxis* axis = nullptr;
+    double position = 0; // the device's step count in the axis' unit
+    qint64 steps = 0;    // the controller's count
+    PositionKnowledge known = PositionKnowledge::Unknown;
+    bool moving = false; // moving, jogging, or motion not known (never shown as idle)
+};
+
+// The machine state, the worst over its controllers.
+enum class MachineState { Idle, Moving, Fault, Disconnected, LinkLost };
+
+// A machine of one or more controllers (issue 19), in its own units. It owns one
+// ControllerSession per controller, each in its own thread as for a single controller, and
+// reaches the controllers only through them. Safety across controllers
+// (docs/architecture.md): stop and panic are posted to every session before any is waited
+// for; a controller whose link is lost or whose part of a move fails gets the others stopped;
+// a move is checked as a whole and refused before anything is sent anywhere.
+class Machine : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Machine(QObject* parent = nullptr);
+    ~Machine() override;
+
+    // Validates the description and creates a session per controller (links not opened yet).
+    bool create(const MachineDescription& description, QString* error);
+    void destroy(); // every session stops its controller and closes (ControllerSession)
+    const MachineDescription& description() const { return m_description; }
+    ControllerSession* session(const QString& controllerId) const;
+
+    void open();
+    void close();
+    void stop();
+    void panic();
+
+    // Positioning in the axes' units (absolute or relative). Checked as a whole first: every
+    // axis known, its controller connected, an absolute target only on a referenced axis,
+    // targets within the soft limits. Returns the move's id, or 0 with *refusal saying why
+    // (nothing was sent). Each controller gets its part back to back; the move ends with
+    // moveFinished once every part has, or fails (the others stopped) when one part fails.
+    quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal);
+
+    MachineAxisStatus axisStatus(const MachineAxis& axis) const;
+    MachineState state(QString* controllerId = nullptr) const;
+
+Q_SIGNALS:
+    void statusChanged();
+    void moveFinished(quint64 id, bool ok, const QString& message);
+    // A controller failed (link lost, a refused or failed part of a move): the others were
+    // told to stop. The message names the controller.
+    void controllerFailed(const QString& controllerId, const QString& message);
+
+private:
+    // One controller's share of a move: sent, then (for models whose move request ends when
+    // the device accepted it) settling until a fresh status shows its axes at rest.
+    struct Part
+    {
+        ControllerSession* session = nullptr;
+        QList<Axis> axes;
+        // Where the device's count must end (models that read positions back): a part at rest
+        // elsewhere stopped before its target.
+        AxisVector expected;
+        RequestId request = 0;
+        RequestId refresh = 0;  // the status read after the request finished
+        bool accepted = false;  // the move request finished well
+        bool refreshed = false; // a status newer than the acceptance arrived
+    };
+    struct PendingMove
+    {
+        quint64 id;
+        QList<Part> parts;
+    };
+    struct StepTargets
+    {
+        ControllerSession* session;
+        AxisVector steps;
+    };
+
+    void watch(const QString& controllerId, ControllerSession* session);
+    void onLinkState(const QString& controllerId, LinkState state, const QString& reason);
+    void onResult(ControllerSession* session, const CommandResult& result);
+    void onStatus(ControllerSession* session);
+    bool onPartResult(Part& part, const CommandResult& result);
+    void finishArrivedMoves();
+    void failMovesOf(const ControllerSession* session, const QString& message);
+    void stopAllBut(const ControllerSession* failed);
+    QString checkMove(const QMap<QString, double>& units, bool absolute,
+                      QList<StepTargets>* plan) const;
+    QString checkAxisTarget(const MachineAxis& axis, double value, bool absolute,
+                            qint64* steps) const;
+    QString controllerIdOf(const ControllerSession* session) const;
+    QString machineAxisName(const ControllerSession* session, Axis axis) const;
+    QStringList shortOfTarget(const Part& part) const;
+
+    MachineDescription m_description;
+    std::vector<std::unique_ptr<ControllerSession>> m_sessions; // description's order
+    QList<PendingMove> m_moves;
+    quint64 m_lastMove = 0;
+};
+
+} // namespace stepdeck::machine

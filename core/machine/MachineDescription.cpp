@@ -1,0 +1,180 @@
+#include "MachineDescription.h"
+#include "model/ModelInfo.h"
+#include <QJsonArray>
+#include <cmath>
+
+namespace stepdeck::machine {
+
+namespace {
+struct UnitWord
+{
+    AxisUnit unit;
+    const char* key;
+};
+constexpr UnitWord kUnitWords[] = {
+    {AxisUnit::Millimetre, "mm"},
+    {AxisUnit::Degree, "deg"},
+    {AxisUnit::Step, "steps"},
+};
+
+QJsonObject controllerJson(const MachineController& c)
+{
+    QJsonObject o{{"id", c.id}, {"model", c.modelId}, {"port", c.port}};
+    if (!c.busAddresses.isEmpty()) {
+        QJsonObject map;
+        for (auto it = c.busAddresses.cbegin(); it != c.busAddresses.cend(); ++it)
+            map.insert(axisName(it.key()), it.value());
+        o.insert("axes", map);
+    }
+    if (c.resetLine)
+        o.insert("resetLine", resetLineName(*c.resetLine));
+    return o;
+}
+
+QJsonObject axisJson(const MachineAxis& a)
+{
+    QJsonObject o{{"name", a.name},
+                  {"controller", a.controller},
+                  {"axis", axisName(a.axis)},
+                  {"unit", unitKey(a.unit)},
+                  {"stepsPerUnit", a.stepsPerUnit}};
+    if (a.invert)
+        o.insert("invert", true);
+    if (a.hasSoftLimits())
+        o.insert("softLimits", QJsonArray{*a.softMinimum, *a.softMaximum});
+    if (a.maxJogSpeed)
+        o.insert("maxJogSpeed", *a.maxJogSpeed);
+    QJsonObject reference{{"order", a.referenceOrder}};
+    if (a.referenceDirection != 0)
+        reference.insert("direction", a.referenceDirection);
+    o.insert("reference", reference);
+    return o;
+}
+} // namespace
+
+QString unitKey(AxisUnit unit)
+{
+    for (const UnitWord& w : kUnitWords) {
+        if (w.unit == unit)
+            return QString::fromLatin1(w.key);
+    }
+    return {};
+}
+
+std::optional<AxisUnit> unitFromKey(const QString& key)
+{
+    for (const UnitWord& w : kUnitWords) {
+        if (key == QLatin1String(w.key))
+            return w.unit;
+    }
+    return std::nullopt;
+}
+
+qint64 MachineAxis::toSteps(double units) const
+{
+    // Clamped far beyond any controller's range (which the caller checks), so that a wild
+    // value cannot overflow the conversion.
+    constexpr double kLimit = 1e15;
+    const double product = units * stepsPerUnit;
+    const double exact = std::isfinite(product) ? qBound(-kLimit, product, kLimit) : 0.0;
+    const qint64 steps = std::llround(exact);
+    return invert ? -steps : steps;
+}
+
+double MachineAxis::toUnits(qint64 steps) const
+{
+    const double units = double(invert ? -steps : steps) / stepsPerUnit;
+    return units == 0 ? 0.0 : units; // never "-0.000"
+}
+
+double MachineAxis::toStepRate(double unitsPerSecond) const
+{
+    const double rate = unitsPerSecond * stepsPerUnit;
+    return invert ? -rate : rate;
+}
+
+const MachineController* MachineDescription::controller(const QString& id) const
+{
+    for (const MachineController& c : controllers) {
+        if (c.id == id)
+            return &c;
+    }
+    return nullptr;
+}
+
+const MachineAxis* MachineDescription::axis(const QString& axisNameInMachine) const
+{
+    for (const MachineAxis& a : axes) {
+        if (a.name == axisNameInMachine)
+            return &a;
+    }
+    return nullptr;
+}
+
+QList<QList<const MachineAxis*>> MachineDescription::referenceGroups() const
+{
+    QMap<int, QList<const MachineAxis*>> byOrder;
+    for (const MachineAxis& a : axes)
+        byOrder[a.referenceOrder].append(&a);
+    return byOrder.values();
+}
+
+MachineDescription MachineDescription::singleController(const ModelInfo& model,
+                                                        const QString& port,
+                                                        const QMap<Axis, int>& addresses)
+{
+    MachineDescription d;
+    d.name = model.displayName;
+    MachineController c;
+    c.id = model.id;
+    c.modelId = model.id;
+    c.port = port;
+    c.busAddresses = addresses;
+    d.controllers << c;
+    const QList<Axis> axes = addresses.isEmpty() ? model.capabilities.axes : addresses.keys();
+    for (Axis axis : axes) {
+        MachineAxis a;
+        a.name = axisName(axis);
+        a.controller = c.id;
+        a.axis = axis;
+        d.axes << a;
+    }
+    return d;
+}
+
+QJsonObject MachineDescription::toJson() const
+{
+    QJsonArray controllerList;
+    for (const MachineController& c : controllers)
+        controllerList.append(controllerJson(c));
+    QJsonArray axisList;
+    for (const MachineAxis& a : axes)
+        axisList.append(axisJson(a));
+    return {{"format", "stepdeck-machine"},
+            {"version", 1},
+            {"name", name},
+            {"controllers", controllerList},
+            {"axes", axisList}};
+}
+
+bool operator==(const MachineController& a, const MachineController& b)
+{
+    return a.id == b.id && a.modelId == b.modelId && a.port == b.port &&
+           a.busAddresses == b.busAddresses && a.resetLine == b.resetLine;
+}
+
+bool operator==(const MachineAxis& a, const MachineAxis& b)
+{
+    return a.name == b.name && a.controller == b.controller && a.axis == b.axis &&
+           a.unit == b.unit && a.stepsPerUnit == b.stepsPerUnit && a.invert == b.invert &&
+           a.softMinimum == b.softMinimum && a.softMaximum == b.softMaximum &&
+           a.maxJogSpeed == b.maxJogSpeed && a.referenceDirection == b.referenceDirection &&
+           a.referenceOrder == b.referenceOrder;
+}
+
+bool operator==(const MachineDescription& a, const MachineDescription& b)
+{
+    return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes;
+}
+
+} // namespace stepdeck::machine

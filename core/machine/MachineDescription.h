@@ -1,0 +1,84 @@
+#pragma once
+#include "model/Axis.h"
+#include "model/LineSettings.h"
+#include <QCoreApplication>
+#include <QJsonObject>
+#include <optional>
+
+namespace stepdeck {
+struct ModelInfo;
+}
+
+namespace stepdeck::machine {
+
+// What a machine axis counts in. Rotary axes are degrees, linear ones millimetres; "steps"
+// keeps the controller's own counts (a single controller without a machine file).
+enum class AxisUnit { Millimetre, Degree, Step };
+
+QString unitKey(AxisUnit unit); // "mm", "deg", "steps": the file's words
+std::optional<AxisUnit> unitFromKey(const QString& key);
+
+// One controller of a machine (docs/machines.md, "controllers").
+struct MachineController
+{
+    QString id;      // short name, unique in the machine ("table", "rotary")
+    QString modelId; // a registry id ("elab", "nanotec", ...)
+    QString port;    // device path, tcp://HOST:PORT, or "sim" for the in-process simulator
+    // Multi-drive models: controller axis -> bus address (the CLI's --axes). Empty: the
+    // model's default addresses.
+    QMap<Axis, int> busAddresses;
+    std::optional<LineSettings::ResetLine> resetLine; // models with a reset line only
+
+    bool isSimulated() const { return port == QLatin1String("sim"); }
+};
+
+// One named axis of a machine and the controller axis that drives it.
+struct MachineAxis
+{
+    QString name;       // X Y Z A B C U V W, unique in the machine
+    QString controller; // MachineController::id
+    Axis axis = Axis::X;
+    AxisUnit unit = AxisUnit::Step;
+    double stepsPerUnit = 1; // > 0, finite
+    bool invert = false;     // a positive machine move is a negative controller move
+    std::optional<double> softMinimum, softMaximum; // in unit; both or neither
+    std::optional<double> maxJogSpeed;              // unit/s
+    int referenceDirection = 0; // -1 or +1; 0: the file leaves it to the model's default
+    int referenceOrder = 0;     // lower orders are referenced first
+
+    // A target in units becomes the nearest whole step the device can hold.
+    qint64 toSteps(double units) const;
+    // The device's step count in units: the position shown is always one the device holds.
+    double toUnits(qint64 steps) const;
+    // A rate in unit/s as steps/s (sign kept, inversion applied).
+    double toStepRate(double unitsPerSecond) const;
+    bool hasSoftLimits() const { return softMinimum.has_value() && softMaximum.has_value(); }
+};
+
+// A machine: a name, its controllers and its named axes (docs/machines.md). Built by
+// MachineFile from a "stepdeck-machine" file, or by singleController() for --model/--port,
+// so the rest of StepDeck has one code path for both.
+struct MachineDescription
+{
+    QString name;
+    QList<MachineController> controllers;
+    QList<MachineAxis> axes;
+
+    const MachineController* controller(const QString& id) const;
+    const MachineAxis* axis(const QString& name) const;
+    // The axes in referencing order: groups of equal order, lowest first, file order inside.
+    QList<QList<const MachineAxis*>> referenceGroups() const;
+
+    // A machine of one controller: its axes keep their controller names, unit steps, 1 step
+    // per unit, no limits. `addresses` as for MachineController::busAddresses.
+    static MachineDescription singleController(const ModelInfo& model, const QString& port,
+                                               const QMap<Axis, int>& addresses = {});
+    // The file form (MachineFile::parse reads it back to an equal description).
+    QJsonObject toJson() const;
+};
+
+bool operator==(const MachineController& a, const MachineController& b);
+bool operator==(const MachineAxis& a, const MachineAxis& b);
+bool operator==(const MachineDescription& a, const MachineDescription& b);
+
+} // namespace stepdeck::machine

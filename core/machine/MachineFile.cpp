@@ -1,0 +1,326 @@
+#include "MachineFile.h"
+#include "model/NearestName.h"
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSaveFile>
+#include <cmath>
+
+namespace stepdeck::machine {
+
+namespace {
+
+// The structural half of reading a file: keys, presence and JSON types, with the field path
+// of every error. The rules about values (ranges, references, models) are
+// MachineFile::validate's, shared with the GUI editor.
+class Reader
+{
+public:
+    explicit Reader(MachineFileError* error) : m_error(error) {}
+
+    bool readTop(const QJsonObject& top, MachineDescription* d);
+
+private:
+    bool fail(const QString& field, const QString& message)
+    {
+        if (m_error) {
+            m_error->field = field;
+            m_error->message = message;
+        }
+        return false;
+    }
+    bool onlyKeys(const QJsonObject& o, const QString& path, const QStringList& allowed);
+    bool string(const QJsonObject& o, const QString& path, const char* key, QString* out,
+                bool required = true);
+    bool number(const QJsonObject& o, const QString& path, const char* key,
+                std::optional<double>* out);
+    bool readController(const QJsonValue& v, const QString& path, MachineController* c);
+    bool readAddresses(const QJsonValue& v, const QString& path, QMap<Axis, int>* out);
+    bool readAxis(const QJsonValue& v, const QString& path, MachineAxis* a);
+    bool readAxisValues(const QJsonObject& o, const QString& path, MachineAxis* a);
+    bool readReference(const QJsonValue& v, const QString& path, MachineAxis* a);
+    bool readSoftLimits(const QJsonValue& v, const QString& path, MachineAxis* a);
+
+    MachineFileError* m_error;
+};
+
+QString join(const QString& path, const char* key)
+{
+    return path.isEmpty() ? QString::fromLatin1(key) : path + QLatin1Char('.') + key;
+}
+
+bool isWhole(double v)
+{
+    return std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 1e9;
+}
+
+bool Reader::onlyKeys(const QJsonObject& o, const QString& path, const QStringList& allowed)
+{
+    for (const QString& key : o.keys()) {
+        if (allowed.contains(key))
+            continue;
+        const QString near = names::nearest(key, allowed);
+        return fail(join(path, key.toUtf8().constData()),
+                    near.isEmpty()
+                        ? MachineFile::tr("unknown key (known: %1)").arg(allowed.join(", "))
+                        : MachineFile::tr("unknown key (did you mean %1?)").arg(near));
+    }
+    return true;
+}
+
+bool Reader::string(const QJsonObject& o, const QString& path, const char* key, QString* out,
+                    bool required)
+{
+    const QJsonValue v = o.value(QLatin1String(key));
+    if (v.isUndefined()) {
+        return !required || fail(join(path, key), MachineFile::tr("missing"));
+    }
+    if (!v.isString())
+        return fail(join(path, key), MachineFile::tr("must be a text in quotes"));
+    *out = v.toString();
+    return true;
+}
+
+bool Reader::number(const QJsonObject& o, const QString& path, const char* key,
+                    std::optional<double>* out)
+{
+    const QJsonValue v = o.value(QLatin1String(key));
+    if (v.isUndefined())
+        return true;
+    if (!v.isDouble() || !std::isfinite(v.toDouble()))
+        return fail(join(path, key), MachineFile::tr("must be a decimal number"));
+    *out = v.toDouble();
+    return true;
+}
+
+bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
+{
+    if (!onlyKeys(top, {}, {"format", "version", "name", "controllers", "axes"}))
+        return false;
+    if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
+        return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
+    const QJsonValue version = top.value("version");
+    if (!version.isDouble() || version.toDouble() != 1)
+        return fail("version", MachineFile::tr("must be 1 (the version this StepDeck reads)"));
+    if (!string(top, {}, "name", &d->name))
+        return false;
+    const QJsonValue controllers = top.value("controllers");
+    if (!controllers.isArray())
+        return fail("controllers", MachineFile::tr("must be a list of controllers"));
+    for (qsizetype i = 0; i < controllers.toArray().size(); ++i) {
+        MachineController c;
+        if (!readController(controllers.toArray().at(i), QStringLiteral("controllers[%1]").arg(i),
+                            &c))
+            return false;
+        d->controllers << c;
+    }
+    const QJsonValue axes = top.value("axes");
+    if (!axes.isArray())
+        return fail("axes", MachineFile::tr("must be a list of axes"));
+    for (qsizetype i = 0; i < axes.toArray().size(); ++i) {
+        MachineAxis a;
+        if (!readAxis(axes.toArray().at(i), QStringLiteral("axes[%1]").arg(i), &a))
+            return false;
+        d->axes << a;
+    }
+    return true;
+}
+
+bool Reader::readController(const QJsonValue& v, const QString& path, MachineController* c)
+{
+    if (!v.isObject())
+        return fail(path, MachineFile::tr("must be an object {\"id\", \"model\", \"port\", \u2026}"));
+    const QJsonObject o = v.toObject();
+    if (!onlyKeys(o, path, {"id", "model", "port", "axes", "resetLine"}))
+        return false;
+    if (!string(o, path, "id", &c->id) || !string(o, path, "model", &c->modelId) ||
+        !string(o, path, "port", &c->port))
+        return false;
+    if (o.contains("axes") && !readAddresses(o.value("axes"), join(path, "axes"), &c->busAddresses))
+        return false;
+    QString line;
+    if (!string(o, path, "resetLine", &line, false))
+        return false;
+    if (o.contains("resetLine")) {
+        c->resetLine = resetLineFromName(line);
+        if (!c->resetLine)
+            return fail(join(path, "resetLine"), MachineFile::tr("must be \"rts\" or \"dtr\""));
+    }
+    return true;
+}
+
+bool Reader::readAddresses(const QJsonValue& v, const QString& path, QMap<Axis, int>* out)
+{
+    if (!v.isObject() || v.toObject().isEmpty())
+        return fail(path, MachineFile::tr("must map controller axes to bus addresses, e.g. "
+                                          "{\"X\": 1, \"Y\": 2}"));
+    const QJsonObject o = v.toObject();
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString field = path + QLatin1Char('.') + it.key();
+        const std::optional<Axis> axis = axisFromName(it.key());
+        if (!axis || axisName(*axis) != it.key())
+            return fail(field, MachineFile::tr("not a controller axis (X, Y, Z or U)"));
+        if (!it.value().isDouble() || !isWhole(it.value().toDouble()))
+            return fail(field, MachineFile::tr("must be a whole bus address"));
+        out->insert(*axis, int(it.value().toDouble()));
+    }
+    return true;
+}
+
+bool Reader::readAxis(const QJsonValue& v, const QString& path, MachineAxis* a)
+{
+    if (!v.isObject())
+        return fail(path, MachineFile::tr("must be an object {\"name\", \"controller\", \"axis\", "
+                                          "\"unit\", \u2026}"));
+    const QJsonObject o = v.toObject();
+    if (!onlyKeys(o, path,
+                  {"name", "controller", "axis", "unit", "stepsPerUnit", "invert", "softLimits",
+                   "maxJogSpeed", "reference"}))
+        return false;
+    return readAxisValues(o, path, a);
+}
+
+bool Reader::readAxisValues(const QJsonObject& o, const QString& path, MachineAxis* a)
+{
+    QString controllerAxis, unit;
+    if (!string(o, path, "name", &a->name) || !string(o, path, "controller", &a->controller) ||
+        !string(o, path, "axis", &controllerAxis) || !string(o, path, "unit", &unit))
+        return false;
+    const std::optional<Axis> axis = axisFromName(controllerAxis);
+    if (!axis || axisName(*axis) != controllerAxis)
+        return fail(join(path, "axis"), MachineFile::tr("not a controller axis (X, Y, Z or U)"));
+    a->axis = *axis;
+    const std::optional<AxisUnit> parsedUnit = unitFromKey(unit);
+    if (!parsedUnit)
+        return fail(join(path, "unit"), MachineFile::tr("must be \"mm\", \"deg\" or \"steps\""));
+    a->unit = *parsedUnit;
+    std::optional<double> steps;
+    if (!number(o, path, "stepsPerUnit", &steps))
+        return false;
+    if (!steps && a->unit != AxisUnit::Step)
+        return fail(join(path, "stepsPerUnit"), MachineFile::tr("missing"));
+    a->stepsPerUnit = steps.value_or(1.0);
+    const QJsonValue invert = o.value("invert");
+    if (!invert.isUndefined() && !invert.isBool())
+        return fail(join(path, "invert"), MachineFile::tr("must be true or false"));
+    a->invert = invert.toBool(false);
+    if (o.contains("softLimits") && !readSoftLimits(o.value("softLimits"), path, a))
+        return false;
+    if (!number(o, path, "maxJogSpeed", &a->maxJogSpeed))
+        return false;
+    return !o.contains("reference") || readReference(o.value("reference"), path, a);
+}
+
+bool Reader::readSoftLimits(const QJsonValue& v, const QString& path, MachineAxis* a)
+{
+    const QJsonArray pair = v.toArray();
+    if (!v.isArray() || pair.size() != 2 || !pair.at(0).isDouble() || !pair.at(1).isDouble())
+        return fail(join(path, "softLimits"),
+                    MachineFile::tr("must be [minimum, maximum] in the axis' unit"));
+    a->softMinimum = pair.at(0).toDouble();
+    a->softMaximum = pair.at(1).toDouble();
+    return true;
+}
+
+bool Reader::readReference(const QJsonValue& v, const QString& path, MachineAxis* a)
+{
+    const QString field = join(path, "reference");
+    if (!v.isObject())
+        return fail(field, MachineFile::tr("must be an object {\"direction\", \"order\"}"));
+    const QJsonObject o = v.toObject();
+    if (!onlyKeys(o, field, {"direction", "order"}))
+        return false;
+    const QJsonValue direction = o.value("direction");
+    if (!direction.isUndefined()) {
+        if (!direction.isDouble() || std::fabs(direction.toDouble()) != 1)
+            return fail(join(field, "direction"), MachineFile::tr("must be -1 or 1"));
+        a->referenceDirection = int(direction.toDouble());
+    }
+    const QJsonValue order = o.value("order");
+    if (!order.isUndefined()) {
+        if (!order.isDouble() || !isWhole(order.toDouble()))
+            return fail(join(field, "order"), MachineFile::tr("must be a whole number"));
+        a->referenceOrder = int(order.toDouble());
+    }
+    return true;
+}
+
+// Line and column (1-based) of a byte offset, as an editor counts them.
+void locate(const QByteArray& text, int offset, int* line, int* column)
+{
+    *line = 1;
+    int lineStart = 0;
+    for (int i = 0; i < offset && i < text.size(); ++i) {
+        if (text.at(i) == '\n') {
+            ++*line;
+            lineStart = i + 1;
+        }
+    }
+    *column = QString::fromUtf8(text.mid(lineStart, offset - lineStart)).size() + 1;
+}
+
+} // namespace
+
+QString MachineFileError::text() const
+{
+    if (line > 0)
+        return MachineFile::tr("line %1, column %2: %3").arg(line).arg(column).arg(message);
+    return field.isEmpty() ? message : field + QStringLiteral(": ") + message;
+}
+
+std::optional<MachineDescription> MachineFile::parse(const QByteArray& json,
+                                                     MachineFileError* error)
+{
+    MachineFileError local;
+    MachineFileError* e = error ? error : &local;
+    *e = {};
+    if (json.trimmed().isEmpty()) {
+        e->message = tr("the file is empty: a machine file holds a JSON object with \"format\": "
+                        "\"stepdeck-machine\"");
+        return std::nullopt;
+    }
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        locate(json, parseError.offset, &e->line, &e->column);
+        e->message = parseError.errorString();
+        return std::nullopt;
+    }
+    if (!doc.isObject()) {
+        e->message = tr("not a machine file: it holds no JSON object");
+        return std::nullopt;
+    }
+    MachineDescription d;
+    if (!Reader(e).readTop(doc.object(), &d) || !validate(d, e))
+        return std::nullopt;
+    return d;
+}
+
+std::optional<MachineDescription> MachineFile::load(const QString& path, MachineFileError* error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error) {
+            *error = {};
+            error->message = tr("cannot open %1: %2").arg(path, file.errorString());
+        }
+        return std::nullopt;
+    }
+    return parse(file.readAll(), error);
+}
+
+bool MachineFile::save(const MachineDescription& machine, const QString& path, QString* error)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(QJsonDocument(machine.toJson()).toJson(QJsonDocument::Indented)) < 0 ||
+        !file.commit()) {
+        if (error)
+            *error = tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace stepdeck::machine

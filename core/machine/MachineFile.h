@@ -1,0 +1,37 @@
+#pragma once
+#include "MachineDescription.h"
+
+namespace stepdeck::machine {
+
+// Where a machine file is wrong: the field as the file spells it ("axes[3].stepsPerUnit",
+// empty for the file as a whole), what is wrong with it, and for broken JSON the line and
+// column an editor shows.
+struct MachineFileError
+{
+    QString field;
+    QString message;
+    int line = 0; // 1-based; 0: not a JSON syntax error
+    int column = 0;
+
+    // "axes[3].stepsPerUnit: must be a decimal greater than 0 (is -2)"
+    QString text() const;
+};
+
+// Reads and validates "stepdeck-machine" files (docs/machines.md). Everything is checked
+// before anything is returned, against the registry's models: unknown keys, missing fields,
+// wrong types, duplicate names, an axis the controller does not have, a non-finite or
+// non-positive stepsPerUnit, min >= max. The first error is reported; nothing is opened.
+class MachineFile
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::machine::MachineFile)
+public:
+    static std::optional<MachineDescription> parse(const QByteArray& json,
+                                                   MachineFileError* error);
+    static std::optional<MachineDescription> load(const QString& path, MachineFileError* error);
+    // Validates a description built in memory (the GUI's editor) with the same rules.
+    static bool validate(const MachineDescription& machine, MachineFileError* error);
+    // Atomic (QSaveFile); false with *error set when the file cannot be written.
+    static bool save(const MachineDescription& machine, const QString& path, QString* error);
+};
+
+} // namespace stepdeck::machine

@@ -1,0 +1,326 @@
+// Machine: an E-LAB X/Y/Z table and a Nanotec rotary A as one machine, over two real
+// pseudo-terminals against the project's simulators (issue 19). Every assertion that matters
+// is made at the devices: the moves they accepted, the frames they received, whether they
+// stand still.
+#include "machine/Machine.h"
+#include "protocols/Registry.h"
+#include "sim/PtyEndpoint.h"
+#include <QSignalSpy>
+#include <QThread>
+#include <algorithm>
+#include <QtTest>
+#include <memory>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+
+namespace {
+
+// A simulator on a pty in a thread of its own, as a device is a world of its own: the
+// sessions' close (which waits for the device to acknowledge its stop) never waits for a
+// blocked test thread. Probes run in the device's thread.
+class Device
+{
+public:
+    explicit Device(const QString& modelId)
+    {
+        m_thread.start();
+        m_home.moveToThread(&m_thread);
+        const ModelInfo* info = findModel(modelId);
+        probe([&] {
+            m_end = new PtyEndpoint;
+            QString error;
+            if (!m_end->create(&error))
+                qFatal("pty: %s", qPrintable(error));
+            SimulatorOptions options;
+            options.line = info->line;
+            options.addresses = {1};
+            m_sim = info->createSimulator(options);
+            m_sim->attach(m_end);
+            m_path = m_end->slavePath();
+            return true;
+        });
+    }
+    ~Device()
+    {
+        probe([this] {
+            delete m_sim;
+            delete m_end;
+            return true;
+        });
+        m_thread.quit();
+        m_thread.wait();
+    }
+    QString path() const { return m_path; }
+    template <typename F> auto probe(F f) -> decltype(f())
+    {
+        decltype(f()) result{};
+        QMetaObject::invokeMethod(
+            &m_home, [&] { result = f(); }, Qt::BlockingQueuedConnection);
+        return result;
+    }
+    Simulator* sim() const { return m_sim; } // only inside probe()
+    void vanish()
+    {
+        probe([this] {
+            m_end->vanish();
+            return true;
+        });
+    }
+
+private:
+    QThread m_thread;
+    QObject m_home; // lives in m_thread
+    PtyEndpoint* m_end = nullptr;
+    Simulator* m_sim = nullptr;
+    QString m_path;
+};
+
+MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
+                 double stepsPerUnit)
+{
+    MachineAxis a;
+    a.name = name;
+    a.controller = controller;
+    a.axis = on;
+    a.unit = unit;
+    a.stepsPerUnit = stepsPerUnit;
+    return a;
+}
+
+qint64 acceptedSteps(Device& d, Axis axis)
+{
+    return d.probe([&] {
+        qint64 sum = 0;
+        for (const SimulatedMove& m : d.sim()->acceptedMoves()) {
+            if (m.axis == axis)
+                sum += m.steps;
+        }
+        return sum;
+    });
+}
+
+bool receivedContaining(Device& d, const QByteArray& part)
+{
+    return d.probe([&] {
+        const QList<QByteArray> frames = d.sim()->receivedFrames();
+        return std::any_of(frames.cbegin(), frames.cend(),
+                           [&](const QByteArray& f) { return f.contains(part); });
+    });
+}
+
+bool receivedStop(Device& d)
+{
+    return d.probe([&] {
+        const QList<QByteArray> frames = d.sim()->receivedFrames();
+        return std::any_of(frames.cbegin(), frames.cend(),
+                           [&](const QByteArray& f) { return d.sim()->isStopFrame(f); });
+    });
+}
+
+bool moving(Device& d)
+{
+    return d.probe([&] { return d.sim()->isMoving(Axis::X); });
+}
+
+bool still(Device& d)
+{
+    return d.probe([&] { return d.sim()->standingStill(); });
+}
+
+qint64 positionX(Device& d)
+{
+    return d.probe([&] { return d.sim()->position(Axis::X); });
+}
+
+int acceptedCount(Device& d)
+{
+    return d.probe([&] { return int(d.sim()->acceptedMoves().size()); });
+}
+
+} // namespace
+
+class TestMachine : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void move_xAndA_eachControllerGetsItsStepsAndPositionsReadBackInUnits();
+    void move_partRefused_nothingSentToEitherController();
+    void move_endsShortOfTarget_failsNamingTheAxis();
+    void stop_duringMoveOnBoth_bothDevicesStandStill();
+    void linkLost_nanotecVanishes_elabStopsAndTheControllerIsNamed();
+    void create_invalidDescription_refusedWithTheField();
+
+private:
+    MachineDescription description() const;
+    void writeElabSetup();
+
+    std::unique_ptr<Device> m_elab;
+    std::unique_ptr<Device> m_nanotec;
+    std::unique_ptr<Machine> m_machine;
+};
+
+MachineDescription TestMachine::description() const
+{
+    MachineDescription d;
+    d.name = QStringLiteral("Table with rotary axis");
+    MachineController table{QStringLiteral("table"), QStringLiteral("elab"),
+                            m_elab->path(), {}, {}};
+    MachineController rotary{QStringLiteral("rotary"), QStringLiteral("nanotec"),
+                             m_nanotec->path(), {{Axis::X, 1}}, {}};
+    d.controllers = {table, rotary};
+    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
+              axis("Z", "table", Axis::Z, AxisUnit::Millimetre, 800),
+              axis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
+    return d;
+}
+
+void TestMachine::init()
+{
+    m_elab = std::make_unique<Device>("elab");
+    m_nanotec = std::make_unique<Device>("nanotec");
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(description(), &error), qPrintable(error));
+    m_machine->open();
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("table")->linkState(), LinkState::Connected, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("rotary")->linkState(), LinkState::Connected,
+                              10000);
+    writeElabSetup();
+}
+
+void TestMachine::cleanup()
+{
+    m_machine.reset();
+    m_elab.reset();
+    m_nanotec.reset();
+}
+
+// The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
+void TestMachine::writeElabSetup()
+{
+    ControllerSession* table = m_machine->session("table");
+    const ModelInfo* info = table->model();
+    ParameterSet set;
+    for (const QString& name : info->setupBeforeMotion) {
+        const ParameterSpec* spec = info->schema.find(name);
+        ParameterValue v;
+        for (Axis a : info->capabilities.axes)
+            v.perAxis.insert(a, spec->defaultValue);
+        set.insert(name, v);
+    }
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    const RequestId id = table->writeParameters(set, false);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
+                                         [id](const QList<QVariant>& args) {
+                                             const auto r = args.at(0).value<CommandResult>();
+                                             return r.id == id && r.ok();
+                                         }),
+                             10000);
+}
+
+void TestMachine::move_xAndA_eachControllerGetsItsStepsAndPositionsReadBackInUnits()
+{
+    QSignalSpy finished(m_machine.get(), &Machine::moveFinished);
+    QString refusal;
+    // (The simulated drive's limit switches sit at +-3000 steps: 25 deg stay inside.)
+    const quint64 id = m_machine->move({{"X", 2.5}, {"A", 25}}, false, &refusal);
+    QVERIFY2(id != 0, qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    QCOMPARE(finished.at(0).at(0).toULongLong(), id);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    // At the devices: 2.5 mm x 400 steps/mm on the board's X, 25 deg x 100 steps/deg on drive 1.
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), qint64(1000));
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), qint64(2500));
+    QVERIFY(receivedContaining(*m_nanotec, "s2500"));
+    QCOMPARE(positionX(*m_elab), qint64(1000));
+    QCOMPARE(positionX(*m_nanotec), qint64(2500));
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
+    // Shown in units: the devices' counts converted back.
+    const MachineAxisStatus a = m_machine->axisStatus(*m_machine->description().axis("A"));
+    QCOMPARE(a.steps, qint64(2500));
+    QCOMPARE(a.position, 25.0);
+    QCOMPARE(m_machine->axisStatus(*m_machine->description().axis("X")).position, 2.5);
+}
+
+void TestMachine::move_partRefused_nothingSentToEitherController()
+{
+    QString refusal;
+    // Absolute targets on unreferenced axes: A (the Nanotec part) is refused, so X is not sent.
+    QCOMPARE(m_machine->move({{"X", 1.0}, {"A", 5.0}}, true, &refusal), quint64(0));
+    QVERIFY2(refusal.contains("A is not referenced"), qPrintable(refusal));
+    // A (checked first) is fine, X is not: the whole move is refused, A's part is not sent.
+    QCOMPARE(m_machine->move({{"A", 5.0}, {"X", qQNaN()}}, false, &refusal), quint64(0));
+    QVERIFY2(refusal.contains("X: the target is not a finite number"), qPrintable(refusal));
+    QCOMPARE(m_machine->move({{"X", 1.0}, {"Q", 5.0}}, false, &refusal), quint64(0));
+    QVERIFY2(refusal.contains("no axis Q"), qPrintable(refusal));
+    // Three more status polls of each controller: a move sent before them would have been
+    // received by now (one request in flight per link). No move reached either device.
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QSignalSpy rotary(m_machine->session("rotary"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3 && rotary.size() >= 3, 10000);
+    QVERIFY(acceptedCount(*m_elab) == 0);
+    QVERIFY(acceptedCount(*m_nanotec) == 0);
+}
+
+void TestMachine::move_endsShortOfTarget_failsNamingTheAxis()
+{
+    QSignalSpy finished(m_machine.get(), &Machine::moveFinished);
+    QString refusal;
+    // 90 deg = 9000 steps: the drive stops at its limit switch at 3000 (and frees it).
+    QVERIFY(m_machine->move({{"A", 90}}, false, &refusal) != 0);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    QVERIFY(!finished.at(0).at(1).toBool());
+    QVERIFY2(finished.at(0).at(2).toString().contains("A stands at"),
+             qPrintable(finished.at(0).at(2).toString()));
+    QVERIFY(still(*m_nanotec));
+    QVERIFY(positionX(*m_nanotec) < 9000);
+}
+
+void TestMachine::stop_duringMoveOnBoth_bothDevicesStandStill()
+{
+    QString refusal;
+    QVERIFY(m_machine->move({{"X", 200.0}, {"A", 3600.0}}, false, &refusal) != 0);
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab) && moving(*m_nanotec),
+                             10000);
+    QSignalSpy finished(m_machine.get(), &Machine::moveFinished);
+    m_machine->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab) && still(*m_nanotec), 10000);
+    QVERIFY(receivedStop(*m_elab));
+    QVERIFY(receivedStop(*m_nanotec));
+    QVERIFY(positionX(*m_elab) < 80000);
+    QVERIFY(positionX(*m_nanotec) < 3000); // stopped, not at its limit switch
+}
+
+void TestMachine::linkLost_nanotecVanishes_elabStopsAndTheControllerIsNamed()
+{
+    QSignalSpy failed(m_machine.get(), &Machine::controllerFailed);
+    QString refusal;
+    QVERIFY(m_machine->move({{"X", 200.0}}, false, &refusal) != 0);
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    m_nanotec->vanish();
+    // Within the poll-loss time the machine learns of it and the table is told to stop.
+    QTRY_VERIFY_WITH_TIMEOUT(!failed.isEmpty(), 10000);
+    QCOMPARE(failed.at(0).at(0).toString(), QStringLiteral("rotary"));
+    QVERIFY(failed.at(0).at(1).toString().contains("rotary"));
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(receivedStop(*m_elab));
+    QVERIFY(positionX(*m_elab) < 80000);
+}
+
+void TestMachine::create_invalidDescription_refusedWithTheField()
+{
+    MachineDescription d = description();
+    d.axes[3].stepsPerUnit = 0;
+    Machine other;
+    QString error;
+    QVERIFY(!other.create(d, &error));
+    QVERIFY2(error.startsWith("axes[3].stepsPerUnit"), qPrintable(error));
+    QVERIFY(!other.session("table"));
+}
+
+QTEST_GUILESS_MAIN(TestMachine)
+#include "tst_machine.moc"
