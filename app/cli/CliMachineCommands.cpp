@@ -72,8 +72,8 @@ Outcome cmdMachine(CliContext& c, QStringList args)
     machine::MachineFileError error;
     const std::optional<MachineDescription> m = machine::MachineFile::load(path, &error);
     if (!m)
-        return Outcome::failure(ExitInvalidValue,
-                                CliText::tr("%1: %2").arg(QFileInfo(path).fileName(), error.text()));
+        return Outcome::failure(
+            ExitInvalidValue, CliText::tr("%1: %2").arg(QFileInfo(path).fileName(), error.text()));
     if (c.json())
         printJson(m->toJson());
     else

@@ -119,8 +119,7 @@ QList<QList<const MachineAxis*>> MachineDescription::referenceGroups() const
     return byOrder.values();
 }
 
-MachineDescription MachineDescription::singleController(const ModelInfo& model,
-                                                        const QString& port,
+MachineDescription MachineDescription::singleController(const ModelInfo& model, const QString& port,
                                                         const QMap<Axis, int>& addresses)
 {
     MachineDescription d;

@@ -130,7 +130,8 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 bool Reader::readController(const QJsonValue& v, const QString& path, MachineController* c)
 {
     if (!v.isObject())
-        return fail(path, MachineFile::tr("must be an object {\"id\", \"model\", \"port\", \u2026}"));
+        return fail(path,
+                    MachineFile::tr("must be an object {\"id\", \"model\", \"port\", \u2026}"));
     const QJsonObject o = v.toObject();
     if (!onlyKeys(o, path, {"id", "model", "port", "axes", "resetLine"}))
         return false;

@@ -25,8 +25,7 @@ class MachineFile
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::machine::MachineFile)
 public:
-    static std::optional<MachineDescription> parse(const QByteArray& json,
-                                                   MachineFileError* error);
+    static std::optional<MachineDescription> parse(const QByteArray& json, MachineFileError* error);
     static std::optional<MachineDescription> load(const QString& path, MachineFileError* error);
     // Validates a description built in memory (the GUI's editor) with the same rules.
     static bool validate(const MachineDescription& machine, MachineFileError* error);

@@ -39,7 +39,8 @@ quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString
                 part.expected.insert(it.key(), absolute ? it.value() : from + it.value());
             }
         }
-        part.request = absolute ? t.session->moveAbsolute(t.steps) : t.session->moveRelative(t.steps);
+        part.request =
+            absolute ? t.session->moveAbsolute(t.steps) : t.session->moveRelative(t.steps);
         pending.parts << part;
     }
     m_moves << pending;
@@ -94,8 +95,7 @@ QString Machine::checkAxisTarget(const MachineAxis& axis, double value, bool abs
             .arg(axis.name);
     const double here = axis.toUnits(a.position);
     const double to = absolute ? value : here + value;
-    if (axis.hasSoftLimits() && referenced &&
-        (to < *axis.softMinimum || to > *axis.softMaximum))
+    if (axis.hasSoftLimits() && referenced && (to < *axis.softMinimum || to > *axis.softMaximum))
         return tr("%1 %2 %3 is outside the soft limits %4..%5")
             .arg(axis.name)
             .arg(to)
@@ -170,9 +170,9 @@ void Machine::finishArrivedMoves()
         // At rest but not where it was sent (a limit switch, a stop from elsewhere): the
         // machine never claims an arrival the devices did not report.
         if (!shortOf.isEmpty())
-            Q_EMIT moveFinished(id, false,
-                                tr("the move ended before its target: %1")
-                                    .arg(shortOf.join(QStringLiteral("; "))));
+            Q_EMIT moveFinished(
+                id, false,
+                tr("the move ended before its target: %1").arg(shortOf.join(QStringLiteral("; "))));
         else
             Q_EMIT moveFinished(id, true, QString());
     }

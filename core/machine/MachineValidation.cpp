@@ -93,8 +93,9 @@ bool Checker::addresses(const MachineController& c, const ModelInfo& model, cons
         return true;
     const Capabilities& caps = model.capabilities;
     if (!caps.multiDrive)
-        return fail(path + QStringLiteral(".axes"),
-                    MachineFile::tr("%1 has no drives on a bus: leave \"axes\" out").arg(c.modelId));
+        return fail(
+            path + QStringLiteral(".axes"),
+            MachineFile::tr("%1 has no drives on a bus: leave \"axes\" out").arg(c.modelId));
     QSet<int> used;
     for (auto it = c.busAddresses.cbegin(); it != c.busAddresses.cend(); ++it) {
         const QString field = path + QStringLiteral(".axes.") + axisName(it.key());
@@ -104,7 +105,8 @@ bool Checker::addresses(const MachineController& c, const ModelInfo& model, cons
                                    .arg(caps.minBusAddress)
                                    .arg(caps.maxBusAddress));
         if (used.contains(it.value()))
-            return fail(field, MachineFile::tr("bus address %1 is given to two axes").arg(it.value()));
+            return fail(field,
+                        MachineFile::tr("bus address %1 is given to two axes").arg(it.value()));
         used.insert(it.value());
     }
     return true;
@@ -165,8 +167,9 @@ bool Checker::axis(const MachineDescription& d, const MachineAxis& a, const QStr
 bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QString& path)
 {
     if (!std::isfinite(a.stepsPerUnit) || a.stepsPerUnit <= 0)
-        return fail(path + QStringLiteral(".stepsPerUnit"),
-                    MachineFile::tr("must be a decimal greater than 0 (is %1)").arg(a.stepsPerUnit));
+        return fail(
+            path + QStringLiteral(".stepsPerUnit"),
+            MachineFile::tr("must be a decimal greater than 0 (is %1)").arg(a.stepsPerUnit));
     if (a.unit == AxisUnit::Step && a.stepsPerUnit != 1)
         return fail(path + QStringLiteral(".stepsPerUnit"),
                     MachineFile::tr("must be 1 for an axis counted in steps"));
@@ -178,8 +181,9 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
     if (a.maxJogSpeed) {
         const double stepsPerSecond = *a.maxJogSpeed * a.stepsPerUnit;
         if (!std::isfinite(*a.maxJogSpeed) || *a.maxJogSpeed <= 0)
-            return fail(path + QStringLiteral(".maxJogSpeed"),
-                        MachineFile::tr("must be a speed greater than 0 in %1/s").arg(unitText(a.unit)));
+            return fail(
+                path + QStringLiteral(".maxJogSpeed"),
+                MachineFile::tr("must be a speed greater than 0 in %1/s").arg(unitText(a.unit)));
         if (stepsPerSecond > model.capabilities.maxJogSpeed)
             return fail(path + QStringLiteral(".maxJogSpeed"),
                         MachineFile::tr("%1 %2/s is %3 steps/s, above the %4 steps/s %5 can jog")
@@ -195,7 +199,8 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
                                     "\"direction\" out")
                         .arg(model.id));
     if (a.referenceDirection != 0 && std::abs(a.referenceDirection) != 1)
-        return fail(path + QStringLiteral(".reference.direction"), MachineFile::tr("must be -1 or 1"));
+        return fail(path + QStringLiteral(".reference.direction"),
+                    MachineFile::tr("must be -1 or 1"));
     if (a.referenceOrder < 0 || a.referenceOrder > 99)
         return fail(path + QStringLiteral(".reference.order"),
                     MachineFile::tr("must be a whole number from 0 to 99"));

@@ -46,9 +46,9 @@ int TestCliMachine::run(const QStringList& args, QByteArray* out, QByteArray* er
 void TestCliMachine::check_example_printsAxesInReferenceOrder()
 {
     QByteArray out, err;
-    QCOMPARE(run({"machine", "check", m_examples + "elab-xyz-nanotec-rotary.machine.json"}, &out,
-                 &err),
-             0);
+    QCOMPARE(
+        run({"machine", "check", m_examples + "elab-xyz-nanotec-rotary.machine.json"}, &out, &err),
+        0);
     QVERIFY2(out.contains("2 controllers, 4 axes"), out.constData());
     QVERIFY(out.contains("rotary") && out.contains("drives X=1"));
     // Z (order 0) before X and Y (1) before A (2).

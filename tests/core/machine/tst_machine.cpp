@@ -7,8 +7,8 @@
 #include "sim/PtyEndpoint.h"
 #include <QSignalSpy>
 #include <QThread>
-#include <algorithm>
 #include <QtTest>
+#include <algorithm>
 #include <memory>
 
 using namespace stepdeck;
@@ -166,10 +166,10 @@ MachineDescription TestMachine::description() const
 {
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
-    MachineController table{QStringLiteral("table"), QStringLiteral("elab"),
-                            m_elab->path(), {}, {}};
-    MachineController rotary{QStringLiteral("rotary"), QStringLiteral("nanotec"),
-                             m_nanotec->path(), {{Axis::X, 1}}, {}};
+    MachineController table{
+        QStringLiteral("table"), QStringLiteral("elab"), m_elab->path(), {}, {}};
+    MachineController rotary{
+        QStringLiteral("rotary"), QStringLiteral("nanotec"), m_nanotec->path(), {{Axis::X, 1}}, {}};
     d.controllers = {table, rotary};
     d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
               axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
@@ -186,7 +186,8 @@ void TestMachine::init()
     QString error;
     QVERIFY2(m_machine->create(description(), &error), qPrintable(error));
     m_machine->open();
-    QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("table")->linkState(), LinkState::Connected, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("table")->linkState(), LinkState::Connected,
+                              10000);
     QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("rotary")->linkState(), LinkState::Connected,
                               10000);
     writeElabSetup();
@@ -284,8 +285,7 @@ void TestMachine::stop_duringMoveOnBoth_bothDevicesStandStill()
 {
     QString refusal;
     QVERIFY(m_machine->move({{"X", 200.0}, {"A", 3600.0}}, false, &refusal) != 0);
-    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab) && moving(*m_nanotec),
-                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab) && moving(*m_nanotec), 10000);
     QSignalSpy finished(m_machine.get(), &Machine::moveFinished);
     m_machine->stop();
     QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab) && still(*m_nanotec), 10000);

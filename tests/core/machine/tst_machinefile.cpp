@@ -121,48 +121,60 @@ void TestMachineFile::parse_invalid_namesTheField_data()
 
     QTest::newRow("wrong format") << withEdit("format", "stepdeck-parameters") << "format"
                                   << "stepdeck-machine";
-    QTest::newRow("version 2") << withEdit("version", 2) << "version" << "must be 1";
-    QTest::newRow("no name") << withEdit("name", {}, true) << "name" << "missing";
+    QTest::newRow("version 2") << withEdit("version", 2) << "version"
+                               << "must be 1";
+    QTest::newRow("no name") << withEdit("name", {}, true) << "name"
+                             << "missing";
     QTest::newRow("unknown top key") << withEdit("axis", QJsonArray()) << "axis"
                                      << "did you mean axes?";
     QTest::newRow("no controllers") << withEdit("controllers", QJsonArray()) << "controllers"
                                     << "at least one controller";
     QTest::newRow("controller not object") << withEdit("controllers.0", 5) << "controllers[0]"
                                            << "must be an object";
-    QTest::newRow("unknown model") << withEdit("controllers.1.model", "nanotek")
-                                   << "controllers[1].model" << "nanotec";
-    QTest::newRow("model not text") << withEdit("controllers.1.model", 3)
-                                    << "controllers[1].model" << "text";
+    QTest::newRow("unknown model")
+        << withEdit("controllers.1.model", "nanotek") << "controllers[1].model"
+        << "nanotec";
+    QTest::newRow("model not text") << withEdit("controllers.1.model", 3) << "controllers[1].model"
+                                    << "text";
     QTest::newRow("duplicate id") << withEdit("controllers.1.id", "table") << "controllers[1].id"
                                   << "another controller";
     QTest::newRow("bad id") << withEdit("controllers.0.id", "1 table") << "controllers[0].id"
                             << "short name";
     QTest::newRow("empty port") << withEdit("controllers.0.port", " ") << "controllers[0].port"
                                 << "serial port";
-    QTest::newRow("reset line word") << withEdit("controllers.0.resetLine", "cts")
-                                     << "controllers[0].resetLine" << "rts";
-    QTest::newRow("reset line on nanotec") << withEdit("controllers.1.resetLine", "rts")
-                                           << "controllers[1].resetLine" << "no reset line";
-    QTest::newRow("bus map on elab") << withEdit("controllers.0.axes", QJsonObject{{"X", 1}})
-                                     << "controllers[0].axes" << "no drives on a bus";
+    QTest::newRow("reset line word")
+        << withEdit("controllers.0.resetLine", "cts") << "controllers[0].resetLine"
+        << "rts";
+    QTest::newRow("reset line on nanotec")
+        << withEdit("controllers.1.resetLine", "rts") << "controllers[1].resetLine"
+        << "no reset line";
+    QTest::newRow("bus map on elab")
+        << withEdit("controllers.0.axes", QJsonObject{{"X", 1}}) << "controllers[0].axes"
+        << "no drives on a bus";
     QTest::newRow("address 0") << withEdit("controllers.1.axes", QJsonObject{{"X", 0}})
-                               << "controllers[1].axes.X" << "outside 1..254";
+                               << "controllers[1].axes.X"
+                               << "outside 1..254";
     QTest::newRow("address 255") << withEdit("controllers.1.axes", QJsonObject{{"X", 255}})
-                                 << "controllers[1].axes.X" << "outside 1..254";
+                                 << "controllers[1].axes.X"
+                                 << "outside 1..254";
     QTest::newRow("address twice")
         << withEdit("controllers.1.axes", QJsonObject{{"X", 4}, {"Y", 4}})
-        << "controllers[1].axes.Y" << "two axes";
-    QTest::newRow("address not whole") << withEdit("controllers.1.axes", QJsonObject{{"X", 1.5}})
-                                       << "controllers[1].axes.X" << "whole";
-    QTest::newRow("no axes") << withEdit("axes", QJsonArray()) << "axes" << "at least one axis";
+        << "controllers[1].axes.Y"
+        << "two axes";
+    QTest::newRow("address not whole")
+        << withEdit("controllers.1.axes", QJsonObject{{"X", 1.5}}) << "controllers[1].axes.X"
+        << "whole";
+    QTest::newRow("no axes") << withEdit("axes", QJsonArray()) << "axes"
+                             << "at least one axis";
     QTest::newRow("unknown axis key") << withEdit("axes.3.stepPerUnit", 4) << "axes[3].stepPerUnit"
                                       << "did you mean stepsPerUnit?";
     QTest::newRow("axis name Q") << withEdit("axes.1.name", "Q") << "axes[1].name"
                                  << "X Y Z A B C U V W";
     QTest::newRow("duplicate axis name") << withEdit("axes.3.name", "X") << "axes[3].name"
                                          << "another axis";
-    QTest::newRow("unknown controller") << withEdit("axes.3.controller", "rotery")
-                                        << "axes[3].controller" << "did you mean rotary?";
+    QTest::newRow("unknown controller")
+        << withEdit("axes.3.controller", "rotery") << "axes[3].controller"
+        << "did you mean rotary?";
     QTest::newRow("controller axis missing") << withEdit("axes.3.axis", "Y") << "axes[3].axis"
                                              << "has no axis Y";
     QTest::newRow("elab has no U") << withEdit("axes.2.axis", "U") << "axes[2].axis"
@@ -171,38 +183,53 @@ void TestMachineFile::parse_invalid_namesTheField_data()
                                << "controller axis";
     QTest::newRow("controller axis twice") << withEdit("axes.1.axis", "X") << "axes[1].axis"
                                            << "already drives";
-    QTest::newRow("unit inch") << withEdit("axes.0.unit", "inch") << "axes[0].unit" << "mm";
-    QTest::newRow("steps per unit missing") << withEdit("axes.3.stepsPerUnit", {}, true)
-                                            << "axes[3].stepsPerUnit" << "missing";
-    QTest::newRow("steps per unit negative") << withEdit("axes.3.stepsPerUnit", -2)
-                                             << "axes[3].stepsPerUnit" << "greater than 0 (is -2)";
-    QTest::newRow("steps per unit zero") << withEdit("axes.3.stepsPerUnit", 0)
-                                         << "axes[3].stepsPerUnit" << "greater than 0";
-    QTest::newRow("steps per unit text") << withEdit("axes.3.stepsPerUnit", "400")
-                                         << "axes[3].stepsPerUnit" << "decimal";
-    QTest::newRow("steps unit scaled")
-        << withEdit("axes.2", QJsonObject{{"name", "Z"}, {"controller", "table"}, {"axis", "Z"},
-                                          {"unit", "steps"}, {"stepsPerUnit", 2}})
-        << "axes[2].stepsPerUnit" << "must be 1";
+    QTest::newRow("unit inch") << withEdit("axes.0.unit", "inch") << "axes[0].unit"
+                               << "mm";
+    QTest::newRow("steps per unit missing")
+        << withEdit("axes.3.stepsPerUnit", {}, true) << "axes[3].stepsPerUnit"
+        << "missing";
+    QTest::newRow("steps per unit negative")
+        << withEdit("axes.3.stepsPerUnit", -2) << "axes[3].stepsPerUnit"
+        << "greater than 0 (is -2)";
+    QTest::newRow("steps per unit zero")
+        << withEdit("axes.3.stepsPerUnit", 0) << "axes[3].stepsPerUnit"
+        << "greater than 0";
+    QTest::newRow("steps per unit text")
+        << withEdit("axes.3.stepsPerUnit", "400") << "axes[3].stepsPerUnit"
+        << "decimal";
+    QTest::newRow("steps unit scaled") << withEdit("axes.2", QJsonObject{{"name", "Z"},
+                                                                         {"controller", "table"},
+                                                                         {"axis", "Z"},
+                                                                         {"unit", "steps"},
+                                                                         {"stepsPerUnit", 2}})
+                                       << "axes[2].stepsPerUnit"
+                                       << "must be 1";
     QTest::newRow("invert text") << withEdit("axes.1.invert", "yes") << "axes[1].invert"
                                  << "true or false";
-    QTest::newRow("limits reversed") << withEdit("axes.0.softLimits", QJsonArray{300, 0})
-                                     << "axes[0].softLimits" << "below the maximum";
+    QTest::newRow("limits reversed")
+        << withEdit("axes.0.softLimits", QJsonArray{300, 0}) << "axes[0].softLimits"
+        << "below the maximum";
     QTest::newRow("limits equal") << withEdit("axes.0.softLimits", QJsonArray{5, 5})
-                                  << "axes[0].softLimits" << "below the maximum";
-    QTest::newRow("limits one value") << withEdit("axes.0.softLimits", QJsonArray{5})
-                                      << "axes[0].softLimits" << "[minimum, maximum]";
+                                  << "axes[0].softLimits"
+                                  << "below the maximum";
+    QTest::newRow("limits one value")
+        << withEdit("axes.0.softLimits", QJsonArray{5}) << "axes[0].softLimits"
+        << "[minimum, maximum]";
     QTest::newRow("jog speed zero") << withEdit("axes.0.maxJogSpeed", 0) << "axes[0].maxJogSpeed"
                                     << "greater than 0";
     // E-LAB jogs at most Capabilities::maxJogSpeed steps/s: 400 steps/mm limit the mm/s.
     QTest::newRow("jog speed above the controller")
-        << withEdit("axes.0.maxJogSpeed", 1000) << "axes[0].maxJogSpeed" << "steps/s";
+        << withEdit("axes.0.maxJogSpeed", 1000) << "axes[0].maxJogSpeed"
+        << "steps/s";
     QTest::newRow("direction 2") << withEdit("axes.0.reference.direction", 2)
-                                 << "axes[0].reference.direction" << "-1 or 1";
-    QTest::newRow("order negative") << withEdit("axes.0.reference.order", -1)
-                                    << "axes[0].reference.order" << "0 to 99";
-    QTest::newRow("reference key") << withEdit("axes.0.reference.speed", 3)
-                                   << "axes[0].reference.speed" << "unknown key";
+                                 << "axes[0].reference.direction"
+                                 << "-1 or 1";
+    QTest::newRow("order negative")
+        << withEdit("axes.0.reference.order", -1) << "axes[0].reference.order"
+        << "0 to 99";
+    QTest::newRow("reference key")
+        << withEdit("axes.0.reference.speed", 3) << "axes[0].reference.speed"
+        << "unknown key";
 }
 
 void TestMachineFile::parse_invalid_namesTheField()
@@ -238,7 +265,8 @@ void TestMachineFile::parse_emptyFile_saysSo()
 
 void TestMachineFile::saveAndLoad_roundTrip_equal()
 {
-    const std::optional<MachineDescription> m = MachineFile::parse(bytes(tableAndRotary()), nullptr);
+    const std::optional<MachineDescription> m =
+        MachineFile::parse(bytes(tableAndRotary()), nullptr);
     QVERIFY(m);
     QTemporaryDir dir;
     const QString path = dir.filePath("machine.json");
@@ -305,7 +333,8 @@ void TestMachineFile::toSteps_nearestWholeStep_andBack()
 
 void TestMachineFile::referenceGroups_lowestOrderFirst()
 {
-    const std::optional<MachineDescription> m = MachineFile::parse(bytes(tableAndRotary()), nullptr);
+    const std::optional<MachineDescription> m =
+        MachineFile::parse(bytes(tableAndRotary()), nullptr);
     QVERIFY(m);
     const QList<QList<const MachineAxis*>> groups = m->referenceGroups();
     QCOMPARE(groups.size(), 2);
