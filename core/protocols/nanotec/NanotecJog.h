@@ -32,6 +32,7 @@ private:
     void stopJog(HostDrive& d, bool zeroConfirmed);
     Done jogDone(Axis axis, JogPhase next, double applied);
     QList<Step> rampDownSteps(HostDrive& d, NanotecBus::Priority priority);
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

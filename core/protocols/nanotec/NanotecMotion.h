@@ -32,6 +32,7 @@ public:
 
 private:
     QString unknownAxes(const QList<Axis>& axes) const;
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

@@ -31,6 +31,7 @@ private:
     void simple(RequestId id, Axis axis, const QByteArray& body);
     void resetPosition(RequestId id, Axis axis);
     void startRecord(RequestId id, Axis axis, int record);
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

@@ -34,6 +34,7 @@ private:
     QList<Step> motorAddressSteps(Axis axis, int address, bool verify);
     // Why a parameter write is refused before anything is sent (empty: it is not).
     QString writeRefusal(const ParameterSet& values) const;
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

@@ -26,6 +26,7 @@ public:
 
 private:
     Step readRecordStep(Axis axis, int record, std::shared_ptr<QVariantMap> out);
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

@@ -37,6 +37,7 @@ private:
     void pollDrive(QList<Axis> remaining, bool withInputs, std::shared_ptr<bool> answered);
 
     quint64 m_sweeps = 0;
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };

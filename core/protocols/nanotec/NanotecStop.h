@@ -31,6 +31,7 @@ public:
 private:
     bool mayMove(const HostDrive& d) const; // as far as the host can tell
     void confirmStopped(RequestId id, QList<Axis> axes, const QString& context);
+
     NanotecController& m_ctl;
     NanotecExchange& m_link;
 };
