@@ -1,6 +1,6 @@
 // The closed-loop operations of a Nanotec drive (manual 8.1): check, state, enable, and the
 // start of the calibration and closed-loop reference runs. The runs themselves are tracked
-// in NanotecClosedLoopRun.cpp.
+// by NanotecClosedLoopRun.
 #include "NanotecClosedLoop.h"
 #include "NanotecController.h"
 
@@ -45,10 +45,10 @@ void NanotecClosedLoop::operation(RequestId id, const QString& name, Axis axis,
         return check(id, axis);
     if (name == cl::kEnable)
         return enable(id, axis, args.value(QStringLiteral("on"), true).toBool());
-    if (m_runs.contains(axis)) {
+    if (const NanotecClosedLoopRun::Run* run = m_run.find(axis)) {
         return m_ctl->finishError(
             id, ErrorKind::Refused,
-            tr("%1 is already in its %2").arg(m_ctl->driveName(axis), runName(m_runs[axis].kind)));
+            tr("%1 is already in its %2").arg(m_ctl->driveName(axis), m_run.runName(run->kind)));
     }
     if (name == cl::kCalibrate)
         return start(id, axis, Kind::Calibration, 0);
@@ -60,12 +60,6 @@ void NanotecClosedLoop::operation(RequestId id, const QString& name, Axis axis,
                 .arg(direction));
     }
     start(id, axis, Kind::Reference, direction);
-}
-
-QString NanotecClosedLoop::runName(Kind kind) const
-{
-    return kind == Kind::Calibration ? tr("calibration run (!101)")
-                                     : tr("closed-loop reference run (!8)");
 }
 
 QString& NanotecClosedLoop::memoryOf(Axis axis, Kind kind)
@@ -83,7 +77,7 @@ QVariantMap NanotecClosedLoop::state(Axis axis) const
                   {cl::kReferenceRun, memory.reference}};
     if (memory.enabled)
         s.insert(cl::kEnabled, *memory.enabled);
-    if (const auto it = m_runs.constFind(axis); it != m_runs.cend()) {
+    if (const NanotecClosedLoopRun::Run* it = m_run.find(axis)) {
         s.insert(cl::kRun,
                  QString(it->kind == Kind::Calibration ? cl::kRunCalibration : cl::kRunReference));
         s.insert(cl::kElapsedMs, it->clock.elapsed());
@@ -114,12 +108,12 @@ QStringList NanotecClosedLoop::motorDataProblems(const QVariantMap& data) const
 void NanotecClosedLoop::check(RequestId id, Axis axis)
 {
     auto data = std::make_shared<QVariantMap>();
-    QList<NanotecController::Step> steps;
+    QList<Step> steps;
     for (const Reading& r : kMotorData) {
         const ParamDef* def = findParam(QString::fromLatin1(r.parameter));
         Q_ASSERT(def);
         // Numbers as the drive reports them; the step angle in degrees ("1.8"), as 'a' says.
-        steps << m_ctl->readStep(
+        steps << m_ctl->m_parameters.readStep(
             axis, *def,
             [data, def, key = r.key](qint64 wire) {
                 data->insert(key, key == cl::kStepAngle ? fromWire(*def, wire)
@@ -128,7 +122,7 @@ void NanotecClosedLoop::check(RequestId id, Axis axis)
             },
             nullptr);
     }
-    m_ctl->runSteps(steps, [this, id, axis, data](const NanotecController::Failure& f) {
+    runSteps(steps, [this, id, axis, data](const Failure& f) {
         if (!f.ok())
             return m_ctl->finishWith(id, f);
         m_memory[axis].enabled = data->value(cl::kEnabled).toBool();
@@ -143,15 +137,15 @@ void NanotecClosedLoop::check(RequestId id, Axis axis)
 void NanotecClosedLoop::enable(RequestId id, Axis axis, bool on)
 {
     if (on) {
-        if (const QString why = m_ctl->motionRefusal(axis, false); !why.isEmpty())
+        if (const QString why = m_ctl->m_motion.motionRefusal(axis, false); !why.isEmpty())
             return m_ctl->finishError(id, ErrorKind::Refused, why);
     }
     const ParamDef* def = findParam(QStringLiteral("cl-enable"));
     auto data = std::make_shared<QVariantMap>();
-    QList<NanotecController::Step> steps;
+    QList<Step> steps;
     if (on)
         steps << readMotorData(axis, data);
-    steps << [this, axis, data, on](const NanotecController::Done& done) {
+    steps << [this, axis, data, on](const Done& done) {
         const QStringList problems = on ? motorDataProblems(*data) : QStringList();
         if (problems.isEmpty())
             return done({});
@@ -162,10 +156,10 @@ void NanotecClosedLoop::enable(RequestId id, Axis axis, bool on)
                   .arg(m_ctl->driveName(axis), problems.join(QStringLiteral("; ")))});
     };
     auto kept = std::make_shared<qint64>(-1);
-    steps << m_ctl->writeStep(axis, *def, on ? 1 : 0)
-          << m_ctl->readStep(
+    steps << m_ctl->m_parameters.writeStep(axis, *def, on ? 1 : 0)
+          << m_ctl->m_parameters.readStep(
                  axis, *def, [kept](qint64 v) { *kept = v; }, nullptr);
-    m_ctl->runSteps(steps, [this, id, axis, on, kept, def](const NanotecController::Failure& f) {
+    runSteps(steps, [this, id, axis, on, kept, def](const Failure& f) {
         if (!f.ok())
             return m_ctl->finishWith(id, f);
         m_memory[axis].enabled = *kept == 1;
@@ -185,54 +179,53 @@ void NanotecClosedLoop::enable(RequestId id, Axis axis, bool on)
 
 void NanotecClosedLoop::start(RequestId id, Axis axis, Kind kind, int direction)
 {
-    if (const QString why = m_ctl->motionRefusal(axis, false); !why.isEmpty())
+    if (const QString why = m_ctl->m_motion.motionRefusal(axis, false); !why.isEmpty())
         return m_ctl->finishError(id, ErrorKind::Refused, why);
     auto data = std::make_shared<QVariantMap>();
     auto mode = std::make_shared<qint64>(1);
     auto modeSet = std::make_shared<bool>(false);
-    QList<NanotecController::Step> steps = readMotorData(axis, data);
-    steps << m_ctl->exchange(axis, "Z!", NanotecController::sink([mode](qint64 v) { *mode = v; }));
-    steps << [this, axis, kind, data](const NanotecController::Done& done) {
+    QList<Step> steps = readMotorData(axis, data);
+    steps << m_ctl->m_exchange.exchange(axis, "Z!", sink([mode](qint64 v) { *mode = v; }));
+    steps << [this, axis, kind, data](const Done& done) {
         QStringList problems = motorDataProblems(*data);
         if (kind == Kind::Calibration && data->value(cl::kEnabled).toLongLong() == 1)
             problems << tr("closed loop is on; switch it off first");
         if (problems.isEmpty())
             return done({});
         done({ErrorKind::Refused, tr("%1 not started on %2: %3")
-                                      .arg(runName(kind), m_ctl->driveName(axis),
+                                      .arg(m_run.runName(kind), m_ctl->driveName(axis),
                                            problems.join(QStringLiteral("; ")))});
     };
     const qint64 runMode = kind == Kind::Calibration ? 101 : 8;
-    steps << [modeSet](const NanotecController::Done& done) {
+    steps << [modeSet](const Done& done) {
         *modeSet = true;
         done({});
     };
-    steps << m_ctl->setting(axis, "!" + QByteArray::number(runMode))
-          << m_ctl->expectValue(axis, "!", runMode);
+    steps << m_ctl->m_exchange.setting(axis, "!" + QByteArray::number(runMode))
+          << m_ctl->m_exchange.expectValue(axis, "!", runMode);
     if (kind == Kind::Reference) {
-        steps << m_ctl->setting(axis, direction > 0 ? "d1" : "d0")
-              << m_ctl->expectValue(axis, "d", direction > 0 ? 1 : 0);
+        steps << m_ctl->m_exchange.setting(axis, direction > 0 ? "d1" : "d0")
+              << m_ctl->m_exchange.expectValue(axis, "d", direction > 0 ? 1 : 0);
     }
-    steps << m_ctl->startRun(axis);
-    m_ctl->runSteps(steps, [=](const NanotecController::Failure& f) {
+    steps << m_ctl->m_exchange.startRun(axis);
+    runSteps(steps, [=](const Failure& f) {
         if (f.ok())
-            return begin(id, axis, kind, *mode);
+            return m_run.begin(id, axis, kind, restorableMode(*mode));
         if (*modeSet && f.kind != ErrorKind::Cancelled) // not started: the old mode again
-            m_ctl->tolerant(m_ctl->setting(axis, "!" + QByteArray::number(restorableMode(*mode))))(
-                [](const NanotecController::Failure&) {});
+            tolerant(m_ctl->m_exchange.setting(
+                axis, "!" + QByteArray::number(restorableMode(*mode))))([](const Failure&) {});
         m_ctl->finishWith(id, f);
     });
 }
 
-QList<NanotecController::Step> NanotecClosedLoop::readMotorData(Axis axis,
-                                                                std::shared_ptr<QVariantMap> data)
+QList<Step> NanotecClosedLoop::readMotorData(Axis axis, std::shared_ptr<QVariantMap> data)
 {
     // What a run and closed loop on depend on (8.1): pole pairs, encoder data, closed loop.
-    QList<NanotecController::Step> steps;
+    QList<Step> steps;
     for (const Reading& r : kMotorData) {
         if (r.key == cl::kEncoderPosition || r.key == cl::kPosition || r.key == cl::kStepAngle)
             continue;
-        steps << m_ctl->readStep(
+        steps << m_ctl->m_parameters.readStep(
             axis, *findParam(QString::fromLatin1(r.parameter)),
             [data, key = r.key](qint64 wire) { data->insert(key, wire); }, nullptr);
     }

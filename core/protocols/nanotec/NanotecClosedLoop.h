@@ -1,4 +1,5 @@
 #pragma once
+#include "NanotecClosedLoopRun.h"
 #include "NanotecController.h"
 #include "model/Axis.h"
 #include "model/ClosedLoop.h"
@@ -45,25 +46,14 @@ public:
     void operation(RequestId id, const QString& name, Axis axis, const QVariantMap& args);
     // STOP, PANIC, link loss, close: every run ends now; its request fails with kind. The
     // controller sends the stop itself ('S' to every drive with motion pending).
-    void abortAll(ErrorKind kind, const QString& why);
-    bool isRunning(Axis axis) const { return m_runs.contains(axis); }
+    void abortAll(ErrorKind kind, const QString& why) { m_run.abortAll(kind, why); }
+    bool isRunning(Axis axis) const { return m_run.find(axis) != nullptr; }
     // For DriveStatus::detail: "calibration run 2.1 s" while a run is on, else empty.
-    QString runDetail(Axis axis) const;
+    QString runDetail(Axis axis) const { return m_run.runDetail(axis); }
 
 private:
-    enum class Kind { Calibration, Reference };
-    struct Run
-    {
-        Kind kind = Kind::Calibration;
-        RequestId id = 0;
-        quint64 generation = 0;
-        QElapsedTimer clock;
-        qint64 restoreMode = 1;
-        qint64 position = 0;
-        std::optional<qint64> encoder;
-        bool ended = false;   // the drive said ready; its result is being read
-        bool sawBusy = false; // a status word of the run showed the drive busy
-    };
+    friend class NanotecClosedLoopRun; // records what a run did (memoryOf)
+    using Kind = ClosedLoopRunKind;
     struct Memory // what this connection saw of one drive
     {
         QString calibration = closedloop::kResultNone;
@@ -73,27 +63,17 @@ private:
 
     void check(RequestId id, Axis axis);
     void start(RequestId id, Axis axis, Kind kind, int direction);
-    void begin(RequestId id, Axis axis, Kind kind, qint64 previousMode);
     void enable(RequestId id, Axis axis, bool on);
     QVariantMap state(Axis axis) const;
-    void monitor(Axis axis, quint64 generation);
-    void onMonitored(Axis axis, quint64 generation, qint64 word);
-    void readResult(Axis axis, quint64 generation, bool failed);
-    QString failureText(Axis axis, Kind kind, int code) const;
-    void endRun(Axis axis, ErrorKind kind, const QString& message, const QVariantMap& value = {});
-    bool current(Axis axis, quint64 generation) const;
-    QString runName(Kind kind) const;
     QString& memoryOf(Axis axis, Kind kind);
     QStringList motorDataProblems(const QVariantMap& data) const;
     // Reads pole pairs, encoder increments and revolutions, closed loop on/off (wire values).
-    QList<NanotecController::Step> readMotorData(Axis axis, std::shared_ptr<QVariantMap> data);
+    QList<Step> readMotorData(Axis axis, std::shared_ptr<QVariantMap> data);
     static qint64 restorableMode(qint64 mode);
-    int deadlineMs(Kind kind) const;
 
     NanotecController* m_ctl;
-    QMap<Axis, Run> m_runs;
     QMap<Axis, Memory> m_memory;
-    quint64 m_generation = 0;
+    NanotecClosedLoopRun m_run{m_ctl, *this};
 };
 
 } // namespace stepdeck::nanotec

@@ -1,11 +1,12 @@
-// Link, drive initialisation, status sweeps and the normalised status of a Nanotec bus.
+// The Nanotec adapter: the link, the drive table and the Controller interface, each request
+// handed to the part that does it (NanotecController.h).
 #include "NanotecController.h"
 #include "Logging.h"
 #include "NanotecClosedLoop.h"
 #include "NanotecLogging.h"
 #include "NanotecModel.h"
+#include "model/ModelOperations.h"
 #include "transport/Transport.h"
-#include <QtMath>
 
 namespace stepdeck::nanotec {
 
@@ -24,7 +25,7 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
                                 .arg(axisName(it.key()));
         }
         seen << it.value();
-        Drive d;
+        HostDrive d;
         d.axis = it.key();
         d.address = it.value();
         m_drives.insert(it.key(), d);
@@ -33,7 +34,8 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
     m_bus = new NanotecBus(transport, this);
     m_closedLoop = new NanotecClosedLoop(this);
     m_bus->setDefaultTimeout(options.commandTimeoutMs);
-    connect(m_bus, &NanotecBus::unsolicited, this, &NanotecController::onUnsolicited);
+    connect(m_bus, &NanotecBus::unsolicited, this,
+            [this](const Reply& reply) { m_sweep.onUnsolicited(reply); });
     connect(m_bus, &NanotecBus::garbage, this, [this] { ++mutableStatus().resyncCount; });
     connect(m_bus, &NanotecBus::traffic, this,
             [this](TrafficRecord::Direction dir, const QByteArray& bytes, bool poll) {
@@ -41,7 +43,7 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
             });
     m_userPollMs = options.pollIntervalMs;
     m_poller.setMissLimit(options.missedPollsForLinkLoss);
-    connect(&m_poller, &StatusPoller::pollDue, this, &NanotecController::onPollDue);
+    connect(&m_poller, &StatusPoller::pollDue, this, [this] { m_sweep.onPollDue(); });
     connect(&m_poller, &StatusPoller::linkLost, this, [this](int misses) {
         loseLink(tr("no drive answered %1 status sweeps in a row").arg(misses));
     });
@@ -51,7 +53,7 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
         connect(transport, &Transport::failed, this,
                 [this](const QString& reason) { handleTransportFailure(reason); });
     }
-    updateStatus();
+    m_sweep.updateStatus();
 }
 
 NanotecController::~NanotecController() = default;
@@ -71,28 +73,41 @@ QString NanotecController::driveName(Axis axis) const
     return tr("drive %1 (axis %2)").arg(m_drives.value(axis).address).arg(axisName(axis));
 }
 
-int NanotecController::sweepBudgetMs() const
-{
-    // Per drive and sweep: "#1$\r" + "001$17\r" + "#1C\r" + "001C-1234567\r" = 27 characters,
-    // plus a quarter of "#1ZY\r" + "001ZY196671\r" for the inputs: about 31 characters.
-    int drives = 0;
-    for (const Drive& d : m_drives)
-        drives += d.responding ? 1 : 0;
-    const double us = qMax(1, drives) * 31 * lineSettings().characterTimeUs();
-    return int(qCeil(us / 1000.0));
-}
-
-int NanotecController::pollTimeoutMs() const
-{
-    // A status reply is under 15 characters (8 ms at 19200 baud): a short timeout keeps a
-    // silent drive from stalling the sweep of the others.
-    return qMin(options().commandTimeoutMs, 150);
-}
-
 void NanotecController::setPollInterval(int ms)
 {
     m_userPollMs = qMax(1, ms);
     m_poller.setInterval(qMax(m_userPollMs, sweepBudgetMs()));
+}
+
+void NanotecController::finishWith(RequestId id, const Failure& failure, const QVariant& value)
+{
+    if (failure.ok())
+        finishOk(id, value);
+    else
+        finishError(id, failure.kind, failure.message);
+}
+
+HostDrive* NanotecController::driveFor(const QVariantMap& args, RequestId id)
+{
+    const auto axis =
+        axisFromName(args.value(QStringLiteral("axis"), QStringLiteral("X")).toString());
+    if (!axis || !m_drives.contains(*axis)) {
+        finishError(id, ErrorKind::InvalidValue,
+                    tr("unknown axis '%1' (this machine has %2)")
+                        .arg(args.value(QStringLiteral("axis")).toString())
+                        .arg([this] {
+                            QStringList n;
+                            for (Axis a : m_drives.keys())
+                                n << axisName(a);
+                            return n.join(QLatin1Char(','));
+                        }()));
+        return nullptr;
+    }
+    if (linkState() != LinkState::Connected) {
+        finishError(id, ErrorKind::LinkDown, tr("not connected"));
+        return nullptr;
+    }
+    return &m_drives[*axis];
 }
 
 // ---------------------------------------------------------------- link
@@ -119,83 +134,116 @@ void NanotecController::onTransportOpened()
 {
     m_bus->resetDecoder();
     if (m_pendingOpen)
-        initialiseDrives();
+        m_sweep.initialiseDrives();
     else if (m_pendingScan)
-        runPendingScan();
+        m_operations.runPendingScan();
 }
 
-void NanotecController::initialiseDrives()
+// ---------------------------------------------------------------- the parts
+
+void NanotecController::readParameters(RequestId id, const QStringList& names)
 {
-    m_initialising = true;
-    QList<Step> perDrive;
-    for (Axis axis : m_drives.keys()) {
-        // Firmware first (5.22): a drive that does not answer it is flagged and skipped; the
-        // rest only fills caches, so a drive that answers but refuses one of them stays.
-        Step identify = exchange(
-            axis, "v",
-            [this, axis](const Reply& r) {
-                m_drives[axis].firmware = r.firmware.text;
-                return Failure{};
-            },
-            NanotecBus::Priority::Command, 1);
-        QList<Step> rest{
-            // Auto status off (5.31): on a polled half-duplex bus a 'j' the drive sends by
-            // itself collides with the poll of another drive.
-            tolerant(exchange(axis, "J0")),
-            tolerant(exchange(
-                axis, "Ze", sink([this, axis](qint64 v) { m_drives[axis].limitSwitchType = v; }))),
-            tolerant(exchange(axis, "Zu",
-                              sink([this, axis](qint64 v) { m_drives[axis].minFrequency = v; }))),
-            tolerant(exchange(axis, "Zo",
-                              sink([this, axis](qint64 v) { m_drives[axis].maxFrequency = v; }))),
-            tolerant(
-                exchange(axis, "Zb", sink([this, axis](qint64 v) { m_drives[axis].ramp = v; }))),
-            tolerant(exchange(
-                axis, "$", sink([this, axis](qint64 v) { applyStatusWord(m_drives[axis], v); }))),
-            tolerant(
-                exchange(axis, "C", sink([this, axis](qint64 v) { m_drives[axis].position = v; }))),
-        };
-        perDrive << [this, axis, identify, rest](const Done& done) {
-            identify([this, axis, rest, done](const Failure& f) {
-                Drive& d = m_drives[axis];
-                d.responding = f.kind != ErrorKind::Timeout && f.kind != ErrorKind::Cancelled;
-                d.misses = d.responding ? 0 : m_poller.missLimit();
-                if (!f.ok())
-                    qCWarning(lcNanotec) << "initialising" << driveName(axis) << ":" << f.message;
-                if (!d.responding)
-                    return done({});
-                runSteps(rest, [done](const Failure&) { done({}); });
-            });
-        };
-    }
-    runSteps(perDrive, [this](const Failure&) {
-        m_initialising = false;
-        QStringList silent;
-        for (const Drive& d : m_drives) {
-            if (!d.responding)
-                silent << QString::number(d.address);
-        }
-        const RequestId id = m_pendingOpen;
-        m_pendingOpen = 0;
-        if (silent.size() == m_drives.size()) {
-            const QString why = tr("no drive answered at address %1 (19200 baud 8N1)")
-                                    .arg(silent.join(QStringLiteral(", ")));
-            if (transport())
-                transport()->close();
-            setLinkState(LinkState::Disconnected, why);
-            finishError(id, ErrorKind::Timeout, why);
-            return;
-        }
-        setLinkState(LinkState::Connected);
-        setPollInterval(m_userPollMs);
-        m_poller.start();
-        updateStatus();
-        publishStatus();
-        if (!silent.isEmpty())
-            Q_EMIT errorOccurred(tr("no answer from drive %1; the other drives work")
-                                     .arg(silent.join(QStringLiteral(", "))));
-        finishOk(id);
-    });
+    m_parameters.readParameters(id, names);
+}
+
+void NanotecController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+{
+    m_parameters.writeParameters(id, values, verify);
+}
+
+void NanotecController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    m_motion.moveRelative(id, steps);
+}
+
+void NanotecController::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    m_motion.moveAbsolute(id, targets);
+}
+
+void NanotecController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    m_motion.referenceWithType(id, directions, false);
+}
+
+void NanotecController::velocityMove(RequestId id, const AxisVector& stepsPerS)
+{
+    m_motion.velocityMove(id, stepsPerS);
+}
+
+void NanotecController::stop(RequestId id)
+{
+    m_stop.stop(id);
+}
+
+void NanotecController::panic(RequestId id)
+{
+    m_stop.panic(id);
+}
+
+void NanotecController::reset(RequestId id)
+{
+    m_stop.reset(id);
+}
+
+void NanotecController::refreshStatus(RequestId id)
+{
+    m_sweep.refreshStatus(id);
+}
+
+void NanotecController::sendRaw(RequestId id, const QByteArray& bytes)
+{
+    m_operations.sendRaw(id, bytes);
+}
+
+void NanotecController::scanBus(RequestId id)
+{
+    m_operations.modelOperation(id, operation::kScan, {});
+}
+
+void NanotecController::modelOperation(RequestId id, const QString& name, const QVariantMap& args)
+{
+    m_operations.modelOperation(id, name, args);
+}
+
+void NanotecController::applyJogVelocity(const AxisVelocities& stepsPerS)
+{
+    m_jog.applyJogVelocity(stepsPerS);
+}
+
+QString NanotecController::jogRefusal() const
+{
+    return Controller::jogRefusal();
+}
+
+QString NanotecController::jogAxisRefusal(Axis axis, double target) const
+{
+    return m_motion.belowStartFrequency(axis, target);
+}
+
+double NanotecController::jogStopDistance(Axis axis, double speed) const
+{
+    return m_jog.jogStopDistance(axis, speed);
+}
+
+void NanotecController::sendSafetyStop(std::function<void(bool)> done)
+{
+    m_stop.sendSafetyStop(std::move(done));
+}
+
+void NanotecController::abortHostSide(ErrorKind kind, const QString& message)
+{
+    m_stop.abortHostSide(kind, message);
+}
+
+bool NanotecController::motionMayBeRunning() const
+{
+    return m_stop.motionMayBeRunning();
+}
+
+int NanotecController::safetyStopTimeoutMs() const
+{
+    return m_stop.safetyStopTimeoutMs();
 }
 
 } // namespace stepdeck::nanotec

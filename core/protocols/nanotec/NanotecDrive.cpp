@@ -83,87 +83,101 @@ NanotecDrive::Answer NanotecDrive::handle(const QByteArray& body)
     if (body.isEmpty() || body.startsWith("@A"))
         return a; // 5.32: the firmware itself does not answer the bootloader command
     const char c = body.at(0);
-    const QByteArray rest = body.mid(1);
-    qint64 v = 0;
     if (c == ':') {
         a = handleLong(body);
     } else if (c == 'Z') {
         a = handleRead(body);
     } else if (kValueCommands.contains(c)) {
-        if (!parseNumber(rest, &v)) {
-            a.body = body + '?'; // "#1/\r" -> "001/?\r" (1.1)
-        } else if (c == '|') {
-            // 6.4: '|0' silences the drive (it still executes), '|1' brings answers back.
-            if (v == 0 || v == 1)
-                m_silentMode = v == 0;
-            a.body = body;
-        } else {
-            if (validSetting(c, v) && !faults.ignoredSettings.contains(c))
-                applySetting(c, v);
-            a.body = body; // echoed even when invalid, and then ignored
-        }
+        a.body = handleValue(c, body);
     } else if (kPlainCommands.contains(c)) {
-        if (!rest.isEmpty())
+        if (body.size() > 1)
             return {body + '?', false};
-        a.body = body;
-        switch (c) {
-        case '$':
-            a.body += QByteArray::number(statusWord());
-            break;
-        case 'C':
-            a.body += QByteArray::number(position());
-            break;
-        case 'I':
-            a.body += QByteArray::number(encoderPosition());
-            break;
-        case 'M':
-            a.body += QByteArray::number(m_address);
-            break;
-        case 'E':
-            a.body += QByteArray::number(m_lastSlot);
-            break;
-        case 'v':
-            a.body = "v " + kFirmware;
-            break;
-        case ' ':
-            a.body = ' ' + kFirmware;
-            break;
-        case 'A':
-            start();
-            break;
-        case 'S':
-            stopNow();
-            break;
-        case 'D': // 5.14: clear the error, take over the encoder position
-            m_positionError = false;
-            m_count = double(encoderPosition());
-            break;
-        case 'c': // 5.18: the current position becomes the reference position
-            m_count = 0;
-            m_encoderOffset = m_physical;
-            break;
-        case '+':
-        case '-':
-            if (m_run == Run::Speed)
-                m_params['o'] =
-                    qBound(qint64(60), m_params['o'] + (c == '+' ? 100 : -100), qint64(25000));
-            break;
-        case 'T': // 7.8: the flag positioning run now travels 's' more at speed 'n'
-            if (m_run == Run::Flag && !m_flagTriggered) {
-                m_flagTriggered = true;
-                m_target = m_count + m_dir * double(qAbs(m_params['s']));
-                m_topSpeed = double(m_params['n']);
-            }
-            break;
-        default:
-            break;
-        }
+        a.body = handlePlain(c, body);
     } else {
         a.body = body + '?';
     }
     if (m_silentMode)
         a.body.clear();
     return a;
+}
+
+QByteArray NanotecDrive::handleValue(char c, const QByteArray& body)
+{
+    qint64 v = 0;
+    const QByteArray rest = body.mid(1);
+    QByteArray answer;
+    if (!parseNumber(rest, &v)) {
+        answer = body + '?'; // "#1/\r" -> "001/?\r" (1.1)
+    } else if (c == '|') {
+        // 6.4: '|0' silences the drive (it still executes), '|1' brings answers back.
+        if (v == 0 || v == 1)
+            m_silentMode = v == 0;
+        answer = body;
+    } else {
+        if (validSetting(c, v) && !faults.ignoredSettings.contains(c))
+            applySetting(c, v);
+        answer = body; // echoed even when invalid, and then ignored
+    }
+    return answer;
+}
+
+QByteArray NanotecDrive::handlePlain(char c, const QByteArray& body)
+{
+    QByteArray answer;
+    answer = body;
+    switch (c) {
+    case '$':
+        answer += QByteArray::number(statusWord());
+        break;
+    case 'C':
+        answer += QByteArray::number(position());
+        break;
+    case 'I':
+        answer += QByteArray::number(encoderPosition());
+        break;
+    case 'M':
+        answer += QByteArray::number(m_address);
+        break;
+    case 'E':
+        answer += QByteArray::number(m_lastSlot);
+        break;
+    case 'v':
+        answer = "v " + kFirmware;
+        break;
+    case ' ':
+        answer = ' ' + kFirmware;
+        break;
+    case 'A':
+        start();
+        break;
+    case 'S':
+        stopNow();
+        break;
+    case 'D': // 5.14: clear the error, take over the encoder position
+        m_positionError = false;
+        m_count = double(encoderPosition());
+        break;
+    case 'c': // 5.18: the current position becomes the reference position
+        m_count = 0;
+        m_encoderOffset = m_physical;
+        break;
+    case '+':
+    case '-':
+        if (m_run == Run::Speed)
+            m_params['o'] =
+                qBound(qint64(60), m_params['o'] + (c == '+' ? 100 : -100), qint64(25000));
+        break;
+    case 'T': // 7.8: the flag positioning run now travels 's' more at speed 'n'
+        if (m_run == Run::Flag && !m_flagTriggered) {
+            m_flagTriggered = true;
+            m_target = m_count + m_dir * double(qAbs(m_params['s']));
+            m_topSpeed = double(m_params['n']);
+        }
+        break;
+    default:
+        break;
+    }
+    return answer;
 }
 
 NanotecDrive::Answer NanotecDrive::handleLong(const QByteArray& body)

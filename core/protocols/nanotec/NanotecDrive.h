@@ -79,6 +79,8 @@ private:
 
     Answer handleLong(const QByteArray& body);
     Answer handleRead(const QByteArray& body);
+    QByteArray handleValue(char c, const QByteArray& body); // commands with a number
+    QByteArray handlePlain(char c, const QByteArray& body); // commands without one
     bool validSetting(char cmd, qint64 v) const;
     void applySetting(char cmd, qint64 v);
     void start();
@@ -90,6 +92,7 @@ private:
     void checkSwitches(QList<QByteArray>* out);
     void stepPositioning(double dt);
     void stepSpeed(double dt);
+    void stepFreeTravel(double dt); // free travel after a switch or to the index mark
     void beginFreeTravel(int dir, bool toReference);
     double acceleration() const; // steps/s^2 from 'b' (6.11)
     qint64 stepsPerRevolution() const;

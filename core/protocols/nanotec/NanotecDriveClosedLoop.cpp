@@ -1,7 +1,6 @@
 // Calibration and closed-loop reference runs of a simulated drive; the readings of manual 8.1
 // are listed in NanotecDriveClosedLoop.h.
 #include "NanotecDriveClosedLoop.h"
-#include "NanotecDrive.h"
 #include <QtMath>
 
 namespace stepdeck::nanotec {
@@ -102,40 +101,6 @@ void DriveClosedLoop::interrupt()
     if (m_run == Run::Reference)
         m_referenced = false;
     m_run = Run::None;
-}
-
-// ---------------------------------------------------------------- the drive's side
-
-void NanotecDrive::startClosedLoopRun(qint64 mode)
-{
-    const bool calibration = mode == 101;
-    if (calibration)
-        m_long["CL_enable"] = 0; // our reading: the motor is calibrated in open loop
-    m_closedLoop.begin(calibration ? DriveClosedLoop::Run::Calibration
-                                   : DriveClosedLoop::Run::Reference,
-                       stepsPerRevolution(), m_physical, m_dir, double(m_params.value('u')));
-    m_reference = false;
-    m_run = Run::ClosedLoop;
-}
-
-void NanotecDrive::stepClosedLoop(double dt)
-{
-    const bool reference = m_closedLoop.running() == DriveClosedLoop::Run::Reference;
-    const DriveClosedLoop::Motion m = m_closedLoop.advance(dt);
-    moveBy(m.steps);
-    m_speed = m.speed;
-    if (m.steps != 0)
-        m_dir = m.steps > 0 ? 1 : -1;
-    if (!m.finished)
-        return;
-    if (m.failed && !m_positionError) {
-        m_positionError = true; // 5.21 bit 2, and ERROR_QEI in the error memory (5.15)
-        pushError(error::Position);
-    } else if (reference) {
-        m_count = 0; // the index mark is the reference position (5.17)
-        m_encoderOffset = m_physical;
-    }
-    finishRun(false);
 }
 
 } // namespace stepdeck::nanotec

@@ -1,6 +1,6 @@
 // Time-based motion of a simulated Nanotec drive: positioning with the drive's ramp, speed
 // mode, flag positioning, reference runs, limit switches per 'l' and 'e', records with
-// repetitions and follow-up records, auto status.
+// repetitions and follow-up records, auto status, and the motion of the closed-loop runs.
 #include "NanotecDrive.h"
 #include <QtMath>
 
@@ -248,6 +248,23 @@ void NanotecDrive::checkSwitches(QList<QByteArray>*)
     }
 }
 
+void NanotecDrive::stepFreeTravel(double dt)
+{
+    double step = m_speed * dt;
+    if (m_freeLeft > 0)
+        step = qMin(step, m_freeLeft);
+    moveBy(m_dir * step);
+    const bool done = m_freeLeft > 0 ? (m_freeLeft -= step) <= 0 : !externalSwitchActuated();
+    if (done) {
+        if (m_run == Run::RefFree) { // the reference position (6.6)
+            m_count = 0;
+            m_encoderOffset = m_physical;
+        }
+        m_freeLeft = 0;
+        finishRun();
+    }
+}
+
 QList<QByteArray> NanotecDrive::advance(double dt)
 {
     QList<QByteArray> out;
@@ -276,22 +293,9 @@ QList<QByteArray> NanotecDrive::advance(double dt)
         moveBy(m_dir * m_speed * dt);
         break;
     case Run::RefFree:
-    case Run::FreeTravel: {
-        double step = m_speed * dt;
-        if (m_freeLeft > 0)
-            step = qMin(step, m_freeLeft);
-        moveBy(m_dir * step);
-        const bool done = m_freeLeft > 0 ? (m_freeLeft -= step) <= 0 : !externalSwitchActuated();
-        if (done) {
-            if (m_run == Run::RefFree) { // the reference position (6.6)
-                m_count = 0;
-                m_encoderOffset = m_physical;
-            }
-            m_freeLeft = 0;
-            finishRun();
-        }
+    case Run::FreeTravel:
+        stepFreeTravel(dt);
         break;
-    }
     }
     if (m_run != Run::Idle)
         checkSwitches(&out);
@@ -312,6 +316,41 @@ QList<QByteArray> NanotecDrive::advance(double dt)
             out << "j" + QByteArray::number(statusWord());
     }
     return out;
+}
+
+// ---------------------------------------------------------------- closed-loop runs (8.1)
+// The run itself is DriveClosedLoop's (NanotecDriveClosedLoop.h); the drive moves by it.
+
+void NanotecDrive::startClosedLoopRun(qint64 mode)
+{
+    const bool calibration = mode == 101;
+    if (calibration)
+        m_long["CL_enable"] = 0; // our reading: the motor is calibrated in open loop
+    m_closedLoop.begin(calibration ? DriveClosedLoop::Run::Calibration
+                                   : DriveClosedLoop::Run::Reference,
+                       stepsPerRevolution(), m_physical, m_dir, double(m_params.value('u')));
+    m_reference = false;
+    m_run = Run::ClosedLoop;
+}
+
+void NanotecDrive::stepClosedLoop(double dt)
+{
+    const bool reference = m_closedLoop.running() == DriveClosedLoop::Run::Reference;
+    const DriveClosedLoop::Motion m = m_closedLoop.advance(dt);
+    moveBy(m.steps);
+    m_speed = m.speed;
+    if (m.steps != 0)
+        m_dir = m.steps > 0 ? 1 : -1;
+    if (!m.finished)
+        return;
+    if (m.failed && !m_positionError) {
+        m_positionError = true; // 5.21 bit 2, and ERROR_QEI in the error memory (5.15)
+        pushError(error::Position);
+    } else if (reference) {
+        m_count = 0; // the index mark is the reference position (5.17)
+        m_encoderOffset = m_physical;
+    }
+    finishRun(false);
 }
 
 } // namespace stepdeck::nanotec

@@ -1,13 +1,14 @@
 // Parameters, records and the error memory of Nanotec drives. Every write is echoed by the
 // drive even when the value is invalid, and invalid values are silently ignored ("Antwort der
 // Firmware" of each command): only reading the value back with 'Z' confirms a write.
+#include "NanotecParameters.h"
 #include "Logging.h"
 #include "NanotecController.h"
 
 namespace stepdeck::nanotec {
 
 namespace {
-using Cache = std::shared_ptr<QMap<QByteArray, qint64>>;
+using Cache = NanotecParameters::Cache;
 
 QByteArray readBody(const ParamDef& def)
 {
@@ -48,8 +49,12 @@ QString text(const QVariant& v)
 }
 } // namespace
 
-NanotecController::Step NanotecController::readStep(Axis axis, const ParamDef& def,
-                                                    std::function<void(qint64)> store, Cache cache)
+NanotecParameters::NanotecParameters(NanotecController& controller)
+    : m_ctl(controller), m_link(controller.m_exchange)
+{}
+
+Step NanotecParameters::readStep(Axis axis, const ParamDef& def, std::function<void(qint64)> store,
+                                 Cache cache)
 {
     const QByteArray body = readBody(def);
     const QByteArray key = axisName(axis).toLatin1() + body;
@@ -57,14 +62,15 @@ NanotecController::Step NanotecController::readStep(Axis axis, const ParamDef& d
         // 5.15: 'E' names the slot of the last error, "ZE<slot>" holds its code.
         return [this, axis, store](const Done& done) {
             auto slot = std::make_shared<qint64>(0);
-            exchange(axis, "E", sink([slot](qint64 v) { *slot = v; }))([=](const Failure& f) {
+            m_link.exchange(axis, "E",
+                            sink([slot](qint64 v) { *slot = v; }))([=](const Failure& f) {
                 if (!f.ok() || *slot <= 0) {
                     if (f.ok())
                         store(0);
                     return done(f);
                 }
                 const QByteArray zb = "ZE" + QByteArray::number(*slot);
-                exchange(axis, zb, [=](const Reply& r) {
+                m_link.exchange(axis, zb, [=](const Reply& r) {
                     const auto code = errorCode(r, int(*slot));
                     if (!code)
                         return Failure{ErrorKind::Protocol, tr("malformed error memory reply '%1'")
@@ -80,42 +86,41 @@ NanotecController::Step NanotecController::readStep(Axis axis, const ParamDef& d
             store(cache->value(key));
             return done({});
         }
-        exchange(axis, body, sink([key, store, cache](qint64 v) {
-                     if (cache)
-                         cache->insert(key, v);
-                     store(v);
-                 }),
-                 NanotecBus::Priority::Command, 1)(done);
+        m_link.exchange(axis, body, sink([key, store, cache](qint64 v) {
+                            if (cache)
+                                cache->insert(key, v);
+                            store(v);
+                        }),
+                        NanotecBus::Priority::Command, 1)(done);
     };
 }
 
-NanotecController::Step NanotecController::writeStep(Axis axis, const ParamDef& def, qint64 wire)
+Step NanotecParameters::writeStep(Axis axis, const ParamDef& def, qint64 wire)
 {
     const QByteArray body = writeBody(def, wire);
     return [this, axis, &def, body, wire](const Done& done) {
         NanotecBus::Request r;
-        r.address = m_drives[axis].address;
+        r.address = m_ctl.m_drives[axis].address;
         r.body = body;
         r.retries = 1; // settings are idempotent
         // 5.4: after 'm' the drive may already answer at its new address.
         r.anyAddress = def.cmd == "m";
         r.done = [this, axis, &def, body, wire, done](NanotecBus::Outcome o, const Reply& rep) {
             if (o != NanotecBus::Outcome::Ok)
-                return done(outcomeFailure(axis, body, o, rep));
+                return done(m_link.outcomeFailure(axis, body, o, rep));
             if (rep.value && *rep.value != wire)
-                return done(
-                    {ErrorKind::Protocol, tr("%1 echoed '%2' to '%3'")
-                                              .arg(driveName(axis), QString::fromLatin1(rep.raw),
-                                                   QString::fromLatin1(body))});
-            noteWritten(m_drives[axis], def, wire);
+                return done({ErrorKind::Protocol,
+                             tr("%1 echoed '%2' to '%3'")
+                                 .arg(m_ctl.driveName(axis), QString::fromLatin1(rep.raw),
+                                      QString::fromLatin1(body))});
+            noteWritten(m_ctl.m_drives[axis], def, wire);
             done({});
         };
-        m_bus->submit(r);
+        m_ctl.m_bus->submit(r);
     };
 }
 
-NanotecController::Step NanotecController::verifyStep(Axis axis, const ParamDef& def,
-                                                      qint64 expected, Cache cache)
+Step NanotecParameters::verifyStep(Axis axis, const ParamDef& def, qint64 expected, Cache cache)
 {
     return [this, axis, &def, expected, cache](const Done& done) {
         if (cache)
@@ -131,13 +136,13 @@ NanotecController::Step NanotecController::verifyStep(Axis axis, const ParamDef&
             done({ErrorKind::VerifyFailed,
                   tr("%1 on %2: wrote %3, but the drive kept %4 (drives echo invalid values and "
                      "silently ignore them)")
-                      .arg(ParameterSchema::displayLabel(def.spec), driveName(axis),
+                      .arg(ParameterSchema::displayLabel(def.spec), m_ctl.driveName(axis),
                            text(fromWire(def, expected)), text(fromWire(def, *got)))});
         });
     };
 }
 
-void NanotecController::noteWritten(Drive& d, const ParamDef& def, qint64 wire)
+void NanotecParameters::noteWritten(HostDrive& d, const ParamDef& def, qint64 wire)
 {
     if (def.cmd == "u")
         d.minFrequency = wire;
@@ -151,20 +156,19 @@ void NanotecController::noteWritten(Drive& d, const ParamDef& def, qint64 wire)
         d.address = int(wire); // 5.4: communication continues at the new address
 }
 
-QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, int address,
-                                                                    bool verify)
+QList<Step> NanotecParameters::motorAddressSteps(Axis axis, int address, bool verify)
 {
     auto old = std::make_shared<int>(0);
     QList<Step> steps;
     // 5.4: a new address already in use on the bus would end all communication. Probe it.
     steps << [this, axis, address, old](const Done& done) {
-        *old = m_drives[axis].address;
+        *old = m_ctl.m_drives[axis].address;
         if (address == *old)
             return done({});
         NanotecBus::Request probe;
         probe.address = address;
         probe.body = "v";
-        probe.timeoutMs = qMin(options().commandTimeoutMs, 100);
+        probe.timeoutMs = qMin(m_ctl.options().commandTimeoutMs, 100);
         probe.done = [address, done](NanotecBus::Outcome o, const Reply&) {
             if (o == NanotecBus::Outcome::Cancelled)
                 return done({ErrorKind::Cancelled, tr("cancelled")});
@@ -177,7 +181,7 @@ QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, i
                                              .arg(address)});
             done({});
         };
-        m_bus->submit(probe);
+        m_ctl.m_bus->submit(probe);
     };
     steps << writeStep(axis, *findParam(QStringLiteral("motor-address")), address);
     if (!verify)
@@ -186,37 +190,39 @@ QList<NanotecController::Step> NanotecController::motorAddressSteps(Axis axis, i
         const Check same = [this, axis, address](const Reply& r) {
             if (r.value == address)
                 return Failure{};
-            return Failure{
-                ErrorKind::VerifyFailed,
-                tr("%1 reports %2 %3, not %4")
-                    .arg(driveName(axis), ParameterSchema::displayLabel(
-                                              findParam(QStringLiteral("motor-address"))->spec))
-                    .arg(r.value.value_or(-1))
-                    .arg(address)};
+            return Failure{ErrorKind::VerifyFailed,
+                           tr("%1 reports %2 %3, not %4")
+                               .arg(m_ctl.driveName(axis),
+                                    ParameterSchema::displayLabel(
+                                        findParam(QStringLiteral("motor-address"))->spec))
+                               .arg(r.value.value_or(-1))
+                               .arg(address)};
         };
-        exchange(axis, "Zm", same, NanotecBus::Priority::Command, 1)([=](const Failure& f) {
+        m_link.exchange(axis, "Zm", same, NanotecBus::Priority::Command, 1)([=](const Failure& f) {
             if (f.kind != ErrorKind::Timeout)
                 return done(f);
-            m_drives[axis].address = *old; // the drive ignored it and stayed where it was
+            m_ctl.m_drives[axis].address = *old; // the drive ignored it and stayed where it was
             done({ErrorKind::VerifyFailed,
                   tr("%1 did not take %2 %3: nothing answers there")
-                      .arg(driveName(axis), ParameterSchema::displayLabel(
-                                                findParam(QStringLiteral("motor-address"))->spec))
+                      .arg(m_ctl.driveName(axis),
+                           ParameterSchema::displayLabel(
+                               findParam(QStringLiteral("motor-address"))->spec))
                       .arg(address)});
         });
     };
     return steps;
 }
 
-void NanotecController::readParameters(RequestId id, const QStringList& names)
+void NanotecParameters::readParameters(RequestId id, const QStringList& names)
 {
-    if (linkState() != LinkState::Connected)
-        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (m_ctl.linkState() != LinkState::Connected)
+        return m_ctl.finishError(id, ErrorKind::LinkDown, tr("not connected"));
     QList<const ParamDef*> defs;
     for (const QString& name : names) {
         const ParamDef* def = findParam(name);
         if (!def)
-            return finishError(id, ErrorKind::InvalidValue, tr("unknown parameter '%1'").arg(name));
+            return m_ctl.finishError(id, ErrorKind::InvalidValue,
+                                     tr("unknown parameter '%1'").arg(name));
         defs << def;
     }
     if (names.isEmpty()) {
@@ -227,7 +233,7 @@ void NanotecController::readParameters(RequestId id, const QStringList& names)
     auto cache = std::make_shared<QMap<QByteArray, qint64>>();
     QList<Step> steps;
     for (const ParamDef* def : defs) {
-        for (Axis axis : m_drives.keys()) {
+        for (Axis axis : m_ctl.m_drives.keys()) {
             steps << readStep(
                 axis, *def,
                 [result, def, axis](qint64 w) {
@@ -237,13 +243,13 @@ void NanotecController::readParameters(RequestId id, const QStringList& names)
         }
     }
     runSteps(steps, [this, id, result](const Failure& f) {
-        finishWith(id, f, QVariant::fromValue(*result));
+        m_ctl.finishWith(id, f, QVariant::fromValue(*result));
     });
 }
 
-QString NanotecController::writeRefusal(const ParameterSet& values) const
+QString NanotecParameters::writeRefusal(const ParameterSet& values) const
 {
-    const QString invalid = schema().validate(values, axes());
+    const QString invalid = m_ctl.schema().validate(values, m_ctl.axes());
     if (!invalid.isEmpty())
         return invalid;
     QMap<int, Axis> newAddresses; // 5.4: a used address would end all communication
@@ -258,13 +264,13 @@ QString NanotecController::writeRefusal(const ParameterSet& values) const
         }
     }
     for (auto it = newAddresses.cbegin(); it != newAddresses.cend(); ++it) {
-        for (const Drive& d : m_drives) {
+        for (const HostDrive& d : m_ctl.m_drives) {
             if (d.address == it.key() && d.axis != it.value())
                 return tr("%1 %2 is already used by %3")
                     .arg(ParameterSchema::displayLabel(
                         findParam(QStringLiteral("motor-address"))->spec))
                     .arg(it.key())
-                    .arg(driveName(d.axis));
+                    .arg(m_ctl.driveName(d.axis));
         }
     }
     return {};
@@ -340,14 +346,36 @@ const ParamDef& wholeLimitMask()
     }();
     return wholeMask;
 }
+
+// The groups of the 'l' mask (5.6) named in a write, as one read-modify-write of the whole
+// mask: the other groups and undocumented bits keep their values.
+QList<Step> limitMaskSteps(NanotecParameters& parameters, Axis axis, qint64 mask, qint64 bits,
+                           const QStringList& labels, bool verify, Cache cache,
+                           std::shared_ptr<WriteProgress> progress)
+{
+    const ParamDef& wholeMask = wholeLimitMask();
+    auto current = std::make_shared<qint64>(0);
+    NanotecParameters* p = &parameters;
+    return {p->readStep(
+                axis, wholeMask, [current](qint64 v) { *current = v; }, cache),
+            [p, axis, mask, bits, labels, current, verify, cache, progress,
+             &wholeMask](const Done& done) {
+                const qint64 merged = (*current & ~mask) | bits;
+                QList<Step> s{echoing(progress, p->writeStep(axis, wholeMask, merged), labels)};
+                if (verify)
+                    s << readingBack(progress, p->verifyStep(axis, wholeMask, merged, cache),
+                                     labels);
+                runSteps(s, done);
+            }};
+}
 } // namespace
 
-void NanotecController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+void NanotecParameters::writeParameters(RequestId id, const ParameterSet& values, bool verify)
 {
-    if (linkState() != LinkState::Connected)
-        return finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    if (m_ctl.linkState() != LinkState::Connected)
+        return m_ctl.finishError(id, ErrorKind::LinkDown, tr("not connected"));
     if (const QString refusal = writeRefusal(values); !refusal.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, refusal);
+        return m_ctl.finishError(id, ErrorKind::InvalidValue, refusal);
     auto cache = std::make_shared<QMap<QByteArray, qint64>>();
     auto progress = std::make_shared<WriteProgress>();
     QList<Step> steps, last;
@@ -359,8 +387,8 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
         const ParameterValue& v = values[def.spec.name];
         for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
             const qint64 wire = *toWire(def, a.value());
-            const QStringList label{
-                tr("%1 (%2)").arg(ParameterSchema::displayLabel(def.spec), driveName(a.key()))};
+            const QStringList label{tr("%1 (%2)").arg(ParameterSchema::displayLabel(def.spec),
+                                                      m_ctl.driveName(a.key()))};
             if (def.isBitField()) {
                 bitFields[a.key()].first |= def.fieldMask;
                 bitFields[a.key()].second |= wire;
@@ -381,28 +409,13 @@ void NanotecController::writeParameters(RequestId id, const ParameterSet& values
                 steps << readingBack(progress, verifyStep(a.key(), def, wire, cache), label);
         }
     }
-    const ParamDef& wholeMask = wholeLimitMask();
-    for (auto it = bitFields.cbegin(); it != bitFields.cend(); ++it) {
-        // The other groups and undocumented bits keep their values.
-        const Axis axis = it.key();
-        const qint64 mask = it.value().first, bits = it.value().second;
-        const QStringList labels = bitFieldLabels.value(axis);
-        auto current = std::make_shared<qint64>(0);
-        steps << readStep(
-            axis, wholeMask, [current](qint64 v) { *current = v; }, cache);
-        steps << [this, axis, mask, bits, labels, current, verify, cache, progress,
-                  &wholeMask](const Done& done) {
-            const qint64 merged = (*current & ~mask) | bits;
-            QList<Step> s{echoing(progress, writeStep(axis, wholeMask, merged), labels)};
-            if (verify)
-                s << readingBack(progress, verifyStep(axis, wholeMask, merged, cache), labels);
-            runSteps(s, done);
-        };
-    }
+    for (auto it = bitFields.cbegin(); it != bitFields.cend(); ++it)
+        steps << limitMaskSteps(*this, it.key(), it.value().first, it.value().second,
+                                bitFieldLabels.value(it.key()), verify, cache, progress);
     runSteps(steps + last, [this, id, progress](const Failure& f) {
-        updateStatus();
-        publishStatus();
-        finishWith(id, f.ok() ? f : Failure{f.kind, progress->describe(f.message)});
+        m_ctl.m_sweep.updateStatus();
+        m_ctl.publishStatus();
+        m_ctl.finishWith(id, f.ok() ? f : Failure{f.kind, progress->describe(f.message)});
     });
 }
 

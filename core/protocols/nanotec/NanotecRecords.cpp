@@ -1,4 +1,5 @@
 // Records (section 4, 6.3-6.5) and the error memory (5.15) of a Nanotec drive.
+#include "NanotecRecords.h"
 #include "Logging.h"
 #include "NanotecController.h"
 
@@ -21,37 +22,40 @@ QVariantMap recordResult(Axis axis, int record, const QVariantMap& values)
 }
 } // namespace
 
-NanotecController::Step NanotecController::readRecordStep(Axis axis, int record,
-                                                          std::shared_ptr<QVariantMap> out)
+NanotecRecords::NanotecRecords(NanotecController& controller)
+    : m_ctl(controller), m_link(controller.m_exchange)
+{}
+
+Step NanotecRecords::readRecordStep(Axis axis, int record, std::shared_ptr<QVariantMap> out)
 {
     // 6.4: "Z|" sends the record in RAM, "Z<n>|" record n from the EEPROM, in one piece.
     const QByteArray body = record > 0 ? "Z" + QByteArray::number(record) + "|" : "Z|";
-    return exchange(
+    return m_link.exchange(
         axis, body,
         [this, axis, out](const Reply& r) {
             if (r.kind != Reply::Kind::Record)
                 return Failure{ErrorKind::Protocol,
                                tr("%1 sent no record string: '%2'")
-                                   .arg(driveName(axis), QString::fromLatin1(r.raw))};
+                                   .arg(m_ctl.driveName(axis), QString::fromLatin1(r.raw))};
             *out = recordValues(r.recordData);
             return Failure{};
         },
         NanotecBus::Priority::Command, 1);
 }
 
-void NanotecController::readRecord(RequestId id, Axis axis, int record)
+void NanotecRecords::readRecord(RequestId id, Axis axis, int record)
 {
     if (record < 0 || record > kRecordCount)
-        return finishError(id, ErrorKind::InvalidValue,
-                           tr("record must be 0 (RAM) or 1..32, not %1").arg(record));
+        return m_ctl.finishError(id, ErrorKind::InvalidValue,
+                                 tr("record must be 0 (RAM) or 1..32, not %1").arg(record));
     auto values = std::make_shared<QVariantMap>();
     runSteps({readRecordStep(axis, record, values)},
              [this, id, axis, record, values](const Failure& f) {
-                 finishWith(id, f, recordResult(axis, record, *values));
+                 m_ctl.finishWith(id, f, recordResult(axis, record, *values));
              });
 }
 
-void NanotecController::readAllRecords(RequestId id, Axis axis)
+void NanotecRecords::readAllRecords(RequestId id, Axis axis)
 {
     auto all = std::make_shared<QVariantList>();
     QList<Step> steps;
@@ -63,39 +67,40 @@ void NanotecController::readAllRecords(RequestId id, Axis axis)
             done({});
         };
     }
-    runSteps(steps, [this, id, all](const Failure& f) { finishWith(id, f, *all); });
+    runSteps(steps, [this, id, all](const Failure& f) { m_ctl.finishWith(id, f, *all); });
 }
 
-void NanotecController::writeRecord(RequestId id, Axis axis, int record, const QVariantMap& values)
+void NanotecRecords::writeRecord(RequestId id, Axis axis, int record, const QVariantMap& values)
 {
     if (record < 1 || record > kRecordCount)
-        return finishError(id, ErrorKind::InvalidValue,
-                           tr("record must be 1..32, not %1").arg(record));
+        return m_ctl.finishError(id, ErrorKind::InvalidValue,
+                                 tr("record must be 1..32, not %1").arg(record));
     // 6.5: saving during a run stores values the run is changing.
-    const QString why = motionRefusal(axis, false);
+    const QString why = m_ctl.m_motion.motionRefusal(axis, false);
     if (!why.isEmpty())
-        return finishError(id, ErrorKind::Refused, why);
-    const ParameterSchema s = schema();
+        return m_ctl.finishError(id, ErrorKind::Refused, why);
+    const ParameterSchema s = m_ctl.schema();
     QMap<char, qint64> wires;
     for (auto it = values.cbegin(); it != values.cend(); ++it) {
         const ParamDef* def = findParam(it.key());
         if (!def || !def->record)
-            return finishError(id, ErrorKind::InvalidValue,
-                               tr("'%1' is not a record setting (section 4)").arg(it.key()));
+            return m_ctl.finishError(id, ErrorKind::InvalidValue,
+                                     tr("'%1' is not a record setting (section 4)").arg(it.key()));
         const QString err = s.validateScalar(def->spec, it.value());
         if (!err.isEmpty())
-            return finishError(id, ErrorKind::InvalidValue, err);
+            return m_ctl.finishError(id, ErrorKind::InvalidValue, err);
         wires.insert(def->cmd.at(0), *toWire(*def, it.value()));
     }
     // Load the record first so the fields not named keep their stored values.
-    QList<Step> steps{exchange(axis, "y" + QByteArray::number(record))};
+    QList<Step> steps{m_link.exchange(axis, "y" + QByteArray::number(record))};
     for (char cmd : recordFieldOrder()) {
         if (!wires.contains(cmd))
             continue;
         const ParamDef& def = *findRecordField(cmd);
-        steps << writeStep(axis, def, wires[cmd]) << verifyStep(axis, def, wires[cmd], nullptr);
+        steps << m_ctl.m_parameters.writeStep(axis, def, wires[cmd])
+              << m_ctl.m_parameters.verifyStep(axis, def, wires[cmd], nullptr);
     }
-    steps << exchange(axis, ">" + QByteArray::number(record));
+    steps << m_link.exchange(axis, ">" + QByteArray::number(record));
     auto stored = std::make_shared<QVariantMap>();
     steps << readRecordStep(axis, record, stored);
     steps << [this, axis, record, values, stored](const Done& done) {
@@ -103,60 +108,62 @@ void NanotecController::writeRecord(RequestId id, Axis axis, int record, const Q
             const ParamDef* def = findParam(it.key());
             const QVariant want = fromWire(*def, *toWire(*def, it.value()));
             if (stored->value(it.key()) != want)
-                return done({ErrorKind::VerifyFailed,
-                             tr("record %1 of %2: %3 is %4 in the EEPROM, not %5")
-                                 .arg(record)
-                                 .arg(driveName(axis), ParameterSchema::displayLabel(def->spec),
-                                      stored->value(it.key()).toString(), want.toString())});
+                return done(
+                    {ErrorKind::VerifyFailed,
+                     tr("record %1 of %2: %3 is %4 in the EEPROM, not %5")
+                         .arg(record)
+                         .arg(m_ctl.driveName(axis), ParameterSchema::displayLabel(def->spec),
+                              stored->value(it.key()).toString(), want.toString())});
         }
         done({});
     };
     runSteps(steps, [this, id, axis, record, stored](const Failure& f) {
-        finishWith(id, f, recordResult(axis, record, *stored));
+        m_ctl.finishWith(id, f, recordResult(axis, record, *stored));
     });
 }
 
-void NanotecController::loadOrSaveRecord(RequestId id, Axis axis, int record, bool save)
+void NanotecRecords::loadOrSaveRecord(RequestId id, Axis axis, int record, bool save)
 {
     if (record < 1 || record > kRecordCount)
-        return finishError(id, ErrorKind::InvalidValue,
-                           tr("record must be 1..32, not %1").arg(record));
+        return m_ctl.finishError(id, ErrorKind::InvalidValue,
+                                 tr("record must be 1..32, not %1").arg(record));
     if (save) {
-        const QString why = motionRefusal(axis, false);
+        const QString why = m_ctl.m_motion.motionRefusal(axis, false);
         if (!why.isEmpty())
-            return finishError(id, ErrorKind::Refused, why);
+            return m_ctl.finishError(id, ErrorKind::Refused, why);
     }
     // 6.3 'y' loads record n into RAM, 6.5 '>' stores RAM as record n; either way RAM and
     // record n must agree afterwards.
     auto ram = std::make_shared<QVariantMap>();
     auto stored = std::make_shared<QVariantMap>();
-    QList<Step> steps{exchange(axis, (save ? ">" : "y") + QByteArray::number(record)),
+    QList<Step> steps{m_link.exchange(axis, (save ? ">" : "y") + QByteArray::number(record)),
                       readRecordStep(axis, 0, ram), readRecordStep(axis, record, stored)};
     runSteps(steps, [this, id, axis, record, ram, stored, save](const Failure& f) {
         if (!f.ok())
-            return finishWith(id, f);
+            return m_ctl.finishWith(id, f);
         if (*ram != *stored)
-            return finishError(id, ErrorKind::VerifyFailed,
-                               tr("%1 of record %2 on %3 did not take effect (the drive ignores "
-                                  "invalid record numbers)")
-                                   .arg(save ? tr("saving") : tr("loading"))
-                                   .arg(record)
-                                   .arg(driveName(axis)));
-        Drive& d = m_drives[axis];
+            return m_ctl.finishError(
+                id, ErrorKind::VerifyFailed,
+                tr("%1 of record %2 on %3 did not take effect (the drive ignores "
+                   "invalid record numbers)")
+                    .arg(save ? tr("saving") : tr("loading"))
+                    .arg(record)
+                    .arg(m_ctl.driveName(axis)));
+        HostDrive& d = m_ctl.m_drives[axis];
         d.minFrequency = ram->value(QStringLiteral("min-frequency"), d.minFrequency).toLongLong();
         d.maxFrequency = ram->value(QStringLiteral("max-frequency"), d.maxFrequency).toLongLong();
         d.ramp = ram->value(QStringLiteral("ramp"), d.ramp).toLongLong();
-        finishOk(id, recordResult(axis, record, *ram));
+        m_ctl.finishOk(id, recordResult(axis, record, *ram));
     });
 }
 
-void NanotecController::readErrorMemory(RequestId id, Axis axis)
+void NanotecRecords::readErrorMemory(RequestId id, Axis axis)
 {
     auto last = std::make_shared<qint64>(0);
     auto entries = std::make_shared<QVariantList>();
-    QList<Step> steps{exchange(axis, "E", sink([last](qint64 v) { *last = v; }))};
+    QList<Step> steps{m_link.exchange(axis, "E", sink([last](qint64 v) { *last = v; }))};
     for (int slot = 1; slot <= kErrorSlots; ++slot) {
-        steps << exchange(
+        steps << m_link.exchange(
             axis, "ZE" + QByteArray::number(slot),
             [slot, entries](const Reply& r) {
                 // "ZE<slot><code>": the slot we asked for splits an unsigned reply.
@@ -178,8 +185,8 @@ void NanotecController::readErrorMemory(RequestId id, Axis axis)
             NanotecBus::Priority::Command, 1);
     }
     runSteps(steps, [this, id, axis, last, entries](const Failure& f) {
-        finishWith(id, f,
-                   QVariantMap{{"axis", axisName(axis)}, {"last", *last}, {"entries", *entries}});
+        m_ctl.finishWith(
+            id, f, QVariantMap{{"axis", axisName(axis)}, {"last", *last}, {"entries", *entries}});
     });
 }
 

@@ -1,9 +1,9 @@
 #pragma once
-// Internal to the schema table (NanotecSchema.cpp, NanotecSchemaMore.cpp). Labels, groups,
-// units, words of choices, descriptions and warnings are written inside
-// QT_TRANSLATE_NOOP("Parameters", ...) where the table names them, so lupdate files them under
-// the context ParameterSchema::displayText() translates them with. Numeric choices ("16") and
-// parameter names stay unmarked: they are not translated.
+// Internal to the schema table (NanotecSchema.cpp, NanotecSchemaRecordAnalogClosedLoop.cpp).
+// Labels, groups, units, words of choices, descriptions and warnings are written inside
+// QT_TRANSLATE_NOOP("Parameters", ...) where the table names them, so lupdate files them under the
+// context ParameterSchema::displayText() translates them with. Numeric choices ("16") and parameter
+// names stay unmarked: they are not translated.
 #include "NanotecSchema.h"
 
 namespace stepdeck::nanotec::schema {

@@ -1,52 +1,208 @@
-// Status sweeps ('$', 'C' and now and then 'ZY' per drive), the auto status 'j' (5.31),
-// silent drives and the normalised MachineStatus of a Nanotec bus.
+// Initialisation, status sweeps and the normalised status of a Nanotec bus (NanotecStatus.h).
+#include "NanotecStatus.h"
 #include "Logging.h"
 #include "NanotecClosedLoop.h"
 #include "NanotecController.h"
 #include "NanotecLogging.h"
+#include "NanotecModel.h"
+#include "transport/Transport.h"
+#include <QtMath>
 
 namespace stepdeck::nanotec {
 
-void NanotecController::onPollDue()
+namespace {
+// Status reads are idempotent: one garbled or lost reply (line noise) is asked again before
+// the request fails (issue 12: occasional noise is survived, persistent garbage fails).
+constexpr NanotecBus::Priority kStatusPriority = NanotecBus::Priority::Command;
+constexpr int kStatusRetries = 1;
+} // namespace
+
+NanotecStatus::NanotecStatus(NanotecController& controller)
+    : m_ctl(controller), m_link(controller.m_exchange)
+{}
+
+int NanotecStatus::sweepBudgetMs() const
 {
-    if (linkState() != LinkState::Connected || m_initialising || m_poller.isPollInFlight())
+    // Per drive and sweep: "#1$\r" + "001$17\r" + "#1C\r" + "001C-1234567\r" = 27 characters,
+    // plus a quarter of "#1ZY\r" + "001ZY196671\r" for the inputs: about 31 characters.
+    int drives = 0;
+    for (const HostDrive& d : m_ctl.m_drives)
+        drives += d.responding ? 1 : 0;
+    const double us = qMax(1, drives) * 31 * lineSettings().characterTimeUs();
+    return int(qCeil(us / 1000.0));
+}
+
+int NanotecStatus::pollTimeoutMs() const
+{
+    // A status reply is under 15 characters (8 ms at 19200 baud): a short timeout keeps a
+    // silent drive from stalling the sweep of the others.
+    return qMin(m_ctl.options().commandTimeoutMs, 150);
+}
+
+void NanotecStatus::initialiseDrives()
+{
+    m_ctl.m_initialising = true;
+    QList<Step> perDrive;
+    for (Axis axis : m_ctl.m_drives.keys())
+        perDrive << initialiseDrive(axis);
+    runSteps(perDrive, [this](const Failure&) { finishInitialising(); });
+}
+
+Step NanotecStatus::initialiseDrive(Axis axis)
+{
+    // Firmware first (5.22): a drive that does not answer it is flagged and skipped; the
+    // rest only fills caches, so a drive that answers but refuses one of them stays.
+    Step identify = m_link.exchange(
+        axis, "v",
+        [this, axis](const Reply& r) {
+            m_ctl.m_drives[axis].firmware = r.firmware.text;
+            return Failure{};
+        },
+        NanotecBus::Priority::Command, 1);
+    QList<Step> rest{
+        // Auto status off (5.31): on a polled half-duplex bus a 'j' the drive sends by
+        // itself collides with the poll of another drive.
+        tolerant(m_link.exchange(axis, "J0")),
+        tolerant(m_link.exchange(axis, "Ze", sink([this, axis](qint64 v) {
+                                     m_ctl.m_drives[axis].limitSwitchType = v;
+                                 }))),
+        tolerant(m_link.exchange(
+            axis, "Zu", sink([this, axis](qint64 v) { m_ctl.m_drives[axis].minFrequency = v; }))),
+        tolerant(m_link.exchange(
+            axis, "Zo", sink([this, axis](qint64 v) { m_ctl.m_drives[axis].maxFrequency = v; }))),
+        tolerant(m_link.exchange(axis, "Zb",
+                                 sink([this, axis](qint64 v) { m_ctl.m_drives[axis].ramp = v; }))),
+        tolerant(m_link.exchange(
+            axis, "$", sink([this, axis](qint64 v) { applyStatusWord(m_ctl.m_drives[axis], v); }))),
+        tolerant(m_link.exchange(
+            axis, "C", sink([this, axis](qint64 v) { m_ctl.m_drives[axis].position = v; }))),
+    };
+    return [this, axis, identify, rest](const Done& done) {
+        identify([this, axis, rest, done](const Failure& f) {
+            HostDrive& d = m_ctl.m_drives[axis];
+            d.responding = f.kind != ErrorKind::Timeout && f.kind != ErrorKind::Cancelled;
+            d.misses = d.responding ? 0 : m_ctl.m_poller.missLimit();
+            if (!f.ok())
+                qCWarning(lcNanotec) << "initialising" << m_ctl.driveName(axis) << ":" << f.message;
+            if (!d.responding)
+                return done({});
+            runSteps(rest, [done](const Failure&) { done({}); });
+        });
+    };
+}
+
+void NanotecStatus::finishInitialising()
+{
+    m_ctl.m_initialising = false;
+    QStringList silent;
+    for (const HostDrive& d : m_ctl.m_drives) {
+        if (!d.responding)
+            silent << QString::number(d.address);
+    }
+    const RequestId id = m_ctl.m_pendingOpen;
+    m_ctl.m_pendingOpen = 0;
+    if (silent.size() == m_ctl.m_drives.size()) {
+        const QString why = tr("no drive answered at address %1 (19200 baud 8N1)")
+                                .arg(silent.join(QStringLiteral(", ")));
+        if (m_ctl.transport())
+            m_ctl.transport()->close();
+        m_ctl.setLinkState(LinkState::Disconnected, why);
+        m_ctl.finishError(id, ErrorKind::Timeout, why);
         return;
-    if (m_bus->hasQueued(NanotecBus::Priority::Urgent) ||
-        m_bus->hasQueued(NanotecBus::Priority::Command))
+    }
+    m_ctl.setLinkState(LinkState::Connected);
+    m_ctl.setPollInterval(m_ctl.m_userPollMs);
+    m_ctl.m_poller.start();
+    updateStatus();
+    m_ctl.publishStatus();
+    if (!silent.isEmpty())
+        Q_EMIT m_ctl.errorOccurred(tr("no answer from drive %1; the other drives work")
+                                       .arg(silent.join(QStringLiteral(", "))));
+    m_ctl.finishOk(id);
+}
+
+void NanotecStatus::refreshStatus(RequestId id)
+{
+    if (m_ctl.linkState() != LinkState::Connected)
+        return m_ctl.finishError(id, ErrorKind::LinkDown, tr("not connected"));
+    QList<Step> steps;
+    auto answered = std::make_shared<int>(0);
+    for (Axis axis : m_ctl.m_drives.keys()) {
+        auto ok = std::make_shared<bool>(false);
+        steps << tolerant([this, axis, ok, answered](const Done& done) {
+            runSteps(
+                {m_link.exchange(axis, "$", sink([this, axis, ok, answered](qint64 v) {
+                                     applyStatusWord(m_ctl.m_drives[axis], v);
+                                     *ok = true;
+                                     ++*answered;
+                                 }),
+                                 kStatusPriority, kStatusRetries),
+                 m_link.exchange(
+                     axis, "C", sink([this, axis](qint64 v) { m_ctl.m_drives[axis].position = v; }),
+                     kStatusPriority, kStatusRetries),
+                 m_link.exchange(axis, "ZY",
+                                 sink([this, axis](qint64 v) { m_ctl.m_drives[axis].inputs = v; }),
+                                 kStatusPriority, kStatusRetries)},
+                [this, axis, ok, done](const Failure& f) {
+                    if (!*ok && f.kind == ErrorKind::Timeout)
+                        noteAnswer(m_ctl.m_drives[axis], false);
+                    done(f);
+                });
+        });
+    }
+    runSteps(steps, [this, id, answered](const Failure& f) {
+        updateStatus();
+        m_ctl.publishStatus();
+        if (!f.ok())
+            return m_ctl.finishWith(id, f);
+        if (*answered == 0)
+            return m_ctl.finishError(id, ErrorKind::Timeout,
+                                     tr("no drive answered the status request"));
+        m_ctl.finishOk(id, QVariant::fromValue(m_ctl.status()));
+    });
+}
+
+void NanotecStatus::onPollDue()
+{
+    if (m_ctl.linkState() != LinkState::Connected || m_ctl.m_initialising ||
+        m_ctl.m_poller.isPollInFlight())
+        return;
+    if (m_ctl.m_bus->hasQueued(NanotecBus::Priority::Urgent) ||
+        m_ctl.m_bus->hasQueued(NanotecBus::Priority::Command))
         return; // commands first; the poller reminds us after an interval
     ++m_sweeps;
     QList<Axis> axes;
     bool anyResponding = false;
-    for (const Drive& d : m_drives)
+    for (const HostDrive& d : m_ctl.m_drives)
         anyResponding = anyResponding || d.responding;
-    for (const Drive& d : m_drives) {
+    for (const HostDrive& d : m_ctl.m_drives) {
         // A silent drive costs a full timeout: ask it only every tenth sweep.
         if (d.responding || !anyResponding || m_sweeps % 10 == 0)
             axes << d.axis;
     }
-    m_poller.pollStarted();
+    m_ctl.m_poller.pollStarted();
     pollDrive(axes, m_sweeps % 4 == 1, std::make_shared<bool>(false));
 }
 
-void NanotecController::pollDrive(QList<Axis> remaining, bool withInputs,
-                                  std::shared_ptr<bool> answered)
+void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
+                              std::shared_ptr<bool> answered)
 {
     if (remaining.isEmpty()) {
-        m_poller.pollFinished(*answered);
+        m_ctl.m_poller.pollFinished(*answered);
         updateStatus();
-        publishStatus();
+        m_ctl.publishStatus();
         return;
     }
     const Axis axis = remaining.takeFirst();
     auto request = [this, axis](const QByteArray& body, NanotecBus::Handler done) {
         NanotecBus::Request r;
-        r.address = m_drives[axis].address;
+        r.address = m_ctl.m_drives[axis].address;
         r.body = body;
         r.priority = NanotecBus::Priority::Poll;
         r.timeoutMs = pollTimeoutMs();
         r.poll = true;
         r.done = std::move(done);
-        m_bus->submit(r);
+        m_ctl.m_bus->submit(r);
     };
     auto next = [this, remaining, withInputs, answered] {
         pollDrive(remaining, withInputs, answered);
@@ -54,8 +210,8 @@ void NanotecController::pollDrive(QList<Axis> remaining, bool withInputs,
     using O = NanotecBus::Outcome;
     request("$", [=](O o, const Reply& r) {
         if (o == O::Cancelled)
-            return m_poller.pollFinished(true); // stop/panic/disconnect took the bus
-        Drive& d = m_drives[axis];
+            return m_ctl.m_poller.pollFinished(true); // stop/panic/disconnect took the bus
+        HostDrive& d = m_ctl.m_drives[axis];
         noteAnswer(d, o != O::Timeout);
         if (o != O::Ok || !r.value)
             return next();
@@ -63,46 +219,46 @@ void NanotecController::pollDrive(QList<Axis> remaining, bool withInputs,
         applyStatusWord(d, *r.value);
         request("C", [=](O o2, const Reply& r2) {
             if (o2 == O::Cancelled)
-                return m_poller.pollFinished(true);
+                return m_ctl.m_poller.pollFinished(true);
             if (o2 == O::Ok && r2.value)
-                m_drives[axis].position = *r2.value;
+                m_ctl.m_drives[axis].position = *r2.value;
             if (!withInputs)
                 return next();
             request("ZY", [=](O o3, const Reply& r3) {
                 if (o3 == O::Cancelled)
-                    return m_poller.pollFinished(true);
+                    return m_ctl.m_poller.pollFinished(true);
                 if (o3 == O::Ok && r3.value)
-                    m_drives[axis].inputs = *r3.value;
+                    m_ctl.m_drives[axis].inputs = *r3.value;
                 next();
             });
         });
     });
 }
 
-void NanotecController::noteAnswer(Drive& d, bool answered)
+void NanotecStatus::noteAnswer(HostDrive& d, bool answered)
 {
     if (answered) {
         d.misses = 0;
         if (!d.responding) {
             d.responding = true;
-            qCInfo(lcNanotec) << driveName(d.axis) << "answers again";
-            setPollInterval(m_userPollMs);
+            qCInfo(lcNanotec) << m_ctl.driveName(d.axis) << "answers again";
+            m_ctl.setPollInterval(m_ctl.m_userPollMs);
         }
         return;
     }
     ++d.misses;
-    if (d.responding && d.misses >= m_poller.missLimit()) {
+    if (d.responding && d.misses >= m_ctl.m_poller.missLimit()) {
         d.responding = false;
-        d.jog = Jog::Idle;
+        d.jog = JogPhase::Idle;
         d.motionPending = false;
-        setPollInterval(m_userPollMs);
-        Q_EMIT errorOccurred(tr("%1 stopped answering (%2 status polls unanswered)")
-                                 .arg(driveName(d.axis))
-                                 .arg(d.misses));
+        m_ctl.setPollInterval(m_ctl.m_userPollMs);
+        Q_EMIT m_ctl.errorOccurred(tr("%1 stopped answering (%2 status polls unanswered)")
+                                       .arg(m_ctl.driveName(d.axis))
+                                       .arg(d.misses));
     }
 }
 
-void NanotecController::applyStatusWord(Drive& d, qint64 word)
+void NanotecStatus::applyStatusWord(HostDrive& d, qint64 word)
 {
     d.status = word;
     const DriveState s = decodeStatus(word);
@@ -110,7 +266,7 @@ void NanotecController::applyStatusWord(Drive& d, qint64 word)
         d.motionPending = false;
         if (d.referencing) {
             d.referencing = false;
-            AxisStatus& a = mutableStatus().axes[d.axis];
+            AxisStatus& a = m_ctl.mutableStatus().axes[d.axis];
             a.referenced = !s.positionError;
             a.positionKnown = !s.positionError;
         }
@@ -119,27 +275,28 @@ void NanotecController::applyStatusWord(Drive& d, qint64 word)
         d.positionErrorReported = true;
         const QString deviation =
             ParameterSchema::displayLabel(findParam(QStringLiteral("max-encoder-deviation"))->spec);
-        const QString how = options().actionNames.value(QStringLiteral("reset-position-error"));
-        Q_EMIT errorOccurred(
+        const QString how =
+            m_ctl.options().actionNames.value(QStringLiteral("reset-position-error"));
+        Q_EMIT m_ctl.errorOccurred(
             how.isEmpty()
                 ? tr("%1 reports a position error (encoder deviation above %2); reset the "
                      "position error to go on")
-                      .arg(driveName(d.axis), deviation)
+                      .arg(m_ctl.driveName(d.axis), deviation)
                 : tr("%1 reports a position error (encoder deviation above %2); reset it with %3")
-                      .arg(driveName(d.axis), deviation, how));
+                      .arg(m_ctl.driveName(d.axis), deviation, how));
     }
     if (!s.positionError)
         d.positionErrorReported = false;
 }
 
-void NanotecController::onUnsolicited(const Reply& reply)
+void NanotecStatus::onUnsolicited(const Reply& reply)
 {
     // 5.31: "j" + status word, sent by the drive itself at the end of a move.
     if (reply.kind != Reply::Kind::Echo || reply.key != "j" || !reply.value) {
         qCDebug(lcNanotec) << "unsolicited reply ignored:" << reply.raw;
         return;
     }
-    for (Drive& d : m_drives) {
+    for (HostDrive& d : m_ctl.m_drives) {
         if (d.address != reply.address)
             continue;
         noteAnswer(d, true);
@@ -153,23 +310,23 @@ void NanotecController::onUnsolicited(const Reply& reply)
         r.poll = true;
         r.done = [this, axis](NanotecBus::Outcome o, const Reply& pos) {
             if (o == NanotecBus::Outcome::Ok && pos.value)
-                m_drives[axis].position = *pos.value;
+                m_ctl.m_drives[axis].position = *pos.value;
             updateStatus();
-            publishStatus();
+            m_ctl.publishStatus();
         };
-        m_bus->submit(r);
+        m_ctl.m_bus->submit(r);
         updateStatus();
-        publishStatus();
+        m_ctl.publishStatus();
         return;
     }
 }
 
-void NanotecController::updateStatus()
+void NanotecStatus::updateStatus()
 {
-    MachineStatus& st = mutableStatus();
+    MachineStatus& st = m_ctl.mutableStatus();
     st.drives.clear();
     bool busy = false, silent = false, responding = false;
-    for (const Drive& d : m_drives) {
+    for (const HostDrive& d : m_ctl.m_drives) {
         AxisStatus& a = st.axes[d.axis];
         DriveStatus ds;
         ds.address = d.address;
@@ -179,14 +336,16 @@ void NanotecController::updateStatus()
         ds.detail = !d.responding ? tr("not answering")
                     : d.status    ? describeStatus(*d.status)
                                   : tr("no status yet");
-        if (const QString run = m_closedLoop->runDetail(d.axis); !run.isEmpty() && d.responding)
+        if (const QString run = m_ctl.m_closedLoop->runDetail(d.axis);
+            !run.isEmpty() && d.responding)
             ds.detail = run + QStringLiteral("; ") + ds.detail; // mode 8/101 fit no status bits
         st.drives << ds;
         silent = silent || !d.responding;
         responding = responding || d.responding;
         const bool ready = d.status && decodeStatus(*d.status).ready;
-        a.jogging = d.jog != Jog::Idle && !d.velocityMove;
-        a.moving = !a.jogging && ((d.status && !ready) || d.jog != Jog::Idle || d.motionPending);
+        a.jogging = d.jog != JogPhase::Idle && !d.velocityMove;
+        a.moving =
+            !a.jogging && ((d.status && !ready) || d.jog != JogPhase::Idle || d.motionPending);
         a.motionUnknown = !d.responding; // a silent drive is never shown as idle
         busy = busy || a.moving || a.jogging || a.motionUnknown;
         a.position = d.position;
@@ -203,13 +362,13 @@ void NanotecController::updateStatus()
             st.raw.insert(QStringLiteral("status") + axisName(d.axis), *d.status);
         st.raw.insert(QStringLiteral("position") + axisName(d.axis), d.position);
     }
-    const bool connected = linkState() == LinkState::Connected;
+    const bool connected = m_ctl.linkState() == LinkState::Connected;
     st.busy = busy;
     st.driveOn = connected && responding;
-    st.commFault = linkState() == LinkState::Lost || (connected && silent);
-    st.panic = m_panic;
-    if (connected && !busy && !jogActive())
-        noteStandstillConfirmed(); // every drive answered and is ready
+    st.commFault = m_ctl.linkState() == LinkState::Lost || (connected && silent);
+    st.panic = m_ctl.m_panic;
+    if (connected && !busy && !m_ctl.jogActive())
+        m_ctl.noteStandstillConfirmed(); // every drive answered and is ready
 }
 
 } // namespace stepdeck::nanotec

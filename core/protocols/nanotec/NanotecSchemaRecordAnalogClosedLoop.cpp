@@ -1,4 +1,6 @@
-// Record, analog/joystick, closed-loop and read-only parts of the parameter table.
+// Sections of the parameter table (NanotecSchemaBuilder.h): records (section 4), analog input
+// and joystick, closed loop (8.x) and the read-only values. Motor, limit switches, encoder and
+// inputs/outputs are in NanotecSchema.cpp.
 #include "NanotecSchemaBuilder.h"
 
 namespace stepdeck::nanotec::schema {

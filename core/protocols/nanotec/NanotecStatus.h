@@ -1,0 +1,45 @@
+#pragma once
+#include "NanotecBus.h"
+#include "NanotecHostDrive.h"
+#include "NanotecSteps.h"
+#include "model/CommandResult.h"
+#include <QCoreApplication>
+
+namespace stepdeck::nanotec {
+
+class NanotecController;
+class NanotecExchange;
+
+// What the host knows of the drives of a Nanotec bus: their initialisation (firmware, caches,
+// auto status off), the status sweeps ('$', 'C' and now and then 'ZY' per drive), the auto
+// status 'j' (5.31), drives that fall silent, and the normalised MachineStatus.
+class NanotecStatus
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::nanotec::NanotecController)
+
+public:
+    explicit NanotecStatus(NanotecController& controller);
+
+    // Identifies every drive and fills its caches; finishes the pending open.
+    void initialiseDrives();
+    void onPollDue();
+    void onUnsolicited(const Reply& reply);
+    void refreshStatus(RequestId id);
+    void applyStatusWord(HostDrive& d, qint64 word);
+    void noteAnswer(HostDrive& d, bool answered);
+    void updateStatus();
+    int pollTimeoutMs() const;
+    int sweepBudgetMs() const;
+
+private:
+    Step initialiseDrive(Axis axis);
+    void finishInitialising();
+    void pollDrive(QList<Axis> remaining, bool withInputs, std::shared_ptr<bool> answered);
+
+    quint64 m_sweeps = 0;
+
+    NanotecController& m_ctl;
+    NanotecExchange& m_link;
+};
+
+} // namespace stepdeck::nanotec
