@@ -76,6 +76,7 @@ void Machine::destroy()
     // they are told in turn, but none of them waits for I/O of another.
     for (auto& s : m_sessions)
         s->disconnect(this);
+    m_jogSessions.clear();
     m_sessions.clear();
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));

@@ -2,6 +2,7 @@
 #include "MachineDescription.h"
 #include "controller/ControllerSession.h"
 #include <QObject>
+#include <QSet>
 #include <memory>
 #include <vector>
 
@@ -53,6 +54,15 @@ public:
     // (nothing was sent). Each controller gets its part back to back; the move ends with
     // moveFinished once every part has, or fails (the others stopped) when one part fails.
     quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal);
+
+    // Jog rates in unit/s per machine axis, one input for every controller involved: the
+    // caller renews them while its input is held (each controller's jog lease,
+    // ControllerOptions::jogLeaseMs), so a lost input lets every lease run out together and
+    // every controller ramps down. Axes not named ramp to zero. Rates above an axis'
+    // maxJogSpeed are limited to it. Refused (false, *refusal) for an unknown axis, a
+    // controller not connected, or a model that jogs by targets (laser axes: not yet).
+    bool jog(const QMap<QString, double>& unitsPerSecond, QString* refusal);
+    void endJog(); // every controller ramps down now
 
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
@@ -109,6 +119,7 @@ private:
     MachineDescription m_description;
     std::vector<std::unique_ptr<ControllerSession>> m_sessions; // description's order
     QList<PendingMove> m_moves;
+    QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()
     quint64 m_lastMove = 0;
 };
 

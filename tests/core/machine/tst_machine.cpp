@@ -151,6 +151,9 @@ private Q_SLOTS:
     void move_endsShortOfTarget_failsNamingTheAxis();
     void stop_duringMoveOnBoth_bothDevicesStandStill();
     void linkLost_nanotecVanishes_elabStopsAndTheControllerIsNamed();
+    void jog_xAndA_inputLost_bothLeasesRunOut();
+    void jog_stopDuringJogOfXAndA_bothDevicesGetTheirStop();
+    void jog_unknownAxis_refusedNothingJogs();
     void create_invalidDescription_refusedWithTheField();
 
 private:
@@ -309,6 +312,42 @@ void TestMachine::linkLost_nanotecVanishes_elabStopsAndTheControllerIsNamed()
     QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
     QVERIFY(receivedStop(*m_elab));
     QVERIFY(positionX(*m_elab) < 80000);
+}
+
+void TestMachine::jog_xAndA_inputLost_bothLeasesRunOut()
+{
+    QString refusal;
+    // 2 mm/s = 800 steps/s on the board, 10 deg/s = 1000 steps/s on the drive (above its start
+    // frequency). Renewed until both move, then the input is "lost": no renewal comes.
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{"X", 2.0}, {"A", 10.0}}, &refusal) &&
+                                 moving(*m_elab) && moving(*m_nanotec),
+                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab) && still(*m_nanotec), 10000);
+    QVERIFY(positionX(*m_elab) > 0);
+    QVERIFY(positionX(*m_nanotec) > 0);
+}
+
+void TestMachine::jog_stopDuringJogOfXAndA_bothDevicesGetTheirStop()
+{
+    QString refusal;
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{"X", -2.0}, {"A", -10.0}}, &refusal) &&
+                                 moving(*m_elab) && moving(*m_nanotec),
+                             10000);
+    m_machine->stop();
+    m_machine->endJog();
+    QTRY_VERIFY_WITH_TIMEOUT(receivedStop(*m_elab) && receivedStop(*m_nanotec), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab) && still(*m_nanotec), 10000);
+}
+
+void TestMachine::jog_unknownAxis_refusedNothingJogs()
+{
+    QString refusal;
+    QVERIFY(!m_machine->jog({{"X", 2.0}, {"Q", 1.0}}, &refusal));
+    QVERIFY2(refusal.contains("no axis Q"), qPrintable(refusal));
+    QVERIFY(!m_machine->jog({{"A", qInf()}}, &refusal));
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
 }
 
 void TestMachine::create_invalidDescription_refusedWithTheField()

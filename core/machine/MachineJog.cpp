@@ -1,0 +1,59 @@
+// Machine::jog: one jog input for the axes of several controllers (issue 19).
+#include "Machine.h"
+#include <algorithm>
+#include <cmath>
+
+namespace stepdeck::machine {
+
+bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
+{
+    auto refuse = [refusal](const QString& why) {
+        if (refusal)
+            *refusal = why;
+        return false;
+    };
+    QMap<ControllerSession*, AxisVelocities> rates;
+    for (auto& s : m_sessions)
+        rates.insert(s.get(), {});
+    for (auto it = unitsPerSecond.cbegin(); it != unitsPerSecond.cend(); ++it) {
+        const MachineAxis* axis = m_description.axis(it.key());
+        if (!axis)
+            return refuse(tr("the machine has no axis %1").arg(it.key()));
+        ControllerSession* s = session(axis->controller);
+        if (s->linkState() != LinkState::Connected)
+            return refuse(
+                tr("%1: controller \"%2\" is not connected").arg(axis->name, axis->controller));
+        if (s->capabilities().jogByTargets && it.value() != 0)
+            return refuse(tr("%1: controller \"%2\" jogs by targets, which a machine cannot "
+                             "jog yet")
+                              .arg(axis->name, axis->controller));
+        if (!std::isfinite(it.value()))
+            return refuse(tr("%1: the jog rate is not a finite number").arg(axis->name));
+        double rate = it.value();
+        if (axis->maxJogSpeed)
+            rate = qBound(-*axis->maxJogSpeed, rate, *axis->maxJogSpeed);
+        rates[s].insert(axis->axis, axis->toStepRate(rate));
+    }
+    // The controllers jogged by this input hear from it each time (those without a named axis
+    // now with zero rates: they ramp down); controllers it never jogged are left alone.
+    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
+        ControllerSession* s = it.key();
+        const bool moves = std::any_of(it.value().cbegin(), it.value().cend(),
+                                       [](double rate) { return rate != 0; });
+        if (moves)
+            m_jogSessions.insert(s);
+        if (m_jogSessions.contains(s) && s->linkState() == LinkState::Connected &&
+            !s->capabilities().jogByTargets)
+            s->setJogVelocity(it.value());
+    }
+    return true;
+}
+
+void Machine::endJog()
+{
+    for (ControllerSession* s : std::as_const(m_jogSessions))
+        s->endJog();
+    m_jogSessions.clear();
+}
+
+} // namespace stepdeck::machine
