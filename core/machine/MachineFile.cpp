@@ -24,11 +24,7 @@ public:
 private:
     bool fail(const QString& field, const QString& message)
     {
-        if (m_error) {
-            m_error->field = field;
-            m_error->message = message;
-        }
-        return false;
+        return MachineFileError::report(m_error, field, message);
     }
     bool onlyKeys(const QJsonObject& o, const QString& path, const QStringList& allowed);
     bool string(const QJsonObject& o, const QString& path, const char* key, QString* out,
@@ -262,6 +258,16 @@ void locate(const QByteArray& text, int offset, int* line, int* column)
 }
 
 } // namespace
+
+bool MachineFileError::report(MachineFileError* error, const QString& field, const QString& message)
+{
+    if (error) {
+        *error = {};
+        error->field = field;
+        error->message = message;
+    }
+    return false;
+}
 
 QString MachineFileError::text() const
 {

@@ -15,6 +15,8 @@ struct MachineFileError
 
     // "axes[3].stepsPerUnit: must be a decimal greater than 0 (is -2)"
     QString text() const;
+    // Sets *error (when given) to field + message and returns false, for `return report(...)`.
+    static bool report(MachineFileError* error, const QString& field, const QString& message);
 };
 
 // Reads and validates "stepdeck-machine" files (docs/machines.md). Everything is checked

@@ -28,12 +28,7 @@ public:
 private:
     bool fail(const QString& field, const QString& message)
     {
-        if (m_error) {
-            *m_error = {};
-            m_error->field = field;
-            m_error->message = message;
-        }
-        return false;
+        return MachineFileError::report(m_error, field, message);
     }
     bool controller(const MachineController& c, const QString& path);
     bool addresses(const MachineController& c, const ModelInfo& model, const QString& path);
@@ -211,14 +206,9 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
 
 bool MachineFile::validate(const MachineDescription& machine, MachineFileError* error)
 {
-    if (machine.name.trimmed().isEmpty()) {
-        if (error) {
-            *error = {};
-            error->field = QStringLiteral("name");
-            error->message = tr("the machine needs a name");
-        }
-        return false;
-    }
+    if (machine.name.trimmed().isEmpty())
+        return MachineFileError::report(error, QStringLiteral("name"),
+                                        tr("the machine needs a name"));
     Checker check(error);
     return check.controllers(machine) && check.axes(machine);
 }

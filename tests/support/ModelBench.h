@@ -13,6 +13,21 @@
 
 namespace stepdeck::test {
 
+// The schema defaults of the parameters a model wants written before it moves at all
+// (ModelInfo::setupBeforeMotion, E-LAB tmInvSetup), per axis of the model.
+inline ParameterSet setupBeforeMotionDefaults(const ModelInfo& info)
+{
+    ParameterSet set;
+    for (const QString& name : info.setupBeforeMotion) {
+        const ParameterSpec* spec = info.schema.find(name);
+        ParameterValue v;
+        for (Axis a : info.capabilities.axes)
+            v.perAxis.insert(a, spec->defaultValue);
+        set.insert(name, v);
+    }
+    return set;
+}
+
 struct ModelBench
 {
     ModelBench(const ModelInfo* model, int commandTimeoutMs) : info(model)

@@ -1,9 +1,19 @@
 #pragma once
 #include "model/Axis.h"
+#include <QByteArray>
 #include <QString>
 #include <optional>
 
 namespace stepdeck::nanotec {
+
+// The 'o' range (6.9): the highest step frequency a drive takes, for every part that sends one.
+constexpr qint64 kMaxFrequency = 25000;
+
+// "<cmd><value>" as the parts send it (the codec adds '#', the address and '\r').
+inline QByteArray commandWithValue(const char* cmd, qint64 value)
+{
+    return QByteArray(cmd) + QByteArray::number(value);
+}
 
 enum class JogPhase { Idle, Starting, Running, Stopping };
 

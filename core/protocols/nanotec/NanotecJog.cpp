@@ -6,15 +6,6 @@
 
 namespace stepdeck::nanotec {
 
-namespace {
-constexpr qint64 kMaxFrequency = 25000; // 'o' range (6.9)
-
-QByteArray num(const char* cmd, qint64 v)
-{
-    return QByteArray(cmd) + QByteArray::number(v);
-}
-} // namespace
-
 NanotecJog::NanotecJog(NanotecController& controller)
     : m_ctl(controller), m_link(controller.m_exchange)
 {}
@@ -38,9 +29,10 @@ QList<Step> NanotecJog::rampDownSteps(HostDrive& d, NanotecBus::Priority priorit
     const Axis axis = d.axis;
     const int t = rampTimeMs(d, qAbs(d.jogApplied));
     const bool cut = t > kMaxRampWaitMs;
-    QList<Step> steps{tolerant(m_link.exchange(axis, num("o", d.minFrequency), {}, priority, 1)),
-                      m_link.wait(qMin(t, kMaxRampWaitMs)),
-                      tolerant(m_link.exchange(axis, "S", {}, priority, 2))};
+    QList<Step> steps{
+        tolerant(m_link.exchange(axis, commandWithValue("o", d.minFrequency), {}, priority, 1)),
+        m_link.wait(qMin(t, kMaxRampWaitMs)),
+        tolerant(m_link.exchange(axis, "S", {}, priority, 2))};
     if (cut) {
         steps << [this, axis](const Done& done) {
             AxisStatus& a = m_ctl.mutableStatus().axes[axis];
@@ -53,7 +45,8 @@ QList<Step> NanotecJog::rampDownSteps(HostDrive& d, NanotecBus::Priority priorit
         };
     }
     if (d.savedMaxFrequency > 0)
-        steps << tolerant(m_link.exchange(axis, num("o", d.savedMaxFrequency), {}, priority, 1));
+        steps << tolerant(
+            m_link.exchange(axis, commandWithValue("o", d.savedMaxFrequency), {}, priority, 1));
     // The drive is ready now; later refusals must not go by the status from before 'S'.
     steps << tolerant(m_link.exchange(axis, "$", sink([this, axis](qint64 v) {
                                           m_ctl.m_sweep.applyStatusWord(m_ctl.m_drives[axis], v);
@@ -148,9 +141,9 @@ void NanotecJog::pumpJog(Axis axis, bool zeroConfirmed)
         return stopJog(d, zeroConfirmed);
     if (signedHz == d.jogApplied)
         return;
-    QList<Step> steps{m_link.exchange(axis, num("o", hz))};
+    QList<Step> steps{m_link.exchange(axis, commandWithValue("o", hz))};
     if ((signedHz > 0) != (d.jogApplied > 0))
-        steps << m_link.exchange(axis, num("d", want > 0));
+        steps << m_link.exchange(axis, commandWithValue("d", want > 0));
     d.jogBusy = true;
     runSteps(steps, jogDone(axis, JogPhase::Running, signedHz));
 }
@@ -169,8 +162,8 @@ void NanotecJog::startJog(HostDrive& d, double want, qint64 hz, double signedHz)
     d.jogBusy = true;
     // 6.6, speed mode p=1: speed and direction changes are ramped by the drive.
     runSteps({m_link.setting(axis, "!2"), m_link.setting(axis, "p1"),
-              m_link.setting(axis, num("o", hz)), m_link.setting(axis, num("d", want > 0)),
-              m_link.startRun(axis)},
+              m_link.setting(axis, commandWithValue("o", hz)),
+              m_link.setting(axis, commandWithValue("d", want > 0)), m_link.startRun(axis)},
              jogDone(axis, JogPhase::Running, signedHz));
 }
 

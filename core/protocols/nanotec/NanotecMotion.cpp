@@ -6,15 +6,6 @@
 
 namespace stepdeck::nanotec {
 
-namespace {
-constexpr qint64 kMaxFrequency = 25000; // 'o' range (6.9)
-
-QByteArray num(const char* cmd, qint64 v)
-{
-    return QByteArray(cmd) + QByteArray::number(v);
-}
-} // namespace
-
 NanotecMotion::NanotecMotion(NanotecController& controller)
     : m_ctl(controller), m_link(controller.m_exchange)
 {}
@@ -77,7 +68,8 @@ void NanotecMotion::moveRelative(RequestId id, const AxisVector& steps)
         if (!why.isEmpty())
             return m_ctl.finishError(id, ErrorKind::Refused, why);
         // 6.6 p=1: 's' is the positive distance, 'd' the direction (1 counts up).
-        setup[it.key()] = {"!1", "p1", num("s", qAbs(it.value())), num("d", it.value() > 0)};
+        setup[it.key()] = {"!1", "p1", commandWithValue("s", qAbs(it.value())),
+                           commandWithValue("d", it.value() > 0)};
         verify[it.key()] = {{"!", 1},
                             {"p", 1},
                             {"s", qAbs(it.value())},
@@ -106,7 +98,7 @@ void NanotecMotion::moveAbsolute(RequestId id, const AxisVector& targets)
         if (!why.isEmpty())
             return m_ctl.finishError(id, ErrorKind::Refused, why);
         // 6.6 p=2: 's' is the target relative to the reference position; 'd' is ignored.
-        setup[it.key()] = {"!1", "p2", num("s", it.value())};
+        setup[it.key()] = {"!1", "p2", commandWithValue("s", it.value())};
         verify[it.key()] = {
             {"!", 1}, {"p", 2}, {"s", it.value()}, {"o", m_ctl.m_drives[it.key()].maxFrequency}};
     }
@@ -132,7 +124,7 @@ void NanotecMotion::referenceWithType(RequestId id, const QMap<Axis, int>& direc
             return m_ctl.finishError(id, ErrorKind::Refused, why);
         // 6.6: p=4 runs at the upper speed into the external switch, p=3 at the lower speed
         // to the encoder index; free travel afterwards as 'l' says (5.6).
-        setup[it.key()] = {"!1", internal ? "p3" : "p4", num("d", it.value() > 0)};
+        setup[it.key()] = {"!1", internal ? "p3" : "p4", commandWithValue("d", it.value() > 0)};
         verify[it.key()] = {{"!", 1},
                             {"p", internal ? 3 : 4},
                             {"d", it.value() > 0},
@@ -232,7 +224,8 @@ void NanotecMotion::velocityMove(RequestId id, const AxisVector& stepsPerS)
         const qint64 hz = qBound<qint64>(d.minFrequency, qAbs(v), kMaxFrequency);
         d.savedMaxFrequency = d.maxFrequency;
         steps << m_link.setting(axis, "!2") << m_link.setting(axis, "p1")
-              << m_link.setting(axis, num("o", hz)) << m_link.exchange(axis, num("d", v > 0));
+              << m_link.setting(axis, commandWithValue("o", hz))
+              << m_link.exchange(axis, commandWithValue("d", v > 0));
         steps << [this, axis, hz, v](const Done& done) {
             m_link.startRun(axis)([this, axis, hz, v, done](const Failure& f) {
                 if (f.ok()) {

@@ -8,13 +8,6 @@
 
 namespace stepdeck::nanotec {
 
-namespace {
-QByteArray num(const char* cmd, qint64 v)
-{
-    return QByteArray(cmd) + QByteArray::number(v);
-}
-} // namespace
-
 NanotecStop::NanotecStop(NanotecController& controller)
     : m_ctl(controller), m_link(controller.m_exchange)
 {}
@@ -134,8 +127,8 @@ void NanotecStop::stop(RequestId id)
     QList<Step> steps;
     int wait = 0;
     for (Axis a : speedMode) {
-        steps << tolerant(
-            m_link.exchange(a, num("o", m_ctl.m_drives[a].minFrequency), {}, urgent, 1));
+        steps << tolerant(m_link.exchange(a, commandWithValue("o", m_ctl.m_drives[a].minFrequency),
+                                          {}, urgent, 1));
         wait = qMax(wait, m_ctl.m_jog.rampTimeMs(m_ctl.m_drives[a], speeds[a]));
     }
     if (wait > 0)
@@ -153,7 +146,8 @@ void NanotecStop::stop(RequestId id)
     for (Axis a : speedMode) {
         HostDrive& d = m_ctl.m_drives[a];
         if (d.savedMaxFrequency > 0)
-            steps << tolerant(m_link.exchange(a, num("o", d.savedMaxFrequency), {}, urgent, 1));
+            steps << tolerant(
+                m_link.exchange(a, commandWithValue("o", d.savedMaxFrequency), {}, urgent, 1));
     }
     for (HostDrive& d : m_ctl.m_drives) {
         d.forgetMotion();
@@ -194,7 +188,8 @@ void NanotecStop::panic(RequestId id)
     r.done = [this, id, restore](NanotecBus::Outcome, const Reply&) {
         confirmStopped(id, m_ctl.m_drives.keys(), tr("emergency stop"));
         for (Axis a : restore) {
-            tolerant(m_link.exchange(a, num("o", m_ctl.m_drives[a].savedMaxFrequency)))(
+            tolerant(
+                m_link.exchange(a, commandWithValue("o", m_ctl.m_drives[a].savedMaxFrequency)))(
                 [](const Failure&) {});
         }
     };

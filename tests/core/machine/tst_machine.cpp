@@ -2,6 +2,7 @@
 // pseudo-terminals against the project's simulators (issue 19). Every assertion that matters
 // is made at the devices: the moves they accepted, the frames they received, whether they
 // stand still.
+#include "ModelBench.h"
 #include "machine/Machine.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
@@ -207,15 +208,7 @@ void TestMachine::cleanup()
 void TestMachine::writeElabSetup()
 {
     ControllerSession* table = m_machine->session("table");
-    const ModelInfo* info = table->model();
-    ParameterSet set;
-    for (const QString& name : info->setupBeforeMotion) {
-        const ParameterSpec* spec = info->schema.find(name);
-        ParameterValue v;
-        for (Axis a : info->capabilities.axes)
-            v.perAxis.insert(a, spec->defaultValue);
-        set.insert(name, v);
-    }
+    const ParameterSet set = test::setupBeforeMotionDefaults(*table->model());
     QSignalSpy done(table, &ControllerSession::requestFinished);
     const RequestId id = table->writeParameters(set, false);
     QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),

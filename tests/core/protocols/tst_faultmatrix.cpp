@@ -47,14 +47,7 @@ struct Bench : test::ModelBench
             return false;
         if (info->setupBeforeMotion.isEmpty())
             return true;
-        ParameterSet set;
-        for (const QString& name : info->setupBeforeMotion) {
-            const ParameterSpec* spec = info->schema.find(name);
-            ParameterValue v;
-            for (Axis a : info->capabilities.axes)
-                v.perAxis.insert(a, spec->defaultValue);
-            set.insert(name, v);
-        }
+        const ParameterSet set = test::setupBeforeMotionDefaults(*info);
         return run([&](RequestId id) { ctl->writeParameters(id, set, false); }).ok() &&
                run([this](RequestId id) { ctl->refreshStatus(id); }).ok();
     }
