@@ -14,14 +14,16 @@ namespace stepdeck::emis {
 // The EMIS SMC-IC4 adapter (manual: emis-smc-ic4-manual.de.txt, chapter 9) over a Transport.
 // This class owns the link, the connect sequence, input polling, the status and the safety
 // contract of the base; the pieces, each with one responsibility:
-//   EmisLink         line discipline: one command at a time, its reply, timeouts, <DCn>
-//   EmisExchange     requests onto the link and what their failures mean
-//   EmisMotion       vector moves and reference runs: checked, work speeds set, sent
+//   EmisLink           line discipline: one command at a time, its reply, timeouts, <DCn>
+//   EmisExchange       requests onto the link and what their failures mean
+//   EmisMotion         vector moves and reference runs: checked, work speeds set, sent
 //   EmisMotionTracker  their arrivals and deadlines, the position bookkeeping
-//   EmisJog          the jog as a chain of short vector moves
-//   EmisParameters   working values (set) and system parameters (##, *PRSYS, *PESYS)
-//   EmisOperations   model operations (outputs, input programs) and the console
-//   EmisWorkSpeeds   the work speed (#E1) the board has and the one moves run at
+//   EmisJog            the jog as a chain of short vector moves
+//   EmisParameters     working values (set) and system parameters (##, *PRSYS, *PESYS)
+//   EmisOperations     model operations (outputs, input programs) and the console
+//   EmisWorkSpeeds     the work speed (#E1) the board has and the one moves run at
+// The pieces reach the adapter only through EmisHost (private base) and share what the host
+// knows of the board's working values (EmisKnownValues).
 //
 // What the board cannot do shapes this class:
 // - No stop command: stop() and panic() are refused (Unsupported, noStopCommandText()). Jog is a
