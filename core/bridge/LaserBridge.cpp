@@ -1,7 +1,6 @@
 // The laser side of the bridge: the laser port, its frames, the answers and the log.
 #include "LaserBridge.h"
 #include "Logging.h"
-#include "protocols/laser/LaserModel.h"
 #include "transport/Transport.h"
 #include <QtMath>
 
@@ -16,7 +15,8 @@ constexpr int kShutdownStopMs = 3000; // the controller's stop gets this long at
 LaserBridge::LaserBridge(ControllerSession* session, Transport* laserPort,
                          const LaserBridgeConfig& config, QObject* parent)
     : QObject(parent), m_session(session), m_laser(laserPort), m_config(config),
-      m_answers(config.scale)
+      m_answers(config.scale),
+      m_motion(session, m_config, m_caps, m_answers, m_slots, motionHooks())
 {
     qRegisterMetaType<stepdeck::bridge::LaserBridge::LogEntry>();
     qRegisterMetaType<stepdeck::bridge::LaserBridge::AxisView>();
@@ -38,9 +38,12 @@ LaserBridge::LaserBridge(ControllerSession* session, Transport* laserPort,
         connect(m_laser, &Transport::dataReceived, this, &LaserBridge::onLaserData);
     }
     if (m_session) {
-        connect(m_session, &ControllerSession::requestFinished, this, &LaserBridge::onResult);
+        connect(m_session, &ControllerSession::requestFinished, this,
+                [this](const CommandResult& result) { m_motion.onResult(result); });
         connect(m_session, &ControllerSession::statusChanged, this, &LaserBridge::onStatus);
-        connect(m_session, &ControllerSession::linkStateChanged, this, &LaserBridge::onLinkState);
+        connect(m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
+            m_motion.onLinkState(state, m_running && !m_shuttingDown);
+        });
     }
 }
 
@@ -122,13 +125,52 @@ void LaserBridge::onCommand(const CommandFrame& frame)
     if (m_doorOpen) {
         log(LogEntry::Kind::Note,
             tr("door open: %1 waits until the door closes").arg(commandText(frame)));
-    } else if (m_stop != StopStage::None) {
+    } else if (m_motion.stopping()) {
         // The stop under way ends in redispatchAll(), which takes the newest target.
     } else if (slot.job.kind != Job::Kind::None) {
-        retarget(slot);
+        m_motion.retarget(slot);
     } else {
-        dispatch(slot);
+        m_motion.dispatch(slot);
     }
+    publish(slot);
+}
+
+LaserBridgeMotion::Hooks LaserBridge::motionHooks()
+{
+    LaserBridgeMotion::Hooks hooks;
+    hooks.reply = [this](Slot& slot, const LaserAnswer& answer) { reply(slot, answer); };
+    hooks.drop = [this](Slot& slot, const QString& why) { drop(slot, why); };
+    hooks.publish = [this](const Slot& slot) { publish(slot); };
+    hooks.log = [this](LogEntry::Kind kind, const QString& text) { log(kind, text); };
+    hooks.stopEnded = [this] {
+        if (std::exchange(m_doorReportPending, false))
+            reportDoor(true); // the '3' waited for the stop to settle
+    };
+    hooks.finishShutdown = [this] { finishShutdown(); };
+    hooks.doorOpen = [this] { return m_doorOpen; };
+    hooks.shuttingDown = [this] { return m_shuttingDown; };
+    return hooks;
+}
+
+void LaserBridge::onStatus(const MachineStatus& status)
+{
+    if (!m_running || m_shuttingDown)
+        return;
+    if (m_config.doorInput) {
+        if (const std::optional<bool> open = doorInputState(status, *m_config.doorInput))
+            setDoorOpen(*open);
+    }
+    m_motion.onStatus();
+}
+
+void LaserBridge::drop(Slot& slot, const QString& why)
+{
+    slot.failure =
+        tr("%1: %2; no answer to the laser (it raises its timeout alarm)")
+            .arg(slot.wanted ? commandText(*slot.wanted) : axisName(slot.laserAxis), why);
+    log(LogEntry::Kind::Error, slot.failure);
+    slot.wanted.reset();
+    slot.waitingForIdle = false;
     publish(slot);
 }
 
@@ -162,8 +204,8 @@ void LaserBridge::setDoorOpen(bool open)
             slot.waitingForIdle = false;
         // "after it has stopped due to any error (when detecting the ... doorswitch ...)":
         // the '3' goes out once the axes stand, with the positions they stopped at.
-        requestStop();
-        if (m_stop == StopStage::None)
+        m_motion.requestStop();
+        if (!m_motion.stopping())
             reportDoor(true);
         else
             m_doorReportPending = true;
@@ -172,8 +214,9 @@ void LaserBridge::setDoorOpen(bool open)
     if (std::exchange(m_doorReportPending, false))
         reportDoor(true);
     reportDoor(false);
-    if (m_stop == StopStage::None)
-        redispatchAll(); // "it should not prevent the motor from trying to reach its target"
+    if (!m_motion.stopping())
+        m_motion
+            .redispatchAll(); // "it should not prevent the motor from trying to reach its target"
 }
 
 void LaserBridge::reportDoor(bool open)
@@ -215,8 +258,8 @@ void LaserBridge::shutdown()
         return;
     m_shuttingDown = true;
     if (m_session && m_session->linkState() != LinkState::Connected)
-        dropTargetsOfLostLink(); // they cannot be reached: say so before letting go
-    bool busy = m_stop != StopStage::None;
+        m_motion.dropTargetsOfLostLink(); // they cannot be reached: say so before letting go
+    bool busy = m_motion.stopping();
     for (Slot& slot : m_slots) {
         busy = busy || slot.job.kind != Job::Kind::None;
         slot.wanted.reset();
@@ -224,8 +267,7 @@ void LaserBridge::shutdown()
     }
     if (busy && m_session && m_caps.stopCommand && m_session->linkState() == LinkState::Connected) {
         log(LogEntry::Kind::Note, tr("stopping the motion the bridge started"));
-        m_stopId = m_session->stop();
-        m_stop = StopStage::Requested;
+        m_motion.stopForShutdown();
         m_shutdownTimeout.start();
         return;
     }
@@ -240,7 +282,7 @@ void LaserBridge::shutdown()
 void LaserBridge::finishShutdown()
 {
     m_shutdownTimeout.stop();
-    m_stop = StopStage::None;
+    m_motion.clearStop();
     for (Slot& slot : m_slots) {
         slot.job = Job{};
         publish(slot);
@@ -299,7 +341,7 @@ QList<LaserBridge::AxisView> LaserBridge::axes() const
         view.referenced = slot.referenced;
         view.lastAnswer = slot.lastAnswer;
         view.failure = slot.failure;
-        if (m_stop != StopStage::None && slot.job.kind != Job::Kind::None)
+        if (m_motion.stopping() && slot.job.kind != Job::Kind::None)
             view.phase = Phase::Stopping;
         else if (slot.job.kind == Job::Kind::Reference)
             view.phase = Phase::Referencing;

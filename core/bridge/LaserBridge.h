@@ -2,6 +2,7 @@
 #include "bridge/LaserAnswerPolicy.h"
 #include "bridge/LaserBridgeConfig.h"
 #include "bridge/LaserBridgeLog.h"
+#include "bridge/LaserBridgeMotion.h"
 #include "controller/ControllerSession.h"
 #include "protocols/laser/LaserCodec.h"
 #include <QObject>
@@ -15,9 +16,11 @@ class Transport;
 namespace stepdeck::bridge {
 
 // StepDeck as the motor axes of a laser marker (manual: laser-motoraxis-rs232.en.txt), with
-// any controller behind it. The bridge answers the laser's frames on the laser port (9600 8N1)
-// and drives the controller only through its ControllerSession, respecting its capabilities
-// and refusals -- so the CLI command `laser-bridge` and the GUI's Laser bridge page share it.
+// any controller behind it. This class is the laser side (the port, its frames, the answers,
+// the door, the log); the controller side is LaserBridgeMotion. The bridge answers the laser's
+// frames on the laser port (9600 8N1) and drives the controller only through its ControllerSession,
+// respecting its capabilities and refusals -- so the CLI command `laser-bridge` and the GUI's Laser
+// bridge page share it.
 //
 // Per laser axis (what is answered, and when nothing is: LaserAnswerPolicy):
 // - home: the controller's reference run (its direction as Capabilities::referenceDirection
@@ -90,62 +93,23 @@ Q_SIGNALS:
     void axisChanged(const stepdeck::bridge::LaserBridge::AxisView& view);
 
 private:
-    struct Job
-    {
-        enum class Kind { None, Reference, Move };
-        Kind kind = Kind::None;
-        RequestId id = 0;          // the motion request
-        RequestId confirmId = 0;   // the status read that confirms standstill
-        bool accepted = false;     // the controller took it; waiting for standstill
-        laser::CommandFrame frame; // the laser command it serves
-        qint64 steps = 0;          // Move: target in controller steps
-    };
-    struct Slot
-    {
-        Axis laserAxis = Axis::X;
-        Axis axis = Axis::X; // on the controller
-        std::optional<laser::CommandFrame> wanted;
-        Job job;
-        bool referenced = false;
-        bool waitingForIdle = false;
-        std::optional<laser::StatusFrame> lastAnswer;
-        QString failure;
-    };
-    enum class StopStage { None, Requested, Settling, Confirming };
+    using Slot = LaserBridgeSlot;
+    using Job = LaserBridgeSlot::Job;
 
-    // --- laser side (LaserBridge.cpp) ---
     void onLaserOpened();
     void onLaserFailed(const QString& reason);
     void onLaserData(const QByteArray& bytes);
     void onCommand(const laser::CommandFrame& frame);
+    void onStatus(const MachineStatus& status);        // the door input, then the motion
     void reply(Slot& slot, const LaserAnswer& answer); // the frame, else drop()
     void send(Slot& slot, const laser::StatusFrame& frame);
+    // A target the bridge does not answer: logged, shown as the axis' failure.
+    void drop(Slot& slot, const QString& why);
     void reportDoor(bool open);
     void log(LogEntry::Kind kind, const QString& text, const QByteArray& frame = {});
     void publish(const Slot& slot);
     void finishShutdown();
-
-    // --- controller side (LaserBridgeMotion.cpp) ---
-    void dispatch(Slot& slot);
-    void startReference(Slot& slot);
-    void startMove(Slot& slot);
-    void retarget(Slot& slot);
-    bool canStopToRetarget() const;
-    void requestStop();
-    void onResult(const CommandResult& result);
-    void onStatus(const MachineStatus& status);
-    void onLinkState(LinkState state);
-    void dropTargetsOfLostLink();
-    void checkStandstill(Slot& slot);
-    void conclude(Slot& slot);
-    void onRefused(Slot& slot, const CommandResult& result);
-    void onStopResult(const CommandResult& result);
-    void advanceStop();
-    void redispatchAll();
-    bool controllerIdle() const;
-    bool referencedNow(const Slot& slot) const;
-    Slot* slotForRequest(RequestId id);
-    void drop(Slot& slot, const QString& why);
+    LaserBridgeMotion::Hooks motionHooks();
 
     QPointer<ControllerSession> m_session;
     QPointer<Transport> m_laser;
@@ -154,9 +118,7 @@ private:
     Capabilities m_caps;
     laser::CommandDecoder m_decoder;
     QMap<Axis, Slot> m_slots; // by laser axis
-    StopStage m_stop = StopStage::None;
-    RequestId m_stopId = 0;
-    RequestId m_stopConfirmId = 0;
+    LaserBridgeMotion m_motion;
     bool m_running = false;
     bool m_shuttingDown = false;
     bool m_doorOpen = false;

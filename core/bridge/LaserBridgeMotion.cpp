@@ -1,13 +1,20 @@
 // The controller side of the bridge: reference and move requests through the session,
 // standstill confirmed by a status read, retargeting by stop where the controller allows it.
-#include "LaserBridge.h"
+#include "LaserBridgeMotion.h"
 #include "Logging.h"
 
 namespace stepdeck::bridge {
 
 using namespace stepdeck::laser;
 
-bool LaserBridge::referencedNow(const Slot& slot) const
+LaserBridgeMotion::LaserBridgeMotion(ControllerSession* session, const LaserBridgeConfig& config,
+                                     const Capabilities& caps, const LaserAnswerPolicy& answers,
+                                     QMap<Axis, Slot>& axisSlots, Hooks hooks)
+    : m_session(session), m_config(config), m_caps(caps), m_answers(answers), m_slots(axisSlots),
+      m_hooks(std::move(hooks))
+{}
+
+bool LaserBridgeMotion::referencedNow(const Slot& slot) const
 {
     // Referenced by the bridge since it started, and not lost since (panic, reconnect, a stop
     // without ramp): the controller's own flag says the latter.
@@ -15,7 +22,7 @@ bool LaserBridge::referencedNow(const Slot& slot) const
     return slot.referenced && axis.referenced && axis.positionKnown;
 }
 
-bool LaserBridge::controllerIdle() const
+bool LaserBridgeMotion::controllerIdle() const
 {
     for (const AxisStatus& a : m_session->status().axes) {
         if (a.moving || a.jogging)
@@ -24,80 +31,70 @@ bool LaserBridge::controllerIdle() const
     return true;
 }
 
-void LaserBridge::drop(Slot& slot, const QString& why)
-{
-    slot.failure =
-        tr("%1: %2; no answer to the laser (it raises its timeout alarm)")
-            .arg(slot.wanted ? commandText(*slot.wanted) : axisName(slot.laserAxis), why);
-    log(LogEntry::Kind::Error, slot.failure);
-    slot.wanted.reset();
-    slot.waitingForIdle = false;
-    publish(slot);
-}
-
-void LaserBridge::dispatch(Slot& slot)
+void LaserBridgeMotion::dispatch(Slot& slot)
 {
     slot.waitingForIdle = false;
-    if (!slot.wanted || m_shuttingDown)
+    if (!slot.wanted || m_hooks.shuttingDown())
         return;
     if (!m_session || m_session->linkState() != LinkState::Connected)
-        return drop(slot, tr("the controller is not connected"));
+        return m_hooks.drop(slot, tr("the controller is not connected"));
     if (m_session->status().axes.value(slot.axis).jogging)
-        return drop(slot, tr("the operator is jogging axis %1").arg(axisName(slot.axis)));
+        return m_hooks.drop(slot, tr("the operator is jogging axis %1").arg(axisName(slot.axis)));
     if (slot.wanted->command == Command::Home || !referencedNow(slot))
         startReference(slot);
     else
         startMove(slot);
-    publish(slot);
+    m_hooks.publish(slot);
 }
 
-void LaserBridge::startReference(Slot& slot)
+void LaserBridgeMotion::startReference(Slot& slot)
 {
     const int direction = m_config.referenceRequest(slot.axis, m_caps);
     if (slot.wanted->command == Command::Move) {
-        log(LogEntry::Kind::Note, tr("axis %1 not referenced since the bridge started: "
-                                     "referencing it first")
-                                      .arg(axisName(slot.axis)));
+        log(LaserBridgeLogEntry::Kind::Note, tr("axis %1 not referenced since the bridge started: "
+                                                "referencing it first")
+                                                 .arg(axisName(slot.axis)));
     }
     slot.referenced = false;
     slot.job = Job{Job::Kind::Reference, 0, 0, false, *slot.wanted, 0};
     slot.job.id = m_session->reference({{slot.axis, direction}});
 }
 
-void LaserBridge::startMove(Slot& slot)
+void LaserBridgeMotion::startMove(Slot& slot)
 {
     // Range-checked as double first: target x scale can leave the integer range.
     const double steps = double(slot.wanted->position) * m_config.scale;
     if (!(qAbs(steps) < 9e15))
-        return drop(slot, tr("target x scale is out of range"));
+        return m_hooks.drop(slot, tr("target x scale is out of range"));
     slot.job = Job{Job::Kind::Move, 0, 0, false, *slot.wanted, qRound64(steps)};
     slot.job.id = m_session->moveAbsolute({{slot.axis, slot.job.steps}});
 }
 
-bool LaserBridge::canStopToRetarget() const
+bool LaserBridgeMotion::canStopToRetarget() const
 {
     // A stop that loses the position (no ramp: Nanotec 'S') would force a new reference run
     // for every retarget; such controllers finish the move first.
     return m_caps.stopCommand && m_caps.rampedStop;
 }
 
-void LaserBridge::retarget(Slot& slot)
+void LaserBridgeMotion::retarget(Slot& slot)
 {
     if (!slot.job.accepted || slot.job.confirmId != 0)
         return; // the request or its confirmation is under way; conclude() sees the new target
     if (canStopToRetarget()) {
-        log(LogEntry::Kind::Note,
+        log(LaserBridgeLogEntry::Kind::Note,
             tr("new target for axis %1 while it moves: stopping first").arg(axisName(slot.axis)));
         requestStop();
     } else {
-        log(LogEntry::Kind::Note, tr("new target for axis %1 while it moves: the controller "
-                                     "cannot retarget without a ramped stop, so it arrives "
-                                     "first")
-                                      .arg(axisName(slot.axis)));
+        log(LaserBridgeLogEntry::Kind::Note,
+            tr("new target for axis %1 while it moves: the controller "
+               "cannot retarget without a ramped stop, so it arrives "
+               "first")
+                .arg(axisName(slot.axis)));
     }
 }
 
-void LaserBridge::requestStop()
+void LaserBridgeMotion::requestStop()
 {
     if (m_stop != StopStage::None || !m_session)
         return;
@@ -107,17 +104,23 @@ void LaserBridge::requestStop()
     if (!anyJob)
         return;
     if (!m_caps.stopCommand) {
-        log(LogEntry::Kind::Error,
+        log(LaserBridgeLogEntry::Kind::Error,
             tr("the controller has no stop command: the axes go on to their targets"));
         return;
     }
     m_stop = StopStage::Requested;
     m_stopId = m_session->stop();
     for (const Slot& slot : std::as_const(m_slots))
-        publish(slot);
+        m_hooks.publish(slot);
 }
 
-LaserBridge::Slot* LaserBridge::slotForRequest(RequestId id)
+void LaserBridgeMotion::stopForShutdown()
+{
+    m_stopId = m_session->stop();
+    m_stop = StopStage::Requested;
+}
+
+LaserBridgeMotion::Slot* LaserBridgeMotion::slotForRequest(RequestId id)
 {
     for (Slot& slot : m_slots) {
         if (slot.job.kind != Job::Kind::None && (slot.job.id == id || slot.job.confirmId == id))
@@ -126,7 +129,7 @@ LaserBridge::Slot* LaserBridge::slotForRequest(RequestId id)
     return nullptr;
 }
 
-void LaserBridge::onResult(const CommandResult& result)
+void LaserBridgeMotion::onResult(const CommandResult& result)
 {
     if (result.id == m_stopId || (m_stopConfirmId != 0 && result.id == m_stopConfirmId))
         return onStopResult(result);
@@ -137,8 +140,8 @@ void LaserBridge::onResult(const CommandResult& result)
         slot->job.confirmId = 0;
         if (!result.ok()) {
             slot->job = Job{};
-            return drop(*slot,
-                        tr("the controller's status could not be read: %1").arg(result.message));
+            return m_hooks.drop(
+                *slot, tr("the controller's status could not be read: %1").arg(result.message));
         }
         return conclude(*slot);
     }
@@ -152,36 +155,36 @@ void LaserBridge::onResult(const CommandResult& result)
         checkStandstill(*slot);
 }
 
-void LaserBridge::onRefused(Slot& slot, const CommandResult& result)
+void LaserBridgeMotion::onRefused(Slot& slot, const CommandResult& result)
 {
     const Job job = std::exchange(slot.job, Job{});
-    publish(slot);
-    if (m_stop != StopStage::None || m_shuttingDown)
+    m_hooks.publish(slot);
+    if (m_stop != StopStage::None || m_hooks.shuttingDown())
         return; // the stop under way dropped it; redispatchAll() sends the newest target
     if (slot.wanted && !(*slot.wanted == job.frame))
         return dispatch(slot); // superseded meanwhile
     const AxisStatus axis = m_session->status().axes.value(slot.axis);
     if (result.error == ErrorKind::Refused && axis.limitSwitch) {
-        log(LogEntry::Kind::Note,
+        log(LaserBridgeLogEntry::Kind::Note,
             tr("controller refused at an active limit switch: %1").arg(result.message));
-        return reply(slot, m_answers.refusedAtLimit(slot.laserAxis, slot.axis, axis));
+        return m_hooks.reply(slot, m_answers.refusedAtLimit(slot.laserAxis, slot.axis, axis));
     }
     if (result.error == ErrorKind::Refused && !controllerIdle()) {
         slot.waitingForIdle = true;
-        log(LogEntry::Kind::Note, tr("axis %1 waits until the controller is idle (%2)")
-                                      .arg(axisName(slot.axis), result.message));
-        return publish(slot);
+        log(LaserBridgeLogEntry::Kind::Note, tr("axis %1 waits until the controller is idle (%2)")
+                                                 .arg(axisName(slot.axis), result.message));
+        return m_hooks.publish(slot);
     }
-    drop(slot, tr("the controller did not take it: %1").arg(result.message));
+    m_hooks.drop(slot, tr("the controller did not take it: %1").arg(result.message));
 }
 
-void LaserBridge::onLinkState(LinkState state)
+void LaserBridgeMotion::onLinkState(LinkState state, bool serving)
 {
-    if (state != LinkState::Connected && m_running && !m_shuttingDown)
+    if (state != LinkState::Connected && serving)
         dropTargetsOfLostLink();
 }
 
-void LaserBridge::dropTargetsOfLostLink()
+void LaserBridgeMotion::dropTargetsOfLostLink()
 {
     // Nothing can be reached or confirmed any more: the controller may still be moving and
     // its positions are unknown. Every open target is dropped at once, with the reason.
@@ -192,25 +195,19 @@ void LaserBridge::dropTargetsOfLostLink()
         if (!slot.wanted && slot.job.kind == Job::Kind::None)
             continue;
         slot.job = Job{};
-        drop(slot, why);
+        m_hooks.drop(slot, why);
     }
 }
 
-void LaserBridge::onStatus(const MachineStatus& status)
+void LaserBridgeMotion::onStatus()
 {
-    if (!m_running || m_shuttingDown)
-        return;
-    if (m_config.doorInput) {
-        if (const std::optional<bool> open = doorInputState(status, *m_config.doorInput))
-            setDoorOpen(*open);
-    }
     if (m_stop != StopStage::None)
         return advanceStop();
     for (Slot& slot : m_slots) {
         if (slot.job.kind != Job::Kind::None && slot.job.accepted && slot.job.confirmId == 0)
             checkStandstill(slot);
     }
-    if (!controllerIdle() || m_doorOpen)
+    if (!controllerIdle() || m_hooks.doorOpen())
         return;
     for (Slot& slot : m_slots) {
         if (slot.waitingForIdle && slot.job.kind == Job::Kind::None)
@@ -218,12 +215,12 @@ void LaserBridge::onStatus(const MachineStatus& status)
     }
 }
 
-void LaserBridge::checkStandstill(Slot& slot)
+void LaserBridgeMotion::checkStandstill(Slot& slot)
 {
     const AxisStatus axis = m_session->status().axes.value(slot.axis);
     if (axis.jogging) {
         slot.job = Job{};
-        return drop(slot, tr("the operator took over axis %1").arg(axisName(slot.axis)));
+        return m_hooks.drop(slot, tr("the operator took over axis %1").arg(axisName(slot.axis)));
     }
     if (axis.moving)
         return;
@@ -232,7 +229,7 @@ void LaserBridge::checkStandstill(Slot& slot)
     slot.job.confirmId = m_session->refreshStatus();
 }
 
-void LaserBridge::conclude(Slot& slot)
+void LaserBridgeMotion::conclude(Slot& slot)
 {
     const AxisStatus axis = m_session->status().axes.value(slot.axis);
     if (axis.moving) { // moving again (the operator, or a late status): wait once more
@@ -243,46 +240,44 @@ void LaserBridge::conclude(Slot& slot)
     const Job job = std::exchange(slot.job, Job{});
     if (job.kind == Job::Kind::Reference) {
         if (!(axis.referenced && axis.positionKnown))
-            return reply(slot, m_answers.referenceFailed(slot.laserAxis, slot.axis, axis));
+            return m_hooks.reply(slot, m_answers.referenceFailed(slot.laserAxis, slot.axis, axis));
         slot.referenced = true;
         if (slot.wanted && slot.wanted->command == Command::Home)
-            return reply(slot, m_answers.referenced(slot.laserAxis, slot.axis, axis));
+            return m_hooks.reply(slot, m_answers.referenced(slot.laserAxis, slot.axis, axis));
         return dispatch(slot); // home before the first move: now the move
     }
     if (slot.wanted && !(*slot.wanted == job.frame))
         return dispatch(slot); // a newer target arrived while it moved
-    reply(slot, m_answers.moveEnded(slot.laserAxis, slot.axis, axis, job.steps));
+    m_hooks.reply(slot, m_answers.moveEnded(slot.laserAxis, slot.axis, axis, job.steps));
 }
 
-void LaserBridge::onStopResult(const CommandResult& result)
+void LaserBridgeMotion::onStopResult(const CommandResult& result)
 {
     if (result.id == m_stopId) {
         m_stopId = 0;
         if (!result.ok()) {
-            log(LogEntry::Kind::Error, tr("stop failed: %1").arg(result.message));
-            if (m_shuttingDown)
-                return finishShutdown();
+            log(LaserBridgeLogEntry::Kind::Error, tr("stop failed: %1").arg(result.message));
+            if (m_hooks.shuttingDown())
+                return m_hooks.finishShutdown();
             // Back to waiting for arrival: the jobs still run.
             m_stop = StopStage::None;
-            if (std::exchange(m_doorReportPending, false))
-                reportDoor(true);
+            m_hooks.stopEnded();
             return;
         }
-        if (m_shuttingDown)
-            return finishShutdown();
+        if (m_hooks.shuttingDown())
+            return m_hooks.finishShutdown();
         m_stop = StopStage::Settling;
         return advanceStop();
     }
     m_stopConfirmId = 0;
     if (!result.ok())
-        log(LogEntry::Kind::Error, tr("status after the stop: %1").arg(result.message));
+        log(LaserBridgeLogEntry::Kind::Error, tr("status after the stop: %1").arg(result.message));
     m_stop = StopStage::None;
-    if (std::exchange(m_doorReportPending, false))
-        reportDoor(true);
+    m_hooks.stopEnded();
     redispatchAll();
 }
 
-void LaserBridge::advanceStop()
+void LaserBridgeMotion::advanceStop()
 {
     if (m_stop != StopStage::Settling || !controllerIdle())
         return;
@@ -290,13 +285,13 @@ void LaserBridge::advanceStop()
     m_stopConfirmId = m_session->refreshStatus();
 }
 
-void LaserBridge::redispatchAll()
+void LaserBridgeMotion::redispatchAll()
 {
     for (Slot& slot : m_slots) {
         slot.job = Job{};
         slot.waitingForIdle = slot.wanted.has_value();
-        if (m_doorOpen || !slot.wanted) {
-            publish(slot);
+        if (m_hooks.doorOpen() || !slot.wanted) {
+            m_hooks.publish(slot);
             continue;
         }
         dispatch(slot);

@@ -1,8 +1,9 @@
 #include "ElabSimulator.h"
 #include "Logging.h"
 
-// Protocol dispatch, requests and the time base of the E-LAB simulator. The command handlers
-// are in ElabSimCommands.cpp, the motion model in ElabSimAxis, the DC2 buffer in ElabSimStream.
+// Protocol dispatch, requests, the <DC2> stream and the time base of the E-LAB simulator. The
+// command interpreter is ElabSimCommands, the board's state ElabSimBoard, the motion model
+// ElabSimAxis, the DC2 buffer ElabSimStream.
 
 namespace stepdeck::elab {
 
@@ -27,14 +28,8 @@ ElabSimulator::~ElabSimulator() = default;
 
 void ElabSimulator::powerOnReset()
 {
-    for (ElabSimAxis& a : m_axes)
-        a.reset();
-    m_stream.reset();
+    m_board.powerOn();
     m_decoder.reset();
-    m_setupDone = 0;
-    m_drivePower = 0;
-    m_spindleRpm = 0;
-    m_coolant = false;
     m_lastNakReason.clear();
     m_lastNs = m_clock.nsecsElapsed();
     m_tick.stop();
@@ -52,7 +47,7 @@ void ElabSimulator::receive(const QByteArray& bytes)
 
 void ElabSimulator::handle(const Command& cmd)
 {
-    ++m_commands;
+    ++m_commandCount;
     advanceToNow();
     if (m_dropReplyTo != 0 && cmd.code == m_dropReplyTo) {
         m_dropReplyTo = 0;
@@ -78,8 +73,8 @@ void ElabSimulator::handle(const Command& cmd)
     } else if (faults().forceNak > 0) {
         --faults().forceNak;
         why = QStringLiteral("fault injection: forced NAK");
-    } else if (!refusedByNotes(cmd, &why)) {
-        ok = execute(cmd, &why);
+    } else if (!m_board.refusedByNotes(cmd, &why)) {
+        ok = m_commands.execute(cmd, &why);
     }
     if (ok) {
         journal(cmd);
@@ -120,7 +115,7 @@ bool ElabSimulator::handleRequest(const Command& cmd)
         send(encodeReply::axeState(axeState()));
         return true;
     case ctrl::ETB: // RequestTemperature: <ETB>TT#
-        send(encodeReply::temperature(quint8(m_temperature)));
+        send(encodeReply::temperature(quint8(m_board.temperature)));
         return true;
     case ctrl::ETX: { // RequestRelPosition: <ETX>XXXXXXXX,YYYYYYYY;ZZZZZZZZ.
         // Interpretation: ForceStopMove says "ist diesem die noch verbleibenden Schritte des
@@ -131,12 +126,13 @@ bool ElabSimulator::handleRequest(const Command& cmd)
         // by a new move of the axis. The absolute position stays internal (no reply has it).
         Triple<qint32> remaining{};
         for (size_t i = 0; i < 3; ++i)
-            remaining[i] = qint32(m_axes[i].remaining());
+            remaining[i] = qint32(m_board.axes[i].remaining());
         send(encodeReply::relPosition(remaining));
         return true;
     }
     case ctrl::LF: { // RequestStart: <ACK> pressed, <NAK> not (and notes 1, 2 of the table)
-        const bool pressed = m_startButton && !anyLimitActive() && !m_panicButton;
+        const bool pressed =
+            m_board.startButton && !m_board.anyLimitActive() && !m_board.panicButton;
         send(QByteArray(1, pressed ? ctrl::ACK : ctrl::NAK));
         return true;
     }
@@ -147,88 +143,16 @@ bool ElabSimulator::handleRequest(const Command& cmd)
     }
 }
 
-// Notes of the control-character table: 1 = NAK while a limit switch is active, 2 = NAK while
-// the panic (Not-Aus) button is active.
-bool ElabSimulator::refusedByNotes(const Command& cmd, QString* why) const
-{
-    bool note1 = false;
-    bool note2 = false;
-    switch (cmd.code) {
-    case ctrl::EOT:
-    case ctrl::BS:
-    case ctrl::VT:
-    case ctrl::FF:
-    case ctrl::CR:
-    case ctrl::DC2:
-    case ctrl::CAN:
-    case ctrl::EM:
-    case ctrl::SUB:
-    case ctrl::RS:
-    case ctrl::US:
-        note1 = note2 = true;
-        break;
-    case ctrl::SOH:
-    case ctrl::STX:
-    case ctrl::SI:
-    case ctrl::DC4:
-        note2 = true;
-        break;
-    default:
-        break;
-    }
-    if (note2 && m_panicButton) {
-        *why = QStringLiteral("panic button active (tmPanicStop)");
-        return true;
-    }
-    if (note1 && anyLimitActive()) {
-        *why = QStringLiteral("limit switch active (taLimSw)");
-        return true;
-    }
-    return false;
-}
-
 quint16 ElabSimulator::machineState()
 {
     advanceToNow();
-    quint16 word = 0;
-    if (m_drivePower >= 25) // SetDrivePower: "<25 = off"
-        word |= machine::DriveOn;
-    if (m_spindleRpm > 0)
-        word |= machine::SpindleOn;
-    if (busyNow())
-        word |= machine::Busy;
-    if (m_temperature > 50)
-        word |= machine::OverTemp;
-    if (!setupComplete())
-        word |= machine::InvSetup;
-    for (int i = 0; i < 3; ++i) {
-        if (m_axes[size_t(i)].limitActive())
-            word |= quint16(machine::LimSwX << i);
-        if (m_axes[size_t(i)].referenceActive())
-            word |= quint16(machine::RefSwX << i);
-    }
-    if (m_panicButton)
-        word |= machine::PanicStop;
-    return word;
+    return m_board.machineState();
 }
 
 quint8 ElabSimulator::axeState()
 {
     advanceToNow();
-    quint8 byte = 0;
-    for (int i = 0; i < 3; ++i) {
-        const ElabSimAxis& a = m_axes[size_t(i)];
-        // The DC2 stream is feed mode for all three axes until it has drained after EndOfFeed.
-        if (a.mode() == ElabSimAxis::Mode::Jog)
-            byte |= quint8(axe::XJog << (2 * i));
-        else if (a.isMoving() || m_stream.running())
-            byte |= quint8(axe::XMove << (2 * i));
-        if (a.limitActive())
-            byte |= axe::LimSw;
-        if (a.referenceActive())
-            byte |= axe::RefSw;
-    }
-    return byte;
+    return m_board.axeState();
 }
 
 // ------------------------------------------------------------------ time
@@ -236,68 +160,16 @@ quint8 ElabSimulator::axeState()
 void ElabSimulator::advanceToNow()
 {
     const qint64 now = m_clock.nsecsElapsed();
-    double seconds = double(now - m_lastNs) / 1e9;
+    const double seconds = double(now - m_lastNs) / 1e9;
     m_lastNs = now;
-    while (seconds > 0 && (anyAxisMoving() || m_stream.running())) {
-        if (!anyAxisMoving() && m_stream.isEmpty()) {
-            advanceStream(seconds); // waiting for the host's next step: nothing to integrate
-            break;
-        }
-        const double slice = qMin(seconds, kSliceSeconds);
-        seconds -= slice;
-        for (ElabSimAxis& a : m_axes) {
-            if (a.advance(slice) == ElabSimAxis::Event::ReferenceHit)
-                qCDebug(lcSimulator) << "elab sim: reference switch reached at" << a.position();
-        }
-        advanceStream(slice);
-        checkLimits();
-    }
+    m_board.advance(seconds, kSliceSeconds);
     sendFlowControl();
     updateTimer();
 }
 
-void ElabSimulator::advanceStream(double seconds)
-{
-    if (!m_stream.running())
-        return;
-    const int count = m_stream.due(seconds, streamRate());
-    for (int n = 0; n < count; ++n) {
-        const Triple<int> steps = decodeStepByte(m_stream.pop());
-        bool free = true;
-        for (int i = 0; i < 3; ++i)
-            free = m_axes[size_t(i)].singleStep(steps[size_t(i)]) && free;
-        if (!free)
-            break; // checkLimits() halts the stream
-    }
-    if (m_stream.endPending() && m_stream.isEmpty())
-        m_stream.finish();
-}
-
-// "Wenn eine Fahrt einen Endschalter erreicht hat, dann wird diese auch immer sofort
-// abgebrochen, ausgenommen wiederum die Jog Bewegungen." Covers switches reached by motion,
-// switches actuated by hand and a polarity change that makes a switch read active.
-void ElabSimulator::checkLimits()
-{
-    if (!anyLimitActive())
-        return;
-    bool stopped = false;
-    for (ElabSimAxis& a : m_axes) {
-        if (a.isMoving() && a.mode() != ElabSimAxis::Mode::Jog) {
-            a.hardStop();
-            stopped = true;
-        }
-    }
-    if (m_stream.running()) {
-        m_stream.halt();
-        stopped = true;
-    }
-    if (stopped)
-        qCInfo(lcSimulator) << "elab sim: limit switch active, move aborted";
-}
-
 void ElabSimulator::sendFlowControl()
 {
-    switch (m_stream.flow()) {
+    switch (m_board.stream.flow()) {
     case ElabSimStream::Flow::SendXOff:
         sendUnsolicited(QByteArray(1, ctrl::XOFF));
         break;
@@ -312,11 +184,176 @@ void ElabSimulator::sendFlowControl()
 void ElabSimulator::updateTimer()
 {
     // Tick only while something can change by itself; idle costs no CPU.
-    const bool needed = anyAxisMoving() || (m_stream.running() && !m_stream.isEmpty());
+    const bool needed =
+        m_board.anyAxisMoving() || (m_board.stream.running() && !m_board.stream.isEmpty());
     if (needed && !m_tick.isActive())
         m_tick.start();
     else if (!needed && m_tick.isActive())
         m_tick.stop();
+}
+
+// SetFeedStepXYZ. No reply in any case ("Der Controller gibt grundsätzlich keine Antwort auf
+// diese Befehle"), so where notes 1/2 or the preconditions would NAK, the step is dropped and
+// counted as rejected; a ForceStopMove or a limit switch halts the stream until GS/RS.
+void ElabSimulator::doStreamStep(const Command& cmd)
+{
+    m_board.stream.noteArrival();
+    if (!m_board.stream.running()) {
+        QString why;
+        if (!cmd.valid || m_board.refusedByNotes(cmd, &why) || !m_board.canStartMove(&why) ||
+            m_board.stream.halted() || m_board.streamRate() <= 0) {
+            m_board.stream.countRejected();
+            return;
+        }
+        m_board.stream.start();
+    } else if (!cmd.valid) {
+        m_board.stream.countRejected();
+        return;
+    }
+    m_board.stream.push(cmd.stepByte);
+    sendFlowControl();
+    updateTimer();
+}
+
+// ------------------------------------------------------------------ the machine around it
+// The machine around the simulated board (buttons, switches, temperature) and the accessors
+// tests and stepdeck-sim use to observe it. Every setter first brings the motion up to now, so
+// a switch actuated mid-move acts at this moment, not at the next tick.
+
+void ElabSimulator::setTemperature(int celsius)
+{
+    m_board.temperature = qBound(0, celsius, 255); // <ETB>TT#: one unsigned byte
+}
+
+void ElabSimulator::setPanicButton(bool pressed)
+{
+    advanceToNow();
+    m_board.panicButton = pressed;
+    if (pressed) {
+        qCInfo(lcSimulator) << "elab sim: panic button pressed, all axes stopped";
+        m_board.stopAll(false);
+    }
+    sendFlowControl();
+    updateTimer();
+}
+
+void ElabSimulator::setLimitSwitchActuated(Axis a, bool actuated)
+{
+    advanceToNow();
+    m_board.axis(a).setLimitForced(actuated);
+    m_board.checkLimits();
+    updateTimer();
+}
+
+void ElabSimulator::setReferenceSwitchActuated(Axis a, bool actuated)
+{
+    advanceToNow();
+    m_board.axis(a).setReferenceForced(actuated);
+    // A reference move waiting for this switch stops as if it had driven onto it.
+    if (m_board.axis(a).mode() == ElabSimAxis::Mode::Reference && m_board.axis(a).referenceActive())
+        m_board.axis(a).hardStop();
+    updateTimer();
+}
+
+void ElabSimulator::setLimitPositions(Axis a, qint64 minimum, qint64 maximum)
+{
+    advanceToNow();
+    m_board.axis(a).switches().limitMin = minimum;
+    m_board.axis(a).switches().limitMax = maximum;
+    m_board.checkLimits();
+    updateTimer();
+}
+
+void ElabSimulator::setReferencePosition(Axis a, qint64 position, qint64 window)
+{
+    advanceToNow();
+    m_board.axis(a).switches().referencePosition = position;
+    m_board.axis(a).switches().referenceWindow = qMax<qint64>(0, window);
+}
+
+void ElabSimulator::setSwitchWiring(Axis a, bool limitActiveHigh, bool referenceActiveHigh)
+{
+    advanceToNow();
+    m_board.axis(a).switches().limitWiredActiveHigh = limitActiveHigh;
+    m_board.axis(a).switches().referenceWiredActiveHigh = referenceActiveHigh;
+    m_board.checkLimits();
+    updateTimer();
+}
+
+ElabSimSwitchConfig ElabSimulator::switchConfig(Axis a) const
+{
+    return m_board.axis(a).switches();
+}
+
+void ElabSimulator::setPosition(Axis a, qint64 steps)
+{
+    advanceToNow();
+    m_board.axis(a).setPosition(steps);
+}
+
+void ElabSimulator::setStreamBuffer(int capacity, int highWater, int lowWater)
+{
+    m_board.stream.configure(capacity, highWater, lowWater);
+}
+
+qint64 ElabSimulator::position(Axis a)
+{
+    advanceToNow();
+    return m_board.axis(a).position();
+}
+
+bool ElabSimulator::isMoving(Axis a)
+{
+    advanceToNow();
+    return m_board.axis(a).isMoving() || m_board.stream.running();
+}
+
+bool ElabSimulator::isBusy()
+{
+    advanceToNow();
+    return m_board.busy();
+}
+
+qint64 ElabSimulator::remainingSteps(Axis a)
+{
+    advanceToNow();
+    return m_board.axis(a).remaining();
+}
+
+bool ElabSimulator::limitSwitchActive(Axis a) const
+{
+    return m_board.axis(a).limitActive();
+}
+bool ElabSimulator::referenceSwitchActive(Axis a) const
+{
+    return m_board.axis(a).referenceActive();
+}
+bool ElabSimulator::limitSwitchLevelHigh(Axis a) const
+{
+    return m_board.axis(a).limitLevelHigh();
+}
+ElabSimRamp ElabSimulator::rampParameters(Axis a) const
+{
+    return m_board.axis(a).ramp();
+}
+qint64 ElabSimulator::executedSteps(Axis a) const
+{
+    return m_board.axis(a).executedSingleSteps();
+}
+
+void ElabSimulator::emergencyStop()
+{
+    const bool silent = faults().silent;
+    faults().silent = true; // nobody asked: the ACK stays at the device
+    receive(encode::stopMove());
+    faults().silent = silent;
+}
+
+bool ElabSimulator::isStopFrame(const QByteArray& frame) const
+{
+    return frame == encode::stopMove() || frame == encode::panicStop() ||
+           frame == encode::panicStop() + encode::panicStop() ||
+           frame == encode::jogSpeed({0, 0, 0});
 }
 
 } // namespace stepdeck::elab

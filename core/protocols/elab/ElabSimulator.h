@@ -1,7 +1,6 @@
 #pragma once
-#include "ElabCodec.h"
-#include "ElabSimAxis.h"
-#include "ElabSimStream.h"
+#include "ElabSimBoard.h"
+#include "ElabSimCommands.h"
 #include "model/Axis.h"
 #include "sim/Simulator.h"
 #include <QElapsedTimer>
@@ -10,11 +9,12 @@
 namespace stepdeck::elab {
 
 // The device side of the E-LAB 3-axis protocol (manual: elab-3axis-stepper-controller.de.txt):
-// every command of the control-character table with the ACK/NAK rules of its notes,
-// time-based motion per axis (ElabSimAxis), switches at configurable positions with the
-// configured polarity, temperature, start and panic buttons, the <DC2> step buffer with
-// XOFF/XON (ElabSimStream) and fault injection. Positions advance by elapsed time; a timer
-// runs only while something moves.
+// every command of the control-character table with the ACK/NAK rules of its notes
+// (ElabSimCommands), time-based motion per axis (ElabSimAxis), switches at configurable
+// positions with the configured polarity, temperature, start and panic buttons (ElabSimBoard),
+// the <DC2> step buffer with XOFF/XON (ElabSimStream) and fault injection. This class answers
+// on the line and keeps the time: positions advance by elapsed time; a timer runs only while
+// something moves.
 class ElabSimulator : public Simulator
 {
     Q_OBJECT
@@ -38,11 +38,11 @@ public:
 
     // ---- the machine around the board ----
     void setTemperature(int celsius);
-    int temperature() const { return m_temperature; }
-    void setStartButton(bool pressed) { m_startButton = pressed; }
-    bool startButton() const { return m_startButton; }
+    int temperature() const { return m_board.temperature; }
+    void setStartButton(bool pressed) { m_board.startButton = pressed; }
+    bool startButton() const { return m_board.startButton; }
     void setPanicButton(bool pressed); // Not-Aus: stops everything, sets tmPanicStop
-    bool panicButton() const { return m_panicButton; }
+    bool panicButton() const { return m_board.panicButton; }
     // Switches actuated by hand (or stuck), independent of the position.
     void setLimitSwitchActuated(Axis axis, bool actuated);
     void setReferenceSwitchActuated(Axis axis, bool actuated);
@@ -69,21 +69,21 @@ public:
     bool referenceSwitchActive(Axis axis) const;
     bool limitSwitchLevelHigh(Axis axis) const;
     ElabSimRamp rampParameters(Axis axis) const;
-    int drivePower() const { return m_drivePower; }
-    quint32 spindleRpm() const { return m_spindleRpm; }
-    bool coolant() const { return m_coolant; }
+    int drivePower() const { return m_board.drivePower; }
+    quint32 spindleRpm() const { return m_board.spindleRpm; }
+    bool coolant() const { return m_board.coolant; }
     // <DC2> stream: single steps executed per axis (absolute count), step bytes executed,
     // bytes that arrived with the buffer full, bytes refused (panic, limit, no setup, stopped).
     qint64 executedSteps(Axis axis) const;
-    qint64 executedStepBytes() const { return m_stream.executed(); }
-    qint64 streamOverflows() const { return m_stream.overflows(); }
-    qint64 streamRejected() const { return m_stream.rejected(); }
-    int streamBuffered() const { return m_stream.size(); }
-    bool streamHostPaused() const { return m_stream.hostPaused(); }
+    qint64 executedStepBytes() const { return m_board.stream.executed(); }
+    qint64 streamOverflows() const { return m_board.stream.overflows(); }
+    qint64 streamRejected() const { return m_board.stream.rejected(); }
+    int streamBuffered() const { return m_board.stream.size(); }
+    bool streamHostPaused() const { return m_board.stream.hostPaused(); }
     // The most <DC2> pairs that arrived after one of the board's XOFFs, before its XON.
-    int streamMostPairsAfterXOff() const { return m_stream.mostPairsAfterXOff(); }
+    int streamMostPairsAfterXOff() const { return m_board.stream.mostPairsAfterXOff(); }
     bool isTicking() const { return m_tick.isActive(); }
-    qint64 commandsReceived() const { return m_commands; }
+    qint64 commandsReceived() const { return m_commandCount; }
     // Positioning moves (FastMove XY/XYZ/Z) the board accepted with ACK, per axis, in order:
     // soak runs compare them with the moves the host was told succeeded.
     using AcceptedMove = SimulatedMove;
@@ -91,58 +91,23 @@ public:
     QString lastNakReason() const { return m_lastNakReason; } // why the last NAK was sent
 
 private:
-    ElabSimAxis& axis(Axis a) { return m_axes[size_t(a)]; }
-    const ElabSimAxis& axis(Axis a) const { return m_axes[size_t(a)]; }
-
-    // ---- protocol (ElabSimulator.cpp) ----
     void handle(const Command& cmd);
     bool handleRequest(const Command& cmd);
-    bool refusedByNotes(const Command& cmd, QString* why) const;
-    bool execute(const Command& cmd, QString* why);
+    void doStreamStep(const Command& cmd);
     void journal(const Command& accepted);
     void ack() { send(QByteArray(1, ctrl::ACK)); }
     void nak() { send(QByteArray(1, ctrl::NAK)); }
-
-    // ---- commands (ElabSimCommands.cpp) ----
-    bool setupComplete() const { return m_setupDone == 0x7; }
-    bool anyLimitActive() const;
-    bool anyAxisMoving() const;
-    bool busyNow() const { return anyAxisMoving() || m_stream.running(); }
-    bool onlyModeMoving(ElabSimAxis::Mode mode) const;
-    bool canStartMove(QString* why) const;
-    bool doRamp(const Command& cmd, QString* why);
-    bool doPolarity(const Command& cmd, QString* why);
-    bool doFastMove(const Command& cmd, QString* why);
-    bool doFeed(const Command& cmd, QString* why);
-    bool doReference(const Command& cmd, QString* why);
-    bool doVelocity(const Command& cmd, QString* why);
-    bool doJog(const Command& cmd, QString* why);
-    void doStreamStep(const Command& cmd);
-    void stopAll(bool ramped);
-
-    // ---- time (ElabSimulator.cpp) ----
     void advanceToNow();
-    void advanceStream(double seconds);
-    void checkLimits();
-    double streamRate() const;
     void sendFlowControl();
     void updateTimer();
 
     CommandDecoder m_decoder;
-    std::array<ElabSimAxis, 3> m_axes;
-    ElabSimStream m_stream;
+    ElabSimBoard m_board;
+    ElabSimCommands m_commands{m_board};
     QTimer m_tick{this};
     QElapsedTimer m_clock;
     qint64 m_lastNs = 0;
-
-    int m_setupDone = 0; // bit 0 start speed, bit 1 max speed, bit 2 acceleration
-    int m_drivePower = 0;
-    quint32 m_spindleRpm = 0;
-    bool m_coolant = false;
-    int m_temperature = 25;
-    bool m_startButton = false;
-    bool m_panicButton = false;
-    qint64 m_commands = 0;
+    qint64 m_commandCount = 0;
     QList<AcceptedMove> m_acceptedMoves;
     QString m_lastNakReason;
     char m_dropReplyTo = 0;

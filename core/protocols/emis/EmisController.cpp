@@ -1,4 +1,5 @@
-// Link, connect sequence, status polling and the normalised status of the SMC-IC4.
+// Link, connect sequence, status polling and the normalised status of the SMC-IC4; the safety
+// contract of the base. Motion, jog, parameters and operations are the pieces' (header).
 #include "EmisController.h"
 #include "EmisLogging.h"
 #include "EmisModel.h"
@@ -9,24 +10,27 @@ namespace stepdeck::emis {
 
 EmisController::EmisController(Transport* transport, const ControllerOptions& options,
                                QObject* parent)
-    : Controller(transport, options, parent)
+    : Controller(transport, options, parent), m_exchange(transport, this),
+      m_tracker(*this, m_known, this, trackerHooks()),
+      m_motion(*this, m_exchange, m_known, m_tracker, motionHooks()),
+      m_jog(*this, m_exchange, m_known, m_tracker, m_motion),
+      m_parameters(*this, m_exchange, m_known, m_tracker),
+      m_operations(*this, m_exchange, m_known, m_tracker, m_motion, m_parameters)
 {
-    for (Axis axis : allAxes()) {
-        m_tracks.insert(axis, Track{});
+    for (Axis axis : allAxes())
         mutableStatus().axes.insert(axis, AxisStatus{});
-    }
     for (int i = 0; i < kOutputCount; ++i)
         mutableStatus().outputs << std::nullopt;
-    m_link = new EmisLink(transport, this);
-    m_link->setDefaultTimeout(options.commandTimeoutMs);
-    connect(m_link, &EmisLink::arrived, this, &EmisController::onArrived);
+    EmisLink* link = &m_exchange.link();
+    link->setDefaultTimeout(options.commandTimeoutMs);
+    connect(link, &EmisLink::arrived, this, [this](Axis axis) { m_tracker.onArrived(axis); });
     // No answer in time: the board may be starting again after a reset (5.8).
-    connect(m_link, &EmisLink::timedOut, this, &EmisController::suspectReset);
-    connect(m_link, &EmisLink::stray, this, [this](const QString& what) {
+    connect(link, &EmisLink::timedOut, this, [this] { m_tracker.suspectReset(); });
+    connect(link, &EmisLink::stray, this, [this](const QString& what) {
         ++mutableStatus().resyncCount;
         qCInfo(lcEmis) << what;
     });
-    connect(m_link, &EmisLink::traffic, this,
+    connect(link, &EmisLink::traffic, this,
             [this](TrafficRecord::Direction dir, const QByteArray& bytes, bool poll) {
                 recordTraffic(dir, bytes, poll);
             });
@@ -39,9 +43,6 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
         loseLink(tr("the SMC-IC4 did not answer %1 input polls (@IG) in a row").arg(misses));
     });
     connect(&m_poller, &StatusPoller::rateChanged, this, &Controller::pollRateChanged);
-    m_deadlineTimer.setSingleShot(true);
-    connect(&m_deadlineTimer, &QTimer::timeout, this, &EmisController::checkDeadlines);
-    m_clock.start();
     if (transport) {
         connect(transport, &Transport::opened, this, &EmisController::onOpened);
         connect(transport, &Transport::failed, this,
@@ -51,6 +52,23 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
 }
 
 EmisController::~EmisController() = default;
+
+// The jog chain runs on vector moves: it hears of its chunks from both.
+EmisMotionTracker::Hooks EmisController::trackerHooks()
+{
+    EmisMotionTracker::Hooks hooks;
+    hooks.chunkArrived = [this] { m_jog.onChunkArrived(); };
+    hooks.chunkLost = [this](const QString& why) { m_jog.halt(why); };
+    return hooks;
+}
+
+EmisMotion::Hooks EmisController::motionHooks()
+{
+    EmisMotion::Hooks hooks;
+    hooks.jogging = [this](Axis axis) { return m_jog.rate(axis) != 0.0; };
+    hooks.chunkSettled = [this](bool ok, const QString& why) { m_jog.onChunkSettled(ok, why); };
+    return hooks;
+}
 
 Capabilities EmisController::capabilities() const
 {
@@ -68,6 +86,52 @@ void EmisController::setPollInterval(int ms)
     m_poller.setInterval(m_userPollMs);
 }
 
+// ---------------------------------------------------------------- delegated
+
+void EmisController::readParameters(RequestId id, const QStringList& names)
+{
+    m_parameters.read(id, names);
+}
+
+void EmisController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+{
+    Q_UNUSED(verify) // the SMC-IC4 cannot read working values back
+    m_parameters.write(id, values);
+}
+
+void EmisController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    m_motion.moveRelative(id, steps);
+}
+
+void EmisController::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    m_motion.moveAbsolute(id, targets);
+}
+
+void EmisController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    m_motion.reference(id, directions);
+}
+
+void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
+{
+    m_operations.sendRaw(id, bytes);
+}
+
+void EmisController::modelOperation(RequestId id, const QString& name, const QVariantMap& args)
+{
+    if (!m_operations.run(id, name, args))
+        Controller::modelOperation(id, name, args);
+}
+
+QString EmisController::jogRefusal() const
+{
+    if (QString base = Controller::jogRefusal(); !base.isEmpty())
+        return base;
+    return m_jog.refusal();
+}
+
 // ---------------------------------------------------------------- link
 
 void EmisController::openLink(RequestId id)
@@ -79,14 +143,8 @@ void EmisController::openLink(RequestId id)
     if (m_openId)
         return finishError(id, ErrorKind::Refused, tr("already connecting"));
     m_openId = id;
-    for (Track& t : m_tracks) {
-        // A new session: positions count from here, nothing referenced. An axis that may
-        // still be moving stays unconfirmed until its arrival or a reference run proves it.
-        const bool unconfirmed = t.unconfirmed;
-        t = Track{};
-        t.unconfirmed = unconfirmed;
-    }
-    m_speeds.forgetBoard(); // an earlier session (or program) may have left any work speed
+    m_tracker.startSession();
+    m_known.speeds.forgetBoard(); // an earlier session (or program) may have left any work speed
     changeLink(LinkState::Connecting);
     if (transport()->isOpen())
         onOpened();
@@ -98,8 +156,8 @@ void EmisController::onOpened()
 {
     if (!m_openId)
         return;
-    m_link->reset();
-    m_link->settle(kSettleMs);
+    m_exchange.link().reset();
+    m_exchange.link().settle(kSettleMs);
     identify(1);
 }
 
@@ -108,26 +166,29 @@ void EmisController::identify(int retries)
     // 9.1 identifies the board (once more after a timeout: a board just powered up may miss
     // the first command); 9.15 tells the stored values (tolerant: the manual shows no example
     // answer); 9.2 gives the inputs, so the first status is complete.
-    request(encode::version(), EmisLink::Expect::Ack, [this, retries](const EmisLink::Result& r) {
-        if (r.outcome == EmisLink::Outcome::Timeout && retries > 0 && m_openId)
-            return identify(retries - 1);
-        if (r.outcome != EmisLink::Outcome::Ok) {
-            return finishOpen(r.outcome == EmisLink::Outcome::Timeout ? ErrorKind::Timeout
-                                                                      : failureKind(r),
-                              tr("no answer from an SMC-IC4 to @V (115200 baud 8N1): %1")
-                                  .arg(failureText(encode::version(), r)));
-        }
-        mutableStatus().deviceFirmware = parseVersion(r.text).value_or(QString());
-        readStoredParameters(0, [this](const EmisLink::Result& stored) {
-            if (stored.outcome != EmisLink::Outcome::Ok)
-                qCInfo(lcEmis) << "*PRSYS not understood; stored values unknown";
-            request(encode::allInputs(), EmisLink::Expect::Ack, [this](const EmisLink::Result& in) {
-                if (const auto levels = parseAllInputs(in.text))
-                    applyInputs(*levels);
-                finishOpen(ErrorKind::None, {});
+    m_exchange.request(
+        encode::version(), EmisLink::Expect::Ack, [this, retries](const EmisLink::Result& r) {
+            if (r.outcome == EmisLink::Outcome::Timeout && retries > 0 && m_openId)
+                return identify(retries - 1);
+            if (r.outcome != EmisLink::Outcome::Ok) {
+                return finishOpen(r.outcome == EmisLink::Outcome::Timeout
+                                      ? ErrorKind::Timeout
+                                      : m_exchange.failureKind(r),
+                                  tr("no answer from an SMC-IC4 to @V (115200 baud 8N1): %1")
+                                      .arg(m_exchange.failureText(encode::version(), r)));
+            }
+            mutableStatus().deviceFirmware = parseVersion(r.text).value_or(QString());
+            m_parameters.readStored(0, [this](const EmisLink::Result& stored) {
+                if (stored.outcome != EmisLink::Outcome::Ok)
+                    qCInfo(lcEmis) << "*PRSYS not understood; stored values unknown";
+                m_exchange.request(encode::allInputs(), EmisLink::Expect::Ack,
+                                   [this](const EmisLink::Result& in) {
+                                       if (const auto levels = parseAllInputs(in.text))
+                                           applyInputs(*levels);
+                                       finishOpen(ErrorKind::None, {});
+                                   });
             });
         });
-    });
 }
 
 void EmisController::finishOpen(ErrorKind kind, const QString& message)
@@ -154,20 +215,13 @@ void EmisController::sendSafetyStop(std::function<void(bool acknowledged)> done)
 {
     // No stop command (chapter 9): nothing to send. The jog chain ends here, so no further
     // chunk goes out; a chunk or move under way ends by itself when it arrives.
-    m_jogRates.clear();
-    haltJogImmediately();
+    m_jog.end();
     done(!motionMayBeRunning());
 }
 
 bool EmisController::motionMayBeRunning() const
 {
-    if (m_jogSending)
-        return true; // a chunk may be on its way
-    for (const Track& t : m_tracks) {
-        if (t.awaiting || t.startPending || t.unconfirmed)
-            return true;
-    }
-    return false;
+    return m_jog.sending() || m_tracker.mayBeRunning(); // a chunk may be on its way
 }
 
 void EmisController::abortHostSide(ErrorKind kind, const QString& message)
@@ -176,48 +230,19 @@ void EmisController::abortHostSide(ErrorKind kind, const QString& message)
     if (m_openId)
         finishError(std::exchange(m_openId, 0), kind, message);
     stopTrackingMotion(message);
-    m_abort = qMakePair(kind, message);
-    m_link->cancelAll(); // every pending request finishes with kind and message
-    m_abort.reset();
-    m_programming = false;
-    m_link->setExclusive(false);
-    syncStatus(); // the base publishes next: no stale jog estimate in it
+    m_exchange.cancelAll(kind, message);   // every pending request finishes with kind and message
+    m_exchange.link().setExclusive(false); // an input program being written ends here
+    syncStatus();                          // the base publishes next: no stale jog estimate in it
 }
 
 void EmisController::stopTrackingMotion(const QString& reason)
 {
-    haltJogImmediately();
-    m_jogRates.clear();
-    m_jogSending = false;
-    m_speeds.forgetBoard();
-    for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
-        if (!it->awaiting)
-            continue;
-        it->awaiting = false;
-        it->overdue = false;
-        it->jogChunk = false;
-        markLost(it.key());
-        qCWarning(lcEmis) << "stopped tracking axis" << axisName(it.key())
-                          << "while it moved:" << reason;
-    }
-    m_deadlineTimer.stop();
-    updateMotionUnconfirmed();
+    m_jog.abort();
+    m_known.speeds.forgetBoard();
+    m_tracker.stopTracking(reason);
 }
 
 // ---------------------------------------------------------------- requests
-
-void EmisController::request(const QByteArray& bytes, EmisLink::Expect expect, Handler done,
-                             int timeoutMs, int storedMotors, bool exclusive)
-{
-    EmisLink::Request r;
-    r.bytes = bytes;
-    r.expect = expect;
-    r.timeoutMs = timeoutMs;
-    r.storedMotors = storedMotors;
-    r.exclusive = exclusive;
-    r.done = std::move(done);
-    m_link->submit(std::move(r));
-}
 
 bool EmisController::requireLink(RequestId id)
 {
@@ -227,59 +252,17 @@ bool EmisController::requireLink(RequestId id)
     return false;
 }
 
-ErrorKind EmisController::failureKind(const EmisLink::Result& r) const
+void EmisController::failExchange(RequestId id, const QByteArray& bytes, const EmisLink::Result& r)
 {
-    if (m_abort && r.outcome == EmisLink::Outcome::Cancelled)
-        return m_abort->first;
-    switch (r.outcome) {
-    case EmisLink::Outcome::Ok:
-        return ErrorKind::None;
-    case EmisLink::Outcome::Refused:
-        return ErrorKind::Nak;
-    case EmisLink::Outcome::Timeout:
-        return ErrorKind::Timeout;
-    case EmisLink::Outcome::Protocol:
-        return ErrorKind::Protocol;
-    case EmisLink::Outcome::Cancelled:
-        return ErrorKind::Cancelled;
-    }
-    return ErrorKind::Protocol;
-}
-
-QString EmisController::failureText(const QByteArray& bytes, const EmisLink::Result& r) const
-{
-    if (m_abort && r.outcome == EmisLink::Outcome::Cancelled)
-        return m_abort->second;
-    const QString command = formatTraffic(bytes);
-    switch (r.outcome) {
-    case EmisLink::Outcome::Ok:
-        return {};
-    case EmisLink::Outcome::Refused:
-        return tr("the SMC-IC4 refused '%1' (<BEL>: invalid value, or the motor is still "
-                  "moving)")
-            .arg(command);
-    case EmisLink::Outcome::Timeout:
-        return r.detail.isEmpty()
-                   ? tr("no reply to '%1' in time").arg(command)
-                   : tr("no complete reply to '%1' in time: %2").arg(command, r.detail);
-    case EmisLink::Outcome::Protocol:
-        return tr("unexpected reply to '%1': %2").arg(command, r.detail);
-    case EmisLink::Outcome::Cancelled:
-        return r.detail.isEmpty() ? tr("'%1' was cancelled (disconnect)").arg(command) : r.detail;
-    }
-    return {};
-}
-
-void EmisController::finishFailure(RequestId id, const QByteArray& bytes, const EmisLink::Result& r)
-{
-    finishError(id, failureKind(r), failureText(bytes, r));
+    finishError(id, m_exchange.failureKind(r), m_exchange.failureText(bytes, r));
 }
 
 // ---------------------------------------------------------------- status
 
 void EmisController::onPollDue()
 {
-    if (linkState() != LinkState::Connected || !m_link->isIdle() || m_link->isExclusive())
+    EmisLink& link = m_exchange.link();
+    if (linkState() != LinkState::Connected || !link.isIdle() || link.isExclusive())
         return; // commands first; an input program being written owns the line
     m_poller.pollStarted();
     EmisLink::Request r;
@@ -299,26 +282,27 @@ void EmisController::onPollDue()
         if (levels)
             publish();
     };
-    m_link->submit(std::move(r));
+    link.submit(std::move(r));
 }
 
 void EmisController::refreshStatus(RequestId id)
 {
     if (!requireLink(id))
         return;
-    request(encode::allInputs(), EmisLink::Expect::Ack, [this, id](const EmisLink::Result& r) {
-        if (r.outcome != EmisLink::Outcome::Ok)
-            return finishFailure(id, encode::allInputs(), r);
-        const auto levels = parseAllInputs(r.text);
-        if (!levels) {
-            return finishError(id, ErrorKind::Protocol,
-                               tr("@IG answered '%1', not eight input levels (9.2)")
-                                   .arg(QString::fromLatin1(r.text)));
-        }
-        applyInputs(*levels);
-        publish();
-        finishOk(id, QVariant::fromValue(status()));
-    });
+    m_exchange.request(
+        encode::allInputs(), EmisLink::Expect::Ack, [this, id](const EmisLink::Result& r) {
+            if (r.outcome != EmisLink::Outcome::Ok)
+                return failExchange(id, encode::allInputs(), r);
+            const auto levels = parseAllInputs(r.text);
+            if (!levels) {
+                return finishError(id, ErrorKind::Protocol,
+                                   tr("@IG answered '%1', not eight input levels (9.2)")
+                                       .arg(QString::fromLatin1(r.text)));
+            }
+            applyInputs(*levels);
+            publish();
+            finishOk(id, QVariant::fromValue(status()));
+        });
 }
 
 void EmisController::applyInputs(const QList<bool>& levels)
@@ -334,8 +318,9 @@ void EmisController::syncStatus()
 {
     MachineStatus& s = mutableStatus();
     bool busy = false;
-    for (auto it = m_tracks.cbegin(); it != m_tracks.cend(); ++it) {
-        const Track& t = it.value();
+    const QMap<Axis, EmisMotionTracker::Track>& tracks = m_tracker.tracks();
+    for (auto it = tracks.cbegin(); it != tracks.cend(); ++it) {
+        const EmisMotionTracker::Track& t = it.value();
         AxisStatus& a = s.axes[it.key()];
         a.position = t.position;
         a.referenced = t.referenced && !t.lost;
@@ -343,7 +328,7 @@ void EmisController::syncStatus()
         a.positionEstimated = t.lost;
         const bool running = t.awaiting && !t.overdue;
         a.moving = running && !t.jogChunk;
-        a.jogging = (running && t.jogChunk) || m_jogRates.value(it.key(), 0.0) != 0.0;
+        a.jogging = (running && t.jogChunk) || m_jog.rate(it.key()) != 0.0;
         a.limitSwitch = false; // the SMC-IC4 has no limit switch inputs
         // 5.2.1: inputs 1-4 are the reference switches X, Y, Z, U; a normally open switch is
         // active at high level, a normally closed one at low level.
@@ -366,10 +351,8 @@ void EmisController::publish()
 
 void EmisController::changeLink(LinkState state, const QString& reason)
 {
-    if (state == LinkState::Connecting || state == LinkState::Lost) {
-        for (Track& t : m_tracks)
-            t.referenced = false; // unknown until referenced in the new session
-    }
+    if (state == LinkState::Connecting || state == LinkState::Lost)
+        m_tracker.forgetReferences(); // unknown until referenced in the new session
     syncStatus(); // setLinkState() publishes: the base's jog estimate must not leak into it
     setLinkState(state, reason);
 }

@@ -1,19 +1,35 @@
 #pragma once
-#include "EmisLink.h"
-#include "EmisParameterPlan.h"
-#include "EmisWorkSpeeds.h"
+#include "EmisExchange.h"
+#include "EmisHost.h"
+#include "EmisJog.h"
+#include "EmisMotion.h"
+#include "EmisMotionTracker.h"
+#include "EmisOperations.h"
+#include "EmisParameters.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
 
 namespace stepdeck::emis {
 
 // The EMIS SMC-IC4 adapter (manual: emis-smc-ic4-manual.de.txt, chapter 9) over a Transport.
+// This class owns the link, the connect sequence, input polling, the status and the safety
+// contract of the base; the pieces, each with one responsibility:
+//   EmisLink           line discipline: one command at a time, its reply, timeouts, <DCn>
+//   EmisExchange       requests onto the link and what their failures mean
+//   EmisMotion         vector moves and reference runs: checked, work speeds set, sent
+//   EmisMotionTracker  their arrivals and deadlines, the position bookkeeping
+//   EmisJog            the jog as a chain of short vector moves
+//   EmisParameters     working values (set) and system parameters (##, *PRSYS, *PESYS)
+//   EmisOperations     model operations (outputs, input programs) and the console
+//   EmisWorkSpeeds     the work speed (#E1) the board has and the one moves run at
+// The pieces reach the adapter only through EmisHost (private base) and share what the host
+// knows of the board's working values (EmisKnownValues).
 //
 // What the board cannot do shapes this class:
 // - No stop command: stop() and panic() are refused (Unsupported, noStopCommandText()). Jog is a
-//   chain of short relative vector moves, each covering at most kJogChunkSeconds of travel at the
-//   commanded rate; the next chunk goes out only after the previous one's <DCn> arrived and only
-//   while the jog lease holds, so a released jog ends with the chunk under way.
+//   chain of short relative vector moves, each covering at most EmisJog::kJogChunkSeconds of
+//   travel at the commanded rate; the next chunk goes out only after the previous one's <DCn>
+//   arrived and only while the jog lease holds, so a released jog ends with the chunk under way.
 // - No position or status query: positions are bookkeeping from completed moves (the sum of the
 //   arrived relative moves since connecting; absolute, i.e. known, after a reference run in this
 //   session). "Moving" is the time between <NAK> and <DCn>. A <DCn> that does not come within its
@@ -52,13 +68,11 @@ namespace stepdeck::emis {
 //   read as closed by <ACK> (the manual shows no closing byte; otherwise the read times out and
 //   the stored values stay unknown); an absolute target where the axis stands is not sent (how
 //   the board answers a move of no length, 9.11 does not say). docs/cli.md lists these.
-class EmisController : public Controller
+class EmisController : public Controller, private EmisHost
 {
     Q_OBJECT
 public:
-    static constexpr double kJogChunkSeconds = 0.2;
-    static constexpr int kStoreTimeoutMs = 3000; // per step of a flash write (##, programs)
-    static constexpr int kSettleMs = 50;         // after opening, stale input is dropped
+    static constexpr int kSettleMs = 50; // after opening, stale input is dropped
 
     EmisController(Transport* transport, const ControllerOptions& options,
                    QObject* parent = nullptr);
@@ -81,11 +95,11 @@ public:
     void modelOperation(RequestId id, const QString& name, const QVariantMap& args) override;
 
     // For tests: how long a reference run may take before its arrival counts as lost.
-    void setReferenceDeadline(int ms) { m_referenceDeadlineMs = ms; }
-    const EmisLink& link() const { return *m_link; }
+    void setReferenceDeadline(int ms) { m_tracker.setReferenceDeadline(ms); }
+    const EmisLink& link() const { return m_exchange.link(); }
 
 protected:
-    void applyJogVelocity(const AxisVelocities& stepsPerS) override;
+    void applyJogVelocity(const AxisVelocities& stepsPerS) override { m_jog.apply(stepsPerS); }
     QString jogRefusal() const override;
     // The safety contract of the base (closeLink, loseLink, handleTransportFailure): there is
     // no stop to send, so the safety stop ends the jog chain and reports whether anything may
@@ -95,35 +109,24 @@ protected:
     bool motionMayBeRunning() const override;
 
 private:
-    struct Track
+    // --- EmisHost: what the pieces ask of the adapter ---
+    Controller& controller() override { return *this; }
+    const Controller& controller() const override { return *this; }
+    bool requireLink(RequestId id) override;
+    void succeed(RequestId id, const QVariant& value) override { finishOk(id, value); }
+    void fail(RequestId id, ErrorKind kind, const QString& message) override
     {
-        qint64 position = 0;     // sum of the arrived moves (known after a reference run)
-        bool referenced = false; // in this session, and nothing lost since
-        bool lost = false;       // a move's arrival never came: position unknown
-        bool awaiting = false;   // <NAK> seen, <DCn> not yet
-        bool overdue = false;    // awaiting past its deadline
-        bool reference = false;  // the awaited motion is a reference run
-        bool jogChunk = false;   // the awaited motion is a jog chunk
-        // The host stopped waiting for this axis' arrival (deadline passed, link lost, no
-        // reply to the move): it may still be moving. Cleared by its next <DCn>.
-        bool unconfirmed = false;
-        bool startPending = false;       // its move is on the line, <NAK> not yet seen
-        bool arrivedBeforeStart = false; // <DCn> came while the <NAK> was still missing
-        // Before an awaited arrival was declared lost: restored when it comes after all.
-        bool lostBefore = false;
-        bool referencedBefore = false;
-        qint64 pendingSteps = 0; // relative distance of the awaited move
-        qint64 deadlineMs = 0;
-    };
-    struct Known // working values as far as the host knows them (written, else stored)
-    {
-        QMap<Axis, qint64> startSpeed, runCurrent, idleCurrent; // work speed: m_speeds
-        QMap<Axis, bool> switchNc;
-        std::optional<qint64> ramp;
-    };
-    using Handler = EmisLink::Handler;
+        finishError(id, kind, message);
+    }
+    void failExchange(RequestId id, const QByteArray& bytes, const EmisLink::Result& r) override;
+    MachineStatus& statusToChange() override { return mutableStatus(); }
+    void publish() override;
+    void confirmStandstill() override { noteStandstillConfirmed(); }
+    bool jogInputActive() const override { return jogActive(); }
+    void haltJogInput() override { haltJogImmediately(); }
+    void haltJogInputAxis(Axis axis) override { haltJogAxis(axis); }
 
-    // --- link and status (EmisController.cpp) ---
+    // --- link and status ---
     void onOpened();
     void identify(int retries);
     void finishOpen(ErrorKind kind, const QString& message);
@@ -135,81 +138,20 @@ private:
     // position.
     void stopTrackingMotion(const QString& reason);
     void syncStatus();
-    void publish();
     void changeLink(LinkState state, const QString& reason = {});
-    bool requireLink(RequestId id);
-    void request(const QByteArray& bytes, EmisLink::Expect expect, Handler done, int timeoutMs = 0,
-                 int storedMotors = 0, bool exclusive = false);
-    QString failureText(const QByteArray& bytes, const EmisLink::Result& r) const;
-    ErrorKind failureKind(const EmisLink::Result& r) const;
-    void finishFailure(RequestId id, const QByteArray& bytes, const EmisLink::Result& r);
+    EmisMotionTracker::Hooks trackerHooks();
+    EmisMotion::Hooks motionHooks();
 
-    // --- motion (EmisCtlMotion.cpp) ---
-    QString busyAxes(const QList<Axis>& axes, bool forReference) const;
-    QString unknownAbsolute(const QList<VectorTarget>& targets) const; // refusal, or empty
-    void startVector(RequestId id, const QList<VectorTarget>& targets, bool jog);
-    void startHome(RequestId id, const QList<Axis>& axes, bool simultaneous);
-    void onArrived(Axis axis);
-    bool completeMotion(Axis axis); // the bookkeeping of an arrival; true for a jog chunk
-    void checkDeadlines();
-    void armDeadlineTimer();
-    void markLost(Axis axis);
-    void markOverdue(Axis axis);
-    // The board may have been reset (5.8): its position counters start at 0 (absolute targets
-    // mean something else, so no axis counts as referenced), its outputs are off and its work
-    // speeds are the stored ones.
-    void suspectReset();
-    void settleStart(Axis axis, const EmisLink::Result& r, bool reference, bool jog, qint64 steps,
-                     qint64 deadlineMs);
-    qint64 moveDeadlineMs(const QList<VectorTarget>& targets) const;
-    void updateMotionUnconfirmed();
-    bool anyAwaiting() const;
-
-    // --- jog (EmisCtlJog.cpp) ---
-    void pumpJog();
-    void sendJogChunk(QList<EmisWorkSpeeds::Write> speedWrites, QList<VectorTarget> chunk);
-    bool jogHeld(Axis axis, double direction) const; // the input still asks for this way
-    // A jog chunk ends at the soft limit; 0 and *why at the limit.
-    qint64 clipToSoftLimit(Axis axis, qint64 steps, QString* why) const;
-    void finishJogIfIdle();
-    void haltJog(const QString& reason);
-
-    // --- parameters (EmisCtlParameters.cpp) ---
-    void runFrames(RequestId id, const QList<ParameterPlan::Frame>& frames, int index,
-                   std::function<void()> onDone);
-    void noteWritten(const ParameterSet& set);
-    void noteStored(const SystemParameters& stored);
-    void storeParameters(RequestId id, const QVariantMap& args);
-    void readStoredParameters(RequestId id, Handler after = {});
-    void clearStoredParameters(RequestId id);
-
-    // --- operations (EmisCtlOperations.cpp) ---
-    void setOutput(RequestId id, const QVariantMap& args);
-    void referenceOperation(RequestId id, const QVariantMap& args);
-    void writeInputProgram(RequestId id, const QVariantMap& args);
-    void programStep(RequestId id, int input, const QList<QByteArray>& frames, int index);
-    void abortProgram(RequestId id, int input, const QString& why, ErrorKind kind);
-    void eraseInputProgram(RequestId id, const QVariantMap& args);
-
-    EmisLink* m_link = nullptr;
+    EmisExchange m_exchange;
+    EmisKnownValues m_known;
+    EmisMotionTracker m_tracker;
+    EmisMotion m_motion;
+    EmisJog m_jog;
+    EmisParameters m_parameters;
+    EmisOperations m_operations;
     StatusPoller m_poller{this};
-    QMap<Axis, Track> m_tracks;
-    Known m_known;
-    EmisWorkSpeeds m_speeds;
-    ParameterSet m_written;    // working values written in this session
-    SystemParameters m_stored; // the system parameters as last read or written
-    QTimer m_deadlineTimer{this};
-    QElapsedTimer m_clock;
-    int m_referenceDeadlineMs = 120000;
     RequestId m_openId = 0;
-    // While abortHostSide() cancels the link's requests, they finish with its kind and message.
-    std::optional<QPair<ErrorKind, QString>> m_abort;
     int m_userPollMs = 50;
-    bool m_programming = false;
-    // jog
-    AxisVelocities m_jogRates; // the newest rates from the ramp
-    QString m_softLimitSaid;   // the last jog refusal for a soft limit (said once)
-    bool m_jogSending = false; // a chunk (with its speed writes) is on its way
 };
 
 } // namespace stepdeck::emis

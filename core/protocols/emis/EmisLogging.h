@@ -4,7 +4,7 @@
 namespace stepdeck::emis {
 
 // This model's logging category, "stepdeck.emis" (QT_LOGGING_RULES="stepdeck.emis.*=true"); defined
-// in EmisModelInfo.cpp and named by the model's descriptor (ModelInfo::logging).
+// in EmisModel.cpp and named by the model's descriptor (ModelInfo::logging).
 Q_DECLARE_LOGGING_CATEGORY(lcEmis)
 
 } // namespace stepdeck::emis

@@ -1,6 +1,11 @@
+// The SMC-IC4 as a model: line settings, capabilities, presentation and its registry entry
+// (core/protocols/Registry.cpp).
 #include "EmisModel.h"
 #include "EmisCodec.h"
+#include "EmisController.h"
 #include "EmisGrammar.h"
+#include "EmisLogging.h"
+#include "EmisSimulator.h"
 
 namespace stepdeck::emis {
 
@@ -299,6 +304,27 @@ ModelPresentation presentation()
     p.noStopNote = &noStopNote;
     p.noStopNoteDetail = &noStopNoteDetail;
     return p;
+}
+
+namespace {
+// The registry's display name, shown through QCoreApplication::translate("Models", ...).
+const char* const kDisplayName = QT_TRANSLATE_NOOP("Models", "EMIS SMC-IC4 4-axis controller");
+} // namespace
+Q_LOGGING_CATEGORY(lcEmis, "stepdeck.emis", QtWarningMsg)
+
+ModelInfo modelInfo()
+{
+    ModelInfo info;
+    info.id = QStringLiteral("emis");
+    info.displayName = QString::fromLatin1(kDisplayName);
+    info.line = lineSettings();
+    info.capabilities = capabilities();
+    info.schema = parameterSchema();
+    info.scenario = scenarioSupport();
+    info.soak = soakProfile();
+    info.presentation = presentation();
+    info.logging = &lcEmis;
+    return describeModel<EmisController, EmisSimulator>(std::move(info));
 }
 
 } // namespace stepdeck::emis

@@ -4,8 +4,8 @@
 #include <memory>
 
 // The #E1 writes (9.5) that EmisWorkSpeeds asks for, sent on the link; what the board takes
-// (or may not have taken) is noted in the bookkeeping. Apart from the adapter, so that its
-// later split by responsibility can keep them with the bookkeeping.
+// (or may not have taken) is noted in the bookkeeping. Used by EmisMotion (before each
+// positioning move) and EmisJog (a chunk's speed, and the speed restored after a jog).
 namespace stepdeck::emis {
 
 // The first work speed write of a move that the board did not take: its bytes and reply.

@@ -9,15 +9,10 @@ namespace stepdeck::laser {
 
 LaserAxisController::LaserAxisController(Transport* transport, const ControllerOptions& options,
                                          QObject* parent)
-    : Controller(transport, options, parent)
+    : Controller(transport, options, parent), m_motion(*this, laser::capabilities().axes, this)
 {
-    for (Axis axis : laser::capabilities().axes) {
+    for (Axis axis : laser::capabilities().axes)
         mutableStatus().axes.insert(axis, AxisStatus{});
-        m_tracks.insert(axis, Track{});
-    }
-    m_clock.start();
-    m_deadline.setSingleShot(true);
-    connect(&m_deadline, &QTimer::timeout, this, &LaserAxisController::onDeadline);
     m_syncTimeout.setSingleShot(true);
     connect(&m_syncTimeout, &QTimer::timeout, this, [this] {
         for (RequestId id : std::exchange(m_syncs, {}))
@@ -61,7 +56,7 @@ void LaserAxisController::onTransportOpened()
     // Nothing to ask: the axes have no status request. The link is up when the port is; what
     // the axes do becomes known from their status frames.
     m_decoder.reset();
-    m_rawDecoder.reset();
+    m_motion.resetRawDecoder();
     if (m_openId == 0)
         return;
     setLinkState(LinkState::Connected);
@@ -79,37 +74,24 @@ void LaserAxisController::sendSafetyStop(std::function<void(bool)> done)
 
 bool LaserAxisController::motionMayBeRunning() const
 {
-    for (const Track& t : std::as_const(m_tracks)) {
-        if (t.awaiting || t.unconfirmed)
-            return true;
-    }
-    return false;
+    return m_motion.mayBeRunning();
 }
 
 void LaserAxisController::abortHostSide(ErrorKind kind, const QString& message)
 {
     // The host stops tracking: every request in flight ends; an axis with a target out stays
     // unconfirmed until a status frame from it proves it stopped.
-    m_deadline.stop();
+    m_motion.stopDeadline();
     m_syncTimeout.stop();
     if (m_openId != 0)
         finishError(std::exchange(m_openId, 0), kind, message);
     for (RequestId id : std::exchange(m_syncs, {}))
         finishError(id, kind, message);
-    QStringList heading;
-    for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
-        if (!it->awaiting)
-            continue;
-        it->awaiting = false;
-        it->unconfirmed = true;
-        mutableStatus().axes[it.key()].moving = false;
-        heading << axisName(it.key());
-    }
+    const QStringList heading = m_motion.stopTracking();
     m_decoder.reset();
-    updateMachineFlags();
+    m_motion.updateMachineFlags();
     publishStatus();
-    for (const Pending& p : std::exchange(m_pending, {}))
-        finishError(p.id, kind, message);
+    m_motion.failPending(kind, message);
     // MachineStatus::motionUnconfirmed is set here (updateMachineFlags), before the base's
     // close could say "may still be moving": say it here, once, with the axes and why.
     // (A link loss is reported by the base with that text already.)
@@ -119,6 +101,27 @@ void LaserAxisController::abortHostSide(ErrorKind kind, const QString& message)
                                 "stop is used")
                                  .arg(heading.join(QStringLiteral(", "))));
     }
+}
+
+bool LaserAxisController::sendFrames(const QByteArray& bytes)
+{
+    recordTraffic(TrafficRecord::Direction::Out, bytes, false);
+    return transport()->write(bytes) >= 0;
+}
+
+void LaserAxisController::moveRelative(RequestId id, const AxisVector& steps)
+{
+    m_motion.moveRelative(id, steps);
+}
+
+void LaserAxisController::moveAbsolute(RequestId id, const AxisVector& targets)
+{
+    m_motion.moveAbsolute(id, targets);
+}
+
+void LaserAxisController::reference(RequestId id, const QMap<Axis, int>& directions)
+{
+    m_motion.reference(id, directions);
 }
 
 bool LaserAxisController::requireLink(RequestId id)
@@ -142,7 +145,7 @@ void LaserAxisController::onData(const QByteArray& bytes)
                                      .arg(genericFormatTraffic(d.raw), describeError(d.error)));
             continue;
         }
-        onStatusFrame(*d.frame);
+        m_motion.onStatusFrame(*d.frame);
     }
 }
 
@@ -194,7 +197,7 @@ void LaserAxisController::sendRaw(RequestId id, const QByteArray& bytes)
     recordTraffic(TrafficRecord::Direction::Out, bytes, false);
     if (transport()->write(bytes) < 0)
         return finishError(id, ErrorKind::LinkDown, tr("not connected"));
-    trackRawCommands(bytes);
+    m_motion.trackRawCommands(bytes);
     finishOk(id);
 }
 

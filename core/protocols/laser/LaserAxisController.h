@@ -1,4 +1,5 @@
 #pragma once
+#include "LaserAxisMotion.h"
 #include "LaserCodec.h"
 #include "controller/Controller.h"
 #include <QElapsedTimer>
@@ -29,7 +30,9 @@ namespace stepdeck::laser {
 // - sendRaw() (the traffic console): command frames in the bytes are tracked like any target
 //   (moving, motion unconfirmed until the axis reports, the arrival deadline), so a close
 //   while such a move runs warns that the axis may still be moving.
-class LaserAxisController : public Controller
+// This class owns the link, the status frames' decoding, the requests without motion and the
+// safety contract; the targets and their tracking are LaserAxisMotion's.
+class LaserAxisController : public Controller, private LaserAxisHost
 {
     Q_OBJECT
 public:
@@ -63,50 +66,30 @@ protected:
     QString jogRefusal() const override;
 
 private:
-    // What the host knows about one axis' motion.
-    struct Track
+    // --- LaserAxisHost: what the motion asks of the adapter ---
+    Controller& controller() override { return *this; }
+    const Controller& controller() const override { return *this; }
+    bool requireLink(RequestId id) override;
+    void succeed(RequestId id, const QVariant& value) override { finishOk(id, value); }
+    void fail(RequestId id, ErrorKind kind, const QString& message) override
     {
-        bool awaiting = false;    // a target was sent and its status has not come yet
-        bool unconfirmed = false; // tracking lost and no status frame since: it may move
-        Command command = Command::Move;
-        int target = 0;
-        qint64 deadlineMs = 0;
-    };
-    struct Pending
-    {
-        RequestId id = 0;
-        Command command = Command::Move;
-        QList<Axis> waiting;
-        QStringList endSwitch; // axes that stopped at their end switch
-    };
+        finishError(id, kind, message);
+    }
+    MachineStatus& statusToChange() override { return mutableStatus(); }
+    void publish() override { publishStatus(); }
+    void confirmStandstill() override { noteStandstillConfirmed(); }
+    bool sendFrames(const QByteArray& bytes) override;
+    void abort(ErrorKind kind, const QString& message) override { abortHostSide(kind, message); }
 
-    // --- link (LaserAxisController.cpp) ---
     void onTransportOpened();
     void onBytesWritten();
     void onData(const QByteArray& bytes);
-    bool requireLink(RequestId id);
-
-    // --- motion (LaserAxisMotion.cpp) ---
-    QString checkTargets(const AxisVector& targets) const;
-    void sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets);
-    void trackTarget(const CommandFrame& frame, qint64 deadlineMs, bool unconfirmed);
-    void trackRawCommands(const QByteArray& bytes);
-    void replaceTargetOf(Axis axis);
-    void onStatusFrame(const StatusFrame& frame);
-    void settle(Axis axis, bool endSwitch);
-    void onDeadline();
-    void armDeadline();
-    void updateMachineFlags();
 
     StatusDecoder m_decoder;
-    CommandDecoder m_rawDecoder; // command frames in the bytes sent by sendRaw()
-    QMap<Axis, Track> m_tracks;
-    QList<Pending> m_pending;
+    LaserAxisMotion m_motion;
     QList<RequestId> m_syncs; // refreshStatus() waiting for the output to drain
     RequestId m_openId = 0;
-    QTimer m_deadline{this};
     QTimer m_syncTimeout{this};
-    QElapsedTimer m_clock;
 };
 
 } // namespace stepdeck::laser

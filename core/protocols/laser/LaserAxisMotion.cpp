@@ -1,12 +1,51 @@
 // Targets out, status frames in: the motion part of the laser-axis adapter.
-#include "LaserAxisController.h"
+#include "LaserAxisMotion.h"
 #include "LaserLogging.h"
 #include "Logging.h"
-#include "transport/Transport.h"
 
 namespace stepdeck::laser {
 
-QString LaserAxisController::checkTargets(const AxisVector& targets) const
+LaserAxisMotion::LaserAxisMotion(LaserAxisHost& host, const QList<Axis>& axes, QObject* owner)
+    : m_host(host)
+{
+    for (Axis axis : axes)
+        m_tracks.insert(axis, Track{});
+    m_clock.start();
+    m_deadline.setParent(owner);
+    m_deadline.setSingleShot(true);
+    QObject::connect(&m_deadline, &QTimer::timeout, owner, [this] { onDeadline(); });
+}
+
+bool LaserAxisMotion::mayBeRunning() const
+{
+    for (const Track& t : std::as_const(m_tracks)) {
+        if (t.awaiting || t.unconfirmed)
+            return true;
+    }
+    return false;
+}
+
+QStringList LaserAxisMotion::stopTracking()
+{
+    QStringList heading;
+    for (auto it = m_tracks.begin(); it != m_tracks.end(); ++it) {
+        if (!it->awaiting)
+            continue;
+        it->awaiting = false;
+        it->unconfirmed = true;
+        m_host.statusToChange().axes[it.key()].moving = false;
+        heading << axisName(it.key());
+    }
+    return heading;
+}
+
+void LaserAxisMotion::failPending(ErrorKind kind, const QString& message)
+{
+    for (const Pending& p : std::exchange(m_pending, {}))
+        m_host.fail(p.id, kind, message);
+}
+
+QString LaserAxisMotion::checkTargets(const AxisVector& targets) const
 {
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         if (!m_tracks.contains(it.key()))
@@ -21,33 +60,33 @@ QString LaserAxisController::checkTargets(const AxisVector& targets) const
     return {};
 }
 
-void LaserAxisController::moveAbsolute(RequestId id, const AxisVector& targets)
+void LaserAxisMotion::moveAbsolute(RequestId id, const AxisVector& targets)
 {
     if (const QString bad = checkTargets(targets); !bad.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, bad);
-    if (!requireLink(id))
+        return m_host.fail(id, ErrorKind::InvalidValue, bad);
+    if (!m_host.requireLink(id))
         return;
     if (targets.isEmpty())
-        return finishOk(id);
+        return m_host.succeed(id);
     QMap<Axis, int> out;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it)
         out.insert(it.key(), int(it.value()));
     sendTargets(id, Command::Move, out);
 }
 
-void LaserAxisController::moveRelative(RequestId id, const AxisVector& steps)
+void LaserAxisMotion::moveRelative(RequestId id, const AxisVector& steps)
 {
     AxisVector targets;
     for (auto it = steps.cbegin(); it != steps.cend(); ++it) {
         if (!m_tracks.contains(it.key())) {
-            return finishError(id, ErrorKind::InvalidValue,
+            return m_host.fail(id, ErrorKind::InvalidValue,
                                tr("this machine has no axis %1").arg(axisName(it.key())));
         }
         // From the target the axis is heading for, else from where it last said it is.
         const Track& track = m_tracks[it.key()];
-        const AxisStatus& axis = status().axes.value(it.key());
+        const AxisStatus& axis = m_host.controller().status().axes.value(it.key());
         if (!track.awaiting && !axis.positionKnown) {
-            return finishError(id, ErrorKind::Refused,
+            return m_host.fail(id, ErrorKind::Refused,
                                tr("relative move refused: the position of axis %1 is unknown (no "
                                   "status frame from it in this session); home it or move it to "
                                   "an absolute target first")
@@ -61,29 +100,29 @@ void LaserAxisController::moveRelative(RequestId id, const AxisVector& steps)
     moveAbsolute(id, targets);
 }
 
-void LaserAxisController::reference(RequestId id, const QMap<Axis, int>& directions)
+void LaserAxisMotion::reference(RequestId id, const QMap<Axis, int>& directions)
 {
     // The axis homes toward its home switch whatever the direction; 0 leaves an axis out, as
     // on the other models.
     QMap<Axis, int> homes;
     for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
         if (!m_tracks.contains(it.key())) {
-            return finishError(id, ErrorKind::InvalidValue,
+            return m_host.fail(id, ErrorKind::InvalidValue,
                                tr("this machine has no axis %1").arg(axisName(it.key())));
         }
         if (it.value() != 0)
             homes.insert(it.key(), 0);
     }
     if (homes.isEmpty()) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("no axis to home: every direction is 0"));
     }
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     sendTargets(id, Command::Home, homes);
 }
 
-void LaserAxisController::replaceTargetOf(Axis axis)
+void LaserAxisMotion::replaceTargetOf(Axis axis)
 {
     // "the axis should discard the previous target-position and proceed directly to the last
     // commanded target-position": whoever waited for the old one learns it was replaced.
@@ -91,16 +130,17 @@ void LaserAxisController::replaceTargetOf(Axis axis)
         if (!m_pending.at(i).waiting.contains(axis))
             continue;
         const RequestId id = m_pending.takeAt(i).id;
-        finishError(id, ErrorKind::Cancelled,
+        m_host.fail(id, ErrorKind::Cancelled,
                     tr("replaced by a newer target for axis %1").arg(axisName(axis)));
     }
 }
 
-void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets)
+void LaserAxisMotion::sendTargets(RequestId id, Command command, const QMap<Axis, int>& targets)
 {
     QByteArray frames;
     Pending pending{id, command, {}, {}};
-    const qint64 deadline = m_clock.elapsed() + qMax(1, options().arrivalTimeoutMs);
+    const qint64 deadline =
+        m_clock.elapsed() + qMax(1, m_host.controller().options().arrivalTimeoutMs);
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         const CommandFrame frame{command, it.key(), it.value()};
         frames += encodeCommand(frame);
@@ -110,34 +150,33 @@ void LaserAxisController::sendTargets(RequestId id, Command command, const QMap<
         trackTarget(frame, deadline, m_tracks.value(it.key()).unconfirmed);
         pending.waiting << it.key();
     }
-    recordTraffic(TrafficRecord::Direction::Out, frames, false);
-    if (transport()->write(frames) < 0) {
-        finishError(id, ErrorKind::LinkDown, tr("not connected"));
-        return abortHostSide(ErrorKind::LinkDown, tr("not connected"));
+    if (!m_host.sendFrames(frames)) {
+        m_host.fail(id, ErrorKind::LinkDown, tr("not connected"));
+        return m_host.abort(ErrorKind::LinkDown, tr("not connected"));
     }
     m_pending << pending;
     armDeadline();
     updateMachineFlags();
-    publishStatus();
+    m_host.publish();
 }
 
-void LaserAxisController::trackTarget(const CommandFrame& frame, qint64 deadlineMs,
-                                      bool unconfirmed)
+void LaserAxisMotion::trackTarget(const CommandFrame& frame, qint64 deadlineMs, bool unconfirmed)
 {
     replaceTargetOf(frame.axis);
     m_tracks[frame.axis] = Track{true, unconfirmed, frame.command, frame.position, deadlineMs};
-    AxisStatus& axis = mutableStatus().axes[frame.axis];
+    AxisStatus& axis = m_host.statusToChange().axes[frame.axis];
     axis.moving = true; // commanded; its status frame ends it
     axis.limitSwitch = axis.referenceSwitch = false;
 }
 
-void LaserAxisController::trackRawCommands(const QByteArray& bytes)
+void LaserAxisMotion::trackRawCommands(const QByteArray& bytes)
 {
     // A frame typed in the traffic console moves the axis like any target: it replaces the
     // axis' target (a request waiting for the old one is cancelled, as the axis discards it)
     // and stays unconfirmed until the axis reports. Malformed frames are ignored by the axes
     // (the simulator does the same), so they are not tracked.
-    const qint64 deadline = m_clock.elapsed() + qMax(1, options().arrivalTimeoutMs);
+    const qint64 deadline =
+        m_clock.elapsed() + qMax(1, m_host.controller().options().arrivalTimeoutMs);
     bool any = false;
     for (const DecodedCommand& d : m_rawDecoder.feed(bytes)) {
         if (!d.ok() || !m_tracks.contains(d.frame->axis))
@@ -150,15 +189,15 @@ void LaserAxisController::trackRawCommands(const QByteArray& bytes)
         return;
     armDeadline();
     updateMachineFlags();
-    publishStatus();
+    m_host.publish();
 }
 
-void LaserAxisController::onStatusFrame(const StatusFrame& frame)
+void LaserAxisMotion::onStatusFrame(const StatusFrame& frame)
 {
     if (!m_tracks.contains(frame.axis))
         return;
     const Track& track = m_tracks[frame.axis];
-    AxisStatus& axis = mutableStatus().axes[frame.axis];
+    AxisStatus& axis = m_host.statusToChange().axes[frame.axis];
     axis.position = frame.position;
     axis.positionKnown = true;
     axis.positionEstimated = false;
@@ -186,31 +225,32 @@ void LaserAxisController::onStatusFrame(const StatusFrame& frame)
     case Status::DoorOpened:
     case Status::DoorClosed:
         // The door stops the motor but not its attempt to reach the target: keep waiting.
-        mutableStatus().doorOpen = frame.status == Status::DoorOpened;
+        m_host.statusToChange().doorOpen = frame.status == Status::DoorOpened;
         break;
     }
     if (settles)
         return settle(frame.axis, frame.status == Status::EndSwitch);
     updateMachineFlags();
-    publishStatus();
+    m_host.publish();
 }
 
-void LaserAxisController::settle(Axis axis, bool endSwitch)
+void LaserAxisMotion::settle(Axis axis, bool endSwitch)
 {
     Track& track = m_tracks[axis];
     const bool wasAwaiting = track.awaiting;
     track.awaiting = false;
     track.unconfirmed = false;
-    mutableStatus().axes[axis].moving = false;
+    m_host.statusToChange().axes[axis].moving = false;
     // The status first, then the results: whoever waits for a result reads a current status.
     updateMachineFlags();
-    publishStatus();
+    m_host.publish();
     armDeadline();
     if (endSwitch && wasAwaiting) {
-        Q_EMIT errorOccurred(tr("axis %1 stopped at its end switch at %2 before reaching %3")
-                                 .arg(axisName(axis))
-                                 .arg(status().axes.value(axis).position)
-                                 .arg(track.target));
+        Q_EMIT m_host.controller().errorOccurred(
+            tr("axis %1 stopped at its end switch at %2 before reaching %3")
+                .arg(axisName(axis))
+                .arg(m_host.controller().status().axes.value(axis).position)
+                .arg(track.target));
     }
     for (int i = m_pending.size() - 1; i >= 0; --i) {
         Pending& p = m_pending[i];
@@ -224,11 +264,11 @@ void LaserAxisController::settle(Axis axis, bool endSwitch)
         QVariantMap value;
         if (!done.endSwitch.isEmpty())
             value.insert(QStringLiteral("endSwitch"), done.endSwitch);
-        finishOk(done.id, value.isEmpty() ? QVariant() : QVariant(value));
+        m_host.succeed(done.id, value.isEmpty() ? QVariant() : QVariant(value));
     }
 }
 
-void LaserAxisController::armDeadline()
+void LaserAxisMotion::armDeadline()
 {
     qint64 earliest = -1;
     for (const Track& t : std::as_const(m_tracks)) {
@@ -243,7 +283,7 @@ void LaserAxisController::armDeadline()
         int(qBound<qint64>(0, earliest - m_clock.elapsed(), qint64(24) * 3600 * 1000)));
 }
 
-void LaserAxisController::onDeadline()
+void LaserAxisMotion::onDeadline()
 {
     const qint64 now = m_clock.elapsed();
     QList<QPair<Axis, QString>> expired;
@@ -252,34 +292,35 @@ void LaserAxisController::onDeadline()
             continue;
         it->awaiting = false;
         it->unconfirmed = true; // no longer tracked, and it may be moving yet
-        AxisStatus& axis = mutableStatus().axes[it.key()];
+        AxisStatus& axis = m_host.statusToChange().axes[it.key()];
         axis.moving = false;
         // The axis is somewhere between where it was and the target: a relative move from the
         // last reported position would go to the wrong place (found by the fault soak). The
         // next status frame makes it known again.
         axis.positionKnown = false;
-        expired.append({it.key(), tr("axis %1 did not report reaching its target %2 within %3 s; "
-                                     "it may still be moving")
-                                      .arg(axisName(it.key()))
-                                      .arg(it->command == Command::Home ? 0 : it->target)
-                                      .arg(options().arrivalTimeoutMs / 1000.0)});
+        expired.append(
+            {it.key(), tr("axis %1 did not report reaching its target %2 within %3 s; "
+                          "it may still be moving")
+                           .arg(axisName(it.key()))
+                           .arg(it->command == Command::Home ? 0 : it->target)
+                           .arg(m_host.controller().options().arrivalTimeoutMs / 1000.0)});
     }
     armDeadline();
     updateMachineFlags();
-    publishStatus();
+    m_host.publish();
     for (const auto& [axis, why] : expired) {
         qCWarning(lcLaser) << why;
         for (int i = m_pending.size() - 1; i >= 0; --i) {
             if (m_pending.at(i).waiting.contains(axis))
-                finishError(m_pending.takeAt(i).id, ErrorKind::Timeout, why);
+                m_host.fail(m_pending.takeAt(i).id, ErrorKind::Timeout, why);
         }
-        Q_EMIT errorOccurred(why);
+        Q_EMIT m_host.controller().errorOccurred(why);
     }
 }
 
-void LaserAxisController::updateMachineFlags()
+void LaserAxisMotion::updateMachineFlags()
 {
-    MachineStatus& s = mutableStatus();
+    MachineStatus& s = m_host.statusToChange();
     bool busy = false;
     bool unconfirmed = false;
     for (const Track& t : std::as_const(m_tracks)) {
@@ -293,7 +334,7 @@ void LaserAxisController::updateMachineFlags()
     if (unconfirmed)
         s.motionUnconfirmed = true;
     else
-        noteStandstillConfirmed();
+        m_host.confirmStandstill();
 }
 
 } // namespace stepdeck::laser

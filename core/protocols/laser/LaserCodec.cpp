@@ -3,6 +3,16 @@
 
 namespace stepdeck::laser {
 
+LineSettings lineSettings()
+{
+    LineSettings line;
+    line.baudRate = 9600;
+    line.dataBits = 8;
+    line.stopBits = 1;
+    line.parity = LineSettings::Parity::None;
+    return line;
+}
+
 namespace {
 constexpr char kLf = '\n';
 

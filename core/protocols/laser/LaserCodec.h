@@ -1,5 +1,6 @@
 #pragma once
 #include "model/Axis.h"
+#include "model/LineSettings.h"
 #include <QByteArray>
 #include <QList>
 #include <QString>
@@ -21,6 +22,10 @@ constexpr char kCr = '\r';
 // and accept 0..99999 in both directions.
 constexpr int kMaxPosition = 99999;
 constexpr int kAxisCount = 3; // "The firmware can control up to 3 motoraxis"
+
+// "The port settings are fixed to: baudrate 9600, 8 bit, no parity, 1 stop bit". Part of the
+// wire protocol, so the laser bridge (which speaks it) needs no more than this codec.
+LineSettings lineSettings();
 
 // Command-Byte: ASCII '1' move to home, ASCII '2' move to position.
 enum class Command { Home = 1, Move = 2 };

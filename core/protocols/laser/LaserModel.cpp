@@ -9,16 +9,6 @@ namespace stepdeck::laser {
 
 Q_LOGGING_CATEGORY(lcLaser, "stepdeck.laser", QtWarningMsg)
 
-LineSettings lineSettings()
-{
-    LineSettings line;
-    line.baudRate = 9600;
-    line.dataBits = 8;
-    line.stopBits = 1;
-    line.parity = LineSettings::Parity::None;
-    return line;
-}
-
 Capabilities capabilities()
 {
     Capabilities caps;

@@ -1,10 +1,9 @@
 #pragma once
+#include "LaserCodec.h" // lineSettings()
 #include "model/ModelInfo.h"
 
 namespace stepdeck::laser {
 
-// "The port settings are fixed to: baudrate 9600, 8 bit, no parity, 1 stop bit".
-LineSettings lineSettings();
 // No parameters, no stop, no jog stream, no status query: the protocol has two commands
 // (home, move to position) and the axes report by themselves.
 Capabilities capabilities();

@@ -1,36 +1,50 @@
 // Jog without a stop command: a chain of short relative vector moves (9.11).
-#include "EmisController.h"
+#include "EmisJog.h"
 #include "EmisLogging.h"
-#include "EmisWorkSpeedWrites.h"
 #include "Logging.h"
 #include <QtMath>
 
 namespace stepdeck::emis {
 
-QString EmisController::jogRefusal() const
+EmisJog::EmisJog(EmisHost& host, EmisExchange& exchange, EmisKnownValues& known,
+                 EmisMotionTracker& tracker, EmisMotion& motion)
+    : m_host(host), m_exchange(exchange), m_known(known), m_tracker(tracker), m_motion(motion)
+{}
+
+QString EmisJog::refusal() const
 {
-    if (QString base = Controller::jogRefusal(); !base.isEmpty())
-        return base;
-    if (m_programming)
+    if (m_exchange.inputProgramOpen())
         return tr("jog refused: an input program is being written");
-    if (status().motionUnconfirmed)
+    if (m_host.controller().status().motionUnconfirmed)
         return tr("jog refused: an axis may still be moving (its arrival never came); "
                   "reference it first");
     return {};
 }
 
-void EmisController::applyJogVelocity(const AxisVelocities& stepsPerS)
+void EmisJog::apply(const AxisVelocities& stepsPerS)
 {
-    // The ramp's complete output: an axis it no longer names has rate zero (no stale rate may
-    // keep a chunk chain going).
+    // No stale rate may keep a chunk chain going.
     m_jogRates = stepsPerS;
-    pumpJog();
-    publish();
+    pump();
+    m_host.publish();
 }
 
-void EmisController::pumpJog()
+void EmisJog::end()
 {
-    if (m_jogSending || linkState() != LinkState::Connected)
+    m_jogRates.clear();
+    m_host.haltJogInput();
+}
+
+void EmisJog::abort()
+{
+    m_host.haltJogInput();
+    m_jogRates.clear();
+    m_sending = false;
+}
+
+void EmisJog::pump()
+{
+    if (m_sending || m_host.controller().linkState() != LinkState::Connected)
         return;
     // Every axis that stands still and has a rate gets its next chunk; axes ready together
     // share one vector command. An axis whose chunk is under way is never sent another (the
@@ -41,8 +55,8 @@ void EmisController::pumpJog()
     for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
         const Axis axis = it.key();
         const double rate = it.value();
-        const Track& t = m_tracks[axis];
-        if (!jogHeld(axis, rate) || t.awaiting || t.unconfirmed)
+        const EmisMotionTracker::Track& t = m_tracker.tracks()[axis];
+        if (!held(axis, rate) || t.awaiting || t.unconfirmed)
             continue;
         // At most kJogChunkSeconds of travel at the commanded rate; a chunk of one step at a
         // very low rate runs fast enough to end within that time too.
@@ -60,101 +74,112 @@ void EmisController::pumpJog()
             qBound(limits::kSpeedMin,
                    qMax(qRound64(qAbs(rate)), qint64(std::ceil(double(steps) / kJogChunkSeconds))),
                    limits::kSpeedMax);
-        if (m_speeds.jogNeedsWrite(axis, speed))
+        if (m_known.speeds.jogNeedsWrite(axis, speed))
             speedWrites << EmisWorkSpeeds::Write{axis, speed};
         chunk << VectorTarget{axis, clipped, false};
     }
     for (auto it = atLimit.cbegin(); it != atLimit.cend(); ++it) {
         m_jogRates.insert(it.key(), 0.0);
-        haltJogAxis(it.key()); // the operator pushes again to move back inside
+        m_host.haltJogInputAxis(it.key()); // the operator pushes again to move back inside
         if (it.value() != m_softLimitSaid)
-            Q_EMIT jogRefused(it.value());
+            Q_EMIT m_host.controller().jogRefused(it.value());
     }
     m_softLimitSaid = atLimit.isEmpty() ? QString() : atLimit.first();
     if (chunk.isEmpty()) {
-        finishJogIfIdle();
+        finishIfIdle();
         return;
     }
-    m_jogSending = true;
-    sendJogChunk(speedWrites, chunk);
+    m_sending = true;
+    sendChunk(speedWrites, chunk);
 }
 
-bool EmisController::jogHeld(Axis axis, double direction) const
+bool EmisJog::held(Axis axis, double direction) const
 {
     // Both the ramp's rate and the input's target (the lease) in this direction. After a
     // release the host ramp still runs down for a while; a chunk started then would move the
     // axis after the operator let go (the board ramps the chunk under way down by itself).
     const double rate = m_jogRates.value(axis, 0.0);
-    const double held = jogRamp().target(axis);
-    return rate * direction > 0.0 && held * direction > 0.0;
+    const double target = m_host.controller().jogRamp().target(axis);
+    return rate * direction > 0.0 && target * direction > 0.0;
 }
 
-qint64 EmisController::clipToSoftLimit(Axis axis, qint64 steps, QString* why) const
+qint64 EmisJog::clipToSoftLimit(Axis axis, qint64 steps, QString* why) const
 {
-    MachineStatus bookkept = status();
-    const Track t = m_tracks.value(axis);
+    const Controller& ctl = m_host.controller();
+    MachineStatus bookkept = ctl.status();
+    const EmisMotionTracker::Track t = m_tracker.tracks().value(axis);
     AxisStatus& a = bookkept.axes[axis];
     a.position = t.position;
     a.referenced = a.positionKnown = t.referenced && !t.lost;
-    return softLimits().clipRelative(bookkept, {{axis, steps}}, why).value(axis);
+    return ctl.softLimits().clipRelative(bookkept, {{axis, steps}}, why).value(axis);
 }
 
-void EmisController::sendJogChunk(QList<EmisWorkSpeeds::Write> speedWrites,
-                                  QList<VectorTarget> chunk)
+void EmisJog::sendChunk(QList<EmisWorkSpeeds::Write> speedWrites, QList<VectorTarget> chunk)
 {
     if (!speedWrites.isEmpty()) {
         const EmisWorkSpeeds::Write write = speedWrites.takeFirst();
-        writeWorkSpeed(*m_link, m_speeds, write,
-                       [this, write, speedWrites, chunk](const EmisLink::Result& r) {
-                           if (r.outcome == EmisLink::Outcome::Ok)
-                               return sendJogChunk(speedWrites, chunk);
-                           m_jogSending = false;
-                           if (r.outcome != EmisLink::Outcome::Cancelled)
-                               haltJog(failureText(encode::workSpeed(write.axis, write.speed), r));
-                       });
+        writeWorkSpeed(
+            m_exchange.link(), m_known.speeds, write,
+            [this, write, speedWrites, chunk](const EmisLink::Result& r) {
+                if (r.outcome == EmisLink::Outcome::Ok)
+                    return sendChunk(speedWrites, chunk);
+                m_sending = false;
+                if (r.outcome != EmisLink::Outcome::Cancelled)
+                    halt(m_exchange.failureText(encode::workSpeed(write.axis, write.speed), r));
+            });
         return;
     }
     // The lease is checked again right before the move goes out: an axis released meanwhile
     // gets no new chunk.
     QList<VectorTarget> still;
     for (const VectorTarget& t : chunk) {
-        if (jogHeld(t.axis, double(t.value)))
+        if (held(t.axis, double(t.value)))
             still << t;
     }
-    if (still.isEmpty() || linkState() != LinkState::Connected) {
-        m_jogSending = false;
-        finishJogIfIdle();
+    if (still.isEmpty() || m_host.controller().linkState() != LinkState::Connected) {
+        m_sending = false;
+        finishIfIdle();
         return;
     }
-    startVector(0, still, true);
+    m_motion.startVector(0, still, true);
 }
 
-void EmisController::finishJogIfIdle()
+void EmisJog::onChunkSettled(bool ok, const QString& why)
 {
-    if (m_jogSending)
+    m_sending = false;
+    if (!ok)
+        halt(why);
+    else
+        pump(); // axes that became ready meanwhile
+}
+
+void EmisJog::finishIfIdle()
+{
+    if (m_sending)
         return;
     for (auto it = m_jogRates.cbegin(); it != m_jogRates.cend(); ++it) {
-        if (it.value() != 0.0 || m_tracks[it.key()].jogChunk)
+        if (it.value() != 0.0 || m_tracker.tracks()[it.key()].jogChunk)
             return;
     }
     // The jog is over: every jogged axis gets its move speed back (9.5), for the board's own
     // input programs and the next session. Moves do not depend on it: each sets its speed.
-    for (const EmisWorkSpeeds::Write& w : m_speeds.writesToRestore()) {
-        writeWorkSpeed(*m_link, m_speeds, w, [this, w](const EmisLink::Result& r) {
+    for (const EmisWorkSpeeds::Write& w : m_known.speeds.writesToRestore()) {
+        writeWorkSpeed(m_exchange.link(), m_known.speeds, w, [this, w](const EmisLink::Result& r) {
             if (r.outcome != EmisLink::Outcome::Ok && r.outcome != EmisLink::Outcome::Cancelled)
-                Q_EMIT errorOccurred(failureText(encode::workSpeed(w.axis, w.speed), r));
+                Q_EMIT m_host.controller().errorOccurred(
+                    m_exchange.failureText(encode::workSpeed(w.axis, w.speed), r));
         });
     }
 }
 
-void EmisController::haltJog(const QString& reason)
+void EmisJog::halt(const QString& reason)
 {
     qCInfo(lcEmis) << "jog halted:" << reason;
     m_jogRates.clear();
-    haltJogImmediately();
-    Q_EMIT jogRefused(reason);
-    finishJogIfIdle();
-    publish();
+    m_host.haltJogInput();
+    Q_EMIT m_host.controller().jogRefused(reason);
+    finishIfIdle();
+    m_host.publish();
 }
 
 } // namespace stepdeck::emis

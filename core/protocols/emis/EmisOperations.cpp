@@ -1,5 +1,9 @@
 // Model operations (outputs, reference runs, system parameters, input programs) and the console.
-#include "EmisController.h"
+#include "EmisOperations.h"
+#include "EmisModel.h"
+#include "EmisMotion.h"
+#include "EmisMotionTracker.h"
+#include "EmisParameters.h"
 #include "Logging.h"
 #include "model/ModelOperations.h"
 #include "model/NumberParsing.h"
@@ -26,108 +30,127 @@ bool printableAscii(const QString& text)
 }
 } // namespace
 
-void EmisController::modelOperation(RequestId id, const QString& name, const QVariantMap& args)
+EmisOperations::EmisOperations(EmisHost& host, EmisExchange& exchange, EmisKnownValues& known,
+                               EmisMotionTracker& tracker, EmisMotion& motion,
+                               EmisParameters& parameters)
+    : m_host(host), m_exchange(exchange), m_known(known), m_tracker(tracker), m_motion(motion),
+      m_parameters(parameters)
+{}
+
+bool EmisOperations::run(RequestId id, const QString& name, const QVariantMap& args)
 {
     if (name == operation::kSetOutput)
-        return setOutput(id, args);
-    if (name == operation::kReference)
-        return referenceOperation(id, args);
-    if (name == operation::kStoreParameters)
-        return storeParameters(id, args);
-    if (name == operation::kReadStoredParameters)
-        return readStoredParameters(id);
-    if (name == operation::kClearStoredParameters)
-        return clearStoredParameters(id);
-    if (name == operation::kWriteInputProgram)
-        return writeInputProgram(id, args);
-    if (name == operation::kEraseInputProgram)
-        return eraseInputProgram(id, args);
-    Controller::modelOperation(id, name, args);
+        setOutput(id, args);
+    else if (name == operation::kReference)
+        referenceOperation(id, args);
+    else if (name == operation::kStoreParameters)
+        m_parameters.store(id, args);
+    else if (name == operation::kReadStoredParameters)
+        m_parameters.readStored(id);
+    else if (name == operation::kClearStoredParameters)
+        m_parameters.clearStored(id);
+    else if (name == operation::kWriteInputProgram)
+        writeInputProgram(id, args);
+    else if (name == operation::kEraseInputProgram)
+        eraseInputProgram(id, args);
+    else
+        return false;
+    return true;
 }
 
-void EmisController::setOutput(RequestId id, const QVariantMap& args)
+void EmisOperations::setOutput(RequestId id, const QVariantMap& args)
 {
     const auto output = numberArg(args, "output", 1, kOutputCount);
     if (!output) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("output '%1' does not exist (outputs 1..%2, manual 9.3)")
                                .arg(args.value(QStringLiteral("output")).toString())
                                .arg(kOutputCount));
     }
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     const bool on = args.value(QStringLiteral("on")).toBool();
     const QByteArray bytes = encode::output(*output, on);
-    request(bytes, EmisLink::Expect::Ack, [this, id, bytes, output, on](const EmisLink::Result& r) {
-        if (r.outcome != EmisLink::Outcome::Ok)
-            return finishFailure(id, bytes, r);
-        mutableStatus().outputs[*output - 1] = on;
-        publish();
-        finishOk(id);
-    });
+    m_exchange.request(bytes, EmisLink::Expect::Ack,
+                       [this, id, bytes, output, on](const EmisLink::Result& r) {
+                           if (r.outcome != EmisLink::Outcome::Ok)
+                               return m_host.failExchange(id, bytes, r);
+                           m_host.statusToChange().outputs[*output - 1] = on;
+                           m_host.publish();
+                           m_host.succeed(id);
+                       });
 }
 
-void EmisController::referenceOperation(RequestId id, const QVariantMap& args)
+void EmisOperations::referenceOperation(RequestId id, const QVariantMap& args)
 {
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     QList<Axis> axes;
     for (QChar c : args.value(QStringLiteral("axes")).toString()) {
         const auto axis = axisFromName(QString(c));
         if (!axis) {
-            return finishError(id, ErrorKind::InvalidValue,
+            return m_host.fail(id, ErrorKind::InvalidValue,
                                tr("unknown axis '%1' (this machine has X, Y, Z, U)").arg(c));
         }
         if (!axes.contains(*axis))
             axes << *axis;
     }
     if (axes.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, tr("name at least one axis to reference"));
-    startHome(id, axes, args.value(QStringLiteral("simultaneous")).toBool());
+        return m_host.fail(id, ErrorKind::InvalidValue, tr("name at least one axis to reference"));
+    m_motion.startHome(id, axes, args.value(QStringLiteral("simultaneous")).toBool());
 }
 
-void EmisController::writeInputProgram(RequestId id, const QVariantMap& args)
+QList<QByteArray> EmisOperations::programLines(const QVariantMap& args, QString* error) const
+{
+    QList<QByteArray> lines;
+    const QStringList commands = args.value(QStringLiteral("commands")).toStringList();
+    for (int i = 0; i < commands.size(); ++i) {
+        const QString text = commands[i].trimmed();
+        const QString why = printableAscii(text) ? QString(validateProgramLine(text.toLatin1()))
+                                                 : tr("not printable ASCII");
+        if (!why.isEmpty()) {
+            *error = tr("program command %1 ('%2'): %3").arg(i + 1).arg(text, why);
+            return {};
+        }
+        lines << text.toLatin1();
+    }
+    if (lines.isEmpty())
+        *error = tr("a program needs at least one command");
+    return lines;
+}
+
+void EmisOperations::writeInputProgram(RequestId id, const QVariantMap& args)
 {
     const auto input = numberArg(args, "input", 1, kInputCount);
     if (!input) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("input '%1' does not exist (inputs 1..%2)")
                                .arg(args.value(QStringLiteral("input")).toString())
                                .arg(kInputCount));
     }
     const QString title = args.value(QStringLiteral("title")).toString();
     if (!printableAscii(title) || title.size() > limits::kTitleMax) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("the program title must be printable ASCII of at most %1 characters "
                               "(no umlauts)")
                                .arg(limits::kTitleMax));
     }
-    QList<QByteArray> lines;
-    const QStringList commands = args.value(QStringLiteral("commands")).toStringList();
-    for (int i = 0; i < commands.size(); ++i) {
-        const QString text = commands[i].trimmed();
-        const QString error = printableAscii(text) ? QString(validateProgramLine(text.toLatin1()))
-                                                   : tr("not printable ASCII");
-        if (!error.isEmpty()) {
-            return finishError(id, ErrorKind::InvalidValue,
-                               tr("program command %1 ('%2'): %3").arg(i + 1).arg(text, error));
-        }
-        lines << text.toLatin1();
-    }
+    QString error;
+    const QList<QByteArray> lines = programLines(args, &error);
     if (lines.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, tr("a program needs at least one command"));
+        return m_host.fail(id, ErrorKind::InvalidValue, error);
     if (*input <= 4 && !args.value(QStringLiteral("force")).toBool()) {
-        return finishError(id, ErrorKind::Refused,
+        return m_host.fail(id, ErrorKind::Refused,
                            tr("input %1 carries the reference switch of axis %2: a program on it "
                               "can make the controller misbehave (manual 5.2.2); force it only "
                               "if no switch is wired there")
                                .arg(*input)
                                .arg(axisName(Axis(*input - 1))));
     }
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
-    if (anyAwaiting() || jogActive() || m_programming) {
-        return finishError(id, ErrorKind::Refused,
+    if (m_tracker.anyAwaiting() || m_host.jogInputActive() || m_exchange.inputProgramOpen()) {
+        return m_host.fail(id, ErrorKind::Refused,
                            tr("input programs are written while every axis stands still"));
     }
     // 9.17: *PWINn, the header closed by <STX>, each command with <CR>, <ETX>. Nothing else may
@@ -137,44 +160,40 @@ void EmisController::writeInputProgram(RequestId id, const QVariantMap& args)
     for (const QByteArray& line : lines)
         frames << encode::programLine(line);
     frames << encode::programEnd();
-    m_programming = true;
-    m_link->setExclusive(true);
+    m_exchange.link().setExclusive(true); // inputProgramOpen() from here
     programStep(id, *input, frames, 0);
 }
 
-void EmisController::programStep(RequestId id, int input, const QList<QByteArray>& frames,
+void EmisOperations::programStep(RequestId id, int input, const QList<QByteArray>& frames,
                                  int index)
 {
     if (index >= frames.size()) {
-        m_programming = false;
-        m_link->setExclusive(false);
-        return finishOk(id);
+        m_exchange.link().setExclusive(false);
+        return m_host.succeed(id);
     }
-    request(
+    m_exchange.request(
         frames[index], EmisLink::Expect::Ack,
         [this, id, input, frames, index](const EmisLink::Result& r) {
             if (r.outcome == EmisLink::Outcome::Ok)
                 return programStep(id, input, frames, index + 1);
-            const QString why = failureText(frames[index], r);
+            const QString why = m_exchange.failureText(frames[index], r);
             if (index == 0 || r.outcome == EmisLink::Outcome::Cancelled) {
-                m_programming = false;
-                m_link->setExclusive(false);
-                return finishError(id, failureKind(r), why);
+                m_exchange.link().setExclusive(false);
+                return m_host.fail(id, m_exchange.failureKind(r), why);
             }
-            abortProgram(id, input, why, failureKind(r));
+            abortProgram(id, input, why, m_exchange.failureKind(r));
         },
-        kStoreTimeoutMs, 0, true);
+        EmisParameters::kStoreTimeoutMs, 0, true);
 }
 
-void EmisController::abortProgram(RequestId id, int input, const QString& why, ErrorKind kind)
+void EmisOperations::abortProgram(RequestId id, int input, const QString& why, ErrorKind kind)
 {
     // The board is in programming mode: <ETX> ends it, *PEINn erases what it took so far.
-    request(
+    m_exchange.request(
         encode::programEnd(), EmisLink::Expect::Ack,
         [this, id, input, why, kind](const EmisLink::Result&) {
-            m_programming = false;
-            m_link->setExclusive(false);
-            request(
+            m_exchange.link().setExclusive(false);
+            m_exchange.request(
                 encode::programErase(input), EmisLink::Expect::Ack,
                 [this, id, input, why, kind](const EmisLink::Result& erased) {
                     const QString what =
@@ -183,83 +202,86 @@ void EmisController::abortProgram(RequestId id, int input, const QString& why, E
                             : tr("erasing the partial program (*PEIN%1) failed too: check "
                                  "the input before using it")
                                   .arg(input);
-                    finishError(
+                    m_host.fail(
                         id, kind,
                         tr("program for input %1 not stored: %2; %3").arg(input).arg(why, what));
                 },
-                kStoreTimeoutMs);
+                EmisParameters::kStoreTimeoutMs);
         },
-        kStoreTimeoutMs, 0, true);
+        EmisParameters::kStoreTimeoutMs, 0, true);
 }
 
-void EmisController::eraseInputProgram(RequestId id, const QVariantMap& args)
+void EmisOperations::eraseInputProgram(RequestId id, const QVariantMap& args)
 {
     const auto input = numberArg(args, "input", 1, kInputCount);
     if (!input) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("input '%1' does not exist (inputs 1..%2)")
                                .arg(args.value(QStringLiteral("input")).toString())
                                .arg(kInputCount));
     }
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     const QByteArray bytes = encode::programErase(*input);
-    request(
+    m_exchange.request(
         bytes, EmisLink::Expect::Ack,
         [this, id, bytes](const EmisLink::Result& r) {
             if (r.outcome != EmisLink::Outcome::Ok)
-                return finishFailure(id, bytes, r);
-            finishOk(id);
+                return m_host.failExchange(id, bytes, r);
+            m_host.succeed(id);
         },
-        kStoreTimeoutMs);
+        EmisParameters::kStoreTimeoutMs);
 }
 
-void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
+void EmisOperations::sendRaw(RequestId id, const QByteArray& bytes)
 {
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     CommandDecoder decoder;
     const QList<CommandDecoder::Frame> frames = decoder.feed(bytes);
     if (frames.size() != 1 || frames.first().overlong) {
-        return finishError(id, ErrorKind::InvalidValue,
+        return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("the console sends one SMC-IC4 command at a time"));
     }
     const Command c = parseCommand(frames.first().text, frames.first().terminator);
     if (c.kind == Command::Kind::Invalid)
-        return finishError(id, ErrorKind::InvalidValue, c.error);
+        return m_host.fail(id, ErrorKind::InvalidValue, c.error);
     if (const QString e = rangeError(c); !e.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, e);
+        return m_host.fail(id, ErrorKind::InvalidValue, e);
     switch (c.kind) {
     case Command::Kind::Vector: // through the bookkeeping, so positions stay right
         // Each target as typed: "L1,X100,y50" moves X to 100 and Y by 50 (9.11).
-        if (const QString refusal = unknownAbsolute(c.targets); !refusal.isEmpty())
-            return finishError(id, ErrorKind::Refused, refusal);
-        return startVector(id, c.targets, false);
+        if (const QString refusal = m_motion.unknownAbsolute(c.targets); !refusal.isEmpty())
+            return m_host.fail(id, ErrorKind::Refused, refusal);
+        return m_motion.startVector(id, c.targets, false);
     case Command::Kind::Home:
-        return startHome(id, c.axes, c.simultaneous);
+        return m_motion.startHome(id, c.axes, c.simultaneous);
     case Command::Kind::ProgramOpen:
     case Command::Kind::ProgramHeader:
     case Command::Kind::ProgramEnd:
-        return finishError(id, ErrorKind::Refused,
+        return m_host.fail(id, ErrorKind::Refused,
                            tr("input programs are written with the program editor, not the "
                               "console"));
     default:
         break;
     }
+    sendConsoleCommand(id, frames.first().text + frames.first().terminator, c);
+}
+
+void EmisOperations::sendConsoleCommand(RequestId id, const QByteArray& frame, const Command& c)
+{
     const bool stored = c.kind == Command::Kind::SystemWrite;
-    const QByteArray frame = frames.first().text + frames.first().terminator;
-    request(
+    m_exchange.request(
         frame, stored ? EmisLink::Expect::Stored : EmisLink::Expect::Ack,
         [this, id, frame, c](const EmisLink::Result& r) {
             if (r.outcome != EmisLink::Outcome::Ok)
-                return finishFailure(id, frame, r);
+                return m_host.failExchange(id, frame, r);
             if (c.kind == Command::Kind::SystemWrite) {
-                m_stored.store(c.system);
-                noteStored(m_stored);
+                m_parameters.noteStoredEntry(c.system);
             } else if (c.kind == Command::Kind::ReadSystem) {
-                noteStored(parseSystemParameters(r.text));
+                m_parameters.noteStored(parseSystemParameters(r.text));
             } else if (c.kind == Command::Kind::Output) {
-                mutableStatus().outputs[c.number - 1] = c.on;
+                m_host.statusToChange().outputs[c.number - 1] = c.on;
             } else if (c.kind == Command::Kind::Ramp) {
                 m_known.ramp = c.value;
             } else if (c.kind == Command::Kind::StartSpeed) {
@@ -267,12 +289,12 @@ void EmisController::sendRaw(RequestId id, const QByteArray& bytes)
                     m_known.startSpeed.insert(a, c.value);
             } else if (c.kind == Command::Kind::WorkSpeed) {
                 for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
-                    m_speeds.setWritten(a, c.value);
+                    m_known.speeds.setWritten(a, c.value);
             }
-            publish();
-            finishOk(id, QString::fromLatin1(r.text));
+            m_host.publish();
+            m_host.succeed(id, QString::fromLatin1(r.text));
         },
-        stored ? kStoreTimeoutMs : 0, stored ? c.system.motorCount() : 0);
+        stored ? EmisParameters::kStoreTimeoutMs : 0, stored ? c.system.motorCount() : 0);
 }
 
 } // namespace stepdeck::emis

@@ -1,5 +1,7 @@
 // Working values (set), system parameters (store, *PRSYS, *PESYS).
-#include "EmisController.h"
+#include "EmisParameters.h"
+#include "EmisModel.h"
+#include "EmisMotionTracker.h"
 #include "Logging.h"
 #include "model/NumberParsing.h"
 
@@ -32,36 +34,51 @@ QMap<Axis, qint64> intsOf(const ParameterValue& v)
 }
 } // namespace
 
-void EmisController::runFrames(RequestId id, const QList<ParameterPlan::Frame>& frames, int index,
+EmisParameters::EmisParameters(EmisHost& host, EmisExchange& exchange, EmisKnownValues& known,
+                               const EmisMotionTracker& tracker)
+    : m_host(host), m_exchange(exchange), m_known(known), m_tracker(tracker)
+{}
+
+bool EmisParameters::busy() const
+{
+    return m_tracker.anyAwaiting() || m_host.jogInputActive() || m_exchange.inputProgramOpen();
+}
+
+void EmisParameters::noteStoredEntry(const SystemEntry& entry)
+{
+    m_stored.store(entry);
+    noteStored(m_stored);
+}
+
+void EmisParameters::runFrames(RequestId id, const QList<ParameterPlan::Frame>& frames, int index,
                                std::function<void()> onDone)
 {
     if (index >= frames.size())
         return onDone();
     const ParameterPlan::Frame& f = frames[index];
     const bool stored = f.storedMotors > 0;
-    request(
+    m_exchange.request(
         f.bytes, stored ? EmisLink::Expect::Stored : EmisLink::Expect::Ack,
         [this, id, frames, index, onDone](const EmisLink::Result& r) {
             if (r.outcome == EmisLink::Outcome::Ok)
                 return runFrames(id, frames, index + 1, onDone);
-            QString text =
-                tr("%1: %2").arg(frames[index].parameter, failureText(frames[index].bytes, r));
+            QString text = tr("%1: %2").arg(frames[index].parameter,
+                                            m_exchange.failureText(frames[index].bytes, r));
             if (index > 0)
                 text += tr(" (%n command(s) before it were accepted)", nullptr, index);
-            finishError(id, failureKind(r), text);
+            m_host.fail(id, m_exchange.failureKind(r), text);
         },
         stored ? kStoreTimeoutMs : 0, f.storedMotors);
 }
 
-void EmisController::writeParameters(RequestId id, const ParameterSet& values, bool verify)
+void EmisParameters::write(RequestId id, const ParameterSet& values)
 {
-    Q_UNUSED(verify) // the SMC-IC4 cannot read working values back
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
-    if (const QString e = schema().validate(values, allAxes()); !e.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, e);
-    if (anyAwaiting() || jogActive() || m_programming) {
-        return finishError(id, ErrorKind::Refused,
+    if (const QString e = parameterSchema().validate(values, allAxes()); !e.isEmpty())
+        return m_host.fail(id, ErrorKind::InvalidValue, e);
+    if (busy()) {
+        return m_host.fail(id, ErrorKind::Refused,
                            tr("parameters are written while every axis stands still"));
     }
     // The partner of a lone run or idle current: written in this session, else the stored
@@ -69,19 +86,19 @@ void EmisController::writeParameters(RequestId id, const ParameterSet& values, b
     const ParameterPlan plan =
         planWorking(values, CurrentPartners{m_known.runCurrent, m_known.idleCurrent});
     if (!plan.ok())
-        return finishError(id, plan.error, plan.message);
+        return m_host.fail(id, plan.error, plan.message);
     if (values.contains(QStringLiteral("work-speed")))
-        m_speeds.forgetBoard(); // until the writes are confirmed (a failure says no more)
+        m_known.speeds.forgetBoard(); // until the writes are confirmed (a failure says no more)
     runFrames(id, plan.frames, 0, [this, id, values] {
         noteWritten(values);
-        publish();
-        finishOk(id);
+        m_host.publish();
+        m_host.succeed(id);
     });
 }
 
-void EmisController::noteWritten(const ParameterSet& set)
+void EmisParameters::noteWritten(const ParameterSet& set)
 {
-    const ParameterSchema s = schema();
+    const ParameterSchema s = parameterSchema();
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
         // Per-axis values are kept per axis, so a later set of one axis keeps the others.
         ParameterValue& kept = m_written[it.key()];
@@ -99,7 +116,7 @@ void EmisController::noteWritten(const ParameterSet& set)
     m_known.startSpeed.insert(axisInts("start-speed"));
     const QMap<Axis, qint64> work = intsOf(set.value(QStringLiteral("work-speed")));
     for (auto it = work.cbegin(); it != work.cend(); ++it)
-        m_speeds.setWritten(it.key(), it.value()); // the board acknowledged it just now
+        m_known.speeds.setWritten(it.key(), it.value()); // the board acknowledged it just now
     m_known.runCurrent.insert(axisInts("run-current"));
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
@@ -109,28 +126,28 @@ void EmisController::noteWritten(const ParameterSet& set)
         m_known.switchNc.insert(it.key(), it.value().toString() == QLatin1String("NC"));
 }
 
-void EmisController::readParameters(RequestId id, const QStringList& names)
+void EmisParameters::read(RequestId id, const QStringList& names)
 {
     ParameterSet out;
     QStringList unknown;
     for (const QString& name : names) {
-        if (!schema().find(name))
-            return finishError(id, ErrorKind::InvalidValue, tr("unknown parameter '%1'").arg(name));
+        if (!parameterSchema().find(name))
+            return m_host.fail(id, ErrorKind::InvalidValue, tr("unknown parameter '%1'").arg(name));
         if (m_written.contains(name))
             out.insert(name, m_written.value(name));
         else
             unknown << name;
     }
     if (!unknown.isEmpty()) {
-        return finishError(id, ErrorKind::Unsupported,
+        return m_host.fail(id, ErrorKind::Unsupported,
                            tr("%1 cannot be read back: the SMC-IC4 reports no working values "
                               "(only the stored system parameters, *PRSYS)")
                                .arg(unknown.join(QStringLiteral(", "))));
     }
-    finishOk(id, QVariant::fromValue(out)); // the values written in this session
+    m_host.succeed(id, QVariant::fromValue(out)); // the values written in this session
 }
 
-void EmisController::noteStored(const SystemParameters& stored)
+void EmisParameters::noteStored(const SystemParameters& stored)
 {
     m_stored = stored;
     const ParameterSet values = storedValues(stored, nullptr);
@@ -140,7 +157,7 @@ void EmisController::noteStored(const SystemParameters& stored)
         known->insert(intsOf(values.value(QLatin1String(name))));
     };
     fill("start-speed", &m_known.startSpeed);
-    m_speeds.setStored(intsOf(values.value(QStringLiteral("work-speed"))));
+    m_known.speeds.setStored(intsOf(values.value(QStringLiteral("work-speed"))));
     fill("run-current", &m_known.runCurrent);
     fill("idle-current", &m_known.idleCurrent);
     if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))
@@ -150,11 +167,11 @@ void EmisController::noteStored(const SystemParameters& stored)
         m_known.switchNc.insert(e->normallyClosed);
 }
 
-void EmisController::readStoredParameters(RequestId id, Handler after)
+void EmisParameters::readStored(RequestId id, EmisLink::Handler after)
 {
-    if (!after && !requireLink(id))
+    if (!after && !m_host.requireLink(id))
         return;
-    request(
+    m_exchange.request(
         encode::readSystem(), EmisLink::Expect::Ack,
         [this, id, after](const EmisLink::Result& r) {
             if (r.outcome == EmisLink::Outcome::Ok)
@@ -162,22 +179,23 @@ void EmisController::readStoredParameters(RequestId id, Handler after)
             if (after)
                 return after(r);
             if (r.outcome != EmisLink::Outcome::Ok)
-                return finishFailure(id, encode::readSystem(), r);
+                return m_host.failExchange(id, encode::readSystem(), r);
             QStringList notes;
             const ParameterSet values = storedValues(m_stored, &notes);
             QStringList entries;
             for (const SystemEntry& e : m_stored.entries)
                 entries << QStringLiteral("##") + QString::fromLatin1(formatSystemEntry(e));
-            finishOk(id, QVariantMap{{QStringLiteral("parameters"), QVariant::fromValue(values)},
-                                     {QStringLiteral("entries"), texts(entries)},
-                                     {QStringLiteral("notes"), texts(notes)}});
+            m_host.succeed(id,
+                           QVariantMap{{QStringLiteral("parameters"), QVariant::fromValue(values)},
+                                       {QStringLiteral("entries"), texts(entries)},
+                                       {QStringLiteral("notes"), texts(notes)}});
         },
         kReadSystemTimeoutMs);
 }
 
-void EmisController::storeParameters(RequestId id, const QVariantMap& args)
+void EmisParameters::store(RequestId id, const QVariantMap& args)
 {
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
     ParameterSet set = args.value(QStringLiteral("parameters")).value<ParameterSet>();
     // skipUnstorable: a whole setup form; what has no system entry is left out and named.
@@ -191,11 +209,11 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
         }
     }
     if (set.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, tr("no parameters to store"));
-    if (const QString e = schema().validate(set, allAxes()); !e.isEmpty())
-        return finishError(id, ErrorKind::InvalidValue, e);
-    if (anyAwaiting() || jogActive() || m_programming) {
-        return finishError(id, ErrorKind::Refused,
+        return m_host.fail(id, ErrorKind::InvalidValue, tr("no parameters to store"));
+    if (const QString e = parameterSchema().validate(set, allAxes()); !e.isEmpty())
+        return m_host.fail(id, ErrorKind::InvalidValue, e);
+    if (busy()) {
+        return m_host.fail(id, ErrorKind::Refused,
                            tr("system parameters are stored while every axis stands still"));
     }
     CurrentPartners partners;
@@ -205,7 +223,7 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
     }
     const ParameterPlan plan = planStore(set, partners);
     if (!plan.ok())
-        return finishError(id, plan.error, plan.message);
+        return m_host.fail(id, plan.error, plan.message);
     runFrames(id, plan.frames, 0, [this, id, plan, set, skipped] {
         QStringList written;
         for (const ParameterPlan::Frame& f : plan.frames) {
@@ -215,28 +233,28 @@ void EmisController::storeParameters(RequestId id, const QVariantMap& args)
         }
         noteStored(m_stored);
         if (set.contains(QStringLiteral("reference-switch-type")))
-            publish(); // the switch type applies at once
-        finishOk(id, QVariantMap{{QStringLiteral("commands"), texts(written)},
-                                 {QStringLiteral("skipped"), texts(skipped)}});
+            m_host.publish(); // the switch type applies at once
+        m_host.succeed(id, QVariantMap{{QStringLiteral("commands"), texts(written)},
+                                       {QStringLiteral("skipped"), texts(skipped)}});
     });
 }
 
-void EmisController::clearStoredParameters(RequestId id)
+void EmisParameters::clearStored(RequestId id)
 {
-    if (!requireLink(id))
+    if (!m_host.requireLink(id))
         return;
-    request(
+    m_exchange.request(
         encode::clearSystem(), EmisLink::Expect::Ack,
         [this, id](const EmisLink::Result& r) {
             if (r.outcome != EmisLink::Outcome::Ok)
-                return finishFailure(id, encode::clearSystem(), r);
+                return m_host.failExchange(id, encode::clearSystem(), r);
             // 9.16: erases the SMCflex compatibility entry; the others stay.
             m_stored.entries.erase(std::remove_if(m_stored.entries.begin(), m_stored.entries.end(),
                                                   [](const SystemEntry& e) {
                                                       return e.key == SystemEntry::Key::SmcFlex;
                                                   }),
                                    m_stored.entries.end());
-            finishOk(id);
+            m_host.succeed(id);
         },
         kStoreTimeoutMs);
 }
