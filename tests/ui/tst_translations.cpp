@@ -3,8 +3,8 @@
 // codec texts included: lupdate files each string under its run-time context).
 #include "SchemaWords.h"
 #include "UiTestSupport.h"
-#include "main/SafetyBar.h"
-#include "main/Translations.h"
+#include "safety/SafetyBar.h"
+#include "window/Translations.h"
 #include "model/ParameterFile.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabCtlParameters.h"

@@ -1,7 +1,7 @@
 #include "ClosedLoopPanel.h"
 #include "OneLineLabel.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ClosedLoop.h"
 #include "model/ModelOperations.h"
 #include <QComboBox>

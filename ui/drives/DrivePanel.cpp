@@ -2,7 +2,7 @@
 #include "ClosedLoopPanel.h"
 #include "common/ElidedLabel.h"
 #include "drives/PositionErrorResetButton.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QHeaderView>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #include "PositionErrorResetButton.h"
 #include "drives/DrivePanel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QTableWidget>
 
 namespace stepdeck::ui {

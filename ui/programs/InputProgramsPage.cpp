@@ -1,6 +1,6 @@
 #include "InputProgramsPage.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QDateTime>
 #include <QFormLayout>

@@ -1,6 +1,6 @@
 #include "RecordsPage.h"
 #include "RecordDelegate.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QComboBox>
 #include <QCoreApplication>

@@ -1,6 +1,6 @@
 #include "StoredParametersBar.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include "setup/SetupPage.h"
 #include "setup/WriteWarnings.h"

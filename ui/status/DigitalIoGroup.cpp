@@ -1,6 +1,6 @@
 #include "DigitalIoGroup.h"
 #include "common/LedIndicator.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QGridLayout>
 #include <QLabel>

@@ -3,9 +3,9 @@
 // stop; refusals in the form; German labels.
 #include "../EmisUiFixture.h"
 #include "bridge/LaserBridgePage.h"
-#include "main/ConnectionBar.h"
-#include "main/PortScanner.h"
-#include "main/Translations.h"
+#include "connection/ConnectionBar.h"
+#include "connection/PortScanner.h"
+#include "window/Translations.h"
 #include "sim/PtyEndpoint.h"
 #include <QComboBox>
 #include <QDockWidget>

@@ -6,7 +6,7 @@
 #include "common/LedIndicator.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "main/SafetyBar.h"
+#include "safety/SafetyBar.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "programs/InputProgramsPage.h"

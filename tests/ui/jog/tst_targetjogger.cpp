@@ -7,7 +7,7 @@
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
-#include "main/SafetyBar.h"
+#include "safety/SafetyBar.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include <QLabel>
 

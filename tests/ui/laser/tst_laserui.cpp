@@ -7,7 +7,7 @@
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "main/ConnectionBar.h"
+#include "connection/ConnectionBar.h"
 #include "position/PositionPanel.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "setup/SetupPage.h"

@@ -2,11 +2,11 @@
 // widget has the focus, inside an item-view cell editor, with a file dialog or a message box
 // open, with a popup open -- by key and by clicking the buttons. Dialogs are non-modal, so
 // the buttons stay clickable. After a panic the UI says that positions are lost.
-#include "UiTestSupport.h"
+#include "../UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
-#include "main/SafetyBar.h"
+#include "safety/SafetyBar.h"
 #include "position/ReferencePanel.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupPage.h"

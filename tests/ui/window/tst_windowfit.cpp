@@ -4,8 +4,8 @@
 // pages are filled), in English and with the longer German texts.
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
-#include "main/SafetyBar.h"
-#include "main/Translations.h"
+#include "safety/SafetyBar.h"
+#include "window/Translations.h"
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>

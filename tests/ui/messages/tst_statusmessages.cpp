@@ -1,7 +1,7 @@
 // The status bar's message line: every message has an owner that clears or replaces it,
 // every message expires, the newest live one is shown, and the log keeps them all with their
 // times, bounded.
-#include "main/StatusMessages.h"
+#include "messages/StatusMessages.h"
 #include <QSignalSpy>
 #include <QtTest>
 

@@ -1,10 +1,10 @@
 // ConnectionBar, part 2: the reset line, the options menu (recent ports, auto-reconnect) and
 // reconnecting to a USB device that came back (issues 7 and 10).
-#include "main/ConnectionBar.h"
-#include "main/ConnectionSettings.h"
-#include "main/MachineContext.h"
-#include "main/PortScanner.h"
-#include "main/PortWatcher.h"
+#include "connection/ConnectionBar.h"
+#include "connection/ConnectionSettings.h"
+#include "machine/MachineContext.h"
+#include "connection/PortScanner.h"
+#include "connection/PortWatcher.h"
 #include "protocols/Registry.h"
 #include <QAction>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 // The safety bar's banner as a pure function: a machine that may still be moving is said
 // first and never called stopped; "Release the emergency stop" only when there is one to
 // release; setup before referencing; "Ready" only while connected and referenced.
-#include "main/SafetyBanner.h"
+#include "safety/SafetyBanner.h"
 #include <QtTest>
 
 using namespace stepdeck;

@@ -2,12 +2,12 @@
 // under the operator's hand (issue 16): idle, during a move, with the longest message, and
 // after a reconnect. Each picture is the whole window with its default layout.
 #include "controller/Controller.h"
-#include "main/ConnectionBar.h"
-#include "main/MachineContext.h"
-#include "main/MainWindow.h"
-#include "main/SafetyBanner.h"
-#include "main/ScreenshotScript.h"
-#include "main/StatusMessages.h"
+#include "connection/ConnectionBar.h"
+#include "machine/MachineContext.h"
+#include "window/MainWindow.h"
+#include "safety/SafetyBanner.h"
+#include "window/ScreenshotScript.h"
+#include "messages/StatusMessages.h"
 #include "setup/SetupPage.h"
 #include <QCoreApplication>
 #include <QDir>

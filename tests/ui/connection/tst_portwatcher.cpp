@@ -1,7 +1,7 @@
 // Auto-reconnect's matching (issue 10): the watcher follows one USB device by VID:PID and
 // serial number through fake port lists, and the scanner lists ports off the GUI thread.
-#include "main/PortScanner.h"
-#include "main/PortWatcher.h"
+#include "connection/PortScanner.h"
+#include "connection/PortWatcher.h"
 #include <QSignalSpy>
 #include <QThread>
 #include <QtTest>

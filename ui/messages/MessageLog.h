@@ -1,5 +1,5 @@
 #pragma once
-#include "main/StatusMessages.h"
+#include "messages/StatusMessages.h"
 #include <QWidget>
 
 class QPlainTextEdit;

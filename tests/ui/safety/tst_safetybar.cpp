@@ -2,9 +2,9 @@
 // (with and without motion), a host panic, the machine's own emergency stop, and on first
 // connection to a board whose setup is incomplete; the permanent note of a model without a
 // stop command.
-#include "UiTestSupport.h"
-#include "main/SafetyBanner.h"
-#include "main/SafetyBar.h"
+#include "../UiTestSupport.h"
+#include "safety/SafetyBanner.h"
+#include "safety/SafetyBar.h"
 #include <QLabel>
 #include <QPushButton>
 

@@ -1,6 +1,6 @@
 #include "StopFeedback.h"
-#include "main/MachineContext.h"
-#include "main/StatusMessages.h"
+#include "machine/MachineContext.h"
+#include "messages/StatusMessages.h"
 
 namespace stepdeck::ui {
 

@@ -1,13 +1,13 @@
 // Connection bar: lists the simulator and typed ports, connects through a real
 // pseudo-terminal (QSerialPort), and shows the disconnected state without freezing when the
 // peer vanishes (the USB adapter pulled), then reconnects.
-#include "UiTestSupport.h"
+#include "../UiTestSupport.h"
 #include "common/LedIndicator.h"
 #include "console/TrafficConsole.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "main/SafetyBar.h"
+#include "safety/SafetyBar.h"
 #include "position/ReferencePanel.h"
 #include "setup/SetupPage.h"
 #include "sim/PtyEndpoint.h"

@@ -1,8 +1,8 @@
 #include "SafetyBar.h"
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
-#include "main/MachineContext.h"
-#include "main/SafetyBanner.h"
+#include "machine/MachineContext.h"
+#include "safety/SafetyBanner.h"
 #include "protocols/Registry.h"
 #include <QAction>
 #include <QHBoxLayout>

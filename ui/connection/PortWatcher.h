@@ -1,5 +1,5 @@
 #pragma once
-#include "main/PortScanner.h"
+#include "connection/PortScanner.h"
 #include <QObject>
 
 namespace stepdeck::ui {

@@ -3,9 +3,9 @@
 // label re-elides when its width changes, and the log keeps every message with date and time,
 // bounded.
 #include "common/ElidedLabel.h"
-#include "main/MessageLine.h"
-#include "main/MessageLog.h"
-#include "main/StatusMessages.h"
+#include "messages/MessageLine.h"
+#include "messages/MessageLog.h"
+#include "messages/StatusMessages.h"
 #include <QApplication>
 #include <QPlainTextEdit>
 #include <QSignalSpy>

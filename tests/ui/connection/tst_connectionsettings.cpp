@@ -5,9 +5,9 @@
 // (QStandardPaths test mode): the user's files are never touched.
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
-#include "main/ConnectionSettings.h"
-#include "main/PortScanner.h"
-#include "main/PortWatcher.h"
+#include "connection/ConnectionSettings.h"
+#include "connection/PortScanner.h"
+#include "connection/PortWatcher.h"
 #include "protocols/elab/ElabCodec.h"
 #include "sim/PtyEndpoint.h"
 #include <QAction>

@@ -1,7 +1,7 @@
 #include "MessageLine.h"
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
-#include "main/StatusMessages.h"
+#include "messages/StatusMessages.h"
 #include <QHBoxLayout>
 #include <QToolButton>
 

@@ -6,8 +6,8 @@
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "main/StatusMessages.h"
-#include "main/StopFeedback.h"
+#include "messages/StatusMessages.h"
+#include "safety/StopFeedback.h"
 #include <QLabel>
 
 using namespace stepdeck;
