@@ -3,10 +3,10 @@
 //   [--lang en|de]
 #include "../common/SignalPipe.h"
 #include "connection/ConnectionBar.h"
+#include "protocols/Registry.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotScript.h"
 #include "window/Translations.h"
-#include "protocols/Registry.h"
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>

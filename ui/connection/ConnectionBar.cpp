@@ -1,8 +1,8 @@
 #include "ConnectionBar.h"
 #include "connection/ConnectionSettings.h"
-#include "machine/MachineContext.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
+#include "machine/MachineContext.h"
 #include "protocols/Registry.h"
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -2,9 +2,9 @@
 // reconnecting to a USB device that came back (issues 7 and 10).
 #include "connection/ConnectionBar.h"
 #include "connection/ConnectionSettings.h"
-#include "machine/MachineContext.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
+#include "machine/MachineContext.h"
 #include "protocols/Registry.h"
 #include <QAction>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #include "MachineContext.h"
-#include "protocols/Registry.h"
 #include "drives/PositionErrorResetButton.h"
+#include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QSettings>
 

@@ -2,8 +2,8 @@
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
-#include "safety/SafetyBanner.h"
 #include "protocols/Registry.h"
+#include "safety/SafetyBanner.h"
 #include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>

@@ -1,14 +1,14 @@
 // `--screenshot`: the main window at 1366x768 in the states in which its layout once moved
 // under the operator's hand (issue 16): idle, during a move, with the longest message, and
 // after a reconnect. Each picture is the whole window with its default layout.
-#include "controller/Controller.h"
 #include "connection/ConnectionBar.h"
+#include "controller/Controller.h"
 #include "machine/MachineContext.h"
-#include "window/MainWindow.h"
-#include "safety/SafetyBanner.h"
-#include "window/ScreenshotScript.h"
 #include "messages/StatusMessages.h"
+#include "safety/SafetyBanner.h"
 #include "setup/SetupPage.h"
+#include "window/MainWindow.h"
+#include "window/ScreenshotScript.h"
 #include <QCoreApplication>
 #include <QDir>
 

@@ -4,11 +4,11 @@
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "machine/MachineContext.h"
-#include "window/MainWindow.h"
 #include "position/ReferencePanel.h"
 #include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
 #include "setup/SetupPage.h"
+#include "window/MainWindow.h"
 #include <QCheckBox>
 #include <QDateTime>
 #include <QDir>

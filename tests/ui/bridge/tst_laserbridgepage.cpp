@@ -5,8 +5,8 @@
 #include "bridge/LaserBridgePage.h"
 #include "connection/ConnectionBar.h"
 #include "connection/PortScanner.h"
-#include "window/Translations.h"
 #include "sim/PtyEndpoint.h"
+#include "window/Translations.h"
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>

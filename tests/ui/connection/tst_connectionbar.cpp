@@ -7,8 +7,8 @@
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "safety/SafetyBar.h"
 #include "position/ReferencePanel.h"
+#include "safety/SafetyBar.h"
 #include "setup/SetupPage.h"
 #include "sim/PtyEndpoint.h"
 #include <QComboBox>

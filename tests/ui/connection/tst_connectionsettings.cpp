@@ -4,10 +4,10 @@
 // back -- positions unknown, nothing resumed, the operator told. Settings are isolated
 // (QStandardPaths test mode): the user's files are never touched.
 #include "../UiTestSupport.h"
-#include "jog/JogPanel.h"
 #include "connection/ConnectionSettings.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
+#include "jog/JogPanel.h"
 #include "protocols/elab/ElabCodec.h"
 #include "sim/PtyEndpoint.h"
 #include <QAction>

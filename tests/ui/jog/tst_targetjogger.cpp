@@ -7,8 +7,8 @@
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
-#include "safety/SafetyBar.h"
 #include "protocols/laser/LaserAxisSimulator.h"
+#include "safety/SafetyBar.h"
 #include <QLabel>
 
 using namespace stepdeck;

@@ -6,8 +6,8 @@
 #include "console/TrafficConsole.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
-#include "safety/SafetyBar.h"
 #include "position/ReferencePanel.h"
+#include "safety/SafetyBar.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupPage.h"
 #include <QComboBox>

@@ -8,12 +8,12 @@
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "messages/MessageLine.h"
-#include "safety/SafetyBar.h"
 #include "messages/StatusMessages.h"
-#include "window/Translations.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
+#include "safety/SafetyBar.h"
 #include "status/StatusPanel.h"
+#include "window/Translations.h"
 #include <QDir>
 #include <QScreen>
 #include <QStatusBar>
