@@ -1,10 +1,10 @@
-#include "SoakHost.h"
+#include "BenchHost.h"
 #include "BenchDevice.h"
 #include "EventWait.h"
 
 namespace stepdeck::bench {
 
-SoakHost::SoakHost(QObject* parent) : QObject(parent)
+BenchHost::BenchHost(QObject* parent) : QObject(parent)
 {
     connect(&m_session, &ControllerSession::requestFinished, this,
             [this](const CommandResult& result) { m_finished.insert(result.id, result); });
@@ -12,50 +12,56 @@ SoakHost::SoakHost(QObject* parent) : QObject(parent)
         if (state != LinkState::Connected && state != LinkState::Connecting && m_linkLeftNs < 0)
             m_linkLeftNs = nowNs();
     });
+    connect(&m_session, &ControllerSession::pollRateChanged, this, [this](double hz) {
+        m_pollRateHz = hz;
+        ++m_pollRateReports;
+    });
 }
 
-SoakHost::~SoakHost()
+BenchHost::~BenchHost()
 {
     m_session.destroy();
 }
 
-bool SoakHost::waitUntil(const std::function<bool()>& done, int timeoutMs)
+bool BenchHost::waitUntil(const std::function<bool()>& done, int timeoutMs)
 {
     return bench::waitUntil(done, timeoutMs);
 }
 
-void SoakHost::idle(int ms)
+void BenchHost::idle(int ms)
 {
     waitUntil([] { return false; }, ms);
 }
 
-bool SoakHost::connectTo(const ModelInfo& model, const QString& port, QString* error)
+bool BenchHost::connectTo(const ModelInfo& model, const QString& port, const Options& options,
+                          QString* error)
 {
     m_session.destroy();
     m_finished.clear();
     m_linkLeftNs = -1;
+    m_pollRateHz = 0;
+    m_pollRateReports = 0;
     ConnectionSpec spec;
     spec.port = port;
-    spec.options.pollIntervalMs = 20;
-    // Models that learn of an arrival only from the device (laser status frames) wait this
-    // long for it (--arrival-timeout in the CLI, 60 s by default). Every target of the soak
-    // arrives within a fraction of a second, so a lost arrival frame is reported as a timeout
-    // after 3 s instead of outlasting kRequestBoundMs and counting as a hang.
-    spec.options.arrivalTimeoutMs = 3000;
+    spec.options.pollIntervalMs = options.pollIntervalMs;
+    if (options.arrivalTimeoutMs > 0)
+        spec.options.arrivalTimeoutMs = options.arrivalTimeoutMs;
     if (!m_session.create(model, spec, error))
         return false;
     const RequestId id = m_session.open();
-    waitUntil([&] { return connected() || m_finished.contains(id); }, 5000);
+    waitUntil([&] { return connected() || (m_finished.contains(id) && !m_finished[id].ok()); },
+              options.connectTimeoutMs);
     if (connected()) {
         m_linkLeftNs = -1; // what happened while connecting does not count
         return true;
     }
     *error = m_finished.contains(id) ? m_finished.value(id).message
-                                     : QStringLiteral("link did not come up within 5 s");
+                                     : QStringLiteral("link did not come up within %1 s")
+                                           .arg(options.connectTimeoutMs / 1000);
     return false;
 }
 
-void SoakHost::disconnect()
+void BenchHost::disconnect()
 {
     if (m_session.isCreated()) {
         m_session.close();
@@ -64,18 +70,19 @@ void SoakHost::disconnect()
     }
 }
 
-SoakHost::Outcome SoakHost::call(const std::function<RequestId(ControllerSession&)>& start,
-                                 int boundMs)
+BenchHost::Outcome BenchHost::call(const std::function<RequestId(ControllerSession&)>& start,
+                                   int boundMs)
 {
     const RequestId id = start(m_session);
     Outcome out;
     out.finished = waitUntil([&] { return m_finished.contains(id); }, boundMs);
-    if (out.finished)
-        out.result = m_finished.take(id);
+    out.result = out.finished
+                     ? m_finished.take(id)
+                     : CommandResult::failure(id, ErrorKind::Timeout, QStringLiteral("no result"));
     return out;
 }
 
-bool SoakHost::waitIdle(int timeoutMs)
+bool BenchHost::waitIdle(int timeoutMs)
 {
     return waitUntil([&] { return !connected() || !m_session.status().anyMoving(); }, timeoutMs);
 }
