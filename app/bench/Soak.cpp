@@ -3,6 +3,7 @@
 #include "Soak.h"
 #include "BenchDevice.h"
 #include "BenchHost.h"
+#include "model/ModelOperations.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <cstdio>
@@ -329,7 +330,7 @@ void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome)
         for (Axis a : m_host.session().capabilities().axes) {
             ++m_fig.recoveries;
             record(m_host.call([&](ControllerSession& s) {
-                return s.modelOperation(operation, {{QStringLiteral("axis"), axisName(a)}});
+                return s.modelOperation(operation, {{operation::arg::kAxis, axisName(a)}});
             }));
         }
     }
