@@ -197,11 +197,10 @@ void ConnectionBar::toggleConnection()
 ConnectionSpec ConnectionBar::currentSpec() const
 {
     ConnectionSpec spec;
-    spec.modelId = selectedModelId();
     spec.port = portSpec();
     spec.options.pollIntervalMs = m_interval->value();
     // The same choice the CLI passes with --reset-line (CliSession).
-    spec.options.resetLine = connectionsettings::resetLine(spec.modelId);
+    spec.options.resetLine = connectionsettings::resetLine(selectedModelId());
     return spec;
 }
 
@@ -219,13 +218,15 @@ void ConnectionBar::connectNow()
 
 bool ConnectionBar::connectWith(const ConnectionSpec& spec)
 {
+    const QString modelId = selectedModelId();
+    const ModelInfo* model = findModel(modelId);
     QString error;
-    if (!m_context->connectTo(spec, &error)) {
-        Q_EMIT connectionFailed(error);
+    if (!model || !m_context->connectTo(*model, spec, &error)) {
+        Q_EMIT connectionFailed(model ? error : unknownModelText(modelId));
         return false;
     }
     QSettings settings;
-    settings.setValue(QStringLiteral("connection/model"), spec.modelId);
+    settings.setValue(QStringLiteral("connection/model"), model->id);
     settings.setValue(QStringLiteral("connection/port"), spec.port);
     return true;
 }

@@ -96,20 +96,14 @@ void MachineContext::selectModel(const QString& modelId)
     Q_EMIT modelChanged();
 }
 
-bool MachineContext::connectTo(const ConnectionSpec& given, QString* error)
+bool MachineContext::connectTo(const ModelInfo& model, const ConnectionSpec& given, QString* error)
 {
     // The core's messages name this window's buttons, not CLI commands (issue 16).
     ConnectionSpec spec = given;
     spec.options.actionNames.insert(PositionErrorResetButton::operationName(),
                                     PositionErrorResetButton::actionName());
     const ModelInfo* before = m_model;
-    const ModelInfo* model = findModel(spec.modelId);
-    if (!model) {
-        if (error)
-            *error = unknownModelText(spec.modelId);
-        return false;
-    }
-    if (!m_session->create(*model, spec, error))
+    if (!m_session->create(model, spec, error))
         return false;
     m_model = m_session->model();
     m_port = spec.port;

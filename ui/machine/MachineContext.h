@@ -36,8 +36,9 @@ public:
 
     // Chooses the model the panels show before (or without) a connection.
     void selectModel(const QString& modelId);
-    // Creates the session for spec and opens the link; false and a reason on failure.
-    bool connectTo(const ConnectionSpec& spec, QString* error);
+    // Creates the session of model (a registry entry) for spec and opens the link; false and
+    // a reason on failure.
+    bool connectTo(const ModelInfo& model, const ConnectionSpec& spec, QString* error);
     void disconnectFromController();
 
     // Parameter values known to be on the device in this link session: written successfully

@@ -109,7 +109,7 @@ void TestLayoutHoldsStill::connectModel(const QString& model)
 void TestLayoutHoldsStill::startMove()
 {
     ControllerSession* session = m_f->session;
-    if (session->spec().modelId == QLatin1String("elab")) {
+    if (session->model()->id == QLatin1String("elab")) {
         // The board refuses motion until its ramp is set up.
         QSignalSpy done(session, &ControllerSession::requestFinished);
         const RequestId id = m_f->writeRampSetup();
@@ -120,7 +120,7 @@ void TestLayoutHoldsStill::startMove()
                                  5000);
     }
     // Laser axes know no position before their first report: an absolute target there.
-    if (session->spec().modelId == QLatin1String("laser-axis"))
+    if (session->model()->id == QLatin1String("laser-axis"))
         session->moveAbsolute({{Axis::X, 90000}});
     else
         session->moveRelative({{Axis::X, 200000}});
