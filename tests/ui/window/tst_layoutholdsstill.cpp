@@ -145,11 +145,10 @@ void TestLayoutHoldsStill::longMessage_movesNothing_textsInFull_data()
     QTest::addColumn<QString>("state");
     // English first: a German translator, once installed, stays for the process.
     for (const char* lang : {"en", "de"}) {
-        for (const char* model : {"elab", "nanotec", "emis", "laser-axis"}) {
+        for (const ModelInfo& model : models()) {
             for (const char* state : {"idle", "moving", "panic", "reconnected"})
-                QTest::addRow("%s %s %s", model, state, lang)
-                    << QString::fromLatin1(lang) << QString::fromLatin1(model)
-                    << QString::fromLatin1(state);
+                QTest::addRow("%s %s %s", qPrintable(model.id), state, lang)
+                    << QString::fromLatin1(lang) << model.id << QString::fromLatin1(state);
         }
     }
 }

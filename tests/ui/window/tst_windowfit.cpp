@@ -57,10 +57,11 @@ void TestWindowFit::screen_fitsAndShowsSafetyWidgets_data()
     // English first: a German translator, once installed, stays for the process. Every model:
     // EMIS adds the U axis, digital I/O and the input-program page, laser axes their jog note.
     for (const char* lang : {"en", "de"}) {
-        for (const char* model : {"elab", "emis", "laser-axis", "nanotec"}) {
+        for (const ModelInfo& model : models()) {
             for (const QSize size : {QSize(1366, 768), QSize(1024, 768)})
-                QTest::addRow("%s %dx%d %s", model, size.width(), size.height(), lang)
-                    << size << QString::fromLatin1(lang) << QString::fromLatin1(model);
+                QTest::addRow("%s %dx%d %s", qPrintable(model.id), size.width(), size.height(),
+                              lang)
+                    << size << QString::fromLatin1(lang) << model.id;
         }
     }
 }
