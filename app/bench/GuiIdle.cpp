@@ -168,17 +168,17 @@ struct Figures
     bool guiAlive = false;
 };
 
-// The GUI and the simulator run the first registered model (E-LAB).
-QString idleModel()
+// The GUI and the simulator run the first registered model.
+const ModelInfo& idleModel()
 {
-    return models().first().id;
+    return models().first();
 }
 
 // The first stdout line of stepdeck-sim is its terminal's path.
 QString startSimulator(const QString& appDir, QProcess* sim)
 {
     sim->start(QDir(appDir).filePath(QStringLiteral("stepdeck-sim")),
-               {QStringLiteral("--model"), idleModel()});
+               {QStringLiteral("--model"), idleModel().id});
     QString ptyPath;
     QElapsedTimer t;
     t.start();
@@ -203,7 +203,7 @@ bool startGui(const QString& appDir, const Options& o, const QString& ptyPath,
     gui->setProcessEnvironment(env);
     gui->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     gui->start(QDir(appDir).filePath(QStringLiteral("stepdeck")),
-               {QStringLiteral("--model"), idleModel(), QStringLiteral("--port"), ptyPath,
+               {QStringLiteral("--model"), idleModel().id, QStringLiteral("--port"), ptyPath,
                 QStringLiteral("--poll-interval"), QString::number(o.pollMs)});
     if (!gui->waitForStarted(5000)) {
         *error = QStringLiteral("the GUI did not start");
@@ -256,9 +256,9 @@ void report(const Options& o, const Figures& f, const QString& ptyPath)
         print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
         return;
     }
-    print(stdout, QStringLiteral("stepdeck-bench --gui-idle: stepdeck on %1, E-LAB via "
-                                 "stepdeck-sim on %2, poll interval %3 ms")
-                      .arg(platform, ptyPath)
+    print(stdout, QStringLiteral("stepdeck-bench --gui-idle: stepdeck on %1, %2 via "
+                                 "stepdeck-sim on %3, poll interval %4 ms")
+                      .arg(platform, idleModel().displayName, ptyPath)
                       .arg(o.pollMs));
     print(stdout, QStringLiteral("  GUI CPU   %1 % of one core  (utime+stime over %2 s, after "
                                  "%3 s warm-up)")

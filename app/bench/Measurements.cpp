@@ -1,6 +1,6 @@
 #include "Measurements.h"
 #include "BenchDevice.h"
-#include "BenchSession.h"
+#include "BenchHost.h"
 #include "sim/TrafficMeter.h"
 #include <QtMath>
 #include <algorithm>
@@ -33,18 +33,19 @@ QVector<AxisVector> stepStream(int steps)
 }
 
 // A device and a connected, set-up host; empty note on success.
-QString prepare(const ModelInfo& model, BenchDevice* device, BenchSession* host, int pollIntervalMs,
+QString prepare(const ModelInfo& model, BenchDevice* device, BenchHost* host, int pollIntervalMs,
                 bool setup)
 {
     QString error;
     if (!device->start(&error))
         return QStringLiteral("simulator: %1").arg(error);
-    if (!host->connectTo(model, device->slavePath(), pollIntervalMs, &error))
+    if (!host->connectTo(model, device->slavePath(), {pollIntervalMs, 0, 3000}, &error))
         return QStringLiteral("connect: %1").arg(error);
     if (setup) {
         const ParameterSet set = setupParameters(model);
         const CommandResult written =
-            host->call([&](ControllerSession& s) { return s.writeParameters(set, false); }, 5000);
+            host->call([&](ControllerSession& s) { return s.writeParameters(set, false); }, 5000)
+                .result;
         if (!written.ok())
             return QStringLiteral("setup: %1").arg(written.message);
     }
@@ -72,7 +73,7 @@ Figure measurePollRate(const ModelInfo& model, bool paced)
     BenchDevice::Config config;
     config.paced = paced;
     BenchDevice device(model, config);
-    BenchSession host;
+    BenchHost host;
     if (const QString error = prepare(model, &device, &host, kPollIntervalMs, false);
         !error.isEmpty())
         return {std::nullopt, error};
@@ -93,7 +94,7 @@ LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
         BenchDevice::Config config;
         config.metered = true;
         BenchDevice device(model, config);
-        BenchSession host;
+        BenchHost host;
         if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty()) {
             figure.note = error;
             break;
@@ -139,7 +140,7 @@ Figure measureFeedThroughput(const ModelInfo& model, bool paced)
     config.metered = true;
     config.prepare = model.streamBench.unlimitBuffer;
     BenchDevice device(model, config);
-    BenchSession host;
+    BenchHost host;
     if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty())
         return {std::nullopt, error};
     const TrafficMeter* meter = device.meter();

@@ -1,6 +1,6 @@
 #include "Replug.h"
 #include "BenchDevice.h"
-#include "SoakHost.h"
+#include "BenchHost.h"
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QRandomGenerator>
@@ -32,7 +32,7 @@ Stats stats(QList<double> v)
 }
 
 // Starts the phase's activity on a connected host; the vanish follows while it runs.
-void startActivity(const QString& phase, SoakHost& host, const SoakProfile& profile,
+void startActivity(const QString& phase, BenchHost& host, const SoakProfile& profile,
                    QRandomGenerator& rng)
 {
     ControllerSession& s = host.session();
@@ -68,7 +68,7 @@ ReplugFigures runReplug(const ModelInfo& model, int cycles, quint32 seed,
     clock.start();
     QRandomGenerator rng(seed);
     BenchDevice device(model, BenchDevice::soakConfig(model, seed));
-    SoakHost host;
+    BenchHost host;
     QString error;
     if (!device.start(&error)) {
         ++fig.reconnectFailures;
@@ -77,7 +77,7 @@ ReplugFigures runReplug(const ModelInfo& model, int cycles, quint32 seed,
     for (int i = 0; i < cycles; ++i) {
         const QString phase = kPhases.at(i % kPhases.size());
         if ((!device.present() && !device.reappear(&error)) ||
-            !host.connectTo(model, device.slavePath(), &error)) {
+            !host.connectTo(model, device.slavePath(), BenchHost::soakOptions(), &error)) {
             ++fig.reconnectFailures;
             host.disconnect();
             continue;

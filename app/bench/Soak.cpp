@@ -2,7 +2,8 @@
 // pseudo-terminal, checked at the DEVICE (docs/benchmark.md, "Fault soak").
 #include "Soak.h"
 #include "BenchDevice.h"
-#include "SoakHost.h"
+#include "BenchHost.h"
+#include "model/ModelOperations.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <cstdio>
@@ -62,8 +63,8 @@ private:
     void oneCommand();
     QString injectFault();
     void clearFaults();
-    void record(const SoakHost::Outcome& outcome);
-    void recoverIfRefused(const SoakHost::Outcome& outcome);
+    void record(const BenchHost::Outcome& outcome);
+    void recoverIfRefused(const BenchHost::Outcome& outcome);
     void cmdMove(bool wait);
     void cmdJog();
     void cmdVelocity();
@@ -80,7 +81,7 @@ private:
     const ModelInfo& m_model;
     const SoakProfile& m_profile;
     BenchDevice m_device;
-    SoakHost m_host;
+    BenchHost m_host;
     QRandomGenerator m_rng;
     std::function<void(const QString&)> m_progress;
     SoakFigures m_fig;
@@ -130,7 +131,7 @@ bool SoakRun::startSession()
     if (!m_device.present() && !m_device.reappear(&error))
         return false;
     m_fig.movingAtReconnect += m_device.movingAxes().size(); // left by an unplugged host
-    if (!m_host.connectTo(m_model, m_device.slavePath(), &error)) {
+    if (!m_host.connectTo(m_model, m_device.slavePath(), BenchHost::soakOptions(), &error)) {
         ++m_fig.connectFailures;
         m_host.disconnect();
         return false;
@@ -297,7 +298,7 @@ void SoakRun::oneCommand()
     }
 }
 
-void SoakRun::record(const SoakHost::Outcome& outcome)
+void SoakRun::record(const BenchHost::Outcome& outcome)
 {
     if (!outcome.finished) {
         ++m_fig.hangs;
@@ -315,7 +316,7 @@ void SoakRun::record(const SoakHost::Outcome& outcome)
 }
 
 // What an operator does after a refusal the model's manual says how to clear.
-void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
+void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
         return;
@@ -329,7 +330,7 @@ void SoakRun::recoverIfRefused(const SoakHost::Outcome& outcome)
         for (Axis a : m_host.session().capabilities().axes) {
             ++m_fig.recoveries;
             record(m_host.call([&](ControllerSession& s) {
-                return s.modelOperation(operation, {{QStringLiteral("axis"), axisName(a)}});
+                return s.modelOperation(operation, {{operation::arg::kAxis, axisName(a)}});
             }));
         }
     }
@@ -346,7 +347,7 @@ void SoakRun::cmdMove(bool wait)
             steps.insert(a, m_rng.bounded(2) ? size : -size);
     }
     const int journalBefore = int(m_device.moves().size());
-    const SoakHost::Outcome out =
+    const BenchHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.moveRelative(steps); });
     record(out);
     recoverIfRefused(out);
@@ -382,7 +383,7 @@ void SoakRun::cmdVelocity()
     AxisVector rates;
     rates.insert(caps.axes.at(int(m_rng.bounded(int(caps.axes.size())))),
                  (m_rng.bounded(2) ? 1 : -1) * between(100, 2000));
-    const SoakHost::Outcome out =
+    const BenchHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.velocityMove(rates); });
     record(out);
     recoverIfRefused(out);

@@ -14,7 +14,7 @@ struct SoakFigures
     quint32 seed = 0;
     // must be 0
     qint64 crashes = 0; // the soak process died (set by the parent, see main.cpp)
-    qint64 hangs = 0;   // requests without a result within SoakHost::kRequestBoundMs
+    qint64 hangs = 0;   // requests without a result within BenchHost::kRequestBoundMs
     // axes still moving 3 s after an orderly session end; for models without a stop command
     // (EMIS, laser axes) the same window, in which every target the soak sends is reached
     qint64 axesLeftMoving = 0;

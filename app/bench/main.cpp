@@ -145,6 +145,13 @@ int main(int argc, char** argv)
         return code;
     if (const int code = soakMain(application.applicationFilePath(), args); code >= 0)
         return code;
+    // The figures need a stream to queue behind and to meter: the first registered model
+    // whose descriptor has one (ModelInfo::streamBench).
+    const ModelInfo* model = nullptr;
+    for (const ModelInfo& m : models()) {
+        if (!model && m.streamBench.supported())
+            model = &m;
+    }
     const bool asJson = args.contains(QStringLiteral("--json"));
     for (const QString& arg : args) {
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
@@ -154,7 +161,7 @@ int main(int argc, char** argv)
                               "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
                               "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
                               "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                              "Measures the first model with a feed stream (E-LAB) against its "
+                              "Measures the first model with a feed stream (%1) against its "
                               "simulator over a "
                               "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                               "DC2 feed throughput, unpaced and paced at the line rate.\n"
@@ -167,20 +174,14 @@ int main(int argc, char** argv)
                               "-write); time until the host reports it.\n"
                               "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
                               "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
-                              "See docs/benchmark.md."));
+                              "See docs/benchmark.md.")
+                              .arg(model ? model->displayName : QStringLiteral("none built in")));
             return 0;
         }
         if (arg != QLatin1String("--json")) {
             print(stderr, QStringLiteral("stepdeck-bench: unknown argument '%1'").arg(arg));
             return 2;
         }
-    }
-    // The figures need a stream to queue behind and to meter: the first registered model
-    // whose descriptor has one (ModelInfo::streamBench; E-LAB).
-    const ModelInfo* model = nullptr;
-    for (const ModelInfo& m : models()) {
-        if (!model && m.streamBench.supported())
-            model = &m;
     }
     if (!model) {
         print(stderr, QStringLiteral("stepdeck-bench: no model with a stream to measure is "

@@ -25,7 +25,7 @@ struct GlobalOption
 // clang-format off
 const GlobalOption kGlobalOptions[] = {
     {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
-        "controller model (default: elab; see `models`)")},
+        "controller model (default: %1; see `models`)")},
     {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "serial device path | tcp://HOST:PORT | sim (in-process\nsimulator; the default)")},
     {"address", "N", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
@@ -94,8 +94,10 @@ QString optionsHelp()
             left += QLatin1Char(' ') + QLatin1String(option.valueName);
         left = left.size() < kColumn ? left.leftJustified(kColumn) : left + QStringLiteral("  ");
         const QString indent = QStringLiteral("\n") + QString(kColumn, QLatin1Char(' '));
-        text += left + CliText::tr(option.help).split(QLatin1Char('\n')).join(indent) +
-                QLatin1Char('\n');
+        QString help = CliText::tr(option.help);
+        if (namesOf(option).contains(QLatin1String("model")))
+            help = help.arg(models().first().id); // the registry's first model is the default
+        text += left + help.split(QLatin1Char('\n')).join(indent) + QLatin1Char('\n');
     }
     return text + QLatin1Char('\n');
 }
@@ -335,6 +337,23 @@ QString unknownCommandText(const QString& name, const QList<CommandSyntax>& comm
                : CliText::tr("unknown command '%1' (did you mean %2?)").arg(name, close);
 }
 
+namespace {
+// "1..254": the bus addresses of the multi-drive models this build knows (their Capabilities).
+QString busAddressRange()
+{
+    int first = 0;
+    int last = -1;
+    for (const ModelInfo& model : models()) {
+        const Capabilities& c = model.capabilities;
+        if (!c.multiDrive)
+            continue;
+        first = last < first ? c.minBusAddress : qMin(first, c.minBusAddress);
+        last = qMax(last, c.maxBusAddress);
+    }
+    return last < first ? QStringLiteral("-") : QStringLiteral("%1..%2").arg(first).arg(last);
+}
+} // namespace
+
 QString usageText()
 {
     return CliText::tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
@@ -381,7 +400,7 @@ QString usageText()
                "                              spindle speed, coolant, drive power in percent\n"
                "                              (checked against the parameter ranges)\n"
                "  scan [--first N] [--last N]\n"
-               "                              drives answering on the bus (addresses 1..254):\n"
+               "                              drives answering on the bus (addresses %1):\n"
                "                              address and firmware string (multi-drive models\n"
                "                              such as nanotec; others exit 8)\n"
                "  records [AXIS]              the 32 stored records of one drive (nanotec)\n"
@@ -423,7 +442,8 @@ QString usageText()
                "\n"
                "Arguments that start with '-' are options: an unknown option or one of another\n"
                "command is a usage error (exit 2). Everything after `--` is an argument.\n"
-               "\n") +
+               "\n")
+               .arg(busAddressRange()) +
            exitCodeHelp();
 }
 

@@ -91,8 +91,8 @@ Outcome cmdScan(CliContext& c, QStringList args)
         qMax(CliSession::kRequestTimeoutMs, (last - first + 1) * kScanMsPerAddress + 10000);
     const CommandResult result = c.session.call(
         [&](ControllerSession& s) {
-            return ranged ? s.modelOperation(operation::kScan, {{QStringLiteral("first"), first},
-                                                                {QStringLiteral("last"), last}})
+            return ranged ? s.modelOperation(operation::kScan, {{operation::arg::kFirst, first},
+                                                                {operation::arg::kLast, last}})
                           : s.scanBus();
         },
         timeoutMs);
@@ -152,8 +152,8 @@ Outcome cmdResetPositionError(CliContext& c, QStringList args)
     if (!outcome.ok())
         return outcome;
     outcome = c.session.run([&](ControllerSession& s) {
-        return s.modelOperation(QStringLiteral("reset-position-error"),
-                                {{QStringLiteral("axis"), axisName(axis)}});
+        return s.modelOperation(operation::kResetPositionError,
+                                {{operation::arg::kAxis, axisName(axis)}});
     });
     if (outcome.ok() && !c.json())
         printLine(CliText::tr("position error of axis %1 reset: its position is the encoder's")
@@ -173,7 +173,7 @@ Outcome cmdRecords(CliContext& c, QStringList args)
         return outcome;
     const CommandResult result = c.session.call([&](ControllerSession& s) {
         return s.modelOperation(operation::kReadAllRecords,
-                                {{QStringLiteral("axis"), axisName(*axis)}});
+                                {{operation::arg::kAxis, axisName(*axis)}});
     });
     if (!result.ok())
         return Outcome::from(result);

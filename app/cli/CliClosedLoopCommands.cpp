@@ -145,7 +145,7 @@ Outcome enableClosedLoop(CliContext& c, Axis axis, bool on)
 {
     const CommandResult r = c.session.call([&](ControllerSession& s) {
         return s.modelOperation(cl::kEnable,
-                                {{cl::kAxis, axisName(axis)}, {QStringLiteral("on"), on}});
+                                {{cl::kAxis, axisName(axis)}, {operation::arg::kOn, on}});
     });
     if (!r.ok())
         return Outcome::from(r);
@@ -260,7 +260,7 @@ Outcome homeClosedLoop(CliContext& c, const QStringList& args)
         QVariantMap value;
         result = runWithProgress(
             c, cl::kReference, it.key(),
-            {{cl::kAxis, axisName(it.key())}, {QStringLiteral("direction"), int(it.value())}},
+            {{cl::kAxis, axisName(it.key())}, {operation::arg::kDirection, int(it.value())}},
             CliText::tr("closed-loop reference run of axis %1").arg(axisName(it.key())), &value);
     }
     if (!result.ok())

@@ -108,7 +108,7 @@ Outcome cmdStore(CliContext& c, QStringList args)
     QVariant value;
     const Outcome result =
         connectAndCall(c, operation::kStoreParameters,
-                       {{QStringLiteral("parameters"), QVariant::fromValue(set)}}, &value);
+                       {{operation::arg::kParameters, QVariant::fromValue(set)}}, &value);
     if (result.ok() && !c.json()) {
         printLine(CliEmis::tr("stored as power-on values: %1 (sent: %2)")
                       .arg(describe(schema, set),
@@ -187,7 +187,7 @@ Outcome cmdOutput(CliContext& c, QStringList args)
     const bool on = state == QLatin1String("on");
     const Outcome result =
         connectAndCall(c, operation::kSetOutput,
-                       {{QStringLiteral("output"), int(number)}, {QStringLiteral("on"), on}});
+                       {{operation::arg::kOutput, int(number)}, {operation::arg::kOn, on}});
     if (result.ok() && !c.json())
         printLine(CliEmis::tr("output %1 %2")
                       .arg(number)
@@ -214,7 +214,7 @@ Outcome cmdProgram(CliContext& c, QStringList args)
         if (!args.isEmpty() || title)
             return Outcome::usage(CliEmis::tr("program N --erase takes nothing else"));
         const Outcome result =
-            connectAndCall(c, operation::kEraseInputProgram, {{QStringLiteral("input"), input}});
+            connectAndCall(c, operation::kEraseInputProgram, {{operation::arg::kInput, input}});
         if (result.ok() && !c.json())
             printLine(CliEmis::tr("program of input %1 erased").arg(input));
         return result;
@@ -224,10 +224,10 @@ Outcome cmdProgram(CliContext& c, QStringList args)
     if (args.isEmpty())
         return Outcome::usage(CliEmis::tr("program N --title TEXT needs at least one command"));
     const Outcome result = connectAndCall(c, operation::kWriteInputProgram,
-                                          {{QStringLiteral("input"), input},
-                                           {QStringLiteral("title"), *title},
-                                           {QStringLiteral("commands"), args},
-                                           {QStringLiteral("force"), force}});
+                                          {{operation::arg::kInput, input},
+                                           {operation::arg::kTitle, *title},
+                                           {operation::arg::kCommands, args},
+                                           {operation::arg::kForce, force}});
     if (result.ok() && !c.json()) {
         printLine(CliEmis::tr("program of input %1 stored: \"%2\", %3 command(s)")
                       .arg(input)

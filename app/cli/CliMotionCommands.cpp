@@ -268,9 +268,8 @@ Outcome cmdHome(CliContext& c, QStringList args)
             QString axes;
             for (auto it = v.cbegin(); it != v.cend(); ++it)
                 axes += it.value() != 0 ? axisName(it.key()) : QString();
-            return s.modelOperation(
-                operation::kReference,
-                {{QStringLiteral("axes"), axes}, {QStringLiteral("simultaneous"), true}});
+            return s.modelOperation(operation::kReference, {{operation::arg::kAxes, axes},
+                                                            {operation::arg::kSimultaneous, true}});
         }
         QMap<Axis, int> directions;
         for (auto it = v.cbegin(); it != v.cend(); ++it)

@@ -1,4 +1,5 @@
 #include "CliSession.h"
+#include "model/ModelOperations.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -77,7 +78,6 @@ Outcome CliSession::create()
     if (m_session.isCreated())
         return Outcome::success();
     ConnectionSpec spec;
-    spec.modelId = m_options.model;
     spec.port = m_options.port;
     spec.options.axisAddresses = m_options.axisAddresses;
     spec.options.resetLine = m_options.resetLine;
@@ -85,12 +85,12 @@ Outcome CliSession::create()
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
     // The core's messages name this program's commands (the GUI names its buttons).
-    spec.options.actionNames.insert(QStringLiteral("reset-position-error"),
+    spec.options.actionNames.insert(operation::kResetPositionError,
                                     tr("`stepdeck-cli reset-position-error AXIS`"));
     QString error;
-    const ModelInfo* model = findModel(spec.modelId);
+    const ModelInfo* model = findModel(m_options.model);
     if (!model)
-        return Outcome::usage(unknownModelText(spec.modelId));
+        return Outcome::usage(unknownModelText(m_options.model));
     if (!m_session.create(*model, spec, &error))
         return Outcome::usage(error);
     return Outcome::success();

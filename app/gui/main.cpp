@@ -2,11 +2,11 @@
 //   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--poll-interval MS] [--screenshot DIR]
 //   [--lang en|de]
 #include "../common/SignalPipe.h"
-#include "main/ConnectionBar.h"
-#include "main/MainWindow.h"
-#include "main/ScreenshotScript.h"
-#include "main/Translations.h"
+#include "connection/ConnectionBar.h"
 #include "protocols/Registry.h"
+#include "window/MainWindow.h"
+#include "window/ScreenshotScript.h"
+#include "window/Translations.h"
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>

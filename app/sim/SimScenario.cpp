@@ -249,6 +249,21 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
     return true;
 }
 
+namespace {
+// "57600 8N2": a line's baud rate and character frame.
+QString lineText(const LineSettings& line)
+{
+    const char parity = line.parity == LineSettings::Parity::None   ? 'N'
+                        : line.parity == LineSettings::Parity::Even ? 'E'
+                                                                    : 'O';
+    return QStringLiteral("%1 %2%3%4")
+        .arg(line.baudRate)
+        .arg(line.dataBits)
+        .arg(QLatin1Char(parity))
+        .arg(line.stopBits);
+}
+} // namespace
+
 QString simUsage()
 {
     return SimText::tr(
@@ -261,8 +276,8 @@ QString simUsage()
                "Options:\n"
                "  --model MODEL      controller model: %1 (default %2)\n"
                "  --drives LIST      bus addresses of the simulated drives (multi-drive models)\n"
-               "  --pace             release replies at the line's character rate (57600 8N2\n"
-               "                     for elab), so timing is like a real serial line\n"
+               "  --pace             release replies at the line's character rate (%3 for\n"
+               "                     %2), so timing is like a real serial line\n"
                "  --setup-complete   start with start/max speed and acceleration written\n"
                "                     (the board powers on with setup incomplete)\n"
                "  --temperature C    board temperature (above 50 sets over-temperature)\n"
@@ -291,7 +306,8 @@ QString simUsage()
                "                     all while the terminal stays open (a frozen peer)\n"
                "  --seed N           seed of the fault generator (default 1)\n"
                "  --help, --version\n")
-        .arg(modelIds().join(QStringLiteral(", ")), models().first().id);
+        .arg(modelIds().join(QStringLiteral(", ")), models().first().id,
+             lineText(models().first().line));
 }
 
 void applyFaults(const SimScenario& scenario, Simulator* simulator)

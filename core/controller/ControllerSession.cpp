@@ -63,7 +63,6 @@ bool ControllerSession::create(const ModelInfo& modelInfo, const ConnectionSpec&
     }
     m_model = &modelInfo;
     m_spec = connection;
-    m_spec.modelId = modelInfo.id;
     const ConnectionSpec& spec = m_spec;
     m_thread.start();
     m_context = new ThreadContext;
@@ -122,7 +121,7 @@ bool ControllerSession::create(const ModelInfo& modelInfo, const ConnectionSpec&
     connect(m_controller, &Controller::errorOccurred, this, &ControllerSession::errorOccurred);
     connect(m_controller, &Controller::traffic, this, &ControllerSession::traffic);
     connect(m_controller, &Controller::jogRefused, this, &ControllerSession::jogRefused);
-    qCInfo(lcSession) << "created" << spec.modelId << "on" << spec.port;
+    qCInfo(lcSession) << "created" << modelInfo.id << "on" << spec.port;
     return true;
 }
 

@@ -11,8 +11,9 @@ namespace stepdeck {
 
 struct ConnectionSpec
 {
-    QString modelId; // how the GUI and CLI name the model; create() takes the descriptor
-    QString port;    // serial device path, "tcp://HOST:PORT" or "sim" (in-process simulator)
+    // The model is not named here: create() takes its descriptor (ModelInfo), whose id is the
+    // only spelling (ControllerSession::model()->id).
+    QString port; // serial device path, "tcp://HOST:PORT" or "sim" (in-process simulator)
     ControllerOptions options;
     SimulatorOptions simulator; // used for port "sim"
 };
@@ -31,8 +32,8 @@ public:
     explicit ControllerSession(QObject* parent = nullptr);
     ~ControllerSession() override;
 
-    // Creates the model's stack for spec in the controller thread; spec().modelId becomes
-    // model.id. model must outlive the session (the registry's entries do). Returns false and
+    // Creates the model's stack for spec in the controller thread; model() is then model.
+    // model must outlive the session (the registry's entries do). Returns false and
     // says why when the model cannot be built. The link opens with open().
     bool create(const ModelInfo& model, const ConnectionSpec& spec, QString* error);
     void destroy();

@@ -37,6 +37,42 @@ inline constexpr QLatin1String kResetPosition{"reset-position"};
 inline constexpr QLatin1String kTrigger{"trigger"};
 inline constexpr QLatin1String kSpeedStep{"speed-step"};
 
+// The keys of the operations' argument maps (modelOperation(name, {{arg::kAxis, "X"}, ...})):
+// one spelling for the callers and the adapters. What each operation takes is documented by
+// the implementing controller's header.
+namespace arg {
+// The drive or axis an operation addresses ("X", "Y", ...): reset-position-error,
+// reset-position, trigger, speed-step, the record operations, read-error-memory.
+inline constexpr QLatin1String kAxis{"axis"};
+// kReference: the axes to reference ("XY"), together or one after the other; their direction
+// per axis (map axis name -> -1|1) or the switch type.
+inline constexpr QLatin1String kAxes{"axes"};
+inline constexpr QLatin1String kSimultaneous{"simultaneous"};
+inline constexpr QLatin1String kType{"type"};
+inline constexpr QLatin1String kDirection{"direction"};
+// kSetOutput: the output's number (1..N) and its new state (bool).
+inline constexpr QLatin1String kOutput{"output"};
+inline constexpr QLatin1String kOn{"on"};
+// kStoreParameters: the ParameterSet to store; skip those the device cannot store.
+inline constexpr QLatin1String kParameters{"parameters"};
+inline constexpr QLatin1String kSkipUnstorable{"skipUnstorable"};
+// kWriteInputProgram / kEraseInputProgram: the input, the program's title and command lines,
+// and whether to overwrite a stored program.
+inline constexpr QLatin1String kInput{"input"};
+inline constexpr QLatin1String kTitle{"title"};
+inline constexpr QLatin1String kCommands{"commands"};
+inline constexpr QLatin1String kForce{"force"};
+// kScan: the address range and the wait per address.
+inline constexpr QLatin1String kFirst{"first"};
+inline constexpr QLatin1String kLast{"last"};
+inline constexpr QLatin1String kTimeoutMs{"timeoutMs"};
+// The record operations: the record's number and (kWriteRecord) its values by column.
+inline constexpr QLatin1String kRecord{"record"};
+inline constexpr QLatin1String kValues{"values"};
+// kSpeedStep: up (true) or down.
+inline constexpr QLatin1String kUp{"up"};
+} // namespace arg
+
 // Every name above (tests: a descriptor names only operations that exist).
 inline QList<QLatin1String> all()
 {

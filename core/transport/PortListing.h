@@ -22,7 +22,7 @@ struct SerialPortListing
 };
 
 // The serial ports present now. Blocking (udev/sysfs, can take tens of milliseconds): the GUI
-// calls it from a worker thread (ui/main/PortScanner), the CLI's `ports` directly.
+// calls it from a worker thread (ui/connection/PortScanner), the CLI's `ports` directly.
 QList<SerialPortListing> listSerialPorts();
 
 } // namespace stepdeck

@@ -179,10 +179,9 @@ void TestPeerVanish::peerVanishes_throughSession_linkLostReportedOnce()
     // The same through ControllerSession: the adapter in its own thread, reports queued.
     ControllerSession session;
     ConnectionSpec spec;
-    spec.modelId = "elab";
     spec.port = m_device->slavePath();
     QString error;
-    QVERIFY2(session.create(*findModel(spec.modelId), spec, &error), qPrintable(error));
+    QVERIFY2(session.create(*findModel("elab"), spec, &error), qPrintable(error));
     QSignalSpy links(&session, &ControllerSession::linkStateChanged);
     QSignalSpy errors(&session, &ControllerSession::errorOccurred);
     QSignalSpy results(&session, &ControllerSession::requestFinished);

@@ -11,11 +11,11 @@ class NanotecUiFixture : public UiFixture
 public:
     bool connectNanotec()
     {
-        ConnectionSpec spec{QStringLiteral("nanotec"), QStringLiteral("sim"), {}, {}};
+        ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
         spec.options.axisAddresses = {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
         spec.simulator.addresses = {1, 2, 3};
         QString error;
-        if (!window->context()->connectTo(spec, &error)) {
+        if (!window->context()->connectTo(*findModel(QStringLiteral("nanotec")), spec, &error)) {
             qWarning() << error;
             return false;
         }

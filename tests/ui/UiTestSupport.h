@@ -3,14 +3,14 @@
 // in-process E-LAB simulator through the ControllerSession, and the traffic it produced.
 #include "FakeGamepadDevice.h"
 #include "TestSupport.h"
+#include "connection/ConnectionBar.h"
 #include "controller/Controller.h"
-#include "main/ConnectionBar.h"
-#include "main/MachineContext.h"
-#include "main/MainWindow.h"
+#include "machine/MachineContext.h"
 #include "protocols/Registry.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "transport/LoopbackTransport.h"
+#include "window/MainWindow.h"
 #include <QApplication>
 #include <QFileInfo>
 #include <QMutex>

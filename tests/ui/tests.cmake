@@ -1,8 +1,7 @@
 # GUI tests (offscreen) against the in-process simulator through ControllerSession.
 set(_ui_test_support ${CMAKE_CURRENT_LIST_DIR}/UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/FakeGamepadDevice.h)
-foreach(_t tst_jogpanel tst_safetyshortcuts tst_setuppage tst_gamepadjog tst_connectionbar
-           tst_trafficconsole tst_statuspanel tst_referencepanel tst_chartspanel tst_translations
-           tst_safetybar)
+foreach(_t tst_jogpanel tst_setuppage tst_gamepadjog tst_trafficconsole tst_statuspanel
+           tst_referencepanel tst_chartspanel tst_translations)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp ${_ui_test_support}
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
@@ -10,5 +9,3 @@ target_compile_definitions(tst_translations PRIVATE STEPDECK_SOURCE_DIR="${CMAKE
 # Source policy: no modal or native dialog under ui/ (issue 7, rule 5).
 stepdeck_add_test(tst_dialogpolicy SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_dialogpolicy.cpp LABELS unit)
 target_compile_definitions(tst_dialogpolicy PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
-stepdeck_add_test(tst_safetybanner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_safetybanner.cpp
-                  LABELS unit LIBS stepdeck_ui)

@@ -235,9 +235,11 @@ void TestReferencePanel::successMessage_afterPanic_replaced()
 void TestReferencePanel::referenceAll_laserAxes_finishOnTheirReports()
 {
     // No poller: the runner learns the end of each stage from the request itself.
-    ConnectionSpec spec{QStringLiteral("laser-axis"), QStringLiteral("sim"), {}, {}};
+    ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
     QString error;
-    QVERIFY2(m_f->window->context()->connectTo(spec, &error), qPrintable(error));
+    QVERIFY2(
+        m_f->window->context()->connectTo(*findModel(QStringLiteral("laser-axis")), spec, &error),
+        qPrintable(error));
     QVERIFY(m_f->waitConnected());
     QSignalSpy finished(m_f->window->referencePanel()->runner(), &ui::ReferenceRunner::finished);
     m_f->window->referencePanel()->referenceAll();

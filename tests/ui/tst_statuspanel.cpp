@@ -104,9 +104,11 @@ void TestStatusPanel::door_lampOnlyWhereReported_followsTheSwitch()
 {
     using State = ui::LedIndicator::State;
     QVERIFY(!panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))); // E-LAB: none
-    ConnectionSpec spec{QStringLiteral("laser-axis"), QStringLiteral("sim"), {}, {}};
+    ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
     QString error;
-    QVERIFY2(m_f->window->context()->connectTo(spec, &error), qPrintable(error));
+    QVERIFY2(
+        m_f->window->context()->connectTo(*findModel(QStringLiteral("laser-axis")), spec, &error),
+        qPrintable(error));
     QVERIFY(m_f->waitConnected());
     ui::LedIndicator* door = nullptr;
     QTRY_VERIFY((door = panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))));

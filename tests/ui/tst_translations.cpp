@@ -3,14 +3,14 @@
 // codec texts included: lupdate files each string under its run-time context).
 #include "SchemaWords.h"
 #include "UiTestSupport.h"
-#include "main/SafetyBar.h"
-#include "main/Translations.h"
 #include "model/ParameterFile.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabCtlParameters.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/nanotec/NanotecCodec.h"
+#include "safety/SafetyBar.h"
 #include "setup/ParameterField.h"
+#include "window/Translations.h"
 #include <QComboBox>
 #include <QPushButton>
 #include <QXmlStreamReader>

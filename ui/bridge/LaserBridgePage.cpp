@@ -1,7 +1,7 @@
 #include "LaserBridgePage.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
-#include "main/PortScanner.h"
+#include "connection/PortScanner.h"
+#include "machine/MachineContext.h"
 #include "transport/Transport.h"
 #include "transport/TransportFactory.h"
 #include <QComboBox>

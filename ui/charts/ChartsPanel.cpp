@@ -1,6 +1,6 @@
 #include "ChartsPanel.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>

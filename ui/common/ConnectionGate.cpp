@@ -1,5 +1,5 @@
 #include "ConnectionGate.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QAction>
 #include <QWidget>
 

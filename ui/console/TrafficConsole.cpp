@@ -2,7 +2,7 @@
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QCheckBox>
 #include <QFile>
 #include <QHBoxLayout>

@@ -1,7 +1,7 @@
 #include "ClosedLoopPanel.h"
 #include "OneLineLabel.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ClosedLoop.h"
 #include "model/ModelOperations.h"
 #include <QComboBox>
@@ -262,7 +262,7 @@ void ClosedLoopPanel::askReference()
            "the drive was switched on.\n\nStart the reference run now?")
             .arg(m_axis->currentText(), m_direction->currentText()),
         [this, direction] {
-            send(Step::Reference, cl::kReference, {{QStringLiteral("direction"), direction}});
+            send(Step::Reference, cl::kReference, {{operation::arg::kDirection, direction}});
         });
 }
 
@@ -275,13 +275,13 @@ void ClosedLoopPanel::askEnable()
                    "for axis %1?")
                     .arg(m_axis->currentText()),
                 [this] {
-                    send(Step::Enable, cl::kEnable, {{QStringLiteral("on"), true}});
+                    send(Step::Enable, cl::kEnable, {{operation::arg::kOn, true}});
                 });
 }
 
 void ClosedLoopPanel::disable()
 {
-    send(Step::Disable, cl::kEnable, {{QStringLiteral("on"), false}});
+    send(Step::Disable, cl::kEnable, {{operation::arg::kOn, false}});
 }
 
 void ClosedLoopPanel::resetError()

@@ -2,7 +2,7 @@
 // the adapter keeps for this connection, the progress of a run and the next step.
 #include "ClosedLoopPanel.h"
 #include "OneLineLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ClosedLoop.h"
 #include <QComboBox>
 #include <QProgressBar>

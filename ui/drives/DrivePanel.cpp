@@ -2,7 +2,7 @@
 #include "ClosedLoopPanel.h"
 #include "common/ElidedLabel.h"
 #include "drives/PositionErrorResetButton.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QHeaderView>
 #include <QLabel>
@@ -46,8 +46,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     m_drives->setObjectName(QStringLiteral("driveTable"));
     m_found->setObjectName(QStringLiteral("foundTable"));
     m_scan->setObjectName(QStringLiteral("scanBusButton"));
-    m_scan->setToolTip(tr("Ask every address 1..254 for its firmware (a few seconds); the "
-                          "drives of this machine keep their status meanwhile"));
+    showAddressRange();
     auto* v = new QVBoxLayout(this);
     v->addWidget(new QLabel(tr("Drives of this machine"), this));
     v->addWidget(m_drives, 2);
@@ -78,6 +77,7 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     connect(session, &ControllerSession::statusChanged, this, &DrivePanel::onStatus);
     connect(session, &ControllerSession::requestFinished, this, &DrivePanel::onResult);
     connect(session, &ControllerSession::linkStateChanged, this, &DrivePanel::onLinkState);
+    connect(m_context, &MachineContext::modelChanged, this, &DrivePanel::showAddressRange);
     connect(m_scan, &QPushButton::clicked, this, &DrivePanel::scanBus);
     connect(m_cancelScan, &QPushButton::clicked, this, &DrivePanel::cancelScan);
     updateEnabled();
@@ -86,6 +86,15 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
 QString DrivePanel::scanState() const
 {
     return m_scanState->text();
+}
+
+void DrivePanel::showAddressRange()
+{
+    const Capabilities caps = m_context->capabilities();
+    m_scan->setToolTip(tr("Ask every address %1..%2 for its firmware (a few seconds); the "
+                          "drives of this machine keep their status meanwhile")
+                           .arg(caps.minBusAddress)
+                           .arg(caps.maxBusAddress));
 }
 
 void DrivePanel::scanBus()
@@ -117,8 +126,8 @@ void DrivePanel::scanNextChunk()
                              .arg(m_scanLast)
                              .arg(m_scanNext)
                              .arg(last));
-    m_scanId = m_context->session()->modelOperation(operation::kScan,
-                                                    {{"first", m_scanNext}, {"last", last}});
+    m_scanId = m_context->session()->modelOperation(
+        operation::kScan, {{operation::arg::kFirst, m_scanNext}, {operation::arg::kLast, last}});
     m_scanNext = last + 1;
     updateEnabled();
 }

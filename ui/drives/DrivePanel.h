@@ -46,7 +46,7 @@ public:
     int silentCount() const { return m_silent; }
 
 public Q_SLOTS:
-    void scanBus(); // every address the model's bus allows (Nanotec: 1..254)
+    void scanBus(); // every address the model's bus allows (Capabilities::minBusAddress..max)
     // A partial scan (addresses first..last), e.g. for a quick check of a small bus.
     void scanRange(int first, int last);
     void cancelScan(); // stops after the chunk in flight
@@ -57,6 +57,7 @@ private:
     void showFound(const QVariantList& drives);
     void onLinkState(LinkState state);
     void updateEnabled();
+    void showAddressRange(); // the scan button's tooltip names the model's bus addresses
     void scanNextChunk();
     void endScan(const QString& text);
 

@@ -1,6 +1,6 @@
 #include "PositionErrorResetButton.h"
 #include "drives/DrivePanel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QTableWidget>
 
 namespace stepdeck::ui {
@@ -51,7 +51,7 @@ void PositionErrorResetButton::resetSelected()
 {
     for (Axis axis : selectedAxes()) {
         const RequestId id = m_context->session()->modelOperation(
-            operationName(), {{QStringLiteral("axis"), axisName(axis)}});
+            operationName(), {{operation::arg::kAxis, axisName(axis)}});
         m_pending.insert(id, axis);
     }
     updateEnabled();

@@ -1,6 +1,7 @@
 #pragma once
 #include "model/Axis.h"
 #include "model/CommandResult.h"
+#include "model/ModelOperations.h"
 #include <QPushButton>
 
 class QTableWidget;
@@ -11,7 +12,7 @@ class MachineContext;
 
 // "Reset position error" for the drives selected in the drive table (Nanotec 'D', manual
 // 5.14: the position becomes the encoder's and the error is cleared), through the model
-// operation "reset-position-error". The core's messages name this button (actionName(),
+// operation operation::kResetPositionError. The core's messages name this button (actionName(),
 // passed in ControllerOptions::actionNames by MachineContext) where the CLI names its command.
 class PositionErrorResetButton : public QPushButton
 {
@@ -20,7 +21,7 @@ public:
     PositionErrorResetButton(MachineContext* context, QTableWidget* drives,
                              QWidget* parent = nullptr);
 
-    static QString operationName() { return QStringLiteral("reset-position-error"); }
+    static QString operationName() { return operation::kResetPositionError; }
     // How messages name it: "the “Reset position error” button on the Drives page".
     static QString actionName();
 

@@ -1,5 +1,5 @@
 #include "IncrementalJogWidget.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QComboBox>
 #include <QGridLayout>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #include "JogController.h"
 #include "jog/JogInputSource.h"
 #include "jog/TargetJogger.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QGuiApplication>
 #include <QSettings>
 #include <QtMath>

@@ -8,7 +8,7 @@
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
 #include "jog/PadJogSource.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QCheckBox>
 #include <QDialog>
 #include <QDialogButtonBox>

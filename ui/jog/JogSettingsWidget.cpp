@@ -1,7 +1,7 @@
 #include "JogSettingsWidget.h"
 #include "jog/JogController.h"
 #include "jog/KeyboardJog.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>

@@ -1,6 +1,6 @@
 #include "GoToWidget.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QDoubleValidator>
 #include <QGridLayout>
 #include <QKeyEvent>

@@ -3,7 +3,7 @@
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "position/DroValueLabel.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"

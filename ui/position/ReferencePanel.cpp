@@ -1,7 +1,7 @@
 #include "ReferencePanel.h"
 #include "common/ElidedLabel.h"
 #include "common/LedIndicator.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "position/ReferenceRunner.h"
 #include <QComboBox>
 #include <QGridLayout>

@@ -1,5 +1,5 @@
 #include "ReferenceRunner.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 
 namespace stepdeck::ui {
 

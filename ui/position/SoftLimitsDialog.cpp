@@ -1,6 +1,6 @@
 #include "SoftLimitsDialog.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QGridLayout>

@@ -1,5 +1,5 @@
 #include "UnitsDialog.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>

@@ -1,6 +1,6 @@
 #include "InputProgramsPage.h"
 #include "common/ElidedLabel.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QDateTime>
 #include <QFormLayout>
@@ -236,10 +236,10 @@ bool InputProgramsPage::writeProgram(bool force)
     m_pendingInput = input;
     m_pendingErase = false;
     m_pending = m_context->session()->modelOperation(operation::kWriteInputProgram,
-                                                     {{QStringLiteral("input"), input},
-                                                      {QStringLiteral("title"), m_title->text()},
-                                                      {QStringLiteral("commands"), commandLines()},
-                                                      {QStringLiteral("force"), force}});
+                                                     {{operation::arg::kInput, input},
+                                                      {operation::arg::kTitle, m_title->text()},
+                                                      {operation::arg::kCommands, commandLines()},
+                                                      {operation::arg::kForce, force}});
     setMessage(tr("Writing the program of input %1\u2026").arg(input), false);
     refresh();
     return true;
@@ -253,7 +253,7 @@ void InputProgramsPage::eraseProgram()
     m_pendingInput = input;
     m_pendingErase = true;
     m_pending = m_context->session()->modelOperation(operation::kEraseInputProgram,
-                                                     {{QStringLiteral("input"), input}});
+                                                     {{operation::arg::kInput, input}});
     setMessage(tr("Erasing the program of input %1\u2026").arg(input), false);
     refresh();
 }

@@ -1,6 +1,6 @@
 #include "RecordsPage.h"
 #include "RecordDelegate.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QComboBox>
 #include <QCoreApplication>
@@ -128,7 +128,8 @@ void RecordsPage::rebuild()
 
 QVariantMap RecordsPage::target() const
 {
-    return {{"axis", m_axis->currentData().toString()}, {"record", m_record->value()}};
+    return {{operation::arg::kAxis, m_axis->currentData().toString()},
+            {operation::arg::kRecord, m_record->value()}};
 }
 
 void RecordsPage::start(Pending what, const QString& operation, const QVariantMap& args,
@@ -145,7 +146,7 @@ void RecordsPage::start(Pending what, const QString& operation, const QVariantMa
 void RecordsPage::readAll()
 {
     start(Pending::ReadAll, operation::kReadAllRecords,
-          {{"axis", m_axis->currentData().toString()}},
+          {{operation::arg::kAxis, m_axis->currentData().toString()}},
           tr("Reading records 1..%1 of axis %2\u2026")
               .arg(kRecords)
               .arg(m_axis->currentData().toString()));
@@ -165,7 +166,7 @@ void RecordsPage::writeRecord()
         return;
     }
     QVariantMap args = target();
-    args.insert(QStringLiteral("values"), values);
+    args.insert(operation::arg::kValues, values);
     start(Pending::Write, operation::kWriteRecord, args,
           tr("Writing record %1\u2026").arg(row + 1));
 }
@@ -185,7 +186,8 @@ void RecordsPage::loadRecord()
 void RecordsPage::readErrorMemory()
 {
     start(Pending::Errors, operation::kReadErrorMemory,
-          {{"axis", m_axis->currentData().toString()}}, tr("Reading the error memory\u2026"));
+          {{operation::arg::kAxis, m_axis->currentData().toString()}},
+          tr("Reading the error memory\u2026"));
 }
 
 void RecordsPage::onResult(const CommandResult& result)

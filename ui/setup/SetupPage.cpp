@@ -1,6 +1,6 @@
 #include "SetupPage.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupMessageLine.h"
 #include "setup/StoredParametersBar.h"

@@ -1,7 +1,7 @@
 // SetupPage: saving and loading parameter files (the CLI's JSON format).
 #include "SetupPage.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ParameterFile.h"
 #include "setup/DiffDialog.h"
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #include "StoredParametersBar.h"
 #include "common/Dialogs.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include "setup/SetupPage.h"
 #include "setup/WriteWarnings.h"
@@ -103,8 +103,8 @@ void StoredParametersBar::sendStore(const ParameterSet& set)
         return;
     }
     m_pendingStore = m_context->session()->modelOperation(
-        operation::kStoreParameters, {{QStringLiteral("parameters"), QVariant::fromValue(set)},
-                                      {QStringLiteral("skipUnstorable"), true}});
+        operation::kStoreParameters, {{operation::arg::kParameters, QVariant::fromValue(set)},
+                                      {operation::arg::kSkipUnstorable, true}});
     setMessage(tr("Storing\u2026"), false);
 }
 

@@ -1,6 +1,6 @@
 #include "DigitalIoGroup.h"
 #include "common/LedIndicator.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QGridLayout>
 #include <QLabel>
@@ -83,7 +83,7 @@ void DigitalIoGroup::toggle(int number)
 {
     const bool on = !m_known.value(number - 1).value_or(false);
     m_context->session()->modelOperation(
-        operation::kSetOutput, {{QStringLiteral("output"), number}, {QStringLiteral("on"), on}});
+        operation::kSetOutput, {{operation::arg::kOutput, number}, {operation::arg::kOn, on}});
     // The switch shows the confirmed state: undo the click until the status says otherwise.
     setStatus(m_context->status(), m_context->isConnected());
 }

@@ -1,7 +1,7 @@
 #include "StatusPanel.h"
 #include "common/LedIndicator.h"
 #include "common/StyleSheet.h"
-#include "main/MachineContext.h"
+#include "machine/MachineContext.h"
 #include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"
 #include <QEvent>

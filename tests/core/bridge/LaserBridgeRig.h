@@ -48,10 +48,9 @@ public:
                            const ControllerOptions& options = {})
     {
         ConnectionSpec spec;
-        spec.modelId = modelId;
         spec.port = QStringLiteral("sim");
         spec.options = options;
-        return connectSession(spec, maxSpeed);
+        return connectSession(modelId, spec, maxSpeed);
     }
 
     // The model's simulator on the device side of a second pseudo-terminal (ptySim, in this
@@ -70,17 +69,15 @@ public:
         controllerEnd->open(model->line);
         ptySim->attach(controllerEnd.get());
         ConnectionSpec spec;
-        spec.modelId = modelId;
         spec.port = controllerEnd->slavePath();
         spec.options = options;
-        return connectSession(spec, 4000);
+        return connectSession(modelId, spec, 4000);
     }
 
     template <typename Sim> Sim* simOnPty() const { return static_cast<Sim*>(ptySim.get()); }
 
-    bool connectSession(const ConnectionSpec& spec, int maxSpeed)
+    bool connectSession(const QString& modelId, const ConnectionSpec& spec, int maxSpeed)
     {
-        const QString modelId = spec.modelId;
         session = std::make_unique<ControllerSession>();
         QString error;
         const ModelInfo* model = findModel(modelId);

@@ -3,10 +3,10 @@
 // stop; refusals in the form; German labels.
 #include "../EmisUiFixture.h"
 #include "bridge/LaserBridgePage.h"
-#include "main/ConnectionBar.h"
-#include "main/PortScanner.h"
-#include "main/Translations.h"
+#include "connection/ConnectionBar.h"
+#include "connection/PortScanner.h"
 #include "sim/PtyEndpoint.h"
+#include "window/Translations.h"
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>

@@ -8,7 +8,7 @@
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
-#include "main/SafetyBar.h"
+#include "safety/SafetyBar.h"
 #include <QCheckBox>
 #include <QPushButton>
 

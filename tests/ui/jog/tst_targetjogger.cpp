@@ -7,8 +7,8 @@
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
 #include "jog/TargetJogger.h"
-#include "main/SafetyBar.h"
 #include "protocols/laser/LaserAxisSimulator.h"
+#include "safety/SafetyBar.h"
 #include <QLabel>
 
 using namespace stepdeck;
@@ -67,9 +67,9 @@ void TestTargetJogger::init()
 
 bool TestTargetJogger::connectLaser()
 {
-    ConnectionSpec spec{QStringLiteral("laser-axis"), QStringLiteral("sim"), {}, {}};
+    ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
     QString error;
-    if (!m_f->window->context()->connectTo(spec, &error))
+    if (!m_f->window->context()->connectTo(*findModel(QStringLiteral("laser-axis")), spec, &error))
         return false;
     if (!m_f->waitConnected())
         return false;

@@ -5,9 +5,9 @@
 //   lights "motion unconfirmed" while every target is tracked;
 // - the setup page offers no buttons that would do nothing and says why.
 #include "../UiTestSupport.h"
+#include "connection/ConnectionBar.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
-#include "main/ConnectionBar.h"
 #include "position/PositionPanel.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "setup/SetupPage.h"

@@ -2,9 +2,9 @@
 // confirmed (request accepted, motion reported), never by a guess; "Reference all" in the
 // safety bar runs at once, so its label has no "…".
 #include "../UiTestSupport.h"
-#include "main/SafetyBar.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
+#include "safety/SafetyBar.h"
 #include <QProgressBar>
 #include <QPushButton>
 

@@ -160,7 +160,6 @@ void TestEmisEndToEnd::registrySession_connectsAndMoves()
     QVERIFY(!model->capabilities.stopCommand);
     ControllerSession session;
     ConnectionSpec spec;
-    spec.modelId = "emis";
     spec.port = m_device->slavePath();
     spec.options.pollIntervalMs = 20;
     QString error;

@@ -1,0 +1,14 @@
+# The main window (ui/window/).
+# Main window: fits ordinary screens (issue 11).
+stepdeck_add_test(tst_windowfit SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_windowfit.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
+# Issue 16: on a 1366x768 screen a long message moves nothing, the window stays on the screen,
+# and safety texts, DRO rows and status lamps show in full (every model, English and German).
+stepdeck_add_test(tst_layoutholdsstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_layoutholdsstill.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
+# Issue 16: a window whose layout minimum grows stays on its screen.
+stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbound.cpp
+                  LABELS ui LIBS stepdeck_ui)
