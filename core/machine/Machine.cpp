@@ -27,7 +27,6 @@ SoftLimits stepLimitsOf(const MachineDescription& d, const QString& controllerId
 ConnectionSpec specOf(const MachineController& c)
 {
     ConnectionSpec spec;
-    spec.modelId = c.modelId;
     spec.port = c.port;
     spec.options.axisAddresses = c.busAddresses;
     if (c.resetLine)

@@ -11,11 +11,11 @@
 namespace stepdeck::emis {
 
 namespace {
-std::optional<int> numberArg(const QVariantMap& args, const char* key, int minimum, int maximum)
+std::optional<int> numberArg(const QVariantMap& args, QLatin1String key, int minimum, int maximum)
 {
     qint64 n = 0;
-    if (numbers::integerFromVariant(args.value(QLatin1String(key)), &n) != NumberError::None ||
-        n < minimum || n > maximum)
+    if (numbers::integerFromVariant(args.value(key), &n) != NumberError::None || n < minimum ||
+        n > maximum)
         return std::nullopt;
     return int(n);
 }
@@ -60,16 +60,16 @@ bool EmisOperations::run(RequestId id, const QString& name, const QVariantMap& a
 
 void EmisOperations::setOutput(RequestId id, const QVariantMap& args)
 {
-    const auto output = numberArg(args, "output", 1, kOutputCount);
+    const auto output = numberArg(args, operation::arg::kOutput, 1, kOutputCount);
     if (!output) {
         return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("output '%1' does not exist (outputs 1..%2, manual 9.3)")
-                               .arg(args.value(QStringLiteral("output")).toString())
+                               .arg(args.value(operation::arg::kOutput).toString())
                                .arg(kOutputCount));
     }
     if (!m_host.requireLink(id))
         return;
-    const bool on = args.value(QStringLiteral("on")).toBool();
+    const bool on = args.value(operation::arg::kOn).toBool();
     const QByteArray bytes = encode::output(*output, on);
     m_exchange.request(bytes, EmisLink::Expect::Ack,
                        [this, id, bytes, output, on](const EmisLink::Result& r) {
@@ -86,7 +86,7 @@ void EmisOperations::referenceOperation(RequestId id, const QVariantMap& args)
     if (!m_host.requireLink(id))
         return;
     QList<Axis> axes;
-    for (QChar c : args.value(QStringLiteral("axes")).toString()) {
+    for (QChar c : args.value(operation::arg::kAxes).toString()) {
         const auto axis = axisFromName(QString(c));
         if (!axis) {
             return m_host.fail(id, ErrorKind::InvalidValue,
@@ -97,13 +97,13 @@ void EmisOperations::referenceOperation(RequestId id, const QVariantMap& args)
     }
     if (axes.isEmpty())
         return m_host.fail(id, ErrorKind::InvalidValue, tr("name at least one axis to reference"));
-    m_motion.startHome(id, axes, args.value(QStringLiteral("simultaneous")).toBool());
+    m_motion.startHome(id, axes, args.value(operation::arg::kSimultaneous).toBool());
 }
 
 QList<QByteArray> EmisOperations::programLines(const QVariantMap& args, QString* error) const
 {
     QList<QByteArray> lines;
-    const QStringList commands = args.value(QStringLiteral("commands")).toStringList();
+    const QStringList commands = args.value(operation::arg::kCommands).toStringList();
     for (int i = 0; i < commands.size(); ++i) {
         const QString text = commands[i].trimmed();
         const QString why = printableAscii(text) ? QString(validateProgramLine(text.toLatin1()))
@@ -121,14 +121,14 @@ QList<QByteArray> EmisOperations::programLines(const QVariantMap& args, QString*
 
 void EmisOperations::writeInputProgram(RequestId id, const QVariantMap& args)
 {
-    const auto input = numberArg(args, "input", 1, kInputCount);
+    const auto input = numberArg(args, operation::arg::kInput, 1, kInputCount);
     if (!input) {
         return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("input '%1' does not exist (inputs 1..%2)")
-                               .arg(args.value(QStringLiteral("input")).toString())
+                               .arg(args.value(operation::arg::kInput).toString())
                                .arg(kInputCount));
     }
-    const QString title = args.value(QStringLiteral("title")).toString();
+    const QString title = args.value(operation::arg::kTitle).toString();
     if (!printableAscii(title) || title.size() > limits::kTitleMax) {
         return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("the program title must be printable ASCII of at most %1 characters "
@@ -139,7 +139,7 @@ void EmisOperations::writeInputProgram(RequestId id, const QVariantMap& args)
     const QList<QByteArray> lines = programLines(args, &error);
     if (lines.isEmpty())
         return m_host.fail(id, ErrorKind::InvalidValue, error);
-    if (*input <= 4 && !args.value(QStringLiteral("force")).toBool()) {
+    if (*input <= 4 && !args.value(operation::arg::kForce).toBool()) {
         return m_host.fail(id, ErrorKind::Refused,
                            tr("input %1 carries the reference switch of axis %2: a program on it "
                               "can make the controller misbehave (manual 5.2.2); force it only "
@@ -213,11 +213,11 @@ void EmisOperations::abortProgram(RequestId id, int input, const QString& why, E
 
 void EmisOperations::eraseInputProgram(RequestId id, const QVariantMap& args)
 {
-    const auto input = numberArg(args, "input", 1, kInputCount);
+    const auto input = numberArg(args, operation::arg::kInput, 1, kInputCount);
     if (!input) {
         return m_host.fail(id, ErrorKind::InvalidValue,
                            tr("input '%1' does not exist (inputs 1..%2)")
-                               .arg(args.value(QStringLiteral("input")).toString())
+                               .arg(args.value(operation::arg::kInput).toString())
                                .arg(kInputCount));
     }
     if (!m_host.requireLink(id))

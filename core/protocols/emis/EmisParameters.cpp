@@ -3,6 +3,7 @@
 #include "EmisModel.h"
 #include "EmisMotionTracker.h"
 #include "Logging.h"
+#include "model/ModelOperations.h"
 #include "model/NumberParsing.h"
 
 namespace stepdeck::emis {
@@ -197,10 +198,10 @@ void EmisParameters::store(RequestId id, const QVariantMap& args)
 {
     if (!m_host.requireLink(id))
         return;
-    ParameterSet set = args.value(QStringLiteral("parameters")).value<ParameterSet>();
+    ParameterSet set = args.value(operation::arg::kParameters).value<ParameterSet>();
     // skipUnstorable: a whole setup form; what has no system entry is left out and named.
     QStringList skipped;
-    if (args.value(QStringLiteral("skipUnstorable")).toBool()) {
+    if (args.value(operation::arg::kSkipUnstorable).toBool()) {
         for (const QString& name : set.keys()) {
             if (!storableParameters().contains(name)) {
                 set.remove(name);

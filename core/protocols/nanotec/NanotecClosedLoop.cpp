@@ -3,6 +3,7 @@
 // by NanotecClosedLoopRun.
 #include "NanotecClosedLoop.h"
 #include "NanotecController.h"
+#include "model/ModelOperations.h"
 
 namespace stepdeck::nanotec {
 
@@ -44,7 +45,7 @@ void NanotecClosedLoop::operation(RequestId id, const QString& name, Axis axis,
     if (name == cl::kCheck)
         return check(id, axis);
     if (name == cl::kEnable)
-        return enable(id, axis, args.value(QStringLiteral("on"), true).toBool());
+        return enable(id, axis, args.value(operation::arg::kOn, true).toBool());
     if (const NanotecClosedLoopRun::Run* run = m_run.find(axis)) {
         return m_ctl->finishError(
             id, ErrorKind::Refused,
@@ -52,7 +53,7 @@ void NanotecClosedLoop::operation(RequestId id, const QString& name, Axis axis,
     }
     if (name == cl::kCalibrate)
         return start(id, axis, Kind::Calibration, 0);
-    const int direction = args.value(QStringLiteral("direction"), 1).toInt();
+    const int direction = args.value(operation::arg::kDirection, 1).toInt();
     if (direction != 1 && direction != -1) {
         return m_ctl->finishError(
             id, ErrorKind::InvalidValue,

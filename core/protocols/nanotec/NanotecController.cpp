@@ -90,11 +90,11 @@ void NanotecController::finishWith(RequestId id, const Failure& failure, const Q
 HostDrive* NanotecController::driveFor(const QVariantMap& args, RequestId id)
 {
     const auto axis =
-        axisFromName(args.value(QStringLiteral("axis"), QStringLiteral("X")).toString());
+        axisFromName(args.value(operation::arg::kAxis, QStringLiteral("X")).toString());
     if (!axis || !m_drives.contains(*axis)) {
         finishError(id, ErrorKind::InvalidValue,
                     tr("unknown axis '%1' (this machine has %2)")
-                        .arg(args.value(QStringLiteral("axis")).toString())
+                        .arg(args.value(operation::arg::kAxis).toString())
                         .arg([this] {
                             QStringList n;
                             for (Axis a : m_drives.keys())

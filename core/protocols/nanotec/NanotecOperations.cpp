@@ -120,11 +120,10 @@ void NanotecOperations::runPendingScan()
 
 void NanotecOperations::startScan(RequestId id, const QVariantMap& args)
 {
-    auto intArg = [&](const char* key, int def) {
-        return args.value(QString::fromLatin1(key), def).toInt();
-    };
-    NanotecController::PendingScan p{id, intArg("first", kMinAddress), intArg("last", kMaxAddress),
-                                     intArg("timeoutMs", 40)};
+    auto intArg = [&](QLatin1String key, int def) { return args.value(key, def).toInt(); };
+    NanotecController::PendingScan p{id, intArg(operation::arg::kFirst, kMinAddress),
+                                     intArg(operation::arg::kLast, kMaxAddress),
+                                     intArg(operation::arg::kTimeoutMs, 40)};
     if (!isValidAddress(p.first) || !isValidAddress(p.last) || p.first > p.last)
         return m_ctl.finishError(id, ErrorKind::InvalidValue,
                                  tr("scan range must lie within 1..254"));
@@ -142,13 +141,13 @@ void NanotecOperations::modelOperation(RequestId id, const QString& name, const 
         return startScan(id, args);
     if (name == operation::kReference) {
         QMap<Axis, int> dirs;
-        const QVariantMap axes = args.value(QStringLiteral("axes")).toMap();
+        const QVariantMap axes = args.value(operation::arg::kAxes).toMap();
         for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
             if (const auto axis = axisFromName(it.key()))
                 dirs.insert(*axis, it.value().toInt());
         }
         return m_ctl.m_motion.referenceWithType(
-            id, dirs, args.value(QStringLiteral("type")).toString() == QLatin1String("internal"));
+            id, dirs, args.value(operation::arg::kType).toString() == QLatin1String("internal"));
     }
     HostDrive* d = m_ctl.driveFor(args, id);
     if (!d)
@@ -161,14 +160,14 @@ void NanotecOperations::modelOperation(RequestId id, const QString& name, const 
 void NanotecOperations::driveOperation(RequestId id, const QString& name, Axis axis,
                                        const QVariantMap& args)
 {
-    const int record = args.value(QStringLiteral("record"), 0).toInt();
+    const int record = args.value(operation::arg::kRecord, 0).toInt();
     if (name == operation::kReadRecord)
         return m_ctl.m_records.readRecord(id, axis, record);
     if (name == operation::kReadAllRecords)
         return m_ctl.m_records.readAllRecords(id, axis);
     if (name == operation::kWriteRecord)
         return m_ctl.m_records.writeRecord(id, axis, record,
-                                           args.value(QStringLiteral("values")).toMap());
+                                           args.value(operation::arg::kValues).toMap());
     if (name == operation::kLoadRecord || name == operation::kSaveRecord)
         return m_ctl.m_records.loadOrSaveRecord(id, axis, record, name == operation::kSaveRecord);
     if (name == operation::kReadErrorMemory)
@@ -178,7 +177,7 @@ void NanotecOperations::driveOperation(RequestId id, const QString& name, Axis a
     if (name == operation::kTrigger)
         return simple(id, axis, "T");
     if (name == operation::kSpeedStep)
-        return simple(id, axis, args.value(QStringLiteral("up"), true).toBool() ? "+" : "-");
+        return simple(id, axis, args.value(operation::arg::kUp, true).toBool() ? "+" : "-");
     if (name == operation::kResetPosition)
         return resetPosition(id, axis);
     if (name == operation::kStartRecord)
