@@ -1078,6 +1078,17 @@
         </message>
     </context>
     <context>
+        <name>Units</name>
+        <message>
+            <source>steps</source>
+            <translation>Schritte</translation>
+        </message>
+        <message>
+            <source>units</source>
+            <translation>Einheiten</translation>
+        </message>
+    </context>
+    <context>
         <name>main</name>
         <message>
             <source>unknown model '%1' (known: %2)</source>
@@ -2622,6 +2633,264 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::machine::Machine</name>
+        <message>
+            <source>controller "%1": %2</source>
+            <translation>Steuerung "%1": %2</translation>
+        </message>
+        <message>
+            <source>the machine was closed</source>
+            <translation>die Maschine wurde geschlossen</translation>
+        </message>
+        <message>
+            <source>controller "%1" lost its link (%2): the other controllers were told to stop</source>
+            <translation>Steuerung "%1" hat die Verbindung verloren (%2): Die anderen Steuerungen wurden angehalten</translation>
+        </message>
+        <message>
+            <source>the machine has no axis %1</source>
+            <translation>die Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" is not connected</source>
+            <translation>%1: Steuerung "%2" ist nicht verbunden</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" jogs by targets, which a machine cannot jog yet</source>
+            <translation>%1: Steuerung "%2" tippt über Zielpositionen, was eine Maschine noch nicht tippen kann</translation>
+        </message>
+        <message>
+            <source>%1: the jog rate is not a finite number</source>
+            <translation>%1: Die Tippgeschwindigkeit ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>no axis to move</source>
+            <translation>keine Achse zu fahren</translation>
+        </message>
+        <message>
+            <source>%1: the target is not a finite number</source>
+            <translation>%1: Das Ziel ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>%1 is not referenced: its position is unknown, so an absolute move could go anywhere</source>
+            <translation>%1 ist nicht referenziert: Seine Position ist unbekannt, eine absolute Fahrt könnte überallhin gehen</translation>
+        </message>
+        <message>
+            <source>%1 %2 %3 is outside the soft limits %4..%5</source>
+            <translation>%1 %2 %3 liegt außerhalb der Software-Endlagen %4..%5</translation>
+        </message>
+        <message>
+            <source>the move ended before its target: %1</source>
+            <translation>die Fahrt endete vor ihrem Ziel: %1</translation>
+        </message>
+        <message>
+            <source>%1 is on its limit switch</source>
+            <translation>%1 steht auf ihrem Endschalter</translation>
+        </message>
+        <message>
+            <source>%1 stands at %2 %3, not at %4</source>
+            <translation>%1 steht bei %2 %3, nicht bei %4</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::machine::MachineFile</name>
+        <message>
+            <source>unknown key (known: %1)</source>
+            <translation>unbekannter Schlüssel (bekannt: %1)</translation>
+        </message>
+        <message>
+            <source>unknown key (did you mean %1?)</source>
+            <translation>unbekannter Schlüssel (meinten Sie %1?)</translation>
+        </message>
+        <message>
+            <source>missing</source>
+            <translation>fehlt</translation>
+        </message>
+        <message>
+            <source>must be a text in quotes</source>
+            <translation>muss ein Text in Anführungszeichen sein</translation>
+        </message>
+        <message>
+            <source>must be a decimal number</source>
+            <translation>muss eine Dezimalzahl sein</translation>
+        </message>
+        <message>
+            <source>must be "stepdeck-machine"</source>
+            <translation>muss "stepdeck-machine" sein</translation>
+        </message>
+        <message>
+            <source>must be 1 (the version this StepDeck reads)</source>
+            <translation>muss 1 sein (die Version, die dieses StepDeck liest)</translation>
+        </message>
+        <message>
+            <source>must be a list of controllers</source>
+            <translation>muss eine Liste von Steuerungen sein</translation>
+        </message>
+        <message>
+            <source>must be a list of axes</source>
+            <translation>muss eine Liste von Achsen sein</translation>
+        </message>
+        <message>
+            <source>must be an object {"id", "model", "port", …}</source>
+            <translation>muss ein Objekt {"id", "model", "port", …} sein</translation>
+        </message>
+        <message>
+            <source>must be "rts" or "dtr"</source>
+            <translation>muss "rts" oder "dtr" sein</translation>
+        </message>
+        <message>
+            <source>must map controller axes to bus addresses, e.g. {"X": 1, "Y": 2}</source>
+            <translation>muss Steuerungsachsen Busadressen zuordnen, z. B. {"X": 1, "Y": 2}</translation>
+        </message>
+        <message>
+            <source>not a controller axis (X, Y, Z or U)</source>
+            <translation>keine Steuerungsachse (X, Y, Z oder U)</translation>
+        </message>
+        <message>
+            <source>must be a whole bus address</source>
+            <translation>muss eine ganzzahlige Busadresse sein</translation>
+        </message>
+        <message>
+            <source>must be an object {"name", "controller", "axis", "unit", …}</source>
+            <translation>muss ein Objekt {"name", "controller", "axis", "unit", …} sein</translation>
+        </message>
+        <message>
+            <source>must be "mm", "deg" or "steps"</source>
+            <translation>muss "mm", "deg" oder "steps" sein</translation>
+        </message>
+        <message>
+            <source>must be true or false</source>
+            <translation>muss true oder false sein</translation>
+        </message>
+        <message>
+            <source>must be [minimum, maximum] in the axis' unit</source>
+            <translation>muss [Minimum, Maximum] in der Einheit der Achse sein</translation>
+        </message>
+        <message>
+            <source>must be an object {"direction", "order"}</source>
+            <translation>muss ein Objekt {"direction", "order"} sein</translation>
+        </message>
+        <message>
+            <source>must be -1 or 1</source>
+            <translation>muss -1 oder 1 sein</translation>
+        </message>
+        <message>
+            <source>must be a whole number</source>
+            <translation>muss eine ganze Zahl sein</translation>
+        </message>
+        <message>
+            <source>line %1, column %2: %3</source>
+            <translation>Zeile %1, Spalte %2: %3</translation>
+        </message>
+        <message>
+            <source>the file is empty: a machine file holds a JSON object with "format": "stepdeck-machine"</source>
+            <translation>die Datei ist leer: Eine Maschinendatei enthält ein JSON-Objekt mit "format": "stepdeck-machine"</translation>
+        </message>
+        <message>
+            <source>not a machine file: it holds no JSON object</source>
+            <translation>keine Maschinendatei: Sie enthält kein JSON-Objekt</translation>
+        </message>
+        <message>
+            <source>cannot open %1: %2</source>
+            <translation>%1 kann nicht geöffnet werden: %2</translation>
+        </message>
+        <message>
+            <source>cannot write %1: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>the machine needs at least one controller</source>
+            <translation>die Maschine braucht mindestens eine Steuerung</translation>
+        </message>
+        <message>
+            <source>"%1" is used by another controller</source>
+            <translation>"%1" wird schon von einer anderen Steuerung verwendet</translation>
+        </message>
+        <message>
+            <source>must be a short name: a letter, then letters, digits, _ or - (at most 24)</source>
+            <translation>muss ein kurzer Name sein: ein Buchstabe, dann Buchstaben, Ziffern, _ oder - (höchstens 24)</translation>
+        </message>
+        <message>
+            <source>must name a serial port, tcp://HOST:PORT or "sim"</source>
+            <translation>muss eine serielle Schnittstelle, tcp://HOST:PORT oder "sim" nennen</translation>
+        </message>
+        <message>
+            <source>%1 has no reset line</source>
+            <translation>%1 hat keine Reset-Leitung</translation>
+        </message>
+        <message>
+            <source>%1 has no drives on a bus: leave "axes" out</source>
+            <translation>%1 hat keine Antriebe an einem Bus: "axes" weglassen</translation>
+        </message>
+        <message>
+            <source>bus address %1 is outside %2..%3</source>
+            <translation>Busadresse %1 liegt außerhalb von %2..%3</translation>
+        </message>
+        <message>
+            <source>bus address %1 is given to two axes</source>
+            <translation>Busadresse %1 ist zwei Achsen zugeordnet</translation>
+        </message>
+        <message>
+            <source>the machine needs at least one axis</source>
+            <translation>die Maschine braucht mindestens eine Achse</translation>
+        </message>
+        <message>
+            <source>must be one of %1</source>
+            <translation>muss eines von %1 sein</translation>
+        </message>
+        <message>
+            <source>%1 is used by another axis</source>
+            <translation>%1 wird schon von einer anderen Achse verwendet</translation>
+        </message>
+        <message>
+            <source>no controller "%1" (controllers: %2)</source>
+            <translation>keine Steuerung "%1" (Steuerungen: %2)</translation>
+        </message>
+        <message>
+            <source>no controller "%1" (did you mean %2?)</source>
+            <translation>keine Steuerung "%1" (meinten Sie %2?)</translation>
+        </message>
+        <message>
+            <source>controller "%1" has no axis %2 (it has %3)</source>
+            <translation>Steuerung "%1" hat keine Achse %2 (sie hat %3)</translation>
+        </message>
+        <message>
+            <source>axis %1 of controller "%2" already drives another axis</source>
+            <translation>Achse %1 der Steuerung "%2" treibt schon eine andere Achse an</translation>
+        </message>
+        <message>
+            <source>must be a decimal greater than 0 (is %1)</source>
+            <translation>muss eine Dezimalzahl größer als 0 sein (ist %1)</translation>
+        </message>
+        <message>
+            <source>must be 1 for an axis counted in steps</source>
+            <translation>muss für eine in Schritten gezählte Achse 1 sein</translation>
+        </message>
+        <message>
+            <source>the minimum must be below the maximum</source>
+            <translation>das Minimum muss kleiner als das Maximum sein</translation>
+        </message>
+        <message>
+            <source>must be a speed greater than 0 in %1/s</source>
+            <translation>muss eine Geschwindigkeit größer als 0 in %1/s sein</translation>
+        </message>
+        <message>
+            <source>%1 %2/s is %3 steps/s, above the %4 steps/s %5 can jog</source>
+            <translation>%1 %2/s sind %3 Schritte/s, mehr als die %4 Schritte/s, die %5 tippen kann</translation>
+        </message>
+        <message>
+            <source>%1 chooses the direction of its reference runs itself: leave "direction" out</source>
+            <translation>%1 wählt die Richtung seiner Referenzfahrten selbst: "direction" weglassen</translation>
+        </message>
+        <message>
+            <source>must be a whole number from 0 to 99</source>
+            <translation>muss eine ganze Zahl von 0 bis 99 sein</translation>
+        </message>
+        <message>
+            <source>the machine needs a name</source>
+            <translation>die Maschine braucht einen Namen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::nanotec::Codec</name>
         <message>
             <source>'|0' is never sent: the drive would stop answering (manual 6.4)</source>
@@ -2973,10 +3242,6 @@
             <translation>Achse %1 ist noch in Bewegung (der Antrieb ist nicht bereit)</translation>
         </message>
         <message>
-            <source>%1 reports a position error; reset it first (reset-position-error)</source>
-            <translation>%1 meldet einen Positionsfehler; zuerst zurücksetzen (reset-position-error)</translation>
-        </message>
-        <message>
             <source>absolute move refused: position of axis %1 is unknown, reference it first</source>
             <translation>Absolutfahrt abgelehnt: Position der Achse %1 ist unbekannt, zuerst referenzieren</translation>
         </message>
@@ -3161,16 +3426,28 @@
             <translation>%1 %2 wird bereits von %3 benutzt</translation>
         </message>
         <message>
-            <source>%1 reports a position error (encoder deviation above %2); reset it with reset-position-error</source>
-            <translation>%1 meldet einen Positionsfehler (Geberabweichung über %2); mit reset-position-error zurücksetzen</translation>
-        </message>
-        <message>
             <source>%1; sent but not read back: %2</source>
             <translation>%1; gesendet, aber nicht zurückgelesen: %2</translation>
         </message>
         <message>
             <source>stopped</source>
             <translation>gestoppt</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error; reset the position error first</source>
+            <translation>%1 meldet einen Positionsfehler; zuerst den Positionsfehler zurücksetzen</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error; reset it first with %2</source>
+            <translation>%1 meldet einen Positionsfehler; zuerst mit %2 zurücksetzen</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error (encoder deviation above %2); reset the position error to go on</source>
+            <translation>%1 meldet einen Positionsfehler (Encoderabweichung über %2); zum Weiterarbeiten den Positionsfehler zurücksetzen</translation>
+        </message>
+        <message>
+            <source>%1 reports a position error (encoder deviation above %2); reset it with %3</source>
+            <translation>%1 meldet einen Positionsfehler (Encoderabweichung über %2); mit %3 zurücksetzen</translation>
         </message>
     </context>
     <context>
@@ -3250,16 +3527,8 @@
             <translation>Position</translation>
         </message>
         <message>
-            <source>steps</source>
-            <translation>Schritte</translation>
-        </message>
-        <message>
             <source>Commanded velocity</source>
             <translation>Vorgegebene Geschwindigkeit</translation>
-        </message>
-        <message>
-            <source>steps/s</source>
-            <translation>Schritte/s</translation>
         </message>
         <message>
             <source>Temperature</source>
@@ -3300,6 +3569,10 @@
         <message>
             <source>°C</source>
             <translation>°C</translation>
+        </message>
+        <message>
+            <source>%1/s</source>
+            <translation>%1/s</translation>
         </message>
     </context>
     <context>
@@ -3663,6 +3936,14 @@ Regelung für Achse %1 einschalten?</translation>
             <source>Reconnected to %1: the USB device came back. Positions are unknown until the axes are referenced; nothing was resumed (no jog, move or bridge).</source>
             <translation>Wieder verbunden mit %1: Das USB-Gerät ist zurück. Die Positionen sind unbekannt, bis die Achsen referenziert sind; nichts wurde fortgesetzt (kein Joggen, keine Fahrt, keine Brücke).</translation>
         </message>
+        <message>
+            <source>no status poll</source>
+            <translation>keine Statusabfrage</translation>
+        </message>
+        <message>
+            <source>This protocol has no status request: the controller reports only by itself (after a move, at a switch or the door). Silence on an idle link is normal and is not checked.</source>
+            <translation>Dieses Protokoll kennt keine Statusabfrage: Die Steuerung meldet sich nur von selbst (nach einer Fahrt, an einem Schalter oder an der Tür). Stille auf einer ruhenden Verbindung ist normal und wird nicht geprüft.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>
@@ -3792,10 +4073,6 @@ Regelung für Achse %1 einschalten?</translation>
             <translation>Bus durchsuchen</translation>
         </message>
         <message>
-            <source>Ask every address 1..254 for its firmware (a few seconds); the drives of this machine keep their status meanwhile</source>
-            <translation>Jede Adresse 1..254 nach ihrer Firmware fragen (einige Sekunden); die Antriebe dieser Maschine behalten währenddessen ihren Status</translation>
-        </message>
-        <message>
             <source>Drives of this machine</source>
             <translation>Antriebe dieser Maschine</translation>
         </message>
@@ -3840,6 +4117,10 @@ Regelung für Achse %1 einschalten?</translation>
                 <numerusform>Suche nach Adresse %1 abgebrochen: %n Antrieb gefunden</numerusform>
                 <numerusform>Suche nach Adresse %1 abgebrochen: %n Antriebe gefunden</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Ask every address %1..%2 for its firmware (a few seconds); the drives of this machine keep their status meanwhile</source>
+            <translation>Jede Adresse %1..%2 nach ihrer Firmware fragen (einige Sekunden); die Antriebe dieser Maschine behalten währenddessen ihren Status</translation>
         </message>
     </context>
     <context>
@@ -4174,10 +4455,6 @@ W1500</translation>
             <translation>Skaliert jede Tippgeschwindigkeit (Pad, Tastatur, Gamepad)</translation>
         </message>
         <message>
-            <source>steps/s</source>
-            <translation>Schritte/s</translation>
-        </message>
-        <message>
             <source>Keyboard jog</source>
             <translation>Tastatur-Tippbetrieb</translation>
         </message>
@@ -4220,6 +4497,10 @@ W1500</translation>
         <message>
             <source>This controller has no jog command: the pad, keys and gamepad move it by short targets, each sent only after the previous one arrived. Releasing ends jogging after the short move under way. Incremental jog moves by the step size.</source>
             <translation>Diese Steuerung hat keinen Tippbefehl: Joystick, Tasten und Gamepad fahren sie in kurzen Zielen, jedes erst nachdem das vorige erreicht ist. Loslassen beendet den Tippbetrieb nach der laufenden kurzen Fahrt. Schrittweises Tippen fährt um die Schrittweite.</translation>
+        </message>
+        <message>
+            <source>%1/s</source>
+            <translation>%1/s</translation>
         </message>
     </context>
     <context>
@@ -4460,13 +4741,6 @@ W1500</translation>
         <message>
             <source>At %1: %2</source>
             <translation>Um %1: %2</translation>
-        </message>
-    </context>
-    <context>
-        <name>stepdeck::ui::MachineContext</name>
-        <message>
-            <source>steps</source>
-            <translation>Schritte</translation>
         </message>
     </context>
     <context>
@@ -4717,6 +4991,29 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::PositionErrorResetButton</name>
+        <message>
+            <source>Reset position error</source>
+            <translation>Positionsfehler zurücksetzen</translation>
+        </message>
+        <message>
+            <source>For the drives selected above: take over the encoder position as the position and clear the position error (manual 5.14)</source>
+            <translation>Für die oben gewählten Antriebe: die Encoderposition als Position übernehmen und den Positionsfehler löschen (Handbuch 5.14)</translation>
+        </message>
+        <message>
+            <source>the “Reset position error” button on the Drives page</source>
+            <translation>der Schaltfläche „Positionsfehler zurücksetzen“ auf der Seite Antriebe</translation>
+        </message>
+        <message>
+            <source>Position error of axis %1 reset: its position is the encoder's now.</source>
+            <translation>Positionsfehler der Achse %1 zurückgesetzt: Ihre Position ist jetzt die des Encoders.</translation>
+        </message>
+        <message>
+            <source>Position error of axis %1 not reset: %2</source>
+            <translation>Positionsfehler der Achse %1 nicht zurückgesetzt: %2</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::PositionPanel</name>
         <message>
             <source>Units…</source>
@@ -4743,10 +5040,6 @@ W1500</translation>
             <translation>Werkstück-Nullpunkt von %1 auf die aktuelle Position setzen</translation>
         </message>
         <message>
-            <source>machine %1 steps</source>
-            <translation>Maschine %1 Schritte</translation>
-        </message>
-        <message>
             <source>UNKNOWN</source>
             <translation>UNBEKANNT</translation>
         </message>
@@ -4771,20 +5064,12 @@ W1500</translation>
             <translation>Referenziert und bestätigt.</translation>
         </message>
         <message>
-            <source>last known: machine %1 steps</source>
-            <translation>zuletzt bekannt: Maschine %1 Schritte</translation>
-        </message>
-        <message>
             <source>NO LINK</source>
             <translation>KEINE VERBINDUNG</translation>
         </message>
         <message>
             <source>The link is down: this is the last value before it ended, not the position now.</source>
             <translation>Die Verbindung ist getrennt: dies ist der letzte Wert davor, nicht die aktuelle Position.</translation>
-        </message>
-        <message>
-            <source>moving to %1 (machine %2 steps)</source>
-            <translation>fährt nach %1 (Maschine %2 Schritte)</translation>
         </message>
         <message>
             <source>MOVING</source>
@@ -4835,24 +5120,12 @@ W1500</translation>
             <translation>%1 Werkstück</translation>
         </message>
         <message>
-            <source>Work position: the machine position minus the work zero of %1 (machine %2 steps)</source>
-            <translation>Werkstückposition: Maschinenposition minus Werkstück-Nullpunkt von %1 (Maschine %2 Schritte)</translation>
-        </message>
-        <message>
             <source>Machine position (no work zero set for %1)</source>
             <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
         </message>
         <message>
             <source>limits %1..%2 not applied: not referenced</source>
             <translation>%1..%2 unwirksam (nicht referenziert)</translation>
-        </message>
-        <message>
-            <source>Soft limits of %1 in machine steps: jog stops and moves are refused there</source>
-            <translation>Software-Endschalter von %1 in Maschinenschritten: dort stoppt der Tippbetrieb, Fahrten darüber hinaus werden abgelehnt</translation>
-        </message>
-        <message>
-            <source>Soft limits of %1 in machine steps apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
-            <translation>Software-Endschalter von %1 in Maschinenschritten gelten nur, solange die Achse referenziert ist: eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
         </message>
         <message>
             <source>referencing… (machine %1 steps)</source>
@@ -4877,6 +5150,30 @@ W1500</translation>
         <message>
             <source>The controller reports no position during a move and the ramp parameters are not known in this session: the target is shown (→), not where the axis is now.</source>
             <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt: angezeigt wird das Ziel (→), nicht wo die Achse jetzt ist.</translation>
+        </message>
+        <message>
+            <source>Work position: the machine position minus the work zero of %1 (machine %2 %3)</source>
+            <translation>Werkstückposition: die Maschinenposition minus den Werkstücknullpunkt von %1 (Maschine %2 %3)</translation>
+        </message>
+        <message>
+            <source>Soft limits of %1 in machine %2: jog stops and moves are refused there</source>
+            <translation>Software-Endlagen von %1 in Maschinen-%2: Tippen stoppt dort, Fahrten dorthin werden abgelehnt</translation>
+        </message>
+        <message>
+            <source>Soft limits of %1 in machine %2 apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
+            <translation>Software-Endlagen von %1 in Maschinen-%2 gelten nur, solange die Achse referenziert ist: Eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
+        </message>
+        <message>
+            <source>last known: machine %1 %2</source>
+            <translation>zuletzt bekannt: Maschine %1 %2</translation>
+        </message>
+        <message>
+            <source>moving to %1 (machine %2 %3)</source>
+            <translation>fährt nach %1 (Maschine %2 %3)</translation>
+        </message>
+        <message>
+            <source>machine %1 %2</source>
+            <translation>Maschine %1 %2</translation>
         </message>
     </context>
     <context>
@@ -5400,6 +5697,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Invalid values cannot be written (%1): %2</source>
             <translation>Ungültige Werte können nicht geschrieben werden (%1): %2</translation>
+        </message>
+        <message>
+            <source>This controller's protocol has no parameters to set: there is nothing to write, read, save or load here.</source>
+            <translation>Das Protokoll dieser Steuerung hat keine einstellbaren Parameter: Hier gibt es nichts zu schreiben, zu lesen, zu speichern oder zu laden.</translation>
         </message>
     </context>
     <context>
