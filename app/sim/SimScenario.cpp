@@ -176,6 +176,19 @@ bool parseSpeed(const QString& text, std::optional<double>* speed, QString* erro
 }
 } // namespace
 
+namespace {
+// --machine FILE and --out FILE (issue 19, app/sim/SimMachine.h).
+bool parseMachineOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
+                        bool* matched, QString* error)
+{
+    *matched = name == QLatin1String("--machine") || name == QLatin1String("--out");
+    if (!*matched)
+        return true;
+    return takeValue(args, i, name == QLatin1String("--machine") ? &s->machineFile : &s->machineOut,
+                     error);
+}
+} // namespace
+
 bool parseScenario(const QStringList& args, SimScenario* scenario, QString* error)
 {
     SimScenario s;
@@ -184,10 +197,12 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         QString value;
         bool fault = false;
         bool closedLoop = false;
+        bool machineFile = false;
         if (!parseFaultOption(name, args, &i, &s, &fault, error) ||
-            !parseClosedLoopOption(name, args, &i, &s.machine, &closedLoop, error))
+            !parseClosedLoopOption(name, args, &i, &s.machine, &closedLoop, error) ||
+            !parseMachineOption(name, args, &i, &s, &machineFile, error))
             return false;
-        if (fault || closedLoop)
+        if (fault || closedLoop || machineFile)
             continue;
         if (name == QLatin1String("--help") || name == QLatin1String("-h")) {
             s.help = true;
@@ -244,6 +259,10 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
             *error = SimText::tr("unknown argument '%1' (try --help)").arg(args.at(i));
             return false;
         }
+    }
+    if (!s.machineOut.isEmpty() && s.machineFile.isEmpty()) {
+        *error = SimText::tr("--out needs --machine");
+        return false;
     }
     *scenario = s;
     return true;
@@ -305,6 +324,13 @@ QString simUsage()
                "  --freeze-after MS  answer for MS ms from the first reply on, then nothing at\n"
                "                     all while the terminal stays open (a frozen peer)\n"
                "  --seed N           seed of the fault generator (default 1)\n"
+               "\n"
+               "Machines (docs/machines.md):\n"
+               "  --machine FILE     one simulator per controller of the machine file, each on\n"
+               "                     its own pseudo-terminal; the first line on stdout is a\n"
+               "                     copy of the file (compact JSON) whose ports point at them.\n"
+               "                     --pace, --setup-complete and the faults apply to each\n"
+               "  --out FILE         also write that copy to FILE, for stepdeck-cli --machine\n"
                "  --help, --version\n")
         .arg(modelIds().join(QStringLiteral(", ")), models().first().id,
              lineText(models().first().line));

@@ -29,6 +29,8 @@ struct SimScenario
     double noiseBytesPerSecond = 0;
     qint64 freezeAfterMs = -1;
     quint32 seed = 1;
+    QString machineFile; // --machine: a simulator per controller of this file
+    QString machineOut;  // --out: where to write the copy whose ports point at them
     bool help = false;
     bool version = false;
 };

@@ -1,6 +1,7 @@
 // stepdeck-sim: a simulated controller on a pseudo-terminal (issue #2, section 4).
 // The first stdout line is the slave path; tests read it and point stepdeck-cli at it.
 #include "../common/SignalPipe.h"
+#include "SimMachine.h"
 #include "SimScenario.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
@@ -41,6 +42,8 @@ int main(int argc, char** argv)
                 QStringLiteral("stepdeck-sim %1").arg(QCoreApplication::applicationVersion()));
         return 0;
     }
+    if (!scenario.machineFile.isEmpty())
+        return simapp::runMachine(scenario);
     const ModelInfo* model =
         scenario.model.isEmpty() ? &models().first() : findModel(scenario.model);
     if (!model || !model->createSimulator) {

@@ -10,6 +10,10 @@ add_dependencies(tst_cli_safety stepdeck-cli)
 stepdeck_add_test(tst_sim_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sim_e2e.cpp
                   LABELS integration)
 add_dependencies(tst_sim_e2e stepdeck-cli stepdeck-sim)
+stepdeck_add_test(tst_sim_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sim_machine.cpp
+                  LABELS integration)
+add_dependencies(tst_sim_machine stepdeck-cli stepdeck-sim)
+target_compile_definitions(tst_sim_machine PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # Not a timed test: a short soak and replug run must finish without crash, hang or moving axes.
 stepdeck_add_test(tst_soak_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_soak_smoke.cpp
                   LABELS integration TIMEOUT 600)
