@@ -52,6 +52,8 @@ QString prepare(const ModelInfo& model, BenchDevice* device, BenchHost* host, in
     return {};
 }
 
+} // namespace
+
 double percentile(QList<double> samples, double fraction)
 {
     std::sort(samples.begin(), samples.end());
@@ -66,7 +68,6 @@ double median(QList<double> samples)
     const qsizetype n = samples.size();
     return n % 2 ? samples.at(n / 2) : (samples.at(n / 2 - 1) + samples.at(n / 2)) / 2.0;
 }
-} // namespace
 
 Figure measurePollRate(const ModelInfo& model, bool paced)
 {

@@ -1,4 +1,5 @@
 #pragma once
+#include <QList>
 #include <QString>
 #include <optional>
 
@@ -28,6 +29,10 @@ struct LatencyFigure
     int pausedByXoff = 0; // runs in which the controller had paused the host with XOFF
     QString note;
 };
+
+// Nearest-rank percentile (fraction 0..1) and median of latency samples, in their unit.
+double percentile(QList<double> samples, double fraction);
+double median(QList<double> samples);
 
 // Achieved status polls per second of the adapter against the simulator on a pty.
 Figure measurePollRate(const ModelInfo& model, bool paced);

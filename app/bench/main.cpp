@@ -1,5 +1,6 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
 #include "GuiIdle.h"
+#include "MachineStopLatency.h"
 #include "Measurements.h"
 #include "SoakMain.h"
 #include "protocols/Registry.h"
@@ -55,7 +56,10 @@ struct Results
     LatencyFigure panic;
     Figure feed;
     Figure feedWire;
+    QList<QPair<int, LatencyFigure>> machineStop; // controllers -> Machine::stop() latency
 };
+
+constexpr int kMachineStopControllers[] = {1, 2, 4};
 
 Results measureAll(const ModelInfo& model, bool showProgress)
 {
@@ -74,6 +78,10 @@ Results measureAll(const ModelInfo& model, bool showProgress)
     r.feed = measureFeedThroughput(model, false);
     progress("feed throughput, paced");
     r.feedWire = measureFeedThroughput(model, true);
+    for (const int n : kMachineStopControllers) {
+        progress("machine STOP latency (1, 2, 4 controllers)");
+        r.machineStop << qMakePair(n, measureMachineStopLatency(model, n, kMachineStopRepetitions));
+    }
     return r;
 }
 
@@ -87,8 +95,20 @@ void printJson(const Results& r, const ModelInfo& model)
         if (!note.isEmpty())
             notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
     }
+    QJsonArray machineStop;
+    for (const auto& [controllers, figure] : r.machineStop) {
+        machineStop.append(QJsonObject{{"controllers", controllers},
+                                       {"median", json(figure.medianMs, 3)},
+                                       {"p99", json(figure.p99Ms, 3)},
+                                       {"samples", figure.samples}});
+        if (!figure.note.isEmpty())
+            notes.append(QStringLiteral("machineStopLatencyMs (%1 controllers): %2")
+                             .arg(controllers)
+                             .arg(figure.note));
+    }
     const QJsonObject out{
         {"pollRateHz", json(r.poll.value, 1)},
+        {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
         {"panicLatencyMs", QJsonObject{{"median", json(r.panic.medianMs, 3)},
                                        {"p99", json(r.panic.p99Ms, 3)},
@@ -132,6 +152,15 @@ void printHuman(const Results& r, const ModelInfo& model)
                       .arg(text(r.feed.value, 0, steps, r.feed.note)));
     print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
                       .arg(text(r.feedWire.value, 0, steps, r.feedWire.note)));
+    for (const auto& [controllers, figure] : r.machineStop) {
+        print(stdout, QStringLiteral("  machine STOP, %1 controller%2  median %3, p99 %4  (%5 "
+                                     "runs, Machine::stop() to the stop at the last device)")
+                          .arg(controllers)
+                          .arg(controllers == 1 ? QStringLiteral(" ") : QStringLiteral("s"))
+                          .arg(text(figure.medianMs, 3, ms, figure.note),
+                               text(figure.p99Ms, 3, ms, figure.note))
+                          .arg(figure.samples));
+    }
 }
 } // namespace
 
@@ -164,8 +193,9 @@ int main(int argc, char** argv)
                               "Measures the first model with a feed stream (%1) against its "
                               "simulator over a "
                               "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                              "DC2 feed throughput, unpaced and paced at the line rate.\n"
-                              "Figures only; takes 10-20 s.\n"
+                              "DC2 feed throughput, unpaced and paced at the line rate, and "
+                              "the machine STOP latency with 1, 2 and 4 controllers.\n"
+                              "Figures only; takes 30-60 s.\n"
                               "--soak N: N random commands with ~1 % injected faults (dropped, "
                               "corrupted, delayed replies, noise, peer vanish) against every "
                               "simulator (or M); counts crashes, hangs, axes left moving, lost and "

@@ -52,7 +52,8 @@ struct SoakProfile
 // need from a model with MotionMode::FeedStream. Models without it are not measured.
 struct StreamBenchProfile
 {
-    // Counts, in the bytes the device receives, the stream's single steps and the first panic.
+    // Counts, in the bytes the device receives, the stream's single steps and the first panic
+    // and stop commands.
     std::function<std::unique_ptr<TrafficMeter>()> createMeter;
     // A step buffer larger than any stream: the device never holds the host back, so the feed
     // figure is what the link delivers.

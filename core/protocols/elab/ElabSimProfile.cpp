@@ -41,7 +41,7 @@ bool applyScenario(const SimulatorScenario& scenario, Simulator* simulator, QStr
 
 // The host's bytes as the board receives them (manual, SetFeedStepXYZ): <DC2> is followed by
 // one raw step byte, which may take any value with bits 7 and 3 clear -- including 0x07
-// (<BEL>, ForcePanicStop), so the pairs are tracked.
+// (<BEL>, ForcePanicStop) or 0x13 (<XOFF>, Force Stop Move), so the pairs are tracked.
 class StreamMeter : public TrafficMeter
 {
 public:
@@ -55,6 +55,8 @@ public:
                 m_afterDc2 = true;
             } else if (byte == ctrl::BEL) {
                 notePanic(nowNs);
+            } else if (byte == ctrl::XOFF) {
+                noteStop(nowNs);
             }
         }
     }
