@@ -1,9 +1,11 @@
 // The <DC2> single-step stream of the E-LAB simulator: ElabSimStream's buffer bookkeeping and
 // the stream as the host sees it through ElabSimulator (XOFF/XON, EndOfFeed, stop, flush).
 #include "TestSupport.h"
+#include "protocols/Registry.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimStream.h"
 #include "protocols/elab/ElabSimulator.h"
+#include "sim/TrafficMeter.h"
 #include <QRandomGenerator>
 #include <QtTest>
 
@@ -83,6 +85,7 @@ class TestElabSimStream : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
+    void meter_stepBytesLikeBelOrXoff_areSteps_thenPanicAndStopSeen();
     void buffer_watermarks_askForXoffThenXon();
     void buffer_full_countsOverflow();
     void buffer_underrun_earnsNoCredit();
@@ -289,6 +292,23 @@ void TestElabSimStream::dc2Stream_refusedWithoutSetup_noReply()
     QCOMPARE(sim.streamRejected(), qint64(2));
     QVERIFY(!sim.isBusy());
     QCOMPARE(sim.position(Axis::X), qint64(0));
+}
+
+// stepdeck-bench's meter (ElabSimProfile): a <DC2> step byte may be 0x07 or 0x13, which are
+// steps, not <BEL> (panic) or <XOFF> (stop); only a bare control character is.
+void TestElabSimStream::meter_stepBytesLikeBelOrXoff_areSteps_thenPanicAndStopSeen()
+{
+    const std::unique_ptr<TrafficMeter> meter = findModel("elab")->streamBench.createMeter();
+    meter->scan(encode::feedStep(0x07) + encode::feedStep(0x13), 10);
+    QCOMPARE(meter->stepBytes(), qint64(2));
+    QCOMPARE(meter->panicSeenNs(), qint64(-1));
+    QCOMPARE(meter->stopSeenNs(), qint64(-1));
+    meter->scan(encode::stopMove(), 20);
+    meter->scan(encode::panicStop() + encode::stopMove(), 30);
+    QCOMPARE(meter->stopSeenNs(), qint64(20)); // the first one
+    QCOMPARE(meter->panicSeenNs(), qint64(30));
+    meter->reset();
+    QCOMPARE(meter->stopSeenNs(), qint64(-1));
 }
 
 QTEST_GUILESS_MAIN(TestElabSimStream)
