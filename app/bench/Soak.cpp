@@ -3,6 +3,7 @@
 #include "Soak.h"
 #include "BenchDevice.h"
 #include "BenchHost.h"
+#include "MoveMatching.h"
 #include "model/ModelOperations.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
@@ -17,7 +18,6 @@ constexpr double kFaultProbability = 0.01; // per command
 // units, or one jog chunk, at 2000 per second or more) is reached long before this, so an
 // axis still moving then is one the host left moving.
 constexpr int kLeftMovingGraceMs = 3000;
-constexpr int kMoveWindow = 200; // move sizes repeat only after this many moves
 
 // STEPDECK_SOAK_TRACE: each command and jog range with the device journal's size.
 bool traceEnabled()
@@ -50,14 +50,6 @@ public:
     SoakFigures run();
 
 private:
-    struct Commanded
-    {
-        Axis axis;
-        qint64 steps;
-        bool ok;
-        int journalBefore; // device journal size when the command was sent
-    };
-
     bool startSession();
     void endSession();
     void oneCommand();
@@ -72,10 +64,7 @@ private:
     void checkAxesAtRest();
     void settleAfterLinkLoss();
     void closeJogRange();
-    void compareMoves();
     AxisVector whereAxesStand();
-    void reportUnmatched(Axis axis, int j, const SimulatedMove& d, const QList<Commanded>& wanted,
-                         int next);
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
     const ModelInfo& m_model;
@@ -85,7 +74,7 @@ private:
     QRandomGenerator m_rng;
     std::function<void(const QString&)> m_progress;
     SoakFigures m_fig;
-    QList<Commanded> m_commanded;
+    QList<CommandedMove> m_commanded;
     QList<QPair<int, int>> m_jogRanges; // device journal indices [first, end) made by jogs
     int m_jogJournalStart = -1;         // journal size when the last jog began; -1: closed
     int m_moveIndex = 0;
@@ -120,7 +109,7 @@ SoakFigures SoakRun::run()
                            .arg(m_fig.commands));
     }
     closeJogRange();
-    compareMoves();
+    matchMoves(m_device.moves(), m_commanded, m_jogRanges, &m_fig);
     m_fig.seconds = clock.elapsed() / 1000.0;
     return m_fig;
 }
@@ -413,85 +402,6 @@ void SoakRun::cmdParameters(bool write)
     }
 }
 
-// Per axis, in order: every device move matches the next commanded move of that size (moves
-// in between were not started); one commanded move started twice is a duplicate. A device
-// move can only stand for a command sent before the device journaled it: without that bound
-// one device move that stands for no command (e.g. a late jog chunk) matched a command of the
-// same size up to kMoveWindow moves later, and every move after it then counted as lost and
-// unmatched.
-void SoakRun::compareMoves()
-{
-    const QList<SimulatedMove> journal = m_device.moves();
-    QList<int> indices; // journal indices of the moves made by commands
-    int r = 0;
-    for (int j = 0; j < journal.size(); ++j) {
-        while (r < m_jogRanges.size() && j >= m_jogRanges.at(r).second)
-            ++r;
-        if (r < m_jogRanges.size() && j >= m_jogRanges.at(r).first)
-            ++m_fig.jogMoves;
-        else
-            indices << j;
-    }
-    m_fig.deviceMoves = indices.size();
-    for (Axis axis : allAxes()) {
-        QList<Commanded> wanted;
-        for (const Commanded& c : m_commanded) {
-            if (c.axis == axis)
-                wanted << c;
-        }
-        QList<int> starts(wanted.size(), 0);
-        int next = 0;
-        for (int j : indices) {
-            const SimulatedMove& d = journal.at(j);
-            if (d.axis != axis)
-                continue;
-            // Commands sent before the device journaled this move, within the window.
-            const auto candidate = [&](int k) {
-                return k < wanted.size() && k < next + kMoveWindow && wanted[k].journalBefore <= j;
-            };
-            int k = next;
-            while (candidate(k) && wanted[k].steps != d.steps)
-                ++k;
-            if (next > 0 && wanted[next - 1].steps == d.steps) {
-                ++starts[next - 1]; // the previous move once more
-            } else if (candidate(k) && wanted[k].steps == d.steps) {
-                ++starts[k];
-                next = k + 1;
-            } else {
-                ++m_fig.unmatchedDeviceMoves;
-                reportUnmatched(axis, j, d, wanted, next);
-            }
-        }
-        for (int i = 0; i < wanted.size(); ++i) {
-            m_fig.hostMovesOk += wanted[i].ok ? 1 : 0;
-            m_fig.lostMoves += wanted[i].ok && starts[i] == 0 ? 1 : 0;
-            m_fig.duplicatedMoves += qMax(0, starts[i] - 1);
-            m_fig.unconfirmedMoves += !wanted[i].ok && starts[i] > 0 ? 1 : 0;
-        }
-    }
-}
-
-// STEPDECK_SOAK_VERBOSE: the first unmatched device moves with the commands around them.
-void SoakRun::reportUnmatched(Axis axis, int j, const SimulatedMove& d,
-                              const QList<Commanded>& wanted, int next)
-{
-    static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
-    if (!verbose || m_fig.unmatchedDeviceMoves > 20)
-        return;
-    QString line = QStringLiteral("unmatched: axis %1, journal %2, steps %3; commands:")
-                       .arg(axisName(axis))
-                       .arg(j)
-                       .arg(d.steps);
-    for (int i = qMax(0, next - 3); i < qMin(int(wanted.size()), next + 3); ++i)
-        line += QStringLiteral(" [%1%2 %3 %4@%5]")
-                    .arg(i == next ? QStringLiteral(">") : QString())
-                    .arg(i)
-                    .arg(wanted[i].steps)
-                    .arg(wanted[i].ok ? QStringLiteral("ok") : QStringLiteral("failed"))
-                    .arg(wanted[i].journalBefore);
-    line += QLatin1Char('\n');
-    std::fputs(qPrintable(line), stderr);
-}
 } // namespace
 
 SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed,

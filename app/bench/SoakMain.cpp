@@ -2,6 +2,7 @@
 // its own (--soak-child), so a crash of the stack under test is counted, not fatal, and a
 // run that stops making progress is killed and counted as a hang.
 #include "SoakMain.h"
+#include "MachineSoak.h"
 #include "Replug.h"
 #include "Soak.h"
 #include "model/NumberParsing.h"
@@ -23,6 +24,7 @@ struct Options
     quint32 seed = 1;
     bool json = false;
     bool child = false;
+    bool machine = false; // --soak N --machine: one machine of an E-LAB and a Nanotec
 };
 
 void print(FILE* stream, const QString& text)
@@ -58,6 +60,8 @@ bool parse(const QStringList& args, Options* o, QString* error)
             o->json = true;
         } else if (a == QLatin1String("--soak-child")) {
             o->child = true;
+        } else if (a == QLatin1String("--machine")) {
+            o->machine = true;
         } else {
             *error = QStringLiteral("unknown argument '%1'").arg(a);
             return false;
@@ -79,18 +83,21 @@ QList<const ModelInfo*> selected(const Options& o, QString* error)
 }
 
 // Runs one model's soak in a child process and reads its figures.
-SoakFigures soakInChild(const QString& program, const ModelInfo& model, const Options& o)
+// (model: nullptr for the machine soak.)
+SoakFigures soakInChild(const QString& program, const ModelInfo* model, const Options& o)
 {
     QProcess child;
     child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    child.start(program, {"--soak-child", "--soak", QString::number(o.soak), "--model", model.id,
-                          "--seed", QString::number(o.seed)});
+    QStringList args{"--soak-child", "--soak", QString::number(o.soak), "--seed",
+                     QString::number(o.seed)};
+    args << (model ? QStringList{"--model", model->id} : QStringList{"--machine"});
+    child.start(program, args);
     // Generous: a command takes well under a second even with its faults.
     const int boundMs =
         int(qMin<qint64>(std::numeric_limits<int>::max(), 60000 + qint64(o.soak) * 2000));
     const bool finished = child.waitForFinished(boundMs);
     SoakFigures fig;
-    fig.model = model.id;
+    fig.model = model ? model->id : QStringLiteral("machine");
     fig.commands = o.soak;
     fig.seed = o.seed;
     if (!finished) {
@@ -111,7 +118,15 @@ SoakFigures soakInChild(const QString& program, const ModelInfo& model, const Op
 int soak(const QString& program, const Options& o)
 {
     QString error;
-    const QList<const ModelInfo*> chosen = selected(o, &error);
+    QList<const ModelInfo*> chosen = selected(o, &error);
+    if (o.machine) {
+        if (!o.model.isEmpty()) {
+            print(stderr, QStringLiteral("stepdeck-bench: --machine soaks its own machine of an "
+                                         "E-LAB and a Nanotec; no --model with it"));
+            return 2;
+        }
+        chosen = {nullptr};
+    }
     if (chosen.isEmpty()) {
         print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
         return 2;
@@ -121,7 +136,8 @@ int soak(const QString& program, const Options& o)
             print(stderr, line);
     };
     if (o.child) { // one model, in this process; the parent reads the last line
-        const SoakFigures fig = runSoak(*chosen.first(), o.soak, o.seed, progress);
+        const SoakFigures fig = o.machine ? runMachineSoak(o.soak, o.seed, progress)
+                                          : runSoak(*chosen.first(), o.soak, o.seed, progress);
         print(stdout,
               QString::fromUtf8(QJsonDocument(fig.toJson()).toJson(QJsonDocument::Compact)));
         return 0;
@@ -129,7 +145,7 @@ int soak(const QString& program, const Options& o)
     QJsonArray all;
     bool clean = true;
     for (const ModelInfo* m : chosen) {
-        const SoakFigures fig = soakInChild(program, *m, o);
+        const SoakFigures fig = soakInChild(program, m, o);
         clean = clean && fig.clean();
         all.append(fig.toJson());
         if (!o.json)

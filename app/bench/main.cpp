@@ -184,28 +184,31 @@ int main(int argc, char** argv)
     const bool asJson = args.contains(QStringLiteral("--json"));
     for (const QString& arg : args) {
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            print(stdout, QStringLiteral(
-                              "Usage: stepdeck-bench [--json]\n"
-                              "       stepdeck-bench --soak N [--model M] [--seed S] [--json]\n"
-                              "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
-                              "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
-                              "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                              "Measures the first model with a feed stream (%1) against its "
-                              "simulator over a "
-                              "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                              "DC2 feed throughput, unpaced and paced at the line rate, and "
-                              "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                              "Figures only; takes 30-60 s.\n"
-                              "--soak N: N random commands with ~1 % injected faults (dropped, "
-                              "corrupted, delayed replies, noise, peer vanish) against every "
-                              "simulator (or M); counts crashes, hangs, axes left moving, lost and "
-                              "duplicated moves; exit 1 unless all are 0.\n"
-                              "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
-                              "-write); time until the host reports it.\n"
-                              "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
-                              "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
-                              "See docs/benchmark.md.")
-                              .arg(model ? model->displayName : QStringLiteral("none built in")));
+            print(stdout,
+                  QStringLiteral(
+                      "Usage: stepdeck-bench [--json]\n"
+                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
+                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
+                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
+                      "Measures the first model with a feed stream (%1) against its "
+                      "simulator over a "
+                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
+                      "DC2 feed throughput, unpaced and paced at the line rate, and "
+                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
+                      "Figures only; takes 30-60 s.\n"
+                      "--soak N: N random commands with ~1 % injected faults (dropped, "
+                      "corrupted, delayed replies, noise, peer vanish) against every "
+                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
+                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
+                      "machine of an E-LAB and a Nanotec simulator driven through "
+                      "Machine, faults on either link.\n"
+                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
+                      "-write); time until the host reports it.\n"
+                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
+                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
+                      "See docs/benchmark.md.")
+                      .arg(model ? model->displayName : QStringLiteral("none built in")));
             return 0;
         }
         if (arg != QLatin1String("--json")) {

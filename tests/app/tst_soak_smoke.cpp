@@ -17,6 +17,7 @@ class TestSoakSmoke : public QObject
 private Q_SLOTS:
     void initTestCase();
     void soak_fiftyCommands_noCrashHangOrAxisLeftMoving();
+    void soak_machine_noCrashHangOrAxisLeftMoving();
     void replug_everyPhase_noticedEveryTime();
     void badArguments_exitTwo_data();
     void badArguments_exitTwo();
@@ -61,6 +62,28 @@ void TestSoakSmoke::soak_fiftyCommands_noCrashHangOrAxisLeftMoving()
     QVERIFY(exitCode == 0 || exitCode == 1); // 1: a figure was not 0 (the checks above say which)
 }
 
+// The machine soak (issue 19): an E-LAB and a Nanotec simulator as one machine, driven
+// through core's Machine; moves reach both devices and nothing is left moving.
+void TestSoakSmoke::soak_machine_noCrashHangOrAxisLeftMoving()
+{
+    int exitCode = 0;
+    const QJsonObject out =
+        runJson({"--soak", "30", "--machine", "--seed", "3", "--json"}, &exitCode);
+    const QJsonArray runs = out.value("soak").toArray();
+    QCOMPARE(runs.size(), 1);
+    const QJsonObject m = runs.first().toObject();
+    QCOMPARE(m.value("model").toString(), QStringLiteral("machine"));
+    QVERIFY(m.value("sessions").toInt() > 0);
+    QVERIFY(m.value("deviceMoves").toInt() > 0);
+    QVERIFY(m.value("hostMovesOk").toInt() > 0);
+    QCOMPARE(m.value("crashes").toInt(-1), 0);
+    QCOMPARE(m.value("hangs").toInt(-1), 0);
+    QCOMPARE(m.value("axesLeftMoving").toInt(-1), 0);
+    QCOMPARE(m.value("lostMoves").toInt(-1), 0);
+    QCOMPARE(m.value("duplicatedMoves").toInt(-1), 0);
+    QCOMPARE(exitCode, 0);
+}
+
 void TestSoakSmoke::replug_everyPhase_noticedEveryTime()
 {
     int exitCode = 0;
@@ -83,6 +106,8 @@ void TestSoakSmoke::badArguments_exitTwo_data()
     QTest::newRow("count hex") << QStringList{"--soak", "0x10"};
     QTest::newRow("unknown model") << QStringList{"--soak", "5", "--model", "warp"};
     QTest::newRow("both") << QStringList{"--soak", "5", "--replug", "5"};
+    QTest::newRow("machine and model")
+        << QStringList{"--soak", "5", "--machine", "--model", "elab"};
     QTest::newRow("seed negative") << QStringList{"--replug", "1", "--seed", "-1"};
 }
 
