@@ -76,6 +76,7 @@ void Machine::destroy()
     for (auto& s : m_sessions)
         s->disconnect(this);
     m_jogSessions.clear();
+    m_targetJogs.clear(); // before the sessions they send to
     m_sessions.clear();
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));
@@ -118,12 +119,14 @@ void Machine::stop()
     // a slow link never holds back the stop of another controller.
     for (auto& s : m_sessions)
         s->stop();
+    releaseTargetJogs(); // no further jog targets (a target under way ends by itself)
 }
 
 void Machine::panic()
 {
     for (auto& s : m_sessions)
         s->panic();
+    releaseTargetJogs();
 }
 
 void Machine::watch(const QString& controllerId, ControllerSession* session)
@@ -156,6 +159,7 @@ void Machine::onLinkState(const QString& controllerId, LinkState state, const QS
 
 void Machine::stopAllBut(const ControllerSession* failed)
 {
+    releaseTargetJogs();
     for (auto& s : m_sessions) {
         if (s.get() != failed && s->linkState() == LinkState::Connected &&
             s->capabilities().stopCommand)

@@ -1,8 +1,11 @@
 #pragma once
 #include "MachineDescription.h"
 #include "controller/ControllerSession.h"
+#include "controller/TargetJogger.h"
 #include <QObject>
 #include <QSet>
+#include <QTimer>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -59,10 +62,12 @@ public:
     // caller renews them while its input is held (each controller's jog lease,
     // ControllerOptions::jogLeaseMs), so a lost input lets every lease run out together and
     // every controller ramps down. Axes not named ramp to zero. Rates above an axis'
-    // maxJogSpeed are limited to it. Refused (false, *refusal) for an unknown axis, a
-    // controller not connected, or a model that jogs by targets (laser axes: not yet).
+    // maxJogSpeed are limited to it. Controllers that jog by targets (laser axes, no stop
+    // command) get short targets one after the other (TargetJogger) while the input is
+    // renewed; without renewal no further target is sent and the one under way ends by
+    // itself. Refused (false, *refusal) for an unknown axis or a controller not connected.
     bool jog(const QMap<QString, double>& unitsPerSecond, QString* refusal);
-    void endJog(); // every controller ramps down now
+    void endJog(); // every controller ramps down now; no further jog targets
 
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
@@ -73,6 +78,9 @@ Q_SIGNALS:
     // A controller failed (link lost, a refused or failed part of a move): the others were
     // told to stop. The message names the controller.
     void controllerFailed(const QString& controllerId, const QString& message);
+    // A controller that jogs by targets refused the next target (position unknown, a soft
+    // limit, an end switch): its jog ended; the message says why.
+    void jogRefused(const QString& controllerId, const QString& message);
 
 private:
     // One controller's share of a move: sent, then (for models whose move request ends when
@@ -120,6 +128,16 @@ private:
     std::vector<std::unique_ptr<ControllerSession>> m_sessions; // description's order
     QList<PendingMove> m_moves;
     QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()
+    // Controllers that jog by targets: their jogger, released when the input's lease (the
+    // controller's jogLeaseMs) runs out without renewal.
+    struct TargetJog
+    {
+        std::unique_ptr<TargetJogger> jogger;
+        std::unique_ptr<QTimer> lease;
+    };
+    std::map<ControllerSession*, TargetJog> m_targetJogs;
+    void jogByTargets(ControllerSession* session, const AxisVelocities& stepsPerS);
+    void releaseTargetJogs();
     quint64 m_lastMove = 0;
 };
 

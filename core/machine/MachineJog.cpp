@@ -23,10 +23,6 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
         if (s->linkState() != LinkState::Connected)
             return refuse(
                 tr("%1: controller \"%2\" is not connected").arg(axis->name, axis->controller));
-        if (s->capabilities().jogByTargets && it.value() != 0)
-            return refuse(tr("%1: controller \"%2\" jogs by targets, which a machine cannot "
-                             "jog yet")
-                              .arg(axis->name, axis->controller));
         if (!std::isfinite(it.value()))
             return refuse(tr("%1: the jog rate is not a finite number").arg(axis->name));
         double rate = it.value();
@@ -42,8 +38,11 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
                                        [](double rate) { return rate != 0; });
         if (moves)
             m_jogSessions.insert(s);
-        if (m_jogSessions.contains(s) && s->linkState() == LinkState::Connected &&
-            !s->capabilities().jogByTargets)
+        if (!m_jogSessions.contains(s) || s->linkState() != LinkState::Connected)
+            continue;
+        if (s->capabilities().jogByTargets)
+            jogByTargets(s, it.value());
+        else
             s->setJogVelocity(it.value());
     }
     return true;
@@ -51,9 +50,40 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
 
 void Machine::endJog()
 {
-    for (ControllerSession* s : std::as_const(m_jogSessions))
-        s->endJog();
+    releaseTargetJogs();
+    for (ControllerSession* s : std::as_const(m_jogSessions)) {
+        if (!s->capabilities().jogByTargets)
+            s->endJog();
+    }
     m_jogSessions.clear();
+}
+
+// A controller without a jog command: short targets while the input is renewed (the lease
+// that a jog command's controller keeps itself is kept here).
+void Machine::jogByTargets(ControllerSession* session, const AxisVelocities& stepsPerS)
+{
+    TargetJog& jog = m_targetJogs[session];
+    if (!jog.jogger) {
+        jog.jogger = std::make_unique<TargetJogger>(session);
+        connect(jog.jogger.get(), &TargetJogger::refused, this,
+                [this, session](const QString& why) {
+                    Q_EMIT jogRefused(controllerIdOf(session), why);
+                });
+        jog.lease = std::make_unique<QTimer>();
+        jog.lease->setSingleShot(true);
+        TargetJogger* jogger = jog.jogger.get();
+        connect(jog.lease.get(), &QTimer::timeout, jogger, &TargetJogger::release);
+    }
+    jog.lease->start(qMax(1, session->spec().options.jogLeaseMs));
+    jog.jogger->setVelocities(stepsPerS);
+}
+
+void Machine::releaseTargetJogs()
+{
+    for (auto& [session, jog] : m_targetJogs) {
+        jog.lease->stop();
+        jog.jogger->release();
+    }
 }
 
 } // namespace stepdeck::machine

@@ -1,6 +1,6 @@
 #include "JogController.h"
+#include "controller/TargetJogger.h"
 #include "jog/JogInputSource.h"
-#include "jog/TargetJogger.h"
 #include "machine/MachineContext.h"
 #include <QGuiApplication>
 #include <QSettings>

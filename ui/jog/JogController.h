@@ -5,11 +5,14 @@
 #include <QPointer>
 #include <QTimer>
 
+namespace stepdeck {
+class TargetJogger;
+}
+
 namespace stepdeck::ui {
 
 class JogInputSource;
 class MachineContext;
-class TargetJogger;
 
 // Combines every jog input into per-axis velocities and sends them to the controller
 // session. The core's jog lease (ControllerOptions::jogLeaseMs) is renewed only with proof:

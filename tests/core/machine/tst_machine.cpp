@@ -5,6 +5,7 @@
 #include "ModelBench.h"
 #include "machine/Machine.h"
 #include "protocols/Registry.h"
+#include "protocols/laser/LaserAxisSimulator.h"
 #include "sim/PtyEndpoint.h"
 #include <QSignalSpy>
 #include <QThread>
@@ -155,6 +156,7 @@ private Q_SLOTS:
     void jog_xAndA_inputLost_bothLeasesRunOut();
     void jog_stopDuringJogOfXAndA_bothDevicesGetTheirStop();
     void jog_unknownAxis_refusedNothingJogs();
+    void jog_laserAxisByTargets_withElab_oneInputEndsBoth();
     void create_invalidDescription_refusedWithTheField();
 
 private:
@@ -341,6 +343,67 @@ void TestMachine::jog_unknownAxis_refusedNothingJogs()
     QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
     QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
     QVERIFY(still(*m_elab) && still(*m_nanotec));
+}
+
+// A controller without a jog command (laser motor axes) in a machine: while the input is
+// renewed its axis gets short targets one after the other; when the renewals stop (the input
+// is lost), no further target is sent and the board's lease runs out too (issue 19).
+void TestMachine::jog_laserAxisByTargets_withElab_oneInputEndsBoth()
+{
+    m_machine.reset(); // this test's machine: the table's board and a laser marker's axes
+    Device laser("laser-axis");
+    laser.probe([&] {
+        static_cast<laser::LaserAxisSimulator*>(laser.sim())->setSpeed(2000);
+        return true;
+    });
+    MachineDescription d;
+    d.name = QStringLiteral("Table and marker");
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}},
+                     {"marker", "laser-axis", laser.path(), {}, {}}};
+    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              axis("U", "marker", Axis::X, AxisUnit::Step, 1)};
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    m_machine->open();
+    ControllerSession* marker = m_machine->session("marker");
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    writeElabSetup();
+    // The laser axes home first after power-up (their jog targets need a known position).
+    QSignalSpy results(marker, &ControllerSession::requestFinished);
+    const RequestId home = marker->reference({{Axis::X, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(results.cbegin(), results.cend(),
+                                         [home](const QList<QVariant>& args) {
+                                             const auto r = args.at(0).value<CommandResult>();
+                                             return r.id == home && r.ok();
+                                         }),
+                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(laser), 10000);
+    const int homed = acceptedCount(laser);
+    const qint64 start = positionX(laser);
+
+    QTimer input; // the operator's held input, renewed every 100 ms
+    input.setInterval(100);
+    QString refusal;
+    connect(&input, &QTimer::timeout, this, [&] {
+        QVERIFY2(m_machine->jog({{"X", 2.0}, {"U", 1000.0}}, &refusal), qPrintable(refusal));
+    });
+    input.start();
+    QVERIFY(m_machine->jog({{"X", 2.0}, {"U", 1000.0}}, &refusal));
+    // Several short targets (200 units each, 0.2 s at 1000/s) reach the laser axis, one after
+    // the other, while the board jogs X.
+    QTRY_VERIFY_WITH_TIMEOUT(acceptedCount(laser) >= homed + 3 && moving(*m_elab), 10000);
+    input.stop(); // the input is lost: nobody renews
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab) && still(laser), 10000);
+    const int sent = acceptedCount(laser);
+    QVERIFY(positionX(laser) > start);
+    for (const SimulatedMove& m :
+         laser.probe([&] { return laser.sim()->acceptedMoves(); }).mid(homed))
+        QVERIFY2(m.steps > 0 && m.steps <= 200, qPrintable(QString::number(m.steps)));
+    // No further target: nothing more finishes on the marker's link and nothing reaches it.
+    QSignalSpy later(marker, &ControllerSession::requestFinished);
+    QVERIFY(!later.wait(700));
+    QCOMPARE(acceptedCount(laser), sent);
 }
 
 void TestMachine::create_invalidDescription_refusedWithTheField()

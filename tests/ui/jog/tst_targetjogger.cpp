@@ -6,7 +6,7 @@
 #include "jog/JogController.h"
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
-#include "jog/TargetJogger.h"
+#include "controller/TargetJogger.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "safety/SafetyBar.h"
 #include <QLabel>
@@ -114,12 +114,12 @@ bool TestTargetJogger::simMoving()
 
 void TestTargetJogger::chunkSteps_shortAndNeverZero()
 {
-    QCOMPARE(ui::TargetJogger::chunkSteps(1000), qint64(200));
-    QCOMPARE(ui::TargetJogger::chunkSteps(-1000), qint64(-200));
-    QCOMPARE(ui::TargetJogger::chunkSteps(1), qint64(1));
-    QCOMPARE(ui::TargetJogger::chunkSteps(-0.1), qint64(-1));
-    QCOMPARE(ui::TargetJogger::chunkSteps(0), qint64(0));
-    QCOMPARE(ui::TargetJogger::chunkSteps(qQNaN()), qint64(0));
+    QCOMPARE(TargetJogger::chunkSteps(1000), qint64(200));
+    QCOMPARE(TargetJogger::chunkSteps(-1000), qint64(-200));
+    QCOMPARE(TargetJogger::chunkSteps(1), qint64(1));
+    QCOMPARE(TargetJogger::chunkSteps(-0.1), qint64(-1));
+    QCOMPARE(TargetJogger::chunkSteps(0), qint64(0));
+    QCOMPARE(TargetJogger::chunkSteps(qQNaN()), qint64(0));
 }
 
 void TestTargetJogger::note_shownForLaserAxesOnly()

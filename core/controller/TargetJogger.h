@@ -2,7 +2,7 @@
 #include "controller/ControllerSession.h"
 #include <QObject>
 
-namespace stepdeck::ui {
+namespace stepdeck {
 
 // Jog for controllers without a jog command (Capabilities::jogByTargets, laser motor axes):
 // while an input is deflected, each axis gets a short relative target -- the distance the
@@ -36,4 +36,4 @@ private:
     RequestId m_inFlight = 0;
 };
 
-} // namespace stepdeck::ui
+} // namespace stepdeck

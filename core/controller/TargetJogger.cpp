@@ -1,7 +1,7 @@
 #include "TargetJogger.h"
 #include <QtMath>
 
-namespace stepdeck::ui {
+namespace stepdeck {
 
 TargetJogger::TargetJogger(ControllerSession* session, QObject* parent)
     : QObject(parent), m_session(session)
@@ -75,4 +75,4 @@ void TargetJogger::onResult(const CommandResult& result)
     sendNext();
 }
 
-} // namespace stepdeck::ui
+} // namespace stepdeck
