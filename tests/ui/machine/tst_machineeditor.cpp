@@ -32,6 +32,8 @@ private Q_SLOTS:
     void save_invalidMachine_isRefused();
     void open_invalidFile_keepsMachineAndNamesField();
     void controllerId_renamed_axesFollow();
+    void removeAxis_removesTheRowBeingEdited();
+    void removeController_removesTheRowBeingEdited();
     void startFromController_isSingleControllerMachine();
     void close_withUnsavedChanges_asksFirst();
     void message_longError_neverReflows();
@@ -199,7 +201,7 @@ void TestMachineEditor::typedValue_fixedAgain_clearsMark()
 void TestMachineEditor::save_invalidMachine_isRefused()
 {
     auto editor = editorWith(QStringLiteral("nanotec-two-buses.machine.json"));
-    typeInto(editor->axesTable()->cell(0, "stepsPerUnit"), QStringLiteral("inf"));
+    typeInto(editor->axesTable()->cell(0, "stepsPerUnit"), QStringLiteral("-2"));
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("refused.machine.json"));
     QSignalSpy saved(editor.get(), &MachineEditor::saved);
@@ -243,6 +245,44 @@ void TestMachineEditor::controllerId_renamed_axesFollow()
     QVERIFY2(machine, qPrintable(editor->messageText()));
     QCOMPARE(machine->axis(QStringLiteral("A"))->controller, QStringLiteral("turntable"));
     QCOMPARE(machine->axis(QStringLiteral("X"))->controller, QStringLiteral("table"));
+}
+
+void TestMachineEditor::removeAxis_removesTheRowBeingEdited()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    editor->show();
+    QVERIFY(QTest::qWaitForWindowActive(editor.get()));
+    QWidget* cell = editor->axesTable()->cell(2, "stepsPerUnit");
+    cell->setFocus(); // the operator works in Z's row, then presses "Remove axis"
+    QTRY_VERIFY(cell->hasFocus());
+    QPushButton* remove = nullptr;
+    for (QPushButton* b : editor->findChildren<QPushButton*>()) {
+        if (b->text() == QStringLiteral("Remove axis"))
+            remove = b;
+    }
+    QVERIFY(remove);
+    QTest::mouseClick(remove, Qt::LeftButton);
+    const auto machine = editor->machine();
+    QVERIFY2(machine, qPrintable(editor->messageText()));
+    QCOMPARE(machine->axes.size(), 3);
+    QVERIFY(!machine->axis(QStringLiteral("Z")));
+    QVERIFY(machine->axis(QStringLiteral("A")));
+    QVERIFY(editor->isModified());
+}
+
+void TestMachineEditor::removeController_removesTheRowBeingEdited()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    editor->show();
+    QVERIFY(QTest::qWaitForWindowActive(editor.get()));
+    QWidget* cell = editor->controllersTable()->cell(1, "port");
+    cell->setFocus();
+    QTRY_VERIFY(cell->hasFocus());
+    editor->controllersTable()->removeCurrentController();
+    QCOMPARE(editor->controllersTable()->ids(), QStringList{QStringLiteral("table")});
+    // Axis A still names the removed controller: the validator says so, at its cell.
+    QCOMPARE(editor->error().field, QStringLiteral("axes[3].controller"));
+    QCOMPARE(editor->markedCells(), QList<QWidget*>{editor->axesTable()->cell(3, "controller")});
 }
 
 void TestMachineEditor::startFromController_isSingleControllerMachine()

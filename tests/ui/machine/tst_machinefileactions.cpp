@@ -30,6 +30,7 @@ private Q_SLOTS:
     void newMachine_connected_startsFromThatController();
     void newMachine_notConnected_opensValidNewMachine();
     void editorSaved_isRemembered();
+    void editorOpen_escInACell_stillStops();
 
 private:
     static ui::MachineFileActions* actionsOf(ui::MainWindow* window)
@@ -173,6 +174,29 @@ void TestMachineFileActions::editorSaved_isRemembered()
     QCOMPARE(recent::list().first(), path);
     editor->close();
     QTRY_VERIFY(!actions->editor());
+}
+
+void TestMachineFileActions::editorOpen_escInACell_stillStops()
+{
+    // The editor is a window of its own: Esc (STOP) and F1 (PANIC) must reach the machine
+    // from it as from the main window (issue 7, rule 5).
+    UiFixture f;
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    actions->setCurrentMachine(example(QStringLiteral("emis-xyzu.machine.json")));
+    actions->editAction()->trigger();
+    ui::MachineEditor* editor = actions->editor();
+    QVERIFY(editor);
+    QVERIFY(QTest::qWaitForWindowActive(editor));
+    QWidget* cell = editor->axesTable()->cell(0, "stepsPerUnit");
+    cell->setFocus();
+    QTRY_VERIFY(cell->hasFocus());
+    QSignalSpy stop(f.window->stopAction(), &QAction::triggered);
+    QSignalSpy panic(f.window->panicAction(), &QAction::triggered);
+    QTest::keyClick(cell, Qt::Key_Escape);
+    QCOMPARE(stop.size(), 1);
+    QTest::keyClick(cell, Qt::Key_F1);
+    QCOMPARE(panic.size(), 1);
+    editor->close();
 }
 
 QTEST_MAIN(TestMachineFileActions)
