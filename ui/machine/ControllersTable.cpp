@@ -72,10 +72,13 @@ void ControllersTable::addRow(const MachineController& c)
         id->setProperty(kLastId, text);
         Q_EMIT idRenamed(from, text);
         Q_EMIT idsChanged();
+        Q_EMIT edited(); // again: the axes follow the new id only now
     });
     QComboBox* model = addComboCell(row, "model", 250);
-    for (const ModelInfo& m : models())
+    for (const ModelInfo& m : models()) {
         model->addItem(modelDisplayName(m), m.id);
+        model->setItemData(model->count() - 1, modelDisplayName(m), Qt::ToolTipRole);
+    }
     model->setCurrentIndex(model->findData(c.modelId));
     addLineCell(row, "port", c.port, 170)->setPlaceholderText(tr("/dev/ttyUSB0, tcp://…, sim"));
     QLineEdit* bus = addLineCell(row, "axes", busAddressText(c.busAddresses), 120);

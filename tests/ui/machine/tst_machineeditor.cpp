@@ -241,6 +241,8 @@ void TestMachineEditor::controllerId_renamed_axesFollow()
 {
     auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
     typeInto(editor->controllersTable()->cell(1, "id"), QStringLiteral("turntable"));
+    QVERIFY2(editor->error().field.isEmpty(), qPrintable(editor->messageText()));
+    QVERIFY(editor->markedCells().isEmpty());
     const auto machine = editor->machine();
     QVERIFY2(machine, qPrintable(editor->messageText()));
     QCOMPARE(machine->axis(QStringLiteral("A"))->controller, QStringLiteral("turntable"));
