@@ -18,8 +18,11 @@ using machine::MachineFile;
 using machine::MachineFileError;
 
 namespace {
-// The look of an invalid cell, as the setup page marks an invalid field.
+// The look of an invalid cell, as the setup page marks an invalid field; a choice gets a
+// border too (its background alone hardly shows).
 const QString kInvalidSheet = QStringLiteral("background: #ffcdd2; color: #8e0000;");
+const QString kInvalidChoiceSheet =
+    QStringLiteral("QComboBox { background: #ffcdd2; color: #8e0000; border: 2px solid #c62828; }");
 
 // A row of a title and buttons above a table.
 QHBoxLayout* titleRow(const QString& title, const QList<QPushButton*>& buttons)
@@ -46,11 +49,12 @@ MachineEditor::MachineEditor(QWidget* parent) : QWidget(parent, Qt::Window)
     setMachine(empty);
 }
 
-MachineEditor::MachineEditor(const ModelInfo& model, const QString& port, QWidget* parent)
+MachineEditor::MachineEditor(const ModelInfo& model, const QString& port,
+                             std::optional<LineSettings::ResetLine> resetLine, QWidget* parent)
     : QWidget(parent, Qt::Window)
 {
     build();
-    startFromController(model, port);
+    startFromController(model, port, resetLine);
 }
 
 void MachineEditor::build()
@@ -126,9 +130,13 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     setModified(false);
 }
 
-void MachineEditor::startFromController(const ModelInfo& model, const QString& port)
+void MachineEditor::startFromController(const ModelInfo& model, const QString& port,
+                                        std::optional<LineSettings::ResetLine> resetLine)
 {
-    setMachine(MachineDescription::singleController(model, port));
+    MachineDescription machine = MachineDescription::singleController(model, port);
+    if (model.capabilities.resetLine)
+        machine.controllers.first().resetLine = resetLine;
+    setMachine(machine);
     setModified(true); // not saved anywhere yet
 }
 
@@ -192,7 +200,7 @@ void MachineEditor::mark(const QList<QWidget*>& cells)
     m_marked.clear();
     for (QWidget* w : cells) {
         if (w != m_controllers && w != m_axes) // a whole table is named by the message
-            w->setStyleSheet(kInvalidSheet);
+            w->setStyleSheet(w->inherits("QComboBox") ? kInvalidChoiceSheet : kInvalidSheet);
         m_marked << w;
     }
 }

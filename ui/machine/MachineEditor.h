@@ -24,11 +24,15 @@ class MachineEditor : public QWidget
 public:
     // An empty new machine (one simulated controller of the first model, no axes yet).
     explicit MachineEditor(QWidget* parent = nullptr);
-    // A new machine of the controller connected now: MachineDescription::singleController.
-    MachineEditor(const ModelInfo& model, const QString& port, QWidget* parent = nullptr);
+    // A new machine of the controller connected now: MachineDescription::singleController,
+    // with the reset line it is connected with (models that have one).
+    MachineEditor(const ModelInfo& model, const QString& port,
+                  std::optional<LineSettings::ResetLine> resetLine = std::nullopt,
+                  QWidget* parent = nullptr);
 
     void setMachine(const machine::MachineDescription& machine, const QString& path = {});
-    void startFromController(const ModelInfo& model, const QString& port);
+    void startFromController(const ModelInfo& model, const QString& port,
+                             std::optional<LineSettings::ResetLine> resetLine = std::nullopt);
     // Loads a machine file into the editor; false (and the reason shown) when it is not one.
     bool openFile(const QString& path);
     // Writes the machine (MachineDescription::toJson) to path; refused while it is invalid.

@@ -3,6 +3,7 @@
 #include "MachineEditor.h"
 #include "RecentMachines.h"
 #include "common/Dialogs.h"
+#include "connection/ConnectionSettings.h"
 #include "machine/MachineFile.h"
 #include <QAction>
 #include <QFileInfo>
@@ -72,7 +73,8 @@ void MachineFileActions::newMachine()
     // "It can start from the controller that is connected now" (issue 19).
     const ModelInfo* model = m_context ? m_context->model() : nullptr;
     if (model && m_context->isConnected())
-        showEditor(new MachineEditor(*model, m_context->portName(), m_window));
+        showEditor(new MachineEditor(*model, m_context->portName(),
+                                     connectionsettings::resetLine(model->id), m_window));
     else
         showEditor(new MachineEditor(m_window));
 }

@@ -296,6 +296,13 @@ void TestMachineEditor::startFromController_isSingleControllerMachine()
              MachineDescription::singleController(*nanotec, QStringLiteral("/dev/ttyUSB3")));
     QVERIFY(editor.isModified()); // saved nowhere yet
     QVERIFY(editor.path().isEmpty());
+    // A reset line is kept for models that have one, left out for the others.
+    const ModelInfo* elab = findModel(QStringLiteral("elab"));
+    editor.startFromController(*elab, QStringLiteral("sim"), LineSettings::ResetLine::Dtr);
+    QCOMPARE(editor.machine()->controllers.first().resetLine, LineSettings::ResetLine::Dtr);
+    editor.startFromController(*nanotec, QStringLiteral("sim"), LineSettings::ResetLine::Dtr);
+    QVERIFY2(editor.machine(), qPrintable(editor.messageText()));
+    QCOMPARE(editor.machine()->controllers.first().resetLine, std::nullopt);
 }
 
 void TestMachineEditor::close_withUnsavedChanges_asksFirst()

@@ -3,6 +3,7 @@
 // the main window's File menu saying what the validator found in an opened file.
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
+#include "connection/ConnectionSettings.h"
 #include "machine/MachineFileActions.h"
 #include "machine/RecentMachines.h"
 #include "messages/StatusMessages.h"
@@ -126,6 +127,7 @@ void TestMachineFileActions::openRequested_windowShowsValidationResult()
 
 void TestMachineFileActions::newMachine_connected_startsFromThatController()
 {
+    ui::connectionsettings::setResetLine(QStringLiteral("elab"), LineSettings::ResetLine::Dtr);
     UiFixture f;
     QVERIFY(f.connectSim());
     ui::MachineFileActions* actions = actionsOf(f.window.get());
@@ -135,7 +137,10 @@ void TestMachineFileActions::newMachine_connected_startsFromThatController()
     QVERIFY(editor->isVisible());
     QVERIFY(!editor->isModal());
     const ModelInfo* elab = findModel(QStringLiteral("elab"));
-    QCOMPARE(editor->machine(), MachineDescription::singleController(*elab, QStringLiteral("sim")));
+    MachineDescription expected =
+        MachineDescription::singleController(*elab, QStringLiteral("sim"));
+    expected.controllers[0].resetLine = LineSettings::ResetLine::Dtr; // as connected
+    QCOMPARE(editor->machine(), expected);
     QVERIFY(!editor->close()); // unsaved: asks first
     editor->pendingPrompt()->button(QMessageBox::Discard)->click();
     QTRY_VERIFY(!actions->editor());
