@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QLineEdit>
 #include <QtTest>
+#include <memory>
 
 namespace stepdeck::test {
 
@@ -24,6 +25,15 @@ inline QString example(const QString& name)
 inline QStringList exampleFiles()
 {
     return QDir(exampleDir()).entryList({QStringLiteral("*.machine.json")}, QDir::Files);
+}
+
+// Opens a shipped example in a new editor.
+inline std::unique_ptr<ui::MachineEditor> editorWith(const QString& exampleName)
+{
+    auto editor = std::make_unique<ui::MachineEditor>();
+    if (!editor->openFile(example(exampleName)))
+        qWarning("%s", qPrintable(editor->messageText()));
+    return editor;
 }
 
 // Replaces a line edit's text by typing (textEdited fires, as for a person).
