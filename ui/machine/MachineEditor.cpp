@@ -108,6 +108,8 @@ QWidget* MachineEditor::buildButtons()
     save->setObjectName(QStringLiteral("saveButton"));
     auto* saveAs = new QPushButton(tr("Save as\u2026"), box);
     auto* close = new QPushButton(tr("Close"), box);
+    open->setShortcut(QKeySequence::Open); // in this window only: STOP keeps Esc
+    save->setShortcut(QKeySequence::Save);
     connect(open, &QPushButton::clicked, this, &MachineEditor::chooseFile);
     connect(save, &QPushButton::clicked, this, &MachineEditor::save);
     connect(saveAs, &QPushButton::clicked, this, &MachineEditor::saveAs);
