@@ -81,11 +81,15 @@ void AxesTable::addRow(const MachineAxis& a)
         controller->addItem(a.controller);
     controller->setCurrentText(a.controller);
     QComboBox* axis = addComboCell(row, "axis", 50);
-    for (Axis each : allAxes())
-        axis->addItem(axisName(each), int(each));
-    axis->setCurrentIndex(axis->findData(int(a.axis)));
+    axis->addItem(axisName(a.axis), int(a.axis));
+    refreshAxisChoices(row);
+    connect(controller, &QComboBox::currentIndexChanged, this,
+            [this, controller] { refreshAxisChoices(rowOf(controller, "controller")); });
     for (QComboBox* combo : {name, controller, axis})
         connect(combo, &QComboBox::currentIndexChanged, this, &EditorTable::edited);
+    // A choice no longer offered leaves the list once another is chosen.
+    connect(axis, &QComboBox::currentIndexChanged, this,
+            [this, axis] { refreshAxisChoices(rowOf(axis, "axis")); });
     addUnitCells(row, a);
     addReferenceCells(row, a);
 }
@@ -176,6 +180,38 @@ void AxesTable::setControllerIds(const QStringList& ids)
             combo->addItem(current); // kept: the validator names it
         combo->setCurrentText(current);
     }
+}
+
+void AxesTable::setControllerAxes(const QMap<QString, QList<Axis>>& axes)
+{
+    m_controllerAxes = axes;
+    for (int r = 0; r < rowCount(); ++r)
+        refreshAxisChoices(r);
+}
+
+void AxesTable::refreshAxisChoices(int row)
+{
+    auto* combo = as<QComboBox>(cell(row, "axis"));
+    if (!combo)
+        return;
+    const QString controller = as<QComboBox>(cell(row, "controller"))->currentText();
+    const QList<Axis> offered = m_controllerAxes.value(controller, allAxes());
+    const int current = combo->currentData().toInt();
+    QList<int> wanted;
+    for (Axis each : allAxes()) {
+        if (offered.contains(each) || int(each) == current)
+            wanted << int(each);
+    }
+    QList<int> shown;
+    for (int i = 0; i < combo->count(); ++i)
+        shown << combo->itemData(i).toInt();
+    if (shown == wanted)
+        return; // unchanged: an open list stays as it is
+    const QSignalBlocker block(combo);
+    combo->clear();
+    for (int each : wanted)
+        combo->addItem(axisName(Axis(each)), each);
+    combo->setCurrentIndex(combo->findData(current));
 }
 
 void AxesTable::renameController(const QString& from, const QString& to)

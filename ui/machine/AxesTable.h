@@ -21,6 +21,9 @@ public:
     // The controllers the controller column offers; cells keep their choice.
     void setControllerIds(const QStringList& ids);
     void renameController(const QString& from, const QString& to);
+    // The axes each controller has (ControllersTable::controllerAxes): the axis column offers
+    // those of the row's controller; a choice that is no longer offered stays, marked invalid.
+    void setControllerAxes(const QMap<QString, QList<Axis>>& axes);
 
     void addAxis(); // the next free name on the first controller, counted in steps
     void removeCurrentAxis();
@@ -29,9 +32,11 @@ private:
     void addRow(const machine::MachineAxis& a);
     void addUnitCells(int row, const machine::MachineAxis& a);
     void addReferenceCells(int row, const machine::MachineAxis& a);
+    void refreshAxisChoices(int row);
     bool readRow(int row, machine::MachineAxis* a, machine::MachineFileError* error) const;
 
     QStringList m_controllerIds;
+    QMap<QString, QList<Axis>> m_controllerAxes;
 };
 
 } // namespace stepdeck::ui

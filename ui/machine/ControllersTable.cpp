@@ -97,15 +97,6 @@ void ControllersTable::addRow(const MachineController& c)
     connect(reset, &QComboBox::currentIndexChanged, this, &EditorTable::edited);
 }
 
-int ControllersTable::rowOf(const QWidget* cellWidget, const QString& key) const
-{
-    for (int r = 0; r < rowCount(); ++r) {
-        if (cell(r, key) == cellWidget)
-            return r;
-    }
-    return -1;
-}
-
 void ControllersTable::applyModel(int row)
 {
     const auto* model = qobject_cast<QComboBox*>(cell(row, "model"));
@@ -150,6 +141,23 @@ QStringList ControllersTable::ids() const
     for (int r = 0; r < rowCount(); ++r)
         list << qobject_cast<QLineEdit*>(cell(r, "id"))->text().trimmed();
     return list;
+}
+
+QMap<QString, QList<Axis>> ControllersTable::controllerAxes() const
+{
+    QMap<QString, QList<Axis>> axes;
+    for (int r = 0; r < rowCount(); ++r) {
+        const QString id = qobject_cast<QLineEdit*>(cell(r, "id"))->text().trimmed();
+        const ModelInfo* model =
+            findModel(qobject_cast<QComboBox*>(cell(r, "model"))->currentData().toString());
+        QMap<Axis, int> addresses;
+        if (parseBusAddresses(qobject_cast<QLineEdit*>(cell(r, "axes"))->text(), &addresses) &&
+            !addresses.isEmpty())
+            axes.insert(id, addresses.keys());
+        else if (model)
+            axes.insert(id, model->capabilities.axes);
+    }
+    return axes;
 }
 
 void ControllersTable::addController()

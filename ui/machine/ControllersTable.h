@@ -17,6 +17,8 @@ public:
     // (the rest is MachineFile::validate's).
     bool read(QList<machine::MachineController>* out, machine::MachineFileError* error) const;
     QStringList ids() const;
+    // The controller axes of each id: the keys of its bus address map, else its model's axes.
+    QMap<QString, QList<Axis>> controllerAxes() const;
 
     void addController(); // a new row with an unused id, the first model, port "sim"
     void removeCurrentController();
@@ -29,7 +31,6 @@ Q_SIGNALS:
 private:
     void addRow(const machine::MachineController& c);
     void applyModel(int row); // enables the cells the row's model can use
-    int rowOf(const QWidget* cellWidget, const QString& key) const;
 };
 
 // "X=1 Y=2" <-> bus address map; false when the text is not such a list.

@@ -103,6 +103,15 @@ void EditorTable::removeRowAndNotify(int row)
     Q_EMIT edited();
 }
 
+int EditorTable::rowOf(const QWidget* cellWidget, const QString& key) const
+{
+    for (int r = 0; r < rowCount(); ++r) {
+        if (cell(r, key) == cellWidget)
+            return r;
+    }
+    return -1;
+}
+
 bool readDecimal(const QLineEdit* edit, const QString& path, bool optional,
                  std::optional<double>* value, machine::MachineFileError* error)
 {

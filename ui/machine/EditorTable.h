@@ -39,6 +39,8 @@ protected:
     // Widens the column of key to fit its widest cell widget (set when a row is built).
     void fitColumn(const QString& key, int width);
     void removeRowAndNotify(int row);
+    // The row whose cell of key is cellWidget (-1: none); rows move when others are removed.
+    int rowOf(const QWidget* cellWidget, const QString& key) const;
 
 private:
     QStringList m_keys;

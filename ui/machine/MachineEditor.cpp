@@ -91,7 +91,10 @@ void MachineEditor::build()
     layout->addWidget(buildButtons());
 
     connect(m_name, &QLineEdit::textEdited, this, &MachineEditor::revalidate);
-    connect(m_controllers, &EditorTable::edited, this, &MachineEditor::revalidate);
+    connect(m_controllers, &EditorTable::edited, this, [this] {
+        m_axes->setControllerAxes(m_controllers->controllerAxes());
+        revalidate();
+    });
     connect(m_axes, &EditorTable::edited, this, &MachineEditor::revalidate);
     connect(m_controllers, &ControllersTable::idRenamed, m_axes, &AxesTable::renameController);
     connect(m_controllers, &ControllersTable::idsChanged, this,
@@ -128,6 +131,7 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     m_axes->setAxes({}); // first: the new controllers' ids go to no old row
     m_controllers->setControllers(machine.controllers);
     m_axes->setAxes(machine.axes);
+    m_axes->setControllerAxes(m_controllers->controllerAxes());
     revalidate();
     setModified(false);
 }

@@ -22,6 +22,7 @@ private Q_SLOTS:
     void typedValue_invalid_namesFieldAndMarksCell();
     void typedValue_fixedAgain_clearsMark();
     void controllerId_renamed_axesFollow();
+    void axisChoices_areTheControllersAxes();
     void removeAxis_removesTheRowBeingEdited();
     void removeController_removesTheRowBeingEdited();
     void message_longError_neverReflows();
@@ -62,9 +63,10 @@ void TestMachineEditor::typedValue_invalid_namesFieldAndMarksCell_data()
     QTest::newRow("duplicate name") << "axes" << 1 << "name"
                                     << "X"
                                     << "axes[1].name" << QStringList{"name"};
-    QTest::newRow("axis not on bus") << "axes" << 3 << "axis"
-                                     << "Y"
-                                     << "axes[3].axis" << QStringList{"axis"};
+    // A on the table's X, which X drives already: the axis cell is marked, not the controller.
+    QTest::newRow("controller axis taken") << "axes" << 3 << "controller"
+                                           << "table"
+                                           << "axes[3].axis" << QStringList{"axis"};
     QTest::newRow("axis twice") << "axes" << 1 << "axis"
                                 << "X"
                                 << "axes[1].axis" << QStringList{"axis"};
@@ -143,6 +145,32 @@ void TestMachineEditor::controllerId_renamed_axesFollow()
     QVERIFY2(machine, qPrintable(editor->messageText()));
     QCOMPARE(machine->axis(QStringLiteral("A"))->controller, QStringLiteral("turntable"));
     QCOMPARE(machine->axis(QStringLiteral("X"))->controller, QStringLiteral("table"));
+}
+
+void TestMachineEditor::axisChoices_areTheControllersAxes()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    auto choices = [&](int row) {
+        auto* combo = qobject_cast<QComboBox*>(editor->axesTable()->cell(row, "axis"));
+        QStringList items;
+        for (int i = 0; i < combo->count(); ++i)
+            items << combo->itemText(i);
+        return items;
+    };
+    QCOMPARE(choices(0), (QStringList{"X", "Y", "Z"})); // the E-LAB's axes
+    QCOMPARE(choices(3), QStringList{"X"});             // the Nanotec bus map X=1
+    typeInto(editor->controllersTable()->cell(1, "axes"), QStringLiteral("X=1 Z=3"));
+    QCOMPARE(choices(3), (QStringList{"X", "Z"}));
+    choose(editor->axesTable()->cell(3, "axis"), QStringLiteral("Z"));
+    QVERIFY2(editor->machine(), qPrintable(editor->messageText()));
+    QCOMPARE(editor->machine()->axis(QStringLiteral("A"))->axis, Axis::Z);
+    // Z leaves the map: the choice stays, marked, until the operator picks another.
+    typeInto(editor->controllersTable()->cell(1, "axes"), QStringLiteral("X=1"));
+    QCOMPARE(choices(3), (QStringList{"X", "Z"}));
+    QCOMPARE(editor->error().field, QStringLiteral("axes[3].axis"));
+    choose(editor->axesTable()->cell(3, "axis"), QStringLiteral("X"));
+    QVERIFY(editor->error().field.isEmpty());
+    QCOMPARE(choices(3), QStringList{"X"});
 }
 
 void TestMachineEditor::removeAxis_removesTheRowBeingEdited()
