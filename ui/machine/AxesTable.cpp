@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QLocale>
+#include <QSet>
 #include <QSpinBox>
 
 namespace stepdeck::ui {
@@ -30,6 +31,23 @@ QString numberText(double value)
 QString optionalText(const std::optional<double>& value)
 {
     return value ? numberText(*value) : QString();
+}
+
+// The first controller axis that drives no machine axis yet ("<id>/<axis>" in used), in the
+// order of the controllers; false (and nothing changed) when every one is taken.
+bool firstFreeAxis(const QStringList& ids, const QMap<QString, QList<Axis>>& axes,
+                   const QSet<QString>& used, QString* id, Axis* axis)
+{
+    for (const QString& each : ids) {
+        for (Axis candidate : axes.value(each)) {
+            if (!used.contains(each + QLatin1Char('/') + axisName(candidate))) {
+                *id = each;
+                *axis = candidate;
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 template <typename T> T* as(QWidget* w)
@@ -229,18 +247,20 @@ void AxesTable::addAxis()
 {
     MachineAxis a;
     QStringList names;
-    for (int r = 0; r < rowCount(); ++r)
+    QSet<QString> used; // "<controller>/<axis>"
+    for (int r = 0; r < rowCount(); ++r) {
         names << as<QComboBox>(cell(r, "name"))->currentText();
-    for (const QString& name : kNames) {
-        if (!names.contains(name)) {
-            a.name = name;
-            break;
-        }
+        used << as<QComboBox>(cell(r, "controller"))->currentText() + QLatin1Char('/') +
+                    as<QComboBox>(cell(r, "axis"))->currentText();
     }
-    if (a.name.isEmpty())
+    const auto freeName = std::find_if(kNames.cbegin(), kNames.cend(),
+                                       [&](const QString& n) { return !names.contains(n); });
+    if (freeName == kNames.cend())
         return; // all nine names are in use
+    a.name = *freeName;
     a.controller = m_controllerIds.value(0);
-    addRow(a);
+    firstFreeAxis(m_controllerIds, m_controllerAxes, used, &a.controller, &a.axis);
+    addRow(a); // with every controller axis taken, the validator says so
     Q_EMIT edited();
 }
 

@@ -25,6 +25,7 @@ private Q_SLOTS:
     void axisChoices_areTheControllersAxes();
     void removeAxis_removesTheRowBeingEdited();
     void removeController_removesTheRowBeingEdited();
+    void addAxis_takesFreeNameAndControllerAxis();
     void message_longError_neverReflows();
     void sixAxes_fit1366x768();
 };
@@ -209,6 +210,25 @@ void TestMachineEditor::removeController_removesTheRowBeingEdited()
     // Axis A still names the removed controller: the validator says so, at its cell.
     QCOMPARE(editor->error().field, QStringLiteral("axes[3].controller"));
     QCOMPARE(editor->markedCells(), QList<QWidget*>{editor->axesTable()->cell(3, "controller")});
+}
+
+void TestMachineEditor::addAxis_takesFreeNameAndControllerAxis()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    editor->axesTable()->selectRow(1); // Y on the table's Y
+    editor->axesTable()->removeCurrentAxis();
+    editor->axesTable()->addAxis();
+    auto machine = editor->machine();
+    QVERIFY2(machine, qPrintable(editor->messageText()));
+    const machine::MachineAxis& added = machine->axes.last();
+    QCOMPARE(added.name, QStringLiteral("Y"));
+    QCOMPARE(added.controller, QStringLiteral("table"));
+    QCOMPARE(added.axis, Axis::Y);
+    QCOMPARE(added.unit, machine::AxisUnit::Step);
+    // Every controller axis drives one: the new axis is there, the validator names it.
+    editor->axesTable()->addAxis();
+    QCOMPARE(editor->axesTable()->rowCount(), 5);
+    QCOMPARE(editor->error().field, QStringLiteral("axes[4].axis"));
 }
 
 void TestMachineEditor::message_longError_neverReflows()
