@@ -31,6 +31,7 @@ private Q_SLOTS:
     void newMachine_connected_startsFromThatController();
     void newMachine_notConnected_opensValidNewMachine();
     void editorSaved_isRemembered();
+    void newMachine_whileEditorHasChanges_asksFirst();
     void editorOpen_escInACell_stillStops();
 
 private:
@@ -179,6 +180,28 @@ void TestMachineFileActions::editorSaved_isRemembered()
     QCOMPARE(recent::list().first(), path);
     editor->close();
     QTRY_VERIFY(!actions->editor());
+}
+
+void TestMachineFileActions::newMachine_whileEditorHasChanges_asksFirst()
+{
+    UiFixture f;
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    actions->setCurrentMachine(example(QStringLiteral("emis-xyzu.machine.json")));
+    actions->editAction()->trigger();
+    QPointer<ui::MachineEditor> first = actions->editor();
+    QVERIFY(first);
+    typeInto(first->nameEdit(), QStringLiteral("Changed"));
+    actions->newAction()->trigger(); // one editor at a time: its changes are not dropped
+    QCOMPARE(actions->editor(), first.data());
+    QVERIFY(first->isVisible());
+    QVERIFY(first->pendingPrompt());
+    QCOMPARE(f.window->findChildren<ui::MachineEditor*>().size(), 1);
+    first->pendingPrompt()->button(QMessageBox::Discard)->click();
+    QTRY_VERIFY(!first);
+    actions->newAction()->trigger();
+    QVERIFY(actions->editor());
+    QCOMPARE(actions->editor()->nameEdit()->text(), QStringLiteral("New machine"));
+    actions->editor()->close();
 }
 
 void TestMachineFileActions::editorOpen_escInACell_stillStops()
