@@ -13,6 +13,7 @@
 #include "jog/JogPanel.h"
 #include "jog/KeyboardJog.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineFileActions.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
 #include "messages/StatusMessages.h"
@@ -275,6 +276,16 @@ QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QS
 void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    auto* machineFiles = new MachineFileActions(m_context, this);
+    machineFiles->addTo(file);
+    // Until the window runs machines itself, it says what the validator found in the file.
+    connect(machineFiles, &MachineFileActions::openRequested, this, [this](const QString& path) {
+        bool valid = false;
+        const QString text = machineFileSummary(path, &valid);
+        m_messages->show(StatusMessages::Owner::General, text,
+                         valid ? StatusMessages::Severity::Info : StatusMessages::Severity::Error);
+    });
+    file->addSeparator();
     file->addAction(m_connectAction);
     file->addSeparator();
     file->addAction(tr("&Load parameters\u2026"), m_setup, &SetupPage::load);

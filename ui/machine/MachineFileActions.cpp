@@ -1,0 +1,150 @@
+#include "MachineFileActions.h"
+#include "MachineContext.h"
+#include "MachineEditor.h"
+#include "RecentMachines.h"
+#include "common/Dialogs.h"
+#include "connection/ConnectionSettings.h"
+#include "machine/MachineFile.h"
+#include <QAction>
+#include <QFileInfo>
+#include <QMenu>
+
+namespace stepdeck::ui {
+
+MachineFileActions::MachineFileActions(MachineContext* context, QWidget* window)
+    : QObject(window), m_context(context), m_window(window),
+      m_new(new QAction(tr("&New machine\u2026"), this)),
+      m_open(new QAction(tr("&Open machine\u2026"), this)),
+      m_edit(new QAction(tr("&Edit machine\u2026"), this)),
+      m_recent(new QMenu(tr("&Recent machines"), window))
+{
+    setObjectName(QStringLiteral("machineFileActions"));
+    m_recent->setObjectName(QStringLiteral("recentMachinesMenu"));
+    m_edit->setToolTip(tr("Edit the machine open now, or choose a machine file to edit"));
+    connect(m_new, &QAction::triggered, this, &MachineFileActions::newMachine);
+    connect(m_open, &QAction::triggered, this, &MachineFileActions::chooseMachineToOpen);
+    connect(m_edit, &QAction::triggered, this, &MachineFileActions::editMachine);
+    connect(m_recent, &QMenu::aboutToShow, this, &MachineFileActions::rebuildRecentMenu);
+    rebuildRecentMenu();
+}
+
+void MachineFileActions::addTo(QMenu* menu)
+{
+    menu->addAction(m_new);
+    menu->addAction(m_open);
+    menu->addMenu(m_recent);
+    menu->addAction(m_edit);
+}
+
+MachineEditor* MachineFileActions::editor() const
+{
+    return m_editor.data();
+}
+
+void MachineFileActions::setCurrentMachine(const QString& path)
+{
+    m_current = path;
+}
+
+MachineEditor* MachineFileActions::showEditor(MachineEditor* editor)
+{
+    if (m_editor) // one editor at a time: the one open may hold unsaved changes
+        m_editor->close();
+    if (m_editor && m_editor->isVisible()) { // the operator is asked about its changes first
+        delete editor;
+        m_editor->raise();
+        return m_editor;
+    }
+    m_editor = editor;
+    editor->setAttribute(Qt::WA_DeleteOnClose);
+    connect(editor, &MachineEditor::saved, this, [this](const QString& path) {
+        recentmachines::add(path);
+        rebuildRecentMenu();
+    });
+    editor->resize(editor->sizeHint());
+    editor->show();
+    editor->raise();
+    editor->activateWindow();
+    return editor;
+}
+
+void MachineFileActions::newMachine()
+{
+    // "It can start from the controller that is connected now" (issue 19).
+    const ModelInfo* model = m_context ? m_context->model() : nullptr;
+    if (model && m_context->isConnected())
+        showEditor(new MachineEditor(*model, m_context->portName(),
+                                     connectionsettings::resetLine(model->id), m_window));
+    else
+        showEditor(new MachineEditor(m_window));
+}
+
+void MachineFileActions::chooseMachineToOpen()
+{
+    dialogs::openFile(m_window, QStringLiteral("machines"), tr("Open machine"),
+                      tr("StepDeck machines (*.machine.json);;JSON files (*.json)"),
+                      [this](const QString& path) { open(path); });
+}
+
+void MachineFileActions::editMachine()
+{
+    auto edit = [this](const QString& path) {
+        auto* editor = new MachineEditor(m_window);
+        editor->openFile(path); // an invalid file: the editor says why
+        showEditor(editor);
+    };
+    if (!m_current.isEmpty())
+        edit(m_current);
+    else
+        dialogs::openFile(m_window, QStringLiteral("machines"), tr("Edit machine"),
+                          tr("StepDeck machines (*.machine.json);;JSON files (*.json)"), edit);
+}
+
+void MachineFileActions::open(const QString& path)
+{
+    recentmachines::add(path);
+    rebuildRecentMenu();
+    Q_EMIT openRequested(QFileInfo(path).absoluteFilePath());
+}
+
+void MachineFileActions::rebuildRecentMenu()
+{
+    m_recent->clear();
+    const QStringList paths = recentmachines::list();
+    for (int i = 0; i < paths.size(); ++i) {
+        const QString path = paths.at(i);
+        QAction* a = m_recent->addAction(
+            QStringLiteral("&%1 %2").arg(i + 1).arg(
+                QFileInfo(path).fileName().replace(QLatin1Char('&'), QStringLiteral("&&"))),
+            this, [this, path] { open(path); });
+        a->setData(path);
+        a->setToolTip(path);
+        a->setStatusTip(path);
+    }
+    if (paths.isEmpty()) {
+        m_recent->addAction(tr("No recent machines"))->setEnabled(false);
+        return;
+    }
+    m_recent->addSeparator();
+    m_recent->addAction(tr("Clear list"), this, [this] {
+        recentmachines::clear();
+        rebuildRecentMenu();
+    });
+}
+
+QString machineFileSummary(const QString& path, bool* valid)
+{
+    machine::MachineFileError error;
+    const auto loaded = machine::MachineFile::load(path, &error);
+    const QString file = QFileInfo(path).fileName();
+    *valid = loaded.has_value();
+    if (!loaded)
+        return MachineFileActions::tr("Machine file %1: %2").arg(file, error.text());
+    QStringList names;
+    for (const machine::MachineAxis& a : loaded->axes)
+        names << a.name;
+    return MachineFileActions::tr("Machine file %1 is valid: \"%2\" with the axes %3")
+        .arg(file, loaded->name, names.join(QLatin1Char(' ')));
+}
+
+} // namespace stepdeck::ui

@@ -1,0 +1,64 @@
+#pragma once
+#include <QObject>
+#include <QPointer>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace stepdeck::ui {
+
+class MachineContext;
+class MachineEditor;
+
+// The File menu's machine actions (issue 19): New machine…, Open machine…, Edit machine… and
+// the Recent machines submenu (remembered in QSettings like the recent ports). Opening a
+// machine is the window's business: this only emits openRequested(path). New and Edit open
+// the machine editor, a window of its own (never modal); New starts from the controller that
+// is connected now, if any.
+class MachineFileActions : public QObject
+{
+    Q_OBJECT
+public:
+    MachineFileActions(MachineContext* context, QWidget* window);
+
+    // Adds the actions and the submenu to menu.
+    void addTo(QMenu* menu);
+    QAction* newAction() const { return m_new; }
+    QAction* openAction() const { return m_open; }
+    QAction* editAction() const { return m_edit; }
+    QMenu* recentMenu() const { return m_recent; }
+    // The editor window open now (nullptr: none).
+    MachineEditor* editor() const;
+
+public Q_SLOTS:
+    // The machine the window runs now: Edit machine… edits it. Empty: none.
+    void setCurrentMachine(const QString& path);
+    void newMachine();
+    void chooseMachineToOpen();
+    void editMachine();
+    // Remembers path as the most recent machine and asks the window to open it.
+    void open(const QString& path);
+
+Q_SIGNALS:
+    void openRequested(const QString& path);
+
+private:
+    MachineEditor* showEditor(MachineEditor* editor);
+    void rebuildRecentMenu();
+
+    MachineContext* m_context;
+    QWidget* m_window;
+    QAction* m_new;
+    QAction* m_open;
+    QAction* m_edit;
+    QMenu* m_recent;
+    QString m_current;
+    QPointer<MachineEditor> m_editor;
+};
+
+// What the window says about a machine file until it runs machines itself: "valid, its axes"
+// or the validator's first error naming the field; *valid tells which.
+QString machineFileSummary(const QString& path, bool* valid);
+
+} // namespace stepdeck::ui
