@@ -80,6 +80,7 @@ void Machine::destroy()
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));
     m_moves.clear();
+    failReference(nullptr, tr("the machine was closed"), false);
 }
 
 ControllerSession* Machine::session(const QString& controllerId) const
@@ -118,12 +119,14 @@ void Machine::stop()
     // a slow link never holds back the stop of another controller.
     for (auto& s : m_sessions)
         s->stop();
+    failReference(nullptr, tr("referencing stopped"), false);
 }
 
 void Machine::panic()
 {
     for (auto& s : m_sessions)
         s->panic();
+    failReference(nullptr, tr("referencing stopped by the panic stop"), false);
 }
 
 void Machine::watch(const QString& controllerId, ControllerSession* session)
@@ -134,10 +137,14 @@ void Machine::watch(const QString& controllerId, ControllerSession* session)
             });
     connect(session, &ControllerSession::statusChanged, this, [this, session] {
         onStatus(session);
+        onReferenceStatus(session);
         Q_EMIT statusChanged();
     });
     connect(session, &ControllerSession::requestFinished, this,
-            [this, session](const CommandResult& r) { onResult(session, r); });
+            [this, session](const CommandResult& r) {
+                onResult(session, r);
+                onReferenceResult(session, r);
+            });
 }
 
 void Machine::onLinkState(const QString& controllerId, LinkState state, const QString& reason)
@@ -152,6 +159,7 @@ void Machine::onLinkState(const QString& controllerId, LinkState state, const QS
                                 .arg(controllerId, reason);
     Q_EMIT controllerFailed(controllerId, message);
     failMovesOf(lost, message);
+    failReference(nullptr, message, false);
 }
 
 void Machine::stopAllBut(const ControllerSession* failed)

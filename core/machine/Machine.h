@@ -1,9 +1,11 @@
 #pragma once
 #include "MachineDescription.h"
 #include "controller/ControllerSession.h"
+#include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace stepdeck::machine {
@@ -64,12 +66,26 @@ public:
     bool jog(const QMap<QString, double>& unitsPerSecond, QString* refusal);
     void endJog(); // every controller ramps down now
 
+    // Referencing in the file's order (MachineReference.cpp): the named axes (empty: all)
+    // grouped by reference.order, lowest first. A group's axes run together, one reference
+    // request per controller with the file's direction per axis (models that choose it
+    // themselves get none); the next group starts only after every part of the previous one
+    // ended referenced. Returns the run's id, or 0 with *refusal (nothing sent): an unknown
+    // axis, a controller not connected or without reference runs, a run already going. Ends
+    // with referenceFinished; a failed part stops every controller and names its controller.
+    quint64 reference(const QStringList& axes, QString* refusal);
+    bool isReferencing() const { return m_reference.has_value(); }
+
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
 
 Q_SIGNALS:
     void statusChanged();
     void moveFinished(quint64 id, bool ok, const QString& message);
+    // A reference run ended: every axis referenced (ok), or why not.
+    void referenceFinished(quint64 id, bool ok, const QString& message);
+    // A group of a reference run starts: the machine axes it references.
+    void referenceGroupStarted(quint64 id, const QStringList& axes);
     // A controller failed (link lost, a refused or failed part of a move): the others were
     // told to stop. The message names the controller.
     void controllerFailed(const QString& controllerId, const QString& message);
@@ -94,6 +110,25 @@ private:
         quint64 id;
         QList<Part> parts;
     };
+    // One controller's share of a group of a reference run, done once a status after the
+    // accepted request shows its axes referenced and at rest after evidence of the run.
+    struct ReferencePart
+    {
+        ControllerSession* session = nullptr;
+        QMap<Axis, int> directions;
+        RequestId request = 0;
+        bool accepted = false;
+        bool sawMotion = false;
+        bool sawUnreferenced = false;
+        bool done = false;
+        QElapsedTimer acceptedAt;
+    };
+    struct PendingReference
+    {
+        quint64 id = 0;
+        QList<QList<const MachineAxis*>> groups; // still to run, the current one first
+        QList<ReferencePart> parts;              // the current group's
+    };
     struct StepTargets
     {
         ControllerSession* session;
@@ -112,6 +147,13 @@ private:
                       QList<StepTargets>* plan) const;
     QString checkAxisTarget(const MachineAxis& axis, double value, bool absolute,
                             qint64* steps) const;
+    QString checkReference(const QStringList& axes, QList<QList<const MachineAxis*>>* groups) const;
+    void startReferenceGroup();
+    void onReferenceResult(ControllerSession* session, const CommandResult& result);
+    void onReferenceStatus(ControllerSession* session);
+    bool evaluateReferencePart(ReferencePart& part, QString* failure);
+    void finishReferenceGroupIfDone();
+    void failReference(const ControllerSession* session, const QString& message, bool stopAll);
     QString controllerIdOf(const ControllerSession* session) const;
     QString machineAxisName(const ControllerSession* session, Axis axis) const;
     QStringList shortOfTarget(const Part& part) const;
@@ -121,6 +163,7 @@ private:
     QList<PendingMove> m_moves;
     QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()
     quint64 m_lastMove = 0;
+    std::optional<PendingReference> m_reference;
 };
 
 } // namespace stepdeck::machine
