@@ -24,6 +24,12 @@ struct GlobalOption
 
 // clang-format off
 const GlobalOption kGlobalOptions[] = {
+    {"machine", "FILE", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
+        "a machine description (docs/machines.md) in place of\n--model/--port: axes by their "
+        "names, values in their units")},
+    {"controller", "ID", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
+        "with --machine: the controller a per-controller command\n(set, get, scan, ...) talks "
+        "to; required with several")},
     {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "controller model (default: %1; see `models`)")},
     {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
@@ -183,8 +189,14 @@ bool applyValue(const QString& name, const QString& value, CliOptions* o, QStrin
 {
     if (name == QLatin1String("model")) {
         o->model = value;
+        o->modelOrPortGiven = true;
     } else if (name == QLatin1String("port")) {
         o->port = value;
+        o->modelOrPortGiven = true;
+    } else if (name == QLatin1String("machine")) {
+        o->machineFile = value;
+    } else if (name == QLatin1String("controller")) {
+        o->controller = value;
     } else if (name == QLatin1String("axes")) {
         return parseAxisMap(value, &o->axisAddresses, error);
     } else if (name == QLatin1String("reset-line")) {
@@ -316,6 +328,16 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
     }
     if (o.address && !o.axisAddresses.isEmpty()) {
         *error = CliText::tr("give either --address or --axes, not both");
+        return false;
+    }
+    if (!o.machineFile.isEmpty() &&
+        (o.modelOrPortGiven || o.address || !o.axisAddresses.isEmpty())) {
+        *error = CliText::tr("give either --machine or --model/--port/--address/--axes, not both "
+                             "(the machine file names its controllers)");
+        return false;
+    }
+    if (!o.controller.isEmpty() && o.machineFile.isEmpty()) {
+        *error = CliText::tr("--controller needs --machine FILE");
         return false;
     }
     if (o.command.isEmpty() && !o.help && !o.version) {

@@ -113,20 +113,24 @@ void Machine::close()
         s->close();
 }
 
-void Machine::stop()
+QMap<QString, RequestId> Machine::stop()
 {
     // Posted to every session (urgent: ahead of queued work) before anything is awaited:
     // a slow link never holds back the stop of another controller.
+    QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
-        s->stop();
+        ids.insert(controllerIdOf(s.get()), s->stop());
     failReference(nullptr, tr("referencing stopped"), false);
+    return ids;
 }
 
-void Machine::panic()
+QMap<QString, RequestId> Machine::panic()
 {
+    QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
-        s->panic();
+        ids.insert(controllerIdOf(s.get()), s->panic());
     failReference(nullptr, tr("referencing stopped by the panic stop"), false);
+    return ids;
 }
 
 void Machine::watch(const QString& controllerId, ControllerSession* session)

@@ -47,8 +47,10 @@ public:
 
     void open();
     void close();
-    void stop();
-    void panic();
+    // Both return each controller's request (controller id -> id), so that a caller can wait
+    // for the acknowledgements; nothing is awaited here.
+    QMap<QString, RequestId> stop();
+    QMap<QString, RequestId> panic();
 
     // Positioning in the axes' units (absolute or relative). Checked as a whole first: every
     // axis known, its controller connected, an absolute target only on a referenced axis,
