@@ -376,6 +376,25 @@ QString busAddressRange()
 }
 } // namespace
 
+namespace {
+QString machineHelp()
+{
+    return CliText::tr(
+        "With --machine FILE (a machine description, docs/machines.md) the axes are the\n"
+        "machine's, by name, in their units:\n"
+        "  move [--abs] X=12.5 A=90    positioning in mm, deg or steps; checked as a whole,\n"
+        "                              nothing is sent if any part is refused\n"
+        "  jog X=5 A=-10 --for MS      jog in unit/s, every controller on one input\n"
+        "  home [AXIS ...]             reference runs in the file's order and directions\n"
+        "  stop | panic                every controller at once\n"
+        "  status                      every axis in its unit, every controller's link\n"
+        "  machine                     the resolved controllers and axes\n"
+        "Every other command talks to one controller: --controller ID (required when\n"
+        "the machine has several).\n"
+        "\n");
+}
+} // namespace
+
 QString usageText()
 {
     return CliText::tr("Usage: stepdeck-cli [--model MODEL] [--port PORT] [--address N] [--axes "
@@ -466,7 +485,7 @@ QString usageText()
                "command is a usage error (exit 2). Everything after `--` is an argument.\n"
                "\n")
                .arg(busAddressRange()) +
-           exitCodeHelp();
+           machineHelp() + exitCodeHelp();
 }
 
 } // namespace stepdeck::cli

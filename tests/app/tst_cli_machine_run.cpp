@@ -84,6 +84,7 @@ private Q_SLOTS:
     void cleanup();
     void move_xAndA_devicesGetTheirStepsAndPositionsPrintInUnits();
     void moveAbs_unreferenced_refusedNothingSent();
+    void home_namedAxes_runToTheirSwitchesOthersStay();
     void status_json_axesInUnitsAndControllersWithTheirLink();
     void parameterCommand_twoControllers_needsController();
     void controllerStatus_givenController_talksToThatController();
@@ -136,16 +137,19 @@ void TestCliMachineRun::cleanup()
     m_dir.reset();
 }
 
-// X/Y/Z in mm at 400 steps/mm on the board, A in degrees at 100 steps/deg on drive 1.
+// X/Y/Z in mm at 400 steps/mm on the board, A in degrees at 100 steps/deg on drive 1; Z is
+// referenced first, then the others.
 void TestCliMachineRun::writeMachineFile()
 {
     QJsonArray axes;
     for (const char* name : {"X", "Y", "Z"})
-        axes.append(QJsonObject{{"name", name},
-                                {"controller", "table"},
-                                {"axis", name},
-                                {"unit", "mm"},
-                                {"stepsPerUnit", 400}});
+        axes.append(
+            QJsonObject{{"name", name},
+                        {"controller", "table"},
+                        {"axis", name},
+                        {"unit", "mm"},
+                        {"stepsPerUnit", 400},
+                        {"reference", QJsonObject{{"order", QByteArray(name) == "Z" ? 0 : 1}}}});
     axes.append(QJsonObject{{"name", "A"},
                             {"controller", "rotary"},
                             {"axis", "X"},
@@ -178,7 +182,10 @@ void TestCliMachineRun::startCli(const QStringList& command)
             [this] { m_err += m_process->readAllStandardError(); });
     connect(m_process.get(), &QProcess::readyReadStandardOutput, this,
             [this] { m_out += m_process->readAllStandardOutput(); });
-    m_process->start(m_cli, QStringList{"--machine", m_file, "--setup-defaults"} + command);
+    // A generous link timeout: the machine shares two cores with builds.
+    m_process->start(m_cli,
+                     QStringList{"--machine", m_file, "--setup-defaults", "--timeout", "10000"} +
+                         command);
     QVERIFY(m_process->waitForStarted(5000));
 }
 
@@ -204,7 +211,8 @@ int TestCliMachineRun::run(const QStringList& command)
 
 void TestCliMachineRun::move_xAndA_devicesGetTheirStepsAndPositionsPrintInUnits()
 {
-    QCOMPARE(run({"move", "X=2.5", "A=25"}), 0);
+    const int code = run({"move", "X=2.5", "A=25"});
+    QVERIFY2(code == 0, m_err.constData());
     // 2.5 mm x 400 on the board's X; 25 deg x 100 as "s2500" to drive 1 (inside its switches).
     QCOMPARE(acceptedSteps(*m_elab.sim, Axis::X), qint64(1000));
     QCOMPARE(acceptedSteps(*m_nanotec.sim, Axis::X), qint64(2500));
@@ -223,10 +231,24 @@ void TestCliMachineRun::moveAbs_unreferenced_refusedNothingSent()
     QCOMPARE(m_nanotec.sim->acceptedMoves().size(), 0);
 }
 
+void TestCliMachineRun::home_namedAxes_runToTheirSwitchesOthersStay()
+{
+    const int code = run({"home", "Z", "X"});
+    QVERIFY2(code == 0, m_err.constData());
+    // At the board: Z and X searched their reference switches (the simulated switch sits at
+    // -20000 steps), Y was not sent anywhere.
+    QVERIFY(qAbs(m_elab.sim->position(Axis::Z) + 20000) <= 10);
+    QVERIFY(qAbs(m_elab.sim->position(Axis::X) + 20000) <= 10);
+    QCOMPARE(m_elab.sim->position(Axis::Y), qint64(0));
+    QVERIFY(m_elab.sim->standingStill());
+    // Referenced axes print without a mark, the others stay unknown.
+    QVERIFY2(m_out.contains("X=0.000 Y=0.000 (unknown) Z=0.000 A="), m_out.constData());
+}
+
 void TestCliMachineRun::status_json_axesInUnitsAndControllersWithTheirLink()
 {
-    QCOMPARE(run({"move", "A=12.5"}), 0);
-    QCOMPARE(run({"--json", "status"}), 0);
+    QVERIFY2(run({"move", "A=12.5"}) == 0, m_err.constData());
+    QVERIFY2(run({"--json", "status"}) == 0, m_err.constData());
     const QJsonObject o = QJsonDocument::fromJson(m_out).object();
     QCOMPARE(o.value("machine").toString(), QStringLiteral("Table with rotary axis"));
     const QJsonObject a = byName(o.value("axes").toArray(), "name", "A");
@@ -259,7 +281,7 @@ void TestCliMachineRun::parameterCommand_twoControllers_needsController()
 
 void TestCliMachineRun::controllerStatus_givenController_talksToThatController()
 {
-    QCOMPARE(run({"--controller", "rotary", "status"}), 0);
+    QVERIFY2(run({"--controller", "rotary", "status"}) == 0, m_err.constData());
     QVERIFY2(m_out.contains("nanotec") && m_out.contains(m_nanotec.end->slavePath().toUtf8()),
              m_out.constData());
     QCOMPARE(run({"--controller", "rotary", "--json", "params"}), 0);
