@@ -1,5 +1,6 @@
 #include "Machine.h"
 #include "MachineFile.h"
+#include "MachineReferenceRun.h"
 #include "protocols/Registry.h"
 
 namespace stepdeck::machine {
@@ -36,7 +37,9 @@ ConnectionSpec specOf(const MachineController& c)
 }
 } // namespace
 
-Machine::Machine(QObject* parent) : QObject(parent) {}
+Machine::Machine(QObject* parent)
+    : QObject(parent), m_references(std::make_unique<MachineReferenceRun>(*this))
+{}
 
 Machine::~Machine()
 {
@@ -80,7 +83,7 @@ void Machine::destroy()
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));
     m_moves.clear();
-    failReference(nullptr, tr("the machine was closed"), false);
+    m_references->fail(nullptr, tr("the machine was closed"), false);
 }
 
 ControllerSession* Machine::session(const QString& controllerId) const
@@ -120,7 +123,7 @@ QMap<QString, RequestId> Machine::stop()
     QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
         ids.insert(controllerIdOf(s.get()), s->stop());
-    failReference(nullptr, tr("referencing stopped"), false);
+    m_references->fail(nullptr, tr("referencing stopped"), false);
     return ids;
 }
 
@@ -129,7 +132,7 @@ QMap<QString, RequestId> Machine::panic()
     QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
         ids.insert(controllerIdOf(s.get()), s->panic());
-    failReference(nullptr, tr("referencing stopped by the panic stop"), false);
+    m_references->fail(nullptr, tr("referencing stopped by the panic stop"), false);
     return ids;
 }
 
@@ -141,13 +144,13 @@ void Machine::watch(const QString& controllerId, ControllerSession* session)
             });
     connect(session, &ControllerSession::statusChanged, this, [this, session] {
         onStatus(session);
-        onReferenceStatus(session);
+        m_references->onStatus(session);
         Q_EMIT statusChanged();
     });
     connect(session, &ControllerSession::requestFinished, this,
             [this, session](const CommandResult& r) {
                 onResult(session, r);
-                onReferenceResult(session, r);
+                m_references->onResult(session, r);
             });
 }
 
@@ -163,7 +166,7 @@ void Machine::onLinkState(const QString& controllerId, LinkState state, const QS
                                 .arg(controllerId, reason);
     Q_EMIT controllerFailed(controllerId, message);
     failMovesOf(lost, message);
-    failReference(nullptr, message, false);
+    m_references->fail(nullptr, message, false);
 }
 
 void Machine::stopAllBut(const ControllerSession* failed)

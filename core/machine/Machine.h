@@ -1,7 +1,6 @@
 #pragma once
 #include "MachineDescription.h"
 #include "controller/ControllerSession.h"
-#include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
 #include <memory>
@@ -9,6 +8,8 @@
 #include <vector>
 
 namespace stepdeck::machine {
+
+class MachineReferenceRun;
 
 // How a shown position is known (docs/machines.md): read back or confirmed by a reference
 // run, estimated by the host, or unknown until the axis is referenced.
@@ -76,7 +77,7 @@ public:
     // axis, a controller not connected or without reference runs, a run already going. Ends
     // with referenceFinished; a failed part stops every controller and names its controller.
     quint64 reference(const QStringList& axes, QString* refusal);
-    bool isReferencing() const { return m_reference.has_value(); }
+    bool isReferencing() const;
 
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
@@ -93,6 +94,8 @@ Q_SIGNALS:
     void controllerFailed(const QString& controllerId, const QString& message);
 
 private:
+    friend class MachineReferenceRun; // the run reaches the sessions as the machine does
+
     // One controller's share of a move: sent, then (for models whose move request ends when
     // the device accepted it) settling until a fresh status shows its axes at rest.
     struct Part
@@ -112,25 +115,6 @@ private:
         quint64 id;
         QList<Part> parts;
     };
-    // One controller's share of a group of a reference run, done once a status after the
-    // accepted request shows its axes referenced and at rest after evidence of the run.
-    struct ReferencePart
-    {
-        ControllerSession* session = nullptr;
-        QMap<Axis, int> directions;
-        RequestId request = 0;
-        bool accepted = false;
-        bool sawMotion = false;
-        bool sawUnreferenced = false;
-        bool done = false;
-        QElapsedTimer acceptedAt;
-    };
-    struct PendingReference
-    {
-        quint64 id = 0;
-        QList<QList<const MachineAxis*>> groups; // still to run, the current one first
-        QList<ReferencePart> parts;              // the current group's
-    };
     struct StepTargets
     {
         ControllerSession* session;
@@ -149,13 +133,6 @@ private:
                       QList<StepTargets>* plan) const;
     QString checkAxisTarget(const MachineAxis& axis, double value, bool absolute,
                             qint64* steps) const;
-    QString checkReference(const QStringList& axes, QList<QList<const MachineAxis*>>* groups) const;
-    void startReferenceGroup();
-    void onReferenceResult(ControllerSession* session, const CommandResult& result);
-    void onReferenceStatus(ControllerSession* session);
-    bool evaluateReferencePart(ReferencePart& part, QString* failure);
-    void finishReferenceGroupIfDone();
-    void failReference(const ControllerSession* session, const QString& message, bool stopAll);
     QString controllerIdOf(const ControllerSession* session) const;
     QString machineAxisName(const ControllerSession* session, Axis axis) const;
     QStringList shortOfTarget(const Part& part) const;
@@ -165,7 +142,7 @@ private:
     QList<PendingMove> m_moves;
     QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()
     quint64 m_lastMove = 0;
-    std::optional<PendingReference> m_reference;
+    std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
 };
 
 } // namespace stepdeck::machine

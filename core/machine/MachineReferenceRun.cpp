@@ -1,4 +1,6 @@
-// Machine::reference: referencing in the machine file's order (issue 19, docs/machines.md).
+// Machine::reference and MachineReferenceRun: referencing in the machine file's order (issue 19,
+// docs/machines.md).
+#include "MachineReferenceRun.h"
 #include "Machine.h"
 #include <algorithm>
 
@@ -24,36 +26,50 @@ int controllerDirection(const MachineAxis& axis, const Capabilities& capabilitie
 
 quint64 Machine::reference(const QStringList& axes, QString* refusal)
 {
-    QList<QList<const MachineAxis*>> groups;
-    const QString why = checkReference(axes, &groups);
+    const quint64 id = m_lastMove + 1;
+    const QString why = m_references->start(id, axes);
     if (!why.isEmpty()) {
         if (refusal)
             *refusal = why;
         return 0;
     }
-    m_reference = PendingReference{++m_lastMove, groups, {}};
-    const quint64 id = m_reference->id;
-    startReferenceGroup();
+    m_lastMove = id;
     return id;
 }
 
-QString Machine::checkReference(const QStringList& axes,
-                                QList<QList<const MachineAxis*>>* groups) const
+bool Machine::isReferencing() const
 {
-    if (m_reference)
+    return m_references->isRunning();
+}
+
+QString MachineReferenceRun::start(quint64 id, const QStringList& axes)
+{
+    QList<QList<const MachineAxis*>> groups;
+    const QString why = check(axes, &groups);
+    if (!why.isEmpty())
+        return why;
+    m_run = Run{id, groups, {}};
+    startGroup();
+    return {};
+}
+
+QString MachineReferenceRun::check(const QStringList& axes,
+                                   QList<QList<const MachineAxis*>>* groups) const
+{
+    if (m_run)
         return tr("a reference run is going already");
     for (const QString& name : axes) {
-        if (!m_description.axis(name))
+        if (!m_machine.description().axis(name))
             return tr("the machine has no axis %1").arg(name);
         if (axes.count(name) > 1)
             return tr("axis %1 is named twice").arg(name);
     }
-    for (const QList<const MachineAxis*>& all : m_description.referenceGroups()) {
+    for (const QList<const MachineAxis*>& all : m_machine.description().referenceGroups()) {
         QList<const MachineAxis*> group;
         for (const MachineAxis* a : all) {
             if (!axes.isEmpty() && !axes.contains(a->name))
                 continue;
-            const ControllerSession* s = session(a->controller);
+            const ControllerSession* s = m_machine.session(a->controller);
             if (s->linkState() != LinkState::Connected)
                 return tr("%1: controller \"%2\" is not connected").arg(a->name, a->controller);
             if (!s->capabilities().has(MotionMode::Reference))
@@ -68,17 +84,17 @@ QString Machine::checkReference(const QStringList& axes,
     return {};
 }
 
-void Machine::startReferenceGroup()
+void MachineReferenceRun::startGroup()
 {
-    PendingReference& run = *m_reference;
+    Run& run = *m_run;
     run.parts.clear();
     QStringList names;
     for (const MachineAxis* a : run.groups.constFirst()) {
-        ControllerSession* s = session(a->controller);
+        ControllerSession* s = m_machine.session(a->controller);
         auto part = std::find_if(run.parts.begin(), run.parts.end(),
-                                 [s](const ReferencePart& p) { return p.session == s; });
+                                 [s](const Part& p) { return p.session == s; });
         if (part == run.parts.end()) {
-            part = run.parts.insert(run.parts.end(), ReferencePart{});
+            part = run.parts.insert(run.parts.end(), Part{});
             part->session = s;
         }
         part->directions.insert(a->axis, controllerDirection(*a, s->capabilities()));
@@ -86,58 +102,58 @@ void Machine::startReferenceGroup()
     }
     // Every controller is checked before any is sent: a link lost since the last group fails
     // the run before anything of this group moves.
-    for (const ReferencePart& p : std::as_const(run.parts)) {
+    for (const Part& p : std::as_const(run.parts)) {
         if (p.session->linkState() != LinkState::Connected)
-            return failReference(p.session,
-                                 tr("controller \"%1\" is not connected: referencing stopped")
-                                     .arg(controllerIdOf(p.session)),
-                                 true);
+            return fail(p.session,
+                        tr("controller \"%1\" is not connected: referencing stopped")
+                            .arg(m_machine.controllerIdOf(p.session)),
+                        true);
     }
-    Q_EMIT referenceGroupStarted(run.id, names);
+    Q_EMIT m_machine.referenceGroupStarted(run.id, names);
     // Back to back, as the parts of a move.
-    for (ReferencePart& p : run.parts)
+    for (Part& p : run.parts)
         p.request = p.session->reference(p.directions);
 }
 
-void Machine::onReferenceResult(ControllerSession* session, const CommandResult& result)
+void MachineReferenceRun::onResult(ControllerSession* session, const CommandResult& result)
 {
-    if (!m_reference || result.id == 0)
+    if (!m_run || result.id == 0)
         return;
-    for (ReferencePart& part : m_reference->parts) {
+    for (Part& part : m_run->parts) {
         if (part.session != session || result.id != part.request)
             continue;
         if (!result.ok())
-            return failReference(session,
-                                 tr("controller \"%1\": referencing failed: %2")
-                                     .arg(controllerIdOf(session), result.message),
-                                 true);
+            return fail(session,
+                        tr("controller \"%1\": referencing failed: %2")
+                            .arg(m_machine.controllerIdOf(session), result.message),
+                        true);
         part.accepted = true;
         part.acceptedAt.start();
         // Models that report arrival finish the request only when the run is over: the status
         // published before this result is the evidence, and no poll follows.
         if (session->capabilities().reportsArrival)
             part.sawMotion = true;
-        onReferenceStatus(session);
+        onStatus(session);
         return;
     }
 }
 
-void Machine::onReferenceStatus(ControllerSession* session)
+void MachineReferenceRun::onStatus(ControllerSession* session)
 {
-    if (!m_reference)
+    if (!m_run)
         return;
-    for (ReferencePart& part : m_reference->parts) {
+    for (Part& part : m_run->parts) {
         if (part.session != session || part.done)
             continue;
         QString failure;
-        if (!evaluateReferencePart(part, &failure))
-            return failReference(session, failure, true);
+        if (!evaluate(part, &failure))
+            return fail(session, failure, true);
     }
-    finishReferenceGroupIfDone();
+    finishGroupIfDone();
 }
 
 // False: the part failed (*failure says why, naming the controller).
-bool Machine::evaluateReferencePart(ReferencePart& part, QString* failure)
+bool MachineReferenceRun::evaluate(Part& part, QString* failure)
 {
     const MachineStatus& status = part.session->status();
     bool allReferenced = true;
@@ -159,38 +175,39 @@ bool Machine::evaluateReferencePart(ReferencePart& part, QString* failure)
     if (!movingNow && (part.sawMotion || part.acceptedAt.elapsed() > kStartGraceMs)) {
         *failure = tr("controller \"%1\": the reference run ended before the reference switch "
                       "was reached")
-                       .arg(controllerIdOf(part.session));
+                       .arg(m_machine.controllerIdOf(part.session));
         return false;
     }
     return true;
 }
 
-void Machine::finishReferenceGroupIfDone()
+void MachineReferenceRun::finishGroupIfDone()
 {
-    if (!m_reference)
+    if (!m_run)
         return;
-    const auto& parts = m_reference->parts;
-    if (!std::all_of(parts.cbegin(), parts.cend(), [](const ReferencePart& p) { return p.done; }))
+    const auto& parts = m_run->parts;
+    if (!std::all_of(parts.cbegin(), parts.cend(), [](const Part& p) { return p.done; }))
         return;
-    m_reference->groups.removeFirst();
-    if (!m_reference->groups.isEmpty())
-        return startReferenceGroup();
-    const quint64 id = m_reference->id;
-    m_reference.reset();
-    Q_EMIT referenceFinished(id, true, QString());
+    m_run->groups.removeFirst();
+    if (!m_run->groups.isEmpty())
+        return startGroup();
+    const quint64 id = m_run->id;
+    m_run.reset();
+    Q_EMIT m_machine.referenceFinished(id, true, QString());
 }
 
-void Machine::failReference(const ControllerSession* session, const QString& message, bool stopAll)
+void MachineReferenceRun::fail(const ControllerSession* session, const QString& message,
+                               bool stopAll)
 {
-    if (!m_reference)
+    if (!m_run)
         return;
-    const quint64 id = m_reference->id;
-    m_reference.reset();
+    const quint64 id = m_run->id;
+    m_run.reset();
     if (stopAll)
-        stopAllBut(nullptr); // the failed controller too: its other axes may be running
+        m_machine.stopAllBut(nullptr); // the failed controller too: its other axes may be running
     if (session)
-        Q_EMIT controllerFailed(controllerIdOf(session), message);
-    Q_EMIT referenceFinished(id, false, message);
+        Q_EMIT m_machine.controllerFailed(m_machine.controllerIdOf(session), message);
+    Q_EMIT m_machine.referenceFinished(id, false, message);
 }
 
 } // namespace stepdeck::machine
