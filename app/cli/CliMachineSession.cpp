@@ -69,13 +69,8 @@ bool CliMachineSession::pause(int ms)
     return !m_interrupted;
 }
 
-Outcome CliMachineSession::connectAll()
+void CliMachineSession::watchSessions()
 {
-    if (m_connected)
-        return Outcome::success();
-    QString error;
-    if (!m_machine.create(m_description, &error))
-        return Outcome::usage(error);
     for (const MachineController& c : m_description.controllers) {
         ControllerSession* s = m_machine.session(c.id);
         connect(s, &ControllerSession::requestFinished, this,
@@ -89,12 +84,20 @@ Outcome CliMachineSession::connectAll()
                 });
         connect(s, &ControllerSession::linkStateChanged, this, [this] { wake(); });
     }
-    m_machine.open();
-    const auto settled = [this] { // every link up, or one lost for good
+}
+
+Outcome CliMachineSession::openAll()
+{
+    QMap<QString, RequestId> opened; // each session's own open, for its failure's reason
+    for (const MachineController& c : m_description.controllers)
+        opened.insert(c.id, m_machine.session(c.id)->open());
+    const auto settled = [&] { // every link up, or one failed for good
         bool allUp = true;
         for (const MachineController& c : m_description.controllers) {
             const LinkState state = m_machine.session(c.id)->linkState();
-            if (state == LinkState::Lost)
+            const auto finished = m_finished.value(c.id).constFind(opened.value(c.id));
+            if (state == LinkState::Lost ||
+                (finished != m_finished.value(c.id).cend() && !finished->ok()))
                 return true;
             allUp = allUp && state == LinkState::Connected;
         }
@@ -103,14 +106,36 @@ Outcome CliMachineSession::connectAll()
     waitFor(settled, m_options.connectTimeoutMs);
     if (m_interrupted)
         return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
+    // The controller that failed is named first; a slower one still connecting is not at fault.
+    for (const MachineController& c : m_description.controllers) {
+        const CommandResult r = m_finished[c.id].take(opened.value(c.id));
+        if (r.id != 0 && !r.ok())
+            return Outcome::failure(
+                exitCodeFor(r.error),
+                CliText::tr("controller \"%1\" (%2): %3").arg(c.id, c.port, r.message));
+    }
     for (const MachineController& c : m_description.controllers) {
         if (m_machine.session(c.id)->linkState() != LinkState::Connected)
-            return Outcome::failure(ExitLinkDown,
-                                    CliText::tr("controller \"%1\" (%2): no connection within %3 "
-                                                "ms (powered, cabled, right model?)")
-                                        .arg(c.id, c.port)
-                                        .arg(m_options.connectTimeoutMs));
+            return Outcome::failure(
+                ExitLinkDown,
+                CliText::tr("controller \"%1\" (%2): %3")
+                    .arg(c.id, c.port,
+                         CliText::tr("no connection within %1 ms (powered, cabled, right model?)")
+                             .arg(m_options.connectTimeoutMs)));
     }
+    return Outcome::success();
+}
+
+Outcome CliMachineSession::connectAll()
+{
+    if (m_connected)
+        return Outcome::success();
+    QString error;
+    if (!m_machine.create(m_description, &error))
+        return Outcome::usage(error);
+    watchSessions();
+    if (const Outcome opened = openAll(); !opened.ok())
+        return opened;
     m_connected = true;
     if (m_options.setupDefaults) {
         if (const Outcome written = writeSetupDefaults(); !written.ok())

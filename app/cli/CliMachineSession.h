@@ -55,6 +55,8 @@ public:
 
 private:
     void wake();
+    void watchSessions();
+    Outcome openAll();
     Outcome writeSetupDefaults();
 
     CliOptions m_options;

@@ -91,6 +91,7 @@ private Q_SLOTS:
     void signal_duringTwoControllerJog_bothDevicesStandStill_data();
     void signal_duringTwoControllerJog_bothDevicesStandStill();
     void nanotecVanishes_duringXJog_exit6NamesItAndTheTableStandsStill();
+    void connect_portMissing_exit6NamesTheControllerNothingMoves();
     void machineFile_invalidOrUnreadable_exit7Or12_data();
     void machineFile_invalidOrUnreadable_exit7Or12();
 
@@ -327,6 +328,22 @@ void TestCliMachineRun::nanotecVanishes_duringXJog_exit6NamesItAndTheTableStands
     QVERIFY2(m_err.contains("\"rotary\""), m_err.constData());
     QVERIFY(receivedStop(*m_elab.sim));
     QTRY_VERIFY_WITH_TIMEOUT(m_elab.sim->standingStill(), 5000);
+}
+
+void TestCliMachineRun::connect_portMissing_exit6NamesTheControllerNothingMoves()
+{
+    QFile file(m_file);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QByteArray text = file.readAll();
+    file.close();
+    text.replace(m_nanotec.end->slavePath().toUtf8(), "/dev/ttyStepDeckNone");
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(text);
+    file.close();
+    QCOMPARE(run({"move", "X=2.5", "A=25"}), 6);
+    QVERIFY2(m_err.contains("controller \"rotary\"") && m_err.contains("/dev/ttyStepDeckNone"),
+             m_err.constData());
+    QCOMPARE(m_elab.sim->acceptedMoves().size(), 0);
 }
 
 void TestCliMachineRun::machineFile_invalidOrUnreadable_exit7Or12_data()
