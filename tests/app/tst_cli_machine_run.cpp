@@ -85,6 +85,7 @@ private Q_SLOTS:
     void move_xAndA_devicesGetTheirStepsAndPositionsPrintInUnits();
     void moveAbs_unreferenced_refusedNothingSent();
     void home_namedAxes_runToTheirSwitchesOthersStay();
+    void jog_xAndAForAWhile_bothMoveThenStandStill();
     void status_json_axesInUnitsAndControllersWithTheirLink();
     void parameterCommand_twoControllers_needsController();
     void controllerStatus_givenController_talksToThatController();
@@ -244,6 +245,17 @@ void TestCliMachineRun::home_namedAxes_runToTheirSwitchesOthersStay()
     QVERIFY(m_elab.sim->standingStill());
     // Referenced axes print without a mark, the others stay unknown.
     QVERIFY2(m_out.contains("X=0.000 Y=0.000 (unknown) Z=0.000 A="), m_out.constData());
+}
+
+void TestCliMachineRun::jog_xAndAForAWhile_bothMoveThenStandStill()
+{
+    const int code = run({"jog", "X=2", "A=-10", "--for", "800"});
+    QVERIFY2(code == 0, m_err.constData());
+    // Both moved in the jogged directions and were ramped down before the CLI let go.
+    QVERIFY(m_elab.sim->position(Axis::X) > 0);
+    QVERIFY(m_nanotec.sim->position(Axis::X) < 0);
+    QVERIFY(m_elab.sim->standingStill() && m_nanotec.sim->standingStill());
+    QVERIFY2(m_out.contains("X=") && m_out.contains("A=-"), m_out.constData());
 }
 
 void TestCliMachineRun::status_json_axesInUnitsAndControllersWithTheirLink()
