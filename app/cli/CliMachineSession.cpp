@@ -144,7 +144,9 @@ Outcome CliMachineSession::connectAll()
     QMap<QString, RequestId> refreshes;
     for (const MachineController& c : m_description.controllers)
         refreshes.insert(c.id, m_machine.session(c.id)->refreshStatus());
-    return waitAll(refreshes, CliSession::kRequestTimeoutMs);
+    const Outcome refreshed = waitAll(refreshes, CliSession::kRequestTimeoutMs);
+    m_lastFailure = ErrorKind::None; // from here on: the command's own requests
+    return refreshed;
 }
 
 // --setup-defaults on every controller, as CliContext::connect() does for one.
