@@ -163,6 +163,7 @@ private Q_SLOTS:
     void create_invalidDescription_refusedWithTheField();
     void reference_zFirst_xAndATogetherAfterZIsReferenced();
     void reference_unknownAxis_refusedNothingSent();
+    void reference_invertedAxis_fileDirectionIsTheMachines();
     void reference_linkLostDuringRun_failsNamingTheControllerAndStopsTheOthers();
 
 private:
@@ -406,6 +407,28 @@ void TestMachine::reference_zFirst_xAndATogetherAfterZIsReferenced()
     }
     QVERIFY(m_machine->axisStatus(*m_machine->description().axis("Y")).known !=
             PositionKnowledge::Referenced);
+}
+
+// The file's direction is in the machine's sense: an inverted Z referenced "+1" searches the
+// negative way at the board, where its switch is (the simulated one at -20000 steps).
+void TestMachine::reference_invertedAxis_fileDirectionIsTheMachines()
+{
+    MachineDescription d = description();
+    d.axes[2].invert = true;          // Z
+    d.axes[2].referenceDirection = 1; // up, in the machine's sense
+    QString error;
+    m_machine->destroy();
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    m_machine->open();
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->session("table")->linkState() == LinkState::Connected,
+                             10000);
+    writeElabSetup();
+    QSignalSpy finished(m_machine.get(), &Machine::referenceFinished);
+    QString refusal;
+    QVERIFY2(m_machine->reference({"Z"}, &refusal) != 0, qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QVERIFY(qAbs(m_elab->probe([this] { return m_elab->sim()->position(Axis::Z); }) + 20000) <= 10);
 }
 
 void TestMachine::reference_unknownAxis_refusedNothingSent()
