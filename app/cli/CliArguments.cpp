@@ -24,6 +24,12 @@ struct GlobalOption
 
 // clang-format off
 const GlobalOption kGlobalOptions[] = {
+    {"machine", "FILE", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
+        "a machine description (docs/machines.md) in place of\n--model/--port: axes by their "
+        "names, values in their units")},
+    {"controller", "ID", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
+        "with --machine: the controller a per-controller command\n(set, get, scan, ...) talks "
+        "to; required with several")},
     {"model", "MODEL", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
         "controller model (default: %1; see `models`)")},
     {"port", "PORT", QT_TRANSLATE_NOOP("stepdeck::cli::CliText",
@@ -183,8 +189,14 @@ bool applyValue(const QString& name, const QString& value, CliOptions* o, QStrin
 {
     if (name == QLatin1String("model")) {
         o->model = value;
+        o->modelOrPortGiven = true;
     } else if (name == QLatin1String("port")) {
         o->port = value;
+        o->modelOrPortGiven = true;
+    } else if (name == QLatin1String("machine")) {
+        o->machineFile = value;
+    } else if (name == QLatin1String("controller")) {
+        o->controller = value;
     } else if (name == QLatin1String("axes")) {
         return parseAxisMap(value, &o->axisAddresses, error);
     } else if (name == QLatin1String("reset-line")) {
@@ -318,6 +330,16 @@ bool parseArguments(const QStringList& arguments, const QList<CommandSyntax>& co
         *error = CliText::tr("give either --address or --axes, not both");
         return false;
     }
+    if (!o.machineFile.isEmpty() &&
+        (o.modelOrPortGiven || o.address || !o.axisAddresses.isEmpty())) {
+        *error = CliText::tr("give either --machine or --model/--port/--address/--axes, not both "
+                             "(the machine file names its controllers)");
+        return false;
+    }
+    if (!o.controller.isEmpty() && o.machineFile.isEmpty()) {
+        *error = CliText::tr("--controller needs --machine FILE");
+        return false;
+    }
     if (o.command.isEmpty() && !o.help && !o.version) {
         *error = CliText::tr("no command given (try --help)");
         return false;
@@ -351,6 +373,25 @@ QString busAddressRange()
         last = qMax(last, c.maxBusAddress);
     }
     return last < first ? QStringLiteral("-") : QStringLiteral("%1..%2").arg(first).arg(last);
+}
+} // namespace
+
+namespace {
+QString machineHelp()
+{
+    return CliText::tr(
+        "With --machine FILE (a machine description, docs/machines.md) the axes are the\n"
+        "machine's, by name, in their units:\n"
+        "  move [--abs] X=12.5 A=90    positioning in mm, deg or steps; checked as a whole,\n"
+        "                              nothing is sent if any part is refused\n"
+        "  jog X=5 A=-10 --for MS      jog in unit/s, every controller on one input\n"
+        "  home [AXIS ...]             reference runs in the file's order and directions\n"
+        "  stop | panic                every controller at once\n"
+        "  status                      every axis in its unit, every controller's link\n"
+        "  machine                     the resolved controllers and axes\n"
+        "Every other command talks to one controller: --controller ID (required when\n"
+        "the machine has several).\n"
+        "\n");
 }
 } // namespace
 
@@ -444,7 +485,7 @@ QString usageText()
                "command is a usage error (exit 2). Everything after `--` is an argument.\n"
                "\n")
                .arg(busAddressRange()) +
-           exitCodeHelp();
+           machineHelp() + exitCodeHelp();
 }
 
 } // namespace stepdeck::cli

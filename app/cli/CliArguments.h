@@ -30,6 +30,9 @@ struct CliOptions
 {
     QString model; // parseArguments() starts from the first registered model (E-LAB)
     QString port = QStringLiteral("sim");
+    bool modelOrPortGiven = false; // --model or --port on the command line
+    QString machineFile;           // --machine FILE: the machine path (CliMachineRun.cpp)
+    QString controller;            // --controller ID: per-controller commands on a machine
     std::optional<int> address;    // --address N: X=N for a single-drive model
     QMap<Axis, int> axisAddresses; // --axes X=1,Y=2,Z=3
     bool json = false;

@@ -1,6 +1,7 @@
 // `machine check FILE`: validates a machine description (docs/machines.md) and prints the
 // resolved controllers and axes, or the first error naming its field (exit 7).
 #include "CliCommands.h"
+#include "CliMachineRun.h"
 #include "CliText.h"
 #include "machine/MachineFile.h"
 #include <QFileInfo>
@@ -47,7 +48,9 @@ QString axisLine(const MachineAxis& a)
         .arg(CliText::tr("reference order %1").arg(a.referenceOrder));
 }
 
-void printMachine(const MachineDescription& m)
+} // namespace
+
+void printMachineTable(const MachineDescription& m)
 {
     printLine(CliText::tr("machine \"%1\": %2 controllers, %3 axes")
                   .arg(m.name)
@@ -60,7 +63,6 @@ void printMachine(const MachineDescription& m)
             printLine(axisLine(*a));
     }
 }
-} // namespace
 
 Outcome cmdMachine(CliContext& c, QStringList args)
 {
@@ -77,7 +79,7 @@ Outcome cmdMachine(CliContext& c, QStringList args)
     if (c.json())
         printJson(m->toJson());
     else
-        printMachine(*m);
+        printMachineTable(*m);
     return Outcome::success();
 }
 

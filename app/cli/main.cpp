@@ -1,10 +1,8 @@
 // stepdeck-cli: the technicians' scripting interface (issue #2, section 5; docs/cli.md).
-#include "../common/SignalPipe.h"
 #include "CliArguments.h"
 #include "CliCommands.h"
+#include "CliMachineRun.h"
 #include "CliOutput.h"
-#include "CliSession.h"
-#include "CliText.h"
 #include <QCoreApplication>
 
 using namespace stepdeck;
@@ -43,22 +41,7 @@ int main(int argc, char** argv)
     if (!options.verbose && qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
         qInstallMessageHandler(quietMessageHandler);
 
-    CliSession session(options);
-    const stepdeck::app::SignalPipe signalPipe([&session](int) { session.interrupt(); });
-
-    CliContext context{options, findModel(options.model), session};
-    Outcome outcome = runCommand(context);
-    if (session.interrupted()) {
-        // Ramped stop, then exit 130; the line says whether the controller confirmed it.
-        const bool connected = session.isConnected();
-        const Outcome stopped = session.stopMotion();
-        const QString text = !connected ? CliText::tr("interrupted")
-                             : stopped.ok()
-                                 ? CliText::tr("interrupted: the controller acknowledged the stop")
-                                 : CliText::tr("interrupted: %1").arg(stopped.message);
-        outcome = Outcome::failure(ExitInterrupted, text);
-    }
-    if (!outcome.ok())
-        printError(outcome.message);
-    return outcome.code;
+    if (!options.machineFile.isEmpty())
+        return runWithMachine(options);
+    return runSingleController(options);
 }

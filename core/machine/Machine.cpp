@@ -1,5 +1,6 @@
 #include "Machine.h"
 #include "MachineFile.h"
+#include "MachineReferenceRun.h"
 #include "protocols/Registry.h"
 
 namespace stepdeck::machine {
@@ -36,7 +37,9 @@ ConnectionSpec specOf(const MachineController& c)
 }
 } // namespace
 
-Machine::Machine(QObject* parent) : QObject(parent) {}
+Machine::Machine(QObject* parent)
+    : QObject(parent), m_references(std::make_unique<MachineReferenceRun>(*this))
+{}
 
 Machine::~Machine()
 {
@@ -81,6 +84,7 @@ void Machine::destroy()
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));
     m_moves.clear();
+    m_references->fail(nullptr, tr("the machine was closed"), false);
 }
 
 ControllerSession* Machine::session(const QString& controllerId) const
@@ -113,20 +117,26 @@ void Machine::close()
         s->close();
 }
 
-void Machine::stop()
+QMap<QString, RequestId> Machine::stop()
 {
     // Posted to every session (urgent: ahead of queued work) before anything is awaited:
     // a slow link never holds back the stop of another controller.
+    QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
-        s->stop();
+        ids.insert(controllerIdOf(s.get()), s->stop());
     releaseTargetJogs(); // no further jog targets (a target under way ends by itself)
+    m_references->fail(nullptr, tr("referencing stopped"), false);
+    return ids;
 }
 
-void Machine::panic()
+QMap<QString, RequestId> Machine::panic()
 {
+    QMap<QString, RequestId> ids;
     for (auto& s : m_sessions)
-        s->panic();
+        ids.insert(controllerIdOf(s.get()), s->panic());
     releaseTargetJogs();
+    m_references->fail(nullptr, tr("referencing stopped by the panic stop"), false);
+    return ids;
 }
 
 void Machine::watch(const QString& controllerId, ControllerSession* session)
@@ -137,10 +147,14 @@ void Machine::watch(const QString& controllerId, ControllerSession* session)
             });
     connect(session, &ControllerSession::statusChanged, this, [this, session] {
         onStatus(session);
+        m_references->onStatus(session);
         Q_EMIT statusChanged();
     });
     connect(session, &ControllerSession::requestFinished, this,
-            [this, session](const CommandResult& r) { onResult(session, r); });
+            [this, session](const CommandResult& r) {
+                onResult(session, r);
+                m_references->onResult(session, r);
+            });
 }
 
 void Machine::onLinkState(const QString& controllerId, LinkState state, const QString& reason)
@@ -155,6 +169,7 @@ void Machine::onLinkState(const QString& controllerId, LinkState state, const QS
                                 .arg(controllerId, reason);
     Q_EMIT controllerFailed(controllerId, message);
     failMovesOf(lost, message);
+    m_references->fail(nullptr, message, false);
 }
 
 void Machine::stopAllBut(const ControllerSession* failed)

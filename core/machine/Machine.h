@@ -7,9 +7,12 @@
 #include <QTimer>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace stepdeck::machine {
+
+class MachineReferenceRun;
 
 // How a shown position is known (docs/machines.md): read back or confirmed by a reference
 // run, estimated by the host, or unknown until the axis is referenced.
@@ -48,8 +51,10 @@ public:
 
     void open();
     void close();
-    void stop();
-    void panic();
+    // Both return each controller's request (controller id -> id), so that a caller can wait
+    // for the acknowledgements; nothing is awaited here.
+    QMap<QString, RequestId> stop();
+    QMap<QString, RequestId> panic();
 
     // Positioning in the axes' units (absolute or relative). Checked as a whole first: every
     // axis known, its controller connected, an absolute target only on a referenced axis,
@@ -69,12 +74,26 @@ public:
     bool jog(const QMap<QString, double>& unitsPerSecond, QString* refusal);
     void endJog(); // every controller ramps down now; no further jog targets
 
+    // Referencing in the file's order (MachineReference.cpp): the named axes (empty: all)
+    // grouped by reference.order, lowest first. A group's axes run together, one reference
+    // request per controller with the file's direction per axis (models that choose it
+    // themselves get none); the next group starts only after every part of the previous one
+    // ended referenced. Returns the run's id, or 0 with *refusal (nothing sent): an unknown
+    // axis, a controller not connected or without reference runs, a run already going. Ends
+    // with referenceFinished; a failed part stops every controller and names its controller.
+    quint64 reference(const QStringList& axes, QString* refusal);
+    bool isReferencing() const;
+
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
 
 Q_SIGNALS:
     void statusChanged();
     void moveFinished(quint64 id, bool ok, const QString& message);
+    // A reference run ended: every axis referenced (ok), or why not.
+    void referenceFinished(quint64 id, bool ok, const QString& message);
+    // A group of a reference run starts: the machine axes it references.
+    void referenceGroupStarted(quint64 id, const QStringList& axes);
     // A controller failed (link lost, a refused or failed part of a move): the others were
     // told to stop. The message names the controller.
     void controllerFailed(const QString& controllerId, const QString& message);
@@ -83,6 +102,8 @@ Q_SIGNALS:
     void jogRefused(const QString& controllerId, const QString& message);
 
 private:
+    friend class MachineReferenceRun; // the run reaches the sessions as the machine does
+
     // One controller's share of a move: sent, then (for models whose move request ends when
     // the device accepted it) settling until a fresh status shows its axes at rest.
     struct Part
@@ -139,6 +160,7 @@ private:
     void jogByTargets(ControllerSession* session, const AxisVelocities& stepsPerS);
     void releaseTargetJogs();
     quint64 m_lastMove = 0;
+    std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
 };
 
 } // namespace stepdeck::machine

@@ -44,3 +44,7 @@ stepdeck_add_test(tst_cli_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_mach
                   LABELS integration)
 add_dependencies(tst_cli_machine stepdeck-cli)
 target_compile_definitions(tst_cli_machine PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# stepdeck-cli --machine FILE: an E-LAB and a Nanotec simulator on two ptys as one machine.
+stepdeck_add_test(tst_cli_machine_run SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_machine_run.cpp
+                  LABELS integration TIMEOUT 600)
+add_dependencies(tst_cli_machine_run stepdeck-cli)

@@ -158,6 +158,16 @@ void TestCliArguments::parse_usageErrors_data()
         << QStringList{"--address", "2", "--axes", "X=1", "status"} << "either --address or --axes";
     QTest::newRow("reset line") << QStringList{"--reset-line", "cts", "reset"}
                                 << "--reset-line needs rts or dtr";
+    QTest::newRow("machine and port")
+        << QStringList{"--machine", "m.json", "--port", "/dev/ttyUSB0", "status"}
+        << "either --machine or --model";
+    QTest::newRow("machine and model after the command")
+        << QStringList{"--machine", "m.json", "status", "--model", "nanotec"}
+        << "either --machine or --model";
+    QTest::newRow("machine and axes")
+        << QStringList{"--machine", "m.json", "--axes", "X=1", "status"} << "either --machine";
+    QTest::newRow("controller without machine")
+        << QStringList{"--controller", "table", "get", "speed"} << "--controller needs --machine";
 }
 
 void TestCliArguments::parse_usageErrors()

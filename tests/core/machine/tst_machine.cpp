@@ -125,6 +125,11 @@ bool moving(Device& d)
     return d.probe([&] { return d.sim()->isMoving(Axis::X); });
 }
 
+bool axisMoving(Device& d, Axis axis)
+{
+    return d.probe([&] { return d.sim()->isMoving(axis); });
+}
+
 bool still(Device& d)
 {
     return d.probe([&] { return d.sim()->standingStill(); });
@@ -158,6 +163,10 @@ private Q_SLOTS:
     void jog_unknownAxis_refusedNothingJogs();
     void jog_laserAxisByTargets_withElab_oneInputEndsBoth();
     void create_invalidDescription_refusedWithTheField();
+    void reference_zFirst_xAndATogetherAfterZIsReferenced();
+    void reference_unknownAxis_refusedNothingSent();
+    void reference_invertedAxis_fileDirectionIsTheMachines();
+    void reference_linkLostDuringRun_failsNamingTheControllerAndStopsTheOthers();
 
 private:
     MachineDescription description() const;
@@ -415,6 +424,102 @@ void TestMachine::create_invalidDescription_refusedWithTheField()
     QVERIFY(!other.create(d, &error));
     QVERIFY2(error.startsWith("axes[3].stepsPerUnit"), qPrintable(error));
     QVERIFY(!other.session("table"));
+}
+
+// The file's order at the devices: Z (order 0) runs alone; X on the table and A on the drive
+// (order 1) start only after Z is referenced, and together.
+void TestMachine::reference_zFirst_xAndATogetherAfterZIsReferenced()
+{
+    MachineDescription d = description();
+    d.axes[2].referenceOrder = 0; // Z
+    d.axes[0].referenceOrder = 1; // X
+    d.axes[3].referenceOrder = 1; // A
+    d.axes[1].referenceOrder = 2; // Y: not named below, so not run
+    QString error;
+    m_machine->destroy();
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    m_machine->open();
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->session("table")->linkState() == LinkState::Connected &&
+                                 m_machine->session("rotary")->linkState() == LinkState::Connected,
+                             10000);
+    writeElabSetup();
+    QSignalSpy finished(m_machine.get(), &Machine::referenceFinished);
+    QSignalSpy groups(m_machine.get(), &Machine::referenceGroupStarted);
+    QString refusal;
+    const quint64 id = m_machine->reference({"A", "X", "Z"}, &refusal);
+    QVERIFY2(id != 0, qPrintable(refusal));
+    // While Z searches its switch, X and A have not been sent theirs.
+    QTRY_VERIFY_WITH_TIMEOUT(axisMoving(*m_elab, Axis::Z), 10000);
+    QVERIFY(!axisMoving(*m_elab, Axis::X));
+    QVERIFY(!receivedContaining(*m_nanotec, "p4"));
+    QVERIFY(!moving(*m_nanotec));
+    QTRY_VERIFY_WITH_TIMEOUT(axisMoving(*m_elab, Axis::X) && moving(*m_nanotec), 30000);
+    QVERIFY(!axisMoving(*m_elab, Axis::Z));
+    QVERIFY(receivedContaining(*m_nanotec, "p4"));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    QCOMPARE(finished.at(0).at(0).toULongLong(), id);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QCOMPARE(groups.size(), 2);
+    QCOMPARE(groups.at(0).at(1).toStringList(), QStringList{"Z"});
+    QCOMPARE(groups.at(1).at(1).toStringList(), (QStringList{"X", "A"}));
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
+    QVERIFY(!axisMoving(*m_elab, Axis::Y));
+    for (const char* name : {"X", "Z", "A"}) {
+        const MachineAxisStatus a = m_machine->axisStatus(*m_machine->description().axis(name));
+        QCOMPARE(a.known, PositionKnowledge::Referenced);
+    }
+    QVERIFY(m_machine->axisStatus(*m_machine->description().axis("Y")).known !=
+            PositionKnowledge::Referenced);
+}
+
+// The file's direction is in the machine's sense: an inverted Z referenced "+1" searches the
+// negative way at the board, where its switch is (the simulated one at -20000 steps).
+void TestMachine::reference_invertedAxis_fileDirectionIsTheMachines()
+{
+    MachineDescription d = description();
+    d.axes[2].invert = true;          // Z
+    d.axes[2].referenceDirection = 1; // up, in the machine's sense
+    QString error;
+    m_machine->destroy();
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    m_machine->open();
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->session("table")->linkState() == LinkState::Connected,
+                             10000);
+    writeElabSetup();
+    QSignalSpy finished(m_machine.get(), &Machine::referenceFinished);
+    QString refusal;
+    QVERIFY2(m_machine->reference({"Z"}, &refusal) != 0, qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QVERIFY(qAbs(m_elab->probe([this] { return m_elab->sim()->position(Axis::Z); }) + 20000) <= 10);
+}
+
+void TestMachine::reference_unknownAxis_refusedNothingSent()
+{
+    QString refusal;
+    QCOMPARE(m_machine->reference({"X", "Q"}, &refusal), quint64(0));
+    QVERIFY2(refusal.contains("no axis Q"), qPrintable(refusal));
+    QVERIFY(!m_machine->isReferencing());
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
+    QVERIFY(!receivedContaining(*m_nanotec, "p4"));
+}
+
+void TestMachine::reference_linkLostDuringRun_failsNamingTheControllerAndStopsTheOthers()
+{
+    QSignalSpy finished(m_machine.get(), &Machine::referenceFinished);
+    QString refusal;
+    // Every axis has order 0: all of them run together.
+    QVERIFY2(m_machine->reference({}, &refusal) != 0, qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(axisMoving(*m_elab, Axis::X), 10000);
+    m_nanotec->vanish();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+    QVERIFY(!finished.at(0).at(1).toBool());
+    QVERIFY2(finished.at(0).at(2).toString().contains("rotary"),
+             qPrintable(finished.at(0).at(2).toString()));
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(receivedStop(*m_elab));
 }
 
 QTEST_GUILESS_MAIN(TestMachine)

@@ -1,0 +1,31 @@
+#pragma once
+#include "CliArguments.h"
+#include "CliMachineSession.h"
+#include "CliOutput.h"
+
+namespace stepdeck::cli {
+
+// The whole of one invocation with --model/--port (main.cpp): its own session, signals and
+// exit code.
+int runSingleController(const CliOptions& options);
+
+// The whole of one invocation with --machine FILE (CliMachineRun.cpp): loads and validates the
+// file (exit 12 unreadable, 7 invalid), runs move/jog/home/stop/panic/status/machine on the
+// machine and every other command on the controller --controller names (exit 2 without it
+// when the machine has several). SIGINT/SIGTERM/SIGHUP stop every controller, then exit 130.
+int runWithMachine(const CliOptions& options);
+
+// The machine commands (CliMachineMotion.cpp, CliMachineStatus.cpp).
+Outcome machineMove(CliMachineSession& m, const CliOptions& o);
+Outcome machineJog(CliMachineSession& m, const CliOptions& o);
+Outcome machineHome(CliMachineSession& m, const CliOptions& o);
+Outcome machineStop(CliMachineSession& m, const CliOptions& o);
+Outcome machinePanic(CliMachineSession& m, const CliOptions& o);
+Outcome machineStatus(CliMachineSession& m, const CliOptions& o);
+// Every axis' position in its unit, how it is known (one line, or JSON with --json).
+Outcome printMachinePositions(CliMachineSession& m, bool json);
+
+// The resolved controllers and axes (CliMachineCommands.cpp; `machine check`, `machine`).
+void printMachineTable(const machine::MachineDescription& m);
+
+} // namespace stepdeck::cli

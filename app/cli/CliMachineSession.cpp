@@ -1,0 +1,263 @@
+#include "CliMachineSession.h"
+#include "CliCommands.h"
+#include "CliText.h"
+#include "protocols/Registry.h"
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QTimer>
+#include <climits>
+
+namespace stepdeck::cli {
+
+using machine::Machine;
+using machine::MachineController;
+
+CliMachineSession::CliMachineSession(const CliOptions& options,
+                                     const machine::MachineDescription& description,
+                                     QObject* parent)
+    : QObject(parent), m_options(options), m_description(description)
+{
+    connect(&m_machine, &Machine::statusChanged, this, [this] { wake(); });
+    connect(&m_machine, &Machine::moveFinished, this, [this] { wake(); });
+    connect(&m_machine, &Machine::referenceFinished, this, [this] { wake(); });
+    connect(&m_machine, &Machine::controllerFailed, this,
+            [this](const QString& id, const QString& message) {
+                // Only a lost link makes the whole command a link failure; a refused or
+                // failed part is the move's own outcome.
+                const ControllerSession* s = m_machine.session(id);
+                if (m_connected && s && s->linkState() != LinkState::Connected &&
+                    m_lostController.isEmpty()) {
+                    m_lostController = id;
+                    m_lostMessage = message;
+                }
+                wake();
+            });
+}
+
+void CliMachineSession::wake()
+{
+    if (m_loop)
+        m_loop->quit();
+}
+
+bool CliMachineSession::waitFor(const std::function<bool()>& done, int timeoutMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (m_interrupted)
+            return false;
+        const qint64 left = timeoutMs < 0 ? -1 : timeoutMs - clock.elapsed();
+        if (timeoutMs >= 0 && left <= 0)
+            return false;
+        QEventLoop loop;
+        QTimer deadline;
+        deadline.setSingleShot(true);
+        connect(&deadline, &QTimer::timeout, &loop, &QEventLoop::quit);
+        if (left > 0)
+            deadline.start(int(qMin<qint64>(left, INT_MAX)));
+        m_loop = &loop;
+        loop.exec();
+        m_loop = nullptr;
+    }
+    return true;
+}
+
+bool CliMachineSession::pause(int ms)
+{
+    waitFor([] { return false; }, ms);
+    return !m_interrupted;
+}
+
+void CliMachineSession::watchSessions()
+{
+    for (const MachineController& c : m_description.controllers) {
+        ControllerSession* s = m_machine.session(c.id);
+        connect(s, &ControllerSession::requestFinished, this,
+                [this, id = c.id](const CommandResult& r) {
+                    if (r.id == 0)
+                        return;
+                    m_finished[id].insert(r.id, r);
+                    if (!r.ok())
+                        m_lastFailure = r.error;
+                    wake();
+                });
+        connect(s, &ControllerSession::linkStateChanged, this, [this] { wake(); });
+    }
+}
+
+Outcome CliMachineSession::openAll()
+{
+    QMap<QString, RequestId> opened; // each session's own open, for its failure's reason
+    for (const MachineController& c : m_description.controllers)
+        opened.insert(c.id, m_machine.session(c.id)->open());
+    const auto settled = [&] { // every link up, or one failed for good
+        bool allUp = true;
+        for (const MachineController& c : m_description.controllers) {
+            const LinkState state = m_machine.session(c.id)->linkState();
+            const auto finished = m_finished.value(c.id).constFind(opened.value(c.id));
+            if (state == LinkState::Lost ||
+                (finished != m_finished.value(c.id).cend() && !finished->ok()))
+                return true;
+            allUp = allUp && state == LinkState::Connected;
+        }
+        return allUp;
+    };
+    waitFor(settled, m_options.connectTimeoutMs);
+    if (m_interrupted)
+        return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
+    // The controller that failed is named first; a slower one still connecting is not at fault.
+    for (const MachineController& c : m_description.controllers) {
+        const CommandResult r = m_finished[c.id].take(opened.value(c.id));
+        if (r.id != 0 && !r.ok())
+            return Outcome::failure(
+                exitCodeFor(r.error),
+                CliText::tr("controller \"%1\" (%2): %3").arg(c.id, c.port, r.message));
+    }
+    for (const MachineController& c : m_description.controllers) {
+        if (m_machine.session(c.id)->linkState() != LinkState::Connected)
+            return Outcome::failure(
+                ExitLinkDown,
+                CliText::tr("controller \"%1\" (%2): %3")
+                    .arg(c.id, c.port,
+                         CliText::tr("no connection within %1 ms (powered, cabled, right model?)")
+                             .arg(m_options.connectTimeoutMs)));
+    }
+    return Outcome::success();
+}
+
+Outcome CliMachineSession::connectAll()
+{
+    if (m_connected)
+        return Outcome::success();
+    QString error;
+    if (!m_machine.create(m_description, &error))
+        return Outcome::usage(error);
+    watchSessions();
+    if (const Outcome opened = openAll(); !opened.ok())
+        return opened;
+    m_connected = true;
+    if (m_options.setupDefaults) {
+        if (const Outcome written = writeSetupDefaults(); !written.ok())
+            return written;
+    }
+    QMap<QString, RequestId> refreshes;
+    for (const MachineController& c : m_description.controllers)
+        refreshes.insert(c.id, m_machine.session(c.id)->refreshStatus());
+    const Outcome refreshed = waitAll(refreshes, CliSession::kRequestTimeoutMs);
+    m_lastFailure = ErrorKind::None; // from here on: the command's own requests
+    return refreshed;
+}
+
+// --setup-defaults on every controller, as CliContext::connect() does for one.
+Outcome CliMachineSession::writeSetupDefaults()
+{
+    QMap<QString, RequestId> writes;
+    for (const MachineController& c : m_description.controllers) {
+        ControllerSession* s = m_machine.session(c.id);
+        ParameterSet defaults = schemaDefaults(*s->model(), s->capabilities().axes);
+        for (const ParameterSpec& spec : s->model()->schema.specs()) {
+            if (!spec.warning.isEmpty())
+                defaults.remove(spec.name);
+        }
+        writes.insert(c.id, s->writeParameters(defaults, canVerify(*s->model(), defaults)));
+    }
+    Outcome result = waitAll(writes, CliSession::kRequestTimeoutMs);
+    if (!result.ok())
+        result.message = CliText::tr("--setup-defaults: %1").arg(result.message);
+    return result;
+}
+
+CommandResult CliMachineSession::waitResult(const QString& controllerId, RequestId id,
+                                            int timeoutMs)
+{
+    const ControllerSession* s = m_machine.session(controllerId);
+    waitFor(
+        [&] {
+            return m_finished.value(controllerId).contains(id) ||
+                   s->linkState() != LinkState::Connected;
+        },
+        timeoutMs);
+    if (m_finished[controllerId].contains(id))
+        return m_finished[controllerId].take(id);
+    if (s->linkState() != LinkState::Connected)
+        return CommandResult::failure(id, ErrorKind::LinkDown, CliText::tr("link lost"));
+    if (m_interrupted)
+        return CommandResult::failure(id, ErrorKind::Cancelled, CliText::tr("interrupted"));
+    return CommandResult::failure(
+        id, ErrorKind::Timeout,
+        CliText::tr("no result from the controller within %1 ms").arg(timeoutMs));
+}
+
+Outcome CliMachineSession::waitAll(const QMap<QString, RequestId>& ids, int timeoutMs)
+{
+    QElapsedTimer clock;
+    clock.start();
+    Outcome first = Outcome::success();
+    for (auto it = ids.cbegin(); it != ids.cend(); ++it) {
+        const int left = int(qMax<qint64>(0, timeoutMs - clock.elapsed()));
+        const CommandResult r = waitResult(it.key(), it.value(), left);
+        if (!r.ok() && first.ok())
+            first = Outcome::failure(exitCodeFor(r.error),
+                                     CliText::tr("controller \"%1\": %2").arg(it.key(), r.message));
+    }
+    if (!first.ok() && linkLost())
+        return linkLostOutcome();
+    return first;
+}
+
+Outcome CliMachineSession::linkLostOutcome() const
+{
+    QString why = m_lostMessage;
+    const ControllerSession* s = m_machine.session(m_lostController);
+    if (s && s->status().motionUnconfirmed)
+        why = CliText::tr("%1; %2").arg(why, Controller::mayStillBeMovingText());
+    return Outcome::failure(ExitLinkDown, why);
+}
+
+Outcome CliMachineSession::motionFailure(const QString& message) const
+{
+    if (linkLost())
+        return linkLostOutcome();
+    if (m_lastFailure != ErrorKind::None)
+        return Outcome::failure(exitCodeFor(m_lastFailure), message);
+    return Outcome::failure(ExitMotionAborted, message);
+}
+
+void CliMachineSession::interrupt()
+{
+    m_interrupted = true;
+    wake();
+}
+
+Outcome CliMachineSession::stopAll()
+{
+    if (!m_connected)
+        return Outcome::success();
+    const bool wasInterrupted = std::exchange(m_interrupted, false); // let the waits run
+    // Both at once: the jog's ramp and the model's stop go to every controller before any
+    // answer is awaited (a slow link never holds back another controller's stop).
+    m_machine.endJog();
+    QMap<QString, RequestId> ids = m_machine.stop();
+    QStringList cannot;
+    for (auto it = ids.begin(); it != ids.end();) {
+        const ControllerSession* s = m_machine.session(it.key());
+        if (s->linkState() != LinkState::Connected || !s->capabilities().stopCommand) {
+            if (s->linkState() == LinkState::Connected)
+                cannot << it.key();
+            it = ids.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    Outcome result = waitAll(ids, kStopWaitMs);
+    m_interrupted = wasInterrupted;
+    if (result.ok() && !cannot.isEmpty())
+        result = Outcome::failure(ExitUnsupported,
+                                  CliText::tr("controller \"%1\" has no stop command and cannot "
+                                              "be stopped")
+                                      .arg(cannot.join(QStringLiteral("\", \""))));
+    return result;
+}
+
+} // namespace stepdeck::cli

@@ -1,0 +1,74 @@
+#pragma once
+#include "CliArguments.h"
+#include "CliOutput.h"
+#include "machine/Machine.h"
+#include <QHash>
+#include <QObject>
+#include <functional>
+
+class QEventLoop;
+
+namespace stepdeck::cli {
+
+// Synchronous face of a core Machine for `stepdeck-cli --machine FILE` (issue 19): connects
+// every controller, waits for moves, reference runs and requests with local event loops, and
+// remembers which controller failed, so a command can exit 6 naming it. The Machine owns the
+// sessions; its destruction stops every controller (ControllerSession::destroy).
+class CliMachineSession : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kStopWaitMs = 3000;
+
+    CliMachineSession(const CliOptions& options, const machine::MachineDescription& description,
+                      QObject* parent = nullptr);
+
+    machine::Machine& machine() { return m_machine; }
+    const machine::MachineDescription& description() const { return m_description; }
+
+    // Creates the sessions (no I/O), opens every link and waits until all are Connected (at
+    // most options.connectTimeoutMs), then reads every status once; with --setup-defaults
+    // writes each model's schema defaults first. Failure names the controller (exit 6).
+    Outcome connectAll();
+    bool isConnected() const { return m_connected; }
+
+    // Waits until done() or timeout (ms < 0: no deadline); false on timeout or interrupt.
+    bool waitFor(const std::function<bool()>& done, int timeoutMs);
+    bool pause(int ms);
+    // Waits for one request of one controller; the result (a failure on timeout).
+    CommandResult waitResult(const QString& controllerId, RequestId id, int timeoutMs);
+    // Waits for every request of `ids` (controller id -> request) and names the first failure.
+    Outcome waitAll(const QMap<QString, RequestId>& ids, int timeoutMs);
+
+    // A controller's link was lost (or its part of a motion failed) since the connection:
+    // its id, and exit 6 with the machine's message naming it.
+    bool linkLost() const { return !m_lostController.isEmpty(); }
+    Outcome linkLostOutcome() const;
+    // The exit code for a failed move or reference run with `message`.
+    Outcome motionFailure(const QString& message) const;
+
+    void interrupt();
+    bool interrupted() const { return m_interrupted; }
+    // SIGINT/SIGTERM/SIGHUP and failures: every jog ramps down and every controller gets its
+    // stop at once; success when every controller acknowledged it.
+    Outcome stopAll();
+
+private:
+    void wake();
+    void watchSessions();
+    Outcome openAll();
+    Outcome writeSetupDefaults();
+
+    CliOptions m_options;
+    machine::MachineDescription m_description;
+    machine::Machine m_machine;
+    QHash<QString, QHash<RequestId, CommandResult>> m_finished; // per controller id
+    QEventLoop* m_loop = nullptr;
+    bool m_connected = false;
+    bool m_interrupted = false;
+    QString m_lostController;
+    QString m_lostMessage;
+    ErrorKind m_lastFailure = ErrorKind::None;
+};
+
+} // namespace stepdeck::cli

@@ -1,0 +1,154 @@
+// `stepdeck-cli --machine FILE status [--json]` and the positions that move, jog and home end
+// with: every machine axis in its unit, marked by how it is known (docs/cli.md, "Machines").
+#include "CliMachineRun.h"
+#include "CliText.h"
+
+namespace stepdeck::cli {
+
+using machine::MachineAxis;
+using machine::MachineAxisStatus;
+using machine::MachineState;
+using machine::PositionKnowledge;
+
+namespace {
+QString knownKey(PositionKnowledge known)
+{
+    switch (known) {
+    case PositionKnowledge::Referenced:
+        return QStringLiteral("referenced");
+    case PositionKnowledge::Estimated:
+        return QStringLiteral("estimated");
+    case PositionKnowledge::Unknown:
+        break;
+    }
+    return QStringLiteral("unknown");
+}
+
+QString stateKey(MachineState state)
+{
+    switch (state) {
+    case MachineState::Idle:
+        return QStringLiteral("idle");
+    case MachineState::Moving:
+        return QStringLiteral("moving");
+    case MachineState::Fault:
+        return QStringLiteral("fault");
+    case MachineState::Disconnected:
+        return QStringLiteral("disconnected");
+    case MachineState::LinkLost:
+        break;
+    }
+    return QStringLiteral("link-lost");
+}
+
+// mm and deg with 3 decimals, steps whole: the device's count converted back.
+QString valueText(const MachineAxis& a, double value)
+{
+    return a.unit == machine::AxisUnit::Step ? QString::number(qint64(value))
+                                             : QString::number(value, 'f', 3);
+}
+
+QString markText(PositionKnowledge known)
+{
+    switch (known) {
+    case PositionKnowledge::Referenced:
+        return QString();
+    case PositionKnowledge::Estimated:
+        return CliText::tr(" (estimated)");
+    case PositionKnowledge::Unknown:
+        break;
+    }
+    return CliText::tr(" (unknown)");
+}
+
+QJsonArray axesJson(CliMachineSession& m)
+{
+    QJsonArray axes;
+    for (const MachineAxis& a : m.description().axes) {
+        const MachineAxisStatus s = m.machine().axisStatus(a);
+        axes.append(QJsonObject{{"name", a.name},
+                                {"controller", a.controller},
+                                {"axis", axisName(a.axis)},
+                                {"unit", machine::unitKey(a.unit)},
+                                {"position", s.position},
+                                {"steps", s.steps},
+                                {"known", knownKey(s.known)},
+                                {"moving", s.moving}});
+    }
+    return axes;
+}
+
+QJsonArray controllersJson(CliMachineSession& m)
+{
+    QJsonArray controllers;
+    for (const machine::MachineController& c : m.description().controllers) {
+        const ControllerSession* s = m.machine().session(c.id);
+        controllers.append(QJsonObject{{"id", c.id},
+                                       {"model", c.modelId},
+                                       {"port", c.port},
+                                       {"link", linkStateName(s->linkState())}});
+    }
+    return controllers;
+}
+
+QString positionsText(CliMachineSession& m)
+{
+    QStringList parts;
+    for (const MachineAxis& a : m.description().axes) {
+        const MachineAxisStatus s = m.machine().axisStatus(a);
+        parts << QStringLiteral("%1=%2%3").arg(a.name, valueText(a, s.position), markText(s.known));
+    }
+    return parts.join(QLatin1Char(' '));
+}
+} // namespace
+
+Outcome printMachinePositions(CliMachineSession& m, bool json)
+{
+    if (json)
+        printJson(QJsonObject{{"axes", axesJson(m)}});
+    else
+        printLine(positionsText(m));
+    return Outcome::success();
+}
+
+Outcome machineStatus(CliMachineSession& m, const CliOptions& o)
+{
+    if (!o.args.isEmpty())
+        return Outcome::usage(CliText::tr("status takes no arguments"));
+    if (Outcome connected = m.connectAll(); !connected.ok())
+        return connected;
+    QString cause;
+    const MachineState state = m.machine().state(&cause);
+    if (o.json) {
+        printJson(QJsonObject{{"machine", m.description().name},
+                              {"state", stateKey(state)},
+                              {"stateCause", cause.isEmpty() ? QJsonValue() : QJsonValue(cause)},
+                              {"controllers", controllersJson(m)},
+                              {"axes", axesJson(m)}});
+        return Outcome::success();
+    }
+    printLine(cause.isEmpty()
+                  ? CliText::tr("machine \"%1\": %2").arg(m.description().name, stateKey(state))
+                  : CliText::tr("machine \"%1\": %2 (controller \"%3\")")
+                        .arg(m.description().name, stateKey(state), cause));
+    for (const machine::MachineController& c : m.description().controllers)
+        printLine(QStringLiteral("  %1 %2 %3 %4")
+                      .arg(c.id, -12)
+                      .arg(c.modelId, -10)
+                      .arg(c.port, -16)
+                      .arg(linkStateName(m.machine().session(c.id)->linkState())));
+    for (const MachineAxis& a : m.description().axes) {
+        const MachineAxisStatus s = m.machine().axisStatus(a);
+        printLine(CliText::tr("  %1  %2 %3  (%4 steps on %5.%6)%7%8")
+                      .arg(a.name)
+                      .arg(valueText(a, s.position), 12)
+                      .arg(machine::unitKey(a.unit), -5)
+                      .arg(s.steps)
+                      .arg(a.controller, axisName(a.axis))
+                      .arg(markText(s.known))
+                      .arg(s.moving ? CliText::tr(" moving") : QString()));
+    }
+    return Outcome::success();
+}
+
+} // namespace stepdeck::cli
