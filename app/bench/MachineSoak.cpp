@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <QSet>
+#include <cstdio>
 #include <algorithm>
 #include <memory>
 
@@ -349,6 +350,10 @@ void MachineSoakRun::cmdMove()
         ok = ended && m_movesEnded.value(id).first;
         m_fig.hangs += ended ? 0 : 1;
         ++m_fig.results[ok ? QStringLiteral("ok") : QStringLiteral("moveFailed")];
+        static const bool verbose = qEnvironmentVariableIsSet("STEPDECK_SOAK_VERBOSE");
+        if (verbose && ended && !ok)
+            std::fprintf(stderr, "machine move failed: %s\n",
+                         qPrintable(m_movesEnded.value(id).second));
     }
     for (Link* link : m_links) {
         for (auto it = link->axes.cbegin(); it != link->axes.cend(); ++it) {
