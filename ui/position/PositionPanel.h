@@ -16,6 +16,7 @@ class DroValueLabel;
 class ElidedLabel;
 class GoToWidget;
 class MachineContext;
+class MachineDro;
 class ReferenceRunner;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
@@ -38,6 +39,8 @@ public:
     QString detailText(Axis axis) const; // the line below: machine steps, or the target
     QString limitsText(Axis axis) const;
     GoToWidget* goTo() const { return m_goTo; }
+    // The logical axes of a machine in their units; shown only while a machine is open.
+    MachineDro* machineDro() const { return m_machineDro; }
     // The runner whose current axes the read-out shows as referencing.
     void setReferenceRunner(const ReferenceRunner* runner);
     // Every word the state badge can show, in the current language.
@@ -80,6 +83,7 @@ private:
     QTimer* m_moveTick;
     ConnectionGate* m_gate;
     GoToWidget* m_goTo;
+    MachineDro* m_machineDro = nullptr;
     const ReferenceRunner* m_referencing = nullptr;
 };
 

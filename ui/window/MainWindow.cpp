@@ -12,7 +12,9 @@
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/KeyboardJog.h"
+#include "machine/MachineBar.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineControl.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
 #include "messages/StatusMessages.h"
@@ -63,11 +65,14 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     m_gamepadSource = new GamepadJogSource(gamepad, this);
     m_gamepadSource->loadSettings();
     m_jog->addSource(m_gamepadSource);
+    m_machineBar = new MachineBar(m_context, this);
+    m_machineControl = new MachineControl(m_context, m_messages, this);
     buildActions();
 
     auto* toolbar = addToolBar(tr("Connection"));
     toolbar->setObjectName(QStringLiteral("connectionToolbar"));
-    toolbar->addWidget(m_connection);
+    QAction* single = toolbar->addWidget(m_connection);
+    m_machineBar->setToolBarActions(single, toolbar->addWidget(m_machineBar));
     toolbar->setMovable(false);
 
     auto* central = new QWidget(this);
@@ -125,6 +130,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
         m_messages->show(Owner::Setup, text, StatusMessages::Severity::Info, 8000);
     });
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
+    connect(m_context, &MachineContext::machineChanged, this, &MainWindow::updateTitle);
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);
@@ -169,7 +175,12 @@ void MainWindow::buildActions()
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
     m_connectAction = new QAction(tr("&Connect / Disconnect"), this);
     m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
-    connect(m_connectAction, &QAction::triggered, m_connection, &ConnectionBar::toggleConnection);
+    connect(m_connectAction, &QAction::triggered, this, [this] {
+        if (m_context->hasMachine())
+            m_machineBar->toggleConnection();
+        else
+            m_connection->toggleConnection();
+    });
     m_resetAction = new QAction(tr("Reset &controller"), this);
     connect(m_resetAction, &QAction::triggered, this, [this] {
         m_jogPanel->releaseAll();
@@ -391,6 +402,10 @@ void MainWindow::stopAll()
     const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
     m_reference->runner()->cancel(tr("Referencing stopped."));
+    if (m_context->hasMachine()) {
+        m_machineControl->stop(); // every controller at once
+        return;
+    }
     if (!m_context->session()->isCreated()) {
         showError(tr("Stop: not connected"));
         return;
@@ -402,6 +417,10 @@ void MainWindow::stopAll()
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
+    if (m_context->hasMachine()) {
+        m_machineControl->panic(); // every controller at once
+        return;
+    }
     if (!m_context->session()->isCreated()) {
         showError(tr("Panic: not connected"));
         return;
@@ -442,8 +461,18 @@ void MainWindow::onLinkState(LinkState state, const QString& reason)
     updateTitle();
 }
 
+bool MainWindow::openMachine(const QString& path)
+{
+    m_jogPanel->releaseAll();
+    return m_machineControl->open(path);
+}
+
 void MainWindow::updateTitle()
 {
+    if (m_context->hasMachine()) {
+        setWindowTitle(m_machineControl->title());
+        return;
+    }
     const ModelInfo* model = m_context->model();
     QString title = QStringLiteral("StepDeck");
     if (model)

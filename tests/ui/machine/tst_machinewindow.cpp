@@ -1,0 +1,340 @@
+// The main window running a machine of two controllers (issue 19): an E-LAB X/Y/Z table and a
+// Nanotec rotary A, each simulated on a pseudo-terminal of its own. Opening a machine file
+// (an invalid one names the field and opens nothing), the controller selector, one connect for
+// all, STOP reaching both devices and the read-out in the machine's units.
+#include "../LayoutChecks.h"
+#include "../UiTestSupport.h"
+#include "ModelBench.h"
+#include "PtyDevice.h"
+#include "common/LedIndicator.h"
+#include "machine/Machine.h"
+#include "machine/MachineBar.h"
+#include "machine/MachineDro.h"
+#include "position/PositionPanel.h"
+#include "safety/SafetyBar.h"
+#include <QComboBox>
+#include <QDir>
+#include <QPushButton>
+#include <QTemporaryDir>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestMachineWindow : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+    void openMachine_invalidFile_messageNamesTheFieldNothingOpened();
+    void openMachine_twoControllers_titleSelectorAndSelectedSession();
+    void selectController_pagesRebuildOnTheOtherSession();
+    void connectAll_bothLampsConnected_disconnectAllClosesBoth();
+    void closeMachine_singleControllerBarBackAndConnectable();
+    void stop_duringMoveOnBothControllers_bothDevicesStandStill();
+    void stop_controllerWithoutStopCommand_messageNamesIt();
+    void dro_afterMoveX2point5_shows2point500mm();
+    void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
+
+private:
+    QString writeFile(const QByteArray& json);
+    QByteArray machineJson() const;
+    bool openAndConnect();
+    void writeElabSetup();
+    ui::MainWindow* window() const { return m_f->window.get(); }
+    machine::Machine* machine() const { return window()->context()->machine(); }
+
+    std::unique_ptr<PtyDevice> m_elab;
+    std::unique_ptr<PtyDevice> m_nanotec;
+    std::unique_ptr<UiFixture> m_f;
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestMachineWindow::init()
+{
+    QSettings().clear();
+    m_elab = std::make_unique<PtyDevice>(QStringLiteral("elab"));
+    m_nanotec = std::make_unique<PtyDevice>(QStringLiteral("nanotec"));
+    m_dir = std::make_unique<QTemporaryDir>();
+    m_f = std::make_unique<UiFixture>();
+    window()->show();
+}
+
+void TestMachineWindow::cleanup()
+{
+    m_f.reset(); // the window stops and closes every controller first
+    m_elab.reset();
+    m_nanotec.reset();
+    m_dir.reset();
+}
+
+QString TestMachineWindow::writeFile(const QByteArray& json)
+{
+    const QString path = m_dir->filePath(QStringLiteral("test.machine.json"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        qFatal("cannot write %s", qPrintable(path));
+    file.write(json);
+    return path;
+}
+
+QByteArray TestMachineWindow::machineJson() const
+{
+    return QStringLiteral(R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Table with rotary axis",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "%1" },
+    { "id": "rotary", "model": "nanotec", "port": "%2", "axes": { "X": 1 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
+    { "name": "A", "controller": "rotary", "axis": "X", "unit": "deg", "stepsPerUnit": 100 }
+  ]
+})")
+        .arg(m_elab->path(), m_nanotec->path())
+        .toUtf8();
+}
+
+bool TestMachineWindow::openAndConnect()
+{
+    if (!window()->openMachine(writeFile(machineJson())))
+        return false;
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "rotary"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        if (!QTest::qWaitFor([s] { return s->linkState() == LinkState::Connected; }, 10000))
+            return false;
+    }
+    writeElabSetup();
+    return true;
+}
+
+// The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
+void TestMachineWindow::writeElabSetup()
+{
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    const RequestId id = table->writeParameters(setupBeforeMotionDefaults(*table->model()), false);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
+                                         [id](const QList<QVariant>& args) {
+                                             const auto r = args.at(0).value<CommandResult>();
+                                             return r.id == id && r.ok();
+                                         }),
+                             10000);
+}
+
+void TestMachineWindow::openMachine_invalidFile_messageNamesTheFieldNothingOpened()
+{
+    QByteArray json = machineJson();
+    json.replace(R"("stepsPerUnit": 800)", R"("stepsPerUnit": -2)");
+    const QString title = window()->windowTitle();
+    QVERIFY(!window()->openMachine(writeFile(json)));
+    QVERIFY2(window()->lastError().contains(QStringLiteral("axes[2].stepsPerUnit")),
+             qPrintable(window()->lastError()));
+    QVERIFY(!window()->context()->hasMachine());
+    QCOMPARE(window()->context()->session(), m_f->session); // the single controller's
+    QCOMPARE(window()->windowTitle(), title);
+    QTRY_VERIFY(!window()->machineBar()->isVisible());
+    QTRY_VERIFY(window()->connectionBar()->isVisible());
+    // Nothing reached either device.
+    QCOMPARE(m_elab->receivedCount(), 0);
+    QCOMPARE(m_nanotec->receivedCount(), 0);
+}
+
+void TestMachineWindow::openMachine_twoControllers_titleSelectorAndSelectedSession()
+{
+    QVERIFY(window()->openMachine(writeFile(machineJson())));
+    QVERIFY(window()->windowTitle().contains(QStringLiteral("Table with rotary axis")));
+    QTRY_VERIFY(window()->machineBar()->isVisible());
+    QTRY_VERIFY(!window()->connectionBar()->isVisible());
+    QComboBox* selector = window()->machineBar()->controllerCombo();
+    QTRY_VERIFY(selector->isVisible());
+    QCOMPARE(selector->count(), 2);
+    QCOMPARE(window()->context()->selectedController(), QStringLiteral("table"));
+    QCOMPARE(window()->context()->session(), machine()->session(QStringLiteral("table")));
+    QCOMPARE(window()->context()->modelId(), QStringLiteral("elab"));
+    // Links are not opened by opening the file.
+    QCOMPARE(machine()->session(QStringLiteral("table"))->linkState(), LinkState::Disconnected);
+}
+
+void TestMachineWindow::selectController_pagesRebuildOnTheOtherSession()
+{
+    QVERIFY(openAndConnect());
+    QSignalSpy rebuilt(window()->context(), &ui::MachineContext::modelChanged);
+    QSignalSpy relayed(m_f->session, &ControllerSession::statusChanged);
+    QComboBox* selector = window()->machineBar()->controllerCombo();
+    selector->setCurrentIndex(selector->findData(QStringLiteral("rotary")));
+    Q_EMIT selector->activated(selector->currentIndex());
+    QCOMPARE(rebuilt.size(), 1);
+    QCOMPARE(window()->context()->session(), machine()->session(QStringLiteral("rotary")));
+    QCOMPARE(window()->context()->modelId(), QStringLiteral("nanotec"));
+    QVERIFY(window()->context()->isConnected());
+    // The panels hear the selected controller: its status polls arrive at the session they
+    // connected to when they were built.
+    QTRY_VERIFY_WITH_TIMEOUT(relayed.size() >= 3, 10000);
+    const auto status = relayed.last().at(0).value<MachineStatus>();
+    QVERIFY(status.axes.contains(Axis::X));
+    QVERIFY(!status.axes.contains(Axis::Z)); // the drive on the bus, not the E-LAB board
+}
+
+void TestMachineWindow::connectAll_bothLampsConnected_disconnectAllClosesBoth()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineBar* bar = window()->machineBar();
+    QCOMPARE(bar->lamp(QStringLiteral("table"))->state(), ui::LedIndicator::State::On);
+    QCOMPARE(bar->lamp(QStringLiteral("rotary"))->state(), ui::LedIndicator::State::On);
+    QVERIFY(bar->lampText(QStringLiteral("rotary")).contains(QStringLiteral("Connected")));
+    QCOMPARE(bar->connectButton()->text(), QStringLiteral("Disconnect all"));
+    bar->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(bar->lamp(QStringLiteral("table"))->state(),
+                              ui::LedIndicator::State::Off, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(bar->lamp(QStringLiteral("rotary"))->state(),
+                              ui::LedIndicator::State::Off, 10000);
+    QCOMPARE(bar->connectButton()->text(), QStringLiteral("Connect all"));
+}
+
+void TestMachineWindow::closeMachine_singleControllerBarBackAndConnectable()
+{
+    QVERIFY(openAndConnect());
+    window()->context()->closeMachine();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(!window()->context()->hasMachine());
+    QTRY_VERIFY(window()->connectionBar()->isVisible());
+    QVERIFY(!window()->windowTitle().contains(QStringLiteral("Table with rotary axis")));
+    QVERIFY(m_f->connectSim()); // today's single controller, unchanged
+    QCOMPARE(window()->context()->session(), m_f->session);
+}
+
+void TestMachineWindow::stop_duringMoveOnBothControllers_bothDevicesStandStill()
+{
+    QVERIFY(openAndConnect());
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("X"), 200.0}, {QStringLiteral("A"), 3600.0}}, false,
+                             &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving() && m_nanotec->moving(), 10000);
+    window()->safetyBar()->stopButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->receivedStop() && m_nanotec->receivedStop(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(m_elab->position() < 80000);
+    QVERIFY(m_nanotec->position() < 3000); // stopped, not at its limit switch
+    QVERIFY2(window()->lastError().contains(QStringLiteral("table, rotary")),
+             qPrintable(window()->lastError()));
+}
+
+void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
+{
+    // The laser marker's motor axes have no stop command (Capabilities::stopCommand).
+    const QByteArray json = R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Board and marker",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "sim" },
+    { "id": "marker", "model": "laser-axis", "port": "sim" }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "U", "controller": "marker", "axis": "X", "unit": "steps" }
+  ]
+})";
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "marker"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    window()->safetyBar()->stopButton()->click();
+    const QString text = window()->lastError();
+    QVERIFY2(text.contains(QStringLiteral("Stop sent to table.")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
+}
+
+void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QVERIFY(dro->isVisibleTo(window()));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    QCOMPARE(dro->unitText(QStringLiteral("A")), QStringLiteral("deg"));
+    QSignalSpy finished(machine(), &machine::Machine::moveFinished);
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("X"), 2.5}, {QStringLiteral("A"), 25.0}}, false,
+                             &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QCOMPARE(m_elab->position(), qint64(1000)); // at the device: 2.5 mm x 400 steps/mm
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("2.500"),
+                              10000);
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("A")), QStringLiteral("25.000"),
+                              10000);
+    QVERIFY(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("1000")));
+    // Not referenced since the connect: the position is counted, not known from the origin.
+    QCOMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("UNKNOWN"));
+}
+
+void TestMachineWindow::layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut()
+{
+    const QByteArray json = R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Six-axis cell with a long name",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "sim" },
+    { "id": "wrist", "model": "nanotec", "port": "sim", "axes": { "X": 1, "Y": 2, "Z": 3 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
+    { "name": "A", "controller": "wrist", "axis": "X", "unit": "deg", "stepsPerUnit": 88.8889 },
+    { "name": "B", "controller": "wrist", "axis": "Y", "unit": "deg", "stepsPerUnit": 100 },
+    { "name": "C", "controller": "wrist", "axis": "Z", "unit": "steps" }
+  ]
+})";
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "wrist"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    const QSize available(1366, 768 - 40); // room for a panel or title bar
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(
+        minimum.width() <= available.width() && minimum.height() <= available.height(),
+        qPrintable(QStringLiteral("minimum %1x%2").arg(minimum.width()).arg(minimum.height())));
+    QCOMPARE(QGuiApplication::primaryScreen()->availableGeometry().size(), QSize(1366, 768));
+    window()->raisePage(window()->positionPanel());
+    QCoreApplication::processEvents();
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE(dro->stateText(QStringLiteral("C")), QStringLiteral("UNKNOWN"));
+    const QStringList cut = clippedTexts(dro) + clippedTexts(window()->machineBar());
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+    QVERIFY(window()->safetyBar()->stopButton()->visibleRegion().boundingRect().width() > 100);
+}
+
+// The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
+// its docks for the screen it starts on.
+int main(int argc, char** argv)
+{
+    const QString config = QDir::temp().filePath(
+        QStringLiteral("stepdeck-machine-screen-%1.json").arg(QCoreApplication::applicationPid()));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(R"({"screens": [{"name": "laptop", "x": 0, "y": 0, "width": 1366,
+            "height": 768, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})") < 0)
+        return 2;
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    int result = 0;
+    {
+        QApplication app(argc, argv);
+        TestMachineWindow test;
+        QTEST_SET_MAIN_SOURCE_PATH
+        result = QTest::qExec(&test, argc, argv);
+    }
+    QFile::remove(config);
+    return result;
+}
+
+#include "tst_machinewindow.moc"
