@@ -62,6 +62,13 @@ public:
                                [this](const QByteArray& f) { return m_sim->isStopFrame(f); });
         });
     }
+    void vanish() // the USB adapter pulled
+    {
+        probe([this] {
+            m_end->vanish();
+            return true;
+        });
+    }
     int receivedCount()
     {
         return probe([this] { return int(m_sim->receivedFrames().size()); });

@@ -7,6 +7,9 @@
 #include "ModelBench.h"
 #include "PtyDevice.h"
 #include "common/LedIndicator.h"
+#include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
 #include "machine/Machine.h"
 #include "machine/MachineBar.h"
 #include "machine/MachineDro.h"
@@ -34,6 +37,7 @@ private Q_SLOTS:
     void closeMachine_singleControllerBarBackAndConnectable();
     void stop_duringMoveOnBothControllers_bothDevicesStandStill();
     void stop_controllerWithoutStopCommand_messageNamesIt();
+    void jog_otherControllerLinkLost_heldJogDoesNotResume();
     void dro_afterMoveX2point5_shows2point500mm();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
 
@@ -249,6 +253,28 @@ void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
     const QString text = window()->lastError();
     QVERIFY2(text.contains(QStringLiteral("Stop sent to table.")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
+}
+
+void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
+{
+    QVERIFY(openAndConnect());
+    // The pages show the table: its Z jogs from the stick, held for the whole test.
+    ui::JoystickPad* z = window()->jogPanel()->zStick();
+    pointerPress(z, z->centre());
+    pointerMove(z, z->pointFor(QPointF(0.0, -1.0)));
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::Z), 10000);
+    m_nanotec->vanish();
+    // The machine stops the table and the window names the failed controller.
+    QTRY_VERIFY_WITH_TIMEOUT(window()->lastError().contains(QStringLiteral("\"rotary\"")),
+                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
+    // The stick is still held: its input was released, so the jog does not start again.
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    QSignalSpy polls(table, &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 10, 10000);
+    QVERIFY(m_elab->still());
+    QVERIFY(!window()->jogController()->isJogging());
+    pointerRelease(z, z->centre());
 }
 
 void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
