@@ -99,6 +99,11 @@ public:
     void disconnectMachine();
     // Connected or connecting: some controller of the machine.
     bool machineLinkBusy() const;
+    // The whole machine as one status for what speaks of all of it (the safety banner): the
+    // worst link over the controllers; panic, setup incomplete, motion unconfirmed and busy of
+    // any; each axis referenced only if it is on every controller that has it. Without a
+    // machine: the session's link and status.
+    MachineStatus machineWideStatus(LinkState* link) const;
 
 Q_SIGNALS:
     void machineChanged(); // a machine was opened or closed

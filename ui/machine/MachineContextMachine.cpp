@@ -147,4 +147,40 @@ bool MachineContext::machineLinkBusy() const
     return false;
 }
 
+MachineStatus MachineContext::machineWideStatus(LinkState* link) const
+{
+    const ControllerSession* selected = session();
+    *link = selected->isCreated() ? selected->linkState() : LinkState::Disconnected;
+    if (!m_machine)
+        return selected->status();
+    MachineStatus out = selected->status();
+    bool unreported = false;
+    for (const machine::MachineController& c : m_machine->description().controllers) {
+        const ControllerSession* s = m_machine->session(c.id);
+        // Lost is worse than disconnected, disconnected than connecting (Machine::state).
+        static const QList<LinkState> kBetterFirst{LinkState::Connected, LinkState::Connecting,
+                                                   LinkState::Disconnected, LinkState::Lost};
+        if (kBetterFirst.indexOf(s->linkState()) > kBetterFirst.indexOf(*link))
+            *link = s->linkState();
+        const MachineStatus& st = s->status();
+        out.panic = out.panic || st.panic;
+        out.setupIncomplete = out.setupIncomplete || st.setupIncomplete;
+        out.motionUnconfirmed = out.motionUnconfirmed || st.motionUnconfirmed;
+        out.busy = out.busy || st.busy;
+        for (auto it = st.axes.cbegin(); it != st.axes.cend(); ++it) {
+            if (!out.axes.contains(it.key())) {
+                out.axes.insert(it.key(), it.value());
+                continue;
+            }
+            AxisStatus& merged = out.axes[it.key()];
+            merged.referenced = merged.referenced && it.value().referenced;
+            merged.moving = merged.moving || it.value().moving;
+        }
+        unreported = unreported || st.axes.isEmpty();
+    }
+    if (unreported)
+        out.axes.clear(); // a controller without a status yet: nothing is "all referenced"
+    return out;
+}
+
 } // namespace stepdeck::ui

@@ -133,8 +133,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     connect(m_context, &MachineContext::machineChanged, this, &MainWindow::updateTitle);
     // One controller of the machine failed and the machine stopped the others: a held jog
     // input must not start them again (it counts as released until let go).
-    connect(m_context, &MachineContext::machineControllerFailed, m_jogPanel,
-            &JogPanel::releaseAll);
+    connect(m_context, &MachineContext::machineControllerFailed, m_jogPanel, &JogPanel::releaseAll);
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);

@@ -38,6 +38,7 @@ private Q_SLOTS:
     void stop_duringMoveOnBothControllers_bothDevicesStandStill();
     void stop_controllerWithoutStopCommand_messageNamesIt();
     void jog_otherControllerLinkLost_heldJogDoesNotResume();
+    void banner_tableReferencedRotaryNot_machineNotReady();
     void dro_afterMoveX2point5_shows2point500mm();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
 
@@ -265,8 +266,7 @@ void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::Z), 10000);
     m_nanotec->vanish();
     // The machine stops the table and the window names the failed controller.
-    QTRY_VERIFY_WITH_TIMEOUT(window()->lastError().contains(QStringLiteral("\"rotary\"")),
-                             10000);
+    QTRY_VERIFY_WITH_TIMEOUT(window()->lastError().contains(QStringLiteral("\"rotary\"")), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
     // The stick is still held: its input was released, so the jog does not start again.
     ControllerSession* table = machine()->session(QStringLiteral("table"));
@@ -275,6 +275,21 @@ void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
     QVERIFY(m_elab->still());
     QVERIFY(!window()->jogController()->isJogging());
     pointerRelease(z, z->centre());
+}
+
+void TestMachineWindow::banner_tableReferencedRotaryNot_machineNotReady()
+{
+    QVERIFY(openAndConnect());
+    // The pages show the table; every axis of it is referenced, the rotary drive's is not.
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(std::all_of(table->status().axes.cbegin(), table->status().axes.cend(),
+                                         [](const AxisStatus& a) { return a.referenced; }),
+                             20000);
+    QCOMPARE(window()->context()->session(), table);
+    QVERIFY2(!window()->safetyBar()->bannerText().startsWith(QStringLiteral("Ready")),
+             qPrintable(window()->safetyBar()->bannerText()));
+    QCOMPARE(window()->safetyBar()->bannerSeverity(), QStringLiteral("warning"));
 }
 
 void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
