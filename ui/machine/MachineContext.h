@@ -99,6 +99,13 @@ public:
     void disconnectMachine();
     // Connected or connecting: some controller of the machine.
     bool machineLinkBusy() const;
+    // Jog of the selected controller's axes as the machine's axes they drive, through
+    // Machine::jog: the rates (steps/s, positive = the machine axis' positive direction)
+    // become unit/s and are limited to each axis' maxJogSpeed; the machine's one jog input
+    // renews or ends every controller it jogs. False with the reason (nothing sent) for an axis
+    // the machine does not use, or what Machine::jog refuses.
+    bool jogMachine(const AxisVelocities& stepsPerS, QString* refusal);
+    void endMachineJog();
     // The whole machine as one status for what speaks of all of it (the safety banner): the
     // worst link over the controllers; panic, setup incomplete, motion unconfirmed and busy of
     // any; each axis referenced only if it is on every controller that has it. Without a

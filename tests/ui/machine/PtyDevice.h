@@ -69,6 +69,10 @@ public:
             return true;
         });
     }
+    QList<QByteArray> frames()
+    {
+        return probe([this] { return m_sim->receivedFrames(); });
+    }
     int receivedCount()
     {
         return probe([this] { return int(m_sim->receivedFrames().size()); });

@@ -15,9 +15,11 @@
 #include "machine/MachineDro.h"
 #include "position/PositionPanel.h"
 #include "safety/SafetyBar.h"
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 using namespace stepdeck;
@@ -39,6 +41,7 @@ private Q_SLOTS:
     void stop_controllerWithoutStopCommand_messageNamesIt();
     void jog_otherControllerLinkLost_heldJogDoesNotResume();
     void banner_tableReferencedRotaryNot_machineNotReady();
+    void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
     void dro_afterMoveX2point5_shows2point500mm();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
 
@@ -64,10 +67,13 @@ void TestMachineWindow::init()
     m_dir = std::make_unique<QTemporaryDir>();
     m_f = std::make_unique<UiFixture>();
     window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
 }
 
 void TestMachineWindow::cleanup()
 {
+    if (QGuiApplication::mouseButtons() & Qt::LeftButton)
+        QTest::mouseRelease(window()->windowHandle(), Qt::LeftButton);
     m_f.reset(); // the window stops and closes every controller first
     m_elab.reset();
     m_nanotec.reset();
@@ -290,6 +296,39 @@ void TestMachineWindow::banner_tableReferencedRotaryNot_machineNotReady()
     QVERIFY2(!window()->safetyBar()->bannerText().startsWith(QStringLiteral("Ready")),
              qPrintable(window()->safetyBar()->bannerText()));
     QCOMPARE(window()->safetyBar()->bannerSeverity(), QStringLiteral("warning"));
+}
+
+void TestMachineWindow::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
+{
+    // A at most 4 deg/s = 400 steps/s; the held key asks for 500 steps/s (half the jog speed).
+    QByteArray json = machineJson();
+    json.replace(R"("unit": "deg", "stepsPerUnit": 100 })",
+                 R"("unit": "deg", "stepsPerUnit": 100, "maxJogSpeed": 4 })");
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "rotary"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    window()->context()->selectController(QStringLiteral("rotary"));
+    QCOMPARE(window()->jogController()->maxSpeed(Axis::X), 1000.0);
+    window()->jogPanel()->keyboardCheck()->setChecked(true);
+    window()->jogPanel()->xyPad()->window()->setFocus();
+    QTest::keyPress(window(), Qt::Key_Right); // held: +X of the drive, i.e. +A
+    QTRY_VERIFY_WITH_TIMEOUT(m_nanotec->moving(Axis::X), 10000);
+    ControllerSession* rotary = machine()->session(QStringLiteral("rotary"));
+    QSignalSpy polls(rotary, &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 10, 10000);
+    // At the drive: the speed-mode frequency ('o', manual 6.2) never went above 400.
+    const QRegularExpression speed(QStringLiteral("^#1o(\\d+)\r$"));
+    int highest = 0;
+    for (const QByteArray& f : m_nanotec->frames()) {
+        const QRegularExpressionMatch m = speed.match(QString::fromLatin1(f));
+        if (m.hasMatch())
+            highest = qMax(highest, m.captured(1).toInt());
+    }
+    QCOMPARE(highest, 400);
+    QTest::keyRelease(window(), Qt::Key_Right);
 }
 
 void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
