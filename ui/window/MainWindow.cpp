@@ -470,6 +470,13 @@ bool MainWindow::openMachine(const QString& path)
     return m_machineControl->open(path);
 }
 
+void MainWindow::closeMachine()
+{
+    m_jogPanel->releaseAll();
+    m_reference->runner()->cancel(tr("Referencing stopped."));
+    m_context->closeMachine();
+}
+
 void MainWindow::updateTitle()
 {
     if (m_context->hasMachine()) {

@@ -91,6 +91,8 @@ public Q_SLOTS:
     // in the message line naming the field, and nothing is opened. For File > Open machine
     // and `stepdeck --machine FILE`.
     bool openMachine(const QString& path);
+    // Every controller of the machine stops and closes; the single-controller bar returns.
+    void closeMachine();
     void stopAll();
     void panicAll();
     void showError(const QString& message);

@@ -210,7 +210,7 @@ void TestMachineWindow::connectAll_bothLampsConnected_disconnectAllClosesBoth()
 void TestMachineWindow::closeMachine_singleControllerBarBackAndConnectable()
 {
     QVERIFY(openAndConnect());
-    window()->context()->closeMachine();
+    window()->closeMachine();
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
     QVERIFY(!window()->context()->hasMachine());
     QTRY_VERIFY(window()->connectionBar()->isVisible());
