@@ -5,6 +5,7 @@
 #include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
+#include "machine/MachineGoTo.h"
 #include "position/DroValueLabel.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
@@ -31,8 +32,10 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     // controller and stay out of the machine's read-out).
     auto* outer = new QVBoxLayout(this);
     m_machineDro = new MachineDro(context, this);
+    m_machineGoTo = new MachineGoTo(context, this);
     auto* controllerPart = new QWidget(this);
     outer->addWidget(m_machineDro);
+    outer->addWidget(m_machineGoTo);
     outer->addWidget(controllerPart);
     outer->addStretch(1);
     auto* layout = new QVBoxLayout(controllerPart);
@@ -62,6 +65,7 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     layout->addWidget(m_goTo);
     auto showPart = [this, controllerPart] {
         m_machineDro->setVisible(m_context->hasMachine());
+        m_machineGoTo->setVisible(m_context->hasMachine());
         controllerPart->setVisible(!m_context->hasMachine());
     };
     connect(context, &MachineContext::machineChanged, this, showPart);

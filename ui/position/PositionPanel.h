@@ -17,6 +17,7 @@ class ElidedLabel;
 class GoToWidget;
 class MachineContext;
 class MachineDro;
+class MachineGoTo;
 class ReferenceRunner;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
@@ -41,6 +42,7 @@ public:
     GoToWidget* goTo() const { return m_goTo; }
     // The logical axes of a machine in their units; shown only while a machine is open.
     MachineDro* machineDro() const { return m_machineDro; }
+    MachineGoTo* machineGoTo() const { return m_machineGoTo; }
     // The runner whose current axes the read-out shows as referencing.
     void setReferenceRunner(const ReferenceRunner* runner);
     // Every word the state badge can show, in the current language.
@@ -84,6 +86,7 @@ private:
     ConnectionGate* m_gate;
     GoToWidget* m_goTo;
     MachineDro* m_machineDro = nullptr;
+    MachineGoTo* m_machineGoTo = nullptr;
     const ReferenceRunner* m_referencing = nullptr;
 };
 

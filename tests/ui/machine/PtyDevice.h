@@ -73,6 +73,7 @@ public:
     {
         return probe([this] { return m_sim->receivedFrames(); });
     }
+    qsizetype acceptedMoveCount() const { return m_sim->acceptedMoves().size(); } // in probe()
     int receivedCount()
     {
         return probe([this] { return int(m_sim->receivedFrames().size()); });

@@ -13,11 +13,14 @@
 #include "machine/Machine.h"
 #include "machine/MachineBar.h"
 #include "machine/MachineDro.h"
+#include "machine/MachineGoTo.h"
+#include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
 #include "safety/SafetyBar.h"
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -44,6 +47,8 @@ private Q_SLOTS:
     void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
     void dro_afterMoveX2point5_shows2point500mm();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
+    void goTo_unreferencedAxis_refusedNothingSent();
+    void goTo_referencedX_deviceAtTheNearestStep();
 
 private:
     QString writeFile(const QByteArray& json);
@@ -272,7 +277,14 @@ void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::Z), 10000);
     m_nanotec->vanish();
     // The machine stops the table and the window names the failed controller.
-    QTRY_VERIFY_WITH_TIMEOUT(window()->lastError().contains(QStringLiteral("\"rotary\"")), 10000);
+    // (In the message log: a later message may be the newest on the line by then.)
+    auto named = [this] {
+        const auto& log = window()->messages()->log();
+        return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
+            return entry.text.contains(QStringLiteral("controller \"rotary\" lost its link"));
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(named(), 10000);
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
     // The stick is still held: its input was released, so the jog does not start again.
     ControllerSession* table = machine()->session(QStringLiteral("table"));
@@ -388,9 +400,44 @@ void TestMachineWindow::layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut()
     QCoreApplication::processEvents();
     ui::MachineDro* dro = window()->positionPanel()->machineDro();
     QTRY_COMPARE(dro->stateText(QStringLiteral("C")), QStringLiteral("UNKNOWN"));
-    const QStringList cut = clippedTexts(dro) + clippedTexts(window()->machineBar());
+    const QStringList cut = clippedTexts(dro) + clippedTexts(window()->machineBar()) +
+                            clippedTexts(window()->positionPanel()->machineGoTo());
     QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
     QVERIFY(window()->safetyBar()->stopButton()->visibleRegion().boundingRect().width() > 100);
+}
+
+void TestMachineWindow::goTo_unreferencedAxis_refusedNothingSent()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    QVERIFY(goTo->isVisibleTo(window()));
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    goTo->targetBox()->setValue(1.25);
+    goTo->goButton()->click();
+    QVERIFY2(goTo->resultText().contains(QStringLiteral("X is not referenced")),
+             qPrintable(goTo->resultText()));
+    // Three more status polls: a move sent before them would have reached the board by now.
+    QSignalSpy polls(machine()->session(QStringLiteral("table")),
+                     &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
+    QCOMPARE(m_elab->probe([this] { return int(m_elab->acceptedMoveCount()); }), 0);
+}
+
+void TestMachineWindow::goTo_referencedX_deviceAtTheNearestStep()
+{
+    QVERIFY(openAndConnect());
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(
+        table->status().axes.value(Axis::X).referenced && !table->status().anyMoving(), 20000);
+    const qint64 origin = m_elab->position();
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    goTo->targetBox()->setValue(1.25);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(500)); // 1.25 mm x 400 steps/mm
+    QVERIFY(m_elab->still());
 }
 
 // The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
