@@ -1,8 +1,9 @@
 // stepdeck: the operator and technician GUI.
-//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--poll-interval MS] [--screenshot DIR]
-//   [--lang en|de]
+//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--machine FILE] [--poll-interval MS]
+//   [--screenshot DIR] [--lang en|de]
 #include "../common/SignalPipe.h"
 #include "connection/ConnectionBar.h"
+#include "machine/MachineControl.h"
 #include "protocols/Registry.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotScript.h"
@@ -77,7 +78,12 @@ int main(int argc, char** argv)
     const QCommandLineOption pollInterval(QStringLiteral("poll-interval"),
                                           QStringLiteral("Status poll interval in milliseconds."),
                                           QStringLiteral("MS"));
-    parser.addOptions({simulate, model, port, screenshot, lang, pollInterval});
+    const QCommandLineOption machineFile(
+        QStringLiteral("machine"),
+        QStringLiteral("Open the machine described in FILE (docs/machines.md) and connect its "
+                       "controllers."),
+        QStringLiteral("FILE"));
+    parser.addOptions({simulate, model, port, machineFile, screenshot, lang, pollInterval});
     if (asksForTextOnly(argc, argv)) {
         const QCoreApplication textOnly(argc, argv);
         parser.process(textOnly); // prints help or version (or the usage error) and exits
@@ -126,14 +132,20 @@ int main(int argc, char** argv)
     }
     if (!modelId.isEmpty())
         window.connectionBar()->setSelectedModel(modelId);
-    if (!portSpec.isEmpty()) {
+    if (parser.isSet(machineFile)) {
+        // An invalid file is named in the window's message line (and here); nothing is opened.
+        if (window.openMachine(parser.value(machineFile)))
+            window.machineControl()->connect();
+        else
+            QTextStream(stderr) << window.lastError() << "\n";
+    } else if (!portSpec.isEmpty()) {
         window.connectionBar()->setPortSpec(portSpec);
         window.connectionBar()->connectNow();
     }
     window.show();
 
     if (parser.isSet(screenshot)) {
-        if (portSpec.isEmpty()) {
+        if (portSpec.isEmpty() && !parser.isSet(machineFile)) {
             QTextStream(stderr) << "--screenshot needs --simulate MODEL or --port PORT\n";
             return 2;
         }

@@ -70,7 +70,7 @@ void JogController::releaseAll()
     m_renew.stop();
     m_targetJog->release();
     if (wasActive) {
-        m_context->session()->endJog();
+        endJog();
         Q_EMIT targetsChanged(m_targets);
     }
 }
@@ -182,8 +182,9 @@ void JogController::stopSending()
         AxisVelocities zeros;
         for (Axis axis : m_context->axes())
             zeros.insert(axis, 0.0);
-        m_context->session()->setJogVelocity(zeros);
-        m_context->session()->endJog();
+        if (!m_context->hasMachine())
+            m_context->session()->setJogVelocity(zeros);
+        endJog();
     }
     if (!m_targets.isEmpty()) {
         m_targets.clear();
@@ -239,7 +240,10 @@ void JogController::updateOnce(bool renewal)
     if (changed || renewal) {
         // Renews the lease with what was just proven. Controllers without a jog command get
         // short targets, the next one only while the input is still proven held.
-        if (m_context->capabilities().jogByTargets)
+        if (m_context->hasMachine()) {
+            if (!sendToMachine())
+                return;
+        } else if (m_context->capabilities().jogByTargets)
             m_targetJog->setVelocities(m_targets);
         else
             m_context->session()->setJogVelocity(m_targets);
@@ -248,6 +252,26 @@ void JogController::updateOnce(bool renewal)
         Q_EMIT targetsChanged(m_targets);
     if (!m_renew.isActive())
         m_renew.start();
+}
+
+bool JogController::sendToMachine()
+{
+    // A machine jogs its axes in their units, within their maxJogSpeed, all on one input
+    // (issue 19). A refusal sends nothing: the input counts as released until let go.
+    QString why;
+    if (m_context->jogMachine(m_targets, &why))
+        return true;
+    releaseAll();
+    noteRefusal(why, RefusalCause::Other);
+    return false;
+}
+
+void JogController::endJog()
+{
+    if (m_context->hasMachine())
+        m_context->endMachineJog();
+    else
+        m_context->session()->endJog();
 }
 
 } // namespace stepdeck::ui

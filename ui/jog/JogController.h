@@ -64,6 +64,8 @@ private:
     void updateOnce(bool renewal);
     AxisVelocities provenTargets();
     void stopSending();
+    bool sendToMachine(); // false: refused, every input released
+    void endJog();
     void loadSettings();
     QString refusal() const;
     enum class RefusalCause { None, NotConnected, Panic, Other };

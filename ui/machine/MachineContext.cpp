@@ -1,5 +1,6 @@
 #include "MachineContext.h"
 #include "drives/PositionErrorResetButton.h"
+#include "machine/Machine.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QSettings>
@@ -38,28 +39,35 @@ MachineContext::MachineContext(QObject* parent)
 
 RequestId MachineContext::writeParameters(const ParameterSet& values, bool verify)
 {
-    const RequestId id = m_session->writeParameters(values, verify);
+    const RequestId id = session()->writeParameters(values, verify);
     m_pendingWrites.insert(id, values);
     return id;
 }
 
 RequestId MachineContext::readParameters(const QStringList& names)
 {
-    const RequestId id = m_session->readParameters(names);
+    const RequestId id = session()->readParameters(names);
     m_pendingReads.insert(id);
     return id;
 }
 
 MachineContext::~MachineContext()
 {
+    // Quietly: the window's panels may be half destroyed by now.
+    for (const QMetaObject::Connection& c : std::as_const(m_relay))
+        disconnect(c);
+    if (m_machine) {
+        m_machine->disconnect(this);
+        m_machine->destroy(); // every controller's stop, flushed, before its port closes
+    }
     m_session->destroy();
 }
 
 Capabilities MachineContext::capabilities() const
 {
     // The session's are the controller's own (they may depend on the axis map).
-    if (m_session->isCreated())
-        return m_session->capabilities();
+    if (session()->isCreated())
+        return session()->capabilities();
     return m_model ? m_model->capabilities : Capabilities{};
 }
 
@@ -80,12 +88,21 @@ QString MachineContext::modelId() const
 
 bool MachineContext::isConnected() const
 {
-    return m_session->isCreated() && m_session->linkState() == LinkState::Connected;
+    return session()->isCreated() && session()->linkState() == LinkState::Connected;
+}
+
+QString MachineContext::portName() const
+{
+    return m_selected ? m_selected->spec().port : m_port;
 }
 
 void MachineContext::selectModel(const QString& modelId)
 {
     const ModelInfo* model = findModel(modelId);
+    if (m_machine) {
+        m_singleModel = model; // shown again when the machine is closed
+        return;
+    }
     if (model == m_model)
         return;
     if (m_session->isCreated())
@@ -99,6 +116,11 @@ void MachineContext::selectModel(const QString& modelId)
 bool MachineContext::connectTo(const ModelInfo& model, const ConnectionSpec& given, QString* error)
 {
     // The core's messages name this window's buttons, not CLI commands (issue 16).
+    if (m_machine) {
+        if (error)
+            *error = tr("A machine is open: close it to connect a single controller.");
+        return false;
+    }
     ConnectionSpec spec = given;
     spec.options.actionNames.insert(PositionErrorResetButton::operationName(),
                                     PositionErrorResetButton::actionName());
@@ -118,18 +140,26 @@ bool MachineContext::connectTo(const ModelInfo& model, const ConnectionSpec& giv
 
 void MachineContext::disconnectFromController()
 {
-    if (m_session->isCreated())
+    if (m_machine)
+        disconnectMachine();
+    else if (m_session->isCreated())
         m_session->close();
 }
 
 void MachineContext::stop()
 {
-    m_session->stop();
+    if (m_machine)
+        m_machine->stop(); // every controller at once
+    else
+        m_session->stop();
 }
 
 void MachineContext::panic()
 {
-    m_session->panic();
+    if (m_machine)
+        m_machine->panic();
+    else
+        m_session->panic();
     // Only a panic the model can send loses positions; EMIS and laser axes refuse it (the
     // refusal says why), and their positions stay what they were.
     if (capabilities().panic)
@@ -138,7 +168,7 @@ void MachineContext::panic()
 
 void MachineContext::reset()
 {
-    m_session->reset();
+    session()->reset();
     forgetKnownParameters();
 }
 
@@ -203,6 +233,8 @@ void MachineContext::loadSoftLimits()
 
 void MachineContext::setSoftLimit(Axis axis, const AxisSoftLimit& limit)
 {
+    if (m_machine)
+        return; // a machine's limits are its file's (in units), enforced by its sessions
     AxisSoftLimit l = limit;
     l.rangeSet = l.rangeSet && l.maximum > l.minimum;
     m_softLimits.set(axis, l);

@@ -1,6 +1,12 @@
 #pragma once
 #include "controller/ControllerSession.h"
 #include <QObject>
+#include <memory>
+
+namespace stepdeck::machine {
+class Machine;
+struct MachineDescription;
+} // namespace stepdeck::machine
 
 namespace stepdeck::ui {
 
@@ -17,6 +23,14 @@ struct AxisUnits
 
 // The one object every panel shares: the controller session (the only path to the machine),
 // the selected model and the operator's display settings. Panels rebuild on modelChanged().
+//
+// With a machine of several controllers open (issue 19, openMachine()) the context also holds
+// the core Machine and a selected controller: session() is the selected controller's session,
+// so every per-controller page works on it as on a single controller. Panels connect to
+// session() once, when they are built (before any machine is open): that object stays the
+// panels' signal source, and with a machine open it relays the selected controller's signals
+// (signal-to-signal connections; see relayFrom()). Switching the controller emits
+// modelChanged() (panels rebuild) and the new controller's link state and status.
 class MachineContext : public QObject
 {
     Q_OBJECT
@@ -24,15 +38,15 @@ public:
     explicit MachineContext(QObject* parent = nullptr);
     ~MachineContext() override;
 
-    ControllerSession* session() const { return m_session; }
+    ControllerSession* session() const { return m_selected ? m_selected : m_session; }
     const ModelInfo* model() const { return m_model; }
     Capabilities capabilities() const;
     QList<Axis> axes() const;
     ParameterSchema schema() const;
     QString modelId() const;
-    QString portName() const { return m_port; }
+    QString portName() const;
     bool isConnected() const;
-    const MachineStatus& status() const { return m_session->status(); }
+    const MachineStatus& status() const { return session()->status(); }
 
     // Chooses the model the panels show before (or without) a connection.
     void selectModel(const QString& modelId);
@@ -70,7 +84,39 @@ public:
     // Capabilities::positionUnit, never a guess from the model id.
     QString machineUnitName() const;
 
+    // The machine (issue 19). openMachine reads and validates the file (MachineFile) and, only
+    // if all of it is valid, ends the single-controller link and creates the machine's
+    // sessions (links not opened: connectMachine()). False with *error naming the field.
+    bool openMachine(const QString& path, QString* error);
+    bool openMachine(const machine::MachineDescription& description, QString* error);
+    void closeMachine(); // every controller stops and closes; back to a single controller
+    machine::Machine* machine() const { return m_machine.get(); }
+    bool hasMachine() const { return m_machine != nullptr; }
+    QString machinePath() const { return m_machinePath; }
+    QString selectedController() const { return m_selectedId; }
+    void selectController(const QString& controllerId);
+    void connectMachine();
+    void disconnectMachine();
+    // Connected or connecting: some controller of the machine.
+    bool machineLinkBusy() const;
+    // Jog of the selected controller's axes as the machine's axes they drive, through
+    // Machine::jog: the rates (steps/s, positive = the machine axis' positive direction)
+    // become unit/s and are limited to each axis' maxJogSpeed; the machine's one jog input
+    // renews or ends every controller it jogs. False with the reason (nothing sent) for an axis
+    // the machine does not use, or what Machine::jog refuses.
+    bool jogMachine(const AxisVelocities& stepsPerS, QString* refusal);
+    void endMachineJog();
+    // The whole machine as one status for what speaks of all of it (the safety banner): the
+    // worst link over the controllers; panic, setup incomplete, motion unconfirmed and busy of
+    // any; each axis referenced only if it is on every controller that has it. Without a
+    // machine: the session's link and status.
+    MachineStatus machineWideStatus(LinkState* link) const;
+
 Q_SIGNALS:
+    void machineChanged(); // a machine was opened or closed
+    // A controller of the machine failed; the others were told to stop (Machine).
+    void machineControllerFailed(const QString& controllerId, const QString& message);
+    void machineStatusChanged();
     void modelChanged();
     void unitsChanged();
     // A UI-level event: the operator pressed panic (positions are lost from now on).
@@ -87,8 +133,16 @@ private:
     void loadUnits();
     void loadSoftLimits();
     QString settingsPrefix(Axis axis) const;
+    void relayFrom(ControllerSession* selected);
+    void announceLink(); // the selected session's link state and status to every listener
 
     ControllerSession* m_session;
+    std::unique_ptr<machine::Machine> m_machine;
+    ControllerSession* m_selected = nullptr; // the machine's selected controller
+    QString m_selectedId;
+    QString m_machinePath;
+    const ModelInfo* m_singleModel = nullptr; // the connection bar's model while a machine is open
+    QList<QMetaObject::Connection> m_relay;
     const ModelInfo* m_model = nullptr;
     QString m_port;
     QMap<Axis, AxisUnits> m_units;

@@ -132,19 +132,4 @@ void MachineFileActions::rebuildRecentMenu()
     });
 }
 
-QString machineFileSummary(const QString& path, bool* valid)
-{
-    machine::MachineFileError error;
-    const auto loaded = machine::MachineFile::load(path, &error);
-    const QString file = QFileInfo(path).fileName();
-    *valid = loaded.has_value();
-    if (!loaded)
-        return MachineFileActions::tr("Machine file %1: %2").arg(file, error.text());
-    QStringList names;
-    for (const machine::MachineAxis& a : loaded->axes)
-        names << a.name;
-    return MachineFileActions::tr("Machine file %1 is valid: \"%2\" with the axes %3")
-        .arg(file, loaded->name, names.join(QLatin1Char(' ')));
-}
-
 } // namespace stepdeck::ui

@@ -57,8 +57,4 @@ private:
     QPointer<MachineEditor> m_editor;
 };
 
-// What the window says about a machine file until it runs machines itself: "valid, its axes"
-// or the validator's first error naming the field; *valid tells which.
-QString machineFileSummary(const QString& path, bool* valid);
-
 } // namespace stepdeck::ui

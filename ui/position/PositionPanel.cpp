@@ -4,6 +4,8 @@
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineDro.h"
+#include "machine/MachineGoTo.h"
 #include "position/DroValueLabel.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
@@ -25,7 +27,19 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     // The estimate advances between status reads.
     m_moveTick->setInterval(100);
     connect(m_moveTick, &QTimer::timeout, this, [this] { onStatus(m_context->status()); });
-    auto* layout = new QVBoxLayout(this);
+    // With a machine open (issue 19) its logical axes in units stand in place of the
+    // selected controller's axes in steps (units, offsets, limits and go-to are per
+    // controller and stay out of the machine's read-out).
+    auto* outer = new QVBoxLayout(this);
+    m_machineDro = new MachineDro(context, this);
+    m_machineGoTo = new MachineGoTo(context, this);
+    auto* controllerPart = new QWidget(this);
+    outer->addWidget(m_machineDro);
+    outer->addWidget(m_machineGoTo);
+    outer->addWidget(controllerPart);
+    outer->addStretch(1);
+    auto* layout = new QVBoxLayout(controllerPart);
+    layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(m_grid);
     auto* buttons = new QHBoxLayout;
     auto* units = new QToolButton(this);
@@ -49,7 +63,13 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     offsets->addStretch(1);
     layout->addLayout(offsets);
     layout->addWidget(m_goTo);
-    layout->addStretch(1);
+    auto showPart = [this, controllerPart] {
+        m_machineDro->setVisible(m_context->hasMachine());
+        m_machineGoTo->setVisible(m_context->hasMachine());
+        controllerPart->setVisible(!m_context->hasMachine());
+    };
+    connect(context, &MachineContext::machineChanged, this, showPart);
+    showPart();
     connect(limits, &QToolButton::clicked, this, &PositionPanel::editSoftLimits);
     connect(context, &MachineContext::softLimitsChanged, this,
             [this] { onStatus(m_context->status()); });

@@ -16,6 +16,8 @@ class DroValueLabel;
 class ElidedLabel;
 class GoToWidget;
 class MachineContext;
+class MachineDro;
+class MachineGoTo;
 class ReferenceRunner;
 
 // Digital read-out: per axis the work position in user units (large digits), the machine
@@ -38,6 +40,9 @@ public:
     QString detailText(Axis axis) const; // the line below: machine steps, or the target
     QString limitsText(Axis axis) const;
     GoToWidget* goTo() const { return m_goTo; }
+    // The logical axes of a machine in their units; shown only while a machine is open.
+    MachineDro* machineDro() const { return m_machineDro; }
+    MachineGoTo* machineGoTo() const { return m_machineGoTo; }
     // The runner whose current axes the read-out shows as referencing.
     void setReferenceRunner(const ReferenceRunner* runner);
     // Every word the state badge can show, in the current language.
@@ -80,6 +85,8 @@ private:
     QTimer* m_moveTick;
     ConnectionGate* m_gate;
     GoToWidget* m_goTo;
+    MachineDro* m_machineDro = nullptr;
+    MachineGoTo* m_machineGoTo = nullptr;
     const ReferenceRunner* m_referencing = nullptr;
 };
 

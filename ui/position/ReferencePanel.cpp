@@ -1,6 +1,7 @@
 #include "ReferencePanel.h"
 #include "common/ElidedLabel.h"
 #include "common/LedIndicator.h"
+#include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "position/ReferenceRunner.h"
 #include <QComboBox>
@@ -163,7 +164,46 @@ QString ReferencePanel::messageText() const
 
 void ReferencePanel::referenceAll()
 {
+    if (machine::Machine* m = m_context->machine()) {
+        referenceMachine(m);
+        return;
+    }
     m_runner->start(ReferenceRunner::plan(directions(), order()));
+}
+
+// With a machine open, "Reference all" is the machine's: every axis of every controller in the
+// file's order and directions (Machine::reference), not this panel's per-controller plan.
+void ReferencePanel::referenceMachine(machine::Machine* m)
+{
+    if (m_listenedMachine != m)
+        listenTo(m);
+    QString refusal;
+    m_machineRun = m->reference({}, &refusal);
+    if (m_machineRun == 0) {
+        onFinished(false, tr("Referencing refused: %1").arg(refusal));
+        return;
+    }
+    m_cancel->setEnabled(true);
+    onStatus(m_context->status());
+}
+
+void ReferencePanel::listenTo(machine::Machine* m)
+{
+    m_listenedMachine = m;
+    connect(m, &machine::Machine::referenceGroupStarted, this,
+            [this](quint64 id, const QStringList& axes) {
+                if (id == m_machineRun)
+                    onProgress(0, 1,
+                               tr("Referencing %1\u2026").arg(axes.join(QStringLiteral(", "))));
+            });
+    connect(m, &machine::Machine::referenceFinished, this,
+            [this](quint64 id, bool ok, const QString& message) {
+                if (id != m_machineRun)
+                    return;
+                m_machineRun = 0;
+                onFinished(ok, ok ? tr("Every axis of the machine is referenced.")
+                                  : tr("Referencing failed: %1").arg(message));
+            });
 }
 
 void ReferencePanel::referenceAxis(Axis axis)
@@ -184,7 +224,7 @@ void ReferencePanel::onStatus(const MachineStatus& status)
 {
     const bool live = m_context->isConnected();
     // Referencing needs a connection (and no run in progress).
-    const bool idle = !m_runner->isRunning();
+    const bool idle = !m_runner->isRunning() && m_machineRun == 0;
     m_all->setEnabled(live && idle);
     for (const Row& row : std::as_const(m_rows))
         row.run->setEnabled(live && idle);

@@ -1,5 +1,6 @@
 #pragma once
 #include "model/MachineStatus.h"
+#include <QPointer>
 #include <QWidget>
 
 class QComboBox;
@@ -8,6 +9,10 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+
+namespace stepdeck::machine {
+class Machine;
+}
 
 namespace stepdeck::ui {
 
@@ -44,6 +49,8 @@ private:
     };
     void rebuild();
     void store();
+    void referenceMachine(machine::Machine* m);
+    void listenTo(machine::Machine* m);
     void onStatus(const MachineStatus& status);
     void onProgress(int stage, int stages, const QString& text);
     void onFinished(bool ok, const QString& message);
@@ -58,6 +65,8 @@ private:
     QPushButton* m_cancel;
     QProgressBar* m_progress;
     ElidedLabel* m_message;
+    quint64 m_machineRun = 0; // the machine's reference run under way (Machine::reference)
+    QPointer<machine::Machine> m_listenedMachine;
     QList<Axis> m_successAxes; // referenced by the last successful run, still referenced
 };
 

@@ -87,6 +87,7 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
         refresh();
     });
     connect(context, &MachineContext::modelChanged, this, &SafetyBar::applyCapabilities);
+    connect(context, &MachineContext::machineStatusChanged, this, &SafetyBar::refresh);
     connect(session, &ControllerSession::linkStateChanged, this, &SafetyBar::applyCapabilities);
     applyCapabilities();
     refresh();
@@ -165,16 +166,17 @@ void SafetyBar::onLinkState(LinkState state)
 
 void SafetyBar::refresh()
 {
-    const MachineStatus& status = m_context->status();
-    bool allReferenced = !status.axes.isEmpty() && m_context->isConnected();
+    // With a machine open the banner speaks of all of it, not of the controller the pages show.
+    LinkState link = LinkState::Disconnected;
+    const MachineStatus status = m_context->machineWideStatus(&link);
+    bool allReferenced = !status.axes.isEmpty() && link == LinkState::Connected;
     for (const AxisStatus& axis : status.axes)
         allReferenced = allReferenced && axis.referenced;
     if (allReferenced)
         m_positionsLost = false;
 
     SafetyBannerInput in;
-    in.link = m_context->session()->isCreated() ? m_context->session()->linkState()
-                                                : LinkState::Disconnected;
+    in.link = link;
     in.status = status;
     in.positionsLost = m_positionsLost;
     in.movingWhenLinkEnded = m_movingWhenLinkEnded;

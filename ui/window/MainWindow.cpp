@@ -12,7 +12,9 @@
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/KeyboardJog.h"
+#include "machine/MachineBar.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineControl.h"
 #include "machine/MachineFileActions.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
@@ -64,11 +66,14 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     m_gamepadSource = new GamepadJogSource(gamepad, this);
     m_gamepadSource->loadSettings();
     m_jog->addSource(m_gamepadSource);
+    m_machineBar = new MachineBar(m_context, this);
+    m_machineControl = new MachineControl(m_context, m_messages, this);
     buildActions();
 
     auto* toolbar = addToolBar(tr("Connection"));
     toolbar->setObjectName(QStringLiteral("connectionToolbar"));
-    toolbar->addWidget(m_connection);
+    QAction* single = toolbar->addWidget(m_connection);
+    m_machineBar->setToolBarActions(single, toolbar->addWidget(m_machineBar));
     toolbar->setMovable(false);
 
     auto* central = new QWidget(this);
@@ -126,6 +131,10 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
         m_messages->show(Owner::Setup, text, StatusMessages::Severity::Info, 8000);
     });
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateTitle);
+    connect(m_context, &MachineContext::machineChanged, this, &MainWindow::updateTitle);
+    // One controller of the machine failed and the machine stopped the others: a held jog
+    // input must not start them again (it counts as released until let go).
+    connect(m_context, &MachineContext::machineControllerFailed, m_jogPanel, &JogPanel::releaseAll);
     connect(m_context, &MachineContext::modelChanged, this, &MainWindow::updateModelDocks);
     connect(m_jogPanel->keyboardCheck(), &QCheckBox::toggled, m_keyboardAction,
             &QAction::setChecked);
@@ -170,7 +179,12 @@ void MainWindow::buildActions()
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
     m_connectAction = new QAction(tr("&Connect / Disconnect"), this);
     m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
-    connect(m_connectAction, &QAction::triggered, m_connection, &ConnectionBar::toggleConnection);
+    connect(m_connectAction, &QAction::triggered, this, [this] {
+        if (m_context->hasMachine())
+            m_machineBar->toggleConnection();
+        else
+            m_connection->toggleConnection();
+    });
     m_resetAction = new QAction(tr("Reset &controller"), this);
     connect(m_resetAction, &QAction::triggered, this, [this] {
         m_jogPanel->releaseAll();
@@ -278,13 +292,13 @@ void MainWindow::buildMenus()
     QMenu* file = menuBar()->addMenu(tr("&File"));
     auto* machineFiles = new MachineFileActions(m_context, this);
     machineFiles->addTo(file);
-    // Until the window runs machines itself, it says what the validator found in the file.
-    connect(machineFiles, &MachineFileActions::openRequested, this, [this](const QString& path) {
-        bool valid = false;
-        const QString text = machineFileSummary(path, &valid);
-        m_messages->show(StatusMessages::Owner::General, text,
-                         valid ? StatusMessages::Severity::Info : StatusMessages::Severity::Error);
-    });
+    // An opened machine is the one "Edit machine…" edits; an invalid file opens nothing and
+    // its message names the field.
+    connect(machineFiles, &MachineFileActions::openRequested, this,
+            [this, machineFiles](const QString& path) {
+                if (openMachine(path))
+                    machineFiles->setCurrentMachine(path);
+            });
     file->addSeparator();
     file->addAction(m_connectAction);
     file->addSeparator();
@@ -402,6 +416,10 @@ void MainWindow::stopAll()
     const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
     m_reference->runner()->cancel(tr("Referencing stopped."));
+    if (m_context->hasMachine()) {
+        m_machineControl->stop(); // every controller at once
+        return;
+    }
     if (!m_context->session()->isCreated()) {
         showError(tr("Stop: not connected"));
         return;
@@ -413,6 +431,10 @@ void MainWindow::stopAll()
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
+    if (m_context->hasMachine()) {
+        m_machineControl->panic(); // every controller at once
+        return;
+    }
     if (!m_context->session()->isCreated()) {
         showError(tr("Panic: not connected"));
         return;
@@ -453,8 +475,25 @@ void MainWindow::onLinkState(LinkState state, const QString& reason)
     updateTitle();
 }
 
+bool MainWindow::openMachine(const QString& path)
+{
+    m_jogPanel->releaseAll();
+    return m_machineControl->open(path);
+}
+
+void MainWindow::closeMachine()
+{
+    m_jogPanel->releaseAll();
+    m_reference->runner()->cancel(tr("Referencing stopped."));
+    m_context->closeMachine();
+}
+
 void MainWindow::updateTitle()
 {
+    if (m_context->hasMachine()) {
+        setWindowTitle(m_machineControl->title());
+        return;
+    }
     const ModelInfo* model = m_context->model();
     QString title = QStringLiteral("StepDeck");
     if (model)

@@ -20,7 +20,9 @@ class JogController;
 class JogPanel;
 class KeyboardJog;
 class LaserBridgePage;
+class MachineBar;
 class MachineContext;
+class MachineControl;
 class MessageLine;
 class MessageLog;
 class PositionPanel;
@@ -47,6 +49,9 @@ public:
 
     MachineContext* context() const { return m_context; }
     ConnectionBar* connectionBar() const { return m_connection; }
+    // A machine of several controllers (issue 19), in the tool bar while one is open.
+    MachineBar* machineBar() const { return m_machineBar; }
+    MachineControl* machineControl() const { return m_machineControl; }
     SafetyBar* safetyBar() const { return m_safety; }
     JogPanel* jogPanel() const { return m_jogPanel; }
     JogController* jogController() const { return m_jog; }
@@ -82,6 +87,12 @@ public:
                          Qt::DockWidgetArea area, QWidget* tabWith = nullptr);
 
 public Q_SLOTS:
+    // Opens the machine file (links not opened yet: Connect all); an invalid file is reported
+    // in the message line naming the field, and nothing is opened. For File > Open machine
+    // and `stepdeck --machine FILE`.
+    bool openMachine(const QString& path);
+    // Every controller of the machine stops and closes; the single-controller bar returns.
+    void closeMachine();
     void stopAll();
     void panicAll();
     void showError(const QString& message);
@@ -108,6 +119,8 @@ private:
     JogController* m_jog;
     KeyboardJog* m_keyboard;
     ConnectionBar* m_connection;
+    MachineBar* m_machineBar = nullptr;
+    MachineControl* m_machineControl = nullptr;
     SafetyBar* m_safety = nullptr;
     SafetyKeyFilter* m_safetyKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;

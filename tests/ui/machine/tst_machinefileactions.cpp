@@ -26,8 +26,8 @@ private Q_SLOTS:
     void recent_mostRecentFirst_cappedWithoutDuplicates();
     void recentMenu_entry_requestsOpenAndMovesToFront();
     void fileMenu_hasMachineActions();
-    void openRequested_windowShowsValidationResult_data();
-    void openRequested_windowShowsValidationResult();
+    void openRequested_windowOpensTheMachineOrNamesTheField_data();
+    void openRequested_windowOpensTheMachineOrNamesTheField();
     void newMachine_connected_startsFromThatController();
     void newMachine_notConnected_opensValidNewMachine();
     void editorSaved_isRemembered();
@@ -94,17 +94,17 @@ void TestMachineFileActions::fileMenu_hasMachineActions()
     QVERIFY(file->actions().contains(actions->recentMenu()->menuAction()));
 }
 
-void TestMachineFileActions::openRequested_windowShowsValidationResult_data()
+void TestMachineFileActions::openRequested_windowOpensTheMachineOrNamesTheField_data()
 {
     QTest::addColumn<QString>("stepsPerUnit"); // of axes[2]
     QTest::addColumn<QString>("shown");
     QTest::newRow("valid") << "800"
-                           << "is valid";
+                           << "opened: 2 controllers, 4 axes";
     QTest::newRow("invalid") << "-2"
                              << "axes[2].stepsPerUnit";
 }
 
-void TestMachineFileActions::openRequested_windowShowsValidationResult()
+void TestMachineFileActions::openRequested_windowOpensTheMachineOrNamesTheField()
 {
     QFETCH(QString, stepsPerUnit);
     QFETCH(QString, shown);

@@ -1,0 +1,467 @@
+// The main window running a machine of two controllers (issue 19): an E-LAB X/Y/Z table and a
+// Nanotec rotary A, each simulated on a pseudo-terminal of its own. Opening a machine file
+// (an invalid one names the field and opens nothing), the controller selector, one connect for
+// all, STOP reaching both devices and the read-out in the machine's units.
+#include "../LayoutChecks.h"
+#include "../UiTestSupport.h"
+#include "ModelBench.h"
+#include "PtyDevice.h"
+#include "common/LedIndicator.h"
+#include "jog/JogController.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
+#include "machine/Machine.h"
+#include "machine/MachineBar.h"
+#include "machine/MachineDro.h"
+#include "machine/MachineGoTo.h"
+#include "messages/StatusMessages.h"
+#include "position/PositionPanel.h"
+#include "safety/SafetyBar.h"
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestMachineWindow : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init();
+    void cleanup();
+    void openMachine_invalidFile_messageNamesTheFieldNothingOpened();
+    void openMachine_twoControllers_titleSelectorAndSelectedSession();
+    void selectController_pagesRebuildOnTheOtherSession();
+    void connectAll_bothLampsConnected_disconnectAllClosesBoth();
+    void closeMachine_singleControllerBarBackAndConnectable();
+    void stop_duringMoveOnBothControllers_bothDevicesStandStill();
+    void stop_controllerWithoutStopCommand_messageNamesIt();
+    void jog_otherControllerLinkLost_heldJogDoesNotResume();
+    void banner_tableReferencedRotaryNot_machineNotReady();
+    void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
+    void dro_afterMoveX2point5_shows2point500mm();
+    void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
+    void goTo_unreferencedAxis_refusedNothingSent();
+    void goTo_referencedX_deviceAtTheNearestStep();
+
+private:
+    QString writeFile(const QByteArray& json);
+    QByteArray machineJson() const;
+    bool openAndConnect();
+    void writeElabSetup();
+    ui::MainWindow* window() const { return m_f->window.get(); }
+    machine::Machine* machine() const { return window()->context()->machine(); }
+
+    std::unique_ptr<PtyDevice> m_elab;
+    std::unique_ptr<PtyDevice> m_nanotec;
+    std::unique_ptr<UiFixture> m_f;
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestMachineWindow::init()
+{
+    QSettings().clear();
+    m_elab = std::make_unique<PtyDevice>(QStringLiteral("elab"));
+    m_nanotec = std::make_unique<PtyDevice>(QStringLiteral("nanotec"));
+    m_dir = std::make_unique<QTemporaryDir>();
+    m_f = std::make_unique<UiFixture>();
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+}
+
+void TestMachineWindow::cleanup()
+{
+    if (QGuiApplication::mouseButtons() & Qt::LeftButton)
+        QTest::mouseRelease(window()->windowHandle(), Qt::LeftButton);
+    m_f.reset(); // the window stops and closes every controller first
+    m_elab.reset();
+    m_nanotec.reset();
+    m_dir.reset();
+}
+
+QString TestMachineWindow::writeFile(const QByteArray& json)
+{
+    const QString path = m_dir->filePath(QStringLiteral("test.machine.json"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        qFatal("cannot write %s", qPrintable(path));
+    file.write(json);
+    return path;
+}
+
+QByteArray TestMachineWindow::machineJson() const
+{
+    return QStringLiteral(R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Table with rotary axis",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "%1" },
+    { "id": "rotary", "model": "nanotec", "port": "%2", "axes": { "X": 1 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
+    { "name": "A", "controller": "rotary", "axis": "X", "unit": "deg", "stepsPerUnit": 100 }
+  ]
+})")
+        .arg(m_elab->path(), m_nanotec->path())
+        .toUtf8();
+}
+
+bool TestMachineWindow::openAndConnect()
+{
+    if (!window()->openMachine(writeFile(machineJson())))
+        return false;
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "rotary"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        if (!QTest::qWaitFor([s] { return s->linkState() == LinkState::Connected; }, 10000))
+            return false;
+    }
+    writeElabSetup();
+    return true;
+}
+
+// The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
+void TestMachineWindow::writeElabSetup()
+{
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    const RequestId id = table->writeParameters(setupBeforeMotionDefaults(*table->model()), false);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
+                                         [id](const QList<QVariant>& args) {
+                                             const auto r = args.at(0).value<CommandResult>();
+                                             return r.id == id && r.ok();
+                                         }),
+                             10000);
+}
+
+void TestMachineWindow::openMachine_invalidFile_messageNamesTheFieldNothingOpened()
+{
+    QByteArray json = machineJson();
+    json.replace(R"("stepsPerUnit": 800)", R"("stepsPerUnit": -2)");
+    const QString title = window()->windowTitle();
+    QVERIFY(!window()->openMachine(writeFile(json)));
+    QVERIFY2(window()->lastError().contains(QStringLiteral("axes[2].stepsPerUnit")),
+             qPrintable(window()->lastError()));
+    QVERIFY(!window()->context()->hasMachine());
+    QCOMPARE(window()->context()->session(), m_f->session); // the single controller's
+    QCOMPARE(window()->windowTitle(), title);
+    QTRY_VERIFY(!window()->machineBar()->isVisible());
+    QTRY_VERIFY(window()->connectionBar()->isVisible());
+    // Nothing reached either device.
+    QCOMPARE(m_elab->receivedCount(), 0);
+    QCOMPARE(m_nanotec->receivedCount(), 0);
+}
+
+void TestMachineWindow::openMachine_twoControllers_titleSelectorAndSelectedSession()
+{
+    QVERIFY(window()->openMachine(writeFile(machineJson())));
+    QVERIFY(window()->windowTitle().contains(QStringLiteral("Table with rotary axis")));
+    QTRY_VERIFY(window()->machineBar()->isVisible());
+    QTRY_VERIFY(!window()->connectionBar()->isVisible());
+    QComboBox* selector = window()->machineBar()->controllerCombo();
+    QTRY_VERIFY(selector->isVisible());
+    QCOMPARE(selector->count(), 2);
+    QCOMPARE(window()->context()->selectedController(), QStringLiteral("table"));
+    QCOMPARE(window()->context()->session(), machine()->session(QStringLiteral("table")));
+    QCOMPARE(window()->context()->modelId(), QStringLiteral("elab"));
+    // Links are not opened by opening the file.
+    QCOMPARE(machine()->session(QStringLiteral("table"))->linkState(), LinkState::Disconnected);
+}
+
+void TestMachineWindow::selectController_pagesRebuildOnTheOtherSession()
+{
+    QVERIFY(openAndConnect());
+    QSignalSpy rebuilt(window()->context(), &ui::MachineContext::modelChanged);
+    QSignalSpy relayed(m_f->session, &ControllerSession::statusChanged);
+    QComboBox* selector = window()->machineBar()->controllerCombo();
+    selector->setCurrentIndex(selector->findData(QStringLiteral("rotary")));
+    Q_EMIT selector->activated(selector->currentIndex());
+    QCOMPARE(rebuilt.size(), 1);
+    QCOMPARE(window()->context()->session(), machine()->session(QStringLiteral("rotary")));
+    QCOMPARE(window()->context()->modelId(), QStringLiteral("nanotec"));
+    QVERIFY(window()->context()->isConnected());
+    // The panels hear the selected controller: its status polls arrive at the session they
+    // connected to when they were built.
+    QTRY_VERIFY_WITH_TIMEOUT(relayed.size() >= 3, 10000);
+    const auto status = relayed.last().at(0).value<MachineStatus>();
+    QVERIFY(status.axes.contains(Axis::X));
+    QVERIFY(!status.axes.contains(Axis::Z)); // the drive on the bus, not the E-LAB board
+}
+
+void TestMachineWindow::connectAll_bothLampsConnected_disconnectAllClosesBoth()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineBar* bar = window()->machineBar();
+    QCOMPARE(bar->lamp(QStringLiteral("table"))->state(), ui::LedIndicator::State::On);
+    QCOMPARE(bar->lamp(QStringLiteral("rotary"))->state(), ui::LedIndicator::State::On);
+    QVERIFY(bar->lampText(QStringLiteral("rotary")).contains(QStringLiteral("Connected")));
+    QCOMPARE(bar->connectButton()->text(), QStringLiteral("Disconnect all"));
+    bar->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(bar->lamp(QStringLiteral("table"))->state(),
+                              ui::LedIndicator::State::Off, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(bar->lamp(QStringLiteral("rotary"))->state(),
+                              ui::LedIndicator::State::Off, 10000);
+    QCOMPARE(bar->connectButton()->text(), QStringLiteral("Connect all"));
+}
+
+void TestMachineWindow::closeMachine_singleControllerBarBackAndConnectable()
+{
+    QVERIFY(openAndConnect());
+    window()->closeMachine();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(!window()->context()->hasMachine());
+    QTRY_VERIFY(window()->connectionBar()->isVisible());
+    QVERIFY(!window()->windowTitle().contains(QStringLiteral("Table with rotary axis")));
+    QVERIFY(m_f->connectSim()); // today's single controller, unchanged
+    QCOMPARE(window()->context()->session(), m_f->session);
+}
+
+void TestMachineWindow::stop_duringMoveOnBothControllers_bothDevicesStandStill()
+{
+    QVERIFY(openAndConnect());
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("X"), 200.0}, {QStringLiteral("A"), 3600.0}}, false,
+                             &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving() && m_nanotec->moving(), 10000);
+    window()->safetyBar()->stopButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->receivedStop() && m_nanotec->receivedStop(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(m_elab->position() < 80000);
+    QVERIFY(m_nanotec->position() < 3000); // stopped, not at its limit switch
+    QVERIFY2(window()->lastError().contains(QStringLiteral("table, rotary")),
+             qPrintable(window()->lastError()));
+}
+
+void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
+{
+    // The laser marker's motor axes have no stop command (Capabilities::stopCommand).
+    const QByteArray json = R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Board and marker",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "sim" },
+    { "id": "marker", "model": "laser-axis", "port": "sim" }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "U", "controller": "marker", "axis": "X", "unit": "steps" }
+  ]
+})";
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "marker"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    window()->safetyBar()->stopButton()->click();
+    const QString text = window()->lastError();
+    QVERIFY2(text.contains(QStringLiteral("Stop sent to table.")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
+}
+
+void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
+{
+    QVERIFY(openAndConnect());
+    // The pages show the table: its Z jogs from the stick, held for the whole test.
+    ui::JoystickPad* z = window()->jogPanel()->zStick();
+    pointerPress(z, z->centre());
+    pointerMove(z, z->pointFor(QPointF(0.0, -1.0)));
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::Z), 10000);
+    m_nanotec->vanish();
+    // The machine stops the table and the window names the failed controller.
+    // (In the message log: a later message may be the newest on the line by then.)
+    auto named = [this] {
+        const auto& log = window()->messages()->log();
+        return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
+            return entry.text.contains(QStringLiteral("controller \"rotary\" lost its link"));
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(named(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
+    // The stick is still held: its input was released, so the jog does not start again.
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    QSignalSpy polls(table, &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 10, 10000);
+    QVERIFY(m_elab->still());
+    QVERIFY(!window()->jogController()->isJogging());
+    pointerRelease(z, z->centre());
+}
+
+void TestMachineWindow::banner_tableReferencedRotaryNot_machineNotReady()
+{
+    QVERIFY(openAndConnect());
+    // The pages show the table; every axis of it is referenced, the rotary drive's is not.
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(std::all_of(table->status().axes.cbegin(), table->status().axes.cend(),
+                                         [](const AxisStatus& a) { return a.referenced; }),
+                             20000);
+    QCOMPARE(window()->context()->session(), table);
+    QVERIFY2(!window()->safetyBar()->bannerText().startsWith(QStringLiteral("Ready")),
+             qPrintable(window()->safetyBar()->bannerText()));
+    QCOMPARE(window()->safetyBar()->bannerSeverity(), QStringLiteral("warning"));
+}
+
+void TestMachineWindow::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
+{
+    // A at most 4 deg/s = 400 steps/s; the held key asks for 500 steps/s (half the jog speed).
+    QByteArray json = machineJson();
+    json.replace(R"("unit": "deg", "stepsPerUnit": 100 })",
+                 R"("unit": "deg", "stepsPerUnit": 100, "maxJogSpeed": 4 })");
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "rotary"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    window()->context()->selectController(QStringLiteral("rotary"));
+    QCOMPARE(window()->jogController()->maxSpeed(Axis::X), 1000.0);
+    window()->jogPanel()->keyboardCheck()->setChecked(true);
+    window()->jogPanel()->xyPad()->window()->setFocus();
+    QTest::keyPress(window(), Qt::Key_Right); // held: +X of the drive, i.e. +A
+    QTRY_VERIFY_WITH_TIMEOUT(m_nanotec->moving(Axis::X), 10000);
+    ControllerSession* rotary = machine()->session(QStringLiteral("rotary"));
+    QSignalSpy polls(rotary, &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 10, 10000);
+    // At the drive: the speed-mode frequency ('o', manual 6.2) never went above 400.
+    const QRegularExpression speed(QStringLiteral("^#1o(\\d+)\r$"));
+    int highest = 0;
+    for (const QByteArray& f : m_nanotec->frames()) {
+        const QRegularExpressionMatch m = speed.match(QString::fromLatin1(f));
+        if (m.hasMatch())
+            highest = qMax(highest, m.captured(1).toInt());
+    }
+    QCOMPARE(highest, 400);
+    QTest::keyRelease(window(), Qt::Key_Right);
+}
+
+void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QVERIFY(dro->isVisibleTo(window()));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    QCOMPARE(dro->unitText(QStringLiteral("A")), QStringLiteral("deg"));
+    QSignalSpy finished(machine(), &machine::Machine::moveFinished);
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("X"), 2.5}, {QStringLiteral("A"), 25.0}}, false,
+                             &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QCOMPARE(m_elab->position(), qint64(1000)); // at the device: 2.5 mm x 400 steps/mm
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("2.500"),
+                              10000);
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("A")), QStringLiteral("25.000"),
+                              10000);
+    QVERIFY(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("1000")));
+    // Not referenced since the connect: the position is counted, not known from the origin.
+    QCOMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("UNKNOWN"));
+}
+
+void TestMachineWindow::layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut()
+{
+    const QByteArray json = R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Six-axis cell with a long name",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "sim" },
+    { "id": "wrist", "model": "nanotec", "port": "sim", "axes": { "X": 1, "Y": 2, "Z": 3 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
+    { "name": "A", "controller": "wrist", "axis": "X", "unit": "deg", "stepsPerUnit": 88.8889 },
+    { "name": "B", "controller": "wrist", "axis": "Y", "unit": "deg", "stepsPerUnit": 100 },
+    { "name": "C", "controller": "wrist", "axis": "Z", "unit": "steps" }
+  ]
+})";
+    QVERIFY(window()->openMachine(writeFile(json)));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "wrist"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    const QSize available(1366, 768 - 40); // room for a panel or title bar
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(
+        minimum.width() <= available.width() && minimum.height() <= available.height(),
+        qPrintable(QStringLiteral("minimum %1x%2").arg(minimum.width()).arg(minimum.height())));
+    QCOMPARE(QGuiApplication::primaryScreen()->availableGeometry().size(), QSize(1366, 768));
+    window()->raisePage(window()->positionPanel());
+    QCoreApplication::processEvents();
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE(dro->stateText(QStringLiteral("C")), QStringLiteral("UNKNOWN"));
+    const QStringList cut = clippedTexts(dro) + clippedTexts(window()->machineBar()) +
+                            clippedTexts(window()->positionPanel()->machineGoTo());
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+    QVERIFY(window()->safetyBar()->stopButton()->visibleRegion().boundingRect().width() > 100);
+}
+
+void TestMachineWindow::goTo_unreferencedAxis_refusedNothingSent()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    QVERIFY(goTo->isVisibleTo(window()));
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    goTo->targetBox()->setValue(1.25);
+    goTo->goButton()->click();
+    QVERIFY2(goTo->resultText().contains(QStringLiteral("X is not referenced")),
+             qPrintable(goTo->resultText()));
+    // Three more status polls: a move sent before them would have reached the board by now.
+    QSignalSpy polls(machine()->session(QStringLiteral("table")),
+                     &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
+    QCOMPARE(m_elab->probe([this] { return int(m_elab->acceptedMoveCount()); }), 0);
+}
+
+void TestMachineWindow::goTo_referencedX_deviceAtTheNearestStep()
+{
+    QVERIFY(openAndConnect());
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(
+        table->status().axes.value(Axis::X).referenced && !table->status().anyMoving(), 20000);
+    const qint64 origin = m_elab->position();
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    goTo->targetBox()->setValue(1.25);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(500)); // 1.25 mm x 400 steps/mm
+    QVERIFY(m_elab->still());
+}
+
+// The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
+// its docks for the screen it starts on.
+int main(int argc, char** argv)
+{
+    const QString config = QDir::temp().filePath(
+        QStringLiteral("stepdeck-machine-screen-%1.json").arg(QCoreApplication::applicationPid()));
+    QFile file(config);
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(R"({"screens": [{"name": "laptop", "x": 0, "y": 0, "width": 1366,
+            "height": 768, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})") < 0)
+        return 2;
+    file.close();
+    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+    int result = 0;
+    {
+        QApplication app(argc, argv);
+        TestMachineWindow test;
+        QTEST_SET_MAIN_SOURCE_PATH
+        result = QTest::qExec(&test, argc, argv);
+    }
+    QFile::remove(config);
+    return result;
+}
+
+#include "tst_machinewindow.moc"

@@ -1,0 +1,144 @@
+#include "MachineBar.h"
+#include "common/LedIndicator.h"
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
+#include <QAction>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+
+namespace stepdeck::ui {
+
+MachineBar::MachineBar(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_name(new QLabel(this)), m_lamps(new QHBoxLayout),
+      m_controllerLabel(new QLabel(tr("Pages show:"), this)), m_controllers(new QComboBox(this)),
+      m_connect(new QPushButton(this))
+{
+    setObjectName(QStringLiteral("machineBar"));
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+    QFont bold = m_name->font();
+    bold.setBold(true);
+    m_name->setFont(bold);
+    m_controllers->setToolTip(tr("The controller whose setup, records, traffic, drives and "
+                                 "charts the pages show"));
+    m_controllers->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_controllerLabel->setBuddy(m_controllers);
+    m_connect->setMinimumWidth(130);
+    m_connect->setToolTip(tr("Connect or disconnect every controller of the machine"));
+    layout->addWidget(new QLabel(tr("Machine:"), this));
+    layout->addWidget(m_name);
+    layout->addSpacing(8);
+    layout->addLayout(m_lamps);
+    layout->addStretch(1);
+    layout->addWidget(m_controllerLabel);
+    layout->addWidget(m_controllers);
+    layout->addWidget(m_connect);
+    connect(m_connect, &QPushButton::clicked, this, &MachineBar::toggleConnection);
+    connect(m_controllers, &QComboBox::activated, this,
+            [this] { m_context->selectController(m_controllers->currentData().toString()); });
+    connect(context, &MachineContext::machineChanged, this, &MachineBar::rebuild);
+    rebuild();
+}
+
+void MachineBar::setToolBarActions(QAction* singleController, QAction* machine)
+{
+    m_singleAction = singleController;
+    m_machineAction = machine;
+    rebuild();
+}
+
+void MachineBar::rebuild()
+{
+    while (QLayoutItem* item = m_lamps->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_entries.clear();
+    m_controllers->clear();
+    const machine::Machine* m = m_context->machine();
+    if (m_singleAction)
+        m_singleAction->setVisible(!m);
+    if (m_machineAction)
+        m_machineAction->setVisible(m);
+    if (!m)
+        return;
+    m_name->setText(m->description().name);
+    for (const machine::MachineController& c : m->description().controllers) {
+        ControllerSession* session = m->session(c.id);
+        const QString port = c.isSimulated() ? tr("simulator") : c.port;
+        Entry entry{c.id, new LedIndicator(tr("%1 @ %2").arg(c.id, port), this)};
+        m_lamps->addWidget(entry.lamp);
+        m_controllers->addItem(c.id, c.id);
+        // The lamp follows its own controller's link, whichever the pages show.
+        connect(session, &ControllerSession::linkStateChanged, entry.lamp,
+                [this, entry](LinkState state, const QString& reason) {
+                    showLink(entry, state, reason);
+                    updateButton();
+                });
+        showLink(entry, session->linkState(), {});
+        m_entries << entry;
+    }
+    m_controllers->setCurrentIndex(m_controllers->findData(m_context->selectedController()));
+    const bool several = m->description().controllers.size() > 1;
+    m_controllerLabel->setVisible(several);
+    m_controllers->setVisible(several);
+    updateButton();
+}
+
+void MachineBar::showLink(const Entry& entry, LinkState state, const QString& reason)
+{
+    using State = LedIndicator::State;
+    State lamp = State::Off;
+    QString text = tr("Disconnected");
+    switch (state) {
+    case LinkState::Disconnected:
+        break;
+    case LinkState::Connecting:
+        lamp = State::Warning;
+        text = tr("Connecting");
+        break;
+    case LinkState::Connected:
+        lamp = State::On;
+        text = tr("Connected");
+        break;
+    case LinkState::Lost:
+        lamp = State::Fault;
+        text = tr("Link lost");
+        break;
+    }
+    entry.lamp->setState(lamp);
+    entry.lamp->setToolTip(reason.isEmpty() ? tr("%1: %2").arg(entry.id, text)
+                                            : tr("%1: %2 (%3)").arg(entry.id, text, reason));
+}
+
+void MachineBar::updateButton()
+{
+    m_connect->setText(m_context->machineLinkBusy() ? tr("Disconnect all") : tr("Connect all"));
+}
+
+void MachineBar::toggleConnection()
+{
+    if (m_context->machineLinkBusy())
+        m_context->disconnectMachine();
+    else
+        m_context->connectMachine();
+}
+
+LedIndicator* MachineBar::lamp(const QString& controllerId) const
+{
+    for (const Entry& e : m_entries) {
+        if (e.id == controllerId)
+            return e.lamp;
+    }
+    return nullptr;
+}
+
+QString MachineBar::lampText(const QString& controllerId) const
+{
+    const LedIndicator* l = lamp(controllerId);
+    return l ? l->toolTip() : QString();
+}
+
+} // namespace stepdeck::ui

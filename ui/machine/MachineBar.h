@@ -1,0 +1,59 @@
+#pragma once
+#include "controller/ControllerSession.h"
+#include <QWidget>
+
+class QAction;
+class QComboBox;
+class QHBoxLayout;
+class QLabel;
+class QPushButton;
+
+namespace stepdeck::ui {
+
+class LedIndicator;
+class MachineContext;
+
+// The connection bar of a machine (issue 19): the machine's name, each controller (its id,
+// port and link lamp), the controller the per-controller pages show (a selector, only with
+// more than one controller) and one Connect / Disconnect for all of them. It stands in the
+// tool bar in place of the single-controller ConnectionBar while a machine is open.
+class MachineBar : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit MachineBar(MachineContext* context, QWidget* parent = nullptr);
+
+    // The tool bar's actions of the single-controller bar and of this bar: exactly one of them
+    // is visible, this one while a machine is open.
+    void setToolBarActions(QAction* singleController, QAction* machine);
+
+    QComboBox* controllerCombo() const { return m_controllers; }
+    QPushButton* connectButton() const { return m_connect; }
+    LedIndicator* lamp(const QString& controllerId) const;
+    QString lampText(const QString& controllerId) const;
+
+public Q_SLOTS:
+    void toggleConnection();
+
+private:
+    struct Entry
+    {
+        QString id;
+        LedIndicator* lamp = nullptr;
+    };
+    void rebuild();
+    void showLink(const Entry& entry, LinkState state, const QString& reason);
+    void updateButton();
+
+    MachineContext* m_context;
+    QLabel* m_name;
+    QHBoxLayout* m_lamps;
+    QLabel* m_controllerLabel;
+    QComboBox* m_controllers;
+    QPushButton* m_connect;
+    QList<Entry> m_entries;
+    QAction* m_singleAction = nullptr;
+    QAction* m_machineAction = nullptr;
+};
+
+} // namespace stepdeck::ui

@@ -1,0 +1,216 @@
+// MachineContext, part 2: a machine of several controllers (issue 19). The core Machine owns
+// one session per controller; the context selects one of them for the per-controller pages.
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
+#include "machine/MachineFile.h"
+#include "protocols/Registry.h"
+
+namespace stepdeck::ui {
+
+bool MachineContext::openMachine(const QString& path, QString* error)
+{
+    machine::MachineFileError invalid;
+    const std::optional<machine::MachineDescription> description =
+        machine::MachineFile::load(path, &invalid);
+    if (!description) {
+        if (error)
+            *error = tr("Machine file %1: %2").arg(path, invalid.text());
+        return false;
+    }
+    if (!openMachine(*description, error))
+        return false;
+    m_machinePath = path;
+    return true;
+}
+
+bool MachineContext::openMachine(const machine::MachineDescription& description, QString* error)
+{
+    // Everything is checked (and every session built) before the open link is touched: an
+    // invalid machine leaves what runs now as it is.
+    auto created = std::make_unique<machine::Machine>();
+    QString why;
+    if (!created->create(description, &why)) {
+        if (error)
+            *error = tr("Machine \"%1\": %2").arg(description.name, why);
+        return false;
+    }
+    if (m_machine)
+        closeMachine();
+    else
+        m_singleModel = m_model;
+    if (m_session->isCreated())
+        m_session->destroy(); // the single controller's stop, flushed, then its port closed
+    m_machine = std::move(created);
+    m_machinePath.clear();
+    connect(m_machine.get(), &machine::Machine::controllerFailed, this,
+            &MachineContext::machineControllerFailed);
+    connect(m_machine.get(), &machine::Machine::statusChanged, this,
+            &MachineContext::machineStatusChanged);
+    selectController(description.controllers.first().id);
+    Q_EMIT machineChanged();
+    return true;
+}
+
+void MachineContext::closeMachine()
+{
+    if (!m_machine)
+        return;
+    for (const QMetaObject::Connection& c : std::as_const(m_relay))
+        disconnect(c);
+    m_relay.clear();
+    m_selected = nullptr;
+    m_selectedId.clear();
+    m_machinePath.clear();
+    const std::unique_ptr<machine::Machine> closing = std::move(m_machine);
+    closing->disconnect(this);
+    closing->destroy(); // every controller's stop, flushed, before its port closes
+    m_model = m_singleModel;
+    loadUnits();
+    loadSoftLimits();
+    forgetKnownParameters();
+    Q_EMIT modelChanged();
+    Q_EMIT machineChanged();
+    announceLink();
+}
+
+void MachineContext::selectController(const QString& controllerId)
+{
+    ControllerSession* chosen = m_machine ? m_machine->session(controllerId) : nullptr;
+    if (!chosen || chosen == m_selected)
+        return;
+    relayFrom(chosen);
+    m_selected = chosen;
+    m_selectedId = controllerId;
+    m_model = chosen->model();
+    loadUnits();
+    m_softLimits = chosen->softLimits(); // the file's, in steps (Machine)
+    forgetKnownParameters();             // they were another controller's
+    Q_EMIT modelChanged();
+    Q_EMIT softLimitsChanged();
+    announceLink();
+}
+
+void MachineContext::relayFrom(ControllerSession* selected)
+{
+    // The panels listen to m_session (they connected to it when they were built); with a
+    // machine open it repeats what the selected controller's session says.
+    for (const QMetaObject::Connection& c : std::as_const(m_relay))
+        disconnect(c);
+    m_relay = {
+        connect(selected, &ControllerSession::linkStateChanged, m_session,
+                &ControllerSession::linkStateChanged),
+        connect(selected, &ControllerSession::statusChanged, m_session,
+                &ControllerSession::statusChanged),
+        connect(selected, &ControllerSession::requestFinished, m_session,
+                &ControllerSession::requestFinished),
+        connect(selected, &ControllerSession::errorOccurred, m_session,
+                &ControllerSession::errorOccurred),
+        connect(selected, &ControllerSession::traffic, m_session, &ControllerSession::traffic),
+        connect(selected, &ControllerSession::pollRateChanged, m_session,
+                &ControllerSession::pollRateChanged),
+        connect(selected, &ControllerSession::jogRefused, m_session,
+                &ControllerSession::jogRefused),
+    };
+}
+
+void MachineContext::announceLink()
+{
+    // Listeners learn the now selected controller's state as if it had just changed (no
+    // reason: nothing new happened on that link).
+    const ControllerSession* s = session();
+    Q_EMIT m_session->linkStateChanged(s->isCreated() ? s->linkState() : LinkState::Disconnected,
+                                       QString());
+    Q_EMIT m_session->statusChanged(s->status());
+}
+
+void MachineContext::connectMachine()
+{
+    if (m_machine)
+        m_machine->open();
+}
+
+void MachineContext::disconnectMachine()
+{
+    if (m_machine)
+        m_machine->close();
+}
+
+bool MachineContext::machineLinkBusy() const
+{
+    if (!m_machine)
+        return false;
+    for (const machine::MachineController& c : m_machine->description().controllers) {
+        const LinkState state = m_machine->session(c.id)->linkState();
+        if (state == LinkState::Connected || state == LinkState::Connecting)
+            return true;
+    }
+    return false;
+}
+
+bool MachineContext::jogMachine(const AxisVelocities& stepsPerS, QString* refusal)
+{
+    if (!m_machine)
+        return false;
+    QMap<QString, double> unitsPerSecond;
+    for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
+        const machine::MachineAxis* driven = nullptr;
+        for (const machine::MachineAxis& a : m_machine->description().axes) {
+            if (a.controller == m_selectedId && a.axis == it.key())
+                driven = &a;
+        }
+        if (driven)
+            unitsPerSecond.insert(driven->name, it.value() / driven->stepsPerUnit);
+        else if (it.value() != 0) {
+            if (refusal)
+                *refusal = tr("Jog refused: axis %1 of controller \"%2\" is not an axis of the "
+                              "machine")
+                               .arg(axisName(it.key()), m_selectedId);
+            return false;
+        }
+    }
+    return m_machine->jog(unitsPerSecond, refusal);
+}
+
+void MachineContext::endMachineJog()
+{
+    if (m_machine)
+        m_machine->endJog();
+}
+
+MachineStatus MachineContext::machineWideStatus(LinkState* link) const
+{
+    const ControllerSession* selected = session();
+    *link = selected->isCreated() ? selected->linkState() : LinkState::Disconnected;
+    if (!m_machine)
+        return selected->status();
+    MachineStatus out = selected->status();
+    bool unreported = false;
+    for (const machine::MachineController& c : m_machine->description().controllers) {
+        const ControllerSession* s = m_machine->session(c.id);
+        // Lost is worse than disconnected, disconnected than connecting (Machine::state).
+        static const QList<LinkState> kBetterFirst{LinkState::Connected, LinkState::Connecting,
+                                                   LinkState::Disconnected, LinkState::Lost};
+        if (kBetterFirst.indexOf(s->linkState()) > kBetterFirst.indexOf(*link))
+            *link = s->linkState();
+        const MachineStatus& st = s->status();
+        out.panic = out.panic || st.panic;
+        out.setupIncomplete = out.setupIncomplete || st.setupIncomplete;
+        out.motionUnconfirmed = out.motionUnconfirmed || st.motionUnconfirmed;
+        out.busy = out.busy || st.busy;
+        for (auto it = st.axes.cbegin(); it != st.axes.cend(); ++it) {
+            if (!out.axes.contains(it.key())) {
+                out.axes.insert(it.key(), it.value());
+                continue;
+            }
+            AxisStatus& merged = out.axes[it.key()];
+            merged.referenced = merged.referenced && it.value().referenced;
+            merged.moving = merged.moving || it.value().moving;
+        }
+        unreported = unreported || st.axes.isEmpty();
+    }
+    if (unreported)
+        out.axes.clear(); // a controller without a status yet: nothing is "all referenced"
+    return out;
+}
+
+} // namespace stepdeck::ui

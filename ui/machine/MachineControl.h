@@ -1,0 +1,40 @@
+#pragma once
+#include <QObject>
+#include <QStringList>
+
+namespace stepdeck::ui {
+
+class MachineContext;
+class StatusMessages;
+
+// What the main window does with a machine of several controllers (issue 19), kept out of
+// MainWindow: opening a machine file (an invalid one is reported naming the field, nothing
+// is opened), STOP and PANIC to every controller at once with a message that names the
+// controllers that cannot be stopped, the failure of one controller, and the window title.
+class MachineControl : public QObject
+{
+    Q_OBJECT
+public:
+    MachineControl(MachineContext* context, StatusMessages* messages, QObject* parent = nullptr);
+
+    // Reads, validates and opens the machine; its links are not opened (connect() does).
+    // False with the message shown when the file is invalid or cannot be read.
+    bool open(const QString& path);
+    void connect();
+    // Posted to every controller before any is waited for (Machine::stop/panic).
+    void stop();
+    void panic();
+    // The controllers of the open machine that are connected, split by whether they have a
+    // stop command (Capabilities::stopCommand).
+    void connectedControllers(QStringList* stoppable, QStringList* unstoppable) const;
+    // "StepDeck — <machine name>", or an empty text without a machine.
+    QString title() const;
+
+private:
+    QString notStoppedText(const QStringList& unstoppable) const;
+
+    MachineContext* m_context;
+    StatusMessages* m_messages;
+};
+
+} // namespace stepdeck::ui
