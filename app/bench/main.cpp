@@ -1,4 +1,5 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "BusyLoad.h"
 #include "GuiIdle.h"
 #include "MachineStopLatency.h"
 #include "Measurements.h"
@@ -54,26 +55,39 @@ struct Results
     Figure poll;
     Figure pollWire;
     LatencyFigure panic;
+    LatencyFigure panicUnderLoad; // with loadThreads busy threads beside it (issue 21)
+    int loadThreads = 0;
     Figure feed;
     Figure feedWire;
     QList<QPair<int, LatencyFigure>> machineStop; // controllers -> Machine::stop() latency
 };
 
 constexpr int kMachineStopControllers[] = {1, 2, 4};
+// The under-load panic figure's load unless --load says otherwise: as many busy threads as the
+// reference machine has cores (issue 21).
+constexpr int kDefaultLoadThreads = 2;
 
-Results measureAll(const ModelInfo& model, bool showProgress)
+Results measureAll(const ModelInfo& model, int loadThreads, bool panicOnly, bool showProgress)
 {
     const auto progress = [&](const char* what) {
         if (showProgress)
             print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
     };
     Results r;
+    progress("panic latency");
+    r.panic = measurePanicLatency(model, kPanicRepetitions);
+    progress("panic latency under load");
+    r.loadThreads = loadThreads;
+    {
+        BusyLoad load(loadThreads);
+        r.panicUnderLoad = measurePanicLatency(model, kPanicRepetitions);
+    }
+    if (panicOnly)
+        return r;
     progress("poll rate");
     r.poll = measurePollRate(model, false);
     progress("poll rate, paced");
     r.pollWire = measurePollRate(model, true);
-    progress("panic latency");
-    r.panic = measurePanicLatency(model, kPanicRepetitions);
     progress("feed throughput");
     r.feed = measureFeedThroughput(model, false);
     progress("feed throughput, paced");
@@ -85,12 +99,22 @@ Results measureAll(const ModelInfo& model, bool showProgress)
     return r;
 }
 
+QJsonObject latencyJson(const LatencyFigure& figure)
+{
+    return QJsonObject{{"median", json(figure.medianMs, 3)},
+                       {"p99", json(figure.p99Ms, 3)},
+                       {"samples", figure.samples},
+                       {"pausedByXoff", figure.pausedByXoff}};
+}
+
 void printJson(const Results& r, const ModelInfo& model)
 {
     QJsonArray notes;
     for (const auto& [name, note] :
          {std::pair{"pollRateHz", r.poll.note}, std::pair{"pollRateWireMaxHz", r.pollWire.note},
-          std::pair{"panicLatencyMs", r.panic.note}, std::pair{"feedStepsPerSecond", r.feed.note},
+          std::pair{"panicLatencyMs", r.panic.note},
+          std::pair{"panicLatencyUnderLoadMs", r.panicUnderLoad.note},
+          std::pair{"feedStepsPerSecond", r.feed.note},
           std::pair{"feedWireMaxStepsPerSecond", r.feedWire.note}}) {
         if (!note.isEmpty())
             notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
@@ -110,10 +134,8 @@ void printJson(const Results& r, const ModelInfo& model)
         {"pollRateHz", json(r.poll.value, 1)},
         {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
-        {"panicLatencyMs", QJsonObject{{"median", json(r.panic.medianMs, 3)},
-                                       {"p99", json(r.panic.p99Ms, 3)},
-                                       {"samples", r.panic.samples},
-                                       {"pausedByXoff", r.panic.pausedByXoff}}},
+        {"panicLatencyMs", latencyJson(r.panic)},
+        {"panicLatencyUnderLoadMs", latencyJson(r.panicUnderLoad)},
         {"feedStepsPerSecond", json(r.feed.value, 0)},
         {"feedWireMaxStepsPerSecond", json(r.feedWire.value, 0)},
         {"conditions", QJsonObject{{"model", model.id},
@@ -121,6 +143,7 @@ void printJson(const Results& r, const ModelInfo& model)
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
                                    {"panicRepetitions", kPanicRepetitions},
+                                   {"loadThreads", r.loadThreads},
                                    {"feedStreamSteps", kFeedStreamSteps}}},
         {"notes", notes},
     };
@@ -148,6 +171,11 @@ void printHuman(const Results& r, const ModelInfo& model)
               .arg(r.panic.samples)
               .arg(kFeedStreamSteps)
               .arg(r.panic.pausedByXoff));
+    print(stdout, QStringLiteral("  panic latency under load     median %1, p99 %2  (the same "
+                                 "with %3 busy threads beside it)")
+                      .arg(text(r.panicUnderLoad.medianMs, 3, ms, r.panicUnderLoad.note),
+                           text(r.panicUnderLoad.p99Ms, 3, ms, r.panicUnderLoad.note))
+                      .arg(r.loadThreads));
     print(stdout, QStringLiteral("  feed throughput              %1")
                       .arg(text(r.feed.value, 0, steps, r.feed.note)));
     print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
@@ -161,6 +189,35 @@ void printHuman(const Results& r, const ModelInfo& model)
                                text(figure.p99Ms, 3, ms, figure.note))
                           .arg(figure.samples));
     }
+}
+void printUsage(const ModelInfo* model)
+{
+    print(stdout, QStringLiteral(
+                      "Usage: stepdeck-bench [--json] [--load N] [--panic-only]\n"
+                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
+                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
+                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
+                      "Measures the first model with a feed stream (%1) against its "
+                      "simulator over a "
+                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
+                      "DC2 feed throughput, unpaced and paced at the line rate, and "
+                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
+                      "Figures only; takes 30-60 s.\n"
+                      "--load N: the panic latency is measured quiet and again beside N busy "
+                      "threads at normal priority (default 2). --panic-only: only those two.\n"
+                      "--soak N: N random commands with ~1 % injected faults (dropped, "
+                      "corrupted, delayed replies, noise, peer vanish) against every "
+                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
+                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
+                      "machine of an E-LAB and a Nanotec simulator driven through "
+                      "Machine, faults on either link.\n"
+                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
+                      "-write); time until the host reports it.\n"
+                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
+                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
+                      "See docs/benchmark.md.")
+                      .arg(model ? model->displayName : QStringLiteral("none built in")));
 }
 } // namespace
 
@@ -182,37 +239,23 @@ int main(int argc, char** argv)
             model = &m;
     }
     const bool asJson = args.contains(QStringLiteral("--json"));
-    for (const QString& arg : args) {
+    int loadThreads = kDefaultLoadThreads;
+    bool panicOnly = false;
+    for (int i = 0; i < args.size(); ++i) {
+        const QString& arg = args.at(i);
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            print(stdout,
-                  QStringLiteral(
-                      "Usage: stepdeck-bench [--json]\n"
-                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
-                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
-                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
-                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                      "Measures the first model with a feed stream (%1) against its "
-                      "simulator over a "
-                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                      "DC2 feed throughput, unpaced and paced at the line rate, and "
-                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                      "Figures only; takes 30-60 s.\n"
-                      "--soak N: N random commands with ~1 % injected faults (dropped, "
-                      "corrupted, delayed replies, noise, peer vanish) against every "
-                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
-                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
-                      "machine of an E-LAB and a Nanotec simulator driven through "
-                      "Machine, faults on either link.\n"
-                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
-                      "-write); time until the host reports it.\n"
-                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
-                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
-                      "See docs/benchmark.md.")
-                      .arg(model ? model->displayName : QStringLiteral("none built in")));
+            printUsage(model);
             return 0;
         }
-        if (arg != QLatin1String("--json")) {
-            print(stderr, QStringLiteral("stepdeck-bench: unknown argument '%1'").arg(arg));
+        bool ok = true;
+        if (arg == QLatin1String("--load") && i + 1 < args.size())
+            loadThreads = args.at(++i).toInt(&ok, 10);
+        else if (arg == QLatin1String("--panic-only"))
+            panicOnly = true;
+        else if (arg != QLatin1String("--json"))
+            ok = false;
+        if (!ok || loadThreads < 0 || loadThreads > 64) {
+            print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(arg));
             return 2;
         }
     }
@@ -221,7 +264,7 @@ int main(int argc, char** argv)
                                      "built in"));
         return 1;
     }
-    const Results results = measureAll(*model, !asJson);
+    const Results results = measureAll(*model, loadThreads, panicOnly, !asJson);
     if (asJson)
         printJson(results, *model);
     else
