@@ -75,12 +75,12 @@ Results measureAll(const ModelInfo& model, int loadThreads, bool panicOnly, bool
     };
     Results r;
     progress("panic latency");
-    r.panic = measurePanicLatency(model, kPanicRepetitions);
+    r.panic = measurePanicLatency(model, kPanicRepetitions, true);
     progress("panic latency under load");
     r.loadThreads = loadThreads;
     {
         BusyLoad load(loadThreads);
-        r.panicUnderLoad = measurePanicLatency(model, kPanicRepetitions);
+        r.panicUnderLoad = measurePanicLatency(model, kPanicUnderLoadRepetitions, true);
     }
     if (panicOnly)
         return r;
@@ -104,7 +104,8 @@ QJsonObject latencyJson(const LatencyFigure& figure)
     return QJsonObject{{"median", json(figure.medianMs, 3)},
                        {"p99", json(figure.p99Ms, 3)},
                        {"samples", figure.samples},
-                       {"pausedByXoff", figure.pausedByXoff}};
+                       {"pausedByXoff", figure.pausedByXoff},
+                       {"deviceRealtime", figure.deviceRealtime}};
 }
 
 void printJson(const Results& r, const ModelInfo& model)
@@ -143,6 +144,7 @@ void printJson(const Results& r, const ModelInfo& model)
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
                                    {"panicRepetitions", kPanicRepetitions},
+                                   {"panicUnderLoadRepetitions", kPanicUnderLoadRepetitions},
                                    {"loadThreads", r.loadThreads},
                                    {"feedStreamSteps", kFeedStreamSteps}}},
         {"notes", notes},
