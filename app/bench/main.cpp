@@ -57,6 +57,8 @@ struct Results
     LatencyFigure panic;
     LatencyFigure panicUnderLoad; // with loadThreads busy threads beside it (issue 21)
     int loadThreads = 0;
+    int panicRuns = 0;
+    int panicUnderLoadRuns = 0;
     Figure feed;
     Figure feedWire;
     QList<QPair<int, LatencyFigure>> machineStop; // controllers -> Machine::stop() latency
@@ -67,22 +69,34 @@ constexpr int kMachineStopControllers[] = {1, 2, 4};
 // reference machine has cores (issue 21).
 constexpr int kDefaultLoadThreads = 2;
 
-Results measureAll(const ModelInfo& model, int loadThreads, bool panicOnly, bool showProgress)
+struct RunOptions
+{
+    int loadThreads = kDefaultLoadThreads;
+    int panicRuns = 0; // > 0: both panic figures take this many runs (smoke tests)
+    bool panicOnly = false;
+    bool json = false;
+};
+
+Results measureAll(const ModelInfo& model, const RunOptions& options)
 {
     const auto progress = [&](const char* what) {
-        if (showProgress)
+        if (!options.json)
             print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
     };
     Results r;
     progress("panic latency");
-    r.panic = measurePanicLatency(model, kPanicRepetitions, true);
+    const int quietRuns = options.panicRuns > 0 ? options.panicRuns : kPanicRepetitions;
+    const int loadedRuns = options.panicRuns > 0 ? options.panicRuns : kPanicUnderLoadRepetitions;
+    r.panicRuns = quietRuns;
+    r.panicUnderLoadRuns = loadedRuns;
+    r.panic = measurePanicLatency(model, quietRuns, true);
     progress("panic latency under load");
-    r.loadThreads = loadThreads;
+    r.loadThreads = options.loadThreads;
     {
-        BusyLoad load(loadThreads);
-        r.panicUnderLoad = measurePanicLatency(model, kPanicUnderLoadRepetitions, true);
+        BusyLoad load(options.loadThreads);
+        r.panicUnderLoad = measurePanicLatency(model, loadedRuns, true);
     }
-    if (panicOnly)
+    if (options.panicOnly)
         return r;
     progress("poll rate");
     r.poll = measurePollRate(model, false);
@@ -143,8 +157,8 @@ void printJson(const Results& r, const ModelInfo& model)
                                    {"line", lineText(model.line)},
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
-                                   {"panicRepetitions", kPanicRepetitions},
-                                   {"panicUnderLoadRepetitions", kPanicUnderLoadRepetitions},
+                                   {"panicRepetitions", r.panicRuns},
+                                   {"panicUnderLoadRepetitions", r.panicUnderLoadRuns},
                                    {"loadThreads", r.loadThreads},
                                    {"feedStreamSteps", kFeedStreamSteps}}},
         {"notes", notes},
@@ -192,10 +206,30 @@ void printHuman(const Results& r, const ModelInfo& model)
                           .arg(figure.samples));
     }
 }
+// One option at args[*i] (and its value, advancing *i); false when unknown or out of range.
+bool parseOption(const QStringList& args, int* i, RunOptions* o)
+{
+    const QString& arg = args.at(*i);
+    const bool hasValue = *i + 1 < args.size();
+    bool ok = true;
+    if (arg == QLatin1String("--load") && hasValue)
+        o->loadThreads = args.at(++*i).toInt(&ok, 10);
+    else if (arg == QLatin1String("--panic-runs") && hasValue)
+        o->panicRuns = args.at(++*i).toInt(&ok, 10);
+    else if (arg == QLatin1String("--panic-only"))
+        o->panicOnly = true;
+    else if (arg == QLatin1String("--json"))
+        o->json = true;
+    else
+        return false;
+    return ok && o->loadThreads >= 0 && o->loadThreads <= 64 && o->panicRuns >= 0 &&
+           o->panicRuns <= 10000;
+}
+
 void printUsage(const ModelInfo* model)
 {
     print(stdout, QStringLiteral(
-                      "Usage: stepdeck-bench [--json] [--load N] [--panic-only]\n"
+                      "Usage: stepdeck-bench [--json] [--load N] [--panic-only] [--panic-runs N]\n"
                       "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
                       "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
                       "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
@@ -207,7 +241,8 @@ void printUsage(const ModelInfo* model)
                       "the machine STOP latency with 1, 2 and 4 controllers.\n"
                       "Figures only; takes 30-60 s.\n"
                       "--load N: the panic latency is measured quiet and again beside N busy "
-                      "threads at normal priority (default 2). --panic-only: only those two.\n"
+                      "threads at normal priority (default 2). --panic-only: only those two. "
+                      "--panic-runs N: N runs each instead of 20 and 100.\n"
                       "--soak N: N random commands with ~1 % injected faults (dropped, "
                       "corrupted, delayed replies, noise, peer vanish) against every "
                       "simulator (or M); counts crashes, hangs, axes left moving, lost and "
@@ -240,23 +275,14 @@ int main(int argc, char** argv)
         if (!model && m.streamBench.supported())
             model = &m;
     }
-    const bool asJson = args.contains(QStringLiteral("--json"));
-    int loadThreads = kDefaultLoadThreads;
-    bool panicOnly = false;
+    RunOptions options;
     for (int i = 0; i < args.size(); ++i) {
         const QString& arg = args.at(i);
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
             printUsage(model);
             return 0;
         }
-        bool ok = true;
-        if (arg == QLatin1String("--load") && i + 1 < args.size())
-            loadThreads = args.at(++i).toInt(&ok, 10);
-        else if (arg == QLatin1String("--panic-only"))
-            panicOnly = true;
-        else if (arg != QLatin1String("--json"))
-            ok = false;
-        if (!ok || loadThreads < 0 || loadThreads > 64) {
+        if (!parseOption(args, &i, &options)) {
             print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(arg));
             return 2;
         }
@@ -266,8 +292,8 @@ int main(int argc, char** argv)
                                      "built in"));
         return 1;
     }
-    const Results results = measureAll(*model, loadThreads, panicOnly, !asJson);
-    if (asJson)
+    const Results results = measureAll(*model, options);
+    if (options.json)
         printJson(results, *model);
     else
         printHuman(results, *model);
