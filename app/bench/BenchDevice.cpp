@@ -5,6 +5,8 @@
 #include <QRandomGenerator>
 #include <QTimer>
 #include <chrono>
+#include <pthread.h>
+#include <sched.h>
 
 namespace stepdeck::bench {
 
@@ -14,6 +16,18 @@ qint64 nowNs()
                std::chrono::steady_clock::now().time_since_epoch())
         .count();
 }
+
+namespace {
+// The calling thread to the lowest SCHED_FIFO priority: above every normal thread, below the
+// kernel's own real-time work. False where the process may not (no CAP_SYS_NICE, RLIMIT_RTPRIO
+// 0); the thread then stays as it was.
+bool makeCallingThreadRealtime()
+{
+    sched_param param{};
+    param.sched_priority = sched_get_priority_min(SCHED_FIFO);
+    return pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+}
+} // namespace
 
 // Lives in the device thread; owns the endpoint, the simulator and, paced, the two wires.
 class BenchDevice::Worker : public QObject
@@ -91,6 +105,8 @@ bool BenchDevice::start(QString* error)
     QMetaObject::invokeMethod(
         w,
         [&] {
+            if (m_config.realtime)
+                m_realtime = makeCallingThreadRealtime();
             SimulatorOptions options;
             options.addresses = m_config.addresses;
             options.line = m_model.line;

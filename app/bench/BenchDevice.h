@@ -37,6 +37,11 @@ public:
         QList<int> addresses; // SimulatorOptions::addresses (multi-drive models)
         bool paced = false;
         bool metered = false; // needs ModelInfo::streamBench
+        // The device thread asks for real-time scheduling (SCHED_FIFO), standing in for a board
+        // that does not share the host's CPU: a latency measured under a CPU load then shows
+        // the host's delay, not the simulator's. Needs CAP_SYS_NICE or RLIMIT_RTPRIO (root);
+        // realtime() says whether it was granted.
+        bool realtime = false;
         // Once, in the device thread, before the terminal opens.
         std::function<void(Simulator*)> prepare;
     };
@@ -52,6 +57,7 @@ public:
     bool start(QString* error);
     QString slavePath() const { return m_slavePath; }
     bool present() const { return m_present; }
+    bool realtime() const { return m_realtime; }
     // Runs fn on the simulator in the device thread and waits for it.
     void withSimulator(const std::function<void(Simulator*)>& fn);
     // The model's meter, or nullptr unless Config::metered.
@@ -83,6 +89,7 @@ private:
     Worker* m_worker = nullptr;
     QString m_slavePath;
     std::atomic<bool> m_present{false};
+    bool m_realtime = false;
     std::atomic<qint64> m_vanishNs{-1};
 };
 

@@ -84,22 +84,25 @@ Figure measurePollRate(const ModelInfo& model, bool paced)
     return {host.lastPollRateHz(), {}};
 }
 
-LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions)
+LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions, bool deviceRealtime)
 {
     const QVector<AxisVector> stream = stepStream(kFeedStreamSteps);
     QList<double> samples;
     LatencyFigure figure;
+    figure.deviceRealtime = deviceRealtime;
     for (int i = 0; i < repetitions; ++i) {
         // A fresh device and session each time: after a panic the machine must be set up
         // and referenced again, which is not what is measured here.
         BenchDevice::Config config;
         config.metered = true;
+        config.realtime = deviceRealtime;
         BenchDevice device(model, config);
         BenchHost host;
         if (const QString error = prepare(model, &device, &host, 50, true); !error.isEmpty()) {
             figure.note = error;
             break;
         }
+        figure.deviceRealtime = figure.deviceRealtime && device.realtime();
         TrafficMeter* meter = device.meter();
         meter->reset();
         host.session().feedStream(stream);

@@ -12,6 +12,8 @@ namespace stepdeck::bench {
 constexpr int kPollIntervalMs = 1;  // the StatusPoller's floor: polls back to back
 constexpr int kPollWindowMs = 2600; // the poller reports its rate over the last second
 constexpr int kPanicRepetitions = 20;
+// Under load the tail is the point: with 100 runs p99 is the second slowest, not the slowest.
+constexpr int kPanicUnderLoadRepetitions = 100;
 constexpr int kFeedStreamSteps = 100000;
 constexpr int kFeedBudgetMs = 3000;
 
@@ -26,7 +28,8 @@ struct LatencyFigure
     std::optional<double> medianMs;
     std::optional<double> p99Ms;
     int samples = 0;
-    int pausedByXoff = 0; // runs in which the controller had paused the host with XOFF
+    int pausedByXoff = 0;        // runs in which the controller had paused the host with XOFF
+    bool deviceRealtime = false; // every run's simulator thread ran SCHED_FIFO
     QString note;
 };
 
@@ -38,7 +41,8 @@ double median(QList<double> samples);
 Figure measurePollRate(const ModelInfo& model, bool paced);
 // Call of ControllerSession::panic() -> panic byte seen by the simulator, while a
 // kFeedStreamSteps-step DC2 stream is queued behind the controller's XOFF.
-LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions);
+// With deviceRealtime the simulator's thread asks for SCHED_FIFO (BenchDevice::Config).
+LatencyFigure measurePanicLatency(const ModelInfo& model, int repetitions, bool deviceRealtime);
 // DC2 single steps delivered to the simulator per second.
 Figure measureFeedThroughput(const ModelInfo& model, bool paced);
 

@@ -1,4 +1,5 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "BusyLoad.h"
 #include "GuiIdle.h"
 #include "MachineStopLatency.h"
 #include "Measurements.h"
@@ -54,26 +55,53 @@ struct Results
     Figure poll;
     Figure pollWire;
     LatencyFigure panic;
+    LatencyFigure panicUnderLoad; // with loadThreads busy threads beside it (issue 21)
+    int loadThreads = 0;
+    int panicRuns = 0;
+    int panicUnderLoadRuns = 0;
     Figure feed;
     Figure feedWire;
     QList<QPair<int, LatencyFigure>> machineStop; // controllers -> Machine::stop() latency
 };
 
 constexpr int kMachineStopControllers[] = {1, 2, 4};
+// The under-load panic figure's load unless --load says otherwise: as many busy threads as the
+// reference machine has cores (issue 21).
+constexpr int kDefaultLoadThreads = 2;
 
-Results measureAll(const ModelInfo& model, bool showProgress)
+struct RunOptions
+{
+    int loadThreads = kDefaultLoadThreads;
+    int panicRuns = 0; // > 0: both panic figures take this many runs (smoke tests)
+    bool panicOnly = false;
+    bool json = false;
+};
+
+Results measureAll(const ModelInfo& model, const RunOptions& options)
 {
     const auto progress = [&](const char* what) {
-        if (showProgress)
+        if (!options.json)
             print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
     };
     Results r;
+    progress("panic latency");
+    const int quietRuns = options.panicRuns > 0 ? options.panicRuns : kPanicRepetitions;
+    const int loadedRuns = options.panicRuns > 0 ? options.panicRuns : kPanicUnderLoadRepetitions;
+    r.panicRuns = quietRuns;
+    r.panicUnderLoadRuns = loadedRuns;
+    r.panic = measurePanicLatency(model, quietRuns, true);
+    progress("panic latency under load");
+    r.loadThreads = options.loadThreads;
+    {
+        BusyLoad load(options.loadThreads);
+        r.panicUnderLoad = measurePanicLatency(model, loadedRuns, true);
+    }
+    if (options.panicOnly)
+        return r;
     progress("poll rate");
     r.poll = measurePollRate(model, false);
     progress("poll rate, paced");
     r.pollWire = measurePollRate(model, true);
-    progress("panic latency");
-    r.panic = measurePanicLatency(model, kPanicRepetitions);
     progress("feed throughput");
     r.feed = measureFeedThroughput(model, false);
     progress("feed throughput, paced");
@@ -85,12 +113,23 @@ Results measureAll(const ModelInfo& model, bool showProgress)
     return r;
 }
 
+QJsonObject latencyJson(const LatencyFigure& figure)
+{
+    return QJsonObject{{"median", json(figure.medianMs, 3)},
+                       {"p99", json(figure.p99Ms, 3)},
+                       {"samples", figure.samples},
+                       {"pausedByXoff", figure.pausedByXoff},
+                       {"deviceRealtime", figure.deviceRealtime}};
+}
+
 void printJson(const Results& r, const ModelInfo& model)
 {
     QJsonArray notes;
     for (const auto& [name, note] :
          {std::pair{"pollRateHz", r.poll.note}, std::pair{"pollRateWireMaxHz", r.pollWire.note},
-          std::pair{"panicLatencyMs", r.panic.note}, std::pair{"feedStepsPerSecond", r.feed.note},
+          std::pair{"panicLatencyMs", r.panic.note},
+          std::pair{"panicLatencyUnderLoadMs", r.panicUnderLoad.note},
+          std::pair{"feedStepsPerSecond", r.feed.note},
           std::pair{"feedWireMaxStepsPerSecond", r.feedWire.note}}) {
         if (!note.isEmpty())
             notes.append(QStringLiteral("%1: %2").arg(QLatin1String(name), note));
@@ -110,17 +149,17 @@ void printJson(const Results& r, const ModelInfo& model)
         {"pollRateHz", json(r.poll.value, 1)},
         {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
-        {"panicLatencyMs", QJsonObject{{"median", json(r.panic.medianMs, 3)},
-                                       {"p99", json(r.panic.p99Ms, 3)},
-                                       {"samples", r.panic.samples},
-                                       {"pausedByXoff", r.panic.pausedByXoff}}},
+        {"panicLatencyMs", latencyJson(r.panic)},
+        {"panicLatencyUnderLoadMs", latencyJson(r.panicUnderLoad)},
         {"feedStepsPerSecond", json(r.feed.value, 0)},
         {"feedWireMaxStepsPerSecond", json(r.feedWire.value, 0)},
         {"conditions", QJsonObject{{"model", model.id},
                                    {"line", lineText(model.line)},
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
-                                   {"panicRepetitions", kPanicRepetitions},
+                                   {"panicRepetitions", r.panicRuns},
+                                   {"panicUnderLoadRepetitions", r.panicUnderLoadRuns},
+                                   {"loadThreads", r.loadThreads},
                                    {"feedStreamSteps", kFeedStreamSteps}}},
         {"notes", notes},
     };
@@ -148,6 +187,11 @@ void printHuman(const Results& r, const ModelInfo& model)
               .arg(r.panic.samples)
               .arg(kFeedStreamSteps)
               .arg(r.panic.pausedByXoff));
+    print(stdout, QStringLiteral("  panic latency under load     median %1, p99 %2  (the same "
+                                 "with %3 busy threads beside it)")
+                      .arg(text(r.panicUnderLoad.medianMs, 3, ms, r.panicUnderLoad.note),
+                           text(r.panicUnderLoad.p99Ms, 3, ms, r.panicUnderLoad.note))
+                      .arg(r.loadThreads));
     print(stdout, QStringLiteral("  feed throughput              %1")
                       .arg(text(r.feed.value, 0, steps, r.feed.note)));
     print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
@@ -161,6 +205,56 @@ void printHuman(const Results& r, const ModelInfo& model)
                                text(figure.p99Ms, 3, ms, figure.note))
                           .arg(figure.samples));
     }
+}
+// One option at args[*i] (and its value, advancing *i); false when unknown or out of range.
+bool parseOption(const QStringList& args, int* i, RunOptions* o)
+{
+    const QString& arg = args.at(*i);
+    const bool hasValue = *i + 1 < args.size();
+    bool ok = true;
+    if (arg == QLatin1String("--load") && hasValue)
+        o->loadThreads = args.at(++*i).toInt(&ok, 10);
+    else if (arg == QLatin1String("--panic-runs") && hasValue)
+        o->panicRuns = args.at(++*i).toInt(&ok, 10);
+    else if (arg == QLatin1String("--panic-only"))
+        o->panicOnly = true;
+    else if (arg == QLatin1String("--json"))
+        o->json = true;
+    else
+        return false;
+    return ok && o->loadThreads >= 0 && o->loadThreads <= 64 && o->panicRuns >= 0 &&
+           o->panicRuns <= 10000;
+}
+
+void printUsage(const ModelInfo* model)
+{
+    print(stdout, QStringLiteral(
+                      "Usage: stepdeck-bench [--json] [--load N] [--panic-only] [--panic-runs N]\n"
+                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
+                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
+                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
+                      "Measures the first model with a feed stream (%1) against its "
+                      "simulator over a "
+                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
+                      "DC2 feed throughput, unpaced and paced at the line rate, and "
+                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
+                      "Figures only; takes 30-60 s.\n"
+                      "--load N: the panic latency is measured quiet and again beside N busy "
+                      "threads at normal priority (default 2). --panic-only: only those two. "
+                      "--panic-runs N: N runs each instead of 20 and 100.\n"
+                      "--soak N: N random commands with ~1 % injected faults (dropped, "
+                      "corrupted, delayed replies, noise, peer vanish) against every "
+                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
+                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
+                      "machine of an E-LAB and a Nanotec simulator driven through "
+                      "Machine, faults on either link.\n"
+                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
+                      "-write); time until the host reports it.\n"
+                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
+                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
+                      "See docs/benchmark.md.")
+                      .arg(model ? model->displayName : QStringLiteral("none built in")));
 }
 } // namespace
 
@@ -181,38 +275,15 @@ int main(int argc, char** argv)
         if (!model && m.streamBench.supported())
             model = &m;
     }
-    const bool asJson = args.contains(QStringLiteral("--json"));
-    for (const QString& arg : args) {
+    RunOptions options;
+    for (int i = 0; i < args.size(); ++i) {
+        const QString& arg = args.at(i);
         if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            print(stdout,
-                  QStringLiteral(
-                      "Usage: stepdeck-bench [--json]\n"
-                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
-                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
-                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
-                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                      "Measures the first model with a feed stream (%1) against its "
-                      "simulator over a "
-                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                      "DC2 feed throughput, unpaced and paced at the line rate, and "
-                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                      "Figures only; takes 30-60 s.\n"
-                      "--soak N: N random commands with ~1 % injected faults (dropped, "
-                      "corrupted, delayed replies, noise, peer vanish) against every "
-                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
-                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
-                      "machine of an E-LAB and a Nanotec simulator driven through "
-                      "Machine, faults on either link.\n"
-                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
-                      "-write); time until the host reports it.\n"
-                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
-                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
-                      "See docs/benchmark.md.")
-                      .arg(model ? model->displayName : QStringLiteral("none built in")));
+            printUsage(model);
             return 0;
         }
-        if (arg != QLatin1String("--json")) {
-            print(stderr, QStringLiteral("stepdeck-bench: unknown argument '%1'").arg(arg));
+        if (!parseOption(args, &i, &options)) {
+            print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(arg));
             return 2;
         }
     }
@@ -221,8 +292,8 @@ int main(int argc, char** argv)
                                      "built in"));
         return 1;
     }
-    const Results results = measureAll(*model, !asJson);
-    if (asJson)
+    const Results results = measureAll(*model, options);
+    if (options.json)
         printJson(results, *model);
     else
         printHuman(results, *model);

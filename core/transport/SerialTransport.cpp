@@ -144,6 +144,16 @@ void SerialTransport::discardOutput()
     m_expectErrors = false;
 }
 
+void SerialTransport::pushOutput()
+{
+    // QSerialPort::write() only appends to its buffer and writes from the write notifier on
+    // the next event-loop pass; flush() writes now with the port's non-blocking write(2) and
+    // leaves the rest to the notifier (Qt 6.4 QSerialPortPrivate::flush on Unix). A failed
+    // write is reported through errorOccurred as for any other write.
+    if (isOpen())
+        m_port.flush();
+}
+
 qint64 SerialTransport::bytesToWrite() const
 {
     return isOpen() ? m_port.bytesToWrite() : 0;

@@ -23,6 +23,7 @@ public:
     bool isOpen() const override;
     qint64 write(const QByteArray& bytes) override;
     void discardOutput() override;
+    void pushOutput() override;
     qint64 bytesToWrite() const override;
     bool flushOutput(int timeoutMs) override;
     qint64 pendingOutputBytes() const override;

@@ -27,6 +27,12 @@ public:
     virtual qint64 write(const QByteArray& bytes) = 0;
     virtual void discardOutput() = 0;
     virtual qint64 bytesToWrite() const = 0;
+    // Hands what write() queued to the operating system now instead of in the event loop's
+    // next pass, without blocking (what the driver does not take stays queued, in order).
+    // For the bytes that overtake everything (stop, panic): on a loaded machine the next pass
+    // can come a scheduler slice later (issue 21). Transports that hand bytes over at write()
+    // need nothing here.
+    virtual void pushOutput() {}
     // Blocks at most timeoutMs until everything written has left the process (serial: handed
     // to the kernel's tty queue). Returns true when nothing of ours is left in the process.
     // Only for the last bytes before a close: the caller's thread is blocked meanwhile.

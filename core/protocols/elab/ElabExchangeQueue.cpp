@@ -54,6 +54,9 @@ void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
         m_paceTimer.stop();
     }
     write(std::move(ex));
+    // Stop and panic leave the process now, not after the event loop's next pass.
+    if (m_transport && m_transport->isOpen())
+        m_transport->pushOutput();
 }
 
 void ElabExchangeQueue::pump()
