@@ -1399,6 +1399,13 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::TargetJogger</name>
+        <message>
+            <source>Jog ended: axis %1 reached its end switch</source>
+            <translation>Tippbetrieb beendet: Achse %1 hat ihren Endschalter erreicht</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::TcpTransport</name>
         <message>
             <source>%1: no connection within %2 ms</source>
@@ -2655,10 +2662,6 @@
             <translation>%1: Steuerung "%2" ist nicht verbunden</translation>
         </message>
         <message>
-            <source>%1: controller "%2" jogs by targets, which a machine cannot jog yet</source>
-            <translation>%1: Steuerung "%2" tippt über Zielpositionen, was eine Maschine noch nicht tippen kann</translation>
-        </message>
-        <message>
             <source>%1: the jog rate is not a finite number</source>
             <translation>%1: Die Tippgeschwindigkeit ist keine endliche Zahl</translation>
         </message>
@@ -2689,6 +2692,42 @@
         <message>
             <source>%1 stands at %2 %3, not at %4</source>
             <translation>%1 steht bei %2 %3, nicht bei %4</translation>
+        </message>
+        <message>
+            <source>referencing stopped</source>
+            <translation>Referenzieren angehalten</translation>
+        </message>
+        <message>
+            <source>referencing stopped by the panic stop</source>
+            <translation>Referenzieren durch den Not-Halt angehalten</translation>
+        </message>
+        <message>
+            <source>a reference run is going already</source>
+            <translation>eine Referenzfahrt läuft bereits</translation>
+        </message>
+        <message>
+            <source>axis %1 is named twice</source>
+            <translation>Achse %1 ist zweimal genannt</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" has no reference run</source>
+            <translation>%1: Steuerung "%2" hat keine Referenzfahrt</translation>
+        </message>
+        <message>
+            <source>no axis to reference</source>
+            <translation>keine Achse zu referenzieren</translation>
+        </message>
+        <message>
+            <source>controller "%1" is not connected: referencing stopped</source>
+            <translation>Steuerung "%1" ist nicht verbunden: Referenzieren angehalten</translation>
+        </message>
+        <message>
+            <source>controller "%1": referencing failed: %2</source>
+            <translation>Steuerung "%1": Referenzieren fehlgeschlagen: %2</translation>
+        </message>
+        <message>
+            <source>controller "%1": the reference run ended before the reference switch was reached</source>
+            <translation>Steuerung "%1": die Referenzfahrt endete, bevor der Referenzschalter erreicht war</translation>
         </message>
     </context>
     <context>
@@ -3493,6 +3532,77 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::AxesTable</name>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Controller</source>
+            <translation>Steuerung</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>Steps/unit</source>
+            <translation>Schritte/Einheit</translation>
+        </message>
+        <message>
+            <source>Invert</source>
+            <translation>Umkehren</translation>
+        </message>
+        <message>
+            <source>Min</source>
+            <translation>Min</translation>
+        </message>
+        <message>
+            <source>Max</source>
+            <translation>Max</translation>
+        </message>
+        <message>
+            <source>Max jog/s</source>
+            <translation>Max. Tippen/s</translation>
+        </message>
+        <message>
+            <source>Ref. direction</source>
+            <translation>Ref.-Richtung</translation>
+        </message>
+        <message>
+            <source>Ref. order</source>
+            <translation>Ref.-Reihenfolge</translation>
+        </message>
+        <message>
+            <source>Soft limit minimum (optional)</source>
+            <translation>Software-Endlage Minimum (optional)</translation>
+        </message>
+        <message>
+            <source>Soft limit maximum (optional)</source>
+            <translation>Software-Endlage Maximum (optional)</translation>
+        </message>
+        <message>
+            <source>Jog speed ceiling in unit/s (optional)</source>
+            <translation>Höchste Tippgeschwindigkeit in Einheit/s (optional)</translation>
+        </message>
+        <message>
+            <source>Axes with a lower order are referenced first</source>
+            <translation>Achsen mit kleinerer Reihenfolge werden zuerst referenziert</translation>
+        </message>
+        <message>
+            <source>A positive machine move is a negative controller move</source>
+            <translation>Eine positive Maschinenbewegung ist eine negative Bewegung der Steuerung</translation>
+        </message>
+        <message>
+            <source>default</source>
+            <translation>Vorgabe</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ChartsPanel</name>
         <message>
             <source>Pause</source>
@@ -3946,6 +4056,49 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ControllersTable</name>
+        <message>
+            <source>Id</source>
+            <translation>Kennung</translation>
+        </message>
+        <message>
+            <source>Model</source>
+            <translation>Modell</translation>
+        </message>
+        <message>
+            <source>Port</source>
+            <translation>Port</translation>
+        </message>
+        <message>
+            <source>Bus addresses</source>
+            <translation>Busadressen</translation>
+        </message>
+        <message>
+            <source>Reset line</source>
+            <translation>Reset-Leitung</translation>
+        </message>
+        <message>
+            <source>/dev/ttyUSB0, tcp://…, sim</source>
+            <translation>/dev/ttyUSB0, tcp://…, sim</translation>
+        </message>
+        <message>
+            <source>default</source>
+            <translation>Vorgabe</translation>
+        </message>
+        <message>
+            <source>Controller axis = bus address, e.g. X=1 Y=2 (empty: X=1, Y=2, Z=3)</source>
+            <translation>Steuerungsachse = Busadresse, z. B. X=1 Y=2 (leer: X=1, Y=2, Z=3)</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keine</translation>
+        </message>
+        <message>
+            <source>write controller axis = bus address, like X=1 Y=2 (is "%1")</source>
+            <translation>Steuerungsachse = Busadresse schreiben, z. B. X=1 Y=2 (ist "%1")</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DiffDialog</name>
         <message>
             <source>(not set)</source>
@@ -4121,6 +4274,13 @@ Regelung für Achse %1 einschalten?</translation>
         <message>
             <source>Ask every address %1..%2 for its firmware (a few seconds); the drives of this machine keep their status meanwhile</source>
             <translation>Jede Adresse %1..%2 nach ihrer Firmware fragen (einige Sekunden); die Antriebe dieser Maschine behalten währenddessen ihren Status</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::EditorTable</name>
+        <message>
+            <source>must be a decimal number like 88.8889 (is "%1")</source>
+            <translation>muss eine Dezimalzahl wie 88.8889 sein (ist "%1")</translation>
         </message>
     </context>
     <context>
@@ -4741,6 +4901,339 @@ W1500</translation>
         <message>
             <source>At %1: %2</source>
             <translation>Um %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineBar</name>
+        <message>
+            <source>Pages show:</source>
+            <translation>Seiten zeigen:</translation>
+        </message>
+        <message>
+            <source>The controller whose setup, records, traffic, drives and charts the pages show</source>
+            <translation>Die Steuerung, deren Einrichtung, Sätze, Verkehr, Antriebe und Diagramme die Seiten zeigen</translation>
+        </message>
+        <message>
+            <source>Connect or disconnect every controller of the machine</source>
+            <translation>Alle Steuerungen der Maschine verbinden oder trennen</translation>
+        </message>
+        <message>
+            <source>Machine:</source>
+            <translation>Maschine:</translation>
+        </message>
+        <message>
+            <source>simulator</source>
+            <translation>Simulator</translation>
+        </message>
+        <message>
+            <source>%1 @ %2</source>
+            <translation>%1 @ %2</translation>
+        </message>
+        <message>
+            <source>Disconnected</source>
+            <translation>Getrennt</translation>
+        </message>
+        <message>
+            <source>Connecting</source>
+            <translation>Verbinde</translation>
+        </message>
+        <message>
+            <source>Connected</source>
+            <translation>Verbunden</translation>
+        </message>
+        <message>
+            <source>Link lost</source>
+            <translation>Verbindung verloren</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>%1: %2 (%3)</source>
+            <translation>%1: %2 (%3)</translation>
+        </message>
+        <message>
+            <source>Disconnect all</source>
+            <translation>Alle trennen</translation>
+        </message>
+        <message>
+            <source>Connect all</source>
+            <translation>Alle verbinden</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineContext</name>
+        <message>
+            <source>A machine is open: close it to connect a single controller.</source>
+            <translation>Eine Maschine ist geöffnet: Schließen Sie sie, um eine einzelne Steuerung zu verbinden.</translation>
+        </message>
+        <message>
+            <source>Machine file %1: %2</source>
+            <translation>Maschinendatei %1: %2</translation>
+        </message>
+        <message>
+            <source>Machine "%1": %2</source>
+            <translation>Maschine "%1": %2</translation>
+        </message>
+        <message>
+            <source>Jog refused: axis %1 of controller "%2" is not an axis of the machine</source>
+            <translation>Tippbetrieb abgelehnt: Achse %1 der Steuerung "%2" ist keine Achse der Maschine</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineControl</name>
+        <message>
+            <source>Machine "%1" opened: %2 controllers, %3 axes.</source>
+            <translation>Maschine "%1" geöffnet: %2 Steuerungen, %3 Achsen.</translation>
+        </message>
+        <message>
+            <source>%1 cannot be stopped from here: %2</source>
+            <translation>%1 kann von hier nicht gestoppt werden: %2</translation>
+        </message>
+        <message>
+            <source>Stop: no controller is connected</source>
+            <translation>Stopp: Keine Steuerung ist verbunden</translation>
+        </message>
+        <message>
+            <source>Stop sent to %1.</source>
+            <translation>Stopp an %1 gesendet.</translation>
+        </message>
+        <message>
+            <source>Panic: no controller is connected</source>
+            <translation>Panik-Stopp: keine Steuerung ist verbunden</translation>
+        </message>
+        <message>
+            <source>PANIC STOP sent to %1: positions are lost, reference all axes before moving.</source>
+            <translation>PANIK-STOPP an %1 gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineDro</name>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>deg</source>
+            <translation>°</translation>
+        </message>
+        <message>
+            <source>steps</source>
+            <translation>Schritte</translation>
+        </message>
+        <message>
+            <source>NO LINK</source>
+            <translation>KEINE VERBINDUNG</translation>
+        </message>
+        <message>
+            <source>MOVING</source>
+            <translation>FÄHRT</translation>
+        </message>
+        <message>
+            <source>UNKNOWN</source>
+            <translation>UNBEKANNT</translation>
+        </message>
+        <message>
+            <source>ESTIMATED</source>
+            <translation>GESCHÄTZT</translation>
+        </message>
+        <message>
+            <source>REFERENCED</source>
+            <translation>REFERENZIERT</translation>
+        </message>
+        <message>
+            <source>%1 axis %2: %3 steps</source>
+            <translation>%1 Achse %2: %3 Schritte</translation>
+        </message>
+        <message>
+            <source>Controller "%1" is not connected: this is the last value known, not the position now.</source>
+            <translation>Steuerung "%1" ist nicht verbunden: Das ist der letzte bekannte Wert, nicht die Position jetzt.</translation>
+        </message>
+        <message>
+            <source>Not referenced since the last panic, reset or reconnect: the position is counted from where the axis was, not from the machine origin.</source>
+            <translation>Seit dem letzten Panik-Stopp, Reset oder Neuverbinden nicht referenziert: die Position zählt ab dem Ort, an dem die Achse stand, nicht ab dem Maschinen-Nullpunkt.</translation>
+        </message>
+        <message>
+            <source>Moving, as the controller reports.</source>
+            <translation>Fährt, wie die Steuerung meldet.</translation>
+        </message>
+        <message>
+            <source>Estimated by the host; the controller did not confirm it.</source>
+            <translation>Vom Rechner geschätzt; die Steuerung hat es nicht bestätigt.</translation>
+        </message>
+        <message>
+            <source>Known from the controller: read back or set by a reference run.</source>
+            <translation>Von der Steuerung bekannt: zurückgelesen oder durch eine Referenzfahrt gesetzt.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineEditor</name>
+        <message>
+            <source>New machine</source>
+            <translation>Neue Maschine</translation>
+        </message>
+        <message>
+            <source>Add controller</source>
+            <translation>Steuerung hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove controller</source>
+            <translation>Steuerung entfernen</translation>
+        </message>
+        <message>
+            <source>Add axis</source>
+            <translation>Achse hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove axis</source>
+            <translation>Achse entfernen</translation>
+        </message>
+        <message>
+            <source>Machine name</source>
+            <translation>Maschinenname</translation>
+        </message>
+        <message>
+            <source>Controllers</source>
+            <translation>Steuerungen</translation>
+        </message>
+        <message>
+            <source>Axes</source>
+            <translation>Achsen</translation>
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation>Öffnen…</translation>
+        </message>
+        <message>
+            <source>Save</source>
+            <translation>Speichern</translation>
+        </message>
+        <message>
+            <source>Save as…</source>
+            <translation>Speichern unter…</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>Schließen</translation>
+        </message>
+        <message>
+            <source>Valid machine with the axes %1</source>
+            <translation>Gültige Maschine mit den Achsen %1</translation>
+        </message>
+        <message>
+            <source>Machine editor – %1[*]</source>
+            <translation>Maschineneditor – %1[*]</translation>
+        </message>
+        <message>
+            <source>unnamed</source>
+            <translation>unbenannt</translation>
+        </message>
+        <message>
+            <source>StepDeck machines (*.machine.json);;JSON files (*.json)</source>
+            <translation>StepDeck-Maschinen (*.machine.json);;JSON-Dateien (*.json)</translation>
+        </message>
+        <message>
+            <source>Not opened: %1: %2</source>
+            <translation>Nicht geöffnet: %1: %2</translation>
+        </message>
+        <message>
+            <source>Not saved: %1</source>
+            <translation>Nicht gespeichert: %1</translation>
+        </message>
+        <message>
+            <source>Saved to %1</source>
+            <translation>Gespeichert in %1</translation>
+        </message>
+        <message>
+            <source>Save machine</source>
+            <translation>Maschine speichern</translation>
+        </message>
+        <message>
+            <source>Open machine</source>
+            <translation>Maschine öffnen</translation>
+        </message>
+        <message>
+            <source>Unsaved changes</source>
+            <translation>Ungespeicherte Änderungen</translation>
+        </message>
+        <message>
+            <source>The machine "%1" has unsaved changes. Save them?</source>
+            <translation>Die Maschine "%1" hat ungespeicherte Änderungen. Speichern?</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineFileActions</name>
+        <message>
+            <source>&amp;New machine…</source>
+            <translation>&amp;Neue Maschine…</translation>
+        </message>
+        <message>
+            <source>&amp;Open machine…</source>
+            <translation>Maschine ö&amp;ffnen…</translation>
+        </message>
+        <message>
+            <source>&amp;Edit machine…</source>
+            <translation>Maschine b&amp;earbeiten…</translation>
+        </message>
+        <message>
+            <source>&amp;Recent machines</source>
+            <translation>&amp;Zuletzt benutzte Maschinen</translation>
+        </message>
+        <message>
+            <source>Edit the machine open now, or choose a machine file to edit</source>
+            <translation>Die geöffnete Maschine bearbeiten oder eine Maschinendatei zum Bearbeiten wählen</translation>
+        </message>
+        <message>
+            <source>Open machine</source>
+            <translation>Maschine öffnen</translation>
+        </message>
+        <message>
+            <source>StepDeck machines (*.machine.json);;JSON files (*.json)</source>
+            <translation>StepDeck-Maschinen (*.machine.json);;JSON-Dateien (*.json)</translation>
+        </message>
+        <message>
+            <source>Edit machine</source>
+            <translation>Maschine bearbeiten</translation>
+        </message>
+        <message>
+            <source>No recent machines</source>
+            <translation>Keine zuletzt benutzten Maschinen</translation>
+        </message>
+        <message>
+            <source>Clear list</source>
+            <translation>Liste leeren</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineGoTo</name>
+        <message>
+            <source>Go to</source>
+            <translation>Anfahren</translation>
+        </message>
+        <message>
+            <source>Go to:</source>
+            <translation>Anfahren:</translation>
+        </message>
+        <message>
+            <source>Absolute target in the axis' unit; the axis must be referenced</source>
+            <translation>Absolutes Ziel in der Einheit der Achse; die Achse muss referenziert sein</translation>
+        </message>
+        <message>
+            <source>Moving %1 to %2…</source>
+            <translation>Fahre %1 nach %2…</translation>
+        </message>
+        <message>
+            <source>Go-to refused: %1</source>
+            <translation>Anfahren abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>%1 arrived.</source>
+            <translation>%1 ist angekommen.</translation>
+        </message>
+        <message>
+            <source>Go-to failed: %1</source>
+            <translation>Anfahren fehlgeschlagen: %1</translation>
         </message>
     </context>
     <context>
@@ -5418,6 +5911,22 @@ W1500</translation>
             <source>The controller chooses the direction of its reference run itself</source>
             <translation>Die Steuerung wählt die Richtung ihrer Referenzfahrt selbst</translation>
         </message>
+        <message>
+            <source>Referencing refused: %1</source>
+            <translation>Referenzfahrt abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>Referencing %1…</source>
+            <translation>Referenzfahrt %1…</translation>
+        </message>
+        <message>
+            <source>Every axis of the machine is referenced.</source>
+            <translation>Alle Achsen der Maschine sind referenziert.</translation>
+        </message>
+        <message>
+            <source>Referencing failed: %1</source>
+            <translation>Referenzfahrt fehlgeschlagen: %1</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ReferenceRunner</name>
@@ -6009,13 +6518,6 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Not stored: not connected.</source>
             <translation>Nicht gespeichert: nicht verbunden.</translation>
-        </message>
-    </context>
-    <context>
-        <name>stepdeck::ui::TargetJogger</name>
-        <message>
-            <source>Jog ended: axis %1 reached its end switch</source>
-            <translation>Tippbetrieb beendet: Achse %1 hat ihren Endschalter erreicht</translation>
         </message>
     </context>
     <context>

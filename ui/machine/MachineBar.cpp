@@ -42,10 +42,9 @@ MachineBar::MachineBar(MachineContext* context, QWidget* parent)
     rebuild();
 }
 
-void MachineBar::setToolBarActions(QAction* singleController, QAction* machine)
+void MachineBar::setSingleControllerBar(QWidget* singleController)
 {
-    m_singleAction = singleController;
-    m_machineAction = machine;
+    m_singleBar = singleController;
     rebuild();
 }
 
@@ -58,10 +57,11 @@ void MachineBar::rebuild()
     m_entries.clear();
     m_controllers->clear();
     const machine::Machine* m = m_context->machine();
-    if (m_singleAction)
-        m_singleAction->setVisible(!m);
-    if (m_machineAction)
-        m_machineAction->setVisible(m);
+    // Either bar, never both; a hidden one takes no room in the tool bar (the window's
+    // minimum width stays what the shown bar needs: tst_windowfit at 1024x768).
+    if (m_singleBar)
+        m_singleBar->setVisible(!m);
+    setVisible(m);
     if (!m)
         return;
     m_name->setText(m->description().name);

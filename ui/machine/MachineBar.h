@@ -2,7 +2,6 @@
 #include "controller/ControllerSession.h"
 #include <QWidget>
 
-class QAction;
 class QComboBox;
 class QHBoxLayout;
 class QLabel;
@@ -23,9 +22,9 @@ class MachineBar : public QWidget
 public:
     explicit MachineBar(MachineContext* context, QWidget* parent = nullptr);
 
-    // The tool bar's actions of the single-controller bar and of this bar: exactly one of them
-    // is visible, this one while a machine is open.
-    void setToolBarActions(QAction* singleController, QAction* machine);
+    // The single-controller connection bar beside this one: exactly one of them is visible,
+    // this one while a machine is open.
+    void setSingleControllerBar(QWidget* singleController);
 
     QComboBox* controllerCombo() const { return m_controllers; }
     QPushButton* connectButton() const { return m_connect; }
@@ -52,8 +51,7 @@ private:
     QComboBox* m_controllers;
     QPushButton* m_connect;
     QList<Entry> m_entries;
-    QAction* m_singleAction = nullptr;
-    QAction* m_machineAction = nullptr;
+    QWidget* m_singleBar = nullptr; // the connection bar, shown while no machine is open
 };
 
 } // namespace stepdeck::ui

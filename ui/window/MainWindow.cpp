@@ -72,8 +72,14 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
 
     auto* toolbar = addToolBar(tr("Connection"));
     toolbar->setObjectName(QStringLiteral("connectionToolbar"));
-    QAction* single = toolbar->addWidget(m_connection);
-    m_machineBar->setToolBarActions(single, toolbar->addWidget(m_machineBar));
+    // One tool bar item holding both bars: the hidden one takes no room.
+    auto* bars = new QWidget(toolbar);
+    auto* barsLayout = new QHBoxLayout(bars);
+    barsLayout->setContentsMargins(0, 0, 0, 0);
+    barsLayout->addWidget(m_connection);
+    barsLayout->addWidget(m_machineBar);
+    toolbar->addWidget(bars);
+    m_machineBar->setSingleControllerBar(m_connection);
     toolbar->setMovable(false);
 
     auto* central = new QWidget(this);

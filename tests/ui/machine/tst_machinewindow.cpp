@@ -16,6 +16,7 @@
 #include "machine/MachineGoTo.h"
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
+#include "position/ReferencePanel.h"
 #include "safety/SafetyBar.h"
 #include <QCheckBox>
 #include <QComboBox>
@@ -49,6 +50,7 @@ private Q_SLOTS:
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
     void goTo_unreferencedAxis_refusedNothingSent();
     void goTo_referencedX_deviceAtTheNearestStep();
+    void referenceAll_machine_everyControllerInTheFilesOrder();
 
 private:
     QString writeFile(const QByteArray& json);
@@ -438,6 +440,31 @@ void TestMachineWindow::goTo_referencedX_deviceAtTheNearestStep()
     QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
     QCOMPARE(m_elab->position() - origin, qint64(500)); // 1.25 mm x 400 steps/mm
     QVERIFY(m_elab->still());
+}
+
+// "Reference all" with a machine open is the machine's run (Machine::reference): the rotary
+// drive is referenced too, not only the controller the pages show, and the DRO then marks
+// every axis as referenced.
+void TestMachineWindow::referenceAll_machine_everyControllerInTheFilesOrder()
+{
+    QVERIFY(openAndConnect());
+    QCOMPARE(window()->context()->session(), machine()->session(QStringLiteral("table")));
+    auto* all = window()->referencePanel()->findChild<QPushButton*>(QStringLiteral("referenceAll"));
+    QVERIFY(all);
+    all->click();
+    // At the devices: the drive got its reference run (mode p4), the board its axes moved.
+    const auto driveReferenced = [this] {
+        const QList<QByteArray> frames = m_nanotec->frames();
+        return std::any_of(frames.cbegin(), frames.cend(),
+                           [](const QByteArray& f) { return f.contains("p4"); });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(driveReferenced(), 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(window()->referencePanel()->messageText(),
+                              QStringLiteral("Every axis of the machine is referenced."), 60000);
+    QVERIFY(m_elab->still() && m_nanotec->still());
+    for (const machine::MachineAxis& a : machine()->description().axes)
+        QCOMPARE(machine()->axisStatus(a).known, machine::PositionKnowledge::Referenced);
+    QVERIFY(all->isEnabled()); // the run is over
 }
 
 // The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
