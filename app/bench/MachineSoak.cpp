@@ -9,8 +9,8 @@
 #include <QElapsedTimer>
 #include <QRandomGenerator>
 #include <QSet>
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 namespace stepdeck::bench {

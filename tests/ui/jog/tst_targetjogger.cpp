@@ -2,11 +2,11 @@
 // each sent only after the previous one arrived; releasing stops sending. Asserted at the
 // simulated axes: what they received and that they stand still afterwards.
 #include "../UiTestSupport.h"
+#include "controller/TargetJogger.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
 #include "jog/JogInputSource.h"
 #include "jog/JogPanel.h"
-#include "controller/TargetJogger.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "safety/SafetyBar.h"
 #include <QLabel>
