@@ -1,12 +1,11 @@
 #pragma once
 #include "CliArguments.h"
+#include "CliEventWait.h"
 #include "CliOutput.h"
 #include "machine/Machine.h"
 #include <QHash>
 #include <QObject>
 #include <functional>
-
-class QEventLoop;
 
 namespace stepdeck::cli {
 
@@ -63,7 +62,7 @@ private:
     machine::MachineDescription m_description;
     machine::Machine m_machine;
     QHash<QString, QHash<RequestId, CommandResult>> m_finished; // per controller id
-    QEventLoop* m_loop = nullptr;
+    CliEventWait m_wait;
     bool m_connected = false;
     bool m_interrupted = false;
     QString m_lostController;

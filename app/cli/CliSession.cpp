@@ -40,31 +40,12 @@ CliSession::~CliSession() = default;
 
 void CliSession::wake()
 {
-    if (m_loop)
-        m_loop->quit();
+    m_wait.wake();
 }
 
 bool CliSession::waitFor(const std::function<bool()>& done, int timeoutMs)
 {
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (m_interrupted)
-            return false;
-        const qint64 left = timeoutMs < 0 ? -1 : timeoutMs - clock.elapsed();
-        if (timeoutMs >= 0 && left <= 0)
-            return false;
-        QEventLoop loop;
-        QTimer deadline;
-        deadline.setSingleShot(true);
-        connect(&deadline, &QTimer::timeout, &loop, &QEventLoop::quit);
-        if (left > 0)
-            deadline.start(int(qMin<qint64>(left, INT_MAX)));
-        m_loop = &loop;
-        loop.exec();
-        m_loop = nullptr;
-    }
-    return true;
+    return m_wait.waitFor(done, timeoutMs, m_interrupted);
 }
 
 bool CliSession::pause(int ms)

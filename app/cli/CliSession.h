@@ -1,13 +1,12 @@
 #pragma once
 #include "CliArguments.h"
+#include "CliEventWait.h"
 #include "CliOutput.h"
 #include "controller/ControllerSession.h"
 #include <QHash>
 #include <QObject>
 #include <functional>
 #include <utility>
-
-class QEventLoop;
 
 namespace stepdeck::cli {
 
@@ -81,7 +80,7 @@ private:
     CliOptions m_options;
     ControllerSession m_session;
     QHash<RequestId, CommandResult> m_finished;
-    QEventLoop* m_loop = nullptr;
+    CliEventWait m_wait;
     bool m_connected = false;
     bool m_lost = false;
     QString m_lostReason;
