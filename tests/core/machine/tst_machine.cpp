@@ -3,6 +3,7 @@
 // is made at the devices: the moves they accepted, the frames they received, whether they
 // stand still.
 #include "ModelBench.h"
+#include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "protocols/Registry.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -18,65 +19,7 @@ using namespace stepdeck::machine;
 
 namespace {
 
-// A simulator on a pty in a thread of its own, as a device is a world of its own: the
-// sessions' close (which waits for the device to acknowledge its stop) never waits for a
-// blocked test thread. Probes run in the device's thread.
-class Device
-{
-public:
-    explicit Device(const QString& modelId)
-    {
-        m_thread.start();
-        m_home.moveToThread(&m_thread);
-        const ModelInfo* info = findModel(modelId);
-        probe([&] {
-            m_end = new PtyEndpoint;
-            QString error;
-            if (!m_end->create(&error))
-                qFatal("pty: %s", qPrintable(error));
-            SimulatorOptions options;
-            options.line = info->line;
-            options.addresses = {1};
-            m_sim = info->createSimulator(options);
-            m_sim->attach(m_end);
-            m_path = m_end->slavePath();
-            return true;
-        });
-    }
-    ~Device()
-    {
-        probe([this] {
-            delete m_sim;
-            delete m_end;
-            return true;
-        });
-        m_thread.quit();
-        m_thread.wait();
-    }
-    QString path() const { return m_path; }
-    template <typename F> auto probe(F f) -> decltype(f())
-    {
-        decltype(f()) result{};
-        QMetaObject::invokeMethod(
-            &m_home, [&] { result = f(); }, Qt::BlockingQueuedConnection);
-        return result;
-    }
-    Simulator* sim() const { return m_sim; } // only inside probe()
-    void vanish()
-    {
-        probe([this] {
-            m_end->vanish();
-            return true;
-        });
-    }
-
-private:
-    QThread m_thread;
-    QObject m_home; // lives in m_thread
-    PtyEndpoint* m_end = nullptr;
-    Simulator* m_sim = nullptr;
-    QString m_path;
-};
+using Device = test::PtyDevice;
 
 MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
                  double stepsPerUnit)

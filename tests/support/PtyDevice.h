@@ -1,6 +1,6 @@
 #pragma once
-// A simulated controller on a pseudo-terminal in a thread of its own (as in
-// tests/core/machine/tst_machine.cpp): a device is a world of its own, so a session's close
+// A simulated controller on a pseudo-terminal in a thread of its own (tst_machine,
+// tst_machinewindow): a device is a world of its own, so a session's close
 // (which waits for the device to acknowledge its stop) never waits for a blocked test thread.
 // Probes run in the device's thread; every assertion that matters is made here, at the device.
 #include "protocols/Registry.h"
@@ -47,6 +47,7 @@ public:
     PtyDevice& operator=(const PtyDevice&) = delete;
 
     QString path() const { return m_path; }
+    Simulator* sim() const { return m_sim; } // only inside probe()
     template <typename F> auto probe(F f) -> decltype(f())
     {
         decltype(f()) result{};
