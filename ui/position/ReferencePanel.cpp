@@ -3,6 +3,7 @@
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineReferenceRows.h"
 #include "position/ReferenceRunner.h"
 #include <QComboBox>
 #include <QGridLayout>
@@ -31,10 +32,17 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_runner(new ReferenceRunner(context, this)),
       m_grid(new QGridLayout), m_all(new QPushButton(tr("Reference all"), this)),
       m_cancel(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
-      m_message(new ElidedLabel(this, 2))
+      m_message(new ElidedLabel(this, 2)), m_machineRows(new MachineReferenceRows(context, this))
 {
     auto* layout = new QVBoxLayout(this);
-    layout->addLayout(m_grid);
+    // The controller's own rows, or the machine's (read-only, from its file) while one is open.
+    auto* controllerRows = new QWidget(this);
+    controllerRows->setObjectName(QStringLiteral("controllerReferenceRows"));
+    controllerRows->setLayout(m_grid);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_controllerRows = controllerRows;
+    layout->addWidget(controllerRows);
+    layout->addWidget(m_machineRows);
     auto* row = new QHBoxLayout;
     row->addWidget(m_all, 1);
     row->addWidget(m_cancel);
@@ -43,7 +51,6 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     layout->addWidget(m_message);
     layout->addStretch(1);
     m_all->setObjectName(QStringLiteral("referenceAll"));
-    m_all->setToolTip(tr("Reference every axis in the order given (equal numbers run together)"));
     m_cancel->setEnabled(false);
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
@@ -64,7 +71,28 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
             [this] { onStatus(m_context->status()); });
     connect(context, &MachineContext::panicTriggered, this,
             [this] { invalidateSuccess(tr("the panic stop")); });
+    connect(context, &MachineContext::machineChanged, this, &ReferencePanel::showMachineOrNot);
+    connect(context, &MachineContext::machineStatusChanged, this,
+            [this] { onStatus(m_context->status()); });
+    connect(m_machineRows, &MachineReferenceRows::referenceRequested, this,
+            [this](const QStringList& axes) {
+                if (machine::Machine* m = m_context->machine())
+                    referenceMachine(m, axes);
+            });
     rebuild();
+    showMachineOrNot();
+}
+
+void ReferencePanel::showMachineOrNot()
+{
+    const bool machine = m_context->hasMachine();
+    m_controllerRows->setVisible(!machine);
+    m_machineRows->setVisible(machine);
+    m_all->setToolTip(machine ? tr("Reference every axis of the machine in the order and "
+                                   "directions of its file (equal orders run together)")
+                              : tr("Reference every axis in the order given (equal numbers run "
+                                   "together)"));
+    onStatus(m_context->status());
 }
 
 void ReferencePanel::rebuild()
@@ -165,7 +193,7 @@ QString ReferencePanel::messageText() const
 void ReferencePanel::referenceAll()
 {
     if (machine::Machine* m = m_context->machine()) {
-        referenceMachine(m);
+        referenceMachine(m, {});
         return;
     }
     m_runner->start(ReferenceRunner::plan(directions(), order()));
@@ -173,12 +201,13 @@ void ReferencePanel::referenceAll()
 
 // With a machine open, "Reference all" is the machine's: every axis of every controller in the
 // file's order and directions (Machine::reference), not this panel's per-controller plan.
-void ReferencePanel::referenceMachine(machine::Machine* m)
+void ReferencePanel::referenceMachine(machine::Machine* m, const QStringList& axes)
 {
     if (m_listenedMachine != m)
         listenTo(m);
     QString refusal;
-    m_machineRun = m->reference({}, &refusal);
+    m_machineRun = m->reference(axes, &refusal);
+    m_machineRunAxes = axes;
     if (m_machineRun == 0) {
         onFinished(false, tr("Referencing refused: %1").arg(refusal));
         return;
@@ -192,17 +221,22 @@ void ReferencePanel::listenTo(machine::Machine* m)
     m_listenedMachine = m;
     connect(m, &machine::Machine::referenceGroupStarted, this,
             [this](quint64 id, const QStringList& axes) {
-                if (id == m_machineRun)
-                    onProgress(0, 1,
-                               tr("Referencing %1\u2026").arg(axes.join(QStringLiteral(", "))));
+                if (id != m_machineRun)
+                    return;
+                m_machineRows->setRunningAxes(axes);
+                onProgress(0, 1, tr("Referencing %1\u2026").arg(axes.join(QStringLiteral(", "))));
             });
     connect(m, &machine::Machine::referenceFinished, this,
             [this](quint64 id, bool ok, const QString& message) {
                 if (id != m_machineRun)
                     return;
                 m_machineRun = 0;
-                onFinished(ok, ok ? tr("Every axis of the machine is referenced.")
-                                  : tr("Referencing failed: %1").arg(message));
+                m_machineRows->setRunningAxes({});
+                const QString done =
+                    m_machineRunAxes.isEmpty()
+                        ? tr("Every axis of the machine is referenced.")
+                        : tr("%1 referenced.").arg(m_machineRunAxes.join(QStringLiteral(", ")));
+                onFinished(ok, ok ? done : tr("Referencing failed: %1").arg(message));
             });
 }
 
@@ -222,10 +256,12 @@ void ReferencePanel::cancel()
 
 void ReferencePanel::onStatus(const MachineStatus& status)
 {
-    const bool live = m_context->isConnected();
-    // Referencing needs a connection (and no run in progress).
+    // Referencing needs a connection (with a machine: any of its controllers; the machine
+    // refuses a run whose controller is not connected, saying which) and no run in progress.
+    const bool live = machineConnected() || m_context->isConnected();
     const bool idle = !m_runner->isRunning() && m_machineRun == 0;
     m_all->setEnabled(live && idle);
+    m_machineRows->setRunsEnabled(live && idle);
     for (const Row& row : std::as_const(m_rows))
         row.run->setEnabled(live && idle);
     for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
@@ -254,6 +290,19 @@ void ReferencePanel::onStatus(const MachineStatus& status)
             }
         }
     }
+}
+
+bool ReferencePanel::machineConnected() const
+{
+    const machine::Machine* m = m_context->machine();
+    if (!m)
+        return false;
+    for (const machine::MachineController& c : m->description().controllers) {
+        const ControllerSession* s = m->session(c.id);
+        if (s && s->isCreated() && s->linkState() == LinkState::Connected)
+            return true;
+    }
+    return false;
 }
 
 void ReferencePanel::invalidateSuccess(const QString& cause)

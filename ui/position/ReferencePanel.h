@@ -19,6 +19,7 @@ namespace stepdeck::ui {
 class ElidedLabel;
 class LedIndicator;
 class MachineContext;
+class MachineReferenceRows;
 class ReferenceRunner;
 
 // Referencing (homing): direction and order per axis (default Z first, then X and Y),
@@ -33,6 +34,7 @@ public:
     QMap<Axis, int> directions() const;
     QMap<Axis, int> order() const;
     QString messageText() const;
+    MachineReferenceRows* machineRows() const { return m_machineRows; }
 
 public Q_SLOTS:
     void referenceAll();
@@ -49,7 +51,9 @@ private:
     };
     void rebuild();
     void store();
-    void referenceMachine(machine::Machine* m);
+    void referenceMachine(machine::Machine* m, const QStringList& axes);
+    void showMachineOrNot();
+    bool machineConnected() const;
     void listenTo(machine::Machine* m);
     void onStatus(const MachineStatus& status);
     void onProgress(int stage, int stages, const QString& text);
@@ -60,12 +64,15 @@ private:
     MachineContext* m_context;
     ReferenceRunner* m_runner;
     QGridLayout* m_grid;
+    QWidget* m_controllerRows = nullptr;
     QMap<Axis, Row> m_rows;
     QPushButton* m_all;
     QPushButton* m_cancel;
     QProgressBar* m_progress;
     ElidedLabel* m_message;
-    quint64 m_machineRun = 0; // the machine's reference run under way (Machine::reference)
+    MachineReferenceRows* m_machineRows;
+    quint64 m_machineRun = 0;     // the machine's reference run under way (Machine::reference)
+    QStringList m_machineRunAxes; // its axes; empty: all
     QPointer<machine::Machine> m_listenedMachine;
     QList<Axis> m_successAxes; // referenced by the last successful run, still referenced
 };

@@ -14,6 +14,7 @@
 #include "machine/MachineBar.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineGoTo.h"
+#include "machine/MachineReferenceRows.h"
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -51,6 +52,7 @@ private Q_SLOTS:
     void goTo_unreferencedAxis_refusedNothingSent();
     void goTo_referencedX_deviceAtTheNearestStep();
     void referenceAll_machine_everyControllerInTheFilesOrder();
+    void referenceAxis_machine_fileRowsShownOnlyThatControllerRuns();
 
 private:
     QString writeFile(const QByteArray& json);
@@ -465,6 +467,42 @@ void TestMachineWindow::referenceAll_machine_everyControllerInTheFilesOrder()
     for (const machine::MachineAxis& a : machine()->description().axes)
         QCOMPARE(machine()->axisStatus(a).known, machine::PositionKnowledge::Referenced);
     QVERIFY(all->isEnabled()); // the run is over
+}
+
+// With a machine open the panel shows the machine's axes with the direction and order of its
+// file (what Machine::reference follows), not the selected controller's editable fields, and
+// "Reference A" runs only the rotary drive: the board sees no motion.
+void TestMachineWindow::referenceAxis_machine_fileRowsShownOnlyThatControllerRuns()
+{
+    QVERIFY(openAndConnect());
+    ui::ReferencePanel* panel = window()->referencePanel();
+    ui::MachineReferenceRows* rows = panel->machineRows();
+    QWidget* controllerRows = panel->findChild<QWidget*>(QStringLiteral("controllerReferenceRows"));
+    QVERIFY(rows->isVisibleTo(panel));
+    QVERIFY(!controllerRows->isVisibleTo(panel));
+    QCOMPARE(rows->axisNames(), (QStringList{"A", "X", "Y", "Z"}));
+    QCOMPARE(rows->directionText(QStringLiteral("X")), QStringLiteral("\u2212 (negative)"));
+    QCOMPARE(rows->orderText(QStringLiteral("Z")), QStringLiteral("0"));
+    const qint64 boardBefore = m_elab->position();
+    QTRY_VERIFY_WITH_TIMEOUT(rows->runButton(QStringLiteral("A"))->isEnabled(), 5000);
+    rows->runButton(QStringLiteral("A"))->click();
+    const auto driveReferenced = [this] {
+        const QList<QByteArray> frames = m_nanotec->frames();
+        return std::any_of(frames.cbegin(), frames.cend(),
+                           [](const QByteArray& f) { return f.contains("p4"); });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(driveReferenced(), 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(panel->messageText(), QStringLiteral("A referenced."), 60000);
+    const machine::MachineDescription& d = machine()->description();
+    QCOMPARE(machine()->axisStatus(*d.axis(QStringLiteral("A"))).known,
+             machine::PositionKnowledge::Referenced);
+    QCOMPARE(machine()->axisStatus(*d.axis(QStringLiteral("X"))).known,
+             machine::PositionKnowledge::Unknown);
+    QVERIFY(m_elab->still());
+    QCOMPARE(m_elab->position(), boardBefore);
+    window()->closeMachine();
+    QVERIFY(!rows->isVisibleTo(panel));
+    QVERIFY(controllerRows->isVisibleTo(panel));
 }
 
 // The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
