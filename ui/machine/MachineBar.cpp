@@ -64,11 +64,19 @@ void MachineBar::rebuild()
     setVisible(m);
     if (!m)
         return;
-    m_name->setText(m->description().name);
+    // Long names and ports (a /dev/serial/by-id/... path, a tcp:// address) are elided in the
+    // middle to a fixed width, the full text in the tooltip: the tool bar must not grow past
+    // the window's width with a machine of several controllers.
+    const QFontMetrics metrics = fontMetrics();
+    const int nameWidth = metrics.horizontalAdvance(QLatin1Char('M')) * kNameChars;
+    const int portWidth = metrics.horizontalAdvance(QLatin1Char('M')) * kPortChars;
+    m_name->setText(metrics.elidedText(m->description().name, Qt::ElideRight, nameWidth));
+    m_name->setToolTip(m->description().name);
     for (const machine::MachineController& c : m->description().controllers) {
         ControllerSession* session = m->session(c.id);
         const QString port = c.isSimulated() ? tr("simulator") : c.port;
-        Entry entry{c.id, new LedIndicator(tr("%1 @ %2").arg(c.id, port), this)};
+        const QString shown = metrics.elidedText(port, Qt::ElideMiddle, portWidth);
+        Entry entry{c.id, port, new LedIndicator(tr("%1 @ %2").arg(c.id, shown), this)};
         m_lamps->addWidget(entry.lamp);
         m_controllers->addItem(c.id, c.id);
         // The lamp follows its own controller's link, whichever the pages show.
@@ -109,8 +117,9 @@ void MachineBar::showLink(const Entry& entry, LinkState state, const QString& re
         break;
     }
     entry.lamp->setState(lamp);
-    entry.lamp->setToolTip(reason.isEmpty() ? tr("%1: %2").arg(entry.id, text)
-                                            : tr("%1: %2 (%3)").arg(entry.id, text, reason));
+    const QString who = tr("%1 @ %2").arg(entry.id, entry.port);
+    entry.lamp->setToolTip(reason.isEmpty() ? tr("%1: %2").arg(who, text)
+                                            : tr("%1: %2 (%3)").arg(who, text, reason));
 }
 
 void MachineBar::updateButton()

@@ -20,6 +20,9 @@ class MachineBar : public QWidget
 {
     Q_OBJECT
 public:
+    static constexpr int kNameChars = 16; // widths in 'M's beyond which a text is elided
+    static constexpr int kPortChars = 12;
+
     explicit MachineBar(MachineContext* context, QWidget* parent = nullptr);
 
     // The single-controller connection bar beside this one: exactly one of them is visible,
@@ -38,6 +41,7 @@ private:
     struct Entry
     {
         QString id;
+        QString port; // in full, for the tooltip
         LedIndicator* lamp = nullptr;
     };
     void rebuild();

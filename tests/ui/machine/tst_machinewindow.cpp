@@ -49,6 +49,7 @@ private Q_SLOTS:
     void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
     void dro_afterMoveX2point5_shows2point500mm();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
+    void machineBar_longNamesAndPorts_elidedFullTextInTooltip();
     void goTo_unreferencedAxis_refusedNothingSent();
     void goTo_referencedX_deviceAtTheNearestStep();
     void referenceAll_machine_everyControllerInTheFilesOrder();
@@ -408,6 +409,40 @@ void TestMachineWindow::layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut()
                             clippedTexts(window()->positionPanel()->machineGoTo());
     QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
     QVERIFY(window()->safetyBar()->stopButton()->visibleRegion().boundingRect().width() > 100);
+}
+
+// Ports like /dev/serial/by-id/... paths made the bar wider than a 1366 screen with three
+// controllers: each is elided in the middle, the full port in its lamp's tooltip.
+void TestMachineWindow::machineBar_longNamesAndPorts_elidedFullTextInTooltip()
+{
+    const QString longPort =
+        QStringLiteral("/dev/serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0");
+    const QByteArray json = QStringLiteral(R"({
+  "format": "stepdeck-machine", "version": 1,
+  "name": "Gantry of the second assembly line, hall 4, with rotary wrist and tool changer",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "%1" },
+    { "id": "wrist", "model": "nanotec", "port": "%1.1", "axes": { "X": 1 } },
+    { "id": "turntable", "model": "emis", "port": "%1.2" }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "A", "controller": "wrist", "axis": "X", "unit": "deg", "stepsPerUnit": 100 },
+    { "name": "U", "controller": "turntable", "axis": "U", "unit": "deg", "stepsPerUnit": 50 }
+  ]
+})")
+                                .arg(longPort)
+                                .toUtf8();
+    QVERIFY(window()->openMachine(writeFile(json)));
+    ui::MachineBar* bar = window()->machineBar();
+    QVERIFY(bar->lampText(QStringLiteral("turntable")).contains(longPort + QStringLiteral(".2")));
+    const ui::LedIndicator* lamp = bar->lamp(QStringLiteral("wrist"));
+    QVERIFY(lamp->text().startsWith(QStringLiteral("wrist @ /dev/")));
+    QVERIFY(lamp->text().contains(QChar(0x2026)));
+    QVERIFY2(bar->sizeHint().width() < 1366 / 2,
+             qPrintable(QString::number(bar->sizeHint().width())));
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(minimum.width() <= 1366, qPrintable(QString::number(minimum.width())));
 }
 
 void TestMachineWindow::goTo_unreferencedAxis_refusedNothingSent()
