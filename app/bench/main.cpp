@@ -74,16 +74,15 @@ struct RunOptions
     int loadThreads = kDefaultLoadThreads;
     int panicRuns = 0; // > 0: both panic figures take this many runs (smoke tests)
     bool panicOnly = false;
+    bool machineStopOnly = false;
+    int machineStopRuns = kMachineStopRepetitions;
     bool json = false;
 };
 
-Results measureAll(const ModelInfo& model, const RunOptions& options)
+template <typename Progress>
+void measurePanicAndWire(const ModelInfo& model, const RunOptions& options, Results& r,
+                         const Progress& progress)
 {
-    const auto progress = [&](const char* what) {
-        if (!options.json)
-            print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
-    };
-    Results r;
     progress("panic latency");
     const int quietRuns = options.panicRuns > 0 ? options.panicRuns : kPanicRepetitions;
     const int loadedRuns = options.panicRuns > 0 ? options.panicRuns : kPanicUnderLoadRepetitions;
@@ -97,7 +96,7 @@ Results measureAll(const ModelInfo& model, const RunOptions& options)
         r.panicUnderLoad = measurePanicLatency(model, loadedRuns, true);
     }
     if (options.panicOnly)
-        return r;
+        return;
     progress("poll rate");
     r.poll = measurePollRate(model, false);
     progress("poll rate, paced");
@@ -106,9 +105,23 @@ Results measureAll(const ModelInfo& model, const RunOptions& options)
     r.feed = measureFeedThroughput(model, false);
     progress("feed throughput, paced");
     r.feedWire = measureFeedThroughput(model, true);
+}
+
+Results measureAll(const ModelInfo& model, const RunOptions& options)
+{
+    const auto progress = [&](const char* what) {
+        if (!options.json)
+            print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
+    };
+    Results r;
+    if (!options.machineStopOnly) {
+        measurePanicAndWire(model, options, r, progress);
+        if (options.panicOnly)
+            return r;
+    }
     for (const int n : kMachineStopControllers) {
         progress("machine STOP latency (1, 2, 4 controllers)");
-        r.machineStop << qMakePair(n, measureMachineStopLatency(model, n, kMachineStopRepetitions));
+        r.machineStop << qMakePair(n, measureMachineStopLatency(model, n, options.machineStopRuns));
     }
     return r;
 }
@@ -166,14 +179,11 @@ void printJson(const Results& r, const ModelInfo& model)
     print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
 }
 
-void printHuman(const Results& r, const ModelInfo& model)
+void printPanicAndWire(const Results& r)
 {
     const QString hz = QStringLiteral("Hz");
     const QString ms = QStringLiteral("ms");
     const QString steps = QStringLiteral("steps/s");
-    print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
-                                 "pseudo-terminal; paced = %2 in both directions")
-                      .arg(model.id, lineText(model.line)));
     print(stdout, QStringLiteral("  poll rate                    %1  (poll interval %2 ms)")
                       .arg(text(r.poll.value, 1, hz, r.poll.note))
                       .arg(kPollIntervalMs));
@@ -196,6 +206,16 @@ void printHuman(const Results& r, const ModelInfo& model)
                       .arg(text(r.feed.value, 0, steps, r.feed.note)));
     print(stdout, QStringLiteral("  feed, paced (wire max)       %1")
                       .arg(text(r.feedWire.value, 0, steps, r.feedWire.note)));
+}
+
+void printHuman(const Results& r, const ModelInfo& model)
+{
+    const QString ms = QStringLiteral("ms");
+    print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
+                                 "pseudo-terminal; paced = %2 in both directions")
+                      .arg(model.id, lineText(model.line)));
+    if (r.panicRuns > 0) // not with --machine-stop-only
+        printPanicAndWire(r);
     for (const auto& [controllers, figure] : r.machineStop) {
         print(stdout, QStringLiteral("  machine STOP, %1 controller%2  median %3, p99 %4  (%5 "
                                      "runs, Machine::stop() to the stop at the last device)")
@@ -218,18 +238,24 @@ bool parseOption(const QStringList& args, int* i, RunOptions* o)
         o->panicRuns = args.at(++*i).toInt(&ok, 10);
     else if (arg == QLatin1String("--panic-only"))
         o->panicOnly = true;
+    else if (arg == QLatin1String("--machine-stop-only"))
+        o->machineStopOnly = true;
+    else if (arg == QLatin1String("--machine-stop-runs") && hasValue)
+        o->machineStopRuns = args.at(++*i).toInt(&ok, 10);
     else if (arg == QLatin1String("--json"))
         o->json = true;
     else
         return false;
     return ok && o->loadThreads >= 0 && o->loadThreads <= 64 && o->panicRuns >= 0 &&
-           o->panicRuns <= 10000;
+           o->panicRuns <= 10000 && o->machineStopRuns > 0 && o->machineStopRuns <= 10000;
 }
 
 void printUsage(const ModelInfo* model)
 {
     print(stdout, QStringLiteral(
                       "Usage: stepdeck-bench [--json] [--load N] [--panic-only] [--panic-runs N]\n"
+                      "       stepdeck-bench [--json] --machine-stop-only "
+                      "[--machine-stop-runs N]\n"
                       "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
                       "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
                       "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
@@ -243,6 +269,8 @@ void printUsage(const ModelInfo* model)
                       "--load N: the panic latency is measured quiet and again beside N busy "
                       "threads at normal priority (default 2). --panic-only: only those two. "
                       "--panic-runs N: N runs each instead of 20 and 100.\n"
+                      "--machine-stop-only: only the machine STOP latency; "
+                      "--machine-stop-runs N: N runs per machine size instead of 100.\n"
                       "--soak N: N random commands with ~1 % injected faults (dropped, "
                       "corrupted, delayed replies, noise, peer vanish) against every "
                       "simulator (or M); counts crashes, hangs, axes left moving, lost and "
