@@ -281,6 +281,26 @@ std::optional<MachineDescription> MachineFile::parse(const QByteArray& json,
 {
     MachineFileError local;
     MachineFileError* e = error ? error : &local;
+    std::optional<MachineDescription> d = readStructure(json, e);
+    if (!d || !validate(*d, e))
+        return std::nullopt;
+    return d;
+}
+
+std::optional<MachineDescription> MachineFile::parseDraft(const QByteArray& json,
+                                                          MachineFileError* error)
+{
+    MachineFileError local;
+    MachineFileError* e = error ? error : &local;
+    std::optional<MachineDescription> d = readStructure(json, e);
+    if (d)
+        validate(*d, e); // the first rule it breaks, for the editor to mark
+    return d;
+}
+
+std::optional<MachineDescription> MachineFile::readStructure(const QByteArray& json,
+                                                             MachineFileError* e)
+{
     *e = {};
     if (json.trimmed().isEmpty()) {
         e->message = tr("the file is empty: a machine file holds a JSON object with \"format\": "
@@ -299,12 +319,12 @@ std::optional<MachineDescription> MachineFile::parse(const QByteArray& json,
         return std::nullopt;
     }
     MachineDescription d;
-    if (!Reader(e).readTop(doc.object(), &d) || !validate(d, e))
+    if (!Reader(e).readTop(doc.object(), &d))
         return std::nullopt;
     return d;
 }
 
-std::optional<MachineDescription> MachineFile::load(const QString& path, MachineFileError* error)
+std::optional<QByteArray> MachineFile::read(const QString& path, MachineFileError* error)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
@@ -314,7 +334,20 @@ std::optional<MachineDescription> MachineFile::load(const QString& path, Machine
         }
         return std::nullopt;
     }
-    return parse(file.readAll(), error);
+    return file.readAll();
+}
+
+std::optional<MachineDescription> MachineFile::load(const QString& path, MachineFileError* error)
+{
+    const std::optional<QByteArray> text = read(path, error);
+    return text ? parse(*text, error) : std::nullopt;
+}
+
+std::optional<MachineDescription> MachineFile::loadDraft(const QString& path,
+                                                         MachineFileError* error)
+{
+    const std::optional<QByteArray> text = read(path, error);
+    return text ? parseDraft(*text, error) : std::nullopt;
 }
 
 bool MachineFile::save(const MachineDescription& machine, const QString& path, QString* error)

@@ -29,10 +29,23 @@ class MachineFile
 public:
     static std::optional<MachineDescription> parse(const QByteArray& json, MachineFileError* error);
     static std::optional<MachineDescription> load(const QString& path, MachineFileError* error);
+    // For the editor: the machine as the file describes it whenever its structure reads (JSON,
+    // keys, types), even when a value breaks a rule -- *error then names the first such rule
+    // and the editor marks it, so a technician can fix a file that does not open. nullopt
+    // (and *error) only when the structure itself is broken.
+    static std::optional<MachineDescription> parseDraft(const QByteArray& json,
+                                                        MachineFileError* error);
+    static std::optional<MachineDescription> loadDraft(const QString& path,
+                                                       MachineFileError* error);
     // Validates a description built in memory (the GUI's editor) with the same rules.
     static bool validate(const MachineDescription& machine, MachineFileError* error);
     // Atomic (QSaveFile); false with *error set when the file cannot be written.
     static bool save(const MachineDescription& machine, const QString& path, QString* error);
+
+private:
+    static std::optional<MachineDescription> readStructure(const QByteArray& json,
+                                                           MachineFileError* error);
+    static std::optional<QByteArray> read(const QString& path, MachineFileError* error);
 };
 
 } // namespace stepdeck::machine

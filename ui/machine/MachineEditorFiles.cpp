@@ -29,10 +29,13 @@ QString defaultFileName(const QString& machineName)
 }
 } // namespace
 
+// A file whose values break a rule opens all the same, its first error shown and marked
+// (MachineFile::loadDraft): the editor is where such a file gets fixed. Only a file whose
+// structure does not read (JSON, keys, types) stays closed.
 bool MachineEditor::openFile(const QString& path)
 {
     MachineFileError error;
-    const std::optional<MachineDescription> loaded = MachineFile::load(path, &error);
+    const std::optional<MachineDescription> loaded = MachineFile::loadDraft(path, &error);
     if (!loaded) {
         showMessage(tr("Not opened: %1: %2").arg(QFileInfo(path).fileName(), error.text()), true);
         return false;

@@ -242,6 +242,16 @@ void TestMachineFile::parse_invalid_namesTheField()
     QCOMPARE(error.field, field);
     QVERIFY2(error.message.contains(says), qPrintable(error.text()));
     QVERIFY(error.text().startsWith(field + QStringLiteral(": ")));
+    // The editor's reading names the same field; whatever it returns breaks the same rule.
+    MachineFileError draftError;
+    const std::optional<MachineDescription> draft = MachineFile::parseDraft(json, &draftError);
+    QCOMPARE(draftError.field, error.field);
+    QCOMPARE(draftError.message, error.message);
+    if (draft) {
+        MachineFileError again;
+        QVERIFY(!MachineFile::validate(*draft, &again));
+        QCOMPARE(again.field, field);
+    }
 }
 
 void TestMachineFile::parse_brokenJson_givesLineAndColumn()

@@ -1,10 +1,13 @@
 // The machine editor's files (issue 19): a round trip of every shipped example through the
-// editor, Save refused for an invalid machine, an invalid file not opened, a new machine from
+// editor, Save refused for an invalid machine, a file with a wrong value opened marked (one with
+// a broken structure not opened), a new machine from
 // the connected controller, and the unsaved-changes question.
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
 #include <QFileDialog>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -24,7 +27,8 @@ private Q_SLOTS:
     void roundTrip_example_savesWhatWasEdited_data();
     void roundTrip_example_savesWhatWasEdited();
     void save_invalidMachine_isRefused();
-    void open_invalidFile_keepsMachineAndNamesField();
+    void open_invalidValue_opensMarkedAndCanBeFixed();
+    void open_brokenStructure_keepsMachineAndNamesField();
     void startFromController_isSingleControllerMachine();
     void close_withUnsavedChanges_asksFirst();
 };
@@ -90,7 +94,9 @@ void TestMachineEditorFiles::save_invalidMachine_isRefused()
     QVERIFY(editor->messageText().contains(QStringLiteral("axes[0].stepsPerUnit")));
 }
 
-void TestMachineEditorFiles::open_invalidFile_keepsMachineAndNamesField()
+// A file whose value breaks a rule opens with the field marked, so that it can be fixed and
+// saved here; a file whose structure does not read (an unknown key) leaves the editor as it was.
+void TestMachineEditorFiles::open_invalidValue_opensMarkedAndCanBeFixed()
 {
     auto editor = editorWith(QStringLiteral("emis-xyzu.machine.json"));
     const auto before = editor->machine();
@@ -103,8 +109,40 @@ void TestMachineEditorFiles::open_invalidFile_keepsMachineAndNamesField()
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write(QJsonDocument(broken.toJson()).toJson());
     file.close();
-    QVERIFY(!editor->openFile(path));
+    QVERIFY(editor->openFile(path));
+    QCOMPARE(editor->path(), path);
+    QCOMPARE(editor->error().field, QStringLiteral("axes[1].stepsPerUnit"));
     QVERIFY2(editor->messageText().contains(QStringLiteral("axes[1].stepsPerUnit")),
+             qPrintable(editor->messageText()));
+    QCOMPARE(editor->markedCells(), editor->cellsOf(QStringLiteral("axes[1].stepsPerUnit")));
+    QVERIFY(!editor->machine()); // invalid as it stands
+    typeInto(editor->axesTable()->cell(1, "stepsPerUnit"),
+             QString::number(before->axes[1].stepsPerUnit));
+    QVERIFY2(editor->error().field.isEmpty(), qPrintable(editor->messageText()));
+    QVERIFY(editor->saveTo(path));
+    MachineFileError error;
+    QCOMPARE(MachineFile::load(path, &error), before);
+}
+
+void TestMachineEditorFiles::open_brokenStructure_keepsMachineAndNamesField()
+{
+    auto editor = editorWith(QStringLiteral("emis-xyzu.machine.json"));
+    const auto before = editor->machine();
+    QVERIFY(before);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("broken.machine.json"));
+    QJsonObject json = before->toJson();
+    QJsonArray axes = json.value(QStringLiteral("axes")).toArray();
+    QJsonObject axis = axes.at(1).toObject();
+    axis.insert(QStringLiteral("stepsPerMm"), 400); // not a key of the format
+    axes.replace(1, axis);
+    json.insert(QStringLiteral("axes"), axes);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QJsonDocument(json).toJson());
+    file.close();
+    QVERIFY(!editor->openFile(path));
+    QVERIFY2(editor->messageText().contains(QStringLiteral("axes[1]")),
              qPrintable(editor->messageText()));
     QCOMPARE(editor->machine(), before);
     QCOMPARE(editor->path(), example(QStringLiteral("emis-xyzu.machine.json")));
