@@ -37,6 +37,9 @@ public:
     bool openFile(const QString& path);
     // Writes the machine (MachineDescription::toJson) to path; refused while it is invalid.
     bool saveTo(const QString& path);
+    // Closes the editor -- after the unsaved-changes question when there are any -- and then
+    // runs next; Cancel leaves the editor open and next is never run.
+    void closeThen(std::function<void()> next);
 
     // The machine as edited when it is valid.
     std::optional<machine::MachineDescription> machine() const;

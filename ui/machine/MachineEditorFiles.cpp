@@ -128,6 +128,16 @@ void MachineEditor::afterUnsavedChanges(std::function<void()> next)
                                 });
 }
 
+void MachineEditor::closeThen(std::function<void()> next)
+{
+    afterUnsavedChanges([this, next = std::move(next)] {
+        m_closing = true;
+        close();
+        m_closing = false;
+        next();
+    });
+}
+
 void MachineEditor::closeEvent(QCloseEvent* event)
 {
     if (m_closing || !m_modified) {

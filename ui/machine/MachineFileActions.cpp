@@ -41,6 +41,20 @@ MachineEditor* MachineFileActions::editor() const
     return m_editor.data();
 }
 
+bool MachineFileActions::closeEditorThen(std::function<void()> then)
+{
+    if (!m_editor || !m_editor->isModified()) {
+        if (m_editor)
+            m_editor->close();
+        return true;
+    }
+    m_editor->show();
+    m_editor->raise();
+    m_editor->activateWindow();
+    m_editor->closeThen(std::move(then));
+    return false;
+}
+
 void MachineFileActions::setCurrentMachine(const QString& path)
 {
     m_current = path;

@@ -1,6 +1,7 @@
 #pragma once
 #include <QObject>
 #include <QPointer>
+#include <functional>
 
 class QAction;
 class QMenu;
@@ -30,6 +31,10 @@ public:
     QMenu* recentMenu() const { return m_recent; }
     // The editor window open now (nullptr: none).
     MachineEditor* editor() const;
+    // The main window is closing: true when no editor holds unsaved changes (an open editor is
+    // closed). Otherwise false: the editor comes to the front and asks first, and `then` runs
+    // once it closed (saved or discarded); after Cancel nothing runs and the window stays.
+    bool closeEditorThen(std::function<void()> then);
 
 public Q_SLOTS:
     // The machine the window runs now: Edit machine… edits it. Empty: none.

@@ -297,6 +297,7 @@ void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     auto* machineFiles = new MachineFileActions(m_context, this);
+    m_machineFiles = machineFiles;
     machineFiles->addTo(file);
     // An opened machine is the one "Edit machine…" edits; an invalid file opens nothing and
     // its message names the field.
@@ -540,6 +541,13 @@ void MainWindow::updateModelDocks()
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     m_jogPanel->releaseAll();
+    // Unsaved machine edits are not dropped with the window: the editor asks first.
+    if (m_machineFiles && !m_machineFiles->closeEditorThen([this] {
+            QMetaObject::invokeMethod(this, &QWidget::close, Qt::QueuedConnection);
+        })) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());

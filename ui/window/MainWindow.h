@@ -23,6 +23,7 @@ class LaserBridgePage;
 class MachineBar;
 class MachineContext;
 class MachineControl;
+class MachineFileActions;
 class MessageLine;
 class MessageLog;
 class PositionPanel;
@@ -121,6 +122,7 @@ private:
     ConnectionBar* m_connection;
     MachineBar* m_machineBar = nullptr;
     MachineControl* m_machineControl = nullptr;
+    MachineFileActions* m_machineFiles = nullptr;
     SafetyBar* m_safety = nullptr;
     SafetyKeyFilter* m_safetyKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;

@@ -32,6 +32,7 @@ private Q_SLOTS:
     void newMachine_notConnected_opensValidNewMachine();
     void editorSaved_isRemembered();
     void newMachine_whileEditorHasChanges_asksFirst();
+    void closeWindow_editorHasChanges_asksCancelKeepsBothDiscardClosesBoth();
     void editorOpen_escInACell_stillStops();
 
 private:
@@ -202,6 +203,35 @@ void TestMachineFileActions::newMachine_whileEditorHasChanges_asksFirst()
     QVERIFY(actions->editor());
     QCOMPARE(actions->editor()->nameEdit()->text(), QStringLiteral("New machine"));
     actions->editor()->close();
+}
+
+// Closing the main window dropped the editor's unsaved edits with it: the window now stays
+// open until the editor's question is answered; Cancel keeps both, Discard closes both.
+void TestMachineFileActions::closeWindow_editorHasChanges_asksCancelKeepsBothDiscardClosesBoth()
+{
+    UiFixture f;
+    f.window->show();
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    actions->setCurrentMachine(example(QStringLiteral("emis-xyzu.machine.json")));
+    actions->editAction()->trigger();
+    QPointer<ui::MachineEditor> editor = actions->editor();
+    QVERIFY(editor);
+    typeInto(editor->nameEdit(), QStringLiteral("Changed"));
+    QVERIFY(!f.window->close());
+    QVERIFY(f.window->isVisible());
+    QVERIFY(editor->isVisible());
+    QVERIFY(editor->pendingPrompt());
+    editor->pendingPrompt()->button(QMessageBox::Cancel)->click();
+    QTRY_VERIFY(!editor->pendingPrompt());
+    QVERIFY(f.window->isVisible());
+    QVERIFY(editor->isVisible());
+    QCOMPARE(editor->nameEdit()->text(), QStringLiteral("Changed"));
+
+    QVERIFY(!f.window->close()); // asked again
+    QVERIFY(editor->pendingPrompt());
+    editor->pendingPrompt()->button(QMessageBox::Discard)->click();
+    QTRY_VERIFY(!editor);
+    QTRY_VERIFY(!f.window->isVisible());
 }
 
 void TestMachineFileActions::editorOpen_escInACell_stillStops()
