@@ -1,0 +1,59 @@
+#include "ProgramBlock.h"
+
+namespace stepdeck::program {
+
+QString blockWord(BlockKind kind)
+{
+    switch (kind) {
+    case BlockKind::Modal:
+        return QString();
+    case BlockKind::Rapid:
+        return QStringLiteral("G0");
+    case BlockKind::Feed:
+        return QStringLiteral("G1");
+    case BlockKind::Home:
+        return QStringLiteral("G28");
+    case BlockKind::Dwell:
+        return QStringLiteral("G4");
+    case BlockKind::Pause:
+        return QStringLiteral("M0");
+    case BlockKind::End:
+        return QStringLiteral("M2");
+    case BlockKind::SpindleOn:
+        return QStringLiteral("M3");
+    case BlockKind::SpindleOff:
+        return QStringLiteral("M5");
+    case BlockKind::CoolantMist:
+        return QStringLiteral("M7");
+    case BlockKind::CoolantFlood:
+        return QStringLiteral("M8");
+    case BlockKind::CoolantOff:
+        return QStringLiteral("M9");
+    case BlockKind::OutputOn:
+        return QStringLiteral("M64");
+    case BlockKind::OutputOff:
+        return QStringLiteral("M65");
+    case BlockKind::WaitInput:
+        return QStringLiteral("M66");
+    case BlockKind::RepeatStart:
+        return QStringLiteral("O repeat");
+    case BlockKind::RepeatEnd:
+        return QStringLiteral("O endrepeat");
+    }
+    return QString();
+}
+
+bool ProgramBlock::operator==(const ProgramBlock& o) const
+{
+    return line == o.line && text == o.text && kind == o.kind && axes == o.axes &&
+           relative == o.relative && inches == o.inches && feed == o.feed && seconds == o.seconds &&
+           number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
+           oNumber == o.oNumber && count == o.count && partner == o.partner;
+}
+
+QString ProgramError::text() const
+{
+    return QStringLiteral("%1:%2: %3").arg(line).arg(column).arg(message);
+}
+
+} // namespace stepdeck::program

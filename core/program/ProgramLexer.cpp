@@ -1,0 +1,171 @@
+#include "ProgramLexer.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+namespace {
+
+class LineReader
+{
+public:
+    LineReader(QStringView line, int lineNumber, LexedLine* out)
+        : m_line(line), m_lineNumber(lineNumber), m_out(out)
+    {}
+
+    void run()
+    {
+        while (!m_out->error && skipBlanksAndComments())
+            readWord();
+    }
+
+private:
+    bool atEnd() const { return m_pos >= m_line.size(); }
+    QChar peek() const { return atEnd() ? QChar() : m_line.at(m_pos); }
+    int column() const { return int(m_pos) + 1; }
+
+    void fail(int column, const QString& message)
+    {
+        if (!m_out->error)
+            m_out->error = ProgramError{m_lineNumber, column, message};
+    }
+
+    void skipSpaces()
+    {
+        while (!atEnd() && peek().isSpace())
+            ++m_pos;
+    }
+
+    // False at the end of the line (a ";" comment ends it too).
+    bool skipBlanksAndComments()
+    {
+        for (;;) {
+            skipSpaces();
+            if (atEnd())
+                return false;
+            if (peek() == QLatin1Char(';')) {
+                noteComment(m_line.mid(m_pos + 1));
+                m_pos = m_line.size();
+                return false;
+            }
+            if (peek() != QLatin1Char('('))
+                return true;
+            const qsizetype close = m_line.indexOf(QLatin1Char(')'), m_pos);
+            if (close < 0) {
+                fail(column(), ProgramLexer::tr("the comment is not closed: \")\" is missing"));
+                return false;
+            }
+            noteComment(m_line.mid(m_pos + 1, close - m_pos - 1));
+            m_pos = close + 1;
+        }
+    }
+
+    void noteComment(QStringView text)
+    {
+        if (m_out->comment.isEmpty())
+            m_out->comment = text.trimmed().toString();
+    }
+
+    // [+-]digits[.digits] or [+-].digits; nullopt (and an error) otherwise.
+    std::optional<double> readNumber(const QString& what)
+    {
+        skipSpaces();
+        const qsizetype start = m_pos;
+        if (peek() == QLatin1Char('+') || peek() == QLatin1Char('-'))
+            ++m_pos;
+        int digits = 0;
+        while (!atEnd() && peek().isDigit() && peek().unicode() < 128) {
+            ++m_pos;
+            ++digits;
+        }
+        if (peek() == QLatin1Char('.')) {
+            ++m_pos;
+            while (!atEnd() && peek().isDigit() && peek().unicode() < 128) {
+                ++m_pos;
+                ++digits;
+            }
+        }
+        const QString text = m_line.mid(start, m_pos - start).toString();
+        if (digits == 0) {
+            fail(int(start) + 1, ProgramLexer::tr("%1 needs a number").arg(what));
+            return std::nullopt;
+        }
+        const QChar next = peek();
+        if (!atEnd() && (next.isDigit() || next == QLatin1Char('.') || next == QLatin1Char('e') ||
+                         next == QLatin1Char('E'))) {
+            fail(int(start) + 1, ProgramLexer::tr("%1: \"%2%3\" is not a decimal number")
+                                     .arg(what, text, QString(next)));
+            return std::nullopt;
+        }
+        const double value = text.toDouble();
+        if (!std::isfinite(value)) {
+            fail(int(start) + 1, ProgramLexer::tr("%1: %2 is not a finite number").arg(what, text));
+            return std::nullopt;
+        }
+        return value;
+    }
+
+    void readWord()
+    {
+        const QChar c = peek();
+        const int letterColumn = column();
+        if (!(c.unicode() < 128 && c.isLetter())) {
+            fail(letterColumn, ProgramLexer::tr("unexpected character \"%1\"").arg(QString(c)));
+            return;
+        }
+        ++m_pos;
+        const QChar letter = c.toUpper();
+        const qsizetype valueStart = m_pos;
+        const std::optional<double> value = readNumber(QString(letter));
+        if (!value)
+            return;
+        m_out->words << ProgramWord{
+            letter, *value,
+            QString(letter) +
+                m_line.mid(valueStart, m_pos - valueStart).toString().remove(QLatin1Char(' ')),
+            letterColumn};
+        if (letter == QLatin1Char('O'))
+            readKeyword();
+    }
+
+    // "O<n> repeat [count]" / "O<n> endrepeat": the keyword and the optional count.
+    void readKeyword()
+    {
+        skipSpaces();
+        const qsizetype start = m_pos;
+        while (!atEnd() && peek().unicode() < 128 && peek().isLetter())
+            ++m_pos;
+        m_out->keyword = m_line.mid(start, m_pos - start).toString().toLower();
+        m_out->keywordColumn = int(start) + 1;
+        skipSpaces();
+        if (atEnd() || (peek() != QLatin1Char('[') && !peek().isDigit()))
+            return;
+        const bool bracket = peek() == QLatin1Char('[');
+        if (bracket)
+            ++m_pos;
+        m_out->keywordValueColumn = column();
+        m_out->keywordValue = readNumber(m_out->keyword);
+        skipSpaces();
+        if (bracket && m_out->keywordValue) {
+            if (peek() != QLatin1Char(']'))
+                fail(column(), ProgramLexer::tr("\"]\" is missing"));
+            else
+                ++m_pos;
+        }
+    }
+
+    QStringView m_line;
+    int m_lineNumber;
+    LexedLine* m_out;
+    qsizetype m_pos = 0;
+};
+
+} // namespace
+
+LexedLine ProgramLexer::lex(QStringView line, int lineNumber)
+{
+    LexedLine out;
+    LineReader(line, lineNumber, &out).run();
+    return out;
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,31 @@
+#pragma once
+#include "ProgramBlock.h"
+#include "ProgramLexer.h"
+#include <QCoreApplication>
+
+namespace stepdeck::program {
+
+// The modal state a program carries from line to line (LinuxCNC's modal groups, reduced to
+// those StepDeck programs have).
+struct ModalState
+{
+    bool relative = false;           // G91 (G90 default)
+    bool inches = false;             // G20 (G21 default)
+    std::optional<double> feed;      // F
+    std::optional<BlockKind> motion; // G0 or G1, once given: a line of axis words moves so
+};
+
+// One lexed line to its block (ProgramParser's line step): which words it has, whether they
+// fit together, and the values each action needs. On success *modal holds the state after
+// the line; on failure nothing changes and the error names the word's column.
+class ProgramLine
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramLine)
+public:
+    // nullopt: a line without words (blank or only a comment); otherwise the block or error.
+    static std::optional<ProgramBlock> parse(const LexedLine& line, int lineNumber,
+                                             const QStringList& axisNames, ModalState* modal,
+                                             std::optional<ProgramError>* error);
+};
+
+} // namespace stepdeck::program

@@ -1,0 +1,3 @@
+# Motion programs (issue 20): the G-code subset's lexer and parser.
+stepdeck_add_test(tst_programlexer SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlexer.cpp LABELS unit)
+stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp LABELS unit)

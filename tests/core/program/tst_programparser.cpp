@@ -1,0 +1,342 @@
+// The program parser (issue 20, docs/programs.md): a golden table of every word, the modal
+// state each block carries, every error with its line and column, repeats and their
+// partners, and the stream: byte by byte, random chunks and garbage give the same result.
+#include "program/ProgramParser.h"
+#include <QRandomGenerator>
+#include <QtTest>
+
+using namespace stepdeck::program;
+
+namespace {
+const QStringList kAxes{"X", "Y", "Z", "A"};
+
+// A block in one line: "G0 X=10 Y=5 abs mm F-" and the action's values.
+QString describe(const ProgramBlock& b)
+{
+    QStringList out{blockWord(b.kind).isEmpty() ? QStringLiteral("modal") : blockWord(b.kind)};
+    for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it)
+        out << QStringLiteral("%1=%2").arg(it.key()).arg(it.value());
+    out << (b.relative ? QStringLiteral("rel") : QStringLiteral("abs"));
+    out << (b.inches ? QStringLiteral("in") : QStringLiteral("mm"));
+    out << (b.feed ? QStringLiteral("F%1").arg(*b.feed) : QStringLiteral("F-"));
+    switch (b.kind) {
+    case BlockKind::Dwell:
+        out << QStringLiteral("%1s").arg(b.seconds);
+        break;
+    case BlockKind::SpindleOn:
+        out << QStringLiteral("%1rpm").arg(b.rpm);
+        break;
+    case BlockKind::OutputOn:
+    case BlockKind::OutputOff:
+        out << QStringLiteral("P%1").arg(b.number);
+        break;
+    case BlockKind::WaitInput:
+        out << QStringLiteral("P%1 %2 %3s")
+                   .arg(b.number)
+                   .arg(b.inputHigh ? QStringLiteral("high") : QStringLiteral("low"))
+                   .arg(b.seconds);
+        break;
+    case BlockKind::Pause:
+        out << QStringLiteral("\"%1\"").arg(b.prompt);
+        break;
+    case BlockKind::RepeatStart:
+        out << QStringLiteral("x%1").arg(b.count);
+        break;
+    default:
+        break;
+    }
+    return out.join(QLatin1Char(' '));
+}
+
+QStringList describeAll(const Program& p)
+{
+    QStringList out;
+    for (const ProgramBlock& b : p.blocks)
+        out << QStringLiteral("%1: %2").arg(b.line).arg(describe(b));
+    return out;
+}
+
+QStringList texts(const QList<ProgramError>& errors)
+{
+    QStringList out;
+    for (const ProgramError& e : errors)
+        out << e.text();
+    return out;
+}
+} // namespace
+
+class TestProgramParser : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void parse_everyWord_golden_data();
+    void parse_everyWord_golden();
+    void parse_invalid_lineColumnAndMessage_data();
+    void parse_invalid_lineColumnAndMessage();
+    void parse_severalErrors_everyOneListedInLineOrder();
+    void parse_repeats_nestedPartners();
+    void parse_repeatErrors_named_data();
+    void parse_repeatErrors_named();
+    void feed_byteByByteAndRandomChunks_sameProgram();
+    void feed_garbage_errorsNeverCrashes();
+    void feed_overlongLine_boundedAndNamed();
+    void parse_crlfAndNoFinalNewline_sameBlocks();
+};
+
+void TestProgramParser::parse_everyWord_golden_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("blocks");
+    QTest::newRow("G0") << "G0 X10 Y-2.5" << QStringList{"1: G0 X=10 Y=-2.5 abs mm F-"};
+    QTest::newRow("G1 with F") << "G1 X1 F300" << QStringList{"1: G1 X=1 abs mm F300"};
+    QTest::newRow("F modal") << "F120\nG1 Z-1"
+                             << QStringList{"1: modal abs mm F120", "2: G1 Z=-1 abs mm F120"};
+    QTest::newRow("motion modal") << "G1 X1 F60\nY2\nG0\nA90"
+                                  << QStringList{"1: G1 X=1 abs mm F60", "2: G1 Y=2 abs mm F60",
+                                                 "3: G0 abs mm F60", "4: G0 A=90 abs mm F60"};
+    QTest::newRow("G91 G90") << "G91 G0 X1\nX1\nG90 X0"
+                             << QStringList{"1: G0 X=1 rel mm F-", "2: G0 X=1 rel mm F-",
+                                            "3: G0 X=0 abs mm F-"};
+    QTest::newRow("G20 G21") << "G20\nG0 X1\nG21 X2"
+                             << QStringList{"1: modal abs in F-", "2: G0 X=1 abs in F-",
+                                            "3: G0 X=2 abs mm F-"};
+    QTest::newRow("G28 all") << "G28" << QStringList{"1: G28 abs mm F-"};
+    QTest::newRow("G28 axes") << "G28 Z0 X0" << QStringList{"1: G28 X=0 Z=0 abs mm F-"};
+    QTest::newRow("G4") << "G4 P1.5" << QStringList{"1: G4 abs mm F- 1.5s"};
+    QTest::newRow("M0 prompt") << "M0 (Load the part)"
+                               << QStringList{"1: M0 abs mm F- \"Load the part\""};
+    QTest::newRow("M2") << "M2" << QStringList{"1: M2 abs mm F-"};
+    QTest::newRow("M30") << "M30" << QStringList{"1: M2 abs mm F-"};
+    QTest::newRow("M3 S") << "M3 S1200" << QStringList{"1: M3 abs mm F- 1200rpm"};
+    QTest::newRow("M5") << "M5" << QStringList{"1: M5 abs mm F-"};
+    QTest::newRow("M7 M8 M9") << "M7\nM8\nM9"
+                              << QStringList{"1: M7 abs mm F-", "2: M8 abs mm F-",
+                                             "3: M9 abs mm F-"};
+    QTest::newRow("M64 M65") << "M64 P2\nM65 P2"
+                             << QStringList{"1: M64 abs mm F- P2", "2: M65 abs mm F- P2"};
+    QTest::newRow("M66 high") << "M66 P1 L3 Q5" << QStringList{"1: M66 abs mm F- P1 high 5s"};
+    QTest::newRow("M66 low") << "M66 P0 L4 Q0.5" << QStringList{"1: M66 abs mm F- P0 low 0.5s"};
+    QTest::newRow("N numbers") << "N10 G0 X1\nN20 M5"
+                               << QStringList{"1: G0 X=1 abs mm F-", "2: M5 abs mm F-"};
+    QTest::newRow("comments and blanks") << "; header\n\n(only a comment)\nG0 X1 ; move\n"
+                                         << QStringList{"4: G0 X=1 abs mm F-"};
+    QTest::newRow("repeat") << "O1 repeat [3]\nG91 G0 X1\nO1 endrepeat"
+                            << QStringList{"1: O repeat abs mm F- x3", "2: G0 X=1 rel mm F-",
+                                           "3: O endrepeat abs mm F-"};
+    QTest::newRow("lower case") << "g1 x1 f10" << QStringList{"1: G1 X=1 abs mm F10"};
+}
+
+void TestProgramParser::parse_everyWord_golden()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, blocks);
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QCOMPARE(describeAll(*p), blocks);
+    QVERIFY(errors.isEmpty());
+}
+
+void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("error"); // "line:column: message" starts with this
+    QTest::newRow("unknown G") << "G0 X1\nG2 X1 Y1"
+                               << "2:1: G2 is not supported";
+    QTest::newRow("unknown M") << "M6"
+                               << "1:1: M6 is not supported";
+    QTest::newRow("fractional G") << "G0.5"
+                                  << "1:1: G0.5 is not supported";
+    QTest::newRow("unknown letter") << "G0 X1 T2"
+                                    << "1:7: T2 is not a word";
+    QTest::newRow("axis not on machine") << "G0 B5"
+                                         << "1:4: the machine has no axis B";
+    QTest::newRow("axis twice") << "G0 X1 X2"
+                                << "1:7: axis X appears twice";
+    QTest::newRow("parameter twice") << "G4 P1 P2"
+                                     << "1:7: P appears twice";
+    QTest::newRow("two actions") << "G0 X1 M5"
+                                 << "1:7: one action per line: G0 and M5";
+    QTest::newRow("G90 and G91") << "G90 G91"
+                                 << "1:5: G90 and G91 on one line";
+    QTest::newRow("G20 and G21") << "G20 G21"
+                                 << "1:5: G20 and G21 on one line";
+    QTest::newRow("axes before motion") << "X1"
+                                        << "1:1: axis words need G0 or G1";
+    QTest::newRow("G1 without F") << "G1 X1"
+                                  << "1:1: G1 needs a feed rate";
+    QTest::newRow("F zero") << "G1 X1 F0"
+                            << "1:7: F0: the feed rate must be greater than 0";
+    QTest::newRow("F negative") << "F-5"
+                                << "1:1: F-5: the feed rate must be greater";
+    QTest::newRow("G4 without P") << "G4"
+                                  << "1:1: G4 needs P";
+    QTest::newRow("G4 negative") << "G4 P-1"
+                                 << "1:4: P-1 must lie within 0..1000000";
+    QTest::newRow("G4 with axis") << "G4 P1 X1"
+                                  << "1:7: X1 is not used by G4";
+    QTest::newRow("S without M3") << "G0 X1 S100"
+                                  << "1:7: S100 is not used by G0";
+    QTest::newRow("M3 without S") << "M3"
+                                  << "1:1: M3 needs S";
+    QTest::newRow("M64 without P") << "M64"
+                                   << "1:1: M64 needs P";
+    QTest::newRow("M64 fraction") << "M64 P1.5"
+                                  << "1:5: P1.5: the number must be a whole";
+    QTest::newRow("M66 without L") << "M66 P1 Q2"
+                                   << "1:1: M66 needs L";
+    QTest::newRow("M66 L1") << "M66 P1 L1 Q2"
+                            << "1:8: L1: L3 waits for high, L4 for low";
+    QTest::newRow("M66 without Q") << "M66 P1 L3"
+                                   << "1:1: M66 needs Q";
+    QTest::newRow("M66 Q zero") << "M66 P1 L3 Q0"
+                                << "1:11: Q0 must be greater than 0 and at most 1000000";
+    QTest::newRow("L without M66") << "M64 P1 L3"
+                                   << "1:8: L3 is not used by M64";
+    QTest::newRow("N not first") << "G0 N10 X1"
+                                 << "1:4: N (a line number) stands only";
+    QTest::newRow("N fraction") << "N1.5 G0"
+                                << "1:1: N1.5: N takes a whole number";
+    QTest::newRow("after M2") << "M2\nG0 X1"
+                              << "2:1: nothing may follow the program's end (line 1)";
+    QTest::newRow("lexer error") << "G0\nG0 X1 #"
+                                 << "2:7: unexpected character";
+    QTest::newRow("missing value") << "G0 Y"
+                                   << "1:5: Y needs a number";
+    QTest::newRow("O with others") << "O1 repeat [2] G0"
+                                   << "1:15: O1 stands alone";
+    QTest::newRow("O unknown keyword") << "O1 while [1]"
+                                       << "1:4: only \"O1 repeat [count]\"";
+    QTest::newRow("repeat without count") << "O1 repeat\nO1 endrepeat"
+                                          << "1:4: repeat needs a count";
+    QTest::newRow("repeat too many") << "O1 repeat [1000001]\nO1 endrepeat"
+                                     << "1:12: the repeat count must be a whole number";
+}
+
+void TestProgramParser::parse_invalid_lineColumnAndMessage()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, error);
+    QList<ProgramError> errors;
+    QVERIFY(!ProgramParser::parse(program.toUtf8(), kAxes, &errors));
+    QCOMPARE(errors.size(), 1);
+    QVERIFY2(errors.first().text().startsWith(error), qPrintable(errors.first().text()));
+}
+
+void TestProgramParser::parse_severalErrors_everyOneListedInLineOrder()
+{
+    QList<ProgramError> errors;
+    QVERIFY(!ProgramParser::parse("O7 repeat [2]\nG0 Q1\nG0 X1\nM99\nG1 Y1\n", kAxes, &errors));
+    QCOMPARE(texts(errors), (QStringList{"1:1: O7 repeat is not closed by O7 endrepeat",
+                                         "2:4: Q1 is not used by G0", "4:1: M99 is not supported",
+                                         "5:1: G1 needs a feed rate: F on this line or an "
+                                         "earlier one"}));
+}
+
+void TestProgramParser::parse_repeats_nestedPartners()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(
+        "O1 repeat [2]\nO2 repeat [3]\nG0 X1\nO2 endrepeat\nO1 endrepeat\nM2\n", kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QCOMPARE(p->blocks.size(), 6);
+    QCOMPARE(p->blocks.at(0).partner, 4);
+    QCOMPARE(p->blocks.at(4).partner, 0);
+    QCOMPARE(p->blocks.at(1).partner, 3);
+    QCOMPARE(p->blocks.at(3).partner, 1);
+    QCOMPARE(p->blocks.at(1).count, qint64(3));
+    QCOMPARE(p->lines, 6);
+}
+
+void TestProgramParser::parse_repeatErrors_named_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("endrepeat alone") << "O3 endrepeat"
+                                     << "1:1: O3 endrepeat without its O3 repeat";
+    QTest::newRow("crossed") << "O1 repeat [2]\nO2 repeat [2]\nO1 endrepeat\nO2 endrepeat"
+                             << "3:1: O1 endrepeat does not close O2 repeat (line 2)";
+    QTest::newRow("unclosed") << "G0 X1\nO5 repeat [2]\nG0 X2"
+                              << "2:1: O5 repeat is not closed by O5 endrepeat";
+}
+
+void TestProgramParser::parse_repeatErrors_named()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, error);
+    QList<ProgramError> errors;
+    QVERIFY(!ProgramParser::parse(program.toUtf8(), kAxes, &errors));
+    QVERIFY2(texts(errors).contains(error), qPrintable(texts(errors).join(QLatin1Char('\n'))));
+}
+
+void TestProgramParser::feed_byteByByteAndRandomChunks_sameProgram()
+{
+    const QByteArray text = "; pick and place\nG21 G90\nG28\nO1 repeat [3]\n  G91 G1 X2.5 A-90 "
+                            "F600 (step)\n  M64 P1\n  G4 P0.25\n  M65 P1\nO1 endrepeat\nM0 (Check "
+                            "the part \xc3\xa4)\nM30\n";
+    QList<ProgramError> errors;
+    const std::optional<Program> whole = ProgramParser::parse(text, kAxes, &errors);
+    QVERIFY2(whole, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QCOMPARE(whole->blocks.last().kind, BlockKind::End);
+    QCOMPARE(whole->blocks.at(whole->blocks.size() - 2).prompt,
+             QStringLiteral("Check the part \u00e4"));
+    ProgramParser byByte(kAxes);
+    for (const char c : text)
+        byByte.feed(QByteArray(1, c));
+    QCOMPARE(describeAll(*byByte.finish(nullptr)), describeAll(*whole));
+    QRandomGenerator random(20);
+    for (int round = 0; round < 50; ++round) {
+        ProgramParser chunked(kAxes);
+        for (qsizetype at = 0; at < text.size();) {
+            const qsizetype n = random.bounded(1, 12);
+            chunked.feed(text.mid(at, n));
+            at += n;
+        }
+        const std::optional<Program> p = chunked.finish(nullptr);
+        QVERIFY(p);
+        QCOMPARE(p->blocks, whole->blocks);
+    }
+}
+
+void TestProgramParser::feed_garbage_errorsNeverCrashes()
+{
+    QRandomGenerator random(7);
+    for (int round = 0; round < 200; ++round) {
+        QByteArray garbage(random.bounded(0, 400), Qt::Uninitialized);
+        for (char& c : garbage)
+            c = char(random.bounded(256));
+        QList<ProgramError> errors;
+        const std::optional<Program> p = ProgramParser::parse(garbage, kAxes, &errors);
+        QVERIFY(p.has_value() == errors.isEmpty());
+        QVERIFY(errors.size() <= ProgramParser::kMaxErrors + 1);
+        for (const ProgramError& e : errors)
+            QVERIFY(e.line >= 1 && e.column >= 1 && !e.message.isEmpty());
+    }
+}
+
+void TestProgramParser::feed_overlongLine_boundedAndNamed()
+{
+    ProgramParser parser(kAxes);
+    parser.feed("G0 X1\n(");
+    const QByteArray chunk(4096, 'a');
+    for (int i = 0; i < 100; ++i)
+        parser.feed(chunk); // 400 KiB without a newline: never buffered whole
+    parser.feed(")\nG0 X2\n");
+    QList<ProgramError> errors;
+    QVERIFY(!parser.finish(&errors));
+    QCOMPARE(texts(errors),
+             QStringList{QStringLiteral("2:1025: the line is longer than 1024 characters")});
+}
+
+void TestProgramParser::parse_crlfAndNoFinalNewline_sameBlocks()
+{
+    QList<ProgramError> errors;
+    const auto lf = ProgramParser::parse("G0 X1\nG4 P2\nM2", kAxes, &errors);
+    const auto dos = ProgramParser::parse("G0 X1\r\nG4 P2\r\nM2\r\n", kAxes, &errors);
+    QVERIFY(lf && dos);
+    QCOMPARE(dos->blocks, lf->blocks);
+    QCOMPARE(lf->blocks.last().text, QStringLiteral("M2"));
+}
+
+QTEST_APPLESS_MAIN(TestProgramParser)
+#include "tst_programparser.moc"
