@@ -152,7 +152,8 @@ void printJson(const Results& r, const ModelInfo& model)
         machineStop.append(QJsonObject{{"controllers", controllers},
                                        {"median", json(figure.medianMs, 3)},
                                        {"p99", json(figure.p99Ms, 3)},
-                                       {"samples", figure.samples}});
+                                       {"samples", figure.samples},
+                                       {"deviceRealtime", figure.deviceRealtime}});
         if (!figure.note.isEmpty())
             notes.append(QStringLiteral("machineStopLatencyMs (%1 controllers): %2")
                              .arg(controllers)
