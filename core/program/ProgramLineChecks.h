@@ -1,0 +1,35 @@
+#pragma once
+// Internal to ProgramLine: a line's words sorted by role, and the checks of each action's
+// words (ProgramLineChecks.cpp).
+#include "ProgramLexer.h"
+#include <QMap>
+#include <cmath>
+
+namespace stepdeck::program {
+
+inline bool isWhole(double v)
+{
+    return std::floor(v) == v && std::fabs(v) < 1e9;
+}
+
+// A line's words sorted by role: at most one action, the modal words, the parameters and the
+// axes, each at most once.
+struct Words
+{
+    std::optional<BlockKind> action;
+    const ProgramWord* actionWord = nullptr;
+    std::optional<bool> relative; // G90 / G91
+    std::optional<bool> inches;   // G21 / G20
+    QMap<QChar, const ProgramWord*> parameters;
+    QMap<QString, const ProgramWord*> axes;
+};
+
+// The first misplaced or missing word of a sorted line for block->kind: (column, message);
+// column 0: none. Fills the action's values into *block.
+std::pair<int, QString> checkActionWords(const Words& words, ProgramBlock* block);
+
+// "O<n> repeat [count]" / "O<n> endrepeat": the block, or nullopt with *error.
+std::optional<ProgramBlock> repeatBlock(const LexedLine& line, const ProgramWord& o, int lineNumber,
+                                        std::optional<ProgramError>* error);
+
+} // namespace stepdeck::program
