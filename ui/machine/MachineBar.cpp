@@ -1,4 +1,5 @@
 #include "MachineBar.h"
+#include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -50,10 +51,7 @@ void MachineBar::setSingleControllerBar(QWidget* singleController)
 
 void MachineBar::rebuild()
 {
-    while (QLayoutItem* item = m_lamps->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_lamps);
     m_entries.clear();
     m_controllers->clear();
     const machine::Machine* m = m_context->machine();

@@ -1,5 +1,6 @@
 #include "MachineReferenceRows.h"
 #include "MachineContext.h"
+#include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
 #include "protocols/Registry.h"
@@ -50,10 +51,7 @@ void MachineReferenceRows::setRunningAxes(const QStringList& running)
 
 void MachineReferenceRows::rebuild()
 {
-    while (QLayoutItem* item = m_grid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_grid);
     m_rows.clear();
     const machine::Machine* m = m_context->machine();
     if (!m)

@@ -2,6 +2,7 @@
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
+#include "common/LayoutItems.h"
 #include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
@@ -90,16 +91,7 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
 
 void PositionPanel::rebuild()
 {
-    while (QLayoutItem* item = m_grid->takeAt(0)) {
-        if (QLayout* inner = item->layout()) { // a row's detail line
-            while (QLayoutItem* sub = inner->takeAt(0)) {
-                delete sub->widget();
-                delete sub;
-            }
-        }
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_grid); // with each row's detail line
     m_rows.clear();
     QFont big(QStringLiteral("monospace"));
     big.setStyleHint(QFont::Monospace);

@@ -1,5 +1,6 @@
 #include "ReferencePanel.h"
 #include "common/ElidedLabel.h"
+#include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -97,10 +98,7 @@ void ReferencePanel::showMachineOrNot()
 
 void ReferencePanel::rebuild()
 {
-    while (QLayoutItem* item = m_grid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_grid);
     m_rows.clear();
     m_grid->addWidget(new QLabel(tr("Axis"), this), 0, 0);
     m_grid->addWidget(new QLabel(tr("Direction"), this), 0, 1);

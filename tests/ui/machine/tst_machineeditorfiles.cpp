@@ -19,6 +19,14 @@ using machine::MachineFile;
 using machine::MachineFileError;
 using ui::MachineEditor;
 
+namespace {
+bool writeJson(const QString& path, const QJsonObject& json)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(QJsonDocument(json).toJson()) > 0;
+}
+} // namespace
+
 class TestMachineEditorFiles : public QObject
 {
     Q_OBJECT
@@ -105,10 +113,7 @@ void TestMachineEditorFiles::open_invalidValue_opensMarkedAndCanBeFixed()
     const QString path = dir.filePath(QStringLiteral("broken.machine.json"));
     MachineDescription broken = *before;
     broken.axes[1].stepsPerUnit = -2;
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(QJsonDocument(broken.toJson()).toJson());
-    file.close();
+    QVERIFY(writeJson(path, broken.toJson()));
     QVERIFY(editor->openFile(path));
     QCOMPARE(editor->path(), path);
     QCOMPARE(editor->error().field, QStringLiteral("axes[1].stepsPerUnit"));
@@ -137,10 +142,7 @@ void TestMachineEditorFiles::open_brokenStructure_keepsMachineAndNamesField()
     axis.insert(QStringLiteral("stepsPerMm"), 400); // not a key of the format
     axes.replace(1, axis);
     json.insert(QStringLiteral("axes"), axes);
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(QJsonDocument(json).toJson());
-    file.close();
+    QVERIFY(writeJson(path, json));
     QVERIFY(!editor->openFile(path));
     QVERIFY2(editor->messageText().contains(QStringLiteral("axes[1]")),
              qPrintable(editor->messageText()));
