@@ -2,6 +2,7 @@
 // gamepad jog the machine's named axes in their units per second, on whichever controller
 // drives them, through one Machine::jog input. An E-LAB (X/Y/Z, 400 steps/mm) and a Nanotec
 // drive (A, 100 steps/deg) simulator on two pseudo-terminals.
+#include "../LayoutChecks.h"
 #include "../UiTestSupport.h"
 #include "ModelBench.h"
 #include "PtyDevice.h"
@@ -14,10 +15,12 @@
 #include "machine/Machine.h"
 #include "machine/MachineBar.h"
 #include "machine/MachineContext.h"
+#include "window/Translations.h"
 #include <QCheckBox>
 #include <QComboBox>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QTemporaryDir>
 
 using namespace stepdeck;
@@ -65,6 +68,8 @@ private Q_SLOTS:
     void slots_tableAndRotary_padXYStickZOtherStickAKeysSayWhich();
     void jog_padXAndStickA_oneInputDevicesAtUnitRatesLossStopsBoth();
     void jog_padX_velocityReadoutInMillimetresPerSecond();
+    void sixAxes_otherStickReachesABC_fitsAt1366x768_data();
+    void sixAxes_otherStickReachesABC_fitsAt1366x768();
 
 private:
     bool openAndConnect(const QByteArray& limits = {});
@@ -212,6 +217,73 @@ void TestMachineJog::jog_padX_velocityReadoutInMillimetresPerSecond()
     QVERIFY(!m_nanotec->moving(Axis::X));
     pointerRelease(pad, pad->pointFor(QPointF(1.0, 0.0)));
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
+}
+
+void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768_data()
+{
+    QTest::addColumn<QString>("language");
+    // English first: a German translator, once installed, stays for the process.
+    QTest::newRow("en") << QStringLiteral("en");
+    QTest::newRow("de") << QStringLiteral("de");
+}
+
+void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768()
+{
+    QFETCH(QString, language);
+    ui::translations::install(qApp, language);
+    m_f = std::make_unique<UiFixture>(); // built in the language
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+    const QByteArray json = R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Six-axis cell",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "sim" },
+    { "id": "wrist", "model": "nanotec", "port": "sim", "axes": { "X": 1, "Y": 2, "Z": 3 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
+    { "name": "A", "controller": "wrist", "axis": "X", "unit": "deg", "stepsPerUnit": 88.8889 },
+    { "name": "B", "controller": "wrist", "axis": "Y", "unit": "deg", "stepsPerUnit": 100 },
+    { "name": "C", "controller": "wrist", "axis": "Z", "unit": "steps" }
+  ]
+})";
+    QFile file(m_dir->filePath(QStringLiteral("six.machine.json")));
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(json) == json.size());
+    file.close();
+    QVERIFY(window()->openMachine(file.fileName()));
+    window()->machineBar()->connectButton()->click();
+    for (const char* id : {"table", "wrist"}) {
+        ControllerSession* s = machine()->session(QString::fromLatin1(id));
+        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
+    }
+    ui::JogPanel* panel = window()->jogPanel();
+    QComboBox* other = panel->otherStickAxis();
+    QCOMPARE(other->count(), 3);
+    QCOMPARE(other->itemText(0), QStringLiteral("A"));
+    QCOMPARE(other->itemText(2), QStringLiteral("C"));
+    other->setCurrentIndex(2);
+    Q_EMIT other->activated(2);
+    const ui::JogAxisMap* map = window()->jogController()->axisMap();
+    QCOMPARE(map->label(Axis::U), QStringLiteral("C"));
+    QCOMPARE(other->currentText(), QStringLiteral("C"));
+    // The read-out has every machine axis in its unit.
+    if (language == QLatin1String("en"))
+        QCOMPARE(panel->velocityReadout()->unitText(QStringLiteral("B")), QStringLiteral("deg/s"));
+    QVERIFY(!panel->velocityReadout()->unitText(QStringLiteral("C")).isEmpty());
+    panel->keyboardCheck()->setChecked(true);
+    QTRY_VERIFY2(panel->keyboardStateText().endsWith(QStringLiteral(" C")),
+                 qPrintable(panel->keyboardStateText()));
+    // The window fits 1366x768 and nothing of the jog panel is cut.
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(
+        minimum.width() <= 1366 && minimum.height() <= 768 - 40,
+        qPrintable(QStringLiteral("minimum %1x%2").arg(minimum.width()).arg(minimum.height())));
+    window()->resize(1366, 768 - 40);
+    QCoreApplication::processEvents();
+    const QStringList cut = clippedTexts(panel);
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
 }
 
 QTEST_MAIN(TestMachineJog)
