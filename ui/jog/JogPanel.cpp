@@ -90,6 +90,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
             source->setResponse(r);
     });
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
+    connect(m_incremental, &IncrementalJogWidget::refused, this, &JogPanel::showRefusal);
     connect(m_jog, &JogController::refusalEnded, m_refusal, &QLabel::clear);
     connect(m_context->session(), &ControllerSession::statusChanged, this, [this] { onStatus(); });
     connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);

@@ -6,6 +6,7 @@
 #include "../UiTestSupport.h"
 #include "ModelBench.h"
 #include "PtyDevice.h"
+#include "jog/IncrementalJogWidget.h"
 #include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
@@ -22,6 +23,7 @@
 #include <QRegularExpression>
 #include <QScreen>
 #include <QTemporaryDir>
+#include <QToolButton>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -68,6 +70,7 @@ private Q_SLOTS:
     void slots_tableAndRotary_padXYStickZOtherStickAKeysSayWhich();
     void jog_padXAndStickA_oneInputDevicesAtUnitRatesLossStopsBoth();
     void jog_padX_velocityReadoutInMillimetresPerSecond();
+    void incremental_oneUnitOnXAndA_devicesMoveByStepsPerUnit();
     void sixAxes_otherStickReachesABC_fitsAt1366x768_data();
     void sixAxes_otherStickReachesABC_fitsAt1366x768();
 
@@ -217,6 +220,20 @@ void TestMachineJog::jog_padX_velocityReadoutInMillimetresPerSecond()
     QVERIFY(!m_nanotec->moving(Axis::X));
     pointerRelease(pad, pad->pointFor(QPointF(1.0, 0.0)));
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
+}
+
+void TestMachineJog::incremental_oneUnitOnXAndA_devicesMoveByStepsPerUnit()
+{
+    QVERIFY(openAndConnect());
+    ui::IncrementalJogWidget* incremental = window()->jogPanel()->incremental();
+    QCOMPARE(incremental->unitStepSize(), 1.0); // the third preset: 1 mm or 1 deg
+    QVERIFY(incremental->machineButton(QStringLiteral("A"), +1));
+    incremental->machineButton(QStringLiteral("X"), +1)->click();
+    QTRY_COMPARE_WITH_TIMEOUT(m_elab->position(Axis::X), qint64(400), 10000);
+    incremental->machineButton(QStringLiteral("A"), -1)->click();
+    QTRY_COMPARE_WITH_TIMEOUT(m_nanotec->position(Axis::X), qint64(-100), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QCOMPARE(m_elab->position(Axis::X), qint64(400));
 }
 
 void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768_data()
