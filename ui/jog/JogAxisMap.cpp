@@ -34,6 +34,18 @@ bool JogAxisMap::isMachine() const
     return m_context->hasMachine();
 }
 
+bool JogAxisMap::jogsByTargets() const
+{
+    if (!isMachine())
+        return m_context->capabilities().jogByTargets;
+    const machine::Machine* machine = m_context->machine();
+    for (const machine::MachineController& c : machine->description().controllers) {
+        if (machine->session(c.id)->capabilities().jogByTargets)
+            return true;
+    }
+    return false;
+}
+
 void JogAxisMap::rebuild()
 {
     m_slots.clear();

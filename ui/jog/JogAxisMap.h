@@ -28,6 +28,8 @@ public:
     explicit JogAxisMap(MachineContext* context, QObject* parent = nullptr);
 
     bool isMachine() const;
+    // Some axis it jogs is on a controller without a jog command (short targets instead).
+    bool jogsByTargets() const;
     // The slots that move something: without a machine the controller's axes.
     QList<Axis> jogSlots() const;
     const machine::MachineAxis* machineAxis(Axis slot) const; // null without a machine

@@ -27,7 +27,7 @@ JogController::JogController(MachineContext* context, QObject* parent)
     ControllerSession* session = context->session();
     connect(session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
         // The core refuses for the same reason the status shows (emergency stop), or its own.
-        noteRefusal(reason, m_context->status().panic ? RefusalCause::Panic : RefusalCause::Other);
+        noteRefusal(reason, panicActive() ? RefusalCause::Panic : RefusalCause::Other);
     });
     connect(session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)
@@ -35,6 +35,8 @@ JogController::JogController(MachineContext* context, QObject* parent)
         checkRefusalCause();
     });
     connect(session, &ControllerSession::statusChanged, this, &JogController::checkRefusalCause);
+    connect(context, &MachineContext::machineStatusChanged, this,
+            &JogController::checkRefusalCause);
     connect(context, &MachineContext::panicTriggered, this, &JogController::releaseAll);
     connect(qGuiApp, &QGuiApplication::applicationStateChanged, this,
             [this](Qt::ApplicationState state) {
@@ -134,9 +136,16 @@ QString JogController::refusal() const
 {
     if (!m_context->isConnected())
         return tr("Jog refused: not connected");
-    if (m_context->status().panic)
+    if (panicActive())
         return tr("Jog refused: emergency stop is active");
     return {};
+}
+
+bool JogController::panicActive() const
+{
+    // With a machine open: an emergency stop on any of its controllers.
+    LinkState link = LinkState::Disconnected;
+    return m_context->machineWideStatus(&link).panic;
 }
 
 void JogController::noteRefusal(const QString& reason, RefusalCause cause)
@@ -151,9 +160,9 @@ void JogController::checkRefusalCause()
     // A refusal stays on screen while its cause holds, and not after (issue 16): "emergency
     // stop is active" ends with the emergency stop, "not connected" with the new link.
     // Other refusals (a limit switch, a soft limit) end when jogging works again or expire.
-    const bool ended = (m_refusalCause == RefusalCause::Panic && m_context->isConnected() &&
-                        !m_context->status().panic) ||
-                       (m_refusalCause == RefusalCause::NotConnected && m_context->isConnected());
+    const bool ended =
+        (m_refusalCause == RefusalCause::Panic && m_context->isConnected() && !panicActive()) ||
+        (m_refusalCause == RefusalCause::NotConnected && m_context->isConnected());
     if (!ended)
         return;
     m_refusalCause = RefusalCause::None;

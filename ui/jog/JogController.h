@@ -74,6 +74,7 @@ private:
     void endJog();
     void loadSettings();
     QString refusal() const;
+    bool panicActive() const;
     enum class RefusalCause { None, NotConnected, Panic, Other };
     void noteRefusal(const QString& reason, RefusalCause cause);
     void checkRefusalCause();

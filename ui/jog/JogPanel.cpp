@@ -233,7 +233,7 @@ QMap<Axis, QString> JogPanel::slotLabels() const
 void JogPanel::rebuild()
 {
     releaseAll();
-    m_jogModeNote->setVisible(!m_context->hasMachine() && m_context->capabilities().jogByTargets);
+    m_jogModeNote->setVisible(m_jog->axisMap()->jogsByTargets());
     // The slots' axes: the controller's, or with a machine open the machine's (JogAxisMap).
     const QMap<Axis, QString> labels = slotLabels();
     const bool single = !m_context->hasMachine();
@@ -245,7 +245,8 @@ void JogPanel::rebuild()
     m_z->setVisible(labels.contains(Axis::Z));
     m_u->setVisible(labels.contains(Axis::U));
     m_u->setAxisLabels(QString(), labels.value(Axis::U, QStringLiteral("U")));
-    m_u->setToolTip(tr("Drag to jog %1; release to stop (ramped).").arg(labels.value(Axis::U)));
+    m_u->setToolTip(tr("Drag to jog %1; release to stop (ramped).")
+                        .arg(labels.value(Axis::U, QStringLiteral("U"))));
     const QStringList choices = m_jog->axisMap()->otherStickChoices();
     {
         const QSignalBlocker blocker(m_otherAxis);
