@@ -6,6 +6,7 @@
 #include "../UiTestSupport.h"
 #include "ModelBench.h"
 #include "PtyDevice.h"
+#include "gamepad/GamepadPanel.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
@@ -173,6 +174,7 @@ void TestMachineJog::slots_tableAndRotary_padXYStickZOtherStickAKeysSayWhich()
     QVERIFY(panel->uStick()->isVisibleTo(window()));
     QVERIFY(panel->otherStickAxis()->isVisibleTo(window()));
     QCOMPARE(panel->otherStickAxis()->currentText(), QStringLiteral("A"));
+    QCOMPARE(window()->gamepadPanel()->rowName(Axis::U), QStringLiteral("A"));
     panel->keyboardCheck()->setChecked(true);
     QTRY_VERIFY2(panel->keyboardStateText().contains(QStringLiteral("End/Home A")),
                  qPrintable(panel->keyboardStateText()));
