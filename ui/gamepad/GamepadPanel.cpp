@@ -3,6 +3,7 @@
 #include "common/LedIndicator.h"
 #include "gamepad/GamepadDevice.h"
 #include "gamepad/GamepadJogSource.h"
+#include "jog/JogAxisMap.h"
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -19,8 +20,8 @@ namespace {
 constexpr int kMaxStickAxes = 8;
 }
 
-GamepadPanel::GamepadPanel(GamepadJogSource* source, QWidget* parent)
-    : QWidget(parent), m_source(source), m_device(new ElidedLabel(this, 2)),
+GamepadPanel::GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidget* parent)
+    : QWidget(parent), m_source(source), m_slots(jogSlots), m_device(new ElidedLabel(this, 2)),
       m_deadmanLed(new LedIndicator(tr("Dead-man button held"), this)),
       m_enabled(new QCheckBox(tr("Jog with the gamepad"), this)), m_deadman(new QSpinBox(this)),
       m_deadZone(new QSpinBox(this)), m_calibrate(new QPushButton(tr("Calibrate"), this)),
@@ -62,7 +63,8 @@ GamepadPanel::GamepadPanel(GamepadJogSource* source, QWidget* parent)
         };
         connect(combo, &QComboBox::currentIndexChanged, this, apply);
         connect(invert, &QCheckBox::toggled, this, apply);
-        grid->addWidget(new QLabel(axisName(axis), mapping), row, 0);
+        m_rowName.insert(axis, new QLabel(axisName(axis), mapping));
+        grid->addWidget(m_rowName.value(axis), row, 0);
         grid->addWidget(combo, row, 1);
         grid->addWidget(invert, row, 2);
         m_binding.insert(axis, combo);
@@ -97,9 +99,27 @@ GamepadPanel::GamepadPanel(GamepadJogSource* source, QWidget* parent)
         m_source->setResponse(r);
         m_source->saveSettings();
     });
+    if (m_slots)
+        connect(m_slots, &JogAxisMap::changed, this, &GamepadPanel::nameRows);
+    nameRows();
     connect(m_calibrate, &QPushButton::clicked, this, &GamepadPanel::toggleCalibration);
     connect(source, &GamepadJogSource::stateChanged, this, &GamepadPanel::refresh);
     refresh();
+}
+
+QString GamepadPanel::rowName(Axis slot) const
+{
+    const QLabel* label = m_rowName.value(slot);
+    return label ? label->text() : QString();
+}
+
+void GamepadPanel::nameRows()
+{
+    // With a machine open a row moves the machine axis on its jog slot (JogAxisMap).
+    for (auto it = m_rowName.cbegin(); it != m_rowName.cend(); ++it) {
+        const QString name = m_slots ? m_slots->label(it.key()) : QString();
+        it.value()->setText(name.isEmpty() ? axisName(it.key()) : name);
+    }
 }
 
 QString GamepadPanel::deviceText() const

@@ -14,6 +14,7 @@ namespace stepdeck::ui {
 
 class ElidedLabel;
 class GamepadJogSource;
+class JogAxisMap;
 class LedIndicator;
 
 // Settings and live view of the physical gamepad: device and dead-man state, stick-to-axis
@@ -22,15 +23,20 @@ class GamepadPanel : public QWidget
 {
     Q_OBJECT
 public:
-    explicit GamepadPanel(GamepadJogSource* source, QWidget* parent = nullptr);
+    // jogSlots: what each stick mapping row moves (with a machine open, its axis names); may
+    // be null (rows named X, Y, Z, U).
+    GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidget* parent = nullptr);
+    QString rowName(Axis slot) const; // what the stick mapping row of a slot moves
 
     QString deviceText() const;
 
 private:
     void refresh();
     void toggleCalibration();
+    void nameRows();
 
     GamepadJogSource* m_source;
+    JogAxisMap* m_slots;
     ElidedLabel* m_device;
     LedIndicator* m_deadmanLed;
     QCheckBox* m_enabled;
@@ -38,6 +44,7 @@ private:
     QSpinBox* m_deadZone;
     QPushButton* m_calibrate;
     ElidedLabel* m_hint;
+    QMap<Axis, QLabel*> m_rowName;
     QMap<Axis, QComboBox*> m_binding;
     QMap<Axis, QCheckBox*> m_invert;
     QList<QProgressBar*> m_bars;

@@ -1,6 +1,8 @@
 #include "JogController.h"
 #include "controller/TargetJogger.h"
+#include "jog/JogAxisMap.h"
 #include "jog/JogInputSource.h"
+#include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include <QGuiApplication>
 #include <QSettings>
@@ -9,8 +11,11 @@
 namespace stepdeck::ui {
 
 JogController::JogController(MachineContext* context, QObject* parent)
-    : QObject(parent), m_context(context), m_targetJog(new TargetJogger(context->session(), this))
+    : QObject(parent), m_context(context), m_map(new JogAxisMap(context, this)),
+      m_targetJog(new TargetJogger(context->session(), this))
 {
+    // Other axes on the slots: what is held would move another axis, so it moves nothing.
+    connect(m_map, &JogAxisMap::changed, this, &JogController::releaseAll);
     connect(m_targetJog, &TargetJogger::refused, this,
             [this](const QString& reason) { noteRefusal(reason, RefusalCause::Other); });
     m_renew.setInterval(kRenewMs);
@@ -22,7 +27,7 @@ JogController::JogController(MachineContext* context, QObject* parent)
     ControllerSession* session = context->session();
     connect(session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
         // The core refuses for the same reason the status shows (emergency stop), or its own.
-        noteRefusal(reason, m_context->status().panic ? RefusalCause::Panic : RefusalCause::Other);
+        noteRefusal(reason, panicActive() ? RefusalCause::Panic : RefusalCause::Other);
     });
     connect(session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)
@@ -30,6 +35,8 @@ JogController::JogController(MachineContext* context, QObject* parent)
         checkRefusalCause();
     });
     connect(session, &ControllerSession::statusChanged, this, &JogController::checkRefusalCause);
+    connect(context, &MachineContext::machineStatusChanged, this,
+            &JogController::checkRefusalCause);
     connect(context, &MachineContext::panicTriggered, this, &JogController::releaseAll);
     connect(qGuiApp, &QGuiApplication::applicationStateChanged, this,
             [this](Qt::ApplicationState state) {
@@ -82,6 +89,11 @@ double JogController::maxSpeedCeiling() const
 
 void JogController::setMaxSpeed(Axis axis, double stepsPerS)
 {
+    if (m_map->isMachine()) {
+        m_map->setMaxSpeed(axis, stepsPerS); // unit/s
+        update();
+        return;
+    }
     const double value = qBound(1.0, stepsPerS, maxSpeedCeiling());
     m_maxSpeed.insert(axis, value);
     QSettings().setValue(
@@ -91,6 +103,8 @@ void JogController::setMaxSpeed(Axis axis, double stepsPerS)
 
 double JogController::maxSpeed(Axis axis) const
 {
+    if (m_map->isMachine())
+        return m_map->maxSpeed(axis);
     return m_maxSpeed.value(axis, qMin(1000.0, maxSpeedCeiling()));
 }
 
@@ -122,9 +136,16 @@ QString JogController::refusal() const
 {
     if (!m_context->isConnected())
         return tr("Jog refused: not connected");
-    if (m_context->status().panic)
+    if (panicActive())
         return tr("Jog refused: emergency stop is active");
     return {};
+}
+
+bool JogController::panicActive() const
+{
+    // With a machine open: an emergency stop on any of its controllers.
+    LinkState link = LinkState::Disconnected;
+    return m_context->machineWideStatus(&link).panic;
 }
 
 void JogController::noteRefusal(const QString& reason, RefusalCause cause)
@@ -139,9 +160,9 @@ void JogController::checkRefusalCause()
     // A refusal stays on screen while its cause holds, and not after (issue 16): "emergency
     // stop is active" ends with the emergency stop, "not connected" with the new link.
     // Other refusals (a limit switch, a soft limit) end when jogging works again or expire.
-    const bool ended = (m_refusalCause == RefusalCause::Panic && m_context->isConnected() &&
-                        !m_context->status().panic) ||
-                       (m_refusalCause == RefusalCause::NotConnected && m_context->isConnected());
+    const bool ended =
+        (m_refusalCause == RefusalCause::Panic && m_context->isConnected() && !panicActive()) ||
+        (m_refusalCause == RefusalCause::NotConnected && m_context->isConnected());
     if (!ended)
         return;
     m_refusalCause = RefusalCause::None;
@@ -158,7 +179,7 @@ AxisVelocities JogController::provenTargets()
     for (JogInputSource* source : sources())
         inputs << source->heldDeflection();
     AxisVelocities targets;
-    for (Axis axis : m_context->axes()) {
+    for (Axis axis : m_map->jogSlots()) {
         double fraction = 0.0;
         for (const AxisVelocities& input : std::as_const(inputs)) {
             const double f = qBound(-1.0, input.value(axis, 0.0), 1.0);
@@ -166,8 +187,9 @@ AxisVelocities JogController::provenTargets()
                 fraction = f;
         }
         const double v = fraction * maxSpeed(axis) * m_override;
+        // Steps are whole; a machine's unit/s become the nearest step rate in Machine::jog.
         if (v != 0.0)
-            targets.insert(axis, double(qRound64(v)));
+            targets.insert(axis, m_map->isMachine() ? v : double(qRound64(v)));
     }
     return targets;
 }
@@ -180,7 +202,7 @@ void JogController::stopSending()
         m_renew.stop();
         m_targetJog->release();
         AxisVelocities zeros;
-        for (Axis axis : m_context->axes())
+        for (Axis axis : m_map->jogSlots())
             zeros.insert(axis, 0.0);
         if (!m_context->hasMachine())
             m_context->session()->setJogVelocity(zeros);
@@ -232,7 +254,7 @@ void JogController::updateOnce(bool renewal)
     m_refusalCause = RefusalCause::None;
     // Axes no longer deflected get an explicit zero so they ramp down.
     AxisVelocities full;
-    for (Axis axis : m_context->axes())
+    for (Axis axis : m_map->jogSlots())
         full.insert(axis, targets.value(axis, 0.0));
     const bool changed = full != m_targets;
     m_targets = full;
@@ -256,10 +278,11 @@ void JogController::updateOnce(bool renewal)
 
 bool JogController::sendToMachine()
 {
-    // A machine jogs its axes in their units, within their maxJogSpeed, all on one input
-    // (issue 19). A refusal sends nothing: the input counts as released until let go.
+    // A machine jogs its axes in their units, within their maxJogSpeed, every controller on
+    // this one call (issue 19). A refusal sends nothing: the input counts as released until
+    // let go.
     QString why;
-    if (m_context->jogMachine(m_targets, &why))
+    if (m_context->machine()->jog(m_map->machineRates(m_targets), &why))
         return true;
     releaseAll();
     noteRefusal(why, RefusalCause::Other);

@@ -11,6 +11,7 @@ class TargetJogger;
 
 namespace stepdeck::ui {
 
+class JogAxisMap;
 class JogInputSource;
 class MachineContext;
 
@@ -22,6 +23,9 @@ class MachineContext;
 // like a release. When nothing is held it sends zero targets and endJog(); the core JogRamp
 // ramps the axes down. The ramp itself lives in the core, never here.
 // Jog runs only while a StepDeck window is the active window (focus loss stops jogging).
+// The sources speak of jog slots (JogAxisMap): without a machine the controller's axes in
+// steps/s, with a machine open its named axes in unit/s, every controller jogged through one
+// Machine::jog call so that one lost input stops them all.
 class JogController : public QObject
 {
     Q_OBJECT
@@ -34,9 +38,11 @@ public:
     void addSource(JogInputSource* source);
     QList<JogInputSource*> sources() const;
 
+    // Per jog slot: steps/s without a machine, the slot's machine axis' unit/s with one.
     void setMaxSpeed(Axis axis, double stepsPerS);
     double maxSpeed(Axis axis) const;
-    double maxSpeedCeiling() const;
+    double maxSpeedCeiling() const; // without a machine (steps/s)
+    JogAxisMap* axisMap() const { return m_map; }
     void setOverride(double fraction); // 0..1, scales every jog speed
     double override() const { return m_override; }
 
@@ -68,11 +74,13 @@ private:
     void endJog();
     void loadSettings();
     QString refusal() const;
+    bool panicActive() const;
     enum class RefusalCause { None, NotConnected, Panic, Other };
     void noteRefusal(const QString& reason, RefusalCause cause);
     void checkRefusalCause();
 
     MachineContext* m_context;
+    JogAxisMap* m_map;
     QList<QPointer<JogInputSource>> m_sources;
     TargetJogger* m_targetJog;
     QMap<Axis, double> m_maxSpeed;

@@ -3,16 +3,18 @@
 #include "common/ElidedLabel.h"
 #include "common/StyleSheet.h"
 #include "jog/IncrementalJogWidget.h"
+#include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
+#include "jog/JogVelocityReadout.h"
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
 #include "jog/PadJogSource.h"
 #include "machine/MachineContext.h"
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
@@ -30,13 +32,13 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     : QWidget(parent), m_context(context), m_jog(jog), m_keyboard(keyboard),
       m_xy(new JoystickPad(JoystickPad::Mode::TwoAxis, this)),
       m_z(new JoystickPad(JoystickPad::Mode::Vertical, this)),
-      m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)),
+      m_u(new JoystickPad(JoystickPad::Mode::Vertical, this)), m_otherAxis(new QComboBox(this)),
       m_override(new QSlider(Qt::Horizontal, this)), m_overrideValue(new QLabel(this)),
       m_keyboardCheck(new QCheckBox(tr("Keyboard jog"), this)),
       m_keyboardState(new ElidedLabel(this)), m_refusal(new ElidedLabel(this, 2)),
       m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
-      m_velocityGrid(new QGridLayout), m_incremental(new IncrementalJogWidget(context, this)),
-      m_settingsDialog(new QDialog(this)),
+      m_velocity(new JogVelocityReadout(context, this)),
+      m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
     setFocusPolicy(Qt::StrongFocus); // a focus target that is not a text field
@@ -46,8 +48,6 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     m_xy->setToolTip(tr("Drag the knob to jog X and Y; speed follows the deflection. Release "
                         "to stop (ramped)."));
     m_z->setToolTip(tr("Drag to jog Z; release to stop (ramped)."));
-    m_u->setAxisLabels(QString(), QStringLiteral("U"));
-    m_u->setToolTip(tr("Drag to jog U; release to stop (ramped)."));
     m_padSources = {new PadJogSource(m_xy, Axis::X, Axis::Y, this),
                     new PadJogSource(m_z, std::nullopt, Axis::Z, this),
                     new PadJogSource(m_u, std::nullopt, Axis::U, this)};
@@ -61,7 +61,19 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     auto* pads = new QHBoxLayout;
     pads->addWidget(m_xy, 3);
     pads->addWidget(m_z, 1);
-    pads->addWidget(m_u, 1);
+    // The other stick with the machine axis it jogs below it (hidden without a machine: it
+    // takes no room then).
+    auto* other = new QVBoxLayout;
+    other->addWidget(m_u, 1);
+    other->addWidget(m_otherAxis);
+    pads->addLayout(other, 1);
+    m_otherAxis->setObjectName(QStringLiteral("jogStickAxis"));
+    m_otherAxis->setFocusPolicy(Qt::NoFocus); // the arrows keep jogging
+    m_otherAxis->setToolTip(tr("The machine axis this stick and End/Home jog"));
+    m_otherAxis->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_otherAxis->setVisible(false);
+    connect(m_otherAxis, &QComboBox::activated, this,
+            [this] { m_jog->axisMap()->setOtherStickAxis(m_otherAxis->currentText()); });
     layout->addLayout(pads, 3);
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(buildSidePanel());
@@ -78,9 +90,12 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
             source->setResponse(r);
     });
     connect(m_jog, &JogController::refused, this, &JogPanel::showRefusal);
+    connect(m_incremental, &IncrementalJogWidget::refused, this, &JogPanel::showRefusal);
     connect(m_jog, &JogController::refusalEnded, m_refusal, &QLabel::clear);
-    connect(m_context->session(), &ControllerSession::statusChanged, this, &JogPanel::onStatus);
+    connect(m_context->session(), &ControllerSession::statusChanged, this, [this] { onStatus(); });
     connect(m_context, &MachineContext::modelChanged, this, &JogPanel::rebuild);
+    connect(m_jog->axisMap(), &JogAxisMap::changed, this, &JogPanel::rebuild);
+    connect(m_context, &MachineContext::machineStatusChanged, this, &JogPanel::onStatus);
     // Jogging needs a connection: the pads and step buttons say so by being disabled.
     m_gate = new ConnectionGate(m_context, this);
     for (QWidget* w : {static_cast<QWidget*>(m_xy), static_cast<QWidget*>(m_z),
@@ -104,7 +119,7 @@ QStringList JogPanel::keyboardStateTexts() const
             tr("Keyboard jog paused: the StepDeck window is not active"),
             tr("Keyboard jog paused: a text field has the focus, the arrows edit it. Click "
                "the jog panel to resume."),
-            tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(m_context->axes()))};
+            tr("Keyboard jog ON: %1").arg(KeyboardJog::keyLegend(slotLabels()))};
 }
 
 void JogPanel::showKeyboardState()
@@ -135,9 +150,8 @@ QWidget* JogPanel::buildSidePanel()
     auto* v = new QVBoxLayout(side);
     v->setContentsMargins(0, 0, 0, 0);
 
-    auto* velocity = new QGroupBox(tr("Commanded jog velocity"), side);
-    velocity->setLayout(m_velocityGrid);
-    v->addWidget(velocity);
+    m_velocity->setParent(side);
+    v->addWidget(m_velocity);
 
     auto* speed = new QGroupBox(tr("Speed override"), side);
     auto* sv = new QHBoxLayout(speed);
@@ -207,43 +221,41 @@ QWidget* JogPanel::buildSidePanel()
     return side;
 }
 
+QMap<Axis, QString> JogPanel::slotLabels() const
+{
+    QMap<Axis, QString> labels;
+    const JogAxisMap* map = m_jog->axisMap();
+    for (Axis slot : map->jogSlots())
+        labels.insert(slot, map->label(slot));
+    return labels;
+}
+
 void JogPanel::rebuild()
 {
     releaseAll();
-    m_jogModeNote->setVisible(m_context->capabilities().jogByTargets);
-    const QList<Axis> axes = m_context->axes();
-    m_xy->setVisible(axes.contains(Axis::X) || axes.isEmpty());
-    m_xy->setAxisLabels(QStringLiteral("X"),
-                        axes.contains(Axis::Y) || axes.isEmpty() ? QStringLiteral("Y") : QString());
-    m_z->setVisible(axes.contains(Axis::Z));
-    m_u->setVisible(axes.contains(Axis::U));
+    m_jogModeNote->setVisible(m_jog->axisMap()->jogsByTargets());
+    // The slots' axes: the controller's, or with a machine open the machine's (JogAxisMap).
+    const QMap<Axis, QString> labels = slotLabels();
+    const bool single = !m_context->hasMachine();
+    m_xy->setVisible(labels.contains(Axis::X) || (single && labels.isEmpty()));
+    m_xy->setAxisLabels(labels.value(Axis::X, QStringLiteral("X")),
+                        labels.contains(Axis::Y) || (single && labels.isEmpty())
+                            ? labels.value(Axis::Y, QStringLiteral("Y"))
+                            : QString());
+    m_z->setVisible(labels.contains(Axis::Z));
+    m_u->setVisible(labels.contains(Axis::U));
+    m_u->setAxisLabels(QString(), labels.value(Axis::U, QStringLiteral("U")));
+    m_u->setToolTip(tr("Drag to jog %1; release to stop (ramped).")
+                        .arg(labels.value(Axis::U, QStringLiteral("U"))));
+    const QStringList choices = m_jog->axisMap()->otherStickChoices();
+    {
+        const QSignalBlocker blocker(m_otherAxis);
+        m_otherAxis->clear();
+        m_otherAxis->addItems(choices);
+        m_otherAxis->setCurrentText(labels.value(Axis::U));
+    }
+    m_otherAxis->setVisible(!single && !choices.isEmpty());
     showKeyboardState();
-
-    while (QLayoutItem* item = m_velocityGrid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
-    m_velocity.clear();
-    int row = 0;
-    for (Axis axis : axes) {
-        auto* name = new QLabel(axisName(axis));
-        QFont bold = name->font();
-        bold.setBold(true);
-        name->setFont(bold);
-        auto* value = new QLabel(QStringLiteral("0"));
-        value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        QFont mono(QStringLiteral("monospace"));
-        mono.setStyleHint(QFont::Monospace);
-        mono.setPointSizeF(bold.pointSizeF() * 1.3);
-        value->setFont(mono);
-        value->setMinimumWidth(90);
-        m_velocityGrid->addWidget(name, row, 0);
-        m_velocityGrid->addWidget(value, row, 1);
-        // The model's position unit (laser axes: "units/s", issue 16).
-        m_velocityGrid->addWidget(new QLabel(tr("%1/s").arg(m_context->machineUnitName())), row, 2);
-        m_velocity.insert(axis, value);
-        ++row;
-    }
 }
 
 void JogPanel::releaseAll()
@@ -251,23 +263,25 @@ void JogPanel::releaseAll()
     m_jog->releaseAll(); // latches every source: pads re-centre, held keys need a new press
 }
 
-void JogPanel::onStatus(const MachineStatus& status)
+void JogPanel::onStatus()
 {
-    auto fraction = [&](Axis axis) {
+    // Each slot's axis, in the slot's rate unit (steps/s, or the machine axis' unit/s).
+    const JogAxisMap* map = m_jog->axisMap();
+    auto slot = [&](Axis axis, double* fraction) {
+        double v = 0.0;
+        const AxisStatus status = map->slotStatus(axis, &v);
         const double max = m_jog->maxSpeed(axis);
-        return max > 0 ? status.axes.value(axis).commandedVelocity / max : 0.0;
+        *fraction = max > 0 ? v / max : 0.0;
+        return status.limitSwitch;
     };
-    for (auto it = m_velocity.cbegin(); it != m_velocity.cend(); ++it) {
-        const double v = status.axes.value(it.key()).commandedVelocity;
-        it.value()->setText(QString::asprintf("%+.0f", v));
-    }
-    m_xy->setVelocityHint(QPointF(fraction(Axis::X), fraction(Axis::Y)));
-    m_z->setVelocityHint(QPointF(0, fraction(Axis::Z)));
-    m_u->setVelocityHint(QPointF(0, fraction(Axis::U)));
-    m_xy->setLimitActive(0, status.axes.value(Axis::X).limitSwitch);
-    m_xy->setLimitActive(1, status.axes.value(Axis::Y).limitSwitch);
-    m_z->setLimitActive(1, status.axes.value(Axis::Z).limitSwitch);
-    m_u->setLimitActive(1, status.axes.value(Axis::U).limitSwitch);
+    double x = 0, y = 0, z = 0, u = 0;
+    m_xy->setLimitActive(0, slot(Axis::X, &x));
+    m_xy->setLimitActive(1, slot(Axis::Y, &y));
+    m_z->setLimitActive(1, slot(Axis::Z, &z));
+    m_u->setLimitActive(1, slot(Axis::U, &u));
+    m_xy->setVelocityHint(QPointF(x, y));
+    m_z->setVelocityHint(QPointF(0, z));
+    m_u->setVelocityHint(QPointF(0, u));
 }
 
 void JogPanel::showRefusal(const QString& reason)

@@ -4,8 +4,8 @@
 #include <QWidget>
 
 class QCheckBox;
+class QComboBox;
 class QDialog;
-class QGridLayout;
 class QLabel;
 class QSlider;
 class QTimer;
@@ -15,13 +15,15 @@ namespace stepdeck::ui {
 class ConnectionGate;
 class IncrementalJogWidget;
 class JogController;
+class JogVelocityReadout;
 class JogSettingsWidget;
 class JoystickPad;
 class KeyboardJog;
 class MachineContext;
 class PadJogSource;
 
-// The operator's main tool: the X/Y pad, Z (and U) sticks, incremental jog, keyboard jog,
+// The operator's main tool: the X/Y pad, Z (and U) sticks (with a machine open: its axes,
+// JogAxisMap), incremental jog, keyboard jog,
 // speed override, the live commanded velocity per axis and why a jog was refused.
 class JogPanel : public QWidget
 {
@@ -33,6 +35,9 @@ public:
     JoystickPad* xyPad() const { return m_xy; }
     JoystickPad* zStick() const { return m_z; }
     JoystickPad* uStick() const { return m_u; }
+    // With a machine open: the machine axis the other stick (and End/Home) jogs.
+    QComboBox* otherStickAxis() const { return m_otherAxis; }
+    JogVelocityReadout* velocityReadout() const { return m_velocity; }
     QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
@@ -46,10 +51,11 @@ public Q_SLOTS:
 private:
     QWidget* buildSidePanel();
     void rebuild();
-    void onStatus(const MachineStatus& status);
+    void onStatus();
     void showRefusal(const QString& reason);
     void showKeyboardState();
     QStringList keyboardStateTexts() const; // every text m_keyboardState can show
+    QMap<Axis, QString> slotLabels() const; // jog slot -> the axis it moves (JogAxisMap)
 
     MachineContext* m_context;
     JogController* m_jog;
@@ -57,6 +63,7 @@ private:
     JoystickPad* m_xy;
     JoystickPad* m_z;
     JoystickPad* m_u;
+    QComboBox* m_otherAxis;
     QList<PadJogSource*> m_padSources;
     QSlider* m_override;
     QLabel* m_overrideValue;
@@ -66,8 +73,7 @@ private:
     ElidedLabel* m_refusal;
     QLabel* m_jogModeNote; // how jog works on models without a jog command
     QTimer* m_refusalTimer;
-    QGridLayout* m_velocityGrid;
-    QMap<Axis, QLabel*> m_velocity;
+    JogVelocityReadout* m_velocity;
     IncrementalJogWidget* m_incremental;
     QDialog* m_settingsDialog;
     JogSettingsWidget* m_settings;

@@ -1,8 +1,11 @@
 #include "JogSettingsWidget.h"
+#include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
 #include "jog/KeyboardJog.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineDescription.h"
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QSettings>
@@ -52,6 +55,7 @@ JogSettingsWidget::JogSettingsWidget(MachineContext* context, JogController* jog
         m_keyboard->setSpeedFraction(v / 100.0);
     });
     connect(context, &MachineContext::modelChanged, this, &JogSettingsWidget::rebuild);
+    connect(jog->axisMap(), &JogAxisMap::changed, this, &JogSettingsWidget::rebuild);
     rebuild();
 }
 
@@ -68,6 +72,10 @@ void JogSettingsWidget::rebuild()
     for (QWidget* w : std::as_const(m_axisRows))
         m_form->removeRow(w);
     m_axisRows.clear();
+    if (m_jog->axisMap()->isMachine()) {
+        addMachineRows();
+        return;
+    }
     int row = 0;
     for (Axis axis : m_context->axes()) {
         auto* spin = new QSpinBox(this);
@@ -80,6 +88,28 @@ void JogSettingsWidget::rebuild()
         connect(spin, &QSpinBox::valueChanged, this,
                 [this, axis](int v) { m_jog->setMaxSpeed(axis, v); });
         m_form->insertRow(row++, tr("Max %1:").arg(axisName(axis)), spin);
+        m_axisRows << spin;
+    }
+}
+
+void JogSettingsWidget::addMachineRows()
+{
+    // A machine's axes on the jog slots, each in its own unit/s, up to the file's maxJogSpeed
+    // (or the controller's jog maximum in that unit).
+    const JogAxisMap* map = m_jog->axisMap();
+    int row = 0;
+    for (Axis slot : map->jogSlots()) {
+        const machine::MachineAxis* axis = map->machineAxis(slot);
+        auto* spin = new QDoubleSpinBox(this);
+        spin->setDecimals(axis->unit == machine::AxisUnit::Step ? 0 : 2);
+        spin->setRange(0, map->ceiling(slot));
+        spin->setSuffix(QLatin1Char(' ') + rateUnitName(*axis));
+        spin->setValue(map->maxSpeed(slot));
+        spin->setToolTip(
+            tr("Jog speed of axis %1 at full deflection and 100 % override").arg(axis->name));
+        connect(spin, &QDoubleSpinBox::valueChanged, this,
+                [this, slot](double v) { m_jog->setMaxSpeed(slot, v); });
+        m_form->insertRow(row++, tr("Max %1:").arg(axis->name), spin);
         m_axisRows << spin;
     }
 }

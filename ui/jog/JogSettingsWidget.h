@@ -13,8 +13,8 @@ class JogController;
 class KeyboardJog;
 class MachineContext;
 
-// Max jog speed per axis, the pad's dead zone and response curve, and the keyboard speed.
-// Persisted with QSettings.
+// Max jog speed per axis (with a machine open: per machine axis on a jog slot, in unit/s), the
+// pad's dead zone and response curve, and the keyboard speed. Persisted with QSettings.
 class JogSettingsWidget : public QGroupBox
 {
     Q_OBJECT
@@ -32,6 +32,7 @@ Q_SIGNALS:
 
 private:
     void storeResponse();
+    void addMachineRows();
 
     MachineContext* m_context;
     JogController* m_jog;

@@ -201,15 +201,23 @@ bool KeyboardJog::eventFilter(QObject* watched, QEvent* event)
 
 QString KeyboardJog::keyLegend(const QList<Axis>& axes)
 {
+    QMap<Axis, QString> labels;
+    for (Axis axis : axes)
+        labels.insert(axis, axisName(axis));
+    return keyLegend(labels);
+}
+
+QString KeyboardJog::keyLegend(const QMap<Axis, QString>& slotLabels)
+{
     QStringList parts;
-    if (axes.contains(Axis::X))
-        parts << tr("\u2190/\u2192 X");
-    if (axes.contains(Axis::Y))
-        parts << tr("\u2193/\u2191 Y");
-    if (axes.contains(Axis::Z))
-        parts << tr("Page Down/Up Z");
-    if (axes.contains(Axis::U))
-        parts << tr("End/Home U");
+    if (slotLabels.contains(Axis::X))
+        parts << tr("\u2190/\u2192 %1").arg(slotLabels.value(Axis::X));
+    if (slotLabels.contains(Axis::Y))
+        parts << tr("\u2193/\u2191 %1").arg(slotLabels.value(Axis::Y));
+    if (slotLabels.contains(Axis::Z))
+        parts << tr("Page Down/Up %1").arg(slotLabels.value(Axis::Z));
+    if (slotLabels.contains(Axis::U))
+        parts << tr("End/Home %1").arg(slotLabels.value(Axis::U));
     return parts.join(QStringLiteral(", "));
 }
 

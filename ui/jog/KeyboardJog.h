@@ -9,7 +9,8 @@ class QWidget;
 
 namespace stepdeck::ui {
 
-// Keyboard jog: arrows for X/Y, Page Up/Down for Z, Home/End for U. Installed as an
+// Keyboard jog: arrows for X/Y, Page Up/Down for Z, Home/End for U (the jog slots: with a
+// machine open the machine axes on the pad and the sticks, JogAxisMap). Installed as an
 // application event filter while enabled. Keys typed into text fields and spin boxes are left
 // alone (the jog panel says keyboard jog is paused meanwhile).
 //
@@ -55,6 +56,9 @@ public:
     int repeatWindowMs() const;
     // "←/→ X, ↑/↓ Y, ..." for the axes given: what the panel shows.
     static QString keyLegend(const QList<Axis>& axes);
+    // The same for the jog slots (JogAxisMap) and the machine axis each one moves: "←/→ X,
+    // ↓/↑ Y, Page Down/Up Z, End/Home A".
+    static QString keyLegend(const QMap<Axis, QString>& slotLabels);
 
 public Q_SLOTS:
     void releaseAll();

@@ -99,12 +99,7 @@ public:
     void disconnectMachine();
     // Connected or connecting: some controller of the machine.
     bool machineLinkBusy() const;
-    // Jog of the selected controller's axes as the machine's axes they drive, through
-    // Machine::jog: the rates (steps/s, positive = the machine axis' positive direction)
-    // become unit/s and are limited to each axis' maxJogSpeed; the machine's one jog input
-    // renews or ends every controller it jogs. False with the reason (nothing sent) for an axis
-    // the machine does not use, or what Machine::jog refuses.
-    bool jogMachine(const AxisVelocities& stepsPerS, QString* refusal);
+    // The machine's one jog input ended (JogController jogs through Machine::jog itself).
     void endMachineJog();
     // The whole machine as one status for what speaks of all of it (the safety banner): the
     // worst link over the controllers; panic, setup incomplete, motion unconfirmed and busy of

@@ -147,30 +147,6 @@ bool MachineContext::machineLinkBusy() const
     return false;
 }
 
-bool MachineContext::jogMachine(const AxisVelocities& stepsPerS, QString* refusal)
-{
-    if (!m_machine)
-        return false;
-    QMap<QString, double> unitsPerSecond;
-    for (auto it = stepsPerS.cbegin(); it != stepsPerS.cend(); ++it) {
-        const machine::MachineAxis* driven = nullptr;
-        for (const machine::MachineAxis& a : m_machine->description().axes) {
-            if (a.controller == m_selectedId && a.axis == it.key())
-                driven = &a;
-        }
-        if (driven)
-            unitsPerSecond.insert(driven->name, it.value() / driven->stepsPerUnit);
-        else if (it.value() != 0) {
-            if (refusal)
-                *refusal = tr("Jog refused: axis %1 of controller \"%2\" is not an axis of the "
-                              "machine")
-                               .arg(axisName(it.key()), m_selectedId);
-            return false;
-        }
-    }
-    return m_machine->jog(unitsPerSecond, refusal);
-}
-
 void MachineContext::endMachineJog()
 {
     if (m_machine)

@@ -210,7 +210,7 @@ void MainWindow::buildDocks()
     m_setup = new SetupPage(m_context, this);
     m_console = new TrafficConsole(m_context, this);
     m_charts = new ChartsPanel(m_context, this);
-    m_gamepad = new GamepadPanel(m_gamepadSource, this);
+    m_gamepad = new GamepadPanel(m_gamepadSource, m_jog->axisMap(), this);
     m_drivePanel = new DrivePanel(m_context, this);
     m_records = new RecordsPage(m_context, this);
     connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);

@@ -21,3 +21,8 @@ stepdeck_add_test(tst_machinewindow SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machin
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                   LABELS ui LIBS stepdeck_ui)
+# The jog panel jogs a machine's named axes in their units (issue 19).
+stepdeck_add_test(tst_machinejog SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinejog.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

@@ -10,6 +10,7 @@
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
+#include "jog/KeyboardJog.h"
 #include "machine/Machine.h"
 #include "machine/MachineBar.h"
 #include "machine/MachineDro.h"
@@ -317,7 +318,7 @@ void TestMachineWindow::banner_tableReferencedRotaryNot_machineNotReady()
 
 void TestMachineWindow::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
 {
-    // A at most 4 deg/s = 400 steps/s; the held key asks for 500 steps/s (half the jog speed).
+    // A at most 4 deg/s = 400 steps/s; the operator's setting asks for 50 deg/s.
     QByteArray json = machineJson();
     json.replace(R"("unit": "deg", "stepsPerUnit": 100 })",
                  R"("unit": "deg", "stepsPerUnit": 100, "maxJogSpeed": 4 })");
@@ -327,11 +328,13 @@ void TestMachineWindow::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
         ControllerSession* s = machine()->session(QString::fromLatin1(id));
         QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
     }
-    window()->context()->selectController(QStringLiteral("rotary"));
-    QCOMPARE(window()->jogController()->maxSpeed(Axis::X), 1000.0);
+    // Home/End jog the other stick's machine axis, A here (on whichever page is shown).
+    window()->jogController()->setMaxSpeed(Axis::U, 50.0);
+    QCOMPARE(window()->jogController()->maxSpeed(Axis::U), 4.0);
+    window()->keyboardJog()->setSpeedFraction(1.0);
     window()->jogPanel()->keyboardCheck()->setChecked(true);
     window()->jogPanel()->xyPad()->window()->setFocus();
-    QTest::keyPress(window(), Qt::Key_Right); // held: +X of the drive, i.e. +A
+    QTest::keyPress(window(), Qt::Key_Home); // held: +A
     QTRY_VERIFY_WITH_TIMEOUT(m_nanotec->moving(Axis::X), 10000);
     ControllerSession* rotary = machine()->session(QStringLiteral("rotary"));
     QSignalSpy polls(rotary, &ControllerSession::statusChanged);
@@ -345,7 +348,8 @@ void TestMachineWindow::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
             highest = qMax(highest, m.captured(1).toInt());
     }
     QCOMPARE(highest, 400);
-    QTest::keyRelease(window(), Qt::Key_Right);
+    QVERIFY(!m_elab->moving(Axis::X));
+    QTest::keyRelease(window(), Qt::Key_Home);
 }
 
 void TestMachineWindow::dro_afterMoveX2point5_shows2point500mm()
