@@ -1,4 +1,5 @@
 #include "IncrementalJogWidget.h"
+#include "common/LayoutItems.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include <QComboBox>
@@ -113,10 +114,7 @@ void IncrementalJogWidget::rebuild()
     m_minus.clear();
     m_plus.clear();
     m_machineButtons.clear();
-    while (QLayoutItem* item = m_grid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_grid);
     QStringList names;
     if (const machine::Machine* machine = m_context->machine()) {
         for (const machine::MachineAxis& a : machine->description().axes)

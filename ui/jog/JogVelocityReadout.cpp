@@ -1,4 +1,5 @@
 #include "JogVelocityReadout.h"
+#include "common/LayoutItems.h"
 #include "jog/JogAxisMap.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -33,10 +34,7 @@ QString JogVelocityReadout::unitText(const QString& axis) const
 
 void JogVelocityReadout::rebuild()
 {
-    while (QLayoutItem* item = m_grid->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
+    deleteLayoutItems(m_grid);
     m_rows.clear();
     if (const machine::Machine* machine = m_context->machine()) {
         for (const machine::MachineAxis& a : machine->description().axes)
