@@ -4,6 +4,7 @@
 #include "../common/SignalPipe.h"
 #include "CliText.h"
 #include "machine/MachineFile.h"
+#include "protocols/Registry.h"
 #include <QFileInfo>
 
 namespace stepdeck::cli {
@@ -108,7 +109,37 @@ int runMachineCommand(const CliOptions& options, const machine::MachineDescripti
     }
     return finish(outcome);
 }
+// --model/--port without a file: a machine of that one controller, its axes under their
+// controller names in steps (MachineDescription::singleController).
+Outcome singleControllerMachine(const CliOptions& o, machine::MachineDescription* out)
+{
+    const ModelInfo* model = findModel(o.model);
+    if (!model)
+        return Outcome::usage(unknownModelText(o.model));
+    QMap<Axis, int> addresses = o.axisAddresses;
+    if (o.address)
+        addresses.insert(Axis::X, *o.address);
+    *out = machine::MachineDescription::singleController(*model, o.port, addresses);
+    if (model->capabilities.resetLine)
+        out->controllers.first().resetLine = o.resetLine;
+    return Outcome::success();
+}
 } // namespace
+
+bool runsOnTheMachine(const QString& command)
+{
+    return machineCommand(command) != nullptr &&
+           (command == QLatin1String("status") || command == QLatin1String("stop") ||
+            command == QLatin1String("panic"));
+}
+
+int runOneControllerMachine(const CliOptions& options)
+{
+    machine::MachineDescription d;
+    if (const Outcome built = singleControllerMachine(options, &d); !built.ok())
+        return finish(built);
+    return runMachineCommand(options, d, machineCommand(options.command));
+}
 
 int runWithMachine(const CliOptions& options)
 {

@@ -9,6 +9,12 @@ namespace stepdeck::cli {
 // exit code.
 int runSingleController(const CliOptions& options);
 
+// The machine commands (move, jog, home, stop, panic, status) run on a machine also without a
+// file: runOneControllerMachine() makes --model/--port a machine of that one controller
+// (issue 19: one code path), its axes under their controller names in steps.
+bool runsOnTheMachine(const QString& command);
+int runOneControllerMachine(const CliOptions& options);
+
 // The whole of one invocation with --machine FILE (CliMachineRun.cpp): loads and validates the
 // file (exit 12 unreadable, 7 invalid), runs move/jog/home/stop/panic/status/machine on the
 // machine and every other command on the controller --controller names (exit 2 without it

@@ -56,6 +56,8 @@ private:
     void wake();
     void watchSessions();
     Outcome openAll();
+    CommandResult verdict(const QString& controllerId, const CommandResult& r);
+    QString faultText(const machine::MachineController& c, const QString& message) const;
     Outcome writeSetupDefaults();
 
     CliOptions m_options;
@@ -67,6 +69,7 @@ private:
     bool m_interrupted = false;
     QString m_lostController;
     QString m_lostMessage;
+    QHash<QString, QString> m_lostReasons; // controller id -> why its link went down
     ErrorKind m_lastFailure = ErrorKind::None;
 };
 

@@ -382,21 +382,6 @@ Outcome cmdJog(CliContext& c, QStringList args)
     return rampedDown.ok() ? reportPositions(c) : rampedDown;
 }
 
-Outcome cmdStop(CliContext& c, QStringList args)
-{
-    return noArguments(c, args, QStringLiteral("stop"),
-                       [](ControllerSession& s) { return s.stop(); });
-}
-
-Outcome cmdPanic(CliContext& c, QStringList args)
-{
-    const Outcome result = noArguments(c, args, QStringLiteral("panic"),
-                                       [](ControllerSession& s) { return s.panic(); });
-    if (result.ok() && !c.json())
-        printLine(CliText::tr("emergency stop sent; positions are unknown until referenced"));
-    return result;
-}
-
 Outcome cmdReset(CliContext& c, QStringList args)
 {
     return noArguments(c, args, QStringLiteral("reset"),

@@ -43,6 +43,10 @@ public:
     explicit Machine(QObject* parent = nullptr);
     ~Machine() override;
 
+    // What every controller's options start from before its own addresses and reset line
+    // (the front end's action names, the arrival timeout); takes effect at create().
+    void setBaseOptions(const ControllerOptions& options) { m_baseOptions = options; }
+
     // Validates the description and creates a session per controller (links not opened yet).
     bool create(const MachineDescription& description, QString* error);
     void destroy(); // every session stops its controller and closes (ControllerSession)
@@ -146,6 +150,7 @@ private:
     QStringList shortOfTarget(const Part& part) const;
 
     MachineDescription m_description;
+    ControllerOptions m_baseOptions;
     std::vector<std::unique_ptr<ControllerSession>> m_sessions; // description's order
     QList<PendingMove> m_moves;
     QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()
