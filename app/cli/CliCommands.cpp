@@ -34,7 +34,7 @@ const CommandEntry kCommands[] = {
     {cmdGet, true, {"get", {}}},
     {cmdExport, true, {"export", {}}},
     {cmdImport, true, {"import", {{"no-verify"}}}},
-    {cmdMove, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
+    {nullptr, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
     {cmdJog, true, {"jog", {{"for", "MS"}}}},
     {cmdHome, true, {"home", kPositioningOptions + QList<CommandOption>{{"simultaneous"},
                                                                         {"closed-loop"}}}},

@@ -130,7 +130,7 @@ bool runsOnTheMachine(const QString& command)
 {
     return machineCommand(command) != nullptr &&
            (command == QLatin1String("status") || command == QLatin1String("stop") ||
-            command == QLatin1String("panic"));
+            command == QLatin1String("panic") || command == QLatin1String("move"));
 }
 
 int runOneControllerMachine(const CliOptions& options)

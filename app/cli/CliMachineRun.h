@@ -28,8 +28,10 @@ Outcome machineHome(CliMachineSession& m, const CliOptions& o);
 Outcome machineStop(CliMachineSession& m, const CliOptions& o);
 Outcome machinePanic(CliMachineSession& m, const CliOptions& o);
 Outcome machineStatus(CliMachineSession& m, const CliOptions& o);
-// Every axis' position in its unit, how it is known (one line, or JSON with --json).
+// Every axis' position in its unit, how it is known (one line, or JSON with --json; a machine
+// of one controller prints the controller's status object, as `status --json`).
 Outcome printMachinePositions(CliMachineSession& m, bool json);
+QString machinePositionsLine(CliMachineSession& m); // "X=2.500 A=25.000 (unknown)"
 
 // The resolved controllers and axes (CliMachineCommands.cpp; `machine check`, `machine`).
 void printMachineTable(const machine::MachineDescription& m);

@@ -150,11 +150,18 @@ QString positionsText(CliMachineSession& m)
 
 Outcome printMachinePositions(CliMachineSession& m, bool json)
 {
-    if (json)
+    if (json && m.description().controllers.size() == 1)
+        printJson(oneControllerJson(m));
+    else if (json)
         printJson(QJsonObject{{"axes", axesJson(m)}});
     else
         printLine(positionsText(m));
     return Outcome::success();
+}
+
+QString machinePositionsLine(CliMachineSession& m)
+{
+    return positionsText(m);
 }
 
 Outcome machineStatus(CliMachineSession& m, const CliOptions& o)

@@ -114,7 +114,6 @@ Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWa
 Outcome positioning(CliContext& c, const QStringList& args, const QString& command,
                     const StartMove& start, const CheckValues& check = {})
 {
-    const bool absolute = c.options.flag("abs"); // only move has it
     const bool noWait = c.options.flag("no-wait");
     const std::optional<QString> timeoutText = c.options.value("timeout");
     qint64 timeoutMs = -1;
@@ -130,15 +129,10 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
     }
     if (c.capabilities().reportsArrival) {
         return positioningByArrival(
-            c,
-            [&](ControllerSession& s) {
-                return absolute ? s.moveAbsolute(steps) : start(s, steps);
-            },
-            noWait, int(qMin<qint64>(timeoutMs, INT_MAX)));
+            c, [&](ControllerSession& s) { return start(s, steps); }, noWait,
+            int(qMin<qint64>(timeoutMs, INT_MAX)));
     }
-    Outcome result = connectAndRun(c, [&](ControllerSession& s) {
-        return absolute ? s.moveAbsolute(steps) : start(s, steps);
-    });
+    Outcome result = connectAndRun(c, [&](ControllerSession& s) { return start(s, steps); });
     if (!result.ok() || noWait)
         return result;
     result = c.session.waitUntilIdle(int(qMin<qint64>(timeoutMs, INT_MAX)));
@@ -212,12 +206,6 @@ Outcome noArguments(CliContext& c, const QStringList& args, const QString& comma
     return connectAndRun(c, start);
 }
 } // namespace
-
-Outcome cmdMove(CliContext& c, QStringList args)
-{
-    return positioning(c, args, QStringLiteral("move"),
-                       [](ControllerSession& s, const AxisVector& v) { return s.moveRelative(v); });
-}
 
 Outcome cmdFeed(CliContext& c, QStringList args)
 {

@@ -121,6 +121,9 @@ private:
         RequestId refresh = 0;  // the status read after the request finished
         bool accepted = false;  // the move request finished well
         bool refreshed = false; // a status newer than the acceptance arrived
+        // Models that report arrival: the controller axes that stopped at their end switch
+        // instead (the request's "endSwitch" value).
+        QStringList endSwitch;
     };
     struct PendingMove
     {

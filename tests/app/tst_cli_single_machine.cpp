@@ -2,6 +2,7 @@
 // on a machine of that one controller, its axes under their controller names in steps -- the
 // same code path as --machine FILE. The E-LAB simulator is on a real pty in this process.
 #include "protocols/Registry.h"
+#include "protocols/elab/ElabCodec.h"
 #include "sim/PtyEndpoint.h"
 #include "sim/Simulator.h"
 #include <QDir>
@@ -33,6 +34,8 @@ private slots:
     void statusJson_oneController_axesCarryTheMachineFields();
     void statusHuman_axisTableThenTheControllersOwnLines();
     void stop_reachesTheDevice();
+    void move_steps_reachTheBoardAsOneFastMove();
+    void move_json_positionsInTheControllersObject();
 };
 
 void TestCliSingleMachine::initTestCase()
@@ -129,6 +132,29 @@ void TestCliSingleMachine::stop_reachesTheDevice()
     const QList<QByteArray> frames = m_sim->receivedFrames();
     QVERIFY(std::any_of(frames.cbegin(), frames.cend(),
                         [this](const QByteArray& f) { return m_sim->isStopFrame(f); }));
+}
+
+// X=1000 in steps at 1 step per unit: the board gets the fast move of exactly 1000 steps on X.
+void TestCliSingleMachine::move_steps_reachTheBoardAsOneFastMove()
+{
+    const int code = run({"--setup-defaults", "move", "X=1000"});
+    QVERIFY2(code == 0, m_err.constData());
+    const QByteArray frame = elab::encode::fastMoveXY(1000, 0);
+    QCOMPARE(m_sim->receivedFrames().count(frame), qsizetype(1));
+    QCOMPARE(m_sim->position(Axis::X), qint64(1000));
+    QVERIFY(m_sim->standingStill());
+    QVERIFY2(m_out.startsWith("X=1000"), m_out.constData());
+}
+
+void TestCliSingleMachine::move_json_positionsInTheControllersObject()
+{
+    const int code = run({"--setup-defaults", "move", "Y=-20", "--json"});
+    QVERIFY2(code == 0, m_err.constData());
+    const QJsonObject y =
+        QJsonDocument::fromJson(m_out).object().value("axes").toObject().value("Y").toObject();
+    QCOMPARE(y.value("position").toInteger(), qint64(-20));
+    QCOMPARE(y.value("steps").toInteger(), qint64(-20));
+    QCOMPARE(y.value("unit").toString(), QStringLiteral("steps"));
 }
 
 QTEST_GUILESS_MAIN(TestCliSingleMachine)
