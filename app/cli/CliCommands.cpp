@@ -35,7 +35,7 @@ const CommandEntry kCommands[] = {
     {cmdExport, true, {"export", {}}},
     {cmdImport, true, {"import", {{"no-verify"}}}},
     {nullptr, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
-    {cmdJog, true, {"jog", {{"for", "MS"}}}},
+    {nullptr, true, {"jog", {{"for", "MS"}}}},
     {cmdHome, true, {"home", kPositioningOptions + QList<CommandOption>{{"simultaneous"},
                                                                         {"closed-loop"}}}},
     {cmdVelocity, true, {"velocity", {{"for", "MS"}}}},

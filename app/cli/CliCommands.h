@@ -53,7 +53,6 @@ Outcome cmdGet(CliContext& c, QStringList args);
 Outcome cmdExport(CliContext& c, QStringList args);
 Outcome cmdImport(CliContext& c, QStringList args);
 
-Outcome cmdJog(CliContext& c, QStringList args);
 Outcome cmdHome(CliContext& c, QStringList args);
 Outcome cmdVelocity(CliContext& c, QStringList args);
 Outcome cmdFeed(CliContext& c, QStringList args);

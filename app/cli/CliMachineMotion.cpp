@@ -2,8 +2,10 @@
 // their units, through the core Machine (issue 19; docs/cli.md, "Machines").
 #include "CliMachineMotion.h"
 #include "CliMachineRun.h"
+#include "CliSession.h"
 #include "CliText.h"
 #include "model/NumberParsing.h"
+#include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <limits>
 #include <optional>
@@ -19,12 +21,69 @@ namespace {
 constexpr int kJogRenewMs = 100;  // well inside every adapter's jog lease (300 ms)
 constexpr int kRampDownMs = 5000; // bound for every jog to ramp down and stand
 
-// The jog loop: renews the rates until forMs passed, a signal came or a link was lost.
+// A rate faster than the controller's ceiling (or the axis' maxJogSpeed) is refused, not
+// limited: a typed rate is meant as given.
+Outcome checkJogRates(const machine::MachineDescription& d, const QMap<QString, double>& rates)
+{
+    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
+        const MachineAxis* a = d.axis(it.key());
+        const ModelInfo* model = findModel(d.controller(a->controller)->modelId);
+        double limit = model->capabilities.maxJogSpeed / a->stepsPerUnit;
+        if (a->maxJogSpeed)
+            limit = qMin(limit, *a->maxJogSpeed);
+        if (qAbs(it.value()) > limit)
+            return Outcome::failure(
+                ExitInvalidValue,
+                CliText::tr("jog: %1=%2 %3/s is out of range (allowed: -%4..%4 %3/s)")
+                    .arg(it.key())
+                    .arg(it.value())
+                    .arg(machine::unitKey(a->unit))
+                    .arg(limit));
+    }
+    return Outcome::success();
+}
+
+bool anyCommFault(CliMachineSession& m)
+{
+    for (const machine::MachineController& c : m.description().controllers) {
+        if (m.machine().session(c.id)->status().commFault)
+            return true;
+    }
+    return false;
+}
+
+// After the jog: every axis at rest, or the command stops every controller and says why.
+Outcome rampDown(CliMachineSession& m)
+{
+    if (!m.jogRefusal().isEmpty() && !m.linkLost()) {
+        // Refused because a drive stopped answering: a communication fault, judged like one.
+        if (anyCommFault(m))
+            m.waitFor([&m] { return m.linkLost(); }, CliSession::kJogRampDownMs);
+        if (!m.linkLost())
+            return stopThenFail(m, Outcome::failure(ExitRefused, m.jogRefusal()));
+    }
+    if (m.linkLost()) {
+        m.stopAll(); // the machine told the others already; this waits for their answers
+        return m.linkLostOutcome();
+    }
+    if (!m.waitFor([&m] { return everyAxisAtRest(m); }, kRampDownMs)) {
+        const Outcome failed = stopThenFail(
+            m,
+            Outcome::failure(ExitTimeout,
+                             CliText::tr("jog did not ramp down within %1 ms").arg(kRampDownMs)));
+        return m.linkLost() ? m.linkLostOutcome() : failed;
+    }
+    return Outcome::success();
+}
+
+// The jog loop: renews the rates until forMs passed, a signal came, a controller refused or
+// a link was lost.
 Outcome runJog(CliMachineSession& m, const QMap<QString, double>& rates, qint64 forMs)
 {
     QElapsedTimer clock;
     clock.start();
-    while (clock.elapsed() < forMs && !m.interrupted() && !m.linkLost()) {
+    while (clock.elapsed() < forMs && !m.interrupted() && !m.linkLost() &&
+           m.jogRefusal().isEmpty()) {
         QString refusal;
         if (!m.machine().jog(rates, &refusal)) {
             m.machine().endJog();
@@ -37,21 +96,7 @@ Outcome runJog(CliMachineSession& m, const QMap<QString, double>& rates, qint64 
     m.machine().endJog();
     if (m.interrupted())
         return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    if (m.linkLost()) {
-        m.stopAll(); // the machine told the others already; this waits for their answers
-        return m.linkLostOutcome();
-    }
-    if (!m.waitFor([&m] { return everyAxisAtRest(m); }, kRampDownMs)) {
-        const Outcome stopped = m.stopAll();
-        return m.linkLost() ? m.linkLostOutcome()
-                            : Outcome::failure(ExitTimeout,
-                                               CliText::tr("the jog did not ramp down within %1 "
-                                                           "ms; %2")
-                                                   .arg(kRampDownMs)
-                                                   .arg(stopped.ok() ? CliText::tr("it was stopped")
-                                                                     : stopped.message));
-    }
-    return Outcome::success();
+    return rampDown(m);
 }
 } // namespace
 
@@ -99,6 +144,8 @@ Outcome machineJog(CliMachineSession& m, const CliOptions& o)
     if (Outcome parsed = parseUnits(QStringLiteral("jog"), o.args, m.description(), false, &rates);
         !parsed.ok())
         return parsed;
+    if (Outcome allowed = checkJogRates(m.description(), rates); !allowed.ok())
+        return allowed;
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
     if (Outcome jogged = runJog(m, rates, forMs); !jogged.ok())

@@ -130,7 +130,8 @@ bool runsOnTheMachine(const QString& command)
 {
     return machineCommand(command) != nullptr &&
            (command == QLatin1String("status") || command == QLatin1String("stop") ||
-            command == QLatin1String("panic") || command == QLatin1String("move"));
+            command == QLatin1String("panic") || command == QLatin1String("move") ||
+            command == QLatin1String("jog"));
 }
 
 int runOneControllerMachine(const CliOptions& options)

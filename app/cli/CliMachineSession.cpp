@@ -64,6 +64,13 @@ void CliMachineSession::watchSessions()
                         m_lastFailure = r.error;
                     wake();
                 });
+        connect(s, &ControllerSession::jogRefused, this, [this, id = c.id](const QString& reason) {
+            if (m_jogRefusal.isEmpty())
+                m_jogRefusal = m_description.controllers.size() == 1
+                                   ? reason
+                                   : CliText::tr("controller \"%1\": %2").arg(id, reason);
+            wake();
+        });
         connect(s, &ControllerSession::linkStateChanged, this,
                 [this, id = c.id](LinkState state, const QString& reason) {
                     if (m_connected && state != LinkState::Connected && !reason.isEmpty())

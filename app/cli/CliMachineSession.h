@@ -46,6 +46,10 @@ public:
     // The exit code for a failed move or reference run with `message`.
     Outcome motionFailure(const QString& message) const;
 
+    // A controller refused a jog rate after it was sent (its own rules: a limit switch, a
+    // drive that stopped answering); empty while none did.
+    const QString& jogRefusal() const { return m_jogRefusal; }
+
     void interrupt();
     bool interrupted() const { return m_interrupted; }
     // SIGINT/SIGTERM/SIGHUP and failures: every jog ramps down and every controller gets its
@@ -69,7 +73,8 @@ private:
     bool m_interrupted = false;
     QString m_lostController;
     QString m_lostMessage;
-    QHash<QString, QString> m_lostReasons; // controller id -> why its link went down
+    QHash<QString, QString> m_lostReasons;
+    QString m_jogRefusal; // controller id -> why its link went down
     ErrorKind m_lastFailure = ErrorKind::None;
 };
 

@@ -5,7 +5,6 @@
 #include "model/ModelOperations.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QtMath>
 #include <climits>
 #include <limits>
 
@@ -18,8 +17,6 @@ bool parseDuration(const QString& text, qint64* ms)
     return numbers::parseInteger(text, 1, std::numeric_limits<qint64>::max(), ms) ==
            NumberError::None;
 }
-
-constexpr int kJogRenewMs = 100; // well inside the adapter's jog lease (300 ms)
 
 Outcome connectAndRun(CliContext& c, const std::function<RequestId(ControllerSession&)>& start)
 {
@@ -146,36 +143,6 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
                                      "referenced"));
     }
     return result.ok() ? reportPositions(c) : result;
-}
-
-// Waits until the host-side ramp has reached zero on every axis and the device is at rest,
-// from the statuses the poller delivers (a status request of its own could time out by
-// chance while the poller is about to declare the link lost: one fault, one exit code).
-Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
-{
-    QElapsedTimer clock;
-    clock.start();
-    for (;;) {
-        if (c.session.linkLost())
-            return c.session.linkLostOutcome();
-        bool commanding = false;
-        bool deviceMoving = false;
-        for (const AxisStatus& axis : c.session.status().axes) {
-            commanding = commanding || axis.commandedVelocity != 0.0;
-            deviceMoving = deviceMoving || axis.jogging || axis.moving;
-        }
-        if (!commanding && (!deviceMoving || clock.elapsed() > deadlineMs))
-            return Outcome::success(); // some boards keep their jog-mode bit at rate zero
-        if (clock.elapsed() > deadlineMs) {
-            // "stopped" only once the device reports standstill, as after any other failure.
-            return stopThenFail(
-                c, Outcome::failure(
-                       ExitFailure,
-                       CliText::tr("jog did not ramp down within %1 ms").arg(deadlineMs)));
-        }
-        if (!c.session.pause(CliSession::kIdlePollMs))
-            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    }
 }
 
 // The value of a spindle/power command, read and checked like the schema parameter of the
@@ -307,67 +274,6 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
         return result;
     result = c.session.waitUntilIdle();
     return result.ok() ? reportPositions(c) : stopThenFail(c, result);
-}
-
-Outcome cmdJog(CliContext& c, QStringList args)
-{
-    const std::optional<QString> forText = c.options.value("for");
-    qint64 forMs = 0;
-    if (!forText || !parseDuration(*forText, &forMs))
-        return Outcome::usage(
-            CliText::tr("jog needs --for MS (a positive number of milliseconds)"));
-    AxisVelocities rates;
-    if (const Outcome parsed = parseAxisDoubles(QStringLiteral("jog"), args, c.axes(), &rates);
-        !parsed.ok())
-        return parsed;
-    const double maxSpeed = c.capabilities().maxJogSpeed;
-    double fastest = 0;
-    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
-        if (qAbs(it.value()) > maxSpeed) {
-            return Outcome::failure(
-                ExitInvalidValue,
-                CliText::tr("jog: %1=%2 steps/s is out of range (allowed: -%3..%3 "
-                            "steps/s)")
-                    .arg(axisName(it.key()))
-                    .arg(it.value())
-                    .arg(maxSpeed));
-        }
-        fastest = qMax(fastest, qAbs(it.value()));
-    }
-    // A fresh status first: the adapter decides on the first jog from the last words it read.
-    if (Outcome result = c.connect(); !result.ok() || !(result = c.session.refresh()).ok())
-        return result;
-
-    // The jog rate is a lease: renew it well inside the adapter's lease time, or the axes
-    // ramp down by themselves. endJog() then ramps them to zero. A lost link ends the loop at
-    // once with exit 6 (the adapter has sent its stop), whatever the jog refusal says.
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < forMs) {
-        if (c.session.linkLost())
-            return c.session.linkLostOutcome();
-        if (!c.session.jogRefusal().isEmpty())
-            break;
-        c.session.session().setJogVelocity(rates);
-        if (!c.session.pause(int(qMin<qint64>(kJogRenewMs, forMs - clock.elapsed()))))
-            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    }
-    c.session.session().endJog();
-    const double acceleration = c.capabilities().defaultJogAcceleration;
-    const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
-    const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
-    if (!c.session.jogRefusal().isEmpty() && c.session.status().commFault) {
-        // Refused because a drive stopped answering: a communication fault, judged like one.
-        c.session.waitFor([&c] { return c.session.linkLost(); }, c.session.linkVerdictMs());
-        if (!c.session.linkLost()) {
-            return stopThenFail(c, Outcome::failure(ExitLinkDown, c.session.jogRefusal()));
-        }
-    }
-    if (c.session.linkLost())
-        return c.session.linkLostOutcome();
-    if (!c.session.jogRefusal().isEmpty())
-        return stopThenFail(c, Outcome::failure(ExitRefused, c.session.jogRefusal()));
-    return rampedDown.ok() ? reportPositions(c) : rampedDown;
 }
 
 Outcome cmdReset(CliContext& c, QStringList args)
