@@ -52,6 +52,51 @@ bool anyCommFault(CliMachineSession& m)
     return false;
 }
 
+// `home Z X` (the file's directions) or `home X=1 Z=-1` (this run's: 1 or -1 in the machine's
+// sense, 0 leaves the axis out). A controller that picks the direction itself (EMIS 9.9)
+// takes 1 only.
+Outcome parseHomeAxes(const machine::MachineDescription& d, const QStringList& args,
+                      QStringList* axes, QMap<QString, int>* directions)
+{
+    for (const QString& arg : args) {
+        const int eq = arg.indexOf(QLatin1Char('='));
+        const QString name = (eq < 0 ? arg : arg.left(eq)).trimmed().toUpper();
+        const MachineAxis* a = d.axis(name);
+        if (!a)
+            return Outcome::usage(CliText::tr("home: the machine has no axis %1 (home takes axis "
+                                              "names, home Z X, or directions, home X=1 Z=-1)")
+                                      .arg(name));
+        qint64 direction = 0;
+        if (eq < 0) {
+            *axes << name;
+            continue;
+        }
+        const QString text = arg.mid(eq + 1);
+        if (numbers::parseInteger(text, &direction) != NumberError::None)
+            return Outcome::usage(
+                CliText::tr("%1: %2: '%3' is not a decimal number").arg("home", name, text));
+        if (direction < -1 || direction > 1)
+            return Outcome::failure(ExitInvalidValue,
+                                    CliText::tr("home: direction of axis %1 must be -1, 0 or 1, "
+                                                "not %2")
+                                        .arg(name)
+                                        .arg(direction));
+        const ModelInfo* model = findModel(d.controller(a->controller)->modelId);
+        if (direction == -1 && !model->capabilities.referenceDirection)
+            return Outcome::failure(ExitInvalidValue,
+                                    CliText::tr("home: %1: %2 picks the reference direction "
+                                                "itself: give %1=1")
+                                        .arg(name, model->id));
+        if (direction != 0)
+            *axes << name;
+        if (direction != 0 && model->capabilities.referenceDirection)
+            directions->insert(name, int(direction));
+    }
+    if (!args.isEmpty() && axes->isEmpty())
+        return Outcome::usage(CliText::tr("home: every axis given is left out (0)"));
+    return Outcome::success();
+}
+
 // After the jog: every axis at rest, or the command stops every controller and says why.
 Outcome rampDown(CliMachineSession& m)
 {
@@ -103,23 +148,17 @@ Outcome runJog(CliMachineSession& m, const QMap<QString, double>& rates, qint64 
 Outcome machineHome(CliMachineSession& m, const CliOptions& o)
 {
     int timeoutMs = -1;
-    if (Outcome bad =
-            refuseOptions(o, QStringLiteral("home"), {"no-wait", "simultaneous", "closed-loop"});
+    if (Outcome bad = refuseOptions(o, QStringLiteral("home"), {"simultaneous", "closed-loop"});
         !bad.ok())
         return bad;
     QStringList axes;
-    for (const QString& arg : o.args) {
-        const QString name = arg.trimmed().toUpper();
-        if (!m.description().axis(name))
-            return Outcome::usage(
-                CliText::tr("home: the machine has no axis %1 (home takes axis names: home Z X; "
-                            "directions come from the machine file)")
-                    .arg(arg));
-        axes << name;
-    }
+    QMap<QString, int> directions;
+    if (Outcome parsed = parseHomeAxes(m.description(), o.args, &axes, &directions); !parsed.ok())
+        return parsed;
     if (!parseTimeout(o, &timeoutMs))
         return Outcome::usage(
             CliText::tr("home --timeout needs a positive number of milliseconds"));
+    m.setReferenceDirections(directions);
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
     QString refusal;
@@ -127,6 +166,8 @@ Outcome machineHome(CliMachineSession& m, const CliOptions& o)
     if (id == 0)
         return Outcome::failure(ExitRefused,
                                 CliText::tr("home refused, nothing was sent: %1").arg(refusal));
+    if (o.flag("no-wait"))
+        return leaveRunning(m, &Machine::referenceFinished, id);
     if (Outcome done = waitMotion(m, &Machine::referenceFinished, id, timeoutMs); !done.ok())
         return done;
     return printMachinePositions(m, o.json);

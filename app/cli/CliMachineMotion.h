@@ -24,6 +24,8 @@ Outcome stopThenFail(CliMachineSession& m, const Outcome& failure);
 // Every axis of every controller at rest and no jog commanded.
 bool everyAxisAtRest(CliMachineSession& m);
 
+constexpr int kStatusWaitMs = 30000; // as CliSession::kRequestTimeoutMs
+
 // Waits for the end of a move or reference run `id`, signalled by `signal`; past timeoutMs
 // (< 0: none) every controller is stopped and the command exits 5 once the axes stand.
 template <typename Signal>
@@ -48,6 +50,26 @@ Outcome waitMotion(CliMachineSession& m, Signal signal, quint64 id, int timeoutM
     if (!end->first)
         return m.motionFailure(end->second);
     return Outcome::success();
+}
+
+// --no-wait: returns once every controller took its part of motion `id` (a status read
+// queued behind it has finished), or with the part's refusal; the motion goes on.
+template <typename Signal> Outcome leaveRunning(CliMachineSession& m, Signal signal, quint64 id)
+{
+    std::optional<std::pair<bool, QString>> end;
+    QObject guard;
+    QObject::connect(&m.machine(), signal, &guard,
+                     [&end, id](quint64 finished, bool ok, const QString& message) {
+                         if (finished == id)
+                             end.emplace(ok, message);
+                     });
+    QMap<QString, RequestId> reads;
+    for (const machine::MachineController& c : m.description().controllers)
+        reads.insert(c.id, m.machine().session(c.id)->refreshStatus());
+    const Outcome sent = m.waitAll(reads, kStatusWaitMs);
+    if (end && !end->first)
+        return m.motionFailure(end->second);
+    return sent;
 }
 
 } // namespace stepdeck::cli::machinemotion

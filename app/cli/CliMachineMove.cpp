@@ -3,7 +3,6 @@
 // docs/cli.md), and the helpers the other machine motion commands share.
 #include "CliMachineMotion.h"
 #include "CliMachineRun.h"
-#include "CliSession.h"
 #include "model/NumberParsing.h"
 #include <limits>
 
@@ -132,26 +131,6 @@ Outcome stopThenFail(CliMachineSession& m, const Outcome& failure)
 namespace {
 using namespace machinemotion;
 
-// --no-wait: returns once every controller took its part (a status read queued behind it has
-// finished), or with the part's refusal; the motion goes on.
-Outcome leaveRunning(CliMachineSession& m, quint64 id)
-{
-    std::optional<std::pair<bool, QString>> end;
-    QObject guard;
-    QObject::connect(&m.machine(), &Machine::moveFinished, &guard,
-                     [&end, id](quint64 finished, bool ok, const QString& message) {
-                         if (finished == id)
-                             end.emplace(ok, message);
-                     });
-    QMap<QString, RequestId> reads;
-    for (const machine::MachineController& c : m.description().controllers)
-        reads.insert(c.id, m.machine().session(c.id)->refreshStatus());
-    const Outcome sent = m.waitAll(reads, CliSession::kRequestTimeoutMs);
-    if (end && !end->first)
-        return m.motionFailure(end->second);
-    return sent;
-}
-
 bool motionUnconfirmed(CliMachineSession& m)
 {
     for (const machine::MachineController& c : m.description().controllers) {
@@ -180,7 +159,7 @@ Outcome machineMove(CliMachineSession& m, const CliOptions& o)
         return Outcome::failure(ExitRefused,
                                 CliText::tr("move refused, nothing was sent: %1").arg(refusal));
     if (o.flag("no-wait"))
-        return leaveRunning(m, id);
+        return leaveRunning(m, &Machine::moveFinished, id);
     if (Outcome moved = waitMotion(m, &Machine::moveFinished, id, timeoutMs); !moved.ok()) {
         if (moved.code == ExitMotionAborted) // where the axes ended
             moved.message =

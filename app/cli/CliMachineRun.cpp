@@ -126,12 +126,13 @@ Outcome singleControllerMachine(const CliOptions& o, machine::MachineDescription
 }
 } // namespace
 
-bool runsOnTheMachine(const QString& command)
+bool runsOnTheMachine(const CliOptions& o)
 {
-    return machineCommand(command) != nullptr &&
-           (command == QLatin1String("status") || command == QLatin1String("stop") ||
-            command == QLatin1String("panic") || command == QLatin1String("move") ||
-            command == QLatin1String("jog"));
+    // The controller's own reference operations stay with the controller (as --controller ID
+    // on a machine file): EMIS' simultaneous run, a closed-loop drive's reference.
+    if (o.command == QLatin1String("home") && (o.flag("simultaneous") || o.flag("closed-loop")))
+        return false;
+    return machineCommand(o.command) != nullptr;
 }
 
 int runOneControllerMachine(const CliOptions& options)
@@ -159,7 +160,8 @@ int runWithMachine(const CliOptions& options)
     // `status --controller ID`: that controller's own status (raw words, drive rows).
     const bool controllerStatus =
         options.command == QLatin1String("status") && !options.controller.isEmpty();
-    if (const MachineCommand run = machineCommand(options.command); run && !controllerStatus) {
+    if (const MachineCommand run = machineCommand(options.command);
+        run && !controllerStatus && runsOnTheMachine(options)) {
         if (!options.controller.isEmpty())
             return finish(Outcome::usage(
                 CliText::tr("%1 takes the machine's axes by name; --controller is for the "

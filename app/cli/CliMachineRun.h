@@ -11,8 +11,10 @@ int runSingleController(const CliOptions& options);
 
 // The machine commands (move, jog, home, stop, panic, status) run on a machine also without a
 // file: runOneControllerMachine() makes --model/--port a machine of that one controller
-// (issue 19: one code path), its axes under their controller names in steps.
-bool runsOnTheMachine(const QString& command);
+// (issue 19: one code path), its axes under their controller names in steps. Only
+// `home --simultaneous` and `home --closed-loop`, a controller's own reference operations,
+// run on the controller's session.
+bool runsOnTheMachine(const CliOptions& options);
 int runOneControllerMachine(const CliOptions& options);
 
 // The whole of one invocation with --machine FILE (CliMachineRun.cpp): loads and validates the

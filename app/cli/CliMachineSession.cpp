@@ -126,6 +126,14 @@ Outcome CliMachineSession::openAll()
     return Outcome::success();
 }
 
+void CliMachineSession::setReferenceDirections(const QMap<QString, int>& directions)
+{
+    for (machine::MachineAxis& a : m_description.axes) {
+        if (directions.contains(a.name))
+            a.referenceDirection = directions.value(a.name);
+    }
+}
+
 Outcome CliMachineSession::connectAll()
 {
     if (m_connected)

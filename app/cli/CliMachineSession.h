@@ -29,6 +29,9 @@ public:
     // most options.connectTimeoutMs), then reads every status once; with --setup-defaults
     // writes each model's schema defaults first. Failure names the controller (exit 6).
     Outcome connectAll();
+    // `home X=1`: reference directions from the command line instead of the file (before
+    // connectAll(), which creates the machine from the description).
+    void setReferenceDirections(const QMap<QString, int>& directions);
     bool isConnected() const { return m_connected; }
 
     // Waits until done() or timeout (ms < 0: no deadline); false on timeout or interrupt.

@@ -193,43 +193,31 @@ Outcome cmdFeed(CliContext& c, QStringList args)
         [](ControllerSession& s, const AxisVector& v) { return s.feed(v); }, oneAxisUnlessWaiting);
 }
 
+// The controller's own reference operations; a plain `home` runs on the machine
+// (runsOnTheMachine(), CliMachineMotion.cpp).
 Outcome cmdHome(CliContext& c, QStringList args)
 {
     if (c.options.flag("closed-loop")) // the closed-loop reference run (manual 8.1)
         return homeClosedLoop(c, args);
     // --simultaneous: every named axis at once (EMIS "$Hxy,a", manual 9.9).
-    const bool simultaneous = c.options.flag("simultaneous");
-    const auto directionsValid = [simultaneous](const AxisVector& directions) {
+    const auto directionsValid = [](const AxisVector& directions) {
         for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
-            if (simultaneous && it.value() == -1) {
+            if (it.value() != 0 && it.value() != 1) {
                 return Outcome::failure(
                     ExitInvalidValue,
                     CliText::tr("home --simultaneous: axis %1 takes 1 (reference) or "
                                 "0 (leave out)")
                         .arg(axisName(it.key())));
             }
-            if (it.value() < -1 || it.value() > 1) {
-                return Outcome::failure(
-                    ExitInvalidValue,
-                    CliText::tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
-                        .arg(axisName(it.key()))
-                        .arg(it.value()));
-            }
         }
         return Outcome::success();
     };
-    const auto start = [simultaneous](ControllerSession& s, const AxisVector& v) {
-        if (simultaneous) {
-            QString axes;
-            for (auto it = v.cbegin(); it != v.cend(); ++it)
-                axes += it.value() != 0 ? axisName(it.key()) : QString();
-            return s.modelOperation(operation::kReference, {{operation::arg::kAxes, axes},
-                                                            {operation::arg::kSimultaneous, true}});
-        }
-        QMap<Axis, int> directions;
+    const auto start = [](ControllerSession& s, const AxisVector& v) {
+        QString axes;
         for (auto it = v.cbegin(); it != v.cend(); ++it)
-            directions.insert(it.key(), int(it.value()));
-        return s.reference(directions);
+            axes += it.value() != 0 ? axisName(it.key()) : QString();
+        return s.modelOperation(operation::kReference, {{operation::arg::kAxes, axes},
+                                                        {operation::arg::kSimultaneous, true}});
     };
     return positioning(c, args, QStringLiteral("home"), start, directionsValid);
 }

@@ -8,7 +8,7 @@ namespace stepdeck::cli {
 
 int runSingleController(const CliOptions& options)
 {
-    if (runsOnTheMachine(options.command))
+    if (runsOnTheMachine(options))
         return runOneControllerMachine(options);
     CliSession session(options);
     const app::SignalPipe signalPipe([&session](int) { session.interrupt(); });
