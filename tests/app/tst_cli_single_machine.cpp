@@ -36,6 +36,8 @@ private slots:
     void stop_reachesTheDevice();
     void move_steps_reachTheBoardAsOneFastMove();
     void move_json_positionsInTheControllersObject();
+    void jog_overTheCeiling_refusedNothingMoves();
+    void home_minusOnEmis_refused();
 };
 
 void TestCliSingleMachine::initTestCase()
@@ -155,6 +157,29 @@ void TestCliSingleMachine::move_json_positionsInTheControllersObject()
     QCOMPARE(y.value("position").toInteger(), qint64(-20));
     QCOMPARE(y.value("steps").toInteger(), qint64(-20));
     QCOMPARE(y.value("unit").toString(), QStringLiteral("steps"));
+}
+
+// A typed rate above the controller's jog ceiling is refused (exit 7), not limited: no jog
+// frame reaches the board.
+void TestCliSingleMachine::jog_overTheCeiling_refusedNothingMoves()
+{
+    QCOMPARE(run({"--setup-defaults", "jog", "X=1000000", "--for", "300"}), 7);
+    QVERIFY2(m_err.contains("out of range"), m_err.constData());
+    const QByteArray jogFrame = elab::encode::jogSpeed({0, 0, 0}).left(1);
+    for (const QByteArray& f : m_sim->receivedFrames())
+        QVERIFY2(!f.startsWith(jogFrame), f.toHex().constData());
+    QVERIFY(m_sim->standingStill());
+}
+
+// The machine's home takes AXIS=DIR: -1 on a controller that picks the direction itself is
+// refused before anything is opened (here: the in-process EMIS simulator).
+void TestCliSingleMachine::home_minusOnEmis_refused()
+{
+    QProcess process;
+    process.start(m_cli, {"--model", "emis", "--port", "sim", "home", "X=-1"});
+    QVERIFY(process.waitForFinished(30000));
+    QCOMPARE(process.exitCode(), 7);
+    QVERIFY(process.readAllStandardError().contains("picks the reference direction itself"));
 }
 
 QTEST_GUILESS_MAIN(TestCliSingleMachine)
