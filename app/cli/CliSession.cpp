@@ -30,10 +30,6 @@ CliSession::CliSession(const CliOptions& options, QObject* parent)
         m_lastError = message;
         wake();
     });
-    connect(&m_session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
-        m_jogRefusal = reason;
-        wake();
-    });
 }
 
 CliSession::~CliSession() = default;

@@ -63,8 +63,6 @@ public:
     // axis map (--address 2: only X), unlike ModelInfo::capabilities.
     Capabilities capabilities() const { return m_session.capabilities(); }
     const MachineStatus& status() const { return m_session.status(); }
-    QString linkStateText() const { return linkStateName(m_session.linkState()); }
-    QString jogRefusal() const { return m_jogRefusal; }
 
     // SIGINT/SIGTERM/SIGHUP: ends every wait; stopMotion() then ramps jogs down and stops.
     void interrupt();
@@ -90,7 +88,6 @@ private:
     bool m_lost = false;
     QString m_lostReason;
     QString m_lastError;
-    QString m_jogRefusal;
     bool m_interrupted = false;
 };
 
