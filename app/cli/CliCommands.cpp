@@ -9,6 +9,8 @@ namespace stepdeck::cli {
 namespace {
 struct CommandEntry
 {
+    // nullptr: a machine command, which runs on a machine also without a file
+    // (runsOnTheMachine(), CliMachineRun.cpp) and never on a CliSession.
     Outcome (*run)(CliContext&, QStringList);
     bool needsModel;
     CommandSyntax syntax; // its name and own options (docs/cli.md, "Command options")
@@ -22,7 +24,7 @@ const CommandEntry kCommands[] = {
     {cmdModels, false, {"models", {}}},
     {cmdMachine, false, {"machine", {}}},
     {cmdParams, true, {"params", {}}},
-    {cmdStatus, true, {"status", {}}},
+    {nullptr, true, {"status", {}}},
     {cmdScan, true, {"scan", {{"first", "N"}, {"last", "N"}}}},
     {cmdRecords, true, {"records", {}}},
     {cmdClosedLoop, true, {"closed-loop", {}}},
@@ -32,14 +34,14 @@ const CommandEntry kCommands[] = {
     {cmdGet, true, {"get", {}}},
     {cmdExport, true, {"export", {}}},
     {cmdImport, true, {"import", {{"no-verify"}}}},
-    {cmdMove, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
-    {cmdJog, true, {"jog", {{"for", "MS"}}}},
+    {nullptr, true, {"move", kPositioningOptions + QList<CommandOption>{{"abs"}}}},
+    {nullptr, true, {"jog", {{"for", "MS"}}}},
     {cmdHome, true, {"home", kPositioningOptions + QList<CommandOption>{{"simultaneous"},
                                                                         {"closed-loop"}}}},
     {cmdVelocity, true, {"velocity", {{"for", "MS"}}}},
     {cmdFeed, true, {"feed", kPositioningOptions}},
-    {cmdStop, true, {"stop", {}}},
-    {cmdPanic, true, {"panic", {}}},
+    {nullptr, true, {"stop", {}}},
+    {nullptr, true, {"panic", {}}},
     {cmdReset, true, {"reset", {}}},
     {cmdSpindle, true, {"spindle", {}}},
     {cmdCoolant, true, {"coolant", {}}},
@@ -142,6 +144,8 @@ Outcome runCommand(CliContext& context)
     for (const CommandEntry& entry : kCommands) {
         if (name != QLatin1String(entry.syntax.name))
             continue;
+        if (!entry.run)
+            return Outcome::usage(CliText::tr("%1 runs on the machine, not here").arg(name));
         if (entry.needsModel && !context.model) {
             return Outcome::usage(unknownModelText(context.options.model));
         }
@@ -242,23 +246,6 @@ Outcome cmdParams(CliContext& c, QStringList args)
     }
     if (c.json())
         printJson(QJsonObject{{"model", c.model->id}, {"parameters", list}});
-    return Outcome::success();
-}
-
-Outcome cmdStatus(CliContext& c, QStringList args)
-{
-    if (!args.isEmpty())
-        return Outcome::usage(CliText::tr("status takes no arguments"));
-    Outcome result = c.connect();
-    if (result.ok())
-        result = c.session.refresh();
-    if (!result.ok())
-        return result;
-    if (c.json())
-        printJson(c.session.status().toJson(c.model->id));
-    else
-        printLine(formatStatus(c.session.status(), *c.model, c.capabilities(), c.options.port,
-                               c.session.linkStateText()));
     return Outcome::success();
 }
 

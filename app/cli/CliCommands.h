@@ -44,7 +44,6 @@ Outcome cmdPorts(CliContext& c, QStringList args);
 Outcome cmdModels(CliContext& c, QStringList args);
 Outcome cmdMachine(CliContext& c, QStringList args); // CliMachineCommands.cpp
 Outcome cmdParams(CliContext& c, QStringList args);
-Outcome cmdStatus(CliContext& c, QStringList args);
 Outcome cmdScan(CliContext& c, QStringList args);
 Outcome cmdRecords(CliContext& c, QStringList args);
 Outcome cmdResetPositionError(CliContext& c, QStringList args);
@@ -54,13 +53,9 @@ Outcome cmdGet(CliContext& c, QStringList args);
 Outcome cmdExport(CliContext& c, QStringList args);
 Outcome cmdImport(CliContext& c, QStringList args);
 
-Outcome cmdMove(CliContext& c, QStringList args);
-Outcome cmdJog(CliContext& c, QStringList args);
 Outcome cmdHome(CliContext& c, QStringList args);
 Outcome cmdVelocity(CliContext& c, QStringList args);
 Outcome cmdFeed(CliContext& c, QStringList args);
-Outcome cmdStop(CliContext& c, QStringList args);
-Outcome cmdPanic(CliContext& c, QStringList args);
 Outcome cmdReset(CliContext& c, QStringList args);
 Outcome cmdSpindle(CliContext& c, QStringList args);
 Outcome cmdCoolant(CliContext& c, QStringList args);

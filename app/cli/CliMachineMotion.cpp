@@ -1,8 +1,11 @@
 // `stepdeck-cli --machine FILE move|jog|home|stop|panic`: the machine's axes by name, values in
 // their units, through the core Machine (issue 19; docs/cli.md, "Machines").
+#include "CliMachineMotion.h"
 #include "CliMachineRun.h"
+#include "CliSession.h"
 #include "CliText.h"
 #include "model/NumberParsing.h"
+#include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <limits>
 #include <optional>
@@ -12,109 +15,120 @@ namespace stepdeck::cli {
 using machine::Machine;
 using machine::MachineAxis;
 
+using namespace machinemotion;
+
 namespace {
 constexpr int kJogRenewMs = 100;  // well inside every adapter's jog lease (300 ms)
 constexpr int kRampDownMs = 5000; // bound for every jog to ramp down and stand
 
-// "X=12.5 A=-90": machine axis names and decimal values. Usage errors (exit 2) name the
-// command; an axis the machine does not have lists the ones it has.
-Outcome parseUnits(const QString& command, const QStringList& args,
-                   const machine::MachineDescription& d, QMap<QString, double>* out)
+// A rate faster than the controller's ceiling (or the axis' maxJogSpeed) is refused, not
+// limited: a typed rate is meant as given.
+Outcome checkJogRates(const machine::MachineDescription& d, const QMap<QString, double>& rates)
 {
-    QStringList names;
-    for (const MachineAxis& a : d.axes)
-        names << a.name;
-    if (args.isEmpty())
-        return Outcome::usage(CliText::tr("%1 needs at least one AXIS=VALUE (axes: %2)")
-                                  .arg(command, names.join(QStringLiteral(", "))));
-    for (const QString& arg : args) {
-        const int eq = arg.indexOf(QLatin1Char('='));
-        const QString name = eq > 0 ? arg.left(eq).trimmed().toUpper() : QString();
-        if (name.isEmpty())
-            return Outcome::usage(
-                CliText::tr("%1: expected AXIS=VALUE (e.g. X=12.5), got '%2'").arg(command, arg));
-        if (!d.axis(name))
-            return Outcome::usage(CliText::tr("%1: the machine has no axis %2 (its axes: %3)")
-                                      .arg(command, name, names.join(QStringLiteral(", "))));
-        if (out->contains(name))
-            return Outcome::usage(CliText::tr("%1: axis %2 given twice").arg(command, name));
-        double value = 0;
-        const QString text = arg.mid(eq + 1);
-        if (numbers::parseReal(text, &value) != NumberError::None)
-            return Outcome::usage(CliText::tr("%1: %2: '%3' is not a finite decimal number")
-                                      .arg(command, name, text));
-        out->insert(name, value);
+    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
+        const MachineAxis* a = d.axis(it.key());
+        const ModelInfo* model = findModel(d.controller(a->controller)->modelId);
+        double limit = model->capabilities.maxJogSpeed / a->stepsPerUnit;
+        if (a->maxJogSpeed)
+            limit = qMin(limit, *a->maxJogSpeed);
+        if (qAbs(it.value()) > limit)
+            return Outcome::failure(
+                ExitInvalidValue,
+                CliText::tr("jog: %1=%2 %3/s is out of range (allowed: -%4..%4 %3/s)")
+                    .arg(it.key())
+                    .arg(it.value())
+                    .arg(machine::unitKey(a->unit))
+                    .arg(limit));
     }
     return Outcome::success();
 }
 
-// --timeout MS of move and home: -1 without it.
-bool parseTimeout(const CliOptions& o, int* ms)
-{
-    *ms = -1;
-    const std::optional<QString> text = o.value("timeout");
-    return !text ||
-           numbers::parseInt(*text, 1, std::numeric_limits<int>::max(), ms) == NumberError::None;
-}
-
-Outcome refuseSingleControllerOptions(const CliOptions& o, const QString& command)
-{
-    for (const char* name : {"no-wait", "simultaneous", "closed-loop"}) {
-        if (o.flag(name))
-            return Outcome::usage(CliText::tr("%1 --%2 is a single-controller option: use it with "
-                                              "--controller ID, not on the machine")
-                                      .arg(command, QLatin1String(name)));
-    }
-    return Outcome::success();
-}
-
-// Waits for the end of a move or reference run `id`, signalled by `signal`; past timeoutMs
-// (< 0: none) every controller is stopped and the command exits 5.
-template <typename Signal>
-Outcome waitMotion(CliMachineSession& m, Signal signal, quint64 id, int timeoutMs)
-{
-    std::optional<std::pair<bool, QString>> end;
-    QObject guard;
-    QObject::connect(&m.machine(), signal, &guard,
-                     [&end, id](quint64 finished, bool ok, const QString& message) {
-                         if (finished == id)
-                             end.emplace(ok, message);
-                     });
-    m.waitFor([&] { return end.has_value() || m.linkLost(); }, timeoutMs);
-    if (m.interrupted())
-        return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    if (m.linkLost())
-        return m.linkLostOutcome();
-    if (!end) {
-        const Outcome stopped = m.stopAll();
-        return Outcome::failure(
-            ExitTimeout, CliText::tr("the motion did not end within %1 ms; %2")
-                             .arg(timeoutMs)
-                             .arg(stopped.ok() ? CliText::tr("it was stopped") : stopped.message));
-    }
-    if (!end->first)
-        return m.motionFailure(end->second);
-    return Outcome::success();
-}
-
-bool everyJogRampedDown(CliMachineSession& m)
+bool anyCommFault(CliMachineSession& m)
 {
     for (const machine::MachineController& c : m.description().controllers) {
-        const ControllerSession* s = m.machine().session(c.id);
-        for (const AxisStatus& a : s->status().axes) {
-            if (a.commandedVelocity != 0.0 || a.jogging || a.moving)
-                return false;
-        }
+        if (m.machine().session(c.id)->status().commFault)
+            return true;
     }
-    return true;
+    return false;
 }
 
-// The jog loop: renews the rates until forMs passed, a signal came or a link was lost.
+// `home Z X` (the file's directions) or `home X=1 Z=-1` (this run's: 1 or -1 in the machine's
+// sense, 0 leaves the axis out). A controller that picks the direction itself (EMIS 9.9)
+// takes 1 only.
+Outcome parseHomeAxes(const machine::MachineDescription& d, const QStringList& args,
+                      QStringList* axes, QMap<QString, int>* directions)
+{
+    for (const QString& arg : args) {
+        const int eq = arg.indexOf(QLatin1Char('='));
+        const QString name = (eq < 0 ? arg : arg.left(eq)).trimmed().toUpper();
+        const MachineAxis* a = d.axis(name);
+        if (!a)
+            return Outcome::usage(CliText::tr("home: the machine has no axis %1 (home takes axis "
+                                              "names, home Z X, or directions, home X=1 Z=-1)")
+                                      .arg(name));
+        qint64 direction = 0;
+        if (eq < 0) {
+            *axes << name;
+            continue;
+        }
+        const QString text = arg.mid(eq + 1);
+        if (numbers::parseInteger(text, &direction) != NumberError::None)
+            return Outcome::usage(
+                CliText::tr("%1: %2: '%3' is not a decimal number").arg("home", name, text));
+        if (direction < -1 || direction > 1)
+            return Outcome::failure(ExitInvalidValue,
+                                    CliText::tr("home: direction of axis %1 must be -1, 0 or 1, "
+                                                "not %2")
+                                        .arg(name)
+                                        .arg(direction));
+        const ModelInfo* model = findModel(d.controller(a->controller)->modelId);
+        if (direction == -1 && !model->capabilities.referenceDirection)
+            return Outcome::failure(ExitInvalidValue,
+                                    CliText::tr("home: %1: %2 picks the reference direction "
+                                                "itself: give %1=1")
+                                        .arg(name, model->id));
+        if (direction != 0)
+            *axes << name;
+        if (direction != 0 && model->capabilities.referenceDirection)
+            directions->insert(name, int(direction));
+    }
+    if (!args.isEmpty() && axes->isEmpty())
+        return Outcome::usage(CliText::tr("home: every axis given is left out (0)"));
+    return Outcome::success();
+}
+
+// After the jog: every axis at rest, or the command stops every controller and says why.
+Outcome rampDown(CliMachineSession& m)
+{
+    if (!m.jogRefusal().isEmpty() && !m.linkLost()) {
+        // Refused because a drive stopped answering: a communication fault, judged like one.
+        if (anyCommFault(m))
+            m.waitFor([&m] { return m.linkLost(); }, CliSession::kJogRampDownMs);
+        if (!m.linkLost())
+            return stopThenFail(m, Outcome::failure(ExitRefused, m.jogRefusal()));
+    }
+    if (m.linkLost()) {
+        m.stopAll(); // the machine told the others already; this waits for their answers
+        return m.linkLostOutcome();
+    }
+    if (!m.waitFor([&m] { return everyAxisAtRest(m); }, kRampDownMs)) {
+        const Outcome failed = stopThenFail(
+            m,
+            Outcome::failure(ExitTimeout,
+                             CliText::tr("jog did not ramp down within %1 ms").arg(kRampDownMs)));
+        return m.linkLost() ? m.linkLostOutcome() : failed;
+    }
+    return Outcome::success();
+}
+
+// The jog loop: renews the rates until forMs passed, a signal came, a controller refused or
+// a link was lost.
 Outcome runJog(CliMachineSession& m, const QMap<QString, double>& rates, qint64 forMs)
 {
     QElapsedTimer clock;
     clock.start();
-    while (clock.elapsed() < forMs && !m.interrupted() && !m.linkLost()) {
+    while (clock.elapsed() < forMs && !m.interrupted() && !m.linkLost() &&
+           m.jogRefusal().isEmpty()) {
         QString refusal;
         if (!m.machine().jog(rates, &refusal)) {
             m.machine().endJog();
@@ -127,66 +141,24 @@ Outcome runJog(CliMachineSession& m, const QMap<QString, double>& rates, qint64 
     m.machine().endJog();
     if (m.interrupted())
         return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    if (m.linkLost()) {
-        m.stopAll(); // the machine told the others already; this waits for their answers
-        return m.linkLostOutcome();
-    }
-    if (!m.waitFor([&m] { return everyJogRampedDown(m); }, kRampDownMs)) {
-        const Outcome stopped = m.stopAll();
-        return m.linkLost() ? m.linkLostOutcome()
-                            : Outcome::failure(ExitTimeout,
-                                               CliText::tr("the jog did not ramp down within %1 "
-                                                           "ms; %2")
-                                                   .arg(kRampDownMs)
-                                                   .arg(stopped.ok() ? CliText::tr("it was stopped")
-                                                                     : stopped.message));
-    }
-    return Outcome::success();
+    return rampDown(m);
 }
 } // namespace
-
-Outcome machineMove(CliMachineSession& m, const CliOptions& o)
-{
-    QMap<QString, double> units;
-    int timeoutMs = -1;
-    if (Outcome bad = refuseSingleControllerOptions(o, QStringLiteral("move")); !bad.ok())
-        return bad;
-    if (Outcome parsed = parseUnits(QStringLiteral("move"), o.args, m.description(), &units);
-        !parsed.ok())
-        return parsed;
-    if (!parseTimeout(o, &timeoutMs))
-        return Outcome::usage(
-            CliText::tr("move --timeout needs a positive number of milliseconds"));
-    if (Outcome connected = m.connectAll(); !connected.ok())
-        return connected;
-    QString refusal;
-    const quint64 id = m.machine().move(units, o.flag("abs"), &refusal);
-    if (id == 0)
-        return Outcome::failure(ExitRefused,
-                                CliText::tr("move refused, nothing was sent: %1").arg(refusal));
-    if (Outcome moved = waitMotion(m, &Machine::moveFinished, id, timeoutMs); !moved.ok())
-        return moved;
-    return printMachinePositions(m, o.json);
-}
 
 Outcome machineHome(CliMachineSession& m, const CliOptions& o)
 {
     int timeoutMs = -1;
-    if (Outcome bad = refuseSingleControllerOptions(o, QStringLiteral("home")); !bad.ok())
+    if (Outcome bad = refuseOptions(o, QStringLiteral("home"), {"simultaneous", "closed-loop"});
+        !bad.ok())
         return bad;
     QStringList axes;
-    for (const QString& arg : o.args) {
-        const QString name = arg.trimmed().toUpper();
-        if (!m.description().axis(name))
-            return Outcome::usage(
-                CliText::tr("home: the machine has no axis %1 (home takes axis names: home Z X; "
-                            "directions come from the machine file)")
-                    .arg(arg));
-        axes << name;
-    }
+    QMap<QString, int> directions;
+    if (Outcome parsed = parseHomeAxes(m.description(), o.args, &axes, &directions); !parsed.ok())
+        return parsed;
     if (!parseTimeout(o, &timeoutMs))
         return Outcome::usage(
             CliText::tr("home --timeout needs a positive number of milliseconds"));
+    m.setReferenceDirections(directions);
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
     QString refusal;
@@ -194,6 +166,8 @@ Outcome machineHome(CliMachineSession& m, const CliOptions& o)
     if (id == 0)
         return Outcome::failure(ExitRefused,
                                 CliText::tr("home refused, nothing was sent: %1").arg(refusal));
+    if (o.flag("no-wait"))
+        return leaveRunning(m, &Machine::referenceFinished, id);
     if (Outcome done = waitMotion(m, &Machine::referenceFinished, id, timeoutMs); !done.ok())
         return done;
     return printMachinePositions(m, o.json);
@@ -208,9 +182,11 @@ Outcome machineJog(CliMachineSession& m, const CliOptions& o)
         return Outcome::usage(
             CliText::tr("jog needs --for MS (a positive number of milliseconds)"));
     QMap<QString, double> rates;
-    if (Outcome parsed = parseUnits(QStringLiteral("jog"), o.args, m.description(), &rates);
+    if (Outcome parsed = parseUnits(QStringLiteral("jog"), o.args, m.description(), false, &rates);
         !parsed.ok())
         return parsed;
+    if (Outcome allowed = checkJogRates(m.description(), rates); !allowed.ok())
+        return allowed;
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
     if (Outcome jogged = runJog(m, rates, forMs); !jogged.ok())

@@ -4,6 +4,7 @@
 #include "../common/SignalPipe.h"
 #include "CliText.h"
 #include "machine/MachineFile.h"
+#include "protocols/Registry.h"
 #include <QFileInfo>
 
 namespace stepdeck::cli {
@@ -108,7 +109,39 @@ int runMachineCommand(const CliOptions& options, const machine::MachineDescripti
     }
     return finish(outcome);
 }
+// --model/--port without a file: a machine of that one controller, its axes under their
+// controller names in steps (MachineDescription::singleController).
+Outcome singleControllerMachine(const CliOptions& o, machine::MachineDescription* out)
+{
+    const ModelInfo* model = findModel(o.model);
+    if (!model)
+        return Outcome::usage(unknownModelText(o.model));
+    QMap<Axis, int> addresses = o.axisAddresses;
+    if (o.address)
+        addresses.insert(Axis::X, *o.address);
+    *out = machine::MachineDescription::singleController(*model, o.port, addresses);
+    if (model->capabilities.resetLine)
+        out->controllers.first().resetLine = o.resetLine;
+    return Outcome::success();
+}
 } // namespace
+
+bool runsOnTheMachine(const CliOptions& o)
+{
+    // The controller's own reference operations stay with the controller (as --controller ID
+    // on a machine file): EMIS' simultaneous run, a closed-loop drive's reference.
+    if (o.command == QLatin1String("home") && (o.flag("simultaneous") || o.flag("closed-loop")))
+        return false;
+    return machineCommand(o.command) != nullptr;
+}
+
+int runOneControllerMachine(const CliOptions& options)
+{
+    machine::MachineDescription d;
+    if (const Outcome built = singleControllerMachine(options, &d); !built.ok())
+        return finish(built);
+    return runMachineCommand(options, d, machineCommand(options.command));
+}
 
 int runWithMachine(const CliOptions& options)
 {
@@ -127,7 +160,8 @@ int runWithMachine(const CliOptions& options)
     // `status --controller ID`: that controller's own status (raw words, drive rows).
     const bool controllerStatus =
         options.command == QLatin1String("status") && !options.controller.isEmpty();
-    if (const MachineCommand run = machineCommand(options.command); run && !controllerStatus) {
+    if (const MachineCommand run = machineCommand(options.command);
+        run && !controllerStatus && runsOnTheMachine(options)) {
         if (!options.controller.isEmpty())
             return finish(Outcome::usage(
                 CliText::tr("%1 takes the machine's axes by name; --controller is for the "

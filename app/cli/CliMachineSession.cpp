@@ -17,6 +17,7 @@ CliMachineSession::CliMachineSession(const CliOptions& options,
                                      QObject* parent)
     : QObject(parent), m_options(options), m_description(description)
 {
+    m_machine.setBaseOptions(CliSession::baseControllerOptions(options));
     connect(&m_machine, &Machine::statusChanged, this, [this] { wake(); });
     connect(&m_machine, &Machine::moveFinished, this, [this] { wake(); });
     connect(&m_machine, &Machine::referenceFinished, this, [this] { wake(); });
@@ -63,8 +64,29 @@ void CliMachineSession::watchSessions()
                         m_lastFailure = r.error;
                     wake();
                 });
-        connect(s, &ControllerSession::linkStateChanged, this, [this] { wake(); });
+        connect(s, &ControllerSession::jogRefused, this, [this, id = c.id](const QString& reason) {
+            if (m_jogRefusal.isEmpty())
+                m_jogRefusal = m_description.controllers.size() == 1
+                                   ? reason
+                                   : CliText::tr("controller \"%1\": %2").arg(id, reason);
+            wake();
+        });
+        connect(s, &ControllerSession::linkStateChanged, this,
+                [this, id = c.id](LinkState state, const QString& reason) {
+                    if (m_connected && state != LinkState::Connected && !reason.isEmpty())
+                        m_lostReasons.insert(id, reason);
+                    wake();
+                });
     }
+}
+
+// A machine of one controller (--model/--port) names its port as a single controller
+// always did; on a machine of several the controller is named too.
+QString CliMachineSession::faultText(const MachineController& c, const QString& message) const
+{
+    if (m_description.controllers.size() != 1)
+        return CliText::tr("controller \"%1\" (%2): %3").arg(c.id, c.port, message);
+    return message.contains(c.port) ? message : CliText::tr("%1: %2").arg(c.port, message);
 }
 
 Outcome CliMachineSession::openAll()
@@ -91,20 +113,25 @@ Outcome CliMachineSession::openAll()
     for (const MachineController& c : m_description.controllers) {
         const CommandResult r = m_finished[c.id].take(opened.value(c.id));
         if (r.id != 0 && !r.ok())
-            return Outcome::failure(
-                exitCodeFor(r.error),
-                CliText::tr("controller \"%1\" (%2): %3").arg(c.id, c.port, r.message));
+            return Outcome::failure(exitCodeFor(r.error), faultText(c, r.message));
     }
     for (const MachineController& c : m_description.controllers) {
         if (m_machine.session(c.id)->linkState() != LinkState::Connected)
             return Outcome::failure(
                 ExitLinkDown,
-                CliText::tr("controller \"%1\" (%2): %3")
-                    .arg(c.id, c.port,
-                         CliText::tr("no connection within %1 ms (powered, cabled, right model?)")
-                             .arg(m_options.connectTimeoutMs)));
+                faultText(c, CliText::tr("no connection within %1 ms (powered, cabled, right "
+                                         "model?)")
+                                 .arg(m_options.connectTimeoutMs)));
     }
     return Outcome::success();
+}
+
+void CliMachineSession::setReferenceDirections(const QMap<QString, int>& directions)
+{
+    for (machine::MachineAxis& a : m_description.axes) {
+        if (directions.contains(a.name))
+            a.referenceDirection = directions.value(a.name);
+    }
 }
 
 Outcome CliMachineSession::connectAll()
@@ -160,7 +187,7 @@ CommandResult CliMachineSession::waitResult(const QString& controllerId, Request
         },
         timeoutMs);
     if (m_finished[controllerId].contains(id))
-        return m_finished[controllerId].take(id);
+        return verdict(controllerId, m_finished[controllerId].take(id));
     if (s->linkState() != LinkState::Connected)
         return CommandResult::failure(id, ErrorKind::LinkDown, CliText::tr("link lost"));
     if (m_interrupted)
@@ -168,6 +195,21 @@ CommandResult CliMachineSession::waitResult(const QString& controllerId, Request
     return CommandResult::failure(
         id, ErrorKind::Timeout,
         CliText::tr("no result from the controller within %1 ms").arg(timeoutMs));
+}
+
+// One fault, one exit code (as CliSession::call): a request that timed out while the
+// controller stopped answering altogether is the lost link the poller is about to declare.
+CommandResult CliMachineSession::verdict(const QString& controllerId, const CommandResult& r)
+{
+    const ErrorKind e = r.error;
+    if (!m_connected || m_interrupted ||
+        (e != ErrorKind::Timeout && e != ErrorKind::Cancelled && e != ErrorKind::Protocol))
+        return r;
+    waitFor([this] { return linkLost(); },
+            CliSession::linkVerdictMs(m_machine.session(controllerId)->spec().options));
+    if (!linkLost())
+        return r;
+    return CommandResult::failure(r.id, ErrorKind::LinkDown, linkLostOutcome().message);
 }
 
 Outcome CliMachineSession::waitAll(const QMap<QString, RequestId>& ids, int timeoutMs)
@@ -179,8 +221,11 @@ Outcome CliMachineSession::waitAll(const QMap<QString, RequestId>& ids, int time
         const int left = int(qMax<qint64>(0, timeoutMs - clock.elapsed()));
         const CommandResult r = waitResult(it.key(), it.value(), left);
         if (!r.ok() && first.ok())
-            first = Outcome::failure(exitCodeFor(r.error),
-                                     CliText::tr("controller \"%1\": %2").arg(it.key(), r.message));
+            first = Outcome::failure(
+                exitCodeFor(r.error),
+                m_description.controllers.size() == 1
+                    ? r.message
+                    : CliText::tr("controller \"%1\": %2").arg(it.key(), r.message));
     }
     if (!first.ok() && linkLost())
         return linkLostOutcome();
@@ -189,7 +234,10 @@ Outcome CliMachineSession::waitAll(const QMap<QString, RequestId>& ids, int time
 
 Outcome CliMachineSession::linkLostOutcome() const
 {
-    QString why = m_lostMessage;
+    // One controller: its link, as a single controller always said it.
+    QString why = m_description.controllers.size() == 1 && m_lostReasons.contains(m_lostController)
+                      ? CliText::tr("link lost: %1").arg(m_lostReasons.value(m_lostController))
+                      : m_lostMessage;
     const ControllerSession* s = m_machine.session(m_lostController);
     if (s && s->status().motionUnconfirmed)
         why = CliText::tr("%1; %2").arg(why, Controller::mayStillBeMovingText());
@@ -220,24 +268,16 @@ Outcome CliMachineSession::stopAll()
     // answer is awaited (a slow link never holds back another controller's stop).
     m_machine.endJog();
     QMap<QString, RequestId> ids = m_machine.stop();
-    QStringList cannot;
     for (auto it = ids.begin(); it != ids.end();) {
-        const ControllerSession* s = m_machine.session(it.key());
-        if (s->linkState() != LinkState::Connected || !s->capabilities().stopCommand) {
-            if (s->linkState() == LinkState::Connected)
-                cannot << it.key();
+        // A controller without a stop command answers with its own refusal, which says what
+        // to do instead (the emergency stop); one whose link is down has nothing to stop.
+        if (m_machine.session(it.key())->linkState() != LinkState::Connected)
             it = ids.erase(it);
-        } else {
+        else
             ++it;
-        }
     }
-    Outcome result = waitAll(ids, kStopWaitMs);
+    const Outcome result = waitAll(ids, kStopWaitMs);
     m_interrupted = wasInterrupted;
-    if (result.ok() && !cannot.isEmpty())
-        result = Outcome::failure(ExitUnsupported,
-                                  CliText::tr("controller \"%1\" has no stop command and cannot "
-                                              "be stopped")
-                                      .arg(cannot.join(QStringLiteral("\", \""))));
     return result;
 }
 

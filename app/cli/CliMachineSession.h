@@ -29,6 +29,9 @@ public:
     // most options.connectTimeoutMs), then reads every status once; with --setup-defaults
     // writes each model's schema defaults first. Failure names the controller (exit 6).
     Outcome connectAll();
+    // `home X=1`: reference directions from the command line instead of the file (before
+    // connectAll(), which creates the machine from the description).
+    void setReferenceDirections(const QMap<QString, int>& directions);
     bool isConnected() const { return m_connected; }
 
     // Waits until done() or timeout (ms < 0: no deadline); false on timeout or interrupt.
@@ -46,6 +49,10 @@ public:
     // The exit code for a failed move or reference run with `message`.
     Outcome motionFailure(const QString& message) const;
 
+    // A controller refused a jog rate after it was sent (its own rules: a limit switch, a
+    // drive that stopped answering); empty while none did.
+    const QString& jogRefusal() const { return m_jogRefusal; }
+
     void interrupt();
     bool interrupted() const { return m_interrupted; }
     // SIGINT/SIGTERM/SIGHUP and failures: every jog ramps down and every controller gets its
@@ -56,6 +63,8 @@ private:
     void wake();
     void watchSessions();
     Outcome openAll();
+    CommandResult verdict(const QString& controllerId, const CommandResult& r);
+    QString faultText(const machine::MachineController& c, const QString& message) const;
     Outcome writeSetupDefaults();
 
     CliOptions m_options;
@@ -67,6 +76,8 @@ private:
     bool m_interrupted = false;
     QString m_lostController;
     QString m_lostMessage;
+    QHash<QString, QString> m_lostReasons;
+    QString m_jogRefusal; // controller id -> why its link went down
     ErrorKind m_lastFailure = ErrorKind::None;
 };
 

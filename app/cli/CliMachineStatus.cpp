@@ -2,6 +2,7 @@
 // with: every machine axis in its unit, marked by how it is known (docs/cli.md, "Machines").
 #include "CliMachineRun.h"
 #include "CliText.h"
+#include "protocols/Registry.h"
 
 namespace stepdeck::cli {
 
@@ -91,6 +92,51 @@ QJsonArray controllersJson(CliMachineSession& m)
     return controllers;
 }
 
+// A machine of one controller (--model/--port, or a file with one): the controller's own
+// status object as a single controller always printed it ("model", "machine" flags, "axes"
+// keyed by name, inputs, drives), each axis extended by the machine's fields, and the
+// controller's link.
+QJsonObject oneControllerJson(CliMachineSession& m)
+{
+    const machine::MachineController& c = m.description().controllers.constFirst();
+    QJsonObject status = m.machine().session(c.id)->status().toJson(c.modelId);
+    const QJsonObject controllerAxes = status.value("axes").toObject();
+    QJsonObject axes;
+    for (const QJsonValue& value : axesJson(m)) {
+        const QJsonObject machineAxis = value.toObject();
+        QJsonObject axis = controllerAxes.value(machineAxis.value("axis").toString()).toObject();
+        for (auto it = machineAxis.begin(); it != machineAxis.end(); ++it)
+            axis.insert(it.key(), it.value());
+        axes.insert(machineAxis.value("name").toString(), axis);
+    }
+    status.insert("axes", axes);
+    status.insert("controllers", controllersJson(m));
+    return status;
+}
+
+void printAxisTable(CliMachineSession& m)
+{
+    for (const MachineAxis& a : m.description().axes) {
+        const MachineAxisStatus s = m.machine().axisStatus(a);
+        printLine(CliText::tr("  %1  %2 %3  (%4 steps on %5.%6)%7%8")
+                      .arg(a.name)
+                      .arg(valueText(a, s.position), 12)
+                      .arg(machine::unitKey(a.unit), -5)
+                      .arg(s.steps)
+                      .arg(a.controller, axisName(a.axis))
+                      .arg(markText(s.known))
+                      .arg(s.moving ? CliText::tr(" moving") : QString()));
+    }
+}
+
+// The controller's own lines (flags, temperature, drive rows, raw words) under the axis table.
+void printControllerDetail(CliMachineSession& m, const machine::MachineController& c)
+{
+    const ControllerSession* s = m.machine().session(c.id);
+    printLine(formatStatus(s->status(), *findModel(c.modelId), s->capabilities(), c.port,
+                           linkStateName(s->linkState())));
+}
+
 QString positionsText(CliMachineSession& m)
 {
     QStringList parts;
@@ -104,11 +150,18 @@ QString positionsText(CliMachineSession& m)
 
 Outcome printMachinePositions(CliMachineSession& m, bool json)
 {
-    if (json)
+    if (json && m.description().controllers.size() == 1)
+        printJson(oneControllerJson(m));
+    else if (json)
         printJson(QJsonObject{{"axes", axesJson(m)}});
     else
         printLine(positionsText(m));
     return Outcome::success();
+}
+
+QString machinePositionsLine(CliMachineSession& m)
+{
+    return positionsText(m);
 }
 
 Outcome machineStatus(CliMachineSession& m, const CliOptions& o)
@@ -119,10 +172,18 @@ Outcome machineStatus(CliMachineSession& m, const CliOptions& o)
         return connected;
     QString cause;
     const MachineState state = m.machine().state(&cause);
+    const QJsonValue causeJson = cause.isEmpty() ? QJsonValue() : QJsonValue(cause);
+    if (o.json && m.description().controllers.size() == 1) {
+        QJsonObject status = oneControllerJson(m);
+        status.insert("state", stateKey(state));
+        status.insert("stateCause", causeJson);
+        printJson(status);
+        return Outcome::success();
+    }
     if (o.json) {
         printJson(QJsonObject{{"machine", m.description().name},
                               {"state", stateKey(state)},
-                              {"stateCause", cause.isEmpty() ? QJsonValue() : QJsonValue(cause)},
+                              {"stateCause", causeJson},
                               {"controllers", controllersJson(m)},
                               {"axes", axesJson(m)}});
         return Outcome::success();
@@ -137,17 +198,9 @@ Outcome machineStatus(CliMachineSession& m, const CliOptions& o)
                       .arg(c.modelId, -10)
                       .arg(c.port, -16)
                       .arg(linkStateName(m.machine().session(c.id)->linkState())));
-    for (const MachineAxis& a : m.description().axes) {
-        const MachineAxisStatus s = m.machine().axisStatus(a);
-        printLine(CliText::tr("  %1  %2 %3  (%4 steps on %5.%6)%7%8")
-                      .arg(a.name)
-                      .arg(valueText(a, s.position), 12)
-                      .arg(machine::unitKey(a.unit), -5)
-                      .arg(s.steps)
-                      .arg(a.controller, axisName(a.axis))
-                      .arg(markText(s.known))
-                      .arg(s.moving ? CliText::tr(" moving") : QString()));
-    }
+    printAxisTable(m);
+    if (m.description().controllers.size() == 1)
+        printControllerDetail(m, m.description().controllers.constFirst());
     return Outcome::success();
 }
 

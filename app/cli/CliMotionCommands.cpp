@@ -5,7 +5,6 @@
 #include "model/ModelOperations.h"
 #include <QCoreApplication>
 #include <QElapsedTimer>
-#include <QtMath>
 #include <climits>
 #include <limits>
 
@@ -18,8 +17,6 @@ bool parseDuration(const QString& text, qint64* ms)
     return numbers::parseInteger(text, 1, std::numeric_limits<qint64>::max(), ms) ==
            NumberError::None;
 }
-
-constexpr int kJogRenewMs = 100; // well inside the adapter's jog lease (300 ms)
 
 Outcome connectAndRun(CliContext& c, const std::function<RequestId(ControllerSession&)>& start)
 {
@@ -114,7 +111,6 @@ Outcome positioningByArrival(CliContext& c, const StartRequest& start, bool noWa
 Outcome positioning(CliContext& c, const QStringList& args, const QString& command,
                     const StartMove& start, const CheckValues& check = {})
 {
-    const bool absolute = c.options.flag("abs"); // only move has it
     const bool noWait = c.options.flag("no-wait");
     const std::optional<QString> timeoutText = c.options.value("timeout");
     qint64 timeoutMs = -1;
@@ -130,15 +126,10 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
     }
     if (c.capabilities().reportsArrival) {
         return positioningByArrival(
-            c,
-            [&](ControllerSession& s) {
-                return absolute ? s.moveAbsolute(steps) : start(s, steps);
-            },
-            noWait, int(qMin<qint64>(timeoutMs, INT_MAX)));
+            c, [&](ControllerSession& s) { return start(s, steps); }, noWait,
+            int(qMin<qint64>(timeoutMs, INT_MAX)));
     }
-    Outcome result = connectAndRun(c, [&](ControllerSession& s) {
-        return absolute ? s.moveAbsolute(steps) : start(s, steps);
-    });
+    Outcome result = connectAndRun(c, [&](ControllerSession& s) { return start(s, steps); });
     if (!result.ok() || noWait)
         return result;
     result = c.session.waitUntilIdle(int(qMin<qint64>(timeoutMs, INT_MAX)));
@@ -152,36 +143,6 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
                                      "referenced"));
     }
     return result.ok() ? reportPositions(c) : result;
-}
-
-// Waits until the host-side ramp has reached zero on every axis and the device is at rest,
-// from the statuses the poller delivers (a status request of its own could time out by
-// chance while the poller is about to declare the link lost: one fault, one exit code).
-Outcome waitJogRampedDown(CliContext& c, int deadlineMs)
-{
-    QElapsedTimer clock;
-    clock.start();
-    for (;;) {
-        if (c.session.linkLost())
-            return c.session.linkLostOutcome();
-        bool commanding = false;
-        bool deviceMoving = false;
-        for (const AxisStatus& axis : c.session.status().axes) {
-            commanding = commanding || axis.commandedVelocity != 0.0;
-            deviceMoving = deviceMoving || axis.jogging || axis.moving;
-        }
-        if (!commanding && (!deviceMoving || clock.elapsed() > deadlineMs))
-            return Outcome::success(); // some boards keep their jog-mode bit at rate zero
-        if (clock.elapsed() > deadlineMs) {
-            // "stopped" only once the device reports standstill, as after any other failure.
-            return stopThenFail(
-                c, Outcome::failure(
-                       ExitFailure,
-                       CliText::tr("jog did not ramp down within %1 ms").arg(deadlineMs)));
-        }
-        if (!c.session.pause(CliSession::kIdlePollMs))
-            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    }
 }
 
 // The value of a spindle/power command, read and checked like the schema parameter of the
@@ -213,12 +174,6 @@ Outcome noArguments(CliContext& c, const QStringList& args, const QString& comma
 }
 } // namespace
 
-Outcome cmdMove(CliContext& c, QStringList args)
-{
-    return positioning(c, args, QStringLiteral("move"),
-                       [](ControllerSession& s, const AxisVector& v) { return s.moveRelative(v); });
-}
-
 Outcome cmdFeed(CliContext& c, QStringList args)
 {
     const bool noWait = c.options.flag("no-wait");
@@ -238,43 +193,31 @@ Outcome cmdFeed(CliContext& c, QStringList args)
         [](ControllerSession& s, const AxisVector& v) { return s.feed(v); }, oneAxisUnlessWaiting);
 }
 
+// The controller's own reference operations; a plain `home` runs on the machine
+// (runsOnTheMachine(), CliMachineMotion.cpp).
 Outcome cmdHome(CliContext& c, QStringList args)
 {
     if (c.options.flag("closed-loop")) // the closed-loop reference run (manual 8.1)
         return homeClosedLoop(c, args);
     // --simultaneous: every named axis at once (EMIS "$Hxy,a", manual 9.9).
-    const bool simultaneous = c.options.flag("simultaneous");
-    const auto directionsValid = [simultaneous](const AxisVector& directions) {
+    const auto directionsValid = [](const AxisVector& directions) {
         for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
-            if (simultaneous && it.value() == -1) {
+            if (it.value() != 0 && it.value() != 1) {
                 return Outcome::failure(
                     ExitInvalidValue,
                     CliText::tr("home --simultaneous: axis %1 takes 1 (reference) or "
                                 "0 (leave out)")
                         .arg(axisName(it.key())));
             }
-            if (it.value() < -1 || it.value() > 1) {
-                return Outcome::failure(
-                    ExitInvalidValue,
-                    CliText::tr("home: direction of axis %1 must be -1, 0 or 1, not %2")
-                        .arg(axisName(it.key()))
-                        .arg(it.value()));
-            }
         }
         return Outcome::success();
     };
-    const auto start = [simultaneous](ControllerSession& s, const AxisVector& v) {
-        if (simultaneous) {
-            QString axes;
-            for (auto it = v.cbegin(); it != v.cend(); ++it)
-                axes += it.value() != 0 ? axisName(it.key()) : QString();
-            return s.modelOperation(operation::kReference, {{operation::arg::kAxes, axes},
-                                                            {operation::arg::kSimultaneous, true}});
-        }
-        QMap<Axis, int> directions;
+    const auto start = [](ControllerSession& s, const AxisVector& v) {
+        QString axes;
         for (auto it = v.cbegin(); it != v.cend(); ++it)
-            directions.insert(it.key(), int(it.value()));
-        return s.reference(directions);
+            axes += it.value() != 0 ? axisName(it.key()) : QString();
+        return s.modelOperation(operation::kReference, {{operation::arg::kAxes, axes},
+                                                        {operation::arg::kSimultaneous, true}});
     };
     return positioning(c, args, QStringLiteral("home"), start, directionsValid);
 }
@@ -319,82 +262,6 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
         return result;
     result = c.session.waitUntilIdle();
     return result.ok() ? reportPositions(c) : stopThenFail(c, result);
-}
-
-Outcome cmdJog(CliContext& c, QStringList args)
-{
-    const std::optional<QString> forText = c.options.value("for");
-    qint64 forMs = 0;
-    if (!forText || !parseDuration(*forText, &forMs))
-        return Outcome::usage(
-            CliText::tr("jog needs --for MS (a positive number of milliseconds)"));
-    AxisVelocities rates;
-    if (const Outcome parsed = parseAxisDoubles(QStringLiteral("jog"), args, c.axes(), &rates);
-        !parsed.ok())
-        return parsed;
-    const double maxSpeed = c.capabilities().maxJogSpeed;
-    double fastest = 0;
-    for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
-        if (qAbs(it.value()) > maxSpeed) {
-            return Outcome::failure(
-                ExitInvalidValue,
-                CliText::tr("jog: %1=%2 steps/s is out of range (allowed: -%3..%3 "
-                            "steps/s)")
-                    .arg(axisName(it.key()))
-                    .arg(it.value())
-                    .arg(maxSpeed));
-        }
-        fastest = qMax(fastest, qAbs(it.value()));
-    }
-    // A fresh status first: the adapter decides on the first jog from the last words it read.
-    if (Outcome result = c.connect(); !result.ok() || !(result = c.session.refresh()).ok())
-        return result;
-
-    // The jog rate is a lease: renew it well inside the adapter's lease time, or the axes
-    // ramp down by themselves. endJog() then ramps them to zero. A lost link ends the loop at
-    // once with exit 6 (the adapter has sent its stop), whatever the jog refusal says.
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < forMs) {
-        if (c.session.linkLost())
-            return c.session.linkLostOutcome();
-        if (!c.session.jogRefusal().isEmpty())
-            break;
-        c.session.session().setJogVelocity(rates);
-        if (!c.session.pause(int(qMin<qint64>(kJogRenewMs, forMs - clock.elapsed()))))
-            return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
-    }
-    c.session.session().endJog();
-    const double acceleration = c.capabilities().defaultJogAcceleration;
-    const int rampMs = acceleration > 0 ? int(qCeil(1000.0 * fastest / acceleration)) : 0;
-    const Outcome rampedDown = waitJogRampedDown(c, rampMs + 3000);
-    if (!c.session.jogRefusal().isEmpty() && c.session.status().commFault) {
-        // Refused because a drive stopped answering: a communication fault, judged like one.
-        c.session.waitFor([&c] { return c.session.linkLost(); }, c.session.linkVerdictMs());
-        if (!c.session.linkLost()) {
-            return stopThenFail(c, Outcome::failure(ExitLinkDown, c.session.jogRefusal()));
-        }
-    }
-    if (c.session.linkLost())
-        return c.session.linkLostOutcome();
-    if (!c.session.jogRefusal().isEmpty())
-        return stopThenFail(c, Outcome::failure(ExitRefused, c.session.jogRefusal()));
-    return rampedDown.ok() ? reportPositions(c) : rampedDown;
-}
-
-Outcome cmdStop(CliContext& c, QStringList args)
-{
-    return noArguments(c, args, QStringLiteral("stop"),
-                       [](ControllerSession& s) { return s.stop(); });
-}
-
-Outcome cmdPanic(CliContext& c, QStringList args)
-{
-    const Outcome result = noArguments(c, args, QStringLiteral("panic"),
-                                       [](ControllerSession& s) { return s.panic(); });
-    if (result.ok() && !c.json())
-        printLine(CliText::tr("emergency stop sent; positions are unknown until referenced"));
-    return result;
 }
 
 Outcome cmdReset(CliContext& c, QStringList args)

@@ -8,6 +8,8 @@ namespace stepdeck::cli {
 
 int runSingleController(const CliOptions& options)
 {
+    if (runsOnTheMachine(options))
+        return runOneControllerMachine(options);
     CliSession session(options);
     const app::SignalPipe signalPipe([&session](int) { session.interrupt(); });
 

@@ -30,10 +30,6 @@ CliSession::CliSession(const CliOptions& options, QObject* parent)
         m_lastError = message;
         wake();
     });
-    connect(&m_session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
-        m_jogRefusal = reason;
-        wake();
-    });
 }
 
 CliSession::~CliSession() = default;
@@ -54,20 +50,27 @@ bool CliSession::pause(int ms)
     return !m_interrupted;
 }
 
+ControllerOptions CliSession::baseControllerOptions(const CliOptions& options)
+{
+    ControllerOptions base;
+    base.arrivalTimeoutMs = options.arrivalTimeoutMs;
+    // The core's messages name this program's commands (the GUI names its buttons).
+    base.actionNames.insert(operation::kResetPositionError,
+                            tr("`stepdeck-cli reset-position-error AXIS`"));
+    return base;
+}
+
 Outcome CliSession::create()
 {
     if (m_session.isCreated())
         return Outcome::success();
     ConnectionSpec spec;
     spec.port = m_options.port;
+    spec.options = baseControllerOptions(m_options);
     spec.options.axisAddresses = m_options.axisAddresses;
     spec.options.resetLine = m_options.resetLine;
-    spec.options.arrivalTimeoutMs = m_options.arrivalTimeoutMs;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);
-    // The core's messages name this program's commands (the GUI names its buttons).
-    spec.options.actionNames.insert(operation::kResetPositionError,
-                                    tr("`stepdeck-cli reset-position-error AXIS`"));
     QString error;
     const ModelInfo* model = findModel(m_options.model);
     if (!model)
@@ -121,7 +124,11 @@ int CliSession::linkVerdictMs() const
 {
     // The poller declares the link lost after its miss limit of unanswered polls, each up to a
     // command timeout apart; then the adapter's safety stop runs (bounded) first.
-    const ControllerOptions o = m_session.spec().options;
+    return linkVerdictMs(m_session.spec().options);
+}
+
+int CliSession::linkVerdictMs(const ControllerOptions& o)
+{
     return o.missedPollsForLinkLoss * (o.commandTimeoutMs + o.pollIntervalMs) + 1500;
 }
 

@@ -24,6 +24,10 @@ public:
     explicit CliSession(const CliOptions& options, QObject* parent = nullptr);
     ~CliSession() override;
 
+    // What every controller of this invocation starts from (CliSession and, for each
+    // controller of a machine, CliMachineSession): --arrival-timeout, the CLI's action names.
+    static ControllerOptions baseControllerOptions(const CliOptions& options);
+
     // Creates the stack (unknown model: usage error) without touching the port; once.
     Outcome create();
     // create(), then opens the link and waits until it is Connected, at most
@@ -59,8 +63,6 @@ public:
     // axis map (--address 2: only X), unlike ModelInfo::capabilities.
     Capabilities capabilities() const { return m_session.capabilities(); }
     const MachineStatus& status() const { return m_session.status(); }
-    QString linkStateText() const { return linkStateName(m_session.linkState()); }
-    QString jogRefusal() const { return m_jogRefusal; }
 
     // SIGINT/SIGTERM/SIGHUP: ends every wait; stopMotion() then ramps jogs down and stops.
     void interrupt();
@@ -73,6 +75,7 @@ public:
     // How long a failed request waits for the link verdict: a controller that stopped
     // answering is a lost link (exit 6) whatever the request was, not a timeout by chance.
     int linkVerdictMs() const;
+    static int linkVerdictMs(const ControllerOptions& options);
 
 private:
     void wake();
@@ -85,7 +88,6 @@ private:
     bool m_lost = false;
     QString m_lostReason;
     QString m_lastError;
-    QString m_jogRefusal;
     bool m_interrupted = false;
 };
 

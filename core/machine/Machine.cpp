@@ -25,10 +25,11 @@ SoftLimits stepLimitsOf(const MachineDescription& d, const QString& controllerId
     return limits;
 }
 
-ConnectionSpec specOf(const MachineController& c)
+ConnectionSpec specOf(const MachineController& c, const ControllerOptions& base)
 {
     ConnectionSpec spec;
     spec.port = c.port;
+    spec.options = base;
     spec.options.axisAddresses = c.busAddresses;
     if (c.resetLine)
         spec.options.resetLine = *c.resetLine;
@@ -59,7 +60,7 @@ bool Machine::create(const MachineDescription& description, QString* error)
     for (const MachineController& c : m_description.controllers) {
         auto session = std::make_unique<ControllerSession>();
         QString why;
-        if (!session->create(*findModel(c.modelId), specOf(c), &why)) {
+        if (!session->create(*findModel(c.modelId), specOf(c, m_baseOptions), &why)) {
             if (error)
                 *error = tr("controller \"%1\": %2").arg(c.id, why);
             destroy();

@@ -43,6 +43,10 @@ public:
     explicit Machine(QObject* parent = nullptr);
     ~Machine() override;
 
+    // What every controller's options start from before its own addresses and reset line
+    // (the front end's action names, the arrival timeout); takes effect at create().
+    void setBaseOptions(const ControllerOptions& options) { m_baseOptions = options; }
+
     // Validates the description and creates a session per controller (links not opened yet).
     bool create(const MachineDescription& description, QString* error);
     void destroy(); // every session stops its controller and closes (ControllerSession)
@@ -117,6 +121,9 @@ private:
         RequestId refresh = 0;  // the status read after the request finished
         bool accepted = false;  // the move request finished well
         bool refreshed = false; // a status newer than the acceptance arrived
+        // Models that report arrival: the controller axes that stopped at their end switch
+        // instead (the request's "endSwitch" value).
+        QStringList endSwitch;
     };
     struct PendingMove
     {
@@ -146,6 +153,7 @@ private:
     QStringList shortOfTarget(const Part& part) const;
 
     MachineDescription m_description;
+    ControllerOptions m_baseOptions;
     std::vector<std::unique_ptr<ControllerSession>> m_sessions; // description's order
     QList<PendingMove> m_moves;
     QSet<ControllerSession*> m_jogSessions; // jogged by the input since its last endJog()

@@ -89,13 +89,17 @@ QString Machine::checkAxisTarget(const MachineAxis& axis, double value, bool abs
     const ControllerSession* s = session(axis.controller);
     const AxisStatus a = s->status().axes.value(axis.axis);
     const bool referenced = a.positionKnown && !a.positionEstimated;
-    if (absolute && !referenced)
+    // Controllers that report arrival (laser motor axes) take targets in the device's own
+    // absolute coordinates: their adapter judges an absolute target, not the host's count.
+    const bool deviceAbsolute = s->capabilities().reportsArrival;
+    if (absolute && !referenced && !deviceAbsolute)
         return tr("%1 is not referenced: its position is unknown, so an absolute move could go "
                   "anywhere")
             .arg(axis.name);
     const double here = axis.toUnits(a.position);
     const double to = absolute ? value : here + value;
-    if (axis.hasSoftLimits() && referenced && (to < *axis.softMinimum || to > *axis.softMaximum))
+    if (axis.hasSoftLimits() && (referenced || absolute) &&
+        (to < *axis.softMinimum || to > *axis.softMaximum))
         return tr("%1 %2 %3 is outside the soft limits %4..%5")
             .arg(axis.name)
             .arg(to)
@@ -138,6 +142,7 @@ bool Machine::onPartResult(Part& part, const CommandResult& result)
         return false;
     if (result.id == part.request) {
         part.accepted = true;
+        part.endSwitch = result.value.toMap().value(QStringLiteral("endSwitch")).toStringList();
         if (part.session->capabilities().reportsArrival)
             part.refreshed = true; // the request itself ended with the axes' arrival
         else
@@ -186,7 +191,9 @@ QStringList Machine::shortOfTarget(const Part& part) const
         const AxisStatus a = status.axes.value(axis);
         const QString name = machineAxisName(part.session, axis);
         const MachineAxis* machineAxis = m_description.axis(name);
-        if (a.limitSwitch) {
+        if (part.endSwitch.contains(axisName(axis))) {
+            out << tr("%1 stopped at its end switch").arg(name);
+        } else if (a.limitSwitch) {
             out << tr("%1 is on its limit switch").arg(name);
         } else if (part.expected.contains(axis) && a.position != part.expected.value(axis) &&
                    machineAxis) {

@@ -51,3 +51,7 @@ target_compile_definitions(tst_cli_machine PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_
 stepdeck_add_test(tst_cli_machine_run SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_machine_run.cpp
                   LABELS integration TIMEOUT 600)
 add_dependencies(tst_cli_machine_run stepdeck-cli)
+# stepdeck-cli --model/--port without a file: a machine of that one controller (issue 19).
+stepdeck_add_test(tst_cli_single_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_single_machine.cpp
+                  LABELS integration)
+add_dependencies(tst_cli_single_machine stepdeck-cli)
