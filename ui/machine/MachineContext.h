@@ -88,7 +88,8 @@ public:
     // if all of it is valid, ends the single-controller link and creates the machine's
     // sessions (links not opened: connectMachine()). False with *error naming the field.
     bool openMachine(const QString& path, QString* error);
-    bool openMachine(const machine::MachineDescription& description, QString* error);
+    bool openMachine(const machine::MachineDescription& description, QString* error,
+                     const QString& path = QString());
     void closeMachine(); // every controller stops and closes; back to a single controller
     machine::Machine* machine() const { return m_machine.get(); }
     bool hasMachine() const { return m_machine != nullptr; }

@@ -21,3 +21,6 @@ stepdeck_add_test(tst_machinewindow SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machin
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                   LABELS ui LIBS stepdeck_ui)
+# The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
+stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
+                  LABELS unit LIBS stepdeck_ui)

@@ -25,6 +25,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QToolButton>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -51,11 +52,16 @@ private Q_SLOTS:
     void goTo_unreferencedAxis_refusedNothingSent();
     void goTo_referencedX_deviceAtTheNearestStep();
     void referenceAll_machine_everyControllerInTheFilesOrder();
+    void zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOffsetPlusTarget();
+    void zero_unknownPosition_refusedWithReasonNoOffset();
+    void zero_reopenMachine_offsetsRemembered();
 
 private:
     QString writeFile(const QByteArray& json);
     QByteArray machineJson() const;
     bool openAndConnect();
+    bool referenceTable();
+    QToolButton* zeroButton(const QString& axis) const;
     void writeElabSetup();
     ui::MainWindow* window() const { return m_f->window.get(); }
     machine::Machine* machine() const { return window()->context()->machine(); }
@@ -465,6 +471,106 @@ void TestMachineWindow::referenceAll_machine_everyControllerInTheFilesOrder()
     for (const machine::MachineAxis& a : machine()->description().axes)
         QCOMPARE(machine()->axisStatus(a).known, machine::PositionKnowledge::Referenced);
     QVERIFY(all->isEnabled()); // the run is over
+}
+
+bool TestMachineWindow::referenceTable()
+{
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    return QTest::qWaitFor(
+        [table] {
+            return table->status().axes.value(Axis::X).referenced && !table->status().anyMoving();
+        },
+        20000);
+}
+
+QToolButton* TestMachineWindow::zeroButton(const QString& axis) const
+{
+    return window()->positionPanel()->machineDro()->findChild<QToolButton*>(
+        QStringLiteral("machineZero") + axis);
+}
+
+// Zero X at a known position: the digits read 0.000 in work coordinates, the line below keeps
+// the machine position, and a go-to in work coordinates reaches the board at offset + target.
+void TestMachineWindow::zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOffsetPlusTarget()
+{
+    QVERIFY(openAndConnect());
+    QVERIFY(referenceTable());
+    const qint64 origin = m_elab->position();
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to:"));
+    goTo->targetBox()->setValue(2.5);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(1000));
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("2.500"),
+                              10000);
+    QToolButton* zero = zeroButton(QStringLiteral("X"));
+    QVERIFY(zero && zero->isVisibleTo(window()));
+    zero->click();
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("0.000"));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm work"));
+    QCOMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("REFERENCED"));
+    QVERIFY2(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("machine 2.500 mm")),
+             qPrintable(dro->detailText(QStringLiteral("X"))));
+    QVERIFY(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("1000 steps")));
+    QCOMPARE(dro->displayedValue(QStringLiteral("Y")), QStringLiteral("0.000")); // untouched
+    QCOMPARE(dro->unitText(QStringLiteral("Y")), QStringLiteral("mm"));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
+    // Go to (work) X = 1: machine 3.5 mm, 1400 steps from the origin at the board.
+    goTo->targetBox()->setValue(1.0);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(1400));
+    QVERIFY(m_elab->still());
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("1.000"),
+                              10000);
+    // Clear: machine coordinates again, for the read-out and the go-to.
+    dro->clearOffsets();
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("3.500"));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to:"));
+}
+
+// Not referenced since the connect: a work origin there would say nothing about the machine.
+void TestMachineWindow::zero_unknownPosition_refusedWithReasonNoOffset()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("UNKNOWN"));
+    zeroButton(QStringLiteral("X"))->click();
+    QVERIFY2(dro->messageText().contains(QStringLiteral("position is unknown")),
+             qPrintable(dro->messageText()));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    QCOMPARE(window()->positionPanel()->machineGoTo()->labelText(), QStringLiteral("Go to:"));
+}
+
+// The offsets belong to the machine file: closing and opening it again brings them back.
+void TestMachineWindow::zero_reopenMachine_offsetsRemembered()
+{
+    QVERIFY(openAndConnect());
+    QVERIFY(referenceTable());
+    QSignalSpy finished(machine(), &machine::Machine::moveFinished);
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("Y"), 1.25}}, true, &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(QStringLiteral("Y")), QStringLiteral("REFERENCED"),
+                              10000);
+    QVERIFY(dro->zeroAxis(QStringLiteral("Y")));
+    QCOMPARE(dro->displayedValue(QStringLiteral("Y")), QStringLiteral("0.000"));
+    window()->closeMachine();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(window()->openMachine(m_dir->filePath(QStringLiteral("test.machine.json"))));
+    QCOMPARE(dro->unitText(QStringLiteral("Y")), QStringLiteral("mm work"));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    // Not connected: the last value known, in work coordinates, marked as such.
+    QCOMPARE(dro->stateText(QStringLiteral("Y")), QStringLiteral("NO LINK"));
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("Y")));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
 }
 
 // The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
