@@ -126,8 +126,10 @@ Q_SIGNALS:
     void softLimitsChanged();
 
 public Q_SLOTS:
-    void stop();
-    void panic();
+    // Each controller's request (with a machine: Machine::stop/panic; else the one session's,
+    // under an empty id), for callers that follow them to the acknowledgement.
+    QMap<QString, RequestId> stop();
+    QMap<QString, RequestId> panic();
     void reset(); // the controller's reset: its values are unknown afterwards
 
 private:

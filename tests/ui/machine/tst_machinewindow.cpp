@@ -44,6 +44,8 @@ private Q_SLOTS:
     void closeMachine_singleControllerBarBackAndConnectable();
     void stop_duringMoveOnBothControllers_bothDevicesStandStill();
     void stop_controllerWithoutStopCommand_messageNamesIt();
+    void stop_duringTwoControllerJog_bothStillThenConfirmedMessage();
+    void stop_controllerSilent_messageNamesItNotConfirmed();
     void jog_otherControllerLinkLost_heldJogDoesNotResume();
     void banner_tableReferencedRotaryNot_machineNotReady();
     void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
@@ -245,8 +247,9 @@ void TestMachineWindow::stop_duringMoveOnBothControllers_bothDevicesStandStill()
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
     QVERIFY(m_elab->position() < 80000);
     QVERIFY(m_nanotec->position() < 3000); // stopped, not at its limit switch
-    QVERIFY2(window()->lastError().contains(QStringLiteral("table, rotary")),
-             qPrintable(window()->lastError()));
+    QTRY_COMPARE_WITH_TIMEOUT(
+        window()->lastError(),
+        QStringLiteral("Stopped: every controller confirmed standstill (table, rotary)."), 10000);
 }
 
 void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
@@ -271,8 +274,76 @@ void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
     }
     window()->safetyBar()->stopButton()->click();
     const QString text = window()->lastError();
-    QVERIFY2(text.contains(QStringLiteral("Stop sent to table.")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Stop sent to table:")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
+    // The table confirms; the marker is still named as not stopped.
+    QTRY_VERIFY2_WITH_TIMEOUT(window()->lastError().startsWith(
+                                  QStringLiteral("Stopped: table confirmed standstill.")),
+                              qPrintable(window()->lastError()), 10000);
+    QVERIFY(window()->lastError().contains(QStringLiteral("marker cannot be stopped")));
+}
+
+// STOP during a jog of both controllers (one input, Machine::jog): the message claims the stop
+// only once both devices report standstill -- and when it does, both simulators stand still.
+void TestMachineWindow::stop_duringTwoControllerJog_bothStillThenConfirmedMessage()
+{
+    QVERIFY(openAndConnect());
+    QString refusal;
+    const QMap<QString, double> rates{{QStringLiteral("X"), 5.0}, {QStringLiteral("A"), 10.0}};
+    QVERIFY2(machine()->jog(rates, &refusal), qPrintable(refusal));
+    QTimer renew; // the held input renews the controllers' jog leases
+    connect(&renew, &QTimer::timeout, this, [this, &rates] {
+        QString why;
+        machine()->jog(rates, &why);
+    });
+    renew.start(50);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::X) && m_nanotec->moving(Axis::X), 10000);
+    renew.stop(); // the input is released with the STOP, as the window's STOP does
+    QStringList shown;
+    connect(window()->messages(), &ui::StatusMessages::changed, this, [this, &shown] {
+        const QString text = window()->lastError();
+        if (text.startsWith(QStringLiteral("Stopped")))
+            shown << QStringLiteral("%1|%2").arg(text).arg(m_elab->still() && m_nanotec->still());
+    });
+    window()->safetyBar()->stopButton()->click();
+    QVERIFY2(window()->lastError().startsWith(QStringLiteral("Stop sent to table, rotary:")),
+             qPrintable(window()->lastError()));
+    QTRY_COMPARE_WITH_TIMEOUT(
+        window()->lastError(),
+        QStringLiteral("Stopped: every controller confirmed standstill (table, rotary)."), 10000);
+    QVERIFY(m_elab->receivedStop() && m_nanotec->receivedStop());
+    QVERIFY(m_elab->still() && m_nanotec->still());
+    // When the words first appeared, both devices already stood still.
+    QVERIFY(!shown.isEmpty());
+    QVERIFY2(shown.first().endsWith(QStringLiteral("|1")), qPrintable(shown.first()));
+}
+
+// A controller that does not answer its stop (the drive went silent): the message does not
+// claim the stop, it names the controller and why.
+void TestMachineWindow::stop_controllerSilent_messageNamesItNotConfirmed()
+{
+    QVERIFY(openAndConnect());
+    m_nanotec->probe([this] {
+        SimulatorFaults faults;
+        faults.silent = true;
+        m_nanotec->sim()->setFaults(faults);
+        return true;
+    });
+    window()->safetyBar()->stopButton()->click();
+    QVERIFY2(window()->lastError().startsWith(QStringLiteral("Stop sent to table, rotary:")),
+             qPrintable(window()->lastError()));
+    auto named = [this] {
+        const auto& log = window()->messages()->log();
+        return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
+            return entry.text.startsWith(QStringLiteral("STOP not confirmed by \"rotary\": "));
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(named(), 15000);
+    // Never the claim that every controller stopped.
+    const auto& log = window()->messages()->log();
+    QVERIFY(std::none_of(log.cbegin(), log.cend(), [](const auto& entry) {
+        return entry.text.startsWith(QStringLiteral("Stopped"));
+    }));
 }
 
 void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
