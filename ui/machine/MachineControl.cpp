@@ -12,8 +12,7 @@ const QString kListSeparator = QStringLiteral(", ");
 } // namespace
 
 MachineControl::MachineControl(MachineContext* context, StatusMessages* messages, QObject* parent)
-    : QObject(parent), m_context(context), m_messages(messages),
-      m_watch(new MachineStopWatch(this))
+    : QObject(parent), m_context(context), m_messages(messages), m_watch(new MachineStopWatch(this))
 {
     QObject::connect(m_watch, &MachineStopWatch::confirmed, this, &MachineControl::onConfirmed);
     QObject::connect(m_watch, &MachineStopWatch::notConfirmed, this,
@@ -78,10 +77,9 @@ void MachineControl::stop()
         return;
     }
     // Sent, not confirmed: "stopped" follows once every controller reported standstill.
-    QString text = stoppable.isEmpty()
-                       ? QString()
-                       : tr("Stop sent to %1: waiting for standstill\u2026")
-                             .arg(stoppable.join(kListSeparator));
+    QString text = stoppable.isEmpty() ? QString()
+                                       : tr("Stop sent to %1: waiting for standstill\u2026")
+                                             .arg(stoppable.join(kListSeparator));
     if (!unstoppable.isEmpty())
         text = (text.isEmpty() ? QString() : text + QLatin1Char(' ')) + notStoppedText(unstoppable);
     m_messages->show(StatusMessages::Owner::General, text,

@@ -12,10 +12,9 @@ MachineStopWatch::MachineStopWatch(QObject* parent) : QObject(parent)
     connect(&m_deadline, &QTimer::timeout, this, [this] {
         for (auto it = m_watched.cbegin(); it != m_watched.cend(); ++it) {
             if (!it->stopped) {
-                fail(it.key(), it->answered ? tr("no standstill reported within %1 s")
-                                                  .arg(kConfirmMs / 1000)
-                                            : tr("no answer to the stop within %1 s")
-                                                  .arg(kConfirmMs / 1000));
+                fail(it.key(),
+                     it->answered ? tr("no standstill reported within %1 s").arg(kConfirmMs / 1000)
+                                  : tr("no answer to the stop within %1 s").arg(kConfirmMs / 1000));
                 return;
             }
         }
@@ -39,8 +38,8 @@ void MachineStopWatch::watch(const machine::Machine* machine,
         m_connections << connect(session, &ControllerSession::linkStateChanged, this,
                                  [this, id](LinkState state, const QString& reason) {
                                      if (state != LinkState::Connected)
-                                         fail(id, reason.isEmpty() ? tr("its link was lost")
-                                                                   : reason);
+                                         fail(id,
+                                              reason.isEmpty() ? tr("its link was lost") : reason);
                                  });
     }
     if (!m_watched.isEmpty())

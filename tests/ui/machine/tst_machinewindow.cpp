@@ -277,9 +277,9 @@ void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
     QVERIFY2(text.contains(QStringLiteral("Stop sent to table:")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
     // The table confirms; the marker is still named as not stopped.
-    QTRY_VERIFY2_WITH_TIMEOUT(window()->lastError().startsWith(
-                                  QStringLiteral("Stopped: table confirmed standstill.")),
-                              qPrintable(window()->lastError()), 10000);
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        window()->lastError().startsWith(QStringLiteral("Stopped: table confirmed standstill.")),
+        qPrintable(window()->lastError()), 10000);
     QVERIFY(window()->lastError().contains(QStringLiteral("marker cannot be stopped")));
 }
 
