@@ -146,24 +146,22 @@ void MachineContext::disconnectFromController()
         m_session->close();
 }
 
-void MachineContext::stop()
+QMap<QString, RequestId> MachineContext::stop()
 {
     if (m_machine)
-        m_machine->stop(); // every controller at once
-    else
-        m_session->stop();
+        return m_machine->stop(); // every controller at once
+    return {{QString(), m_session->stop()}};
 }
 
-void MachineContext::panic()
+QMap<QString, RequestId> MachineContext::panic()
 {
-    if (m_machine)
-        m_machine->panic();
-    else
-        m_session->panic();
+    const QMap<QString, RequestId> requests =
+        m_machine ? m_machine->panic() : QMap<QString, RequestId>{{QString(), m_session->panic()}};
     // Only a panic the model can send loses positions; EMIS and laser axes refuse it (the
     // refusal says why), and their positions stay what they were.
     if (capabilities().panic)
         Q_EMIT panicTriggered();
+    return requests;
 }
 
 void MachineContext::reset()

@@ -88,7 +88,8 @@ public:
     // if all of it is valid, ends the single-controller link and creates the machine's
     // sessions (links not opened: connectMachine()). False with *error naming the field.
     bool openMachine(const QString& path, QString* error);
-    bool openMachine(const machine::MachineDescription& description, QString* error);
+    bool openMachine(const machine::MachineDescription& description, QString* error,
+                     const QString& path = QString());
     void closeMachine(); // every controller stops and closes; back to a single controller
     machine::Machine* machine() const { return m_machine.get(); }
     bool hasMachine() const { return m_machine != nullptr; }
@@ -120,8 +121,10 @@ Q_SIGNALS:
     void softLimitsChanged();
 
 public Q_SLOTS:
-    void stop();
-    void panic();
+    // Each controller's request (with a machine: Machine::stop/panic; else the one session's,
+    // under an empty id), for callers that follow them to the acknowledgement.
+    QMap<QString, RequestId> stop();
+    QMap<QString, RequestId> panic();
     void reset(); // the controller's reset: its values are unknown afterwards
 
 private:

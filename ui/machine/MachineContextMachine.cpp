@@ -17,13 +17,11 @@ bool MachineContext::openMachine(const QString& path, QString* error)
             *error = tr("Machine file %1: %2").arg(path, invalid.text());
         return false;
     }
-    if (!openMachine(*description, error))
-        return false;
-    m_machinePath = path;
-    return true;
+    return openMachine(*description, error, path);
 }
 
-bool MachineContext::openMachine(const machine::MachineDescription& description, QString* error)
+bool MachineContext::openMachine(const machine::MachineDescription& description, QString* error,
+                                 const QString& path)
 {
     // Everything is checked (and every session built) before the open link is touched: an
     // invalid machine leaves what runs now as it is.
@@ -41,7 +39,7 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
     if (m_session->isCreated())
         m_session->destroy(); // the single controller's stop, flushed, then its port closed
     m_machine = std::move(created);
-    m_machinePath.clear();
+    m_machinePath = path; // before machineChanged: its listeners read it (work offsets)
     connect(m_machine.get(), &machine::Machine::controllerFailed, this,
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,

@@ -1,16 +1,22 @@
 #pragma once
+#include "model/CommandResult.h"
+#include <QMap>
 #include <QObject>
 #include <QStringList>
 
 namespace stepdeck::ui {
 
 class MachineContext;
+class MachineStopWatch;
 class StatusMessages;
 
 // What the main window does with a machine of several controllers (issue 19), kept out of
 // MainWindow: opening a machine file (an invalid one is reported naming the field, nothing
 // is opened), STOP and PANIC to every controller at once with a message that names the
 // controllers that cannot be stopped, the failure of one controller, and the window title.
+// After STOP or PANIC the message first says it was sent, then -- only once every controller
+// acknowledged its request and reported standstill (MachineStopWatch) -- that the machine
+// stopped, or names the controller that did not confirm and why.
 class MachineControl : public QObject
 {
     Q_OBJECT
@@ -32,9 +38,19 @@ public:
 
 private:
     QString notStoppedText(const QStringList& unstoppable) const;
+    enum class Kind { Stop, Panic };
+    void follow(Kind kind, const QMap<QString, RequestId>& requests, const QStringList& stoppable,
+                const QStringList& unstoppable);
+    void onConfirmed();
+    void onNotConfirmed(const QString& controllerId, const QString& reason);
 
     MachineContext* m_context;
     StatusMessages* m_messages;
+    MachineStopWatch* m_watch;
+    // The watch under way: what was stopped, and what could not be (for the final text).
+    Kind m_kind = Kind::Stop;
+    QStringList m_stoppable;
+    QStringList m_unstoppable;
 };
 
 } // namespace stepdeck::ui

@@ -3,10 +3,13 @@
 #include "common/StyleSheet.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineWorkOffsets.h"
 #include "position/DroValueLabel.h"
 #include <QCoreApplication>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QToolButton>
 
 namespace stepdeck::ui {
 
@@ -36,11 +39,26 @@ QString format(const machine::MachineAxis& axis, double value)
 }
 } // namespace
 
-MachineDro::MachineDro(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_grid(new QGridLayout(this))
+MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
+    : QWidget(parent), m_context(context), m_offsets(offsets), m_grid(new QGridLayout),
+      m_clear(new QToolButton(this)), m_message(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("machineDro"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
     m_grid->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(m_grid);
+    // Clear and the zero's message share one line; the message elides (one line reserved).
+    auto* bottom = new QHBoxLayout;
+    m_clear->setText(tr("Clear work offsets"));
+    m_clear->setToolTip(tr("Show machine positions again (work origin = machine origin)"));
+    m_clear->setFocusPolicy(Qt::NoFocus);
+    m_message->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    bottom->addWidget(m_clear);
+    bottom->addWidget(m_message, 1);
+    layout->addLayout(bottom);
+    connect(m_clear, &QToolButton::clicked, this, &MachineDro::clearOffsets);
+    connect(offsets, &MachineWorkOffsets::changed, this, &MachineDro::refresh);
     connect(context, &MachineContext::machineChanged, this, &MachineDro::rebuild);
     connect(context, &MachineContext::machineStatusChanged, this, &MachineDro::refresh);
     rebuild();
@@ -54,11 +72,20 @@ QStringList MachineDro::stateWords()
 void MachineDro::rebuild()
 {
     while (QLayoutItem* item = m_grid->takeAt(0)) {
+        if (QLayout* inner = item->layout()) { // a row's detail line
+            while (QLayoutItem* sub = inner->takeAt(0)) {
+                delete sub->widget();
+                delete sub;
+            }
+        }
         delete item->widget();
         delete item;
     }
     m_rows.clear();
+    m_message->clear();
     const machine::Machine* m = m_context->machine();
+    // The work offsets of this machine file (none without a machine).
+    m_offsets->load(m ? m_context->machinePath() : QString());
     if (!m)
         return;
     QFont big(QStringLiteral("monospace"));
@@ -91,7 +118,18 @@ void MachineDro::rebuild()
         m_grid->addWidget(name, 2 * r, 0, 2, 1);
         m_grid->addWidget(row.value, 2 * r, 1);
         m_grid->addWidget(row.state, 2 * r, 2);
-        m_grid->addWidget(row.detail, 2 * r + 1, 1, 1, 2);
+        auto* zero = new QToolButton(this);
+        zero->setObjectName(QStringLiteral("machineZero") + axis.name);
+        zero->setText(tr("Zero %1").arg(axis.name));
+        zero->setToolTip(tr("Set the work origin of %1 at the current position").arg(axis.name));
+        zero->setFocusPolicy(Qt::NoFocus);
+        const QString axisId = axis.name;
+        connect(zero, &QToolButton::clicked, this, [this, axisId] { zeroAxis(axisId); });
+        auto* detail = new QHBoxLayout;
+        detail->setContentsMargins(0, 0, 0, 0);
+        detail->addWidget(row.detail, 1);
+        detail->addWidget(zero);
+        m_grid->addLayout(detail, 2 * r + 1, 1, 1, 2);
         m_rows.insert(axis.name, row);
         ++r;
     }
@@ -116,9 +154,20 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
     if (!row.value || !a.axis)
         return;
     const machine::MachineAxis& axis = *a.axis;
-    QString text = format(axis, a.position);
-    row.detail->setText(
-        tr("%1 axis %2: %3 steps").arg(axis.controller, axisName(axis.axis)).arg(a.steps));
+    // The digits: the work position once a work zero is set, as certain as the machine
+    // position it comes from (same mark, same badge); the line below: the machine position.
+    const bool work = m_offsets->hasOffset(axis.name);
+    QString text = format(axis, m_offsets->toWork(axis.name, a.position));
+    row.value->setUnit(work ? tr("%1 work").arg(unitWord(axis.unit)) : unitWord(axis.unit));
+    row.value->setToolTip(
+        work ? tr("Work position: the machine position minus the work zero of "
+                  "%1 (machine %2 %3)")
+                   .arg(axis.name, format(axis, m_offsets->offset(axis.name)), unitWord(axis.unit))
+             : tr("Machine position (no work zero set for %1)").arg(axis.name));
+    row.detail->setText(tr("machine %1 %2, %3 axis %4: %5 steps")
+                            .arg(format(axis, a.position), unitWord(axis.unit), axis.controller,
+                                 axisName(axis.axis))
+                            .arg(a.steps));
     if (!linked) {
         row.value->setText(text);
         setState(row, tr("NO LINK"), kGrey, true,
@@ -157,6 +206,35 @@ void MachineDro::setState(const Row& row, const QString& word, const QString& st
                            QStringLiteral("QLabel { background: #101418; color: %1;"
                                           " border-radius: 4px; padding: 2px 8px; }")
                                .arg(dim ? QStringLiteral("#6b7780") : QStringLiteral("#7CFC9A")));
+}
+
+bool MachineDro::zeroAxis(const QString& axis)
+{
+    const machine::Machine* m = m_context->machine();
+    const machine::MachineAxis* a = m ? m->description().axis(axis) : nullptr;
+    if (!a)
+        return false;
+    QString refusal;
+    // Unknown also while the controller's link is down (Machine::axisStatus).
+    const machine::MachineAxisStatus status = m->axisStatus(*a);
+    if (!m_offsets->zero(axis, status, &refusal)) {
+        m_message->setText(refusal);
+        return false;
+    }
+    m_message->setText(tr("Work origin of %1 set at machine %2 %3.")
+                           .arg(axis, format(*a, status.position), unitWord(a->unit)));
+    return true;
+}
+
+void MachineDro::clearOffsets()
+{
+    m_offsets->clear();
+    m_message->setText(tr("Work offsets cleared: machine positions are shown."));
+}
+
+QString MachineDro::messageText() const
+{
+    return m_message->text();
 }
 
 QString MachineDro::displayedValue(const QString& axis) const

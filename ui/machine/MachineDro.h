@@ -4,6 +4,7 @@
 
 class QGridLayout;
 class QLabel;
+class QToolButton;
 
 namespace stepdeck::machine {
 struct MachineAxisStatus;
@@ -14,24 +15,34 @@ namespace stepdeck::ui {
 class DroValueLabel;
 class ElidedLabel;
 class MachineContext;
+class MachineWorkOffsets;
 
 // The read-out of a machine (issue 19): its logical axes in their units, from
 // Machine::axisStatus -- the device's step count converted back, never a host-side fraction.
 // mm and deg with 3 decimals, steps whole; marked by how the position is known (REFERENCED,
 // ESTIMATED with "≈", UNKNOWN dimmed, NO LINK for a controller whose link is down) and MOVING
-// while it moves. The line below names the controller axis and its count. Nothing widens a
-// row: the digits fit their box, the badge is as wide as its longest word, the line elides.
+// while it moves. Zero sets an axis' work origin at its position (MachineWorkOffsets; refused
+// while unknown): the digits then show the work position, marked as known as the machine
+// position it comes from, and the line below the machine position in units and the
+// controller's count. Nothing widens a row: the digits fit their box, the badge is as wide as
+// its longest word, the lines elide.
 class MachineDro : public QWidget
 {
     Q_OBJECT
 public:
-    explicit MachineDro(MachineContext* context, QWidget* parent = nullptr);
+    MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent = nullptr);
 
     QString displayedValue(const QString& axis) const; // the digits, for tests
     QString unitText(const QString& axis) const;
     QString stateText(const QString& axis) const;
     QString detailText(const QString& axis) const;
+    QString messageText() const; // why a zero was refused
     static QStringList stateWords();
+
+public Q_SLOTS:
+    // False (the reason on the message line) while the axis' position is unknown.
+    bool zeroAxis(const QString& axis);
+    void clearOffsets();
 
 private:
     struct Row
@@ -47,7 +58,10 @@ private:
                   const QString& tip);
 
     MachineContext* m_context;
+    MachineWorkOffsets* m_offsets;
     QGridLayout* m_grid;
+    QToolButton* m_clear;
+    ElidedLabel* m_message;
     QMap<QString, Row> m_rows;
 };
 

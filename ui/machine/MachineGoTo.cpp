@@ -2,6 +2,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineWorkOffsets.h"
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -11,27 +12,30 @@
 
 namespace stepdeck::ui {
 
-MachineGoTo::MachineGoTo(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_axis(new QComboBox(this)),
-      m_target(new QDoubleSpinBox(this)), m_go(new QPushButton(tr("Go to"), this)),
-      m_result(new ElidedLabel(this))
+MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
+    : QWidget(parent), m_context(context), m_offsets(offsets), m_label(new QLabel(this)),
+      m_axis(new QComboBox(this)), m_target(new QDoubleSpinBox(this)),
+      m_go(new QPushButton(tr("Go to"), this)), m_result(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("machineGoTo"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto* row = new QHBoxLayout;
-    row->addWidget(new QLabel(tr("Go to:"), this));
+    // As wide as its longer text: switching to work coordinates moves nothing in the row.
+    m_label->setMinimumWidth(qMax(m_label->fontMetrics().horizontalAdvance(tr("Go to:")),
+                                  m_label->fontMetrics().horizontalAdvance(tr("Go to (work):"))));
+    row->addWidget(m_label);
     row->addWidget(m_axis);
     row->addWidget(m_target, 1);
     row->addWidget(m_go);
     layout->addLayout(row);
     layout->addWidget(m_result);
     m_target->setRange(-1e6, 1e6);
-    m_target->setToolTip(tr("Absolute target in the axis' unit; the axis must be referenced"));
     m_go->setFocusPolicy(Qt::NoFocus);
     connect(m_go, &QPushButton::clicked, this, &MachineGoTo::go);
     connect(m_axis, &QComboBox::currentIndexChanged, this, &MachineGoTo::updateUnit);
     connect(context, &MachineContext::machineChanged, this, &MachineGoTo::rebuild);
+    connect(offsets, &MachineWorkOffsets::changed, this, &MachineGoTo::updateUnit);
     rebuild();
 }
 
@@ -55,6 +59,13 @@ void MachineGoTo::updateUnit()
     const machine::Machine* m = m_context->machine();
     const machine::MachineAxis* a =
         m ? m->description().axis(m_axis->currentData().toString()) : nullptr;
+    const bool work = a && m_offsets->hasOffset(a->name);
+    m_label->setText(work ? tr("Go to (work):") : tr("Go to:"));
+    m_target->setToolTip(work ? tr("Target in work coordinates (the work zero of the axis is "
+                                   "subtracted from machine positions); the axis must be "
+                                   "referenced")
+                              : tr("Absolute target in the axis' unit; the axis must be "
+                                   "referenced"));
     if (!a)
         return;
     const bool steps = a->unit == machine::AxisUnit::Step;
@@ -69,11 +80,21 @@ void MachineGoTo::go()
         return;
     const QString axis = m_axis->currentData().toString();
     QString refusal;
+    // Work coordinates to machine coordinates: the soft limits Machine::move checks are the
+    // machine's.
+    const double target = m_offsets->toMachine(axis, m_target->value());
     // Refused as a whole before anything is sent: unknown or unreferenced axis, a controller
     // not connected, a target outside the soft limits (Machine::move).
-    m_pending = m->move({{axis, m_target->value()}}, true, &refusal);
-    m_result->setText(m_pending ? tr("Moving %1 to %2\u2026").arg(axis, m_target->text())
-                                : tr("Go-to refused: %1").arg(refusal));
+    m_pending = m->move({{axis, target}}, true, &refusal);
+    const machine::MachineAxis* a = m->description().axis(axis);
+    const QString machineTarget = a && a->unit == machine::AxisUnit::Step
+                                      ? QString::number(qRound64(target))
+                                      : QString::number(target, 'f', 3);
+    m_result->setText(!m_pending ? tr("Go-to refused: %1").arg(refusal)
+                      : m_offsets->hasOffset(axis)
+                          ? tr("Moving %1 to %2 (work; machine %3)\u2026")
+                                .arg(axis, m_target->text(), machineTarget)
+                          : tr("Moving %1 to %2\u2026").arg(axis, m_target->text()));
 }
 
 void MachineGoTo::onFinished(quint64 id, bool ok, const QString& message)
@@ -83,6 +104,11 @@ void MachineGoTo::onFinished(quint64 id, bool ok, const QString& message)
     m_pending = 0;
     m_result->setText(ok ? tr("%1 arrived.").arg(m_axis->currentData().toString())
                          : tr("Go-to failed: %1").arg(message));
+}
+
+QString MachineGoTo::labelText() const
+{
+    return m_label->text();
 }
 
 QString MachineGoTo::resultText() const

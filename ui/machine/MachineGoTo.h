@@ -3,26 +3,32 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QPushButton;
 
 namespace stepdeck::ui {
 
 class ElidedLabel;
 class MachineContext;
+class MachineWorkOffsets;
 
 // Go-to of one machine axis in its unit (issue 19): an absolute target through Machine::move,
 // which refuses it with the reason (nothing sent) unless the axis is referenced and the target
-// within its soft limits. The line below says what happened, on one line (elided).
+// within its soft limits. With a work zero set on the axis (MachineWorkOffsets) the target is
+// in work coordinates, and the label says so ("Go to (work)"): it becomes machine
+// coordinates before Machine::move, whose soft limits stay in machine coordinates. The line
+// below says what happened, on one line (elided).
 class MachineGoTo : public QWidget
 {
     Q_OBJECT
 public:
-    explicit MachineGoTo(MachineContext* context, QWidget* parent = nullptr);
+    MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent = nullptr);
 
     QComboBox* axisCombo() const { return m_axis; }
     QDoubleSpinBox* targetBox() const { return m_target; }
     QPushButton* goButton() const { return m_go; }
     QString resultText() const;
+    QString labelText() const;
 
 public Q_SLOTS:
     void go();
@@ -33,6 +39,8 @@ private:
     void onFinished(quint64 id, bool ok, const QString& message);
 
     MachineContext* m_context;
+    MachineWorkOffsets* m_offsets;
+    QLabel* m_label;
     QComboBox* m_axis;
     QDoubleSpinBox* m_target;
     QPushButton* m_go;

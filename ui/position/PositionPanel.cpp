@@ -7,6 +7,7 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineGoTo.h"
+#include "machine/MachineWorkOffsets.h"
 #include "position/DroValueLabel.h"
 #include "position/GoToWidget.h"
 #include "position/MoveEstimate.h"
@@ -29,11 +30,14 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     m_moveTick->setInterval(100);
     connect(m_moveTick, &QTimer::timeout, this, [this] { onStatus(m_context->status()); });
     // With a machine open (issue 19) its logical axes in units stand in place of the
-    // selected controller's axes in steps (units, offsets, limits and go-to are per
-    // controller and stay out of the machine's read-out).
+    // selected controller's axes in steps (the controller's units, offsets, limits and go-to
+    // stay out of the machine's read-out, which has work offsets of its own in the machine's
+    // units).
     auto* outer = new QVBoxLayout(this);
-    m_machineDro = new MachineDro(context, this);
-    m_machineGoTo = new MachineGoTo(context, this);
+    // The machine's work offsets, shared by its read-out and its go-to.
+    auto* workOffsets = new MachineWorkOffsets(this);
+    m_machineDro = new MachineDro(context, workOffsets, this);
+    m_machineGoTo = new MachineGoTo(context, workOffsets, this);
     auto* controllerPart = new QWidget(this);
     outer->addWidget(m_machineDro);
     outer->addWidget(m_machineGoTo);

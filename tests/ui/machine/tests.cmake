@@ -26,3 +26,6 @@ stepdeck_add_test(tst_machinejog SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinejo
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
+stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
+                  LABELS unit LIBS stepdeck_ui)

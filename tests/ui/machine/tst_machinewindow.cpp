@@ -27,6 +27,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QToolButton>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -45,6 +46,8 @@ private Q_SLOTS:
     void closeMachine_singleControllerBarBackAndConnectable();
     void stop_duringMoveOnBothControllers_bothDevicesStandStill();
     void stop_controllerWithoutStopCommand_messageNamesIt();
+    void stop_duringTwoControllerJog_bothStillThenConfirmedMessage();
+    void stop_controllerSilent_messageNamesItNotConfirmed();
     void jog_otherControllerLinkLost_heldJogDoesNotResume();
     void banner_tableReferencedRotaryNot_machineNotReady();
     void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
@@ -55,11 +58,16 @@ private Q_SLOTS:
     void goTo_referencedX_deviceAtTheNearestStep();
     void referenceAll_machine_everyControllerInTheFilesOrder();
     void referenceAxis_machine_fileRowsShownOnlyThatControllerRuns();
+    void zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOffsetPlusTarget();
+    void zero_unknownPosition_refusedWithReasonNoOffset();
+    void zero_reopenMachine_offsetsRemembered();
 
 private:
     QString writeFile(const QByteArray& json);
     QByteArray machineJson() const;
     bool openAndConnect();
+    bool referenceTable();
+    QToolButton* zeroButton(const QString& axis) const;
     void writeElabSetup();
     ui::MainWindow* window() const { return m_f->window.get(); }
     machine::Machine* machine() const { return window()->context()->machine(); }
@@ -243,8 +251,9 @@ void TestMachineWindow::stop_duringMoveOnBothControllers_bothDevicesStandStill()
     QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
     QVERIFY(m_elab->position() < 80000);
     QVERIFY(m_nanotec->position() < 3000); // stopped, not at its limit switch
-    QVERIFY2(window()->lastError().contains(QStringLiteral("table, rotary")),
-             qPrintable(window()->lastError()));
+    QTRY_COMPARE_WITH_TIMEOUT(
+        window()->lastError(),
+        QStringLiteral("Stopped: every controller confirmed standstill (table, rotary)."), 10000);
 }
 
 void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
@@ -269,8 +278,76 @@ void TestMachineWindow::stop_controllerWithoutStopCommand_messageNamesIt()
     }
     window()->safetyBar()->stopButton()->click();
     const QString text = window()->lastError();
-    QVERIFY2(text.contains(QStringLiteral("Stop sent to table.")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Stop sent to table:")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("marker cannot be stopped")), qPrintable(text));
+    // The table confirms; the marker is still named as not stopped.
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        window()->lastError().startsWith(QStringLiteral("Stopped: table confirmed standstill.")),
+        qPrintable(window()->lastError()), 10000);
+    QVERIFY(window()->lastError().contains(QStringLiteral("marker cannot be stopped")));
+}
+
+// STOP during a jog of both controllers (one input, Machine::jog): the message claims the stop
+// only once both devices report standstill -- and when it does, both simulators stand still.
+void TestMachineWindow::stop_duringTwoControllerJog_bothStillThenConfirmedMessage()
+{
+    QVERIFY(openAndConnect());
+    QString refusal;
+    const QMap<QString, double> rates{{QStringLiteral("X"), 5.0}, {QStringLiteral("A"), 10.0}};
+    QVERIFY2(machine()->jog(rates, &refusal), qPrintable(refusal));
+    QTimer renew; // the held input renews the controllers' jog leases
+    connect(&renew, &QTimer::timeout, this, [this, &rates] {
+        QString why;
+        machine()->jog(rates, &why);
+    });
+    renew.start(50);
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::X) && m_nanotec->moving(Axis::X), 10000);
+    renew.stop(); // the input is released with the STOP, as the window's STOP does
+    QStringList shown;
+    connect(window()->messages(), &ui::StatusMessages::changed, this, [this, &shown] {
+        const QString text = window()->lastError();
+        if (text.startsWith(QStringLiteral("Stopped")))
+            shown << QStringLiteral("%1|%2").arg(text).arg(m_elab->still() && m_nanotec->still());
+    });
+    window()->safetyBar()->stopButton()->click();
+    QVERIFY2(window()->lastError().startsWith(QStringLiteral("Stop sent to table, rotary:")),
+             qPrintable(window()->lastError()));
+    QTRY_COMPARE_WITH_TIMEOUT(
+        window()->lastError(),
+        QStringLiteral("Stopped: every controller confirmed standstill (table, rotary)."), 10000);
+    QVERIFY(m_elab->receivedStop() && m_nanotec->receivedStop());
+    QVERIFY(m_elab->still() && m_nanotec->still());
+    // When the words first appeared, both devices already stood still.
+    QVERIFY(!shown.isEmpty());
+    QVERIFY2(shown.first().endsWith(QStringLiteral("|1")), qPrintable(shown.first()));
+}
+
+// A controller that does not answer its stop (the drive went silent): the message does not
+// claim the stop, it names the controller and why.
+void TestMachineWindow::stop_controllerSilent_messageNamesItNotConfirmed()
+{
+    QVERIFY(openAndConnect());
+    m_nanotec->probe([this] {
+        SimulatorFaults faults;
+        faults.silent = true;
+        m_nanotec->sim()->setFaults(faults);
+        return true;
+    });
+    window()->safetyBar()->stopButton()->click();
+    QVERIFY2(window()->lastError().startsWith(QStringLiteral("Stop sent to table, rotary:")),
+             qPrintable(window()->lastError()));
+    auto named = [this] {
+        const auto& log = window()->messages()->log();
+        return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
+            return entry.text.startsWith(QStringLiteral("STOP not confirmed by \"rotary\": "));
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(named(), 15000);
+    // Never the claim that every controller stopped.
+    const auto& log = window()->messages()->log();
+    QVERIFY(std::none_of(log.cbegin(), log.cend(), [](const auto& entry) {
+        return entry.text.startsWith(QStringLiteral("Stopped"));
+    }));
 }
 
 void TestMachineWindow::jog_otherControllerLinkLost_heldJogDoesNotResume()
@@ -542,6 +619,106 @@ void TestMachineWindow::referenceAxis_machine_fileRowsShownOnlyThatControllerRun
     window()->closeMachine();
     QVERIFY(!rows->isVisibleTo(panel));
     QVERIFY(controllerRows->isVisibleTo(panel));
+}
+
+bool TestMachineWindow::referenceTable()
+{
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    return QTest::qWaitFor(
+        [table] {
+            return table->status().axes.value(Axis::X).referenced && !table->status().anyMoving();
+        },
+        20000);
+}
+
+QToolButton* TestMachineWindow::zeroButton(const QString& axis) const
+{
+    return window()->positionPanel()->machineDro()->findChild<QToolButton*>(
+        QStringLiteral("machineZero") + axis);
+}
+
+// Zero X at a known position: the digits read 0.000 in work coordinates, the line below keeps
+// the machine position, and a go-to in work coordinates reaches the board at offset + target.
+void TestMachineWindow::zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOffsetPlusTarget()
+{
+    QVERIFY(openAndConnect());
+    QVERIFY(referenceTable());
+    const qint64 origin = m_elab->position();
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to:"));
+    goTo->targetBox()->setValue(2.5);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(1000));
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("2.500"),
+                              10000);
+    QToolButton* zero = zeroButton(QStringLiteral("X"));
+    QVERIFY(zero && zero->isVisibleTo(window()));
+    zero->click();
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("0.000"));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm work"));
+    QCOMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("REFERENCED"));
+    QVERIFY2(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("machine 2.500 mm")),
+             qPrintable(dro->detailText(QStringLiteral("X"))));
+    QVERIFY(dro->detailText(QStringLiteral("X")).contains(QStringLiteral("1000 steps")));
+    QCOMPARE(dro->displayedValue(QStringLiteral("Y")), QStringLiteral("0.000")); // untouched
+    QCOMPARE(dro->unitText(QStringLiteral("Y")), QStringLiteral("mm"));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
+    // Go to (work) X = 1: machine 3.5 mm, 1400 steps from the origin at the board.
+    goTo->targetBox()->setValue(1.0);
+    goTo->goButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
+    QCOMPARE(m_elab->position() - origin, qint64(1400));
+    QVERIFY(m_elab->still());
+    QTRY_COMPARE_WITH_TIMEOUT(dro->displayedValue(QStringLiteral("X")), QStringLiteral("1.000"),
+                              10000);
+    // Clear: machine coordinates again, for the read-out and the go-to.
+    dro->clearOffsets();
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("3.500"));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to:"));
+}
+
+// Not referenced since the connect: a work origin there would say nothing about the machine.
+void TestMachineWindow::zero_unknownPosition_refusedWithReasonNoOffset()
+{
+    QVERIFY(openAndConnect());
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE(dro->stateText(QStringLiteral("X")), QStringLiteral("UNKNOWN"));
+    zeroButton(QStringLiteral("X"))->click();
+    QVERIFY2(dro->messageText().contains(QStringLiteral("position is unknown")),
+             qPrintable(dro->messageText()));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    QCOMPARE(window()->positionPanel()->machineGoTo()->labelText(), QStringLiteral("Go to:"));
+}
+
+// The offsets belong to the machine file: closing and opening it again brings them back.
+void TestMachineWindow::zero_reopenMachine_offsetsRemembered()
+{
+    QVERIFY(openAndConnect());
+    QVERIFY(referenceTable());
+    QSignalSpy finished(machine(), &machine::Machine::moveFinished);
+    QString refusal;
+    QVERIFY2(machine()->move({{QStringLiteral("Y"), 1.25}}, true, &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_COMPARE_WITH_TIMEOUT(dro->stateText(QStringLiteral("Y")), QStringLiteral("REFERENCED"),
+                              10000);
+    QVERIFY(dro->zeroAxis(QStringLiteral("Y")));
+    QCOMPARE(dro->displayedValue(QStringLiteral("Y")), QStringLiteral("0.000"));
+    window()->closeMachine();
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
+    QVERIFY(window()->openMachine(m_dir->filePath(QStringLiteral("test.machine.json"))));
+    QCOMPARE(dro->unitText(QStringLiteral("Y")), QStringLiteral("mm work"));
+    QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
+    // Not connected: the last value known, in work coordinates, marked as such.
+    QCOMPARE(dro->stateText(QStringLiteral("Y")), QStringLiteral("NO LINK"));
+    ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
+    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("Y")));
+    QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
 }
 
 // The offscreen screen is a 1366x768 laptop's (as in tst_layoutholdsstill): the window sizes
