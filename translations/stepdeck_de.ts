@@ -2729,6 +2729,10 @@
             <source>controller "%1": the reference run ended before the reference switch was reached</source>
             <translation>Steuerung "%1": die Referenzfahrt endete, bevor der Referenzschalter erreicht war</translation>
         </message>
+        <message>
+            <source>%1 stopped at its end switch</source>
+            <translation>%1 hielt an ihrem Endschalter an</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineFile</name>
@@ -3529,6 +3533,171 @@
         <message>
             <source>Drive status %1 ($, 5.21)</source>
             <translation>Antriebsstatus %1 ($, 5.21)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramLexer</name>
+        <message>
+            <source>the comment is not closed: ")" is missing</source>
+            <translation>der Kommentar ist nicht geschlossen: „)“ fehlt</translation>
+        </message>
+        <message>
+            <source>%1 needs a number</source>
+            <translation>%1 braucht eine Zahl</translation>
+        </message>
+        <message>
+            <source>%1: "%2%3" is not a decimal number</source>
+            <translation>%1: „%2%3“ ist keine Dezimalzahl</translation>
+        </message>
+        <message>
+            <source>%1: %2 is not a finite number</source>
+            <translation>%1: %2 ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>unexpected character "%1"</source>
+            <translation>unerwartetes Zeichen „%1“</translation>
+        </message>
+        <message>
+            <source>"]" is missing</source>
+            <translation>„]“ fehlt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramLine</name>
+        <message>
+            <source>%1 appears twice on the line</source>
+            <translation>%1 steht zweimal in der Zeile</translation>
+        </message>
+        <message>
+            <source>the machine has no axis %1 (it has %2)</source>
+            <translation>die Maschine hat keine Achse %1 (sie hat %2)</translation>
+        </message>
+        <message>
+            <source>axis %1 appears twice on the line</source>
+            <translation>Achse %1 steht zweimal in der Zeile</translation>
+        </message>
+        <message>
+            <source>N (a line number) stands only at the start of a line</source>
+            <translation>N (eine Satznummer) steht nur am Zeilenanfang</translation>
+        </message>
+        <message>
+            <source>O%1 stands alone on its line</source>
+            <translation>O%1 steht allein in seiner Zeile</translation>
+        </message>
+        <message>
+            <source>%1 is not a word of StepDeck programs</source>
+            <translation>%1 ist kein Wort von StepDeck-Programmen</translation>
+        </message>
+        <message>
+            <source>%1 is not supported</source>
+            <translation>%1 wird nicht unterstützt</translation>
+        </message>
+        <message>
+            <source>G90 and G91 on one line</source>
+            <translation>G90 und G91 in einer Zeile</translation>
+        </message>
+        <message>
+            <source>G20 and G21 on one line</source>
+            <translation>G20 und G21 in einer Zeile</translation>
+        </message>
+        <message>
+            <source>one action per line: %1 and %2</source>
+            <translation>eine Aktion pro Zeile: %1 und %2</translation>
+        </message>
+        <message>
+            <source>%1: N takes a whole number</source>
+            <translation>%1: N nimmt eine ganze Zahl</translation>
+        </message>
+        <message>
+            <source>%1: the feed rate must be greater than 0</source>
+            <translation>%1: der Vorschub muss größer als 0 sein</translation>
+        </message>
+        <message>
+            <source>axis words need G0 or G1 before them</source>
+            <translation>Achsworte brauchen vorher G0 oder G1</translation>
+        </message>
+        <message>
+            <source>G1 needs a feed rate: F on this line or an earlier one</source>
+            <translation>G1 braucht einen Vorschub: F in dieser oder einer früheren Zeile</translation>
+        </message>
+        <message>
+            <source>%1 is not used by %2</source>
+            <translation>%1 wird von %2 nicht verwendet</translation>
+        </message>
+        <message>
+            <source>%1 is not used on a line without an action</source>
+            <translation>%1 wird in einer Zeile ohne Aktion nicht verwendet</translation>
+        </message>
+        <message>
+            <source>%1 needs %2</source>
+            <translation>%1 braucht %2</translation>
+        </message>
+        <message>
+            <source>%1 must be greater than %2 and at most %3</source>
+            <translation>%1 muss größer als %2 und höchstens %3 sein</translation>
+        </message>
+        <message>
+            <source>%1 must lie within %2..%3</source>
+            <translation>%1 muss zwischen %2 und %3 liegen</translation>
+        </message>
+        <message>
+            <source>%1: the number must be a whole number 0..9999</source>
+            <translation>%1: die Nummer muss eine ganze Zahl 0..9999 sein</translation>
+        </message>
+        <message>
+            <source>%1: L3 waits for high, L4 for low</source>
+            <translation>%1: L3 wartet auf High, L4 auf Low</translation>
+        </message>
+        <message>
+            <source>%1: O takes a whole number</source>
+            <translation>%1: O nimmt eine ganze Zahl</translation>
+        </message>
+        <message>
+            <source>only "O%1 repeat [count]" and "O%1 endrepeat" are supported</source>
+            <translation>nur „O%1 repeat [Anzahl]“ und „O%1 endrepeat“ werden unterstützt</translation>
+        </message>
+        <message>
+            <source>repeat needs a count: O%1 repeat [3]</source>
+            <translation>repeat braucht eine Anzahl: O%1 repeat [3]</translation>
+        </message>
+        <message>
+            <source>the repeat count must be a whole number 0..1000000</source>
+            <translation>die Anzahl der Wiederholungen muss eine ganze Zahl 0..1000000 sein</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramParser</name>
+        <message>
+            <source>the program is longer than %1 lines</source>
+            <translation>das Programm ist länger als %1 Zeilen</translation>
+        </message>
+        <message>
+            <source>the line is longer than %1 characters</source>
+            <translation>die Zeile ist länger als %1 Zeichen</translation>
+        </message>
+        <message>
+            <source>nothing may follow the program's end (line %1)</source>
+            <translation>nach dem Programmende (Zeile %1) darf nichts folgen</translation>
+        </message>
+        <message>
+            <source>repeats nest deeper than %1</source>
+            <translation>Wiederholungen sind tiefer als %1 verschachtelt</translation>
+        </message>
+        <message>
+            <source>O%1 endrepeat without its O%1 repeat</source>
+            <translation>O%1 endrepeat ohne sein O%1 repeat</translation>
+        </message>
+        <message>
+            <source>O%1 endrepeat does not close O%2 repeat (line %3)</source>
+            <translation>O%1 endrepeat schließt nicht O%2 repeat (Zeile %3)</translation>
+        </message>
+        <message>
+            <source>O%1 repeat is not closed by O%1 endrepeat</source>
+            <translation>O%1 repeat wird nicht durch O%1 endrepeat geschlossen</translation>
+        </message>
+        <message>
+            <source>more errors follow; only the first %1 are listed</source>
+            <translation>weitere Fehler folgen; nur die ersten %1 sind aufgeführt</translation>
         </message>
     </context>
     <context>
@@ -4477,6 +4646,18 @@ Regelung für Achse %1 einschalten?</translation>
             <source>Move %1 by plus one step size</source>
             <translation>%1 um eine Schrittweite in Plusrichtung verfahren</translation>
         </message>
+        <message>
+            <source>In each axis' unit (mm, deg or steps)</source>
+            <translation>In der Einheit jeder Achse (mm, ° oder Schritte)</translation>
+        </message>
+        <message>
+            <source>Per click of a +/- button, in each axis' unit (mm, deg or steps)</source>
+            <translation>Pro Klick auf eine +/−-Taste, in der Einheit jeder Achse (mm, ° oder Schritte)</translation>
+        </message>
+        <message>
+            <source>Incremental jog refused: %1</source>
+            <translation>Schrittweises Verfahren abgelehnt: %1</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::InputProgramsPage</name>
@@ -4578,6 +4759,21 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::JogAxisMap</name>
+        <message>
+            <source>mm/s</source>
+            <translation>mm/s</translation>
+        </message>
+        <message>
+            <source>deg/s</source>
+            <translation>°/s</translation>
+        </message>
+        <message>
+            <source>steps/s</source>
+            <translation>Schritte/s</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::JogController</name>
         <message>
             <source>Jog refused: not connected</source>
@@ -4597,14 +4793,6 @@ W1500</translation>
         <message>
             <source>Drag to jog Z; release to stop (ramped).</source>
             <translation>Ziehen, um Z zu verfahren; Loslassen stoppt (mit Rampe).</translation>
-        </message>
-        <message>
-            <source>Drag to jog U; release to stop (ramped).</source>
-            <translation>Ziehen, um U zu verfahren; Loslassen stoppt (mit Rampe).</translation>
-        </message>
-        <message>
-            <source>Commanded jog velocity</source>
-            <translation>Vorgegebene Tippgeschwindigkeit</translation>
         </message>
         <message>
             <source>Speed override</source>
@@ -4659,8 +4847,12 @@ W1500</translation>
             <translation>Diese Steuerung hat keinen Tippbefehl: Joystick, Tasten und Gamepad fahren sie in kurzen Zielen, jedes erst nachdem das vorige erreicht ist. Loslassen beendet den Tippbetrieb nach der laufenden kurzen Fahrt. Schrittweises Tippen fährt um die Schrittweite.</translation>
         </message>
         <message>
-            <source>%1/s</source>
-            <translation>%1/s</translation>
+            <source>The machine axis this stick and End/Home jog</source>
+            <translation>Die Maschinenachse, die dieser Stick und Ende/Pos1 verfahren</translation>
+        </message>
+        <message>
+            <source>Drag to jog %1; release to stop (ramped).</source>
+            <translation>Ziehen, um %1 zu verfahren; Loslassen stoppt (mit Rampe).</translation>
         </message>
     </context>
     <context>
@@ -4715,6 +4907,17 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::JogVelocityReadout</name>
+        <message>
+            <source>Commanded jog velocity</source>
+            <translation>Vorgegebene Tippgeschwindigkeit</translation>
+        </message>
+        <message>
+            <source>%1/s</source>
+            <translation>%1/s</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::JoystickPad</name>
         <message>
             <source>LIMIT</source>
@@ -4728,20 +4931,20 @@ W1500</translation>
             <translation>Tastatur</translation>
         </message>
         <message>
-            <source>←/→ X</source>
-            <translation>←/→ X</translation>
+            <source>←/→ %1</source>
+            <translation>←/→ %1</translation>
         </message>
         <message>
-            <source>↓/↑ Y</source>
-            <translation>↓/↑ Y</translation>
+            <source>↓/↑ %1</source>
+            <translation>↓/↑ %1</translation>
         </message>
         <message>
-            <source>Page Down/Up Z</source>
-            <translation>Bild ab/auf Z</translation>
+            <source>Page Down/Up %1</source>
+            <translation>Bild ab/auf %1</translation>
         </message>
         <message>
-            <source>End/Home U</source>
-            <translation>Ende/Pos1 U</translation>
+            <source>End/Home %1</source>
+            <translation>Ende/Pos1 %1</translation>
         </message>
     </context>
     <context>
@@ -4976,10 +5179,6 @@ W1500</translation>
             <source>Machine "%1": %2</source>
             <translation>Maschine "%1": %2</translation>
         </message>
-        <message>
-            <source>Jog refused: axis %1 of controller "%2" is not an axis of the machine</source>
-            <translation>Tippbetrieb abgelehnt: Achse %1 der Steuerung "%2" ist keine Achse der Maschine</translation>
-        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineControl</name>
@@ -4996,16 +5195,36 @@ W1500</translation>
             <translation>Stopp: Keine Steuerung ist verbunden</translation>
         </message>
         <message>
-            <source>Stop sent to %1.</source>
-            <translation>Stopp an %1 gesendet.</translation>
-        </message>
-        <message>
             <source>Panic: no controller is connected</source>
             <translation>Panik-Stopp: keine Steuerung ist verbunden</translation>
         </message>
         <message>
             <source>PANIC STOP sent to %1: positions are lost, reference all axes before moving.</source>
             <translation>PANIK-STOPP an %1 gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Stop sent to %1: waiting for standstill…</source>
+            <translation>Stopp an %1 gesendet: warte auf Stillstand…</translation>
+        </message>
+        <message>
+            <source>PANIC STOP: %1 confirmed standstill; positions are lost, reference all axes before moving.</source>
+            <translation>PANIK-STOPP: %1 hat den Stillstand bestätigt; die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Stopped: every controller confirmed standstill (%1).</source>
+            <translation>Gestoppt: jede Steuerung hat den Stillstand bestätigt (%1).</translation>
+        </message>
+        <message>
+            <source>Stopped: %1 confirmed standstill.</source>
+            <translation>Gestoppt: %1 hat den Stillstand bestätigt.</translation>
+        </message>
+        <message>
+            <source>PANIC STOP not confirmed by "%1": %2</source>
+            <translation>PANIK-STOPP nicht bestätigt von „%1“: %2</translation>
+        </message>
+        <message>
+            <source>STOP not confirmed by "%1": %2</source>
+            <translation>STOPP nicht bestätigt von „%1“: %2</translation>
         </message>
     </context>
     <context>
@@ -5043,10 +5262,6 @@ W1500</translation>
             <translation>REFERENZIERT</translation>
         </message>
         <message>
-            <source>%1 axis %2: %3 steps</source>
-            <translation>%1 Achse %2: %3 Schritte</translation>
-        </message>
-        <message>
             <source>Controller "%1" is not connected: this is the last value known, not the position now.</source>
             <translation>Steuerung "%1" ist nicht verbunden: Das ist der letzte bekannte Wert, nicht die Position jetzt.</translation>
         </message>
@@ -5065,6 +5280,46 @@ W1500</translation>
         <message>
             <source>Known from the controller: read back or set by a reference run.</source>
             <translation>Von der Steuerung bekannt: zurückgelesen oder durch eine Referenzfahrt gesetzt.</translation>
+        </message>
+        <message>
+            <source>Clear work offsets</source>
+            <translation>Werkstück-Nullpunkte löschen</translation>
+        </message>
+        <message>
+            <source>Show machine positions again (work origin = machine origin)</source>
+            <translation>Wieder Maschinenpositionen anzeigen (Werkstück-Nullpunkt = Maschinen-Nullpunkt)</translation>
+        </message>
+        <message>
+            <source>Zero %1</source>
+            <translation>%1 nullen</translation>
+        </message>
+        <message>
+            <source>Set the work origin of %1 at the current position</source>
+            <translation>Werkstück-Nullpunkt von %1 auf die aktuelle Position setzen</translation>
+        </message>
+        <message>
+            <source>%1 work</source>
+            <translation>%1 Werkstück</translation>
+        </message>
+        <message>
+            <source>Work position: the machine position minus the work zero of %1 (machine %2 %3)</source>
+            <translation>Werkstückposition: die Maschinenposition minus den Werkstück-Nullpunkt von %1 (Maschine %2 %3)</translation>
+        </message>
+        <message>
+            <source>Machine position (no work zero set for %1)</source>
+            <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
+        </message>
+        <message>
+            <source>machine %1 %2, %3 axis %4: %5 steps</source>
+            <translation>Maschine %1 %2, %3 Achse %4: %5 Schritte</translation>
+        </message>
+        <message>
+            <source>Work origin of %1 set at machine %2 %3.</source>
+            <translation>Werkstück-Nullpunkt von %1 auf Maschine %2 %3 gesetzt.</translation>
+        </message>
+        <message>
+            <source>Work offsets cleared: machine positions are shown.</source>
+            <translation>Werkstück-Nullpunkte gelöscht: Maschinenpositionen werden angezeigt.</translation>
         </message>
     </context>
     <context>
@@ -5234,6 +5489,103 @@ W1500</translation>
         <message>
             <source>Go-to failed: %1</source>
             <translation>Anfahren fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Go to (work):</source>
+            <translation>Anfahren (Werkstück):</translation>
+        </message>
+        <message>
+            <source>Target in work coordinates (the work zero of the axis is subtracted from machine positions); the axis must be referenced</source>
+            <translation>Ziel in Werkstückkoordinaten (der Werkstück-Nullpunkt der Achse wird von den Maschinenpositionen abgezogen); die Achse muss referenziert sein</translation>
+        </message>
+        <message>
+            <source>Moving %1 to %2 (work; machine %3)…</source>
+            <translation>%1 fährt nach %2 (Werkstück; Maschine %3)…</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineReferenceRows</name>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>Richtung</translation>
+        </message>
+        <message>
+            <source>Order</source>
+            <translation>Reihenfolge</translation>
+        </message>
+        <message>
+            <source>State</source>
+            <translation>Zustand</translation>
+        </message>
+        <message>
+            <source>controller chooses</source>
+            <translation>Steuerung wählt</translation>
+        </message>
+        <message>
+            <source>+ (positive)</source>
+            <translation>+ (positiv)</translation>
+        </message>
+        <message>
+            <source>− (negative)</source>
+            <translation>− (negativ)</translation>
+        </message>
+        <message>
+            <source>From the machine file: edit it with Machine → Edit machine…</source>
+            <translation>Aus der Maschinendatei: ändern mit Maschine → Maschine bearbeiten…</translation>
+        </message>
+        <message>
+            <source>Reference %1</source>
+            <translation>%1 referenzieren</translation>
+        </message>
+        <message>
+            <source>unknown (no link)</source>
+            <translation>unbekannt (keine Verbindung)</translation>
+        </message>
+        <message>
+            <source>referencing…</source>
+            <translation>referenziere…</translation>
+        </message>
+        <message>
+            <source>referenced</source>
+            <translation>referenziert</translation>
+        </message>
+        <message>
+            <source>not referenced</source>
+            <translation>nicht referenziert</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineStopWatch</name>
+        <message>
+            <source>no standstill reported within %1 s</source>
+            <translation>kein Stillstand innerhalb von %1 s gemeldet</translation>
+        </message>
+        <message>
+            <source>no answer to the stop within %1 s</source>
+            <translation>keine Antwort auf den Stopp innerhalb von %1 s</translation>
+        </message>
+        <message>
+            <source>its link was lost</source>
+            <translation>die Verbindung ist verloren</translation>
+        </message>
+        <message>
+            <source>the stop request failed</source>
+            <translation>der Stopp-Befehl ist fehlgeschlagen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineWorkOffsets</name>
+        <message>
+            <source>Zero %1 refused: its position is unknown; reference it first.</source>
+            <translation>%1 nullen abgelehnt: die Position ist unbekannt; zuerst referenzieren.</translation>
+        </message>
+        <message>
+            <source>Zero %1 refused: the axis is moving.</source>
+            <translation>%1 nullen abgelehnt: die Achse fährt.</translation>
         </message>
     </context>
     <context>
@@ -5926,6 +6278,14 @@ W1500</translation>
         <message>
             <source>Referencing failed: %1</source>
             <translation>Referenzfahrt fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Reference every axis of the machine in the order and directions of its file (equal orders run together)</source>
+            <translation>Jede Achse der Maschine in Reihenfolge und Richtung ihrer Datei referenzieren (gleiche Nummern fahren gemeinsam)</translation>
+        </message>
+        <message>
+            <source>%1 referenced.</source>
+            <translation>%1 referenziert.</translation>
         </message>
     </context>
     <context>
