@@ -119,10 +119,13 @@ QByteArray commandKey(const QByteArray& body)
 
 bool parseNumber(const QByteArray& text, qint64* value)
 {
-    if (text.isEmpty() || text.size() > 12)
+    if (text.isEmpty())
         return false;
-    int i = (text[0] == '+' || text[0] == '-') ? 1 : 0;
-    if (i == text.size())
+    const int i = (text[0] == '+' || text[0] == '-') ? 1 : 0;
+    // At most 11 digits whatever the sign: formatSigned() adds a '+', so a limit on the whole
+    // text let "949995009994" in that its own "+949995009994" could not be read again
+    // (fuzz_nanotec_reply).
+    if (i == text.size() || text.size() - i > 11)
         return false;
     for (int k = i; k < text.size(); ++k) {
         if (!isDigit(text[k]))

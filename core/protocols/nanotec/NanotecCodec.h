@@ -50,7 +50,8 @@ QString forbiddenReason(const QByteArray& body);
 // ":CL_motor_pp=100" -> ":CL_motor_pp", "v" -> "v".
 QByteArray commandKey(const QByteArray& body);
 
-// Signed decimal with optional sign ("+50", "-3", "1000"); false for anything else.
+// Signed decimal with optional sign and at most 11 digits ("+50", "-3", "1000"); false for
+// anything else.
 bool parseNumber(const QByteArray& text, qint64* value);
 QByteArray formatSigned(qint64 value); // always with sign: "+50", "-3" (record strings)
 

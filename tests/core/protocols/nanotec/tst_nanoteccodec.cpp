@@ -68,6 +68,8 @@ private Q_SLOTS:
     void encode_forbiddenCommands_areNeverProduced();
     void commandKey_data();
     void commandKey();
+    void parseNumber_digitsNotSignBound_data();
+    void parseNumber_digitsNotSignBound();
     void decode_manualExamples_data();
     void decode_manualExamples();
     void decode_longReplies_acceptBothAddressForms();
@@ -522,6 +524,40 @@ void TestNanotecCodec::errorCodes_namedAsInManual()
     QCOMPARE(errorCodeName(0x20), QStringLiteral("ERROR_INTERNAL"));
     QCOMPARE(errorCodeName(0), QStringLiteral("none"));
     QVERIFY(errorCodeDescription(0x10).contains(QStringLiteral("position")));
+}
+
+// The limit is on the digits: a value read without a sign must read again as formatSigned()
+// writes it, with its '+' (fuzz_nanotec_reply found "949995009994" taken, "+949995009994" not).
+void TestNanotecCodec::parseNumber_digitsNotSignBound_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<qint64>("value");
+    QTest::newRow("plain") << QByteArray("1000") << true << qint64(1000);
+    QTest::newRow("plus") << QByteArray("+50") << true << qint64(50);
+    QTest::newRow("minus") << QByteArray("-3") << true << qint64(-3);
+    QTest::newRow("11 digits") << QByteArray("94999500999") << true << qint64(94999500999);
+    QTest::newRow("11 digits signed") << QByteArray("+94999500999") << true << qint64(94999500999);
+    QTest::newRow("12 digits") << QByteArray("949995009994") << false << qint64(0);
+    QTest::newRow("12 digits signed") << QByteArray("+949995009994") << false << qint64(0);
+    QTest::newRow("sign only") << QByteArray("-") << false << qint64(0);
+    QTest::newRow("empty") << QByteArray() << false << qint64(0);
+    QTest::newRow("letter") << QByteArray("1a") << false << qint64(0);
+}
+
+void TestNanotecCodec::parseNumber_digitsNotSignBound()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(bool, ok);
+    QFETCH(qint64, value);
+    qint64 parsed = 0;
+    QCOMPARE(parseNumber(text, &parsed), ok);
+    if (ok) {
+        QCOMPARE(parsed, value);
+        qint64 again = 0;
+        QVERIFY(parseNumber(formatSigned(parsed), &again));
+        QCOMPARE(again, parsed);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestNanotecCodec)
