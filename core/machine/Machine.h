@@ -121,6 +121,9 @@ private:
         RequestId refresh = 0;  // the status read after the request finished
         bool accepted = false;  // the move request finished well
         bool refreshed = false; // a status newer than the acceptance arrived
+        // At rest short of its target in one status read: a second read is asked for before
+        // the move is called short (one garbled reply must not end a move that still runs).
+        bool confirmingShort = false;
         // Models that report arrival: the controller axes that stopped at their end switch
         // instead (the request's "endSwitch" value).
         QStringList endSwitch;
@@ -151,6 +154,7 @@ private:
     QString controllerIdOf(const ControllerSession* session) const;
     QString machineAxisName(const ControllerSession* session, Axis axis) const;
     QStringList shortOfTarget(const Part& part) const;
+    bool confirmShortStops(PendingMove& move);
 
     MachineDescription m_description;
     ControllerOptions m_baseOptions;

@@ -169,7 +169,7 @@ void Machine::finishArrivedMoves()
                    restsAt(part.session->status(), part.axes);
             shortOf << shortOfTarget(part);
         }
-        if (!done)
+        if (!done || (!shortOf.isEmpty() && confirmShortStops(m_moves[m])))
             continue;
         const quint64 id = m_moves.takeAt(m).id;
         // At rest but not where it was sent (a limit switch, a stop from elsewhere): the
@@ -181,6 +181,23 @@ void Machine::finishArrivedMoves()
         else
             Q_EMIT moveFinished(id, true, QString());
     }
+}
+
+// True while a part that seems to rest short of its target is read once more: the move
+// ends short only when a second status read, asked for after the first, says so too.
+bool Machine::confirmShortStops(PendingMove& move)
+{
+    bool asked = false;
+    for (Part& part : move.parts) {
+        if (part.confirmingShort || part.session->capabilities().reportsArrival ||
+            shortOfTarget(part).isEmpty())
+            continue;
+        part.confirmingShort = true;
+        part.refreshed = false;
+        part.refresh = part.session->refreshStatus();
+        asked = true;
+    }
+    return asked;
 }
 
 QStringList Machine::shortOfTarget(const Part& part) const
