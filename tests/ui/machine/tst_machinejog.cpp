@@ -3,9 +3,7 @@
 // drives them, through one Machine::jog input. An E-LAB (X/Y/Z, 400 steps/mm) and a Nanotec
 // drive (A, 100 steps/deg) simulator on two pseudo-terminals.
 #include "../LayoutChecks.h"
-#include "../UiTestSupport.h"
-#include "ModelBench.h"
-#include "PtyDevice.h"
+#include "MachineWindowRig.h"
 #include "gamepad/GamepadPanel.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogAxisMap.h"
@@ -23,7 +21,6 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScreen>
-#include <QTemporaryDir>
 #include <QToolButton>
 
 using namespace stepdeck;
@@ -66,8 +63,8 @@ class TestMachineJog : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void initTestCase() { isolateSettings(); }
-    void init();
-    void cleanup();
+    void init() { QVERIFY(m_rig.start()); }
+    void cleanup() { m_rig.stop(); }
     void slots_tableAndRotary_padXYStickZOtherStickAKeysSayWhich();
     void jog_padXAndStickA_oneInputDevicesAtUnitRatesLossStopsBoth();
     void jog_padX_velocityReadoutInMillimetresPerSecond();
@@ -77,82 +74,20 @@ private Q_SLOTS:
 
 private:
     bool openAndConnect(const QByteArray& limits = {});
-    ui::MainWindow* window() const { return m_f->window.get(); }
-    machine::Machine* machine() const { return window()->context()->machine(); }
+    ui::MainWindow* window() const { return m_rig.window(); }
+    machine::Machine* machine() const { return m_rig.machine(); }
     void waitForPolls(const char* controller, int count);
 
-    std::unique_ptr<PtyDevice> m_elab;
-    std::unique_ptr<PtyDevice> m_nanotec;
-    std::unique_ptr<UiFixture> m_f;
-    std::unique_ptr<QTemporaryDir> m_dir;
+    MachineWindowRig m_rig;
 };
-
-void TestMachineJog::init()
-{
-    QSettings().clear();
-    m_elab = std::make_unique<PtyDevice>(QStringLiteral("elab"));
-    m_nanotec = std::make_unique<PtyDevice>(QStringLiteral("nanotec"));
-    m_dir = std::make_unique<QTemporaryDir>();
-    m_f = std::make_unique<UiFixture>();
-    window()->show();
-    QVERIFY(QTest::qWaitForWindowActive(window()));
-}
-
-void TestMachineJog::cleanup()
-{
-    if (QGuiApplication::mouseButtons() & Qt::LeftButton)
-        QTest::mouseRelease(window()->windowHandle(), Qt::LeftButton);
-    m_f.reset(); // the window stops and closes every controller first
-    m_elab.reset();
-    m_nanotec.reset();
-    m_dir.reset();
-}
 
 // X at most 2 mm/s (800 steps/s), A at most 4 deg/s (400 steps/s) when `limits` is set.
 bool TestMachineJog::openAndConnect(const QByteArray& limits)
 {
     const bool limited = !limits.isEmpty();
-    const QByteArray json = QStringLiteral(R"({
-  "format": "stepdeck-machine", "version": 1, "name": "Jog table",
-  "controllers": [
-    { "id": "table", "model": "elab", "port": "%1" },
-    { "id": "rotary", "model": "nanotec", "port": "%2", "axes": { "X": 1 } }
-  ],
-  "axes": [
-    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400%3 },
-    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
-    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
-    { "name": "A", "controller": "rotary", "axis": "X", "unit": "deg", "stepsPerUnit": 100%4 }
-  ]
-})")
-                                .arg(m_elab->path(), m_nanotec->path(),
-                                     limited ? QStringLiteral(", \"maxJogSpeed\": 2") : QString(),
-                                     limited ? QStringLiteral(", \"maxJogSpeed\": 4") : QString())
-                                .toUtf8();
-    QFile file(m_dir->filePath(QStringLiteral("jog.machine.json")));
-    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size())
-        return false;
-    file.close();
-    if (!window()->openMachine(file.fileName()))
-        return false;
-    window()->machineBar()->connectButton()->click();
-    for (const char* id : {"table", "rotary"}) {
-        ControllerSession* s = machine()->session(QString::fromLatin1(id));
-        if (!QTest::qWaitFor([s] { return s->linkState() == LinkState::Connected; }, 10000))
-            return false;
-    }
-    // The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
-    ControllerSession* table = machine()->session(QStringLiteral("table"));
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    const RequestId id = table->writeParameters(setupBeforeMotionDefaults(*table->model()), false);
-    return QTest::qWaitFor(
-        [&] {
-            return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& args) {
-                const auto r = args.at(0).value<CommandResult>();
-                return r.id == id && r.ok();
-            });
-        },
-        10000);
+    return m_rig.openAndConnect(m_rig.machineJson(
+        QStringLiteral("Jog table"), limited ? QStringLiteral(", \"maxJogSpeed\": 2") : QString(),
+        limited ? QStringLiteral(", \"maxJogSpeed\": 4") : QString()));
 }
 
 void TestMachineJog::waitForPolls(const char* controller, int count)
@@ -185,25 +120,25 @@ void TestMachineJog::jog_padXAndStickA_oneInputDevicesAtUnitRatesLossStopsBoth()
 {
     QVERIFY(openAndConnect("limits"));
     // One gamepad: its left stick is the pad's X, its right stick the other stick's A.
-    m_f->gamepad->plug(true);
-    m_f->gamepad->moveAxis(kLeftX, 1.0);
-    m_f->gamepad->moveAxis(kRightX, 1.0);
-    m_f->gamepad->press(kDeadman, true);
-    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::X), 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_nanotec->moving(Axis::X), 10000);
+    m_rig.f->gamepad->plug(true);
+    m_rig.f->gamepad->moveAxis(kLeftX, 1.0);
+    m_rig.f->gamepad->moveAxis(kRightX, 1.0);
+    m_rig.f->gamepad->press(kDeadman, true);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.nanotec->moving(Axis::X), 10000);
     waitForPolls("rotary", 10);
     // Full deflection at 100 %: 2 mm/s x 400 steps/mm and 4 deg/s x 100 steps/deg.
-    QTRY_COMPARE_WITH_TIMEOUT(highestElabJogX(m_elab->frames()), 800, 10000);
-    QTRY_COMPARE_WITH_TIMEOUT(highestNanotecSpeed(m_nanotec->frames()), 400, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(highestElabJogX(m_rig.elab->frames()), 800, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(highestNanotecSpeed(m_rig.nanotec->frames()), 400, 10000);
     const ui::JogVelocityReadout* readout = window()->jogPanel()->velocityReadout();
     QTRY_COMPARE_WITH_TIMEOUT(readout->valueText(QStringLiteral("A")), QStringLiteral("+4.00"),
                               10000);
     QCOMPARE(readout->unitText(QStringLiteral("A")), QStringLiteral("deg/s"));
     // The one input goes silent (a stalled gamepad driver): nothing renews either lease, so
     // both devices come to a stand.
-    m_f->gamepad->setSampling(false);
-    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_nanotec->still(), 10000);
+    m_rig.f->gamepad->setSampling(false);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.nanotec->still(), 10000);
     QVERIFY(!window()->jogController()->isJogging());
 }
 
@@ -213,15 +148,15 @@ void TestMachineJog::jog_padX_velocityReadoutInMillimetresPerSecond()
     ui::JoystickPad* pad = window()->jogPanel()->xyPad();
     pointerPress(pad, pad->centre());
     pointerMove(pad, pad->pointFor(QPointF(1.0, 0.0)));
-    QTRY_VERIFY_WITH_TIMEOUT(m_elab->moving(Axis::X), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
     const ui::JogVelocityReadout* readout = window()->jogPanel()->velocityReadout();
     QTRY_COMPARE_WITH_TIMEOUT(readout->valueText(QStringLiteral("X")), QStringLiteral("+2.00"),
                               10000);
     QCOMPARE(readout->unitText(QStringLiteral("X")), QStringLiteral("mm/s"));
-    QCOMPARE(highestElabJogX(m_elab->frames()), 800);
-    QVERIFY(!m_nanotec->moving(Axis::X));
+    QCOMPARE(highestElabJogX(m_rig.elab->frames()), 800);
+    QVERIFY(!m_rig.nanotec->moving(Axis::X));
     pointerRelease(pad, pad->pointFor(QPointF(1.0, 0.0)));
-    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
 }
 
 void TestMachineJog::incremental_oneUnitOnXAndA_devicesMoveByStepsPerUnit()
@@ -231,11 +166,11 @@ void TestMachineJog::incremental_oneUnitOnXAndA_devicesMoveByStepsPerUnit()
     QCOMPARE(incremental->unitStepSize(), 1.0); // the third preset: 1 mm or 1 deg
     QVERIFY(incremental->machineButton(QStringLiteral("A"), +1));
     incremental->machineButton(QStringLiteral("X"), +1)->click();
-    QTRY_COMPARE_WITH_TIMEOUT(m_elab->position(Axis::X), qint64(400), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_rig.elab->position(Axis::X), qint64(400), 10000);
     incremental->machineButton(QStringLiteral("A"), -1)->click();
-    QTRY_COMPARE_WITH_TIMEOUT(m_nanotec->position(Axis::X), qint64(-100), 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_elab->still() && m_nanotec->still(), 10000);
-    QCOMPARE(m_elab->position(Axis::X), qint64(400));
+    QTRY_COMPARE_WITH_TIMEOUT(m_rig.nanotec->position(Axis::X), qint64(-100), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still() && m_rig.nanotec->still(), 10000);
+    QCOMPARE(m_rig.elab->position(Axis::X), qint64(400));
 }
 
 void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768_data()
@@ -250,33 +185,11 @@ void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768()
 {
     QFETCH(QString, language);
     ui::translations::install(qApp, language);
-    m_f = std::make_unique<UiFixture>(); // built in the language
+    m_rig.f = std::make_unique<UiFixture>(); // built in the language
     window()->show();
     QVERIFY(QTest::qWaitForWindowActive(window()));
-    const QByteArray json = R"({
-  "format": "stepdeck-machine", "version": 1, "name": "Six-axis cell",
-  "controllers": [
-    { "id": "table", "model": "elab", "port": "sim" },
-    { "id": "wrist", "model": "nanotec", "port": "sim", "axes": { "X": 1, "Y": 2, "Z": 3 } }
-  ],
-  "axes": [
-    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
-    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
-    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 },
-    { "name": "A", "controller": "wrist", "axis": "X", "unit": "deg", "stepsPerUnit": 88.8889 },
-    { "name": "B", "controller": "wrist", "axis": "Y", "unit": "deg", "stepsPerUnit": 100 },
-    { "name": "C", "controller": "wrist", "axis": "Z", "unit": "steps" }
-  ]
-})";
-    QFile file(m_dir->filePath(QStringLiteral("six.machine.json")));
-    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(json) == json.size());
-    file.close();
-    QVERIFY(window()->openMachine(file.fileName()));
-    window()->machineBar()->connectButton()->click();
-    for (const char* id : {"table", "wrist"}) {
-        ControllerSession* s = machine()->session(QString::fromLatin1(id));
-        QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
-    }
+    QVERIFY(m_rig.openAndConnect(MachineWindowRig::sixAxisJson(),
+                                 {QStringLiteral("table"), QStringLiteral("wrist")}));
     ui::JogPanel* panel = window()->jogPanel();
     QComboBox* other = panel->otherStickAxis();
     QCOMPARE(other->count(), 3);

@@ -3,6 +3,7 @@
 // after a reconnect, a long status message moves nothing (jog pad, Z stick, status bar), the
 // window never grows past the screen, and the safety bar, its banners, the DRO rows, the
 // status lamps and the referencing rows show their texts in full.
+#include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
@@ -223,28 +224,10 @@ void TestLayoutHoldsStill::longMessage_movesNothing_textsInFull()
     QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join(QStringLiteral("\n"))));
 }
 
-// The window under test lives on a 1366x768 screen: the offscreen platform reads its screens
-// from a file.
+// The window under test lives on a 1366x768 screen.
 int main(int argc, char** argv)
 {
-    const QString config = QDir::temp().filePath(
-        QStringLiteral("stepdeck-screen-1366x768-%1.json").arg(QCoreApplication::applicationPid()));
-    QFile file(config);
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(R"({"screens": [{"name": "laptop", "x": 0, "y": 0, "width": 1366,
-            "height": 768, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})") < 0)
-        return 2;
-    file.close();
-    qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
-    int result = 0;
-    {
-        QApplication app(argc, argv);
-        TestLayoutHoldsStill test;
-        QTEST_SET_MAIN_SOURCE_PATH
-        result = QTest::qExec(&test, argc, argv);
-    }
-    QFile::remove(config);
-    return result;
+    return stepdeck::test::runOnLaptopScreen<TestLayoutHoldsStill>(argc, argv);
 }
 
 #include "tst_layoutholdsstill.moc"
