@@ -26,18 +26,31 @@ bool everyAxisAtRest(CliMachineSession& m);
 
 constexpr int kStatusWaitMs = 30000; // as CliSession::kRequestTimeoutMs
 
+// The end of motion `id` (ok, message) once the machine's `signal` reported it, while it lives.
+template <typename Signal> struct MotionEnd
+{
+    MotionEnd(CliMachineSession& m, Signal signal, quint64 id)
+    {
+        QObject::connect(&m.machine(), signal, &guard,
+                         [this, id](quint64 finished, bool ok, const QString& message) {
+                             if (finished == id)
+                                 end.emplace(ok, message);
+                         });
+    }
+    MotionEnd(const MotionEnd&) = delete;
+    MotionEnd& operator=(const MotionEnd&) = delete;
+
+    std::optional<std::pair<bool, QString>> end;
+    QObject guard;
+};
+
 // Waits for the end of a move or reference run `id`, signalled by `signal`; past timeoutMs
 // (< 0: none) every controller is stopped and the command exits 5 once the axes stand.
 template <typename Signal>
 Outcome waitMotion(CliMachineSession& m, Signal signal, quint64 id, int timeoutMs)
 {
-    std::optional<std::pair<bool, QString>> end;
-    QObject guard;
-    QObject::connect(&m.machine(), signal, &guard,
-                     [&end, id](quint64 finished, bool ok, const QString& message) {
-                         if (finished == id)
-                             end.emplace(ok, message);
-                     });
+    const MotionEnd<Signal> watch(m, signal, id);
+    const std::optional<std::pair<bool, QString>>& end = watch.end;
     m.waitFor([&] { return end.has_value() || m.linkLost(); }, timeoutMs);
     if (m.interrupted())
         return Outcome::failure(ExitInterrupted, CliText::tr("interrupted"));
@@ -56,13 +69,8 @@ Outcome waitMotion(CliMachineSession& m, Signal signal, quint64 id, int timeoutM
 // queued behind it has finished), or with the part's refusal; the motion goes on.
 template <typename Signal> Outcome leaveRunning(CliMachineSession& m, Signal signal, quint64 id)
 {
-    std::optional<std::pair<bool, QString>> end;
-    QObject guard;
-    QObject::connect(&m.machine(), signal, &guard,
-                     [&end, id](quint64 finished, bool ok, const QString& message) {
-                         if (finished == id)
-                             end.emplace(ok, message);
-                     });
+    const MotionEnd<Signal> watch(m, signal, id);
+    const std::optional<std::pair<bool, QString>>& end = watch.end;
     QMap<QString, RequestId> reads;
     for (const machine::MachineController& c : m.description().controllers)
         reads.insert(c.id, m.machine().session(c.id)->refreshStatus());
