@@ -83,6 +83,7 @@ void MachineDro::rebuild()
     }
     m_rows.clear();
     m_message->clear();
+    m_refusedAxis.clear();
     const machine::Machine* m = m_context->machine();
     // The work offsets of this machine file (none without a machine).
     m_offsets->load(m ? m_context->machinePath() : QString());
@@ -145,7 +146,14 @@ void MachineDro::refresh()
     for (const machine::MachineAxis& axis : m->description().axes) {
         const ControllerSession* s = m->session(axis.controller);
         const bool linked = s && s->linkState() == LinkState::Connected;
-        showAxis(m_rows.value(axis.name), m->axisStatus(axis), linked);
+        const machine::MachineAxisStatus status = m->axisStatus(axis);
+        showAxis(m_rows.value(axis.name), status, linked);
+        // "Position unknown" or "moving" no longer holds: the refusal leaves the line.
+        if (axis.name == m_refusedAxis && status.known != machine::PositionKnowledge::Unknown &&
+            !status.moving) {
+            m_message->clear();
+            m_refusedAxis.clear();
+        }
     }
 }
 
@@ -219,8 +227,10 @@ bool MachineDro::zeroAxis(const QString& axis)
     const machine::MachineAxisStatus status = m->axisStatus(*a);
     if (!m_offsets->zero(axis, status, &refusal)) {
         m_message->setText(refusal);
+        m_refusedAxis = axis; // the refusal goes when its cause does (refresh)
         return false;
     }
+    m_refusedAxis.clear();
     m_message->setText(tr("Work origin of %1 set at machine %2 %3.")
                            .arg(axis, format(*a, status.position), unitWord(a->unit)));
     return true;
@@ -229,6 +239,7 @@ bool MachineDro::zeroAxis(const QString& axis)
 void MachineDro::clearOffsets()
 {
     m_offsets->clear();
+    m_refusedAxis.clear();
     m_message->setText(tr("Work offsets cleared: machine positions are shown."));
 }
 

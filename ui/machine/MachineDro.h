@@ -62,6 +62,7 @@ private:
     QGridLayout* m_grid;
     QToolButton* m_clear;
     ElidedLabel* m_message;
+    QString m_refusedAxis; // the axis whose Zero the message line refuses, if any
     QMap<QString, Row> m_rows;
 };
 

@@ -41,7 +41,7 @@ private Q_SLOTS:
     void referenceAll_machine_everyControllerInTheFilesOrder();
     void referenceAxis_machine_fileRowsShownOnlyThatControllerRuns();
     void zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOffsetPlusTarget();
-    void zero_unknownPosition_refusedWithReasonNoOffset();
+    void zero_unknownPosition_refusedReasonGoneOnceReferenced();
     void zero_reopenMachine_offsetsRemembered();
 
 private:
@@ -221,7 +221,7 @@ void TestMachinePosition::zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOff
 }
 
 // Not referenced since the connect: a work origin there would say nothing about the machine.
-void TestMachinePosition::zero_unknownPosition_refusedWithReasonNoOffset()
+void TestMachinePosition::zero_unknownPosition_refusedReasonGoneOnceReferenced()
 {
     QVERIFY(m_rig.openAndConnect());
     ui::MachineDro* dro = window()->positionPanel()->machineDro();
@@ -231,6 +231,9 @@ void TestMachinePosition::zero_unknownPosition_refusedWithReasonNoOffset()
              qPrintable(dro->messageText()));
     QCOMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("mm"));
     QCOMPARE(window()->positionPanel()->machineGoTo()->labelText(), QStringLiteral("Go to:"));
+    // Once X is referenced the refusal no longer holds and leaves the line.
+    QVERIFY(m_rig.referenceTable());
+    QTRY_VERIFY_WITH_TIMEOUT(dro->messageText().isEmpty(), 10000);
 }
 
 // The offsets belong to the machine file: closing and opening it again brings them back.
