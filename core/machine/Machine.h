@@ -65,7 +65,12 @@ public:
     // targets within the soft limits. Returns the move's id, or 0 with *refusal saying why
     // (nothing was sent). Each controller gets its part back to back; the move ends with
     // moveFinished once every part has, or fails (the others stopped) when one part fails.
-    quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal);
+    // kind Feed (a program's G1 on models with Capabilities::feedRateUsesFeedMode): each part
+    // is the controller's feed move at its feed rate (MotionMode::Feed), relative steps; a
+    // controller without feed moves refuses the whole move.
+    enum class MoveKind { Positioning, Feed };
+    quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal,
+                 MoveKind kind = MoveKind::Positioning);
 
     // Jog rates in unit/s per machine axis, one input for every controller involved: the
     // caller renews them while its input is held (each controller's jog lease,
@@ -147,7 +152,7 @@ private:
     void finishArrivedMoves();
     void failMovesOf(const ControllerSession* session, const QString& message);
     void stopAllBut(const ControllerSession* failed);
-    QString checkMove(const QMap<QString, double>& units, bool absolute,
+    QString checkMove(const QMap<QString, double>& units, bool absolute, MoveKind kind,
                       QList<StepTargets>* plan) const;
     QString checkAxisTarget(const MachineAxis& axis, double value, bool absolute,
                             qint64* steps) const;

@@ -18,10 +18,11 @@ bool restsAt(const MachineStatus& status, const QList<Axis>& axes)
 }
 } // namespace
 
-quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString* refusal)
+quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString* refusal,
+                      MoveKind kind)
 {
     QList<StepTargets> plan;
-    const QString why = checkMove(units, absolute, &plan);
+    const QString why = checkMove(units, absolute, kind, &plan);
     if (!why.isEmpty()) {
         if (refusal)
             *refusal = why;
@@ -39,15 +40,24 @@ quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString
                 part.expected.insert(it.key(), absolute ? it.value() : from + it.value());
             }
         }
-        part.request =
-            absolute ? t.session->moveAbsolute(t.steps) : t.session->moveRelative(t.steps);
+        if (kind == MoveKind::Feed) {
+            // A feed move counts from where the axes stand (absolute targets made relative).
+            AxisVector relative = t.steps;
+            if (absolute)
+                for (auto it = relative.begin(); it != relative.end(); ++it)
+                    it.value() -= t.session->status().axes.value(it.key()).position;
+            part.request = t.session->feed(relative);
+        } else {
+            part.request =
+                absolute ? t.session->moveAbsolute(t.steps) : t.session->moveRelative(t.steps);
+        }
         pending.parts << part;
     }
     m_moves << pending;
     return pending.id;
 }
 
-QString Machine::checkMove(const QMap<QString, double>& units, bool absolute,
+QString Machine::checkMove(const QMap<QString, double>& units, bool absolute, MoveKind kind,
                            QList<StepTargets>* plan) const
 {
     if (units.isEmpty())
@@ -59,6 +69,8 @@ QString Machine::checkMove(const QMap<QString, double>& units, bool absolute,
         ControllerSession* s = session(axis->controller);
         if (s->linkState() != LinkState::Connected)
             return tr("%1: controller \"%2\" is not connected").arg(axis->name, axis->controller);
+        if (kind == MoveKind::Feed && !s->capabilities().has(MotionMode::Feed))
+            return tr("%1: controller \"%2\" has no feed move").arg(axis->name, axis->controller);
         qint64 steps = 0;
         const QString why = checkAxisTarget(*axis, it.value(), absolute, &steps);
         if (!why.isEmpty())

@@ -70,6 +70,16 @@ struct Capabilities
     // previous one arrived, never a target far ahead (laser motor axes).
     bool jogByTargets = false;
     bool doorSwitch = false; // the device reports a door switch (MachineStatus::doorOpen)
+    // How a program's G1 F (docs/programs.md, issue 20) reaches the device: the per-axis
+    // parameter in steps/s (its schema range is the rate's range) that is written before the
+    // move. Null: the model takes no rate (laser motor axes), and G1 is a check error.
+    const char* feedRateParameter = nullptr;
+    // The G1 move runs as MotionMode::Feed (E-LAB: a feed move at its feed speed) rather than
+    // as a positioning move.
+    bool feedRateUsesFeedMode = false;
+    // The parameter is also the speed of positioning moves (Nanotec o, EMIS #E1): a program
+    // reads it before its first G1 and writes it back before a G0 and at its end.
+    bool feedRateSetsRapid = false;
     // What the protocol's positions count: English data, shown through
     // QCoreApplication::translate("Units", positionUnit). Step counters count "steps"; the
     // laser motor-axis protocol's positions are plain numbers 0..99999 whose unit the axis

@@ -39,6 +39,9 @@ Capabilities capabilities()
     caps.hostRampedJog = true;     // "Befehle im Jogbetrieb": the host ramps jog rates
     caps.maxJogSpeed = 5000;       // jog rates are signed 16-bit; this is the UI ceiling
     caps.defaultJogAcceleration = 2000;
+    // G1 F: feed mode (SetFeedSpeed <FS>, a constant rate without ramp); G0 keeps max-speed.
+    caps.feedRateParameter = "feed-speed";
+    caps.feedRateUsesFeedMode = true;
     return caps;
 }
 

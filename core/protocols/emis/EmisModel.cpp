@@ -39,6 +39,9 @@ Capabilities capabilities()
     caps.storedParameters = true;
     caps.inputPrograms = true;
     caps.referenceDirection = false; // "$Hx" has no direction (9.9)
+    // G1 F: the work speed #E1 (9.5) every vector move runs at, G0 too.
+    caps.feedRateParameter = "work-speed";
+    caps.feedRateSetsRapid = true;
     return caps;
 }
 

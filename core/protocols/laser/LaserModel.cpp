@@ -29,6 +29,7 @@ Capabilities capabilities()
     // protocol has no speed, so this only sizes the short targets.
     caps.maxJogSpeed = 2000;
     caps.defaultJogAcceleration = 1e9; // no host ramp: each target is a move of its own
+    // No rate: the protocol's move frame carries a target only (feedRateParameter stays null).
     return caps;
 }
 

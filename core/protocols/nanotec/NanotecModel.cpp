@@ -45,6 +45,9 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.hostRampedJog = false;
     caps.maxJogSpeed = 25000; // 'o' range (6.9)
     caps.defaultJogAcceleration = 1e7;
+    // G1 F: the top speed o (6.9) of the positioning move, which G0 runs at too.
+    caps.feedRateParameter = "max-frequency";
+    caps.feedRateSetsRapid = true;
     return caps;
 }
 

@@ -1,0 +1,107 @@
+#pragma once
+#include "ProgramBlock.h"
+#include "machine/MachineDescription.h"
+#include "model/Capabilities.h"
+#include "model/ParameterSchema.h"
+#include <QCoreApplication>
+#include <QMap>
+
+namespace stepdeck::machine {
+class Machine;
+}
+
+namespace stepdeck::program {
+
+// What the check needs to know of a machine (issue 20, docs/programs.md "Check"): its
+// description, what each controller can do, and where the axes stand now. Gathered from a
+// running Machine by factsOf(), or written by hand in tests. Pure data.
+struct MachineFacts
+{
+    machine::MachineDescription description;
+    QMap<QString, Capabilities> capabilities; // controller id -> its model's capabilities
+    QMap<QString, ParameterSchema> schemas;   // controller id -> its model's schema
+    // Axis name -> position in the axis' unit, for the axes whose position is known now
+    // (referenced, or read back). An axis not listed has an unknown position.
+    QMap<QString, double> knownPositions;
+};
+
+MachineFacts factsOf(const machine::Machine& machine);
+
+// One point of the preview's path: where the axes are (program units converted to the
+// axes' units) after a block, and when, from the estimate.
+struct PreviewPoint
+{
+    int line = 0;                   // the block that ends here
+    double seconds = 0;             // estimated time since the start
+    QMap<QString, double> position; // every axis the program has reached a known position of
+};
+
+struct AxisExtent
+{
+    double minimum = 0;
+    double maximum = 0;
+    bool moved = false; // the program moves this axis at all
+};
+
+// The figures of a checked program (the preview, `run --dry-run`). Everything time-related
+// is an estimate from the rates that are known (G1's F, the axes' fast speed as far as the
+// model's data says it), without acceleration: shown marked "estimated".
+struct ProgramPreview
+{
+    int lines = 0;        // lines in the file
+    qint64 blocksRun = 0; // blocks the run will execute (repeats counted out)
+    double estimatedSeconds = 0;
+    QMap<QString, AxisExtent> extents; // per axis, in its unit, where the position is known
+    // The path, bounded (kMaxPathPoints; later points are left out and pathTruncated set).
+    QList<PreviewPoint> path;
+    bool pathTruncated = false;
+    // How a block's axes move together on this machine: "the axes of a block start together,
+    // each at its own rate; the block ends when every axis has arrived" (no interpolation).
+    QString motionNote;
+
+    static constexpr int kMaxPathPoints = 20000;
+};
+
+struct ProgramCheckResult
+{
+    QList<ProgramError> errors; // every problem, in line order (line, column of the word)
+    ProgramPreview preview;     // valid only without errors
+    bool ok() const { return errors.isEmpty(); }
+};
+
+// Checks a parsed program against a machine before anything moves (docs/programs.md):
+// - every target within the axes' soft limits, following the positions the program itself
+//   reaches (relative moves from known positions; repeats counted out);
+// - absolute moves only on axes whose position is known, or after the program's own G28 of
+//   the axis (a reference run ends at 0 on every model);
+// - G1 only where the axes' controllers take a rate (Capabilities::feedRateParameter), the
+//   rate in steps/s within that parameter's schema range for every axis of the block;
+// - G28 only on controllers with reference runs; M3/M5 a controller with a spindle, M7/M8/M9
+//   one with coolant; M64/M65 an output and M66 an input the machine has (numbered 1.. over
+//   the controllers in the file's order, docs/programs.md "Inputs and outputs").
+// fromLine > 1: the run starts at the first block on or after that line (run from line N);
+// blocks before it are not checked, positions are the machine's as they stand.
+class ProgramCheck
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramCheck)
+public:
+    // Blocks a check executes at most (repeats counted out); a longer program is an error.
+    static constexpr qint64 kMaxBlocksRun = 5000000;
+
+    static ProgramCheckResult check(const Program& program, const MachineFacts& facts,
+                                    int fromLine = 1);
+};
+
+// A machine output or input number (M64/M65/M66 P) on a controller: which one, and its own
+// number (1-based, as MachineStatus and the model operation kSetOutput count).
+struct MachineIo
+{
+    QString controller;
+    int number = 0;
+};
+// The machine's outputs / inputs counted from 1 over the controllers in the file's order
+// (docs/programs.md). nullopt: the machine has no such output / input.
+std::optional<MachineIo> machineOutput(const MachineFacts& facts, int n);
+std::optional<MachineIo> machineInput(const MachineFacts& facts, int n);
+
+} // namespace stepdeck::program

@@ -1,0 +1,130 @@
+#pragma once
+#include "ProgramBlock.h"
+#include "ProgramCheck.h"
+#include "model/CommandResult.h"
+#include <QObject>
+#include <QSet>
+#include <QTimer>
+#include <memory>
+
+namespace stepdeck::machine {
+class Machine;
+}
+
+namespace stepdeck::program {
+
+class ProgramRates;
+
+enum class RunState {
+    Idle,     // nothing started
+    Running,  // a block runs, or the next one starts
+    Paused,   // holding between blocks (M0, Pause, Step); resume() goes on
+    Stopping, // abort asked: the machine's stop is out, waiting for the axes to stand
+    Finished, // M2/M30 or the last block done
+    Failed,   // a refusal, NAK, timeout or link loss during a block: the machine was stopped
+    Aborted,  // abort(), STOP or PANIC
+};
+
+QString runStateText(RunState state); // "running", ... (translated, for screens and the CLI)
+bool isEnded(RunState state);         // Finished, Failed, Aborted
+
+// Runs a checked program on a machine (issue 20, docs/programs.md "Running"), one block at a
+// time: a block starts only when the devices confirmed the previous one (arrival and
+// standstill through Machine::move / Machine::reference, an acknowledged output, spindle or
+// rate write, a dwell's time, an input's level). Nothing is sent ahead. It reaches the
+// controllers only through the Machine and its ControllerSessions. No Widgets.
+//
+// Faults: a refused block, a failed request, a timeout or a lost link stops every controller
+// and ends the program Failed at that line with the reason and its ErrorKind; a program never
+// continues after a fault by itself. abort() (the GUI's STOP and PANIC call it too) stops
+// every controller and ends Aborted once the axes stand; controllers without a stop command
+// (EMIS, laser axes) finish the move under way, and stopping() says so.
+class ProgramRunner : public QObject
+{
+    Q_OBJECT
+public:
+    explicit ProgramRunner(machine::Machine* machine, QObject* parent = nullptr);
+    ~ProgramRunner() override;
+
+    // Checks the program against the machine as it stands (ProgramCheck) and starts it at the
+    // first block on or after fromLine (the modal state is the block's own, rebuilt by the
+    // parser from the lines before it). stepOnly: run one block, then pause. False with
+    // *errors when the check fails or a program runs already: nothing is sent.
+    bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
+               bool stepOnly = false);
+    void pause();  // finish the current block, then hold (pausePending() until then)
+    void resume(); // from Paused: on with the next block
+    void step();   // from Paused: run one block, then pause again
+    void abort();  // stop every controller; ends Aborted once the axes stand
+
+    RunState state() const { return m_state; }
+    int currentLine() const; // the block running or about to run (0: none)
+    qint64 blocksDone() const { return m_blocksDone; }
+    bool pausePending() const { return m_pauseAsked && m_state == RunState::Running; }
+    QString prompt() const { return m_prompt; } // M0's prompt while Paused at it
+    // Why the program ended Failed or Aborted ("line 12: ..."), and the kind of the fault.
+    QString endMessage() const { return m_endMessage; }
+    ErrorKind failureKind() const { return m_failureKind; }
+    const ProgramPreview& preview() const { return m_preview; } // of the check at start()
+
+Q_SIGNALS:
+    void stateChanged(stepdeck::program::RunState state);
+    void blockStarted(int line, const QString& text);
+    void blockFinished(int line);
+    // Paused at M0 (prompt: its comment), after pause() or a step (prompt empty).
+    void paused(int line, const QString& prompt);
+    // abort() while motion on a controller without a stop command runs out (message says so).
+    void stopping(const QString& message);
+    void finished(stepdeck::program::RunState state, const QString& message);
+
+private:
+    struct Loop
+    {
+        int start = 0;        // index of the RepeatStart block
+        qint64 remaining = 0; // iterations left after the current one
+    };
+    void runNext();
+    void startBlock(const ProgramBlock& block);
+    void blockDone();
+    bool advance(); // to the next block that does something; false at the end
+    void startMove(const ProgramBlock& block);
+    void sendMove(const ProgramBlock& block);
+    void startHome(const ProgramBlock& block);
+    void startDwell(const ProgramBlock& block);
+    void startWaitInput(const ProgramBlock& block);
+    void checkInput();
+    void startRequest(const ProgramBlock& block);
+    void onRequestFinished(const CommandResult& result);
+    void onMotionFinished(quint64 id, bool ok, const QString& message);
+    void onControllerFailed(const QString& controllerId, const QString& message);
+    void fail(ErrorKind kind, const QString& message);
+    void end(RunState state, const QString& message);
+    void setState(RunState state);
+    QMap<QString, double> axisTargets(const ProgramBlock& block) const;
+    QString lineText(const QString& message) const;
+
+    machine::Machine* m_machine;
+    Program m_program;
+    ProgramPreview m_preview;
+    RunState m_state = RunState::Idle;
+    int m_index = -1; // the block running or next
+    QList<Loop> m_loops;
+    qint64 m_blocksDone = 0;
+    bool m_pauseAsked = false;
+    bool m_stepOnly = false;
+    bool m_aborting = false;
+    QString m_prompt;
+    QString m_endMessage;
+    ErrorKind m_failureKind = ErrorKind::None;
+    // What the current block waits for.
+    quint64 m_motion = 0; // Machine::move / reference id
+    bool m_motionIsReference = false;
+    QSet<RequestId> m_requests; // session requests of the block (rates, output, spindle)
+    QTimer m_dwell;
+    QTimer m_inputTimeout;
+    int m_waitInput = 0; // M66: the machine input waited for (0: none)
+    std::unique_ptr<ProgramRates> m_rates;
+    QList<QMetaObject::Connection> m_connections;
+};
+
+} // namespace stepdeck::program
