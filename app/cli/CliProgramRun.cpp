@@ -13,6 +13,7 @@
 #include <QSocketNotifier>
 #include <limits>
 #include <memory>
+#include <termios.h>
 #include <unistd.h>
 
 namespace stepdeck::cli {
@@ -125,6 +126,8 @@ private:
                 : CliText::tr("line %1: %2 -- press Enter to go on (Ctrl-C stops)")
                       .arg(line)
                       .arg(prompt));
+        // Only an Enter pressed after the prompt answers it: typed-ahead lines are dropped.
+        ::tcflush(STDIN_FILENO, TCIFLUSH);
         if (!m_notifier) {
             m_notifier = std::make_unique<QSocketNotifier>(STDIN_FILENO, QSocketNotifier::Read);
             QObject::connect(m_notifier.get(), &QSocketNotifier::activated, &m_guard,
