@@ -120,14 +120,14 @@ private:
                 &m_guard, [this] { m_runner.resume(); }, Qt::QueuedConnection);
             return;
         }
+        // Only an Enter pressed after the prompt answers it: typed-ahead lines are dropped.
+        ::tcflush(STDIN_FILENO, TCIFLUSH);
         printProgress(
             prompt.isEmpty()
                 ? CliText::tr("line %1: paused; press Enter to go on (Ctrl-C stops)").arg(line)
                 : CliText::tr("line %1: %2 -- press Enter to go on (Ctrl-C stops)")
                       .arg(line)
                       .arg(prompt));
-        // Only an Enter pressed after the prompt answers it: typed-ahead lines are dropped.
-        ::tcflush(STDIN_FILENO, TCIFLUSH);
         if (!m_notifier) {
             m_notifier = std::make_unique<QSocketNotifier>(STDIN_FILENO, QSocketNotifier::Read);
             QObject::connect(m_notifier.get(), &QSocketNotifier::activated, &m_guard,
