@@ -2,10 +2,12 @@
 // line and column, positions followed through repeats, G28, rates per model, G20, inputs and
 // outputs over several controllers, runs from a line, the preview's figures and bounds, and
 // the docs' example programs checked clean on their model.
+#include "machine/Machine.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include "protocols/Registry.h"
 #include <QDir>
+#include <QSignalSpy>
 #include <QtTest>
 
 using namespace stepdeck;
@@ -128,6 +130,7 @@ private Q_SLOTS:
     void machineIo_numberedOverTheControllers_data();
     void machineIo_numberedOverTheControllers();
     void examples_eachChecksCleanOnItsModel();
+    void factsOf_machineReferencedX_onlyXKnownAtZero();
 };
 
 void TestProgramCheck::check_errors_lineColumnAndMessage_data()
@@ -511,6 +514,34 @@ void TestProgramCheck::examples_eachChecksCleanOnItsModel()
         QVERIFY2(result.ok(), qPrintable(name + ": " + texts(result.errors).join('\n')));
         QVERIFY2(result.preview.blocksRun > 3, qPrintable(name));
     }
+}
+
+void TestProgramCheck::factsOf_machineReferencedX_onlyXKnownAtZero()
+{
+    const ModelInfo* info = findModel("nanotec");
+    const MachineDescription d = MachineDescription::singleController(*info, "sim");
+    Machine machine;
+    QString error;
+    QVERIFY2(machine.create(d, &error), qPrintable(error));
+    const MachineFacts before = factsOf(machine);
+    QCOMPARE(before.description, d);
+    QCOMPARE(before.capabilities.keys(), QStringList{"nanotec"});
+    QCOMPARE(QByteArray(before.capabilities["nanotec"].feedRateParameter),
+             QByteArray("max-frequency"));
+    QVERIFY(before.schemas["nanotec"].find("max-frequency"));
+    QVERIFY(before.knownPositions.isEmpty()); // not even connected
+
+    machine.open();
+    QTRY_COMPARE_WITH_TIMEOUT(machine.session("nanotec")->linkState(), LinkState::Connected, 10000);
+    QVERIFY(factsOf(machine).knownPositions.isEmpty()); // connected, nothing referenced
+    QSignalSpy done(&machine, &Machine::referenceFinished);
+    QVERIFY2(machine.reference({"X"}, &error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 30000);
+    QVERIFY2(done.first().at(1).toBool(), qPrintable(done.first().at(2).toString()));
+    const MachineFacts after = factsOf(machine);
+    // A reference run ends at 0 (docs/programs.md "Check"): what the check assumes after G28.
+    QCOMPARE(after.knownPositions, (QMap<QString, double>{{"X", 0.0}}));
+    machine.destroy();
 }
 
 QTEST_GUILESS_MAIN(TestProgramCheck)
