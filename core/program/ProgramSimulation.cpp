@@ -90,6 +90,8 @@ void ProgramSimulation::execute(PlannedBlock& planned)
 void ProgramSimulation::move(PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
+    if (block.axes.isEmpty())
+        return; // "G0" alone only sets the motion mode
     // The axes of a block start together, each at its own rate: the block lasts as long as
     // its slowest axis (no acceleration: an estimate).
     double seconds = 0;

@@ -46,6 +46,7 @@ MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUn
 // The machines of the tests, by name:
 // "mill": E-LAB "table" X Y Z (mm), laser axes "tilt" A (deg);
 // "io": E-LAB "table" X, EMIS "io1" U and "io2" V (7 outputs and 8 inputs each);
+// "mixed": E-LAB "table" X (mm), Nanotec "rotary" A (deg);
 // "noReference": the mill whose "tilt" has no reference run;
 // "emis", "nanotec": one controller in its steps (MachineDescription::singleController).
 MachineFacts machineFacts(const QString& name)
@@ -56,6 +57,13 @@ MachineFacts machineFacts(const QString& name)
         f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
         f.capabilities.insert(name, info->capabilities);
         f.schemas.insert(name, info->schema);
+        return f;
+    }
+    if (name == QLatin1String("mixed")) {
+        addController(&f, "table", "elab");
+        addController(&f, "rotary", "nanotec");
+        f.description.axes << axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100)
+                           << axis("A", "rotary", Axis::X, AxisUnit::Degree, 100, -360, 360);
         return f;
     }
     if (name == QLatin1String("io")) {
@@ -231,6 +239,12 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "G28\nG1 X1 A10 F100"
         << QStringList{"2:7: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0"};
+    QTest::newRow("G1 of a feed-mode axis with one of a controller without feed moves")
+        << "mixed"
+        << ""
+        << "G28\nG1 X1 A1 F600\nG1 A2\nG1 X2"
+        << QStringList{"2:7: A: controller \"rotary\" has no feed move, which G1 needs here for X "
+                       "(controller \"table\"): move A on a line of its own"};
     QTest::newRow("G28 on a controller without reference runs")
         << "noReference"
         << ""
@@ -374,7 +388,7 @@ void TestProgramCheck::preview_figures_extentsPathAndEstimatedSeconds()
     const Program p = parsed("G28 X0 Y0\n"   // no time known
                              "G0 X50 Y50\n"  // X 50 mm at 50 mm/s, Y at 5000/200 = 25 mm/s: 2 s
                              "G1 X60 F600\n" // 10 mm at 10 mm/s: 1 s
-                             "(dwell)\n"     //
+                             "G0\n"          // only the motion mode: no point, no time
                              "G4 P2\n"       // 2 s
                              "G91 G0 Y-10\n" // 10 mm at 25 mm/s: 0.4 s
                              "M30\n",
@@ -383,7 +397,7 @@ void TestProgramCheck::preview_figures_extentsPathAndEstimatedSeconds()
     QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
     const ProgramPreview& v = result.preview;
     QCOMPARE(v.lines, 7);
-    QCOMPARE(v.blocksRun, qint64(6));
+    QCOMPARE(v.blocksRun, qint64(7));
     QCOMPARE(v.estimatedSeconds, 5.4);
     QCOMPARE(v.extents.keys(), (QStringList{"X", "Y", "Z"})); // A never known
     QCOMPARE(v.extents["X"].minimum, 0.0);
