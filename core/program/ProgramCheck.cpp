@@ -4,6 +4,7 @@
 #include "ProgramCheck.h"
 #include "ProgramParser.h"
 #include "ProgramSimulation.h"
+#include <QSet>
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -61,6 +62,51 @@ void sortAndLimit(QList<ProgramError>* errors)
                                 .arg(ProgramParser::kMaxErrors)};
 }
 
+// A G1 on a controller whose rate is also its fast speed (Capabilities::feedRateSetsRapid) is
+// followed by the fast speed put back before a G0 (ProgramRates): only where the model can read
+// that speed back first. Where it cannot (EMIS #E1), a G0 on such a controller in a program
+// that also has a G1 there would run at the last F: refused at every such G0.
+void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
+                           QList<ProgramError>* errors)
+{
+    const machine::MachineDescription& d = facts.description;
+    const auto unreadableRate = [&](const QString& controller) -> QString {
+        const Capabilities caps = facts.capabilities.value(controller);
+        if (!caps.feedRateSetsRapid || !caps.feedRateParameter)
+            return {};
+        const ParameterSpec* spec =
+            facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
+        return spec && !spec->readable ? spec->label : QString();
+    };
+    QSet<QString> withG1;
+    for (qsizetype i = start; i < program.blocks.size(); ++i) {
+        const ProgramBlock& b = program.blocks.at(i);
+        if (b.kind == BlockKind::Feed)
+            for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it)
+                if (const machine::MachineAxis* a = d.axis(it.key()))
+                    withG1.insert(a->controller);
+    }
+    for (qsizetype i = start; i < program.blocks.size(); ++i) {
+        const ProgramBlock& b = program.blocks.at(i);
+        if (b.kind != BlockKind::Rapid)
+            continue;
+        for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it) {
+            const machine::MachineAxis* a = d.axis(it.key());
+            if (!a || !withG1.contains(a->controller))
+                continue;
+            if (const QString label = unreadableRate(a->controller); !label.isEmpty()) {
+                *errors << ProgramError{
+                    b.line, b.columnOf(a->name),
+                    ProgramCheck::tr("%1: G0 in a program with G1 on controller \"%2\": its "
+                                     "fast speed (%3) cannot be read back to be put back after "
+                                     "G1; move %1 with G1 and F only, or with G0 only")
+                        .arg(a->name, a->controller, label)};
+                break;
+            }
+        }
+    }
+}
+
 } // namespace
 
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
@@ -78,6 +124,7 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
     ProgramPlan plan(facts, &result.errors);
     for (qsizetype i = start; i < program.blocks.size(); ++i)
         planned[size_t(i)] = plan.plan(program.blocks.at(i));
+    checkFastSpeedPutBack(program, start, facts, &result.errors);
     ProgramSimulation(facts, &planned, &result.errors).run(start, &preview);
     sortAndLimit(&result.errors);
     return result;

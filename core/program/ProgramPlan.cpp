@@ -91,32 +91,6 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         }
         out->moves.push_back(m);
     }
-    if (block.kind == BlockKind::Feed)
-        checkFeedMode(block, *out);
-}
-
-// A G1 with an axis of a controller that feeds in feed mode (E-LAB) is one Machine::move of
-// kind Feed, which every controller of the block must have (Machine.h).
-void ProgramPlan::checkFeedMode(const ProgramBlock& block, const PlannedBlock& planned)
-{
-    const machine::MachineAxis* feedAxis = nullptr;
-    for (const AxisMove& m : planned.moves) {
-        const machine::MachineAxis& axis = m_facts.description.axes.at(m.axis);
-        if (m_facts.capabilities.value(axis.controller).feedRateUsesFeedMode) {
-            feedAxis = &axis;
-            break;
-        }
-    }
-    if (!feedAxis)
-        return;
-    for (const AxisMove& m : planned.moves) {
-        const machine::MachineAxis& axis = m_facts.description.axes.at(m.axis);
-        if (!m_facts.capabilities.value(axis.controller).has(MotionMode::Feed))
-            error(block, m.column,
-                  ProgramCheck::tr("%1: controller \"%2\" has no feed move, which G1 needs here "
-                                   "for %3 (controller \"%4\"): move %1 on a line of its own")
-                      .arg(axis.name, axis.controller, feedAxis->name, feedAxis->controller));
-    }
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s

@@ -81,10 +81,11 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     }
     m_program = program;
     m_preview = checked.preview;
-    m_index = -1;
-    for (int i = 0; i < m_program.blocks.size() && m_index < 0; ++i)
-        if (m_program.blocks.at(i).line >= fromLine)
-            m_index = i - 1; // advance() steps onto it
+    // advance() steps onto the first block on or after fromLine.
+    int first = 0;
+    while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)
+        ++first;
+    m_index = first - 1;
     m_loops.clear();
     m_blocksDone = 0;
     m_pauseAsked = false;

@@ -41,7 +41,6 @@ private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
-    void checkFeedMode(const ProgramBlock& block, const PlannedBlock& planned);
     void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
     void checkIo(const ProgramBlock& block);
     void error(const ProgramBlock& block, int column, const QString& message);

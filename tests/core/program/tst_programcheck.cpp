@@ -239,12 +239,12 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "G28\nG1 X1 A10 F100"
         << QStringList{"2:7: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0"};
-    QTest::newRow("G1 of a feed-mode axis with one of a controller without feed moves")
+    // Machine::move runs each controller's part at its own rate: the board's X as a feed move,
+    // the drive's A as a positioning move at its top speed o.
+    QTest::newRow("G1 of a feed-mode axis and a positioning one: each at its rate")
         << "mixed"
         << ""
-        << "G28\nG1 X1 A1 F600\nG1 A2\nG1 X2"
-        << QStringList{"2:7: A: controller \"rotary\" has no feed move, which G1 needs here for X "
-                       "(controller \"table\"): move A on a line of its own"};
+        << "G28\nG1 X1 A1 F600\nG1 A2\nG1 X2" << QStringList{};
     QTest::newRow("G28 on a controller without reference runs")
         << "noReference"
         << ""
@@ -253,6 +253,21 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "noReference"
         << ""
         << "G21 G28" << QStringList{"1:5: A: controller \"tilt\" has no reference run (G28)"};
+    // EMIS #E1 is G0's speed too and cannot be read back to be put back after a G1.
+    QTest::newRow("G0 and G1 on the EMIS")
+        << "emis"
+        << ""
+        << "G91 G1 X10 F600\nG0 X-10\nG0 Y5"
+        << QStringList{"2:4: X: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move X with G1 "
+                       "and F only, or with G0 only",
+                       "3:4: Y: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move Y with G1 "
+                       "and F only, or with G0 only"};
+    // Nanotec o is read before the first G1 and put back before the G0.
+    QTest::newRow("G0 and G1 on the Nanotec") << "nanotec"
+                                              << ""
+                                              << "G91 G1 X10 F6000\nG0 X-10" << QStringList{};
     QTest::newRow("M3 without a spindle")
         << "emis"
         << ""
