@@ -185,10 +185,12 @@ Outcome endOutcome(CliMachineSession& m, const ProgramRunner& runner, const Paus
     case RunState::Failed:
         if (m.linkLost())
             return Outcome::failure(ExitLinkDown, runner.endMessage());
-        return Outcome::failure(runner.failureKind() == ErrorKind::None
-                                    ? int(ExitMotionAborted)
-                                    : exitCodeFor(runner.failureKind()),
-                                runner.endMessage());
+        if (runner.failureKind() != ErrorKind::None)
+            return Outcome::failure(exitCodeFor(runner.failureKind()), runner.endMessage());
+        // A move the machine ended as failed may reach the runner before the request result
+        // that says why: the session's last failed request tells (as for `move`), else the
+        // move ended short (exit 13).
+        return m.motionFailure(runner.endMessage());
     default:
         break;
     }

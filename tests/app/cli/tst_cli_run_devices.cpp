@@ -154,7 +154,7 @@ void TestCliRunDevices::refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenF
     const QString path = writeProgram(*m_dir, "nak.ngc", "G91\nG0 X100\nG0 X200\nG0 X300\n");
     device.afterMove(1, [](Simulator* sim) { sim->faults().forceNak = 1; });
     CliRun r = runCli(cliArgs("elab", device.path()) + QStringList{"run", path});
-    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.exitCode == 4, r.err.constData());
     QVERIFY2(r.err.contains("line 3"), r.err.constData());
     QList<DeviceMove> moves = device.moves();
     QCOMPARE(moves.size(), 1);
