@@ -95,6 +95,14 @@ public:
         });
     }
 
+    void vanish() // the USB adapter pulled
+    {
+        probe([this] {
+            m_end->vanish();
+            return true;
+        });
+    }
+
     QList<DeviceMove> moves()
     {
         return probe([this] { return m_moves; });

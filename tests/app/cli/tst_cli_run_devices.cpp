@@ -3,6 +3,7 @@
 // a signal, a refused block and M66 end the run as docs/cli.md says. Each simulator is on a real
 // pty in a thread of this process (CliRunRig.h); the assertions are about what the DEVICE did.
 #include "CliRunRig.h"
+#include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
 #include <QtTest>
 #include <csignal>
@@ -47,6 +48,7 @@ private Q_SLOTS:
     void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld();
     void sigint_duringABlock_deviceStandsStillNextBlockNeverArrives();
     void refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenFromLineRunsOn();
+    void linkLost_duringABlock_exit6NamesTheLine();
     void waitInput_goesHighAfterASecond_runOnThenTimeoutExit5();
 
 private:
@@ -81,6 +83,11 @@ void TestCliRunDevices::sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwell
 {
     QFETCH(QString, model);
     RunDevice device(model);
+    if (model == QLatin1String("elab")) // its reference switch near, so G28 is short
+        device.probe([&device] {
+            static_cast<elab::ElabSimulator*>(device.sim())->setPosition(Axis::X, -19800);
+            return true;
+        });
     const bool outputs = model == QLatin1String("emis");
     const QString path = writeProgram(*m_dir, "common.ngc", commonProgram(outputs));
     const CliRun r = runCli(cliArgs(model, device.path()) + QStringList{"run", path});
@@ -168,6 +175,23 @@ void TestCliRunDevices::refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenF
     QCOMPARE(moves.at(1).steps, qint64(200));
     QCOMPARE(moves.at(2).steps, qint64(300));
     QCOMPARE(device.position(), qint64(600)); // no reference run: the board counts from 0
+}
+
+// The port vanishes while a block's move runs: exit 6 naming the line, not a hang.
+void TestCliRunDevices::linkLost_duringABlock_exit6NamesTheLine()
+{
+    RunDevice device(QStringLiteral("elab"));
+    const QString path = writeProgram(*m_dir, "lost.ngc", "G91\nG0 X30000\nG0 X100\n");
+    QProcess cli;
+    cli.start(cliPath(), cliArgs("elab", device.path()) + QStringList{"run", path});
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(device.moving(), 20000);
+    device.vanish();
+    QVERIFY(cli.waitForFinished(20000));
+    const QByteArray err = cli.readAllStandardError();
+    QVERIFY2(cli.exitCode() == 6, err.constData());
+    QVERIFY2(err.contains("line 2"), err.constData());
+    QCOMPARE(device.moves().size(), 1);
 }
 
 // M66 P5 L3: EMIS' free input 5 goes high 1 s after the start; the move after it comes only
