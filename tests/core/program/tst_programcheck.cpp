@@ -133,6 +133,7 @@ private Q_SLOTS:
     void check_fromLine_startOrRefusal();
     void preview_figures_extentsPathAndEstimatedSeconds();
     void preview_millionPassRepeat_countedOutPathBounded();
+    void check_axisTheMachineLacks_named();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
     void check_manyErrors_listedUpToTheParsersLimit();
     void machineIo_numberedOverTheControllers_data();
@@ -434,6 +435,19 @@ void TestProgramCheck::preview_millionPassRepeat_countedOutPathBounded()
     // 1 mm at 50 mm/s each, summed two million times.
     QVERIFY(qAbs(result.preview.estimatedSeconds - 2000000 * 1.0 / 50) < 1e-3);
     QCOMPARE(result.preview.extents["X"].maximum, 1.0);
+}
+
+// A program parsed for other axes than the machine checked against (the machine file changed
+// between reading and running).
+void TestProgramCheck::check_axisTheMachineLacks_named()
+{
+    const MachineFacts facts = machineFacts("mill");
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("G28 B0\nG91 G0 X1 B2", {"X", "B"}, &errors);
+    QVERIFY(p);
+    QCOMPARE(texts(ProgramCheck::check(*p, facts).errors),
+             (QStringList{"1:5: the machine has no axis B", "2:11: the machine has no axis B"}));
 }
 
 void TestProgramCheck::check_tooManyBlocks_namedAtTheOutermostRepeat()
