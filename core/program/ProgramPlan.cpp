@@ -82,8 +82,9 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         const machine::MachineAxis& axis = d.axes.at(m.axis);
         m.value = units::toAxisUnits(axis, it.value(), block.inches);
         if (block.kind == BlockKind::Feed) {
-            if (!checkRate(block, axis, &m.speed))
-                continue;
+            // A refused rate still moves the axis in the walk, so what follows is judged
+            // from where the program means it to be (its time stays unknown).
+            checkRate(block, axis, &m.speed);
         } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
             m.speed = *axis.maxJogSpeed;
         } else {
@@ -111,7 +112,8 @@ void ProgramPlan::checkFeedMode(const ProgramBlock& block, const PlannedBlock& p
         return;
     for (const AxisMove& m : planned.moves) {
         const machine::MachineAxis& axis = m_facts.description.axes.at(m.axis);
-        if (!m_facts.capabilities.value(axis.controller).has(MotionMode::Feed))
+        const Capabilities caps = m_facts.capabilities.value(axis.controller);
+        if (caps.feedRateParameter && !caps.has(MotionMode::Feed)) // else named already
             error(block, m.column,
                   ProgramCheck::tr("%1: controller \"%2\" has no feed move, which G1 needs here "
                                    "for %3 (controller \"%4\"): move %1 on a line of its own")
@@ -120,7 +122,8 @@ void ProgramPlan::checkFeedMode(const ProgramBlock& block, const PlannedBlock& p
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s
-// within the parameter's schema range). *speed: the rate the device runs, in unit/s.
+// within the parameter's schema range). *speed: the rate the device runs, in unit/s (left 0
+// when refused).
 bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxis& axis,
                             double* speed)
 {

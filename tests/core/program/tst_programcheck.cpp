@@ -212,6 +212,13 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "G28 X0\nG1 X10 F40000"
         << QStringList{"2:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
+    QTest::newRow("a refused rate still moves the axis in the walk")
+        << "mill"
+        << ""
+        << "G28 X0\nG91 G1 X101 F40000"
+        << QStringList{"2:8: X reaches 101 mm, outside the soft limits 0..100 mm",
+                       "2:13: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+                       "steps/s (Feed speed)"};
     QTest::newRow("G1 rate within the E-LAB feed speed")
         << "mill"
         << ""
@@ -297,9 +304,9 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
     QTest::newRow("every problem, in line order")
         << "mill"
         << "Y=0"
-        << "G0 X1\nM64 P1\nG1 A1 F10\nG0 Y300"
+        << "G0 X1\nM64 P1\nG91 G1 A1 F10\nG0 Y300"
         << QStringList{"1:4: " + unknownX, "2:5: M64 P1: the machine has no digital outputs",
-                       "3:4: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
+                       "3:8: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0",
                        "4:4: Y reaches 300 mm, outside the soft limits 0..200 mm"};
     QTest::newRow("repeat of count 0: its moves never run")
