@@ -40,15 +40,19 @@ void ProgramSimulation::run(int start, ProgramPreview* preview)
             if (block.count <= 0 || planned.partner < 0) {
                 i = planned.partner < 0 ? i + 1 : planned.partner + 1;
             } else {
-                m_loops.push_back(Loop{i, block.count - 1});
+                m_loops.push_back(Loop{i, block.count - 1, m_blocksRun});
                 ++i;
             }
             continue;
         }
         if (block.kind == BlockKind::RepeatEnd) {
             if (!m_loops.empty() && m_loops.back().start == planned.partner) {
-                if (m_loops.back().remaining > 0) {
-                    --m_loops.back().remaining;
+                Loop& loop = m_loops.back();
+                // A pass that ran no block (only empty repeats inside) is every pass: the
+                // rest are skipped, so that nested empty repeats cannot spin for 10^12 passes.
+                if (loop.remaining > 0 && m_blocksRun > loop.blocksBefore) {
+                    --loop.remaining;
+                    loop.blocksBefore = m_blocksRun;
                     i = planned.partner + 1;
                     continue;
                 }

@@ -66,6 +66,7 @@ private:
     {
         int start = 0;        // index of the RepeatStart
         qint64 remaining = 0; // passes left after the current one
+        qint64 blocksBefore;  // m_blocksRun when the current pass began
     };
     void execute(PlannedBlock& planned);
     void move(PlannedBlock& planned);

@@ -134,6 +134,7 @@ private Q_SLOTS:
     void preview_figures_extentsPathAndEstimatedSeconds();
     void preview_millionPassRepeat_countedOutPathBounded();
     void check_axisTheMachineLacks_named();
+    void check_nestedEmptyRepeats_endQuickly();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
     void check_manyErrors_listedUpToTheParsersLimit();
     void machineIo_numberedOverTheControllers_data();
@@ -455,6 +456,18 @@ void TestProgramCheck::check_axisTheMachineLacks_named()
     QVERIFY(p);
     QCOMPARE(texts(ProgramCheck::check(*p, facts).errors),
              (QStringList{"1:5: the machine has no axis B", "2:11: the machine has no axis B"}));
+}
+
+// 10^6 passes of 10^6 passes of nothing: no block runs, so the walk must not spin 10^12 times.
+void TestProgramCheck::check_nestedEmptyRepeats_endQuickly()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p = parsed("O1 repeat [1000000]\n O2 repeat [1000000]\n  O3 repeat [1000000]\n"
+                             "  O3 endrepeat\n O2 endrepeat\nO1 endrepeat\nM5",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY(result.ok());
+    QCOMPARE(result.preview.blocksRun, qint64(1));
 }
 
 void TestProgramCheck::check_tooManyBlocks_namedAtTheOutermostRepeat()
