@@ -11,7 +11,7 @@ namespace stepdeck::program {
 namespace {
 
 // The index of the block a run from `fromLine` starts at, or -1 with the reason in *errors.
-int startIndex(const Program& program, int fromLine, QList<ProgramError>* errors)
+int startIndex(const Program& program, int fromLine, CheckErrors* errors)
 {
     const QList<ProgramBlock>& blocks = program.blocks;
     if (fromLine <= 1)
@@ -45,23 +45,41 @@ int startIndex(const Program& program, int fromLine, QList<ProgramError>* errors
     return start;
 }
 
-// Line order; at most ProgramParser::kMaxErrors, as the parser lists them.
-void sortAndLimit(QList<ProgramError>* errors)
+} // namespace
+
+CheckErrors& CheckErrors::operator<<(const ProgramError& error)
 {
-    std::stable_sort(errors->begin(), errors->end(),
+    m_lastLine = std::max(m_lastLine, error.line);
+    m_errors << error;
+    if (m_errors.size() >= 4 * ProgramParser::kMaxErrors)
+        prune();
+    return *this;
+}
+
+// Keeps the first kMaxErrors in line order; the rest can never be listed.
+void CheckErrors::prune()
+{
+    std::stable_sort(m_errors.begin(), m_errors.end(),
                      [](const ProgramError& a, const ProgramError& b) {
                          return a.line != b.line ? a.line < b.line : a.column < b.column;
                      });
-    if (errors->size() <= ProgramParser::kMaxErrors)
-        return;
-    const int lastLine = errors->last().line;
-    errors->resize(ProgramParser::kMaxErrors);
-    *errors << ProgramError{lastLine, 1,
-                            ProgramCheck::tr("more errors follow; only the first %1 are listed")
-                                .arg(ProgramParser::kMaxErrors)};
+    if (m_errors.size() > ProgramParser::kMaxErrors) {
+        m_errors.resize(ProgramParser::kMaxErrors);
+        m_dropped = true;
+    }
 }
 
-} // namespace
+QList<ProgramError> CheckErrors::take()
+{
+    prune();
+    QList<ProgramError> out = std::move(m_errors);
+    m_errors.clear();
+    if (m_dropped)
+        out << ProgramError{m_lastLine, 1,
+                            ProgramCheck::tr("more errors follow; only the first %1 are listed")
+                                .arg(ProgramParser::kMaxErrors)};
+    return out;
+}
 
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
                                        int fromLine)
@@ -71,15 +89,18 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
     preview.lines = program.lines;
     preview.motionNote = tr("the axes of a block start together, each at its own rate; the "
                             "block ends when every axis has arrived");
-    const int start = startIndex(program, fromLine, &result.errors);
-    if (start < 0)
+    CheckErrors errors;
+    const int start = startIndex(program, fromLine, &errors);
+    if (start < 0) {
+        result.errors = errors.take();
         return result;
+    }
     std::vector<PlannedBlock> planned(size_t(program.blocks.size()));
-    ProgramPlan plan(facts, &result.errors);
+    ProgramPlan plan(facts, &errors);
     for (qsizetype i = start; i < program.blocks.size(); ++i)
         planned[size_t(i)] = plan.plan(program.blocks.at(i));
-    ProgramSimulation(facts, &planned, &result.errors).run(start, &preview);
-    sortAndLimit(&result.errors);
+    ProgramSimulation(facts, &planned, &errors).run(start, &preview);
+    result.errors = errors.take();
     return result;
 }
 

@@ -26,7 +26,7 @@ QString figure(double value)
     return text == QLatin1String("-0") ? QStringLiteral("0") : text;
 }
 
-ProgramPlan::ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors)
+ProgramPlan::ProgramPlan(const MachineFacts& facts, CheckErrors* errors)
     : m_facts(facts), m_errors(errors)
 {}
 

@@ -7,7 +7,7 @@
 namespace stepdeck::program {
 
 ProgramSimulation::ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
-                                     QList<ProgramError>* errors)
+                                     CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_blocks(*blocks), m_errors(errors)
 {
     const size_t n = size_t(m_axes.size());

@@ -25,6 +25,21 @@ struct PlannedBlock
     int partner = -1;            // repeats: the other end's index
 };
 
+// The check's errors, bounded however many a program has: the first ProgramParser::kMaxErrors
+// in line order (and column) are kept exactly, and a last line says that more follow.
+class CheckErrors
+{
+public:
+    CheckErrors& operator<<(const ProgramError& error);
+    QList<ProgramError> take(); // in line order, at most kMaxErrors + the "more follow" line
+
+private:
+    void prune();
+    QList<ProgramError> m_errors;
+    bool m_dropped = false;
+    int m_lastLine = 0;
+};
+
 // "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
 QString figure(double value);
 
@@ -34,7 +49,7 @@ QString figure(double value);
 class ProgramPlan
 {
 public:
-    ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors);
+    ProgramPlan(const MachineFacts& facts, CheckErrors* errors);
     PlannedBlock plan(const ProgramBlock& block);
 
 private:
@@ -47,7 +62,7 @@ private:
     void error(const ProgramBlock& block, int column, const QString& message);
 
     const MachineFacts& m_facts;
-    QList<ProgramError>* m_errors;
+    CheckErrors* m_errors;
 };
 
 // Walks the planned blocks from `start` as the run will (repeats counted out, at most
@@ -58,7 +73,7 @@ class ProgramSimulation
 {
 public:
     ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
-                      QList<ProgramError>* errors);
+                      CheckErrors* errors);
     void run(int start, ProgramPreview* preview);
 
 private:
@@ -80,7 +95,7 @@ private:
     const MachineFacts& m_facts;
     const QList<machine::MachineAxis>& m_axes;
     std::vector<PlannedBlock>& m_blocks;
-    QList<ProgramError>* m_errors;
+    CheckErrors* m_errors;
     // Per axis (the description's order).
     std::vector<qint64> m_steps; // the device's count the axis would hold
     std::vector<char> m_known;

@@ -492,12 +492,18 @@ void TestProgramCheck::check_manyErrors_listedUpToTheParsersLimit()
 {
     const MachineFacts facts = machineFacts("mill");
     QString text;
-    for (int i = 0; i < 150; ++i)
+    // Errors of the walk (line 1 last, after the walk of a repeat) and of the blocks (every
+    // line), more than the list keeps while it collects them.
+    text += "G0 X1\n";
+    for (int i = 1; i < 1000; ++i)
         text += "M64 P1\n"; // the mill has no outputs
     const ProgramCheckResult result = ProgramCheck::check(parsed(text, facts), facts);
     QCOMPARE(result.errors.size(), ProgramParser::kMaxErrors + 1);
     QCOMPARE(result.errors.first().line, 1);
+    QVERIFY(result.errors.first().message.contains("position is unknown"));
+    QCOMPARE(result.errors.at(1).line, 2);
     QCOMPARE(result.errors.at(ProgramParser::kMaxErrors - 1).line, ProgramParser::kMaxErrors);
+    QCOMPARE(result.errors.last().line, 1000);
     QCOMPARE(result.errors.last().message,
              QString("more errors follow; only the first 100 are listed"));
 }
