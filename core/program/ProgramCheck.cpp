@@ -66,6 +66,7 @@ void CheckErrors::prune()
     if (m_errors.size() > ProgramParser::kMaxErrors) {
         m_errors.resize(ProgramParser::kMaxErrors);
         m_dropped = true;
+        m_cutoffLine = m_errors.last().line;
     }
 }
 
@@ -95,10 +96,11 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
         result.errors = errors.take();
         return result;
     }
-    std::vector<PlannedBlock> planned(size_t(program.blocks.size()));
-    ProgramPlan plan(facts, &errors);
+    PlannedProgram planned;
+    planned.blocks.resize(size_t(program.blocks.size()));
+    ProgramPlan plan(facts, &planned, &errors);
     for (qsizetype i = start; i < program.blocks.size(); ++i)
-        planned[size_t(i)] = plan.plan(program.blocks.at(i));
+        plan.plan(int(i), program.blocks.at(i));
     ProgramSimulation(facts, &planned, &errors).run(start, &preview);
     result.errors = errors.take();
     return result;

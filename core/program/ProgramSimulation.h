@@ -2,6 +2,7 @@
 // Internal to ProgramCheck: a program's blocks planned in the machine's terms (ProgramPlan.cpp)
 // and walked with their repeats counted out (ProgramSimulation.cpp).
 #include "ProgramCheck.h"
+#include <algorithm>
 #include <vector>
 
 namespace stepdeck::program {
@@ -21,8 +22,17 @@ struct AxisMove
 struct PlannedBlock
 {
     const ProgramBlock* block = nullptr;
-    std::vector<AxisMove> moves; // G0/G1: the axis words; G28: the axes it references
-    int partner = -1;            // repeats: the other end's index
+    // G0/G1: its axis words, G28: the axes it references, as PlannedProgram::moves[first,
+    // first + count): one array for the whole program, not one per block.
+    int firstMove = 0;
+    int moveCount = 0;
+    int partner = -1; // repeats: the other end's index
+};
+
+struct PlannedProgram
+{
+    std::vector<PlannedBlock> blocks; // index as in Program::blocks (before the start: empty)
+    std::vector<AxisMove> moves;
 };
 
 // The check's errors, bounded however many a program has: the first ProgramParser::kMaxErrors
@@ -31,6 +41,17 @@ class CheckErrors
 {
 public:
     CheckErrors& operator<<(const ProgramError& error);
+    // Adds an error; message() is called (the text formatted) only while the error can still
+    // be listed, so that a million errors cost no million messages.
+    template <typename Message> void add(int line, int column, const Message& message)
+    {
+        if (m_cutoffLine > 0 && line > m_cutoffLine) {
+            m_lastLine = std::max(m_lastLine, line);
+            m_dropped = true;
+            return;
+        }
+        *this << ProgramError{line, column, message()};
+    }
     QList<ProgramError> take(); // in line order, at most kMaxErrors + the "more follow" line
 
 private:
@@ -38,6 +59,7 @@ private:
     QList<ProgramError> m_errors;
     bool m_dropped = false;
     int m_lastLine = 0;
+    int m_cutoffLine = 0; // once pruned: errors after this line can never be listed
 };
 
 // "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
@@ -49,19 +71,25 @@ QString figure(double value);
 class ProgramPlan
 {
 public:
-    ProgramPlan(const MachineFacts& facts, CheckErrors* errors);
-    PlannedBlock plan(const ProgramBlock& block);
+    ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors);
+    void plan(int index, const ProgramBlock& block); // into out->blocks[index]
 
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
+    void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
     void checkFeedMode(const ProgramBlock& block, const PlannedBlock& planned);
     void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
     void checkIo(const ProgramBlock& block);
-    void error(const ProgramBlock& block, int column, const QString& message);
+    template <typename Message>
+    void error(const ProgramBlock& block, int column, const Message& message)
+    {
+        m_errors->add(block.line, column, message);
+    }
 
     const MachineFacts& m_facts;
+    PlannedProgram& m_out;
     CheckErrors* m_errors;
 };
 
@@ -72,8 +100,7 @@ private:
 class ProgramSimulation
 {
 public:
-    ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
-                      CheckErrors* errors);
+    ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned, CheckErrors* errors);
     void run(int start, ProgramPreview* preview);
 
 private:
@@ -95,6 +122,7 @@ private:
     const MachineFacts& m_facts;
     const QList<machine::MachineAxis>& m_axes;
     std::vector<PlannedBlock>& m_blocks;
+    std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
     // Per axis (the description's order).
     std::vector<qint64> m_steps; // the device's count the axis would hold
