@@ -107,7 +107,11 @@ public:
     {
         return probe([this] { return m_moves; });
     }
-    QList<qint64> restTimes() // device clock: when X came to rest, in order
+    // Device clock, per time X came to rest: the last moment it was still seen moving. The
+    // stop lies between that and the next look (a 2 ms timer and every frame received), so
+    // `accepted - restTime >= P` never fails on a late timer, and a dwell short by more than
+    // one look's gap still fails.
+    QList<qint64> restTimes()
     {
         return probe([this] { return m_rests; });
     }
@@ -135,6 +139,7 @@ public:
 private:
     void before()
     {
+        sample();
         m_wasMoving.clear();
         for (Axis a : m_model->capabilities.axes)
             m_wasMoving.insert(a, m_sim->isMoving(a));
@@ -155,7 +160,9 @@ private:
     {
         const bool moving = m_sim->isMoving(Axis::X);
         if (m_xMoving && !moving)
-            m_rests.append(m_clock.elapsed());
+            m_rests.append(m_lastSeenMovingMs);
+        if (moving)
+            m_lastSeenMovingMs = m_clock.elapsed();
         m_xMoving = moving;
     }
 
@@ -171,6 +178,7 @@ private:
     QList<DeviceMove> m_moves;
     QList<qint64> m_rests;
     bool m_xMoving = false;
+    qint64 m_lastSeenMovingMs = 0;
     int m_afterMove = -1;
     std::function<void(Simulator*)> m_onMove;
     QString m_path;
