@@ -94,6 +94,7 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     m_prompt.clear();
     m_endMessage.clear();
     m_failureKind = ErrorKind::None;
+    ++m_run;
     m_rates = std::make_unique<ProgramRates>(m_machine);
     connectMachine();
     setState(RunState::Running);

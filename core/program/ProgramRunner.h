@@ -95,6 +95,7 @@ private:
     void blockDone();
     void finishProgram();
     void fail(ErrorKind kind, const QString& message);
+    void failSoon(ErrorKind kind, const QString& message); // once the signal emission is over
     void end(RunState state, const QString& message);
     void setState(RunState state);
     QString lineText(const QString& message) const;
@@ -126,6 +127,7 @@ private:
     QString m_prompt;
     QString m_endMessage;
     ErrorKind m_failureKind = ErrorKind::None;
+    quint64 m_run = 0; // counts start(): a queued fault of an earlier run is dropped
     // What the current block waits for.
     quint64 m_motion = 0;       // Machine::move / reference id
     QSet<RequestId> m_requests; // session requests of the block (rates, output, spindle)

@@ -202,10 +202,26 @@ void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message
         return;
     }
     if (!ok) {
-        fail(m_blockError, message); // None: ended short (an end switch, a stop from elsewhere)
+        failSoon(ErrorKind::None, message);
         return;
     }
     blockDone();
+}
+
+// The machine reports a failed move from the same requestFinished emission that brings this
+// runner the request's failure, and it is connected first: the fault is judged once that
+// emission is over, so a NAK is a NAK and not "ended short". None stays None only when no
+// request failed: a move that ended short of its target (an end switch, a stop from elsewhere).
+void ProgramRunner::failSoon(ErrorKind kind, const QString& message)
+{
+    const quint64 run = m_run;
+    QMetaObject::invokeMethod(
+        this,
+        [this, run, kind, message] {
+            if (run == m_run)
+                fail(kind != ErrorKind::None ? kind : m_blockError, message);
+        },
+        Qt::QueuedConnection);
 }
 
 void ProgramRunner::onControllerFailed(const QString& controllerId, const QString& message)
@@ -214,7 +230,7 @@ void ProgramRunner::onControllerFailed(const QString& controllerId, const QStrin
     const bool linkLost = s && s->linkState() != LinkState::Connected;
     if (m_aborting && !linkLost)
         return; // the stop's own effect on the motion under way; its end comes as usual
-    fail(linkLost ? ErrorKind::LinkDown : m_blockError, message);
+    failSoon(linkLost ? ErrorKind::LinkDown : ErrorKind::None, message);
 }
 
 } // namespace stepdeck::program

@@ -7,6 +7,7 @@
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRunner.h"
+#include "protocols/elab/ElabSimulator.h"
 #include <QSignalSpy>
 #include <QtTest>
 #include <algorithm>
@@ -84,6 +85,7 @@ private Q_SLOTS:
     void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
     void runFromLine_afterFault_startsThereWithItsModalState();
+    void fault_boardNaksTheMove_failedAsNakAtThatLine();
     void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
     void g1_elab_feedMoveAtItsFeedSpeed();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
@@ -289,6 +291,24 @@ void TestProgramRunner::fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNe
     QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{1000, 4000}));
     QCOMPARE(acceptedCount(*m_elab), 0);
     QVERIFY(still(*m_nanotec));
+}
+
+// The board refuses the move with NAK: the program fails at that line as refused by the device
+// (Nak), not as a move that ended short, and the next block never arrives.
+void TestProgramRunner::fault_boardNaksTheMove_failedAsNakAtThatLine()
+{
+    m_elab->probe([&] {
+        static_cast<elab::ElabSimulator*>(m_elab->sim())->forceNak(1);
+        return true;
+    });
+    QVERIFY(run("G91 G0 X1\nG0 X2\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Failed);
+    QCOMPARE(m_runner->failureKind(), ErrorKind::Nak);
+    QVERIFY2(m_runner->endMessage().startsWith("line 1:"), qPrintable(m_runner->endMessage()));
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedCount(*m_elab), 0);
 }
 
 // Run from line N: the blocks before it are not run; line 3's G91 comes from line 1.
