@@ -2733,6 +2733,10 @@
             <source>%1 stopped at its end switch</source>
             <translation>%1 hielt an ihrem Endschalter an</translation>
         </message>
+        <message>
+            <source>%1: controller "%2" takes no feed rate</source>
+            <translation>%1: Steuerung „%2“ nimmt keinen Vorschub an</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineFile</name>
@@ -3536,6 +3540,89 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::ProgramCheck</name>
+        <message>
+            <source>run from line %1: the program has no blocks</source>
+            <translation>Start ab Zeile %1: das Programm hat keine Sätze</translation>
+        </message>
+        <message>
+            <source>run from line %1: the program's last block is on line %2</source>
+            <translation>Start ab Zeile %1: der letzte Satz des Programms steht in Zeile %2</translation>
+        </message>
+        <message>
+            <source>run from line %1 is inside the repeat of line %2: start at line %2 or after its endrepeat</source>
+            <translation>Start ab Zeile %1 liegt in der Wiederholung von Zeile %2: ab Zeile %2 oder nach ihrem endrepeat starten</translation>
+        </message>
+        <message>
+            <source>%1: G0 in a program with G1 on controller "%2": its fast speed (%3) cannot be read back to be put back after G1; move %1 with G1 and F only, or with G0 only</source>
+            <translation>%1: G0 in einem Programm mit G1 auf Steuerung „%2“: ihre Eilganggeschwindigkeit (%3) kann nicht zurückgelesen werden, um sie nach G1 wiederherzustellen; %1 nur mit G1 und F oder nur mit G0 bewegen</translation>
+        </message>
+        <message>
+            <source>more errors follow; only the first %1 are listed</source>
+            <translation>weitere Fehler folgen; nur die ersten %1 sind aufgeführt</translation>
+        </message>
+        <message>
+            <source>the axes of a block start together, each at its own rate; the block ends when every axis has arrived</source>
+            <translation>die Achsen eines Satzes starten gemeinsam, jede mit ihrer eigenen Geschwindigkeit; der Satz endet, wenn jede Achse angekommen ist</translation>
+        </message>
+        <message>
+            <source>the machine has no axis %1</source>
+            <translation>die Maschine hat keine Achse %1</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" takes no feed rate, so G1 cannot move it; use G0</source>
+            <translation>%1: Steuerung "%2" nimmt keinen Vorschub, G1 kann sie nicht bewegen; G0 verwenden</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" has no parameter %3 for the feed rate</source>
+            <translation>%1: Steuerung "%2" hat keinen Parameter %3 für den Vorschub</translation>
+        </message>
+        <message>
+            <source>F%1 is %2 steps/s on %3; controller "%4" takes %5..%6 steps/s (%7)</source>
+            <translation>F%1 ergibt %2 Schritte/s auf %3; Steuerung "%4" nimmt %5..%6 Schritte/s (%7)</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2" has no reference run (G28)</source>
+            <translation>%1: Steuerung "%2" hat keine Referenzfahrt (G28)</translation>
+        </message>
+        <message>
+            <source>%1: no controller of this machine has a spindle</source>
+            <translation>%1: keine Steuerung dieser Maschine hat eine Spindel</translation>
+        </message>
+        <message>
+            <source>%1: no controller of this machine has coolant</source>
+            <translation>%1: keine Steuerung dieser Maschine hat Kühlmittel</translation>
+        </message>
+        <message>
+            <source>%1: the machine has no digital outputs</source>
+            <translation>%1: die Maschine hat keine digitalen Ausgänge</translation>
+        </message>
+        <message>
+            <source>%1: the machine's outputs are 1..%2</source>
+            <translation>%1: die Ausgänge der Maschine sind 1..%2</translation>
+        </message>
+        <message>
+            <source>%1: the machine has no digital inputs</source>
+            <translation>%1: die Maschine hat keine digitalen Eingänge</translation>
+        </message>
+        <message>
+            <source>%1: the machine's inputs are 1..%2</source>
+            <translation>%1: die Eingänge der Maschine sind 1..%2</translation>
+        </message>
+        <message>
+            <source>%1: the position is unknown, so an absolute move could go anywhere: reference the axis first (G28 %1) or move it relatively (G91)</source>
+            <translation>%1: die Position ist unbekannt, eine absolute Fahrt könnte überall hinführen: die Achse zuerst referenzieren (G28 %1) oder relativ fahren (G91)</translation>
+        </message>
+        <message>
+            <source>%1 reaches %2 %3, outside the soft limits %4..%5 %3</source>
+            <translation>%1 erreicht %2 %3, außerhalb der Software-Endlagen %4..%5 %3</translation>
+        </message>
+        <message>
+            <source>the run executes more than %1 blocks (repeats counted out)</source>
+            <translation>der Lauf führt mehr als %1 Sätze aus (Wiederholungen ausgezählt)</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ProgramLexer</name>
         <message>
             <source>the comment is not closed: ")" is missing</source>
@@ -3698,6 +3785,77 @@
         <message>
             <source>more errors follow; only the first %1 are listed</source>
             <translation>weitere Fehler folgen; nur die ersten %1 sind aufgeführt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramRunner</name>
+        <message>
+            <source>idle</source>
+            <translation>bereit</translation>
+        </message>
+        <message>
+            <source>running</source>
+            <translation>läuft</translation>
+        </message>
+        <message>
+            <source>paused</source>
+            <translation>angehalten</translation>
+        </message>
+        <message>
+            <source>stopping</source>
+            <translation>wird gestoppt</translation>
+        </message>
+        <message>
+            <source>finished</source>
+            <translation>beendet</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>aborted</source>
+            <translation>abgebrochen</translation>
+        </message>
+        <message>
+            <source>input %1 did not reach its level in time</source>
+            <translation>Eingang %1 hat seinen Pegel nicht rechtzeitig erreicht</translation>
+        </message>
+        <message>
+            <source>aborted; the controllers did not confirm standstill</source>
+            <translation>abgebrochen; die Steuerungen haben den Stillstand nicht bestätigt</translation>
+        </message>
+        <message>
+            <source>a program runs already</source>
+            <translation>es läuft bereits ein Programm</translation>
+        </message>
+        <message>
+            <source>%1 has no stop command: the move under way finishes by itself</source>
+            <translation>%1 hat keinen Stoppbefehl: die laufende Bewegung endet von selbst</translation>
+        </message>
+        <message>
+            <source>line %1: %2</source>
+            <translation>Zeile %1: %2</translation>
+        </message>
+        <message>
+            <source>%1: the machine has nothing to switch</source>
+            <translation>%1: die Maschine hat nichts zu schalten</translation>
+        </message>
+        <message>
+            <source>the machine has no input %1</source>
+            <translation>die Maschine hat keinen Eingang %1</translation>
+        </message>
+        <message>
+            <source>input %1: %2</source>
+            <translation>Eingang %1: %2</translation>
+        </message>
+        <message>
+            <source>controller "%1": %2</source>
+            <translation>Steuerung „%1“: %2</translation>
+        </message>
+        <message>
+            <source>aborted after the move under way ended</source>
+            <translation>abgebrochen, nachdem die laufende Bewegung geendet hat</translation>
         </message>
     </context>
     <context>
