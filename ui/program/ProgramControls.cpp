@@ -11,10 +11,10 @@ namespace stepdeck::ui {
 using program::RunState;
 
 ProgramControls::ProgramControls(QWidget* parent)
-    : QWidget(parent), m_run(new QPushButton(tr("&Run"), this)),
-      m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Res&ume"), this)),
-      m_step(new QPushButton(tr("S&tep"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
-      m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from &line\u2026"), this)),
+    : QWidget(parent), m_run(new QPushButton(tr("Run"), this)),
+      m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Resume"), this)),
+      m_step(new QPushButton(tr("Step"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
+      m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
       m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this)),
       m_status(new ElidedLabel(this))
 {
@@ -29,6 +29,7 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_progress->setObjectName(QStringLiteral("programProgress"));
     m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
     m_status->setObjectName(QStringLiteral("programRunStatus"));
+    // No mnemonics on what starts motion: a stray Alt+key must not start a program.
     m_run->setToolTip(tr("Check the program against the machine and run it from the start"));
     m_pause->setToolTip(tr("Finish the current block, then hold"));
     m_resume->setToolTip(tr("Go on with the next block"));

@@ -120,7 +120,8 @@ QString ProgramPage::messageText() const
 void ProgramPage::onMachineChanged()
 {
     machine::Machine* machine = m_context->machine();
-    if (m_runner && m_runnerMachine != machine) {
+    // (A closed machine is gone before machineChanged: the pointer then reads null.)
+    if (m_runner && (m_runnerMachine.isNull() || m_runnerMachine != machine)) {
         // The machine the runner ran on is closed (its controllers stopped with it).
         delete m_runner;
         m_runner = nullptr;

@@ -78,7 +78,7 @@ void TestProgramPage::check_validProgram_previewWithEstimatedDuration()
     setProgram(QStringLiteral("G91\nG0 X1 Y2\nG0 A90\nM2\n"));
     QVERIFY2(page()->editor()->errorLines().isEmpty(), qPrintable(page()->checkText()));
     const QString figures = page()->preview()->figuresText();
-    QVERIFY2(figures.contains(QStringLiteral("4 lines")), qPrintable(figures));
+    QVERIFY2(figures.contains(QStringLiteral("4 line")), qPrintable(figures));
     QVERIFY2(figures.contains(QStringLiteral("(estimated)")), qPrintable(figures));
     // A (not X/Y) is charted over time.
     QVERIFY2(page()->preview()->chartedAxes().join(QLatin1Char(',')).contains(QStringLiteral("A")),
