@@ -15,8 +15,7 @@ ProgramControls::ProgramControls(QWidget* parent)
       m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Resume"), this)),
       m_step(new QPushButton(tr("Step"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
       m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
-      m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this)),
-      m_status(new ElidedLabel(this))
+      m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("programControls"));
     m_run->setObjectName(QStringLiteral("programRun"));
@@ -28,7 +27,6 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_fromLine->setObjectName(QStringLiteral("programFromLine"));
     m_progress->setObjectName(QStringLiteral("programProgress"));
     m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
-    m_status->setObjectName(QStringLiteral("programRunStatus"));
     // No mnemonics on what starts motion: a stray Alt+key must not start a program.
     m_run->setToolTip(tr("Check the program against the machine and run it from the start"));
     m_pause->setToolTip(tr("Finish the current block, then hold"));
@@ -45,8 +43,7 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_progress->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 18);
     m_timeLeft->setMinimumTextWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 30);
 
-    // One row of buttons and progress: the page's editor and preview get the height. The
-    // status line is placed by the page (statusLine()).
+    // One row of buttons and progress: the page's editor and preview get the height.
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
     for (QPushButton* b : {m_run, m_pause, m_resume, m_step, m_abort})
@@ -99,11 +96,6 @@ void ProgramControls::clearProgress()
     m_timeLeft->setText(QString());
 }
 
-void ProgramControls::setStatusText(const QString& text)
-{
-    m_status->setText(text);
-}
-
 void ProgramControls::setLineCount(int lines)
 {
     m_fromLine->setRange(1, qMax(1, lines));
@@ -117,11 +109,6 @@ QString ProgramControls::progressText() const
 QString ProgramControls::timeLeftText() const
 {
     return m_timeLeft->text();
-}
-
-QString ProgramControls::statusText() const
-{
-    return m_status->text();
 }
 
 } // namespace stepdeck::ui

@@ -11,11 +11,10 @@ namespace stepdeck::ui {
 
 class ElidedLabel;
 
-// Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), the
-// progress ("line n of m") with the estimated time left, and one line saying what the run
-// does now ("pausing: the current block finishes first", why it ended; statusLine()). Only buttons
-// that do something in the state shown are enabled; the buttons never move (fixed rows, one-line
-// texts). The controls only ask (signals): the page owns the runner.
+// Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), and the
+// progress ("line n of m") with the estimated time left, in one row. Only buttons that do
+// something in the state shown are enabled; the buttons never move (one-line texts). The
+// controls only ask (signals): the page owns the runner.
 class ProgramControls : public QWidget
 {
     Q_OBJECT
@@ -27,7 +26,6 @@ public:
     // The line running of lines in the file; secondsLeft: the estimate (nullopt: unknown).
     void setProgress(int line, int lines, std::optional<double> secondsLeft);
     void clearProgress();
-    void setStatusText(const QString& text);
     void setLineCount(int lines); // the range of "Run from line"
 
     QPushButton* runButton() const { return m_run; }
@@ -40,9 +38,6 @@ public:
     QProgressBar* progressBar() const { return m_progress; }
     QString progressText() const;
     QString timeLeftText() const;
-    QString statusText() const;
-    // What the run does now, one line; the page places it.
-    ElidedLabel* statusLine() const { return m_status; }
 
 Q_SIGNALS:
     void runRequested();
@@ -62,7 +57,6 @@ private:
     QPushButton* m_runFrom;
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
-    ElidedLabel* m_status;
 };
 
 } // namespace stepdeck::ui

@@ -50,7 +50,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
             m_recheck->start(); // again from now: typing does not check every key
     });
     connect(m_files, &ProgramFiles::message, this,
-            [this](const QString& text) { m_controls->setStatusText(text); });
+            [this](const QString& text) { m_banner->setStatus(text); });
     connect(m_files, &ProgramFiles::loaded, this, [this] { checkNow(); });
     connect(m_useController, &QPushButton::clicked, this, &ProgramPage::useConnectedController);
     connect(m_banner, &ProgramPromptBanner::resumeRequested, this, [this] {
@@ -82,11 +82,13 @@ ProgramPage::~ProgramPage() = default;
 
 void ProgramPage::buildLayout()
 {
+    // Three rows above the text: files and the check, the run's buttons and progress, the
+    // run's message (M0's prompt) and the machine the page runs on.
     auto* top = new QHBoxLayout;
     top->addWidget(m_files, 1);
     top->addWidget(m_check, 1);
     auto* lines = new QHBoxLayout;
-    lines->addWidget(m_controls->statusLine(), 1);
+    lines->addWidget(m_banner, 2);
     lines->addWidget(m_machineNote, 1);
     lines->addWidget(m_useController);
     auto* split = new QSplitter(Qt::Horizontal, this);
@@ -96,14 +98,13 @@ void ProgramPage::buildLayout()
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 1);
     split->setChildrenCollapsible(false);
-    m_editor->setMinimumSize(200, 80);
+    m_editor->setMinimumSize(200, 60);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(4, 4, 4, 4);
     v->setSpacing(3);
     v->addLayout(top);
     v->addWidget(m_controls);
     v->addLayout(lines);
-    v->addWidget(m_banner);
     v->addWidget(split, 1);
 }
 
@@ -114,7 +115,7 @@ QString ProgramPage::checkText() const
 
 QString ProgramPage::messageText() const
 {
-    return m_controls->statusText();
+    return m_banner->statusText();
 }
 
 void ProgramPage::onMachineChanged()
@@ -138,7 +139,7 @@ void ProgramPage::onMachineChanged()
         connect(m_runner, &ProgramRunner::blockFinished, this, &ProgramPage::onBlockFinished);
         connect(m_runner, &ProgramRunner::paused, this, &ProgramPage::onPaused);
         connect(m_runner, &ProgramRunner::stopping, this,
-                [this](const QString& message) { m_controls->setStatusText(message); });
+                [this](const QString& message) { m_banner->setStatus(message); });
         connect(m_runner, &ProgramRunner::finished, this, &ProgramPage::onFinished);
     }
     if (machine) {
@@ -165,7 +166,7 @@ void ProgramPage::useConnectedController()
     const machine::MachineDescription single =
         machine::MachineDescription::singleController(*model, m_context->portName());
     if (!m_context->openMachine(single, &error)) {
-        m_controls->setStatusText(error);
+        m_banner->setStatus(error);
         return;
     }
     m_context->connectMachine(); // the same port, now the machine's controller

@@ -109,8 +109,8 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
         return true;
     }
     m_editor->setErrors(errors);
-    m_controls->setStatusText(errors.isEmpty() ? tr("Not started.")
-                                               : tr("Not started: %1").arg(errors.first().text()));
+    m_banner->setStatus(errors.isEmpty() ? tr("Not started.")
+                                         : tr("Not started: %1").arg(errors.first().text()));
     return false;
 }
 
@@ -173,7 +173,7 @@ void ProgramPage::onFinished(RunState state, const QString& message)
     else
         text = message.isEmpty() ? tr("Aborted.") : tr("Aborted: %1").arg(message);
     onState(state);
-    m_controls->setStatusText(text);
+    m_banner->setStatus(text);
     checkNow(); // the machine stands elsewhere now
 }
 
@@ -194,13 +194,13 @@ void ProgramPage::updateControls()
         return;
     const int line = m_runner->currentLine();
     if (state == RunState::Running)
-        m_controls->setStatusText(
+        m_banner->setStatus(
             pausePending ? tr("Pausing: line %1 finishes first, then the program holds.").arg(line)
                          : tr("Running line %1.").arg(line));
     else if (state == RunState::Paused)
-        m_controls->setStatusText(tr("Paused before line %1: Resume or Step goes on.").arg(line));
-    else if (state == RunState::Stopping && m_controls->statusText().isEmpty())
-        m_controls->setStatusText(tr("Aborting: waiting for the axes to stand."));
+        m_banner->setStatus(tr("Paused before line %1: Resume or Step goes on.").arg(line));
+    else if (state == RunState::Stopping && m_banner->statusText().isEmpty())
+        m_banner->setStatus(tr("Aborting: waiting for the axes to stand."));
 }
 
 void ProgramPage::updateProgress()

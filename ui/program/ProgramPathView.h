@@ -31,7 +31,7 @@ public:
     QPointF toWidget(const QPointF& position) const;
 
     QSize sizeHint() const override { return {320, 240}; }
-    QSize minimumSizeHint() const override { return {160, 120}; }
+    QSize minimumSizeHint() const override { return {120, 60}; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;

@@ -6,7 +6,7 @@
 #include <QChartView>
 #include <QHeaderView>
 #include <QLineSeries>
-#include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
@@ -23,14 +23,18 @@ QString unitText(const machine::MachineAxis& axis)
 ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     : QWidget(parent), m_path(new ProgramPathView(this)), m_chart(new QChart),
       m_chartView(new QChartView(m_chart, this)), m_extents(new QTableWidget(0, 4, this)),
-      m_figures(new ElidedLabel(this)), m_motionNote(new ElidedLabel(this))
+      m_tabs(new QTabWidget(this)), m_figures(new ElidedLabel(this)),
+      m_motionNote(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("programPreview"));
     m_chart->legend()->setAlignment(Qt::AlignRight);
     m_chart->setMargins(QMargins(2, 2, 2, 2));
     m_chartView->setObjectName(QStringLiteral("programAxisChart"));
     m_chartView->setRenderHint(QPainter::Antialiasing);
-    m_chartView->setMinimumHeight(90);
+    // Small minimums: the tabs must fit a bottom dock on a 768-pixel screen; larger docks
+    // give them more.
+    m_chartView->setMinimumSize(120, 60);
+    m_extents->setMinimumSize(120, 40);
     m_extents->setObjectName(QStringLiteral("programExtents"));
     m_extents->setHorizontalHeaderLabels(
         {tr("Axis"), tr("Program from"), tr("Program to"), tr("Soft limits")});
@@ -38,24 +42,25 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     m_extents->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_extents->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_extents->setSelectionMode(QAbstractItemView::NoSelection);
-    // A fixed height (it scrolls): a program that moves more axes does not push the rest.
-    m_extents->setFixedHeight(m_extents->horizontalHeader()->sizeHint().height() +
-                              3 * m_extents->fontMetrics().height() * 3 / 2 + 4);
     m_figures->setObjectName(QStringLiteral("programFigures"));
     m_motionNote->setObjectName(QStringLiteral("programMotionNote"));
 
-    auto* split = new QSplitter(Qt::Vertical, this);
-    split->addWidget(m_path);
-    split->addWidget(m_chartView);
-    split->setStretchFactor(0, 3);
-    split->setStretchFactor(1, 2);
-    split->setChildrenCollapsible(false);
+    // Tabs, not a column: the page must fit the bottom of a 768-pixel screen.
+    m_tabs->setObjectName(QStringLiteral("programPreviewTabs"));
+    m_tabs->addTab(m_path, tr("Path X/Y"));
+    m_tabs->addTab(m_chartView, tr("Axes over time"));
+    // How the axes of a block move together stands with the extents (and in the figures'
+    // tooltip).
+    auto* extents = new QWidget(m_tabs);
+    auto* ev = new QVBoxLayout(extents);
+    ev->setContentsMargins(0, 0, 0, 0);
+    ev->addWidget(m_extents, 1);
+    ev->addWidget(m_motionNote);
+    m_tabs->addTab(extents, tr("Extents"));
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(m_figures);
-    v->addWidget(split, 1);
-    v->addWidget(m_extents);
-    v->addWidget(m_motionNote);
+    v->addWidget(m_tabs, 1);
     clear(tr("No program checked yet."));
 }
 
@@ -69,6 +74,7 @@ void ProgramPreviewView::clear(const QString& reason)
     m_extents->setRowCount(0);
     m_figures->setText(reason);
     m_motionNote->clear();
+    m_figures->setToolTip(QString());
 }
 
 void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
@@ -107,6 +113,7 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
     m_figures->setText(figures);
     m_motionNote->setText(preview.motionNote);
     m_motionNote->setToolTip(preview.motionNote);
+    m_figures->setToolTip(preview.motionNote);
 }
 
 void ProgramPreviewView::fillChart(const program::ProgramPreview& preview,
@@ -159,7 +166,8 @@ void ProgramPreviewView::fillChart(const program::ProgramPreview& preview,
     m_chart->addSeries(m_now);
     m_now->attachAxis(time);
     m_now->attachAxis(value);
-    m_chartView->setVisible(any || !(m_hasX && m_hasY));
+    // The tabs stay (nothing moves); an empty chart says there is nothing to chart.
+    m_chart->setTitle(any ? QString() : tr("No axis besides X and Y moves."));
 }
 
 void ProgramPreviewView::fillExtents(const program::ProgramPreview& preview,

@@ -6,6 +6,7 @@
 class QChart;
 class QChartView;
 class QLineSeries;
+class QTabWidget;
 class QTableWidget;
 
 namespace stepdeck::ui {
@@ -13,10 +14,10 @@ namespace stepdeck::ui {
 class ElidedLabel;
 class ProgramPathView;
 
-// The preview of a checked program beside the editor (issue 20): the XY path to scale
-// (ProgramPathView), the other axes' positions over the estimated time (a chart), each moved
-// axis' extent against its soft limits, and the figures: lines, blocks run, the estimated
-// duration and how the axes of a block move together. While a program runs the current
+// The preview of a checked program beside the editor (issue 20), in tabs: the XY path to
+// scale (ProgramPathView), the other axes' positions over the estimated time (a chart), each
+// moved axis' extent against its soft limits; above them the figures: lines, blocks run, the
+// estimated duration and how the axes of a block move together. While a program runs the current
 // position is drawn in both.
 class ProgramPreviewView : public QWidget
 {
@@ -36,6 +37,7 @@ public:
     ProgramPathView* pathView() const { return m_path; }
     QChartView* chartView() const { return m_chartView; }
     QTableWidget* extentsTable() const { return m_extents; }
+    QTabWidget* tabs() const { return m_tabs; }
     QString figuresText() const;
     QStringList chartedAxes() const;
 
@@ -50,6 +52,7 @@ private:
     QChartView* m_chartView;
     QLineSeries* m_now = nullptr; // the vertical line at the time reached
     QTableWidget* m_extents;
+    QTabWidget* m_tabs;
     ElidedLabel* m_figures;
     ElidedLabel* m_motionNote;
     bool m_hasX = false;

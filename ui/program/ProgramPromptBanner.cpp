@@ -35,10 +35,17 @@ void ProgramPromptBanner::showPrompt(int line, const QString& prompt)
     m_resume->show();
 }
 
+void ProgramPromptBanner::setStatus(const QString& text)
+{
+    m_status = text;
+    if (!m_showing)
+        m_text->setText(text);
+}
+
 void ProgramPromptBanner::clearPrompt()
 {
     m_showing = false;
-    m_text->setText(QString());
+    m_text->setText(m_status);
     setStyleSheet(QString());
     m_resume->hide();
 }

@@ -18,6 +18,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTextBlock>
+#include <QDockWidget>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -214,6 +216,13 @@ void TestProgramPage::page_fitsTheLaptopScreen()
         page()->minimumSizeHint().width() <= dock->width(),
         qPrintable(
             QStringLiteral("%1 > %2").arg(page()->minimumSizeHint().width()).arg(dock->width())));
+    // Nor up and down: the default bottom dock holds the whole page (nothing hides below).
+    auto* scroll = qobject_cast<QAbstractScrollArea*>(page()->parentWidget()->parentWidget());
+    QVERIFY(scroll);
+    QVERIFY2(page()->minimumSizeHint().height() <= scroll->viewport()->height(),
+             qPrintable(QStringLiteral("%1 > %2")
+                            .arg(page()->minimumSizeHint().height())
+                            .arg(scroll->viewport()->height())));
     for (QWidget* w : page()->findChildren<QWidget*>()) {
         if (qobject_cast<QAbstractButton*>(w) || qobject_cast<QLabel*>(w)) {
             const QString problem = textProblem(w);
