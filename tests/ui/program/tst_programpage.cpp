@@ -14,12 +14,12 @@
 #include "program/ProgramPreviewView.h"
 #include "program/ProgramPromptBanner.h"
 #include "safety/SafetyBar.h"
+#include <QDockWidget>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTextBlock>
-#include <QDockWidget>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -41,6 +41,7 @@ private Q_SLOTS:
     void m0_prompt_bannerWithResumeGoesOn();
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
+    void useController_singleController_becomesMachineOfOne();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -230,6 +231,29 @@ void TestProgramPage::page_fitsTheLaptopScreen()
                      qPrintable(w->objectName() + QStringLiteral(": ") + problem));
         }
     }
+}
+
+void TestProgramPage::useController_singleController_becomesMachineOfOne()
+{
+    QVERIFY(!page()->useControllerButton()->isEnabled()); // nothing connected
+    window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
+    window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
+    window()->connectionBar()->connectNow();
+    QVERIFY(m_rig.f->waitConnected());
+    setProgram(QStringLiteral("G91\nG0 X10\nM2\n"));
+    QVERIFY2(page()->checkText().startsWith(QStringLiteral("Not checked")),
+             qPrintable(page()->checkText()));
+    QTRY_VERIFY(page()->useControllerButton()->isEnabled());
+    page()->useControllerButton()->click();
+    QVERIFY(window()->context()->hasMachine());
+    QVERIFY(page()->runner());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
+                             10000);
+    // The controller's own axes in steps: the program is checked against them.
+    QTRY_VERIFY2(page()->editor()->errorLines().isEmpty() &&
+                     page()->checkText().startsWith(QStringLiteral("Checked")),
+                 qPrintable(page()->checkText()));
+    QVERIFY(!page()->useControllerButton()->isVisible());
 }
 
 int main(int argc, char** argv)
