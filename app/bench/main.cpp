@@ -3,6 +3,7 @@
 #include "GuiIdle.h"
 #include "MachineStopLatency.h"
 #include "Measurements.h"
+#include "ProgramBench.h"
 #include "SoakMain.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
@@ -259,6 +260,7 @@ void printUsage(const ModelInfo* model)
                       "[--machine-stop-runs N]\n"
                       "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
                       "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
+                      "       stepdeck-bench --program [--json]\n"
                       "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
                       "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
                       "Measures the first model with a feed stream (%1) against its "
@@ -280,6 +282,9 @@ void printUsage(const ModelInfo* model)
                       "Machine, faults on either link.\n"
                       "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
                       "-write); time until the host reports it.\n"
+                      "--program: a program of 1000 short relative moves on the E-LAB and "
+                      "Nanotec simulators over the paced wire: blocks per second and the gap "
+                      "between blocks at the device.\n"
                       "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
                       "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
                       "See docs/benchmark.md.")
@@ -296,6 +301,8 @@ int main(int argc, char** argv)
     if (const int code = guiIdleMain(QCoreApplication::applicationDirPath(), args); code >= 0)
         return code;
     if (const int code = soakMain(application.applicationFilePath(), args); code >= 0)
+        return code;
+    if (const int code = programBenchMain(args); code >= 0)
         return code;
     // The figures need a stream to queue behind and to meter: the first registered model
     // whose descriptor has one (ModelInfo::streamBench).

@@ -65,9 +65,10 @@ public:
     // targets within the soft limits. Returns the move's id, or 0 with *refusal saying why
     // (nothing was sent). Each controller gets its part back to back; the move ends with
     // moveFinished once every part has, or fails (the others stopped) when one part fails.
-    // kind Feed (a program's G1 on models with Capabilities::feedRateUsesFeedMode): each part
-    // is the controller's feed move at its feed rate (MotionMode::Feed), relative steps; a
-    // controller without feed moves refuses the whole move.
+    // kind Feed (a program's G1, after its rate was written to each model's
+    // Capabilities::feedRateParameter): each part runs at that rate, as the controller's feed
+    // move (relative steps) where Capabilities::feedRateUsesFeedMode, else as a positioning
+    // move. A controller that takes no rate (no feedRateParameter) refuses the whole move.
     enum class MoveKind { Positioning, Feed };
     quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal,
                  MoveKind kind = MoveKind::Positioning);

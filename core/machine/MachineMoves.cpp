@@ -40,7 +40,7 @@ quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString
                 part.expected.insert(it.key(), absolute ? it.value() : from + it.value());
             }
         }
-        if (kind == MoveKind::Feed) {
+        if (kind == MoveKind::Feed && t.session->capabilities().feedRateUsesFeedMode) {
             // A feed move counts from where the axes stand (absolute targets made relative).
             AxisVector relative = t.steps;
             if (absolute)
@@ -69,8 +69,8 @@ QString Machine::checkMove(const QMap<QString, double>& units, bool absolute, Mo
         ControllerSession* s = session(axis->controller);
         if (s->linkState() != LinkState::Connected)
             return tr("%1: controller \"%2\" is not connected").arg(axis->name, axis->controller);
-        if (kind == MoveKind::Feed && !s->capabilities().has(MotionMode::Feed))
-            return tr("%1: controller \"%2\" has no feed move").arg(axis->name, axis->controller);
+        if (kind == MoveKind::Feed && !s->capabilities().feedRateParameter)
+            return tr("%1: controller \"%2\" takes no feed rate").arg(axis->name, axis->controller);
         qint64 steps = 0;
         const QString why = checkAxisTarget(*axis, it.value(), absolute, &steps);
         if (!why.isEmpty())

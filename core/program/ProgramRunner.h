@@ -5,6 +5,7 @@
 #include <QObject>
 #include <QSet>
 #include <QTimer>
+#include <functional>
 #include <memory>
 
 namespace stepdeck::machine {
@@ -62,7 +63,10 @@ public:
     qint64 blocksDone() const { return m_blocksDone; }
     bool pausePending() const { return m_pauseAsked && m_state == RunState::Running; }
     QString prompt() const { return m_prompt; } // M0's prompt while Paused at it
-    // Why the program ended Failed or Aborted ("line 12: ..."), and the kind of the fault.
+    // Why the program ended Failed or Aborted ("line 12: ..."), and the kind of the fault:
+    // the failed request's ErrorKind (Refused also for a block the machine's rules refused
+    // before sending, LinkDown for a lost link, Timeout for M66's Q); None when a move ended
+    // short of its target without a failed request (an end switch, a stop from elsewhere).
     QString endMessage() const { return m_endMessage; }
     ErrorKind failureKind() const { return m_failureKind; }
     const ProgramPreview& preview() const { return m_preview; } // of the check at start()
@@ -83,31 +87,37 @@ private:
         int start = 0;        // index of the RepeatStart block
         qint64 remaining = 0; // iterations left after the current one
     };
+    // The run's walk (ProgramRunner.cpp).
+    void connectMachine();
+    void disconnectMachine();
     void runNext();
-    void startBlock(const ProgramBlock& block);
+    bool advance(); // onto the next block that does something; false at the end
     void blockDone();
-    bool advance(); // to the next block that does something; false at the end
-    void startMove(const ProgramBlock& block);
-    void sendMove(const ProgramBlock& block);
-    void startHome(const ProgramBlock& block);
-    void startDwell(const ProgramBlock& block);
-    void startWaitInput(const ProgramBlock& block);
-    void checkInput();
-    void startRequest(const ProgramBlock& block);
-    void onRequestFinished(const CommandResult& result);
-    void onMotionFinished(quint64 id, bool ok, const QString& message);
-    void onControllerFailed(const QString& controllerId, const QString& message);
+    void finishProgram();
     void fail(ErrorKind kind, const QString& message);
     void end(RunState state, const QString& message);
     void setState(RunState state);
-    QMap<QString, double> axisTargets(const ProgramBlock& block) const;
     QString lineText(const QString& message) const;
+    QStringList controllersWithoutStop() const;
+    // What each block sends (ProgramRunnerBlocks.cpp).
+    void startBlock(const ProgramBlock& block);
+    void startMove(const ProgramBlock& block);
+    void sendMove(const ProgramBlock& block);
+    void startHome(const ProgramBlock& block);
+    void startWaitInput(const ProgramBlock& block);
+    void checkInput();
+    void startSwitch(const ProgramBlock& block);
+    void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
+    void onRequestFinished(const QString& controllerId, const CommandResult& result);
+    void onMotionFinished(quint64 id, bool ok, const QString& message);
+    void onControllerFailed(const QString& controllerId, const QString& message);
+    QMap<QString, double> axisTargets(const ProgramBlock& block) const;
 
     machine::Machine* m_machine;
     Program m_program;
     ProgramPreview m_preview;
     RunState m_state = RunState::Idle;
-    int m_index = -1; // the block running or next
+    int m_index = -1; // the block running (or the one before the next)
     QList<Loop> m_loops;
     qint64 m_blocksDone = 0;
     bool m_pauseAsked = false;
@@ -117,12 +127,20 @@ private:
     QString m_endMessage;
     ErrorKind m_failureKind = ErrorKind::None;
     // What the current block waits for.
-    quint64 m_motion = 0; // Machine::move / reference id
-    bool m_motionIsReference = false;
+    quint64 m_motion = 0;       // Machine::move / reference id
     QSet<RequestId> m_requests; // session requests of the block (rates, output, spindle)
+    std::function<void()> m_afterRequests;
+    // The last request of a controller that failed while the block ran (the ErrorKind of a
+    // failed move: Machine::moveFinished says only why).
+    ErrorKind m_blockError = ErrorKind::None;
     QTimer m_dwell;
     QTimer m_inputTimeout;
-    int m_waitInput = 0; // M66: the machine input waited for (0: none)
+    QTimer m_abortSettle;
+    int m_waitInput = 0;         // M66: the machine input waited for (0: none)
+    bool m_waitInputHigh = true; // M66 L3
+    RequestId m_inputRead = 0;   // M66: the status read its level must be newer than
+    QString m_inputController;
+    int m_inputNumber = 0; // on that controller
     std::unique_ptr<ProgramRates> m_rates;
     QList<QMetaObject::Connection> m_connections;
 };

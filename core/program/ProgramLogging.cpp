@@ -1,0 +1,3 @@
+#include "ProgramLogging.h"
+
+Q_LOGGING_CATEGORY(lcProgram, "stepdeck.program", QtWarningMsg)

@@ -1,0 +1,91 @@
+#include "ProgramRates.h"
+#include "ProgramUnits.h"
+#include "controller/ControllerSession.h"
+#include "machine/Machine.h"
+
+namespace stepdeck::program {
+
+namespace {
+// The controllers of a block's axes, in the machine's order.
+QStringList controllersOf(const machine::MachineDescription& d, const ProgramBlock& block)
+{
+    QStringList ids;
+    for (const machine::MachineController& c : d.controllers)
+        for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+            if (const machine::MachineAxis* a = d.axis(it.key());
+                a && a->controller == c.id && !ids.contains(c.id))
+                ids << c.id;
+    return ids;
+}
+} // namespace
+
+QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
+{
+    const machine::MachineDescription& d = m_machine->description();
+    if (block.kind == BlockKind::Rapid)
+        return putBack(controllersOf(d, block));
+    if (block.kind != BlockKind::Feed || !block.feed)
+        return {};
+    QMap<RequestId, QString> requests;
+    for (const QString& id : controllersOf(d, block)) {
+        ControllerSession* s = m_machine->session(id);
+        const Capabilities caps = s->capabilities();
+        if (!caps.feedRateParameter)
+            continue; // the check refused such a program; Machine::move refuses it again
+        const QString name = QString::fromLatin1(caps.feedRateParameter);
+        ParameterValue rate;
+        for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
+            const machine::MachineAxis* a = d.axis(it.key());
+            if (a && a->controller == id)
+                rate.perAxis.insert(a->axis,
+                                    units::feedStepsPerSecond(*a, *block.feed, block.inches));
+        }
+        Controller& c = m_controllers[id];
+        if (caps.feedRateSetsRapid) {
+            const ParameterSpec* spec = s->model()->schema.find(name);
+            // Read once, before the first write, and only where the device can say it.
+            if (c.fast.perAxis.isEmpty() && c.read == 0 && spec && spec->readable) {
+                c.read = s->readParameters({name});
+                requests.insert(c.read, id);
+            }
+            c.changed = true;
+        }
+        requests.insert(s->writeParameters({{name, rate}}, false), id);
+    }
+    return requests;
+}
+
+void ProgramRates::onResult(const QString& controllerId, const CommandResult& result)
+{
+    auto it = m_controllers.find(controllerId);
+    if (it == m_controllers.end() || result.id != it->read)
+        return;
+    it->read = 0;
+    if (!result.ok() || !result.value.canConvert<ParameterSet>())
+        return;
+    const ControllerSession* s = m_machine->session(controllerId);
+    const QString name = QString::fromLatin1(s->capabilities().feedRateParameter);
+    it->fast = result.value.value<ParameterSet>().value(name);
+}
+
+QMap<RequestId, QString> ProgramRates::restore()
+{
+    return putBack(m_controllers.keys());
+}
+
+QMap<RequestId, QString> ProgramRates::putBack(const QStringList& controllers)
+{
+    QMap<RequestId, QString> requests;
+    for (const QString& id : controllers) {
+        auto it = m_controllers.find(id);
+        if (it == m_controllers.end() || !it->changed || it->fast.perAxis.isEmpty())
+            continue; // unchanged, or not readable: the check refuses G0 after G1 there
+        ControllerSession* s = m_machine->session(id);
+        const QString name = QString::fromLatin1(s->capabilities().feedRateParameter);
+        requests.insert(s->writeParameters({{name, it->fast}}, false), id);
+        it->changed = false;
+    }
+    return requests;
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,50 @@
+#pragma once
+#include "ProgramBlock.h"
+#include "model/CommandResult.h"
+#include "model/ParameterSchema.h"
+#include <QCoreApplication>
+#include <QMap>
+#include <QSet>
+
+namespace stepdeck::machine {
+class Machine;
+}
+
+namespace stepdeck::program {
+
+// The rates a program's G1 writes (docs/programs.md "How F maps onto each model"): before a
+// G1, each controller of the block gets its model's feed-rate parameter
+// (Capabilities::feedRateParameter) in steps/s per axis. Where that parameter is also the
+// speed of positioning moves (Capabilities::feedRateSetsRapid: Nanotec o, EMIS #E1), the value
+// the device had is read before the first write (when the model can read it back) and written
+// back before the next G0 and at the program's end, so G0 keeps running at the fast speed.
+// Reaches the controllers only through the machine's sessions; the runner waits for the
+// requests it returns before the move is sent.
+class ProgramRates
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramRates)
+public:
+    explicit ProgramRates(machine::Machine* machine) : m_machine(machine) {}
+
+    // The requests to finish before the move of `block` (G0 or G1) is sent; none: send at once.
+    // Each id is paired with its controller id.
+    QMap<RequestId, QString> before(const ProgramBlock& block);
+    // A finished request of before() or restore(): a read keeps the value to put back.
+    void onResult(const QString& controllerId, const CommandResult& result);
+    // The fast speeds a G1 changed, written back (the program's end); none: nothing to do.
+    QMap<RequestId, QString> restore();
+
+private:
+    struct Controller
+    {
+        ParameterValue fast;  // read before the first G1 (perAxis empty: not read)
+        RequestId read = 0;   // the read under way
+        bool changed = false; // a G1 wrote a rate that G0 would also run at
+    };
+    QMap<RequestId, QString> putBack(const QStringList& controllers);
+
+    machine::Machine* m_machine;
+    QMap<QString, Controller> m_controllers;
+};
+
+} // namespace stepdeck::program

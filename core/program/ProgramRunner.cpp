@@ -1,0 +1,319 @@
+// ProgramRunner: the run's states and its walk through the blocks (repeats, pause, step,
+// abort, faults). What each block sends is in ProgramRunnerBlocks.cpp.
+#include "ProgramRunner.h"
+#include "ProgramLogging.h"
+#include "ProgramRates.h"
+#include "controller/ControllerSession.h"
+#include "machine/Machine.h"
+
+namespace stepdeck::program {
+
+namespace {
+// Bound for the axes to report standstill after abort(): past it the run ends Aborted and
+// says that the standstill was not confirmed.
+constexpr int kAbortSettleMs = 15000;
+} // namespace
+
+QString runStateText(RunState state)
+{
+    switch (state) {
+    case RunState::Idle:
+        return ProgramRunner::tr("idle");
+    case RunState::Running:
+        return ProgramRunner::tr("running");
+    case RunState::Paused:
+        return ProgramRunner::tr("paused");
+    case RunState::Stopping:
+        return ProgramRunner::tr("stopping");
+    case RunState::Finished:
+        return ProgramRunner::tr("finished");
+    case RunState::Failed:
+        return ProgramRunner::tr("failed");
+    case RunState::Aborted:
+        return ProgramRunner::tr("aborted");
+    }
+    return {};
+}
+
+bool isEnded(RunState state)
+{
+    return state == RunState::Finished || state == RunState::Failed || state == RunState::Aborted;
+}
+
+ProgramRunner::ProgramRunner(machine::Machine* machine, QObject* parent)
+    : QObject(parent), m_machine(machine)
+{
+    m_dwell.setSingleShot(true);
+    m_dwell.setTimerType(Qt::PreciseTimer);
+    connect(&m_dwell, &QTimer::timeout, this, &ProgramRunner::blockDone);
+    m_inputTimeout.setSingleShot(true);
+    connect(&m_inputTimeout, &QTimer::timeout, this, [this] {
+        fail(ErrorKind::Timeout, tr("input %1 did not reach its level in time").arg(m_waitInput));
+    });
+    m_abortSettle.setSingleShot(true);
+    connect(&m_abortSettle, &QTimer::timeout, this, [this] {
+        end(RunState::Aborted, tr("aborted; the controllers did not confirm standstill"));
+    });
+}
+
+ProgramRunner::~ProgramRunner() = default;
+
+int ProgramRunner::currentLine() const
+{
+    return m_index >= 0 && m_index < m_program.blocks.size() ? m_program.blocks.at(m_index).line
+                                                             : 0;
+}
+
+bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramError>* errors,
+                          bool stepOnly)
+{
+    if (m_state == RunState::Running || m_state == RunState::Paused ||
+        m_state == RunState::Stopping) {
+        if (errors)
+            *errors = {ProgramError{0, 0, tr("a program runs already")}};
+        return false;
+    }
+    const ProgramCheckResult checked = ProgramCheck::check(program, factsOf(*m_machine), fromLine);
+    if (!checked.ok()) {
+        if (errors)
+            *errors = checked.errors;
+        return false;
+    }
+    m_program = program;
+    m_preview = checked.preview;
+    m_index = -1;
+    for (int i = 0; i < m_program.blocks.size() && m_index < 0; ++i)
+        if (m_program.blocks.at(i).line >= fromLine)
+            m_index = i - 1; // advance() steps onto it
+    m_loops.clear();
+    m_blocksDone = 0;
+    m_pauseAsked = false;
+    m_stepOnly = stepOnly;
+    m_aborting = false;
+    m_prompt.clear();
+    m_endMessage.clear();
+    m_failureKind = ErrorKind::None;
+    m_rates = std::make_unique<ProgramRates>(m_machine);
+    connectMachine();
+    setState(RunState::Running);
+    // Queued: the caller sees start() return before the first block's signals.
+    QMetaObject::invokeMethod(this, &ProgramRunner::runNext, Qt::QueuedConnection);
+    return true;
+}
+
+void ProgramRunner::connectMachine()
+{
+    disconnectMachine();
+    m_connections << connect(m_machine, &machine::Machine::moveFinished, this,
+                             &ProgramRunner::onMotionFinished);
+    m_connections << connect(m_machine, &machine::Machine::referenceFinished, this,
+                             &ProgramRunner::onMotionFinished);
+    m_connections << connect(m_machine, &machine::Machine::controllerFailed, this,
+                             &ProgramRunner::onControllerFailed);
+    for (const machine::MachineController& c : m_machine->description().controllers) {
+        ControllerSession* s = m_machine->session(c.id);
+        const QString id = c.id;
+        m_connections << connect(s, &ControllerSession::requestFinished, this,
+                                 [this, id](const CommandResult& r) { onRequestFinished(id, r); });
+        m_connections << connect(s, &ControllerSession::statusChanged, this,
+                                 [this] { checkInput(); });
+    }
+}
+
+void ProgramRunner::disconnectMachine()
+{
+    for (const QMetaObject::Connection& c : std::as_const(m_connections))
+        disconnect(c);
+    m_connections.clear();
+}
+
+void ProgramRunner::pause()
+{
+    if (m_state != RunState::Running || m_pauseAsked)
+        return;
+    m_pauseAsked = true;
+    Q_EMIT stateChanged(m_state); // pausePending() changed: "pausing after this block"
+}
+
+void ProgramRunner::resume()
+{
+    if (m_state != RunState::Paused)
+        return;
+    m_pauseAsked = false;
+    m_stepOnly = false;
+    m_prompt.clear();
+    setState(RunState::Running);
+    runNext();
+}
+
+void ProgramRunner::step()
+{
+    if (m_state != RunState::Paused)
+        return;
+    m_pauseAsked = false;
+    m_stepOnly = true;
+    m_prompt.clear();
+    setState(RunState::Running);
+    runNext();
+}
+
+void ProgramRunner::abort()
+{
+    if (m_state != RunState::Running && m_state != RunState::Paused)
+        return;
+    m_aborting = true;
+    m_dwell.stop();
+    m_inputTimeout.stop();
+    m_waitInput = 0;
+    m_requests.clear();
+    m_machine->stop();
+    if (m_motion == 0) {
+        end(RunState::Aborted, lineText(tr("aborted")));
+        return;
+    }
+    // The axes are still braking (or, without a stop command, running out): ended once the
+    // machine reports the motion's end.
+    const QStringList runOut = controllersWithoutStop();
+    setState(RunState::Stopping);
+    if (!runOut.isEmpty())
+        Q_EMIT stopping(tr("%1 has no stop command: the move under way finishes by itself")
+                            .arg(runOut.join(QStringLiteral(", "))));
+    m_abortSettle.start(kAbortSettleMs);
+}
+
+// The controllers of the motion under way that have no stop command (EMIS, laser axes).
+QStringList ProgramRunner::controllersWithoutStop() const
+{
+    QStringList ids;
+    for (const machine::MachineController& c : m_machine->description().controllers)
+        if (!m_machine->session(c.id)->capabilities().stopCommand)
+            ids << c.id;
+    return ids;
+}
+
+void ProgramRunner::runNext()
+{
+    if (m_state != RunState::Running || m_aborting)
+        return;
+    if (!advance()) {
+        finishProgram();
+        return;
+    }
+    const ProgramBlock& block = m_program.blocks.at(m_index);
+    Q_EMIT blockStarted(block.line, block.text);
+    startBlock(block);
+}
+
+// Onto the next block that does something; repeats are counted here.
+bool ProgramRunner::advance()
+{
+    while (++m_index < m_program.blocks.size()) {
+        const ProgramBlock& b = m_program.blocks.at(m_index);
+        switch (b.kind) {
+        case BlockKind::Modal:
+            continue;
+        case BlockKind::RepeatStart:
+            if (b.count <= 0)
+                m_index = b.partner; // its endrepeat; on after it
+            else
+                m_loops << Loop{m_index, b.count - 1};
+            continue;
+        case BlockKind::RepeatEnd:
+            if (!m_loops.isEmpty() && m_loops.last().remaining > 0) {
+                --m_loops.last().remaining;
+                m_index = m_loops.last().start;
+            } else if (!m_loops.isEmpty()) {
+                m_loops.removeLast();
+            }
+            continue;
+        default:
+            return true;
+        }
+    }
+    return false;
+}
+
+void ProgramRunner::blockDone()
+{
+    if (m_state != RunState::Running || m_aborting)
+        return;
+    m_motion = 0;
+    ++m_blocksDone;
+    const ProgramBlock& block = m_program.blocks.at(m_index);
+    Q_EMIT blockFinished(block.line);
+    if (block.kind == BlockKind::End) {
+        finishProgram();
+        return;
+    }
+    if (block.kind == BlockKind::Pause || m_pauseAsked || m_stepOnly) {
+        m_prompt = block.kind == BlockKind::Pause ? block.prompt : QString();
+        m_pauseAsked = false;
+        setState(RunState::Paused);
+        Q_EMIT paused(block.line, m_prompt);
+        return;
+    }
+    runNext();
+}
+
+void ProgramRunner::finishProgram()
+{
+    // The fast speeds a G1 changed go back before the run says it finished.
+    m_requests.clear();
+    const QMap<RequestId, QString> writes = m_rates->restore();
+    for (auto it = writes.cbegin(); it != writes.cend(); ++it)
+        m_requests.insert(it.key());
+    m_afterRequests = [this] { end(RunState::Finished, tr("finished")); };
+    if (m_requests.isEmpty())
+        end(RunState::Finished, tr("finished"));
+}
+
+void ProgramRunner::fail(ErrorKind kind, const QString& message)
+{
+    if (isEnded(m_state) || m_state == RunState::Idle)
+        return;
+    if (m_aborting) { // a stop ends a motion with an error: that is the abort's end
+        end(RunState::Aborted, lineText(tr("aborted")));
+        return;
+    }
+    m_dwell.stop();
+    m_inputTimeout.stop();
+    m_machine->stop(); // every controller: a program never continues after a fault
+    m_failureKind = kind;
+    end(RunState::Failed, lineText(message));
+}
+
+void ProgramRunner::end(RunState state, const QString& message)
+{
+    if (isEnded(m_state))
+        return;
+    m_abortSettle.stop();
+    m_dwell.stop();
+    m_inputTimeout.stop();
+    m_waitInput = 0;
+    m_motion = 0;
+    m_requests.clear();
+    m_afterRequests = nullptr;
+    if (state != RunState::Finished && m_rates)
+        m_rates->restore(); // best effort after a fault or abort: not awaited
+    disconnectMachine();
+    m_endMessage = message;
+    qCInfo(lcProgram) << "program" << runStateText(state) << message;
+    setState(state);
+    Q_EMIT finished(state, message);
+}
+
+void ProgramRunner::setState(RunState state)
+{
+    if (m_state == state)
+        return;
+    m_state = state;
+    Q_EMIT stateChanged(state);
+}
+
+QString ProgramRunner::lineText(const QString& message) const
+{
+    const int line = currentLine();
+    return line > 0 ? tr("line %1: %2").arg(line).arg(message) : message;
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,220 @@
+// ProgramRunner: what each block sends and what it waits for before the next one starts.
+#include "ProgramRates.h"
+#include "ProgramRunner.h"
+#include "ProgramUnits.h"
+#include "controller/ControllerSession.h"
+#include "machine/Machine.h"
+#include "model/ModelOperations.h"
+
+namespace stepdeck::program {
+
+void ProgramRunner::startBlock(const ProgramBlock& block)
+{
+    m_blockError = ErrorKind::None;
+    switch (block.kind) {
+    case BlockKind::Rapid:
+    case BlockKind::Feed:
+        startMove(block);
+        return;
+    case BlockKind::Home:
+        startHome(block);
+        return;
+    case BlockKind::Dwell:
+        // At least P between the previous block's confirmation and the next block's first
+        // byte: the timer starts only now.
+        m_dwell.start(int(std::min(block.seconds * 1000.0, 2.0e9)));
+        return;
+    case BlockKind::WaitInput:
+        startWaitInput(block);
+        return;
+    case BlockKind::Pause:
+    case BlockKind::End:
+        blockDone(); // pauses at M0, finishes at M2/M30
+        return;
+    default:
+        startSwitch(block);
+        return;
+    }
+}
+
+void ProgramRunner::startMove(const ProgramBlock& block)
+{
+    // G1's rates (and G0's fast speed put back) first; the move only once they were taken.
+    const QMap<RequestId, QString> rates = m_rates->before(block);
+    const int index = m_index;
+    awaitRequests(rates, [this, index] { sendMove(m_program.blocks.at(index)); });
+}
+
+void ProgramRunner::sendMove(const ProgramBlock& block)
+{
+    QString refusal;
+    const auto kind = block.kind == BlockKind::Feed ? machine::Machine::MoveKind::Feed
+                                                    : machine::Machine::MoveKind::Positioning;
+    m_motion = m_machine->move(axisTargets(block), !block.relative, &refusal, kind);
+    if (m_motion == 0)
+        fail(ErrorKind::Refused, refusal);
+}
+
+void ProgramRunner::startHome(const ProgramBlock& block)
+{
+    QString refusal;
+    m_motion = m_machine->reference(block.axes.keys(), &refusal); // none named: every axis
+    if (m_motion == 0)
+        fail(ErrorKind::Refused, refusal);
+}
+
+QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) const
+{
+    QMap<QString, double> targets;
+    const machine::MachineDescription& d = m_machine->description();
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+        if (const machine::MachineAxis* a = d.axis(it.key()))
+            targets.insert(it.key(), units::toAxisUnits(*a, it.value(), block.inches));
+    return targets;
+}
+
+// Spindle, coolant and outputs: one request, done when the controller acknowledged it.
+void ProgramRunner::startSwitch(const ProgramBlock& block)
+{
+    const MachineFacts facts = factsOf(*m_machine);
+    const auto first = [&](bool Capabilities::*has) -> ControllerSession* {
+        for (const machine::MachineController& c : facts.description.controllers)
+            if (facts.capabilities.value(c.id).*has)
+                return m_machine->session(c.id);
+        return nullptr;
+    };
+    ControllerSession* s = nullptr;
+    RequestId id = 0;
+    switch (block.kind) {
+    case BlockKind::SpindleOn:
+    case BlockKind::SpindleOff:
+        if ((s = first(&Capabilities::spindle)))
+            id = s->setSpindle(block.kind == BlockKind::SpindleOn ? int(block.rpm) : 0);
+        break;
+    case BlockKind::CoolantMist:
+    case BlockKind::CoolantFlood:
+    case BlockKind::CoolantOff:
+        if ((s = first(&Capabilities::coolant)))
+            id = s->setCoolant(block.kind != BlockKind::CoolantOff);
+        break;
+    case BlockKind::OutputOn:
+    case BlockKind::OutputOff:
+        if (const std::optional<MachineIo> io = machineOutput(facts, block.number)) {
+            s = m_machine->session(io->controller);
+            id = s->modelOperation(operation::kSetOutput,
+                                   {{operation::arg::kOutput, io->number},
+                                    {operation::arg::kOn, block.kind == BlockKind::OutputOn}});
+        }
+        break;
+    default:
+        break;
+    }
+    if (id == 0) {
+        fail(ErrorKind::Unsupported,
+             tr("%1: the machine has nothing to switch").arg(blockWord(block.kind)));
+        return;
+    }
+    QMap<RequestId, QString> one;
+    for (const machine::MachineController& c : facts.description.controllers)
+        if (m_machine->session(c.id) == s)
+            one.insert(id, c.id);
+    awaitRequests(one, [this] { blockDone(); });
+}
+
+// M66: the level counts only from a status read asked for after the block started, so a
+// level read before it (a part sensor of the previous cycle) does not end the wait.
+void ProgramRunner::startWaitInput(const ProgramBlock& block)
+{
+    const std::optional<MachineIo> io = machineInput(factsOf(*m_machine), block.number);
+    if (!io) {
+        fail(ErrorKind::Unsupported, tr("the machine has no input %1").arg(block.number));
+        return;
+    }
+    m_waitInput = block.number;
+    m_waitInputHigh = block.inputHigh;
+    m_inputController = io->controller;
+    m_inputNumber = io->number;
+    m_inputRead = m_machine->session(io->controller)->refreshStatus();
+    m_inputTimeout.start(int(std::min(block.seconds * 1000.0, 2.0e9)));
+}
+
+void ProgramRunner::checkInput()
+{
+    if (m_waitInput == 0 || m_inputRead != 0 || m_state != RunState::Running)
+        return;
+    const MachineStatus& status = m_machine->session(m_inputController)->status();
+    if (!status.inputs || m_inputNumber > status.inputs->size())
+        return;
+    if (status.inputs->at(m_inputNumber - 1) != m_waitInputHigh)
+        return;
+    m_waitInput = 0;
+    m_inputTimeout.stop();
+    blockDone();
+}
+
+void ProgramRunner::awaitRequests(const QMap<RequestId, QString>& requests,
+                                  std::function<void()> then)
+{
+    m_requests.clear();
+    for (auto it = requests.cbegin(); it != requests.cend(); ++it)
+        m_requests.insert(it.key());
+    if (m_requests.isEmpty()) {
+        then();
+        return;
+    }
+    m_afterRequests = std::move(then);
+}
+
+void ProgramRunner::onRequestFinished(const QString& controllerId, const CommandResult& result)
+{
+    if (!result.ok() && result.id != 0)
+        m_blockError = result.error;
+    if (result.id != 0 && result.id == m_inputRead) {
+        if (!result.ok()) {
+            fail(result.error, tr("input %1: %2").arg(m_waitInput).arg(result.message));
+            return;
+        }
+        m_inputRead = 0;
+        checkInput();
+        return;
+    }
+    if (result.id == 0 || !m_requests.remove(result.id))
+        return;
+    m_rates->onResult(controllerId, result);
+    if (!result.ok()) {
+        fail(result.error, tr("controller \"%1\": %2").arg(controllerId, result.message));
+        return;
+    }
+    if (m_requests.isEmpty() && m_afterRequests) {
+        const std::function<void()> then = std::exchange(m_afterRequests, nullptr);
+        then();
+    }
+}
+
+void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message)
+{
+    if (id == 0 || id != m_motion)
+        return;
+    m_motion = 0;
+    if (m_aborting) {
+        end(RunState::Aborted,
+            lineText(ok ? tr("aborted after the move under way ended") : tr("aborted")));
+        return;
+    }
+    if (!ok) {
+        fail(m_blockError, message); // None: ended short (an end switch, a stop from elsewhere)
+        return;
+    }
+    blockDone();
+}
+
+void ProgramRunner::onControllerFailed(const QString& controllerId, const QString& message)
+{
+    const ControllerSession* s = m_machine->session(controllerId);
+    const bool linkLost = s && s->linkState() != LinkState::Connected;
+    if (m_aborting && !linkLost)
+        return; // the stop's own effect on the motion under way; its end comes as usual
+    fail(linkLost ? ErrorKind::LinkDown : m_blockError, message);
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,343 @@
+// ProgramRunner (issue 20): programs on a machine of an E-LAB table (X, Y, Z in mm) and a
+// Nanotec rotary axis (A in degrees), each simulator on a real pseudo-terminal. What matters
+// is asserted at the devices: the moves they accepted and in which order, the frames they
+// received, whether they stand still.
+#include "ModelBench.h"
+#include "PtyDevice.h"
+#include "machine/Machine.h"
+#include "program/ProgramParser.h"
+#include "program/ProgramRunner.h"
+#include <QSignalSpy>
+#include <QtTest>
+#include <algorithm>
+#include <memory>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+namespace {
+
+using Device = test::PtyDevice;
+
+MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
+                 double stepsPerUnit)
+{
+    MachineAxis a;
+    a.name = name;
+    a.controller = controller;
+    a.axis = on;
+    a.unit = unit;
+    a.stepsPerUnit = stepsPerUnit;
+    return a;
+}
+
+QList<qint64> acceptedSteps(Device& d, Axis axis)
+{
+    return d.probe([&] {
+        QList<qint64> steps;
+        for (const SimulatedMove& m : d.sim()->acceptedMoves())
+            if (m.axis == axis)
+                steps << m.steps;
+        return steps;
+    });
+}
+
+int acceptedCount(Device& d)
+{
+    return d.probe([&] { return int(d.sim()->acceptedMoves().size()); });
+}
+
+bool still(Device& d)
+{
+    return d.probe([&] { return d.sim()->standingStill(); });
+}
+
+bool moving(Device& d)
+{
+    return d.probe([&] { return !d.sim()->standingStill(); });
+}
+
+// The index of the first frame the device received that contains `part` after `from`; -1: none.
+int frameIndex(Device& d, const QByteArray& part, int from = 0)
+{
+    const QList<QByteArray> frames = d.frames();
+    for (int i = from; i < frames.size(); ++i)
+        if (frames.at(i).contains(part))
+            return i;
+    return -1;
+}
+
+} // namespace
+
+class TestProgramRunner : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void run_homeMovesRepeatDwell_devicesGetTheBlocksInOrder();
+    void start_absoluteMoveOnUnknownAxis_refusedNothingSent();
+    void pause_duringMove_holdsAfterTheBlockResumeGoesOn();
+    void step_oneBlockThenPaused();
+    void pause_m0_pausedWithItsPrompt();
+    void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
+    void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
+    void runFromLine_afterFault_startsThereWithItsModalState();
+    void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
+    void g1_elab_feedMoveAtItsFeedSpeed();
+    void linkLost_duringDwell_failsLinkDownAndTheTableStops();
+
+private:
+    MachineDescription description() const;
+    void writeElabSetup();
+    bool run(const QByteArray& text, int fromLine = 1, bool stepOnly = false);
+
+    std::unique_ptr<Device> m_elab;
+    std::unique_ptr<Device> m_nanotec;
+    std::unique_ptr<Machine> m_machine;
+    std::unique_ptr<ProgramRunner> m_runner;
+};
+
+MachineDescription TestProgramRunner::description() const
+{
+    MachineDescription d;
+    d.name = QStringLiteral("Table with rotary axis");
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}},
+                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}}};
+    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
+              axis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
+    return d;
+}
+
+void TestProgramRunner::init()
+{
+    m_elab = std::make_unique<Device>("elab");
+    m_nanotec = std::make_unique<Device>("nanotec");
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(description(), &error), qPrintable(error));
+    m_machine->open();
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    writeElabSetup();
+    m_runner = std::make_unique<ProgramRunner>(m_machine.get());
+}
+
+void TestProgramRunner::cleanup()
+{
+    m_runner.reset();
+    m_machine.reset();
+    m_elab.reset();
+    m_nanotec.reset();
+}
+
+// The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
+void TestProgramRunner::writeElabSetup()
+{
+    ControllerSession* table = m_machine->session("table");
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    const RequestId id =
+        table->writeParameters(test::setupBeforeMotionDefaults(*table->model()), false);
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
+                                         [id](const QList<QVariant>& args) {
+                                             const auto r = args.at(0).value<CommandResult>();
+                                             return r.id == id && r.ok();
+                                         }),
+                             10000);
+}
+
+bool TestProgramRunner::run(const QByteArray& text, int fromLine, bool stepOnly)
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> program = ProgramParser::parse(
+        text, {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("A")}, &errors);
+    if (!program) {
+        qWarning() << "parse:" << (errors.isEmpty() ? QString() : errors.first().text());
+        return false;
+    }
+    if (!m_runner->start(*program, fromLine, &errors, stepOnly)) {
+        for (const ProgramError& e : std::as_const(errors))
+            qWarning() << "check:" << e.text();
+        return false;
+    }
+    return true;
+}
+
+#define WAIT_ENDED() QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 60000)
+#define VERIFY_STATE(expected)                                                                     \
+    QVERIFY2(m_runner->state() == (expected), qPrintable(m_runner->endMessage()))
+
+// Reference, moves on both controllers, a 3x repeat of a relative move and a dwell: each
+// device accepted exactly these moves, in this order (a block starts only after the previous
+// one arrived, so no two moves overlap on an axis).
+void TestProgramRunner::run_homeMovesRepeatDwell_devicesGetTheBlocksInOrder()
+{
+    QSignalSpy started(m_runner.get(), &ProgramRunner::blockStarted);
+    QVERIFY(run("G28\n"
+                "G0 X1 A10\n"
+                "O1 repeat [3]\n"
+                "  G91 G0 X0.5\n"
+                "O1 endrepeat\n"
+                "G4 P0.2\n"
+                "G90 G0 X0 A0\n"
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    // At the board: 1 mm, three times 0.5 mm, back by 2.5 mm (x 400 steps/mm).
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 200, 200, 200, -1000}));
+    // At the drive: 10 deg = 1000 steps, then back.
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{1000, -1000}));
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
+    QList<int> lines;
+    for (const QList<QVariant>& args : std::as_const(started))
+        lines << args.at(0).toInt();
+    QCOMPARE(lines, (QList<int>{1, 2, 4, 4, 4, 6, 7, 8}));
+    QCOMPARE(m_runner->blocksDone(), qint64(8));
+}
+
+// The check refuses the whole program: nothing reaches a device.
+void TestProgramRunner::start_absoluteMoveOnUnknownAxis_refusedNothingSent()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("G91 G0 X1\nG90 G0 A10\n", {"X", "Y", "A"}, &errors);
+    QVERIFY(p);
+    QVERIFY(!m_runner->start(*p, 1, &errors));
+    QVERIFY(!errors.isEmpty());
+    QCOMPARE(errors.first().line, 2);
+    QCOMPARE(m_runner->state(), RunState::Idle);
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedCount(*m_elab), 0);
+    QCOMPARE(acceptedCount(*m_nanotec), 0);
+}
+
+void TestProgramRunner::pause_duringMove_holdsAfterTheBlockResumeGoesOn()
+{
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G91\nG0 X5\nG0 X-5\nG0 X1\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    m_runner->pause();
+    QVERIFY(m_runner->pausePending()); // "pausing after this block" while it runs out
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.size(), 1);
+    QCOMPARE(paused.at(0).at(0).toInt(), 2);
+    // Held: more status polls pass and the board got the first move only.
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{2000}));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{2000, -2000, 400}));
+}
+
+void TestProgramRunner::step_oneBlockThenPaused()
+{
+    QVERIFY(run("G91\nG0 X1\nG0 X1\n", 1, true));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+    m_runner->step();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+    m_runner->step(); // nothing left: the program finishes
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+}
+
+void TestProgramRunner::pause_m0_pausedWithItsPrompt()
+{
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G91 G0 X1\nM0 (Load the part, then Resume)\nG0 X1\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.at(0).at(1).toString(), QStringLiteral("Load the part, then Resume"));
+    QCOMPARE(m_runner->prompt(), QStringLiteral("Load the part, then Resume"));
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+}
+
+void TestProgramRunner::abort_duringMove_deviceStandsStillNextBlockNeverArrives()
+{
+    QVERIFY(run("G91\nG0 X200\nG0 X-1\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    m_runner->abort();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Aborted);
+    QVERIFY(m_runner->endMessage().contains("line 2"));
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(m_elab->receivedStop());
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{80000})); // line 3 never came
+}
+
+// The drive's limit switch sits at 3000 steps (30 deg): the move of line 2 ends there, the
+// program fails at line 2, and line 3 never reaches either device.
+void TestProgramRunner::fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive()
+{
+    QVERIFY(run("G91 G0 A10\nG0 A40\nG0 X1 A-5\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Failed);
+    QVERIFY2(m_runner->endMessage().startsWith("line 2:"), qPrintable(m_runner->endMessage()));
+    QSignalSpy rotary(m_machine->session("rotary"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(rotary.size() >= 3, 10000);
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{1000, 4000}));
+    QCOMPARE(acceptedCount(*m_elab), 0);
+    QVERIFY(still(*m_nanotec));
+}
+
+// Run from line N: the blocks before it are not run; line 3's G91 comes from line 1.
+void TestProgramRunner::runFromLine_afterFault_startsThereWithItsModalState()
+{
+    QVERIFY(run("G91 G0 X1\nG0 X2\nG0 X-3\n", 3));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{-1200}));
+}
+
+// G1 on the Nanotec drive: its top speed o carries F (1200 deg/min = 20 deg/s = 2000 steps/s)
+// before the move is sent; the fast speed it had is read first and written back before G0.
+void TestProgramRunner::g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0()
+{
+    QVERIFY(run("G91 G1 A5 F1200\nG0 A-5\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{500, -500}));
+    const int rate = frameIndex(*m_nanotec, "o2000");
+    QVERIFY(rate >= 0);
+    const int firstMove = frameIndex(*m_nanotec, "s500", rate);
+    QVERIFY2(firstMove > rate, "the rate goes before the move");
+    // The drive's top speed before the program (the simulator's power-on value).
+    const int putBack = frameIndex(*m_nanotec, "o1000", firstMove);
+    QVERIFY2(putBack > firstMove, "the fast speed goes back after the G1");
+    QVERIFY(frameIndex(*m_nanotec, "s-500", putBack) > putBack);
+}
+
+// G1 on the board: a feed move (no ramp) at its feed speed, F 6 mm/min = 40 steps/s.
+void TestProgramRunner::g1_elab_feedMoveAtItsFeedSpeed()
+{
+    QVERIFY(run("G91 G1 X0.1 F6\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{40}));
+    QVERIFY(still(*m_elab));
+}
+
+void TestProgramRunner::linkLost_duringDwell_failsLinkDownAndTheTableStops()
+{
+    QVERIFY(run("G91 G0 X1\nG4 P30\nG0 X1\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 2, 30000);
+    m_nanotec->vanish();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Failed);
+    QCOMPARE(m_runner->failureKind(), ErrorKind::LinkDown);
+    QVERIFY2(m_runner->endMessage().startsWith("line 2:"), qPrintable(m_runner->endMessage()));
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+}
+
+QTEST_MAIN(TestProgramRunner)
+#include "tst_programrunner.moc"
