@@ -138,8 +138,10 @@ void ProgramPage::onMachineChanged()
         connect(m_runner, &ProgramRunner::blockStarted, this, &ProgramPage::onBlockStarted);
         connect(m_runner, &ProgramRunner::blockFinished, this, &ProgramPage::onBlockFinished);
         connect(m_runner, &ProgramRunner::paused, this, &ProgramPage::onPaused);
-        connect(m_runner, &ProgramRunner::stopping, this,
-                [this](const QString& message) { m_banner->setStatus(message); });
+        connect(m_runner, &ProgramRunner::stopping, this, [this](const QString& message) {
+            m_stoppingText = message; // said until the axes stand (updateControls)
+            updateControls();
+        });
         connect(m_runner, &ProgramRunner::finished, this, &ProgramPage::onFinished);
     }
     if (machine) {

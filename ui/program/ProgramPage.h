@@ -98,6 +98,7 @@ private:
     int m_pathCursor = -1;      // the path point of the last block finished
     double m_secondsDone = 0;   // the estimate's time at that point
     QString m_checkedPositions; // positionsSignature() of the last check
+    QString m_stoppingText;     // the runner's stopping(): a move runs out by itself
 };
 
 } // namespace stepdeck::ui

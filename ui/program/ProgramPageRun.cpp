@@ -104,6 +104,7 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
         m_runPreview = m_runner->preview();
         m_pathCursor = -1;
         m_secondsDone = 0;
+        m_stoppingText.clear();
         m_banner->clearPrompt();
         onState(m_runner->state());
         return true;
@@ -198,9 +199,11 @@ void ProgramPage::updateControls()
             pausePending ? tr("Pausing: line %1 finishes first, then the program holds.").arg(line)
                          : tr("Running line %1.").arg(line));
     else if (state == RunState::Paused)
-        m_banner->setStatus(tr("Paused before line %1: Resume or Step goes on.").arg(line));
-    else if (state == RunState::Stopping && m_banner->statusText().isEmpty())
-        m_banner->setStatus(tr("Aborting: waiting for the axes to stand."));
+        m_banner->setStatus(tr("Paused after line %1: Resume or Step goes on.").arg(line));
+    else if (state == RunState::Stopping)
+        m_banner->setStatus(m_stoppingText.isEmpty()
+                                ? tr("Aborting: waiting for the axes to stand.")
+                                : tr("Aborting: %1").arg(m_stoppingText));
 }
 
 void ProgramPage::updateProgress()
