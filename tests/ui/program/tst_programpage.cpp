@@ -11,6 +11,7 @@
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramPage.h"
+#include "program/ProgramPathView.h"
 #include "program/ProgramPreviewView.h"
 #include "program/ProgramPromptBanner.h"
 #include "safety/SafetyBar.h"
@@ -39,6 +40,7 @@ private Q_SLOTS:
     void abort_duringMove_abortedAndAxisStandsStill();
     void stop_duringMove_programEndsAborted();
     void m0_prompt_bannerWithResumeGoesOn();
+    void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
     void useController_singleController_becomesMachineOfOne();
@@ -178,6 +180,29 @@ void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     QCOMPARE(m_rig.elab->position(Axis::X), 100);
     QVERIFY(!page()->promptBanner()->isShowingPrompt());
+}
+
+void TestProgramPage::position_whileRunning_drawnInThePath()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable());
+    setProgram(QStringLiteral("G90\nG0 X0.5 Y0.25\nM0 (Look)\nM2\n"));
+    QTRY_VERIFY2(page()->controls()->runButton()->isEnabled(), qPrintable(page()->checkText()));
+    // The path as checked: from where the axes stand to the block's end.
+    QVERIFY(page()->preview()->pathView()->points().contains(QPointF(0.5, 0.25)));
+    QVERIFY(!page()->preview()->pathView()->current());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(), 20000);
+    // Where the machine stands (read back), drawn while the program holds at M0.
+    const machine::MachineAxis* x = m_rig.machine()->description().axis(QStringLiteral("X"));
+    QTRY_COMPARE(m_rig.machine()->axisStatus(*x).position, 0.5);
+    QTRY_COMPARE(page()->preview()->pathView()->current().value_or(QPointF(-1, -1)),
+                 QPointF(0.5, 0.25));
+    QVERIFY2(page()->controls()->progressText() == QStringLiteral("line 3 of 4"),
+             qPrintable(page()->controls()->progressText()));
+    page()->promptBanner()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QVERIFY(!page()->preview()->pathView()->current()); // not running: no marker
 }
 
 void TestProgramPage::runFromLine_confirmationNamesThePosition()
