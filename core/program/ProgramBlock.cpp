@@ -43,12 +43,20 @@ QString blockWord(BlockKind kind)
     return QString();
 }
 
+int ProgramBlock::columnOf(const QString& word) const
+{
+    if (const auto it = columns.constFind(word); it != columns.cend())
+        return it.value();
+    return actionColumn > 0 ? actionColumn : 1;
+}
+
 bool ProgramBlock::operator==(const ProgramBlock& o) const
 {
     return line == o.line && text == o.text && kind == o.kind && axes == o.axes &&
            relative == o.relative && inches == o.inches && feed == o.feed && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
-           oNumber == o.oNumber && count == o.count && partner == o.partner;
+           oNumber == o.oNumber && count == o.count && partner == o.partner &&
+           columns == o.columns && actionColumn == o.actionColumn;
 }
 
 QString ProgramError::text() const

@@ -51,6 +51,16 @@ struct ProgramBlock
     int oNumber = 0;            // O<n>
     qint64 count = 0;           // O repeat: how many times
     int partner = -1;           // RepeatStart <-> RepeatEnd: the index of the other block
+    // Where the line's words stand (1-based columns), so that the check (ProgramCheck) names
+    // the word it refuses: axis words by axis name ("X"), parameters by letter ("F", "P", "S",
+    // "L", "Q"). actionColumn: the G or M word (the O word of a repeat); 0 for a line without
+    // one (axis words moving with the last G0/G1, or only modal words).
+    QMap<QString, int> columns;
+    int actionColumn = 0;
+
+    // The column of a word on this line, or of the action (or else 1) when it is not here
+    // (F from an earlier line). An empty word: the action's column (or 1).
+    int columnOf(const QString& word) const;
 
     bool operator==(const ProgramBlock& o) const;
 };

@@ -188,8 +188,13 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
                     tr("G1 needs a feed rate: F on this line or an earlier one"));
     if (b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed)
         next.motion = b.kind;
-    for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it)
+    for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it) {
         b.axes.insert(it.key(), it.value()->value);
+        b.columns.insert(it.key(), it.value()->column);
+    }
+    for (auto it = sorted.parameters.cbegin(); it != sorted.parameters.cend(); ++it)
+        b.columns.insert(QString(it.key()), it.value()->column);
+    b.actionColumn = sorted.actionWord ? sorted.actionWord->column : 0;
     b.relative = next.relative;
     b.inches = next.inches;
     b.feed = next.feed;

@@ -138,6 +138,7 @@ std::optional<ProgramBlock> repeatBlock(const LexedLine& line, const ProgramWord
         return fail(o.column, ProgramLine::tr("%1: O takes a whole number").arg(o.valueText));
     ProgramBlock b;
     b.oNumber = int(o.value);
+    b.actionColumn = o.column;
     if (line.keyword == QLatin1String("endrepeat")) {
         b.kind = BlockKind::RepeatEnd;
         return b;

@@ -81,15 +81,11 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     }
     m_program = program;
     m_preview = checked.preview;
-    // advance() steps onto the first block on or after fromLine (none: nothing runs). The
-    // index before it is -1 for the program's first block, so "found" is not "m_index >= 0".
-    m_index = int(m_program.blocks.size()) - 1;
-    for (int i = 0; i < m_program.blocks.size(); ++i) {
-        if (m_program.blocks.at(i).line >= fromLine) {
-            m_index = i - 1;
-            break;
-        }
-    }
+    // advance() steps onto the first block on or after fromLine.
+    int first = 0;
+    while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)
+        ++first;
+    m_index = first - 1;
     m_loops.clear();
     m_blocksDone = 0;
     m_pauseAsked = false;

@@ -81,6 +81,7 @@ private Q_SLOTS:
     void feed_garbage_errorsNeverCrashes();
     void feed_overlongLine_boundedAndNamed();
     void parse_crlfAndNoFinalNewline_sameBlocks();
+    void parse_wordColumns_keptForTheCheck();
 };
 
 void TestProgramParser::parse_everyWord_golden_data()
@@ -336,6 +337,31 @@ void TestProgramParser::parse_crlfAndNoFinalNewline_sameBlocks()
     QVERIFY(lf && dos);
     QCOMPARE(dos->blocks, lf->blocks);
     QCOMPARE(lf->blocks.last().text, QStringLiteral("M2"));
+}
+
+// ProgramCheck names the word it refuses: each block keeps where its words stand.
+void TestProgramParser::parse_wordColumns_keptForTheCheck()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(
+        "N10 g1 x 1.5  F300\nY2\nM64 P2\nO1 repeat [2]\n  O1 endrepeat\nM66 L3 P1 Q2", kAxes,
+        &errors);
+    QVERIFY(p);
+    QCOMPARE(p->blocks.size(), 6);
+    const auto columns = [&](int i) { return p->blocks.at(i).columns; };
+    QCOMPARE(columns(0), (QMap<QString, int>{{"X", 8}, {"F", 15}}));
+    QCOMPARE(p->blocks.at(0).actionColumn, 5);
+    QCOMPARE(columns(1), (QMap<QString, int>{{"Y", 1}}));
+    QCOMPARE(p->blocks.at(1).actionColumn, 0); // moves with the G1 before it
+    QCOMPARE(p->blocks.at(1).columnOf("F"), 1);
+    QCOMPARE(columns(2), (QMap<QString, int>{{"P", 5}}));
+    QCOMPARE(p->blocks.at(2).actionColumn, 1);
+    QCOMPARE(p->blocks.at(3).actionColumn, 1);
+    QCOMPARE(p->blocks.at(4).actionColumn, 3);
+    QCOMPARE(columns(5), (QMap<QString, int>{{"L", 5}, {"P", 8}, {"Q", 11}}));
+    QCOMPARE(p->blocks.at(5).columnOf("F"), 1);
+    QCOMPARE(p->blocks.at(0).columnOf("F"), 15);
+    QCOMPARE(p->blocks.at(0).columnOf({}), 5);
 }
 
 QTEST_APPLESS_MAIN(TestProgramParser)

@@ -87,6 +87,7 @@ private Q_SLOTS:
     void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
     void g1_elab_feedMoveAtItsFeedSpeed();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
+    void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
 
 private:
     MachineDescription description() const;
@@ -307,14 +308,17 @@ void TestProgramRunner::g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBefor
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{500, -500}));
-    const int rate = frameIndex(*m_nanotec, "o2000");
-    QVERIFY(rate >= 0);
-    const int firstMove = frameIndex(*m_nanotec, "s500", rate);
-    QVERIFY2(firstMove > rate, "the rate goes before the move");
+    // Read (Zo) before the first write, written before the move's start (A), put back
+    // before the G0's start.
+    const int read = frameIndex(*m_nanotec, "#1Zo");
+    const int rate = frameIndex(*m_nanotec, "#1o2000");
+    QVERIFY(read >= 0 && rate > read);
+    const int firstStart = frameIndex(*m_nanotec, "#1A\r", rate);
+    QVERIFY2(firstStart > rate, "the rate goes before the move");
     // The drive's top speed before the program (the simulator's power-on value).
-    const int putBack = frameIndex(*m_nanotec, "o1000", firstMove);
-    QVERIFY2(putBack > firstMove, "the fast speed goes back after the G1");
-    QVERIFY(frameIndex(*m_nanotec, "s-500", putBack) > putBack);
+    const int putBack = frameIndex(*m_nanotec, "#1o1000", firstStart);
+    QVERIFY2(putBack > firstStart, "the fast speed goes back after the G1");
+    QVERIFY(frameIndex(*m_nanotec, "#1A\r", putBack) > putBack);
 }
 
 // G1 on the board: a feed move (no ramp) at its feed speed, F 6 mm/min = 40 steps/s.
@@ -323,7 +327,11 @@ void TestProgramRunner::g1_elab_feedMoveAtItsFeedSpeed()
     QVERIFY(run("G91 G1 X0.1 F6\n"));
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
-    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{40}));
+    // SetFeedSpeed <FS> with X at 40 (0x28), then the feed move of 40 steps (0x19 ...);
+    // the simulator journals positioning moves only, so the board's count says where it went.
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c")) >= 0);
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("193030303030303238")) >= 0);
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
     QVERIFY(still(*m_elab));
 }
 
@@ -337,6 +345,45 @@ void TestProgramRunner::linkLost_duringDwell_failsLinkDownAndTheTableStops()
     QCOMPARE(m_runner->failureKind(), ErrorKind::LinkDown);
     QVERIFY2(m_runner->endMessage().startsWith("line 2:"), qPrintable(m_runner->endMessage()));
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+}
+
+// The SMC-IC4 has no stop command: abort lets the move under way finish, says so, and ends
+// the program once the board reports it done; the next block is never sent.
+void TestProgramRunner::abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives()
+{
+    m_runner.reset();
+    m_machine.reset();
+    Device emis("emis");
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(
+                 MachineDescription::singleController(*findModel("emis"), emis.path()), &error),
+             qPrintable(error));
+    m_machine->open();
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    m_runner = std::make_unique<ProgramRunner>(m_machine.get());
+    QSignalSpy stopping(m_runner.get(), &ProgramRunner::stopping);
+    QList<ProgramError> errors;
+    // 2000 steps at the board's work speed (1000 steps/s unless set): about 2 s.
+    const std::optional<Program> p =
+        ProgramParser::parse("G91 G0 X2000\nG0 X-100\n", {"X", "Y", "Z", "U"}, &errors);
+    QVERIFY(p);
+    QVERIFY(m_runner->start(*p, 1, &errors));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(emis), 10000);
+    m_runner->abort();
+    QCOMPARE(m_runner->state(), RunState::Stopping);
+    QCOMPARE(stopping.size(), 1);
+    QVERIFY2(stopping.at(0).at(0).toString().contains("finishes by itself"),
+             qPrintable(stopping.at(0).at(0).toString()));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Aborted);
+    QVERIFY(still(emis));
+    QCOMPARE(emis.probe([&] { return emis.sim()->position(Axis::X); }), qint64(2000));
+    QSignalSpy polls(m_machine->session("emis"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
+    QCOMPARE(acceptedSteps(emis, Axis::X), (QList<qint64>{2000}));
+    m_runner.reset();
+    m_machine.reset(); // before the device goes
 }
 
 QTEST_MAIN(TestProgramRunner)

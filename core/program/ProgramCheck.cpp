@@ -1,0 +1,159 @@
+// The check of a program before anything moves (issue 20, docs/programs.md "Check"): the
+// blocks against the controllers (ProgramPlan.cpp), then the run walked with its positions
+// (ProgramSimulation.cpp); factsOf() in ProgramFacts.cpp.
+#include "ProgramCheck.h"
+#include "ProgramParser.h"
+#include "ProgramSimulation.h"
+#include <QSet>
+#include <algorithm>
+
+namespace stepdeck::program {
+
+namespace {
+
+// The index of the block a run from `fromLine` starts at, or -1 with the reason in *errors.
+int startIndex(const Program& program, int fromLine, QList<ProgramError>* errors)
+{
+    const QList<ProgramBlock>& blocks = program.blocks;
+    if (fromLine <= 1)
+        return 0;
+    const auto first = std::find_if(blocks.cbegin(), blocks.cend(),
+                                    [&](const ProgramBlock& b) { return b.line >= fromLine; });
+    if (first == blocks.cend()) {
+        *errors << ProgramError{
+            fromLine, 1,
+            blocks.isEmpty()
+                ? ProgramCheck::tr("run from line %1: the program has no blocks").arg(fromLine)
+                : ProgramCheck::tr("run from line %1: the program's last block is on line %2")
+                      .arg(fromLine)
+                      .arg(blocks.last().line)};
+        return -1;
+    }
+    const int start = int(first - blocks.cbegin());
+    // The outermost repeat around the start: its passes would be lost (docs/programs.md).
+    for (int i = 0; i < start; ++i) {
+        const ProgramBlock& b = blocks.at(i);
+        if (b.kind == BlockKind::RepeatStart && b.partner >= start) {
+            *errors << ProgramError{fromLine, 1,
+                                    ProgramCheck::tr("run from line %1 is inside the repeat of "
+                                                     "line %2: start at line %2 or after its "
+                                                     "endrepeat")
+                                        .arg(fromLine)
+                                        .arg(b.line)};
+            return -1;
+        }
+    }
+    return start;
+}
+
+// Line order; at most ProgramParser::kMaxErrors, as the parser lists them.
+void sortAndLimit(QList<ProgramError>* errors)
+{
+    std::stable_sort(errors->begin(), errors->end(),
+                     [](const ProgramError& a, const ProgramError& b) {
+                         return a.line != b.line ? a.line < b.line : a.column < b.column;
+                     });
+    if (errors->size() <= ProgramParser::kMaxErrors)
+        return;
+    const int lastLine = errors->last().line;
+    errors->resize(ProgramParser::kMaxErrors);
+    *errors << ProgramError{lastLine, 1,
+                            ProgramCheck::tr("more errors follow; only the first %1 are listed")
+                                .arg(ProgramParser::kMaxErrors)};
+}
+
+// A G1 on a controller whose rate is also its fast speed (Capabilities::feedRateSetsRapid) is
+// followed by the fast speed put back before a G0 (ProgramRates): only where the model can read
+// that speed back first. Where it cannot (EMIS #E1), a G0 on such a controller in a program
+// that also has a G1 there would run at the last F: refused at every such G0.
+void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
+                           QList<ProgramError>* errors)
+{
+    const machine::MachineDescription& d = facts.description;
+    const auto unreadableRate = [&](const QString& controller) -> QString {
+        const Capabilities caps = facts.capabilities.value(controller);
+        if (!caps.feedRateSetsRapid || !caps.feedRateParameter)
+            return {};
+        const ParameterSpec* spec =
+            facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
+        return spec && !spec->readable ? spec->label : QString();
+    };
+    QSet<QString> withG1;
+    for (qsizetype i = start; i < program.blocks.size(); ++i) {
+        const ProgramBlock& b = program.blocks.at(i);
+        if (b.kind == BlockKind::Feed)
+            for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it)
+                if (const machine::MachineAxis* a = d.axis(it.key()))
+                    withG1.insert(a->controller);
+    }
+    for (qsizetype i = start; i < program.blocks.size(); ++i) {
+        const ProgramBlock& b = program.blocks.at(i);
+        if (b.kind != BlockKind::Rapid)
+            continue;
+        for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it) {
+            const machine::MachineAxis* a = d.axis(it.key());
+            if (!a || !withG1.contains(a->controller))
+                continue;
+            if (const QString label = unreadableRate(a->controller); !label.isEmpty()) {
+                *errors << ProgramError{
+                    b.line, b.columnOf(a->name),
+                    ProgramCheck::tr("%1: G0 in a program with G1 on controller \"%2\": its "
+                                     "fast speed (%3) cannot be read back to be put back after "
+                                     "G1; move %1 with G1 and F only, or with G0 only")
+                        .arg(a->name, a->controller, label)};
+                break;
+            }
+        }
+    }
+}
+
+} // namespace
+
+ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
+                                       int fromLine)
+{
+    ProgramCheckResult result;
+    ProgramPreview& preview = result.preview;
+    preview.lines = program.lines;
+    preview.motionNote = tr("the axes of a block start together, each at its own rate; the "
+                            "block ends when every axis has arrived");
+    const int start = startIndex(program, fromLine, &result.errors);
+    if (start < 0)
+        return result;
+    std::vector<PlannedBlock> planned(size_t(program.blocks.size()));
+    ProgramPlan plan(facts, &result.errors);
+    for (qsizetype i = start; i < program.blocks.size(); ++i)
+        planned[size_t(i)] = plan.plan(program.blocks.at(i));
+    checkFastSpeedPutBack(program, start, facts, &result.errors);
+    ProgramSimulation(facts, &planned, &result.errors).run(start, &preview);
+    sortAndLimit(&result.errors);
+    return result;
+}
+
+namespace {
+// The machine's inputs or outputs counted from 1 over the controllers in the file's order.
+std::optional<MachineIo> nthIo(const MachineFacts& facts, int n, int Capabilities::*count)
+{
+    if (n < 1)
+        return std::nullopt;
+    for (const machine::MachineController& c : facts.description.controllers) {
+        const int here = facts.capabilities.value(c.id).*count;
+        if (n <= here)
+            return MachineIo{c.id, n};
+        n -= here;
+    }
+    return std::nullopt;
+}
+} // namespace
+
+std::optional<MachineIo> machineOutput(const MachineFacts& facts, int n)
+{
+    return nthIo(facts, n, &Capabilities::digitalOutputs);
+}
+
+std::optional<MachineIo> machineInput(const MachineFacts& facts, int n)
+{
+    return nthIo(facts, n, &Capabilities::digitalInputs);
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,209 @@
+// The check's first part (ProgramCheck): each block against what the machine's controllers
+// take, before any position is followed (docs/programs.md "Check").
+#include "ProgramSimulation.h"
+#include "ProgramUnits.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+namespace {
+int axisIndex(const machine::MachineDescription& d, const QString& name)
+{
+    for (int i = 0; i < d.axes.size(); ++i)
+        if (d.axes.at(i).name == name)
+            return i;
+    return -1;
+}
+} // namespace
+
+QString figure(double value)
+{
+    QString text = QString::number(value, 'f', 3);
+    while (text.endsWith(QLatin1Char('0')))
+        text.chop(1);
+    if (text.endsWith(QLatin1Char('.')))
+        text.chop(1);
+    return text == QLatin1String("-0") ? QStringLiteral("0") : text;
+}
+
+ProgramPlan::ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors)
+    : m_facts(facts), m_errors(errors)
+{}
+
+void ProgramPlan::error(const ProgramBlock& block, int column, const QString& message)
+{
+    *m_errors << ProgramError{block.line, column, message};
+}
+
+PlannedBlock ProgramPlan::plan(const ProgramBlock& block)
+{
+    PlannedBlock out;
+    out.block = &block;
+    out.partner = block.partner;
+    switch (block.kind) {
+    case BlockKind::Rapid:
+    case BlockKind::Feed:
+        planMove(block, &out);
+        break;
+    case BlockKind::Home:
+        planHome(block, &out);
+        break;
+    case BlockKind::SpindleOn:
+    case BlockKind::SpindleOff:
+        checkAnyController(block, &Capabilities::spindle);
+        break;
+    case BlockKind::CoolantMist:
+    case BlockKind::CoolantFlood:
+    case BlockKind::CoolantOff:
+        checkAnyController(block, &Capabilities::coolant);
+        break;
+    case BlockKind::OutputOn:
+    case BlockKind::OutputOff:
+    case BlockKind::WaitInput:
+        checkIo(block);
+        break;
+    default:
+        break;
+    }
+    return out;
+}
+
+void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
+{
+    const machine::MachineDescription& d = m_facts.description;
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
+        AxisMove m;
+        m.axis = axisIndex(d, it.key());
+        m.column = block.columnOf(it.key());
+        if (m.axis < 0) { // the parser knew other axes than these facts
+            error(block, m.column, ProgramCheck::tr("the machine has no axis %1").arg(it.key()));
+            continue;
+        }
+        const machine::MachineAxis& axis = d.axes.at(m.axis);
+        m.value = units::toAxisUnits(axis, it.value(), block.inches);
+        if (block.kind == BlockKind::Feed) {
+            if (!checkRate(block, axis, &m.speed))
+                continue;
+        } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
+            m.speed = *axis.maxJogSpeed;
+        } else {
+            m.speed = m_facts.capabilities.value(axis.controller).maxJogSpeed / axis.stepsPerUnit;
+        }
+        out->moves.push_back(m);
+    }
+}
+
+// G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s
+// within the parameter's schema range). *speed: the rate the device runs, in unit/s.
+bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxis& axis,
+                            double* speed)
+{
+    const Capabilities caps = m_facts.capabilities.value(axis.controller);
+    const int column = block.columnOf(axis.name);
+    if (!caps.feedRateParameter) {
+        error(block, column,
+              ProgramCheck::tr("%1: controller \"%2\" takes no feed rate, so G1 cannot move it; "
+                               "use G0")
+                  .arg(axis.name, axis.controller));
+        return false;
+    }
+    const QString parameter = QString::fromLatin1(caps.feedRateParameter);
+    const ParameterSchema schema = m_facts.schemas.value(axis.controller);
+    const ParameterSpec* spec = schema.find(parameter);
+    if (!spec) {
+        error(block, column,
+              ProgramCheck::tr("%1: controller \"%2\" has no parameter %3 for the feed rate")
+                  .arg(axis.name, axis.controller, parameter));
+        return false;
+    }
+    if (!block.feed) // the parser refuses G1 without F
+        return true;
+    const qint64 rate = units::feedStepsPerSecond(axis, *block.feed, block.inches);
+    if (rate < spec->minimum || rate > spec->maximum) {
+        error(block, block.columnOf(QStringLiteral("F")),
+              ProgramCheck::tr("F%1 is %2 steps/s on %3; controller \"%4\" takes %5..%6 steps/s "
+                               "(%7)")
+                  .arg(figure(*block.feed))
+                  .arg(rate)
+                  .arg(axis.name, axis.controller)
+                  .arg(spec->minimum)
+                  .arg(spec->maximum)
+                  .arg(ParameterSchema::displayLabel(*spec)));
+        return false;
+    }
+    *speed = double(rate) / axis.stepsPerUnit;
+    return true;
+}
+
+void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
+{
+    const machine::MachineDescription& d = m_facts.description;
+    QStringList refused; // controllers named once per block
+    const auto add = [&](int index, int column) {
+        const machine::MachineAxis& axis = d.axes.at(index);
+        const Capabilities caps = m_facts.capabilities.value(axis.controller);
+        if (!caps.has(MotionMode::Reference)) {
+            if (!refused.contains(axis.controller))
+                error(block, column,
+                      ProgramCheck::tr("%1: controller \"%2\" has no reference run (G28)")
+                          .arg(axis.name, axis.controller));
+            refused << axis.controller;
+            return;
+        }
+        AxisMove m;
+        m.axis = index;
+        m.column = column;
+        out->moves.push_back(m);
+    };
+    if (block.axes.isEmpty()) {
+        for (int i = 0; i < d.axes.size(); ++i)
+            add(i, block.columnOf({}));
+        return;
+    }
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
+        const int index = axisIndex(d, it.key());
+        if (index < 0)
+            error(block, block.columnOf(it.key()),
+                  ProgramCheck::tr("the machine has no axis %1").arg(it.key()));
+        else
+            add(index, block.columnOf(it.key()));
+    }
+}
+
+void ProgramPlan::checkAnyController(const ProgramBlock& block, bool Capabilities::*has)
+{
+    for (const machine::MachineController& c : m_facts.description.controllers)
+        if (m_facts.capabilities.value(c.id).*has)
+            return;
+    const QString word = blockWord(block.kind);
+    error(block, block.columnOf({}),
+          has == &Capabilities::spindle
+              ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(word)
+              : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(word));
+}
+
+void ProgramPlan::checkIo(const ProgramBlock& block)
+{
+    const bool output = block.kind != BlockKind::WaitInput;
+    if (output ? machineOutput(m_facts, block.number) : machineInput(m_facts, block.number))
+        return;
+    int count = 0;
+    for (const machine::MachineController& c : m_facts.description.controllers) {
+        const Capabilities caps = m_facts.capabilities.value(c.id);
+        count += output ? caps.digitalOutputs : caps.digitalInputs;
+    }
+    const QString word = QStringLiteral("%1 P%2").arg(blockWord(block.kind)).arg(block.number);
+    QString message;
+    if (output)
+        message =
+            count == 0
+                ? ProgramCheck::tr("%1: the machine has no digital outputs").arg(word)
+                : ProgramCheck::tr("%1: the machine's outputs are 1..%2").arg(word).arg(count);
+    else
+        message = count == 0
+                      ? ProgramCheck::tr("%1: the machine has no digital inputs").arg(word)
+                      : ProgramCheck::tr("%1: the machine's inputs are 1..%2").arg(word).arg(count);
+    error(block, block.columnOf(QStringLiteral("P")), message);
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,214 @@
+// The check's walk (ProgramCheck): the blocks as the run executes them, repeats counted out,
+// following the positions the program reaches (docs/programs.md "Check", "Preview").
+#include "ProgramSimulation.h"
+#include <algorithm>
+#include <cmath>
+
+namespace stepdeck::program {
+
+ProgramSimulation::ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
+                                     QList<ProgramError>* errors)
+    : m_facts(facts), m_axes(facts.description.axes), m_blocks(*blocks), m_errors(errors)
+{
+    const size_t n = size_t(m_axes.size());
+    m_steps.assign(n, 0);
+    m_known.assign(n, 0);
+    m_moved.assign(n, 0);
+    m_extentKnown.assign(n, 0);
+    m_minimum.assign(n, 0);
+    m_maximum.assign(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        const machine::MachineAxis& axis = m_axes.at(qsizetype(i));
+        const auto it = facts.knownPositions.constFind(axis.name);
+        if (it != facts.knownPositions.cend() && std::isfinite(it.value())) {
+            m_steps[i] = axis.toSteps(it.value());
+            m_known[i] = 1;
+            noteExtent(int(i));
+        }
+    }
+}
+
+void ProgramSimulation::run(int start, ProgramPreview* preview)
+{
+    addPoint(0);
+    const int n = int(m_blocks.size());
+    int i = start;
+    while (i < n) {
+        PlannedBlock& planned = m_blocks[size_t(i)];
+        const ProgramBlock& block = *planned.block;
+        if (block.kind == BlockKind::RepeatStart) {
+            if (block.count <= 0 || planned.partner < 0) {
+                i = planned.partner < 0 ? i + 1 : planned.partner + 1;
+            } else {
+                m_loops.push_back(Loop{i, block.count - 1});
+                ++i;
+            }
+            continue;
+        }
+        if (block.kind == BlockKind::RepeatEnd) {
+            if (!m_loops.empty() && m_loops.back().start == planned.partner) {
+                if (m_loops.back().remaining > 0) {
+                    --m_loops.back().remaining;
+                    i = planned.partner + 1;
+                    continue;
+                }
+                m_loops.pop_back();
+            }
+            ++i;
+            continue;
+        }
+        if (++m_blocksRun > ProgramCheck::kMaxBlocksRun) {
+            tooManyBlocks(block);
+            break;
+        }
+        execute(planned);
+        i = block.kind == BlockKind::End ? n : i + 1;
+    }
+    finish(preview);
+}
+
+void ProgramSimulation::execute(PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    switch (block.kind) {
+    case BlockKind::Rapid:
+    case BlockKind::Feed:
+        move(planned);
+        break;
+    case BlockKind::Home:
+        home(planned);
+        break;
+    case BlockKind::Dwell:
+        m_seconds += block.seconds;
+        addPoint(block.line);
+        break;
+    default: // M66's wait, M0's pause: no time known; the rest moves nothing
+        break;
+    }
+}
+
+void ProgramSimulation::move(PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    if (block.axes.isEmpty())
+        return; // "G0" alone only sets the motion mode
+    // The axes of a block start together, each at its own rate: the block lasts as long as
+    // its slowest axis (no acceleration: an estimate).
+    double seconds = 0;
+    for (AxisMove& m : planned.moves)
+        moveAxis(block, m, &seconds);
+    m_seconds += seconds;
+    addPoint(block.line);
+}
+
+void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds)
+{
+    const machine::MachineAxis& axis = m_axes.at(m.axis);
+    const size_t a = size_t(m.axis);
+    m_moved[a] = 1;
+    const bool wasKnown = m_known[a];
+    const double here = wasKnown ? axis.toUnits(m_steps[a]) : 0.0;
+    double distance = std::abs(m.value);
+    if (!block.relative) {
+        if (!wasKnown && !m.reportedUnknown) {
+            m.reportedUnknown = true;
+            *m_errors << ProgramError{
+                block.line, m.column,
+                ProgramCheck::tr("%1: the position is unknown, so an absolute move could go "
+                                 "anywhere: reference the axis first (G28 %1) or move it "
+                                 "relatively (G91)")
+                    .arg(axis.name)};
+        }
+        distance = wasKnown ? std::abs(m.value - here) : 0.0;
+        m_steps[a] = axis.toSteps(m.value);
+        m_known[a] = 1; // on from the target, so that one error does not bring others
+    } else if (wasKnown) {
+        // As Machine::move counts a relative move: the difference of the whole steps.
+        m_steps[a] += axis.toSteps(here + m.value) - axis.toSteps(here);
+    }
+    if (m.speed > 0)
+        *seconds = std::max(*seconds, distance / m.speed);
+    if (!m_known[a])
+        return; // a relative move from an unknown position: its target is unknown too
+    const double to = block.relative ? here + m.value : m.value;
+    if (axis.hasSoftLimits() && !m.reportedLimit &&
+        (to < *axis.softMinimum || to > *axis.softMaximum)) {
+        m.reportedLimit = true;
+        const QString unit = machine::unitKey(axis.unit);
+        *m_errors << ProgramError{
+            block.line, m.column,
+            ProgramCheck::tr("%1 reaches %2 %3, outside the soft limits %4..%5 %3")
+                .arg(axis.name, figure(to), unit, figure(*axis.softMinimum),
+                     figure(*axis.softMaximum))};
+    }
+    noteExtent(m.axis);
+}
+
+void ProgramSimulation::home(const PlannedBlock& planned)
+{
+    // A reference run ends at 0 on every model (docs/programs.md "Check"); how long it takes
+    // depends on where the switch is: no time is added.
+    for (const AxisMove& m : planned.moves) {
+        const size_t a = size_t(m.axis);
+        m_moved[a] = 1;
+        m_steps[a] = 0;
+        m_known[a] = 1;
+        noteExtent(m.axis);
+    }
+    addPoint(planned.block->line);
+}
+
+void ProgramSimulation::noteExtent(int axis)
+{
+    const size_t a = size_t(axis);
+    const double at = m_axes.at(axis).toUnits(m_steps[a]);
+    if (!m_extentKnown[a]) {
+        m_extentKnown[a] = 1;
+        m_minimum[a] = m_maximum[a] = at;
+        return;
+    }
+    m_minimum[a] = std::min(m_minimum[a], at);
+    m_maximum[a] = std::max(m_maximum[a], at);
+}
+
+void ProgramSimulation::addPoint(int line)
+{
+    if (m_path.size() >= ProgramPreview::kMaxPathPoints) {
+        m_pathTruncated = true;
+        return;
+    }
+    PreviewPoint point;
+    point.line = line;
+    point.seconds = m_seconds;
+    for (qsizetype i = 0; i < m_axes.size(); ++i)
+        if (m_known[size_t(i)])
+            point.position.insert(m_axes.at(i).name, m_axes.at(i).toUnits(m_steps[size_t(i)]));
+    m_path << point;
+}
+
+void ProgramSimulation::tooManyBlocks(const ProgramBlock& block)
+{
+    // Named at the outermost repeat that makes the run so long, else at the block itself.
+    const ProgramBlock& at =
+        m_loops.empty() ? block : *m_blocks[size_t(m_loops.front().start)].block;
+    *m_errors << ProgramError{at.line, at.columnOf({}),
+                              ProgramCheck::tr("the run executes more than %1 blocks (repeats "
+                                               "counted out)")
+                                  .arg(ProgramCheck::kMaxBlocksRun)};
+}
+
+void ProgramSimulation::finish(ProgramPreview* preview) const
+{
+    preview->blocksRun = std::min(m_blocksRun, ProgramCheck::kMaxBlocksRun);
+    preview->estimatedSeconds = m_seconds;
+    preview->path = m_path;
+    preview->pathTruncated = m_pathTruncated;
+    for (qsizetype i = 0; i < m_axes.size(); ++i) {
+        const size_t a = size_t(i);
+        if (m_extentKnown[a])
+            preview->extents.insert(m_axes.at(i).name,
+                                    AxisExtent{m_minimum[a], m_maximum[a], bool(m_moved[a])});
+    }
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,95 @@
+#pragma once
+// Internal to ProgramCheck: a program's blocks planned in the machine's terms (ProgramPlan.cpp)
+// and walked with their repeats counted out (ProgramSimulation.cpp).
+#include "ProgramCheck.h"
+#include <vector>
+
+namespace stepdeck::program {
+
+// One axis of a block in the axis' own terms, worked out once before the walk.
+struct AxisMove
+{
+    int axis = 0;     // index in MachineDescription::axes
+    double value = 0; // G0/G1: the target (absolute) or distance (relative) in the axis' unit
+    int column = 1;   // the axis word, or the action for the axes of a bare G28
+    double speed = 0; // unit/s this block moves the axis at; 0: not known
+    // A word a repeat runs many times is reported once.
+    bool reportedUnknown = false;
+    bool reportedLimit = false;
+};
+
+struct PlannedBlock
+{
+    const ProgramBlock* block = nullptr;
+    std::vector<AxisMove> moves; // G0/G1: the axis words; G28: the axes it references
+    int partner = -1;            // repeats: the other end's index
+};
+
+// "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
+QString figure(double value);
+
+// Plans one block against the machine (the part of the check that needs no positions): what
+// the axes' controllers take (G1's rate, G28, spindle, coolant, outputs, inputs). Errors go to
+// *errors.
+class ProgramPlan
+{
+public:
+    ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors);
+    PlannedBlock plan(const ProgramBlock& block);
+
+private:
+    void planMove(const ProgramBlock& block, PlannedBlock* out);
+    void planHome(const ProgramBlock& block, PlannedBlock* out);
+    bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
+    void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
+    void checkIo(const ProgramBlock& block);
+    void error(const ProgramBlock& block, int column, const QString& message);
+
+    const MachineFacts& m_facts;
+    QList<ProgramError>* m_errors;
+};
+
+// Walks the planned blocks from `start` as the run will (repeats counted out, at most
+// ProgramCheck::kMaxBlocksRun blocks), following the positions the program reaches: absolute
+// moves on unknown axes and targets outside the soft limits are errors; the preview's
+// figures (extents, path, estimated time) come from the same walk.
+class ProgramSimulation
+{
+public:
+    ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
+                      QList<ProgramError>* errors);
+    void run(int start, ProgramPreview* preview);
+
+private:
+    struct Loop
+    {
+        int start = 0;        // index of the RepeatStart
+        qint64 remaining = 0; // passes left after the current one
+    };
+    void execute(PlannedBlock& planned);
+    void move(PlannedBlock& planned);
+    void home(const PlannedBlock& planned);
+    void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
+    void noteExtent(int axis);
+    void addPoint(int line);
+    void tooManyBlocks(const ProgramBlock& block);
+    void finish(ProgramPreview* preview) const;
+
+    const MachineFacts& m_facts;
+    const QList<machine::MachineAxis>& m_axes;
+    std::vector<PlannedBlock>& m_blocks;
+    QList<ProgramError>* m_errors;
+    // Per axis (the description's order).
+    std::vector<qint64> m_steps; // the device's count the axis would hold
+    std::vector<char> m_known;
+    std::vector<char> m_moved;
+    std::vector<char> m_extentKnown;
+    std::vector<double> m_minimum, m_maximum;
+    std::vector<Loop> m_loops;
+    qint64 m_blocksRun = 0;
+    double m_seconds = 0;
+    QList<PreviewPoint> m_path;
+    bool m_pathTruncated = false;
+};
+
+} // namespace stepdeck::program

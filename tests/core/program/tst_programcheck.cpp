@@ -1,0 +1,577 @@
+// The program check (issue 20, docs/programs.md "Check", "Preview"): every error kind at its
+// line and column, positions followed through repeats, G28, rates per model, G20, inputs and
+// outputs over several controllers, runs from a line, the preview's figures and bounds, and
+// the docs' example programs checked clean on their model.
+#include "machine/Machine.h"
+#include "program/ProgramCheck.h"
+#include "program/ProgramParser.h"
+#include "protocols/Registry.h"
+#include <QDir>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+namespace {
+
+void addController(MachineFacts* facts, const QString& id, const QString& model)
+{
+    const ModelInfo* info = findModel(model);
+    QVERIFY2(info, qPrintable(model));
+    MachineController c;
+    c.id = id;
+    c.modelId = model;
+    c.port = QStringLiteral("sim");
+    facts->description.controllers << c;
+    facts->capabilities.insert(id, info->capabilities);
+    facts->schemas.insert(id, info->schema);
+}
+
+MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
+                 double stepsPerUnit, double min, double max)
+{
+    MachineAxis a;
+    a.name = name;
+    a.controller = controller;
+    a.axis = on;
+    a.unit = unit;
+    a.stepsPerUnit = stepsPerUnit;
+    a.softMinimum = min;
+    a.softMaximum = max;
+    return a;
+}
+
+// The machines of the tests, by name:
+// "mill": E-LAB "table" X Y Z (mm), laser axes "tilt" A (deg);
+// "io": E-LAB "table" X, EMIS "io1" U and "io2" V (7 outputs and 8 inputs each);
+// "mixed": E-LAB "table" X (mm), Nanotec "rotary" A (deg);
+// "noReference": the mill whose "tilt" has no reference run;
+// "emis", "nanotec": one controller in its steps (MachineDescription::singleController).
+MachineFacts machineFacts(const QString& name)
+{
+    MachineFacts f;
+    if (name == QLatin1String("emis") || name == QLatin1String("nanotec")) {
+        const ModelInfo* info = findModel(name);
+        f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
+        f.capabilities.insert(name, info->capabilities);
+        f.schemas.insert(name, info->schema);
+        return f;
+    }
+    if (name == QLatin1String("mixed")) {
+        addController(&f, "table", "elab");
+        addController(&f, "rotary", "nanotec");
+        f.description.axes << axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100)
+                           << axis("A", "rotary", Axis::X, AxisUnit::Degree, 100, -360, 360);
+        return f;
+    }
+    if (name == QLatin1String("io")) {
+        addController(&f, "table", "elab");
+        addController(&f, "io1", "emis");
+        addController(&f, "io2", "emis");
+        f.description.axes << axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100)
+                           << axis("U", "io1", Axis::X, AxisUnit::Step, 1, -1e6, 1e6)
+                           << axis("V", "io2", Axis::X, AxisUnit::Step, 1, -1e6, 1e6);
+        return f;
+    }
+    addController(&f, "table", "elab");
+    addController(&f, "tilt", "laser-axis");
+    MachineAxis x = axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100);
+    x.maxJogSpeed = 50; // mm/s; Y and Z go at the E-LAB's 5000 steps/s
+    f.description.axes << x << axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 200, 0, 200)
+                       << axis("Z", "table", Axis::Z, AxisUnit::Millimetre, 100, -50, 0)
+                       << axis("A", "tilt", Axis::X, AxisUnit::Degree, 10, -90, 90);
+    if (name == QLatin1String("noReference"))
+        f.capabilities["tilt"].motionModes.removeAll(MotionMode::Reference);
+    return f;
+}
+
+// "X=0 Y=5": the known positions.
+QMap<QString, double> positions(const QString& text)
+{
+    QMap<QString, double> out;
+    for (const QString& pair : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QStringList kv = pair.split(QLatin1Char('='));
+        out.insert(kv.at(0), kv.at(1).toDouble());
+    }
+    return out;
+}
+
+Program parsed(const QString& text, const MachineFacts& facts)
+{
+    QStringList names;
+    for (const MachineAxis& a : facts.description.axes)
+        names << a.name;
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(text.toUtf8(), names, &errors);
+    if (!p) {
+        for (const ProgramError& e : errors)
+            qWarning() << e.text();
+        return {};
+    }
+    return *p;
+}
+
+QStringList texts(const QList<ProgramError>& errors)
+{
+    QStringList out;
+    for (const ProgramError& e : errors)
+        out << e.text();
+    return out;
+}
+
+} // namespace
+
+class TestProgramCheck : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void check_errors_lineColumnAndMessage_data();
+    void check_errors_lineColumnAndMessage();
+    void check_fromLine_startOrRefusal_data();
+    void check_fromLine_startOrRefusal();
+    void preview_figures_extentsPathAndEstimatedSeconds();
+    void preview_millionPassRepeat_countedOutPathBounded();
+    void check_tooManyBlocks_namedAtTheOutermostRepeat();
+    void check_manyErrors_listedUpToTheParsersLimit();
+    void machineIo_numberedOverTheControllers_data();
+    void machineIo_numberedOverTheControllers();
+    void examples_eachChecksCleanOnItsModel();
+    void factsOf_machineReferencedX_onlyXKnownAtZero();
+};
+
+void TestProgramCheck::check_errors_lineColumnAndMessage_data()
+{
+    QTest::addColumn<QString>("machine");
+    QTest::addColumn<QString>("known");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+
+    const QString unknownX =
+        "X: the position is unknown, so an absolute move could go anywhere: reference the axis "
+        "first (G28 X) or move it relatively (G91)";
+    QTest::newRow("absolute on an unknown axis") << "mill"
+                                                 << "Y=0"
+                                                 << "G0 Y0 X10" << QStringList{"1:7: " + unknownX};
+    QTest::newRow("absolute in a repeat: named once")
+        << "mill"
+        << ""
+        << "O1 repeat [3]\nG0 X1\nO1 endrepeat" << QStringList{"2:4: " + unknownX};
+    QTest::newRow("G28 of the axis makes absolute moves legal")
+        << "mill"
+        << ""
+        << "G28 X0\nG0 X10" << QStringList{};
+    QTest::newRow("bare G28 references every axis") << "mill"
+                                                    << ""
+                                                    << "G28\nG0 X10 Y10 Z-1 A5" << QStringList{};
+    QTest::newRow("G28 of another axis does not")
+        << "mill"
+        << ""
+        << "G28 Y0\nG0 X10" << QStringList{"2:4: " + unknownX};
+    QTest::newRow("known position: absolute moves legal") << "mill"
+                                                          << "X=3"
+                                                          << "G0 X10" << QStringList{};
+    QTest::newRow("relative move from an unknown position") << "mill"
+                                                            << ""
+                                                            << "G91 G0 X500" << QStringList{};
+    QTest::newRow("soft limit, absolute")
+        << "mill"
+        << "X=0"
+        << "G0 X150" << QStringList{"1:4: X reaches 150 mm, outside the soft limits 0..100 mm"};
+    QTest::newRow("soft limit, below")
+        << "mill"
+        << "Z=0"
+        << "G0 Z-50.5" << QStringList{"1:4: Z reaches -50.5 mm, outside the soft limits -50..0 mm"};
+    QTest::newRow("soft limit reached by relative moves in a repeat")
+        << "mill"
+        << "X=0"
+        << "G91\nO1 repeat [30]\n  G0 X4\nO1 endrepeat"
+        << QStringList{"3:6: X reaches 104 mm, outside the soft limits 0..100 mm"};
+    QTest::newRow("relative moves in a repeat that stay inside")
+        << "mill"
+        << "X=0"
+        << "G91\nO1 repeat [25]\n  G0 X4\nO1 endrepeat" << QStringList{};
+    QTest::newRow("soft limit after G28 (ends at 0)")
+        << "mill"
+        << ""
+        << "G28 Z0\nG91 G0 Z1"
+        << QStringList{"2:8: Z reaches 1 mm, outside the soft limits -50..0 mm"};
+    QTest::newRow("G20: inch converted on mm axes")
+        << "mill"
+        << ""
+        << "G20 G28 X0\nG0 X5"
+        << QStringList{"2:4: X reaches 127 mm, outside the soft limits 0..100 mm"};
+    QTest::newRow("G20: rotary axes stay degrees") << "mill"
+                                                   << ""
+                                                   << "G20 G28 A0\nG0 A80" << QStringList{};
+    QTest::newRow("G1 rate above the E-LAB feed speed")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F40000"
+        << QStringList{"2:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+                       "steps/s (Feed speed)"};
+    QTest::newRow("G1 rate within the E-LAB feed speed")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F39000" << QStringList{};
+    QTest::newRow("G1 rate from an earlier line: named at G1")
+        << "mill"
+        << ""
+        << "G28 X0\nF40000\nG1 X10"
+        << QStringList{"3:1: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+                       "steps/s (Feed speed)"};
+    QTest::newRow("G20 converts the rate")
+        << "mill"
+        << ""
+        << "G20\nG28 X0\nG1 X1 F1600"
+        << QStringList{"3:7: F1600 is 67733 steps/s on X; controller \"table\" takes 0..65535 "
+                       "steps/s (Feed speed)"};
+    QTest::newRow("G1 below the Nanotec max-frequency")
+        << "nanotec"
+        << "X=0"
+        << "G1 X100 F3000"
+        << QStringList{"1:9: F3000 is 50 steps/s on X; controller \"nanotec\" takes 60..25000 "
+                       "steps/s (Maximum frequency)"};
+    QTest::newRow("G1 on a laser axis")
+        << "mill"
+        << ""
+        << "G28\nG1 X1 A10 F100"
+        << QStringList{"2:7: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
+                       "G0"};
+    // Machine::move runs each controller's part at its own rate: the board's X as a feed move,
+    // the drive's A as a positioning move at its top speed o.
+    QTest::newRow("G1 of a feed-mode axis and a positioning one: each at its rate")
+        << "mixed"
+        << ""
+        << "G28\nG1 X1 A1 F600\nG1 A2\nG1 X2" << QStringList{};
+    QTest::newRow("G28 on a controller without reference runs")
+        << "noReference"
+        << ""
+        << "G28 X0 A0" << QStringList{"1:8: A: controller \"tilt\" has no reference run (G28)"};
+    QTest::newRow("bare G28 on a controller without reference runs")
+        << "noReference"
+        << ""
+        << "G21 G28" << QStringList{"1:5: A: controller \"tilt\" has no reference run (G28)"};
+    // EMIS #E1 is G0's speed too and cannot be read back to be put back after a G1.
+    QTest::newRow("G0 and G1 on the EMIS")
+        << "emis"
+        << ""
+        << "G91 G1 X10 F600\nG0 X-10\nG0 Y5"
+        << QStringList{"2:4: X: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move X with G1 "
+                       "and F only, or with G0 only",
+                       "3:4: Y: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move Y with G1 "
+                       "and F only, or with G0 only"};
+    // Nanotec o is read before the first G1 and put back before the G0.
+    QTest::newRow("G0 and G1 on the Nanotec") << "nanotec"
+                                              << ""
+                                              << "G91 G1 X10 F6000\nG0 X-10" << QStringList{};
+    QTest::newRow("M3 without a spindle")
+        << "emis"
+        << ""
+        << "M3 S1000\nM5"
+        << QStringList{"1:1: M3: no controller of this machine has a spindle",
+                       "2:1: M5: no controller of this machine has a spindle"};
+    QTest::newRow("M3 M8 on the E-LAB") << "mill"
+                                        << ""
+                                        << "M3 S1000\nM8\nM9\nM5" << QStringList{};
+    QTest::newRow("coolant without coolant")
+        << "emis"
+        << ""
+        << "M7\nM8\nM9"
+        << QStringList{"1:1: M7: no controller of this machine has coolant",
+                       "2:1: M8: no controller of this machine has coolant",
+                       "3:1: M9: no controller of this machine has coolant"};
+    QTest::newRow("outputs and inputs over two controllers")
+        << "io"
+        << ""
+        << "M64 P14\nM65 P1\nM66 P16 L3 Q1" << QStringList{};
+    QTest::newRow("output past the last")
+        << "io"
+        << ""
+        << "M64 P15" << QStringList{"1:5: M64 P15: the machine's outputs are 1..14"};
+    QTest::newRow("output 0") << "io"
+                              << ""
+                              << "M65 P0"
+                              << QStringList{"1:5: M65 P0: the machine's outputs are 1..14"};
+    QTest::newRow("input past the last")
+        << "io"
+        << ""
+        << "M66 L4 P17 Q1" << QStringList{"1:8: M66 P17: the machine's inputs are 1..16"};
+    QTest::newRow("no outputs at all")
+        << "mill"
+        << ""
+        << "M64 P1" << QStringList{"1:5: M64 P1: the machine has no digital outputs"};
+    QTest::newRow("no inputs at all")
+        << "mill"
+        << ""
+        << "M66 P1 L3 Q2" << QStringList{"1:5: M66 P1: the machine has no digital inputs"};
+    QTest::newRow("every problem, in line order")
+        << "mill"
+        << "Y=0"
+        << "G0 X1\nM64 P1\nG1 A1 F10\nG0 Y300"
+        << QStringList{"1:4: " + unknownX, "2:5: M64 P1: the machine has no digital outputs",
+                       "3:4: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
+                       "G0",
+                       "4:4: Y reaches 300 mm, outside the soft limits 0..200 mm"};
+    QTest::newRow("repeat of count 0: its moves never run")
+        << "mill"
+        << "X=0"
+        << "O1 repeat [0]\nG0 X500\nO1 endrepeat" << QStringList{};
+}
+
+void TestProgramCheck::check_errors_lineColumnAndMessage()
+{
+    QFETCH(QString, machine);
+    QFETCH(QString, known);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    MachineFacts facts = machineFacts(machine);
+    facts.knownPositions = positions(known);
+    const Program p = parsed(program, facts);
+    QVERIFY(!p.blocks.isEmpty());
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QCOMPARE(texts(result.errors), errors);
+    QCOMPARE(result.ok(), errors.isEmpty());
+}
+
+void TestProgramCheck::check_fromLine_startOrRefusal_data()
+{
+    QTest::addColumn<QString>("known");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<int>("fromLine");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<qint64>("blocksRun");
+
+    const QString program = "G28 X0\n"          // 1
+                            "O1 repeat [2]\n"   // 2
+                            "  G0 X1\n"         // 3
+                            "  O2 repeat [3]\n" // 4
+                            "    G0 X2\n"       // 5
+                            "  O2 endrepeat\n"  // 6
+                            "O1 endrepeat\n"    // 7
+                            "\n"                // 8
+                            "G0 X3\n"           // 9
+                            "M30\n";            // 10
+    const QString inside =
+        "run from line %1 is inside the repeat of line 2: start at line 2 or after its endrepeat";
+    QTest::newRow("from 1") << "X=0" << program << 1 << QStringList{}
+                            << qint64(1 + 2 * (1 + 3) + 2);
+    QTest::newRow("from the repeat's line")
+        << "X=0" << program << 2 << QStringList{} << qint64(8 + 2);
+    QTest::newRow("inside the repeat")
+        << "X=0" << program << 3 << QStringList{"3:1: " + inside.arg(3)} << qint64(0);
+    QTest::newRow("at the inner repeat: the outer one is named")
+        << "X=0" << program << 4 << QStringList{"4:1: " + inside.arg(4)} << qint64(0);
+    QTest::newRow("at the endrepeat")
+        << "X=0" << program << 7 << QStringList{"7:1: " + inside.arg(7)} << qint64(0);
+    QTest::newRow("a blank line: the next block")
+        << "X=0" << program << 8 << QStringList{} << qint64(2);
+    QTest::newRow("past the last block")
+        << "X=0" << program << 11
+        << QStringList{"11:1: run from line 11: the program's last block is on line 10"}
+        << qint64(0);
+    QTest::newRow("G28 skipped: the position is the machine's (unknown)")
+        << ""
+        << "G28 X0\nG0 X10" << 2
+        << QStringList{"2:4: X: the position is unknown, so an absolute move could go anywhere: "
+                       "reference the axis first (G28 X) or move it relatively (G91)"}
+        << qint64(1);
+}
+
+void TestProgramCheck::check_fromLine_startOrRefusal()
+{
+    QFETCH(QString, known);
+    QFETCH(QString, program);
+    QFETCH(int, fromLine);
+    QFETCH(QStringList, errors);
+    QFETCH(qint64, blocksRun);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions(known);
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts, fromLine);
+    QCOMPARE(texts(result.errors), errors);
+    if (errors.isEmpty() || blocksRun > 0)
+        QCOMPARE(result.preview.blocksRun, blocksRun);
+}
+
+void TestProgramCheck::preview_figures_extentsPathAndEstimatedSeconds()
+{
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("Z=-10");
+    const Program p = parsed("G28 X0 Y0\n"   // no time known
+                             "G0 X50 Y50\n"  // X 50 mm at 50 mm/s, Y at 5000/200 = 25 mm/s: 2 s
+                             "G1 X60 F600\n" // 10 mm at 10 mm/s: 1 s
+                             "G0\n"          // only the motion mode: no point, no time
+                             "G4 P2\n"       // 2 s
+                             "G91 G0 Y-10\n" // 10 mm at 25 mm/s: 0.4 s
+                             "M30\n",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const ProgramPreview& v = result.preview;
+    QCOMPARE(v.lines, 7);
+    QCOMPARE(v.blocksRun, qint64(7));
+    QCOMPARE(v.estimatedSeconds, 5.4);
+    QCOMPARE(v.extents.keys(), (QStringList{"X", "Y", "Z"})); // A never known
+    QCOMPARE(v.extents["X"].minimum, 0.0);
+    QCOMPARE(v.extents["X"].maximum, 60.0);
+    QVERIFY(v.extents["X"].moved);
+    QCOMPARE(v.extents["Y"].minimum, 0.0);
+    QCOMPARE(v.extents["Y"].maximum, 50.0);
+    QCOMPARE(v.extents["Z"].minimum, -10.0);
+    QCOMPARE(v.extents["Z"].maximum, -10.0);
+    QVERIFY(!v.extents["Z"].moved);
+    QCOMPARE(v.path.size(), 6); // the start, G28, G0, G1, G4, G0
+    QVERIFY(!v.pathTruncated);
+    QCOMPARE(v.path.first().line, 0);
+    QCOMPARE(v.path.first().position, (QMap<QString, double>{{"Z", -10}}));
+    QCOMPARE(v.path.at(2).line, 2);
+    QCOMPARE(v.path.at(2).seconds, 2.0);
+    QCOMPARE(v.path.at(2).position, (QMap<QString, double>{{"X", 50}, {"Y", 50}, {"Z", -10}}));
+    QCOMPARE(v.path.last().line, 6);
+    QCOMPARE(v.path.last().seconds, 5.4);
+    QCOMPARE(v.path.last().position, (QMap<QString, double>{{"X", 60}, {"Y", 40}, {"Z", -10}}));
+    QVERIFY(v.motionNote.contains("each at its own rate"));
+}
+
+void TestProgramCheck::preview_millionPassRepeat_countedOutPathBounded()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p =
+        parsed("G28 X0\nG91\nO1 repeat [1000000]\n  G0 X1\n  G0 X-1\nO1 endrepeat", facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    QCOMPARE(result.preview.blocksRun, qint64(2 + 2000000));
+    QCOMPARE(result.preview.path.size(), ProgramPreview::kMaxPathPoints);
+    QVERIFY(result.preview.pathTruncated);
+    // 1 mm at 50 mm/s each, summed two million times.
+    QVERIFY(qAbs(result.preview.estimatedSeconds - 2000000 * 1.0 / 50) < 1e-3);
+    QCOMPARE(result.preview.extents["X"].maximum, 1.0);
+}
+
+void TestProgramCheck::check_tooManyBlocks_namedAtTheOutermostRepeat()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p = parsed("M5\n  O1 repeat [1000000]\nO2 repeat [5]\nG4 P0\nO2 endrepeat\nO1 "
+                             "endrepeat",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QCOMPARE(texts(result.errors),
+             QStringList{"2:3: the run executes more than 5000000 blocks (repeats counted out)"});
+    // Just within: 1 + 999999 * 5 blocks.
+    const Program within = parsed("M5\nO1 repeat [999999]\nO2 repeat [5]\nG4 P0\nO2 "
+                                  "endrepeat\nO1 endrepeat",
+                                  facts);
+    const ProgramCheckResult fits = ProgramCheck::check(within, facts);
+    QVERIFY(fits.ok());
+    QCOMPARE(fits.preview.blocksRun, qint64(1 + 999999 * 5));
+}
+
+void TestProgramCheck::check_manyErrors_listedUpToTheParsersLimit()
+{
+    const MachineFacts facts = machineFacts("mill");
+    QString text;
+    for (int i = 0; i < 150; ++i)
+        text += "M64 P1\n"; // the mill has no outputs
+    const ProgramCheckResult result = ProgramCheck::check(parsed(text, facts), facts);
+    QCOMPARE(result.errors.size(), ProgramParser::kMaxErrors + 1);
+    QCOMPARE(result.errors.first().line, 1);
+    QCOMPARE(result.errors.at(ProgramParser::kMaxErrors - 1).line, ProgramParser::kMaxErrors);
+    QCOMPARE(result.errors.last().message,
+             QString("more errors follow; only the first 100 are listed"));
+}
+
+void TestProgramCheck::machineIo_numberedOverTheControllers_data()
+{
+    QTest::addColumn<bool>("output");
+    QTest::addColumn<int>("n");
+    QTest::addColumn<QString>("controller"); // empty: none
+    QTest::addColumn<int>("number");
+    QTest::newRow("output 0") << true << 0 << "" << 0;
+    QTest::newRow("output 1") << true << 1 << "io1" << 1;
+    QTest::newRow("output 7") << true << 7 << "io1" << 7;
+    QTest::newRow("output 8") << true << 8 << "io2" << 1;
+    QTest::newRow("output 14") << true << 14 << "io2" << 7;
+    QTest::newRow("output 15") << true << 15 << "" << 0;
+    QTest::newRow("input 8") << false << 8 << "io1" << 8;
+    QTest::newRow("input 9") << false << 9 << "io2" << 1;
+    QTest::newRow("input 16") << false << 16 << "io2" << 8;
+    QTest::newRow("input 17") << false << 17 << "" << 0;
+    QTest::newRow("input -1") << false << -1 << "" << 0;
+}
+
+void TestProgramCheck::machineIo_numberedOverTheControllers()
+{
+    QFETCH(bool, output);
+    QFETCH(int, n);
+    QFETCH(QString, controller);
+    QFETCH(int, number);
+    const MachineFacts facts = machineFacts("io");
+    const std::optional<MachineIo> io = output ? machineOutput(facts, n) : machineInput(facts, n);
+    QCOMPARE(io.has_value(), !controller.isEmpty());
+    if (io) {
+        QCOMPARE(io->controller, controller);
+        QCOMPARE(io->number, number);
+    }
+}
+
+void TestProgramCheck::examples_eachChecksCleanOnItsModel()
+{
+    const QDir dir(QStringLiteral(STEPDECK_SOURCE_DIR "/docs/examples"));
+    const QStringList files = dir.entryList({QStringLiteral("*.ngc")}, QDir::Files, QDir::Name);
+    QCOMPARE(files, (QStringList{"elab.ngc", "emis.ngc", "laser.ngc", "nanotec.ngc"}));
+    for (const QString& name : files) {
+        const QString base = name.chopped(4); // the model's id, "laser" for "laser-axis"
+        const QString model = base == QLatin1String("laser") ? QStringLiteral("laser-axis") : base;
+        MachineFacts single;
+        const ModelInfo* info = findModel(model);
+        QVERIFY2(info, qPrintable(name));
+        single.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
+        single.capabilities.insert(model, info->capabilities);
+        single.schemas.insert(model, info->schema);
+        QFile file(dir.filePath(name));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QStringList names;
+        for (const MachineAxis& a : single.description.axes)
+            names << a.name;
+        QList<ProgramError> errors;
+        const std::optional<Program> p = ProgramParser::parse(file.readAll(), names, &errors);
+        QVERIFY2(p, qPrintable(name + ": " + texts(errors).join('\n')));
+        const ProgramCheckResult result = ProgramCheck::check(*p, single);
+        QVERIFY2(result.ok(), qPrintable(name + ": " + texts(result.errors).join('\n')));
+        QVERIFY2(result.preview.blocksRun > 3, qPrintable(name));
+    }
+}
+
+void TestProgramCheck::factsOf_machineReferencedX_onlyXKnownAtZero()
+{
+    const ModelInfo* info = findModel("nanotec");
+    const MachineDescription d = MachineDescription::singleController(*info, "sim");
+    Machine machine;
+    QString error;
+    QVERIFY2(machine.create(d, &error), qPrintable(error));
+    const MachineFacts before = factsOf(machine);
+    QCOMPARE(before.description, d);
+    QCOMPARE(before.capabilities.keys(), QStringList{"nanotec"});
+    QCOMPARE(QByteArray(before.capabilities["nanotec"].feedRateParameter),
+             QByteArray("max-frequency"));
+    QVERIFY(before.schemas["nanotec"].find("max-frequency"));
+    QVERIFY(before.knownPositions.isEmpty()); // not even connected
+
+    machine.open();
+    QTRY_COMPARE_WITH_TIMEOUT(machine.session("nanotec")->linkState(), LinkState::Connected, 10000);
+    QVERIFY(factsOf(machine).knownPositions.isEmpty()); // connected, nothing referenced
+    QSignalSpy done(&machine, &Machine::referenceFinished);
+    QVERIFY2(machine.reference({"X"}, &error), qPrintable(error));
+    QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 30000);
+    QVERIFY2(done.first().at(1).toBool(), qPrintable(done.first().at(2).toString()));
+    const MachineFacts after = factsOf(machine);
+    // A reference run ends at 0 (docs/programs.md "Check"): what the check assumes after G28.
+    QCOMPARE(after.knownPositions, (QMap<QString, double>{{"X", 0.0}}));
+    machine.destroy();
+}
+
+QTEST_GUILESS_MAIN(TestProgramCheck)
+#include "tst_programcheck.moc"
