@@ -19,7 +19,7 @@ ProgramPromptBanner::ProgramPromptBanner(QWidget* parent)
     h->setContentsMargins(4, 2, 4, 2);
     h->addWidget(m_text, 1);
     h->addWidget(m_resume);
-    setAutoFillBackground(true);
+    setAttribute(Qt::WA_StyledBackground); // the prompt's background (style sheet)
     connect(m_resume, &QPushButton::clicked, this, &ProgramPromptBanner::resumeRequested);
     clearPrompt();
 }

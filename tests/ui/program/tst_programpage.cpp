@@ -20,6 +20,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTextBlock>
 
 using namespace stepdeck;
@@ -79,15 +80,24 @@ void TestProgramPage::check_errorInProgram_markedAtItsLine()
 
 void TestProgramPage::check_validProgram_previewWithEstimatedDuration()
 {
-    QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
-    setProgram(QStringLiteral("G91\nG0 X1 Y2\nG0 A90\nM2\n"));
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable()); // X, Y, Z known: the preview follows them
+    setProgram(QStringLiteral("G90\nG0 X1 Y2\nG0 Z0.5\nG91 G0 A90\nM2\n"));
     QVERIFY2(page()->editor()->errorLines().isEmpty(), qPrintable(page()->checkText()));
     const QString figures = page()->preview()->figuresText();
-    QVERIFY2(figures.contains(QStringLiteral("4 line")), qPrintable(figures));
+    QVERIFY2(figures.contains(QStringLiteral("5 line")), qPrintable(figures));
     QVERIFY2(figures.contains(QStringLiteral("(estimated)")), qPrintable(figures));
-    // A (not X/Y) is charted over time.
-    QVERIFY2(page()->preview()->chartedAxes().join(QLatin1Char(',')).contains(QStringLiteral("A")),
-             qPrintable(page()->preview()->chartedAxes().join(QLatin1Char(','))));
+    QVERIFY(page()->preview()->pathView()->points().contains(QPointF(1, 2)));
+    // Z (not X/Y) is charted over time; A's position is not known, so it is not drawn.
+    const QString charted = page()->preview()->chartedAxes().join(QLatin1Char(','));
+    QVERIFY2(charted.contains(QStringLiteral("Z (mm)")) && !charted.contains(QStringLiteral("A")),
+             qPrintable(charted));
+    // Each moved axis' extent against its soft limits.
+    QTableWidget* extents = page()->preview()->extentsTable();
+    QStringList rows;
+    for (int r = 0; r < extents->rowCount(); ++r)
+        rows << extents->item(r, 0)->text() + QLatin1Char(' ') + extents->item(r, 2)->text();
+    QVERIFY2(rows.contains(QStringLiteral("Z 0.500 mm")), qPrintable(rows.join(QLatin1Char(';'))));
 }
 
 void TestProgramPage::run_validProgram_deviceReceivedTheMoves()
@@ -200,6 +210,8 @@ void TestProgramPage::position_whileRunning_drawnInThePath()
                  QPointF(0.5, 0.25));
     QVERIFY2(page()->controls()->progressText() == QStringLiteral("line 3 of 4"),
              qPrintable(page()->controls()->progressText()));
+    QVERIFY2(page()->controls()->timeLeftText().contains(QStringLiteral("left (estimated)")),
+             qPrintable(page()->controls()->timeLeftText()));
     page()->promptBanner()->resumeButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     QVERIFY(!page()->preview()->pathView()->current()); // not running: no marker
