@@ -1,6 +1,7 @@
 // ProgramPage, part 1: the layout, the machine the page works on, and the check while editing.
 // The run itself is in ProgramPageRun.cpp.
 #include "ProgramPage.h"
+#include "ProgramBackgroundCheck.h"
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
@@ -27,7 +28,8 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
       m_useController(new QPushButton(tr("Use the connected controller"), this)),
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
       m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
-      m_controls(new ProgramControls(this)), m_recheck(new QTimer(this))
+      m_controls(new ProgramControls(this)), m_recheck(new QTimer(this)),
+      m_checker(new ProgramBackgroundCheck(this))
 {
     setObjectName(QStringLiteral("programPage"));
     m_files = new ProgramFiles(m_editor, this);
@@ -45,6 +47,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     buildLayout();
 
     connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
+    connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
         if (!isRunning())
             m_recheck->start(); // again from now: typing does not check every key
@@ -192,6 +195,7 @@ void ProgramPage::checkNow()
     m_controls->setLineCount(m_editor->blockCount());
     const machine::Machine* machine = m_context->machine();
     if (!machine) {
+        m_checker->cancel();
         m_checkOk = false;
         m_editor->setErrors({});
         m_check->setText(tr("Not checked: no machine open."));
@@ -199,19 +203,25 @@ void ProgramPage::checkNow()
         updateControls();
         return;
     }
-    QList<program::ProgramError> errors;
-    const std::optional<program::Program> parsed = parse(&errors);
-    program::ProgramCheckResult result;
-    if (parsed)
-        result = program::ProgramCheck::check(*parsed, program::factsOf(*machine));
-    else
-        result.errors = errors;
+    QStringList axes;
+    for (const machine::MachineAxis& a : machine->description().axes)
+        axes << a.name;
+    // Run stays off until the text as it is now has been checked.
+    m_checkOk = false;
+    updateControls();
     m_checkedPositions = positionsSignature();
-    showCheck(result);
+    m_checker->start(m_editor->toPlainText().toUtf8(), axes, program::factsOf(*machine));
+}
+
+bool ProgramPage::isChecking() const
+{
+    return m_checker->isChecking() || m_recheck->isActive();
 }
 
 void ProgramPage::showCheck(const program::ProgramCheckResult& result)
 {
+    if (isRunning() || !m_context->machine())
+        return; // a check of before the run or of a machine closed since
     m_checkOk = result.ok() && !m_editor->toPlainText().trimmed().isEmpty();
     m_editor->setErrors(result.errors);
     if (result.ok()) {

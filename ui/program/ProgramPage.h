@@ -16,6 +16,7 @@ namespace stepdeck::ui {
 
 class ElidedLabel;
 class MachineContext;
+class ProgramBackgroundCheck;
 class ProgramControls;
 class ProgramEditor;
 class ProgramFiles;
@@ -49,8 +50,10 @@ public:
     QString checkText() const;
     QString messageText() const;
     bool isRunning() const;
-    // The check of the text as it stands now, without waiting for the debounce.
+    // The check of the text as it stands now, without waiting for the debounce; it runs off
+    // the GUI thread (ProgramBackgroundCheck) and reports when done (isChecking() until then).
     void checkNow();
+    bool isChecking() const;
     // What the confirmation of "Run from line" says about where the run starts.
     QString runFromText(int line) const;
 
@@ -90,6 +93,7 @@ private:
     ProgramPromptBanner* m_banner;
     ProgramControls* m_controls;
     QTimer* m_recheck;
+    ProgramBackgroundCheck* m_checker;
     program::ProgramRunner* m_runner = nullptr;
     QPointer<machine::Machine> m_runnerMachine;
     bool m_checkOk = false;

@@ -55,6 +55,7 @@ private:
         window()->raisePage(page());
         page()->editor()->setPlainText(text);
         page()->checkNow();
+        QTRY_VERIFY(!page()->isChecking()); // off the GUI thread
     }
     bool runState(RunState state) const { return runner() && runner()->state() == state; }
 

@@ -3,18 +3,21 @@
 // save and remember programs and refuse what they cannot read; the path view draws to scale
 // with Y up; the estimated times are marked as estimates.
 #include "TestSupport.h"
+#include "program/ProgramBackgroundCheck.h"
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPathView.h"
 #include "program/ProgramPromptBanner.h"
 #include "program/ProgramTimes.h"
+#include "protocols/Registry.h"
 #include <QApplication>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include <QThreadPool>
 #include <QtTest>
 
 using namespace stepdeck;
@@ -36,6 +39,7 @@ private Q_SLOTS:
     void controls_states_onlyUsefulButtonsEnabled_data();
     void controls_states_onlyUsefulButtonsEnabled();
     void banner_prompt_keepsItsHeight();
+    void backgroundCheck_twoRequests_onlyTheNewestReports();
 };
 
 void TestProgramWidgets::initTestCase()
@@ -212,6 +216,34 @@ void TestProgramWidgets::banner_prompt_keepsItsHeight()
     banner.clearPrompt();
     QVERIFY(!banner.resumeButton()->isVisible());
     QCOMPARE(banner.sizeHint().height(), before);
+}
+
+void TestProgramWidgets::backgroundCheck_twoRequests_onlyTheNewestReports()
+{
+    const ModelInfo* elab = findModel(QStringLiteral("elab"));
+    program::MachineFacts facts;
+    facts.description = machine::MachineDescription::singleController(*elab, QStringLiteral("sim"));
+    facts.capabilities.insert(elab->id, elab->capabilities);
+    facts.schemas.insert(elab->id, elab->schema);
+    const QStringList axes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+    ProgramBackgroundCheck checker;
+    QSignalSpy checked(&checker, &ProgramBackgroundCheck::checked);
+    QByteArray big;
+    for (int i = 0; i < 20000; ++i)
+        big += "G91 G0 X1\nT2\n"; // errors (at most kMaxErrors of them)
+    checker.start(big, axes, facts);
+    checker.start("G91\nG0 X1\nM2\n", axes, facts);
+    QVERIFY(checker.isChecking());
+    QTRY_VERIFY(!checker.isChecking());
+    // The older request ends too, and reports nothing.
+    QThreadPool::globalInstance()->waitForDone();
+    QCoreApplication::processEvents();
+    QCOMPARE(checked.size(), 1);
+    const auto result = checked.first().first().value<program::ProgramCheckResult>();
+    QVERIFY(result.ok());
+    QCOMPARE(result.preview.lines, 3);
+    // The same answer as checking on the spot.
+    QCOMPARE(ProgramBackgroundCheck::run("G0 Q1\n", axes, facts).errors.size(), 1);
 }
 
 QTEST_MAIN(TestProgramWidgets)
