@@ -39,6 +39,7 @@ private Q_SLOTS:
     void run_validProgram_deviceReceivedTheMoves();
     void pause_duringBlock_holdsAfterItThenResumeFinishes();
     void abort_duringMove_abortedAndAxisStandsStill();
+    void stop_duringMove_programEndsAborted_data();
     void stop_duringMove_programEndsAborted();
     void m0_prompt_bannerWithResumeGoesOn();
     void position_whileRunning_drawnInThePath();
@@ -159,17 +160,37 @@ void TestProgramPage::abort_duringMove_abortedAndAxisStandsStill()
     QVERIFY(!page()->editor()->isReadOnly());
 }
 
+void TestProgramPage::stop_duringMove_programEndsAborted_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::addRow("STOP button") << QStringLiteral("stop");
+    QTest::addRow("Esc in the editor") << QStringLiteral("esc");
+    QTest::addRow("PANIC button") << QStringLiteral("panic");
+}
+
 void TestProgramPage::stop_duringMove_programEndsAborted()
 {
+    QFETCH(QString, how);
     QVERIFY(m_rig.openAndConnect());
     setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
     page()->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    window()->safetyBar()->stopButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
+    if (how == QLatin1String("stop")) {
+        window()->safetyBar()->stopButton()->click();
+    } else if (how == QLatin1String("panic")) {
+        window()->safetyBar()->panicButton()->click();
+    } else {
+        page()->editor()->setFocus();
+        QTRY_VERIFY(page()->editor()->hasFocus());
+        QTest::keyClick(page()->editor(), Qt::Key_Escape);
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT(runState(RunState::Aborted), qPrintable(page()->messageText()),
+                              20000);
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
     QVERIFY(m_rig.elab->position(Axis::X) < 40000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
+             qPrintable(page()->messageText()));
 }
 
 void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
