@@ -12,7 +12,7 @@ namespace stepdeck::program {
 namespace {
 
 // The index of the block a run from `fromLine` starts at, or -1 with the reason in *errors.
-int startIndex(const Program& program, int fromLine, QList<ProgramError>* errors)
+int startIndex(const Program& program, int fromLine, CheckErrors* errors)
 {
     const QList<ProgramBlock>& blocks = program.blocks;
     if (fromLine <= 1)
@@ -46,28 +46,12 @@ int startIndex(const Program& program, int fromLine, QList<ProgramError>* errors
     return start;
 }
 
-// Line order; at most ProgramParser::kMaxErrors, as the parser lists them.
-void sortAndLimit(QList<ProgramError>* errors)
-{
-    std::stable_sort(errors->begin(), errors->end(),
-                     [](const ProgramError& a, const ProgramError& b) {
-                         return a.line != b.line ? a.line < b.line : a.column < b.column;
-                     });
-    if (errors->size() <= ProgramParser::kMaxErrors)
-        return;
-    const int lastLine = errors->last().line;
-    errors->resize(ProgramParser::kMaxErrors);
-    *errors << ProgramError{lastLine, 1,
-                            ProgramCheck::tr("more errors follow; only the first %1 are listed")
-                                .arg(ProgramParser::kMaxErrors)};
-}
-
 // A G1 on a controller whose rate is also its fast speed (Capabilities::feedRateSetsRapid) is
 // followed by the fast speed put back before a G0 (ProgramRates): only where the model can read
 // that speed back first. Where it cannot (EMIS #E1), a G0 on such a controller in a program
 // that also has a G1 there would run at the last F: refused at every such G0.
 void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
-                           QList<ProgramError>* errors)
+                           CheckErrors* errors)
 {
     const machine::MachineDescription& d = facts.description;
     const auto unreadableRate = [&](const QString& controller) -> QString {
@@ -86,6 +70,8 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
                 if (const machine::MachineAxis* a = d.axis(it.key()))
                     withG1.insert(a->controller);
     }
+    if (withG1.isEmpty())
+        return;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
         const ProgramBlock& b = program.blocks.at(i);
         if (b.kind != BlockKind::Rapid)
@@ -95,12 +81,13 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             if (!a || !withG1.contains(a->controller))
                 continue;
             if (const QString label = unreadableRate(a->controller); !label.isEmpty()) {
-                *errors << ProgramError{
-                    b.line, b.columnOf(a->name),
-                    ProgramCheck::tr("%1: G0 in a program with G1 on controller \"%2\": its "
-                                     "fast speed (%3) cannot be read back to be put back after "
-                                     "G1; move %1 with G1 and F only, or with G0 only")
-                        .arg(a->name, a->controller, label)};
+                errors->add(b.line, b.columnOf(a->name), [&] {
+                    return ProgramCheck::tr(
+                               "%1: G0 in a program with G1 on controller \"%2\": its fast "
+                               "speed (%3) cannot be read back to be put back after G1; move %1 "
+                               "with G1 and F only, or with G0 only")
+                        .arg(a->name, a->controller, label);
+                });
                 break;
             }
         }
@@ -108,6 +95,41 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
 }
 
 } // namespace
+
+CheckErrors& CheckErrors::operator<<(const ProgramError& error)
+{
+    m_lastLine = std::max(m_lastLine, error.line);
+    m_errors << error;
+    if (m_errors.size() >= 4 * ProgramParser::kMaxErrors)
+        prune();
+    return *this;
+}
+
+// Keeps the first kMaxErrors in line order; the rest can never be listed.
+void CheckErrors::prune()
+{
+    std::stable_sort(m_errors.begin(), m_errors.end(),
+                     [](const ProgramError& a, const ProgramError& b) {
+                         return a.line != b.line ? a.line < b.line : a.column < b.column;
+                     });
+    if (m_errors.size() > ProgramParser::kMaxErrors) {
+        m_errors.resize(ProgramParser::kMaxErrors);
+        m_dropped = true;
+        m_cutoffLine = m_errors.last().line;
+    }
+}
+
+QList<ProgramError> CheckErrors::take()
+{
+    prune();
+    QList<ProgramError> out = std::move(m_errors);
+    m_errors.clear();
+    if (m_dropped)
+        out << ProgramError{m_lastLine, 1,
+                            ProgramCheck::tr("more errors follow; only the first %1 are listed")
+                                .arg(ProgramParser::kMaxErrors)};
+    return out;
+}
 
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
                                        int fromLine)
@@ -117,16 +139,20 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
     preview.lines = program.lines;
     preview.motionNote = tr("the axes of a block start together, each at its own rate; the "
                             "block ends when every axis has arrived");
-    const int start = startIndex(program, fromLine, &result.errors);
-    if (start < 0)
+    CheckErrors errors;
+    const int start = startIndex(program, fromLine, &errors);
+    if (start < 0) {
+        result.errors = errors.take();
         return result;
-    std::vector<PlannedBlock> planned(size_t(program.blocks.size()));
-    ProgramPlan plan(facts, &result.errors);
+    }
+    PlannedProgram planned;
+    planned.blocks.resize(size_t(program.blocks.size()));
+    ProgramPlan plan(facts, &planned, &errors);
     for (qsizetype i = start; i < program.blocks.size(); ++i)
-        planned[size_t(i)] = plan.plan(program.blocks.at(i));
-    checkFastSpeedPutBack(program, start, facts, &result.errors);
-    ProgramSimulation(facts, &planned, &result.errors).run(start, &preview);
-    sortAndLimit(&result.errors);
+        plan.plan(int(i), program.blocks.at(i));
+    checkFastSpeedPutBack(program, start, facts, &errors);
+    ProgramSimulation(facts, &planned, &errors).run(start, &preview);
+    result.errors = errors.take();
     return result;
 }
 

@@ -26,18 +26,21 @@ QString figure(double value)
     return text == QLatin1String("-0") ? QStringLiteral("0") : text;
 }
 
-ProgramPlan::ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors)
-    : m_facts(facts), m_errors(errors)
+ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
+    : m_facts(facts), m_out(*out), m_errors(errors)
 {}
 
-void ProgramPlan::error(const ProgramBlock& block, int column, const QString& message)
+void ProgramPlan::addMove(const AxisMove& move, PlannedBlock* out)
 {
-    *m_errors << ProgramError{block.line, column, message};
+    if (out->moveCount == 0)
+        out->firstMove = int(m_out.moves.size());
+    m_out.moves.push_back(move);
+    ++out->moveCount;
 }
 
-PlannedBlock ProgramPlan::plan(const ProgramBlock& block)
+void ProgramPlan::plan(int index, const ProgramBlock& block)
 {
-    PlannedBlock out;
+    PlannedBlock& out = m_out.blocks[size_t(index)];
     out.block = &block;
     out.partner = block.partner;
     switch (block.kind) {
@@ -65,7 +68,6 @@ PlannedBlock ProgramPlan::plan(const ProgramBlock& block)
     default:
         break;
     }
-    return out;
 }
 
 void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
@@ -76,59 +78,67 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         m.axis = axisIndex(d, it.key());
         m.column = block.columnOf(it.key());
         if (m.axis < 0) { // the parser knew other axes than these facts
-            error(block, m.column, ProgramCheck::tr("the machine has no axis %1").arg(it.key()));
+            error(block, m.column,
+                  [&] { return ProgramCheck::tr("the machine has no axis %1").arg(it.key()); });
             continue;
         }
         const machine::MachineAxis& axis = d.axes.at(m.axis);
         m.value = units::toAxisUnits(axis, it.value(), block.inches);
         if (block.kind == BlockKind::Feed) {
-            if (!checkRate(block, axis, &m.speed))
-                continue;
+            // A refused rate still moves the axis in the walk, so what follows is judged
+            // from where the program means it to be (its time stays unknown).
+            checkRate(block, axis, &m.speed);
         } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
             m.speed = *axis.maxJogSpeed;
         } else {
             m.speed = m_facts.capabilities.value(axis.controller).maxJogSpeed / axis.stepsPerUnit;
         }
-        out->moves.push_back(m);
+        addMove(m, out);
     }
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s
-// within the parameter's schema range). *speed: the rate the device runs, in unit/s.
+// within the parameter's schema range). *speed: the rate the device runs, in unit/s (left 0
+// when refused).
 bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxis& axis,
                             double* speed)
 {
     const Capabilities caps = m_facts.capabilities.value(axis.controller);
     const int column = block.columnOf(axis.name);
     if (!caps.feedRateParameter) {
-        error(block, column,
-              ProgramCheck::tr("%1: controller \"%2\" takes no feed rate, so G1 cannot move it; "
-                               "use G0")
-                  .arg(axis.name, axis.controller));
+        error(block, column, [&] {
+            return ProgramCheck::tr(
+                       "%1: controller \"%2\" takes no feed rate, so G1 cannot move it; "
+                       "use G0")
+                .arg(axis.name, axis.controller);
+        });
         return false;
     }
     const QString parameter = QString::fromLatin1(caps.feedRateParameter);
     const ParameterSchema schema = m_facts.schemas.value(axis.controller);
     const ParameterSpec* spec = schema.find(parameter);
     if (!spec) {
-        error(block, column,
-              ProgramCheck::tr("%1: controller \"%2\" has no parameter %3 for the feed rate")
-                  .arg(axis.name, axis.controller, parameter));
+        error(block, column, [&] {
+            return ProgramCheck::tr("%1: controller \"%2\" has no parameter %3 for the feed rate")
+                .arg(axis.name, axis.controller, parameter);
+        });
         return false;
     }
     if (!block.feed) // the parser refuses G1 without F
         return true;
     const qint64 rate = units::feedStepsPerSecond(axis, *block.feed, block.inches);
     if (rate < spec->minimum || rate > spec->maximum) {
-        error(block, block.columnOf(QStringLiteral("F")),
-              ProgramCheck::tr("F%1 is %2 steps/s on %3; controller \"%4\" takes %5..%6 steps/s "
-                               "(%7)")
-                  .arg(figure(*block.feed))
-                  .arg(rate)
-                  .arg(axis.name, axis.controller)
-                  .arg(spec->minimum)
-                  .arg(spec->maximum)
-                  .arg(ParameterSchema::displayLabel(*spec)));
+        error(block, block.columnOf(QStringLiteral("F")), [&] {
+            return ProgramCheck::tr(
+                       "F%1 is %2 steps/s on %3; controller \"%4\" takes %5..%6 steps/s "
+                       "(%7)")
+                .arg(figure(*block.feed))
+                .arg(rate)
+                .arg(axis.name, axis.controller)
+                .arg(spec->minimum)
+                .arg(spec->maximum)
+                .arg(ParameterSchema::displayLabel(*spec));
+        });
         return false;
     }
     *speed = double(rate) / axis.stepsPerUnit;
@@ -144,16 +154,17 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
         const Capabilities caps = m_facts.capabilities.value(axis.controller);
         if (!caps.has(MotionMode::Reference)) {
             if (!refused.contains(axis.controller))
-                error(block, column,
-                      ProgramCheck::tr("%1: controller \"%2\" has no reference run (G28)")
-                          .arg(axis.name, axis.controller));
+                error(block, column, [&] {
+                    return ProgramCheck::tr("%1: controller \"%2\" has no reference run (G28)")
+                        .arg(axis.name, axis.controller);
+                });
             refused << axis.controller;
             return;
         }
         AxisMove m;
         m.axis = index;
         m.column = column;
-        out->moves.push_back(m);
+        addMove(m, out);
     };
     if (block.axes.isEmpty()) {
         for (int i = 0; i < d.axes.size(); ++i)
@@ -164,7 +175,7 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
         const int index = axisIndex(d, it.key());
         if (index < 0)
             error(block, block.columnOf(it.key()),
-                  ProgramCheck::tr("the machine has no axis %1").arg(it.key()));
+                  [&] { return ProgramCheck::tr("the machine has no axis %1").arg(it.key()); });
         else
             add(index, block.columnOf(it.key()));
     }
@@ -176,10 +187,11 @@ void ProgramPlan::checkAnyController(const ProgramBlock& block, bool Capabilitie
         if (m_facts.capabilities.value(c.id).*has)
             return;
     const QString word = blockWord(block.kind);
-    error(block, block.columnOf({}),
-          has == &Capabilities::spindle
-              ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(word)
-              : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(word));
+    error(block, block.columnOf({}), [&] {
+        return has == &Capabilities::spindle
+                   ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(word)
+                   : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(word);
+    });
 }
 
 void ProgramPlan::checkIo(const ProgramBlock& block)
@@ -192,18 +204,17 @@ void ProgramPlan::checkIo(const ProgramBlock& block)
         const Capabilities caps = m_facts.capabilities.value(c.id);
         count += output ? caps.digitalOutputs : caps.digitalInputs;
     }
-    const QString word = QStringLiteral("%1 P%2").arg(blockWord(block.kind)).arg(block.number);
-    QString message;
-    if (output)
-        message =
-            count == 0
-                ? ProgramCheck::tr("%1: the machine has no digital outputs").arg(word)
-                : ProgramCheck::tr("%1: the machine's outputs are 1..%2").arg(word).arg(count);
-    else
-        message = count == 0
-                      ? ProgramCheck::tr("%1: the machine has no digital inputs").arg(word)
-                      : ProgramCheck::tr("%1: the machine's inputs are 1..%2").arg(word).arg(count);
-    error(block, block.columnOf(QStringLiteral("P")), message);
+    error(block, block.columnOf(QStringLiteral("P")), [&] {
+        const QString word = QStringLiteral("%1 P%2").arg(blockWord(block.kind)).arg(block.number);
+        if (output)
+            return count == 0 ? ProgramCheck::tr("%1: the machine has no digital outputs").arg(word)
+                              : ProgramCheck::tr("%1: the machine's outputs are 1..%2")
+                                    .arg(word)
+                                    .arg(count);
+        return count == 0
+                   ? ProgramCheck::tr("%1: the machine has no digital inputs").arg(word)
+                   : ProgramCheck::tr("%1: the machine's inputs are 1..%2").arg(word).arg(count);
+    });
 }
 
 } // namespace stepdeck::program

@@ -6,9 +6,10 @@
 
 namespace stepdeck::program {
 
-ProgramSimulation::ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
-                                     QList<ProgramError>* errors)
-    : m_facts(facts), m_axes(facts.description.axes), m_blocks(*blocks), m_errors(errors)
+ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned,
+                                     CheckErrors* errors)
+    : m_facts(facts), m_axes(facts.description.axes), m_blocks(planned->blocks),
+      m_moves(planned->moves), m_errors(errors)
 {
     const size_t n = size_t(m_axes.size());
     m_steps.assign(n, 0);
@@ -40,15 +41,19 @@ void ProgramSimulation::run(int start, ProgramPreview* preview)
             if (block.count <= 0 || planned.partner < 0) {
                 i = planned.partner < 0 ? i + 1 : planned.partner + 1;
             } else {
-                m_loops.push_back(Loop{i, block.count - 1});
+                m_loops.push_back(Loop{i, block.count - 1, m_blocksRun});
                 ++i;
             }
             continue;
         }
         if (block.kind == BlockKind::RepeatEnd) {
             if (!m_loops.empty() && m_loops.back().start == planned.partner) {
-                if (m_loops.back().remaining > 0) {
-                    --m_loops.back().remaining;
+                Loop& loop = m_loops.back();
+                // A pass that ran no block (only empty repeats inside) is every pass: the
+                // rest are skipped, so that nested empty repeats cannot spin for 10^12 passes.
+                if (loop.remaining > 0 && m_blocksRun > loop.blocksBefore) {
+                    --loop.remaining;
+                    loop.blocksBefore = m_blocksRun;
                     i = planned.partner + 1;
                     continue;
                 }
@@ -95,8 +100,9 @@ void ProgramSimulation::move(PlannedBlock& planned)
     // The axes of a block start together, each at its own rate: the block lasts as long as
     // its slowest axis (no acceleration: an estimate).
     double seconds = 0;
-    for (AxisMove& m : planned.moves)
-        moveAxis(block, m, &seconds);
+    AxisMove* const first = m_moves.data() + planned.firstMove;
+    for (AxisMove* m = first; m != first + planned.moveCount; ++m)
+        moveAxis(block, *m, &seconds);
     m_seconds += seconds;
     addPoint(block.line);
 }
@@ -112,12 +118,12 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     if (!block.relative) {
         if (!wasKnown && !m.reportedUnknown) {
             m.reportedUnknown = true;
-            *m_errors << ProgramError{
-                block.line, m.column,
-                ProgramCheck::tr("%1: the position is unknown, so an absolute move could go "
-                                 "anywhere: reference the axis first (G28 %1) or move it "
-                                 "relatively (G91)")
-                    .arg(axis.name)};
+            m_errors->add(block.line, m.column, [&] {
+                return ProgramCheck::tr("%1: the position is unknown, so an absolute move could go "
+                                        "anywhere: reference the axis first (G28 %1) or move it "
+                                        "relatively (G91)")
+                    .arg(axis.name);
+            });
         }
         distance = wasKnown ? std::abs(m.value - here) : 0.0;
         m_steps[a] = axis.toSteps(m.value);
@@ -134,12 +140,11 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     if (axis.hasSoftLimits() && !m.reportedLimit &&
         (to < *axis.softMinimum || to > *axis.softMaximum)) {
         m.reportedLimit = true;
-        const QString unit = machine::unitKey(axis.unit);
-        *m_errors << ProgramError{
-            block.line, m.column,
-            ProgramCheck::tr("%1 reaches %2 %3, outside the soft limits %4..%5 %3")
-                .arg(axis.name, figure(to), unit, figure(*axis.softMinimum),
-                     figure(*axis.softMaximum))};
+        m_errors->add(block.line, m.column, [&] {
+            return ProgramCheck::tr("%1 reaches %2 %3, outside the soft limits %4..%5 %3")
+                .arg(axis.name, figure(to), machine::unitKey(axis.unit), figure(*axis.softMinimum),
+                     figure(*axis.softMaximum));
+        });
     }
     noteExtent(m.axis);
 }
@@ -148,12 +153,13 @@ void ProgramSimulation::home(const PlannedBlock& planned)
 {
     // A reference run ends at 0 on every model (docs/programs.md "Check"); how long it takes
     // depends on where the switch is: no time is added.
-    for (const AxisMove& m : planned.moves) {
-        const size_t a = size_t(m.axis);
+    const AxisMove* const first = m_moves.data() + planned.firstMove;
+    for (const AxisMove* m = first; m != first + planned.moveCount; ++m) {
+        const size_t a = size_t(m->axis);
         m_moved[a] = 1;
         m_steps[a] = 0;
         m_known[a] = 1;
-        noteExtent(m.axis);
+        noteExtent(m->axis);
     }
     addPoint(planned.block->line);
 }

@@ -2,6 +2,7 @@
 // Internal to ProgramCheck: a program's blocks planned in the machine's terms (ProgramPlan.cpp)
 // and walked with their repeats counted out (ProgramSimulation.cpp).
 #include "ProgramCheck.h"
+#include <algorithm>
 #include <vector>
 
 namespace stepdeck::program {
@@ -21,8 +22,44 @@ struct AxisMove
 struct PlannedBlock
 {
     const ProgramBlock* block = nullptr;
-    std::vector<AxisMove> moves; // G0/G1: the axis words; G28: the axes it references
-    int partner = -1;            // repeats: the other end's index
+    // G0/G1: its axis words, G28: the axes it references, as PlannedProgram::moves[first,
+    // first + count): one array for the whole program, not one per block.
+    int firstMove = 0;
+    int moveCount = 0;
+    int partner = -1; // repeats: the other end's index
+};
+
+struct PlannedProgram
+{
+    std::vector<PlannedBlock> blocks; // index as in Program::blocks (before the start: empty)
+    std::vector<AxisMove> moves;
+};
+
+// The check's errors, bounded however many a program has: the first ProgramParser::kMaxErrors
+// in line order (and column) are kept exactly, and a last line says that more follow.
+class CheckErrors
+{
+public:
+    CheckErrors& operator<<(const ProgramError& error);
+    // Adds an error; message() is called (the text formatted) only while the error can still
+    // be listed, so that a million errors cost no million messages.
+    template <typename Message> void add(int line, int column, const Message& message)
+    {
+        if (m_cutoffLine > 0 && line > m_cutoffLine) {
+            m_lastLine = std::max(m_lastLine, line);
+            m_dropped = true;
+            return;
+        }
+        *this << ProgramError{line, column, message()};
+    }
+    QList<ProgramError> take(); // in line order, at most kMaxErrors + the "more follow" line
+
+private:
+    void prune();
+    QList<ProgramError> m_errors;
+    bool m_dropped = false;
+    int m_lastLine = 0;
+    int m_cutoffLine = 0; // once pruned: errors after this line can never be listed
 };
 
 // "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
@@ -34,19 +71,25 @@ QString figure(double value);
 class ProgramPlan
 {
 public:
-    ProgramPlan(const MachineFacts& facts, QList<ProgramError>* errors);
-    PlannedBlock plan(const ProgramBlock& block);
+    ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors);
+    void plan(int index, const ProgramBlock& block); // into out->blocks[index]
 
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
+    void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
     void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
     void checkIo(const ProgramBlock& block);
-    void error(const ProgramBlock& block, int column, const QString& message);
+    template <typename Message>
+    void error(const ProgramBlock& block, int column, const Message& message)
+    {
+        m_errors->add(block.line, column, message);
+    }
 
     const MachineFacts& m_facts;
-    QList<ProgramError>* m_errors;
+    PlannedProgram& m_out;
+    CheckErrors* m_errors;
 };
 
 // Walks the planned blocks from `start` as the run will (repeats counted out, at most
@@ -56,8 +99,7 @@ private:
 class ProgramSimulation
 {
 public:
-    ProgramSimulation(const MachineFacts& facts, std::vector<PlannedBlock>* blocks,
-                      QList<ProgramError>* errors);
+    ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned, CheckErrors* errors);
     void run(int start, ProgramPreview* preview);
 
 private:
@@ -65,6 +107,7 @@ private:
     {
         int start = 0;        // index of the RepeatStart
         qint64 remaining = 0; // passes left after the current one
+        qint64 blocksBefore;  // m_blocksRun when the current pass began
     };
     void execute(PlannedBlock& planned);
     void move(PlannedBlock& planned);
@@ -78,7 +121,8 @@ private:
     const MachineFacts& m_facts;
     const QList<machine::MachineAxis>& m_axes;
     std::vector<PlannedBlock>& m_blocks;
-    QList<ProgramError>* m_errors;
+    std::vector<AxisMove>& m_moves;
+    CheckErrors* m_errors;
     // Per axis (the description's order).
     std::vector<qint64> m_steps; // the device's count the axis would hold
     std::vector<char> m_known;

@@ -133,6 +133,8 @@ private Q_SLOTS:
     void check_fromLine_startOrRefusal();
     void preview_figures_extentsPathAndEstimatedSeconds();
     void preview_millionPassRepeat_countedOutPathBounded();
+    void check_axisTheMachineLacks_named();
+    void check_nestedEmptyRepeats_endQuickly();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
     void check_manyErrors_listedUpToTheParsersLimit();
     void machineIo_numberedOverTheControllers_data();
@@ -210,6 +212,13 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << ""
         << "G28 X0\nG1 X10 F40000"
         << QStringList{"2:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+                       "steps/s (Feed speed)"};
+    QTest::newRow("a refused rate still moves the axis in the walk")
+        << "mill"
+        << ""
+        << "G28 X0\nG91 G1 X101 F40000"
+        << QStringList{"2:8: X reaches 101 mm, outside the soft limits 0..100 mm",
+                       "2:13: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("G1 rate within the E-LAB feed speed")
         << "mill"
@@ -311,9 +320,9 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
     QTest::newRow("every problem, in line order")
         << "mill"
         << "Y=0"
-        << "G0 X1\nM64 P1\nG1 A1 F10\nG0 Y300"
+        << "G0 X1\nM64 P1\nG91 G1 A1 F10\nG0 Y300"
         << QStringList{"1:4: " + unknownX, "2:5: M64 P1: the machine has no digital outputs",
-                       "3:4: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
+                       "3:8: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0",
                        "4:4: Y reaches 300 mm, outside the soft limits 0..200 mm"};
     QTest::newRow("repeat of count 0: its moves never run")
@@ -451,6 +460,31 @@ void TestProgramCheck::preview_millionPassRepeat_countedOutPathBounded()
     QCOMPARE(result.preview.extents["X"].maximum, 1.0);
 }
 
+// A program parsed for other axes than the machine checked against (the machine file changed
+// between reading and running).
+void TestProgramCheck::check_axisTheMachineLacks_named()
+{
+    const MachineFacts facts = machineFacts("mill");
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("G28 B0\nG91 G0 X1 B2", {"X", "B"}, &errors);
+    QVERIFY(p);
+    QCOMPARE(texts(ProgramCheck::check(*p, facts).errors),
+             (QStringList{"1:5: the machine has no axis B", "2:11: the machine has no axis B"}));
+}
+
+// 10^6 passes of 10^6 passes of nothing: no block runs, so the walk must not spin 10^12 times.
+void TestProgramCheck::check_nestedEmptyRepeats_endQuickly()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p = parsed("O1 repeat [1000000]\n O2 repeat [1000000]\n  O3 repeat [1000000]\n"
+                             "  O3 endrepeat\n O2 endrepeat\nO1 endrepeat\nM5",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY(result.ok());
+    QCOMPARE(result.preview.blocksRun, qint64(1));
+}
+
 void TestProgramCheck::check_tooManyBlocks_namedAtTheOutermostRepeat()
 {
     const MachineFacts facts = machineFacts("mill");
@@ -473,12 +507,18 @@ void TestProgramCheck::check_manyErrors_listedUpToTheParsersLimit()
 {
     const MachineFacts facts = machineFacts("mill");
     QString text;
-    for (int i = 0; i < 150; ++i)
+    // Errors of the walk (line 1 last, after the walk of a repeat) and of the blocks (every
+    // line), more than the list keeps while it collects them.
+    text += "G0 X1\n";
+    for (int i = 1; i < 1000; ++i)
         text += "M64 P1\n"; // the mill has no outputs
     const ProgramCheckResult result = ProgramCheck::check(parsed(text, facts), facts);
     QCOMPARE(result.errors.size(), ProgramParser::kMaxErrors + 1);
     QCOMPARE(result.errors.first().line, 1);
+    QVERIFY(result.errors.first().message.contains("position is unknown"));
+    QCOMPARE(result.errors.at(1).line, 2);
     QCOMPARE(result.errors.at(ProgramParser::kMaxErrors - 1).line, ProgramParser::kMaxErrors);
+    QCOMPARE(result.errors.last().line, 1000);
     QCOMPARE(result.errors.last().message,
              QString("more errors follow; only the first 100 are listed"));
 }
