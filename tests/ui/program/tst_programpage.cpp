@@ -196,9 +196,16 @@ void TestProgramPage::stop_duringMove_programEndsAborted()
 void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
 {
     QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("M0 (Load the part)\nG91\nG0 X0.25\nM2\n"));
+    setProgram(QStringLiteral("M0 (Load the part; a long prompt that does not fit on one line of "
+                              "the banner however wide the window is, since it goes on and on "
+                              "and on and on and on and on and on and on and on and on)\n"
+                              "G91\nG0 X0.25\nM2\n"));
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
     const int bannerHeight = page()->promptBanner()->height();
+    // Nothing the operator may reach for moves when the prompt appears.
+    auto place = [this](QWidget* w) { return QRect(w->mapTo(window(), QPoint()), w->size()); };
+    const QRect abort = place(page()->controls()->abortButton());
+    const QRect editor = place(page()->editor());
     page()->controls()->runButton()->click();
     // M0 on the first line: the program's first block runs too (it was skipped once).
     QTRY_VERIFY2_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(),
@@ -206,6 +213,8 @@ void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
     QVERIFY2(page()->promptBanner()->text().contains(QStringLiteral("Load the part")),
              qPrintable(page()->promptBanner()->text()));
     QCOMPARE(page()->promptBanner()->height(), bannerHeight); // room reserved
+    QCOMPARE(place(page()->controls()->abortButton()), abort);
+    QCOMPARE(place(page()->editor()), editor);
     QVERIFY(page()->editor()->isReadOnly());
     QCOMPARE(m_rig.elab->position(Axis::X), 0);
     page()->promptBanner()->resumeButton()->click();
