@@ -42,6 +42,7 @@ private Q_SLOTS:
     void stop_duringMove_programEndsAborted_data();
     void stop_duringMove_programEndsAborted();
     void m0_prompt_bannerWithResumeGoesOn();
+    void fault_linkLostDuringMove_failedNamingTheLine();
     void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
@@ -221,6 +222,23 @@ void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     QCOMPARE(m_rig.elab->position(Axis::X), 100);
     QVERIFY(!page()->promptBanner()->isShowingPrompt());
+}
+
+void TestProgramPage::fault_linkLostDuringMove_failedNamingTheLine()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 A3600\nG0 X1\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.nanotec->moving(Axis::X), 10000);
+    m_rig.nanotec->vanish(); // the rotary's USB adapter pulled
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Failed), 20000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Failed: line 2")),
+             qPrintable(page()->messageText()));
+    QVERIFY(!page()->editor()->isReadOnly());
+    QCOMPARE(page()->editor()->runningLine(), 0);
+    QVERIFY(m_rig.elab->still()); // line 3 never started
+    QCOMPARE(m_rig.elab->position(Axis::X), 0);
 }
 
 void TestProgramPage::position_whileRunning_drawnInThePath()
