@@ -5,6 +5,7 @@
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
+#include "ProgramMachinePositions.h"
 #include "ProgramPreviewView.h"
 #include "ProgramPromptBanner.h"
 #include "common/ElidedLabel.h"
@@ -255,22 +256,14 @@ void ProgramPage::onMachineStatus()
     if (!isRunning() && !m_recheck->isActive() && positionsSignature() != m_checkedPositions)
         m_recheck->start();
     if (isRunning())
-        m_preview->setCurrent(knownPositions(), m_secondsDone);
+        m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
     updateControls();
 }
 
 QMap<QString, double> ProgramPage::knownPositions() const
 {
-    QMap<QString, double> out;
     const machine::Machine* machine = m_context->machine();
-    if (!machine)
-        return out;
-    for (const machine::MachineAxis& a : machine->description().axes) {
-        const machine::MachineAxisStatus s = machine->axisStatus(a);
-        if (s.known != machine::PositionKnowledge::Unknown)
-            out.insert(a.name, s.position);
-    }
-    return out;
+    return machine ? ProgramMachinePositions::known(*machine) : QMap<QString, double>();
 }
 
 QString ProgramPage::positionsSignature() const
@@ -278,18 +271,8 @@ QString ProgramPage::positionsSignature() const
     const machine::Machine* machine = m_context->machine();
     if (!machine)
         return {};
-    QString out;
-    for (const machine::MachineAxis& a : machine->description().axes) {
-        const machine::MachineAxisStatus s = machine->axisStatus(a);
-        if (s.moving)
-            return m_checkedPositions; // not while anything moves: once it rests
-        out += QStringLiteral("%1=%2%3;")
-                   .arg(a.name)
-                   .arg(s.steps)
-                   .arg(s.known == machine::PositionKnowledge::Unknown ? QStringLiteral("?")
-                                                                       : QString());
-    }
-    return out;
+    // Not while anything moves: once it rests.
+    return ProgramMachinePositions::restingSignature(*machine).value_or(m_checkedPositions);
 }
 
 } // namespace stepdeck::ui

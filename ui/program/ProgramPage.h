@@ -1,4 +1,5 @@
 #pragma once
+#include "ProgramProgress.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramRunner.h"
 #include <QPointer>
@@ -98,9 +99,7 @@ private:
     QPointer<machine::Machine> m_runnerMachine;
     bool m_checkOk = false;
     program::Program m_running; // what the runner runs (for M0 lines and the progress)
-    program::ProgramPreview m_runPreview;
-    int m_pathCursor = -1;      // the path point of the last block finished
-    double m_secondsDone = 0;   // the estimate's time at that point
+    ProgramProgress m_progress; // of the run, in the estimate
     QString m_checkedPositions; // positionsSignature() of the last check
     QString m_stoppingText;     // the runner's stopping(): a move runs out by itself
 };

@@ -3,6 +3,7 @@
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
+#include "ProgramMachinePositions.h"
 #include "ProgramPage.h"
 #include "ProgramPreviewView.h"
 #include "ProgramPromptBanner.h"
@@ -15,12 +16,6 @@
 namespace stepdeck::ui {
 
 using program::RunState;
-
-namespace {
-// How far ahead the progress looks for the path point of a finished block: the path has a
-// point per block that ends somewhere, in run order.
-constexpr int kPathLookAhead = 64;
-} // namespace
 
 bool ProgramPage::isRunning() const
 {
@@ -64,20 +59,10 @@ QString ProgramPage::runFromText(int line) const
     }
     if (!first)
         return tr("Line %1: no block runs on or after it.").arg(line);
-    QStringList where;
-    const machine::Machine* machine = m_context->machine();
-    const QMap<QString, double> known = knownPositions();
-    for (const machine::MachineAxis& a : machine->description().axes) {
-        where << (known.contains(a.name) ? QStringLiteral("%1 %2 %3")
-                                               .arg(a.name)
-                                               .arg(known.value(a.name), 0, 'f', 3)
-                                               .arg(machine::unitKey(a.unit))
-                                         : tr("%1 unknown").arg(a.name));
-    }
     return tr("Run from line %1 (%2). The lines before it do not run; the axes start from where "
               "they stand now: %3.")
         .arg(first->line)
-        .arg(first->text, where.join(QStringLiteral(", ")));
+        .arg(first->text, ProgramMachinePositions::text(*m_context->machine()));
 }
 
 void ProgramPage::runFromLine(int line)
@@ -101,9 +86,7 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
     const std::optional<program::Program> parsed = parse(&errors);
     if (parsed && m_runner->start(*parsed, fromLine, &errors, stepOnly)) {
         m_running = *parsed;
-        m_runPreview = m_runner->preview();
-        m_pathCursor = -1;
-        m_secondsDone = 0;
+        m_progress.reset(m_runner->preview());
         m_stoppingText.clear();
         m_banner->clearPrompt();
         onState(m_runner->state());
@@ -139,16 +122,8 @@ void ProgramPage::onBlockStarted(int line, const QString&)
 
 void ProgramPage::onBlockFinished(int line)
 {
-    const QList<program::PreviewPoint>& path = m_runPreview.path;
-    const qsizetype end = qMin<qsizetype>(path.size(), m_pathCursor + 1 + kPathLookAhead);
-    for (qsizetype i = m_pathCursor + 1; i < end; ++i) {
-        if (path.at(i).line == line) {
-            m_pathCursor = int(i);
-            m_secondsDone = path.at(i).seconds;
-            break;
-        }
-    }
-    m_preview->setCurrent(knownPositions(), m_secondsDone);
+    m_progress.blockFinished(line);
+    m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
     updateProgress();
 }
 
@@ -212,9 +187,7 @@ void ProgramPage::updateProgress()
         m_controls->clearProgress();
         return;
     }
-    std::optional<double> left;
-    if (m_runPreview.estimatedSeconds > 0 && !m_runPreview.pathTruncated)
-        left = qMax(0.0, m_runPreview.estimatedSeconds - m_secondsDone);
+    std::optional<double> left = m_progress.secondsLeft();
     if (program::isEnded(m_runner->state()))
         left = m_runner->state() == RunState::Finished ? std::optional<double>(0.0) : std::nullopt;
     const int line =

@@ -8,6 +8,7 @@
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPathView.h"
+#include "program/ProgramProgress.h"
 #include "program/ProgramPromptBanner.h"
 #include "program/ProgramTimes.h"
 #include "protocols/Registry.h"
@@ -40,6 +41,7 @@ private Q_SLOTS:
     void controls_states_onlyUsefulButtonsEnabled();
     void banner_prompt_keepsItsHeight();
     void backgroundCheck_twoRequests_onlyTheNewestReports();
+    void progress_blocksOfARepeat_timeLeftFollowsThePath();
 };
 
 void TestProgramWidgets::initTestCase()
@@ -244,6 +246,33 @@ void TestProgramWidgets::backgroundCheck_twoRequests_onlyTheNewestReports()
     QCOMPARE(result.preview.lines, 3);
     // The same answer as checking on the spot.
     QCOMPARE(ProgramBackgroundCheck::run("G0 Q1\n", axes, facts).errors.size(), 1);
+}
+
+void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
+{
+    // O1 repeat [2] around line 2 (G0, 1 s), line 3 (M64: no point), line 4 (G4 P2).
+    program::ProgramPreview preview;
+    preview.estimatedSeconds = 6;
+    for (const auto& [line, seconds] :
+         QList<QPair<int, double>>{{0, 0}, {2, 1}, {4, 3}, {2, 4}, {4, 6}})
+        preview.path << program::PreviewPoint{line, seconds, {}};
+    ProgramProgress progress;
+    progress.reset(preview);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
+    progress.blockFinished(2);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 5.0);
+    progress.blockFinished(3); // no point of its own: the time stays
+    QCOMPARE(progress.secondsLeft().value_or(-1), 5.0);
+    progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 3.0);
+    progress.blockFinished(2); // the second time round
+    QCOMPARE(progress.secondsLeft().value_or(-1), 2.0);
+    progress.blockFinished(3);
+    progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
+    preview.pathTruncated = true; // beyond the path the estimate cannot follow the run
+    progress.reset(preview);
+    QVERIFY(!progress.secondsLeft());
 }
 
 QTEST_MAIN(TestProgramWidgets)
