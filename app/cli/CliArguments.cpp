@@ -393,6 +393,22 @@ QString machineHelp()
         "the machine has several).\n"
         "\n");
 }
+// Motion programs (issue 20): a paragraph of its own, so the machine part keeps its text.
+QString programHelp()
+{
+    return CliText::tr(
+        "Motion programs (docs/programs.md), on a machine file or --model/--port:\n"
+        "  run PROGRAM [--dry-run] [--from-line N] [--skip-pauses]\n"
+        "                              checks the whole program first (exit 7 with every\n"
+        "                              FILE:LINE:COL error, nothing sent), then runs it\n"
+        "                              block by block: a line per block on stderr (--json:\n"
+        "                              an event per block on stdout); exit 3/4/5/6 at the\n"
+        "                              failing line, 130 on Ctrl-C; M0 waits for Enter\n"
+        "                              (without a terminal: exit 2 unless --skip-pauses);\n"
+        "                              --dry-run prints lines, extents and the estimated\n"
+        "                              duration and moves nothing\n"
+        "\n");
+}
 } // namespace
 
 QString usageText()
@@ -485,7 +501,7 @@ QString usageText()
                "command is a usage error (exit 2). Everything after `--` is an argument.\n"
                "\n")
                .arg(busAddressRange()) +
-           machineHelp() + exitCodeHelp();
+           machineHelp() + programHelp() + exitCodeHelp();
 }
 
 } // namespace stepdeck::cli

@@ -42,6 +42,7 @@ const CommandEntry kCommands[] = {
     {cmdFeed, true, {"feed", kPositioningOptions}},
     {nullptr, true, {"stop", {}}},
     {nullptr, true, {"panic", {}}},
+    {nullptr, true, {"run", {{"dry-run"}, {"from-line", "N"}, {"skip-pauses"}}}},
     {cmdReset, true, {"reset", {}}},
     {cmdSpindle, true, {"spindle", {}}},
     {cmdCoolant, true, {"coolant", {}}},

@@ -2,6 +2,7 @@
 // per-controller commands on the controller --controller names (issue 19; docs/cli.md).
 #include "CliMachineRun.h"
 #include "../common/SignalPipe.h"
+#include "CliProgramRun.h"
 #include "CliText.h"
 #include "machine/MachineFile.h"
 #include "protocols/Registry.h"
@@ -19,8 +20,9 @@ struct MachineCommandEntry
 };
 
 const MachineCommandEntry kMachineCommands[] = {
-    {"move", machineMove}, {"jog", machineJog},     {"home", machineHome},
-    {"stop", machineStop}, {"panic", machinePanic}, {"status", machineStatus},
+    {"move", machineMove},      {"jog", machineJog},     {"home", machineHome},
+    {"stop", machineStop},      {"panic", machinePanic}, {"status", machineStatus},
+    {"run", machineRunProgram},
 };
 
 // The commands that need no controller at all run as without a machine.

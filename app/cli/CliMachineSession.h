@@ -59,8 +59,11 @@ public:
     // stop at once; success when every controller acknowledged it.
     Outcome stopAll();
 
-private:
+    // Makes a waitFor() check its condition again now (for conditions the machine's signals
+    // do not announce, such as a program runner's state).
     void wake();
+
+private:
     void watchSessions();
     Outcome openAll();
     CommandResult verdict(const QString& controllerId, const CommandResult& r);

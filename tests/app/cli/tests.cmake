@@ -1,2 +1,11 @@
 stepdeck_add_test(tst_cliarguments SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cliarguments.cpp
   LIBS stepdeck_cli LABELS unit)
+# stepdeck-cli run PROGRAM (issue 20): before anything moves, and what a run prints (E-LAB).
+stepdeck_add_test(tst_cli_run SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_run.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 300)
+add_dependencies(tst_cli_run stepdeck-cli)
+# stepdeck-cli run PROGRAM on every simulator: order, one motion at a time, dwell, signal,
+# refusal and --from-line, M66.
+stepdeck_add_test(tst_cli_run_devices SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_run_devices.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 300)
+add_dependencies(tst_cli_run_devices stepdeck-cli)

@@ -89,6 +89,11 @@ void TestCliArguments::parse_goodInvocations_data()
         << QStringList{"laser-bridge", "/dev/ttyUSB1", "--map", "1=X", "--scale", "10"}
         << "laser-bridge" << QStringList{"/dev/ttyUSB1"} << QStringList{"map=1=X", "scale=10"}
         << "sim" << false << 3000;
+    QTest::newRow("run with its options")
+        << QStringList{"run",       "part.ngc", "--from-line",  "12",
+                       "--dry-run", "--json",   "--skip-pauses"}
+        << "run" << QStringList{"part.ngc"}
+        << QStringList{"dry-run=", "from-line=12", "skip-pauses="} << "sim" << true << 3000;
 }
 
 void TestCliArguments::parse_goodInvocations()
@@ -128,6 +133,8 @@ void TestCliArguments::parse_usageErrors_data()
         << QStringList{"status", "--port"} << "missing value after '--port'";
     QTest::newRow("missing value of a command option")
         << QStringList{"jog", "X=1", "--for"} << "missing value after '--for'";
+    QTest::newRow("run --from-line without its line")
+        << QStringList{"run", "part.ngc", "--from-line"} << "missing value after '--from-line'";
     QTest::newRow("value for a flag") << QStringList{"--json=yes", "status"} << "--json";
     QTest::newRow("timeout not a number")
         << QStringList{"--timeout", "x", "status"} << "--timeout needs a positive number";

@@ -1,0 +1,176 @@
+// What `stepdeck-cli run` prints (docs/cli.md "run").
+#include "CliProgramOutput.h"
+#include "CliText.h"
+#include <QJsonArray>
+#include <QJsonObject>
+#include <cstdio>
+
+namespace stepdeck::cli {
+
+using program::ProgramRunner;
+using program::RunState;
+
+namespace {
+// The states of a run as --json names them (fixed words: scripts compare them).
+QString stateKey(RunState state)
+{
+    switch (state) {
+    case RunState::Idle:
+        return QStringLiteral("idle");
+    case RunState::Running:
+        return QStringLiteral("running");
+    case RunState::Paused:
+        return QStringLiteral("paused");
+    case RunState::Stopping:
+        return QStringLiteral("stopping");
+    case RunState::Finished:
+        return QStringLiteral("finished");
+    case RunState::Failed:
+        return QStringLiteral("failed");
+    case RunState::Aborted:
+        return QStringLiteral("aborted");
+    }
+    return {};
+}
+
+QString number(double value)
+{
+    return QString::number(value, 'f', 3);
+}
+
+QString durationText(double seconds)
+{
+    if (seconds < 60)
+        return CliText::tr("%1 s").arg(QString::number(seconds, 'f', 1));
+    const qint64 whole = qint64(seconds + 0.5);
+    return CliText::tr("%1 min %2 s").arg(whole / 60).arg(whole % 60);
+}
+} // namespace
+
+void printProgress(const QString& line)
+{
+    const QByteArray bytes = (line.simplified() + QLatin1Char('\n')).toUtf8();
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
+    std::fflush(stderr);
+}
+
+void printProgramErrors(const QString& path, const QList<program::ProgramError>& errors)
+{
+    for (const program::ProgramError& e : errors)
+        printProgress(QStringLiteral("%1:%2").arg(path, e.text()));
+}
+
+void printProgramPreview(const QString& path, const program::ProgramPreview& preview,
+                         const machine::MachineDescription& description, bool json)
+{
+    if (json) {
+        QJsonObject extents;
+        for (auto it = preview.extents.cbegin(); it != preview.extents.cend(); ++it) {
+            const machine::MachineAxis* axis = description.axis(it.key());
+            extents.insert(it.key(),
+                           QJsonObject{{"minimum", it->minimum},
+                                       {"maximum", it->maximum},
+                                       {"moved", it->moved},
+                                       {"unit", axis ? machine::unitKey(axis->unit) : QString()}});
+        }
+        printJson(QJsonObject{{"event", "preview"},
+                              {"lines", preview.lines},
+                              {"blocks", preview.blocksRun},
+                              {"estimatedSeconds", preview.estimatedSeconds},
+                              {"extents", extents},
+                              {"motion", preview.motionNote}});
+        return;
+    }
+    printLine(CliText::tr("%1: %2 lines, %3 blocks to run")
+                  .arg(path)
+                  .arg(preview.lines)
+                  .arg(preview.blocksRun));
+    for (const machine::MachineAxis& axis : description.axes) {
+        const auto it = preview.extents.constFind(axis.name);
+        const QString unit = machine::unitKey(axis.unit);
+        if (it == preview.extents.cend())
+            printLine(CliText::tr("  %1: position unknown").arg(axis.name));
+        else if (!it->moved)
+            printLine(
+                CliText::tr("  %1: not moved (%2 %3)").arg(axis.name, number(it->minimum), unit));
+        else
+            printLine(CliText::tr("  %1: %2 .. %3 %4")
+                          .arg(axis.name, number(it->minimum), number(it->maximum), unit));
+    }
+    printLine(CliText::tr("estimated duration: %1 (estimated: known rates, no acceleration)")
+                  .arg(durationText(preview.estimatedSeconds)));
+    if (!preview.motionNote.isEmpty())
+        printLine(preview.motionNote);
+}
+
+ProgramReport::ProgramReport(ProgramRunner& runner, int lines, bool json)
+    : m_runner(runner), m_lines(lines), m_json(json)
+{
+    m_clock.start();
+    QObject::connect(&runner, &ProgramRunner::blockStarted, &m_guard,
+                     [this](int line, const QString& text) { blockStarted(line, text); });
+    QObject::connect(&runner, &ProgramRunner::blockFinished, &m_guard,
+                     [this](int line) { blockFinished(line); });
+    QObject::connect(&runner, &ProgramRunner::paused, &m_guard,
+                     [this](int line, const QString& prompt) { paused(line, prompt); });
+    QObject::connect(&runner, &ProgramRunner::stopping, &m_guard, [this](const QString& message) {
+        if (m_json)
+            printJson(QJsonObject{{"event", "stopping"}, {"message", message}});
+        else
+            printProgress(message);
+    });
+}
+
+void ProgramReport::blockStarted(int line, const QString& text)
+{
+    m_line = line;
+    m_text = text;
+    if (!m_json)
+        printProgress(CliText::tr("line %1/%2: %3").arg(line).arg(m_lines).arg(text));
+}
+
+void ProgramReport::blockFinished(int line)
+{
+    if (m_json)
+        printJson(QJsonObject{{"event", "block"},
+                              {"line", line},
+                              {"text", line == m_line ? m_text : QString()},
+                              {"state", "done"},
+                              {"blocksDone", m_runner.blocksDone()},
+                              {"seconds", m_clock.elapsed() / 1000.0}});
+}
+
+void ProgramReport::paused(int line, const QString& prompt)
+{
+    if (m_json)
+        printJson(QJsonObject{{"event", "paused"}, {"line", line}, {"prompt", prompt}});
+}
+
+void ProgramReport::summary(const Outcome& outcome, const QString& positions)
+{
+    const RunState state = m_runner.state();
+    const double seconds = m_clock.elapsed() / 1000.0;
+    if (m_json) {
+        // The block a failed or stopped run ended at, as a block event of its own.
+        if (!outcome.ok() && m_line > 0)
+            printJson(QJsonObject{{"event", "block"},
+                                  {"line", m_line},
+                                  {"text", m_text},
+                                  {"state", stateKey(state)},
+                                  {"message", outcome.message}});
+        printJson(QJsonObject{{"event", "summary"},
+                              {"state", stateKey(state)},
+                              {"exitCode", outcome.code},
+                              {"line", outcome.ok() ? 0 : m_line},
+                              {"blocksDone", m_runner.blocksDone()},
+                              {"seconds", seconds},
+                              {"message", outcome.message}});
+        return;
+    }
+    if (outcome.ok())
+        printLine(CliText::tr("finished: %1 blocks in %2; %3")
+                      .arg(m_runner.blocksDone())
+                      .arg(durationText(seconds), positions));
+}
+
+} // namespace stepdeck::cli

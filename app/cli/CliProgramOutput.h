@@ -1,0 +1,54 @@
+#pragma once
+// What `stepdeck-cli run` prints (CliProgramRun.cpp; docs/cli.md "run"): the program's errors
+// as FILE:LINE:COL lines, the preview of --dry-run, one progress line per block on stderr or,
+// with --json, one JSON event per block on stdout and a summary at the end.
+#include "CliOutput.h"
+#include "machine/MachineDescription.h"
+#include "program/ProgramCheck.h"
+#include "program/ProgramRunner.h"
+#include <QElapsedTimer>
+#include <QObject>
+
+namespace stepdeck::cli {
+
+// Every error as "FILE:LINE:COL: message" on stderr, one line each (the compilers' form, so an
+// editor can jump to it); FILE as it was given on the command line.
+void printProgramErrors(const QString& path, const QList<program::ProgramError>& errors);
+
+// --dry-run: lines, blocks, extents per axis in its unit, the estimated duration; one JSON
+// object with --json.
+void printProgramPreview(const QString& path, const program::ProgramPreview& preview,
+                         const machine::MachineDescription& description, bool json);
+
+// One line on stderr without the "stepdeck-cli:" of a failure (progress, M0's prompt).
+void printProgress(const QString& line);
+
+// Follows a running program: "line 12/40: G0 X10" on stderr when a block starts, or with
+// --json {"event":"block","line":12,"state":"done",...} on stdout when it ended; summary()
+// closes the run (a JSON object with --json, a line on stdout when it finished).
+class ProgramReport
+{
+public:
+    ProgramReport(program::ProgramRunner& runner, int lines, bool json);
+    ProgramReport(const ProgramReport&) = delete;
+    ProgramReport& operator=(const ProgramReport&) = delete;
+
+    // The run ended with `outcome` (its exit code and, on failure, its message);
+    // `positions`: where the axes ended ("X=2.500 A=25.000"), for the finished line.
+    void summary(const Outcome& outcome, const QString& positions);
+
+private:
+    void blockStarted(int line, const QString& text);
+    void blockFinished(int line);
+    void paused(int line, const QString& prompt);
+
+    program::ProgramRunner& m_runner;
+    int m_lines = 0;
+    bool m_json = false;
+    int m_line = 0; // the block running: its line and text
+    QString m_text;
+    QElapsedTimer m_clock;
+    QObject m_guard; // the connections to the runner live as long as this
+};
+
+} // namespace stepdeck::cli

@@ -1,0 +1,262 @@
+// `stepdeck-cli run PROGRAM`: a motion program on the machine (issue 20; docs/cli.md "run",
+// docs/programs.md). Parsing and the M0 rule come before anything is opened; the check before
+// anything moves; the run itself is program::ProgramRunner's.
+#include "CliProgramRun.h"
+#include "CliEventWait.h"
+#include "CliMachineRun.h"
+#include "CliProgramOutput.h"
+#include "CliText.h"
+#include "model/NumberParsing.h"
+#include "program/ProgramParser.h"
+#include <QFile>
+#include <QFileInfo>
+#include <QSocketNotifier>
+#include <limits>
+#include <memory>
+#include <termios.h>
+#include <unistd.h>
+
+namespace stepdeck::cli {
+
+using program::Program;
+using program::ProgramRunner;
+using program::RunState;
+
+namespace {
+constexpr qint64 kReadChunk = 64 * 1024;
+constexpr int kAbortSettleMs = 5000; // bound for the axes to stand after an abort
+
+struct RunRequest
+{
+    QString path;
+    int fromLine = 1;
+    bool dryRun = false;
+    bool skipPauses = false;
+};
+
+Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
+{
+    if (o.args.size() != 1)
+        return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
+                                          "[--from-line N] [--skip-pauses])"));
+    r->path = o.args.constFirst();
+    r->dryRun = o.flag("dry-run");
+    r->skipPauses = o.flag("skip-pauses");
+    if (const std::optional<QString> from = o.value("from-line");
+        from && numbers::parseInt(*from, 1, std::numeric_limits<int>::max(), &r->fromLine) !=
+                    NumberError::None)
+        return Outcome::usage(
+            CliText::tr("run --from-line needs a line number (1 or more), got '%1'").arg(*from));
+    return Outcome::success();
+}
+
+// The whole file through the streaming parser, before any link is opened: exit 12 when it
+// cannot be read, 7 with every FILE:LINE:COL error.
+Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, Program* out)
+{
+    QFile file(r.path);
+    if (!QFileInfo(r.path).isFile() || !file.open(QIODevice::ReadOnly))
+        return Outcome::failure(ExitFile, CliText::tr("cannot read %1").arg(r.path));
+    QStringList axisNames;
+    for (const machine::MachineAxis& a : d.axes)
+        axisNames << a.name;
+    program::ProgramParser parser(axisNames);
+    while (!file.atEnd()) {
+        const QByteArray chunk = file.read(kReadChunk);
+        if (chunk.isEmpty() && file.error() != QFileDevice::NoError)
+            return Outcome::failure(
+                ExitFile, CliText::tr("cannot read %1: %2").arg(r.path, file.errorString()));
+        parser.feed(chunk);
+    }
+    QList<program::ProgramError> errors;
+    const std::optional<Program> parsed = parser.finish(&errors);
+    if (!parsed) {
+        printProgramErrors(r.path, errors);
+        return Outcome::failure(
+            ExitInvalidValue,
+            CliText::tr("%1 is not a valid program; nothing was sent").arg(r.path));
+    }
+    *out = *parsed;
+    return Outcome::success();
+}
+
+// M0 waits for Enter on a terminal; without one it would wait forever or read a script's
+// input as the operator's, so such a run is refused before anything is opened.
+Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
+{
+    if (r.dryRun || r.skipPauses || ::isatty(STDIN_FILENO))
+        return Outcome::success();
+    for (const program::ProgramBlock& b : p.blocks) {
+        if (b.kind == program::BlockKind::Pause && b.line >= r.fromLine)
+            return Outcome::usage(CliText::tr("run: line %1 holds M0, which waits for Enter on a "
+                                              "terminal, and stdin is not one (--skip-pauses "
+                                              "runs on without stopping there)")
+                                      .arg(b.line));
+    }
+    return Outcome::success();
+}
+
+// At M0: on at once with --skip-pauses, else the prompt on stderr and on with Enter. Stdin
+// closed (Ctrl-D) while waiting stops the program.
+class PauseAnswer
+{
+public:
+    PauseAnswer(ProgramRunner& runner, CliMachineSession& m, bool skip, bool json)
+        : m_runner(runner), m_session(m), m_skip(skip), m_json(json)
+    {
+        QObject::connect(&runner, &ProgramRunner::paused, &m_guard,
+                         [this](int line, const QString& prompt) { paused(line, prompt); });
+    }
+    bool stdinClosed() const { return m_closed; }
+
+private:
+    void paused(int line, const QString& prompt)
+    {
+        if (m_skip) {
+            if (!m_json)
+                printProgress(CliText::tr("line %1: M0 passed (--skip-pauses)").arg(line));
+            // Not from inside the runner's own signal.
+            QMetaObject::invokeMethod(
+                &m_guard, [this] { m_runner.resume(); }, Qt::QueuedConnection);
+            return;
+        }
+        // Only an Enter pressed after the prompt answers it: typed-ahead lines are dropped.
+        ::tcflush(STDIN_FILENO, TCIFLUSH);
+        printProgress(
+            prompt.isEmpty()
+                ? CliText::tr("line %1: paused; press Enter to go on (Ctrl-C stops)").arg(line)
+                : CliText::tr("line %1: %2 -- press Enter to go on (Ctrl-C stops)")
+                      .arg(line)
+                      .arg(prompt));
+        if (!m_notifier) {
+            m_notifier = std::make_unique<QSocketNotifier>(STDIN_FILENO, QSocketNotifier::Read);
+            QObject::connect(m_notifier.get(), &QSocketNotifier::activated, &m_guard,
+                             [this] { readAnswer(); });
+        }
+        m_notifier->setEnabled(true);
+    }
+    void readAnswer()
+    {
+        char buffer[256];
+        const ssize_t n = ::read(STDIN_FILENO, buffer, sizeof buffer);
+        if (n > 0 && !QByteArray(buffer, int(n)).contains('\n'))
+            return; // a line typed so far; Enter ends it
+        m_notifier->setEnabled(false);
+        if (m_runner.state() != RunState::Paused)
+            return;
+        if (n > 0) {
+            m_runner.resume();
+        } else {
+            m_closed = true;
+            m_runner.abort();
+        }
+        m_session.wake();
+    }
+
+    ProgramRunner& m_runner;
+    CliMachineSession& m_session;
+    bool m_skip = false;
+    bool m_json = false;
+    bool m_closed = false;
+    std::unique_ptr<QSocketNotifier> m_notifier;
+    QObject m_guard;
+};
+
+Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool json)
+{
+    const program::ProgramCheckResult checked =
+        program::ProgramCheck::check(p, program::factsOf(m.machine()), r.fromLine);
+    if (!checked.ok()) {
+        printProgramErrors(r.path, checked.errors);
+        return Outcome::failure(
+            ExitInvalidValue,
+            CliText::tr("%1 cannot run on this machine; nothing was sent").arg(r.path));
+    }
+    printProgramPreview(r.path, checked.preview, m.description(), json);
+    return Outcome::success();
+}
+
+// How a run that ended without an interrupt ends the command.
+Outcome endOutcome(CliMachineSession& m, const ProgramRunner& runner, const PauseAnswer& pauses)
+{
+    switch (runner.state()) {
+    case RunState::Finished:
+        return Outcome::success();
+    case RunState::Failed:
+        if (m.linkLost())
+            return Outcome::failure(ExitLinkDown, runner.endMessage());
+        if (runner.failureKind() != ErrorKind::None)
+            return Outcome::failure(exitCodeFor(runner.failureKind()), runner.endMessage());
+        // A move the machine ended as failed may reach the runner before the request result
+        // that says why: the session's last failed request tells (as for `move`), else the
+        // move ended short (exit 13).
+        return m.motionFailure(runner.endMessage());
+    default:
+        break;
+    }
+    if (pauses.stdinClosed())
+        return Outcome::failure(
+            ExitFailure, CliText::tr("stdin was closed at M0 (line %1): the program was stopped")
+                             .arg(runner.currentLine()));
+    return Outcome::failure(ExitFailure, runner.endMessage());
+}
+
+Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, bool json)
+{
+    ProgramRunner runner(&m.machine());
+    ProgramReport report(runner, p.lines, json);
+    PauseAnswer pauses(runner, m, r.skipPauses, json);
+    CliEventWait settle; // after an interrupt, when the session's own waits return at once
+    QObject guard;
+    QObject::connect(&runner, &ProgramRunner::stateChanged, &guard, [&m, &settle] {
+        m.wake();
+        settle.wake();
+    });
+    QList<program::ProgramError> errors;
+    if (!runner.start(p, r.fromLine, &errors)) {
+        printProgramErrors(r.path, errors);
+        return Outcome::failure(
+            ExitInvalidValue,
+            CliText::tr("%1 cannot run on this machine; nothing was sent").arg(r.path));
+    }
+    m.waitFor([&runner] { return program::isEnded(runner.state()); }, -1);
+    Outcome outcome;
+    if (m.interrupted()) {
+        // The runner stops every controller; the caller's stopAll() then reports whether
+        // each acknowledged it (as for every command).
+        const int line = runner.currentLine();
+        runner.abort();
+        const bool never = false;
+        settle.waitFor([&runner] { return program::isEnded(runner.state()); }, kAbortSettleMs,
+                       never);
+        outcome =
+            Outcome::failure(ExitInterrupted, CliText::tr("interrupted at line %1").arg(line));
+    } else {
+        outcome = endOutcome(m, runner, pauses);
+    }
+    report.summary(outcome, machinePositionsLine(m));
+    return outcome;
+}
+} // namespace
+
+Outcome machineRunProgram(CliMachineSession& m, const CliOptions& o)
+{
+    RunRequest r;
+    if (Outcome parsed = parseRunArguments(o, &r); !parsed.ok())
+        return parsed;
+    Program p;
+    if (Outcome read = readProgram(r, m.description(), &p); !read.ok())
+        return read;
+    if (r.fromLine > p.lines)
+        return Outcome::usage(CliText::tr("run --from-line %1: %2 has %3 lines")
+                                  .arg(r.fromLine)
+                                  .arg(r.path)
+                                  .arg(p.lines));
+    if (Outcome allowed = refusePausesWithoutTerminal(p, r); !allowed.ok())
+        return allowed;
+    if (Outcome connected = m.connectAll(); !connected.ok())
+        return connected;
+    return r.dryRun ? dryRun(m, p, r, o.json) : runProgram(m, p, r, o.json);
+}
+
+} // namespace stepdeck::cli

@@ -1,0 +1,228 @@
+// stepdeck-cli run PROGRAM (issue 20; docs/cli.md "Motion programs"): what happens before a
+// program moves anything -- parse errors, the check, M0 without a terminal, --dry-run -- and
+// what a run prints. The E-LAB simulator is on a real pty in a thread of this process; every
+// test asserts what the DEVICE received.
+#include "CliRunRig.h"
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+class TestCliRun : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void invalidProgram_everyErrorAsFileLineCol_exit7_nothingSent();
+    void unreadableProgram_exit12_nothingSent();
+    void checkError_outputTheMachineLacks_exit7_noMotion();
+    void pause_withoutTerminal_exit2_nothingSent();
+    void pause_skipPauses_runsThrough();
+    void pause_onATerminal_waitsForEnter();
+    void dryRun_json_previewFiguresNoMotion();
+    void dryRun_human_linesExtentsDuration();
+    void run_progressLinePerBlockOnStderr();
+    void run_json_eventPerBlockThenSummary();
+    void fromLine_beyondTheFile_exit2();
+
+private:
+    QStringList args(const QString& program, const QStringList& more = {}) const
+    {
+        return cliArgs(QStringLiteral("elab"), m_device->path()) + QStringList{"run", program} +
+               more;
+    }
+
+    std::unique_ptr<RunDevice> m_device;
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestCliRun::initTestCase()
+{
+    QVERIFY2(!qEnvironmentVariableIsEmpty("STEPDECK_BIN_DIR"),
+             "STEPDECK_BIN_DIR is not set (run through ctest)");
+}
+
+void TestCliRun::init()
+{
+    m_device = std::make_unique<RunDevice>(QStringLiteral("elab"));
+    m_dir = std::make_unique<QTemporaryDir>();
+    QVERIFY(m_dir->isValid());
+}
+
+void TestCliRun::cleanup()
+{
+    m_device.reset();
+    m_dir.reset();
+}
+
+// Every wrong line as FILE:LINE:COL on stderr, before any link is opened: the board received
+// not a single byte.
+void TestCliRun::invalidProgram_everyErrorAsFileLineCol_exit7_nothingSent()
+{
+    const QString path =
+        writeProgram(*m_dir, "bad.ngc", "G91\nT2\nG0 X10\nG0 X5 Q1\nG0 X1 G1 X2\n");
+    const CliRun r = runCli(args(path));
+    QCOMPARE(r.exitCode, 7);
+    const QList<QByteArray> lines = r.err.trimmed().split('\n');
+    QVERIFY2(lines.size() == 4, r.err.constData());
+    QVERIFY2(lines.at(0).startsWith(path.toUtf8() + ":2:1: "), r.err.constData());
+    QVERIFY2(lines.at(1).startsWith(path.toUtf8() + ":4:"), r.err.constData());
+    QVERIFY2(lines.at(2).startsWith(path.toUtf8() + ":5:"), r.err.constData());
+    QVERIFY2(lines.at(3).contains("nothing was sent"), r.err.constData());
+    QCOMPARE(m_device->receivedCount(), 0);
+}
+
+void TestCliRun::unreadableProgram_exit12_nothingSent()
+{
+    const CliRun r = runCli(args(m_dir->filePath("missing.ngc")));
+    QCOMPARE(r.exitCode, 12);
+    QVERIFY2(r.err.contains("cannot read"), r.err.constData());
+    QCOMPARE(m_device->receivedCount(), 0);
+}
+
+// Valid G-code the machine cannot run (E-LAB has no digital outputs): refused by the check
+// with its line and column after connecting; the board received no motion.
+void TestCliRun::checkError_outputTheMachineLacks_exit7_noMotion()
+{
+    const QString path = writeProgram(*m_dir, "out.ngc", "G91 G0 X10\nM64 P1\nG0 X10\n");
+    const CliRun r = runCli(args(path));
+    QCOMPARE(r.exitCode, 7);
+    QVERIFY2(r.err.startsWith(path.toUtf8() + ":2:"), r.err.constData());
+    QVERIFY(m_device->moves().isEmpty());
+    QVERIFY(m_device->still());
+}
+
+// stdin of a QProcess is a pipe, not a terminal: M0 would wait for nobody.
+void TestCliRun::pause_withoutTerminal_exit2_nothingSent()
+{
+    const QString path =
+        writeProgram(*m_dir, "pause.ngc", "G91 G0 X10\nM0 (check the part)\nG0 X10\n");
+    const CliRun r = runCli(args(path));
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("line 2") && r.err.contains("--skip-pauses"), r.err.constData());
+    QCOMPARE(m_device->receivedCount(), 0);
+}
+
+void TestCliRun::pause_skipPauses_runsThrough()
+{
+    const QString path =
+        writeProgram(*m_dir, "pause.ngc", "G91 G0 X10\nM0 (check the part)\nG0 X20\n");
+    const CliRun r = runCli(args(path, {"--skip-pauses"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QList<DeviceMove> moves = m_device->moves();
+    QCOMPARE(moves.size(), 2);
+    QCOMPARE(moves.at(0).steps, qint64(10));
+    QCOMPARE(moves.at(1).steps, qint64(20));
+}
+
+// stdin a terminal (a pty): M0 prints its prompt and holds until Enter; the board gets the
+// next block only then.
+void TestCliRun::pause_onATerminal_waitsForEnter()
+{
+    PtyEndpoint terminal;
+    QVERIFY(terminal.create());
+    const QString path =
+        writeProgram(*m_dir, "pause.ngc", "G91 G0 X10\nM0 (load the part)\nG0 X20\n");
+    QProcess cli;
+    QByteArray err;
+    connect(&cli, &QProcess::readyReadStandardError, this,
+            [&] { err += cli.readAllStandardError(); });
+    cli.setStandardInputFile(terminal.slavePath());
+    cli.start(cliPath(), args(path));
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_VERIFY2_WITH_TIMEOUT(err.contains("load the part"), err.constData(), 20000);
+    QVERIFY2(err.contains("line 2"), err.constData());
+    QCOMPARE(m_device->moves().size(), 1); // paused: the block after M0 is not sent
+    QVERIFY(cli.state() == QProcess::Running);
+    terminal.write("\n");
+    QTRY_COMPARE_WITH_TIMEOUT(cli.state(), QProcess::NotRunning, 20000);
+    QVERIFY2(cli.exitCode() == 0, err.constData());
+    const QList<DeviceMove> moves = m_device->moves();
+    QCOMPARE(moves.size(), 2);
+    QCOMPARE(moves.at(1).steps, qint64(20));
+}
+
+// The preview's figures; the board gets no motion at all (no reference run either).
+void TestCliRun::dryRun_json_previewFiguresNoMotion()
+{
+    const QString path = writeProgram(
+        *m_dir, "dry.ngc",
+        "G28 X0\nG0 X200\nO1 repeat [3]\n  G0 X50\n  G0 X120\nO1 endrepeat\nG4 P0.5\nM2\n");
+    const CliRun r = runCli(args(path, {"--dry-run", "--json"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonObject preview = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(preview.value("event").toString(), QStringLiteral("preview"));
+    QCOMPARE(preview.value("lines").toInt(), 8);
+    QVERIFY2(preview.value("blocks").toInteger() >= 9, r.out.constData()); // repeats counted out
+    const QJsonObject x = preview.value("extents").toObject().value("X").toObject();
+    QCOMPARE(x.value("minimum").toDouble(), 0.0);
+    QCOMPARE(x.value("maximum").toDouble(), 200.0);
+    QVERIFY(x.value("moved").toBool());
+    QCOMPARE(x.value("unit").toString(), QStringLiteral("steps"));
+    QVERIFY(preview.value("estimatedSeconds").toDouble() >= 0.5); // at least the dwell
+    QVERIFY(m_device->moves().isEmpty());
+    QCOMPARE(m_device->position(), qint64(0));
+    QVERIFY(m_device->still());
+}
+
+void TestCliRun::dryRun_human_linesExtentsDuration()
+{
+    const QString path = writeProgram(*m_dir, "dry.ngc", "G28 X0\nG0 X200\nG0 X50\n");
+    const CliRun r = runCli(args(path, {"--dry-run"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("3 lines"), r.out.constData());
+    QVERIFY2(r.out.contains("X: 0.000 .. 200.000 steps"), r.out.constData());
+    QVERIFY2(r.out.contains("estimated duration"), r.out.constData());
+    QVERIFY(m_device->moves().isEmpty());
+}
+
+void TestCliRun::run_progressLinePerBlockOnStderr()
+{
+    const QString path = writeProgram(*m_dir, "p.ngc", "; two moves\nG91\nG0 X10\nG0 X-10\n");
+    const CliRun r = runCli(args(path));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.err.contains("line 3/4: G0 X10\n"), r.err.constData());
+    QVERIFY2(r.err.contains("line 4/4: G0 X-10\n"), r.err.constData());
+    QVERIFY2(r.out.startsWith("finished: 2 blocks"), r.out.constData());
+    QCOMPARE(m_device->moves().size(), 2);
+}
+
+void TestCliRun::run_json_eventPerBlockThenSummary()
+{
+    const QString path = writeProgram(*m_dir, "j.ngc", "G91\nG0 X10\nG4 P0.05\nG0 X-10\nM2\n");
+    const CliRun r = runCli(args(path, {"--json"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.err.isEmpty(), r.err.constData());
+    QList<int> doneLines;
+    QJsonObject summary;
+    for (const QByteArray& line : r.out.trimmed().split('\n')) {
+        const QJsonObject event = QJsonDocument::fromJson(line).object();
+        QVERIFY2(!event.isEmpty(), line.constData());
+        if (event.value("event").toString() == QLatin1String("block")) {
+            QCOMPARE(event.value("state").toString(), QStringLiteral("done"));
+            doneLines << event.value("line").toInt();
+        } else if (event.value("event").toString() == QLatin1String("summary")) {
+            summary = event;
+        }
+    }
+    QVERIFY2(doneLines.mid(0, 3) == QList<int>({2, 3, 4}), r.out.constData());
+    QCOMPARE(summary.value("state").toString(), QStringLiteral("finished"));
+    QCOMPARE(summary.value("exitCode").toInt(-1), 0);
+    QCOMPARE(m_device->moves().size(), 2);
+}
+
+void TestCliRun::fromLine_beyondTheFile_exit2()
+{
+    const QString path = writeProgram(*m_dir, "f.ngc", "G91\nG0 X10\n");
+    const CliRun r = runCli(args(path, {"--from-line", "9"}));
+    QCOMPARE(r.exitCode, 2);
+    QCOMPARE(m_device->receivedCount(), 0);
+}
+
+QTEST_GUILESS_MAIN(TestCliRun)
+#include "tst_cli_run.moc"

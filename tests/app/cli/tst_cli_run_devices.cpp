@@ -1,0 +1,219 @@
+// stepdeck-cli run PROGRAM on each simulated controller (issue 20): the device receives the
+// blocks in order, one motion at a time per axis, a dwell lasts at least its P at the device;
+// a signal, a refused block and M66 end the run as docs/cli.md says. Each simulator is on a real
+// pty in a thread of this process (CliRunRig.h); the assertions are about what the DEVICE did.
+#include "CliRunRig.h"
+#include "protocols/elab/ElabSimulator.h"
+#include "protocols/emis/EmisSimulator.h"
+#include <QtTest>
+#include <csignal>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+namespace {
+constexpr double kDwellSeconds = 0.4;
+
+// The same program on every model: a reference run of X, moves, a dwell, a 3x repeat. Only
+// EMIS has digital outputs; on the other models M64/M65 would be a check error (exit 7), so
+// their program leaves those two lines out (the line numbers stay: they become comments).
+QByteArray commonProgram(bool outputs)
+{
+    const QByteArray on = outputs ? "M64 P1" : "; (no outputs on this model)";
+    const QByteArray off = outputs ? "M65 P1" : "; (no outputs on this model)";
+    return "G21 G90\n"
+           "G28 X0\n"
+           "G0 X200\n" +
+           on + "\nG4 P0.4\n" + off +
+           "\n"
+           "O1 repeat [3]\n"
+           "  G0 X300\n"
+           "  G0 X200\n"
+           "O1 endrepeat\n"
+           "M2\n";
+}
+
+// The moves the program makes X do after its reference run, as the device counts them.
+const QList<qint64> kExpectedSteps{200, 100, -100, 100, -100, 100, -100};
+} // namespace
+
+class TestCliRunDevices : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld_data();
+    void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld();
+    void sigint_duringABlock_deviceStandsStillNextBlockNeverArrives();
+    void refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenFromLineRunsOn();
+    void linkLost_duringABlock_exit6NamesTheLine();
+    void waitInput_goesHighAfterASecond_runOnThenTimeoutExit5();
+
+private:
+    std::unique_ptr<QTemporaryDir> m_dir;
+};
+
+void TestCliRunDevices::initTestCase()
+{
+    QVERIFY2(!qEnvironmentVariableIsEmpty("STEPDECK_BIN_DIR"),
+             "STEPDECK_BIN_DIR is not set (run through ctest)");
+}
+
+void TestCliRunDevices::init()
+{
+    m_dir = std::make_unique<QTemporaryDir>();
+    QVERIFY(m_dir->isValid());
+}
+
+void TestCliRunDevices::cleanup()
+{
+    m_dir.reset();
+}
+
+void TestCliRunDevices::sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld_data()
+{
+    QTest::addColumn<QString>("model");
+    for (const char* model : {"elab", "nanotec", "emis", "laser-axis"})
+        QTest::newRow(model) << QString::fromLatin1(model);
+}
+
+void TestCliRunDevices::sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld()
+{
+    QFETCH(QString, model);
+    RunDevice device(model);
+    if (model == QLatin1String("elab")) // its reference switch near, so G28 is short
+        device.probe([&device] {
+            static_cast<elab::ElabSimulator*>(device.sim())->setPosition(Axis::X, -19800);
+            return true;
+        });
+    const bool outputs = model == QLatin1String("emis");
+    const QString path = writeProgram(*m_dir, "common.ngc", commonProgram(outputs));
+    const CliRun r = runCli(cliArgs(model, device.path()) + QStringList{"run", path});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+
+    // In order, each move of X exactly once, each one only once X stood still.
+    const QList<DeviceMove> moves = device.moves();
+    QList<qint64> steps;
+    for (const DeviceMove& m : moves) {
+        QCOMPARE(m.axis, Axis::X);
+        QVERIFY2(!m.axisMoving,
+                 qPrintable(QStringLiteral("move %1 came while X moved").arg(steps.size() + 1)));
+        steps << m.steps;
+    }
+    QCOMPARE(steps, kExpectedSteps);
+    QVERIFY(device.still());
+    // The dwell: from the moment X came to rest after its first move to the next move. The
+    // stop lies after the last moment X was seen moving (CliRunRig.h) and after the move was
+    // accepted: the later of the two bounds it from below, so a late look never fails this.
+    qint64 stoppedBy = moves.at(0).atMs;
+    for (qint64 t : device.restTimes()) {
+        if (t >= moves.at(0).atMs && t < moves.at(1).atMs)
+            stoppedBy = t;
+    }
+    QVERIFY2(moves.at(1).atMs - stoppedBy >= qint64(kDwellSeconds * 1000),
+             qPrintable(QStringLiteral("dwell at the device: at most %1 ms")
+                            .arg(moves.at(1).atMs - stoppedBy)));
+    if (outputs) {
+        // M64 then M65 reached the board (it ends with the output off again).
+        const QList<QByteArray> frames = device.probe([&device] {
+            return static_cast<emis::EmisSimulator*>(device.sim())->receivedCommands();
+        });
+        const qsizetype on = frames.indexOf(QByteArrayLiteral("A1,1"));
+        const qsizetype off = frames.indexOf(QByteArrayLiteral("A1,0"));
+        QVERIFY2(on >= 0 && off > on, frames.join(' ').constData());
+    }
+}
+
+// SIGINT while the device runs a block's move: the CLI stops the machine and exits 130; the
+// device stands still and never receives the next block.
+void TestCliRunDevices::sigint_duringABlock_deviceStandsStillNextBlockNeverArrives()
+{
+    RunDevice device(QStringLiteral("elab"));
+    const QString path = writeProgram(*m_dir, "long.ngc", "G91\nG0 X30000\nG0 X100\n");
+    QProcess cli;
+    cli.start(cliPath(), cliArgs("elab", device.path()) + QStringList{"run", path});
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(device.moving(), 20000);
+    ::kill(pid_t(cli.processId()), SIGINT);
+    QVERIFY(cli.waitForFinished(20000));
+    QCOMPARE(cli.exitCode(), 130);
+    QTRY_VERIFY_WITH_TIMEOUT(device.still(), 5000);
+    const QList<DeviceMove> moves = device.moves();
+    QCOMPARE(moves.size(), 1);
+    QCOMPARE(moves.at(0).steps, qint64(30000));
+    QVERIFY(device.position() < 30000); // stopped on its way
+    QVERIFY(device.probe([&device] {
+        const QList<QByteArray> frames = device.sim()->receivedFrames();
+        return std::any_of(frames.cbegin(), frames.cend(),
+                           [&device](const QByteArray& f) { return device.sim()->isStopFrame(f); });
+    }));
+}
+
+// The board refuses the second move (NAK): the run fails at that line with exit 4, the third
+// never arrives. With the fault gone, --from-line of that line runs the rest.
+void TestCliRunDevices::refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenFromLineRunsOn()
+{
+    RunDevice device(QStringLiteral("elab"));
+    const QString path = writeProgram(*m_dir, "nak.ngc", "G91\nG0 X100\nG0 X200\nG0 X300\n");
+    device.afterMove(1, [](Simulator* sim) { sim->faults().forceNak = 1; });
+    CliRun r = runCli(cliArgs("elab", device.path()) + QStringList{"run", path});
+    QVERIFY2(r.exitCode == 4, r.err.constData());
+    QVERIFY2(r.err.contains("line 3"), r.err.constData());
+    QList<DeviceMove> moves = device.moves();
+    QCOMPARE(moves.size(), 1);
+    QCOMPARE(moves.at(0).steps, qint64(100));
+    QVERIFY(device.still());
+
+    r = runCli(cliArgs("elab", device.path()) + QStringList{"run", path, "--from-line", "3"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    moves = device.moves();
+    QCOMPARE(moves.size(), 3);
+    QCOMPARE(moves.at(1).steps, qint64(200));
+    QCOMPARE(moves.at(2).steps, qint64(300));
+    QCOMPARE(device.position(), qint64(600)); // no reference run: the board counts from 0
+}
+
+// The port vanishes while a block's move runs: exit 6 naming the line, not a hang.
+void TestCliRunDevices::linkLost_duringABlock_exit6NamesTheLine()
+{
+    RunDevice device(QStringLiteral("elab"));
+    const QString path = writeProgram(*m_dir, "lost.ngc", "G91\nG0 X30000\nG0 X100\n");
+    QProcess cli;
+    cli.start(cliPath(), cliArgs("elab", device.path()) + QStringList{"run", path});
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(device.moving(), 20000);
+    device.vanish();
+    QVERIFY(cli.waitForFinished(20000));
+    const QByteArray err = cli.readAllStandardError();
+    QVERIFY2(cli.exitCode() == 6, err.constData());
+    QVERIFY2(err.contains("line 2"), err.constData());
+    QCOMPARE(device.moves().size(), 1);
+}
+
+// M66 P5 L3: EMIS' free input 5 goes high 1 s after the start; the move after it comes only
+// then. M66 P6 with a Q the input never meets: exit 5, the move after it never arrives.
+void TestCliRunDevices::waitInput_goesHighAfterASecond_runOnThenTimeoutExit5()
+{
+    RunDevice device(QStringLiteral("emis"));
+    const QString path = writeProgram(*m_dir, "wait.ngc", "M66 P5 L3 Q10\nG91 G0 X100\n");
+    const qint64 started = device.now();
+    device.later(1000,
+                 [](Simulator* sim) { static_cast<emis::EmisSimulator*>(sim)->setInput(5, true); });
+    CliRun r = runCli(cliArgs("emis", device.path()) + QStringList{"run", path});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QList<DeviceMove> moves = device.moves();
+    QCOMPARE(moves.size(), 1);
+    QVERIFY2(moves.at(0).atMs - started >= 1000,
+             qPrintable(QStringLiteral("%1 ms").arg(moves.at(0).atMs - started)));
+
+    const QString timeout = writeProgram(*m_dir, "timeout.ngc", "M66 P6 L3 Q0.5\nG91 G0 X100\n");
+    r = runCli(cliArgs("emis", device.path()) + QStringList{"run", timeout});
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.err.contains("line 1"), r.err.constData());
+    QCOMPARE(device.moves().size(), 1);
+}
+
+QTEST_GUILESS_MAIN(TestCliRunDevices)
+#include "tst_cli_run_devices.moc"
