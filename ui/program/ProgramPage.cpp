@@ -128,11 +128,16 @@ void ProgramPage::onMachineChanged()
     // (A closed machine is gone before machineChanged: the pointer then reads null.)
     if (m_runner && (m_runnerMachine.isNull() || m_runnerMachine != machine)) {
         // The machine the runner ran on is closed (its controllers stopped with it).
+        const bool wasRunning = isRunning();
         delete m_runner;
         m_runner = nullptr;
         m_editor->setRunning(false);
+        m_files->setEnabled(true);
         m_banner->clearPrompt();
         m_preview->clearCurrent();
+        m_controls->clearProgress();
+        if (wasRunning) // else it ended already and says how
+            m_banner->setStatus(tr("Aborted: the machine was closed."));
     }
     if (machine && !m_runner) {
         m_runner = new program::ProgramRunner(machine, this);

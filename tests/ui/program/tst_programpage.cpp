@@ -47,6 +47,8 @@ private Q_SLOTS:
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
     void useController_singleController_becomesMachineOfOne();
+    void closeMachine_whileRunning_programAbortedAndAxisStill_data();
+    void closeMachine_whileRunning_programAbortedAndAxisStill();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -346,6 +348,36 @@ void TestProgramPage::useController_singleController_becomesMachineOfOne()
                      page()->checkText().startsWith(QStringLiteral("Checked")),
                  qPrintable(page()->checkText()));
     QVERIFY(!page()->useControllerButton()->isVisible());
+}
+
+void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill_data()
+{
+    QTest::addColumn<bool>("throughWindow");
+    QTest::addRow("window") << true;
+    QTest::addRow("context (another machine opened)") << false;
+}
+
+void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill()
+{
+    QFETCH(bool, throughWindow);
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    if (throughWindow)
+        window()->closeMachine();
+    else
+        window()->context()->closeMachine();
+    QVERIFY(!page()->runner());
+    QVERIFY(!page()->editor()->isReadOnly());
+    // Through the window the program is aborted first; a machine closed under it otherwise
+    // ends it failed, saying so.
+    QVERIFY2(throughWindow ? page()->messageText().startsWith(QStringLiteral("Aborted"))
+                           : page()->messageText().contains(QStringLiteral("closed")),
+             qPrintable(page()->messageText()));
+    QVERIFY(m_rig.elab->receivedStop());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
 }
 
 int main(int argc, char** argv)
