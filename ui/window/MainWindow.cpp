@@ -22,6 +22,7 @@
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "position/ReferenceRunner.h"
+#include "program/ProgramPage.h"
 #include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
 #include "safety/SafetyBar.h"
@@ -255,6 +256,9 @@ void MainWindow::buildDocks()
     QDockWidget* log =
         addDock(m_log, tr("Messages"), QStringLiteral("messagesDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(traffic, log);
+    m_programPage = new ProgramPage(m_context, this);
+    tabifyDockWidget(setup, addDock(m_programPage, tr("Program"), QStringLiteral("programDock"),
+                                    Qt::BottomDockWidgetArea));
     connect(log, &QDockWidget::visibilityChanged, m_messageLine, &MessageLine::setLogOnScreen);
     setup->raise();
     setDockNestingEnabled(true);
@@ -423,6 +427,8 @@ void MainWindow::stopAll()
     const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
     m_reference->runner()->cancel(tr("Referencing stopped."));
+    // A running program ends as aborted (not failed by the stop it did not ask for).
+    m_programPage->abortRun();
     if (m_context->hasMachine()) {
         m_machineControl->stop(); // every controller at once
         return;
@@ -438,6 +444,7 @@ void MainWindow::stopAll()
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
+    m_programPage->abortRun();
     if (m_context->hasMachine()) {
         m_machineControl->panic(); // every controller at once
         return;
@@ -491,6 +498,7 @@ bool MainWindow::openMachine(const QString& path)
 void MainWindow::closeMachine()
 {
     m_jogPanel->releaseAll();
+    m_programPage->abortRun();
     m_reference->runner()->cancel(tr("Referencing stopped."));
     m_context->closeMachine();
 }

@@ -27,6 +27,7 @@ class MachineFileActions;
 class MessageLine;
 class MessageLog;
 class PositionPanel;
+class ProgramPage;
 class RecordsPage;
 class ReferencePanel;
 class SafetyBar;
@@ -67,6 +68,7 @@ public:
     DrivePanel* drivePanel() const { return m_drivePanel; }
     RecordsPage* recordsPage() const { return m_records; }
     InputProgramsPage* inputProgramsPage() const { return m_programs; }
+    ProgramPage* programPage() const { return m_programPage; } // motion programs (issue 20)
     LaserBridgePage* laserBridgePage() const { return m_laserBridge; }
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
@@ -139,6 +141,7 @@ private:
     QDockWidget* m_drivesDock = nullptr;
     QDockWidget* m_recordsDock = nullptr;
     InputProgramsPage* m_programs = nullptr;
+    ProgramPage* m_programPage = nullptr;
     QDockWidget* m_programsDock = nullptr;
     GamepadJogSource* m_gamepadSource = nullptr;
     QList<QDockWidget*> m_docks;

@@ -1,0 +1,12 @@
+# The Program page's widgets (issue 20, ui/program/): the editor's marks, the files, the path
+# view and the times, without a machine.
+stepdeck_add_test(tst_programwidgets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programwidgets.cpp
+                  LABELS ui LIBS stepdeck_ui)
+# The page in the main window running programs on a machine of two simulated controllers on
+# pseudo-terminals (MachineWindowRig), on a 1366x768 screen.
+stepdeck_add_test(tst_programpage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpage.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
+                  LABELS ui LIBS stepdeck_ui)

@@ -1,0 +1,387 @@
+// The Program page in the main window (issue 20) on a machine of two simulated controllers on
+// pseudo-terminals (MachineWindowRig: an E-LAB X/Y/Z table, 400 steps/mm on X and Y, and a
+// Nanotec rotary axis A): the check's errors are marked at their lines; Run sends the moves
+// (asserted at the simulated device); Pause holds after the block that runs, Resume goes on;
+// Abort, STOP and PANIC end the program as aborted with the axis standing; M0's prompt shows
+// in the banner and its Resume goes on; Run from line confirms where it starts; the page fits
+// a 1366x768 laptop.
+#include "../LaptopScreen.h"
+#include "../LayoutChecks.h"
+#include "../machine/MachineWindowRig.h"
+#include "program/ProgramControls.h"
+#include "program/ProgramEditor.h"
+#include "program/ProgramPage.h"
+#include "program/ProgramPathView.h"
+#include "program/ProgramPreviewView.h"
+#include "program/ProgramPromptBanner.h"
+#include "safety/SafetyBar.h"
+#include <QDockWidget>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTextBlock>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+using program::RunState;
+
+class TestProgramPage : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init() { QVERIFY(m_rig.start()); }
+    void cleanup() { m_rig.stop(); }
+    void check_errorInProgram_markedAtItsLine();
+    void check_validProgram_previewWithEstimatedDuration();
+    void run_validProgram_deviceReceivedTheMoves();
+    void pause_duringBlock_holdsAfterItThenResumeFinishes();
+    void abort_duringMove_abortedAndAxisStandsStill();
+    void stop_duringMove_programEndsAborted_data();
+    void stop_duringMove_programEndsAborted();
+    void m0_prompt_bannerWithResumeGoesOn();
+    void fault_linkLostDuringMove_failedNamingTheLine();
+    void position_whileRunning_drawnInThePath();
+    void runFromLine_confirmationNamesThePosition();
+    void page_fitsTheLaptopScreen();
+    void useController_singleController_becomesMachineOfOne();
+    void closeMachine_whileRunning_programAbortedAndAxisStill_data();
+    void closeMachine_whileRunning_programAbortedAndAxisStill();
+
+private:
+    ui::MainWindow* window() const { return m_rig.window(); }
+    ui::ProgramPage* page() const { return window()->programPage(); }
+    program::ProgramRunner* runner() const { return page()->runner(); }
+    void setProgram(const QString& text)
+    {
+        window()->raisePage(page());
+        page()->editor()->setPlainText(text);
+        page()->checkNow();
+        QTRY_VERIFY(!page()->isChecking()); // off the GUI thread
+    }
+    bool runState(RunState state) const { return runner() && runner()->state() == state; }
+
+    MachineWindowRig m_rig;
+};
+
+void TestProgramPage::check_errorInProgram_markedAtItsLine()
+{
+    QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
+    setProgram(QStringLiteral("G91\nG0 X1\nG0 Q1 X2\nG0 Y1\n"));
+    QCOMPARE(page()->editor()->errorLines(), QList<int>{3});
+    QVERIFY2(page()->editor()->errorAt(3).startsWith(QStringLiteral("3:")),
+             qPrintable(page()->editor()->errorAt(3)));
+    QVERIFY2(page()->checkText().contains(QStringLiteral("line 3")),
+             qPrintable(page()->checkText()));
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+    // Fixed by typing: the debounced check clears the mark by itself.
+    QTextCursor c(page()->editor()->document()->findBlockByNumber(2));
+    c.select(QTextCursor::LineUnderCursor);
+    c.insertText(QStringLiteral("G0 X2"));
+    QTRY_VERIFY(page()->editor()->errorLines().isEmpty());
+}
+
+void TestProgramPage::check_validProgram_previewWithEstimatedDuration()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable()); // X, Y, Z known: the preview follows them
+    setProgram(QStringLiteral("G90\nG0 X1 Y2\nG0 Z0.5\nG91 G0 A90\nM2\n"));
+    QVERIFY2(page()->editor()->errorLines().isEmpty(), qPrintable(page()->checkText()));
+    const QString figures = page()->preview()->figuresText();
+    QVERIFY2(figures.contains(QStringLiteral("5 line")), qPrintable(figures));
+    QVERIFY2(figures.contains(QStringLiteral("(estimated)")), qPrintable(figures));
+    QVERIFY(page()->preview()->pathView()->points().contains(QPointF(1, 2)));
+    // Z (not X/Y) is charted over time; A's position is not known, so it is not drawn.
+    const QString charted = page()->preview()->chartedAxes().join(QLatin1Char(','));
+    QVERIFY2(charted.contains(QStringLiteral("Z (mm)")) && !charted.contains(QStringLiteral("A")),
+             qPrintable(charted));
+    // Each moved axis' extent against its soft limits.
+    QTableWidget* extents = page()->preview()->extentsTable();
+    QStringList rows;
+    for (int r = 0; r < extents->rowCount(); ++r)
+        rows << extents->item(r, 0)->text() + QLatin1Char(' ') + extents->item(r, 2)->text();
+    QVERIFY2(rows.contains(QStringLiteral("Z 0.500 mm")), qPrintable(rows.join(QLatin1Char(';'))));
+}
+
+void TestProgramPage::run_validProgram_deviceReceivedTheMoves()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X0.5\nG0 Y0.25\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    // At the device: 0.5 mm and 0.25 mm at 400 steps/mm.
+    QCOMPARE(m_rig.elab->position(Axis::X), 200);
+    QCOMPARE(m_rig.elab->position(Axis::Y), 100);
+    QVERIFY(m_rig.elab->still());
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Finished")),
+             qPrintable(page()->messageText()));
+    QVERIFY(!page()->editor()->isReadOnly());
+}
+
+void TestProgramPage::pause_duringBlock_holdsAfterItThenResumeFinishes()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X2\nG0 X2\nG0 X2\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    QVERIFY(page()->editor()->isReadOnly());
+    // The block running when Pause is pressed (line 2 unless the machine was quicker).
+    const int line = page()->editor()->runningLine();
+    QVERIFY(line >= 2 && line <= 4);
+    page()->controls()->pauseButton()->click();
+    // Said while the block runs out.
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Pausing: line %1").arg(line)),
+             qPrintable(page()->messageText()));
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused), 20000);
+    // That block was finished at the device (2 mm at 400 steps/mm each), and nothing more
+    // was started.
+    QVERIFY(m_rig.elab->still());
+    QCOMPARE(m_rig.elab->position(Axis::X), 800 * (line - 1));
+    QCOMPARE(runner()->currentLine(), line);
+    QVERIFY(!page()->promptBanner()->isShowingPrompt()); // not an M0
+    QVERIFY2(page()->controls()->progressText().contains(QStringLiteral("of 5")),
+             qPrintable(page()->controls()->progressText()));
+    page()->controls()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 2400);
+}
+
+void TestProgramPage::abort_duringMove_abortedAndAxisStandsStill()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X100\nG0 X100\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    page()->controls()->abortButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
+    QVERIFY(m_rig.elab->receivedStop());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    QVERIFY(m_rig.elab->position(Axis::X) < 40000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
+             qPrintable(page()->messageText()));
+    QVERIFY(!page()->editor()->isReadOnly());
+}
+
+void TestProgramPage::stop_duringMove_programEndsAborted_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::addRow("STOP button") << QStringLiteral("stop");
+    QTest::addRow("Esc in the editor") << QStringLiteral("esc");
+    QTest::addRow("PANIC button") << QStringLiteral("panic");
+}
+
+void TestProgramPage::stop_duringMove_programEndsAborted()
+{
+    QFETCH(QString, how);
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    if (how == QLatin1String("stop")) {
+        window()->safetyBar()->stopButton()->click();
+    } else if (how == QLatin1String("panic")) {
+        window()->safetyBar()->panicButton()->click();
+    } else {
+        page()->editor()->setFocus();
+        QTRY_VERIFY(page()->editor()->hasFocus());
+        QTest::keyClick(page()->editor(), Qt::Key_Escape);
+    }
+    QTRY_VERIFY2_WITH_TIMEOUT(runState(RunState::Aborted), qPrintable(page()->messageText()),
+                              20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    QVERIFY(m_rig.elab->position(Axis::X) < 40000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
+             qPrintable(page()->messageText()));
+}
+
+void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("M0 (Load the part; a long prompt that does not fit on one line of "
+                              "the banner however wide the window is, since it goes on and on "
+                              "and on and on and on and on and on and on and on and on)\n"
+                              "G91\nG0 X0.25\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    const int bannerHeight = page()->promptBanner()->height();
+    // Nothing the operator may reach for moves when the prompt appears.
+    auto place = [this](QWidget* w) { return QRect(w->mapTo(window(), QPoint()), w->size()); };
+    const QRect abort = place(page()->controls()->abortButton());
+    const QRect editor = place(page()->editor());
+    page()->controls()->runButton()->click();
+    // M0 on the first line: the program's first block runs too (it was skipped once).
+    QTRY_VERIFY2_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(),
+                              qPrintable(page()->messageText()), 10000);
+    QVERIFY2(page()->promptBanner()->text().contains(QStringLiteral("Load the part")),
+             qPrintable(page()->promptBanner()->text()));
+    QCOMPARE(page()->promptBanner()->height(), bannerHeight); // room reserved
+    QCOMPARE(place(page()->controls()->abortButton()), abort);
+    QCOMPARE(place(page()->editor()), editor);
+    QVERIFY(page()->editor()->isReadOnly());
+    QCOMPARE(m_rig.elab->position(Axis::X), 0);
+    page()->promptBanner()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 100);
+    QVERIFY(!page()->promptBanner()->isShowingPrompt());
+}
+
+void TestProgramPage::fault_linkLostDuringMove_failedNamingTheLine()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 A3600\nG0 X1\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.nanotec->moving(Axis::X), 10000);
+    m_rig.nanotec->vanish(); // the rotary's USB adapter pulled
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Failed), 20000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Failed: line 2")),
+             qPrintable(page()->messageText()));
+    QVERIFY(!page()->editor()->isReadOnly());
+    QCOMPARE(page()->editor()->runningLine(), 0);
+    QVERIFY(m_rig.elab->still()); // line 3 never started
+    QCOMPARE(m_rig.elab->position(Axis::X), 0);
+}
+
+void TestProgramPage::position_whileRunning_drawnInThePath()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable());
+    setProgram(QStringLiteral("G90\nG0 X0.5 Y0.25\nM0 (Look)\nM2\n"));
+    QTRY_VERIFY2(page()->controls()->runButton()->isEnabled(), qPrintable(page()->checkText()));
+    // The path as checked: from where the axes stand to the block's end.
+    QVERIFY(page()->preview()->pathView()->points().contains(QPointF(0.5, 0.25)));
+    QVERIFY(!page()->preview()->pathView()->current());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(), 20000);
+    // Where the machine stands (read back), drawn while the program holds at M0.
+    const machine::MachineAxis* x = m_rig.machine()->description().axis(QStringLiteral("X"));
+    QTRY_COMPARE(m_rig.machine()->axisStatus(*x).position, 0.5);
+    QTRY_COMPARE(page()->preview()->pathView()->current().value_or(QPointF(-1, -1)),
+                 QPointF(0.5, 0.25));
+    QVERIFY2(page()->controls()->progressText() == QStringLiteral("line 3 of 4"),
+             qPrintable(page()->controls()->progressText()));
+    QVERIFY2(page()->controls()->timeLeftText().contains(QStringLiteral("left (estimated)")),
+             qPrintable(page()->controls()->timeLeftText()));
+    page()->promptBanner()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QVERIFY(!page()->preview()->pathView()->current()); // not running: no marker
+}
+
+void TestProgramPage::runFromLine_confirmationNamesThePosition()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X0.5\nG0 Y0.25\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runFromButton()->isEnabled());
+    const QString text = page()->runFromText(3);
+    QVERIFY2(text.contains(QStringLiteral("line 3")) && text.contains(QStringLiteral("G0 Y0.25")),
+             qPrintable(text));
+    // Where the axes stand: X and Y are read back (not referenced yet: estimated, but known).
+    QVERIFY2(text.contains(QStringLiteral("X ")) && text.contains(QStringLiteral("A ")),
+             qPrintable(text));
+    page()->controls()->fromLineBox()->setValue(3);
+    page()->controls()->runFromButton()->click();
+    QMessageBox* box = nullptr;
+    QTRY_VERIFY((box = window()->findChild<QMessageBox*>()) && box->isVisible());
+    QCOMPARE(box->text(), text);
+    QVERIFY(!box->isModal());
+    box->button(QMessageBox::Yes)->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 0); // line 2 did not run
+    QCOMPARE(m_rig.elab->position(Axis::Y), 100);
+}
+
+void TestProgramPage::page_fitsTheLaptopScreen()
+{
+    QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
+    const QSize available = QGuiApplication::primaryScreen()->availableGeometry().size();
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(minimum.width() <= available.width() && minimum.height() <= available.height(),
+             qPrintable(QStringLiteral("%1x%2").arg(minimum.width()).arg(minimum.height())));
+    setProgram(QStringLiteral("G91\nG0 X1 Y2\nG0 A90\nM0 (Load the part)\nM2\n"));
+    QCoreApplication::processEvents();
+    QWidget* dock = window()->dockOf(page());
+    QVERIFY(dock && dock->isVisible());
+    // The page's width fits the dock: nothing scrolls sideways, every text can be read.
+    QVERIFY2(
+        page()->minimumSizeHint().width() <= dock->width(),
+        qPrintable(
+            QStringLiteral("%1 > %2").arg(page()->minimumSizeHint().width()).arg(dock->width())));
+    // Nor up and down: the default bottom dock holds the whole page (nothing hides below).
+    auto* scroll = qobject_cast<QAbstractScrollArea*>(page()->parentWidget()->parentWidget());
+    QVERIFY(scroll);
+    QVERIFY2(page()->minimumSizeHint().height() <= scroll->viewport()->height(),
+             qPrintable(QStringLiteral("%1 > %2")
+                            .arg(page()->minimumSizeHint().height())
+                            .arg(scroll->viewport()->height())));
+    for (QWidget* w : page()->findChildren<QWidget*>()) {
+        if (qobject_cast<QAbstractButton*>(w) || qobject_cast<QLabel*>(w)) {
+            const QString problem = textProblem(w);
+            QVERIFY2(problem.isEmpty(),
+                     qPrintable(w->objectName() + QStringLiteral(": ") + problem));
+        }
+    }
+}
+
+void TestProgramPage::useController_singleController_becomesMachineOfOne()
+{
+    QVERIFY(!page()->useControllerButton()->isEnabled()); // nothing connected
+    window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
+    window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
+    window()->connectionBar()->connectNow();
+    QVERIFY(m_rig.f->waitConnected());
+    setProgram(QStringLiteral("G91\nG0 X10\nM2\n"));
+    QVERIFY2(page()->checkText().startsWith(QStringLiteral("Not checked")),
+             qPrintable(page()->checkText()));
+    QTRY_VERIFY(page()->useControllerButton()->isEnabled());
+    page()->useControllerButton()->click();
+    QVERIFY(window()->context()->hasMachine());
+    QVERIFY(page()->runner());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
+                             10000);
+    // The controller's own axes in steps: the program is checked against them.
+    QTRY_VERIFY2(page()->editor()->errorLines().isEmpty() &&
+                     page()->checkText().startsWith(QStringLiteral("Checked")),
+                 qPrintable(page()->checkText()));
+    QVERIFY(!page()->useControllerButton()->isVisible());
+}
+
+void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill_data()
+{
+    QTest::addColumn<bool>("throughWindow");
+    QTest::addRow("window") << true;
+    QTest::addRow("context (another machine opened)") << false;
+}
+
+void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill()
+{
+    QFETCH(bool, throughWindow);
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    if (throughWindow)
+        window()->closeMachine();
+    else
+        window()->context()->closeMachine();
+    QVERIFY(!page()->runner());
+    QVERIFY(!page()->editor()->isReadOnly());
+    // Through the window the program is aborted first; a machine closed under it otherwise
+    // ends it failed, saying so.
+    QVERIFY2(throughWindow ? page()->messageText().startsWith(QStringLiteral("Aborted"))
+                           : page()->messageText().contains(QStringLiteral("closed")),
+             qPrintable(page()->messageText()));
+    QVERIFY(m_rig.elab->receivedStop());
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+}
+
+int main(int argc, char** argv)
+{
+    return runOnLaptopScreen<TestProgramPage>(argc, argv);
+}
+#include "tst_programpage.moc"

@@ -1,0 +1,279 @@
+// The Program page's widgets on their own (issue 20): the editor marks errors at their lines
+// with their messages and the running line, and is read-only while running; the files open,
+// save and remember programs and refuse what they cannot read; the path view draws to scale
+// with Y up; the estimated times are marked as estimates.
+#include "TestSupport.h"
+#include "program/ProgramBackgroundCheck.h"
+#include "program/ProgramControls.h"
+#include "program/ProgramEditor.h"
+#include "program/ProgramFiles.h"
+#include "program/ProgramPathView.h"
+#include "program/ProgramProgress.h"
+#include "program/ProgramPromptBanner.h"
+#include "program/ProgramTimes.h"
+#include "protocols/Registry.h"
+#include <QApplication>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTextBlock>
+#include <QThreadPool>
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::ui;
+
+class TestProgramWidgets : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void editor_errors_markedAtTheirLinesWithMessages();
+    void editor_errorsCleared_noMarks();
+    void editor_running_readOnlyAndLineHighlighted();
+    void files_saveThenLoad_sameTextAndRecent();
+    void files_missingFile_refusedEditorKept();
+    void pathView_square_drawnSquareWithYUp();
+    void times_data();
+    void times();
+    void controls_states_onlyUsefulButtonsEnabled_data();
+    void controls_states_onlyUsefulButtonsEnabled();
+    void banner_prompt_keepsItsHeight();
+    void backgroundCheck_twoRequests_onlyTheNewestReports();
+    void progress_blocksOfARepeat_timeLeftFollowsThePath();
+};
+
+void TestProgramWidgets::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("StepDeckTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("StepDeckUiTest-tst_programwidgets"));
+    QSettings().clear();
+}
+
+void TestProgramWidgets::editor_errors_markedAtTheirLinesWithMessages()
+{
+    ProgramEditor editor;
+    editor.setPlainText(QStringLiteral("G0 X1\nT2\nG0 Y1\nG7\n"));
+    editor.setErrors({{2, 1, QStringLiteral("T2 is not a word")}, {4, 1, QStringLiteral("G7?")}});
+    QCOMPARE(editor.errorLines(), (QList<int>{2, 4}));
+    QCOMPARE(editor.toolTipForLine(2), QStringLiteral("2:1: T2 is not a word"));
+    QVERIFY(editor.toolTipForLine(1).isEmpty());
+    // The marks are on the text's lines too: one tinted line per error.
+    const QList<QTextEdit::ExtraSelection> marks = editor.extraSelections();
+    QCOMPARE(marks.size(), 2);
+    QCOMPARE(marks.at(0).cursor.blockNumber(), 1);
+    QCOMPARE(marks.at(1).cursor.blockNumber(), 3);
+    // The line under the pointer is found where it is drawn.
+    editor.resize(400, 300);
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    const QTextBlock second = editor.document()->findBlockByNumber(1);
+    const QRect r = editor.cursorRect(QTextCursor(second));
+    QCOMPARE(editor.lineAt(r.center()), 2);
+}
+
+void TestProgramWidgets::editor_errorsCleared_noMarks()
+{
+    ProgramEditor editor;
+    editor.setPlainText(QStringLiteral("T2\n"));
+    editor.setErrors({{1, 1, QStringLiteral("T2 is not a word")}});
+    editor.setErrors({});
+    QVERIFY(editor.errorLines().isEmpty());
+    QVERIFY(editor.extraSelections().isEmpty());
+}
+
+void TestProgramWidgets::editor_running_readOnlyAndLineHighlighted()
+{
+    ProgramEditor editor;
+    editor.setPlainText(QStringLiteral("G91\nG0 X1\nG0 X1\n"));
+    editor.setRunning(true);
+    QVERIFY(editor.isReadOnly());
+    editor.setRunningLine(3);
+    QCOMPARE(editor.runningLine(), 3);
+    QCOMPARE(editor.extraSelections().size(), 1);
+    QCOMPARE(editor.extraSelections().first().cursor.blockNumber(), 2);
+    // Typing does nothing while running.
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    QTest::keyClicks(editor.viewport(), QStringLiteral("M2"));
+    QCOMPARE(editor.toPlainText(), QStringLiteral("G91\nG0 X1\nG0 X1\n"));
+    editor.setRunning(false);
+    QVERIFY(!editor.isReadOnly());
+    QCOMPARE(editor.runningLine(), 0);
+    QVERIFY(editor.extraSelections().isEmpty());
+}
+
+void TestProgramWidgets::files_saveThenLoad_sameTextAndRecent()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("part.ngc"));
+    QPlainTextEdit editor;
+    ProgramFiles files(&editor);
+    editor.insertPlainText(QStringLiteral("G21 G90\n(\u00e4 comment)\nM30\n")); // typed
+    QVERIFY(files.isModified());
+    QCOMPARE(files.fileText(), QStringLiteral("Untitled *"));
+    QVERIFY(files.saveTo(path));
+    QVERIFY(!files.isModified());
+    QCOMPARE(files.fileText(), QStringLiteral("part.ngc"));
+    editor.setPlainText(QStringLiteral("other"));
+    QSignalSpy loaded(&files, &ProgramFiles::loaded);
+    QVERIFY(files.load(path));
+    QCOMPARE(loaded.size(), 1);
+    QCOMPARE(editor.toPlainText(), QStringLiteral("G21 G90\n(\u00e4 comment)\nM30\n"));
+    QCOMPARE(recentprograms::list().value(0), QFileInfo(path).absoluteFilePath());
+}
+
+void TestProgramWidgets::files_missingFile_refusedEditorKept()
+{
+    QPlainTextEdit editor;
+    ProgramFiles files(&editor);
+    editor.setPlainText(QStringLiteral("G0 X1"));
+    QSignalSpy message(&files, &ProgramFiles::message);
+    QVERIFY(!files.load(QStringLiteral("/nonexistent/part.ngc")));
+    QCOMPARE(message.size(), 1);
+    QVERIFY(message.first().first().toString().contains(QStringLiteral("part.ngc")));
+    QCOMPARE(editor.toPlainText(), QStringLiteral("G0 X1"));
+}
+
+void TestProgramWidgets::pathView_square_drawnSquareWithYUp()
+{
+    ProgramPathView view;
+    view.resize(400, 200);
+    view.setPath({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, std::nullopt, QStringLiteral("mm"));
+    const QPointF origin = view.toWidget({0, 0});
+    const QPointF right = view.toWidget({10, 0});
+    const QPointF up = view.toWidget({0, 10});
+    QVERIFY(right.x() > origin.x());
+    QVERIFY(up.y() < origin.y());                                          // Y up
+    QCOMPARE(qRound(right.x() - origin.x()), qRound(origin.y() - up.y())); // to scale
+    view.setCurrent(QPointF(5, 5));
+    QCOMPARE(*view.current(), QPointF(5, 5));
+}
+
+void TestProgramWidgets::times_data()
+{
+    QTest::addColumn<double>("seconds");
+    QTest::addColumn<QString>("duration");
+    QTest::addRow("seconds") << 12.4 << QStringLiteral("\u2248 12 s (estimated)");
+    QTest::addRow("minutes") << 80.0 << QStringLiteral("\u2248 1 min 20 s (estimated)");
+    QTest::addRow("hours") << 7500.0 << QStringLiteral("\u2248 2 h 5 min (estimated)");
+    QTest::addRow("negative") << -3.0 << QStringLiteral("\u2248 0 s (estimated)");
+}
+
+void TestProgramWidgets::times()
+{
+    QFETCH(double, seconds);
+    QFETCH(QString, duration);
+    QCOMPARE(ProgramTimes::estimatedDuration(seconds), duration);
+}
+
+void TestProgramWidgets::controls_states_onlyUsefulButtonsEnabled_data()
+{
+    using program::RunState;
+    QTest::addColumn<int>("state");
+    QTest::addColumn<bool>("pausePending");
+    QTest::addColumn<QString>("enabled"); // run pause resume step abort runFrom
+    QTest::addRow("idle") << int(RunState::Idle) << false << QStringLiteral("R..S.F");
+    QTest::addRow("running") << int(RunState::Running) << false << QStringLiteral(".P..A.");
+    QTest::addRow("pause pending") << int(RunState::Running) << true << QStringLiteral("....A.");
+    QTest::addRow("paused") << int(RunState::Paused) << false << QStringLiteral("..USA.");
+    QTest::addRow("stopping") << int(RunState::Stopping) << false << QStringLiteral("......");
+    QTest::addRow("aborted") << int(RunState::Aborted) << false << QStringLiteral("R..S.F");
+}
+
+void TestProgramWidgets::controls_states_onlyUsefulButtonsEnabled()
+{
+    QFETCH(int, state);
+    QFETCH(bool, pausePending);
+    QFETCH(QString, enabled);
+    ProgramControls controls;
+    controls.setState(program::RunState(state), pausePending, true);
+    QString shown;
+    const QList<QPair<QPushButton*, QChar>> buttons{
+        {controls.runButton(), QLatin1Char('R')},    {controls.pauseButton(), QLatin1Char('P')},
+        {controls.resumeButton(), QLatin1Char('U')}, {controls.stepButton(), QLatin1Char('S')},
+        {controls.abortButton(), QLatin1Char('A')},  {controls.runFromButton(), QLatin1Char('F')}};
+    for (const auto& [button, letter] : buttons)
+        shown += button->isEnabled() ? letter : QLatin1Char('.');
+    QCOMPARE(shown, enabled);
+}
+
+void TestProgramWidgets::banner_prompt_keepsItsHeight()
+{
+    ProgramPromptBanner banner;
+    banner.resize(500, banner.sizeHint().height());
+    banner.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&banner));
+    const int before = banner.sizeHint().height();
+    banner.showPrompt(7, QStringLiteral("Remove the parts, then Resume. ") +
+                             QString(200, QLatin1Char('x')));
+    QCOMPARE(banner.sizeHint().height(), before);
+    QVERIFY(banner.text().contains(QStringLiteral("Remove the parts")));
+    QVERIFY(banner.resumeButton()->isVisible());
+    QSignalSpy resume(&banner, &ProgramPromptBanner::resumeRequested);
+    banner.resumeButton()->click();
+    QCOMPARE(resume.size(), 1);
+    banner.clearPrompt();
+    QVERIFY(!banner.resumeButton()->isVisible());
+    QCOMPARE(banner.sizeHint().height(), before);
+}
+
+void TestProgramWidgets::backgroundCheck_twoRequests_onlyTheNewestReports()
+{
+    const ModelInfo* elab = findModel(QStringLiteral("elab"));
+    program::MachineFacts facts;
+    facts.description = machine::MachineDescription::singleController(*elab, QStringLiteral("sim"));
+    facts.capabilities.insert(elab->id, elab->capabilities);
+    facts.schemas.insert(elab->id, elab->schema);
+    const QStringList axes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+    ProgramBackgroundCheck checker;
+    QSignalSpy checked(&checker, &ProgramBackgroundCheck::checked);
+    QByteArray big;
+    for (int i = 0; i < 20000; ++i)
+        big += "G91 G0 X1\nT2\n"; // errors (at most kMaxErrors of them)
+    checker.start(big, axes, facts);
+    checker.start("G91\nG0 X1\nM2\n", axes, facts);
+    QVERIFY(checker.isChecking());
+    QTRY_VERIFY(!checker.isChecking());
+    // The older request ends too, and reports nothing.
+    QThreadPool::globalInstance()->waitForDone();
+    QCoreApplication::processEvents();
+    QCOMPARE(checked.size(), 1);
+    const auto result = checked.first().first().value<program::ProgramCheckResult>();
+    QVERIFY(result.ok());
+    QCOMPARE(result.preview.lines, 3);
+    // The same answer as checking on the spot.
+    QCOMPARE(ProgramBackgroundCheck::run("G0 Q1\n", axes, facts).errors.size(), 1);
+}
+
+void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
+{
+    // O1 repeat [2] around line 2 (G0, 1 s), line 3 (M64: no point), line 4 (G4 P2).
+    program::ProgramPreview preview;
+    preview.estimatedSeconds = 6;
+    for (const auto& [line, seconds] :
+         QList<QPair<int, double>>{{0, 0}, {2, 1}, {4, 3}, {2, 4}, {4, 6}})
+        preview.path << program::PreviewPoint{line, seconds, {}};
+    ProgramProgress progress;
+    progress.reset(preview);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
+    progress.blockFinished(2);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 5.0);
+    progress.blockFinished(3); // no point of its own: the time stays
+    QCOMPARE(progress.secondsLeft().value_or(-1), 5.0);
+    progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 3.0);
+    progress.blockFinished(2); // the second time round
+    QCOMPARE(progress.secondsLeft().value_or(-1), 2.0);
+    progress.blockFinished(3);
+    progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
+    preview.pathTruncated = true; // beyond the path the estimate cannot follow the run
+    progress.reset(preview);
+    QVERIFY(!progress.secondsLeft());
+}
+
+QTEST_MAIN(TestProgramWidgets)
+#include "tst_programwidgets.moc"

@@ -1,0 +1,114 @@
+#include "ProgramControls.h"
+#include "ProgramTimes.h"
+#include "common/ElidedLabel.h"
+#include <QHBoxLayout>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+
+namespace stepdeck::ui {
+
+using program::RunState;
+
+ProgramControls::ProgramControls(QWidget* parent)
+    : QWidget(parent), m_run(new QPushButton(tr("Run"), this)),
+      m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Resume"), this)),
+      m_step(new QPushButton(tr("Step"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
+      m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
+      m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this))
+{
+    setObjectName(QStringLiteral("programControls"));
+    m_run->setObjectName(QStringLiteral("programRun"));
+    m_pause->setObjectName(QStringLiteral("programPause"));
+    m_resume->setObjectName(QStringLiteral("programResume"));
+    m_step->setObjectName(QStringLiteral("programStep"));
+    m_abort->setObjectName(QStringLiteral("programAbort"));
+    m_runFrom->setObjectName(QStringLiteral("programRunFrom"));
+    m_fromLine->setObjectName(QStringLiteral("programFromLine"));
+    m_progress->setObjectName(QStringLiteral("programProgress"));
+    m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
+    // No mnemonics on what starts motion: a stray Alt+key must not start a program.
+    m_run->setToolTip(tr("Check the program against the machine and run it from the start"));
+    m_pause->setToolTip(tr("Finish the current block, then hold"));
+    m_resume->setToolTip(tr("Go on with the next block"));
+    m_step->setToolTip(tr("Run one block, then hold"));
+    m_abort->setToolTip(tr("Stop every controller; the program ends as aborted"));
+    m_runFrom->setToolTip(tr("Run from the first block on or after this line, starting where "
+                             "the axes stand now"));
+    m_fromLine->setRange(1, 1);
+    m_fromLine->setPrefix(tr("line "));
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setTextVisible(true);
+    m_progress->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 18);
+    m_timeLeft->setMinimumTextWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 30);
+
+    // One row of buttons and progress: the page's editor and preview get the height.
+    auto* row = new QHBoxLayout(this);
+    row->setContentsMargins(0, 0, 0, 0);
+    for (QPushButton* b : {m_run, m_pause, m_resume, m_step, m_abort})
+        row->addWidget(b);
+    row->addSpacing(8);
+    row->addWidget(m_fromLine);
+    row->addWidget(m_runFrom);
+    row->addSpacing(8);
+    row->addWidget(m_progress, 1);
+    row->addWidget(m_timeLeft);
+
+    connect(m_run, &QPushButton::clicked, this, &ProgramControls::runRequested);
+    connect(m_pause, &QPushButton::clicked, this, &ProgramControls::pauseRequested);
+    connect(m_resume, &QPushButton::clicked, this, &ProgramControls::resumeRequested);
+    connect(m_step, &QPushButton::clicked, this, &ProgramControls::stepRequested);
+    connect(m_abort, &QPushButton::clicked, this, &ProgramControls::abortRequested);
+    connect(m_runFrom, &QPushButton::clicked, this,
+            [this] { Q_EMIT runFromLineRequested(m_fromLine->value()); });
+    clearProgress();
+    setState(RunState::Idle, false, false);
+}
+
+void ProgramControls::setState(RunState state, bool pausePending, bool canStart)
+{
+    const bool ended = state == RunState::Idle || program::isEnded(state);
+    m_run->setEnabled(ended && canStart);
+    m_runFrom->setEnabled(ended && canStart);
+    m_fromLine->setEnabled(ended);
+    m_pause->setEnabled(state == RunState::Running && !pausePending);
+    m_resume->setEnabled(state == RunState::Paused);
+    // Step from a pause, or the first block of a program that does not run yet.
+    m_step->setEnabled(state == RunState::Paused || (ended && canStart));
+    m_abort->setEnabled(state == RunState::Running || state == RunState::Paused);
+}
+
+void ProgramControls::setProgress(int line, int lines, std::optional<double> secondsLeft)
+{
+    m_progress->setRange(0, qMax(1, lines));
+    m_progress->setValue(qBound(0, line, qMax(1, lines)));
+    m_progress->setFormat(tr("line %1 of %2").arg(line).arg(lines));
+    m_timeLeft->setText(secondsLeft ? ProgramTimes::estimatedLeft(*secondsLeft)
+                                    : tr("time left unknown"));
+}
+
+void ProgramControls::clearProgress()
+{
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setFormat(tr("not running"));
+    m_timeLeft->setText(QString());
+}
+
+void ProgramControls::setLineCount(int lines)
+{
+    m_fromLine->setRange(1, qMax(1, lines));
+}
+
+QString ProgramControls::progressText() const
+{
+    return m_progress->text();
+}
+
+QString ProgramControls::timeLeftText() const
+{
+    return m_timeLeft->text();
+}
+
+} // namespace stepdeck::ui

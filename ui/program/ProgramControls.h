@@ -1,0 +1,62 @@
+#pragma once
+#include "program/ProgramRunner.h"
+#include <QWidget>
+#include <optional>
+
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace stepdeck::ui {
+
+class ElidedLabel;
+
+// Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), and the
+// progress ("line n of m") with the estimated time left, in one row. Only buttons that do
+// something in the state shown are enabled; the buttons never move (one-line texts). The
+// controls only ask (signals): the page owns the runner.
+class ProgramControls : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit ProgramControls(QWidget* parent = nullptr);
+
+    // The runner's state; canStart: a checked program and a connected machine are there.
+    void setState(program::RunState state, bool pausePending, bool canStart);
+    // The line running of lines in the file; secondsLeft: the estimate (nullopt: unknown).
+    void setProgress(int line, int lines, std::optional<double> secondsLeft);
+    void clearProgress();
+    void setLineCount(int lines); // the range of "Run from line"
+
+    QPushButton* runButton() const { return m_run; }
+    QPushButton* pauseButton() const { return m_pause; }
+    QPushButton* resumeButton() const { return m_resume; }
+    QPushButton* stepButton() const { return m_step; }
+    QPushButton* abortButton() const { return m_abort; }
+    QPushButton* runFromButton() const { return m_runFrom; }
+    QSpinBox* fromLineBox() const { return m_fromLine; }
+    QProgressBar* progressBar() const { return m_progress; }
+    QString progressText() const;
+    QString timeLeftText() const;
+
+Q_SIGNALS:
+    void runRequested();
+    void runFromLineRequested(int line);
+    void pauseRequested();
+    void resumeRequested();
+    void stepRequested();
+    void abortRequested();
+
+private:
+    QPushButton* m_run;
+    QPushButton* m_pause;
+    QPushButton* m_resume;
+    QPushButton* m_step;
+    QPushButton* m_abort;
+    QSpinBox* m_fromLine;
+    QPushButton* m_runFrom;
+    QProgressBar* m_progress;
+    ElidedLabel* m_timeLeft;
+};
+
+} // namespace stepdeck::ui

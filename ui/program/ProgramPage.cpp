@@ -1,0 +1,283 @@
+// ProgramPage, part 1: the layout, the machine the page works on, and the check while editing.
+// The run itself is in ProgramPageRun.cpp.
+#include "ProgramPage.h"
+#include "ProgramBackgroundCheck.h"
+#include "ProgramControls.h"
+#include "ProgramEditor.h"
+#include "ProgramFiles.h"
+#include "ProgramMachinePositions.h"
+#include "ProgramPreviewView.h"
+#include "ProgramPromptBanner.h"
+#include "common/ElidedLabel.h"
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
+#include "program/ProgramParser.h"
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+namespace {
+constexpr int kRecheckDelayMs = 400;
+} // namespace
+
+ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
+    : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this)),
+      m_useController(new QPushButton(tr("Use the connected controller"), this)),
+      m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
+      m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
+      m_controls(new ProgramControls(this)), m_recheck(new QTimer(this)),
+      m_checker(new ProgramBackgroundCheck(this))
+{
+    setObjectName(QStringLiteral("programPage"));
+    m_files = new ProgramFiles(m_editor, this);
+    m_machineNote->setObjectName(QStringLiteral("programMachineNote"));
+    m_useController->setObjectName(QStringLiteral("programUseController"));
+    m_useController->setToolTip(
+        tr("Open the controller connected now as a machine of one controller, in its own "
+           "steps, so that programs can run on it"));
+    QSizePolicy keep = m_useController->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_useController->setSizePolicy(keep);
+    m_check->setObjectName(QStringLiteral("programCheck"));
+    m_recheck->setSingleShot(true);
+    m_recheck->setInterval(kRecheckDelayMs);
+    buildLayout();
+
+    connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
+    connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
+    connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
+        if (!isRunning())
+            m_recheck->start(); // again from now: typing does not check every key
+    });
+    connect(m_files, &ProgramFiles::message, this,
+            [this](const QString& text) { m_banner->setStatus(text); });
+    connect(m_files, &ProgramFiles::loaded, this, [this] { checkNow(); });
+    connect(m_useController, &QPushButton::clicked, this, &ProgramPage::useConnectedController);
+    connect(m_banner, &ProgramPromptBanner::resumeRequested, this, [this] {
+        if (m_runner)
+            m_runner->resume();
+    });
+    connect(m_controls, &ProgramControls::runRequested, this, &ProgramPage::run);
+    connect(m_controls, &ProgramControls::runFromLineRequested, this, &ProgramPage::runFromLine);
+    connect(m_controls, &ProgramControls::stepRequested, this, &ProgramPage::step);
+    connect(m_controls, &ProgramControls::pauseRequested, this, [this] {
+        if (m_runner)
+            m_runner->pause();
+        updateControls();
+    });
+    connect(m_controls, &ProgramControls::resumeRequested, this, [this] {
+        if (m_runner)
+            m_runner->resume();
+    });
+    connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
+    connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
+    connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
+    // The single controller's link decides whether "Use the connected controller" can work.
+    connect(m_context->session(), &ControllerSession::linkStateChanged, this,
+            &ProgramPage::updateControls);
+    onMachineChanged();
+}
+
+ProgramPage::~ProgramPage() = default;
+
+void ProgramPage::buildLayout()
+{
+    // Three rows above the text: files and the check, the run's buttons and progress, the
+    // run's message (M0's prompt) and the machine the page runs on.
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_files, 1);
+    top->addWidget(m_check, 1);
+    auto* lines = new QHBoxLayout;
+    lines->addWidget(m_banner, 2);
+    lines->addWidget(m_machineNote, 1);
+    lines->addWidget(m_useController);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->setObjectName(QStringLiteral("programSplitter"));
+    split->addWidget(m_editor);
+    split->addWidget(m_preview);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+    split->setChildrenCollapsible(false);
+    m_editor->setMinimumSize(200, 60);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(4, 4, 4, 4);
+    v->setSpacing(3);
+    v->addLayout(top);
+    v->addWidget(m_controls);
+    v->addLayout(lines);
+    v->addWidget(split, 1);
+}
+
+QString ProgramPage::checkText() const
+{
+    return m_check->text();
+}
+
+QString ProgramPage::messageText() const
+{
+    return m_banner->statusText();
+}
+
+void ProgramPage::onMachineChanged()
+{
+    machine::Machine* machine = m_context->machine();
+    // (A closed machine is gone before machineChanged: the pointer then reads null.)
+    if (m_runner && (m_runnerMachine.isNull() || m_runnerMachine != machine)) {
+        // The machine the runner ran on is closed (its controllers stopped with it).
+        const bool wasRunning = isRunning();
+        delete m_runner;
+        m_runner = nullptr;
+        m_editor->setRunning(false);
+        m_files->setEnabled(true);
+        m_banner->clearPrompt();
+        m_preview->clearCurrent();
+        m_controls->clearProgress();
+        if (wasRunning) // else it ended already and says how
+            m_banner->setStatus(tr("Aborted: the machine was closed."));
+    }
+    if (machine && !m_runner) {
+        m_runner = new program::ProgramRunner(machine, this);
+        m_runnerMachine = machine;
+        using program::ProgramRunner;
+        connect(m_runner, &ProgramRunner::stateChanged, this, &ProgramPage::onState);
+        connect(m_runner, &ProgramRunner::blockStarted, this, &ProgramPage::onBlockStarted);
+        connect(m_runner, &ProgramRunner::blockFinished, this, &ProgramPage::onBlockFinished);
+        connect(m_runner, &ProgramRunner::paused, this, &ProgramPage::onPaused);
+        connect(m_runner, &ProgramRunner::stopping, this, [this](const QString& message) {
+            m_stoppingText = message; // said until the axes stand (updateControls)
+            updateControls();
+        });
+        connect(m_runner, &ProgramRunner::finished, this, &ProgramPage::onFinished);
+    }
+    if (machine) {
+        QStringList axes;
+        for (const machine::MachineAxis& a : machine->description().axes)
+            axes << a.name;
+        m_machineNote->setText(
+            tr("Runs on %1 (axes %2)")
+                .arg(machine->description().name, axes.join(QStringLiteral(", "))));
+    } else {
+        m_machineNote->setText(tr("Programs run on a machine: open a machine file, or use the "
+                                  "connected controller."));
+    }
+    m_machineNote->setToolTip(m_machineNote->text());
+    checkNow();
+}
+
+void ProgramPage::useConnectedController()
+{
+    const ModelInfo* model = m_context->model();
+    if (!model || !m_context->session()->isCreated() || m_context->hasMachine())
+        return;
+    QString error;
+    const machine::MachineDescription single =
+        machine::MachineDescription::singleController(*model, m_context->portName());
+    if (!m_context->openMachine(single, &error)) {
+        m_banner->setStatus(error);
+        return;
+    }
+    m_context->connectMachine(); // the same port, now the machine's controller
+}
+
+std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>* errors) const
+{
+    QStringList axes;
+    if (const machine::Machine* machine = m_context->machine()) {
+        for (const machine::MachineAxis& a : machine->description().axes)
+            axes << a.name;
+    }
+    return program::ProgramParser::parse(m_editor->toPlainText().toUtf8(), axes, errors);
+}
+
+void ProgramPage::checkNow()
+{
+    m_recheck->stop();
+    if (isRunning())
+        return; // the runner checked what runs; the text cannot change meanwhile
+    m_controls->setLineCount(m_editor->blockCount());
+    const machine::Machine* machine = m_context->machine();
+    if (!machine) {
+        m_checker->cancel();
+        m_checkOk = false;
+        m_editor->setErrors({});
+        m_check->setText(tr("Not checked: no machine open."));
+        m_preview->clear(tr("The preview needs a machine: its axes and soft limits."));
+        updateControls();
+        return;
+    }
+    QStringList axes;
+    for (const machine::MachineAxis& a : machine->description().axes)
+        axes << a.name;
+    // Run stays off until the text as it is now has been checked.
+    m_checkOk = false;
+    updateControls();
+    m_checkedPositions = positionsSignature();
+    m_checker->start(m_editor->toPlainText().toUtf8(), axes, program::factsOf(*machine));
+}
+
+bool ProgramPage::isChecking() const
+{
+    return m_checker->isChecking() || m_recheck->isActive();
+}
+
+void ProgramPage::showCheck(const program::ProgramCheckResult& result)
+{
+    if (isRunning() || !m_context->machine())
+        return; // a check of before the run or of a machine closed since
+    m_checkOk = result.ok() && !m_editor->toPlainText().trimmed().isEmpty();
+    m_editor->setErrors(result.errors);
+    if (result.ok()) {
+        m_check->setText(m_checkOk ? tr("Checked against the machine: no errors.")
+                                   : tr("No program."));
+        m_check->setStyleSheet(QString());
+        m_check->setToolTip(QString());
+        if (m_checkOk)
+            m_preview->setPreview(result.preview, m_context->machine()->description());
+        else
+            m_preview->clear(tr("No program."));
+    } else {
+        const program::ProgramError& first = result.errors.first();
+        m_check->setText(tr("%n error(s); line %1: %2", nullptr, int(result.errors.size()))
+                             .arg(first.line)
+                             .arg(first.message));
+        m_check->setStyleSheet(QStringLiteral("QLabel { color: #b00000; }"));
+        QStringList all;
+        for (const program::ProgramError& e : result.errors)
+            all << e.text();
+        m_check->setToolTip(all.join(QLatin1Char('\n')));
+        m_preview->clear(tr("No preview: the program has errors."));
+    }
+    updateControls();
+}
+
+void ProgramPage::onMachineStatus()
+{
+    // Where the axes stand is part of the check (known positions, relative moves): once the
+    // machine rests somewhere new, or an axis became known, the text is checked again.
+    if (!isRunning() && !m_recheck->isActive() && positionsSignature() != m_checkedPositions)
+        m_recheck->start();
+    if (isRunning())
+        m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
+    updateControls();
+}
+
+QMap<QString, double> ProgramPage::knownPositions() const
+{
+    const machine::Machine* machine = m_context->machine();
+    return machine ? ProgramMachinePositions::known(*machine) : QMap<QString, double>();
+}
+
+QString ProgramPage::positionsSignature() const
+{
+    const machine::Machine* machine = m_context->machine();
+    if (!machine)
+        return {};
+    // Not while anything moves: once it rests.
+    return ProgramMachinePositions::restingSignature(*machine).value_or(m_checkedPositions);
+}
+
+} // namespace stepdeck::ui

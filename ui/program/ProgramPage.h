@@ -1,0 +1,107 @@
+#pragma once
+#include "ProgramProgress.h"
+#include "program/ProgramCheck.h"
+#include "program/ProgramRunner.h"
+#include <QPointer>
+#include <QWidget>
+#include <optional>
+
+class QPushButton;
+class QTimer;
+
+namespace stepdeck::machine {
+class Machine;
+}
+
+namespace stepdeck::ui {
+
+class ElidedLabel;
+class MachineContext;
+class ProgramBackgroundCheck;
+class ProgramControls;
+class ProgramEditor;
+class ProgramFiles;
+class ProgramPreviewView;
+class ProgramPromptBanner;
+
+// The Program page (issue 20, docs/programs.md): a motion program's file and text, checked
+// against the open machine while it is edited (debounced: ProgramParser, then ProgramCheck
+// with factsOf(machine)), the errors marked at their lines, the preview beside it, and the
+// run through a ProgramRunner on the context's machine: Run, Pause, Resume, Step, Abort, Run
+// from line N (after a confirmation naming where the axes stand), the running line
+// highlighted, "line n of m" with the estimated time left, M0's prompt in a banner with
+// Resume. The text is read-only while a program runs. STOP and PANIC of the window end a
+// running program as aborted (MainWindow calls abortRun() before it stops the machine).
+// Programs run on a machine: without a machine file the connected controller can be made
+// a machine of one controller (MachineDescription::singleController).
+class ProgramPage : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit ProgramPage(MachineContext* context, QWidget* parent = nullptr);
+    ~ProgramPage() override;
+
+    ProgramEditor* editor() const { return m_editor; }
+    ProgramPreviewView* preview() const { return m_preview; }
+    ProgramControls* controls() const { return m_controls; }
+    ProgramPromptBanner* promptBanner() const { return m_banner; }
+    ProgramFiles* files() const { return m_files; }
+    program::ProgramRunner* runner() const { return m_runner; }
+    QPushButton* useControllerButton() const { return m_useController; }
+    QString checkText() const;
+    QString messageText() const;
+    bool isRunning() const;
+    // The check of the text as it stands now, without waiting for the debounce; it runs off
+    // the GUI thread (ProgramBackgroundCheck) and reports when done (isChecking() until then).
+    void checkNow();
+    bool isChecking() const;
+    // What the confirmation of "Run from line" says about where the run starts.
+    QString runFromText(int line) const;
+
+public Q_SLOTS:
+    // The window's STOP or PANIC: a running program ends as aborted.
+    void abortRun();
+    void run();
+    void runFromLine(int line);
+    void step();
+
+private:
+    void buildLayout();
+    void onMachineChanged();
+    void onMachineStatus();
+    void useConnectedController();
+    std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
+    bool start(int fromLine, bool stepOnly);
+    void showCheck(const program::ProgramCheckResult& result);
+    void updateControls();
+    void updateProgress();
+    // The runner's signals.
+    void onState(program::RunState state);
+    void onBlockStarted(int line, const QString& text);
+    void onBlockFinished(int line);
+    void onPaused(int line, const QString& prompt);
+    void onFinished(program::RunState state, const QString& message);
+    QMap<QString, double> knownPositions() const;
+    QString positionsSignature() const;
+
+    MachineContext* m_context;
+    ProgramFiles* m_files;
+    ElidedLabel* m_machineNote;
+    QPushButton* m_useController;
+    ElidedLabel* m_check;
+    ProgramEditor* m_editor;
+    ProgramPreviewView* m_preview;
+    ProgramPromptBanner* m_banner;
+    ProgramControls* m_controls;
+    QTimer* m_recheck;
+    ProgramBackgroundCheck* m_checker;
+    program::ProgramRunner* m_runner = nullptr;
+    QPointer<machine::Machine> m_runnerMachine;
+    bool m_checkOk = false;
+    program::Program m_running; // what the runner runs (for M0 lines and the progress)
+    ProgramProgress m_progress; // of the run, in the estimate
+    QString m_checkedPositions; // positionsSignature() of the last check
+    QString m_stoppingText;     // the runner's stopping(): a move runs out by itself
+};
+
+} // namespace stepdeck::ui

@@ -1,0 +1,198 @@
+// ProgramPage, part 2: running the program through the ProgramRunner and showing how the run
+// goes (running line, progress, estimated time left, M0, how it ended).
+#include "ProgramControls.h"
+#include "ProgramEditor.h"
+#include "ProgramFiles.h"
+#include "ProgramMachinePositions.h"
+#include "ProgramPage.h"
+#include "ProgramPreviewView.h"
+#include "ProgramPromptBanner.h"
+#include "common/Dialogs.h"
+#include "common/ElidedLabel.h"
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
+#include <QPushButton>
+
+namespace stepdeck::ui {
+
+using program::RunState;
+
+bool ProgramPage::isRunning() const
+{
+    if (!m_runner)
+        return false;
+    const RunState s = m_runner->state();
+    return s == RunState::Running || s == RunState::Paused || s == RunState::Stopping;
+}
+
+void ProgramPage::abortRun()
+{
+    if (isRunning())
+        m_runner->abort();
+}
+
+void ProgramPage::run()
+{
+    start(1, false);
+}
+
+void ProgramPage::step()
+{
+    if (m_runner && m_runner->state() == RunState::Paused)
+        m_runner->step();
+    else
+        start(1, true);
+}
+
+QString ProgramPage::runFromText(int line) const
+{
+    QList<program::ProgramError> errors;
+    const std::optional<program::Program> parsed = parse(&errors);
+    const program::ProgramBlock* first = nullptr;
+    if (parsed) {
+        for (const program::ProgramBlock& b : parsed->blocks) {
+            if (b.line >= line) {
+                first = &b;
+                break;
+            }
+        }
+    }
+    if (!first)
+        return tr("Line %1: no block runs on or after it.").arg(line);
+    return tr("Run from line %1 (%2). The lines before it do not run; the axes start from where "
+              "they stand now: %3.")
+        .arg(first->line)
+        .arg(first->text, ProgramMachinePositions::text(*m_context->machine()));
+}
+
+void ProgramPage::runFromLine(int line)
+{
+    if (!m_runner || isRunning())
+        return;
+    dialogs::message(this, QMessageBox::Question, tr("Run from line"), runFromText(line),
+                     QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel,
+                     [this, line](QMessageBox::StandardButton b) {
+                         if (b == QMessageBox::Yes)
+                             start(line, false);
+                     });
+}
+
+bool ProgramPage::start(int fromLine, bool stepOnly)
+{
+    if (!m_runner || isRunning())
+        return false;
+    m_recheck->stop();
+    QList<program::ProgramError> errors;
+    const std::optional<program::Program> parsed = parse(&errors);
+    if (parsed && m_runner->start(*parsed, fromLine, &errors, stepOnly)) {
+        m_running = *parsed;
+        m_progress.reset(m_runner->preview());
+        m_stoppingText.clear();
+        m_banner->clearPrompt();
+        onState(m_runner->state());
+        return true;
+    }
+    m_editor->setErrors(errors);
+    m_banner->setStatus(errors.isEmpty() ? tr("Not started.")
+                                         : tr("Not started: %1").arg(errors.first().text()));
+    return false;
+}
+
+void ProgramPage::onState(RunState state)
+{
+    const bool running = isRunning();
+    m_editor->setRunning(running);
+    m_files->setEnabled(!running);
+    if (state == RunState::Running)
+        m_banner->clearPrompt();
+    if (!running) {
+        m_banner->clearPrompt();
+        m_preview->clearCurrent();
+    }
+    updateControls();
+    updateProgress();
+}
+
+void ProgramPage::onBlockStarted(int line, const QString&)
+{
+    m_editor->setRunningLine(line);
+    updateControls();
+    updateProgress();
+}
+
+void ProgramPage::onBlockFinished(int line)
+{
+    m_progress.blockFinished(line);
+    m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
+    updateProgress();
+}
+
+void ProgramPage::onPaused(int line, const QString& prompt)
+{
+    for (const program::ProgramBlock& b : std::as_const(m_running.blocks)) {
+        if (b.line == line && b.kind == program::BlockKind::Pause) {
+            m_banner->showPrompt(line, prompt);
+            break;
+        }
+    }
+    updateControls();
+}
+
+void ProgramPage::onFinished(RunState state, const QString& message)
+{
+    QString text;
+    if (state == RunState::Finished)
+        text = tr("Finished: %n block(s) run.", nullptr,
+                  int(qMin<qint64>(m_runner->blocksDone(), INT_MAX)));
+    else if (state == RunState::Failed)
+        text = tr("Failed: %1").arg(message);
+    else
+        text = message.isEmpty() ? tr("Aborted.") : tr("Aborted: %1").arg(message);
+    onState(state);
+    m_banner->setStatus(text);
+    checkNow(); // the machine stands elsewhere now
+}
+
+void ProgramPage::updateControls()
+{
+    const RunState state = m_runner ? m_runner->state() : RunState::Idle;
+    const machine::Machine* machine = m_context->machine();
+    const machine::MachineState ms =
+        machine ? machine->state() : machine::MachineState::Disconnected;
+    const bool connected =
+        ms != machine::MachineState::Disconnected && ms != machine::MachineState::LinkLost;
+    const bool pausePending = m_runner && m_runner->pausePending();
+    m_controls->setState(state, pausePending, m_checkOk && connected);
+    m_useController->setVisible(!machine);
+    m_useController->setEnabled(!machine && m_context->model() &&
+                                m_context->session()->isCreated() && m_context->isConnected());
+    if (!m_runner)
+        return;
+    const int line = m_runner->currentLine();
+    if (state == RunState::Running)
+        m_banner->setStatus(
+            pausePending ? tr("Pausing: line %1 finishes first, then the program holds.").arg(line)
+                         : tr("Running line %1.").arg(line));
+    else if (state == RunState::Paused)
+        m_banner->setStatus(tr("Paused after line %1: Resume or Step goes on.").arg(line));
+    else if (state == RunState::Stopping)
+        m_banner->setStatus(m_stoppingText.isEmpty()
+                                ? tr("Aborting: waiting for the axes to stand.")
+                                : tr("Aborting: %1").arg(m_stoppingText));
+}
+
+void ProgramPage::updateProgress()
+{
+    if (!m_runner || m_runner->state() == RunState::Idle) {
+        m_controls->clearProgress();
+        return;
+    }
+    std::optional<double> left = m_progress.secondsLeft();
+    if (program::isEnded(m_runner->state()))
+        left = m_runner->state() == RunState::Finished ? std::optional<double>(0.0) : std::nullopt;
+    const int line =
+        m_runner->currentLine() > 0 ? m_runner->currentLine() : m_editor->runningLine();
+    m_controls->setProgress(line, m_running.lines, left);
+}
+
+} // namespace stepdeck::ui
