@@ -5932,6 +5932,10 @@ W1500</translation>
             <source>Messages</source>
             <translation>Meldungen</translation>
         </message>
+        <message>
+            <source>Program</source>
+            <translation>Programm</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MessageLine</name>
@@ -6177,6 +6181,370 @@ W1500</translation>
         <message>
             <source>machine %1 %2</source>
             <translation>Maschine %1 %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramControls</name>
+        <message>
+            <source>Run</source>
+            <translation>Starten</translation>
+        </message>
+        <message>
+            <source>&amp;Pause</source>
+            <translation>&amp;Pause</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Fortsetzen</translation>
+        </message>
+        <message>
+            <source>Step</source>
+            <translation>Schritt</translation>
+        </message>
+        <message>
+            <source>&amp;Abort</source>
+            <translation>&amp;Abbrechen</translation>
+        </message>
+        <message>
+            <source>Run from line…</source>
+            <translation>Ab Zeile starten…</translation>
+        </message>
+        <message>
+            <source>Check the program against the machine and run it from the start</source>
+            <translation>Das Programm gegen die Maschine prüfen und von Anfang an ausführen</translation>
+        </message>
+        <message>
+            <source>Finish the current block, then hold</source>
+            <translation>Den laufenden Satz beenden, dann anhalten</translation>
+        </message>
+        <message>
+            <source>Go on with the next block</source>
+            <translation>Mit dem nächsten Satz weitermachen</translation>
+        </message>
+        <message>
+            <source>Run one block, then hold</source>
+            <translation>Einen Satz ausführen, dann anhalten</translation>
+        </message>
+        <message>
+            <source>Stop every controller; the program ends as aborted</source>
+            <translation>Alle Steuerungen stoppen; das Programm endet als abgebrochen</translation>
+        </message>
+        <message>
+            <source>Run from the first block on or after this line, starting where the axes stand now</source>
+            <translation>Ab dem ersten Satz in oder nach dieser Zeile ausführen, beginnend dort, wo die Achsen jetzt stehen</translation>
+        </message>
+        <message>
+            <source>line </source>
+            <translation>Zeile </translation>
+        </message>
+        <message>
+            <source>line %1 of %2</source>
+            <translation>Zeile %1 von %2</translation>
+        </message>
+        <message>
+            <source>time left unknown</source>
+            <translation>Restzeit unbekannt</translation>
+        </message>
+        <message>
+            <source>not running</source>
+            <translation>läuft nicht</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramFiles</name>
+        <message>
+            <source>Motion programs (*.ngc *.nc *.gcode);;All files (*)</source>
+            <translation>Bewegungsprogramme (*.ngc *.nc *.gcode);;Alle Dateien (*)</translation>
+        </message>
+        <message>
+            <source>&amp;Open…</source>
+            <translation>Ö&amp;ffnen…</translation>
+        </message>
+        <message>
+            <source>&amp;Save</source>
+            <translation>&amp;Speichern</translation>
+        </message>
+        <message>
+            <source>Save &amp;as…</source>
+            <translation>Speichern &amp;unter…</translation>
+        </message>
+        <message>
+            <source>Recent</source>
+            <translation>Zuletzt</translation>
+        </message>
+        <message>
+            <source>Open program</source>
+            <translation>Programm öffnen</translation>
+        </message>
+        <message>
+            <source>The program shown has unsaved changes. Discard them and open %1?</source>
+            <translation>Das angezeigte Programm hat ungespeicherte Änderungen. Verwerfen und %1 öffnen?</translation>
+        </message>
+        <message>
+            <source>Program %1: cannot be read: %2</source>
+            <translation>Programm %1: kann nicht gelesen werden: %2</translation>
+        </message>
+        <message>
+            <source>Program %1: larger than %2 MB, not opened.</source>
+            <translation>Programm %1: größer als %2 MB, nicht geöffnet.</translation>
+        </message>
+        <message>
+            <source>Program %1: cannot be written: %2</source>
+            <translation>Programm %1: kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Save program</source>
+            <translation>Programm speichern</translation>
+        </message>
+        <message>
+            <source>No recent programs</source>
+            <translation>Keine zuletzt verwendeten Programme</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>Unbenannt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramMachinePositions</name>
+        <message>
+            <source>%1 unknown</source>
+            <translation>%1 unbekannt</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramPage</name>
+        <message>
+            <source>Use the connected controller</source>
+            <translation>Verbundene Steuerung verwenden</translation>
+        </message>
+        <message>
+            <source>Open the controller connected now as a machine of one controller, in its own steps, so that programs can run on it</source>
+            <translation>Die jetzt verbundene Steuerung als Maschine aus einer Steuerung in ihren eigenen Schritten öffnen, damit Programme auf ihr laufen können</translation>
+        </message>
+        <message>
+            <source>Aborted: the machine was closed.</source>
+            <translation>Abgebrochen: die Maschine wurde geschlossen.</translation>
+        </message>
+        <message>
+            <source>Runs on %1 (axes %2)</source>
+            <translation>Läuft auf %1 (Achsen %2)</translation>
+        </message>
+        <message>
+            <source>Programs run on a machine: open a machine file, or use the connected controller.</source>
+            <translation>Programme laufen auf einer Maschine: eine Maschinendatei öffnen oder die verbundene Steuerung verwenden.</translation>
+        </message>
+        <message>
+            <source>Not checked: no machine open.</source>
+            <translation>Nicht geprüft: keine Maschine geöffnet.</translation>
+        </message>
+        <message>
+            <source>The preview needs a machine: its axes and soft limits.</source>
+            <translation>Die Vorschau braucht eine Maschine: ihre Achsen und Software-Endlagen.</translation>
+        </message>
+        <message>
+            <source>Checked against the machine: no errors.</source>
+            <translation>Gegen die Maschine geprüft: keine Fehler.</translation>
+        </message>
+        <message>
+            <source>No program.</source>
+            <translation>Kein Programm.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n error(s); line %1: %2</source>
+            <translation>
+                <numerusform>%n Fehler; Zeile %1: %2</numerusform>
+                <numerusform>%n Fehler; Zeile %1: %2</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No preview: the program has errors.</source>
+            <translation>Keine Vorschau: das Programm hat Fehler.</translation>
+        </message>
+        <message>
+            <source>Line %1: no block runs on or after it.</source>
+            <translation>Zeile %1: in oder nach ihr läuft kein Satz.</translation>
+        </message>
+        <message>
+            <source>Run from line %1 (%2). The lines before it do not run; the axes start from where they stand now: %3.</source>
+            <translation>Ab Zeile %1 starten (%2). Die Zeilen davor laufen nicht; die Achsen beginnen dort, wo sie jetzt stehen: %3.</translation>
+        </message>
+        <message>
+            <source>Run from line</source>
+            <translation>Ab Zeile starten</translation>
+        </message>
+        <message>
+            <source>Not started.</source>
+            <translation>Nicht gestartet.</translation>
+        </message>
+        <message>
+            <source>Not started: %1</source>
+            <translation>Nicht gestartet: %1</translation>
+        </message>
+        <message numerus="yes">
+            <source>Finished: %n block(s) run.</source>
+            <translation>
+                <numerusform>Fertig: %n Satz ausgeführt.</numerusform>
+                <numerusform>Fertig: %n Sätze ausgeführt.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Failed: %1</source>
+            <translation>Fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>Aborted.</source>
+            <translation>Abgebrochen.</translation>
+        </message>
+        <message>
+            <source>Aborted: %1</source>
+            <translation>Abgebrochen: %1</translation>
+        </message>
+        <message>
+            <source>Pausing: line %1 finishes first, then the program holds.</source>
+            <translation>Pause folgt: Zeile %1 wird noch beendet, dann hält das Programm an.</translation>
+        </message>
+        <message>
+            <source>Running line %1.</source>
+            <translation>Zeile %1 läuft.</translation>
+        </message>
+        <message>
+            <source>Paused after line %1: Resume or Step goes on.</source>
+            <translation>Angehalten nach Zeile %1: Fortsetzen oder Schritt macht weiter.</translation>
+        </message>
+        <message>
+            <source>Aborting: waiting for the axes to stand.</source>
+            <translation>Abbruch: warte auf den Stillstand der Achsen.</translation>
+        </message>
+        <message>
+            <source>Aborting: %1</source>
+            <translation>Abbruch: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramPathView</name>
+        <message>
+            <source>X / Y (%1)</source>
+            <translation>X / Y (%1)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramPreviewView</name>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Program from</source>
+            <translation>Programm von</translation>
+        </message>
+        <message>
+            <source>Program to</source>
+            <translation>Programm bis</translation>
+        </message>
+        <message>
+            <source>Soft limits</source>
+            <translation>Software-Endlagen</translation>
+        </message>
+        <message>
+            <source>Path X/Y</source>
+            <translation>Bahn X/Y</translation>
+        </message>
+        <message>
+            <source>Axes over time</source>
+            <translation>Achsen über der Zeit</translation>
+        </message>
+        <message>
+            <source>Extents</source>
+            <translation>Verfahrbereiche</translation>
+        </message>
+        <message>
+            <source>No program checked yet.</source>
+            <translation>Noch kein Programm geprüft.</translation>
+        </message>
+        <message>
+            <source>The program moves X and Y to no known position.</source>
+            <translation>Das Programm fährt X und Y an keine bekannte Position.</translation>
+        </message>
+        <message>
+            <source>This machine has no X and Y axes: see the chart below.</source>
+            <translation>Diese Maschine hat keine X- und Y-Achse: siehe das Diagramm darunter.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n line(s)</source>
+            <translation>
+                <numerusform>%n Zeile</numerusform>
+                <numerusform>%n Zeilen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n block(s) run</source>
+            <translation>
+                <numerusform>%n Satz wird ausgeführt</numerusform>
+                <numerusform>%n Sätze werden ausgeführt</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>path shortened</source>
+            <translation>Bahn gekürzt</translation>
+        </message>
+        <message>
+            <source>s (estimated)</source>
+            <translation>s (geschätzt)</translation>
+        </message>
+        <message>
+            <source>now</source>
+            <translation>jetzt</translation>
+        </message>
+        <message>
+            <source>No axis besides X and Y moves.</source>
+            <translation>Außer X und Y fährt keine Achse.</translation>
+        </message>
+        <message>
+            <source>%1 … %2 %3</source>
+            <translation>%1 … %2 %3</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keine</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramPromptBanner</name>
+        <message>
+            <source>Resume</source>
+            <translation>Fortsetzen</translation>
+        </message>
+        <message>
+            <source>Line %1 (M0): the program holds. Resume when ready.</source>
+            <translation>Zeile %1 (M0): das Programm hält an. Fortsetzen, wenn bereit.</translation>
+        </message>
+        <message>
+            <source>Line %1 (M0): %2</source>
+            <translation>Zeile %1 (M0): %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramTimes</name>
+        <message>
+            <source>%1 s</source>
+            <translation>%1 s</translation>
+        </message>
+        <message>
+            <source>%1 min %2 s</source>
+            <translation>%1 min %2 s</translation>
+        </message>
+        <message>
+            <source>%1 h %2 min</source>
+            <translation>%1 h %2 min</translation>
+        </message>
+        <message>
+            <source>≈ %1 (estimated)</source>
+            <translation>≈ %1 (geschätzt)</translation>
+        </message>
+        <message>
+            <source>≈ %1 left (estimated)</source>
+            <translation>≈ %1 übrig (geschätzt)</translation>
         </message>
     </context>
     <context>

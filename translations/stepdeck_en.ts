@@ -59,6 +59,40 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ProgramPage</name>
+        <message numerus="yes">
+            <source>%n error(s); line %1: %2</source>
+            <translation>
+                <numerusform>%n error; line %1: %2</numerusform>
+                <numerusform>%n errors; line %1: %2</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Finished: %n block(s) run.</source>
+            <translation>
+                <numerusform>Finished: %n block run.</numerusform>
+                <numerusform>Finished: %n blocks run.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramPreviewView</name>
+        <message numerus="yes">
+            <source>%n line(s)</source>
+            <translation>
+                <numerusform>%n line</numerusform>
+                <numerusform>%n lines</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n block(s) run</source>
+            <translation>
+                <numerusform>%n block run</numerusform>
+                <numerusform>%n blocks run</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::RecordsPage</name>
         <message numerus="yes">
             <source>%n record(s) read.</source>
