@@ -73,7 +73,10 @@ BenchDevice::Config deviceConfig(const ModelInfo& model)
 {
     BenchDevice::Config config;
     config.paced = true;
-    config.addresses = model.soak.simulatorAddresses;
+    // Multi-drive models: one drive at the first address. A status read asks every drive of
+    // the machine, so with three drives on the bus the gap holds three drives' replies.
+    if (!model.soak.simulatorAddresses.isEmpty())
+        config.addresses = {model.soak.simulatorAddresses.first()};
     config.prepare = [&model](Simulator* sim) {
         SimulatorScenario scenario;
         scenario.setupComplete = true;
@@ -102,8 +105,11 @@ ProgramFigure measure(const ModelInfo& model)
         timer->start(kSampleMs);
     });
     machine::Machine m;
+    QMap<Axis, int> addresses; // multi-drive models: the one simulated drive
+    if (model.capabilities.multiDrive && !model.soak.simulatorAddresses.isEmpty())
+        addresses.insert(axis, model.soak.simulatorAddresses.first());
     const machine::MachineDescription d =
-        machine::MachineDescription::singleController(model, device.slavePath());
+        machine::MachineDescription::singleController(model, device.slavePath(), addresses);
     if (!m.create(d, &f.note))
         return f;
     m.open();

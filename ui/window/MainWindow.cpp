@@ -427,10 +427,11 @@ void MainWindow::stopAll()
     const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
     m_reference->runner()->cancel(tr("Referencing stopped."));
-    // A running program ends as aborted (not failed by the stop it did not ask for).
-    m_programPage->abortRun();
     if (m_context->hasMachine()) {
         m_machineControl->stop(); // every controller at once
+        // Then a running program ends as aborted (not failed by the stop it did not ask
+        // for): its results come later, queued from the controller threads.
+        m_programPage->abortRun();
         return;
     }
     if (!m_context->session()->isCreated()) {
@@ -444,9 +445,10 @@ void MainWindow::stopAll()
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
-    m_programPage->abortRun();
     if (m_context->hasMachine()) {
         m_machineControl->panic(); // every controller at once
+        // After the panic, so that the program's own stop never goes ahead of it.
+        m_programPage->abortRun();
         return;
     }
     if (!m_context->session()->isCreated()) {
