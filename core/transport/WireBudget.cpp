@@ -1,5 +1,5 @@
 #include "WireBudget.h"
-#include <QtMath>
+#include <cmath>
 
 namespace stepdeck {
 
@@ -20,7 +20,8 @@ qint64 WireBudget::write(qint64 bytes, qint64 nowNs)
     const double start = qMax(double(nowNs), m_lineFreeNs);
     if (bytes > 0)
         m_lineFreeNs = start + double(bytes) * m_characterNs;
-    return qCeil(start - kNsSlack);
+    // std::ceil, not qCeil: qCeil returns int, and nanoseconds pass 2^31 after 2.1 s.
+    return qint64(std::ceil(start - kNsSlack));
 }
 
 qint64 WireBudget::backlog(qint64 nowNs) const
@@ -28,14 +29,14 @@ qint64 WireBudget::backlog(qint64 nowNs) const
     const double remaining = m_lineFreeNs - double(nowNs);
     if (remaining <= 0)
         return 0;
-    return qMax<qint64>(0, qCeil(remaining / m_characterNs - kCharacterSlack));
+    return qMax<qint64>(0, qint64(std::ceil(remaining / m_characterNs - kCharacterSlack)));
 }
 
 qint64 WireBudget::nsUntilBacklog(qint64 bytes, qint64 nowNs) const
 {
     // At most `bytes` are left once no more than bytes * character time remains.
     const double due = m_lineFreeNs - double(qMax<qint64>(0, bytes)) * m_characterNs;
-    return qMax<qint64>(0, qCeil(due - double(nowNs) - kNsSlack));
+    return qMax<qint64>(0, qint64(std::ceil(due - double(nowNs) - kNsSlack)));
 }
 
 } // namespace stepdeck

@@ -25,6 +25,8 @@ private Q_SLOTS:
     void nsUntilBacklog_landsExactlyOnTheLimit_data();
     void nsUntilBacklog_landsExactlyOnTheLimit();
     void clear_lineEmpty();
+    void write_clockFarPastTwoSeconds_exactTimes_data();
+    void write_clockFarPastTwoSeconds_exactTimes();
 };
 
 void TestWireBudget::backlog_drainsAtCharacterRate_data()
@@ -103,6 +105,30 @@ void TestWireBudget::clear_lineEmpty()
     wire.clear();
     QCOMPARE(wire.backlog(0), qint64(0));
     QCOMPARE(wire.write(4, 7), qint64(7));
+}
+
+void TestWireBudget::write_clockFarPastTwoSeconds_exactTimes_data()
+{
+    QTest::addColumn<qint64>("nowNs");
+    QTest::newRow("1 s") << 1000 * kMs;
+    // Past 2^31 ns: start times were once rounded through int and came back negative, so a
+    // paced wire stopped pacing 2.1 s after its clock started.
+    QTest::newRow("3 s") << 3000 * kMs;
+    QTest::newRow("1 h") << 3600 * 1000 * kMs;
+    QTest::newRow("30 days") << qint64(30) * 24 * 3600 * 1000 * kMs;
+}
+
+void TestWireBudget::write_clockFarPastTwoSeconds_exactTimes()
+{
+    QFETCH(qint64, nowNs);
+    WireBudget wire(kCharacterUs);
+    QCOMPARE(wire.write(16, nowNs), nowNs);
+    QCOMPARE(wire.write(16, nowNs), nowNs + characters(16) + 1); // behind the first 16
+    QCOMPARE(wire.backlog(nowNs), qint64(32));
+    // A backlog of more than 2^31 ns (12 000 000 characters, 2.3 s) is waited for in full.
+    wire.write(12000000, nowNs);
+    QVERIFY(wire.nsUntilBacklog(0, nowNs) >= characters(12000032));
+    QVERIFY(wire.nsUntilBacklog(0, nowNs) <= characters(12000032) + 2);
 }
 
 QTEST_GUILESS_MAIN(TestWireBudget)
