@@ -187,6 +187,9 @@ void NanotecDrive::stepPositioning(double dt)
     const double u = double(m_params.value('u'));
     const double remaining = (m_target - m_count) * m_dir;
     if (remaining <= 0.5) {
+        // The last fraction of a step moves the motor too, or the encoder drifts from the
+        // counter run by run (a position error after some hundred short moves).
+        moveBy(m_dir * remaining);
         m_count = m_target;
         return finishRun();
     }

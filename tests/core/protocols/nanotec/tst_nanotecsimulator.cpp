@@ -1,6 +1,8 @@
 // The simulated Nanotec bus: echo, '?' and ignore-invalid exactly as the manual describes,
 // records, error memory, motion with the drive's ramp, switches, auto status and faults.
+#include "protocols/nanotec/NanotecDrive.h"
 #include "protocols/nanotec/NanotecSimulator.h"
+#include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -33,6 +35,7 @@ private Q_SLOTS:
     void records_saveLoadAndReadBack();
     void errorMemory_ringOf32();
     void positioning_rampsToTarget_andSendsAutoStatus();
+    void positioning_manyShortMovesUnevenTicks_encoderStaysOnDemand();
     void speedMode_abruptStopAtSpeed_flagsPositionError();
     void reference_external_freesSwitchAndZeroes();
     void limitSwitch_stopBehaviour_haltsOnSwitch();
@@ -199,6 +202,29 @@ void TestNanotecSimulator::positioning_rampsToTarget_andSendsAutoStatus()
     QTRY_VERIFY_WITH_TIMEOUT(d->ready(), 5000);
     QCOMPARE(d->position(), qint64(-100));
     QCOMPARE(d->encoderPosition(), qint64(-100));
+}
+
+void TestNanotecSimulator::positioning_manyShortMovesUnevenTicks_encoderStaysOnDemand()
+{
+    // stepdeck-bench --program: 1 000 short moves at uneven simulation ticks (a loaded device
+    // thread). The fraction of a step a run ends with must reach the encoder as well as the
+    // counter, or the two drift apart until the drive reports a position error (5.13, X = 2
+    // by default) that no real motor would have made.
+    NanotecDrive drive(1);
+    QRandomGenerator rng(20);
+    for (const QByteArray& body : {"!1", "p1", "s10"})
+        drive.handle(body);
+    for (int move = 0; move < 1000; ++move) {
+        drive.handle(move % 2 ? "d0" : "d1");
+        drive.handle("A");
+        for (int tick = 0; tick < 10000 && !drive.ready(); ++tick)
+            drive.advance(0.0005 + rng.bounded(0.02));
+        QVERIFY(drive.ready());
+        QCOMPARE(drive.position(), qint64(move % 2 ? 0 : 10));
+        QCOMPARE(drive.physicalPosition(), double(drive.position()));
+        QVERIFY2(!decodeStatus(drive.statusWord()).positionError,
+                 qPrintable(QString::number(move)));
+    }
 }
 
 void TestNanotecSimulator::speedMode_abruptStopAtSpeed_flagsPositionError()
