@@ -23,6 +23,19 @@ void StatusPoller::setInterval(int ms)
     schedule();
 }
 
+void StatusPoller::setExpedited(bool expedited)
+{
+    if (expedited == m_expedited)
+        return;
+    m_expedited = expedited;
+    schedule();
+}
+
+int StatusPoller::effectiveInterval() const
+{
+    return m_expedited ? qMin(m_intervalMs, kExpeditedIntervalMs) : m_intervalMs;
+}
+
 void StatusPoller::setMissLimit(int misses)
 {
     m_missLimit = qMax(1, misses);
@@ -39,6 +52,7 @@ void StatusPoller::stop()
 {
     m_active = false;
     m_inFlight = false;
+    m_expedited = false;
     m_timer.stop();
     m_completions.clear();
     maybeEmitRate(true);
@@ -48,7 +62,7 @@ bool StatusPoller::isDue() const
 {
     if (!m_active || m_inFlight)
         return false;
-    return m_lastStartMs < 0 || now() - m_lastStartMs >= m_intervalMs;
+    return m_lastStartMs < 0 || now() - m_lastStartMs >= effectiveInterval();
 }
 
 void StatusPoller::pollStarted()
@@ -102,7 +116,7 @@ void StatusPoller::onTick()
     // The adapter starts the poll when its line is free (commands go first). Until it does,
     // remind it once per interval so a poll skipped for a busy line is not lost for good.
     if (m_active && !m_inFlight)
-        m_timer.start(m_intervalMs);
+        m_timer.start(effectiveInterval());
 }
 
 void StatusPoller::schedule()
@@ -112,7 +126,7 @@ void StatusPoller::schedule()
         return;
     }
     const qint64 remaining =
-        m_lastStartMs < 0 ? 0 : qMax<qint64>(0, m_lastStartMs + m_intervalMs - now());
+        m_lastStartMs < 0 ? 0 : qMax<qint64>(0, m_lastStartMs + effectiveInterval() - now());
     m_timer.start(int(remaining));
 }
 

@@ -17,6 +17,13 @@ public:
 
     void setInterval(int ms); // default 50 ms
     int interval() const { return m_intervalMs; }
+    // While the adapter waits for a motion to end it polls at most kExpeditedIntervalMs apart
+    // (its own interval when that is shorter), so an arrival is seen within a status read or
+    // two, not up to an interval later; commands still go first.
+    static constexpr int kExpeditedIntervalMs = 10;
+    void setExpedited(bool expedited);
+    bool isExpedited() const { return m_expedited; }
+    int effectiveInterval() const;
     void setMissLimit(int misses); // default 3
     int missLimit() const { return m_missLimit; }
 
@@ -49,6 +56,7 @@ private:
     int m_intervalMs = 50;
     int m_missLimit = 3;
     bool m_active = false;
+    bool m_expedited = false;
     bool m_inFlight = false;
     qint64 m_lastStartMs = -1;
     int m_misses = 0;

@@ -178,6 +178,7 @@ void NanotecMotion::startPositioning(RequestId id, const QMap<Axis, QList<QByteA
                     [](const Failure&) {});
         }
         m_ctl.m_sweep.updateStatus();
+        m_ctl.m_sweep.paceForMotion();
         m_ctl.publishStatus();
         m_ctl.finishWith(id, f);
     });
@@ -250,6 +251,7 @@ void NanotecMotion::velocityMove(RequestId id, const AxisVector& stepsPerS)
             }
         }
         m_ctl.m_sweep.updateStatus();
+        m_ctl.m_sweep.paceForMotion();
         m_ctl.publishStatus();
         m_ctl.finishWith(id, f);
     });

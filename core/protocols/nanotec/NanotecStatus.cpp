@@ -188,6 +188,7 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
                               std::shared_ptr<bool> answered)
 {
     if (remaining.isEmpty()) {
+        paceForMotion(); // before pollFinished(), which schedules the next sweep
         m_ctl.m_poller.pollFinished(*answered);
         updateStatus();
         m_ctl.publishStatus();
@@ -233,6 +234,17 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
             });
         });
     });
+}
+
+void NanotecStatus::paceForMotion()
+{
+    // A program's next block waits for the sweep that finds its drives ready; at the user's
+    // interval that is up to an interval plus a sweep (50 + 11 ms at 19200 baud) after the
+    // arrival, at the expedited pace at most about two sweeps.
+    bool pending = false;
+    for (const HostDrive& d : std::as_const(m_ctl.m_drives))
+        pending = pending || (d.motionPending && d.responding);
+    m_ctl.m_poller.setExpedited(pending);
 }
 
 void NanotecStatus::noteAnswer(HostDrive& d, bool answered)

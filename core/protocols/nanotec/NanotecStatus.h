@@ -28,6 +28,8 @@ public:
     void applyStatusWord(HostDrive& d, qint64 word);
     void noteAnswer(HostDrive& d, bool answered);
     void updateStatus();
+    // Polls at the poller's expedited pace while a positioning or reference run is pending.
+    void paceForMotion();
     int pollTimeoutMs() const;
     int sweepBudgetMs() const;
 

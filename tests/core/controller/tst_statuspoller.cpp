@@ -13,6 +13,7 @@ private Q_SLOTS:
     void start_firstPollDueAtOnce();
     void pollInFlight_noFurtherPollDue();
     void pollFinished_nextPollDueAgain();
+    void expedited_nextPollDueLongBeforeTheInterval();
     void misses_linkLostExactlyOnceAtLimit_data();
     void misses_linkLostExactlyOnceAtLimit();
     void answeredPoll_resetsMissCount();
@@ -60,6 +61,37 @@ void TestStatusPoller::pollFinished_nextPollDueAgain()
     due.clear();
     QVERIFY(due.wait(1000));
     QVERIFY(poller.isDue());
+}
+
+void TestStatusPoller::expedited_nextPollDueLongBeforeTheInterval()
+{
+    StatusPoller poller;
+    poller.setInterval(60000);
+    QSignalSpy due(&poller, &StatusPoller::pollDue);
+    poller.start();
+    QVERIFY(due.wait(1000));
+    poller.pollStarted();
+    poller.pollFinished(true);
+    due.clear();
+    QVERIFY(test::staysQuiet(due, 100)); // a minute's interval
+    QCOMPARE(poller.effectiveInterval(), 60000);
+    poller.setExpedited(true);
+    QCOMPARE(poller.effectiveInterval(), StatusPoller::kExpeditedIntervalMs);
+    QVERIFY(due.wait(1000));
+    QVERIFY(poller.isDue());
+    poller.pollStarted();
+    poller.pollFinished(true);
+    poller.setExpedited(false);
+    due.clear();
+    QVERIFY(test::staysQuiet(due, 100));
+    QVERIFY(!poller.isDue());
+    // A shorter interval of the user's own is kept.
+    poller.setInterval(5);
+    poller.setExpedited(true);
+    QCOMPARE(poller.effectiveInterval(), 5);
+    // stop() ends the expedited pace.
+    poller.stop();
+    QVERIFY(!poller.isExpedited());
 }
 
 void TestStatusPoller::misses_linkLostExactlyOnceAtLimit_data()

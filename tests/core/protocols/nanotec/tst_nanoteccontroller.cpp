@@ -2,6 +2,7 @@
 // LoopbackTransport: scan, write & verify, motion in the manual's modes, jog in speed mode,
 // reference run, panic broadcast, silent and misbehaving drives.
 #include "NanotecRig.h"
+#include "TestSupport.h"
 
 using namespace stepdeck;
 using namespace stepdeck::nanotec;
@@ -26,6 +27,7 @@ private Q_SLOTS:
     void write_motorAddress_followsTheDrive();
     void read_valuesPerAxis_andLastError();
     void move_relative_reachesTargetPerDrive();
+    void move_pendingRun_polledUntilArrivalDespiteLongInterval();
     void move_absolute_refusedUntilReferenced();
     void reference_external_thenAbsoluteMove();
     void jog_speedMode_rampedByDriveAndStoppedGently();
@@ -310,6 +312,27 @@ void TestNanotecController::move_relative_reachesTargetPerDrive()
     QCOMPARE(m_ctl->status().axes[Axis::Z].position, qint64(-200));
     QVERIFY(!m_ctl->status().axes[Axis::X].positionEstimated);
     QVERIFY(countFrames("#3d0\r") >= 1);
+}
+
+void TestNanotecController::move_pendingRun_polledUntilArrivalDespiteLongInterval()
+{
+    // A 60 s poll interval: at that pace the arrival would be seen up to a minute late. While
+    // a run is pending the drives are read at the poller's expedited pace instead, and once
+    // they are ready the user's interval holds again.
+    ControllerOptions options = nanotectest::fastOptions();
+    options.pollIntervalMs = 60000;
+    NanotecRig rig(options);
+    QVERIFY(rig.connect());
+    const CommandResult r = rig.run([&](RequestId id) {
+        rig.ctl->moveRelative(id, {{Axis::X, 300}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QTRY_VERIFY_WITH_TIMEOUT(rig.sim->drive(1)->ready(), 5000); // the drive is there
+    QTRY_VERIFY_WITH_TIMEOUT(!rig.ctl->status().anyMoving() && !rig.ctl->status().busy, 5000);
+    QCOMPARE(rig.ctl->status().axes[Axis::X].position, qint64(300));
+    QSignalSpy sweeps(rig.ctl, &Controller::statusChanged);
+    QVERIFY(test::staysQuiet(sweeps, 300));
+    QCOMPARE(rig.sim->drive(1)->position(), qint64(300));
 }
 
 void TestNanotecController::move_absolute_refusedUntilReferenced()
