@@ -283,8 +283,9 @@ void printUsage(const ModelInfo* model)
                       "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
                       "-write); time until the host reports it.\n"
                       "--program: a program of 1000 short relative moves on the E-LAB and "
-                      "Nanotec simulators over the paced wire: blocks per second and the gap "
-                      "between blocks at the device.\n"
+                      "Nanotec simulators over the paced wire: blocks per second and, at "
+                      "the device, the gap from an arrival to the next block's first byte "
+                      "and to its acceptance.\n"
                       "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
                       "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
                       "See docs/benchmark.md.")
