@@ -42,6 +42,7 @@ public:
     QStringList chartedAxes() const;
 
 private:
+    void clearChart();
     void fillChart(const program::ProgramPreview& preview,
                    const machine::MachineDescription& machine);
     void fillExtents(const program::ProgramPreview& preview,
