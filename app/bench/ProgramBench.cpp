@@ -25,8 +25,9 @@ constexpr int kLearnPollFramesMs = 1500;
 // - arrival: the axis came to rest after an accepted move;
 // - the next block's first byte (issue 20's gap ends there): the first frame after an arrival
 //   that is not one of the poller's status reads. The poller's frames are learnt before the
-//   program starts (learning()), so this needs no model's byte layout. A frame is seen when
-//   decoded, i.e. at its last byte; its first byte came (size - 1) character times earlier;
+//   program starts (until setLearning(false)), so no model's byte layout is needed. A frame
+//   is seen when decoded, i.e. at its last byte; its first byte came (size - 1) character
+//   times earlier;
 // - acceptance: the device accepted the move (its count of accepted moves grew), which on a
 //   Nanotec comes after the drive's set-up and read-back exchanges.
 class ArrivalSampler
