@@ -1,5 +1,6 @@
 #include "ElabCtlLine.h"
 #include <QCoreApplication>
+#include <memory>
 
 namespace stepdeck::elab {
 
@@ -66,10 +67,46 @@ void ElabCtlLine::chain(QList<ElabExchange> steps, bool continuation, std::funct
     submit(std::move(ex), continuation);
 }
 
+void ElabCtlLine::pipeline(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
+                           ErrorFn failed)
+{
+    // The steps go out back to back (ElabExchange::pipelineGroup). A step's reply is applied only
+    // while no step before it failed, so a sequence ends once: done or failed.
+    struct Progress
+    {
+        qsizetype left = 0;
+        bool failed = false;
+    };
+    auto progress = std::make_shared<Progress>(Progress{steps.size(), false});
+    const quint64 group = ElabExchangeQueue::newPipelineGroup();
+    for (ElabExchange& ex : steps) {
+        ex.pipelineGroup = group;
+        ex.onReply = [progress, handler = ex.onReply, done](const Reply& r) {
+            if (progress->failed)
+                return;
+            if (handler)
+                handler(r);
+            if (--progress->left == 0)
+                done();
+        };
+        ex.onError = [progress, failed](ErrorKind kind, const QString& message) {
+            if (progress->failed)
+                return;
+            progress->failed = true;
+            failed(kind, message);
+        };
+    }
+    if (continuation) {
+        m_queue.enqueueNext(std::move(steps)); // in order, none written before all are queued
+    } else {
+        for (ElabExchange& ex : steps)
+            m_queue.enqueue(std::move(ex));
+    }
+}
+
 void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void()> done,
                              ErrorFn failed)
 {
-    QList<ElabExchange> steps;
     ElabExchange ht = exchange(owner, encode::requestAxeState(), Expect::AxeState);
     ht.onReply = [this](const Reply& r) {
         m_axeWord = r.axeState;
@@ -80,33 +117,42 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
         setMachineWord(r.machineState);
         m_hooks.statusRead();
     };
-    steps << ht << enq;
+    QList<ElabExchange> words{ht, enq};
+    QList<ElabExchange> extras;
     if (how.temperature) {
         ElabExchange etb = exchange(owner, encode::requestTemperature(), Expect::Temperature);
         etb.onReply = [this](const Reply& r) {
             ElabCtlStatusMapper::applyTemperature(m_status, r.temperature);
         };
-        steps << etb;
+        extras << etb;
     }
     if (how.startButton) {
         // RequestStart: <ACK> pressed, <NAK> not pressed -- a NAK here is an answer, not a fault.
         ElabExchange lf = exchange(owner, encode::requestStart(), Expect::AckNak);
         lf.onReply = [this](const Reply& r) { m_status.startButton = r.kind == Reply::Kind::Ack; };
-        steps << lf;
+        extras << lf;
     }
-    for (ElabExchange& ex : steps) {
-        ex.poll = how.poll;
-        ex.tolerateStray = how.tolerant;
-        ex.droppable = !how.poll && owner != 0;
-        ex.retries = kStatusRetries; // requests are idempotent: noise costs a retry, not a fault
+    for (QList<ElabExchange>* list : {&words, &extras}) {
+        for (ElabExchange& ex : *list) {
+            ex.poll = how.poll;
+            ex.tolerateStray = how.tolerant;
+            ex.droppable = !how.poll && owner != 0;
+            ex.retries = kStatusRetries; // idempotent: noise costs a retry, not a fault
+        }
     }
-    chain(
-        steps, how.continuation,
-        [this, done] {
-            m_hooks.publish();
-            done();
-        },
-        failed);
+    auto finish = [this, done] {
+        m_hooks.publish();
+        done();
+    };
+    auto rest = [this, extras, finish, failed] { chain(extras, true, finish, failed); };
+    if (how.tolerant) {
+        // After a panic, reset or connect late replies may still come: one at a time, so a
+        // stray is skipped instead of being taken for the next read's reply.
+        chain(words, how.continuation, rest, failed);
+        return;
+    }
+    // Issue 21: both status words back to back, the extras behind them.
+    pipeline(words, how.continuation, rest, failed);
 }
 
 void ElabCtlLine::sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,

@@ -21,7 +21,8 @@ struct ElabCtlHooks
 // The request sequences of the E-LAB adapter, built from exchanges on the queue: status
 // reads, commands answered <ACK>/<NAK> (a NAK reads both status words and reports their
 // decoded bits) and the standstill pre-flight the manual demands before motion. The steps of
-// one sequence run back to back: each next step is queued ahead of other work.
+// one sequence run back to back: each next step is queued ahead of other work. A status read
+// sends its two words pipelined (both requests before the first reply, issue 21).
 class ElabCtlLine
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlLine)
@@ -64,6 +65,9 @@ public:
     void submit(ElabExchange ex, bool continuation);
     void chain(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
                ErrorFn failed);
+    // The steps go out back to back (pipelined reads), not each after the previous reply.
+    void pipeline(QList<ElabExchange> steps, bool continuation, std::function<void()> done,
+                  ErrorFn failed);
     void readStatus(RequestId owner, StatusRead how, std::function<void()> done, ErrorFn failed);
     void sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,
                      bool continuation = true);

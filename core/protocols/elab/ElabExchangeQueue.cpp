@@ -4,6 +4,7 @@
 #include "transport/Transport.h"
 #include <QtMath>
 #include <algorithm>
+#include <atomic>
 
 namespace stepdeck::elab {
 
@@ -45,6 +46,13 @@ void ElabExchangeQueue::enqueueNext(ElabExchange ex)
     pump();
 }
 
+void ElabExchangeQueue::enqueueNext(QList<ElabExchange> exs)
+{
+    for (auto it = exs.rbegin(); it != exs.rend(); ++it)
+        m_queue.push_front(std::move(*it));
+    pump();
+}
+
 void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
 {
     if (discardOutput && m_transport) {
@@ -62,8 +70,8 @@ void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
 void ElabExchangeQueue::pump()
 {
     // A loop only because a built frame may turn out empty and leave nothing in flight.
-    while (!m_held && m_transport && m_transport->isOpen() && m_inFlight.empty() &&
-           !m_queue.empty()) {
+    while (!m_held && m_transport && m_transport->isOpen() && !m_queue.empty() &&
+           mayWriteNow(m_queue.front())) {
         const qint64 room = m_queue.front().wireRoom;
         if (room > 0 && wireRoomBytes() < room) {
             armPace(m_window.nsUntilOnTheWayAtMost(kWireWindowBytes - room));
@@ -80,6 +88,26 @@ void ElabExchangeQueue::pump()
     } else {
         m_busy = busy;
     }
+}
+
+bool ElabExchangeQueue::mayWriteNow(const ElabExchange& next) const
+{
+    if (m_inFlight.empty())
+        return true;
+    // Only the rest of the group whose reads are in flight: they are queued right behind the
+    // first and written in the same pass (pump), so no reply is read in between.
+    if (next.pipelineGroup == 0 || next.expect == Expect::None || next.wireRoom > 0 || next.build ||
+        int(m_inFlight.size()) >= kMaxPipelined)
+        return false;
+    return std::all_of(m_inFlight.cbegin(), m_inFlight.cend(), [&next](const InFlight& f) {
+        return f.ex.pipelineGroup == next.pipelineGroup;
+    });
+}
+
+quint64 ElabExchangeQueue::newPipelineGroup()
+{
+    static std::atomic<quint64> next{0};
+    return ++next;
 }
 
 void ElabExchangeQueue::write(ElabExchange ex)
@@ -188,6 +216,10 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
         qCWarning(lcElab) << "stray reply with nothing pending:" << toMnemonics(reply.raw);
         return;
     }
+    if (!expectMatches(target->ex.expect, reply.kind) && skipsLostReply(reply)) {
+        handleReply(reply); // now for the read it belongs to
+        return;
+    }
     Q_EMIT trafficIn(reply.raw, target->ex.poll);
     if (!expectMatches(target->ex.expect, reply.kind)) {
         if (target->ex.tolerateStray) {
@@ -223,6 +255,33 @@ void ElabExchangeQueue::handleReply(const Reply& reply)
     if (ex.onReply)
         ex.onReply(reply);
     pump();
+}
+
+bool ElabExchangeQueue::skipsLostReply(const Reply& reply)
+{
+    // A group's reads are in flight only among themselves (mayWriteNow), so the reply's target
+    // is the front. A tolerant read skips strays instead: a late reply after a panic may look
+    // like the next read's reply.
+    if (m_inFlight.size() < 2)
+        return false;
+    const ElabExchange& first = m_inFlight.front().ex;
+    const ElabExchange& second = std::next(m_inFlight.begin())->ex;
+    if (first.pipelineGroup == 0 || second.pipelineGroup != first.pipelineGroup ||
+        first.tolerateStray || !expectMatches(second.expect, reply.kind))
+        return false;
+    ElabExchange lost = std::move(m_inFlight.front().ex);
+    m_inFlight.pop_front();
+    const QString why =
+        tr("no reply to %1 (the reply to the request behind it came)").arg(frameName(lost.frame));
+    qCInfo(lcElab) << why;
+    if (lost.retries > 0 && !lost.poll && lost.owner != kResyncOwner) {
+        // The line is in step (the next reply came): asked again, no resynchronisation.
+        --lost.retries;
+        m_queue.push_front(std::move(lost));
+    } else {
+        failExchange(lost, ErrorKind::Timeout, why);
+    }
+    return true;
 }
 
 void ElabExchangeQueue::onTimeout()

@@ -32,6 +32,13 @@ struct ElabExchange
     // Written only once this many bytes fit into the wire window (wireRoomBytes()); 0: any
     // time. A <DC2> chunk needs room for one pair and is built (build) to fill the room.
     qint64 wireRoom = 0;
+    // Reads of one group (the same non-zero id) go out back to back: the first once nothing
+    // is in flight, the others right behind it in the same pass, before any reply is read, at
+    // most kMaxPipelined in flight (issue 21: a poll's RequestAxeState and RequestMachineState).
+    // A group is never split: nothing can be written between its reads. The board answers in
+    // the order it receives and its replies are self-delimiting with distinct lead bytes, so
+    // they are still matched first in, first out. Only for idempotent reads with a reply.
+    quint64 pipelineGroup = 0;
     // Expect::None: called with an empty Reply once the bytes have left the transport (also
     // when build made nothing to send).
     std::function<void(const Reply&)> onReply;
@@ -55,6 +62,12 @@ struct ElabExchange
 // (noise in front of a reply must not cost the reply); a reply destroyed by noise then times
 // out like any lost reply. Idempotent requests are retried after resynchronisation, so
 // occasional noise is survived and only persistent garbage fails (polls miss, link lost).
+//
+// Pipelining: the reads of one group (ElabExchange::pipelineGroup) go out back to back;
+// anything else still waits until nothing is in flight, so a command or a <DC2> chunk never goes
+// out behind a read's pending reply, and stop and panic overtake as before. A reply that fits the
+// read behind the one it should answer means that read's own reply was lost: it ends like a read
+// without reply, and the reply is matched on.
 //
 // Overtaking: stop and panic are written at once, even with an exchange in flight. The board
 // answers in the order it receives, so the overtaking exchange simply joins the in-flight list
@@ -81,6 +94,8 @@ public:
     // The most of our bytes that may be beyond what the line can have carried when a frame
     // with wireRoom is written: one stream chunk (ElabCtlStream::kChunkSteps pairs).
     static constexpr qint64 kWireWindowBytes = 16;
+    // Reads of one group in flight at most: a poll's two status words.
+    static constexpr int kMaxPipelined = 2;
     // Bytes that fit into the wire window now: kWireWindowBytes less the larger of the wire
     // budget's backlog and what the transport reports still pending.
     qint64 wireRoomBytes() const;
@@ -89,6 +104,8 @@ public:
 
     void enqueue(ElabExchange ex);     // behind everything queued
     void enqueueNext(ElabExchange ex); // ahead of everything queued: the next step of a sequence
+    void enqueueNext(QList<ElabExchange> exs); // the same for several, in their order
+    static quint64 newPipelineGroup();         // a fresh id for ElabExchange::pipelineGroup
     void overtake(ElabExchange ex, bool discardOutput);
 
     // Queued (not yet written) exchanges finish with kind/message. all=false keeps
@@ -124,6 +141,9 @@ private:
     };
 
     void pump();
+    bool mayWriteNow(const ElabExchange& next) const; // one in flight, or one group's reads
+    // The reply fits the read of the same group behind the target: the target's was lost.
+    bool skipsLostReply(const Reply& reply);
     void write(ElabExchange ex);
     void onData(const QByteArray& bytes);
     void onBytesWritten(qint64 count);

@@ -12,6 +12,7 @@ private Q_SLOTS:
     void writeParameters_outOfRange_sendsNothing();
     void readParameters_returnsLastWritten_orUnsupported();
     void linkLoss_afterThreeMissedPolls();
+    void poll_bothStatusWordsRequestedBeforeTheFirstReply();
     void transportFailure_failsPendingWithLinkDown();
     void reset_withoutModemLines_failsWithReason();
     void reset_pulsesResetLine_andRereadsStatus();
@@ -185,6 +186,38 @@ void TestElabController::linkLoss_afterThreeMissedPolls()
         rig.ctl->moveRelative(id, {{Axis::X, 1}});
     });
     QCOMPARE(r.error, ErrorKind::LinkDown);
+}
+
+// Issue 21: a poll's RequestAxeState and RequestMachineState go out back to back, each poll's
+// pair before its first reply; the words are still matched to the right requests.
+void TestElabController::poll_bothStatusWordsRequestedBeforeTheFirstReply()
+{
+    ControllerOptions o = defaultOptions();
+    o.pollIntervalMs = 10;
+    Rig rig(o);
+    QVERIFY(rig.connect());
+    rig.traffic->clear();
+    QTRY_VERIFY_WITH_TIMEOUT(rig.records(TrafficRecord::Direction::In, true).size() >= 20, 5000);
+    QList<QByteArray> sequence; // "out:<HT>", "in:<HT>00#", ... in the adapter's order
+    for (const QList<QVariant>& args : *rig.traffic) {
+        const auto rec = args.at(0).value<TrafficRecord>();
+        const bool out = rec.direction == TrafficRecord::Direction::Out;
+        sequence << (out ? "out:" : "in:") + rec.bytes.left(1);
+    }
+    const QByteArray ht = "out:" + encode::requestAxeState();
+    const QByteArray enq = "out:" + encode::requestMachineState();
+    int pairs = 0;
+    for (int i = 0; i + 3 < sequence.size(); ++i) {
+        if (sequence.at(i) != ht)
+            continue;
+        QCOMPARE(sequence.at(i + 1), enq);
+        QCOMPARE(sequence.at(i + 2), QByteArray("in:") + char(ctrl::HT));
+        QCOMPARE(sequence.at(i + 3), QByteArray("in:") + char(ctrl::ENQ));
+        ++pairs;
+    }
+    QVERIFY2(pairs >= 5, qPrintable(QString::number(pairs)));
+    QCOMPARE(rig.ctl->linkState(), LinkState::Connected);
+    QVERIFY(rig.ctl->status().setupIncomplete); // the fresh board's tmInvSetup, read right
 }
 
 void TestElabController::transportFailure_failsPendingWithLinkDown()

@@ -58,6 +58,21 @@ struct Peer
     std::unique_ptr<QSignalSpy> received;
 };
 
+// The two status words of a poll as one pipeline group (ElabCtlLine::readStatus).
+QList<ElabExchange> statusWords(Peer& p, QStringList* log, bool poll = true)
+{
+    const quint64 group = ElabExchangeQueue::newPipelineGroup();
+    QList<ElabExchange> words{
+        p.make(encode::requestAxeState(), Expect::AxeState, log, "ht"),
+        p.make(encode::requestMachineState(), Expect::MachineState, log, "enq")};
+    for (ElabExchange& ex : words) {
+        ex.pipelineGroup = group;
+        ex.poll = poll;
+        ex.retries = 2;
+    }
+    return words;
+}
+
 QString errorTag(const char* tag, ErrorKind kind)
 {
     return QString::fromLatin1(tag) + QStringLiteral(":error") + QString::number(int(kind));
@@ -77,6 +92,13 @@ private Q_SLOTS:
     void timeout_failsAndSendsSynBurstThenMachineState();
     void garbage_failsProtocolAndResyncs();
     void dropQueued_keepsPollsAndInFlight();
+    void pipelineGroup_readsWrittenBackToBack_repliesMatchedInOrder();
+    void pipelineGroup_neverSplitByWorkQueuedAhead();
+    void pipelineGroup_waitsBehindAnythingOutsideIt_data();
+    void pipelineGroup_waitsBehindAnythingOutsideIt();
+    void pipelineGroup_firstReplyLost_secondStillMatchedWithoutResync_data();
+    void pipelineGroup_firstReplyLost_secondStillMatchedWithoutResync();
+    void pipelineGroup_stopOvertakesBothReads();
 };
 
 void TestElabExchangeQueue::oneInFlight_nextWrittenAfterReply()
@@ -254,6 +276,120 @@ void TestElabExchangeQueue::dropQueued_keepsPollsAndInFlight()
     QTRY_COMPARE(p.seen(), encode::requestAxeState() + encode::requestMachineState());
     p.reply("<ENQ>0000#");
     QTRY_COMPARE(log.size(), 3);
+}
+
+// Issue 21: both requests before the first reply; the board answers in order.
+void TestElabExchangeQueue::pipelineGroup_readsWrittenBackToBack_repliesMatchedInOrder()
+{
+    Peer p;
+    QStringList log;
+    for (ElabExchange& ex : statusWords(p, &log))
+        p.queue->enqueue(std::move(ex));
+    QTRY_COMPARE(p.seen(), encode::requestAxeState() + encode::requestMachineState());
+    QCOMPARE(p.queue->inFlightCount(), 2);
+    p.reply("<HT>05#<ENQ>0080#"); // both in one read
+    QTRY_COMPARE(log, (QStringList{"ht:<HT>05#", "enq:<ENQ>0080#"}));
+    QVERIFY(p.queue->isIdle());
+}
+
+// A command put at the front of the queue (the next step of a sequence) while a group's reads
+// are on their way goes out after both replies, never between the two reads: the second read's
+// status would otherwise describe the board after the command and the first before it.
+void TestElabExchangeQueue::pipelineGroup_neverSplitByWorkQueuedAhead()
+{
+    Peer p;
+    QStringList log;
+    for (ElabExchange& ex : statusWords(p, &log))
+        p.queue->enqueue(std::move(ex));
+    const QByteArray move = bytes("<FF>00000010,00000000;");
+    p.queue->enqueueNext(p.make(move, Expect::AckNak, &log, "move"));
+    const QByteArray words = encode::requestAxeState() + encode::requestMachineState();
+    QTRY_COMPARE(p.seen(), words);
+    p.reply("<HT>00#");
+    QVERIFY(test::staysQuiet(*p.received, 50)); // the move waits for the second reply too
+    p.reply("<ENQ>0000#");
+    QTRY_COMPARE(p.seen(), words + move);
+    p.reply("<ACK>");
+    QTRY_COMPARE(log, (QStringList{"ht:<HT>00#", "enq:<ENQ>0000#", "move:<ACK>"}));
+}
+
+void TestElabExchangeQueue::pipelineGroup_waitsBehindAnythingOutsideIt_data()
+{
+    QTest::addColumn<QByteArray>("first");
+    QTest::addColumn<int>("expect");
+    QTest::addColumn<QByteArray>("reply");
+    QTest::newRow("command") << bytes("<BS>00000001.") << int(Expect::AckNak) << bytes("<ACK>");
+    QTest::newRow("read of another group")
+        << encode::requestTemperature() << int(Expect::Temperature) << bytes("<ETB>19#");
+}
+
+void TestElabExchangeQueue::pipelineGroup_waitsBehindAnythingOutsideIt()
+{
+    QFETCH(QByteArray, first);
+    QFETCH(int, expect);
+    QFETCH(QByteArray, reply);
+    Peer p;
+    QStringList log;
+    ElabExchange before = p.make(first, Expect(expect), &log, "first");
+    if (Expect(expect) != Expect::AckNak)
+        before.pipelineGroup = ElabExchangeQueue::newPipelineGroup();
+    p.queue->enqueue(std::move(before));
+    for (ElabExchange& ex : statusWords(p, &log))
+        p.queue->enqueue(std::move(ex));
+    QTRY_COMPARE(p.seen(), first);
+    QVERIFY(test::staysQuiet(*p.received, 50));
+    p.device->write(reply);
+    QTRY_COMPARE(p.seen(), first + encode::requestAxeState() + encode::requestMachineState());
+}
+
+void TestElabExchangeQueue::pipelineGroup_firstReplyLost_secondStillMatchedWithoutResync_data()
+{
+    QTest::addColumn<bool>("poll");
+    QTest::newRow("poll: a miss") << true;
+    QTest::newRow("request: asked again") << false;
+}
+
+// The <HT> reply destroyed by noise: the <ENQ> reply that follows shows the line in step, so
+// the <HT> read ends at once (a poll counts a miss; a request's read is asked again) instead of
+// waiting for its timeout, and no resynchronisation is needed.
+void TestElabExchangeQueue::pipelineGroup_firstReplyLost_secondStillMatchedWithoutResync()
+{
+    QFETCH(bool, poll);
+    Peer p;
+    p.queue->setTimeoutMs(5000); // a timeout would not end the test's waits
+    QStringList log;
+    QSignalSpy resync(p.queue.get(), &ElabExchangeQueue::resyncStarted);
+    for (ElabExchange& ex : statusWords(p, &log, poll))
+        p.queue->enqueue(std::move(ex));
+    const QByteArray words = encode::requestAxeState() + encode::requestMachineState();
+    QTRY_COMPARE(p.seen(), words);
+    p.reply("<HT>0");      // cut short by noise ...
+    p.reply("<ENQ>0080#"); // ... then the second reply intact
+    if (poll) {
+        QTRY_COMPARE(log, (QStringList{errorTag("ht", ErrorKind::Timeout), "enq:<ENQ>0080#"}));
+        QVERIFY(test::staysQuiet(*p.received, 50));
+    } else {
+        QTRY_COMPARE(log, QStringList{"enq:<ENQ>0080#"});
+        QTRY_COMPARE(p.seen(), words + encode::requestAxeState());
+        p.reply("<HT>05#");
+        QTRY_COMPARE(log, (QStringList{"enq:<ENQ>0080#", "ht:<HT>05#"}));
+    }
+    QCOMPARE(resync.size(), 0);
+    QVERIFY(p.queue->isIdle());
+}
+
+void TestElabExchangeQueue::pipelineGroup_stopOvertakesBothReads()
+{
+    Peer p;
+    QStringList log;
+    for (ElabExchange& ex : statusWords(p, &log))
+        p.queue->enqueue(std::move(ex));
+    const QByteArray words = encode::requestAxeState() + encode::requestMachineState();
+    QTRY_COMPARE(p.seen(), words);
+    p.queue->overtake(p.make(encode::stopMove(), Expect::AckNak, &log, "stop"), false);
+    QTRY_COMPARE(p.seen(), words + encode::stopMove()); // at once, before any reply
+    p.reply("<HT>00#<ENQ>0000#<ACK>");
+    QTRY_COMPARE(log, (QStringList{"ht:<HT>00#", "enq:<ENQ>0000#", "stop:<ACK>"}));
 }
 
 QTEST_GUILESS_MAIN(TestElabExchangeQueue)
