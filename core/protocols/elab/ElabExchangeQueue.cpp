@@ -69,7 +69,9 @@ void ElabExchangeQueue::overtake(ElabExchange ex, bool discardOutput)
 
 void ElabExchangeQueue::pump()
 {
-    // A loop only because a built frame may turn out empty and leave nothing in flight.
+    // A loop because a built frame may turn out empty and leave nothing in flight, and because
+    // the reads of a pipeline group go out together.
+    bool wrote = false;
     while (!m_held && m_transport && m_transport->isOpen() && !m_queue.empty() &&
            mayWriteNow(m_queue.front())) {
         const qint64 room = m_queue.front().wireRoom;
@@ -80,7 +82,13 @@ void ElabExchangeQueue::pump()
         ElabExchange ex = std::move(m_queue.front());
         m_queue.pop_front();
         write(std::move(ex)); // may complete synchronously only through callbacks that pump
+        wrote = true;
     }
+    // What was written leaves the process now rather than on the event loop's next pass: the
+    // reply can come no sooner than the request is on the line (issue 21: polls back to back
+    // on the wire). Only after the loop, so a group's reads leave in one write.
+    if (wrote && m_transport && m_transport->isOpen())
+        m_transport->pushOutput();
     const bool busy = !isIdle();
     if (m_busy && !busy) {
         m_busy = false;
