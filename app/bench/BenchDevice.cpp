@@ -121,7 +121,7 @@ bool BenchDevice::start(QString* error)
                 // Both directions through a WirePacer here rather than the simulator's own
                 // output pacing, so requests and replies share one wire model.
                 const double characterUs = m_model.line.characterTimeUs();
-                auto* out = new WirePacer(characterUs, toHost, w);
+                auto* out = new WirePacer(characterUs, toHost, w, WirePacer::Delivery::WholeWrites);
                 w->fromHost = new WirePacer(
                     characterUs, [w](const QByteArray& bytes) { w->toDevice(bytes); }, w);
                 QObject::connect(w->simulator, &Simulator::transmit, out, &WirePacer::push);

@@ -73,6 +73,8 @@ Figure measurePollRate(const ModelInfo& model, bool paced)
 {
     BenchDevice::Config config;
     config.paced = paced;
+    // The device's scheduling is not the host's (a board has its own CPU), as for the panic.
+    config.realtime = true;
     BenchDevice device(model, config);
     BenchHost host;
     if (const QString error = prepare(model, &device, &host, kPollIntervalMs, false);

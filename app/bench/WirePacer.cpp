@@ -1,37 +1,36 @@
 #include "WirePacer.h"
-#include <QtMath>
+#include <cmath>
 
 namespace stepdeck::bench {
 
 WirePacer::WirePacer(double characterUs, std::function<void(const QByteArray&)> deliver,
-                     QObject* parent)
-    : QObject(parent), m_characterUs(characterUs), m_deliver(std::move(deliver)),
-      m_wire(characterUs), m_timer(this)
-{
-    m_clock.start();
-    m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &WirePacer::release);
-}
+                     QObject* parent, Delivery delivery)
+    : QObject(parent), m_characterNs(characterUs * 1000.0), m_delivery(delivery),
+      m_deliver(std::move(deliver)), m_wire(characterUs), m_wakeup([this] { release(); }, this)
+{}
 
 void WirePacer::push(const QByteArray& bytes)
 {
     if (bytes.isEmpty())
         return;
-    const double start = double(m_wire.write(bytes.size(), m_clock.nsecsElapsed())) / 1000.0;
+    const qint64 start = m_wire.write(bytes.size(), PreciseWakeup::nowNs());
     m_chunks.push_back({bytes, start});
-    if (!m_timer.isActive())
+    if (!m_wakeup.isArmed())
         release();
 }
 
 void WirePacer::release()
 {
-    const double horizon = nowUs() + kToleranceUs;
+    const qint64 horizon = PreciseWakeup::nowNs() + kCoalesceNs;
     QByteArray out;
     while (!m_chunks.empty()) {
         Chunk& chunk = m_chunks.front();
-        const qsizetype arrived = qMin<qsizetype>(
-            chunk.bytes.size(), qsizetype(qFloor((horizon - chunk.startUs) / m_characterUs)));
+        // Bytes whose last bit has arrived by the horizon.
+        qint64 arrived =
+            qMin<qint64>(chunk.bytes.size(),
+                         qint64(std::floor(double(horizon - chunk.startNs) / m_characterNs)));
+        if (m_delivery == Delivery::WholeWrites && arrived < chunk.bytes.size())
+            arrived = 0;
         if (arrived <= 0)
             break;
         out += chunk.bytes.left(arrived);
@@ -40,15 +39,16 @@ void WirePacer::release()
             continue;
         }
         chunk.bytes.remove(0, arrived);
-        chunk.startUs += m_characterUs * double(arrived);
+        chunk.startNs += qint64(m_characterNs * double(arrived));
         break;
     }
     if (!out.isEmpty())
         m_deliver(out);
-    if (!m_chunks.empty()) {
-        const double due = m_chunks.front().startUs + m_characterUs;
-        m_timer.start(qMax(0, qCeil((due - kToleranceUs - nowUs()) / 1000.0)));
-    }
+    if (m_chunks.empty())
+        return;
+    const Chunk& next = m_chunks.front();
+    const qsizetype characters = m_delivery == Delivery::WholeWrites ? next.bytes.size() : 1;
+    m_wakeup.at(next.startNs + qint64(std::ceil(m_characterNs * double(characters))));
 }
 
 } // namespace stepdeck::bench

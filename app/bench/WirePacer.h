@@ -1,9 +1,8 @@
 #pragma once
+#include "PreciseWakeup.h"
 #include "transport/WireBudget.h"
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 #include <deque>
 #include <functional>
 
@@ -11,35 +10,43 @@ namespace stepdeck::bench {
 
 // A serial wire in one direction: bytes leave back to back, each taking one character time
 // (start + data + parity + stop bits at the baud rate; core's WireBudget, the same model the
-// E-LAB stream paces by), and are delivered when their last bit would have arrived. Times run on a
-// virtual clock, so no rounding accumulates; delivery itself is quantised by Qt's millisecond
-// timers to within +-0.5 ms (kToleranceUs) of the exact time, early and late alike, without
-// busy-waiting.
+// E-LAB stream paces by), and each is delivered when its last bit has arrived -- never earlier,
+// and later only by the thread's wake-up latency (PreciseWakeup: a timerfd, no busy-waiting).
+// Bytes due within kCoalesceNs of a wake-up are delivered with it. Times run on a virtual
+// clock, so no rounding accumulates.
+//
+// Delivery: EachCharacter hands every byte on as it arrives (a board's UART interrupts per
+// character, so a device acts on the first of two requests before the second has arrived);
+// WholeWrites hands a push()'s bytes on together when the last of them has arrived (towards the
+// host, which acts only on complete replies and whose adapter hands bytes on in bunches anyway;
+// it saves the host a wake-up per character).
 class WirePacer : public QObject
 {
 public:
+    enum class Delivery { EachCharacter, WholeWrites };
+
     WirePacer(double characterUs, std::function<void(const QByteArray&)> deliver,
-              QObject* parent = nullptr);
+              QObject* parent = nullptr, Delivery delivery = Delivery::EachCharacter);
 
     void push(const QByteArray& bytes); // the bytes enter the wire now
+
+    static constexpr qint64 kCoalesceNs = 20000; // 20 us: a tenth of a character at 57600 8N2
 
 private:
     struct Chunk
     {
         QByteArray bytes;
-        double startUs = 0; // when the first remaining byte started on the wire
+        qint64 startNs = 0; // when the first remaining byte started on the wire
     };
-    static constexpr double kToleranceUs = 500;
 
     void release();
-    double nowUs() const { return double(m_clock.nsecsElapsed()) / 1000.0; }
 
-    double m_characterUs;
+    double m_characterNs;
+    Delivery m_delivery;
     std::function<void(const QByteArray&)> m_deliver;
     std::deque<Chunk> m_chunks;
     WireBudget m_wire; // when the bytes handed to the wire start and finish
-    QElapsedTimer m_clock;
-    QTimer m_timer;
+    PreciseWakeup m_wakeup;
 };
 
 } // namespace stepdeck::bench
