@@ -26,11 +26,18 @@ void WirePacer::release()
     while (!m_chunks.empty()) {
         Chunk& chunk = m_chunks.front();
         // Bytes whose last bit has arrived by the horizon.
-        qint64 arrived =
+        const qint64 arrived =
             qMin<qint64>(chunk.bytes.size(),
                          qint64(std::floor(double(horizon - chunk.startNs) / m_characterNs)));
-        if (m_delivery == Delivery::WholeWrites && arrived < chunk.bytes.size())
-            arrived = 0;
+        if (m_delivery == Delivery::WholeWrites) {
+            if (arrived < chunk.bytes.size())
+                break;
+            // Each write on its own, as late as the machine may be.
+            const QByteArray whole = std::move(chunk.bytes);
+            m_chunks.pop_front();
+            m_deliver(whole);
+            continue;
+        }
         if (arrived <= 0)
             break;
         out += chunk.bytes.left(arrived);

@@ -17,7 +17,8 @@ namespace stepdeck::bench {
 //
 // Delivery: EachCharacter hands every byte on as it arrives (a board's UART interrupts per
 // character, so a device acts on the first of two requests before the second has arrived);
-// WholeWrites hands a push()'s bytes on together when the last of them has arrived (towards the
+// WholeWrites hands each push()'s bytes on together, in a deliver() of their own, when the last
+// of them has arrived (towards the
 // host, which acts only on complete replies and whose adapter hands bytes on in bunches anyway;
 // it saves the host a wake-up per character).
 class WirePacer : public QObject

@@ -1,0 +1,7 @@
+# Parts of stepdeck-bench (app/bench) with logic of their own; the bench's figures are not tests.
+stepdeck_add_test(tst_wirepacer
+                  SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_wirepacer.cpp
+                          ${CMAKE_SOURCE_DIR}/app/bench/WirePacer.cpp
+                          ${CMAKE_SOURCE_DIR}/app/bench/PreciseWakeup.cpp
+                  LABELS unit)
+target_include_directories(tst_wirepacer PRIVATE ${CMAKE_SOURCE_DIR}/app/bench)
