@@ -144,15 +144,14 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
         m_hooks.publish();
         done();
     };
-    auto rest = [this, extras, finish, failed] { chain(extras, true, finish, failed); };
     if (how.tolerant) {
         // After a panic, reset or connect late replies may still come: one at a time, so a
         // stray is skipped instead of being taken for the next read's reply.
-        chain(words, how.continuation, rest, failed);
+        chain(words + extras, how.continuation, finish, failed);
         return;
     }
-    // Issue 21: both status words back to back, the extras behind them.
-    pipeline(words, how.continuation, rest, failed);
+    // Issue 21: the reads back to back, each before the first reply.
+    pipeline(words + extras, how.continuation, finish, failed);
 }
 
 void ElabCtlLine::sendCommand(const Op& op, const QByteArray& frame, std::function<void()> onAck,

@@ -22,7 +22,7 @@ struct ElabCtlHooks
 // reads, commands answered <ACK>/<NAK> (a NAK reads both status words and reports their
 // decoded bits) and the standstill pre-flight the manual demands before motion. The steps of
 // one sequence run back to back: each next step is queued ahead of other work. A status read
-// sends its two words pipelined (both requests before the first reply, issue 21).
+// sends its requests pipelined (all before the first reply, issue 21).
 class ElabCtlLine
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlLine)

@@ -34,7 +34,8 @@ struct ElabExchange
     qint64 wireRoom = 0;
     // Reads of one group (the same non-zero id) go out back to back: the first once nothing
     // is in flight, the others right behind it in the same pass, before any reply is read, at
-    // most kMaxPipelined in flight (issue 21: a poll's RequestAxeState and RequestMachineState).
+    // most kMaxPipelined in flight (issue 21: a poll's RequestAxeState and RequestMachineState,
+    // and every few polls RequestTemperature and RequestStart).
     // A group is never split: nothing can be written between its reads. The board answers in
     // the order it receives and its replies are self-delimiting with distinct lead bytes, so
     // they are still matched first in, first out. Only for idempotent reads with a reply.
@@ -94,8 +95,9 @@ public:
     // The most of our bytes that may be beyond what the line can have carried when a frame
     // with wireRoom is written: one stream chunk (ElabCtlStream::kChunkSteps pairs).
     static constexpr qint64 kWireWindowBytes = 16;
-    // Reads of one group in flight at most: a poll's two status words.
-    static constexpr int kMaxPipelined = 2;
+    // Reads of one group in flight at most: a poll's two status words, the temperature and the
+    // start button.
+    static constexpr int kMaxPipelined = 4;
     // Bytes that fit into the wire window now: kWireWindowBytes less the larger of the wire
     // budget's backlog and what the transport reports still pending.
     qint64 wireRoomBytes() const;
