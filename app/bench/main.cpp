@@ -299,7 +299,7 @@ void printUsage(const ModelInfo* model)
                       "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                       "DC2 feed throughput, unpaced and paced at the line rate, and "
                       "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                      "Figures only; takes 60-90 s.\n"
+                      "Figures only; takes 45-90 s.\n"
                       "Every model's status poll is also measured on its paced wire against "
                       "the limit the characters of its polls allow (E-LAB, Nanotec with 1, "
                       "3, 4 and 8 drives on one bus, EMIS). --poll-only: only the poll "
