@@ -1,4 +1,5 @@
 #include "BenchDevice.h"
+#include "PollWire.h"
 #include "WirePacer.h"
 #include "sim/PtyEndpoint.h"
 #include "sim/TrafficMeter.h"
@@ -42,13 +43,23 @@ public:
     {
         if (meter)
             meter->scan(bytes, nowNs());
-        simulator->receive(bytes);
+        if (!wire) {
+            simulator->receive(bytes);
+            return;
+        }
+        // One character at a time: the simulator answers a request as soon as it has read it,
+        // so a character behind it that crosses the reply is seen as such.
+        for (qsizetype i = 0; i < bytes.size(); ++i) {
+            wire->requestCharArrived();
+            simulator->receive(bytes.mid(i, 1));
+        }
     }
 
     Simulator* simulator = nullptr;
     PtyEndpoint* endpoint = nullptr;
     WirePacer* fromHost = nullptr; // paced only
     TrafficMeter* meter = nullptr;
+    WireCounter* wire = nullptr; // paced only
     QRandomGenerator noise;
 };
 
@@ -101,6 +112,7 @@ bool BenchDevice::start(QString* error)
     m_worker->moveToThread(&m_thread);
     Worker* w = m_worker;
     w->meter = m_meter.get();
+    w->wire = m_config.paced ? m_config.wireCounter : nullptr;
     bool ok = false;
     QMetaObject::invokeMethod(
         w,
@@ -121,10 +133,22 @@ bool BenchDevice::start(QString* error)
                 // Both directions through a WirePacer here rather than the simulator's own
                 // output pacing, so requests and replies share one wire model.
                 const double characterUs = m_model.line.characterTimeUs();
-                auto* out = new WirePacer(characterUs, toHost, w, WirePacer::Delivery::WholeWrites);
+                auto* out = new WirePacer(
+                    characterUs,
+                    [w](const QByteArray& bytes) {
+                        if (w->wire)
+                            w->wire->replyDelivered(bytes.size());
+                        w->toHost(bytes);
+                    },
+                    w, WirePacer::Delivery::WholeWrites);
                 w->fromHost = new WirePacer(
                     characterUs, [w](const QByteArray& bytes) { w->toDevice(bytes); }, w);
-                QObject::connect(w->simulator, &Simulator::transmit, out, &WirePacer::push);
+                QObject::connect(w->simulator, &Simulator::transmit, out,
+                                 [w, out](const QByteArray& bytes) {
+                                     if (w->wire)
+                                         w->wire->replyQueued(bytes.size());
+                                     out->push(bytes);
+                                 });
             } else {
                 QObject::connect(w->simulator, &Simulator::transmit, w, toHost);
             }

@@ -13,6 +13,8 @@ class TrafficMeter;
 
 namespace stepdeck::bench {
 
+class WireCounter;
+
 // Monotonic nanoseconds, comparable across threads (steady clock).
 qint64 nowNs();
 
@@ -37,6 +39,9 @@ public:
         QList<int> addresses; // SimulatorOptions::addresses (multi-drive models)
         bool paced = false;
         bool metered = false; // needs ModelInfo::streamBench
+        // Paced only: counts the characters each direction carries (PollWire.h); the host's
+        // bytes then reach the simulator one at a time. Must outlive the device.
+        WireCounter* wireCounter = nullptr;
         // The device thread asks for real-time scheduling (SCHED_FIFO), standing in for a board
         // that does not share the host's CPU: a latency measured under a CPU load then shows
         // the host's delay, not the simulator's. Needs CAP_SYS_NICE or RLIMIT_RTPRIO (root);

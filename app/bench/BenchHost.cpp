@@ -44,6 +44,8 @@ bool BenchHost::connectTo(const ModelInfo& model, const QString& port, const Opt
     ConnectionSpec spec;
     spec.port = port;
     spec.options.pollIntervalMs = options.pollIntervalMs;
+    if (!m_axisAddresses.isEmpty())
+        spec.options.axisAddresses = m_axisAddresses;
     if (options.arrivalTimeoutMs > 0)
         spec.options.arrivalTimeoutMs = options.arrivalTimeoutMs;
     if (!m_session.create(model, spec, error))

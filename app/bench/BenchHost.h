@@ -35,6 +35,9 @@ public:
     // Creates the stack on port and waits until Connected; false with *error otherwise.
     bool connectTo(const ModelInfo& model, const QString& port, const Options& options,
                    QString* error);
+    // Multi-drive models: the drive polled for each axis (ControllerOptions::axisAddresses)
+    // from the next connectTo() on; empty (the default) keeps the model's own.
+    void setAxisAddresses(const QMap<Axis, int>& addresses) { m_axisAddresses = addresses; }
     // Orderly end: close (the adapter stops what it tracks), then destroy the stack.
     void disconnect();
     bool connected() const { return m_session.linkState() == LinkState::Connected; }
@@ -63,6 +66,7 @@ public:
 private:
     ControllerSession m_session;
     QHash<RequestId, CommandResult> m_finished;
+    QMap<Axis, int> m_axisAddresses;
     qint64 m_linkLeftNs = -1;
     double m_pollRateHz = 0;
     int m_pollRateReports = 0;

@@ -3,6 +3,7 @@
 #include "GuiIdle.h"
 #include "MachineStopLatency.h"
 #include "Measurements.h"
+#include "PollWire.h"
 #include "ProgramBench.h"
 #include "SoakMain.h"
 #include "protocols/Registry.h"
@@ -55,6 +56,7 @@ struct Results
 {
     Figure poll;
     Figure pollWire;
+    QList<PollWireFigure> pollWireByModel; // every model against its wire (issue 21)
     LatencyFigure panic;
     LatencyFigure panicUnderLoad; // with loadThreads busy threads beside it (issue 21)
     int loadThreads = 0;
@@ -75,10 +77,24 @@ struct RunOptions
     int loadThreads = kDefaultLoadThreads;
     int panicRuns = 0; // > 0: both panic figures take this many runs (smoke tests)
     bool panicOnly = false;
+    bool pollOnly = false;
+    int pollWindowMs = kPollWireWindowMs;
     bool machineStopOnly = false;
     int machineStopRuns = kMachineStopRepetitions;
     bool json = false;
 };
+
+template <typename Progress>
+void measurePolls(const ModelInfo& model, const RunOptions& options, Results& r,
+                  const Progress& progress)
+{
+    progress("poll rate");
+    r.poll = measurePollRate(model, false);
+    progress("poll rate, paced");
+    r.pollWire = measurePollRate(model, true);
+    progress("poll rate against the wire, every model");
+    r.pollWireByModel = measurePollWire(options.pollWindowMs);
+}
 
 template <typename Progress>
 void measurePanicAndWire(const ModelInfo& model, const RunOptions& options, Results& r,
@@ -98,10 +114,7 @@ void measurePanicAndWire(const ModelInfo& model, const RunOptions& options, Resu
     }
     if (options.panicOnly)
         return;
-    progress("poll rate");
-    r.poll = measurePollRate(model, false);
-    progress("poll rate, paced");
-    r.pollWire = measurePollRate(model, true);
+    measurePolls(model, options, r, progress);
     progress("feed throughput");
     r.feed = measureFeedThroughput(model, false);
     progress("feed throughput, paced");
@@ -115,6 +128,10 @@ Results measureAll(const ModelInfo& model, const RunOptions& options)
             print(stderr, QStringLiteral("measuring %1 ...").arg(QLatin1String(what)));
     };
     Results r;
+    if (options.pollOnly) {
+        measurePolls(model, options, r, progress);
+        return r;
+    }
     if (!options.machineStopOnly) {
         measurePanicAndWire(model, options, r, progress);
         if (options.panicOnly)
@@ -136,7 +153,7 @@ QJsonObject latencyJson(const LatencyFigure& figure)
                        {"deviceRealtime", figure.deviceRealtime}};
 }
 
-void printJson(const Results& r, const ModelInfo& model)
+void printJson(const Results& r, const ModelInfo& model, const RunOptions& options)
 {
     QJsonArray notes;
     for (const auto& [name, note] :
@@ -164,6 +181,7 @@ void printJson(const Results& r, const ModelInfo& model)
         {"pollRateHz", json(r.poll.value, 1)},
         {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
+        {"pollWire", pollWireJson(r.pollWireByModel)},
         {"panicLatencyMs", latencyJson(r.panic)},
         {"panicLatencyUnderLoadMs", latencyJson(r.panicUnderLoad)},
         {"feedStepsPerSecond", json(r.feed.value, 0)},
@@ -172,6 +190,9 @@ void printJson(const Results& r, const ModelInfo& model)
                                    {"line", lineText(model.line)},
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
+                                   {"pollWireWindowMs", r.pollWireByModel.isEmpty()
+                                                            ? QJsonValue()
+                                                            : QJsonValue(options.pollWindowMs)},
                                    {"panicRepetitions", r.panicRuns},
                                    {"panicUnderLoadRepetitions", r.panicUnderLoadRuns},
                                    {"loadThreads", r.loadThreads},
@@ -191,6 +212,10 @@ void printPanicAndWire(const Results& r)
                       .arg(kPollIntervalMs));
     print(stdout, QStringLiteral("  poll rate, paced (wire max)  %1")
                       .arg(text(r.pollWire.value, 1, hz, r.pollWire.note)));
+    for (const QString& line : pollWireText(r.pollWireByModel))
+        print(stdout, line);
+    if (r.panicRuns == 0) // --poll-only
+        return;
     print(stdout,
           QStringLiteral("  panic latency                median %1, p99 %2  (%3 runs, %4-step "
                          "DC2 stream queued, host held by XOFF in %5)")
@@ -216,7 +241,7 @@ void printHuman(const Results& r, const ModelInfo& model)
     print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
                                  "pseudo-terminal; paced = %2 in both directions")
                       .arg(model.id, lineText(model.line)));
-    if (r.panicRuns > 0) // not with --machine-stop-only
+    if (r.panicRuns > 0 || !r.pollWireByModel.isEmpty()) // not with --machine-stop-only
         printPanicAndWire(r);
     for (const auto& [controllers, figure] : r.machineStop) {
         print(stdout, QStringLiteral("  machine STOP, %1 controller%2  median %3, p99 %4  (%5 "
@@ -240,6 +265,10 @@ bool parseOption(const QStringList& args, int* i, RunOptions* o)
         o->panicRuns = args.at(++*i).toInt(&ok, 10);
     else if (arg == QLatin1String("--panic-only"))
         o->panicOnly = true;
+    else if (arg == QLatin1String("--poll-only"))
+        o->pollOnly = true;
+    else if (arg == QLatin1String("--poll-window") && hasValue)
+        o->pollWindowMs = args.at(++*i).toInt(&ok, 10);
     else if (arg == QLatin1String("--machine-stop-only"))
         o->machineStopOnly = true;
     else if (arg == QLatin1String("--machine-stop-runs") && hasValue)
@@ -249,13 +278,15 @@ bool parseOption(const QStringList& args, int* i, RunOptions* o)
     else
         return false;
     return ok && o->loadThreads >= 0 && o->loadThreads <= 64 && o->panicRuns >= 0 &&
-           o->panicRuns <= 10000 && o->machineStopRuns > 0 && o->machineStopRuns <= 10000;
+           o->panicRuns <= 10000 && o->machineStopRuns > 0 && o->machineStopRuns <= 10000 &&
+           o->pollWindowMs >= 100 && o->pollWindowMs <= 600000;
 }
 
 void printUsage(const ModelInfo* model)
 {
     print(stdout, QStringLiteral(
                       "Usage: stepdeck-bench [--json] [--load N] [--panic-only] [--panic-runs N]\n"
+                      "       stepdeck-bench [--json] --poll-only [--poll-window MS]\n"
                       "       stepdeck-bench [--json] --machine-stop-only "
                       "[--machine-stop-runs N]\n"
                       "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
@@ -268,7 +299,12 @@ void printUsage(const ModelInfo* model)
                       "pseudo-terminal with QSerialPort: poll rate, panic latency and "
                       "DC2 feed throughput, unpaced and paced at the line rate, and "
                       "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                      "Figures only; takes 30-60 s.\n"
+                      "Figures only; takes 45-90 s.\n"
+                      "Every model's status poll is also measured on its paced wire against "
+                      "the limit the characters of its polls allow (E-LAB, Nanotec with 1, "
+                      "3, 4 and 8 drives on one bus, EMIS). --poll-only: only the poll "
+                      "figures; --poll-window MS: polls counted for MS per model (default "
+                      "3000).\n"
                       "--load N: the panic latency is measured quiet and again beside N busy "
                       "threads at normal priority (default 2). --panic-only: only those two. "
                       "--panic-runs N: N runs each instead of 20 and 100.\n"
@@ -331,7 +367,7 @@ int main(int argc, char** argv)
     }
     const Results results = measureAll(*model, options);
     if (options.json)
-        printJson(results, *model);
+        printJson(results, *model, options);
     else
         printHuman(results, *model);
     return 0;

@@ -55,3 +55,7 @@ add_dependencies(tst_cli_machine_run stepdeck-cli)
 stepdeck_add_test(tst_cli_single_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_single_machine.cpp
                   LABELS integration)
 add_dependencies(tst_cli_single_machine stepdeck-cli)
+# stepdeck-bench --poll-only: every model's poll against its paced wire (issue 21); not timed.
+stepdeck_add_test(tst_pollwire_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_pollwire_smoke.cpp
+                  LABELS integration TIMEOUT 180)
+add_dependencies(tst_pollwire_smoke stepdeck-bench)
