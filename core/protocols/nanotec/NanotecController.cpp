@@ -75,8 +75,14 @@ QString NanotecController::driveName(Axis axis) const
 
 void NanotecController::setPollInterval(int ms)
 {
+    // As given, also below the time a sweep takes: the poller starts a sweep only when none is
+    // in flight and times the interval from start to start, so a short interval means sweeps
+    // back to back, never overlapping ones; commands still go between a sweep's exchanges
+    // (NanotecStatus defers polls behind queued commands). Clamping to the sweep budget
+    // (31 characters per drive, rounded up) left the bus idle up to a third of the time when
+    // polls were asked for back to back (issue 21).
     m_userPollMs = qMax(1, ms);
-    m_poller.setInterval(qMax(m_userPollMs, sweepBudgetMs()));
+    m_poller.setInterval(m_userPollMs);
 }
 
 void NanotecController::finishWith(RequestId id, const Failure& failure, const QVariant& value)

@@ -97,6 +97,7 @@ public:
     NanotecBus* bus() const { return m_bus; }
     // Minimum sweep period the line allows for the drives that answer (19200 8N1).
     int sweepBudgetMs() const { return m_sweep.sweepBudgetMs(); }
+    int pollIntervalMs() const { return m_poller.interval(); } // start to start, as set
 
 protected:
     void applyJogVelocity(const AxisVelocities& stepsPerS) override;

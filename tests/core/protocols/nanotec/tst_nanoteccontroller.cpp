@@ -129,6 +129,13 @@ void TestNanotecController::poll_sweepsEveryDrive_reportsRate_fitsLine()
     }
     // 3 drives x ~31 characters at 19200 8N1 (0.52 ms each): about 49 ms per sweep.
     QVERIFY(m_ctl->sweepBudgetMs() >= 45 && m_ctl->sweepBudgetMs() <= 55);
+    // An interval shorter than a sweep is kept: sweeps back to back (issue 21), never clamped
+    // up to the budget, which left the bus idle between sweeps.
+    m_ctl->setPollInterval(1);
+    QCOMPARE(m_ctl->pollIntervalMs(), 1);
+    const int sweepsBefore = countFrames("#3C\r");
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames("#3C\r") >= sweepsBefore + 3, 3000);
+    m_ctl->setPollInterval(50);
     m_sim->drive(1)->setSwitches(-100000, -5); // the NC switch on X is now actuated
     QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].limitSwitch, 3000);
     QVERIFY(!m_ctl->status().axes[Axis::Y].limitSwitch);
