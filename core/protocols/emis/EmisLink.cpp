@@ -95,6 +95,9 @@ void EmisLink::pump()
     m_firstText.clear();
     Q_EMIT traffic(TrafficRecord::Direction::Out, m_current->bytes, m_current->poll);
     m_transport->write(m_current->bytes);
+    // Handed to the OS now, not on the event loop's next pass: the reply cannot come before
+    // the request is on the line (issue 21, polls back to back).
+    m_transport->pushOutput();
     m_timer.start(m_current->timeoutMs > 0 ? m_current->timeoutMs : m_defaultTimeoutMs);
 }
 

@@ -84,6 +84,9 @@ void NanotecBus::transmit()
     m_expectedKey = commandKey(r.body);
     Q_EMIT traffic(TrafficRecord::Direction::Out, frame, r.poll);
     m_transport->write(frame);
+    // Handed to the OS now, not on the event loop's next pass: the reply cannot come before
+    // the request is on the line (issue 21, polls back to back).
+    m_transport->pushOutput();
     const int timeout = r.address == kBroadcast
                             ? m_broadcastGuardMs
                             : (r.timeoutMs > 0 ? r.timeoutMs : m_defaultTimeoutMs);
