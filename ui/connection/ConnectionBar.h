@@ -105,8 +105,7 @@ private:
     LedIndicator* m_link;
     QLabel* m_rate;
     QTimer* m_replyWatch;
-    QElapsedTimer m_sinceReply;
-    QTime m_lastReply;
+    QElapsedTimer m_sinceReply; // since the last byte from the device
     bool m_overdue = false;
     bool m_reconnecting = false; // the open under way is an automatic reconnect
     LinkState m_lastState = LinkState::Disconnected;
