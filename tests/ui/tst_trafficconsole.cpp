@@ -3,6 +3,7 @@
 #include "UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
 #include <QTemporaryDir>
@@ -23,6 +24,7 @@ private Q_SLOTS:
     void hexToggle_showsHexBytes();
     void polls_hiddenByDefault_shownOnRequest();
     void pause_freezesView();
+    void refresh_onlyWhileOnTop_catchesUpWhenRaised();
     void sendLine_mnemonic_sentAsBytes();
     void sendLine_badMnemonic_notSentAndSaysWhy();
     void save_writesVisibleLines();
@@ -104,6 +106,26 @@ void TestTrafficConsole::pause_freezesView()
     QCOMPARE(console()->visibleText(), frozen);
     console()->pauseCheck()->setChecked(false);
     QVERIFY(console()->visibleText() != frozen); // everything recorded meanwhile appears
+}
+
+// Behind another tab the console draws nothing (issue 21: its 10 Hz refresh re-laid out the
+// hidden dock for nobody); brought on top it shows at once what arrived meanwhile.
+void TestTrafficConsole::refresh_onlyWhileOnTop_catchesUpWhenRaised()
+{
+    auto* dock = m_f->window->findChild<QDockWidget*>(QStringLiteral("trafficDock"));
+    QVERIFY(dock);
+    QTRY_VERIFY(!console()->isRefreshing()); // behind the Setup tab in the default layout
+    console()->hidePollsCheck()->setChecked(false);
+    const QString before = console()->visibleText();
+    const int from = m_f->statusCount;
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount - from > 5, 3000);
+    QCOMPARE(console()->visibleText(), before);
+
+    dock->raise();
+    QTRY_VERIFY(console()->isRefreshing());
+    const QString shown = console()->visibleText();
+    QVERIFY(shown.size() > before.size());
+    QVERIFY(shown.startsWith(before));
 }
 
 void TestTrafficConsole::sendLine_mnemonic_sentAsBytes()

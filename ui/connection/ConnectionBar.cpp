@@ -1,4 +1,5 @@
 #include "ConnectionBar.h"
+#include "common/ReservedSize.h"
 #include "connection/ConnectionSettings.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
@@ -57,7 +58,6 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     m_resetLabel->setBuddy(m_resetLine);
     buildOptions();
     m_connect->setMinimumWidth(110);
-    m_rate->setMinimumWidth(70);
     m_rate->setToolTip(tr("Achieved status poll rate"));
 
     layout->addWidget(new QLabel(tr("Model:"), this));
@@ -111,14 +111,21 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     connect(session, &ControllerSession::traffic, this, [this](const TrafficRecord& r) {
         if (r.direction != TrafficRecord::Direction::In)
             return;
+        // Only the monotonic clock per reply: the wall-clock time is worked out when the
+        // message needs it (QTime::currentTime's time-zone conversion, 20 times a second, was
+        // a tenth of the idle GUI thread's samples, issue 21).
         m_sinceReply.start();
-        m_lastReply = QTime::currentTime();
         if (m_overdue)
             checkReplies();
     });
     m_replyWatch->setInterval(100);
     connect(m_replyWatch, &QTimer::timeout, this, &ConnectionBar::checkReplies);
     onLinkState(LinkState::Disconnected, {});
+}
+
+QString ConnectionBar::rateText(double hz)
+{
+    return tr("%1 Hz").arg(hz, 0, 'f', 1);
 }
 
 QString ConnectionBar::portSpec() const
@@ -264,7 +271,6 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
     case LinkState::Connected:
         onConnected();
         m_sinceReply.start(); // the link was just confirmed
-        m_lastReply = QTime::currentTime();
         m_overdue = false;
         showLink(LedIndicator::State::On, tr("Connected"));
         break;
@@ -281,6 +287,10 @@ void ConnectionBar::onLinkState(LinkState state, const QString& reason)
         m_replyWatch->start();
     else
         m_replyWatch->stop();
+    // The rate changes every half second while polling: its field keeps one size (room for
+    // every text it can show for this model), so a new rate re-lays out nothing (issue 21).
+    reserveTextSize(m_rate, polled ? QStringList{tr("\u2013 Hz"), rateText(888.8)}
+                                   : QStringList{tr("\u2013 Hz"), tr("no status poll")});
     if (state == LinkState::Connected && !polled) {
         m_rate->setText(tr("no status poll"));
         m_rate->setToolTip(tr("This protocol has no status request: the controller reports only "
@@ -305,11 +315,13 @@ void ConnectionBar::checkReplies()
     if (overdue == m_overdue)
         return;
     m_overdue = overdue;
-    if (overdue)
+    if (overdue) {
+        const QTime lastReply = QTime::currentTime().addMSecs(-int(m_sinceReply.elapsed()));
         showLink(LedIndicator::State::Warning,
-                 tr("No reply since %1").arg(m_lastReply.toString(QStringLiteral("HH:mm:ss"))));
-    else
+                 tr("No reply since %1").arg(lastReply.toString(QStringLiteral("HH:mm:ss"))));
+    } else {
         showLink(LedIndicator::State::On, tr("Connected"));
+    }
 }
 
 void ConnectionBar::showLink(LedIndicator::State state, const QString& text)
@@ -329,7 +341,7 @@ void ConnectionBar::onPollRate(double hz)
 {
     if (!m_context->capabilities().statusQuery)
         return; // nothing is polled: the field keeps saying so
-    m_rate->setText(tr("%1 Hz").arg(hz, 0, 'f', 1));
+    m_rate->setText(rateText(hz));
 }
 
 } // namespace stepdeck::ui

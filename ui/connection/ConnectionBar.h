@@ -54,6 +54,8 @@ public:
     ConnectionSpec currentSpec() const;
     QPushButton* connectButton() const { return m_connect; }
     LedIndicator* linkLamp() const { return m_link; }
+    // The achieved poll rate ("20.0 Hz"); its size never follows its text.
+    QLabel* rateLabel() const { return m_rate; }
     // "Connected", "No reply since 14:03:07", "Link lost", ...: what the lamp says.
     QString linkText() const;
     // Connected, but the device has not answered for several poll intervals: shown at once
@@ -84,6 +86,7 @@ private:
     void onConnected();
     void onLinkState(LinkState state, const QString& reason);
     void onPollRate(double hz);
+    static QString rateText(double hz);
     void checkReplies();
     void showLink(LedIndicator::State state, const QString& text);
 
@@ -102,8 +105,7 @@ private:
     LedIndicator* m_link;
     QLabel* m_rate;
     QTimer* m_replyWatch;
-    QElapsedTimer m_sinceReply;
-    QTime m_lastReply;
+    QElapsedTimer m_sinceReply; // since the last byte from the device
     bool m_overdue = false;
     bool m_reconnecting = false; // the open under way is an automatic reconnect
     LinkState m_lastState = LinkState::Disconnected;

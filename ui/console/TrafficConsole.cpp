@@ -66,9 +66,11 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     layout->addLayout(sendRow);
     layout->addWidget(m_sendError);
 
-    m_refresh->setInterval(100); // batch appends: polls arrive at up to 100 records per second
+    // Batch appends: polls arrive at up to 100 records per second. The refresh runs only while
+    // the console is on screen (updateRefresh); behind another tab it would re-lay out the
+    // record count ten times a second for nobody (issue 21, idle cost).
+    m_refresh->setInterval(100);
     connect(m_refresh, &QTimer::timeout, this, &TrafficConsole::flush);
-    m_refresh->start();
     connect(m_hex, &QCheckBox::toggled, this, &TrafficConsole::rerender);
     connect(m_hidePolls, &QCheckBox::toggled, this, &TrafficConsole::rerender);
     connect(m_pause, &QCheckBox::toggled, this, [this](bool paused) {
@@ -125,8 +127,52 @@ void TrafficConsole::append(const TrafficRecord& record)
     m_records.append(record);
     if (m_records.size() > kMaxRecords)
         m_records.remove(0, m_records.size() - kMaxRecords);
-    if (accepted(record))
+    if (accepted(record)) {
         m_pending.append(record);
+        // The view keeps its newest maximumBlockCount() lines: while it is hidden or paused
+        // nothing older than those can appear, so nothing more is kept for it.
+        const qsizetype keep = m_view->maximumBlockCount();
+        if (keep > 0 && m_pending.size() > keep)
+            m_pending.remove(0, m_pending.size() - keep);
+    }
+}
+
+bool TrafficConsole::isRefreshing() const
+{
+    return m_refresh->isActive();
+}
+
+void TrafficConsole::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    updateRefresh();
+}
+
+void TrafficConsole::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event);
+    updateRefresh();
+}
+
+void TrafficConsole::setOnScreen(bool onScreen)
+{
+    m_onScreen = onScreen;
+    updateRefresh();
+}
+
+void TrafficConsole::updateRefresh()
+{
+    // A dock behind another tab stays "visible" (it is only moved off screen): the main
+    // window says whether its tab is on top (setOnScreen).
+    const bool shown = isVisible() && m_onScreen;
+    if (shown == m_refresh->isActive())
+        return;
+    if (shown) {
+        flush(); // what arrived meanwhile appears at once
+        m_refresh->start();
+    } else {
+        m_refresh->stop();
+    }
 }
 
 void TrafficConsole::flush()

@@ -36,6 +36,8 @@ public:
     QCheckBox* pauseCheck() const { return m_pause; }
     QLabel* sendError() const { return m_sendError; }
     bool saveToFile(const QString& path, QString* error) const;
+    // Whether the view is refreshed from its timer now: only while the console is on screen.
+    bool isRefreshing() const;
 
 public Q_SLOTS:
     void append(const stepdeck::TrafficRecord& record);
@@ -43,12 +45,19 @@ public Q_SLOTS:
     void clear();
     void saveAs();
     void flush(); // shows what arrived since the last refresh
+    // Whether the console's tab is on top (QDockWidget::visibilityChanged); default true.
+    void setOnScreen(bool onScreen);
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
     bool accepted(const TrafficRecord& record) const;
     void rerender();
     void appendToView(const QList<TrafficRecord>& records);
     void onResult(const CommandResult& result);
+    void updateRefresh(); // the refresh timer runs while the console is on screen
 
     MachineContext* m_context;
     QList<TrafficRecord> m_records;
@@ -63,6 +72,7 @@ private:
     QLabel* m_count;
     QTimer* m_refresh;
     RequestId m_pendingSend = 0;
+    bool m_onScreen = true;
 };
 
 } // namespace stepdeck::ui

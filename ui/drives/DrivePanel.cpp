@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace stepdeck::ui {
 
@@ -19,6 +20,17 @@ QTableWidgetItem* cell(const QString& text)
     auto* item = new QTableWidgetItem(text);
     item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     return item;
+}
+
+bool sameDrive(const DriveStatus& a, const DriveStatus& b)
+{
+    return a.address == b.address && a.axes == b.axes && a.responding == b.responding &&
+           a.firmware == b.firmware && a.detail == b.detail;
+}
+
+bool sameDrives(const QList<DriveStatus>& a, const QList<DriveStatus>& b)
+{
+    return std::equal(a.cbegin(), a.cend(), b.cbegin(), b.cend(), sameDrive);
 }
 
 QTableWidget* makeTable(const QStringList& headers, QWidget* parent)
@@ -185,6 +197,11 @@ void DrivePanel::onStatus(const MachineStatus& status)
 {
     if (!m_context->isConnected())
         return; // a last status queued behind the disconnect
+    // Every poll brings the drives; the table (and its column widths, which lay out every
+    // header and cell text) is rebuilt only when what it shows changed (issue 21, idle cost).
+    if (m_shownDrives && sameDrives(*m_shownDrives, status.drives))
+        return;
+    m_shownDrives = status.drives;
     m_drives->setRowCount(int(status.drives.size()));
     m_silent = 0;
     for (int r = 0; r < status.drives.size(); ++r) {
@@ -216,6 +233,7 @@ void DrivePanel::onLinkState(LinkState state)
     // Without a link the last answers say nothing about the drives any more.
     if (state == LinkState::Disconnected) {
         m_drives->setRowCount(0);
+        m_shownDrives.reset();
         m_silent = 0;
     }
     updateEnabled();

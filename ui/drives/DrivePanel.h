@@ -3,6 +3,7 @@
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
+#include <optional>
 
 class QLabel;
 class QProgressBar;
@@ -76,6 +77,8 @@ private:
     int m_scanLast = 0;
     bool m_scanCancelled = false;
     QVariantList m_foundDrives;
+    // The drives the table shows (nullopt: none shown since the link came up).
+    std::optional<QList<DriveStatus>> m_shownDrives;
     int m_silent = 0;
 };
 

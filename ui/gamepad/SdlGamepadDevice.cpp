@@ -28,11 +28,25 @@ SdlGamepadDevice::SdlGamepadDevice(QObject* parent) : GamepadDevice(parent)
                       .arg(QString::fromUtf8(SDL_GetError()));
         return;
     }
-    m_timer.setInterval(10);
+    m_timer.setInterval(kIdlePollMs);
     connect(&m_timer, &QTimer::timeout, this, &SdlGamepadDevice::poll);
     m_timer.start();
     for (int i = 0; i < SDL_NumJoysticks() && !m_handle; ++i)
         openDevice(i);
+}
+
+int SdlGamepadDevice::pollIntervalMs() const
+{
+    return m_timer.isActive() ? m_timer.interval() : 0;
+}
+
+void SdlGamepadDevice::followDevice()
+{
+    // A held stick is sampled every 10 ms; without a device only a plug-in is waited for,
+    // which a few polls a second notice as well (SDL queues the device-added event).
+    const int interval = m_handle ? kSamplePollMs : kIdlePollMs;
+    if (m_timer.interval() != interval)
+        m_timer.setInterval(interval);
 }
 
 SdlGamepadDevice::~SdlGamepadDevice()
@@ -67,6 +81,7 @@ void SdlGamepadDevice::openDevice(int deviceIndex)
         m_axes = QVector<double>(qMax(0, SDL_JoystickNumAxes(j)), 0.0);
         m_buttons = QVector<bool>(qMax(0, SDL_JoystickNumButtons(j)), false);
     }
+    followDevice();
     Q_EMIT connectedChanged(true);
 }
 
@@ -82,6 +97,7 @@ void SdlGamepadDevice::closeDevice()
     m_instance = -1;
     m_axes.fill(0.0);
     m_buttons.fill(false);
+    followDevice();
     Q_EMIT connectedChanged(false);
 }
 

@@ -7,7 +7,8 @@
 namespace stepdeck::ui {
 
 // SDL2's game-controller API (joystick API for devices SDL has no mapping for). SDL runs
-// without a window here, so events are polled from a timer and background events allowed.
+// without a window here, so events are polled from a timer and background events allowed:
+// every 10 ms while a device is open, a few times a second while none is (hot-plug).
 // The first device plugged in is used; unplugging it reports disconnected at once.
 class SdlGamepadDevice : public GamepadDevice
 {
@@ -24,7 +25,14 @@ public:
     bool button(int index) const override { return m_buttons.value(index); }
     QString backendError() const override { return m_error; }
 
+    // SDL is polled every kSamplePollMs while a device is open, every kIdlePollMs while
+    // waiting for one to be plugged in (0: not polled, SDL failed to start).
+    static constexpr int kSamplePollMs = 10;
+    static constexpr int kIdlePollMs = 250;
+    int pollIntervalMs() const;
+
 private:
+    void followDevice(); // the poll interval for having a device or not
     void poll();
     void openDevice(int deviceIndex);
     void closeDevice();

@@ -1,7 +1,7 @@
 #include "JogPanel.h"
 #include "common/ConnectionGate.h"
 #include "common/ElidedLabel.h"
-#include "common/StyleSheet.h"
+#include "common/IfChanged.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogAxisMap.h"
 #include "jog/JogController.h"

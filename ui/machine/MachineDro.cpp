@@ -1,6 +1,6 @@
 #include "MachineDro.h"
 #include "common/ElidedLabel.h"
-#include "common/StyleSheet.h"
+#include "common/IfChanged.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineWorkOffsets.h"

@@ -1,5 +1,6 @@
 #include "MachineReferenceRows.h"
 #include "MachineContext.h"
+#include "common/IfChanged.h"
 #include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
@@ -111,15 +112,15 @@ void MachineReferenceRows::refresh()
         const bool live = s && s->isCreated() && s->linkState() == LinkState::Connected;
         if (!live) {
             led->setState(LedIndicator::State::Unknown);
-            led->setToolTip(tr("unknown (no link)"));
+            setToolTipIfChanged(led, tr("unknown (no link)"));
         } else if (m_running.contains(a.name)) {
             led->setState(LedIndicator::State::Warning);
-            led->setToolTip(tr("referencing\u2026"));
+            setToolTipIfChanged(led, tr("referencing\u2026"));
         } else {
             const bool referenced =
                 m->axisStatus(a).known == machine::PositionKnowledge::Referenced;
             led->setOn(referenced);
-            led->setToolTip(referenced ? tr("referenced") : tr("not referenced"));
+            setToolTipIfChanged(led, referenced ? tr("referenced") : tr("not referenced"));
         }
     }
 }

@@ -1,6 +1,6 @@
 #include "MessageLine.h"
 #include "common/ElidedLabel.h"
-#include "common/StyleSheet.h"
+#include "common/IfChanged.h"
 #include "messages/StatusMessages.h"
 #include <QHBoxLayout>
 #include <QToolButton>

@@ -15,6 +15,8 @@ DroValueLabel::DroValueLabel(QWidget* parent) : QLabel(parent), m_digits(font())
 
 void DroValueLabel::setDigitFont(const QFont& font)
 {
+    if (font == m_digits)
+        return;
     m_digits = font;
     updateGeometry();
     update();
@@ -30,6 +32,8 @@ void DroValueLabel::setUnit(const QString& unit)
 
 void DroValueLabel::setReservedText(const QString& text)
 {
+    if (text == m_reserved)
+        return; // set on every status poll: the same text must not relayout and repaint
     m_reserved = text;
     updateGeometry();
     update();

@@ -2,8 +2,8 @@
 #include "common/ConnectionGate.h"
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
+#include "common/IfChanged.h"
 #include "common/LayoutItems.h"
-#include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineGoTo.h"
@@ -191,7 +191,7 @@ void PositionPanel::setState(const Row& row, const QString& state, const QString
         row.state,
         QStringLiteral("QLabel { %1 border-radius: 3px; font-weight: bold; padding: 2px; }")
             .arg(style));
-    row.state->setToolTip(tip);
+    setToolTipIfChanged(row.state, tip);
     setStyleSheetIfChanged(row.value,
                            QStringLiteral("QLabel { background: #101418; color: %1;"
                                           " border-radius: 4px; padding: 2px 8px; }")
@@ -215,21 +215,23 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
                                                   : QStringLiteral("\u2248-0000000"));
     if (u.workOffset != 0) {
         row.value->setUnit(tr("%1 work").arg(m_context->unitName(axis)));
-        row.value->setToolTip(tr("Work position: the machine position minus the work zero of %1 "
-                                 "(machine %2 %3)")
-                                  .arg(axisName(axis))
-                                  .arg(u.workOffset)
-                                  .arg(m_context->machineUnitName()));
+        setToolTipIfChanged(row.value,
+                            tr("Work position: the machine position minus the work zero of %1 "
+                               "(machine %2 %3)")
+                                .arg(axisName(axis))
+                                .arg(u.workOffset)
+                                .arg(m_context->machineUnitName()));
     } else {
         row.value->setUnit(m_context->unitName(axis));
-        row.value->setToolTip(tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
+        setToolTipIfChanged(row.value,
+                            tr("Machine position (no work zero set for %1)").arg(axisName(axis)));
     }
     const AxisSoftLimit limit = m_context->softLimits().limit(axis);
     row.limits->setVisible(limit.rangeSet); // without a range the line is the position's
     if (!limit.rangeSet) {
         row.limits->setText(tr("no soft limits"));
-        row.limits->setToolTip(
-            tr("No travel range set for %1 (Soft limits\u2026)").arg(axisName(axis)));
+        setToolTipIfChanged(
+            row.limits, tr("No travel range set for %1 (Soft limits\u2026)").arg(axisName(axis)));
     } else {
         const bool active =
             m_context->isConnected() && m_context->softLimits().isActive(axis, m_context->status());
@@ -238,7 +240,8 @@ void PositionPanel::showAxis(Axis axis, const Row& row, const AxisStatus& a)
                                      : tr("limits %1..%2 not applied: not referenced")
                                            .arg(limit.minimum)
                                            .arg(limit.maximum));
-        row.limits->setToolTip(
+        setToolTipIfChanged(
+            row.limits,
             active ? tr("Soft limits of %1 in machine %2: jog stops and moves are refused "
                         "there")
                          .arg(axisName(axis))

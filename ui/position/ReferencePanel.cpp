@@ -1,5 +1,6 @@
 #include "ReferencePanel.h"
 #include "common/ElidedLabel.h"
+#include "common/IfChanged.h"
 #include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
@@ -268,13 +269,13 @@ void ReferencePanel::onStatus(const MachineStatus& status)
         LedIndicator* led = it.value().led;
         if (!live) {
             led->setState(LedIndicator::State::Unknown);
-            led->setToolTip(tr("unknown (no link)"));
+            setToolTipIfChanged(led, tr("unknown (no link)"));
         } else if (running) {
             led->setState(LedIndicator::State::Warning);
-            led->setToolTip(tr("referencing\u2026"));
+            setToolTipIfChanged(led, tr("referencing\u2026"));
         } else {
             led->setOn(a.referenced);
-            led->setToolTip(a.referenced ? tr("referenced") : tr("not referenced"));
+            setToolTipIfChanged(led, a.referenced ? tr("referenced") : tr("not referenced"));
         }
     }
     // "All selected axes are referenced" holds only while they are.

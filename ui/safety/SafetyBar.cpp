@@ -1,6 +1,6 @@
 #include "SafetyBar.h"
 #include "common/ElidedLabel.h"
-#include "common/StyleSheet.h"
+#include "common/IfChanged.h"
 #include "machine/MachineContext.h"
 #include "protocols/Registry.h"
 #include "safety/SafetyBanner.h"

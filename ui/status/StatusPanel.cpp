@@ -1,6 +1,6 @@
 #include "StatusPanel.h"
+#include "common/IfChanged.h"
 #include "common/LedIndicator.h"
-#include "common/StyleSheet.h"
 #include "machine/MachineContext.h"
 #include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"

@@ -239,8 +239,10 @@ void MainWindow::buildDocks()
         addDock(m_charts, tr("Charts"), QStringLiteral("chartsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(setup, traffic);
     tabifyDockWidget(traffic, charts);
-    // Charts behind another tab are not redrawn (issue 10, idle cost).
+    // Charts and the traffic view behind another tab are not redrawn (issues 10 and 21, idle
+    // cost); they catch up when their tab comes on top.
     connect(charts, &QDockWidget::visibilityChanged, m_charts, &ChartsPanel::setOnScreen);
+    connect(traffic, &QDockWidget::visibilityChanged, m_console, &TrafficConsole::setOnScreen);
     m_recordsDock =
         addDock(m_records, tr("Records"), QStringLiteral("recordsDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(charts, m_recordsDock);

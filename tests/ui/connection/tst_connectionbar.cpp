@@ -12,6 +12,7 @@
 #include "setup/SetupPage.h"
 #include "sim/PtyEndpoint.h"
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 
@@ -34,6 +35,7 @@ private Q_SLOTS:
     void silentDevice_replyOverdue_amberBeforeLinkLost();
     void failedConnect_thenConnected_oldErrorCleared();
     void controlsNeedingALink_disabledWhileDisconnected();
+    void pollRate_newRate_shownWithoutRelayout();
 
 private:
     bool startPtyDevice();
@@ -208,6 +210,39 @@ void TestConnectionBar::controlsNeedingALink_disabledWhileDisconnected()
     QTRY_VERIFY(!m_f->window->context()->isConnected());
     wrong = check(false);
     QVERIFY2(wrong.isEmpty(), qPrintable(QStringLiteral("enabled after disconnect: ") + wrong));
+}
+
+// The achieved rate changes every half second while polling: the field shows each new rate
+// and keeps its size, so the bar (and with it the window and its docks) is not re-laid out
+// (issue 21, idle cost).
+void TestConnectionBar::pollRate_newRate_shownWithoutRelayout()
+{
+    QVERIFY(m_f->connectSim());
+    ui::ConnectionBar* bar = m_f->window->connectionBar();
+    QTRY_COMPARE(bar->linkText(), QStringLiteral("Connected"));
+    QCoreApplication::sendPostedEvents();
+    const QSize size = bar->rateLabel()->size();
+    int layoutRequests = 0;
+    struct Filter : QObject
+    {
+        int* count;
+        explicit Filter(int* c) : count(c) {}
+        bool eventFilter(QObject*, QEvent* e) override
+        {
+            if (e->type() == QEvent::LayoutRequest)
+                ++*count;
+            return false;
+        }
+    } filter(&layoutRequests);
+    bar->installEventFilter(&filter);
+    for (const double hz : {17.0, 123.4, 9.5}) {
+        Q_EMIT m_f->session->pollRateChanged(hz);
+        QCOMPARE(bar->rateLabel()->text(), QStringLiteral("%1 Hz").arg(hz, 0, 'f', 1));
+        QCoreApplication::sendPostedEvents();
+    }
+    bar->removeEventFilter(&filter);
+    QCOMPARE(layoutRequests, 0);
+    QCOMPARE(bar->rateLabel()->size(), size);
 }
 
 QTEST_MAIN(TestConnectionBar)

@@ -10,3 +10,6 @@ foreach(_t tst_referenceprogress tst_gotowidget)
                     ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
+# The DRO digits' box: unchanged values cost no relayout and no repaint (issue 21).
+stepdeck_add_test(tst_drovaluelabel SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drovaluelabel.cpp
+                  LABELS ui LIBS stepdeck_ui)
