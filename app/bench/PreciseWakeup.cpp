@@ -48,6 +48,7 @@ void PreciseWakeup::at(qint64 monotonicNs)
     spec.it_value.tv_nsec = long(ns % kNsPerSecond);
     ::timerfd_settime(m_fd, TFD_TIMER_ABSTIME, &spec, nullptr);
     m_armed = true;
+    m_armedForNs = ns > nowNs() ? ns : 0;
 }
 
 void PreciseWakeup::cancel()
@@ -63,6 +64,10 @@ void PreciseWakeup::onReadable()
     if (::read(m_fd, &expirations, sizeof expirations) != sizeof expirations)
         return; // disarmed or re-armed since it became readable
     m_armed = false;
+    if (m_armedForNs > 0) {
+        const qint64 late = qBound<qint64>(0, nowNs() - m_armedForNs, kMaxLatencyNs);
+        m_latencyNs += (late - m_latencyNs) / 16;
+    }
     m_fire();
 }
 

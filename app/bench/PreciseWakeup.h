@@ -23,6 +23,11 @@ public:
     void at(qint64 monotonicNs); // re-arms; a time in the past fires at once
     void cancel();
     bool isArmed() const { return m_armed; }
+    // How late the wake-ups came, on average (an exponential mean over the last ~16 whose time
+    // was still ahead when armed), at most kMaxLatencyNs: a caller that wants to be on time on
+    // average arms this much early.
+    qint64 latencyNs() const { return m_latencyNs; }
+    static constexpr qint64 kMaxLatencyNs = 100000;
 
 private:
     void onReadable();
@@ -31,6 +36,8 @@ private:
     int m_fd = -1;
     QSocketNotifier* m_notifier = nullptr;
     bool m_armed = false;
+    qint64 m_armedForNs = 0; // the time armed for, when it was still ahead; 0 otherwise
+    qint64 m_latencyNs = 0;
 };
 
 } // namespace stepdeck::bench

@@ -10,10 +10,13 @@ namespace stepdeck::bench {
 
 // A serial wire in one direction: bytes leave back to back, each taking one character time
 // (start + data + parity + stop bits at the baud rate; core's WireBudget, the same model the
-// E-LAB stream paces by), and each is delivered when its last bit has arrived -- never earlier,
-// and later only by the thread's wake-up latency (PreciseWakeup: a timerfd, no busy-waiting).
-// Bytes due within kCoalesceNs of a wake-up are delivered with it. Times run on a virtual
-// clock, so no rounding accumulates.
+// E-LAB stream paces by), and each is delivered when its last bit has arrived. The wake-ups are
+// precise (PreciseWakeup: a timerfd, no busy-waiting) but come some tens of microseconds late
+// on a loaded or virtual machine; the pacer arms them early by their measured mean latency
+// (PreciseWakeup::latencyNs, at most 100 us), so deliveries are on time on average and each
+// within about that latency of its exact time, early or late, instead of always late. Bytes due
+// within kCoalesceNs of a wake-up are delivered with it. Times run on a virtual clock, so no
+// rounding accumulates.
 //
 // Delivery: EachCharacter hands every byte on as it arrives (a board's UART interrupts per
 // character, so a device acts on the first of two requests before the second has arrived);

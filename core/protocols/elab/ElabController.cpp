@@ -225,7 +225,14 @@ void ElabController::startPoll()
     how.temperature = !quiet && m_pollCount % kTemperatureEveryNthPoll == 1;
     how.startButton = !quiet && m_pollCount % kStartButtonEveryNthPoll == 0;
     m_line.readStatus(
-        0, how, [this] { m_poller.pollFinished(true); },
+        0, how,
+        [this] {
+            m_poller.pollFinished(true);
+            // Already due (an interval shorter than a poll): the next poll's requests leave
+            // now, ahead of this one's publication (ElabCtlLine::readStatus) and an event-loop
+            // pass (issue 21, polls back to back). Queued commands still go first.
+            startPoll();
+        },
         [this](ErrorKind kind, const QString&) {
             // Cancelled by panic/stop is not a missed reply; timeouts and garbage are.
             m_poller.pollFinished(kind != ErrorKind::Timeout && kind != ErrorKind::Protocol);

@@ -140,7 +140,14 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
             ex.retries = kStatusRetries; // idempotent: noise costs a retry, not a fault
         }
     }
-    auto finish = [this, done] {
+    // A poll's done() may write the next poll (ElabController::startPoll): that goes first, the
+    // publication after. A request's result follows its status publication.
+    auto finish = [this, done, poll = how.poll] {
+        if (poll) {
+            done();
+            m_hooks.publish();
+            return;
+        }
         m_hooks.publish();
         done();
     };

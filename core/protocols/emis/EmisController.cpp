@@ -279,6 +279,10 @@ void EmisController::onPollDue()
         // A <BEL> is a refusal (read as "busy" while a motor moves), so the board is there:
         // only silence and garbage count towards link loss. The inputs keep their last levels.
         m_poller.pollFinished(levels || res.outcome == EmisLink::Outcome::Refused);
+        // Already due (an interval shorter than the exchange): the next @IG leaves now, ahead
+        // of this one's publication and an event-loop pass (issue 21, polls back to back).
+        if (m_poller.isDue())
+            onPollDue();
         if (levels)
             publish();
     };
