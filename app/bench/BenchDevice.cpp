@@ -40,15 +40,19 @@ public:
     }
     void toDevice(const QByteArray& bytes)
     {
+        const qint64 arrivedNs = nowNs();
         if (meter)
-            meter->scan(bytes, nowNs());
+            meter->scan(bytes, arrivedNs);
         simulator->receive(bytes);
+        if (received)
+            received(simulator, arrivedNs);
     }
 
     Simulator* simulator = nullptr;
     PtyEndpoint* endpoint = nullptr;
     WirePacer* fromHost = nullptr; // paced only
     TrafficMeter* meter = nullptr;
+    std::function<void(Simulator*, qint64)> received;
     QRandomGenerator noise;
 };
 
@@ -101,6 +105,7 @@ bool BenchDevice::start(QString* error)
     m_worker->moveToThread(&m_thread);
     Worker* w = m_worker;
     w->meter = m_meter.get();
+    w->received = m_config.received;
     bool ok = false;
     QMetaObject::invokeMethod(
         w,
