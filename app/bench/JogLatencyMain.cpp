@@ -117,7 +117,7 @@ QString figureText(const QJsonObject& f)
 QStringList jogLatencyText(const QJsonObject& figures)
 {
     const QJsonObject c = figures.value("conditions").toObject().value("jog").toObject();
-    QStringList lines{QStringLiteral("  jog latency (%1 platform, %2 pty, %3 presses held %4 ms; "
+    QStringList lines{QStringLiteral("  jog latency (%1 platform, pty %2, %3 presses held %4 ms; "
                                      "at the device)")
                           .arg(c.value("platform").toString(), c.value("wire").toString())
                           .arg(c.value("presses").toInt())
