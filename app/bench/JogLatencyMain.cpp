@@ -125,7 +125,7 @@ QStringList jogLatencyText(const QJsonObject& figures)
     const QJsonObject perModel = figures.value("jogLatency").toObject();
     for (auto it = perModel.constBegin(); it != perModel.constEnd(); ++it) {
         const QJsonObject m = it.value().toObject();
-        lines << QStringLiteral("    %1 press -> first jog frame    %2")
+        lines << QStringLiteral("    %1 press -> first jog frame   %2")
                      .arg(it.key(), -8)
                      .arg(figureText(m.value("pressMs").toObject()))
               << QStringLiteral("    %1 release -> end of the jog  %2")
