@@ -41,18 +41,21 @@ public:
     }
     void toDevice(const QByteArray& bytes)
     {
+        const qint64 arrivedNs = nowNs();
         if (meter)
-            meter->scan(bytes, nowNs());
+            meter->scan(bytes, arrivedNs);
         if (!wire) {
             simulator->receive(bytes);
-            return;
+        } else {
+            // One character at a time: the simulator answers a request as soon as it has read
+            // it, so a character behind it that crosses the reply is seen as such.
+            for (qsizetype i = 0; i < bytes.size(); ++i) {
+                wire->requestCharArrived();
+                simulator->receive(bytes.mid(i, 1));
+            }
         }
-        // One character at a time: the simulator answers a request as soon as it has read it,
-        // so a character behind it that crosses the reply is seen as such.
-        for (qsizetype i = 0; i < bytes.size(); ++i) {
-            wire->requestCharArrived();
-            simulator->receive(bytes.mid(i, 1));
-        }
+        if (received)
+            received(simulator, arrivedNs);
     }
 
     Simulator* simulator = nullptr;
@@ -60,6 +63,7 @@ public:
     WirePacer* fromHost = nullptr; // paced only
     TrafficMeter* meter = nullptr;
     WireCounter* wire = nullptr; // paced only
+    std::function<void(Simulator*, qint64)> received;
     QRandomGenerator noise;
 };
 
@@ -113,6 +117,7 @@ bool BenchDevice::start(QString* error)
     Worker* w = m_worker;
     w->meter = m_meter.get();
     w->wire = m_config.paced ? m_config.wireCounter : nullptr;
+    w->received = m_config.received;
     bool ok = false;
     QMetaObject::invokeMethod(
         w,

@@ -49,6 +49,10 @@ public:
         bool realtime = false;
         // Once, in the device thread, before the terminal opens.
         std::function<void(Simulator*)> prepare;
+        // In the device thread, after each chunk of host bytes was handed to the simulator, with
+        // the steady-clock time the chunk arrived (paced: when its last bit would have): what
+        // the device decoded from it is then in Simulator::receivedFrames() and its probes.
+        std::function<void(Simulator*, qint64 arrivedNs)> received;
     };
 
     // A soak or replug run's device: the simulator as the model's soak profile wants it.

@@ -8,24 +8,6 @@
 namespace stepdeck::bench {
 
 namespace {
-// What the device wants written before it moves (ModelInfo::setupBeforeMotion), at the schema
-// defaults: the E-LAB simulator powers on with setup incomplete and refuses a feed stream
-// until its ramp and feed parameters are written.
-ParameterSet setupParameters(const ModelInfo& model)
-{
-    ParameterSet set;
-    for (const QString& name : model.setupBeforeMotion) {
-        const ParameterSpec* spec = model.schema.find(name);
-        if (!spec)
-            continue;
-        ParameterValue value;
-        for (Axis axis : model.capabilities.axes)
-            value.perAxis.insert(axis, spec->defaultValue);
-        set.insert(spec->name, value);
-    }
-    return set;
-}
-
 QVector<AxisVector> stepStream(int steps)
 {
     const AxisVector oneStep{{Axis::X, 1}}; // shared by every element (implicit sharing)
@@ -53,6 +35,21 @@ QString prepare(const ModelInfo& model, BenchDevice* device, BenchHost* host, in
 }
 
 } // namespace
+
+ParameterSet setupParameters(const ModelInfo& model)
+{
+    ParameterSet set;
+    for (const QString& name : model.setupBeforeMotion) {
+        const ParameterSpec* spec = model.schema.find(name);
+        if (!spec)
+            continue;
+        ParameterValue value;
+        for (Axis axis : model.capabilities.axes)
+            value.perAxis.insert(axis, spec->defaultValue);
+        set.insert(spec->name, value);
+    }
+    return set;
+}
 
 double percentile(QList<double> samples, double fraction)
 {

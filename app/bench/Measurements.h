@@ -1,4 +1,5 @@
 #pragma once
+#include "model/ParameterSchema.h"
 #include <QList>
 #include <QString>
 #include <optional>
@@ -32,6 +33,11 @@ struct LatencyFigure
     bool deviceRealtime = false; // every run's simulator thread ran SCHED_FIFO
     QString note;
 };
+
+// What the device wants written before it moves (ModelInfo::setupBeforeMotion), at the schema
+// defaults: the E-LAB simulator powers on with setup incomplete and refuses a feed stream or a
+// jog until its ramp and feed parameters are written. Empty for models that need nothing.
+ParameterSet setupParameters(const ModelInfo& model);
 
 // Nearest-rank percentile (fraction 0..1) and median of latency samples, in their unit.
 double percentile(QList<double> samples, double fraction);

@@ -1,6 +1,8 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "BenchUsage.h"
 #include "BusyLoad.h"
 #include "GuiIdle.h"
+#include "JogLatency.h"
 #include "MachineStopLatency.h"
 #include "Measurements.h"
 #include "PollWire.h"
@@ -65,6 +67,9 @@ struct Results
     Figure feed;
     Figure feedWire;
     QList<QPair<int, LatencyFigure>> machineStop; // controllers -> Machine::stop() latency
+    // `--jog-latency --json` of a child process (JogLatency.h); empty with jogNote otherwise.
+    QJsonObject jog;
+    QString jogNote;
 };
 
 constexpr int kMachineStopControllers[] = {1, 2, 4};
@@ -82,6 +87,8 @@ struct RunOptions
     bool machineStopOnly = false;
     int machineStopRuns = kMachineStopRepetitions;
     bool json = false;
+    QStringList jogArgs; // --jog-presses N, --jog-paced: passed on to the jog latency child
+    QString benchPath;   // this executable, for that child
 };
 
 template <typename Progress>
@@ -141,6 +148,11 @@ Results measureAll(const ModelInfo& model, const RunOptions& options)
         progress("machine STOP latency (1, 2, 4 controllers)");
         r.machineStop << qMakePair(n, measureMachineStopLatency(model, n, options.machineStopRuns));
     }
+    if (options.machineStopOnly)
+        return r;
+    // The jog panel needs a QApplication, this run has a QCoreApplication: a child measures.
+    progress("jog latency (a child process with the GUI's jog panel, offscreen)");
+    r.jog = jogLatencyFromChild(options.benchPath, options.jogArgs, &r.jogNote);
     return r;
 }
 
@@ -151,6 +163,28 @@ QJsonObject latencyJson(const LatencyFigure& figure)
                        {"samples", figure.samples},
                        {"pausedByXoff", figure.pausedByXoff},
                        {"deviceRealtime", figure.deviceRealtime}};
+}
+
+// The jog latency child's figures (JogLatency.h) in this run's object: E-LAB's press -> first
+// jog frame as jogLatencyMs, every model's figures under jogLatency by id, its conditions and
+// notes beside this run's.
+void addJogFigures(const Results& r, QJsonObject* out)
+{
+    QJsonArray notes = out->value("notes").toArray();
+    if (!r.jogNote.isEmpty())
+        notes.append(QStringLiteral("jogLatencyMs: %1").arg(r.jogNote));
+    for (const QJsonValue& note : r.jog.value("notes").toArray())
+        notes.append(note);
+    QJsonObject conditions = out->value("conditions").toObject();
+    if (r.jog.contains("conditions"))
+        conditions.insert("jog", r.jog.value("conditions").toObject().value("jog"));
+    out->insert("jogLatencyMs",
+                r.jog.contains("jogLatencyMs")
+                    ? r.jog.value("jogLatencyMs")
+                    : QJsonObject{{"median", QJsonValue()}, {"p99", QJsonValue()}, {"samples", 0}});
+    out->insert("jogLatency", r.jog.value("jogLatency").toObject());
+    out->insert("conditions", conditions);
+    out->insert("notes", notes);
 }
 
 void printJson(const Results& r, const ModelInfo& model, const RunOptions& options)
@@ -177,7 +211,7 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
                              .arg(controllers)
                              .arg(figure.note));
     }
-    const QJsonObject out{
+    QJsonObject out{
         {"pollRateHz", json(r.poll.value, 1)},
         {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
@@ -199,6 +233,7 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
                                    {"feedStreamSteps", kFeedStreamSteps}}},
         {"notes", notes},
     };
+    addJogFigures(r, &out);
     print(stdout, QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)));
 }
 
@@ -252,6 +287,10 @@ void printHuman(const Results& r, const ModelInfo& model)
                                text(figure.p99Ms, 3, ms, figure.note))
                           .arg(figure.samples));
     }
+    if (!r.jog.isEmpty())
+        print(stdout, jogLatencyText(r.jog).join(QLatin1Char('\n')));
+    else if (!r.jogNote.isEmpty())
+        print(stdout, QStringLiteral("  jog latency                  n/a (%1)").arg(r.jogNote));
 }
 // One option at args[*i] (and its value, advancing *i); false when unknown or out of range.
 bool parseOption(const QStringList& args, int* i, RunOptions* o)
@@ -275,62 +314,26 @@ bool parseOption(const QStringList& args, int* i, RunOptions* o)
         o->machineStopRuns = args.at(++*i).toInt(&ok, 10);
     else if (arg == QLatin1String("--json"))
         o->json = true;
-    else
+    else if (arg == QLatin1String("--jog-paced"))
+        o->jogArgs << arg;
+    else if (arg == QLatin1String("--jog-presses") && hasValue) {
+        const int presses = args.at(++*i).toInt(&ok, 10);
+        ok = ok && presses > 0 && presses <= 10000;
+        o->jogArgs << arg << QString::number(presses);
+    } else
         return false;
     return ok && o->loadThreads >= 0 && o->loadThreads <= 64 && o->panicRuns >= 0 &&
            o->panicRuns <= 10000 && o->machineStopRuns > 0 && o->machineStopRuns <= 10000 &&
            o->pollWindowMs >= 100 && o->pollWindowMs <= 600000;
 }
 
-void printUsage(const ModelInfo* model)
-{
-    print(stdout, QStringLiteral(
-                      "Usage: stepdeck-bench [--json] [--load N] [--panic-only] [--panic-runs N]\n"
-                      "       stepdeck-bench [--json] --poll-only [--poll-window MS]\n"
-                      "       stepdeck-bench [--json] --machine-stop-only "
-                      "[--machine-stop-runs N]\n"
-                      "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
-                      "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
-                      "       stepdeck-bench --program [--json]\n"
-                      "       stepdeck-bench --gui-idle [SECONDS] [--warmup S] "
-                      "[--poll-interval MS] [--platform xvfb|offscreen] [--json]\n"
-                      "Measures the first model with a feed stream (%1) against its "
-                      "simulator over a "
-                      "pseudo-terminal with QSerialPort: poll rate, panic latency and "
-                      "DC2 feed throughput, unpaced and paced at the line rate, and "
-                      "the machine STOP latency with 1, 2 and 4 controllers.\n"
-                      "Figures only; takes 45-90 s.\n"
-                      "Every model's status poll is also measured on its paced wire against "
-                      "the limit the characters of its polls allow (E-LAB, Nanotec with 1, "
-                      "3, 4 and 8 drives on one bus, EMIS). --poll-only: only the poll "
-                      "figures; --poll-window MS: polls counted for MS per model (default "
-                      "3000).\n"
-                      "--load N: the panic latency is measured quiet and again beside N busy "
-                      "threads at normal priority (default 2). --panic-only: only those two. "
-                      "--panic-runs N: N runs each instead of 20 and 100.\n"
-                      "--machine-stop-only: only the machine STOP latency; "
-                      "--machine-stop-runs N: N runs per machine size instead of 100.\n"
-                      "--soak N: N random commands with ~1 % injected faults (dropped, "
-                      "corrupted, delayed replies, noise, peer vanish) against every "
-                      "simulator (or M); counts crashes, hangs, axes left moving, lost and "
-                      "duplicated moves; exit 1 unless all are 0. With --machine: one "
-                      "machine of an E-LAB and a Nanotec simulator driven through "
-                      "Machine, faults on either link.\n"
-                      "--replug N: the peer vanishes N times (mid-poll, -jog, -stream, "
-                      "-write); time until the host reports it.\n"
-                      "--program: a program of 1000 short relative moves on the E-LAB and "
-                      "Nanotec simulators over the paced wire: blocks per second and, at "
-                      "the device, the gap from an arrival to the next block's first byte "
-                      "and to its acceptance.\n"
-                      "--gui-idle: CPU and RSS of the stepdeck GUI connected to "
-                      "stepdeck-sim and polling (default 20 s after 5 s warm-up, 50 ms).\n"
-                      "See docs/benchmark.md.")
-                      .arg(model ? model->displayName : QStringLiteral("none built in")));
-}
 } // namespace
 
 int main(int argc, char** argv)
 {
+    // With a QApplication of its own (the GUI's jog panel), so before the QCoreApplication.
+    if (const int code = jogLatencyMain(argc, argv); code >= 0)
+        return code;
     QCoreApplication application(argc, argv);
     const QStringList args = application.arguments().mid(1);
     if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
@@ -349,12 +352,13 @@ int main(int argc, char** argv)
             model = &m;
     }
     RunOptions options;
+    options.benchPath = application.applicationFilePath();
+    if (args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"))) {
+        printUsage(model);
+        return 0;
+    }
     for (int i = 0; i < args.size(); ++i) {
         const QString& arg = args.at(i);
-        if (arg == QLatin1String("--help") || arg == QLatin1String("-h")) {
-            printUsage(model);
-            return 0;
-        }
         if (!parseOption(args, &i, &options)) {
             print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(arg));
             return 2;

@@ -38,6 +38,10 @@ add_dependencies(tst_guiidle_smoke stepdeck-bench stepdeck-sim stepdeck)
 stepdeck_add_test(tst_panicload_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_panicload_smoke.cpp
                   LABELS integration TIMEOUT 120)
 add_dependencies(tst_panicload_smoke stepdeck-bench)
+# stepdeck-bench --jog-latency drives the GUI's jog panel offscreen (issue 21, item 4); not timed.
+stepdeck_add_test(tst_joglatency_smoke SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_joglatency_smoke.cpp
+                  LABELS integration TIMEOUT 120)
+add_dependencies(tst_joglatency_smoke stepdeck-bench)
 # The closed-loop workflow of Nanotec drives (manual 8.1) through stepdeck-cli on a pty.
 stepdeck_add_test(tst_cli_closedloop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_closedloop.cpp
                   LABELS integration TIMEOUT 300)

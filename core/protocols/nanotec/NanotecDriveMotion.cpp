@@ -154,7 +154,10 @@ void NanotecDrive::finishRun(bool chain)
     const bool positioning = m_run == Run::Position || m_run == Run::Flag;
     m_run = Run::Idle;
     m_speed = 0;
-    m_count = double(qRound64(m_count));
+    // The motor stands on a whole step, and the last fraction moves the encoder as well as the
+    // counter: a speed-mode run stopped by 'S' (every jog's end) would otherwise leave them up
+    // to half a step apart per run, until a position error after a few dozen jogs.
+    moveBy(double(qRound64(m_count)) - m_count);
     // 5.9 / 5.13: after a run the encoder position is checked against the demand position.
     if (m_params.value('U') != 0 && !m_positionError &&
         qAbs(encoderPosition() - position()) > m_params.value('X')) {

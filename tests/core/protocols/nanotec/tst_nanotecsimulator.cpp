@@ -36,6 +36,7 @@ private Q_SLOTS:
     void errorMemory_ringOf32();
     void positioning_rampsToTarget_andSendsAutoStatus();
     void positioning_manyShortMovesUnevenTicks_encoderStaysOnDemand();
+    void speedMode_manyJogsStoppedAtStartFrequency_encoderStaysOnDemand();
     void speedMode_abruptStopAtSpeed_flagsPositionError();
     void reference_external_freesSwitchAndZeroes();
     void limitSwitch_stopBehaviour_haltsOnSwitch();
@@ -212,7 +213,7 @@ void TestNanotecSimulator::positioning_manyShortMovesUnevenTicks_encoderStaysOnD
     // by default) that no real motor would have made.
     NanotecDrive drive(1);
     QRandomGenerator rng(20);
-    for (const QByteArray& body : {"!1", "p1", "s10"})
+    for (const char* body : {"!1", "p1", "s10"})
         drive.handle(body);
     for (int move = 0; move < 1000; ++move) {
         drive.handle(move % 2 ? "d0" : "d1");
@@ -224,6 +225,34 @@ void TestNanotecSimulator::positioning_manyShortMovesUnevenTicks_encoderStaysOnD
         QCOMPARE(drive.physicalPosition(), double(drive.position()));
         QVERIFY2(!decodeStatus(drive.statusWord()).positionError,
                  qPrintable(QString::number(move)));
+    }
+}
+
+void TestNanotecSimulator::speedMode_manyJogsStoppedAtStartFrequency_encoderStaysOnDemand()
+{
+    // stepdeck-bench --jog-latency: short jogs in speed mode, each ended as the adapter ends
+    // it ('o' = u, the drive ramps down, then 'S'), at uneven simulation ticks. A run stopped
+    // by 'S' ends on a fraction of a step like a positioning run: it must move the encoder as
+    // well as the counter, or the drive reports a position error (5.13, X = 2) after a few
+    // dozen jogs that no real motor would have made.
+    NanotecDrive drive(1);
+    QRandomGenerator rng(21);
+    for (const char* body : {"!2", "p1", "d1"})
+        drive.handle(body);
+    for (int jog = 0; jog < 200; ++jog) {
+        drive.handle("o1000");
+        drive.handle("A");
+        for (double t = 0; t < 0.1; t += 0.0005 + rng.bounded(0.005))
+            drive.advance(0.0005 + rng.bounded(0.005));
+        drive.handle("o400"); // u: the drive ramps down to its start frequency
+        for (int tick = 0; tick < 1000 && drive.speed() > 400; ++tick)
+            drive.advance(0.0005 + rng.bounded(0.005));
+        drive.handle("S");
+        for (int tick = 0; tick < 1000 && !drive.ready(); ++tick)
+            drive.advance(0.005);
+        QVERIFY(drive.ready());
+        QCOMPARE(drive.physicalPosition(), double(drive.position()));
+        QVERIFY2(!decodeStatus(drive.statusWord()).positionError, qPrintable(QString::number(jog)));
     }
 }
 
