@@ -2049,6 +2049,10 @@
             <source>link restarted</source>
             <translation>Verbindung neu gestartet</translation>
         </message>
+        <message>
+            <source>no reply to %1 (the reply to the request behind it came)</source>
+            <translation>keine Antwort auf %1 (die Antwort auf die Anfrage dahinter kam)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::Presentation</name>
