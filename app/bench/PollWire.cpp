@@ -50,18 +50,6 @@ constexpr PollWireCase kCases[] = {
     {"nanotec4", "nanotec", 4}, {"nanotec8", "nanotec", 8}, {"emis", "emis", 0},
 };
 
-QString lineText(const LineSettings& line)
-{
-    const char parity = line.parity == LineSettings::Parity::None   ? 'N'
-                        : line.parity == LineSettings::Parity::Even ? 'E'
-                                                                    : 'O';
-    return QStringLiteral("%1 %2%3%4")
-        .arg(line.baudRate)
-        .arg(line.dataBits)
-        .arg(QLatin1Char(parity))
-        .arg(line.stopBits);
-}
-
 // Axis -> bus address for `drives` drives at consecutive addresses from the model's lowest.
 QMap<Axis, int> busAddresses(const ModelInfo& model, int drives)
 {
@@ -122,7 +110,7 @@ PollWireFigure measureCase(const PollWireCase& c, int windowMs)
         f.note = QStringLiteral("model %1 is not built in").arg(QLatin1String(c.modelId));
         return f;
     }
-    f.line = lineText(model->line);
+    f.line = model->line.text();
     f.characterUs = model->line.characterTimeUs();
     if (c.drives > allAxes().size()) {
         f.note = QStringLiteral("a link addresses one drive per axis, at most %1 (X, Y, Z, U)")

@@ -49,11 +49,6 @@ void quiet(QtMsgType type, const QMessageLogContext&, const QString& message)
         print(stderr, message);
 }
 
-QString lineText(const LineSettings& line)
-{
-    return QStringLiteral("%1 %2N%3").arg(line.baudRate).arg(line.dataBits).arg(line.stopBits);
-}
-
 struct Results
 {
     Figure poll;
@@ -221,7 +216,7 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
         {"feedStepsPerSecond", json(r.feed.value, 0)},
         {"feedWireMaxStepsPerSecond", json(r.feedWire.value, 0)},
         {"conditions", QJsonObject{{"model", model.id},
-                                   {"line", lineText(model.line)},
+                                   {"line", model.line.text()},
                                    {"transport", "QSerialPort on a pseudo-terminal"},
                                    {"pollIntervalMs", kPollIntervalMs},
                                    {"pollWireWindowMs", r.pollWireByModel.isEmpty()
@@ -275,7 +270,7 @@ void printHuman(const Results& r, const ModelInfo& model)
     const QString ms = QStringLiteral("ms");
     print(stdout, QStringLiteral("stepdeck-bench: %1 adapter + simulator, QSerialPort on a "
                                  "pseudo-terminal; paced = %2 in both directions")
-                      .arg(model.id, lineText(model.line)));
+                      .arg(model.id, model.line.text()));
     if (r.panicRuns > 0 || !r.pollWireByModel.isEmpty()) // not with --machine-stop-only
         printPanicAndWire(r);
     for (const auto& [controllers, figure] : r.machineStop) {

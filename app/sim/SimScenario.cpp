@@ -268,21 +268,6 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
     return true;
 }
 
-namespace {
-// "57600 8N2": a line's baud rate and character frame.
-QString lineText(const LineSettings& line)
-{
-    const char parity = line.parity == LineSettings::Parity::None   ? 'N'
-                        : line.parity == LineSettings::Parity::Even ? 'E'
-                                                                    : 'O';
-    return QStringLiteral("%1 %2%3%4")
-        .arg(line.baudRate)
-        .arg(line.dataBits)
-        .arg(QLatin1Char(parity))
-        .arg(line.stopBits);
-}
-} // namespace
-
 QString simUsage()
 {
     return SimText::tr(
@@ -333,7 +318,7 @@ QString simUsage()
                "  --out FILE         also write that copy to FILE, for stepdeck-cli --machine\n"
                "  --help, --version\n")
         .arg(modelIds().join(QStringLiteral(", ")), models().first().id,
-             lineText(models().first().line));
+             models().first().line.text());
 }
 
 void applyFaults(const SimScenario& scenario, Simulator* simulator)

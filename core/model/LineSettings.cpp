@@ -16,4 +16,14 @@ QString resetLineName(LineSettings::ResetLine line)
     return line == LineSettings::ResetLine::Dtr ? QStringLiteral("dtr") : QStringLiteral("rts");
 }
 
+QString LineSettings::text() const
+{
+    const char frameParity = parity == Parity::None ? 'N' : parity == Parity::Even ? 'E' : 'O';
+    return QStringLiteral("%1 %2%3%4")
+        .arg(baudRate)
+        .arg(dataBits)
+        .arg(QLatin1Char(frameParity))
+        .arg(stopBits);
+}
+
 } // namespace stepdeck

@@ -23,6 +23,8 @@ struct LineSettings
     }
     // Microseconds one character occupies on the wire.
     double characterTimeUs() const { return 1e6 * bitsPerCharacter() / double(baudRate); }
+    // "57600 8N2": the baud rate and the character frame, as manuals write it.
+    QString text() const;
 };
 
 // "rts" / "dtr" (CLI --reset-line, settings); nullopt for anything else.
