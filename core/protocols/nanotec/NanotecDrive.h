@@ -66,6 +66,9 @@ public:
         int garble = 0;            // the next N replies get a byte destroyed
         int wrongAddress = 0;      // the next N replies carry another address
         int wrongAddressValue = 0; // 0: address + 1
+        // The next N 'ZY' replies report input 6 (the external switch, bit 0x20) inverted, as a
+        // digit of line noise inside the value can: the protocol has no checksum to catch it.
+        int switchInputNoise = 0;
         // Keeps '!101' / '!8' but does not run them on 'A' (a firmware without closed loop).
         bool closedLoopRunsIgnored = false;
         // Settings (command characters) echoed but not kept, as an invalid value would be:

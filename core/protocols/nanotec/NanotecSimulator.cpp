@@ -63,6 +63,12 @@ void NanotecSimulator::replyFromWrongAddress(int address, int count, int wrongAd
     }
 }
 
+void NanotecSimulator::flipSwitchInputInReplies(int address, int count)
+{
+    if (NanotecDrive* d = drive(address))
+        d->faults.switchInputNoise = count;
+}
+
 void NanotecSimulator::setEncoderConnected(int address, bool connected)
 {
     if (NanotecDrive* d = drive(address))
@@ -152,7 +158,16 @@ void NanotecSimulator::reply(NanotecDrive* d, int address, const NanotecDrive::A
         --d->faults.wrongAddress;
         from = d->faults.wrongAddressValue ? d->faults.wrongAddressValue : address + 1;
     }
-    QByteArray bytes = frame(from, answer);
+    NanotecDrive::Answer sent = answer;
+    if (d->faults.switchInputNoise > 0 && sent.body.startsWith("ZY")) {
+        bool ok = false;
+        const qint64 inputs = sent.body.mid(2).toLongLong(&ok);
+        if (ok) {
+            --d->faults.switchInputNoise;
+            sent.body = "ZY" + QByteArray::number(inputs ^ 0x20);
+        }
+    }
+    QByteArray bytes = frame(from, sent);
     if (d->faults.garble > 0) {
         --d->faults.garble;
         bytes[bytes.size() / 2] = char(0xB1); // a destroyed byte; the CR survives

@@ -49,6 +49,7 @@ public:
     void setDriveSilent(int address, bool silent);
     void garbleReplies(int address, int count);
     void replyFromWrongAddress(int address, int count, int wrongAddress = 0);
+    void flipSwitchInputInReplies(int address, int count); // Faults::switchInputNoise
     // Closed loop (manual 8.1, NanotecDriveClosedLoop.h): an unplugged encoder makes the
     // calibration and closed-loop reference runs fail; how long a calibration run takes.
     void setEncoderConnected(int address, bool connected);

@@ -15,6 +15,8 @@ namespace {
 // the request fails (issue 12: occasional noise is survived, persistent garbage fails).
 constexpr NanotecBus::Priority kStatusPriority = NanotecBus::Priority::Command;
 constexpr int kStatusRetries = 1;
+// 5.7: the external (limit/reference) switch sits on input 6.
+constexpr qint64 kSwitchInput = 0x20;
 } // namespace
 
 NanotecStatus::NanotecStatus(NanotecController& controller)
@@ -195,7 +197,7 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
         return;
     }
     const Axis axis = remaining.takeFirst();
-    auto request = [this, axis](const QByteArray& body, NanotecBus::Handler done) {
+    const PollRequest request = [this, axis](const QByteArray& body, NanotecBus::Handler done) {
         NanotecBus::Request r;
         r.address = m_ctl.m_drives[axis].address;
         r.body = body;
@@ -225,13 +227,36 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
                 m_ctl.m_drives[axis].position = *r2.value;
             if (!withInputs)
                 return next();
-            request("ZY", [=](O o3, const Reply& r3) {
-                if (o3 == O::Cancelled)
-                    return m_ctl.m_poller.pollFinished(true);
-                if (o3 == O::Ok && r3.value)
-                    m_ctl.m_drives[axis].inputs = *r3.value;
-                next();
-            });
+            readInputs(axis, request, next);
+        });
+    });
+}
+
+void NanotecStatus::readInputs(Axis axis, const PollRequest& request,
+                               const std::function<void()>& next)
+{
+    using O = NanotecBus::Outcome;
+    request("ZY", [=](O o, const Reply& r) {
+        if (o == O::Cancelled)
+            return m_ctl.m_poller.pollFinished(true);
+        if (o != O::Ok || !r.value)
+            return next();
+        const std::optional<qint64> held = m_ctl.m_drives[axis].inputs;
+        if (!held || ((*held ^ *r.value) & kSwitchInput) == 0) {
+            m_ctl.m_drives[axis].inputs = *r.value;
+            return next();
+        }
+        // The switch input changed. A digit of line noise inside the value changes it just
+        // as well and the protocol has no checksum: a second read must agree before a limit
+        // switch is reported (or cleared). Otherwise the last value stays until the next
+        // sweep with the inputs.
+        const qint64 first = *r.value;
+        request("ZY", [=](O o2, const Reply& r2) {
+            if (o2 == O::Cancelled)
+                return m_ctl.m_poller.pollFinished(true);
+            if (o2 == O::Ok && r2.value && ((*r2.value ^ first) & kSwitchInput) == 0)
+                m_ctl.m_drives[axis].inputs = *r2.value;
+            next();
         });
     });
 }
@@ -365,7 +390,7 @@ void NanotecStatus::updateStatus()
         if (d.inputs) {
             // 5.7: the external switch sits on input 6; a normally closed one reads low
             // when actuated. It is also the switch of the external reference run (6.6 p4).
-            const bool high = *d.inputs & 0x20;
+            const bool high = *d.inputs & kSwitchInput;
             a.limitSwitch = d.limitSwitchType == 0 ? !high : high;
             a.referenceSwitch = a.limitSwitch;
             st.raw.insert(QStringLiteral("inputs") + axisName(d.axis), *d.inputs);

@@ -37,6 +37,10 @@ private:
     Step initialiseDrive(Axis axis);
     void finishInitialising();
     void pollDrive(QList<Axis> remaining, bool withInputs, std::shared_ptr<bool> answered);
+    // One poll exchange with the drive of a sweep's axis.
+    using PollRequest = std::function<void(const QByteArray& body, NanotecBus::Handler done)>;
+    // 'ZY' (5.30); a changed switch input is read twice (noise).
+    void readInputs(Axis axis, const PollRequest& request, const std::function<void()>& next);
 
     quint64 m_sweeps = 0;
 

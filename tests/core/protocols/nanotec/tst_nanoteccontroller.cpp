@@ -18,6 +18,7 @@ private Q_SLOTS:
     void scan_findsDrives123();
     void scan_repliesLaterThanTheTimeout_stillFound();
     void poll_sweepsEveryDrive_reportsRate_fitsLine();
+    void poll_switchInputFlippedInOneReply_notReported();
     void write_verified_reachesEveryDrive();
     void write_ignoredInvalidValue_isCaughtByReadBack();
     void write_valueTheDriveDidNotKeep_notListedAsWritten();
@@ -139,6 +140,27 @@ void TestNanotecController::poll_sweepsEveryDrive_reportsRate_fitsLine()
     m_sim->drive(1)->setSwitches(-100000, -5); // the NC switch on X is now actuated
     QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].limitSwitch, 3000);
     QVERIFY(!m_ctl->status().axes[Axis::Y].limitSwitch);
+}
+
+// A digit of line noise inside a 'ZY' value can flip the switch input undetectably (no
+// checksum): one such reply must not report a limit switch (it ended CLI motions under the
+// noise test), while a switch that is really actuated still is, one read later.
+void TestNanotecController::poll_switchInputFlippedInOneReply_notReported()
+{
+    m_ctl->setPollInterval(5);
+    const QByteArray zy("#1ZY\r");
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames(zy) >= 1, 3000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().raw.contains("inputsX"), 3000);
+    QVERIFY(!m_ctl->status().axes[Axis::X].limitSwitch);
+    QSignalSpy statuses(m_ctl, &Controller::statusChanged);
+    const int before = countFrames(zy);
+    m_sim->flipSwitchInputInReplies(1, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames(zy) >= before + 4, 5000);
+    for (const QList<QVariant>& args : std::as_const(statuses))
+        QVERIFY(!args.at(0).value<MachineStatus>().axes[Axis::X].limitSwitch);
+    m_sim->drive(1)->setSwitches(-100000, -5); // now really actuated (normally closed: low)
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes[Axis::X].limitSwitch, 3000);
+    m_ctl->setPollInterval(50);
 }
 
 void TestNanotecController::write_verified_reachesEveryDrive()
