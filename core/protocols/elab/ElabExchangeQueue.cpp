@@ -86,7 +86,7 @@ void ElabExchangeQueue::pump()
     }
     // What was written leaves the process now rather than on the event loop's next pass: the
     // reply can come no sooner than the request is on the line (issue 21: polls back to back
-    // on the wire). Only after the loop, so a group's reads leave in one write.
+    // on the wire). Once after the loop: what one pass wrote leaves in one write(2).
     if (wrote && m_transport && m_transport->isOpen())
         m_transport->pushOutput();
     const bool busy = !isIdle();
