@@ -113,10 +113,7 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
         ElabCtlStatusMapper::applyAxeState(m_status, r.axeState);
     };
     ElabExchange enq = exchange(owner, encode::requestMachineState(), Expect::MachineState);
-    enq.onReply = [this](const Reply& r) {
-        setMachineWord(r.machineState);
-        m_hooks.statusRead();
-    };
+    enq.onReply = [this](const Reply& r) { setMachineWord(r.machineState); };
     QList<ElabExchange> words{ht, enq};
     QList<ElabExchange> extras;
     if (how.temperature) {
@@ -142,7 +139,11 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
     }
     // A poll's done() may write the next poll (ElabController::startPoll): that goes first, the
     // publication after. A request's result follows its status publication.
+    // The motion bookkeeping runs once every read of this status read is in: pipelined, the
+    // <ENQ> reply can come before a re-asked <HT> (a lost first reply), and words of two
+    // moments must not be judged together.
     auto finish = [this, done, poll = how.poll] {
+        m_hooks.statusRead();
         if (poll) {
             done();
             m_hooks.publish();

@@ -17,6 +17,7 @@ private Q_SLOTS:
     void timeout_resyncsWithSynBurst_data();
     void timeout_resyncsWithSynBurst();
     void stop_overtakesQueuedMoves();
+    void statusRead_firstReplyLostDuringMove_moveStaysTracked();
     void panic_discardsQueue_andMarksUnreferenced();
     void reference_zeroesPosition_andMarksReferenced();
     void feed_singleAxis_clearPositionThenFeedSteps();
@@ -199,6 +200,31 @@ void TestElabControllerMotion::timeout_resyncsWithSynBurst()
     const CommandResult r = rig.run([&](RequestId id) { rig.ctl->refreshStatus(id); });
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(rig.ctl->linkState(), LinkState::Connected);
+}
+
+// Pipelined, a status read's <ENQ> reply can come while its <HT> is asked again (the <HT> reply
+// lost). The motion bookkeeping must judge the two new words together, never the new machine
+// word with the <HT> word of the read before the move: that one showed the axes idle, the move
+// would count as finished, and the next read would stop it as motion nobody commanded.
+void TestElabControllerMotion::statusRead_firstReplyLostDuringMove_moveStaysTracked()
+{
+    ControllerOptions o = defaultOptions();
+    o.pollIntervalMs = 60000; // only the reads of this test
+    Rig rig(o);
+    QVERIFY(rig.connectAndSetup());
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->moveRelative(id, {{Axis::X, 100000}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(rig.sim->isMoving(Axis::X), 5000);
+    rig.errors->clear();
+    rig.sim->faults().dropReplies = 1; // the <HT> reply of the next read
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->refreshStatus(id); }).ok());
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->refreshStatus(id); }).ok());
+    QCOMPARE(rig.sim->countReceived(encode::stopMove()), 0);
+    QVERIFY(rig.sim->isMoving(Axis::X));
+    for (const QList<QVariant>& args : std::as_const(*rig.errors))
+        QVERIFY2(!args.at(0).toString().contains("did not command"),
+                 qPrintable(args.at(0).toString()));
+    QVERIFY(rig.ctl->status().axes.value(Axis::X).moving);
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->stop(id); }).ok());
 }
 
 void TestElabControllerMotion::stop_overtakesQueuedMoves()
