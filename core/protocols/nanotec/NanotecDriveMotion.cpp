@@ -3,6 +3,7 @@
 // repetitions and follow-up records, auto status, and the motion of the closed-loop runs.
 #include "NanotecDrive.h"
 #include <QtMath>
+#include <cmath>
 
 namespace stepdeck::nanotec {
 
@@ -156,8 +157,11 @@ void NanotecDrive::finishRun(bool chain)
     m_speed = 0;
     // The motor stands on a whole step, and the last fraction moves the encoder as well as the
     // counter: a speed-mode run stopped by 'S' (every jog's end) would otherwise leave them up
-    // to half a step apart per run, until a position error after a few dozen jogs.
-    moveBy(double(qRound64(m_count)) - m_count);
+    // to half a step apart per run, until a position error after a few dozen jogs. The step is
+    // completed in the run's direction, never taken back: a free travel ends just off its
+    // switch, and rounding back would put the motor on the switch again.
+    const double whole = m_dir > 0 ? std::ceil(m_count - 1e-6) : std::floor(m_count + 1e-6);
+    moveBy(whole - m_count);
     // 5.9 / 5.13: after a run the encoder position is checked against the demand position.
     if (m_params.value('U') != 0 && !m_positionError &&
         qAbs(encoderPosition() - position()) > m_params.value('X')) {

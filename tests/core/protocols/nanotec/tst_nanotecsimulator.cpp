@@ -40,6 +40,7 @@ private Q_SLOTS:
     void speedMode_abruptStopAtSpeed_flagsPositionError();
     void reference_external_freesSwitchAndZeroes();
     void limitSwitch_stopBehaviour_haltsOnSwitch();
+    void limitSwitch_freeTravel_endsOffTheSwitchAtUnevenTicks();
     void faults_silentGarbledWrongAddress();
     void neverSentCommands_behaveAsManualSays();
 
@@ -298,6 +299,28 @@ void TestNanotecSimulator::limitSwitch_stopBehaviour_haltsOnSwitch()
     QVERIFY(d->externalSwitchActuated()); // "Der Schalter bleibt dabei gedrueckt"
     QVERIFY(d->position() >= 250 && d->position() < 300);
     QCOMPARE(ask("#1e1\r#1ZY\r"), QByteArray("001e1\r001ZY96\r")); // NO switch: high = pressed
+}
+
+// The factory behaviour frees a limit switch after stopping on it. The run then ends on a whole
+// step: completed in the free travel's direction, never taken back onto the switch (a move
+// ended short was reported "on its limit switch" now and then in tst_machine).
+void TestNanotecSimulator::limitSwitch_freeTravel_endsOffTheSwitchAtUnevenTicks()
+{
+    QRandomGenerator rng(21);
+    for (int run = 0; run < 50; ++run) {
+        NanotecDrive drive(1);
+        drive.setSwitches(-100000, 3000);
+        for (const char* body : {"!1", "p1", "s9000", "d1", "A"})
+            drive.handle(body);
+        for (int tick = 0; tick < 100000 && !drive.ready(); ++tick)
+            drive.advance(0.0005 + rng.bounded(0.02));
+        QVERIFY(drive.ready());
+        QVERIFY2(!drive.externalSwitchActuated(),
+                 qPrintable(QStringLiteral("run %1 ended on the switch at %2")
+                                .arg(run)
+                                .arg(drive.physicalPosition())));
+        QVERIFY(drive.position() < 3000);
+    }
 }
 
 void TestNanotecSimulator::faults_silentGarbledWrongAddress()
