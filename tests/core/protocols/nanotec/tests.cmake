@@ -2,6 +2,7 @@ stepdeck_add_test(tst_nanoteccodec SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotec
 stepdeck_add_test(tst_nanotecsimulator SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecsimulator.cpp LABELS unit)
 stepdeck_add_test(tst_nanotecdriveclosedloop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecdriveclosedloop.cpp LABELS unit)
 stepdeck_add_test(tst_nanoteccontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanoteccontroller.cpp ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
+stepdeck_add_test(tst_nanotecparameterio SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecparameterio.cpp ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
 stepdeck_add_test(tst_nanotec_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotec_e2e.cpp
                   LABELS integration TIMEOUT 300)
 add_dependencies(tst_nanotec_e2e stepdeck-cli stepdeck-sim)
