@@ -1,35 +1,13 @@
 // The setters for panels that refresh on every status poll (issue 21, idle cost): the same
 // value sends the widget nothing, a new value is set as before.
+#include "EventCounter.h"
 #include "common/IfChanged.h"
 #include <QEvent>
 #include <QLabel>
 #include <QtTest>
 
 using namespace stepdeck::ui;
-
-namespace {
-// Counts one event type delivered to the watched object.
-class EventCounter : public QObject
-{
-public:
-    EventCounter(QObject* watched, QEvent::Type type) : m_type(type)
-    {
-        watched->installEventFilter(this);
-    }
-    int count = 0;
-
-protected:
-    bool eventFilter(QObject*, QEvent* event) override
-    {
-        if (event->type() == m_type)
-            ++count;
-        return false;
-    }
-
-private:
-    QEvent::Type m_type;
-};
-} // namespace
+using stepdeck::test::EventCounter;
 
 class TestIfChanged : public QObject
 {

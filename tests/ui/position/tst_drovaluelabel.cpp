@@ -2,35 +2,16 @@
 // status poll (20/s). The same values must neither re-lay out the panel nor repaint the
 // digits (issue 21: three DRO repaints and a relayout of the position dock per poll); a new
 // value does both as before.
+#include "EventCounter.h"
 #include "position/DroValueLabel.h"
 #include <QApplication>
 #include <QVBoxLayout>
 #include <QtTest>
 
 using namespace stepdeck::ui;
+using stepdeck::test::EventCounter;
 
 namespace {
-class EventCounter : public QObject
-{
-public:
-    EventCounter(QObject* watched, QEvent::Type type) : m_type(type)
-    {
-        watched->installEventFilter(this);
-    }
-    int count = 0;
-
-protected:
-    bool eventFilter(QObject*, QEvent* event) override
-    {
-        if (event->type() == m_type)
-            ++count;
-        return false;
-    }
-
-private:
-    QEvent::Type m_type;
-};
-
 void deliverPosted()
 {
     QCoreApplication::sendPostedEvents();
