@@ -185,8 +185,13 @@ Outcome endOutcome(CliMachineSession& m, const ProgramRunner& runner, const Paus
     case RunState::Failed:
         if (m.linkLost())
             return Outcome::failure(ExitLinkDown, runner.endMessage());
-        if (runner.failureKind() != ErrorKind::None)
-            return Outcome::failure(exitCodeFor(runner.failureKind()), runner.endMessage());
+        if (runner.failureKind() != ErrorKind::None) {
+            // Exit 7 says "nothing was sent" (docs/cli.md): a value refused once the run has
+            // started is a block refused by a rule, 3, whatever ran before it (issue 28).
+            const int code = exitCodeFor(runner.failureKind());
+            return Outcome::failure(code == ExitInvalidValue ? ExitRefused : code,
+                                    runner.endMessage());
+        }
         // A move the machine ended as failed may reach the runner before the request result
         // that says why: the session's last failed request tells (as for `move`), else the
         // move ended short (exit 13).

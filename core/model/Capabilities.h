@@ -80,6 +80,12 @@ struct Capabilities
     // The parameter is also the speed of positioning moves (Nanotec o, EMIS #E1): a program
     // reads it before its first G1 and writes it back before a G0 and at its end.
     bool feedRateSetsRapid = false;
+    // The feed-rate parameter is written for every axis of the controller at once (E-LAB
+    // SetFeedSpeed <FS> carries X, Y and Z in one frame): a G1 writes a rate for each.
+    bool feedRateWholeSet = false;
+    // The parameter whose schema range is M3's S (E-LAB "spindle-rpm"); null: S is not
+    // range-checked beyond the program's own 0..1000000.
+    const char* spindleSpeedParameter = nullptr;
     // What the protocol's positions count: English data, shown through
     // QCoreApplication::translate("Units", positionUnit). Step counters count "steps"; the
     // laser motor-axis protocol's positions are plain numbers 0..99999 whose unit the axis

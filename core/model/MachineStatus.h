@@ -1,5 +1,6 @@
 #pragma once
 #include "Axis.h"
+#include "ParameterSchema.h"
 #include <QJsonObject>
 #include <QMetaType>
 #include <QVariantMap>
@@ -63,6 +64,11 @@ struct MachineStatus
     std::optional<double> temperatureCelsius;
     QMap<Axis, AxisStatus> axes;
     QList<DriveStatus> drives;
+    // The parameter values the host knows the device holds: written and acknowledged in this
+    // session, or read back; emptied when the device lost them (E-LAB power cycle or reset).
+    // A program's check judges the model's parameter rules against these (ProgramRules), as
+    // the adapter does when the run writes (issue 28).
+    ParameterSet knownParameters;
     QVariantMap raw; // the model's raw words, e.g. {"machineState":128,"axeState":5}
     quint64 resyncCount = 0;
     quint64 commFaultCount = 0;

@@ -64,6 +64,12 @@ struct StreamBenchProfile
     bool supported() const { return createMeter && unlimitBuffer && hostPaused; }
 };
 
+// A model's own rules for a parameter write (ModelInfo::parameterRules): set is what is
+// written, known what the device holds as far as the host knows; returns why the write would be
+// refused, or empty.
+using ParameterRules = std::function<QString(const ParameterSchema&, const ParameterSet& set,
+                                             const ParameterSet& known)>;
+
 // Everything the application knows about one controller model. Adding a model means its
 // folder under core/protocols/<model>/ plus one line in core/protocols/Registry.cpp; the
 // folder's <Model>Model.cpp fills this and describeModel() adds the factories.
@@ -79,6 +85,12 @@ struct ModelInfo
     QStringList setupBeforeMotion;
     std::function<Controller*(Transport*, const ControllerOptions&)> createController;
     std::function<Simulator*(const SimulatorOptions&)> createSimulator;
+    // The model's own rules for a parameter write beyond the schema's ranges, pure: the
+    // adapter applies them when it writes, and a program's check asks them first (issue 28).
+    // set: what is written; known: what the device holds as far as the host knows
+    // (MachineStatus::knownParameters). Returns why the write would be refused, or empty.
+    // Null: the schema's ranges are the only rule.
+    ParameterRules parameterRules;
     ScenarioSupport scenario;
     SoakProfile soak;
     StreamBenchProfile streamBench; // empty unless the model streams (FeedStream)

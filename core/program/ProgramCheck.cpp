@@ -182,4 +182,12 @@ std::optional<MachineIo> machineInput(const MachineFacts& facts, int n)
     return nthIo(facts, n, &Capabilities::digitalInputs);
 }
 
+QString machineSwitchController(const MachineFacts& facts, bool Capabilities::*has)
+{
+    for (const machine::MachineController& c : facts.description.controllers)
+        if (facts.capabilities.value(c.id).*has)
+            return c.id;
+    return {};
+}
+
 } // namespace stepdeck::program

@@ -2,9 +2,11 @@
 #include "ProgramBlock.h"
 #include "machine/MachineDescription.h"
 #include "model/Capabilities.h"
+#include "model/ModelInfo.h"
 #include "model/ParameterSchema.h"
 #include <QCoreApplication>
 #include <QMap>
+#include <QSet>
 
 namespace stepdeck::machine {
 class Machine;
@@ -23,6 +25,15 @@ struct MachineFacts
     // Axis name -> position in the axis' unit, for the axes whose position is known now
     // (referenced, or read back). An axis not listed has an unknown position.
     QMap<QString, double> knownPositions;
+    // Controller id -> its model (ModelInfo::parameterRules, setupBeforeMotion); a controller
+    // not listed has no rules beyond its schema.
+    QMap<QString, const ModelInfo*> models;
+    // Controller id -> the parameter values its device is known to hold
+    // (MachineStatus::knownParameters), which the model's rules are judged against.
+    QMap<QString, ParameterSet> knownParameters;
+    // Controllers whose device reports its setup incomplete (MachineStatus::setupIncomplete):
+    // they refuse every move.
+    QSet<QString> setupIncomplete;
 };
 
 MachineFacts factsOf(const machine::Machine& machine);
@@ -103,5 +114,8 @@ struct MachineIo
 // (docs/programs.md). nullopt: the machine has no such output / input.
 std::optional<MachineIo> machineOutput(const MachineFacts& facts, int n);
 std::optional<MachineIo> machineInput(const MachineFacts& facts, int n);
+// The controller that switches the machine's spindle (has = &Capabilities::spindle) or coolant
+// (&Capabilities::coolant): the first that has one, in the file's order; empty: none has.
+QString machineSwitchController(const MachineFacts& facts, bool Capabilities::*has);
 
 } // namespace stepdeck::program

@@ -13,6 +13,10 @@ MachineFacts factsOf(const machine::Machine& machine)
         if (const ControllerSession* session = machine.session(c.id)) {
             facts.capabilities.insert(c.id, session->capabilities());
             facts.schemas.insert(c.id, session->schema());
+            facts.models.insert(c.id, session->model());
+            facts.knownParameters.insert(c.id, session->status().knownParameters);
+            if (session->status().setupIncomplete)
+                facts.setupIncomplete.insert(c.id);
         }
     }
     // Only positions the devices confirmed (read back, or referenced): Machine::move refuses

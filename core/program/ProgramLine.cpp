@@ -186,8 +186,13 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (b.kind == BlockKind::Feed && !sorted.axes.isEmpty() && !next.feed)
         return fail(sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
                     tr("G1 needs a feed rate: F on this line or an earlier one"));
-    if (b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed)
+    if (b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed) {
         next.motion = b.kind;
+        // A motion word without axis words ("G1", "G1 F100") only sets the modal motion and
+        // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28).
+        if (sorted.axes.isEmpty())
+            b.kind = BlockKind::Modal;
+    }
     for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it) {
         b.axes.insert(it.key(), it.value()->value);
         b.columns.insert(it.key(), it.value()->column);

@@ -1,5 +1,6 @@
 // The check's first part (ProgramCheck): each block against what the machine's controllers
 // take, before any position is followed (docs/programs.md "Check").
+#include "ProgramRules.h"
 #include "ProgramSimulation.h"
 #include "ProgramUnits.h"
 #include <cmath>
@@ -27,7 +28,7 @@ QString figure(double value)
 }
 
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
-    : m_facts(facts), m_out(*out), m_errors(errors)
+    : m_facts(facts), m_out(*out), m_errors(errors), m_known(facts.knownParameters)
 {}
 
 void ProgramPlan::addMove(const AxisMove& move, PlannedBlock* out)
@@ -47,11 +48,16 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     case BlockKind::Rapid:
     case BlockKind::Feed:
         planMove(block, &out);
+        checkSetup(block, out);
         break;
     case BlockKind::Home:
         planHome(block, &out);
+        checkSetup(block, out);
         break;
     case BlockKind::SpindleOn:
+        checkAnyController(block, &Capabilities::spindle);
+        checkSpindleSpeed(block);
+        break;
     case BlockKind::SpindleOff:
         checkAnyController(block, &Capabilities::spindle);
         break;
@@ -73,6 +79,7 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
 void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
 {
     const machine::MachineDescription& d = m_facts.description;
+    bool ratesTaken = true;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         AxisMove m;
         m.axis = axisIndex(d, it.key());
@@ -87,7 +94,7 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         if (block.kind == BlockKind::Feed) {
             // A refused rate still moves the axis in the walk, so what follows is judged
             // from where the program means it to be (its time stays unknown).
-            checkRate(block, axis, &m.speed);
+            ratesTaken = checkRate(block, axis, &m.speed) && ratesTaken;
         } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
             m.speed = *axis.maxJogSpeed;
         } else {
@@ -95,6 +102,8 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         }
         addMove(m, out);
     }
+    if (block.kind == BlockKind::Feed && ratesTaken)
+        checkFeedWrite(block);
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s

@@ -1,4 +1,5 @@
 #include "ProgramRates.h"
+#include "ProgramRules.h"
 #include "ProgramUnits.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
@@ -33,13 +34,11 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
         if (!caps.feedRateParameter)
             continue; // the check refused such a program; Machine::move refuses it again
         const QString name = QString::fromLatin1(caps.feedRateParameter);
-        ParameterValue rate;
-        for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
-            const machine::MachineAxis* a = d.axis(it.key());
-            if (a && a->controller == id)
-                rate.perAxis.insert(a->axis,
-                                    units::feedStepsPerSecond(*a, *block.feed, block.inches));
-        }
+        // The same write the check judged (ProgramRules), against what the device holds.
+        const ParameterSet rate =
+            ProgramRules::feedRateWrite(d, id, caps, block, s->status().knownParameters);
+        if (rate.isEmpty())
+            continue;
         Controller& c = m_controllers[id];
         if (caps.feedRateSetsRapid) {
             const ParameterSpec* spec = s->model()->schema.find(name);
@@ -50,7 +49,7 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
             }
             c.changed = true;
         }
-        requests.insert(s->writeParameters({{name, rate}}, false), id);
+        requests.insert(s->writeParameters(rate, false), id);
     }
     return requests;
 }

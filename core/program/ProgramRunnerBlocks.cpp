@@ -1,5 +1,6 @@
 // ProgramRunner: what each block sends and what it waits for before the next one starts.
 #include "ProgramRates.h"
+#include "ProgramRules.h"
 #include "ProgramRunner.h"
 #include "ProgramUnits.h"
 #include "controller/ControllerSession.h"
@@ -78,18 +79,25 @@ void ProgramRunner::startSwitch(const ProgramBlock& block)
 {
     const MachineFacts facts = factsOf(*m_machine);
     const auto first = [&](bool Capabilities::*has) -> ControllerSession* {
-        for (const machine::MachineController& c : facts.description.controllers)
-            if (facts.capabilities.value(c.id).*has)
-                return m_machine->session(c.id);
-        return nullptr;
+        const QString id = machineSwitchController(facts, has);
+        return id.isEmpty() ? nullptr : m_machine->session(id);
     };
     ControllerSession* s = nullptr;
     RequestId id = 0;
     switch (block.kind) {
     case BlockKind::SpindleOn:
     case BlockKind::SpindleOff:
-        if ((s = first(&Capabilities::spindle)))
-            id = s->setSpindle(block.kind == BlockKind::SpindleOn ? int(block.rpm) : 0);
+        if ((s = first(&Capabilities::spindle))) {
+            const int rpm =
+                block.kind == BlockKind::SpindleOn ? ProgramRules::wholeRpm(block.rpm) : 0;
+            // The check's rule, asked again: refused here, nothing is sent.
+            if (const QString why = ProgramRules::spindleSpeed(s->capabilities(), s->schema(), rpm);
+                !why.isEmpty()) {
+                fail(ErrorKind::InvalidValue, why);
+                return;
+            }
+            id = s->setSpindle(rpm);
+        }
         break;
     case BlockKind::CoolantMist:
     case BlockKind::CoolantFlood:

@@ -79,7 +79,12 @@ private:
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
+    void checkFeedWrite(const ProgramBlock& block);
+    QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,
+                             ParameterSet* set) const;
+    void checkSetup(const ProgramBlock& block, const PlannedBlock& planned);
     void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
+    void checkSpindleSpeed(const ProgramBlock& block);
     void checkIo(const ProgramBlock& block);
     template <typename Message>
     void error(const ProgramBlock& block, int column, const Message& message)
@@ -90,6 +95,10 @@ private:
     const MachineFacts& m_facts;
     PlannedProgram& m_out;
     CheckErrors* m_errors;
+    // What each device holds as the blocks before this one leave it (G1's rate writes), as
+    // the run's controllers will know it: the model's rules are judged against this.
+    QMap<QString, ParameterSet> m_known;
+    QSet<QString> m_setupReported; // controllers whose incomplete setup was named already
 };
 
 // Walks the planned blocks from `start` as the run will (repeats counted out, at most

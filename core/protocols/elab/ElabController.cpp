@@ -182,7 +182,7 @@ void ElabController::onOpened()
         0, how,
         [this] {
             if (m_line.machineWord() & machine::InvSetup)
-                m_written.clear(); // the board lost its setup (power cycle): nothing is known
+                forgetWritten(); // the board lost its setup (power cycle): nothing is known
             m_line.setHostPanic(false);
             setLinkState(LinkState::Connected);
             m_poller.start();
@@ -314,12 +314,26 @@ void ElabController::writeStep(const ElabCtlLine::Op& op, const QList<ElabParame
     if (m_line.stale(op))
         return;
     m_line.sendCommand(op, plan.at(index).frame, [this, op, plan, index, note] {
-        m_written.insert(plan.at(index).name, plan.at(index).value);
+        rememberWritten(plan.at(index).name, plan.at(index).value);
         QStringList& done = m_writeProgress[op.id];
         if (!done.contains(plan.at(index).name))
             done << plan.at(index).name;
         writeStep(op, plan, index + 1, note);
     });
+}
+
+// Published before the request finishes, so whoever sees the result already sees the value.
+void ElabController::rememberWritten(const QString& name, const ParameterValue& value)
+{
+    m_written.insert(name, value);
+    mutableStatus().knownParameters = m_written;
+    publishStatus();
+}
+
+void ElabController::forgetWritten()
+{
+    m_written.clear();
+    mutableStatus().knownParameters.clear();
 }
 
 void ElabController::readParameters(RequestId id, const QStringList& names)
@@ -368,7 +382,7 @@ void ElabController::writeAuxiliary(RequestId id, const QString& name, const QVa
     m_line.preflight(id, ElabCtlStatusMapper::Rule::Standstill,
                      [this, id, name, value, frame](ElabCtlLine::Op op) {
                          m_line.sendCommand(op, frame, [this, id, name, value] {
-                             m_written.insert(name, ParameterValue{value, {}});
+                             rememberWritten(name, ParameterValue{value, {}});
                              finishOk(id);
                          });
                      });

@@ -101,6 +101,8 @@ private:
     // the board reports standstill again).
     void checkUntrackedMotion();
     void stopUntracked(const QString& why);
+    void rememberWritten(const QString& name, const ParameterValue& value);
+    void forgetWritten();
     void writeStep(const ElabCtlLine::Op& op, const QList<ElabParameterWrite>& plan, int index,
                    const QString& note);
     void writeAuxiliary(RequestId id, const QString& name, const QVariant& value,
@@ -111,7 +113,9 @@ private:
     ElabCtlMotionOps m_ops{m_line};
     ElabCtlJog m_jog;
     StatusPoller m_poller{this};
-    ParameterSet m_written; // the values this session last wrote (the board cannot read back)
+    // The values this session last wrote (the board cannot read back), also published as
+    // MachineStatus::knownParameters through rememberWritten / forgetWritten.
+    ParameterSet m_written;
     // Per running parameter write: the names already acknowledged, for the failure message.
     QHash<RequestId, QStringList> m_writeProgress;
     quint64 m_pollCount = 0;

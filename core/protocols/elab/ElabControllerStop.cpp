@@ -325,7 +325,7 @@ void ElabController::finishReset(RequestId id, quint64 epoch)
         return;
     m_queue.setHeld(false);
     m_line.setHostPanic(false);
-    m_written.clear(); // a reset board has lost its setup
+    forgetWritten(); // a reset board has lost its setup
     ElabCtlLine::StatusRead how;
     how.temperature = how.tolerant = true;
     m_line.readStatus(

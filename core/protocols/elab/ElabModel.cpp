@@ -1,6 +1,7 @@
 #include "ElabModel.h"
 #include "ElabCodec.h"
 #include "ElabController.h"
+#include "ElabCtlParameters.h"
 #include "ElabLogging.h"
 #include "ElabSimulator.h"
 #include <QCoreApplication>
@@ -42,6 +43,8 @@ Capabilities capabilities()
     // G1 F: feed mode (SetFeedSpeed <FS>, a constant rate without ramp); G0 keeps max-speed.
     caps.feedRateParameter = "feed-speed";
     caps.feedRateUsesFeedMode = true;
+    caps.feedRateWholeSet = true; // <FS> carries X, Y and Z in one frame
+    caps.spindleSpeedParameter = "spindle-rpm";
     return caps;
 }
 
@@ -58,6 +61,13 @@ ModelInfo modelInfo()
     // tmInvSetup until the ramp is written; feeds need their speed.
     info.setupBeforeMotion = {QStringLiteral("start-speed"), QStringLiteral("max-speed"),
                               QStringLiteral("acceleration"), QStringLiteral("feed-speed")};
+    // The same rules the adapter applies when it writes (completion from the known values,
+    // feed speed below start speed), so a program's check refuses what the run would.
+    info.parameterRules = [](const ParameterSchema& schema, const ParameterSet& set,
+                             const ParameterSet& known) {
+        QList<ElabParameterWrite> unused;
+        return ElabCtlParameters::plan(schema, set, known, &unused);
+    };
     info.scenario = scenarioSupport();
     info.soak = soakProfile();
     info.streamBench = streamBenchProfile();

@@ -8,3 +8,5 @@ target_compile_definitions(tst_programcheck PRIVATE STEPDECK_SOURCE_DIR="${CMAKE
 # The runner on a machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
 stepdeck_add_test(tst_programrunner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrunner.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+# The rules the check and the run share (issue 28).
+stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrules.cpp LABELS unit)

@@ -94,7 +94,12 @@ void TestProgramParser::parse_everyWord_golden_data()
                              << QStringList{"1: modal abs mm F120", "2: G1 Z=-1 abs mm F120"};
     QTest::newRow("motion modal") << "G1 X1 F60\nY2\nG0\nA90"
                                   << QStringList{"1: G1 X=1 abs mm F60", "2: G1 Y=2 abs mm F60",
-                                                 "3: G0 abs mm F60", "4: G0 A=90 abs mm F60"};
+                                                 "3: modal abs mm F60", "4: G0 A=90 abs mm F60"};
+    // LinuxCNC: a motion word alone sets the modal motion (and F): the line moves nothing.
+    QTest::newRow("bare G1 and G1 F")
+        << "G1\nG1 F12\nX3\nG0\nG1 F5 (feed only)\nY1"
+        << QStringList{"1: modal abs mm F-",  "2: modal abs mm F12", "3: G1 X=3 abs mm F12",
+                       "4: modal abs mm F12", "5: modal abs mm F5",  "6: G1 Y=1 abs mm F5"};
     QTest::newRow("G91 G90") << "G91 G0 X1\nX1\nG90 X0"
                              << QStringList{"1: G0 X=1 rel mm F-", "2: G0 X=1 rel mm F-",
                                             "3: G0 X=0 abs mm F-"};

@@ -1,0 +1,110 @@
+// The check's part of ProgramRules (issue 28): what a controller would refuse of a block from
+// what is known before the run starts (its parameter rules, its spindle range, an incomplete
+// setup), judged by the same functions the run goes through.
+#include "ProgramRules.h"
+#include "ProgramSimulation.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+namespace {
+ParameterRules rulesOf(const MachineFacts& facts, const QString& controller)
+{
+    const ModelInfo* model = facts.models.value(controller);
+    return model ? model->parameterRules : ParameterRules{};
+}
+} // namespace
+
+// Why `controller` would refuse the rate write of `block` (*set: that write), or empty.
+QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBlock& block,
+                                      ParameterSet* set) const
+{
+    const Capabilities caps = m_facts.capabilities.value(controller);
+    const ParameterSet known = m_known.value(controller);
+    *set = ProgramRules::feedRateWrite(m_facts.description, controller, caps, block, known);
+    if (set->isEmpty())
+        return {};
+    return ProgramRules::parameterWrite(m_facts.schemas.value(controller), caps,
+                                        rulesOf(m_facts, controller), *set, known);
+}
+
+// G1's rate write on each controller of the block, as the run makes it (ProgramRates), against
+// the model's own rules (E-LAB: feed speed below start speed, a value for every axis). A
+// refusal names the highest F that would pass, where one does.
+void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
+{
+    for (const machine::MachineController& c : m_facts.description.controllers) {
+        ParameterSet set;
+        const QString why = feedWriteRefusal(c.id, block, &set);
+        if (set.isEmpty())
+            continue;
+        if (why.isEmpty()) {
+            ParameterSet& known = m_known[c.id];
+            for (auto it = set.cbegin(); it != set.cend(); ++it)
+                for (auto a = it->perAxis.cbegin(); a != it->perAxis.cend(); ++a)
+                    known[it.key()].perAxis.insert(a.key(), a.value());
+            continue;
+        }
+        error(block, block.columnOf(QStringLiteral("F")), [&] {
+            // Only for the errors kept (CheckErrors): the highest F taken, by halving the
+            // interval (the rules are monotonic in the rate).
+            ProgramBlock slower = block;
+            double taken = 0;
+            double refused = *block.feed;
+            for (int i = 0; i < 40 && refused - taken > 1e-3; ++i) {
+                slower.feed = (taken + refused) / 2;
+                ParameterSet unused;
+                (feedWriteRefusal(c.id, slower, &unused).isEmpty() ? taken : refused) =
+                    *slower.feed;
+            }
+            const double highest = std::floor(taken * 10) / 10;
+            const QString head =
+                ProgramCheck::tr("F%1: controller \"%2\" would refuse its rate: %3")
+                    .arg(figure(*block.feed), c.id, why);
+            return highest > 0
+                       ? ProgramCheck::tr("%1; F%2 or less is taken, or change the setup on the "
+                                          "Setup page")
+                             .arg(head, figure(highest))
+                       : ProgramCheck::tr("%1; set it on the Setup page first").arg(head);
+        });
+    }
+}
+
+// A move or reference run on a controller that reports its setup incomplete is refused by the
+// device: named once per controller, at its first such block.
+void ProgramPlan::checkSetup(const ProgramBlock& block, const PlannedBlock& planned)
+{
+    for (int i = planned.firstMove; i < planned.firstMove + planned.moveCount; ++i) {
+        const AxisMove& m = m_out.moves.at(size_t(i));
+        if (m.axis < 0)
+            continue;
+        const machine::MachineAxis& axis = m_facts.description.axes.at(m.axis);
+        if (!m_facts.setupIncomplete.contains(axis.controller) ||
+            m_setupReported.contains(axis.controller))
+            continue;
+        m_setupReported.insert(axis.controller);
+        const ModelInfo* model = m_facts.models.value(axis.controller);
+        const QString why =
+            ProgramRules::setupIncomplete(m_facts.schemas.value(axis.controller),
+                                          model ? model->setupBeforeMotion : QStringList{}, true);
+        error(block, m.column, [&] {
+            return ProgramCheck::tr("%1: controller \"%2\": %3")
+                .arg(axis.name, axis.controller, why);
+        });
+    }
+}
+
+// M3 S within the range the spindle's controller takes (the run asks the same rule).
+void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
+{
+    const QString controller = machineSwitchController(m_facts, &Capabilities::spindle);
+    if (controller.isEmpty())
+        return; // checkAnyController named it
+    const QString why = ProgramRules::spindleSpeed(m_facts.capabilities.value(controller),
+                                                   m_facts.schemas.value(controller), block.rpm);
+    if (!why.isEmpty())
+        error(block, block.columnOf(QStringLiteral("S")),
+              [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,233 @@
+// The rules both the check and the run go by (issue 28, ProgramRules): the feed-rate write a
+// G1 makes, the model's parameter rules judged against what the device holds, the spindle
+// range and an incomplete setup, and the check refusing with them what the run would refuse.
+#include "program/ProgramCheck.h"
+#include "program/ProgramParser.h"
+#include "program/ProgramRules.h"
+#include "protocols/Registry.h"
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+using AxisWords = QMap<QString, double>;
+
+namespace {
+
+// An E-LAB board in its own steps (MachineDescription::singleController: X, Y, Z), with its
+// model's rules, and `known` the values the host knows it holds.
+MachineFacts elabFacts(const ParameterSet& known)
+{
+    const ModelInfo* info = findModel(QStringLiteral("elab"));
+    MachineFacts f;
+    f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
+    f.capabilities.insert("elab", info->capabilities);
+    f.schemas.insert("elab", info->schema);
+    f.models.insert("elab", info);
+    f.knownParameters.insert("elab", known);
+    return f;
+}
+
+ParameterValue perAxis(qint64 x, qint64 y, qint64 z)
+{
+    ParameterValue v;
+    v.perAxis = {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}};
+    return v;
+}
+
+// "start=100,100,100 feed=50,50,50": the known parameter values.
+ParameterSet known(const QString& text)
+{
+    ParameterSet out;
+    for (const QString& pair : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QStringList kv = pair.split(QLatin1Char('='));
+        const QStringList v = kv.at(1).split(QLatin1Char(','));
+        const QString name = kv.at(0) == QLatin1String("start") ? QStringLiteral("start-speed")
+                                                                : QStringLiteral("feed-speed");
+        out.insert(name, perAxis(v.at(0).toLongLong(), v.at(1).toLongLong(), v.at(2).toLongLong()));
+    }
+    return out;
+}
+
+QStringList checked(const QString& text, const MachineFacts& facts)
+{
+    QStringList names;
+    for (const MachineAxis& a : facts.description.axes)
+        names << a.name;
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(text.toUtf8(), names, &errors);
+    QStringList out;
+    for (const ProgramError& e : errors)
+        out << e.text();
+    if (!p)
+        return out;
+    for (const ProgramError& e : ProgramCheck::check(*p, facts).errors)
+        out << e.text();
+    return out;
+}
+
+ProgramBlock feedBlock(const QMap<QString, double>& axes, double feed)
+{
+    ProgramBlock b;
+    b.kind = BlockKind::Feed;
+    b.axes = axes;
+    b.feed = feed;
+    return b;
+}
+
+} // namespace
+
+class TestProgramRules : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void feedRateWrite_wholeSetModel_everyAxisGetsAValue_data();
+    void feedRateWrite_wholeSetModel_everyAxisGetsAValue();
+    void feedRateWrite_perAxisModel_onlyTheBlocksAxes();
+    void parameterWrite_elabRules_sameAsTheAdapter_data();
+    void parameterWrite_elabRules_sameAsTheAdapter();
+    void spindleSpeed_outsideTheSchemaRange_refused_data();
+    void spindleSpeed_outsideTheSchemaRange_refused();
+    void check_elab_refusesWhatTheRunWould_data();
+    void check_elab_refusesWhatTheRunWould();
+};
+
+void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue_data()
+{
+    QTest::addColumn<QString>("held");
+    QTest::addColumn<AxisWords>("axes");
+    QTest::addColumn<ParameterValue>("expected");
+    // F6000 = 100 mm/min... in steps: 100 steps/s on an axis of 1 step per unit.
+    QTest::newRow("nothing known: the others at the same F")
+        << "" << AxisWords{{"X", 10}} << perAxis(100, 100, 100);
+    QTest::newRow("known values kept for the axes that do not move")
+        << "start=200,200,200 feed=40,30,20" << AxisWords{{"Y", 5}} << perAxis(40, 100, 20);
+    QTest::newRow("two axes at F") << "start=200,200,200 feed=40,30,20"
+                                   << AxisWords{{"X", 1}, {"Z", 2}} << perAxis(100, 30, 100);
+}
+
+void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue()
+{
+    QFETCH(QString, held);
+    QFETCH(AxisWords, axes);
+    QFETCH(ParameterValue, expected);
+    const MachineFacts f = elabFacts(known(held));
+    const ParameterSet set = ProgramRules::feedRateWrite(
+        f.description, "elab", f.capabilities["elab"], feedBlock(axes, 6000), known(held));
+    QCOMPARE(set.keys(), QStringList{"feed-speed"});
+    QCOMPARE(set.value("feed-speed"), expected);
+}
+
+void TestProgramRules::feedRateWrite_perAxisModel_onlyTheBlocksAxes()
+{
+    const ModelInfo* info = findModel(QStringLiteral("nanotec"));
+    const MachineDescription d = MachineDescription::singleController(*info, "sim");
+    const ParameterSet set = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities,
+                                                         feedBlock({{"Y", 5}}, 60000), {});
+    QCOMPARE(set.keys(), QStringList{"max-frequency"});
+    QCOMPARE(set.value("max-frequency").perAxis.keys(), QList<Axis>{Axis::Y});
+    QCOMPARE(set.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 1000);
+    // G0 writes no rate; G1 without F neither.
+    ProgramBlock rapid = feedBlock({{"Y", 5}}, 60000);
+    rapid.kind = BlockKind::Rapid;
+    QVERIFY(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, rapid, {}).isEmpty());
+}
+
+void TestProgramRules::parameterWrite_elabRules_sameAsTheAdapter_data()
+{
+    QTest::addColumn<QString>("held");
+    QTest::addColumn<ParameterValue>("feed");
+    QTest::addColumn<QString>("refusal");
+    QTest::newRow("below the start speed") << "start=100,100,100" << perAxis(99, 50, 1) << "";
+    QTest::newRow("equal to the start speed")
+        << "start=100,100,100" << perAxis(100, 50, 1)
+        << "Feed speed 100 on axis X must be below Start speed 100 (feed mode has no ramp)";
+    QTest::newRow("start speed unknown")
+        << "" << perAxis(10, 10, 10)
+        << "Feed speed must be below Start speed (feed mode has no ramp), but Start speed is "
+           "not known: write Start speed in the same set";
+    QTest::newRow("out of the schema range")
+        << "start=100,100,100" << perAxis(70000, 50, 1)
+        << "Feed speed: value '70000' is out of range (allowed: 0..65535 steps/s) (X)";
+}
+
+void TestProgramRules::parameterWrite_elabRules_sameAsTheAdapter()
+{
+    QFETCH(QString, held);
+    QFETCH(ParameterValue, feed);
+    QFETCH(QString, refusal);
+    const ModelInfo* info = findModel(QStringLiteral("elab"));
+    QVERIFY(info->parameterRules);
+    QCOMPARE(ProgramRules::parameterWrite(info->schema, info->capabilities, info->parameterRules,
+                                          {{"feed-speed", feed}}, known(held)),
+             refusal);
+}
+
+void TestProgramRules::spindleSpeed_outsideTheSchemaRange_refused_data()
+{
+    QTest::addColumn<double>("rpm");
+    QTest::addColumn<QString>("refusal");
+    QTest::newRow("0") << 0.0 << "";
+    QTest::newRow("1000") << 1000.0 << "";
+    QTest::newRow("1000.4 rounds to 1000") << 1000.4 << "";
+    QTest::newRow("1001") << 1001.0
+                          << "Spindle speed: value '1001' is out of range (allowed: 0..1000 rpm)";
+    QTest::newRow("12000") << 12000.0
+                           << "Spindle speed: value '12000' is out of range (allowed: 0..1000 rpm)";
+}
+
+void TestProgramRules::spindleSpeed_outsideTheSchemaRange_refused()
+{
+    QFETCH(double, rpm);
+    QFETCH(QString, refusal);
+    const ModelInfo* info = findModel(QStringLiteral("elab"));
+    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, rpm), refusal);
+}
+
+void TestProgramRules::check_elab_refusesWhatTheRunWould_data()
+{
+    QTest::addColumn<QString>("held");
+    QTest::addColumn<bool>("setupIncomplete");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::newRow("S12000 M3") << "start=100,100,100" << false << "S12000 M3"
+                               << QStringList{"1:1: controller \"elab\": Spindle speed: value "
+                                              "'12000' is out of range (allowed: 0..1000 rpm)"};
+    QTest::newRow("M3 S800") << "start=100,100,100" << false << "M3 S800" << QStringList{};
+    // 6000 steps/min = 100 steps/s, not below the start speed 100; F5994 (99.9) is.
+    QTest::newRow("feed not below the start speed")
+        << "start=100,100,100" << false << "G91 G1 Z-1 F6000"
+        << QStringList{"1:12: F6000: controller \"elab\" would refuse its rate: Feed speed 100 "
+                       "on axis X must be below Start speed 100 (feed mode has no ramp); F5969.9 "
+                       "or less is taken, or change the setup on the Setup page"};
+    QTest::newRow("start speed never written")
+        << "" << false << "G91 G1 X10 F600"
+        << QStringList{"1:12: F600: controller \"elab\" would refuse its rate: Feed speed must be "
+                       "below Start speed (feed mode has no ramp), but Start speed is not known: "
+                       "write Start speed in the same set; set it on the Setup page first"};
+    // A fresh session: no feed speed written for Y and Z; the run writes X's rate for all.
+    QTest::newRow("G0 then G1 of one axis, nothing written before")
+        << "start=100,100,100" << false << "G91 G0 X100\nG1 X100 F5400" << QStringList{};
+    QTest::newRow("bare G1 and G1 F are legal") << "" << false << "G1\nG1 F12\nG0" << QStringList{};
+    QTest::newRow("setup incomplete: named once at the first move")
+        << "start=100,100,100" << true << "G91 G0 X1\nG0 Y1"
+        << QStringList{"1:8: X: controller \"elab\": its setup is incomplete, so it refuses "
+                       "every move: write Start speed, Max speed, Acceleration, Feed speed on "
+                       "the Setup page first"};
+}
+
+void TestProgramRules::check_elab_refusesWhatTheRunWould()
+{
+    QFETCH(QString, held);
+    QFETCH(bool, setupIncomplete);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    MachineFacts f = elabFacts(known(held));
+    if (setupIncomplete)
+        f.setupIncomplete.insert("elab");
+    QCOMPARE(checked(program, f), errors);
+}
+
+QTEST_GUILESS_MAIN(TestProgramRules)
+#include "tst_programrules.moc"
