@@ -1,6 +1,7 @@
 #include "SimMachine.h"
 #include "../common/SignalPipe.h"
 #include "machine/MachineFile.h"
+#include "machine/MachineSimulation.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
 #include "sim/Simulator.h"
@@ -43,8 +44,9 @@ QString refusedWithMachine(const SimScenario& s)
     return {};
 }
 
-bool startController(const SimScenario& scenario, const machine::MachineController& controller,
-                     quint32 seed, SimulatedController* out, QString* error)
+bool startController(const SimScenario& scenario, const machine::MachineDescription& description,
+                     const machine::MachineController& controller, quint32 seed,
+                     SimulatedController* out, QString* error)
 {
     const ModelInfo* model = findModel(controller.modelId);
     if (!model->createSimulator) {
@@ -58,11 +60,18 @@ bool startController(const SimScenario& scenario, const machine::MachineControll
     options.line = model->line;
     options.seed = seed;
     out->simulator.reset(model->createSimulator(options));
+    // The machine of the file (reference switches where its runs search), as the built-in
+    // simulators of port "sim" get it (machine::simulatorScenarioOf).
+    SimScenario setup;
+    setup.machine = machine::simulatorScenarioOf(description, controller.id, model->capabilities);
+    if (!(setup.machine.used() & ~model->scenario.options) && setup.machine.used() &&
+        !applyScenario(setup, *model, out->simulator.get(), error))
+        return false;
     if (scenario.machine.setupComplete &&
         model->scenario.options.testFlag(ScenarioOption::SetupComplete)) {
-        SimScenario setup;
-        setup.machine.setupComplete = true;
-        if (!applyScenario(setup, *model, out->simulator.get(), error))
+        SimScenario complete;
+        complete.machine.setupComplete = true;
+        if (!applyScenario(complete, *model, out->simulator.get(), error))
             return false;
     }
     applyFaults(scenario, out->simulator.get());
@@ -110,8 +119,8 @@ int runMachine(const SimScenario& scenario)
         machine::MachineController& controller = description->controllers[i];
         auto simulated = std::make_unique<SimulatedController>();
         QString error;
-        if (!startController(scenario, controller, scenario.seed + quint32(i), simulated.get(),
-                             &error))
+        if (!startController(scenario, *description, controller, scenario.seed + quint32(i),
+                             simulated.get(), &error))
             return fail(error, 1);
         controller.port = simulated->endpoint->slavePath();
         controllers.push_back(std::move(simulated));

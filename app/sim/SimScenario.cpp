@@ -177,6 +177,22 @@ bool parseSpeed(const QString& text, std::optional<double>* speed, QString* erro
 } // namespace
 
 namespace {
+// --input N=LEVEL: "5=1", "6=0" (issue 28: the part sensor an example program waits for).
+bool parseInput(const QString& value, QMap<int, bool>* inputs, QString* error)
+{
+    const QStringList parts = value.split(QLatin1Char('='));
+    int number = 0;
+    int level = 0;
+    if (parts.size() != 2 ||
+        numbers::parseInt(parts.at(0), 1, 9999, &number) != NumberError::None ||
+        numbers::parseInt(parts.at(1), 0, 1, &level) != NumberError::None) {
+        *error = SimText::tr("--input expects NUMBER=0 or NUMBER=1, got '%1'").arg(value);
+        return false;
+    }
+    inputs->insert(number, level == 1);
+    return true;
+}
+
 // --machine FILE and --out FILE (issue 19, app/sim/SimMachine.h).
 bool parseMachineOption(const QString& name, const QStringList& args, int* i, SimScenario* s,
                         bool* matched, QString* error)
@@ -251,6 +267,9 @@ bool parseScenario(const QStringList& args, SimScenario* scenario, QString* erro
         } else if (name == QLatin1String("--speed")) {
             if (!takeValue(args, &i, &value, error) || !parseSpeed(value, &s.machine.speed, error))
                 return false;
+        } else if (name == QLatin1String("--input")) {
+            if (!takeValue(args, &i, &value, error) || !parseInput(value, &s.machine.inputs, error))
+                return false;
         } else if (name == QLatin1String("--silent")) {
             s.machine.silent = true;
         } else if (name == QLatin1String("--garbage")) {
@@ -286,6 +305,8 @@ QString simUsage()
                "                     (the board powers on with setup incomplete)\n"
                "  --temperature C    board temperature (above 50 sets over-temperature)\n"
                "  --limit AXIS=MIN:MAX   limit switches of an axis at these positions\n"
+               "  --input N=LEVEL    a digital input the machine drives, 1 (high) or 0 (low);\n"
+               "                     repeat for several (emis: inputs 5..8, e.g. a part sensor)\n"
                "  --position AXIS=STEPS  where the carriage stands at power-on (emis: steps\n"
                "                     from the reference switch; laser-axis: units from the\n"
                "                     home switch)\n"
@@ -343,7 +364,8 @@ QString optionNames(ScenarioOptions options)
         {ScenarioOption::Silent, "--silent"},
         {ScenarioOption::Garbage, "--garbage"},
         {ScenarioOption::NoEncoder, "--no-encoder"},
-        {ScenarioOption::CalibrationMs, "--calibration-ms"}};
+        {ScenarioOption::CalibrationMs, "--calibration-ms"},
+        {ScenarioOption::Inputs, "--input"}};
     QStringList out;
     for (const auto& [option, name] : names) {
         if (options.testFlag(option))
@@ -356,7 +378,9 @@ QString optionNames(ScenarioOptions options)
 bool applyScenario(const SimScenario& scenario, const ModelInfo& model, Simulator* simulator,
                    QString* error)
 {
-    const ScenarioOptions unsupported = scenario.machine.used() & ~model.scenario.options;
+    // Inputs are every simulator's own (Simulator::settableInputs), not the model's scenario.
+    const ScenarioOptions unsupported = scenario.machine.used() & ~model.scenario.options &
+                                        ~ScenarioOptions(ScenarioOption::Inputs);
     if (unsupported) {
         *error =
             SimText::tr("%1: not supported for model %2").arg(optionNames(unsupported), model.id);
@@ -368,7 +392,23 @@ bool applyScenario(const SimScenario& scenario, const ModelInfo& model, Simulato
             return false;
         }
     }
-    return !model.scenario.apply || model.scenario.apply(scenario.machine, simulator, error);
+    if (model.scenario.apply && !model.scenario.apply(scenario.machine, simulator, error))
+        return false;
+    for (auto it = scenario.machine.inputs.cbegin(); it != scenario.machine.inputs.cend(); ++it) {
+        if (!simulator->setSettableInput(it.key(), it.value())) {
+            QStringList settable;
+            for (int n : simulator->settableInputs())
+                settable << QString::number(n);
+            *error =
+                settable.isEmpty()
+                    ? SimText::tr("--input: model %1 has no inputs the machine sets").arg(model.id)
+                    : SimText::tr("--input %1: model %2 lets the machine set inputs %3")
+                          .arg(it.key())
+                          .arg(model.id, settable.join(QStringLiteral(", ")));
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace stepdeck::simapp

@@ -1,6 +1,7 @@
 #include "Machine.h"
 #include "MachineFile.h"
 #include "MachineReferenceRun.h"
+#include "MachineSimulation.h"
 #include "protocols/Registry.h"
 
 namespace stepdeck::machine {
@@ -36,6 +37,21 @@ ConnectionSpec specOf(const MachineController& c, const ControllerOptions& base)
     spec.simulator.addresses = c.busAddresses.values();
     return spec;
 }
+
+// A built-in simulator (port "sim") is the machine of this file (MachineSimulation.h).
+void simulateMachine(const MachineDescription& d, const MachineController& c,
+                     ControllerSession* session)
+{
+    const ModelInfo* model = session->model();
+    const SimulatorScenario scenario = simulatorScenarioOf(d, c.id, session->capabilities());
+    const ScenarioOptions used = scenario.used();
+    if (!used || (used & ~model->scenario.options) || !model->scenario.apply)
+        return; // nothing to do, or a model whose simulator keeps its own machine
+    session->withSimulator([model, scenario](Simulator* sim) {
+        QString unused;
+        model->scenario.apply(scenario, sim, &unused);
+    });
+}
 } // namespace
 
 Machine::Machine(QObject* parent)
@@ -67,6 +83,8 @@ bool Machine::create(const MachineDescription& description, QString* error)
             return false;
         }
         session->setSoftLimits(stepLimitsOf(m_description, c.id));
+        if (session->isSimulated())
+            simulateMachine(m_description, c, session.get());
         watch(c.id, session.get());
         m_sessions.push_back(std::move(session));
     }

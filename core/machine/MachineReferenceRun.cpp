@@ -11,18 +11,19 @@ namespace {
 // GUI's ReferenceRunner judges a single controller's run).
 constexpr qint64 kStartGraceMs = 3000;
 
-// The controller direction of an axis' reference run. The file's direction is in the
-// machine's sense (like a LinuxCNC home search velocity), so an inverted axis searches the
-// other way at the controller; without one the search goes negative, as the GUI's default.
-// Models that choose the direction themselves (EMIS 9.9) take 1: "reference this axis".
-int controllerDirection(const MachineAxis& axis, const Capabilities& capabilities)
+} // namespace
+
+// The file's direction is in the machine's sense (like a LinuxCNC home search velocity), so an
+// inverted axis searches the other way at the controller; without one the search goes
+// negative, as the GUI's default. Models that choose the direction themselves (EMIS 9.9) take
+// 1: "reference this axis".
+int referenceSearchDirection(const MachineAxis& axis, const Capabilities& capabilities)
 {
     if (!capabilities.referenceDirection)
         return 1;
     const int machineDirection = axis.referenceDirection != 0 ? axis.referenceDirection : -1;
     return axis.invert ? -machineDirection : machineDirection;
 }
-} // namespace
 
 quint64 Machine::reference(const QStringList& axes, QString* refusal)
 {
@@ -97,7 +98,7 @@ void MachineReferenceRun::startGroup()
             part = run.parts.insert(run.parts.end(), Part{});
             part->session = s;
         }
-        part->directions.insert(a->axis, controllerDirection(*a, s->capabilities()));
+        part->directions.insert(a->axis, referenceSearchDirection(*a, s->capabilities()));
         names << a->name;
     }
     // Every controller is checked before any is sent: a link lost since the last group fails

@@ -8,6 +8,10 @@ namespace stepdeck::machine {
 
 class Machine;
 
+// The controller direction of an axis' reference run (-1/+1; 1 "reference it" where the model
+// chooses the direction itself, Capabilities::referenceDirection false).
+int referenceSearchDirection(const MachineAxis& axis, const Capabilities& capabilities);
+
 // A Machine's reference run in the file's order (issue 19, docs/machines.md, "Referencing"):
 // the named axes grouped by reference.order, one group after the other, each group's axes
 // together with one reference request per controller. The Machine forwards its sessions'

@@ -109,6 +109,17 @@ public:
     // True when a frame as noteReceived() logged it is one of the manual's stop commands
     // (tests assert that the device received a stop). Models without a stop command: never.
     virtual bool isStopFrame(const QByteArray& frame) const;
+    // Digital inputs that the simulated machine, not the device, drives (a part sensor, a
+    // door): the numbers an operator or a test may set (stepdeck-sim --input, the window's
+    // Simulator menu). None by default.
+    virtual QList<int> settableInputs() const { return {}; }
+    // Sets one of settableInputs() to a level; false for any other number.
+    virtual bool setSettableInput(int number, bool level)
+    {
+        Q_UNUSED(number)
+        Q_UNUSED(level)
+        return false;
+    }
 
 public Q_SLOTS:
     virtual void receive(const QByteArray& bytes) = 0;

@@ -3,6 +3,9 @@
 #include "ProcessSupport.h"
 #include <QDir>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSerialPort>
 #include <QtTest>
 
@@ -16,6 +19,9 @@ private Q_SLOTS:
     void badFaultOption_exitTwoWithOneLine_data();
     void badFaultOption_exitTwoWithOneLine();
     void help_listsTheFaultOptions();
+    void input_emisPartSensor_statusReadsItHigh();
+    void input_refused_exitTwoNamingTheInputs_data();
+    void input_refused_exitTwoNamingTheInputs();
     void drop_everyReply_cliTimesOut();
     void freezeAfter_zero_cliTimesOut();
     void corrupt_everyReply_cliFailsWithoutCrash();
@@ -106,6 +112,42 @@ void TestSimEndToEnd::help_listsTheFaultOptions()
     QCOMPARE(run.exitCode, 0);
     for (const char* option : {"--drop", "--corrupt", "--noise", "--freeze-after", "--seed"})
         QVERIFY2(run.out.contains(option), option);
+}
+
+// --input sets what the machine drives at an input (issue 28: the part sensor emis.ngc waits
+// for); the board reports it in its input status like any other level.
+void TestSimEndToEnd::input_emisPartSensor_statusReadsItHigh()
+{
+    const QString pty = startSim({"--model", "emis", "--input", "5=1", "--input", "7=0"});
+    QVERIFY(!pty.isEmpty());
+    const Run r = cli({"--model", "emis", "--port", pty, "--json", "status"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonArray inputs = QJsonDocument::fromJson(r.out).object().value("inputs").toArray();
+    QCOMPARE(inputs.size(), 8);
+    QCOMPARE(inputs.at(4).toBool(), true);  // input 5
+    QCOMPARE(inputs.at(6).toBool(), false); // input 7
+}
+
+void TestSimEndToEnd::input_refused_exitTwoNamingTheInputs_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("needle");
+    QTest::newRow("a reference switch input")
+        << QStringList{"--model", "emis", "--input", "2=1"} << "inputs 5, 6, 7, 8";
+    QTest::newRow("a model without such inputs")
+        << QStringList{"--model", "elab", "--input", "1=1"} << "no inputs the machine sets";
+    QTest::newRow("level 2") << QStringList{"--model", "emis", "--input", "5=2"} << "--input";
+    QTest::newRow("no level") << QStringList{"--model", "emis", "--input", "5"} << "--input";
+}
+
+void TestSimEndToEnd::input_refused_exitTwoNamingTheInputs()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, needle);
+    const Run run = stepdeck::testing::runProcess(binary("stepdeck-sim"), args, 10000);
+    QVERIFY2(run.exitCode != 0, run.out.constData());
+    QVERIFY2(run.err.contains(needle.toUtf8()), run.err.constData());
+    QVERIFY(run.out.isEmpty());
 }
 
 void TestSimEndToEnd::drop_everyReply_cliTimesOut()

@@ -36,6 +36,12 @@ bool applyScenario(const SimulatorScenario& scenario, Simulator* simulator, QStr
         sim->setLimitPositions(it.key(), it.value().minimum, it.value().maximum);
     for (auto it = scenario.positions.cbegin(); it != scenario.positions.cend(); ++it)
         sim->setPosition(it.key(), it.value());
+    // The reference switch at the simulated machine's distance (ElabSimSwitchConfig), on the
+    // side the machine's reference run searches.
+    const ElabSimSwitchConfig defaults;
+    for (auto it = scenario.referenceSides.cbegin(); it != scenario.referenceSides.cend(); ++it)
+        sim->setReferencePosition(it.key(), it.value() * qAbs(defaults.referencePosition),
+                                  defaults.referenceWindow);
     return true;
 }
 
@@ -78,7 +84,7 @@ ScenarioSupport scenarioSupport()
 {
     ScenarioSupport s;
     s.options = ScenarioOption::SetupComplete | ScenarioOption::Temperature |
-                ScenarioOption::Limits | ScenarioOption::Positions;
+                ScenarioOption::Limits | ScenarioOption::Positions | ScenarioOption::ReferenceSides;
     s.apply = &applyScenario;
     return s;
 }

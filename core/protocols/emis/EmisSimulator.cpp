@@ -92,6 +92,14 @@ void EmisSimulator::setInput(int number, bool level)
         m_freeInputs[size_t(number - 5)] = level;
 }
 
+bool EmisSimulator::setSettableInput(int number, bool level)
+{
+    if (!settableInputs().contains(number))
+        return false;
+    setInput(number, level);
+    return true;
+}
+
 void EmisSimulator::dropArrivals(int count)
 {
     m_dropArrivals = count;

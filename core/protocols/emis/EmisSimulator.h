@@ -91,6 +91,10 @@ public:
                            std::optional<qint64> steps);  // active at/below; nullopt: none
     void setSwitchWiring(Axis axis, bool normallyClosed); // the switch as wired
     void setInput(int number, bool level);                // inputs 5..8
+    // Inputs 5..8: what the machine wires to them (inputs 1..4 are the reference switches,
+    // manual 5.2, driven by the simulated carriages).
+    QList<int> settableInputs() const override { return {5, 6, 7, 8}; }
+    bool setSettableInput(int number, bool level) override;
     void dropArrivals(int count); // the next `count` <DCn> are not sent (the motor still stops)
     void bellOn(const QByteArray& command) { m_bellOn = command; } // <BEL> the next time it comes
     // A board that refuses the input query while a motor moves (<BEL>: "busy", a reading the

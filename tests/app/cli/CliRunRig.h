@@ -29,18 +29,20 @@ struct DeviceMove
 class RunDevice
 {
 public:
-    explicit RunDevice(const QString& modelId) : m_model(findModel(modelId))
+    // addresses: the simulated drives of a multi-drive model (Nanotec), 1 unless given.
+    explicit RunDevice(const QString& modelId, const QList<int>& addresses = {1})
+        : m_model(findModel(modelId))
     {
         m_thread.start();
         m_home.moveToThread(&m_thread);
-        probe([this] {
+        probe([this, addresses] {
             m_end = new PtyEndpoint;
             QString error;
             if (!m_end->create(&error))
                 qFatal("pty: %s", qPrintable(error));
             SimulatorOptions options;
             options.line = m_model->line;
-            options.addresses = {1};
+            options.addresses = addresses;
             m_sim = m_model->createSimulator(options);
             m_clock.start();
             // Before the simulator sees a frame: the axes as they were; after: what it took.

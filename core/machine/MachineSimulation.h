@@ -1,0 +1,16 @@
+#pragma once
+#include "MachineDescription.h"
+#include "model/Capabilities.h"
+#include "model/SimulatorScenario.h"
+
+namespace stepdeck::machine {
+
+// What a simulator of one controller of a machine file must look like for the file's machine
+// to work on it (issue 28, docs/machines.md "Simulated machines"): each axis' reference switch
+// on the side its reference run searches. Used by the in-process simulators of port "sim"
+// (Machine::create) and by `stepdeck-sim --machine`; the model applies what it supports
+// (ModelInfo::scenario, ScenarioOption::ReferenceSides).
+SimulatorScenario simulatorScenarioOf(const MachineDescription& description,
+                                      const QString& controllerId, const Capabilities& caps);
+
+} // namespace stepdeck::machine
