@@ -9,8 +9,9 @@ add_dependencies(tst_cli_run stepdeck-cli)
 stepdeck_add_test(tst_cli_run_devices SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_run_devices.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_run_devices stepdeck-cli)
-# stepdeck-cli on boards that answer as the manual allows: an SMC-IC4 that refuses input polls
-# while it moves (issue 28).
+# stepdeck-cli move and status on boards that answer as the manual allows: an SMC-IC4 that
+# refuses input polls while it moves, an E-LAB board that reports motion the host did not
+# command (issue 28).
 stepdeck_add_test(tst_cli_devices SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_devices.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 300)
 add_dependencies(tst_cli_devices stepdeck-cli)
