@@ -64,6 +64,13 @@ void CliMachineSession::watchSessions()
                         m_lastFailure = r.error;
                     wake();
                 });
+        connect(s, &ControllerSession::errorOccurred, this, [this, c](const QString& message) {
+            // What a controller did or saw on its own once connected (the E-LAB adapter
+            // stopping motion it did not command): a read reports it with what it read.
+            const QString note = faultText(c, message);
+            if (m_connected && !m_notes.contains(note))
+                m_notes << note;
+        });
         connect(s, &ControllerSession::jogRefused, this, [this, id = c.id](const QString& reason) {
             if (m_jogRefusal.isEmpty())
                 m_jogRefusal = m_description.controllers.size() == 1

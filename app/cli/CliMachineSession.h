@@ -52,6 +52,9 @@ public:
     // A controller refused a jog rate after it was sent (its own rules: a limit switch, a
     // drive that stopped answering); empty while none did.
     const QString& jogRefusal() const { return m_jogRefusal; }
+    // What the controllers reported by themselves since the connection (errorOccurred: a
+    // motion the host did not command and stopped, a resynchronisation), each once, in order.
+    const QStringList& notes() const { return m_notes; }
 
     void interrupt();
     bool interrupted() const { return m_interrupted; }
@@ -81,6 +84,7 @@ private:
     QString m_lostMessage;
     QHash<QString, QString> m_lostReasons;
     QString m_jogRefusal; // controller id -> why its link went down
+    QStringList m_notes;
     ErrorKind m_lastFailure = ErrorKind::None;
 };
 

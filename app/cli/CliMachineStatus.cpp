@@ -170,6 +170,11 @@ Outcome machineStatus(CliMachineSession& m, const CliOptions& o)
         return Outcome::usage(CliText::tr("status takes no arguments"));
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
+    // The read prints what it read (stdout); what a controller did meanwhile by itself, such
+    // as stopping motion the host did not command (docs/architecture.md, safety contract),
+    // goes to stderr. The read itself succeeded: exit 0.
+    for (const QString& note : m.notes())
+        printError(note);
     QString cause;
     const MachineState state = m.machine().state(&cause);
     const QJsonValue causeJson = cause.isEmpty() ? QJsonValue() : QJsonValue(cause);

@@ -62,7 +62,9 @@ void ElabController::writeStop(RequestId owner, StopDone done)
     replies->done = std::move(done);
 
     m_line.newEpoch();
-    // Work not yet written is dropped; polls stay (they are harmless and keep the status).
+    // Work not yet written is dropped; polls and status reads stay (they only observe: a read
+    // asked for before the stop returns what the board reports after it, never "cancelled").
+    // A pre-flight read goes with the command it guards (ElabCtlLine::StatusRead).
     m_queue.dropQueued(ErrorKind::Cancelled, tr("cancelled by stop"), false);
     m_ops.abortStream(ErrorKind::Cancelled, tr("feed stream stopped"));
     // The host ramp stops at once: the board brakes (XOFF) or stops (zero jog rates) itself.

@@ -133,7 +133,7 @@ void ElabCtlLine::readStatus(RequestId owner, StatusRead how, std::function<void
         for (ElabExchange& ex : *list) {
             ex.poll = how.poll;
             ex.tolerateStray = how.tolerant;
-            ex.droppable = !how.poll && owner != 0;
+            ex.droppable = how.beforeCommand && owner != 0;
             ex.retries = kStatusRetries; // idempotent: noise costs a retry, not a fault
         }
     }
@@ -211,8 +211,10 @@ void ElabCtlLine::preflight(RequestId id, ElabCtlStatusMapper::Rule rule,
     // start in between. Not idle: refused at once rather than waiting (callers that want to
     // wait poll the status themselves).
     const Op first = op(id);
+    StatusRead how;
+    how.beforeCommand = true;
     readStatus(
-        id, StatusRead{},
+        id, how,
         [this, first, rule, then] {
             if (stale(first))
                 return;

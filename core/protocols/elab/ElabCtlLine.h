@@ -40,6 +40,10 @@ public:
         bool tolerant = false;     // skip stray replies (after panic, reset, connect)
         bool temperature = false;
         bool startButton = false;
+        // The read only decides whether a command follows (a pre-flight): a stop drops it with
+        // that command. Every other read just observes, like a poll: a stop leaves it queued,
+        // so the caller gets what the board reports (after the stop, which overtakes it).
+        bool beforeCommand = false;
     };
 
     ElabCtlLine(ElabExchangeQueue& queue, MachineStatus& status, ElabCtlHooks hooks);

@@ -295,6 +295,12 @@ void EmisController::refreshStatus(RequestId id)
         return;
     m_exchange.request(
         encode::allInputs(), EmisLink::Expect::Ack, [this, id](const EmisLink::Result& r) {
+            if (busyMoving(r)) {
+                // The board is there and says a motor still moves: the status is the motion
+                // the host tracks, the inputs keep their last levels (as for a poll).
+                publish();
+                return finishOk(id, QVariant::fromValue(status()));
+            }
             if (r.outcome != EmisLink::Outcome::Ok)
                 return failExchange(id, encode::allInputs(), r);
             const auto levels = parseAllInputs(r.text);
@@ -307,6 +313,16 @@ void EmisController::refreshStatus(RequestId id)
             publish();
             finishOk(id, QVariant::fromValue(status()));
         });
+}
+
+bool EmisController::busyMoving(const EmisLink::Result& r) const
+{
+    // Chapter 9 ends answers with <BEL> "abhängig vom gesendeten Befehl und Betriebszustand";
+    // StepDeck reads it as an invalid value or a motor still moving (docs/cli.md). @IG (9.2)
+    // carries no value, so while the host tracks a motion it is the board busy with that
+    // motion, not a fault of the read. Without a tracked motion it stays a refusal: the host
+    // could not say which motor moves.
+    return r.outcome == EmisLink::Outcome::Refused && motionMayBeRunning();
 }
 
 void EmisController::applyInputs(const QList<bool>& levels)

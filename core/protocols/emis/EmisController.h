@@ -64,10 +64,12 @@ namespace stepdeck::emis {
 //   positioning move first sets the work speed of each of its axes the board is not known to
 //   have (EmisWorkSpeeds: written in this session, else stored, else 1000), so no move runs at
 //   a jog rate left on the board; when a jog ends the work speed is set back the same way.
-// - <BEL> means "refused, not executed" (an invalid value or a motor still moving); *PRSYS is
-//   read as closed by <ACK> (the manual shows no closing byte; otherwise the read times out and
-//   the stored values stay unknown); an absolute target where the axis stands is not sent (how
-//   the board answers a move of no length, 9.11 does not say). docs/cli.md lists these.
+// - <BEL> means "refused, not executed" (an invalid value or a motor still moving); an @IG
+//   status read answered with <BEL> while a motion of the host's runs is answered by that
+//   motion and the inputs' last levels, like a poll (busyMoving()); *PRSYS is read as closed
+//   by <ACK> (the manual shows no closing byte; otherwise the read times out and the stored
+//   values stay unknown); an absolute target where the axis stands is not sent (how the board
+//   answers a move of no length, 9.11 does not say). docs/cli.md lists these.
 class EmisController : public Controller, private EmisHost
 {
     Q_OBJECT
@@ -132,6 +134,8 @@ private:
     void finishOpen(ErrorKind kind, const QString& message);
     void onPollDue();
     void applyInputs(const QList<bool>& levels);
+    // An @IG answered with <BEL> while a motion of the host's is under way (chapter 9).
+    bool busyMoving(const EmisLink::Result& r) const;
     // What the host does when it stops tracking motion (link lost, closed; called by
     // abortHostSide()): there is no stop command to send, so it sends nothing; it stops the jog
     // chain, and every axis whose arrival is still awaited becomes unconfirmed with an unknown

@@ -14,3 +14,9 @@ stepdeck_add_test(tst_cli_examples SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_exa
                   ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 600)
 add_dependencies(tst_cli_examples stepdeck-cli)
 target_compile_definitions(tst_cli_examples PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# stepdeck-cli move and status on boards that answer as the manual allows: an SMC-IC4 that
+# refuses input polls while it moves, an E-LAB board that reports motion the host did not
+# command (issue 28).
+stepdeck_add_test(tst_cli_devices SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_devices.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 300)
+add_dependencies(tst_cli_devices stepdeck-cli)

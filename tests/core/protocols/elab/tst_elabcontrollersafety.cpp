@@ -25,6 +25,7 @@ private Q_SLOTS:
     void peerVanish_whileJogging_saysItMayStillMove();
     void lostJogAck_stopsAndRereadsStatus();
     void untrackedMotion_atConnect_isStopped();
+    void untrackedMotion_statusReadQueuedBehindTheRead_notCancelledByTheStop();
     void limitSwitch_duringJog_stopsAxis_andOnlyAwayIsAllowed();
     void limitSwitch_duringStream_endsStream();
     void velocityReversal_waitsForStandstill();
@@ -157,6 +158,42 @@ void TestElabControllerSafety::untrackedMotion_atConnect_isStopped()
     QVERIFY(rig.connect());
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim->countReceived(encode::stopMove()) >= 1, 3000);
     QTRY_VERIFY_WITH_TIMEOUT(deviceStill(rig), 3000);
+    bool said = false;
+    for (const QList<QVariant>& e : *rig.errors)
+        said = said || e.at(0).toString().contains(QLatin1String("did not command"));
+    QVERIFY(said);
+}
+
+// Issue 28: two status reads queued together (a CLI's read behind a poll); the first one shows
+// move bits the host did not command and the host stops that motion. The stop overtakes the
+// second read but does not drop it: a read only observes, it returns what the board reports
+// (never "cancelled by stop"). The board got the stop and stands.
+void TestElabControllerSafety::untrackedMotion_statusReadQueuedBehindTheRead_notCancelledByTheStop()
+{
+    Rig rig;
+    QVERIFY(rig.connectAndSetup());
+    // A FastMove X, Y of an earlier host: the board runs it, its ACK went nowhere.
+    rig.sim->faults().silent = true;
+    rig.sim->receive(encode::fastMoveXY(100000, 100000));
+    rig.sim->faults().silent = false;
+    QVERIFY(rig.sim->isMoving(Axis::X) && rig.sim->isMoving(Axis::Y));
+    rig.sim->clearReceivedFrames();
+    rig.errors->clear();
+
+    const RequestId first = rig.nextId++;
+    const RequestId second = rig.nextId++;
+    rig.ctl->refreshStatus(first);
+    rig.ctl->refreshStatus(second);
+    const CommandResult read = rig.wait(first);
+    QVERIFY2(read.ok(), qPrintable(read.message));
+    const MachineStatus seen = read.value.value<MachineStatus>();
+    QVERIFY(seen.axes.value(Axis::X).moving && seen.axes.value(Axis::Y).moving);
+    const CommandResult behind = rig.wait(second);
+    QVERIFY2(behind.ok(), qPrintable(behind.message));
+
+    QTRY_VERIFY_WITH_TIMEOUT(rig.sim->countReceived(encode::stopMove()) >= 1, 3000);
+    QTRY_VERIFY_WITH_TIMEOUT(deviceStill(rig), 3000);
+    QVERIFY(rig.sim->position(Axis::X) < 100000);
     bool said = false;
     for (const QList<QVariant>& e : *rig.errors)
         said = said || e.at(0).toString().contains(QLatin1String("did not command"));

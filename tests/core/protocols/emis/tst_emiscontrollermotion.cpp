@@ -31,6 +31,8 @@ private Q_SLOTS:
     void reference_minusOne_invalid();
     void lostArrival_deadline_motionUnconfirmed_untilReferenced();
     void pollRefusedWhileMoving_linkStays_moveArrives();
+    void refreshStatus_answeredWithBelWhileMoving_finishesWithTheTrackedMotion();
+    void refreshStatus_answeredWithBelAtStandstill_refused();
     void noNakReply_lateArrivalStillCounts();
     void unexpectedArrival_positionUnknown();
     void jog_chunksOfAtMostPointTwoSeconds_nextAfterArrival();
@@ -205,6 +207,43 @@ void TestEmisControllerMotion::pollRefusedWhileMoving_linkStays_moveArrives()
     QCOMPARE(m_rig.axis(Axis::X).position, 300);
     QCOMPARE(m_rig.sim->position(Axis::X), 300);
     QVERIFY(!m_rig.axis(Axis::X).positionEstimated);
+}
+
+// A status read during a move (what Machine asks for once a move was accepted): the board
+// answers @IG with <BEL> while its motor moves (chapter 9). The read is answered by the motion
+// the host tracks; the move still arrives and nothing counts as lost.
+void TestEmisControllerMotion::
+    refreshStatus_answeredWithBelWhileMoving_finishesWithTheTrackedMotion()
+{
+    QVERIFY(m_rig.write({"ramp=20", "start-speed=500", "work-speed=500"}).ok());
+    m_rig.sim->setBellOnPollWhileMoving(true);
+    QVERIFY(m_rig.run([&](RequestId id) { m_rig.ctl->moveRelative(id, {{Axis::X, 300}}); }).ok());
+    QVERIFY(m_rig.sim->anyMoving()); // 0.6 s at 500 steps/s
+    m_rig.sim->clearReceivedCommands();
+    const CommandResult read = m_rig.run([&](RequestId id) { m_rig.ctl->refreshStatus(id); });
+    QVERIFY2(read.ok(), qPrintable(read.message));
+    QCOMPARE(m_rig.sim->receivedCommands().value(0), QByteArray("@IG")); // it was asked
+    QVERIFY(m_rig.sim->anyMoving());                                     // and refused with <BEL>
+    const MachineStatus status = read.value.value<MachineStatus>();
+    QVERIFY(status.axes.value(Axis::X).moving);
+    QVERIFY(!status.motionUnconfirmed);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_rig.sim->anyMoving(), 5000);
+    QTRY_VERIFY(!m_rig.anyMoving());
+    QCOMPARE(m_rig.axis(Axis::X).position, 300);
+    QCOMPARE(m_rig.sim->position(Axis::X), 300);
+    QVERIFY(!m_rig.ctl->status().motionUnconfirmed);
+}
+
+// Without a motion of the host's under way a <BEL> to @IG stays a refusal: the host could not
+// say which motor the board is busy with.
+void TestEmisControllerMotion::refreshStatus_answeredWithBelAtStandstill_refused()
+{
+    m_rig.ctl->setPollInterval(60000); // no poll takes the <BEL> meant for the read
+    QTRY_VERIFY(m_rig.ctl->link().isIdle());
+    m_rig.sim->bellOn("@IG");
+    const CommandResult read = m_rig.run([&](RequestId id) { m_rig.ctl->refreshStatus(id); });
+    QCOMPARE(read.error, ErrorKind::Nak);
+    QVERIFY2(read.message.contains("@IG"), qPrintable(read.message));
 }
 
 void TestEmisControllerMotion::noNakReply_lateArrivalStillCounts()
