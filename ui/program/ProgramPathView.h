@@ -1,5 +1,6 @@
 #pragma once
 #include "program/ProgramCheck.h"
+#include <QPixmap>
 #include <QWidget>
 #include <optional>
 
@@ -29,6 +30,8 @@ public:
     QString emptyText() const { return m_empty; }
     // Where a machine position is drawn in the widget (for tests of the marker).
     QPointF toWidget(const QPointF& position) const;
+    // How often the path itself was drawn (tests: a moving marker does not redraw it).
+    int pathRenders() const { return m_pathRenders; }
 
     QSize sizeHint() const override { return {320, 240}; }
     QSize minimumSizeHint() const override { return {120, 60}; }
@@ -38,8 +41,27 @@ protected:
 
 private:
     QRectF bounds() const; // machine coordinates shown
+    struct Scale
+    {
+        double scale = 1, x0 = 0, y0 = 0;
+        QPointF map(const QPointF& p) const { return {x0 + p.x() * scale, y0 - p.y() * scale}; }
+        bool operator==(const Scale& o) const
+        {
+            return scale == o.scale && x0 == o.x0 && y0 == o.y0;
+        }
+    };
+    Scale currentScale() const;
+    void updatePathBounds();
+    void paintPath(QPainter& painter, const Scale& scale) const;
 
     QList<QPointF> m_points;
+    // The path and the soft limits' rectangle, worked out once per path (issue 28: a 20 000-point
+    // path was measured again for every point of every repaint, 2.5 s per block at 100 % CPU).
+    std::optional<QRectF> m_pathBounds;
+    // The path drawn once at this size and scale; only the marker is drawn on every repaint.
+    QPixmap m_cache;
+    std::optional<Scale> m_cacheScale;
+    int m_pathRenders = 0;
     std::optional<QRectF> m_limits;
     std::optional<QPointF> m_current;
     QString m_unit;

@@ -35,6 +35,7 @@ private Q_SLOTS:
     void files_saveThenLoad_sameTextAndRecent();
     void files_missingFile_refusedEditorKept();
     void pathView_square_drawnSquareWithYUp();
+    void pathView_markerMoves_pathDrawnOnce();
     void times_data();
     void times();
     void controls_states_onlyUsefulButtonsEnabled_data();
@@ -150,6 +151,34 @@ void TestProgramWidgets::pathView_square_drawnSquareWithYUp()
     QCOMPARE(qRound(right.x() - origin.x()), qRound(origin.y() - up.y())); // to scale
     view.setCurrent(QPointF(5, 5));
     QCOMPARE(*view.current(), QPointF(5, 5));
+}
+
+// Issue 28: a 20 000-point path was drawn (and measured, for every point) on every repaint while
+// the marker moved: the path is drawn once per size, the marker over it.
+void TestProgramWidgets::pathView_markerMoves_pathDrawnOnce()
+{
+    ProgramPathView view;
+    view.resize(400, 300);
+    QList<QPointF> points;
+    for (int i = 0; i < 20000; ++i)
+        points << QPointF(i % 100, i / 200.0);
+    view.setPath(points, QRectF(QPointF(0, 0), QPointF(100, 100)), QStringLiteral("mm"));
+    view.grab();
+    QCOMPARE(view.pathRenders(), 1);
+    const QPointF before = view.toWidget({50, 50});
+    for (int i = 0; i < 10; ++i) {
+        view.setCurrent(QPointF(10 + i, 20 + i));
+        view.grab();
+    }
+    QCOMPARE(view.pathRenders(), 1);
+    QCOMPARE(view.toWidget({50, 50}), before); // the marker inside: the drawing held still
+    view.resize(500, 300);                     // another size: drawn again, once
+    view.grab();
+    view.grab();
+    QCOMPARE(view.pathRenders(), 2);
+    view.setPath(points.mid(0, 10), std::nullopt, QStringLiteral("mm")); // another path
+    view.grab();
+    QCOMPARE(view.pathRenders(), 3);
 }
 
 void TestProgramWidgets::times_data()
