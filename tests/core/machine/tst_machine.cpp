@@ -110,6 +110,7 @@ private Q_SLOTS:
     void reference_unknownAxis_refusedNothingSent();
     void reference_invertedAxis_fileDirectionIsTheMachines();
     void reference_linkLostDuringRun_failsNamingTheControllerAndStopsTheOthers();
+    void stop_duringReferencedMove_positionsStayKnownAndAnAbsoluteMoveLandsThere();
 
 private:
     MachineDescription description() const;
@@ -413,6 +414,39 @@ void TestMachine::reference_zFirst_xAndATogetherAfterZIsReferenced()
     }
     QVERIFY(m_machine->axisStatus(*m_machine->description().axis("Y")).known !=
             PositionKnowledge::Referenced);
+}
+
+// Issue 28, item 4: STOP brakes the E-LAB with its ramp (ForceStopMove "ohne
+// Schrittverluste"; the remaining steps read with RequestRelPosition): X's position stays known,
+// and an absolute move without a new reference run lands where the board says. (A Nanotec drive
+// stops without a ramp, 6.2 "Schrittverluste": its position is not claimed after a STOP.)
+void TestMachine::stop_duringReferencedMove_positionsStayKnownAndAnAbsoluteMoveLandsThere()
+{
+    QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
+    QString refusal;
+    QVERIFY2(m_machine->reference({"X"}, &refusal) != 0, qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(referenced.size(), 1, 60000);
+    QVERIFY2(referenced.at(0).at(1).toBool(), qPrintable(referenced.at(0).at(2).toString()));
+    const qint64 xHome = positionX(*m_elab); // the board counts from power-on, the host from here
+
+    QVERIFY(m_machine->move({{"X", 100.0}}, false, &refusal) != 0);
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    m_machine->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(receivedStop(*m_elab));
+    const MachineDescription& d = m_machine->description();
+    // The host's position follows the board once it answered the stop.
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->axisStatus(*d.axis("X")).steps, positionX(*m_elab) - xHome,
+                              10000);
+    QCOMPARE(m_machine->axisStatus(*d.axis("X")).known, PositionKnowledge::Referenced);
+    QVERIFY(m_machine->axisStatus(*d.axis("X")).steps > 0); // stopped part-way
+    QVERIFY(m_machine->axisStatus(*d.axis("X")).steps < 40000);
+
+    QSignalSpy moved(m_machine.get(), &Machine::moveFinished);
+    QVERIFY2(m_machine->move({{"X", 5.0}}, true, &refusal) != 0, qPrintable(refusal));
+    QTRY_COMPARE_WITH_TIMEOUT(moved.size(), 1, 30000);
+    QVERIFY2(moved.at(0).at(1).toBool(), qPrintable(moved.at(0).at(2).toString()));
+    QCOMPARE(positionX(*m_elab) - xHome, qint64(2000)); // 5 mm x 400 steps/mm
 }
 
 // The file's direction is in the machine's sense: an inverted Z referenced "+1" searches the
