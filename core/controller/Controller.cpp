@@ -29,7 +29,7 @@ Controller::Controller(Transport* transport, const ControllerOptions& options, Q
     qRegisterMetaType<stepdeck::CommandResult>();
     qRegisterMetaType<stepdeck::TrafficRecord>();
     qRegisterMetaType<stepdeck::ParameterSet>();
-    m_jogTimer.setInterval(qMax(5, m_options.jogTickMs));
+    m_jogTimer.setInterval(int(jogTickSeconds() * 1000));
     m_jogTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_jogTimer, &QTimer::timeout, this, &Controller::onJogTick);
     if (m_options.jogAccelerationStepsPerS2 > 0)
@@ -148,7 +148,8 @@ QString Controller::jogAxisRefusal(Axis, double) const
 
 double Controller::jogStopDistance(Axis axis, double speed) const
 {
-    return SoftLimits::rampStopDistance(m_jogRamp.acceleration())(axis, speed);
+    Q_UNUSED(axis)
+    return JogRamp::stopDistance(speed, m_jogRamp.acceleration(), jogTickSeconds());
 }
 
 void Controller::setJogVelocity(const AxisVelocities& targets)
@@ -267,11 +268,17 @@ void Controller::onJogTick()
         axis.position += qint64(whole);
         axis.positionEstimated = true;
     }
+    // The device holds what it is sent until the next tick: while braking, the rate the ramp
+    // reaches at the end of that tick (JogRamp::heldRates), so a release travels no further
+    // than jogStopDistance() says (issue 28 item 6).
+    const AxisVelocities held = m_jogRamp.heldRates(jogTickSeconds(), m_lastAppliedJog,
+                                                    (now - m_lastAppliedJogMs) / 1000.0);
     AxisVelocities rounded;
-    for (auto it = rates.cbegin(); it != rates.cend(); ++it)
+    for (auto it = held.cbegin(); it != held.cend(); ++it)
         rounded.insert(it.key(), double(qRound64(it.value())));
     if (rounded != m_lastAppliedJog) {
         m_lastAppliedJog = rounded;
+        m_lastAppliedJogMs = now;
         for (auto it = rounded.cbegin(); it != rounded.cend(); ++it) {
             if (m_status.axes.contains(it.key()))
                 m_status.axes[it.key()].commandedVelocity = it.value();

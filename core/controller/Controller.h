@@ -168,8 +168,11 @@ protected:
     virtual QString jogAxisRefusal(Axis axis, double target) const;
     // Soft limits: how far (steps) an axis jogging at `speed` still travels after its jog
     // target drops to zero. Default: the host JogRamp's braking distance (E-LAB: the host
-    // ramps, the board follows each rate). A model whose drive ramps by itself overrides it.
+    // ramps, the board follows each rate; JogRamp::stopDistance with the jog tick). A model
+    // whose drive ramps by itself overrides it.
     virtual double jogStopDistance(Axis axis, double speed) const;
+    // The period of the jog tick: how long the device holds each rate it is sent.
+    double jogTickSeconds() const { return qMax(5, m_options.jogTickMs) / 1000.0; }
 
     void setLinkState(LinkState state, const QString& reason = {});
     MachineStatus& mutableStatus() { return m_status; }
@@ -220,6 +223,7 @@ private:
     qint64 m_lastJogTickMs = 0;
     qint64 m_leaseRenewedMs = 0;
     AxisVelocities m_lastAppliedJog;
+    qint64 m_lastAppliedJogMs = 0; // m_jogClock when m_lastAppliedJog was sent
     AxisVelocities m_jogStepCarry; // fractions of a step not yet added to the estimate
     RequestId m_jogStepId = 0;     // the jog step in flight (jogging by targets)
     QList<Axis> m_stepJogAxes;     // axes whose commandedVelocity a jog step set

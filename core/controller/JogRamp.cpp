@@ -1,5 +1,6 @@
 #include "JogRamp.h"
 #include <QtMath>
+#include <algorithm>
 
 namespace stepdeck {
 
@@ -85,6 +86,34 @@ AxisVelocities JogRamp::advance(double dtSeconds)
         m_current.insert(a, next);
     }
     return m_current;
+}
+
+AxisVelocities JogRamp::heldRates(double tickSeconds, const AxisVelocities& sent,
+                                  double sinceSentSeconds) const
+{
+    AxisVelocities held = m_current;
+    const double step = m_acceleration * qMax(0.0, tickSeconds);
+    const double followable = m_acceleration * qMax(0.0, sinceSentSeconds);
+    for (auto it = held.begin(); it != held.end(); ++it) {
+        const double cur = it.value();
+        const double target = m_targets.value(it.key(), 0.0);
+        const bool reversing = cur != 0.0 && target != 0.0 && (cur > 0) != (target > 0);
+        const double floor = reversing ? 0.0 : target; // where this braking ends
+        if (cur == 0.0 || qAbs(floor) >= qAbs(cur))
+            continue; // standing, holding or speeding up: the current rate
+        const double last = sent.value(it.key(), cur);
+        // Never beyond the ramp's current rate (a rate stopped at once stays stopped).
+        it.value() = cur > 0 ? qMin(cur, std::max({floor, cur - step, last - followable}))
+                             : qMax(cur, std::min({floor, cur + step, last + followable}));
+    }
+    return held;
+}
+
+double JogRamp::stopDistance(double speed, double acceleration, double tickSeconds)
+{
+    const double v = qAbs(speed);
+    const double ramp = acceleration > 0 ? v * v / (2 * acceleration) : 0.0;
+    return qMax(ramp, v * qMax(0.0, tickSeconds));
 }
 
 bool JogRamp::isIdle() const

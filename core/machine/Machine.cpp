@@ -75,8 +75,17 @@ bool Machine::create(const MachineDescription& description, QString* error)
     m_description = description;
     for (const MachineController& c : m_description.controllers) {
         auto session = std::make_unique<ControllerSession>();
+        const ModelInfo& model = *findModel(c.modelId);
+        ConnectionSpec spec = specOf(c, m_baseOptions);
+        // The axes' jogAcceleration as the controller's jog ramp (issue 28 item 6; 0 keeps the
+        // model's default ramp). Only where the host ramp is what brakes a jog
+        // (Capabilities::hostRampedJog, the E-LAB); a drive that ramps by itself (Nanotec 6.6,
+        // EMIS 9.6) stops by its own ramp whatever the host's (docs/machines.md).
+        const double ramp = m_description.jogRampAcceleration(c.id, model.capabilities.maxJogSpeed);
+        if (ramp > 0 && model.capabilities.hostRampedJog)
+            spec.options.jogAccelerationStepsPerS2 = ramp;
         QString why;
-        if (!session->create(*findModel(c.modelId), specOf(c, m_baseOptions), &why)) {
+        if (!session->create(model, spec, &why)) {
             if (error)
                 *error = tr("controller \"%1\": %2").arg(c.id, why);
             destroy();

@@ -44,6 +44,8 @@ QJsonObject axisJson(const MachineAxis& a)
         o.insert("softLimits", QJsonArray{*a.softMinimum, *a.softMaximum});
     if (a.maxJogSpeed)
         o.insert("maxJogSpeed", *a.maxJogSpeed);
+    if (a.jogAcceleration)
+        o.insert("jogAcceleration", *a.jogAcceleration);
     QJsonObject reference{{"order", a.referenceOrder}};
     if (a.referenceDirection != 0)
         reference.insert("direction", a.referenceDirection);
@@ -91,6 +93,40 @@ double MachineAxis::toStepRate(double unitsPerSecond) const
 {
     const double rate = unitsPerSecond * stepsPerUnit;
     return invert ? -rate : rate;
+}
+
+double MachineAxis::topJogSpeed(double controllerCeilingStepsPerS) const
+{
+    return maxJogSpeed ? *maxJogSpeed : controllerCeilingStepsPerS / stepsPerUnit;
+}
+
+std::optional<double> MachineAxis::effectiveJogAcceleration(double controllerCeilingStepsPerS) const
+{
+    if (jogAcceleration || unit == AxisUnit::Step)
+        return jogAcceleration;
+    // v^2 = 2 a s: from the top speed to standstill within s = 1 unit.
+    const double top = topJogSpeed(controllerCeilingStepsPerS);
+    return top * top / 2.0;
+}
+
+double MachineDescription::jogRampAcceleration(const QString& controllerId,
+                                               double controllerCeilingStepsPerS) const
+{
+    // One ramp brakes every axis of the controller, in steps/s^2. Axis i at v units/s stops
+    // within v^2 x stepsPerUnit / (2 A) units on a ramp of A steps/s^2, which is within its own
+    // v^2 / (2 a_i) only while A >= a_i x stepsPerUnit. So the steepest axis sets the ramp:
+    // the largest a_i x stepsPerUnit is the one that keeps every axis within its stopping
+    // distance (the smallest would let the steeper axes coast past theirs). The gentler axes
+    // then brake harder than their own jogAcceleration; a machine whose axes cannot take that
+    // puts them on separate controllers or gives them the same stopping distance.
+    double steepest = 0;
+    for (const MachineAxis& a : axes) {
+        if (a.controller != controllerId)
+            continue;
+        if (const auto acc = a.effectiveJogAcceleration(controllerCeilingStepsPerS))
+            steepest = qMax(steepest, *acc * a.stepsPerUnit);
+    }
+    return steepest;
 }
 
 const MachineController* MachineDescription::controller(const QString& id) const
@@ -167,8 +203,8 @@ bool operator==(const MachineAxis& a, const MachineAxis& b)
     return a.name == b.name && a.controller == b.controller && a.axis == b.axis &&
            a.unit == b.unit && a.stepsPerUnit == b.stepsPerUnit && a.invert == b.invert &&
            a.softMinimum == b.softMinimum && a.softMaximum == b.softMaximum &&
-           a.maxJogSpeed == b.maxJogSpeed && a.referenceDirection == b.referenceDirection &&
-           a.referenceOrder == b.referenceOrder;
+           a.maxJogSpeed == b.maxJogSpeed && a.jogAcceleration == b.jogAcceleration &&
+           a.referenceDirection == b.referenceDirection && a.referenceOrder == b.referenceOrder;
 }
 
 bool operator==(const MachineDescription& a, const MachineDescription& b)

@@ -43,6 +43,7 @@ struct MachineAxis
     bool invert = false;     // a positive machine move is a negative controller move
     std::optional<double> softMinimum, softMaximum; // in unit; both or neither
     std::optional<double> maxJogSpeed;              // unit/s
+    std::optional<double> jogAcceleration;          // unit/s^2, > 0 (issue 28 item 6)
     int referenceDirection = 0; // -1 or +1; 0: the file leaves it to the model's default
     int referenceOrder = 0;     // lower orders are referenced first
 
@@ -53,6 +54,14 @@ struct MachineAxis
     // A rate in unit/s as steps/s (sign kept, inversion applied).
     double toStepRate(double unitsPerSecond) const;
     bool hasSoftLimits() const { return softMinimum.has_value() && softMaximum.has_value(); }
+    // The fastest this axis jogs in unit/s: its maxJogSpeed, or else the controller's jog
+    // ceiling (Capabilities::maxJogSpeed, steps/s) in the axis' unit.
+    double topJogSpeed(double controllerCeilingStepsPerS) const;
+    // The deceleration its jog ramp follows, unit/s^2: the file's jogAcceleration, or else
+    // topJogSpeed^2 / (2 x 1 unit), which stops a release from the top speed within one unit
+    // (1 mm, 1 deg). An axis counted in steps has no default (one step would be no ramp at
+    // all): none, the model's own jog ramp (Capabilities::defaultJogAcceleration).
+    std::optional<double> effectiveJogAcceleration(double controllerCeilingStepsPerS) const;
 };
 
 // A machine: a name, its controllers and its named axes (docs/machines.md). Built by
@@ -68,6 +77,10 @@ struct MachineDescription
     const MachineAxis* axis(const QString& name) const;
     // The axes in referencing order: groups of equal order, lowest first, file order inside.
     QList<QList<const MachineAxis*>> referenceGroups() const;
+    // The jog ramp of controller `id` in steps/s^2 (ControllerOptions::jogAccelerationStepsPerS2;
+    // 0: the model's default, when none of its axes has an effectiveJogAcceleration).
+    double jogRampAcceleration(const QString& controllerId,
+                               double controllerCeilingStepsPerS) const;
 
     // A machine of one controller: its axes keep their controller names, unit steps, 1 step
     // per unit, no limits. `addresses` as for MachineController::busAddresses.

@@ -173,7 +173,7 @@ bool Reader::readAxis(const QJsonValue& v, const QString& path, MachineAxis* a)
     const QJsonObject o = v.toObject();
     if (!onlyKeys(o, path,
                   {"name", "controller", "axis", "unit", "stepsPerUnit", "invert", "softLimits",
-                   "maxJogSpeed", "reference"}))
+                   "maxJogSpeed", "jogAcceleration", "reference"}))
         return false;
     return readAxisValues(o, path, a);
 }
@@ -204,7 +204,8 @@ bool Reader::readAxisValues(const QJsonObject& o, const QString& path, MachineAx
     a->invert = invert.toBool(false);
     if (o.contains("softLimits") && !readSoftLimits(o.value("softLimits"), path, a))
         return false;
-    if (!number(o, path, "maxJogSpeed", &a->maxJogSpeed))
+    if (!number(o, path, "maxJogSpeed", &a->maxJogSpeed) ||
+        !number(o, path, "jogAcceleration", &a->jogAcceleration))
         return false;
     return !o.contains("reference") || readReference(o.value("reference"), path, a);
 }

@@ -188,6 +188,12 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
                             .arg(model.capabilities.maxJogSpeed)
                             .arg(model.id));
     }
+    if (a.jogAcceleration && (!std::isfinite(*a.jogAcceleration) || *a.jogAcceleration <= 0 ||
+                              !std::isfinite(*a.jogAcceleration * a.stepsPerUnit)))
+        return fail(path + QStringLiteral(".jogAcceleration"),
+                    MachineFile::tr("must be an acceleration greater than 0 in %1/s\u00b2 (is %2)")
+                        .arg(unitText(a.unit))
+                        .arg(*a.jogAcceleration));
     if (a.referenceDirection != 0 && !model.capabilities.referenceDirection)
         return fail(path + QStringLiteral(".reference.direction"),
                     MachineFile::tr("%1 chooses the direction of its reference runs itself: leave "

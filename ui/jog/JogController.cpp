@@ -91,6 +91,7 @@ void JogController::setMaxSpeed(Axis axis, double stepsPerS)
 {
     if (m_map->isMachine()) {
         m_map->setMaxSpeed(axis, stepsPerS); // unit/s
+        Q_EMIT speedSettingsChanged();
         update();
         return;
     }
@@ -98,6 +99,7 @@ void JogController::setMaxSpeed(Axis axis, double stepsPerS)
     m_maxSpeed.insert(axis, value);
     QSettings().setValue(
         QStringLiteral("jog/%1/%2/maxSpeed").arg(m_context->modelId(), axisName(axis)), value);
+    Q_EMIT speedSettingsChanged();
     update();
 }
 
@@ -111,6 +113,7 @@ double JogController::maxSpeed(Axis axis) const
 void JogController::setOverride(double fraction)
 {
     m_override = qBound(0.0, fraction, 1.0);
+    Q_EMIT speedSettingsChanged();
     update();
 }
 

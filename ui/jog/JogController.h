@@ -62,6 +62,7 @@ Q_SIGNALS:
     // shows it is to be cleared.
     void refusalEnded();
     void targetsChanged(const stepdeck::AxisVelocities& targets);
+    void speedSettingsChanged(); // a max speed or the override changed
 
 private:
     // Reads every source's proof and sends what changed; renewal: send even if unchanged

@@ -6,6 +6,7 @@
 #include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
 #include "jog/JogSettingsWidget.h"
+#include "jog/JogStopDistanceLabel.h"
 #include "jog/JogVelocityReadout.h"
 #include "jog/JoystickPad.h"
 #include "jog/KeyboardJog.h"
@@ -38,6 +39,7 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
       m_keyboardState(new ElidedLabel(this)), m_refusal(new ElidedLabel(this, 2)),
       m_jogModeNote(new QLabel(this)), m_refusalTimer(new QTimer(this)),
       m_velocity(new JogVelocityReadout(context, this)),
+      m_stopDistance(new JogStopDistanceLabel(context, jog, this)),
       m_incremental(new IncrementalJogWidget(context, this)), m_settingsDialog(new QDialog(this)),
       m_settings(new JogSettingsWidget(context, jog, keyboard, m_settingsDialog))
 {
@@ -154,7 +156,9 @@ QWidget* JogPanel::buildSidePanel()
     v->addWidget(m_velocity);
 
     auto* speed = new QGroupBox(tr("Speed override"), side);
-    auto* sv = new QHBoxLayout(speed);
+    auto* speedRows = new QVBoxLayout(speed);
+    auto* sv = new QHBoxLayout;
+    speedRows->addLayout(sv);
     m_override->setRange(1, 100);
     m_override->setValue(QSettings().value(QStringLiteral("jog/override"), 100).toInt());
     m_override->setFocusPolicy(Qt::NoFocus);
@@ -170,6 +174,8 @@ QWidget* JogPanel::buildSidePanel()
     };
     connect(m_override, &QSlider::valueChanged, this, applyOverride);
     applyOverride(m_override->value());
+    // The stopping distance at this speed (issue 28 item 6), below the slider that sets it.
+    speedRows->addWidget(m_stopDistance);
     v->addWidget(speed);
 
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);

@@ -17,6 +17,7 @@ class IncrementalJogWidget;
 class JogController;
 class JogVelocityReadout;
 class JogSettingsWidget;
+class JogStopDistanceLabel;
 class JoystickPad;
 class KeyboardJog;
 class MachineContext;
@@ -38,6 +39,7 @@ public:
     // With a machine open: the machine axis the other stick (and End/Home) jogs.
     QComboBox* otherStickAxis() const { return m_otherAxis; }
     JogVelocityReadout* velocityReadout() const { return m_velocity; }
+    JogStopDistanceLabel* stopDistance() const { return m_stopDistance; }
     QCheckBox* keyboardCheck() const { return m_keyboardCheck; }
     QSlider* overrideSlider() const { return m_override; }
     QLabel* refusalLabel() const { return m_refusal; }
@@ -74,6 +76,7 @@ private:
     QLabel* m_jogModeNote; // how jog works on models without a jog command
     QTimer* m_refusalTimer;
     JogVelocityReadout* m_velocity;
+    JogStopDistanceLabel* m_stopDistance;
     IncrementalJogWidget* m_incremental;
     QDialog* m_settingsDialog;
     JogSettingsWidget* m_settings;

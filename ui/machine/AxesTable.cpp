@@ -17,8 +17,17 @@ const QStringList kNames = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
 
 QStringList keys()
 {
-    return {"name",           "controller", "axis",    "unit",        "stepsPerUnit",
-            "invert",         "softMin",    "softMax", "maxJogSpeed", "reference.direction",
+    return {"name",
+            "controller",
+            "axis",
+            "unit",
+            "stepsPerUnit",
+            "invert",
+            "softMin",
+            "softMax",
+            "maxJogSpeed",
+            "jogAcceleration",
+            "reference.direction",
             "reference.order"};
 }
 
@@ -59,8 +68,8 @@ template <typename T> T* as(QWidget* w)
 AxesTable::AxesTable(QWidget* parent)
     : EditorTable(keys(),
                   {tr("Name"), tr("Controller"), tr("Axis"), tr("Unit"), tr("Steps/unit"),
-                   tr("Invert"), tr("Min"), tr("Max"), tr("Max jog/s"), tr("Ref. direction"),
-                   tr("Ref. order")},
+                   tr("Invert"), tr("Min"), tr("Max"), tr("Max jog/s"), tr("Jog accel./s\u00b2"),
+                   tr("Ref. direction"), tr("Ref. order")},
                   6, parent)
 {
     setObjectName(QStringLiteral("axesTable"));
@@ -68,6 +77,9 @@ AxesTable::AxesTable(QWidget* parent)
     horizontalHeaderItem(columnOf("softMax"))->setToolTip(tr("Soft limit maximum (optional)"));
     horizontalHeaderItem(columnOf("maxJogSpeed"))
         ->setToolTip(tr("Jog speed ceiling in unit/s (optional)"));
+    horizontalHeaderItem(columnOf("jogAcceleration"))
+        ->setToolTip(tr("Jog acceleration in unit/s\u00b2 (optional; empty: a release from the "
+                        "max jog speed stops within 1 mm or 1 deg)"));
     horizontalHeaderItem(columnOf("reference.order"))
         ->setToolTip(tr("Axes with a lower order are referenced first"));
 }
@@ -132,6 +144,7 @@ void AxesTable::addUnitCells(int row, const MachineAxis& a)
     addLineCell(row, "softMin", optionalText(a.softMinimum), 70);
     addLineCell(row, "softMax", optionalText(a.softMaximum), 70);
     addLineCell(row, "maxJogSpeed", optionalText(a.maxJogSpeed), 80);
+    addLineCell(row, "jogAcceleration", optionalText(a.jogAcceleration), 80);
 }
 
 void AxesTable::addReferenceCells(int row, const MachineAxis& a)
@@ -182,7 +195,9 @@ bool AxesTable::readRow(int r, MachineAxis* a, MachineFileError* error) const
     return readDecimal(as<QLineEdit>(cell(r, "softMin")), limits, true, &a->softMinimum, error) &&
            readDecimal(as<QLineEdit>(cell(r, "softMax")), limits, true, &a->softMaximum, error) &&
            readDecimal(as<QLineEdit>(cell(r, "maxJogSpeed")), path + "maxJogSpeed", true,
-                       &a->maxJogSpeed, error);
+                       &a->maxJogSpeed, error) &&
+           readDecimal(as<QLineEdit>(cell(r, "jogAcceleration")), path + "jogAcceleration", true,
+                       &a->jogAcceleration, error);
 }
 
 void AxesTable::setControllerIds(const QStringList& ids)

@@ -21,6 +21,11 @@ private Q_SLOTS:
     void setAcceleration_nonPositive_isIgnored();
     void advance_nonPositiveDt_changesNothing();
     void isIdle_onlyWhenRatesAndTargetsAreZero();
+    void release_heldRates_travelWithinRampDistance_data();
+    void release_heldRates_travelWithinRampDistance();
+    void heldRates_speedingUpOrHolding_areTheCurrentRates();
+    void heldRates_braking_neverPastTargetOrZero();
+    void heldRates_changeSinceLastSent_boundedByAcceleration();
 };
 
 void TestJogRamp::advance_stepPerTick_boundedByAcceleration_data()
@@ -218,6 +223,96 @@ void TestJogRamp::isIdle_onlyWhenRatesAndTargetsAreZero()
     QVERIFY(!ramp.isIdle()); // target zero, rate not yet
     ramp.advance(1.0);
     QVERIFY(ramp.isIdle());
+}
+
+// Issue 28 item 6: what the device travels after a release, as the Controller drives the
+// ramp: the rate held since the last tick runs on until the next one (the release comes just
+// after a tick: the worst case), then each tick advances the ramp and the device holds
+// heldRates() until the following tick. The total stays within JogRamp::stopDistance (v^2 /
+// (2a) unless braking is shorter than two ticks), the distance the jog panel shows; the rates
+// at the start of each tick (current()) overshoot it.
+void TestJogRamp::release_heldRates_travelWithinRampDistance_data()
+{
+    QTest::addColumn<double>("speed");
+    QTest::addColumn<double>("acceleration");
+    QTest::addColumn<double>("tick");
+
+    // 10 mm/s at 400 steps/mm with the machine default (stops within 1 mm = 400 steps).
+    QTest::newRow("E-LAB 4000 steps/s, 20000/s2, 20 ms") << 4000.0 << 20000.0 << 0.020;
+    QTest::newRow("E-LAB default ramp, 5000 steps/s") << 5000.0 << 2000.0 << 0.020;
+    QTest::newRow("slow, 5 ms ticks") << 300.0 << 1000.0 << 0.005;
+    QTest::newRow("stops within one tick") << 100.0 << 1e6 << 0.020;
+    QTest::newRow("negative") << -3000.0 << 15000.0 << 0.020;
+}
+
+void TestJogRamp::release_heldRates_travelWithinRampDistance()
+{
+    QFETCH(double, speed);
+    QFETCH(double, acceleration);
+    QFETCH(double, tick);
+
+    JogRamp ramp(acceleration, 5000);
+    ramp.setTarget(Axis::X, speed);
+    for (int i = 0; i < 10000 && ramp.current(Axis::X) != speed; ++i)
+        ramp.advance(tick);
+    QCOMPARE(ramp.heldRates(tick).value(Axis::X), speed);
+
+    ramp.releaseAll();
+    double travelled = qAbs(speed) * tick; // held until the next tick
+    int ticks = 0;
+    while (!ramp.isIdle() && ticks++ < 100000) {
+        ramp.advance(tick);
+        travelled += qAbs(ramp.heldRates(tick).value(Axis::X)) * tick;
+    }
+    const double bound = JogRamp::stopDistance(speed, acceleration, tick);
+    if (qAbs(speed) >= 2 * acceleration * tick) // braking spans two ticks: the ramp's distance
+        QCOMPARE(bound, speed * speed / (2 * acceleration));
+    QVERIFY2(travelled <= bound + 1e-6,
+             qPrintable(
+                 QStringLiteral("%1 steps after the release, bound %2").arg(travelled).arg(bound)));
+}
+
+void TestJogRamp::heldRates_speedingUpOrHolding_areTheCurrentRates()
+{
+    JogRamp ramp(2000, 5000);
+    ramp.setTargets({{Axis::X, 1000}, {Axis::Y, -1000}});
+    ramp.advance(0.1);
+    QCOMPARE(ramp.heldRates(0.02), ramp.currentVelocities()); // speeding up
+    ramp.advance(1.0);
+    QCOMPARE(ramp.heldRates(0.02), ramp.currentVelocities()); // at the target
+}
+
+void TestJogRamp::heldRates_braking_neverPastTargetOrZero()
+{
+    JogRamp ramp(1000, 5000);
+    ramp.setTargets({{Axis::X, 100}, {Axis::Y, -100}, {Axis::Z, 100}});
+    ramp.advance(1.0);
+    ramp.setTargets({{Axis::X, 90}, {Axis::Y, 50}, {Axis::Z, 0}});
+    const AxisVelocities held = ramp.heldRates(0.02); // 20 steps/s a tick
+    QCOMPARE(held.value(Axis::X), 90.0);              // lowered: not below the new target
+    QCOMPARE(held.value(Axis::Y), -80.0);             // reversing: towards zero first
+    QCOMPARE(held.value(Axis::Z), 80.0);
+    QCOMPARE(ramp.heldRates(10.0).value(Axis::Y), 0.0);
+    QCOMPARE(ramp.heldRates(10.0).value(Axis::Z), 0.0);
+}
+
+// The look ahead never makes a change the motor could not follow: at most acceleration x the
+// time since the rates were last sent below them; and an axis stopped at once stays stopped.
+void TestJogRamp::heldRates_changeSinceLastSent_boundedByAcceleration()
+{
+    JogRamp ramp(1000, 5000);
+    ramp.setTargets({{Axis::X, 100}, {Axis::Y, 100}});
+    ramp.advance(1.0);
+    ramp.releaseAll();
+    ramp.advance(0.02); // 80 steps/s now
+    const AxisVelocities sent{{Axis::X, 100}, {Axis::Y, 100}};
+    // Sent 20 ms ago: no further than 100 - 20 = 80, the ramp's own step.
+    QCOMPARE(ramp.heldRates(0.02, sent, 0.02).value(Axis::X), 80.0);
+    // Sent 40 ms ago (it ran at 100 for a tick): the whole look ahead, 60.
+    QCOMPARE(ramp.heldRates(0.02, sent, 0.04).value(Axis::X), 60.0);
+    QCOMPARE(ramp.heldRates(0.02).value(Axis::X), 60.0);
+    ramp.stopAxis(Axis::Y);
+    QCOMPARE(ramp.heldRates(0.02, sent, 0.0).value(Axis::Y), 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestJogRamp)

@@ -4,3 +4,9 @@ target_compile_definitions(tst_machinefile PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_
 # A machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
 stepdeck_add_test(tst_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machine.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+# A machine axis' jogAcceleration, its default and the controller's ramp (issue 28 item 6).
+stepdeck_add_test(tst_jogacceleration SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogacceleration.cpp LABELS unit)
+# Issue 28 item 6: a release from full jog speed stands within the stopping distance, at the
+# E-LAB simulator on a pseudo-terminal.
+stepdeck_add_test(tst_machinejogstop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinejogstop.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)

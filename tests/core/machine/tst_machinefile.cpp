@@ -23,7 +23,8 @@ QJsonObject tableAndRotary()
   ],
   "axes": [
     {"name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400,
-     "softLimits": [0, 300], "maxJogSpeed": 2, "reference": {"direction": -1, "order": 1}},
+     "softLimits": [0, 300], "maxJogSpeed": 2, "jogAcceleration": 8,
+     "reference": {"direction": -1, "order": 1}},
     {"name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400,
      "invert": true, "reference": {"order": 1}},
     {"name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800,
@@ -102,6 +103,8 @@ void TestMachineFile::parse_example_givesEveryField()
     QCOMPARE(x->softMinimum, 0.0);
     QCOMPARE(x->softMaximum, 300.0);
     QCOMPARE(x->maxJogSpeed, 2.0);
+    QCOMPARE(x->jogAcceleration, 8.0);
+    QVERIFY(!m->axis("Y")->jogAcceleration); // the default: see tst_jogacceleration
     QCOMPARE(x->referenceDirection, -1);
     QCOMPARE(x->referenceOrder, 1);
     QVERIFY(m->axis("Y")->invert);
@@ -221,6 +224,15 @@ void TestMachineFile::parse_invalid_namesTheField_data()
     QTest::newRow("jog speed above the controller")
         << withEdit("axes.0.maxJogSpeed", 1000) << "axes[0].maxJogSpeed"
         << "steps/s";
+    QTest::newRow("jog acceleration zero")
+        << withEdit("axes.0.jogAcceleration", 0) << "axes[0].jogAcceleration"
+        << "greater than 0 in mm/s\u00b2 (is 0)";
+    QTest::newRow("jog acceleration negative")
+        << withEdit("axes.3.jogAcceleration", -50) << "axes[3].jogAcceleration"
+        << "greater than 0 in deg/s\u00b2 (is -50)";
+    QTest::newRow("jog acceleration text")
+        << withEdit("axes.0.jogAcceleration", "fast") << "axes[0].jogAcceleration"
+        << "decimal";
     QTest::newRow("direction 2") << withEdit("axes.0.reference.direction", 2)
                                  << "axes[0].reference.direction"
                                  << "-1 or 1";

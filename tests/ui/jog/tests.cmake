@@ -10,3 +10,7 @@ stepdeck_add_test(tst_targetjogger SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_targetj
 stepdeck_add_test(tst_jogholdstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogholdstill.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui TIMEOUT 300)
+# The jog panel's stopping distance (issue 28 item 6).
+stepdeck_add_test(tst_jogstopdistance SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_jogstopdistance.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

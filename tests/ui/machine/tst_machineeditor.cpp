@@ -61,6 +61,10 @@ void TestMachineEditor::typedValue_invalid_namesFieldAndMarksCell_data()
     QTest::newRow("jog nan") << "axes" << 2 << "maxJogSpeed"
                              << "nan"
                              << "axes[2].maxJogSpeed" << QStringList{"maxJogSpeed"};
+    QTest::newRow("jog acceleration negative")
+        << "axes" << 2 << "jogAcceleration"
+        << "-5"
+        << "axes[2].jogAcceleration" << QStringList{"jogAcceleration"};
     QTest::newRow("duplicate name") << "axes" << 1 << "name"
                                     << "X"
                                     << "axes[1].name" << QStringList{"name"};
