@@ -2940,6 +2940,10 @@
             <source>the machine needs a name</source>
             <translation>die Maschine braucht einen Namen</translation>
         </message>
+        <message>
+            <source>must be an acceleration greater than 0 in %1/s² (is %2)</source>
+            <translation>muss eine Beschleunigung größer als 0 in %1/s² sein (ist %2)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::nanotec::Codec</name>
@@ -3625,6 +3629,26 @@
             <source>the run executes more than %1 blocks (repeats counted out)</source>
             <translation>der Lauf führt mehr als %1 Sätze aus (Wiederholungen ausgezählt)</translation>
         </message>
+        <message>
+            <source>F%1: controller "%2" would refuse its rate: %3</source>
+            <translation>F%1: Steuerung „%2“ würde ihre Geschwindigkeit ablehnen: %3</translation>
+        </message>
+        <message>
+            <source>%1; F%2 or less is taken, or change the setup on the Setup page</source>
+            <translation>%1; F%2 oder weniger wird angenommen, oder das Setup auf der Seite Setup ändern</translation>
+        </message>
+        <message>
+            <source>%1; set it on the Setup page first</source>
+            <translation>%1; zuerst auf der Seite Setup setzen</translation>
+        </message>
+        <message>
+            <source>%1: controller "%2": %3</source>
+            <translation>%1: Steuerung „%2“: %3</translation>
+        </message>
+        <message>
+            <source>controller "%1": %2</source>
+            <translation>Steuerung „%1“: %2</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramLexer</name>
@@ -3792,6 +3816,13 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::ProgramRules</name>
+        <message>
+            <source>its setup is incomplete, so it refuses every move: write %1 on the Setup page first</source>
+            <translation>ihr Setup ist unvollständig, daher lehnt sie jede Fahrt ab: zuerst %1 auf der Seite Setup schreiben</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ProgramRunner</name>
         <message>
             <source>idle</source>
@@ -3931,6 +3962,14 @@
         <message>
             <source>default</source>
             <translation>Vorgabe</translation>
+        </message>
+        <message>
+            <source>Jog accel./s²</source>
+            <translation>Tipp-Beschl./s²</translation>
+        </message>
+        <message>
+            <source>Jog acceleration in unit/s² (optional; empty: a release from the max jog speed stops within 1 mm or 1 deg)</source>
+            <translation>Tippbeschleunigung in Einheit/s² (optional; leer: nach dem Loslassen aus der maximalen Tippgeschwindigkeit steht die Achse innerhalb von 1 mm bzw. 1°)</translation>
         </message>
     </context>
     <context>
@@ -5066,6 +5105,33 @@ W1500</translation>
         <message>
             <source>Max %1:</source>
             <translation>Max. %1:</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JogStopDistanceLabel</name>
+        <message>
+            <source>How far each axis still travels after the pad, key or gamepad is let go at the jog speed set now (max speed x override)</source>
+            <translation>Wie weit jede Achse noch fährt, nachdem Pad, Taste oder Gamepad bei der jetzt eingestellten Tippgeschwindigkeit losgelassen wurde (Maximalgeschwindigkeit x Override)</translation>
+        </message>
+        <message>
+            <source>%1 %2 mm</source>
+            <translation>%1 %2 mm</translation>
+        </message>
+        <message>
+            <source>%1 %2 deg</source>
+            <translation>%1 %2°</translation>
+        </message>
+        <message>
+            <source>%1 %2 steps</source>
+            <translation>%1 %2 Schritte</translation>
+        </message>
+        <message>
+            <source>Stops by the controller's own ramp after a release</source>
+            <translation>Hält nach dem Loslassen mit der eigenen Rampe der Steuerung an</translation>
+        </message>
+        <message>
+            <source>Stops within %1</source>
+            <translation>Hält an innerhalb von %1</translation>
         </message>
     </context>
     <context>

@@ -13,7 +13,8 @@ public:
     void reset(const program::ProgramPreview& preview);
     void blockFinished(int line);
     double secondsDone() const { return m_secondsDone; }
-    // The estimate's rest; nullopt when it cannot be told (no estimate, path truncated).
+    // The estimate's rest; a path cut short (ProgramPreview::pathTruncated) counts down by the
+    // share of blocks still to run. nullopt when it cannot be told (no estimate).
     std::optional<double> secondsLeft() const;
 
 private:
@@ -24,6 +25,7 @@ private:
     program::ProgramPreview m_preview;
     int m_cursor = -1;
     double m_secondsDone = 0;
+    qint64 m_blocksDone = 0;
 };
 
 } // namespace stepdeck::ui

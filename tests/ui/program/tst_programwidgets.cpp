@@ -299,7 +299,17 @@ void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
     progress.blockFinished(3);
     progress.blockFinished(4);
     QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
-    preview.pathTruncated = true; // beyond the path the estimate cannot follow the run
+    preview.pathTruncated = true; // beyond the path: by the share of blocks still to run
+    preview.blocksRun = 8;
+    progress.reset(preview);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
+    progress.blockFinished(2);
+    progress.blockFinished(3);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 4.5); // 6 s x 6/8 blocks
+    for (int i = 0; i < 6; ++i)
+        progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
+    preview.blocksRun = 0;
     progress.reset(preview);
     QVERIFY(!progress.secondsLeft());
 }
