@@ -2,6 +2,7 @@
 // own file: only what reads a live Machine links the Machine.)
 #include "ProgramCheck.h"
 #include "machine/Machine.h"
+#include <algorithm>
 
 namespace stepdeck::program {
 
@@ -15,7 +16,15 @@ MachineFacts factsOf(const machine::Machine& machine)
             facts.schemas.insert(c.id, session->schema());
             facts.models.insert(c.id, session->model());
             facts.knownParameters.insert(c.id, session->status().knownParameters);
-            if (session->status().setupIncomplete)
+            // The status word lags a write by up to a poll: what this session wrote of the
+            // setup the device wants (ModelInfo::setupBeforeMotion, acknowledged, and forgotten
+            // when the device lost it) completes it even before the next read says so.
+            const ParameterSet& known = session->status().knownParameters;
+            const QStringList& wanted = session->model()->setupBeforeMotion;
+            const bool written = !wanted.isEmpty() &&
+                                 std::all_of(wanted.cbegin(), wanted.cend(),
+                                             [&](const QString& n) { return known.contains(n); });
+            if (session->status().setupIncomplete && !written)
                 facts.setupIncomplete.insert(c.id);
         }
     }

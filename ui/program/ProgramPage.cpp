@@ -216,7 +216,10 @@ void ProgramPage::checkNow()
     m_checkOk = false;
     updateControls();
     m_checkedPositions = positionsSignature();
-    m_checker->start(m_editor->toPlainText().toUtf8(), axes, program::factsOf(*machine));
+    const program::MachineFacts facts = program::factsOf(*machine);
+    m_checkedParameters = facts.knownParameters;
+    m_checkedIncomplete = facts.setupIncomplete;
+    m_checker->start(m_editor->toPlainText().toUtf8(), axes, facts);
 }
 
 bool ProgramPage::isChecking() const
@@ -258,7 +261,8 @@ void ProgramPage::onMachineStatus()
 {
     // Where the axes stand is part of the check (known positions, relative moves): once the
     // machine rests somewhere new, or an axis became known, the text is checked again.
-    if (!isRunning() && !m_recheck->isActive() && positionsSignature() != m_checkedPositions)
+    if (!isRunning() && !m_recheck->isActive() &&
+        (positionsSignature() != m_checkedPositions || rulesFactsChanged()))
         m_recheck->start();
     if (isRunning())
         m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
@@ -269,6 +273,16 @@ QMap<QString, double> ProgramPage::knownPositions() const
 {
     const machine::Machine* machine = m_context->machine();
     return machine ? ProgramMachinePositions::known(*machine) : QMap<QString, double>();
+}
+
+bool ProgramPage::rulesFactsChanged() const
+{
+    const machine::Machine* machine = m_context->machine();
+    if (!machine)
+        return false;
+    const program::MachineFacts facts = program::factsOf(*machine);
+    return facts.knownParameters != m_checkedParameters ||
+           facts.setupIncomplete != m_checkedIncomplete;
 }
 
 QString ProgramPage::positionsSignature() const

@@ -69,6 +69,7 @@ private:
     void buildLayout();
     void onMachineChanged();
     void onMachineStatus();
+    bool rulesFactsChanged() const; // since the last check (m_checkedParameters, ...)
     void useConnectedController();
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
     bool start(int fromLine, bool stepOnly);
@@ -101,7 +102,11 @@ private:
     program::Program m_running; // what the runner runs (for M0 lines and the progress)
     ProgramProgress m_progress; // of the run, in the estimate
     QString m_checkedPositions; // positionsSignature() of the last check
-    QString m_stoppingText;     // the runner's stopping(): a move runs out by itself
+    // What the rules of the last check judged by (issue 28: a setup written on the Setup page
+    // checks the program again): per controller its known parameters and incomplete setup.
+    QMap<QString, ParameterSet> m_checkedParameters;
+    QSet<QString> m_checkedIncomplete;
+    QString m_stoppingText; // the runner's stopping(): a move runs out by itself
 };
 
 } // namespace stepdeck::ui

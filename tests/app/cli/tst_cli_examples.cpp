@@ -153,17 +153,28 @@ void TestCliExamples::exampleMachine_onItsSimulators_referencesAndRuns()
     program += "M2\n";
     const QString programPath = writeProgram(dir, "travel.ngc", program);
     // A board that refuses motion until its setup is written (E-LAB) gets the defaults.
-    QStringList args{"--machine", machinePath, "--timeout", "10000", "--json", "run", programPath};
+    QStringList args{"--machine", machinePath, "--timeout", "10000", "run", programPath};
     for (const machine::MachineController& c : d->controllers)
         if (!findModel(c.modelId)->setupBeforeMotion.isEmpty() &&
             !args.contains("--setup-defaults"))
             args.prepend("--setup-defaults");
     const CliRun r = runCli(args, 240000);
     QVERIFY2(r.exitCode == 0, (program + r.err).constData());
-    const QJsonObject summary = summaryOf(r.out);
-    QCOMPARE(summary.value("state").toString(), QStringLiteral("finished"));
-    QVERIFY2(r.out.contains("\"state\":\"done\""), r.out.constData());
-    Q_UNUSED(targets)
+    // "finished: N blocks in T; X=5.000 Y=5.000 Z=-5.000 A=5.000": every axis referenced
+    // (no mark) and where the program left it.
+    const QString out = QString::fromUtf8(r.out);
+    const qsizetype at = out.indexOf(QStringLiteral("finished: "));
+    QVERIFY2(at >= 0, r.out.constData());
+    const QStringList words = out.mid(at).section(QLatin1Char(';'), 1).simplified().split(' ');
+    QCOMPARE(words.size(), targets.size());
+    for (const QString& word : words) {
+        const QString name = word.section(QLatin1Char('='), 0, 0);
+        QVERIFY2(targets.contains(name), qPrintable(word));
+        // The nearest whole step (docs/machines.md "Units"): 5 deg at 88.8889 steps/deg is 444.
+        const double shown = word.section(QLatin1Char('='), 1).toDouble();
+        QVERIFY2(qAbs(shown - targets.value(name)) <= 1.0 / d->axis(name)->stepsPerUnit + 1e-3,
+                 qPrintable(word));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCliExamples)

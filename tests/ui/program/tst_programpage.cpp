@@ -47,6 +47,7 @@ private Q_SLOTS:
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
     void useController_singleController_becomesMachineOfOne();
+    void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
     void closeMachine_whileRunning_programAbortedAndAxisStill_data();
     void closeMachine_whileRunning_programAbortedAndAxisStill();
 
@@ -378,6 +379,23 @@ void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill()
              qPrintable(page()->messageText()));
     QVERIFY(m_rig.elab->receivedStop());
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+}
+
+// Issue 28: the check judges the board's rules by what this session wrote. Before the setup is
+// written the E-LAB refuses every move and its start speed is unknown, so G1 is refused; once
+// the Setup page (here the rig) wrote it, the page checks the text again by itself.
+void TestProgramPage::check_setupWrittenMeanwhile_checkedAgainRunEnabled()
+{
+    QVERIFY(m_rig.openAndConnect(m_rig.machineJson(),
+                                 {QStringLiteral("table"), QStringLiteral("rotary")}));
+    setProgram(QStringLiteral("G91\nG1 X0.01 F6\nM2\n")); // 40 steps/s: below the start speed
+    QVERIFY2(!page()->checkText().contains(QStringLiteral("no errors")),
+             qPrintable(page()->checkText()));
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+    QVERIFY(m_rig.writeElabSetup());
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 10000);
+    QVERIFY2(page()->checkText().contains(QStringLiteral("no errors")),
+             qPrintable(page()->checkText()));
 }
 
 int main(int argc, char** argv)
