@@ -48,6 +48,8 @@ private Q_SLOTS:
     void page_fitsTheLaptopScreen();
     void useController_singleController_becomesMachineOfOne();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
+    void stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data();
+    void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
     void closeMachine_whileRunning_programAbortedAndAxisStill_data();
     void closeMachine_whileRunning_programAbortedAndAxisStill();
 
@@ -199,6 +201,54 @@ void TestProgramPage::stop_duringMove_programEndsAborted()
     QVERIFY(m_rig.elab->position(Axis::X) < 40000);
     QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
              qPrintable(page()->messageText()));
+}
+
+// Issue 28, item 4: STOP and Esc during a program brake the E-LAB with its ramp (ForceStopMove
+// "ohne Schrittverluste"; RequestRelPosition gives the steps not run): X and Y stay referenced
+// at the board's count. Only PANIC makes them unknown (the safety contract).
+void TestProgramPage::stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::addColumn<bool>("known");
+    QTest::newRow("STOP button") << "stop" << true;
+    QTest::newRow("Esc in the editor") << "esc" << true;
+    QTest::newRow("PANIC button") << "panic" << false;
+}
+
+void TestProgramPage::stop_duringReferencedProgram_positionsStayKnownAtTheBoard()
+{
+    QFETCH(QString, how);
+    QFETCH(bool, known);
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable());
+    const qint64 xHome = m_rig.elab->position(Axis::X); // the board counts from power-on
+    const qint64 yHome = m_rig.elab->position(Axis::Y);
+    setProgram(QStringLiteral("G90\nG0 X100 Y50\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    if (how == QLatin1String("stop")) {
+        window()->safetyBar()->stopButton()->click();
+    } else if (how == QLatin1String("panic")) {
+        window()->safetyBar()->panicButton()->click();
+    } else {
+        page()->editor()->setFocus();
+        QTRY_VERIFY(page()->editor()->hasFocus());
+        QTest::keyClick(page()->editor(), Qt::Key_Escape);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    machine::Machine* m = m_rig.machine();
+    const machine::MachineAxis& x = *m->description().axis(QStringLiteral("X"));
+    const machine::MachineAxis& y = *m->description().axis(QStringLiteral("Y"));
+    if (!known) {
+        QTRY_VERIFY(m->axisStatus(x).known == machine::PositionKnowledge::Unknown);
+        return;
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(m->axisStatus(x).steps, m_rig.elab->position(Axis::X) - xHome, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m->axisStatus(y).steps, m_rig.elab->position(Axis::Y) - yHome, 10000);
+    QCOMPARE(m->axisStatus(x).known, machine::PositionKnowledge::Referenced);
+    QCOMPARE(m->axisStatus(y).known, machine::PositionKnowledge::Referenced);
 }
 
 void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
