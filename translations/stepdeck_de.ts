@@ -7169,6 +7169,33 @@ hält die Steuerung nicht an</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::SimulatorMenu</name>
+        <message>
+            <source>Si&amp;mulator</source>
+            <translation>Si&amp;mulator</translation>
+        </message>
+        <message>
+            <source>No built-in simulator is connected</source>
+            <translation>Kein eingebauter Simulator verbunden</translation>
+        </message>
+        <message>
+            <source>The simulated machine has no inputs to set</source>
+            <translation>Die simulierte Maschine hat keine setzbaren Eingänge</translation>
+        </message>
+        <message>
+            <source>%1: input %2 high</source>
+            <translation>%1: Eingang %2 high</translation>
+        </message>
+        <message>
+            <source>Input %1 high</source>
+            <translation>Eingang %1 high</translation>
+        </message>
+        <message>
+            <source>Checked as the controller last reported the input</source>
+            <translation>Angehakt, wie die Steuerung den Eingang zuletzt gemeldet hat</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::SoftLimitsDialog</name>
         <message>
             <source>Soft limits</source>

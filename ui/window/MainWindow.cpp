@@ -31,6 +31,7 @@
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include "window/ScreenBound.h"
+#include "window/SimulatorMenu.h"
 #include "window/Translations.h"
 #include <QAction>
 #include <QActionGroup>
@@ -360,6 +361,7 @@ void MainWindow::buildMenus()
         });
     }
 
+    menuBar()->addMenu(new SimulatorMenu(m_context, this));
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About StepDeck"), this, [this] {
         dialogs::message(this, QMessageBox::Information, tr("About StepDeck"),

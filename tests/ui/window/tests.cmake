@@ -12,3 +12,8 @@ stepdeck_add_test(tst_layoutholdsstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_lay
 # Issue 16: a window whose layout minimum grows stays on its screen.
 stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbound.cpp
                   LABELS ui LIBS stepdeck_ui)
+# Issue 28: the Simulator menu sets the inputs the simulated machine drives.
+stepdeck_add_test(tst_simulatormenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simulatormenu.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
