@@ -65,6 +65,19 @@ private:
         QTRY_VERIFY(!page()->isChecking()); // off the GUI thread
     }
     bool runState(RunState state) const { return runner() && runner()->state() == state; }
+    // "stop": the STOP button, "panic": the PANIC button, else Esc in the editor.
+    void stopBy(const QString& how)
+    {
+        if (how == QLatin1String("stop")) {
+            window()->safetyBar()->stopButton()->click();
+        } else if (how == QLatin1String("panic")) {
+            window()->safetyBar()->panicButton()->click();
+        } else {
+            page()->editor()->setFocus();
+            QTRY_VERIFY(page()->editor()->hasFocus());
+            QTest::keyClick(page()->editor(), Qt::Key_Escape);
+        }
+    }
 
     MachineWindowRig m_rig;
 };
@@ -186,15 +199,7 @@ void TestProgramPage::stop_duringMove_programEndsAborted()
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
     page()->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    if (how == QLatin1String("stop")) {
-        window()->safetyBar()->stopButton()->click();
-    } else if (how == QLatin1String("panic")) {
-        window()->safetyBar()->panicButton()->click();
-    } else {
-        page()->editor()->setFocus();
-        QTRY_VERIFY(page()->editor()->hasFocus());
-        QTest::keyClick(page()->editor(), Qt::Key_Escape);
-    }
+    stopBy(how);
     QTRY_VERIFY2_WITH_TIMEOUT(runState(RunState::Aborted), qPrintable(page()->messageText()),
                               20000);
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
@@ -227,15 +232,7 @@ void TestProgramPage::stop_duringReferencedProgram_positionsStayKnownAtTheBoard(
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
     page()->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    if (how == QLatin1String("stop")) {
-        window()->safetyBar()->stopButton()->click();
-    } else if (how == QLatin1String("panic")) {
-        window()->safetyBar()->panicButton()->click();
-    } else {
-        page()->editor()->setFocus();
-        QTRY_VERIFY(page()->editor()->hasFocus());
-        QTest::keyClick(page()->editor(), Qt::Key_Escape);
-    }
+    stopBy(how);
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
     machine::Machine* m = m_rig.machine();
