@@ -64,7 +64,7 @@ bool startController(const SimScenario& scenario, const machine::MachineDescript
     // simulators of port "sim" get it (machine::simulatorScenarioOf).
     SimScenario setup;
     setup.machine = machine::simulatorScenarioOf(description, controller.id, model->capabilities);
-    if (!(setup.machine.used() & ~model->scenario.options) && setup.machine.used() &&
+    if (machine::simulatorTakes(*model, setup.machine) &&
         !applyScenario(setup, *model, out->simulator.get(), error))
         return false;
     if (scenario.machine.setupComplete &&

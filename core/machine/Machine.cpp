@@ -44,9 +44,8 @@ void simulateMachine(const MachineDescription& d, const MachineController& c,
 {
     const ModelInfo* model = session->model();
     const SimulatorScenario scenario = simulatorScenarioOf(d, c.id, session->capabilities());
-    const ScenarioOptions used = scenario.used();
-    if (!used || (used & ~model->scenario.options) || !model->scenario.apply)
-        return; // nothing to do, or a model whose simulator keeps its own machine
+    if (!simulatorTakes(*model, scenario))
+        return;
     session->withSimulator([model, scenario](Simulator* sim) {
         QString unused;
         model->scenario.apply(scenario, sim, &unused);

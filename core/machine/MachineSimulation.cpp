@@ -1,5 +1,6 @@
 #include "MachineSimulation.h"
 #include "MachineReferenceRun.h"
+#include "model/ModelInfo.h"
 
 namespace stepdeck::machine {
 
@@ -13,6 +14,12 @@ SimulatorScenario simulatorScenarioOf(const MachineDescription& description,
         if (a.controller == controllerId)
             scenario.referenceSides.insert(a.axis, referenceSearchDirection(a, caps));
     return scenario;
+}
+
+bool simulatorTakes(const ModelInfo& model, const SimulatorScenario& scenario)
+{
+    const ScenarioOptions used = scenario.used();
+    return used && !(used & ~model.scenario.options) && model.scenario.apply;
 }
 
 } // namespace stepdeck::machine

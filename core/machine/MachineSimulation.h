@@ -3,6 +3,10 @@
 #include "model/Capabilities.h"
 #include "model/SimulatorScenario.h"
 
+namespace stepdeck {
+struct ModelInfo;
+}
+
 namespace stepdeck::machine {
 
 // What a simulator of one controller of a machine file must look like for the file's machine
@@ -12,5 +16,8 @@ namespace stepdeck::machine {
 // (ModelInfo::scenario, ScenarioOption::ReferenceSides).
 SimulatorScenario simulatorScenarioOf(const MachineDescription& description,
                                       const QString& controllerId, const Capabilities& caps);
+// True when there is something to apply and the model's simulator takes all of it; a model
+// whose simulator keeps its own machine (the EMIS picks its reference side) is left as it is.
+bool simulatorTakes(const ModelInfo& model, const SimulatorScenario& scenario);
 
 } // namespace stepdeck::machine
