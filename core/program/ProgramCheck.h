@@ -34,6 +34,11 @@ struct MachineFacts
     // Controllers whose device reports its setup incomplete (MachineStatus::setupIncomplete):
     // they refuse every move.
     QSet<QString> setupIncomplete;
+    // Axis name -> the machine position of its work zero, in the axis' unit (the operator's
+    // "Zero X"; an axis not listed: work = machine). A program's absolute targets are work
+    // coordinates, as the position display shows them: the machine goes to target + offset,
+    // and the soft limits (machine coordinates) are checked there (issue 28, item 3).
+    QMap<QString, double> workOffsets;
 };
 
 MachineFacts factsOf(const machine::Machine& machine);
@@ -59,6 +64,9 @@ struct AxisExtent
 // model's data says it), without acceleration: shown marked "estimated".
 struct ProgramPreview
 {
+    // The path's positions and the extents are work coordinates: machine position minus
+    // these offsets (MachineFacts::workOffsets; an axis not listed: none).
+    QMap<QString, double> workOffsets;
     int lines = 0;        // lines in the file
     qint64 blocksRun = 0; // blocks the run will execute (repeats counted out)
     double estimatedSeconds = 0;
@@ -81,6 +89,8 @@ struct ProgramCheckResult
 };
 
 // Checks a parsed program against a machine before anything moves (docs/programs.md):
+// - absolute targets in work coordinates (MachineFacts::workOffsets), the soft limits in
+//   machine coordinates;
 // - every target within the axes' soft limits, following the positions the program itself
 //   reaches (relative moves from known positions; repeats counted out);
 // - absolute moves only on axes whose position is known, or after the program's own G28 of

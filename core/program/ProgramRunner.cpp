@@ -73,7 +73,9 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
             *errors = {ProgramError{0, 0, tr("a program runs already")}};
         return false;
     }
-    const ProgramCheckResult checked = ProgramCheck::check(program, factsOf(*m_machine), fromLine);
+    MachineFacts facts = factsOf(*m_machine);
+    facts.workOffsets = m_nextOffsets;
+    const ProgramCheckResult checked = ProgramCheck::check(program, facts, fromLine);
     if (!checked.ok()) {
         if (errors)
             *errors = checked.errors;
@@ -81,6 +83,7 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     }
     m_program = program;
     m_preview = checked.preview;
+    m_offsets = m_nextOffsets;
     // advance() steps onto the first block on or after fromLine.
     int first = 0;
     while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)

@@ -53,6 +53,11 @@ public:
     // *errors when the check fails or a program runs already: nothing is sent.
     bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
                bool stepOnly = false);
+    // The work offsets programs run in (MachineFacts::workOffsets): taken at start() for the
+    // whole run, so that a zero set while the run holds does not move the rest of the path.
+    void setWorkOffsets(const QMap<QString, double>& offsets) { m_nextOffsets = offsets; }
+    QMap<QString, double> workOffsets() const { return m_offsets; } // of the run started last
+
     void pause();  // finish the current block, then hold (pausePending() until then)
     void resume(); // from Paused: on with the next block
     void step();   // from Paused: run one block, then pause again
@@ -116,6 +121,8 @@ private:
 
     machine::Machine* m_machine;
     Program m_program;
+    QMap<QString, double> m_nextOffsets; // setWorkOffsets()
+    QMap<QString, double> m_offsets;     // the running program's
     ProgramPreview m_preview;
     RunState m_state = RunState::Idle;
     int m_index = -1; // the block running (or the one before the next)

@@ -69,8 +69,11 @@ QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) cons
     QMap<QString, double> targets;
     const machine::MachineDescription& d = m_machine->description();
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
-        if (const machine::MachineAxis* a = d.axis(it.key()))
-            targets.insert(it.key(), units::toAxisUnits(*a, it.value(), block.inches));
+        if (const machine::MachineAxis* a = d.axis(it.key())) {
+            // An absolute target is in work coordinates (ProgramCheck): machine = work + offset.
+            const double offset = block.relative ? 0.0 : m_offsets.value(it.key(), 0.0);
+            targets.insert(it.key(), units::toAxisUnits(*a, it.value(), block.inches) + offset);
+        }
     return targets;
 }
 

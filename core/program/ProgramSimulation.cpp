@@ -18,8 +18,11 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* 
     m_extentKnown.assign(n, 0);
     m_minimum.assign(n, 0);
     m_maximum.assign(n, 0);
+    m_offset.assign(n, 0);
     for (size_t i = 0; i < n; ++i) {
         const machine::MachineAxis& axis = m_axes.at(qsizetype(i));
+        const double offset = facts.workOffsets.value(axis.name, 0.0);
+        m_offset[i] = std::isfinite(offset) ? offset : 0.0;
         const auto it = facts.knownPositions.constFind(axis.name);
         if (it != facts.knownPositions.cend() && std::isfinite(it.value())) {
             m_steps[i] = axis.toSteps(it.value());
@@ -125,8 +128,10 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
                     .arg(axis.name);
             });
         }
-        distance = wasKnown ? std::abs(m.value - here) : 0.0;
-        m_steps[a] = axis.toSteps(m.value);
+        // The target is in work coordinates: the machine goes to target + offset.
+        const double target = m.value + m_offset[a];
+        distance = wasKnown ? std::abs(target - here) : 0.0;
+        m_steps[a] = axis.toSteps(target);
         m_known[a] = 1; // on from the target, so that one error does not bring others
     } else if (wasKnown) {
         // As Machine::move counts a relative move: the difference of the whole steps.
@@ -136,11 +141,17 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
         *seconds = std::max(*seconds, distance / m.speed);
     if (!m_known[a])
         return; // a relative move from an unknown position: its target is unknown too
-    const double to = block.relative ? here + m.value : m.value;
+    // The soft limits are machine coordinates.
+    const double to = block.relative ? here + m.value : m.value + m_offset[a];
     if (axis.hasSoftLimits() && !m.reportedLimit &&
         (to < *axis.softMinimum || to > *axis.softMaximum)) {
         m.reportedLimit = true;
         m_errors->add(block.line, m.column, [&] {
+            if (m_offset[a] != 0.0)
+                return ProgramCheck::tr("%1 reaches %2 %3 in work coordinates, %4 %3 in machine "
+                                        "coordinates: outside the soft limits %5..%6 %3 (machine)")
+                    .arg(axis.name, figure(to - m_offset[a]), machine::unitKey(axis.unit),
+                         figure(to), figure(*axis.softMinimum), figure(*axis.softMaximum));
             return ProgramCheck::tr("%1 reaches %2 %3, outside the soft limits %4..%5 %3")
                 .arg(axis.name, figure(to), machine::unitKey(axis.unit), figure(*axis.softMinimum),
                      figure(*axis.softMaximum));
@@ -167,7 +178,7 @@ void ProgramSimulation::home(const PlannedBlock& planned)
 void ProgramSimulation::noteExtent(int axis)
 {
     const size_t a = size_t(axis);
-    const double at = m_axes.at(axis).toUnits(m_steps[a]);
+    const double at = workOf(a);
     if (!m_extentKnown[a]) {
         m_extentKnown[a] = 1;
         m_minimum[a] = m_maximum[a] = at;
@@ -175,6 +186,11 @@ void ProgramSimulation::noteExtent(int axis)
     }
     m_minimum[a] = std::min(m_minimum[a], at);
     m_maximum[a] = std::max(m_maximum[a], at);
+}
+
+double ProgramSimulation::workOf(size_t a) const
+{
+    return m_axes.at(qsizetype(a)).toUnits(m_steps[a]) - m_offset[a];
 }
 
 void ProgramSimulation::addPoint(int line)
@@ -188,7 +204,7 @@ void ProgramSimulation::addPoint(int line)
     point.seconds = m_seconds;
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_known[size_t(i)])
-            point.position.insert(m_axes.at(i).name, m_axes.at(i).toUnits(m_steps[size_t(i)]));
+            point.position.insert(m_axes.at(i).name, workOf(size_t(i)));
     m_path << point;
 }
 
@@ -209,6 +225,9 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
     preview->estimatedSeconds = m_seconds;
     preview->path = m_path;
     preview->pathTruncated = m_pathTruncated;
+    for (qsizetype i = 0; i < m_axes.size(); ++i)
+        if (m_offset[size_t(i)] != 0.0)
+            preview->workOffsets.insert(m_axes.at(i).name, m_offset[size_t(i)]);
     for (qsizetype i = 0; i < m_axes.size(); ++i) {
         const size_t a = size_t(i);
         if (m_extentKnown[a])

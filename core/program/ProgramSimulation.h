@@ -123,6 +123,8 @@ private:
     void home(const PlannedBlock& planned);
     void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
     void noteExtent(int axis);
+    // Machine position (steps) -> work position (unit) of axis a.
+    double workOf(size_t a) const;
     void addPoint(int line);
     void tooManyBlocks(const ProgramBlock& block);
     void finish(ProgramPreview* preview) const;
@@ -137,7 +139,8 @@ private:
     std::vector<char> m_known;
     std::vector<char> m_moved;
     std::vector<char> m_extentKnown;
-    std::vector<double> m_minimum, m_maximum;
+    std::vector<double> m_minimum, m_maximum; // work coordinates
+    std::vector<double> m_offset;             // the axis' work offset, in its unit
     std::vector<Loop> m_loops;
     qint64 m_blocksRun = 0;
     double m_seconds = 0;

@@ -85,8 +85,6 @@ void MachineDro::rebuild()
     m_message->clear();
     m_refusedAxis.clear();
     const machine::Machine* m = m_context->machine();
-    // The work offsets of this machine file (none without a machine).
-    m_offsets->load(m ? m_context->machinePath() : QString());
     if (!m)
         return;
     QFont big(QStringLiteral("monospace"));

@@ -27,6 +27,7 @@ public:
 
     bool hasOffset(const QString& axis) const { return m_offsets.contains(axis); }
     bool anyOffset() const { return !m_offsets.isEmpty(); }
+    const QMap<QString, double>& all() const { return m_offsets; }
     double offset(const QString& axis) const { return m_offsets.value(axis, 0.0); }
 
     // Sets the work origin of the axis at its machine position now. Refused (false, *refusal

@@ -35,7 +35,7 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     // units).
     auto* outer = new QVBoxLayout(this);
     // The machine's work offsets, shared by its read-out and its go-to.
-    auto* workOffsets = new MachineWorkOffsets(this);
+    MachineWorkOffsets* workOffsets = context->workOffsets();
     m_machineDro = new MachineDro(context, workOffsets, this);
     m_machineGoTo = new MachineGoTo(context, workOffsets, this);
     auto* controllerPart = new QWidget(this);

@@ -11,6 +11,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
 #include <QHBoxLayout>
 #include <QPushButton>
@@ -76,6 +77,11 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
     connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
     connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
+    // A new work zero moves the program's path on the machine: checked again.
+    connect(m_context->workOffsets(), &MachineWorkOffsets::changed, this, [this] {
+        if (!isRunning())
+            m_recheck->start();
+    });
     // The single controller's link decides whether "Use the connected controller" can work.
     connect(m_context->session(), &ControllerSession::linkStateChanged, this,
             &ProgramPage::updateControls);
@@ -216,7 +222,8 @@ void ProgramPage::checkNow()
     m_checkOk = false;
     updateControls();
     m_checkedPositions = positionsSignature();
-    const program::MachineFacts facts = program::factsOf(*machine);
+    program::MachineFacts facts = program::factsOf(*machine);
+    facts.workOffsets = m_context->workOffsets()->all(); // the position display's coordinates
     m_checkedParameters = facts.knownParameters;
     m_checkedIncomplete = facts.setupIncomplete;
     m_checker->start(m_editor->toPlainText().toUtf8(), axes, facts);
@@ -265,14 +272,21 @@ void ProgramPage::onMachineStatus()
         (positionsSignature() != m_checkedPositions || rulesFactsChanged()))
         m_recheck->start();
     if (isRunning())
-        m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
+        m_preview->setCurrent(workPositions(), m_progress.secondsDone());
     updateControls();
 }
 
-QMap<QString, double> ProgramPage::knownPositions() const
+QMap<QString, double> ProgramPage::workPositions() const
 {
     const machine::Machine* machine = m_context->machine();
-    return machine ? ProgramMachinePositions::known(*machine) : QMap<QString, double>();
+    if (!machine)
+        return {};
+    QMap<QString, double> positions = ProgramMachinePositions::known(*machine);
+    const QMap<QString, double> offsets =
+        m_runner ? m_runner->workOffsets() : m_context->workOffsets()->all();
+    for (auto it = positions.begin(); it != positions.end(); ++it)
+        it.value() -= offsets.value(it.key(), 0.0);
+    return positions;
 }
 
 bool ProgramPage::rulesFactsChanged() const

@@ -82,7 +82,8 @@ private:
     void onBlockFinished(int line);
     void onPaused(int line, const QString& prompt);
     void onFinished(program::RunState state, const QString& message);
-    QMap<QString, double> knownPositions() const;
+    // The known positions in the running program's work coordinates (the preview's).
+    QMap<QString, double> workPositions() const;
     QString positionsSignature() const;
 
     MachineContext* m_context;

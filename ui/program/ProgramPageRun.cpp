@@ -11,6 +11,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineWorkOffsets.h"
 #include <QPushButton>
 
 namespace stepdeck::ui {
@@ -84,6 +85,8 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
     m_recheck->stop();
     QList<program::ProgramError> errors;
     const std::optional<program::Program> parsed = parse(&errors);
+    // In the coordinates the check used and the position display shows (issue 28, item 3).
+    m_runner->setWorkOffsets(m_context->workOffsets()->all());
     if (parsed && m_runner->start(*parsed, fromLine, &errors, stepOnly)) {
         m_running = *parsed;
         m_progress.reset(m_runner->preview());
@@ -123,7 +126,7 @@ void ProgramPage::onBlockStarted(int line, const QString&)
 void ProgramPage::onBlockFinished(int line)
 {
     m_progress.blockFinished(line);
-    m_preview->setCurrent(knownPositions(), m_progress.secondsDone());
+    m_preview->setCurrent(workPositions(), m_progress.secondsDone());
     updateProgress();
 }
 

@@ -4,12 +4,15 @@
 #include "common/ElidedLabel.h"
 #include <QChart>
 #include <QChartView>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLineSeries>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <optional>
+#include <utility>
 
 namespace stepdeck::ui {
 
@@ -18,13 +21,23 @@ QString unitText(const machine::MachineAxis& axis)
 {
     return machine::unitKey(axis.unit);
 }
+
+// The soft limits of axis in work coordinates (they are machine coordinates).
+std::optional<std::pair<double, double>> workLimits(const machine::MachineAxis& axis,
+                                                    const QMap<QString, double>& offsets)
+{
+    if (!axis.hasSoftLimits())
+        return std::nullopt;
+    const double offset = offsets.value(axis.name, 0.0);
+    return std::make_pair(*axis.softMinimum - offset, *axis.softMaximum - offset);
+}
 } // namespace
 
 ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     : QWidget(parent), m_path(new ProgramPathView(this)), m_chart(new QChart),
       m_chartView(new QChartView(m_chart, this)), m_extents(new QTableWidget(0, 4, this)),
       m_tabs(new QTabWidget(this)), m_figures(new ElidedLabel(this)),
-      m_motionNote(new ElidedLabel(this))
+      m_motionNote(new ElidedLabel(this)), m_coordinates(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("programPreview"));
     m_chart->legend()->setAlignment(Qt::AlignRight);
@@ -44,6 +57,7 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     m_extents->setSelectionMode(QAbstractItemView::NoSelection);
     m_figures->setObjectName(QStringLiteral("programFigures"));
     m_motionNote->setObjectName(QStringLiteral("programMotionNote"));
+    m_coordinates->setObjectName(QStringLiteral("programCoordinates"));
 
     // Tabs, not a column: the page must fit the bottom of a 768-pixel screen.
     m_tabs->setObjectName(QStringLiteral("programPreviewTabs"));
@@ -59,7 +73,11 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     m_tabs->addTab(extents, tr("Extents"));
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
-    v->addWidget(m_figures);
+    // The coordinates share the figures' line: the page must fit a 768-pixel screen.
+    auto* figures = new QHBoxLayout;
+    figures->addWidget(m_figures, 1);
+    figures->addWidget(m_coordinates, 1);
+    v->addLayout(figures);
     v->addWidget(m_tabs, 1);
     clear(tr("No program checked yet."));
 }
@@ -83,7 +101,13 @@ void ProgramPreviewView::clear(const QString& reason)
     m_extents->setRowCount(0);
     m_figures->setText(reason);
     m_motionNote->clear();
+    m_coordinates->clear();
     m_figures->setToolTip(QString());
+}
+
+QString ProgramPreviewView::coordinatesText() const
+{
+    return m_coordinates->text();
 }
 
 void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
@@ -102,9 +126,11 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
                                   p.position.value(QStringLiteral("Y")));
         }
         std::optional<QRectF> limits;
-        if (x->hasSoftLimits() && y->hasSoftLimits())
-            limits = QRectF(QPointF(*x->softMinimum, *y->softMinimum),
-                            QPointF(*x->softMaximum, *y->softMaximum));
+        const auto xLimits = workLimits(*x, preview.workOffsets);
+        const auto yLimits = workLimits(*y, preview.workOffsets);
+        if (xLimits && yLimits)
+            limits = QRectF(QPointF(xLimits->first, yLimits->first),
+                            QPointF(xLimits->second, yLimits->second));
         m_path->setPath(points, limits, unitText(*x));
         if (points.isEmpty())
             m_path->clearPath(tr("The program moves X and Y to no known position."));
@@ -113,6 +139,21 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
     }
     fillChart(preview, machine);
     fillExtents(preview, machine);
+    QStringList zeros;
+    for (const machine::MachineAxis& axis : machine.axes)
+        if (const auto it = preview.workOffsets.constFind(axis.name);
+            it != preview.workOffsets.cend())
+            zeros << tr("%1 0 at machine %2 %3")
+                         .arg(axis.name)
+                         .arg(it.value(), 0, 'f', 3)
+                         .arg(unitText(axis));
+    m_coordinates->setText(zeros.isEmpty()
+                               ? tr("Work coordinates = machine coordinates (no work zero set)")
+                               : tr("Work coordinates: %1").arg(zeros.join(QStringLiteral(", "))));
+    m_coordinates->setToolTip(
+        tr("The program's positions, the path and the extents are work coordinates, as the "
+           "position display shows them; the machine moves to work + offset. Soft limits are "
+           "shown converted to work coordinates."));
     QString figures =
         tr("%n line(s)", nullptr, preview.lines) + QStringLiteral(" \u00b7 ") +
         tr("%n block(s) run", nullptr, int(qMin<qint64>(preview.blocksRun, INT_MAX))) +
@@ -188,11 +229,12 @@ void ProgramPreviewView::fillExtents(const program::ProgramPreview& preview,
         const int row = m_extents->rowCount();
         m_extents->insertRow(row);
         const QString unit = unitText(axis);
-        const QString limits = axis.hasSoftLimits() ? tr("%1 \u2026 %2 %3")
-                                                          .arg(*axis.softMinimum, 0, 'f', 3)
-                                                          .arg(*axis.softMaximum, 0, 'f', 3)
-                                                          .arg(unit)
-                                                    : tr("none");
+        const auto work = workLimits(axis, preview.workOffsets);
+        const QString limits = work ? tr("%1 \u2026 %2 %3")
+                                          .arg(work->first, 0, 'f', 3)
+                                          .arg(work->second, 0, 'f', 3)
+                                          .arg(unit)
+                                    : tr("none");
         const QStringList cells{
             axis.name, QStringLiteral("%1 %2").arg(it->minimum, 0, 'f', 3).arg(unit),
             QStringLiteral("%1 %2").arg(it->maximum, 0, 'f', 3).arg(unit), limits};

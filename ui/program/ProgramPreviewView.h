@@ -17,8 +17,9 @@ class ProgramPathView;
 // The preview of a checked program beside the editor (issue 20), in tabs: the XY path to
 // scale (ProgramPathView), the other axes' positions over the estimated time (a chart), each
 // moved axis' extent against its soft limits; above them the figures: lines, blocks run, the
-// estimated duration and how the axes of a block move together. While a program runs the current
-// position is drawn in both.
+// estimated duration and how the axes of a block move together; below them the coordinates
+// (work coordinates, as the position display and the program's targets: issue 28, item 3).
+// While a program runs the current position is drawn in both.
 class ProgramPreviewView : public QWidget
 {
     Q_OBJECT
@@ -39,6 +40,8 @@ public:
     QTableWidget* extentsTable() const { return m_extents; }
     QTabWidget* tabs() const { return m_tabs; }
     QString figuresText() const;
+    // Which coordinates the preview shows: work coordinates, each work zero's machine position.
+    QString coordinatesText() const;
     QStringList chartedAxes() const;
 
 private:
@@ -56,6 +59,7 @@ private:
     QTabWidget* m_tabs;
     ElidedLabel* m_figures;
     ElidedLabel* m_motionNote;
+    ElidedLabel* m_coordinates;
     bool m_hasX = false;
     bool m_hasY = false;
     double m_chartMin = 0;

@@ -141,6 +141,8 @@ private Q_SLOTS:
     void machineIo_numberedOverTheControllers();
     void examples_eachChecksCleanOnItsModel();
     void factsOf_machineReferencedX_onlyXKnownAtZero();
+    void check_workOffsets_targetsInWorkLimitsInMachine_data();
+    void check_workOffsets_targetsInWorkLimitsInMachine();
 };
 
 void TestProgramCheck::check_errors_lineColumnAndMessage_data()
@@ -611,6 +613,51 @@ void TestProgramCheck::factsOf_machineReferencedX_onlyXKnownAtZero()
     // A reference run ends at 0 (docs/programs.md "Check"): what the check assumes after G28.
     QCOMPARE(after.knownPositions, (QMap<QString, double>{{"X", 0.0}}));
     machine.destroy();
+}
+
+// Issue 28, item 3: absolute targets are work coordinates (machine = work + offset), the soft
+// limits machine coordinates; the preview's path and extents are work coordinates.
+void TestProgramCheck::check_workOffsets_targetsInWorkLimitsInMachine_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("xFrom"); // the preview's X extent, work coordinates
+    QTest::addColumn<double>("xTo");
+    // X zeroed at machine 30 (soft limits 0..100 machine = -30..70 work).
+    QTest::newRow("work 0 is machine 30") << "G90 G0 X0\n" << QStringList{} << -10.0 << 0.0;
+    QTest::newRow("work 70 is the machine's maximum") << "G90 G0 X70\n"
+                                                      << QStringList{} << -10.0 << 70.0;
+    QTest::newRow("work 80 is machine 110, beyond the limit")
+        << "G90 G0 X80\n"
+        << QStringList{"1:8: X reaches 80 mm in work coordinates, 110 mm in machine coordinates: "
+                       "outside the soft limits 0..100 mm (machine)"}
+        << 0.0 << 0.0;
+    QTest::newRow("work -25 is machine 5, inside although below work 0")
+        << "G90 G0 X-25\n"
+        << QStringList{} << -25.0 << -10.0;
+    QTest::newRow("relative moves are not offset") << "G91 G0 X5\n"
+                                                   << QStringList{} << -10.0 << -5.0;
+    QTest::newRow("after G28 the machine is at 0, work -30") << "G28 X0\nG91 G0 X1\n"
+                                                             << QStringList{} << -30.0 << -10.0;
+}
+
+void TestProgramCheck::check_workOffsets_targetsInWorkLimitsInMachine()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, xFrom);
+    QFETCH(double, xTo);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("X=20"); // machine 20 = work -10
+    facts.workOffsets = {{QStringLiteral("X"), 30.0}};
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    if (!errors.isEmpty())
+        return;
+    QCOMPARE(result.preview.workOffsets, facts.workOffsets);
+    QCOMPARE(result.preview.extents["X"].minimum, xFrom);
+    QCOMPARE(result.preview.extents["X"].maximum, xTo);
+    QCOMPARE(result.preview.path.first().position.value("X"), -10.0);
 }
 
 QTEST_GUILESS_MAIN(TestProgramCheck)

@@ -90,6 +90,7 @@ private Q_SLOTS:
     void g1_elab_feedMoveAtItsFeedSpeed();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
+    void run_workOffsets_absoluteTargetsShiftedRelativeNot();
 
 private:
     MachineDescription description() const;
@@ -404,6 +405,27 @@ void TestProgramRunner::abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockN
     QCOMPARE(acceptedSteps(emis, Axis::X), (QList<qint64>{2000}));
     m_runner.reset();
     m_machine.reset(); // before the device goes
+}
+
+// Issue 28, item 3: a program's absolute targets are work coordinates. With X's work zero at
+// machine 2 mm and A's at 25 deg, "G0 X1 A0" goes to machine 3 mm and 25 deg; a relative move
+// is not offset; G28 goes to the machine's reference (0), not the work zero.
+void TestProgramRunner::run_workOffsets_absoluteTargetsShiftedRelativeNot()
+{
+    m_runner->setWorkOffsets({{QStringLiteral("X"), 2.0}, {QStringLiteral("A"), 25.0}});
+    QVERIFY(run("G28\n"
+                "G90 G0 X1 A0\n"
+                "G91 G0 X0.5\n"
+                "G90 G0 X0\n"
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(m_runner->workOffsets().value(QStringLiteral("X")), 2.0);
+    // At the board: to machine 3 mm (1200 steps), 0.5 mm on, back to machine 2 mm.
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 200, -600}));
+    // At the drive: to 25 deg = 2500 steps (within its 6000-step travel).
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{2500}));
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
 }
 
 QTEST_MAIN(TestProgramRunner)

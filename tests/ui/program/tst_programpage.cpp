@@ -8,6 +8,8 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
+#include "machine/MachineDro.h"
+#include "position/PositionPanel.h"
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramPage.h"
@@ -52,6 +54,7 @@ private Q_SLOTS:
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
     void closeMachine_whileRunning_programAbortedAndAxisStill_data();
     void closeMachine_whileRunning_programAbortedAndAxisStill();
+    void run_afterZeroXY_programInWorkCoordinatesAtTheBoard();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -442,6 +445,45 @@ void TestProgramPage::check_setupWrittenMeanwhile_checkedAgainRunEnabled()
     QVERIFY(m_rig.writeElabSetup());
     QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 10000);
     QVERIFY2(page()->checkText().contains(QStringLiteral("no errors")),
+             qPrintable(page()->checkText()));
+}
+
+// Issue 28, item 3: after Zero X/Y, "G0 X0 Y0" goes to the work zero the position display
+// shows (not to machine 0); the preview says which coordinates it shows and draws the path in
+// them; a target beyond the soft limits in machine coordinates is refused by the check.
+void TestProgramPage::run_afterZeroXY_programInWorkCoordinatesAtTheBoard()
+{
+    QVERIFY(m_rig.openAndConnect(m_rig.machineJson(QStringLiteral("Limited table"),
+                                                   QStringLiteral(", \"softLimits\": [0, 100]"))));
+    QVERIFY(m_rig.referenceTable());
+    const qint64 xHome = m_rig.elab->position(Axis::X); // the board counts from power-on
+    const qint64 yHome = m_rig.elab->position(Axis::Y);
+    setProgram(QStringLiteral("G91 G0 X2 Y1\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    ui::MachineDro* dro = window()->positionPanel()->machineDro();
+    QTRY_VERIFY(dro->zeroAxis(QStringLiteral("X")));
+    QVERIFY(dro->zeroAxis(QStringLiteral("Y")));
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("0.000"));
+
+    setProgram(QStringLiteral("G90 G0 X0.5 Y0.25\nG0 X0 Y0\nM2\n"));
+    const QString coordinates = page()->preview()->coordinatesText();
+    QVERIFY2(coordinates.contains(QStringLiteral("X 0 at machine 2.000 mm")),
+             qPrintable(coordinates));
+    QVERIFY(page()->preview()->pathView()->points().contains(QPointF(0.5, 0.25)));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    // At the board: back at the work zero, 2 mm and 1 mm from the reference (400 steps/mm).
+    QCOMPARE(m_rig.elab->position(Axis::X) - xHome, 800);
+    QCOMPARE(m_rig.elab->position(Axis::Y) - yHome, 400);
+    QVERIFY(m_rig.elab->still());
+    QCOMPARE(dro->displayedValue(QStringLiteral("X")), QStringLiteral("0.000"));
+
+    // The check judges the soft limits in machine coordinates: work -2.5 is machine -0.5.
+    setProgram(QStringLiteral("G90 G0 X-2.5\nM2\n"));
+    QVERIFY2(page()->checkText().contains(QStringLiteral("in machine coordinates")),
              qPrintable(page()->checkText()));
 }
 
