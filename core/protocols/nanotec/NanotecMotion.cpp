@@ -19,7 +19,7 @@ QString NanotecMotion::unknownAxes(const QList<Axis>& axes) const
     return {};
 }
 
-QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition) const
+QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition, bool referenceRun) const
 {
     if (!m_ctl.m_drives.contains(axis))
         return tr("this machine has no axis %1").arg(axisName(axis));
@@ -34,7 +34,7 @@ QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition) const
     const DriveState s = decodeStatus(d.status.value_or(0x01));
     if (d.motionPending || !s.ready)
         return tr("axis %1 is still moving (the drive is not ready)").arg(axisName(axis));
-    if (s.positionError) {
+    if (s.positionError && !referenceRun) {
         const QString how =
             m_ctl.options().actionNames.value(QStringLiteral("reset-position-error"));
         return how.isEmpty() ? tr("%1 reports a position error; reset the position error first")
@@ -119,12 +119,16 @@ void NanotecMotion::referenceWithType(RequestId id, const QMap<Axis, int>& direc
     for (auto it = directions.cbegin(); it != directions.cend(); ++it) {
         if (it.value() == 0 && m_ctl.m_drives.contains(it.key()))
             continue;
-        const QString why = motionRefusal(it.key(), false);
+        const QString why = motionRefusal(it.key(), false, true);
         if (!why.isEmpty())
             return m_ctl.finishError(id, ErrorKind::Refused, why);
         // 6.6: p=4 runs at the upper speed into the external switch, p=3 at the lower speed
         // to the encoder index; free travel afterwards as 'l' says (5.6).
         setup[it.key()] = {"!1", internal ? "p3" : "p4", commandWithValue("d", it.value() > 0)};
+        // A position error (after a stop without ramp, 6.2) would refuse the run that finds
+        // the position anew: it is reset first (5.14), as the operator would have to.
+        if (decodeStatus(m_ctl.m_drives[it.key()].status.value_or(0)).positionError)
+            setup[it.key()].prepend("D");
         verify[it.key()] = {{"!", 1},
                             {"p", internal ? 3 : 4},
                             {"d", it.value() > 0},

@@ -27,7 +27,8 @@ public:
                           bool referenceRun,
                           const QMap<Axis, QMap<QByteArray, qint64>>& verify = {});
     // Why the drive of axis cannot start a motion now (empty: it can).
-    QString motionRefusal(Axis axis, bool needsPosition) const;
+    // referenceRun: a position error does not refuse it (the run clears it first, 5.14).
+    QString motionRefusal(Axis axis, bool needsPosition, bool referenceRun = false) const;
     QString belowStartFrequency(Axis axis, double stepsPerS) const; // non-empty: refused
 
 private:

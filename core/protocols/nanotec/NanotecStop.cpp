@@ -136,9 +136,13 @@ void NanotecStop::stop(RequestId id)
     // Every drive, a silent one included: it may have stopped answering but still listen.
     for (const HostDrive& d : m_ctl.m_drives)
         steps << tolerant(m_link.exchange(d.axis, "S", {}, urgent, d.responding ? 2 : 0));
+    QList<Axis> encoderChecked;
     for (Axis a : positioning) {
-        // 6.2: no ramp; steps may be lost at speed, so the position is suspect.
+        // 6.2: no ramp; steps may be lost at speed, so the position is suspect until the
+        // drive's encoder confirms it (confirmByEncoder).
         AxisStatus& st = m_ctl.mutableStatus().axes[a];
+        if (st.referenced && st.positionKnown && !st.positionEstimated)
+            encoderChecked << a;
         st.referenced = st.positionKnown = false;
     }
     if (wait > NanotecJog::kMaxRampWaitMs)
@@ -154,10 +158,10 @@ void NanotecStop::stop(RequestId id)
     }
     if (!positioning.isEmpty())
         qCInfo(lcNanotec) << "stopped without ramp; positions suspect:" << positioning.size();
-    runSteps(steps, [this, id](const Failure& f) {
+    runSteps(steps, [this, id, encoderChecked](const Failure& f) {
         if (!f.ok())
             return m_ctl.finishWith(id, f);
-        confirmStopped(id, m_ctl.m_drives.keys(), tr("stop"));
+        confirmStopped(id, m_ctl.m_drives.keys(), tr("stop"), encoderChecked);
     });
 }
 
@@ -196,7 +200,8 @@ void NanotecStop::panic(RequestId id)
     m_ctl.m_bus->submit(r);
 }
 
-void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& context)
+void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& context,
+                                 QList<Axis> encoderChecked)
 {
     // Per drive: ready ('$' bit 0) means stopped; otherwise stop it individually, ask again.
     auto unconfirmed = std::make_shared<QStringList>();
@@ -224,6 +229,13 @@ void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& 
             });
         };
     }
+    // Once every drive stands: the encoder's word on the drives stopped mid-positioning.
+    for (Axis axis : encoderChecked)
+        steps << [this, axis, unconfirmed](const Done& done) {
+            if (!unconfirmed->isEmpty())
+                return done({}); // a drive may still move: no position is confirmed now
+            confirmByEncoder(axis)(done);
+        };
     runSteps(steps, [this, id, unconfirmed, context](const Failure& f) {
         m_ctl.m_sweep.updateStatus();
         m_ctl.publishStatus();
@@ -238,6 +250,42 @@ void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& 
         }
         m_ctl.finishOk(id);
     });
+}
+
+Step NanotecStop::confirmByEncoder(Axis axis)
+{
+    return [this, axis](const Done& done) {
+        struct Read
+        {
+            qint64 mode = 0, tolerance = 0, count = 0, encoder = 0;
+        };
+        auto read = std::make_shared<Read>();
+        const auto urgent = NanotecBus::Priority::Urgent;
+        // 5.9: error correction on means the drive has an encoder (without one 'U' must be 0);
+        // 5.16/5.17: while no step was lost, 'C' and 'I' agree within the tolerance 'X' (5.13).
+        runSteps(
+            {m_link.exchange(axis, "ZU", sink([read](qint64 v) { read->mode = v; }), urgent, 1),
+             m_link.exchange(axis, "ZX", sink([read](qint64 v) { read->tolerance = v; }), urgent,
+                             1),
+             m_link.exchange(axis, "C", sink([read](qint64 v) { read->count = v; }), urgent, 1),
+             m_link.exchange(axis, "I", sink([read](qint64 v) { read->encoder = v; }), urgent, 1)},
+            [this, axis, read, done](const Failure& f) {
+                if (f.kind == ErrorKind::Cancelled)
+                    return done(f);
+                const bool confirmed = f.ok() && read->mode != 0 &&
+                                       qAbs(read->count - read->encoder) <= read->tolerance;
+                qCInfo(lcNanotec) << "stop: encoder check of" << axisName(axis) << "mode"
+                                  << read->mode << "count" << read->count << "encoder"
+                                  << read->encoder << "->" << confirmed;
+                if (confirmed) {
+                    m_ctl.m_drives[axis].position = read->count;
+                    AxisStatus& st = m_ctl.mutableStatus().axes[axis];
+                    st.referenced = st.positionKnown = true;
+                    st.positionEstimated = false;
+                }
+                done({});
+            });
+    };
 }
 
 void NanotecStop::reset(RequestId id)

@@ -2,6 +2,9 @@
 // what to do in the words of the front end that runs it -- the CLI's command, the GUI's
 // button (ControllerOptions::actionNames) -- and in neutral words without one; never a CLI
 // word in a GUI. The reset itself reaches the drive and clears the error there.
+// STOP of a positioning run ('S' has no ramp, 6.2) keeps the position only where the drive's
+// encoder confirms its count (issue 28, item 4), and a reference run clears a position error
+// itself instead of being refused.
 #include "NanotecRig.h"
 
 using namespace stepdeck;
@@ -15,6 +18,13 @@ private Q_SLOTS:
     void messages_nameTheFrontEndsAction_data();
     void messages_nameTheFrontEndsAction();
     void reset_clearsTheErrorAtTheDrive();
+    void stop_positioningRun_positionKeptWhereTheEncoderAgrees_data();
+    void stop_positioningRun_positionKeptWhereTheEncoderAgrees();
+    void reference_afterStopWithPositionError_clearsItAndReferences();
+
+private:
+    // Drive 1 (X) referenced at 0, then a long relative run stopped at full speed.
+    bool referenceThenStopAtFullSpeed(NanotecRig& rig);
 };
 
 void TestNanotecPositionError::messages_nameTheFrontEndsAction_data()
@@ -66,6 +76,92 @@ void TestNanotecPositionError::reset_clearsTheErrorAtTheDrive()
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(rig.countFrames("#2D\r"), 1);
     QVERIFY(!decodeStatus(drive->statusWord()).positionError);
+}
+
+namespace {
+bool referenceX(NanotecRig& rig)
+{
+    NanotecDrive* d = rig.sim->drive(1);
+    d->setSwitches(-250, 100000);
+    if (!rig.run([&](RequestId id) { rig.ctl->reference(id, {{Axis::X, -1}}); }).ok())
+        return false;
+    return QTest::qWaitFor([&] { return rig.ctl->status().axes[Axis::X].referenced; }, 5000);
+}
+} // namespace
+
+bool TestNanotecPositionError::referenceThenStopAtFullSpeed(NanotecRig& rig)
+{
+    NanotecDrive* d = rig.sim->drive(1);
+    if (!referenceX(rig))
+        return false;
+    if (!rig.run([&](RequestId id) { rig.ctl->moveRelative(id, {{Axis::X, 20000}}); }).ok())
+        return false;
+    if (!QTest::qWaitFor([&] { return d->speed() >= 999 && d->position() > 500; }, 5000))
+        return false;
+    const CommandResult r = rig.run([&](RequestId id) { rig.ctl->stop(id); });
+    return r.ok() && d->ready();
+}
+
+void TestNanotecPositionError::stop_positioningRun_positionKeptWhereTheEncoderAgrees_data()
+{
+    QTest::addColumn<QByteArray>("setup"); // bodies sent to drive 1 before the run
+    QTest::addColumn<bool>("known");
+    // 'o' is 1000 steps/s. At or below the start frequency 'u' the motor stops on the spot.
+    QTest::newRow("stopped below the start frequency, encoder on") << QByteArray("u1000") << true;
+    // Above it the rotor overshoots: the encoder sees steps the count never made (6.2).
+    QTest::newRow("stopped above the start frequency") << QByteArray("u400") << false;
+    // Without error correction (no encoder, 5.9) nothing confirms the count.
+    QTest::newRow("no encoder") << QByteArray("u1000,U0") << false;
+}
+
+void TestNanotecPositionError::stop_positioningRun_positionKeptWhereTheEncoderAgrees()
+{
+    QFETCH(QByteArray, setup);
+    QFETCH(bool, known);
+    NanotecRig rig;
+    QVERIFY(rig.connect());
+    NanotecDrive* d = rig.sim->drive(1);
+    for (const QByteArray& body : setup.split(','))
+        d->handle(body);
+    QVERIFY(referenceThenStopAtFullSpeed(rig));
+    // At the drive: it stands part-way, its encoder as the scenario says.
+    QVERIFY(d->position() > 0 && d->position() < 20000);
+    QCOMPARE(qAbs(d->encoderPosition() - d->position()) <= 2, setup != "u400");
+    const AxisStatus x = rig.ctl->status().axes.value(Axis::X);
+    QCOMPARE(x.positionKnown, known);
+    QCOMPARE(x.referenced, known);
+    const CommandResult back = rig.run([&](RequestId id) {
+        rig.ctl->moveAbsolute(id, {{Axis::X, 100}});
+    });
+    QCOMPARE(back.ok(), known);
+    if (!known) {
+        QCOMPARE(back.error, ErrorKind::Refused);
+        return;
+    }
+    // Without re-referencing, the absolute move lands where the drive counts 100.
+    QTRY_VERIFY_WITH_TIMEOUT(d->ready() && d->position() == 100, 10000);
+    QCOMPARE(d->encoderPosition(), qint64(100));
+}
+
+void TestNanotecPositionError::reference_afterStopWithPositionError_clearsItAndReferences()
+{
+    NanotecRig rig;
+    QVERIFY(rig.connect());
+    NanotecDrive* d = rig.sim->drive(1);
+    QVERIFY(referenceThenStopAtFullSpeed(rig)); // 'u' 400: the stop leaves a position error
+    QVERIFY(decodeStatus(d->statusWord()).positionError);
+    QTRY_VERIFY(!rig.ctl->status().axes.value(Axis::X).positionKnown);
+    const CommandResult r = rig.run(
+        [&](RequestId id) {
+            rig.ctl->reference(id, {{Axis::X, -1}});
+        },
+        10000);
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(rig.countFrames("#1D\r"), 1); // 5.14, before the run
+    QTRY_VERIFY_WITH_TIMEOUT(rig.ctl->status().axes.value(Axis::X).referenced, 10000);
+    QVERIFY(!decodeStatus(d->statusWord()).positionError);
+    QCOMPARE(d->position(), qint64(0));
+    QCOMPARE(d->encoderPosition(), qint64(0));
 }
 
 QTEST_GUILESS_MAIN(TestNanotecPositionError)
