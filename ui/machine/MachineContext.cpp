@@ -1,6 +1,7 @@
 #include "MachineContext.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/Machine.h"
+#include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QSettings>
@@ -14,7 +15,8 @@ QString modelDisplayName(const ModelInfo& model)
 }
 
 MachineContext::MachineContext(QObject* parent)
-    : QObject(parent), m_session(new ControllerSession(this))
+    : QObject(parent), m_session(new ControllerSession(this)),
+      m_workOffsets(new MachineWorkOffsets(this))
 {
     connect(m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)

@@ -6,9 +6,12 @@
 namespace stepdeck::machine {
 class Machine;
 struct MachineDescription;
+enum class PositionKnowledge;
 } // namespace stepdeck::machine
 
 namespace stepdeck::ui {
+
+class MachineWorkOffsets;
 
 // A model's display name in the current language (context "Models").
 QString modelDisplayName(const ModelInfo& model);
@@ -94,6 +97,9 @@ public:
     machine::Machine* machine() const { return m_machine.get(); }
     bool hasMachine() const { return m_machine != nullptr; }
     QString machinePath() const { return m_machinePath; }
+    // The open machine's work offsets (loaded for its file when it opens, none when closed):
+    // one set for the position display, Go to and programs (issue 28, item 3).
+    MachineWorkOffsets* workOffsets() const { return m_workOffsets; }
     QString selectedController() const { return m_selectedId; }
     void selectController(const QString& controllerId);
     void connectMachine();
@@ -107,6 +113,10 @@ public:
     // any; each axis referenced only if it is on every controller that has it. Without a
     // machine: the session's link and status.
     MachineStatus machineWideStatus(LinkState* link) const;
+    // How the positions are known, the worst over every axis (Unknown without an axis): with
+    // a machine, each axis as Machine::axisStatus says (the source Go to, the check and the
+    // referencing lamps judge by); else the controller's axes the same way (issue 28, item 4).
+    machine::PositionKnowledge positionKnowledge() const;
 
 Q_SIGNALS:
     void machineChanged(); // a machine was opened or closed
@@ -139,6 +149,7 @@ private:
     ControllerSession* m_selected = nullptr; // the machine's selected controller
     QString m_selectedId;
     QString m_machinePath;
+    MachineWorkOffsets* m_workOffsets;
     const ModelInfo* m_singleModel = nullptr; // the connection bar's model while a machine is open
     QList<QMetaObject::Connection> m_relay;
     const ModelInfo* m_model = nullptr;

@@ -3,7 +3,9 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
+#include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
+#include <optional>
 
 namespace stepdeck::ui {
 
@@ -39,7 +41,8 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
     if (m_session->isCreated())
         m_session->destroy(); // the single controller's stop, flushed, then its port closed
     m_machine = std::move(created);
-    m_machinePath = path; // before machineChanged: its listeners read it (work offsets)
+    m_machinePath = path;
+    m_workOffsets->load(path); // before machineChanged: its listeners show them
     connect(m_machine.get(), &machine::Machine::controllerFailed, this,
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,
@@ -59,6 +62,7 @@ void MachineContext::closeMachine()
     m_selected = nullptr;
     m_selectedId.clear();
     m_machinePath.clear();
+    m_workOffsets->load(QString());
     const std::unique_ptr<machine::Machine> closing = std::move(m_machine);
     closing->disconnect(this);
     closing->destroy(); // every controller's stop, flushed, before its port closes
@@ -185,6 +189,38 @@ MachineStatus MachineContext::machineWideStatus(LinkState* link) const
     if (unreported)
         out.axes.clear(); // a controller without a status yet: nothing is "all referenced"
     return out;
+}
+
+machine::PositionKnowledge MachineContext::positionKnowledge() const
+{
+    using machine::PositionKnowledge;
+    // Unknown is the worst, then Estimated.
+    auto worse = [](PositionKnowledge a, PositionKnowledge b) {
+        const auto rank = [](PositionKnowledge k) {
+            return k == PositionKnowledge::Unknown ? 2 : k == PositionKnowledge::Estimated ? 1 : 0;
+        };
+        return rank(a) >= rank(b) ? a : b;
+    };
+    std::optional<PositionKnowledge> worst;
+    if (m_machine) {
+        for (const machine::MachineAxis& axis : m_machine->description().axes) {
+            const PositionKnowledge k = m_machine->axisStatus(axis).known;
+            worst = worst ? worse(*worst, k) : k;
+        }
+        return worst.value_or(PositionKnowledge::Unknown);
+    }
+    const ControllerSession* s = session();
+    if (!s->isCreated() || s->linkState() != LinkState::Connected)
+        return PositionKnowledge::Unknown;
+    // As Machine::axisStatus judges a controller axis.
+    for (const AxisStatus& a : s->status().axes) {
+        const PositionKnowledge k = !a.positionKnown ? PositionKnowledge::Unknown
+                                    : (a.positionEstimated || a.motionUnknown)
+                                        ? PositionKnowledge::Estimated
+                                        : PositionKnowledge::Referenced;
+        worst = worst ? worse(*worst, k) : k;
+    }
+    return worst.value_or(PositionKnowledge::Unknown);
 }
 
 } // namespace stepdeck::ui

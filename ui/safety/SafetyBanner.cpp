@@ -56,11 +56,12 @@ SafetyBannerText SafetyBanner::compute(const SafetyBannerInput& in)
                    "on the %1 page first. The controller refuses every move until then.")
                     .arg(setupPageTitle()),
                 QStringLiteral("warning")};
-    bool allReferenced = !s.axes.isEmpty();
-    for (const AxisStatus& axis : s.axes)
-        allReferenced = allReferenced && axis.referenced;
-    if (allReferenced)
+    if (in.positions == machine::PositionKnowledge::Referenced)
         return {tr("Ready: all axes referenced."), QStringLiteral("ok")};
+    if (in.positions == machine::PositionKnowledge::Estimated)
+        return {tr("Positions estimated, not confirmed by the controller: reference the axes "
+                   "before any absolute move."),
+                QStringLiteral("warning"), true};
     if (in.positionsLost)
         return {tr("Positions are lost (panic stop or reconnect). Reference the machine before "
                    "any absolute move."),
@@ -74,7 +75,7 @@ QStringList SafetyBanner::possibleTexts()
     QStringList out;
     for (LinkState link :
          {LinkState::Disconnected, LinkState::Connecting, LinkState::Connected, LinkState::Lost}) {
-        for (int flags = 0; flags < (1 << 7); ++flags) {
+        for (int flags = 0; flags < (1 << 8); ++flags) {
             SafetyBannerInput in;
             in.link = link;
             in.status.motionUnconfirmed = flags & 1;
@@ -83,9 +84,9 @@ QStringList SafetyBanner::possibleTexts()
             in.hostPanicSent = flags & 8;
             in.status.setupIncomplete = flags & 16;
             in.positionsLost = flags & 32;
-            AxisStatus axis;
-            axis.referenced = flags & 64;
-            in.status.axes.insert(Axis::X, axis);
+            in.positions = (flags & 64)    ? machine::PositionKnowledge::Referenced
+                           : (flags & 128) ? machine::PositionKnowledge::Estimated
+                                           : machine::PositionKnowledge::Unknown;
             const QString text = compute(in).text;
             if (!out.contains(text))
                 out << text;

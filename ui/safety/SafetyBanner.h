@@ -1,5 +1,6 @@
 #pragma once
 #include "controller/Controller.h"
+#include "machine/Machine.h"
 #include <QCoreApplication>
 
 namespace stepdeck::ui {
@@ -15,6 +16,9 @@ struct SafetyBannerInput
 {
     LinkState link = LinkState::Disconnected;
     MachineStatus status;
+    // How the axes' positions are known, the worst over every axis (MachineContext::
+    // positionKnowledge: the source Go to, the check and the referencing lamps judge by).
+    machine::PositionKnowledge positions = machine::PositionKnowledge::Unknown;
     bool positionsLost = false;       // panic or reconnect since the last full referencing
     bool movingWhenLinkEnded = false; // the last status before the link ended showed motion
     bool hostPanicSent = false;       // PANIC pressed here, no motion started since

@@ -169,15 +169,14 @@ void SafetyBar::refresh()
     // With a machine open the banner speaks of all of it, not of the controller the pages show.
     LinkState link = LinkState::Disconnected;
     const MachineStatus status = m_context->machineWideStatus(&link);
-    bool allReferenced = !status.axes.isEmpty() && link == LinkState::Connected;
-    for (const AxisStatus& axis : status.axes)
-        allReferenced = allReferenced && axis.referenced;
-    if (allReferenced)
+    const machine::PositionKnowledge positions = m_context->positionKnowledge();
+    if (positions == machine::PositionKnowledge::Referenced && link == LinkState::Connected)
         m_positionsLost = false;
 
     SafetyBannerInput in;
     in.link = link;
     in.status = status;
+    in.positions = positions;
     in.positionsLost = m_positionsLost;
     in.movingWhenLinkEnded = m_movingWhenLinkEnded;
     in.hostPanicSent = m_hostPanicSent;

@@ -43,6 +43,7 @@ private Q_SLOTS:
     void stop_controllerSilent_messageNamesItNotConfirmed();
     void jog_otherControllerLinkLost_heldJogDoesNotResume();
     void banner_tableReferencedRotaryNot_machineNotReady();
+    void banner_everyMachineAxisReferenced_readyAsGoToJudges();
     void jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive();
 
 private:
@@ -206,6 +207,49 @@ void TestMachineSafety::banner_tableReferencedRotaryNot_machineNotReady()
     QVERIFY2(!window()->safetyBar()->bannerText().startsWith(QStringLiteral("Ready")),
              qPrintable(window()->safetyBar()->bannerText()));
     QCOMPARE(window()->safetyBar()->bannerSeverity(), QStringLiteral("warning"));
+}
+
+// Issue 28, item 4: the banner judges the machine's axes as Go to and the check do
+// (Machine::axisStatus), not the controllers' axes: the board's Z, which this machine does not
+// use, unreferenced does not keep the machine from "Ready"; an unknown A does.
+void TestMachineSafety::banner_everyMachineAxisReferenced_readyAsGoToJudges()
+{
+    const QByteArray json = QStringLiteral(R"({
+  "format": "stepdeck-machine", "version": 1, "name": "XY table with rotary axis",
+  "controllers": [
+    { "id": "table", "model": "elab", "port": "%1" },
+    { "id": "rotary", "model": "nanotec", "port": "%2", "axes": { "X": 1 } }
+  ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "A", "controller": "rotary", "axis": "X", "unit": "deg", "stepsPerUnit": 100 }
+  ]
+})")
+                                .arg(m_rig.elab->path(), m_rig.nanotec->path())
+                                .toUtf8();
+    QVERIFY(m_rig.openAndConnect(json));
+    ControllerSession* table = machine()->session(QStringLiteral("table"));
+    ControllerSession* rotary = machine()->session(QStringLiteral("rotary"));
+    table->reference({{Axis::X, -1}, {Axis::Y, -1}});
+    auto known = [this](const QString& name) {
+        return machine()->axisStatus(*machine()->description().axis(name)).known;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(known("X") == machine::PositionKnowledge::Referenced &&
+                                 known("Y") == machine::PositionKnowledge::Referenced &&
+                                 !table->status().anyMoving(),
+                             20000);
+    QCOMPARE(known("A"), machine::PositionKnowledge::Unknown);
+    QCOMPARE(window()->context()->positionKnowledge(), machine::PositionKnowledge::Unknown);
+    QTRY_COMPARE(window()->safetyBar()->bannerSeverity(), QStringLiteral("warning"));
+    rotary->reference({{Axis::X, -1}});
+    QTRY_VERIFY_WITH_TIMEOUT(known("A") == machine::PositionKnowledge::Referenced &&
+                                 !rotary->status().anyMoving(),
+                             20000);
+    QVERIFY(!table->status().axes.value(Axis::Z).referenced); // the board's own Z: not used
+    QCOMPARE(window()->context()->positionKnowledge(), machine::PositionKnowledge::Referenced);
+    QTRY_VERIFY2(window()->safetyBar()->bannerText().startsWith(QStringLiteral("Ready")),
+                 qPrintable(window()->safetyBar()->bannerText()));
 }
 
 void TestMachineSafety::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()

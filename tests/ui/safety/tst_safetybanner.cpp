@@ -8,15 +8,18 @@ using namespace stepdeck;
 using namespace stepdeck::ui;
 
 namespace {
-MachineStatus axes(bool referenced)
+// A status of axes X, Y, Z referenced or not (nothing else set), and the knowledge of the
+// positions that goes with it.
+void setAxes(SafetyBannerInput* in, bool referenced)
 {
-    MachineStatus s;
+    in->status = MachineStatus{}; // the whole status, as a new status word
     for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
         AxisStatus axis;
         axis.referenced = axis.positionKnown = referenced;
-        s.axes.insert(a, axis);
+        in->status.axes.insert(a, axis);
     }
-    return s;
+    in->positions =
+        referenced ? machine::PositionKnowledge::Referenced : machine::PositionKnowledge::Unknown;
 }
 } // namespace
 
@@ -37,13 +40,13 @@ void TestSafetyBanner::compute_data()
     QTest::addColumn<QString>("severity");
 
     SafetyBannerInput in;
-    in.status = axes(true); // stale: the last status before the disconnect said referenced
+    setAxes(&in, true); // stale: the last status before the disconnect said referenced
     QTest::newRow("disconnected, stale referenced") << in << "Not connected"
                                                     << "Ready"
                                                     << "idle";
 
     in.link = LinkState::Lost;
-    in.status = axes(false);
+    setAxes(&in, false);
     QTest::newRow("lost, idle") << in << "Link lost"
                                 << "may still be moving"
                                 << "fault";
@@ -63,7 +66,7 @@ void TestSafetyBanner::compute_data()
 
     in = SafetyBannerInput{};
     in.link = LinkState::Connected;
-    in.status = axes(true);
+    setAxes(&in, true);
     in.status.motionUnconfirmed = true;
     QTest::newRow("connected, unconfirmed") << in << "No standstill confirmed"
                                             << "Ready"
@@ -78,7 +81,7 @@ void TestSafetyBanner::compute_data()
     QTest::newRow("machine emergency stop") << in << "Release the emergency stop"
                                             << "Ready"
                                             << "fault";
-    in.status = axes(false);
+    setAxes(&in, false);
     in.status.setupIncomplete = true;
     in.positionsLost = true;
     QTest::newRow("setup first") << in << "write the setup (start speed, max speed, acceleration)"
@@ -92,10 +95,16 @@ void TestSafetyBanner::compute_data()
     QTest::newRow("not referenced") << in << "Not referenced"
                                     << "Ready"
                                     << "warning";
-    in.status = axes(true);
+    setAxes(&in, true);
     QTest::newRow("ready") << in << "Ready: all axes referenced"
                            << "lost"
                            << "ok";
+    // Issue 28, item 4: an axis referenced once whose position is now estimated (a jog without
+    // read-back) is not "ready": Go to and the check refuse absolute moves on it.
+    in.positions = machine::PositionKnowledge::Estimated;
+    QTest::newRow("estimated") << in << "Positions estimated"
+                               << "Ready"
+                               << "warning";
 }
 
 void TestSafetyBanner::compute()
@@ -118,7 +127,7 @@ void TestSafetyBanner::neverClaimsAStop()
         for (int bits = 0; bits < 64; ++bits) {
             SafetyBannerInput in;
             in.link = link;
-            in.status = axes(bits & 1);
+            setAxes(&in, bits & 1);
             in.status.panic = bits & 2;
             in.status.motionUnconfirmed = bits & 4;
             in.status.setupIncomplete = bits & 8;
