@@ -3649,6 +3649,10 @@
             <source>controller "%1": %2</source>
             <translation>Steuerung „%1“: %2</translation>
         </message>
+        <message>
+            <source>%1 reaches %2 %3 in work coordinates, %4 %3 in machine coordinates: outside the soft limits %5..%6 %3 (machine)</source>
+            <translation>%1 erreicht %2 %3 in Werkstückkoordinaten, %4 %3 in Maschinenkoordinaten: außerhalb der Software-Endlagen %5..%6 %3 (Maschine)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramLexer</name>
@@ -6578,6 +6582,22 @@ W1500</translation>
             <source>none</source>
             <translation>keine</translation>
         </message>
+        <message>
+            <source>%1 0 at machine %2 %3</source>
+            <translation>%1 0 bei Maschine %2 %3</translation>
+        </message>
+        <message>
+            <source>Work coordinates = machine coordinates (no work zero set)</source>
+            <translation>Werkstückkoordinaten = Maschinenkoordinaten (kein Werkstücknullpunkt gesetzt)</translation>
+        </message>
+        <message>
+            <source>Work coordinates: %1</source>
+            <translation>Werkstückkoordinaten: %1</translation>
+        </message>
+        <message>
+            <source>The program's positions, the path and the extents are work coordinates, as the position display shows them; the machine moves to work + offset. Soft limits are shown converted to work coordinates.</source>
+            <translation>Die Positionen des Programms, die Bahn und die Ausdehnung sind Werkstückkoordinaten, wie die Positionsanzeige sie zeigt; die Maschine fährt nach Werkstück + Versatz. Software-Endlagen werden in Werkstückkoordinaten umgerechnet gezeigt.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPromptBanner</name>
@@ -6976,6 +6996,10 @@ W1500</translation>
         <message>
             <source>Setup incomplete: write the setup (start speed, max speed, acceleration) on the %1 page first. The controller refuses every move until then.</source>
             <translation>Einrichtung unvollständig: zuerst die Einrichtung (Startgeschwindigkeit, Maximalgeschwindigkeit, Beschleunigung) auf der Seite %1 schreiben. Bis dahin lehnt die Steuerung jede Fahrt ab.</translation>
+        </message>
+        <message>
+            <source>Positions estimated, not confirmed by the controller: reference the axes before any absolute move.</source>
+            <translation>Positionen geschätzt, nicht von der Steuerung bestätigt: vor jeder absoluten Bewegung die Achsen referenzieren.</translation>
         </message>
     </context>
     <context>
