@@ -8,6 +8,7 @@
 #include "PollWire.h"
 #include "ProgramBench.h"
 #include "SoakMain.h"
+#include "WindowProgramBench.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -328,6 +329,8 @@ int main(int argc, char** argv)
 {
     // With a QApplication of its own (the GUI's jog panel), so before the QCoreApplication.
     if (const int code = jogLatencyMain(argc, argv); code >= 0)
+        return code;
+    if (const int code = windowProgramBenchMain(argc, argv); code >= 0)
         return code;
     QCoreApplication application(argc, argv);
     const QStringList args = application.arguments().mid(1);

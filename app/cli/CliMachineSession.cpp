@@ -65,10 +65,12 @@ void CliMachineSession::watchSessions()
                     wake();
                 });
         connect(s, &ControllerSession::errorOccurred, this, [this, c](const QString& message) {
-            // What a controller did or saw on its own once connected (the E-LAB adapter
-            // stopping motion it did not command): a read reports it with what it read.
+            // What a controller did or saw on its own (the E-LAB adapter stopping motion it did
+            // not command): a read reports it with what it read. Kept from the link's opening
+            // on: the adapter's first status read, which may already see that motion, runs
+            // before the link counts as connected (dropping it then lost the note under load).
             const QString note = faultText(c, message);
-            if (m_connected && !m_notes.contains(note))
+            if (!m_notes.contains(note))
                 m_notes << note;
         });
         connect(s, &ControllerSession::jogRefused, this, [this, id = c.id](const QString& reason) {

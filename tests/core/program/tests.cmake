@@ -10,3 +10,7 @@ stepdeck_add_test(tst_programrunner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_progra
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
 # The rules the check and the run share (issue 28).
 stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrules.cpp LABELS unit)
+# Programs that check clean run to their end on the simulators: the check refuses first
+# whatever the run would refuse (issue 28, item 1).
+stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckedruns.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
