@@ -2944,6 +2944,28 @@
             <source>must be an acceleration greater than 0 in %1/s² (is %2)</source>
             <translation>muss eine Beschleunigung größer als 0 in %1/s² sein (ist %2)</translation>
         </message>
+        <message>
+            <source>unknown model</source>
+            <translation>unbekanntes Modell</translation>
+        </message>
+        <message>
+            <source>%1 holds no parameter</source>
+            <translation>%1 enthält keinen Parameter</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::machine::MachineSetup</name>
+        <message numerus="yes">
+            <source>controller "%1": wrote its setup from %2 (%n parameter(s))</source>
+            <translation>
+                <numerusform>Steuerung „%1“: Einrichtung aus %2 geschrieben (%n Parameter)</numerusform>
+                <numerusform>Steuerung „%1“: Einrichtung aus %2 geschrieben (%n Parameter)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>controller "%1": writing its setup from %2 failed: %3</source>
+            <translation>Steuerung „%1“: Schreiben der Einrichtung aus %2 fehlgeschlagen: %3</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::nanotec::Codec</name>

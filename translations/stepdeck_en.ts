@@ -22,6 +22,16 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::machine::MachineSetup</name>
+        <message numerus="yes">
+            <source>controller "%1": wrote its setup from %2 (%n parameter(s))</source>
+            <translation>
+                <numerusform>controller "%1": wrote its setup from %2 (%n parameter)</numerusform>
+                <numerusform>controller "%1": wrote its setup from %2 (%n parameters)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DiffDialog</name>
         <message numerus="yes">
             <source>%1 changes %n value(s) (highlighted).</source>

@@ -82,19 +82,22 @@ Outcome CliContext::connect()
     if (!result.ok() || !options.setupDefaults || setupWritten)
         return result;
     setupWritten = true;
-    // Parameters with a warning (Nanotec motor-address: the drive moves to the default
-    // address; closed-loop motor data: over-speed) are never written behind the user's back.
-    ParameterSet defaults = schemaDefaults(*model, axes());
-    for (const ParameterSpec& spec : model->schema.specs()) {
-        if (!spec.warning.isEmpty())
-            defaults.remove(spec.name);
-    }
-    result = writeParameters(*this, defaults);
+    result = writeParameters(*this, unattendedDefaults(*model, axes()));
     if (result.ok())
         result = session.refresh(); // the status words the adapter's rules see are current
     if (!result.ok())
         result.message = CliText::tr("--setup-defaults: %1").arg(result.message);
     return result;
+}
+
+ParameterSet unattendedDefaults(const ModelInfo& model, const QList<Axis>& axes)
+{
+    ParameterSet defaults = schemaDefaults(model, axes);
+    for (const ParameterSpec& spec : model.schema.specs()) {
+        if (!spec.warning.isEmpty())
+            defaults.remove(spec.name);
+    }
+    return defaults;
 }
 
 ParameterSet schemaDefaults(const ModelInfo& model, const QList<Axis>& axes)

@@ -31,6 +31,10 @@ Outcome runCommand(CliContext& context);
 
 // Every writable parameter at its schema default, per-axis ones for each of `axes`.
 ParameterSet schemaDefaults(const ModelInfo& model, const QList<Axis>& axes);
+// What --setup-defaults writes: the schema's defaults without the parameters that carry a
+// warning (Nanotec motor-address: the drive moves to the default address; closed-loop motor
+// data: over-speed), which are never written behind the user's back.
+ParameterSet unattendedDefaults(const ModelInfo& model, const QList<Axis>& axes);
 // Writes the set. With verify, every value is read back afterwards (issue 4: drives may echo
 // a value and ignore it) -- but only when every parameter in the set is readable; a model
 // that cannot read back (E-LAB) just writes.

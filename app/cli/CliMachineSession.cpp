@@ -1,6 +1,7 @@
 #include "CliMachineSession.h"
 #include "CliCommands.h"
 #include "CliText.h"
+#include "machine/MachineSetup.h"
 #include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -153,6 +154,8 @@ Outcome CliMachineSession::connectAll()
     watchSessions();
     if (const Outcome opened = openAll(); !opened.ok())
         return opened;
+    if (const Outcome setup = awaitMachineSetup(); !setup.ok())
+        return setup;
     m_connected = true;
     if (m_options.setupDefaults) {
         if (const Outcome written = writeSetupDefaults(); !written.ok())
@@ -166,17 +169,40 @@ Outcome CliMachineSession::connectAll()
     return refreshed;
 }
 
+// The machine file's setups (controllers[i].setup), written by MachineSetup as the links came
+// up: a command runs on a machine set as its file says, or not at all.
+Outcome CliMachineSession::awaitMachineSetup()
+{
+    const machine::MachineSetup* setup = m_machine.setupWriter();
+    if (!setup)
+        return Outcome::success();
+    for (const MachineController& c : m_description.controllers) {
+        if (c.setup.isEmpty())
+            continue;
+        waitFor([&] { return setup->lastResult(c.id).has_value(); }, CliSession::kRequestTimeoutMs);
+        const std::optional<CommandResult> r = setup->lastResult(c.id);
+        if (!r)
+            return Outcome::failure(
+                ExitTimeout, CliText::tr("controller \"%1\": its setup from %2 was not confirmed "
+                                         "within %3 ms")
+                                 .arg(c.id, c.setupFile)
+                                 .arg(CliSession::kRequestTimeoutMs));
+        if (!r->ok())
+            return Outcome::failure(exitCodeFor(r->error),
+                                    CliText::tr("controller \"%1\": writing its setup from %2 "
+                                                "failed: %3")
+                                        .arg(c.id, c.setupFile, r->message));
+    }
+    return Outcome::success();
+}
+
 // --setup-defaults on every controller, as CliContext::connect() does for one.
 Outcome CliMachineSession::writeSetupDefaults()
 {
     QMap<QString, RequestId> writes;
     for (const MachineController& c : m_description.controllers) {
         ControllerSession* s = m_machine.session(c.id);
-        ParameterSet defaults = schemaDefaults(*s->model(), s->capabilities().axes);
-        for (const ParameterSpec& spec : s->model()->schema.specs()) {
-            if (!spec.warning.isEmpty())
-                defaults.remove(spec.name);
-        }
+        const ParameterSet defaults = unattendedDefaults(*s->model(), s->capabilities().axes);
         writes.insert(c.id, s->writeParameters(defaults, canVerify(*s->model(), defaults)));
     }
     Outcome result = waitAll(writes, CliSession::kRequestTimeoutMs);

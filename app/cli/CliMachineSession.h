@@ -71,6 +71,7 @@ private:
     Outcome openAll();
     CommandResult verdict(const QString& controllerId, const CommandResult& r);
     QString faultText(const machine::MachineController& c, const QString& message) const;
+    Outcome awaitMachineSetup();
     Outcome writeSetupDefaults();
 
     CliOptions m_options;

@@ -1,8 +1,10 @@
 #include "Machine.h"
 #include "MachineFile.h"
 #include "MachineReferenceRun.h"
+#include "MachineSetup.h"
 #include "MachineSimulation.h"
 #include "protocols/Registry.h"
+#include <utility>
 
 namespace stepdeck::machine {
 
@@ -96,6 +98,7 @@ bool Machine::create(const MachineDescription& description, QString* error)
         watch(c.id, session.get());
         m_sessions.push_back(std::move(session));
     }
+    m_setup = new MachineSetup(this);
     return true;
 }
 
@@ -105,6 +108,7 @@ void Machine::destroy()
     // they are told in turn, but none of them waits for I/O of another.
     for (auto& s : m_sessions)
         s->disconnect(this);
+    delete std::exchange(m_setup, nullptr); // before the sessions it listens to
     m_jogSessions.clear();
     m_targetJogs.clear(); // before the sessions they send to
     m_sessions.clear();

@@ -13,6 +13,7 @@
 namespace stepdeck::machine {
 
 class MachineReferenceRun;
+class MachineSetup;
 
 // How a shown position is known (docs/machines.md): read back or confirmed by a reference
 // run, estimated by the host, or unknown until the axis is referenced.
@@ -97,6 +98,9 @@ public:
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
     MachineState state(QString* controllerId = nullptr) const;
 
+    // Writes each controller's setup from the file on every connect (null before create()).
+    MachineSetup* setupWriter() const { return m_setup; }
+
 Q_SIGNALS:
     void statusChanged();
     void moveFinished(quint64 id, bool ok, const QString& message);
@@ -179,6 +183,7 @@ private:
     void releaseTargetJogs();
     quint64 m_lastMove = 0;
     std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
+    MachineSetup* m_setup = nullptr; // the controllers' setups, written on connect (a child)
 };
 
 } // namespace stepdeck::machine

@@ -28,6 +28,8 @@ QJsonObject controllerJson(const MachineController& c)
     }
     if (c.resetLine)
         o.insert("resetLine", resetLineName(*c.resetLine));
+    if (!c.setupFile.isEmpty())
+        o.insert("setup", c.setupFile);
     return o;
 }
 
@@ -195,7 +197,8 @@ QJsonObject MachineDescription::toJson() const
 bool operator==(const MachineController& a, const MachineController& b)
 {
     return a.id == b.id && a.modelId == b.modelId && a.port == b.port &&
-           a.busAddresses == b.busAddresses && a.resetLine == b.resetLine;
+           a.busAddresses == b.busAddresses && a.resetLine == b.resetLine &&
+           a.setupFile == b.setupFile;
 }
 
 bool operator==(const MachineAxis& a, const MachineAxis& b)

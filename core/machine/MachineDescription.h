@@ -1,6 +1,7 @@
 #pragma once
 #include "model/Axis.h"
 #include "model/LineSettings.h"
+#include "model/ParameterSchema.h"
 #include <QCoreApplication>
 #include <QJsonObject>
 #include <optional>
@@ -28,6 +29,12 @@ struct MachineController
     // model's default addresses.
     QMap<Axis, int> busAddresses;
     std::optional<LineSettings::ResetLine> resetLine; // models with a reset line only
+    // The controller's setup (issue 28, item 1): a parameter file as `export` writes it,
+    // written to the device on every connect (MachineSetup). setupFile is the path as the
+    // machine file gives it (relative to the machine file's folder); empty: none. setup holds
+    // its values once MachineFile::load / parse read and validated it.
+    QString setupFile;
+    ParameterSet setup;
 
     bool isSimulated() const { return port == QLatin1String("sim"); }
 };

@@ -1,5 +1,8 @@
 #include "MachineFile.h"
 #include "model/NearestName.h"
+#include "model/ParameterFile.h"
+#include "protocols/Registry.h"
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -129,7 +132,9 @@ bool Reader::readController(const QJsonValue& v, const QString& path, MachineCon
         return fail(path,
                     MachineFile::tr("must be an object {\"id\", \"model\", \"port\", \u2026}"));
     const QJsonObject o = v.toObject();
-    if (!onlyKeys(o, path, {"id", "model", "port", "axes", "resetLine"}))
+    if (!onlyKeys(o, path, {"id", "model", "port", "axes", "resetLine", "setup"}))
+        return false;
+    if (!string(o, path, "setup", &c->setupFile, false))
         return false;
     if (!string(o, path, "id", &c->id) || !string(o, path, "model", &c->modelId) ||
         !string(o, path, "port", &c->port))
@@ -277,15 +282,40 @@ QString MachineFileError::text() const
     return field.isEmpty() ? message : field + QStringLiteral(": ") + message;
 }
 
-std::optional<MachineDescription> MachineFile::parse(const QByteArray& json,
-                                                     MachineFileError* error)
+std::optional<MachineDescription>
+MachineFile::parse(const QByteArray& json, MachineFileError* error, const QString& baseDir)
 {
     MachineFileError local;
     MachineFileError* e = error ? error : &local;
     std::optional<MachineDescription> d = readStructure(json, e);
-    if (!d || !validate(*d, e))
+    if (!d || !validate(*d, e) || !loadSetups(&*d, baseDir, e))
         return std::nullopt;
     return d;
+}
+
+bool MachineFile::loadSetups(MachineDescription* d, const QString& baseDir, MachineFileError* e)
+{
+    const QDir base(baseDir.isEmpty() ? QDir::currentPath() : baseDir);
+    for (qsizetype i = 0; i < d->controllers.size(); ++i) {
+        MachineController& c = d->controllers[i];
+        if (c.setupFile.isEmpty())
+            continue;
+        const QString field = QStringLiteral("controllers[%1].setup").arg(i);
+        const ModelInfo* model = findModel(c.modelId); // validate() found it
+        if (!model)
+            return MachineFileError::report(e, field, tr("unknown model"));
+        const QList<Axis> axes =
+            c.busAddresses.isEmpty() ? model->capabilities.axes : c.busAddresses.keys();
+        QString why;
+        ParameterSet set;
+        if (ParameterFile::load(model->schema, model->id, axes, base.filePath(c.setupFile), &set,
+                                &why) != ParameterFile::Status::Ok)
+            return MachineFileError::report(e, field, why);
+        if (set.isEmpty())
+            return MachineFileError::report(e, field, tr("%1 holds no parameter").arg(c.setupFile));
+        c.setup = set;
+    }
+    return true;
 }
 
 std::optional<MachineDescription> MachineFile::parseDraft(const QByteArray& json,
@@ -341,7 +371,7 @@ std::optional<QByteArray> MachineFile::read(const QString& path, MachineFileErro
 std::optional<MachineDescription> MachineFile::load(const QString& path, MachineFileError* error)
 {
     const std::optional<QByteArray> text = read(path, error);
-    return text ? parse(*text, error) : std::nullopt;
+    return text ? parse(*text, error, QFileInfo(path).absolutePath()) : std::nullopt;
 }
 
 std::optional<MachineDescription> MachineFile::loadDraft(const QString& path,

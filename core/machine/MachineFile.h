@@ -27,7 +27,10 @@ class MachineFile
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::machine::MachineFile)
 public:
-    static std::optional<MachineDescription> parse(const QByteArray& json, MachineFileError* error);
+    // A controller's setup file (controllers[i].setup) is read and validated against its model,
+    // relative to baseDir (load: the file's folder; empty: the current directory).
+    static std::optional<MachineDescription> parse(const QByteArray& json, MachineFileError* error,
+                                                   const QString& baseDir = {});
     static std::optional<MachineDescription> load(const QString& path, MachineFileError* error);
     // For the editor: the machine as the file describes it whenever its structure reads (JSON,
     // keys, types), even when a value breaks a rule -- *error then names the first such rule
@@ -46,6 +49,8 @@ private:
     static std::optional<MachineDescription> readStructure(const QByteArray& json,
                                                            MachineFileError* error);
     static std::optional<QByteArray> read(const QString& path, MachineFileError* error);
+    static bool loadSetups(MachineDescription* machine, const QString& baseDir,
+                           MachineFileError* error);
 };
 
 } // namespace stepdeck::machine

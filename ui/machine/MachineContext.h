@@ -123,6 +123,9 @@ Q_SIGNALS:
     // A controller of the machine failed; the others were told to stop (Machine).
     void machineControllerFailed(const QString& controllerId, const QString& message);
     void machineStatusChanged();
+    // A controller's setup from the machine file was written on connect, or failed
+    // (machine::MachineSetup; the message says which file and how many values, or why not).
+    void machineSetupWritten(const QString& controllerId, bool ok, const QString& message);
     void modelChanged();
     void unitsChanged();
     // A UI-level event: the operator pressed panic (positions are lost from now on).

@@ -3,6 +3,7 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
+#include "machine/MachineSetup.h"
 #include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <optional>
@@ -47,6 +48,15 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,
             &MachineContext::machineStatusChanged);
+    connect(m_machine->setupWriter(), &machine::MachineSetup::written, this,
+            [this](const QString& controllerId, bool ok, const QString& message) {
+                // The Setup page's form counts what the device holds: the file's values now.
+                if (ok && controllerId == m_selectedId)
+                    if (const machine::MachineController* c =
+                            m_machine->description().controller(controllerId))
+                        addKnownParameters(c->setup);
+                Q_EMIT machineSetupWritten(controllerId, ok, message);
+            });
     selectController(description.controllers.first().id);
     Q_EMIT machineChanged();
     return true;

@@ -23,6 +23,14 @@ MachineControl::MachineControl(MachineContext* context, StatusMessages* messages
                      [this](const QString&, const QString& message) {
                          m_messages->show(StatusMessages::Owner::Link, message);
                      });
+    // The machine file's setup, written on every connect: said either way (issue 28, item 1).
+    QObject::connect(context, &MachineContext::machineSetupWritten, this,
+                     [this](const QString&, bool ok, const QString& message) {
+                         m_messages->show(StatusMessages::Owner::Link, message,
+                                          ok ? StatusMessages::Severity::Info
+                                             : StatusMessages::Severity::Error,
+                                          ok ? 8000 : StatusMessages::kLifetimeMs);
+                     });
 }
 
 bool MachineControl::open(const QString& path)

@@ -131,8 +131,13 @@ void TestCliExamples::exampleMachine_onItsSimulators_referencesAndRuns()
     std::optional<machine::MachineDescription> d =
         machine::MachineFile::load(kExamples + "/" + file, &invalid);
     QVERIFY2(d, qPrintable(invalid.text()));
-    for (machine::MachineController& c : d->controllers)
+    // Ports "sim"; a controller's setup file (controllers[i].setup) by its path in the
+    // examples, since the file is written elsewhere.
+    for (machine::MachineController& c : d->controllers) {
         c.port = QStringLiteral("sim");
+        if (!c.setupFile.isEmpty())
+            c.setupFile = QDir(kExamples).absoluteFilePath(c.setupFile);
+    }
     QTemporaryDir dir;
     const QString machinePath = dir.filePath("machine.json");
     {
@@ -152,10 +157,11 @@ void TestCliExamples::exampleMachine_onItsSimulators_referencesAndRuns()
     }
     program += "M2\n";
     const QString programPath = writeProgram(dir, "travel.ngc", program);
-    // A board that refuses motion until its setup is written (E-LAB) gets the defaults.
+    // A board that refuses motion until its setup is written (E-LAB) gets it from the machine
+    // file (controllers[i].setup, written on connect), else the schema's defaults.
     QStringList args{"--machine", machinePath, "--timeout", "10000", "run", programPath};
     for (const machine::MachineController& c : d->controllers)
-        if (!findModel(c.modelId)->setupBeforeMotion.isEmpty() &&
+        if (!findModel(c.modelId)->setupBeforeMotion.isEmpty() && c.setup.isEmpty() &&
             !args.contains("--setup-defaults"))
             args.prepend("--setup-defaults");
     const CliRun r = runCli(args, 240000);

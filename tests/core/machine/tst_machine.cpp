@@ -5,7 +5,10 @@
 #include "ModelBench.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
+#include "machine/MachineSetup.h"
+#include "program/ProgramCheck.h"
 #include "protocols/Registry.h"
+#include "protocols/elab/ElabCodec.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "sim/PtyEndpoint.h"
 #include <QSignalSpy>
@@ -111,6 +114,7 @@ private Q_SLOTS:
     void reference_invertedAxis_fileDirectionIsTheMachines();
     void reference_linkLostDuringRun_failsNamingTheControllerAndStopsTheOthers();
     void stop_duringReferencedMove_positionsStayKnownAndAnAbsoluteMoveLandsThere();
+    void connect_setupFromTheFile_writtenOnEveryConnectAndKnown();
 
 private:
     MachineDescription description() const;
@@ -501,6 +505,57 @@ void TestMachine::reference_linkLostDuringRun_failsNamingTheControllerAndStopsTh
              qPrintable(finished.at(0).at(2).toString()));
     QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
     QVERIFY(receivedStop(*m_elab));
+}
+
+// Issue 28, item 1: a controller's setup from the machine file (controllers[i].setup) is
+// written on every connect: the board receives its values, the machine knows them (the
+// program check judges by them, the board's setup is complete), and a reconnect writes it
+// again; the written signal says so.
+void TestMachine::connect_setupFromTheFile_writtenOnEveryConnectAndKnown()
+{
+    m_machine.reset(); // init's machine: its links closed
+    MachineDescription d = description();
+    ParameterSet setup;
+    auto perAxis = [](qint64 v) {
+        ParameterValue p;
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+            p.perAxis.insert(a, v);
+        return p;
+    };
+    setup.insert(QStringLiteral("start-speed"), perAxis(150));
+    setup.insert(QStringLiteral("max-speed"), perAxis(4000));
+    setup.insert(QStringLiteral("acceleration"), perAxis(1200));
+    d.controllers[0].setupFile = QStringLiteral("table.setup.json");
+    d.controllers[0].setup = setup;
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    QSignalSpy written(m_machine->setupWriter(), &MachineSetup::written);
+    const QByteArray startSpeed = elab::encode::ramp(elab::RampKind::StartSpeed, {150, 150, 150});
+    auto sentToBoard = [this, &startSpeed] {
+        const QList<QByteArray> frames = m_elab->frames();
+        return int(std::count(frames.cbegin(), frames.cend(), startSpeed));
+    };
+    const int before = sentToBoard();
+    for (int connect = 1; connect <= 2; ++connect) {
+        m_machine->open();
+        QTRY_COMPARE_WITH_TIMEOUT(written.size(), connect, 10000);
+        QCOMPARE(written.last().at(0).toString(), QStringLiteral("table"));
+        QVERIFY2(written.last().at(1).toBool(), qPrintable(written.last().at(2).toString()));
+        QVERIFY(written.last().at(2).toString().contains(QStringLiteral("table.setup.json")));
+        QCOMPARE(sentToBoard(), before + connect); // at the board, once per connect
+        const program::MachineFacts facts = program::factsOf(*m_machine);
+        QCOMPARE(facts.knownParameters.value("table")
+                     .value("start-speed")
+                     .perAxis.value(Axis::Y)
+                     .toLongLong(),
+                 150);
+        QVERIFY(!facts.setupIncomplete.contains(QStringLiteral("table")));
+        m_machine->close();
+        QTRY_COMPARE_WITH_TIMEOUT(m_machine->session("table")->linkState(), LinkState::Disconnected,
+                                  10000);
+    }
+    QVERIFY(!m_machine->setupWriter()->pending());
 }
 
 QTEST_GUILESS_MAIN(TestMachine)

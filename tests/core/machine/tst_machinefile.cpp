@@ -84,6 +84,9 @@ private Q_SLOTS:
     void toSteps_nearestWholeStep_andBack();
     void referenceGroups_lowestOrderFirst();
     void shippedExamples_areValid();
+    void load_setupFile_readRelativeToTheMachineFileAndKept();
+    void load_setupFile_invalid_namesTheField_data();
+    void load_setupFile_invalid_namesTheField();
 };
 
 void TestMachineFile::parse_example_givesEveryField()
@@ -377,6 +380,83 @@ void TestMachineFile::shippedExamples_areValid()
         QVERIFY2(MachineFile::load(examples.filePath(name), &error),
                  qPrintable(name + ": " + error.text()));
     }
+}
+
+// Issue 28, item 1: controllers[i].setup names a parameter file (as `export` writes it),
+// read relative to the machine file's folder and validated against the controller's model;
+// the description keeps the name as written (saved back unchanged) and the values.
+void TestMachineFile::load_setupFile_readRelativeToTheMachineFileAndKept()
+{
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("setups"));
+    QFile setup(dir.filePath("setups/table.json"));
+    QVERIFY(setup.open(QIODevice::WriteOnly));
+    setup.write(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+                   "parameters": {"start-speed": {"X": 150, "Y": 120, "Z": 100}}})");
+    setup.close();
+    const QString path = dir.filePath("machine.json");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(withEdit("controllers.0.setup", QStringLiteral("setups/table.json")));
+    file.close();
+    MachineFileError error;
+    const std::optional<MachineDescription> m = MachineFile::load(path, &error);
+    QVERIFY2(m, qPrintable(error.text()));
+    const MachineController& table = m->controllers.at(0);
+    QCOMPARE(table.setupFile, QStringLiteral("setups/table.json"));
+    QCOMPARE(table.setup.value("start-speed").perAxis.value(Axis::Y).toLongLong(), 120);
+    QVERIFY(m->controllers.at(1).setup.isEmpty());
+    QCOMPARE(m->toJson()["controllers"].toArray().at(0).toObject()["setup"].toString(),
+             QStringLiteral("setups/table.json"));
+    // Saved beside its setup and read again: equal.
+    QString why;
+    QVERIFY2(MachineFile::save(*m, dir.filePath("again.json"), &why), qPrintable(why));
+    const std::optional<MachineDescription> back =
+        MachineFile::load(dir.filePath("again.json"), &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *m);
+    QCOMPARE(back->controllers.at(0).setup, table.setup);
+}
+
+void TestMachineFile::load_setupFile_invalid_namesTheField_data()
+{
+    QTest::addColumn<QByteArray>("setup"); // the file's text; empty: no file
+    QTest::addColumn<QString>("contains");
+    QTest::newRow("missing file") << QByteArray() << "table.json";
+    QTest::newRow("not JSON") << QByteArray("{ start-speed") << "table.json";
+    QTest::newRow("another model's file")
+        << QByteArray(R"({"format": "stepdeck-parameters", "version": 1, "model": "nanotec",
+                         "parameters": {}})")
+        << "nanotec";
+    QTest::newRow("value out of range")
+        << QByteArray(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+                         "parameters": {"start-speed": {"X": 99999999, "Y": 1, "Z": 1}}})")
+        << "start-speed";
+    QTest::newRow("no parameter")
+        << QByteArray(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+                         "parameters": {}})")
+        << "no parameter";
+}
+
+void TestMachineFile::load_setupFile_invalid_namesTheField()
+{
+    QFETCH(QByteArray, setup);
+    QFETCH(QString, contains);
+    QTemporaryDir dir;
+    if (!setup.isEmpty()) {
+        QFile f(dir.filePath("table.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(setup);
+    }
+    const QString path = dir.filePath("machine.json");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(withEdit("controllers.0.setup", QStringLiteral("table.json")));
+    file.close();
+    MachineFileError error;
+    QVERIFY(!MachineFile::load(path, &error));
+    QCOMPARE(error.field, QStringLiteral("controllers[0].setup"));
+    QVERIFY2(error.message.contains(contains, Qt::CaseInsensitive), qPrintable(error.text()));
 }
 
 QTEST_GUILESS_MAIN(TestMachineFile)

@@ -27,6 +27,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QToolButton>
+#include <algorithm>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -45,6 +46,7 @@ private Q_SLOTS:
     void closeMachine_singleControllerBarBackAndConnectable();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
     void machineBar_longNamesAndPorts_elidedFullTextInTooltip();
+    void connect_machineFileWithSetup_windowSaysItWroteIt();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -187,6 +189,35 @@ void TestMachineWindow::machineBar_longNamesAndPorts_elidedFullTextInTooltip()
              qPrintable(QString::number(bar->sizeHint().width())));
     const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
     QVERIFY2(minimum.width() <= 1366, qPrintable(QString::number(minimum.width())));
+}
+
+// Issue 28, item 1: the machine file's setup for the table is written on connect, and the
+// window says so (the message log names the controller and the file); the board's start
+// speed is the file's, and the Program page's check judges by it.
+void TestMachineWindow::connect_machineFileWithSetup_windowSaysItWroteIt()
+{
+    m_rig.writeFile(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+        "parameters": {"start-speed": {"X": 150, "Y": 150, "Z": 150},
+                       "max-speed": {"X": 4000, "Y": 4000, "Z": 4000},
+                       "acceleration": {"X": 1000, "Y": 1000, "Z": 1000}}})",
+                    QStringLiteral("table.setup.json"));
+    QByteArray json = m_rig.machineJson();
+    json.replace(R"("model": "elab", "port": ")",
+                 R"("model": "elab", "setup": "table.setup.json", "port": ")");
+    QVERIFY(json.contains("table.setup.json"));
+    QVERIFY(m_rig.openAndConnect(json, {QStringLiteral("table"), QStringLiteral("rotary")}));
+    auto said = [this] {
+        const auto& log = window()->messages()->log();
+        return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
+            return entry.text.contains(QStringLiteral("\"table\": wrote its setup from "
+                                                      "table.setup.json (3 parameter"));
+        });
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(said(), 10000);
+    const ParameterSet known =
+        m_rig.machine()->session(QStringLiteral("table"))->status().knownParameters;
+    QCOMPARE(known.value("start-speed").perAxis.value(Axis::X).toLongLong(), 150);
+    QTRY_VERIFY(!m_rig.machine()->session(QStringLiteral("table"))->status().setupIncomplete);
 }
 
 int main(int argc, char** argv)
