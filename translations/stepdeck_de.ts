@@ -4493,6 +4493,14 @@ Regelung für Achse %1 einschalten?</translation>
             <source>write controller axis = bus address, like X=1 Y=2 (is "%1")</source>
             <translation>Steuerungsachse = Busadresse schreiben, z. B. X=1 Y=2 (ist "%1")</translation>
         </message>
+        <message>
+            <source>Setup file</source>
+            <translation>Einrichtungsdatei</translation>
+        </message>
+        <message>
+            <source>A parameter file (as Export writes it), relative to the machine file's folder: written to the controller on every connect</source>
+            <translation>Eine Parameterdatei (wie Export sie schreibt), relativ zum Ordner der Maschinendatei: bei jedem Verbinden in die Steuerung geschrieben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DiffDialog</name>

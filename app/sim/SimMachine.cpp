@@ -126,6 +126,8 @@ int runMachine(const SimScenario& scenario)
         controllers.push_back(std::move(simulated));
     }
 
+    // The copy lives elsewhere: its setup files by their absolute paths.
+    machine::MachineFile::anchorSetupFiles(&*description, scenario.machineFile);
     const QJsonDocument copy(description->toJson());
     QString error;
     if (!scenario.machineOut.isEmpty() &&

@@ -293,6 +293,14 @@ MachineFile::parse(const QByteArray& json, MachineFileError* error, const QStrin
     return d;
 }
 
+void MachineFile::anchorSetupFiles(MachineDescription* machine, const QString& machinePath)
+{
+    const QDir base = QFileInfo(machinePath).absoluteDir();
+    for (MachineController& c : machine->controllers)
+        if (!c.setupFile.isEmpty())
+            c.setupFile = QDir::cleanPath(base.absoluteFilePath(c.setupFile));
+}
+
 bool MachineFile::loadSetups(MachineDescription* d, const QString& baseDir, MachineFileError* e)
 {
     const QDir base(baseDir.isEmpty() ? QDir::currentPath() : baseDir);

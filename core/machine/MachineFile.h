@@ -40,6 +40,10 @@ public:
                                                         MachineFileError* error);
     static std::optional<MachineDescription> loadDraft(const QString& path,
                                                        MachineFileError* error);
+    // Names each controller's setup file absolute, resolved against the folder of the machine
+    // file at machinePath, so that a copy written elsewhere (stepdeck-sim --machine's copy, a
+    // file saved to another folder) still finds it.
+    static void anchorSetupFiles(MachineDescription* machine, const QString& machinePath);
     // Validates a description built in memory (the GUI's editor) with the same rules.
     static bool validate(const MachineDescription& machine, MachineFileError* error);
     // Atomic (QSaveFile); false with *error set when the file cannot be written.

@@ -16,7 +16,7 @@ const char* const kLastId = "stepdeckLastId";
 
 QStringList keys()
 {
-    return {"id", "model", "port", "axes", "resetLine"};
+    return {"id", "model", "port", "axes", "resetLine", "setup"};
 }
 } // namespace
 
@@ -47,8 +47,9 @@ bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses)
 
 ControllersTable::ControllersTable(QWidget* parent)
     : EditorTable(keys(),
-                  {tr("Id"), tr("Model"), tr("Port"), tr("Bus addresses"), tr("Reset line")}, 3,
-                  parent)
+                  {tr("Id"), tr("Model"), tr("Port"), tr("Bus addresses"), tr("Reset line"),
+                   tr("Setup file")},
+                  3, parent)
 {
     setObjectName(QStringLiteral("controllersTable"));
 }
@@ -89,6 +90,10 @@ void ControllersTable::addRow(const MachineController& c)
     reset->addItem(QStringLiteral("RTS"), resetLineName(LineSettings::ResetLine::Rts));
     reset->addItem(QStringLiteral("DTR"), resetLineName(LineSettings::ResetLine::Dtr));
     reset->setCurrentIndex(c.resetLine ? reset->findData(resetLineName(*c.resetLine)) : 0);
+    QLineEdit* setup = addLineCell(row, "setup", c.setupFile, 150);
+    setup->setPlaceholderText(tr("none"));
+    setup->setToolTip(tr("A parameter file (as Export writes it), relative to the machine file's "
+                         "folder: written to the controller on every connect"));
     applyModel(row);
     connect(model, &QComboBox::currentIndexChanged, this, [this, model] {
         applyModel(rowOf(model, "model"));
@@ -130,6 +135,7 @@ bool ControllersTable::read(QList<MachineController>* out, MachineFileError* err
         const QString reset =
             qobject_cast<QComboBox*>(cell(r, "resetLine"))->currentData().toString();
         c.resetLine = resetLineFromName(reset);
+        c.setupFile = qobject_cast<QLineEdit*>(cell(r, "setup"))->text().trimmed();
         *out << c;
     }
     return true;

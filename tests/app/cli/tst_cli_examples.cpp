@@ -131,13 +131,11 @@ void TestCliExamples::exampleMachine_onItsSimulators_referencesAndRuns()
     std::optional<machine::MachineDescription> d =
         machine::MachineFile::load(kExamples + "/" + file, &invalid);
     QVERIFY2(d, qPrintable(invalid.text()));
-    // Ports "sim"; a controller's setup file (controllers[i].setup) by its path in the
-    // examples, since the file is written elsewhere.
-    for (machine::MachineController& c : d->controllers) {
+    // Ports "sim"; a controller's setup file (controllers[i].setup) by its absolute path,
+    // since the copy is written elsewhere.
+    for (machine::MachineController& c : d->controllers)
         c.port = QStringLiteral("sim");
-        if (!c.setupFile.isEmpty())
-            c.setupFile = QDir(kExamples).absoluteFilePath(c.setupFile);
-    }
+    machine::MachineFile::anchorSetupFiles(&*d, kExamples + "/" + file);
     QTemporaryDir dir;
     const QString machinePath = dir.filePath("machine.json");
     {

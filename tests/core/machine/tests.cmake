@@ -10,3 +10,7 @@ stepdeck_add_test(tst_jogacceleration SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_joga
 # E-LAB simulator on a pseudo-terminal.
 stepdeck_add_test(tst_machinejogstop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinejogstop.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+# Issue 28 item 4: STOP mid-move on every model, then an absolute move without referencing
+# again, at the simulators on pseudo-terminals.
+stepdeck_add_test(tst_machinestop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinestop.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)

@@ -74,6 +74,10 @@ void TestMachineEditorFiles::roundTrip_example_savesWhatWasEdited()
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("edited.machine.json"));
+    // A setup file the example names beside it goes beside the copy too.
+    for (const machine::MachineController& c : loaded->controllers)
+        if (!c.setupFile.isEmpty())
+            QVERIFY(QFile::copy(example(c.setupFile), dir.filePath(c.setupFile)));
     QSignalSpy saved(editor.get(), &MachineEditor::saved);
     QVERIFY2(editor->saveTo(path), qPrintable(editor->messageText()));
     QCOMPARE(saved.size(), 1);

@@ -115,6 +115,9 @@ void TestMachineFileActions::openRequested_windowOpensTheMachineOrNamesTheField(
     QByteArray json = source.readAll();
     json.replace("\"stepsPerUnit\": 800", "\"stepsPerUnit\": " + stepsPerUnit.toUtf8());
     const QString path = dir.filePath(QStringLiteral("t.machine.json"));
+    // The table's setup file, which the example names beside it.
+    QVERIFY(QFile::copy(example(QStringLiteral("elab-table.setup.json")),
+                        dir.filePath(QStringLiteral("elab-table.setup.json"))));
     QFile file(path);
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write(json);
