@@ -97,6 +97,25 @@ ParameterSet unattendedDefaults(const ModelInfo& model, const QList<Axis>& axes)
         if (!spec.warning.isEmpty())
             defaults.remove(spec.name);
     }
+    // A parameter the model writes only together with one left out (EMIS idle-current with
+    // run-current, 9.8) is left out too: the model's rules name the set refused, and the first
+    // parameter whose removal makes it acceptable goes (schema order, so always the same).
+    if (model.parameterRules) {
+        while (!model.parameterRules(model.schema, defaults, {}).isEmpty()) {
+            bool dropped = false;
+            for (const ParameterSpec& spec : model.schema.specs()) {
+                ParameterSet without = defaults;
+                if (without.remove(spec.name) &&
+                    model.parameterRules(model.schema, without, {}).isEmpty()) {
+                    defaults = without;
+                    dropped = true;
+                    break;
+                }
+            }
+            if (!dropped)
+                break; // the write reports why
+        }
+    }
     return defaults;
 }
 

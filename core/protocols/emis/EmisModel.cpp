@@ -5,6 +5,7 @@
 #include "EmisController.h"
 #include "EmisGrammar.h"
 #include "EmisLogging.h"
+#include "EmisParameterPlan.h"
 #include "EmisSimulator.h"
 
 namespace stepdeck::emis {
@@ -323,6 +324,21 @@ ModelInfo modelInfo()
     info.line = lineSettings();
     info.capabilities = capabilities();
     info.schema = parameterSchema();
+    // The adapter's own plan (run and idle current go together, 9.8), so the check and the
+    // CLI's --setup-defaults refuse what the write would.
+    info.parameterRules = [](const ParameterSchema&, const ParameterSet& set,
+                             const ParameterSet& known) {
+        CurrentPartners partners;
+        auto take = [&known](const char* name, QMap<Axis, qint64>* out) {
+            const ParameterValue v = known.value(QLatin1String(name));
+            for (auto it = v.perAxis.cbegin(); it != v.perAxis.cend(); ++it)
+                out->insert(it.key(), it.value().toLongLong());
+        };
+        take("run-current", &partners.runKnown);
+        take("idle-current", &partners.idleKnown);
+        const ParameterPlan plan = planWorking(set, partners);
+        return plan.ok() ? QString() : plan.message;
+    };
     info.scenario = scenarioSupport();
     info.soak = soakProfile();
     info.presentation = presentation();
