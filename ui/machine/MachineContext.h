@@ -94,6 +94,15 @@ public:
     bool openMachine(const machine::MachineDescription& description, QString* error,
                      const QString& path = QString());
     void closeMachine(); // every controller stops and closes; back to a single controller
+    // The connected single controller as a machine of one controller (issue 28, item 0): its
+    // port, bus addresses and reset line, and each axis in the operator's units (Units…:
+    // mm, degrees; inches as mm), with the soft limits set for it, converted; an axis without
+    // units stays in steps. workOffsets: its work origins in the axes' units.
+    machine::MachineDescription
+    connectedControllerMachine(QMap<QString, double>* workOffsets = nullptr) const;
+    // Opens connectedControllerMachine() on the same link (the single session closes first)
+    // and connects it, with the work origins carried over. False with *error.
+    bool openConnectedControllerAsMachine(QString* error);
     machine::Machine* machine() const { return m_machine.get(); }
     bool hasMachine() const { return m_machine != nullptr; }
     QString machinePath() const { return m_machinePath; }

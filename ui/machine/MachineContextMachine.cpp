@@ -1,6 +1,7 @@
 // MachineContext, part 2: a machine of several controllers (issue 19). The core Machine owns
 // one session per controller; the context selects one of them for the per-controller pages.
 #include "machine/Machine.h"
+#include "drives/PositionErrorResetButton.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
 #include "machine/MachineSetup.h"
@@ -29,6 +30,12 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
     // Everything is checked (and every session built) before the open link is touched: an
     // invalid machine leaves what runs now as it is.
     auto created = std::make_unique<machine::Machine>();
+    // The core's messages name this window's buttons, not CLI commands (issue 16), as for a
+    // single controller (connectTo).
+    ControllerOptions base;
+    base.actionNames.insert(PositionErrorResetButton::operationName(),
+                            PositionErrorResetButton::actionName());
+    created->setBaseOptions(base);
     QString why;
     if (!created->create(description, &why)) {
         if (error)
@@ -231,6 +238,55 @@ machine::PositionKnowledge MachineContext::positionKnowledge() const
         worst = worst ? worse(*worst, k) : k;
     }
     return worst.value_or(PositionKnowledge::Unknown);
+}
+
+machine::MachineDescription
+MachineContext::connectedControllerMachine(QMap<QString, double>* workOffsets) const
+{
+    const ConnectionSpec& spec = m_session->spec();
+    const ModelInfo& model = *m_model;
+    QMap<Axis, int> addresses;
+    if (model.capabilities.multiDrive)
+        addresses = spec.options.axisAddresses;
+    machine::MachineDescription d =
+        machine::MachineDescription::singleController(model, m_port, addresses);
+    if (model.capabilities.resetLine)
+        d.controllers.first().resetLine = spec.options.resetLine;
+    for (machine::MachineAxis& a : d.axes) {
+        const AxisUnits u = m_units.value(a.axis);
+        if (u.stepsPerUnit <= 0)
+            continue; // steps, as the controller counts
+        const bool inch = u.unit == QLatin1String("in");
+        a.unit = u.unit == QStringLiteral("\u00b0") ? machine::AxisUnit::Degree
+                                                    : machine::AxisUnit::Millimetre;
+        a.stepsPerUnit = inch ? u.stepsPerUnit / 25.4 : u.stepsPerUnit;
+        const AxisSoftLimit limit = m_softLimits.limit(a.axis);
+        if (limit.enabled && limit.rangeSet) {
+            a.softMinimum = a.toUnits(limit.minimum);
+            a.softMaximum = a.toUnits(limit.maximum);
+        }
+        if (workOffsets && u.workOffset != 0)
+            workOffsets->insert(a.name, a.toUnits(u.workOffset));
+    }
+    if (workOffsets) // an axis in steps keeps its origin in steps
+        for (const machine::MachineAxis& a : d.axes)
+            if (a.unit == machine::AxisUnit::Step && m_units.value(a.axis).workOffset != 0)
+                workOffsets->insert(a.name, double(m_units.value(a.axis).workOffset));
+    return d;
+}
+
+bool MachineContext::openConnectedControllerAsMachine(QString* error)
+{
+    if (!m_model || !m_session->isCreated() || m_machine)
+        return false;
+    QMap<QString, double> offsets;
+    const machine::MachineDescription d = connectedControllerMachine(&offsets);
+    if (!openMachine(d, error))
+        return false;
+    for (auto it = offsets.cbegin(); it != offsets.cend(); ++it)
+        m_workOffsets->set(it.key(), it.value());
+    connectMachine(); // the same port, now the machine's controller
+    return true;
 }
 
 } // namespace stepdeck::ui

@@ -49,6 +49,16 @@ bool MachineWorkOffsets::zero(const QString& axis, const machine::MachineAxisSta
     return true;
 }
 
+void MachineWorkOffsets::set(const QString& axis, double machinePosition)
+{
+    if (!qIsFinite(machinePosition) || machinePosition == 0.0)
+        m_offsets.remove(axis);
+    else
+        m_offsets.insert(axis, machinePosition);
+    save();
+    Q_EMIT changed();
+}
+
 void MachineWorkOffsets::clear()
 {
     m_offsets.clear();

@@ -35,6 +35,9 @@ public:
     // say nothing about where the machine is.
     bool zero(const QString& axis, const machine::MachineAxisStatus& status, QString* refusal);
     void clear(); // work origin = machine origin on every axis
+    // Sets the work origin of the axis at this machine position (a machine without a file
+    // taking over a single controller's origins); 0 removes it.
+    void set(const QString& axis, double machinePosition);
 
     double toWork(const QString& axis, double machineUnits) const;
     double toMachine(const QString& axis, double workUnits) const;

@@ -180,13 +180,8 @@ void ProgramPage::useConnectedController()
     if (!model || !m_context->session()->isCreated() || m_context->hasMachine())
         return;
     QString error;
-    const machine::MachineDescription single =
-        machine::MachineDescription::singleController(*model, m_context->portName());
-    if (!m_context->openMachine(single, &error)) {
+    if (!m_context->openConnectedControllerAsMachine(&error))
         m_banner->setStatus(error);
-        return;
-    }
-    m_context->connectMachine(); // the same port, now the machine's controller
 }
 
 std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>* errors) const

@@ -8,7 +8,9 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
+#include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
+#include "machine/MachineWorkOffsets.h"
 #include "position/PositionPanel.h"
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
@@ -21,6 +23,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTextBlock>
@@ -49,6 +52,7 @@ private Q_SLOTS:
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
     void useController_singleController_becomesMachineOfOne();
+    void useController_keepsTheControllersUnitsLimitsAndWorkOrigin();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data();
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
@@ -399,6 +403,44 @@ void TestProgramPage::useController_singleController_becomesMachineOfOne()
                      page()->checkText().startsWith(QStringLiteral("Checked")),
                  qPrintable(page()->checkText()));
     QVERIFY(!page()->useControllerButton()->isVisible());
+}
+
+// Issue 28, item 0 (a first part): the connected controller as a machine keeps what the
+// operator set for it: X's units (400 steps per mm), its soft limits (converted to mm) and its
+// work origin; Y without units stays in steps.
+void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin()
+{
+    window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
+    ui::MachineContext* context = window()->context();
+    ui::AxisUnits units;
+    units.stepsPerUnit = 400;
+    units.unit = QStringLiteral("mm");
+    units.workOffset = 800; // steps: X's work zero at machine 2 mm
+    context->setUnits(Axis::X, units);
+    AxisSoftLimit limit;
+    limit.rangeSet = true;
+    limit.minimum = -400;
+    limit.maximum = 40000;
+    context->setSoftLimit(Axis::X, limit);
+    window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
+    window()->connectionBar()->connectNow();
+    QVERIFY(m_rig.f->waitConnected());
+    QString error;
+    QVERIFY2(context->openConnectedControllerAsMachine(&error), qPrintable(error));
+    const machine::MachineDescription& d = m_rig.machine()->description();
+    const machine::MachineAxis& x = *d.axis(QStringLiteral("X"));
+    QCOMPARE(x.unit, machine::AxisUnit::Millimetre);
+    QCOMPARE(x.stepsPerUnit, 400.0);
+    QCOMPARE(*x.softMinimum, -1.0);
+    QCOMPARE(*x.softMaximum, 100.0);
+    QCOMPARE(d.axis(QStringLiteral("Y"))->unit, machine::AxisUnit::Step);
+    QCOMPARE(context->workOffsets()->offset(QStringLiteral("X")), 2.0);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
+                             10000);
+    // The next tests start without these settings.
+    QSettings settings;
+    settings.remove(QStringLiteral("units"));
+    settings.remove(QStringLiteral("softLimits"));
 }
 
 void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill_data()
