@@ -194,6 +194,26 @@ void MachineContext::forgetKnownParameters()
     Q_EMIT knownParametersChanged();
 }
 
+int MachineContext::referenceDirection(Axis axis) const
+{
+    const QString key = QStringLiteral("reference/%1/%2/direction").arg(modelId(), axisName(axis));
+    return QSettings().value(key, -1).toInt();
+}
+
+int MachineContext::referenceOrder(Axis axis) const
+{
+    const QString key = QStringLiteral("reference/%1/%2/order").arg(modelId(), axisName(axis));
+    return QSettings().value(key, axis == Axis::Z ? 1 : 2).toInt();
+}
+
+void MachineContext::setReference(Axis axis, int direction, int order)
+{
+    const QString key = QStringLiteral("reference/%1/%2/").arg(modelId(), axisName(axis));
+    QSettings settings;
+    settings.setValue(key + QStringLiteral("direction"), direction);
+    settings.setValue(key + QStringLiteral("order"), order);
+}
+
 QString MachineContext::settingsPrefix(Axis axis) const
 {
     return QStringLiteral("units/%1/%2/").arg(modelId(), axisName(axis));

@@ -78,6 +78,13 @@ public:
     // Machine steps for a work position typed in user units (the inverse of toUserUnits).
     qint64 toMachineSteps(Axis axis, double userValue) const;
 
+    // The single controller's referencing settings (the Referencing panel's, per model): the
+    // direction (-1, +1; 0: skip) and the order (lower first; default Z first, then X and Y
+    // together, each towards the negative end where most small machines have their switches).
+    int referenceDirection(Axis axis) const;
+    int referenceOrder(Axis axis) const;
+    void setReference(Axis axis, int direction, int order);
+
     AxisUnits units(Axis axis) const;
     void setUnits(Axis axis, const AxisUnits& units);
     // Machine position in steps -> work position in user units (or steps when none set).

@@ -253,6 +253,12 @@ MachineContext::connectedControllerMachine(QMap<QString, double>* workOffsets) c
     if (model.capabilities.resetLine)
         d.controllers.first().resetLine = spec.options.resetLine;
     for (machine::MachineAxis& a : d.axes) {
+        // The Referencing panel's order and direction (a skipped axis keeps its order: the
+        // machine references every axis it has).
+        a.referenceOrder = referenceOrder(a.axis);
+        const int direction = referenceDirection(a.axis);
+        if (model.capabilities.referenceDirection && (direction == -1 || direction == 1))
+            a.referenceDirection = direction;
         const AxisUnits u = m_units.value(a.axis);
         if (u.stepsPerUnit <= 0)
             continue; // steps, as the controller counts

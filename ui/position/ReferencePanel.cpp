@@ -17,19 +17,6 @@
 
 namespace stepdeck::ui {
 
-namespace {
-// Default: Z first (clear the work piece), then X and Y together, each towards the negative
-// end where most small machines have their home switches. Both are configurable per axis.
-int defaultDirection(Axis)
-{
-    return -1;
-}
-int defaultOrder(Axis axis)
-{
-    return axis == Axis::Z ? 1 : 2;
-}
-} // namespace
-
 ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_runner(new ReferenceRunner(context, this)),
       m_grid(new QGridLayout), m_all(new QPushButton(tr("Reference all"), this)),
@@ -105,13 +92,10 @@ void ReferencePanel::rebuild()
     m_grid->addWidget(new QLabel(tr("Direction"), this), 0, 1);
     m_grid->addWidget(new QLabel(tr("Order"), this), 0, 2);
     m_grid->addWidget(new QLabel(tr("State"), this), 0, 3);
-    const QSettings settings;
     // Some controllers choose the direction of their reference runs themselves (EMIS 9.9).
     const bool directed = m_context->capabilities().referenceDirection;
     int r = 1;
     for (Axis axis : m_context->axes()) {
-        const QString key =
-            QStringLiteral("reference/%1/%2/").arg(m_context->modelId(), axisName(axis));
         Row row;
         row.direction = new QComboBox(this);
         if (directed) {
@@ -123,14 +107,16 @@ void ReferencePanel::rebuild()
                 tr("The controller chooses the direction of its reference run itself"));
         }
         row.direction->addItem(tr("skip"), 0);
-        const int fallback = directed ? defaultDirection(axis) : 1;
-        const int index = row.direction->findData(
-            settings.value(key + QStringLiteral("direction"), fallback).toInt());
-        row.direction->setCurrentIndex(index >= 0 ? index : row.direction->findData(fallback));
+        // The settings (MachineContext::referenceDirection); a model that picks the direction
+        // itself stores 1 for "reference".
+        const int stored = m_context->referenceDirection(axis);
+        const int wanted = directed ? stored : (stored == 0 ? 0 : 1);
+        const int index = row.direction->findData(wanted);
+        row.direction->setCurrentIndex(index >= 0 ? index
+                                                  : row.direction->findData(directed ? -1 : 1));
         row.order = new QSpinBox(this);
         row.order->setRange(1, 4);
-        row.order->setValue(
-            settings.value(key + QStringLiteral("order"), defaultOrder(axis)).toInt());
+        row.order->setValue(m_context->referenceOrder(axis));
         row.order->setToolTip(tr("Axes with the same number are referenced together; lower "
                                  "numbers first"));
         // The lamp alone (its state in the tooltip; the DRO says REFERENCED or UNKNOWN):
@@ -158,14 +144,9 @@ void ReferencePanel::rebuild()
 
 void ReferencePanel::store()
 {
-    QSettings settings;
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
-        const QString key =
-            QStringLiteral("reference/%1/%2/").arg(m_context->modelId(), axisName(it.key()));
-        settings.setValue(key + QStringLiteral("direction"),
-                          it.value().direction->currentData().toInt());
-        settings.setValue(key + QStringLiteral("order"), it.value().order->value());
-    }
+    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
+        m_context->setReference(it.key(), it.value().direction->currentData().toInt(),
+                                it.value().order->value());
 }
 
 QMap<Axis, int> ReferencePanel::directions() const
@@ -243,7 +224,7 @@ void ReferencePanel::referenceAxis(Axis axis)
 {
     int direction = directions().value(axis);
     if (direction == 0)
-        direction = m_context->capabilities().referenceDirection ? defaultDirection(axis) : 1;
+        direction = m_context->capabilities().referenceDirection ? -1 : 1; // the default
     m_runner->start({ReferenceRunner::Stage{{axis, direction}}});
 }
 

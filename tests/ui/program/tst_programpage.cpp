@@ -406,8 +406,9 @@ void TestProgramPage::useController_singleController_becomesMachineOfOne()
 }
 
 // Issue 28, item 0 (a first part): the connected controller as a machine keeps what the
-// operator set for it: X's units (400 steps per mm), its soft limits (converted to mm) and its
-// work origin; Y without units stays in steps.
+// operator set for it: X's units (400 steps per mm), its soft limits (converted to mm), its
+// work origin and the referencing order and direction (issue 31: it dropped them); Y without
+// units stays in steps.
 void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin()
 {
     window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
@@ -422,6 +423,8 @@ void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin(
     limit.minimum = -400;
     limit.maximum = 40000;
     context->setSoftLimit(Axis::X, limit);
+    context->setReference(Axis::X, -1, 3); // the Referencing panel's settings
+    context->setReference(Axis::Z, 1, 1);
     window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
     window()->connectionBar()->connectNow();
     QVERIFY(m_rig.f->waitConnected());
@@ -434,6 +437,10 @@ void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin(
     QCOMPARE(*x.softMinimum, -1.0);
     QCOMPARE(*x.softMaximum, 100.0);
     QCOMPARE(d.axis(QStringLiteral("Y"))->unit, machine::AxisUnit::Step);
+    QCOMPARE(x.referenceOrder, 3);
+    QCOMPARE(x.referenceDirection, -1);
+    QCOMPARE(d.axis(QStringLiteral("Z"))->referenceDirection, 1);
+    QCOMPARE(d.axis(QStringLiteral("Z"))->referenceOrder, 1);
     QCOMPARE(context->workOffsets()->offset(QStringLiteral("X")), 2.0);
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
                              10000);
@@ -441,6 +448,7 @@ void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin(
     QSettings settings;
     settings.remove(QStringLiteral("units"));
     settings.remove(QStringLiteral("softLimits"));
+    settings.remove(QStringLiteral("reference"));
 }
 
 void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill_data()
