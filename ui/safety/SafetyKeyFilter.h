@@ -19,8 +19,8 @@ namespace stepdeck::ui {
 // action, accepts the override (so the action's own shortcut does not fire a second time and
 // the key goes on to the focus widget), and lets Esc continue to close the dialog, popup or
 // editor as usual. F1 is consumed.
-// While a popup (menu, combo box list) has the mouse, a press on a registered STOP/PANIC
-// button triggers its action too: the popup would otherwise swallow that click.
+// While a popup (menu, combo box list) has the mouse, a press on a registered button (the
+// window registers STOP only) triggers its action too: the popup would otherwise swallow it.
 // Dialogs never block the buttons: they are non-modal (see common/Dialogs.h).
 class SafetyKeyFilter : public QObject
 {

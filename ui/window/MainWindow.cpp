@@ -1,4 +1,5 @@
 #include "MainWindow.h"
+#include "PopupClickGuard.h"
 #include "bridge/LaserBridgePage.h"
 #include "charts/ChartsPanel.h"
 #include "common/ConnectionGate.h"
@@ -60,6 +61,8 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
       m_messages(new StatusMessages(this)), m_messageLine(new MessageLine(m_messages, this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    // A click that closes a menu never reaches the window (a mis-click once fired PANIC).
+    qApp->installEventFilter(new PopupClickGuard(this));
     m_jog->addSource(m_keyboard);
     if (!gamepad)
         gamepad = createSystemGamepadDevice(this);
@@ -89,8 +92,10 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     v->setContentsMargins(4, 4, 4, 4);
     m_safety = new SafetyBar(m_context, m_stopAction, m_panicAction, m_referenceAction, central);
     m_jogPanel = new JogPanel(m_context, m_jog, m_keyboard, central);
+    // STOP works with one click even while a menu is open; PANIC does not: the click that
+    // closes a menu must not throw the positions away (issue 31: a mis-click fired PANIC).
+    // F1 panics whatever is open.
     m_safetyKeys->addButton(m_safety->stopButton(), m_stopAction);
-    m_safetyKeys->addButton(m_safety->panicButton(), m_panicAction);
     v->addWidget(m_safety);
     v->addWidget(m_jogPanel, 1);
     setCentralWidget(central);

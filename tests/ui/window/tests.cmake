@@ -17,3 +17,7 @@ stepdeck_add_test(tst_simulatormenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simula
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
                   ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# Issue 31 (safety): the click that closes a menu does not reach the window under it.
+stepdeck_add_test(tst_menuclickthrough SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_menuclickthrough.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
