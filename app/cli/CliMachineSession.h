@@ -84,7 +84,7 @@ private:
     QString m_lostController;
     QString m_lostMessage;
     QHash<QString, QString> m_lostReasons;
-    QString m_jogRefusal; // controller id -> why its link went down
+    QString m_jogRefusal; // the first jog refusal, prefixed with its controller on a machine
     QStringList m_notes;
     ErrorKind m_lastFailure = ErrorKind::None;
 };
