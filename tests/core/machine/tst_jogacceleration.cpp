@@ -28,7 +28,7 @@ MachineDescription table(const QList<MachineAxis>& axes)
     MachineDescription d;
     d.name = QStringLiteral("Table");
     d.controllers = {
-        {QStringLiteral("table"), QStringLiteral("elab"), QStringLiteral("sim"), {}, {}}};
+        {QStringLiteral("table"), QStringLiteral("elab"), QStringLiteral("sim"), {}, {}, {}, {}}};
     d.axes = axes;
     return d;
 }
