@@ -3,8 +3,12 @@ stepdeck_add_test(tst_programlexer SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_program
 stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp LABELS unit)
 # The check against a machine and the preview; the docs' example programs are read from the
 # source tree.
-stepdeck_add_test(tst_programcheck SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheck.cpp LABELS unit)
+stepdeck_add_test(tst_programcheck SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheck.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 target_compile_definitions(tst_programcheck PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# The check's preview and the work coordinates it uses.
+stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpreview.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The runner on a machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
 stepdeck_add_test(tst_programrunner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrunner.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)

@@ -1,7 +1,8 @@
-// The program check (issue 20, docs/programs.md "Check", "Preview"): every error kind at its
-// line and column, positions followed through repeats, G28, rates per model, G20, inputs and
-// outputs over several controllers, runs from a line, the preview's figures and bounds, and
-// the docs' example programs checked clean on their model.
+// The program check (issue 20, docs/programs.md "Check"): every error kind at its line and
+// column, positions followed through repeats, G28, rates per model, G20, inputs and outputs
+// over several controllers, runs from a line, and the docs' example programs checked clean on
+// their model. The preview's figures and the coordinates: tst_programpreview.
+#include "ProgramCheckTestSupport.h"
 #include "machine/Machine.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
@@ -14,114 +15,7 @@ using namespace stepdeck;
 using namespace stepdeck::machine;
 using namespace stepdeck::program;
 
-namespace {
-
-void addController(MachineFacts* facts, const QString& id, const QString& model)
-{
-    const ModelInfo* info = findModel(model);
-    QVERIFY2(info, qPrintable(model));
-    MachineController c;
-    c.id = id;
-    c.modelId = model;
-    c.port = QStringLiteral("sim");
-    facts->description.controllers << c;
-    facts->capabilities.insert(id, info->capabilities);
-    facts->schemas.insert(id, info->schema);
-}
-
-MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
-                 double stepsPerUnit, double min, double max)
-{
-    MachineAxis a;
-    a.name = name;
-    a.controller = controller;
-    a.axis = on;
-    a.unit = unit;
-    a.stepsPerUnit = stepsPerUnit;
-    a.softMinimum = min;
-    a.softMaximum = max;
-    return a;
-}
-
-// The machines of the tests, by name:
-// "mill": E-LAB "table" X Y Z (mm), laser axes "tilt" A (deg);
-// "io": E-LAB "table" X, EMIS "io1" U and "io2" V (7 outputs and 8 inputs each);
-// "mixed": E-LAB "table" X (mm), Nanotec "rotary" A (deg);
-// "noReference": the mill whose "tilt" has no reference run;
-// "emis", "nanotec": one controller in its steps (MachineDescription::singleController).
-MachineFacts machineFacts(const QString& name)
-{
-    MachineFacts f;
-    if (name == QLatin1String("emis") || name == QLatin1String("nanotec")) {
-        const ModelInfo* info = findModel(name);
-        f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
-        f.capabilities.insert(name, info->capabilities);
-        f.schemas.insert(name, info->schema);
-        return f;
-    }
-    if (name == QLatin1String("mixed")) {
-        addController(&f, "table", "elab");
-        addController(&f, "rotary", "nanotec");
-        f.description.axes << axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100)
-                           << axis("A", "rotary", Axis::X, AxisUnit::Degree, 100, -360, 360);
-        return f;
-    }
-    if (name == QLatin1String("io")) {
-        addController(&f, "table", "elab");
-        addController(&f, "io1", "emis");
-        addController(&f, "io2", "emis");
-        f.description.axes << axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100)
-                           << axis("U", "io1", Axis::X, AxisUnit::Step, 1, -1e6, 1e6)
-                           << axis("V", "io2", Axis::X, AxisUnit::Step, 1, -1e6, 1e6);
-        return f;
-    }
-    addController(&f, "table", "elab");
-    addController(&f, "tilt", "laser-axis");
-    MachineAxis x = axis("X", "table", Axis::X, AxisUnit::Millimetre, 100, 0, 100);
-    x.maxJogSpeed = 50; // mm/s; Y and Z go at the E-LAB's 5000 steps/s
-    f.description.axes << x << axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 200, 0, 200)
-                       << axis("Z", "table", Axis::Z, AxisUnit::Millimetre, 100, -50, 0)
-                       << axis("A", "tilt", Axis::X, AxisUnit::Degree, 10, -90, 90);
-    if (name == QLatin1String("noReference"))
-        f.capabilities["tilt"].motionModes.removeAll(MotionMode::Reference);
-    return f;
-}
-
-// "X=0 Y=5": the known positions.
-QMap<QString, double> positions(const QString& text)
-{
-    QMap<QString, double> out;
-    for (const QString& pair : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-        const QStringList kv = pair.split(QLatin1Char('='));
-        out.insert(kv.at(0), kv.at(1).toDouble());
-    }
-    return out;
-}
-
-Program parsed(const QString& text, const MachineFacts& facts)
-{
-    QStringList names;
-    for (const MachineAxis& a : facts.description.axes)
-        names << a.name;
-    QList<ProgramError> errors;
-    const std::optional<Program> p = ProgramParser::parse(text.toUtf8(), names, &errors);
-    if (!p) {
-        for (const ProgramError& e : errors)
-            qWarning() << e.text();
-        return {};
-    }
-    return *p;
-}
-
-QStringList texts(const QList<ProgramError>& errors)
-{
-    QStringList out;
-    for (const ProgramError& e : errors)
-        out << e.text();
-    return out;
-}
-
-} // namespace
+using namespace stepdeck::program::checktest;
 
 class TestProgramCheck : public QObject
 {
@@ -131,8 +25,6 @@ private Q_SLOTS:
     void check_errors_lineColumnAndMessage();
     void check_fromLine_startOrRefusal_data();
     void check_fromLine_startOrRefusal();
-    void preview_figures_extentsPathAndEstimatedSeconds();
-    void preview_millionPassRepeat_countedOutPathBounded();
     void check_axisTheMachineLacks_named();
     void check_nestedEmptyRepeats_endQuickly();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
@@ -141,8 +33,6 @@ private Q_SLOTS:
     void machineIo_numberedOverTheControllers();
     void examples_eachChecksCleanOnItsModel();
     void factsOf_machineReferencedX_onlyXKnownAtZero();
-    void check_workOffsets_targetsInWorkLimitsInMachine_data();
-    void check_workOffsets_targetsInWorkLimitsInMachine();
 };
 
 void TestProgramCheck::check_errors_lineColumnAndMessage_data()
@@ -407,61 +297,6 @@ void TestProgramCheck::check_fromLine_startOrRefusal()
         QCOMPARE(result.preview.blocksRun, blocksRun);
 }
 
-void TestProgramCheck::preview_figures_extentsPathAndEstimatedSeconds()
-{
-    MachineFacts facts = machineFacts("mill");
-    facts.knownPositions = positions("Z=-10");
-    const Program p = parsed("G28 X0 Y0\n"   // no time known
-                             "G0 X50 Y50\n"  // X 50 mm at 50 mm/s, Y at 5000/200 = 25 mm/s: 2 s
-                             "G1 X60 F600\n" // 10 mm at 10 mm/s: 1 s
-                             "G0\n"          // only the motion mode: no point, no time
-                             "G4 P2\n"       // 2 s
-                             "G91 G0 Y-10\n" // 10 mm at 25 mm/s: 0.4 s
-                             "M30\n",
-                             facts);
-    const ProgramCheckResult result = ProgramCheck::check(p, facts);
-    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
-    const ProgramPreview& v = result.preview;
-    QCOMPARE(v.lines, 7);
-    QCOMPARE(v.blocksRun, qint64(7));
-    QCOMPARE(v.estimatedSeconds, 5.4);
-    QCOMPARE(v.extents.keys(), (QStringList{"X", "Y", "Z"})); // A never known
-    QCOMPARE(v.extents["X"].minimum, 0.0);
-    QCOMPARE(v.extents["X"].maximum, 60.0);
-    QVERIFY(v.extents["X"].moved);
-    QCOMPARE(v.extents["Y"].minimum, 0.0);
-    QCOMPARE(v.extents["Y"].maximum, 50.0);
-    QCOMPARE(v.extents["Z"].minimum, -10.0);
-    QCOMPARE(v.extents["Z"].maximum, -10.0);
-    QVERIFY(!v.extents["Z"].moved);
-    QCOMPARE(v.path.size(), 6); // the start, G28, G0, G1, G4, G0
-    QVERIFY(!v.pathTruncated);
-    QCOMPARE(v.path.first().line, 0);
-    QCOMPARE(v.path.first().position, (QMap<QString, double>{{"Z", -10}}));
-    QCOMPARE(v.path.at(2).line, 2);
-    QCOMPARE(v.path.at(2).seconds, 2.0);
-    QCOMPARE(v.path.at(2).position, (QMap<QString, double>{{"X", 50}, {"Y", 50}, {"Z", -10}}));
-    QCOMPARE(v.path.last().line, 6);
-    QCOMPARE(v.path.last().seconds, 5.4);
-    QCOMPARE(v.path.last().position, (QMap<QString, double>{{"X", 60}, {"Y", 40}, {"Z", -10}}));
-    QVERIFY(v.motionNote.contains("each at its own rate"));
-}
-
-void TestProgramCheck::preview_millionPassRepeat_countedOutPathBounded()
-{
-    const MachineFacts facts = machineFacts("mill");
-    const Program p =
-        parsed("G28 X0\nG91\nO1 repeat [1000000]\n  G0 X1\n  G0 X-1\nO1 endrepeat", facts);
-    const ProgramCheckResult result = ProgramCheck::check(p, facts);
-    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
-    QCOMPARE(result.preview.blocksRun, qint64(2 + 2000000));
-    QCOMPARE(result.preview.path.size(), ProgramPreview::kMaxPathPoints);
-    QVERIFY(result.preview.pathTruncated);
-    // 1 mm at 50 mm/s each, summed two million times.
-    QVERIFY(qAbs(result.preview.estimatedSeconds - 2000000 * 1.0 / 50) < 1e-3);
-    QCOMPARE(result.preview.extents["X"].maximum, 1.0);
-}
-
 // A program parsed for other axes than the machine checked against (the machine file changed
 // between reading and running).
 void TestProgramCheck::check_axisTheMachineLacks_named()
@@ -613,51 +448,6 @@ void TestProgramCheck::factsOf_machineReferencedX_onlyXKnownAtZero()
     // A reference run ends at 0 (docs/programs.md "Check"): what the check assumes after G28.
     QCOMPARE(after.knownPositions, (QMap<QString, double>{{"X", 0.0}}));
     machine.destroy();
-}
-
-// Issue 28, item 3: absolute targets are work coordinates (machine = work + offset), the soft
-// limits machine coordinates; the preview's path and extents are work coordinates.
-void TestProgramCheck::check_workOffsets_targetsInWorkLimitsInMachine_data()
-{
-    QTest::addColumn<QString>("program");
-    QTest::addColumn<QStringList>("errors");
-    QTest::addColumn<double>("xFrom"); // the preview's X extent, work coordinates
-    QTest::addColumn<double>("xTo");
-    // X zeroed at machine 30 (soft limits 0..100 machine = -30..70 work).
-    QTest::newRow("work 0 is machine 30") << "G90 G0 X0\n" << QStringList{} << -10.0 << 0.0;
-    QTest::newRow("work 70 is the machine's maximum") << "G90 G0 X70\n"
-                                                      << QStringList{} << -10.0 << 70.0;
-    QTest::newRow("work 80 is machine 110, beyond the limit")
-        << "G90 G0 X80\n"
-        << QStringList{"1:8: X reaches 80 mm in work coordinates, 110 mm in machine coordinates: "
-                       "outside the soft limits 0..100 mm (machine)"}
-        << 0.0 << 0.0;
-    QTest::newRow("work -25 is machine 5, inside although below work 0")
-        << "G90 G0 X-25\n"
-        << QStringList{} << -25.0 << -10.0;
-    QTest::newRow("relative moves are not offset") << "G91 G0 X5\n"
-                                                   << QStringList{} << -10.0 << -5.0;
-    QTest::newRow("after G28 the machine is at 0, work -30") << "G28 X0\nG91 G0 X1\n"
-                                                             << QStringList{} << -30.0 << -10.0;
-}
-
-void TestProgramCheck::check_workOffsets_targetsInWorkLimitsInMachine()
-{
-    QFETCH(QString, program);
-    QFETCH(QStringList, errors);
-    QFETCH(double, xFrom);
-    QFETCH(double, xTo);
-    MachineFacts facts = machineFacts("mill");
-    facts.knownPositions = positions("X=20"); // machine 20 = work -10
-    facts.workOffsets = {{QStringLiteral("X"), 30.0}};
-    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
-    QCOMPARE(texts(result.errors), errors);
-    if (!errors.isEmpty())
-        return;
-    QCOMPARE(result.preview.workOffsets, facts.workOffsets);
-    QCOMPARE(result.preview.extents["X"].minimum, xFrom);
-    QCOMPARE(result.preview.extents["X"].maximum, xTo);
-    QCOMPARE(result.preview.path.first().position.value("X"), -10.0);
 }
 
 QTEST_GUILESS_MAIN(TestProgramCheck)

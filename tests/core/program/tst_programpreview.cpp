@@ -1,0 +1,122 @@
+// The check's preview (issue 20, docs/programs.md "Preview", "Coordinates"): its figures
+// (extents, path, estimated time), its bounds over a million-pass repeat, and the work
+// coordinates it and the check use (issue 28, item 3).
+#include "ProgramCheckTestSupport.h"
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::program;
+using namespace stepdeck::program::checktest;
+
+class TestProgramPreview : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void preview_figures_extentsPathAndEstimatedSeconds();
+    void preview_millionPassRepeat_countedOutPathBounded();
+    void check_workOffsets_targetsInWorkLimitsInMachine_data();
+    void check_workOffsets_targetsInWorkLimitsInMachine();
+};
+
+void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
+{
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("Z=-10");
+    const Program p = parsed("G28 X0 Y0\n"   // no time known
+                             "G0 X50 Y50\n"  // X 50 mm at 50 mm/s, Y at 5000/200 = 25 mm/s: 2 s
+                             "G1 X60 F600\n" // 10 mm at 10 mm/s: 1 s
+                             "G0\n"          // only the motion mode: no point, no time
+                             "G4 P2\n"       // 2 s
+                             "G91 G0 Y-10\n" // 10 mm at 25 mm/s: 0.4 s
+                             "M30\n",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const ProgramPreview& v = result.preview;
+    QCOMPARE(v.lines, 7);
+    QCOMPARE(v.blocksRun, qint64(7));
+    QCOMPARE(v.estimatedSeconds, 5.4);
+    QCOMPARE(v.extents.keys(), (QStringList{"X", "Y", "Z"})); // A never known
+    QCOMPARE(v.extents["X"].minimum, 0.0);
+    QCOMPARE(v.extents["X"].maximum, 60.0);
+    QVERIFY(v.extents["X"].moved);
+    QCOMPARE(v.extents["Y"].minimum, 0.0);
+    QCOMPARE(v.extents["Y"].maximum, 50.0);
+    QCOMPARE(v.extents["Z"].minimum, -10.0);
+    QCOMPARE(v.extents["Z"].maximum, -10.0);
+    QVERIFY(!v.extents["Z"].moved);
+    QCOMPARE(v.path.size(), 6); // the start, G28, G0, G1, G4, G0
+    QVERIFY(!v.pathTruncated);
+    QCOMPARE(v.path.first().line, 0);
+    QCOMPARE(v.path.first().position, (QMap<QString, double>{{"Z", -10}}));
+    QCOMPARE(v.path.at(2).line, 2);
+    QCOMPARE(v.path.at(2).seconds, 2.0);
+    QCOMPARE(v.path.at(2).position, (QMap<QString, double>{{"X", 50}, {"Y", 50}, {"Z", -10}}));
+    QCOMPARE(v.path.last().line, 6);
+    QCOMPARE(v.path.last().seconds, 5.4);
+    QCOMPARE(v.path.last().position, (QMap<QString, double>{{"X", 60}, {"Y", 40}, {"Z", -10}}));
+    QVERIFY(v.motionNote.contains("each at its own rate"));
+}
+
+void TestProgramPreview::preview_millionPassRepeat_countedOutPathBounded()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p =
+        parsed("G28 X0\nG91\nO1 repeat [1000000]\n  G0 X1\n  G0 X-1\nO1 endrepeat", facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    QCOMPARE(result.preview.blocksRun, qint64(2 + 2000000));
+    QCOMPARE(result.preview.path.size(), ProgramPreview::kMaxPathPoints);
+    QVERIFY(result.preview.pathTruncated);
+    // 1 mm at 50 mm/s each, summed two million times.
+    QVERIFY(qAbs(result.preview.estimatedSeconds - 2000000 * 1.0 / 50) < 1e-3);
+    QCOMPARE(result.preview.extents["X"].maximum, 1.0);
+}
+
+// Issue 28, item 3: absolute targets are work coordinates (machine = work + offset), the soft
+// limits machine coordinates; the preview's path and extents are work coordinates.
+void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("xFrom"); // the preview's X extent, work coordinates
+    QTest::addColumn<double>("xTo");
+    // X zeroed at machine 30 (soft limits 0..100 machine = -30..70 work).
+    QTest::newRow("work 0 is machine 30") << "G90 G0 X0\n" << QStringList{} << -10.0 << 0.0;
+    QTest::newRow("work 70 is the machine's maximum") << "G90 G0 X70\n"
+                                                      << QStringList{} << -10.0 << 70.0;
+    QTest::newRow("work 80 is machine 110, beyond the limit")
+        << "G90 G0 X80\n"
+        << QStringList{"1:8: X reaches 80 mm in work coordinates, 110 mm in machine coordinates: "
+                       "outside the soft limits 0..100 mm (machine)"}
+        << 0.0 << 0.0;
+    QTest::newRow("work -25 is machine 5, inside although below work 0")
+        << "G90 G0 X-25\n"
+        << QStringList{} << -25.0 << -10.0;
+    QTest::newRow("relative moves are not offset") << "G91 G0 X5\n"
+                                                   << QStringList{} << -10.0 << -5.0;
+    QTest::newRow("after G28 the machine is at 0, work -30") << "G28 X0\nG91 G0 X1\n"
+                                                             << QStringList{} << -30.0 << -10.0;
+}
+
+void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, xFrom);
+    QFETCH(double, xTo);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("X=20"); // machine 20 = work -10
+    facts.workOffsets = {{QStringLiteral("X"), 30.0}};
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    if (!errors.isEmpty())
+        return;
+    QCOMPARE(result.preview.workOffsets, facts.workOffsets);
+    QCOMPARE(result.preview.extents["X"].minimum, xFrom);
+    QCOMPARE(result.preview.extents["X"].maximum, xTo);
+    QCOMPARE(result.preview.path.first().position.value("X"), -10.0);
+}
+
+QTEST_GUILESS_MAIN(TestProgramPreview)
+#include "tst_programpreview.moc"
