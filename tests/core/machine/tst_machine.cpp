@@ -2,7 +2,7 @@
 // pseudo-terminals against the project's simulators (issue 19). Every assertion that matters
 // is made at the devices: the moves they accepted, the frames they received, whether they
 // stand still.
-#include "ModelBench.h"
+#include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "machine/MachineSetup.h"
@@ -23,18 +23,6 @@ using namespace stepdeck::machine;
 namespace {
 
 using Device = test::PtyDevice;
-
-MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
-                 double stepsPerUnit)
-{
-    MachineAxis a;
-    a.name = name;
-    a.controller = controller;
-    a.axis = on;
-    a.unit = unit;
-    a.stepsPerUnit = stepsPerUnit;
-    return a;
-}
 
 qint64 acceptedSteps(Device& d, Axis axis)
 {
@@ -130,14 +118,19 @@ MachineDescription TestMachine::description() const
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
     MachineController table{
-        QStringLiteral("table"), QStringLiteral("elab"), m_elab->path(), {}, {}};
-    MachineController rotary{
-        QStringLiteral("rotary"), QStringLiteral("nanotec"), m_nanotec->path(), {{Axis::X, 1}}, {}};
+        QStringLiteral("table"), QStringLiteral("elab"), m_elab->path(), {}, {}, {}, {}};
+    MachineController rotary{QStringLiteral("rotary"),
+                             QStringLiteral("nanotec"),
+                             m_nanotec->path(),
+                             {{Axis::X, 1}},
+                             {},
+                             {},
+                             {}};
     d.controllers = {table, rotary};
-    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
-              axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
-              axis("Z", "table", Axis::Z, AxisUnit::Millimetre, 800),
-              axis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
+              test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, 800),
+              test::machineAxis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
     return d;
 }
 
@@ -166,16 +159,7 @@ void TestMachine::cleanup()
 // The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
 void TestMachine::writeElabSetup()
 {
-    ControllerSession* table = m_machine->session("table");
-    const ParameterSet set = test::setupBeforeMotionDefaults(*table->model());
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    const RequestId id = table->writeParameters(set, false);
-    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
-                                         [id](const QList<QVariant>& args) {
-                                             const auto r = args.at(0).value<CommandResult>();
-                                             return r.id == id && r.ok();
-                                         }),
-                             10000);
+    QVERIFY(test::writeSetupBeforeMotion(m_machine->session("table")));
 }
 
 void TestMachine::move_xAndA_eachControllerGetsItsStepsAndPositionsReadBackInUnits()
@@ -315,10 +299,10 @@ void TestMachine::jog_laserAxisByTargets_withElab_oneInputEndsBoth()
     });
     MachineDescription d;
     d.name = QStringLiteral("Table and marker");
-    d.controllers = {{"table", "elab", m_elab->path(), {}, {}},
-                     {"marker", "laser-axis", laser.path(), {}, {}}};
-    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
-              axis("U", "marker", Axis::X, AxisUnit::Step, 1)};
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}},
+                     {"marker", "laser-axis", laser.path(), {}, {}, {}, {}}};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              test::machineAxis("U", "marker", Axis::X, AxisUnit::Step, 1)};
     m_machine = std::make_unique<Machine>();
     QString error;
     QVERIFY2(m_machine->create(d, &error), qPrintable(error));

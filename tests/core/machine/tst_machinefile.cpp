@@ -67,6 +67,12 @@ QByteArray withEdit(const QString& path, const QJsonValue& value, bool remove = 
     return bytes(edited(tableAndRotary(), path.split('.'), value, remove).toObject());
 }
 
+bool writeFile(const QString& path, const QByteArray& content)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+}
+
 } // namespace
 
 class TestMachineFile : public QObject
@@ -389,16 +395,11 @@ void TestMachineFile::load_setupFile_readRelativeToTheMachineFileAndKept()
 {
     QTemporaryDir dir;
     QVERIFY(QDir(dir.path()).mkpath("setups"));
-    QFile setup(dir.filePath("setups/table.json"));
-    QVERIFY(setup.open(QIODevice::WriteOnly));
-    setup.write(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
-                   "parameters": {"start-speed": {"X": 150, "Y": 120, "Z": 100}}})");
-    setup.close();
+    QVERIFY(writeFile(dir.filePath("setups/table.json"),
+                      R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+                   "parameters": {"start-speed": {"X": 150, "Y": 120, "Z": 100}}})"));
     const QString path = dir.filePath("machine.json");
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(withEdit("controllers.0.setup", QStringLiteral("setups/table.json")));
-    file.close();
+    QVERIFY(writeFile(path, withEdit("controllers.0.setup", QStringLiteral("setups/table.json"))));
     MachineFileError error;
     const std::optional<MachineDescription> m = MachineFile::load(path, &error);
     QVERIFY2(m, qPrintable(error.text()));
@@ -443,16 +444,10 @@ void TestMachineFile::load_setupFile_invalid_namesTheField()
     QFETCH(QByteArray, setup);
     QFETCH(QString, contains);
     QTemporaryDir dir;
-    if (!setup.isEmpty()) {
-        QFile f(dir.filePath("table.json"));
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(setup);
-    }
+    if (!setup.isEmpty())
+        QVERIFY(writeFile(dir.filePath("table.json"), setup));
     const QString path = dir.filePath("machine.json");
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(withEdit("controllers.0.setup", QStringLiteral("table.json")));
-    file.close();
+    QVERIFY(writeFile(path, withEdit("controllers.0.setup", QStringLiteral("table.json"))));
     MachineFileError error;
     QVERIFY(!MachineFile::load(path, &error));
     QCOMPARE(error.field, QStringLiteral("controllers[0].setup"));

@@ -5,7 +5,7 @@
 // move lands where the device counts the target (its count at the reference + the target) --
 // or, where the device cannot vouch for the position (a Nanotec drive stopped above its start
 // frequency: 'S' has no ramp, 6.2), that the position is unknown and the move refused.
-#include "ModelBench.h"
+#include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "protocols/nanotec/NanotecSimulator.h"
@@ -71,15 +71,8 @@ void TestMachineStop::stop_midMove_absoluteMoveLandsWhereTheDeviceSays()
     m.open();
     QTRY_COMPARE_WITH_TIMEOUT(m.state(), MachineState::Idle, 10000);
     ControllerSession* s = m.session(m.description().controllers.first().id);
-    if (!info->setupBeforeMotion.isEmpty()) {
-        QSignalSpy done(s, &ControllerSession::requestFinished);
-        const RequestId id = s->writeParameters(test::setupBeforeMotionDefaults(*info), false);
-        QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
-                                             [id](const QList<QVariant>& args) {
-                                                 return args.at(0).value<CommandResult>().id == id;
-                                             }),
-                                 10000);
-    }
+    if (!info->setupBeforeMotion.isEmpty())
+        QVERIFY(test::writeSetupBeforeMotion(s));
     const MachineAxis& x = *m.description().axis(QStringLiteral("X"));
     if (m.axisStatus(x).known != PositionKnowledge::Referenced) {
         QSignalSpy referenced(&m, &Machine::referenceFinished);

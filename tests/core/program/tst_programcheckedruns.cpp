@@ -6,7 +6,7 @@
 // Every program the check passes must run to its end: a rule refusal mid-run (after the machine
 // moved) fails the test, naming the program. Both sides must occur (some programs refused by
 // the check, some run), so the table exercises the rules rather than passing vacuously.
-#include "ModelBench.h"
+#include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
@@ -25,18 +25,6 @@ namespace {
 
 constexpr int kPrograms = 30;
 constexpr int kBlocks = 6;
-
-MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
-                 double stepsPerUnit)
-{
-    MachineAxis a;
-    a.name = name;
-    a.controller = controller;
-    a.axis = on;
-    a.unit = unit;
-    a.stepsPerUnit = stepsPerUnit;
-    return a;
-}
 
 // A relative program from seed: the carriage stays within a few mm (and degrees) of where it
 // starts, far from every simulated switch (docs/machines.md, "Simulated machines").
@@ -115,11 +103,11 @@ void TestProgramCheckedRuns::initTestCase()
     m_nanotec = std::make_unique<test::PtyDevice>("nanotec");
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
-    d.controllers = {{"table", "elab", m_elab->path(), {}, {}},
-                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}}};
-    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 40),
-              axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 40),
-              axis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}},
+                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}, {}, {}}};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 40),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, 40),
+              test::machineAxis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
     m_machine = std::make_unique<Machine>();
     QString error;
     QVERIFY2(m_machine->create(d, &error), qPrintable(error));
@@ -127,16 +115,7 @@ void TestProgramCheckedRuns::initTestCase()
     QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
     // The board moves only after its ramp setup was written; what was written is what the
     // check's rules judge by (MachineStatus::knownParameters).
-    ControllerSession* table = m_machine->session("table");
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    const RequestId id =
-        table->writeParameters(test::setupBeforeMotionDefaults(*table->model()), false);
-    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
-                                         [id](const QList<QVariant>& args) {
-                                             const auto r = args.at(0).value<CommandResult>();
-                                             return r.id == id && r.ok();
-                                         }),
-                             10000);
+    QVERIFY(test::writeSetupBeforeMotion(m_machine->session("table")));
 }
 
 void TestProgramCheckedRuns::cleanupTestCase()

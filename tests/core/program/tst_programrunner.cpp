@@ -2,7 +2,7 @@
 // Nanotec rotary axis (A in degrees), each simulator on a real pseudo-terminal. What matters
 // is asserted at the devices: the moves they accepted and in which order, the frames they
 // received, whether they stand still.
-#include "ModelBench.h"
+#include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
@@ -20,18 +20,6 @@ using namespace stepdeck::program;
 namespace {
 
 using Device = test::PtyDevice;
-
-MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,
-                 double stepsPerUnit)
-{
-    MachineAxis a;
-    a.name = name;
-    a.controller = controller;
-    a.axis = on;
-    a.unit = unit;
-    a.stepsPerUnit = stepsPerUnit;
-    return a;
-}
 
 QList<qint64> acceptedSteps(Device& d, Axis axis)
 {
@@ -107,11 +95,11 @@ MachineDescription TestProgramRunner::description() const
 {
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
-    d.controllers = {{"table", "elab", m_elab->path(), {}, {}},
-                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}}};
-    d.axes = {axis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
-              axis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
-              axis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}},
+                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}, {}, {}}};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
+              test::machineAxis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};
     return d;
 }
 
@@ -139,16 +127,7 @@ void TestProgramRunner::cleanup()
 // The board moves only after its ramp setup was written (ModelInfo::setupBeforeMotion).
 void TestProgramRunner::writeElabSetup()
 {
-    ControllerSession* table = m_machine->session("table");
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    const RequestId id =
-        table->writeParameters(test::setupBeforeMotionDefaults(*table->model()), false);
-    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(done.cbegin(), done.cend(),
-                                         [id](const QList<QVariant>& args) {
-                                             const auto r = args.at(0).value<CommandResult>();
-                                             return r.id == id && r.ok();
-                                         }),
-                             10000);
+    QVERIFY(test::writeSetupBeforeMotion(m_machine->session("table")));
 }
 
 bool TestProgramRunner::run(const QByteArray& text, int fromLine, bool stepOnly)
