@@ -1,4 +1,5 @@
 #include "GuiIdle.h"
+#include "BenchOutput.h"
 #include "protocols/Registry.h"
 #include <QDir>
 #include <QElapsedTimer>
@@ -25,13 +26,6 @@ struct Options
     QString platform; // "xvfb" or "offscreen"; empty: xvfb when installed
     bool json = false;
 };
-
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
-}
 
 bool parse(const QStringList& args, Options* o, QString* error)
 {

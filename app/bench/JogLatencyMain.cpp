@@ -1,4 +1,5 @@
 // stepdeck-bench --jog-latency: arguments, output and the default run's child (JogLatency.h).
+#include "BenchOutput.h"
 #include "JogLatency.h"
 #include "controller/ControllerOptions.h"
 #include "model/ModelInfo.h"
@@ -16,19 +17,6 @@
 namespace stepdeck::bench {
 
 namespace {
-
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
-}
-
-void quiet(QtMsgType type, const QMessageLogContext&, const QString& message)
-{
-    if (type == QtFatalMsg || type == QtCriticalMsg)
-        print(stderr, message);
-}
 
 struct Options
 {

@@ -1,5 +1,6 @@
 #include "ProgramBench.h"
 #include "BenchDevice.h"
+#include "BenchOutput.h"
 #include "EventWait.h"
 #include "Measurements.h"
 #include "machine/Machine.h"
@@ -217,13 +218,6 @@ ProgramFigure measure(const ModelInfo& model)
     }
     m.destroy();
     return f;
-}
-
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
 }
 
 QJsonValue rounded(const std::optional<double>& v)

@@ -2,6 +2,7 @@
 // its own (--soak-child), so a crash of the stack under test is counted, not fatal, and a
 // run that stops making progress is killed and counted as a hang.
 #include "SoakMain.h"
+#include "BenchOutput.h"
 #include "MachineSoak.h"
 #include "Replug.h"
 #include "Soak.h"
@@ -26,13 +27,6 @@ struct Options
     bool child = false;
     bool machine = false; // --soak N --machine: one machine of an E-LAB and a Nanotec
 };
-
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
-}
 
 // Returns false with *error on a malformed value; unknown arguments are left to main.cpp.
 bool parse(const QStringList& args, Options* o, QString* error)

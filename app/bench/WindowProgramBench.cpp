@@ -1,6 +1,7 @@
 // stepdeck-bench --window-program (WindowProgramBench.h).
 #include "WindowProgramBench.h"
 #include "BenchDevice.h"
+#include "BenchOutput.h"
 #include "EventWait.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -26,19 +27,6 @@
 namespace stepdeck::bench {
 
 namespace {
-
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
-}
-
-void quiet(QtMsgType type, const QMessageLogContext&, const QString& message)
-{
-    if (type == QtFatalMsg || type == QtCriticalMsg)
-        print(stderr, message);
-}
 
 // CPU seconds (user + system) of this thread (RUSAGE_THREAD) or the process (RUSAGE_SELF).
 double cpuSeconds(int who)

@@ -1,4 +1,5 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
+#include "BenchOutput.h"
 #include "BenchUsage.h"
 #include "BusyLoad.h"
 #include "GuiIdle.h"
@@ -21,12 +22,6 @@ using namespace stepdeck;
 using namespace stepdeck::bench;
 
 namespace {
-void print(FILE* stream, const QString& text)
-{
-    const QByteArray bytes = text.toUtf8() + '\n';
-    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stream);
-    std::fflush(stream);
-}
 
 QJsonValue json(const std::optional<double>& value, int decimals)
 {
@@ -42,12 +37,6 @@ QString text(const std::optional<double>& value, int decimals, const QString& un
     if (!value)
         return QStringLiteral("n/a (%1)").arg(note);
     return QStringLiteral("%1 %2").arg(*value, 0, 'f', decimals).arg(unit);
-}
-
-void quiet(QtMsgType type, const QMessageLogContext&, const QString& message)
-{
-    if (type == QtFatalMsg || type == QtCriticalMsg)
-        print(stderr, message);
 }
 
 struct Results
