@@ -4774,100 +4774,14 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::GoToWidget</name>
-        <message>
-            <source>Go to position</source>
-            <translation>Position anfahren</translation>
-        </message>
-        <message>
-            <source>Go</source>
-            <translation>Anfahren</translation>
-        </message>
-        <message>
-            <source>Go to work zero</source>
-            <translation>Werkstücknullpunkt anfahren</translation>
-        </message>
-        <message>
-            <source>Move the axes with a value to that work position (all at once)</source>
-            <translation>Die Achsen mit einem Wert auf diese Werkstückposition fahren (gleichzeitig)</translation>
-        </message>
-        <message>
-            <source>Move every axis to its work zero (all at once)</source>
-            <translation>Alle Achsen auf ihren Werkstücknullpunkt fahren (gleichzeitig)</translation>
-        </message>
-        <message>
-            <source>Work position of %1 in %2; empty: %1 stays</source>
-            <translation>Werkstückposition von %1 in %2; leer: %1 bleibt stehen</translation>
-        </message>
-        <message>
-            <source>%1: '%2' is not a number</source>
-            <translation>%1: „%2“ ist keine Zahl</translation>
-        </message>
-        <message>
-            <source>Enter a position for at least one axis.</source>
-            <translation>Geben Sie für mindestens eine Achse eine Position ein.</translation>
-        </message>
-        <message>
-            <source>work zero</source>
-            <translation>Werkstücknullpunkt</translation>
-        </message>
-        <message>
-            <source>Moving to %1…</source>
-            <translation>Fahre nach %1…</translation>
-        </message>
-        <message>
-            <source>Not moved: %1</source>
-            <translation>Nicht gefahren: %1</translation>
-        </message>
-        <message>
-            <source>Move accepted by the controller.</source>
-            <translation>Fahrt von der Steuerung angenommen.</translation>
-        </message>
-        <message>
-            <source>Not connected.</source>
-            <translation>Nicht verbunden.</translation>
-        </message>
-        <message>
-            <source>Reference the machine to go to a position (axis %1 is not referenced).</source>
-            <translation>Zum Anfahren einer Position die Maschine referenzieren (Achse %1 ist nicht referenziert).</translation>
-        </message>
-        <message>
-            <source>The machine is moving: go to a position once it stands still.</source>
-            <translation>Die Maschine bewegt sich: eine Position erst anfahren, wenn sie stillsteht.</translation>
-        </message>
-        <message>
-            <source>Target reached: the controller reported the arrival.</source>
-            <translation>Ziel erreicht: Die Steuerung hat die Ankunft gemeldet.</translation>
-        </message>
-        <message>
-            <source>The move has ended: the controller reports the axes at standstill.</source>
-            <translation>Die Fahrt ist beendet: Die Steuerung meldet die Achsen im Stillstand.</translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>
         <message>
             <source>Incremental jog</source>
             <translation>Schrittweises Verfahren</translation>
         </message>
-        <message numerus="yes">
-            <source>%n step(s)</source>
-            <translation>
-                <numerusform>%n Schritt</numerusform>
-                <numerusform>%n Schritte</numerusform>
-            </translation>
-        </message>
         <message>
             <source>Custom</source>
             <translation>Eigener Wert</translation>
-        </message>
-        <message>
-            <source> steps</source>
-            <translation> Schritte</translation>
-        </message>
-        <message>
-            <source>Steps per click of a +/- button</source>
-            <translation>Schritte pro Klick auf eine +/−-Taste</translation>
         </message>
         <message>
             <source>Step:</source>
@@ -5018,6 +4932,10 @@ W1500</translation>
             <source>Jog refused: emergency stop is active</source>
             <translation>Tippbetrieb abgelehnt: Not-Aus ist aktiv</translation>
         </message>
+        <message>
+            <source>Jog refused: no machine</source>
+            <translation>Tippbetrieb abgelehnt: keine Maschine</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::JogPanel</name>
@@ -5127,10 +5045,6 @@ W1500</translation>
         <message>
             <source>Keyboard speed:</source>
             <translation>Tastaturgeschwindigkeit:</translation>
-        </message>
-        <message>
-            <source> steps/s</source>
-            <translation> Schritte/s</translation>
         </message>
         <message>
             <source>Jog speed of axis %1 at full deflection and 100 % override</source>
@@ -5572,16 +5486,32 @@ W1500</translation>
             <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
         </message>
         <message>
-            <source>machine %1 %2, %3 axis %4: %5 steps</source>
-            <translation>Maschine %1 %2, %3 Achse %4: %5 Schritte</translation>
-        </message>
-        <message>
             <source>Work origin of %1 set at machine %2 %3.</source>
             <translation>Werkstück-Nullpunkt von %1 auf Maschine %2 %3 gesetzt.</translation>
         </message>
         <message>
             <source>Work offsets cleared: machine positions are shown.</source>
             <translation>Werkstück-Nullpunkte gelöscht: Maschinenpositionen werden angezeigt.</translation>
+        </message>
+        <message>
+            <source>moving to %1 %2 (machine %3 %4)</source>
+            <translation>fährt nach %1 %2 (Maschine %3 %4)</translation>
+        </message>
+        <message>
+            <source>Estimated from the ramp parameters; the controller reports no position during a move. The target is shown below.</source>
+            <translation>Aus den Rampenparametern geschätzt; die Steuerung meldet während einer Fahrt keine Position. Das Ziel steht darunter.</translation>
+        </message>
+        <message>
+            <source>The controller reports no position during a move and the ramp parameters are not known in this session: the target is shown (→), not where the axis is now.</source>
+            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt: angezeigt wird das Ziel (→), nicht wo die Achse jetzt ist.</translation>
+        </message>
+        <message>
+            <source>machine %1 %2 (%3 %4)</source>
+            <translation>Maschine %1 %2 (%3 %4)</translation>
+        </message>
+        <message>
+            <source>machine %1 %2, %3 axis %4: %5 %6</source>
+            <translation>Maschine %1 %2, %3 Achse %4: %5 %6</translation>
         </message>
     </context>
     <context>
@@ -5764,6 +5694,22 @@ W1500</translation>
             <source>Moving %1 to %2 (work; machine %3)…</source>
             <translation>%1 fährt nach %2 (Werkstück; Maschine %3)…</translation>
         </message>
+        <message>
+            <source>Go-to refused: the last go-to is still moving.</source>
+            <translation>Anfahren abgelehnt: die letzte Anfahrt läuft noch.</translation>
+        </message>
+        <message>
+            <source>%1 stands: reading its position…</source>
+            <translation>%1 steht: Position wird gelesen…</translation>
+        </message>
+        <message>
+            <source>%1 stands; its position could not be read.</source>
+            <translation>%1 steht; die Position konnte nicht gelesen werden.</translation>
+        </message>
+        <message>
+            <source>%1 stopped at %2 before its target %3.</source>
+            <translation>%1 hielt bei %2 vor dem Ziel %3 an.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineReferenceRows</name>
@@ -5796,10 +5742,6 @@ W1500</translation>
             <translation>− (negativ)</translation>
         </message>
         <message>
-            <source>From the machine file: edit it with Machine → Edit machine…</source>
-            <translation>Aus der Maschinendatei: ändern mit Maschine → Maschine bearbeiten…</translation>
-        </message>
-        <message>
             <source>Reference %1</source>
             <translation>%1 referenzieren</translation>
         </message>
@@ -5818,6 +5760,10 @@ W1500</translation>
         <message>
             <source>not referenced</source>
             <translation>nicht referenziert</translation>
+        </message>
+        <message>
+            <source>The machine's referencing: edit it with File → Edit machine…</source>
+            <translation>Die Referenzierung der Maschine: zu bearbeiten mit Datei → Maschine bearbeiten…</translation>
         </message>
     </context>
     <context>
@@ -5989,18 +5935,6 @@ W1500</translation>
             <translation>Über &amp;Qt</translation>
         </message>
         <message>
-            <source>Stop: not connected</source>
-            <translation>Stopp: nicht verbunden</translation>
-        </message>
-        <message>
-            <source>Panic: not connected</source>
-            <translation>Panik-Stopp: nicht verbunden</translation>
-        </message>
-        <message>
-            <source>PANIC STOP sent: positions are lost, reference all axes before moving.</source>
-            <translation>PANIK-STOPP gesendet: die Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
-        </message>
-        <message>
             <source>simulator</source>
             <translation>Simulator</translation>
         </message>
@@ -6127,164 +6061,12 @@ W1500</translation>
     <context>
         <name>stepdeck::ui::PositionPanel</name>
         <message>
-            <source>Units…</source>
-            <translation>Einheiten…</translation>
+            <source>Units and limits…</source>
+            <translation>Einheiten und Grenzen…</translation>
         </message>
         <message>
-            <source>Steps per mm or per degree for each axis</source>
-            <translation>Schritte pro mm oder pro Grad für jede Achse</translation>
-        </message>
-        <message>
-            <source>Clear work offsets</source>
-            <translation>Werkstück-Nullpunkte löschen</translation>
-        </message>
-        <message>
-            <source>Show machine positions again (work origin = machine origin)</source>
-            <translation>Wieder Maschinenpositionen anzeigen (Werkstück-Nullpunkt = Maschinen-Nullpunkt)</translation>
-        </message>
-        <message>
-            <source>Zero %1</source>
-            <translation>%1 nullen</translation>
-        </message>
-        <message>
-            <source>Set the work origin of %1 at the current position</source>
-            <translation>Werkstück-Nullpunkt von %1 auf die aktuelle Position setzen</translation>
-        </message>
-        <message>
-            <source>UNKNOWN</source>
-            <translation>UNBEKANNT</translation>
-        </message>
-        <message>
-            <source>ESTIMATED</source>
-            <translation>GESCHÄTZT</translation>
-        </message>
-        <message>
-            <source>REFERENCED</source>
-            <translation>REFERENZIERT</translation>
-        </message>
-        <message>
-            <source>Not referenced since the last panic, reset or reconnect: the position is counted from where the axis was, not from the machine origin.</source>
-            <translation>Seit dem letzten Panik-Stopp, Reset oder Neuverbinden nicht referenziert: die Position zählt ab dem Ort, an dem die Achse stand, nicht ab dem Maschinen-Nullpunkt.</translation>
-        </message>
-        <message>
-            <source>Integrated from commanded jog rates; the controller did not confirm it.</source>
-            <translation>Aus den vorgegebenen Tippgeschwindigkeiten aufsummiert; die Steuerung hat sie nicht bestätigt.</translation>
-        </message>
-        <message>
-            <source>Referenced and confirmed.</source>
-            <translation>Referenziert und bestätigt.</translation>
-        </message>
-        <message>
-            <source>NO LINK</source>
-            <translation>KEINE VERBINDUNG</translation>
-        </message>
-        <message>
-            <source>The link is down: this is the last value before it ended, not the position now.</source>
-            <translation>Die Verbindung ist getrennt: dies ist der letzte Wert davor, nicht die aktuelle Position.</translation>
-        </message>
-        <message>
-            <source>MOVING</source>
-            <translation>FÄHRT</translation>
-        </message>
-        <message>
-            <source>Estimated from the ramp parameters; the controller reports no position during a move. The target is shown below.</source>
-            <translation>Aus den Rampenparametern geschätzt; die Steuerung meldet während einer Fahrt keine Position. Das Ziel steht darunter.</translation>
-        </message>
-        <message>
-            <source>Read back from the controller while moving.</source>
-            <translation>Während der Fahrt von der Steuerung zurückgelesen.</translation>
-        </message>
-        <message>
-            <source>SET</source>
-            <translation>GESETZT</translation>
-        </message>
-        <message>
-            <source>Known, but not from a reference run of this session.</source>
-            <translation>Bekannt, aber nicht aus einer Referenzfahrt dieser Sitzung.</translation>
-        </message>
-        <message>
-            <source>Soft limits…</source>
-            <translation>Software-Endschalter…</translation>
-        </message>
-        <message>
-            <source>Travel range per axis that jog and moves must not leave</source>
-            <translation>Verfahrbereich je Achse, den Tippbetrieb und Fahrten nicht verlassen dürfen</translation>
-        </message>
-        <message>
-            <source>no soft limits</source>
-            <translation>keine Grenzen</translation>
-        </message>
-        <message>
-            <source>No travel range set for %1 (Soft limits…)</source>
-            <translation>Kein Verfahrbereich für %1 gesetzt (Software-Endschalter…)</translation>
-        </message>
-        <message>
-            <source>limits off</source>
-            <translation>Grenzen aus</translation>
-        </message>
-        <message>
-            <source>limits %1..%2</source>
-            <translation>Grenzen %1..%2</translation>
-        </message>
-        <message>
-            <source>%1 work</source>
-            <translation>%1 Werkstück</translation>
-        </message>
-        <message>
-            <source>Machine position (no work zero set for %1)</source>
-            <translation>Maschinenposition (kein Werkstück-Nullpunkt für %1 gesetzt)</translation>
-        </message>
-        <message>
-            <source>limits %1..%2 not applied: not referenced</source>
-            <translation>%1..%2 unwirksam (nicht referenziert)</translation>
-        </message>
-        <message>
-            <source>referencing… (machine %1 steps)</source>
-            <translation>referenziere… (Maschine %1 Schritte)</translation>
-        </message>
-        <message>
-            <source>referencing…</source>
-            <translation>referenziere…</translation>
-        </message>
-        <message>
-            <source>REFERENCING</source>
-            <translation>REFERENZFAHRT</translation>
-        </message>
-        <message>
-            <source>Reference run: read back from the controller; the position is set when the axis reaches its reference switch.</source>
-            <translation>Referenzfahrt: von der Steuerung zurückgelesen; die Position wird gesetzt, wenn die Achse ihren Referenzschalter erreicht.</translation>
-        </message>
-        <message>
-            <source>Reference run: the last position before it; the position is set when the axis reaches its reference switch.</source>
-            <translation>Referenzfahrt: die letzte Position davor; die Position wird gesetzt, wenn die Achse ihren Referenzschalter erreicht.</translation>
-        </message>
-        <message>
-            <source>The controller reports no position during a move and the ramp parameters are not known in this session: the target is shown (→), not where the axis is now.</source>
-            <translation>Die Steuerung meldet während einer Fahrt keine Position, und die Rampenparameter sind in dieser Sitzung nicht bekannt: angezeigt wird das Ziel (→), nicht wo die Achse jetzt ist.</translation>
-        </message>
-        <message>
-            <source>Work position: the machine position minus the work zero of %1 (machine %2 %3)</source>
-            <translation>Werkstückposition: die Maschinenposition minus den Werkstücknullpunkt von %1 (Maschine %2 %3)</translation>
-        </message>
-        <message>
-            <source>Soft limits of %1 in machine %2: jog stops and moves are refused there</source>
-            <translation>Software-Endlagen von %1 in Maschinen-%2: Tippen stoppt dort, Fahrten dorthin werden abgelehnt</translation>
-        </message>
-        <message>
-            <source>Soft limits of %1 in machine %2 apply only while the axis is referenced: an unreferenced position says nothing about where the machine is</source>
-            <translation>Software-Endlagen von %1 in Maschinen-%2 gelten nur, solange die Achse referenziert ist: Eine nicht referenzierte Position sagt nichts darüber, wo die Maschine steht</translation>
-        </message>
-        <message>
-            <source>last known: machine %1 %2</source>
-            <translation>zuletzt bekannt: Maschine %1 %2</translation>
-        </message>
-        <message>
-            <source>moving to %1 (machine %2 %3)</source>
-            <translation>fährt nach %1 (Maschine %2 %3)</translation>
-        </message>
-        <message>
-            <source>machine %1 %2</source>
-            <translation>Maschine %1 %2</translation>
+            <source>Steps per unit, soft limits and referencing of each axis: the machine editor (a controller of the connection bar is saved as a machine file of its own)</source>
+            <translation>Schritte pro Einheit, Software-Endlagen und Referenzierung jeder Achse: der Maschineneditor (eine Steuerung der Verbindungsleiste wird als eigene Maschinendatei gespeichert)</translation>
         </message>
     </context>
     <context>
@@ -6419,24 +6201,12 @@ W1500</translation>
     <context>
         <name>stepdeck::ui::ProgramPage</name>
         <message>
-            <source>Use the connected controller</source>
-            <translation>Verbundene Steuerung verwenden</translation>
-        </message>
-        <message>
-            <source>Open the controller connected now as a machine of one controller, in its own steps, so that programs can run on it</source>
-            <translation>Die jetzt verbundene Steuerung als Maschine aus einer Steuerung in ihren eigenen Schritten öffnen, damit Programme auf ihr laufen können</translation>
-        </message>
-        <message>
             <source>Aborted: the machine was closed.</source>
             <translation>Abgebrochen: die Maschine wurde geschlossen.</translation>
         </message>
         <message>
             <source>Runs on %1 (axes %2)</source>
             <translation>Läuft auf %1 (Achsen %2)</translation>
-        </message>
-        <message>
-            <source>Programs run on a machine: open a machine file, or use the connected controller.</source>
-            <translation>Programme laufen auf einer Maschine: eine Maschinendatei öffnen oder die verbundene Steuerung verwenden.</translation>
         </message>
         <message>
             <source>Not checked: no machine open.</source>
@@ -6523,6 +6293,10 @@ W1500</translation>
         <message>
             <source>Aborting: %1</source>
             <translation>Abbruch: %1</translation>
+        </message>
+        <message>
+            <source>Programs run on a machine: choose a model on the connection bar or open a machine file.</source>
+            <translation>Programme laufen auf einer Maschine: ein Modell in der Verbindungsleiste wählen oder eine Maschinendatei öffnen.</translation>
         </message>
     </context>
     <context>
@@ -6826,68 +6600,12 @@ W1500</translation>
             <translation>Abbrechen</translation>
         </message>
         <message>
-            <source>Reference every axis in the order given (equal numbers run together)</source>
-            <translation>Jede Achse in der angegebenen Reihenfolge referenzieren (gleiche Nummern fahren gemeinsam)</translation>
-        </message>
-        <message>
-            <source>Axis</source>
-            <translation>Achse</translation>
-        </message>
-        <message>
-            <source>Direction</source>
-            <translation>Richtung</translation>
-        </message>
-        <message>
-            <source>Order</source>
-            <translation>Reihenfolge</translation>
-        </message>
-        <message>
-            <source>State</source>
-            <translation>Zustand</translation>
-        </message>
-        <message>
-            <source>− (negative)</source>
-            <translation>− (negativ)</translation>
-        </message>
-        <message>
-            <source>+ (positive)</source>
-            <translation>+ (positiv)</translation>
-        </message>
-        <message>
-            <source>skip</source>
-            <translation>auslassen</translation>
-        </message>
-        <message>
-            <source>Axes with the same number are referenced together; lower numbers first</source>
-            <translation>Achsen mit gleicher Nummer werden gemeinsam referenziert; kleinere Nummern zuerst</translation>
-        </message>
-        <message>
-            <source>not referenced</source>
-            <translation>nicht referenziert</translation>
-        </message>
-        <message>
-            <source>Reference %1</source>
-            <translation>%1 referenzieren</translation>
-        </message>
-        <message>
             <source>Referencing cancelled.</source>
             <translation>Referenzfahrt abgebrochen.</translation>
         </message>
         <message>
-            <source>referencing…</source>
-            <translation>referenziere…</translation>
-        </message>
-        <message>
-            <source>referenced</source>
-            <translation>referenziert</translation>
-        </message>
-        <message>
             <source>the panic stop</source>
             <translation>Panik-Stopp</translation>
-        </message>
-        <message>
-            <source>unknown (no link)</source>
-            <translation>unbekannt (keine Verbindung)</translation>
         </message>
         <message>
             <source>the link is down</source>
@@ -6900,14 +6618,6 @@ W1500</translation>
         <message>
             <source>The axes are no longer referenced (%1): reference them again.</source>
             <translation>Die Achsen sind nicht mehr referenziert (%1): erneut referenzieren.</translation>
-        </message>
-        <message>
-            <source>reference</source>
-            <translation>referenzieren</translation>
-        </message>
-        <message>
-            <source>The controller chooses the direction of its reference run itself</source>
-            <translation>Die Steuerung wählt die Richtung ihrer Referenzfahrt selbst</translation>
         </message>
         <message>
             <source>Referencing refused: %1</source>
@@ -6926,51 +6636,16 @@ W1500</translation>
             <translation>Referenzfahrt fehlgeschlagen: %1</translation>
         </message>
         <message>
-            <source>Reference every axis of the machine in the order and directions of its file (equal orders run together)</source>
-            <translation>Jede Achse der Maschine in Reihenfolge und Richtung ihrer Datei referenzieren (gleiche Nummern fahren gemeinsam)</translation>
-        </message>
-        <message>
             <source>%1 referenced.</source>
             <translation>%1 referenziert.</translation>
         </message>
-    </context>
-    <context>
-        <name>stepdeck::ui::ReferenceRunner</name>
         <message>
-            <source>Referencing aborted: the link is down.</source>
-            <translation>Referenzfahrt abgebrochen: die Verbindung ist unterbrochen.</translation>
+            <source>Reference every axis of the machine in the order and directions of its description (equal orders run together)</source>
+            <translation>Jede Achse der Maschine in der Reihenfolge und Richtung ihrer Beschreibung referenzieren (gleiche Reihenfolge läuft gemeinsam)</translation>
         </message>
         <message>
-            <source>Referencing aborted by the panic stop.</source>
-            <translation>Referenzfahrt durch den Panik-Stopp abgebrochen.</translation>
-        </message>
-        <message>
-            <source>Referencing restarted.</source>
-            <translation>Referenzfahrt neu gestartet.</translation>
-        </message>
-        <message>
-            <source>Nothing to reference: every axis is set to skip.</source>
-            <translation>Nichts zu referenzieren: jede Achse steht auf „auslassen“.</translation>
-        </message>
-        <message>
-            <source>Referencing %1 (stage %2 of %3)…</source>
-            <translation>Referenziere %1 (Stufe %2 von %3)…</translation>
-        </message>
-        <message>
-            <source>Referencing failed: %1</source>
-            <translation>Referenzfahrt fehlgeschlagen: %1</translation>
-        </message>
-        <message>
-            <source>Referenced.</source>
-            <translation>Referenziert.</translation>
-        </message>
-        <message>
-            <source>All selected axes are referenced.</source>
-            <translation>Alle gewählten Achsen sind referenziert.</translation>
-        </message>
-        <message>
-            <source>Referencing failed: the run ended before the reference switch was reached.</source>
-            <translation>Referenzfahrt fehlgeschlagen: die Fahrt endete, bevor der Referenzschalter erreicht war.</translation>
+            <source>Referencing…</source>
+            <translation>Referenzieren…</translation>
         </message>
     </context>
     <context>
@@ -7250,49 +6925,6 @@ hält die Steuerung nicht an</translation>
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::SoftLimitsDialog</name>
-        <message>
-            <source>Soft limits</source>
-            <translation>Software-Endschalter</translation>
-        </message>
-        <message>
-            <source>Jog and moves stop or are refused at these positions (machine steps) once the axis is referenced. Minimum equal to maximum: no limit set.</source>
-            <translation>Tippbetrieb und Fahrten halten an diesen Positionen (Maschinenschritte) an oder werden abgelehnt, sobald die Achse referenziert ist. Minimum gleich Maximum: keine Grenze gesetzt.</translation>
-        </message>
-        <message>
-            <source>Axis</source>
-            <translation>Achse</translation>
-        </message>
-        <message>
-            <source>On</source>
-            <translation>Ein</translation>
-        </message>
-        <message>
-            <source>Minimum</source>
-            <translation>Minimum</translation>
-        </message>
-        <message>
-            <source>Maximum</source>
-            <translation>Maximum</translation>
-        </message>
-        <message>
-            <source> steps</source>
-            <translation> Schritte</translation>
-        </message>
-        <message>
-            <source>here</source>
-            <translation>hier</translation>
-        </message>
-        <message>
-            <source>The current position of %1</source>
-            <translation>Die aktuelle Position von %1</translation>
-        </message>
-        <message>
-            <source>Axis %1: the minimum lies above the maximum.</source>
-            <translation>Achse %1: Das Minimum liegt über dem Maximum.</translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::ui::StatusPanel</name>
         <message>
             <source>Drive on</source>
@@ -7468,25 +7100,6 @@ hält die Steuerung nicht an</translation>
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::StopFeedback</name>
-        <message>
-            <source>Stop sent: waiting for the controller to report standstill…</source>
-            <translation>Stopp gesendet: Warten, bis die Steuerung Stillstand meldet…</translation>
-        </message>
-        <message>
-            <source>Stop sent</source>
-            <translation>Stopp gesendet</translation>
-        </message>
-        <message>
-            <source>Stopped: the controller reports every axis at standstill.</source>
-            <translation>Gestoppt: Die Steuerung meldet alle Achsen im Stillstand.</translation>
-        </message>
-        <message>
-            <source>Every axis is at standstill, as the controller reports.</source>
-            <translation>Alle Achsen stehen still, wie die Steuerung meldet.</translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::ui::StoredParametersBar</name>
         <message>
             <source>Store as power-on values…</source>
@@ -7625,41 +7238,6 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Log files (*.log *.txt)</source>
             <translation>Protokolldateien (*.log *.txt)</translation>
-        </message>
-    </context>
-    <context>
-        <name>stepdeck::ui::UnitsDialog</name>
-        <message>
-            <source>Axis units</source>
-            <translation>Achseinheiten</translation>
-        </message>
-        <message>
-            <source>Axis</source>
-            <translation>Achse</translation>
-        </message>
-        <message>
-            <source>Steps per unit</source>
-            <translation>Schritte pro Einheit</translation>
-        </message>
-        <message>
-            <source>Unit</source>
-            <translation>Einheit</translation>
-        </message>
-        <message>
-            <source>steps only</source>
-            <translation>nur Schritte</translation>
-        </message>
-        <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
-        <message>
-            <source>° (degree)</source>
-            <translation>° (Grad)</translation>
-        </message>
-        <message>
-            <source>inch</source>
-            <translation>Zoll</translation>
         </message>
     </context>
     <context>

@@ -59,16 +59,6 @@
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::IncrementalJogWidget</name>
-        <message numerus="yes">
-            <source>%n step(s)</source>
-            <translation>
-                <numerusform>%n step</numerusform>
-                <numerusform>%n steps</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::ui::ProgramPage</name>
         <message numerus="yes">
             <source>%n error(s); line %1: %2</source>

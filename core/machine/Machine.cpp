@@ -75,7 +75,8 @@ bool Machine::create(const MachineDescription& description, QString* error)
     }
     m_description = description;
     for (const MachineController& c : m_description.controllers) {
-        auto session = std::make_unique<ControllerSession>();
+        const bool lent = m_lent && m_sessions.empty();
+        std::unique_ptr<ControllerSession> session(lent ? m_lent : new ControllerSession);
         const ModelInfo& model = *findModel(c.modelId);
         ConnectionSpec spec = specOf(c, m_baseOptions);
         // The axes' jogAcceleration as the controller's jog ramp (issue 28 item 6; 0 keeps the
@@ -89,6 +90,8 @@ bool Machine::create(const MachineDescription& description, QString* error)
         if (!session->create(model, spec, &why)) {
             if (error)
                 *error = tr("controller \"%1\": %2").arg(c.id, why);
+            if (lent)
+                (void)session.release(); // not this machine's to delete
             destroy();
             return false;
         }
@@ -111,6 +114,12 @@ void Machine::destroy()
     delete std::exchange(m_setup, nullptr); // before the sessions it listens to
     m_jogSessions.clear();
     m_targetJogs.clear(); // before the sessions they send to
+    for (auto& s : m_sessions) {
+        if (s.get() == m_lent) {
+            (void)s.release(); // not this machine's to delete
+            m_lent->destroy();
+        }
+    }
     m_sessions.clear();
     for (const PendingMove& m : std::as_const(m_moves))
         Q_EMIT moveFinished(m.id, false, tr("the machine was closed"));

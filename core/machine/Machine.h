@@ -47,6 +47,11 @@ public:
     // What every controller's options start from before its own addresses and reset line
     // (the front end's action names, the arrival timeout); takes effect at create().
     void setBaseOptions(const ControllerOptions& options) { m_baseOptions = options; }
+    // The first controller runs on this session instead of one of the machine's own: create()
+    // creates it, destroy() destroys it (stop flushed, port closed) but never deletes it. For a
+    // front end that keeps one session object for its connection bar's link, so that what
+    // listens to it stays connected across connects (the window's MachineContext).
+    void lendSession(ControllerSession* session) { m_lent = session; }
 
     // Validates the description and creates a session per controller (links not opened yet).
     bool create(const MachineDescription& description, QString* error);
@@ -183,7 +188,8 @@ private:
     void releaseTargetJogs();
     quint64 m_lastMove = 0;
     std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
-    MachineSetup* m_setup = nullptr; // the controllers' setups, written on connect (a child)
+    MachineSetup* m_setup = nullptr;     // the controllers' setups, written on connect (a child)
+    ControllerSession* m_lent = nullptr; // not owned (lendSession)
 };
 
 } // namespace stepdeck::machine

@@ -286,8 +286,8 @@ void TestJogPanel::incrementalJog_plusButton_movesByStepSize()
     QVERIFY(connectAndSetUp());
     const qsizetype start = m_f->records.size();
     ui::JogPanel* panel = m_f->window->jogPanel();
-    panel->incremental()->setStepSize(1000);
-    panel->incremental()->button(Axis::Y, +1)->click();
+    panel->incremental()->setUnitStepSize(1000); // the connection's axes count steps
+    panel->incremental()->machineButton(QStringLiteral("Y"), +1)->click();
     // FastMoveXY with Y = +1000 (0x3E8): the narrowest command for an X/Y move.
     QTRY_VERIFY_WITH_TIMEOUT(!m_f->commands(elab::ctrl::FF, start).isEmpty(), 3000);
     const elab::Command move = m_f->commands(elab::ctrl::FF, start).first();

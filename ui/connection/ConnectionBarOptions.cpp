@@ -67,8 +67,8 @@ void ConnectionBar::updateResetLine()
 
 void ConnectionBar::onConnected()
 {
-    if (m_context->hasMachine())
-        return; // a machine's ports are its file's: not recent ports, not followed
+    if (!m_context->isConnectionMachine())
+        return; // a machine file's ports are its file's: not recent ports, not followed
     const QString port = m_context->portName();
     connectionsettings::addRecentPort(port);
     if (m_autoReconnect->isChecked() && !m_watcher->isWatching())
@@ -84,7 +84,7 @@ void ConnectionBar::onConnected()
 
 void ConnectionBar::onPortsScanned()
 {
-    if (m_context->hasMachine())
+    if (m_context->hasMachineFile())
         return;
     // A link opened before the first scan came back is followed from the next one on.
     if (m_autoReconnect->isChecked() && m_context->isConnected() && !m_watcher->isWatching())
@@ -96,7 +96,7 @@ void ConnectionBar::onDeviceReturned(const QString& path)
 {
     ControllerSession* session = m_context->session();
     const LinkState state = session->linkState();
-    if (!m_autoReconnect->isChecked() || m_context->hasMachine() ||
+    if (!m_autoReconnect->isChecked() || m_context->hasMachineFile() ||
         (session->isCreated() && (state == LinkState::Connected || state == LinkState::Connecting)))
         return;
     // The link as it was (model, poll interval, reset line), on the device's new path.

@@ -6,68 +6,37 @@
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QLabel>
-#include <QSpinBox>
 #include <QToolButton>
 
 namespace stepdeck::ui {
 
 IncrementalJogWidget::IncrementalJogWidget(MachineContext* context, QWidget* parent)
     : QGroupBox(tr("Incremental jog"), parent), m_context(context), m_size(new QComboBox(this)),
-      m_custom(new QSpinBox(this)), m_customUnits(new QDoubleSpinBox(this)), m_grid(new QGridLayout)
+      m_customUnits(new QDoubleSpinBox(this)), m_grid(new QGridLayout)
 {
-    m_custom->setRange(1, 10000000);
-    m_custom->setValue(500);
-    m_custom->setSuffix(tr(" steps"));
-    m_custom->setVisible(false);
     m_customUnits->setRange(0.001, 100000);
     m_customUnits->setDecimals(3);
     m_customUnits->setValue(0.5);
     m_customUnits->setToolTip(tr("In each axis' unit (mm, deg or steps)"));
     m_customUnits->setVisible(false);
-    fillSizes(false);
+    for (double units : {0.01, 0.1, 1.0, 10.0})
+        m_size->addItem(QLocale().toString(units), units);
+    m_size->setToolTip(tr("Per click of a +/- button, in each axis' unit (mm, deg or steps)"));
+    m_size->addItem(tr("Custom"), -1);
+    m_size->setCurrentIndex(2);
 
     auto* layout = new QVBoxLayout(this);
     auto* sizeRow = new QHBoxLayout;
     sizeRow->addWidget(new QLabel(tr("Step:"), this));
     sizeRow->addWidget(m_size, 1);
-    sizeRow->addWidget(m_custom, 1);
     sizeRow->addWidget(m_customUnits, 1);
     layout->addLayout(sizeRow);
     layout->addLayout(m_grid);
 
-    connect(m_size, &QComboBox::currentIndexChanged, this, [this] {
-        const bool custom = m_size->currentData().toDouble() < 0;
-        m_custom->setVisible(custom && !m_machineSizes);
-        m_customUnits->setVisible(custom && m_machineSizes);
-    });
-    connect(context, &MachineContext::modelChanged, this, &IncrementalJogWidget::rebuild);
+    connect(m_size, &QComboBox::currentIndexChanged, this,
+            [this] { m_customUnits->setVisible(m_size->currentData().toDouble() < 0); });
     connect(context, &MachineContext::machineChanged, this, &IncrementalJogWidget::rebuild);
     rebuild();
-}
-
-void IncrementalJogWidget::fillSizes(bool machine)
-{
-    if (machine == m_machineSizes && m_size->count() > 0)
-        return;
-    m_machineSizes = machine;
-    m_size->clear();
-    if (machine) {
-        for (double units : {0.01, 0.1, 1.0, 10.0})
-            m_size->addItem(QLocale().toString(units), units);
-        m_size->setToolTip(tr("Per click of a +/- button, in each axis' unit (mm, deg or steps)"));
-    } else {
-        for (int steps : {1, 10, 100, 1000})
-            m_size->addItem(tr("%n step(s)", nullptr, steps), steps);
-        m_size->setToolTip(tr("Steps per click of a +/- button"));
-    }
-    m_size->addItem(tr("Custom"), -1);
-    m_size->setCurrentIndex(2);
-}
-
-qint64 IncrementalJogWidget::stepSize() const
-{
-    const int preset = m_size->currentData().toInt();
-    return preset > 0 ? preset : m_custom->value();
 }
 
 double IncrementalJogWidget::unitStepSize() const
@@ -76,20 +45,15 @@ double IncrementalJogWidget::unitStepSize() const
     return preset > 0 ? preset : m_customUnits->value();
 }
 
-void IncrementalJogWidget::setStepSize(qint64 steps)
+void IncrementalJogWidget::setUnitStepSize(double units)
 {
-    const int index = m_size->findData(int(steps));
+    const int index = m_size->findData(units);
     if (index >= 0) {
         m_size->setCurrentIndex(index);
-    } else {
-        m_size->setCurrentIndex(m_size->count() - 1);
-        m_custom->setValue(int(steps));
+        return;
     }
-}
-
-QToolButton* IncrementalJogWidget::button(Axis axis, int sign) const
-{
-    return sign < 0 ? m_minus.value(axis) : m_plus.value(axis);
+    m_size->setCurrentIndex(m_size->count() - 1);
+    m_customUnits->setValue(units);
 }
 
 QToolButton* IncrementalJogWidget::machineButton(const QString& axis, int sign) const
@@ -111,21 +75,14 @@ QToolButton* IncrementalJogWidget::makeButton(const QString& axis, int sign)
 
 void IncrementalJogWidget::rebuild()
 {
-    m_minus.clear();
-    m_plus.clear();
     m_machineButtons.clear();
     deleteLayoutItems(m_grid);
-    QStringList names;
-    if (const machine::Machine* machine = m_context->machine()) {
-        for (const machine::MachineAxis& a : machine->description().axes)
-            names << a.name;
-    } else {
-        for (Axis axis : m_context->axes())
-            names << axisName(axis);
-    }
-    fillSizes(m_context->hasMachine());
+    const machine::Machine* machine = m_context->machine();
+    if (!machine)
+        return;
     int row = 0;
-    for (const QString& name : std::as_const(names)) {
+    for (const machine::MachineAxis& a : machine->description().axes) {
+        const QString name = a.name;
         auto* label = new QLabel(name, this);
         QFont f = label->font();
         f.setBold(true);
@@ -134,23 +91,12 @@ void IncrementalJogWidget::rebuild()
         for (int sign : {-1, 1}) {
             QToolButton* b = makeButton(name, sign);
             m_grid->addWidget(b, row, sign < 0 ? 1 : 2);
-            if (m_context->hasMachine()) {
-                m_machineButtons.insert(name + (sign < 0 ? QLatin1Char('-') : QLatin1Char('+')), b);
-                connect(b, &QToolButton::clicked, this,
-                        [this, name, sign] { jogMachineAxis(name, sign); });
-                continue;
-            }
-            const Axis axis = *axisFromName(name);
-            (sign < 0 ? m_minus : m_plus).insert(axis, b);
-            connect(b, &QToolButton::clicked, this, [this, axis, sign] { jog(axis, sign); });
+            m_machineButtons.insert(name + (sign < 0 ? QLatin1Char('-') : QLatin1Char('+')), b);
+            connect(b, &QToolButton::clicked, this,
+                    [this, name, sign] { jogMachineAxis(name, sign); });
         }
         ++row;
     }
-}
-
-void IncrementalJogWidget::jog(Axis axis, int sign)
-{
-    m_context->session()->moveRelative(AxisVector{{axis, sign * stepSize()}});
 }
 
 void IncrementalJogWidget::jogMachineAxis(const QString& axis, int sign)

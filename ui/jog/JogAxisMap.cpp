@@ -25,6 +25,9 @@ QStringList padAxes(const machine::MachineDescription& d)
 JogAxisMap::JogAxisMap(MachineContext* context, QObject* parent)
     : QObject(parent), m_context(context)
 {
+    // A new machine announces its model first (MachineContext::install): the slots follow at
+    // once, before the panels that rebuild on the model ask them.
+    connect(context, &MachineContext::modelChanged, this, &JogAxisMap::rebuild);
     connect(context, &MachineContext::machineChanged, this, &JogAxisMap::rebuild);
     rebuild();
 }
@@ -36,9 +39,9 @@ bool JogAxisMap::isMachine() const
 
 bool JogAxisMap::jogsByTargets() const
 {
-    if (!isMachine())
-        return m_context->capabilities().jogByTargets;
     const machine::Machine* machine = m_context->machine();
+    if (!machine)
+        return false;
     for (const machine::MachineController& c : machine->description().controllers) {
         if (machine->session(c.id)->capabilities().jogByTargets)
             return true;
@@ -75,7 +78,7 @@ void JogAxisMap::rebuild()
 
 QList<Axis> JogAxisMap::jogSlots() const
 {
-    return isMachine() ? m_slots.keys() : m_context->axes();
+    return m_slots.keys();
 }
 
 const machine::MachineAxis* JogAxisMap::machineAxis(Axis slot) const
@@ -87,7 +90,7 @@ const machine::MachineAxis* JogAxisMap::machineAxis(Axis slot) const
 
 QString JogAxisMap::label(Axis slot) const
 {
-    return isMachine() ? m_slots.value(slot) : axisName(slot);
+    return m_slots.value(slot);
 }
 
 QStringList JogAxisMap::otherStickChoices() const
@@ -162,10 +165,7 @@ QMap<QString, double> JogAxisMap::machineRates(const AxisVelocities& slotRates) 
 AxisStatus JogAxisMap::slotStatus(Axis slot, double* velocity) const
 {
     AxisStatus status;
-    if (!isMachine()) {
-        status = m_context->status().axes.value(slot);
-        *velocity = status.commandedVelocity;
-    } else if (const machine::MachineAxis* a = machineAxis(slot)) {
+    if (const machine::MachineAxis* a = machineAxis(slot)) {
         *velocity = commandedUnitsPerSecond(m_context, *a, &status);
     } else {
         *velocity = 0.0;

@@ -15,22 +15,21 @@ class MachineContext;
 // Which axis each jog slot moves, and how fast it may (issue 19). The jog inputs (the pad,
 // the sticks, the keyboard, a gamepad) always speak of four slots, named by the Axis values
 // they used before machines existed: X and Y the pad's two directions, Z the Z stick, U the
-// other stick. Without a machine a slot is the selected controller's axis of that name and
-// its rates are steps/s, exactly as before. With a machine open every slot is one of the
-// machine's named axes, on whichever controller drives it, and its rates are in that axis'
-// unit/s: the pad its first two axes (X and Y when it has them), the Z stick Z, the other
-// stick the axis the operator picks among the rest (otherStickChoices()), so every axis of a
-// six-axis machine can be reached.
+// other stick. Every slot is one of the machine's named axes (every connection is a machine,
+// issue 28 item 0), on whichever controller drives it, and its rates are in that axis' unit/s: the
+// pad its first two axes (X and Y when it has them), the Z stick Z, the other stick the axis the
+// operator picks among the rest (otherStickChoices()), so every axis of a six-axis machine can be
+// reached.
 class JogAxisMap : public QObject
 {
     Q_OBJECT
 public:
     explicit JogAxisMap(MachineContext* context, QObject* parent = nullptr);
 
-    bool isMachine() const;
+    bool isMachine() const; // false only while no model is chosen
     // Some axis it jogs is on a controller without a jog command (short targets instead).
     bool jogsByTargets() const;
-    // The slots that move something: without a machine the controller's axes.
+    // The slots that move something (none without a machine).
     QList<Axis> jogSlots() const;
     const machine::MachineAxis* machineAxis(Axis slot) const; // null without a machine
     QString label(Axis slot) const; // what the slot moves: "A", or the controller's "U"

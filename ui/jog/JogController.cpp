@@ -1,34 +1,30 @@
 #include "JogController.h"
-#include "controller/TargetJogger.h"
 #include "jog/JogAxisMap.h"
 #include "jog/JogInputSource.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include <QGuiApplication>
-#include <QSettings>
 #include <QtMath>
 
 namespace stepdeck::ui {
 
 JogController::JogController(MachineContext* context, QObject* parent)
-    : QObject(parent), m_context(context), m_map(new JogAxisMap(context, this)),
-      m_targetJog(new TargetJogger(context->session(), this))
+    : QObject(parent), m_context(context), m_map(new JogAxisMap(context, this))
 {
     // Other axes on the slots: what is held would move another axis, so it moves nothing.
     connect(m_map, &JogAxisMap::changed, this, &JogController::releaseAll);
-    connect(m_targetJog, &TargetJogger::refused, this,
-            [this](const QString& reason) { noteRefusal(reason, RefusalCause::Other); });
     m_renew.setInterval(kRenewMs);
     connect(&m_renew, &QTimer::timeout, this, [this] { update(true); });
-    connect(context, &MachineContext::modelChanged, this, [this] {
-        releaseAll();
-        loadSettings();
-    });
+    connect(context, &MachineContext::modelChanged, this, &JogController::releaseAll);
     ControllerSession* session = context->session();
     connect(session, &ControllerSession::jogRefused, this, [this](const QString& reason) {
         // The core refuses for the same reason the status shows (emergency stop), or its own.
         noteRefusal(reason, panicActive() ? RefusalCause::Panic : RefusalCause::Other);
     });
+    connect(context, &MachineContext::machineJogRefused, this,
+            [this](const QString&, const QString& reason) {
+                noteRefusal(reason, RefusalCause::Other);
+            });
     connect(session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)
             releaseAll();
@@ -43,7 +39,6 @@ JogController::JogController(MachineContext* context, QObject* parent)
                 if (state != Qt::ApplicationActive)
                     releaseAll();
             });
-    loadSettings();
 }
 
 void JogController::addSource(JogInputSource* source)
@@ -75,39 +70,22 @@ void JogController::releaseAll()
     m_targets.clear();
     m_active = false;
     m_renew.stop();
-    m_targetJog->release();
     if (wasActive) {
         endJog();
         Q_EMIT targetsChanged(m_targets);
     }
 }
 
-double JogController::maxSpeedCeiling() const
+void JogController::setMaxSpeed(Axis slot, double unitsPerSecond)
 {
-    return m_context->capabilities().maxJogSpeed;
-}
-
-void JogController::setMaxSpeed(Axis axis, double stepsPerS)
-{
-    if (m_map->isMachine()) {
-        m_map->setMaxSpeed(axis, stepsPerS); // unit/s
-        Q_EMIT speedSettingsChanged();
-        update();
-        return;
-    }
-    const double value = qBound(1.0, stepsPerS, maxSpeedCeiling());
-    m_maxSpeed.insert(axis, value);
-    QSettings().setValue(
-        QStringLiteral("jog/%1/%2/maxSpeed").arg(m_context->modelId(), axisName(axis)), value);
+    m_map->setMaxSpeed(slot, unitsPerSecond);
     Q_EMIT speedSettingsChanged();
     update();
 }
 
-double JogController::maxSpeed(Axis axis) const
+double JogController::maxSpeed(Axis slot) const
 {
-    if (m_map->isMachine())
-        return m_map->maxSpeed(axis);
-    return m_maxSpeed.value(axis, qMin(1000.0, maxSpeedCeiling()));
+    return m_map->maxSpeed(slot);
 }
 
 void JogController::setOverride(double fraction)
@@ -120,19 +98,6 @@ void JogController::setOverride(double fraction)
 bool JogController::isJogging() const
 {
     return m_active;
-}
-
-void JogController::loadSettings()
-{
-    m_maxSpeed.clear();
-    const QSettings settings;
-    const double fallback = qMin(1000.0, maxSpeedCeiling());
-    for (Axis axis : m_context->axes()) {
-        const QString key =
-            QStringLiteral("jog/%1/%2/maxSpeed").arg(m_context->modelId(), axisName(axis));
-        m_maxSpeed.insert(axis, qBound(1.0, settings.value(key, fallback).toDouble(),
-                                       qMax(1.0, maxSpeedCeiling())));
-    }
 }
 
 QString JogController::refusal() const
@@ -190,9 +155,9 @@ AxisVelocities JogController::provenTargets()
                 fraction = f;
         }
         const double v = fraction * maxSpeed(axis) * m_override;
-        // Steps are whole; a machine's unit/s become the nearest step rate in Machine::jog.
+        // Unit/s; Machine::jog makes them the nearest step rate.
         if (v != 0.0)
-            targets.insert(axis, m_map->isMachine() ? v : double(qRound64(v)));
+            targets.insert(axis, v);
     }
     return targets;
 }
@@ -203,12 +168,6 @@ void JogController::stopSending()
     if (m_active) {
         m_active = false;
         m_renew.stop();
-        m_targetJog->release();
-        AxisVelocities zeros;
-        for (Axis axis : m_map->jogSlots())
-            zeros.insert(axis, 0.0);
-        if (!m_context->hasMachine())
-            m_context->session()->setJogVelocity(zeros);
         endJog();
     }
     if (!m_targets.isEmpty()) {
@@ -263,15 +222,11 @@ void JogController::updateOnce(bool renewal)
     m_targets = full;
     m_active = true;
     if (changed || renewal) {
-        // Renews the lease with what was just proven. Controllers without a jog command get
-        // short targets, the next one only while the input is still proven held.
-        if (m_context->hasMachine()) {
-            if (!sendToMachine())
-                return;
-        } else if (m_context->capabilities().jogByTargets)
-            m_targetJog->setVelocities(m_targets);
-        else
-            m_context->session()->setJogVelocity(m_targets);
+        // Renews the lease with what was just proven (controllers without a jog command get
+        // short targets from the machine, the next one only while the input is still proven
+        // held).
+        if (!sendToMachine())
+            return;
     }
     if (changed)
         Q_EMIT targetsChanged(m_targets);
@@ -284,8 +239,8 @@ bool JogController::sendToMachine()
     // A machine jogs its axes in their units, within their maxJogSpeed, every controller on
     // this one call (issue 19). A refusal sends nothing: the input counts as released until
     // let go.
-    QString why;
-    if (m_context->machine()->jog(m_map->machineRates(m_targets), &why))
+    QString why = tr("Jog refused: no machine");
+    if (m_context->machine() && m_context->machine()->jog(m_map->machineRates(m_targets), &why))
         return true;
     releaseAll();
     noteRefusal(why, RefusalCause::Other);
@@ -294,10 +249,7 @@ bool JogController::sendToMachine()
 
 void JogController::endJog()
 {
-    if (m_context->hasMachine())
-        m_context->endMachineJog();
-    else
-        m_context->session()->endJog();
+    m_context->endMachineJog();
 }
 
 } // namespace stepdeck::ui

@@ -5,10 +5,6 @@
 #include <QPointer>
 #include <QTimer>
 
-namespace stepdeck {
-class TargetJogger;
-}
-
 namespace stepdeck::ui {
 
 class JogAxisMap;
@@ -23,8 +19,8 @@ class MachineContext;
 // like a release. When nothing is held it sends zero targets and endJog(); the core JogRamp
 // ramps the axes down. The ramp itself lives in the core, never here.
 // Jog runs only while a StepDeck window is the active window (focus loss stops jogging).
-// The sources speak of jog slots (JogAxisMap): without a machine the controller's axes in
-// steps/s, with a machine open its named axes in unit/s, every controller jogged through one
+// The sources speak of jog slots (JogAxisMap): the machine's named axes in unit/s (every
+// connection is a machine, issue 28 item 0), every controller jogged through one
 // Machine::jog call so that one lost input stops them all.
 class JogController : public QObject
 {
@@ -38,17 +34,14 @@ public:
     void addSource(JogInputSource* source);
     QList<JogInputSource*> sources() const;
 
-    // Per jog slot: steps/s without a machine, the slot's machine axis' unit/s with one.
-    void setMaxSpeed(Axis axis, double stepsPerS);
-    double maxSpeed(Axis axis) const;
-    double maxSpeedCeiling() const; // without a machine (steps/s)
+    // Per jog slot, in the slot's machine axis' unit/s (JogAxisMap::maxSpeed).
+    void setMaxSpeed(Axis slot, double unitsPerSecond);
+    double maxSpeed(Axis slot) const;
     JogAxisMap* axisMap() const { return m_map; }
     void setOverride(double fraction); // 0..1, scales every jog speed
     double override() const { return m_override; }
 
     AxisVelocities targets() const { return m_targets; }
-    // Controllers without a jog command (Capabilities::jogByTargets) jog through this.
-    TargetJogger* targetJogger() const { return m_targetJog; }
     bool isJogging() const;
 
 public Q_SLOTS:
@@ -73,7 +66,6 @@ private:
     void stopSending();
     bool sendToMachine(); // false: refused, every input released
     void endJog();
-    void loadSettings();
     QString refusal() const;
     bool panicActive() const;
     enum class RefusalCause { None, NotConnected, Panic, Other };
@@ -83,8 +75,6 @@ private:
     MachineContext* m_context;
     JogAxisMap* m_map;
     QList<QPointer<JogInputSource>> m_sources;
-    TargetJogger* m_targetJog;
-    QMap<Axis, double> m_maxSpeed;
     double m_override = 1.0;
     AxisVelocities m_targets;
     bool m_active = false;

@@ -240,14 +240,14 @@ void JogPanel::rebuild()
 {
     releaseAll();
     m_jogModeNote->setVisible(m_jog->axisMap()->jogsByTargets());
-    // The slots' axes: the controller's, or with a machine open the machine's (JogAxisMap).
+    // The slots' axes: the machine's (JogAxisMap). Without a model chosen yet, the pad alone
+    // (it moves nothing and says so when used).
     const QMap<Axis, QString> labels = slotLabels();
-    const bool single = !m_context->hasMachine();
-    m_xy->setVisible(labels.contains(Axis::X) || (single && labels.isEmpty()));
-    m_xy->setAxisLabels(labels.value(Axis::X, QStringLiteral("X")),
-                        labels.contains(Axis::Y) || (single && labels.isEmpty())
-                            ? labels.value(Axis::Y, QStringLiteral("Y"))
-                            : QString());
+    const bool none = !m_context->hasMachine();
+    m_xy->setVisible(labels.contains(Axis::X) || none);
+    m_xy->setAxisLabels(
+        labels.value(Axis::X, QStringLiteral("X")),
+        labels.contains(Axis::Y) || none ? labels.value(Axis::Y, QStringLiteral("Y")) : QString());
     m_z->setVisible(labels.contains(Axis::Z));
     m_u->setVisible(labels.contains(Axis::U));
     m_u->setAxisLabels(QString(), labels.value(Axis::U, QStringLiteral("U")));
@@ -260,7 +260,7 @@ void JogPanel::rebuild()
         m_otherAxis->addItems(choices);
         m_otherAxis->setCurrentText(labels.value(Axis::U));
     }
-    m_otherAxis->setVisible(!single && !choices.isEmpty());
+    m_otherAxis->setVisible(!choices.isEmpty());
     showKeyboardState();
 }
 
@@ -271,7 +271,7 @@ void JogPanel::releaseAll()
 
 void JogPanel::onStatus()
 {
-    // Each slot's axis, in the slot's rate unit (steps/s, or the machine axis' unit/s).
+    // Each slot's axis, in its machine axis' unit/s.
     const JogAxisMap* map = m_jog->axisMap();
     auto slot = [&](Axis axis, double* fraction) {
         double v = 0.0;

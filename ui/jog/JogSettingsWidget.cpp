@@ -72,24 +72,7 @@ void JogSettingsWidget::rebuild()
     for (QWidget* w : std::as_const(m_axisRows))
         m_form->removeRow(w);
     m_axisRows.clear();
-    if (m_jog->axisMap()->isMachine()) {
-        addMachineRows();
-        return;
-    }
-    int row = 0;
-    for (Axis axis : m_context->axes()) {
-        auto* spin = new QSpinBox(this);
-        spin->setRange(1, qMax(1, int(m_jog->maxSpeedCeiling())));
-        spin->setSingleStep(50);
-        spin->setSuffix(tr(" steps/s"));
-        spin->setValue(int(m_jog->maxSpeed(axis)));
-        spin->setToolTip(
-            tr("Jog speed of axis %1 at full deflection and 100 % override").arg(axisName(axis)));
-        connect(spin, &QSpinBox::valueChanged, this,
-                [this, axis](int v) { m_jog->setMaxSpeed(axis, v); });
-        m_form->insertRow(row++, tr("Max %1:").arg(axisName(axis)), spin);
-        m_axisRows << spin;
-    }
+    addMachineRows();
 }
 
 void JogSettingsWidget::addMachineRows()
@@ -100,6 +83,8 @@ void JogSettingsWidget::addMachineRows()
     int row = 0;
     for (Axis slot : map->jogSlots()) {
         const machine::MachineAxis* axis = map->machineAxis(slot);
+        if (!axis)
+            continue;
         auto* spin = new QDoubleSpinBox(this);
         spin->setDecimals(axis->unit == machine::AxisUnit::Step ? 0 : 2);
         spin->setRange(0, map->ceiling(slot));

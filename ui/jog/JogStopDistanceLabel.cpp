@@ -39,13 +39,6 @@ JogStopDistanceLabel::JogStopDistanceLabel(MachineContext* context, JogControlle
 std::optional<double> JogStopDistanceLabel::stopDistance(Axis slot, double speed) const
 {
     const JogAxisMap* map = m_jog->axisMap();
-    if (!map->isMachine()) {
-        const ControllerSession* s = m_context->session();
-        const Capabilities caps = m_context->capabilities(); // also before a connection
-        if (!caps.hostRampedJog)
-            return std::nullopt;
-        return JogRamp::stopDistance(speed, rampOf(s, caps), tickOf(s));
-    }
     const machine::MachineAxis* axis = map->machineAxis(slot);
     if (!axis)
         return std::nullopt;

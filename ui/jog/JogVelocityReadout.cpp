@@ -3,6 +3,7 @@
 #include "jog/JogAxisMap.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include <QCoreApplication>
 #include <QGridLayout>
 #include <QLabel>
 
@@ -37,12 +38,14 @@ void JogVelocityReadout::rebuild()
     deleteLayoutItems(m_grid);
     m_rows.clear();
     if (const machine::Machine* machine = m_context->machine()) {
-        for (const machine::MachineAxis& a : machine->description().axes)
-            addRow(a.name, rateUnitName(a));
-    } else {
-        // The model's position unit (laser axes: "units/s", issue 16).
-        for (Axis axis : m_context->axes())
-            addRow(axisName(axis), tr("%1/s").arg(m_context->machineUnitName()));
+        for (const machine::MachineAxis& a : machine->description().axes) {
+            // An axis in the controller's count says what that counts (laser axes:
+            // "units/s", issue 16).
+            const QString count = QCoreApplication::translate(
+                "Units", machine->session(a.controller)->capabilities().positionUnit);
+            addRow(a.name,
+                   a.unit == machine::AxisUnit::Step ? tr("%1/s").arg(count) : rateUnitName(a));
+        }
     }
     refresh();
 }
@@ -79,14 +82,6 @@ void JogVelocityReadout::refresh()
             // Steps are whole; mm and degrees to a hundredth.
             row.value->setText(a.unit == machine::AxisUnit::Step ? QString::asprintf("%+.0f", v)
                                                                  : QString::asprintf("%+.2f", v));
-        }
-        return;
-    }
-    const MachineStatus& status = m_context->status();
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
-        if (const std::optional<Axis> axis = axisFromName(it.key())) {
-            const double v = status.axes.value(*axis).commandedVelocity;
-            it.value().value->setText(QString::asprintf("%+.0f", v));
         }
     }
 }

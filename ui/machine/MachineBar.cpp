@@ -54,9 +54,10 @@ void MachineBar::rebuild()
     deleteLayoutItems(m_lamps);
     m_entries.clear();
     m_controllers->clear();
-    const machine::Machine* m = m_context->machine();
-    // Either bar, never both; a hidden one takes no room in the tool bar (the window's
-    // minimum width stays what the shown bar needs: tst_windowfit at 1024x768).
+    // A machine file's bar, or the connection bar for the connection machine (issue 28,
+    // item 0); never both: a hidden one takes no room in the tool bar (the window's minimum
+    // width stays what the shown bar needs: tst_windowfit at 1024x768).
+    const machine::Machine* m = m_context->isConnectionMachine() ? nullptr : m_context->machine();
     if (m_singleBar)
         m_singleBar->setVisible(!m);
     setVisible(m);

@@ -1,10 +1,10 @@
 #include "MachineContext.h"
+#include "ConnectionMachine.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/Machine.h"
 #include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
-#include <QSettings>
 
 namespace stepdeck::ui {
 
@@ -62,7 +62,6 @@ MachineContext::~MachineContext()
         m_machine->disconnect(this);
         m_machine->destroy(); // every controller's stop, flushed, before its port closes
     }
-    m_session->destroy();
 }
 
 Capabilities MachineContext::capabilities() const
@@ -95,70 +94,92 @@ bool MachineContext::isConnected() const
 
 QString MachineContext::portName() const
 {
-    return m_selected ? m_selected->spec().port : m_port;
+    return m_selected ? m_selected->spec().port : QString();
 }
 
 void MachineContext::selectModel(const QString& modelId)
 {
     const ModelInfo* model = findModel(modelId);
-    if (m_machine) {
-        m_singleModel = model; // shown again when the machine is closed
+    if (m_machine && !m_connectionMachine) {
+        m_singleModel = model; // its machine is shown when the file's is closed
         return;
     }
-    if (model == m_model)
+    if (model == m_model && (m_machine || !model))
         return;
-    if (m_session->isCreated())
-        m_session->destroy();
-    m_model = model;
-    loadUnits();
-    loadSoftLimits();
-    Q_EMIT modelChanged();
+    openIdleConnectionMachine(model);
 }
 
-bool MachineContext::connectTo(const ModelInfo& model, const ConnectionSpec& given, QString* error)
+bool MachineContext::connectTo(const ModelInfo& model, const ConnectionSpec& spec, QString* error)
 {
-    // The core's messages name this window's buttons, not CLI commands (issue 16).
-    if (m_machine) {
+    if (m_machine && !m_connectionMachine) {
         if (error)
             *error = tr("A machine is open: close it to connect a single controller.");
         return false;
     }
-    ConnectionSpec spec = given;
-    spec.options.actionNames.insert(PositionErrorResetButton::operationName(),
-                                    PositionErrorResetButton::actionName());
-    const ModelInfo* before = m_model;
-    if (!m_session->create(model, spec, error))
+    // The session the panels listen to is re-created for this link: the machine that used it
+    // goes first.
+    uninstall();
+    auto created = std::make_unique<machine::Machine>();
+    created->lendSession(m_session);
+    // The core's messages name this window's buttons, not CLI commands (issue 16).
+    ControllerOptions base = spec.options;
+    base.actionNames.insert(PositionErrorResetButton::operationName(),
+                            PositionErrorResetButton::actionName());
+    created->setBaseOptions(base);
+    QString why;
+    if (!created->create(connectionMachineOf(model, spec), &why)) {
+        if (error)
+            *error = why;
+        openIdleConnectionMachine(&model);
         return false;
-    m_model = m_session->model();
-    m_port = spec.port;
-    if (m_model != before) {
-        loadUnits();
-        loadSoftLimits();
-        Q_EMIT modelChanged();
     }
-    m_session->open();
+    install(std::move(created), QString(), true);
+    m_machine->open();
     return true;
+}
+
+void MachineContext::openIdleConnectionMachine(const ModelInfo* model)
+{
+    uninstall(); // its session may be the one the new machine runs on
+    QString why;
+    if (model) {
+        // Not connected: the port is the connection bar's business until connectTo.
+        ConnectionSpec spec;
+        spec.port = QStringLiteral("none");
+        auto created = std::make_unique<machine::Machine>();
+        created->lendSession(m_session);
+        if (created->create(connectionMachineOf(*model, spec), &why)) {
+            install(std::move(created), QString(), true);
+            return;
+        }
+        qWarning("StepDeck: no machine of model %s: %s", qPrintable(model->id), qPrintable(why));
+    }
+    // No machine at all: the panels show nothing to move.
+    m_workOffsets->load(QString());
+    m_model = nullptr;
+    forgetKnownParameters();
+    Q_EMIT modelChanged();
+    Q_EMIT machineChanged();
+    announceLink();
 }
 
 void MachineContext::disconnectFromController()
 {
-    if (m_machine)
-        disconnectMachine();
-    else if (m_session->isCreated())
-        m_session->close();
+    disconnectMachine();
 }
 
 QMap<QString, RequestId> MachineContext::stop()
 {
-    if (m_machine)
-        return m_machine->stop(); // every controller at once
-    return {{QString(), m_session->stop()}};
+    if (!m_machine)
+        return {};
+    return m_machine->stop(); // every controller at once
 }
 
 QMap<QString, RequestId> MachineContext::panic()
 {
-    const QMap<QString, RequestId> requests =
-        m_machine ? m_machine->panic() : QMap<QString, RequestId>{{QString(), m_session->panic()}};
+    if (!m_machine)
+        return {};
+    const QMap<QString, RequestId> requests = m_machine->panic(); // every controller at once
     // Only a panic the model can send loses positions; EMIS and laser axes refuse it (the
     // refusal says why), and their positions stay what they were.
     if (capabilities().panic)
@@ -192,119 +213,6 @@ void MachineContext::forgetKnownParameters()
     m_pendingWrites.clear(); // answers to requests of an earlier link count for nothing
     m_pendingReads.clear();
     Q_EMIT knownParametersChanged();
-}
-
-int MachineContext::referenceDirection(Axis axis) const
-{
-    const QString key = QStringLiteral("reference/%1/%2/direction").arg(modelId(), axisName(axis));
-    return QSettings().value(key, -1).toInt();
-}
-
-int MachineContext::referenceOrder(Axis axis) const
-{
-    const QString key = QStringLiteral("reference/%1/%2/order").arg(modelId(), axisName(axis));
-    return QSettings().value(key, axis == Axis::Z ? 1 : 2).toInt();
-}
-
-void MachineContext::setReference(Axis axis, int direction, int order)
-{
-    const QString key = QStringLiteral("reference/%1/%2/").arg(modelId(), axisName(axis));
-    QSettings settings;
-    settings.setValue(key + QStringLiteral("direction"), direction);
-    settings.setValue(key + QStringLiteral("order"), order);
-}
-
-QString MachineContext::settingsPrefix(Axis axis) const
-{
-    return QStringLiteral("units/%1/%2/").arg(modelId(), axisName(axis));
-}
-
-void MachineContext::loadUnits()
-{
-    m_units.clear();
-    QSettings settings;
-    for (Axis axis : axes()) {
-        AxisUnits u;
-        const QString p = settingsPrefix(axis);
-        u.stepsPerUnit = settings.value(p + QStringLiteral("stepsPerUnit"), 0.0).toDouble();
-        u.unit = settings.value(p + QStringLiteral("unit"), QStringLiteral("mm")).toString();
-        u.workOffset = settings.value(p + QStringLiteral("workOffset"), 0).toLongLong();
-        m_units.insert(axis, u);
-    }
-}
-
-void MachineContext::loadSoftLimits()
-{
-    m_softLimits = SoftLimits{};
-    const QSettings settings;
-    for (Axis axis : axes()) {
-        const QString p = QStringLiteral("softLimits/%1/%2/").arg(modelId(), axisName(axis));
-        AxisSoftLimit l;
-        l.enabled = settings.value(p + QStringLiteral("enabled"), true).toBool();
-        l.rangeSet = settings.value(p + QStringLiteral("rangeSet"), false).toBool();
-        l.minimum = settings.value(p + QStringLiteral("minimum"), 0).toLongLong();
-        l.maximum = settings.value(p + QStringLiteral("maximum"), 0).toLongLong();
-        l.rangeSet = l.rangeSet && l.maximum > l.minimum;
-        m_softLimits.set(axis, l);
-    }
-    m_session->setSoftLimits(m_softLimits);
-    Q_EMIT softLimitsChanged();
-}
-
-void MachineContext::setSoftLimit(Axis axis, const AxisSoftLimit& limit)
-{
-    if (m_machine)
-        return; // a machine's limits are its file's (in units), enforced by its sessions
-    AxisSoftLimit l = limit;
-    l.rangeSet = l.rangeSet && l.maximum > l.minimum;
-    m_softLimits.set(axis, l);
-    QSettings settings;
-    const QString p = QStringLiteral("softLimits/%1/%2/").arg(modelId(), axisName(axis));
-    settings.setValue(p + QStringLiteral("enabled"), l.enabled);
-    settings.setValue(p + QStringLiteral("rangeSet"), l.rangeSet);
-    settings.setValue(p + QStringLiteral("minimum"), l.minimum);
-    settings.setValue(p + QStringLiteral("maximum"), l.maximum);
-    m_session->setSoftLimits(m_softLimits);
-    Q_EMIT softLimitsChanged();
-}
-
-qint64 MachineContext::toMachineSteps(Axis axis, double userValue) const
-{
-    const AxisUnits u = units(axis);
-    const double steps = u.stepsPerUnit > 0 ? userValue * u.stepsPerUnit : userValue;
-    if (!qIsFinite(steps))
-        return u.workOffset;
-    // double -> qint64 outside the range is undefined: bound it first (far beyond any axis).
-    return qRound64(qBound(-1e15, steps, 1e15)) + u.workOffset;
-}
-
-AxisUnits MachineContext::units(Axis axis) const
-{
-    return m_units.value(axis);
-}
-
-void MachineContext::setUnits(Axis axis, const AxisUnits& units)
-{
-    m_units.insert(axis, units);
-    QSettings settings;
-    const QString p = settingsPrefix(axis);
-    settings.setValue(p + QStringLiteral("stepsPerUnit"), units.stepsPerUnit);
-    settings.setValue(p + QStringLiteral("unit"), units.unit);
-    settings.setValue(p + QStringLiteral("workOffset"), units.workOffset);
-    Q_EMIT unitsChanged();
-}
-
-double MachineContext::toUserUnits(Axis axis, qint64 machineSteps) const
-{
-    const AxisUnits u = units(axis);
-    const qint64 work = machineSteps - u.workOffset;
-    return u.stepsPerUnit > 0 ? double(work) / u.stepsPerUnit : double(work);
-}
-
-QString MachineContext::unitName(Axis axis) const
-{
-    const AxisUnits u = units(axis);
-    return u.stepsPerUnit > 0 ? u.unit : machineUnitName();
 }
 
 QString MachineContext::machineUnitName() const

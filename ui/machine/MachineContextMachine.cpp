@@ -2,6 +2,7 @@
 // one session per controller; the context selects one of them for the per-controller pages.
 #include "machine/Machine.h"
 #include "drives/PositionErrorResetButton.h"
+#include "machine/ConnectionMachine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
 #include "machine/MachineSetup.h"
@@ -30,8 +31,8 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
     // Everything is checked (and every session built) before the open link is touched: an
     // invalid machine leaves what runs now as it is.
     auto created = std::make_unique<machine::Machine>();
-    // The core's messages name this window's buttons, not CLI commands (issue 16), as for a
-    // single controller (connectTo).
+    // The core's messages name this window's buttons, not CLI commands (issue 16), as for the
+    // connection bar's controller (connectTo).
     ControllerOptions base;
     base.actionNames.insert(PositionErrorResetButton::operationName(),
                             PositionErrorResetButton::actionName());
@@ -42,19 +43,44 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
             *error = tr("Machine \"%1\": %2").arg(description.name, why);
         return false;
     }
-    if (m_machine)
-        closeMachine();
-    else
+    if (!m_machine || m_connectionMachine)
         m_singleModel = m_model;
-    if (m_session->isCreated())
-        m_session->destroy(); // the single controller's stop, flushed, then its port closed
+    install(std::move(created), path, false);
+    return true;
+}
+
+void MachineContext::uninstall()
+{
+    for (const QMetaObject::Connection& c : std::as_const(m_relay))
+        disconnect(c);
+    m_relay.clear();
+    m_selected = nullptr;
+    m_selectedId.clear();
+    m_machinePath.clear();
+    if (!m_machine)
+        return;
+    const std::unique_ptr<machine::Machine> closing = std::move(m_machine);
+    closing->disconnect(this);
+    closing->destroy(); // every controller's stop, flushed, before its port closes
+}
+
+void MachineContext::install(std::unique_ptr<machine::Machine> created, const QString& path,
+                             bool connectionMachine)
+{
+    uninstall();
     m_machine = std::move(created);
+    m_connectionMachine = connectionMachine;
     m_machinePath = path;
-    m_workOffsets->load(path); // before machineChanged: its listeners show them
+    const machine::MachineDescription& description = m_machine->description();
+    // Before machineChanged: its listeners show them.
+    m_workOffsets->load(
+        connectionMachine ? connectionOffsetsKey(description.controllers.first().modelId) : path);
     connect(m_machine.get(), &machine::Machine::controllerFailed, this,
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,
             &MachineContext::machineStatusChanged);
+    connect(m_machine.get(), &machine::Machine::jogRefused, this,
+            &MachineContext::machineJogRefused);
     connect(m_machine->setupWriter(), &machine::MachineSetup::written, this,
             [this](const QString& controllerId, bool ok, const QString& message) {
                 // The Setup page's form counts what the device holds: the file's values now.
@@ -64,32 +90,20 @@ bool MachineContext::openMachine(const machine::MachineDescription& description,
                         addKnownParameters(c->setup);
                 Q_EMIT machineSetupWritten(controllerId, ok, message);
             });
+    m_model = nullptr; // selectController announces the model, whichever it is
     selectController(description.controllers.first().id);
     Q_EMIT machineChanged();
-    return true;
 }
 
 void MachineContext::closeMachine()
 {
     if (!m_machine)
         return;
-    for (const QMetaObject::Connection& c : std::as_const(m_relay))
-        disconnect(c);
-    m_relay.clear();
-    m_selected = nullptr;
-    m_selectedId.clear();
-    m_machinePath.clear();
-    m_workOffsets->load(QString());
-    const std::unique_ptr<machine::Machine> closing = std::move(m_machine);
-    closing->disconnect(this);
-    closing->destroy(); // every controller's stop, flushed, before its port closes
-    m_model = m_singleModel;
-    loadUnits();
-    loadSoftLimits();
-    forgetKnownParameters();
-    Q_EMIT modelChanged();
-    Q_EMIT machineChanged();
-    announceLink();
+    if (m_connectionMachine) {
+        disconnectMachine();
+        return;
+    }
+    openIdleConnectionMachine(m_singleModel);
 }
 
 void MachineContext::selectController(const QString& controllerId)
@@ -97,15 +111,13 @@ void MachineContext::selectController(const QString& controllerId)
     ControllerSession* chosen = m_machine ? m_machine->session(controllerId) : nullptr;
     if (!chosen || chosen == m_selected)
         return;
-    relayFrom(chosen);
+    if (chosen != m_session) // the connection machine's session is m_session itself
+        relayFrom(chosen);
     m_selected = chosen;
     m_selectedId = controllerId;
     m_model = chosen->model();
-    loadUnits();
-    m_softLimits = chosen->softLimits(); // the file's, in steps (Machine)
-    forgetKnownParameters();             // they were another controller's
+    forgetKnownParameters(); // they were another controller's
     Q_EMIT modelChanged();
-    Q_EMIT softLimitsChanged();
     announceLink();
 }
 
@@ -177,7 +189,7 @@ MachineStatus MachineContext::machineWideStatus(LinkState* link) const
     const ControllerSession* selected = session();
     *link = selected->isCreated() ? selected->linkState() : LinkState::Disconnected;
     if (!m_machine)
-        return selected->status();
+        return {};
     MachineStatus out = selected->status();
     bool unreported = false;
     for (const machine::MachineController& c : m_machine->description().controllers) {
@@ -224,75 +236,8 @@ machine::PositionKnowledge MachineContext::positionKnowledge() const
             const PositionKnowledge k = m_machine->axisStatus(axis).known;
             worst = worst ? worse(*worst, k) : k;
         }
-        return worst.value_or(PositionKnowledge::Unknown);
-    }
-    const ControllerSession* s = session();
-    if (!s->isCreated() || s->linkState() != LinkState::Connected)
-        return PositionKnowledge::Unknown;
-    // As Machine::axisStatus judges a controller axis.
-    for (const AxisStatus& a : s->status().axes) {
-        const PositionKnowledge k = !a.positionKnown ? PositionKnowledge::Unknown
-                                    : (a.positionEstimated || a.motionUnknown)
-                                        ? PositionKnowledge::Estimated
-                                        : PositionKnowledge::Referenced;
-        worst = worst ? worse(*worst, k) : k;
     }
     return worst.value_or(PositionKnowledge::Unknown);
-}
-
-machine::MachineDescription
-MachineContext::connectedControllerMachine(QMap<QString, double>* workOffsets) const
-{
-    const ConnectionSpec& spec = m_session->spec();
-    const ModelInfo& model = *m_model;
-    QMap<Axis, int> addresses;
-    if (model.capabilities.multiDrive)
-        addresses = spec.options.axisAddresses;
-    machine::MachineDescription d =
-        machine::MachineDescription::singleController(model, m_port, addresses);
-    if (model.capabilities.resetLine)
-        d.controllers.first().resetLine = spec.options.resetLine;
-    for (machine::MachineAxis& a : d.axes) {
-        // The Referencing panel's order and direction (a skipped axis keeps its order: the
-        // machine references every axis it has).
-        a.referenceOrder = referenceOrder(a.axis);
-        const int direction = referenceDirection(a.axis);
-        if (model.capabilities.referenceDirection && (direction == -1 || direction == 1))
-            a.referenceDirection = direction;
-        const AxisUnits u = m_units.value(a.axis);
-        if (u.stepsPerUnit <= 0)
-            continue; // steps, as the controller counts
-        const bool inch = u.unit == QLatin1String("in");
-        a.unit = u.unit == QStringLiteral("\u00b0") ? machine::AxisUnit::Degree
-                                                    : machine::AxisUnit::Millimetre;
-        a.stepsPerUnit = inch ? u.stepsPerUnit / 25.4 : u.stepsPerUnit;
-        const AxisSoftLimit limit = m_softLimits.limit(a.axis);
-        if (limit.enabled && limit.rangeSet) {
-            a.softMinimum = a.toUnits(limit.minimum);
-            a.softMaximum = a.toUnits(limit.maximum);
-        }
-        if (workOffsets && u.workOffset != 0)
-            workOffsets->insert(a.name, a.toUnits(u.workOffset));
-    }
-    if (workOffsets) // an axis in steps keeps its origin in steps
-        for (const machine::MachineAxis& a : d.axes)
-            if (a.unit == machine::AxisUnit::Step && m_units.value(a.axis).workOffset != 0)
-                workOffsets->insert(a.name, double(m_units.value(a.axis).workOffset));
-    return d;
-}
-
-bool MachineContext::openConnectedControllerAsMachine(QString* error)
-{
-    if (!m_model || !m_session->isCreated() || m_machine)
-        return false;
-    QMap<QString, double> offsets;
-    const machine::MachineDescription d = connectedControllerMachine(&offsets);
-    if (!openMachine(d, error))
-        return false;
-    for (auto it = offsets.cbegin(); it != offsets.cend(); ++it)
-        m_workOffsets->set(it.key(), it.value());
-    connectMachine(); // the same port, now the machine's controller
-    return true;
 }
 
 } // namespace stepdeck::ui

@@ -3,12 +3,14 @@
 #include "common/IfChanged.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineMoveTracker.h"
 #include "machine/MachineWorkOffsets.h"
 #include "position/DroValueLabel.h"
 #include <QCoreApplication>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTimer>
 #include <QToolButton>
 
 namespace stepdeck::ui {
@@ -41,8 +43,11 @@ QString format(const machine::MachineAxis& axis, double value)
 
 MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
     : QWidget(parent), m_context(context), m_offsets(offsets), m_grid(new QGridLayout),
-      m_clear(new QToolButton(this)), m_message(new ElidedLabel(this))
+      m_clear(new QToolButton(this)), m_message(new ElidedLabel(this)),
+      m_moves(new MachineMoveTracker), m_moveTick(new QTimer(this))
 {
+    m_moveTick->setInterval(100);
+    connect(m_moveTick, &QTimer::timeout, this, &MachineDro::refresh);
     setObjectName(QStringLiteral("machineDro"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -64,6 +69,11 @@ MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWi
     rebuild();
 }
 
+MachineDro::~MachineDro()
+{
+    delete m_moves;
+}
+
 QStringList MachineDro::stateWords()
 {
     return {tr("NO LINK"), tr("MOVING"), tr("UNKNOWN"), tr("ESTIMATED"), tr("REFERENCED")};
@@ -82,6 +92,7 @@ void MachineDro::rebuild()
         delete item;
     }
     m_rows.clear();
+    m_moves->clear();
     m_message->clear();
     m_refusedAxis.clear();
     const machine::Machine* m = m_context->machine();
@@ -106,7 +117,7 @@ void MachineDro::rebuild()
         Row row{new DroValueLabel(this), new QLabel(this), new ElidedLabel(this)};
         row.value->setObjectName(QStringLiteral("machineDroValue") + axis.name);
         row.value->setDigitFont(big);
-        row.value->setUnit(unitWord(axis.unit));
+        row.value->setUnit(unitOf(axis));
         row.value->setReservedText(axis.unit == machine::AxisUnit::Step
                                        ? QStringLiteral("\u2248-0000000")
                                        : QStringLiteral("\u2248-00000.000"));
@@ -153,6 +164,72 @@ void MachineDro::refresh()
             m_refusedAxis.clear();
         }
     }
+    if (m_moves->anyMoving() && !m_moveTick->isActive())
+        m_moveTick->start();
+    else if (!m_moves->anyMoving())
+        m_moveTick->stop();
+}
+
+QString MachineDro::countWord(const machine::MachineAxis& axis) const
+{
+    // What the controller counts (Capabilities::positionUnit: laser axes count "units").
+    const ControllerSession* s =
+        m_context->machine() ? m_context->machine()->session(axis.controller) : nullptr;
+    return s ? QCoreApplication::translate("Units", s->capabilities().positionUnit)
+             : unitWord(machine::AxisUnit::Step);
+}
+
+QString MachineDro::unitOf(const machine::MachineAxis& axis) const
+{
+    return axis.unit == machine::AxisUnit::Step ? countWord(axis) : unitWord(axis.unit);
+}
+
+MoveProfile MachineDro::rampOf(const machine::MachineAxis& axis) const
+{
+    // The E-LAB ramp parameters by their schema names, as written or read in this session
+    // (known for the selected controller: the only one of a connection's machine).
+    if (axis.controller != m_context->selectedController())
+        return {};
+    const ParameterSet& known = m_context->knownParameters();
+    auto value = [&](const char* name) {
+        return known.value(QString::fromLatin1(name)).perAxis.value(axis.axis).toDouble();
+    };
+    return {value("start-speed"), value("max-speed"), value("acceleration")};
+}
+
+bool MachineDro::showMoveWithoutReadback(const Row& row, const machine::MachineAxisStatus& a)
+{
+    const machine::MachineAxis& axis = *a.axis;
+    const ControllerSession* s = m_context->machine()->session(axis.controller);
+    const bool readback = s && s->capabilities().positionReadback;
+    // A positioning move only: a jog's count is the host's integration of its rates, not a
+    // target (it is marked estimated as such).
+    const AxisStatus st = s ? s->status().axes.value(axis.axis) : AxisStatus{};
+    const bool positioning = st.moving && !st.jogging;
+    const bool track = !readback && a.known != machine::PositionKnowledge::Unknown;
+    const std::optional<MachineMoveTracker::Shown> shown =
+        m_moves->update(axis.name, a.steps, track && positioning, rampOf(axis));
+    if (!shown)
+        return false;
+    // The core counts the target already: where the axis probably is, else where it heads.
+    const QString target = format(axis, m_offsets->toWork(axis.name, axis.toUnits(shown->target)));
+    row.value->setText(
+        shown->estimate
+            ? QStringLiteral("\u2248") +
+                  format(axis, m_offsets->toWork(axis.name, axis.toUnits(*shown->estimate)))
+            : QStringLiteral("\u2192") + target);
+    row.detail->setText(tr("moving to %1 %2 (machine %3 %4)")
+                            .arg(target, unitOf(axis))
+                            .arg(shown->target)
+                            .arg(countWord(axis)));
+    setState(row, tr("MOVING"), kAmber, !shown->estimate,
+             shown->estimate
+                 ? tr("Estimated from the ramp parameters; the controller reports no position "
+                      "during a move. The target is shown below.")
+                 : tr("The controller reports no position during a move and the ramp "
+                      "parameters are not known in this session: the target is shown (\u2192), "
+                      "not where the axis is now."));
+    return true;
 }
 
 void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, bool linked)
@@ -164,17 +241,24 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
     // position it comes from (same mark, same badge); the line below: the machine position.
     const bool work = m_offsets->hasOffset(axis.name);
     QString text = format(axis, m_offsets->toWork(axis.name, a.position));
-    row.value->setUnit(work ? tr("%1 work").arg(unitWord(axis.unit)) : unitWord(axis.unit));
+    row.value->setUnit(work ? tr("%1 work").arg(unitOf(axis)) : unitOf(axis));
     row.value->setToolTip(
         work ? tr("Work position: the machine position minus the work zero of "
                   "%1 (machine %2 %3)")
-                   .arg(axis.name, format(axis, m_offsets->offset(axis.name)), unitWord(axis.unit))
+                   .arg(axis.name, format(axis, m_offsets->offset(axis.name)), unitOf(axis))
              : tr("Machine position (no work zero set for %1)").arg(axis.name));
-    row.detail->setText(tr("machine %1 %2, %3 axis %4: %5 steps")
-                            .arg(format(axis, a.position), unitWord(axis.unit), axis.controller,
-                                 axisName(axis.axis))
-                            .arg(a.steps));
+    // An axis in the controller's count says it once (the line must fit a 1366 px screen
+    // in German, issue 16).
+    row.detail->setText(
+        axis.unit == machine::AxisUnit::Step
+            ? tr("machine %1 %2 (%3 %4)")
+                  .arg(format(axis, a.position), unitOf(axis), axis.controller, axisName(axis.axis))
+            : tr("machine %1 %2, %3 axis %4: %5 %6")
+                  .arg(format(axis, a.position), unitOf(axis), axis.controller, axisName(axis.axis))
+                  .arg(a.steps)
+                  .arg(countWord(axis)));
     if (!linked) {
+        m_moves->forget(axis.name);
         row.value->setText(text);
         setState(row, tr("NO LINK"), kGrey, true,
                  tr("Controller \"%1\" is not connected: this is the last value known, not the "
@@ -182,6 +266,8 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
                      .arg(axis.controller));
         return;
     }
+    if (showMoveWithoutReadback(row, a))
+        return;
     if (a.known == machine::PositionKnowledge::Estimated)
         text.prepend(QStringLiteral("\u2248"));
     row.value->setText(text);
@@ -230,7 +316,7 @@ bool MachineDro::zeroAxis(const QString& axis)
     }
     m_refusedAxis.clear();
     m_message->setText(tr("Work origin of %1 set at machine %2 %3.")
-                           .arg(axis, format(*a, status.position), unitWord(a->unit)));
+                           .arg(axis, format(*a, status.position), unitOf(*a)));
     return true;
 }
 

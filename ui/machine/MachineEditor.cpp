@@ -136,6 +136,12 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     setModified(false);
 }
 
+void MachineEditor::startFrom(const MachineDescription& machine)
+{
+    setMachine(machine);
+    setModified(true); // not saved anywhere yet
+}
+
 void MachineEditor::startFromController(const ModelInfo& model, const QString& port,
                                         std::optional<LineSettings::ResetLine> resetLine)
 {

@@ -31,6 +31,9 @@ public:
                   QWidget* parent = nullptr);
 
     void setMachine(const machine::MachineDescription& machine, const QString& path = {});
+    // A new machine (not saved anywhere yet) that starts as `machine`: the connection bar's
+    // machine of one controller, to be saved as a file of its own.
+    void startFrom(const machine::MachineDescription& machine);
     void startFromController(const ModelInfo& model, const QString& port,
                              std::optional<LineSettings::ResetLine> resetLine = std::nullopt);
     // Loads a machine file into the editor; false (and the reason shown) when it is not one.

@@ -4,6 +4,7 @@
 #include "RecentMachines.h"
 #include "common/Dialogs.h"
 #include "connection/ConnectionSettings.h"
+#include "machine/Machine.h"
 #include "machine/MachineFile.h"
 #include <QAction>
 #include <QFileInfo>
@@ -107,9 +108,16 @@ void MachineFileActions::editMachine()
         editor->openFile(path); // an invalid file: the editor says why
         showEditor(editor);
     };
-    if (!m_current.isEmpty())
+    if (!m_current.isEmpty()) {
         edit(m_current);
-    else
+    } else if (m_context && m_context->isConnectionMachine()) {
+        // The connection bar's machine of one (issue 28, item 0): its axes as they are now,
+        // saved as a machine file of its own, which then opens in its place.
+        auto* editor = new MachineEditor(m_window);
+        editor->startFrom(m_context->machine()->description());
+        connect(editor, &MachineEditor::saved, this, &MachineFileActions::open);
+        showEditor(editor);
+    } else
         dialogs::openFile(m_window, QStringLiteral("machines"), tr("Edit machine"),
                           tr("StepDeck machines (*.machine.json);;JSON files (*.json)"), edit);
 }

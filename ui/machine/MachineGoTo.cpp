@@ -1,11 +1,13 @@
 #include "MachineGoTo.h"
 #include "common/ElidedLabel.h"
+#include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineWorkOffsets.h"
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -32,6 +34,8 @@ MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, Q
     layout->addWidget(m_result);
     m_target->setRange(-1e6, 1e6);
     m_go->setFocusPolicy(Qt::NoFocus);
+    // Enter in the target field goes there, like the button (issue 16).
+    m_target->installEventFilter(this);
     connect(m_go, &QPushButton::clicked, this, &MachineGoTo::go);
     connect(m_axis, &QComboBox::currentIndexChanged, this, &MachineGoTo::updateUnit);
     connect(context, &MachineContext::machineChanged, this, &MachineGoTo::rebuild);
@@ -43,6 +47,8 @@ void MachineGoTo::rebuild()
 {
     m_axis->clear();
     m_pending = 0;
+    disconnect(m_confirm);
+    m_go->setEnabled(true);
     m_result->clear();
     machine::Machine* m = m_context->machine();
     if (!m)
@@ -73,11 +79,27 @@ void MachineGoTo::updateUnit()
     m_target->setSuffix(QLatin1Char(' ') + machine::unitKey(a->unit));
 }
 
+bool MachineGoTo::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_target && event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+            go();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 void MachineGoTo::go()
 {
     machine::Machine* m = m_context->machine();
     if (!m || m_axis->currentIndex() < 0)
         return;
+    if (m_pending != 0) { // one go-to at a time: the next waits for the arrival of this one
+        m_result->setText(tr("Go-to refused: the last go-to is still moving."));
+        return;
+    }
     const QString axis = m_axis->currentData().toString();
     QString refusal;
     // Work coordinates to machine coordinates: the soft limits Machine::move checks are the
@@ -86,10 +108,13 @@ void MachineGoTo::go()
     // Refused as a whole before anything is sent: unknown or unreferenced axis, a controller
     // not connected, a target outside the soft limits (Machine::move).
     m_pending = m->move({{axis, target}}, true, &refusal);
+    m_pendingAxis = axis;
+    m_pendingTarget = target;
     const machine::MachineAxis* a = m->description().axis(axis);
     const QString machineTarget = a && a->unit == machine::AxisUnit::Step
                                       ? QString::number(qRound64(target))
                                       : QString::number(target, 'f', 3);
+    m_go->setEnabled(m_pending == 0);
     m_result->setText(!m_pending ? tr("Go-to refused: %1").arg(refusal)
                       : m_offsets->hasOffset(axis)
                           ? tr("Moving %1 to %2 (work; machine %3)\u2026")
@@ -102,8 +127,46 @@ void MachineGoTo::onFinished(quint64 id, bool ok, const QString& message)
     if (id == 0 || id != m_pending)
         return;
     m_pending = 0;
-    m_result->setText(ok ? tr("%1 arrived.").arg(m_axis->currentData().toString())
-                         : tr("Go-to failed: %1").arg(message));
+    m_go->setEnabled(true);
+    if (!ok) {
+        m_result->setText(tr("Go-to failed: %1").arg(message));
+        return;
+    }
+    // Machine::moveFinished says the axis stands. "Arrived" only where a status read asked
+    // for after that counts it at the target: a STOP ends a move short of it, and a board
+    // that reports no position (the E-LAB) corrects its count only after the stop
+    // (RequestRelPosition), ahead of that read.
+    const machine::Machine* m = m_context->machine();
+    const machine::MachineAxis* a = m ? m->description().axis(m_pendingAxis) : nullptr;
+    ControllerSession* session = a ? m->session(a->controller) : nullptr;
+    if (!session)
+        return;
+    m_result->setText(tr("%1 stands: reading its position\u2026").arg(a->name));
+    disconnect(m_confirm);
+    const RequestId read = session->refreshStatus();
+    m_confirm = connect(session, &ControllerSession::requestFinished, this,
+                        [this, read](const CommandResult& r) {
+                            if (r.id != read)
+                                return;
+                            disconnect(m_confirm);
+                            judgeArrival(r.ok());
+                        });
+}
+
+void MachineGoTo::judgeArrival(bool read)
+{
+    const machine::Machine* m = m_context->machine();
+    const machine::MachineAxis* a = m ? m->description().axis(m_pendingAxis) : nullptr;
+    if (!a)
+        return;
+    const machine::MachineAxisStatus status = m->axisStatus(*a);
+    const bool atTarget = read && status.known != machine::PositionKnowledge::Unknown &&
+                          qAbs(status.position - m_pendingTarget) * a->stepsPerUnit < 0.5;
+    m_result->setText(atTarget ? tr("%1 arrived.").arg(a->name)
+                      : !read  ? tr("%1 stands; its position could not be read.").arg(a->name)
+                               : tr("%1 stopped at %2 before its target %3.")
+                                    .arg(a->name, QString::number(status.position, 'f', 3),
+                                         QString::number(m_pendingTarget, 'f', 3)));
 }
 
 QString MachineGoTo::labelText() const

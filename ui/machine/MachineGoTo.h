@@ -16,8 +16,9 @@ class MachineWorkOffsets;
 // which refuses it with the reason (nothing sent) unless the axis is referenced and the target
 // within its soft limits. With a work zero set on the axis (MachineWorkOffsets) the target is
 // in work coordinates, and the label says so ("Go to (work)"): it becomes machine
-// coordinates before Machine::move, whose soft limits stay in machine coordinates. The line
-// below says what happened, on one line (elided).
+// coordinates before Machine::move, whose soft limits stay in machine coordinates. Enter in
+// the target field goes like the button. The line below says what happened, on one line
+// (elided): "arrived" only once the machine confirmed the arrival.
 class MachineGoTo : public QWidget
 {
     Q_OBJECT
@@ -31,12 +32,16 @@ public:
     QString labelText() const;
 
 public Q_SLOTS:
-    void go();
+    void go(); // refused while its last go-to still moves (one at a time)
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override; // Enter in the target: go()
 
 private:
     void rebuild();
     void updateUnit();
     void onFinished(quint64 id, bool ok, const QString& message);
+    void judgeArrival(bool read); // after the status read that follows the move's end
 
     MachineContext* m_context;
     MachineWorkOffsets* m_offsets;
@@ -45,7 +50,10 @@ private:
     QDoubleSpinBox* m_target;
     QPushButton* m_go;
     ElidedLabel* m_result;
+    QString m_pendingAxis;      // the axis of the go-to under way
+    double m_pendingTarget = 0; // its target in machine coordinates (the axis' unit)
     quint64 m_pending = 0;
+    QMetaObject::Connection m_confirm; // the status read that judges the arrival
 };
 
 } // namespace stepdeck::ui

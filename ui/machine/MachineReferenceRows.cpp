@@ -75,7 +75,7 @@ void MachineReferenceRows::rebuild()
                                    this);
         row.order = new QLabel(QString::number(a.referenceOrder), this);
         const QString tip =
-            tr("From the machine file: edit it with Machine \u2192 Edit machine\u2026");
+            tr("The machine's referencing: edit it with File \u2192 Edit machine\u2026");
         row.direction->setToolTip(tip);
         row.order->setToolTip(tip);
         row.led = new LedIndicator({}, this);

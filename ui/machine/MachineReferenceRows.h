@@ -15,8 +15,7 @@ class MachineContext;
 // The referencing rows of an open machine (issue 19): every logical axis with the direction
 // and order its machine file gives (read-only: the file is what Machine::reference follows,
 // so an editable field here would promise a run that does not happen), its referenced lamp
-// from Machine::axisStatus and a button that references that axis alone. The
-// single-controller rows of ReferencePanel stay hidden while a machine is open.
+// from Machine::axisStatus and a button that references that axis alone.
 class MachineReferenceRows : public QWidget
 {
     Q_OBJECT

@@ -1,9 +1,19 @@
 #include "MachineStopWatch.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
-#include "safety/StopFeedback.h"
 
 namespace stepdeck::ui {
+
+bool MachineStopWatch::motionIn(const MachineStatus& status)
+{
+    if (status.busy || status.motionUnconfirmed)
+        return true;
+    for (const AxisStatus& a : status.axes) {
+        if (a.moving || a.jogging || a.motionUnknown || a.commandedVelocity != 0.0)
+            return true;
+    }
+    return false;
+}
 
 MachineStopWatch::MachineStopWatch(QObject* parent) : QObject(parent)
 {
@@ -76,7 +86,7 @@ void MachineStopWatch::onResult(const QString& id, const CommandResult& result)
     const MachineStatus status = result.value.canConvert<MachineStatus>()
                                      ? result.value.value<MachineStatus>()
                                      : it->session->status();
-    if (!result.ok() || StopFeedback::motionIn(status))
+    if (!result.ok() || motionIn(status))
         return; // read again with the controller's next status (onStatus)
     it->stopped = true;
     for (const Watched& w : std::as_const(m_watched)) {

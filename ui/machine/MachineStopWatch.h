@@ -1,5 +1,6 @@
 #pragma once
 #include "model/CommandResult.h"
+#include "model/MachineStatus.h"
 #include <QMap>
 #include <QObject>
 #include <QStringList>
@@ -17,7 +18,7 @@ namespace stepdeck::ui {
 // Follows the stop (or panic) requests Machine::stop()/panic() returned, one per controller
 // (issue 19; "never claim a stop the device did not confirm"). A controller counts as
 // stopped only once its request was acknowledged and a status read asked for after that
-// shows nothing moving (StopFeedback::motionIn); a read that still shows motion is repeated
+// shows nothing moving (motionIn); a read that still shows motion is repeated
 // with the controller's next status. Ends with confirmed() once every controller did, or
 // with notConfirmed() for the first one that refused the request, lost its link or did not
 // report standstill within kConfirmMs. Host-side only; it never sends a stop itself.
@@ -26,6 +27,9 @@ class MachineStopWatch : public QObject
     Q_OBJECT
 public:
     static constexpr int kConfirmMs = 5000;
+    // Whether anything may be moving as far as the status tells (axes, jog rates, busy, a
+    // silent drive's unconfirmed motion).
+    static bool motionIn(const MachineStatus& status);
 
     explicit MachineStopWatch(QObject* parent = nullptr);
 

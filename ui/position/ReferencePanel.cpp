@@ -1,36 +1,20 @@
 #include "ReferencePanel.h"
 #include "common/ElidedLabel.h"
-#include "common/IfChanged.h"
-#include "common/LayoutItems.h"
-#include "common/LedIndicator.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineReferenceRows.h"
-#include "position/ReferenceRunner.h"
-#include <QComboBox>
-#include <QGridLayout>
-#include <QLabel>
+#include <QBoxLayout>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSettings>
-#include <QSpinBox>
 
 namespace stepdeck::ui {
 
 ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_runner(new ReferenceRunner(context, this)),
-      m_grid(new QGridLayout), m_all(new QPushButton(tr("Reference all"), this)),
+    : QWidget(parent), m_context(context), m_all(new QPushButton(tr("Reference all"), this)),
       m_cancel(new QPushButton(tr("Cancel"), this)), m_progress(new QProgressBar(this)),
       m_message(new ElidedLabel(this, 2)), m_machineRows(new MachineReferenceRows(context, this))
 {
     auto* layout = new QVBoxLayout(this);
-    // The controller's own rows, or the machine's (read-only, from its file) while one is open.
-    auto* controllerRows = new QWidget(this);
-    controllerRows->setObjectName(QStringLiteral("controllerReferenceRows"));
-    controllerRows->setLayout(m_grid);
-    m_grid->setContentsMargins(0, 0, 0, 0);
-    m_controllerRows = controllerRows;
-    layout->addWidget(controllerRows);
     layout->addWidget(m_machineRows);
     auto* row = new QHBoxLayout;
     row->addWidget(m_all, 1);
@@ -52,9 +36,6 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
 
     connect(m_all, &QPushButton::clicked, this, &ReferencePanel::referenceAll);
     connect(m_cancel, &QPushButton::clicked, this, &ReferencePanel::cancel);
-    connect(m_runner, &ReferenceRunner::progress, this, &ReferencePanel::onProgress);
-    connect(m_runner, &ReferenceRunner::finished, this, &ReferencePanel::onFinished);
-    connect(context, &MachineContext::modelChanged, this, &ReferencePanel::rebuild);
     connect(context->session(), &ControllerSession::statusChanged, this, &ReferencePanel::onStatus);
     connect(context->session(), &ControllerSession::linkStateChanged, this,
             [this] { onStatus(m_context->status()); });
@@ -68,101 +49,14 @@ ReferencePanel::ReferencePanel(MachineContext* context, QWidget* parent)
                 if (machine::Machine* m = m_context->machine())
                     referenceMachine(m, axes);
             });
-    rebuild();
     showMachineOrNot();
 }
 
 void ReferencePanel::showMachineOrNot()
 {
-    const bool machine = m_context->hasMachine();
-    m_controllerRows->setVisible(!machine);
-    m_machineRows->setVisible(machine);
-    m_all->setToolTip(machine ? tr("Reference every axis of the machine in the order and "
-                                   "directions of its file (equal orders run together)")
-                              : tr("Reference every axis in the order given (equal numbers run "
-                                   "together)"));
+    m_all->setToolTip(tr("Reference every axis of the machine in the order and directions of "
+                         "its description (equal orders run together)"));
     onStatus(m_context->status());
-}
-
-void ReferencePanel::rebuild()
-{
-    deleteLayoutItems(m_grid);
-    m_rows.clear();
-    m_grid->addWidget(new QLabel(tr("Axis"), this), 0, 0);
-    m_grid->addWidget(new QLabel(tr("Direction"), this), 0, 1);
-    m_grid->addWidget(new QLabel(tr("Order"), this), 0, 2);
-    m_grid->addWidget(new QLabel(tr("State"), this), 0, 3);
-    // Some controllers choose the direction of their reference runs themselves (EMIS 9.9).
-    const bool directed = m_context->capabilities().referenceDirection;
-    int r = 1;
-    for (Axis axis : m_context->axes()) {
-        Row row;
-        row.direction = new QComboBox(this);
-        if (directed) {
-            row.direction->addItem(tr("\u2212 (negative)"), -1);
-            row.direction->addItem(tr("+ (positive)"), 1);
-        } else {
-            row.direction->addItem(tr("reference"), 1);
-            row.direction->setToolTip(
-                tr("The controller chooses the direction of its reference run itself"));
-        }
-        row.direction->addItem(tr("skip"), 0);
-        // The settings (MachineContext::referenceDirection); a model that picks the direction
-        // itself stores 1 for "reference".
-        const int stored = m_context->referenceDirection(axis);
-        const int wanted = directed ? stored : (stored == 0 ? 0 : 1);
-        const int index = row.direction->findData(wanted);
-        row.direction->setCurrentIndex(index >= 0 ? index
-                                                  : row.direction->findData(directed ? -1 : 1));
-        row.order = new QSpinBox(this);
-        row.order->setRange(1, 4);
-        row.order->setValue(m_context->referenceOrder(axis));
-        row.order->setToolTip(tr("Axes with the same number are referenced together; lower "
-                                 "numbers first"));
-        // The lamp alone (its state in the tooltip; the DRO says REFERENCED or UNKNOWN):
-        // "unknown (no link)" beside it pushed the Reference buttons off the dock.
-        row.led = new LedIndicator({}, this);
-        row.run = new QPushButton(tr("Reference %1").arg(axisName(axis)), this);
-        row.run->setFocusPolicy(Qt::NoFocus);
-        connect(row.run, &QPushButton::clicked, this, [this, axis] { referenceAxis(axis); });
-        connect(row.direction, &QComboBox::currentIndexChanged, this, &ReferencePanel::store);
-        connect(row.order, &QSpinBox::valueChanged, this, &ReferencePanel::store);
-        auto* name = new QLabel(axisName(axis), this);
-        QFont f = name->font();
-        f.setBold(true);
-        name->setFont(f);
-        m_grid->addWidget(name, r, 0);
-        m_grid->addWidget(row.direction, r, 1);
-        m_grid->addWidget(row.order, r, 2);
-        m_grid->addWidget(row.led, r, 3, Qt::AlignCenter);
-        m_grid->addWidget(row.run, r, 4);
-        m_rows.insert(axis, row);
-        ++r;
-    }
-    onStatus(m_context->status());
-}
-
-void ReferencePanel::store()
-{
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
-        m_context->setReference(it.key(), it.value().direction->currentData().toInt(),
-                                it.value().order->value());
-}
-
-QMap<Axis, int> ReferencePanel::directions() const
-{
-    QMap<Axis, int> out;
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
-        out.insert(it.key(), it.value().direction->currentData().toInt());
-    return out;
-}
-
-QMap<Axis, int> ReferencePanel::order() const
-{
-    QMap<Axis, int> out;
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it)
-        out.insert(it.key(), it.value().order->value());
-    return out;
 }
 
 QString ReferencePanel::messageText() const
@@ -172,21 +66,30 @@ QString ReferencePanel::messageText() const
 
 void ReferencePanel::referenceAll()
 {
-    if (machine::Machine* m = m_context->machine()) {
+    if (machine::Machine* m = m_context->machine())
         referenceMachine(m, {});
-        return;
-    }
-    m_runner->start(ReferenceRunner::plan(directions(), order()));
 }
 
-// With a machine open, "Reference all" is the machine's: every axis of every controller in the
-// file's order and directions (Machine::reference), not this panel's per-controller plan.
+// Every axis of every controller in the description's order and directions
+// (Machine::reference).
 void ReferencePanel::referenceMachine(machine::Machine* m, const QStringList& axes)
 {
     if (m_listenedMachine != m)
         listenTo(m);
+    // The bar counts the groups (equal orders run together) the machine confirmed: no more
+    // is known of how far a run to a switch has come.
+    QSet<int> orders;
+    for (const machine::MachineAxis& a : m->description().axes)
+        if (axes.isEmpty() || axes.contains(a.name))
+            orders.insert(a.referenceOrder);
+    m_groups = int(qMax(qsizetype(1), orders.size()));
+    m_groupsStarted = 0;
+    onProgress(0, m_groups, tr("Referencing\u2026"));
     QString refusal;
+    // The first group may start inside reference(), before its id is known here.
+    m_startingRun = true;
     m_machineRun = m->reference(axes, &refusal);
+    m_startingRun = false;
     m_machineRunAxes = axes;
     if (m_machineRun == 0) {
         onFinished(false, tr("Referencing refused: %1").arg(refusal));
@@ -201,10 +104,12 @@ void ReferencePanel::listenTo(machine::Machine* m)
     m_listenedMachine = m;
     connect(m, &machine::Machine::referenceGroupStarted, this,
             [this](quint64 id, const QStringList& axes) {
-                if (id != m_machineRun)
+                if (id != m_machineRun && !m_startingRun)
                     return;
                 m_machineRows->setRunningAxes(axes);
-                onProgress(0, 1, tr("Referencing %1\u2026").arg(axes.join(QStringLiteral(", "))));
+                // The groups before this one ended referenced.
+                onProgress(m_groupsStarted++, m_groups,
+                           tr("Referencing %1\u2026").arg(axes.join(QStringLiteral(", "))));
             });
     connect(m, &machine::Machine::referenceFinished, this,
             [this](quint64 id, bool ok, const QString& message) {
@@ -216,49 +121,36 @@ void ReferencePanel::listenTo(machine::Machine* m)
                     m_machineRunAxes.isEmpty()
                         ? tr("Every axis of the machine is referenced.")
                         : tr("%1 referenced.").arg(m_machineRunAxes.join(QStringLiteral(", ")));
+                if (ok)
+                    onProgress(m_groups, m_groups, done);
                 onFinished(ok, ok ? done : tr("Referencing failed: %1").arg(message));
             });
 }
 
-void ReferencePanel::referenceAxis(Axis axis)
-{
-    int direction = directions().value(axis);
-    if (direction == 0)
-        direction = m_context->capabilities().referenceDirection ? -1 : 1; // the default
-    m_runner->start({ReferenceRunner::Stage{{axis, direction}}});
-}
-
 void ReferencePanel::cancel()
 {
+    // Said first: the machine ends its run inside stop(), and that failure is this cancel.
+    stopped(tr("Referencing cancelled."));
     m_context->stop();
-    m_runner->cancel(tr("Referencing cancelled."));
+}
+
+void ReferencePanel::stopped(const QString& message)
+{
+    if (m_machineRun == 0)
+        return;
+    m_machineRun = 0; // its failure, when it arrives, is this stop's
+    m_machineRows->setRunningAxes({});
+    onFinished(false, message);
 }
 
 void ReferencePanel::onStatus(const MachineStatus& status)
 {
-    // Referencing needs a connection (with a machine: any of its controllers; the machine
-    // refuses a run whose controller is not connected, saying which) and no run in progress.
-    const bool live = machineConnected() || m_context->isConnected();
-    const bool idle = !m_runner->isRunning() && m_machineRun == 0;
+    // Referencing needs a connection (any of the machine's controllers; the machine refuses a
+    // run whose controller is not connected, saying which) and no run in progress.
+    const bool live = machineConnected();
+    const bool idle = m_machineRun == 0;
     m_all->setEnabled(live && idle);
     m_machineRows->setRunsEnabled(live && idle);
-    for (const Row& row : std::as_const(m_rows))
-        row.run->setEnabled(live && idle);
-    for (auto it = m_rows.cbegin(); it != m_rows.cend(); ++it) {
-        const AxisStatus a = status.axes.value(it.key());
-        const bool running = m_runner->currentAxes().contains(it.key());
-        LedIndicator* led = it.value().led;
-        if (!live) {
-            led->setState(LedIndicator::State::Unknown);
-            setToolTipIfChanged(led, tr("unknown (no link)"));
-        } else if (running) {
-            led->setState(LedIndicator::State::Warning);
-            setToolTipIfChanged(led, tr("referencing\u2026"));
-        } else {
-            led->setOn(a.referenced);
-            setToolTipIfChanged(led, a.referenced ? tr("referenced") : tr("not referenced"));
-        }
-    }
     // "All selected axes are referenced" holds only while they are.
     if (!live) {
         invalidateSuccess(tr("the link is down"));
@@ -302,7 +194,7 @@ void ReferencePanel::onProgress(int stage, int stages, const QString& text)
     m_progress->setValue(stage);
     m_message->setText(text);
     m_message->setStyleSheet(QString());
-    m_cancel->setEnabled(m_runner->isRunning());
+    m_cancel->setEnabled(m_machineRun != 0);
     onStatus(m_context->status());
 }
 

@@ -3,12 +3,8 @@
 #include <QPointer>
 #include <QWidget>
 
-class QComboBox;
-class QGridLayout;
-class QLabel;
 class QProgressBar;
 class QPushButton;
-class QSpinBox;
 
 namespace stepdeck::machine {
 class Machine;
@@ -17,40 +13,31 @@ class Machine;
 namespace stepdeck::ui {
 
 class ElidedLabel;
-class LedIndicator;
 class MachineContext;
 class MachineReferenceRows;
-class ReferenceRunner;
 
-// Referencing (homing): direction and order per axis (default Z first, then X and Y),
-// "Reference all" and per-axis runs, progress, and which axes are referenced.
+// Referencing (homing) of the machine (every connection is one, issue 28 item 0): its axes
+// with the direction and order of its description (MachineReferenceRows), "Reference all"
+// (Machine::reference: every axis in that order) and per-axis runs, progress, and which axes
+// are referenced.
 class ReferencePanel : public QWidget
 {
     Q_OBJECT
 public:
     explicit ReferencePanel(MachineContext* context, QWidget* parent = nullptr);
 
-    ReferenceRunner* runner() const { return m_runner; }
-    QMap<Axis, int> directions() const;
-    QMap<Axis, int> order() const;
     QString messageText() const;
+    bool isRunning() const { return m_machineRun != 0; }
     MachineReferenceRows* machineRows() const { return m_machineRows; }
 
 public Q_SLOTS:
     void referenceAll();
-    void referenceAxis(Axis axis);
     void cancel();
+    // A STOP or PANIC from elsewhere ended the run: it says so (the machine's run fails too;
+    // this is what the panel shows before that arrives).
+    void stopped(const QString& message);
 
 private:
-    struct Row
-    {
-        QComboBox* direction = nullptr;
-        QSpinBox* order = nullptr;
-        LedIndicator* led = nullptr;
-        QPushButton* run = nullptr;
-    };
-    void rebuild();
-    void store();
     void referenceMachine(machine::Machine* m, const QStringList& axes);
     void showMachineOrNot();
     bool machineConnected() const;
@@ -62,10 +49,6 @@ private:
     void invalidateSuccess(const QString& cause);
 
     MachineContext* m_context;
-    ReferenceRunner* m_runner;
-    QGridLayout* m_grid;
-    QWidget* m_controllerRows = nullptr;
-    QMap<Axis, Row> m_rows;
     QPushButton* m_all;
     QPushButton* m_cancel;
     QProgressBar* m_progress;
@@ -73,6 +56,9 @@ private:
     MachineReferenceRows* m_machineRows;
     quint64 m_machineRun = 0;     // the machine's reference run under way (Machine::reference)
     QStringList m_machineRunAxes; // its axes; empty: all
+    int m_groups = 1;             // its groups of equal order (the progress bar's range)
+    int m_groupsStarted = 0;
+    bool m_startingRun = false; // inside Machine::reference (its id not known yet)
     QPointer<machine::Machine> m_listenedMachine;
     QList<Axis> m_successAxes; // referenced by the last successful run, still referenced
 };

@@ -27,7 +27,6 @@ constexpr int kRecheckDelayMs = 400;
 
 ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this)),
-      m_useController(new QPushButton(tr("Use the connected controller"), this)),
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
       m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
       m_controls(new ProgramControls(this)), m_recheck(new QTimer(this)),
@@ -36,13 +35,6 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     setObjectName(QStringLiteral("programPage"));
     m_files = new ProgramFiles(m_editor, this);
     m_machineNote->setObjectName(QStringLiteral("programMachineNote"));
-    m_useController->setObjectName(QStringLiteral("programUseController"));
-    m_useController->setToolTip(
-        tr("Open the controller connected now as a machine of one controller, in its own "
-           "steps, so that programs can run on it"));
-    QSizePolicy keep = m_useController->sizePolicy();
-    keep.setRetainSizeWhenHidden(true);
-    m_useController->setSizePolicy(keep);
     m_check->setObjectName(QStringLiteral("programCheck"));
     m_recheck->setSingleShot(true);
     m_recheck->setInterval(kRecheckDelayMs);
@@ -57,7 +49,6 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_files, &ProgramFiles::message, this,
             [this](const QString& text) { m_banner->setStatus(text); });
     connect(m_files, &ProgramFiles::loaded, this, [this] { checkNow(); });
-    connect(m_useController, &QPushButton::clicked, this, &ProgramPage::useConnectedController);
     connect(m_banner, &ProgramPromptBanner::resumeRequested, this, [this] {
         if (m_runner)
             m_runner->resume();
@@ -100,7 +91,6 @@ void ProgramPage::buildLayout()
     auto* lines = new QHBoxLayout;
     lines->addWidget(m_banner, 2);
     lines->addWidget(m_machineNote, 1);
-    lines->addWidget(m_useController);
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->setObjectName(QStringLiteral("programSplitter"));
     split->addWidget(m_editor);
@@ -167,21 +157,11 @@ void ProgramPage::onMachineChanged()
             tr("Runs on %1 (axes %2)")
                 .arg(machine->description().name, axes.join(QStringLiteral(", "))));
     } else {
-        m_machineNote->setText(tr("Programs run on a machine: open a machine file, or use the "
-                                  "connected controller."));
+        m_machineNote->setText(tr("Programs run on a machine: choose a model on the connection "
+                                  "bar or open a machine file."));
     }
     m_machineNote->setToolTip(m_machineNote->text());
     checkNow();
-}
-
-void ProgramPage::useConnectedController()
-{
-    const ModelInfo* model = m_context->model();
-    if (!model || !m_context->session()->isCreated() || m_context->hasMachine())
-        return;
-    QString error;
-    if (!m_context->openConnectedControllerAsMachine(&error))
-        m_banner->setStatus(error);
 }
 
 std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>* errors) const

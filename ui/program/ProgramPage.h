@@ -47,7 +47,6 @@ public:
     ProgramPromptBanner* promptBanner() const { return m_banner; }
     ProgramFiles* files() const { return m_files; }
     program::ProgramRunner* runner() const { return m_runner; }
-    QPushButton* useControllerButton() const { return m_useController; }
     QString checkText() const;
     QString messageText() const;
     bool isRunning() const;
@@ -70,7 +69,6 @@ private:
     void onMachineChanged();
     void onMachineStatus();
     bool rulesFactsChanged() const; // since the last check (m_checkedParameters, ...)
-    void useConnectedController();
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
     bool start(int fromLine, bool stepOnly);
     void showCheck(const program::ProgramCheckResult& result);
@@ -89,7 +87,6 @@ private:
     MachineContext* m_context;
     ProgramFiles* m_files;
     ElidedLabel* m_machineNote;
-    QPushButton* m_useController;
     ElidedLabel* m_check;
     ProgramEditor* m_editor;
     ProgramPreviewView* m_preview;

@@ -166,9 +166,6 @@ void ProgramPage::updateControls()
         ms != machine::MachineState::Disconnected && ms != machine::MachineState::LinkLost;
     const bool pausePending = m_runner && m_runner->pausePending();
     m_controls->setState(state, pausePending, m_checkOk && connected);
-    m_useController->setVisible(!machine);
-    m_useController->setEnabled(!machine && m_context->model() &&
-                                m_context->session()->isCreated() && m_context->isConnected());
     if (!m_runner)
         return;
     const int line = m_runner->currentLine();

@@ -22,13 +22,11 @@
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
-#include "position/ReferenceRunner.h"
 #include "program/ProgramPage.h"
 #include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
 #include "safety/SafetyBar.h"
 #include "safety/SafetyKeyFilter.h"
-#include "safety/StopFeedback.h"
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include "window/ScreenBound.h"
@@ -123,7 +121,6 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     });
     // A refusal whose cause has ended (the emergency stop was released) is no longer true.
     connect(m_jog, &JogController::refusalEnded, this, [this] { m_messages->clear(Owner::Jog); });
-    m_stopFeedback = new StopFeedback(m_context, m_messages, this);
     connect(session, &ControllerSession::statusChanged, this, [this](const MachineStatus& s) {
         if (!s.panic)
             m_messages->clear(Owner::Safety);
@@ -193,7 +190,7 @@ void MainWindow::buildActions()
     m_connectAction = new QAction(tr("&Connect / Disconnect"), this);
     m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
     connect(m_connectAction, &QAction::triggered, this, [this] {
-        if (m_context->hasMachine())
+        if (m_context->hasMachineFile())
             m_machineBar->toggleConnection();
         else
             m_connection->toggleConnection();
@@ -221,7 +218,6 @@ void MainWindow::buildDocks()
     m_drivePanel = new DrivePanel(m_context, this);
     m_records = new RecordsPage(m_context, this);
     connect(m_referenceAction, &QAction::triggered, m_reference, &ReferencePanel::referenceAll);
-    m_position->setReferenceRunner(m_reference->runner());
     connect(m_keyboardAction, &QAction::toggled, m_jogPanel->keyboardCheck(),
             &QCheckBox::setChecked);
 
@@ -311,6 +307,8 @@ void MainWindow::buildMenus()
     auto* machineFiles = new MachineFileActions(m_context, this);
     m_machineFiles = machineFiles;
     machineFiles->addTo(file);
+    connect(m_position, &PositionPanel::editMachineRequested, machineFiles,
+            &MachineFileActions::editMachine);
     // An opened machine is the one "Edit machine…" edits; an invalid file opens nothing and
     // its message names the field.
     connect(machineFiles, &MachineFileActions::openRequested, this,
@@ -433,40 +431,23 @@ QDockWidget* MainWindow::addPage(QWidget* page, const QString& title, const QStr
 
 void MainWindow::stopAll()
 {
-    const bool moving = m_jog->isJogging() || StopFeedback::motionIn(m_context->status());
     m_jogPanel->releaseAll();
-    m_reference->runner()->cancel(tr("Referencing stopped."));
-    if (m_context->hasMachine()) {
-        m_machineControl->stop(); // every controller at once
-        // Then a running program ends as aborted (not failed by the stop it did not ask
-        // for): its results come later, queued from the controller threads.
-        m_programPage->abortRun();
-        return;
-    }
-    if (!m_context->session()->isCreated()) {
-        showError(tr("Stop: not connected"));
-        return;
-    }
-    // Sent, not confirmed: "stopped" follows only once the controller reports standstill.
-    m_stopFeedback->stopSent(m_context->session()->stop(), moving);
+    m_reference->stopped(tr("Referencing stopped."));
+    // Every controller at once; sent, not confirmed: "stopped" follows only once each
+    // reports standstill (MachineControl).
+    m_machineControl->stop();
+    // Then a running program ends as aborted (not failed by the stop it did not ask for): its
+    // results come later, queued from the controller threads.
+    m_programPage->abortRun();
 }
 
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
-    if (m_context->hasMachine()) {
-        m_machineControl->panic(); // every controller at once
-        // After the panic, so that the program's own stop never goes ahead of it.
-        m_programPage->abortRun();
-        return;
-    }
-    if (!m_context->session()->isCreated()) {
-        showError(tr("Panic: not connected"));
-        return;
-    }
-    m_context->panic();
-    m_messages->show(StatusMessages::Owner::Safety,
-                     tr("PANIC STOP sent: positions are lost, reference all axes before moving."));
+    m_machineControl->panic(); // every controller at once
+    // After the panic, so that the program's own stop never goes ahead of it.
+    m_programPage->abortRun();
+    m_reference->stopped(tr("Referencing stopped."));
 }
 
 void MainWindow::showError(const QString& message)
@@ -510,13 +491,13 @@ void MainWindow::closeMachine()
 {
     m_jogPanel->releaseAll();
     m_programPage->abortRun();
-    m_reference->runner()->cancel(tr("Referencing stopped."));
+    m_reference->stopped(tr("Referencing stopped."));
     m_context->closeMachine();
 }
 
 void MainWindow::updateTitle()
 {
-    if (m_context->hasMachine()) {
+    if (m_context->hasMachineFile()) {
         setWindowTitle(m_machineControl->title());
         return;
     }
@@ -524,7 +505,7 @@ void MainWindow::updateTitle()
     QString title = QStringLiteral("StepDeck");
     if (model)
         title += QStringLiteral(" \u2014 ") + modelDisplayName(*model);
-    if (m_context->session()->isCreated()) {
+    if (m_context->isConnected()) {
         const QString port =
             m_context->portName() == QLatin1String("sim") ? tr("simulator") : m_context->portName();
         title += QStringLiteral(" @ ") + port;

@@ -33,7 +33,6 @@ class ReferencePanel;
 class SafetyBar;
 class SafetyKeyFilter;
 class StatusMessages;
-class StopFeedback;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
@@ -157,7 +156,6 @@ private:
     StatusMessages* m_messages;
     MessageLine* m_messageLine;
     MessageLog* m_log = nullptr;
-    StopFeedback* m_stopFeedback = nullptr;
     QByteArray m_defaultState;
 };
 

@@ -17,8 +17,7 @@ SimulatorMenu::SimulatorMenu(MachineContext* context, QWidget* parent)
     connect(m_context, &MachineContext::machineChanged, this, [this] { m_settable.clear(); });
 }
 
-// Every controller of the connection that runs on an in-process simulator, with its id
-// (empty for a single controller).
+// Every controller of the machine that runs on an in-process simulator, with its id.
 QList<QPair<QString, ControllerSession*>> SimulatorMenu::simulatedSessions() const
 {
     QList<QPair<QString, ControllerSession*>> out;
@@ -28,10 +27,7 @@ QList<QPair<QString, ControllerSession*>> SimulatorMenu::simulatedSessions() con
             if (s && s->isSimulated())
                 out.append({c.id, s});
         }
-        return out;
     }
-    if (ControllerSession* s = m_context->session(); s && s->isSimulated())
-        out.append({QString(), s});
     return out;
 }
 

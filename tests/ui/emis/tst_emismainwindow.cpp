@@ -6,6 +6,8 @@
 #include "common/LedIndicator.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
+#include "machine/MachineDro.h"
+#include "machine/MachineReferenceRows.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "programs/InputProgramsPage.h"
@@ -74,10 +76,10 @@ void TestEmisMainWindow::uAxis_everywhere()
     QVERIFY(w->jogPanel()->uStick()->isVisibleTo(w));
     QVERIFY(w->setupPage()->field("work-speed", Axis::U));
     QVERIFY(w->setupPage()->field("reference-switch-type", Axis::U));
-    QCOMPARE(w->referencePanel()->directions().keys(),
-             (QList<Axis>{Axis::X, Axis::Y, Axis::Z, Axis::U}));
+    QCOMPARE(w->referencePanel()->machineRows()->axisNames(), (QStringList{"U", "X", "Y", "Z"}));
     QCOMPARE(w->context()->axes().size(), 4);
-    QVERIFY(!w->positionPanel()->displayedValue(Axis::U).isEmpty()); // a U row in the panel
+    // A U row in the read-out.
+    QVERIFY(!w->positionPanel()->machineDro()->displayedValue(QStringLiteral("U")).isEmpty());
     auto* programsDock = w->dockOf(w->inputProgramsPage());
     QVERIFY(programsDock && programsDock->toggleViewAction()->isVisible());
 }
@@ -111,10 +113,9 @@ void TestEmisMainWindow::uStick_jogsInChunks_releaseSendsNoMore()
 void TestEmisMainWindow::reference_noDirection_allReferenced()
 {
     ui::ReferencePanel* panel = m_f->window->referencePanel();
-    auto* combo = panel->findChild<QComboBox*>();
-    QVERIFY(combo);
-    QCOMPARE(combo->count(), 2); // "reference" and "skip": the board picks the direction
-    QCOMPARE(panel->directions().value(Axis::U), 1);
+    // The board picks the direction of its reference runs itself (EMIS 9.9).
+    QCOMPARE(panel->machineRows()->directionText(QStringLiteral("U")),
+             QStringLiteral("controller chooses"));
     panel->referenceAll();
     QTRY_VERIFY_WITH_TIMEOUT(panel->messageText().contains("referenced"), 15000);
     for (Axis a : allAxes())

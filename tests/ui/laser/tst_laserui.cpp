@@ -8,6 +8,7 @@
 #include "connection/ConnectionBar.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
+#include "machine/MachineDro.h"
 #include "position/PositionPanel.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include "setup/SetupPage.h"
@@ -53,12 +54,12 @@ void TestLaserUi::init()
 
 void TestLaserUi::readOut_namesUnitsNotSteps()
 {
-    ui::MachineContext* context = m_f->window->context();
-    QCOMPARE(context->unitName(Axis::X), QStringLiteral("units"));
-    QTRY_VERIFY2(
-        m_f->window->positionPanel()->detailText(Axis::X).endsWith(QStringLiteral(" units")),
-        qPrintable(m_f->window->positionPanel()->detailText(Axis::X)));
-    QVERIFY(!m_f->window->positionPanel()->detailText(Axis::X).contains(QStringLiteral("steps")));
+    // The connection's machine: its axes count what the controller counts, named so.
+    ui::MachineDro* dro = m_f->window->positionPanel()->machineDro();
+    QTRY_COMPARE(dro->unitText(QStringLiteral("X")), QStringLiteral("units"));
+    QTRY_VERIFY2(dro->detailText(QStringLiteral("X")).startsWith(QStringLiteral("machine 0 units")),
+                 qPrintable(dro->detailText(QStringLiteral("X"))));
+    QVERIFY(!dro->detailText(QStringLiteral("X")).contains(QStringLiteral("steps")));
     // The commanded jog rates too.
     QStringList rateUnits;
     for (QLabel* label : m_f->window->jogPanel()->findChildren<QLabel*>()) {

@@ -27,3 +27,13 @@ endforeach()
 # The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
 stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
                   LABELS unit LIBS stepdeck_ui)
+# The machine's read-out and go-to on the connection bar's controller (issue 28, item 0),
+# against the in-process simulator.
+foreach(_test tst_machinedro tst_machinegoto tst_machinecontrol)
+  stepdeck_add_test(${_test} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_test}.cpp
+                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                    LABELS ui LIBS stepdeck_ui)
+endforeach()
+# The read-out's estimate of a positioning move without position read-back (pure).
+stepdeck_add_test(tst_moveestimate SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_moveestimate.cpp
+                  LABELS unit LIBS stepdeck_ui)

@@ -4,9 +4,12 @@
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
 #include "connection/ConnectionSettings.h"
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
 #include "machine/MachineFileActions.h"
 #include "machine/RecentMachines.h"
 #include "messages/StatusMessages.h"
+#include "position/PositionPanel.h"
 #include <QAbstractButton>
 #include <QMenu>
 #include <QMenuBar>
@@ -31,6 +34,7 @@ private Q_SLOTS:
     void newMachine_connected_startsFromThatController();
     void newMachine_notConnected_opensValidNewMachine();
     void editorSaved_isRemembered();
+    void edit_connectionMachine_startsFromItsAxesSavedFileOpens();
     void newMachine_whileEditorHasChanges_asksFirst();
     void closeWindow_editorHasChanges_asksCancelKeepsBothDiscardClosesBoth();
     void editorOpen_escInACell_stillStops();
@@ -182,6 +186,34 @@ void TestMachineFileActions::editorSaved_isRemembered()
     const QString path = dir.filePath(QStringLiteral("copy.machine.json"));
     QVERIFY(editor->saveTo(path));
     QCOMPARE(recent::list().first(), path);
+    editor->close();
+    QTRY_VERIFY(!actions->editor());
+}
+
+// Issue 28, item 0: the connection bar's controller is a machine of one; Edit machine… (and
+// the Position dock's "Units and limits…") edits its axes and saves them as a machine file,
+// which the window then opens in its place.
+void TestMachineFileActions::edit_connectionMachine_startsFromItsAxesSavedFileOpens()
+{
+    UiFixture f;
+    QVERIFY(f.connectSim());
+    QVERIFY(f.window->context()->isConnectionMachine());
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    auto* unitsButton =
+        f.window->positionPanel()->findChild<QAbstractButton*>(QStringLiteral("editMachineAxes"));
+    QVERIFY(unitsButton);
+    unitsButton->click();
+    ui::MachineEditor* editor = actions->editor();
+    QVERIFY(editor);
+    QVERIFY(editor->isModified()); // not saved anywhere yet
+    const std::optional<MachineDescription> edited = editor->machine();
+    QVERIFY(edited);
+    QCOMPARE(*edited, f.window->context()->machine()->description());
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("elab.machine.json"));
+    QVERIFY(editor->saveTo(path));
+    QTRY_VERIFY(f.window->context()->hasMachine() && !f.window->context()->isConnectionMachine());
+    QCOMPARE(f.window->context()->machinePath(), path);
     editor->close();
     QTRY_VERIFY(!actions->editor());
 }

@@ -43,7 +43,7 @@ private Q_SLOTS:
     void openMachine_twoControllers_titleSelectorAndSelectedSession();
     void selectController_pagesRebuildOnTheOtherSession();
     void connectAll_bothLampsConnected_disconnectAllClosesBoth();
-    void closeMachine_singleControllerBarBackAndConnectable();
+    void closeMachine_connectionBarBackItsMachineOfOneConnectable();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
     void machineBar_longNamesAndPorts_elidedFullTextInTooltip();
     void connect_machineFileWithSetup_windowSaysItWroteIt();
@@ -63,8 +63,9 @@ void TestMachineWindow::openMachine_invalidFile_messageNamesTheFieldNothingOpene
     QVERIFY(!window()->openMachine(m_rig.writeFile(json)));
     QVERIFY2(window()->lastError().contains(QStringLiteral("axes[2].stepsPerUnit")),
              qPrintable(window()->lastError()));
-    QVERIFY(!window()->context()->hasMachine());
-    QCOMPARE(window()->context()->session(), m_rig.f->session); // the single controller's
+    // What was open stays: the connection bar's machine, on its session.
+    QVERIFY(window()->context()->isConnectionMachine());
+    QCOMPARE(window()->context()->session(), m_rig.f->session);
     QCOMPARE(window()->windowTitle(), title);
     QTRY_VERIFY(!window()->machineBar()->isVisible());
     QTRY_VERIFY(window()->connectionBar()->isVisible());
@@ -125,16 +126,18 @@ void TestMachineWindow::connectAll_bothLampsConnected_disconnectAllClosesBoth()
     QCOMPARE(bar->connectButton()->text(), QStringLiteral("Connect all"));
 }
 
-void TestMachineWindow::closeMachine_singleControllerBarBackAndConnectable()
+void TestMachineWindow::closeMachine_connectionBarBackItsMachineOfOneConnectable()
 {
     QVERIFY(m_rig.openAndConnect());
     window()->closeMachine();
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still() && m_rig.nanotec->still(), 10000);
-    QVERIFY(!window()->context()->hasMachine());
+    // Back to the connection bar's controller, a machine of one (issue 28, item 0).
+    QVERIFY(window()->context()->isConnectionMachine());
     QTRY_VERIFY(window()->connectionBar()->isVisible());
     QVERIFY(!window()->windowTitle().contains(QStringLiteral("Table with rotary axis")));
-    QVERIFY(m_rig.f->connectSim()); // today's single controller, unchanged
+    QVERIFY(m_rig.f->connectSim());
     QCOMPARE(window()->context()->session(), m_rig.f->session);
+    QCOMPARE(window()->context()->machine()->description().axes.size(), 3);
 }
 
 void TestMachineWindow::layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut()

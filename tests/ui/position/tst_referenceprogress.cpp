@@ -1,9 +1,11 @@
-// Referencing progress (issue 16): the bar moves within a stage by the steps the controller
-// confirmed (request accepted, motion reported), never by a guess; "Reference all" in the
-// safety bar runs at once, so its label has no "…".
+// Referencing progress (issue 16): the bar moves by what the machine confirmed -- a group of
+// axes (equal order) ended referenced -- never by a guess; "Reference all" in the safety bar
+// runs at once, so its label has no "…". On the connection bar's E-LAB, a machine of one
+// controller (issue 28, item 0).
 #include "../UiTestSupport.h"
+#include "machine/Machine.h"
+#include "machine/MachineContext.h"
 #include "position/ReferencePanel.h"
-#include "position/ReferenceRunner.h"
 #include "safety/SafetyBar.h"
 #include <QProgressBar>
 #include <QPushButton>
@@ -19,7 +21,7 @@ private Q_SLOTS:
     void init();
     void cleanup() { m_f.reset(); }
 
-    void firstStage_progressMovesWithConfirmedSteps();
+    void progress_movesWithConfirmedGroups();
     void safetyBarButton_noEllipsis_runsAtOnce();
 
 private:
@@ -35,45 +37,42 @@ void TestReferenceProgress::init()
     QVERIFY(m_f->connectAndSetUp());
 }
 
-void TestReferenceProgress::firstStage_progressMovesWithConfirmedSteps()
+void TestReferenceProgress::progress_movesWithConfirmedGroups()
 {
     ui::ReferencePanel* panel = m_f->window->referencePanel();
-    ui::ReferenceRunner* runner = panel->runner();
     auto* bar = panel->findChild<QProgressBar*>();
     QVERIFY(bar);
     struct Step
     {
-        int done, total;
-        bool zMoving; // what the controller reported for Z when the step was shown
-        int barValue;
+        QStringList axes;
+        int barValue, barMaximum;
+        bool zReferenced; // what the controller reported when the group started
     };
     QList<Step> steps;
-    connect(runner, &ui::ReferenceRunner::progress, this, [&](int done, int total) {
-        steps << Step{done, total, m_f->window->context()->status().axes.value(Axis::Z).moving,
-                      bar->value()};
-    });
-    QSignalSpy finished(runner, &ui::ReferenceRunner::finished);
+    machine::Machine* m = m_f->window->context()->machine();
+    connect(m, &machine::Machine::referenceGroupStarted, this,
+            [&](quint64, const QStringList& axes) {
+                // The panel listens first (it connected at its own run's start).
+                QTimer::singleShot(0, this, [&, axes] {
+                    steps << Step{axes, bar->value(), bar->maximum(),
+                                  m_f->window->context()->status().axes.value(Axis::Z).referenced};
+                });
+            });
     panel->referenceAll(); // Z first, then X and Y
-    QVERIFY(finished.wait(30000));
-    QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
-    const int perStage = ui::ReferenceRunner::kPhases;
-    QVERIFY(!steps.isEmpty());
-    QCOMPARE(steps.first().done, 0);
-    QCOMPARE(steps.last().done, steps.last().total);
-    QCOMPARE(steps.last().total, 2 * perStage);
-    bool movedWithinFirst = false;
-    for (int i = 0; i < steps.size(); ++i) {
-        if (i > 0)
-            QVERIFY(steps[i].done >= steps[i - 1].done); // never backwards
-        if (steps[i].done > 0 && steps[i].done < perStage) {
-            movedWithinFirst = true;
-            QCOMPARE(steps[i].barValue, steps[i].done); // the panel's bar shows it
-        }
-        // "Moving" counts only once the controller reported Z in motion.
-        if (steps[i].done == perStage - 1)
-            QVERIFY(steps[i].zMoving);
-    }
-    QVERIFY2(movedWithinFirst, "the bar stood at 0 % for the whole Z run");
+    QCOMPARE(bar->value(), 0);
+    QCOMPARE(bar->maximum(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 30000);
+    QVERIFY2(panel->messageText().contains(QStringLiteral("referenced")),
+             qPrintable(panel->messageText()));
+    QCOMPARE(steps.size(), 2);
+    QCOMPARE(steps[0].axes, QStringList{QStringLiteral("Z")});
+    QCOMPARE(steps[0].barValue, 0);
+    QVERIFY(!steps[0].zReferenced);
+    QCOMPARE(steps[1].axes, (QStringList{QStringLiteral("X"), QStringLiteral("Y")}));
+    // One group confirmed: Z is referenced at the board's report, and the bar says 1 of 2.
+    QCOMPARE(steps[1].barValue, 1);
+    QVERIFY(steps[1].zReferenced);
+    QCOMPARE(bar->value(), bar->maximum());
 }
 
 void TestReferenceProgress::safetyBarButton_noEllipsis_runsAtOnce()
@@ -88,10 +87,10 @@ void TestReferenceProgress::safetyBarButton_noEllipsis_runsAtOnce()
     QTRY_VERIFY(button->isVisible()); // offered: nothing is referenced after connecting
     const qsizetype mark = m_f->deviceMark();
     button->click();
-    QVERIFY(m_f->window->referencePanel()->runner()->isRunning());
+    QVERIFY(m_f->window->referencePanel()->isRunning());
     QTRY_VERIFY(!m_f->deviceCommands(elab::ctrl::US, mark).isEmpty()); // the run started
-    m_f->window->referencePanel()->runner()->cancel(QStringLiteral("test over"));
     m_f->window->stopAll();
+    QVERIFY(!m_f->window->referencePanel()->isRunning());
 }
 
 QTEST_MAIN(TestReferenceProgress)

@@ -51,8 +51,8 @@ private Q_SLOTS:
     void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
-    void useController_singleController_becomesMachineOfOne();
-    void useController_keepsTheControllersUnitsLimitsAndWorkOrigin();
+    void connection_singleController_isTheMachineProgramsRunOn();
+    void connection_keepsTheControllersUnitsLimitsAndReferencing();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data();
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
@@ -382,19 +382,19 @@ void TestProgramPage::page_fitsTheLaptopScreen()
     }
 }
 
-void TestProgramPage::useController_singleController_becomesMachineOfOne()
+// Issue 28, item 0: every connection is a machine. The connection bar's controller runs
+// programs as it is, with no step in between; before it connects, its machine is there
+// (axes shown, the program checked against them) but nothing can run.
+void TestProgramPage::connection_singleController_isTheMachineProgramsRunOn()
 {
-    QVERIFY(!page()->useControllerButton()->isEnabled()); // nothing connected
     window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
+    QVERIFY(window()->context()->isConnectionMachine());
+    setProgram(QStringLiteral("G91\nG0 X10\nM2\n"));
+    QVERIFY(!page()->controls()->runButton()->isEnabled()); // not connected
     window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
     window()->connectionBar()->connectNow();
     QVERIFY(m_rig.f->waitConnected());
-    setProgram(QStringLiteral("G91\nG0 X10\nM2\n"));
-    QVERIFY2(page()->checkText().startsWith(QStringLiteral("Not checked")),
-             qPrintable(page()->checkText()));
-    QTRY_VERIFY(page()->useControllerButton()->isEnabled());
-    page()->useControllerButton()->click();
-    QVERIFY(window()->context()->hasMachine());
+    QVERIFY(window()->context()->isConnectionMachine());
     QVERIFY(page()->runner());
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
                              10000);
@@ -402,34 +402,28 @@ void TestProgramPage::useController_singleController_becomesMachineOfOne()
     QTRY_VERIFY2(page()->editor()->errorLines().isEmpty() &&
                      page()->checkText().startsWith(QStringLiteral("Checked")),
                  qPrintable(page()->checkText()));
-    QVERIFY(!page()->useControllerButton()->isVisible());
 }
 
-// Issue 28, item 0 (a first part): the connected controller as a machine keeps what the
-// operator set for it: X's units (400 steps per mm), its soft limits (converted to mm), its
-// work origin and the referencing order and direction (issue 31: it dropped them); Y without
-// units stays in steps.
-void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin()
+// The connection's machine keeps what the operator set for the controller before machines
+// existed (the former Units…, Soft limits… and Referencing settings, still read): X's units
+// (400 steps per mm), its soft limits converted to mm, the referencing order and direction;
+// Y without units stays in steps.
+void TestProgramPage::connection_keepsTheControllersUnitsLimitsAndReferencing()
 {
+    QSettings settings;
+    settings.setValue(QStringLiteral("units/elab/X/stepsPerUnit"), 400.0);
+    settings.setValue(QStringLiteral("units/elab/X/unit"), QStringLiteral("mm"));
+    settings.setValue(QStringLiteral("softLimits/elab/X/rangeSet"), true);
+    settings.setValue(QStringLiteral("softLimits/elab/X/minimum"), -400);
+    settings.setValue(QStringLiteral("softLimits/elab/X/maximum"), 40000);
+    settings.setValue(QStringLiteral("reference/elab/X/direction"), -1);
+    settings.setValue(QStringLiteral("reference/elab/X/order"), 3);
+    settings.setValue(QStringLiteral("reference/elab/Z/direction"), 1);
+    settings.setValue(QStringLiteral("reference/elab/Z/order"), 1);
     window()->connectionBar()->setSelectedModel(QStringLiteral("elab"));
-    ui::MachineContext* context = window()->context();
-    ui::AxisUnits units;
-    units.stepsPerUnit = 400;
-    units.unit = QStringLiteral("mm");
-    units.workOffset = 800; // steps: X's work zero at machine 2 mm
-    context->setUnits(Axis::X, units);
-    AxisSoftLimit limit;
-    limit.rangeSet = true;
-    limit.minimum = -400;
-    limit.maximum = 40000;
-    context->setSoftLimit(Axis::X, limit);
-    context->setReference(Axis::X, -1, 3); // the Referencing panel's settings
-    context->setReference(Axis::Z, 1, 1);
     window()->connectionBar()->setPortSpec(QStringLiteral("sim"));
     window()->connectionBar()->connectNow();
     QVERIFY(m_rig.f->waitConnected());
-    QString error;
-    QVERIFY2(context->openConnectedControllerAsMachine(&error), qPrintable(error));
     const machine::MachineDescription& d = m_rig.machine()->description();
     const machine::MachineAxis& x = *d.axis(QStringLiteral("X"));
     QCOMPARE(x.unit, machine::AxisUnit::Millimetre);
@@ -441,11 +435,10 @@ void TestProgramPage::useController_keepsTheControllersUnitsLimitsAndWorkOrigin(
     QCOMPARE(x.referenceDirection, -1);
     QCOMPARE(d.axis(QStringLiteral("Z"))->referenceDirection, 1);
     QCOMPARE(d.axis(QStringLiteral("Z"))->referenceOrder, 1);
-    QCOMPARE(context->workOffsets()->offset(QStringLiteral("X")), 2.0);
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.machine()->state() != machine::MachineState::Disconnected,
-                             10000);
+    // The position display reads the same machine: X in mm.
+    QTRY_COMPARE(window()->positionPanel()->machineDro()->unitText(QStringLiteral("X")),
+                 QStringLiteral("mm"));
     // The next tests start without these settings.
-    QSettings settings;
     settings.remove(QStringLiteral("units"));
     settings.remove(QStringLiteral("softLimits"));
     settings.remove(QStringLiteral("reference"));
@@ -470,7 +463,9 @@ void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill()
         window()->closeMachine();
     else
         window()->context()->closeMachine();
-    QVERIFY(!page()->runner());
+    // The runner of the closed machine is gone; the connection bar's machine has its own.
+    QVERIFY(window()->context()->isConnectionMachine());
+    QVERIFY(!page()->isRunning());
     QVERIFY(!page()->editor()->isReadOnly());
     // Through the window the program is aborted first; a machine closed under it otherwise
     // ends it failed, saying so.

@@ -6,7 +6,3 @@ foreach(_t tst_safetyshortcuts tst_safetybar)
 endforeach()
 stepdeck_add_test(tst_safetybanner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_safetybanner.cpp
                   LABELS unit LIBS stepdeck_ui)
-# STOP feedback at device standstill, refusals that end with their cause (issue 16).
-stepdeck_add_test(tst_stopfeedback SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_stopfeedback.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
-                  LABELS ui LIBS stepdeck_ui)

@@ -6,6 +6,7 @@
 #include "console/TrafficConsole.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
+#include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "safety/SafetyBar.h"
 #include "setup/ParameterField.h"
@@ -140,7 +141,7 @@ void TestSafetyShortcuts::escape_inModalDialog_stopsAndClosesDialog()
 
 void TestSafetyShortcuts::f1_inOpenComboPopup_panics()
 {
-    QComboBox* combo = m_f->window->referencePanel()->findChild<QComboBox*>();
+    QComboBox* combo = m_f->window->positionPanel()->findChild<QComboBox*>();
     QVERIFY(combo);
     combo->showPopup();
     QTRY_VERIFY(QApplication::activePopupWidget());
@@ -297,7 +298,7 @@ void TestSafetyShortcuts::messageBox_nonModal_keysAndButtonsWork()
 
 void TestSafetyShortcuts::popupOpen_clickOnStop_stops()
 {
-    QComboBox* combo = m_f->window->referencePanel()->findChild<QComboBox*>();
+    QComboBox* combo = m_f->window->positionPanel()->findChild<QComboBox*>();
     QVERIFY(combo);
     combo->showPopup();
     QTRY_VERIFY(QApplication::activePopupWidget());

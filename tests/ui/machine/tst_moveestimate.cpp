@@ -1,7 +1,7 @@
 // The trapezoidal estimate of a positioning move: starts at the start speed, never passes
 // the target, arrives exactly at the computed duration, and takes the triangular shape when
 // the move is too short to reach the maximum speed.
-#include "position/MoveEstimate.h"
+#include "machine/MoveEstimate.h"
 #include <QtTest>
 
 using stepdeck::ui::MoveEstimate;
