@@ -3805,6 +3805,34 @@
             <source>the repeat count must be a whole number 0..1000000</source>
             <translation>die Anzahl der Wiederholungen muss eine ganze Zahl 0..1000000 sein</translation>
         </message>
+        <message>
+            <source>G%1 (cutter radius compensation) is not supported: let the CAM post compensate the path (G40 is accepted)</source>
+            <translation>G%1 (Werkzeugradiuskorrektur) wird nicht unterstützt: den Pfad vom CAM-Postprozessor korrigieren lassen (G40 wird angenommen)</translation>
+        </message>
+        <message>
+            <source>G43 (tool length offset) is not supported yet: the machine has no tool table (G49 is accepted)</source>
+            <translation>G43 (Werkzeuglängenkorrektur) wird noch nicht unterstützt: die Maschine hat keine Werkzeugtabelle (G49 wird angenommen)</translation>
+        </message>
+        <message>
+            <source>G93 (inverse time feed) is not supported yet: use G94</source>
+            <translation>G93 (Vorschub in inverser Zeit) wird noch nicht unterstützt: G94 verwenden</translation>
+        </message>
+        <message>
+            <source>G95 (feed per revolution) is not supported: no controller reports its spindle's revolutions; use G94</source>
+            <translation>G95 (Vorschub pro Umdrehung) wird nicht unterstützt: keine Steuerung meldet die Umdrehungen ihrer Spindel; G94 verwenden</translation>
+        </message>
+        <message>
+            <source>%1 and %2 on one line: they are of one modal group</source>
+            <translation>%1 und %2 in einer Zeile: sie gehören zu einer modalen Gruppe</translation>
+        </message>
+        <message>
+            <source>%1: G64 P is a tolerance, not below 0</source>
+            <translation>%1: G64 P ist eine Toleranz, nicht unter 0</translation>
+        </message>
+        <message>
+            <source>%1: G64 Q is a tolerance, not below 0</source>
+            <translation>%1: G64 Q ist eine Toleranz, nicht unter 0</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>
@@ -3839,6 +3867,14 @@
         <message>
             <source>more errors follow; only the first %1 are listed</source>
             <translation>weitere Fehler folgen; nur die ersten %1 sind aufgeführt</translation>
+        </message>
+        <message>
+            <source>"%" stands only on the program's first line and, closing it, its last</source>
+            <translation>„%“ steht nur in der ersten Zeile des Programms und, es schließend, in seiner letzten</translation>
+        </message>
+        <message>
+            <source>the program opened with "%" (line %1) ends with neither "%" nor M2/M30</source>
+            <translation>das mit „%“ (Zeile %1) eröffnete Programm endet weder mit „%“ noch mit M2/M30</translation>
         </message>
     </context>
     <context>

@@ -53,7 +53,8 @@ int ProgramBlock::columnOf(const QString& word) const
 bool ProgramBlock::operator==(const ProgramBlock& o) const
 {
     return line == o.line && text == o.text && kind == o.kind && axes == o.axes &&
-           relative == o.relative && inches == o.inches && feed == o.feed && seconds == o.seconds &&
+           relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
+           pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
            oNumber == o.oNumber && count == o.count && partner == o.partner &&
            columns == o.columns && actionColumn == o.actionColumn;

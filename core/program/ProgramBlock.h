@@ -29,6 +29,11 @@ enum class BlockKind : quint8 {
     RepeatEnd,    // O<n> endrepeat
 };
 
+// LinuxCNC's plane selection (modal group 2): the plane arcs lie in.
+enum class Plane : quint8 { XY, XZ, YZ };
+// LinuxCNC's path control mode (modal group 13).
+enum class PathMode : quint8 { ExactPath, ExactStop, Blend };
+
 // The word that makes a block, for messages and previews ("G0", "M64", "O repeat").
 QString blockWord(BlockKind kind);
 
@@ -40,17 +45,20 @@ struct ProgramBlock
     // Axis words in the program's units as written (G20: inch for mm axes), by machine axis.
     QMap<QString, double> axes;
     // The modal state in effect for this block (after the line's own modal words).
-    bool relative = false;      // G91
-    bool inches = false;        // G20
-    std::optional<double> feed; // F, unit/min
-    double seconds = 0;         // G4 P, M66 Q
-    int number = 0;             // M64/M65/M66 P: output or input number
-    bool inputHigh = true;      // M66 L3 (high) or L4 (low)
-    double rpm = 0;             // M3 S
-    QString prompt;             // M0: the comment on its line
-    int oNumber = 0;            // O<n>
-    qint64 count = 0;           // O repeat: how many times
-    int partner = -1;           // RepeatStart <-> RepeatEnd: the index of the other block
+    bool relative = false;               // G91
+    bool inches = false;                 // G20
+    std::optional<double> feed;          // F, unit/min
+    Plane plane = Plane::XY;             // G17 / G18 / G19
+    PathMode pathMode = PathMode::Blend; // G61 / G61.1 / G64
+    std::optional<double> pathTolerance; // G64 P
+    double seconds = 0;                  // G4 P, M66 Q
+    int number = 0;                      // M64/M65/M66 P: output or input number
+    bool inputHigh = true;               // M66 L3 (high) or L4 (low)
+    double rpm = 0;                      // M3 S
+    QString prompt;                      // M0: the comment on its line
+    int oNumber = 0;                     // O<n>
+    qint64 count = 0;                    // O repeat: how many times
+    int partner = -1;                    // RepeatStart <-> RepeatEnd: the index of the other block
     // Where the line's words stand (1-based columns), so that the check (ProgramCheck) names
     // the word it refuses: axis words by axis name ("X"), parameters by letter ("F", "P", "S",
     // "L", "Q"). actionColumn: the G or M word (the O word of a repeat); 0 for a line without

@@ -105,9 +105,18 @@ private:
     QString sortCode(const ProgramWord& w, Words* out)
     {
         const bool g = w.letter == QLatin1Char('G');
-        if (!isWhole(w.value) || w.value < 0)
+        // Codes in tenths: G61.1, G90.1 and G91.1 have a decimal digit (LinuxCNC).
+        const double tenthsValue = w.value * 10;
+        if (w.value < 0 || std::fabs(tenthsValue) > 1e9 || std::floor(tenthsValue) != tenthsValue)
             return ProgramLine::tr("%1 is not supported").arg(w.valueText);
-        const int code = int(w.value);
+        const int tenths = int(tenthsValue);
+        if (g) {
+            if (const std::optional<QString> modal = sortModalG(tenths, w, out))
+                return *modal;
+        }
+        if (tenths % 10 != 0)
+            return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+        const int code = tenths / 10;
         if (g && (code == 90 || code == 91)) {
             if (out->relative)
                 return ProgramLine::tr("G90 and G91 on one line");
@@ -126,14 +135,152 @@ private:
         if (out->action)
             return ProgramLine::tr("one action per line: %1 and %2")
                 .arg(out->actionWord->valueText, w.valueText);
+        if (isMotion(action) && out->groups.contains(kMotionGroup))
+            return twoOfOneGroup(out->groups.value(kMotionGroup), w);
         out->action = action;
         out->actionWord = &w;
         return {};
     }
 
+    // The G words of LinuxCNC's modal groups that set a mode and move nothing (issue 29):
+    // empty when sorted, a refusal with its reason, or nullopt for any other code.
+    std::optional<QString> sortModalG(int tenths, const ProgramWord& w, Words* out)
+    {
+        const std::optional<int> group = modalGroupOf(tenths);
+        if (!group)
+            return std::nullopt;
+        if (const QString why = refusalOf(tenths); !why.isEmpty())
+            return why;
+        if (const ProgramWord* other = out->groups.value(*group))
+            return twoOfOneGroup(other, w);
+        if (*group == kMotionGroup && isMotion(out->action))
+            return twoOfOneGroup(out->actionWord, w); // G0 or G1 beside G80
+        out->groups.insert(*group, &w);
+        switch (tenths) {
+        case 170:
+        case 180:
+        case 190:
+            out->plane = tenths == 170 ? Plane::XY : tenths == 180 ? Plane::XZ : Plane::YZ;
+            break;
+        case 610:
+            out->pathMode = PathMode::ExactPath;
+            break;
+        case 611:
+            out->pathMode = PathMode::ExactStop;
+            break;
+        case 640:
+            out->pathMode = PathMode::Blend;
+            break;
+        case 800:
+            out->cancelsMotion = true;
+            break;
+        default: // G40, G49, G94, G90.1, G91.1, G98, G99: the modes StepDeck always runs in
+            break;
+        }
+        return QString();
+    }
+
+    // LinuxCNC's modal group of a mode-setting G code (tenths); nullopt for any other.
+    static std::optional<int> modalGroupOf(int tenths)
+    {
+        switch (tenths) {
+        case 800:
+            return kMotionGroup; // G80 cancels the modal motion
+        case 170:
+        case 180:
+        case 190:
+            return 2;
+        case 901:
+        case 911:
+            return 4;
+        case 930:
+        case 940:
+        case 950:
+            return 5;
+        case 400:
+        case 410:
+        case 420:
+            return 7;
+        case 430:
+        case 490:
+            return 8;
+        case 980:
+        case 990:
+            return 10;
+        case 610:
+        case 611:
+        case 640:
+            return 13;
+        default:
+            return std::nullopt;
+        }
+    }
+
+    // Modes of those groups that StepDeck does not run, with what to do instead.
+    static QString refusalOf(int tenths)
+    {
+        switch (tenths) {
+        case 410:
+        case 420:
+            return ProgramLine::tr("G%1 (cutter radius compensation) is not supported: let the "
+                                   "CAM post compensate the path (G40 is accepted)")
+                .arg(tenths / 10);
+        case 430:
+            return ProgramLine::tr("G43 (tool length offset) is not supported yet: the machine "
+                                   "has no tool table (G49 is accepted)");
+        case 930:
+            return ProgramLine::tr("G93 (inverse time feed) is not supported yet: use G94");
+        case 950:
+            return ProgramLine::tr("G95 (feed per revolution) is not supported: no controller "
+                                   "reports its spindle's revolutions; use G94");
+        default:
+            return {};
+        }
+    }
+
+    // G0 and G1: LinuxCNC's motion group, with G80 (G4 and G28 are of no modal group).
+    static bool isMotion(std::optional<BlockKind> action)
+    {
+        return action == BlockKind::Rapid || action == BlockKind::Feed;
+    }
+
+    static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
+    {
+        return ProgramLine::tr("%1 and %2 on one line: they are of one modal group")
+            .arg(first->valueText, second.valueText);
+    }
+
+    static constexpr int kMotionGroup = 1;
+
     int m_line;
     const QStringList& m_axisNames;
 };
+
+// G61, G61.1, G64 into *modal; G64's P (the path tolerance, >= 0) and Q (the naive CAM
+// tolerance, accepted as LinuxCNC does) are its own and leave the line's parameters.
+std::pair<int, QString> applyPathMode(Words* words, ModalState* modal)
+{
+    if (!words->pathMode)
+        return {};
+    modal->pathMode = *words->pathMode;
+    modal->pathTolerance.reset();
+    if (*words->pathMode != PathMode::Blend)
+        return {};
+    if (const ProgramWord* p = words->parameters.value('P')) {
+        if (p->value < 0)
+            return {p->column,
+                    ProgramLine::tr("%1: G64 P is a tolerance, not below 0").arg(p->valueText)};
+        modal->pathTolerance = p->value;
+        words->parameters.remove('P');
+    }
+    if (const ProgramWord* q = words->parameters.value('Q')) {
+        if (q->value < 0)
+            return {q->column,
+                    ProgramLine::tr("%1: G64 Q is a tolerance, not below 0").arg(q->valueText)};
+        words->parameters.remove('Q');
+    }
+    return {};
+}
 
 } // namespace
 
@@ -164,6 +311,12 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (!LineWords(lineNumber, axisNames).sort(words, &sorted, error))
         return std::nullopt;
     ModalState next = *modal;
+    if (sorted.plane)
+        next.plane = *sorted.plane;
+    if (const auto [column, why] = applyPathMode(&sorted, &next); column > 0)
+        return fail(column, why);
+    if (sorted.cancelsMotion)
+        next.motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
     if (sorted.relative)
         next.relative = *sorted.relative;
     if (sorted.inches)
@@ -203,6 +356,9 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     b.relative = next.relative;
     b.inches = next.inches;
     b.feed = next.feed;
+    b.plane = next.plane;
+    b.pathMode = next.pathMode;
+    b.pathTolerance = next.pathTolerance;
     if (b.kind == BlockKind::Pause)
         b.prompt = line.comment;
     *modal = next;

@@ -20,6 +20,12 @@ struct Words
     const ProgramWord* actionWord = nullptr;
     std::optional<bool> relative; // G90 / G91
     std::optional<bool> inches;   // G21 / G20
+    // LinuxCNC's other modal groups, each at most once a line (issue 29): the word of each
+    // group given (group number as LinuxCNC numbers them), and what it sets.
+    QMap<int, const ProgramWord*> groups;
+    std::optional<Plane> plane;       // G17 / G18 / G19
+    std::optional<PathMode> pathMode; // G61 / G61.1 / G64
+    bool cancelsMotion = false;       // G80: no modal motion afterwards
     QMap<QChar, const ProgramWord*> parameters;
     QMap<QString, const ProgramWord*> axes;
 };

@@ -49,15 +49,39 @@ void ProgramParser::endLine()
             error(m_line, 1, tr("the program is longer than %1 lines").arg(kMaxLines));
         return;
     }
+    if (m_percentClosed)
+        return; // after the closing "%" (LinuxCNC ignores the rest of the file)
     if (raw.endsWith('\r'))
         raw.chop(1);
+    if (m_line == 1 && raw.startsWith("\xEF\xBB\xBF"))
+        raw.remove(0, 3); // a UTF-8 byte-order mark, as some editors on Windows write it
     const QString text = QString::fromUtf8(raw);
     if (tooLong || text.size() > kMaxLineLength) {
         error(m_line, kMaxLineLength + 1,
               tr("the line is longer than %1 characters").arg(kMaxLineLength));
         return;
     }
-    parseLine(text);
+    if (!percentLine(text))
+        parseLine(text);
+}
+
+bool ProgramParser::percentLine(const QString& text)
+{
+    if (text.trimmed() != QLatin1String("%"))
+        return false;
+    // LinuxCNC: a "%" on the first line with words (blank lines before it allowed) opens the
+    // program, and a second "%" ends it; anywhere else it is an error.
+    if (!m_anyWords && m_percentOpen == 0) {
+        m_percentOpen = m_line;
+        return true;
+    }
+    if (m_percentOpen > 0) {
+        m_percentClosed = true;
+        return true;
+    }
+    error(m_line, int(text.indexOf(QLatin1Char('%'))) + 1,
+          tr("\"%\" stands only on the program's first line and, closing it, its last"));
+    return true;
 }
 
 void ProgramParser::parseLine(const QString& text)
@@ -67,6 +91,7 @@ void ProgramParser::parseLine(const QString& text)
         error(lexed.error->line, lexed.error->column, lexed.error->message);
         return;
     }
+    m_anyWords = m_anyWords || !lexed.words.isEmpty();
     if (!lexed.words.isEmpty() && m_endLine > 0) {
         error(m_line, lexed.words.first().column,
               tr("nothing may follow the program's end (line %1)").arg(m_endLine));
@@ -153,6 +178,10 @@ std::optional<Program> ProgramParser::finish(QList<ProgramError>* errors)
             error(open.line, 1, tr("O%1 repeat is not closed by O%1 endrepeat").arg(open.oNumber));
     }
     m_openRepeats.clear();
+    if (m_percentOpen > 0 && !m_percentClosed && m_endLine == 0)
+        error(m_line, 1,
+              tr("the program opened with \"%\" (line %1) ends with neither \"%\" nor M2/M30")
+                  .arg(m_percentOpen));
     std::stable_sort(m_errors.begin(), m_errors.end(),
                      [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
     if (m_tooManyErrors)

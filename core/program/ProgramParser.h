@@ -36,6 +36,8 @@ public:
 private:
     void endLine();
     void parseLine(const QString& text);
+    // A line of only "%": the program's first or last line (LinuxCNC); true when handled.
+    bool percentLine(const QString& text);
     void addBlock(ProgramBlock block);
     void noteBrokenRepeat(const LexedLine& lexed);
     void error(int line, int column, const QString& message);
@@ -45,7 +47,10 @@ private:
     bool m_pendingTooLong = false;
     int m_line = 0;
     ModalState m_modal;
-    int m_endLine = 0; // the line of M2/M30, once read
+    int m_endLine = 0;            // the line of M2/M30, once read
+    bool m_anyWords = false;      // a line with words was read
+    int m_percentOpen = 0;        // the line of the first "%", if any
+    bool m_percentClosed = false; // the second "%": LinuxCNC ignores what follows it
     struct OpenRepeat
     {
         int index = -1; // of its block; -1: its line had an error (its endrepeat still fits)

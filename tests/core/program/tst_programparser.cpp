@@ -82,6 +82,9 @@ private Q_SLOTS:
     void feed_overlongLine_boundedAndNamed();
     void parse_crlfAndNoFinalNewline_sameBlocks();
     void parse_wordColumns_keptForTheCheck();
+    void parse_modalGroups_stateOnEveryBlock_data();
+    void parse_modalGroups_stateOnEveryBlock();
+    void parse_camHeader_percentBomAndModes_blocksAsWithout();
 };
 
 void TestProgramParser::parse_everyWord_golden_data()
@@ -130,6 +133,16 @@ void TestProgramParser::parse_everyWord_golden_data()
                             << QStringList{"1: O repeat abs mm F- x3", "2: G0 X=1 rel mm F-",
                                            "3: O endrepeat abs mm F-"};
     QTest::newRow("lower case") << "g1 x1 f10" << QStringList{"1: G1 X=1 abs mm F10"};
+    // The modes CAM posts set in their headers (issue 29): lines that move nothing.
+    QTest::newRow("CAM safety line") << "G17 G21 G40 G49 G80 G90 G94\nG0 X1"
+                                     << QStringList{"1: modal abs mm F-", "2: G0 X=1 abs mm F-"};
+    QTest::newRow("arc centre modes and return modes")
+        << "G91.1\nG90.1\nG98\nG99"
+        << QStringList{"1: modal abs mm F-", "2: modal abs mm F-", "3: modal abs mm F-",
+                       "4: modal abs mm F-"};
+    QTest::newRow("G80 beside other modes")
+        << "G0 X1\nG80 G90 G17\nG0 X2"
+        << QStringList{"1: G0 X=1 abs mm F-", "2: modal abs mm F-", "3: G0 X=2 abs mm F-"};
 }
 
 void TestProgramParser::parse_everyWord_golden()
@@ -217,6 +230,42 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                           << "1:4: repeat needs a count";
     QTest::newRow("repeat too many") << "O1 repeat [1000001]\nO1 endrepeat"
                                      << "1:12: the repeat count must be a whole number";
+    // Issue 29: LinuxCNC's modal groups, one word of each a line; the modes StepDeck does not
+    // run are refused with what to do instead.
+    QTest::newRow("two planes") << "G17 G18"
+                                << "1:5: G17 and G18 on one line: they are of one "
+                                   "modal group";
+    QTest::newRow("two path modes") << "G61 G64"
+                                    << "1:5: G61 and G64 on one line";
+    QTest::newRow("G80 and G0") << "G80 G0 X1"
+                                << "1:5: G80 and G0 on one line";
+    QTest::newRow("G0 and G80") << "G0 G80 X1"
+                                << "1:4: G0 and G80 on one line";
+    QTest::newRow("G80 cancels the motion") << "G0 X1\nG80\nX2"
+                                            << "3:1: axis words need G0 or G1";
+    QTest::newRow("G41") << "G41 D1"
+                         << "1:1: G41 (cutter radius compensation) is not supported: "
+                            "let the CAM post compensate the path";
+    QTest::newRow("G42.1") << "G42.1"
+                           << "1:1: G42.1 is not supported";
+    QTest::newRow("G43") << "G43 H1"
+                         << "1:1: G43 (tool length offset) is not supported yet";
+    QTest::newRow("G93") << "G93"
+                         << "1:1: G93 (inverse time feed) is not supported yet: use G94";
+    QTest::newRow("G95") << "G95"
+                         << "1:1: G95 (feed per revolution) is not supported";
+    QTest::newRow("G64 P negative") << "G64 P-0.1"
+                                    << "1:5: P-0.1: G64 P is a tolerance";
+    QTest::newRow("G61 with P") << "G61 P0.1"
+                                << "1:5: P0.1 is not used on a line without an "
+                                   "action";
+    QTest::newRow("two decimals") << "G61.15"
+                                  << "1:1: G61.15 is not supported";
+    QTest::newRow("percent in the middle") << "G0 X1\n%\nG0 X2"
+                                           << "2:1: \"%\" stands only on the program's first line";
+    QTest::newRow("percent not closed") << "%\nG0 X1\n"
+                                        << "2:1: the program opened with \"%\" (line 1) ends "
+                                           "with neither \"%\" nor M2/M30";
 }
 
 void TestProgramParser::parse_invalid_lineColumnAndMessage()
@@ -367,6 +416,63 @@ void TestProgramParser::parse_wordColumns_keptForTheCheck()
     QCOMPARE(p->blocks.at(5).columnOf("F"), 1);
     QCOMPARE(p->blocks.at(0).columnOf("F"), 15);
     QCOMPARE(p->blocks.at(0).columnOf({}), 5);
+}
+
+void TestProgramParser::parse_modalGroups_stateOnEveryBlock_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("states"); // per block: plane, path mode, tolerance
+    QTest::newRow("defaults") << "G0 X1" << QStringList{"XY blend -"};
+    QTest::newRow("planes modal") << "G18\nG0 X1\nG19 G0 Y1\nG17\nG0 Z1"
+                                  << QStringList{"XZ blend -", "XZ blend -", "YZ blend -",
+                                                 "XY blend -", "XY blend -"};
+    QTest::newRow("path modes") << "G61\nG0 X1\nG61.1\nG64 P0.02 Q0.01\nG0 X2\nG64\nG0 X3"
+                                << QStringList{"XY exact-path -", "XY exact-path -",
+                                               "XY exact-stop -", "XY blend 0.02",
+                                               "XY blend 0.02",   "XY blend -",
+                                               "XY blend -"};
+}
+
+void TestProgramParser::parse_modalGroups_stateOnEveryBlock()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, states);
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QStringList got;
+    for (const ProgramBlock& b : p->blocks) {
+        const QString plane = b.plane == Plane::XY   ? QStringLiteral("XY")
+                              : b.plane == Plane::XZ ? QStringLiteral("XZ")
+                                                     : QStringLiteral("YZ");
+        const QString mode = b.pathMode == PathMode::ExactPath   ? QStringLiteral("exact-path")
+                             : b.pathMode == PathMode::ExactStop ? QStringLiteral("exact-stop")
+                                                                 : QStringLiteral("blend");
+        got << QStringLiteral("%1 %2 %3")
+                   .arg(plane, mode,
+                        b.pathTolerance ? QString::number(*b.pathTolerance) : QStringLiteral("-"));
+    }
+    QCOMPARE(got, states);
+}
+
+// A header as CAM posts write it: a byte-order mark, "%" first and last, N numbers, a
+// program comment, the safety line of modes, CRLF line ends. The blocks are those of the same
+// program without any of it.
+void TestProgramParser::parse_camHeader_percentBomAndModes_blocksAsWithout()
+{
+    const QByteArray cam = "\xEF\xBB\xBF%\r\n(PART 1001 -- FACING)\r\n"
+                           "N10 G90 G94 G17 G40 G49 G80\r\nN15 G21\r\nN20 G0 X10 Y5\r\n"
+                           "N25 G1 Z-1 F300\r\nN30 M30\r\n%\r\n"
+                           "anything after the closing percent is ignored\r\n";
+    const QByteArray plain = "\n\nG90\nG21\nG0 X10 Y5\nG1 Z-1 F300\nM30\n";
+    QList<ProgramError> errors;
+    const std::optional<Program> a = ProgramParser::parse(cam, kAxes, &errors);
+    QVERIFY2(a, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    const std::optional<Program> b = ProgramParser::parse(plain, kAxes, &errors);
+    QVERIFY(b);
+    QCOMPARE(describeAll(*a), describeAll(*b));
+    // A "%" line of its own, even after blank lines, opens the program (LinuxCNC).
+    QVERIFY(ProgramParser::parse("\n  %  \nG0 X1\n%\n", kAxes, &errors));
 }
 
 QTEST_APPLESS_MAIN(TestProgramParser)
