@@ -3833,6 +3833,26 @@
             <source>%1: G64 Q is a tolerance, not below 0</source>
             <translation>%1: G64 Q ist eine Toleranz, nicht unter 0</translation>
         </message>
+        <message>
+            <source>T appears twice on the line</source>
+            <translation>T steht zweimal in der Zeile</translation>
+        </message>
+        <message>
+            <source>%1: T takes a tool number, whole, 0..%2</source>
+            <translation>%1: T nimmt eine Werkzeugnummer, ganzzahlig, 0..%2</translation>
+        </message>
+        <message>
+            <source>M6 needs a tool: T on this line or an earlier one</source>
+            <translation>M6 braucht ein Werkzeug: T in dieser oder einer früheren Zeile</translation>
+        </message>
+        <message>
+            <source>Load tool %1</source>
+            <translation>Werkzeug %1 einsetzen</translation>
+        </message>
+        <message>
+            <source>Load tool %1 (%2)</source>
+            <translation>Werkzeug %1 einsetzen (%2)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>

@@ -87,11 +87,12 @@ Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
     if (r.dryRun || r.skipPauses || ::isatty(STDIN_FILENO))
         return Outcome::success();
     for (const program::ProgramBlock& b : p.blocks) {
-        if (b.kind == program::BlockKind::Pause && b.line >= r.fromLine)
-            return Outcome::usage(CliText::tr("run: line %1 holds M0, which waits for Enter on a "
+        if (program::waitsForOperator(b.kind) && b.line >= r.fromLine)
+            return Outcome::usage(CliText::tr("run: line %1 holds %2, which waits for Enter on a "
                                               "terminal, and stdin is not one (--skip-pauses "
                                               "runs on without stopping there)")
-                                      .arg(b.line));
+                                      .arg(b.line)
+                                      .arg(program::blockWord(b.kind)));
     }
     return Outcome::success();
 }

@@ -17,6 +17,8 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("G4");
     case BlockKind::Pause:
         return QStringLiteral("M0");
+    case BlockKind::ToolChange:
+        return QStringLiteral("M6");
     case BlockKind::End:
         return QStringLiteral("M2");
     case BlockKind::SpindleOn:

@@ -16,6 +16,7 @@ enum class BlockKind : quint8 {
     Home,         // G28: reference run of the named axes (none named: all, machine order)
     Dwell,        // G4 P<seconds>
     Pause,        // M0: until the operator resumes; prompt = the line's comment
+    ToolChange,   // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
     End,          // M2, M30
     SpindleOn,    // M3 S<rpm>
     SpindleOff,   // M5
@@ -33,6 +34,12 @@ enum class BlockKind : quint8 {
 enum class Plane : quint8 { XY, XZ, YZ };
 // LinuxCNC's path control mode (modal group 13).
 enum class PathMode : quint8 { ExactPath, ExactStop, Blend };
+
+// M0 and M6: the program holds until the operator resumes (the block's prompt says why).
+inline bool waitsForOperator(BlockKind kind)
+{
+    return kind == BlockKind::Pause || kind == BlockKind::ToolChange;
+}
 
 // The word that makes a block, for messages and previews ("G0", "M64", "O repeat").
 QString blockWord(BlockKind kind);
@@ -52,7 +59,7 @@ struct ProgramBlock
     PathMode pathMode = PathMode::Blend; // G61 / G61.1 / G64
     std::optional<double> pathTolerance; // G64 P
     double seconds = 0;                  // G4 P, M66 Q
-    int number = 0;                      // M64/M65/M66 P: output or input number
+    int number = 0;                      // M64/M65/M66 P: output or input number; M6: the tool (T)
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
     double rpm = 0;                      // M3 S
     QString prompt;                      // M0: the comment on its line

@@ -31,6 +31,8 @@ std::optional<BlockKind> actionOfM(int code)
     switch (code) {
     case 0:
         return BlockKind::Pause;
+    case 6:
+        return BlockKind::ToolChange;
     case 2:
     case 30:
         return BlockKind::End;
@@ -93,6 +95,16 @@ private:
             if (out->axes.contains(QString(l)))
                 return ProgramLine::tr("axis %1 appears twice on the line").arg(l);
             out->axes.insert(QString(l), &w);
+            return {};
+        }
+        if (l == QLatin1Char('T')) {
+            if (out->tool)
+                return ProgramLine::tr("T appears twice on the line");
+            if (!isWhole(w.value) || w.value < 0 || w.value > kMaxTool)
+                return ProgramLine::tr("%1: T takes a tool number, whole, 0..%2")
+                    .arg(w.valueText)
+                    .arg(kMaxTool);
+            out->tool = &w;
             return {};
         }
         if (l == QLatin1Char('N'))
@@ -317,6 +329,8 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         return fail(column, why);
     if (sorted.cancelsMotion)
         next.motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
+    if (sorted.tool)
+        next.tool = int(sorted.tool->value);
     if (sorted.relative)
         next.relative = *sorted.relative;
     if (sorted.inches)
@@ -361,6 +375,16 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     b.pathTolerance = next.pathTolerance;
     if (b.kind == BlockKind::Pause)
         b.prompt = line.comment;
+    if (b.kind == BlockKind::ToolChange) {
+        // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by
+        // hand: the program holds until the operator loaded it and resumes.
+        if (!next.tool)
+            return fail(b.actionColumn, tr("M6 needs a tool: T on this line or an earlier one"));
+        b.number = *next.tool;
+        b.prompt = line.comment.isEmpty()
+                       ? tr("Load tool %1").arg(*next.tool)
+                       : tr("Load tool %1 (%2)").arg(*next.tool).arg(line.comment);
+    }
     *modal = next;
     return b;
 }

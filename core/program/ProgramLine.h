@@ -18,6 +18,7 @@ struct ModalState
     // tolerance; kept for the continuous path of the contouring issue.
     PathMode pathMode = PathMode::Blend;
     std::optional<double> pathTolerance; // G64 P
+    std::optional<int> tool;             // T: the tool selected for the next M6
 };
 
 // One lexed line to its block (ProgramParser's line step): which words it has, whether they

@@ -250,8 +250,8 @@ void ProgramRunner::blockDone()
         finishProgram();
         return;
     }
-    if (block.kind == BlockKind::Pause || m_pauseAsked || m_stepOnly) {
-        m_prompt = block.kind == BlockKind::Pause ? block.prompt : QString();
+    if (waitsForOperator(block.kind) || m_pauseAsked || m_stepOnly) {
+        m_prompt = waitsForOperator(block.kind) ? block.prompt : QString();
         m_pauseAsked = false;
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);

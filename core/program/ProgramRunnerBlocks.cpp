@@ -29,8 +29,9 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
         startWaitInput(block);
         return;
     case BlockKind::Pause:
+    case BlockKind::ToolChange:
     case BlockKind::End:
-        blockDone(); // pauses at M0, finishes at M2/M30
+        blockDone(); // pauses at M0 and M6, finishes at M2/M30
         return;
     default:
         startSwitch(block);

@@ -65,7 +65,7 @@ void TestCliRun::cleanup()
 void TestCliRun::invalidProgram_everyErrorAsFileLineCol_exit7_nothingSent()
 {
     const QString path =
-        writeProgram(*m_dir, "bad.ngc", "G91\nT2\nG0 X10\nG0 X5 Q1\nG0 X1 G1 X2\n");
+        writeProgram(*m_dir, "bad.ngc", "G91\nD2\nG0 X10\nG0 X5 Q1\nG0 X1 G1 X2\n");
     const CliRun r = runCli(args(path));
     QCOMPARE(r.exitCode, 7);
     const QList<QByteArray> lines = r.err.trimmed().split('\n');

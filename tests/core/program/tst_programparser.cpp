@@ -39,6 +39,9 @@ QString describe(const ProgramBlock& b)
     case BlockKind::Pause:
         out << QStringLiteral("\"%1\"").arg(b.prompt);
         break;
+    case BlockKind::ToolChange:
+        out << QStringLiteral("T%1 \"%2\"").arg(b.number).arg(b.prompt);
+        break;
     case BlockKind::RepeatStart:
         out << QStringLiteral("x%1").arg(b.count);
         break;
@@ -133,6 +136,14 @@ void TestProgramParser::parse_everyWord_golden_data()
                             << QStringList{"1: O repeat abs mm F- x3", "2: G0 X=1 rel mm F-",
                                            "3: O endrepeat abs mm F-"};
     QTest::newRow("lower case") << "g1 x1 f10" << QStringList{"1: G1 X=1 abs mm F10"};
+    // Issue 29: T selects (modal), M6 changes by hand (a pause with its prompt).
+    QTest::newRow("T M6 on one line")
+        << "T1 M6" << QStringList{"1: M6 abs mm F- T1 \"Load tool 1\""};
+    QTest::newRow("T before, M6 with a comment")
+        << "T12\nG0 X1\nM6 (ball nose D3)\nT0\nM6"
+        << QStringList{"1: modal abs mm F-", "2: G0 X=1 abs mm F-",
+                       "3: M6 abs mm F- T12 \"Load tool 12 (ball nose D3)\"", "4: modal abs mm F-",
+                       "5: M6 abs mm F- T0 \"Load tool 0\""};
     // The modes CAM posts set in their headers (issue 29): lines that move nothing.
     QTest::newRow("CAM safety line") << "G17 G21 G40 G49 G80 G90 G94\nG0 X1"
                                      << QStringList{"1: modal abs mm F-", "2: G0 X=1 abs mm F-"};
@@ -162,12 +173,20 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::addColumn<QString>("error"); // "line:column: message" starts with this
     QTest::newRow("unknown G") << "G0 X1\nG2 X1 Y1"
                                << "2:1: G2 is not supported";
-    QTest::newRow("unknown M") << "M6"
-                               << "1:1: M6 is not supported";
+    QTest::newRow("unknown M") << "M19"
+                               << "1:1: M19 is not supported";
+    QTest::newRow("M6 without T") << "G0 X1\nM6"
+                                  << "2:1: M6 needs a tool: T on this line or an earlier one";
+    QTest::newRow("T fraction") << "T1.5 M6"
+                                << "1:1: T1.5: T takes a tool number, whole, 0..99999";
+    QTest::newRow("T negative") << "T-2"
+                                << "1:1: T-2: T takes a tool number";
+    QTest::newRow("T twice") << "T1 T2 M6"
+                             << "1:4: T appears twice on the line";
     QTest::newRow("fractional G") << "G0.5"
                                   << "1:1: G0.5 is not supported";
-    QTest::newRow("unknown letter") << "G0 X1 T2"
-                                    << "1:7: T2 is not a word";
+    QTest::newRow("unknown letter") << "G0 X1 D2"
+                                    << "1:7: D2 is not a word";
     QTest::newRow("axis not on machine") << "G0 B5"
                                          << "1:4: the machine has no axis B";
     QTest::newRow("axis twice") << "G0 X1 X2"

@@ -70,6 +70,7 @@ private Q_SLOTS:
     void pause_duringMove_holdsAfterTheBlockResumeGoesOn();
     void step_oneBlockThenPaused();
     void pause_m0_pausedWithItsPrompt();
+    void toolChange_m6_pausedToLoadTheToolThenOn();
     void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
     void runFromLine_afterFault_startsThereWithItsModalState();
@@ -236,6 +237,22 @@ void TestProgramRunner::pause_m0_pausedWithItsPrompt()
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
     QCOMPARE(paused.at(0).at(1).toString(), QStringLiteral("Load the part, then Resume"));
     QCOMPARE(m_runner->prompt(), QStringLiteral("Load the part, then Resume"));
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+}
+
+// Issue 29: T selects, M6 changes by hand: the program holds with "Load tool n (comment)"
+// and the board receives nothing more until the operator resumes.
+void TestProgramRunner::toolChange_m6_pausedToLoadTheToolThenOn()
+{
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G91 G0 X1\nT3 M6 (6 mm end mill)\nG0 X1\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.at(0).at(0).toInt(), 2);
+    QCOMPARE(m_runner->prompt(), QStringLiteral("Load tool 3 (6 mm end mill)"));
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
     m_runner->resume();
     WAIT_ENDED();
