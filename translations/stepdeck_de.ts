@@ -6030,6 +6030,10 @@ W1500</translation>
             <source>Program</source>
             <translation>Programm</translation>
         </message>
+        <message>
+            <source>Program line %1: %2</source>
+            <translation>Programmzeile %1: %2</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MessageLine</name>

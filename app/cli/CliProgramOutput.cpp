@@ -113,6 +113,13 @@ ProgramReport::ProgramReport(ProgramRunner& runner, int lines, bool json)
                      [this](int line) { blockFinished(line); });
     QObject::connect(&runner, &ProgramRunner::paused, &m_guard,
                      [this](int line, const QString& prompt) { paused(line, prompt); });
+    QObject::connect(
+        &runner, &ProgramRunner::operatorMessage, &m_guard, [this](int line, const QString& text) {
+            if (m_json)
+                printJson(QJsonObject{{"event", "message"}, {"line", line}, {"text", text}});
+            else
+                printProgress(CliText::tr("line %1: MSG: %2").arg(line).arg(text));
+        });
     QObject::connect(&runner, &ProgramRunner::stopping, &m_guard, [this](const QString& message) {
         if (m_json)
             printJson(QJsonObject{{"event", "stopping"}, {"message", message}});

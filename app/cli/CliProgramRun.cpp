@@ -115,7 +115,7 @@ private:
     {
         if (m_skip) {
             if (!m_json)
-                printProgress(CliText::tr("line %1: M0 passed (--skip-pauses)").arg(line));
+                printProgress(CliText::tr("line %1: pause passed (--skip-pauses)").arg(line));
             // Not from inside the runner's own signal.
             QMetaObject::invokeMethod(
                 &m_guard, [this] { m_runner.resume(); }, Qt::QueuedConnection);

@@ -58,8 +58,8 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
-           oNumber == o.oNumber && count == o.count && partner == o.partner &&
-           columns == o.columns && actionColumn == o.actionColumn;
+           message == o.message && oNumber == o.oNumber && count == o.count &&
+           partner == o.partner && columns == o.columns && actionColumn == o.actionColumn;
 }
 
 QString ProgramError::text() const

@@ -63,9 +63,10 @@ struct ProgramBlock
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
     double rpm = 0;                      // M3 S
     QString prompt;                      // M0: the comment on its line
-    int oNumber = 0;                     // O<n>
-    qint64 count = 0;                    // O repeat: how many times
-    int partner = -1;                    // RepeatStart <-> RepeatEnd: the index of the other block
+    QString message;  // "(MSG, text)": shown to the operator when the run reaches the line
+    int oNumber = 0;  // O<n>
+    qint64 count = 0; // O repeat: how many times
+    int partner = -1; // RepeatStart <-> RepeatEnd: the index of the other block
     // Where the line's words stand (1-based columns), so that the check (ProgramCheck) names
     // the word it refuses: axis words by axis name ("X"), parameters by letter ("F", "P", "S",
     // "L", "Q"). actionColumn: the G or M word (the O word of a repeat); 0 for a line without

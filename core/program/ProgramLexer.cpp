@@ -55,8 +55,18 @@ private:
                 return false;
             }
             noteComment(m_line.mid(m_pos + 1, close - m_pos - 1));
+            noteMessage(m_line.mid(m_pos + 1, close - m_pos - 1));
             m_pos = close + 1;
         }
+    }
+
+    // LinuxCNC: a parenthesised comment that starts with "MSG," (any case, spaces before it
+    // allowed) is shown to the operator; the first one of a line counts.
+    void noteMessage(QStringView text)
+    {
+        const QStringView t = text.trimmed();
+        if (m_out->message.isEmpty() && t.startsWith(QLatin1String("MSG,"), Qt::CaseInsensitive))
+            m_out->message = t.mid(4).trimmed().toString();
     }
 
     void noteComment(QStringView text)

@@ -23,6 +23,7 @@ struct LexedLine
     std::optional<double> keywordValue; // "O1 repeat [3]" -> 3
     int keywordValueColumn = 0;
     QString comment;
+    QString message;                   // "(MSG, text)": the text for the operator (LinuxCNC)
     std::optional<ProgramError> error; // the first thing on the line that is not G-code
 };
 

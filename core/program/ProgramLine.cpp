@@ -305,8 +305,19 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         return std::nullopt;
     };
     QList<ProgramWord> words = line.words;
-    if (words.isEmpty())
+    if (words.isEmpty() && line.message.isEmpty())
         return std::nullopt;
+    if (words.isEmpty()) { // only "(MSG, text)": a block that says it and does nothing else
+        ProgramBlock b;
+        b.message = line.message;
+        b.relative = modal->relative;
+        b.inches = modal->inches;
+        b.feed = modal->feed;
+        b.plane = modal->plane;
+        b.pathMode = modal->pathMode;
+        b.pathTolerance = modal->pathTolerance;
+        return b;
+    }
     if (words.first().letter == QLatin1Char('N')) {
         if (!isWhole(words.first().value) || words.first().value < 0)
             return fail(words.first().column,
@@ -375,6 +386,7 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     b.pathTolerance = next.pathTolerance;
     if (b.kind == BlockKind::Pause)
         b.prompt = line.comment;
+    b.message = line.message;
     if (b.kind == BlockKind::ToolChange) {
         // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by
         // hand: the program holds until the operator loaded it and resumes.

@@ -214,6 +214,8 @@ bool ProgramRunner::advance()
 {
     while (++m_index < m_program.blocks.size()) {
         const ProgramBlock& b = m_program.blocks.at(m_index);
+        if (!b.message.isEmpty())
+            Q_EMIT operatorMessage(b.line, b.message);
         switch (b.kind) {
         case BlockKind::Modal:
             continue;

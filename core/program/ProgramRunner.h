@@ -84,6 +84,8 @@ Q_SIGNALS:
     void paused(int line, const QString& prompt);
     // abort() while motion on a controller without a stop command runs out (message says so).
     void stopping(const QString& message);
+    // The run reached a line with "(MSG, text)" (LinuxCNC): text for the operator.
+    void operatorMessage(int line, const QString& text);
     void finished(stepdeck::program::RunState state, const QString& message);
 
 private:

@@ -148,6 +148,7 @@ void ProgramPage::onMachineChanged()
             updateControls();
         });
         connect(m_runner, &ProgramRunner::finished, this, &ProgramPage::onFinished);
+        connect(m_runner, &ProgramRunner::operatorMessage, this, &ProgramPage::operatorMessage);
     }
     if (machine) {
         QStringList axes;

@@ -32,8 +32,8 @@ class ProgramPromptBanner;
 // highlighted, "line n of m" with the estimated time left, M0's prompt in a banner with
 // Resume. The text is read-only while a program runs. STOP and PANIC of the window end a
 // running program as aborted (MainWindow calls abortRun() before it stops the machine).
-// Programs run on a machine: without a machine file the connected controller can be made
-// a machine of one controller (MachineDescription::singleController).
+// Programs run on the machine (every connection is one, issue 28 item 0). "(MSG, text)" lines
+// reach the window as operatorMessage().
 class ProgramPage : public QWidget
 {
     Q_OBJECT
@@ -56,6 +56,10 @@ public:
     bool isChecking() const;
     // What the confirmation of "Run from line" says about where the run starts.
     QString runFromText(int line) const;
+
+Q_SIGNALS:
+    // The run reached a line with "(MSG, text)" (LinuxCNC): the window shows it.
+    void operatorMessage(int line, const QString& text);
 
 public Q_SLOTS:
     // The window's STOP or PANIC: a running program ends as aborted.

@@ -261,6 +261,13 @@ void MainWindow::buildDocks()
         addDock(m_log, tr("Messages"), QStringLiteral("messagesDock"), Qt::BottomDockWidgetArea);
     tabifyDockWidget(traffic, log);
     m_programPage = new ProgramPage(m_context, this);
+    // A program's "(MSG, text)" on the message line, kept in the log (LinuxCNC shows it too).
+    connect(m_programPage, &ProgramPage::operatorMessage, this,
+            [this](int line, const QString& text) {
+                m_messages->show(StatusMessages::Owner::General,
+                                 tr("Program line %1: %2").arg(line).arg(text),
+                                 StatusMessages::Severity::Info, 30000);
+            });
     tabifyDockWidget(setup, addDock(m_programPage, tr("Program"), QStringLiteral("programDock"),
                                     Qt::BottomDockWidgetArea));
     connect(log, &QDockWidget::visibilityChanged, m_messageLine, &MessageLine::setLogOnScreen);

@@ -48,6 +48,8 @@ QString describe(const ProgramBlock& b)
     default:
         break;
     }
+    if (!b.message.isEmpty())
+        out << QStringLiteral("msg\"%1\"").arg(b.message);
     return out.join(QLatin1Char(' '));
 }
 
@@ -137,6 +139,11 @@ void TestProgramParser::parse_everyWord_golden_data()
                                            "3: O endrepeat abs mm F-"};
     QTest::newRow("lower case") << "g1 x1 f10" << QStringList{"1: G1 X=1 abs mm F10"};
     // Issue 29: T selects (modal), M6 changes by hand (a pause with its prompt).
+    // LinuxCNC's "(MSG, text)": a line of its own is a block that only says it.
+    QTest::newRow("MSG")
+        << "(MSG, Clamp the part)\nG0 X1 (msg,moving on)\n( MSG ,no: not a message)\n(a MSG, no)"
+        << QStringList{"1: modal abs mm F- msg\"Clamp the part\"",
+                       "2: G0 X=1 abs mm F- msg\"moving on\""};
     QTest::newRow("T M6 on one line")
         << "T1 M6" << QStringList{"1: M6 abs mm F- T1 \"Load tool 1\""};
     QTest::newRow("T before, M6 with a comment")

@@ -71,6 +71,7 @@ private Q_SLOTS:
     void step_oneBlockThenPaused();
     void pause_m0_pausedWithItsPrompt();
     void toolChange_m6_pausedToLoadTheToolThenOn();
+    void msg_reached_saidBeforeTheNextMoveGoesOut();
     void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
     void runFromLine_afterFault_startsThereWithItsModalState();
@@ -258,6 +259,25 @@ void TestProgramRunner::toolChange_m6_pausedToLoadTheToolThenOn()
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+}
+
+// Issue 29: "(MSG, text)" is said when the run reaches its line (in a repeat: each time),
+// before the next block's move goes out.
+void TestProgramRunner::msg_reached_saidBeforeTheNextMoveGoesOut()
+{
+    QList<QPair<int, int>> said; // line, moves the board had accepted then
+    connect(m_runner.get(), &ProgramRunner::operatorMessage, this,
+            [&](int line, const QString& text) {
+                QCOMPARE(text, QStringLiteral("Second pass"));
+                said << qMakePair(line, int(acceptedSteps(*m_elab, Axis::X).size()));
+            });
+    QVERIFY(run("G91 G0 X1\nO1 repeat [2]\n(MSG, Second pass)\nG0 X1\nO1 endrepeat\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(said.size(), 2);
+    QCOMPARE(said.at(0).first, 3);
+    QCOMPARE(said.at(0).second, 1); // only line 1's move: line 4's comes after it
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400, 400}));
 }
 
 void TestProgramRunner::abort_duringMove_deviceStandsStillNextBlockNeverArrives()
