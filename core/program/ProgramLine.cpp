@@ -294,6 +294,74 @@ std::pair<int, QString> applyPathMode(Words* words, ModalState* modal)
     return {};
 }
 
+// The line's modal words into *modal (G17-G19, G61/G64, G80, T, G90/G91, G20/G21, F).
+std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
+{
+    if (words->plane)
+        modal->plane = *words->plane;
+    if (const auto [column, why] = applyPathMode(words, modal); column > 0)
+        return {column, why};
+    if (words->cancelsMotion)
+        modal->motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
+    if (words->tool)
+        modal->tool = int(words->tool->value);
+    if (words->relative)
+        modal->relative = *words->relative;
+    if (words->inches)
+        modal->inches = *words->inches;
+    if (const ProgramWord* f = words->parameters.value('F')) {
+        if (f->value <= 0)
+            return {f->column,
+                    ProgramLine::tr("%1: the feed rate must be greater than 0").arg(f->valueText)};
+        modal->feed = f->value;
+    }
+    return {};
+}
+
+// The block's kind, axes and word columns: its action, or the modal motion for a line of
+// axis words; the modal motion afterwards into *modal.
+std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, ProgramBlock* b)
+{
+    b->kind = sorted.action.value_or(BlockKind::Modal);
+    if (!sorted.action && !sorted.axes.isEmpty()) {
+        if (!modal->motion)
+            return {sorted.axes.first()->column,
+                    ProgramLine::tr("axis words need G0 or G1 before them")};
+        b->kind = *modal->motion;
+    }
+    if (const auto [column, why] = checkActionWords(sorted, b); column > 0)
+        return {column, why};
+    if (b->kind == BlockKind::Feed && !sorted.axes.isEmpty() && !modal->feed)
+        return {sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
+                ProgramLine::tr("G1 needs a feed rate: F on this line or an earlier one")};
+    if (b->kind == BlockKind::Rapid || b->kind == BlockKind::Feed) {
+        modal->motion = b->kind;
+        // A motion word without axis words ("G1", "G1 F100") only sets the modal motion and
+        // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28).
+        if (sorted.axes.isEmpty())
+            b->kind = BlockKind::Modal;
+    }
+    for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it) {
+        b->axes.insert(it.key(), it.value()->value);
+        b->columns.insert(it.key(), it.value()->column);
+    }
+    for (auto it = sorted.parameters.cbegin(); it != sorted.parameters.cend(); ++it)
+        b->columns.insert(QString(it.key()), it.value()->column);
+    b->actionColumn = sorted.actionWord ? sorted.actionWord->column : 0;
+    return {};
+}
+
+// The modal state in effect for a block.
+void carryModal(const ModalState& modal, ProgramBlock* block)
+{
+    block->relative = modal.relative;
+    block->inches = modal.inches;
+    block->feed = modal.feed;
+    block->plane = modal.plane;
+    block->pathMode = modal.pathMode;
+    block->pathTolerance = modal.pathTolerance;
+}
+
 } // namespace
 
 std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNumber,
@@ -310,12 +378,7 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (words.isEmpty()) { // only "(MSG, text)": a block that says it and does nothing else
         ProgramBlock b;
         b.message = line.message;
-        b.relative = modal->relative;
-        b.inches = modal->inches;
-        b.feed = modal->feed;
-        b.plane = modal->plane;
-        b.pathMode = modal->pathMode;
-        b.pathTolerance = modal->pathTolerance;
+        carryModal(*modal, &b);
         return b;
     }
     if (words.first().letter == QLatin1Char('N')) {
@@ -334,59 +397,15 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (!LineWords(lineNumber, axisNames).sort(words, &sorted, error))
         return std::nullopt;
     ModalState next = *modal;
-    if (sorted.plane)
-        next.plane = *sorted.plane;
-    if (const auto [column, why] = applyPathMode(&sorted, &next); column > 0)
+    if (const auto [column, why] = applyModalWords(&sorted, &next); column > 0)
         return fail(column, why);
-    if (sorted.cancelsMotion)
-        next.motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
-    if (sorted.tool)
-        next.tool = int(sorted.tool->value);
-    if (sorted.relative)
-        next.relative = *sorted.relative;
-    if (sorted.inches)
-        next.inches = *sorted.inches;
-    if (const ProgramWord* f = sorted.parameters.value('F')) {
-        if (f->value <= 0)
-            return fail(f->column,
-                        tr("%1: the feed rate must be greater than 0").arg(f->valueText));
-        next.feed = f->value;
-    }
     ProgramBlock b;
-    b.kind = sorted.action.value_or(BlockKind::Modal);
-    if (!sorted.action && !sorted.axes.isEmpty()) {
-        if (!next.motion)
-            return fail(sorted.axes.first()->column, tr("axis words need G0 or G1 before them"));
-        b.kind = *next.motion;
-    }
-    if (const auto [column, why] = checkActionWords(sorted, &b); column > 0)
+    if (const auto [column, why] = fillBlock(sorted, &next, &b); column > 0)
         return fail(column, why);
-    if (b.kind == BlockKind::Feed && !sorted.axes.isEmpty() && !next.feed)
-        return fail(sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
-                    tr("G1 needs a feed rate: F on this line or an earlier one"));
-    if (b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed) {
-        next.motion = b.kind;
-        // A motion word without axis words ("G1", "G1 F100") only sets the modal motion and
-        // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28).
-        if (sorted.axes.isEmpty())
-            b.kind = BlockKind::Modal;
-    }
-    for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it) {
-        b.axes.insert(it.key(), it.value()->value);
-        b.columns.insert(it.key(), it.value()->column);
-    }
-    for (auto it = sorted.parameters.cbegin(); it != sorted.parameters.cend(); ++it)
-        b.columns.insert(QString(it.key()), it.value()->column);
-    b.actionColumn = sorted.actionWord ? sorted.actionWord->column : 0;
-    b.relative = next.relative;
-    b.inches = next.inches;
-    b.feed = next.feed;
-    b.plane = next.plane;
-    b.pathMode = next.pathMode;
-    b.pathTolerance = next.pathTolerance;
+    carryModal(next, &b);
+    b.message = line.message;
     if (b.kind == BlockKind::Pause)
         b.prompt = line.comment;
-    b.message = line.message;
     if (b.kind == BlockKind::ToolChange) {
         // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by
         // hand: the program holds until the operator loaded it and resumes.
