@@ -7,8 +7,7 @@
 namespace stepdeck::machine {
 
 namespace {
-// A run that shows no motion this long after its request was accepted did not start (as the
-// GUI's ReferenceRunner judges a single controller's run).
+// A run that shows no motion this long after its request was accepted did not start.
 constexpr qint64 kStartGraceMs = 3000;
 
 } // namespace

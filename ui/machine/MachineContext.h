@@ -24,9 +24,9 @@ QString modelDisplayName(const ModelInfo& model);
 // controller (connectTo(); before it connects, selectModel() shows the model's machine
 // unconnected). So every panel reads one model of axes, units, offsets and referenced state:
 // the machine's. session() is the selected controller's session, so every per-controller
-// page works on it. Panels connect to
-// session() once, when they are built (before any machine is open): that object stays the
-// panels' signal source, and with a machine open it relays the selected controller's signals
+// page works on it. Panels connect to session() once, when they are built: that object (the
+// context's own session, lent to the connection's machine: Machine::lendSession) stays their
+// signal source; with a machine file open it relays the selected controller's signals
 // (signal-to-signal connections; see relayFrom()). Switching the controller emits
 // modelChanged() (panels rebuild) and the new controller's link state and status.
 class MachineContext : public QObject
