@@ -50,6 +50,9 @@ struct PreviewPoint
     int line = 0;                   // the block that ends here
     double seconds = 0;             // estimated time since the start
     QMap<QString, double> position; // every axis the program has reached a known position of
+    // How the path reaches this point from the one before: G0 (true) or a feed move, an arc's
+    // chord, a dwell or a reference run (false); previews draw rapids apart from the cut.
+    bool rapid = false;
 };
 
 struct AxisExtent

@@ -107,7 +107,7 @@ void ProgramSimulation::move(PlannedBlock& planned)
     for (AxisMove* m = first; m != first + planned.moveCount; ++m)
         moveAxis(block, *m, &seconds);
     m_seconds += seconds;
-    addPoint(block.line);
+    addPoint(block.line, block.kind == BlockKind::Rapid);
 }
 
 void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds)
@@ -193,7 +193,7 @@ double ProgramSimulation::workOf(size_t a) const
     return m_axes.at(qsizetype(a)).toUnits(m_steps[a]) - m_offset[a];
 }
 
-void ProgramSimulation::addPoint(int line)
+void ProgramSimulation::addPoint(int line, bool rapid)
 {
     if (m_path.size() >= ProgramPreview::kMaxPathPoints) {
         m_pathTruncated = true;
@@ -202,6 +202,7 @@ void ProgramSimulation::addPoint(int line)
     PreviewPoint point;
     point.line = line;
     point.seconds = m_seconds;
+    point.rapid = rapid;
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_known[size_t(i)])
             point.position.insert(m_axes.at(i).name, workOf(size_t(i)));

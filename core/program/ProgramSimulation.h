@@ -125,7 +125,7 @@ private:
     void noteExtent(int axis);
     // Machine position (steps) -> work position (unit) of axis a.
     double workOf(size_t a) const;
-    void addPoint(int line);
+    void addPoint(int line, bool rapid = false);
     void tooManyBlocks(const ProgramBlock& block);
     void finish(ProgramPreview* preview) const;
 

@@ -284,7 +284,7 @@ void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
     preview.estimatedSeconds = 6;
     for (const auto& [line, seconds] :
          QList<QPair<int, double>>{{0, 0}, {2, 1}, {4, 3}, {2, 4}, {4, 6}})
-        preview.path << program::PreviewPoint{line, seconds, {}};
+        preview.path << program::PreviewPoint{line, seconds, {}, false};
     ProgramProgress progress;
     progress.reset(preview);
     QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
