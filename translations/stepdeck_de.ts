@@ -3570,6 +3570,45 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::ArcPath</name>
+        <message>
+            <source>%1: the position of %2 is unknown, so the arc has no start: reference the axis first (G28 %2)</source>
+            <translation>%1: Die Position von %2 ist unbekannt, der Bogen hat also keinen Anfang: zuerst die Achse referenzieren (G28 %2)</translation>
+        </message>
+        <message>
+            <source>%1: the machine has no axis %2, which an arc in this plane turns</source>
+            <translation>%1: Die Maschine hat keine Achse %2, die ein Bogen in dieser Ebene dreht</translation>
+        </message>
+        <message>
+            <source>%1: %2 and %3 have different units (%4, %5); an arc needs one</source>
+            <translation>%1: %2 und %3 haben verschiedene Einheiten (%4, %5); ein Bogen braucht eine</translation>
+        </message>
+        <message>
+            <source>%1 with R: the end point is the start point; a full circle takes I, J or K</source>
+            <translation>%1 mit R: Der Endpunkt ist der Startpunkt; ein Vollkreis nimmt I, J oder K</translation>
+        </message>
+        <message>
+            <source>%1: R%2 is too short to reach the end point, %3 away</source>
+            <translation>%1: R%2 ist zu kurz, um den Endpunkt zu erreichen, der %3 entfernt ist</translation>
+        </message>
+        <message>
+            <source>%1: the arc's radius is larger than %2</source>
+            <translation>%1: Der Radius des Bogens ist größer als %2</translation>
+        </message>
+        <message>
+            <source>%1: the centre lies on the start or the end point</source>
+            <translation>%1: Der Mittelpunkt liegt auf dem Start- oder Endpunkt</translation>
+        </message>
+        <message>
+            <source>%1: the end point is not on the arc: radius %2 at the start, %3 at the end, %4 apart (at most %5 allowed): check the centre and the end point</source>
+            <translation>%1: Der Endpunkt liegt nicht auf dem Bogen: Radius %2 am Anfang, %3 am Ende, %4 Unterschied (höchstens %5 erlaubt): Mittelpunkt und Endpunkt prüfen</translation>
+        </message>
+        <message>
+            <source>%1: the arc needs more than %2 chords</source>
+            <translation>%1: Der Bogen braucht mehr als %2 Sehnen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ProgramCheck</name>
         <message>
             <source>run from line %1: the program has no blocks</source>
@@ -3675,6 +3714,10 @@
             <source>%1 reaches %2 %3 in work coordinates, %4 %3 in machine coordinates: outside the soft limits %5..%6 %3 (machine)</source>
             <translation>%1 erreicht %2 %3 in Werkstückkoordinaten, %4 %3 in Maschinenkoordinaten: außerhalb der Software-Endlagen %5..%6 %3 (Maschine)</translation>
         </message>
+        <message>
+            <source>the run's arcs need more than %1 chords</source>
+            <translation>die Bögen des Laufs brauchen mehr als %1 Sehnen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramLexer</name>
@@ -3752,14 +3795,6 @@
         <message>
             <source>%1: the feed rate must be greater than 0</source>
             <translation>%1: der Vorschub muss größer als 0 sein</translation>
-        </message>
-        <message>
-            <source>axis words need G0 or G1 before them</source>
-            <translation>Achsworte brauchen vorher G0 oder G1</translation>
-        </message>
-        <message>
-            <source>G1 needs a feed rate: F on this line or an earlier one</source>
-            <translation>G1 braucht einen Vorschub: F in dieser oder einer früheren Zeile</translation>
         </message>
         <message>
             <source>%1 is not used by %2</source>
@@ -3852,6 +3887,42 @@
         <message>
             <source>Load tool %1 (%2)</source>
             <translation>Werkzeug %1 einsetzen (%2)</translation>
+        </message>
+        <message>
+            <source>axis words need G0, G1, G2 or G3 before them</source>
+            <translation>Achsworte brauchen davor G0, G1, G2 oder G3</translation>
+        </message>
+        <message>
+            <source>%1 needs a feed rate: F on this line or an earlier one</source>
+            <translation>%1 braucht einen Vorschub: F in dieser oder einer früheren Zeile</translation>
+        </message>
+        <message>
+            <source>%1: %2 in the %3 plane (%4) moves %5, %6 and %7 only</source>
+            <translation>%1: %2 in der %3-Ebene (%4) bewegt nur %5, %6 und %7</translation>
+        </message>
+        <message>
+            <source>%1 is not used by %2 in the %3 plane (%4): its centre takes %5 and %6</source>
+            <translation>%1 wird von %2 in der %3-Ebene (%4) nicht verwendet: sein Mittelpunkt nimmt %5 und %6</translation>
+        </message>
+        <message>
+            <source>%1: an arc takes its centre by I, J, K or by R, not both</source>
+            <translation>%1: Ein Bogen nimmt seinen Mittelpunkt über I, J, K oder über R, nicht beides</translation>
+        </message>
+        <message>
+            <source>%1 needs its centre: %2 and %3, or R</source>
+            <translation>%1 braucht seinen Mittelpunkt: %2 und %3 oder R</translation>
+        </message>
+        <message>
+            <source>%1: the radius must not be 0</source>
+            <translation>%1: Der Radius darf nicht 0 sein</translation>
+        </message>
+        <message>
+            <source>%1 with R needs an end point in the plane (%2 or %3); a full circle takes %4 and %5</source>
+            <translation>%1 mit R braucht einen Endpunkt in der Ebene (%2 oder %3); ein Vollkreis nimmt %4 und %5</translation>
+        </message>
+        <message>
+            <source>%1: P counts the arc's turns, a whole number 1..%2</source>
+            <translation>%1: P zählt die Umläufe des Bogens, eine ganze Zahl 1..%2</translation>
         </message>
     </context>
     <context>

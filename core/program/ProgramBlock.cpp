@@ -11,6 +11,10 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("G0");
     case BlockKind::Feed:
         return QStringLiteral("G1");
+    case BlockKind::ArcClockwise:
+        return QStringLiteral("G2");
+    case BlockKind::ArcCounterClockwise:
+        return QStringLiteral("G3");
     case BlockKind::Home:
         return QStringLiteral("G28");
     case BlockKind::Dwell:
@@ -58,7 +62,7 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
-           message == o.message && oNumber == o.oNumber && count == o.count &&
+           arc == o.arc && message == o.message && oNumber == o.oNumber && count == o.count &&
            partner == o.partner && columns == o.columns && actionColumn == o.actionColumn;
 }
 

@@ -10,12 +10,14 @@ namespace stepdeck::program {
 // G-code subset with LinuxCNC's meanings; a line holds at most one action besides the modal
 // words G90/G91, G20/G21 and F.
 enum class BlockKind : quint8 {
-    Modal,        // only modal words (G90, G21, F...) or an N number: nothing runs
-    Rapid,        // G0: positioning at the axes' fast speed
-    Feed,         // G1: positioning at the feed rate F (unit/min)
-    Home,         // G28: reference run of the named axes (none named: all, machine order)
-    Dwell,        // G4 P<seconds>
-    Pause,        // M0: until the operator resumes; prompt = the line's comment
+    Modal,               // only modal words (G90, G21, F...) or an N number: nothing runs
+    Rapid,               // G0: positioning at the axes' fast speed
+    Feed,                // G1: positioning at the feed rate F (unit/min)
+    ArcClockwise,        // G2: an arc (or helix) in the plane, run as chords at F (ArcPath)
+    ArcCounterClockwise, // G3
+    Home,                // G28: reference run of the named axes (none named: all, machine order)
+    Dwell,               // G4 P<seconds>
+    Pause,               // M0: until the operator resumes; prompt = the line's comment
     ToolChange,   // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
     End,          // M2, M30
     SpindleOn,    // M3 S<rpm>
@@ -34,6 +36,28 @@ enum class BlockKind : quint8 {
 enum class Plane : quint8 { XY, XZ, YZ };
 // LinuxCNC's path control mode (modal group 13).
 enum class PathMode : quint8 { ExactPath, ExactStop, Blend };
+
+// G2 and G3.
+inline bool isArc(BlockKind kind)
+{
+    return kind == BlockKind::ArcClockwise || kind == BlockKind::ArcCounterClockwise;
+}
+
+// The centre and turns of a G2/G3 as written (LinuxCNC): I J K (the centre; incremental from
+// the start unless G90.1) or R (the radius: + the shorter arc, - the longer one), P turns.
+struct ArcWords
+{
+    std::optional<double> i, j, k; // program units, as written
+    std::optional<double> radius;  // R
+    int turns = 1;                 // P: 1 = the arc as given, each more adds a full circle
+    bool centreAbsolute = false;   // G90.1 in effect (G91.1, incremental, is the default)
+
+    bool operator==(const ArcWords& o) const
+    {
+        return i == o.i && j == o.j && k == o.k && radius == o.radius && turns == o.turns &&
+               centreAbsolute == o.centreAbsolute;
+    }
+};
 
 // M0 and M6: the program holds until the operator resumes (the block's prompt says why).
 inline bool waitsForOperator(BlockKind kind)
@@ -63,6 +87,7 @@ struct ProgramBlock
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
     double rpm = 0;                      // M3 S
     QString prompt;                      // M0: the comment on its line
+    ArcWords arc;                        // G2/G3
     QString message;  // "(MSG, text)": shown to the operator when the run reaches the line
     int oNumber = 0;  // O<n>
     qint64 count = 0; // O repeat: how many times

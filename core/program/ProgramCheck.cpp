@@ -2,6 +2,7 @@
 // blocks against the controllers (ProgramPlan.cpp), then the run walked with its positions
 // (ProgramSimulation.cpp); factsOf() in ProgramFacts.cpp.
 #include "ProgramCheck.h"
+#include "ArcPath.h"
 #include "ProgramParser.h"
 #include "ProgramSimulation.h"
 #include <QSet>
@@ -65,10 +66,13 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
     QSet<QString> withG1;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
         const ProgramBlock& b = program.blocks.at(i);
-        if (b.kind == BlockKind::Feed)
-            for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it)
-                if (const machine::MachineAxis* a = d.axis(it.key()))
-                    withG1.insert(a->controller);
+        if (b.kind != BlockKind::Feed && !isArc(b.kind))
+            continue;
+        // An arc writes the rates of a G1 over the axes it moves (ArcPath::rateBlock).
+        const QStringList axes = isArc(b.kind) ? ArcPath::movingAxes(b) : b.axes.keys();
+        for (const QString& name : axes)
+            if (const machine::MachineAxis* a = d.axis(name))
+                withG1.insert(a->controller);
     }
     if (withG1.isEmpty())
         return;

@@ -111,6 +111,8 @@ class ProgramCheck
 public:
     // Blocks a check executes at most (repeats counted out); a longer program is an error.
     static constexpr qint64 kMaxBlocksRun = 5000000;
+    // Chords the arcs of a run take at most (ArcPath), counted out likewise.
+    static constexpr qint64 kMaxChordsRun = 20000000;
 
     static ProgramCheckResult check(const Program& program, const MachineFacts& facts,
                                     int fromLine = 1);

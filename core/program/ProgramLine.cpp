@@ -8,7 +8,7 @@ namespace stepdeck::program {
 namespace {
 
 const QString kAxisLetters = QStringLiteral("XYZABCUVW");
-const QString kParameterLetters = QStringLiteral("FSPLQ");
+const QString kParameterLetters = QStringLiteral("FSPLQIJKR");
 
 std::optional<BlockKind> actionOfG(int code)
 {
@@ -17,6 +17,10 @@ std::optional<BlockKind> actionOfG(int code)
         return BlockKind::Rapid;
     case 1:
         return BlockKind::Feed;
+    case 2:
+        return BlockKind::ArcClockwise;
+    case 3:
+        return BlockKind::ArcCounterClockwise;
     case 4:
         return BlockKind::Dwell;
     case 28:
@@ -186,7 +190,11 @@ private:
         case 800:
             out->cancelsMotion = true;
             break;
-        default: // G40, G49, G94, G90.1, G91.1, G98, G99: the modes StepDeck always runs in
+        case 901:
+        case 911:
+            out->centreAbsolute = tenths == 901;
+            break;
+        default: // G40, G49, G94, G98, G99: the modes StepDeck always runs in
             break;
         }
         return QString();
@@ -250,10 +258,11 @@ private:
         }
     }
 
-    // G0 and G1: LinuxCNC's motion group, with G80 (G4 and G28 are of no modal group).
+    // G0 to G3: LinuxCNC's motion group, with G80 (G4 and G28 are of no modal group).
     static bool isMotion(std::optional<BlockKind> action)
     {
-        return action == BlockKind::Rapid || action == BlockKind::Feed;
+        return action == BlockKind::Rapid || action == BlockKind::Feed ||
+               (action && isArc(*action));
     }
 
     static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
@@ -303,6 +312,8 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         return {column, why};
     if (words->cancelsMotion)
         modal->motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
+    if (words->centreAbsolute)
+        modal->centreAbsolute = *words->centreAbsolute;
     if (words->tool)
         modal->tool = int(words->tool->value);
     if (words->relative)
@@ -326,15 +337,21 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
     if (!sorted.action && !sorted.axes.isEmpty()) {
         if (!modal->motion)
             return {sorted.axes.first()->column,
-                    ProgramLine::tr("axis words need G0 or G1 before them")};
+                    ProgramLine::tr("axis words need G0, G1, G2 or G3 before them")};
         b->kind = *modal->motion;
     }
+    b->plane = modal->plane; // the arc's words depend on it
+    b->arc.centreAbsolute = modal->centreAbsolute;
     if (const auto [column, why] = checkActionWords(sorted, b); column > 0)
         return {column, why};
-    if (b->kind == BlockKind::Feed && !sorted.axes.isEmpty() && !modal->feed)
+    const bool arc = isArc(b->kind);
+    if ((b->kind == BlockKind::Feed || arc) && (!sorted.axes.isEmpty() || arc) && !modal->feed)
         return {sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
-                ProgramLine::tr("G1 needs a feed rate: F on this line or an earlier one")};
-    if (b->kind == BlockKind::Rapid || b->kind == BlockKind::Feed) {
+                ProgramLine::tr("%1 needs a feed rate: F on this line or an earlier one")
+                    .arg(blockWord(b->kind))};
+    if (arc) {
+        modal->motion = b->kind; // an arc always moves (its centre words are on the line)
+    } else if (b->kind == BlockKind::Rapid || b->kind == BlockKind::Feed) {
         modal->motion = b->kind;
         // A motion word without axis words ("G1", "G1 F100") only sets the modal motion and
         // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28).

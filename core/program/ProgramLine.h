@@ -12,13 +12,14 @@ struct ModalState
     bool relative = false;           // G91 (G90 default)
     bool inches = false;             // G20 (G21 default)
     std::optional<double> feed;      // F
-    std::optional<BlockKind> motion; // G0 or G1, once given: a line of axis words moves so
+    std::optional<BlockKind> motion; // G0..G3, once given: a line of axis words moves so
     Plane plane = Plane::XY;         // G17 (default), G18, G19
     // G61 exact path, G61.1 exact stop, G64 blending (LinuxCNC's default) with its P
     // tolerance; kept for the continuous path of the contouring issue.
     PathMode pathMode = PathMode::Blend;
     std::optional<double> pathTolerance; // G64 P
     std::optional<int> tool;             // T: the tool selected for the next M6
+    bool centreAbsolute = false;         // G90.1 (G91.1, incremental arc centres, default)
 };
 
 // One lexed line to its block (ProgramParser's line step): which words it has, whether they

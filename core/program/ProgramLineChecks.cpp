@@ -18,6 +18,9 @@ QString allowedParameters(BlockKind kind)
         return QStringLiteral("FP");
     case BlockKind::WaitInput:
         return QStringLiteral("FPLQ");
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise:
+        return QStringLiteral("FIJKRP");
     default:
         return QStringLiteral("F");
     }
@@ -26,7 +29,35 @@ QString allowedParameters(BlockKind kind)
 bool takesAxes(BlockKind kind)
 {
     return kind == BlockKind::Rapid || kind == BlockKind::Feed || kind == BlockKind::Home ||
-           kind == BlockKind::Modal;
+           kind == BlockKind::Modal || isArc(kind);
+}
+
+// LinuxCNC's arc planes (docs/programs.md "Arcs"): the two axes in the plane in the order
+// their angle is measured (G18 measures from Z towards X, so that G2 is clockwise seen from
+// +Y), the axis a helix moves, the centre's words and the G word that selects the plane.
+struct PlaneWords
+{
+    QString axes;   // "XY", "ZX", "YZ"
+    QChar helix;    // Z, Y, X
+    QString centre; // "IJ", "KI", "JK"
+    QString planeG; // "G17", "G18", "G19"
+    QString name;   // "XY", "XZ", "YZ"
+};
+
+PlaneWords planeWords(Plane plane)
+{
+    switch (plane) {
+    case Plane::XZ:
+        return {QStringLiteral("ZX"), QLatin1Char('Y'), QStringLiteral("KI"), QStringLiteral("G18"),
+                QStringLiteral("XZ")};
+    case Plane::YZ:
+        return {QStringLiteral("YZ"), QLatin1Char('X'), QStringLiteral("JK"), QStringLiteral("G19"),
+                QStringLiteral("YZ")};
+    case Plane::XY:
+        break;
+    }
+    return {QStringLiteral("XY"), QLatin1Char('Z'), QStringLiteral("IJ"), QStringLiteral("G17"),
+            QStringLiteral("XY")};
 }
 
 class Checker
@@ -54,6 +85,9 @@ public:
             return whole('P', &m_block->number);
         case BlockKind::WaitInput:
             return waitInput();
+        case BlockKind::ArcClockwise:
+        case BlockKind::ArcCounterClockwise:
+            return arc();
         default:
             return {};
         }
@@ -114,6 +148,77 @@ private:
                     ProgramLine::tr("%1: L3 waits for high, L4 for low").arg(l->valueText)};
         m_block->inputHigh = l->value == 3;
         return number('Q', 0, 1e6, true, &m_block->seconds);
+    }
+
+    // G2/G3 (LinuxCNC): axis words of the plane and its helix axis, the centre by the
+    // plane's two of I J K or by R, P whole turns.
+    std::pair<int, QString> arc()
+    {
+        const PlaneWords plane = planeWords(m_block->plane);
+        const QString g = blockWord(m_block->kind);
+        bool endInPlane = false;
+        for (auto it = m_words.axes.cbegin(); it != m_words.axes.cend(); ++it) {
+            const QChar l = it.key().at(0);
+            endInPlane = endInPlane || plane.axes.contains(l);
+            if (!plane.axes.contains(l) && l != plane.helix)
+                return {it.value()->column,
+                        ProgramLine::tr("%1: %2 in the %3 plane (%4) moves %5, %6 and %7 only")
+                            .arg(it.value()->valueText, g, plane.name, plane.planeG)
+                            .arg(plane.axes.at(0))
+                            .arg(plane.axes.at(1))
+                            .arg(plane.helix)};
+        }
+        const ProgramWord* r = m_words.parameters.value('R');
+        bool anyCentre = false;
+        for (const QChar l : {QLatin1Char('I'), QLatin1Char('J'), QLatin1Char('K')}) {
+            const ProgramWord* w = m_words.parameters.value(l);
+            if (!w)
+                continue;
+            if (!plane.centre.contains(l))
+                return {w->column, ProgramLine::tr("%1 is not used by %2 in the %3 plane (%4): "
+                                                   "its centre takes %5 and %6")
+                                       .arg(w->valueText, g, plane.name, plane.planeG)
+                                       .arg(plane.centre.at(0))
+                                       .arg(plane.centre.at(1))};
+            if (r)
+                return {r->column, ProgramLine::tr("%1: an arc takes its centre by I, J, K or by "
+                                                   "R, not both")
+                                       .arg(r->valueText)};
+            anyCentre = true;
+            std::optional<double>& out = l == QLatin1Char('I')   ? m_block->arc.i
+                                         : l == QLatin1Char('J') ? m_block->arc.j
+                                                                 : m_block->arc.k;
+            out = w->value;
+        }
+        if (!r && !anyCentre)
+            return {m_words.actionWord ? m_words.actionWord->column : m_words.axes.first()->column,
+                    ProgramLine::tr("%1 needs its centre: %2 and %3, or R")
+                        .arg(g)
+                        .arg(plane.centre.at(0))
+                        .arg(plane.centre.at(1))};
+        if (r) {
+            if (r->value == 0)
+                return {r->column,
+                        ProgramLine::tr("%1: the radius must not be 0").arg(r->valueText)};
+            if (!endInPlane)
+                return {r->column, ProgramLine::tr("%1 with R needs an end point in the plane "
+                                                   "(%2 or %3); a full circle takes %4 and %5")
+                                       .arg(g)
+                                       .arg(plane.axes.at(0))
+                                       .arg(plane.axes.at(1))
+                                       .arg(plane.centre.at(0))
+                                       .arg(plane.centre.at(1))};
+            m_block->arc.radius = r->value;
+        }
+        if (const ProgramWord* p = m_words.parameters.value('P')) {
+            if (!isWhole(p->value) || p->value < 1 || p->value > kMaxArcTurns)
+                return {p->column, ProgramLine::tr("%1: P counts the arc's turns, a whole number "
+                                                   "1..%2")
+                                       .arg(p->valueText)
+                                       .arg(kMaxArcTurns)};
+            m_block->arc.turns = int(p->value);
+        }
+        return {};
     }
 
     const Words& m_words;

@@ -7,7 +7,8 @@
 
 namespace stepdeck::program {
 
-constexpr int kMaxTool = 99999; // the highest T a program may select
+constexpr int kMaxTool = 99999;    // the highest T a program may select
+constexpr int kMaxArcTurns = 1000; // G2/G3 P: the most turns of one helix
 
 inline bool isWhole(double v)
 {
@@ -25,10 +26,11 @@ struct Words
     // LinuxCNC's other modal groups, each at most once a line (issue 29): the word of each
     // group given (group number as LinuxCNC numbers them), and what it sets.
     QMap<int, const ProgramWord*> groups;
-    std::optional<Plane> plane;        // G17 / G18 / G19
-    std::optional<PathMode> pathMode;  // G61 / G61.1 / G64
-    const ProgramWord* tool = nullptr; // T: selects the tool M6 changes to
-    bool cancelsMotion = false;        // G80: no modal motion afterwards
+    std::optional<Plane> plane;         // G17 / G18 / G19
+    std::optional<PathMode> pathMode;   // G61 / G61.1 / G64
+    const ProgramWord* tool = nullptr;  // T: selects the tool M6 changes to
+    bool cancelsMotion = false;         // G80: no modal motion afterwards
+    std::optional<bool> centreAbsolute; // G90.1 / G91.1
     QMap<QChar, const ProgramWord*> parameters;
     QMap<QString, const ProgramWord*> axes;
 };

@@ -1,5 +1,6 @@
 // The check's first part (ProgramCheck): each block against what the machine's controllers
 // take, before any position is followed (docs/programs.md "Check").
+#include "ArcPath.h"
 #include "ProgramRules.h"
 #include "ProgramSimulation.h"
 #include "ProgramUnits.h"
@@ -48,6 +49,11 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     case BlockKind::Rapid:
     case BlockKind::Feed:
         planMove(block, &out);
+        checkSetup(block, out);
+        break;
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise:
+        planArc(block, &out);
         checkSetup(block, out);
         break;
     case BlockKind::Home:
@@ -104,6 +110,19 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
     }
     if (block.kind == BlockKind::Feed && ratesTaken)
         checkFeedWrite(block);
+}
+
+// G2/G3: the rates of a G1 over the axes the arc moves (ArcPath::rateBlock), kept with the
+// arc's own block, so that errors name its words; the path itself is the walk's
+// (ProgramSimulation::arc), which knows where the arc starts. An axis the machine lacks is
+// named there.
+void ProgramPlan::planArc(const ProgramBlock& block, PlannedBlock* out)
+{
+    ProgramBlock rates = ArcPath::rateBlock(block);
+    for (const QString& name : rates.axes.keys())
+        if (axisIndex(m_facts.description, name) < 0)
+            rates.axes.remove(name);
+    planMove(rates, out);
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s

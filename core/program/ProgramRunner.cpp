@@ -84,6 +84,14 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     m_program = program;
     m_preview = checked.preview;
     m_offsets = m_nextOffsets;
+    // The current point starts where the check started it: the machine's known positions.
+    m_programmed.assign(size_t(facts.description.axes.size()), std::nullopt);
+    for (qsizetype i = 0; i < facts.description.axes.size(); ++i)
+        if (const auto it = facts.knownPositions.constFind(facts.description.axes.at(i).name);
+            it != facts.knownPositions.cend())
+            m_programmed[size_t(i)] = it.value();
+    m_arc.reset();
+    m_heldInArc = false;
     // advance() steps onto the first block on or after fromLine.
     int first = 0;
     while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)
@@ -148,7 +156,10 @@ void ProgramRunner::resume()
     m_stepOnly = false;
     m_prompt.clear();
     setState(RunState::Running);
-    runNext();
+    if (std::exchange(m_heldInArc, false))
+        sendChord(); // on along the arc it held in
+    else
+        runNext();
 }
 
 void ProgramRunner::step()
@@ -159,7 +170,10 @@ void ProgramRunner::step()
     m_stepOnly = true;
     m_prompt.clear();
     setState(RunState::Running);
-    runNext();
+    if (std::exchange(m_heldInArc, false))
+        sendChord(); // the rest of the arc is the step
+    else
+        runNext();
 }
 
 void ProgramRunner::abort()
@@ -247,6 +261,13 @@ void ProgramRunner::blockDone()
     m_motion = 0;
     ++m_blocksDone;
     const ProgramBlock& block = m_program.blocks.at(m_index);
+    if (m_arc) {
+        for (const auto& [axis, value] : m_arc->end())
+            m_programmed[size_t(axis)] = value;
+        m_arc.reset();
+    } else {
+        advanceAxisPositions(block, m_machine->description(), m_offsets, &m_programmed);
+    }
     Q_EMIT blockFinished(block.line);
     if (block.kind == BlockKind::End) {
         finishProgram();
@@ -298,6 +319,8 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_inputTimeout.stop();
     m_waitInput = 0;
     m_motion = 0;
+    m_arc.reset();
+    m_heldInArc = false;
     m_requests.clear();
     m_afterRequests = nullptr;
     if (state != RunState::Finished && m_rates)

@@ -1,4 +1,5 @@
 #pragma once
+#include "ArcPath.h"
 #include "ProgramBlock.h"
 #include "ProgramCheck.h"
 #include "model/CommandResult.h"
@@ -111,6 +112,9 @@ private:
     void startBlock(const ProgramBlock& block);
     void startMove(const ProgramBlock& block);
     void sendMove(const ProgramBlock& block);
+    void startArc(const ProgramBlock& block);
+    void sendChord();
+    bool nextChord(); // after a chord arrived: true while the arc goes on (or holds)
     void startHome(const ProgramBlock& block);
     void startWaitInput(const ProgramBlock& block);
     void checkInput();
@@ -153,6 +157,11 @@ private:
     QString m_inputController;
     int m_inputNumber = 0; // on that controller
     std::unique_ptr<ProgramRates> m_rates;
+    // The current point (ArcPath): where the blocks done put the axes, unrounded.
+    AxisPositions m_programmed;
+    std::optional<ArcPath> m_arc; // the arc running, its chords sent one at a time
+    qint64 m_chord = 0;           // the chord under way (1..chords)
+    bool m_heldInArc = false;     // paused between two chords of m_arc
     QList<QMetaObject::Connection> m_connections;
 };
 

@@ -17,6 +17,10 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     case BlockKind::Feed:
         startMove(block);
         return;
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise:
+        startArc(block);
+        return;
     case BlockKind::Home:
         startHome(block);
         return;
@@ -55,6 +59,53 @@ void ProgramRunner::sendMove(const ProgramBlock& block)
     m_motion = m_machine->move(axisTargets(block), !block.relative, &refusal, kind);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
+}
+
+// G2/G3: the path from the current point (ArcPath, as the check took it), its rates written
+// once as for a G1 over its axes, then one chord after the other, each an absolute move that
+// starts when the one before arrived; a pause holds between two chords.
+void ProgramRunner::startArc(const ProgramBlock& block)
+{
+    std::variant<ArcPath, ArcPath::Error> planning =
+        ArcPath::plan(block, m_machine->description(), m_programmed, m_offsets);
+    if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
+        fail(ErrorKind::Refused, e->message); // the check refused it first
+        return;
+    }
+    m_arc = std::get<ArcPath>(std::move(planning));
+    m_chord = 0;
+    const QMap<RequestId, QString> rates = m_rates->before(ArcPath::rateBlock(block));
+    awaitRequests(rates, [this] { sendChord(); });
+}
+
+void ProgramRunner::sendChord()
+{
+    if (!m_arc)
+        return;
+    ++m_chord;
+    QMap<QString, double> targets;
+    const machine::MachineDescription& d = m_machine->description();
+    for (const auto& [axis, value] : m_arc->pointAt(m_chord))
+        targets.insert(d.axes.at(axis).name, value);
+    QString refusal;
+    m_motion = m_machine->move(targets, true, &refusal, machine::Machine::MoveKind::Feed);
+    if (m_motion == 0)
+        fail(ErrorKind::Refused, refusal);
+}
+
+bool ProgramRunner::nextChord()
+{
+    if (!m_arc || m_chord >= m_arc->chords())
+        return false;
+    if (m_pauseAsked) {
+        m_pauseAsked = false;
+        m_heldInArc = true;
+        setState(RunState::Paused);
+        Q_EMIT paused(currentLine(), QString());
+        return true;
+    }
+    sendChord();
+    return true;
 }
 
 void ProgramRunner::startHome(const ProgramBlock& block)
@@ -217,6 +268,8 @@ void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message
         failSoon(ErrorKind::None, message);
         return;
     }
+    if (nextChord())
+        return;
     blockDone();
 }
 

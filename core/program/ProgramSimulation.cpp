@@ -19,6 +19,7 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* 
     m_minimum.assign(n, 0);
     m_maximum.assign(n, 0);
     m_offset.assign(n, 0);
+    m_programmed.assign(n, std::nullopt);
     for (size_t i = 0; i < n; ++i) {
         const machine::MachineAxis& axis = m_axes.at(qsizetype(i));
         const double offset = facts.workOffsets.value(axis.name, 0.0);
@@ -27,6 +28,7 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* 
         if (it != facts.knownPositions.cend() && std::isfinite(it.value())) {
             m_steps[i] = axis.toSteps(it.value());
             m_known[i] = 1;
+            m_programmed[i] = it.value();
             noteExtent(int(i));
         }
     }
@@ -83,6 +85,10 @@ void ProgramSimulation::execute(PlannedBlock& planned)
     case BlockKind::Feed:
         move(planned);
         break;
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise:
+        arc(planned);
+        break;
     case BlockKind::Home:
         home(planned);
         break;
@@ -106,6 +112,7 @@ void ProgramSimulation::move(PlannedBlock& planned)
     AxisMove* const first = m_moves.data() + planned.firstMove;
     for (AxisMove* m = first; m != first + planned.moveCount; ++m)
         moveAxis(block, *m, &seconds);
+    advanceAxisPositions(block, m_facts.description, m_facts.workOffsets, &m_programmed);
     m_seconds += seconds;
     addPoint(block.line, block.kind == BlockKind::Rapid);
 }
@@ -142,7 +149,14 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     if (!m_known[a])
         return; // a relative move from an unknown position: its target is unknown too
     // The soft limits are machine coordinates.
-    const double to = block.relative ? here + m.value : m.value + m_offset[a];
+    checkLimit(block, m, block.relative ? here + m.value : m.value + m_offset[a]);
+    noteExtent(m.axis);
+}
+
+void ProgramSimulation::checkLimit(const ProgramBlock& block, AxisMove& m, double to)
+{
+    const machine::MachineAxis& axis = m_axes.at(m.axis);
+    const size_t a = size_t(m.axis);
     if (axis.hasSoftLimits() && !m.reportedLimit &&
         (to < *axis.softMinimum || to > *axis.softMaximum)) {
         m.reportedLimit = true;
@@ -157,7 +171,6 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
                      figure(*axis.softMaximum));
         });
     }
-    noteExtent(m.axis);
 }
 
 void ProgramSimulation::home(const PlannedBlock& planned)
@@ -170,6 +183,7 @@ void ProgramSimulation::home(const PlannedBlock& planned)
         m_moved[a] = 1;
         m_steps[a] = 0;
         m_known[a] = 1;
+        m_programmed[a] = 0.0;
         noteExtent(m->axis);
     }
     addPoint(planned.block->line);
@@ -177,8 +191,12 @@ void ProgramSimulation::home(const PlannedBlock& planned)
 
 void ProgramSimulation::noteExtent(int axis)
 {
+    noteExtentAt(axis, workOf(size_t(axis)));
+}
+
+void ProgramSimulation::noteExtentAt(int axis, double at)
+{
     const size_t a = size_t(axis);
-    const double at = workOf(a);
     if (!m_extentKnown[a]) {
         m_extentKnown[a] = 1;
         m_minimum[a] = m_maximum[a] = at;

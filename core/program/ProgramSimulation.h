@@ -1,6 +1,8 @@
 #pragma once
 // Internal to ProgramCheck: a program's blocks planned in the machine's terms (ProgramPlan.cpp)
-// and walked with their repeats counted out (ProgramSimulation.cpp).
+// and walked with their repeats counted out (ProgramSimulation.cpp, arcs in
+// ProgramSimulationArc.cpp).
+#include "ArcPath.h"
 #include "ProgramCheck.h"
 #include <algorithm>
 #include <vector>
@@ -26,7 +28,8 @@ struct PlannedBlock
     // first + count): one array for the whole program, not one per block.
     int firstMove = 0;
     int moveCount = 0;
-    int partner = -1; // repeats: the other end's index
+    int partner = -1;         // repeats: the other end's index
+    bool reportedArc = false; // an arc's error, reported once however often a repeat runs it
 };
 
 struct PlannedProgram
@@ -76,6 +79,7 @@ public:
 
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
+    void planArc(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
@@ -122,7 +126,14 @@ private:
     void move(PlannedBlock& planned);
     void home(const PlannedBlock& planned);
     void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
+    void arc(PlannedBlock& planned);
+    void arcChords(const ArcPath& path, PlannedBlock& planned);
+    // Whether machine position `to` of the axis lies outside its soft limits (reported once
+    // per axis word).
+    void checkLimit(const ProgramBlock& block, AxisMove& m, double to);
+    AxisMove* plannedMove(const PlannedBlock& planned, int axis);
     void noteExtent(int axis);
+    void noteExtentAt(int axis, double work);
     // Machine position (steps) -> work position (unit) of axis a.
     double workOf(size_t a) const;
     void addPoint(int line, bool rapid = false);
@@ -141,8 +152,10 @@ private:
     std::vector<char> m_extentKnown;
     std::vector<double> m_minimum, m_maximum; // work coordinates
     std::vector<double> m_offset;             // the axis' work offset, in its unit
+    AxisPositions m_programmed; // the current point (unrounded), as the run follows it
     std::vector<Loop> m_loops;
     qint64 m_blocksRun = 0;
+    qint64 m_chordsRun = 0; // arcs' chords, counted out like blocks
     double m_seconds = 0;
     QList<PreviewPoint> m_path;
     bool m_pathTruncated = false;

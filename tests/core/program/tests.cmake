@@ -18,3 +18,5 @@ stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_program
 # whatever the run would refuse (issue 28, item 1).
 stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckedruns.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
+# G2/G3 geometry (issue 29): the path the check and the run share.
+stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp LABELS unit)

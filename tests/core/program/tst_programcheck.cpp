@@ -217,6 +217,37 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
                        "3:8: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0",
                        "4:4: Y reaches 300 mm, outside the soft limits 0..200 mm"};
+    // Arcs (issue 29): the same path as the run, from the current point.
+    QTest::newRow("arc within the limits") << "mill"
+                                           << "X=0 Y=0"
+                                           << "G0 X10 Y50\nG2 X10 Y60 I0 J5 F60" << QStringList{};
+    QTest::newRow("arc past a soft limit at its extreme, not at its ends")
+        << "mill"
+        << "X=0 Y=0"
+        << "G0 X1 Y50\nG2 X1 Y60 I0 J5 F60"
+        << QStringList{"2:4: X reaches -4 mm, outside the soft limits 0..100 mm"};
+    QTest::newRow("arc from an unknown position")
+        << "mill"
+        << "Y=0"
+        << "G2 X10 Y10 I5 J5 F60"
+        << QStringList{"1:4: G2: the position of X is unknown, so the arc has no start: "
+                       "reference the axis first (G28 X)"};
+    QTest::newRow("arc whose end is off its circle")
+        << "mill"
+        << "X=0 Y=0"
+        << "G0 X10 Y10\nG2 X20 Y10 I4 J0 F60"
+        << QStringList{"2:1: G2: the end point is not on the arc: radius 4 at the start, 6 at the "
+                       "end, 2 apart (at most 0.028 allowed): check the centre and the end point"};
+    QTest::newRow("arc in a repeat: named once")
+        << "mill"
+        << "X=0 Y=0"
+        << "O1 repeat [3]\nG0 X10 Y10\nG2 X20 Y10 R4 F60\nO1 endrepeat"
+        << QStringList{"3:12: G2: R4 is too short to reach the end point, 10 away"};
+    QTest::newRow("G19 arc over the top of Z's travel")
+        << "mill"
+        << "Y=0 Z=0"
+        << "G19 G2 Y10 Z0 J5 F60"
+        << QStringList{"1:12: Z reaches 5 mm, outside the soft limits -50..0 mm"};
     QTest::newRow("repeat of count 0: its moves never run")
         << "mill"
         << "X=0"

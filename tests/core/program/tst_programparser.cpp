@@ -45,6 +45,24 @@ QString describe(const ProgramBlock& b)
     case BlockKind::RepeatStart:
         out << QStringLiteral("x%1").arg(b.count);
         break;
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise: {
+        const QString plane[] = {QStringLiteral("G17"), QStringLiteral("G18"),
+                                 QStringLiteral("G19")};
+        out << plane[int(b.plane)];
+        const auto word = [&](const char* l, const std::optional<double>& v) {
+            if (v)
+                out << QStringLiteral("%1%2").arg(QLatin1String(l)).arg(*v);
+        };
+        word("I", b.arc.i);
+        word("J", b.arc.j);
+        word("K", b.arc.k);
+        word("R", b.arc.radius);
+        out << QStringLiteral("P%1").arg(b.arc.turns);
+        if (b.arc.centreAbsolute)
+            out << QStringLiteral("G90.1");
+        break;
+    }
     default:
         break;
     }
@@ -161,6 +179,28 @@ void TestProgramParser::parse_everyWord_golden_data()
     QTest::newRow("G80 beside other modes")
         << "G0 X1\nG80 G90 G17\nG0 X2"
         << QStringList{"1: G0 X=1 abs mm F-", "2: modal abs mm F-", "3: G0 X=2 abs mm F-"};
+    // Arcs (issue 29): the centre by I J K or R, the plane, P turns, modal G2/G3, G90.1.
+    QTest::newRow("G2 with I J") << "G2 X10 Y0 I5 J0 F300"
+                                 << QStringList{"1: G2 X=10 Y=0 abs mm F300 G17 I5 J0 P1"};
+    QTest::newRow("G3 with R, modal afterwards")
+        << "G1 F100\nG3 X5 Y5 R5\nX0 Y10 R-5"
+        << QStringList{"1: modal abs mm F100", "2: G3 X=5 Y=5 abs mm F100 G17 R5 P1",
+                       "3: G3 X=0 Y=10 abs mm F100 G17 R-5 P1"};
+    QTest::newRow("full circle, one centre word")
+        << "F200 G2 I-5" << QStringList{"1: G2 abs mm F200 G17 I-5 P1"};
+    QTest::newRow("helix with turns")
+        << "G91 G3 Z-3 I4 P3 F50" << QStringList{"1: G3 Z=-3 rel mm F50 G17 I4 P3"};
+    QTest::newRow("G18 takes I and K")
+        << "G18 G2 X2 Z0 I1 K0 F60" << QStringList{"1: G2 X=2 Z=0 abs mm F60 G18 I1 K0 P1"};
+    QTest::newRow("G19 takes J and K, G90.1")
+        << "G19 G90.1 G3 Y1 Z1 J0 K1 F60"
+        << QStringList{"1: G3 Y=1 Z=1 abs mm F60 G19 J0 K1 P1 G90.1"};
+    QTest::newRow("inch arc") << "G20 G2 X1 Y1 I0.5 J0.5 F10"
+                              << QStringList{"1: G2 X=1 Y=1 abs in F10 G17 I0.5 J0.5 P1"};
+    QTest::newRow("G80 ends modal arcs")
+        << "G2 X1 I1 F10\nG80\nG0 X0"
+        << QStringList{"1: G2 X=1 abs mm F10 G17 I1 P1", "2: modal abs mm F10",
+                       "3: G0 X=0 abs mm F10"};
 }
 
 void TestProgramParser::parse_everyWord_golden()
@@ -178,8 +218,37 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
 {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("error"); // "line:column: message" starts with this
-    QTest::newRow("unknown G") << "G0 X1\nG2 X1 Y1"
-                               << "2:1: G2 is not supported";
+    QTest::newRow("unknown G") << "G0 X1\nG5 X1 Y1"
+                               << "2:1: G5 is not supported";
+    QTest::newRow("arc without centre") << "G0 X1\nG2 X1 Y1 F10"
+                                        << "2:1: G2 needs its centre: I and J, or R";
+    QTest::newRow("arc without F") << "G3 X1 I1"
+                                   << "1:1: G3 needs a feed rate: F on this line or an earlier one";
+    QTest::newRow("arc R and I")
+        << "G2 X1 I1 R1 F10"
+        << "1:10: R1: an arc takes its centre by I, J, K or by R, not both";
+    QTest::newRow("arc K in G17") << "G2 X1 K1 F10"
+                                  << "1:7: K1 is not used by G2 in the XY plane (G17): its centre "
+                                     "takes I and J";
+    QTest::newRow("arc J in G18") << "G18 G2 X1 J1 F10"
+                                  << "1:11: J1 is not used by G2 in the XZ plane (G18): its "
+                                     "centre takes K and I";
+    QTest::newRow("arc R without end in plane")
+        << "G2 Z1 R3 F10"
+        << "1:7: G2 with R needs an end point in the plane (X or Y); a full circle takes I and J";
+    QTest::newRow("arc R zero") << "G2 X1 R0 F10"
+                                << "1:7: R0: the radius must not be 0";
+    QTest::newRow("arc A axis") << "G2 X1 A5 I1 F10"
+                                << "1:7: A5: G2 in the XY plane (G17) moves X, Y and Z only";
+    QTest::newRow("arc turns fraction") << "G2 I1 P1.5 F10"
+                                        << "1:7: P1.5: P counts the arc's turns, a whole number "
+                                           "1..1000";
+    QTest::newRow("arc turns zero") << "G2 I1 P0 F10"
+                                    << "1:7: P0: P counts the arc's turns";
+    QTest::newRow("I with G1") << "G1 X1 I1 F10"
+                               << "1:7: I1 is not used by G1";
+    QTest::newRow("arc plus G0") << "G0 G2 X1 I1 F10"
+                                 << "1:4: one action per line: G0 and G2";
     QTest::newRow("unknown M") << "M19"
                                << "1:1: M19 is not supported";
     QTest::newRow("M6 without T") << "G0 X1\nM6"
@@ -207,7 +276,7 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("G20 and G21") << "G20 G21"
                                  << "1:5: G20 and G21 on one line";
     QTest::newRow("axes before motion") << "X1"
-                                        << "1:1: axis words need G0 or G1";
+                                        << "1:1: axis words need G0, G1, G2 or G3";
     QTest::newRow("G1 without F") << "G1 X1"
                                   << "1:1: G1 needs a feed rate";
     QTest::newRow("F zero") << "G1 X1 F0"
@@ -268,7 +337,7 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("G0 and G80") << "G0 G80 X1"
                                 << "1:4: G0 and G80 on one line";
     QTest::newRow("G80 cancels the motion") << "G0 X1\nG80\nX2"
-                                            << "3:1: axis words need G0 or G1";
+                                            << "3:1: axis words need G0, G1, G2 or G3";
     QTest::newRow("G41") << "G41 D1"
                          << "1:1: G41 (cutter radius compensation) is not supported: "
                             "let the CAM post compensate the path";

@@ -14,6 +14,7 @@ class TestProgramPreview : public QObject
 private Q_SLOTS:
     void preview_figures_extentsPathAndEstimatedSeconds();
     void preview_millionPassRepeat_countedOutPathBounded();
+    void preview_arc_chordPointsWithinToleranceRapidsMarked();
     void check_workOffsets_targetsInWorkLimitsInMachine_data();
     void check_workOffsets_targetsInWorkLimitsInMachine();
 };
@@ -75,6 +76,48 @@ void TestProgramPreview::preview_millionPassRepeat_countedOutPathBounded()
 
 // Issue 28, item 3: absolute targets are work coordinates (machine = work + offset), the soft
 // limits machine coordinates; the preview's path and extents are work coordinates.
+// An arc's path in the preview: every chord's end on the circle (work coordinates), the
+// chords' middles within 0.01 mm of it, the extents at the curve's extremes, only G0's points
+// marked rapid; its time from the chords (each axis at F: X at 100 steps/mm).
+void TestProgramPreview::preview_arc_chordPointsWithinToleranceRapidsMarked()
+{
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = {{"X", 0.0}, {"Y", 0.0}};
+    facts.workOffsets = {{"X", 20.0}, {"Y", 30.0}};
+    const Program p = parsed("G0 X10 Y10\nG3 X10 Y10 I5 J0 F600\nG1 X0 F600\n", facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const ProgramPreview& v = result.preview;
+    QVERIFY(v.path.at(1).rapid);
+    QCOMPARE(v.path.at(1).line, 1);
+    QList<PreviewPoint> arc;
+    for (const PreviewPoint& point : v.path)
+        if (point.line == 2)
+            arc << point;
+    QVERIFY(arc.size() >= 50); // 2 acos(1 - 0.01 / 5) = 0.1265 rad a chord: 50 for the circle
+    QPointF previous(10, 10);
+    for (const PreviewPoint& point : arc) {
+        QVERIFY(!point.rapid);
+        const QPointF at(point.position.value("X"), point.position.value("Y"));
+        QVERIFY(std::abs(std::hypot(at.x() - 15, at.y() - 10) - 5) < 0.006); // steps: 0.005
+        const QPointF middle = (at + previous) / 2;
+        QVERIFY(5 - std::hypot(middle.x() - 15, middle.y() - 10) <= 0.01 + 0.006);
+        previous = at;
+    }
+    QCOMPARE(arc.last().position.value("X"), 10.0);
+    QCOMPARE(arc.last().position.value("Y"), 10.0);
+    QVERIFY(!v.path.last().rapid);
+    // Machine 0 is work -20 / -30 (the start); X reaches 20 at the circle's right.
+    QCOMPARE(v.extents["X"].minimum, -20.0);
+    QCOMPARE(v.extents["X"].maximum, 20.0);
+    QCOMPARE(v.extents["Y"].minimum, -30.0);
+    QCOMPARE(v.extents["Y"].maximum, 15.0);
+    // F600 = 10 mm/s an axis: the circle's chords take about its perimeter over the axis speed,
+    // each chord as long as its longer axis; between 2 x 10 / 10 and 2 pi 5 / 10 seconds.
+    const double arcSeconds = arc.last().seconds - v.path.at(1).seconds;
+    QVERIFY2(arcSeconds > 2.0 && arcSeconds < 3.15, qPrintable(QString::number(arcSeconds)));
+}
+
 void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine_data()
 {
     QTest::addColumn<QString>("program");

@@ -81,6 +81,8 @@ private Q_SLOTS:
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
     void run_workOffsets_absoluteTargetsShiftedRelativeNot();
+    void arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart();
+    void pause_duringArc_holdsBetweenChordsResumeFinishesTheArc();
 
 private:
     MachineDescription description() const;
@@ -442,6 +444,103 @@ void TestProgramRunner::run_workOffsets_absoluteTargetsShiftedRelativeNot()
     // At the drive: to 25 deg = 2500 steps (within its 6000-step travel).
     QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{2500}));
     QVERIFY(still(*m_elab) && still(*m_nanotec));
+}
+
+// Where the board stands (steps, X and Y) each time the machine reports a move arrived: read
+// from the simulator inside that signal, before the runner (connected later) sends the next
+// chord.
+struct ArrivalLog
+{
+    QList<QPoint> points;
+    QMetaObject::Connection connection;
+};
+
+void logArrivals(Machine* machine, Device& board, ArrivalLog* log)
+{
+    log->connection = QObject::connect(machine, &Machine::moveFinished, machine, [&board, log] {
+        log->points << board.probe([&] {
+            return QPoint(int(board.sim()->position(Axis::X)), int(board.sim()->position(Axis::Y)));
+        });
+    });
+}
+
+// Feed rates up to 2000 steps/s: the board's feed mode runs below its start speed (manual).
+// A stream of several axes goes at the slowest of the three feed speeds, and a G1 writes only
+// the moving axes' (the contouring issue changes that): Z's is set to the arcs' rate here.
+bool raiseStartSpeed(ControllerSession* table)
+{
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    ParameterValue start, feed;
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+        start.perAxis.insert(a, 2000);
+        feed.perAxis.insert(a, 1000);
+    }
+    const RequestId id = table->writeParameters(
+        {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}}, false);
+    return QTest::qWaitFor(
+        [&] {
+            return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& args) {
+                const auto r = args.at(0).value<CommandResult>();
+                return r.id == id && r.ok();
+            });
+        },
+        10000);
+}
+
+// G3 full circle of radius 1 mm about X11 Y10 (400 steps/mm): ceil(2 pi / (2 acos(1 - 0.01)))
+// = 23 chords, each arriving on the circle to within a step at the board, the last back at
+// the start; counter-clockwise.
+void TestProgramRunner::arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart()
+{
+    QVERIFY(raiseStartSpeed(m_machine->session("table")));
+    ArrivalLog log;
+    logArrivals(m_machine.get(), *m_elab, &log);
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG3 I1 F150\nM30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(m_runner->preview().path.size(), 3 + 23); // start, G28, G0, the chords
+    QCOMPARE(log.points.size(), 1 + 23);               // the G0, then the chords
+    // The simulator counts from its power-up place: positions relative to the G0's end.
+    const QPoint start = log.points.first();
+    for (const QPoint& p : log.points.mid(1))
+        QVERIFY2(std::abs(std::hypot(p.x() - start.x() - 400, p.y() - start.y()) - 400) <= 1.0,
+                 qPrintable(QStringLiteral("%1 %2").arg(p.x()).arg(p.y())));
+    QCOMPARE(log.points.last(), start);
+    const QPoint first = log.points.at(1) - start;
+    QVERIFY(first.x() > 0 && first.y() < 0); // counter-clockwise from the circle's left: down
+    QVERIFY(still(*m_elab));
+}
+
+// A pause during an arc holds between two chords, at the arc's line; resume sends the rest.
+void TestProgramRunner::pause_duringArc_holdsBetweenChordsResumeFinishesTheArc()
+{
+    QVERIFY(raiseStartSpeed(m_machine->session("table")));
+    ArrivalLog log;
+    logArrivals(m_machine.get(), *m_elab, &log);
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG2 I1 F150\nG0 X0\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(log.points.size() >= 4, 30000); // the G0 and three chords
+    m_runner->pause();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.size(), 1);
+    QCOMPARE(paused.at(0).at(0).toInt(), 3);
+    QCOMPARE(m_runner->currentLine(), 3);
+    const qsizetype held = log.points.size();
+    QVERIFY2(held < 1 + 23, qPrintable(QString::number(held))); // mid-arc
+    // Held: more status polls pass, the board stands where the last chord ended.
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(still(*m_elab));
+    QCOMPARE(m_elab->probe([&] {
+        return QPoint(int(m_elab->sim()->position(Axis::X)), int(m_elab->sim()->position(Axis::Y)));
+    }),
+             log.points.last());
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(log.points.size(), 1 + 23 + 1);
+    QCOMPARE(log.points.at(23), log.points.first());                   // the circle closed
+    QCOMPARE(log.points.last(), log.points.first() - QPoint(4000, 0)); // then the G0 X0
 }
 
 QTEST_MAIN(TestProgramRunner)

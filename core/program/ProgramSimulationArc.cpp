@@ -1,0 +1,86 @@
+// The check's walk through a G2/G3 (docs/programs.md "Arcs"): the path the run takes
+// (ArcPath, from the same current point), its chords' ends as the device's counts, the soft
+// limits at the true curve's extremes, and the preview's points along it.
+#include "ProgramSimulation.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+AxisMove* ProgramSimulation::plannedMove(const PlannedBlock& planned, int axis)
+{
+    AxisMove* const first = m_moves.data() + planned.firstMove;
+    for (AxisMove* m = first; m != first + planned.moveCount; ++m)
+        if (m->axis == axis)
+            return m;
+    return nullptr;
+}
+
+void ProgramSimulation::arc(PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    const std::variant<ArcPath, ArcPath::Error> planning =
+        ArcPath::plan(block, m_facts.description, m_programmed, m_facts.workOffsets);
+    if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
+        if (!planned.reportedArc) {
+            planned.reportedArc = true;
+            m_errors->add(block.line, e->column, [&] { return e->message; });
+        }
+        return; // where it would end is unknown: the positions stay as they were
+    }
+    const ArcPath& path = std::get<ArcPath>(planning);
+    // The soft limits where the curve reaches furthest on each axis, not only at its chords.
+    for (const auto& [axis, range] : path.bounds()) {
+        AxisMove* m = plannedMove(planned, axis);
+        if (!m)
+            continue; // the plan named its axis or rate
+        checkLimit(block, *m, range.first);
+        checkLimit(block, *m, range.second);
+        noteExtentAt(axis, range.first - m_offset[size_t(axis)]);
+        noteExtentAt(axis, range.second - m_offset[size_t(axis)]);
+    }
+    arcChords(path, planned);
+}
+
+// Each chord as the run sends it: an absolute move of every moving axis, its time the slowest
+// axis' (each axis runs at its own rate, no interpolation: docs/programs.md "How F maps").
+void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    m_chordsRun += path.chords();
+    if (m_chordsRun > ProgramCheck::kMaxChordsRun) {
+        if (!planned.reportedArc) {
+            planned.reportedArc = true;
+            m_errors->add(block.line, block.columnOf({}), [&] {
+                return ProgramCheck::tr("the run's arcs need more than %1 chords")
+                    .arg(ProgramCheck::kMaxChordsRun);
+            });
+        }
+        return;
+    }
+    std::vector<double> speed(m_axes.size(), 0.0);
+    for (const auto& [axis, value] : path.end()) {
+        Q_UNUSED(value);
+        if (const AxisMove* m = plannedMove(planned, axis))
+            speed[size_t(axis)] = m->speed;
+    }
+    for (qint64 k = 1; k <= path.chords(); ++k) {
+        double seconds = 0;
+        for (const auto& [axis, value] : path.pointAt(k)) {
+            const size_t a = size_t(axis);
+            const machine::MachineAxis& machineAxis = m_axes.at(axis);
+            const qint64 steps = machineAxis.toSteps(value);
+            if (speed[a] > 0)
+                seconds = std::max(seconds, std::abs(double(steps - m_steps[a])) /
+                                                machineAxis.stepsPerUnit / speed[a]);
+            m_steps[a] = steps;
+            m_known[a] = 1;
+            m_moved[a] = 1;
+            if (k == path.chords())
+                m_programmed[a] = value; // the programmed end exactly
+        }
+        m_seconds += seconds;
+        addPoint(block.line);
+    }
+}
+
+} // namespace stepdeck::program
