@@ -3718,6 +3718,33 @@
             <source>the run's arcs need more than %1 chords</source>
             <translation>die Bögen des Laufs brauchen mehr als %1 Sehnen</translation>
         </message>
+        <message>
+            <source>T%1: tool %1 is not in the machine's tool table</source>
+            <translation>T%1: Werkzeug %1 steht nicht in der Werkzeugtabelle der Maschine</translation>
+        </message>
+        <message>
+            <source>G43: the machine's tool table is empty: enter tool %1's length first</source>
+            <translation>G43: Die Werkzeugtabelle der Maschine ist leer: zuerst die Länge von Werkzeug %1 eintragen</translation>
+        </message>
+        <message>
+            <source>G43: tool %1 is not in the machine's tool table</source>
+            <translation>G43: Werkzeug %1 steht nicht in der Werkzeugtabelle der Maschine</translation>
+        </message>
+        <message>
+            <source>G43: the machine has no axis %1 for tool %2's length</source>
+            <translation>G43: Die Maschine hat keine Achse %1 für die Länge von Werkzeug %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramCoordinates</name>
+        <message>
+            <source>G10 L20: the position of %1 is unknown: reference it first (G28 %1)</source>
+            <translation>G10 L20: Die Position von %1 ist unbekannt: zuerst referenzieren (G28 %1)</translation>
+        </message>
+        <message>
+            <source>G92: the position of %1 is unknown: reference it first (G28 %1)</source>
+            <translation>G92: Die Position von %1 ist unbekannt: zuerst referenzieren (G28 %1)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramLexer</name>
@@ -3845,10 +3872,6 @@
             <translation>G%1 (Werkzeugradiuskorrektur) wird nicht unterstützt: den Pfad vom CAM-Postprozessor korrigieren lassen (G40 wird angenommen)</translation>
         </message>
         <message>
-            <source>G43 (tool length offset) is not supported yet: the machine has no tool table (G49 is accepted)</source>
-            <translation>G43 (Werkzeuglängenkorrektur) wird noch nicht unterstützt: die Maschine hat keine Werkzeugtabelle (G49 wird angenommen)</translation>
-        </message>
-        <message>
             <source>G93 (inverse time feed) is not supported yet: use G94</source>
             <translation>G93 (Vorschub in inverser Zeit) wird noch nicht unterstützt: G94 verwenden</translation>
         </message>
@@ -3923,6 +3946,46 @@
         <message>
             <source>%1: P counts the arc's turns, a whole number 1..%2</source>
             <translation>%1: P zählt die Umläufe des Bogens, eine ganze Zahl 1..%2</translation>
+        </message>
+        <message>
+            <source>G53 appears twice on the line</source>
+            <translation>G53 steht zweimal in der Zeile</translation>
+        </message>
+        <message>
+            <source>G53 moves in machine coordinates with G0 or G1 only</source>
+            <translation>G53 fährt nur mit G0 oder G1 in Maschinenkoordinaten</translation>
+        </message>
+        <message>
+            <source>G53 takes absolute machine coordinates: not in G91</source>
+            <translation>G53 nimmt absolute Maschinenkoordinaten: nicht in G91</translation>
+        </message>
+        <message>
+            <source>G92 needs axis words: the values the axes' present positions get</source>
+            <translation>G92 braucht Achsworte: die Werte, die die jetzigen Positionen der Achsen erhalten</translation>
+        </message>
+        <message>
+            <source>%1: G10 R (a rotated coordinate system) is not supported</source>
+            <translation>%1: G10 R (ein gedrehtes Koordinatensystem) wird nicht unterstützt</translation>
+        </message>
+        <message>
+            <source>G10 %1 is not supported: L2 and L20 set the coordinate systems</source>
+            <translation>G10 %1 wird nicht unterstützt: L2 und L20 setzen die Koordinatensysteme</translation>
+        </message>
+        <message>
+            <source>%1: G10 sets P1 (G54) to P6 (G59), P0 the system in effect</source>
+            <translation>%1: G10 setzt P1 (G54) bis P6 (G59), P0 das geltende System</translation>
+        </message>
+        <message>
+            <source>%1 is used only with G43</source>
+            <translation>%1 wird nur mit G43 verwendet</translation>
+        </message>
+        <message>
+            <source>%1: H takes a tool number, whole, 0..%2</source>
+            <translation>%1: H nimmt eine Werkzeugnummer, ganzzahlig, 0..%2</translation>
+        </message>
+        <message>
+            <source>G43 needs H&lt;n&gt; or a tool loaded by M6 (T&lt;n&gt; M6) before it</source>
+            <translation>G43 braucht H&lt;n&gt; oder ein zuvor mit M6 eingesetztes Werkzeug (T&lt;n&gt; M6)</translation>
         </message>
     </context>
     <context>
@@ -4044,6 +4107,33 @@
         <message>
             <source>aborted after the move under way ended</source>
             <translation>abgebrochen, nachdem die laufende Bewegung geendet hat</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ToolTable</name>
+        <message>
+            <source>%1 is not a column of a tool table (T, P, Z, D, ...)</source>
+            <translation>%1 ist keine Spalte einer Werkzeugtabelle (T, P, Z, D, ...)</translation>
+        </message>
+        <message>
+            <source>%1: T takes a tool number, whole, 0..%2</source>
+            <translation>%1: T nimmt eine Werkzeugnummer, ganzzahlig, 0..%2</translation>
+        </message>
+        <message>
+            <source>%1: a diameter is not below 0</source>
+            <translation>%1: Ein Durchmesser ist nicht kleiner als 0</translation>
+        </message>
+        <message>
+            <source>the line names no tool (T)</source>
+            <translation>die Zeile nennt kein Werkzeug (T)</translation>
+        </message>
+        <message>
+            <source>tool %1 is in the table twice</source>
+            <translation>Werkzeug %1 steht zweimal in der Tabelle</translation>
+        </message>
+        <message>
+            <source>the table has more than %1 tools</source>
+            <translation>die Tabelle hat mehr als %1 Werkzeuge</translation>
         </message>
     </context>
     <context>
@@ -5640,6 +5730,10 @@ W1500</translation>
             <source>machine %1 %2, %3 axis %4: %5 %6</source>
             <translation>Maschine %1 %2, %3 Achse %4: %5 %6</translation>
         </message>
+        <message>
+            <source>The coordinate system shown, zeroed by Zero, used by Go to and by programs without G54..G59</source>
+            <translation>Das angezeigte Koordinatensystem: „nullen“ setzt es, Anfahren und Programme ohne G54..G59 verwenden es</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineEditor</name>
@@ -5777,6 +5871,14 @@ W1500</translation>
         <message>
             <source>Clear list</source>
             <translation>Liste leeren</translation>
+        </message>
+        <message>
+            <source>&amp;Tool table…</source>
+            <translation>&amp;Werkzeugtabelle…</translation>
+        </message>
+        <message>
+            <source>The machine's tools: the lengths G43 applies, the texts M6 shows</source>
+            <translation>Die Werkzeuge der Maschine: die Längen, die G43 anwendet, die Texte, die M6 zeigt</translation>
         </message>
     </context>
     <context>
@@ -7299,6 +7401,25 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Not stored: not connected.</source>
             <translation>Nicht gespeichert: nicht verbunden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ToolTableDialog</name>
+        <message>
+            <source>Tool table</source>
+            <translation>Werkzeugtabelle</translation>
+        </message>
+        <message>
+            <source>One tool a line, as in LinuxCNC's tool.tbl: T&lt;number&gt; Z&lt;length&gt; D&lt;diameter&gt; ;text. G43 offsets Z by the length (in Z's unit); M6 shows the text when it asks for the tool.</source>
+            <translation>Ein Werkzeug je Zeile, wie in LinuxCNCs tool.tbl: T&lt;Nummer&gt; Z&lt;Länge&gt; D&lt;Durchmesser&gt; ;Text. G43 versetzt Z um die Länge (in der Einheit von Z); M6 zeigt den Text, wenn es nach dem Werkzeug fragt.</translation>
+        </message>
+        <message>
+            <source>The table was not saved.</source>
+            <translation>Die Tabelle wurde nicht gespeichert.</translation>
+        </message>
+        <message>
+            <source>Not saved: %1</source>
+            <translation>Nicht gespeichert: %1</translation>
         </message>
     </context>
     <context>

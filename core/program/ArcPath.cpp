@@ -77,30 +77,6 @@ double turnBetween(double from, double to)
 
 } // namespace
 
-void advanceAxisPositions(const ProgramBlock& block, const machine::MachineDescription& d,
-                          const QMap<QString, double>& workOffsets, AxisPositions* positions)
-{
-    if (block.kind == BlockKind::Home) {
-        for (int i = 0; i < d.axes.size(); ++i)
-            if (block.axes.isEmpty() || block.axes.contains(d.axes.at(i).name))
-                (*positions)[size_t(i)] = 0.0; // a reference run ends at 0 on every model
-        return;
-    }
-    if (block.kind != BlockKind::Rapid && block.kind != BlockKind::Feed)
-        return;
-    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
-        const int i = indexOf(d, it.key());
-        if (i < 0)
-            continue;
-        std::optional<double>& at = (*positions)[size_t(i)];
-        const double value = units::toAxisUnits(d.axes.at(i), it.value(), block.inches);
-        if (!block.relative)
-            at = value + workOffsets.value(it.key(), 0.0);
-        else if (at)
-            *at += value;
-    }
-}
-
 double ArcPath::chordTolerance(const machine::MachineAxis& axis)
 {
     return axis.unit == machine::AxisUnit::Step ? 0.5 : 0.01;

@@ -13,12 +13,6 @@ namespace stepdeck::program {
 // centre and radius are measured from. nullopt: the position is unknown.
 using AxisPositions = std::vector<std::optional<double>>;
 
-// The current point after a G0/G1 (its axis words: absolute ones at word + work offset,
-// relative ones from where the axis stands; unknown stays unknown) or a G28 (0 on the axes it
-// references). The check's walk and the run both follow the program with this.
-void advanceAxisPositions(const ProgramBlock& block, const machine::MachineDescription& d,
-                          const QMap<QString, double>& workOffsets, AxisPositions* positions);
-
 // A G2/G3 in the machine's terms (docs/programs.md "Arcs"), as LinuxCNC's interpreter reads it:
 // the plane's two axes turn about the centre (I J K from the start, G90.1 absolute, or R: +
 // the shorter arc, - the longer), P turns, the plane's third axis moving with the angle (a

@@ -41,6 +41,16 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("M65");
     case BlockKind::WaitInput:
         return QStringLiteral("M66");
+    case BlockKind::SetCoordinates:
+        return QStringLiteral("G10");
+    case BlockKind::AxisOffset:
+        return QStringLiteral("G92");
+    case BlockKind::AxisOffsetReset:
+        return QStringLiteral("G92.1");
+    case BlockKind::AxisOffsetSuspend:
+        return QStringLiteral("G92.2");
+    case BlockKind::AxisOffsetRestore:
+        return QStringLiteral("G92.3");
     case BlockKind::RepeatStart:
         return QStringLiteral("O repeat");
     case BlockKind::RepeatEnd:
@@ -62,7 +72,10 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
-           arc == o.arc && message == o.message && oNumber == o.oNumber && count == o.count &&
+           arc == o.arc && coordinateSystem == o.coordinateSystem &&
+           machineCoordinates == o.machineCoordinates && fromPosition == o.fromPosition &&
+           lengthTool == o.lengthTool && appliesLengthOffset == o.appliesLengthOffset &&
+           message == o.message && oNumber == o.oNumber && count == o.count &&
            partner == o.partner && columns == o.columns && actionColumn == o.actionColumn;
 }
 

@@ -18,18 +18,23 @@ enum class BlockKind : quint8 {
     Home,                // G28: reference run of the named axes (none named: all, machine order)
     Dwell,               // G4 P<seconds>
     Pause,               // M0: until the operator resumes; prompt = the line's comment
-    ToolChange,   // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
-    End,          // M2, M30
-    SpindleOn,    // M3 S<rpm>
-    SpindleOff,   // M5
-    CoolantMist,  // M7
-    CoolantFlood, // M8
-    CoolantOff,   // M9
-    OutputOn,     // M64 P<n>
-    OutputOff,    // M65 P<n>
-    WaitInput,    // M66 P<n> L3|L4 Q<seconds>
-    RepeatStart,  // O<n> repeat [count]
-    RepeatEnd,    // O<n> endrepeat
+    ToolChange,      // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
+    End,             // M2, M30
+    SpindleOn,       // M3 S<rpm>
+    SpindleOff,      // M5
+    CoolantMist,     // M7
+    CoolantFlood,    // M8
+    CoolantOff,      // M9
+    OutputOn,        // M64 P<n>
+    OutputOff,       // M65 P<n>
+    WaitInput,       // M66 P<n> L3|L4 Q<seconds>
+    SetCoordinates,  // G10 L2 / L20 P<n>: a coordinate system's offsets (ProgramCoordinates)
+    AxisOffset,      // G92: the current point gets the axis words' values
+    AxisOffsetReset, // G92.1: G92's offset zero
+    AxisOffsetSuspend, // G92.2: G92's offset kept but not applied
+    AxisOffsetRestore, // G92.3: applied again
+    RepeatStart,       // O<n> repeat [count]
+    RepeatEnd,         // O<n> endrepeat
 };
 
 // LinuxCNC's plane selection (modal group 2): the plane arcs lie in.
@@ -88,6 +93,14 @@ struct ProgramBlock
     double rpm = 0;                      // M3 S
     QString prompt;                      // M0: the comment on its line
     ArcWords arc;                        // G2/G3
+    // G54..G59 in effect (0 = G54); -1: none selected yet, the system active when the run
+    // started (LinuxCNC keeps the active system across programs).
+    int coordinateSystem = -1;
+    bool machineCoordinates = false; // G53: this G0/G1's words are machine coordinates
+    bool fromPosition = false;       // G10 L20 (the current point gets the words' values)
+    // G43: the tool whose length offsets the tool axis (Z), -1 none (G49); 0 (H0) none either.
+    int lengthTool = -1;
+    bool appliesLengthOffset = false; // G43 is on this line (the check names its tool here)
     QString message;  // "(MSG, text)": shown to the operator when the run reaches the line
     int oNumber = 0;  // O<n>
     qint64 count = 0; // O repeat: how many times

@@ -1,5 +1,6 @@
 #pragma once
 #include "ProgramBlock.h"
+#include "ProgramCoordinates.h"
 #include "machine/MachineDescription.h"
 #include "model/Capabilities.h"
 #include "model/ModelInfo.h"
@@ -34,11 +35,21 @@ struct MachineFacts
     // Controllers whose device reports its setup incomplete (MachineStatus::setupIncomplete):
     // they refuse every move.
     QSet<QString> setupIncomplete;
-    // Axis name -> the machine position of its work zero, in the axis' unit (the operator's
-    // "Zero X"; an axis not listed: work = machine). A program's absolute targets are work
-    // coordinates, as the position display shows them: the machine goes to target + offset,
-    // and the soft limits (machine coordinates) are checked there (issue 28, item 3).
-    QMap<QString, double> workOffsets;
+    // The coordinate systems G54..G59: per system, axis name -> the machine position of its
+    // work zero, in the axis' unit (an axis not listed: work = machine), and the one active
+    // (the operator's "Zero X" sets its entries; a program without G54..G59 runs in it). A
+    // program's absolute targets are work coordinates, as the position display shows them: the
+    // machine goes to target + offset, and the soft limits (machine coordinates) are checked
+    // there (issue 28, item 3; issue 29: ProgramCoordinates).
+    CoordinateSystems coordinateSystems;
+    int activeSystem = 0;
+    // The machine's tool table (issue 29): G43's lengths; when it holds any tool, every T an M6
+    // loads and every H must be in it.
+    ToolTable tools;
+    const QMap<QString, double>& workOffsets() const
+    {
+        return coordinateSystems[size_t(activeSystem)];
+    }
 };
 
 MachineFacts factsOf(const machine::Machine& machine);
@@ -68,7 +79,8 @@ struct AxisExtent
 struct ProgramPreview
 {
     // The path's positions and the extents are work coordinates: machine position minus
-    // these offsets (MachineFacts::workOffsets; an axis not listed: none).
+    // these offsets (the system active at the start, MachineFacts::workOffsets(); an axis not
+    // listed: none).
     QMap<QString, double> workOffsets;
     int lines = 0;        // lines in the file
     qint64 blocksRun = 0; // blocks the run will execute (repeats counted out)
@@ -92,7 +104,7 @@ struct ProgramCheckResult
 };
 
 // Checks a parsed program against a machine before anything moves (docs/programs.md):
-// - absolute targets in work coordinates (MachineFacts::workOffsets), the soft limits in
+// - absolute targets in work coordinates (MachineFacts::coordinateSystems), the soft limits in
 //   machine coordinates;
 // - every target within the axes' soft limits, following the positions the program itself
 //   reaches (relative moves from known positions; repeats counted out);

@@ -8,7 +8,7 @@ namespace stepdeck::program {
 namespace {
 
 const QString kAxisLetters = QStringLiteral("XYZABCUVW");
-const QString kParameterLetters = QStringLiteral("FSPLQIJKR");
+const QString kParameterLetters = QStringLiteral("FSPLQIJKRH");
 
 std::optional<BlockKind> actionOfG(int code)
 {
@@ -23,8 +23,12 @@ std::optional<BlockKind> actionOfG(int code)
         return BlockKind::ArcCounterClockwise;
     case 4:
         return BlockKind::Dwell;
+    case 10:
+        return BlockKind::SetCoordinates;
     case 28:
         return BlockKind::Home;
+    case 92:
+        return BlockKind::AxisOffset;
     default:
         return std::nullopt;
     }
@@ -130,6 +134,17 @@ private:
             if (const std::optional<QString> modal = sortModalG(tenths, w, out))
                 return *modal;
         }
+        if (g && tenths == 530) { // G53: machine coordinates for this block (non-modal)
+            if (out->machineCoordinates)
+                return ProgramLine::tr("G53 appears twice on the line");
+            out->machineCoordinates = &w;
+            return {};
+        }
+        if (g && tenths > 920 && tenths < 924) // G92.1, G92.2, G92.3
+            return setAction(tenths == 921   ? BlockKind::AxisOffsetReset
+                             : tenths == 922 ? BlockKind::AxisOffsetSuspend
+                                             : BlockKind::AxisOffsetRestore,
+                             w, out);
         if (tenths % 10 != 0)
             return ProgramLine::tr("%1 is not supported").arg(w.valueText);
         const int code = tenths / 10;
@@ -148,6 +163,11 @@ private:
         const std::optional<BlockKind> action = g ? actionOfG(code) : actionOfM(code);
         if (!action)
             return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+        return setAction(*action, w, out);
+    }
+
+    QString setAction(BlockKind action, const ProgramWord& w, Words* out)
+    {
         if (out->action)
             return ProgramLine::tr("one action per line: %1 and %2")
                 .arg(out->actionWord->valueText, w.valueText);
@@ -194,6 +214,18 @@ private:
         case 911:
             out->centreAbsolute = tenths == 901;
             break;
+        case 540:
+        case 550:
+        case 560:
+        case 570:
+        case 580:
+        case 590:
+            out->coordinateSystem = tenths / 10 - 54;
+            break;
+        case 430:
+        case 490:
+            out->lengthOffset = tenths == 430;
+            break;
         default: // G40, G49, G94, G98, G99: the modes StepDeck always runs in
             break;
         }
@@ -231,6 +263,13 @@ private:
         case 611:
         case 640:
             return 13;
+        case 540:
+        case 550:
+        case 560:
+        case 570:
+        case 580:
+        case 590:
+            return 12;
         default:
             return std::nullopt;
         }
@@ -245,9 +284,6 @@ private:
             return ProgramLine::tr("G%1 (cutter radius compensation) is not supported: let the "
                                    "CAM post compensate the path (G40 is accepted)")
                 .arg(tenths / 10);
-        case 430:
-            return ProgramLine::tr("G43 (tool length offset) is not supported yet: the machine "
-                                   "has no tool table (G49 is accepted)");
         case 930:
             return ProgramLine::tr("G93 (inverse time feed) is not supported yet: use G94");
         case 950:
@@ -303,6 +339,36 @@ std::pair<int, QString> applyPathMode(Words* words, ModalState* modal)
     return {};
 }
 
+// G43 [H<n>] / G49 (LinuxCNC): the tool whose length offsets Z from this line on. Without H,
+// the tool loaded by M6 (one on this line counts: LinuxCNC changes the tool before it applies
+// the offset).
+std::pair<int, QString> applyLengthOffset(const Words* words, ModalState* modal)
+{
+    if (words->action == BlockKind::ToolChange && modal->tool)
+        modal->loadedTool = modal->tool;
+    const ProgramWord* h = words->parameters.value('H');
+    if (!words->lengthOffset || !*words->lengthOffset) {
+        if (words->lengthOffset)
+            modal->lengthTool = -1; // G49
+        if (h)
+            return {h->column, ProgramLine::tr("%1 is used only with G43").arg(h->valueText)};
+        return {};
+    }
+    if (h) {
+        if (!isWhole(h->value) || h->value < 0 || h->value > kMaxTool)
+            return {h->column, ProgramLine::tr("%1: H takes a tool number, whole, 0..%2")
+                                   .arg(h->valueText)
+                                   .arg(kMaxTool)};
+        modal->lengthTool = int(h->value);
+        return {};
+    }
+    if (!modal->loadedTool)
+        return {words->groups.value(8)->column,
+                ProgramLine::tr("G43 needs H<n> or a tool loaded by M6 (T<n> M6) before it")};
+    modal->lengthTool = *modal->loadedTool;
+    return {};
+}
+
 // The line's modal words into *modal (G17-G19, G61/G64, G80, T, G90/G91, G20/G21, F).
 std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
 {
@@ -314,8 +380,12 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         modal->motion.reset(); // G80: axis words need a motion word again (LinuxCNC)
     if (words->centreAbsolute)
         modal->centreAbsolute = *words->centreAbsolute;
+    if (words->coordinateSystem)
+        modal->coordinateSystem = *words->coordinateSystem;
     if (words->tool)
         modal->tool = int(words->tool->value);
+    if (const auto [column, why] = applyLengthOffset(words, modal); column > 0)
+        return {column, why};
     if (words->relative)
         modal->relative = *words->relative;
     if (words->inches)
@@ -326,6 +396,22 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
                     ProgramLine::tr("%1: the feed rate must be greater than 0").arg(f->valueText)};
         modal->feed = f->value;
     }
+    return {};
+}
+
+// G53 (LinuxCNC): the words of this G0 or G1 are machine coordinates, absolute.
+std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState& modal,
+                                           ProgramBlock* b)
+{
+    const ProgramWord* g53 = sorted.machineCoordinates;
+    if (!g53)
+        return {};
+    if (b->kind != BlockKind::Rapid && b->kind != BlockKind::Feed)
+        return {g53->column, ProgramLine::tr("G53 moves in machine coordinates with G0 or G1 "
+                                             "only")};
+    if (modal.relative)
+        return {g53->column, ProgramLine::tr("G53 takes absolute machine coordinates: not in G91")};
+    b->machineCoordinates = true;
     return {};
 }
 
@@ -342,6 +428,9 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
     }
     b->plane = modal->plane; // the arc's words depend on it
     b->arc.centreAbsolute = modal->centreAbsolute;
+    b->coordinateSystem = modal->coordinateSystem; // G10 P0 names it
+    if (const auto [column, why] = machineCoordinates(sorted, *modal, b); column > 0)
+        return {column, why};
     if (const auto [column, why] = checkActionWords(sorted, b); column > 0)
         return {column, why};
     const bool arc = isArc(b->kind);
@@ -375,6 +464,8 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->inches = modal.inches;
     block->feed = modal.feed;
     block->plane = modal.plane;
+    block->coordinateSystem = modal.coordinateSystem;
+    block->lengthTool = modal.lengthTool;
     block->pathMode = modal.pathMode;
     block->pathTolerance = modal.pathTolerance;
 }
@@ -421,6 +512,7 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         return fail(column, why);
     carryModal(next, &b);
     b.message = line.message;
+    b.appliesLengthOffset = sorted.lengthOffset == true;
     if (b.kind == BlockKind::Pause)
         b.prompt = line.comment;
     if (b.kind == BlockKind::ToolChange) {

@@ -20,6 +20,9 @@ struct ModalState
     std::optional<double> pathTolerance; // G64 P
     std::optional<int> tool;             // T: the tool selected for the next M6
     bool centreAbsolute = false;         // G90.1 (G91.1, incremental arc centres, default)
+    int coordinateSystem = -1;           // G54..G59 (-1: none yet, the run's active one)
+    std::optional<int> loadedTool;       // the tool the last M6 loaded
+    int lengthTool = -1;                 // G43's tool (-1: G49, none)
 };
 
 // One lexed line to its block (ProgramParser's line step): which words it has, whether they

@@ -21,6 +21,8 @@ QString allowedParameters(BlockKind kind)
     case BlockKind::ArcClockwise:
     case BlockKind::ArcCounterClockwise:
         return QStringLiteral("FIJKRP");
+    case BlockKind::SetCoordinates:
+        return QStringLiteral("FLPR");
     default:
         return QStringLiteral("F");
     }
@@ -29,7 +31,8 @@ QString allowedParameters(BlockKind kind)
 bool takesAxes(BlockKind kind)
 {
     return kind == BlockKind::Rapid || kind == BlockKind::Feed || kind == BlockKind::Home ||
-           kind == BlockKind::Modal || isArc(kind);
+           kind == BlockKind::Modal || isArc(kind) || kind == BlockKind::SetCoordinates ||
+           kind == BlockKind::AxisOffset;
 }
 
 // LinuxCNC's arc planes (docs/programs.md "Arcs"): the two axes in the plane in the order
@@ -70,6 +73,8 @@ public:
     {
         const BlockKind kind = m_block->kind;
         for (auto it = m_words.parameters.cbegin(); it != m_words.parameters.cend(); ++it) {
+            if (it.key() == QLatin1Char('H') && m_words.lengthOffset == true)
+                continue; // G43's (ProgramLine)
             if (!allowedParameters(kind).contains(it.key()))
                 return {it.value()->column, notTaken(it.value()->valueText)};
         }
@@ -88,6 +93,14 @@ public:
         case BlockKind::ArcClockwise:
         case BlockKind::ArcCounterClockwise:
             return arc();
+        case BlockKind::SetCoordinates:
+            return setCoordinates();
+        case BlockKind::AxisOffset:
+            if (m_words.axes.isEmpty())
+                return {m_words.actionWord->column,
+                        ProgramLine::tr("G92 needs axis words: the values the axes' present "
+                                        "positions get")};
+            return {};
         default:
             return {};
         }
@@ -218,6 +231,33 @@ private:
                                        .arg(kMaxArcTurns)};
             m_block->arc.turns = int(p->value);
         }
+        return {};
+    }
+
+    // G10 L2 P<n> (the offsets as written) and G10 L20 P<n> (the current point gets the words'
+    // values) on G54 (P1) to G59 (P6), P0 the system in effect (LinuxCNC).
+    std::pair<int, QString> setCoordinates()
+    {
+        if (const ProgramWord* r = m_words.parameters.value('R'))
+            return {r->column, ProgramLine::tr("%1: G10 R (a rotated coordinate system) is not "
+                                               "supported")
+                                   .arg(r->valueText)};
+        const ProgramWord* l = m_words.parameters.value('L');
+        if (!l)
+            return missing('L');
+        if (l->value != 2 && l->value != 20)
+            return {l->column, ProgramLine::tr("G10 %1 is not supported: L2 and L20 set the "
+                                               "coordinate systems")
+                                   .arg(l->valueText)};
+        const ProgramWord* p = m_words.parameters.value('P');
+        if (!p)
+            return missing('P');
+        if (!isWhole(p->value) || p->value < 0 || p->value > 6)
+            return {p->column, ProgramLine::tr("%1: G10 sets P1 (G54) to P6 (G59), P0 the "
+                                               "system in effect")
+                                   .arg(p->valueText)};
+        m_block->number = int(p->value);
+        m_block->fromPosition = l->value == 20;
         return {};
     }
 

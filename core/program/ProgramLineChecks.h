@@ -26,11 +26,14 @@ struct Words
     // LinuxCNC's other modal groups, each at most once a line (issue 29): the word of each
     // group given (group number as LinuxCNC numbers them), and what it sets.
     QMap<int, const ProgramWord*> groups;
-    std::optional<Plane> plane;         // G17 / G18 / G19
-    std::optional<PathMode> pathMode;   // G61 / G61.1 / G64
-    const ProgramWord* tool = nullptr;  // T: selects the tool M6 changes to
-    bool cancelsMotion = false;         // G80: no modal motion afterwards
-    std::optional<bool> centreAbsolute; // G90.1 / G91.1
+    std::optional<Plane> plane;                      // G17 / G18 / G19
+    std::optional<PathMode> pathMode;                // G61 / G61.1 / G64
+    const ProgramWord* tool = nullptr;               // T: selects the tool M6 changes to
+    bool cancelsMotion = false;                      // G80: no modal motion afterwards
+    std::optional<bool> centreAbsolute;              // G90.1 / G91.1
+    std::optional<int> coordinateSystem;             // G54..G59 (0 = G54)
+    const ProgramWord* machineCoordinates = nullptr; // G53
+    std::optional<bool> lengthOffset;                // G43 (true) / G49 (false)
     QMap<QChar, const ProgramWord*> parameters;
     QMap<QString, const ProgramWord*> axes;
 };

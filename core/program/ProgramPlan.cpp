@@ -45,6 +45,7 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     PlannedBlock& out = m_out.blocks[size_t(index)];
     out.block = &block;
     out.partner = block.partner;
+    checkTools(block);
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:

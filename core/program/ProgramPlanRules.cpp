@@ -107,4 +107,38 @@ void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
               [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });
 }
 
+// M6's T and G43's H name tools of the machine's table once it holds any (issue 29); a G43
+// with a length needs the tool axis.
+void ProgramPlan::checkTools(const ProgramBlock& block)
+{
+    const ToolTable& tools = m_facts.tools;
+    if (block.kind == BlockKind::ToolChange && !tools.isEmpty() && !tools.find(block.number)) {
+        error(block, block.columnOf({}), [&] {
+            return ProgramCheck::tr("T%1: tool %1 is not in the machine's tool table")
+                .arg(block.number);
+        });
+    }
+    if (!block.appliesLengthOffset || block.lengthTool <= 0)
+        return; // G43 H0: no offset, as in LinuxCNC
+    const int column = block.columnOf(QStringLiteral("H"));
+    const Tool* tool = tools.find(block.lengthTool);
+    if (!tool) {
+        error(block, column, [&] {
+            return tools.isEmpty()
+                       ? ProgramCheck::tr("G43: the machine's tool table is empty: enter tool "
+                                          "%1's length first")
+                             .arg(block.lengthTool)
+                       : ProgramCheck::tr("G43: tool %1 is not in the machine's tool table")
+                             .arg(block.lengthTool);
+        });
+        return;
+    }
+    if (tool->length != 0 && !m_facts.description.axis(ProgramCoordinates::toolAxis()))
+        error(block, column, [&] {
+            return ProgramCheck::tr("G43: the machine has no axis %1 for tool %2's length")
+                .arg(ProgramCoordinates::toolAxis())
+                .arg(block.lengthTool);
+        });
+}
+
 } // namespace stepdeck::program

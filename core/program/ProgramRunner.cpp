@@ -1,6 +1,7 @@
 // ProgramRunner: the run's states and its walk through the blocks (repeats, pause, step,
 // abort, faults). What each block sends is in ProgramRunnerBlocks.cpp.
 #include "ProgramRunner.h"
+#include "ProgramLine.h"
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
 #include "controller/ControllerSession.h"
@@ -74,7 +75,9 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
         return false;
     }
     MachineFacts facts = factsOf(*m_machine);
-    facts.workOffsets = m_nextOffsets;
+    facts.coordinateSystems = m_nextSystems;
+    facts.activeSystem = m_nextActive;
+    facts.tools = m_nextTools;
     const ProgramCheckResult checked = ProgramCheck::check(program, facts, fromLine);
     if (!checked.ok()) {
         if (errors)
@@ -83,7 +86,7 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     }
     m_program = program;
     m_preview = checked.preview;
-    m_offsets = m_nextOffsets;
+    m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, m_nextTools);
     // The current point starts where the check started it: the machine's known positions.
     m_programmed.assign(size_t(facts.description.axes.size()), std::nullopt);
     for (qsizetype i = 0; i < facts.description.axes.size(); ++i)
@@ -266,7 +269,7 @@ void ProgramRunner::blockDone()
             m_programmed[size_t(axis)] = value;
         m_arc.reset();
     } else {
-        advanceAxisPositions(block, m_machine->description(), m_offsets, &m_programmed);
+        m_coordinates.advance(block, m_machine->description(), &m_programmed);
     }
     Q_EMIT blockFinished(block.line);
     if (block.kind == BlockKind::End) {
@@ -274,7 +277,7 @@ void ProgramRunner::blockDone()
         return;
     }
     if (waitsForOperator(block.kind) || m_pauseAsked || m_stepOnly) {
-        m_prompt = waitsForOperator(block.kind) ? block.prompt : QString();
+        m_prompt = waitsForOperator(block.kind) ? promptOf(block) : QString();
         m_pauseAsked = false;
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);
@@ -338,6 +341,18 @@ void ProgramRunner::setState(RunState state)
         return;
     m_state = state;
     Q_EMIT stateChanged(state);
+}
+
+// M0's comment; M6's "Load tool n" with the line's comment or else the table's text.
+QString ProgramRunner::promptOf(const ProgramBlock& block) const
+{
+    if (block.kind != BlockKind::ToolChange ||
+        block.prompt != ProgramLine::tr("Load tool %1").arg(block.number))
+        return block.prompt;
+    const Tool* tool = m_nextTools.find(block.number);
+    return tool && !tool->text.isEmpty()
+               ? ProgramLine::tr("Load tool %1 (%2)").arg(block.number).arg(tool->text)
+               : block.prompt;
 }
 
 QString ProgramRunner::lineText(const QString& message) const

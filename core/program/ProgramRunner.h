@@ -54,10 +54,27 @@ public:
     // *errors when the check fails or a program runs already: nothing is sent.
     bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
                bool stepOnly = false);
-    // The work offsets programs run in (MachineFacts::workOffsets): taken at start() for the
-    // whole run, so that a zero set while the run holds does not move the rest of the path.
-    void setWorkOffsets(const QMap<QString, double>& offsets) { m_nextOffsets = offsets; }
-    QMap<QString, double> workOffsets() const { return m_offsets; } // of the run started last
+    // The coordinate systems programs run in (MachineFacts::coordinateSystems, the active
+    // one): taken at start() for the whole run, so that a zero set while the run holds does
+    // not move the rest of the path. G10 changes the run's copy and says so
+    // (coordinateSystemSet).
+    void setCoordinateSystems(const CoordinateSystems& systems, int active)
+    {
+        m_nextSystems = systems;
+        m_nextActive = active;
+    }
+    // The machine's tool table (G43's lengths, M6's prompts), taken at start().
+    void setToolTable(const ToolTable& tools) { m_nextTools = tools; }
+    // Only G54's offsets, G54 active.
+    void setWorkOffsets(const QMap<QString, double>& offsets)
+    {
+        setCoordinateSystems(CoordinateSystems{offsets}, 0);
+    }
+    // The work offsets of the system active when the run started last (the preview's frame).
+    QMap<QString, double> workOffsets() const
+    {
+        return m_coordinates.systems()[size_t(m_coordinates.activeAtStart())];
+    }
 
     void pause();  // finish the current block, then hold (pausePending() until then)
     void resume(); // from Paused: on with the next block
@@ -87,6 +104,9 @@ Q_SIGNALS:
     void stopping(const QString& message);
     // The run reached a line with "(MSG, text)" (LinuxCNC): text for the operator.
     void operatorMessage(int line, const QString& text);
+    // G10 L2/L20 set a coordinate system (0 = G54) to these offsets (machine position of its
+    // work zero per axis): the window keeps them for the next runs, as LinuxCNC does.
+    void coordinateSystemSet(int system, const QMap<QString, double>& offsets);
     void finished(stepdeck::program::RunState state, const QString& message);
 
 private:
@@ -107,12 +127,14 @@ private:
     void end(RunState state, const QString& message);
     void setState(RunState state);
     QString lineText(const QString& message) const;
+    QString promptOf(const ProgramBlock& block) const;
     QStringList controllersWithoutStop() const;
     // What each block sends (ProgramRunnerBlocks.cpp).
     void startBlock(const ProgramBlock& block);
     void startMove(const ProgramBlock& block);
     void sendMove(const ProgramBlock& block);
     void startArc(const ProgramBlock& block);
+    void applyCoordinates(const ProgramBlock& block);
     void sendChord();
     bool nextChord(); // after a chord arrived: true while the arc goes on (or holds)
     void startHome(const ProgramBlock& block);
@@ -127,8 +149,10 @@ private:
 
     machine::Machine* m_machine;
     Program m_program;
-    QMap<QString, double> m_nextOffsets; // setWorkOffsets()
-    QMap<QString, double> m_offsets;     // the running program's
+    CoordinateSystems m_nextSystems; // setCoordinateSystems()
+    int m_nextActive = 0;
+    ToolTable m_nextTools;
+    ProgramCoordinates m_coordinates; // the running program's
     ProgramPreview m_preview;
     RunState m_state = RunState::Idle;
     int m_index = -1; // the block running (or the one before the next)

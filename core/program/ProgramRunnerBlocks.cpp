@@ -24,6 +24,13 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     case BlockKind::Home:
         startHome(block);
         return;
+    case BlockKind::SetCoordinates:
+    case BlockKind::AxisOffset:
+    case BlockKind::AxisOffsetReset:
+    case BlockKind::AxisOffsetSuspend:
+    case BlockKind::AxisOffsetRestore:
+        applyCoordinates(block);
+        return;
     case BlockKind::Dwell:
         // At least P between the previous block's confirmation and the next block's first
         // byte: the timer starts only now.
@@ -67,7 +74,8 @@ void ProgramRunner::sendMove(const ProgramBlock& block)
 void ProgramRunner::startArc(const ProgramBlock& block)
 {
     std::variant<ArcPath, ArcPath::Error> planning =
-        ArcPath::plan(block, m_machine->description(), m_programmed, m_offsets);
+        ArcPath::plan(block, m_machine->description(), m_programmed,
+                      m_coordinates.offsets(block, m_machine->description()));
     if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
         fail(ErrorKind::Refused, e->message); // the check refused it first
         return;
@@ -76,6 +84,22 @@ void ProgramRunner::startArc(const ProgramBlock& block)
     m_chord = 0;
     const QMap<RequestId, QString> rates = m_rates->before(ArcPath::rateBlock(block));
     awaitRequests(rates, [this] { sendChord(); });
+}
+
+// G10, G92 and its kin change the coordinates of the blocks after them; nothing is sent. A G10
+// is reported, so the window keeps the table for the next runs.
+void ProgramRunner::applyCoordinates(const ProgramBlock& block)
+{
+    const QString why = m_coordinates.apply(block, m_machine->description(), m_programmed);
+    if (!why.isEmpty()) {
+        fail(ErrorKind::Refused, why); // the check refused it first
+        return;
+    }
+    if (block.kind == BlockKind::SetCoordinates) {
+        const int system = block.number == 0 ? m_coordinates.systemOf(block) : block.number - 1;
+        Q_EMIT coordinateSystemSet(system, m_coordinates.systems()[size_t(system)]);
+    }
+    blockDone();
 }
 
 void ProgramRunner::sendChord()
@@ -123,7 +147,7 @@ QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) cons
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
         if (const machine::MachineAxis* a = d.axis(it.key())) {
             // An absolute target is in work coordinates (ProgramCheck): machine = work + offset.
-            const double offset = block.relative ? 0.0 : m_offsets.value(it.key(), 0.0);
+            const double offset = block.relative ? 0.0 : m_coordinates.offset(block, it.key());
             targets.insert(it.key(), units::toAxisUnits(*a, it.value(), block.inches) + offset);
         }
     return targets;

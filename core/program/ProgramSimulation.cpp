@@ -9,7 +9,8 @@ namespace stepdeck::program {
 ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned,
                                      CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_blocks(planned->blocks),
-      m_moves(planned->moves), m_errors(errors)
+      m_moves(planned->moves), m_errors(errors),
+      m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools)
 {
     const size_t n = size_t(m_axes.size());
     m_steps.assign(n, 0);
@@ -22,7 +23,7 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* 
     m_programmed.assign(n, std::nullopt);
     for (size_t i = 0; i < n; ++i) {
         const machine::MachineAxis& axis = m_axes.at(qsizetype(i));
-        const double offset = facts.workOffsets.value(axis.name, 0.0);
+        const double offset = facts.workOffsets().value(axis.name, 0.0);
         m_offset[i] = std::isfinite(offset) ? offset : 0.0;
         const auto it = facts.knownPositions.constFind(axis.name);
         if (it != facts.knownPositions.cend() && std::isfinite(it.value())) {
@@ -92,6 +93,13 @@ void ProgramSimulation::execute(PlannedBlock& planned)
     case BlockKind::Home:
         home(planned);
         break;
+    case BlockKind::SetCoordinates:
+    case BlockKind::AxisOffset:
+    case BlockKind::AxisOffsetReset:
+    case BlockKind::AxisOffsetSuspend:
+    case BlockKind::AxisOffsetRestore:
+        coordinates(planned);
+        break;
     case BlockKind::Dwell:
         m_seconds += block.seconds;
         addPoint(block.line);
@@ -112,7 +120,7 @@ void ProgramSimulation::move(PlannedBlock& planned)
     AxisMove* const first = m_moves.data() + planned.firstMove;
     for (AxisMove* m = first; m != first + planned.moveCount; ++m)
         moveAxis(block, *m, &seconds);
-    advanceAxisPositions(block, m_facts.description, m_facts.workOffsets, &m_programmed);
+    m_coordinates.advance(block, m_facts.description, &m_programmed);
     m_seconds += seconds;
     addPoint(block.line, block.kind == BlockKind::Rapid);
 }
@@ -136,7 +144,7 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
             });
         }
         // The target is in work coordinates: the machine goes to target + offset.
-        const double target = m.value + m_offset[a];
+        const double target = m.value + m_coordinates.offset(block, axis.name);
         distance = wasKnown ? std::abs(target - here) : 0.0;
         m_steps[a] = axis.toSteps(target);
         m_known[a] = 1; // on from the target, so that one error does not bring others
@@ -149,23 +157,24 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     if (!m_known[a])
         return; // a relative move from an unknown position: its target is unknown too
     // The soft limits are machine coordinates.
-    checkLimit(block, m, block.relative ? here + m.value : m.value + m_offset[a]);
+    checkLimit(block, m,
+               block.relative ? here + m.value : m.value + m_coordinates.offset(block, axis.name));
     noteExtent(m.axis);
 }
 
 void ProgramSimulation::checkLimit(const ProgramBlock& block, AxisMove& m, double to)
 {
     const machine::MachineAxis& axis = m_axes.at(m.axis);
-    const size_t a = size_t(m.axis);
     if (axis.hasSoftLimits() && !m.reportedLimit &&
         (to < *axis.softMinimum || to > *axis.softMaximum)) {
         m.reportedLimit = true;
         m_errors->add(block.line, m.column, [&] {
-            if (m_offset[a] != 0.0)
+            const double offset = m_coordinates.offset(block, axis.name);
+            if (offset != 0.0)
                 return ProgramCheck::tr("%1 reaches %2 %3 in work coordinates, %4 %3 in machine "
                                         "coordinates: outside the soft limits %5..%6 %3 (machine)")
-                    .arg(axis.name, figure(to - m_offset[a]), machine::unitKey(axis.unit),
-                         figure(to), figure(*axis.softMinimum), figure(*axis.softMaximum));
+                    .arg(axis.name, figure(to - offset), machine::unitKey(axis.unit), figure(to),
+                         figure(*axis.softMinimum), figure(*axis.softMaximum));
             return ProgramCheck::tr("%1 reaches %2 %3, outside the soft limits %4..%5 %3")
                 .arg(axis.name, figure(to), machine::unitKey(axis.unit), figure(*axis.softMinimum),
                      figure(*axis.softMaximum));

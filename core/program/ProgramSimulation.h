@@ -28,8 +28,8 @@ struct PlannedBlock
     // first + count): one array for the whole program, not one per block.
     int firstMove = 0;
     int moveCount = 0;
-    int partner = -1;         // repeats: the other end's index
-    bool reportedArc = false; // an arc's error, reported once however often a repeat runs it
+    int partner = -1;      // repeats: the other end's index
+    bool reported = false; // an arc's or G10's error, once however often a repeat runs it
 };
 
 struct PlannedProgram
@@ -90,6 +90,7 @@ private:
     void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
     void checkSpindleSpeed(const ProgramBlock& block);
     void checkIo(const ProgramBlock& block);
+    void checkTools(const ProgramBlock& block);
     template <typename Message>
     void error(const ProgramBlock& block, int column, const Message& message)
     {
@@ -127,6 +128,7 @@ private:
     void home(const PlannedBlock& planned);
     void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
     void arc(PlannedBlock& planned);
+    void coordinates(PlannedBlock& planned);
     void arcChords(const ArcPath& path, PlannedBlock& planned);
     // Whether machine position `to` of the axis lies outside its soft limits (reported once
     // per axis word).
@@ -152,7 +154,8 @@ private:
     std::vector<char> m_extentKnown;
     std::vector<double> m_minimum, m_maximum; // work coordinates
     std::vector<double> m_offset;             // the axis' work offset, in its unit
-    AxisPositions m_programmed; // the current point (unrounded), as the run follows it
+    AxisPositions m_programmed;       // the current point (unrounded), as the run follows it
+    ProgramCoordinates m_coordinates; // G54..G59, G92 as the program changes them
     std::vector<Loop> m_loops;
     qint64 m_blocksRun = 0;
     qint64 m_chordsRun = 0; // arcs' chords, counted out like blocks

@@ -15,14 +15,26 @@ AxisMove* ProgramSimulation::plannedMove(const PlannedBlock& planned, int axis)
     return nullptr;
 }
 
+// G10, G92 and its kin: the coordinates the following blocks' words are in.
+void ProgramSimulation::coordinates(PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    const QString why = m_coordinates.apply(block, m_facts.description, m_programmed);
+    if (!why.isEmpty() && !planned.reported) {
+        planned.reported = true;
+        m_errors->add(block.line, block.columnOf({}), [&] { return why; });
+    }
+}
+
 void ProgramSimulation::arc(PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
     const std::variant<ArcPath, ArcPath::Error> planning =
-        ArcPath::plan(block, m_facts.description, m_programmed, m_facts.workOffsets);
+        ArcPath::plan(block, m_facts.description, m_programmed,
+                      m_coordinates.offsets(block, m_facts.description));
     if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
-        if (!planned.reportedArc) {
-            planned.reportedArc = true;
+        if (!planned.reported) {
+            planned.reported = true;
             m_errors->add(block.line, e->column, [&] { return e->message; });
         }
         return; // where it would end is unknown: the positions stay as they were
@@ -48,8 +60,8 @@ void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
     const ProgramBlock& block = *planned.block;
     m_chordsRun += path.chords();
     if (m_chordsRun > ProgramCheck::kMaxChordsRun) {
-        if (!planned.reportedArc) {
-            planned.reportedArc = true;
+        if (!planned.reported) {
+            planned.reported = true;
             m_errors->add(block.line, block.columnOf({}), [&] {
                 return ProgramCheck::tr("the run's arcs need more than %1 chords")
                     .arg(ProgramCheck::kMaxChordsRun);

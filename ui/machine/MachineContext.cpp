@@ -2,6 +2,7 @@
 #include "ConnectionMachine.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/Machine.h"
+#include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
@@ -16,7 +17,7 @@ QString modelDisplayName(const ModelInfo& model)
 
 MachineContext::MachineContext(QObject* parent)
     : QObject(parent), m_session(new ControllerSession(this)),
-      m_workOffsets(new MachineWorkOffsets(this))
+      m_workOffsets(new MachineWorkOffsets(this)), m_tools(new MachineTools(this))
 {
     connect(m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)
@@ -156,6 +157,7 @@ void MachineContext::openIdleConnectionMachine(const ModelInfo* model)
     }
     // No machine at all: the panels show nothing to move.
     m_workOffsets->load(QString());
+    m_tools->load(QString());
     m_model = nullptr;
     forgetKnownParameters();
     Q_EMIT modelChanged();

@@ -11,6 +11,7 @@ enum class PositionKnowledge;
 
 namespace stepdeck::ui {
 
+class MachineTools;
 class MachineWorkOffsets;
 
 // A model's display name in the current language (context "Models").
@@ -94,6 +95,7 @@ public:
     // The open machine's work offsets (loaded for its file when it opens, none when closed):
     // one set for the position display, Go to and programs (issue 28, item 3).
     MachineWorkOffsets* workOffsets() const { return m_workOffsets; }
+    MachineTools* tools() const { return m_tools; } // the machine's tool table (issue 29)
     QString selectedController() const { return m_selectedId; }
     void selectController(const QString& controllerId);
     void connectMachine();
@@ -154,6 +156,7 @@ private:
     QString m_selectedId;
     QString m_machinePath;
     MachineWorkOffsets* m_workOffsets;
+    MachineTools* m_tools;
     const ModelInfo* m_singleModel = nullptr; // the connection bar's model while a file is open
     QList<QMetaObject::Connection> m_relay;
     const ModelInfo* m_model = nullptr;

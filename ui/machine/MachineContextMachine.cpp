@@ -6,6 +6,7 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
 #include "machine/MachineSetup.h"
+#include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <optional>
@@ -73,8 +74,10 @@ void MachineContext::install(std::unique_ptr<machine::Machine> created, const QS
     m_machinePath = path;
     const machine::MachineDescription& description = m_machine->description();
     // Before machineChanged: its listeners show them.
-    m_workOffsets->load(
-        connectionMachine ? connectionOffsetsKey(description.controllers.first().modelId) : path);
+    const QString key =
+        connectionMachine ? connectionOffsetsKey(description.controllers.first().modelId) : path;
+    m_workOffsets->load(key);
+    m_tools->load(key);
     connect(m_machine.get(), &machine::Machine::controllerFailed, this,
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,

@@ -6,6 +6,7 @@
 #include "machine/MachineMoveTracker.h"
 #include "machine/MachineWorkOffsets.h"
 #include "position/DroValueLabel.h"
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -43,8 +44,9 @@ QString format(const machine::MachineAxis& axis, double value)
 
 MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
     : QWidget(parent), m_context(context), m_offsets(offsets), m_grid(new QGridLayout),
-      m_clear(new QToolButton(this)), m_message(new ElidedLabel(this)),
-      m_moves(new MachineMoveTracker), m_moveTick(new QTimer(this))
+      m_system(new QComboBox(this)), m_clear(new QToolButton(this)),
+      m_message(new ElidedLabel(this)), m_moves(new MachineMoveTracker),
+      m_moveTick(new QTimer(this))
 {
     m_moveTick->setInterval(100);
     connect(m_moveTick, &QTimer::timeout, this, &MachineDro::refresh);
@@ -55,6 +57,16 @@ MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWi
     layout->addLayout(m_grid);
     // Clear and the zero's message share one line; the message elides (one line reserved).
     auto* bottom = new QHBoxLayout;
+    m_system->setObjectName(QStringLiteral("machineCoordinateSystem"));
+    for (int i = 0; i < program::kCoordinateSystems; ++i)
+        m_system->addItem(program::coordinateSystemWord(i));
+    m_system->setToolTip(tr("The coordinate system shown, zeroed by Zero, used by Go to and by "
+                            "programs without G54..G59"));
+    m_system->setFocusPolicy(Qt::NoFocus);
+    m_system->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_system->setCurrentIndex(offsets->active());
+    connect(m_system, &QComboBox::activated, offsets, &MachineWorkOffsets::setActive);
+    bottom->addWidget(m_system);
     m_clear->setText(tr("Clear work offsets"));
     m_clear->setToolTip(tr("Show machine positions again (work origin = machine origin)"));
     m_clear->setFocusPolicy(Qt::NoFocus);
@@ -63,7 +75,10 @@ MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWi
     bottom->addWidget(m_message, 1);
     layout->addLayout(bottom);
     connect(m_clear, &QToolButton::clicked, this, &MachineDro::clearOffsets);
-    connect(offsets, &MachineWorkOffsets::changed, this, &MachineDro::refresh);
+    connect(offsets, &MachineWorkOffsets::changed, this, [this] {
+        m_system->setCurrentIndex(m_offsets->active());
+        refresh();
+    });
     connect(context, &MachineContext::machineChanged, this, &MachineDro::rebuild);
     connect(context, &MachineContext::machineStatusChanged, this, &MachineDro::refresh);
     rebuild();

@@ -5,6 +5,7 @@
 class QGridLayout;
 class QLabel;
 class QTimer;
+class QComboBox;
 class QToolButton;
 
 namespace stepdeck::machine {
@@ -72,6 +73,7 @@ private:
     MachineContext* m_context;
     MachineWorkOffsets* m_offsets;
     QGridLayout* m_grid;
+    QComboBox* m_system; // G54..G59: the coordinate system Zero, the digits and Go to use
     QToolButton* m_clear;
     ElidedLabel* m_message;
     QString m_refusedAxis; // the axis whose Zero the message line refuses, if any

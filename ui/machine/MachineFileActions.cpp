@@ -6,6 +6,7 @@
 #include "connection/ConnectionSettings.h"
 #include "machine/Machine.h"
 #include "machine/MachineFile.h"
+#include "machine/ToolTableDialog.h"
 #include <QAction>
 #include <QFileInfo>
 #include <QMenu>
@@ -17,6 +18,7 @@ MachineFileActions::MachineFileActions(MachineContext* context, QWidget* window)
       m_new(new QAction(tr("&New machine\u2026"), this)),
       m_open(new QAction(tr("&Open machine\u2026"), this)),
       m_edit(new QAction(tr("&Edit machine\u2026"), this)),
+      m_tools(new QAction(tr("&Tool table\u2026"), this)),
       m_recent(new QMenu(tr("&Recent machines"), window))
 {
     setObjectName(QStringLiteral("machineFileActions"));
@@ -25,6 +27,11 @@ MachineFileActions::MachineFileActions(MachineContext* context, QWidget* window)
     connect(m_new, &QAction::triggered, this, &MachineFileActions::newMachine);
     connect(m_open, &QAction::triggered, this, &MachineFileActions::chooseMachineToOpen);
     connect(m_edit, &QAction::triggered, this, &MachineFileActions::editMachine);
+    m_tools->setToolTip(tr("The machine's tools: the lengths G43 applies, the texts M6 shows"));
+    connect(m_tools, &QAction::triggered, this, [this] {
+        ToolTableDialog dialog(m_context->tools(), m_window);
+        dialog.exec();
+    });
     connect(m_recent, &QMenu::aboutToShow, this, &MachineFileActions::rebuildRecentMenu);
     rebuildRecentMenu();
 }
@@ -35,6 +42,7 @@ void MachineFileActions::addTo(QMenu* menu)
     menu->addAction(m_open);
     menu->addMenu(m_recent);
     menu->addAction(m_edit);
+    menu->addAction(m_tools);
 }
 
 MachineEditor* MachineFileActions::editor() const

@@ -28,6 +28,7 @@ public:
     QAction* newAction() const { return m_new; }
     QAction* openAction() const { return m_open; }
     QAction* editAction() const { return m_edit; }
+    QAction* toolsAction() const { return m_tools; }
     QMenu* recentMenu() const { return m_recent; }
     // The editor window open now (nullptr: none).
     MachineEditor* editor() const;
@@ -57,6 +58,7 @@ private:
     QAction* m_new;
     QAction* m_open;
     QAction* m_edit;
+    QAction* m_tools;
     QMenu* m_recent;
     QString m_current;
     QPointer<MachineEditor> m_editor;

@@ -11,6 +11,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
 #include <QHBoxLayout>
@@ -68,11 +69,13 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
     connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
     connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
-    // A new work zero moves the program's path on the machine: checked again.
-    connect(m_context->workOffsets(), &MachineWorkOffsets::changed, this, [this] {
+    // A new work zero or tool table moves the program's path on the machine: checked again.
+    const auto recheck = [this] {
         if (!isRunning())
             m_recheck->start();
-    });
+    };
+    connect(m_context->workOffsets(), &MachineWorkOffsets::changed, this, recheck);
+    connect(m_context->tools(), &MachineTools::changed, this, recheck);
     // The single controller's link decides whether "Use the connected controller" can work.
     connect(m_context->session(), &ControllerSession::linkStateChanged, this,
             &ProgramPage::updateControls);
@@ -149,6 +152,9 @@ void ProgramPage::onMachineChanged()
         });
         connect(m_runner, &ProgramRunner::finished, this, &ProgramPage::onFinished);
         connect(m_runner, &ProgramRunner::operatorMessage, this, &ProgramPage::operatorMessage);
+        // A program's G10 sets a coordinate system for the next runs too (LinuxCNC).
+        connect(m_runner, &ProgramRunner::coordinateSystemSet, m_context->workOffsets(),
+                &MachineWorkOffsets::setSystem);
     }
     if (machine) {
         QStringList axes;
@@ -199,7 +205,10 @@ void ProgramPage::checkNow()
     updateControls();
     m_checkedPositions = positionsSignature();
     program::MachineFacts facts = program::factsOf(*machine);
-    facts.workOffsets = m_context->workOffsets()->all(); // the position display's coordinates
+    // The position display's coordinates: the active system, and the others for G54..G59.
+    facts.coordinateSystems = m_context->workOffsets()->systems();
+    facts.activeSystem = m_context->workOffsets()->active();
+    facts.tools = m_context->tools()->table();
     m_checkedParameters = facts.knownParameters;
     m_checkedIncomplete = facts.setupIncomplete;
     m_checker->start(m_editor->toPlainText().toUtf8(), axes, facts);

@@ -11,6 +11,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include <QPushButton>
 
@@ -86,7 +87,9 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
     QList<program::ProgramError> errors;
     const std::optional<program::Program> parsed = parse(&errors);
     // In the coordinates the check used and the position display shows (issue 28, item 3).
-    m_runner->setWorkOffsets(m_context->workOffsets()->all());
+    m_runner->setCoordinateSystems(m_context->workOffsets()->systems(),
+                                   m_context->workOffsets()->active());
+    m_runner->setToolTable(m_context->tools()->table());
     if (parsed && m_runner->start(*parsed, fromLine, &errors, stepOnly)) {
         m_running = *parsed;
         m_progress.reset(m_runner->preview());

@@ -20,3 +20,10 @@ stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_p
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
 # G2/G3 geometry (issue 29): the path the check and the run share.
 stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp LABELS unit)
+# A machine's tool table in LinuxCNC's tool.tbl format (issue 29).
+stepdeck_add_test(tst_tooltable SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltable.cpp LABELS unit)
+# Programs in the styles CAM posts write, run end to end on an E-LAB simulator (issue 29).
+stepdeck_add_test(tst_camprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_camprograms.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+target_compile_definitions(tst_camprograms PRIVATE
+                           STEPDECK_CAM_DIR="${CMAKE_CURRENT_LIST_DIR}/cam")

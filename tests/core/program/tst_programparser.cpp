@@ -66,6 +66,16 @@ QString describe(const ProgramBlock& b)
     default:
         break;
     }
+    if (b.kind == BlockKind::SetCoordinates)
+        out << QStringLiteral("P%1 %2").arg(b.number).arg(b.fromPosition ? "L20" : "L2");
+    if (b.coordinateSystem >= 0)
+        out << QStringLiteral("G%1").arg(54 + b.coordinateSystem);
+    if (b.machineCoordinates)
+        out << QStringLiteral("G53");
+    if (b.lengthTool >= 0)
+        out << QStringLiteral("H%1").arg(b.lengthTool);
+    if (b.appliesLengthOffset)
+        out << QStringLiteral("G43");
     if (!b.message.isEmpty())
         out << QStringLiteral("msg\"%1\"").arg(b.message);
     return out.join(QLatin1Char(' '));
@@ -197,6 +207,33 @@ void TestProgramParser::parse_everyWord_golden_data()
         << QStringList{"1: G3 Y=1 Z=1 abs mm F60 G19 J0 K1 P1 G90.1"};
     QTest::newRow("inch arc") << "G20 G2 X1 Y1 I0.5 J0.5 F10"
                               << QStringList{"1: G2 X=1 Y=1 abs in F10 G17 I0.5 J0.5 P1"};
+    // Coordinates (issue 29): G54..G59 modal, G53 for one block, G10 L2/L20, G92 and its kin.
+    QTest::newRow("G55 then G54") << "G0 X1\nG55 G0 X2\nX3\nG54"
+                                  << QStringList{"1: G0 X=1 abs mm F-", "2: G0 X=2 abs mm F- G55",
+                                                 "3: G0 X=3 abs mm F- G55",
+                                                 "4: modal abs mm F- G54"};
+    QTest::newRow("G53 for one block")
+        << "G59\nG53 G0 Z0\nG0 X1"
+        << QStringList{"1: modal abs mm F- G59", "2: G0 Z=0 abs mm F- G59 G53",
+                       "3: G0 X=1 abs mm F- G59"};
+    QTest::newRow("G53 with modal G1")
+        << "G1 X1 F10\nG53 Y2" << QStringList{"1: G1 X=1 abs mm F10", "2: G1 Y=2 abs mm F10 G53"};
+    QTest::newRow("G10 L2 and L20")
+        << "G10 L2 P2 X10 Y-5\nG10 L20 P0 Z0"
+        << QStringList{"1: G10 X=10 Y=-5 abs mm F- P2 L2", "2: G10 Z=0 abs mm F- P0 L20"};
+    QTest::newRow("G92 family") << "G92 X0 Y0\nG92.2\nG92.3\nG92.1"
+                                << QStringList{"1: G92 X=0 Y=0 abs mm F-", "2: G92.2 abs mm F-",
+                                               "3: G92.3 abs mm F-", "4: G92.1 abs mm F-"};
+    // Tool length offsets (issue 29): G43 H, G43 with the tool M6 loaded, G49.
+    QTest::newRow("T M6 G43 H on one line")
+        << "T1 M6 G43 H1\nG0 Z5"
+        << QStringList{"1: M6 abs mm F- T1 \"Load tool 1\" H1 G43", "2: G0 Z=5 abs mm F- H1"};
+    QTest::newRow("G43 takes the loaded tool, not the next selected")
+        << "T2 M6\nT3\nG0 X0\nG43 Z15\nG49 G0 Z20"
+        << QStringList{"1: M6 abs mm F- T2 \"Load tool 2\"", "2: modal abs mm F-",
+                       "3: G0 X=0 abs mm F-", "4: G0 Z=15 abs mm F- H2 G43",
+                       "5: G0 Z=20 abs mm F-"};
+    QTest::newRow("G43 H0") << "G43 H0 G0 Z1" << QStringList{"1: G0 Z=1 abs mm F- H0 G43"};
     QTest::newRow("G80 ends modal arcs")
         << "G2 X1 I1 F10\nG80\nG0 X0"
         << QStringList{"1: G2 X=1 abs mm F10 G17 I1 P1", "2: modal abs mm F10",
@@ -220,6 +257,29 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::addColumn<QString>("error"); // "line:column: message" starts with this
     QTest::newRow("unknown G") << "G0 X1\nG5 X1 Y1"
                                << "2:1: G5 is not supported";
+    QTest::newRow("G54 and G55") << "G54 G55"
+                                 << "1:5: G54 and G55 on one line: they are of one modal group";
+    QTest::newRow("G59.1") << "G59.1"
+                           << "1:1: G59.1 is not supported";
+    QTest::newRow("G53 in G91") << "G91\nG53 G0 X1"
+                                << "2:1: G53 takes absolute machine coordinates: not in G91";
+    QTest::newRow("G53 with an arc") << "G53 G2 X1 I1 F10"
+                                     << "1:1: G53 moves in machine coordinates with G0 or G1 only";
+    QTest::newRow("G53 twice") << "G53 G53 G0 X1"
+                               << "1:5: G53 appears twice on the line";
+    QTest::newRow("G10 L1") << "G10 L1 P1 Z2"
+                            << "1:5: G10 L1 is not supported: L2 and L20 set the coordinate "
+                               "systems";
+    QTest::newRow("G10 without L") << "G10 P1 X0"
+                                   << "1:1: G10 needs L";
+    QTest::newRow("G10 P7") << "G10 L2 P7 X0"
+                            << "1:8: P7: G10 sets P1 (G54) to P6 (G59), P0 the system in effect";
+    QTest::newRow("G10 R") << "G10 L2 P1 R45"
+                           << "1:11: R45: G10 R (a rotated coordinate system) is not supported";
+    QTest::newRow("G92 without axes") << "G92"
+                                      << "1:1: G92 needs axis words";
+    QTest::newRow("G92.1 with axes") << "G92.1 X0"
+                                     << "1:7: X0 is not used by G92.1";
     QTest::newRow("arc without centre") << "G0 X1\nG2 X1 Y1 F10"
                                         << "2:1: G2 needs its centre: I and J, or R";
     QTest::newRow("arc without F") << "G3 X1 I1"
@@ -343,8 +403,15 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                             "let the CAM post compensate the path";
     QTest::newRow("G42.1") << "G42.1"
                            << "1:1: G42.1 is not supported";
-    QTest::newRow("G43") << "G43 H1"
-                         << "1:1: G43 (tool length offset) is not supported yet";
+    QTest::newRow("G43 without H or a loaded tool")
+        << "T1\nG0 X1\nG43 Z5"
+        << "3:1: G43 needs H<n> or a tool loaded by M6 (T<n> M6) before it";
+    QTest::newRow("H without G43") << "G0 X1 H2"
+                                   << "1:7: H2 is used only with G43";
+    QTest::newRow("H fraction") << "G43 H1.5"
+                                << "1:5: H1.5: H takes a tool number, whole, 0..99999";
+    QTest::newRow("G43.1") << "G43.1 Z1"
+                           << "1:1: G43.1 is not supported";
     QTest::newRow("G93") << "G93"
                          << "1:1: G93 (inverse time feed) is not supported yet: use G94";
     QTest::newRow("G95") << "G95"

@@ -83,7 +83,7 @@ void TestProgramPreview::preview_arc_chordPointsWithinToleranceRapidsMarked()
 {
     MachineFacts facts = machineFacts("mill");
     facts.knownPositions = {{"X", 0.0}, {"Y", 0.0}};
-    facts.workOffsets = {{"X", 20.0}, {"Y", 30.0}};
+    facts.coordinateSystems[0] = {{"X", 20.0}, {"Y", 30.0}};
     const Program p = parsed("G0 X10 Y10\nG3 X10 Y10 I5 J0 F600\nG1 X0 F600\n", facts);
     const ProgramCheckResult result = ProgramCheck::check(p, facts);
     QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
@@ -150,12 +150,12 @@ void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine()
     QFETCH(double, xTo);
     MachineFacts facts = machineFacts("mill");
     facts.knownPositions = positions("X=20"); // machine 20 = work -10
-    facts.workOffsets = {{QStringLiteral("X"), 30.0}};
+    facts.coordinateSystems[0] = {{QStringLiteral("X"), 30.0}};
     const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
     QCOMPARE(texts(result.errors), errors);
     if (!errors.isEmpty())
         return;
-    QCOMPARE(result.preview.workOffsets, facts.workOffsets);
+    QCOMPARE(result.preview.workOffsets, facts.workOffsets());
     QCOMPARE(result.preview.extents["X"].minimum, xFrom);
     QCOMPARE(result.preview.extents["X"].maximum, xTo);
     QCOMPARE(result.preview.path.first().position.value("X"), -10.0);

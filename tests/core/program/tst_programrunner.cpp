@@ -81,6 +81,7 @@ private Q_SLOTS:
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
     void run_workOffsets_absoluteTargetsShiftedRelativeNot();
+    void run_coordinateSystems_boardGetsTheTargetsOfG55G10G92G53();
     void arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart();
     void pause_duringArc_holdsBetweenChordsResumeFinishesTheArc();
 
@@ -444,6 +445,35 @@ void TestProgramRunner::run_workOffsets_absoluteTargetsShiftedRelativeNot()
     // At the drive: to 25 deg = 2500 steps (within its 6000-step travel).
     QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{2500}));
     QVERIFY(still(*m_elab) && still(*m_nanotec));
+}
+
+// G54..G59, G10 L20, G92 and G53 (issue 29): each absolute word reaches the board as the
+// machine position LinuxCNC would go to (400 steps/mm); the G10 is reported for the window.
+void TestProgramRunner::run_coordinateSystems_boardGetsTheTargetsOfG55G10G92G53()
+{
+    CoordinateSystems systems;
+    systems[0] = {{QStringLiteral("X"), 2.0}};
+    systems[1] = {{QStringLiteral("X"), 5.0}};
+    m_runner->setCoordinateSystems(systems, 0);
+    QSignalSpy set(m_runner.get(), &ProgramRunner::coordinateSystemSet);
+    QVERIFY(run("G28 X0 Y0\n"
+                "G55 G0 X1\n"     // machine 6
+                "G10 L20 P3 X0\n" // G56's X zero where X stands: 6
+                "G56 G0 X1\n"     // machine 7
+                "G92 X0\n"        // X reads 0 here: G92 adds 1
+                "G0 X1\n"         // machine 8
+                "G53 G0 X0.5\n"   // machine 0.5
+                "G92.1\n"
+                "G54 G0 X0\n" // machine 2
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{2400, 400, 400, -3000, 600}));
+    QCOMPARE(set.size(), 1);
+    QCOMPARE(set.at(0).at(0).toInt(), 2);
+    using Offsets = QMap<QString, double>;
+    QCOMPARE(set.at(0).at(1).value<Offsets>(), (Offsets{{QStringLiteral("X"), 6.0}}));
+    QVERIFY(still(*m_elab));
 }
 
 // Where the board stands (steps, X and Y) each time the machine reports a move arrived: read

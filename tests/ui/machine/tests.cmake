@@ -37,3 +37,6 @@ endforeach()
 # The read-out's estimate of a positioning move without position read-back (pure).
 stepdeck_add_test(tst_moveestimate SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_moveestimate.cpp
                   LABELS unit LIBS stepdeck_ui)
+# The machine's tool table: kept per machine, edited as LinuxCNC tool.tbl text (issue 29).
+stepdeck_add_test(tst_tooltabledialog SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltabledialog.cpp
+                  LABELS ui LIBS stepdeck_ui)

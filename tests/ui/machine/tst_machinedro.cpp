@@ -8,8 +8,10 @@
 #include "jog/JoystickPad.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineReferenceRows.h"
+#include "machine/MachineWorkOffsets.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
+#include <QComboBox>
 #include <QPushButton>
 
 using namespace stepdeck;
@@ -25,6 +27,7 @@ private Q_SLOTS:
 
     void position_unknownBeforeReference_estimatedAfterJog();
     void zero_referencedAxis_workPositionZero();
+    void system_chosenInTheBox_zeroAndDigitsUseIt();
     void move_withoutReadback_estimateBetweenStartAndTarget();
     void move_withoutReadback_rampUnknown_showsTargetMarked();
     void disconnected_showsNoLinkNotReferenced();
@@ -85,6 +88,32 @@ void TestMachineDro::zero_referencedAxis_workPositionZero()
     QVERIFY(dro()->zeroAxis(QStringLiteral("X")));
     QCOMPARE(dro()->displayedValue(QStringLiteral("X")), QStringLiteral("0"));
     QVERIFY(dro()->detailText(QStringLiteral("X")).startsWith(QStringLiteral("machine 400 steps")));
+}
+
+// Issue 29: the G54..G59 box chooses the system the digits show and Zero sets.
+void TestMachineDro::system_chosenInTheBox_zeroAndDigitsUseIt()
+{
+    QVERIFY(referenceX());
+    m_f->session->moveRelative({{Axis::X, 400}});
+    QTRY_VERIFY_WITH_TIMEOUT(m_f->window->context()->status().axes.value(Axis::X).position == 400 &&
+                                 !m_f->simAxis(Axis::X).moving,
+                             10000);
+    QTRY_COMPARE(dro()->stateText(QStringLiteral("X")), QStringLiteral("REFERENCED"));
+    auto* box = dro()->findChild<QComboBox*>(QStringLiteral("machineCoordinateSystem"));
+    QVERIFY(box);
+    QCOMPARE(box->count(), 6);
+    QCOMPARE(box->currentText(), QStringLiteral("G54"));
+    QVERIFY(dro()->zeroAxis(QStringLiteral("X"))); // G54 zero at 400
+    box->setCurrentIndex(1);
+    Q_EMIT box->activated(1); // as a click on "G55" does
+    ui::MachineWorkOffsets* offsets = m_f->window->context()->workOffsets();
+    QCOMPARE(offsets->active(), 1);
+    QCOMPARE(dro()->displayedValue(QStringLiteral("X")), QStringLiteral("400")); // G55: none
+    offsets->setSystem(1, {{QStringLiteral("X"), 100.0}}); // as a program's G10 does
+    QCOMPARE(dro()->displayedValue(QStringLiteral("X")), QStringLiteral("300"));
+    offsets->setActive(0); // elsewhere: the box follows
+    QCOMPARE(box->currentText(), QStringLiteral("G54"));
+    QCOMPARE(dro()->displayedValue(QStringLiteral("X")), QStringLiteral("0"));
 }
 
 void TestMachineDro::move_withoutReadback_estimateBetweenStartAndTarget()

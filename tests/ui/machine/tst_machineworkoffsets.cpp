@@ -27,6 +27,9 @@ private Q_SLOTS:
     void load_otherFile_noOffsets();
     void clear_everyAxisBackToMachineCoordinates_remembered();
     void load_noFile_keptInMemoryOnly();
+    void systems_zeroSetsTheActiveOne_allRemembered();
+    void setSystem_programsG10_zerosLeftOutOthersKept();
+    void load_fileOfBeforeTheSystems_itsOriginsAreG54();
 
 private:
     static machine::MachineAxisStatus status(double position, machine::PositionKnowledge known,
@@ -186,6 +189,65 @@ void TestMachineWorkOffsets::load_noFile_keptInMemoryOnly()
                          nullptr));
     QCOMPARE(offsets.offset(QStringLiteral("X")), 5.0);
     QVERIFY(QSettings().value(MachineWorkOffsets::settingsKey()).toMap().isEmpty());
+}
+
+// Issue 29: G54..G59. Zero, the read-out and clear act on the active system; the table and the
+// active system come back with the machine file.
+void TestMachineWorkOffsets::systems_zeroSetsTheActiveOne_allRemembered()
+{
+    const QString file = m_dir.filePath(QStringLiteral("s.machine.json"));
+    {
+        MachineWorkOffsets offsets;
+        offsets.load(file);
+        QVERIFY(offsets.zero(QStringLiteral("X"),
+                             status(10.0, machine::PositionKnowledge::Referenced), nullptr));
+        QSignalSpy changed(&offsets, &MachineWorkOffsets::changed);
+        offsets.setActive(2); // G56
+        QCOMPARE(changed.size(), 1);
+        QVERIFY(!offsets.hasOffset(QStringLiteral("X")));
+        QVERIFY(offsets.zero(QStringLiteral("X"),
+                             status(30.0, machine::PositionKnowledge::Referenced), nullptr));
+        QCOMPARE(offsets.toWork(QStringLiteral("X"), 31.0), 1.0);
+        QCOMPARE(offsets.systems()[0].value(QStringLiteral("X")), 10.0);
+    }
+    MachineWorkOffsets reopened;
+    reopened.load(file);
+    QCOMPARE(reopened.active(), 2);
+    QCOMPARE(reopened.offset(QStringLiteral("X")), 30.0);
+    QCOMPARE(reopened.systems()[0].value(QStringLiteral("X")), 10.0);
+    reopened.clear(); // G56 only
+    QCOMPARE(reopened.systems()[0].value(QStringLiteral("X")), 10.0);
+    QVERIFY(!reopened.anyOffset());
+    reopened.setActive(0);
+    QCOMPARE(reopened.offset(QStringLiteral("X")), 10.0);
+}
+
+void TestMachineWorkOffsets::setSystem_programsG10_zerosLeftOutOthersKept()
+{
+    MachineWorkOffsets offsets;
+    offsets.load(m_dir.filePath(QStringLiteral("g10.machine.json")));
+    QVERIFY(offsets.zero(QStringLiteral("Y"), status(4.0, machine::PositionKnowledge::Referenced),
+                         nullptr));
+    offsets.setSystem(1, {{QStringLiteral("X"), 6.0}, {QStringLiteral("Y"), 0.0}});
+    QCOMPARE(offsets.systems()[1], (QMap<QString, double>{{QStringLiteral("X"), 6.0}}));
+    QCOMPARE(offsets.offset(QStringLiteral("Y")), 4.0); // G54 still active and kept
+    offsets.setSystem(7, {{QStringLiteral("X"), 1.0}}); // no such system: nothing
+    MachineWorkOffsets reopened;
+    reopened.load(m_dir.filePath(QStringLiteral("g10.machine.json")));
+    QCOMPARE(reopened.systems()[1].value(QStringLiteral("X")), 6.0);
+}
+
+// A file's origins stored before the systems came (only "machine/workOffsets") are G54's.
+void TestMachineWorkOffsets::load_fileOfBeforeTheSystems_itsOriginsAreG54()
+{
+    const QString file =
+        QFileInfo(m_dir.filePath(QStringLiteral("old.machine.json"))).absoluteFilePath();
+    QVariantMap axes{{QStringLiteral("Z"), -3.5}};
+    QSettings().setValue(MachineWorkOffsets::settingsKey(), QVariantMap{{file, axes}});
+    MachineWorkOffsets offsets;
+    offsets.load(file);
+    QCOMPARE(offsets.active(), 0);
+    QCOMPARE(offsets.offset(QStringLiteral("Z")), -3.5);
 }
 
 QTEST_GUILESS_MAIN(TestMachineWorkOffsets)

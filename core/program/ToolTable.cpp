@@ -1,0 +1,130 @@
+// LinuxCNC's tool.tbl (LinuxCNC docs, "Tool Table Format"): T, P, the offsets per axis, D and
+// a ";" comment; StepDeck uses T, Z (the length on the tool axis), D and the comment.
+#include "ToolTable.h"
+#include "ProgramLineChecks.h"
+#include <QRegularExpression>
+#include <cmath>
+
+namespace stepdeck::program {
+
+namespace {
+
+struct Column
+{
+    QChar letter;
+    double value = 0;
+    int column = 0;
+};
+
+// "T1", "Z+0.5", "D3.": a letter and a finite number.
+std::optional<Column> columnOf(const QString& token, int column)
+{
+    if (token.size() < 2 || !token.at(0).isLetter())
+        return std::nullopt;
+    bool ok = false;
+    const double value = token.mid(1).toDouble(&ok);
+    if (!ok || !std::isfinite(value))
+        return std::nullopt;
+    return Column{token.at(0).toUpper(), value, column};
+}
+
+} // namespace
+
+std::optional<ToolTable> ToolTable::parse(const QByteArray& text, QList<ProgramError>* errors)
+{
+    ToolTable table;
+    QList<ProgramError> found;
+    const QList<QByteArray> lines = text.split('\n');
+    for (int n = 0; n < lines.size(); ++n) {
+        QString line = QString::fromUtf8(lines.at(n));
+        if (line.endsWith(QLatin1Char('\r')))
+            line.chop(1);
+        const qsizetype semicolon = line.indexOf(QLatin1Char(';'));
+        const QString comment = semicolon < 0 ? QString() : line.mid(semicolon + 1).trimmed();
+        const QString data = semicolon < 0 ? line : line.left(semicolon);
+        if (data.trimmed().isEmpty())
+            continue;
+        const auto fail = [&](int column, const QString& why) {
+            found << ProgramError{n + 1, column, why};
+        };
+        Tool tool;
+        bool hasNumber = false;
+        bool bad = false;
+        static const QRegularExpression token(QStringLiteral("\\S+"));
+        for (auto it = token.globalMatch(data); it.hasNext() && !bad;) {
+            const QRegularExpressionMatch m = it.next();
+            const int column = int(m.capturedStart()) + 1;
+            const std::optional<Column> c = columnOf(m.captured(), column);
+            if (!c) {
+                fail(column,
+                     tr("%1 is not a column of a tool table (T, P, Z, D, ...)").arg(m.captured()));
+                bad = true;
+            } else if (c->letter == QLatin1Char('T')) {
+                if (!isWhole(c->value) || c->value < 0 || c->value > kMaxTool) {
+                    fail(column, tr("%1: T takes a tool number, whole, 0..%2")
+                                     .arg(m.captured())
+                                     .arg(kMaxTool));
+                    bad = true;
+                }
+                tool.number = int(c->value);
+                hasNumber = true;
+            } else if (c->letter == QLatin1Char('Z')) {
+                tool.length = c->value;
+            } else if (c->letter == QLatin1Char('D')) {
+                if (c->value < 0) {
+                    fail(column, tr("%1: a diameter is not below 0").arg(m.captured()));
+                    bad = true;
+                }
+                tool.diameter = c->value;
+            } else if (!QStringLiteral("PXYABCUVWIJQ").contains(c->letter)) {
+                fail(column,
+                     tr("%1 is not a column of a tool table (T, P, Z, D, ...)").arg(m.captured()));
+                bad = true;
+            }
+        }
+        if (bad)
+            continue;
+        if (!hasNumber) {
+            fail(1, tr("the line names no tool (T)"));
+            continue;
+        }
+        if (table.m_tools.contains(tool.number)) {
+            fail(1, tr("tool %1 is in the table twice").arg(tool.number));
+            continue;
+        }
+        if (table.m_tools.size() >= kMaxTools) {
+            fail(1, tr("the table has more than %1 tools").arg(kMaxTools));
+            break;
+        }
+        tool.text = comment;
+        table.m_tools.insert(tool.number, tool);
+    }
+    if (errors)
+        *errors = found;
+    if (!found.isEmpty())
+        return std::nullopt;
+    return table;
+}
+
+QByteArray ToolTable::text() const
+{
+    QByteArray out;
+    for (const Tool& t : m_tools) {
+        QString line = QStringLiteral("T%1 P%1 Z%2 D%3")
+                           .arg(t.number)
+                           .arg(QString::number(t.length, 'g', 12))
+                           .arg(QString::number(t.diameter, 'g', 12));
+        if (!t.text.isEmpty())
+            line += QStringLiteral(" ;") + t.text;
+        out += line.toUtf8() + '\n';
+    }
+    return out;
+}
+
+const Tool* ToolTable::find(int number) const
+{
+    const auto it = m_tools.constFind(number);
+    return it == m_tools.cend() ? nullptr : &it.value();
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,209 @@
+// Programs in the styles CAM posts write (issue 29), run end to end on an E-LAB table (X, Y, Z in
+// mm, 400 steps/mm) on a pseudo-terminal: their headers, tool changes with a tool table, work
+// offsets, G43, G53, arcs of I J and R. The programs are our own, in tests/core/program/cam/.
+// What the board reached is read at the simulator each time a move arrived, and compared with
+// the path the check planned (within a step) and with points worked out by hand.
+#include "MachineTestSupport.h"
+#include "PtyDevice.h"
+#include "machine/Machine.h"
+#include "program/ProgramParser.h"
+#include "program/ProgramRunner.h"
+#include <QFile>
+#include <QSignalSpy>
+#include <QtTest>
+#include <cmath>
+#include <memory>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+namespace {
+
+using Device = test::PtyDevice;
+constexpr double kStepsPerMm = 400;
+
+struct Point3
+{
+    double x = 0, y = 0, z = 0;
+};
+
+QString text(const Point3& p)
+{
+    return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
+}
+
+} // namespace
+
+class TestCamPrograms : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void run_camStyles_boardFollowsThePlannedPath_data();
+    void run_camStyles_boardFollowsThePlannedPath();
+
+private:
+    Point3 boardMm(); // where the board stands, machine mm from the reference
+    bool prepare();
+
+    std::unique_ptr<Device> m_elab;
+    std::unique_ptr<Machine> m_machine;
+    std::unique_ptr<ProgramRunner> m_runner;
+    qint64 m_origin[3] = {0, 0, 0}; // the simulator's count at the reference
+};
+
+void TestCamPrograms::init()
+{
+    m_elab = std::make_unique<Device>("elab");
+    MachineDescription d;
+    d.name = QStringLiteral("CAM table");
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}}};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kStepsPerMm),
+              test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, kStepsPerMm)};
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
+    m_machine->open();
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    QVERIFY(prepare());
+    m_runner = std::make_unique<ProgramRunner>(m_machine.get());
+}
+
+void TestCamPrograms::cleanup()
+{
+    m_runner.reset();
+    m_machine.reset();
+    m_elab.reset();
+}
+
+// The ramp setup the board needs, start speeds that allow feeds up to 2000 steps/s (feed mode
+// runs below the start speed, manual), then a reference run of every axis.
+bool TestCamPrograms::prepare()
+{
+    ControllerSession* table = m_machine->session("table");
+    if (!test::writeSetupBeforeMotion(table))
+        return false;
+    QSignalSpy done(table, &ControllerSession::requestFinished);
+    ParameterValue start, feed;
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+        start.perAxis.insert(a, 2000);
+        feed.perAxis.insert(a, 1000);
+    }
+    const RequestId id = table->writeParameters(
+        {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}}, false);
+    if (!QTest::qWaitFor(
+            [&] {
+                return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& a) {
+                    const auto r = a.at(0).value<CommandResult>();
+                    return r.id == id && r.ok();
+                });
+            },
+            10000))
+        return false;
+    QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
+    QString refusal;
+    if (m_machine->reference({}, &refusal) == 0 || !referenced.wait(60000) ||
+        !referenced.first().at(1).toBool())
+        return false;
+    return m_elab->probe([&] {
+        for (int i = 0; i < 3; ++i)
+            m_origin[i] = m_elab->sim()->position(Axis(i));
+        return true;
+    });
+}
+
+Point3 TestCamPrograms::boardMm()
+{
+    return m_elab->probe([&] {
+        Point3 p;
+        p.x = double(m_elab->sim()->position(Axis::X) - m_origin[0]) / kStepsPerMm;
+        p.y = double(m_elab->sim()->position(Axis::Y) - m_origin[1]) / kStepsPerMm;
+        p.z = double(m_elab->sim()->position(Axis::Z) - m_origin[2]) / kStepsPerMm;
+        return p;
+    });
+}
+
+void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("prompt");      // of the tool change the run holds at; empty: none
+    QTest::addColumn<QList<double>>("spots"); // machine x, y, z the board must reach, in order
+    // G54 at machine X10 Y10 Z-20; T1 is 5 mm long, T2 0 mm.
+    QTest::newRow("Fusion 360") << "fusion360_style.ngc"
+                                << "Load tool 1 (3 mm flat end mill)"
+                                << QList<double>{12, 12, 0,   // N35 G0 X2 Y2 (Z at G53 0)
+                                                 12, 12, -10, // N40 G43 Z5 H1: 5 - 20 + 5
+                                                 12, 12, -16, // N50 G1 Z-1
+                                                 20, 14, -16, // N60 G3's end
+                                                 18, 18, -16, // N70 G2 R2's end
+                                                 12, 18, -10, // N80 G0 Z5
+                                                 12, 18, 0};  // N90 G53 G0 Z0
+    QTest::newRow("FreeCAD") << "freecad_style.ngc"
+                             << "Load tool 2 (2 mm ball nose)"
+                             << QList<double>{16, 15, -20.5, // the full circle back at its start
+                                              14, 17, -21};  // the helix' end
+    QTest::newRow("Estlcam") << "estlcam_style.nc" << QString()
+                             << QList<double>{13, 13, -20.5, 15, 15, -20.5, 17, 13, -20.5};
+}
+
+void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
+{
+    QFETCH(QString, file);
+    QFETCH(QString, prompt);
+    QFETCH(QList<double>, spots);
+    QFile f(QStringLiteral(STEPDECK_CAM_DIR "/") + file);
+    QVERIFY2(f.open(QIODevice::ReadOnly), qPrintable(f.fileName()));
+    QList<ProgramError> errors;
+    const std::optional<Program> program = ProgramParser::parse(
+        f.readAll(), {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")}, &errors);
+    QVERIFY2(program, qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
+    CoordinateSystems systems;
+    systems[0] = {{"X", 10.0}, {"Y", 10.0}, {"Z", -20.0}};
+    m_runner->setCoordinateSystems(systems, 0);
+    m_runner->setToolTable(
+        *ToolTable::parse("T1 Z5 ;3 mm flat end mill\nT2 Z0 ;2 mm ball nose", nullptr));
+    QList<Point3> arrived;
+    connect(m_machine.get(), &Machine::moveFinished, this, [&](quint64, bool ok) {
+        if (ok)
+            arrived << boardMm();
+    });
+    QVERIFY2(m_runner->start(*program, 1, &errors),
+             qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
+    if (!prompt.isEmpty()) {
+        QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 60000);
+        QCOMPARE(m_runner->prompt(), prompt);
+        m_runner->resume();
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 120000);
+    QVERIFY2(m_runner->state() == RunState::Finished, qPrintable(m_runner->endMessage()));
+    // Every point the check planned (work coordinates, G54 here) was reached within a step.
+    const QList<PreviewPoint>& planned = m_runner->preview().path;
+    QList<Point3> plannedMachine;
+    for (const PreviewPoint& p : planned)
+        if (p.position.size() == 3 && p.line > 0)
+            plannedMachine << Point3{p.position.value("X") + 10, p.position.value("Y") + 10,
+                                     p.position.value("Z") - 20};
+    QCOMPARE(arrived.size(), plannedMachine.size());
+    for (int i = 0; i < arrived.size(); ++i) {
+        const Point3 a = arrived.at(i), p = plannedMachine.at(i);
+        QVERIFY2(std::abs(a.x - p.x) <= 1 / kStepsPerMm && std::abs(a.y - p.y) <= 1 / kStepsPerMm &&
+                     std::abs(a.z - p.z) <= 1 / kStepsPerMm,
+                 qPrintable(
+                     QStringLiteral("move %1: board %2, planned %3").arg(i).arg(text(a), text(p))));
+    }
+    // And the points worked out by hand, in their order.
+    int next = 0;
+    for (const Point3& a : arrived)
+        if (next + 2 < spots.size() && std::abs(a.x - spots.at(next)) < 1e-6 &&
+            std::abs(a.y - spots.at(next + 1)) < 1e-6 && std::abs(a.z - spots.at(next + 2)) < 1e-6)
+            next += 3;
+    QVERIFY2(
+        next == spots.size(),
+        qPrintable(QStringLiteral("reached %1 of %2 spots").arg(next / 3).arg(spots.size() / 3)));
+}
+
+QTEST_MAIN(TestCamPrograms)
+#include "tst_camprograms.moc"

@@ -1,0 +1,31 @@
+#pragma once
+#include <QDialog>
+
+class QLabel;
+class QPlainTextEdit;
+
+namespace stepdeck::ui {
+
+class MachineTools;
+
+// Machine → Tool table…: the machine's tool table as LinuxCNC's tool.tbl text (issue 29,
+// docs/programs.md "Tools"), so a table can be typed or pasted from a LinuxCNC machine. Save
+// keeps it only when every line reads; otherwise the first error stays on screen (its line and
+// column) and nothing changes.
+class ToolTableDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    ToolTableDialog(MachineTools* tools, QWidget* parent = nullptr);
+
+    QPlainTextEdit* editor() const { return m_editor; }
+    QString errorText() const;
+    bool save(); // as the Save button: true when the table was kept
+
+private:
+    MachineTools* m_tools;
+    QPlainTextEdit* m_editor;
+    QLabel* m_error;
+};
+
+} // namespace stepdeck::ui
