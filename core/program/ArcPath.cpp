@@ -165,6 +165,35 @@ std::variant<ArcPath, ArcPath::Error> ArcPath::plan(const ProgramBlock& block,
     return path;
 }
 
+// arc_data_r: the centre on the perpendicular bisector, on the side that makes the shorter
+// arc for +R and the longer one for -R.
+std::optional<ArcPath::Error> ArcPath::radiusCentre(const ProgramBlock& block, double inch)
+{
+    const QString g = blockWord(block.kind);
+    const bool clockwise = block.kind == BlockKind::ArcClockwise;
+    const double du = m_end[0] - m_start[0];
+    const double dv = m_end[1] - m_start[1];
+    const double chord = std::hypot(du, dv);
+    const double r = std::abs(*block.arc.radius) * inch;
+    if (chord < 1e-9)
+        return Error{block.columnOf(QStringLiteral("R")),
+                     tr("%1 with R: the end point is the start point; a full circle takes "
+                        "I, J or K")
+                         .arg(g)};
+    const double half = chord / 2;
+    if (half - r > kRadiusToleranceInch * units::kMillimetresPerInch)
+        return Error{block.columnOf(QStringLiteral("R")),
+                     tr("%1: R%2 is too short to reach the end point, %3 away")
+                         .arg(g, figure(*block.arc.radius), figure(chord / inch))};
+    const double along = std::min(half, r);
+    const double turn = (clockwise == (*block.arc.radius > 0)) ? -kPi / 2 : kPi / 2;
+    const double theta = std::atan2(dv, du) + turn;
+    const double offset = r * std::cos(std::asin(along / r));
+    m_centre[0] = m_start[0] + du / 2 + offset * std::cos(theta);
+    m_centre[1] = m_start[1] + dv / 2 + offset * std::sin(theta);
+    return std::nullopt;
+}
+
 // The centre, radii, sweep and chord count (LinuxCNC's arc_data_ijk and arc_data_r).
 std::optional<ArcPath::Error> ArcPath::resolveCentre(const ProgramBlock& block, double tolerance,
                                                      double inch)
@@ -172,31 +201,10 @@ std::optional<ArcPath::Error> ArcPath::resolveCentre(const ProgramBlock& block, 
     const QString g = blockWord(block.kind);
     const int column = block.columnOf({});
     const bool clockwise = block.kind == BlockKind::ArcClockwise;
-    const double du = m_end[0] - m_start[0];
-    const double dv = m_end[1] - m_start[1];
-    const double chord = std::hypot(du, dv);
-    const bool samePoint = chord < 1e-9;
-    if (block.arc.radius) {
-        // arc_data_r: the centre on the perpendicular bisector, on the side that makes the
-        // shorter arc for +R and the longer one for -R.
-        const double r = std::abs(*block.arc.radius) * inch;
-        if (samePoint)
-            return Error{block.columnOf(QStringLiteral("R")),
-                         tr("%1 with R: the end point is the start point; a full circle takes "
-                            "I, J or K")
-                             .arg(g)};
-        const double half = chord / 2;
-        if (half - r > kRadiusToleranceInch * units::kMillimetresPerInch)
-            return Error{block.columnOf(QStringLiteral("R")),
-                         tr("%1: R%2 is too short to reach the end point, %3 away")
-                             .arg(g, figure(*block.arc.radius), figure(chord / inch))};
-        const double along = std::min(half, r);
-        const double turn = (clockwise == (*block.arc.radius > 0)) ? -kPi / 2 : kPi / 2;
-        const double theta = std::atan2(dv, du) + turn;
-        const double offset = r * std::cos(std::asin(along / r));
-        m_centre[0] = m_start[0] + du / 2 + offset * std::cos(theta);
-        m_centre[1] = m_start[1] + dv / 2 + offset * std::sin(theta);
-    }
+    const bool samePoint = std::hypot(m_end[0] - m_start[0], m_end[1] - m_start[1]) < 1e-9;
+    if (block.arc.radius)
+        if (const std::optional<Error> e = radiusCentre(block, inch))
+            return e;
     m_startRadius = std::hypot(m_start[0] - m_centre[0], m_start[1] - m_centre[1]);
     m_endRadius = std::hypot(m_end[0] - m_centre[0], m_end[1] - m_centre[1]);
     if (!std::isfinite(m_startRadius) || !std::isfinite(m_endRadius) ||

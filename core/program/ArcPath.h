@@ -62,6 +62,7 @@ private:
     ArcPath() = default;
     // inch: the axes' unit per program unit (25.4 for G20 on millimetre axes, else 1).
     std::optional<Error> resolveCentre(const ProgramBlock& block, double tolerance, double inch);
+    std::optional<Error> radiusCentre(const ProgramBlock& block, double inch);
     double planeAt(double angle, double radius, int i) const;
 
     int m_axis[2] = {-1, -1}; // the plane's axes, in LinuxCNC's order

@@ -30,6 +30,40 @@ std::optional<Column> columnOf(const QString& token, int column)
 
 } // namespace
 
+namespace {
+// One line's columns into *tool: the first error (column, why), or column 0.
+std::pair<int, QString> readTool(const QString& data, Tool* tool, bool* hasNumber)
+{
+    static const QRegularExpression token(QStringLiteral("\\S+"));
+    for (auto it = token.globalMatch(data); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        const int column = int(m.capturedStart()) + 1;
+        const std::optional<Column> c = columnOf(m.captured(), column);
+        const QString notAColumn =
+            ToolTable::tr("%1 is not a column of a tool table (T, P, Z, D, ...)").arg(m.captured());
+        if (!c)
+            return {column, notAColumn};
+        if (c->letter == QLatin1Char('T')) {
+            if (!isWhole(c->value) || c->value < 0 || c->value > kMaxTool)
+                return {column, ToolTable::tr("%1: T takes a tool number, whole, 0..%2")
+                                    .arg(m.captured())
+                                    .arg(kMaxTool)};
+            tool->number = int(c->value);
+            *hasNumber = true;
+        } else if (c->letter == QLatin1Char('Z')) {
+            tool->length = c->value;
+        } else if (c->letter == QLatin1Char('D')) {
+            if (c->value < 0)
+                return {column, ToolTable::tr("%1: a diameter is not below 0").arg(m.captured())};
+            tool->diameter = c->value;
+        } else if (!QStringLiteral("PXYABCUVWIJQ").contains(c->letter)) {
+            return {column, notAColumn};
+        }
+    }
+    return {};
+}
+} // namespace
+
 std::optional<ToolTable> ToolTable::parse(const QByteArray& text, QList<ProgramError>* errors)
 {
     ToolTable table;
@@ -40,63 +74,24 @@ std::optional<ToolTable> ToolTable::parse(const QByteArray& text, QList<ProgramE
         if (line.endsWith(QLatin1Char('\r')))
             line.chop(1);
         const qsizetype semicolon = line.indexOf(QLatin1Char(';'));
-        const QString comment = semicolon < 0 ? QString() : line.mid(semicolon + 1).trimmed();
         const QString data = semicolon < 0 ? line : line.left(semicolon);
         if (data.trimmed().isEmpty())
             continue;
-        const auto fail = [&](int column, const QString& why) {
-            found << ProgramError{n + 1, column, why};
-        };
         Tool tool;
         bool hasNumber = false;
-        bool bad = false;
-        static const QRegularExpression token(QStringLiteral("\\S+"));
-        for (auto it = token.globalMatch(data); it.hasNext() && !bad;) {
-            const QRegularExpressionMatch m = it.next();
-            const int column = int(m.capturedStart()) + 1;
-            const std::optional<Column> c = columnOf(m.captured(), column);
-            if (!c) {
-                fail(column,
-                     tr("%1 is not a column of a tool table (T, P, Z, D, ...)").arg(m.captured()));
-                bad = true;
-            } else if (c->letter == QLatin1Char('T')) {
-                if (!isWhole(c->value) || c->value < 0 || c->value > kMaxTool) {
-                    fail(column, tr("%1: T takes a tool number, whole, 0..%2")
-                                     .arg(m.captured())
-                                     .arg(kMaxTool));
-                    bad = true;
-                }
-                tool.number = int(c->value);
-                hasNumber = true;
-            } else if (c->letter == QLatin1Char('Z')) {
-                tool.length = c->value;
-            } else if (c->letter == QLatin1Char('D')) {
-                if (c->value < 0) {
-                    fail(column, tr("%1: a diameter is not below 0").arg(m.captured()));
-                    bad = true;
-                }
-                tool.diameter = c->value;
-            } else if (!QStringLiteral("PXYABCUVWIJQ").contains(c->letter)) {
-                fail(column,
-                     tr("%1 is not a column of a tool table (T, P, Z, D, ...)").arg(m.captured()));
-                bad = true;
-            }
-        }
-        if (bad)
+        const auto [column, why] = readTool(data, &tool, &hasNumber);
+        if (column > 0)
+            found << ProgramError{n + 1, column, why};
+        else if (!hasNumber)
+            found << ProgramError{n + 1, 1, tr("the line names no tool (T)")};
+        else if (table.m_tools.contains(tool.number))
+            found << ProgramError{n + 1, 1, tr("tool %1 is in the table twice").arg(tool.number)};
+        else if (table.m_tools.size() >= kMaxTools)
+            found << ProgramError{n + 1, 1, tr("the table has more than %1 tools").arg(kMaxTools)};
+        if (column > 0 || !hasNumber || table.m_tools.contains(tool.number) ||
+            table.m_tools.size() >= kMaxTools)
             continue;
-        if (!hasNumber) {
-            fail(1, tr("the line names no tool (T)"));
-            continue;
-        }
-        if (table.m_tools.contains(tool.number)) {
-            fail(1, tr("tool %1 is in the table twice").arg(tool.number));
-            continue;
-        }
-        if (table.m_tools.size() >= kMaxTools) {
-            fail(1, tr("the table has more than %1 tools").arg(kMaxTools));
-            break;
-        }
-        tool.text = comment;
+        tool.text = semicolon < 0 ? QString() : line.mid(semicolon + 1).trimmed();
         table.m_tools.insert(tool.number, tool);
     }
     if (errors)
