@@ -10,24 +10,26 @@ namespace stepdeck::program {
 // G-code subset with LinuxCNC's meanings; a line holds at most one action besides the modal
 // words G90/G91, G20/G21 and F.
 enum class BlockKind : quint8 {
-    Modal,        // only modal words (G90, G21, F...) or an N number: nothing runs
-    Rapid,        // G0: positioning at the axes' fast speed
-    Feed,         // G1: positioning at the feed rate F (unit/min)
-    Home,         // G28: reference run of the named axes (none named: all, machine order)
-    Dwell,        // G4 P<seconds>
-    Pause,        // M0: until the operator resumes; prompt = the line's comment
-    ToolChange,   // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
-    End,          // M2, M30
-    SpindleOn,    // M3 S<rpm>
-    SpindleOff,   // M5
-    CoolantMist,  // M7
-    CoolantFlood, // M8
-    CoolantOff,   // M9
-    OutputOn,     // M64 P<n>
-    OutputOff,    // M65 P<n>
-    WaitInput,    // M66 P<n> L3|L4 Q<seconds>
-    RepeatStart,  // O<n> repeat [count]
-    RepeatEnd,    // O<n> endrepeat
+    Modal,          // only modal words (G90, G21, F...) or an N number: nothing runs
+    Rapid,          // G0: positioning at the axes' fast speed
+    Feed,           // G1: positioning at the feed rate F (unit/min)
+    Home,           // G28: reference run of the named axes (none named: all, machine order)
+    Dwell,          // G4 P<seconds>
+    Pause,          // M0: until the operator resumes; prompt = the line's comment
+    OptionalPause,  // M1: as M0 while the optional-stop switch is on (LinuxCNC)
+    ToolChange,     // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
+    End,            // M2, M30
+    SpindleOn,      // M3 S<rpm>
+    SpindleReverse, // M4 S<rpm>: counter-clockwise, only where the controller can reverse
+    SpindleOff,     // M5
+    CoolantMist,    // M7
+    CoolantFlood,   // M8
+    CoolantOff,     // M9
+    OutputOn,       // M64 P<n>
+    OutputOff,      // M65 P<n>
+    WaitInput,      // M66 P<n> L3|L4 Q<seconds>
+    RepeatStart,    // O<n> repeat [count]
+    RepeatEnd,      // O<n> endrepeat
 };
 
 // LinuxCNC's plane selection (modal group 2): the plane arcs lie in.
@@ -39,6 +41,13 @@ enum class PathMode : quint8 { ExactPath, ExactStop, Blend };
 inline bool waitsForOperator(BlockKind kind)
 {
     return kind == BlockKind::Pause || kind == BlockKind::ToolChange;
+}
+
+// Whether a run holds at a block of `kind`: M0 and M6 always, M1 while the optional-stop
+// switch is on (ProgramRunner::setOptionalStops).
+inline bool waitsForOperator(BlockKind kind, bool optionalStops)
+{
+    return waitsForOperator(kind) || (optionalStops && kind == BlockKind::OptionalPause);
 }
 
 // The word that makes a block, for messages and previews ("G0", "M64", "O repeat").
@@ -61,8 +70,8 @@ struct ProgramBlock
     double seconds = 0;                  // G4 P, M66 Q
     int number = 0;                      // M64/M65/M66 P: output or input number; M6: the tool (T)
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
-    double rpm = 0;                      // M3 S
-    QString prompt;                      // M0: the comment on its line
+    double rpm = 0;                      // M3 / M4 S
+    QString prompt;                      // M0, M1: the comment on its line
     QString message;  // "(MSG, text)": shown to the operator when the run reaches the line
     int oNumber = 0;  // O<n>
     qint64 count = 0; // O repeat: how many times

@@ -31,6 +31,8 @@ std::optional<BlockKind> actionOfM(int code)
     switch (code) {
     case 0:
         return BlockKind::Pause;
+    case 1:
+        return BlockKind::OptionalPause;
     case 6:
         return BlockKind::ToolChange;
     case 2:
@@ -38,6 +40,8 @@ std::optional<BlockKind> actionOfM(int code)
         return BlockKind::End;
     case 3:
         return BlockKind::SpindleOn;
+    case 4:
+        return BlockKind::SpindleReverse;
     case 5:
         return BlockKind::SpindleOff;
     case 7:
@@ -404,7 +408,7 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         return fail(column, why);
     carryModal(next, &b);
     b.message = line.message;
-    if (b.kind == BlockKind::Pause)
+    if (b.kind == BlockKind::Pause || b.kind == BlockKind::OptionalPause)
         b.prompt = line.comment;
     if (b.kind == BlockKind::ToolChange) {
         // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by

@@ -252,8 +252,9 @@ void ProgramRunner::blockDone()
         finishProgram();
         return;
     }
-    if (waitsForOperator(block.kind) || m_pauseAsked || m_stepOnly) {
-        m_prompt = waitsForOperator(block.kind) ? block.prompt : QString();
+    const bool operatorStop = waitsForOperator(block.kind, m_optionalStops);
+    if (operatorStop || m_pauseAsked || m_stepOnly) {
+        m_prompt = operatorStop ? block.prompt : QString();
         m_pauseAsked = false;
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);
