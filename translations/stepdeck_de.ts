@@ -2952,6 +2952,18 @@
             <source>%1 holds no parameter</source>
             <translation>%1 enthält keinen Parameter</translation>
         </message>
+        <message>
+            <source>must be an object {"maxRpm": 24000}</source>
+            <translation>muss ein Objekt {"maxRpm": 24000} sein</translation>
+        </message>
+        <message>
+            <source>must be a speed greater than 0 in rpm (is %1)</source>
+            <translation>muss eine Drehzahl größer als 0 in U/min sein (ist %1)</translation>
+        </message>
+        <message>
+            <source>no controller of this machine switches a spindle: leave "spindle" out</source>
+            <translation>keine Steuerung dieser Maschine schaltet eine Spindel: "spindle" weglassen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineSetup</name>
@@ -4036,6 +4048,14 @@
         <message>
             <source>its setup is incomplete, so it refuses every move: write %1 on the Setup page first</source>
             <translation>ihr Setup ist unvollständig, daher lehnt sie jede Fahrt ab: zuerst %1 auf der Seite Setup schreiben</translation>
+        </message>
+        <message>
+            <source>S%1 is above the spindle's maxRpm %2 (the machine file's spindle scale)</source>
+            <translation>S%1 liegt über maxRpm %2 der Spindel (Spindelskala der Maschinendatei)</translation>
+        </message>
+        <message>
+            <source>controller "%1" cannot reverse its spindle: use M3</source>
+            <translation>Steuerung "%1" kann die Drehrichtung ihrer Spindel nicht umkehren: M3 verwenden</translation>
         </message>
     </context>
     <context>
@@ -5829,6 +5849,18 @@ W1500</translation>
             <source>The machine "%1" has unsaved changes. Save them?</source>
             <translation>Die Maschine "%1" hat ungespeicherte Änderungen. Speichern?</translation>
         </message>
+        <message>
+            <source>none</source>
+            <translation>keine</translation>
+        </message>
+        <message>
+            <source>The spindle speed in rpm that the controller's full spindle range stands for: a program's S is then in rpm (S12000 of 24000 is half the range). Empty: S is sent in the controller's own units.</source>
+            <translation>Die Spindeldrehzahl in U/min, für die der volle Spindelbereich der Steuerung steht: S eines Programms ist dann in U/min (S12000 von 24000 ist der halbe Bereich). Leer: S wird in den eigenen Einheiten der Steuerung gesendet.</translation>
+        </message>
+        <message>
+            <source>Spindle max rpm</source>
+            <translation>Spindel max. U/min</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineFileActions</name>
@@ -6367,6 +6399,14 @@ W1500</translation>
         <message>
             <source>not running</source>
             <translation>läuft nicht</translation>
+        </message>
+        <message>
+            <source>Optional stops (M1)</source>
+            <translation>Optionaler Halt (M1)</translation>
+        </message>
+        <message>
+            <source>On: the program holds at M1 like at M0 (LinuxCNC's optional stop). Off: it runs past every M1. Counts when the run reaches the M1.</source>
+            <translation>Ein: das Programm hält bei M1 wie bei M0 (optionaler Halt wie in LinuxCNC). Aus: es läuft an jedem M1 vorbei. Gilt, wenn der Lauf das M1 erreicht.</translation>
         </message>
     </context>
     <context>

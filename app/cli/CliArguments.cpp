@@ -399,12 +399,14 @@ QString programHelp()
     return CliText::tr(
         "Motion programs (docs/programs.md), on a machine file or --model/--port:\n"
         "  run PROGRAM [--dry-run] [--from-line N] [--skip-pauses]\n"
+        "      [--optional-stops on|off]\n"
         "                              checks the whole program first (exit 7 with every\n"
         "                              FILE:LINE:COL error, nothing sent), then runs it\n"
         "                              block by block: a line per block on stderr (--json:\n"
         "                              an event per block on stdout); exit 3/4/5/6 at the\n"
         "                              failing line, 130 on Ctrl-C; M0 waits for Enter\n"
         "                              (without a terminal: exit 2 unless --skip-pauses);\n"
+        "                              M1 too while --optional-stops is on (the default)\n"
         "                              --dry-run prints lines, extents and the estimated\n"
         "                              duration and moves nothing\n"
         "\n");

@@ -32,16 +32,24 @@ struct RunRequest
     int fromLine = 1;
     bool dryRun = false;
     bool skipPauses = false;
+    bool optionalStops = true; // M1 holds like M0 (ProgramRunner::setOptionalStops)
 };
 
 Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
 {
     if (o.args.size() != 1)
         return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
-                                          "[--from-line N] [--skip-pauses])"));
+                                          "[--from-line N] [--skip-pauses] "
+                                          "[--optional-stops on|off])"));
     r->path = o.args.constFirst();
     r->dryRun = o.flag("dry-run");
     r->skipPauses = o.flag("skip-pauses");
+    if (const std::optional<QString> stops = o.value("optional-stops")) {
+        if (*stops != QLatin1String("on") && *stops != QLatin1String("off"))
+            return Outcome::usage(
+                CliText::tr("run --optional-stops takes on or off, got '%1'").arg(*stops));
+        r->optionalStops = *stops == QLatin1String("on");
+    }
     if (const std::optional<QString> from = o.value("from-line");
         from && numbers::parseInt(*from, 1, std::numeric_limits<int>::max(), &r->fromLine) !=
                     NumberError::None)
@@ -80,19 +88,27 @@ Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, P
     return Outcome::success();
 }
 
-// M0 waits for Enter on a terminal; without one it would wait forever or read a script's
-// input as the operator's, so such a run is refused before anything is opened.
+// M0 (M6, and M1 with optional stops on) waits for Enter on a terminal; without one it would wait
+// forever or read a script's input as the operator's, so such a run is refused before anything is
+// opened.
 Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
 {
     if (r.dryRun || r.skipPauses || ::isatty(STDIN_FILENO))
         return Outcome::success();
     for (const program::ProgramBlock& b : p.blocks) {
-        if (program::waitsForOperator(b.kind) && b.line >= r.fromLine)
-            return Outcome::usage(CliText::tr("run: line %1 holds %2, which waits for Enter on a "
-                                              "terminal, and stdin is not one (--skip-pauses "
-                                              "runs on without stopping there)")
-                                      .arg(b.line)
-                                      .arg(program::blockWord(b.kind)));
+        if (!program::waitsForOperator(b.kind, r.optionalStops) || b.line < r.fromLine)
+            continue;
+        if (b.kind == program::BlockKind::OptionalPause)
+            return Outcome::usage(CliText::tr("run: line %1 holds M1, which waits for Enter on a "
+                                              "terminal with optional stops on, and stdin is not "
+                                              "one (--optional-stops off passes it, --skip-pauses "
+                                              "runs on without stopping)")
+                                      .arg(b.line));
+        return Outcome::usage(CliText::tr("run: line %1 holds %2, which waits for Enter on a "
+                                          "terminal, and stdin is not one (--skip-pauses "
+                                          "runs on without stopping there)")
+                                  .arg(b.line)
+                                  .arg(program::blockWord(b.kind)));
     }
     return Outcome::success();
 }
@@ -211,6 +227,7 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
 {
     ProgramRunner runner(&m.machine());
     ProgramReport report(runner, p.lines, json);
+    runner.setOptionalStops(r.optionalStops);
     PauseAnswer pauses(runner, m, r.skipPauses, json);
     CliEventWait settle; // after an interrupt, when the session's own waits return at once
     QObject guard;

@@ -187,11 +187,14 @@ QJsonObject MachineDescription::toJson() const
     QJsonArray axisList;
     for (const MachineAxis& a : axes)
         axisList.append(axisJson(a));
-    return {{"format", "stepdeck-machine"},
-            {"version", 1},
-            {"name", name},
-            {"controllers", controllerList},
-            {"axes", axisList}};
+    QJsonObject o{{"format", "stepdeck-machine"},
+                  {"version", 1},
+                  {"name", name},
+                  {"controllers", controllerList},
+                  {"axes", axisList}};
+    if (spindle.maxRpm) // optional: a machine without it writes the file older readers read
+        o.insert("spindle", QJsonObject{{"maxRpm", *spindle.maxRpm}});
+    return o;
 }
 
 bool operator==(const MachineController& a, const MachineController& b)
@@ -210,9 +213,15 @@ bool operator==(const MachineAxis& a, const MachineAxis& b)
            a.referenceDirection == b.referenceDirection && a.referenceOrder == b.referenceOrder;
 }
 
+bool operator==(const MachineSpindle& a, const MachineSpindle& b)
+{
+    return a.maxRpm == b.maxRpm;
+}
+
 bool operator==(const MachineDescription& a, const MachineDescription& b)
 {
-    return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes;
+    return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes &&
+           a.spindle == b.spindle;
 }
 
 } // namespace stepdeck::machine

@@ -71,6 +71,15 @@ struct MachineAxis
     std::optional<double> effectiveJogAcceleration(double controllerCeilingStepsPerS) const;
 };
 
+// The machine's spindle (docs/machines.md, "spindle"; issue 29). maxRpm: the speed the
+// controller's full spindle-speed range stands for, as GRBL's $30 does: a program's S in rpm
+// is mapped linearly onto that range (program::ProgramRules::spindleValue), and an S above it
+// is a check error. Without it, S is sent as written, in the controller's own units.
+struct MachineSpindle
+{
+    std::optional<double> maxRpm; // > 0, finite
+};
+
 // A machine: a name, its controllers and its named axes (docs/machines.md). Built by
 // MachineFile from a "stepdeck-machine" file, or by singleController() for --model/--port,
 // so the rest of StepDeck has one code path for both.
@@ -79,6 +88,7 @@ struct MachineDescription
     QString name;
     QList<MachineController> controllers;
     QList<MachineAxis> axes;
+    MachineSpindle spindle;
 
     const MachineController* controller(const QString& id) const;
     const MachineAxis* axis(const QString& name) const;
@@ -99,6 +109,7 @@ struct MachineDescription
 
 bool operator==(const MachineController& a, const MachineController& b);
 bool operator==(const MachineAxis& a, const MachineAxis& b);
+bool operator==(const MachineSpindle& a, const MachineSpindle& b);
 bool operator==(const MachineDescription& a, const MachineDescription& b);
 
 } // namespace stepdeck::machine

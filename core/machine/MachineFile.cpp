@@ -40,6 +40,7 @@ private:
     bool readAxisValues(const QJsonObject& o, const QString& path, MachineAxis* a);
     bool readReference(const QJsonValue& v, const QString& path, MachineAxis* a);
     bool readSoftLimits(const QJsonValue& v, const QString& path, MachineAxis* a);
+    bool readSpindle(const QJsonValue& v, MachineSpindle* s);
 
     MachineFileError* m_error;
 };
@@ -95,7 +96,7 @@ bool Reader::number(const QJsonObject& o, const QString& path, const char* key,
 
 bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
-    if (!onlyKeys(top, {}, {"format", "version", "name", "controllers", "axes"}))
+    if (!onlyKeys(top, {}, {"format", "version", "name", "controllers", "axes", "spindle"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
@@ -123,7 +124,15 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
             return false;
         d->axes << a;
     }
-    return true;
+    return !top.contains("spindle") || readSpindle(top.value("spindle"), &d->spindle);
+}
+
+bool Reader::readSpindle(const QJsonValue& v, MachineSpindle* s)
+{
+    if (!v.isObject())
+        return fail("spindle", MachineFile::tr("must be an object {\"maxRpm\": 24000}"));
+    const QJsonObject o = v.toObject();
+    return onlyKeys(o, "spindle", {"maxRpm"}) && number(o, "spindle", "maxRpm", &s->maxRpm);
 }
 
 bool Reader::readController(const QJsonValue& v, const QString& path, MachineController* c)

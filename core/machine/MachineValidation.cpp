@@ -24,6 +24,7 @@ public:
 
     bool controllers(const MachineDescription& d);
     bool axes(const MachineDescription& d);
+    bool spindle(const MachineDescription& d);
 
 private:
     bool fail(const QString& field, const QString& message)
@@ -208,6 +209,24 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
     return true;
 }
 
+// maxRpm maps S onto the range of the controller that switches the spindle: a machine needs
+// one, and the scale must be a speed (docs/machines.md, "spindle").
+bool Checker::spindle(const MachineDescription& d)
+{
+    const std::optional<double>& maxRpm = d.spindle.maxRpm;
+    if (!maxRpm)
+        return true;
+    if (!std::isfinite(*maxRpm) || *maxRpm <= 0)
+        return fail(QStringLiteral("spindle.maxRpm"),
+                    MachineFile::tr("must be a speed greater than 0 in rpm (is %1)").arg(*maxRpm));
+    for (const MachineController& c : d.controllers)
+        if (const ModelInfo* model = findModel(c.modelId); model && model->capabilities.spindle)
+            return true;
+    return fail(QStringLiteral("spindle.maxRpm"),
+                MachineFile::tr("no controller of this machine switches a spindle: leave "
+                                "\"spindle\" out"));
+}
+
 } // namespace
 
 bool MachineFile::validate(const MachineDescription& machine, MachineFileError* error)
@@ -216,7 +235,7 @@ bool MachineFile::validate(const MachineDescription& machine, MachineFileError* 
         return MachineFileError::report(error, QStringLiteral("name"),
                                         tr("the machine needs a name"));
     Checker check(error);
-    return check.controllers(machine) && check.axes(machine);
+    return check.controllers(machine) && check.axes(machine) && check.spindle(machine);
 }
 
 } // namespace stepdeck::machine

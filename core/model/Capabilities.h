@@ -20,6 +20,11 @@ struct Capabilities
     QList<Axis> axes;
     QList<MotionMode> motionModes;
     bool spindle = false;
+    // The spindle can turn both ways (M4, issue 29). No model can today: the E-LAB board only
+    // switches relay RS1 on and off (manual, SetSpindleRPM: "kann keine Spindel Drehzahl
+    // direkt einstellen, sondern diese nur über das Relais RS1 ein oder ausschalten"), and
+    // the other models have no spindle.
+    bool spindleReverse = false;
     bool coolant = false;
     bool drivePower = false;
     bool temperature = false;

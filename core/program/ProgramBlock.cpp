@@ -21,12 +21,16 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("G4");
     case BlockKind::Pause:
         return QStringLiteral("M0");
+    case BlockKind::OptionalPause:
+        return QStringLiteral("M1");
     case BlockKind::ToolChange:
         return QStringLiteral("M6");
     case BlockKind::End:
         return QStringLiteral("M2");
     case BlockKind::SpindleOn:
         return QStringLiteral("M3");
+    case BlockKind::SpindleReverse:
+        return QStringLiteral("M4");
     case BlockKind::SpindleOff:
         return QStringLiteral("M5");
     case BlockKind::CoolantMist:

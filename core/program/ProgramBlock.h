@@ -18,19 +18,21 @@ enum class BlockKind : quint8 {
     Home,                // G28: reference run of the named axes (none named: all, machine order)
     Dwell,               // G4 P<seconds>
     Pause,               // M0: until the operator resumes; prompt = the line's comment
-    ToolChange,      // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
-    End,             // M2, M30
-    SpindleOn,       // M3 S<rpm>
-    SpindleOff,      // M5
-    CoolantMist,     // M7
-    CoolantFlood,    // M8
-    CoolantOff,      // M9
-    OutputOn,        // M64 P<n>
-    OutputOff,       // M65 P<n>
-    WaitInput,       // M66 P<n> L3|L4 Q<seconds>
-    SetCoordinates,  // G10 L2 / L20 P<n>: a coordinate system's offsets (ProgramCoordinates)
-    AxisOffset,      // G92: the current point gets the axis words' values
-    AxisOffsetReset, // G92.1: G92's offset zero
+    OptionalPause,       // M1: as M0 while the optional-stop switch is on (LinuxCNC)
+    ToolChange,     // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
+    End,            // M2, M30
+    SpindleOn,      // M3 S<rpm>
+    SpindleReverse, // M4 S<rpm>: counter-clockwise, only where the controller can reverse
+    SpindleOff,     // M5
+    CoolantMist,    // M7
+    CoolantFlood,   // M8
+    CoolantOff,     // M9
+    OutputOn,       // M64 P<n>
+    OutputOff,      // M65 P<n>
+    WaitInput,      // M66 P<n> L3|L4 Q<seconds>
+    SetCoordinates, // G10 L2 / L20 P<n>: a coordinate system's offsets (ProgramCoordinates)
+    AxisOffset,     // G92: the current point gets the axis words' values
+    AxisOffsetReset,   // G92.1: G92's offset zero
     AxisOffsetSuspend, // G92.2: G92's offset kept but not applied
     AxisOffsetRestore, // G92.3: applied again
     RepeatStart,       // O<n> repeat [count]
@@ -70,6 +72,13 @@ inline bool waitsForOperator(BlockKind kind)
     return kind == BlockKind::Pause || kind == BlockKind::ToolChange;
 }
 
+// Whether a run holds at a block of `kind`: M0 and M6 always, M1 while the optional-stop
+// switch is on (ProgramRunner::setOptionalStops).
+inline bool waitsForOperator(BlockKind kind, bool optionalStops)
+{
+    return waitsForOperator(kind) || (optionalStops && kind == BlockKind::OptionalPause);
+}
+
 // The word that makes a block, for messages and previews ("G0", "M64", "O repeat").
 QString blockWord(BlockKind kind);
 
@@ -90,8 +99,8 @@ struct ProgramBlock
     double seconds = 0;                  // G4 P, M66 Q
     int number = 0;                      // M64/M65/M66 P: output or input number; M6: the tool (T)
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
-    double rpm = 0;                      // M3 S
-    QString prompt;                      // M0: the comment on its line
+    double rpm = 0;                      // M3 / M4 S
+    QString prompt;                      // M0, M1: the comment on its line
     ArcWords arc;                        // G2/G3
     // G54..G59 in effect (0 = G54); -1: none selected yet, the system active when the run
     // started (LinuxCNC keeps the active system across programs).

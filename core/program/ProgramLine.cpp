@@ -39,6 +39,8 @@ std::optional<BlockKind> actionOfM(int code)
     switch (code) {
     case 0:
         return BlockKind::Pause;
+    case 1:
+        return BlockKind::OptionalPause;
     case 6:
         return BlockKind::ToolChange;
     case 2:
@@ -46,6 +48,8 @@ std::optional<BlockKind> actionOfM(int code)
         return BlockKind::End;
     case 3:
         return BlockKind::SpindleOn;
+    case 4:
+        return BlockKind::SpindleReverse;
     case 5:
         return BlockKind::SpindleOff;
     case 7:
@@ -513,7 +517,7 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     carryModal(next, &b);
     b.message = line.message;
     b.appliesLengthOffset = sorted.lengthOffset == true;
-    if (b.kind == BlockKind::Pause)
+    if (b.kind == BlockKind::Pause || b.kind == BlockKind::OptionalPause)
         b.prompt = line.comment;
     if (b.kind == BlockKind::ToolChange) {
         // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by

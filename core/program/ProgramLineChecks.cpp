@@ -12,6 +12,7 @@ QString allowedParameters(BlockKind kind)
     case BlockKind::Dwell:
         return QStringLiteral("FP");
     case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
         return QStringLiteral("FS");
     case BlockKind::OutputOn:
     case BlockKind::OutputOff:
@@ -84,6 +85,7 @@ public:
         case BlockKind::Dwell:
             return number('P', 0, 1e6, false, &m_block->seconds);
         case BlockKind::SpindleOn:
+        case BlockKind::SpindleReverse:
             return number('S', 0, 1e6, false, &m_block->rpm);
         case BlockKind::OutputOn:
         case BlockKind::OutputOff:

@@ -62,6 +62,7 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
         checkSetup(block, out);
         break;
     case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
         checkAnyController(block, &Capabilities::spindle);
         checkSpindleSpeed(block);
         break;

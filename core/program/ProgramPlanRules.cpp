@@ -94,14 +94,23 @@ void ProgramPlan::checkSetup(const ProgramBlock& block, const PlannedBlock& plan
     }
 }
 
-// M3 S within the range the spindle's controller takes (the run asks the same rule).
+// M3 S (and M4 S) within the machine's spindle scale and the range the spindle's controller
+// takes (the run asks the same rules); M4 only where that controller can reverse.
 void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
 {
     const QString controller = machineSwitchController(m_facts, &Capabilities::spindle);
     if (controller.isEmpty())
         return; // checkAnyController named it
-    const QString why = ProgramRules::spindleSpeed(m_facts.capabilities.value(controller),
-                                                   m_facts.schemas.value(controller), block.rpm);
+    const Capabilities caps = m_facts.capabilities.value(controller);
+    if (block.kind == BlockKind::SpindleReverse) {
+        if (const QString why = ProgramRules::spindleReverse(caps, controller); !why.isEmpty()) {
+            error(block, block.columnOf({}),
+                  [&] { return QStringLiteral("%1: %2").arg(blockWord(block.kind), why); });
+            return;
+        }
+    }
+    const QString why = ProgramRules::spindleSpeed(caps, m_facts.schemas.value(controller),
+                                                   m_facts.description.spindle.maxRpm, block.rpm);
     if (!why.isEmpty())
         error(block, block.columnOf(QStringLiteral("S")),
               [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });

@@ -34,12 +34,21 @@ public:
                                   const ParameterRules& modelRules, const ParameterSet& set,
                                   const ParameterSet& known);
 
-    // M3 S as the whole number of rpm the controller is sent.
-    static int wholeRpm(double s) { return qRound(s); }
-    // M3 S: the speed (wholeRpm) within the schema range of the controller's spindle-speed
-    // parameter (Capabilities::spindleSpeedParameter). Empty: the controller takes it.
+    // M3 S as the value the spindle's controller is sent (docs/programs.md "Spindle speed",
+    // issue 29). With the machine's spindle scale (MachineSpindle::maxRpm) S in rpm maps
+    // linearly onto 0..the maximum of the controller's spindle-speed parameter
+    // (Capabilities::spindleSpeedParameter), S / maxRpm x full scale as GRBL's $30 does; an S
+    // above 0 maps to at least 1, since 0 switches the spindle off. Without a scale (or without
+    // such a parameter) S is sent as written, as a whole number.
+    static int spindleValue(const Capabilities& caps, const ParameterSchema& schema,
+                            std::optional<double> maxRpm, double s);
+    // Why M3 S would be refused: S above maxRpm, or spindleValue outside the schema range of
+    // the spindle-speed parameter. Empty: the controller takes it.
     static QString spindleSpeed(const Capabilities& caps, const ParameterSchema& schema,
-                                double rpm);
+                                std::optional<double> maxRpm, double s);
+    // M4: why `controller` cannot turn its spindle in reverse (Capabilities::spindleReverse).
+    // Empty: it can.
+    static QString spindleReverse(const Capabilities& caps, const QString& controller);
 
     // A move on a controller that reports its setup incomplete (MachineStatus::setupIncomplete,
     // E-LAB tmInvSetup) is refused by the device: the parameters to write first

@@ -276,8 +276,9 @@ void ProgramRunner::blockDone()
         finishProgram();
         return;
     }
-    if (waitsForOperator(block.kind) || m_pauseAsked || m_stepOnly) {
-        m_prompt = waitsForOperator(block.kind) ? promptOf(block) : QString();
+    const bool operatorStop = waitsForOperator(block.kind, m_optionalStops);
+    if (operatorStop || m_pauseAsked || m_stepOnly) {
+        m_prompt = operatorStop ? promptOf(block) : QString();
         m_pauseAsked = false;
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);

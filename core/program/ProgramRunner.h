@@ -9,6 +9,9 @@
 #include <functional>
 #include <memory>
 
+namespace stepdeck {
+class ControllerSession;
+}
 namespace stepdeck::machine {
 class Machine;
 }
@@ -75,6 +78,11 @@ public:
     {
         return m_coordinates.systems()[size_t(m_coordinates.activeAtStart())];
     }
+    // LinuxCNC's optional-stop switch: on, M1 holds like M0; off, the run passes it. On by
+    // default (as in LinuxCNC's AXIS): a forgotten stop is safer than a missed one. May change
+    // while a program runs; it counts when the run reaches an M1.
+    void setOptionalStops(bool on) { m_optionalStops = on; }
+    bool optionalStops() const { return m_optionalStops; }
 
     void pause();  // finish the current block, then hold (pausePending() until then)
     void resume(); // from Paused: on with the next block
@@ -85,7 +93,7 @@ public:
     int currentLine() const; // the block running or about to run (0: none)
     qint64 blocksDone() const { return m_blocksDone; }
     bool pausePending() const { return m_pauseAsked && m_state == RunState::Running; }
-    QString prompt() const { return m_prompt; } // M0's prompt while Paused at it
+    QString prompt() const { return m_prompt; } // M0's (M1's) prompt while Paused at it
     // Why the program ended Failed or Aborted ("line 12: ..."), and the kind of the fault:
     // the failed request's ErrorKind (Refused also for a block the machine's rules refused
     // before sending, LinkDown for a lost link, Timeout for M66's Q); None when a move ended
@@ -98,7 +106,7 @@ Q_SIGNALS:
     void stateChanged(stepdeck::program::RunState state);
     void blockStarted(int line, const QString& text);
     void blockFinished(int line);
-    // Paused at M0 (prompt: its comment), after pause() or a step (prompt empty).
+    // Paused at M0 or M1 (prompt: its comment), M6, after pause() or a step (prompt empty).
     void paused(int line, const QString& prompt);
     // abort() while motion on a controller without a stop command runs out (message says so).
     void stopping(const QString& message);
@@ -141,6 +149,8 @@ private:
     void startWaitInput(const ProgramBlock& block);
     void checkInput();
     void startSwitch(const ProgramBlock& block);
+    QString spindleRefusal(const ProgramBlock& block, const QString& controller,
+                           const ControllerSession& s, const MachineFacts& facts) const;
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
     void onMotionFinished(quint64 id, bool ok, const QString& message);
@@ -160,6 +170,7 @@ private:
     qint64 m_blocksDone = 0;
     bool m_pauseAsked = false;
     bool m_stepOnly = false;
+    bool m_optionalStops = true;
     bool m_aborting = false;
     QString m_prompt;
     QString m_endMessage;

@@ -40,9 +40,10 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
         startWaitInput(block);
         return;
     case BlockKind::Pause:
+    case BlockKind::OptionalPause:
     case BlockKind::ToolChange:
     case BlockKind::End:
-        blockDone(); // pauses at M0 and M6, finishes at M2/M30
+        blockDone(); // pauses at M0, M6 (and M1 with optional stops), finishes at M2/M30
         return;
     default:
         startSwitch(block);
@@ -153,6 +154,21 @@ QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) cons
     return targets;
 }
 
+// Why the spindle's controller (session s) would refuse M3 S / M4 S: the check's rules.
+QString ProgramRunner::spindleRefusal(const ProgramBlock& block, const QString& controller,
+                                      const ControllerSession& s, const MachineFacts& facts) const
+{
+    if (block.kind == BlockKind::SpindleOff)
+        return {};
+    if (block.kind == BlockKind::SpindleReverse) {
+        if (const QString why = ProgramRules::spindleReverse(s.capabilities(), controller);
+            !why.isEmpty())
+            return why;
+    }
+    return ProgramRules::spindleSpeed(s.capabilities(), s.schema(),
+                                      facts.description.spindle.maxRpm, block.rpm);
+}
+
 // Spindle, coolant and outputs: one request, done when the controller acknowledged it.
 void ProgramRunner::startSwitch(const ProgramBlock& block)
 {
@@ -165,17 +181,23 @@ void ProgramRunner::startSwitch(const ProgramBlock& block)
     RequestId id = 0;
     switch (block.kind) {
     case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
     case BlockKind::SpindleOff:
         if ((s = first(&Capabilities::spindle))) {
-            const int rpm =
-                block.kind == BlockKind::SpindleOn ? ProgramRules::wholeRpm(block.rpm) : 0;
-            // The check's rule, asked again: refused here, nothing is sent.
-            if (const QString why = ProgramRules::spindleSpeed(s->capabilities(), s->schema(), rpm);
-                !why.isEmpty()) {
-                fail(ErrorKind::InvalidValue, why);
+            // The check's rules, asked again: refused here, nothing is sent.
+            const QString why = spindleRefusal(
+                block, machineSwitchController(facts, &Capabilities::spindle), *s, facts);
+            if (!why.isEmpty()) {
+                fail(block.kind == BlockKind::SpindleReverse ? ErrorKind::Unsupported
+                                                             : ErrorKind::InvalidValue,
+                     why);
                 return;
             }
-            id = s->setSpindle(rpm);
+            id = s->setSpindle(block.kind == BlockKind::SpindleOff
+                                   ? 0
+                                   : ProgramRules::spindleValue(s->capabilities(), s->schema(),
+                                                                facts.description.spindle.maxRpm,
+                                                                block.rpm));
         }
         break;
     case BlockKind::CoolantMist:

@@ -1,12 +1,14 @@
 #include "MachineEditor.h"
 #include "AxesTable.h"
 #include "ControllersTable.h"
+#include "EditorTable.h"
 #include "common/ElidedLabel.h"
 #include "protocols/Registry.h"
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QVBoxLayout>
@@ -63,6 +65,13 @@ void MachineEditor::build()
     setWindowModality(Qt::NonModal); // STOP and PANIC stay reachable (ui/common/Dialogs.h)
     m_name = new QLineEdit(this);
     m_name->setObjectName(QStringLiteral("machineName"));
+    m_maxRpm = new QLineEdit(this);
+    m_maxRpm->setObjectName(QStringLiteral("machineMaxRpm"));
+    m_maxRpm->setPlaceholderText(tr("none"));
+    m_maxRpm->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 12);
+    m_maxRpm->setToolTip(tr("The spindle speed in rpm that the controller's full spindle range "
+                            "stands for: a program's S is then in rpm (S12000 of 24000 is half "
+                            "the range). Empty: S is sent in the controller's own units."));
     m_controllers = new ControllersTable(this);
     m_axes = new AxesTable(this);
     m_message = new ElidedLabel(this, 1);
@@ -79,8 +88,15 @@ void MachineEditor::build()
     connect(addAxis, &QPushButton::clicked, m_axes, &AxesTable::addAxis);
     connect(removeAxis, &QPushButton::clicked, m_axes, &AxesTable::removeCurrentAxis);
 
+    // The spindle scale beside the name: one row, the tables keep the height.
+    auto* nameRow = new QHBoxLayout;
+    nameRow->addWidget(m_name, 1);
+    auto* maxRpmLabel = new QLabel(tr("Spindle max rpm"), this);
+    maxRpmLabel->setBuddy(m_maxRpm);
+    nameRow->addWidget(maxRpmLabel);
+    nameRow->addWidget(m_maxRpm);
     auto* form = new QFormLayout;
-    form->addRow(tr("Machine name"), m_name);
+    form->addRow(tr("Machine name"), nameRow);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addLayout(titleRow(tr("Controllers"), {addController, removeController}));
@@ -91,6 +107,7 @@ void MachineEditor::build()
     layout->addWidget(buildButtons());
 
     connect(m_name, &QLineEdit::textEdited, this, &MachineEditor::revalidate);
+    connect(m_maxRpm, &QLineEdit::textEdited, this, &MachineEditor::revalidate);
     connect(m_controllers, &EditorTable::edited, this, [this] {
         m_axes->setControllerAxes(m_controllers->controllerAxes());
         revalidate();
@@ -128,6 +145,9 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
 {
     m_path = path;
     m_name->setText(machine.name);
+    m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
+                                                               QLocale::FloatingPointShortest)
+                                             : QString());
     m_axes->setAxes({}); // first: the new controllers' ids go to no old row
     m_controllers->setControllers(machine.controllers);
     m_axes->setAxes(machine.axes);
@@ -156,6 +176,8 @@ bool MachineEditor::readMachine(MachineDescription* out, MachineFileError* error
 {
     out->name = m_name->text().trimmed();
     return m_controllers->read(&out->controllers, error) && m_axes->read(&out->axes, error) &&
+           readDecimal(m_maxRpm, QStringLiteral("spindle.maxRpm"), true, &out->spindle.maxRpm,
+                       error) &&
            MachineFile::validate(*out, error);
 }
 
@@ -190,6 +212,8 @@ QList<QWidget*> MachineEditor::cellsOf(const QString& field) const
     const QRegularExpressionMatch m = row.match(field);
     if (field == QLatin1String("name"))
         return {m_name};
+    if (field.startsWith(QLatin1String("spindle")))
+        return {m_maxRpm};
     if (field == QLatin1String("controllers"))
         return {m_controllers};
     if (field == QLatin1String("axes"))

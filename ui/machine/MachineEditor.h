@@ -14,8 +14,8 @@ class ControllersTable;
 class ElidedLabel;
 
 // The machine editor (issue 19): a window of its own, never modal, that edits a
-// MachineDescription -- its name, the controllers table and the axes table. Every edit is
-// validated as typed with MachineFile::validate (the CLI's validator): the first error is
+// MachineDescription -- its name and spindle scale, the controllers table and the axes table. Every
+// edit is validated as typed with MachineFile::validate (the CLI's validator): the first error is
 // shown in a one-line message that never re-flows the layout, and its field's cell is marked.
 // Save refuses an invalid machine; closing with unsaved changes asks first.
 class MachineEditor : public QWidget
@@ -57,6 +57,7 @@ public:
     QList<QWidget*> cellsOf(const QString& field) const;
 
     QLineEdit* nameEdit() const { return m_name; }
+    QLineEdit* maxRpmEdit() const { return m_maxRpm; } // spindle.maxRpm; empty: none
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }
@@ -85,6 +86,7 @@ private:
     void afterUnsavedChanges(std::function<void()> next);
 
     QLineEdit* m_name = nullptr;
+    QLineEdit* m_maxRpm = nullptr;
     ControllersTable* m_controllers = nullptr;
     AxesTable* m_axes = nullptr;
     ElidedLabel* m_message = nullptr;

@@ -1,20 +1,27 @@
 #include "ProgramControls.h"
 #include "ProgramTimes.h"
 #include "common/ElidedLabel.h"
+#include <QCheckBox>
 #include <QHBoxLayout>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 
 namespace stepdeck::ui {
 
 using program::RunState;
 
+namespace {
+const QString kOptionalStopsKey = QStringLiteral("programs/optionalStops");
+}
+
 ProgramControls::ProgramControls(QWidget* parent)
     : QWidget(parent), m_run(new QPushButton(tr("Run"), this)),
       m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Resume"), this)),
       m_step(new QPushButton(tr("Step"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
       m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
+      m_optionalStops(new QCheckBox(tr("Optional stops (M1)"), this)),
       m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("programControls"));
@@ -25,6 +32,7 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_abort->setObjectName(QStringLiteral("programAbort"));
     m_runFrom->setObjectName(QStringLiteral("programRunFrom"));
     m_fromLine->setObjectName(QStringLiteral("programFromLine"));
+    m_optionalStops->setObjectName(QStringLiteral("programOptionalStops"));
     m_progress->setObjectName(QStringLiteral("programProgress"));
     m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
     // No mnemonics on what starts motion: a stray Alt+key must not start a program.
@@ -35,6 +43,11 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_abort->setToolTip(tr("Stop every controller; the program ends as aborted"));
     m_runFrom->setToolTip(tr("Run from the first block on or after this line, starting where "
                              "the axes stand now"));
+    m_optionalStops->setToolTip(
+        tr("On: the program holds at M1 like at M0 (LinuxCNC's optional stop). Off: it runs "
+           "past every M1. Counts when the run reaches the M1."));
+    // On unless the operator switched it off: a forgotten stop is safer than a missed one.
+    m_optionalStops->setChecked(QSettings().value(kOptionalStopsKey, true).toBool());
     m_fromLine->setRange(1, 1);
     m_fromLine->setPrefix(tr("line "));
     m_progress->setRange(0, 1);
@@ -52,6 +65,8 @@ ProgramControls::ProgramControls(QWidget* parent)
     row->addWidget(m_fromLine);
     row->addWidget(m_runFrom);
     row->addSpacing(8);
+    row->addWidget(m_optionalStops);
+    row->addSpacing(8);
     row->addWidget(m_progress, 1);
     row->addWidget(m_timeLeft);
 
@@ -62,8 +77,17 @@ ProgramControls::ProgramControls(QWidget* parent)
     connect(m_abort, &QPushButton::clicked, this, &ProgramControls::abortRequested);
     connect(m_runFrom, &QPushButton::clicked, this,
             [this] { Q_EMIT runFromLineRequested(m_fromLine->value()); });
+    connect(m_optionalStops, &QCheckBox::toggled, this, [this](bool on) {
+        QSettings().setValue(kOptionalStopsKey, on);
+        Q_EMIT optionalStopsChanged(on);
+    });
     clearProgress();
     setState(RunState::Idle, false, false);
+}
+
+bool ProgramControls::optionalStops() const
+{
+    return m_optionalStops->isChecked();
 }
 
 void ProgramControls::setState(RunState state, bool pausePending, bool canStart)

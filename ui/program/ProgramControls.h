@@ -3,6 +3,7 @@
 #include <QWidget>
 #include <optional>
 
+class QCheckBox;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
@@ -11,8 +12,9 @@ namespace stepdeck::ui {
 
 class ElidedLabel;
 
-// Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), and the
-// progress ("line n of m") with the estimated time left, in one row. Only buttons that do
+// Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), the
+// optional-stop switch for M1 (issue 29), and the progress ("line n of m") with the estimated
+// time left, in one row. Only buttons that do
 // something in the state shown are enabled; the buttons never move (one-line texts). The
 // controls only ask (signals): the page owns the runner.
 class ProgramControls : public QWidget
@@ -35,6 +37,10 @@ public:
     QPushButton* abortButton() const { return m_abort; }
     QPushButton* runFromButton() const { return m_runFrom; }
     QSpinBox* fromLineBox() const { return m_fromLine; }
+    // LinuxCNC's optional-stop switch: on, M1 holds like M0. Remembered in QSettings
+    // ("programs/optionalStops"); on when nothing was stored, as the runner's default.
+    QCheckBox* optionalStopsBox() const { return m_optionalStops; }
+    bool optionalStops() const;
     QProgressBar* progressBar() const { return m_progress; }
     QString progressText() const;
     QString timeLeftText() const;
@@ -46,6 +52,7 @@ Q_SIGNALS:
     void resumeRequested();
     void stepRequested();
     void abortRequested();
+    void optionalStopsChanged(bool on);
 
 private:
     QPushButton* m_run;
@@ -55,6 +62,7 @@ private:
     QPushButton* m_abort;
     QSpinBox* m_fromLine;
     QPushButton* m_runFrom;
+    QCheckBox* m_optionalStops;
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
 };

@@ -67,6 +67,10 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
             m_runner->resume();
     });
     connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
+    connect(m_controls, &ProgramControls::optionalStopsChanged, this, [this](bool on) {
+        if (m_runner)
+            m_runner->setOptionalStops(on); // also while a program runs: counts at its next M1
+    });
     connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
     connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
     // A new work zero or tool table moves the program's path on the machine: checked again.
@@ -140,6 +144,7 @@ void ProgramPage::onMachineChanged()
     }
     if (machine && !m_runner) {
         m_runner = new program::ProgramRunner(machine, this);
+        m_runner->setOptionalStops(m_controls->optionalStops());
         m_runnerMachine = machine;
         using program::ProgramRunner;
         connect(m_runner, &ProgramRunner::stateChanged, this, &ProgramPage::onState);

@@ -136,7 +136,7 @@ void ProgramPage::onBlockFinished(int line)
 void ProgramPage::onPaused(int line, const QString& prompt)
 {
     for (const program::ProgramBlock& b : std::as_const(m_running.blocks)) {
-        if (b.line == line && program::waitsForOperator(b.kind)) {
+        if (b.line == line && program::waitsForOperator(b.kind, m_runner->optionalStops())) {
             m_banner->showPrompt(line, prompt);
             break;
         }

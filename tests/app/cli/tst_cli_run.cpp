@@ -24,6 +24,8 @@ private Q_SLOTS:
     void pause_withoutTerminal_exit2_nothingSent();
     void pause_skipPauses_runsThrough();
     void pause_onATerminal_waitsForEnter();
+    void optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff_data();
+    void optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff();
     void dryRun_json_previewFiguresNoMotion();
     void dryRun_human_linesExtentsDuration();
     void run_progressLinePerBlockOnStderr();
@@ -114,6 +116,41 @@ void TestCliRun::pause_skipPauses_runsThrough()
         writeProgram(*m_dir, "pause.ngc", "G91 G0 X10\nM0 (check the part)\nG0 X20\n");
     const CliRun r = runCli(args(path, {"--skip-pauses"}));
     QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QList<DeviceMove> moves = m_device->moves();
+    QCOMPARE(moves.size(), 2);
+    QCOMPARE(moves.at(0).steps, qint64(10));
+    QCOMPARE(moves.at(1).steps, qint64(20));
+}
+
+// Issue 29: M1 holds like M0 with optional stops on (the default), so without a terminal it is
+// refused before anything is sent; --optional-stops off runs past it. Anything but on/off is a
+// usage error.
+void TestCliRun::optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff_data()
+{
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QByteArray>("says");
+    QTest::newRow("default: on") << QStringList{} << 2 << QByteArray("line 2 holds M1");
+    QTest::newRow("on") << QStringList{"--optional-stops", "on"} << 2
+                        << QByteArray("--optional-stops off passes it");
+    QTest::newRow("off") << QStringList{"--optional-stops=off"} << 0 << QByteArray();
+    QTest::newRow("maybe") << QStringList{"--optional-stops", "maybe"} << 2
+                           << QByteArray("run --optional-stops takes on or off, got 'maybe'");
+}
+
+void TestCliRun::optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff()
+{
+    QFETCH(QStringList, options);
+    QFETCH(int, exitCode);
+    QFETCH(QByteArray, says);
+    const QString path = writeProgram(*m_dir, "optional.ngc", "G91 G0 X10\nM1 (look)\nG0 X20\n");
+    const CliRun r = runCli(args(path, options));
+    QVERIFY2(r.exitCode == exitCode, r.err.constData());
+    QVERIFY2(r.err.contains(says), r.err.constData());
+    if (exitCode != 0) {
+        QCOMPARE(m_device->receivedCount(), 0);
+        return;
+    }
     const QList<DeviceMove> moves = m_device->moves();
     QCOMPARE(moves.size(), 2);
     QCOMPARE(moves.at(0).steps, qint64(10));

@@ -94,6 +94,10 @@ void TestCliArguments::parse_goodInvocations_data()
                        "--dry-run", "--json",   "--skip-pauses"}
         << "run" << QStringList{"part.ngc"}
         << QStringList{"dry-run=", "from-line=12", "skip-pauses="} << "sim" << true << 3000;
+    QTest::newRow("run --optional-stops")
+        << QStringList{"run", "part.ngc", "--optional-stops", "off", "--from-line=3"} << "run"
+        << QStringList{"part.ngc"} << QStringList{"from-line=3", "optional-stops=off"} << "sim"
+        << false << 3000;
 }
 
 void TestCliArguments::parse_goodInvocations()

@@ -85,6 +85,8 @@ private Q_SLOTS:
     void parse_brokenJson_givesLineAndColumn();
     void parse_emptyFile_saysSo();
     void saveAndLoad_roundTrip_equal();
+    void spindle_maxRpm_roundTripAndOldFilesUnchanged();
+    void spindle_maxRpmWithoutASpindleController_refused();
     void singleController_keepsControllerAxesInSteps_andValidates();
     void toSteps_nearestWholeStep_andBack_data();
     void toSteps_nearestWholeStep_andBack();
@@ -251,6 +253,17 @@ void TestMachineFile::parse_invalid_namesTheField_data()
     QTest::newRow("reference key")
         << withEdit("axes.0.reference.speed", 3) << "axes[0].reference.speed"
         << "unknown key";
+    // Issue 29: the spindle scale.
+    QTest::newRow("spindle not an object") << withEdit("spindle", 24000) << "spindle"
+                                           << "must be an object";
+    QTest::newRow("spindle key") << withEdit("spindle.maxRPM", 24000) << "spindle.maxRPM"
+                                 << "unknown key (known: maxRpm)";
+    QTest::newRow("maxRpm zero") << withEdit("spindle.maxRpm", 0) << "spindle.maxRpm"
+                                 << "must be a speed greater than 0 in rpm (is 0)";
+    QTest::newRow("maxRpm negative") << withEdit("spindle.maxRpm", -100) << "spindle.maxRpm"
+                                     << "greater than 0";
+    QTest::newRow("maxRpm text") << withEdit("spindle.maxRpm", "24000") << "spindle.maxRpm"
+                                 << "must be a decimal number";
 }
 
 void TestMachineFile::parse_invalid_namesTheField()
@@ -309,6 +322,54 @@ void TestMachineFile::saveAndLoad_roundTrip_equal()
     QVERIFY(*back == *m);
     QVERIFY(!MachineFile::load(dir.filePath("missing.json"), &error));
     QVERIFY(error.message.contains("missing.json"));
+}
+
+// Issue 29: "spindle": {"maxRpm": ...} is read, written and read back; a file without it
+// reads as before (no scale) and is written without the key, as older versions read it.
+void TestMachineFile::spindle_maxRpm_roundTripAndOldFilesUnchanged()
+{
+    MachineFileError error;
+    const std::optional<MachineDescription> scaled =
+        MachineFile::parse(withEdit("spindle", QJsonObject{{"maxRpm", 24000.5}}), &error);
+    QVERIFY2(scaled, qPrintable(error.text()));
+    QCOMPARE(scaled->spindle.maxRpm, 24000.5);
+    QCOMPARE(scaled->toJson().value("spindle").toObject(), (QJsonObject{{"maxRpm", 24000.5}}));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("machine.json");
+    QString why;
+    QVERIFY2(MachineFile::save(*scaled, path, &why), qPrintable(why));
+    const std::optional<MachineDescription> back = MachineFile::load(path, &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QCOMPARE(back->spindle.maxRpm, 24000.5);
+    QVERIFY(*back == *scaled);
+
+    const std::optional<MachineDescription> old =
+        MachineFile::parse(bytes(tableAndRotary()), &error);
+    QVERIFY2(old, qPrintable(error.text()));
+    QVERIFY(!old->spindle.maxRpm);
+    QVERIFY(!(*old == *scaled)); // the scale counts in equality (the editor's "modified")
+    const QJsonObject written = old->toJson();
+    QVERIFY(!written.contains("spindle"));
+    QCOMPARE(written.value("version").toInt(), 1);
+}
+
+void TestMachineFile::spindle_maxRpmWithoutASpindleController_refused()
+{
+    MachineDescription d = MachineDescription::singleController(*findModel("nanotec"), "sim");
+    QVERIFY(MachineFile::validate(d, nullptr));
+    d.spindle.maxRpm = 24000;
+    MachineFileError error;
+    QVERIFY(!MachineFile::validate(d, &error));
+    QCOMPARE(error.field, QStringLiteral("spindle.maxRpm"));
+    QCOMPARE(error.message,
+             QStringLiteral("no controller of this machine switches a spindle: leave \"spindle\" "
+                            "out"));
+    d = MachineDescription::singleController(*findModel("elab"), "sim");
+    d.spindle.maxRpm = std::numeric_limits<double>::infinity();
+    QVERIFY(!MachineFile::validate(d, &error));
+    QCOMPARE(error.field, QStringLiteral("spindle.maxRpm"));
+    d.spindle.maxRpm = 24000;
+    QVERIFY2(MachineFile::validate(d, &error), qPrintable(error.text()));
 }
 
 void TestMachineFile::singleController_keepsControllerAxesInSteps_andValidates()

@@ -27,6 +27,8 @@ private Q_SLOTS:
     void check_coordinates_targetsLimitsAndErrors();
     void check_tools_lengthOffsetAndTable_data();
     void check_tools_lengthOffsetAndTable();
+    void check_spindleAboveMaxRpm_refusedAtS_data();
+    void check_spindleAboveMaxRpm_refusedAtS();
     void check_fromLine_startOrRefusal_data();
     void check_fromLine_startOrRefusal();
     void check_axisTheMachineLacks_named();
@@ -182,6 +184,19 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
     QTest::newRow("M3 M8 on the E-LAB") << "mill"
                                         << ""
                                         << "M3 S1000\nM8\nM9\nM5" << QStringList{};
+    // Issue 29: M4 only where the spindle's controller can reverse; none can (E-LAB: a relay).
+    QTest::newRow("M4 on the E-LAB")
+        << "mill"
+        << ""
+        << "M3 S100\nM4 S100\nM5"
+        << QStringList{"2:1: M4: controller \"table\" cannot reverse its spindle: use M3"};
+    QTest::newRow("M4 without a spindle")
+        << "emis"
+        << ""
+        << "M4 S100" << QStringList{"1:1: M4: no controller of this machine has a spindle"};
+    QTest::newRow("M1 checks like M0") << "mill"
+                                       << ""
+                                       << "M1 (look)\nM0" << QStringList{};
     QTest::newRow("coolant without coolant")
         << "emis"
         << ""
@@ -403,6 +418,44 @@ void TestProgramCheck::check_tools_lengthOffsetAndTable()
     QCOMPARE(texts(result.errors), errors);
     if (!qIsNaN(endZ))
         QCOMPARE(result.preview.path.last().position.value("Z"), endZ);
+}
+
+// Issue 29: with the machine's spindle scale, S is in rpm up to maxRpm (mapped onto the
+// E-LAB's 0..1000); above it, an error at the S word naming maxRpm. Without the scale, S is the
+// controller's own value.
+void TestProgramCheck::check_spindleAboveMaxRpm_refusedAtS_data()
+{
+    QTest::addColumn<double>("maxRpm"); // 0: none
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::newRow("S12000 of 24000") << 24000.0 << "G0 X1\nM3 S12000" << QStringList{};
+    QTest::newRow("S24000 of 24000") << 24000.0 << "M3 S24000" << QStringList{};
+    QTest::newRow("S0 of 24000") << 24000.0 << "M3 S0" << QStringList{};
+    QTest::newRow("S30000 of 24000")
+        << 24000.0 << "G0 X1\nN20 M3 S30000"
+        << QStringList{"2:8: controller \"table\": S30000 is above the spindle's maxRpm 24000 "
+                       "(the machine file's spindle scale)"};
+    QTest::newRow("S before M3") << 10000.0 << "S10001 M3"
+                                 << QStringList{"1:1: controller \"table\": S10001 is above the "
+                                                "spindle's maxRpm 10000 (the machine file's "
+                                                "spindle scale)"};
+    QTest::newRow("no scale: S12000 beyond the E-LAB's 1000")
+        << 0.0 << "M3 S12000"
+        << QStringList{"1:4: controller \"table\": Spindle speed: value '12000' is out of range "
+                       "(allowed: 0..1000 rpm)"};
+}
+
+void TestProgramCheck::check_spindleAboveMaxRpm_refusedAtS()
+{
+    QFETCH(double, maxRpm);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    MachineFacts facts = machineFacts("mill");
+    if (maxRpm > 0)
+        facts.description.spindle.maxRpm = maxRpm;
+    facts.knownPositions = positions("X=0");
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
 }
 
 void TestProgramCheck::check_fromLine_startOrRefusal_data()

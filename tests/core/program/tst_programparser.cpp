@@ -24,6 +24,7 @@ QString describe(const ProgramBlock& b)
         out << QStringLiteral("%1s").arg(b.seconds);
         break;
     case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
         out << QStringLiteral("%1rpm").arg(b.rpm);
         break;
     case BlockKind::OutputOn:
@@ -37,6 +38,7 @@ QString describe(const ProgramBlock& b)
                    .arg(b.seconds);
         break;
     case BlockKind::Pause:
+    case BlockKind::OptionalPause:
         out << QStringLiteral("\"%1\"").arg(b.prompt);
         break;
     case BlockKind::ToolChange:
@@ -147,9 +149,14 @@ void TestProgramParser::parse_everyWord_golden_data()
     QTest::newRow("G4") << "G4 P1.5" << QStringList{"1: G4 abs mm F- 1.5s"};
     QTest::newRow("M0 prompt") << "M0 (Load the part)"
                                << QStringList{"1: M0 abs mm F- \"Load the part\""};
+    QTest::newRow("M1 prompt") << "M1 (Check the clamps)"
+                               << QStringList{"1: M1 abs mm F- \"Check the clamps\""};
+    QTest::newRow("M1 bare") << "N5 M1" << QStringList{"1: M1 abs mm F- \"\""};
     QTest::newRow("M2") << "M2" << QStringList{"1: M2 abs mm F-"};
     QTest::newRow("M30") << "M30" << QStringList{"1: M2 abs mm F-"};
     QTest::newRow("M3 S") << "M3 S1200" << QStringList{"1: M3 abs mm F- 1200rpm"};
+    QTest::newRow("M4 S") << "M4 S12000" << QStringList{"1: M4 abs mm F- 12000rpm"};
+    QTest::newRow("S before M4") << "S800 M4" << QStringList{"1: M4 abs mm F- 800rpm"};
     QTest::newRow("M5") << "M5" << QStringList{"1: M5 abs mm F-"};
     QTest::newRow("M7 M8 M9") << "M7\nM8\nM9"
                               << QStringList{"1: M7 abs mm F-", "2: M8 abs mm F-",
@@ -353,6 +360,14 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                   << "1:7: S100 is not used by G0";
     QTest::newRow("M3 without S") << "M3"
                                   << "1:1: M3 needs S";
+    QTest::newRow("M4 without S") << "M4"
+                                  << "1:1: M4 needs S";
+    QTest::newRow("M4 with an axis") << "M4 S100 X1"
+                                     << "1:9: X1 is not used by M4";
+    QTest::newRow("M3 and M4") << "M3 M4 S100"
+                               << "1:4: one action per line: M3 and M4";
+    QTest::newRow("M1 with P") << "M1 P2"
+                               << "1:4: P2 is not used by M1";
     QTest::newRow("M64 without P") << "M64"
                                    << "1:1: M64 needs P";
     QTest::newRow("M64 fraction") << "M64 P1.5"

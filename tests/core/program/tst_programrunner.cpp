@@ -71,6 +71,10 @@ private Q_SLOTS:
     void step_oneBlockThenPaused();
     void pause_m0_pausedWithItsPrompt();
     void toolChange_m6_pausedToLoadTheToolThenOn();
+    void optionalStop_m1_pausesOnlyWithTheSwitchOn_data();
+    void optionalStop_m1_pausesOnlyWithTheSwitchOn();
+    void spindle_maxRpm_boardGetsSMappedOntoItsFullScale();
+    void spindle_m4_refusedNothingSent();
     void msg_reached_saidBeforeTheNextMoveGoesOut();
     void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
@@ -87,6 +91,7 @@ private Q_SLOTS:
 
 private:
     MachineDescription description() const;
+    void recreateMachine(const MachineDescription& d);
     void writeElabSetup();
     bool run(const QByteArray& text, int fromLine = 1, bool stepOnly = false);
 
@@ -115,6 +120,20 @@ void TestProgramRunner::init()
     m_machine = std::make_unique<Machine>();
     QString error;
     QVERIFY2(m_machine->create(description(), &error), qPrintable(error));
+    m_machine->open();
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    writeElabSetup();
+    m_runner = std::make_unique<ProgramRunner>(m_machine.get());
+}
+
+// The same devices as a machine of another description (a spindle scale).
+void TestProgramRunner::recreateMachine(const MachineDescription& d)
+{
+    m_runner.reset();
+    m_machine.reset();
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    QVERIFY2(m_machine->create(d, &error), qPrintable(error));
     m_machine->open();
     QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
     writeElabSetup();
@@ -262,6 +281,92 @@ void TestProgramRunner::toolChange_m6_pausedToLoadTheToolThenOn()
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+}
+
+// Issue 29: M1 holds like M0 (with its comment as the prompt) while the optional-stop switch
+// is on -- the default -- and the run passes it when it is off.
+void TestProgramRunner::optionalStop_m1_pausesOnlyWithTheSwitchOn_data()
+{
+    QTest::addColumn<int>("optionalStops"); // -1: left at the default
+    QTest::addColumn<bool>("holds");
+    QTest::newRow("default") << -1 << true;
+    QTest::newRow("on") << 1 << true;
+    QTest::newRow("off") << 0 << false;
+}
+
+void TestProgramRunner::optionalStop_m1_pausesOnlyWithTheSwitchOn()
+{
+    QFETCH(int, optionalStops);
+    QFETCH(bool, holds);
+    if (optionalStops >= 0)
+        m_runner->setOptionalStops(optionalStops == 1);
+    QCOMPARE(m_runner->optionalStops(), holds);
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G91 G0 X1\nM1 (Look at the first pass)\nG0 X1\n"));
+    if (holds) {
+        QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+        QCOMPARE(paused.size(), 1);
+        QCOMPARE(paused.at(0).at(0).toInt(), 2);
+        QCOMPARE(m_runner->prompt(), QStringLiteral("Look at the first pass"));
+        // Held: more status polls pass and the board got the first move only.
+        QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+        QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+        QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+        m_runner->resume();
+    }
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(paused.size(), holds ? 1 : 0);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 400}));
+}
+
+// Issue 29: with "spindle": {"maxRpm": 24000} a program's S is in rpm: the board receives
+// S / 24000 of its full scale 1000 (SetSpindleRPM, "einen Wert zwischen 0 und 1000").
+void TestProgramRunner::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
+{
+    MachineDescription d = description();
+    d.spindle.maxRpm = 24000;
+    recreateMachine(d);
+    const auto boardRpm = [this] {
+        return m_elab->probe(
+            [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); });
+    };
+    QVERIFY(run("M3 S12000\nM0\nM3 S24000\nM0\nM3 S6000\nM0\nM5\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(500));
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x01"
+                                           "000001F4#")) >= 0);
+    m_runner->resume();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(1000));
+    m_runner->resume();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 6, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(250));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardRpm(), quint32(0));
+}
+
+// No controller can reverse its spindle (the E-LAB switches a relay): M4 is refused before
+// anything is sent, and the board's spindle stays off.
+void TestProgramRunner::spindle_m4_refusedNothingSent()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse("M4 S500\n", {"X", "Y", "A"}, &errors);
+    QVERIFY(p);
+    QVERIFY(!m_runner->start(*p, 1, &errors));
+    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.first().text(),
+             QStringLiteral("1:1: M4: controller \"table\" cannot reverse its spindle: use M3"));
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x01")) < 0);
+    QCOMPARE(m_elab->probe(
+                 [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); }),
+             quint32(0));
 }
 
 // Issue 29: "(MSG, text)" is said when the run reaches its line (in a repeat: each time),

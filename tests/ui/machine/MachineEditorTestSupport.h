@@ -57,12 +57,15 @@ inline void choose(QWidget* cell, const QString& text)
     combo->setCurrentIndex(index);
 }
 
-// The cell of a table ("controllers", "axes") or the name field ("name").
+// The cell of a table ("controllers", "axes"), the name field ("name") or the spindle scale
+// ("spindle").
 inline QWidget* editorCell(ui::MachineEditor* editor, const QString& table, int row,
                            const QString& key)
 {
     if (table == QLatin1String("name"))
         return editor->nameEdit();
+    if (table == QLatin1String("spindle"))
+        return editor->maxRpmEdit();
     if (table == QLatin1String("controllers"))
         return editor->controllersTable()->cell(row, key);
     return editor->axesTable()->cell(row, key);

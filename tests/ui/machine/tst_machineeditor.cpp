@@ -21,6 +21,7 @@ private Q_SLOTS:
     void typedValue_invalid_namesFieldAndMarksCell_data();
     void typedValue_invalid_namesFieldAndMarksCell();
     void typedValue_fixedAgain_clearsMark();
+    void spindleMaxRpm_shownTypedAndCleared_inTheMachine();
     void controllerId_renamed_axesFollow();
     void axisChoices_areTheControllersAxes();
     void removeAxis_removesTheRowBeingEdited();
@@ -93,6 +94,16 @@ void TestMachineEditor::typedValue_invalid_namesFieldAndMarksCell_data()
     QTest::newRow("no name") << "name" << 0 << ""
                              << ""
                              << "name" << QStringList{""};
+    // Issue 29: the spindle scale beside the name.
+    QTest::newRow("maxRpm zero") << "spindle" << 0 << ""
+                                 << "0"
+                                 << "spindle.maxRpm" << QStringList{""};
+    QTest::newRow("maxRpm negative") << "spindle" << 0 << ""
+                                     << "-24000"
+                                     << "spindle.maxRpm" << QStringList{""};
+    QTest::newRow("maxRpm letters") << "spindle" << 0 << ""
+                                    << "24k"
+                                    << "spindle.maxRpm" << QStringList{""};
 }
 
 void TestMachineEditor::typedValue_invalid_namesFieldAndMarksCell()
@@ -138,6 +149,31 @@ void TestMachineEditor::typedValue_fixedAgain_clearsMark()
     QVERIFY(editor->markedCells().isEmpty());
     QVERIFY(cell->styleSheet().isEmpty());
     QVERIFY(editor->machine());
+}
+
+// Issue 29: the field shows the file's maxRpm, a typed one is the machine's, and an empty
+// field is a machine without a spindle scale; the window keeps its height.
+void TestMachineEditor::spindleMaxRpm_shownTypedAndCleared_inTheMachine()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    QLineEdit* maxRpm = editor->maxRpmEdit();
+    QVERIFY(maxRpm->text().isEmpty()); // the example has none
+    QVERIFY(!editor->machine()->spindle.maxRpm);
+    const int height = editor->minimumSizeHint().height();
+    typeInto(maxRpm, QStringLiteral("24000"));
+    QVERIFY2(editor->error().field.isEmpty(), qPrintable(editor->messageText()));
+    QCOMPARE(editor->machine()->spindle.maxRpm, 24000.0);
+    QVERIFY(editor->isModified());
+    QCOMPARE(editor->minimumSizeHint().height(), height);
+
+    machine::MachineDescription d = *editor->machine();
+    d.spindle.maxRpm = 18000.5;
+    editor->setMachine(d);
+    QCOMPARE(maxRpm->text(), QStringLiteral("18000.5"));
+    QCOMPARE(editor->machine()->spindle.maxRpm, 18000.5);
+    typeInto(maxRpm, QString());
+    QVERIFY(editor->machine());
+    QVERIFY(!editor->machine()->spindle.maxRpm);
 }
 
 void TestMachineEditor::controllerId_renamed_axesFollow()

@@ -19,6 +19,7 @@
 #include "program/ProgramPreviewView.h"
 #include "program/ProgramPromptBanner.h"
 #include "safety/SafetyBar.h"
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -47,6 +48,7 @@ private Q_SLOTS:
     void stop_duringMove_programEndsAborted_data();
     void stop_duringMove_programEndsAborted();
     void m0_prompt_bannerWithResumeGoesOn();
+    void m1_optionalStopsToggle_reachesTheRunner();
     void fault_linkLostDuringMove_failedNamingTheLine();
     void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
@@ -283,6 +285,37 @@ void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     QCOMPARE(m_rig.elab->position(Axis::X), 100);
     QVERIFY(!page()->promptBanner()->isShowingPrompt());
+}
+
+// Issue 29: the window's "Optional stops (M1)" switch reaches the runner: off, the program
+// runs past M1 without a prompt; on (also switched while nothing runs), M1 holds with its
+// comment in the banner and the board gets the next move only after Resume.
+void TestProgramPage::m1_optionalStopsToggle_reachesTheRunner()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QCheckBox* optionalStops = page()->controls()->optionalStopsBox();
+    QVERIFY(optionalStops->isChecked()); // the default
+    QVERIFY(runner()->optionalStops());
+    optionalStops->click();
+    QVERIFY(!runner()->optionalStops());
+    setProgram(QStringLiteral("G91\nM1 (Look at the clamps)\nG0 X0.25\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 100);
+    QVERIFY(!page()->promptBanner()->isShowingPrompt());
+
+    optionalStops->click();
+    QVERIFY(runner()->optionalStops());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY2_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(),
+                              qPrintable(page()->messageText()), 10000);
+    QVERIFY2(page()->promptBanner()->text().contains(QStringLiteral("Look at the clamps")),
+             qPrintable(page()->promptBanner()->text()));
+    QCOMPARE(m_rig.elab->position(Axis::X), 100); // the second pass holds before its move
+    page()->promptBanner()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 200);
 }
 
 void TestProgramPage::fault_linkLostDuringMove_failedNamingTheLine()

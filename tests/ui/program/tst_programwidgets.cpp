@@ -13,8 +13,10 @@
 #include "program/ProgramTimes.h"
 #include "protocols/Registry.h"
 #include <QApplication>
+#include <QCheckBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTextBlock>
@@ -40,6 +42,7 @@ private Q_SLOTS:
     void times();
     void controls_states_onlyUsefulButtonsEnabled_data();
     void controls_states_onlyUsefulButtonsEnabled();
+    void controls_optionalStops_onByDefaultRememberedInOneRow();
     void banner_prompt_keepsItsHeight();
     void backgroundCheck_twoRequests_onlyTheNewestReports();
     void progress_blocksOfARepeat_timeLeftFollowsThePath();
@@ -227,6 +230,47 @@ void TestProgramWidgets::controls_states_onlyUsefulButtonsEnabled()
     for (const auto& [button, letter] : buttons)
         shown += button->isEnabled() ? letter : QLatin1Char('.');
     QCOMPARE(shown, enabled);
+}
+
+// Issue 29: the optional-stop switch (M1) is on when nothing was stored, says when it is
+// switched, is remembered for the next window, and sits in the controls' one row.
+void TestProgramWidgets::controls_optionalStops_onByDefaultRememberedInOneRow()
+{
+    QSettings().remove(QStringLiteral("programs/optionalStops"));
+    {
+        ProgramControls controls;
+        QVERIFY(controls.optionalStops());
+        QVERIFY(controls.optionalStopsBox()->isChecked());
+        QVERIFY(controls.optionalStopsBox()->text().contains(QStringLiteral("M1")));
+        controls.resize(controls.sizeHint());
+        controls.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&controls));
+        // One row: the switch beside the buttons, no taller than they are.
+        const QRect box = controls.optionalStopsBox()->geometry();
+        const QRect run = controls.runButton()->geometry();
+        QVERIFY2(box.top() >= run.top() - 2 && box.bottom() <= run.bottom() + 2,
+                 qPrintable(QStringLiteral("box %1..%2, run %3..%4")
+                                .arg(box.top())
+                                .arg(box.bottom())
+                                .arg(run.top())
+                                .arg(run.bottom())));
+        // The row is as high with the switch as without it.
+        const int withSwitch = controls.sizeHint().height();
+        controls.optionalStopsBox()->hide();
+        QCOMPARE(controls.sizeHint().height(), withSwitch);
+        controls.optionalStopsBox()->show();
+        QSignalSpy changed(&controls, &ProgramControls::optionalStopsChanged);
+        controls.optionalStopsBox()->click();
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(changed.at(0).at(0).toBool(), false);
+        QVERIFY(!controls.optionalStops());
+    }
+    {
+        ProgramControls again; // the next window: as the operator left it
+        QVERIFY(!again.optionalStops());
+        again.optionalStopsBox()->click();
+    }
+    QVERIFY(ProgramControls().optionalStops());
 }
 
 void TestProgramWidgets::banner_prompt_keepsItsHeight()
