@@ -36,14 +36,16 @@ bool PreviewProjection::available(PreviewViewKind kind, const QStringList& axes)
 
 QString PreviewProjection::unavailableReason(PreviewViewKind kind, const QStringList& axes)
 {
-    QStringList missing;
-    for (int axis : axesOf(kind))
+    QStringList needed, missing;
+    for (int axis : axesOf(kind)) {
+        needed << QLatin1String(kAxisNames[axis]);
         if (!axes.contains(QLatin1String(kAxisNames[axis])))
             missing << QLatin1String(kAxisNames[axis]);
+    }
     if (missing.isEmpty())
         return {};
-    return tr("This machine has no %1 axis: this view needs it.")
-        .arg(missing.join(QStringLiteral(", ")));
+    return tr("This view needs the axes %1; the machine lacks %2.")
+        .arg(needed.join(QStringLiteral(", ")), missing.join(QStringLiteral(", ")));
 }
 
 QString PreviewProjection::title(PreviewViewKind kind)

@@ -80,7 +80,8 @@ QString ProgramPathView::emptyText() const
     QStringList axes;
     for (int axis : PreviewProjection::axesOf(m_kind))
         axes << QStringLiteral("XYZ").mid(axis, 1);
-    return tr("The program moves %1 to no known position.").arg(axes.join(tr(" and ")));
+    return tr("The program reaches no known position of the axes %1.")
+        .arg(axes.join(QStringLiteral(", ")));
 }
 
 bool ProgramPathView::isAvailable(PreviewViewKind kind) const

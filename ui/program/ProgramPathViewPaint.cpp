@@ -21,7 +21,9 @@ QPen cosmeticPen(const QColor& color, double width, Qt::PenStyle style = Qt::Sol
 
 QPen feedPen()
 {
-    return cosmeticPen(ProgramPathView::feedColor(), 1.5);
+    // One pixel: Qt's raster engine draws cosmetic pens up to 1 px wide with its fast stroker
+    // (QCosmeticStroker); 1.5 px went through the general stroker, about 7 us a segment.
+    return cosmeticPen(ProgramPathView::feedColor(), 1);
 }
 QPen rapidPen()
 {
