@@ -159,18 +159,31 @@ QStringList ProgramPathView::legendEntries() const
 void ProgramPathView::paintLegend(QPainter& painter) const
 {
     const QList<QPair<QString, QPen>> items = legendItems();
+    if (items.isEmpty())
+        return;
     const QFontMetrics metrics(font());
     const int rowHeight = metrics.height();
     constexpr int kSample = 22; // the pen's sample line
+    constexpr int kTextLeft = 10 + kSample;
+    // Left of the scale bar; a long text is elided, not drawn over the bar.
+    const int textRoom = qMax(40, width() - kTextLeft - 110);
+    int textWidth = 0;
+    for (const auto& item : items)
+        textWidth = qMax(textWidth, qMin(textRoom, metrics.horizontalAdvance(item.first)));
     int y = height() - 6 - rowHeight * int(items.size());
     painter.save();
+    // Over the path, readable: the background shows through a little.
+    QColor background = palette().color(QPalette::Base);
+    background.setAlpha(210);
+    painter.fillRect(QRect(3, y - 2, kTextLeft + textWidth + 4, rowHeight * int(items.size()) + 4),
+                     background);
     for (const auto& [text, pen] : items) {
         const double mid = y + rowHeight / 2.0;
         painter.setPen(pen);
         painter.drawLine(QPointF(6, mid), QPointF(6 + kSample, mid));
         painter.setPen(palette().color(QPalette::Text));
-        painter.drawText(QRect(10 + kSample, y, width() / 2, rowHeight),
-                         Qt::AlignLeft | Qt::AlignVCenter, text);
+        painter.drawText(QRect(kTextLeft, y, textRoom, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
+                         metrics.elidedText(text, Qt::ElideRight, textRoom));
         y += rowHeight;
     }
     painter.restore();
