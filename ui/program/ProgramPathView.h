@@ -1,7 +1,7 @@
 #pragma once
 #include "PreviewScene.h"
+#include "PreviewStyle.h"
 #include "PreviewViewport.h"
-#include <QPen>
 #include <QPixmap>
 #include <QWidget>
 #include <optional>
@@ -45,6 +45,7 @@ public:
     // The drawn path's points in the view's plane (top view: X/Y), in path order.
     const QList<QPointF>& points() const { return m_projected.points; }
     std::optional<QPointF> current() const { return m_current; } // in the plane
+    int runningLine() const { return m_runningLine; }
     QString emptyText() const;
     QPointF toWidget(const QPointF& plane) const { return viewport().map(plane); }
     QPointF toPlane(const QPointF& widget) const { return viewport().unmap(widget); }
@@ -56,9 +57,6 @@ public:
     // How often the path itself was drawn (tests: a moving marker does not redraw it).
     int pathRenders() const { return m_pathRenders; }
 
-    static QColor feedColor();
-    static QColor rapidColor();
-    static QColor limitsColor();
     static constexpr const char* kSettingsKey = "program/previewView";
 
     QSize sizeHint() const override { return {320, 240}; }
@@ -88,10 +86,7 @@ private:
     // ProgramPathViewPaint.cpp
     void renderPath(QPainter& painter) const;
     void paintOverlay(QPainter& painter) const;
-    QList<QPair<QString, QPen>> legendItems() const;
-    void paintLegend(QPainter& painter) const;
-    void paintScaleBar(QPainter& painter) const;
-    double scaleBarLength() const; // in the plane's units
+    QList<PreviewStyle::LegendEntry> legendItems() const;
 
     PreviewScene m_scene;
     PreviewScene::Projected m_projected;

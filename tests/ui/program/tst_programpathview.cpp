@@ -3,6 +3,7 @@
 // only with limits, the view chosen remembered and only the machine's views offered, the
 // running line and the tool drawn over a path that is not drawn again for them.
 #include "PreviewTestData.h"
+#include "program/PreviewStyle.h"
 #include "program/ProgramPathView.h"
 #include <QApplication>
 #include <QComboBox>
@@ -182,14 +183,14 @@ void TestProgramPathView::paint_rapidAndFeed_differentColours()
     const QImage image = render(view);
     // The middle of the square's bottom (a feed) and of the way back up (a rapid).
     const QPointF feed = view.toWidget({20, 5});
-    QVERIFY(colourNear(image, feed, ProgramPathView::feedColor()));
-    QVERIFY(!colourNear(image, feed, ProgramPathView::rapidColor()));
+    QVERIFY(colourNear(image, feed, PreviewStyle::feedColor()));
+    QVERIFY(!colourNear(image, feed, PreviewStyle::rapidColor()));
     // A dashed line: some of a stretch of it is drawn.
     bool rapidSeen = false;
     for (double t = 0.3; t < 0.55; t += 0.02) {
         const QPointF rapid = view.toWidget(QPointF(10 + 30 * t, 5 + 15 * t));
-        rapidSeen = rapidSeen || colourNear(image, rapid, ProgramPathView::rapidColor(), 1);
-        QVERIFY(!colourNear(image, rapid, ProgramPathView::feedColor(), 1));
+        rapidSeen = rapidSeen || colourNear(image, rapid, PreviewStyle::rapidColor(), 1);
+        QVERIFY(!colourNear(image, rapid, PreviewStyle::feedColor(), 1));
     }
     QVERIFY(rapidSeen);
     QCOMPARE(view.legendEntries(),
@@ -210,7 +211,7 @@ void TestProgramPathView::paint_softLimitBox_onlyWithLimits()
     auto boxEdgeSeen = [&](const QImage& image) {
         int seen = 0;
         for (double x = -4; x < 44; x += 1)
-            seen += colourNear(image, view.toWidget({x, 25}), ProgramPathView::limitsColor(), 1);
+            seen += colourNear(image, view.toWidget({x, 25}), PreviewStyle::limitsColor(), 1);
         return seen;
     };
     QVERIFY(boxEdgeSeen(render(view)) > 10);
@@ -309,7 +310,7 @@ void TestProgramPathView::runningLine_highlightedOverThePath()
     view.resize(400, 300);
     view.setPreview(squarePreview(), machineXyz(false));
     // Line 4 ends at 30, 5: the square's bottom from 10, 5.
-    const QColor running(230, 40, 140);
+    const QColor running = PreviewStyle::runningColor();
     QVERIFY(!colourNear(render(view), view.toWidget({20, 5}), running));
     view.setRunningLine(4);
     view.setCurrent({{QStringLiteral("X"), 20.0}, {QStringLiteral("Y"), 5.0}});
