@@ -6335,6 +6335,29 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::PreviewProjection</name>
+        <message>
+            <source>This view needs the axes %1; the machine lacks %2.</source>
+            <translation>Diese Ansicht braucht die Achsen %1; der Maschine fehlt %2.</translation>
+        </message>
+        <message>
+            <source>Top (X/Y)</source>
+            <translation>Oben (X/Y)</translation>
+        </message>
+        <message>
+            <source>Front (X/Z)</source>
+            <translation>Vorne (X/Z)</translation>
+        </message>
+        <message>
+            <source>Side (Y/Z)</source>
+            <translation>Seite (Y/Z)</translation>
+        </message>
+        <message>
+            <source>Isometric</source>
+            <translation>Isometrisch</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ProgramControls</name>
         <message>
             <source>Run</source>
@@ -6575,8 +6598,50 @@ W1500</translation>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>
         <message>
-            <source>X / Y (%1)</source>
-            <translation>X / Y (%1)</translation>
+            <source>Wheel: zoom about the pointer · drag: pan · F or a double click: fit · + and -: zoom · arrow keys: pan</source>
+            <translation>Mausrad: um den Mauszeiger zoomen · Ziehen: verschieben · F oder Doppelklick: einpassen · + und -: zoomen · Pfeiltasten: verschieben</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>Einpassen</translation>
+        </message>
+        <message>
+            <source>Fit the path to the view (F)</source>
+            <translation>Die Bahn in die Ansicht einpassen (F)</translation>
+        </message>
+        <message>
+            <source>The program reaches no known position of the axes %1.</source>
+            <translation>Das Programm erreicht keine bekannte Position der Achsen %1.</translation>
+        </message>
+        <message>
+            <source>How the path is looked at</source>
+            <translation>Blickrichtung auf die Bahn</translation>
+        </message>
+        <message>
+            <source>How the path is looked at. Not on this machine:
+%1</source>
+            <translation>Blickrichtung auf die Bahn. Auf dieser Maschine nicht möglich:
+%1</translation>
+        </message>
+        <message>
+            <source>Feed (G1, arcs)</source>
+            <translation>Vorschub (G1, Bögen)</translation>
+        </message>
+        <message>
+            <source>Rapid (G0)</source>
+            <translation>Eilgang (G0)</translation>
+        </message>
+        <message>
+            <source>Soft limits (machine travel, in work coordinates)</source>
+            <translation>Software-Endlagen (Verfahrweg der Maschine, in Werkstückkoordinaten)</translation>
+        </message>
+        <message>
+            <source>Running line</source>
+            <translation>Laufende Zeile</translation>
+        </message>
+        <message>
+            <source>Tool</source>
+            <translation>Werkzeug</translation>
         </message>
     </context>
     <context>
@@ -6598,10 +6663,6 @@ W1500</translation>
             <translation>Software-Endlagen</translation>
         </message>
         <message>
-            <source>Path X/Y</source>
-            <translation>Bahn X/Y</translation>
-        </message>
-        <message>
             <source>Axes over time</source>
             <translation>Achsen über der Zeit</translation>
         </message>
@@ -6612,14 +6673,6 @@ W1500</translation>
         <message>
             <source>No program checked yet.</source>
             <translation>Noch kein Programm geprüft.</translation>
-        </message>
-        <message>
-            <source>The program moves X and Y to no known position.</source>
-            <translation>Das Programm fährt X und Y an keine bekannte Position.</translation>
-        </message>
-        <message>
-            <source>This machine has no X and Y axes: see the chart below.</source>
-            <translation>Diese Maschine hat keine X- und Y-Achse: siehe das Diagramm darunter.</translation>
         </message>
         <message numerus="yes">
             <source>%n line(s)</source>
@@ -6674,6 +6727,14 @@ W1500</translation>
         <message>
             <source>The program's positions, the path and the extents are work coordinates, as the position display shows them; the machine moves to work + offset. Soft limits are shown converted to work coordinates.</source>
             <translation>Die Positionen des Programms, die Bahn und die Ausdehnung sind Werkstückkoordinaten, wie die Positionsanzeige sie zeigt; die Maschine fährt nach Werkstück + Versatz. Software-Endlagen werden in Werkstückkoordinaten umgerechnet gezeigt.</translation>
+        </message>
+        <message>
+            <source>Path</source>
+            <translation>Bahn</translation>
+        </message>
+        <message>
+            <source>This machine has no two of the axes X, Y and Z: see the other tabs.</source>
+            <translation>Diese Maschine hat keine zwei der Achsen X, Y und Z: siehe die anderen Reiter.</translation>
         </message>
     </context>
     <context>

@@ -7,6 +7,7 @@
 #include "MachineStopLatency.h"
 #include "Measurements.h"
 #include "PollWire.h"
+#include "PreviewFrameBench.h"
 #include "ProgramBench.h"
 #include "SoakMain.h"
 #include "WindowProgramBench.h"
@@ -318,6 +319,8 @@ int main(int argc, char** argv)
 {
     // With a QApplication of its own (the GUI's jog panel), so before the QCoreApplication.
     if (const int code = jogLatencyMain(argc, argv); code >= 0)
+        return code;
+    if (const int code = previewFrameBenchMain(argc, argv); code >= 0)
         return code;
     if (const int code = windowProgramBenchMain(argc, argv); code >= 0)
         return code;

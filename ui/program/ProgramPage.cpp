@@ -6,6 +6,7 @@
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
 #include "ProgramMachinePositions.h"
+#include "ProgramPathView.h"
 #include "ProgramPreviewView.h"
 #include "ProgramPromptBanner.h"
 #include "common/ElidedLabel.h"
@@ -49,7 +50,11 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     });
     connect(m_files, &ProgramFiles::message, this,
             [this](const QString& text) { m_banner->setStatus(text); });
-    connect(m_files, &ProgramFiles::loaded, this, [this] { checkNow(); });
+    connect(m_files, &ProgramFiles::loaded, this, [this] {
+        // Another program: its preview is fitted to the view, whatever the last one's zoom.
+        m_preview->pathView()->fitToView();
+        checkNow();
+    });
     connect(m_banner, &ProgramPromptBanner::resumeRequested, this, [this] {
         if (m_runner)
             m_runner->resume();

@@ -122,6 +122,7 @@ void ProgramPage::onState(RunState state)
 void ProgramPage::onBlockStarted(int line, const QString&)
 {
     m_editor->setRunningLine(line);
+    m_preview->setRunningLine(line);
     updateControls();
     updateProgress();
 }

@@ -1,71 +1,113 @@
 #pragma once
-#include "program/ProgramCheck.h"
+#include "PreviewScene.h"
+#include "PreviewStyle.h"
+#include "PreviewViewport.h"
 #include <QPixmap>
 #include <QWidget>
 #include <optional>
 
+class QComboBox;
+class QToolButton;
+
 namespace stepdeck::ui {
 
-// The XY path of a checked program (issue 20), drawn to scale with Y up: the soft limits of X
-// and Y as a dashed rectangle, the path through the block end points, the start point, and
-// the machine's current position while a program runs. The axes move each at its own rate
-// (ProgramPreview::motionNote), so the straight lines are where each block ends, not the
-// exact way between.
+// The path of a checked program (issues 20, 29) in work coordinates, to scale: from the top
+// (X/Y), the front (X/Z), the side (Y/Z) or isometric, as far as the machine has those axes
+// (PreviewProjection; the choice is remembered). Feeds solid, rapids (G0) dashed in another
+// colour, the soft limits' box (machine limits converted to work coordinates) dash-dotted, the
+// start, a legend and a scale bar; while a program runs the tool where the machine stands and
+// the running line's segments highlighted. Fitted to the path when a preview arrives (until
+// the operator zooms or pans) and by "Fit" (F, Home, a double click); the wheel zooms about the
+// pointer, a drag pans, + - and the arrow keys do the same from the keyboard.
+// The projected path is built once per preview and view (PreviewScene); zoom and pan draw it
+// through a transform, and a moving marker does not draw the path again (a cached picture).
 class ProgramPathView : public QWidget
 {
     Q_OBJECT
 public:
     explicit ProgramPathView(QWidget* parent = nullptr);
 
-    // points: X/Y of the path (axes the path does not know yet are left out); limits: the
-    // rectangle of X's and Y's soft limits, if both have them.
-    void setPath(const QList<QPointF>& points, const std::optional<QRectF>& limits,
-                 const QString& unit);
+    void setPreview(const program::ProgramPreview& preview,
+                    const machine::MachineDescription& machine);
     void clearPath(const QString& reason); // nothing to draw, and why
-    // Where X and Y stand now (nullopt: unknown or not running).
-    void setCurrent(const std::optional<QPointF>& position);
+    // Where the axes stand now, work coordinates (empty: unknown or not running).
+    void setCurrent(const QMap<QString, double>& position);
+    // The block that runs now (0: none): its segments are highlighted.
+    void setRunningLine(int line);
 
-    const QList<QPointF>& points() const { return m_points; }
-    std::optional<QPointF> current() const { return m_current; }
-    QString emptyText() const { return m_empty; }
-    // Where a machine position is drawn in the widget (for tests of the marker).
-    QPointF toWidget(const QPointF& position) const;
+    PreviewViewKind viewKind() const { return m_kind; }
+    // Chosen by the operator (remembered in QSettings kSettingsKey); an unavailable view is
+    // refused (false).
+    bool chooseView(PreviewViewKind kind);
+    bool isAvailable(PreviewViewKind kind) const;
+    void fitToView();
+
+    // The drawn path's points in the view's plane (top view: X/Y), in path order.
+    const QList<QPointF>& points() const { return m_projected.points; }
+    std::optional<QPointF> current() const { return m_current; } // in the plane
+    int runningLine() const { return m_runningLine; }
+    QString emptyText() const;
+    QPointF toWidget(const QPointF& plane) const { return viewport().map(plane); }
+    QPointF toPlane(const QPointF& widget) const { return viewport().unmap(widget); }
+    const PreviewScene::Projected& projected() const { return m_projected; }
+    QString scaleText() const; // the scale bar's length and unit ("10 mm")
+    QStringList legendEntries() const;
+    QComboBox* viewSelector() const { return m_viewSelector; }
+    QToolButton* fitButton() const { return m_fit; }
     // How often the path itself was drawn (tests: a moving marker does not redraw it).
     int pathRenders() const { return m_pathRenders; }
+
+    static constexpr const char* kSettingsKey = "program/previewView";
 
     QSize sizeHint() const override { return {320, 240}; }
     QSize minimumSizeHint() const override { return {120, 60}; }
 
 protected:
     void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    QRectF bounds() const; // machine coordinates shown
-    struct Scale
-    {
-        double scale = 1, x0 = 0, y0 = 0;
-        QPointF map(const QPointF& p) const { return {x0 + p.x() * scale, y0 - p.y() * scale}; }
-        bool operator==(const Scale& o) const
-        {
-            return scale == o.scale && x0 == o.x0 && y0 == o.y0;
-        }
-    };
-    Scale currentScale() const;
-    void updatePathBounds();
-    void paintPath(QPainter& painter, const Scale& scale) const;
+    // The viewport, fitted again first when the size changed since the last fit and the
+    // operator has not zoomed or panned (a hidden widget gets its resize events late).
+    const PreviewViewport& viewport() const;
+    void setViewKind(PreviewViewKind kind);
+    void reproject();
+    void updateSelector();
+    void zoomBy(const QPointF& at, double factor);
+    void panBy(const QPointF& delta);
+    QRectF fitArea() const;
+    QRectF fitBounds() const; // what Fit shows, in the plane
+    // ProgramPathViewPaint.cpp
+    void renderPath(QPainter& painter) const;
+    void paintOverlay(QPainter& painter) const;
+    QList<PreviewStyle::LegendEntry> legendItems() const;
 
-    QList<QPointF> m_points;
-    // The path and the soft limits' rectangle, worked out once per path (issue 28: a 20 000-point
-    // path was measured again for every point of every repaint, 2.5 s per block at 100 % CPU).
-    std::optional<QRectF> m_pathBounds;
-    // The path drawn once at this size and scale; only the marker is drawn on every repaint.
-    QPixmap m_cache;
-    std::optional<Scale> m_cacheScale;
-    int m_pathRenders = 0;
-    std::optional<QRectF> m_limits;
+    PreviewScene m_scene;
+    PreviewScene::Projected m_projected;
+    PreviewViewKind m_kind = PreviewViewKind::Top;
+    PreviewViewKind m_chosen = PreviewViewKind::Top; // the operator's choice (remembered)
+    mutable PreviewViewport m_viewport;
+    mutable QSize m_fittedSize; // the size the viewport was last fitted to
+    bool m_userView = false;    // zoomed or panned: a new preview keeps the view
+    std::optional<QPointF> m_dragFrom;
+    QMap<QString, double> m_currentPosition;
     std::optional<QPointF> m_current;
-    QString m_unit;
+    int m_runningLine = 0;
+    QPainterPath m_runningSegments;
+    // The path drawn once per preview, view, size and viewport; the marker over it.
+    QPixmap m_cache;
+    std::optional<PreviewViewport> m_cacheViewport;
+    bool m_cacheValid = false;
+    int m_pathRenders = 0;
     QString m_empty;
+    QComboBox* m_viewSelector;
+    QToolButton* m_fit;
 };
 
 } // namespace stepdeck::ui

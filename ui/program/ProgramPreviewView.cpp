@@ -61,7 +61,7 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
 
     // Tabs, not a column: the page must fit the bottom of a 768-pixel screen.
     m_tabs->setObjectName(QStringLiteral("programPreviewTabs"));
-    m_tabs->addTab(m_path, tr("Path X/Y"));
+    m_tabs->addTab(m_path, tr("Path"));
     m_tabs->addTab(m_chartView, tr("Axes over time"));
     // How the axes of a block move together stands with the extents (and in the figures'
     // tooltip).
@@ -113,30 +113,15 @@ QString ProgramPreviewView::coordinatesText() const
 void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
                                     const machine::MachineDescription& machine)
 {
-    const machine::MachineAxis* x = machine.axis(QStringLiteral("X"));
-    const machine::MachineAxis* y = machine.axis(QStringLiteral("Y"));
-    m_hasX = x != nullptr;
-    m_hasY = y != nullptr;
-    if (x && y) {
-        QList<QPointF> points;
-        for (const program::PreviewPoint& p : preview.path) {
-            if (p.position.contains(QStringLiteral("X")) &&
-                p.position.contains(QStringLiteral("Y")))
-                points << QPointF(p.position.value(QStringLiteral("X")),
-                                  p.position.value(QStringLiteral("Y")));
-        }
-        std::optional<QRectF> limits;
-        const auto xLimits = workLimits(*x, preview.workOffsets);
-        const auto yLimits = workLimits(*y, preview.workOffsets);
-        if (xLimits && yLimits)
-            limits = QRectF(QPointF(xLimits->first, yLimits->first),
-                            QPointF(xLimits->second, yLimits->second));
-        m_path->setPath(points, limits, unitText(*x));
-        if (points.isEmpty())
-            m_path->clearPath(tr("The program moves X and Y to no known position."));
-    } else {
-        m_path->clearPath(tr("This machine has no X and Y axes: see the chart below."));
-    }
+    m_hasX = machine.axis(QStringLiteral("X")) != nullptr;
+    m_hasY = machine.axis(QStringLiteral("Y")) != nullptr;
+    m_path->setPreview(preview, machine);
+    bool anyView = false;
+    for (PreviewViewKind kind : PreviewProjection::kAll)
+        anyView = anyView || m_path->isAvailable(kind);
+    if (!anyView)
+        m_path->clearPath(
+            tr("This machine has no two of the axes X, Y and Z: see the other tabs."));
     fillChart(preview, machine);
     fillExtents(preview, machine);
     QStringList zeros;
@@ -245,19 +230,20 @@ void ProgramPreviewView::fillExtents(const program::ProgramPreview& preview,
 
 void ProgramPreviewView::setCurrent(const QMap<QString, double>& positions, double seconds)
 {
-    if (m_hasX && m_hasY && positions.contains(QStringLiteral("X")) &&
-        positions.contains(QStringLiteral("Y")))
-        m_path->setCurrent(
-            QPointF(positions.value(QStringLiteral("X")), positions.value(QStringLiteral("Y"))));
-    else
-        m_path->setCurrent(std::nullopt);
+    m_path->setCurrent(positions);
     if (m_now)
         m_now->replace(QList<QPointF>{{seconds, m_chartMin}, {seconds, m_chartMax}});
 }
 
+void ProgramPreviewView::setRunningLine(int line)
+{
+    m_path->setRunningLine(line);
+}
+
 void ProgramPreviewView::clearCurrent()
 {
-    m_path->setCurrent(std::nullopt);
+    m_path->setCurrent({});
+    m_path->setRunningLine(0);
     if (m_now)
         m_now->clear();
 }

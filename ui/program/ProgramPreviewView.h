@@ -14,12 +14,14 @@ namespace stepdeck::ui {
 class ElidedLabel;
 class ProgramPathView;
 
-// The preview of a checked program beside the editor (issue 20), in tabs: the XY path to
-// scale (ProgramPathView), the other axes' positions over the estimated time (a chart), each
-// moved axis' extent against its soft limits; above them the figures: lines, blocks run, the
-// estimated duration and how the axes of a block move together; below them the coordinates
+// The preview of a checked program beside the editor (issue 20), in tabs: the path to scale
+// from the top, front, side or isometric (ProgramPathView, issue 29), the axes besides X and Y
+// over the estimated time (a chart), each moved axis' extent against its soft limits; above
+// them the figures: lines, blocks run, the estimated duration and how the axes of a block move
+// together; below them the coordinates
 // (work coordinates, as the position display and the program's targets: issue 28, item 3).
-// While a program runs the current position is drawn in both.
+// While a program runs the current position is drawn in both, and the running line's segments
+// in the path.
 class ProgramPreviewView : public QWidget
 {
     Q_OBJECT
@@ -33,6 +35,8 @@ public:
     // While running: the machine axes' positions now (axes not known left out) and the
     // estimated time reached.
     void setCurrent(const QMap<QString, double>& positions, double seconds);
+    // While running: the block that runs now (its segments highlighted in the path).
+    void setRunningLine(int line);
     void clearCurrent();
 
     ProgramPathView* pathView() const { return m_path; }

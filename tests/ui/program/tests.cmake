@@ -1,5 +1,5 @@
-# The Program page's widgets (issue 20, ui/program/): the editor's marks, the files, the path
-# view and the times, without a machine.
+# The Program page's widgets (issue 20, ui/program/): the editor's marks, the files, the
+# times, without a machine.
 stepdeck_add_test(tst_programwidgets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programwidgets.cpp
                   LABELS ui LIBS stepdeck_ui)
 # The page in the main window running programs on a machine of two simulated controllers on
@@ -10,3 +10,11 @@ stepdeck_add_test(tst_programpage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                   LABELS ui LIBS stepdeck_ui)
+# The preview's path (issue 29): the views' projections, the zoom and pan arithmetic, the scene
+# drawn from a preview, and the widget with its mouse, keys, colours and remembered view.
+foreach(_t tst_programpreviewprojection tst_programpreviewviewport tst_programpreviewscene)
+  stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
+                    ${CMAKE_CURRENT_LIST_DIR}/PreviewTestData.h LABELS unit LIBS stepdeck_ui)
+endforeach()
+stepdeck_add_test(tst_programpathview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpathview.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/PreviewTestData.h LABELS ui LIBS stepdeck_ui)

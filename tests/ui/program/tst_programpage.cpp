@@ -351,6 +351,9 @@ void TestProgramPage::position_whileRunning_drawnInThePath()
     QTRY_COMPARE(m_rig.machine()->axisStatus(*x).position, 0.5);
     QTRY_COMPARE(page()->preview()->pathView()->current().value_or(QPointF(-1, -1)),
                  QPointF(0.5, 0.25));
+    // The running line is the path's highlighted line too (issue 29).
+    QCOMPARE(page()->preview()->pathView()->runningLine(), page()->editor()->runningLine());
+    QVERIFY(page()->preview()->pathView()->runningLine() > 0);
     QVERIFY2(page()->controls()->progressText() == QStringLiteral("line 3 of 4"),
              qPrintable(page()->controls()->progressText()));
     QVERIFY2(page()->controls()->timeLeftText().contains(QStringLiteral("left (estimated)")),
@@ -358,6 +361,7 @@ void TestProgramPage::position_whileRunning_drawnInThePath()
     page()->promptBanner()->resumeButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     QVERIFY(!page()->preview()->pathView()->current()); // not running: no marker
+    QCOMPARE(page()->preview()->pathView()->runningLine(), 0);
 }
 
 void TestProgramPage::runFromLine_confirmationNamesThePosition()

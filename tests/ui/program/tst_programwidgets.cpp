@@ -1,13 +1,12 @@
 // The Program page's widgets on their own (issue 20): the editor marks errors at their lines
 // with their messages and the running line, and is read-only while running; the files open,
-// save and remember programs and refuse what they cannot read; the path view draws to scale
-// with Y up; the estimated times are marked as estimates.
+// save and remember programs and refuse what they cannot read; the estimated times are marked
+// as estimates (the path view: tst_programpathview).
 #include "TestSupport.h"
 #include "program/ProgramBackgroundCheck.h"
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
-#include "program/ProgramPathView.h"
 #include "program/ProgramProgress.h"
 #include "program/ProgramPromptBanner.h"
 #include "program/ProgramTimes.h"
@@ -36,8 +35,6 @@ private Q_SLOTS:
     void editor_running_readOnlyAndLineHighlighted();
     void files_saveThenLoad_sameTextAndRecent();
     void files_missingFile_refusedEditorKept();
-    void pathView_square_drawnSquareWithYUp();
-    void pathView_markerMoves_pathDrawnOnce();
     void times_data();
     void times();
     void controls_states_onlyUsefulButtonsEnabled_data();
@@ -139,49 +136,6 @@ void TestProgramWidgets::files_missingFile_refusedEditorKept()
     QCOMPARE(message.size(), 1);
     QVERIFY(message.first().first().toString().contains(QStringLiteral("part.ngc")));
     QCOMPARE(editor.toPlainText(), QStringLiteral("G0 X1"));
-}
-
-void TestProgramWidgets::pathView_square_drawnSquareWithYUp()
-{
-    ProgramPathView view;
-    view.resize(400, 200);
-    view.setPath({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, std::nullopt, QStringLiteral("mm"));
-    const QPointF origin = view.toWidget({0, 0});
-    const QPointF right = view.toWidget({10, 0});
-    const QPointF up = view.toWidget({0, 10});
-    QVERIFY(right.x() > origin.x());
-    QVERIFY(up.y() < origin.y());                                          // Y up
-    QCOMPARE(qRound(right.x() - origin.x()), qRound(origin.y() - up.y())); // to scale
-    view.setCurrent(QPointF(5, 5));
-    QCOMPARE(*view.current(), QPointF(5, 5));
-}
-
-// Issue 28: a 20 000-point path was drawn (and measured, for every point) on every repaint while
-// the marker moved: the path is drawn once per size, the marker over it.
-void TestProgramWidgets::pathView_markerMoves_pathDrawnOnce()
-{
-    ProgramPathView view;
-    view.resize(400, 300);
-    QList<QPointF> points;
-    for (int i = 0; i < 20000; ++i)
-        points << QPointF(i % 100, i / 200.0);
-    view.setPath(points, QRectF(QPointF(0, 0), QPointF(100, 100)), QStringLiteral("mm"));
-    view.grab();
-    QCOMPARE(view.pathRenders(), 1);
-    const QPointF before = view.toWidget({50, 50});
-    for (int i = 0; i < 10; ++i) {
-        view.setCurrent(QPointF(10 + i, 20 + i));
-        view.grab();
-    }
-    QCOMPARE(view.pathRenders(), 1);
-    QCOMPARE(view.toWidget({50, 50}), before); // the marker inside: the drawing held still
-    view.resize(500, 300);                     // another size: drawn again, once
-    view.grab();
-    view.grab();
-    QCOMPARE(view.pathRenders(), 2);
-    view.setPath(points.mid(0, 10), std::nullopt, QStringLiteral("mm")); // another path
-    view.grab();
-    QCOMPARE(view.pathRenders(), 3);
 }
 
 void TestProgramWidgets::times_data()

@@ -1,0 +1,170 @@
+#include "PreviewScene.h"
+
+namespace stepdeck::ui {
+
+namespace {
+const QString kAxisNames[3] = {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+
+bool hasAll(unsigned known, const QList<int>& axes)
+{
+    for (int axis : axes)
+        if (!(known & (1u << axis)))
+            return false;
+    return true;
+}
+
+// The smallest rectangle holding both (QRectF::united ignores a rectangle of no size, which a
+// single point is).
+QRectF spanned(const std::optional<QRectF>& r, const QPointF& p)
+{
+    if (!r)
+        return QRectF(p, QSizeF(0, 0));
+    return QRectF(QPointF(qMin(r->left(), p.x()), qMin(r->top(), p.y())),
+                  QPointF(qMax(r->right(), p.x()), qMax(r->bottom(), p.y())));
+}
+} // namespace
+
+void PreviewScene::clear()
+{
+    m_points.clear();
+    m_axes.clear();
+    m_limits = {};
+}
+
+void PreviewScene::setPreview(const program::ProgramPreview& preview,
+                              const machine::MachineDescription& machine)
+{
+    clear();
+    for (int i = 0; i < 3; ++i) {
+        const machine::MachineAxis* axis = machine.axis(kAxisNames[i]);
+        if (!axis)
+            continue;
+        m_axes << kAxisNames[i];
+        m_units[i] = machine::unitKey(axis->unit);
+        if (axis->hasSoftLimits()) {
+            // Soft limits are machine coordinates; the path is work coordinates.
+            const double offset = preview.workOffsets.value(axis->name, 0.0);
+            m_limits[i] = std::make_pair(*axis->softMinimum - offset, *axis->softMaximum - offset);
+        }
+    }
+    m_points.reserve(preview.path.size());
+    for (const program::PreviewPoint& p : preview.path) {
+        Point point;
+        point.rapid = p.rapid;
+        point.line = p.line;
+        for (int i = 0; i < 3; ++i) {
+            const auto it = p.position.constFind(kAxisNames[i]);
+            if (it != p.position.cend() && m_axes.contains(kAxisNames[i])) {
+                point.position[i] = it.value();
+                point.known |= 1u << i;
+            }
+        }
+        m_points << point;
+    }
+}
+
+PreviewScene::Projected PreviewScene::project(PreviewViewKind kind) const
+{
+    Projected out;
+    const QList<int> axes = PreviewProjection::axesOf(kind);
+    out.points.reserve(m_points.size());
+    bool previousDrawn = false;
+    for (const Point& point : m_points) {
+        // A point without a known position on one of the view's axes breaks the path there.
+        if (!hasAll(point.known, axes)) {
+            previousDrawn = false;
+            continue;
+        }
+        const QPointF p = PreviewProjection::project(kind, point.position);
+        if (previousDrawn) {
+            QPainterPath& path = point.rapid ? out.rapids : out.feeds;
+            const QPointF from = out.points.constLast();
+            if (path.isEmpty() || path.currentPosition() != from)
+                path.moveTo(from);
+            path.lineTo(p);
+        } else if (!out.start) {
+            out.start = p;
+        }
+        out.joined << previousDrawn;
+        out.points << p;
+        out.lines << point.line;
+        out.rapid << point.rapid;
+        out.bounds = spanned(out.bounds, p);
+        previousDrawn = true;
+    }
+    out.softLimits = softLimitBox(kind);
+    if (!out.softLimits.isEmpty()) {
+        const QRectF box = out.softLimits.boundingRect();
+        out.bounds = spanned(spanned(out.bounds, box.topLeft()), box.bottomRight());
+    }
+    return out;
+}
+
+QPainterPath PreviewScene::softLimitBox(PreviewViewKind kind) const
+{
+    const QList<int> axes = PreviewProjection::axesOf(kind);
+    // A flat view needs both of its axes limited; the isometric one draws the box of the axes
+    // that are limited (an axis without limits flat at its zero) when two or three are.
+    int limited = 0;
+    int limitedBits = 0;
+    for (int axis : axes)
+        if (m_limits[axis]) {
+            ++limited;
+            limitedBits |= 1 << axis;
+        }
+    if (limited < 2)
+        return {};
+    auto corner = [&](int bits) {
+        PreviewPosition p{};
+        for (int axis : axes)
+            if (m_limits[axis])
+                p[axis] = (bits & (1 << axis)) ? m_limits[axis]->second : m_limits[axis]->first;
+        return PreviewProjection::project(kind, p);
+    };
+    QPainterPath box;
+    // The box's edges: corners that differ in one limited axis, each edge once.
+    for (int bits = 0; bits < 8; ++bits)
+        for (int axis : axes)
+            if (!(bits & ~limitedBits) && m_limits[axis] && !(bits & (1 << axis))) {
+                box.moveTo(corner(bits));
+                box.lineTo(corner(bits | (1 << axis)));
+            }
+    return box;
+}
+
+QPainterPath PreviewScene::segmentsOfLine(const Projected& projected, int line)
+{
+    QPainterPath path;
+    for (qsizetype i = 1; i < projected.points.size(); ++i) {
+        if (projected.lines.at(i) != line || !projected.joined.at(i))
+            continue;
+        if (path.isEmpty() || path.currentPosition() != projected.points.at(i - 1))
+            path.moveTo(projected.points.at(i - 1));
+        path.lineTo(projected.points.at(i));
+    }
+    return path;
+}
+
+std::optional<QPointF> PreviewScene::projectPosition(PreviewViewKind kind,
+                                                     const QMap<QString, double>& position)
+{
+    PreviewPosition p{};
+    for (int axis : PreviewProjection::axesOf(kind)) {
+        const auto it = position.constFind(kAxisNames[axis]);
+        if (it == position.cend())
+            return std::nullopt;
+        p[axis] = it.value();
+    }
+    return PreviewProjection::project(kind, p);
+}
+
+QString PreviewScene::unitOf(PreviewViewKind kind) const
+{
+    QStringList units;
+    for (int axis : PreviewProjection::axesOf(kind))
+        if (!m_units[axis].isEmpty() && !units.contains(m_units[axis]))
+            units << m_units[axis];
+    return units.join(QLatin1Char('/'));
+}
+
+} // namespace stepdeck::ui
