@@ -28,9 +28,15 @@ MachineFileActions::MachineFileActions(MachineContext* context, QWidget* window)
     connect(m_open, &QAction::triggered, this, &MachineFileActions::chooseMachineToOpen);
     connect(m_edit, &QAction::triggered, this, &MachineFileActions::editMachine);
     m_tools->setToolTip(tr("The machine's tools: the lengths G43 applies, the texts M6 shows"));
+    // Not modal (tst_dialogpolicy): the window keeps its STOP while the table is edited.
     connect(m_tools, &QAction::triggered, this, [this] {
-        ToolTableDialog dialog(m_context->tools(), m_window);
-        dialog.exec();
+        if (!m_toolDialog) {
+            m_toolDialog = new ToolTableDialog(m_context->tools(), m_window);
+            m_toolDialog->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        m_toolDialog->show();
+        m_toolDialog->raise();
+        m_toolDialog->activateWindow();
     });
     connect(m_recent, &QMenu::aboutToShow, this, &MachineFileActions::rebuildRecentMenu);
     rebuildRecentMenu();

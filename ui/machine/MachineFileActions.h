@@ -11,6 +11,7 @@ namespace stepdeck::ui {
 
 class MachineContext;
 class MachineEditor;
+class ToolTableDialog;
 
 // The File menu's machine actions (issue 19): New machine…, Open machine…, Edit machine… and
 // the Recent machines submenu (remembered in QSettings like the recent ports). Opening a
@@ -62,6 +63,7 @@ private:
     QMenu* m_recent;
     QString m_current;
     QPointer<MachineEditor> m_editor;
+    QPointer<ToolTableDialog> m_toolDialog;
 };
 
 } // namespace stepdeck::ui
