@@ -148,6 +148,27 @@ QJsonObject toJson(const FrameFigures& f)
                        {"frames", f.frames}};
 }
 
+// "--preview-frame [FRAMES] [--json]"; false (said on stderr) for anything else.
+bool parseArguments(const QStringList& args, int* frames, bool* json)
+{
+    for (int i = 0; i < args.size(); ++i) {
+        bool ok = true;
+        if (args.at(i) == QLatin1String("--preview-frame")) {
+            if (i + 1 < args.size() && !args.at(i + 1).startsWith(QLatin1String("--")))
+                *frames = args.at(++i).toInt(&ok, 10);
+        } else if (args.at(i) == QLatin1String("--json")) {
+            *json = true;
+        } else {
+            ok = false;
+        }
+        if (!ok || *frames < 1 || *frames > 100000) {
+            print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(args.at(i)));
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 int previewFrameBenchMain(int argc, char** argv)
@@ -160,24 +181,10 @@ int previewFrameBenchMain(int argc, char** argv)
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen"); // no window on anybody's desktop
     QApplication application(argc, argv);
-    const QStringList args = application.arguments().mid(1);
     int frames = 300;
     bool json = false;
-    for (int i = 0; i < args.size(); ++i) {
-        bool ok = true;
-        if (args.at(i) == QLatin1String("--preview-frame")) {
-            if (i + 1 < args.size() && !args.at(i + 1).startsWith(QLatin1String("--")))
-                frames = args.at(++i).toInt(&ok, 10);
-        } else if (args.at(i) == QLatin1String("--json")) {
-            json = true;
-        } else {
-            ok = false;
-        }
-        if (!ok || frames < 1 || frames > 100000) {
-            print(stderr, QStringLiteral("stepdeck-bench: bad argument '%1'").arg(args.at(i)));
-            return 2;
-        }
-    }
+    if (!parseArguments(application.arguments().mid(1), &frames, &json))
+        return 2;
     // The view remembers its view in the settings: a settings file of its own.
     QTemporaryDir settings;
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settings.path());
