@@ -19,20 +19,20 @@ enum class BlockKind : quint8 {
     Dwell,               // G4 P<seconds>
     Pause,               // M0: until the operator resumes; prompt = the line's comment
     OptionalPause,       // M1: as M0 while the optional-stop switch is on (LinuxCNC)
-    ToolChange,     // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
-    End,            // M2, M30
-    SpindleOn,      // M3 S<rpm>
-    SpindleReverse, // M4 S<rpm>: counter-clockwise, only where the controller can reverse
-    SpindleOff,     // M5
-    CoolantMist,    // M7
-    CoolantFlood,   // M8
-    CoolantOff,     // M9
-    OutputOn,       // M64 P<n>
-    OutputOff,      // M65 P<n>
-    WaitInput,      // M66 P<n> L3|L4 Q<seconds>
-    SetCoordinates, // G10 L2 / L20 P<n>: a coordinate system's offsets (ProgramCoordinates)
-    AxisOffset,     // G92: the current point gets the axis words' values
-    AxisOffsetReset,   // G92.1: G92's offset zero
+    ToolChange,      // M6: pause until the operator loaded tool `number` ("Load tool n (comment)")
+    End,             // M2, M30
+    SpindleOn,       // M3 S<rpm>
+    SpindleReverse,  // M4 S<rpm>: counter-clockwise, only where the controller can reverse
+    SpindleOff,      // M5
+    CoolantMist,     // M7
+    CoolantFlood,    // M8
+    CoolantOff,      // M9
+    OutputOn,        // M64 P<n>
+    OutputOff,       // M65 P<n>
+    WaitInput,       // M66 P<n> L3|L4 Q<seconds>
+    SetCoordinates,  // G10 L2 / L20 P<n>: a coordinate system's offsets (ProgramCoordinates)
+    AxisOffset,      // G92: the current point gets the axis words' values
+    AxisOffsetReset, // G92.1: G92's offset zero
     AxisOffsetSuspend, // G92.2: G92's offset kept but not applied
     AxisOffsetRestore, // G92.3: applied again
     RepeatStart,       // O<n> repeat [count]

@@ -218,27 +218,29 @@ private:
         case 911:
             out->centreAbsolute = tenths == 901;
             break;
-        case 540:
-        case 550:
-        case 560:
-        case 570:
-        case 580:
-        case 590:
-            out->coordinateSystem = tenths / 10 - 54;
-            break;
         case 430:
         case 490:
             out->lengthOffset = tenths == 430;
             break;
-        default: // G40, G49, G94, G98, G99: the modes StepDeck always runs in
+        default: // G54..G59; G40, G49, G94, G98, G99: the modes StepDeck always runs in
+            if (isCoordinateSystem(tenths))
+                out->coordinateSystem = tenths / 10 - 54;
             break;
         }
         return QString();
     }
 
+    // G54..G59 (tenths), LinuxCNC's modal group 12.
+    static bool isCoordinateSystem(int tenths)
+    {
+        return tenths >= 540 && tenths <= 590 && tenths % 10 == 0;
+    }
+
     // LinuxCNC's modal group of a mode-setting G code (tenths); nullopt for any other.
     static std::optional<int> modalGroupOf(int tenths)
     {
+        if (isCoordinateSystem(tenths))
+            return 12;
         switch (tenths) {
         case 800:
             return kMotionGroup; // G80 cancels the modal motion
@@ -267,13 +269,6 @@ private:
         case 611:
         case 640:
             return 13;
-        case 540:
-        case 550:
-        case 560:
-        case 570:
-        case 580:
-        case 590:
-            return 12;
         default:
             return std::nullopt;
         }

@@ -23,13 +23,12 @@ inline machine::MachineAxis machineAxis(const QString& name, const QString& cont
     return a;
 }
 
-// Writes the schema defaults of ModelInfo::setupBeforeMotion (E-LAB: tmInvSetup until the
-// ramp is written) and waits until the session acknowledged the write; false if it did not.
-inline bool writeSetupBeforeMotion(ControllerSession* session, int timeoutMs = 10000)
+// Writes `set` and waits until the session acknowledged the write; false if it did not.
+inline bool writeParametersAndWait(ControllerSession* session, const ParameterSet& set,
+                                   int timeoutMs = 10000)
 {
     QSignalSpy done(session, &ControllerSession::requestFinished);
-    const RequestId id =
-        session->writeParameters(setupBeforeMotionDefaults(*session->model()), false);
+    const RequestId id = session->writeParameters(set, false);
     return QTest::qWaitFor(
         [&] {
             return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& args) {
@@ -38,6 +37,28 @@ inline bool writeSetupBeforeMotion(ControllerSession* session, int timeoutMs = 1
             });
         },
         timeoutMs);
+}
+
+// Writes the schema defaults of ModelInfo::setupBeforeMotion (E-LAB: tmInvSetup until the
+// ramp is written) and waits until the session acknowledged the write; false if it did not.
+inline bool writeSetupBeforeMotion(ControllerSession* session, int timeoutMs = 10000)
+{
+    return writeParametersAndWait(session, setupBeforeMotionDefaults(*session->model()), timeoutMs);
+}
+
+// E-LAB programs with feeds up to 2000 steps/s: the board's feed mode runs below the start
+// speed (manual), and a stream of several axes goes at the slowest of the three feed speeds
+// while a G1 writes only the moving axes' (the contouring issue changes that): every axis gets
+// start speed 2000 and feed speed 1000.
+inline bool raiseElabFeedLimits(ControllerSession* table)
+{
+    ParameterValue start, feed;
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+        start.perAxis.insert(a, 2000);
+        feed.perAxis.insert(a, 1000);
+    }
+    return writeParametersAndWait(
+        table, {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}});
 }
 
 } // namespace stepdeck::test

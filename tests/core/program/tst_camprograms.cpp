@@ -86,22 +86,7 @@ bool TestCamPrograms::prepare()
     ControllerSession* table = m_machine->session("table");
     if (!test::writeSetupBeforeMotion(table))
         return false;
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    ParameterValue start, feed;
-    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
-        start.perAxis.insert(a, 2000);
-        feed.perAxis.insert(a, 1000);
-    }
-    const RequestId id = table->writeParameters(
-        {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}}, false);
-    if (!QTest::qWaitFor(
-            [&] {
-                return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& a) {
-                    const auto r = a.at(0).value<CommandResult>();
-                    return r.id == id && r.ok();
-                });
-            },
-            10000))
+    if (!test::raiseElabFeedLimits(table))
         return false;
     QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
     QString refusal;

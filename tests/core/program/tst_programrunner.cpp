@@ -599,35 +599,12 @@ void logArrivals(Machine* machine, Device& board, ArrivalLog* log)
     });
 }
 
-// Feed rates up to 2000 steps/s: the board's feed mode runs below its start speed (manual).
-// A stream of several axes goes at the slowest of the three feed speeds, and a G1 writes only
-// the moving axes' (the contouring issue changes that): Z's is set to the arcs' rate here.
-bool raiseStartSpeed(ControllerSession* table)
-{
-    QSignalSpy done(table, &ControllerSession::requestFinished);
-    ParameterValue start, feed;
-    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
-        start.perAxis.insert(a, 2000);
-        feed.perAxis.insert(a, 1000);
-    }
-    const RequestId id = table->writeParameters(
-        {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}}, false);
-    return QTest::qWaitFor(
-        [&] {
-            return std::any_of(done.cbegin(), done.cend(), [id](const QList<QVariant>& args) {
-                const auto r = args.at(0).value<CommandResult>();
-                return r.id == id && r.ok();
-            });
-        },
-        10000);
-}
-
 // G3 full circle of radius 1 mm about X11 Y10 (400 steps/mm): ceil(2 pi / (2 acos(1 - 0.01)))
 // = 23 chords, each arriving on the circle to within a step at the board, the last back at
 // the start; counter-clockwise.
 void TestProgramRunner::arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart()
 {
-    QVERIFY(raiseStartSpeed(m_machine->session("table")));
+    QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
     ArrivalLog log;
     logArrivals(m_machine.get(), *m_elab, &log);
     QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG3 I1 F150\nM30\n"));
@@ -649,7 +626,7 @@ void TestProgramRunner::arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart(
 // A pause during an arc holds between two chords, at the arc's line; resume sends the rest.
 void TestProgramRunner::pause_duringArc_holdsBetweenChordsResumeFinishesTheArc()
 {
-    QVERIFY(raiseStartSpeed(m_machine->session("table")));
+    QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
     ArrivalLog log;
     logArrivals(m_machine.get(), *m_elab, &log);
     QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
