@@ -55,12 +55,21 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("G92.2");
     case BlockKind::AxisOffsetRestore:
         return QStringLiteral("G92.3");
+    case BlockKind::DrillCycle:
+        return QStringLiteral("G81"); // blockWord(block) names the cycle's own code
     case BlockKind::RepeatStart:
         return QStringLiteral("O repeat");
     case BlockKind::RepeatEnd:
         return QStringLiteral("O endrepeat");
     }
     return QString();
+}
+
+QString blockWord(const ProgramBlock& block)
+{
+    if (block.kind == BlockKind::DrillCycle)
+        return QStringLiteral("G%1").arg(block.cycle.code);
+    return blockWord(block.kind);
 }
 
 int ProgramBlock::columnOf(const QString& word) const
@@ -76,7 +85,7 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
-           arc == o.arc && coordinateSystem == o.coordinateSystem &&
+           arc == o.arc && cycle == o.cycle && coordinateSystem == o.coordinateSystem &&
            machineCoordinates == o.machineCoordinates && fromPosition == o.fromPosition &&
            lengthTool == o.lengthTool && appliesLengthOffset == o.appliesLengthOffset &&
            message == o.message && oNumber == o.oNumber && count == o.count &&

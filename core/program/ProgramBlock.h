@@ -35,6 +35,7 @@ enum class BlockKind : quint8 {
     AxisOffsetReset, // G92.1: G92's offset zero
     AxisOffsetSuspend, // G92.2: G92's offset kept but not applied
     AxisOffsetRestore, // G92.3: applied again
+    DrillCycle,        // G81 G82 G83 G73: holes at X Y from R down to Z (DrillCycle)
     RepeatStart,       // O<n> repeat [count]
     RepeatEnd,         // O<n> endrepeat
 };
@@ -66,6 +67,28 @@ struct ArcWords
     }
 };
 
+// A drilling cycle as written (LinuxCNC's G81, G82, G83, G73; docs/programs.md "Drilling
+// cycles"): the hole's bottom Z and the retract plane R (program units; G91: R from the current
+// Z, Z from R), Q the peck depth (G83, G73), P the dwell at the bottom (G82), L repeats and the
+// retract mode (G98 to the initial level, G99 to R). R, Z, Q and P are sticky while the same
+// cycle stays the motion mode, as in LinuxCNC.
+struct CycleWords
+{
+    int code = 81;
+    double r = 0;
+    double bottom = 0; // Z
+    double peck = 0;   // Q
+    double dwell = 0;  // P, seconds
+    int repeats = 1;   // L
+    bool retractToR = false; // G99 (G98, the initial level, is the default)
+
+    bool operator==(const CycleWords& o) const
+    {
+        return code == o.code && r == o.r && bottom == o.bottom && peck == o.peck &&
+               dwell == o.dwell && repeats == o.repeats && retractToR == o.retractToR;
+    }
+};
+
 // M0 and M6: the program holds until the operator resumes (the block's prompt says why).
 inline bool waitsForOperator(BlockKind kind)
 {
@@ -81,6 +104,8 @@ inline bool waitsForOperator(BlockKind kind, bool optionalStops)
 
 // The word that makes a block, for messages and previews ("G0", "M64", "O repeat").
 QString blockWord(BlockKind kind);
+struct ProgramBlock;
+QString blockWord(const ProgramBlock& block); // as blockWord(kind); a cycle by its code ("G83")
 
 struct ProgramBlock
 {
@@ -102,6 +127,7 @@ struct ProgramBlock
     double rpm = 0;                      // M3 / M4 S
     QString prompt;                      // M0, M1: the comment on its line
     ArcWords arc;                        // G2/G3
+    CycleWords cycle;                    // G81..G83, G73 (Z is here, not in axes)
     // G54..G59 in effect (0 = G54); -1: none selected yet, the system active when the run
     // started (LinuxCNC keeps the active system across programs).
     int coordinateSystem = -1;

@@ -3,6 +3,7 @@
 // (ProgramSimulation.cpp); factsOf() in ProgramFacts.cpp.
 #include "ProgramCheck.h"
 #include "ArcPath.h"
+#include "DrillCycle.h"
 #include "ProgramParser.h"
 #include "ProgramSimulation.h"
 #include <QSet>
@@ -66,10 +67,13 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
     QSet<QString> withG1;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
         const ProgramBlock& b = program.blocks.at(i);
-        if (b.kind != BlockKind::Feed && !isArc(b.kind))
+        if (b.kind != BlockKind::Feed && !isArc(b.kind) && b.kind != BlockKind::DrillCycle)
             continue;
-        // An arc writes the rates of a G1 over the axes it moves (ArcPath::rateBlock).
-        const QStringList axes = isArc(b.kind) ? ArcPath::movingAxes(b) : b.axes.keys();
+        // An arc writes the rates of a G1 over the axes it moves (ArcPath::rateBlock), a
+        // drilling cycle those of Z (DrillCycle::rateBlock).
+        const QStringList axes = isArc(b.kind)                     ? ArcPath::movingAxes(b)
+                                 : b.kind == BlockKind::DrillCycle ? QStringList{QStringLiteral("Z")}
+                                                                   : b.axes.keys();
         for (const QString& name : axes)
             if (const machine::MachineAxis* a = d.axis(name))
                 withG1.insert(a->controller);
@@ -77,15 +81,25 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
     if (withG1.isEmpty())
         return;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
-        const ProgramBlock& b = program.blocks.at(i);
-        if (b.kind != BlockKind::Rapid)
+        const ProgramBlock& block = program.blocks.at(i);
+        if (block.kind != BlockKind::Rapid && block.kind != BlockKind::DrillCycle)
             continue;
+        // A drilling cycle moves X, Y and Z at the fast speed too.
+        const ProgramBlock b = block.kind == BlockKind::DrillCycle
+                                   ? DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d)
+                                   : block;
         for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it) {
             const machine::MachineAxis* a = d.axis(it.key());
             if (!a || !withG1.contains(a->controller))
                 continue;
             if (const QString label = unreadableRate(a->controller); !label.isEmpty()) {
                 errors->add(b.line, b.columnOf(a->name), [&] {
+                    if (block.kind == BlockKind::DrillCycle)
+                        return ProgramCheck::tr(
+                                   "%1: %4 moves it at the fast speed in a program with G1 on "
+                                   "controller \"%2\", whose fast speed (%3) cannot be read back "
+                                   "to be put back after G1; drill with G1 and F only")
+                            .arg(a->name, a->controller, label, blockWord(block));
                     return ProgramCheck::tr(
                                "%1: G0 in a program with G1 on controller \"%2\": its fast "
                                "speed (%3) cannot be read back to be put back after G1; move %1 "

@@ -27,6 +27,11 @@ std::optional<BlockKind> actionOfG(int code)
         return BlockKind::SetCoordinates;
     case 28:
         return BlockKind::Home;
+    case 73:
+    case 81:
+    case 82:
+    case 83:
+        return BlockKind::DrillCycle;
     case 92:
         return BlockKind::AxisOffset;
     default:
@@ -167,6 +172,8 @@ private:
         const std::optional<BlockKind> action = g ? actionOfG(code) : actionOfM(code);
         if (!action)
             return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+        if (action == BlockKind::DrillCycle)
+            out->cycleCode = code;
         return setAction(*action, w, out);
     }
 
@@ -222,7 +229,11 @@ private:
         case 490:
             out->lengthOffset = tenths == 430;
             break;
-        default: // G54..G59; G40, G49, G94, G98, G99: the modes StepDeck always runs in
+        case 980:
+        case 990:
+            out->retractToR = tenths == 990;
+            break;
+        default: // G54..G59; G40, G94: the modes StepDeck always runs in
             if (isCoordinateSystem(tenths))
                 out->coordinateSystem = tenths / 10 - 54;
             break;
@@ -293,11 +304,12 @@ private:
         }
     }
 
-    // G0 to G3: LinuxCNC's motion group, with G80 (G4 and G28 are of no modal group).
+    // G0 to G3 and the drilling cycles: LinuxCNC's motion group, with G80 (G4 and G28 are of
+    // no modal group).
     static bool isMotion(std::optional<BlockKind> action)
     {
         return action == BlockKind::Rapid || action == BlockKind::Feed ||
-               (action && isArc(*action));
+               action == BlockKind::DrillCycle || (action && isArc(*action));
     }
 
     static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
@@ -387,6 +399,8 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         return {column, why};
     if (words->relative)
         modal->relative = *words->relative;
+    if (words->retractToR)
+        modal->retractToR = *words->retractToR;
     if (words->inches)
         modal->inches = *words->inches;
     if (const ProgramWord* f = words->parameters.value('F')) {
@@ -414,6 +428,109 @@ std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState
     return {};
 }
 
+// A drilling cycle's number `letter`: from this line, or (sticky) from the line before while
+// the same cycle stays the motion mode; into *keep. *missing: neither has it.
+const ProgramWord* cycleNumber(const Words& sorted, QChar letter, bool sticky,
+                               std::optional<double>* keep, bool* missing)
+{
+    const ProgramWord* w = letter == QLatin1Char('Z') ? sorted.axes.value(QStringLiteral("Z"))
+                                                      : sorted.parameters.value(letter);
+    if (w)
+        *keep = w->value;
+    *missing = !w && (!sticky || !*keep);
+    return w;
+}
+
+// Z, R, Q (G83, G73) and P (G82) of a drilling cycle into *modal, each checked.
+std::pair<int, QString> cycleNumbers(const Words& sorted, int code, bool sticky, int column,
+                                     ModalState* modal)
+{
+    const QString g = QStringLiteral("G%1").arg(code);
+    const bool pecks = code == 83 || code == 73;
+    struct Number
+    {
+        QChar letter;
+        std::optional<double>* keep;
+        bool used;
+        QString need;
+    };
+    const Number numbers[] = {
+        {QLatin1Char('Z'), &modal->cycleBottom, true, ProgramLine::tr("the hole's bottom")},
+        {QLatin1Char('R'), &modal->cycleR, true, ProgramLine::tr("the retract plane")},
+        {QLatin1Char('Q'), &modal->cyclePeck, pecks, ProgramLine::tr("the depth of each peck")},
+        {QLatin1Char('P'), &modal->cycleDwell, code == 82,
+         ProgramLine::tr("the dwell at the bottom in seconds")},
+    };
+    for (const Number& n : numbers) {
+        if (!n.used) {
+            if (const ProgramWord* unused = sorted.parameters.value(n.letter))
+                return {unused->column,
+                        ProgramLine::tr("%1 is not used by %2").arg(unused->valueText, g)};
+            continue;
+        }
+        bool missing = false;
+        const ProgramWord* w = cycleNumber(sorted, n.letter, sticky, n.keep, &missing);
+        if (missing)
+            return {column, ProgramLine::tr("%1 needs %2: %3").arg(g, QString(n.letter), n.need)};
+        const double v = **n.keep;
+        if (n.letter == QLatin1Char('Q') && v <= 0)
+            return {w ? w->column : column,
+                    ProgramLine::tr("%1: Q, the depth of each peck, must be greater than 0").arg(g)};
+        if (n.letter == QLatin1Char('P') && (v < 0 || v > 1e6))
+            return {w ? w->column : column,
+                    ProgramLine::tr("%1: P must lie within 0..1000000 seconds").arg(g)};
+    }
+    return {};
+}
+
+// G81, G82, G83, G73 (LinuxCNC, docs/programs.md "Drilling cycles"): the cycle's numbers into
+// b->cycle and their sticky copies into *modal.
+std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, ProgramBlock* b)
+{
+    CycleWords& c = b->cycle;
+    c.code = sorted.cycleCode > 0 ? sorted.cycleCode : modal->cycleCode;
+    const QString g = QStringLiteral("G%1").arg(c.code);
+    const bool sticky = modal->motion == BlockKind::DrillCycle && modal->cycleCode == c.code;
+    const int column = sorted.actionWord ? sorted.actionWord->column
+                                         : sorted.axes.first()->column;
+    if (modal->plane != Plane::XY)
+        return {column, ProgramLine::tr("%1: drilling cycles run in the XY plane (G17) only")
+                            .arg(g)};
+    for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it)
+        if (it.key() != QLatin1String("X") && it.key() != QLatin1String("Y") &&
+            it.key() != QLatin1String("Z"))
+            return {it.value()->column,
+                    ProgramLine::tr("%1: a drilling cycle moves X, Y and Z only, not %2")
+                        .arg(g, it.key())};
+    if (const auto [at, why] = cycleNumbers(sorted, c.code, sticky, column, modal); at > 0)
+        return {at, why};
+    c.bottom = *modal->cycleBottom;
+    c.r = *modal->cycleR;
+    c.peck = c.code == 83 || c.code == 73 ? *modal->cyclePeck : 0.0;
+    c.dwell = c.code == 82 ? *modal->cycleDwell : 0.0;
+    c.retractToR = modal->retractToR;
+    if (const ProgramWord* l = sorted.parameters.value('L')) {
+        if (!isWhole(l->value) || l->value < 1 || l->value > kMaxCycleRepeats)
+            return {l->column, ProgramLine::tr("%1: L, the repeats, takes a whole number 1..%2")
+                                   .arg(l->valueText)
+                                   .arg(kMaxCycleRepeats)};
+        c.repeats = int(l->value);
+    }
+    // LinuxCNC refuses a bottom above the retract plane (G91: Z is measured from R).
+    if (modal->relative ? c.bottom > 0 : c.bottom > c.r)
+        return {column, modal->relative
+                            ? ProgramLine::tr("%1: in G91, Z is measured down from R: not above 0")
+                                  .arg(g)
+                            : ProgramLine::tr("%1: Z%2 lies above R%3: the hole's bottom must lie "
+                                              "below the retract plane")
+                                  .arg(g)
+                                  .arg(c.bottom)
+                                  .arg(c.r)};
+    modal->motion = BlockKind::DrillCycle;
+    modal->cycleCode = c.code;
+    return {};
+}
+
 // The block's kind, axes and word columns: its action, or the modal motion for a line of
 // axis words; the modal motion afterwards into *modal.
 std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, ProgramBlock* b)
@@ -433,11 +550,19 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
     if (const auto [column, why] = checkActionWords(sorted, b); column > 0)
         return {column, why};
     const bool arc = isArc(b->kind);
-    if ((b->kind == BlockKind::Feed || arc) && (!sorted.axes.isEmpty() || arc) && !modal->feed)
+    const bool cycle = b->kind == BlockKind::DrillCycle;
+    if ((b->kind == BlockKind::Feed || arc || cycle) && (!sorted.axes.isEmpty() || arc || cycle) &&
+        !modal->feed)
         return {sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
                 ProgramLine::tr("%1 needs a feed rate: F on this line or an earlier one")
-                    .arg(blockWord(b->kind))};
-    if (arc) {
+                    .arg(cycle ? QStringLiteral("G%1").arg(sorted.cycleCode > 0
+                                                               ? sorted.cycleCode
+                                                               : modal->cycleCode)
+                               : blockWord(b->kind))};
+    if (cycle) {
+        if (const auto [column, why] = drillCycle(sorted, modal, b); column > 0)
+            return {column, why};
+    } else if (arc) {
         modal->motion = b->kind; // an arc always moves (its centre words are on the line)
     } else if (b->kind == BlockKind::Rapid || b->kind == BlockKind::Feed) {
         modal->motion = b->kind;
@@ -450,6 +575,8 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
         b->axes.insert(it.key(), it.value()->value);
         b->columns.insert(it.key(), it.value()->column);
     }
+    if (cycle)
+        b->axes.remove(QStringLiteral("Z")); // the hole's bottom: b->cycle.bottom
     for (auto it = sorted.parameters.cbegin(); it != sorted.parameters.cend(); ++it)
         b->columns.insert(QString(it.key()), it.value()->column);
     b->actionColumn = sorted.actionWord ? sorted.actionWord->column : 0;

@@ -23,6 +23,10 @@ struct ModalState
     int coordinateSystem = -1;           // G54..G59 (-1: none yet, the run's active one)
     std::optional<int> loadedTool;       // the tool the last M6 loaded
     int lengthTool = -1;                 // G43's tool (-1: G49, none)
+    bool retractToR = false;             // G99 (G98 default): where a drilling cycle retracts
+    // The drilling cycle in effect (motion DrillCycle): its code and its sticky numbers.
+    int cycleCode = 0;
+    std::optional<double> cycleR, cycleBottom, cyclePeck, cycleDwell;
 };
 
 // One lexed line to its block (ProgramParser's line step): which words it has, whether they

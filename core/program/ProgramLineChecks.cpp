@@ -24,6 +24,9 @@ QString allowedParameters(BlockKind kind)
         return QStringLiteral("FIJKRP");
     case BlockKind::SetCoordinates:
         return QStringLiteral("FLPR");
+    case BlockKind::DrillCycle:
+        return QStringLiteral("FRQPL"); // which cycle takes Q or P: ProgramLine's drillCycle
+
     default:
         return QStringLiteral("F");
     }
@@ -33,7 +36,7 @@ bool takesAxes(BlockKind kind)
 {
     return kind == BlockKind::Rapid || kind == BlockKind::Feed || kind == BlockKind::Home ||
            kind == BlockKind::Modal || isArc(kind) || kind == BlockKind::SetCoordinates ||
-           kind == BlockKind::AxisOffset;
+           kind == BlockKind::AxisOffset || kind == BlockKind::DrillCycle;
 }
 
 // LinuxCNC's arc planes (docs/programs.md "Arcs"): the two axes in the plane in the order

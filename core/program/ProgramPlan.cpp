@@ -1,6 +1,7 @@
 // The check's first part (ProgramCheck): each block against what the machine's controllers
 // take, before any position is followed (docs/programs.md "Check").
 #include "ArcPath.h"
+#include "DrillCycle.h"
 #include "ProgramRules.h"
 #include "ProgramSimulation.h"
 #include "ProgramUnits.h"
@@ -55,6 +56,10 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     case BlockKind::ArcClockwise:
     case BlockKind::ArcCounterClockwise:
         planArc(block, &out);
+        checkSetup(block, out);
+        break;
+    case BlockKind::DrillCycle:
+        planCycle(block, &out);
         checkSetup(block, out);
         break;
     case BlockKind::Home:
@@ -125,6 +130,19 @@ void ProgramPlan::planArc(const ProgramBlock& block, PlannedBlock* out)
         if (axisIndex(m_facts.description, name) < 0)
             rates.axes.remove(name);
     planMove(rates, out);
+}
+
+// G81..G83, G73: the fast speeds of X, Y, Z (the axis moves) and Z's rate at F as a G1's, kept
+// with the cycle's own block so that errors name its words; the moves themselves are the walk's
+// (ProgramSimulation::cycle), which knows where the cycle starts.
+void ProgramPlan::planCycle(const ProgramBlock& block, PlannedBlock* out)
+{
+    const machine::MachineDescription& d = m_facts.description;
+    planMove(DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d), out);
+    const ProgramBlock feed = DrillCycle::rateBlock(block, DrillCycle::Kind::Feed, d);
+    const int z = axisIndex(d, QStringLiteral("Z"));
+    if (z >= 0 && checkRate(feed, d.axes.at(z), &out->feedSpeed))
+        checkFeedWrite(feed);
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s

@@ -46,7 +46,7 @@ ProgramRunner::ProgramRunner(machine::Machine* machine, QObject* parent)
 {
     m_dwell.setSingleShot(true);
     m_dwell.setTimerType(Qt::PreciseTimer);
-    connect(&m_dwell, &QTimer::timeout, this, &ProgramRunner::blockDone);
+    connect(&m_dwell, &QTimer::timeout, this, &ProgramRunner::onDwellDone);
     m_inputTimeout.setSingleShot(true);
     connect(&m_inputTimeout, &QTimer::timeout, this, [this] {
         fail(ErrorKind::Timeout, tr("input %1 did not reach its level in time").arg(m_waitInput));
@@ -94,7 +94,8 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
             it != facts.knownPositions.cend())
             m_programmed[size_t(i)] = it.value();
     m_arc.reset();
-    m_heldInArc = false;
+    m_cycle.reset();
+    m_heldInPath = false;
     // advance() steps onto the first block on or after fromLine.
     int first = 0;
     while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)
@@ -159,8 +160,8 @@ void ProgramRunner::resume()
     m_stepOnly = false;
     m_prompt.clear();
     setState(RunState::Running);
-    if (std::exchange(m_heldInArc, false))
-        sendChord(); // on along the arc it held in
+    if (m_heldInPath)
+        resumePath(); // on along the arc or cycle it held in
     else
         runNext();
 }
@@ -173,8 +174,8 @@ void ProgramRunner::step()
     m_stepOnly = true;
     m_prompt.clear();
     setState(RunState::Running);
-    if (std::exchange(m_heldInArc, false))
-        sendChord(); // the rest of the arc is the step
+    if (m_heldInPath)
+        resumePath(); // the rest of the arc or cycle is the step
     else
         runNext();
 }
@@ -264,13 +265,10 @@ void ProgramRunner::blockDone()
     m_motion = 0;
     ++m_blocksDone;
     const ProgramBlock& block = m_program.blocks.at(m_index);
-    if (m_arc) {
-        for (const auto& [axis, value] : m_arc->end())
-            m_programmed[size_t(axis)] = value;
-        m_arc.reset();
-    } else {
+    if (m_arc || m_cycle)
+        endPath(&m_programmed);
+    else
         m_coordinates.advance(block, m_machine->description(), &m_programmed);
-    }
     Q_EMIT blockFinished(block.line);
     if (block.kind == BlockKind::End) {
         finishProgram();
@@ -324,7 +322,8 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_waitInput = 0;
     m_motion = 0;
     m_arc.reset();
-    m_heldInArc = false;
+    m_cycle.reset();
+    m_heldInPath = false;
     m_requests.clear();
     m_afterRequests = nullptr;
     if (state != RunState::Finished && m_rates)

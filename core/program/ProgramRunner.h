@@ -1,5 +1,6 @@
 #pragma once
 #include "ArcPath.h"
+#include "DrillCycle.h"
 #include "ProgramBlock.h"
 #include "ProgramCheck.h"
 #include "model/CommandResult.h"
@@ -141,10 +142,19 @@ private:
     void startBlock(const ProgramBlock& block);
     void startMove(const ProgramBlock& block);
     void sendMove(const ProgramBlock& block);
-    void startArc(const ProgramBlock& block);
     void applyCoordinates(const ProgramBlock& block);
+    // Blocks of many moves: an arc's chords, a cycle's moves (ProgramRunnerPaths.cpp).
+    void startArc(const ProgramBlock& block);
     void sendChord();
-    bool nextChord(); // after a chord arrived: true while the arc goes on (or holds)
+    void startCycle(const ProgramBlock& block);
+    void startSegment(); // the cycle's m_segment: its rates, then its move or dwell
+    void sendSegment();
+    // After a chord or a cycle's move arrived (or its dwell ended): true while the block goes
+    // on, or holds there on pause().
+    bool nextInPath();
+    void resumePath();                          // on from where the block held (m_heldInPath)
+    void endPath(AxisPositions* programmed);    // the block done: its end as the current point
+    void onDwellDone();
     void startHome(const ProgramBlock& block);
     void startWaitInput(const ProgramBlock& block);
     void checkInput();
@@ -196,7 +206,9 @@ private:
     AxisPositions m_programmed;
     std::optional<ArcPath> m_arc; // the arc running, its chords sent one at a time
     qint64 m_chord = 0;           // the chord under way (1..chords)
-    bool m_heldInArc = false;     // paused between two chords of m_arc
+    std::optional<DrillCycle> m_cycle; // the drilling cycle running, one move at a time
+    size_t m_segment = 0;              // its move under way
+    bool m_heldInPath = false;         // paused between two moves of m_arc or m_cycle
     QList<QMetaObject::Connection> m_connections;
 };
 

@@ -21,6 +21,9 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     case BlockKind::ArcCounterClockwise:
         startArc(block);
         return;
+    case BlockKind::DrillCycle:
+        startCycle(block);
+        return;
     case BlockKind::Home:
         startHome(block);
         return;
@@ -69,24 +72,6 @@ void ProgramRunner::sendMove(const ProgramBlock& block)
         fail(ErrorKind::Refused, refusal);
 }
 
-// G2/G3: the path from the current point (ArcPath, as the check took it), its rates written
-// once as for a G1 over its axes, then one chord after the other, each an absolute move that
-// starts when the one before arrived; a pause holds between two chords.
-void ProgramRunner::startArc(const ProgramBlock& block)
-{
-    std::variant<ArcPath, ArcPath::Error> planning =
-        ArcPath::plan(block, m_machine->description(), m_programmed,
-                      m_coordinates.offsets(block, m_machine->description()));
-    if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
-        fail(ErrorKind::Refused, e->message); // the check refused it first
-        return;
-    }
-    m_arc = std::get<ArcPath>(std::move(planning));
-    m_chord = 0;
-    const QMap<RequestId, QString> rates = m_rates->before(ArcPath::rateBlock(block));
-    awaitRequests(rates, [this] { sendChord(); });
-}
-
 // G10, G92 and its kin change the coordinates of the blocks after them; nothing is sent. A G10
 // is reported, so the window keeps the table for the next runs.
 void ProgramRunner::applyCoordinates(const ProgramBlock& block)
@@ -101,36 +86,6 @@ void ProgramRunner::applyCoordinates(const ProgramBlock& block)
         Q_EMIT coordinateSystemSet(system, m_coordinates.systems()[size_t(system)]);
     }
     blockDone();
-}
-
-void ProgramRunner::sendChord()
-{
-    if (!m_arc)
-        return;
-    ++m_chord;
-    QMap<QString, double> targets;
-    const machine::MachineDescription& d = m_machine->description();
-    for (const auto& [axis, value] : m_arc->pointAt(m_chord))
-        targets.insert(d.axes.at(axis).name, value);
-    QString refusal;
-    m_motion = m_machine->move(targets, true, &refusal, machine::Machine::MoveKind::Feed);
-    if (m_motion == 0)
-        fail(ErrorKind::Refused, refusal);
-}
-
-bool ProgramRunner::nextChord()
-{
-    if (!m_arc || m_chord >= m_arc->chords())
-        return false;
-    if (m_pauseAsked) {
-        m_pauseAsked = false;
-        m_heldInArc = true;
-        setState(RunState::Paused);
-        Q_EMIT paused(currentLine(), QString());
-        return true;
-    }
-    sendChord();
-    return true;
 }
 
 void ProgramRunner::startHome(const ProgramBlock& block)
@@ -314,7 +269,7 @@ void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message
         failSoon(ErrorKind::None, message);
         return;
     }
-    if (nextChord())
+    if (nextInPath())
         return;
     blockDone();
 }

@@ -90,6 +90,9 @@ void ProgramSimulation::execute(PlannedBlock& planned)
     case BlockKind::ArcCounterClockwise:
         arc(planned);
         break;
+    case BlockKind::DrillCycle:
+        cycle(planned);
+        break;
     case BlockKind::Home:
         home(planned);
         break;

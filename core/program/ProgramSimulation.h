@@ -3,6 +3,7 @@
 // and walked with their repeats counted out (ProgramSimulation.cpp, arcs in
 // ProgramSimulationArc.cpp).
 #include "ArcPath.h"
+#include "DrillCycle.h"
 #include "ProgramCheck.h"
 #include <algorithm>
 #include <vector>
@@ -30,6 +31,7 @@ struct PlannedBlock
     int moveCount = 0;
     int partner = -1;      // repeats: the other end's index
     bool reported = false; // an arc's or G10's error, once however often a repeat runs it
+    double feedSpeed = 0;  // a drilling cycle's Z at F, unit/s (0: not known)
 };
 
 struct PlannedProgram
@@ -80,6 +82,7 @@ public:
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
     void planArc(const ProgramBlock& block, PlannedBlock* out);
+    void planCycle(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, const machine::MachineAxis& axis, double* speed);
@@ -130,6 +133,8 @@ private:
     void arc(PlannedBlock& planned);
     void coordinates(PlannedBlock& planned);
     void arcChords(const ArcPath& path, PlannedBlock& planned);
+    void cycle(PlannedBlock& planned);
+    bool countChords(qint64 chords, PlannedBlock& planned); // false: the run's bound is passed
     // Whether machine position `to` of the axis lies outside its soft limits (reported once
     // per axis word).
     void checkLimit(const ProgramBlock& block, AxisMove& m, double to);

@@ -53,22 +53,31 @@ void ProgramSimulation::arc(PlannedBlock& planned)
     arcChords(path, planned);
 }
 
+// Arcs' chords and cycles' moves, counted out like blocks: false (and an error, once) past
+// ProgramCheck::kMaxChordsRun.
+bool ProgramSimulation::countChords(qint64 chords, PlannedBlock& planned)
+{
+    m_chordsRun += chords;
+    if (m_chordsRun <= ProgramCheck::kMaxChordsRun)
+        return true;
+    if (!planned.reported) {
+        planned.reported = true;
+        const ProgramBlock& block = *planned.block;
+        m_errors->add(block.line, block.columnOf({}), [&] {
+            return ProgramCheck::tr("the run's arcs and cycles need more than %1 moves")
+                .arg(ProgramCheck::kMaxChordsRun);
+        });
+    }
+    return false;
+}
+
 // Each chord as the run sends it: an absolute move of every moving axis, its time the slowest
 // axis' (each axis runs at its own rate, no interpolation: docs/programs.md "How F maps").
 void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
-    m_chordsRun += path.chords();
-    if (m_chordsRun > ProgramCheck::kMaxChordsRun) {
-        if (!planned.reported) {
-            planned.reported = true;
-            m_errors->add(block.line, block.columnOf({}), [&] {
-                return ProgramCheck::tr("the run's arcs need more than %1 chords")
-                    .arg(ProgramCheck::kMaxChordsRun);
-            });
-        }
+    if (!countChords(path.chords(), planned))
         return;
-    }
     std::vector<double> speed(m_axes.size(), 0.0);
     for (const auto& [axis, value] : path.end()) {
         Q_UNUSED(value);
@@ -93,6 +102,54 @@ void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
         m_seconds += seconds;
         addPoint(block.line);
     }
+}
+
+} // namespace stepdeck::program
+
+namespace stepdeck::program {
+
+// G81..G83, G73: each of the cycle's moves as the run sends it (DrillCycle, from the same
+// current point), the soft limits at each target, the preview's points with rapids apart.
+void ProgramSimulation::cycle(PlannedBlock& planned)
+{
+    const ProgramBlock& block = *planned.block;
+    const std::variant<DrillCycle, DrillCycle::Error> planning =
+        DrillCycle::plan(block, m_facts.description, m_programmed,
+                         m_coordinates.offsets(block, m_facts.description));
+    if (const DrillCycle::Error* e = std::get_if<DrillCycle::Error>(&planning)) {
+        if (!planned.reported) {
+            planned.reported = true;
+            m_errors->add(block.line, e->column, [&] { return e->message; });
+        }
+        return;
+    }
+    const DrillCycle& cycle = std::get<DrillCycle>(planning);
+    if (!countChords(qint64(cycle.segments().size()), planned))
+        return;
+    for (const DrillCycle::Segment& s : cycle.segments()) {
+        double seconds = s.seconds;
+        for (const auto& [axis, value] : s.targets) {
+            AxisMove* m = plannedMove(planned, axis);
+            if (!m)
+                continue; // the plan named its axis
+            const size_t a = size_t(axis);
+            const machine::MachineAxis& machineAxis = m_axes.at(axis);
+            checkLimit(block, *m, value);
+            const qint64 steps = machineAxis.toSteps(value);
+            const double speed = s.kind == DrillCycle::Kind::Feed ? planned.feedSpeed : m->speed;
+            if (speed > 0)
+                seconds = std::max(seconds, std::abs(double(steps - m_steps[a])) /
+                                                machineAxis.stepsPerUnit / speed);
+            m_steps[a] = steps;
+            m_known[a] = 1;
+            m_moved[a] = 1;
+            noteExtent(axis);
+        }
+        m_seconds += seconds;
+        addPoint(block.line, s.kind == DrillCycle::Kind::Rapid);
+    }
+    for (const auto& [axis, value] : cycle.end())
+        m_programmed[size_t(axis)] = value;
 }
 
 } // namespace stepdeck::program

@@ -27,3 +27,6 @@ stepdeck_add_test(tst_camprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_camprogr
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
 target_compile_definitions(tst_camprograms PRIVATE
                            STEPDECK_CAM_DIR="${CMAKE_CURRENT_LIST_DIR}/cam")
+# Drilling cycles G81, G82, G83, G73 (issue 29): the words and the moves the check and the run
+# share.
+stepdeck_add_test(tst_drillcycle SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drillcycle.cpp LABELS unit)

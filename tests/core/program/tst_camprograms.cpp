@@ -1,6 +1,6 @@
 // Programs in the styles CAM posts write (issue 29), run end to end on an E-LAB table (X, Y, Z in
 // mm, 400 steps/mm) on a pseudo-terminal: their headers, tool changes with a tool table, work
-// offsets, G43, G53, arcs of I J and R. The programs are our own, in tests/core/program/cam/.
+// offsets, G43, G53, arcs of I J and R, drilling cycles. The programs are our own, in tests/core/program/cam/.
 // What the board reached is read at the simulator each time a move arrived, and compared with
 // the path the check planned (within a step) and with points worked out by hand.
 #include "MachineTestSupport.h"
@@ -130,6 +130,19 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                              << "Load tool 2 (2 mm ball nose)"
                              << QList<double>{16, 15, -20.5, // the full circle back at its start
                                               14, 17, -21};  // the helix' end
+    // Inch; G98 back to Z0.2 (machine -14.92), G99 to R (-18.73); Q0.025 in = 0.635 mm pecks.
+    QTest::newRow("CamBam drilling") << "cambam_style.nc"
+                                     << "Load tool 1 (3 mm flat end mill)"
+                                     << QList<double>{15.08, 15.08, -18.73, // G81 at R
+                                                      15.08, 15.08, -22.54, // its bottom
+                                                      15.08, 15.08, -14.92, // G98
+                                                      20.16, 15.08, -22.54, // X0.4's bottom
+                                                      20.16, 15.08, -14.92, //
+                                                      15.08, 20.16, -18.73, // G83 at R
+                                                      15.08, 20.16, -20.0,  // second peck
+                                                      15.08, 20.16, -22.54, // the bottom
+                                                      15.08, 20.16, -18.73, // G99
+                                                      15.08, 20.16, -14.92};
     QTest::newRow("Estlcam") << "estlcam_style.nc" << QString()
                              << QList<double>{13, 13, -20.5, 15, 15, -20.5, 17, 13, -20.5};
 }

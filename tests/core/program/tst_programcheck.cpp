@@ -267,6 +267,33 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "Y=0 Z=0"
         << "G19 G2 Y10 Z0 J5 F60"
         << QStringList{"1:12: Z reaches 5 mm, outside the soft limits -50..0 mm"};
+    // Drilling cycles (issue 29): every move of the cycle from the current point.
+    QTest::newRow("cycle within the limits")
+        << "mill"
+        << "X=0 Y=0 Z=0"
+        << "G99 G81 X10 Y10 Z-5 R-1 F60\nX20\nG80" << QStringList{};
+    QTest::newRow("cycle's bottom past a soft limit")
+        << "mill"
+        << "X=0 Y=0 Z=0"
+        << "G81 X10 Y10 Z-60 R-1 F60"
+        << QStringList{"1:13: Z reaches -60 mm, outside the soft limits -50..0 mm"};
+    QTest::newRow("cycle's R above the travel")
+        << "mill"
+        << "X=0 Y=0 Z=-10"
+        << "G81 X10 Y10 Z-20 R5 F60"
+        << QStringList{"1:13: Z reaches 5 mm, outside the soft limits -50..0 mm"};
+    QTest::newRow("cycle from an unknown Z")
+        << "mill"
+        << "X=0 Y=0"
+        << "G81 X10 Y10 Z-5 R-1 F60"
+        << QStringList{"1:13: G81: the position of Z is unknown, so the cycle has no start: "
+                       "reference the axis first (G28 Z)"};
+    QTest::newRow("cycle's feed beyond Z's rate")
+        << "mill"
+        << "X=0 Y=0 Z=0"
+        << "G81 X10 Y10 Z-5 R-1 F600000"
+        << QStringList{"1:21: F600000 is 1000000 steps/s on Z; controller \"table\" takes "
+                       "0..65535 steps/s (Feed speed)"};
     QTest::newRow("repeat of count 0: its moves never run")
         << "mill"
         << "X=0"

@@ -15,6 +15,7 @@ private Q_SLOTS:
     void preview_figures_extentsPathAndEstimatedSeconds();
     void preview_millionPassRepeat_countedOutPathBounded();
     void preview_arc_chordPointsWithinToleranceRapidsMarked();
+    void preview_cycle_movesRapidsAndDwellTimed();
     void check_workOffsets_targetsInWorkLimitsInMachine_data();
     void check_workOffsets_targetsInWorkLimitsInMachine();
 };
@@ -116,6 +117,30 @@ void TestProgramPreview::preview_arc_chordPointsWithinToleranceRapidsMarked()
     // each chord as long as its longer axis; between 2 x 10 / 10 and 2 pi 5 / 10 seconds.
     const double arcSeconds = arc.last().seconds - v.path.at(1).seconds;
     QVERIFY2(arcSeconds > 2.0 && arcSeconds < 3.15, qPrintable(QString::number(arcSeconds)));
+}
+
+// A drilling cycle in the preview: a point per move, rapids marked, the feed at F and the
+// dwell counted in the estimate; the current point after it is the retract level.
+void TestProgramPreview::preview_cycle_movesRapidsAndDwellTimed()
+{
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = {{"X", 0.0}, {"Y", 0.0}, {"Z", 0.0}};
+    const Program p = parsed("G82 X10 Z-6 R-1 P2 F60\nG80\nG1 Y5\n", facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const QList<PreviewPoint>& path = result.preview.path;
+    // The start, X10, Z-1, Z-6 (feed), the dwell, Z0 (G98: back to where Z began), Y5.
+    QCOMPARE(path.size(), 7);
+    const QList<bool> rapid{true, true, false, false, true, false};
+    for (int i = 1; i < path.size(); ++i) {
+        QCOMPARE(path.at(i).rapid, rapid.at(i - 1));
+    }
+    QCOMPARE(path.at(3).position.value("Z"), -6.0);
+    QCOMPARE(path.at(5).position.value("Z"), 0.0);
+    QCOMPARE(path.at(6).position.value("X"), 10.0);
+    // 5 mm at F60 (1 mm/s) and 2 s of dwell between the point at R and the bottom's dwell.
+    QCOMPARE(path.at(4).seconds - path.at(2).seconds, 7.0);
+    QCOMPARE(result.preview.extents["Z"].minimum, -6.0);
 }
 
 void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine_data()
