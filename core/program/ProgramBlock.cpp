@@ -33,6 +33,8 @@ QString blockWord(BlockKind kind)
         return QStringLiteral("M4");
     case BlockKind::SpindleOff:
         return QStringLiteral("M5");
+    case BlockKind::SpindleSpeed:
+        return QStringLiteral("S");
     case BlockKind::CoolantMist:
         return QStringLiteral("M7");
     case BlockKind::CoolantFlood:
@@ -84,7 +86,7 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
     return line == o.line && text == o.text && kind == o.kind && axes == o.axes &&
            relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
-           number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && prompt == o.prompt &&
+           number == o.number && inputHigh == o.inputHigh && rpm == o.rpm && spindleChange == o.spindleChange && prompt == o.prompt &&
            arc == o.arc && cycle == o.cycle && coordinateSystem == o.coordinateSystem &&
            machineCoordinates == o.machineCoordinates && fromPosition == o.fromPosition &&
            lengthTool == o.lengthTool && appliesLengthOffset == o.appliesLengthOffset &&

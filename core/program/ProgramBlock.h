@@ -24,6 +24,7 @@ enum class BlockKind : quint8 {
     SpindleOn,       // M3 S<rpm>
     SpindleReverse,  // M4 S<rpm>: counter-clockwise, only where the controller can reverse
     SpindleOff,      // M5
+    SpindleSpeed,    // S alone on a line: the speed of the spindle from now on (LinuxCNC)
     CoolantMist,     // M7
     CoolantFlood,    // M8
     CoolantOff,      // M9
@@ -124,7 +125,8 @@ struct ProgramBlock
     double seconds = 0;                  // G4 P, M66 Q
     int number = 0;                      // M64/M65/M66 P: output or input number; M6: the tool (T)
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
-    double rpm = 0;                      // M3 / M4 S
+    double rpm = 0;                      // S in effect (modal; 0 until a line sets it)
+    bool spindleChange = false;          // S is on this line (a running spindle changes speed)
     QString prompt;                      // M0, M1: the comment on its line
     ArcWords arc;                        // G2/G3
     CycleWords cycle;                    // G81..G83, G73 (Z is here, not in axes)

@@ -403,6 +403,11 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         modal->retractToR = *words->retractToR;
     if (words->inches)
         modal->inches = *words->inches;
+    if (const ProgramWord* s = words->parameters.value('S')) {
+        if (s->value < 0 || s->value > 1e6)
+            return {s->column, ProgramLine::tr("%1 must lie within 0..1000000").arg(s->valueText)};
+        modal->spindleSpeed = s->value;
+    }
     if (const ProgramWord* f = words->parameters.value('F')) {
         if (f->value <= 0)
             return {f->column,
@@ -536,6 +541,9 @@ std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, Progr
 std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, ProgramBlock* b)
 {
     b->kind = sorted.action.value_or(BlockKind::Modal);
+    b->spindleChange = sorted.parameters.contains('S');
+    if (!sorted.action && sorted.axes.isEmpty() && b->spindleChange)
+        b->kind = BlockKind::SpindleSpeed; // "S12000" alone (LinuxCNC)
     if (!sorted.action && !sorted.axes.isEmpty()) {
         if (!modal->motion)
             return {sorted.axes.first()->column,
@@ -567,9 +575,10 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
     } else if (b->kind == BlockKind::Rapid || b->kind == BlockKind::Feed) {
         modal->motion = b->kind;
         // A motion word without axis words ("G1", "G1 F100") only sets the modal motion and
-        // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28).
+        // feed, as in LinuxCNC: nothing moves, so nothing can refuse it (issue 28); with S
+        // ("G1 S0", LightBurn) it sets the spindle's speed.
         if (sorted.axes.isEmpty())
-            b->kind = BlockKind::Modal;
+            b->kind = b->spindleChange ? BlockKind::SpindleSpeed : BlockKind::Modal;
     }
     for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it) {
         b->axes.insert(it.key(), it.value()->value);
@@ -589,6 +598,7 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->relative = modal.relative;
     block->inches = modal.inches;
     block->feed = modal.feed;
+    block->rpm = modal.spindleSpeed;
     block->plane = modal.plane;
     block->coordinateSystem = modal.coordinateSystem;
     block->lengthTool = modal.lengthTool;

@@ -12,6 +12,7 @@ struct ModalState
     bool relative = false;           // G91 (G90 default)
     bool inches = false;             // G20 (G21 default)
     std::optional<double> feed;      // F
+    double spindleSpeed = 0;         // S (LinuxCNC starts at 0)
     std::optional<BlockKind> motion; // G0..G3, once given: a line of axis words moves so
     Plane plane = Plane::XY;         // G17 (default), G18, G19
     // G61 exact path, G61.1 exact stop, G64 blending (LinuxCNC's default) with its P

@@ -11,9 +11,6 @@ QString allowedParameters(BlockKind kind)
     switch (kind) {
     case BlockKind::Dwell:
         return QStringLiteral("FP");
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-        return QStringLiteral("FS");
     case BlockKind::OutputOn:
     case BlockKind::OutputOff:
         return QStringLiteral("FP");
@@ -79,6 +76,8 @@ public:
         for (auto it = m_words.parameters.cbegin(); it != m_words.parameters.cend(); ++it) {
             if (it.key() == QLatin1Char('H') && m_words.lengthOffset == true)
                 continue; // G43's (ProgramLine)
+            if (it.key() == QLatin1Char('S'))
+                continue; // modal, as F: any line may set the spindle's speed (LinuxCNC)
             if (!allowedParameters(kind).contains(it.key()))
                 return {it.value()->column, notTaken(it.value()->valueText)};
         }
@@ -87,9 +86,6 @@ public:
         switch (kind) {
         case BlockKind::Dwell:
             return number('P', 0, 1e6, false, &m_block->seconds);
-        case BlockKind::SpindleOn:
-        case BlockKind::SpindleReverse:
-            return number('S', 0, 1e6, false, &m_block->rpm);
         case BlockKind::OutputOn:
         case BlockKind::OutputOff:
             return whole('P', &m_block->number);

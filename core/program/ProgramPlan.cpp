@@ -47,6 +47,7 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     out.block = &block;
     out.partner = block.partner;
     checkTools(block);
+    checkSpindleChange(block);
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:
@@ -229,17 +230,33 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
     }
 }
 
-void ProgramPlan::checkAnyController(const ProgramBlock& block, bool Capabilities::*has)
+// S on a line (LinuxCNC: any line; LightBurn's "G1 X5 S500", pcb2gcode's "G00 S10000"): the
+// speed a running spindle changes to, within the same rules as M3's S. M3 and M4 check their
+// own S.
+void ProgramPlan::checkSpindleChange(const ProgramBlock& block)
+{
+    if (!block.spindleChange || block.kind == BlockKind::SpindleOn ||
+        block.kind == BlockKind::SpindleReverse)
+        return;
+    if (block.kind != BlockKind::SpindleOff &&
+        !checkAnyController(block, &Capabilities::spindle, QStringLiteral("S")))
+        return;
+    checkSpindleSpeed(block);
+}
+
+bool ProgramPlan::checkAnyController(const ProgramBlock& block, bool Capabilities::*has,
+                                     const QString& word)
 {
     for (const machine::MachineController& c : m_facts.description.controllers)
         if (m_facts.capabilities.value(c.id).*has)
-            return;
-    const QString word = blockWord(block.kind);
-    error(block, block.columnOf({}), [&] {
+            return true;
+    const QString name = word.isEmpty() ? blockWord(block.kind) : word;
+    error(block, block.columnOf(word), [&] {
         return has == &Capabilities::spindle
-                   ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(word)
-                   : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(word);
+                   ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(name)
+                   : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(name);
     });
+    return false;
 }
 
 void ProgramPlan::checkIo(const ProgramBlock& block)

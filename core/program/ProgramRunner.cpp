@@ -96,6 +96,7 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     m_arc.reset();
     m_cycle.reset();
     m_heldInPath = false;
+    m_spindleOn = false;
     // advance() steps onto the first block on or after fromLine.
     int first = 0;
     while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)

@@ -139,7 +139,8 @@ private:
     QString promptOf(const ProgramBlock& block) const;
     QStringList controllersWithoutStop() const;
     // What each block sends (ProgramRunnerBlocks.cpp).
-    void startBlock(const ProgramBlock& block);
+    void startBlock(const ProgramBlock& block);  // a new S first, then startAction()
+    void startAction(const ProgramBlock& block); // what the block's action sends
     void startMove(const ProgramBlock& block);
     void sendMove(const ProgramBlock& block);
     void applyCoordinates(const ProgramBlock& block);
@@ -158,7 +159,7 @@ private:
     void startHome(const ProgramBlock& block);
     void startWaitInput(const ProgramBlock& block);
     void checkInput();
-    void startSwitch(const ProgramBlock& block);
+    void startSwitch(const ProgramBlock& block, std::function<void()> then);
     QString spindleRefusal(const ProgramBlock& block, const QString& controller,
                            const ControllerSession& s, const MachineFacts& facts) const;
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
@@ -181,6 +182,7 @@ private:
     bool m_pauseAsked = false;
     bool m_stepOnly = false;
     bool m_optionalStops = true;
+    bool m_spindleOn = false; // an M3/M4 of this run is in effect (no M5 since)
     bool m_aborting = false;
     QString m_prompt;
     QString m_endMessage;

@@ -12,6 +12,24 @@ namespace stepdeck::program {
 void ProgramRunner::startBlock(const ProgramBlock& block)
 {
     m_blockError = ErrorKind::None;
+    // S on a line with another action ("G1 X5 S500"): while the program has the spindle on,
+    // its new speed goes out first, as LinuxCNC sets the speed before the line's motion. With
+    // the spindle off, S is only the speed the next M3 starts at.
+    const bool spindleSwitch = block.kind == BlockKind::SpindleOn ||
+                               block.kind == BlockKind::SpindleReverse ||
+                               block.kind == BlockKind::SpindleOff;
+    if (block.spindleChange && m_spindleOn && !spindleSwitch) {
+        ProgramBlock speed = block;
+        speed.kind = BlockKind::SpindleOn;
+        const int index = m_index;
+        startSwitch(speed, [this, index] { startAction(m_program.blocks.at(index)); });
+        return;
+    }
+    startAction(block);
+}
+
+void ProgramRunner::startAction(const ProgramBlock& block)
+{
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:
@@ -46,10 +64,11 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     case BlockKind::OptionalPause:
     case BlockKind::ToolChange:
     case BlockKind::End:
+    case BlockKind::SpindleSpeed: // a running spindle got the speed in startBlock()
         blockDone(); // pauses at M0, M6 (and M1 with optional stops), finishes at M2/M30
         return;
     default:
-        startSwitch(block);
+        startSwitch(block, [this] { blockDone(); });
         return;
     }
 }
@@ -125,7 +144,7 @@ QString ProgramRunner::spindleRefusal(const ProgramBlock& block, const QString& 
 }
 
 // Spindle, coolant and outputs: one request, done when the controller acknowledged it.
-void ProgramRunner::startSwitch(const ProgramBlock& block)
+void ProgramRunner::startSwitch(const ProgramBlock& block, std::function<void()> then)
 {
     const MachineFacts facts = factsOf(*m_machine);
     const auto first = [&](bool Capabilities::*has) -> ControllerSession* {
@@ -148,6 +167,7 @@ void ProgramRunner::startSwitch(const ProgramBlock& block)
                      why);
                 return;
             }
+            m_spindleOn = block.kind != BlockKind::SpindleOff;
             id = s->setSpindle(block.kind == BlockKind::SpindleOff
                                    ? 0
                                    : ProgramRules::spindleValue(s->capabilities(), s->schema(),
@@ -182,7 +202,7 @@ void ProgramRunner::startSwitch(const ProgramBlock& block)
     for (const machine::MachineController& c : facts.description.controllers)
         if (m_machine->session(c.id) == s)
             one.insert(id, c.id);
-    awaitRequests(one, [this] { blockDone(); });
+    awaitRequests(one, std::move(then));
 }
 
 // M66: the level counts only from a status read asked for after the block started, so a

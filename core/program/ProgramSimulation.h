@@ -90,7 +90,10 @@ private:
     QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,
                              ParameterSet* set) const;
     void checkSetup(const ProgramBlock& block, const PlannedBlock& planned);
-    void checkAnyController(const ProgramBlock& block, bool Capabilities::*has);
+    // false (and an error naming `word`, else the block's word) when no controller has it.
+    bool checkAnyController(const ProgramBlock& block, bool Capabilities::*has,
+                            const QString& word = {});
+    void checkSpindleChange(const ProgramBlock& block);
     void checkSpindleSpeed(const ProgramBlock& block);
     void checkIo(const ProgramBlock& block);
     void checkTools(const ProgramBlock& block);

@@ -466,6 +466,16 @@ void TestProgramCheck::check_spindleAboveMaxRpm_refusedAtS_data()
                                  << QStringList{"1:1: controller \"table\": S10001 is above the "
                                                 "spindle's maxRpm 10000 (the machine file's "
                                                 "spindle scale)"};
+    // S on any line (LightBurn, pcb2gcode): the same rules.
+    QTest::newRow("S on G1") << 24000.0 << "M3 S1000\nG1 X1 S30000 F100"
+                             << QStringList{"2:7: controller \"table\": S30000 is above the "
+                                            "spindle's maxRpm 24000 (the machine file's "
+                                            "spindle scale)"};
+    QTest::newRow("S alone") << 24000.0 << "S30000"
+                             << QStringList{"1:1: controller \"table\": S30000 is above the "
+                                            "spindle's maxRpm 24000 (the machine file's "
+                                            "spindle scale)"};
+    QTest::newRow("G1 S0") << 24000.0 << "M3\nG1 X1 S20000 F100\nG1 S0\nM5" << QStringList{};
     QTest::newRow("no scale: S12000 beyond the E-LAB's 1000")
         << 0.0 << "M3 S12000"
         << QStringList{"1:4: controller \"table\": Spindle speed: value '12000' is out of range "

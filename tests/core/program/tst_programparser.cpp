@@ -120,6 +120,7 @@ private Q_SLOTS:
     void parse_modalGroups_stateOnEveryBlock_data();
     void parse_modalGroups_stateOnEveryBlock();
     void parse_camHeader_percentBomAndModes_blocksAsWithout();
+    void parse_spindleSpeed_modalOnAnyLine();
 };
 
 void TestProgramParser::parse_everyWord_golden_data()
@@ -356,12 +357,8 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                  << "1:4: P-1 must lie within 0..1000000";
     QTest::newRow("G4 with axis") << "G4 P1 X1"
                                   << "1:7: X1 is not used by G4";
-    QTest::newRow("S without M3") << "G0 X1 S100"
-                                  << "1:7: S100 is not used by G0";
-    QTest::newRow("M3 without S") << "M3"
-                                  << "1:1: M3 needs S";
-    QTest::newRow("M4 without S") << "M4"
-                                  << "1:1: M4 needs S";
+    QTest::newRow("S below 0") << "G0 X1 S-100"
+                               << "1:7: S-100 must lie within 0..1000000";
     QTest::newRow("M4 with an axis") << "M4 S100 X1"
                                      << "1:9: X1 is not used by M4";
     QTest::newRow("M3 and M4") << "M3 M4 S100"
@@ -650,6 +647,25 @@ void TestProgramParser::parse_camHeader_percentBomAndModes_blocksAsWithout()
     QCOMPARE(describeAll(*a), describeAll(*b));
     // A "%" line of its own, even after blank lines, opens the program (LinuxCNC).
     QVERIFY(ProgramParser::parse("\n  %  \nG0 X1\n%\n", kAxes, &errors));
+}
+
+// S as LinuxCNC reads it (issue 29): modal, on any line; alone (or with G1 and no axis
+// words, LightBurn's "G1 S0") a block that sets the speed; M3 without S starts at the S in
+// effect (0 before any).
+void TestProgramParser::parse_spindleSpeed_modalOnAnyLine()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(
+        "M3\nG00 S10000\nM3\nG1 X5 S500 F100\nG1 X6\nG1 S0\nM5\n", kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QStringList got;
+    for (const ProgramBlock& b : p->blocks)
+        got << QStringLiteral("%1 %2%3")
+                   .arg(blockWord(b.kind))
+                   .arg(b.rpm)
+                   .arg(b.spindleChange ? QStringLiteral(" new") : QString());
+    QCOMPARE(got, (QStringList{"M3 0", "S 10000 new", "M3 10000", "G1 500 new", "G1 500",
+                               "S 0 new", "M5 0"}));
 }
 
 QTEST_APPLESS_MAIN(TestProgramParser)

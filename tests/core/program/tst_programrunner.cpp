@@ -75,6 +75,7 @@ private Q_SLOTS:
     void optionalStop_m1_pausesOnlyWithTheSwitchOn();
     void spindle_maxRpm_boardGetsSMappedOntoItsFullScale();
     void spindle_m4_refusedNothingSent();
+    void spindle_sOnAnyLine_runningSpindleChangesOffOneWaits();
     void msg_reached_saidBeforeTheNextMoveGoesOut();
     void abort_duringMove_deviceStandsStillNextBlockNeverArrives();
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
@@ -344,6 +345,41 @@ void TestProgramRunner::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 6, 30000);
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
     QCOMPARE(boardRpm(), quint32(250));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardRpm(), quint32(0));
+}
+
+// Issue 29: S on any line, as LightBurn and pcb2gcode write it (LinuxCNC's meaning). M3
+// without S starts at the S in effect; S on a move line changes a running spindle's speed
+// before the move; while the spindle is off, S only sets the speed the next M3 starts at.
+void TestProgramRunner::spindle_sOnAnyLine_runningSpindleChangesOffOneWaits()
+{
+    MachineDescription d = description();
+    d.spindle.maxRpm = 24000;
+    recreateMachine(d);
+    const auto boardRpm = [this] {
+        return m_elab->probe(
+            [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); });
+    };
+    const auto pausedAt = [this](int line) {
+        return QTest::qWaitFor(
+            [&] { return m_runner->state() == RunState::Paused && m_runner->currentLine() == line; },
+            30000);
+    };
+    QVERIFY(run("G00 S6000\nM3\nM0\nG91 G0 X1 S12000\nM0\nM5\nG0 X2 S24000\nM0\nM3\nM0\nM5\n"));
+    QVERIFY(pausedAt(3));
+    QCOMPARE(boardRpm(), quint32(250));
+    m_runner->resume();
+    QVERIFY(pausedAt(5));
+    QCOMPARE(boardRpm(), quint32(500));
+    m_runner->resume();
+    QVERIFY(pausedAt(8));
+    QCOMPARE(boardRpm(), quint32(0)); // off: S24000 waits for the next M3
+    m_runner->resume();
+    QVERIFY(pausedAt(10));
+    QCOMPARE(boardRpm(), quint32(1000));
     m_runner->resume();
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
