@@ -62,7 +62,11 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             return {};
         const ParameterSpec* spec =
             facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
-        return spec && !spec->readable ? spec->label : QString();
+        // Unreadable, and not known to the adapter either (EMIS: no work speed written in this
+        // session nor stored): nothing to put back.
+        const bool known = facts.knownParameters.value(controller).contains(
+            QString::fromLatin1(caps.feedRateParameter));
+        return spec && !spec->readable && !known ? spec->label : QString();
     };
     QSet<QString> withG1;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {

@@ -42,10 +42,13 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
         Controller& c = m_controllers[id];
         if (caps.feedRateSetsRapid) {
             const ParameterSpec* spec = s->model()->schema.find(name);
-            // Read once, before the first write, and only where the device can say it.
+            // Read once, before the first write, where the device can say it; else the value
+            // the adapter knows it holds (EMIS: written in this session or stored).
             if (c.fast.perAxis.isEmpty() && c.read == 0 && spec && spec->readable) {
                 c.read = s->readParameters({name});
                 requests.insert(c.read, id);
+            } else if (c.fast.perAxis.isEmpty() && c.read == 0) {
+                c.fast = s->status().knownParameters.value(name);
             }
             c.changed = true;
         }
@@ -65,6 +68,19 @@ void ProgramRates::onResult(const QString& controllerId, const CommandResult& re
     const ControllerSession* s = m_machine->session(controllerId);
     const QString name = QString::fromLatin1(s->capabilities().feedRateParameter);
     it->fast = result.value.value<ParameterSet>().value(name);
+}
+
+QString ProgramRates::cannotPutBack(const ProgramBlock& rapid) const
+{
+    for (const QString& id : controllersOf(m_machine->description(), rapid)) {
+        const auto it = m_controllers.constFind(id);
+        if (it != m_controllers.cend() && it->changed && it->read == 0 &&
+            it->fast.perAxis.isEmpty())
+            return tr("controller \"%1\": its fast speed is no longer known, so G0 would run "
+                      "at the last F; the program stops here")
+                .arg(id);
+    }
+    return {};
 }
 
 QMap<RequestId, QString> ProgramRates::restore()

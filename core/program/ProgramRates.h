@@ -31,6 +31,10 @@ public:
     QMap<RequestId, QString> before(const ProgramBlock& block);
     // A finished request of before() or restore(): a read keeps the value to put back.
     void onResult(const QString& controllerId, const CommandResult& result);
+    // Why G0 `rapid` cannot run at the fast speed: a G1 changed it on a controller that can
+    // neither read it back nor knew it (the check refuses such programs first; the adapter may
+    // have forgotten it since). Empty: it can.
+    QString cannotPutBack(const ProgramBlock& rapid) const;
     // The fast speeds a G1 changed, written back (the program's end); none: nothing to do.
     QMap<RequestId, QString> restore();
 

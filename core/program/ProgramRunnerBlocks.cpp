@@ -76,6 +76,11 @@ void ProgramRunner::startAction(const ProgramBlock& block)
 void ProgramRunner::startMove(const ProgramBlock& block)
 {
     // G1's rates (and G0's fast speed put back) first; the move only once they were taken.
+    if (const QString why = m_rates->cannotPutBack(block);
+        block.kind == BlockKind::Rapid && !why.isEmpty()) {
+        fail(ErrorKind::Refused, why);
+        return;
+    }
     const QMap<RequestId, QString> rates = m_rates->before(block);
     const int index = m_index;
     awaitRequests(rates, [this, index] { sendMove(m_program.blocks.at(index)); });

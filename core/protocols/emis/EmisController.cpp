@@ -358,6 +358,16 @@ void EmisController::syncStatus()
         busy = busy || running;
     }
     s.busy = busy;
+    // The work speed every positioning move runs at (EmisWorkSpeeds), where the host knows it:
+    // a program's G1 overwrites it, and puts it back before G0 (ProgramRates).
+    ParameterValue work;
+    for (auto it = tracks.cbegin(); it != tracks.cend(); ++it)
+        if (const std::optional<qint64> speed = m_known.speeds.knownMoveSpeed(it.key()))
+            work.perAxis.insert(it.key(), *speed);
+    if (work.perAxis.isEmpty())
+        s.knownParameters.remove(QStringLiteral("work-speed"));
+    else
+        s.knownParameters.insert(QStringLiteral("work-speed"), work);
     // One supply feeds logic and motor drivers (manual 4): a board that answers has its
     // drivers powered; there is no enable command.
     s.driveOn = linkState() == LinkState::Connected;

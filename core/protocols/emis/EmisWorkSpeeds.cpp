@@ -20,6 +20,15 @@ qint64 EmisWorkSpeeds::moveSpeed(Axis axis) const
     return m_stored.value(axis, kAssumedDefault);
 }
 
+std::optional<qint64> EmisWorkSpeeds::knownMoveSpeed(Axis axis) const
+{
+    if (m_written.contains(axis))
+        return m_written.value(axis);
+    if (m_stored.contains(axis))
+        return m_stored.value(axis);
+    return std::nullopt;
+}
+
 QList<EmisWorkSpeeds::Write> EmisWorkSpeeds::writesForMove(const QList<Axis>& axes) const
 {
     QList<Write> out;

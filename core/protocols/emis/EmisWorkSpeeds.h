@@ -34,6 +34,8 @@ public:
     void setWritten(Axis axis, qint64 speed);         // set or console #E1 the board acknowledged
     void setStored(const QMap<Axis, qint64>& speeds); // the power-on values (*PRSYS, ##E)
     qint64 moveSpeed(Axis axis) const;
+    // The move speed where it is known (written in this session, or stored), not assumed.
+    std::optional<qint64> knownMoveSpeed(Axis axis) const;
     // The #E1 writes a move of `axes` needs first, in X, Y, Z, U order.
     QList<Write> writesForMove(const QList<Axis>& axes) const;
     // After a jog: the axes whose known board speed is not their move speed (and that have no
