@@ -3621,6 +3621,21 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::DrillCycle</name>
+        <message>
+            <source>%1: the position of %2 is unknown, so the cycle has no start: reference the axis first (G28 %2)</source>
+            <translation>%1: Die Position von %2 ist unbekannt, der Zyklus hat also keinen Anfang: zuerst die Achse referenzieren (G28 %2)</translation>
+        </message>
+        <message>
+            <source>%1: the machine has no axis Z, which a drilling cycle drills along</source>
+            <translation>%1: Die Maschine hat keine Achse Z, entlang der ein Bohrzyklus bohrt</translation>
+        </message>
+        <message>
+            <source>%1 takes more than %2 moves: make Q larger or L smaller</source>
+            <translation>%1 braucht mehr als %2 Bewegungen: Q größer oder L kleiner wählen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ProgramCheck</name>
         <message>
             <source>run from line %1: the program has no blocks</source>
@@ -3727,10 +3742,6 @@
             <translation>%1 erreicht %2 %3 in Werkstückkoordinaten, %4 %3 in Maschinenkoordinaten: außerhalb der Software-Endlagen %5..%6 %3 (Maschine)</translation>
         </message>
         <message>
-            <source>the run's arcs need more than %1 chords</source>
-            <translation>die Bögen des Laufs brauchen mehr als %1 Sehnen</translation>
-        </message>
-        <message>
             <source>T%1: tool %1 is not in the machine's tool table</source>
             <translation>T%1: Werkzeug %1 steht nicht in der Werkzeugtabelle der Maschine</translation>
         </message>
@@ -3745,6 +3756,14 @@
         <message>
             <source>G43: the machine has no axis %1 for tool %2's length</source>
             <translation>G43: Die Maschine hat keine Achse %1 für die Länge von Werkzeug %2</translation>
+        </message>
+        <message>
+            <source>%1: %4 moves it at the fast speed in a program with G1 on controller "%2", whose fast speed (%3) cannot be read back to be put back after G1; drill with G1 and F only</source>
+            <translation>%1: %4 fährt sie im Eilgang, in einem Programm mit G1 auf Steuerung "%2", deren Eilganggeschwindigkeit (%3) sich nicht zurücklesen lässt, um sie nach G1 wiederherzustellen; nur mit G1 und F bohren</translation>
+        </message>
+        <message>
+            <source>the run's arcs and cycles need more than %1 moves</source>
+            <translation>die Bögen und Zyklen des Laufs brauchen mehr als %1 Bewegungen</translation>
         </message>
     </context>
     <context>
@@ -3999,6 +4018,58 @@
             <source>G43 needs H&lt;n&gt; or a tool loaded by M6 (T&lt;n&gt; M6) before it</source>
             <translation>G43 braucht H&lt;n&gt; oder ein zuvor mit M6 eingesetztes Werkzeug (T&lt;n&gt; M6)</translation>
         </message>
+        <message>
+            <source>%1 must lie within 0..1000000</source>
+            <translation>%1 muss im Bereich 0..1000000 liegen</translation>
+        </message>
+        <message>
+            <source>the hole's bottom</source>
+            <translation>den Grund der Bohrung</translation>
+        </message>
+        <message>
+            <source>the retract plane</source>
+            <translation>die Rückzugsebene</translation>
+        </message>
+        <message>
+            <source>the depth of each peck</source>
+            <translation>die Tiefe jeder Zustellung</translation>
+        </message>
+        <message>
+            <source>the dwell at the bottom in seconds</source>
+            <translation>die Verweilzeit am Grund in Sekunden</translation>
+        </message>
+        <message>
+            <source>%1 needs %2: %3</source>
+            <translation>%1 braucht %2: %3</translation>
+        </message>
+        <message>
+            <source>%1: Q, the depth of each peck, must be greater than 0</source>
+            <translation>%1: Q, die Tiefe jeder Zustellung, muss größer als 0 sein</translation>
+        </message>
+        <message>
+            <source>%1: P must lie within 0..1000000 seconds</source>
+            <translation>%1: P muss im Bereich 0..1000000 Sekunden liegen</translation>
+        </message>
+        <message>
+            <source>%1: drilling cycles run in the XY plane (G17) only</source>
+            <translation>%1: Bohrzyklen laufen nur in der XY-Ebene (G17)</translation>
+        </message>
+        <message>
+            <source>%1: a drilling cycle moves X, Y and Z only, not %2</source>
+            <translation>%1: Ein Bohrzyklus bewegt nur X, Y und Z, nicht %2</translation>
+        </message>
+        <message>
+            <source>%1: L, the repeats, takes a whole number 1..%2</source>
+            <translation>%1: L, die Wiederholungen, nimmt eine ganze Zahl 1..%2</translation>
+        </message>
+        <message>
+            <source>%1: in G91, Z is measured down from R: not above 0</source>
+            <translation>%1: In G91 wird Z von R aus nach unten gemessen: nicht über 0</translation>
+        </message>
+        <message>
+            <source>%1: Z%2 lies above R%3: the hole's bottom must lie below the retract plane</source>
+            <translation>%1: Z%2 liegt über R%3: Der Grund der Bohrung muss unter der Rückzugsebene liegen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>
@@ -4041,6 +4112,13 @@
         <message>
             <source>the program opened with "%" (line %1) ends with neither "%" nor M2/M30</source>
             <translation>das mit „%“ (Zeile %1) eröffnete Programm endet weder mit „%“ noch mit M2/M30</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramRates</name>
+        <message>
+            <source>controller "%1": its fast speed is no longer known, so G0 would run at the last F; the program stops here</source>
+            <translation>Steuerung "%1": Ihre Eilganggeschwindigkeit ist nicht mehr bekannt, G0 liefe also mit dem letzten F; das Programm hält hier an</translation>
         </message>
     </context>
     <context>

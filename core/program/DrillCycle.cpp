@@ -46,9 +46,9 @@ ProgramBlock DrillCycle::segmentBlock(const ProgramBlock& block, const Segment& 
     return rates;
 }
 
-std::variant<DrillCycle, DrillCycle::Error> DrillCycle::plan(
-    const ProgramBlock& block, const machine::MachineDescription& d, const AxisPositions& start,
-    const QMap<QString, double>& workOffsets)
+std::variant<DrillCycle, DrillCycle::Error>
+DrillCycle::plan(const ProgramBlock& block, const machine::MachineDescription& d,
+                 const AxisPositions& start, const QMap<QString, double>& workOffsets)
 {
     const QString g = blockWord(block);
     const int column = block.columnOf({});
@@ -80,10 +80,9 @@ std::variant<DrillCycle, DrillCycle::Error> DrillCycle::plan(
     // Segments per hole: a peck takes up to three; bounded before any is made.
     const double pecks = peck > 0 ? std::ceil((r - bottom) / peck) : 1.0;
     if (double(c.repeats) * (3.0 * pecks + 4.0) > kMaxSegments)
-        return Error{block.columnOf(peck > 0 ? QStringLiteral("Q") : QStringLiteral("L")),
-                     tr("%1 takes more than %2 moves: make Q larger or L smaller")
-                         .arg(g)
-                         .arg(kMaxSegments)};
+        return Error{
+            block.columnOf(peck > 0 ? QStringLiteral("Q") : QStringLiteral("L")),
+            tr("%1 takes more than %2 moves: make Q larger or L smaller").arg(g).arg(kMaxSegments)};
     const double clearance = c.retractToR ? r : std::max(r, z0);
     if (z0 < r)
         cycle.moveTo(Kind::Rapid, {{cycle.m_axis[2], r}}); // LinuxCNC's preliminary motion
@@ -124,8 +123,7 @@ void DrillCycle::moveTo(Kind kind, const QList<std::pair<int, double>>& targets)
 }
 
 // One hole's way down from R (where Z stands) to the bottom and its dwell.
-void DrillCycle::drill(const CycleWords& c, double r, double bottom, double peck,
-                       double clearance)
+void DrillCycle::drill(const CycleWords& c, double r, double bottom, double peck, double clearance)
 {
     const int z = m_axis[2];
     if (c.code == 81 || c.code == 82) {

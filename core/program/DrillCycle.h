@@ -63,8 +63,8 @@ private:
     void drill(const CycleWords& c, double r, double bottom, double peck, double clearance);
 
     std::vector<Segment> m_segments;
-    int m_axis[3] = {-1, -1, -1};              // X, Y, Z (-1: the machine has no such axis)
-    std::optional<double> m_position[3];       // where the moves so far put them
+    int m_axis[3] = {-1, -1, -1};        // X, Y, Z (-1: the machine has no such axis)
+    std::optional<double> m_position[3]; // where the moves so far put them
 };
 
 } // namespace stepdeck::program

@@ -77,10 +77,10 @@ struct CycleWords
 {
     int code = 81;
     double r = 0;
-    double bottom = 0; // Z
-    double peck = 0;   // Q
-    double dwell = 0;  // P, seconds
-    int repeats = 1;   // L
+    double bottom = 0;       // Z
+    double peck = 0;         // Q
+    double dwell = 0;        // P, seconds
+    int repeats = 1;         // L
     bool retractToR = false; // G99 (G98, the initial level, is the default)
 
     bool operator==(const CycleWords& o) const
@@ -127,9 +127,13 @@ struct ProgramBlock
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
     double rpm = 0;                      // S in effect (modal; 0 until a line sets it)
     bool spindleChange = false;          // S is on this line (a running spindle changes speed)
-    QString prompt;                      // M0, M1: the comment on its line
-    ArcWords arc;                        // G2/G3
-    CycleWords cycle;                    // G81..G83, G73 (Z is here, not in axes)
+    // M3, M4, M5, M7, M8 or M9 beside this block's motion: switched before it (LinuxCNC's order
+    // of execution), at its column.
+    std::optional<BlockKind> switchFirst;
+    int switchColumn = 0;
+    QString prompt;   // M0, M1: the comment on its line
+    ArcWords arc;     // G2/G3
+    CycleWords cycle; // G81..G83, G73 (Z is here, not in axes)
     // G54..G59 in effect (0 = G54); -1: none selected yet, the system active when the run
     // started (LinuxCNC keeps the active system across programs).
     int coordinateSystem = -1;
@@ -155,6 +159,9 @@ struct ProgramBlock
 
     bool operator==(const ProgramBlock& o) const;
 };
+
+// The switch of a block's line (switchFirst) as a block of its own, for the check and the run.
+ProgramBlock switchBlock(const ProgramBlock& block);
 
 // "12:5: message": where a program is wrong (1-based line and column) and why.
 struct ProgramError

@@ -64,8 +64,8 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
         // Unreadable, and not known to the adapter either (EMIS: no work speed written in this
         // session nor stored): nothing to put back.
-        const bool known = facts.knownParameters.value(controller).contains(
-            QString::fromLatin1(caps.feedRateParameter));
+        const bool known = facts.knownParameters.value(controller)
+                               .contains(QString::fromLatin1(caps.feedRateParameter));
         return spec && !spec->readable && !known ? spec->label : QString();
     };
     QSet<QString> withG1;
@@ -75,9 +75,10 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             continue;
         // An arc writes the rates of a G1 over the axes it moves (ArcPath::rateBlock), a
         // drilling cycle those of Z (DrillCycle::rateBlock).
-        const QStringList axes = isArc(b.kind)                     ? ArcPath::movingAxes(b)
-                                 : b.kind == BlockKind::DrillCycle ? QStringList{QStringLiteral("Z")}
-                                                                   : b.axes.keys();
+        const QStringList axes = isArc(b.kind) ? ArcPath::movingAxes(b)
+                                 : b.kind == BlockKind::DrillCycle
+                                     ? QStringList{QStringLiteral("Z")}
+                                     : b.axes.keys();
         for (const QString& name : axes)
             if (const machine::MachineAxis* a = d.axis(name))
                 withG1.insert(a->controller);

@@ -179,6 +179,18 @@ private:
 
     QString setAction(BlockKind action, const ProgramWord& w, Words* out)
     {
+        // A spindle or coolant word beside a motion ("G0 X0 Y0 S12000 M3", as Vectric's posts
+        // write it): LinuxCNC runs it before the motion.
+        if (out->action && !out->switchWord && isMotion(*out->action) && isSwitch(action)) {
+            out->switchWord = &w;
+            out->switchAction = action;
+            return {};
+        }
+        if (out->action && !out->switchWord && isSwitch(*out->action) && isMotion(action)) {
+            out->switchWord = out->actionWord;
+            out->switchAction = *out->action;
+            out->action.reset();
+        }
         if (out->action)
             return ProgramLine::tr("one action per line: %1 and %2")
                 .arg(out->actionWord->valueText, w.valueText);
@@ -310,6 +322,14 @@ private:
     {
         return action == BlockKind::Rapid || action == BlockKind::Feed ||
                action == BlockKind::DrillCycle || (action && isArc(*action));
+    }
+
+    // M3, M4, M5, M7, M8, M9: what may stand beside a motion on one line.
+    static bool isSwitch(BlockKind kind)
+    {
+        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
+               kind == BlockKind::SpindleOff || kind == BlockKind::CoolantMist ||
+               kind == BlockKind::CoolantFlood || kind == BlockKind::CoolantOff;
     }
 
     static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
@@ -479,8 +499,9 @@ std::pair<int, QString> cycleNumbers(const Words& sorted, int code, bool sticky,
             return {column, ProgramLine::tr("%1 needs %2: %3").arg(g, QString(n.letter), n.need)};
         const double v = **n.keep;
         if (n.letter == QLatin1Char('Q') && v <= 0)
-            return {w ? w->column : column,
-                    ProgramLine::tr("%1: Q, the depth of each peck, must be greater than 0").arg(g)};
+            return {
+                w ? w->column : column,
+                ProgramLine::tr("%1: Q, the depth of each peck, must be greater than 0").arg(g)};
         if (n.letter == QLatin1Char('P') && (v < 0 || v > 1e6))
             return {w ? w->column : column,
                     ProgramLine::tr("%1: P must lie within 0..1000000 seconds").arg(g)};
@@ -496,11 +517,10 @@ std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, Progr
     c.code = sorted.cycleCode > 0 ? sorted.cycleCode : modal->cycleCode;
     const QString g = QStringLiteral("G%1").arg(c.code);
     const bool sticky = modal->motion == BlockKind::DrillCycle && modal->cycleCode == c.code;
-    const int column = sorted.actionWord ? sorted.actionWord->column
-                                         : sorted.axes.first()->column;
+    const int column = sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column;
     if (modal->plane != Plane::XY)
-        return {column, ProgramLine::tr("%1: drilling cycles run in the XY plane (G17) only")
-                            .arg(g)};
+        return {column,
+                ProgramLine::tr("%1: drilling cycles run in the XY plane (G17) only").arg(g)};
     for (auto it = sorted.axes.cbegin(); it != sorted.axes.cend(); ++it)
         if (it.key() != QLatin1String("X") && it.key() != QLatin1String("Y") &&
             it.key() != QLatin1String("Z"))
@@ -523,14 +543,14 @@ std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, Progr
     }
     // LinuxCNC refuses a bottom above the retract plane (G91: Z is measured from R).
     if (modal->relative ? c.bottom > 0 : c.bottom > c.r)
-        return {column, modal->relative
-                            ? ProgramLine::tr("%1: in G91, Z is measured down from R: not above 0")
-                                  .arg(g)
-                            : ProgramLine::tr("%1: Z%2 lies above R%3: the hole's bottom must lie "
-                                              "below the retract plane")
-                                  .arg(g)
-                                  .arg(c.bottom)
-                                  .arg(c.r)};
+        return {column,
+                modal->relative
+                    ? ProgramLine::tr("%1: in G91, Z is measured down from R: not above 0").arg(g)
+                    : ProgramLine::tr("%1: Z%2 lies above R%3: the hole's bottom must lie "
+                                      "below the retract plane")
+                          .arg(g)
+                          .arg(c.bottom)
+                          .arg(c.r)};
     modal->motion = BlockKind::DrillCycle;
     modal->cycleCode = c.code;
     return {};
@@ -563,9 +583,8 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
         !modal->feed)
         return {sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,
                 ProgramLine::tr("%1 needs a feed rate: F on this line or an earlier one")
-                    .arg(cycle ? QStringLiteral("G%1").arg(sorted.cycleCode > 0
-                                                               ? sorted.cycleCode
-                                                               : modal->cycleCode)
+                    .arg(cycle ? QStringLiteral("G%1").arg(sorted.cycleCode > 0 ? sorted.cycleCode
+                                                                                : modal->cycleCode)
                                : blockWord(b->kind))};
     if (cycle) {
         if (const auto [column, why] = drillCycle(sorted, modal, b); column > 0)
@@ -649,6 +668,10 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     carryModal(next, &b);
     b.message = line.message;
     b.appliesLengthOffset = sorted.lengthOffset == true;
+    if (sorted.switchWord) {
+        b.switchFirst = sorted.switchAction;
+        b.switchColumn = sorted.switchWord->column;
+    }
     if (b.kind == BlockKind::Pause || b.kind == BlockKind::OptionalPause)
         b.prompt = line.comment;
     if (b.kind == BlockKind::ToolChange) {

@@ -7,8 +7,8 @@
 
 namespace stepdeck::program {
 
-constexpr int kMaxTool = 99999;    // the highest T a program may select
-constexpr int kMaxArcTurns = 1000; // G2/G3 P: the most turns of one helix
+constexpr int kMaxTool = 99999;         // the highest T a program may select
+constexpr int kMaxArcTurns = 1000;      // G2/G3 P: the most turns of one helix
 constexpr int kMaxCycleRepeats = 10000; // G81..G83, G73 L: the most holes of one line
 
 inline bool isWhole(double v)
@@ -36,7 +36,9 @@ struct Words
     const ProgramWord* machineCoordinates = nullptr; // G53
     std::optional<bool> lengthOffset;                // G43 (true) / G49 (false)
     std::optional<bool> retractToR;                  // G99 (true) / G98 (false)
-    int cycleCode = 0;                               // G81, G82, G83, G73: its number
+    const ProgramWord* switchWord = nullptr;         // M3..M9 beside a motion (ProgramLine)
+    BlockKind switchAction = BlockKind::Modal;
+    int cycleCode = 0; // G81, G82, G83, G73: its number
     QMap<QChar, const ProgramWord*> parameters;
     QMap<QString, const ProgramWord*> axes;
 };

@@ -48,6 +48,10 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     out.partner = block.partner;
     checkTools(block);
     checkSpindleChange(block);
+    if (block.switchFirst)
+        planSwitch(switchBlock(block));
+    if (planSwitch(block))
+        return;
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:
@@ -66,19 +70,6 @@ void ProgramPlan::plan(int index, const ProgramBlock& block)
     case BlockKind::Home:
         planHome(block, &out);
         checkSetup(block, out);
-        break;
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-        checkAnyController(block, &Capabilities::spindle);
-        checkSpindleSpeed(block);
-        break;
-    case BlockKind::SpindleOff:
-        checkAnyController(block, &Capabilities::spindle);
-        break;
-    case BlockKind::CoolantMist:
-    case BlockKind::CoolantFlood:
-    case BlockKind::CoolantOff:
-        checkAnyController(block, &Capabilities::coolant);
         break;
     case BlockKind::OutputOn:
     case BlockKind::OutputOff:
@@ -230,13 +221,38 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
     }
 }
 
+// M3, M4, M5 and M7, M8, M9 (a block of their own, or beside a motion): a controller with a
+// spindle (its S within range) or coolant. false: `block` is none of them.
+bool ProgramPlan::planSwitch(const ProgramBlock& block)
+{
+    switch (block.kind) {
+    case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
+        if (checkAnyController(block, &Capabilities::spindle))
+            checkSpindleSpeed(block);
+        return true;
+    case BlockKind::SpindleOff:
+        checkAnyController(block, &Capabilities::spindle);
+        return true;
+    case BlockKind::CoolantMist:
+    case BlockKind::CoolantFlood:
+    case BlockKind::CoolantOff:
+        checkAnyController(block, &Capabilities::coolant);
+        return true;
+    default:
+        return false;
+    }
+}
+
 // S on a line (LinuxCNC: any line; LightBurn's "G1 X5 S500", pcb2gcode's "G00 S10000"): the
 // speed a running spindle changes to, within the same rules as M3's S. M3 and M4 check their
 // own S.
 void ProgramPlan::checkSpindleChange(const ProgramBlock& block)
 {
-    if (!block.spindleChange || block.kind == BlockKind::SpindleOn ||
-        block.kind == BlockKind::SpindleReverse)
+    const auto startsSpindle = [](std::optional<BlockKind> kind) {
+        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse;
+    };
+    if (!block.spindleChange || startsSpindle(block.kind) || startsSpindle(block.switchFirst))
         return;
     if (block.kind != BlockKind::SpindleOff &&
         !checkAnyController(block, &Capabilities::spindle, QStringLiteral("S")))

@@ -153,8 +153,8 @@ private:
     // After a chord or a cycle's move arrived (or its dwell ended): true while the block goes
     // on, or holds there on pause().
     bool nextInPath();
-    void resumePath();                          // on from where the block held (m_heldInPath)
-    void endPath(AxisPositions* programmed);    // the block done: its end as the current point
+    void resumePath();                       // on from where the block held (m_heldInPath)
+    void endPath(AxisPositions* programmed); // the block done: its end as the current point
     void onDwellDone();
     void startHome(const ProgramBlock& block);
     void startWaitInput(const ProgramBlock& block);
@@ -206,8 +206,8 @@ private:
     std::unique_ptr<ProgramRates> m_rates;
     // The current point (ArcPath): where the blocks done put the axes, unrounded.
     AxisPositions m_programmed;
-    std::optional<ArcPath> m_arc; // the arc running, its chords sent one at a time
-    qint64 m_chord = 0;           // the chord under way (1..chords)
+    std::optional<ArcPath> m_arc;      // the arc running, its chords sent one at a time
+    qint64 m_chord = 0;                // the chord under way (1..chords)
     std::optional<DrillCycle> m_cycle; // the drilling cycle running, one move at a time
     size_t m_segment = 0;              // its move under way
     bool m_heldInPath = false;         // paused between two moves of m_arc or m_cycle

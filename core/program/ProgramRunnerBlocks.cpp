@@ -12,20 +12,30 @@ namespace stepdeck::program {
 void ProgramRunner::startBlock(const ProgramBlock& block)
 {
     m_blockError = ErrorKind::None;
-    // S on a line with another action ("G1 X5 S500"): while the program has the spindle on,
-    // its new speed goes out first, as LinuxCNC sets the speed before the line's motion. With
-    // the spindle off, S is only the speed the next M3 starts at.
-    const bool spindleSwitch = block.kind == BlockKind::SpindleOn ||
-                               block.kind == BlockKind::SpindleReverse ||
-                               block.kind == BlockKind::SpindleOff;
-    if (block.spindleChange && m_spindleOn && !spindleSwitch) {
+    // In LinuxCNC's order of execution: S, then M3/M4/M5, M7/M8/M9 on the line, then its action.
+    // S on a line with another action ("G1 X5 S500"): while the program has the spindle on, its
+    // new speed goes out first. With the spindle off, S is only the speed the next M3 starts at.
+    const auto spindleSwitch = [](std::optional<BlockKind> kind) {
+        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
+               kind == BlockKind::SpindleOff;
+    };
+    const int index = m_index;
+    const auto thenSwitch = [this, index] {
+        const ProgramBlock& b = m_program.blocks.at(index);
+        if (!b.switchFirst) {
+            startAction(b);
+            return;
+        }
+        startSwitch(switchBlock(b), [this, index] { startAction(m_program.blocks.at(index)); });
+    };
+    if (block.spindleChange && m_spindleOn && !spindleSwitch(block.kind) &&
+        !spindleSwitch(block.switchFirst)) {
         ProgramBlock speed = block;
         speed.kind = BlockKind::SpindleOn;
-        const int index = m_index;
-        startSwitch(speed, [this, index] { startAction(m_program.blocks.at(index)); });
+        startSwitch(speed, thenSwitch);
         return;
     }
-    startAction(block);
+    thenSwitch();
 }
 
 void ProgramRunner::startAction(const ProgramBlock& block)

@@ -87,18 +87,18 @@ void ProgramRunner::sendSegment()
     for (const auto& [axis, value] : s.targets)
         targets.insert(d.axes.at(axis).name, value);
     QString refusal;
-    m_motion = m_machine->move(targets, true, &refusal,
-                               s.kind == DrillCycle::Kind::Feed
-                                   ? machine::Machine::MoveKind::Feed
-                                   : machine::Machine::MoveKind::Positioning);
+    m_motion =
+        m_machine->move(targets, true, &refusal,
+                        s.kind == DrillCycle::Kind::Feed ? machine::Machine::MoveKind::Feed
+                                                         : machine::Machine::MoveKind::Positioning);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
 }
 
 bool ProgramRunner::nextInPath()
 {
-    const bool more = m_arc ? m_chord < m_arc->chords()
-                            : m_cycle && m_segment + 1 < m_cycle->segments().size();
+    const bool more =
+        m_arc ? m_chord < m_arc->chords() : m_cycle && m_segment + 1 < m_cycle->segments().size();
     if (!more)
         return false;
     if (m_cycle)

@@ -94,6 +94,7 @@ private:
     bool checkAnyController(const ProgramBlock& block, bool Capabilities::*has,
                             const QString& word = {});
     void checkSpindleChange(const ProgramBlock& block);
+    bool planSwitch(const ProgramBlock& block);
     void checkSpindleSpeed(const ProgramBlock& block);
     void checkIo(const ProgramBlock& block);
     void checkTools(const ProgramBlock& block);

@@ -24,7 +24,7 @@ stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp 
 stepdeck_add_test(tst_tooltable SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltable.cpp LABELS unit)
 # Programs in the styles CAM posts write, run end to end on an E-LAB simulator (issue 29).
 stepdeck_add_test(tst_camprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_camprograms.cpp
-                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
 target_compile_definitions(tst_camprograms PRIVATE
                            STEPDECK_CAM_DIR="${CMAKE_CURRENT_LIST_DIR}/cam")
 # Drilling cycles G81, G82, G83, G73 (issue 29): the words and the moves the check and the run

@@ -95,19 +95,19 @@ void DrillCycleTest::parse_cycleWords_data()
     QTest::addColumn<QString>("axes");
     QTest::newRow("G81") << "F100\nG81 X1 Y2 Z-3 R1" << 81 << 1.0 << -3.0 << 0.0 << 0.0 << 1
                          << false << "X1 Y2";
-    QTest::newRow("G99 G82 P") << "F100\nG99 G82 X1 Z-3 R1 P0.5" << 82 << 1.0 << -3.0 << 0.0
-                               << 0.5 << 1 << true << "X1";
+    QTest::newRow("G99 G82 P") << "F100\nG99 G82 X1 Z-3 R1 P0.5" << 82 << 1.0 << -3.0 << 0.0 << 0.5
+                               << 1 << true << "X1";
     QTest::newRow("G83 Q") << "F100\nG83 Z-10 R2 Q2.5" << 83 << 2.0 << -10.0 << 2.5 << 0.0 << 1
                            << false << "";
-    QTest::newRow("G73 L") << "F100\nG91\nG73 X5 Z-4 R-1 Q1 L3" << 73 << -1.0 << -4.0 << 1.0
-                           << 0.0 << 3 << false << "X5";
+    QTest::newRow("G73 L") << "F100\nG91\nG73 X5 Z-4 R-1 Q1 L3" << 73 << -1.0 << -4.0 << 1.0 << 0.0
+                           << 3 << false << "X5";
     // LinuxCNC's sticky numbers: a line of axis words drills again with the same R, Z, Q.
     QTest::newRow("sticky") << "F100\nG83 X1 Z-10 R2 Q2.5\nX4 Y4" << 83 << 2.0 << -10.0 << 2.5
                             << 0.0 << 1 << false << "X4 Y4";
-    QTest::newRow("sticky, new Z") << "F100\nG81 X1 Z-10 R2\nX4 Z-6" << 81 << 2.0 << -6.0 << 0.0
-                                   << 0.0 << 1 << false << "X4";
-    QTest::newRow("G98 after G99") << "F100\nG99\nG81 X1 Z-1 R1\nG98 X2" << 81 << 1.0 << -1.0
-                                   << 0.0 << 0.0 << 1 << false << "X2";
+    QTest::newRow("sticky, new Z")
+        << "F100\nG81 X1 Z-10 R2\nX4 Z-6" << 81 << 2.0 << -6.0 << 0.0 << 0.0 << 1 << false << "X4";
+    QTest::newRow("G98 after G99") << "F100\nG99\nG81 X1 Z-1 R1\nG98 X2" << 81 << 1.0 << -1.0 << 0.0
+                                   << 0.0 << 1 << false << "X2";
 }
 
 void DrillCycleTest::parse_cycleWords()
@@ -136,22 +136,26 @@ void DrillCycleTest::parse_badCycle_namesWord_data()
 {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("error");
-    QTest::newRow("no R") << "F100\nG81 X1 Z-1" << "2:1: G81 needs R: the retract plane";
-    QTest::newRow("no Z") << "F100\nG81 X1 R1" << "2:1: G81 needs Z: the hole's bottom";
-    QTest::newRow("G83 without Q")
-        << "F100\nG83 Z-1 R1" << "2:1: G83 needs Q: the depth of each peck";
+    QTest::newRow("no R") << "F100\nG81 X1 Z-1"
+                          << "2:1: G81 needs R: the retract plane";
+    QTest::newRow("no Z") << "F100\nG81 X1 R1"
+                          << "2:1: G81 needs Z: the hole's bottom";
+    QTest::newRow("G83 without Q") << "F100\nG83 Z-1 R1"
+                                   << "2:1: G83 needs Q: the depth of each peck";
     QTest::newRow("Q zero") << "F100\nG73 Z-1 R1 Q0"
                             << "2:12: G73: Q, the depth of each peck, must be greater than 0";
-    QTest::newRow("Q on G81") << "F100\nG81 Z-1 R1 Q1" << "2:12: Q1 is not used by G81";
-    QTest::newRow("G82 without P")
-        << "F100\nG82 Z-1 R1" << "2:1: G82 needs P: the dwell at the bottom in seconds";
+    QTest::newRow("Q on G81") << "F100\nG81 Z-1 R1 Q1"
+                              << "2:12: Q1 is not used by G81";
+    QTest::newRow("G82 without P") << "F100\nG82 Z-1 R1"
+                                   << "2:1: G82 needs P: the dwell at the bottom in seconds";
     QTest::newRow("Z above R") << "F100\nG81 Z2 R1"
                                << "2:1: G81: Z2 lies above R1: the hole's bottom must lie below "
                                   "the retract plane";
     QTest::newRow("G91 Z up") << "F100\nG91 G81 Z2 R1"
                               << "2:5: G81: in G91, Z is measured down from R: not above 0";
-    QTest::newRow("L0") << "F100\nG81 Z-1 R1 L0" << "2:12: L0: L, the repeats, takes a whole "
-                                                    "number 1..10000";
+    QTest::newRow("L0") << "F100\nG81 Z-1 R1 L0"
+                        << "2:12: L0: L, the repeats, takes a whole "
+                           "number 1..10000";
     QTest::newRow("G18") << "F100\nG18 G81 Z-1 R1"
                          << "2:5: G81: drilling cycles run in the XY plane (G17) only";
     QTest::newRow("A axis") << "F100\nG81 A5 Z-1 R1"
@@ -189,8 +193,7 @@ void DrillCycleTest::plan_moves_data()
     QTest::newRow("G81 G99: back to R")
         << "F100\nG99 G81 X10 Y5 Z-2 R1" << above << "R X10 Y5 | R Z1 | F Z-2 | R Z1";
     QTest::newRow("below R: up to R first")
-        << "F100\nG81 X10 Z-2 R5" << AxisPositions{0.0, 0.0, 2.0}
-        << "R Z5 | R X10 | F Z-2 | R Z5";
+        << "F100\nG81 X10 Z-2 R5" << AxisPositions{0.0, 0.0, 2.0} << "R Z5 | R X10 | F Z-2 | R Z5";
     QTest::newRow("G82 dwells at the bottom")
         << "F100\nG82 X1 Z-2 R1 P0.5" << above << "R X1 | R Z1 | F Z-2 | D0.5 | R Z10";
     // Pecks of 2 from R1 to -4.5: out to R after each and back down to 0.254 above the depth.

@@ -121,6 +121,7 @@ private Q_SLOTS:
     void parse_modalGroups_stateOnEveryBlock();
     void parse_camHeader_percentBomAndModes_blocksAsWithout();
     void parse_spindleSpeed_modalOnAnyLine();
+    void parse_switchBesideMotion_keptToRunFirst();
 };
 
 void TestProgramParser::parse_everyWord_golden_data()
@@ -337,8 +338,8 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                 << "1:7: axis X appears twice";
     QTest::newRow("parameter twice") << "G4 P1 P2"
                                      << "1:7: P appears twice";
-    QTest::newRow("two actions") << "G0 X1 M5"
-                                 << "1:7: one action per line: G0 and M5";
+    QTest::newRow("two actions") << "G0 X1 M0"
+                                 << "1:7: one action per line: G0 and M0";
     QTest::newRow("G90 and G91") << "G90 G91"
                                  << "1:5: G90 and G91 on one line";
     QTest::newRow("G20 and G21") << "G20 G21"
@@ -664,8 +665,36 @@ void TestProgramParser::parse_spindleSpeed_modalOnAnyLine()
                    .arg(blockWord(b.kind))
                    .arg(b.rpm)
                    .arg(b.spindleChange ? QStringLiteral(" new") : QString());
-    QCOMPARE(got, (QStringList{"M3 0", "S 10000 new", "M3 10000", "G1 500 new", "G1 500",
-                               "S 0 new", "M5 0"}));
+    QCOMPARE(got, (QStringList{"M3 0", "S 10000 new", "M3 10000", "G1 500 new", "G1 500", "S 0 new",
+                               "M5 0"}));
+}
+
+// M3/M4/M5/M7/M8/M9 beside a motion (Vectric's "G0X0.000Y0.000S12000M3"): the motion is the
+// block, the switch is kept to run before it (LinuxCNC's order), at its own column. Beside
+// anything else, or two of them, it stays an error.
+void TestProgramParser::parse_switchBesideMotion_keptToRunFirst()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(
+        "G0X0.000Y0.000S12000M3\nM8 G1 X1 F100\nG2 X2 I0.5 M9\n", kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QCOMPARE(p->blocks.size(), 3);
+    QCOMPARE(p->blocks.at(0).kind, BlockKind::Rapid);
+    QCOMPARE(p->blocks.at(0).switchFirst, std::optional<BlockKind>(BlockKind::SpindleOn));
+    QCOMPARE(p->blocks.at(0).switchColumn, 21);
+    QCOMPARE(p->blocks.at(0).rpm, 12000.0);
+    QCOMPARE(switchBlock(p->blocks.at(0)).kind, BlockKind::SpindleOn);
+    QCOMPARE(switchBlock(p->blocks.at(0)).columnOf({}), 21);
+    QVERIFY(switchBlock(p->blocks.at(0)).axes.isEmpty());
+    QCOMPARE(p->blocks.at(1).kind, BlockKind::Feed);
+    QCOMPARE(p->blocks.at(1).switchFirst, std::optional<BlockKind>(BlockKind::CoolantFlood));
+    QCOMPARE(p->blocks.at(2).kind, BlockKind::ArcClockwise);
+    QCOMPARE(p->blocks.at(2).switchFirst, std::optional<BlockKind>(BlockKind::CoolantOff));
+    for (const char* bad : {"M3 M8", "G4 P1 M3", "G0 X1 M3 M8", "G0 X1 M6"}) {
+        QVERIFY2(!ProgramParser::parse(bad, kAxes, &errors), bad);
+        QVERIFY2(errors.first().message.startsWith(QStringLiteral("one action per line")),
+                 qPrintable(errors.first().text()));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestProgramParser)
