@@ -17,6 +17,7 @@ void printUsage(const ModelInfo* model)
             "       stepdeck-bench --soak N [--model M | --machine] [--seed S] [--json]\n"
             "       stepdeck-bench --replug N [--model M] [--seed S] [--json]\n"
             "       stepdeck-bench --program [--json]\n"
+            "       stepdeck-bench --program-scale [LINES ...] [--json]\n"
             "       stepdeck-bench --window-program [SECONDS] [--json]\n"
             "       stepdeck-bench --preview-frame [FRAMES] [--json]\n"
             "       stepdeck-bench --jog-latency [--jog-presses N] [--jog-paced] "

@@ -9,6 +9,7 @@
 #include "PollWire.h"
 #include "PreviewFrameBench.h"
 #include "ProgramBench.h"
+#include "ProgramScaleBench.h"
 #include "SoakMain.h"
 #include "WindowProgramBench.h"
 #include "protocols/Registry.h"
@@ -333,6 +334,8 @@ int main(int argc, char** argv)
     if (const int code = soakMain(application.applicationFilePath(), args); code >= 0)
         return code;
     if (const int code = programBenchMain(args); code >= 0)
+        return code;
+    if (const int code = programScaleBenchMain(args); code >= 0)
         return code;
     // The figures need a stream to queue behind and to meter: the first registered model
     // whose descriptor has one (ModelInfo::streamBench).

@@ -2,11 +2,76 @@
 // any bytes. Invariants: no crash or undefined behaviour; a program comes back exactly when
 // there is no error; every error names a line and column within the input; the same bytes
 // fed in the input's own chunks give the same result; blocks stand in line order, and every
-// repeat's partner points back to it.
+// repeat's partner points back to it. The blocks of an accepted program are then walked as the
+// check and the run follow them (issue 29): the current point through ProgramCoordinates,
+// G2/G3 through ArcPath, drilling cycles through DrillCycle, on a mill in millimetres; the same
+// bytes are read as a tool table, which writes back to itself.
 #include "FuzzSupport.h"
+#include "program/ArcPath.h"
+#include "program/DrillCycle.h"
+#include "program/ProgramCoordinates.h"
 #include "program/ProgramParser.h"
+#include "program/ToolTable.h"
+#include <cmath>
 
+using namespace stepdeck;
 using namespace stepdeck::program;
+
+namespace {
+
+machine::MachineDescription mill()
+{
+    machine::MachineDescription d;
+    const char* names[] = {"X", "Y", "Z", "A", "U"};
+    for (int i = 0; i < 5; ++i) {
+        machine::MachineAxis a;
+        a.name = QLatin1String(names[i]);
+        a.controller = QStringLiteral("table");
+        a.axis = Axis(i % 4);
+        a.unit = i == 3 ? machine::AxisUnit::Degree : machine::AxisUnit::Millimetre;
+        a.stepsPerUnit = 100;
+        d.axes << a;
+    }
+    return d;
+}
+
+// Every block in file order (repeats once): the paths an arc and a cycle plan from the
+// current point stay finite, bounded, and end where they say.
+void walk(const Program& program)
+{
+    static const machine::MachineDescription d = mill();
+    CoordinateSystems systems;
+    systems[1] = {{QStringLiteral("X"), 5.0}};
+    ProgramCoordinates coordinates(systems, 0, *ToolTable::parse("T1 Z2.5 ;one\n", nullptr));
+    AxisPositions at(size_t(d.axes.size()), 0.0);
+    for (const ProgramBlock& b : program.blocks) {
+        const QMap<QString, double> offsets = coordinates.offsets(b, d);
+        if (isArc(b.kind)) {
+            const auto planned = ArcPath::plan(b, d, at, offsets);
+            if (const ArcPath* arc = std::get_if<ArcPath>(&planned)) {
+                FUZZ_CHECK(arc->chords() >= 1 && arc->chords() <= ArcPath::kMaxChords, b.text);
+                for (const auto& [axis, value] : arc->end()) {
+                    FUZZ_CHECK(std::isfinite(value), b.text);
+                    at[size_t(axis)] = value;
+                }
+            }
+        } else if (b.kind == BlockKind::DrillCycle) {
+            const auto planned = DrillCycle::plan(b, d, at, offsets);
+            if (const DrillCycle* cycle = std::get_if<DrillCycle>(&planned)) {
+                FUZZ_CHECK(cycle->segments().size() <= size_t(DrillCycle::kMaxSegments), b.text);
+                for (const auto& [axis, value] : cycle->end()) {
+                    FUZZ_CHECK(std::isfinite(value), b.text);
+                    at[size_t(axis)] = value;
+                }
+            }
+        } else {
+            coordinates.apply(b, d, at);
+            coordinates.advance(b, d, &at);
+        }
+    }
+}
+
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
@@ -14,6 +79,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     const QStringList axes{"X", "Y", "Z", "A", "U"};
     QList<ProgramError> errors;
     const std::optional<Program> whole = ProgramParser::parse(text, axes, &errors);
+    if (const std::optional<ToolTable> tools = ToolTable::parse(text, nullptr)) {
+        const std::optional<ToolTable> again = ToolTable::parse(tools->text(), nullptr);
+        FUZZ_CHECK(again && again->text() == tools->text(), QStringLiteral("tool table"));
+    }
     FUZZ_CHECK(whole.has_value() == errors.isEmpty(), QString::number(errors.size()));
     const int lines = int(text.count('\n')) + 1;
     for (const ProgramError& e : errors) {
@@ -44,5 +113,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         if (b.kind == BlockKind::RepeatStart)
             FUZZ_CHECK(b.count >= 0 && b.count <= ProgramParser::kMaxRepeat, b.text);
     }
+    walk(*whole);
     return 0;
 }
