@@ -81,7 +81,7 @@ bool writeProgram(const QString& path, qint64 lines)
     QByteArray chunk;
     chunk += "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F600\n";
     double x = 0, y = 0;
-    for (qint64 i = 4; i < lines; ++i) {
+    for (qint64 i = 4; i < lines - 1; ++i) { // four lines of header, M2 last
         if (i % 2000 == 0) {
             y = std::fmod(y + 0.5, 200.0);
             x = 0;
