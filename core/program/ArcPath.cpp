@@ -6,8 +6,6 @@
 
 namespace stepdeck::program {
 
-QString figure(double value); // ProgramPlan.cpp
-
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

@@ -74,6 +74,16 @@ QString blockWord(const ProgramBlock& block)
     return blockWord(block.kind);
 }
 
+QString figure(double value)
+{
+    QString text = QString::number(value, 'f', 3);
+    while (text.endsWith(QLatin1Char('0')))
+        text.chop(1);
+    if (text.endsWith(QLatin1Char('.')))
+        text.chop(1);
+    return text == QLatin1String("-0") ? QStringLiteral("0") : text;
+}
+
 int ProgramBlock::columnOf(const QString& word) const
 {
     if (const auto it = columns.constFind(word); it != columns.cend())

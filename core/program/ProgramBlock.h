@@ -163,6 +163,9 @@ struct ProgramBlock
 // The switch of a block's line (switchFirst) as a block of its own, for the check and the run.
 ProgramBlock switchBlock(const ProgramBlock& block);
 
+// "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
+QString figure(double value);
+
 // "12:5: message": where a program is wrong (1-based line and column) and why.
 struct ProgramError
 {

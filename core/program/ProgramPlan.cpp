@@ -19,16 +19,6 @@ int axisIndex(const machine::MachineDescription& d, const QString& name)
 }
 } // namespace
 
-QString figure(double value)
-{
-    QString text = QString::number(value, 'f', 3);
-    while (text.endsWith(QLatin1Char('0')))
-        text.chop(1);
-    if (text.endsWith(QLatin1Char('.')))
-        text.chop(1);
-    return text == QLatin1String("-0") ? QStringLiteral("0") : text;
-}
-
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
     : m_facts(facts), m_out(*out), m_errors(errors), m_known(facts.knownParameters)
 {}

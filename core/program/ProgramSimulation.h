@@ -67,9 +67,6 @@ private:
     int m_cutoffLine = 0; // once pruned: errors after this line can never be listed
 };
 
-// "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
-QString figure(double value);
-
 // Plans one block against the machine (the part of the check that needs no positions): what
 // the axes' controllers take (G1's rate, G28, spindle, coolant, outputs, inputs). Errors go to
 // *errors.
