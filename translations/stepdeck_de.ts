@@ -6767,10 +6767,6 @@ W1500</translation>
             </translation>
         </message>
         <message>
-            <source>path shortened</source>
-            <translation>Bahn gekürzt</translation>
-        </message>
-        <message>
             <source>s (estimated)</source>
             <translation>s (geschätzt)</translation>
         </message>
@@ -6813,6 +6809,10 @@ W1500</translation>
         <message>
             <source>This machine has no two of the axes X, Y and Z: see the other tabs.</source>
             <translation>Diese Maschine hat keine zwei der Achsen X, Y und Z: siehe die anderen Reiter.</translation>
+        </message>
+        <message>
+            <source>path simplified</source>
+            <translation>Pfad vereinfacht</translation>
         </message>
     </context>
     <context>

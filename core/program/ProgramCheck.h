@@ -86,9 +86,10 @@ struct ProgramPreview
     qint64 blocksRun = 0; // blocks the run will execute (repeats counted out)
     double estimatedSeconds = 0;
     QMap<QString, AxisExtent> extents; // per axis, in its unit, where the position is known
-    // The path, bounded (kMaxPathPoints; later points are left out and pathTruncated set).
+    // The path of the whole run, bounded: past kMaxPathPoints it is thinned to every 2^k-th
+    // point (pathDecimated set), its last point the run's end.
     QList<PreviewPoint> path;
-    bool pathTruncated = false;
+    bool pathDecimated = false;
     // How a block's axes move together on this machine: "the axes of a block start together,
     // each at its own rate; the block ends when every axis has arrived" (no interpolation).
     QString motionNote;

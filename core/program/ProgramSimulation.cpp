@@ -223,20 +223,45 @@ double ProgramSimulation::workOf(size_t a) const
     return m_axes.at(qsizetype(a)).toUnits(m_steps[a]) - m_offset[a];
 }
 
+// The path stays within kMaxPathPoints however long the run: when it is full, every other
+// point goes and from then on only every m_pathStride-th new point is kept, so the preview
+// shows the whole run at a coarser step, its last point the run's end (the extents are exact
+// anyway). A kept point is a rapid only when every point it stands for was one.
 void ProgramSimulation::addPoint(int line, bool rapid)
 {
-    if (m_path.size() >= ProgramPreview::kMaxPathPoints) {
-        m_pathTruncated = true;
-        return;
-    }
     PreviewPoint point;
     point.line = line;
     point.seconds = m_seconds;
-    point.rapid = rapid;
+    point.rapid = rapid && m_mergedRapid;
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_known[size_t(i)])
             point.position.insert(m_axes.at(i).name, workOf(size_t(i)));
+    if (++m_sinceKept < m_pathStride) {
+        m_mergedRapid = point.rapid;
+        m_pendingPoint = std::move(point);
+        return;
+    }
+    m_sinceKept = 0;
+    m_mergedRapid = true;
+    m_pendingPoint.reset();
     m_path << point;
+    if (m_path.size() >= ProgramPreview::kMaxPathPoints)
+        thinPath();
+}
+
+void ProgramSimulation::thinPath()
+{
+    QList<PreviewPoint> kept;
+    kept.reserve(m_path.size() / 2 + 1);
+    for (qsizetype i = 0; i < m_path.size(); i += 2) {
+        PreviewPoint p = m_path.at(i);
+        if (i > 0)
+            p.rapid = p.rapid && m_path.at(i - 1).rapid;
+        kept << p;
+    }
+    m_path = std::move(kept);
+    m_pathStride *= 2;
+    m_pathDecimated = true;
 }
 
 void ProgramSimulation::tooManyBlocks(const ProgramBlock& block)
@@ -255,7 +280,9 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
     preview->blocksRun = std::min(m_blocksRun, ProgramCheck::kMaxBlocksRun);
     preview->estimatedSeconds = m_seconds;
     preview->path = m_path;
-    preview->pathTruncated = m_pathTruncated;
+    if (m_pendingPoint)
+        preview->path << *m_pendingPoint; // the run's end, between two kept points
+    preview->pathDecimated = m_pathDecimated;
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_offset[size_t(i)] != 0.0)
             preview->workOffsets.insert(m_axes.at(i).name, m_offset[size_t(i)]);

@@ -145,6 +145,7 @@ private:
     // Machine position (steps) -> work position (unit) of axis a.
     double workOf(size_t a) const;
     void addPoint(int line, bool rapid = false);
+    void thinPath();
     void tooManyBlocks(const ProgramBlock& block);
     void finish(ProgramPreview* preview) const;
 
@@ -167,7 +168,11 @@ private:
     qint64 m_chordsRun = 0; // arcs' chords, counted out like blocks
     double m_seconds = 0;
     QList<PreviewPoint> m_path;
-    bool m_pathTruncated = false;
+    bool m_pathDecimated = false;
+    qint64 m_pathStride = 1; // keep every m_pathStride-th point (addPoint)
+    qint64 m_sinceKept = 0;
+    bool m_mergedRapid = true; // the points since the last kept one were all rapids
+    std::optional<PreviewPoint> m_pendingPoint; // the last point, not kept (yet)
 };
 
 } // namespace stepdeck::program

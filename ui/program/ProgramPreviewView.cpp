@@ -143,8 +143,8 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
         tr("%n line(s)", nullptr, preview.lines) + QStringLiteral(" \u00b7 ") +
         tr("%n block(s) run", nullptr, int(qMin<qint64>(preview.blocksRun, INT_MAX))) +
         QStringLiteral(" \u00b7 ") + ProgramTimes::estimatedDuration(preview.estimatedSeconds);
-    if (preview.pathTruncated)
-        figures += QStringLiteral(" \u00b7 ") + tr("path shortened");
+    if (preview.pathDecimated)
+        figures += QStringLiteral(" \u00b7 ") + tr("path simplified");
     m_figures->setText(figures);
     m_motionNote->setText(preview.motionNote);
     m_motionNote->setToolTip(preview.motionNote);

@@ -28,7 +28,7 @@ std::optional<double> ProgramProgress::secondsLeft() const
 {
     if (m_preview.estimatedSeconds <= 0)
         return std::nullopt;
-    if (!m_preview.pathTruncated)
+    if (!m_preview.pathDecimated)
         return qMax(0.0, m_preview.estimatedSeconds - m_secondsDone);
     // Beyond its path the estimate cannot follow the run: the estimate's share of the blocks
     // still to run (issue 28: a long program's time left counts down all the same).

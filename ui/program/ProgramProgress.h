@@ -13,8 +13,9 @@ public:
     void reset(const program::ProgramPreview& preview);
     void blockFinished(int line);
     double secondsDone() const { return m_secondsDone; }
-    // The estimate's rest; a path cut short (ProgramPreview::pathTruncated) counts down by the
-    // share of blocks still to run. nullopt when it cannot be told (no estimate).
+    // The estimate's rest; a thinned path (ProgramPreview::pathDecimated, whose lines do not follow
+    // every block) counts down by the share of blocks still to run. nullopt when it cannot be told
+    // (no estimate).
     std::optional<double> secondsLeft() const;
 
 private:

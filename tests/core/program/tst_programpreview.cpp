@@ -13,7 +13,7 @@ class TestProgramPreview : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void preview_figures_extentsPathAndEstimatedSeconds();
-    void preview_millionPassRepeat_countedOutPathBounded();
+    void preview_millionPassRepeat_countedOutPathThinnedToTheEnd();
     void preview_arc_chordPointsWithinToleranceRapidsMarked();
     void preview_cycle_movesRapidsAndDwellTimed();
     void check_workOffsets_targetsInWorkLimitsInMachine_data();
@@ -48,7 +48,7 @@ void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
     QCOMPARE(v.extents["Z"].maximum, -10.0);
     QVERIFY(!v.extents["Z"].moved);
     QCOMPARE(v.path.size(), 6); // the start, G28, G0, G1, G4, G0
-    QVERIFY(!v.pathTruncated);
+    QVERIFY(!v.pathDecimated);
     QCOMPARE(v.path.first().line, 0);
     QCOMPARE(v.path.first().position, (QMap<QString, double>{{"Z", -10}}));
     QCOMPARE(v.path.at(2).line, 2);
@@ -60,7 +60,7 @@ void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
     QVERIFY(v.motionNote.contains("each at its own rate"));
 }
 
-void TestProgramPreview::preview_millionPassRepeat_countedOutPathBounded()
+void TestProgramPreview::preview_millionPassRepeat_countedOutPathThinnedToTheEnd()
 {
     const MachineFacts facts = machineFacts("mill");
     const Program p =
@@ -68,8 +68,21 @@ void TestProgramPreview::preview_millionPassRepeat_countedOutPathBounded()
     const ProgramCheckResult result = ProgramCheck::check(p, facts);
     QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
     QCOMPARE(result.preview.blocksRun, qint64(2 + 2000000));
-    QCOMPARE(result.preview.path.size(), ProgramPreview::kMaxPathPoints);
-    QVERIFY(result.preview.pathTruncated);
+    // The path is thinned, not cut (issue 29): within its bound, it still reaches the run's
+    // end, in order, and its points stand on the run's positions (X 0 or 1).
+    const QList<PreviewPoint>& path = result.preview.path;
+    QVERIFY(path.size() <= ProgramPreview::kMaxPathPoints + 1);
+    QVERIFY(path.size() > ProgramPreview::kMaxPathPoints / 2);
+    QVERIFY(result.preview.pathDecimated);
+    QCOMPARE(path.last().line, 5);
+    QCOMPARE(path.last().position.value("X"), 0.0);
+    QCOMPARE(path.last().seconds, result.preview.estimatedSeconds);
+    for (qsizetype i = 1; i < path.size(); ++i) {
+        QVERIFY(path.at(i).seconds >= path.at(i - 1).seconds);
+        const double x = path.at(i).position.value("X");
+        QVERIFY2(x == 0.0 || x == 1.0, qPrintable(QString::number(x)));
+    }
+    QVERIFY(path.at(path.size() / 2).seconds > result.preview.estimatedSeconds / 4);
     // 1 mm at 50 mm/s each, summed two million times.
     QVERIFY(qAbs(result.preview.estimatedSeconds - 2000000 * 1.0 / 50) < 1e-3);
     QCOMPARE(result.preview.extents["X"].maximum, 1.0);

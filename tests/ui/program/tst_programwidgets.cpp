@@ -297,7 +297,7 @@ void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
     progress.blockFinished(3);
     progress.blockFinished(4);
     QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
-    preview.pathTruncated = true; // beyond the path: by the share of blocks still to run
+    preview.pathDecimated = true; // a thinned path: by the share of blocks still to run
     preview.blocksRun = 8;
     progress.reset(preview);
     QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
