@@ -45,10 +45,19 @@ inline MachineAxis axis(const QString& name, const QString& controller, Axis on,
 // "io": E-LAB "table" X, EMIS "io1" U and "io2" V (7 outputs and 8 inputs each);
 // "mixed": E-LAB "table" X (mm), Nanotec "rotary" A (deg);
 // "noReference": the mill whose "tilt" has no reference run;
-// "emis", "nanotec": one controller in its steps (MachineDescription::singleController).
+// "emis", "nanotec": one controller in its steps (MachineDescription::singleController);
+// "emisKnown": the EMIS whose adapter knows its work speed (written in this session).
 inline MachineFacts machineFacts(const QString& name)
 {
     MachineFacts f;
+    if (name == QLatin1String("emisKnown")) {
+        f = machineFacts(QStringLiteral("emis"));
+        ParameterValue work;
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z, Axis::U})
+            work.perAxis.insert(a, 4000);
+        f.knownParameters[QStringLiteral("emis")].insert(QStringLiteral("work-speed"), work);
+        return f;
+    }
     if (name == QLatin1String("emis") || name == QLatin1String("nanotec")) {
         const ModelInfo* info = findModel(name);
         f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));

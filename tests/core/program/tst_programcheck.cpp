@@ -171,6 +171,22 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
                        "3:4: Y: G0 in a program with G1 on controller \"emis\": its fast speed "
                        "(Work speed) cannot be read back to be put back after G1; move Y with G1 "
                        "and F only, or with G0 only"};
+    // Issue 29: where the adapter knows the work speed, G1 replaces it and G0 puts it back.
+    QTest::newRow("G0 and G1 on the EMIS, its work speed known")
+        << "emisKnown"
+        << ""
+        << "G91 G1 X10 F600\nG0 X-10\nG0 Y5" << QStringList{};
+    QTest::newRow("drilling cycle on the EMIS after G1")
+        << "emis"
+        << "X=0 Y=0 Z=0"
+        << "G1 X10 F600\nG81 X5 Z-10 R5"
+        << QStringList{"2:5: X: G81 moves it at the fast speed in a program with G1 on controller "
+                       "\"emis\", whose fast speed (Work speed) cannot be read back to be put back "
+                       "after G1; drill with G1 and F only"};
+    QTest::newRow("drilling cycle on the EMIS, its work speed known")
+        << "emisKnown"
+        << "X=0 Y=0 Z=0"
+        << "G1 X10 F600\nG81 X5 Z-10 R5" << QStringList{};
     // Nanotec o is read before the first G1 and put back before the G0.
     QTest::newRow("G0 and G1 on the Nanotec") << "nanotec"
                                               << ""

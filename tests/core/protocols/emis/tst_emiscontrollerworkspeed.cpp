@@ -101,6 +101,11 @@ void TestEmisControllerWorkSpeed::move_afterJogInSameSession_runsAtWorkSpeed()
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(lastMoveSpeed(Axis::X), 2000);
     QCOMPARE(m_rig.axis(Axis::X).position, m_rig.sim->position(Axis::X));
+    QCOMPARE(m_rig.ctl->status()
+                 .knownParameters.value(QStringLiteral("work-speed"))
+                 .perAxis.value(Axis::X)
+                 .toLongLong(),
+             2000); // written in this session: the speed a program's G0 gets back
 }
 
 void TestEmisControllerWorkSpeed::jogCutByClose_reconnect_moveRunsAtWrittenSpeed()
@@ -144,6 +149,13 @@ void TestEmisControllerWorkSpeed::jogCutByClose_nextSession_moveRunsAtStoredOrAs
     const CommandResult r = move(Axis::U, -80);
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(lastMoveSpeed(Axis::U), expected);
+    // What a program's G1 would replace (issue 29): published only where it is known, never
+    // the assumed default.
+    const ParameterValue known =
+        m_rig.ctl->status().knownParameters.value(QStringLiteral("work-speed"));
+    QCOMPARE(known.perAxis.contains(Axis::U), stored > 0);
+    if (stored > 0)
+        QCOMPARE(known.perAxis.value(Axis::U).toLongLong(), stored);
 }
 
 void TestEmisControllerWorkSpeed::jog_nothingKnown_noMessage_speedGivenBack()
