@@ -409,6 +409,9 @@ QString programHelp()
         "                              M1 too while --optional-stops is on (the default)\n"
         "                              --dry-run prints lines, extents and the estimated\n"
         "                              duration and moves nothing\n"
+        "      [--tool-table FILE] [--offsets G54:X=N,Y=N;G55:...]\n"
+        "                              the tool table (LinuxCNC tool.tbl) G43 and M6 use,\n"
+        "                              and the work zeros of G54..G59 (G54 active)\n"
         "\n");
 }
 } // namespace

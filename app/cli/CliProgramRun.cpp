@@ -33,14 +33,73 @@ struct RunRequest
     bool dryRun = false;
     bool skipPauses = false;
     bool optionalStops = true; // M1 holds like M0 (ProgramRunner::setOptionalStops)
+    // The window keeps these per machine; the CLI takes them per call (issue 29).
+    program::ToolTable tools;           // --tool-table FILE (LinuxCNC's tool.tbl)
+    program::CoordinateSystems systems; // --offsets "G54:X=10,Y=5;G55:X=20" (G54 active)
 };
+
+// "G54:X=10,Y=5;G55:X=20": each system's work zero per axis, in the axis' unit; axes the machine
+// lacks are named. Empty: the text is fine.
+QString parseOffsets(const QString& text, const machine::MachineDescription& d,
+                     program::CoordinateSystems* out)
+{
+    for (const QString& part : text.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+        const int colon = int(part.indexOf(QLatin1Char(':')));
+        const QString word = part.left(colon).trimmed().toUpper();
+        int system = -1;
+        for (int i = 0; i < program::kCoordinateSystems; ++i)
+            if (word == program::coordinateSystemWord(i))
+                system = i;
+        if (colon < 0 || system < 0)
+            return CliText::tr("--offsets: '%1' does not start with G54..G59 and a colon")
+                .arg(part.trimmed());
+        for (const QString& pair :
+             part.mid(colon + 1).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            const QStringList kv = pair.split(QLatin1Char('='));
+            double value = 0;
+            if (kv.size() != 2 || !d.axis(kv.at(0).trimmed()) ||
+                numbers::parseReal(kv.at(1).trimmed(), &value) != NumberError::None)
+                return CliText::tr("--offsets: '%1' is not AXIS=NUMBER for an axis of the machine")
+                    .arg(pair.trimmed());
+            (*out)[size_t(system)].insert(kv.at(0).trimmed(), value);
+        }
+    }
+    return {};
+}
+
+// --tool-table and --offsets, which need the machine's axes; exit 12 for an unreadable file.
+Outcome readTablesArguments(const CliOptions& o, const machine::MachineDescription& d,
+                            RunRequest* r)
+{
+    if (const std::optional<QString> offsets = o.value("offsets")) {
+        if (const QString why = parseOffsets(*offsets, d, &r->systems); !why.isEmpty())
+            return Outcome::usage(why);
+    }
+    const std::optional<QString> path = o.value("tool-table");
+    if (!path)
+        return Outcome::success();
+    QFile file(*path);
+    if (!file.open(QIODevice::ReadOnly))
+        return Outcome::failure(ExitFile, CliText::tr("cannot read %1").arg(*path));
+    QList<program::ProgramError> errors;
+    const std::optional<program::ToolTable> tools =
+        program::ToolTable::parse(file.readAll(), &errors);
+    if (!tools) {
+        printProgramErrors(*path, errors);
+        return Outcome::failure(ExitInvalidValue,
+                                CliText::tr("%1 is not a tool table; nothing was sent").arg(*path));
+    }
+    r->tools = *tools;
+    return Outcome::success();
+}
 
 Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
 {
     if (o.args.size() != 1)
         return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
                                           "[--from-line N] [--skip-pauses] "
-                                          "[--optional-stops on|off])"));
+                                          "[--optional-stops on|off] [--tool-table FILE] "
+                                          "[--offsets G54:X=N,...;G55:...])"));
     r->path = o.args.constFirst();
     r->dryRun = o.flag("dry-run");
     r->skipPauses = o.flag("skip-pauses");
@@ -181,8 +240,11 @@ private:
 
 Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool json)
 {
-    const program::ProgramCheckResult checked =
-        program::ProgramCheck::check(p, program::factsOf(m.machine()), r.fromLine);
+    program::MachineFacts facts = program::factsOf(m.machine());
+    facts.coordinateSystems = r.systems;
+    facts.activeSystem = 0;
+    facts.tools = r.tools;
+    const program::ProgramCheckResult checked = program::ProgramCheck::check(p, facts, r.fromLine);
     if (!checked.ok()) {
         printProgramErrors(r.path, checked.errors);
         return Outcome::failure(
@@ -228,6 +290,8 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
     ProgramRunner runner(&m.machine());
     ProgramReport report(runner, p.lines, json);
     runner.setOptionalStops(r.optionalStops);
+    runner.setCoordinateSystems(r.systems, 0);
+    runner.setToolTable(r.tools);
     PauseAnswer pauses(runner, m, r.skipPauses, json);
     CliEventWait settle; // after an interrupt, when the session's own waits return at once
     QObject guard;
@@ -267,6 +331,8 @@ Outcome machineRunProgram(CliMachineSession& m, const CliOptions& o)
     RunRequest r;
     if (Outcome parsed = parseRunArguments(o, &r); !parsed.ok())
         return parsed;
+    if (Outcome tables = readTablesArguments(o, m.description(), &r); !tables.ok())
+        return tables;
     Program p;
     if (Outcome read = readProgram(r, m.description(), &p); !read.ok())
         return read;

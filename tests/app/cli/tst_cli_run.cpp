@@ -28,6 +28,7 @@ private Q_SLOTS:
     void optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff();
     void dryRun_json_previewFiguresNoMotion();
     void dryRun_human_linesExtentsDuration();
+    void dryRun_toolTableAndOffsets_appliedToTheCheck();
     void run_progressLinePerBlockOnStderr();
     void run_json_eventPerBlockThenSummary();
     void fromLine_beyondTheFile_exit2();
@@ -215,6 +216,33 @@ void TestCliRun::dryRun_human_linesExtentsDuration()
     QVERIFY2(r.out.contains("3 lines"), r.out.constData());
     QVERIFY2(r.out.contains("X: 0.000 .. 200.000 steps"), r.out.constData());
     QVERIFY2(r.out.contains("estimated duration"), r.out.constData());
+    QVERIFY(m_device->moves().isEmpty());
+}
+
+// Issue 29: --offsets gives G55 its work zero and --tool-table G43 its length; without them the
+// check refuses the H the table lacks; a malformed table or offset is named, nothing is sent.
+void TestCliRun::dryRun_toolTableAndOffsets_appliedToTheCheck()
+{
+    const QString path =
+        writeProgram(*m_dir, "cam.ngc", "G28 X0 Z0\nG55 G0 X100\nG43 H1\nG0 Z0\nM2\n");
+    const QString tools = writeProgram(*m_dir, "tool.tbl", "T1 Z-50 ;probe\n");
+    const CliRun r =
+        runCli(args(path, {"--dry-run", "--json", "--tool-table", tools, "--offsets", "G55:X=20"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonObject extents = QJsonDocument::fromJson(r.out).object().value("extents").toObject();
+    QCOMPARE(extents.value("X").toObject().value("maximum").toDouble(), 120.0);
+    QCOMPARE(extents.value("Z").toObject().value("minimum").toDouble(), -50.0);
+    const CliRun bare = runCli(args(path, {"--dry-run"}));
+    QCOMPARE(bare.exitCode, 7);
+    QVERIFY2(bare.err.contains("3:5: G43: the machine's tool table is empty"),
+             bare.err.constData());
+    const CliRun badOffset = runCli(args(path, {"--dry-run", "--offsets", "G55:Q=20"}));
+    QCOMPARE(badOffset.exitCode, 2);
+    QVERIFY2(badOffset.err.contains("'Q=20' is not AXIS=NUMBER"), badOffset.err.constData());
+    const QString broken = writeProgram(*m_dir, "broken.tbl", "T1 Zx\n");
+    const CliRun badTable = runCli(args(path, {"--dry-run", "--tool-table", broken}));
+    QCOMPARE(badTable.exitCode, 7);
+    QVERIFY2(badTable.err.contains("is not a tool table"), badTable.err.constData());
     QVERIFY(m_device->moves().isEmpty());
 }
 
