@@ -43,6 +43,15 @@ struct Words
     QMap<QString, const ProgramWord*> axes;
 };
 
+struct ModalState;
+
+// The line's modal words into *modal (ProgramLineModes.cpp): (column, message) of the first
+// that does not fit; column 0: none.
+std::pair<int, QString> applyModalWords(Words* words, ModalState* modal);
+// G81, G82, G83, G73: the cycle's numbers (this line's, or sticky) into block->cycle and
+// *modal (ProgramLineModes.cpp).
+std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, ProgramBlock* block);
+
 // The first misplaced or missing word of a sorted line for block->kind: (column, message);
 // column 0: none. Fills the action's values into *block.
 std::pair<int, QString> checkActionWords(const Words& words, ProgramBlock* block);
