@@ -62,10 +62,13 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             return {};
         const ParameterSpec* spec =
             facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
-        // Unreadable, and not known to the adapter either (EMIS: no work speed written in this
-        // session nor stored): nothing to put back.
-        const bool known = facts.knownParameters.value(controller)
-                               .contains(QString::fromLatin1(caps.feedRateParameter));
+        // Unreadable, and not known to the adapter either for every axis of the controller
+        // (EMIS: no work speed written in this session nor stored): nothing to put back.
+        const ParameterValue held = facts.knownParameters.value(controller)
+                                        .value(QString::fromLatin1(caps.feedRateParameter));
+        bool known = !held.perAxis.isEmpty();
+        for (const machine::MachineAxis& a : d.axes)
+            known = known && (a.controller != controller || held.perAxis.contains(a.axis));
         return spec && !spec->readable && !known ? spec->label : QString();
     };
     QSet<QString> withG1;

@@ -72,10 +72,15 @@ void ProgramRates::onResult(const QString& controllerId, const CommandResult& re
 
 QString ProgramRates::cannotPutBack(const ProgramBlock& rapid) const
 {
-    for (const QString& id : controllersOf(m_machine->description(), rapid)) {
+    const machine::MachineDescription& d = m_machine->description();
+    for (const QString& id : controllersOf(d, rapid)) {
         const auto it = m_controllers.constFind(id);
-        if (it != m_controllers.cend() && it->changed && it->read == 0 &&
-            it->fast.perAxis.isEmpty())
+        if (it == m_controllers.cend() || !it->changed || it->read != 0)
+            continue;
+        bool known = !it->fast.perAxis.isEmpty();
+        for (const machine::MachineAxis& a : d.axes)
+            known = known && (a.controller != id || it->fast.perAxis.contains(a.axis));
+        if (!known)
             return tr("controller \"%1\": its fast speed is no longer known, so G0 would run "
                       "at the last F; the program stops here")
                 .arg(id);

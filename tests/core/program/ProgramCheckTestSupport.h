@@ -46,15 +46,17 @@ inline MachineAxis axis(const QString& name, const QString& controller, Axis on,
 // "mixed": E-LAB "table" X (mm), Nanotec "rotary" A (deg);
 // "noReference": the mill whose "tilt" has no reference run;
 // "emis", "nanotec": one controller in its steps (MachineDescription::singleController);
-// "emisKnown": the EMIS whose adapter knows its work speed (written in this session).
+// "emisKnown": the EMIS whose adapter knows its work speed (written in this session);
+// "emisKnownX": the same for X only.
 inline MachineFacts machineFacts(const QString& name)
 {
     MachineFacts f;
-    if (name == QLatin1String("emisKnown")) {
+    if (name == QLatin1String("emisKnown") || name == QLatin1String("emisKnownX")) {
         f = machineFacts(QStringLiteral("emis"));
         ParameterValue work;
         for (Axis a : {Axis::X, Axis::Y, Axis::Z, Axis::U})
-            work.perAxis.insert(a, 4000);
+            if (a == Axis::X || name == QLatin1String("emisKnown"))
+                work.perAxis.insert(a, 4000);
         f.knownParameters[QStringLiteral("emis")].insert(QStringLiteral("work-speed"), work);
         return f;
     }

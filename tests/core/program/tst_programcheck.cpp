@@ -171,6 +171,16 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
                        "3:4: Y: G0 in a program with G1 on controller \"emis\": its fast speed "
                        "(Work speed) cannot be read back to be put back after G1; move Y with G1 "
                        "and F only, or with G0 only"};
+    QTest::newRow("G0 and G1 on the EMIS, its work speed known for X only")
+        << "emisKnownX"
+        << ""
+        << "G91 G1 X10 F600\nG0 X-10\nG0 Y5"
+        << QStringList{"2:4: X: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move X with G1 "
+                       "and F only, or with G0 only",
+                       "3:4: Y: G0 in a program with G1 on controller \"emis\": its fast speed "
+                       "(Work speed) cannot be read back to be put back after G1; move Y with G1 "
+                       "and F only, or with G0 only"};
     // Issue 29: where the adapter knows the work speed, G1 replaces it and G0 puts it back.
     QTest::newRow("G0 and G1 on the EMIS, its work speed known")
         << "emisKnown"
