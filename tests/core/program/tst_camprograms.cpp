@@ -44,6 +44,7 @@ private Q_SLOTS:
     void cleanup();
     void run_camStyles_boardFollowsThePlannedPath_data();
     void run_camStyles_boardFollowsThePlannedPath();
+    void pause_duringPeckCycle_holdsBetweenMovesResumeFinishesIt();
 
 private:
     Point3 boardMm(); // where the board stands, machine mm from the reference
@@ -258,6 +259,46 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
     QVERIFY2(
         next == spots.size(),
         qPrintable(QStringLiteral("reached %1 of %2 spots").arg(next / 3).arg(spots.size() / 3)));
+}
+
+// A pause during a G83 holds between two of its moves, at the cycle's line, with the board
+// standing where the last move ended; resume sends the rest, and the board reaches every point
+// the check planned.
+void TestCamPrograms::pause_duringPeckCycle_holdsBetweenMovesResumeFinishesIt()
+{
+    QVERIFY(setUp(QStringLiteral("elab")));
+    QList<ProgramError> errors;
+    const std::optional<Program> program = ProgramParser::parse(
+        "G0 X5 Y5 Z-2\nG99 G83 X10 Y10 Z-8 R-3 Q1 F600\nG80\nG0 Z-2\nM2\n",
+        {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")}, &errors);
+    QVERIFY(program);
+    QList<Point3> arrived;
+    connect(m_machine.get(), &Machine::moveFinished, this, [&](quint64, bool ok) {
+        if (ok)
+            arrived << boardMm();
+    });
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY2(m_runner->start(*program, 1, &errors),
+             qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
+    QTRY_VERIFY_WITH_TIMEOUT(arrived.size() >= 4, 60000); // the G0, then into the cycle
+    m_runner->pause();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.size(), 1);
+    QCOMPARE(m_runner->currentLine(), 2);
+    const qsizetype held = arrived.size();
+    // 18 moves in all: G0, XY, R, 5 pecks with 4 retracts and 4 returns, G99's, G0 Z-2.
+    QVERIFY2(held < 1 + 16, qPrintable(QString::number(held))); // mid-cycle
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(arrived.size(), held); // nothing moved while held
+    const Point3 still = boardMm();
+    QCOMPARE(text(still), text(arrived.last()));
+    m_runner->resume();
+    QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 60000);
+    QVERIFY2(m_runner->state() == RunState::Finished, qPrintable(m_runner->endMessage()));
+    QCOMPARE(arrived.size(), 18);
+    QCOMPARE(m_runner->preview().path.size(), 1 + 18); // the start, then one point a move
+    QCOMPARE(text(arrived.last()), text(Point3{10, 10, -2}));
 }
 
 QTEST_MAIN(TestCamPrograms)
