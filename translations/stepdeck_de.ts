@@ -7600,6 +7600,10 @@ hält die Steuerung nicht an</translation>
             <source>Not saved: %1</source>
             <translation>Nicht gespeichert: %1</translation>
         </message>
+        <message>
+            <source>Another machine was opened: its table is shown; the unsaved edits were for the previous one and are dropped.</source>
+            <translation>Eine andere Maschine wurde geöffnet: Ihre Tabelle wird gezeigt; die ungespeicherten Änderungen galten der vorigen und wurden verworfen.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::TrafficConsole</name>

@@ -20,6 +20,7 @@ void MachineTools::load(const QString& machineKey)
             m_table = *table;
         }
     }
+    Q_EMIT machineChanged();
     Q_EMIT changed();
 }
 

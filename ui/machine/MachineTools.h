@@ -24,6 +24,7 @@ public:
 
 Q_SIGNALS:
     void changed();
+    void machineChanged(); // load(): another machine's table (changed() follows)
 
 private:
     QString m_key;

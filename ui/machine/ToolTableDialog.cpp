@@ -38,7 +38,20 @@ ToolTableDialog::ToolTableDialog(MachineTools* tools, QWidget* parent)
             accept();
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(tools, &MachineTools::machineChanged, this, &ToolTableDialog::machineChanged);
     resize(520, 360);
+}
+
+void ToolTableDialog::machineChanged()
+{
+    const bool edited = m_editor->document()->isModified();
+    m_editor->setPlainText(QString::fromUtf8(m_tools->text()));
+    m_editor->document()->setModified(false);
+    if (edited)
+        m_error->setText(tr("Another machine was opened: its table is shown; the unsaved edits "
+                            "were for the previous one and are dropped."));
+    else
+        m_error->clear();
 }
 
 QString ToolTableDialog::errorText() const

@@ -23,6 +23,10 @@ public:
     bool save(); // as the Save button: true when the table was kept
 
 private:
+    // Another machine opened while the dialog is open: its table replaces the text, so that
+    // Save never gives one machine's table to another; unsaved edits are said to be dropped.
+    void machineChanged();
+
     MachineTools* m_tools;
     QPlainTextEdit* m_editor;
     QLabel* m_error;

@@ -23,6 +23,7 @@ private Q_SLOTS:
     void save_validTable_keptPerMachineAndRemembered();
     void save_invalidLine_errorShownNothingChangedLayoutStill();
     void load_otherMachine_itsOwnTable();
+    void dialogOpen_otherMachineLoaded_showsItsTableNeverSavesTheOldText();
 
 private:
     QTemporaryDir m_dir;
@@ -91,6 +92,35 @@ void TestToolTableDialog::load_otherMachine_itsOwnTable()
     tools.load(m_dir.filePath(QStringLiteral("c.machine.json")));
     QCOMPARE(tools.table().find(1)->length, 5.0);
     QVERIFY(!tools.table().find(9));
+}
+
+// The dialog stays open while another machine is opened: it shows that machine's table, says
+// that unsaved edits were dropped, and Save then stores only what it shows, for the new machine.
+void TestToolTableDialog::dialogOpen_otherMachineLoaded_showsItsTableNeverSavesTheOldText()
+{
+    MachineTools tools;
+    const QString a = m_dir.filePath(QStringLiteral("e.machine.json"));
+    const QString b = m_dir.filePath(QStringLiteral("f.machine.json"));
+    tools.load(b);
+    QVERIFY(tools.setText("T2 Z7 ;b's drill", nullptr));
+    tools.load(a);
+    QVERIFY(tools.setText("T1 Z5 ;a's mill", nullptr));
+    ToolTableDialog dialog(&tools);
+    const int errorTop = dialog.findChild<QLabel*>(QStringLiteral("toolTableError"))->y();
+    dialog.editor()->moveCursor(QTextCursor::End);
+    QTest::keyClicks(dialog.editor(), QStringLiteral(" (edited)")); // typed, unsaved
+    tools.load(b);
+    QCOMPARE(dialog.editor()->toPlainText(), QStringLiteral("T2 Z7 ;b's drill"));
+    QVERIFY2(dialog.errorText().contains(QStringLiteral("dropped")),
+             qPrintable(dialog.errorText()));
+    QCOMPARE(dialog.findChild<QLabel*>(QStringLiteral("toolTableError"))->y(), errorTop);
+    QVERIFY(dialog.save());
+    QCOMPARE(tools.table().find(2)->length, 7.0);
+    QVERIFY(!tools.table().find(1));
+    tools.load(a);
+    QCOMPARE(tools.table().find(1)->length, 5.0); // a's table was not touched
+    QCOMPARE(dialog.editor()->toPlainText(), QStringLiteral("T1 Z5 ;a's mill"));
+    QVERIFY(dialog.errorText().isEmpty()); // nothing edited: nothing to say
 }
 
 QTEST_MAIN(TestToolTableDialog)
