@@ -48,36 +48,34 @@ int startIndex(const Program& program, int fromLine, CheckErrors* errors)
     return start;
 }
 
-// A G1 on a controller whose rate is also its fast speed (Capabilities::feedRateSetsRapid) is
-// followed by the fast speed put back before a G0 (ProgramRates): only where the model can read
-// that speed back first. Where it cannot (EMIS #E1), a G0 on such a controller in a program
-// that also has a G1 there would run at the last F: refused at every such G0.
-void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
-                           CheckErrors* errors)
+// The label of the feed-rate parameter of a controller whose G1 rate is also its fast speed
+// (Capabilities::feedRateSetsRapid) and that can neither read it back nor know it for every
+// axis of the controller (EMIS: no work speed written in this session nor stored): nothing to
+// put back after a G1. Empty: it can be put back.
+QString unreadableFastSpeed(const MachineFacts& facts, const QString& controller)
 {
-    const machine::MachineDescription& d = facts.description;
-    const auto unreadableRate = [&](const QString& controller) -> QString {
-        const Capabilities caps = facts.capabilities.value(controller);
-        if (!caps.feedRateSetsRapid || !caps.feedRateParameter)
-            return {};
-        const ParameterSpec* spec =
-            facts.schemas.value(controller).find(QString::fromLatin1(caps.feedRateParameter));
-        // Unreadable, and not known to the adapter either for every axis of the controller
-        // (EMIS: no work speed written in this session nor stored): nothing to put back.
-        const ParameterValue held = facts.knownParameters.value(controller)
-                                        .value(QString::fromLatin1(caps.feedRateParameter));
-        bool known = !held.perAxis.isEmpty();
-        for (const machine::MachineAxis& a : d.axes)
-            known = known && (a.controller != controller || held.perAxis.contains(a.axis));
-        return spec && !spec->readable && !known ? spec->label : QString();
-    };
+    const Capabilities caps = facts.capabilities.value(controller);
+    if (!caps.feedRateSetsRapid || !caps.feedRateParameter)
+        return {};
+    const QString name = QString::fromLatin1(caps.feedRateParameter);
+    const ParameterSpec* spec = facts.schemas.value(controller).find(name);
+    const ParameterValue held = facts.knownParameters.value(controller).value(name);
+    bool known = !held.perAxis.isEmpty();
+    for (const machine::MachineAxis& a : facts.description.axes)
+        known = known && (a.controller != controller || held.perAxis.contains(a.axis));
+    return spec && !spec->readable && !known ? spec->label : QString();
+}
+
+// The controllers a G1 rate is written to from `start` on: a G1's axes', an arc's (the rates of
+// a G1 over the axes it moves, ArcPath::rateBlock), a drilling cycle's Z (DrillCycle::rateBlock).
+QSet<QString> controllersWithG1(const Program& program, int start,
+                                const machine::MachineDescription& d)
+{
     QSet<QString> withG1;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
         const ProgramBlock& b = program.blocks.at(i);
         if (b.kind != BlockKind::Feed && !isArc(b.kind) && b.kind != BlockKind::DrillCycle)
             continue;
-        // An arc writes the rates of a G1 over the axes it moves (ArcPath::rateBlock), a
-        // drilling cycle those of Z (DrillCycle::rateBlock).
         const QStringList axes = isArc(b.kind) ? ArcPath::movingAxes(b)
                                  : b.kind == BlockKind::DrillCycle
                                      ? QStringList{QStringLiteral("Z")}
@@ -86,6 +84,18 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             if (const machine::MachineAxis* a = d.axis(name))
                 withG1.insert(a->controller);
     }
+    return withG1;
+}
+
+// A G1 on a controller whose rate is also its fast speed is followed by the fast speed put back
+// before a G0 (ProgramRates): only where it can be read back or is known. Where not, a G0 (or a
+// drilling cycle's rapid) on such a controller in a program that also has a G1 there would run
+// at the last F: refused at every such block.
+void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
+                           CheckErrors* errors)
+{
+    const machine::MachineDescription& d = facts.description;
+    const QSet<QString> withG1 = controllersWithG1(program, start, d);
     if (withG1.isEmpty())
         return;
     for (qsizetype i = start; i < program.blocks.size(); ++i) {
@@ -100,7 +110,7 @@ void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts
             const machine::MachineAxis* a = d.axis(it.key());
             if (!a || !withG1.contains(a->controller))
                 continue;
-            if (const QString label = unreadableRate(a->controller); !label.isEmpty()) {
+            if (const QString label = unreadableFastSpeed(facts, a->controller); !label.isEmpty()) {
                 errors->add(b.line, b.columnOf(a->name), [&] {
                     if (block.kind == BlockKind::DrillCycle)
                         return ProgramCheck::tr(
