@@ -3,6 +3,7 @@
 // LinuxCNC's end-point tolerance (a spiral within it, an error naming the radii beyond it),
 // work offsets and inches, the chords within the tolerance of the true curve, and the bounds
 // the soft limits are checked at.
+#include "MillTestSupport.h"
 #include "program/ArcPath.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
@@ -13,25 +14,7 @@ using namespace stepdeck::program;
 
 namespace {
 
-machine::MachineDescription mill()
-{
-    machine::MachineDescription d;
-    machine::MachineController c;
-    c.id = QStringLiteral("table");
-    c.modelId = QStringLiteral("elab");
-    d.controllers << c;
-    const auto axis = [](const char* name, Axis on) {
-        machine::MachineAxis a;
-        a.name = QLatin1String(name);
-        a.controller = QStringLiteral("table");
-        a.axis = on;
-        a.unit = machine::AxisUnit::Millimetre;
-        a.stepsPerUnit = 100;
-        return a;
-    };
-    d.axes << axis("X", Axis::X) << axis("Y", Axis::Y) << axis("Z", Axis::Z);
-    return d;
-}
+using pathtest::mill;
 
 // The last block of `program` (parsed for X Y Z).
 ProgramBlock lastBlock(const QString& program)

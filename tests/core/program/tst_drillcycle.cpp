@@ -2,6 +2,7 @@
 // G80, G98, G99 as the parser reads them (sticky numbers, LinuxCNC's errors), and the moves
 // DrillCycle expands them into from the current point: retract planes, pecks, dwell, repeats in
 // G90 and G91, work offsets and inches, unknown positions and the bound on moves.
+#include "MillTestSupport.h"
 #include "program/DrillCycle.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
@@ -11,25 +12,7 @@ using namespace stepdeck::program;
 
 namespace {
 
-machine::MachineDescription mill()
-{
-    machine::MachineDescription d;
-    machine::MachineController c;
-    c.id = QStringLiteral("table");
-    c.modelId = QStringLiteral("elab");
-    d.controllers << c;
-    const auto axis = [](const char* name, Axis on) {
-        machine::MachineAxis a;
-        a.name = QLatin1String(name);
-        a.controller = QStringLiteral("table");
-        a.axis = on;
-        a.unit = machine::AxisUnit::Millimetre;
-        a.stepsPerUnit = 100;
-        return a;
-    };
-    d.axes << axis("X", Axis::X) << axis("Y", Axis::Y) << axis("Z", Axis::Z);
-    return d;
-}
+using pathtest::mill;
 
 const QStringList kAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z"),
                         QStringLiteral("A")};
