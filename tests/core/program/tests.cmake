@@ -1,11 +1,18 @@
 # Motion programs (issue 20): the G-code subset's lexer and parser.
 stepdeck_add_test(tst_programlexer SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlexer.cpp LABELS unit)
-stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp LABELS unit)
+stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramParserTestSupport.h LABELS unit)
+stepdeck_add_test(tst_programparserdialect SOURCES
+                  ${CMAKE_CURRENT_LIST_DIR}/tst_programparserdialect.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramParserTestSupport.h LABELS unit)
 # The check against a machine and the preview; the docs' example programs are read from the
 # source tree.
 stepdeck_add_test(tst_programcheck SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheck.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 target_compile_definitions(tst_programcheck PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# The check of the dialect's coordinates, tools and spindle scale (issue 29).
+stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckdialect.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The check's preview and the work coordinates it uses.
 stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpreview.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
@@ -19,7 +26,8 @@ stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_program
 stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckedruns.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
 # G2/G3 geometry (issue 29): the path the check and the run share.
-stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp LABELS unit)
+stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/MillTestSupport.h LABELS unit)
 # A machine's tool table in LinuxCNC's tool.tbl format (issue 29).
 stepdeck_add_test(tst_tooltable SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltable.cpp LABELS unit)
 # Programs in the styles CAM posts write, run end to end on an E-LAB simulator (issue 29).
@@ -29,4 +37,5 @@ target_compile_definitions(tst_camprograms PRIVATE
                            STEPDECK_CAM_DIR="${CMAKE_CURRENT_LIST_DIR}/cam")
 # Drilling cycles G81, G82, G83, G73 (issue 29): the words and the moves the check and the run
 # share.
-stepdeck_add_test(tst_drillcycle SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drillcycle.cpp LABELS unit)
+stepdeck_add_test(tst_drillcycle SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drillcycle.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/MillTestSupport.h LABELS unit)

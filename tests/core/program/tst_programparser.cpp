@@ -1,104 +1,14 @@
 // The program parser (issue 20, docs/programs.md): a golden table of every word, the modal
 // state each block carries, every error with its line and column, repeats and their
 // partners, and the stream: byte by byte, random chunks and garbage give the same result.
+#include "ProgramParserTestSupport.h"
 #include "program/ProgramParser.h"
 #include <QRandomGenerator>
 #include <QtTest>
 
 using namespace stepdeck::program;
 
-namespace {
-const QStringList kAxes{"X", "Y", "Z", "A"};
-
-// A block in one line: "G0 X=10 Y=5 abs mm F-" and the action's values.
-QString describe(const ProgramBlock& b)
-{
-    QStringList out{blockWord(b.kind).isEmpty() ? QStringLiteral("modal") : blockWord(b.kind)};
-    for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it)
-        out << QStringLiteral("%1=%2").arg(it.key()).arg(it.value());
-    out << (b.relative ? QStringLiteral("rel") : QStringLiteral("abs"));
-    out << (b.inches ? QStringLiteral("in") : QStringLiteral("mm"));
-    out << (b.feed ? QStringLiteral("F%1").arg(*b.feed) : QStringLiteral("F-"));
-    switch (b.kind) {
-    case BlockKind::Dwell:
-        out << QStringLiteral("%1s").arg(b.seconds);
-        break;
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-        out << QStringLiteral("%1rpm").arg(b.rpm);
-        break;
-    case BlockKind::OutputOn:
-    case BlockKind::OutputOff:
-        out << QStringLiteral("P%1").arg(b.number);
-        break;
-    case BlockKind::WaitInput:
-        out << QStringLiteral("P%1 %2 %3s")
-                   .arg(b.number)
-                   .arg(b.inputHigh ? QStringLiteral("high") : QStringLiteral("low"))
-                   .arg(b.seconds);
-        break;
-    case BlockKind::Pause:
-    case BlockKind::OptionalPause:
-        out << QStringLiteral("\"%1\"").arg(b.prompt);
-        break;
-    case BlockKind::ToolChange:
-        out << QStringLiteral("T%1 \"%2\"").arg(b.number).arg(b.prompt);
-        break;
-    case BlockKind::RepeatStart:
-        out << QStringLiteral("x%1").arg(b.count);
-        break;
-    case BlockKind::ArcClockwise:
-    case BlockKind::ArcCounterClockwise: {
-        const QString plane[] = {QStringLiteral("G17"), QStringLiteral("G18"),
-                                 QStringLiteral("G19")};
-        out << plane[int(b.plane)];
-        const auto word = [&](const char* l, const std::optional<double>& v) {
-            if (v)
-                out << QStringLiteral("%1%2").arg(QLatin1String(l)).arg(*v);
-        };
-        word("I", b.arc.i);
-        word("J", b.arc.j);
-        word("K", b.arc.k);
-        word("R", b.arc.radius);
-        out << QStringLiteral("P%1").arg(b.arc.turns);
-        if (b.arc.centreAbsolute)
-            out << QStringLiteral("G90.1");
-        break;
-    }
-    default:
-        break;
-    }
-    if (b.kind == BlockKind::SetCoordinates)
-        out << QStringLiteral("P%1 %2").arg(b.number).arg(b.fromPosition ? "L20" : "L2");
-    if (b.coordinateSystem >= 0)
-        out << QStringLiteral("G%1").arg(54 + b.coordinateSystem);
-    if (b.machineCoordinates)
-        out << QStringLiteral("G53");
-    if (b.lengthTool >= 0)
-        out << QStringLiteral("H%1").arg(b.lengthTool);
-    if (b.appliesLengthOffset)
-        out << QStringLiteral("G43");
-    if (!b.message.isEmpty())
-        out << QStringLiteral("msg\"%1\"").arg(b.message);
-    return out.join(QLatin1Char(' '));
-}
-
-QStringList describeAll(const Program& p)
-{
-    QStringList out;
-    for (const ProgramBlock& b : p.blocks)
-        out << QStringLiteral("%1: %2").arg(b.line).arg(describe(b));
-    return out;
-}
-
-QStringList texts(const QList<ProgramError>& errors)
-{
-    QStringList out;
-    for (const ProgramError& e : errors)
-        out << e.text();
-    return out;
-}
-} // namespace
+using namespace stepdeck::program::parsertest;
 
 class TestProgramParser : public QObject
 {
@@ -117,11 +27,6 @@ private Q_SLOTS:
     void feed_overlongLine_boundedAndNamed();
     void parse_crlfAndNoFinalNewline_sameBlocks();
     void parse_wordColumns_keptForTheCheck();
-    void parse_modalGroups_stateOnEveryBlock_data();
-    void parse_modalGroups_stateOnEveryBlock();
-    void parse_camHeader_percentBomAndModes_blocksAsWithout();
-    void parse_spindleSpeed_modalOnAnyLine();
-    void parse_switchBesideMotion_keptToRunFirst();
 };
 
 void TestProgramParser::parse_everyWord_golden_data()
@@ -591,110 +496,6 @@ void TestProgramParser::parse_wordColumns_keptForTheCheck()
     QCOMPARE(p->blocks.at(5).columnOf("F"), 1);
     QCOMPARE(p->blocks.at(0).columnOf("F"), 15);
     QCOMPARE(p->blocks.at(0).columnOf({}), 5);
-}
-
-void TestProgramParser::parse_modalGroups_stateOnEveryBlock_data()
-{
-    QTest::addColumn<QString>("program");
-    QTest::addColumn<QStringList>("states"); // per block: plane, path mode, tolerance
-    QTest::newRow("defaults") << "G0 X1" << QStringList{"XY blend -"};
-    QTest::newRow("planes modal") << "G18\nG0 X1\nG19 G0 Y1\nG17\nG0 Z1"
-                                  << QStringList{"XZ blend -", "XZ blend -", "YZ blend -",
-                                                 "XY blend -", "XY blend -"};
-    QTest::newRow("path modes") << "G61\nG0 X1\nG61.1\nG64 P0.02 Q0.01\nG0 X2\nG64\nG0 X3"
-                                << QStringList{"XY exact-path -", "XY exact-path -",
-                                               "XY exact-stop -", "XY blend 0.02",
-                                               "XY blend 0.02",   "XY blend -",
-                                               "XY blend -"};
-}
-
-void TestProgramParser::parse_modalGroups_stateOnEveryBlock()
-{
-    QFETCH(QString, program);
-    QFETCH(QStringList, states);
-    QList<ProgramError> errors;
-    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
-    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    QStringList got;
-    for (const ProgramBlock& b : p->blocks) {
-        const QString plane = b.plane == Plane::XY   ? QStringLiteral("XY")
-                              : b.plane == Plane::XZ ? QStringLiteral("XZ")
-                                                     : QStringLiteral("YZ");
-        const QString mode = b.pathMode == PathMode::ExactPath   ? QStringLiteral("exact-path")
-                             : b.pathMode == PathMode::ExactStop ? QStringLiteral("exact-stop")
-                                                                 : QStringLiteral("blend");
-        got << QStringLiteral("%1 %2 %3")
-                   .arg(plane, mode,
-                        b.pathTolerance ? QString::number(*b.pathTolerance) : QStringLiteral("-"));
-    }
-    QCOMPARE(got, states);
-}
-
-// A header as CAM posts write it: a byte-order mark, "%" first and last, N numbers, a
-// program comment, the safety line of modes, CRLF line ends. The blocks are those of the same
-// program without any of it.
-void TestProgramParser::parse_camHeader_percentBomAndModes_blocksAsWithout()
-{
-    const QByteArray cam = "\xEF\xBB\xBF%\r\n(PART 1001 -- FACING)\r\n"
-                           "N10 G90 G94 G17 G40 G49 G80\r\nN15 G21\r\nN20 G0 X10 Y5\r\n"
-                           "N25 G1 Z-1 F300\r\nN30 M30\r\n%\r\n"
-                           "anything after the closing percent is ignored\r\n";
-    const QByteArray plain = "\n\nG90\nG21\nG0 X10 Y5\nG1 Z-1 F300\nM30\n";
-    QList<ProgramError> errors;
-    const std::optional<Program> a = ProgramParser::parse(cam, kAxes, &errors);
-    QVERIFY2(a, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    const std::optional<Program> b = ProgramParser::parse(plain, kAxes, &errors);
-    QVERIFY(b);
-    QCOMPARE(describeAll(*a), describeAll(*b));
-    // A "%" line of its own, even after blank lines, opens the program (LinuxCNC).
-    QVERIFY(ProgramParser::parse("\n  %  \nG0 X1\n%\n", kAxes, &errors));
-}
-
-// S as LinuxCNC reads it (issue 29): modal, on any line; alone (or with G1 and no axis
-// words, LightBurn's "G1 S0") a block that sets the speed; M3 without S starts at the S in
-// effect (0 before any).
-void TestProgramParser::parse_spindleSpeed_modalOnAnyLine()
-{
-    QList<ProgramError> errors;
-    const std::optional<Program> p = ProgramParser::parse(
-        "M3\nG00 S10000\nM3\nG1 X5 S500 F100\nG1 X6\nG1 S0\nM5\n", kAxes, &errors);
-    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    QStringList got;
-    for (const ProgramBlock& b : p->blocks)
-        got << QStringLiteral("%1 %2%3")
-                   .arg(blockWord(b.kind))
-                   .arg(b.rpm)
-                   .arg(b.spindleChange ? QStringLiteral(" new") : QString());
-    QCOMPARE(got, (QStringList{"M3 0", "S 10000 new", "M3 10000", "G1 500 new", "G1 500", "S 0 new",
-                               "M5 0"}));
-}
-
-// M3/M4/M5/M7/M8/M9 beside a motion (Vectric's "G0X0.000Y0.000S12000M3"): the motion is the
-// block, the switch is kept to run before it (LinuxCNC's order), at its own column. Beside
-// anything else, or two of them, it stays an error.
-void TestProgramParser::parse_switchBesideMotion_keptToRunFirst()
-{
-    QList<ProgramError> errors;
-    const std::optional<Program> p = ProgramParser::parse(
-        "G0X0.000Y0.000S12000M3\nM8 G1 X1 F100\nG2 X2 I0.5 M9\n", kAxes, &errors);
-    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    QCOMPARE(p->blocks.size(), 3);
-    QCOMPARE(p->blocks.at(0).kind, BlockKind::Rapid);
-    QCOMPARE(p->blocks.at(0).switchFirst, std::optional<BlockKind>(BlockKind::SpindleOn));
-    QCOMPARE(p->blocks.at(0).switchColumn, 21);
-    QCOMPARE(p->blocks.at(0).rpm, 12000.0);
-    QCOMPARE(switchBlock(p->blocks.at(0)).kind, BlockKind::SpindleOn);
-    QCOMPARE(switchBlock(p->blocks.at(0)).columnOf({}), 21);
-    QVERIFY(switchBlock(p->blocks.at(0)).axes.isEmpty());
-    QCOMPARE(p->blocks.at(1).kind, BlockKind::Feed);
-    QCOMPARE(p->blocks.at(1).switchFirst, std::optional<BlockKind>(BlockKind::CoolantFlood));
-    QCOMPARE(p->blocks.at(2).kind, BlockKind::ArcClockwise);
-    QCOMPARE(p->blocks.at(2).switchFirst, std::optional<BlockKind>(BlockKind::CoolantOff));
-    for (const char* bad : {"M3 M8", "G4 P1 M3", "G0 X1 M3 M8", "G0 X1 M6"}) {
-        QVERIFY2(!ProgramParser::parse(bad, kAxes, &errors), bad);
-        QVERIFY2(errors.first().message.startsWith(QStringLiteral("one action per line")),
-                 qPrintable(errors.first().text()));
-    }
 }
 
 QTEST_APPLESS_MAIN(TestProgramParser)

@@ -1,0 +1,209 @@
+// The check of the CAM dialect's machine state (issue 29, docs/programs.md "Coordinates",
+// "Tools", "Spindle speed"): G54..G59, G53, G10 and G92 with the soft limits where the words
+// land, G43 with the tool table, and S within the machine's spindle scale. The check's
+// other errors: tst_programcheck.
+#include "ProgramCheckTestSupport.h"
+#include "program/ProgramCheck.h"
+#include "program/ProgramParser.h"
+#include <QtTest>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+using namespace stepdeck::program::checktest;
+
+class TestProgramCheckDialect : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void check_coordinates_targetsLimitsAndErrors_data();
+    void check_coordinates_targetsLimitsAndErrors();
+    void check_tools_lengthOffsetAndTable_data();
+    void check_tools_lengthOffsetAndTable();
+    void check_spindleAboveMaxRpm_refusedAtS_data();
+    void check_spindleAboveMaxRpm_refusedAtS();
+};
+
+// G54..G59, G53, G10 L2/L20 and G92 (issue 29): where absolute words go, the soft limits there,
+// and the positions G10 L20 and G92 need. "systems": "<index>:<axis>=<offset>;...", 0 = G54;
+// "end": the last point of the preview, in the work coordinates of the system active at the
+// start.
+void TestProgramCheckDialect::check_coordinates_targetsLimitsAndErrors_data()
+{
+    QTest::addColumn<QString>("known");
+    QTest::addColumn<QString>("systems");
+    QTest::addColumn<int>("active");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("endX");
+    QTest::newRow("G55 selects its offsets")
+        << "X=0"
+        << "1:X=50" << 0 << "G55 G0 X10" << QStringList{} << 60.0;
+    QTest::newRow("G55 past the soft limit")
+        << "X=0"
+        << "1:X=50" << 0 << "G55 G0 X60"
+        << QStringList{"1:8: X reaches 60 mm in work coordinates, 110 mm in machine coordinates: "
+                       "outside the soft limits 0..100 mm (machine)"}
+        << 110.0;
+    QTest::newRow("no G5x: the active system")
+        << "X=0"
+        << "1:X=50" << 1 << "G0 X10" << QStringList{} << 10.0;
+    QTest::newRow("G54 named: G54 whatever is active")
+        << "X=0"
+        << "1:X=50" << 1 << "G54 G0 X10" << QStringList{} << -40.0;
+    QTest::newRow("G53: machine coordinates")
+        << "X=0"
+        << "1:X=50" << 1 << "G53 G0 X10" << QStringList{} << -40.0;
+    QTest::newRow("G10 L2 then G56")
+        << "X=0"
+        << "" << 0 << "G10 L2 P3 X20\nG56 G0 X5" << QStringList{} << 25.0;
+    QTest::newRow("G10 L2 P0: the system in effect")
+        << "X=0"
+        << "" << 0 << "G57\nG10 L2 P0 X20\nG0 X5\nG54 G0 X5" << QStringList{} << 5.0;
+    QTest::newRow("G10 L20: the current point reads the words")
+        << "X=30"
+        << "" << 0 << "G10 L20 P1 X0\nG0 X5" << QStringList{} << 35.0;
+    QTest::newRow("G92, G92.2, G92.3")
+        << "X=30"
+        << "" << 0 << "G92 X0\nG0 X5\nG92.2\nG0 X5\nG92.3\nG0 X1" << QStringList{} << 31.0;
+    QTest::newRow("G92.1 clears it") << "X=30"
+                                     << "" << 0 << "G92 X0\nG92.1\nG0 X5" << QStringList{} << 5.0;
+    QTest::newRow("G92 in inches")
+        << "X=0"
+        << "" << 0 << "G20 G92 X1\nG21 G0 X0"
+        << QStringList{"2:8: X reaches 0 mm in work coordinates, -25.4 mm in machine coordinates: "
+                       "outside the soft limits 0..100 mm (machine)"}
+        << -25.4;
+    QTest::newRow("G92 on an unknown position")
+        << ""
+        << "" << 0 << "G92 X0"
+        << QStringList{"1:1: G92: the position of X is unknown: reference it first (G28 X)"} << 0.0;
+    QTest::newRow("G10 L20 on an unknown position")
+        << ""
+        << "" << 0 << "G10 L20 P2 X0"
+        << QStringList{"1:1: G10 L20: the position of X is unknown: reference it first (G28 X)"}
+        << 0.0;
+}
+
+void TestProgramCheckDialect::check_coordinates_targetsLimitsAndErrors()
+{
+    QFETCH(QString, known);
+    QFETCH(QString, systems);
+    QFETCH(int, active);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, endX);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions(known);
+    for (const QString& entry : systems.split(';', Qt::SkipEmptyParts)) {
+        const QStringList parts = entry.split(':');
+        const QStringList axis = parts.at(1).split('=');
+        facts.coordinateSystems[size_t(parts.at(0).toInt())].insert(axis.at(0),
+                                                                    axis.at(1).toDouble());
+    }
+    facts.activeSystem = active;
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    if (!known.isEmpty())
+        QCOMPARE(result.preview.path.last().position.value("X"), endX);
+}
+
+// G43's length on Z and the tool table (issue 29); "tools" as tool.tbl text.
+void TestProgramCheckDialect::check_tools_lengthOffsetAndTable_data()
+{
+    QTest::addColumn<QByteArray>("tools");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("endZ"); // work coordinates; NaN: not compared
+    const QByteArray table = "T1 Z10 ;long\nT2 Z-20 ;short\n";
+    QTest::newRow("no table, M6 as before")
+        << QByteArray() << "T7 M6\nG0 Z-5" << QStringList{} << -5.0;
+    QTest::newRow("no table, G43 H") << QByteArray() << "G43 H1 G0 Z-5"
+                                     << QStringList{"1:5: G43: the machine's tool table is empty: "
+                                                    "enter tool 1's length first"}
+                                     << -5.0;
+    QTest::newRow("G43 H2: Z goes down by its length")
+        << table << "T2 M6\nG43 H2 G0 Z-5" << QStringList{} << -25.0;
+    QTest::newRow("G43 H1 past Z's upper limit")
+        << table << "T1 M6 G43 H1\nG0 Z-5"
+        << QStringList{"2:4: Z reaches -5 mm in work coordinates, 5 mm in machine coordinates: "
+                       "outside the soft limits -50..0 mm (machine)"}
+        << 5.0;
+    QTest::newRow("G49 cancels") << table << "T2 M6 G43\nG49\nG0 Z-5" << QStringList{} << -5.0;
+    QTest::newRow("G53 ignores it") << table << "T2 M6 G43\nG53 G0 Z-5" << QStringList{} << -5.0;
+    QTest::newRow("T not in the table")
+        << table << "T3 M6" << QStringList{"1:4: T3: tool 3 is not in the machine's tool table"}
+        << qQNaN();
+    QTest::newRow("H not in the table")
+        << table << "G43 H4" << QStringList{"1:5: G43: tool 4 is not in the machine's tool table"}
+        << qQNaN();
+}
+
+void TestProgramCheckDialect::check_tools_lengthOffsetAndTable()
+{
+    QFETCH(QByteArray, tools);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, endZ);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("Z=0");
+    const std::optional<ToolTable> table = ToolTable::parse(tools, nullptr);
+    QVERIFY(table);
+    facts.tools = *table;
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    if (!qIsNaN(endZ))
+        QCOMPARE(result.preview.path.last().position.value("Z"), endZ);
+}
+
+// Issue 29: with the machine's spindle scale, S is in rpm up to maxRpm (mapped onto the
+// E-LAB's 0..1000); above it, an error at the S word naming maxRpm. Without the scale, S is the
+// controller's own value.
+void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS_data()
+{
+    QTest::addColumn<double>("maxRpm"); // 0: none
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::newRow("S12000 of 24000") << 24000.0 << "G0 X1\nM3 S12000" << QStringList{};
+    QTest::newRow("S24000 of 24000") << 24000.0 << "M3 S24000" << QStringList{};
+    QTest::newRow("S0 of 24000") << 24000.0 << "M3 S0" << QStringList{};
+    QTest::newRow("S30000 of 24000")
+        << 24000.0 << "G0 X1\nN20 M3 S30000"
+        << QStringList{"2:8: controller \"table\": S30000 is above the spindle's maxRpm 24000 "
+                       "(the machine file's spindle scale)"};
+    QTest::newRow("S before M3") << 10000.0 << "S10001 M3"
+                                 << QStringList{"1:1: controller \"table\": S10001 is above the "
+                                                "spindle's maxRpm 10000 (the machine file's "
+                                                "spindle scale)"};
+    // S on any line (LightBurn, pcb2gcode): the same rules.
+    QTest::newRow("S on G1") << 24000.0 << "M3 S1000\nG1 X1 S30000 F100"
+                             << QStringList{"2:7: controller \"table\": S30000 is above the "
+                                            "spindle's maxRpm 24000 (the machine file's "
+                                            "spindle scale)"};
+    QTest::newRow("S alone") << 24000.0 << "S30000"
+                             << QStringList{"1:1: controller \"table\": S30000 is above the "
+                                            "spindle's maxRpm 24000 (the machine file's "
+                                            "spindle scale)"};
+    QTest::newRow("G1 S0") << 24000.0 << "M3\nG1 X1 S20000 F100\nG1 S0\nM5" << QStringList{};
+    QTest::newRow("no scale: S12000 beyond the E-LAB's 1000")
+        << 0.0 << "M3 S12000"
+        << QStringList{"1:4: controller \"table\": Spindle speed: value '12000' is out of range "
+                       "(allowed: 0..1000 rpm)"};
+}
+
+void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS()
+{
+    QFETCH(double, maxRpm);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    MachineFacts facts = machineFacts("mill");
+    if (maxRpm > 0)
+        facts.description.spindle.maxRpm = maxRpm;
+    facts.knownPositions = positions("X=0");
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+}
+
+QTEST_GUILESS_MAIN(TestProgramCheckDialect)
+#include "tst_programcheckdialect.moc"
