@@ -95,6 +95,7 @@ private:
     void recreateMachine(const MachineDescription& d);
     void writeElabSetup();
     bool run(const QByteArray& text, int fromLine = 1, bool stepOnly = false);
+    quint32 boardRpm() const; // the E-LAB simulator's spindle value (SetSpindleRPM)
 
     std::unique_ptr<Device> m_elab;
     std::unique_ptr<Device> m_nanotec;
@@ -170,6 +171,12 @@ bool TestProgramRunner::run(const QByteArray& text, int fromLine, bool stepOnly)
         return false;
     }
     return true;
+}
+
+quint32 TestProgramRunner::boardRpm() const
+{
+    return m_elab->probe(
+        [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); });
 }
 
 #define WAIT_ENDED() QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 60000)
@@ -328,10 +335,6 @@ void TestProgramRunner::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
     MachineDescription d = description();
     d.spindle.maxRpm = 24000;
     recreateMachine(d);
-    const auto boardRpm = [this] {
-        return m_elab->probe(
-            [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); });
-    };
     QVERIFY(run("M3 S12000\nM0\nM3 S24000\nM0\nM3 S6000\nM0\nM5\n"));
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
     QCOMPARE(boardRpm(), quint32(500));
@@ -359,10 +362,6 @@ void TestProgramRunner::spindle_sOnAnyLine_runningSpindleChangesOffOneWaits()
     MachineDescription d = description();
     d.spindle.maxRpm = 24000;
     recreateMachine(d);
-    const auto boardRpm = [this] {
-        return m_elab->probe(
-            [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); });
-    };
     const auto pausedAt = [this](int line) {
         return QTest::qWaitFor(
             [&] {
@@ -403,9 +402,7 @@ void TestProgramRunner::spindle_m4_refusedNothingSent()
     QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
     QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
     QVERIFY(frameIndex(*m_elab, QByteArray("\x01")) < 0);
-    QCOMPARE(m_elab->probe(
-                 [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->spindleRpm(); }),
-             quint32(0));
+    QCOMPARE(boardRpm(), quint32(0));
 }
 
 // Issue 29: "(MSG, text)" is said when the run reaches its line (in a repeat: each time),
