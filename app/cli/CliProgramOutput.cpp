@@ -3,7 +3,9 @@
 #include "CliText.h"
 #include <QJsonArray>
 #include <QJsonObject>
+#include <algorithm>
 #include <cstdio>
+#include <unistd.h>
 
 namespace stepdeck::cli {
 
@@ -51,6 +53,45 @@ void printProgress(const QString& line)
 {
     const QByteArray bytes = (line.simplified() + QLatin1Char('\n')).toUtf8();
     std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
+    std::fflush(stderr);
+}
+
+TerminalProgress::TerminalProgress(const QString& what)
+    : m_what(what), m_terminal(::isatty(STDERR_FILENO) != 0)
+{}
+
+TerminalProgress::~TerminalProgress()
+{
+    done();
+}
+
+bool TerminalProgress::update(qint64 done, qint64 total)
+{
+    if (!m_terminal || total <= 0)
+        return true;
+    const int percent = int(std::clamp<qint64>(done * 100 / total, 0, 100));
+    if (percent == m_shown)
+        return true;
+    m_shown = percent;
+    const QByteArray bytes =
+        (QLatin1Char('\r') + CliText::tr("%1: %2 %").arg(m_what).arg(percent)).toUtf8();
+    std::fwrite(bytes.constData(), 1, size_t(bytes.size()), stderr);
+    std::fflush(stderr);
+    return true;
+}
+
+program::CheckProgress TerminalProgress::callback()
+{
+    return [this](qint64 done, qint64 total) { return update(done, total); };
+}
+
+void TerminalProgress::done()
+{
+    if (m_shown < 0)
+        return;
+    m_shown = -1;
+    // Erase the line: what follows starts at the left margin.
+    std::fputs("\r\033[K", stderr);
     std::fflush(stderr);
 }
 

@@ -23,6 +23,27 @@ void printProgramPreview(const QString& path, const program::ProgramPreview& pre
 // One line on stderr without the "stepdeck-cli:" of a failure (progress, M0's prompt).
 void printProgress(const QString& line);
 
+// How far a long pass over a program is ("reading prog.ngc: 42 %"), on stderr and only when it
+// is a terminal (issue 29): one line rewritten in place, at most once per percent, erased by
+// done(). A check's CheckProgress.
+class TerminalProgress
+{
+public:
+    explicit TerminalProgress(const QString& what);
+    ~TerminalProgress();
+    TerminalProgress(const TerminalProgress&) = delete;
+    TerminalProgress& operator=(const TerminalProgress&) = delete;
+
+    bool update(qint64 done, qint64 total); // true: go on
+    program::CheckProgress callback();
+    void done();
+
+private:
+    QString m_what;
+    bool m_terminal = false;
+    int m_shown = -1; // percent on screen, -1: nothing
+};
+
 // Follows a running program: "line 12/40: G0 X10" on stderr when a block starts, or with
 // --json {"event":"block","line":12,"state":"done",...} on stdout when it ended; summary()
 // closes the run (a JSON object with --json, a line on stdout when it finished).

@@ -8,6 +8,7 @@
 #include "CliText.h"
 #include "model/NumberParsing.h"
 #include "program/ProgramParser.h"
+#include "program/ProgramReader.h"
 #include <QFile>
 #include <QFileInfo>
 #include <QSocketNotifier>
@@ -127,22 +128,28 @@ Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, P
     QStringList axisNames;
     for (const machine::MachineAxis& a : d.axes)
         axisNames << a.name;
+    // Streamed (issue 29): only the parser's index stays in memory, whatever the length.
     program::ProgramParser parser(axisNames);
+    TerminalProgress progress(CliText::tr("reading %1").arg(r.path));
+    const qint64 size = file.size();
     while (!file.atEnd()) {
         const QByteArray chunk = file.read(kReadChunk);
         if (chunk.isEmpty() && file.error() != QFileDevice::NoError)
             return Outcome::failure(
                 ExitFile, CliText::tr("cannot read %1: %2").arg(r.path, file.errorString()));
         parser.feed(chunk);
+        progress.update(file.pos(), size);
     }
+    progress.done();
     QList<program::ProgramError> errors;
-    const std::optional<Program> parsed = parser.finish(&errors);
+    std::optional<Program> parsed = parser.finish(&errors);
     if (!parsed) {
         printProgramErrors(r.path, errors);
         return Outcome::failure(
             ExitInvalidValue,
             CliText::tr("%1 is not a valid program; nothing was sent").arg(r.path));
     }
+    parsed->source = program::ProgramSource::file(r.path);
     *out = *parsed;
     return Outcome::success();
 }
@@ -154,8 +161,11 @@ Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
 {
     if (r.dryRun || r.skipPauses || ::isatty(STDIN_FILENO))
         return Outcome::success();
-    for (const program::ProgramBlock& b : p.blocks) {
-        if (!program::waitsForOperator(b.kind, r.optionalStops) || b.line < r.fromLine)
+    program::ProgramReader reader(p);
+    for (int i = std::max(0, reader.firstBlockAtLine(r.fromLine));
+         const program::ProgramBlock* at = reader.at(i); ++i) {
+        const program::ProgramBlock& b = *at;
+        if (!program::waitsForOperator(b.kind, r.optionalStops))
             continue;
         if (b.kind == program::BlockKind::OptionalPause)
             return Outcome::usage(CliText::tr("run: line %1 holds M1, which waits for Enter on a "
@@ -244,7 +254,10 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
     facts.coordinateSystems = r.systems;
     facts.activeSystem = 0;
     facts.tools = r.tools;
-    const program::ProgramCheckResult checked = program::ProgramCheck::check(p, facts, r.fromLine);
+    TerminalProgress progress(CliText::tr("checking %1").arg(r.path));
+    const program::ProgramCheckResult checked =
+        program::ProgramCheck::check(p, facts, r.fromLine, progress.callback());
+    progress.done();
     if (!checked.ok()) {
         printProgramErrors(r.path, checked.errors);
         return Outcome::failure(
@@ -300,7 +313,11 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
         settle.wake();
     });
     QList<program::ProgramError> errors;
-    if (!runner.start(p, r.fromLine, &errors)) {
+    TerminalProgress progress(CliText::tr("checking %1").arg(r.path));
+    runner.setCheckProgress(progress.callback());
+    const bool started = runner.start(p, r.fromLine, &errors);
+    progress.done();
+    if (!started) {
         printProgramErrors(r.path, errors);
         return Outcome::failure(
             ExitInvalidValue,

@@ -180,10 +180,4 @@ struct ProgramError
     }
 };
 
-struct Program
-{
-    QList<ProgramBlock> blocks; // every line that holds a word, in file order
-    int lines = 0;              // lines in the file
-};
-
 } // namespace stepdeck::program

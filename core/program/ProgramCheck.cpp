@@ -5,6 +5,7 @@
 #include "ArcPath.h"
 #include "DrillCycle.h"
 #include "ProgramParser.h"
+#include "ProgramReader.h"
 #include "ProgramSimulation.h"
 #include <QSet>
 #include <algorithm>
@@ -14,36 +15,35 @@ namespace stepdeck::program {
 namespace {
 
 // The index of the block a run from `fromLine` starts at, or -1 with the reason in *errors.
-int startIndex(const Program& program, int fromLine, CheckErrors* errors)
+int startIndex(ProgramReader& reader, int fromLine, CheckErrors* errors)
 {
-    const QList<ProgramBlock>& blocks = program.blocks;
     if (fromLine <= 1)
         return 0;
-    const auto first = std::find_if(blocks.cbegin(), blocks.cend(),
-                                    [&](const ProgramBlock& b) { return b.line >= fromLine; });
-    if (first == blocks.cend()) {
+    const int start = reader.firstBlockAtLine(fromLine);
+    if (start < 0) {
+        if (!reader.error().isEmpty())
+            return -1;
+        const int last = reader.lastBlockLine();
         *errors << ProgramError{
             fromLine, 1,
-            blocks.isEmpty()
+            last == 0
                 ? ProgramCheck::tr("run from line %1: the program has no blocks").arg(fromLine)
                 : ProgramCheck::tr("run from line %1: the program's last block is on line %2")
                       .arg(fromLine)
-                      .arg(blocks.last().line)};
+                      .arg(last)};
         return -1;
     }
-    const int start = int(first - blocks.cbegin());
     // The outermost repeat around the start: its passes would be lost (docs/programs.md).
-    for (int i = 0; i < start; ++i) {
-        const ProgramBlock& b = blocks.at(i);
-        if (b.kind == BlockKind::RepeatStart && b.partner >= start) {
-            *errors << ProgramError{fromLine, 1,
-                                    ProgramCheck::tr("run from line %1 is inside the repeat of "
-                                                     "line %2: start at line %2 or after its "
-                                                     "endrepeat")
-                                        .arg(fromLine)
-                                        .arg(b.line)};
-            return -1;
-        }
+    const int outer = reader.enclosingRepeat(start);
+    if (outer >= 0) {
+        const ProgramBlock* b = reader.at(outer);
+        *errors << ProgramError{fromLine, 1,
+                                ProgramCheck::tr("run from line %1 is inside the repeat of "
+                                                 "line %2: start at line %2 or after its "
+                                                 "endrepeat")
+                                    .arg(fromLine)
+                                    .arg(b ? b->line : 0)};
+        return -1;
     }
     return start;
 }
@@ -66,68 +66,131 @@ QString unreadableFastSpeed(const MachineFacts& facts, const QString& controller
     return spec && !spec->readable && !known ? spec->label : QString();
 }
 
-// The controllers a G1 rate is written to from `start` on: a G1's axes', an arc's (the rates of
-// a G1 over the axes it moves, ArcPath::rateBlock), a drilling cycle's Z (DrillCycle::rateBlock).
-QSet<QString> controllersWithG1(const Program& program, int start,
-                                const machine::MachineDescription& d)
+// A G1 on a controller whose rate is also its fast speed is followed by the fast speed put back
+// before a G0 (ProgramRates): only where it can be read back or is known. Where not, a G0 (or a
+// drilling cycle's rapid) on such a controller in a program that also has a G1 there would run
+// at the last F: refused at every such block. The walk streams the blocks, so a G0 is judged
+// once the whole program is read: what it needs of each block is kept, bounded (the first
+// kMaxErrors + 1 blocks per controller: more can never be listed).
+class FastSpeedPutBack
 {
-    QSet<QString> withG1;
-    for (qsizetype i = start; i < program.blocks.size(); ++i) {
-        const ProgramBlock& b = program.blocks.at(i);
+public:
+    explicit FastSpeedPutBack(const MachineFacts& facts) : m_facts(facts)
+    {
+        for (const machine::MachineController& c : facts.description.controllers)
+            if (!unreadableFastSpeed(facts, c.id).isEmpty())
+                m_unreadable.insert(c.id);
+    }
+
+    void visit(const ProgramBlock& block)
+    {
+        if (m_unreadable.isEmpty())
+            return;
+        noteG1(block);
+        if (block.kind == BlockKind::Rapid || block.kind == BlockKind::DrillCycle)
+            noteRapid(block);
+    }
+
+    void report(CheckErrors* errors) const
+    {
+        for (const Rapid& r : m_rapids)
+            for (const Candidate& c : r.candidates)
+                if (m_withG1.contains(c.controller)) {
+                    errors->add(r.line, c.column, [&] { return c.message; });
+                    break;
+                }
+    }
+
+private:
+    struct Candidate
+    {
+        QString controller;
+        int column = 0;
+        QString message;
+    };
+    struct Rapid
+    {
+        int line = 0;
+        QList<Candidate> candidates; // in the block's axis order
+    };
+
+    // The controllers a G1 rate is written to: a G1's axes', an arc's (the rates of a G1 over
+    // the axes it moves, ArcPath::rateBlock), a drilling cycle's Z (DrillCycle::rateBlock).
+    void noteG1(const ProgramBlock& b)
+    {
         if (b.kind != BlockKind::Feed && !isArc(b.kind) && b.kind != BlockKind::DrillCycle)
-            continue;
+            return;
         const QStringList axes = isArc(b.kind) ? ArcPath::movingAxes(b)
                                  : b.kind == BlockKind::DrillCycle
                                      ? QStringList{QStringLiteral("Z")}
                                      : b.axes.keys();
         for (const QString& name : axes)
-            if (const machine::MachineAxis* a = d.axis(name))
-                withG1.insert(a->controller);
+            if (const machine::MachineAxis* a = m_facts.description.axis(name))
+                m_withG1.insert(a->controller);
     }
-    return withG1;
-}
 
-// A G1 on a controller whose rate is also its fast speed is followed by the fast speed put back
-// before a G0 (ProgramRates): only where it can be read back or is known. Where not, a G0 (or a
-// drilling cycle's rapid) on such a controller in a program that also has a G1 there would run
-// at the last F: refused at every such block.
-void checkFastSpeedPutBack(const Program& program, int start, const MachineFacts& facts,
-                           CheckErrors* errors)
-{
-    const machine::MachineDescription& d = facts.description;
-    const QSet<QString> withG1 = controllersWithG1(program, start, d);
-    if (withG1.isEmpty())
-        return;
-    for (qsizetype i = start; i < program.blocks.size(); ++i) {
-        const ProgramBlock& block = program.blocks.at(i);
-        if (block.kind != BlockKind::Rapid && block.kind != BlockKind::DrillCycle)
-            continue;
+    void noteRapid(const ProgramBlock& block)
+    {
+        const machine::MachineDescription& d = m_facts.description;
         // A drilling cycle moves X, Y and Z at the fast speed too.
         const ProgramBlock b = block.kind == BlockKind::DrillCycle
                                    ? DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d)
                                    : block;
+        Rapid rapid{b.line, {}};
+        bool wanted = false;
         for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it) {
             const machine::MachineAxis* a = d.axis(it.key());
-            if (!a || !withG1.contains(a->controller))
+            if (!a || !m_unreadable.contains(a->controller))
                 continue;
-            if (const QString label = unreadableFastSpeed(facts, a->controller); !label.isEmpty()) {
-                errors->add(b.line, b.columnOf(a->name), [&] {
-                    if (block.kind == BlockKind::DrillCycle)
-                        return ProgramCheck::tr(
-                                   "%1: %4 moves it at the fast speed in a program with G1 on "
-                                   "controller \"%2\", whose fast speed (%3) cannot be read back "
-                                   "to be put back after G1; drill with G1 and F only")
-                            .arg(a->name, a->controller, label, blockWord(block));
-                    return ProgramCheck::tr(
-                               "%1: G0 in a program with G1 on controller \"%2\": its fast "
-                               "speed (%3) cannot be read back to be put back after G1; move %1 "
-                               "with G1 and F only, or with G0 only")
-                        .arg(a->name, a->controller, label);
-                });
-                break;
-            }
+            int& kept = m_kept[a->controller];
+            wanted = wanted || kept <= ProgramParser::kMaxErrors;
+            ++kept;
+            rapid.candidates << Candidate{a->controller, b.columnOf(a->name), message(block, *a)};
         }
+        if (wanted)
+            m_rapids << rapid;
     }
+
+    QString message(const ProgramBlock& block, const machine::MachineAxis& a) const
+    {
+        const QString label = unreadableFastSpeed(m_facts, a.controller);
+        if (block.kind == BlockKind::DrillCycle)
+            return ProgramCheck::tr("%1: %4 moves it at the fast speed in a program with G1 on "
+                                    "controller \"%2\", whose fast speed (%3) cannot be read "
+                                    "back to be put back after G1; drill with G1 and F only")
+                .arg(a.name, a.controller, label, blockWord(block));
+        return ProgramCheck::tr("%1: G0 in a program with G1 on controller \"%2\": its fast "
+                                "speed (%3) cannot be read back to be put back after G1; move %1 "
+                                "with G1 and F only, or with G0 only")
+            .arg(a.name, a.controller, label);
+    }
+
+    const MachineFacts& m_facts;
+    QSet<QString> m_unreadable; // controllers whose fast speed cannot be put back
+    QSet<QString> m_withG1;
+    QMap<QString, int> m_kept; // per controller: rapids kept
+    QList<Rapid> m_rapids;
+};
+
+// The walk of a check over a reader (the program's blocks, or the one pass over its text).
+void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
+          const CheckProgress& progress, ProgramCheckResult* result)
+{
+    ProgramPreview& preview = result->preview;
+    preview.motionNote = ProgramCheck::tr("the axes of a block start together, each at its own "
+                                          "rate; the block ends when every axis has arrived");
+    CheckErrors errors;
+    const int start = startIndex(reader, fromLine, &errors);
+    if (start >= 0) {
+        FastSpeedPutBack putBack(facts);
+        ProgramSimulation simulation(facts, &reader, &errors);
+        simulation.setFirstVisit([&putBack](const ProgramBlock& b) { putBack.visit(b); });
+        result->cancelled = !simulation.run(start, &preview, progress);
+        putBack.report(&errors);
+    }
+    if (!reader.error().isEmpty())
+        errors << ProgramError{0, 0, reader.error()};
+    result->errors = errors.take();
 }
 
 } // namespace
@@ -152,7 +215,21 @@ void CheckErrors::prune()
         m_errors.resize(ProgramParser::kMaxErrors);
         m_dropped = true;
         m_cutoffLine = m_errors.last().line;
+        for (auto it = m_once.begin(); it != m_once.end();)
+            it = int(*it >> 20) > m_cutoffLine ? m_once.erase(it) : std::next(it);
     }
+}
+
+bool CheckErrors::once(int line, int column, int kind)
+{
+    if (m_cutoffLine > 0 && line > m_cutoffLine)
+        return true; // add() drops it, without a message
+    const quint64 key =
+        quint64(quint32(line)) << 20 | quint64(column & 0xFFFF) << 4 | quint64(kind & 0xF);
+    if (m_once.contains(key))
+        return false;
+    m_once.insert(key);
+    return true;
 }
 
 QList<ProgramError> CheckErrors::take()
@@ -168,27 +245,34 @@ QList<ProgramError> CheckErrors::take()
 }
 
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
-                                       int fromLine)
+                                       int fromLine, const CheckProgress& progress)
 {
     ProgramCheckResult result;
-    ProgramPreview& preview = result.preview;
-    preview.lines = program.lines;
-    preview.motionNote = tr("the axes of a block start together, each at its own rate; the "
-                            "block ends when every axis has arrived");
-    CheckErrors errors;
-    const int start = startIndex(program, fromLine, &errors);
-    if (start < 0) {
-        result.errors = errors.take();
+    result.preview.lines = program.lines;
+    ProgramReader reader(program);
+    walk(reader, facts, fromLine, progress, &result);
+    if (result.ok())
+        result.program = program;
+    return result;
+}
+
+ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStringList& axisNames,
+                                       const MachineFacts& facts, int fromLine,
+                                       const CheckProgress& progress)
+{
+    ProgramCheckResult result;
+    ProgramReader reader(source, axisNames);
+    walk(reader, facts, fromLine, progress, &result);
+    if (result.cancelled)
         return result;
-    }
-    PlannedProgram planned;
-    planned.blocks.resize(size_t(program.blocks.size()));
-    ProgramPlan plan(facts, &planned, &errors);
-    for (qsizetype i = start; i < program.blocks.size(); ++i)
-        plan.plan(int(i), program.blocks.at(i));
-    checkFastSpeedPutBack(program, start, facts, &errors);
-    ProgramSimulation(facts, &planned, &errors).run(start, &preview);
-    result.errors = errors.take();
+    // The parser's errors come first: a program that does not parse is not checked further.
+    QList<ProgramError> parseErrors;
+    result.program = reader.finish(&parseErrors);
+    if (!result.program)
+        result.errors = parseErrors;
+    result.preview.lines = result.program ? result.program->lines : 0;
+    if (!result.ok())
+        result.program.reset();
     return result;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "Program.h"
 #include "ProgramBlock.h"
 #include "ProgramCoordinates.h"
 #include "machine/MachineDescription.h"
@@ -8,6 +9,7 @@
 #include <QCoreApplication>
 #include <QMap>
 #include <QSet>
+#include <functional>
 
 namespace stepdeck::machine {
 class Machine;
@@ -101,8 +103,15 @@ struct ProgramCheckResult
 {
     QList<ProgramError> errors; // every problem, in line order (line, column of the word)
     ProgramPreview preview;     // valid only without errors
-    bool ok() const { return errors.isEmpty(); }
+    // The one pass over a source: the program read (its index, for the run), when it parsed.
+    std::optional<Program> program;
+    bool cancelled = false; // the progress callback ended the check: nothing is known
+    bool ok() const { return errors.isEmpty() && !cancelled; }
 };
+
+// How far a check is (bytes of the text read, of its length); false ends the check
+// (cancelled). Called every few thousand blocks from the thread that checks.
+using CheckProgress = std::function<bool(qint64 done, qint64 total)>;
 
 // Checks a parsed program against a machine before anything moves (docs/programs.md):
 // - absolute targets in work coordinates (MachineFacts::coordinateSystems), the soft limits in
@@ -122,13 +131,23 @@ class ProgramCheck
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramCheck)
 public:
-    // Blocks a check executes at most (repeats counted out); a longer program is an error.
-    static constexpr qint64 kMaxBlocksRun = 5000000;
-    // Chords the arcs of a run take at most (ArcPath), counted out likewise.
+    // Blocks the repeats of a run execute beyond the program's own (each of its blocks once)
+    // at most; more is an error (a runaway repeat, not a long program: no length is refused).
+    static constexpr qint64 kMaxRepeatedBlocks = 5000000;
+    // Moves the arcs and drilling cycles of a run take at most (ArcPath, DrillCycle), counted
+    // out likewise: this many, and kChordsPerBlock more for each block of the program.
     static constexpr qint64 kMaxChordsRun = 20000000;
+    static constexpr qint64 kChordsPerBlock = 100;
 
+    // A parsed program (its blocks read again from its source).
     static ProgramCheckResult check(const Program& program, const MachineFacts& facts,
-                                    int fromLine = 1);
+                                    int fromLine = 1, const CheckProgress& progress = {});
+    // The one pass (issue 29): the text parsed and checked as it is read, in bounded memory
+    // whatever its length; result.program is the program when it parsed. The parser's errors,
+    // where there are any, are the result's errors (the check's are then left out).
+    static ProgramCheckResult check(const ProgramSource& source, const QStringList& axisNames,
+                                    const MachineFacts& facts, int fromLine = 1,
+                                    const CheckProgress& progress = {});
 };
 
 // A machine output or input number (M64/M65/M66 P) on a controller: which one, and its own

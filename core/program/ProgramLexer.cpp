@@ -75,8 +75,10 @@ private:
             m_out->comment = text.trimmed().toString();
     }
 
-    // [+-]digits[.digits] or [+-].digits; nullopt (and an error) otherwise.
-    std::optional<double> readNumber(const QString& what)
+    // [+-]digits[.digits] or [+-].digits; nullopt (and an error) otherwise. what(): the word's
+    // name for the message (formed only then: a program of millions of lines reads millions of
+    // numbers).
+    template <typename What> std::optional<double> readNumber(const What& what)
     {
         skipSpaces();
         const qsizetype start = m_pos;
@@ -94,21 +96,22 @@ private:
                 ++digits;
             }
         }
-        const QString text = m_line.mid(start, m_pos - start).toString();
+        const QStringView text = m_line.mid(start, m_pos - start);
         if (digits == 0) {
-            fail(int(start) + 1, ProgramLexer::tr("%1 needs a number").arg(what));
+            fail(int(start) + 1, ProgramLexer::tr("%1 needs a number").arg(what()));
             return std::nullopt;
         }
         const QChar next = peek();
         if (!atEnd() && (next.isDigit() || next == QLatin1Char('.') || next == QLatin1Char('e') ||
                          next == QLatin1Char('E'))) {
             fail(int(start) + 1, ProgramLexer::tr("%1: \"%2%3\" is not a decimal number")
-                                     .arg(what, text, QString(next)));
+                                     .arg(what(), text.toString(), QString(next)));
             return std::nullopt;
         }
         const double value = text.toDouble();
         if (!std::isfinite(value)) {
-            fail(int(start) + 1, ProgramLexer::tr("%1: %2 is not a finite number").arg(what, text));
+            fail(int(start) + 1,
+                 ProgramLexer::tr("%1: %2 is not a finite number").arg(what(), text.toString()));
             return std::nullopt;
         }
         return value;
@@ -125,14 +128,17 @@ private:
         ++m_pos;
         const QChar letter = c.toUpper();
         const qsizetype valueStart = m_pos;
-        const std::optional<double> value = readNumber(QString(letter));
+        const std::optional<double> value = readNumber([letter] { return QString(letter); });
         if (!value)
             return;
-        m_out->words << ProgramWord{
-            letter, *value,
-            QString(letter) +
-                m_line.mid(valueStart, m_pos - valueStart).toString().remove(QLatin1Char(' ')),
-            letterColumn};
+        const QStringView written = m_line.mid(valueStart, m_pos - valueStart);
+        QString valueText;
+        valueText.reserve(written.size() + 1);
+        valueText += letter;
+        for (const QChar ch : written)
+            if (ch != QLatin1Char(' '))
+                valueText += ch;
+        m_out->words << ProgramWord{letter, *value, std::move(valueText), letterColumn};
         if (letter == QLatin1Char('O'))
             readKeyword();
     }
@@ -153,7 +159,7 @@ private:
         if (bracket)
             ++m_pos;
         m_out->keywordValueColumn = column();
-        m_out->keywordValue = readNumber(m_out->keyword);
+        m_out->keywordValue = readNumber([this] { return m_out->keyword; });
         skipSpaces();
         if (bracket && m_out->keywordValue) {
             if (peek() != QLatin1Char(']'))

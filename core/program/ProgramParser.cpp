@@ -4,14 +4,26 @@
 
 namespace stepdeck::program {
 
-ProgramParser::ProgramParser(const QStringList& axisNames) : m_axisNames(axisNames) {}
+ProgramParser::ProgramParser(const QStringList& axisNames)
+    : m_axisNames(axisNames), m_index(std::make_shared<ProgramIndex>())
+{
+    m_index->checkpoints.push_back(ProgramCheckpoint{});
+}
+
+ProgramParser::ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
+                             const ProgramCheckpoint& from)
+    : m_axisNames(axisNames), m_lineOffset(from.offset), m_state(from.state), m_replayIndex(&index)
+{}
 
 std::optional<Program> ProgramParser::parse(const QByteArray& text, const QStringList& axisNames,
                                             QList<ProgramError>* errors)
 {
     ProgramParser parser(axisNames);
     parser.feed(text);
-    return parser.finish(errors);
+    std::optional<Program> program = parser.finish(errors);
+    if (program)
+        program->source = ProgramSource::bytes(text);
+    return program;
 }
 
 void ProgramParser::feed(const QByteArray& bytes)
@@ -23,6 +35,7 @@ void ProgramParser::feed(const QByteArray& bytes)
     for (;;) {
         const qsizetype newline = bytes.indexOf('\n', start);
         const qsizetype end = newline < 0 ? bytes.size() : newline;
+        m_lineBytes += end - start;
         if (!m_pendingTooLong) {
             m_pending.append(bytes.constData() + start, end - start);
             if (m_pending.size() > kMaxPendingBytes) {
@@ -33,36 +46,57 @@ void ProgramParser::feed(const QByteArray& bytes)
         if (newline < 0)
             return;
         endLine();
+        m_lineOffset += 1; // the newline
         start = newline + 1;
     }
 }
 
+void ProgramParser::flush()
+{
+    if (!m_pending.isEmpty() || m_pendingTooLong || m_lineBytes > 0)
+        endLine(); // the last line needs no newline
+}
+
 void ProgramParser::endLine()
 {
-    ++m_line;
     const bool tooLong = m_pendingTooLong;
     QByteArray raw = std::move(m_pending);
     m_pending.clear();
     m_pendingTooLong = false;
-    if (m_line > kMaxLines) {
-        if (m_line == kMaxLines + 1)
-            error(m_line, 1, tr("the program is longer than %1 lines").arg(kMaxLines));
+    m_hash = hashLine(m_hash, raw.constData(), raw.size()) ^ quint64(tooLong ? m_lineBytes : 0);
+    m_lineOffset += m_lineBytes;
+    m_lineBytes = 0;
+    if (m_state.line >= kMaxLines) {
+        if (m_state.line == kMaxLines) {
+            ++m_state.line;
+            error(m_state.line, 1, tr("the program is longer than %1 lines").arg(kMaxLines));
+        }
         return;
     }
-    if (m_percentClosed)
-        return; // after the closing "%" (LinuxCNC ignores the rest of the file)
-    if (raw.endsWith('\r'))
-        raw.chop(1);
-    if (m_line == 1 && raw.startsWith("\xEF\xBB\xBF"))
-        raw.remove(0, 3); // a UTF-8 byte-order mark, as some editors on Windows write it
-    const QString text = QString::fromUtf8(raw);
-    if (tooLong || text.size() > kMaxLineLength) {
-        error(m_line, kMaxLineLength + 1,
-              tr("the line is longer than %1 characters").arg(kMaxLineLength));
-        return;
+    ++m_state.line;
+    if (!m_state.percentClosed) { // after the closing "%", LinuxCNC ignores the rest
+        if (raw.endsWith('\r'))
+            raw.chop(1);
+        if (m_state.line == 1 && raw.startsWith("\xEF\xBB\xBF"))
+            raw.remove(0, 3); // a UTF-8 byte-order mark, as some editors on Windows write it
+        const QString text = QString::fromUtf8(raw);
+        if (tooLong || text.size() > kMaxLineLength)
+            error(m_state.line, kMaxLineLength + 1,
+                  tr("the line is longer than %1 characters").arg(kMaxLineLength));
+        else if (!percentLine(text))
+            parseLine(text);
     }
-    if (!percentLine(text))
-        parseLine(text);
+    if (m_index && m_state.line % ProgramIndex::kCheckpointLines == 0)
+        noteCheckpoint();
+}
+
+// The state before the next line, so that a reader can go on from there (ProgramIndex).
+void ProgramParser::noteCheckpoint()
+{
+    m_index->checkpoints.back().hash = m_hash;
+    m_hash = 0;
+    // The newline of this line is not counted yet (feed() adds it after endLine()).
+    m_index->checkpoints.push_back(ProgramCheckpoint{m_lineOffset + 1, 0, m_state});
 }
 
 bool ProgramParser::percentLine(const QString& text)
@@ -71,36 +105,36 @@ bool ProgramParser::percentLine(const QString& text)
         return false;
     // LinuxCNC: a "%" on the first line with words (blank lines before it allowed) opens the
     // program, and a second "%" ends it; anywhere else it is an error.
-    if (!m_anyWords && m_percentOpen == 0) {
-        m_percentOpen = m_line;
+    if (!m_state.anyWords && m_state.percentOpen == 0) {
+        m_state.percentOpen = m_state.line;
         return true;
     }
-    if (m_percentOpen > 0) {
-        m_percentClosed = true;
+    if (m_state.percentOpen > 0) {
+        m_state.percentClosed = true;
         return true;
     }
-    error(m_line, int(text.indexOf(QLatin1Char('%'))) + 1,
+    error(m_state.line, int(text.indexOf(QLatin1Char('%'))) + 1,
           tr("\"%\" stands only on the program's first line and, closing it, its last"));
     return true;
 }
 
 void ProgramParser::parseLine(const QString& text)
 {
-    const LexedLine lexed = ProgramLexer::lex(text, m_line);
+    const LexedLine lexed = ProgramLexer::lex(text, m_state.line);
     if (lexed.error) {
         error(lexed.error->line, lexed.error->column, lexed.error->message);
         return;
     }
-    m_anyWords = m_anyWords || !lexed.words.isEmpty();
-    if (!lexed.words.isEmpty() && m_endLine > 0) {
-        error(m_line, lexed.words.first().column,
-              tr("nothing may follow the program's end (line %1)").arg(m_endLine));
+    m_state.anyWords = m_state.anyWords || !lexed.words.isEmpty();
+    if (!lexed.words.isEmpty() && m_state.endLine > 0) {
+        error(m_state.line, lexed.words.first().column,
+              tr("nothing may follow the program's end (line %1)").arg(m_state.endLine));
         return;
     }
     std::optional<ProgramError> failure;
-    ModalState modal = m_modal;
+    ModalState modal = m_state.modal;
     std::optional<ProgramBlock> block =
-        ProgramLine::parse(lexed, m_line, m_axisNames, &modal, &failure);
+        ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &failure);
     if (failure) {
         error(failure->line, failure->column, failure->message);
         noteBrokenRepeat(lexed);
@@ -108,11 +142,11 @@ void ProgramParser::parseLine(const QString& text)
     }
     if (!block)
         return; // blank or only a comment
-    m_modal = modal;
-    block->line = m_line;
+    m_state.modal = modal;
+    block->line = m_state.line;
     block->text = text.trimmed();
     if (block->kind == BlockKind::End)
-        m_endLine = m_line;
+        m_state.endLine = m_state.line;
     addBlock(*block);
 }
 
@@ -125,39 +159,66 @@ void ProgramParser::noteBrokenRepeat(const LexedLine& lexed)
     if (o < w.size() && w.at(o).letter == QLatin1Char('O') &&
         lexed.keyword == QLatin1String("repeat") && m_openRepeats.size() < kMaxNesting &&
         w.at(o).value >= 0 && w.at(o).value < 1e9) // an int, or no repeat
-        m_openRepeats << OpenRepeat{-1, int(w.at(o).value), m_line};
+        m_openRepeats << OpenRepeat{-1, int(w.at(o).value), m_state.line};
 }
 
 void ProgramParser::addBlock(ProgramBlock block)
 {
-    const int index = int(m_program.blocks.size());
+    const int index = m_state.blocks;
+    if (!linkRepeat(block, index))
+        return;
+    ++m_state.blocks;
+    if (m_sink)
+        m_sink(std::move(block));
+}
+
+// O repeat / endrepeat: nesting and pairs. Replay takes the pairs from the index. false: the
+// line is an error and gives no block.
+bool ProgramParser::linkRepeat(ProgramBlock& block, int index)
+{
+    if (block.kind != BlockKind::RepeatStart && block.kind != BlockKind::RepeatEnd)
+        return true;
+    if (m_replayIndex) {
+        block.partner = m_replayIndex->partner(index);
+        return true;
+    }
     if (block.kind == BlockKind::RepeatStart) {
         if (m_openRepeats.size() >= kMaxNesting) {
             error(block.line, 1, tr("repeats nest deeper than %1").arg(kMaxNesting));
-            return;
+            return false;
         }
         m_openRepeats << OpenRepeat{index, block.oNumber, block.line};
-    } else if (block.kind == BlockKind::RepeatEnd) {
-        if (m_openRepeats.isEmpty()) {
-            error(block.line, 1, tr("O%1 endrepeat without its O%1 repeat").arg(block.oNumber));
-            return;
-        }
-        const OpenRepeat open = m_openRepeats.last();
-        if (open.oNumber != block.oNumber) {
-            error(block.line, 1,
-                  tr("O%1 endrepeat does not close O%2 repeat (line %3)")
-                      .arg(block.oNumber)
-                      .arg(open.oNumber)
-                      .arg(open.line));
-            return;
-        }
-        m_openRepeats.removeLast();
-        if (open.index >= 0) {
-            m_program.blocks[open.index].partner = index;
-            block.partner = open.index;
-        }
+        return true;
     }
-    m_program.blocks << block;
+    if (m_openRepeats.isEmpty()) {
+        error(block.line, 1, tr("O%1 endrepeat without its O%1 repeat").arg(block.oNumber));
+        return false;
+    }
+    const OpenRepeat open = m_openRepeats.last();
+    if (open.oNumber != block.oNumber) {
+        error(block.line, 1,
+              tr("O%1 endrepeat does not close O%2 repeat (line %3)")
+                  .arg(block.oNumber)
+                  .arg(open.oNumber)
+                  .arg(open.line));
+        return false;
+    }
+    m_openRepeats.removeLast();
+    if (open.index >= 0) {
+        m_index->partners[open.index] = index;
+        m_index->partners[index] = open.index;
+        block.partner = open.index;
+    }
+    return true;
+}
+
+QList<int> ProgramParser::openRepeatBlocks() const
+{
+    QList<int> out;
+    for (const OpenRepeat& open : m_openRepeats)
+        if (open.index >= 0)
+            out << open.index;
+    return out;
 }
 
 void ProgramParser::error(int line, int column, const QString& message)
@@ -171,28 +232,34 @@ void ProgramParser::error(int line, int column, const QString& message)
 
 std::optional<Program> ProgramParser::finish(QList<ProgramError>* errors)
 {
-    if (!m_pending.isEmpty() || m_pendingTooLong)
-        endLine(); // the last line needs no newline
+    flush();
     for (const OpenRepeat& open : std::as_const(m_openRepeats)) {
         if (open.index >= 0) // a broken one was reported already
             error(open.line, 1, tr("O%1 repeat is not closed by O%1 endrepeat").arg(open.oNumber));
     }
     m_openRepeats.clear();
-    if (m_percentOpen > 0 && !m_percentClosed && m_endLine == 0)
-        error(m_line, 1,
+    if (m_state.percentOpen > 0 && !m_state.percentClosed && m_state.endLine == 0)
+        error(m_state.line, 1,
               tr("the program opened with \"%\" (line %1) ends with neither \"%\" nor M2/M30")
-                  .arg(m_percentOpen));
+                  .arg(m_state.percentOpen));
     std::stable_sort(m_errors.begin(), m_errors.end(),
                      [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
     if (m_tooManyErrors)
         m_errors << ProgramError{
-            m_line, 1, tr("more errors follow; only the first %1 are listed").arg(kMaxErrors)};
-    m_program.lines = m_line;
+            m_state.line, 1,
+            tr("more errors follow; only the first %1 are listed").arg(kMaxErrors)};
     if (errors)
         *errors = m_errors;
-    if (!m_errors.isEmpty())
+    if (!m_errors.isEmpty() || !m_index)
         return std::nullopt;
-    return m_program;
+    m_index->checkpoints.back().hash = m_hash;
+    m_index->bytes = m_lineOffset;
+    Program program;
+    program.axisNames = m_axisNames;
+    program.lines = m_state.line;
+    program.blockCount = m_state.blocks;
+    program.index = m_index;
+    return program;
 }
 
 } // namespace stepdeck::program

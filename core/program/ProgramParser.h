@@ -1,56 +1,86 @@
 #pragma once
+#include "Program.h"
 #include "ProgramBlock.h"
 #include "ProgramLexer.h"
 #include "ProgramLine.h"
 #include <QByteArray>
 #include <QCoreApplication>
+#include <functional>
 
 namespace stepdeck::program {
 
-// Reads a motion program (issue 20, docs/programs.md): UTF-8, one block per line, the G-code
-// subset G0 G1 G4 G20 G21 G28 G90 G91, M0 M2 M30 M3 M5 M7 M8 M9 M64 M65 M66, F S P L Q, N numbers,
-// O<n> repeat/endrepeat and comments. Streaming: bytes may arrive in any chunks; lines are
-// bounded (kMaxLineLength), so is the program (kMaxLines) and the error list (kMaxErrors).
-// Every line that is not valid gets one error naming its line and column; a program with any
-// error gives no blocks. Pure: no I/O, no machine, only the names of the machine's axes.
+// Reads a motion program (issue 20, docs/programs.md): UTF-8, one block per line, LinuxCNC's
+// words (docs/programs.md "Words"), N numbers, O<n> repeat/endrepeat and comments. Streaming
+// (issue 29): bytes may arrive in any chunks, each block goes to the sink as soon as its line
+// is read, and what the parser keeps is bounded whatever the program's length: the line being
+// read (kMaxLineLength), the open repeats (kMaxNesting), the errors (kMaxErrors) and the sparse
+// index (ProgramIndex). Every line that is not valid gets one error naming its line and column;
+// a program with any error gives no Program. Pure: no I/O, no machine, only the names of the
+// machine's axes.
+//
+// Replay: constructed at a checkpoint of a finished index, the parser reads on from there as if
+// it had read every line before (ProgramReader), taking the repeats' partners from the index.
 class ProgramParser
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramParser)
 public:
     static constexpr int kMaxLineLength = 1024; // characters, as LinuxCNC's 256 but roomier
-    static constexpr int kMaxLines = 1000000;
+    // Lines are counted in an int: a program of more lines (some 40 GB) is refused.
+    static constexpr int kMaxLines = 2147483646;
     static constexpr int kMaxErrors = 100;
     static constexpr qint64 kMaxRepeat = 1000000;
     static constexpr int kMaxNesting = 32;
 
+    using Sink = std::function<void(ProgramBlock&& block)>;
+
     // axisNames: the machine's axes ("X", "A", ...); any other axis word is an error.
     explicit ProgramParser(const QStringList& axisNames);
+    // Replay from `from`, a checkpoint of `index` (which outlives the parser).
+    ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
+                  const ProgramCheckpoint& from);
 
+    // Where each block goes (by default nowhere: only the index and the errors are kept).
+    void setSink(Sink sink) { m_sink = std::move(sink); }
     void feed(const QByteArray& bytes);
-    // The program, or nullopt with *errors (every one, in line order, at most kMaxErrors).
+    // The program's index, or nullopt with *errors (every one, in line order, at most
+    // kMaxErrors). Its source is left empty: the caller knows where the bytes came from.
     std::optional<Program> finish(QList<ProgramError>* errors);
+    // Replay: the last line of the input without a newline is read as well.
+    void flush();
 
+    // Parses text held in memory: the Program's source is those bytes.
     static std::optional<Program> parse(const QByteArray& text, const QStringList& axisNames,
                                         QList<ProgramError>* errors);
 
+    const ParserState& state() const { return m_state; }
+    qsizetype errorCount() const { return m_errors.size(); }
+    quint64 hash() const
+    {
+        return m_hash;
+    } // of the lines since the last checkpoint (replay: since the start)
+    const ProgramIndex& index() const { return *m_index; } // built so far (not in replay)
+    // The blocks of the repeats open now (their endrepeat not read yet), outermost first.
+    QList<int> openRepeatBlocks() const;
+
 private:
     void endLine();
+    void noteCheckpoint();
     void parseLine(const QString& text);
     // A line of only "%": the program's first or last line (LinuxCNC); true when handled.
     bool percentLine(const QString& text);
     void addBlock(ProgramBlock block);
+    bool linkRepeat(ProgramBlock& block, int index);
     void noteBrokenRepeat(const LexedLine& lexed);
     void error(int line, int column, const QString& message);
 
     QStringList m_axisNames;
+    Sink m_sink;
     QByteArray m_pending;
     bool m_pendingTooLong = false;
-    int m_line = 0;
-    ModalState m_modal;
-    int m_endLine = 0;            // the line of M2/M30, once read
-    bool m_anyWords = false;      // a line with words was read
-    int m_percentOpen = 0;        // the line of the first "%", if any
-    bool m_percentClosed = false; // the second "%": LinuxCNC ignores what follows it
+    qint64 m_lineBytes = 0;  // bytes of the line being read (kept or not)
+    qint64 m_lineOffset = 0; // where it starts
+    ParserState m_state;
+    quint64 m_hash = 0;
     struct OpenRepeat
     {
         int index = -1; // of its block; -1: its line had an error (its endrepeat still fits)
@@ -58,7 +88,8 @@ private:
         int line = 0;
     };
     QList<OpenRepeat> m_openRepeats;
-    Program m_program;
+    std::shared_ptr<ProgramIndex> m_index; // built (not in replay)
+    const ProgramIndex* m_replayIndex = nullptr;
     QList<ProgramError> m_errors;
     bool m_tooManyErrors = false;
 };

@@ -31,11 +31,13 @@ void ProgramPlan::addMove(const AxisMove& move, PlannedBlock* out)
     ++out->moveCount;
 }
 
-void ProgramPlan::plan(int index, const ProgramBlock& block)
+void ProgramPlan::plan(const ProgramBlock& block, bool reporting)
 {
-    PlannedBlock& out = m_out.blocks[size_t(index)];
+    m_reporting = reporting;
+    m_out.moves.clear();
+    m_out.block = PlannedBlock{};
+    PlannedBlock& out = m_out.block;
     out.block = &block;
-    out.partner = block.partner;
     checkTools(block);
     checkSpindleChange(block);
     if (block.switchFirst)

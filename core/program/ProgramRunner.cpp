@@ -4,6 +4,7 @@
 #include "ProgramLine.h"
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
+#include "ProgramReader.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 
@@ -61,8 +62,7 @@ ProgramRunner::~ProgramRunner() = default;
 
 int ProgramRunner::currentLine() const
 {
-    return m_index >= 0 && m_index < m_program.blocks.size() ? m_program.blocks.at(m_index).line
-                                                             : 0;
+    return m_index >= 0 ? m_block.line : 0;
 }
 
 bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramError>* errors,
@@ -78,13 +78,27 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     facts.coordinateSystems = m_nextSystems;
     facts.activeSystem = m_nextActive;
     facts.tools = m_nextTools;
-    const ProgramCheckResult checked = ProgramCheck::check(program, facts, fromLine);
+    const ProgramCheckResult checked =
+        ProgramCheck::check(program, facts, fromLine, m_checkProgress);
     if (!checked.ok()) {
         if (errors)
-            *errors = checked.errors;
+            *errors = checked.cancelled
+                          ? QList<ProgramError>{ProgramError{0, 0, tr("the check was cancelled")}}
+                          : checked.errors;
         return false;
     }
-    m_program = program;
+    auto reader = std::make_unique<ProgramReader>(program);
+    const int first = fromLine <= 1 ? 0 : reader->firstBlockAtLine(fromLine);
+    if (first < 0 || !reader->error().isEmpty()) { // the check found it: the file changed since
+        if (errors)
+            *errors = {ProgramError{fromLine, 1,
+                                    reader->error().isEmpty()
+                                        ? tr("the program's file changed: check it again")
+                                        : reader->error()}};
+        return false;
+    }
+    m_reader = std::move(reader);
+    m_block = ProgramBlock{};
     m_preview = checked.preview;
     m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, m_nextTools);
     // The current point starts where the check started it: the machine's known positions.
@@ -98,9 +112,6 @@ bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramErr
     m_heldInPath = false;
     m_spindleOn = false;
     // advance() steps onto the first block on or after fromLine.
-    int first = 0;
-    while (first < m_program.blocks.size() && m_program.blocks.at(first).line < fromLine)
-        ++first;
     m_index = first - 1;
     m_loops.clear();
     m_blocksDone = 0;
@@ -220,19 +231,25 @@ void ProgramRunner::runNext()
     if (m_state != RunState::Running || m_aborting)
         return;
     if (!advance()) {
-        finishProgram();
+        if (!m_reader->error().isEmpty())
+            fail(ErrorKind::InvalidValue, m_reader->error());
+        else
+            finishProgram();
         return;
     }
-    const ProgramBlock& block = m_program.blocks.at(m_index);
-    Q_EMIT blockStarted(block.line, block.text);
-    startBlock(block);
+    Q_EMIT blockStarted(m_block.line, m_block.text);
+    startBlock(m_block);
 }
 
 // Onto the next block that does something; repeats are counted here.
 bool ProgramRunner::advance()
 {
-    while (++m_index < m_program.blocks.size()) {
-        const ProgramBlock& b = m_program.blocks.at(m_index);
+    for (;;) {
+        const ProgramBlock* read = m_reader->at(++m_index);
+        if (!read)
+            return false; // the end, or the file cannot be read as it was checked (error())
+        m_block = *read;
+        const ProgramBlock& b = m_block;
         if (!b.message.isEmpty())
             Q_EMIT operatorMessage(b.line, b.message);
         switch (b.kind) {
@@ -265,7 +282,7 @@ void ProgramRunner::blockDone()
         return;
     m_motion = 0;
     ++m_blocksDone;
-    const ProgramBlock& block = m_program.blocks.at(m_index);
+    const ProgramBlock& block = m_block;
     if (m_arc || m_cycle)
         endPath(&m_programmed);
     else
@@ -278,6 +295,7 @@ void ProgramRunner::blockDone()
     const bool operatorStop = waitsForOperator(block.kind, m_optionalStops);
     if (operatorStop || m_pauseAsked || m_stepOnly) {
         m_prompt = operatorStop ? promptOf(block) : QString();
+        m_operatorStop = operatorStop;
         m_pauseAsked = false;
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);

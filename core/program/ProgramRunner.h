@@ -20,6 +20,7 @@ class Machine;
 namespace stepdeck::program {
 
 class ProgramRates;
+class ProgramReader;
 
 enum class RunState {
     Idle,     // nothing started
@@ -67,6 +68,8 @@ public:
         m_nextSystems = systems;
         m_nextActive = active;
     }
+    // Told how far start()'s check is (a long program takes seconds); it may cancel it.
+    void setCheckProgress(CheckProgress progress) { m_checkProgress = std::move(progress); }
     // The machine's tool table (G43's lengths, M6's prompts), taken at start().
     void setToolTable(const ToolTable& tools) { m_nextTools = tools; }
     // Only G54's offsets, G54 active.
@@ -95,6 +98,8 @@ public:
     qint64 blocksDone() const { return m_blocksDone; }
     bool pausePending() const { return m_pauseAsked && m_state == RunState::Running; }
     QString prompt() const { return m_prompt; } // M0's (M1's) prompt while Paused at it
+    // Paused at M0, M6 or (with optional stops) M1, not by pause() or a step.
+    bool pausedAtOperatorStop() const { return m_state == RunState::Paused && m_operatorStop; }
     // Why the program ended Failed or Aborted ("line 12: ..."), and the kind of the fault:
     // the failed request's ErrorKind (Refused also for a block the machine's rules refused
     // before sending, LinkDown for a lost link, Timeout for M66's Q); None when a move ended
@@ -169,10 +174,12 @@ private:
     QMap<QString, double> axisTargets(const ProgramBlock& block) const;
 
     machine::Machine* m_machine;
-    Program m_program;
-    CoordinateSystems m_nextSystems; // setCoordinateSystems()
+    std::unique_ptr<ProgramReader> m_reader; // the running program's blocks, read as it goes
+    ProgramBlock m_block;                    // the block at m_index
+    CoordinateSystems m_nextSystems;         // setCoordinateSystems()
     int m_nextActive = 0;
     ToolTable m_nextTools;
+    CheckProgress m_checkProgress;
     ProgramCoordinates m_coordinates; // the running program's
     ProgramPreview m_preview;
     RunState m_state = RunState::Idle;
@@ -185,6 +192,7 @@ private:
     bool m_spindleOn = false; // an M3/M4 of this run is in effect (no M5 since)
     bool m_aborting = false;
     QString m_prompt;
+    bool m_operatorStop = false; // the last pause was at M0, M6 or M1
     QString m_endMessage;
     ErrorKind m_failureKind = ErrorKind::None;
     quint64 m_run = 0; // counts start(): a queued fault of an earlier run is dropped

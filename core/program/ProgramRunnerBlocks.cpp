@@ -19,14 +19,12 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
         return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
                kind == BlockKind::SpindleOff;
     };
-    const int index = m_index;
-    const auto thenSwitch = [this, index] {
-        const ProgramBlock& b = m_program.blocks.at(index);
-        if (!b.switchFirst) {
-            startAction(b);
+    const auto thenSwitch = [this] {
+        if (!m_block.switchFirst) {
+            startAction(m_block);
             return;
         }
-        startSwitch(switchBlock(b), [this, index] { startAction(m_program.blocks.at(index)); });
+        startSwitch(switchBlock(m_block), [this] { startAction(m_block); });
     };
     if (block.spindleChange && m_spindleOn && !spindleSwitch(block.kind) &&
         !spindleSwitch(block.switchFirst)) {
@@ -92,8 +90,7 @@ void ProgramRunner::startMove(const ProgramBlock& block)
         return;
     }
     const QMap<RequestId, QString> rates = m_rates->before(block);
-    const int index = m_index;
-    awaitRequests(rates, [this, index] { sendMove(m_program.blocks.at(index)); });
+    awaitRequests(rates, [this] { sendMove(m_block); });
 }
 
 void ProgramRunner::sendMove(const ProgramBlock& block)

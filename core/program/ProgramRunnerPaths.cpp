@@ -66,8 +66,7 @@ void ProgramRunner::startSegment()
         m_dwell.start(int(std::min(s.seconds * 1000.0, 2.0e9)));
         return;
     }
-    const ProgramBlock segment =
-        DrillCycle::segmentBlock(m_program.blocks.at(m_index), s, m_machine->description());
+    const ProgramBlock segment = DrillCycle::segmentBlock(m_block, s, m_machine->description());
     if (const QString why = m_rates->cannotPutBack(segment);
         s.kind == DrillCycle::Kind::Rapid && !why.isEmpty()) {
         fail(ErrorKind::Refused, why);

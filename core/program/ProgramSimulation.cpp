@@ -6,10 +6,10 @@
 
 namespace stepdeck::program {
 
-ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned,
+ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* reader,
                                      CheckErrors* errors)
-    : m_facts(facts), m_axes(facts.description.axes), m_blocks(planned->blocks),
-      m_moves(planned->moves), m_errors(errors),
+    : m_facts(facts), m_axes(facts.description.axes), m_reader(*reader), m_moves(m_planned.moves),
+      m_errors(errors), m_plan(facts, &m_planned, errors),
       m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools)
 {
     const size_t n = size_t(m_axes.size());
@@ -35,47 +35,115 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, PlannedProgram* 
     }
 }
 
-void ProgramSimulation::run(int start, ProgramPreview* preview)
+bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgress& progress)
 {
+    constexpr int kProgressBlocks = 4096;
     addPoint(0);
-    const int n = int(m_blocks.size());
+    m_firstUnvisited = start;
+    bool cancelled = false;
+    bool walking = true; // false past the bound of repeated blocks: the rest is only planned
     int i = start;
-    while (i < n) {
-        PlannedBlock& planned = m_blocks[size_t(i)];
-        const ProgramBlock& block = *planned.block;
-        if (block.kind == BlockKind::RepeatStart) {
-            if (block.count <= 0 || planned.partner < 0) {
-                i = planned.partner < 0 ? i + 1 : planned.partner + 1;
+    for (int sinceProgress = 0;; ++sinceProgress) {
+        if (progress && sinceProgress >= kProgressBlocks) {
+            sinceProgress = 0;
+            if (!progress(m_reader.bytesRead(), m_reader.totalBytes())) {
+                cancelled = true;
+                break;
+            }
+        }
+        const ProgramBlock* block = m_reader.at(i);
+        if (!block)
+            break;
+        if (!walking || m_reader.parseFailed()) {
+            // What the check reports now is the parser's errors, or the plan's of each block.
+            if (!m_reader.parseFailed())
+                visit(i, *block);
+            ++i;
+            continue;
+        }
+        const BlockKind kind = block->kind;
+        if (kind == BlockKind::RepeatStart) {
+            const qint64 count = block->count;
+            const int line = block->line;
+            const int column = block->columnOf({});
+            visit(i, *block);
+            const int end = m_reader.partner(i);
+            if (count <= 0 || end < 0) {
+                skipBody(i + 1, end);
+                i = end < 0 ? i + 1 : end + 1;
             } else {
-                m_loops.push_back(Loop{i, block.count - 1, m_blocksRun});
+                m_loops.push_back(Loop{i, line, column, count - 1, m_blocksRun});
                 ++i;
             }
             continue;
         }
-        if (block.kind == BlockKind::RepeatEnd) {
-            if (!m_loops.empty() && m_loops.back().start == planned.partner) {
-                Loop& loop = m_loops.back();
-                // A pass that ran no block (only empty repeats inside) is every pass: the
-                // rest are skipped, so that nested empty repeats cannot spin for 10^12 passes.
-                if (loop.remaining > 0 && m_blocksRun > loop.blocksBefore) {
-                    --loop.remaining;
-                    loop.blocksBefore = m_blocksRun;
-                    i = planned.partner + 1;
-                    continue;
-                }
-                m_loops.pop_back();
-            }
-            ++i;
+        if (kind == BlockKind::RepeatEnd) {
+            visit(i, *block);
+            if (!repeatEnd(&i, m_reader.partner(i)))
+                ++i;
             continue;
         }
-        if (++m_blocksRun > ProgramCheck::kMaxBlocksRun) {
-            tooManyBlocks(block);
-            break;
+        const bool first = visit(i, *block);
+        ++m_blocksRun;
+        if (!first && ++m_repeatedBlocks > ProgramCheck::kMaxRepeatedBlocks) {
+            tooManyBlocks(*block);
+            walking = false;
+            i = std::max(i + 1, m_firstUnvisited);
+            continue;
         }
-        execute(planned);
-        i = block.kind == BlockKind::End ? n : i + 1;
+        execute(m_planned.block);
+        if (kind == BlockKind::End)
+            walking = false; // nothing follows M2/M30 (the parser refuses it)
+        ++i;
     }
     finish(preview);
+    return !cancelled;
+}
+
+// Plans the block: the first time with its errors (true), again in a repeat's next pass
+// without them.
+bool ProgramSimulation::visit(int i, const ProgramBlock& block)
+{
+    const bool first = i >= m_firstUnvisited;
+    if (first) {
+        m_firstUnvisited = i + 1;
+        ++m_firstVisits;
+        if (m_firstVisit)
+            m_firstVisit(block);
+    }
+    m_plan.plan(block, first);
+    return first;
+}
+
+// O repeat [0]: its blocks do not run, but they are checked as blocks (the plan's errors).
+void ProgramSimulation::skipBody(int from, int end)
+{
+    if (end < 0)
+        return;
+    for (int i = std::max(from, m_firstUnvisited); i < end; ++i) {
+        const ProgramBlock* block = m_reader.at(i);
+        if (!block)
+            return;
+        visit(i, *block);
+    }
+}
+
+// At an endrepeat: true with *i at the first block of the next pass.
+bool ProgramSimulation::repeatEnd(int* i, int partner)
+{
+    if (m_loops.empty() || m_loops.back().start != partner)
+        return false;
+    Loop& loop = m_loops.back();
+    // A pass that ran no block (only empty repeats inside) is every pass: the rest are
+    // skipped, so that nested empty repeats cannot spin for 10^12 passes.
+    if (loop.remaining > 0 && m_blocksRun > loop.blocksBefore) {
+        --loop.remaining;
+        loop.blocksBefore = m_blocksRun;
+        *i = partner + 1;
+        return true;
+    }
+    m_loops.pop_back();
+    return false;
 }
 
 void ProgramSimulation::execute(PlannedBlock& planned)
@@ -137,8 +205,7 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     const double here = wasKnown ? axis.toUnits(m_steps[a]) : 0.0;
     double distance = std::abs(m.value);
     if (!block.relative) {
-        if (!wasKnown && !m.reportedUnknown) {
-            m.reportedUnknown = true;
+        if (!wasKnown && m_errors->once(block.line, m.column, kUnknownPosition)) {
             m_errors->add(block.line, m.column, [&] {
                 return ProgramCheck::tr("%1: the position is unknown, so an absolute move could go "
                                         "anywhere: reference the axis first (G28 %1) or move it "
@@ -168,9 +235,8 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
 void ProgramSimulation::checkLimit(const ProgramBlock& block, AxisMove& m, double to)
 {
     const machine::MachineAxis& axis = m_axes.at(m.axis);
-    if (axis.hasSoftLimits() && !m.reportedLimit &&
-        (to < *axis.softMinimum || to > *axis.softMaximum)) {
-        m.reportedLimit = true;
+    if (axis.hasSoftLimits() && (to < *axis.softMinimum || to > *axis.softMaximum) &&
+        m_errors->once(block.line, m.column, kSoftLimit)) {
         m_errors->add(block.line, m.column, [&] {
             const double offset = m_coordinates.offset(block, axis.name);
             if (offset != 0.0)
@@ -267,17 +333,17 @@ void ProgramSimulation::thinPath()
 void ProgramSimulation::tooManyBlocks(const ProgramBlock& block)
 {
     // Named at the outermost repeat that makes the run so long, else at the block itself.
-    const ProgramBlock& at =
-        m_loops.empty() ? block : *m_blocks[size_t(m_loops.front().start)].block;
-    *m_errors << ProgramError{at.line, at.columnOf({}),
-                              ProgramCheck::tr("the run executes more than %1 blocks (repeats "
-                                               "counted out)")
-                                  .arg(ProgramCheck::kMaxBlocksRun)};
+    const int line = m_loops.empty() ? block.line : m_loops.front().line;
+    const int column = m_loops.empty() ? block.columnOf({}) : m_loops.front().column;
+    *m_errors << ProgramError{line, column,
+                              ProgramCheck::tr("the repeats run more than %1 blocks beyond the "
+                                               "program's own")
+                                  .arg(ProgramCheck::kMaxRepeatedBlocks)};
 }
 
 void ProgramSimulation::finish(ProgramPreview* preview) const
 {
-    preview->blocksRun = std::min(m_blocksRun, ProgramCheck::kMaxBlocksRun);
+    preview->blocksRun = m_blocksRun;
     preview->estimatedSeconds = m_seconds;
     preview->path = m_path;
     if (m_pendingPoint)

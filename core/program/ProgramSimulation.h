@@ -5,7 +5,9 @@
 #include "ArcPath.h"
 #include "DrillCycle.h"
 #include "ProgramCheck.h"
+#include "ProgramReader.h"
 #include <algorithm>
+#include <functional>
 #include <vector>
 
 namespace stepdeck::program {
@@ -17,26 +19,22 @@ struct AxisMove
     double value = 0; // G0/G1: the target (absolute) or distance (relative) in the axis' unit
     int column = 1;   // the axis word, or the action for the axes of a bare G28
     double speed = 0; // unit/s this block moves the axis at; 0: not known
-    // A word a repeat runs many times is reported once.
-    bool reportedUnknown = false;
-    bool reportedLimit = false;
 };
 
 struct PlannedBlock
 {
     const ProgramBlock* block = nullptr;
     // G0/G1: its axis words, G28: the axes it references, as PlannedProgram::moves[first,
-    // first + count): one array for the whole program, not one per block.
+    // first + count).
     int firstMove = 0;
     int moveCount = 0;
-    int partner = -1;      // repeats: the other end's index
-    bool reported = false; // an arc's or G10's error, once however often a repeat runs it
-    double feedSpeed = 0;  // a drilling cycle's Z at F, unit/s (0: not known)
+    double feedSpeed = 0; // a drilling cycle's Z at F, unit/s (0: not known)
 };
 
+// The block the walk is at, planned (the program's blocks are streamed: one at a time).
 struct PlannedProgram
 {
-    std::vector<PlannedBlock> blocks; // index as in Program::blocks (before the start: empty)
+    PlannedBlock block;
     std::vector<AxisMove> moves;
 };
 
@@ -58,9 +56,14 @@ public:
         *this << ProgramError{line, column, message()};
     }
     QList<ProgramError> take(); // in line order, at most kMaxErrors + the "more follow" line
+    // A word a repeat runs many times is reported once: true the first time for this line,
+    // column and kind of error. Bounded: only errors that can still be listed are remembered.
+    bool once(int line, int column, int kind);
+    bool any() const { return !m_errors.isEmpty() || m_dropped; }
 
 private:
     void prune();
+    QSet<quint64> m_once;
     QList<ProgramError> m_errors;
     bool m_dropped = false;
     int m_lastLine = 0;
@@ -74,7 +77,9 @@ class ProgramPlan
 {
 public:
     ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors);
-    void plan(int index, const ProgramBlock& block); // into out->blocks[index]
+    // Into *out (its block and moves); reporting false: the block was planned before (a
+    // repeat's next pass), its errors are not told again.
+    void plan(const ProgramBlock& block, bool reporting = true);
 
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
@@ -98,7 +103,8 @@ private:
     template <typename Message>
     void error(const ProgramBlock& block, int column, const Message& message)
     {
-        m_errors->add(block.line, column, message);
+        if (m_reporting)
+            m_errors->add(block.line, column, message);
     }
 
     const MachineFacts& m_facts;
@@ -108,25 +114,42 @@ private:
     // the run's controllers will know it: the model's rules are judged against this.
     QMap<QString, ParameterSet> m_known;
     QSet<QString> m_setupReported; // controllers whose incomplete setup was named already
+    bool m_reporting = true;
 };
 
-// Walks the planned blocks from `start` as the run will (repeats counted out, at most
-// ProgramCheck::kMaxBlocksRun blocks), following the positions the program reaches: absolute
-// moves on unknown axes and targets outside the soft limits are errors; the preview's
-// figures (extents, path, estimated time) come from the same walk.
+// Walks the program's blocks from `start` as the run will (repeats counted out, at most
+// ProgramCheck::kMaxRepeatedBlocks blocks beyond the program's own), planning each as it comes
+// (ProgramPlan) and following the positions the program reaches: absolute moves on unknown axes
+// and targets outside the soft limits are errors; the preview's figures (extents, path,
+// estimated time) come from the same walk. The blocks come from a ProgramReader, so the walk
+// keeps only the block it is at.
 class ProgramSimulation
 {
 public:
-    ProgramSimulation(const MachineFacts& facts, PlannedProgram* planned, CheckErrors* errors);
-    void run(int start, ProgramPreview* preview);
+    // What CheckErrors::once() tells apart on one line and column.
+    enum OnceKind { kUnknownPosition = 1, kSoftLimit = 2, kBlockError = 3 };
+    ProgramSimulation(const MachineFacts& facts, ProgramReader* reader, CheckErrors* errors);
+    // Each block the first time the walk reaches it (or skips it in a repeat of no passes).
+    void setFirstVisit(std::function<void(const ProgramBlock&)> visit)
+    {
+        m_firstVisit = std::move(visit);
+    }
+    // false: cancelled (by progress, asked every few thousand blocks).
+    bool run(int start, ProgramPreview* preview, const CheckProgress& progress = {});
 
 private:
     struct Loop
     {
         int start = 0;        // index of the RepeatStart
+        int line = 0;         // its line
+        int column = 0;       // its O word
         qint64 remaining = 0; // passes left after the current one
         qint64 blocksBefore;  // m_blocksRun when the current pass began
     };
+    // The block at i planned (reporting on its first visit); false at the end.
+    bool visit(int i, const ProgramBlock& block);
+    void skipBody(int from, int end); // a repeat of no passes: its blocks planned, not walked
+    bool repeatEnd(int* i, int partner);
     void execute(PlannedBlock& planned);
     void move(PlannedBlock& planned);
     void home(const PlannedBlock& planned);
@@ -151,9 +174,14 @@ private:
 
     const MachineFacts& m_facts;
     const QList<machine::MachineAxis>& m_axes;
-    std::vector<PlannedBlock>& m_blocks;
+    ProgramReader& m_reader;
+    PlannedProgram m_planned;
     std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
+    ProgramPlan m_plan;
+    std::function<void(const ProgramBlock&)> m_firstVisit;
+    int m_firstUnvisited = 0; // blocks before it were planned once
+    qint64 m_firstVisits = 0; // blocks the walk planned for the first time
     // Per axis (the description's order).
     std::vector<qint64> m_steps; // the device's count the axis would hold
     std::vector<char> m_known;
@@ -165,7 +193,8 @@ private:
     ProgramCoordinates m_coordinates; // G54..G59, G92 as the program changes them
     std::vector<Loop> m_loops;
     qint64 m_blocksRun = 0;
-    qint64 m_chordsRun = 0; // arcs' chords, counted out like blocks
+    qint64 m_repeatedBlocks = 0; // run again by a repeat's next passes
+    qint64 m_chordsRun = 0;      // arcs' chords, counted out like blocks
     double m_seconds = 0;
     QList<PreviewPoint> m_path;
     bool m_pathDecimated = false;

@@ -20,8 +20,7 @@ void ProgramSimulation::coordinates(PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
     const QString why = m_coordinates.apply(block, m_facts.description, m_programmed);
-    if (!why.isEmpty() && !planned.reported) {
-        planned.reported = true;
+    if (!why.isEmpty() && m_errors->once(block.line, 0, kBlockError)) {
         m_errors->add(block.line, block.columnOf({}), [&] { return why; });
     }
 }
@@ -33,8 +32,7 @@ void ProgramSimulation::arc(PlannedBlock& planned)
         ArcPath::plan(block, m_facts.description, m_programmed,
                       m_coordinates.offsets(block, m_facts.description));
     if (const ArcPath::Error* e = std::get_if<ArcPath::Error>(&planning)) {
-        if (!planned.reported) {
-            planned.reported = true;
+        if (m_errors->once(planned.block->line, 0, kBlockError)) {
             m_errors->add(block.line, e->column, [&] { return e->message; });
         }
         return; // where it would end is unknown: the positions stay as they were
@@ -58,14 +56,14 @@ void ProgramSimulation::arc(PlannedBlock& planned)
 bool ProgramSimulation::countChords(qint64 chords, PlannedBlock& planned)
 {
     m_chordsRun += chords;
-    if (m_chordsRun <= ProgramCheck::kMaxChordsRun)
+    const qint64 bound =
+        ProgramCheck::kMaxChordsRun + ProgramCheck::kChordsPerBlock * m_firstVisits;
+    if (m_chordsRun <= bound)
         return true;
-    if (!planned.reported) {
-        planned.reported = true;
+    if (m_errors->once(planned.block->line, 0, kBlockError)) {
         const ProgramBlock& block = *planned.block;
         m_errors->add(block.line, block.columnOf({}), [&] {
-            return ProgramCheck::tr("the run's arcs and cycles need more than %1 moves")
-                .arg(ProgramCheck::kMaxChordsRun);
+            return ProgramCheck::tr("the run's arcs and cycles need more than %1 moves").arg(bound);
         });
     }
     return false;
@@ -117,8 +115,7 @@ void ProgramSimulation::cycle(PlannedBlock& planned)
         DrillCycle::plan(block, m_facts.description, m_programmed,
                          m_coordinates.offsets(block, m_facts.description));
     if (const DrillCycle::Error* e = std::get_if<DrillCycle::Error>(&planning)) {
-        if (!planned.reported) {
-            planned.reported = true;
+        if (m_errors->once(planned.block->line, 0, kBlockError)) {
             m_errors->add(block.line, e->column, [&] { return e->message; });
         }
         return;

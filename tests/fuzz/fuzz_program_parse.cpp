@@ -44,7 +44,7 @@ void walk(const Program& program)
     systems[1] = {{QStringLiteral("X"), 5.0}};
     ProgramCoordinates coordinates(systems, 0, *ToolTable::parse("T1 Z2.5 ;one\n", nullptr));
     AxisPositions at(size_t(d.axes.size()), 0.0);
-    for (const ProgramBlock& b : program.blocks) {
+    for (const ProgramBlock& b : program.allBlocks()) {
         const QMap<QString, double> offsets = coordinates.offsets(b, d);
         if (isArc(b.kind)) {
             const auto planned = ArcPath::plan(b, d, at, offsets);
@@ -92,6 +92,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     FUZZ_CHECK(errors.size() <= ProgramParser::kMaxErrors + 1, QString::number(errors.size()));
 
     ProgramParser chunked(axes);
+    QList<ProgramBlock> streamed; // as the parser gives them out while it reads
+    chunked.setSink([&streamed](ProgramBlock&& b) { streamed << b; });
     for (const QByteArray& chunk : fuzz::split(text))
         chunked.feed(chunk);
     QList<ProgramError> chunkErrors;
@@ -100,15 +102,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     FUZZ_CHECK(again.has_value() == whole.has_value(), QStringLiteral("chunked result differs"));
     if (!whole)
         return 0;
-    FUZZ_CHECK(again->blocks == whole->blocks, QStringLiteral("chunked blocks differ"));
+    // Read back through the index: the blocks the parser gave out (a RepeatStart's partner is
+    // known only once its endrepeat is read).
+    const QList<ProgramBlock> blocks = whole->allBlocks();
+    FUZZ_CHECK(blocks.size() == streamed.size(), QStringLiteral("read back: other size"));
+    for (qsizetype i = 0; i < blocks.size(); ++i) {
+        ProgramBlock s = streamed.at(i);
+        if (s.kind == BlockKind::RepeatStart)
+            s.partner = blocks.at(i).partner;
+        FUZZ_CHECK(s == blocks.at(i), QStringLiteral("read back: block %1 differs").arg(i));
+    }
     int previous = 0;
-    for (qsizetype i = 0; i < whole->blocks.size(); ++i) {
-        const ProgramBlock& b = whole->blocks.at(i);
+    for (qsizetype i = 0; i < blocks.size(); ++i) {
+        const ProgramBlock& b = blocks.at(i);
         FUZZ_CHECK(b.line > previous, QString::number(b.line));
         previous = b.line;
         if (b.kind == BlockKind::RepeatStart || b.kind == BlockKind::RepeatEnd) {
-            FUZZ_CHECK(b.partner >= 0 && b.partner < whole->blocks.size(), b.text);
-            FUZZ_CHECK(whole->blocks.at(b.partner).partner == i, b.text);
+            FUZZ_CHECK(b.partner >= 0 && b.partner < blocks.size(), b.text);
+            FUZZ_CHECK(blocks.at(b.partner).partner == i, b.text);
         }
         if (b.kind == BlockKind::RepeatStart)
             FUZZ_CHECK(b.count >= 0 && b.count <= ProgramParser::kMaxRepeat, b.text);

@@ -1,5 +1,4 @@
 #include "ProgramBackgroundCheck.h"
-#include "program/ProgramParser.h"
 #include <QPromise>
 #include <QThreadPool>
 #include <memory>
@@ -10,34 +9,50 @@ ProgramBackgroundCheck::ProgramBackgroundCheck(QObject* parent) : QObject(parent
 {
     // The watcher follows only the newest future: an older one ending reports nothing.
     connect(&m_watcher, &QFutureWatcher<program::ProgramCheckResult>::finished, this, [this] {
-        if (!m_checking || m_watcher.future().resultCount() == 0)
+        if (!m_checking || m_watcher.future().isCanceled() || m_watcher.future().resultCount() == 0)
             return;
         m_checking = false;
         Q_EMIT checked(m_watcher.result());
     });
+    connect(&m_watcher, &QFutureWatcher<program::ProgramCheckResult>::progressValueChanged, this,
+            [this](int value) {
+                if (m_checking)
+                    Q_EMIT progress(value);
+            });
 }
 
-program::ProgramCheckResult ProgramBackgroundCheck::run(const QByteArray& text,
+ProgramBackgroundCheck::~ProgramBackgroundCheck()
+{
+    // A check still running ends at its next step; its result goes nowhere.
+    m_watcher.future().cancel();
+}
+
+program::ProgramCheckResult ProgramBackgroundCheck::run(const program::ProgramSource& source,
                                                         const QStringList& axisNames,
-                                                        const program::MachineFacts& facts)
+                                                        const program::MachineFacts& facts,
+                                                        const program::CheckProgress& progress)
 {
-    program::ProgramCheckResult result;
-    const std::optional<program::Program> parsed =
-        program::ProgramParser::parse(text, axisNames, &result.errors);
-    if (parsed)
-        result = program::ProgramCheck::check(*parsed, facts);
-    return result;
+    return program::ProgramCheck::check(source, axisNames, facts, 1, progress);
 }
 
-void ProgramBackgroundCheck::start(const QByteArray& text, const QStringList& axisNames,
-                                   const program::MachineFacts& facts)
+void ProgramBackgroundCheck::start(const program::ProgramSource& source,
+                                   const QStringList& axisNames, const program::MachineFacts& facts)
 {
+    m_watcher.future().cancel(); // the one running is of an older text
     auto promise = std::make_shared<QPromise<program::ProgramCheckResult>>();
+    promise->setProgressRange(0, kProgressSteps);
     promise->start();
     m_checking = true;
     m_watcher.setFuture(promise->future());
-    QThreadPool::globalInstance()->start([promise, text, axisNames, facts] {
-        promise->addResult(run(text, axisNames, facts));
+    QThreadPool::globalInstance()->start([promise, source, axisNames, facts] {
+        const program::CheckProgress progress = [&promise](qint64 done, qint64 total) {
+            if (total > 0)
+                promise->setProgressValue(int(done * kProgressSteps / total));
+            return !promise->isCanceled();
+        };
+        program::ProgramCheckResult result = run(source, axisNames, facts, progress);
+        if (!result.cancelled)
+            promise->addResult(std::move(result));
         promise->finish();
     });
 }
@@ -45,6 +60,7 @@ void ProgramBackgroundCheck::start(const QByteArray& text, const QStringList& ax
 void ProgramBackgroundCheck::cancel()
 {
     m_checking = false;
+    m_watcher.future().cancel();
     m_watcher.setFuture(QFuture<program::ProgramCheckResult>());
 }
 

@@ -5,27 +5,40 @@
 
 namespace stepdeck::ui {
 
-// Parses and checks a program's text off the GUI thread (issue 20): a CAM program of 200 000
-// lines takes the parser most of a second, which must not freeze STOP and PANIC while the
-// operator types. Only the newest request reports (checked()); an older one still running is
-// dropped when it ends. Pure inputs: the text, the machine's axis names and its facts.
+// Parses and checks a program off the GUI thread (issue 20), in one pass over its source
+// (issue 29: the editor's text, or a file too long to edit, read as it is checked): a CAM
+// program of millions of lines takes seconds, which must not freeze STOP and PANIC. Only the
+// newest request reports (checked()); starting another or cancel() ends the one running at its
+// next progress step. progress() says how far it is. Pure inputs: the source, the machine's axis
+// names and its facts.
 class ProgramBackgroundCheck : public QObject
 {
     Q_OBJECT
 public:
-    explicit ProgramBackgroundCheck(QObject* parent = nullptr);
+    static constexpr int kProgressSteps = 1000;
 
-    void start(const QByteArray& text, const QStringList& axisNames,
+    explicit ProgramBackgroundCheck(QObject* parent = nullptr);
+    ~ProgramBackgroundCheck() override;
+
+    void start(const program::ProgramSource& source, const QStringList& axisNames,
                const program::MachineFacts& facts);
-    void cancel(); // the running request reports nothing
+    void start(const QByteArray& text, const QStringList& axisNames,
+               const program::MachineFacts& facts)
+    {
+        start(program::ProgramSource::bytes(text), axisNames, facts);
+    }
+    void cancel(); // the running request stops and reports nothing
     bool isChecking() const { return m_checking; }
 
-    // The parse and the check in one: the parser's errors, or the check's result.
-    static program::ProgramCheckResult run(const QByteArray& text, const QStringList& axisNames,
-                                           const program::MachineFacts& facts);
+    // The parse and the check in one pass: the parser's errors, or the check's result.
+    static program::ProgramCheckResult run(const program::ProgramSource& source,
+                                           const QStringList& axisNames,
+                                           const program::MachineFacts& facts,
+                                           const program::CheckProgress& progress = {});
 
 Q_SIGNALS:
     void checked(const stepdeck::program::ProgramCheckResult& result);
+    void progress(int step); // 0..kProgressSteps of the text read
 
 private:
     QFutureWatcher<program::ProgramCheckResult> m_watcher;

@@ -173,10 +173,16 @@ void ProgramEditor::setRunningLine(int line)
     }
 }
 
+void ProgramEditor::setExcerpt(bool excerpt)
+{
+    m_excerpt = excerpt;
+    setReadOnly(m_running || excerpt);
+}
+
 void ProgramEditor::setRunning(bool running)
 {
     m_running = running;
-    setReadOnly(running);
+    setReadOnly(running || m_excerpt);
     if (!running)
         setRunningLine(0);
 }

@@ -24,6 +24,9 @@ public:
     // While running the text cannot be changed (the highlight stays where the runner is).
     void setRunning(bool running);
     bool isRunning() const { return m_running; }
+    // The text is an excerpt of a file too long to edit here (ProgramFiles): never editable.
+    void setExcerpt(bool excerpt);
+    bool isExcerpt() const { return m_excerpt; }
 
     int gutterWidth() const;
     // The line (1-based) at a point of the viewport, 0 below the last line.
@@ -47,6 +50,7 @@ private:
     QMap<int, QString> m_errors; // line -> message(s)
     int m_runningLine = 0;
     bool m_running = false;
+    bool m_excerpt = false;
 };
 
 } // namespace stepdeck::ui

@@ -1,4 +1,5 @@
 #include "ProgramFiles.h"
+#include "ProgramEditor.h"
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
 #include <QFile>
@@ -117,24 +118,66 @@ bool ProgramFiles::load(const QString& path)
         recentprograms::remove(path);
         return false;
     }
-    if (file.size() > kMaxFileBytes) {
-        Q_EMIT message(tr("Program %1: larger than %2 MB, not opened.")
-                           .arg(path)
-                           .arg(kMaxFileBytes / (1024 * 1024)));
-        return false;
+    const bool large = file.size() > kMaxEditBytes;
+    if (large) {
+        if (!loadExcerpt(&file))
+            return false;
+    } else {
+        const QByteArray bytes = file.readAll();
+        if (bytes.size() != file.size()) {
+            Q_EMIT message(tr("Program %1: cannot be read: %2").arg(path, file.errorString()));
+            return false;
+        }
+        m_editor->setPlainText(QString::fromUtf8(bytes));
     }
-    const QByteArray bytes = file.read(kMaxFileBytes + 1);
-    m_editor->setPlainText(QString::fromUtf8(bytes));
+    setLarge(large);
     m_editor->document()->setModified(false);
     m_path = QFileInfo(path).absoluteFilePath();
+    if (large)
+        Q_EMIT message(tr("%1 is %2 MB: too large to edit here. Its first %3 lines are shown; the "
+                          "check, the preview and the run read the whole file.")
+                           .arg(QFileInfo(path).fileName())
+                           .arg(double(file.size()) / (1024 * 1024), 0, 'f', 1)
+                           .arg(kExcerptLines));
     recentprograms::add(m_path);
     updateName();
     Q_EMIT loaded(m_path);
     return true;
 }
 
+bool ProgramFiles::loadExcerpt(QFile* file)
+{
+    QByteArray head;
+    for (int i = 0; i < kExcerptLines && !file->atEnd(); ++i) {
+        const QByteArray line = file->readLine(64 * 1024);
+        if (line.isEmpty() && file->error() != QFileDevice::NoError) {
+            Q_EMIT message(
+                tr("Program %1: cannot be read: %2").arg(file->fileName(), file->errorString()));
+            return false;
+        }
+        head += line;
+    }
+    if (head.endsWith('\n'))
+        head.chop(1);
+    m_editor->setPlainText(QString::fromUtf8(head));
+    return true;
+}
+
+void ProgramFiles::setLarge(bool large)
+{
+    m_large = large;
+    if (auto* editor = qobject_cast<ProgramEditor*>(m_editor))
+        editor->setExcerpt(large); // stays read-only after a run, too
+    else
+        m_editor->setReadOnly(large);
+    m_save->setEnabled(!large);
+    m_saveAs->setEnabled(!large);
+}
+
 bool ProgramFiles::saveTo(const QString& path)
 {
+    if (m_large)
+        return false; // the editor holds an excerpt: it must never replace a file
     QSaveFile file(path);
     const QByteArray bytes = m_editor->toPlainText().toUtf8();
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {

@@ -2,6 +2,7 @@
 #include <QStringList>
 #include <QWidget>
 
+class QFile;
 class QMenu;
 class QPlainTextEdit;
 class QPushButton;
@@ -19,18 +20,24 @@ void remove(const QString& path);
 } // namespace recentprograms
 
 // Open, Save, Save as and the recent programs of the Program page (issue 20), for the text of
-// one editor. Files are UTF-8 text; one larger than kMaxFileBytes or that cannot be read is
-// refused with the reason (message()), and the editor keeps what it had. Unsaved changes
-// are not dropped by Open: a non-modal question comes first.
+// one editor. Files are UTF-8 text; one that cannot be read is refused with the reason
+// (message()), and the editor keeps what it had. Unsaved changes are not dropped by Open: a
+// non-modal question comes first. A file larger than kMaxEditBytes (a CAM program of millions
+// of lines, issue 29) is not loaded into the editor: it shows its first kExcerptLines lines,
+// read-only, and the check, the preview and the run read the file itself (largePath()); Save
+// and Save as are off then, so that the excerpt can never replace the file.
 class ProgramFiles : public QWidget
 {
     Q_OBJECT
 public:
-    static constexpr qint64 kMaxFileBytes = 16 * 1024 * 1024;
+    static constexpr qint64 kMaxEditBytes = 8 * 1024 * 1024;
+    static constexpr int kExcerptLines = 2000;
 
     ProgramFiles(QPlainTextEdit* editor, QWidget* parent = nullptr);
 
     QString currentPath() const { return m_path; }
+    // The file shown as an excerpt (too large to edit); empty when the editor holds the text.
+    QString largePath() const { return m_large ? m_path : QString(); }
     bool isModified() const;
     // Reads path into the editor; false (editor unchanged) with the reason in message().
     bool load(const QString& path);
@@ -51,11 +58,14 @@ Q_SIGNALS:
 
 private:
     void openAsked(const QString& path); // after the unsaved-changes question
+    void setLarge(bool large);
+    bool loadExcerpt(QFile* file);
     void rebuildRecentMenu();
     void updateName();
 
     QPlainTextEdit* m_editor;
     QString m_path;
+    bool m_large = false;
     QPushButton* m_open;
     QPushButton* m_save;
     QPushButton* m_saveAs;

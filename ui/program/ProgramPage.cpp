@@ -16,8 +16,10 @@
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
 #include <QHBoxLayout>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -25,6 +27,7 @@ namespace stepdeck::ui {
 
 namespace {
 constexpr int kRecheckDelayMs = 400;
+constexpr int kShowProgressAfterMs = 300;
 } // namespace
 
 ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
@@ -40,10 +43,20 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     m_check->setObjectName(QStringLiteral("programCheck"));
     m_recheck->setSingleShot(true);
     m_recheck->setInterval(kRecheckDelayMs);
+    m_showProgress = new QTimer(this);
+    m_showProgress->setSingleShot(true);
+    m_showProgress->setInterval(kShowProgressAfterMs);
     buildLayout();
 
     connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
     connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
+    connect(m_checker, &ProgramBackgroundCheck::progress, m_checkProgress, &QProgressBar::setValue);
+    connect(m_showProgress, &QTimer::timeout, this, [this] {
+        if (m_checker->isChecking())
+            m_checkStack->setCurrentIndex(1);
+    });
+    connect(m_cancelCheck, &QPushButton::clicked, this, &ProgramPage::cancelCheck);
+    connect(m_checkAgain, &QPushButton::clicked, this, &ProgramPage::checkNow);
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
         if (!isRunning())
             m_recheck->start(); // again from now: typing does not check every key
@@ -99,7 +112,7 @@ void ProgramPage::buildLayout()
     // run's message (M0's prompt) and the machine the page runs on.
     auto* top = new QHBoxLayout;
     top->addWidget(m_files, 1);
-    top->addWidget(m_check, 1);
+    top->addWidget(buildCheckRow(), 1);
     auto* lines = new QHBoxLayout;
     lines->addWidget(m_banner, 2);
     lines->addWidget(m_machineNote, 1);
@@ -118,6 +131,59 @@ void ProgramPage::buildLayout()
     v->addWidget(m_controls);
     v->addLayout(lines);
     v->addWidget(split, 1);
+}
+
+QWidget* ProgramPage::buildCheckRow()
+{
+    m_checkStack = new QStackedWidget(this);
+    m_checkProgress = new QProgressBar(this);
+    m_checkProgress->setObjectName(QStringLiteral("programCheckProgress"));
+    m_checkProgress->setRange(0, ProgramBackgroundCheck::kProgressSteps);
+    m_checkProgress->setFormat(tr("Checking: %p %"));
+    m_cancelCheck = new QPushButton(tr("Cancel"), this);
+    m_cancelCheck->setObjectName(QStringLiteral("programCancelCheck"));
+    m_checkAgain = new QPushButton(tr("Check"), this);
+    m_checkAgain->setObjectName(QStringLiteral("programCheckNow"));
+    m_checkAgain->setToolTip(tr("Check the program against the machine now"));
+    auto* result = new QWidget(this);
+    auto* h = new QHBoxLayout(result);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(m_check, 1);
+    h->addWidget(m_checkAgain);
+    auto* running = new QWidget(this);
+    auto* r = new QHBoxLayout(running);
+    r->setContentsMargins(0, 0, 0, 0);
+    r->addWidget(m_checkProgress, 1);
+    r->addWidget(m_cancelCheck);
+    m_checkStack->addWidget(result);
+    m_checkStack->addWidget(running);
+    // Both pages keep the row's height (QStackedWidget sizes to the larger).
+    return m_checkStack;
+}
+
+bool ProgramPage::isShowingCheckProgress() const
+{
+    return m_checkStack->currentIndex() == 1;
+}
+
+void ProgramPage::setCheckProgressDelay(int ms)
+{
+    m_showProgress->setInterval(ms);
+}
+
+void ProgramPage::cancelCheck()
+{
+    m_checker->cancel();
+    m_showProgress->stop();
+    m_checkStack->setCurrentIndex(0);
+    m_checkOk = false;
+    m_checkedProgram.reset();
+    m_check->setText(tr("Not checked: the check was cancelled. Run stays off until it is "
+                        "checked."));
+    m_check->setStyleSheet(QString());
+    m_check->setToolTip(QString());
+    m_preview->clear(tr("No preview: the check was cancelled."));
+    updateControls();
 }
 
 QString ProgramPage::checkText() const
@@ -188,6 +254,15 @@ std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>*
         for (const machine::MachineAxis& a : machine->description().axes)
             axes << a.name;
     }
+    if (!m_files->largePath().isEmpty()) {
+        // A file too long to edit: the program of its last check (the run checks it again,
+        // and its reader refuses the file if it changed since).
+        if (m_checkOk && m_checkedProgram)
+            return m_checkedProgram;
+        if (errors)
+            *errors = {program::ProgramError{0, 0, tr("the program is not checked yet")}};
+        return std::nullopt;
+    }
     return program::ProgramParser::parse(m_editor->toPlainText().toUtf8(), axes, errors);
 }
 
@@ -196,10 +271,13 @@ void ProgramPage::checkNow()
     m_recheck->stop();
     if (isRunning())
         return; // the runner checked what runs; the text cannot change meanwhile
-    m_controls->setLineCount(m_editor->blockCount());
+    if (m_files->largePath().isEmpty())
+        m_controls->setLineCount(m_editor->blockCount());
     const machine::Machine* machine = m_context->machine();
     if (!machine) {
         m_checker->cancel();
+        m_showProgress->stop();
+        m_checkStack->setCurrentIndex(0);
         m_checkOk = false;
         m_editor->setErrors({});
         m_check->setText(tr("Not checked: no machine open."));
@@ -221,7 +299,13 @@ void ProgramPage::checkNow()
     facts.tools = m_context->tools()->table();
     m_checkedParameters = facts.knownParameters;
     m_checkedIncomplete = facts.setupIncomplete;
-    m_checker->start(m_editor->toPlainText().toUtf8(), axes, facts);
+    const QString large = m_files->largePath();
+    m_checkProgress->setValue(0);
+    m_showProgress->start();
+    m_checker->start(large.isEmpty()
+                         ? program::ProgramSource::bytes(m_editor->toPlainText().toUtf8())
+                         : program::ProgramSource::file(large),
+                     axes, facts);
 }
 
 bool ProgramPage::isChecking() const
@@ -233,7 +317,14 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
 {
     if (isRunning() || !m_context->machine())
         return; // a check of before the run or of a machine closed since
-    m_checkOk = result.ok() && !m_editor->toPlainText().trimmed().isEmpty();
+    m_showProgress->stop();
+    m_checkStack->setCurrentIndex(0);
+    const bool large = !m_files->largePath().isEmpty();
+    m_checkOk = result.ok() && (large ? result.program && result.program->blockCount > 0
+                                      : !m_editor->toPlainText().trimmed().isEmpty());
+    m_checkedProgram = result.ok() ? result.program : std::nullopt;
+    if (large)
+        m_controls->setLineCount(result.preview.lines);
     m_editor->setErrors(result.errors);
     if (result.ok()) {
         m_check->setText(m_checkOk ? tr("Checked against the machine: no errors.")

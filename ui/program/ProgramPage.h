@@ -6,7 +6,9 @@
 #include <QWidget>
 #include <optional>
 
+class QProgressBar;
 class QPushButton;
+class QStackedWidget;
 class QTimer;
 
 namespace stepdeck::machine {
@@ -52,7 +54,13 @@ public:
     bool isRunning() const;
     // The check of the text as it stands now, without waiting for the debounce; it runs off
     // the GUI thread (ProgramBackgroundCheck) and reports when done (isChecking() until then).
+    // A file too long to edit (ProgramFiles::largePath()) is checked from the file.
     void checkNow();
+    QProgressBar* checkProgress() const { return m_checkProgress; }
+    bool isShowingCheckProgress() const;
+    // How long a check runs before its progress shows (0.3 s; tests take 0).
+    void setCheckProgressDelay(int ms);
+    QPushButton* cancelCheckButton() const { return m_cancelCheck; }
     bool isChecking() const;
     // What the confirmation of "Run from line" says about where the run starts.
     QString runFromText(int line) const;
@@ -76,6 +84,8 @@ private:
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
     bool start(int fromLine, bool stepOnly);
     void showCheck(const program::ProgramCheckResult& result);
+    void cancelCheck();
+    QWidget* buildCheckRow();
     void updateControls();
     void updateProgress();
     // The runner's signals.
@@ -92,6 +102,13 @@ private:
     ProgramFiles* m_files;
     ElidedLabel* m_machineNote;
     ElidedLabel* m_check;
+    // The check's line, or while a long check runs its progress and Cancel (one row, its
+    // height fixed: nothing moves when it switches).
+    QStackedWidget* m_checkStack = nullptr;
+    QProgressBar* m_checkProgress = nullptr;
+    QPushButton* m_cancelCheck = nullptr;
+    QPushButton* m_checkAgain = nullptr;
+    QTimer* m_showProgress = nullptr; // a check that takes longer than this shows its progress
     ProgramEditor* m_editor;
     ProgramPreviewView* m_preview;
     ProgramPromptBanner* m_banner;
@@ -101,6 +118,7 @@ private:
     program::ProgramRunner* m_runner = nullptr;
     QPointer<machine::Machine> m_runnerMachine;
     bool m_checkOk = false;
+    std::optional<program::Program> m_checkedProgram; // of the last check without errors
     program::Program m_running; // what the runner runs (for M0 lines and the progress)
     ProgramProgress m_progress; // of the run, in the estimate
     QString m_checkedPositions; // positionsSignature() of the last check

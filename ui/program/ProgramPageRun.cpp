@@ -13,6 +13,7 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
+#include "program/ProgramReader.h"
 #include <QPushButton>
 
 namespace stepdeck::ui {
@@ -50,14 +51,11 @@ QString ProgramPage::runFromText(int line) const
 {
     QList<program::ProgramError> errors;
     const std::optional<program::Program> parsed = parse(&errors);
+    std::optional<program::ProgramReader> reader;
     const program::ProgramBlock* first = nullptr;
     if (parsed) {
-        for (const program::ProgramBlock& b : parsed->blocks) {
-            if (b.line >= line) {
-                first = &b;
-                break;
-            }
-        }
+        reader.emplace(*parsed);
+        first = reader->at(reader->firstBlockAtLine(line));
     }
     if (!first)
         return tr("Line %1: no block runs on or after it.").arg(line);
@@ -136,12 +134,8 @@ void ProgramPage::onBlockFinished(int line)
 
 void ProgramPage::onPaused(int line, const QString& prompt)
 {
-    for (const program::ProgramBlock& b : std::as_const(m_running.blocks)) {
-        if (b.line == line && program::waitsForOperator(b.kind, m_runner->optionalStops())) {
-            m_banner->showPrompt(line, prompt);
-            break;
-        }
-    }
+    if (m_runner->pausedAtOperatorStop())
+        m_banner->showPrompt(line, prompt);
     updateControls();
 }
 

@@ -84,7 +84,7 @@ inline QString describe(const ProgramBlock& b)
 inline QStringList describeAll(const Program& p)
 {
     QStringList out;
-    for (const ProgramBlock& b : p.blocks)
+    for (const ProgramBlock& b : p.allBlocks())
         out << QStringLiteral("%1: %2").arg(b.line).arg(describe(b));
     return out;
 }

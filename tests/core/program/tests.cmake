@@ -2,6 +2,8 @@
 stepdeck_add_test(tst_programlexer SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlexer.cpp LABELS unit)
 stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramParserTestSupport.h LABELS unit)
+stepdeck_add_test(tst_programreader SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programreader.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 stepdeck_add_test(tst_programparserdialect SOURCES
                   ${CMAKE_CURRENT_LIST_DIR}/tst_programparserdialect.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramParserTestSupport.h LABELS unit)

@@ -22,11 +22,11 @@ ProgramBlock lastBlock(const QString& program)
     QList<ProgramError> errors;
     const std::optional<Program> p = ProgramParser::parse(
         program.toUtf8(), {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")}, &errors);
-    if (!p || p->blocks.isEmpty()) {
+    if (!p || p->allBlocks().isEmpty()) {
         qWarning() << (errors.isEmpty() ? QString() : errors.first().text());
         return {};
     }
-    return p->blocks.last();
+    return p->allBlocks().last();
 }
 
 QString errorOf(const std::variant<ArcPath, ArcPath::Error>& planned)

@@ -233,7 +233,7 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
     // Every point the check planned (work coordinates, G54 here) was reached within a step.
     // A dwell (G4) adds a point where the path stands and moves nothing.
     QSet<int> dwells;
-    for (const ProgramBlock& b : program->blocks)
+    for (const ProgramBlock& b : program->allBlocks())
         if (b.kind == BlockKind::Dwell)
             dwells.insert(b.line);
     const QList<PreviewPoint>& planned = m_runner->preview().path;

@@ -31,7 +31,7 @@ QString movesOf(const QString& program, const AxisPositions& start,
     if (!p)
         return QStringLiteral("parse: ") + errors.first().text();
     const std::variant<DrillCycle, DrillCycle::Error> planned =
-        DrillCycle::plan(p->blocks.last(), mill(), start, offsets);
+        DrillCycle::plan(p->allBlocks().last(), mill(), start, offsets);
     if (const DrillCycle::Error* e = std::get_if<DrillCycle::Error>(&planned))
         return QStringLiteral("error: ") + e->message;
     QStringList out;
@@ -99,7 +99,7 @@ void DrillCycleTest::parse_cycleWords()
     QList<ProgramError> errors;
     const std::optional<Program> p = parse(program, &errors);
     QVERIFY2(p, qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
-    const ProgramBlock& b = p->blocks.last();
+    const ProgramBlock b = p->allBlocks().last();
     QCOMPARE(b.kind, BlockKind::DrillCycle);
     QTEST(b.cycle.code, "code");
     QTEST(b.cycle.r, "r");

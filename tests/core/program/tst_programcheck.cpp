@@ -330,7 +330,7 @@ void TestProgramCheck::check_errors_lineColumnAndMessage()
     MachineFacts facts = machineFacts(machine);
     facts.knownPositions = positions(known);
     const Program p = parsed(program, facts);
-    QVERIFY(!p.blocks.isEmpty());
+    QVERIFY(!p.allBlocks().isEmpty());
     const ProgramCheckResult result = ProgramCheck::check(p, facts);
     QCOMPARE(texts(result.errors), errors);
     QCOMPARE(result.ok(), errors.isEmpty());
@@ -423,19 +423,20 @@ void TestProgramCheck::check_nestedEmptyRepeats_endQuickly()
 void TestProgramCheck::check_tooManyBlocks_namedAtTheOutermostRepeat()
 {
     const MachineFacts facts = machineFacts("mill");
-    const Program p = parsed("M5\n  O1 repeat [1000000]\nO2 repeat [5]\nG4 P0\nO2 endrepeat\nO1 "
+    // The program's own blocks run once (M5, G4); the repeats run G4 6 * 10^6 - 1 times more.
+    const Program p = parsed("M5\n  O1 repeat [1000000]\nO2 repeat [6]\nG4 P0\nO2 endrepeat\nO1 "
                              "endrepeat",
                              facts);
     const ProgramCheckResult result = ProgramCheck::check(p, facts);
     QCOMPARE(texts(result.errors),
-             QStringList{"2:3: the run executes more than 5000000 blocks (repeats counted out)"});
-    // Just within: 1 + 999999 * 5 blocks.
-    const Program within = parsed("M5\nO1 repeat [999999]\nO2 repeat [5]\nG4 P0\nO2 "
+             QStringList{"2:3: the repeats run more than 5000000 blocks beyond the program's own"});
+    // Just within: the repeats run G4 10^6 * 5 - 1 times more.
+    const Program within = parsed("M5\nO1 repeat [1000000]\nO2 repeat [5]\nG4 P0\nO2 "
                                   "endrepeat\nO1 endrepeat",
                                   facts);
     const ProgramCheckResult fits = ProgramCheck::check(within, facts);
     QVERIFY(fits.ok());
-    QCOMPARE(fits.preview.blocksRun, qint64(1 + 999999 * 5));
+    QCOMPARE(fits.preview.blocksRun, qint64(1 + 1000000 * 5));
 }
 
 void TestProgramCheck::check_manyErrors_listedUpToTheParsersLimit()

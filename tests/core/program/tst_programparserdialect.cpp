@@ -44,7 +44,7 @@ void TestProgramParserDialect::parse_modalGroups_stateOnEveryBlock()
     const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
     QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
     QStringList got;
-    for (const ProgramBlock& b : p->blocks) {
+    for (const ProgramBlock& b : p->allBlocks()) {
         const QString plane = b.plane == Plane::XY   ? QStringLiteral("XY")
                               : b.plane == Plane::XZ ? QStringLiteral("XZ")
                                                      : QStringLiteral("YZ");
@@ -88,7 +88,7 @@ void TestProgramParserDialect::parse_spindleSpeed_modalOnAnyLine()
         "M3\nG00 S10000\nM3\nG1 X5 S500 F100\nG1 X6\nG1 S0\nM5\n", kAxes, &errors);
     QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
     QStringList got;
-    for (const ProgramBlock& b : p->blocks)
+    for (const ProgramBlock& b : p->allBlocks())
         got << QStringLiteral("%1 %2%3")
                    .arg(blockWord(b.kind))
                    .arg(b.rpm)
@@ -106,18 +106,18 @@ void TestProgramParserDialect::parse_switchBesideMotion_keptToRunFirst()
     const std::optional<Program> p = ProgramParser::parse(
         "G0X0.000Y0.000S12000M3\nM8 G1 X1 F100\nG2 X2 I0.5 M9\n", kAxes, &errors);
     QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    QCOMPARE(p->blocks.size(), 3);
-    QCOMPARE(p->blocks.at(0).kind, BlockKind::Rapid);
-    QCOMPARE(p->blocks.at(0).switchFirst, std::optional<BlockKind>(BlockKind::SpindleOn));
-    QCOMPARE(p->blocks.at(0).switchColumn, 21);
-    QCOMPARE(p->blocks.at(0).rpm, 12000.0);
-    QCOMPARE(switchBlock(p->blocks.at(0)).kind, BlockKind::SpindleOn);
-    QCOMPARE(switchBlock(p->blocks.at(0)).columnOf({}), 21);
-    QVERIFY(switchBlock(p->blocks.at(0)).axes.isEmpty());
-    QCOMPARE(p->blocks.at(1).kind, BlockKind::Feed);
-    QCOMPARE(p->blocks.at(1).switchFirst, std::optional<BlockKind>(BlockKind::CoolantFlood));
-    QCOMPARE(p->blocks.at(2).kind, BlockKind::ArcClockwise);
-    QCOMPARE(p->blocks.at(2).switchFirst, std::optional<BlockKind>(BlockKind::CoolantOff));
+    QCOMPARE(p->allBlocks().size(), 3);
+    QCOMPARE(p->allBlocks().at(0).kind, BlockKind::Rapid);
+    QCOMPARE(p->allBlocks().at(0).switchFirst, std::optional<BlockKind>(BlockKind::SpindleOn));
+    QCOMPARE(p->allBlocks().at(0).switchColumn, 21);
+    QCOMPARE(p->allBlocks().at(0).rpm, 12000.0);
+    QCOMPARE(switchBlock(p->allBlocks().at(0)).kind, BlockKind::SpindleOn);
+    QCOMPARE(switchBlock(p->allBlocks().at(0)).columnOf({}), 21);
+    QVERIFY(switchBlock(p->allBlocks().at(0)).axes.isEmpty());
+    QCOMPARE(p->allBlocks().at(1).kind, BlockKind::Feed);
+    QCOMPARE(p->allBlocks().at(1).switchFirst, std::optional<BlockKind>(BlockKind::CoolantFlood));
+    QCOMPARE(p->allBlocks().at(2).kind, BlockKind::ArcClockwise);
+    QCOMPARE(p->allBlocks().at(2).switchFirst, std::optional<BlockKind>(BlockKind::CoolantOff));
     for (const char* bad : {"M3 M8", "G4 P1 M3", "G0 X1 M3 M8", "G0 X1 M6"}) {
         QVERIFY2(!ProgramParser::parse(bad, kAxes, &errors), bad);
         QVERIFY2(errors.first().message.startsWith(QStringLiteral("one action per line")),

@@ -10,6 +10,13 @@ stepdeck_add_test(tst_programpage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                   LABELS ui LIBS stepdeck_ui)
+# A program too large to edit (issue 29): the excerpt, the check's progress and Cancel, the run
+# read from the file, a file changed after its check.
+stepdeck_add_test(tst_programpagelarge SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpagelarge.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui TIMEOUT 300)
 # The preview's path (issue 29): the views' projections, the zoom and pan arithmetic, the scene
 # drawn from a preview, and the widget with its mouse, keys, colours and remembered view.
 foreach(_t tst_programpreviewprojection tst_programpreviewviewport tst_programpreviewscene)

@@ -272,7 +272,10 @@ void TestProgramWidgets::backgroundCheck_twoRequests_onlyTheNewestReports()
     QVERIFY(result.ok());
     QCOMPARE(result.preview.lines, 3);
     // The same answer as checking on the spot.
-    QCOMPARE(ProgramBackgroundCheck::run("G0 Q1\n", axes, facts).errors.size(), 1);
+    QCOMPARE(
+        ProgramBackgroundCheck::run(stepdeck::program::ProgramSource::bytes("G0 Q1\n"), axes, facts)
+            .errors.size(),
+        1);
 }
 
 void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()

@@ -1,0 +1,130 @@
+// The Program page with a program too large to edit (issue 29, "streamed, any length"), on the
+// machine of MachineWindowRig (an E-LAB X/Y/Z table at 400 steps/mm, a Nanotec rotary axis A,
+// simulated on pseudo-terminals): the file is shown as a read-only excerpt that can never be
+// saved over it, checked from the file with a progress bar that cancels, and run from the file
+// (the moves asserted at the simulated board); a file changed on disk after its check is
+// refused before anything reaches the board.
+#include "../machine/MachineWindowRig.h"
+#include "program/ProgramControls.h"
+#include "program/ProgramEditor.h"
+#include "program/ProgramFiles.h"
+#include "program/ProgramPage.h"
+#include <QProgressBar>
+#include <QPushButton>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+using program::RunState;
+
+class TestProgramPageLarge : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init() { QVERIFY(m_rig.start()); }
+    void cleanup() { m_rig.stop(); }
+    void largeFile_excerptReadOnly_runFromTheFileAtTheBoard();
+    void largeFile_changedAfterCheck_refusedNothingSent();
+    void check_long_progressShownCancelStopsIt();
+
+private:
+    ui::MainWindow* window() const { return m_rig.window(); }
+    ui::ProgramPage* page() const { return window()->programPage(); }
+    program::ProgramRunner* runner() const { return page()->runner(); }
+    bool runState(RunState state) const { return runner() && runner()->state() == state; }
+
+    // Two moves, then comment lines up to past the editor's limit, then one more move: the
+    // lines to run sit at both ends of a file the editor does not hold.
+    QString writeLargeProgram()
+    {
+        QByteArray text = "G91\nG0 X0.5\n";
+        const QByteArray padding = "(finishing pass, a comment line that pads the file)\n";
+        while (text.size() <= ui::ProgramFiles::kMaxEditBytes)
+            text += padding;
+        text += "G0 Y0.25\nM2\n";
+        m_lines = int(text.count('\n'));
+        const QString path = m_rig.dir->filePath(QStringLiteral("large.ngc"));
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(text) != text.size())
+            return {};
+        return path;
+    }
+
+    MachineWindowRig m_rig;
+    int m_lines = 0;
+};
+
+void TestProgramPageLarge::largeFile_excerptReadOnly_runFromTheFileAtTheBoard()
+{
+    QVERIFY(m_rig.openAndConnect());
+    window()->raisePage(page());
+    const QString path = writeLargeProgram();
+    QVERIFY(!path.isEmpty());
+    QVERIFY(page()->files()->load(path));
+    // The excerpt: its first lines, read-only, and nothing that could save it over the file.
+    QCOMPARE(page()->editor()->blockCount(), ui::ProgramFiles::kExcerptLines);
+    QVERIFY(page()->editor()->isReadOnly());
+    QVERIFY(!page()->files()->saveButton()->isEnabled());
+    QVERIFY(!page()->files()->saveTo(path + QStringLiteral(".copy")));
+    QVERIFY(!QFile::exists(path + QStringLiteral(".copy")));
+    QVERIFY2(page()->messageText().contains(QStringLiteral("too large to edit")),
+             qPrintable(page()->messageText()));
+    // Checked from the file: Run comes on once the whole file is checked.
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 60000);
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 60000);
+    // At the board: the first move and the last, 0.5 mm and 0.25 mm at 400 steps/mm.
+    QCOMPARE(m_rig.elab->position(Axis::X), 200);
+    QCOMPARE(m_rig.elab->position(Axis::Y), 100);
+    QVERIFY(m_rig.elab->still());
+    QVERIFY(page()->editor()->isReadOnly()); // still an excerpt after the run
+}
+
+void TestProgramPageLarge::largeFile_changedAfterCheck_refusedNothingSent()
+{
+    QVERIFY(m_rig.openAndConnect());
+    window()->raisePage(page());
+    const QString path = writeLargeProgram();
+    QVERIFY(page()->files()->load(path));
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 60000);
+    {
+        // Changed on disk after the check: the first move becomes a longer one.
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        QVERIFY(f.seek(8)); // "G91\nG0 X0.5": the "0" of 0.5
+        QCOMPARE(f.write("9"), qint64(1));
+    }
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY2(page()->messageText().contains(QStringLiteral("changed since it was checked")),
+                 qPrintable(page()->messageText()));
+    QVERIFY(!runState(RunState::Running));
+    // Nothing reached the board.
+    QCOMPARE(m_rig.elab->position(Axis::X), 0);
+    QCOMPARE(m_rig.elab->position(Axis::Y), 0);
+}
+
+void TestProgramPageLarge::check_long_progressShownCancelStopsIt()
+{
+    QVERIFY(m_rig.openAndConnect());
+    window()->raisePage(page());
+    page()->setCheckProgressDelay(0);
+    const QString path = writeLargeProgram();
+    QVERIFY(page()->files()->load(path));
+    // The check runs: its progress in place of the check's line, with Cancel.
+    QTRY_VERIFY(page()->isShowingCheckProgress());
+    QVERIFY(page()->checkProgress()->isVisible());
+    QVERIFY(page()->cancelCheckButton()->isVisible());
+    page()->cancelCheckButton()->click();
+    QVERIFY(!page()->isShowingCheckProgress());
+    QVERIFY(!page()->isChecking());
+    QVERIFY2(page()->checkText().contains(QStringLiteral("cancelled")),
+             qPrintable(page()->checkText()));
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+    // Check checks again.
+    window()->findChild<QPushButton*>(QStringLiteral("programCheckNow"))->click();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 60000);
+    QVERIFY(!page()->isShowingCheckProgress());
+}
+
+QTEST_MAIN(TestProgramPageLarge)
+#include "tst_programpagelarge.moc"
