@@ -114,8 +114,9 @@ QString ParameterSchema::validateScalar(const ParameterSpec& spec, const QVarian
 QString ParameterSchema::scalarError(const QString& who, const ParameterSpec& spec,
                                      const QVariant& value) const
 {
-    const QString range = rangeText(spec);
-    const QString unit = displayUnitSuffix(spec);
+    // The range and unit only for a message: a program's check validates millions of writes.
+    const auto range = [&] { return rangeText(spec); };
+    const auto unit = [&] { return displayUnitSuffix(spec); };
     if (spec.type == ParameterType::Integer) {
         qint64 v = 0;
         switch (numbers::integerFromVariant(value, &v)) {
@@ -125,10 +126,10 @@ QString ParameterSchema::scalarError(const QString& who, const ParameterSpec& sp
             break;
         case NumberError::Malformed:
             return tr("%1: '%2' is not a decimal integer (allowed: %3%4)")
-                .arg(who, value.toString(), range, unit);
+                .arg(who, value.toString(), range(), unit());
         case NumberError::NonFinite:
             return tr("%1: '%2' is not a finite number (allowed: %3%4)")
-                .arg(who, value.toString(), range, unit);
+                .arg(who, value.toString(), range(), unit());
         case NumberError::OutOfRange:
             break;
         }
@@ -136,7 +137,7 @@ QString ParameterSchema::scalarError(const QString& who, const ParameterSpec& sp
         return {};
     }
     return tr("%1: value '%2' is out of range (allowed: %3%4)")
-        .arg(who, value.toString(), range, unit);
+        .arg(who, value.toString(), range(), unit());
 }
 
 QString ParameterSchema::validate(const ParameterSet& set, const QList<Axis>& axes) const

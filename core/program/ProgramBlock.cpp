@@ -94,7 +94,8 @@ int ProgramBlock::columnOf(const QString& word) const
 bool ProgramBlock::operator==(const ProgramBlock& o) const
 {
     return line == o.line && text == o.text && kind == o.kind && axes == o.axes &&
-           relative == o.relative && inches == o.inches && feed == o.feed && plane == o.plane &&
+           relative == o.relative && inches == o.inches && feed == o.feed &&
+           inverseTime == o.inverseTime && axisRates == o.axisRates && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm &&
            spindleChange == o.spindleChange && switchFirst == o.switchFirst &&

@@ -116,9 +116,13 @@ struct ProgramBlock
     // Axis words in the program's units as written (G20: inch for mm axes), by machine axis.
     QMap<QString, double> axes;
     // The modal state in effect for this block (after the line's own modal words).
-    bool relative = false;               // G91
-    bool inches = false;                 // G20
-    std::optional<double> feed;          // F, unit/min
+    bool relative = false;      // G91
+    bool inches = false;        // G20
+    std::optional<double> feed; // F, unit/min (inverseTime: 1/minutes)
+    bool inverseTime = false;   // G93: this G1 takes 1/F minutes (InverseTime)
+    // G93 resolved where the block starts (InverseTime::resolve): each moving axis' rate in its
+    // unit per minute, in place of F. Empty: F for every axis (G94).
+    QMap<QString, double> axisRates;
     Plane plane = Plane::XY;             // G17 / G18 / G19
     PathMode pathMode = PathMode::Blend; // G61 / G61.1 / G64
     std::optional<double> pathTolerance; // G64 P

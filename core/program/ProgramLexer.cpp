@@ -1,9 +1,28 @@
 #include "ProgramLexer.h"
+#include <charconv>
 #include <cmath>
 
 namespace stepdeck::program {
 
 namespace {
+
+// The value of digits with an optional sign and point (readNumber checked the form): as
+// QString::toDouble, but without its conversion to UTF-8 and allocation per number.
+double toDouble(QStringView text)
+{
+    char ascii[96];
+    if (text.size() >= qsizetype(sizeof ascii))
+        return text.toDouble(); // a long one (a line holds at most 1024 characters)
+    qsizetype n = 0;
+    for (const QChar c : text)
+        if (c != QLatin1Char('+'))
+            ascii[n++] = char(c.unicode());
+    double value = 0;
+    const std::from_chars_result r = std::from_chars(ascii, ascii + n, value);
+    if (r.ec == std::errc::result_out_of_range)
+        return text.toDouble(); // inf, or a subnormal: as Qt reads it
+    return value;
+}
 
 class LineReader
 {
@@ -108,7 +127,7 @@ private:
                                      .arg(what(), text.toString(), QString(next)));
             return std::nullopt;
         }
-        const double value = text.toDouble();
+        const double value = toDouble(text);
         if (!std::isfinite(value)) {
             fail(int(start) + 1,
                  ProgramLexer::tr("%1: %2 is not a finite number").arg(what(), text.toString()));
@@ -180,6 +199,7 @@ private:
 LexedLine ProgramLexer::lex(QStringView line, int lineNumber)
 {
     LexedLine out;
+    out.words.reserve(6); // a CAM line has a few words: one allocation, not one per word
     LineReader(line, lineNumber, &out).run();
     return out;
 }

@@ -8,6 +8,19 @@ namespace stepdeck::program {
 namespace {
 
 const QString kAxisLetters = QStringLiteral("XYZABCUVW");
+
+// "X", "A", ...: an axis letter as the QString the maps are keyed by, made once (a long program
+// has millions of axis words; a QString per word would be an allocation each).
+const QString& letterString(QChar l)
+{
+    static const QStringList letters = [] {
+        QStringList out;
+        for (char c = 'A'; c <= 'Z'; ++c)
+            out << QString(QLatin1Char(c));
+        return out;
+    }();
+    return letters.at(l.unicode() - 'A'); // callers pass one of kAxisLetters
+}
 const QString kParameterLetters = QStringLiteral("FSPLQIJKRH");
 
 std::optional<BlockKind> actionOfG(int code)
@@ -105,13 +118,14 @@ private:
             return {};
         }
         if (kAxisLetters.contains(l)) {
-            if (!m_axisNames.contains(QString(l)))
+            const QString& name = letterString(l);
+            if (!m_axisNames.contains(name))
                 return ProgramLine::tr("the machine has no axis %1 (it has %2)")
                     .arg(l)
                     .arg(m_axisNames.join(QStringLiteral(", ")));
-            if (out->axes.contains(QString(l)))
+            if (out->axes.contains(name))
                 return ProgramLine::tr("axis %1 appears twice on the line").arg(l);
-            out->axes.insert(QString(l), &w);
+            out->axes.insert(name, &w);
             return {};
         }
         if (l == QLatin1Char('T')) {
@@ -245,7 +259,11 @@ private:
         case 990:
             out->retractToR = tenths == 990;
             break;
-        default: // G54..G59; G40, G94: the modes StepDeck always runs in
+        case 930:
+        case 940:
+            out->inverseTime = tenths == 930;
+            break;
+        default: // G54..G59; G40: the mode StepDeck always runs in
             if (isCoordinateSystem(tenths))
                 out->coordinateSystem = tenths / 10 - 54;
             break;
@@ -306,8 +324,6 @@ private:
             return ProgramLine::tr("G%1 (cutter radius compensation) is not supported: let the "
                                    "CAM post compensate the path (G40 is accepted)")
                 .arg(tenths / 10);
-        case 930:
-            return ProgramLine::tr("G93 (inverse time feed) is not supported yet: use G94");
         case 950:
             return ProgramLine::tr("G95 (feed per revolution) is not supported: no controller "
                                    "reports its spindle's revolutions; use G94");
@@ -360,6 +376,29 @@ std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState
     return {};
 }
 
+// G93 (LinuxCNC's inverse time, docs/programs.md "Inverse time"): a G1 takes 1/F minutes, so F
+// stands on every G1 line that moves. Arcs and drilling cycles in G93 are refused (not yet).
+std::pair<int, QString> inverseTime(const Words& sorted, const ModalState& modal, ProgramBlock* b)
+{
+    if (!modal.inverseTime)
+        return {};
+    const int column = sorted.actionWord       ? sorted.actionWord->column
+                       : sorted.axes.isEmpty() ? 1
+                                               : sorted.axes.first()->column;
+    if (isArc(b->kind) || b->kind == BlockKind::DrillCycle)
+        return {column,
+                ProgramLine::tr("%1 in inverse time (G93) is not supported yet: use G94")
+                    .arg(b->kind == BlockKind::DrillCycle ? QStringLiteral("a drilling cycle")
+                                                          : blockWord(b->kind))};
+    if (b->kind != BlockKind::Feed || sorted.axes.isEmpty())
+        return {};
+    if (!sorted.parameters.contains('F'))
+        return {column, ProgramLine::tr("G1 in inverse time (G93) needs F on its line: the move "
+                                        "takes 1/F minutes")};
+    b->inverseTime = true;
+    return {};
+}
+
 // The block's kind, axes and word columns: its action, or the modal motion for a line of
 // axis words; the modal motion afterwards into *modal.
 std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, ProgramBlock* b)
@@ -383,6 +422,8 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
         return {column, why};
     const bool arc = isArc(b->kind);
     const bool cycle = b->kind == BlockKind::DrillCycle;
+    if (const auto [column, why] = inverseTime(sorted, *modal, b); column > 0)
+        return {column, why};
     if ((b->kind == BlockKind::Feed || arc || cycle) && (!sorted.axes.isEmpty() || arc || cycle) &&
         !modal->feed)
         return {sorted.actionWord ? sorted.actionWord->column : sorted.axes.first()->column,

@@ -25,6 +25,7 @@ struct ModalState
     std::optional<int> loadedTool;       // the tool the last M6 loaded
     int lengthTool = -1;                 // G43's tool (-1: G49, none)
     bool retractToR = false;             // G99 (G98 default): where a drilling cycle retracts
+    bool inverseTime = false;            // G93 (G94, units per minute, default)
     // The drilling cycle in effect (motion DrillCycle): its code and its sticky numbers.
     int cycleCode = 0;
     std::optional<double> cycleR, cycleBottom, cyclePeck, cycleDwell;

@@ -36,6 +36,7 @@ struct Words
     const ProgramWord* machineCoordinates = nullptr; // G53
     std::optional<bool> lengthOffset;                // G43 (true) / G49 (false)
     std::optional<bool> retractToR;                  // G99 (true) / G98 (false)
+    std::optional<bool> inverseTime;                 // G93 (true) / G94 (false)
     const ProgramWord* switchWord = nullptr;         // M3..M9 beside a motion (ProgramLine)
     BlockKind switchAction = BlockKind::Modal;
     int cycleCode = 0; // G81, G82, G83, G73: its number

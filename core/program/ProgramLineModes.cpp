@@ -145,6 +145,14 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         modal->retractToR = *words->retractToR;
     if (words->inches)
         modal->inches = *words->inches;
+    if (words->inverseTime) {
+        // Leaving G93 for G94: F was a time, not a rate; G1 needs a new F (LinuxCNC sets the
+        // feed rate to 0 at G94). G94 while in G94 keeps F (a deviation: LinuxCNC clears it
+        // there too, which would refuse CAM headers that write F before G94).
+        if (modal->inverseTime && !*words->inverseTime)
+            modal->feed.reset();
+        modal->inverseTime = *words->inverseTime;
+    }
     if (const ProgramWord* s = words->parameters.value('S')) {
         if (s->value < 0 || s->value > 1e6)
             return {s->column, ProgramLine::tr("%1 must lie within 0..1000000").arg(s->valueText)};

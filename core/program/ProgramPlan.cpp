@@ -158,7 +158,24 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxi
     }
     if (!block.feed) // the parser refuses G1 without F
         return true;
-    const qint64 rate = units::feedStepsPerSecond(axis, *block.feed, block.inches);
+    if (block.inverseTime && !block.axisRates.contains(axis.name))
+        return true; // G93 on an axis that does not move (or from an unknown position)
+    const qint64 rate =
+        block.inverseTime ? units::feedStepsPerSecond(axis, block.axisRates.value(axis.name), false)
+                          : units::feedStepsPerSecond(axis, *block.feed, block.inches);
+    if (block.inverseTime && (rate < spec->minimum || rate > spec->maximum)) {
+        error(block, block.columnOf(QStringLiteral("F")), [&] {
+            return ProgramCheck::tr("G93 F%1 (the move in %2 s) moves %3 at %4 steps/s; "
+                                    "controller \"%5\" takes %6..%7 steps/s (%8)")
+                .arg(figure(*block.feed), figure(60.0 / *block.feed), axis.name)
+                .arg(rate)
+                .arg(axis.controller)
+                .arg(spec->minimum)
+                .arg(spec->maximum)
+                .arg(ParameterSchema::displayLabel(*spec));
+        });
+        return false;
+    }
     if (rate < spec->minimum || rate > spec->maximum) {
         error(block, block.columnOf(QStringLiteral("F")), [&] {
             return ProgramCheck::tr(

@@ -24,8 +24,15 @@ QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBl
     *set = ProgramRules::feedRateWrite(m_facts.description, controller, caps, block, known);
     if (set->isEmpty())
         return {};
-    return ProgramRules::parameterWrite(m_facts.schemas.value(controller), caps,
-                                        rulesOf(m_facts, controller), *set, known);
+    // A program's G1s mostly write the rate the one before wrote: judged once (the rules see
+    // nothing but the write and what the device holds).
+    JudgedWrite& last = m_judged[controller];
+    if (last.valid && last.set == *set && last.known == known)
+        return last.why;
+    last = JudgedWrite{true, *set, known,
+                       ProgramRules::parameterWrite(m_facts.schemas.value(controller), caps,
+                                                    rulesOf(m_facts, controller), *set, known)};
+    return last.why;
 }
 
 // G1's rate write on each controller of the block, as the run makes it (ProgramRates), against
@@ -33,6 +40,12 @@ QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBl
 // refusal names the highest F that would pass, where one does.
 void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
 {
+    // The G1 before wrote the same F over the same axes, every controller took it and nothing
+    // the rules judge by changed since: this one is taken too (a CAM program's G1s mostly are).
+    if (m_lastTakenFeed.matches(block))
+        return;
+    bool allTaken = true;
+    bool changed = false;
     for (const machine::MachineController& c : m_facts.description.controllers) {
         ParameterSet set;
         const QString why = feedWriteRefusal(c.id, block, &set);
@@ -41,10 +54,16 @@ void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
         if (why.isEmpty()) {
             ParameterSet& known = m_known[c.id];
             for (auto it = set.cbegin(); it != set.cend(); ++it)
-                for (auto a = it->perAxis.cbegin(); a != it->perAxis.cend(); ++a)
-                    known[it.key()].perAxis.insert(a.key(), a.value());
+                for (auto a = it->perAxis.cbegin(); a != it->perAxis.cend(); ++a) {
+                    QMap<Axis, QVariant>& held = known[it.key()].perAxis;
+                    if (held.value(a.key()) != a.value()) {
+                        held.insert(a.key(), a.value());
+                        changed = true;
+                    }
+                }
             continue;
         }
+        allTaken = false;
         error(block, block.columnOf(QStringLiteral("F")), [&] {
             // Only for the errors kept (CheckErrors): the highest F taken, by halving the
             // interval (the rules are monotonic in the rate).
@@ -68,6 +87,9 @@ void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
                        : ProgramCheck::tr("%1; set it on the Setup page first").arg(head);
         });
     }
+    m_lastTakenFeed = LastTakenFeed{};
+    if (allTaken && !changed)
+        m_lastTakenFeed = LastTakenFeed{true, *block.feed, block.inches, block.axes.keys()};
 }
 
 // A move or reference run on a controller that reports its setup incomplete is refused by the

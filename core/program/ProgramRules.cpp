@@ -17,7 +17,12 @@ ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& desc
         const machine::MachineAxis* a = description.axis(it.key());
         if (!a || a->controller != controller)
             continue;
-        const qint64 r = units::feedStepsPerSecond(*a, *block.feed, block.inches);
+        // G93: each axis its own rate (InverseTime); an axis that does not move gets none.
+        if (block.inverseTime && !block.axisRates.contains(a->name))
+            continue;
+        const qint64 r = block.inverseTime
+                             ? units::feedStepsPerSecond(*a, block.axisRates.value(a->name), false)
+                             : units::feedStepsPerSecond(*a, *block.feed, block.inches);
         rate.perAxis.insert(a->axis, r);
         slowest = slowest == 0 ? r : std::min(slowest, r);
     }

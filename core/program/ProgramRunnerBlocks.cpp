@@ -1,4 +1,5 @@
 // ProgramRunner: what each block sends and what it waits for before the next one starts.
+#include "InverseTime.h"
 #include "ProgramRates.h"
 #include "ProgramRules.h"
 #include "ProgramRunner.h"
@@ -89,7 +90,12 @@ void ProgramRunner::startMove(const ProgramBlock& block)
         fail(ErrorKind::Refused, why);
         return;
     }
-    const QMap<RequestId, QString> rates = m_rates->before(block);
+    // G93: each axis' rate from where the block starts, as the check resolved it.
+    const QMap<RequestId, QString> rates = m_rates->before(
+        block.inverseTime
+            ? InverseTime::resolve(block, m_machine->description(), m_programmed,
+                                   m_coordinates.offsets(block, m_machine->description()))
+            : block);
     awaitRequests(rates, [this] { sendMove(m_block); });
 }
 

@@ -1,6 +1,7 @@
 // The check's walk (ProgramCheck): the blocks as the run executes them, repeats counted out,
 // following the positions the program reaches (docs/programs.md "Check", "Preview").
 #include "ProgramSimulation.h"
+#include "InverseTime.h"
 #include <algorithm>
 #include <cmath>
 
@@ -111,7 +112,14 @@ bool ProgramSimulation::visit(int i, const ProgramBlock& block)
         if (m_firstVisit)
             m_firstVisit(block);
     }
-    m_plan.plan(block, first);
+    if (block.inverseTime) {
+        // Its rates follow from where it starts (InverseTime), as the run resolves them.
+        m_resolved = InverseTime::resolve(block, m_facts.description, m_programmed,
+                                          m_coordinates.offsets(block, m_facts.description));
+        m_plan.plan(m_resolved, first);
+    } else {
+        m_plan.plan(block, first);
+    }
     return first;
 }
 
@@ -295,24 +303,40 @@ double ProgramSimulation::workOf(size_t a) const
 // anyway). A kept point is a rapid only when every point it stands for was one.
 void ProgramSimulation::addPoint(int line, bool rapid)
 {
-    PreviewPoint point;
-    point.line = line;
-    point.seconds = m_seconds;
-    point.rapid = rapid && m_mergedRapid;
-    for (qsizetype i = 0; i < m_axes.size(); ++i)
-        if (m_known[size_t(i)])
-            point.position.insert(m_axes.at(i).name, workOf(size_t(i)));
+    const bool merged = rapid && m_mergedRapid;
     if (++m_sinceKept < m_pathStride) {
-        m_mergedRapid = point.rapid;
-        m_pendingPoint = std::move(point);
+        // Not kept (yet): only what it takes to draw it should it be the run's end; the point
+        // itself (a map of positions) is made at finish().
+        m_mergedRapid = merged;
+        m_pending.valid = true;
+        m_pending.line = line;
+        m_pending.seconds = m_seconds;
+        m_pending.rapid = merged;
+        m_pending.steps = m_steps;
+        m_pending.known = m_known;
         return;
     }
     m_sinceKept = 0;
     m_mergedRapid = true;
-    m_pendingPoint.reset();
-    m_path << point;
+    m_pending.valid = false;
+    m_path << pointAt(line, m_seconds, merged, m_steps, m_known);
     if (m_path.size() >= ProgramPreview::kMaxPathPoints)
         thinPath();
+}
+
+PreviewPoint ProgramSimulation::pointAt(int line, double seconds, bool rapid,
+                                        const std::vector<qint64>& steps,
+                                        const std::vector<char>& known) const
+{
+    PreviewPoint point;
+    point.line = line;
+    point.seconds = seconds;
+    point.rapid = rapid;
+    for (qsizetype i = 0; i < m_axes.size(); ++i)
+        if (known[size_t(i)])
+            point.position.insert(m_axes.at(i).name,
+                                  m_axes.at(i).toUnits(steps[size_t(i)]) - m_offset[size_t(i)]);
+    return point;
 }
 
 void ProgramSimulation::thinPath()
@@ -346,8 +370,9 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
     preview->blocksRun = m_blocksRun;
     preview->estimatedSeconds = m_seconds;
     preview->path = m_path;
-    if (m_pendingPoint)
-        preview->path << *m_pendingPoint; // the run's end, between two kept points
+    if (m_pending.valid) // the run's end, between two kept points
+        preview->path << pointAt(m_pending.line, m_pending.seconds, m_pending.rapid,
+                                 m_pending.steps, m_pending.known);
     preview->pathDecimated = m_pathDecimated;
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_offset[size_t(i)] != 0.0)

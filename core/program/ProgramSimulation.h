@@ -114,6 +114,34 @@ private:
     // the run's controllers will know it: the model's rules are judged against this.
     QMap<QString, ParameterSet> m_known;
     QSet<QString> m_setupReported; // controllers whose incomplete setup was named already
+    // Per controller the last rate write judged (feedWriteRefusal), with what it judged by.
+    struct JudgedWrite
+    {
+        bool valid = false;
+        ParameterSet set;
+        ParameterSet known;
+        QString why;
+    };
+    mutable QHash<QString, JudgedWrite> m_judged;
+    // The last G1 whose rate every controller took without a change to what they hold.
+    struct LastTakenFeed
+    {
+        bool valid = false;
+        double feed = 0;
+        bool inches = false;
+        QStringList axes;
+        bool matches(const ProgramBlock& b) const
+        {
+            if (!valid || !b.feed || b.inverseTime || *b.feed != feed || b.inches != inches ||
+                b.axes.size() != axes.size())
+                return false;
+            qsizetype i = 0;
+            for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it, ++i)
+                if (it.key() != axes.at(i))
+                    return false;
+            return true;
+        }
+    } m_lastTakenFeed;
     bool m_reporting = true;
 };
 
@@ -168,6 +196,8 @@ private:
     // Machine position (steps) -> work position (unit) of axis a.
     double workOf(size_t a) const;
     void addPoint(int line, bool rapid = false);
+    PreviewPoint pointAt(int line, double seconds, bool rapid, const std::vector<qint64>& steps,
+                         const std::vector<char>& known) const;
     void thinPath();
     void tooManyBlocks(const ProgramBlock& block);
     void finish(ProgramPreview* preview) const;
@@ -176,6 +206,7 @@ private:
     const QList<machine::MachineAxis>& m_axes;
     ProgramReader& m_reader;
     PlannedProgram m_planned;
+    ProgramBlock m_resolved; // a G93 block at the current point (InverseTime), while planned
     std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
     ProgramPlan m_plan;
@@ -201,7 +232,15 @@ private:
     qint64 m_pathStride = 1; // keep every m_pathStride-th point (addPoint)
     qint64 m_sinceKept = 0;
     bool m_mergedRapid = true; // the points since the last kept one were all rapids
-    std::optional<PreviewPoint> m_pendingPoint; // the last point, not kept (yet)
+    struct PendingPoint        // the last point, not kept (yet)
+    {
+        bool valid = false;
+        int line = 0;
+        double seconds = 0;
+        bool rapid = false;
+        std::vector<qint64> steps;
+        std::vector<char> known;
+    } m_pending;
 };
 
 } // namespace stepdeck::program

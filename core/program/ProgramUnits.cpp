@@ -13,9 +13,13 @@ double toAxisUnits(const machine::MachineAxis& axis, double value, bool inches)
 qint64 feedStepsPerSecond(const machine::MachineAxis& axis, double feedPerMinute, bool inches)
 {
     const double unitsPerSecond = toAxisUnits(axis, feedPerMinute, inches) / 60.0;
-    const double steps = std::llround(std::abs(unitsPerSecond * axis.stepsPerUnit));
-    // A rate above qint64 is out of every parameter's range anyway; keep the number finite.
-    return qint64(std::clamp(steps, 1.0, 9.0e15));
+    const double steps = std::abs(unitsPerSecond * axis.stepsPerUnit);
+    // A rate beyond 9e15 (or not finite: a G93 rate of a huge distance) is out of every
+    // parameter's range anyway: kept at that bound, before rounding (llround of a value beyond
+    // qint64 gives no defined number).
+    if (!(steps <= 9.0e15))
+        return qint64(9.0e15);
+    return std::max<qint64>(1, std::llround(steps));
 }
 
 } // namespace stepdeck::program::units

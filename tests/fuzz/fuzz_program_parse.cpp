@@ -4,13 +4,16 @@
 // fed in the input's own chunks give the same result; blocks stand in line order, and every
 // repeat's partner points back to it. The blocks of an accepted program are then walked as the
 // check and the run follow them (issue 29): the current point through ProgramCoordinates,
-// G2/G3 through ArcPath, drilling cycles through DrillCycle, on a mill in millimetres; the same
-// bytes are read as a tool table, which writes back to itself.
+// G2/G3 through ArcPath, drilling cycles through DrillCycle, G93's rates through InverseTime,
+// on a mill in millimetres; the same bytes are read as a tool table, which writes back to
+// itself.
 #include "FuzzSupport.h"
 #include "program/ArcPath.h"
 #include "program/DrillCycle.h"
+#include "program/InverseTime.h"
 #include "program/ProgramCoordinates.h"
 #include "program/ProgramParser.h"
+#include "program/ProgramUnits.h"
 #include "program/ToolTable.h"
 #include <cmath>
 
@@ -65,6 +68,16 @@ void walk(const Program& program)
                 }
             }
         } else {
+            if (b.inverseTime) {
+                // G93: a rate above 0 per moving axis (infinite for a huge distance times F:
+                // out of every controller's range, units::feedStepsPerSecond), never NaN.
+                const ProgramBlock r = InverseTime::resolve(b, d, at, offsets);
+                for (auto it = r.axisRates.cbegin(); it != r.axisRates.cend(); ++it) {
+                    FUZZ_CHECK(it.value() > 0, b.text);
+                    FUZZ_CHECK(units::feedStepsPerSecond(d.axes.first(), it.value(), false) >= 1,
+                               b.text);
+                }
+            }
             coordinates.apply(b, d, at);
             coordinates.advance(b, d, &at);
         }

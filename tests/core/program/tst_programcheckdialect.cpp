@@ -23,6 +23,8 @@ private Q_SLOTS:
     void check_tools_lengthOffsetAndTable();
     void check_spindleAboveMaxRpm_refusedAtS_data();
     void check_spindleAboveMaxRpm_refusedAtS();
+    void check_inverseTime_eachAxisItsRate_data();
+    void check_inverseTime_eachAxisItsRate();
 };
 
 // G54..G59, G53, G10 L2/L20 and G92 (issue 29): where absolute words go, the soft limits there,
@@ -203,6 +205,51 @@ void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS()
     facts.knownPositions = positions("X=0");
     const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
     QCOMPARE(texts(result.errors), errors);
+}
+
+// G93 (docs/programs.md "Inverse time"): a G1 takes 1/F minutes, each axis at its distance times
+// F; the rates checked like G1's, from where each block starts (the mill: 100 steps/mm, the
+// E-LAB's feed speed 0..65535 steps/s).
+void TestProgramCheckDialect::check_inverseTime_eachAxisItsRate_data()
+{
+    QTest::addColumn<QString>("known");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("seconds"); // the estimate, when no errors
+    QTest::newRow("one move, two axes: 10 s") << "X=0 Y=0"
+                                              << "G93 G1 X10 Y5 F6" << QStringList{} << 10.0;
+    QTest::newRow("from where the block before ended")
+        << "X=0 Y=0"
+        << "G93\nG1 X10 F60\nG1 X40 F30" << QStringList{} << 3.0; // 1 s, then 30 mm in 2 s
+    QTest::newRow("relative from an unknown position")
+        << ""
+        << "G91 G93 G1 X-5 F60" << QStringList{} << 1.0;
+    QTest::newRow("the same F, other distances")
+        << "X=0"
+        << "G93 G1 X1 F60\nG1 X3 F60" << QStringList{} << 2.0;
+    QTest::newRow("too fast for the board")
+        << "X=0"
+        << "G93 G1 X100 F1000"
+        << QStringList{"1:13: G93 F1000 (the move in 0.06 s) moves X at 166667 steps/s; "
+                       "controller \"table\" takes 0..65535 steps/s (Feed speed)"}
+        << 0.0;
+    QTest::newRow("back to G94 and its own F")
+        << "X=0"
+        << "G93 G1 X1 F60\nG94 G1 X2 F60" << QStringList{} << 2.0;
+}
+
+void TestProgramCheckDialect::check_inverseTime_eachAxisItsRate()
+{
+    QFETCH(QString, known);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, seconds);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions(known);
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors).join(QLatin1Char('|')), errors.join(QLatin1Char('|')));
+    if (errors.isEmpty())
+        QCOMPARE(result.preview.estimatedSeconds, seconds);
 }
 
 QTEST_GUILESS_MAIN(TestProgramCheckDialect)

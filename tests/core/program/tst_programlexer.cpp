@@ -2,6 +2,7 @@
 // and the first thing on a line that is not G-code, with its column.
 #include "program/ProgramLexer.h"
 #include <QtTest>
+#include <cstring>
 
 using namespace stepdeck::program;
 
@@ -11,6 +12,8 @@ class TestProgramLexer : public QObject
 private Q_SLOTS:
     void lex_validLine_wordsValuesColumns_data();
     void lex_validLine_wordsValuesColumns();
+    void lex_number_exactlyAsQtReadsIt_data();
+    void lex_number_exactlyAsQtReadsIt();
     void lex_invalidLine_errorAtColumn_data();
     void lex_invalidLine_errorAtColumn();
     void lex_comments_firstIsKept();
@@ -63,6 +66,27 @@ void TestProgramLexer::lex_validLine_wordsValuesColumns()
     const LexedLine l = ProgramLexer::lex(line, 7);
     QVERIFY2(!l.error, qPrintable(l.error ? l.error->text() : QString()));
     QCOMPARE(describe(l), words);
+}
+
+// The lexer reads numbers without QString (a long program reads millions): the value must be
+// the one QString::toDouble gives, to the last bit.
+void TestProgramLexer::lex_number_exactlyAsQtReadsIt_data()
+{
+    QTest::addColumn<QString>("number");
+    for (const char* n : {"0.1", "-.5", "+3.", "123456.789012", "0.000001", "-0", "2.675",
+                          "1234567890123456789", "0.30000000000000004", "9007199254740993"})
+        QTest::newRow(n) << QString::fromLatin1(n);
+    QTest::newRow("95 digits") << QStringLiteral("1.") + QString(93, QLatin1Char('3'));
+}
+
+void TestProgramLexer::lex_number_exactlyAsQtReadsIt()
+{
+    QFETCH(QString, number);
+    const LexedLine l = ProgramLexer::lex(QStringLiteral("X") + number, 1);
+    QVERIFY(!l.error);
+    QCOMPARE(l.words.size(), 1);
+    const double expected = number.toDouble();
+    QCOMPARE(std::memcmp(&l.words.first().value, &expected, sizeof expected), 0);
 }
 
 void TestProgramLexer::lex_invalidLine_errorAtColumn_data()

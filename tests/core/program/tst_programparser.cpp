@@ -330,8 +330,6 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                 << "1:5: H1.5: H takes a tool number, whole, 0..99999";
     QTest::newRow("G43.1") << "G43.1 Z1"
                            << "1:1: G43.1 is not supported";
-    QTest::newRow("G93") << "G93"
-                         << "1:1: G93 (inverse time feed) is not supported yet: use G94";
     QTest::newRow("G95") << "G95"
                          << "1:1: G95 (feed per revolution) is not supported";
     QTest::newRow("G64 P negative") << "G64 P-0.1"

@@ -19,6 +19,8 @@ private Q_SLOTS:
     void parse_camHeader_percentBomAndModes_blocksAsWithout();
     void parse_spindleSpeed_modalOnAnyLine();
     void parse_switchBesideMotion_keptToRunFirst();
+    void parse_inverseTime_fOnEveryG1_data();
+    void parse_inverseTime_fOnEveryG1();
 };
 
 void TestProgramParserDialect::parse_modalGroups_stateOnEveryBlock_data()
@@ -123,6 +125,53 @@ void TestProgramParserDialect::parse_switchBesideMotion_keptToRunFirst()
         QVERIFY2(errors.first().message.startsWith(QStringLiteral("one action per line")),
                  qPrintable(errors.first().text()));
     }
+}
+
+// G93 (LinuxCNC): F is the move's inverse time and stands on every G1 that moves; arcs and
+// cycles in G93 are not run yet; G94 after G93 needs a new F.
+void TestProgramParserDialect::parse_inverseTime_fOnEveryG1_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("error"); // empty: parses; then the last block is an inverse-time G1
+    QTest::newRow("G93 G1 with F") << "G93 G1 X10 F2"
+                                   << "";
+    QTest::newRow("F on each line") << "G93\nG1 X10 F2\nX20 F4"
+                                    << "";
+    QTest::newRow("G1 without F")
+        << "G93\nG1 X10 F2\nG1 X20"
+        << "3:1: G1 in inverse time (G93) needs F on its line: the move takes 1/F minutes";
+    QTest::newRow("axis words without F")
+        << "G93 G1 X10 F2\nX20"
+        << "2:1: G1 in inverse time (G93) needs F on its line: the move "
+           "takes 1/F minutes";
+    QTest::newRow("arc") << "G93\nG2 X2 Y0 I1 J0 F5"
+                         << "2:1: G2 in inverse time (G93) is not supported yet: use G94";
+    QTest::newRow("drilling cycle")
+        << "G93\nG81 X1 Y1 Z-1 R1 F5"
+        << "2:1: a drilling cycle in inverse time (G93) is not supported yet: use G94";
+    QTest::newRow("G94 after G93 needs F") << "G93 G1 X1 F2\nG94\nG1 X2"
+                                           << "3:1: G1 needs a feed rate: F on this line or an "
+                                              "earlier one";
+    QTest::newRow("G93 and G94 on one line")
+        << "G93 G94"
+        << "1:5: G93 and G94 on one line: they are of one modal group";
+}
+
+void TestProgramParserDialect::parse_inverseTime_fOnEveryG1()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, error);
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
+    if (!error.isEmpty()) {
+        QVERIFY(!p);
+        QCOMPARE(texts(errors).value(0), error);
+        return;
+    }
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    const ProgramBlock last = p->allBlocks().last();
+    QCOMPARE(last.kind, BlockKind::Feed);
+    QVERIFY(last.inverseTime);
 }
 
 QTEST_APPLESS_MAIN(TestProgramParserDialect)

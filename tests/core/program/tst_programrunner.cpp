@@ -83,6 +83,7 @@ private Q_SLOTS:
     void fault_boardNaksTheMove_failedAsNakAtThatLine();
     void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
     void g1_elab_feedMoveAtItsFeedSpeed();
+    void g93_elab_eachAxisItsRateFromItsDistance();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
     void run_workOffsets_absoluteTargetsShiftedRelativeNot();
@@ -513,6 +514,20 @@ void TestProgramRunner::g1_elab_feedMoveAtItsFeedSpeed()
     QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c")) >= 0);
     QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("193030303030303238")) >= 0);
     QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
+    QVERIFY(still(*m_elab));
+}
+
+// G93 on the board: the move takes 1/F minutes, so each axis gets its distance times F: X 0.1 mm
+// and Y 0.05 mm in 1 s are 40 and 20 steps/s (400 steps/mm), written in one <FS>XXXX,YYYY;ZZZZ.
+// before the move.
+void TestProgramRunner::g93_elab_eachAxisItsRateFromItsDistance()
+{
+    QVERIFY(run("G91 G93 G1 X0.1 Y0.05 F60\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c303031343b")) >= 0);
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::Y); }), qint64(20));
     QVERIFY(still(*m_elab));
 }
 

@@ -1,0 +1,37 @@
+#include "InverseTime.h"
+#include "ProgramUnits.h"
+#include <cmath>
+
+namespace stepdeck::program::InverseTime {
+
+ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
+                     const AxisPositions& start, const QMap<QString, double>& workOffsets)
+{
+    ProgramBlock out = block;
+    out.axisRates.clear();
+    if (!block.inverseTime || !block.feed)
+        return out;
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
+        qsizetype index = 0;
+        while (index < d.axes.size() && d.axes.at(index).name != it.key())
+            ++index;
+        if (index == d.axes.size())
+            continue;
+        const machine::MachineAxis& axis = d.axes.at(index);
+        const double value = units::toAxisUnits(axis, it.value(), block.inches);
+        double distance = 0;
+        if (block.relative) {
+            distance = std::abs(value);
+        } else {
+            const std::optional<double> from = start.at(size_t(index));
+            if (!from)
+                continue;
+            distance = std::abs(value + workOffsets.value(axis.name, 0.0) - *from);
+        }
+        if (distance > 0)
+            out.axisRates.insert(axis.name, distance * *block.feed);
+    }
+    return out;
+}
+
+} // namespace stepdeck::program::InverseTime

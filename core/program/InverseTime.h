@@ -1,0 +1,24 @@
+#pragma once
+#include "ArcPath.h"
+#include "ProgramBlock.h"
+#include "machine/MachineDescription.h"
+
+namespace stepdeck::program {
+
+// G93, LinuxCNC's inverse time feed (docs/programs.md "Inverse time"): a G1 takes 1/F minutes.
+// The axes of a block move each at its own rate (no interpolation, "How F maps onto each
+// model"), so in G93 each axis gets the rate that makes it arrive in that time: its distance
+// times F, in its unit per minute. All the block's axes then arrive together, which G94 does not
+// give. The distance depends on where the block starts: resolved at the current point, by the
+// check's walk and by the run from the same positions. Pure.
+namespace InverseTime {
+
+// `block` with axisRates set: each axis it moves (distance above 0) and that axis' rate in its
+// unit per minute. start: the current point (machine coordinates, the axes' units, by axis
+// index); workOffsets: the block's offsets per axis name (ProgramCoordinates::offsets). An
+// absolute word on an axis whose start is unknown gets no rate (the check refuses the move).
+ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
+                     const AxisPositions& start, const QMap<QString, double>& workOffsets);
+
+} // namespace InverseTime
+} // namespace stepdeck::program
