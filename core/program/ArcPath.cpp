@@ -89,6 +89,12 @@ QStringList ArcPath::movingAxes(const ProgramBlock& block)
     return names;
 }
 
+double ArcPath::length() const
+{
+    const double planar = std::abs(m_sweep) * (m_startRadius + m_endRadius) / 2;
+    return m_helix >= 0 ? std::hypot(planar, m_helixEnd - m_helixStart) : planar;
+}
+
 ProgramBlock ArcPath::rateBlock(const ProgramBlock& block)
 {
     ProgramBlock rates = block;

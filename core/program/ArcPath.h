@@ -56,6 +56,9 @@ public:
     // ends): where the soft limits are checked.
     QList<std::pair<int, std::pair<double, double>>> bounds() const;
     double radius() const { return m_startRadius; }
+    // The length of the true curve in the axes' unit: the sweep at the mean radius (a spiral's
+    // radius changes evenly), with the helix axis' travel (G93, InverseTime).
+    double length() const;
     double sweep() const { return m_sweep; } // radians; + counter-clockwise
 
 private:

@@ -34,4 +34,15 @@ ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescriptio
     return out;
 }
 
+ProgramBlock resolveArc(const ProgramBlock& block, const ArcPath& path)
+{
+    ProgramBlock out = block;
+    out.axisRates.clear();
+    if (!block.inverseTime || !block.feed || !(path.length() > 0))
+        return out;
+    for (const QString& name : ArcPath::movingAxes(block))
+        out.axisRates.insert(name, path.length() * *block.feed);
+    return out;
+}
+
 } // namespace stepdeck::program::InverseTime

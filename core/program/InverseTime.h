@@ -19,6 +19,10 @@ namespace InverseTime {
 // absolute word on an axis whose start is unknown gets no rate (the check refuses the move).
 ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
                      const AxisPositions& start, const QMap<QString, double>& workOffsets);
+// A G2/G3 in G93 along `path` (planned from the current point): its chords run as a G1's at one
+// rate over its moving axes (docs/programs.md "Arcs"), so every moving axis gets the path speed
+// that covers the curve in 1/F minutes: its length times F, in the axes' unit per minute.
+ProgramBlock resolveArc(const ProgramBlock& block, const ArcPath& path);
 
 } // namespace InverseTime
 } // namespace stepdeck::program

@@ -376,8 +376,9 @@ std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState
     return {};
 }
 
-// G93 (LinuxCNC's inverse time, docs/programs.md "Inverse time"): a G1 takes 1/F minutes, so F
-// stands on every G1 line that moves. Arcs and drilling cycles in G93 are refused (not yet).
+// G93 (LinuxCNC's inverse time, docs/programs.md "Inverse time"): a G1, G2 or G3 takes 1/F
+// minutes, so F stands on every such line that moves. Drilling cycles in G93 are refused (not
+// yet).
 std::pair<int, QString> inverseTime(const Words& sorted, const ModalState& modal, ProgramBlock* b)
 {
     if (!modal.inverseTime)
@@ -385,16 +386,15 @@ std::pair<int, QString> inverseTime(const Words& sorted, const ModalState& modal
     const int column = sorted.actionWord       ? sorted.actionWord->column
                        : sorted.axes.isEmpty() ? 1
                                                : sorted.axes.first()->column;
-    if (isArc(b->kind) || b->kind == BlockKind::DrillCycle)
-        return {column,
-                ProgramLine::tr("%1 in inverse time (G93) is not supported yet: use G94")
-                    .arg(b->kind == BlockKind::DrillCycle ? QStringLiteral("a drilling cycle")
-                                                          : blockWord(b->kind))};
-    if (b->kind != BlockKind::Feed || sorted.axes.isEmpty())
+    if (b->kind == BlockKind::DrillCycle)
+        return {column, ProgramLine::tr("a drilling cycle in inverse time (G93) is not supported "
+                                        "yet: use G94")};
+    if (!isArc(b->kind) && (b->kind != BlockKind::Feed || sorted.axes.isEmpty()))
         return {};
     if (!sorted.parameters.contains('F'))
-        return {column, ProgramLine::tr("G1 in inverse time (G93) needs F on its line: the move "
-                                        "takes 1/F minutes")};
+        return {column, ProgramLine::tr("%1 in inverse time (G93) needs F on its line: the move "
+                                        "takes 1/F minutes")
+                            .arg(blockWord(b->kind))};
     b->inverseTime = true;
     return {};
 }

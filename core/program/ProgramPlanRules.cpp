@@ -72,6 +72,9 @@ void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
             double refused = *block.feed;
             for (int i = 0; i < 40 && refused - taken > 1e-3; ++i) {
                 slower.feed = (taken + refused) / 2;
+                // G93: the axes' rates scale with F (InverseTime).
+                for (auto r = slower.axisRates.begin(); r != slower.axisRates.end(); ++r)
+                    r.value() = block.axisRates.value(r.key()) * *slower.feed / *block.feed;
                 ParameterSet unused;
                 (feedWriteRefusal(c.id, slower, &unused).isEmpty() ? taken : refused) =
                     *slower.feed;

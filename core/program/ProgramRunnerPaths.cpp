@@ -1,6 +1,7 @@
 // ProgramRunner: blocks of many moves. An arc runs as chords (ArcPath), a drilling cycle as its
 // moves and dwell (DrillCycle), each planned from the current point as the check planned it;
 // each move starts when the one before arrived, and a pause holds between two of them.
+#include "InverseTime.h"
 #include "ProgramRates.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
@@ -20,7 +21,9 @@ void ProgramRunner::startArc(const ProgramBlock& block)
     }
     m_arc = std::get<ArcPath>(std::move(planning));
     m_chord = 0;
-    const QMap<RequestId, QString> rates = m_rates->before(ArcPath::rateBlock(block));
+    // G93: the path speed that covers the curve in 1/F minutes (InverseTime), as the check.
+    const QMap<RequestId, QString> rates = m_rates->before(
+        ArcPath::rateBlock(block.inverseTime ? InverseTime::resolveArc(block, *m_arc) : block));
     awaitRequests(rates, [this] { sendChord(); });
 }
 

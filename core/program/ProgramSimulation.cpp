@@ -114,8 +114,15 @@ bool ProgramSimulation::visit(int i, const ProgramBlock& block)
     }
     if (block.inverseTime) {
         // Its rates follow from where it starts (InverseTime), as the run resolves them.
-        m_resolved = InverseTime::resolve(block, m_facts.description, m_programmed,
-                                          m_coordinates.offsets(block, m_facts.description));
+        const machine::MachineDescription& d = m_facts.description;
+        const QMap<QString, double> offsets = m_coordinates.offsets(block, d);
+        if (isArc(block.kind)) {
+            const auto path = ArcPath::plan(block, d, m_programmed, offsets);
+            const ArcPath* arc = std::get_if<ArcPath>(&path);
+            m_resolved = arc ? InverseTime::resolveArc(block, *arc) : block; // else: arc() says
+        } else {
+            m_resolved = InverseTime::resolve(block, d, m_programmed, offsets);
+        }
         m_plan.plan(m_resolved, first);
     } else {
         m_plan.plan(block, first);

@@ -127,8 +127,8 @@ void TestProgramParserDialect::parse_switchBesideMotion_keptToRunFirst()
     }
 }
 
-// G93 (LinuxCNC): F is the move's inverse time and stands on every G1 that moves; arcs and
-// cycles in G93 are not run yet; G94 after G93 needs a new F.
+// G93 (LinuxCNC): F is the move's inverse time and stands on every G1, G2, G3 that moves;
+// drilling cycles in G93 are not run yet; G94 after G93 needs a new F.
 void TestProgramParserDialect::parse_inverseTime_fOnEveryG1_data()
 {
     QTest::addColumn<QString>("program");
@@ -145,7 +145,10 @@ void TestProgramParserDialect::parse_inverseTime_fOnEveryG1_data()
         << "2:1: G1 in inverse time (G93) needs F on its line: the move "
            "takes 1/F minutes";
     QTest::newRow("arc") << "G93\nG2 X2 Y0 I1 J0 F5"
-                         << "2:1: G2 in inverse time (G93) is not supported yet: use G94";
+                         << "";
+    QTest::newRow("arc without F")
+        << "G93 G1 X1 F5\nG3 X2 Y0 I1 J0"
+        << "2:1: G3 in inverse time (G93) needs F on its line: the move takes 1/F minutes";
     QTest::newRow("drilling cycle")
         << "G93\nG81 X1 Y1 Z-1 R1 F5"
         << "2:1: a drilling cycle in inverse time (G93) is not supported yet: use G94";
@@ -170,7 +173,7 @@ void TestProgramParserDialect::parse_inverseTime_fOnEveryG1()
     }
     QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
     const ProgramBlock last = p->allBlocks().last();
-    QCOMPARE(last.kind, BlockKind::Feed);
+    QVERIFY(last.kind == BlockKind::Feed || isArc(last.kind));
     QVERIFY(last.inverseTime);
 }
 

@@ -84,6 +84,7 @@ private Q_SLOTS:
     void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
     void g1_elab_feedMoveAtItsFeedSpeed();
     void g93_elab_eachAxisItsRateFromItsDistance();
+    void g93_elab_arcAtThePathSpeedOfItsLength();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
     void run_workOffsets_absoluteTargetsShiftedRelativeNot();
@@ -528,6 +529,28 @@ void TestProgramRunner::g93_elab_eachAxisItsRateFromItsDistance()
     QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c303031343b")) >= 0);
     QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
     QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::Y); }), qint64(20));
+    QVERIFY(still(*m_elab));
+}
+
+// A G93 arc: its chords at the path speed that covers it in 1/F minutes. A half circle of radius
+// 0.1 mm is 0.314 mm long: in 2 s (F30), 0.157 mm/s = 63 steps/s (0x3F) on X and Y.
+void TestProgramRunner::g93_elab_arcAtThePathSpeedOfItsLength()
+{
+    QVERIFY(run("G28 X0 Y0\n")); // an arc needs known positions
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    const auto board = [&](Axis a) {
+        return m_elab->probe([&] { return m_elab->sim()->position(a); });
+    };
+    const qint64 x0 = board(Axis::X);
+    const qint64 y0 = board(Axis::Y);
+    QVERIFY(run("G91 G93 G2 X0.2 Y0 I0.1 J0 F30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x1c"
+                                           "003F,003F;")) >= 0);
+    QCOMPARE(board(Axis::X) - x0, qint64(80));
+    QCOMPARE(board(Axis::Y) - y0, qint64(0));
     QVERIFY(still(*m_elab));
 }
 
