@@ -3714,10 +3714,6 @@
             <translation>%1 erreicht %2 %3, außerhalb der Software-Endlagen %4..%5 %3</translation>
         </message>
         <message>
-            <source>the run executes more than %1 blocks (repeats counted out)</source>
-            <translation>der Lauf führt mehr als %1 Sätze aus (Wiederholungen ausgezählt)</translation>
-        </message>
-        <message>
             <source>F%1: controller "%2" would refuse its rate: %3</source>
             <translation>F%1: Steuerung „%2“ würde ihre Geschwindigkeit ablehnen: %3</translation>
         </message>
@@ -3764,6 +3760,14 @@
         <message>
             <source>the run's arcs and cycles need more than %1 moves</source>
             <translation>die Bögen und Zyklen des Laufs brauchen mehr als %1 Bewegungen</translation>
+        </message>
+        <message>
+            <source>G93 F%1 (the move in %2 s) moves %3 at %4 steps/s; controller "%5" takes %6..%7 steps/s (%8)</source>
+            <translation>G93 F%1 (die Bewegung in %2 s) fährt %3 mit %4 Schritten/s; Controller "%5" nimmt %6..%7 Schritte/s (%8)</translation>
+        </message>
+        <message>
+            <source>the repeats run more than %1 blocks beyond the program's own</source>
+            <translation>die Wiederholungen führen mehr als %1 Sätze über die des Programms hinaus aus</translation>
         </message>
     </context>
     <context>
@@ -3901,10 +3905,6 @@
         <message>
             <source>G%1 (cutter radius compensation) is not supported: let the CAM post compensate the path (G40 is accepted)</source>
             <translation>G%1 (Werkzeugradiuskorrektur) wird nicht unterstützt: den Pfad vom CAM-Postprozessor korrigieren lassen (G40 wird angenommen)</translation>
-        </message>
-        <message>
-            <source>G93 (inverse time feed) is not supported yet: use G94</source>
-            <translation>G93 (Vorschub in inverser Zeit) wird noch nicht unterstützt: G94 verwenden</translation>
         </message>
         <message>
             <source>G95 (feed per revolution) is not supported: no controller reports its spindle's revolutions; use G94</source>
@@ -4070,6 +4070,14 @@
             <source>%1: Z%2 lies above R%3: the hole's bottom must lie below the retract plane</source>
             <translation>%1: Z%2 liegt über R%3: Der Grund der Bohrung muss unter der Rückzugsebene liegen</translation>
         </message>
+        <message>
+            <source>a drilling cycle in inverse time (G93) is not supported yet: use G94</source>
+            <translation>ein Bohrzyklus in inverser Zeit (G93) wird noch nicht unterstützt: G94 verwenden</translation>
+        </message>
+        <message>
+            <source>%1 in inverse time (G93) needs F on its line: the move takes 1/F minutes</source>
+            <translation>%1 in inverser Zeit (G93) braucht F in seiner Zeile: die Bewegung dauert 1/F Minuten</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>
@@ -4119,6 +4127,29 @@
         <message>
             <source>controller "%1": its fast speed is no longer known, so G0 would run at the last F; the program stops here</source>
             <translation>Steuerung "%1": Ihre Eilganggeschwindigkeit ist nicht mehr bekannt, G0 liefe also mit dem letzten F; das Programm hält hier an</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramReader</name>
+        <message>
+            <source>the program was not read</source>
+            <translation>das Programm wurde nicht gelesen</translation>
+        </message>
+        <message>
+            <source>the program's file changed since it was checked (%1 bytes, were %2): check it again</source>
+            <translation>die Datei des Programms hat sich seit der Prüfung geändert (%1 Bytes, waren %2): erneut prüfen</translation>
+        </message>
+        <message>
+            <source>the program's file changed since it was checked: check it again</source>
+            <translation>die Datei des Programms hat sich seit der Prüfung geändert: erneut prüfen</translation>
+        </message>
+        <message>
+            <source>internal: the pass reads back lines it has not finished</source>
+            <translation>intern: der Durchgang liest Zeilen zurück, die er noch nicht fertig gelesen hat</translation>
+        </message>
+        <message>
+            <source>the program's file changed since it was checked (lines %1..%2 differ): check it again</source>
+            <translation>die Datei des Programms hat sich seit der Prüfung geändert (Zeilen %1..%2 weichen ab): erneut prüfen</translation>
         </message>
     </context>
     <context>
@@ -4205,6 +4236,25 @@
         <message>
             <source>aborted after the move under way ended</source>
             <translation>abgebrochen, nachdem die laufende Bewegung geendet hat</translation>
+        </message>
+        <message>
+            <source>the check was cancelled</source>
+            <translation>die Prüfung wurde abgebrochen</translation>
+        </message>
+        <message>
+            <source>the program's file changed: check it again</source>
+            <translation>die Datei des Programms hat sich geändert: erneut prüfen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramSourceReader</name>
+        <message>
+            <source>cannot read %1</source>
+            <translation>%1 kann nicht gelesen werden</translation>
+        </message>
+        <message>
+            <source>cannot read %1: %2</source>
+            <translation>%1 kann nicht gelesen werden: %2</translation>
         </message>
     </context>
     <context>
@@ -6545,10 +6595,6 @@ W1500</translation>
             <translation>Programm %1: kann nicht gelesen werden: %2</translation>
         </message>
         <message>
-            <source>Program %1: larger than %2 MB, not opened.</source>
-            <translation>Programm %1: größer als %2 MB, nicht geöffnet.</translation>
-        </message>
-        <message>
             <source>Program %1: cannot be written: %2</source>
             <translation>Programm %1: kann nicht geschrieben werden: %2</translation>
         </message>
@@ -6563,6 +6609,10 @@ W1500</translation>
         <message>
             <source>Untitled</source>
             <translation>Unbenannt</translation>
+        </message>
+        <message>
+            <source>%1 is %2 MB: too large to edit here. Its first %3 lines are shown; the check, the preview and the run read the whole file.</source>
+            <translation>%1 ist %2 MB groß: zu groß zum Bearbeiten. Die ersten %3 Zeilen werden gezeigt; Prüfung, Vorschau und Lauf lesen die ganze Datei.</translation>
         </message>
     </context>
     <context>
@@ -6671,6 +6721,34 @@ W1500</translation>
         <message>
             <source>Programs run on a machine: choose a model on the connection bar or open a machine file.</source>
             <translation>Programme laufen auf einer Maschine: ein Modell in der Verbindungsleiste wählen oder eine Maschinendatei öffnen.</translation>
+        </message>
+        <message>
+            <source>Checking: %p %</source>
+            <translation>Prüfung: %p %</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+        <message>
+            <source>Check</source>
+            <translation>Prüfen</translation>
+        </message>
+        <message>
+            <source>Check the program against the machine now</source>
+            <translation>Das Programm jetzt gegen die Maschine prüfen</translation>
+        </message>
+        <message>
+            <source>Not checked: the check was cancelled. Run stays off until it is checked.</source>
+            <translation>Nicht geprüft: die Prüfung wurde abgebrochen. Starten bleibt aus, bis es geprüft ist.</translation>
+        </message>
+        <message>
+            <source>No preview: the check was cancelled.</source>
+            <translation>Keine Vorschau: die Prüfung wurde abgebrochen.</translation>
+        </message>
+        <message>
+            <source>the program is not checked yet</source>
+            <translation>das Programm ist noch nicht geprüft</translation>
         </message>
     </context>
     <context>
