@@ -64,18 +64,7 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
         }
         const BlockKind kind = block->kind;
         if (kind == BlockKind::RepeatStart) {
-            const qint64 count = block->count;
-            const int line = block->line;
-            const int column = block->columnOf({});
-            visit(i, *block);
-            const int end = m_reader.partner(i);
-            if (count <= 0 || end < 0) {
-                skipBody(i + 1, end);
-                i = end < 0 ? i + 1 : end + 1;
-            } else {
-                m_loops.push_back(Loop{i, line, column, count - 1, m_blocksRun});
-                ++i;
-            }
+            i = repeatStart(i, *block);
             continue;
         }
         if (kind == BlockKind::RepeatEnd) {
@@ -99,6 +88,23 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
     }
     finish(preview);
     return !cancelled;
+}
+
+// At an O repeat: its first pass begins (the index of the block after it), or a repeat of no
+// passes is skipped (the index after its endrepeat).
+int ProgramSimulation::repeatStart(int i, const ProgramBlock& block)
+{
+    const qint64 count = block.count;
+    const int line = block.line;
+    const int column = block.columnOf({});
+    visit(i, block);
+    const int end = m_reader.partner(i); // reads on: `block` may be gone
+    if (count <= 0 || end < 0) {
+        skipBody(i + 1, end);
+        return end < 0 ? i + 1 : end + 1;
+    }
+    m_loops.push_back(Loop{i, line, column, count - 1, m_blocksRun});
+    return i + 1;
 }
 
 // Plans the block: the first time with its errors (true), again in a repeat's next pass
@@ -304,61 +310,9 @@ double ProgramSimulation::workOf(size_t a) const
     return m_axes.at(qsizetype(a)).toUnits(m_steps[a]) - m_offset[a];
 }
 
-// The path stays within kMaxPathPoints however long the run: when it is full, every other
-// point goes and from then on only every m_pathStride-th new point is kept, so the preview
-// shows the whole run at a coarser step, its last point the run's end (the extents are exact
-// anyway). A kept point is a rapid only when every point it stands for was one.
 void ProgramSimulation::addPoint(int line, bool rapid)
 {
-    const bool merged = rapid && m_mergedRapid;
-    if (++m_sinceKept < m_pathStride) {
-        // Not kept (yet): only what it takes to draw it should it be the run's end; the point
-        // itself (a map of positions) is made at finish().
-        m_mergedRapid = merged;
-        m_pending.valid = true;
-        m_pending.line = line;
-        m_pending.seconds = m_seconds;
-        m_pending.rapid = merged;
-        m_pending.steps = m_steps;
-        m_pending.known = m_known;
-        return;
-    }
-    m_sinceKept = 0;
-    m_mergedRapid = true;
-    m_pending.valid = false;
-    m_path << pointAt(line, m_seconds, merged, m_steps, m_known);
-    if (m_path.size() >= ProgramPreview::kMaxPathPoints)
-        thinPath();
-}
-
-PreviewPoint ProgramSimulation::pointAt(int line, double seconds, bool rapid,
-                                        const std::vector<qint64>& steps,
-                                        const std::vector<char>& known) const
-{
-    PreviewPoint point;
-    point.line = line;
-    point.seconds = seconds;
-    point.rapid = rapid;
-    for (qsizetype i = 0; i < m_axes.size(); ++i)
-        if (known[size_t(i)])
-            point.position.insert(m_axes.at(i).name,
-                                  m_axes.at(i).toUnits(steps[size_t(i)]) - m_offset[size_t(i)]);
-    return point;
-}
-
-void ProgramSimulation::thinPath()
-{
-    QList<PreviewPoint> kept;
-    kept.reserve(m_path.size() / 2 + 1);
-    for (qsizetype i = 0; i < m_path.size(); i += 2) {
-        PreviewPoint p = m_path.at(i);
-        if (i > 0)
-            p.rapid = p.rapid && m_path.at(i - 1).rapid;
-        kept << p;
-    }
-    m_path = std::move(kept);
-    m_pathStride *= 2;
-    m_pathDecimated = true;
+    m_path.add(line, m_seconds, rapid, m_steps, m_known);
 }
 
 void ProgramSimulation::tooManyBlocks(const ProgramBlock& block)
@@ -376,11 +330,7 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
 {
     preview->blocksRun = m_blocksRun;
     preview->estimatedSeconds = m_seconds;
-    preview->path = m_path;
-    if (m_pending.valid) // the run's end, between two kept points
-        preview->path << pointAt(m_pending.line, m_pending.seconds, m_pending.rapid,
-                                 m_pending.steps, m_pending.known);
-    preview->pathDecimated = m_pathDecimated;
+    m_path.finish(preview);
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_offset[size_t(i)] != 0.0)
             preview->workOffsets.insert(m_axes.at(i).name, m_offset[size_t(i)]);

@@ -4,6 +4,7 @@
 // ProgramSimulationArc.cpp).
 #include "ArcPath.h"
 #include "DrillCycle.h"
+#include "PreviewPath.h"
 #include "ProgramCheck.h"
 #include "ProgramReader.h"
 #include <algorithm>
@@ -177,6 +178,7 @@ private:
     // The block at i planned (reporting on its first visit); false at the end.
     bool visit(int i, const ProgramBlock& block);
     void skipBody(int from, int end); // a repeat of no passes: its blocks planned, not walked
+    int repeatStart(int i, const ProgramBlock& block);
     bool repeatEnd(int* i, int partner);
     void execute(PlannedBlock& planned);
     void move(PlannedBlock& planned);
@@ -196,9 +198,6 @@ private:
     // Machine position (steps) -> work position (unit) of axis a.
     double workOf(size_t a) const;
     void addPoint(int line, bool rapid = false);
-    PreviewPoint pointAt(int line, double seconds, bool rapid, const std::vector<qint64>& steps,
-                         const std::vector<char>& known) const;
-    void thinPath();
     void tooManyBlocks(const ProgramBlock& block);
     void finish(ProgramPreview* preview) const;
 
@@ -227,20 +226,7 @@ private:
     qint64 m_repeatedBlocks = 0; // run again by a repeat's next passes
     qint64 m_chordsRun = 0;      // arcs' chords, counted out like blocks
     double m_seconds = 0;
-    QList<PreviewPoint> m_path;
-    bool m_pathDecimated = false;
-    qint64 m_pathStride = 1; // keep every m_pathStride-th point (addPoint)
-    qint64 m_sinceKept = 0;
-    bool m_mergedRapid = true; // the points since the last kept one were all rapids
-    struct PendingPoint        // the last point, not kept (yet)
-    {
-        bool valid = false;
-        int line = 0;
-        double seconds = 0;
-        bool rapid = false;
-        std::vector<qint64> steps;
-        std::vector<char> known;
-    } m_pending;
+    PreviewPath m_path{m_axes, m_offset}; // after m_offset: it reads the offsets
 };
 
 } // namespace stepdeck::program
