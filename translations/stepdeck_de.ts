@@ -6486,6 +6486,25 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ProgramCheckStatus</name>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+        <message>
+            <source>Check</source>
+            <translation>Prüfen</translation>
+        </message>
+        <message>
+            <source>Checking: %p %</source>
+            <translation>Prüfung: %p %</translation>
+        </message>
+        <message>
+            <source>Check the program against the machine now</source>
+            <translation>Das Programm jetzt gegen die Maschine prüfen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ProgramControls</name>
         <message>
             <source>Run</source>
@@ -6721,22 +6740,6 @@ W1500</translation>
         <message>
             <source>Programs run on a machine: choose a model on the connection bar or open a machine file.</source>
             <translation>Programme laufen auf einer Maschine: ein Modell in der Verbindungsleiste wählen oder eine Maschinendatei öffnen.</translation>
-        </message>
-        <message>
-            <source>Checking: %p %</source>
-            <translation>Prüfung: %p %</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <source>Check</source>
-            <translation>Prüfen</translation>
-        </message>
-        <message>
-            <source>Check the program against the machine now</source>
-            <translation>Das Programm jetzt gegen die Maschine prüfen</translation>
         </message>
         <message>
             <source>Not checked: the check was cancelled. Run stays off until it is checked.</source>

@@ -2,6 +2,7 @@
 // The run itself is in ProgramPageRun.cpp.
 #include "ProgramPage.h"
 #include "ProgramBackgroundCheck.h"
+#include "ProgramCheckStatus.h"
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
@@ -16,10 +17,8 @@
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
 #include <QHBoxLayout>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
-#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -27,7 +26,6 @@ namespace stepdeck::ui {
 
 namespace {
 constexpr int kRecheckDelayMs = 400;
-constexpr int kShowProgressAfterMs = 300;
 } // namespace
 
 ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
@@ -43,20 +41,14 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     m_check->setObjectName(QStringLiteral("programCheck"));
     m_recheck->setSingleShot(true);
     m_recheck->setInterval(kRecheckDelayMs);
-    m_showProgress = new QTimer(this);
-    m_showProgress->setSingleShot(true);
-    m_showProgress->setInterval(kShowProgressAfterMs);
     buildLayout();
 
     connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
     connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
-    connect(m_checker, &ProgramBackgroundCheck::progress, m_checkProgress, &QProgressBar::setValue);
-    connect(m_showProgress, &QTimer::timeout, this, [this] {
-        if (m_checker->isChecking())
-            m_checkStack->setCurrentIndex(1);
-    });
-    connect(m_cancelCheck, &QPushButton::clicked, this, &ProgramPage::cancelCheck);
-    connect(m_checkAgain, &QPushButton::clicked, this, &ProgramPage::checkNow);
+    connect(m_checker, &ProgramBackgroundCheck::progress, m_checkStatus,
+            &ProgramCheckStatus::setProgress);
+    connect(m_checkStatus, &ProgramCheckStatus::cancelRequested, this, &ProgramPage::cancelCheck);
+    connect(m_checkStatus, &ProgramCheckStatus::checkRequested, this, &ProgramPage::checkNow);
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
         if (!isRunning())
             m_recheck->start(); // again from now: typing does not check every key
@@ -112,7 +104,8 @@ void ProgramPage::buildLayout()
     // run's message (M0's prompt) and the machine the page runs on.
     auto* top = new QHBoxLayout;
     top->addWidget(m_files, 1);
-    top->addWidget(buildCheckRow(), 1);
+    m_checkStatus = new ProgramCheckStatus(m_check, ProgramBackgroundCheck::kProgressSteps, this);
+    top->addWidget(m_checkStatus, 1);
     auto* lines = new QHBoxLayout;
     lines->addWidget(m_banner, 2);
     lines->addWidget(m_machineNote, 1);
@@ -133,49 +126,30 @@ void ProgramPage::buildLayout()
     v->addWidget(split, 1);
 }
 
-QWidget* ProgramPage::buildCheckRow()
-{
-    m_checkStack = new QStackedWidget(this);
-    m_checkProgress = new QProgressBar(this);
-    m_checkProgress->setObjectName(QStringLiteral("programCheckProgress"));
-    m_checkProgress->setRange(0, ProgramBackgroundCheck::kProgressSteps);
-    m_checkProgress->setFormat(tr("Checking: %p %"));
-    m_cancelCheck = new QPushButton(tr("Cancel"), this);
-    m_cancelCheck->setObjectName(QStringLiteral("programCancelCheck"));
-    m_checkAgain = new QPushButton(tr("Check"), this);
-    m_checkAgain->setObjectName(QStringLiteral("programCheckNow"));
-    m_checkAgain->setToolTip(tr("Check the program against the machine now"));
-    auto* result = new QWidget(this);
-    auto* h = new QHBoxLayout(result);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(m_check, 1);
-    h->addWidget(m_checkAgain);
-    auto* running = new QWidget(this);
-    auto* r = new QHBoxLayout(running);
-    r->setContentsMargins(0, 0, 0, 0);
-    r->addWidget(m_checkProgress, 1);
-    r->addWidget(m_cancelCheck);
-    m_checkStack->addWidget(result);
-    m_checkStack->addWidget(running);
-    // Both pages keep the row's height (QStackedWidget sizes to the larger).
-    return m_checkStack;
-}
-
 bool ProgramPage::isShowingCheckProgress() const
 {
-    return m_checkStack->currentIndex() == 1;
+    return m_checkStatus->isShowingProgress();
 }
 
 void ProgramPage::setCheckProgressDelay(int ms)
 {
-    m_showProgress->setInterval(ms);
+    m_checkStatus->setDelay(ms);
+}
+
+QProgressBar* ProgramPage::checkProgress() const
+{
+    return m_checkStatus->progressBar();
+}
+
+QPushButton* ProgramPage::cancelCheckButton() const
+{
+    return m_checkStatus->cancelButton();
 }
 
 void ProgramPage::cancelCheck()
 {
     m_checker->cancel();
-    m_showProgress->stop();
-    m_checkStack->setCurrentIndex(0);
+    m_checkStatus->finished();
     m_checkOk = false;
     m_checkedProgram.reset();
     m_check->setText(tr("Not checked: the check was cancelled. Run stays off until it is "
@@ -276,8 +250,7 @@ void ProgramPage::checkNow()
     const machine::Machine* machine = m_context->machine();
     if (!machine) {
         m_checker->cancel();
-        m_showProgress->stop();
-        m_checkStack->setCurrentIndex(0);
+        m_checkStatus->finished();
         m_checkOk = false;
         m_editor->setErrors({});
         m_check->setText(tr("Not checked: no machine open."));
@@ -300,8 +273,7 @@ void ProgramPage::checkNow()
     m_checkedParameters = facts.knownParameters;
     m_checkedIncomplete = facts.setupIncomplete;
     const QString large = m_files->largePath();
-    m_checkProgress->setValue(0);
-    m_showProgress->start();
+    m_checkStatus->started();
     m_checker->start(large.isEmpty()
                          ? program::ProgramSource::bytes(m_editor->toPlainText().toUtf8())
                          : program::ProgramSource::file(large),
@@ -317,8 +289,7 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
 {
     if (isRunning() || !m_context->machine())
         return; // a check of before the run or of a machine closed since
-    m_showProgress->stop();
-    m_checkStack->setCurrentIndex(0);
+    m_checkStatus->finished();
     const bool large = !m_files->largePath().isEmpty();
     m_checkOk = result.ok() && (large ? result.program && result.program->blockCount > 0
                                       : !m_editor->toPlainText().trimmed().isEmpty());

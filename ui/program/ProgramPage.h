@@ -8,7 +8,6 @@
 
 class QProgressBar;
 class QPushButton;
-class QStackedWidget;
 class QTimer;
 
 namespace stepdeck::machine {
@@ -20,6 +19,7 @@ namespace stepdeck::ui {
 class ElidedLabel;
 class MachineContext;
 class ProgramBackgroundCheck;
+class ProgramCheckStatus;
 class ProgramControls;
 class ProgramEditor;
 class ProgramFiles;
@@ -56,11 +56,11 @@ public:
     // the GUI thread (ProgramBackgroundCheck) and reports when done (isChecking() until then).
     // A file too long to edit (ProgramFiles::largePath()) is checked from the file.
     void checkNow();
-    QProgressBar* checkProgress() const { return m_checkProgress; }
+    QProgressBar* checkProgress() const;
     bool isShowingCheckProgress() const;
     // How long a check runs before its progress shows (0.3 s; tests take 0).
     void setCheckProgressDelay(int ms);
-    QPushButton* cancelCheckButton() const { return m_cancelCheck; }
+    QPushButton* cancelCheckButton() const;
     bool isChecking() const;
     // What the confirmation of "Run from line" says about where the run starts.
     QString runFromText(int line) const;
@@ -85,7 +85,6 @@ private:
     bool start(int fromLine, bool stepOnly);
     void showCheck(const program::ProgramCheckResult& result);
     void cancelCheck();
-    QWidget* buildCheckRow();
     void updateControls();
     void updateProgress();
     // The runner's signals.
@@ -102,13 +101,7 @@ private:
     ProgramFiles* m_files;
     ElidedLabel* m_machineNote;
     ElidedLabel* m_check;
-    // The check's line, or while a long check runs its progress and Cancel (one row, its
-    // height fixed: nothing moves when it switches).
-    QStackedWidget* m_checkStack = nullptr;
-    QProgressBar* m_checkProgress = nullptr;
-    QPushButton* m_cancelCheck = nullptr;
-    QPushButton* m_checkAgain = nullptr;
-    QTimer* m_showProgress = nullptr; // a check that takes longer than this shows its progress
+    ProgramCheckStatus* m_checkStatus = nullptr; // m_check, or a long check's progress
     ProgramEditor* m_editor;
     ProgramPreviewView* m_preview;
     ProgramPromptBanner* m_banner;
