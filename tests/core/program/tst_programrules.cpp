@@ -274,8 +274,8 @@ void TestProgramRules::check_elab_refusesWhatTheRunWould_data()
         << QStringList{"1:21: F60: controller \"elab\" would refuse its rate: Feed speed 100 "
                        "on axis X must be below Start speed 100 (feed mode has no ramp); F59.6 "
                        "or less is taken, or change the setup on the Setup page"};
-    QTest::newRow("G93: below it") << "start=100,100,100" << false << "G91 G93 G1 X100 Y50 F59"
-                                   << QStringList{};
+    QTest::newRow("G93: below it")
+        << "start=100,100,100" << false << "G91 G93 G1 X100 Y50 F59" << QStringList{};
     QTest::newRow("start speed never written")
         << "" << false << "G91 G1 X10 F600"
         << QStringList{"1:12: F600: controller \"elab\" would refuse its rate: Feed speed must be "
