@@ -18,9 +18,13 @@ stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_
 # The check's preview and the work coordinates it uses.
 stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpreview.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
-# The runner on a machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
-stepdeck_add_test(tst_programrunner SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrunner.cpp
-                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+# The runner on a machine of an E-LAB and a Nanotec simulator on two pseudo-terminals: its walk,
+# and what each block sends.
+foreach(_t tst_programrunner tst_programrunnermotion)
+  stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
+                    ${CMAKE_CURRENT_LIST_DIR}/ProgramRunnerTestSupport.h
+                    ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+endforeach()
 # The rules the check and the run share (issue 28).
 stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrules.cpp LABELS unit)
 # Programs that check clean run to their end on the simulators: the check refuses first

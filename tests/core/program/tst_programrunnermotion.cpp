@@ -1,0 +1,304 @@
+// ProgramRunner (issues 20, 29): what the blocks send, on the machine of
+// ProgramRunnerTestSupport.h: the spindle's S, G1's rates on each model, G93's per-axis rates,
+// work offsets and coordinate systems, and arcs as chords, asserted at the devices (the frames
+// they received, where they stand, whether they stand still).
+#include "ProgramRunnerTestSupport.h"
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+using namespace stepdeck::program::runnertest;
+
+class TestProgramRunnerMotion : public ProgramRunnerFixture
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init() { setUpRig(); }
+    void cleanup() { tearDownRig(); }
+    void spindle_maxRpm_boardGetsSMappedOntoItsFullScale();
+    void spindle_sOnAnyLine_runningSpindleChangesOffOneWaits();
+    void spindle_m4_refusedNothingSent();
+    void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
+    void g1_elab_feedMoveAtItsFeedSpeed();
+    void g93_elab_eachAxisItsRateFromItsDistance();
+    void g93_elab_arcAtThePathSpeedOfItsLength();
+    void run_workOffsets_absoluteTargetsShiftedRelativeNot();
+    void run_coordinateSystems_boardGetsTheTargetsOfG55G10G92G53();
+    void arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart();
+    void pause_duringArc_holdsBetweenChordsResumeFinishesTheArc();
+};
+
+// Issue 29: with "spindle": {"maxRpm": 24000} a program's S is in rpm: the board receives
+// S / 24000 of its full scale 1000 (SetSpindleRPM, "einen Wert zwischen 0 und 1000").
+void TestProgramRunnerMotion::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
+{
+    MachineDescription d = description();
+    d.spindle.maxRpm = 24000;
+    recreateMachine(d);
+    QVERIFY(run("M3 S12000\nM0\nM3 S24000\nM0\nM3 S6000\nM0\nM5\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(500));
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x01"
+                                           "000001F4#")) >= 0);
+    m_runner->resume();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(1000));
+    m_runner->resume();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 6, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(250));
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardRpm(), quint32(0));
+}
+
+// Issue 29: S on any line, as LightBurn and pcb2gcode write it (LinuxCNC's meaning). M3
+// without S starts at the S in effect; S on a move line changes a running spindle's speed
+// before the move; while the spindle is off, S only sets the speed the next M3 starts at.
+void TestProgramRunnerMotion::spindle_sOnAnyLine_runningSpindleChangesOffOneWaits()
+{
+    MachineDescription d = description();
+    d.spindle.maxRpm = 24000;
+    recreateMachine(d);
+    const auto pausedAt = [this](int line) {
+        return QTest::qWaitFor(
+            [&] {
+                return m_runner->state() == RunState::Paused && m_runner->currentLine() == line;
+            },
+            30000);
+    };
+    QVERIFY(run("G00 S6000\nM3\nM0\nG91 G0 X1 S12000\nM0\nM5\nG0 X2 S24000\nM0\nG0 X1 M3\nM0\n"
+                "M5\n"));
+    QVERIFY(pausedAt(3));
+    QCOMPARE(boardRpm(), quint32(250));
+    m_runner->resume();
+    QVERIFY(pausedAt(5));
+    QCOMPARE(boardRpm(), quint32(500));
+    m_runner->resume();
+    QVERIFY(pausedAt(8));
+    QCOMPARE(boardRpm(), quint32(0)); // off: S24000 waits for the next M3
+    m_runner->resume();
+    QVERIFY(pausedAt(10));
+    QCOMPARE(boardRpm(), quint32(1000)); // M3 beside a move (Vectric) switched it on
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardRpm(), quint32(0));
+}
+
+// No controller can reverse its spindle (the E-LAB switches a relay): M4 is refused before
+// anything is sent, and the board's spindle stays off.
+void TestProgramRunnerMotion::spindle_m4_refusedNothingSent()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse("M4 S500\n", {"X", "Y", "A"}, &errors);
+    QVERIFY(p);
+    QVERIFY(!m_runner->start(*p, 1, &errors));
+    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.first().text(),
+             QStringLiteral("1:1: M4: controller \"table\" cannot reverse its spindle: use M3"));
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x01")) < 0);
+    QCOMPARE(boardRpm(), quint32(0));
+}
+
+// G1 on the Nanotec drive: its top speed o carries F (1200 deg/min = 20 deg/s = 2000 steps/s)
+// before the move is sent; the fast speed it had is read first and written back before G0.
+void TestProgramRunnerMotion::g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0()
+{
+    QVERIFY(run("G91 G1 A5 F1200\nG0 A-5\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{500, -500}));
+    // Read (Zo) before the first write, written before the move's start (A), put back
+    // before the G0's start.
+    const int read = frameIndex(*m_nanotec, "#1Zo");
+    const int rate = frameIndex(*m_nanotec, "#1o2000");
+    QVERIFY(read >= 0 && rate > read);
+    const int firstStart = frameIndex(*m_nanotec, "#1A\r", rate);
+    QVERIFY2(firstStart > rate, "the rate goes before the move");
+    // The drive's top speed before the program (the simulator's power-on value).
+    const int putBack = frameIndex(*m_nanotec, "#1o1000", firstStart);
+    QVERIFY2(putBack > firstStart, "the fast speed goes back after the G1");
+    QVERIFY(frameIndex(*m_nanotec, "#1A\r", putBack) > putBack);
+}
+
+// G1 on the board: a feed move (no ramp) at its feed speed, F 6 mm/min = 40 steps/s.
+void TestProgramRunnerMotion::g1_elab_feedMoveAtItsFeedSpeed()
+{
+    QVERIFY(run("G91 G1 X0.1 F6\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    // SetFeedSpeed <FS> with X at 40 (0x28), then the feed move of 40 steps (0x19 ...);
+    // the simulator journals positioning moves only, so the board's count says where it went.
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c")) >= 0);
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("193030303030303238")) >= 0);
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
+    QVERIFY(still(*m_elab));
+}
+
+// G93 on the board: the move takes 1/F minutes, so each axis gets its distance times F: X 0.1 mm
+// and Y 0.05 mm in 1 s are 40 and 20 steps/s (400 steps/mm), written in one <FS>XXXX,YYYY;ZZZZ.
+// before the move.
+void TestProgramRunnerMotion::g93_elab_eachAxisItsRateFromItsDistance()
+{
+    QVERIFY(run("G91 G93 G1 X0.1 Y0.05 F60\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QVERIFY(frameIndex(*m_elab, QByteArray::fromHex("1c303032382c303031343b")) >= 0);
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::X); }), qint64(40));
+    QCOMPARE(m_elab->probe([&] { return m_elab->sim()->position(Axis::Y); }), qint64(20));
+    QVERIFY(still(*m_elab));
+}
+
+// A G93 arc: its chords at the path speed that covers it in 1/F minutes. A half circle of radius
+// 0.1 mm is 0.314 mm long: in 2 s (F30), 0.157 mm/s = 63 steps/s (0x3F) on X and Y.
+void TestProgramRunnerMotion::g93_elab_arcAtThePathSpeedOfItsLength()
+{
+    QVERIFY(run("G28 X0 Y0\n")); // an arc needs known positions
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    const auto board = [&](Axis a) {
+        return m_elab->probe([&] { return m_elab->sim()->position(a); });
+    };
+    const qint64 x0 = board(Axis::X);
+    const qint64 y0 = board(Axis::Y);
+    QVERIFY(run("G91 G93 G2 X0.2 Y0 I0.1 J0 F30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QVERIFY(frameIndex(*m_elab, QByteArray("\x1c"
+                                           "003F,003F;")) >= 0);
+    QCOMPARE(board(Axis::X) - x0, qint64(80));
+    QCOMPARE(board(Axis::Y) - y0, qint64(0));
+    QVERIFY(still(*m_elab));
+}
+
+// Issue 28, item 3: a program's absolute targets are work coordinates. With X's work zero at
+// machine 2 mm and A's at 25 deg, "G0 X1 A0" goes to machine 3 mm and 25 deg; a relative move
+// is not offset; G28 goes to the machine's reference (0), not the work zero.
+void TestProgramRunnerMotion::run_workOffsets_absoluteTargetsShiftedRelativeNot()
+{
+    m_runner->setWorkOffsets({{QStringLiteral("X"), 2.0}, {QStringLiteral("A"), 25.0}});
+    QVERIFY(run("G28\n"
+                "G90 G0 X1 A0\n"
+                "G91 G0 X0.5\n"
+                "G90 G0 X0\n"
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(m_runner->workOffsets().value(QStringLiteral("X")), 2.0);
+    // At the board: to machine 3 mm (1200 steps), 0.5 mm on, back to machine 2 mm.
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 200, -600}));
+    // At the drive: to 25 deg = 2500 steps (within its 6000-step travel).
+    QCOMPARE(acceptedSteps(*m_nanotec, Axis::X), (QList<qint64>{2500}));
+    QVERIFY(still(*m_elab) && still(*m_nanotec));
+}
+
+// G54..G59, G10 L20, G92 and G53 (issue 29): each absolute word reaches the board as the
+// machine position LinuxCNC would go to (400 steps/mm); the G10 is reported for the window.
+void TestProgramRunnerMotion::run_coordinateSystems_boardGetsTheTargetsOfG55G10G92G53()
+{
+    CoordinateSystems systems;
+    systems[0] = {{QStringLiteral("X"), 2.0}};
+    systems[1] = {{QStringLiteral("X"), 5.0}};
+    m_runner->setCoordinateSystems(systems, 0);
+    QSignalSpy set(m_runner.get(), &ProgramRunner::coordinateSystemSet);
+    QVERIFY(run("G28 X0 Y0\n"
+                "G55 G0 X1\n"     // machine 6
+                "G10 L20 P3 X0\n" // G56's X zero where X stands: 6
+                "G56 G0 X1\n"     // machine 7
+                "G92 X0\n"        // X reads 0 here: G92 adds 1
+                "G0 X1\n"         // machine 8
+                "G53 G0 X0.5\n"   // machine 0.5
+                "G92.1\n"
+                "G54 G0 X0\n" // machine 2
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{2400, 400, 400, -3000, 600}));
+    QCOMPARE(set.size(), 1);
+    QCOMPARE(set.at(0).at(0).toInt(), 2);
+    using Offsets = QMap<QString, double>;
+    QCOMPARE(set.at(0).at(1).value<Offsets>(), (Offsets{{QStringLiteral("X"), 6.0}}));
+    QVERIFY(still(*m_elab));
+}
+
+// Where the board stands (steps, X and Y) each time the machine reports a move arrived: read
+// from the simulator inside that signal, before the runner (connected later) sends the next
+// chord.
+struct ArrivalLog
+{
+    QList<QPoint> points;
+    QMetaObject::Connection connection;
+};
+
+void logArrivals(Machine* machine, Device& board, ArrivalLog* log)
+{
+    log->connection = QObject::connect(machine, &Machine::moveFinished, machine, [&board, log] {
+        log->points << board.probe([&] {
+            return QPoint(int(board.sim()->position(Axis::X)), int(board.sim()->position(Axis::Y)));
+        });
+    });
+}
+
+// G3 full circle of radius 1 mm about X11 Y10 (400 steps/mm): ceil(2 pi / (2 acos(1 - 0.01)))
+// = 23 chords, each arriving on the circle to within a step at the board, the last back at
+// the start; counter-clockwise.
+void TestProgramRunnerMotion::arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart()
+{
+    QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
+    ArrivalLog log;
+    logArrivals(m_machine.get(), *m_elab, &log);
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG3 I1 F150\nM30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(m_runner->preview().path.size(), 3 + 23); // start, G28, G0, the chords
+    QCOMPARE(log.points.size(), 1 + 23);               // the G0, then the chords
+    // The simulator counts from its power-up place: positions relative to the G0's end.
+    const QPoint start = log.points.first();
+    for (const QPoint& p : log.points.mid(1))
+        QVERIFY2(std::abs(std::hypot(p.x() - start.x() - 400, p.y() - start.y()) - 400) <= 1.0,
+                 qPrintable(QStringLiteral("%1 %2").arg(p.x()).arg(p.y())));
+    QCOMPARE(log.points.last(), start);
+    const QPoint first = log.points.at(1) - start;
+    QVERIFY(first.x() > 0 && first.y() < 0); // counter-clockwise from the circle's left: down
+    QVERIFY(still(*m_elab));
+}
+
+// A pause during an arc holds between two chords, at the arc's line; resume sends the rest.
+void TestProgramRunnerMotion::pause_duringArc_holdsBetweenChordsResumeFinishesTheArc()
+{
+    QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
+    ArrivalLog log;
+    logArrivals(m_machine.get(), *m_elab, &log);
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG2 I1 F150\nG0 X0\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(log.points.size() >= 4, 30000); // the G0 and three chords
+    m_runner->pause();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(paused.size(), 1);
+    QCOMPARE(paused.at(0).at(0).toInt(), 3);
+    QCOMPARE(m_runner->currentLine(), 3);
+    const qsizetype held = log.points.size();
+    QVERIFY2(held < 1 + 23, qPrintable(QString::number(held))); // mid-arc
+    // Held: more status polls pass, the board stands where the last chord ended.
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QVERIFY(still(*m_elab));
+    QCOMPARE(m_elab->probe([&] {
+        return QPoint(int(m_elab->sim()->position(Axis::X)), int(m_elab->sim()->position(Axis::Y)));
+    }),
+             log.points.last());
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(log.points.size(), 1 + 23 + 1);
+    QCOMPARE(log.points.at(23), log.points.first());                   // the circle closed
+    QCOMPARE(log.points.last(), log.points.first() - QPoint(4000, 0)); // then the G0 X0
+}
+
+QTEST_MAIN(TestProgramRunnerMotion)
+#include "tst_programrunnermotion.moc"
