@@ -133,15 +133,15 @@ bool ProgramFiles::load(const QString& path)
     setLarge(large);
     m_editor->document()->setModified(false);
     m_path = QFileInfo(path).absoluteFilePath();
+    recentprograms::add(m_path);
+    updateName();
+    Q_EMIT loaded(m_path); // the page drops what it said of the program before
     if (large)
         Q_EMIT message(tr("%1 is %2 MB: too large to edit here. Its first %3 lines are shown; the "
                           "check, the preview and the run read the whole file.")
                            .arg(QFileInfo(path).fileName())
                            .arg(double(file.size()) / (1024 * 1024), 0, 'f', 1)
                            .arg(kExcerptLines));
-    recentprograms::add(m_path);
-    updateName();
-    Q_EMIT loaded(m_path);
     return true;
 }
 

@@ -56,7 +56,9 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_files, &ProgramFiles::message, this,
             [this](const QString& text) { m_banner->setStatus(text); });
     connect(m_files, &ProgramFiles::loaded, this, [this] {
-        // Another program: its preview is fitted to the view, whatever the last one's zoom.
+        // Another program: what was said of the last one (its run's end, "too large to edit")
+        // goes, and its preview is fitted to the view, whatever the last one's zoom.
+        m_banner->setStatus(QString());
         m_preview->pathView()->fitToView();
         checkNow();
     });

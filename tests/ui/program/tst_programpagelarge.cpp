@@ -78,6 +78,18 @@ void TestProgramPageLarge::largeFile_excerptReadOnly_runFromTheFileAtTheBoard()
     QCOMPARE(m_rig.elab->position(Axis::Y), 100);
     QVERIFY(m_rig.elab->still());
     QVERIFY(page()->editor()->isReadOnly()); // still an excerpt after the run
+    // A small program opened next: editable, Save back, and nothing said of the large one or
+    // of its run any more.
+    const QString small = m_rig.dir->filePath(QStringLiteral("small.ngc"));
+    {
+        QFile f(small);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("G91\nG0 X0.5\n");
+    }
+    QVERIFY(page()->files()->load(small));
+    QVERIFY(!page()->editor()->isReadOnly());
+    QVERIFY(page()->files()->saveButton()->isEnabled());
+    QVERIFY2(page()->messageText().isEmpty(), qPrintable(page()->messageText()));
 }
 
 void TestProgramPageLarge::largeFile_changedAfterCheck_refusedNothingSent()
