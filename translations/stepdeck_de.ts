@@ -4071,12 +4071,12 @@
             <translation>%1: Z%2 liegt über R%3: Der Grund der Bohrung muss unter der Rückzugsebene liegen</translation>
         </message>
         <message>
-            <source>a drilling cycle in inverse time (G93) is not supported yet: use G94</source>
-            <translation>ein Bohrzyklus in inverser Zeit (G93) wird noch nicht unterstützt: G94 verwenden</translation>
-        </message>
-        <message>
             <source>%1 in inverse time (G93) needs F on its line: the move takes 1/F minutes</source>
             <translation>%1 in inverser Zeit (G93) braucht F in seiner Zeile: die Bewegung dauert 1/F Minuten</translation>
+        </message>
+        <message>
+            <source>a drilling cycle cannot run in inverse time (G93), as in LinuxCNC: switch to G94 and give F before the cycle</source>
+            <translation>ein Bohrzyklus kann nicht in inverser Zeit (G93) laufen, wie in LinuxCNC: vor dem Zyklus auf G94 schalten und F angeben</translation>
         </message>
     </context>
     <context>

@@ -377,8 +377,9 @@ std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState
 }
 
 // G93 (LinuxCNC's inverse time, docs/programs.md "Inverse time"): a G1, G2 or G3 takes 1/F
-// minutes, so F stands on every such line that moves. Drilling cycles in G93 are refused (not
-// yet).
+// minutes, so F stands on every such line that moves. Drilling cycles in G93 are refused, as
+// LinuxCNC's interpreter refuses them (convert_cycle: "Cannot use inverse time feed with canned
+// cycles"): a cycle's moves have no single time that F could give.
 std::pair<int, QString> inverseTime(const Words& sorted, const ModalState& modal, ProgramBlock* b)
 {
     if (!modal.inverseTime)
@@ -387,8 +388,8 @@ std::pair<int, QString> inverseTime(const Words& sorted, const ModalState& modal
                        : sorted.axes.isEmpty() ? 1
                                                : sorted.axes.first()->column;
     if (b->kind == BlockKind::DrillCycle)
-        return {column, ProgramLine::tr("a drilling cycle in inverse time (G93) is not supported "
-                                        "yet: use G94")};
+        return {column, ProgramLine::tr("a drilling cycle cannot run in inverse time (G93), as in "
+                                        "LinuxCNC: switch to G94 and give F before the cycle")};
     if (!isArc(b->kind) && (b->kind != BlockKind::Feed || sorted.axes.isEmpty()))
         return {};
     if (!sorted.parameters.contains('F'))

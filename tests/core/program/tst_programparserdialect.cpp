@@ -149,9 +149,9 @@ void TestProgramParserDialect::parse_inverseTime_fOnEveryG1_data()
     QTest::newRow("arc without F")
         << "G93 G1 X1 F5\nG3 X2 Y0 I1 J0"
         << "2:1: G3 in inverse time (G93) needs F on its line: the move takes 1/F minutes";
-    QTest::newRow("drilling cycle")
-        << "G93\nG81 X1 Y1 Z-1 R1 F5"
-        << "2:1: a drilling cycle in inverse time (G93) is not supported yet: use G94";
+    QTest::newRow("drilling cycle") << "G93\nG81 X1 Y1 Z-1 R1 F5"
+                                    << "2:1: a drilling cycle cannot run in inverse time (G93), as "
+                                       "in LinuxCNC: switch to G94 and give F before the cycle";
     QTest::newRow("G94 after G93 needs F") << "G93 G1 X1 F2\nG94\nG1 X2"
                                            << "3:1: G1 needs a feed rate: F on this line or an "
                                               "earlier one";
