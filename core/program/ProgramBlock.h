@@ -1,4 +1,5 @@
 #pragma once
+#include "WordMap.h"
 #include <QMap>
 #include <QString>
 #include <QStringList>
@@ -114,7 +115,7 @@ struct ProgramBlock
     QString text; // the line as written, without surrounding white space
     BlockKind kind = BlockKind::Modal;
     // Axis words in the program's units as written (G20: inch for mm axes), by machine axis.
-    QMap<QString, double> axes;
+    WordMap<QString, double> axes;
     // The modal state in effect for this block (after the line's own modal words).
     bool relative = false;      // G91
     bool inches = false;        // G20
@@ -122,7 +123,7 @@ struct ProgramBlock
     bool inverseTime = false;   // G93: this G1 takes 1/F minutes (InverseTime)
     // G93 resolved where the block starts (InverseTime::resolve): each moving axis' rate in its
     // unit per minute, in place of F. Empty: F for every axis (G94).
-    QMap<QString, double> axisRates;
+    WordMap<QString, double> axisRates;
     Plane plane = Plane::XY;             // G17 / G18 / G19
     PathMode pathMode = PathMode::Blend; // G61 / G61.1 / G64
     std::optional<double> pathTolerance; // G64 P
@@ -154,7 +155,7 @@ struct ProgramBlock
     // the word it refuses: axis words by axis name ("X"), parameters by letter ("F", "P", "S",
     // "L", "Q"). actionColumn: the G or M word (the O word of a repeat); 0 for a line without
     // one (axis words moving with the last G0/G1, or only modal words).
-    QMap<QString, int> columns;
+    WordMap<QString, int> columns;
     int actionColumn = 0;
 
     // The column of a word on this line, or of the action (or else 1) when it is not here

@@ -151,13 +151,13 @@ private:
         if (!value)
             return;
         const QStringView written = m_line.mid(valueStart, m_pos - valueStart);
-        QString valueText;
-        valueText.reserve(written.size() + 1);
-        valueText += letter;
+        // ASCII: the letter, sign, digits and point are (readWord, readNumber); only the white
+        // space between them may not be, and it is left out.
+        std::string text(1, char(letter.unicode()));
         for (const QChar ch : written)
-            if (ch != QLatin1Char(' '))
-                valueText += ch;
-        m_out->words << ProgramWord{letter, *value, std::move(valueText), letterColumn};
+            if (!ch.isSpace())
+                text += char(ch.unicode());
+        m_out->words << ProgramWord{letter, *value, letterColumn, std::move(text)};
         if (letter == QLatin1Char('O'))
             readKeyword();
     }

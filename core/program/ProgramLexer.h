@@ -1,6 +1,7 @@
 #pragma once
 #include "ProgramBlock.h"
 #include <QCoreApplication>
+#include <string>
 
 namespace stepdeck::program {
 
@@ -9,8 +10,15 @@ struct ProgramWord
 {
     QChar letter;
     double value = 0;
-    QString valueText; // as written, for messages ("G0.5", "P-1")
-    int column = 0;    // 1-based
+    int column = 0; // 1-based
+    // The letter and value as written, spaces left out ("G0.5", "P-1"; ASCII): for messages.
+    // Kept as a std::string, whose short ones need no allocation (issue 29's rate).
+    std::string written;
+
+    QString valueText() const
+    {
+        return QString::fromLatin1(written.data(), qsizetype(written.size()));
+    }
 };
 
 // A line split into words. O words carry their keyword ("repeat", "endrepeat") and the

@@ -133,7 +133,7 @@ private:
                 return ProgramLine::tr("T appears twice on the line");
             if (!isWhole(w.value) || w.value < 0 || w.value > kMaxTool)
                 return ProgramLine::tr("%1: T takes a tool number, whole, 0..%2")
-                    .arg(w.valueText)
+                    .arg(w.valueText())
                     .arg(kMaxTool);
             out->tool = &w;
             return {};
@@ -141,8 +141,8 @@ private:
         if (l == QLatin1Char('N'))
             return ProgramLine::tr("N (a line number) stands only at the start of a line");
         if (l == QLatin1Char('O'))
-            return ProgramLine::tr("O%1 stands alone on its line").arg(w.valueText.mid(1));
-        return ProgramLine::tr("%1 is not a word of StepDeck programs").arg(w.valueText);
+            return ProgramLine::tr("O%1 stands alone on its line").arg(w.valueText().mid(1));
+        return ProgramLine::tr("%1 is not a word of StepDeck programs").arg(w.valueText());
     }
 
     QString sortCode(const ProgramWord& w, Words* out)
@@ -151,7 +151,7 @@ private:
         // Codes in tenths: G61.1, G90.1 and G91.1 have a decimal digit (LinuxCNC).
         const double tenthsValue = w.value * 10;
         if (w.value < 0 || std::fabs(tenthsValue) > 1e9 || std::floor(tenthsValue) != tenthsValue)
-            return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+            return ProgramLine::tr("%1 is not supported").arg(w.valueText());
         const int tenths = int(tenthsValue);
         if (g) {
             if (const std::optional<QString> modal = sortModalG(tenths, w, out))
@@ -169,7 +169,7 @@ private:
                                              : BlockKind::AxisOffsetRestore,
                              w, out);
         if (tenths % 10 != 0)
-            return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+            return ProgramLine::tr("%1 is not supported").arg(w.valueText());
         const int code = tenths / 10;
         if (g && (code == 90 || code == 91)) {
             if (out->relative)
@@ -185,7 +185,7 @@ private:
         }
         const std::optional<BlockKind> action = g ? actionOfG(code) : actionOfM(code);
         if (!action)
-            return ProgramLine::tr("%1 is not supported").arg(w.valueText);
+            return ProgramLine::tr("%1 is not supported").arg(w.valueText());
         if (action == BlockKind::DrillCycle)
             out->cycleCode = code;
         return setAction(*action, w, out);
@@ -207,7 +207,7 @@ private:
         }
         if (out->action)
             return ProgramLine::tr("one action per line: %1 and %2")
-                .arg(out->actionWord->valueText, w.valueText);
+                .arg(out->actionWord->valueText(), w.valueText());
         if (isMotion(action) && out->groups.contains(kMotionGroup))
             return twoOfOneGroup(out->groups.value(kMotionGroup), w);
         out->action = action;
@@ -351,7 +351,7 @@ private:
     static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
     {
         return ProgramLine::tr("%1 and %2 on one line: they are of one modal group")
-            .arg(first->valueText, second.valueText);
+            .arg(first->valueText(), second.valueText());
     }
 
     static constexpr int kMotionGroup = 1;
@@ -493,13 +493,13 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (words.first().letter == QLatin1Char('N')) {
         if (!isWhole(words.first().value) || words.first().value < 0)
             return fail(words.first().column,
-                        tr("%1: N takes a whole number").arg(words.first().valueText));
+                        tr("%1: N takes a whole number").arg(words.first().valueText()));
         words.removeFirst();
     }
     if (!words.isEmpty() && words.first().letter == QLatin1Char('O')) {
         if (words.size() > 1)
             return fail(words.at(1).column,
-                        tr("O%1 stands alone on its line").arg(words.first().valueText.mid(1)));
+                        tr("O%1 stands alone on its line").arg(words.first().valueText().mid(1)));
         return repeatBlock(line, words.first(), lineNumber, error);
     }
     Words sorted;

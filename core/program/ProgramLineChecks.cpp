@@ -79,10 +79,10 @@ public:
             if (it.key() == QLatin1Char('S'))
                 continue; // modal, as F: any line may set the spindle's speed (LinuxCNC)
             if (!allowedParameters(kind).contains(it.key()))
-                return {it.value()->column, notTaken(it.value()->valueText)};
+                return {it.value()->column, notTaken(it.value()->valueText())};
         }
         if (!takesAxes(kind) && !m_words.axes.isEmpty())
-            return {m_words.axes.first()->column, notTaken(m_words.axes.first()->valueText)};
+            return {m_words.axes.first()->column, notTaken(m_words.axes.first()->valueText())};
         switch (kind) {
         case BlockKind::Dwell:
             return number('P', 0, 1e6, false, &m_block->seconds);
@@ -112,14 +112,15 @@ private:
     {
         return m_words.actionWord
                    ? ProgramLine::tr("%1 is not used by %2")
-                         .arg(word, m_words.actionWord->valueText)
+                         .arg(word, m_words.actionWord->valueText())
                    : ProgramLine::tr("%1 is not used on a line without an action").arg(word);
     }
 
     std::pair<int, QString> missing(QChar letter) const
     {
-        return {m_words.actionWord->column,
-                ProgramLine::tr("%1 needs %2").arg(m_words.actionWord->valueText, QString(letter))};
+        return {
+            m_words.actionWord->column,
+            ProgramLine::tr("%1 needs %2").arg(m_words.actionWord->valueText(), QString(letter))};
     }
 
     std::pair<int, QString> number(QChar letter, double min, double max, bool open, double* out)
@@ -131,7 +132,7 @@ private:
             const QString range = open
                                       ? ProgramLine::tr("%1 must be greater than %2 and at most %3")
                                       : ProgramLine::tr("%1 must lie within %2..%3");
-            return {w->column, range.arg(w->valueText).arg(qint64(min)).arg(qint64(max))};
+            return {w->column, range.arg(w->valueText()).arg(qint64(min)).arg(qint64(max))};
         }
         *out = w->value;
         return {};
@@ -143,9 +144,8 @@ private:
         if (!w)
             return missing(letter);
         if (!isWhole(w->value) || w->value < 0 || w->value > 9999)
-            return {
-                w->column,
-                ProgramLine::tr("%1: the number must be a whole number 0..9999").arg(w->valueText)};
+            return {w->column, ProgramLine::tr("%1: the number must be a whole number 0..9999")
+                                   .arg(w->valueText())};
         *out = int(w->value);
         return {};
     }
@@ -159,7 +159,7 @@ private:
             return missing('L');
         if (l->value != 3 && l->value != 4)
             return {l->column,
-                    ProgramLine::tr("%1: L3 waits for high, L4 for low").arg(l->valueText)};
+                    ProgramLine::tr("%1: L3 waits for high, L4 for low").arg(l->valueText())};
         m_block->inputHigh = l->value == 3;
         return number('Q', 0, 1e6, true, &m_block->seconds);
     }
@@ -177,7 +177,7 @@ private:
             if (!plane.axes.contains(l) && l != plane.helix)
                 return {it.value()->column,
                         ProgramLine::tr("%1: %2 in the %3 plane (%4) moves %5, %6 and %7 only")
-                            .arg(it.value()->valueText, g, plane.name, plane.planeG)
+                            .arg(it.value()->valueText(), g, plane.name, plane.planeG)
                             .arg(plane.axes.at(0))
                             .arg(plane.axes.at(1))
                             .arg(plane.helix)};
@@ -191,13 +191,13 @@ private:
             if (!plane.centre.contains(l))
                 return {w->column, ProgramLine::tr("%1 is not used by %2 in the %3 plane (%4): "
                                                    "its centre takes %5 and %6")
-                                       .arg(w->valueText, g, plane.name, plane.planeG)
+                                       .arg(w->valueText(), g, plane.name, plane.planeG)
                                        .arg(plane.centre.at(0))
                                        .arg(plane.centre.at(1))};
             if (r)
                 return {r->column, ProgramLine::tr("%1: an arc takes its centre by I, J, K or by "
                                                    "R, not both")
-                                       .arg(r->valueText)};
+                                       .arg(r->valueText())};
             anyCentre = true;
             std::optional<double>& out = l == QLatin1Char('I')   ? m_block->arc.i
                                          : l == QLatin1Char('J') ? m_block->arc.j
@@ -213,7 +213,7 @@ private:
         if (r) {
             if (r->value == 0)
                 return {r->column,
-                        ProgramLine::tr("%1: the radius must not be 0").arg(r->valueText)};
+                        ProgramLine::tr("%1: the radius must not be 0").arg(r->valueText())};
             if (!endInPlane)
                 return {r->column, ProgramLine::tr("%1 with R needs an end point in the plane "
                                                    "(%2 or %3); a full circle takes %4 and %5")
@@ -228,7 +228,7 @@ private:
             if (!isWhole(p->value) || p->value < 1 || p->value > kMaxArcTurns)
                 return {p->column, ProgramLine::tr("%1: P counts the arc's turns, a whole number "
                                                    "1..%2")
-                                       .arg(p->valueText)
+                                       .arg(p->valueText())
                                        .arg(kMaxArcTurns)};
             m_block->arc.turns = int(p->value);
         }
@@ -242,21 +242,21 @@ private:
         if (const ProgramWord* r = m_words.parameters.value('R'))
             return {r->column, ProgramLine::tr("%1: G10 R (a rotated coordinate system) is not "
                                                "supported")
-                                   .arg(r->valueText)};
+                                   .arg(r->valueText())};
         const ProgramWord* l = m_words.parameters.value('L');
         if (!l)
             return missing('L');
         if (l->value != 2 && l->value != 20)
             return {l->column, ProgramLine::tr("G10 %1 is not supported: L2 and L20 set the "
                                                "coordinate systems")
-                                   .arg(l->valueText)};
+                                   .arg(l->valueText())};
         const ProgramWord* p = m_words.parameters.value('P');
         if (!p)
             return missing('P');
         if (!isWhole(p->value) || p->value < 0 || p->value > 6)
             return {p->column, ProgramLine::tr("%1: G10 sets P1 (G54) to P6 (G59), P0 the "
                                                "system in effect")
-                                   .arg(p->valueText)};
+                                   .arg(p->valueText())};
         m_block->number = int(p->value);
         m_block->fromPosition = l->value == 20;
         return {};
@@ -281,7 +281,7 @@ std::optional<ProgramBlock> repeatBlock(const LexedLine& line, const ProgramWord
         return std::nullopt;
     };
     if (!isWhole(o.value) || o.value < 0)
-        return fail(o.column, ProgramLine::tr("%1: O takes a whole number").arg(o.valueText));
+        return fail(o.column, ProgramLine::tr("%1: O takes a whole number").arg(o.valueText()));
     ProgramBlock b;
     b.oNumber = int(o.value);
     b.actionColumn = o.column;

@@ -40,8 +40,8 @@ struct Words
     const ProgramWord* switchWord = nullptr;         // M3..M9 beside a motion (ProgramLine)
     BlockKind switchAction = BlockKind::Modal;
     int cycleCode = 0; // G81, G82, G83, G73: its number
-    QMap<QChar, const ProgramWord*> parameters;
-    QMap<QString, const ProgramWord*> axes;
+    WordMap<QChar, const ProgramWord*> parameters;
+    WordMap<QString, const ProgramWord*> axes;
 };
 
 struct ModalState;

@@ -21,14 +21,14 @@ std::pair<int, QString> applyPathMode(Words* words, ModalState* modal)
     if (const ProgramWord* p = words->parameters.value('P')) {
         if (p->value < 0)
             return {p->column,
-                    ProgramLine::tr("%1: G64 P is a tolerance, not below 0").arg(p->valueText)};
+                    ProgramLine::tr("%1: G64 P is a tolerance, not below 0").arg(p->valueText())};
         modal->pathTolerance = p->value;
         words->parameters.remove('P');
     }
     if (const ProgramWord* q = words->parameters.value('Q')) {
         if (q->value < 0)
             return {q->column,
-                    ProgramLine::tr("%1: G64 Q is a tolerance, not below 0").arg(q->valueText)};
+                    ProgramLine::tr("%1: G64 Q is a tolerance, not below 0").arg(q->valueText())};
         words->parameters.remove('Q');
     }
     return {};
@@ -46,13 +46,13 @@ std::pair<int, QString> applyLengthOffset(const Words* words, ModalState* modal)
         if (words->lengthOffset)
             modal->lengthTool = -1; // G49
         if (h)
-            return {h->column, ProgramLine::tr("%1 is used only with G43").arg(h->valueText)};
+            return {h->column, ProgramLine::tr("%1 is used only with G43").arg(h->valueText())};
         return {};
     }
     if (h) {
         if (!isWhole(h->value) || h->value < 0 || h->value > kMaxTool)
             return {h->column, ProgramLine::tr("%1: H takes a tool number, whole, 0..%2")
-                                   .arg(h->valueText)
+                                   .arg(h->valueText())
                                    .arg(kMaxTool)};
         modal->lengthTool = int(h->value);
         return {};
@@ -101,7 +101,7 @@ std::pair<int, QString> cycleNumbers(const Words& sorted, int code, bool sticky,
         if (!n.used) {
             if (const ProgramWord* unused = sorted.parameters.value(n.letter))
                 return {unused->column,
-                        ProgramLine::tr("%1 is not used by %2").arg(unused->valueText, g)};
+                        ProgramLine::tr("%1 is not used by %2").arg(unused->valueText(), g)};
             continue;
         }
         bool missing = false;
@@ -155,13 +155,15 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
     }
     if (const ProgramWord* s = words->parameters.value('S')) {
         if (s->value < 0 || s->value > 1e6)
-            return {s->column, ProgramLine::tr("%1 must lie within 0..1000000").arg(s->valueText)};
+            return {s->column,
+                    ProgramLine::tr("%1 must lie within 0..1000000").arg(s->valueText())};
         modal->spindleSpeed = s->value;
     }
     if (const ProgramWord* f = words->parameters.value('F')) {
         if (f->value <= 0)
-            return {f->column,
-                    ProgramLine::tr("%1: the feed rate must be greater than 0").arg(f->valueText)};
+            return {
+                f->column,
+                ProgramLine::tr("%1: the feed rate must be greater than 0").arg(f->valueText())};
         modal->feed = f->value;
     }
     return {};
@@ -195,7 +197,7 @@ std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, Progr
     if (const ProgramWord* l = sorted.parameters.value('L')) {
         if (!isWhole(l->value) || l->value < 1 || l->value > kMaxCycleRepeats)
             return {l->column, ProgramLine::tr("%1: L, the repeats, takes a whole number 1..%2")
-                                   .arg(l->valueText)
+                                   .arg(l->valueText())
                                    .arg(kMaxCycleRepeats)};
         c.repeats = int(l->value);
     }

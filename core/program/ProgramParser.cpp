@@ -60,8 +60,7 @@ void ProgramParser::flush()
 void ProgramParser::endLine()
 {
     const bool tooLong = m_pendingTooLong;
-    QByteArray raw = std::move(m_pending);
-    m_pending.clear();
+    QByteArrayView raw = m_pending;
     m_pendingTooLong = false;
     m_hash = hashLine(m_hash, raw.constData(), raw.size()) ^ quint64(tooLong ? m_lineBytes : 0);
     m_lineOffset += m_lineBytes;
@@ -71,6 +70,7 @@ void ProgramParser::endLine()
             ++m_state.line;
             error(m_state.line, 1, tr("the program is longer than %1 lines").arg(kMaxLines));
         }
+        m_pending.resize(0);
         return;
     }
     ++m_state.line;
@@ -78,7 +78,7 @@ void ProgramParser::endLine()
         if (raw.endsWith('\r'))
             raw.chop(1);
         if (m_state.line == 1 && raw.startsWith("\xEF\xBB\xBF"))
-            raw.remove(0, 3); // a UTF-8 byte-order mark, as some editors on Windows write it
+            raw = raw.sliced(3); // a UTF-8 byte-order mark, as some editors on Windows write it
         const QString text = QString::fromUtf8(raw);
         if (tooLong || text.size() > kMaxLineLength)
             error(m_state.line, kMaxLineLength + 1,
@@ -88,6 +88,7 @@ void ProgramParser::endLine()
     }
     if (m_index && m_state.line % ProgramIndex::kCheckpointLines == 0)
         noteCheckpoint();
+    m_pending.resize(0); // keeps its capacity: the next line needs no allocation
 }
 
 // The state before the next line, so that a reader can go on from there (ProgramIndex).
@@ -147,7 +148,7 @@ void ProgramParser::parseLine(const QString& text)
     block->text = text.trimmed();
     if (block->kind == BlockKind::End)
         m_state.endLine = m_state.line;
-    addBlock(*block);
+    addBlock(std::move(*block));
 }
 
 // An "O<n> repeat" line with an error still opens its repeat, so that its endrepeat is not
@@ -162,7 +163,7 @@ void ProgramParser::noteBrokenRepeat(const LexedLine& lexed)
         m_openRepeats << OpenRepeat{-1, int(w.at(o).value), m_state.line};
 }
 
-void ProgramParser::addBlock(ProgramBlock block)
+void ProgramParser::addBlock(ProgramBlock&& block)
 {
     const int index = m_state.blocks;
     if (!linkRepeat(block, index))

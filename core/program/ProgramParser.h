@@ -68,7 +68,7 @@ private:
     void parseLine(const QString& text);
     // A line of only "%": the program's first or last line (LinuxCNC); true when handled.
     bool percentLine(const QString& text);
-    void addBlock(ProgramBlock block);
+    void addBlock(ProgramBlock&& block);
     bool linkRepeat(ProgramBlock& block, int index);
     void noteBrokenRepeat(const LexedLine& lexed);
     void error(int line, int column, const QString& message);

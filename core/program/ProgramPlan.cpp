@@ -21,7 +21,20 @@ int axisIndex(const machine::MachineDescription& d, const QString& name)
 
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
     : m_facts(facts), m_out(*out), m_errors(errors), m_known(facts.knownParameters)
-{}
+{
+    // m_facts outlives the plan unchanged: pointers into its maps stay valid.
+    static const Capabilities kNone;
+    for (const machine::MachineAxis& axis : facts.description.axes) {
+        AxisFacts a;
+        const auto caps = facts.capabilities.constFind(axis.controller);
+        a.caps = caps == facts.capabilities.cend() ? &kNone : &caps.value();
+        a.feedParameter = QString::fromLatin1(a.caps->feedRateParameter);
+        const auto schema = facts.schemas.constFind(axis.controller);
+        if (a.caps->feedRateParameter && schema != facts.schemas.cend())
+            a.feedSpec = schema.value().find(a.feedParameter);
+        m_axisFacts.push_back(a);
+    }
+}
 
 void ProgramPlan::addMove(const AxisMove& move, PlannedBlock* out)
 {
@@ -91,11 +104,11 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         if (block.kind == BlockKind::Feed) {
             // A refused rate still moves the axis in the walk, so what follows is judged
             // from where the program means it to be (its time stays unknown).
-            ratesTaken = checkRate(block, axis, &m.speed) && ratesTaken;
+            ratesTaken = checkRate(block, m.axis, &m.speed) && ratesTaken;
         } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
             m.speed = *axis.maxJogSpeed;
         } else {
-            m.speed = m_facts.capabilities.value(axis.controller).maxJogSpeed / axis.stepsPerUnit;
+            m.speed = m_axisFacts[size_t(m.axis)].caps->maxJogSpeed / axis.stepsPerUnit;
         }
         addMove(m, out);
     }
@@ -125,19 +138,19 @@ void ProgramPlan::planCycle(const ProgramBlock& block, PlannedBlock* out)
     planMove(DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d), out);
     const ProgramBlock feed = DrillCycle::rateBlock(block, DrillCycle::Kind::Feed, d);
     const int z = axisIndex(d, QStringLiteral("Z"));
-    if (z >= 0 && checkRate(feed, d.axes.at(z), &out->feedSpeed))
+    if (z >= 0 && checkRate(feed, z, &out->feedSpeed))
         checkFeedWrite(feed);
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s
 // within the parameter's schema range). *speed: the rate the device runs, in unit/s (left 0
 // when refused).
-bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxis& axis,
-                            double* speed)
+bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* speed)
 {
-    const Capabilities caps = m_facts.capabilities.value(axis.controller);
+    const machine::MachineAxis& axis = m_facts.description.axes.at(axisIndex);
+    const AxisFacts& facts = m_axisFacts[size_t(axisIndex)];
     const int column = block.columnOf(axis.name);
-    if (!caps.feedRateParameter) {
+    if (!facts.caps->feedRateParameter) {
         error(block, column, [&] {
             return ProgramCheck::tr(
                        "%1: controller \"%2\" takes no feed rate, so G1 cannot move it; "
@@ -146,13 +159,11 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, const machine::MachineAxi
         });
         return false;
     }
-    const QString parameter = QString::fromLatin1(caps.feedRateParameter);
-    const ParameterSchema schema = m_facts.schemas.value(axis.controller);
-    const ParameterSpec* spec = schema.find(parameter);
+    const ParameterSpec* spec = facts.feedSpec;
     if (!spec) {
         error(block, column, [&] {
             return ProgramCheck::tr("%1: controller \"%2\" has no parameter %3 for the feed rate")
-                .arg(axis.name, axis.controller, parameter);
+                .arg(axis.name, axis.controller, facts.feedParameter);
         });
         return false;
     }

@@ -137,7 +137,8 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
     QTest::addColumn<QList<double>>("spots"); // machine x, y, z the board must reach, in order
     for (const char* model : {"elab", "emis"}) {
         const auto row = [model](const char* style) -> QTestData& {
-            return QTest::addRow("%s %s", model, style) << QString::fromLatin1(model);
+            return QTest::newRow(QByteArray(model).append(' ').append(style).constData())
+                   << QString::fromLatin1(model);
         };
         // G54 at machine X10 Y10 Z-20; T1 is 5 mm long, T2 0 mm.
         row("Fusion 360") << "fusion360_style.ngc"

@@ -494,16 +494,16 @@ void TestProgramParser::parse_wordColumns_keptForTheCheck()
     QVERIFY(p);
     QCOMPARE(p->allBlocks().size(), 6);
     const auto columns = [&](int i) { return p->allBlocks().at(i).columns; };
-    QCOMPARE(columns(0), (QMap<QString, int>{{"X", 8}, {"F", 15}}));
+    QCOMPARE(columns(0), (WordMap<QString, int>{{"X", 8}, {"F", 15}}));
     QCOMPARE(p->allBlocks().at(0).actionColumn, 5);
-    QCOMPARE(columns(1), (QMap<QString, int>{{"Y", 1}}));
+    QCOMPARE(columns(1), (WordMap<QString, int>{{"Y", 1}}));
     QCOMPARE(p->allBlocks().at(1).actionColumn, 0); // moves with the G1 before it
     QCOMPARE(p->allBlocks().at(1).columnOf("F"), 1);
-    QCOMPARE(columns(2), (QMap<QString, int>{{"P", 5}}));
+    QCOMPARE(columns(2), (WordMap<QString, int>{{"P", 5}}));
     QCOMPARE(p->allBlocks().at(2).actionColumn, 1);
     QCOMPARE(p->allBlocks().at(3).actionColumn, 1);
     QCOMPARE(p->allBlocks().at(4).actionColumn, 3);
-    QCOMPARE(columns(5), (QMap<QString, int>{{"L", 5}, {"P", 8}, {"Q", 11}}));
+    QCOMPARE(columns(5), (WordMap<QString, int>{{"L", 5}, {"P", 8}, {"Q", 11}}));
     QCOMPARE(p->allBlocks().at(5).columnOf("F"), 1);
     QCOMPARE(p->allBlocks().at(0).columnOf("F"), 15);
     QCOMPARE(p->allBlocks().at(0).columnOf({}), 5);

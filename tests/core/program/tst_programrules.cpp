@@ -71,7 +71,8 @@ ProgramBlock feedBlock(const QMap<QString, double>& axes, double feed)
 {
     ProgramBlock b;
     b.kind = BlockKind::Feed;
-    b.axes = axes;
+    for (auto it = axes.cbegin(); it != axes.cend(); ++it)
+        b.axes.insert(it.key(), it.value());
     b.feed = feed;
     return b;
 }
