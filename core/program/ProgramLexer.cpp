@@ -157,7 +157,7 @@ private:
         for (const QChar ch : written)
             if (!ch.isSpace())
                 text += char(ch.unicode());
-        m_out->words << ProgramWord{letter, *value, letterColumn, std::move(text)};
+        m_out->words.push_back(ProgramWord{letter, *value, letterColumn, std::move(text)});
         if (letter == QLatin1Char('O'))
             readKeyword();
     }
@@ -199,7 +199,6 @@ private:
 LexedLine ProgramLexer::lex(QStringView line, int lineNumber)
 {
     LexedLine out;
-    out.words.reserve(6); // a CAM line has a few words: one allocation, not one per word
     LineReader(line, lineNumber, &out).run();
     return out;
 }

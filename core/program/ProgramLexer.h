@@ -1,6 +1,7 @@
 #pragma once
 #include "ProgramBlock.h"
 #include <QCoreApplication>
+#include <QVarLengthArray>
 #include <string>
 
 namespace stepdeck::program {
@@ -23,9 +24,12 @@ struct ProgramWord
 
 // A line split into words. O words carry their keyword ("repeat", "endrepeat") and the
 // repeat count as written; comments give the first one's text (the M0 prompt).
+// A line's words: in place up to 8 (a CAM line has a few; no allocation per line).
+using ProgramWords = QVarLengthArray<ProgramWord, 8>;
+
 struct LexedLine
 {
-    QList<ProgramWord> words;
+    ProgramWords words;
     QString keyword; // after an O word, lower case
     int keywordColumn = 0;
     std::optional<double> keywordValue; // "O1 repeat [3]" -> 3

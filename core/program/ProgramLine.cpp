@@ -93,9 +93,11 @@ public:
     LineWords(int line, const QStringList& axisNames) : m_line(line), m_axisNames(axisNames) {}
 
     // Sorts every word; false with *error at the first that does not fit.
-    bool sort(const QList<ProgramWord>& words, Words* out, std::optional<ProgramError>* error)
+    bool sort(const ProgramWord* first, const ProgramWord* last, Words* out,
+              std::optional<ProgramError>* error)
     {
-        for (const ProgramWord& w : words) {
+        for (const ProgramWord* it = first; it != last; ++it) {
+            const ProgramWord& w = *it;
             const QString why = sortWord(w, out);
             if (!why.isEmpty()) {
                 *error = ProgramError{m_line, w.column, why};
@@ -481,29 +483,30 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         *error = ProgramError{lineNumber, column, message};
         return std::nullopt;
     };
-    QList<ProgramWord> words = line.words;
-    if (words.isEmpty() && line.message.isEmpty())
+    // The words after an N number (Words point into line.words).
+    const ProgramWord* first = line.words.cbegin();
+    const ProgramWord* const last = line.words.cend();
+    if (first == last && line.message.isEmpty())
         return std::nullopt;
-    if (words.isEmpty()) { // only "(MSG, text)": a block that says it and does nothing else
+    if (first == last) { // only "(MSG, text)": a block that says it and does nothing else
         ProgramBlock b;
         b.message = line.message;
         carryModal(*modal, &b);
         return b;
     }
-    if (words.first().letter == QLatin1Char('N')) {
-        if (!isWhole(words.first().value) || words.first().value < 0)
-            return fail(words.first().column,
-                        tr("%1: N takes a whole number").arg(words.first().valueText()));
-        words.removeFirst();
+    if (first->letter == QLatin1Char('N')) {
+        if (!isWhole(first->value) || first->value < 0)
+            return fail(first->column, tr("%1: N takes a whole number").arg(first->valueText()));
+        ++first;
     }
-    if (!words.isEmpty() && words.first().letter == QLatin1Char('O')) {
-        if (words.size() > 1)
-            return fail(words.at(1).column,
-                        tr("O%1 stands alone on its line").arg(words.first().valueText().mid(1)));
-        return repeatBlock(line, words.first(), lineNumber, error);
+    if (first != last && first->letter == QLatin1Char('O')) {
+        if (last - first > 1)
+            return fail(first[1].column,
+                        tr("O%1 stands alone on its line").arg(first->valueText().mid(1)));
+        return repeatBlock(line, *first, lineNumber, error);
     }
     Words sorted;
-    if (!LineWords(lineNumber, axisNames).sort(words, &sorted, error))
+    if (!LineWords(lineNumber, axisNames).sort(first, last, &sorted, error))
         return std::nullopt;
     ModalState next = *modal;
     if (const auto [column, why] = applyModalWords(&sorted, &next); column > 0)

@@ -155,7 +155,7 @@ void ProgramParser::parseLine(const QString& text)
 // reported as well.
 void ProgramParser::noteBrokenRepeat(const LexedLine& lexed)
 {
-    const QList<ProgramWord>& w = lexed.words;
+    const ProgramWords& w = lexed.words;
     const qsizetype o = !w.isEmpty() && w.first().letter == QLatin1Char('N') ? 1 : 0;
     if (o < w.size() && w.at(o).letter == QLatin1Char('O') &&
         lexed.keyword == QLatin1String("repeat") && m_openRepeats.size() < kMaxNesting &&

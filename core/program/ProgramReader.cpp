@@ -33,18 +33,15 @@ ProgramReader::ProgramReader(const Program& program)
 ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axisNames)
     : m_source(source), m_axisNames(axisNames),
       m_reader(std::make_unique<ProgramSourceReader>(source)),
-      m_live(std::make_unique<ProgramParser>(axisNames))
+      m_live(std::make_unique<ProgramParser>(axisNames)), m_window(kWindowBlocks)
 {
     QString why;
     if (!m_reader->open(&why))
         fail(why);
     m_size = m_reader->size();
     m_live->setSink([this](ProgramBlock&& block) {
-        m_window.push_back(std::move(block));
-        if (m_window.size() > kWindowBlocks) {
-            m_window.pop_front();
+        if (!m_window.push(std::move(block)))
             ++m_windowFirst;
-        }
     });
 }
 

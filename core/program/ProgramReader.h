@@ -1,8 +1,8 @@
 #pragma once
 #include "Program.h"
 #include "ProgramParser.h"
-#include <deque>
 #include <memory>
+#include <vector>
 
 namespace stepdeck::program {
 
@@ -70,7 +70,35 @@ private:
     std::unique_ptr<ProgramParser> m_live;
     qint64 m_liveOffset = 0;
     bool m_liveEnd = false;
-    std::deque<ProgramBlock> m_window;
+    // The last blocks parsed, oldest first, in a ring of reused slots (a block is too large
+    // for std::deque to keep more than one per allocation).
+    class Window
+    {
+    public:
+        explicit Window(size_t capacity) : m_slots(capacity) {}
+        size_t size() const { return m_count; }
+        bool empty() const { return m_count == 0; }
+        ProgramBlock& operator[](size_t i) { return m_slots[(m_head + i) % m_slots.size()]; }
+        ProgramBlock& back() { return (*this)[m_count - 1]; }
+        void clear() { m_head = m_count = 0; }
+        // false: full, the oldest gave way.
+        bool push(ProgramBlock&& block)
+        {
+            if (m_count < m_slots.size()) {
+                (*this)[m_count++] = std::move(block);
+                return true;
+            }
+            m_slots[m_head] = std::move(block);
+            m_head = (m_head + 1) % m_slots.size();
+            return false;
+        }
+
+    private:
+        std::vector<ProgramBlock> m_slots;
+        size_t m_head = 0;
+        size_t m_count = 0;
+    };
+    Window m_window{0};
     int m_windowFirst = 0;
     // A checkpoint's blocks read again.
     std::vector<ProgramBlock> m_chunk;

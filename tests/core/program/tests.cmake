@@ -1,5 +1,7 @@
 # Motion programs (issue 20): the G-code subset's lexer and parser.
 stepdeck_add_test(tst_programlexer SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlexer.cpp LABELS unit)
+# A line's words in place (issue 29's check rate): against QMap, step by step.
+stepdeck_add_test(tst_wordmap SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_wordmap.cpp LABELS unit)
 stepdeck_add_test(tst_programparser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programparser.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramParserTestSupport.h LABELS unit)
 stepdeck_add_test(tst_programreader SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programreader.cpp
