@@ -145,7 +145,8 @@ private:
             return;
         }
         ++m_pos;
-        const QChar letter = c.toUpper();
+        // An ASCII letter (checked above): upper case without QChar's Unicode tables.
+        const QChar letter = c.unicode() >= 'a' ? QChar(c.unicode() - ('a' - 'A')) : c;
         const qsizetype valueStart = m_pos;
         const std::optional<double> value = readNumber([letter] { return QString(letter); });
         if (!value)
