@@ -4245,6 +4245,10 @@
             <source>the program's file changed: check it again</source>
             <translation>die Datei des Programms hat sich geändert: erneut prüfen</translation>
         </message>
+        <message>
+            <source>the machine changed while the program was checked (a position, an offset, a tool or a parameter): run it again to check it anew</source>
+            <translation>die Maschine hat sich geändert, während das Programm geprüft wurde (eine Position, ein Nullpunkt, ein Werkzeug oder ein Parameter): erneut starten, um es neu zu prüfen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramSourceReader</name>
@@ -6753,6 +6757,14 @@ W1500</translation>
             <source>the program is not checked yet</source>
             <translation>das Programm ist noch nicht geprüft</translation>
         </message>
+        <message>
+            <source>stopped while the program was checked before the run</source>
+            <translation>gestoppt, während das Programm vor dem Lauf geprüft wurde</translation>
+        </message>
+        <message>
+            <source>Checking the program before the run…</source>
+            <translation>Das Programm wird vor dem Lauf geprüft…</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>
@@ -6909,6 +6921,13 @@ W1500</translation>
         <message>
             <source>Line %1 (M0): %2</source>
             <translation>Zeile %1 (M0): %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ProgramStarter</name>
+        <message>
+            <source>the machine was closed</source>
+            <translation>die Maschine wurde geschlossen</translation>
         </message>
     </context>
     <context>

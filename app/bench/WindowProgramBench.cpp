@@ -107,7 +107,9 @@ Figure measure(const ModelInfo& model, int seconds)
     wall.start();
     page->controls()->runButton()->click();
     program::ProgramRunner* runner = page->runner();
-    waitUntil([&] { return runner && program::isEnded(runner->state()); }, seconds * 1000);
+    // The check before the run goes off the GUI thread first (ProgramStarter).
+    waitUntil([&] { return runner && !page->isStarting() && program::isEnded(runner->state()); },
+              seconds * 1000);
     f.seconds = double(wall.nsecsElapsed()) / 1e9;
     f.guiPercent = 100.0 * (cpuSeconds(RUSAGE_THREAD) - gui0) / f.seconds;
     f.processPercent = 100.0 * (cpuSeconds(RUSAGE_SELF) - process0) / f.seconds;

@@ -68,18 +68,59 @@ int ProgramRunner::currentLine() const
 bool ProgramRunner::start(const Program& program, int fromLine, QList<ProgramError>* errors,
                           bool stepOnly)
 {
+    const MachineFacts facts = startFacts();
+    return startChecked(program, fromLine, facts,
+                        checkForStart(program, facts, fromLine, m_checkProgress), errors, stepOnly);
+}
+
+MachineFacts ProgramRunner::startFacts() const
+{
+    MachineFacts facts = factsOf(*m_machine);
+    facts.coordinateSystems = m_nextSystems;
+    facts.activeSystem = m_nextActive;
+    facts.tools = m_nextTools;
+    return facts;
+}
+
+ProgramCheckResult ProgramRunner::checkForStart(const Program& program, const MachineFacts& facts,
+                                                int fromLine, const CheckProgress& progress)
+{
+    return ProgramCheck::check(program, facts, fromLine, progress);
+}
+
+namespace {
+// What can change on an open machine between a check and the start: where the axes stand and
+// which are known, what the devices hold, the offsets and tools the run takes. The description,
+// models and capabilities are the machine's own for as long as it is open.
+bool sameStartFacts(const MachineFacts& a, const MachineFacts& b)
+{
+    return a.knownPositions == b.knownPositions && a.knownParameters == b.knownParameters &&
+           a.setupIncomplete == b.setupIncomplete && a.coordinateSystems == b.coordinateSystems &&
+           a.activeSystem == b.activeSystem && a.tools == b.tools &&
+           a.description.axes.size() == b.description.axes.size();
+}
+} // namespace
+
+bool ProgramRunner::startChecked(const Program& program, int fromLine,
+                                 const MachineFacts& checkedFacts,
+                                 const ProgramCheckResult& checked, QList<ProgramError>* errors,
+                                 bool stepOnly)
+{
     if (m_state == RunState::Running || m_state == RunState::Paused ||
         m_state == RunState::Stopping) {
         if (errors)
             *errors = {ProgramError{0, 0, tr("a program runs already")}};
         return false;
     }
-    MachineFacts facts = factsOf(*m_machine);
-    facts.coordinateSystems = m_nextSystems;
-    facts.activeSystem = m_nextActive;
-    facts.tools = m_nextTools;
-    const ProgramCheckResult checked =
-        ProgramCheck::check(program, facts, fromLine, m_checkProgress);
+    const MachineFacts facts = startFacts();
+    if (!sameStartFacts(checkedFacts, facts)) {
+        if (errors)
+            *errors = {ProgramError{0, 0,
+                                    tr("the machine changed while the program was checked (a "
+                                       "position, an offset, a tool or a parameter): run it "
+                                       "again to check it anew")}};
+        return false;
+    }
     if (!checked.ok()) {
         if (errors)
             *errors = checked.cancelled

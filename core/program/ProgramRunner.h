@@ -59,6 +59,17 @@ public:
     // *errors when the check fails or a program runs already: nothing is sent.
     bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
                bool stepOnly = false);
+    // start() in two halves, so that a long program's check runs off the GUI thread (issue 29:
+    // 10^7 lines take seconds): startFacts() here, checkForStart() on any thread, then
+    // startChecked() here with what that check used and found. startChecked() refuses (nothing
+    // sent) when the machine's facts changed meanwhile (an axis moved or became known, a work
+    // offset, a tool, a parameter the device holds): the check would not be of this machine.
+    MachineFacts startFacts() const;
+    static ProgramCheckResult checkForStart(const Program& program, const MachineFacts& facts,
+                                            int fromLine, const CheckProgress& progress = {});
+    bool startChecked(const Program& program, int fromLine, const MachineFacts& checkedFacts,
+                      const ProgramCheckResult& checked, QList<ProgramError>* errors,
+                      bool stepOnly = false);
     // The coordinate systems programs run in (MachineFacts::coordinateSystems, the active
     // one): taken at start() for the whole run, so that a zero set while the run holds does
     // not move the rest of the path. G10 changes the run's copy and says so

@@ -1,4 +1,5 @@
 #include "ProgramBackgroundCheck.h"
+#include "program/ProgramRunner.h"
 #include <QPromise>
 #include <QThreadPool>
 #include <memory>
@@ -38,19 +39,34 @@ program::ProgramCheckResult ProgramBackgroundCheck::run(const program::ProgramSo
 void ProgramBackgroundCheck::start(const program::ProgramSource& source,
                                    const QStringList& axisNames, const program::MachineFacts& facts)
 {
-    m_watcher.future().cancel(); // the one running is of an older text
+    launch([source, axisNames, facts](const program::CheckProgress& progress) {
+        return run(source, axisNames, facts, progress);
+    });
+}
+
+void ProgramBackgroundCheck::start(const program::Program& program,
+                                   const program::MachineFacts& facts, int fromLine)
+{
+    launch([program, facts, fromLine](const program::CheckProgress& progress) {
+        return program::ProgramRunner::checkForStart(program, facts, fromLine, progress);
+    });
+}
+
+void ProgramBackgroundCheck::launch(Job job)
+{
+    m_watcher.future().cancel(); // the one running is of an older request
     auto promise = std::make_shared<QPromise<program::ProgramCheckResult>>();
     promise->setProgressRange(0, kProgressSteps);
     promise->start();
     m_checking = true;
     m_watcher.setFuture(promise->future());
-    QThreadPool::globalInstance()->start([promise, source, axisNames, facts] {
+    QThreadPool::globalInstance()->start([promise, job = std::move(job)] {
         const program::CheckProgress progress = [&promise](qint64 done, qint64 total) {
             if (total > 0)
                 promise->setProgressValue(int(done * kProgressSteps / total));
             return !promise->isCanceled();
         };
-        program::ProgramCheckResult result = run(source, axisNames, facts, progress);
+        program::ProgramCheckResult result = job(progress);
         if (!result.cancelled)
             promise->addResult(std::move(result));
         promise->finish();

@@ -2,6 +2,7 @@
 #include "program/ProgramCheck.h"
 #include <QFutureWatcher>
 #include <QObject>
+#include <functional>
 
 namespace stepdeck::ui {
 
@@ -27,6 +28,8 @@ public:
     {
         start(program::ProgramSource::bytes(text), axisNames, facts);
     }
+    // The check before a run (ProgramRunner::checkForStart): a program read before, from a line.
+    void start(const program::Program& program, const program::MachineFacts& facts, int fromLine);
     void cancel(); // the running request stops and reports nothing
     bool isChecking() const { return m_checking; }
 
@@ -41,6 +44,9 @@ Q_SIGNALS:
     void progress(int step); // 0..kProgressSteps of the text read
 
 private:
+    using Job = std::function<program::ProgramCheckResult(const program::CheckProgress&)>;
+    void launch(Job job);
+
     QFutureWatcher<program::ProgramCheckResult> m_watcher;
     bool m_checking = false;
 };

@@ -40,7 +40,10 @@ ProgramCheckStatus::ProgramCheckStatus(ElidedLabel* result, int progressSteps, Q
 void ProgramCheckStatus::started()
 {
     m_progress->setValue(0);
-    m_delay->start();
+    if (m_delay->interval() <= 0)
+        setCurrentIndex(1); // no delay: at once, not at the next turn of the event loop
+    else
+        m_delay->start();
 }
 
 void ProgramCheckStatus::finished()

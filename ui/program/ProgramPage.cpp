@@ -10,6 +10,7 @@
 #include "ProgramPathView.h"
 #include "ProgramPreviewView.h"
 #include "ProgramPromptBanner.h"
+#include "ProgramStarter.h"
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -33,7 +34,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
       m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
       m_controls(new ProgramControls(this)), m_recheck(new QTimer(this)),
-      m_checker(new ProgramBackgroundCheck(this))
+      m_checker(new ProgramBackgroundCheck(this)), m_starter(new ProgramStarter(this))
 {
     setObjectName(QStringLiteral("programPage"));
     m_files = new ProgramFiles(m_editor, this);
@@ -48,6 +49,9 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_checker, &ProgramBackgroundCheck::progress, m_checkStatus,
             &ProgramCheckStatus::setProgress);
     connect(m_checkStatus, &ProgramCheckStatus::cancelRequested, this, &ProgramPage::cancelCheck);
+    connect(m_starter, &ProgramStarter::progress, m_checkStatus, &ProgramCheckStatus::setProgress);
+    connect(m_starter, &ProgramStarter::started, this, &ProgramPage::onStarted);
+    connect(m_starter, &ProgramStarter::refused, this, &ProgramPage::onStartRefused);
     connect(m_checkStatus, &ProgramCheckStatus::checkRequested, this, &ProgramPage::checkNow);
     connect(m_editor, &QPlainTextEdit::textChanged, this, [this] {
         if (!isRunning())
@@ -150,6 +154,10 @@ QPushButton* ProgramPage::cancelCheckButton() const
 
 void ProgramPage::cancelCheck()
 {
+    if (m_starter->isPending()) { // the check before a run: the run does not start
+        m_starter->cancel();
+        return;
+    }
     m_checker->cancel();
     m_checkStatus->finished();
     m_checkOk = false;
@@ -179,6 +187,7 @@ void ProgramPage::onMachineChanged()
     if (m_runner && (m_runnerMachine.isNull() || m_runnerMachine != machine)) {
         // The machine the runner ran on is closed (its controllers stopped with it).
         const bool wasRunning = isRunning();
+        m_starter->cancel(); // a run about to start does not
         delete m_runner;
         m_runner = nullptr;
         m_editor->setRunning(false);
@@ -245,7 +254,7 @@ std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>*
 void ProgramPage::checkNow()
 {
     m_recheck->stop();
-    if (isRunning())
+    if (isRunning() || isStarting())
         return; // the runner checked what runs; the text cannot change meanwhile
     if (m_files->largePath().isEmpty())
         m_controls->setLineCount(m_editor->blockCount());
@@ -327,7 +336,7 @@ void ProgramPage::onMachineStatus()
 {
     // Where the axes stand is part of the check (known positions, relative moves): once the
     // machine rests somewhere new, or an axis became known, the text is checked again.
-    if (!isRunning() && !m_recheck->isActive() &&
+    if (!isRunning() && !isStarting() && !m_recheck->isActive() &&
         (positionsSignature() != m_checkedPositions || rulesFactsChanged()))
         m_recheck->start();
     if (isRunning())

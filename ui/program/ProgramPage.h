@@ -19,6 +19,7 @@ namespace stepdeck::ui {
 class ElidedLabel;
 class MachineContext;
 class ProgramBackgroundCheck;
+class ProgramStarter;
 class ProgramCheckStatus;
 class ProgramControls;
 class ProgramEditor;
@@ -52,6 +53,8 @@ public:
     QString checkText() const;
     QString messageText() const;
     bool isRunning() const;
+    // Run was pressed and the check before it runs (ProgramStarter): nothing moves yet.
+    bool isStarting() const;
     // The check of the text as it stands now, without waiting for the debounce; it runs off
     // the GUI thread (ProgramBackgroundCheck) and reports when done (isChecking() until then).
     // A file too long to edit (ProgramFiles::largePath()) is checked from the file.
@@ -83,6 +86,8 @@ private:
     bool rulesFactsChanged() const; // since the last check (m_checkedParameters, ...)
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
     bool start(int fromLine, bool stepOnly);
+    void onStarted(const program::Program& program);
+    void onStartRefused(const QList<program::ProgramError>& errors);
     void showCheck(const program::ProgramCheckResult& result);
     void cancelCheck();
     void updateControls();
@@ -108,6 +113,7 @@ private:
     ProgramControls* m_controls;
     QTimer* m_recheck;
     ProgramBackgroundCheck* m_checker;
+    ProgramStarter* m_starter;
     program::ProgramRunner* m_runner = nullptr;
     QPointer<machine::Machine> m_runnerMachine;
     bool m_checkOk = false;

@@ -1,5 +1,6 @@
 // ProgramPage, part 2: running the program through the ProgramRunner and showing how the run
 // goes (running line, progress, estimated time left, M0, how it ended).
+#include "ProgramCheckStatus.h"
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
 #include "ProgramFiles.h"
@@ -7,6 +8,7 @@
 #include "ProgramPage.h"
 #include "ProgramPreviewView.h"
 #include "ProgramPromptBanner.h"
+#include "ProgramStarter.h"
 #include "common/Dialogs.h"
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
@@ -30,6 +32,8 @@ bool ProgramPage::isRunning() const
 
 void ProgramPage::abortRun()
 {
+    // A run whose check before it is still going never starts after STOP or PANIC.
+    m_starter->cancel(tr("stopped while the program was checked before the run"));
     if (isRunning())
         m_runner->abort();
 }
@@ -77,9 +81,16 @@ void ProgramPage::runFromLine(int line)
                      });
 }
 
+bool ProgramPage::isStarting() const
+{
+    return m_starter->isPending();
+}
+
+// The check before the run goes off the GUI thread (ProgramStarter): a long program takes
+// seconds, and STOP, PANIC and the window stay live meanwhile. Nothing moves until it passed.
 bool ProgramPage::start(int fromLine, bool stepOnly)
 {
-    if (!m_runner || isRunning())
+    if (!m_runner || isRunning() || isStarting())
         return false;
     m_recheck->stop();
     QList<program::ProgramError> errors;
@@ -88,18 +99,39 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
     m_runner->setCoordinateSystems(m_context->workOffsets()->systems(),
                                    m_context->workOffsets()->active());
     m_runner->setToolTable(m_context->tools()->table());
-    if (parsed && m_runner->start(*parsed, fromLine, &errors, stepOnly)) {
-        m_running = *parsed;
-        m_progress.reset(m_runner->preview());
-        m_stoppingText.clear();
-        m_banner->clearPrompt();
-        onState(m_runner->state());
-        return true;
+    if (!parsed || !m_starter->request(m_runner, *parsed, fromLine, stepOnly)) {
+        onStartRefused(errors);
+        return false;
     }
+    m_editor->setRunning(true); // the text that runs is the one checked now
+    m_files->setEnabled(false);
+    m_checkStatus->started();
+    m_banner->setStatus(tr("Checking the program before the run…"));
+    updateControls();
+    return true;
+}
+
+void ProgramPage::onStarted(const program::Program& program)
+{
+    m_checkStatus->finished();
+    m_running = program;
+    m_progress.reset(m_runner->preview());
+    m_stoppingText.clear();
+    m_banner->clearPrompt();
+    onState(m_runner->state());
+}
+
+void ProgramPage::onStartRefused(const QList<program::ProgramError>& errors)
+{
+    m_checkStatus->finished();
+    m_editor->setRunning(false);
+    m_files->setEnabled(true);
     m_editor->setErrors(errors);
     m_banner->setStatus(errors.isEmpty() ? tr("Not started.")
                                          : tr("Not started: %1").arg(errors.first().text()));
-    return false;
+    updateControls();
+    if (m_context->machine())
+        m_recheck->start(); // the check line follows the machine again
 }
 
 void ProgramPage::onState(RunState state)
@@ -163,7 +195,7 @@ void ProgramPage::updateControls()
     const bool connected =
         ms != machine::MachineState::Disconnected && ms != machine::MachineState::LinkLost;
     const bool pausePending = m_runner && m_runner->pausePending();
-    m_controls->setState(state, pausePending, m_checkOk && connected);
+    m_controls->setState(state, pausePending, m_checkOk && connected && !isStarting());
     if (!m_runner)
         return;
     const int line = m_runner->currentLine();

@@ -18,6 +18,8 @@ private Q_SLOTS:
     void cleanup() { tearDownRig(); }
     void run_homeMovesRepeatDwell_devicesGetTheBlocksInOrder();
     void start_absoluteMoveOnUnknownAxis_refusedNothingSent();
+    void startChecked_machineChangedSinceTheCheck_refusedNothingSent_data();
+    void startChecked_machineChangedSinceTheCheck_refusedNothingSent();
     void pause_duringMove_holdsAfterTheBlockResumeGoesOn();
     void step_oneBlockThenPaused();
     void pause_m0_pausedWithItsPrompt();
@@ -76,6 +78,51 @@ void TestProgramRunner::start_absoluteMoveOnUnknownAxis_refusedNothingSent()
     QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
     QCOMPARE(acceptedCount(*m_elab), 0);
     QCOMPARE(acceptedCount(*m_nanotec), 0);
+}
+
+void TestProgramRunner::startChecked_machineChangedSinceTheCheck_refusedNothingSent_data()
+{
+    QTest::addColumn<QString>("change");
+    QTest::newRow("nothing") << QString();
+    QTest::newRow("work offset") << "offset";
+    QTest::newRow("tool table") << "tool";
+}
+
+// start() in two halves (the window checks off the GUI thread): a check of facts the machine no
+// longer has is refused, nothing sent; with the facts unchanged the run starts from it.
+void TestProgramRunner::startChecked_machineChangedSinceTheCheck_refusedNothingSent()
+{
+    QFETCH(QString, change);
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("G91 G0 X1\nM2\n", {"X", "Y", "A"}, &errors);
+    QVERIFY(p);
+    const MachineFacts facts = m_runner->startFacts();
+    const ProgramCheckResult checked = ProgramRunner::checkForStart(*p, facts, 1);
+    QVERIFY(checked.ok());
+    if (change == QLatin1String("offset")) {
+        m_runner->setWorkOffsets({{QStringLiteral("X"), 5.0}});
+    } else if (change == QLatin1String("tool")) {
+        ToolTable tools;
+        tools.insert(Tool{1, 10.0, 3.0, QStringLiteral("end mill")});
+        m_runner->setToolTable(tools);
+    }
+    const bool started = m_runner->startChecked(*p, 1, facts, checked, &errors);
+    if (change.isEmpty()) {
+        QVERIFY2(started, qPrintable(errors.value(0).text()));
+        WAIT_ENDED();
+        VERIFY_STATE(RunState::Finished);
+        QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+        return;
+    }
+    QVERIFY(!started);
+    QVERIFY2(errors.value(0).message.contains(QStringLiteral("the machine changed")),
+             qPrintable(errors.value(0).text()));
+    QCOMPARE(m_runner->state(), RunState::Idle);
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedCount(*m_elab), 0);
+    QVERIFY(still(*m_elab));
 }
 
 void TestProgramRunner::pause_duringMove_holdsAfterTheBlockResumeGoesOn()

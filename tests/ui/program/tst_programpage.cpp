@@ -73,7 +73,12 @@ private:
         page()->checkNow();
         QTRY_VERIFY(!page()->isChecking()); // off the GUI thread
     }
-    bool runState(RunState state) const { return runner() && runner()->state() == state; }
+    // A run asked for is first checked off the GUI thread (ProgramStarter): until then the
+    // runner still has the state of the run before.
+    bool runState(RunState state) const
+    {
+        return runner() && !page()->isStarting() && runner()->state() == state;
+    }
     // "stop": the STOP button, "panic": the PANIC button, else Esc in the editor.
     void stopBy(const QString& how)
     {

@@ -9,8 +9,10 @@
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPage.h"
+#include "safety/SafetyBar.h"
 #include <QProgressBar>
 #include <QPushButton>
+#include <QThreadPool>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -26,12 +28,19 @@ private Q_SLOTS:
     void largeFile_excerptReadOnly_runFromTheFileAtTheBoard();
     void largeFile_changedAfterCheck_refusedNothingSent();
     void check_long_progressShownCancelStopsIt();
+    void run_stoppedWhileCheckedBeforeIt_neverStartsNothingSent_data();
+    void run_stoppedWhileCheckedBeforeIt_neverStartsNothingSent();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
     ui::ProgramPage* page() const { return window()->programPage(); }
     program::ProgramRunner* runner() const { return page()->runner(); }
-    bool runState(RunState state) const { return runner() && runner()->state() == state; }
+    // A run asked for is first checked off the GUI thread (ProgramStarter): until then the
+    // runner still has the state of the run before.
+    bool runState(RunState state) const
+    {
+        return runner() && !page()->isStarting() && runner()->state() == state;
+    }
 
     // Two moves, then comment lines up to past the editor's limit, then one more move: the
     // lines to run sit at both ends of a file the editor does not hold.
@@ -136,6 +145,55 @@ void TestProgramPageLarge::check_long_progressShownCancelStopsIt()
     window()->findChild<QPushButton*>(QStringLiteral("programCheckNow"))->click();
     QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 60000);
     QVERIFY(!page()->isShowingCheckProgress());
+}
+
+void TestProgramPageLarge::run_stoppedWhileCheckedBeforeIt_neverStartsNothingSent_data()
+{
+    QTest::addColumn<QString>("how");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("cancel") << "cancel"
+                            << "the check was cancelled";
+    QTest::newRow("stop") << "stop"
+                          << "stopped while the program was checked before the run";
+    QTest::newRow("panic") << "panic"
+                           << "stopped while the program was checked before the run";
+}
+
+// Run checks the program once more against the machine as it stands, off the GUI thread (a
+// file of millions of lines takes seconds): progress and Cancel show, Run is off, and STOP,
+// PANIC or Cancel meanwhile mean the run never starts, also once that check would have ended.
+void TestProgramPageLarge::run_stoppedWhileCheckedBeforeIt_neverStartsNothingSent()
+{
+    QFETCH(QString, how);
+    QFETCH(QString, reason);
+    QVERIFY(m_rig.openAndConnect());
+    window()->raisePage(page());
+    page()->setCheckProgressDelay(0);
+    QVERIFY(page()->files()->load(writeLargeProgram()));
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 60000);
+    page()->controls()->runButton()->click();
+    QVERIFY(page()->isStarting());
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+    QVERIFY(page()->isShowingCheckProgress());
+    QVERIFY(page()->cancelCheckButton()->isVisible());
+    QVERIFY2(page()->messageText().contains(QStringLiteral("before the run")),
+             qPrintable(page()->messageText()));
+    if (how == QLatin1String("cancel"))
+        page()->cancelCheckButton()->click();
+    else if (how == QLatin1String("stop"))
+        window()->safetyBar()->stopButton()->click();
+    else
+        window()->safetyBar()->panicButton()->click();
+    QVERIFY(!page()->isStarting());
+    QVERIFY(!page()->isShowingCheckProgress());
+    QVERIFY2(page()->messageText().contains(reason), qPrintable(page()->messageText()));
+    // The cancelled check ends at its next step; whatever it reports then starts nothing.
+    QThreadPool::globalInstance()->waitForDone();
+    QCoreApplication::processEvents();
+    QCOMPARE(runner()->state(), RunState::Idle);
+    QVERIFY(m_rig.elab->still());
+    QCOMPARE(m_rig.elab->position(Axis::X), 0);
+    QCOMPARE(m_rig.elab->position(Axis::Y), 0);
 }
 
 QTEST_MAIN(TestProgramPageLarge)
