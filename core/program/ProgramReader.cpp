@@ -27,7 +27,6 @@ ProgramReader::ProgramReader(const Program& program)
                  .arg(program.index->bytes));
     }
     m_size = m_reader->size();
-    m_liveOffset = m_size;
 }
 
 ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axisNames)
@@ -149,6 +148,8 @@ bool ProgramReader::loadChunk(size_t checkpoint)
     }
     m_chunkFirst = from.state.blocks;
     m_chunkCheckpoint = checkpoint;
+    if (!m_live) // how far a pass over a Program got (a repeat's next pass reads back)
+        m_liveOffset = std::max(m_liveOffset, end);
     return true;
 }
 

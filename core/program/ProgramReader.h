@@ -42,7 +42,8 @@ public:
     int lastBlockLine();
     QString error() const { return m_error; }
 
-    // One pass: how far the text is read, and its length (progress).
+    // How far the text is read (over a Program: the end of the farthest checkpoint's lines read
+    // back), and its length (progress).
     qint64 bytesRead() const { return m_liveOffset; }
     qint64 totalBytes() const { return m_size; }
     bool parseFailed() const { return m_live && m_live->errorCount() > 0; }

@@ -3,6 +3,7 @@
 // what a run prints. The E-LAB simulator is on a real pty in a thread of this process; every
 // test asserts what the DEVICE received.
 #include "CliRunRig.h"
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -29,6 +30,7 @@ private Q_SLOTS:
     void dryRun_json_previewFiguresNoMotion();
     void dryRun_human_linesExtentsDuration();
     void dryRun_toolTableAndOffsets_appliedToTheCheck();
+    void dryRun_longProgramStderrATerminal_checkProgressShownThenErased();
     void run_progressLinePerBlockOnStderr();
     void run_json_eventPerBlockThenSummary();
     void fromLine_beyondTheFile_exit2();
@@ -206,6 +208,45 @@ void TestCliRun::dryRun_json_previewFiguresNoMotion()
     QVERIFY(m_device->moves().isEmpty());
     QCOMPARE(m_device->position(), qint64(0));
     QVERIFY(m_device->still());
+}
+
+// stderr a terminal (a pty): a long program's reading and check say how far they are ("reading
+// FILE: n %", "checking FILE: n %", each over the last on one line) and erases that line before
+// what follows; with stderr a pipe (a log, a script) it says nothing of the kind.
+void TestCliRun::dryRun_longProgramStderrATerminal_checkProgressShownThenErased()
+{
+    QByteArray text;
+    for (int i = 0; i < 200000; ++i)
+        text += "G4 P0\n";
+    text += "M2\n";
+    const QString path = writeProgram(*m_dir, "long.ngc", text);
+    PtyEndpoint terminal;
+    QVERIFY(terminal.create());
+    QByteArray shown;
+    connect(&terminal, &Transport::dataReceived, this,
+            [&](const QByteArray& bytes) { shown += bytes; });
+    QProcess cli;
+    cli.setStandardErrorFile(terminal.slavePath());
+    cli.start(cliPath(), args(path, {"--dry-run"}));
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_COMPARE_WITH_TIMEOUT(cli.state(), QProcess::NotRunning, 60000);
+    QCOMPARE(cli.exitCode(), 0);
+    QTRY_VERIFY2(shown.contains("\r\033[K"), shown.right(200).constData()); // erased at the end
+    // Read first (the parser), then checked against the machine.
+    const QByteArray name = QFileInfo(path).fileName().toUtf8();
+    QVERIFY2(shown.contains("\rreading ") && shown.contains(name + ": "),
+             shown.left(300).constData());
+    QVERIFY2(shown.indexOf("\rchecking ") > shown.indexOf("\rreading "),
+             shown.left(300).constData());
+    int steps = 0; // distinct figures, each written over the last with a carriage return
+    for (qsizetype at = shown.indexOf("\rchecking "); at >= 0;
+         at = shown.indexOf("\rchecking ", at + 1))
+        ++steps;
+    QVERIFY2(steps >= 2, shown.left(300).constData());
+    // The same check with stderr a pipe: no progress at all.
+    const CliRun piped = runCli(args(path, {"--dry-run"}));
+    QCOMPARE(piped.exitCode, 0);
+    QVERIFY2(!piped.err.contains(" %") && !piped.err.contains('\r'), piped.err.constData());
 }
 
 void TestCliRun::dryRun_human_linesExtentsDuration()

@@ -167,6 +167,13 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                                                 15.08, 20.16, -22.54, // the bottom
                                                 15.08, 20.16, -18.73, // G99
                                                 15.08, 20.16, -14.92};
+        // A pen plotter's program in the style of Inkscape's G-code extensions: "%" around it,
+        // Z words on every line, a comment glued to a number, comments after M2.
+        row("Inkscape plotter") << "inkscape_plotter_style.ngc" << QString()
+                                << QList<double>{12, 12, -15, 12, 12, -20, 16, 12, -20, // G01
+                                                 18, 14, -20,                           // G02
+                                                 18, 16, -20, 16, 18, -20,              // G03
+                                                 12, 12, -20, 12, 12, -15, 10, 10, -15};
         // The SMC-IC4 has no spindle and no coolant: programs with M3, M5, M8 are refused there.
         if (QLatin1String(model) == QLatin1String("emis"))
             continue;
@@ -188,6 +195,15 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                                                    15,    15,    -10,   // G98: the initial level
                                                    17.54, 15,    -21.8, 20.08, 15,
                                                    -21.8, 20.08, 15,    -10};
+        // LinuxCNC's own style: G10 L2 sets G55 (X20 Y10 Z-20), T1 (5 mm) with G43, a repeat
+        // of incremental squares, G53 at the end.
+        QList<double> pockets{0, 0, -10, 20, 10, -10};
+        for (double x : {20, 24, 28})
+            pockets << QList<double>{x, 10, -15.5, x + 2, 10, -15.5, x + 2, 12, -15.5, x, 12, -15.5,
+                                     x, 10, -15.5, x,     10, -10,   x + 4, 10, -10};
+        pockets << QList<double>{32, 10, 0};
+        row("LinuxCNC") << "linuxcnc_style.ngc"
+                        << "Load tool 1 (3 mm flat end mill)" << pockets;
         row("Estlcam") << "estlcam_style.nc" << QString()
                        << QList<double>{13, 13, -20.5, 15, 15, -20.5, 17, 13, -20.5};
     }

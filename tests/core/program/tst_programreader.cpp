@@ -76,8 +76,32 @@ private Q_SLOTS:
     void check_onePass_sameAsParsedProgram_data();
     void check_onePass_sameAsParsedProgram();
     void check_progressCancels_nothingKnown();
+    void bytesRead_overAProgram_followsTheBlocksReadBack();
     void check_onePassParseError_parserErrorsOnly();
 };
+
+// A check over a Program (the run's start, the CLI's --dry-run) reports its progress by how far
+// the blocks it read back reach, not the file's length from the start.
+void TestProgramReader::bytesRead_overAProgram_followsTheBlocksReadBack()
+{
+    const QByteArray text = longProgram(20000);
+    std::optional<Program> p;
+    const QList<ProgramBlock> blocks = streamedBlocks(text, &p);
+    QVERIFY(p);
+    ProgramReader reader(*p);
+    QCOMPARE(reader.totalBytes(), qint64(text.size()));
+    QCOMPARE(reader.bytesRead(), qint64(0));
+    QVERIFY(reader.at(0));
+    const qint64 first = reader.bytesRead();
+    QVERIFY2(first > 0 && first < text.size() / 4, qPrintable(QString::number(first)));
+    QVERIFY(reader.at(int(blocks.size()) / 2));
+    const qint64 half = reader.bytesRead();
+    QVERIFY2(half > first && half < text.size(), qPrintable(QString::number(half)));
+    QVERIFY(reader.at(0)); // read back from the start: the farthest reach stays
+    QCOMPARE(reader.bytesRead(), half);
+    QVERIFY(reader.at(int(blocks.size()) - 1));
+    QCOMPARE(reader.bytesRead(), qint64(text.size()));
+}
 
 void TestProgramReader::index_checkpointsEveryFewThousandLines()
 {
