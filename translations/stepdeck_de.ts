@@ -1173,6 +1173,10 @@
             <source>link lost: %1; %2</source>
             <translation>Verbindung verloren: %1; %2</translation>
         </message>
+        <message>
+            <source>this controller cannot run a contour as a step stream</source>
+            <translation>diese Steuerung kann keine Kontur als Schrittstrom fahren</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ControllerSession</name>
@@ -1891,6 +1895,14 @@
             <source>jog refused: setup incomplete (tmInvSetup): %1</source>
             <translation>Tippbetrieb abgelehnt: Einrichtung unvollständig (tmInvSetup): %1</translation>
         </message>
+        <message>
+            <source>refused: the contour runs at %1 ticks/s, but the board's feed speed on %2 is %3: write %1 on X, Y and Z first</source>
+            <translation>abgelehnt: die Kontur läuft mit %1 Takten/s, die Vorschubgeschwindigkeit der Karte auf %2 ist aber %3: zuerst %1 auf X, Y und Z schreiben</translation>
+        </message>
+        <message>
+            <source>not known</source>
+            <translation>nicht bekannt</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabCtlJog</name>
@@ -1971,6 +1983,10 @@
         <message>
             <source>axis %1 did not come to a standstill; the reversed velocity was not sent</source>
             <translation>Achse %1 ist nicht zum Stillstand gekommen; die umgekehrte Geschwindigkeit wurde nicht gesendet</translation>
+        </message>
+        <message>
+            <source>no contour to run</source>
+            <translation>keine Kontur zu fahren</translation>
         </message>
     </context>
     <context>
@@ -2977,6 +2993,56 @@
         <message>
             <source>controller "%1": writing its setup from %2 failed: %3</source>
             <translation>Steuerung „%1“: Schreiben der Einrichtung aus %2 fehlgeschlagen: %3</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::motion::CanonicalMove</name>
+        <message>
+            <source>a move over %1 axes (1..%2)</source>
+            <translation>eine Bewegung über %1 Achsen (1..%2)</translation>
+        </message>
+        <message>
+            <source>a move to a position that is not a number</source>
+            <translation>eine Bewegung zu einer Position, die keine Zahl ist</translation>
+        </message>
+        <message>
+            <source>a feed move without a feed rate</source>
+            <translation>eine Vorschubbewegung ohne Vorschub</translation>
+        </message>
+        <message>
+            <source>an arc without its centre</source>
+            <translation>ein Bogen ohne seinen Mittelpunkt</translation>
+        </message>
+        <message>
+            <source>an arc whose geometry is not valid</source>
+            <translation>ein Bogen mit ungültiger Geometrie</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::motion::ContourSteps</name>
+        <message>
+            <source>the contour is closed: no move follows its end</source>
+            <translation>die Kontur ist abgeschlossen: nach ihrem Ende folgt keine Bewegung</translation>
+        </message>
+        <message>
+            <source>the contour's queue is full (%1 moves)</source>
+            <translation>die Warteschlange der Kontur ist voll (%1 Bewegungen)</translation>
+        </message>
+        <message>
+            <source>a rapid is not part of a contour: the stream ends before it</source>
+            <translation>ein Eilgang gehört nicht zu einer Kontur: der Strom endet davor</translation>
+        </message>
+        <message>
+            <source>a move over %1 axes in a stream of %2</source>
+            <translation>eine Bewegung über %1 Achsen in einem Strom über %2</translation>
+        </message>
+        <message>
+            <source>line %1 does not start where the contour stands (axis %2: %3, not %4)</source>
+            <translation>Zeile %1 beginnt nicht dort, wo die Kontur steht (Achse %2: %3, nicht %4)</translation>
+        </message>
+        <message>
+            <source>line %1: its feed needs %2 ticks/s, the stream runs %3 (highest feed %4 unit/s)</source>
+            <translation>Zeile %1: ihr Vorschub braucht %2 Takte/s, der Strom läuft mit %3 (höchster Vorschub %4 Einheiten/s)</translation>
         </message>
     </context>
     <context>

@@ -97,6 +97,13 @@ void Controller::feedStream(RequestId id, const QVector<AxisVector>&)
     finishError(id, ErrorKind::Unsupported, tr("this controller has no single-step feed stream"));
 }
 
+void Controller::feedContour(RequestId id, std::shared_ptr<motion::ContourFeed>)
+{
+    finishError(id, ErrorKind::Unsupported,
+                tr("this controller cannot run a contour as a step "
+                   "stream"));
+}
+
 void Controller::velocityMove(RequestId id, const AxisVector&)
 {
     finishError(id, ErrorKind::Unsupported, tr("this controller has no velocity move"));

@@ -13,6 +13,11 @@
 #include <QPointer>
 #include <QTimer>
 #include <functional>
+#include <memory>
+
+namespace stepdeck::motion {
+class ContourFeed;
+}
 
 namespace stepdeck {
 
@@ -67,6 +72,10 @@ public:
     virtual void feed(RequestId id, const AxisVector& steps);
     // A stream of single steps: per axis -1, 0 or +1 per step (E-LAB DC2). Default: unsupported.
     virtual void feedStream(RequestId id, const QVector<AxisVector>& steps);
+    // A contour laid on ticks (issue 30, motion::ContourFeed): one stream for as long as the
+    // contour gives ticks; finished when it is closed and every tick ran out at the device.
+    // Default: unsupported.
+    virtual void feedContour(RequestId id, std::shared_ptr<motion::ContourFeed> contour);
     virtual void reference(RequestId id, const QMap<Axis, int>& directions) = 0;
     virtual void velocityMove(RequestId id, const AxisVector& stepsPerS);
     // Stop and panic overtake everything queued.

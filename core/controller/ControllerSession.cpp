@@ -236,6 +236,11 @@ RequestId ControllerSession::feedStream(const QVector<AxisVector>& steps)
     return submit([=](Controller* c, RequestId id) { c->guardedFeedStream(id, steps); });
 }
 
+RequestId ControllerSession::feedContour(std::shared_ptr<motion::ContourFeed> contour)
+{
+    return submit([=](Controller* c, RequestId id) { c->feedContour(id, contour); });
+}
+
 RequestId ControllerSession::reference(const QMap<Axis, int>& directions)
 {
     return submit([=](Controller* c, RequestId id) { c->reference(id, directions); });

@@ -61,6 +61,7 @@ public:
     RequestId jogStep(const AxisVector& steps, const AxisVelocities& stepsPerS = {});
     RequestId feed(const AxisVector& steps);
     RequestId feedStream(const QVector<AxisVector>& steps);
+    RequestId feedContour(std::shared_ptr<motion::ContourFeed> contour);
     RequestId reference(const QMap<Axis, int>& directions);
     RequestId velocityMove(const AxisVector& stepsPerS);
     RequestId stop();

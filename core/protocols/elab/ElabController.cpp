@@ -3,7 +3,9 @@
 #include "ElabModel.h"
 #include "Logging.h"
 #include "transport/Transport.h"
+#include <QPointer>
 #include <QTimer>
+#include <cmath>
 
 namespace stepdeck::elab {
 
@@ -129,6 +131,40 @@ void ElabController::feedStream(RequestId id, const QVector<AxisVector>& steps)
     m_ops.feedStream(id, steps);
 }
 
+// The board takes one vector per tick of its feed rate (manual, SetFeedStepXYZ): a contour's
+// path speed is right only when the feed speeds of X, Y and Z are its tick rate, written before
+// (where the rule "below the start speed" is judged). Refused otherwise, nothing sent.
+void ElabController::feedContour(RequestId id, std::shared_ptr<motion::ContourFeed> contour)
+{
+    if (contour) {
+        const ParameterValue feed = m_written.value(QStringLiteral("feed-speed"));
+        const double rate = contour->tickRate();
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+            const QVariant v = feed.perAxis.value(a);
+            if (!v.isValid() || std::fabs(v.toDouble() - rate) > 1e-9) {
+                finishError(id, ErrorKind::Refused,
+                            tr("refused: the contour runs at %1 ticks/s, but the board's feed "
+                               "speed on %2 is %3: write %1 on X, Y and Z first")
+                                .arg(rate)
+                                .arg(axisName(a))
+                                .arg(v.isValid() ? v.toString() : tr("not known")));
+                return;
+            }
+        }
+        QPointer<ElabController> self(this);
+        contour->setWakeUp([self] {
+            QMetaObject::invokeMethod(
+                self,
+                [self] {
+                    if (self)
+                        self->m_ops.pumpStream();
+                },
+                Qt::QueuedConnection);
+        });
+    }
+    m_ops.feedContour(id, std::move(contour));
+}
+
 void ElabController::reference(RequestId id, const QMap<Axis, int>& directions)
 {
     AxisVector dirs;
@@ -215,6 +251,18 @@ void ElabController::startPoll()
     // The poll goes behind queued commands; it never has more than one cycle in flight.
     if (linkState() != LinkState::Connected || !m_poller.isDue())
         return;
+    if (m_ops.contourNeedsWire()) {
+        // A contour's pairs first while its reserve at the board is short (a poll's round
+        // trip would let the board run dry); the poll follows within milliseconds.
+        if (!m_pollDeferred) {
+            m_pollDeferred = true;
+            QTimer::singleShot(kDeferredPollMs, this, [this] {
+                m_pollDeferred = false;
+                startPoll();
+            });
+        }
+        return;
+    }
     m_poller.pollStarted();
     ++m_pollCount;
     ElabCtlLine::StatusRead how;

@@ -55,6 +55,7 @@ public:
     void moveRelative(RequestId id, const AxisVector& steps) override;
     void feed(RequestId id, const AxisVector& steps) override;
     void feedStream(RequestId id, const QVector<AxisVector>& steps) override;
+    void feedContour(RequestId id, std::shared_ptr<motion::ContourFeed> contour) override;
     void reference(RequestId id, const QMap<Axis, int>& directions) override;
     void velocityMove(RequestId id, const AxisVector& stepsPerS) override;
     void stop(RequestId id) override;
@@ -116,6 +117,8 @@ private:
     // The values this session last wrote (the board cannot read back), also published as
     // MachineStatus::knownParameters through rememberWritten / forgetWritten.
     ParameterSet m_written;
+    bool m_pollDeferred = false; // a poll waits for a contour's reserve (startPoll)
+    static constexpr int kDeferredPollMs = 5;
     // Per running parameter write: the names already acknowledged, for the failure message.
     QHash<RequestId, QStringList> m_writeProgress;
     quint64 m_pollCount = 0;

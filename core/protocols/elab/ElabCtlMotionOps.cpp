@@ -222,8 +222,20 @@ void ElabCtlMotionOps::feedStream(RequestId id, const QVector<AxisVector>& steps
     startStream(id, steps, {});
 }
 
+void ElabCtlMotionOps::feedContour(RequestId id, std::shared_ptr<motion::ContourFeed> contour)
+{
+    if (!m_line.hooks().requireLink(id))
+        return;
+    if (!contour) {
+        m_line.hooks().fail(id, ErrorKind::InvalidValue, tr("no contour to run"));
+        return;
+    }
+    startStream(id, {}, {}, std::move(contour));
+}
+
 void ElabCtlMotionOps::startStream(RequestId id, const QVector<AxisVector>& steps,
-                                   const Triple<qint64>& line)
+                                   const Triple<qint64>& line,
+                                   std::shared_ptr<motion::ContourFeed> contour)
 {
     const QString busy = tr("refused: a feed stream is already running");
     if (m_stream.isActive()) {
@@ -231,15 +243,17 @@ void ElabCtlMotionOps::startStream(RequestId id, const QVector<AxisVector>& step
         return;
     }
     // "Hier muss nur vor dem ersten Kommando die Abfrage erfolgen": one pre-flight, then <RS>.
-    m_line.preflight(id, Rule::Move, [this, steps, line, busy](Op op) {
+    m_line.preflight(id, Rule::Move, [this, steps, line, busy, contour](Op op) {
         if (m_stream.isActive()) {
             m_line.hooks().fail(op.id, ErrorKind::Refused, busy);
             return;
         }
-        m_line.sendCommand(op, encode::clearPosition(), [this, op, steps, line] {
+        m_line.sendCommand(op, encode::clearPosition(), [this, op, steps, line, contour] {
             if (m_line.stale(op))
                 return;
-            if (steps.isEmpty())
+            if (contour)
+                m_stream.startContour(contour);
+            else if (steps.isEmpty())
                 m_stream.startLine(line);
             else
                 m_stream.startSteps(steps);
@@ -266,8 +280,21 @@ void ElabCtlMotionOps::pumpStream()
     if (!m_stream.isActive() || m_stream.chunkInFlight || m_stream.pausedByDevice)
         return;
     const RequestId id = m_stream.requestId;
+    if (m_stream.waiting())
+        return; // the contour's next move is not given yet: its wake-up pumps again
     if (m_stream.atEnd()) {
         endStream(id);
+        return;
+    }
+    // A contour's first <DC2> starts the board at once: it goes out with a whole window of
+    // pairs behind it, not squeezed beside the bytes before it (else the board runs dry
+    // before the second chunk arrives).
+    if (m_stream.contour() && m_stream.sent() == 0 &&
+        m_line.queue().wireRoomBytes() < ElabExchangeQueue::kWireWindowBytes) {
+        QTimer::singleShot(1, &m_line.queue(), [this, id] {
+            if (m_stream.isActive() && m_stream.requestId == id)
+                pumpStream();
+        });
         return;
     }
     // One chunk at a time, and never more than one chunk beyond what the line can have
@@ -282,6 +309,8 @@ void ElabCtlMotionOps::pumpStream()
         if (!m_stream.isActive() || m_stream.requestId != id || m_stream.pausedByDevice)
             return QByteArray();
         const qint64 pairs = m_line.queue().wireRoomBytes() / 2;
+        if (m_stream.contour() && m_stream.sent() == 0)
+            m_contourClock.start(); // the board starts with the first <DC2>
         return m_stream.nextChunk(int(qBound<qint64>(1, pairs, qint64(ElabCtlStream::kChunkSteps))),
                                   delta.get());
     };
@@ -301,6 +330,18 @@ void ElabCtlMotionOps::pumpStream()
         abortStream(kind, why);
     };
     m_line.submit(std::move(ex), false);
+}
+
+bool ElabCtlMotionOps::contourNeedsWire() const
+{
+    const std::shared_ptr<motion::ContourFeed>& contour = m_stream.contour();
+    if (!m_stream.isActive() || !contour || m_stream.pausedByDevice)
+        return false; // after an XOFF the board holds a full buffer
+    if (m_stream.sent() == 0 || !m_contourClock.isValid())
+        return true; // about to start
+    const double ahead =
+        double(m_stream.sent()) / contour->tickRate() - double(m_contourClock.nsecsElapsed()) / 1e9;
+    return ahead < kContourReserveSeconds && !m_stream.atEnd();
 }
 
 void ElabCtlMotionOps::endStream(RequestId id)

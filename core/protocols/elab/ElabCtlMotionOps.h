@@ -28,6 +28,13 @@ public:
     void moveRelative(RequestId id, const AxisVector& steps);
     void feed(RequestId id, const AxisVector& steps);
     void feedStream(RequestId id, const QVector<AxisVector>& steps);
+    // A contour laid on ticks (issue 30): one <DC2> stream for as long as the contour gives
+    // ticks, <CR> once it is closed and sent. The caller set the board's feed speeds to its
+    // tick rate. wakeUp: posts pumpStream() to this adapter's thread (the contour calls it when
+    // a move is given).
+    void feedContour(RequestId id, std::shared_ptr<motion::ContourFeed> contour);
+    // More of a contour may be there to send (ContourFeed's wake-up, on this thread).
+    void pumpStream();
     void reference(RequestId id, const AxisVector& directions);
     void velocityMove(RequestId id, const AxisVector& stepsPerS);
 
@@ -40,6 +47,11 @@ public:
     void clear() { m_motion.clear(); }
 
     bool streaming() const { return m_stream.isActive(); }
+    // A contour streams and what was sent runs less than kContourReserveSeconds ahead of the
+    // board (counted from its first <DC2>, one tick per 1/rate): polls wait, so that the
+    // stream's pairs keep ahead of the board (issue 30: no underrun while steps remain).
+    static constexpr double kContourReserveSeconds = 0.04;
+    bool contourNeedsWire() const;
     // A motion the host started and has not yet seen end (any kind), a velocity axis that
     // still brakes after its rate 0 included.
     bool motionTracked() const { return m_motion.isActive() || !m_velocitySign.isEmpty(); }
@@ -65,8 +77,8 @@ public:
 
 private:
     void accepted(ElabCtlMotion::Kind kind, const AxisVector& values);
-    void startStream(RequestId id, const QVector<AxisVector>& steps, const Triple<qint64>& line);
-    void pumpStream();
+    void startStream(RequestId id, const QVector<AxisVector>& steps, const Triple<qint64>& line,
+                     std::shared_ptr<motion::ContourFeed> contour = {});
     void endStream(RequestId id);
     void correctPositions(const AxisVector& stopped);
     // Validated non-zero steps, or nullopt when the request is already finished.
@@ -78,6 +90,7 @@ private:
                       const QList<Axis>& reversing, qint64 deadlineMs, quint64 epoch);
 
     ElabCtlLine& m_line;
+    QElapsedTimer m_contourClock; // since the contour's first <DC2>
     ElabCtlMotion m_motion;
     ElabCtlStream m_stream;
     // Per axis the sign of the last non-zero velocity the board accepted, until a status read

@@ -43,9 +43,45 @@ void ElabCtlStream::startLine(const Triple<qint64>& delta)
     m_active = true;
 }
 
+void ElabCtlStream::startContour(std::shared_ptr<motion::ContourFeed> contour)
+{
+    clear();
+    m_contour = std::move(contour);
+    m_active = true;
+}
+
+bool ElabCtlStream::atEnd() const
+{
+    if (m_contour)
+        return m_buffered.isEmpty() && m_contour->finished();
+    return m_sent >= m_total;
+}
+
+void ElabCtlStream::fillFromContour(int want)
+{
+    if (!m_contour || m_buffered.size() >= want)
+        return;
+    const int before = int(m_buffered.size());
+    m_buffered.resize(want);
+    const int n = m_contour->pull(m_buffered.data() + before, want - before);
+    m_buffered.resize(before + n);
+}
+
+bool ElabCtlStream::waiting()
+{
+    if (!m_contour)
+        return false;
+    fillFromContour(kChunkSteps);
+    return m_buffered.isEmpty() && !m_contour->finished();
+}
+
 void ElabCtlStream::clear()
 {
     m_active = false;
+    if (m_contour)
+        m_contour->setWakeUp({}); // nothing to wake any more
+    m_contour.reset();
+    m_buffered.clear();
     m_steps.clear();
     m_line = {};
     m_total = 0;
@@ -57,6 +93,8 @@ void ElabCtlStream::clear()
 
 QList<Axis> ElabCtlStream::axes() const
 {
+    if (m_contour) // a contour may move any of them
+        return ElabCtlStatusMapper::axes();
     QList<Axis> out;
     for (Axis a : ElabCtlStatusMapper::axes()) {
         bool used = m_line[size_t(a)] != 0;
@@ -94,6 +132,19 @@ QByteArray ElabCtlStream::nextChunk(int maxSteps, Triple<qint64>* delta)
 {
     QByteArray out;
     *delta = {};
+    if (m_contour) {
+        fillFromContour(maxSteps);
+        const int n = std::min(maxSteps, int(m_buffered.size()));
+        for (int i = 0; i < n; ++i) {
+            const motion::StepTick& t = m_buffered.at(i);
+            out += encode::feedStep(encodeStepByte(t.step[0], t.step[1], t.step[2]));
+            for (size_t a = 0; a < 3; ++a)
+                (*delta)[a] += t.step[a];
+        }
+        m_buffered.remove(0, n);
+        m_sent += n;
+        return out;
+    }
     for (int n = 0; n < maxSteps && m_sent < m_total; ++n, ++m_sent) {
         const Triple<int> s = stepAt(m_sent);
         out += encode::feedStep(encodeStepByte(s[0], s[1], s[2]));

@@ -1,16 +1,20 @@
 #pragma once
 #include "ElabCodec.h"
 #include "model/Axis.h"
+#include "motion/ContourFeed.h"
 #include <QVector>
+#include <memory>
 
 namespace stepdeck::elab {
 
 // The host side of a <DC2> single-step stream (manual: SetFeedStepXYZ). Produces the step
 // bytes in chunks of whole <DC2><byte> pairs (a pair is never split, so a stop or a poll
 // written between chunks can never be taken for step data) and keeps count of what was
-// handed to the transport. Two sources: explicit single steps, or a straight line between
+// handed to the transport. Three sources: explicit single steps, a straight line between
 // two points split into single steps (integer Bresenham: every axis arrives exactly, no step
-// lost or duplicated). Pure: the adapter owns flow control and writing.
+// lost or duplicated), or a contour laid on ticks (motion::ContourFeed, issue 30: slots 0, 1, 2
+// are X, Y, Z; a vector without steps is a tick without a step). Pure: the adapter owns flow
+// control and writing.
 class ElabCtlStream
 {
 public:
@@ -23,13 +27,18 @@ public:
 
     void startSteps(const QVector<AxisVector>& steps);
     void startLine(const Triple<qint64>& delta);
+    void startContour(std::shared_ptr<motion::ContourFeed> contour);
     void clear();
 
     bool isActive() const { return m_active; }
     void setActive(bool active) { m_active = active; }
-    qint64 total() const { return m_total; }
+    qint64 total() const { return m_contour ? m_sent + m_buffered.size() : m_total; }
     qint64 sent() const { return m_sent; }
-    bool atEnd() const { return m_sent >= m_total; }
+    bool atEnd() const;
+    // A contour whose next tick is not known yet (its next move not given): nothing to send
+    // until the feed wakes the adapter.
+    bool waiting();
+    const std::shared_ptr<motion::ContourFeed>& contour() const { return m_contour; }
     QList<Axis> axes() const; // axes that take at least one step
 
     // The next chunk of up to maxSteps pairs; *delta receives the signed steps per axis in it.
@@ -42,12 +51,15 @@ public:
 
 private:
     Triple<int> stepAt(qint64 index) const; // 0-based
+    void fillFromContour(int want);
 
     bool m_active = false;
     QVector<AxisVector> m_steps; // explicit source
     Triple<qint64> m_line{};     // line source (when m_steps is empty)
     qint64 m_total = 0;
     qint64 m_sent = 0;
+    std::shared_ptr<motion::ContourFeed> m_contour; // contour source
+    QVector<motion::StepTick> m_buffered;           // pulled from it, not sent yet
 };
 
 } // namespace stepdeck::elab

@@ -24,6 +24,10 @@ int ElabSimStream::due(double seconds, double rate)
     if (!m_running || m_halted || rate <= 0)
         return 0;
     m_credit += seconds * rate;
+    const bool starving = m_buffer.empty() && !m_endPending && m_credit >= 1.0;
+    if (starving && !m_starving)
+        ++m_underruns;
+    m_starving = starving;
     const int count = int(qMin<double>(m_credit, double(size())));
     if (m_buffer.empty() || count == size())
         m_credit = qMin(m_credit, double(count) + 1.0);
@@ -36,6 +40,8 @@ quint8 ElabSimStream::pop()
     m_buffer.pop_front();
     m_credit = qMax(0.0, m_credit - 1.0);
     ++m_executed;
+    if (m_record.size() < kMaxRecord)
+        m_record.push_back(byte);
     return byte;
 }
 
@@ -99,6 +105,9 @@ void ElabSimStream::clearCounters()
     m_overflows = 0;
     m_rejected = 0;
     m_executed = 0;
+    m_underruns = 0;
+    m_starving = false;
+    m_record.clear();
     m_afterXOff = 0;
     m_mostAfterXOff = 0;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <QtGlobal>
 #include <deque>
+#include <vector>
 
 namespace stepdeck::elab {
 
@@ -53,6 +54,13 @@ public:
     qint64 rejected() const { return m_rejected; }
     void countRejected() { ++m_rejected; }
     qint64 executed() const { return m_executed; }
+    // Times the board had a tick due while the stream ran with its buffer empty and no
+    // EndOfFeed yet: the host fell behind (an underrun; the path stops there for a while).
+    qint64 underruns() const { return m_underruns; }
+    // The step bytes executed since the counters were cleared, in order (at most
+    // kMaxRecord; tests rebuild the path the axes took from them).
+    static constexpr size_t kMaxRecord = 4000000;
+    const std::vector<quint8>& executedRecord() const { return m_record; }
     void clearCounters();
     void reset(); // power-on (keeps the configured capacity and marks)
 
@@ -71,6 +79,9 @@ private:
     qint64 m_overflows = 0;
     qint64 m_rejected = 0;
     qint64 m_executed = 0;
+    qint64 m_underruns = 0;
+    bool m_starving = false; // in an underrun now (counted once)
+    std::vector<quint8> m_record;
 };
 
 } // namespace stepdeck::elab

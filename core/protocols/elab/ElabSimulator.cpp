@@ -197,6 +197,10 @@ void ElabSimulator::updateTimer()
 // counted as rejected; a ForceStopMove or a limit switch halts the stream until GS/RS.
 void ElabSimulator::doStreamStep(const Command& cmd)
 {
+    // The board up to now first: time before the first <DC2> is not the stream's ("dass der
+    // Controller sofort mit dem ersten <DC2> mit der Fahrt anfängt"), and a running stream
+    // whose buffer ran dry while this pair was on its way counts that underrun now.
+    advanceToNow();
     m_board.stream.noteArrival();
     if (!m_board.stream.running()) {
         QString why;

@@ -79,6 +79,13 @@ public:
     qint64 streamOverflows() const { return m_board.stream.overflows(); }
     qint64 streamRejected() const { return m_board.stream.rejected(); }
     int streamBuffered() const { return m_board.stream.size(); }
+    qint64 streamUnderruns() const { return m_board.stream.underruns(); }
+    void clearStreamCounters() { m_board.stream.clearCounters(); }
+    // The step bytes the board executed, in order (ElabSimStream::executedRecord).
+    const std::vector<quint8>& executedStepRecord() const
+    {
+        return m_board.stream.executedRecord();
+    }
     bool streamHostPaused() const { return m_board.stream.hostPaused(); }
     // The most <DC2> pairs that arrived after one of the board's XOFFs, before its XON.
     int streamMostPairsAfterXOff() const { return m_board.stream.mostPairsAfterXOff(); }

@@ -2,3 +2,4 @@
 # as step streams.
 stepdeck_add_test(tst_canonicalmove SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_canonicalmove.cpp LABELS unit)
 stepdeck_add_test(tst_contoursteps SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contoursteps.cpp LABELS unit)
+stepdeck_add_test(tst_contourfeed SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contourfeed.cpp LABELS unit)

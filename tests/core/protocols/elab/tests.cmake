@@ -7,3 +7,4 @@ stepdeck_add_test(tst_elabcontrollermotion SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst
 stepdeck_add_test(tst_elabexchangequeue SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabexchangequeue.cpp LABELS unit)
 stepdeck_add_test(tst_elabcontrollersafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcontrollersafety.cpp ${CMAKE_CURRENT_LIST_DIR}/ElabControllerRig.h LABELS unit)
 stepdeck_add_test(tst_elabstreampty SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabstreampty.cpp LABELS integration)
+stepdeck_add_test(tst_elabcontourpty SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_elabcontourpty.cpp LABELS integration)
