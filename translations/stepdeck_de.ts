@@ -1903,6 +1903,10 @@
             <source>not known</source>
             <translation>nicht bekannt</translation>
         </message>
+        <message>
+            <source>refused: the contour starts with %1 at %2 steps, but it stands at %3</source>
+            <translation>abgelehnt: die Kontur beginnt mit %1 bei %2 Schritten, die Achse steht aber bei %3</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabCtlJog</name>
@@ -3043,6 +3047,10 @@
         <message>
             <source>line %1: its feed needs %2 ticks/s, the stream runs %3 (highest feed %4 unit/s)</source>
             <translation>Zeile %1: ihr Vorschub braucht %2 Takte/s, der Strom läuft mit %3 (höchster Vorschub %4 Einheiten/s)</translation>
+        </message>
+        <message>
+            <source>line %1 would take axis %2 to %3 steps, beyond its soft limit %4: the contour ends before it</source>
+            <translation>Zeile %1 würde Achse %2 auf %3 Schritte bringen, jenseits ihres Software-Endschalters %4: die Kontur endet davor</translation>
         </message>
     </context>
     <context>

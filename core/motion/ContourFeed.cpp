@@ -50,6 +50,18 @@ qint64 ContourFeed::starvedPulls() const
     return m_starved;
 }
 
+void ContourFeed::setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum)
+{
+    QMutexLocker lock(&m_mutex);
+    m_steps.setStepLimits(slot, name, minimum, maximum);
+}
+
+QString ContourFeed::fault() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_steps.fault();
+}
+
 void ContourFeed::setFeedFactor(double factor)
 {
     QMutexLocker lock(&m_mutex);

@@ -23,6 +23,8 @@ public:
     // Pulls that found no tick while the contour was still open (the consumer had to wait).
     qint64 starvedPulls() const;
 
+    void setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum);
+    QString fault() const;
     void setFeedFactor(double factor);
     double tickRate() const; // fixed for the stream's life
     qint64 ticks() const;

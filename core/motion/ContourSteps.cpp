@@ -76,6 +76,34 @@ QString ContourSteps::append(const CanonicalMove& move)
     return {};
 }
 
+void ContourSteps::setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum)
+{
+    if (slot < 0 || slot >= kMaxAxes)
+        return;
+    m_limits[size_t(slot)] = Limit{true, name, minimum, maximum};
+}
+
+// False (the contour ends, fault() set) when `target` leaves a slot's soft limits.
+bool ContourSteps::withinLimits(const StepPosition& target, int line)
+{
+    for (int i = 0; i < m_scale.axisCount; ++i) {
+        const Limit& l = m_limits[size_t(i)];
+        const qint64 t = target[size_t(i)];
+        if (!l.set || (t >= l.minimum && t <= l.maximum))
+            continue;
+        m_fault = tr("line %1 would take axis %2 to %3 steps, beyond its soft limit %4: the "
+                     "contour ends before it")
+                      .arg(line)
+                      .arg(l.name)
+                      .arg(t)
+                      .arg(t > l.maximum ? l.maximum : l.minimum);
+        m_queue.clear();
+        m_closed = true;
+        return false;
+    }
+    return true;
+}
+
 void ContourSteps::setFeedFactor(double factor)
 {
     m_factor = std::clamp(factor, kLowestFeedFactor, m_maxFactor);
@@ -129,6 +157,8 @@ int ContourSteps::pull(StepTick* out, int max)
             popFront();
         m_frontLength = length;
         const StepPosition target = stepsAt(*move, s);
+        if (!withinLimits(target, move->line))
+            return n;
         StepTick& tick = out[n++];
         for (int i = 0; i < m_scale.axisCount; ++i) {
             const qint64 d = target[size_t(i)] - m_steps[size_t(i)];

@@ -68,6 +68,11 @@ public:
     int pull(StepTick* out, int max);
     bool finished() const { return m_closed && m_queue.isEmpty(); }
 
+    // A slot's soft limits in the stream's steps (as originSteps): the first tick that would
+    // leave them is not given; the contour ends there (finished()) and fault() says why.
+    void setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum);
+    QString fault() const { return m_fault; }
+
     // The feed override for the ticks not given yet, clamped to 0.1..maxFeedFactor.
     void setFeedFactor(double factor);
     double feedFactor() const { return m_factor; }
@@ -86,6 +91,7 @@ public:
 
 private:
     void popFront();
+    bool withinLimits(const StepPosition& target, int line);
 
     StepScale m_scale;
     Position m_origin;
@@ -102,6 +108,14 @@ private:
     qint64 m_ticks = 0;
     qint64 m_clamped = 0;
     int m_lastLine = 0;
+    struct Limit
+    {
+        bool set = false;
+        QString name;
+        qint64 minimum = 0, maximum = 0;
+    };
+    std::array<Limit, kMaxAxes> m_limits;
+    QString m_fault;
 };
 
 } // namespace stepdeck::motion

@@ -151,6 +151,25 @@ void ElabController::feedContour(RequestId id, std::shared_ptr<motion::ContourFe
                 return;
             }
         }
+        // The contour counts in the board's steps from where the axes stand now; the soft
+        // limits then hold for every tick (the check refuses a program beyond them first).
+        const motion::StepPosition from = contour->steps();
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+            const qint64 here = status().axes.value(a).position;
+            if (contour->ticks() == 0 && from[size_t(a)] != here) {
+                finishError(id, ErrorKind::Refused,
+                            tr("refused: the contour starts with %1 at %2 steps, but it stands "
+                               "at %3")
+                                .arg(axisName(a))
+                                .arg(from[size_t(a)])
+                                .arg(here));
+                return;
+            }
+            if (softLimits().isActive(a, status())) {
+                const AxisSoftLimit l = softLimits().limit(a);
+                contour->setStepLimits(int(a), axisName(a), l.minimum, l.maximum);
+            }
+        }
         QPointer<ElabController> self(this);
         contour->setWakeUp([self] {
             QMetaObject::invokeMethod(

@@ -351,9 +351,13 @@ void ElabCtlMotionOps::endStream(RequestId id)
     ElabExchange end = ElabCtlLine::exchange(id, encode::endOfFeed(), Expect::AckNak);
     end.onReply = [this, id](const Reply& r) {
         const qint64 sent = m_stream.sent();
+        // A contour that ended short of a soft limit: ended, but the request fails with why.
+        const QString fault = m_stream.contour() ? m_stream.contour()->fault() : QString();
         m_stream.clear();
         m_motion.endStream();
-        if (r.kind == Reply::Kind::Ack)
+        if (r.kind == Reply::Kind::Ack && !fault.isEmpty())
+            m_line.hooks().fail(id, ErrorKind::Refused, fault);
+        else if (r.kind == Reply::Kind::Ack)
             m_line.hooks().ok(id, sent);
         else
             m_line.failWithNak(m_line.op(id), encode::endOfFeed());

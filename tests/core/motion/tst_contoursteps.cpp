@@ -27,6 +27,7 @@ private Q_SLOTS:
     void append_refusals_eachWithItsReason();
     void feedFactor_double_halfTheTicksForTheRest();
     void highestFeed_lineAlongTheFinestAxis();
+    void stepLimits_lineBeyond_endsAtTheLastTickInsideFaultSaysWhy();
 };
 
 namespace {
@@ -353,6 +354,26 @@ void TestContourSteps::highestFeed_lineAlongTheFinestAxis()
     const CanonicalMove alongY = CanonicalMove::straight(3, {}, {0, 10, 0}, 1, 1);
     QVERIFY(std::fabs(ContourSteps::highestFeed(alongX, s, kTickRate) - 20) < 1e-6);
     QVERIFY(std::fabs(ContourSteps::highestFeed(alongY, s, kTickRate) - 8) < 1e-6);
+}
+
+void TestContourSteps::stepLimits_lineBeyond_endsAtTheLastTickInsideFaultSaysWhy()
+{
+    ContourSteps c(scale3(100, 100, 400), {}, {100, 0, 0}, kTickRate);
+    c.setStepLimits(0, QStringLiteral("X"), 0, 600);
+    QVERIFY(c.append(CanonicalMove::straight(3, {}, {10, 0, 0}, 5, 3)).isEmpty());
+    QVERIFY(c.append(CanonicalMove::straight(3, {10, 0, 0}, {10, 5, 0}, 5, 4)).isEmpty());
+    c.close();
+    const QList<StepPosition> ticks = pullAll(c);
+    QVERIFY(c.finished());
+    QCOMPARE(ticks.last()[0], qint64(600)); // 500 steps from 100: the limit, not beyond
+    for (const StepPosition& p : ticks)
+        QVERIFY(p[0] <= 600);
+    QVERIFY2(c.fault().contains(QStringLiteral("line 3 would take axis X to 601 steps, beyond "
+                                               "its soft limit 600")),
+             qPrintable(c.fault()));
+    StepTick none[4];
+    QCOMPARE(c.pull(none, 4), 0);
+    QVERIFY(!c.append(CanonicalMove::straight(3, {10, 5, 0}, {0, 5, 0}, 5, 5)).isEmpty());
 }
 
 QTEST_GUILESS_MAIN(TestContourSteps)

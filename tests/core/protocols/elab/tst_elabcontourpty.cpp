@@ -6,6 +6,7 @@
 // A move given late makes the stream wait, not end; STOP ends it with the board still; a feed
 // speed other than the tick rate is refused before anything is sent.
 #include "TestSupport.h"
+#include "controller/SoftLimits.h"
 #include "motion/ContourFeed.h"
 #include "protocols/elab/ElabController.h"
 #include "protocols/elab/ElabModel.h"
@@ -31,6 +32,7 @@ private Q_SLOTS:
     void contour_nextMoveLate_streamWaitsThenGoesOn();
     void contour_stopMidway_boardStillRestNeverSent();
     void contour_feedSpeedNotTheTickRate_refusedNothingSent();
+    void contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason();
 
 private:
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000);
@@ -293,6 +295,38 @@ void TestElabContourPty::contour_feedSpeedNotTheTickRate_refusedNothingSent()
     QVERIFY2(r.message.contains(QStringLiteral("write 1500 on X, Y and Z")), qPrintable(r.message));
     QCOMPARE(m_sim->executedStepBytes(), qint64(0));
     QCOMPARE(feed->ticks(), qint64(0));
+}
+
+// The controller's soft limits hold for every tick of a contour: X referenced, limited to
+// 0..500 steps, a contour of 1000 steps along X ends at 500 at the board, refused with why.
+void TestElabContourPty::contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason()
+{
+    CommandResult r = run([&](RequestId id) {
+        m_ctl->reference(id, {{Axis::X, -1}, {Axis::Y, 0}, {Axis::Z, 0}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QTRY_VERIFY_WITH_TIMEOUT(m_ctl->status().axes.value(Axis::X).referenced, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 10000);
+    SoftLimits limits;
+    limits.set(Axis::X, AxisSoftLimit{true, true, 0, 500});
+    m_ctl->setSoftLimits(limits);
+    const qint64 boardOrigin = m_sim->position(Axis::X);
+    StepPosition from{};
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+        from[size_t(a)] = m_ctl->status().axes.value(a).position;
+    QCOMPARE(from[0], qint64(0));
+    m_sim->clearStreamCounters();
+    auto feed = std::make_shared<ContourFeed>(ContourSteps(scale(), {}, from, kTickRate));
+    QVERIFY(feed->append(CanonicalMove::straight(3, {0, 0, 0}, {10, 0, 0}, 5, 7)).isEmpty());
+    feed->close();
+    r = run([&](RequestId id) { m_ctl->feedContour(id, feed); }, 30000);
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY2(r.message.contains(QStringLiteral("line 7 would take axis X to 501 steps, beyond its "
+                                               "soft limit 500")),
+             qPrintable(r.message));
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 10000);
+    QCOMPARE(m_sim->position(Axis::X) - boardOrigin, qint64(500));
+    QCOMPARE(m_ctl->status().axes.value(Axis::X).position, qint64(500));
 }
 
 QTEST_GUILESS_MAIN(TestElabContourPty)
