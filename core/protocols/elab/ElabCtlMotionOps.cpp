@@ -341,7 +341,9 @@ bool ElabCtlMotionOps::contourNeedsWire() const
         return true; // about to start
     const double ahead =
         double(m_stream.sent()) / contour->tickRate() - double(m_contourClock.nsecsElapsed()) / 1e9;
-    return ahead < kContourReserveSeconds && !m_stream.atEnd();
+    // Far behind (the contour waits for its next move, the board ran dry): polls go on, so
+    // that limit switches and positions are read while nothing can be sent anyway.
+    return ahead < kContourReserveSeconds && ahead > -kContourReserveSeconds && !m_stream.atEnd();
 }
 
 void ElabCtlMotionOps::endStream(RequestId id)

@@ -49,7 +49,8 @@ public:
     bool streaming() const { return m_stream.isActive(); }
     // A contour streams and what was sent runs less than kContourReserveSeconds ahead of the
     // board (counted from its first <DC2>, one tick per 1/rate): polls wait, so that the
-    // stream's pairs keep ahead of the board (issue 30: no underrun while steps remain).
+    // stream's pairs keep ahead of the board (issue 30: no underrun while steps remain). Not
+    // when it is that far behind: the contour waits for its next move and polls go on.
     static constexpr double kContourReserveSeconds = 0.04;
     bool contourNeedsWire() const;
     // A motion the host started and has not yet seen end (any kind), a velocity axis that
