@@ -338,7 +338,7 @@ bool ElabCtlMotionOps::contourNeedsWire() const
     if (!m_stream.isActive() || !contour || m_stream.pausedByDevice)
         return false; // after an XOFF the board holds a full buffer
     if (m_stream.sent() == 0 || !m_contourClock.isValid())
-        return true; // about to start
+        return m_stream.total() > 0; // about to start; not while its first move is not given
     const double ahead =
         double(m_stream.sent()) / contour->tickRate() - double(m_contourClock.nsecsElapsed()) / 1e9;
     // Far behind (the contour waits for its next move, the board ran dry): polls go on, so

@@ -33,6 +33,7 @@ private Q_SLOTS:
     void contour_stopMidway_boardStillRestNeverSent();
     void contour_feedSpeedNotTheTickRate_refusedNothingSent();
     void contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason();
+    void contour_noMoveGivenYet_statusPollsGoOn();
 
 private:
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000);
@@ -328,6 +329,21 @@ void TestElabContourPty::contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason
     QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 10000);
     QCOMPARE(m_sim->position(Axis::X) - boardOrigin, qint64(500));
     QCOMPARE(m_ctl->status().axes.value(Axis::X).position, qint64(500));
+}
+
+// A contour started before its first move is given waits; the status polls (limit switches,
+// positions) must not wait with it.
+void TestElabContourPty::contour_noMoveGivenYet_statusPollsGoOn()
+{
+    auto feed = std::make_shared<ContourFeed>(ContourSteps(scale(), {}, {}, kTickRate));
+    const RequestId id = start([&](RequestId rid) { m_ctl->feedContour(rid, feed); });
+    QTRY_VERIFY_WITH_TIMEOUT(feed->starvedPulls() > 0, 5000);
+    QSignalSpy polled(m_ctl.get(), &Controller::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polled.size() >= 3, 5000);
+    QVERIFY(!result(id));
+    QCOMPARE(m_sim->executedStepBytes(), qint64(0));
+    feed->close();
+    QTRY_VERIFY_WITH_TIMEOUT(result(id).has_value(), 5000);
 }
 
 QTEST_GUILESS_MAIN(TestElabContourPty)
