@@ -38,10 +38,30 @@ bool ContourFeed::finished() const
 int ContourFeed::pull(StepTick* out, int max)
 {
     QMutexLocker lock(&m_mutex);
+    if (m_held)
+        return 0;
     const int n = m_steps.pull(out, max);
     if (n == 0 && max > 0 && !m_steps.finished())
         ++m_starved;
     return n;
+}
+
+void ContourFeed::setHeld(bool held)
+{
+    {
+        QMutexLocker lock(&m_mutex);
+        if (m_held == held)
+            return;
+        m_held = held;
+    }
+    if (!held)
+        wake();
+}
+
+bool ContourFeed::isHeld() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_held;
 }
 
 qint64 ContourFeed::starvedPulls() const
@@ -78,6 +98,18 @@ qint64 ContourFeed::ticks() const
 {
     QMutexLocker lock(&m_mutex);
     return m_steps.ticks();
+}
+
+double ContourFeed::queuedSeconds() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_steps.queuedSeconds();
+}
+
+qint64 ContourFeed::movesDone() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_steps.movesDone();
 }
 
 int ContourFeed::currentLine() const

@@ -25,10 +25,17 @@ public:
 
     void setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum);
     QString fault() const;
+    // A feed hold (issue 30): no tick is given until it is released, so the stream runs dry
+    // and the board stands where its last tick put it (the E-LAB's feed mode has no ramp: no
+    // step is lost). Released, the stream goes on along the path from there.
+    void setHeld(bool held);
+    bool isHeld() const;
     void setFeedFactor(double factor);
     double tickRate() const; // fixed for the stream's life
     qint64 ticks() const;
     int currentLine() const;
+    qint64 movesDone() const;     // ContourSteps::movesDone
+    double queuedSeconds() const; // ContourSteps::queuedSeconds
     StepPosition steps() const;
 
     void setWakeUp(std::function<void()> wakeUp);
@@ -39,6 +46,7 @@ private:
     mutable QMutex m_mutex;
     ContourSteps m_steps;
     qint64 m_starved = 0;
+    bool m_held = false;
     std::function<void()> m_wakeUp;
 };
 

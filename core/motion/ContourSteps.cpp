@@ -25,7 +25,7 @@ double ContourSteps::neededTickRate(const CanonicalMove& move, const StepScale& 
     double fastest = 0; // steps/s of the slot that steps most often
     for (int i = 0; i < move.axisCount && i < scale.axisCount; ++i)
         fastest = std::max(fastest, move.slotRatePerFeed(i) * move.feed * feedFactor *
-                                        scale.stepsPerUnit[size_t(i)]);
+                                        std::fabs(scale.stepsPerUnit[size_t(i)]));
     return fastest / kMostStepPerTick;
 }
 
@@ -52,7 +52,7 @@ QString ContourSteps::append(const CanonicalMove& move)
             .arg(move.axisCount)
             .arg(m_scale.axisCount);
     for (int i = 0; i < move.axisCount; ++i) {
-        const double spu = m_scale.stepsPerUnit[size_t(i)];
+        const double spu = std::fabs(m_scale.stepsPerUnit[size_t(i)]); // < 0: inverted
         if (std::fabs(move.start[size_t(i)] - m_chainEnd[size_t(i)]) * spu > 0.5)
             return tr("line %1 does not start where the contour stands (axis %2: %3, not %4)")
                 .arg(move.line)
@@ -60,19 +60,24 @@ QString ContourSteps::append(const CanonicalMove& move)
                 .arg(move.start[size_t(i)])
                 .arg(m_chainEnd[size_t(i)]);
     }
-    const double needed = neededTickRate(move, m_scale, m_maxFactor);
+    const double needed = neededTickRate(move, m_scale);
     if (needed > m_tickRate)
         return tr("line %1: its feed needs %2 ticks/s, the stream runs %3 (highest feed %4 "
                   "unit/s)")
             .arg(move.line)
             .arg(std::ceil(needed))
             .arg(m_tickRate)
-            .arg(highestFeed(move, m_scale, m_tickRate) / m_maxFactor);
+            .arg(highestFeed(move, m_scale, m_tickRate));
     m_chainEnd = move.end;
-    if (move.length() > 0)
+    ++m_movesTaken;
+    if (move.length() > 0) {
         m_queue.push(move);
-    else
+        // The override this move can run at: as far as one step per tick allows.
+        m_caps.push_back(needed > 0 ? m_tickRate / needed : m_maxFactor);
+    } else {
         m_lastLine = move.line;
+        ++m_movesDone;
+    }
     return {};
 }
 
@@ -80,7 +85,13 @@ void ContourSteps::setStepLimits(int slot, const QString& name, qint64 minimum, 
 {
     if (slot < 0 || slot >= kMaxAxes)
         return;
-    m_limits[size_t(slot)] = Limit{true, name, minimum, maximum};
+    // Two sources (the machine's soft limits, the controller's own) both hold: the tighter.
+    Limit& l = m_limits[size_t(slot)];
+    if (l.set) {
+        minimum = std::max(minimum, l.minimum);
+        maximum = std::min(maximum, l.maximum);
+    }
+    l = Limit{true, name, minimum, maximum};
 }
 
 // False (the contour ends, fault() set) when `target` leaves a slot's soft limits.
@@ -98,6 +109,7 @@ bool ContourSteps::withinLimits(const StepPosition& target, int line)
                       .arg(t)
                       .arg(t > l.maximum ? l.maximum : l.minimum);
         m_queue.clear();
+        m_caps.clear();
         m_closed = true;
         return false;
     }
@@ -109,20 +121,43 @@ void ContourSteps::setFeedFactor(double factor)
     m_factor = std::clamp(factor, kLowestFeedFactor, m_maxFactor);
 }
 
+// Rounded as a whole, not as a distance from the origin: where the origin is the step nearest
+// to it (as after any move to a target), every position is the step nearest to the ideal path,
+// the one a positioning move to the same point would reach.
 StepPosition ContourSteps::stepsAt(const CanonicalMove& move, double s) const
 {
     const Position p = move.at(s);
     StepPosition out = m_originSteps;
-    for (int i = 0; i < m_scale.axisCount; ++i)
+    for (int i = 0; i < m_scale.axisCount; ++i) {
+        const double spu = m_scale.stepsPerUnit[size_t(i)];
         out[size_t(i)] +=
-            std::llround((p[size_t(i)] - m_origin[size_t(i)]) * m_scale.stepsPerUnit[size_t(i)]);
+            std::llround(p[size_t(i)] * spu) - std::llround(m_origin[size_t(i)] * spu);
+    }
     return out;
+}
+
+double ContourSteps::queuedSeconds() const
+{
+    double seconds = 0;
+    for (size_t i = 0; i < m_queue.size(); ++i) {
+        const CanonicalMove& move = m_queue.at(i);
+        const double left = i == 0 ? move.length() - m_s : move.length();
+        seconds += std::max(0.0, left) / speed(i);
+    }
+    return seconds;
+}
+
+double ContourSteps::speed(size_t i) const
+{
+    return m_queue.at(i).feed * std::min(m_factor, m_caps.at(i));
 }
 
 void ContourSteps::popFront()
 {
+    ++m_movesDone;
     m_lastLine = m_queue.front().line;
     m_queue.pop();
+    m_caps.pop_front();
     m_frontLength = -1;
 }
 
@@ -135,15 +170,15 @@ int ContourSteps::pull(StepTick* out, int max)
             m_frontLength = move->length();
         // Where the path stands at the next tick: past the front move's end the rest of the
         // tick's time goes on along the next move, at its own feed.
-        double s = m_s + move->feed * m_factor / m_tickRate;
+        double s = m_s + speed(0) / m_tickRate;
         double length = m_frontLength;
         size_t index = 0;
         bool last = false;
         while (s >= length) {
             if (index + 1 < m_queue.size()) {
-                const double restSeconds = (s - length) / (move->feed * m_factor);
+                const double restSeconds = (s - length) / speed(index);
                 move = &m_queue.at(++index);
-                s = restSeconds * move->feed * m_factor;
+                s = restSeconds * speed(index);
                 length = move->length();
             } else if (m_closed) {
                 s = length; // the stream's last tick ends at its end point

@@ -3,6 +3,7 @@
 #include "MotionQueue.h"
 #include <QCoreApplication>
 #include <array>
+#include <deque>
 
 namespace stepdeck::motion {
 
@@ -42,9 +43,10 @@ class ContourSteps
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::motion::ContourSteps)
 public:
-    // origin: where the slots stand in units, originSteps the same in steps (the stream lays
-    // every position relative to them, so its end is originSteps + round((end - origin) *
-    // stepsPerUnit)). maxFeedFactor: the largest feed override the stream may be set to.
+    // origin: where the slots stand in units, originSteps the same in steps (a position p
+    // becomes originSteps + round(p * stepsPerUnit) - round(origin * stepsPerUnit)); a slot's
+    // stepsPerUnit < 0 counts the other way (an inverted axis). maxFeedFactor: the largest feed
+    // override the stream may be set to.
     ContourSteps(const StepScale& scale, const Position& origin, const StepPosition& originSteps,
                  double tickRate, double maxFeedFactor = 1.0, size_t queueCapacity = 64);
 
@@ -70,10 +72,14 @@ public:
 
     // A slot's soft limits in the stream's steps (as originSteps): the first tick that would
     // leave them is not given; the contour ends there (finished()) and fault() says why.
+    // Called again for a slot, the limits narrow to what both allow.
     void setStepLimits(int slot, const QString& name, qint64 minimum, qint64 maximum);
     QString fault() const { return m_fault; }
 
-    // The feed override for the ticks not given yet, clamped to 0.1..maxFeedFactor.
+    // The feed override for the ticks not given yet, clamped to 0.1..maxFeedFactor. A move
+    // whose feed at the override would need more than one step per tick runs at the most its
+    // tick allows (as LinuxCNC clamps an override at the axes' limits); append() judges a
+    // move at 100 %.
     void setFeedFactor(double factor);
     double feedFactor() const { return m_factor; }
     double tickRate() const { return m_tickRate; }
@@ -83,6 +89,12 @@ public:
     // Steps a tick would have needed beyond one on a slot (0 unless the rate bound failed).
     qint64 clampedSteps() const { return m_clamped; }
     int currentLine() const { return m_queue.isEmpty() ? m_lastLine : m_queue.front().line; }
+    // Moves append() took, and of them those whose last tick was given (a move of length 0
+    // counts as done when taken): the run reports a block finished as its ticks pass.
+    qint64 movesTaken() const { return m_movesTaken; }
+    qint64 movesDone() const { return m_movesDone; }
+    // The time the queued path takes beyond the ticks given, at the current feed override.
+    double queuedSeconds() const;
     // Where the queued path ends (the next move must start there), in units.
     const Position& chainEnd() const { return m_chainEnd; }
     // The steps each slot must have when a move's path stands at s (tests and the simulator's
@@ -91,6 +103,7 @@ public:
 
 private:
     void popFront();
+    double speed(size_t i) const; // queued move i's path speed at the override, unit/s
     bool withinLimits(const StepPosition& target, int line);
 
     StepScale m_scale;
@@ -100,6 +113,7 @@ private:
     double m_maxFactor;
     double m_factor = 1.0;
     MotionQueue m_queue;
+    std::deque<double> m_caps; // per queued move: the most override its tick allows
     Position m_chainEnd;
     bool m_closed = false;
     double m_s = 0;            // the path distance into the front move at the last tick
@@ -107,6 +121,8 @@ private:
     StepPosition m_steps;
     qint64 m_ticks = 0;
     qint64 m_clamped = 0;
+    qint64 m_movesTaken = 0;
+    qint64 m_movesDone = 0;
     int m_lastLine = 0;
     struct Limit
     {

@@ -251,9 +251,11 @@ void ElabCtlMotionOps::startStream(RequestId id, const QVector<AxisVector>& step
         m_line.sendCommand(op, encode::clearPosition(), [this, op, steps, line, contour] {
             if (m_line.stale(op))
                 return;
-            if (contour)
+            if (contour) {
                 m_stream.startContour(contour);
-            else if (steps.isEmpty())
+                m_contourBase = 0;
+                m_contourClock.invalidate();
+            } else if (steps.isEmpty())
                 m_stream.startLine(line);
             else
                 m_stream.startSteps(steps);
@@ -286,6 +288,10 @@ void ElabCtlMotionOps::pumpStream()
         endStream(id);
         return;
     }
+    // A feed hold (issue 30): not even the ticks taken already go out; the board runs dry and
+    // stands. They go first when the hold is released (its wake-up pumps again).
+    if (m_stream.contour() && m_stream.contour()->isHeld())
+        return;
     // A contour's first <DC2> starts the board at once: it goes out with a whole window of
     // pairs behind it, not squeezed beside the bytes before it (else the board runs dry
     // before the second chunk arrives).
@@ -297,6 +303,19 @@ void ElabCtlMotionOps::pumpStream()
         });
         return;
     }
+    double lead = kContourLeadSeconds; // the contour's ticks that may still go out
+    if (m_stream.contour() && m_stream.sent() > 0) {
+        lead -= contourAhead();
+        if (lead * m_stream.contour()->tickRate() < 1) {
+            if (!std::exchange(m_leadWait, true))
+                QTimer::singleShot(5, &m_line.queue(), [this, id] {
+                    m_leadWait = false;
+                    if (m_stream.isActive() && m_stream.requestId == id)
+                        pumpStream();
+                });
+            return;
+        }
+    }
     // One chunk at a time, and never more than one chunk beyond what the line can have
     // carried (the queue's wire window): after the board's XOFF at most that is on its way.
     // The chunk is built when it is written, as many pairs as fit the window then, and none if
@@ -305,12 +324,16 @@ void ElabCtlMotionOps::pumpStream()
     auto delta = std::make_shared<Triple<qint64>>();
     ElabExchange ex = ElabCtlLine::exchange(id, {}, Expect::None);
     ex.wireRoom = 2; // one <DC2> pair
-    ex.build = [this, id, delta] {
+    ex.build = [this, id, delta, lead] {
         if (!m_stream.isActive() || m_stream.requestId != id || m_stream.pausedByDevice)
             return QByteArray();
-        const qint64 pairs = m_line.queue().wireRoomBytes() / 2;
-        if (m_stream.contour() && m_stream.sent() == 0)
+        qint64 pairs = m_line.queue().wireRoomBytes() / 2;
+        if (m_stream.contour() && m_stream.sent() == 0) {
             m_contourClock.start(); // the board starts with the first <DC2>
+            m_contourBase = 0;
+        } else if (m_stream.contour()) {
+            pairs = std::min(pairs, qint64(lead * m_stream.contour()->tickRate()));
+        }
         return m_stream.nextChunk(int(qBound<qint64>(1, pairs, qint64(ElabCtlStream::kChunkSteps))),
                                   delta.get());
     };
@@ -332,6 +355,17 @@ void ElabCtlMotionOps::pumpStream()
     m_line.submit(std::move(ex), false);
 }
 
+double ElabCtlMotionOps::contourAhead()
+{
+    const double ahead = double(m_stream.sent() - m_contourBase) / m_stream.contour()->tickRate() -
+                         double(m_contourClock.nsecsElapsed()) / 1e9;
+    if (ahead >= 0)
+        return ahead;
+    m_contourBase = m_stream.sent();
+    m_contourClock.restart();
+    return 0;
+}
+
 bool ElabCtlMotionOps::contourNeedsWire() const
 {
     const std::shared_ptr<motion::ContourFeed>& contour = m_stream.contour();
@@ -339,8 +373,8 @@ bool ElabCtlMotionOps::contourNeedsWire() const
         return false; // after an XOFF the board holds a full buffer
     if (m_stream.sent() == 0 || !m_contourClock.isValid())
         return m_stream.total() > 0; // about to start; not while its first move is not given
-    const double ahead =
-        double(m_stream.sent()) / contour->tickRate() - double(m_contourClock.nsecsElapsed()) / 1e9;
+    const double ahead = double(m_stream.sent() - m_contourBase) / contour->tickRate() -
+                         double(m_contourClock.nsecsElapsed()) / 1e9;
     // Far behind (the contour waits for its next move, the board ran dry): polls go on, so
     // that limit switches and positions are read while nothing can be sent anyway.
     return ahead < kContourReserveSeconds && ahead > -kContourReserveSeconds && !m_stream.atEnd();

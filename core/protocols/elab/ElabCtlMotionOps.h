@@ -53,6 +53,9 @@ public:
     // when it is that far behind: the contour waits for its next move and polls go on.
     static constexpr double kContourReserveSeconds = 0.04;
     bool contourNeedsWire() const;
+    // At most this much of a contour's ticks go beyond the board (issue 30: a feed hold, which
+    // stops giving ticks, takes effect within it whatever the board's buffer holds).
+    static constexpr double kContourLeadSeconds = 0.2;
     // A motion the host started and has not yet seen end (any kind), a velocity axis that
     // still brakes after its rate 0 included.
     bool motionTracked() const { return m_motion.isActive() || !m_velocitySign.isEmpty(); }
@@ -91,7 +94,12 @@ private:
                       const QList<Axis>& reversing, qint64 deadlineMs, quint64 epoch);
 
     ElabCtlLine& m_line;
-    QElapsedTimer m_contourClock; // since the contour's first <DC2>
+    // How far the contour's ticks sent run ahead of the board, in seconds; re-counted from now
+    // when the board ran dry (a late move, a hold).
+    double contourAhead();
+    QElapsedTimer m_contourClock; // since the contour's first <DC2>, or since it ran dry
+    qint64 m_contourBase = 0;     // the ticks sent when m_contourClock started
+    bool m_leadWait = false;      // a pump waits for the board to run some of the lead
     ElabCtlMotion m_motion;
     ElabCtlStream m_stream;
     // Per axis the sign of the last non-zero velocity the board accepted, until a status read

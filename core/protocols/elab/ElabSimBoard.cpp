@@ -33,12 +33,15 @@ void ElabSimBoard::advance(double seconds, double slice)
         }
         const double step = qMin(seconds, slice);
         seconds -= step;
+        const bool wasMoving = anyAxisMoving();
         for (ElabSimAxis& a : axes) {
             if (a.advance(step) == ElabSimAxis::Event::ReferenceHit)
                 qCDebug(lcSimulator) << "elab sim: reference switch reached at" << a.position();
         }
         advanceStream(step);
         checkLimits();
+        if (wasMoving && !anyAxisMoving())
+            noteTrace(); // a move came to rest
     }
 }
 
@@ -229,11 +232,18 @@ void ElabSimBoard::advanceStream(double seconds)
         bool free = true;
         for (int i = 0; i < 3; ++i)
             free = axes[size_t(i)].singleStep(steps[size_t(i)]) && free;
+        noteTrace();
         if (!free)
             break; // checkLimits() halts the stream
     }
     if (stream.endPending() && stream.isEmpty())
         stream.finish();
+}
+
+void ElabSimBoard::noteTrace()
+{
+    if (trace.size() < kMaxTrace)
+        trace.push_back({axes[0].position(), axes[1].position(), axes[2].position()});
 }
 
 } // namespace stepdeck::elab

@@ -4,6 +4,7 @@
 #include "ElabSimStream.h"
 #include "model/Axis.h"
 #include <array>
+#include <vector>
 
 namespace stepdeck::elab {
 
@@ -26,6 +27,11 @@ public:
     int temperature = 25;
     bool startButton = false;
     bool panicButton = false;
+    // The path the board took, for tests to compare with a program's: the axes' positions
+    // after each executed stream vector and where every move came to rest, in order, at most
+    // kMaxTrace of them (later ones are dropped).
+    static constexpr size_t kMaxTrace = 1000000;
+    std::vector<Triple<qint64>> trace;
 
     ElabSimAxis& axis(Axis a) { return axes[size_t(a)]; }
     const ElabSimAxis& axis(Axis a) const { return axes[size_t(a)]; }
@@ -59,6 +65,7 @@ public:
 
 private:
     void advanceStream(double seconds);
+    void noteTrace();
 };
 
 } // namespace stepdeck::elab

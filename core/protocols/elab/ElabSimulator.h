@@ -86,6 +86,9 @@ public:
     {
         return m_board.stream.executedRecord();
     }
+    // Where the axes stood after each executed stream vector and where each move came to rest
+    // (ElabSimBoard::trace).
+    const std::vector<Triple<qint64>>& positionTrace() const { return m_board.trace; }
     bool streamHostPaused() const { return m_board.stream.hostPaused(); }
     // The most <DC2> pairs that arrived after one of the board's XOFFs, before its XON.
     int streamMostPairsAfterXOff() const { return m_board.stream.mostPairsAfterXOff(); }

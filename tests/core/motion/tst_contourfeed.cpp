@@ -15,6 +15,7 @@ class TestContourFeed : public QObject
 private Q_SLOTS:
     void producerThread_consumerGetsTheSameTicksAsOneThread();
     void wakeUp_calledPerMoveAndClose_starvedPullsCounted();
+    void hold_noTickUntilReleasedThenTheSameTicks();
 };
 
 namespace {
@@ -116,6 +117,38 @@ void TestContourFeed::wakeUp_calledPerMoveAndClose_starvedPullsCounted()
     QVERIFY(feed.finished());
     QCOMPARE(feed.steps()[0], qint64(200));
     QCOMPARE(feed.starvedPulls(), qint64(1)); // finished is not starved
+}
+
+// A feed hold gives no tick (and is not counted as starved); released, it wakes the consumer
+// and the rest of the path comes, the ticks the same as without the hold.
+void TestContourFeed::hold_noTickUntilReleasedThenTheSameTicks()
+{
+    ContourFeed plain(fresh());
+    ContourFeed held(fresh());
+    std::atomic<int> wakes{0};
+    held.setWakeUp([&] { ++wakes; });
+    for (int i = 0; i < 4; ++i) {
+        QVERIFY(plain.append(zig(i)).isEmpty());
+        QVERIFY(held.append(zig(i)).isEmpty());
+    }
+    plain.close();
+    held.close();
+    const int before = wakes.load();
+    StepTick ticks[64];
+    QCOMPARE(held.pull(ticks, 64), 64);
+    held.setHeld(true);
+    QVERIFY(held.isHeld());
+    QCOMPARE(held.pull(ticks, 64), 0);
+    QCOMPARE(held.pull(ticks, 64), 0);
+    QCOMPARE(held.starvedPulls(), qint64(0));
+    QVERIFY(!held.finished());
+    held.setHeld(false);
+    QCOMPARE(wakes.load(), before + 1);
+    const QList<StepPosition> rest = drain(held);
+    const QList<StepPosition> all = drain(plain);
+    QCOMPARE(rest.size() + 64, all.size());
+    QCOMPARE(held.steps(), plain.steps());
+    QCOMPARE(held.ticks(), plain.ticks());
 }
 
 QTEST_GUILESS_MAIN(TestContourFeed)

@@ -28,6 +28,11 @@ private Q_SLOTS:
     void feedFactor_double_halfTheTicksForTheRest();
     void highestFeed_lineAlongTheFinestAxis();
     void stepLimits_lineBeyond_endsAtTheLastTickInsideFaultSaysWhy();
+    void stepLimits_twoSources_theTighterHolds();
+    void invertedAxis_negativeScale_stepsTheOtherWayRateBounded();
+    void origin_offTheStepGrid_everyTickTheNearestStep();
+    void feedFactor_beyondAMovesTick_thatMoveAtOneStepPerTick();
+    void movesDoneAndQueuedSeconds_followTheTicks();
 };
 
 namespace {
@@ -63,8 +68,7 @@ QList<StepPosition> pullAll(ContourSteps& c, int chunk = 0, quint32 seed = 1)
 }
 
 // The largest distance (in steps, per axis) between a tick and ideal(seconds) in units, both
-// measured from where the stream started (origin in units, originSteps in steps: the start's
-// own rounding to a step is the machine's, not the stream's).
+// measured from origin (units) and originSteps (steps); by default both are 0: whole steps.
 double worstDeviation(const QList<StepPosition>& ticks, const StepScale& s,
                       const std::function<Position(double)>& ideal, const Position& origin = {},
                       const StepPosition& originSteps = {})
@@ -180,15 +184,14 @@ void TestContourSteps::arc_circleAndHelix_onTheCircleAtTheFeed()
     QVERIFY2(std::abs(ticks.size() - expected) <= 1,
              qPrintable(QStringLiteral("%1 ticks, %2 expected").arg(ticks.size()).arg(expected)));
     // Every tick within half a step (per axis) of the true helix at that time, and within one
-    // step of the circle (its distance from the centre).
-    const double deviation = worstDeviation(
-        ticks, s,
-        [&](double t) {
-            const double u = std::min(feed * t / length, 1.0);
-            const double angle = startAngle + u * sweep;
-            return Position{cx + r * std::cos(angle), cy + r * std::sin(angle), u * zTravel};
-        },
-        arc.start, from);
+    // step of the circle (its distance from the centre). The board starts on the step nearest
+    // the arc's start, and every tick is the step nearest its point (ContourSteps::stepsAt),
+    // so the ticks are compared in whole steps, not from the start.
+    const double deviation = worstDeviation(ticks, s, [&](double t) {
+        const double u = std::min(feed * t / length, 1.0);
+        const double angle = startAngle + u * sweep;
+        return Position{cx + r * std::cos(angle), cy + r * std::sin(angle), u * zTravel};
+    });
     QVERIFY2(deviation <= 0.5 + 1e-6, qPrintable(QString::number(deviation)));
     double radial = 0;
     for (const StepPosition& p : ticks)
@@ -374,6 +377,93 @@ void TestContourSteps::stepLimits_lineBeyond_endsAtTheLastTickInsideFaultSaysWhy
     StepTick none[4];
     QCOMPARE(c.pull(none, 4), 0);
     QVERIFY(!c.append(CanonicalMove::straight(3, {10, 5, 0}, {0, 5, 0}, 5, 5)).isEmpty());
+}
+
+// The machine's soft limits and the controller's own both hold: the second call narrows.
+void TestContourSteps::stepLimits_twoSources_theTighterHolds()
+{
+    ContourSteps c(scale3(100, 100, 400), {}, {}, kTickRate);
+    c.setStepLimits(0, QStringLiteral("X"), -1000, 300);
+    c.setStepLimits(0, QStringLiteral("X"), -50, 800);
+    QVERIFY(c.append(CanonicalMove::straight(3, {}, {5, 0, 0}, 5, 1)).isEmpty());
+    c.close();
+    const QList<StepPosition> ticks = pullAll(c);
+    QCOMPARE(ticks.last()[0], qint64(300));
+    QVERIFY2(c.fault().contains(QStringLiteral("beyond its soft limit 300")),
+             qPrintable(c.fault()));
+}
+
+// An inverted axis counts -100 steps/mm: a move of +2 mm is -200 steps, one step per tick at
+// most (its rate bound uses the scale's size), and a feed beyond the tick is refused as on an
+// axis that is not inverted.
+void TestContourSteps::invertedAxis_negativeScale_stepsTheOtherWayRateBounded()
+{
+    const StepScale s = scale3(-100, 100, 400);
+    ContourSteps c(s, {}, {}, kTickRate);
+    QVERIFY(!c.append(CanonicalMove::straight(3, {}, {2, 0, 0}, 25, 1)).isEmpty()); // 2500/s
+    QVERIFY(c.append(CanonicalMove::straight(3, {}, {2, 0, 0}, 10, 1)).isEmpty());
+    QVERIFY(!c.append(CanonicalMove::straight(3, {0.5, 0, 0}, {3, 0, 0}, 10, 2)).isEmpty());
+    c.close();
+    const QList<StepPosition> ticks = pullAll(c);
+    QCOMPARE(ticks.last()[0], qint64(-200));
+    QVERIFY(singleSteps(ticks, {}));
+    QVERIFY(std::abs(ticks.size() - 400) <= 1); // 2 mm at 10 mm/s: 0.2 s of 2000 ticks/s
+    for (qsizetype k = 0; k < ticks.size(); ++k)
+        QVERIFY(std::fabs(double(ticks.at(k)[0]) + double(k + 1) * 10 / kTickRate * 100) <=
+                0.5 + 1e-9);
+}
+
+// A contour starting off the step grid (X at 0.004 mm, 100 steps/mm: the board at step 0):
+// every tick is the step nearest the ideal point itself, as a positioning move to it would end,
+// and the end is the step nearest the end (1.004 mm -> 100, not 0 + round(100.0)).
+void TestContourSteps::origin_offTheStepGrid_everyTickTheNearestStep()
+{
+    ContourSteps c(scale3(100, 100, 400), {0.004, 0, 0}, {}, kTickRate);
+    QVERIFY(c.append(CanonicalMove::straight(3, {0.004, 0, 0}, {1.006, 0, 0}, 5, 1)).isEmpty());
+    c.close();
+    const QList<StepPosition> ticks = pullAll(c);
+    QCOMPARE(ticks.last()[0], qint64(101)); // round(100.6)
+    for (qsizetype k = 0; k < ticks.size(); ++k) {
+        const double ideal = std::min(0.004 + double(k + 1) * 5 / kTickRate, 1.006) * 100;
+        QVERIFY(std::fabs(double(ticks.at(k)[0]) - ideal) <= 0.5 + 1e-9);
+    }
+}
+
+// At 200 %: a move at 5 mm/s on X (500 steps/s at 100 steps/mm) runs at 10 mm/s; one at
+// 15 mm/s (1500 steps/s, taken at 100 %) can only go to 20 mm/s at 2000 ticks/s: it runs
+// there, one step per tick, and no tick carries two steps.
+void TestContourSteps::feedFactor_beyondAMovesTick_thatMoveAtOneStepPerTick()
+{
+    ContourSteps c(scale3(100, 100, 400), {}, {}, kTickRate, 2.0);
+    c.setFeedFactor(2.0);
+    QVERIFY(c.append(CanonicalMove::straight(3, {}, {1, 0, 0}, 5, 1)).isEmpty());
+    QVERIFY(c.append(CanonicalMove::straight(3, {1, 0, 0}, {3, 0, 0}, 15, 2)).isEmpty());
+    c.close();
+    const QList<StepPosition> ticks = pullAll(c);
+    QVERIFY(singleSteps(ticks, {}));
+    QCOMPARE(c.clampedSteps(), qint64(0));
+    // 1 mm at 10 mm/s (200 ticks), then 2 mm at 20 mm/s (200 ticks).
+    QVERIFY2(std::abs(ticks.size() - 400) <= 1, qPrintable(QString::number(ticks.size())));
+    QCOMPARE(ticks.last()[0], qint64(300));
+}
+
+void TestContourSteps::movesDoneAndQueuedSeconds_followTheTicks()
+{
+    ContourSteps c(scale3(100, 100, 400), {}, {}, kTickRate);
+    QVERIFY(c.append(CanonicalMove::straight(3, {}, {1, 0, 0}, 5, 1)).isEmpty());        // 0.2 s
+    QVERIFY(c.append(CanonicalMove::straight(3, {1, 0, 0}, {1, 0, 0}, 5, 2)).isEmpty()); // 0 s
+    QVERIFY(c.append(CanonicalMove::straight(3, {1, 0, 0}, {1, 2, 0}, 5, 3)).isEmpty()); // 0.4 s
+    QCOMPARE(c.movesTaken(), qint64(3));
+    QCOMPARE(c.movesDone(), qint64(1)); // the empty move
+    QVERIFY(std::fabs(c.queuedSeconds() - 0.6) < 1e-9);
+    StepTick ticks[500];
+    QCOMPARE(c.pull(ticks, 500), 500); // 0.25 s: into the third move
+    QCOMPARE(c.movesDone(), qint64(2));
+    QVERIFY(std::fabs(c.queuedSeconds() - 0.35) < 1e-6);
+    c.close();
+    pullAll(c);
+    QCOMPARE(c.movesDone(), qint64(3));
+    QCOMPARE(c.queuedSeconds(), 0.0);
 }
 
 QTEST_GUILESS_MAIN(TestContourSteps)
