@@ -88,6 +88,15 @@ struct Capabilities
     // The feed-rate parameter is written for every axis of the controller at once (E-LAB
     // SetFeedSpeed <FS> carries X, Y and Z in one frame): a G1 writes a rate for each.
     bool feedRateWholeSet = false;
+    // Contours as one step stream (issue 30, Controller::feedContour): a program's chain of
+    // feed moves becomes step vectors, one per tick, the tick rate written as
+    // feedRateParameter on every axis of the controller. contourTickBelow: the per-axis
+    // parameter the tick rate must stay below (E-LAB: feed mode has no ramp, so the feed speed
+    // is below the start speed); contourMaxTickRate: the ticks per second the wire carries
+    // beside the polls.
+    bool contourStream = false;
+    const char* contourTickBelow = nullptr;
+    double contourMaxTickRate = 0;
     // The parameter whose schema range is M3's S (E-LAB "spindle-rpm"); null: S is not
     // range-checked beyond the program's own 0..1000000.
     const char* spindleSpeedParameter = nullptr;

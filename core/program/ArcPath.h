@@ -60,6 +60,22 @@ public:
     // radius changes evenly), with the helix axis' travel (G93, InverseTime).
     double length() const;
     double sweep() const { return m_sweep; } // radians; + counter-clockwise
+    // The curve itself, by machine axis index (ContourMoves lays it on a step stream whole).
+    struct Shape
+    {
+        int axis[2]; // the plane's axes; the angle runs from axis[0] towards axis[1]
+        int helix;   // -1: none moves
+        double centre[2];
+        double startRadius, endRadius, startAngle, sweep;
+        double end[2];
+        double helixEnd;
+    };
+    Shape shape() const
+    {
+        return Shape{
+            {m_axis[0], m_axis[1]}, m_helix, {m_centre[0], m_centre[1]}, m_startRadius, m_endRadius,
+            m_startAngle,           m_sweep, {m_end[0], m_end[1]},       m_helixEnd};
+    }
 
 private:
     ArcPath() = default;

@@ -20,7 +20,8 @@ int axisIndex(const machine::MachineDescription& d, const QString& name)
 } // namespace
 
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
-    : m_facts(facts), m_out(*out), m_errors(errors), m_known(facts.knownParameters)
+    : m_facts(facts), m_out(*out), m_errors(errors), m_contours(facts),
+      m_known(facts.knownParameters)
 {
     // m_facts outlives the plan unchanged: pointers into its maps stay valid.
     static const Capabilities kNone;
@@ -90,6 +91,9 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
 {
     const machine::MachineDescription& d = m_facts.description;
     bool ratesTaken = true;
+    // A block of a contour stream writes no rate of its own: the stream's tick is written.
+    const ContourMoves::Stream* stream =
+        block.kind == BlockKind::Feed ? m_contours.streamOf(block) : nullptr;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         AxisMove m;
         m.axis = axisIndex(d, it.key());
@@ -101,7 +105,9 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         }
         const machine::MachineAxis& axis = d.axes.at(m.axis);
         m.value = units::toAxisUnits(axis, it.value(), block.inches);
-        if (block.kind == BlockKind::Feed) {
+        if (stream) {
+            m.speed = m_contours.feedPerSecond(*stream, block); // an estimate's
+        } else if (block.kind == BlockKind::Feed) {
             // A refused rate still moves the axis in the walk, so what follows is judged
             // from where the program means it to be (its time stays unknown).
             ratesTaken = checkRate(block, m.axis, &m.speed) && ratesTaken;
@@ -112,8 +118,43 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         }
         addMove(m, out);
     }
-    if (block.kind == BlockKind::Feed && ratesTaken)
+    if (stream)
+        checkContourTick(block, *stream);
+    else if (block.kind == BlockKind::Feed && ratesTaken)
         checkFeedWrite(block);
+}
+
+// A contour's stream runs at the tick rate ContourMoves chose from what the device holds,
+// written as the feed-rate parameter on every axis of its controller: from then on the device
+// holds that (the next G1 of its own is judged against it).
+void ProgramPlan::checkContourTick(const ProgramBlock& block, const ContourMoves::Stream& stream)
+{
+    if (stream.tickRate <= 0) {
+        error(block, block.columnOf(QStringLiteral("F")), [&] {
+            return ProgramCheck::tr("the move runs in the contour stream of controller \"%1\", "
+                                    "but %2")
+                .arg(stream.controller, stream.tickRefusal);
+        });
+        return;
+    }
+    const auto c = m_facts.capabilities.constFind(stream.controller);
+    if (c == m_facts.capabilities.cend() || !c->feedRateParameter)
+        return;
+    const QString name = QString::fromLatin1(c->feedRateParameter);
+    const qint64 tick = qint64(stream.tickRate);
+    const auto holds = [&] {
+        const ParameterValue v = std::as_const(m_known).value(stream.controller).value(name);
+        for (Axis a : c->axes)
+            if (v.perAxis.value(a) != QVariant(tick))
+                return false;
+        return true;
+    };
+    if (holds())
+        return; // the contour before wrote it (a CAM program's feed moves mostly are one)
+    ParameterValue& held = m_known[stream.controller][name];
+    for (Axis a : c->axes)
+        held.perAxis.insert(a, tick);
+    m_lastTakenFeed = LastTakenFeed{};
 }
 
 // G2/G3: the rates of a G1 over the axes the arc moves (ArcPath::rateBlock), kept with the

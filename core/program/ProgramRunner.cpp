@@ -1,12 +1,14 @@
 // ProgramRunner: the run's states and its walk through the blocks (repeats, pause, step,
 // abort, faults). What each block sends is in ProgramRunnerBlocks.cpp.
 #include "ProgramRunner.h"
+#include "ContourRun.h"
 #include "ProgramLine.h"
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
 #include "ProgramReader.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
+#include <algorithm>
 
 namespace stepdeck::program {
 
@@ -62,6 +64,8 @@ ProgramRunner::~ProgramRunner() = default;
 
 int ProgramRunner::currentLine() const
 {
+    if (m_contour && m_contour->currentLine() > 0)
+        return m_contour->currentLine(); // m_block was read ahead
     return m_index >= 0 ? m_block.line : 0;
 }
 
@@ -164,6 +168,12 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
     m_failureKind = ErrorKind::None;
     ++m_run;
     m_rates = std::make_unique<ProgramRates>(m_machine);
+    dropContour();
+    m_heldBlock = false;
+    m_feedHeld = false;
+    m_contourMoves.reset();
+    m_runFacts = facts;
+    m_contourMoves = std::make_unique<ContourMoves>(m_runFacts);
     connectMachine();
     setState(RunState::Running);
     // Queued: the caller sees start() return before the first block's signals.
@@ -202,13 +212,50 @@ void ProgramRunner::pause()
     if (m_state != RunState::Running || m_pauseAsked)
         return;
     m_pauseAsked = true;
+    if (m_contour)
+        m_contour->close(); // the blocks appended run, then it holds (ContourRun::kAheadSeconds)
     Q_EMIT stateChanged(m_state); // pausePending() changed: "pausing after this block"
+}
+
+void ProgramRunner::setFeedOverride(double percent)
+{
+    m_feedOverride = std::clamp(percent, 10.0, 200.0) / 100.0;
+    if (m_contour)
+        m_contour->setFeedFactor(m_feedOverride);
+}
+
+bool ProgramRunner::holdFeed()
+{
+    if (m_state != RunState::Running)
+        return false;
+    if (!m_contour) {
+        pause();
+        return true;
+    }
+    m_feedHeld = true;
+    m_contour->hold(true);
+    m_operatorStop = false;
+    m_prompt = tr("Feed hold: the path stops where it is; Resume goes on from there");
+    setState(RunState::Paused);
+    Q_EMIT paused(currentLine(), m_prompt);
+    return true;
 }
 
 void ProgramRunner::resume()
 {
+    if (m_state == RunState::Running && m_pauseAsked) {
+        m_pauseAsked = false; // the pause asked for is withdrawn before it held
+        Q_EMIT stateChanged(m_state);
+        return;
+    }
     if (m_state != RunState::Paused)
         return;
+    if (std::exchange(m_feedHeld, false) && m_contour) {
+        m_prompt.clear();
+        setState(RunState::Running);
+        m_contour->hold(false); // on along the path from where it stands
+        return;
+    }
     m_pauseAsked = false;
     m_stepOnly = false;
     m_prompt.clear();
@@ -223,6 +270,15 @@ void ProgramRunner::step()
 {
     if (m_state != RunState::Paused)
         return;
+    if (std::exchange(m_feedHeld, false) && m_contour) {
+        // The rest of the moves already appended is the step; then it holds.
+        m_pauseAsked = true;
+        m_contour->close();
+        m_prompt.clear();
+        setState(RunState::Running);
+        m_contour->hold(false);
+        return;
+    }
     m_pauseAsked = false;
     m_stepOnly = true;
     m_prompt.clear();
@@ -243,7 +299,11 @@ void ProgramRunner::abort()
     m_waitInput = 0;
     m_requests.clear();
     m_machine->stop();
-    if (m_motion == 0) {
+    if (m_contour)
+        m_contour->cancel(); // one not given yet ends the run here
+    if (isEnded(m_state))
+        return;
+    if (m_motion == 0 && !m_contour) {
         end(RunState::Aborted, lineText(tr("aborted")));
         return;
     }
@@ -269,17 +329,32 @@ QStringList ProgramRunner::controllersWithoutStop() const
 
 void ProgramRunner::runNext()
 {
-    if (m_state != RunState::Running || m_aborting)
-        return;
-    if (!advance()) {
-        if (!m_reader->error().isEmpty())
-            fail(ErrorKind::InvalidValue, m_reader->error());
-        else
-            finishProgram();
+    while (m_state == RunState::Running && !m_aborting) {
+        if (m_contour && !m_contour->isClosed() && !m_contour->hasRoom())
+            return; // ContourRun::roomForMoves calls again
+        if (!std::exchange(m_heldBlock, false) && !advance()) {
+            if (!m_reader->error().isEmpty())
+                fail(ErrorKind::InvalidValue, m_reader->error());
+            else if (m_contour)
+                m_contour->close(); // its end comes back here, and then the program's
+            else
+                finishProgram();
+            return;
+        }
+        if (m_contour && joinsContour(m_block)) {
+            if (!appendToContour(m_block))
+                return;
+            continue;
+        }
+        if (m_contour) { // a block of another kind: it waits for the contour's end
+            m_heldBlock = true;
+            m_contour->close();
+            return;
+        }
+        Q_EMIT blockStarted(m_block.line, m_block.text);
+        startBlock(m_block);
         return;
     }
-    Q_EMIT blockStarted(m_block.line, m_block.text);
-    startBlock(m_block);
 }
 
 // Onto the next block that does something; repeats are counted here.
@@ -384,6 +459,9 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_arc.reset();
     m_cycle.reset();
     m_heldInPath = false;
+    dropContour();
+    m_heldBlock = false;
+    m_feedHeld = false;
     m_requests.clear();
     m_afterRequests = nullptr;
     if (state != RunState::Finished && m_rates)

@@ -1,5 +1,6 @@
 #pragma once
 #include "ArcPath.h"
+#include "ContourMoves.h"
 #include "DrillCycle.h"
 #include "ProgramBlock.h"
 #include "ProgramCheck.h"
@@ -19,6 +20,7 @@ class Machine;
 
 namespace stepdeck::program {
 
+class ContourRun;
 class ProgramRates;
 class ProgramReader;
 
@@ -38,8 +40,11 @@ bool isEnded(RunState state);         // Finished, Failed, Aborted
 // Runs a checked program on a machine (issue 20, docs/programs.md "Running"), one block at a
 // time: a block starts only when the devices confirmed the previous one (arrival and
 // standstill through Machine::move / Machine::reference, an acknowledged output, spindle or
-// rate write, a dwell's time, an input's level). Nothing is sent ahead. It reaches the
-// controllers only through the Machine and its ControllerSessions. No Widgets.
+// rate write, a dwell's time, an input's level). Nothing is sent ahead, except that feed
+// moves of a contour (ContourMoves: G1/G2/G3 in G64 on a controller with a step stream) run
+// as one stream (ContourRun), their moves appended while it runs, at most
+// ContourRun::kAheadSeconds of path ahead. It reaches the controllers only through the Machine
+// and its ControllerSessions. No Widgets.
 //
 // Faults: a refused block, a failed request, a timeout or a lost link stops every controller
 // and ends the program Failed at that line with the reason and its ErrorKind; a program never
@@ -99,8 +104,19 @@ public:
     void setOptionalStops(bool on) { m_optionalStops = on; }
     bool optionalStops() const { return m_optionalStops; }
 
-    void pause();  // finish the current block, then hold (pausePending() until then)
-    void resume(); // from Paused: on with the next block
+    void pause(); // finish the current block, then hold (pausePending() until then)
+    // Feed hold (issue 30): a contour running as a step stream stops on its path at once
+    // (ContourRun::hold: within ElabCtlMotionOps::kContourLeadSeconds at the board), Paused
+    // with feedHeld(); resume() goes on along the path from there. Without a contour under way
+    // it is pause(): a block of its own finishes first. False when nothing runs.
+    bool holdFeed();
+    bool feedHeld() const { return m_feedHeld; }
+    // Feed override, 10..200 % (issue 30): a contour's ticks not yet given run at that share of
+    // F (a move at most as fast as one step per tick allows), from now and for the contours
+    // after; a block of its own runs at its F. May change at any time.
+    void setFeedOverride(double percent);
+    double feedOverride() const { return m_feedOverride * 100; }
+    void resume(); // from Paused: on with the next block; while a pause is pending: withdrawn
     void step();   // from Paused: run one block, then pause again
     void abort();  // stop every controller; ends Aborted once the axes stand
 
@@ -183,6 +199,12 @@ private:
     void onMotionFinished(quint64 id, bool ok, const QString& message);
     void onControllerFailed(const QString& controllerId, const QString& message);
     QMap<QString, double> axisTargets(const ProgramBlock& block) const;
+    // Contours (ProgramRunnerContour.cpp).
+    bool joinsContour(const ProgramBlock& block) const;
+    void openContour(const ContourMoves::Stream& stream);
+    bool appendToContour(const ProgramBlock& block); // false: the run failed
+    void onContourFinished(bool ok, ErrorKind kind, const QString& message);
+    void dropContour();
 
     machine::Machine* m_machine;
     std::unique_ptr<ProgramReader> m_reader; // the running program's blocks, read as it goes
@@ -231,6 +253,15 @@ private:
     size_t m_segment = 0;              // its move under way
     bool m_heldInPath = false;         // paused between two moves of m_arc or m_cycle
     QList<QMetaObject::Connection> m_connections;
+    // The machine's facts at start() and the contour streams they give (ContourMoves keeps a
+    // reference to them).
+    MachineFacts m_runFacts;
+    std::unique_ptr<ContourMoves> m_contourMoves;
+    std::unique_ptr<ContourRun> m_contour; // the contour running, if any
+    // m_block was read but waits for the contour to end (runNext takes it, not the next one).
+    bool m_heldBlock = false;
+    bool m_feedHeld = false; // holdFeed() held a contour on its path
+    double m_feedOverride = 1.0;
 };
 
 } // namespace stepdeck::program

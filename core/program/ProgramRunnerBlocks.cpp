@@ -39,6 +39,13 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
 
 void ProgramRunner::startAction(const ProgramBlock& block)
 {
+    if (const ContourMoves::Stream* stream = m_contourMoves->streamOf(block)) {
+        // A G1/G2/G3 of a contour: the first block of a stream, after what its line switched.
+        openContour(*stream);
+        if (appendToContour(block))
+            runNext();
+        return;
+    }
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:

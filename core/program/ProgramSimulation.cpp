@@ -10,7 +10,7 @@ namespace stepdeck::program {
 ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* reader,
                                      CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_reader(*reader), m_moves(m_planned.moves),
-      m_errors(errors), m_plan(facts, &m_planned, errors),
+      m_errors(errors), m_plan(facts, &m_planned, errors), m_contours(facts),
       m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools)
 {
     const size_t n = size_t(m_axes.size());
@@ -209,6 +209,12 @@ void ProgramSimulation::move(PlannedBlock& planned)
     // The axes of a block start together, each at its own rate: the block lasts as long as
     // its slowest axis (no acceleration: an estimate).
     double seconds = 0;
+    if (const ContourMoves::Stream* stream = m_contours.streamOf(block)) {
+        const motion::CanonicalMove line = m_contours.lineMove(
+            *stream, block, m_contours.positionOf(*stream, m_programmed),
+            [&](const QString& axis) { return m_coordinates.offset(block, axis); });
+        checkContourFeed(block, *stream, line);
+    }
     AxisMove* const first = m_moves.data() + planned.firstMove;
     for (AxisMove* m = first; m != first + planned.moveCount; ++m)
         moveAxis(block, *m, &seconds);
@@ -340,6 +346,18 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
             preview->extents.insert(m_axes.at(i).name,
                                     AxisExtent{m_minimum[a], m_maximum[a], bool(m_moved[a])});
     }
+}
+
+// The stream runs every tick at one rate, at most one step per tick on each axis: a feed whose
+// path needs more on some axis is refused (ContourMoves::feedRefusal), once per line.
+void ProgramSimulation::checkContourFeed(const ProgramBlock& block,
+                                         const ContourMoves::Stream& stream,
+                                         const motion::CanonicalMove& move)
+{
+    const QString why = m_contours.feedRefusal(stream, move, block);
+    const int column = block.columnOf(QStringLiteral("F"));
+    if (!why.isEmpty() && m_errors->once(block.line, column, kContourFeed))
+        m_errors->add(block.line, column, [&] { return why; });
 }
 
 } // namespace stepdeck::program

@@ -3,6 +3,7 @@
 // and walked with their repeats counted out (ProgramSimulation.cpp, arcs in
 // ProgramSimulationArc.cpp).
 #include "ArcPath.h"
+#include "ContourMoves.h"
 #include "DrillCycle.h"
 #include "PreviewPath.h"
 #include "ProgramCheck.h"
@@ -89,6 +90,7 @@ private:
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, int axisIndex, double* speed);
+    void checkContourTick(const ProgramBlock& block, const ContourMoves::Stream& stream);
     void checkFeedWrite(const ProgramBlock& block);
     QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,
                              ParameterSet* set) const;
@@ -111,6 +113,7 @@ private:
     const MachineFacts& m_facts;
     PlannedProgram& m_out;
     CheckErrors* m_errors;
+    ContourMoves m_contours;
     // Per machine axis (m_facts.description.axes): its controller's capabilities and feed
     // rate parameter, looked up once, not per block (issue 29: the check reads 10^6 lines/s).
     struct AxisFacts
@@ -165,7 +168,7 @@ class ProgramSimulation
 {
 public:
     // What CheckErrors::once() tells apart on one line and column.
-    enum OnceKind { kUnknownPosition = 1, kSoftLimit = 2, kBlockError = 3 };
+    enum OnceKind { kUnknownPosition = 1, kSoftLimit = 2, kBlockError = 3, kContourFeed = 4 };
     ProgramSimulation(const MachineFacts& facts, ProgramReader* reader, CheckErrors* errors);
     // Each block the first time the walk reaches it (or skips it in a repeat of no passes).
     void setFirstVisit(std::function<void(const ProgramBlock&)> visit)
@@ -196,6 +199,9 @@ private:
     void arc(PlannedBlock& planned);
     void coordinates(PlannedBlock& planned);
     void arcChords(const ArcPath& path, PlannedBlock& planned);
+    // A block of a contour stream (ContourMoves): its feed against the stream's tick.
+    void checkContourFeed(const ProgramBlock& block, const ContourMoves::Stream& stream,
+                          const motion::CanonicalMove& move);
     void cycle(PlannedBlock& planned);
     bool countChords(qint64 chords, PlannedBlock& planned); // false: the run's bound is passed
     // Whether machine position `to` of the axis lies outside its soft limits (reported once
@@ -218,6 +224,7 @@ private:
     std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
     ProgramPlan m_plan;
+    ContourMoves m_contours;
     std::function<void(const ProgramBlock&)> m_firstVisit;
     int m_firstUnvisited = 0; // blocks before it were planned once
     qint64 m_firstVisits = 0; // blocks the walk planned for the first time

@@ -38,6 +38,10 @@ void ProgramSimulation::arc(PlannedBlock& planned)
         return; // where it would end is unknown: the positions stay as they were
     }
     const ArcPath& path = std::get<ArcPath>(planning);
+    if (const ContourMoves::Stream* stream = m_contours.streamOf(block))
+        checkContourFeed(
+            block, *stream,
+            m_contours.arcMove(*stream, block, path, m_contours.positionOf(*stream, m_programmed)));
     // The soft limits where the curve reaches furthest on each axis, not only at its chords.
     for (const auto& [axis, range] : path.bounds()) {
         AxisMove* m = plannedMove(planned, axis);

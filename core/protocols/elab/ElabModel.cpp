@@ -45,6 +45,12 @@ Capabilities capabilities()
     caps.feedRateUsesFeedMode = true;
     caps.feedRateWholeSet = true; // <FS> carries X, Y and Z in one frame
     caps.spindleSpeedParameter = "spindle-rpm";
+    // A contour is one <DC2> stream (manual, "SetFeedStepXYZ": the board empties its step
+    // buffer at the feed rate, one vector per tick). 57600 8N2 carries 5 236 characters/s,
+    // 2 618 <DC2> pairs: 2 400 ticks/s leave room for the status polls.
+    caps.contourStream = true;
+    caps.contourTickBelow = "start-speed";
+    caps.contourMaxTickRate = 2400;
     return caps;
 }
 

@@ -13,6 +13,26 @@ using machine::MachineAxis;
 using machine::MachineController;
 using machine::MachineDescription;
 
+// What `--setup-defaults` writes (ModelInfo::setupBeforeMotion at the schema's defaults): what a
+// session knows its device holds once the setup was written.
+inline ParameterSet setupDefaults(const ModelInfo& info)
+{
+    ParameterSet set;
+    for (const QString& name : info.setupBeforeMotion)
+        if (const ParameterSpec* spec = info.schema.find(name)) {
+            ParameterValue v;
+            if (spec->perAxis)
+                for (Axis a : info.capabilities.axes)
+                    v.perAxis.insert(a, spec->defaultValue);
+            else
+                v.global = spec->defaultValue;
+            set.insert(name, v);
+        }
+    return set;
+}
+
+// The machines' E-LAB tables are set up for contours (issue 30): start speed 2401 steps/s on
+// every axis, so a stream ticks at the wire's 2400/s (ContourMoves::tickRate).
 inline void addController(MachineFacts* facts, const QString& id, const QString& model)
 {
     const ModelInfo* info = findModel(model);
@@ -24,6 +44,12 @@ inline void addController(MachineFacts* facts, const QString& id, const QString&
     facts->description.controllers << c;
     facts->capabilities.insert(id, info->capabilities);
     facts->schemas.insert(id, info->schema);
+    if (model == QLatin1String("elab")) {
+        ParameterValue start;
+        for (Axis a : info->capabilities.axes)
+            start.perAxis.insert(a, 2401);
+        facts->knownParameters[id].insert(QStringLiteral("start-speed"), start);
+    }
 }
 
 inline MachineAxis axis(const QString& name, const QString& controller, Axis on, AxisUnit unit,

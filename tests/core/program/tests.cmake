@@ -22,7 +22,7 @@ stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_progr
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The runner on a machine of an E-LAB and a Nanotec simulator on two pseudo-terminals: its walk,
 # and what each block sends.
-foreach(_t tst_programrunner tst_programrunnermotion)
+foreach(_t tst_programrunner tst_programrunnermotion tst_programcontour)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/ProgramRunnerTestSupport.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
@@ -47,3 +47,7 @@ target_compile_definitions(tst_camprograms PRIVATE
 # share.
 stepdeck_add_test(tst_drillcycle SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drillcycle.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MillTestSupport.h LABELS unit)
+# Which blocks run as one step stream and the moves they become (issue 30), and the check's
+# refusal of a feed the stream's tick cannot carry.
+stepdeck_add_test(tst_contourmoves SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contourmoves.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)

@@ -1,14 +1,17 @@
 // Programs in the styles CAM posts write (issue 29), run end to end on an E-LAB table and on an
 // EMIS SMC-IC4 (X, Y, Z in mm, 100 steps/mm), each its simulator on a pseudo-terminal: their
 // headers, tool changes with a tool table, work offsets, G43, G53, arcs of I J and R, drilling
-// cycles. The programs are our own, in tests/core/program/cam/. What the board reached is read at
-// the simulator each time a move arrived, and compared with the path the check planned (within a
-// step) and with points worked out by hand.
+// cycles. The programs are our own, in tests/core/program/cam/. Where the EMIS went is read at
+// its simulator each time a move arrived and compared one to one with the path the check
+// planned (within a step); the E-LAB runs a contour's feed moves as one <DC2> stream (issue 30),
+// so its own trace (every executed vector, every move's rest) must pass within a step of every
+// planned point, in order. Both also reach points worked out by hand.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRunner.h"
+#include "protocols/elab/ElabSimulator.h"
 #include <QFile>
 #include <QSet>
 #include <QSignalSpy>
@@ -48,6 +51,8 @@ private Q_SLOTS:
 
 private:
     Point3 boardMm(); // where the board stands, machine mm from the reference
+    qsizetype traceSize();
+    QList<Point3> boardTrace(qsizetype from); // the E-LAB's path, machine mm from the reference
     bool setUp(const QString& model);
     bool prepare();
 
@@ -126,6 +131,26 @@ Point3 TestCamPrograms::boardMm()
         p.y = double(m_elab->sim()->position(Axis::Y) - m_origin[1]) / kStepsPerMm;
         p.z = double(m_elab->sim()->position(Axis::Z) - m_origin[2]) / kStepsPerMm;
         return p;
+    });
+}
+
+qsizetype TestCamPrograms::traceSize()
+{
+    return m_elab->probe([&] {
+        return qsizetype(static_cast<elab::ElabSimulator*>(m_elab->sim())->positionTrace().size());
+    });
+}
+
+QList<Point3> TestCamPrograms::boardTrace(qsizetype from)
+{
+    return m_elab->probe([&] {
+        QList<Point3> out;
+        const auto& trace = static_cast<elab::ElabSimulator*>(m_elab->sim())->positionTrace();
+        for (size_t i = size_t(from); i < trace.size(); ++i)
+            out << Point3{double(trace[i][0] - m_origin[0]) / kStepsPerMm,
+                          double(trace[i][1] - m_origin[1]) / kStepsPerMm,
+                          double(trace[i][2] - m_origin[2]) / kStepsPerMm};
+        return out;
     });
 }
 
@@ -232,6 +257,9 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
         if (ok)
             arrived << boardMm();
     });
+    const bool elab = model == QLatin1String("elab");
+    const qsizetype traceStart = elab ? traceSize() : 0;
+    const Point3 startMm = boardMm();
     QVERIFY2(m_runner->start(*program, 1, &errors),
              qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
     // The operator resumes at every pause (M6, M0); the first one's prompt is compared.
@@ -259,19 +287,45 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
         if (p.position.size() == 3 && p.line > 0 && !dwells.contains(p.line))
             plannedMachine << Point3{p.position.value("X") + 10, p.position.value("Y") + 10,
                                      p.position.value("Z") - 20};
-    QCOMPARE(arrived.size(), plannedMachine.size());
-    for (int i = 0; i < arrived.size(); ++i) {
-        const Point3 a = arrived.at(i), p = plannedMachine.at(i);
-        QVERIFY2(std::abs(a.x - p.x) <= 1 / kStepsPerMm && std::abs(a.y - p.y) <= 1 / kStepsPerMm &&
-                     std::abs(a.z - p.z) <= 1 / kStepsPerMm,
-                 qPrintable(
-                     QStringLiteral("move %1: board %2, planned %3").arg(i).arg(text(a), text(p))));
+    const double step = 1 / kStepsPerMm + 1e-9;
+    const auto near = [](const Point3& a, const Point3& b, double d) {
+        return std::abs(a.x - b.x) <= d && std::abs(a.y - b.y) <= d && std::abs(a.z - b.z) <= d;
+    };
+    if (elab) {
+        // The board's path passes within a step of each planned point, in the plan's order.
+        // From where it stood at the start (a first move may not move it at all).
+        const QList<Point3> trace = QList<Point3>{startMm} + boardTrace(traceStart);
+        qsizetype at = 0;
+        for (int i = 0; i < plannedMachine.size(); ++i) {
+            while (at < trace.size() && !near(trace.at(at), plannedMachine.at(i), step))
+                ++at;
+            QVERIFY2(at < trace.size(), qPrintable(QStringLiteral("planned point %1 %2 not passed")
+                                                       .arg(i)
+                                                       .arg(text(plannedMachine.at(i)))));
+        }
+        arrived = trace;
+        // The programs' feed moves (all but the drilling files' cycles) ran as <DC2> streams.
+        const qsizetype streamed = m_elab->probe([&] {
+            return qsizetype(
+                static_cast<elab::ElabSimulator*>(m_elab->sim())->executedStepRecord().size());
+        });
+        const bool cyclesOnly =
+            file.startsWith(QLatin1String("cambam")) || file.startsWith(QLatin1String("pcb2gcode"));
+        QVERIFY2(cyclesOnly || streamed > 0, qPrintable(file));
+    } else {
+        QCOMPARE(arrived.size(), plannedMachine.size());
+        for (int i = 0; i < arrived.size(); ++i)
+            QVERIFY2(near(arrived.at(i), plannedMachine.at(i), step),
+                     qPrintable(QStringLiteral("move %1: board %2, planned %3")
+                                    .arg(i)
+                                    .arg(text(arrived.at(i)), text(plannedMachine.at(i)))));
     }
-    // And the points worked out by hand, in their order.
+    // And the points worked out by hand, in their order (a contour's corner within a step).
+    const double spot = elab ? step : 1e-6;
     int next = 0;
     for (const Point3& a : arrived)
-        if (next + 2 < spots.size() && std::abs(a.x - spots.at(next)) < 1e-6 &&
-            std::abs(a.y - spots.at(next + 1)) < 1e-6 && std::abs(a.z - spots.at(next + 2)) < 1e-6)
+        if (next + 2 < spots.size() &&
+            near(a, Point3{spots.at(next), spots.at(next + 1), spots.at(next + 2)}, spot))
             next += 3;
     QVERIFY2(
         next == spots.size(),

@@ -100,35 +100,56 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
     QTest::newRow("G20: rotary axes stay degrees") << "mill"
                                                    << ""
                                                    << "G20 G28 A0\nG0 A80" << QStringList{};
+    // G61: each block on its own, its rate written to the board (docs/programs.md "How F maps").
     QTest::newRow("G1 rate above the E-LAB feed speed")
         << "mill"
         << ""
-        << "G28 X0\nG1 X10 F40000"
-        << QStringList{"2:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+        << "G61\nG28 X0\nG1 X10 F40000"
+        << QStringList{"3:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("a refused rate still moves the axis in the walk")
         << "mill"
         << ""
-        << "G28 X0\nG91 G1 X101 F40000"
-        << QStringList{"2:8: X reaches 101 mm, outside the soft limits 0..100 mm",
-                       "2:13: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+        << "G61\nG28 X0\nG91 G1 X101 F40000"
+        << QStringList{"3:8: X reaches 101 mm, outside the soft limits 0..100 mm",
+                       "3:13: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("G1 rate within the E-LAB feed speed")
         << "mill"
         << ""
-        << "G28 X0\nG1 X10 F39000" << QStringList{};
+        << "G61\nG28 X0\nG1 X10 F39000" << QStringList{};
     QTest::newRow("G1 rate from an earlier line: named at G1")
         << "mill"
         << ""
-        << "G28 X0\nF40000\nG1 X10"
-        << QStringList{"3:1: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
+        << "G61\nG28 X0\nF40000\nG1 X10"
+        << QStringList{"4:1: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("G20 converts the rate")
         << "mill"
         << ""
-        << "G20\nG28 X0\nG1 X1 F1600"
+        << "G61 G20\nG28 X0\nG1 X1 F1600"
         << QStringList{"3:7: F1600 is 67733 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
+    // G64 (the default): the E-LAB runs the feed moves as one stream ticking at 2400/s, one step
+    // per tick at most: X (100 steps/mm) at most 24 mm/s, Y (200 steps/mm) 12 mm/s.
+    QTest::newRow("contour: F beyond the tick, named with the highest")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F40000"
+        << QStringList{"2:8: F40000 is too fast for the contour stream of controller \"table\": "
+                       "at its 2400 ticks/s (one step per tick at most) this move's highest feed "
+                       "is F1439.9"};
+    QTest::newRow("contour: G20 converts F")
+        << "mill"
+        << ""
+        << "G20\nG28 Y0\nG1 Y1 F30"
+        << QStringList{"3:7: F30 is too fast for the contour stream of controller \"table\": at "
+                       "its 2400 ticks/s (one step per tick at most) this move's highest feed is "
+                       "F28.3"};
+    QTest::newRow("contour: the diagonal runs faster than either axis")
+        << "mill"
+        << ""
+        << "G28 X0 Y0\nG1 X10 Y10 F1000" << QStringList{};
     QTest::newRow("G1 below the Nanotec max-frequency")
         << "nanotec"
         << "X=0"
@@ -507,6 +528,7 @@ void TestProgramCheck::examples_eachChecksCleanOnItsModel()
         single.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
         single.capabilities.insert(model, info->capabilities);
         single.schemas.insert(model, info->schema);
+        single.knownParameters.insert(model, setupDefaults(*info)); // as --setup-defaults
         QFile file(dir.filePath(name));
         QVERIFY(file.open(QIODevice::ReadOnly));
         QStringList names;

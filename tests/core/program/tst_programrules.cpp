@@ -264,11 +264,19 @@ void TestProgramRules::check_elab_refusesWhatTheRunWould_data()
                                               "'12000' is out of range (allowed: 0..1000 rpm)"};
     QTest::newRow("M3 S800") << "start=100,100,100" << false << "M3 S800" << QStringList{};
     // 6000 steps/min = 100 steps/s, not below the start speed 100; F5994 (99.9) is.
+    // G61: the block on its own, its rate written to the board as feed speed.
     QTest::newRow("feed not below the start speed")
-        << "start=100,100,100" << false << "G91 G1 Z-1 F6000"
-        << QStringList{"1:12: F6000: controller \"elab\" would refuse its rate: Feed speed 100 "
+        << "start=100,100,100" << false << "G61 G91 G1 Z-1 F6000"
+        << QStringList{"1:16: F6000: controller \"elab\" would refuse its rate: Feed speed 100 "
                        "on axis X must be below Start speed 100 (feed mode has no ramp); F5969.9 "
                        "or less is taken, or change the setup on the Setup page"};
+    // G64 (the default): a contour stream ticks below the start speed, at 99/s: one step a tick
+    // at most is 5940 steps/min.
+    QTest::newRow("contour: feed beyond the tick below the start speed")
+        << "start=100,100,100" << false << "G91 G1 Z-1 F6000"
+        << QStringList{"1:12: F6000 is too fast for the contour stream of controller \"elab\": at "
+                       "its 99 ticks/s (one step per tick at most) this move's highest feed is "
+                       "F5939.9"};
     // G93: X's rate is its distance times F, 100 steps in 1 s; the highest F taken scales it.
     QTest::newRow("G93: X's rate not below the start speed")
         << "start=100,100,100" << false << "G91 G93 G1 X100 Y50 F60"
@@ -278,10 +286,15 @@ void TestProgramRules::check_elab_refusesWhatTheRunWould_data()
     QTest::newRow("G93: below it")
         << "start=100,100,100" << false << "G91 G93 G1 X100 Y50 F59" << QStringList{};
     QTest::newRow("start speed never written")
-        << "" << false << "G91 G1 X10 F600"
-        << QStringList{"1:12: F600: controller \"elab\" would refuse its rate: Feed speed must be "
+        << "" << false << "G61 G91 G1 X10 F600"
+        << QStringList{"1:16: F600: controller \"elab\" would refuse its rate: Feed speed must be "
                        "below Start speed (feed mode has no ramp), but Start speed is not known: "
                        "write Start speed in the same set; set it on the Setup page first"};
+    QTest::newRow("contour: start speed never written")
+        << "" << false << "G91 G1 X10 F600"
+        << QStringList{"1:12: the move runs in the contour stream of controller \"elab\", but a "
+                       "contour's steps run at one tick rate below Start speed on every axis, "
+                       "and Start speed is not known: write the controller's setup first"};
     // A fresh session: no feed speed written for Y and Z; the run writes X's rate for all.
     QTest::newRow("G0 then G1 of one axis, nothing written before")
         << "start=100,100,100" << false << "G91 G0 X100\nG1 X100 F5400" << QStringList{};

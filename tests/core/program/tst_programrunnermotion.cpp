@@ -126,10 +126,11 @@ void TestProgramRunnerMotion::g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBac
     QVERIFY(frameIndex(*m_nanotec, "#1A\r", putBack) > putBack);
 }
 
-// G1 on the board: a feed move (no ramp) at its feed speed, F 6 mm/min = 40 steps/s.
+// G1 in G61 (a block of its own, not a contour: issue 30) on the board: a feed move (no ramp)
+// at its feed speed, F 6 mm/min = 40 steps/s.
 void TestProgramRunnerMotion::g1_elab_feedMoveAtItsFeedSpeed()
 {
-    QVERIFY(run("G91 G1 X0.1 F6\n"));
+    QVERIFY(run("G61 G91 G1 X0.1 F6\n"));
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     // SetFeedSpeed <FS> with X at 40 (0x28), then the feed move of 40 steps (0x19 ...);
@@ -244,15 +245,15 @@ void logArrivals(Machine* machine, Device& board, ArrivalLog* log)
     });
 }
 
-// G3 full circle of radius 1 mm about X11 Y10 (400 steps/mm): ceil(2 pi / (2 acos(1 - 0.01)))
-// = 23 chords, each arriving on the circle to within a step at the board, the last back at
-// the start; counter-clockwise.
+// G3 full circle of radius 1 mm about X11 Y10 (400 steps/mm) in G61 (on its own, not a
+// contour): ceil(2 pi / (2 acos(1 - 0.01))) = 23 chords, each arriving on the circle to within a
+// step at the board, the last back at the start; counter-clockwise.
 void TestProgramRunnerMotion::arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart()
 {
     QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
     ArrivalLog log;
     logArrivals(m_machine.get(), *m_elab, &log);
-    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG3 I1 F150\nM30\n"));
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG61 G3 I1 F150\nM30\n"));
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(m_runner->preview().path.size(), 3 + 23); // start, G28, G0, the chords
@@ -268,14 +269,15 @@ void TestProgramRunnerMotion::arc_fullCircle_boardGetsChordsOnTheCircleBackAtThe
     QVERIFY(still(*m_elab));
 }
 
-// A pause during an arc holds between two chords, at the arc's line; resume sends the rest.
+// A pause during an arc in G61 holds between two chords, at the arc's line; resume sends the
+// rest.
 void TestProgramRunnerMotion::pause_duringArc_holdsBetweenChordsResumeFinishesTheArc()
 {
     QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
     ArrivalLog log;
     logArrivals(m_machine.get(), *m_elab, &log);
     QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
-    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG2 I1 F150\nG0 X0\n"));
+    QVERIFY(run("G28 X0 Y0\nG0 X10 Y10\nG61 G2 I1 F150\nG0 X0\n"));
     QTRY_VERIFY_WITH_TIMEOUT(log.points.size() >= 4, 30000); // the G0 and three chords
     m_runner->pause();
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);

@@ -1,0 +1,195 @@
+#include "ContourMoves.h"
+#include "ProgramUnits.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+namespace {
+int axisIndex(const machine::MachineDescription& d, const QString& name)
+{
+    for (int i = 0; i < d.axes.size(); ++i)
+        if (d.axes.at(i).name == name)
+            return i;
+    return -1;
+}
+} // namespace
+
+ContourMoves::ContourMoves(const MachineFacts& facts)
+    : m_facts(facts), m_streamOfAxis(size_t(facts.description.axes.size()), -1),
+      m_slotOfAxis(size_t(facts.description.axes.size()), -1)
+{
+    for (const machine::MachineController& c : facts.description.controllers) {
+        const auto caps = facts.capabilities.constFind(c.id);
+        if (caps == facts.capabilities.cend() || !caps->contourStream)
+            continue;
+        Stream s;
+        s.controller = c.id;
+        s.axisOfSlot.fill(-1);
+        for (Axis a : caps->axes)
+            s.scale.axisCount = std::max(s.scale.axisCount, int(a) + 1);
+        if (s.scale.axisCount > motion::kMaxAxes)
+            continue;
+        for (int i = 0; i < s.scale.axisCount; ++i)
+            s.scale.stepsPerUnit[size_t(i)] = 1; // a slot no machine axis uses never steps
+        for (int i = 0; i < facts.description.axes.size(); ++i) {
+            const machine::MachineAxis& axis = facts.description.axes.at(i);
+            const int slot = int(axis.axis);
+            if (axis.controller != c.id || slot >= s.scale.axisCount)
+                continue;
+            s.axisOfSlot[size_t(slot)] = i;
+            s.scale.stepsPerUnit[size_t(slot)] =
+                axis.invert ? -axis.stepsPerUnit : axis.stepsPerUnit;
+            m_streamOfAxis[size_t(i)] = int(m_streams.size());
+            m_slotOfAxis[size_t(i)] = slot;
+        }
+        s.tickRate = tickRate(*caps, facts.schemas.value(c.id), facts.knownParameters.value(c.id),
+                              &s.tickRefusal);
+        m_streams.push_back(s);
+    }
+}
+
+double ContourMoves::tickRate(const Capabilities& caps, const ParameterSchema& schema,
+                              const ParameterSet& known, QString* why)
+{
+    const QString name = QString::fromLatin1(caps.contourTickBelow);
+    double rate = caps.contourMaxTickRate;
+    if (!name.isEmpty()) {
+        const ParameterValue below = known.value(name);
+        for (Axis a : caps.axes) {
+            const QVariant v = below.perAxis.value(a);
+            if (!v.isValid()) {
+                *why = tr("a contour's steps run at one tick rate below %1 on every axis, and "
+                          "%1 is not known: write the controller's setup first")
+                           .arg(schema.displayLabel(name));
+                return 0;
+            }
+            rate = std::min(rate, std::floor(v.toDouble()) - 1);
+        }
+    }
+    if (rate < 1) {
+        *why = tr("%1 is too low for a contour's tick (at least 2 steps/s on every axis)")
+                   .arg(schema.displayLabel(name));
+        return 0;
+    }
+    return rate;
+}
+
+int ContourMoves::slotOf(const QString& axisName) const
+{
+    const int i = axisIndex(m_facts.description, axisName);
+    return i < 0 ? -1 : m_slotOfAxis[size_t(i)];
+}
+
+const ContourMoves::Stream* ContourMoves::streamOf(const ProgramBlock& block) const
+{
+    const bool arc =
+        block.kind == BlockKind::ArcClockwise || block.kind == BlockKind::ArcCounterClockwise;
+    if ((block.kind != BlockKind::Feed && !arc) || !block.feed || block.inverseTime ||
+        block.pathMode != PathMode::Blend || m_streams.empty())
+        return nullptr;
+    int stream = -1;
+    const machine::MachineAxis* first = nullptr;
+    // False: the block runs on its own (an axis without a stream, axes of two controllers
+    // whose parts run apart, millimetres and degrees without one path speed).
+    const auto joins = [&](const QString& name) {
+        const int i = axisIndex(m_facts.description, name);
+        if (i < 0 || m_streamOfAxis[size_t(i)] < 0 ||
+            (stream >= 0 && m_streamOfAxis[size_t(i)] != stream))
+            return false;
+        stream = m_streamOfAxis[size_t(i)];
+        const machine::MachineAxis& axis = m_facts.description.axes.at(i);
+        if (first && axis.unit != first->unit)
+            return false;
+        first = &axis;
+        return true;
+    };
+    if (arc) {
+        for (const QString& name : ArcPath::movingAxes(block))
+            if (!joins(name))
+                return nullptr;
+    } else {
+        for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+            if (!joins(it.key()))
+                return nullptr;
+    }
+    return stream < 0 ? nullptr : &m_streams[size_t(stream)];
+}
+
+double ContourMoves::toUnits(const machine::MachineAxis& axis, double value, bool inches)
+{
+    return units::toAxisUnits(axis, value, inches);
+}
+
+double ContourMoves::feedPerSecond(const Stream& stream, const ProgramBlock& block) const
+{
+    for (int i = 0; i < stream.scale.axisCount; ++i)
+        if (const int a = stream.axisOfSlot[size_t(i)]; a >= 0 && block.feed)
+            return toUnits(m_facts.description.axes.at(a), *block.feed, block.inches) / 60.0;
+    return 0;
+}
+
+motion::Position ContourMoves::positionOf(const Stream& stream, const AxisPositions& current) const
+{
+    motion::Position p{};
+    for (int i = 0; i < stream.scale.axisCount; ++i)
+        if (const int a = stream.axisOfSlot[size_t(i)]; a >= 0 && size_t(a) < current.size())
+            p[size_t(i)] = current[size_t(a)].value_or(0.0);
+    return p;
+}
+
+motion::CanonicalMove ContourMoves::startMove(const Stream& stream, const ProgramBlock& block,
+                                              const motion::Position& from) const
+{
+    motion::CanonicalMove move;
+    move.kind = motion::CanonicalMove::Kind::Line;
+    move.line = block.line;
+    move.axisCount = stream.scale.axisCount;
+    move.start = from;
+    move.end = from;
+    move.feed = feedPerSecond(stream, block);
+    move.pathMode = motion::PathMode::Blend;
+    return move;
+}
+
+motion::CanonicalMove ContourMoves::arcMove(const Stream& stream, const ProgramBlock& block,
+                                            const ArcPath& path, const motion::Position& from) const
+{
+    motion::CanonicalMove move = startMove(stream, block, from);
+    const ArcPath::Shape shape = path.shape();
+    motion::ArcGeometry g;
+    for (int p = 0; p < 2; ++p) {
+        g.plane[p] = m_slotOfAxis[size_t(shape.axis[p])];
+        g.centre[p] = shape.centre[p];
+        move.end[size_t(g.plane[p])] = shape.end[p];
+    }
+    g.startRadius = shape.startRadius;
+    g.endRadius = shape.endRadius;
+    g.startAngle = shape.startAngle;
+    g.sweep = shape.sweep;
+    if (shape.helix >= 0)
+        move.end[size_t(m_slotOfAxis[size_t(shape.helix)])] = shape.helixEnd;
+    move.kind = motion::CanonicalMove::Kind::Arc;
+    move.arc = g;
+    return move;
+}
+
+QString ContourMoves::feedRefusal(const Stream& stream, const motion::CanonicalMove& move,
+                                  const ProgramBlock& block) const
+{
+    if (stream.tickRate <= 0 || move.length() <= 0 || !block.feed || *block.feed <= 0)
+        return {};
+    const double needed = motion::ContourSteps::neededTickRate(move, stream.scale);
+    if (needed <= stream.tickRate)
+        return {};
+    // The highest feed in the program's own terms (per minute, G20 in inches).
+    const double perProgramUnit = move.feed / *block.feed;
+    const double highest =
+        motion::ContourSteps::highestFeed(move, stream.scale, stream.tickRate) / perProgramUnit;
+    return tr("F%1 is too fast for the contour stream of controller \"%2\": at its %3 ticks/s "
+              "(one step per tick at most) this move's highest feed is F%4")
+        .arg(figure(*block.feed), stream.controller)
+        .arg(stream.tickRate)
+        .arg(figure(std::floor(highest * 10) / 10)); // rounded down: that F runs
+}
+
+} // namespace stepdeck::program

@@ -1,0 +1,266 @@
+// Programs whose feed moves run as one <DC2> stream on the E-LAB (issue 30, ContourRun) on the
+// runner's rig: the E-LAB table (X, Y 400 steps/mm) and a Nanotec rotary axis, each simulator
+// on a real pseudo-terminal. The path is rebuilt from the step bytes the board executed and
+// compared, tick by tick, with the ideal path worked out here (lines and a circle by their
+// arc length at F); the blocks are reported as their ticks pass; a pause holds at a block's
+// end with the board still exactly there; STOP and a lost link leave the board still with no
+// step after the stop.
+#include "ProgramRunnerTestSupport.h"
+#include "protocols/elab/ElabCodec.h"
+#include <cmath>
+
+using namespace stepdeck;
+using namespace stepdeck::program;
+using namespace stepdeck::program::runnertest;
+
+class TestProgramContour : public ProgramRunnerFixture
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void init();
+    void cleanup() { tearDownRig(); }
+    void contour_lineCircleLine_oneStreamWithinHalfAStepAtFTheBoardRan();
+    void contour_pause_holdsAtABlockEndBoardStillThereResumeFinishes();
+    void contour_feedHold_stopsOnThePathResumeGoesOnNoTickLost();
+    void contour_abort_boardStillNoStepAfterTheStop();
+    void contour_otherControllersLinkLost_failsLinkDownBoardStops();
+
+private:
+    QPoint boardPosition() const;
+    qsizetype executedSteps() const;
+    QList<QPoint> executedPath() const; // after each executed step byte, from the first
+};
+
+namespace {
+
+constexpr double kStepsPerMm = 400;
+constexpr double kTick = 1999; // below the raised start speed 2000 (raiseElabFeedLimits)
+
+// A zigzag of `segments` moves of 0.5 mm in X and +-0.5 mm in Y at F240 (4 mm/s: 1 600
+// steps/s on each axis, within the tick), each 0.177 s.
+QByteArray zigzag(int segments)
+{
+    QByteArray p = "G21 G91 G64\n";
+    for (int i = 0; i < segments; ++i)
+        p += i % 2 == 0 ? "G1 X0.5 Y0.5 F240\n" : "G1 X0.5 Y-0.5\n";
+    return p + "M30\n";
+}
+
+} // namespace
+
+void TestProgramContour::init()
+{
+    setUpRig();
+    QVERIFY(test::raiseElabFeedLimits(m_machine->session("table")));
+}
+
+QPoint TestProgramContour::boardPosition() const
+{
+    return m_elab->probe([&] {
+        return QPoint(int(m_elab->sim()->position(Axis::X)), int(m_elab->sim()->position(Axis::Y)));
+    });
+}
+
+qsizetype TestProgramContour::executedSteps() const
+{
+    return m_elab->probe([&] {
+        return qsizetype(
+            static_cast<elab::ElabSimulator*>(m_elab->sim())->executedStepRecord().size());
+    });
+}
+
+QList<QPoint> TestProgramContour::executedPath() const
+{
+    const std::vector<quint8> record = m_elab->probe(
+        [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->executedStepRecord(); });
+    QList<QPoint> out;
+    QPoint at;
+    for (const quint8 byte : record) {
+        const elab::Triple<int> s = elab::decodeStepByte(byte);
+        at += QPoint(s[0], s[1]);
+        out << at;
+    }
+    return out;
+}
+
+// After a reference run and a G0: G1 X1, a clockwise full circle of radius 0.5 mm about +0.5
+// X, G1 X-1 Y1, all at F240 (4 mm/s), then a G0 that ends the stream. The board executed one vector
+// per tick: tick k stands at path distance 4k/1999 mm, and each is within half a step of that
+// point; the number of ticks is the path's length over 4 mm/s (the path speed is F); the stream
+// ended exactly at the last move's end, and the G0 started from there.
+void TestProgramContour::contour_lineCircleLine_oneStreamWithinHalfAStepAtFTheBoardRan()
+{
+    QSignalSpy started(m_runner.get(), &ProgramRunner::blockStarted);
+    QSignalSpy finished(m_runner.get(), &ProgramRunner::blockFinished);
+    // Where the board stands when the contour's first block starts (the G0 arrived).
+    QPoint start;
+    connect(m_runner.get(), &ProgramRunner::blockStarted, this, [&](int line) {
+        if (line == 4)
+            start = boardPosition();
+    });
+    QVERIFY(run("G28 X0 Y0\n"
+                "G0 X10 Y10\n"
+                "G21 G91 G64\n"
+                "G1 X1 F240\n"
+                "G2 X0 Y0 I0.5\n"
+                "G1 X-1 Y1\n"
+                "G0 X0.5\n"
+                "M30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    const double r = 0.5;
+    const double lengths[3] = {1.0, 2 * M_PI * r, std::sqrt(2.0)};
+    const auto ideal = [&](double s) -> std::pair<double, double> { // mm from the start
+        if (s <= lengths[0])
+            return {s, 0};
+        s -= lengths[0];
+        if (s <= lengths[1]) {
+            const double angle = M_PI - s / r; // clockwise from the circle's left
+            return {1 + r + r * std::cos(angle), r * std::sin(angle)};
+        }
+        s = std::min(s - lengths[1], lengths[2]);
+        return {1 - s / std::sqrt(2.0), s / std::sqrt(2.0)};
+    };
+    const double total = lengths[0] + lengths[1] + lengths[2];
+    const QList<QPoint> path = executedPath();
+    const double feed = 4.0; // mm/s
+    QCOMPARE(path.size(), qsizetype(std::ceil(total / feed * kTick - 1e-9)));
+    double worst = 0;
+    for (qsizetype k = 0; k < path.size(); ++k) {
+        const auto [x, y] = ideal(std::min(double(k + 1) * feed / kTick, total));
+        worst = std::max({worst, std::fabs(path.at(k).x() - x * kStepsPerMm),
+                          std::fabs(path.at(k).y() - y * kStepsPerMm)});
+    }
+    QVERIFY2(worst <= 0.5 + 1e-6, qPrintable(QString::number(worst)));
+    QCOMPARE(path.last(), QPoint(0, 400));               // X-1 Y1 after X1 and the circle
+    QCOMPARE(boardPosition() - start, QPoint(200, 400)); // then the G0 X0.5
+    QList<int> lines, ends;
+    for (const QList<QVariant>& a : std::as_const(started))
+        lines << a.at(0).toInt();
+    for (const QList<QVariant>& a : std::as_const(finished))
+        ends << a.at(0).toInt();
+    QCOMPARE(lines, (QList<int>{1, 2, 4, 5, 6, 7, 8}));
+    QCOMPARE(ends, (QList<int>{1, 2, 4, 5, 6, 7, 8}));
+    QCOMPARE(m_runner->blocksDone(), qint64(7));
+    QVERIFY(still(*m_elab));
+}
+
+// A pause asked while the zigzag runs: the stream ends at the end of a block within the moves
+// appended ahead, the runner holds there, and the board stands exactly at that block's end;
+// resume runs the rest from there to the zigzag's end.
+void TestProgramContour::contour_pause_holdsAtABlockEndBoardStillThereResumeFinishes()
+{
+    const int segments = 20;
+    QSignalSpy paused(m_runner.get(), &ProgramRunner::paused);
+    const QPoint start = boardPosition();
+    QVERIFY(run(zigzag(segments)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    m_runner->pause();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 20000);
+    QCOMPARE(paused.size(), 1);
+    const int line = paused.at(0).at(0).toInt();
+    QVERIFY2(line >= 4 && line < segments + 1, qPrintable(QString::number(line)));
+    // Block n (line n + 1) ends at X 200n, Y 200 after an odd number of blocks.
+    const int blocks = line - 1;
+    const QPoint end(200 * blocks, blocks % 2 == 1 ? 200 : 0);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QCOMPARE(boardPosition() - start, end);
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(boardPosition() - start, end); // held: nothing more ran
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardPosition() - start, QPoint(200 * segments, 0));
+    QVERIFY(still(*m_elab));
+}
+
+// Feed hold mid-zigzag: the board stops on the path (no more vectors executed, its position
+// unchanged over several polls), the runner is Paused with feedHeld(); resume goes on from there,
+// and the whole zigzag took exactly the ticks of an uninterrupted one (none lost or repeated),
+// every tick within half a step of the zigzag, ending exactly at its end.
+void TestProgramContour::contour_feedHold_stopsOnThePathResumeGoesOnNoTickLost()
+{
+    const int segments = 12;
+    const QPoint start = boardPosition();
+    QVERIFY(run(zigzag(segments)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    QVERIFY(m_runner->holdFeed());
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    QVERIFY(m_runner->feedHeld());
+    // The board runs what it holds, then nothing more: its buffer empty, the stream open (in
+    // feed mode, as the manual has it until EndOfFeed), its axes where the last tick put them.
+    QTRY_COMPARE_WITH_TIMEOUT(m_elab->probe([&] {
+        return static_cast<elab::ElabSimulator*>(m_elab->sim())->streamBuffered();
+    }),
+                              0, 10000);
+    const qsizetype held = executedSteps();
+    const QPoint stood = boardPosition();
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(executedSteps(), held);
+    QCOMPARE(boardPosition(), stood);
+    QVERIFY(boardPosition().x() - start.x() < 200 * segments); // mid-way
+    m_runner->resume();
+    QVERIFY(!m_runner->feedHeld());
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardPosition() - start, QPoint(200 * segments, 0));
+    // Each segment is sqrt(0.5) mm at 4 mm/s.
+    const double segment = std::sqrt(0.5);
+    const QList<QPoint> path = executedPath();
+    QCOMPARE(path.size(), qsizetype(std::ceil(segments * segment / 4.0 * kTick - 1e-9)));
+    double worst = 0;
+    for (qsizetype k = 0; k < path.size(); ++k) {
+        const double s = std::min(double(k + 1) * 4.0 / kTick, segments * segment);
+        const int n = std::min(int(s / segment), segments - 1);
+        const double t = (s - n * segment) / segment; // 0..1 along segment n
+        const double x = 0.5 * (n + t);
+        const double y = n % 2 == 0 ? 0.5 * t : 0.5 * (1 - t);
+        worst = std::max({worst, std::fabs(path.at(k).x() - x * kStepsPerMm),
+                          std::fabs(path.at(k).y() - y * kStepsPerMm)});
+    }
+    QVERIFY2(worst <= 0.5 + 1e-6, qPrintable(QString::number(worst)));
+}
+
+// STOP (abort) mid-contour: the board received the stop, stands still, and no step byte is
+// executed after it (the record stays as it is over further polls); the zigzag's end is never
+// reached.
+void TestProgramContour::contour_abort_boardStillNoStepAfterTheStop()
+{
+    const QPoint start = boardPosition();
+    QVERIFY(run(zigzag(20)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    m_runner->abort();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Aborted);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(m_elab->receivedStop());
+    const qsizetype executed = executedSteps();
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(executedSteps(), executed);
+    QVERIFY(still(*m_elab));
+    QVERIFY(boardPosition().x() - start.x() < 200 * 20);
+}
+
+// The rotary axis' link is lost mid-contour: the run fails LinkDown and the table is stopped
+// (the safety contract: a controller lost stops the others), no step after.
+void TestProgramContour::contour_otherControllersLinkLost_failsLinkDownBoardStops()
+{
+    QVERIFY(run(zigzag(20)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    m_nanotec->vanish();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Failed);
+    QCOMPARE(m_runner->failureKind(), ErrorKind::LinkDown);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QVERIFY(m_elab->receivedStop());
+    const qsizetype executed = executedSteps();
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(executedSteps(), executed);
+}
+
+QTEST_MAIN(TestProgramContour)
+#include "tst_programcontour.moc"
