@@ -3695,6 +3695,40 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::ContourMoves</name>
+        <message>
+            <source>a contour's steps run at one tick rate below %1 on every axis, and %1 is not known: write the controller's setup first</source>
+            <translation>die Schritte einer Kontur laufen mit einem Takt unterhalb von %1 auf jeder Achse, und %1 ist nicht bekannt: zuerst die Einrichtung der Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>%1 is too low for a contour's tick (at least 2 steps/s on every axis)</source>
+            <translation>%1 ist zu niedrig für den Takt einer Kontur (mindestens 2 Schritte/s auf jeder Achse)</translation>
+        </message>
+        <message>
+            <source>F%1 is too fast for the contour stream of controller "%2": at its %3 ticks/s (one step per tick at most) this move's highest feed is F%4</source>
+            <translation>F%1 ist zu schnell für den Konturstrom der Steuerung "%2": bei ihren %3 Takten/s (höchstens ein Schritt je Takt) ist der höchste Vorschub dieser Bewegung F%4</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ContourRun</name>
+        <message>
+            <source>the contour has ended</source>
+            <translation>die Kontur ist beendet</translation>
+        </message>
+        <message>
+            <source>cancelled before the contour was given</source>
+            <translation>abgebrochen, bevor die Kontur übergeben wurde</translation>
+        </message>
+        <message>
+            <source>the contour's tick rate %1 was not taken: %2</source>
+            <translation>der Takt %1 der Kontur wurde nicht übernommen: %2</translation>
+        </message>
+        <message>
+            <source>the board did not come to rest after the contour's last tick</source>
+            <translation>die Platine kam nach dem letzten Takt der Kontur nicht zum Stillstand</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::DrillCycle</name>
         <message>
             <source>%1: the position of %2 is unknown, so the cycle has no start: reference the axis first (G28 %2)</source>
@@ -3842,6 +3876,10 @@
         <message>
             <source>the repeats run more than %1 blocks beyond the program's own</source>
             <translation>die Wiederholungen führen mehr als %1 Sätze über die des Programms hinaus aus</translation>
+        </message>
+        <message>
+            <source>the move runs in the contour stream of controller "%1", but %2</source>
+            <translation>die Bewegung läuft im Konturstrom der Steuerung "%1", aber %2</translation>
         </message>
     </context>
     <context>
@@ -4322,6 +4360,10 @@
         <message>
             <source>the machine changed while the program was checked (a position, an offset, a tool or a parameter): run it again to check it anew</source>
             <translation>die Maschine hat sich geändert, während das Programm geprüft wurde (eine Position, ein Nullpunkt, ein Werkzeug oder ein Parameter): erneut starten, um es neu zu prüfen</translation>
+        </message>
+        <message>
+            <source>Feed hold: the path stops where it is; Resume goes on from there</source>
+            <translation>Vorschub-Halt: Die Bahn bleibt stehen, wo sie ist; Fortsetzen fährt von dort weiter</translation>
         </message>
     </context>
     <context>
@@ -6655,6 +6697,26 @@ W1500</translation>
         <message>
             <source>On: the program holds at M1 like at M0 (LinuxCNC's optional stop). Off: it runs past every M1. Counts when the run reaches the M1.</source>
             <translation>Ein: das Programm hält bei M1 wie bei M0 (optionaler Halt wie in LinuxCNC). Aus: es läuft an jedem M1 vorbei. Gilt, wenn der Lauf das M1 erreicht.</translation>
+        </message>
+        <message>
+            <source>Hold</source>
+            <translation>Halt</translation>
+        </message>
+        <message>
+            <source>Feed </source>
+            <translation>Vorschub </translation>
+        </message>
+        <message>
+            <source> %</source>
+            <translation> %</translation>
+        </message>
+        <message>
+            <source>Feed override: a contour runs at this share of F, from its next ticks on (each move at most as fast as one step per tick allows); a block of its own runs at its F</source>
+            <translation>Vorschub-Override: Eine Kontur läuft ab ihren nächsten Takten mit diesem Anteil von F (jede Bewegung höchstens so schnell, wie ein Schritt je Takt erlaubt); ein einzelner Satz läuft mit seinem F</translation>
+        </message>
+        <message>
+            <source>Feed hold: stop on the path where the tool is (a contour); a block of its own finishes first. Resume goes on from there. Key: F2</source>
+            <translation>Vorschub-Halt: auf der Bahn anhalten, wo das Werkzeug ist (eine Kontur); ein einzelner Satz wird erst zu Ende gefahren. Fortsetzen fährt von dort weiter. Taste: F2</translation>
         </message>
     </context>
     <context>

@@ -399,7 +399,7 @@ QString programHelp()
     return CliText::tr(
         "Motion programs (docs/programs.md), on a machine file or --model/--port:\n"
         "  run PROGRAM [--dry-run] [--from-line N] [--skip-pauses]\n"
-        "      [--optional-stops on|off]\n"
+        "      [--optional-stops on|off] [--feed-override PERCENT]\n"
         "                              checks the whole program first (exit 7 with every\n"
         "                              FILE:LINE:COL error, nothing sent), then runs it\n"
         "                              block by block: a line per block on stderr (--json:\n"
@@ -409,6 +409,8 @@ QString programHelp()
         "                              M1 too while --optional-stops is on (the default)\n"
         "                              --dry-run prints lines, extents and the estimated\n"
         "                              duration and moves nothing\n"
+        "                              --feed-override 10..200: contours at that share of F;\n"
+        "                              Ctrl-Z holds the feed, SIGCONT (fg) resumes it\n"
         "      [--tool-table FILE] [--offsets G54:X=N,Y=N;G55:...]\n"
         "                              the tool table (LinuxCNC tool.tbl) G43 and M6 use,\n"
         "                              and the work zeros of G54..G59 (G54 active)\n"

@@ -97,7 +97,7 @@ int runMachineCommand(const CliOptions& options, const machine::MachineDescripti
                       MachineCommand run)
 {
     CliMachineSession session(options, d);
-    const app::SignalPipe signalPipe([&session](int) { session.interrupt(); });
+    const app::SignalPipe signalPipe([&session](int number) { session.signal(number); });
     Outcome outcome = run(session, options);
     if (session.interrupted()) {
         // Every controller stops at once; the line says whether all of them confirmed it.

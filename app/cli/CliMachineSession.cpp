@@ -288,6 +288,15 @@ Outcome CliMachineSession::motionFailure(const QString& message) const
     return Outcome::failure(ExitMotionAborted, message);
 }
 
+void CliMachineSession::signal(int signalNumber)
+{
+    if (m_programSignals && m_programSignals(signalNumber)) {
+        wake();
+        return;
+    }
+    interrupt();
+}
+
 void CliMachineSession::interrupt()
 {
     m_interrupted = true;

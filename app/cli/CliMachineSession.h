@@ -57,6 +57,14 @@ public:
     const QStringList& notes() const { return m_notes; }
 
     void interrupt();
+    // A signal from the SignalPipe: while a program's handler is set (CliFeedHold: SIGTSTP,
+    // SIGCONT, SIGUSR1, SIGUSR2) it takes the signals it knows (true); every other one
+    // interrupts.
+    void signal(int signalNumber);
+    void setProgramSignals(std::function<bool(int)> handler)
+    {
+        m_programSignals = std::move(handler);
+    }
     bool interrupted() const { return m_interrupted; }
     // SIGINT/SIGTERM/SIGHUP and failures: every jog ramps down and every controller gets its
     // stop at once; success when every controller acknowledged it.
@@ -81,6 +89,7 @@ private:
     CliEventWait m_wait;
     bool m_connected = false;
     bool m_interrupted = false;
+    std::function<bool(int)> m_programSignals;
     QString m_lostController;
     QString m_lostMessage;
     QHash<QString, QString> m_lostReasons;

@@ -3,6 +3,7 @@
 // anything moves; the run itself is program::ProgramRunner's.
 #include "CliProgramRun.h"
 #include "CliEventWait.h"
+#include "CliFeedHold.h"
 #include "CliMachineRun.h"
 #include "CliProgramOutput.h"
 #include "CliText.h"
@@ -34,6 +35,7 @@ struct RunRequest
     bool dryRun = false;
     bool skipPauses = false;
     bool optionalStops = true; // M1 holds like M0 (ProgramRunner::setOptionalStops)
+    int feedOverride = 100;    // percent (ProgramRunner::setFeedOverride)
     // The window keeps these per machine; the CLI takes them per call (issue 29).
     program::ToolTable tools;           // --tool-table FILE (LinuxCNC's tool.tbl)
     program::CoordinateSystems systems; // --offsets "G54:X=10,Y=5;G55:X=20" (G54 active)
@@ -99,8 +101,8 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
     if (o.args.size() != 1)
         return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
                                           "[--from-line N] [--skip-pauses] "
-                                          "[--optional-stops on|off] [--tool-table FILE] "
-                                          "[--offsets G54:X=N,...;G55:...])"));
+                                          "[--optional-stops on|off] [--feed-override PERCENT] "
+                                          "[--tool-table FILE] [--offsets G54:X=N,...;G55:...])"));
     r->path = o.args.constFirst();
     r->dryRun = o.flag("dry-run");
     r->skipPauses = o.flag("skip-pauses");
@@ -110,6 +112,10 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
                 CliText::tr("run --optional-stops takes on or off, got '%1'").arg(*stops));
         r->optionalStops = *stops == QLatin1String("on");
     }
+    if (const std::optional<QString> feed = o.value("feed-override");
+        feed && numbers::parseInt(*feed, 10, 200, &r->feedOverride) != NumberError::None)
+        return Outcome::usage(
+            CliText::tr("run --feed-override takes a percentage 10..200, got '%1'").arg(*feed));
     if (const std::optional<QString> from = o.value("from-line");
         from && numbers::parseInt(*from, 1, std::numeric_limits<int>::max(), &r->fromLine) !=
                     NumberError::None)
@@ -187,8 +193,9 @@ Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
 class PauseAnswer
 {
 public:
-    PauseAnswer(ProgramRunner& runner, CliMachineSession& m, bool skip, bool json)
-        : m_runner(runner), m_session(m), m_skip(skip), m_json(json)
+    PauseAnswer(ProgramRunner& runner, CliMachineSession& m, const CliFeedHold& hold, bool skip,
+                bool json)
+        : m_runner(runner), m_session(m), m_hold(hold), m_skip(skip), m_json(json)
     {
         QObject::connect(&runner, &ProgramRunner::paused, &m_guard,
                          [this](int line, const QString& prompt) { paused(line, prompt); });
@@ -198,6 +205,8 @@ public:
 private:
     void paused(int line, const QString& prompt)
     {
+        if (m_hold.holding())
+            return; // the operator's Ctrl-Z: SIGCONT resumes (CliFeedHold)
         if (m_skip) {
             if (!m_json)
                 printProgress(CliText::tr("line %1: pause passed (--skip-pauses)").arg(line));
@@ -241,6 +250,7 @@ private:
 
     ProgramRunner& m_runner;
     CliMachineSession& m_session;
+    const CliFeedHold& m_hold;
     bool m_skip = false;
     bool m_json = false;
     bool m_closed = false;
@@ -303,9 +313,11 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
     ProgramRunner runner(&m.machine());
     ProgramReport report(runner, p.lines, json);
     runner.setOptionalStops(r.optionalStops);
+    runner.setFeedOverride(r.feedOverride);
     runner.setCoordinateSystems(r.systems, 0);
     runner.setToolTable(r.tools);
-    PauseAnswer pauses(runner, m, r.skipPauses, json);
+    CliFeedHold feedHold(runner, m, json);
+    PauseAnswer pauses(runner, m, feedHold, r.skipPauses, json);
     CliEventWait settle; // after an interrupt, when the session's own waits return at once
     QObject guard;
     QObject::connect(&runner, &ProgramRunner::stateChanged, &guard, [&m, &settle] {

@@ -48,6 +48,20 @@ public:
 
     static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 
+    // Further signals through the same pipe (the CLI's feed hold: SIGTSTP, SIGCONT), until
+    // release(); a process without a SignalPipe keeps their defaults.
+    static void catchAlso(int signalNumber)
+    {
+        if (s_fds[0] < 0)
+            return;
+        struct sigaction action = {};
+        action.sa_handler = &SignalPipe::handle;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESTART;
+        sigaction(signalNumber, &action, nullptr);
+    }
+    static void release(int signalNumber) { std::signal(signalNumber, SIG_DFL); }
+
 private:
     static void handle(int signalNumber)
     {

@@ -18,26 +18,40 @@ const QString kOptionalStopsKey = QStringLiteral("programs/optionalStops");
 
 ProgramControls::ProgramControls(QWidget* parent)
     : QWidget(parent), m_run(new QPushButton(tr("Run"), this)),
-      m_pause(new QPushButton(tr("&Pause"), this)), m_resume(new QPushButton(tr("Resume"), this)),
-      m_step(new QPushButton(tr("Step"), this)), m_abort(new QPushButton(tr("&Abort"), this)),
-      m_fromLine(new QSpinBox(this)), m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
+      m_pause(new QPushButton(tr("&Pause"), this)), m_hold(new QPushButton(tr("Hold"), this)),
+      m_resume(new QPushButton(tr("Resume"), this)), m_step(new QPushButton(tr("Step"), this)),
+      m_abort(new QPushButton(tr("&Abort"), this)), m_fromLine(new QSpinBox(this)),
+      m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
       m_optionalStops(new QCheckBox(tr("Optional stops (M1)"), this)),
-      m_progress(new QProgressBar(this)), m_timeLeft(new ElidedLabel(this))
+      m_feedOverride(new QSpinBox(this)), m_progress(new QProgressBar(this)),
+      m_timeLeft(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("programControls"));
     m_run->setObjectName(QStringLiteral("programRun"));
     m_pause->setObjectName(QStringLiteral("programPause"));
+    m_hold->setObjectName(QStringLiteral("programHold"));
     m_resume->setObjectName(QStringLiteral("programResume"));
     m_step->setObjectName(QStringLiteral("programStep"));
     m_abort->setObjectName(QStringLiteral("programAbort"));
     m_runFrom->setObjectName(QStringLiteral("programRunFrom"));
     m_fromLine->setObjectName(QStringLiteral("programFromLine"));
     m_optionalStops->setObjectName(QStringLiteral("programOptionalStops"));
+    m_feedOverride->setObjectName(QStringLiteral("programFeedOverride"));
+    m_feedOverride->setRange(10, 200);
+    m_feedOverride->setSingleStep(10);
+    m_feedOverride->setValue(100);
+    m_feedOverride->setPrefix(tr("F "));
+    m_feedOverride->setSuffix(tr(" %"));
+    m_feedOverride->setToolTip(
+        tr("Feed override: a contour runs at this share of F, from its next ticks on (each move "
+           "at most as fast as one step per tick allows); a block of its own runs at its F"));
     m_progress->setObjectName(QStringLiteral("programProgress"));
     m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
     // No mnemonics on what starts motion: a stray Alt+key must not start a program.
     m_run->setToolTip(tr("Check the program against the machine and run it from the start"));
     m_pause->setToolTip(tr("Finish the current block, then hold"));
+    m_hold->setToolTip(tr("Feed hold: stop on the path where the tool is (a contour); a block "
+                          "of its own finishes first. Resume goes on from there. Key: F2"));
     m_resume->setToolTip(tr("Go on with the next block"));
     m_step->setToolTip(tr("Run one block, then hold"));
     m_abort->setToolTip(tr("Stop every controller; the program ends as aborted"));
@@ -59,19 +73,21 @@ ProgramControls::ProgramControls(QWidget* parent)
     // One row of buttons and progress: the page's editor and preview get the height.
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
-    for (QPushButton* b : {m_run, m_pause, m_resume, m_step, m_abort})
+    for (QPushButton* b : {m_run, m_pause, m_hold, m_resume, m_step, m_abort})
         row->addWidget(b);
     row->addSpacing(8);
     row->addWidget(m_fromLine);
     row->addWidget(m_runFrom);
     row->addSpacing(8);
     row->addWidget(m_optionalStops);
+    row->addWidget(m_feedOverride);
     row->addSpacing(8);
     row->addWidget(m_progress, 1);
     row->addWidget(m_timeLeft);
 
     connect(m_run, &QPushButton::clicked, this, &ProgramControls::runRequested);
     connect(m_pause, &QPushButton::clicked, this, &ProgramControls::pauseRequested);
+    connect(m_hold, &QPushButton::clicked, this, &ProgramControls::holdRequested);
     connect(m_resume, &QPushButton::clicked, this, &ProgramControls::resumeRequested);
     connect(m_step, &QPushButton::clicked, this, &ProgramControls::stepRequested);
     connect(m_abort, &QPushButton::clicked, this, &ProgramControls::abortRequested);
@@ -81,8 +97,15 @@ ProgramControls::ProgramControls(QWidget* parent)
         QSettings().setValue(kOptionalStopsKey, on);
         Q_EMIT optionalStopsChanged(on);
     });
+    connect(m_feedOverride, qOverload<int>(&QSpinBox::valueChanged), this,
+            &ProgramControls::feedOverrideChanged);
     clearProgress();
     setState(RunState::Idle, false, false);
+}
+
+int ProgramControls::feedOverride() const
+{
+    return m_feedOverride->value();
 }
 
 bool ProgramControls::optionalStops() const
@@ -97,6 +120,7 @@ void ProgramControls::setState(RunState state, bool pausePending, bool canStart)
     m_runFrom->setEnabled(ended && canStart);
     m_fromLine->setEnabled(ended);
     m_pause->setEnabled(state == RunState::Running && !pausePending);
+    m_hold->setEnabled(state == RunState::Running);
     m_resume->setEnabled(state == RunState::Paused);
     // Step from a pause, or the first block of a program that does not run yet.
     m_step->setEnabled(state == RunState::Paused || (ended && canStart));

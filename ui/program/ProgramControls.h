@@ -32,6 +32,7 @@ public:
 
     QPushButton* runButton() const { return m_run; }
     QPushButton* pauseButton() const { return m_pause; }
+    QPushButton* holdButton() const { return m_hold; }
     QPushButton* resumeButton() const { return m_resume; }
     QPushButton* stepButton() const { return m_step; }
     QPushButton* abortButton() const { return m_abort; }
@@ -41,6 +42,8 @@ public:
     // ("programs/optionalStops"); on when nothing was stored, as the runner's default.
     QCheckBox* optionalStopsBox() const { return m_optionalStops; }
     bool optionalStops() const;
+    QSpinBox* feedOverrideBox() const { return m_feedOverride; }
+    int feedOverride() const; // percent
     QProgressBar* progressBar() const { return m_progress; }
     QString progressText() const;
     QString timeLeftText() const;
@@ -49,20 +52,24 @@ Q_SIGNALS:
     void runRequested();
     void runFromLineRequested(int line);
     void pauseRequested();
+    void holdRequested();
     void resumeRequested();
     void stepRequested();
     void abortRequested();
     void optionalStopsChanged(bool on);
+    void feedOverrideChanged(int percent);
 
 private:
     QPushButton* m_run;
     QPushButton* m_pause;
+    QPushButton* m_hold;
     QPushButton* m_resume;
     QPushButton* m_step;
     QPushButton* m_abort;
     QSpinBox* m_fromLine;
     QPushButton* m_runFrom;
     QCheckBox* m_optionalStops;
+    QSpinBox* m_feedOverride;
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
 };

@@ -19,6 +19,7 @@
 #include "program/ProgramParser.h"
 #include <QHBoxLayout>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSplitter>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -78,11 +79,25 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
             m_runner->pause();
         updateControls();
     });
+    // Feed hold from anywhere in the window (F2, as STOP has Esc and PANIC F1).
+    const auto hold = [this] {
+        if (m_runner && m_runner->state() == program::RunState::Running)
+            m_runner->holdFeed();
+        updateControls();
+    };
+    connect(m_controls, &ProgramControls::holdRequested, this, hold);
+    auto* holdKey = new QShortcut(QKeySequence(Qt::Key_F2), this);
+    holdKey->setContext(Qt::ApplicationShortcut);
+    connect(holdKey, &QShortcut::activated, this, hold);
     connect(m_controls, &ProgramControls::resumeRequested, this, [this] {
         if (m_runner)
             m_runner->resume();
     });
     connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
+    connect(m_controls, &ProgramControls::feedOverrideChanged, this, [this](int percent) {
+        if (m_runner)
+            m_runner->setFeedOverride(percent); // also while a program runs
+    });
     connect(m_controls, &ProgramControls::optionalStopsChanged, this, [this](bool on) {
         if (m_runner)
             m_runner->setOptionalStops(on); // also while a program runs: counts at its next M1
@@ -201,6 +216,7 @@ void ProgramPage::onMachineChanged()
     if (machine && !m_runner) {
         m_runner = new program::ProgramRunner(machine, this);
         m_runner->setOptionalStops(m_controls->optionalStops());
+        m_runner->setFeedOverride(m_controls->feedOverride());
         m_runnerMachine = machine;
         using program::ProgramRunner;
         connect(m_runner, &ProgramRunner::stateChanged, this, &ProgramPage::onState);

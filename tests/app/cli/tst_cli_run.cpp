@@ -3,11 +3,13 @@
 // what a run prints. The E-LAB simulator is on a real pty in a thread of this process; every
 // test asserts what the DEVICE received.
 #include "CliRunRig.h"
+#include "protocols/elab/ElabSimulator.h"
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QtTest>
+#include <csignal>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -34,6 +36,7 @@ private Q_SLOTS:
     void run_progressLinePerBlockOnStderr();
     void run_json_eventPerBlockThenSummary();
     void fromLine_beyondTheFile_exit2();
+    void feedHold_signals_holdOverrideResumeAsJsonEvents();
 
 private:
     QStringList args(const QString& program, const QStringList& more = {}) const
@@ -328,6 +331,56 @@ void TestCliRun::fromLine_beyondTheFile_exit2()
     const CliRun r = runCli(args(path, {"--from-line", "9"}));
     QCOMPARE(r.exitCode, 2);
     QCOMPARE(m_device->receivedCount(), 0);
+}
+
+// Issue 30: a contour (G1 in G64: one <DC2> stream) held by Ctrl-Z's SIGTSTP stops on its path
+// at the board, the process itself running on (it reports); SIGUSR1 raises the override by
+// 10 %; SIGCONT resumes and the contour ends exactly at its end. Each as a JSON event.
+void TestCliRun::feedHold_signals_holdOverrideResumeAsJsonEvents()
+{
+    // 40 steps at 50 steps/s (F3000 steps/min): 0.8 s, below the stream's 99 ticks/s.
+    const QString path = writeProgram(*m_dir, "hold.ngc", "G91 G64\nG1 X40 F3000\nM2\n");
+    QProcess cli;
+    QByteArray out, err;
+    connect(&cli, &QProcess::readyReadStandardOutput, this,
+            [&] { out += cli.readAllStandardOutput(); });
+    connect(&cli, &QProcess::readyReadStandardError, this,
+            [&] { err += cli.readAllStandardError(); });
+    cli.start(cliPath(), args(path, {"--json", "--feed-override", "100"}));
+    QVERIFY(cli.waitForStarted(5000));
+    const auto x = [&] {
+        return m_device->probe([&] { return m_device->sim()->position(Axis::X); });
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(x() >= 3, err.constData(), 20000);
+    ::kill(pid_t(cli.processId()), SIGTSTP);
+    QTRY_VERIFY2_WITH_TIMEOUT(out.contains("\"event\":\"hold\""), out.constData(), 10000);
+    QVERIFY(out.contains("\"contour\":true"));
+    // The board runs what it holds, then stands: its buffer empty, X the same twice.
+    qint64 stood = -1;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            const qint64 now = x();
+            const int buffered = m_device->probe([&] {
+                return static_cast<elab::ElabSimulator*>(m_device->sim())->streamBuffered();
+            });
+            return std::exchange(stood, now) == now && buffered == 0;
+        }(),
+        5000);
+    // The process still runs and reads the board (its status polls arrive); the board stays.
+    const int frames = m_device->receivedCount();
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->receivedCount() >= frames + 3, 10000);
+    QCOMPARE(x(), stood);
+    QVERIFY(stood < 40);
+    QCOMPARE(cli.state(), QProcess::Running);
+    ::kill(pid_t(cli.processId()), SIGUSR1);
+    QTRY_VERIFY2_WITH_TIMEOUT(out.contains("\"event\":\"override\",\"percent\":110"),
+                              out.constData(), 10000);
+    ::kill(pid_t(cli.processId()), SIGCONT);
+    QTRY_VERIFY2_WITH_TIMEOUT(out.contains("\"event\":\"resume\""), out.constData(), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(cli.state(), QProcess::NotRunning, 20000);
+    QVERIFY2(cli.exitCode() == 0, err.constData());
+    QCOMPARE(x(), qint64(40));
+    QVERIFY2(out.contains("\"state\":\"finished\""), out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliRun)

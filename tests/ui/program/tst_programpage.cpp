@@ -49,6 +49,7 @@ private Q_SLOTS:
     void stop_duringMove_programEndsAborted();
     void m0_prompt_bannerWithResumeGoesOn();
     void m1_optionalStopsToggle_reachesTheRunner();
+    void hold_f2AndHoldButton_contourStopsOnItsPathResumeFinishes();
     void fault_linkLostDuringMove_failedNamingTheLine();
     void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
@@ -295,6 +296,58 @@ void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
 // Issue 29: the window's "Optional stops (M1)" switch reaches the runner: off, the program
 // runs past M1 without a prompt; on (also switched while nothing runs), M1 holds with its
 // comment in the banner and the board gets the next move only after Resume.
+// Issue 30: the feed override box reaches the runner; F2 (from the editor: a window-wide key)
+// and the Hold button hold a contour on its path (the board's X stands still over several
+// polls, short of the end); Resume goes on and the contour ends exactly at its end.
+void TestProgramPage::hold_f2AndHoldButton_contourStopsOnItsPathResumeFinishes()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QSpinBox* override = page()->controls()->feedOverrideBox();
+    override->setValue(50);
+    QCOMPARE(runner()->feedOverride(), 50.0);
+    override->setValue(100);
+    QCOMPARE(runner()->feedOverride(), 100.0);
+    // Eight moves of 0.05 mm (20 steps) at 0.2 mm/s (80 steps/s, below the stream's 99 ticks/s).
+    QString program = QStringLiteral("G91 G64\n");
+    for (int i = 0; i < 8; ++i)
+        program += QStringLiteral("G1 X0.05 F12\n");
+    setProgram(program + QStringLiteral("M2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    const auto holdsStill = [&] {
+        QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused), 10000);
+        QVERIFY(runner()->feedHeld());
+        QVERIFY(!page()->controls()->holdButton()->isEnabled());
+        // The board runs what it holds, then stands: its buffer empty, X the same twice.
+        qint64 stood = -1;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                const qint64 now = m_rig.elab->position(Axis::X);
+                const int buffered = m_rig.elab->probe([&] {
+                    return static_cast<elab::ElabSimulator*>(m_rig.elab->sim())->streamBuffered();
+                });
+                return std::exchange(stood, now) == now && buffered == 0;
+            }(),
+            5000);
+        QSignalSpy polls(m_rig.machine()->session(QStringLiteral("table")),
+                         &ControllerSession::statusChanged);
+        QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
+        QCOMPARE(m_rig.elab->position(Axis::X), stood);
+        QVERIFY(stood < 160);
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(runner()->currentLine() >= 3, 20000);
+    QTest::keyClick(page()->editor(), Qt::Key_F2);
+    holdsStill();
+    page()->controls()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runner()->currentLine() >= 6, 20000);
+    QTRY_VERIFY(page()->controls()->holdButton()->isEnabled());
+    page()->controls()->holdButton()->click();
+    holdsStill();
+    page()->controls()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 160);
+}
+
 void TestProgramPage::m1_optionalStopsToggle_reachesTheRunner()
 {
     QVERIFY(m_rig.openAndConnect());
