@@ -2,6 +2,7 @@
 #include "BenchOutput.h"
 #include "BenchUsage.h"
 #include "BusyLoad.h"
+#include "ContourBench.h"
 #include "GuiIdle.h"
 #include "JogLatency.h"
 #include "MachineStopLatency.h"
@@ -336,6 +337,8 @@ int main(int argc, char** argv)
     if (const int code = programBenchMain(args); code >= 0)
         return code;
     if (const int code = programScaleBenchMain(args); code >= 0)
+        return code;
+    if (const int code = contourBenchMain(args); code >= 0)
         return code;
     // The figures need a stream to queue behind and to meter: the first registered model
     // whose descriptor has one (ModelInfo::streamBench).
