@@ -145,13 +145,7 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
     m_reader = std::move(reader);
     m_block = ProgramBlock{};
     m_preview = checked.preview;
-    m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, m_nextTools);
-    // The current point starts where the check started it: the machine's known positions.
-    m_programmed.assign(size_t(facts.description.axes.size()), std::nullopt);
-    for (qsizetype i = 0; i < facts.description.axes.size(); ++i)
-        if (const auto it = facts.knownPositions.constFind(facts.description.axes.at(i).name);
-            it != facts.knownPositions.cend())
-            m_programmed[size_t(i)] = it.value();
+    resetRun(facts);
     m_arc.reset();
     m_cycle.reset();
     m_heldInPath = false;
@@ -168,17 +162,29 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
     m_failureKind = ErrorKind::None;
     ++m_run;
     m_rates = std::make_unique<ProgramRates>(m_machine);
-    dropContour();
-    m_heldBlock = false;
-    m_feedHeld = false;
-    m_contourMoves.reset();
-    m_runFacts = facts;
-    m_contourMoves = std::make_unique<ContourMoves>(m_runFacts);
     connectMachine();
     setState(RunState::Running);
     // Queued: the caller sees start() return before the first block's signals.
     QMetaObject::invokeMethod(this, &ProgramRunner::runNext, Qt::QueuedConnection);
     return true;
+}
+
+// The run's coordinates, current point and contour streams from the facts it was checked with.
+void ProgramRunner::resetRun(const MachineFacts& facts)
+{
+    m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, m_nextTools);
+    // The current point starts where the check started it: the machine's known positions.
+    m_programmed.assign(size_t(facts.description.axes.size()), std::nullopt);
+    for (qsizetype i = 0; i < facts.description.axes.size(); ++i)
+        if (const auto it = facts.knownPositions.constFind(facts.description.axes.at(i).name);
+            it != facts.knownPositions.cend())
+            m_programmed[size_t(i)] = it.value();
+    dropContour();
+    m_heldBlock = false;
+    m_feedHeld = false;
+    m_contourMoves.reset(); // it refers to m_runFacts
+    m_runFacts = facts;
+    m_contourMoves = std::make_unique<ContourMoves>(m_runFacts);
 }
 
 void ProgramRunner::connectMachine()

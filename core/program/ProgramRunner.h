@@ -157,6 +157,7 @@ private:
         qint64 remaining = 0; // iterations left after the current one
     };
     // The run's walk (ProgramRunner.cpp).
+    void resetRun(const MachineFacts& facts);
     void connectMachine();
     void disconnectMachine();
     void runNext();

@@ -36,15 +36,7 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_runFrom->setObjectName(QStringLiteral("programRunFrom"));
     m_fromLine->setObjectName(QStringLiteral("programFromLine"));
     m_optionalStops->setObjectName(QStringLiteral("programOptionalStops"));
-    m_feedOverride->setObjectName(QStringLiteral("programFeedOverride"));
-    m_feedOverride->setRange(10, 200);
-    m_feedOverride->setSingleStep(10);
-    m_feedOverride->setValue(100);
-    m_feedOverride->setPrefix(tr("F "));
-    m_feedOverride->setSuffix(tr(" %"));
-    m_feedOverride->setToolTip(
-        tr("Feed override: a contour runs at this share of F, from its next ticks on (each move "
-           "at most as fast as one step per tick allows); a block of its own runs at its F"));
+    setUpFeedOverride();
     m_progress->setObjectName(QStringLiteral("programProgress"));
     m_timeLeft->setObjectName(QStringLiteral("programTimeLeft"));
     // No mnemonics on what starts motion: a stray Alt+key must not start a program.
@@ -97,10 +89,24 @@ ProgramControls::ProgramControls(QWidget* parent)
         QSettings().setValue(kOptionalStopsKey, on);
         Q_EMIT optionalStopsChanged(on);
     });
-    connect(m_feedOverride, qOverload<int>(&QSpinBox::valueChanged), this,
-            &ProgramControls::feedOverrideChanged);
     clearProgress();
     setState(RunState::Idle, false, false);
+}
+
+// Issue 30: 10..200 % in steps of 10, "F 100 %" (ProgramRunner::setFeedOverride).
+void ProgramControls::setUpFeedOverride()
+{
+    m_feedOverride->setObjectName(QStringLiteral("programFeedOverride"));
+    m_feedOverride->setRange(10, 200);
+    m_feedOverride->setSingleStep(10);
+    m_feedOverride->setValue(100);
+    m_feedOverride->setPrefix(tr("F "));
+    m_feedOverride->setSuffix(tr(" %"));
+    m_feedOverride->setToolTip(
+        tr("Feed override: a contour runs at this share of F, from its next ticks on (each move "
+           "at most as fast as one step per tick allows); a block of its own runs at its F"));
+    connect(m_feedOverride, qOverload<int>(&QSpinBox::valueChanged), this,
+            &ProgramControls::feedOverrideChanged);
 }
 
 int ProgramControls::feedOverride() const

@@ -70,6 +70,7 @@ private:
     QPushButton* m_runFrom;
     QCheckBox* m_optionalStops;
     QSpinBox* m_feedOverride;
+    void setUpFeedOverride();
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
 };

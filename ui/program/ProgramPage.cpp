@@ -79,25 +79,12 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
             m_runner->pause();
         updateControls();
     });
-    // Feed hold from anywhere in the window (F2, as STOP has Esc and PANIC F1).
-    const auto hold = [this] {
-        if (m_runner && m_runner->state() == program::RunState::Running)
-            m_runner->holdFeed();
-        updateControls();
-    };
-    connect(m_controls, &ProgramControls::holdRequested, this, hold);
-    auto* holdKey = new QShortcut(QKeySequence(Qt::Key_F2), this);
-    holdKey->setContext(Qt::ApplicationShortcut);
-    connect(holdKey, &QShortcut::activated, this, hold);
+    connectFeedControls();
     connect(m_controls, &ProgramControls::resumeRequested, this, [this] {
         if (m_runner)
             m_runner->resume();
     });
     connect(m_controls, &ProgramControls::abortRequested, this, &ProgramPage::abortRun);
-    connect(m_controls, &ProgramControls::feedOverrideChanged, this, [this](int percent) {
-        if (m_runner)
-            m_runner->setFeedOverride(percent); // also while a program runs
-    });
     connect(m_controls, &ProgramControls::optionalStopsChanged, this, [this](bool on) {
         if (m_runner)
             m_runner->setOptionalStops(on); // also while a program runs: counts at its next M1
@@ -193,6 +180,25 @@ QString ProgramPage::checkText() const
 QString ProgramPage::messageText() const
 {
     return m_banner->statusText();
+}
+
+// Issue 30: feed hold from the Hold button and from anywhere in the window (F2, as STOP has
+// Esc and PANIC F1); the feed override, also while a program runs.
+void ProgramPage::connectFeedControls()
+{
+    const auto hold = [this] {
+        if (m_runner && m_runner->state() == program::RunState::Running)
+            m_runner->holdFeed();
+        updateControls();
+    };
+    connect(m_controls, &ProgramControls::holdRequested, this, hold);
+    auto* holdKey = new QShortcut(QKeySequence(Qt::Key_F2), this);
+    holdKey->setContext(Qt::ApplicationShortcut);
+    connect(holdKey, &QShortcut::activated, this, hold);
+    connect(m_controls, &ProgramControls::feedOverrideChanged, this, [this](int percent) {
+        if (m_runner)
+            m_runner->setFeedOverride(percent);
+    });
 }
 
 void ProgramPage::onMachineChanged()

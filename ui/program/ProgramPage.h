@@ -82,6 +82,7 @@ public Q_SLOTS:
 private:
     void buildLayout();
     void onMachineChanged();
+    void connectFeedControls();
     void onMachineStatus();
     bool rulesFactsChanged() const; // since the last check (m_checkedParameters, ...)
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;

@@ -303,19 +303,9 @@ void ElabCtlMotionOps::pumpStream()
         });
         return;
     }
-    double lead = kContourLeadSeconds; // the contour's ticks that may still go out
-    if (m_stream.contour() && m_stream.sent() > 0) {
-        lead -= contourAhead();
-        if (lead * m_stream.contour()->tickRate() < 1) {
-            if (!std::exchange(m_leadWait, true))
-                QTimer::singleShot(5, &m_line.queue(), [this, id] {
-                    m_leadWait = false;
-                    if (m_stream.isActive() && m_stream.requestId == id)
-                        pumpStream();
-                });
-            return;
-        }
-    }
+    const double lead = contourLead(id);
+    if (lead <= 0)
+        return; // pumped again once the board has run some of what it holds
     // One chunk at a time, and never more than one chunk beyond what the line can have
     // carried (the queue's wire window): after the board's XOFF at most that is on its way.
     // The chunk is built when it is written, as many pairs as fit the window then, and none if
@@ -353,6 +343,25 @@ void ElabCtlMotionOps::pumpStream()
         abortStream(kind, why);
     };
     m_line.submit(std::move(ex), false);
+}
+
+// The seconds of a contour's ticks that may still go out now (kContourLeadSeconds less what
+// runs ahead of the board); <= 0: none, and a pump is scheduled for when some may. Streams of
+// step vectors given whole are not limited (kContourLeadSeconds).
+double ElabCtlMotionOps::contourLead(RequestId id)
+{
+    if (!m_stream.contour() || m_stream.sent() == 0)
+        return kContourLeadSeconds;
+    const double lead = kContourLeadSeconds - contourAhead();
+    if (lead * m_stream.contour()->tickRate() >= 1)
+        return lead;
+    if (!std::exchange(m_leadWait, true))
+        QTimer::singleShot(5, &m_line.queue(), [this, id] {
+            m_leadWait = false;
+            if (m_stream.isActive() && m_stream.requestId == id)
+                pumpStream();
+        });
+    return 0;
 }
 
 double ElabCtlMotionOps::contourAhead()

@@ -97,6 +97,7 @@ private:
     // How far the contour's ticks sent run ahead of the board, in seconds; re-counted from now
     // when the board ran dry (a late move, a hold).
     double contourAhead();
+    double contourLead(RequestId id);
     QElapsedTimer m_contourClock; // since the contour's first <DC2>, or since it ran dry
     qint64 m_contourBase = 0;     // the ticks sent when m_contourClock started
     bool m_leadWait = false;      // a pump waits for the board to run some of the lead

@@ -38,6 +38,24 @@ QString text(const Point3& p)
     return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
 }
 
+bool near(const Point3& a, const Point3& b, double d)
+{
+    return std::abs(a.x - b.x) <= d && std::abs(a.y - b.y) <= d && std::abs(a.z - b.z) <= d;
+}
+
+// The first of `points` that `path` does not pass within `tolerance`, in order (empty: all).
+QString firstNotPassed(const QList<Point3>& path, const QList<Point3>& points, double tolerance)
+{
+    qsizetype at = 0;
+    for (int i = 0; i < points.size(); ++i) {
+        while (at < path.size() && !near(path.at(at), points.at(i), tolerance))
+            ++at;
+        if (at == path.size())
+            return QStringLiteral("planned point %1 %2 not passed").arg(i).arg(text(points.at(i)));
+    }
+    return {};
+}
+
 } // namespace
 
 class TestCamPrograms : public QObject
@@ -288,22 +306,12 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
             plannedMachine << Point3{p.position.value("X") + 10, p.position.value("Y") + 10,
                                      p.position.value("Z") - 20};
     const double step = 1 / kStepsPerMm + 1e-9;
-    const auto near = [](const Point3& a, const Point3& b, double d) {
-        return std::abs(a.x - b.x) <= d && std::abs(a.y - b.y) <= d && std::abs(a.z - b.z) <= d;
-    };
     if (elab) {
-        // The board's path passes within a step of each planned point, in the plan's order.
-        // From where it stood at the start (a first move may not move it at all).
-        const QList<Point3> trace = QList<Point3>{startMm} + boardTrace(traceStart);
-        qsizetype at = 0;
-        for (int i = 0; i < plannedMachine.size(); ++i) {
-            while (at < trace.size() && !near(trace.at(at), plannedMachine.at(i), step))
-                ++at;
-            QVERIFY2(at < trace.size(), qPrintable(QStringLiteral("planned point %1 %2 not passed")
-                                                       .arg(i)
-                                                       .arg(text(plannedMachine.at(i)))));
-        }
-        arrived = trace;
+        // The board's path passes within a step of each planned point, in the plan's order,
+        // from where it stood at the start (a first move may not move it at all).
+        arrived = QList<Point3>{startMm} + boardTrace(traceStart);
+        const QString missed = firstNotPassed(arrived, plannedMachine, step);
+        QVERIFY2(missed.isEmpty(), qPrintable(missed));
         // The programs' feed moves (all but the drilling files' cycles) ran as <DC2> streams.
         const qsizetype streamed = m_elab->probe([&] {
             return qsizetype(
