@@ -94,6 +94,7 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
     // A block of a contour stream writes no rate of its own: the stream's tick is written.
     const ContourMoves::Stream* stream =
         block.kind == BlockKind::Feed ? m_contours.streamOf(block) : nullptr;
+    out->contour = stream;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         AxisMove m;
         m.axis = axisIndex(d, it.key());
@@ -137,23 +138,15 @@ void ProgramPlan::checkContourTick(const ProgramBlock& block, const ContourMoves
         });
         return;
     }
+    if (m_tickHeld == stream.controller)
+        return; // the contour before wrote it (a CAM program's feed moves mostly are one)
     const auto c = m_facts.capabilities.constFind(stream.controller);
     if (c == m_facts.capabilities.cend() || !c->feedRateParameter)
         return;
-    const QString name = QString::fromLatin1(c->feedRateParameter);
-    const qint64 tick = qint64(stream.tickRate);
-    const auto holds = [&] {
-        const ParameterValue v = std::as_const(m_known).value(stream.controller).value(name);
-        for (Axis a : c->axes)
-            if (v.perAxis.value(a) != QVariant(tick))
-                return false;
-        return true;
-    };
-    if (holds())
-        return; // the contour before wrote it (a CAM program's feed moves mostly are one)
-    ParameterValue& held = m_known[stream.controller][name];
+    ParameterValue& held = m_known[stream.controller][QString::fromLatin1(c->feedRateParameter)];
     for (Axis a : c->axes)
-        held.perAxis.insert(a, tick);
+        held.perAxis.insert(a, qint64(stream.tickRate));
+    m_tickHeld = stream.controller;
     m_lastTakenFeed = LastTakenFeed{};
 }
 

@@ -59,6 +59,7 @@ void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
                     if (held.value(a.key()) != a.value()) {
                         held.insert(a.key(), a.value());
                         changed = true;
+                        m_tickHeld.clear(); // a rate of its own replaced a contour's tick
                     }
                 }
             continue;

@@ -10,7 +10,7 @@ namespace stepdeck::program {
 ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* reader,
                                      CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_reader(*reader), m_moves(m_planned.moves),
-      m_errors(errors), m_plan(facts, &m_planned, errors), m_contours(facts),
+      m_errors(errors), m_plan(facts, &m_planned, errors), m_contours(m_plan.contours()),
       m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools)
 {
     const size_t n = size_t(m_axes.size());
@@ -209,7 +209,7 @@ void ProgramSimulation::move(PlannedBlock& planned)
     // The axes of a block start together, each at its own rate: the block lasts as long as
     // its slowest axis (no acceleration: an estimate).
     double seconds = 0;
-    if (const ContourMoves::Stream* stream = m_contours.streamOf(block)) {
+    if (const ContourMoves::Stream* stream = planned.contour) {
         const motion::CanonicalMove line = m_contours.lineMove(
             *stream, block, m_contours.positionOf(*stream, m_programmed),
             [&](const QString& axis) { return m_coordinates.offset(block, axis); });

@@ -31,6 +31,8 @@ struct PlannedBlock
     int firstMove = 0;
     int moveCount = 0;
     double feedSpeed = 0; // a drilling cycle's Z at F, unit/s (0: not known)
+    // G1/G2/G3 of a contour: the stream it runs in (ContourMoves::streamOf), else null.
+    const ContourMoves::Stream* contour = nullptr;
 };
 
 // The block the walk is at, planned (the program's blocks are streamed: one at a time).
@@ -82,6 +84,7 @@ public:
     // Into *out (its block and moves); reporting false: the block was planned before (a
     // repeat's next pass), its errors are not told again.
     void plan(const ProgramBlock& block, bool reporting = true);
+    const ContourMoves& contours() const { return m_contours; }
 
 private:
     void planMove(const ProgramBlock& block, PlannedBlock* out);
@@ -156,6 +159,9 @@ private:
         }
     } m_lastTakenFeed;
     bool m_reporting = true;
+    // The controller whose tick the device is known to hold as its feed rate (checkContourTick
+    // wrote it into m_known, no rate write since): a contour's next block needs no lookup.
+    QString m_tickHeld;
 };
 
 // Walks the program's blocks from `start` as the run will (repeats counted out, at most
@@ -224,7 +230,7 @@ private:
     std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
     ProgramPlan m_plan;
-    ContourMoves m_contours;
+    const ContourMoves& m_contours; // m_plan's
     std::function<void(const ProgramBlock&)> m_firstVisit;
     int m_firstUnvisited = 0; // blocks before it were planned once
     qint64 m_firstVisits = 0; // blocks the walk planned for the first time

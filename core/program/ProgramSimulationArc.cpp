@@ -38,7 +38,7 @@ void ProgramSimulation::arc(PlannedBlock& planned)
         return; // where it would end is unknown: the positions stay as they were
     }
     const ArcPath& path = std::get<ArcPath>(planning);
-    if (const ContourMoves::Stream* stream = m_contours.streamOf(block))
+    if (const ContourMoves::Stream* stream = planned.contour)
         checkContourFeed(
             block, *stream,
             m_contours.arcMove(*stream, block, path, m_contours.positionOf(*stream, m_programmed)));
