@@ -233,7 +233,8 @@ void ContourRig::measure(ContourFigure* f, const QByteArray& text,
         const QList<BoardSampler::Sample> s = m_sampler.samples();
         qsizetype first = -1, last = -1;
         for (qsizetype i = 1; i < s.size(); ++i) {
-            if (s.at(i).ns < startNs || s.at(i).ns > endNs || s.at(i).executed <= s.at(i - 1).executed)
+            if (s.at(i).ns < startNs || s.at(i).ns > endNs ||
+                s.at(i).executed <= s.at(i - 1).executed)
                 continue;
             if (first < 0)
                 first = i - 1;

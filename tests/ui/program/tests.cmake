@@ -4,12 +4,17 @@ stepdeck_add_test(tst_programwidgets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_progr
                   LABELS ui LIBS stepdeck_ui)
 # The page in the main window running programs on a machine of two simulated controllers on
 # pseudo-terminals (MachineWindowRig), on a 1366x768 screen.
-stepdeck_add_test(tst_programpage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpage.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
-                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
-                  LABELS ui LIBS stepdeck_ui)
+foreach(_t tst_programpage tst_programpagerun)
+  stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
+                    ${CMAKE_CURRENT_LIST_DIR}/ProgramPageFixture.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
+                    ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
+                    LABELS ui LIBS stepdeck_ui)
+endforeach()
 # A program too large to edit (issue 29): the excerpt, the check's progress and Cancel, the run
 # read from the file, a file changed after its check.
 stepdeck_add_test(tst_programpagelarge SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpagelarge.cpp

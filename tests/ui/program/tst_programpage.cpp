@@ -1,39 +1,15 @@
-// The Program page in the main window (issue 20) on a machine of two simulated controllers on
-// pseudo-terminals (MachineWindowRig: an E-LAB X/Y/Z table, 400 steps/mm on X and Y, and a
-// Nanotec rotary axis A): the check's errors are marked at their lines; Run sends the moves
-// (asserted at the simulated device); Pause holds after the block that runs, Resume goes on;
-// Abort, STOP and PANIC end the program as aborted with the axis standing; M0's prompt shows
-// in the banner and its Resume goes on; Run from line confirms where it starts; the page fits
-// a 1366x768 laptop.
-#include "../LaptopScreen.h"
-#include "../LayoutChecks.h"
-#include "../machine/MachineWindowRig.h"
-#include "machine/MachineContext.h"
-#include "machine/MachineDro.h"
-#include "machine/MachineWorkOffsets.h"
-#include "position/PositionPanel.h"
-#include "program/ProgramControls.h"
-#include "program/ProgramEditor.h"
-#include "program/ProgramPage.h"
-#include "program/ProgramPathView.h"
-#include "program/ProgramPreviewView.h"
-#include "program/ProgramPromptBanner.h"
-#include "safety/SafetyBar.h"
-#include <QCheckBox>
-#include <QDockWidget>
-#include <QMessageBox>
-#include <QProgressBar>
-#include <QPushButton>
-#include <QSettings>
-#include <QSpinBox>
-#include <QTableWidget>
-#include <QTextBlock>
+// The Program page in the main window (issue 20) on a machine of two simulated controllers
+// (ProgramPageFixture): the check's errors are marked at their lines; Run sends the moves
+// (asserted at the simulated device); the position is drawn in the path; Run from line confirms
+// where it starts; the page fits a 1366x768 laptop; the connection's machine is the one
+// programs run on. Holding, stopping and faults while a program runs: tst_programpagerun.
+#include "ProgramPageFixture.h"
 
 using namespace stepdeck;
 using namespace stepdeck::test;
 using program::RunState;
 
-class TestProgramPage : public QObject
+class TestProgramPage : public ProgramPageFixture
 {
     Q_OBJECT
 private Q_SLOTS:
@@ -43,58 +19,13 @@ private Q_SLOTS:
     void check_errorInProgram_markedAtItsLine();
     void check_validProgram_previewWithEstimatedDuration();
     void run_validProgram_deviceReceivedTheMoves();
-    void pause_duringBlock_holdsAfterItThenResumeFinishes();
-    void abort_duringMove_abortedAndAxisStandsStill();
-    void stop_duringMove_programEndsAborted_data();
-    void stop_duringMove_programEndsAborted();
-    void m0_prompt_bannerWithResumeGoesOn();
-    void m1_optionalStopsToggle_reachesTheRunner();
-    void hold_f2AndHoldButton_contourStopsOnItsPathResumeFinishes();
-    void fault_linkLostDuringMove_failedNamingTheLine();
     void position_whileRunning_drawnInThePath();
     void runFromLine_confirmationNamesThePosition();
     void page_fitsTheLaptopScreen();
     void connection_singleController_isTheMachineProgramsRunOn();
     void connection_keepsTheControllersUnitsLimitsAndReferencing();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
-    void stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data();
-    void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
-    void closeMachine_whileRunning_programAbortedAndAxisStill_data();
-    void closeMachine_whileRunning_programAbortedAndAxisStill();
     void run_afterZeroXY_programInWorkCoordinatesAtTheBoard();
-
-private:
-    ui::MainWindow* window() const { return m_rig.window(); }
-    ui::ProgramPage* page() const { return window()->programPage(); }
-    program::ProgramRunner* runner() const { return page()->runner(); }
-    void setProgram(const QString& text)
-    {
-        window()->raisePage(page());
-        page()->editor()->setPlainText(text);
-        page()->checkNow();
-        QTRY_VERIFY(!page()->isChecking()); // off the GUI thread
-    }
-    // A run asked for is first checked off the GUI thread (ProgramStarter): until then the
-    // runner still has the state of the run before.
-    bool runState(RunState state) const
-    {
-        return runner() && !page()->isStarting() && runner()->state() == state;
-    }
-    // "stop": the STOP button, "panic": the PANIC button, else Esc in the editor.
-    void stopBy(const QString& how)
-    {
-        if (how == QLatin1String("stop")) {
-            window()->safetyBar()->stopButton()->click();
-        } else if (how == QLatin1String("panic")) {
-            window()->safetyBar()->panicButton()->click();
-        } else {
-            page()->editor()->setFocus();
-            QTRY_VERIFY(page()->editor()->hasFocus());
-            QTest::keyClick(page()->editor(), Qt::Key_Escape);
-        }
-    }
-
-    MachineWindowRig m_rig;
 };
 
 void TestProgramPage::check_errorInProgram_markedAtItsLine()
@@ -150,247 +81,6 @@ void TestProgramPage::run_validProgram_deviceReceivedTheMoves()
     QVERIFY2(page()->messageText().startsWith(QStringLiteral("Finished")),
              qPrintable(page()->messageText()));
     QVERIFY(!page()->editor()->isReadOnly());
-}
-
-void TestProgramPage::pause_duringBlock_holdsAfterItThenResumeFinishes()
-{
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("G91\nG0 X2\nG0 X2\nG0 X2\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    QVERIFY(page()->editor()->isReadOnly());
-    // The block running when Pause is pressed (line 2 unless the machine was quicker).
-    const int line = page()->editor()->runningLine();
-    QVERIFY(line >= 2 && line <= 4);
-    page()->controls()->pauseButton()->click();
-    // Said while the block runs out.
-    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Pausing: line %1").arg(line)),
-             qPrintable(page()->messageText()));
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused), 20000);
-    // That block was finished at the device (2 mm at 400 steps/mm each), and nothing more
-    // was started.
-    QVERIFY(m_rig.elab->still());
-    QCOMPARE(m_rig.elab->position(Axis::X), 800 * (line - 1));
-    QCOMPARE(runner()->currentLine(), line);
-    QVERIFY(!page()->promptBanner()->isShowingPrompt()); // not an M0
-    QVERIFY2(page()->controls()->progressText().contains(QStringLiteral("of 5")),
-             qPrintable(page()->controls()->progressText()));
-    page()->controls()->resumeButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
-    QCOMPARE(m_rig.elab->position(Axis::X), 2400);
-}
-
-void TestProgramPage::abort_duringMove_abortedAndAxisStandsStill()
-{
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("G91\nG0 X100\nG0 X100\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    page()->controls()->abortButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
-    QVERIFY(m_rig.elab->receivedStop());
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
-    QVERIFY(m_rig.elab->position(Axis::X) < 40000);
-    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
-             qPrintable(page()->messageText()));
-    QVERIFY(!page()->editor()->isReadOnly());
-}
-
-void TestProgramPage::stop_duringMove_programEndsAborted_data()
-{
-    QTest::addColumn<QString>("how");
-    QTest::addRow("STOP button") << QStringLiteral("stop");
-    QTest::addRow("Esc in the editor") << QStringLiteral("esc");
-    QTest::addRow("PANIC button") << QStringLiteral("panic");
-}
-
-void TestProgramPage::stop_duringMove_programEndsAborted()
-{
-    QFETCH(QString, how);
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    stopBy(how);
-    QTRY_VERIFY2_WITH_TIMEOUT(runState(RunState::Aborted), qPrintable(page()->messageText()),
-                              20000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
-    QVERIFY(m_rig.elab->position(Axis::X) < 40000);
-    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Aborted")),
-             qPrintable(page()->messageText()));
-}
-
-// Issue 28, item 4: STOP and Esc during a program brake the E-LAB with its ramp (ForceStopMove
-// "ohne Schrittverluste"; RequestRelPosition gives the steps not run): X and Y stay referenced
-// at the board's count. Only PANIC makes them unknown (the safety contract).
-void TestProgramPage::stop_duringReferencedProgram_positionsStayKnownAtTheBoard_data()
-{
-    QTest::addColumn<QString>("how");
-    QTest::addColumn<bool>("known");
-    QTest::newRow("STOP button") << "stop" << true;
-    QTest::newRow("Esc in the editor") << "esc" << true;
-    QTest::newRow("PANIC button") << "panic" << false;
-}
-
-void TestProgramPage::stop_duringReferencedProgram_positionsStayKnownAtTheBoard()
-{
-    QFETCH(QString, how);
-    QFETCH(bool, known);
-    QVERIFY(m_rig.openAndConnect());
-    QVERIFY(m_rig.referenceTable());
-    const qint64 xHome = m_rig.elab->position(Axis::X); // the board counts from power-on
-    const qint64 yHome = m_rig.elab->position(Axis::Y);
-    setProgram(QStringLiteral("G90\nG0 X100 Y50\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    stopBy(how);
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
-    machine::Machine* m = m_rig.machine();
-    const machine::MachineAxis& x = *m->description().axis(QStringLiteral("X"));
-    const machine::MachineAxis& y = *m->description().axis(QStringLiteral("Y"));
-    if (!known) {
-        QTRY_VERIFY(m->axisStatus(x).known == machine::PositionKnowledge::Unknown);
-        return;
-    }
-    QTRY_COMPARE_WITH_TIMEOUT(m->axisStatus(x).steps, m_rig.elab->position(Axis::X) - xHome, 10000);
-    QTRY_COMPARE_WITH_TIMEOUT(m->axisStatus(y).steps, m_rig.elab->position(Axis::Y) - yHome, 10000);
-    QCOMPARE(m->axisStatus(x).known, machine::PositionKnowledge::Referenced);
-    QCOMPARE(m->axisStatus(y).known, machine::PositionKnowledge::Referenced);
-}
-
-void TestProgramPage::m0_prompt_bannerWithResumeGoesOn()
-{
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("M0 (Load the part; a long prompt that does not fit on one line of "
-                              "the banner however wide the window is, since it goes on and on "
-                              "and on and on and on and on and on and on and on and on)\n"
-                              "G91\nG0 X0.25\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    const int bannerHeight = page()->promptBanner()->height();
-    // Nothing the operator may reach for moves when the prompt appears.
-    auto place = [this](QWidget* w) { return QRect(w->mapTo(window(), QPoint()), w->size()); };
-    const QRect abort = place(page()->controls()->abortButton());
-    const QRect editor = place(page()->editor());
-    page()->controls()->runButton()->click();
-    // M0 on the first line: the program's first block runs too (it was skipped once).
-    QTRY_VERIFY2_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(),
-                              qPrintable(page()->messageText()), 10000);
-    QVERIFY2(page()->promptBanner()->text().contains(QStringLiteral("Load the part")),
-             qPrintable(page()->promptBanner()->text()));
-    QCOMPARE(page()->promptBanner()->height(), bannerHeight); // room reserved
-    QCOMPARE(place(page()->controls()->abortButton()), abort);
-    QCOMPARE(place(page()->editor()), editor);
-    QVERIFY(page()->editor()->isReadOnly());
-    QCOMPARE(m_rig.elab->position(Axis::X), 0);
-    page()->promptBanner()->resumeButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
-    QCOMPARE(m_rig.elab->position(Axis::X), 100);
-    QVERIFY(!page()->promptBanner()->isShowingPrompt());
-}
-
-// Issue 29: the window's "Optional stops (M1)" switch reaches the runner: off, the program
-// runs past M1 without a prompt; on (also switched while nothing runs), M1 holds with its
-// comment in the banner and the board gets the next move only after Resume.
-// Issue 30: the feed override box reaches the runner; F2 (from the editor: a window-wide key)
-// and the Hold button hold a contour on its path (the board's X stands still over several
-// polls, short of the end); Resume goes on and the contour ends exactly at its end.
-void TestProgramPage::hold_f2AndHoldButton_contourStopsOnItsPathResumeFinishes()
-{
-    QVERIFY(m_rig.openAndConnect());
-    QSpinBox* override = page()->controls()->feedOverrideBox();
-    override->setValue(50);
-    QCOMPARE(runner()->feedOverride(), 50.0);
-    override->setValue(100);
-    QCOMPARE(runner()->feedOverride(), 100.0);
-    // Eight moves of 0.05 mm (20 steps) at 0.2 mm/s (80 steps/s, below the stream's 99 ticks/s).
-    QString program = QStringLiteral("G91 G64\n");
-    for (int i = 0; i < 8; ++i)
-        program += QStringLiteral("G1 X0.05 F12\n");
-    setProgram(program + QStringLiteral("M2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    const auto holdsStill = [&] {
-        QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused), 10000);
-        QVERIFY(runner()->feedHeld());
-        QVERIFY(!page()->controls()->holdButton()->isEnabled());
-        // The board runs what it holds, then stands: its buffer empty, X the same twice.
-        qint64 stood = -1;
-        QTRY_VERIFY_WITH_TIMEOUT(
-            [&] {
-                const qint64 now = m_rig.elab->position(Axis::X);
-                const int buffered = m_rig.elab->probe([&] {
-                    return static_cast<elab::ElabSimulator*>(m_rig.elab->sim())->streamBuffered();
-                });
-                return std::exchange(stood, now) == now && buffered == 0;
-            }(),
-            5000);
-        QSignalSpy polls(m_rig.machine()->session(QStringLiteral("table")),
-                         &ControllerSession::statusChanged);
-        QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
-        QCOMPARE(m_rig.elab->position(Axis::X), stood);
-        QVERIFY(stood < 160);
-    };
-    QTRY_VERIFY_WITH_TIMEOUT(runner()->currentLine() >= 3, 20000);
-    QTest::keyClick(page()->editor(), Qt::Key_F2);
-    holdsStill();
-    page()->controls()->resumeButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runner()->currentLine() >= 6, 20000);
-    QTRY_VERIFY(page()->controls()->holdButton()->isEnabled());
-    page()->controls()->holdButton()->click();
-    holdsStill();
-    page()->controls()->resumeButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
-    QCOMPARE(m_rig.elab->position(Axis::X), 160);
-}
-
-void TestProgramPage::m1_optionalStopsToggle_reachesTheRunner()
-{
-    QVERIFY(m_rig.openAndConnect());
-    QCheckBox* optionalStops = page()->controls()->optionalStopsBox();
-    QVERIFY(optionalStops->isChecked()); // the default
-    QVERIFY(runner()->optionalStops());
-    optionalStops->click();
-    QVERIFY(!runner()->optionalStops());
-    setProgram(QStringLiteral("G91\nM1 (Look at the clamps)\nG0 X0.25\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
-    QCOMPARE(m_rig.elab->position(Axis::X), 100);
-    QVERIFY(!page()->promptBanner()->isShowingPrompt());
-
-    optionalStops->click();
-    QVERIFY(runner()->optionalStops());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY2_WITH_TIMEOUT(page()->promptBanner()->isShowingPrompt(),
-                              qPrintable(page()->messageText()), 10000);
-    QVERIFY2(page()->promptBanner()->text().contains(QStringLiteral("Look at the clamps")),
-             qPrintable(page()->promptBanner()->text()));
-    QCOMPARE(m_rig.elab->position(Axis::X), 100); // the second pass holds before its move
-    page()->promptBanner()->resumeButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
-    QCOMPARE(m_rig.elab->position(Axis::X), 200);
-}
-
-void TestProgramPage::fault_linkLostDuringMove_failedNamingTheLine()
-{
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("G91\nG0 A3600\nG0 X1\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.nanotec->moving(Axis::X), 10000);
-    m_rig.nanotec->vanish(); // the rotary's USB adapter pulled
-    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Failed), 20000);
-    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Failed: line 2")),
-             qPrintable(page()->messageText()));
-    QVERIFY(!page()->editor()->isReadOnly());
-    QCOMPARE(page()->editor()->runningLine(), 0);
-    QVERIFY(m_rig.elab->still()); // line 3 never started
-    QCOMPARE(m_rig.elab->position(Axis::X), 0);
 }
 
 void TestProgramPage::position_whileRunning_drawnInThePath()
@@ -537,38 +227,6 @@ void TestProgramPage::connection_keepsTheControllersUnitsLimitsAndReferencing()
     settings.remove(QStringLiteral("units"));
     settings.remove(QStringLiteral("softLimits"));
     settings.remove(QStringLiteral("reference"));
-}
-
-void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill_data()
-{
-    QTest::addColumn<bool>("throughWindow");
-    QTest::addRow("window") << true;
-    QTest::addRow("context (another machine opened)") << false;
-}
-
-void TestProgramPage::closeMachine_whileRunning_programAbortedAndAxisStill()
-{
-    QFETCH(bool, throughWindow);
-    QVERIFY(m_rig.openAndConnect());
-    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
-    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
-    page()->controls()->runButton()->click();
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
-    if (throughWindow)
-        window()->closeMachine();
-    else
-        window()->context()->closeMachine();
-    // The runner of the closed machine is gone; the connection bar's machine has its own.
-    QVERIFY(window()->context()->isConnectionMachine());
-    QVERIFY(!page()->isRunning());
-    QVERIFY(!page()->editor()->isReadOnly());
-    // Through the window the program is aborted first; a machine closed under it otherwise
-    // ends it failed, saying so.
-    QVERIFY2(throughWindow ? page()->messageText().startsWith(QStringLiteral("Aborted"))
-                           : page()->messageText().contains(QStringLiteral("closed")),
-             qPrintable(page()->messageText()));
-    QVERIFY(m_rig.elab->receivedStop());
-    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
 }
 
 // Issue 28: the check judges the board's rules by what this session wrote. Before the setup is
