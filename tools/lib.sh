@@ -87,8 +87,8 @@ stepdeck_build() {
 
 # stepdeck_warn_low_disk DIR
 # A compiler that runs out of disk can fail without a word of its own (seen in CI: a FAILED
-# object and no diagnostic). A full build takes about 2 GB, the sanitizer build about 2.5 GB
-# (with the libraries shared; static, build-asan/ once took 12 GB).
+# object and no diagnostic). A full build takes about 3.5 GB, 1.5 GB of it the precompiled
+# headers (with the libraries shared; static, build-asan/ once took 12 GB).
 stepdeck_warn_low_disk() {
     local avail_kb
     avail_kb=$(df -Pk "$1" 2>/dev/null | awk 'NR == 2 { print $4 }')

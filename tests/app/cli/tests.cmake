@@ -11,7 +11,9 @@ stepdeck_add_test(tst_cli_run_devices SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_
 add_dependencies(tst_cli_run_devices stepdeck-cli)
 # Every shipped example (docs/examples) runs to its end on its simulator (issue 28).
 stepdeck_add_test(tst_cli_examples SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cli_examples.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 600)
+                  ${CMAKE_CURRENT_LIST_DIR}/CliRunRig.h LABELS integration TIMEOUT 600
+                  SPLIT exampleProgram_onItsSimulator_runsToItsEnd
+                        exampleMachine_onItsSimulators_referencesAndRuns)
 add_dependencies(tst_cli_examples stepdeck-cli)
 target_compile_definitions(tst_cli_examples PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # stepdeck-cli move and status on boards that answer as the manual allows: an SMC-IC4 that
