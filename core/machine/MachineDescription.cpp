@@ -194,6 +194,8 @@ QJsonObject MachineDescription::toJson() const
                   {"axes", axisList}};
     if (spindle.maxRpm) // optional: a machine without it writes the file older readers read
         o.insert("spindle", QJsonObject{{"maxRpm", *spindle.maxRpm}});
+    if (!crossControllerFeed) // optional as well: written only where it differs from the default
+        o.insert("crossControllerFeed", false);
     return o;
 }
 
@@ -221,7 +223,7 @@ bool operator==(const MachineSpindle& a, const MachineSpindle& b)
 bool operator==(const MachineDescription& a, const MachineDescription& b)
 {
     return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes &&
-           a.spindle == b.spindle;
+           a.spindle == b.spindle && a.crossControllerFeed == b.crossControllerFeed;
 }
 
 } // namespace stepdeck::machine

@@ -89,6 +89,11 @@ struct MachineDescription
     QList<MachineController> controllers;
     QList<MachineAxis> axes;
     MachineSpindle spindle;
+    // Feed moves whose axes sit on several controllers (issue 30): the controllers start
+    // together but share no clock, so the path between a move's ends is approximate (the check
+    // says so with an estimate). False (file: "crossControllerFeed": false): the check refuses
+    // them.
+    bool crossControllerFeed = true;
 
     const MachineController* controller(const QString& id) const;
     const MachineAxis* axis(const QString& name) const;

@@ -96,7 +96,9 @@ bool Reader::number(const QJsonObject& o, const QString& path, const char* key,
 
 bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
-    if (!onlyKeys(top, {}, {"format", "version", "name", "controllers", "axes", "spindle"}))
+    if (!onlyKeys(top, {},
+                  {"format", "version", "name", "controllers", "axes", "spindle",
+                   "crossControllerFeed"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
@@ -124,6 +126,10 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
             return false;
         d->axes << a;
     }
+    const QJsonValue cross = top.value("crossControllerFeed");
+    if (!cross.isUndefined() && !cross.isBool())
+        return fail("crossControllerFeed", MachineFile::tr("must be true or false"));
+    d->crossControllerFeed = cross.toBool(true);
     return !top.contains("spindle") || readSpindle(top.value("spindle"), &d->spindle);
 }
 

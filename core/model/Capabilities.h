@@ -88,6 +88,20 @@ struct Capabilities
     // The feed-rate parameter is written for every axis of the controller at once (E-LAB
     // SetFeedSpeed <FS> carries X, Y and Z in one frame): a G1 writes a rate for each.
     bool feedRateWholeSet = false;
+    // A G1 over several axes moves the tool along the line at F (issue 30, LinuxCNC's
+    // meaning): each axis gets the share of F its distance has of the path
+    // (program/CoordinatedFeed), so all arrive together. False: each axis at F (E-LAB blocks of
+    // their own; its contours coordinate by their stream).
+    bool coordinatedFeed = false;
+    // A global boolean parameter that makes the axes of one move arrive together (EMIS IP1,
+    // 9.12): a program writes it on before its first coordinated G1 and puts the value the
+    // adapter knew back at its end.
+    const char* interpolationParameter = nullptr;
+    // About how long after a move request the axes start (the set-up exchanges on the wire):
+    // a feed move across controllers starts this far apart at worst, and the check's estimate
+    // of its path error follows from it (issue 30). Nanotec: ten exchanges of about 6 ms
+    // (mode, distance, direction, read back) before 'A'.
+    double moveSetupSeconds = 0.005;
     // Contours as one step stream (issue 30, Controller::feedContour): a program's chain of
     // feed moves becomes step vectors, one per tick, the tick rate written as
     // feedRateParameter on every axis of the controller. contourTickBelow: the per-axis

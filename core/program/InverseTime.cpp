@@ -4,13 +4,11 @@
 
 namespace stepdeck::program::InverseTime {
 
-ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
-                     const AxisPositions& start, const QMap<QString, double>& workOffsets)
+QMap<QString, double> distances(const ProgramBlock& block, const machine::MachineDescription& d,
+                                const AxisPositions& start,
+                                const QMap<QString, double>& workOffsets)
 {
-    ProgramBlock out = block;
-    out.axisRates.clear();
-    if (!block.inverseTime || !block.feed)
-        return out;
+    QMap<QString, double> out;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         qsizetype index = 0;
         while (index < d.axes.size() && d.axes.at(index).name != it.key())
@@ -29,8 +27,21 @@ ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescriptio
             distance = std::abs(value + workOffsets.value(axis.name, 0.0) - *from);
         }
         if (distance > 0)
-            out.axisRates.insert(axis.name, distance * *block.feed);
+            out.insert(axis.name, distance);
     }
+    return out;
+}
+
+ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
+                     const AxisPositions& start, const QMap<QString, double>& workOffsets)
+{
+    ProgramBlock out = block;
+    out.axisRates.clear();
+    if (!block.inverseTime || !block.feed)
+        return out;
+    const QMap<QString, double> moved = distances(block, d, start, workOffsets);
+    for (auto it = moved.cbegin(); it != moved.cend(); ++it)
+        out.axisRates.insert(it.key(), it.value() * *block.feed);
     return out;
 }
 

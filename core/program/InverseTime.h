@@ -13,6 +13,12 @@ namespace stepdeck::program {
 // check's walk and by the run from the same positions. Pure.
 namespace InverseTime {
 
+// The distance each axis of `block` moves, in its unit (above 0 only), from the current point
+// `start` (machine coordinates, by axis index) to the block's target plus its work offsets. An
+// absolute word on an axis whose start is unknown gives none (the check refuses the move).
+QMap<QString, double> distances(const ProgramBlock& block, const machine::MachineDescription& d,
+                                const AxisPositions& start,
+                                const QMap<QString, double>& workOffsets);
 // `block` with axisRates set: each axis it moves (distance above 0) and that axis' rate in its
 // unit per minute. start: the current point (machine coordinates, the axes' units, by axis
 // index); workOffsets: the block's offsets per axis name (ProgramCoordinates::offsets). An

@@ -121,8 +121,9 @@ struct ProgramBlock
     bool inches = false;        // G20
     std::optional<double> feed; // F, unit/min (inverseTime: 1/minutes)
     bool inverseTime = false;   // G93: this G1 takes 1/F minutes (InverseTime)
-    // G93 resolved where the block starts (InverseTime::resolve): each moving axis' rate in its
-    // unit per minute, in place of F. Empty: F for every axis (G94).
+    // G93 resolved where the block starts (InverseTime::resolve), or a G94 G1 on controllers
+    // that coordinate (CoordinatedFeed::resolve): each moving axis' rate in its unit per
+    // minute, in place of F. An axis without one: F (G94), or none (G93: it does not move).
     WordMap<QString, double> axisRates;
     Plane plane = Plane::XY;             // G17 / G18 / G19
     PathMode pathMode = PathMode::Blend; // G61 / G61.1 / G64

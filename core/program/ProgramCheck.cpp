@@ -177,8 +177,6 @@ void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
           const CheckProgress& progress, ProgramCheckResult* result)
 {
     ProgramPreview& preview = result->preview;
-    preview.motionNote = ProgramCheck::tr("the axes of a block start together, each at its own "
-                                          "rate; the block ends when every axis has arrived");
     CheckErrors errors;
     const int start = startIndex(reader, fromLine, &errors);
     if (start >= 0) {

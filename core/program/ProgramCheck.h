@@ -92,8 +92,9 @@ struct ProgramPreview
     // point (pathDecimated set), its last point the run's end.
     QList<PreviewPoint> path;
     bool pathDecimated = false;
-    // How a block's axes move together on this machine: "the axes of a block start together,
-    // each at its own rate; the block ends when every axis has arrived" (no interpolation).
+    // How a block's axes move together on this machine's controllers (docs/programs.md "How F
+    // maps onto each model"), and how approximate the program's feed moves across
+    // controllers are.
     QString motionNote;
 
     static constexpr int kMaxPathPoints = 20000;

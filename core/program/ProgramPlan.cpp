@@ -203,11 +203,9 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* sp
     }
     if (!block.feed) // the parser refuses G1 without F
         return true;
-    if (block.inverseTime && !block.axisRates.contains(axis.name))
+    const qint64 rate = ProgramRules::axisRate(axis, block, spec);
+    if (rate == 0)
         return true; // G93 on an axis that does not move (or from an unknown position)
-    const qint64 rate =
-        block.inverseTime ? units::feedStepsPerSecond(axis, block.axisRates.value(axis.name), false)
-                          : units::feedStepsPerSecond(axis, *block.feed, block.inches);
     if (block.inverseTime && (rate < spec->minimum || rate > spec->maximum)) {
         error(block, block.columnOf(QStringLiteral("F")), [&] {
             return ProgramCheck::tr("G93 F%1 (the move in %2 s) moves %3 at %4 steps/s; "

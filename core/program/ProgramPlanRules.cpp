@@ -21,7 +21,11 @@ QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBl
 {
     const Capabilities caps = m_facts.capabilities.value(controller);
     const ParameterSet known = m_known.value(controller);
-    *set = ProgramRules::feedRateWrite(m_facts.description, controller, caps, block, known);
+    const auto schema = m_facts.schemas.constFind(controller);
+    const ParameterSpec* spec = schema == m_facts.schemas.cend() || !caps.feedRateParameter
+                                    ? nullptr
+                                    : schema->find(QString::fromLatin1(caps.feedRateParameter));
+    *set = ProgramRules::feedRateWrite(m_facts.description, controller, caps, block, known, spec);
     if (set->isEmpty())
         return {};
     // A program's G1s mostly write the rate the one before wrote: judged once (the rules see
@@ -92,7 +96,7 @@ void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
         });
     }
     m_lastTakenFeed = LastTakenFeed{};
-    if (allTaken && !changed)
+    if (allTaken && !changed && block.axisRates.isEmpty())
         m_lastTakenFeed = LastTakenFeed{true, *block.feed, block.inches, block.axes.keys()};
 }
 

@@ -35,8 +35,8 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
             continue; // the check refused such a program; Machine::move refuses it again
         const QString name = QString::fromLatin1(caps.feedRateParameter);
         // The same write the check judged (ProgramRules), against what the device holds.
-        const ParameterSet rate =
-            ProgramRules::feedRateWrite(d, id, caps, block, s->status().knownParameters);
+        const ParameterSet rate = ProgramRules::feedRateWrite(
+            d, id, caps, block, s->status().knownParameters, s->model()->schema.find(name));
         if (rate.isEmpty())
             continue;
         Controller& c = m_controllers[id];
@@ -52,9 +52,33 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
             }
             c.changed = true;
         }
-        requests.insert(s->writeParameters(rate, false), id);
+        ParameterSet write = rate;
+        write.insert(interpolationWrite(id, caps, block, s->status().knownParameters));
+        requests.insert(s->writeParameters(write, false), id);
     }
     return requests;
+}
+
+ParameterSet ProgramRates::interpolationWrite(const QString& id, const Capabilities& caps,
+                                              const ProgramBlock& block, const ParameterSet& known)
+{
+    if (!caps.interpolationParameter)
+        return {};
+    const machine::MachineDescription& d = m_machine->description();
+    int moving = 0;
+    for (auto it = block.axisRates.cbegin(); it != block.axisRates.cend(); ++it)
+        if (const machine::MachineAxis* a = d.axis(it.key()); a && a->controller == id)
+            ++moving;
+    const QString name = QString::fromLatin1(caps.interpolationParameter);
+    const QVariant held = known.value(name).global;
+    if (moving < 2 || (held.isValid() && held.toBool()))
+        return {};
+    Controller& c = m_controllers[id];
+    if (!c.interpolationWritten) {
+        c.interpolationWritten = true;
+        c.interpolationBefore = held;
+    }
+    return {{name, ParameterValue{QVariant(true), {}}}};
 }
 
 void ProgramRates::onResult(const QString& controllerId, const CommandResult& result)
@@ -90,7 +114,18 @@ QString ProgramRates::cannotPutBack(const ProgramBlock& rapid) const
 
 QMap<RequestId, QString> ProgramRates::restore()
 {
-    return putBack(m_controllers.keys());
+    QMap<RequestId, QString> requests = putBack(m_controllers.keys());
+    for (auto it = m_controllers.begin(); it != m_controllers.end(); ++it) {
+        if (!std::exchange(it->interpolationWritten, false) || !it->interpolationBefore.isValid() ||
+            it->interpolationBefore.toBool())
+            continue; // not turned on by this run, or not known before: left on
+        ControllerSession* s = m_machine->session(it.key());
+        const QString name = QString::fromLatin1(s->capabilities().interpolationParameter);
+        requests.insert(
+            s->writeParameters({{name, ParameterValue{it->interpolationBefore, {}}}}, false),
+            it.key());
+    }
+    return requests;
 }
 
 QMap<RequestId, QString> ProgramRates::putBack(const QStringList& controllers)

@@ -1,5 +1,6 @@
 #pragma once
 #include "ProgramBlock.h"
+#include "model/Capabilities.h"
 #include "model/CommandResult.h"
 #include "model/ParameterSchema.h"
 #include <QCoreApplication>
@@ -35,7 +36,8 @@ public:
     // neither read it back nor knew it (the check refuses such programs first; the adapter may
     // have forgotten it since). Empty: it can.
     QString cannotPutBack(const ProgramBlock& rapid) const;
-    // The fast speeds a G1 changed, written back (the program's end); none: nothing to do.
+    // The fast speeds a G1 changed, and the interpolation a coordinated G1 turned on, written
+    // back (the program's end); none: nothing to do.
     QMap<RequestId, QString> restore();
 
 private:
@@ -44,7 +46,15 @@ private:
         ParameterValue fast;  // read before the first G1 (perAxis empty: not read)
         RequestId read = 0;   // the read under way
         bool changed = false; // a G1 wrote a rate that G0 would also run at
+        // Capabilities::interpolationParameter: written on by this run (before: the value the
+        // adapter knew, put back at the end; invalid: not known, left on).
+        bool interpolationWritten = false;
+        QVariant interpolationBefore;
     };
+    // The interpolation write a coordinated G1 of `block` needs on controller `id` (none: the
+    // model has no such parameter, fewer than two of its axes move, or it is on already).
+    ParameterSet interpolationWrite(const QString& id, const Capabilities& caps,
+                                    const ProgramBlock& block, const ParameterSet& known);
     QMap<RequestId, QString> putBack(const QStringList& controllers);
 
     machine::Machine* m_machine;

@@ -6,7 +6,8 @@ namespace stepdeck::program {
 
 ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& description,
                                          const QString& controller, const Capabilities& caps,
-                                         const ProgramBlock& block, const ParameterSet& known)
+                                         const ProgramBlock& block, const ParameterSet& known,
+                                         const ParameterSpec* rateSpec)
 {
     if (!caps.feedRateParameter || !block.feed || block.kind != BlockKind::Feed)
         return {};
@@ -17,12 +18,9 @@ ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& desc
         const machine::MachineAxis* a = description.axis(it.key());
         if (!a || a->controller != controller)
             continue;
-        // G93: each axis its own rate (InverseTime); an axis that does not move gets none.
-        if (block.inverseTime && !block.axisRates.contains(a->name))
-            continue;
-        const qint64 r = block.inverseTime
-                             ? units::feedStepsPerSecond(*a, block.axisRates.value(a->name), false)
-                             : units::feedStepsPerSecond(*a, *block.feed, block.inches);
+        const qint64 r = axisRate(*a, block, rateSpec);
+        if (r == 0)
+            continue; // G93 on an axis that does not move: no rate
         rate.perAxis.insert(a->axis, r);
         slowest = slowest == 0 ? r : std::min(slowest, r);
     }
@@ -38,6 +36,16 @@ ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& desc
         }
     }
     return {{name, rate}};
+}
+
+qint64 ProgramRules::axisRate(const machine::MachineAxis& axis, const ProgramBlock& block,
+                              const ParameterSpec* rateSpec)
+{
+    const auto resolved = block.axisRates.find(axis.name);
+    if (resolved == block.axisRates.end())
+        return block.inverseTime ? 0 : units::feedStepsPerSecond(axis, *block.feed, block.inches);
+    const qint64 r = units::feedStepsPerSecond(axis, resolved.value(), false);
+    return !block.inverseTime && rateSpec ? std::max(r, rateSpec->minimum) : r;
 }
 
 QString ProgramRules::parameterWrite(const ParameterSchema& schema, const Capabilities& caps,

@@ -23,9 +23,17 @@ public:
     // the one the device is known to hold (known), else the block's slowest rate on that
     // controller (a rate the moving axes are refused for first), so the write never depends on
     // a value nobody wrote. Empty when the controller takes no rate or the block has no F.
+    // rateSpec: the feed-rate parameter's spec in the model's schema (null: not known).
     static ParameterSet feedRateWrite(const machine::MachineDescription& description,
                                       const QString& controller, const Capabilities& caps,
-                                      const ProgramBlock& block, const ParameterSet& known);
+                                      const ProgramBlock& block, const ParameterSet& known,
+                                      const ParameterSpec* rateSpec);
+    // The rate of one axis of a G1 in steps/s: F, or its resolved rate (ProgramBlock::axisRates:
+    // G93, or its share of F where the controller coordinates). A coordinated share below the
+    // parameter's minimum runs at that minimum (the axis arrives a little early: it moves
+    // little, docs/programs.md); 0: the axis gets no rate (G93, it does not move).
+    static qint64 axisRate(const machine::MachineAxis& axis, const ProgramBlock& block,
+                           const ParameterSpec* rateSpec);
 
     // Why the controller would refuse writing `set`: the schema's ranges, then the model's own
     // rules (ModelInfo::parameterRules) against what the device is known to hold. Empty: it

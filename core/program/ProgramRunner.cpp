@@ -185,6 +185,10 @@ void ProgramRunner::resetRun(const MachineFacts& facts)
     m_contourMoves.reset(); // it refers to m_runFacts
     m_runFacts = facts;
     m_contourMoves = std::make_unique<ContourMoves>(m_runFacts);
+    m_coordinated.clear();
+    for (auto c = facts.capabilities.cbegin(); c != facts.capabilities.cend(); ++c)
+        if (c->coordinatedFeed)
+            m_coordinated.insert(c.key());
 }
 
 void ProgramRunner::connectMachine()

@@ -108,7 +108,9 @@ public:
     // Feed hold (issue 30): a contour running as a step stream stops on its path at once
     // (ContourRun::hold: within ElabCtlMotionOps::kContourLeadSeconds at the board), Paused
     // with feedHeld(); resume() goes on along the path from there. Without a contour under way
-    // it is pause(): a block of its own finishes first. False when nothing runs.
+    // it is pause(): a block of its own finishes first, an arc holds at the end of its running
+    // chord (the EMIS and Nanotec executors: neither stops a positioning move on a ramp; the
+    // Nanotec's S, 6.2, stops without one and may lose steps). False when nothing runs.
     bool holdFeed();
     bool feedHeld() const { return m_feedHeld; }
     // Feed override, 10..200 % (issue 30): a contour's ticks not yet given run at that share of
@@ -180,6 +182,7 @@ private:
     // Blocks of many moves: an arc's chords, a cycle's moves (ProgramRunnerPaths.cpp).
     void startArc(const ProgramBlock& block);
     void sendChord();
+    void moveChord();
     void startCycle(const ProgramBlock& block);
     void startSegment(); // the cycle's m_segment: its rates, then its move or dwell
     void sendSegment();
@@ -250,6 +253,7 @@ private:
     AxisPositions m_programmed;
     std::optional<ArcPath> m_arc;      // the arc running, its chords sent one at a time
     qint64 m_chord = 0;                // the chord under way (1..chords)
+    bool m_chordsCoordinated = false;  // each chord writes its own shares of F (CoordinatedFeed)
     std::optional<DrillCycle> m_cycle; // the drilling cycle running, one move at a time
     size_t m_segment = 0;              // its move under way
     bool m_heldInPath = false;         // paused between two moves of m_arc or m_cycle
@@ -257,6 +261,7 @@ private:
     // The machine's facts at start() and the contour streams they give (ContourMoves keeps a
     // reference to them).
     MachineFacts m_runFacts;
+    QSet<QString> m_coordinated; // controllers of m_runFacts that coordinate (CoordinatedFeed)
     std::unique_ptr<ContourMoves> m_contourMoves;
     std::unique_ptr<ContourRun> m_contour; // the contour running, if any
     // m_block was read but waits for the contour to end (runNext takes it, not the next one).

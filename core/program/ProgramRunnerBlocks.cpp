@@ -1,4 +1,5 @@
 // ProgramRunner: what each block sends and what it waits for before the next one starts.
+#include "CoordinatedFeed.h"
 #include "InverseTime.h"
 #include "ProgramRates.h"
 #include "ProgramRules.h"
@@ -97,12 +98,16 @@ void ProgramRunner::startMove(const ProgramBlock& block)
         fail(ErrorKind::Refused, why);
         return;
     }
-    // G93: each axis' rate from where the block starts, as the check resolved it.
-    const QMap<RequestId, QString> rates = m_rates->before(
-        block.inverseTime
-            ? InverseTime::resolve(block, m_machine->description(), m_programmed,
-                                   m_coordinates.offsets(block, m_machine->description()))
-            : block);
+    // G93, or a G1 on coordinating controllers: each axis' rate from where the block starts,
+    // as the check resolved it.
+    const machine::MachineDescription& d = m_machine->description();
+    const QMap<RequestId, QString> rates =
+        m_rates->before(block.inverseTime ? InverseTime::resolve(block, d, m_programmed,
+                                                                 m_coordinates.offsets(block, d))
+                        : CoordinatedFeed::applies(block, d, m_coordinated)
+                            ? CoordinatedFeed::resolve(block, d, m_coordinated, m_programmed,
+                                                       m_coordinates.offsets(block, d))
+                            : block);
     awaitRequests(rates, [this] { sendMove(m_block); });
 }
 

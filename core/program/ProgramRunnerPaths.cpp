@@ -1,6 +1,7 @@
 // ProgramRunner: blocks of many moves. An arc runs as chords (ArcPath), a drilling cycle as its
 // moves and dwell (DrillCycle), each planned from the current point as the check planned it;
 // each move starts when the one before arrived, and a pause holds between two of them.
+#include "CoordinatedFeed.h"
 #include "InverseTime.h"
 #include "ProgramRates.h"
 #include "ProgramRunner.h"
@@ -8,8 +9,8 @@
 
 namespace stepdeck::program {
 
-// G2/G3: the arc's rates written once as for a G1 over its axes, then one chord after the
-// other, each an absolute move.
+// G2/G3: the arc's rates written once as for a G1 over its axes (on coordinating controllers:
+// each chord's shares of F before it), then one chord after the other, each an absolute move.
 void ProgramRunner::startArc(const ProgramBlock& block)
 {
     std::variant<ArcPath, ArcPath::Error> planning =
@@ -21,6 +22,14 @@ void ProgramRunner::startArc(const ProgramBlock& block)
     }
     m_arc = std::get<ArcPath>(std::move(planning));
     m_chord = 0;
+    // On coordinating controllers each chord gets the shares of F along it (sendChord).
+    m_chordsCoordinated =
+        !CoordinatedFeed::resolveChord(block, *m_arc, 1, m_machine->description(), m_coordinated)
+             .axisRates.isEmpty();
+    if (m_chordsCoordinated) {
+        sendChord();
+        return;
+    }
     // G93: the path speed that covers the curve in 1/F minutes (InverseTime), as the check.
     const QMap<RequestId, QString> rates = m_rates->before(
         ArcPath::rateBlock(block.inverseTime ? InverseTime::resolveArc(block, *m_arc) : block));
@@ -32,6 +41,19 @@ void ProgramRunner::sendChord()
     if (!m_arc)
         return;
     ++m_chord;
+    if (m_chordsCoordinated) {
+        const QMap<RequestId, QString> rates = m_rates->before(CoordinatedFeed::resolveChord(
+            m_block, *m_arc, m_chord, m_machine->description(), m_coordinated));
+        awaitRequests(rates, [this] { moveChord(); });
+        return;
+    }
+    moveChord();
+}
+
+void ProgramRunner::moveChord()
+{
+    if (!m_arc)
+        return;
     QMap<QString, double> targets;
     const machine::MachineDescription& d = m_machine->description();
     for (const auto& [axis, value] : m_arc->pointAt(m_chord))

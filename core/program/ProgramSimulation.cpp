@@ -1,6 +1,7 @@
 // The check's walk (ProgramCheck): the blocks as the run executes them, repeats counted out,
 // following the positions the program reaches (docs/programs.md "Check", "Preview").
 #include "ProgramSimulation.h"
+#include "CoordinatedFeed.h"
 #include "InverseTime.h"
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,9 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* r
     m_maximum.assign(n, 0);
     m_offset.assign(n, 0);
     m_programmed.assign(n, std::nullopt);
+    for (auto c = facts.capabilities.cbegin(); c != facts.capabilities.cend(); ++c)
+        if (c->coordinatedFeed)
+            m_coordinated.insert(c.key());
     for (size_t i = 0; i < n; ++i) {
         const machine::MachineAxis& axis = m_axes.at(qsizetype(i));
         const double offset = facts.workOffsets().value(axis.name, 0.0);
@@ -118,7 +122,13 @@ bool ProgramSimulation::visit(int i, const ProgramBlock& block)
         if (m_firstVisit)
             m_firstVisit(block);
     }
-    if (block.inverseTime) {
+    if (CoordinatedFeed::applies(block, m_facts.description, m_coordinated)) {
+        // Each axis' share of F follows from where the block starts, as the run resolves it.
+        const machine::MachineDescription& d = m_facts.description;
+        m_resolved = CoordinatedFeed::resolve(block, d, m_coordinated, m_programmed,
+                                              m_coordinates.offsets(block, d));
+        m_plan.plan(m_resolved, first);
+    } else if (block.inverseTime) {
         // Its rates follow from where it starts (InverseTime), as the run resolves them.
         const machine::MachineDescription& d = m_facts.description;
         const QMap<QString, double> offsets = m_coordinates.offsets(block, d);
@@ -216,8 +226,18 @@ void ProgramSimulation::move(PlannedBlock& planned)
         checkContourFeed(block, *stream, line);
     }
     AxisMove* const first = m_moves.data() + planned.firstMove;
-    for (AxisMove* m = first; m != first + planned.moveCount; ++m)
+    // Across controllers only on a machine of several (the check's rate: no list otherwise).
+    const bool feed = block.kind == BlockKind::Feed && planned.moveCount > 1 &&
+                      m_facts.description.controllers.size() > 1;
+    AxisList moving;
+    for (AxisMove* m = first; m != first + planned.moveCount; ++m) {
+        const qint64 before = m_steps[size_t(m->axis)];
         moveAxis(block, *m, &seconds);
+        if (feed && m_steps[size_t(m->axis)] != before)
+            moving.append({m->axis, m->speed});
+    }
+    if (moving.size() > 1)
+        noteControllers(block, moving);
     m_coordinates.advance(block, m_facts.description, &m_programmed);
     m_seconds += seconds;
     addPoint(block.line, block.kind == BlockKind::Rapid);
@@ -336,6 +356,7 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
 {
     preview->blocksRun = m_blocksRun;
     preview->estimatedSeconds = m_seconds;
+    preview->motionNote = controllersNote();
     m_path.finish(preview);
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (m_offset[size_t(i)] != 0.0)

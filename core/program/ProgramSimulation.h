@@ -1,13 +1,14 @@
 #pragma once
 // Internal to ProgramCheck: a program's blocks planned in the machine's terms (ProgramPlan.cpp)
 // and walked with their repeats counted out (ProgramSimulation.cpp, arcs in
-// ProgramSimulationArc.cpp).
+// ProgramSimulationArc.cpp, moves across controllers in ProgramSimulationControllers.cpp).
 #include "ArcPath.h"
 #include "ContourMoves.h"
 #include "DrillCycle.h"
 #include "PreviewPath.h"
 #include "ProgramCheck.h"
 #include "ProgramReader.h"
+#include <QVarLengthArray>
 #include <algorithm>
 #include <functional>
 #include <vector>
@@ -148,8 +149,8 @@ private:
         QStringList axes;
         bool matches(const ProgramBlock& b) const
         {
-            if (!valid || !b.feed || b.inverseTime || *b.feed != feed || b.inches != inches ||
-                b.axes.size() != axes.size())
+            if (!valid || !b.feed || b.inverseTime || !b.axisRates.isEmpty() || *b.feed != feed ||
+                b.inches != inches || b.axes.size() != axes.size())
                 return false;
             qsizetype i = 0;
             for (auto it = b.axes.cbegin(); it != b.axes.cend(); ++it, ++i)
@@ -174,7 +175,13 @@ class ProgramSimulation
 {
 public:
     // What CheckErrors::once() tells apart on one line and column.
-    enum OnceKind { kUnknownPosition = 1, kSoftLimit = 2, kBlockError = 3, kContourFeed = 4 };
+    enum OnceKind {
+        kUnknownPosition = 1,
+        kSoftLimit = 2,
+        kBlockError = 3,
+        kContourFeed = 4,
+        kCrossController = 5
+    };
     ProgramSimulation(const MachineFacts& facts, ProgramReader* reader, CheckErrors* errors);
     // Each block the first time the walk reaches it (or skips it in a repeat of no passes).
     void setFirstVisit(std::function<void(const ProgramBlock&)> visit)
@@ -208,6 +215,12 @@ private:
     // A block of a contour stream (ContourMoves): its feed against the stream's tick.
     void checkContourFeed(const ProgramBlock& block, const ContourMoves::Stream& stream,
                           const motion::CanonicalMove& move);
+    // A feed move of `axes` (the axes that move, each with its speed in its unit/s): across
+    // controllers it is refused where the machine file forbids it, else noted for the preview
+    // with its estimated path error (ProgramSimulationControllers.cpp).
+    using AxisList = QVarLengthArray<std::pair<int, double>, 16>;
+    void noteControllers(const ProgramBlock& block, const AxisList& axes);
+    QString controllersNote() const; // the preview's motion note
     void cycle(PlannedBlock& planned);
     bool countChords(qint64 chords, PlannedBlock& planned); // false: the run's bound is passed
     // Whether machine position `to` of the axis lies outside its soft limits (reported once
@@ -226,12 +239,21 @@ private:
     const QList<machine::MachineAxis>& m_axes;
     ProgramReader& m_reader;
     PlannedProgram m_planned;
-    ProgramBlock m_resolved; // a G93 block at the current point (InverseTime), while planned
+    // A G93 block, or a G94 G1 on coordinating controllers, at the current point (InverseTime,
+    // CoordinatedFeed), while planned.
+    ProgramBlock m_resolved;
+    QSet<QString> m_coordinated; // controllers whose caps say coordinatedFeed
     std::vector<AxisMove>& m_moves;
     CheckErrors* m_errors;
     ProgramPlan m_plan;
     const ContourMoves& m_contours; // m_plan's
     std::function<void(const ProgramBlock&)> m_firstVisit;
+    // The feed moves across controllers (noteControllers): the first line, and the largest
+    // distance one axis covers while its controllers' starts may differ.
+    qint64 m_crossMoves = 0;
+    int m_crossLine = 0;
+    double m_crossError = 0;
+    QString m_crossUnit;
     int m_firstUnvisited = 0; // blocks before it were planned once
     qint64 m_firstVisits = 0; // blocks the walk planned for the first time
     // Per axis (the description's order).

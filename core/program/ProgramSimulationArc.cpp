@@ -52,6 +52,15 @@ void ProgramSimulation::arc(PlannedBlock& planned)
         noteExtentAt(axis, range.first - m_offset[size_t(axis)]);
         noteExtentAt(axis, range.second - m_offset[size_t(axis)]);
     }
+    if (m_facts.description.controllers.size() > 1) {
+        AxisList moving;
+        for (const auto& [axis, value] : path.end()) {
+            Q_UNUSED(value);
+            const AxisMove* m = plannedMove(planned, axis);
+            moving.append({axis, m ? m->speed : 0.0});
+        }
+        noteControllers(block, moving);
+    }
     arcChords(path, planned);
 }
 
@@ -73,35 +82,41 @@ bool ProgramSimulation::countChords(qint64 chords, PlannedBlock& planned)
     return false;
 }
 
-// Each chord as the run sends it: an absolute move of every moving axis, its time the slowest
-// axis' (each axis runs at its own rate, no interpolation: docs/programs.md "How F maps").
+// Each chord as the run sends it: an absolute move of every moving axis. Its time: along the
+// chord at F where the controllers coordinate (CoordinatedFeed), else the slowest axis' (each
+// axis at its own rate: docs/programs.md "How F maps").
 void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
     if (!countChords(path.chords(), planned))
         return;
     std::vector<double> speed(m_axes.size(), 0.0);
+    bool coordinated = !block.inverseTime;
     for (const auto& [axis, value] : path.end()) {
         Q_UNUSED(value);
         if (const AxisMove* m = plannedMove(planned, axis))
             speed[size_t(axis)] = m->speed;
+        coordinated = coordinated && m_coordinated.contains(m_axes.at(axis).controller);
     }
     for (qint64 k = 1; k <= path.chords(); ++k) {
         double seconds = 0;
+        double squares = 0;
         for (const auto& [axis, value] : path.pointAt(k)) {
             const size_t a = size_t(axis);
             const machine::MachineAxis& machineAxis = m_axes.at(axis);
             const qint64 steps = machineAxis.toSteps(value);
-            if (speed[a] > 0)
-                seconds = std::max(seconds, std::abs(double(steps - m_steps[a])) /
-                                                machineAxis.stepsPerUnit / speed[a]);
+            const double time = speed[a] > 0 ? std::abs(double(steps - m_steps[a])) /
+                                                   machineAxis.stepsPerUnit / speed[a]
+                                             : 0.0;
+            seconds = std::max(seconds, time);
+            squares += time * time;
             m_steps[a] = steps;
             m_known[a] = 1;
             m_moved[a] = 1;
             if (k == path.chords())
                 m_programmed[a] = value; // the programmed end exactly
         }
-        m_seconds += seconds;
+        m_seconds += coordinated ? std::sqrt(squares) : seconds;
         addPoint(block.line);
     }
 }

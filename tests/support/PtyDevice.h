@@ -14,7 +14,8 @@ namespace stepdeck::test {
 class PtyDevice
 {
 public:
-    explicit PtyDevice(const QString& modelId)
+    // addresses: the drives of a bus model (Nanotec); the others take {1}.
+    explicit PtyDevice(const QString& modelId, const QList<int>& addresses = {1})
     {
         m_thread.start();
         m_home.moveToThread(&m_thread);
@@ -26,7 +27,7 @@ public:
                 qFatal("pty: %s", qPrintable(error));
             SimulatorOptions options;
             options.line = info->line;
-            options.addresses = {1};
+            options.addresses = addresses;
             m_sim = info->createSimulator(options);
             m_sim->attach(m_end);
             m_path = m_end->slavePath();

@@ -4,6 +4,7 @@
 #include "EditorTable.h"
 #include "common/ElidedLabel.h"
 #include "protocols/Registry.h"
+#include <QCheckBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -72,6 +73,11 @@ void MachineEditor::build()
     m_maxRpm->setToolTip(tr("The spindle speed in rpm that the controller's full spindle range "
                             "stands for: a program's S is then in rpm (S12000 of 24000 is half "
                             "the range). Empty: S is sent in the controller's own units."));
+    m_crossFeed = new QCheckBox(tr("Feed across controllers"), this);
+    m_crossFeed->setObjectName(QStringLiteral("machineCrossControllerFeed"));
+    m_crossFeed->setToolTip(tr("Allow feed moves (G1, G2, G3) whose axes sit on several "
+                               "controllers. They start together but share no clock, so their "
+                               "path is only approximate; off, the program check refuses them."));
     m_controllers = new ControllersTable(this);
     m_axes = new AxesTable(this);
     m_message = new ElidedLabel(this, 1);
@@ -95,6 +101,7 @@ void MachineEditor::build()
     maxRpmLabel->setBuddy(m_maxRpm);
     nameRow->addWidget(maxRpmLabel);
     nameRow->addWidget(m_maxRpm);
+    nameRow->addWidget(m_crossFeed);
     auto* form = new QFormLayout;
     form->addRow(tr("Machine name"), nameRow);
     auto* layout = new QVBoxLayout(this);
@@ -108,6 +115,7 @@ void MachineEditor::build()
 
     connect(m_name, &QLineEdit::textEdited, this, &MachineEditor::revalidate);
     connect(m_maxRpm, &QLineEdit::textEdited, this, &MachineEditor::revalidate);
+    connect(m_crossFeed, &QCheckBox::toggled, this, &MachineEditor::revalidate);
     connect(m_controllers, &EditorTable::edited, this, [this] {
         m_axes->setControllerAxes(m_controllers->controllerAxes());
         revalidate();
@@ -148,6 +156,10 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
                                                                QLocale::FloatingPointShortest)
                                              : QString());
+    {
+        const QSignalBlocker quiet(m_crossFeed); // revalidated below
+        m_crossFeed->setChecked(machine.crossControllerFeed);
+    }
     m_axes->setAxes({}); // first: the new controllers' ids go to no old row
     m_controllers->setControllers(machine.controllers);
     m_axes->setAxes(machine.axes);
@@ -175,6 +187,7 @@ void MachineEditor::startFromController(const ModelInfo& model, const QString& p
 bool MachineEditor::readMachine(MachineDescription* out, MachineFileError* error) const
 {
     out->name = m_name->text().trimmed();
+    out->crossControllerFeed = m_crossFeed->isChecked();
     return m_controllers->read(&out->controllers, error) && m_axes->read(&out->axes, error) &&
            readDecimal(m_maxRpm, QStringLiteral("spindle.maxRpm"), true, &out->spindle.maxRpm,
                        error) &&

@@ -5,6 +5,7 @@
 #include <QWidget>
 #include <functional>
 
+class QCheckBox;
 class QLineEdit;
 
 namespace stepdeck::ui {
@@ -58,6 +59,7 @@ public:
 
     QLineEdit* nameEdit() const { return m_name; }
     QLineEdit* maxRpmEdit() const { return m_maxRpm; } // spindle.maxRpm; empty: none
+    QCheckBox* m_crossFeed = nullptr;                  // MachineDescription::crossControllerFeed
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }

@@ -368,6 +368,12 @@ void EmisController::syncStatus()
         s.knownParameters.remove(QStringLiteral("work-speed"));
     else
         s.knownParameters.insert(QStringLiteral("work-speed"), work);
+    // Interpolation as written in this session (a program turns it on, ProgramRates).
+    if (m_known.interpolation)
+        s.knownParameters.insert(QStringLiteral("interpolation"),
+                                 ParameterValue{QVariant(*m_known.interpolation), {}});
+    else
+        s.knownParameters.remove(QStringLiteral("interpolation"));
     // One supply feeds logic and motor drivers (manual 4): a board that answers has its
     // drivers powered; there is no enable command.
     s.driveOn = linkState() == LinkState::Connected;

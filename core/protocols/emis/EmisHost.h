@@ -13,6 +13,9 @@ struct EmisKnownValues
     QMap<Axis, qint64> startSpeed, runCurrent, idleCurrent;
     QMap<Axis, bool> switchNc;
     std::optional<qint64> ramp;
+    // IP0/IP1 (9.12) as this session wrote it; no system entry holds it, so a reset (5.8)
+    // forgets it (the board's power-on value is not documented).
+    std::optional<bool> interpolation;
     EmisWorkSpeeds speeds; // the work speed, with what the board has (EmisWorkSpeeds)
 };
 

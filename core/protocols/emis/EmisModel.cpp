@@ -43,6 +43,10 @@ Capabilities capabilities()
     // G1 F: the work speed #E1 (9.5) every vector move runs at, G0 too.
     caps.feedRateParameter = "work-speed";
     caps.feedRateSetsRapid = true;
+    // A G1 over several axes: each axis' work speed its share of F, with interpolation on
+    // (IP1, 9.12), so the board brings them into their targets together.
+    caps.coordinatedFeed = true;
+    caps.interpolationParameter = "interpolation";
     return caps;
 }
 

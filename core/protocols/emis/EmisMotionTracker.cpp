@@ -174,6 +174,7 @@ void EmisMotionTracker::markOverdue(Axis axis)
 void EmisMotionTracker::suspectReset()
 {
     m_known.speeds.forgetBoard();
+    m_known.interpolation.reset();
     for (Track& t : m_tracks)
         t.referenced = false;
     for (std::optional<bool>& output : m_host.statusToChange().outputs)

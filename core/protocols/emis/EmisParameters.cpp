@@ -90,6 +90,8 @@ void EmisParameters::write(RequestId id, const ParameterSet& values)
         return m_host.fail(id, plan.error, plan.message);
     if (values.contains(QStringLiteral("work-speed")))
         m_known.speeds.forgetBoard(); // until the writes are confirmed (a failure says no more)
+    if (values.contains(QStringLiteral("interpolation")))
+        m_known.interpolation.reset(); // the same
     runFrames(id, plan.frames, 0, [this, id, values] {
         noteWritten(values);
         m_host.publish();
@@ -122,6 +124,8 @@ void EmisParameters::noteWritten(const ParameterSet& set)
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
         m_known.ramp = intOf(m_written.value(QStringLiteral("ramp")).global);
+    if (set.contains(QStringLiteral("interpolation")))
+        m_known.interpolation = set.value(QStringLiteral("interpolation")).global.toBool();
     const ParameterValue types = m_written.value(QStringLiteral("reference-switch-type"));
     for (auto it = types.perAxis.cbegin(); it != types.perAxis.cend(); ++it)
         m_known.switchNc.insert(it.key(), it.value().toString() == QLatin1String("NC"));

@@ -143,23 +143,42 @@ QByteArray EmisSimulator::runVector(const Command& c)
             return bel();
         }
     }
-    // Physical targets and, with interpolation (9.12), speeds that make the axes arrive
-    // together: each axis gets the speed that covers its distance in the slowest axis' time.
+    // Physical targets and, with interpolation (9.12: "kommen beide Motoren gleichzeitig ins
+    // Ziel"), profiles that make the axes arrive together. The manual does not say how; read
+    // here as the board running every other axis as a scaled copy of the slowest one's profile
+    // (its start speed, work speed and ramp), so they start, ramp and arrive on the same ticks.
     QMap<Axis, qint64> targets;
-    double slowest = 0;
+    const qint64 nowUs = m_clock.nsecsElapsed() / 1000;
+    const qsizetype firstAccepted = m_accepted.size();
+    std::optional<Axis> slowest;
+    double slowestSeconds = -1;
     for (const VectorTarget& t : c.targets) {
         const qint64 relative = t.absolute ? t.value - position(t.axis) : t.value;
         targets.insert(t.axis, axisRef(t.axis).physical() + relative);
         if (relative != 0)
-            m_accepted.append({t.axis, relative, m_working.workSpeed.value(t.axis)});
-        const double speed = qMax<double>(1, m_working.workSpeed.value(t.axis));
-        slowest = qMax(slowest, double(qAbs(relative)) / speed);
+            m_accepted.append({t.axis, relative, m_working.workSpeed.value(t.axis), 0, nowUs});
+        const double seconds =
+            double(qAbs(relative)) / qMax<double>(1, m_working.workSpeed.value(t.axis));
+        if (seconds > slowestSeconds) {
+            slowestSeconds = seconds;
+            slowest = t.axis;
+        }
     }
+    const bool together = m_working.interpolation && targets.size() > 1 && slowestSeconds > 0;
+    const EmisSimAxis::Profile lead = together ? profile(*slowest) : EmisSimAxis::Profile{};
+    const double leadDistance =
+        together ? double(qAbs(targets.value(*slowest) - axisRef(*slowest).physical())) : 0.0;
     for (auto it = targets.cbegin(); it != targets.cend(); ++it) {
         EmisSimAxis::Profile p = profile(it.key());
-        const double distance = double(qAbs(it.value() - axisRef(it.key()).physical()));
-        if (m_working.interpolation && targets.size() > 1 && slowest > 0)
-            p.workSpeed = qMax(1.0, qMin(p.workSpeed, distance / slowest));
+        if (together) {
+            const double k = double(qAbs(it.value() - axisRef(it.key()).physical())) / leadDistance;
+            p.workSpeed = qMax(1.0, lead.workSpeed * k);
+            p.startSpeed = qMin(lead.startSpeed, lead.workSpeed) * k;
+            p.rampMs = lead.rampMs;
+        }
+        for (qsizetype i = firstAccepted; i < m_accepted.size(); ++i)
+            if (m_accepted[i].axis == it.key())
+                m_accepted[i].runSpeed = p.workSpeed;
         axisRef(it.key()).startMove(it.value(), p);
     }
     ensureTicking();                  // a zero-length target arrives on the first tick

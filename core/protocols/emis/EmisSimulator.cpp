@@ -216,6 +216,13 @@ EmisSimAxis::Profile EmisSimulator::profile(Axis axis) const
 
 void EmisSimulator::arrived(Axis axis)
 {
+    for (qsizetype i = m_accepted.size() - 1; i >= 0; --i) {
+        if (m_accepted[i].axis == axis) {
+            if (m_accepted[i].arrivedUs < 0)
+                m_accepted[i].arrivedUs = m_lastTickUs; // the tick it arrived in
+            break;
+        }
+    }
     if (m_referencing[size_t(axis)]) {
         m_referencing[size_t(axis)] = false;
         m_referenced[size_t(axis)] = true;

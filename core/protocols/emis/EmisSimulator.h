@@ -77,6 +77,13 @@ public:
         Axis axis;
         qint64 steps;
         qint64 workSpeed = 0; // the axis' work speed (#E1, 9.5) when it was accepted
+        // What the bench and the coordination tests measure at the device (issue 30): the
+        // speed the axis ran at (with interpolation, 9.12, the share that brings it in with the
+        // others), when the move was accepted and when its <DCn> went out (-1: not yet), in µs
+        // of the simulator's clock.
+        double runSpeed = 0;
+        qint64 acceptedUs = 0;
+        qint64 arrivedUs = -1;
     };
     // The probe the soak and the fault matrix ask (Simulator::acceptedMoves) ...
     QList<SimulatedMove> acceptedMoves() const override;

@@ -43,6 +43,7 @@ public:
     double speed() const { return m_speed * m_dir; } // signed steps/s
     quint8 statusWord() const;
     bool ready() const { return m_run == Run::Idle && m_holdMs <= 0; }
+    bool running() const { return m_run != Run::Idle; } // a run under way (before settling)
     // The external limit switch (input 6) is actuated at or beyond these physical positions.
     void setSwitches(double negative, double positive);
     bool externalSwitchActuated() const;

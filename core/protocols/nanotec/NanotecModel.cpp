@@ -48,6 +48,10 @@ Capabilities capabilities(const QList<Axis>& axes)
     // G1 F: the top speed o (6.9) of the positioning move, which G0 runs at too.
     caps.feedRateParameter = "max-frequency";
     caps.feedRateSetsRapid = true;
+    // A G1 over several drives: each drive's o its share of F; set up first and started one
+    // right after the other (NanotecMotion::startPositioning), they arrive together.
+    caps.coordinatedFeed = true;
+    caps.moveSetupSeconds = 0.06; // docs/benchmark.md "Nanotec set-up": ~59 ms before 'A'
     return caps;
 }
 

@@ -115,7 +115,8 @@ void NanotecSimulator::execute(const Command& command)
         if (command.body == "A" && wasReady && !d->ready() && d->value('!') == 1 &&
             (p == 1 || p == 2)) {
             const qint64 s = d->value('s');
-            m_startedMoves.append({address, p == 1 ? (d->value('d') ? s : -s) : s - before});
+            m_startedMoves.append({address, p == 1 ? (d->value('d') ? s : -s) : s - before,
+                                   d->value('o'), m_clock.nsecsElapsed() / 1000});
         }
         return;
     }
@@ -205,12 +206,26 @@ void NanotecSimulator::tick()
     m_lastTickUs = now;
     for (const auto& d : m_drives) {
         const int address = d->address();
+        const bool wasRunning = d->running();
         for (const QByteArray& body : d->advance(dt)) {
             if (!d->faults.silent && !d->answersDisabled())
                 reply(d.get(), address, {body, false});
         }
+        if (wasRunning && !d->running())
+            noteArrival(address, now);
     }
     ensureTicking();
+}
+
+void NanotecSimulator::noteArrival(int address, qint64 us)
+{
+    for (qsizetype i = m_startedMoves.size() - 1; i >= 0; --i) {
+        if (m_startedMoves[i].address == address) {
+            if (m_startedMoves[i].arrivedUs < 0)
+                m_startedMoves[i].arrivedUs = us;
+            return;
+        }
+    }
 }
 
 bool NanotecSimulator::isMoving(Axis axis)

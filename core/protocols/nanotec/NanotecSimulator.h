@@ -43,6 +43,12 @@ public:
     {
         int address;
         qint64 steps;
+        // What the bench and the coordination tests measure at the device (issue 30): the top
+        // speed 'o' it ran at (6.9), when 'A' started it and when its run ended (at the target,
+        // or stopped; -1: not yet), in µs of the simulator's clock.
+        qint64 maxFrequency = 0;
+        qint64 startedUs = 0;
+        qint64 arrivedUs = -1;
     };
     const QList<StartedMove>& startedMoves() const { return m_startedMoves; }
     // ---- fault injection per drive (bus-wide faults: Simulator::faults()) ----
@@ -63,6 +69,7 @@ private:
     QByteArray frame(int address, const NanotecDrive::Answer& answer) const;
     void tick();
     void ensureTicking();
+    void noteArrival(int address, qint64 us); // the last started move of that drive
 
     std::vector<std::unique_ptr<NanotecDrive>> m_drives;
     CommandDecoder m_decoder;

@@ -87,6 +87,7 @@ private Q_SLOTS:
     void saveAndLoad_roundTrip_equal();
     void spindle_maxRpm_roundTripAndOldFilesUnchanged();
     void spindle_maxRpmWithoutASpindleController_refused();
+    void crossControllerFeed_roundTripAndOldFilesUnchanged();
     void singleController_keepsControllerAxesInSteps_andValidates();
     void toSteps_nearestWholeStep_andBack_data();
     void toSteps_nearestWholeStep_andBack();
@@ -264,6 +265,10 @@ void TestMachineFile::parse_invalid_namesTheField_data()
                                      << "greater than 0";
     QTest::newRow("maxRpm text") << withEdit("spindle.maxRpm", "24000") << "spindle.maxRpm"
                                  << "must be a decimal number";
+    // Issue 30: feed moves across controllers.
+    QTest::newRow("crossControllerFeed text")
+        << withEdit("crossControllerFeed", "no") << "crossControllerFeed"
+        << "must be true or false";
 }
 
 void TestMachineFile::parse_invalid_namesTheField()
@@ -351,6 +356,31 @@ void TestMachineFile::spindle_maxRpm_roundTripAndOldFilesUnchanged()
     const QJsonObject written = old->toJson();
     QVERIFY(!written.contains("spindle"));
     QCOMPARE(written.value("version").toInt(), 1);
+}
+
+// Issue 30: "crossControllerFeed": false is read, written and read back; a file without it
+// allows such moves and is written without the key.
+void TestMachineFile::crossControllerFeed_roundTripAndOldFilesUnchanged()
+{
+    MachineFileError error;
+    const std::optional<MachineDescription> strict =
+        MachineFile::parse(withEdit("crossControllerFeed", false), &error);
+    QVERIFY2(strict, qPrintable(error.text()));
+    QVERIFY(!strict->crossControllerFeed);
+    QCOMPARE(strict->toJson().value("crossControllerFeed"), QJsonValue(false));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("machine.json");
+    QString why;
+    QVERIFY2(MachineFile::save(*strict, path, &why), qPrintable(why));
+    const std::optional<MachineDescription> back = MachineFile::load(path, &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *strict);
+    const std::optional<MachineDescription> old =
+        MachineFile::parse(bytes(tableAndRotary()), &error);
+    QVERIFY2(old, qPrintable(error.text()));
+    QVERIFY(old->crossControllerFeed);
+    QVERIFY(!(*old == *strict));
+    QVERIFY(!old->toJson().contains("crossControllerFeed"));
 }
 
 void TestMachineFile::spindle_maxRpmWithoutASpindleController_refused()

@@ -36,6 +36,12 @@ stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_p
 # G2/G3 geometry (issue 29): the path the check and the run share.
 stepdeck_add_test(tst_arcpath SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_arcpath.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MillTestSupport.h LABELS unit)
+# G1's shares of F on controllers that coordinate (issue 30).
+stepdeck_add_test(tst_coordinatedfeed SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_coordinatedfeed.cpp
+                  LABELS unit)
+# The same on the EMIS and Nanotec simulators, asserted at the device.
+stepdeck_add_test(tst_programcoordinated SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcoordinated.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
 # A machine's tool table in LinuxCNC's tool.tbl format (issue 29).
 stepdeck_add_test(tst_tooltable SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltable.cpp LABELS unit)
 # Programs in the styles CAM posts write, run end to end on an E-LAB simulator (issue 29).

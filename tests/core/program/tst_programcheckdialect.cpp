@@ -26,6 +26,10 @@ private Q_SLOTS:
     void check_spindleAboveMaxRpm_refusedAtS();
     void check_inverseTime_eachAxisItsRate_data();
     void check_inverseTime_eachAxisItsRate();
+    void check_coordinatedFeed_alongThePathAtF_data();
+    void check_coordinatedFeed_alongThePathAtF();
+    void check_acrossControllers_approximateOrForbidden_data();
+    void check_acrossControllers_approximateOrForbidden();
 };
 
 // G54..G59, G53, G10 L2/L20 and G92 (issue 29): where absolute words go, the soft limits there,
@@ -257,6 +261,101 @@ void TestProgramCheckDialect::check_inverseTime_eachAxisItsRate()
     if (errors.isEmpty())
         QVERIFY2(std::abs(result.preview.estimatedSeconds - seconds) < 0.01,
                  qPrintable(QString::number(result.preview.estimatedSeconds)));
+}
+
+// G94 G1 over several axes of a controller that coordinates (issue 30, CoordinatedFeed): each
+// axis at its share of F, so the move takes its length / F; a share below the model's lowest
+// rate runs at that rate instead of being refused. The machines count in steps.
+void TestProgramCheckDialect::check_coordinatedFeed_alongThePathAtF_data()
+{
+    QTest::addColumn<QString>("machine");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("seconds");
+    // 500 steps at 10 steps/s (before issue 30: 40 s, each axis at F).
+    QTest::newRow("EMIS: a 3-4-5 diagonal in length / F")
+        << "emisKnown"
+        << "G1 X300 Y400 F600" << QStringList{} << 50.0;
+    QTest::newRow("EMIS: an arc's chords at F along each")
+        << "emisKnown"
+        << "G2 X200 Y0 I100 J0 F600" << QStringList{} << 100 * M_PI / 10;
+    // Y's share is about 1 step/s, below the drive's lowest o (60, 6.9): it runs at 60 and
+    // arrives early; X's 100 steps/s take 60 s.
+    QTest::newRow("Nanotec: a share below the lowest rate runs at it")
+        << "nanotec"
+        << "G1 X6000 Y60 F6000" << QStringList{} << 60.0;
+    // 26 667 steps/s would exceed o's 25 000 on one axis; along the diagonal each drive runs
+    // 18 856.
+    QTest::newRow("Nanotec: a diagonal within the range on each drive")
+        << "nanotec"
+        << "G1 X1000 Y1000 F1600000" << QStringList{} << std::sqrt(2.0) * 1000 / (1600000.0 / 60);
+}
+
+void TestProgramCheckDialect::check_coordinatedFeed_alongThePathAtF()
+{
+    QFETCH(QString, machine);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, seconds);
+    MachineFacts facts = machineFacts(machine);
+    facts.knownPositions = positions("X=0 Y=0");
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors).join(QLatin1Char('|')), errors.join(QLatin1Char('|')));
+    QVERIFY2(std::abs(result.preview.estimatedSeconds - seconds) < 0.02 * seconds + 0.01,
+             qPrintable(QString::number(result.preview.estimatedSeconds)));
+}
+
+// A feed move over axes of several controllers (issue 30): the preview says that its path is
+// approximate and by how much (the fastest axis over the gap between the controllers' set-up
+// times); a machine file with "crossControllerFeed": false refuses it. "mixed": E-LAB X (mm),
+// Nanotec A (deg, set-up 0.06 s against the E-LAB's 0.005 s).
+void TestProgramCheckDialect::check_acrossControllers_approximateOrForbidden_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<bool>("allowed");
+    QTest::addColumn<QString>("note"); // the part of the motion note about it; empty: none
+    QTest::addColumn<QString>("errors");
+    // X at 10 mm/s for 0.055 s: 0.55 mm.
+    QTest::newRow("approximate, with its estimate")
+        << "G1 X10 A90 F600" << true
+        << "feed moves across controllers (1 in all, the first on line 1) follow their path only "
+           "approximately: up to about 0.550 mm off"
+        << "";
+    QTest::newRow("the largest of several, counted")
+        << "G1 X10 A90 F600\nG1 X20 A0 F1200\nG1 X30 F1200" << true
+        << "feed moves across controllers (2 in all, the first on line 1) follow their path only "
+           "approximately: up to about 1.100 mm off"
+        << "";
+    QTest::newRow("one controller's axes only: nothing to say")
+        << "G1 X10 F600\nG0 A5" << true << ""
+        << "";
+    QTest::newRow("forbidden by the machine file")
+        << "G1 X10 A90 F600" << false << ""
+        << "1:4: this feed move drives axes of controllers table, rotary together; the machine "
+           "file forbids that (\"crossControllerFeed\": false), since their path between the "
+           "ends is only approximate";
+}
+
+void TestProgramCheckDialect::check_acrossControllers_approximateOrForbidden()
+{
+    QFETCH(QString, program);
+    QFETCH(bool, allowed);
+    QFETCH(QString, note);
+    QFETCH(QString, errors);
+    MachineFacts facts = machineFacts("mixed");
+    facts.description.crossControllerFeed = allowed;
+    facts.knownPositions = positions("X=0 A=0");
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors).join(QLatin1Char('|')), errors);
+    if (!errors.isEmpty())
+        return;
+    const QString motion = result.preview.motionNote;
+    QVERIFY2(note.isEmpty() ? !motion.contains("across controllers") : motion.endsWith(note),
+             qPrintable(motion));
+    // The note names how each kind of controller follows F.
+    QVERIFY2(motion.contains("rotary: each axis of a feed move runs at its share of F"),
+             qPrintable(motion));
+    QVERIFY2(motion.contains("table: contours (G64)"), qPrintable(motion));
 }
 
 QTEST_GUILESS_MAIN(TestProgramCheckDialect)

@@ -57,7 +57,10 @@ void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
     QCOMPARE(v.path.last().line, 6);
     QCOMPARE(v.path.last().seconds, 5.4);
     QCOMPARE(v.path.last().position, (QMap<QString, double>{{"X", 60}, {"Y", 40}, {"Z", -10}}));
-    QVERIFY(v.motionNote.contains("each at its own rate"));
+    // How the machine's controllers follow F (issue 30): the E-LAB's streams and blocks.
+    QVERIFY2(v.motionNote.startsWith("contours (G64) run on the path at F as one step stream; a "
+                                     "block of its own (G61) moves each axis at its own rate"),
+             qPrintable(v.motionNote));
 }
 
 void TestProgramPreview::preview_millionPassRepeat_countedOutPathThinnedToTheEnd()

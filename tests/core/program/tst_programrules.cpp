@@ -118,7 +118,7 @@ void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue()
     QFETCH(ParameterValue, expected);
     const MachineFacts f = elabFacts(known(held));
     const ParameterSet set = ProgramRules::feedRateWrite(
-        f.description, "elab", f.capabilities["elab"], feedBlock(axes, 6000), known(held));
+        f.description, "elab", f.capabilities["elab"], feedBlock(axes, 6000), known(held), nullptr);
     QCOMPARE(set.keys(), QStringList{"feed-speed"});
     QCOMPARE(set.value("feed-speed"), expected);
 }
@@ -128,14 +128,29 @@ void TestProgramRules::feedRateWrite_perAxisModel_onlyTheBlocksAxes()
     const ModelInfo* info = findModel(QStringLiteral("nanotec"));
     const MachineDescription d = MachineDescription::singleController(*info, "sim");
     const ParameterSet set = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities,
-                                                         feedBlock({{"Y", 5}}, 60000), {});
+                                                         feedBlock({{"Y", 5}}, 60000), {}, nullptr);
     QCOMPARE(set.keys(), QStringList{"max-frequency"});
     QCOMPARE(set.value("max-frequency").perAxis.keys(), QList<Axis>{Axis::Y});
     QCOMPARE(set.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 1000);
     // G0 writes no rate; G1 without F neither.
     ProgramBlock rapid = feedBlock({{"Y", 5}}, 60000);
     rapid.kind = BlockKind::Rapid;
-    QVERIFY(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, rapid, {}).isEmpty());
+    QVERIFY(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, rapid, {}, nullptr)
+                .isEmpty());
+    // Issue 30: a coordinated G1's shares (ProgramBlock::axisRates, per minute); a share below
+    // the parameter's minimum (o: 60 steps/s) runs at it.
+    ProgramBlock shares = feedBlock({{"X", 6000}, {"Y", 60}}, 6000);
+    shares.axisRates = {{"X", 5999.7}, {"Y", 59.997}};
+    const ParameterSet coordinated = ProgramRules::feedRateWrite(
+        d, "nanotec", info->capabilities, shares, {}, info->schema.find("max-frequency"));
+    QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 100);
+    QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 60);
+    // Without the spec (not known) the share stands as it is.
+    QCOMPARE(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, nullptr)
+                 .value("max-frequency")
+                 .perAxis.value(Axis::Y)
+                 .toLongLong(),
+             1);
 }
 
 void TestProgramRules::parameterWrite_elabRules_sameAsTheAdapter_data()

@@ -4,6 +4,7 @@
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
 #include "common/ElidedLabel.h"
+#include <QCheckBox>
 #include <QHeaderView>
 #include <QPushButton>
 #include <QScrollBar>
@@ -22,6 +23,7 @@ private Q_SLOTS:
     void typedValue_invalid_namesFieldAndMarksCell();
     void typedValue_fixedAgain_clearsMark();
     void spindleMaxRpm_shownTypedAndCleared_inTheMachine();
+    void crossControllerFeed_shownAndClicked_inTheMachine();
     void controllerId_renamed_axesFollow();
     void axisChoices_areTheControllersAxes();
     void removeAxis_removesTheRowBeingEdited();
@@ -174,6 +176,27 @@ void TestMachineEditor::spindleMaxRpm_shownTypedAndCleared_inTheMachine()
     typeInto(maxRpm, QString());
     QVERIFY(editor->machine());
     QVERIFY(!editor->machine()->spindle.maxRpm);
+}
+
+// Issue 30: the box shows the file's crossControllerFeed (on without the key) and a click is the
+// machine's, with the window's height kept.
+void TestMachineEditor::crossControllerFeed_shownAndClicked_inTheMachine()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    auto* box = editor->findChild<QCheckBox*>(QStringLiteral("machineCrossControllerFeed"));
+    QVERIFY(box);
+    QVERIFY(box->isChecked());
+    QVERIFY(editor->machine()->crossControllerFeed);
+    const int height = editor->minimumSizeHint().height();
+    box->click();
+    QVERIFY(!editor->machine()->crossControllerFeed);
+    QVERIFY(editor->isModified());
+    QCOMPARE(editor->minimumSizeHint().height(), height);
+    machine::MachineDescription d = *editor->machine();
+    d.crossControllerFeed = true;
+    editor->setMachine(d);
+    QVERIFY(box->isChecked());
+    QVERIFY(!editor->isModified());
 }
 
 void TestMachineEditor::controllerId_renamed_axesFollow()

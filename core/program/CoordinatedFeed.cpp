@@ -1,0 +1,128 @@
+#include "CoordinatedFeed.h"
+#include "ProgramUnits.h"
+#include <cmath>
+
+namespace stepdeck::program::CoordinatedFeed {
+
+namespace {
+// LinuxCNC measures F along X, Y, Z when they move, else along A, B, C (rs274ngc's feed
+// reference): here the linear unit first, then steps (a machine without units), then degrees.
+std::optional<machine::AxisUnit> lengthUnit(const machine::MachineDescription& d,
+                                            const QMap<QString, double>& moved)
+{
+    std::optional<machine::AxisUnit> best;
+    auto rank = [](machine::AxisUnit u) {
+        return u == machine::AxisUnit::Millimetre ? 0 : u == machine::AxisUnit::Step ? 1 : 2;
+    };
+    for (auto it = moved.cbegin(); it != moved.cend(); ++it)
+        if (const machine::MachineAxis* a = d.axis(it.key());
+            a && (!best || rank(a->unit) < rank(*best)))
+            best = a->unit;
+    return best;
+}
+// The distance each axis of `block` moves at the device, in its unit: between the whole steps
+// of where it starts and where it ends (Machine::move rounds each target to the step, a
+// relative move counts the difference of the whole steps), so that the shares are those of the
+// steps the controller runs and the axes arrive together. An axis whose start is unknown: its
+// word as written (relative), or none (absolute: the check refuses the move).
+QMap<QString, double> deviceDistances(const ProgramBlock& block,
+                                      const machine::MachineDescription& d,
+                                      const AxisPositions& start,
+                                      const QMap<QString, double>& workOffsets)
+{
+    QMap<QString, double> out;
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
+        qsizetype index = 0;
+        while (index < d.axes.size() && d.axes.at(index).name != it.key())
+            ++index;
+        if (index == d.axes.size())
+            continue;
+        const machine::MachineAxis& axis = d.axes.at(index);
+        const double value = units::toAxisUnits(axis, it.value(), block.inches);
+        const std::optional<double> from = start.at(size_t(index));
+        double distance = 0;
+        if (!from)
+            distance = block.relative ? std::abs(value) : 0.0;
+        else
+            distance =
+                double(std::abs(axis.toSteps(block.relative
+                                                 ? *from + value
+                                                 : value + workOffsets.value(axis.name, 0.0)) -
+                                axis.toSteps(*from))) /
+                axis.stepsPerUnit;
+        if (distance > 0)
+            out.insert(axis.name, distance);
+    }
+    return out;
+}
+
+} // namespace
+
+bool applies(const ProgramBlock& block, const machine::MachineDescription& d,
+             const Controllers& coordinated)
+{
+    if (coordinated.isEmpty() || block.kind != BlockKind::Feed || block.inverseTime ||
+        !block.feed || block.axes.size() < 2)
+        return false;
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+        if (const machine::MachineAxis* a = d.axis(it.key());
+            a && coordinated.contains(a->controller))
+            return true;
+    return false;
+}
+
+ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
+                     const Controllers& coordinated, const AxisPositions& start,
+                     const QMap<QString, double>& workOffsets)
+{
+    ProgramBlock out = block;
+    out.axisRates.clear();
+    if (!applies(block, d, coordinated))
+        return out;
+    const QMap<QString, double> moved = deviceDistances(block, d, start, workOffsets);
+    const std::optional<machine::AxisUnit> unit = lengthUnit(d, moved);
+    if (moved.size() < 2 || !unit)
+        return out;
+    double squares = 0;
+    const machine::MachineAxis* reference = nullptr;
+    for (auto it = moved.cbegin(); it != moved.cend(); ++it) {
+        const machine::MachineAxis* a = d.axis(it.key());
+        if (a->unit == *unit) {
+            squares += it.value() * it.value();
+            reference = a;
+        }
+    }
+    const double length = std::sqrt(squares);
+    if (!(length > 0))
+        return out;
+    // F in the length's unit per minute (G20: inch/min on a mm axis), then the block's time.
+    const double minutes = length / units::toAxisUnits(*reference, *block.feed, block.inches);
+    for (auto it = moved.cbegin(); it != moved.cend(); ++it)
+        if (coordinated.contains(d.axis(it.key())->controller))
+            out.axisRates.insert(it.key(), it.value() / minutes);
+    return out;
+}
+
+ProgramBlock resolveChord(const ProgramBlock& arc, const ArcPath& path, qint64 k,
+                          const machine::MachineDescription& d, const Controllers& coordinated)
+{
+    // The chord's ends are machine positions in the axes' units: a block in those units
+    // (inches off, F converted as the length's unit takes it) from the chord's start.
+    ProgramBlock chord;
+    chord.kind = BlockKind::Feed;
+    chord.line = arc.line;
+    if (arc.inverseTime || !arc.feed)
+        return chord;
+    AxisPositions start(size_t(d.axes.size()));
+    for (const auto& [axis, value] : path.pointAt(k - 1))
+        start[size_t(axis)] = value;
+    bool millimetres = false;
+    for (const auto& [axis, value] : path.pointAt(k)) {
+        chord.axes.insert(d.axes.at(axis).name, value);
+        millimetres = millimetres || d.axes.at(axis).unit == machine::AxisUnit::Millimetre;
+    }
+    chord.feed = arc.inches && millimetres ? *arc.feed * units::kMillimetresPerInch : *arc.feed;
+    return resolve(chord, d, coordinated, start, {});
+}
+
+} // namespace stepdeck::program::CoordinatedFeed

@@ -1,0 +1,245 @@
+// G1 and G2 over two axes on controllers that coordinate (issue 30, CoordinatedFeed), run end
+// to end on an EMIS SMC-IC4 and on a Nanotec bus of two drives, each simulator on a real
+// pseudo-terminal. Asserted at the device: the EMIS got interpolation on (IP1, 9.12) before the
+// program's first such move and its old value back at the end, every move of both axes ran at
+// speeds whose path speed is F (within 2 %, the steps/s being whole) and its axes' <DCn> went
+// out on the same tick; the Nanotec drives ran at top speeds 'o' in proportion to their
+// distances, started by consecutive 'A's; both boards end where the program ends.
+#include "MachineTestSupport.h"
+#include "PtyDevice.h"
+#include "machine/Machine.h"
+#include "program/ArcPath.h"
+#include "program/ProgramParser.h"
+#include "program/ProgramRunner.h"
+#include "protocols/emis/EmisSimulator.h"
+#include "protocols/nanotec/NanotecSimulator.h"
+#include <QSignalSpy>
+#include <QtTest>
+#include <cmath>
+#include <memory>
+
+using namespace stepdeck;
+using namespace stepdeck::machine;
+using namespace stepdeck::program;
+
+namespace {
+constexpr double kStepsPerMm = 100;
+} // namespace
+
+class TestProgramCoordinated : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void cleanup();
+    void emis_lineAndArc_interpolatedAtFArriveTogether();
+    void nanotec_line_drivesAtTheirSharesStartedTogether();
+    void emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes();
+
+private:
+    bool setUp(const QString& model);
+    bool run(const QByteArray& text);
+    QPointF boardMm(); // X, Y in mm from the reference
+
+    std::unique_ptr<test::PtyDevice> m_device;
+    std::unique_ptr<Machine> m_machine;
+    std::unique_ptr<ProgramRunner> m_runner;
+    qint64 m_origin[2] = {0, 0};
+};
+
+void TestProgramCoordinated::cleanup()
+{
+    m_runner.reset();
+    m_machine.reset();
+    m_device.reset();
+}
+
+// X and Y in mm at 100 steps/mm, referenced. The EMIS gets its work speed written (the fast
+// speed G0 runs at) and interpolation off, so that the run must turn it on.
+bool TestProgramCoordinated::setUp(const QString& model)
+{
+    const bool emis = model == QLatin1String("emis");
+    // The Nanotec adapter greets the model's default drives 1, 2, 3 (X, Y, Z).
+    m_device =
+        std::make_unique<test::PtyDevice>(model, emis ? QList<int>{1} : QList<int>{1, 2, 3});
+    MachineDescription d;
+    d.name = QStringLiteral("coordinated");
+    d.controllers = {{"table", model, m_device->path(), {}, {}, {}, {}}};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kStepsPerMm)};
+    m_machine = std::make_unique<Machine>();
+    QString error;
+    if (!m_machine->create(d, &error))
+        return false;
+    m_machine->open();
+    if (!QTest::qWaitFor([&] { return m_machine->state() == MachineState::Idle; }, 10000))
+        return false;
+    ControllerSession* table = m_machine->session("table");
+    if (emis) {
+        ParameterValue work;
+        for (Axis a : {Axis::X, Axis::Y})
+            work.perAxis.insert(a, 4000);
+        if (!test::writeParametersAndWait(
+                table, {{QStringLiteral("work-speed"), work},
+                        {QStringLiteral("interpolation"), ParameterValue{QVariant(false), {}}}}))
+            return false;
+    }
+    QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
+    if (m_machine->reference({}, &error) == 0 || !referenced.wait(60000) ||
+        !referenced.first().at(1).toBool())
+        return false;
+    m_runner = std::make_unique<ProgramRunner>(m_machine.get());
+    return m_device->probe([&] {
+        m_device->sim()->clearReceivedFrames();
+        if (auto* sim = qobject_cast<emis::EmisSimulator*>(m_device->sim()))
+            sim->clearReceivedCommands();
+        m_origin[0] = m_device->sim()->position(Axis::X);
+        m_origin[1] = m_device->sim()->position(Axis::Y);
+        return true;
+    });
+}
+
+bool TestProgramCoordinated::run(const QByteArray& text)
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> program = ProgramParser::parse(text, {"X", "Y"}, &errors);
+    if (!program || !m_runner->start(*program, 1, &errors)) {
+        qWarning() << (errors.isEmpty() ? QString() : errors.first().text());
+        return false;
+    }
+    if (!QTest::qWaitFor([&] { return isEnded(m_runner->state()); }, 60000) ||
+        m_runner->state() != RunState::Finished) {
+        qWarning() << m_runner->endMessage();
+        return false;
+    }
+    return QTest::qWaitFor(
+        [&] { return m_device->probe([&] { return m_device->sim()->standingStill(); }); }, 5000);
+}
+
+QPointF TestProgramCoordinated::boardMm()
+{
+    return m_device->probe([&] {
+        return QPointF(double(m_device->sim()->position(Axis::X) - m_origin[0]) / kStepsPerMm,
+                       double(m_device->sim()->position(Axis::Y) - m_origin[1]) / kStepsPerMm);
+    });
+}
+
+// A 3-4-5 line and a half circle of radius 5 at F600 (10 mm/s: 1 000 steps/s along the path).
+void TestProgramCoordinated::emis_lineAndArc_interpolatedAtFArriveTogether()
+{
+    QVERIFY(setUp("emis"));
+    QVERIFY(run("G21 G90 G1 X3 Y4 F600\nG2 X13 Y4 I5 J0\nM2\n"));
+    QCOMPARE(boardMm(), QPointF(13, 4));
+    using Accepted = emis::EmisSimulator::AcceptedMove;
+    const auto [commands, moves, interpolation] = m_device->probe([&] {
+        auto* sim = static_cast<emis::EmisSimulator*>(m_device->sim());
+        return std::make_tuple(sim->receivedCommands(), sim->acceptedMovesWithSpeed(),
+                               sim->working().interpolation);
+    });
+    // IP1 before the first vector move of the program, IP0 (what the setup wrote) at its end.
+    const qsizetype on = commands.indexOf("IP1");
+    QVERIFY2(on >= 0, commands.join(' ').constData());
+    const auto firstMove = std::find_if(commands.cbegin(), commands.cend(),
+                                        [](const QByteArray& c) { return c.startsWith("L1,"); });
+    QVERIFY(firstMove != commands.cend());
+    QVERIFY(on < firstMove - commands.cbegin());
+    qsizetype lastMove = -1;
+    for (qsizetype i = 0; i < commands.size(); ++i)
+        if (commands.at(i).startsWith("L1,"))
+            lastMove = i;
+    QVERIFY2(commands.lastIndexOf("IP0") > lastMove, commands.join(' ').constData());
+    QVERIFY(!interpolation);
+    // Every move of both axes: the path speed of the speeds the board ran, and one tick.
+    int pairs = 0;
+    for (qsizetype i = 0; i + 1 < moves.size(); ++i) {
+        const Accepted& a = moves.at(i);
+        const Accepted& b = moves.at(i + 1);
+        if (a.acceptedUs != b.acceptedUs || a.axis == b.axis)
+            continue;
+        ++pairs;
+        // Along the whole steps the board runs: F within 2 % (the rates are whole steps/s).
+        const double speed = std::hypot(a.runSpeed, b.runSpeed) / kStepsPerMm * 60; // mm/min
+        QVERIFY2(std::abs(speed - 600) <= 12,
+                 qPrintable(QStringLiteral("%1 mm/min over %2, %3 steps")
+                                .arg(speed)
+                                .arg(a.steps)
+                                .arg(b.steps)));
+        QCOMPARE(a.arrivedUs, b.arrivedUs);
+        ++i;
+    }
+    // The line and most of the arc's chords move both axes.
+    QVERIFY2(pairs > 10, qPrintable(QString::number(pairs)));
+}
+
+// A 3-4-5 line at F600: X's drive at 3/5 of 1 000 steps/s, Y's at 4/5.
+void TestProgramCoordinated::nanotec_line_drivesAtTheirSharesStartedTogether()
+{
+    QVERIFY(setUp("nanotec"));
+    QVERIFY(run("G21 G90 G1 X3 Y4 F600\nM2\n"));
+    QCOMPARE(boardMm(), QPointF(3, 4));
+    const auto [started, frames] = m_device->probe([&] {
+        auto* sim = static_cast<nanotec::NanotecSimulator*>(m_device->sim());
+        return std::make_pair(sim->startedMoves(), sim->receivedFrames());
+    });
+    QVERIFY(started.size() >= 2);
+    const auto x = started.at(started.size() - 2);
+    const auto y = started.at(started.size() - 1);
+    QCOMPARE(QSet<int>({x.address, y.address}), QSet<int>({1, 2}));
+    const auto& onX = x.address == 1 ? x : y;
+    const auto& onY = x.address == 1 ? y : x;
+    QCOMPARE(onX.maxFrequency, qint64(600));
+    QCOMPARE(onY.maxFrequency, qint64(800));
+    // The two 'A's one right after the other: nothing between them on the bus.
+    const qsizetype a1 = frames.indexOf("#1A\r");
+    const qsizetype a2 = frames.indexOf("#2A\r");
+    QVERIFY2(a1 >= 0 && a2 >= 0, frames.join(' ').constData());
+    QCOMPARE(std::abs(a2 - a1), qsizetype(1));
+}
+
+// Feed hold on the EMIS (issue 30): the running chord ends, the board stands at its end (a
+// point of the arc, within a step, the chords' tolerance added), no move is sent until resume,
+// and resume goes on to the arc's end.
+void TestProgramCoordinated::emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes()
+{
+    QVERIFY(setUp("emis"));
+    QList<ProgramError> errors;
+    // A full circle of radius 5 around (5, 0) at F300: 6.3 s.
+    const std::optional<Program> program =
+        ProgramParser::parse("G21 G90 G2 X0 Y0 I5 J0 F300\nM2\n", {"X", "Y"}, &errors);
+    QVERIFY(program);
+    QVERIFY(m_runner->start(*program, 1, &errors));
+    QTRY_VERIFY_WITH_TIMEOUT(boardMm().manhattanLength() > 1, 10000);
+    QVERIFY(m_runner->holdFeed());
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
+                             5000);
+    // At the end of one of the arc's chords, as ArcPath plans them from (0, 0), to the step.
+    const QPointF held = boardMm();
+    const auto planned = ArcPath::plan(program->allBlocks().first(), m_machine->description(),
+                                       AxisPositions{0.0, 0.0}, {});
+    const ArcPath* arc = std::get_if<ArcPath>(&planned);
+    QVERIFY(arc);
+    bool atChordEnd = false;
+    for (qint64 k = 1; k < arc->chords() && !atChordEnd; ++k) {
+        double end[2] = {};
+        for (const auto& [axis, value] : arc->pointAt(k))
+            end[axis] = value;
+        atChordEnd = qRound64(end[0] * kStepsPerMm) == qRound64(held.x() * kStepsPerMm) &&
+                     qRound64(end[1] * kStepsPerMm) == qRound64(held.y() * kStepsPerMm);
+    }
+    QVERIFY2(atChordEnd, qPrintable(QStringLiteral("%1, %2").arg(held.x()).arg(held.y())));
+    const qsizetype accepted =
+        m_device->probe([&] { return qsizetype(m_device->sim()->acceptedMoves().size()); });
+    m_runner->resume();
+    // The next chord starts where the board held (its move was accepted after the resume).
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] {
+        return qsizetype(m_device->sim()->acceptedMoves().size());
+    }) > accepted,
+                             5000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Finished, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
+                             5000);
+    QCOMPARE(boardMm(), QPointF(0, 0));
+}
+
+QTEST_GUILESS_MAIN(TestProgramCoordinated)
+#include "tst_programcoordinated.moc"
