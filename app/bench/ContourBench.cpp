@@ -1,7 +1,9 @@
 // stepdeck-bench --contour (ContourBench.h).
 #include "ContourBench.h"
 #include "BenchDevice.h"
+#include "BenchMachine.h"
 #include "BenchOutput.h"
+#include "ChordBench.h"
 #include "EventWait.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
@@ -139,25 +141,9 @@ bool ContourRig::open(QString* error)
     m_device = std::make_unique<BenchDevice>(m_model, config);
     if (!m_device->start(error))
         return false;
-    machine::MachineDescription d;
-    d.name = QStringLiteral("Contour bench");
-    d.controllers = {{"table", m_model.id, m_device->slavePath(), {}, {}, {}, {}}};
-    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
-        machine::MachineAxis axis;
-        axis.name = axisName(a);
-        axis.controller = QStringLiteral("table");
-        axis.axis = a;
-        axis.unit = machine::AxisUnit::Millimetre;
-        axis.stepsPerUnit = kStepsPerMm;
-        d.axes << axis;
-    }
-    if (!m_machine.create(d, error))
+    if (!openTable(m_machine, QStringLiteral("Contour bench"), m_model.id, m_device->slavePath(),
+                   {Axis::X, Axis::Y, Axis::Z}, kStepsPerMm, error))
         return false;
-    m_machine.open();
-    if (!waitUntil([&] { return m_machine.state() == machine::MachineState::Idle; }, 5000)) {
-        *error = QStringLiteral("the controller did not connect");
-        return false;
-    }
     ParameterValue speed, feed;
     for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
         speed.perAxis.insert(a, 2000);
@@ -334,6 +320,35 @@ QByteArray zigzagProgram()
     return p + "M30\n";
 }
 
+// An Archimedean spiral of kSpiralTurns turns from radius 5 mm to 20 mm as kSpiralSegments G1
+// chords (a CAM post's polyline), relative from its start. *vertices: the chords' ends as the
+// program writes them (rounded to 1 µm), in mm from the start: the ideal path the board must
+// follow. *length: the polyline's length.
+constexpr int kSpiralSegments = 600;
+constexpr double kSpiralTurns = 3;
+QByteArray spiralProgram(QList<QPointF>* vertices, double* length)
+{
+    const auto at = [](int k) {
+        const double t = double(k) / kSpiralSegments;
+        const double r = 5 + 15 * t, a = 2 * M_PI * kSpiralTurns * t;
+        return QPointF(r * std::cos(a), r * std::sin(a));
+    };
+    QByteArray p = "G21 G91 G64\nF" + QByteArray::number(kFeed * 60) + "\n";
+    QPointF written(0, 0); // where the program's relative words have put the tool
+    *vertices = {written};
+    *length = 0;
+    for (int k = 1; k <= kSpiralSegments; ++k) {
+        const QPointF target = at(k) - at(0);
+        const double dx = std::round((target.x() - written.x()) * 1000) / 1000;
+        const double dy = std::round((target.y() - written.y()) * 1000) / 1000;
+        p += "G1 X" + QByteArray::number(dx, 'f', 3) + " Y" + QByteArray::number(dy, 'f', 3) + "\n";
+        written += QPointF(dx, dy);
+        *vertices << written;
+        *length += std::hypot(dx, dy);
+    }
+    return p + "M30\n";
+}
+
 void report(const ContourFigure& f, bool json, QJsonArray* out)
 {
     if (json) {
@@ -415,8 +430,19 @@ int contourBenchMain(const QStringList& args)
         std::function<double(double, double)> distance;
         bool latencies;
     };
+    QList<QPointF> spiral;
+    double spiralLength = 0;
+    const QByteArray spiralText = spiralProgram(&spiral, &spiralLength);
+    const auto onSpiral = [&spiral](double x, double y) {
+        double best = 1e9;
+        for (qsizetype i = 0; i + 1 < spiral.size(); ++i)
+            best = std::min(best, segmentDistance(x, y, spiral[i].x(), spiral[i].y(),
+                                                  spiral[i + 1].x(), spiral[i + 1].y()));
+        return best;
+    };
     const Run runs[] = {
         {"circle of 50 mm", circleProgram(), 2 * M_PI * kRadius, onCircle, false},
+        {"spiral of 3 turns, 10 to 40 mm, 600 segments", spiralText, spiralLength, onSpiral, false},
         {"zigzag of 2000 segments", zigzagProgram(), kZigzagSegments * std::sqrt(2.0) * kZigzagStep,
          onZigzag, false},
         {"circle of 50 mm, held and overridden", circleProgram(), 2 * M_PI * kRadius, onCircle,
@@ -429,6 +455,8 @@ int contourBenchMain(const QStringList& args)
         rig.measure(&f, run.program, run.distance, run.latencies);
         report(f, json, &out);
     }
+    // The EMIS and the Nanotec run their chords one after the other (ChordBench).
+    runChordBench(json, &out);
     if (json)
         print(stdout,
               QString::fromUtf8(
