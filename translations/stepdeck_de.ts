@@ -3881,6 +3881,26 @@
             <source>the move runs in the contour stream of controller "%1", but %2</source>
             <translation>die Bewegung läuft im Konturstrom der Steuerung "%1", aber %2</translation>
         </message>
+        <message>
+            <source>this feed move drives axes of controllers %1 together; the machine file forbids that ("crossControllerFeed": false), since their path between the ends is only approximate</source>
+            <translation>diese Vorschubbewegung fährt Achsen der Steuerungen %1 gemeinsam; die Maschinendatei verbietet das ("crossControllerFeed": false), da ihre Bahn zwischen den Endpunkten nur ungefähr ist</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>each axis of a feed move runs at its share of F, so the path is followed at F</source>
+            <translation>jede Achse einer Vorschubbewegung fährt mit ihrem Anteil an F, so wird die Bahn mit F abgefahren</translation>
+        </message>
+        <message>
+            <source>contours (G64) run on the path at F as one step stream; a block of its own (G61) moves each axis at its own rate, starting together</source>
+            <translation>Konturen (G64) laufen als ein Schrittstrom mit F auf der Bahn; ein einzelner Satz (G61) bewegt jede Achse mit ihrer eigenen Geschwindigkeit, gemeinsam startend</translation>
+        </message>
+        <message>
+            <source>feed moves across controllers (%1 in all, the first on line %2) follow their path only approximately: up to about %3 %4 off</source>
+            <translation>Vorschubbewegungen über mehrere Steuerungen (%1 insgesamt, die erste in Zeile %2) folgen ihrer Bahn nur ungefähr: bis etwa %3 %4 daneben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramCoordinates</name>
@@ -6109,6 +6129,14 @@ W1500</translation>
             <source>Spindle max rpm</source>
             <translation>Spindel max. U/min</translation>
         </message>
+        <message>
+            <source>Feed across controllers</source>
+            <translation>Vorschub über Steuerungen hinweg</translation>
+        </message>
+        <message>
+            <source>Allow feed moves (G1, G2, G3) whose axes sit on several controllers. They start together but share no clock, so their path is only approximate; off, the program check refuses them.</source>
+            <translation>Vorschubbewegungen (G1, G2, G3) erlauben, deren Achsen an mehreren Steuerungen hängen. Sie starten gemeinsam, haben aber keinen gemeinsamen Takt, daher ist ihre Bahn nur ungefähr; aus: die Programmprüfung lehnt sie ab.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineFileActions</name>
@@ -6703,10 +6731,6 @@ W1500</translation>
             <translation>Halt</translation>
         </message>
         <message>
-            <source>Feed </source>
-            <translation>Vorschub </translation>
-        </message>
-        <message>
             <source> %</source>
             <translation> %</translation>
         </message>
@@ -6717,6 +6741,10 @@ W1500</translation>
         <message>
             <source>Feed hold: stop on the path where the tool is (a contour); a block of its own finishes first. Resume goes on from there. Key: F2</source>
             <translation>Vorschub-Halt: auf der Bahn anhalten, wo das Werkzeug ist (eine Kontur); ein einzelner Satz wird erst zu Ende gefahren. Fortsetzen fährt von dort weiter. Taste: F2</translation>
+        </message>
+        <message>
+            <source>F </source>
+            <translation>F </translation>
         </message>
     </context>
     <context>
