@@ -59,10 +59,10 @@ QMap<QString, double> deviceDistances(const ProgramBlock& block,
 } // namespace
 
 bool applies(const ProgramBlock& block, const machine::MachineDescription& d,
-             const Controllers& coordinated)
+             const Controllers& coordinated, bool single)
 {
     if (coordinated.isEmpty() || block.kind != BlockKind::Feed || block.inverseTime ||
-        !block.feed || block.axes.size() < 2)
+        !block.feed || block.axes.size() < (single ? 1 : 2))
         return false;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
         if (const machine::MachineAxis* a = d.axis(it.key());
@@ -73,15 +73,16 @@ bool applies(const ProgramBlock& block, const machine::MachineDescription& d,
 
 ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
                      const Controllers& coordinated, const AxisPositions& start,
-                     const QMap<QString, double>& workOffsets)
+                     const QMap<QString, double>& workOffsets, double override)
 {
     ProgramBlock out = block;
     out.axisRates.clear();
-    if (!applies(block, d, coordinated))
+    const bool overridden = override != 1.0;
+    if (!applies(block, d, coordinated, overridden))
         return out;
     const QMap<QString, double> moved = deviceDistances(block, d, start, workOffsets);
     const std::optional<machine::AxisUnit> unit = lengthUnit(d, moved);
-    if (moved.size() < 2 || !unit)
+    if (moved.size() < (overridden ? 1 : 2) || !unit)
         return out;
     double squares = 0;
     const machine::MachineAxis* reference = nullptr;
@@ -99,12 +100,13 @@ ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescriptio
     const double minutes = length / units::toAxisUnits(*reference, *block.feed, block.inches);
     for (auto it = moved.cbegin(); it != moved.cend(); ++it)
         if (coordinated.contains(d.axis(it.key())->controller))
-            out.axisRates.insert(it.key(), it.value() / minutes);
+            out.axisRates.insert(it.key(), it.value() / minutes * override);
     return out;
 }
 
 ProgramBlock resolveChord(const ProgramBlock& arc, const ArcPath& path, qint64 k,
-                          const machine::MachineDescription& d, const Controllers& coordinated)
+                          const machine::MachineDescription& d, const Controllers& coordinated,
+                          double override)
 {
     // The chord's ends are machine positions in the axes' units: a block in those units
     // (inches off, F converted as the length's unit takes it) from the chord's start.
@@ -122,7 +124,7 @@ ProgramBlock resolveChord(const ProgramBlock& arc, const ArcPath& path, qint64 k
         millimetres = millimetres || d.axes.at(axis).unit == machine::AxisUnit::Millimetre;
     }
     chord.feed = arc.inches && millimetres ? *arc.feed * units::kMillimetresPerInch : *arc.feed;
-    return resolve(chord, d, coordinated, start, {});
+    return resolve(chord, d, coordinated, start, {}, override);
 }
 
 } // namespace stepdeck::program::CoordinatedFeed

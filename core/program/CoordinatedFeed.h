@@ -22,21 +22,25 @@ namespace CoordinatedFeed {
 // The controllers of `d` whose capabilities say coordinatedFeed.
 using Controllers = QSet<QString>;
 
-// True when `block` may resolve to rates per axis: a G94 G1 with F over more than one axis, one
-// of them on a coordinating controller. Cheap: the check asks it of every block.
+// True when `block` may resolve to rates per axis: a G94 G1 with F over more than one axis (or
+// one, with `single`: a feed override applies), one of them on a coordinating controller.
+// Cheap: the check asks it of every block.
 bool applies(const ProgramBlock& block, const machine::MachineDescription& d,
-             const Controllers& coordinated);
+             const Controllers& coordinated, bool single = false);
 // `block` with axisRates for the moving axes of coordinating controllers (none where fewer
 // than two axes move, or where the length is 0). start and workOffsets as in InverseTime.
+// override: the run's feed override (ProgramRunner::setFeedOverride) times every share; other
+// than 1 a move of one axis gets its rate too.
 ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescription& d,
                      const Controllers& coordinated, const AxisPositions& start,
-                     const QMap<QString, double>& workOffsets);
+                     const QMap<QString, double>& workOffsets, double override = 1.0);
 
 // Chord k (1..chords) of the G2/G3 `arc` along `path`, as the G1 it runs as, resolved: each
 // moving axis' share of the arc's F along that chord (LinuxCNC keeps the path speed on the
 // curve). A G93 arc is not resolved here (InverseTime::resolveArc).
 ProgramBlock resolveChord(const ProgramBlock& arc, const ArcPath& path, qint64 k,
-                          const machine::MachineDescription& d, const Controllers& coordinated);
+                          const machine::MachineDescription& d, const Controllers& coordinated,
+                          double override = 1.0);
 
 } // namespace CoordinatedFeed
 } // namespace stepdeck::program

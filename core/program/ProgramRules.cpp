@@ -45,7 +45,10 @@ qint64 ProgramRules::axisRate(const machine::MachineAxis& axis, const ProgramBlo
     if (resolved == block.axisRates.end())
         return block.inverseTime ? 0 : units::feedStepsPerSecond(axis, *block.feed, block.inches);
     const qint64 r = units::feedStepsPerSecond(axis, resolved.value(), false);
-    return !block.inverseTime && rateSpec ? std::max(r, rateSpec->minimum) : r;
+    // A share (G94) within the parameter's range: below its minimum it runs at it; above its
+    // maximum only under a feed override (the check judged F at 100 %), clamped there as
+    // LinuxCNC clamps at the axes' limits.
+    return !block.inverseTime && rateSpec ? std::clamp(r, rateSpec->minimum, rateSpec->maximum) : r;
 }
 
 QString ProgramRules::parameterWrite(const ParameterSchema& schema, const Capabilities& caps,

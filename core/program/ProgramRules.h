@@ -31,7 +31,8 @@ public:
     // The rate of one axis of a G1 in steps/s: F, or its resolved rate (ProgramBlock::axisRates:
     // G93, or its share of F where the controller coordinates). A coordinated share below the
     // parameter's minimum runs at that minimum (the axis arrives a little early: it moves
-    // little, docs/programs.md); 0: the axis gets no rate (G93, it does not move).
+    // little, docs/programs.md), one above its maximum (a feed override) at that maximum; 0:
+    // the axis gets no rate (G93, it does not move).
     static qint64 axisRate(const machine::MachineAxis& axis, const ProgramBlock& block,
                            const ParameterSpec* rateSpec);
 

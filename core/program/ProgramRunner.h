@@ -115,7 +115,9 @@ public:
     bool feedHeld() const { return m_feedHeld; }
     // Feed override, 10..200 % (issue 30): a contour's ticks not yet given run at that share of
     // F (a move at most as fast as one step per tick allows), from now and for the contours
-    // after; a block of its own runs at its F. May change at any time.
+    // after; on coordinating controllers (EMIS, Nanotec) from the next move or chord, each rate
+    // within its parameter's range; an E-LAB block of its own runs at its F. May change at any
+    // time.
     void setFeedOverride(double percent);
     double feedOverride() const { return m_feedOverride * 100; }
     void resume(); // from Paused: on with the next block; while a pause is pending: withdrawn

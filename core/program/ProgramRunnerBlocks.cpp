@@ -101,13 +101,13 @@ void ProgramRunner::startMove(const ProgramBlock& block)
     // G93, or a G1 on coordinating controllers: each axis' rate from where the block starts,
     // as the check resolved it.
     const machine::MachineDescription& d = m_machine->description();
-    const QMap<RequestId, QString> rates =
-        m_rates->before(block.inverseTime ? InverseTime::resolve(block, d, m_programmed,
-                                                                 m_coordinates.offsets(block, d))
-                        : CoordinatedFeed::applies(block, d, m_coordinated)
-                            ? CoordinatedFeed::resolve(block, d, m_coordinated, m_programmed,
-                                                       m_coordinates.offsets(block, d))
-                            : block);
+    ProgramBlock resolved = block;
+    if (block.inverseTime)
+        resolved = InverseTime::resolve(block, d, m_programmed, m_coordinates.offsets(block, d));
+    else if (CoordinatedFeed::applies(block, d, m_coordinated, m_feedOverride != 1.0))
+        resolved = CoordinatedFeed::resolve(block, d, m_coordinated, m_programmed,
+                                            m_coordinates.offsets(block, d), m_feedOverride);
+    const QMap<RequestId, QString> rates = m_rates->before(resolved);
     awaitRequests(rates, [this] { sendMove(m_block); });
 }
 

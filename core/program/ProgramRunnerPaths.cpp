@@ -43,7 +43,7 @@ void ProgramRunner::sendChord()
     ++m_chord;
     if (m_chordsCoordinated) {
         const QMap<RequestId, QString> rates = m_rates->before(CoordinatedFeed::resolveChord(
-            m_block, *m_arc, m_chord, m_machine->description(), m_coordinated));
+            m_block, *m_arc, m_chord, m_machine->description(), m_coordinated, m_feedOverride));
         awaitRequests(rates, [this] { moveChord(); });
         return;
     }

@@ -75,6 +75,7 @@ private Q_SLOTS:
     void resolve_g1_sharesOfF_data();
     void resolve_g1_sharesOfF();
     void resolveChord_arc_sharesAlongEachChord();
+    void resolve_feedOverride_scalesEveryShare();
 };
 
 void TestCoordinatedFeed::resolve_g1_sharesOfF_data()
@@ -154,6 +155,24 @@ void TestCoordinatedFeed::resolveChord_arc_sharesAlongEachChord()
         // The path speed along the chord is F.
         QVERIFY(std::abs(std::hypot(x, y) - 600) < 1e-6);
     }
+}
+
+// The run's feed override (issue 30) times every share; other than 100 % a move of one axis
+// gets its rate too (F times the override), so that it reaches the EMIS and Nanotec moves of
+// their own.
+void TestCoordinatedFeed::resolve_feedOverride_scalesEveryShare()
+{
+    const machine::MachineDescription d = bench();
+    const AxisPositions start(size_t(d.axes.size()), 0.0);
+    QCOMPARE(
+        ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 Y4 F300"), d, kTable, start, {}, 0.5)),
+        QStringLiteral("X=90 Y=120"));
+    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 F300"), d, kTable, start, {}, 2)),
+             QStringLiteral("X=600"));
+    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 F300"), d, kTable, start, {})),
+             QString()); // at 100 %: F as it stands
+    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 W3 F300"), d, kTable, start, {}, 2)),
+             QString()); // not a coordinating controller's
 }
 
 QTEST_GUILESS_MAIN(TestCoordinatedFeed)

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void emis_lineAndArc_interpolatedAtFArriveTogether();
     void nanotec_line_drivesAtTheirSharesStartedTogether();
     void emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes();
+    void emis_feedOverride_movesAtItsShareOfF();
 
 private:
     bool setUp(const QString& model);
@@ -59,8 +60,7 @@ bool TestProgramCoordinated::setUp(const QString& model)
 {
     const bool emis = model == QLatin1String("emis");
     // The Nanotec adapter greets the model's default drives 1, 2, 3 (X, Y, Z).
-    m_device =
-        std::make_unique<test::PtyDevice>(model, emis ? QList<int>{1} : QList<int>{1, 2, 3});
+    m_device = std::make_unique<test::PtyDevice>(model, emis ? QList<int>{1} : QList<int>{1, 2, 3});
     MachineDescription d;
     d.name = QStringLiteral("coordinated");
     d.controllers = {{"table", model, m_device->path(), {}, {}, {}, {}}};
@@ -239,6 +239,24 @@ void TestProgramCoordinated::emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes
     QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
                              5000);
     QCOMPARE(boardMm(), QPointF(0, 0));
+}
+
+// Feed override 50 % (issue 30): the line's axes and a move of one axis run at half their
+// shares of F at the device.
+void TestProgramCoordinated::emis_feedOverride_movesAtItsShareOfF()
+{
+    QVERIFY(setUp("emis"));
+    m_runner->setFeedOverride(50);
+    QVERIFY(run("G21 G90 G1 X3 Y4 F600\nG1 X6\nM2\n"));
+    QCOMPARE(boardMm(), QPointF(6, 4));
+    const auto moves = m_device->probe([&] {
+        return static_cast<emis::EmisSimulator*>(m_device->sim())->acceptedMovesWithSpeed();
+    });
+    QCOMPARE(moves.size(), qsizetype(3));  // X and Y of the line, then X alone
+    // F600 is 1 000 steps/s along the path; at 50 % 500 steps/s.
+    QCOMPARE(moves.at(0).runSpeed, 300.0); // 3/5 of it
+    QCOMPARE(moves.at(1).runSpeed, 400.0); // 4/5
+    QCOMPARE(moves.at(2).runSpeed, 500.0); // X alone
 }
 
 QTEST_GUILESS_MAIN(TestProgramCoordinated)

@@ -145,6 +145,13 @@ void TestProgramRules::feedRateWrite_perAxisModel_onlyTheBlocksAxes()
         d, "nanotec", info->capabilities, shares, {}, info->schema.find("max-frequency"));
     QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 100);
     QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 60);
+    // Above the maximum (a feed override of 200 %): o's 25 000.
+    shares.axisRates = {{"X", 2000000.0}, {"Y", 6000.0}};
+    const ParameterSet fast = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares,
+                                                          {}, info->schema.find("max-frequency"));
+    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 25000);
+    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 100);
+    shares.axisRates = {{"X", 5999.7}, {"Y", 59.997}};
     // Without the spec (not known) the share stands as it is.
     QCOMPARE(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, nullptr)
                  .value("max-frequency")
