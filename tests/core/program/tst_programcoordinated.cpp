@@ -4,7 +4,9 @@
 // program's first such move and its old value back at the end, every move of both axes ran at
 // speeds whose path speed is F (within 2 %, the steps/s being whole) and its axes' <DCn> went
 // out on the same tick; the Nanotec drives ran at top speeds 'o' in proportion to their
-// distances, started by consecutive 'A's; both boards end where the program ends.
+// distances, started by consecutive 'A's; both boards end where the program ends. On the EMIS
+// also: a feed hold ends at a chord's end and resumes, a feed override scales the shares, an
+// abort lets the running chord end and sends no chord after it.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
@@ -35,6 +37,7 @@ private Q_SLOTS:
     void nanotec_line_drivesAtTheirSharesStartedTogether();
     void emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes();
     void emis_feedOverride_movesAtItsShareOfF();
+    void emis_abortMidArc_runningChordEndsNoChordAfter();
 
 private:
     bool setUp(const QString& model);
@@ -252,11 +255,45 @@ void TestProgramCoordinated::emis_feedOverride_movesAtItsShareOfF()
     const auto moves = m_device->probe([&] {
         return static_cast<emis::EmisSimulator*>(m_device->sim())->acceptedMovesWithSpeed();
     });
-    QCOMPARE(moves.size(), qsizetype(3));  // X and Y of the line, then X alone
+    QCOMPARE(moves.size(), qsizetype(3)); // X and Y of the line, then X alone
     // F600 is 1 000 steps/s along the path; at 50 % 500 steps/s.
     QCOMPARE(moves.at(0).runSpeed, 300.0); // 3/5 of it
     QCOMPARE(moves.at(1).runSpeed, 400.0); // 4/5
     QCOMPARE(moves.at(2).runSpeed, 500.0); // X alone
+}
+
+// Abort (the window's STOP; the SMC-IC4 has no stop command, chapter 9) in the middle of a
+// chain of chords (issue 30): the running chord ends by itself, the run ends aborted with the
+// board standing, and no vector move reaches the board afterwards, over three of the input
+// polls that go on.
+void TestProgramCoordinated::emis_abortMidArc_runningChordEndsNoChordAfter()
+{
+    QVERIFY(setUp("emis"));
+    QList<ProgramError> errors;
+    const std::optional<Program> program =
+        ProgramParser::parse("G21 G90 G2 X0 Y0 I5 J0 F300\nM2\n", {"X", "Y"}, &errors);
+    QVERIFY(program);
+    QVERIFY(m_runner->start(*program, 1, &errors));
+    QTRY_VERIFY_WITH_TIMEOUT(boardMm().manhattanLength() > 1, 10000);
+    m_runner->abort();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Aborted, 10000);
+    QVERIFY(m_device->probe([&] { return m_device->sim()->standingStill(); }));
+    const auto count = [&](const QByteArray& prefix) {
+        return m_device->probe([&] {
+            const QList<QByteArray> frames = m_device->sim()->receivedFrames();
+            return qsizetype(
+                std::count_if(frames.cbegin(), frames.cend(),
+                              [&](const QByteArray& f) { return f.startsWith(prefix); }));
+        });
+    };
+    const qsizetype moves = count("L1,");
+    const qsizetype polls = count("@IG");
+    QTRY_VERIFY_WITH_TIMEOUT(count("@IG") >= polls + 3, 10000);
+    QCOMPARE(count("L1,"), moves);
+    // It stopped on the circle, at a chord's end, short of the end.
+    const QPointF at = boardMm();
+    QVERIFY2(std::abs(std::hypot(at.x() - 5, at.y()) - 5) <= 0.015 && at != QPointF(0, 0),
+             qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
 }
 
 QTEST_GUILESS_MAIN(TestProgramCoordinated)
