@@ -390,6 +390,52 @@ void report(const ContourFigure& f, bool json, QJsonArray* out)
         print(stdout, QStringLiteral("    %1").arg(f.note));
 }
 
+// The E-LAB's programs, each with its length and the distance (mm) of a point (mm from the
+// stream's start) from its ideal path.
+struct ContourRun
+{
+    const char* name;
+    QByteArray program;
+    double length;
+    std::function<double(double, double)> distance;
+    bool latencies; // hold and override measured on it
+};
+
+QList<ContourRun> contourRuns()
+{
+    const auto onCircle = [](double x, double y) {
+        return std::fabs(std::hypot(x - kRadius, y) - kRadius);
+    };
+    const auto onZigzag = [](double x, double y) {
+        const int n = std::clamp(int(x / kZigzagStep), 0, kZigzagSegments - 1);
+        double best = 1e9;
+        for (int i = std::max(0, n - 1); i <= std::min(kZigzagSegments - 1, n + 1); ++i) {
+            const double ay = i % 2 == 0 ? 0 : kZigzagStep, by = kZigzagStep - ay;
+            best = std::min(best,
+                            segmentDistance(x, y, i * kZigzagStep, ay, (i + 1) * kZigzagStep, by));
+        }
+        return best;
+    };
+    QList<QPointF> spiral;
+    double spiralLength = 0;
+    const QByteArray spiralText = spiralProgram(&spiral, &spiralLength);
+    const auto onSpiral = [spiral](double x, double y) {
+        double best = 1e9;
+        for (qsizetype i = 0; i + 1 < spiral.size(); ++i)
+            best = std::min(best, segmentDistance(x, y, spiral[i].x(), spiral[i].y(),
+                                                  spiral[i + 1].x(), spiral[i + 1].y()));
+        return best;
+    };
+    return {
+        {"circle of 50 mm", circleProgram(), 2 * M_PI * kRadius, onCircle, false},
+        {"spiral of 3 turns, 10 to 40 mm, 600 segments", spiralText, spiralLength, onSpiral, false},
+        {"zigzag of 2000 segments", zigzagProgram(), kZigzagSegments * std::sqrt(2.0) * kZigzagStep,
+         onZigzag, false},
+        {"circle of 50 mm, held and overridden", circleProgram(), 2 * M_PI * kRadius, onCircle,
+         true},
+    };
+}
+
 } // namespace
 
 int contourBenchMain(const QStringList& args)
@@ -406,49 +452,10 @@ int contourBenchMain(const QStringList& args)
         print(stderr, error);
         return 1;
     }
-    const auto onCircle = [](double x, double y) {
-        return std::fabs(std::hypot(x - kRadius, y) - kRadius);
-    };
-    const auto onZigzag = [](double x, double y) {
-        const int n = std::clamp(int(x / kZigzagStep), 0, kZigzagSegments - 1);
-        double best = 1e9;
-        for (int i = std::max(0, n - 1); i <= std::min(kZigzagSegments - 1, n + 1); ++i) {
-            const double ay = i % 2 == 0 ? 0 : kZigzagStep, by = kZigzagStep - ay;
-            best = std::min(best,
-                            segmentDistance(x, y, i * kZigzagStep, ay, (i + 1) * kZigzagStep, by));
-        }
-        return best;
-    };
     QJsonArray out;
     if (!json)
         print(stderr, QStringLiteral("running contours on the E-LAB over the paced wire ..."));
-    struct Run
-    {
-        const char* name;
-        QByteArray program;
-        double length;
-        std::function<double(double, double)> distance;
-        bool latencies;
-    };
-    QList<QPointF> spiral;
-    double spiralLength = 0;
-    const QByteArray spiralText = spiralProgram(&spiral, &spiralLength);
-    const auto onSpiral = [&spiral](double x, double y) {
-        double best = 1e9;
-        for (qsizetype i = 0; i + 1 < spiral.size(); ++i)
-            best = std::min(best, segmentDistance(x, y, spiral[i].x(), spiral[i].y(),
-                                                  spiral[i + 1].x(), spiral[i + 1].y()));
-        return best;
-    };
-    const Run runs[] = {
-        {"circle of 50 mm", circleProgram(), 2 * M_PI * kRadius, onCircle, false},
-        {"spiral of 3 turns, 10 to 40 mm, 600 segments", spiralText, spiralLength, onSpiral, false},
-        {"zigzag of 2000 segments", zigzagProgram(), kZigzagSegments * std::sqrt(2.0) * kZigzagStep,
-         onZigzag, false},
-        {"circle of 50 mm, held and overridden", circleProgram(), 2 * M_PI * kRadius, onCircle,
-         true},
-    };
-    for (const Run& run : runs) {
+    for (const ContourRun& run : contourRuns()) {
         ContourFigure f;
         f.program = QString::fromLatin1(run.name);
         f.lengthMm = run.length;

@@ -60,6 +60,20 @@ MachineEditor::MachineEditor(const ModelInfo& model, const QString& port,
     startFromController(model, port, resetLine);
 }
 
+// The spindle scale and the cross-controller switch beside the name: one row, the tables keep
+// the height.
+QHBoxLayout* MachineEditor::buildNameRow()
+{
+    auto* nameRow = new QHBoxLayout;
+    nameRow->addWidget(m_name, 1);
+    auto* maxRpmLabel = new QLabel(tr("Spindle max rpm"), this);
+    maxRpmLabel->setBuddy(m_maxRpm);
+    nameRow->addWidget(maxRpmLabel);
+    nameRow->addWidget(m_maxRpm);
+    nameRow->addWidget(m_crossFeed);
+    return nameRow;
+}
+
 void MachineEditor::build()
 {
     setObjectName(QStringLiteral("machineEditor"));
@@ -94,16 +108,8 @@ void MachineEditor::build()
     connect(addAxis, &QPushButton::clicked, m_axes, &AxesTable::addAxis);
     connect(removeAxis, &QPushButton::clicked, m_axes, &AxesTable::removeCurrentAxis);
 
-    // The spindle scale beside the name: one row, the tables keep the height.
-    auto* nameRow = new QHBoxLayout;
-    nameRow->addWidget(m_name, 1);
-    auto* maxRpmLabel = new QLabel(tr("Spindle max rpm"), this);
-    maxRpmLabel->setBuddy(m_maxRpm);
-    nameRow->addWidget(maxRpmLabel);
-    nameRow->addWidget(m_maxRpm);
-    nameRow->addWidget(m_crossFeed);
     auto* form = new QFormLayout;
-    form->addRow(tr("Machine name"), nameRow);
+    form->addRow(tr("Machine name"), buildNameRow());
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addLayout(titleRow(tr("Controllers"), {addController, removeController}));

@@ -6,6 +6,7 @@
 #include <functional>
 
 class QCheckBox;
+class QHBoxLayout;
 class QLineEdit;
 
 namespace stepdeck::ui {
@@ -77,6 +78,7 @@ protected:
 
 private:
     void build();
+    QHBoxLayout* buildNameRow();
     QWidget* buildButtons();
     void revalidate();
     bool readMachine(machine::MachineDescription* out, machine::MachineFileError* error) const;
