@@ -125,7 +125,9 @@ using CheckProgress = std::function<bool(qint64 done, qint64 total)>;
 //   rate in steps/s within that parameter's schema range for every axis of the block;
 // - G28 only on controllers with reference runs; M3/M5 a controller with a spindle, M7/M8/M9
 //   one with coolant; M64/M65 an output and M66 an input the machine has (numbered 1.. over
-//   the controllers in the file's order, docs/programs.md "Inputs and outputs").
+//   the controllers in the file's order, docs/programs.md "Inputs and outputs");
+// - feed moves across controllers only where the machine file allows them
+//   (MachineDescription::crossControllerFeed; the preview notes their path error).
 // fromLine > 1: the run starts at the first block on or after that line (run from line N);
 // blocks before it are not checked, positions are the machine's as they stand.
 class ProgramCheck
