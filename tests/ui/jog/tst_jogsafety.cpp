@@ -25,8 +25,12 @@ class EatRelease : public QObject
 public:
     bool eventFilter(QObject*, QEvent* e) override
     {
-        return e->type() == QEvent::MouseButtonRelease;
+        if (e->type() != QEvent::MouseButtonRelease)
+            return false;
+        ++eaten;
+        return true;
     }
+    int eaten = 0; // releases the pad never saw
 };
 } // namespace
 
@@ -122,10 +126,14 @@ void TestJogSafety::endBy(const QString& source, const QString& how)
         if (keyboard) {
             m_repeat->stop(); // the key-up never arrives; the repeats end with the key
         } else if (padSource) {
+            m_eatRelease.eaten = 0;
             pad()->installEventFilter(&m_eatRelease);
             pointerRelease(pad(), pad()->pointFor(QPointF(1.0, 0.0)));
             QCOMPARE(QGuiApplication::mouseButtons() & Qt::LeftButton, Qt::NoButton);
-            QVERIFY(pad()->isDragging()); // the pad itself never saw the release
+            // The pad itself never saw the release. (Whether it still drags here depends on
+            // whether the jog loop's next tick, which ends a drag whose button is up, ran while
+            // the release was delivered: under load it may have.)
+            QCOMPARE(m_eatRelease.eaten, 1);
         } else {
             m_f->gamepad->setSampling(false); // stick and dead-man stay put, samples stop
         }
