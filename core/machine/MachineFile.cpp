@@ -96,9 +96,9 @@ bool Reader::number(const QJsonObject& o, const QString& path, const char* key,
 
 bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
-    if (!onlyKeys(top, {},
-                  {"format", "version", "name", "controllers", "axes", "spindle",
-                   "crossControllerFeed"}))
+    if (!onlyKeys(
+            top, {},
+            {"format", "version", "name", "controllers", "axes", "spindle", "crossControllerFeed"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
