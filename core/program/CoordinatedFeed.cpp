@@ -1,61 +1,26 @@
 #include "CoordinatedFeed.h"
+#include "InverseTime.h"
 #include "ProgramUnits.h"
 #include <cmath>
 
 namespace stepdeck::program::CoordinatedFeed {
 
+int unitRank(machine::AxisUnit unit)
+{
+    return unit == machine::AxisUnit::Millimetre ? 0 : unit == machine::AxisUnit::Step ? 1 : 2;
+}
+
 namespace {
-// LinuxCNC measures F along X, Y, Z when they move, else along A, B, C (rs274ngc's feed
-// reference): here the linear unit first, then steps (a machine without units), then degrees.
 std::optional<machine::AxisUnit> lengthUnit(const machine::MachineDescription& d,
                                             const QMap<QString, double>& moved)
 {
     std::optional<machine::AxisUnit> best;
-    auto rank = [](machine::AxisUnit u) {
-        return u == machine::AxisUnit::Millimetre ? 0 : u == machine::AxisUnit::Step ? 1 : 2;
-    };
     for (auto it = moved.cbegin(); it != moved.cend(); ++it)
         if (const machine::MachineAxis* a = d.axis(it.key());
-            a && (!best || rank(a->unit) < rank(*best)))
+            a && (!best || unitRank(a->unit) < unitRank(*best)))
             best = a->unit;
     return best;
 }
-// The distance each axis of `block` moves at the device, in its unit: between the whole steps
-// of where it starts and where it ends (Machine::move rounds each target to the step, a
-// relative move counts the difference of the whole steps), so that the shares are those of the
-// steps the controller runs and the axes arrive together. An axis whose start is unknown: its
-// word as written (relative), or none (absolute: the check refuses the move).
-QMap<QString, double> deviceDistances(const ProgramBlock& block,
-                                      const machine::MachineDescription& d,
-                                      const AxisPositions& start,
-                                      const QMap<QString, double>& workOffsets)
-{
-    QMap<QString, double> out;
-    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
-        qsizetype index = 0;
-        while (index < d.axes.size() && d.axes.at(index).name != it.key())
-            ++index;
-        if (index == d.axes.size())
-            continue;
-        const machine::MachineAxis& axis = d.axes.at(index);
-        const double value = units::toAxisUnits(axis, it.value(), block.inches);
-        const std::optional<double> from = start.at(size_t(index));
-        double distance = 0;
-        if (!from)
-            distance = block.relative ? std::abs(value) : 0.0;
-        else
-            distance =
-                double(std::abs(axis.toSteps(block.relative
-                                                 ? *from + value
-                                                 : value + workOffsets.value(axis.name, 0.0)) -
-                                axis.toSteps(*from))) /
-                axis.stepsPerUnit;
-        if (distance > 0)
-            out.insert(axis.name, distance);
-    }
-    return out;
-}
-
 } // namespace
 
 bool applies(const ProgramBlock& block, const machine::MachineDescription& d,
@@ -80,7 +45,8 @@ ProgramBlock resolve(const ProgramBlock& block, const machine::MachineDescriptio
     const bool overridden = override != 1.0;
     if (!applies(block, d, coordinated, overridden))
         return out;
-    const QMap<QString, double> moved = deviceDistances(block, d, start, workOffsets);
+    // The whole steps the device runs, so that the axes arrive together.
+    const QMap<QString, double> moved = InverseTime::distances(block, d, start, workOffsets, true);
     const std::optional<machine::AxisUnit> unit = lengthUnit(d, moved);
     if (moved.size() < (overridden ? 1 : 2) || !unit)
         return out;

@@ -19,6 +19,10 @@ namespace stepdeck::program {
 // the same current point. Pure.
 namespace CoordinatedFeed {
 
+// Which unit a path length is measured in (LinuxCNC: X, Y, Z when they move, else A, B, C):
+// the lower, the first; mm, then steps (a machine without units), then degrees.
+int unitRank(machine::AxisUnit unit);
+
 // The controllers of `d` whose capabilities say coordinatedFeed.
 using Controllers = QSet<QString>;
 

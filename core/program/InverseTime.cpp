@@ -6,7 +6,7 @@ namespace stepdeck::program::InverseTime {
 
 QMap<QString, double> distances(const ProgramBlock& block, const machine::MachineDescription& d,
                                 const AxisPositions& start,
-                                const QMap<QString, double>& workOffsets)
+                                const QMap<QString, double>& workOffsets, bool wholeSteps)
 {
     QMap<QString, double> out;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
@@ -17,15 +17,16 @@ QMap<QString, double> distances(const ProgramBlock& block, const machine::Machin
             continue;
         const machine::MachineAxis& axis = d.axes.at(index);
         const double value = units::toAxisUnits(axis, it.value(), block.inches);
+        const std::optional<double> from = start.at(size_t(index));
+        const double to = block.relative ? (from ? *from : 0.0) + value
+                                         : value + workOffsets.value(axis.name, 0.0);
         double distance = 0;
-        if (block.relative) {
+        if (from && (wholeSteps || !block.relative))
+            distance = wholeSteps ? double(std::abs(axis.toSteps(to) - axis.toSteps(*from))) /
+                                        axis.stepsPerUnit
+                                  : std::abs(to - *from);
+        else if (block.relative)
             distance = std::abs(value);
-        } else {
-            const std::optional<double> from = start.at(size_t(index));
-            if (!from)
-                continue;
-            distance = std::abs(value + workOffsets.value(axis.name, 0.0) - *from);
-        }
         if (distance > 0)
             out.insert(axis.name, distance);
     }

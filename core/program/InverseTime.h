@@ -15,10 +15,13 @@ namespace InverseTime {
 
 // The distance each axis of `block` moves, in its unit (above 0 only), from the current point
 // `start` (machine coordinates, by axis index) to the block's target plus its work offsets. An
-// absolute word on an axis whose start is unknown gives none (the check refuses the move).
+// absolute word on an axis whose start is unknown gives none (the check refuses the move); a
+// relative one from there, its word. wholeSteps: between the whole steps of both ends, as the
+// device runs them (Machine::move rounds each target to the step, a relative move counts the
+// difference of the whole steps; CoordinatedFeed).
 QMap<QString, double> distances(const ProgramBlock& block, const machine::MachineDescription& d,
                                 const AxisPositions& start,
-                                const QMap<QString, double>& workOffsets);
+                                const QMap<QString, double>& workOffsets, bool wholeSteps = false);
 // `block` with axisRates set: each axis it moves (distance above 0) and that axis' rate in its
 // unit per minute. start: the current point (machine coordinates, the axes' units, by axis
 // index); workOffsets: the block's offsets per axis name (ProgramCoordinates::offsets). An

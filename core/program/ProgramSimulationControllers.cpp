@@ -5,19 +5,15 @@
 // and a machine file with "crossControllerFeed": false refuses such moves. The preview's note
 // also says how each kind of controller follows F (docs/programs.md "How F maps onto each
 // model").
+#include "CoordinatedFeed.h"
 #include "ProgramSimulation.h"
 #include "ProgramUnits.h"
 #include <algorithm>
 
 namespace stepdeck::program {
 
-namespace {
-// The unit an error is told in: the linear one first (as LinuxCNC measures F), then steps.
-int unitRank(machine::AxisUnit unit)
-{
-    return unit == machine::AxisUnit::Millimetre ? 0 : unit == machine::AxisUnit::Step ? 1 : 2;
-}
-} // namespace
+// The error is told in the unit a path length is measured in (CoordinatedFeed::unitRank).
+using CoordinatedFeed::unitRank;
 
 void ProgramSimulation::noteControllers(const ProgramBlock& block, const AxisList& axes)
 {
