@@ -42,6 +42,9 @@ private Q_SLOTS:
 private:
     bool setUp(const QString& model);
     bool run(const QByteArray& text);
+    // A full circle of radius 5 around (5, 0) at F300 (6.3 s), started and under way (the
+    // board left its start by a millimetre); empty if not.
+    std::optional<Program> startCircle();
     QPointF boardMm(); // X, Y in mm from the reference
 
     std::unique_ptr<test::PtyDevice> m_device;
@@ -116,6 +119,17 @@ bool TestProgramCoordinated::run(const QByteArray& text)
     }
     return QTest::qWaitFor(
         [&] { return m_device->probe([&] { return m_device->sim()->standingStill(); }); }, 5000);
+}
+
+std::optional<Program> TestProgramCoordinated::startCircle()
+{
+    QList<ProgramError> errors;
+    std::optional<Program> program =
+        ProgramParser::parse("G21 G90 G2 X0 Y0 I5 J0 F300\nM2\n", {"X", "Y"}, &errors);
+    if (!program || !m_runner->start(*program, 1, &errors) ||
+        !QTest::qWaitFor([&] { return boardMm().manhattanLength() > 1; }, 10000))
+        return std::nullopt;
+    return program;
 }
 
 QPointF TestProgramCoordinated::boardMm()
@@ -204,13 +218,8 @@ void TestProgramCoordinated::nanotec_line_drivesAtTheirSharesStartedTogether()
 void TestProgramCoordinated::emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes()
 {
     QVERIFY(setUp("emis"));
-    QList<ProgramError> errors;
-    // A full circle of radius 5 around (5, 0) at F300: 6.3 s.
-    const std::optional<Program> program =
-        ProgramParser::parse("G21 G90 G2 X0 Y0 I5 J0 F300\nM2\n", {"X", "Y"}, &errors);
+    const std::optional<Program> program = startCircle();
     QVERIFY(program);
-    QVERIFY(m_runner->start(*program, 1, &errors));
-    QTRY_VERIFY_WITH_TIMEOUT(boardMm().manhattanLength() > 1, 10000);
     QVERIFY(m_runner->holdFeed());
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 10000);
     QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
@@ -269,12 +278,8 @@ void TestProgramCoordinated::emis_feedOverride_movesAtItsShareOfF()
 void TestProgramCoordinated::emis_abortMidArc_runningChordEndsNoChordAfter()
 {
     QVERIFY(setUp("emis"));
-    QList<ProgramError> errors;
-    const std::optional<Program> program =
-        ProgramParser::parse("G21 G90 G2 X0 Y0 I5 J0 F300\nM2\n", {"X", "Y"}, &errors);
+    const std::optional<Program> program = startCircle();
     QVERIFY(program);
-    QVERIFY(m_runner->start(*program, 1, &errors));
-    QTRY_VERIFY_WITH_TIMEOUT(boardMm().manhattanLength() > 1, 10000);
     m_runner->abort();
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Aborted, 10000);
     QVERIFY(m_device->probe([&] { return m_device->sim()->standingStill(); }));
