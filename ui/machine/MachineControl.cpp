@@ -164,6 +164,11 @@ void MachineControl::onNotConfirmed(const QString& controllerId, const QString& 
                          : tr("STOP not confirmed by \"%1\": %2").arg(controllerId, reason));
 }
 
+bool MachineControl::isFollowingStop() const
+{
+    return m_watch->isWatching();
+}
+
 QString MachineControl::title() const
 {
     const machine::Machine* m = m_context->machine();

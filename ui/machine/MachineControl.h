@@ -35,6 +35,9 @@ public:
     void connectedControllers(QStringList* stoppable, QStringList* unstoppable) const;
     // "StepDeck — <machine name>", or an empty text without a machine.
     QString title() const;
+    // A stop or panic is still waiting for its controllers to confirm standstill; its final
+    // message is still to come.
+    bool isFollowingStop() const;
 
 private:
     QString notStoppedText(const QStringList& unstoppable) const;

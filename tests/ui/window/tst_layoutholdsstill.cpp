@@ -8,6 +8,7 @@
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
+#include "machine/MachineControl.h"
 #include "messages/MessageLine.h"
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
@@ -179,11 +180,13 @@ void TestLayoutHoldsStill::longMessage_movesNothing_textsInFull()
         connectModel(model);
     } else if (state == QLatin1String("panic")) {
         // Its banner and status line (refused on a model without a stop). The panic's result
-        // comes from the controller thread: wait for it, or it could overwrite the long
-        // message below when it comes late (seen under ASan).
+        // and the status read that confirms standstill come from the controller thread: wait
+        // for both, or the confirmation could overwrite the long message below when it comes
+        // late (seen under ASan, twice).
         QSignalSpy results(w->context()->session(), &ControllerSession::requestFinished);
         w->panicAll();
         QTRY_VERIFY(!results.isEmpty());
+        QTRY_VERIFY(!w->machineControl()->isFollowingStop());
         QTRY_VERIFY(!w->lastError().isEmpty());
     }
     if (QTest::currentTestFailed())
