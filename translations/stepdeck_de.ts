@@ -3612,6 +3612,10 @@
             <source>%1 reports a position error (encoder deviation above %2); reset it with %3</source>
             <translation>%1 meldet einen Positionsfehler (Encoderabweichung über %2); mit %3 zurücksetzen</translation>
         </message>
+        <message>
+            <source>%1 answers again after a silence: it may have been switched off and on; its position is unknown, reference axis %2</source>
+            <translation>%1 antwortet nach einer Funkstille wieder: er könnte aus- und wieder eingeschaltet worden sein; seine Position ist unbekannt, Achse %2 referenzieren</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::nanotec::NanotecSimulator</name>

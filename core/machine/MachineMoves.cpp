@@ -157,6 +157,8 @@ bool Machine::onPartResult(Part& part, const CommandResult& result)
         part.endSwitch = result.value.toMap().value(QStringLiteral("endSwitch")).toStringList();
         if (part.session->capabilities().reportsArrival)
             part.refreshed = true; // the request itself ended with the axes' arrival
+        else if (part.session->capabilities().statusHoldsStartedMove)
+            part.refreshed = true; // its status cannot show the move at rest before it ran
         else
             part.refresh = part.session->refreshStatus();
     } else {

@@ -71,6 +71,12 @@ struct Capabilities
     // Move and home requests finish only when the device reports that the axes arrived, or
     // with Timeout after ControllerOptions::arrivalTimeoutMs (laser motor axes).
     bool reportsArrival = false;
+    // A started move shows as moving in the status published before its request finishes and
+    // stays so until a status read of the device after the start shows it at rest (Nanotec:
+    // HostDrive::motionPending). Machine then needs no status read of its own after the
+    // acceptance to tell an arrival from a status taken before the start (issue 30: on the
+    // Nanotec's bus that read cost a sweep of every drive between two chords).
+    bool statusHoldsStartedMove = false;
     // No jog stream: jog inputs become short targets, the next one sent only after the
     // previous one arrived, never a target far ahead (laser motor axes).
     bool jogByTargets = false;

@@ -167,6 +167,7 @@ void NanotecBus::complete(Outcome outcome, const Reply& reply)
     m_timer.stop();
     Request done = std::move(*m_current);
     m_current.reset();
+    Q_EMIT exchanged(done.address, done.body, outcome == Outcome::Ok);
     if (done.done)
         done.done(outcome, reply);
     pump();

@@ -69,6 +69,9 @@ Q_SIGNALS:
     void unsolicited(const stepdeck::nanotec::Reply& reply);
     void garbage(const stepdeck::nanotec::Reply& reply);
     void traffic(stepdeck::TrafficRecord::Direction direction, const QByteArray& bytes, bool poll);
+    // Every request as it ends, before its handler runs; answered: the drive's own reply came
+    // (NanotecHeldSettings).
+    void exchanged(int address, const QByteArray& body, bool answered);
 
 private:
     void onData(const QByteArray& bytes);

@@ -37,6 +37,11 @@ NanotecController::NanotecController(Transport* transport, const ControllerOptio
     connect(m_bus, &NanotecBus::unsolicited, this,
             [this](const Reply& reply) { m_sweep.onUnsolicited(reply); });
     connect(m_bus, &NanotecBus::garbage, this, [this] { ++mutableStatus().resyncCount; });
+    m_clock.start();
+    connect(m_bus, &NanotecBus::exchanged, this,
+            [this](int address, const QByteArray& body, bool answered) {
+                m_held.onExchange(address, body, answered, nowMs());
+            });
     connect(m_bus, &NanotecBus::traffic, this,
             [this](TrafficRecord::Direction dir, const QByteArray& bytes, bool poll) {
                 recordTraffic(dir, bytes, poll);
@@ -139,6 +144,7 @@ void NanotecController::openLink(RequestId id)
 void NanotecController::onTransportOpened()
 {
     m_bus->resetDecoder();
+    m_held.forgetAll(); // a new link: the drives may have been anything meanwhile
     if (m_pendingOpen)
         m_sweep.initialiseDrives();
     else if (m_pendingScan)
@@ -239,6 +245,7 @@ void NanotecController::sendSafetyStop(std::function<void(bool)> done)
 
 void NanotecController::abortHostSide(ErrorKind kind, const QString& message)
 {
+    m_held.forgetAll();
     m_stop.abortHostSide(kind, message);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 #include "NanotecBus.h"
 #include "NanotecExchange.h"
+#include "NanotecHeldSettings.h"
 #include "NanotecHostDrive.h"
 #include "NanotecJog.h"
 #include "NanotecMotion.h"
@@ -12,6 +13,7 @@
 #include "NanotecStop.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
+#include <QElapsedTimer>
 
 namespace stepdeck::nanotec {
 
@@ -122,6 +124,7 @@ private:
     void onTransportOpened();
     void finishWith(RequestId id, const Failure& failure, const QVariant& value = {});
     QString driveName(Axis axis) const;
+    qint64 nowMs() const { return m_clock.elapsed(); } // for m_held
     // The drive named by args["axis"] (default X), or null after failing the request.
     HostDrive* driveFor(const QVariantMap& args, RequestId id);
 
@@ -135,6 +138,8 @@ private:
     bool m_panic = false;
     bool m_initialising = false;
     int m_userPollMs = 50;
+    NanotecHeldSettings m_held; // what read-backs showed and nothing changed since
+    QElapsedTimer m_clock;
 
     NanotecExchange m_exchange{*this};
     NanotecStatus m_sweep{*this};

@@ -31,8 +31,12 @@ Step NanotecExchange::exchange(Axis axis, const QByteArray& body, Check check,
 Step NanotecExchange::expectValue(Axis axis, const QByteArray& cmd, qint64 expected)
 {
     auto check = [this, axis, cmd, expected](const Reply& r) {
-        if (r.value && *r.value == expected)
+        if (r.value && *r.value == expected) {
+            if (cmd.size() == 1)
+                m_ctl.m_held.confirm(m_ctl.m_drives[axis].address, cmd.at(0), expected,
+                                     m_ctl.nowMs());
             return Failure{};
+        }
         return Failure{ErrorKind::VerifyFailed,
                        tr("%1 reads %2=%3 instead of %4 (the drive ignored the setting); not "
                           "started")
@@ -41,6 +45,22 @@ Step NanotecExchange::expectValue(Axis axis, const QByteArray& cmd, qint64 expec
                            .arg(expected)};
     };
     return exchange(axis, "Z" + cmd, check, NanotecBus::Priority::Command, 1);
+}
+
+Step NanotecExchange::learnValue(Axis axis, char cmd)
+{
+    auto check = [this, axis, cmd](const Reply& r) {
+        if (r.value)
+            m_ctl.m_held.confirm(m_ctl.m_drives[axis].address, cmd, *r.value, m_ctl.nowMs());
+        return Failure{};
+    };
+    return tolerant(exchange(axis, QByteArray("Z") + cmd, check));
+}
+
+bool NanotecExchange::holds(Axis axis, char cmd, qint64 value) const
+{
+    return m_ctl.m_drives.contains(axis) &&
+           m_ctl.m_held.holds(m_ctl.m_drives[axis].address, cmd, value, m_ctl.nowMs());
 }
 
 Step NanotecExchange::wait(int ms)

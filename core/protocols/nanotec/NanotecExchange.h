@@ -26,6 +26,10 @@ public:
     // invalid values and silently ignores them, so only a read-back proves a setting).
     Step expectValue(Axis axis, const QByteArray& cmd, qint64 expected);
     Step setting(Axis axis, const QByteArray& body); // an idempotent setting, retried once
+    // Reads 'Z<cmd>' into the held settings (NanotecHeldSettings); never fails.
+    Step learnValue(Axis axis, char cmd);
+    // The drive of axis is known to hold cmd = value (a read-back showed it, nothing since).
+    bool holds(Axis axis, char cmd, qint64 value) const;
     Step startRun(Axis axis); // 'A', its lost echo settled by the status word
     Step wait(int ms);
     Failure outcomeFailure(Axis axis, const QByteArray& body, NanotecBus::Outcome outcome,

@@ -31,6 +31,9 @@ Capabilities capabilities(const QList<Axis>& axes)
     caps.motionModes = {MotionMode::Jog, MotionMode::RelativeMove, MotionMode::AbsoluteMove,
                         MotionMode::Reference, MotionMode::Velocity};
     caps.positionReadback = true; // 'C' (5.17)
+    // A drive sent 'A' is "moving" until a '$' read after it shows ready (motionPending),
+    // published before the move's request finishes (NanotecMotion::startPositioning).
+    caps.statusHoldsStartedMove = true;
     // 'S' stops without a ramp (6.2); only speed-mode runs can be ramped down first.
     caps.rampedStop = false;
     caps.panic = true; // '#*S' to every drive at once

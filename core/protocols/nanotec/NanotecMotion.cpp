@@ -98,13 +98,26 @@ void NanotecMotion::moveAbsolute(RequestId id, const AxisVector& targets)
         if (!why.isEmpty())
             return m_ctl.finishError(id, ErrorKind::Refused, why);
         // 6.6 p=2: 's' is the target relative to the reference position; 'd' is ignored.
-        setup[it.key()] = {"!1", "p2", commandWithValue("s", it.value())};
-        verify[it.key()] = {
-            {"!", 1}, {"p", 2}, {"s", it.value()}, {"o", m_ctl.m_drives[it.key()].maxFrequency}};
+        // Issue 30: in a chain of chords the drive stays in positioning mode; what a read-back
+        // showed and nothing can have changed since (NanotecHeldSettings) is neither written
+        // nor read back again. The target always is.
+        const Axis axis = it.key();
+        const qint64 o = m_ctl.m_drives[axis].maxFrequency;
+        const bool modeHeld =
+            m_link.holds(axis, '!', 1) && m_link.holds(axis, 'p', 2) && m_link.holds(axis, 'N', 0);
+        setup[axis] = {commandWithValue("s", it.value())};
+        verify[axis] = {{"s", it.value()}};
+        if (!modeHeld) {
+            setup[axis] = QList<QByteArray>{"!1", "p2"} + setup[axis];
+            verify[axis].insert("!", 1);
+            verify[axis].insert("p", 2);
+        }
+        if (!m_link.holds(axis, 'o', o))
+            verify[axis].insert("o", o);
     }
     if (setup.isEmpty())
         return m_ctl.finishOk(id);
-    startPositioning(id, setup, false, verify);
+    startPositioning(id, setup, false, verify, {'N'});
 }
 
 void NanotecMotion::referenceWithType(RequestId id, const QMap<Axis, int>& directions,
@@ -142,7 +155,8 @@ void NanotecMotion::referenceWithType(RequestId id, const QMap<Axis, int>& direc
 
 void NanotecMotion::startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
                                      bool referenceRun,
-                                     const QMap<Axis, QMap<QByteArray, qint64>>& verify)
+                                     const QMap<Axis, QMap<QByteArray, qint64>>& verify,
+                                     const QList<char>& learn)
 {
     // Set every drive up first and read back what 'A' runs with (a drive left in speed mode by
     // a jog, or a value it ignored, would start the wrong run), then start them one right
@@ -155,6 +169,10 @@ void NanotecMotion::startPositioning(RequestId id, const QMap<Axis, QList<QByteA
     for (auto it = verify.cbegin(); it != verify.cend(); ++it) {
         for (auto v = it.value().cbegin(); v != it.value().cend(); ++v)
             steps << m_link.expectValue(it.key(), v.key(), v.value());
+        for (char key : learn) {
+            if (!m_link.holds(it.key(), key, 0))
+                steps << m_link.learnValue(it.key(), key);
+        }
     }
     auto started = std::make_shared<QList<Axis>>();
     for (Axis axis : setup.keys()) {

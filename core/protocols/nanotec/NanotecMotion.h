@@ -22,10 +22,13 @@ public:
     void moveAbsolute(RequestId id, const AxisVector& targets);
     void referenceWithType(RequestId id, const QMap<Axis, int>& directions, bool internal);
     void velocityMove(RequestId id, const AxisVector& stepsPerS);
-    // verify: per axis the settings that must read back before 'A' ('!', 'p', 's', 'd', 'o').
+    // verify: per axis the settings that must read back before 'A' ('!', 'p', 's', 'd', 'o');
+    // learn: settings read into the held settings unless held at 0 already ('N': a start
+    // keeps the held settings only while no follow-up record follows, 6.16).
     void startPositioning(RequestId id, const QMap<Axis, QList<QByteArray>>& setup,
                           bool referenceRun,
-                          const QMap<Axis, QMap<QByteArray, qint64>>& verify = {});
+                          const QMap<Axis, QMap<QByteArray, qint64>>& verify = {},
+                          const QList<char>& learn = {});
     // Why the drive of axis cannot start a motion now (empty: it can).
     // referenceRun: a position error does not refuse it (the run clears it first, 5.14).
     QString motionRefusal(Axis axis, bool needsPosition, bool referenceRun = false) const;

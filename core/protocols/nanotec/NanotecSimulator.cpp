@@ -43,6 +43,18 @@ QList<NanotecDrive*> NanotecSimulator::drives() const
     return out;
 }
 
+void NanotecSimulator::powerCycle(int address, int bootMs)
+{
+    for (auto& d : m_drives) {
+        if (d->address() != address)
+            continue;
+        d = std::make_unique<NanotecDrive>(address);
+        d->faults.silent = true;
+        QTimer::singleShot(bootMs, this, [this, address] { setDriveSilent(address, false); });
+        return;
+    }
+}
+
 void NanotecSimulator::setDriveSilent(int address, bool silent)
 {
     if (NanotecDrive* d = drive(address))

@@ -62,6 +62,10 @@ public:
     void setCalibrationMs(int ms); // every drive on the bus
     // The drive echoes writes of this setting (e.g. 'i') and keeps its old value.
     void ignoreSetting(int address, char command);
+    // The drive loses power and comes back: its motor stops, its RAM settings and position
+    // are those of power-on (NanotecDrive's defaults: relative positioning, p1) and it answers
+    // nothing for bootMs while the bootloader waits for '@A' (5.32: half a second).
+    void powerCycle(int address, int bootMs = 500);
 
 private:
     void execute(const Command& command);

@@ -173,20 +173,32 @@ void NanotecStatus::onPollDue()
         m_ctl.m_bus->hasQueued(NanotecBus::Priority::Command))
         return; // commands first; the poller reminds us after an interval
     ++m_sweeps;
+    // While a positioning run is pending, three sweeps of four read only the drives that run
+    // (issue 30: the next chord waits for the sweep that sees the last one arrive; at 19200
+    // baud each exchange costs about 6 ms), and every other one of those reads the position
+    // 'C' only of a drive whose '$' shows it arrived. Every fourth sweep reads every drive
+    // with position and inputs, as every sweep does otherwise.
+    const bool full = m_sweeps % 4 == 1;
+    bool anyRuns = false; // never an empty sweep: that would count as a miss
+    for (const HostDrive& d : m_ctl.m_drives)
+        anyRuns = anyRuns || (d.motionPending && d.responding);
+    const bool runsOnly = !full && anyRuns && m_ctl.m_poller.isExpedited();
     QList<Axis> axes;
     bool anyResponding = false;
     for (const HostDrive& d : m_ctl.m_drives)
         anyResponding = anyResponding || d.responding;
     for (const HostDrive& d : m_ctl.m_drives) {
+        if (runsOnly && !(d.motionPending && d.responding))
+            continue;
         // A silent drive costs a full timeout: ask it only every tenth sweep.
         if (d.responding || !anyResponding || m_sweeps % 10 == 0)
             axes << d.axis;
     }
     m_ctl.m_poller.pollStarted();
-    pollDrive(axes, m_sweeps % 4 == 1, std::make_shared<bool>(false));
+    pollDrive(axes, full, !runsOnly || m_sweeps % 2 == 0, std::make_shared<bool>(false));
 }
 
-void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
+void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool positionWhileRunning,
                               std::shared_ptr<bool> answered)
 {
     if (remaining.isEmpty()) {
@@ -207,8 +219,8 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
         r.done = std::move(done);
         m_ctl.m_bus->submit(r);
     };
-    auto next = [this, remaining, withInputs, answered] {
-        pollDrive(remaining, withInputs, answered);
+    auto next = [this, remaining, withInputs, positionWhileRunning, answered] {
+        pollDrive(remaining, withInputs, positionWhileRunning, answered);
     };
     using O = NanotecBus::Outcome;
     request("$", [=](O o, const Reply& r) {
@@ -219,17 +231,34 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs,
         if (o != O::Ok || !r.value)
             return next();
         *answered = true;
+        const bool wasPending = d.motionPending;
         applyStatusWord(d, *r.value);
+        if (d.motionPending && !positionWhileRunning && !withInputs)
+            return next();
         request("C", [=](O o2, const Reply& r2) {
             if (o2 == O::Cancelled)
                 return m_ctl.m_poller.pollFinished(true);
             if (o2 == O::Ok && r2.value)
                 m_ctl.m_drives[axis].position = *r2.value;
+            if (wasPending && !m_ctl.m_drives[axis].motionPending)
+                publishIfArrived();
             if (!withInputs)
                 return next();
             readInputs(axis, request, next);
         });
     });
+}
+
+void NanotecStatus::publishIfArrived()
+{
+    // Issue 30: the last drive of a run just read at rest, its position with it: the next
+    // chord waits for this status, not for the rest of the sweep (idle drives, inputs).
+    for (const HostDrive& d : std::as_const(m_ctl.m_drives)) {
+        if (d.motionPending && d.responding)
+            return;
+    }
+    updateStatus();
+    m_ctl.publishStatus();
 }
 
 void NanotecStatus::readInputs(Axis axis, const PollRequest& request,
@@ -280,6 +309,17 @@ void NanotecStatus::noteAnswer(HostDrive& d, bool answered)
             d.responding = true;
             qCInfo(lcNanotec) << m_ctl.driveName(d.axis) << "answers again";
             m_ctl.setPollInterval(m_ctl.m_userPollMs);
+            // Safety contract: a drive that fell silent may have been switched off and on
+            // (it then counts from 0, 5.17) or moved by hand; after a reconnect positions are
+            // unknown until referenced.
+            AxisStatus& a = m_ctl.mutableStatus().axes[d.axis];
+            if (a.positionKnown || a.referenced) {
+                a.referenced = a.positionKnown = false;
+                Q_EMIT m_ctl.errorOccurred(
+                    tr("%1 answers again after a silence: it may have been switched off and on; "
+                       "its position is unknown, reference axis %2")
+                        .arg(m_ctl.driveName(d.axis), axisName(d.axis)));
+            }
         }
         return;
     }

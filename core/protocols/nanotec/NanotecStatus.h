@@ -36,7 +36,11 @@ public:
 private:
     Step initialiseDrive(Axis axis);
     void finishInitialising();
-    void pollDrive(QList<Axis> remaining, bool withInputs, std::shared_ptr<bool> answered);
+    // positionWhileRunning: 'C' also of a drive whose run is still pending.
+    void pollDrive(QList<Axis> remaining, bool withInputs, bool positionWhileRunning,
+                   std::shared_ptr<bool> answered);
+    // Publishes the status at once when no run is pending any more (mid-sweep).
+    void publishIfArrived();
     // One poll exchange with the drive of a sweep's axis.
     using PollRequest = std::function<void(const QByteArray& body, NanotecBus::Handler done)>;
     // 'ZY' (5.30); a changed switch input is read twice (noise).

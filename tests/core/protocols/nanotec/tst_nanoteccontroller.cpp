@@ -23,6 +23,8 @@ private Q_SLOTS:
     void move_relative_reachesTargetPerDrive();
     void move_pendingRun_polledUntilArrivalDespiteLongInterval();
     void move_absolute_refusedUntilReferenced();
+    void moveChain_modeHeld_onlyTargetWrittenAndReadBack();
+    void moveChain_afterJog_modeWrittenAgain();
     void reference_external_thenAbsoluteMove();
     void jog_speedMode_rampedByDriveAndStoppedGently();
     void velocityMove_stop_rampsDownFirst();
@@ -212,6 +214,54 @@ void TestNanotecController::move_absolute_refusedUntilReferenced()
     QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, 100}}); }).ok());
     QTRY_COMPARE_WITH_TIMEOUT(m_sim->drive(2)->position(), qint64(100), 5000);
     QVERIFY(countFrames("#2p2\r") == 1);
+}
+
+// Issue 30: in a chain of absolute moves the drive keeps '!1' and 'p2' (NanotecHeldSettings):
+// the second move writes and reads back only its target; 'o' was read back and not changed.
+void TestNanotecController::moveChain_modeHeld_onlyTargetWrittenAndReadBack()
+{
+    QVERIFY(run([this](RequestId id) {
+                m_ctl->modelOperation(id, "reset-position", {{"axis", "Y"}});
+            }).ok());
+    QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, 100}}); }).ok());
+    QCOMPARE(countFrames("#2p2\r"), 1);
+    QCOMPARE(countFrames("#2ZN\r"), 1); // 6.16: no follow-up record may load other settings
+    QTRY_COMPARE_WITH_TIMEOUT(m_sim->drive(2)->position(), qint64(100), 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().axes[Axis::Y].moving, 5000);
+    m_sim->clearReceivedFrames();
+    QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, -40}}); }).ok());
+    const QList<QByteArray> f = m_sim->receivedFrames();
+    QVERIFY2(f.indexOf("#2s-40\r") >= 0 && f.indexOf("#2Zs\r") > f.indexOf("#2s-40\r") &&
+                 f.indexOf("#2A\r") > f.indexOf("#2Zs\r"),
+             f.join(' ').constData());
+    for (const char* skipped : {"#2!1\r", "#2p2\r", "#2Z!\r", "#2Zp\r", "#2Zo\r", "#2ZN\r"})
+        QVERIFY2(!f.contains(skipped), skipped);
+    QTRY_COMPARE_WITH_TIMEOUT(m_sim->drive(2)->position(), qint64(-40), 5000);
+}
+
+// A jog puts the drive into speed mode ('!2', 6.6): the next absolute move sets and reads back
+// its mode again, and the drive runs to the target, not a distance.
+void TestNanotecController::moveChain_afterJog_modeWrittenAgain()
+{
+    QVERIFY(run([this](RequestId id) {
+                m_ctl->modelOperation(id, "reset-position", {{"axis", "Y"}});
+            }).ok());
+    QVERIFY(run([this](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, 100}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().axes[Axis::Y].moving, 5000);
+    NanotecDrive* d = m_sim->drive(2);
+    m_ctl->setJogVelocity({{Axis::Y, 1000}});
+    QTRY_VERIFY_WITH_TIMEOUT(d->speed() >= 999, 3000);
+    m_ctl->setJogVelocity({{Axis::Y, 0}});
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().axes[Axis::Y].jogging && d->speed() == 0, 5000);
+    QTRY_VERIFY_WITH_TIMEOUT(!m_ctl->status().axes[Axis::Y].moving, 5000);
+    QVERIFY(m_ctl->status().axes[Axis::Y].positionKnown); // a jog ramps; no steps are lost
+    m_sim->clearReceivedFrames();
+    const qint64 target = d->position() - 250;
+    QVERIFY(run([&](RequestId id) { m_ctl->moveAbsolute(id, {{Axis::Y, target}}); }).ok());
+    QVERIFY(m_sim->receivedFrames().contains("#2!1\r"));
+    QVERIFY(m_sim->receivedFrames().contains("#2p2\r"));
+    QVERIFY(m_sim->receivedFrames().contains("#2Zp\r"));
+    QTRY_COMPARE_WITH_TIMEOUT(d->position(), target, 5000);
 }
 
 void TestNanotecController::reference_external_thenAbsoluteMove()

@@ -21,6 +21,8 @@ private Q_SLOTS:
     void move_driveIgnoredASetting_notStarted();
     void velocity_belowStartFrequency_refusedNotRaised();
     void jog_belowStartFrequency_refused();
+    void powerCycle_betweenMoves_modeWrittenAgain_targetReached();
+    void silentDrive_answersAgain_positionUnknown_absoluteMoveRefused();
 
 private:
     std::unique_ptr<NanotecRig> m_rig;
@@ -167,6 +169,72 @@ void TestNanotecSafety::jog_belowStartFrequency_refused()
     QTRY_VERIFY(m_rig->ctl->jogRamp().isIdle());
     QVERIFY(!m_rig->sim->receivedFrames().contains("#3A\r"));
     QVERIFY(m_rig->sim->standingStill());
+}
+
+// Issue 30 holds '!1' and 'p2' over a chain of moves (NanotecHeldSettings). A drive switched
+// off and on between two moves is back in relative positioning (p1) with position 0: the next
+// absolute move must set its mode again, or the drive would run the target as a distance. With
+// idle polls 2 s apart the host may see no unanswered poll at all; the half second the drive
+// was silent (5.32) is what tells.
+void TestNanotecSafety::powerCycle_betweenMoves_modeWrittenAgain_targetReached()
+{
+    ControllerOptions co = nanotectest::fastOptions();
+    co.pollIntervalMs = 2000;
+    m_rig = std::make_unique<NanotecRig>(co);
+    QVERIFY(m_rig->connect());
+    NanotecController* ctl = m_rig->ctl;
+    QVERIFY(
+        m_rig->run([&](RequestId id) {
+                 ctl->modelOperation(id, "reset-position", {{"axis", "Y"}});
+             })
+            .ok());
+    QVERIFY(m_rig->run([&](RequestId id) { ctl->moveAbsolute(id, {{Axis::Y, 100}}); }).ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!ctl->status().axes[Axis::Y].moving, 5000);
+    QCOMPARE(m_rig->sim->drive(2)->position(), qint64(100));
+    m_rig->sim->powerCycle(2, 450);
+    QCOMPARE(m_rig->sim->drive(2)->value('p'), qint64(1)); // power-on: relative positioning
+    QTRY_VERIFY_WITH_TIMEOUT(!m_rig->sim->drive(2)->faults.silent, 2000);
+    m_rig->sim->clearReceivedFrames();
+    const CommandResult r = m_rig->run([&](RequestId id) {
+        ctl->moveAbsolute(id, {{Axis::Y, 200}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QVERIFY(m_rig->sim->receivedFrames().contains("#2p2\r"));
+    QVERIFY(m_rig->sim->receivedFrames().contains("#2Zp\r"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_rig->sim->drive(2)->position(), qint64(200), 5000);
+    QCOMPARE(m_rig->sim->drive(2)->value('p'), qint64(2));
+}
+
+// Safety contract: after a reconnect positions are unknown until referenced. A drive that fell
+// silent (switched off, cable pulled) and answers again may have lost or changed its position.
+void TestNanotecSafety::silentDrive_answersAgain_positionUnknown_absoluteMoveRefused()
+{
+    NanotecController* ctl = m_rig->ctl;
+    QVERIFY(
+        m_rig->run([&](RequestId id) {
+                 ctl->modelOperation(id, "reset-position", {{"axis", "Y"}});
+             })
+            .ok());
+    QVERIFY(ctl->status().axes[Axis::Y].positionKnown);
+    QSignalSpy errors(ctl, &Controller::errorOccurred);
+    m_rig->sim->setDriveSilent(2, true);
+    QTRY_VERIFY_WITH_TIMEOUT(!ctl->status().drives[1].responding, 5000);
+    m_rig->sim->setDriveSilent(2, false);
+    QTRY_VERIFY_WITH_TIMEOUT(ctl->status().drives[1].responding, 5000);
+    QVERIFY(!ctl->status().axes[Axis::Y].positionKnown);
+    QVERIFY(!ctl->status().axes[Axis::Y].referenced);
+    QVERIFY(ctl->status().axes[Axis::X].positionKnown == false); // never referenced here
+    bool told = false;
+    for (const QList<QVariant>& e : errors)
+        told = told || e.at(0).toString().contains(QStringLiteral("answers again"));
+    QVERIFY(told);
+    m_rig->sim->clearReceivedFrames();
+    const CommandResult r = m_rig->run([&](RequestId id) {
+        ctl->moveAbsolute(id, {{Axis::Y, 50}});
+    });
+    QCOMPARE(r.error, ErrorKind::Refused);
+    QVERIFY(r.message.contains(QStringLiteral("reference")));
+    QCOMPARE(m_rig->countFrames("#2A\r"), 0);
 }
 
 QTEST_GUILESS_MAIN(TestNanotecSafety)
