@@ -47,6 +47,8 @@ private Q_SLOTS:
     void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld_data();
     void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld();
     void sigint_duringABlock_deviceStandsStillNextBlockNeverArrives();
+    void sigint_midArcChain_deviceStandsNoChordAfter_data();
+    void sigint_midArcChain_deviceStandsNoChordAfter();
     void refusedBlock_failsAtItsLine_laterBlocksNeverArrive_thenFromLineRunsOn();
     void linkLost_duringABlock_exit6NamesTheLine();
     void waitInput_goesHighAfterASecond_runOnThenTimeoutExit5();
@@ -149,6 +151,54 @@ void TestCliRunDevices::sigint_duringABlock_deviceStandsStillNextBlockNeverArriv
         return std::any_of(frames.cbegin(), frames.cend(),
                            [&device](const QByteArray& f) { return device.sim()->isStopFrame(f); });
     }));
+}
+
+void TestCliRunDevices::sigint_midArcChain_deviceStandsNoChordAfter_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::newRow("emis") << QStringLiteral("emis");
+    QTest::newRow("nanotec") << QStringLiteral("nanotec");
+}
+
+// SIGINT in the middle of a circle run as a chain of coordinated chords (issue 30): exit 130
+// and the device stands on its way round: the Nanotec's drives stopped by 'S' with no 'A'
+// after it; the EMIS, which has no stop command, at the end of the chord it ran.
+void TestCliRunDevices::sigint_midArcChain_deviceStandsNoChordAfter()
+{
+    QFETCH(QString, model);
+    const bool nanotec = model == QLatin1String("nanotec");
+    RunDevice device(model, nanotec ? QList<int>{1, 2} : QList<int>{1});
+    // In steps: a circle of radius 2 000 around (2 000, 0) at 60 000 steps/min (1 000/s).
+    const QString path =
+        writeProgram(*m_dir, "circle.ngc", "G28 X0 Y0\nG90\nG2 X0 Y0 I2000 J0 F60000\nM2\n");
+    QStringList args{"--model", model, "--port", device.path(), "--timeout", "10000"};
+    if (nanotec)
+        args << "--axes"
+             << "X=1,Y=2";
+    QProcess cli;
+    cli.start(cliPath(), args + QStringList{"run", path});
+    QVERIFY(cli.waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(device.moves().size() >= 8, 30000); // some chords into the circle
+    ::kill(pid_t(cli.processId()), SIGINT);
+    QVERIFY(cli.waitForFinished(20000));
+    const QByteArray err = cli.readAllStandardError();
+    QVERIFY2(cli.exitCode() == 130, err.constData());
+    QTRY_VERIFY_WITH_TIMEOUT(device.still(), 5000);
+    if (nanotec) {
+        const QList<QByteArray> frames =
+            device.probe([&device] { return device.sim()->receivedFrames(); });
+        qsizetype stop = -1, lastStart = -1;
+        for (qsizetype i = 0; i < frames.size(); ++i) {
+            if (stop < 0 && device.probe([&] { return device.sim()->isStopFrame(frames.at(i)); }))
+                stop = i;
+            if (frames.at(i).endsWith("A\r"))
+                lastStart = i;
+        }
+        QVERIFY2(stop >= 0, frames.join(' ').constData());
+        QVERIFY2(lastStart < stop, frames.mid(stop - 3, 10).join(' ').constData());
+    }
+    // Stopped on its way round: neither at the start nor back at it.
+    QVERIFY(device.position(Axis::X) != 0 || device.position(Axis::Y) != 0);
 }
 
 // The board refuses the second move (NAK): the run fails at that line with exit 4, the third

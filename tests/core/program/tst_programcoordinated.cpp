@@ -6,7 +6,9 @@
 // out on the same tick; the Nanotec drives ran at top speeds 'o' in proportion to their
 // distances, started by consecutive 'A's; both boards end where the program ends. On the EMIS
 // also: a feed hold ends at a chord's end and resumes, a feed override scales the shares, an
-// abort lets the running chord end and sends no chord after it.
+// abort lets the running chord end and sends no chord after it. On the Nanotec: STOP and
+// PANIC mid-arc leave both drives standing with no start after; on both, a link pulled mid-arc
+// fails the run LinkDown.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
@@ -38,6 +40,10 @@ private Q_SLOTS:
     void emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes();
     void emis_feedOverride_movesAtItsShareOfF();
     void emis_abortMidArc_runningChordEndsNoChordAfter();
+    void nanotec_stopOrPanicMidArc_drivesStillNoStartAfter_data();
+    void nanotec_stopOrPanicMidArc_drivesStillNoStartAfter();
+    void linkLostMidArc_runFailsLinkDownNoChordAfter_data();
+    void linkLostMidArc_runFailsLinkDownNoChordAfter();
 
 private:
     bool setUp(const QString& model);
@@ -46,6 +52,8 @@ private:
     // board left its start by a millimetre); empty if not.
     std::optional<Program> startCircle();
     QPointF boardMm(); // X, Y in mm from the reference
+    // Frames the simulator received that start with prefix.
+    qsizetype countFrames(const QByteArray& prefix);
 
     std::unique_ptr<test::PtyDevice> m_device;
     std::unique_ptr<Machine> m_machine;
@@ -130,6 +138,15 @@ std::optional<Program> TestProgramCoordinated::startCircle()
         !QTest::qWaitFor([&] { return boardMm().manhattanLength() > 1; }, 10000))
         return std::nullopt;
     return program;
+}
+
+qsizetype TestProgramCoordinated::countFrames(const QByteArray& prefix)
+{
+    return m_device->probe([&] {
+        const QList<QByteArray> frames = m_device->sim()->receivedFrames();
+        return qsizetype(std::count_if(frames.cbegin(), frames.cend(),
+                                       [&](const QByteArray& f) { return f.startsWith(prefix); }));
+    });
 }
 
 QPointF TestProgramCoordinated::boardMm()
@@ -299,6 +316,69 @@ void TestProgramCoordinated::emis_abortMidArc_runningChordEndsNoChordAfter()
     const QPointF at = boardMm();
     QVERIFY2(std::abs(std::hypot(at.x() - 5, at.y()) - 5) <= 0.015 && at != QPointF(0, 0),
              qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
+}
+
+void TestProgramCoordinated::nanotec_stopOrPanicMidArc_drivesStillNoStartAfter_data()
+{
+    QTest::addColumn<bool>("panic");
+    QTest::newRow("STOP") << false;
+    QTest::newRow("PANIC") << true;
+}
+
+// STOP or PANIC in the middle of a chain of chords on the Nanotec (issue 30), as the window
+// sends them (the machine's stop first, then the run aborted): both drives get 'S' (6.2, the
+// panic '#*S'), stand still, and no drive is started ('A') after it over three status sweeps.
+void TestProgramCoordinated::nanotec_stopOrPanicMidArc_drivesStillNoStartAfter()
+{
+    QFETCH(bool, panic);
+    QVERIFY(setUp("nanotec"));
+    QVERIFY(startCircle());
+    if (panic)
+        m_machine->panic();
+    else
+        m_machine->stop();
+    m_runner->abort();
+    QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 10000);
+    QVERIFY(m_device->receivedStop());
+    if (panic)
+        QVERIFY(countFrames("#*S") >= 1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
+                             2000);
+    const qsizetype starts = countFrames("#1A") + countFrames("#2A");
+    const qsizetype sweeps = countFrames("#1$");
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames("#1$") >= sweeps + 3, 10000);
+    QCOMPARE(countFrames("#1A") + countFrames("#2A"), starts);
+    QVERIFY(m_device->probe([&] { return m_device->sim()->standingStill(); }));
+    // Stopped on its way round, not at the end.
+    QVERIFY(boardMm() != QPointF(0, 0));
+}
+
+void TestProgramCoordinated::linkLostMidArc_runFailsLinkDownNoChordAfter_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::newRow("emis") << QStringLiteral("emis");
+    QTest::newRow("nanotec") << QStringLiteral("nanotec");
+}
+
+// The controller's USB adapter is pulled in the middle of a chain of chords (issue 30): the run
+// fails LinkDown instead of waiting, and no chord reaches the device after it: the device runs
+// out the chord it had (nothing can reach it to stop it) and stands.
+void TestProgramCoordinated::linkLostMidArc_runFailsLinkDownNoChordAfter()
+{
+    QFETCH(QString, model);
+    QVERIFY(setUp(model));
+    QVERIFY(startCircle());
+    m_device->vanish();
+    QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 20000);
+    QCOMPARE(m_runner->state(), RunState::Failed);
+    QCOMPARE(m_runner->failureKind(), ErrorKind::LinkDown);
+    const qsizetype moves =
+        m_device->probe([&] { return qsizetype(m_device->sim()->acceptedMoves().size()); });
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->probe([&] { return m_device->sim()->standingStill(); }),
+                             5000);
+    QCOMPARE(m_device->probe([&] { return qsizetype(m_device->sim()->acceptedMoves().size()); }),
+             moves);
+    QVERIFY(boardMm() != QPointF(0, 0));
 }
 
 QTEST_GUILESS_MAIN(TestProgramCoordinated)
