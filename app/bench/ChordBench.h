@@ -11,6 +11,8 @@ namespace stepdeck::bench {
 // started, when each axis arrived): the gap between chords (an arrival of chord k's last axis to
 // the device's acceptance of chord k+1: median, p99) and the arrival skew between the axes of one
 // chord (median, largest). Prints the figures (json: appends one object per model to out).
-void runChordBench(bool json, QJsonArray* out);
+void runChordBench(bool json, QJsonArray* out, const QString& only = {});
+// --contour-model emis|nanotec: that model's chords alone, printed; the exit code.
+int runChordBench(bool json, const QString& only);
 
 } // namespace stepdeck::bench

@@ -443,6 +443,11 @@ int contourBenchMain(const QStringList& args)
     if (!args.contains(QStringLiteral("--contour")))
         return -1;
     const bool json = args.contains(QStringLiteral("--json"));
+    // --contour-model ID: only that model's part (elab: the streams; emis, nanotec: chords).
+    const qsizetype at = args.indexOf(QStringLiteral("--contour-model"));
+    const QString only = at >= 0 ? args.value(at + 1) : QString();
+    if (!only.isEmpty() && only != QLatin1String("elab"))
+        return runChordBench(json, only);
     const ModelInfo* model = findModel(QStringLiteral("elab"));
     if (!model)
         return 1;
@@ -463,7 +468,8 @@ int contourBenchMain(const QStringList& args)
         report(f, json, &out);
     }
     // The EMIS and the Nanotec run their chords one after the other (ChordBench).
-    runChordBench(json, &out);
+    if (only.isEmpty())
+        runChordBench(json, &out);
     if (json)
         print(stdout,
               QString::fromUtf8(
