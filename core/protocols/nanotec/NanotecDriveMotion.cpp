@@ -99,6 +99,10 @@ void NanotecDrive::startRun()
     m_flagTriggered = false;
     m_dir = m_params.value('d') ? 1 : -1;
     m_speed = double(m_params.value('u'));
+    // Reading of an open point: 6.8 starts a run at 'u' and ramps up to 'o'; an 'o' below 'u'
+    // (a coordinated chord's small share) is run at 'o' from the first step (stepPositioning
+    // caps the speed at m_topSpeed). docs/programs.md says what a drive running it at 'u' would
+    // do to the path.
     m_topSpeed = double(m_params.value('o'));
     m_lastPhysical = m_physical;
     m_wasSwitch = externalSwitchActuated();
