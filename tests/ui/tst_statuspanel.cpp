@@ -22,7 +22,7 @@ private Q_SLOTS:
     void temperature_warnsBeforeOverTemperature_data();
     void temperature_warnsBeforeOverTemperature();
     void counters_shown();
-    void door_lampOnlyWhereReported_followsTheSwitch();
+    void machineLamps_onlyWhatTheModelHas_doorFollowsTheSwitch();
 
 private:
     ui::StatusPanel* panel() const { return m_f->window->statusPanel(); }
@@ -100,10 +100,13 @@ void TestStatusPanel::counters_shown()
     QVERIFY(panel()->countersText().contains(QStringLiteral("Resyncs:")));
 }
 
-void TestStatusPanel::door_lampOnlyWhereReported_followsTheSwitch()
+void TestStatusPanel::machineLamps_onlyWhatTheModelHas_doorFollowsTheSwitch()
 {
     using State = ui::LedIndicator::State;
     QVERIFY(!panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))); // E-LAB: none
+    // The E-LAB has a spindle relay and reports over-temperature; the laser axes have neither.
+    QVERIFY(panel()->findChild<ui::LedIndicator*>(QStringLiteral("spindleOn")));
+    QVERIFY(panel()->findChild<ui::LedIndicator*>(QStringLiteral("overTemperature")));
     ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
     QString error;
     QVERIFY2(
@@ -112,6 +115,8 @@ void TestStatusPanel::door_lampOnlyWhereReported_followsTheSwitch()
     QVERIFY(m_f->waitConnected());
     ui::LedIndicator* door = nullptr;
     QTRY_VERIFY((door = panel()->findChild<ui::LedIndicator*>(QStringLiteral("doorOpen"))));
+    QVERIFY(!panel()->findChild<ui::LedIndicator*>(QStringLiteral("spindleOn")));
+    QVERIFY(!panel()->findChild<ui::LedIndicator*>(QStringLiteral("overTemperature")));
     QTRY_COMPARE(door->state(), State::Unknown); // no frame about the door yet
     QVERIFY(m_f->withSimulatorAs<laser::LaserAxisSimulator>(
         [](laser::LaserAxisSimulator* s) { s->setDoorOpen(true); }));

@@ -141,8 +141,12 @@ QWidget* StatusPanel::buildMachineGroup()
     const Capabilities caps = m_context->capabilities();
     for (const FlagText& f : kMachineFlags) {
         const QString key = QString::fromLatin1(f.key);
+        // A lamp for what the model has (issue 31: laser axes showed Spindle and
+        // Over-temperature, which they never report).
         if ((key == QLatin1String("startButton") && !caps.startButton) ||
-            (key == QLatin1String("doorOpen") && !caps.doorSwitch))
+            (key == QLatin1String("doorOpen") && !caps.doorSwitch) ||
+            (key == QLatin1String("spindleOn") && !caps.spindle) ||
+            (key == QLatin1String("overTemperature") && !caps.temperature))
             continue;
         auto* lamp = new LedIndicator(tr(f.label), group);
         lamp->setToolTip(tr(f.tip));
