@@ -5283,6 +5283,49 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::HelpMenu</name>
+        <message>
+            <source>&amp;Help</source>
+            <translation>&amp;Hilfe</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard shortcuts…</source>
+            <translation>&amp;Tastenkürzel…</translation>
+        </message>
+        <message>
+            <source>&amp;Command line…</source>
+            <translation>&amp;Kommandozeile…</translation>
+        </message>
+        <message>
+            <source>&amp;About StepDeck</source>
+            <translation>&amp;Über StepDeck</translation>
+        </message>
+        <message>
+            <source>About StepDeck</source>
+            <translation>Über StepDeck</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Operator and technician software for stepper-motor controllers.&lt;br&gt;&lt;br&gt;Esc: ramped stop of all motion&lt;br&gt;F1: panic stop (positions are lost)</source>
+            <translation>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Bedien- und Techniker-Software für Schrittmotorsteuerungen.&lt;br&gt;&lt;br&gt;Esc: Stopp aller Bewegungen mit Rampe&lt;br&gt;F1: Panik-Stopp (die Positionen gehen verloren)</translation>
+        </message>
+        <message>
+            <source>About &amp;Qt</source>
+            <translation>Über &amp;Qt</translation>
+        </message>
+        <message>
+            <source>About Qt</source>
+            <translation>Über Qt</translation>
+        </message>
+        <message>
+            <source>StepDeck uses Qt %1, a cross-platform application framework by The Qt Company, under the GNU LGPL version 3. See &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</source>
+            <translation>StepDeck verwendet Qt %1, ein plattformübergreifendes Anwendungs-Framework von The Qt Company, unter der GNU LGPL Version 3. Siehe &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</translation>
+        </message>
+        <message>
+            <source>Command line: stepdeck-cli</source>
+            <translation>Kommandozeile: stepdeck-cli</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::IncrementalJogWidget</name>
         <message>
             <source>Incremental jog</source>
@@ -6456,26 +6499,6 @@ W1500</translation>
             <translation>Die Sprache ändert sich beim nächsten Start von StepDeck.</translation>
         </message>
         <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Hilfe</translation>
-        </message>
-        <message>
-            <source>&amp;About StepDeck</source>
-            <translation>&amp;Über StepDeck</translation>
-        </message>
-        <message>
-            <source>About StepDeck</source>
-            <translation>Über StepDeck</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Operator and technician software for stepper-motor controllers.&lt;br&gt;&lt;br&gt;Esc: ramped stop of all motion&lt;br&gt;F1: panic stop (positions are lost)</source>
-            <translation>&lt;b&gt;StepDeck&lt;/b&gt; %1&lt;br&gt;Bedien- und Techniker-Software für Schrittmotorsteuerungen.&lt;br&gt;&lt;br&gt;Esc: Stopp aller Bewegungen mit Rampe&lt;br&gt;F1: Panik-Stopp (die Positionen gehen verloren)</translation>
-        </message>
-        <message>
-            <source>About &amp;Qt</source>
-            <translation>Über &amp;Qt</translation>
-        </message>
-        <message>
             <source>simulator</source>
             <translation>Simulator</translation>
         </message>
@@ -6490,14 +6513,6 @@ W1500</translation>
         <message>
             <source>Records</source>
             <translation>Sätze</translation>
-        </message>
-        <message>
-            <source>About Qt</source>
-            <translation>Über Qt</translation>
-        </message>
-        <message>
-            <source>StepDeck uses Qt %1, a cross-platform application framework by The Qt Company, under the GNU LGPL version 3. See &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</source>
-            <translation>StepDeck verwendet Qt %1, ein plattformübergreifendes Anwendungs-Framework von The Qt Company, unter der GNU LGPL Version 3. Siehe &lt;a href="https://www.qt.io/"&gt;qt.io&lt;/a&gt;.</translation>
         </message>
         <message>
             <source>Input programs</source>
@@ -7575,6 +7590,25 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>This controller's protocol has no parameters to set: there is nothing to write, read, save or load here.</source>
             <translation>Das Protokoll dieser Steuerung hat keine einstellbaren Parameter: Hier gibt es nichts zu schreiben, zu lesen, zu speichern oder zu laden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::ShortcutsDialog</name>
+        <message>
+            <source>Keyboard jog, while it is on: hold the key to move</source>
+            <translation>Tastatur-Tippbetrieb, wenn eingeschaltet: Taste halten, um zu fahren</translation>
+        </message>
+        <message>
+            <source>Keyboard shortcuts</source>
+            <translation>Tastenkürzel</translation>
+        </message>
+        <message>
+            <source>Key</source>
+            <translation>Taste</translation>
+        </message>
+        <message>
+            <source>Action</source>
+            <translation>Aktion</translation>
         </message>
     </context>
     <context>

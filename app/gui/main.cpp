@@ -1,10 +1,12 @@
 // stepdeck: the operator and technician GUI.
 //   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--machine FILE] [--poll-interval MS]
 //   [--screenshot DIR] [--lang en|de]
+#include "../cli/CliArguments.h"
 #include "../common/SignalPipe.h"
 #include "connection/ConnectionBar.h"
 #include "machine/MachineControl.h"
 #include "protocols/Registry.h"
+#include "window/HelpMenu.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotScript.h"
 #include "window/Translations.h"
@@ -122,6 +124,7 @@ int main(int argc, char** argv)
     }
 
     ui::MainWindow window;
+    window.helpMenu()->setCommandLineHelp(cli::usageText());
     if (parser.isSet(pollInterval)) {
         bool ok = false;
         const int ms = parser.value(pollInterval).toInt(&ok, 10);

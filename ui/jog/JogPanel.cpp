@@ -296,4 +296,9 @@ void JogPanel::showRefusal(const QString& reason)
     m_refusalTimer->start();
 }
 
+QString JogPanel::keyboardLegend() const
+{
+    return KeyboardJog::keyLegend(slotLabels());
+}
+
 } // namespace stepdeck::ui

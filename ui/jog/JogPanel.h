@@ -47,6 +47,9 @@ public:
     QLabel* jogModeNote() const { return m_jogModeNote; }
     IncrementalJogWidget* incremental() const { return m_incremental; }
 
+    // The keyboard jog's keys and the axis each moves: "←/→ X, ↓/↑ Y, ..." (Help's shortcuts).
+    QString keyboardLegend() const;
+
 public Q_SLOTS:
     void releaseAll(); // pads back to centre and every jog input released
 

@@ -29,6 +29,7 @@
 #include "safety/SafetyKeyFilter.h"
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
+#include "window/HelpMenu.h"
 #include "window/ScreenBound.h"
 #include "window/SimulatorMenu.h"
 #include "window/Translations.h"
@@ -372,22 +373,8 @@ void MainWindow::buildMenus()
     }
 
     menuBar()->addMenu(new SimulatorMenu(m_context, this));
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About StepDeck"), this, [this] {
-        dialogs::message(this, QMessageBox::Information, tr("About StepDeck"),
-                         tr("<b>StepDeck</b> %1<br>Operator and technician software for "
-                            "stepper-motor controllers.<br><br>Esc: ramped stop of all "
-                            "motion<br>F1: panic stop (positions are lost)")
-                             .arg(QApplication::applicationVersion()));
-    });
-    // QApplication::aboutQt() is modal: the same facts in a non-modal box.
-    help->addAction(tr("About &Qt"), this, [this] {
-        dialogs::message(this, QMessageBox::Information, tr("About Qt"),
-                         tr("StepDeck uses Qt %1, a cross-platform application framework "
-                            "by The Qt Company, under the GNU LGPL version 3. See "
-                            "<a href=\"https://www.qt.io/\">qt.io</a>.")
-                             .arg(QString::fromLatin1(qVersion())));
-    });
+    m_helpMenu = new HelpMenu(this, m_jogPanel, this);
+    menuBar()->addMenu(m_helpMenu);
 }
 
 QWidget* MainWindow::pageOf(QDockWidget* dock)

@@ -15,6 +15,7 @@ class DrivePanel;
 class GamepadDevice;
 class GamepadJogSource;
 class GamepadPanel;
+class HelpMenu;
 class InputProgramsPage;
 class JogController;
 class JogPanel;
@@ -55,6 +56,7 @@ public:
     MachineControl* machineControl() const { return m_machineControl; }
     SafetyBar* safetyBar() const { return m_safety; }
     JogPanel* jogPanel() const { return m_jogPanel; }
+    HelpMenu* helpMenu() const { return m_helpMenu; }
     JogController* jogController() const { return m_jog; }
     KeyboardJog* keyboardJog() const { return m_keyboard; }
     PositionPanel* positionPanel() const { return m_position; }
@@ -127,6 +129,7 @@ private:
     SafetyBar* m_safety = nullptr;
     SafetyKeyFilter* m_safetyKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
+    HelpMenu* m_helpMenu = nullptr;
     PositionPanel* m_position = nullptr;
     ReferencePanel* m_reference = nullptr;
     StatusPanel* m_status = nullptr;

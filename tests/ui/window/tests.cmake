@@ -21,3 +21,7 @@ stepdeck_add_test(tst_simulatormenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simula
 stepdeck_add_test(tst_menuclickthrough SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_menuclickthrough.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# Issue 31 (a finding): Help lists the keyboard shortcuts and the command line's usage.
+stepdeck_add_test(tst_helpmenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_helpmenu.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
