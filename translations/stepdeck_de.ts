@@ -5718,10 +5718,6 @@ W1500</translation>
             <translation>Läuft nicht.</translation>
         </message>
         <message>
-            <source>Laser bridge</source>
-            <translation>Laserbrücke</translation>
-        </message>
-        <message>
             <source>StepDeck answers the laser marker's motor-axis frames (RS232, 9600 8N1) with the connected controller.</source>
             <translation>StepDeck beantwortet die Motorachsen-Rahmen des Markierlasers (RS232, 9600 8N1) mit der verbundenen Steuerung.</translation>
         </message>
@@ -5832,6 +5828,10 @@ W1500</translation>
         <message>
             <source>At %1: %2</source>
             <translation>Um %1: %2</translation>
+        </message>
+        <message>
+            <source>Laser port and axes</source>
+            <translation>Laser-Port und Achsen</translation>
         </message>
     </context>
     <context>

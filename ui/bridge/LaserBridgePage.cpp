@@ -100,7 +100,8 @@ LaserBridgePage::~LaserBridgePage()
 
 QWidget* LaserBridgePage::buildForm()
 {
-    auto* box = new QGroupBox(tr("Laser bridge"), this);
+    // Not the dock's title again (issue 31: "Laser bridge" showed twice, one under the other).
+    auto* box = new QGroupBox(tr("Laser port and axes"), this);
     auto* v = new QVBoxLayout(box);
     auto* intro = new QLabel(tr("StepDeck answers the laser marker's motor-axis frames (RS232, "
                                 "9600 8N1) with the connected controller."),

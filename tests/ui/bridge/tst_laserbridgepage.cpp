@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QGroupBox>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -88,6 +89,9 @@ void TestLaserBridgePage::page_isADock_startNeedsConnection()
     QDockWidget* dock = m_f->window->dockOf(page());
     QVERIFY(dock);
     QCOMPARE(dock->objectName(), QStringLiteral("laserBridgeDock"));
+    // The dock's title is not repeated by a group inside it (issue 31).
+    for (const QGroupBox* box : page()->findChildren<QGroupBox*>())
+        QVERIFY2(box->title() != dock->windowTitle(), qPrintable(box->title()));
     QVERIFY(!page()->startButton()->isEnabled()); // nothing connected yet
     page()->startBridge();
     QVERIFY(page()->stateLabel()->text().contains("Connect the controller"));
