@@ -174,7 +174,7 @@ void NanotecStatus::onPollDue()
         return; // commands first; the poller reminds us after an interval
     ++m_sweeps;
     // While a positioning run is pending, three sweeps of four read only the drives that run
-    // (issue 30: the next chord waits for the sweep that sees the last one arrive; at 19200
+    // or jog (issue 30: the next chord waits for the sweep that sees the last one arrive; at 19200
     // baud each exchange costs about 6 ms), and every other one of those reads the position
     // 'C' only of a drive whose '$' shows it arrived. Every fourth sweep reads every drive
     // with position and inputs, as every sweep does otherwise.
@@ -188,7 +188,8 @@ void NanotecStatus::onPollDue()
     for (const HostDrive& d : m_ctl.m_drives)
         anyResponding = anyResponding || d.responding;
     for (const HostDrive& d : m_ctl.m_drives) {
-        if (runsOnly && !(d.motionPending && d.responding))
+        // A jogging drive stays in every sweep: its soft limits are judged on its position.
+        if (runsOnly && !(d.motionPending && d.responding) && d.jog == JogPhase::Idle)
             continue;
         // A silent drive costs a full timeout: ask it only every tenth sweep.
         if (d.responding || !anyResponding || m_sweeps % 10 == 0)

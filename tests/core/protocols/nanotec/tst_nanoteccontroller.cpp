@@ -25,6 +25,7 @@ private Q_SLOTS:
     void move_absolute_refusedUntilReferenced();
     void moveChain_modeHeld_onlyTargetWrittenAndReadBack();
     void moveChain_afterJog_modeWrittenAgain();
+    void poll_whileARunIsPending_runningAndJoggingDrivesReadIdleOnesLess();
     void reference_external_thenAbsoluteMove();
     void jog_speedMode_rampedByDriveAndStoppedGently();
     void velocityMove_stop_rampsDownFirst();
@@ -262,6 +263,26 @@ void TestNanotecController::moveChain_afterJog_modeWrittenAgain()
     QVERIFY(m_sim->receivedFrames().contains("#2p2\r"));
     QVERIFY(m_sim->receivedFrames().contains("#2Zp\r"));
     QTRY_COMPARE_WITH_TIMEOUT(d->position(), target, 5000);
+}
+
+// Issue 30: while a positioning run is pending, three sweeps of four read only the drives that
+// run or jog; the idle drive only every fourth. The jogging drive is read as often as the
+// running one (its soft limits are judged on its position).
+void TestNanotecController::poll_whileARunIsPending_runningAndJoggingDrivesReadIdleOnesLess()
+{
+    NanotecDrive* y = m_sim->drive(2);
+    m_ctl->setJogVelocity({{Axis::Y, 1000}});
+    QTRY_VERIFY_WITH_TIMEOUT(y->speed() >= 999, 3000);
+    QVERIFY(run([this](RequestId id) { m_ctl->moveRelative(id, {{Axis::X, 20000}}); }).ok());
+    m_sim->clearReceivedFrames();
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames("#1$\r") >= 12, 5000);
+    const int running = countFrames("#1$\r");
+    const int jogging = countFrames("#2$\r");
+    const int idle = countFrames("#3$\r");
+    m_ctl->setJogVelocity({{Axis::Y, 0}});
+    QVERIFY2(jogging >= running - 1, qPrintable(QStringLiteral("%1 %2").arg(jogging).arg(running)));
+    QVERIFY2(idle <= running / 2, qPrintable(QStringLiteral("%1 %2").arg(idle).arg(running)));
+    QVERIFY(m_ctl->status().axes[Axis::X].moving);
 }
 
 void TestNanotecController::reference_external_thenAbsoluteMove()
