@@ -2176,6 +2176,10 @@
             <source>Axis state (RequestAxeState)</source>
             <translation>Achsstatus (RequestAxeState)</translation>
         </message>
+        <message>
+            <source>Send raw bytes, e.g. &lt;ENQ&gt; or &lt;DC4&gt;0064,0000;0000.</source>
+            <translation>Rohe Bytes senden, z. B. &lt;ENQ&gt; oder &lt;DC4&gt;0064,0000;0000.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::emis::EmisController</name>
@@ -2521,6 +2525,10 @@
         <message>
             <source>A move only ends when it arrives. A reset (a normally open button on the board's reset input) stops every motor at once and restarts the board with its stored values. StepDeck sees it when a move's arrival does not come (that axis: motion unconfirmed, position unknown) or when the board does not answer while it restarts; either way every axis then counts as not referenced and the outputs as unknown. A reset it could not see leaves the positions it shows: reference the axes after every reset.</source>
             <translation>Eine Fahrt endet erst, wenn sie ihr Ziel erreicht. Ein Reset (ein Schließer am Reset-Eingang der Steuerung) hält alle Motoren sofort an und startet die Steuerung mit ihren gespeicherten Werten neu. StepDeck bemerkt ihn, wenn die Ankunftsmeldung einer Fahrt ausbleibt (diese Achse: Bewegung unbestätigt, Position unbekannt) oder die Steuerung während des Neustarts nicht antwortet; in beiden Fällen gilt danach jede Achse als nicht referenziert und die Ausgänge als unbekannt. Nach einem Reset, den StepDeck nicht bemerken konnte, bleiben die angezeigten Positionen stehen: nach jedem Reset die Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Send a command, e.g. @V (firmware version) or @IG (inputs); the final &lt;CR&gt; is added.</source>
+            <translation>Befehl senden, z. B. @V (Firmware-Version) oder @IG (Eingänge); das abschließende &lt;CR&gt; wird angehängt.</translation>
         </message>
     </context>
     <context>
@@ -3657,6 +3665,10 @@
         <message>
             <source>Drive status %1 ($, 5.21)</source>
             <translation>Antriebsstatus %1 ($, 5.21)</translation>
+        </message>
+        <message>
+            <source>Send a command, e.g. #1$ (status of drive 1) or #2Zo (top speed of drive 2); the final CR is added (1.1).</source>
+            <translation>Befehl senden, z. B. #1$ (Status von Antrieb 1) oder #2Zo (Maximalfrequenz von Antrieb 2); das abschließende CR wird angehängt (1.1).</translation>
         </message>
     </context>
     <context>
@@ -7941,10 +7953,6 @@ hält die Steuerung nicht an</translation>
             <source>Freeze the view; traffic is still recorded</source>
             <translation>Ansicht einfrieren; der Datenverkehr wird weiter aufgezeichnet</translation>
         </message>
-        <message>
-            <source>Send raw bytes, e.g. &lt;ENQ&gt; or &lt;DC4&gt;0064,0000;0000.</source>
-            <translation>Rohe Bytes senden, z. B. &lt;ENQ&gt; oder &lt;DC4&gt;0064,0000;0000.</translation>
-        </message>
         <message numerus="yes">
             <source>%n record(s)</source>
             <translation>
@@ -7975,6 +7983,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Log files (*.log *.txt)</source>
             <translation>Protokolldateien (*.log *.txt)</translation>
+        </message>
+        <message>
+            <source>Send raw bytes: text as it is, \r for CR, &lt;xNN&gt; for any other byte.</source>
+            <translation>Rohe Bytes senden: Text wie er ist, \r für CR, &lt;xNN&gt; für jedes andere Byte.</translation>
         </message>
     </context>
     <context>

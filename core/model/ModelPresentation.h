@@ -38,6 +38,9 @@ struct ModelPresentation
     std::function<QString(const QByteArray&)> formatTraffic;
     // The console's send line back into bytes; false and a reason on bad notation.
     std::function<bool(const QString&, QByteArray*, QString*)> parseTraffic;
+    // The send line's hint: an example in the model's own notation, already translated (issue
+    // 31: the E-LAB's showed on every model). Unset: the generic notation's hint.
+    std::function<QString()> trafficExample;
     // Models with input programs (Capabilities::inputPrograms): why one command line cannot be
     // part of a program (grammar, range, kind), already translated; empty when it can.
     std::function<QString(const QString&)> checkProgramCommand;

@@ -28,6 +28,7 @@ private Q_SLOTS:
     void sendLine_mnemonic_sentAsBytes();
     void sendLine_badMnemonic_notSentAndSaysWhy();
     void save_writesVisibleLines();
+    void sendHint_inTheConnectedModelsNotation();
 
 private:
     ui::TrafficConsole* console() const { return m_f->window->trafficConsole(); }
@@ -159,6 +160,23 @@ void TestTrafficConsole::save_writesVisibleLines()
     const QString text = QString::fromUtf8(file.readAll());
     QVERIFY(text.contains(QStringLiteral("<ENQ>")));
     QVERIFY(text.contains(QStringLiteral("\u2192")));
+}
+
+// Issue 31 (a finding): the send line's hint showed E-LAB syntax on every model.
+void TestTrafficConsole::sendHint_inTheConnectedModelsNotation()
+{
+    auto* send = console()->findChild<QLineEdit*>(QStringLiteral("trafficSend"));
+    QVERIFY(send);
+    QVERIFY2(send->placeholderText().contains(QStringLiteral("<ENQ>")),
+             qPrintable(send->placeholderText()));
+    ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
+    QString error;
+    QVERIFY2(m_f->window->context()->connectTo(*findModel(QStringLiteral("nanotec")), spec, &error),
+             qPrintable(error));
+    QVERIFY(m_f->waitConnected());
+    QTRY_VERIFY2(send->placeholderText().contains(QStringLiteral("#1$")),
+                 qPrintable(send->placeholderText()));
+    QVERIFY(!send->placeholderText().contains(QStringLiteral("<ENQ>")));
 }
 
 QTEST_MAIN(TestTrafficConsole)

@@ -50,7 +50,8 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     m_view->setObjectName(QStringLiteral("trafficView"));
     m_send->setFont(mono);
     m_send->setObjectName(QStringLiteral("trafficSend"));
-    m_send->setPlaceholderText(tr("Send raw bytes, e.g. <ENQ> or <DC4>0064,0000;0000."));
+    updateSendHint();
+    connect(context, &MachineContext::modelChanged, this, &TrafficConsole::updateSendHint);
     m_send->setClearButtonEnabled(true);
     m_sendError->setStyleSheet(QStringLiteral("QLabel { color: #c62828; }"));
     // Two lines reserved, a longer error elided (full text in the tooltip): the send field
@@ -88,6 +89,16 @@ TrafficConsole::TrafficConsole(MachineContext* context, QWidget* parent)
     connect(context->session(), &ControllerSession::traffic, this, &TrafficConsole::append);
     connect(context->session(), &ControllerSession::requestFinished, this,
             &TrafficConsole::onResult);
+}
+
+void TrafficConsole::updateSendHint()
+{
+    // In the connected model's own notation (ModelPresentation::trafficExample).
+    const ModelInfo* model = m_context->model();
+    m_send->setPlaceholderText(model && model->presentation.trafficExample
+                                   ? model->presentation.trafficExample()
+                                   : tr("Send raw bytes: text as it is, \\r for CR, <xNN> for "
+                                        "any other byte."));
 }
 
 QString TrafficConsole::formatBytes(const QByteArray& bytes) const

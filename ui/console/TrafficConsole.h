@@ -55,6 +55,7 @@ protected:
 private:
     bool accepted(const TrafficRecord& record) const;
     void rerender();
+    void updateSendHint(); // the send line's placeholder, in the model's notation
     void appendToView(const QList<TrafficRecord>& records);
     void onResult(const CommandResult& result);
     void updateRefresh(); // the refresh timer runs while the console is on screen

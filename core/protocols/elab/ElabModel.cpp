@@ -209,6 +209,10 @@ ModelPresentation presentation()
         return QList<StatusWordInfo>{machineWord, axeWord};
     };
     p.formatTraffic = [](const QByteArray& bytes) { return toMnemonics(bytes); };
+    p.trafficExample = [] {
+        return QCoreApplication::translate("stepdeck::elab::Presentation",
+                                           "Send raw bytes, e.g. <ENQ> or <DC4>0064,0000;0000.");
+    };
     p.parseTraffic = [](const QString& text, QByteArray* bytes, QString* error) {
         return fromMnemonics(text, bytes, error);
     };

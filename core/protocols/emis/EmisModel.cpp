@@ -301,6 +301,11 @@ ModelPresentation presentation()
     };
     p.formatTraffic = &formatTraffic;
     p.parseTraffic = &parseTraffic;
+    p.trafficExample = [] {
+        return QCoreApplication::translate(
+            "stepdeck::emis::Presentation",
+            "Send a command, e.g. @V (firmware version) or @IG (inputs); the final <CR> is added.");
+    };
     p.checkProgramCommand = [](const QString& line) {
         for (QChar c : line) {
             if (c.unicode() < 0x20 || c.unicode() >= 0x7F)

@@ -113,6 +113,11 @@ ModelPresentation presentation()
         return words;
     };
     p.formatTraffic = &genericFormatTraffic;
+    p.trafficExample = [] {
+        return QCoreApplication::translate("stepdeck::nanotec::Presentation",
+                                           "Send a command, e.g. #1$ (status of drive 1) or #2Zo "
+                                           "(top speed of drive 2); the final CR is added (1.1).");
+    };
     // The console's send line: generic escapes; a missing final CR is added (1.1).
     p.parseTraffic = [](const QString& text, QByteArray* bytes, QString* error) {
         if (!genericParseTraffic(text, bytes, error))
