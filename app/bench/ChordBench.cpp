@@ -47,15 +47,19 @@ struct ChordFigure
     QString note;
 };
 
+// A move of no steps is left out: an axis whose chord ends where it stands (the arc's quadrant
+// points) is started too, and "arrives" at once; that is no skew of the path.
 QList<DeviceMove> deviceMoves(Simulator* sim)
 {
     QList<DeviceMove> out;
     if (auto* emis = qobject_cast<emis::EmisSimulator*>(sim))
         for (const auto& m : emis->acceptedMovesWithSpeed())
-            out << DeviceMove{m.acceptedUs, m.arrivedUs};
+            if (m.steps != 0)
+                out << DeviceMove{m.acceptedUs, m.arrivedUs};
     if (auto* nanotec = qobject_cast<nanotec::NanotecSimulator*>(sim))
         for (const auto& m : nanotec->startedMoves())
-            out << DeviceMove{m.startedUs, m.arrivedUs, m.maxFrequency <= 60};
+            if (m.steps != 0)
+                out << DeviceMove{m.startedUs, m.arrivedUs, m.maxFrequency <= 60};
     return out;
 }
 
