@@ -155,10 +155,11 @@ bool Machine::onPartResult(Part& part, const CommandResult& result)
     if (result.id == part.request) {
         part.accepted = true;
         part.endSwitch = result.value.toMap().value(QStringLiteral("endSwitch")).toStringList();
-        if (part.session->capabilities().reportsArrival)
-            part.refreshed = true; // the request itself ended with the axes' arrival
-        else if (part.session->capabilities().statusHoldsStartedMove)
-            part.refreshed = true; // its status cannot show the move at rest before it ran
+        // The request itself ended with the axes' arrival, or the status cannot show the move
+        // at rest before it ran: no read of its own is needed.
+        const Capabilities caps = part.session->capabilities();
+        if (caps.reportsArrival || caps.statusHoldsStartedMove)
+            part.refreshed = true;
         else
             part.refresh = part.session->refreshStatus();
     } else {

@@ -185,15 +185,18 @@ void TestCliRunDevices::sigint_midArcChain_deviceStandsNoChordAfter()
     QVERIFY2(cli.exitCode() == 130, err.constData());
     QTRY_VERIFY_WITH_TIMEOUT(device.still(), 5000);
     if (nanotec) {
-        const QList<QByteArray> frames =
-            device.probe([&device] { return device.sim()->receivedFrames(); });
+        // The first stop frame and the last start, found in the device's thread in one look.
         qsizetype stop = -1, lastStart = -1;
-        for (qsizetype i = 0; i < frames.size(); ++i) {
-            if (stop < 0 && device.probe([&] { return device.sim()->isStopFrame(frames.at(i)); }))
-                stop = i;
-            if (frames.at(i).endsWith("A\r"))
-                lastStart = i;
-        }
+        const QList<QByteArray> frames = device.probe([&] {
+            const QList<QByteArray> got = device.sim()->receivedFrames();
+            for (qsizetype i = 0; i < got.size(); ++i) {
+                if (stop < 0 && device.sim()->isStopFrame(got.at(i)))
+                    stop = i;
+                if (got.at(i).endsWith("A\r"))
+                    lastStart = i;
+            }
+            return got;
+        });
         QVERIFY2(stop >= 0, frames.join(' ').constData());
         QVERIFY2(lastStart < stop, frames.mid(stop - 3, 10).join(' ').constData());
     }

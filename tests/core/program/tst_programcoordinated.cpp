@@ -300,18 +300,10 @@ void TestProgramCoordinated::emis_abortMidArc_runningChordEndsNoChordAfter()
     m_runner->abort();
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Aborted, 10000);
     QVERIFY(m_device->probe([&] { return m_device->sim()->standingStill(); }));
-    const auto count = [&](const QByteArray& prefix) {
-        return m_device->probe([&] {
-            const QList<QByteArray> frames = m_device->sim()->receivedFrames();
-            return qsizetype(
-                std::count_if(frames.cbegin(), frames.cend(),
-                              [&](const QByteArray& f) { return f.startsWith(prefix); }));
-        });
-    };
-    const qsizetype moves = count("L1,");
-    const qsizetype polls = count("@IG");
-    QTRY_VERIFY_WITH_TIMEOUT(count("@IG") >= polls + 3, 10000);
-    QCOMPARE(count("L1,"), moves);
+    const qsizetype moves = countFrames("L1,");
+    const qsizetype polls = countFrames("@IG");
+    QTRY_VERIFY_WITH_TIMEOUT(countFrames("@IG") >= polls + 3, 10000);
+    QCOMPARE(countFrames("L1,"), moves);
     // It stopped on the circle, at a chord's end, short of the end.
     const QPointF at = boardMm();
     QVERIFY2(std::abs(std::hypot(at.x() - 5, at.y()) - 5) <= 0.015 && at != QPointF(0, 0),
