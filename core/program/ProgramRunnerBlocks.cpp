@@ -346,7 +346,14 @@ void ProgramRunner::onControllerFailed(const QString& controllerId, const QStrin
     const bool linkLost = s && s->linkState() != LinkState::Connected;
     if (m_aborting && !linkLost)
         return; // the stop's own effect on the motion under way; its end comes as usual
-    failSoon(linkLost ? ErrorKind::LinkDown : ErrorKind::None, message);
+    if (linkLost) {
+        // At once: the machine has just posted the stop to the other controllers, and their
+        // requests cancelled by it may come back before a queued failSoon would run (seen
+        // once under load: the run failed "Cancelled" instead of LinkDown).
+        fail(ErrorKind::LinkDown, message);
+        return;
+    }
+    failSoon(ErrorKind::None, message);
 }
 
 } // namespace stepdeck::program
