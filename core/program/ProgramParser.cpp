@@ -4,10 +4,12 @@
 
 namespace stepdeck::program {
 
-ProgramParser::ProgramParser(const QStringList& axisNames)
+ProgramParser::ProgramParser(const QStringList& axisNames, const ModalState& start)
     : m_axisNames(axisNames), m_index(std::make_shared<ProgramIndex>())
 {
-    m_index->checkpoints.push_back(ProgramCheckpoint{});
+    m_state.modal = start;
+    // Replays from the first checkpoint start in the same state (ProgramReader).
+    m_index->checkpoints.push_back(ProgramCheckpoint{0, 0, m_state});
 }
 
 ProgramParser::ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
@@ -16,9 +18,9 @@ ProgramParser::ProgramParser(const QStringList& axisNames, const ProgramIndex& i
 {}
 
 std::optional<Program> ProgramParser::parse(const QByteArray& text, const QStringList& axisNames,
-                                            QList<ProgramError>* errors)
+                                            QList<ProgramError>* errors, const ModalState& start)
 {
-    ProgramParser parser(axisNames);
+    ProgramParser parser(axisNames, start);
     parser.feed(text);
     std::optional<Program> program = parser.finish(errors);
     if (program)

@@ -33,8 +33,10 @@ public:
 
     using Sink = std::function<void(ProgramBlock&& block)>;
 
-    // axisNames: the machine's axes ("X", "A", ...); any other axis word is an error.
-    explicit ProgramParser(const QStringList& axisNames);
+    // axisNames: the machine's axes ("X", "A", ...); any other axis word is an error. The
+    // first line starts in `start` (G-code's defaults; an MDI line: the state the last one
+    // left, MdiSession).
+    explicit ProgramParser(const QStringList& axisNames, const ModalState& start = {});
     // Replay from `from`, a checkpoint of `index` (which outlives the parser).
     ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
                   const ProgramCheckpoint& from);
@@ -50,7 +52,7 @@ public:
 
     // Parses text held in memory: the Program's source is those bytes.
     static std::optional<Program> parse(const QByteArray& text, const QStringList& axisNames,
-                                        QList<ProgramError>* errors);
+                                        QList<ProgramError>* errors, const ModalState& start = {});
 
     const ParserState& state() const { return m_state; }
     qsizetype errorCount() const { return m_errors.size(); }

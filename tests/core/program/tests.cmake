@@ -57,3 +57,6 @@ stepdeck_add_test(tst_drillcycle SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_drillcycl
 # refusal of a feed the stream's tick cannot carry.
 stepdeck_add_test(tst_contourmoves SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contourmoves.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+# The MDI line's program of one line and its modal state (issue 31).
+stepdeck_add_test(tst_mdisession SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_mdisession.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
