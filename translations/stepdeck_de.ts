@@ -3760,6 +3760,17 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::MdiSession</name>
+        <message>
+            <source>an MDI line is one line</source>
+            <translation>eine MDI-Zeile ist eine Zeile</translation>
+        </message>
+        <message>
+            <source>the line has nothing to run</source>
+            <translation>die Zeile enthält nichts auszuführen</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ProgramCheck</name>
         <message>
             <source>run from line %1: the program has no blocks</source>
@@ -5021,6 +5032,21 @@ Regelung für Achse %1 einschalten?</translation>
         <message>
             <source>A parameter file (as Export writes it), relative to the machine file's folder: written to the controller on every connect</source>
             <translation>Eine Parameterdatei (wie Export sie schreibt), relativ zum Ordner der Maschinendatei: bei jedem Verbinden in die Steuerung geschrieben</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::DemoMachine</name>
+        <message>
+            <source>Cannot write the demo file %1: %2</source>
+            <translation>Die Demo-Datei %1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>Cannot create the demo folder %1</source>
+            <translation>Der Demo-Ordner %1 kann nicht angelegt werden</translation>
+        </message>
+        <message>
+            <source>Cannot open the demo program %1</source>
+            <translation>Das Demo-Programm %1 kann nicht geöffnet werden</translation>
         </message>
     </context>
     <context>
@@ -6306,6 +6332,33 @@ W1500</translation>
             <source>%1 stopped at %2 before its target %3.</source>
             <translation>%1 hielt bei %2 vor dem Ziel %3 an.</translation>
         </message>
+        <message>
+            <source>Checking the go-to of %1 to %2…</source>
+            <translation>Anfahren von %1 auf %2 wird geprüft…</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MachineMdi</name>
+        <message>
+            <source>the machine was closed</source>
+            <translation>die Maschine wurde geschlossen</translation>
+        </message>
+        <message>
+            <source>no machine is open</source>
+            <translation>keine Maschine ist geöffnet</translation>
+        </message>
+        <message>
+            <source>the last line has not ended</source>
+            <translation>die letzte Zeile ist noch nicht beendet</translation>
+        </message>
+        <message>
+            <source>refused</source>
+            <translation>abgelehnt</translation>
+        </message>
+        <message>
+            <source>stopped while the line was checked</source>
+            <translation>gestoppt, während die Zeile geprüft wurde</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineReferenceRows</name>
@@ -6545,6 +6598,65 @@ W1500</translation>
         <message>
             <source>Program line %1: %2</source>
             <translation>Programmzeile %1: %2</translation>
+        </message>
+        <message>
+            <source>MDI: %1</source>
+            <translation>MDI: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::MdiLine</name>
+        <message>
+            <source>Run line</source>
+            <translation>Zeile ausführen</translation>
+        </message>
+        <message>
+            <source>G-code line, e.g. G0 X10 Y5 (Enter runs it, Up: the last)</source>
+            <translation>G-Code-Zeile, z. B. G0 X10 Y5 (Enter führt sie aus, Pfeil hoch: die letzte)</translation>
+        </message>
+        <message>
+            <source>Runs the line on the machine after the same check a program has</source>
+            <translation>Führt die Zeile auf der Maschine aus, nach derselben Prüfung wie ein Programm</translation>
+        </message>
+        <message>
+            <source>The modal state the next line starts in (LinuxCNC's active G-codes)</source>
+            <translation>Der modale Zustand, in dem die nächste Zeile beginnt (die aktiven G-Codes wie in LinuxCNC)</translation>
+        </message>
+        <message>
+            <source>MDI:</source>
+            <translation>MDI:</translation>
+        </message>
+        <message>
+            <source>Holding: Resume goes on.</source>
+            <translation>Angehalten: Fortsetzen fährt weiter.</translation>
+        </message>
+        <message>
+            <source>Holding: %1 (Resume goes on)</source>
+            <translation>Angehalten: %1 (Fortsetzen fährt weiter)</translation>
+        </message>
+        <message>
+            <source>Running: %1</source>
+            <translation>Läuft: %1</translation>
+        </message>
+        <message>
+            <source>Refused: %1</source>
+            <translation>Abgelehnt: %1</translation>
+        </message>
+        <message>
+            <source>Checking, then running: %1</source>
+            <translation>Wird geprüft, dann ausgeführt: %1</translation>
+        </message>
+        <message>
+            <source>Done: %1</source>
+            <translation>Erledigt: %1</translation>
+        </message>
+        <message>
+            <source>Not done: %1 (%2)</source>
+            <translation>Nicht ausgeführt: %1 (%2)</translation>
+        </message>
+        <message>
+            <source>Resume</source>
+            <translation>Fortsetzen</translation>
         </message>
     </context>
     <context>
@@ -6959,6 +7071,14 @@ W1500</translation>
         <message>
             <source>Checking the program before the run…</source>
             <translation>Das Programm wird vor dem Lauf geprüft…</translation>
+        </message>
+        <message>
+            <source>a program runs</source>
+            <translation>ein Programm läuft</translation>
+        </message>
+        <message>
+            <source>an MDI line runs</source>
+            <translation>eine MDI-Zeile läuft</translation>
         </message>
     </context>
     <context>
@@ -7987,6 +8107,33 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Send raw bytes: text as it is, \r for CR, &lt;xNN&gt; for any other byte.</source>
             <translation>Rohe Bytes senden: Text wie er ist, \r für CR, &lt;xNN&gt; für jedes andere Byte.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::Workspaces</name>
+        <message>
+            <source>Run</source>
+            <translation>Betrieb</translation>
+        </message>
+        <message>
+            <source>Setup</source>
+            <translation>Einrichten</translation>
+        </message>
+        <message>
+            <source>The program, its preview, the position and the jog pad (Ctrl+1)</source>
+            <translation>Das Programm, seine Vorschau, die Position und das Jog-Feld (Strg+1)</translation>
+        </message>
+        <message>
+            <source>Parameters, drives, records, traffic, charts and status (Ctrl+2)</source>
+            <translation>Parameter, Antriebe, Sätze, Verkehr, Diagramme und Status (Strg+2)</translation>
+        </message>
+        <message>
+            <source>&amp;Run workspace</source>
+            <translation>&amp;Arbeitsbereich Betrieb</translation>
+        </message>
+        <message>
+            <source>&amp;Setup workspace</source>
+            <translation>Arbeitsbereich &amp;Einrichten</translation>
         </message>
     </context>
     <context>

@@ -1,11 +1,13 @@
 // stepdeck: the operator and technician GUI.
-//   stepdeck [--simulate MODEL] [--model MODEL --port PORT] [--machine FILE] [--poll-interval MS]
+//   stepdeck [--demo] [--simulate MODEL] [--model MODEL --port PORT] [--machine FILE]
+//   [--poll-interval MS]
 //   [--screenshot DIR] [--lang en|de]
 #include "../cli/CliArguments.h"
 #include "../common/SignalPipe.h"
 #include "connection/ConnectionBar.h"
 #include "machine/MachineControl.h"
 #include "protocols/Registry.h"
+#include "window/DemoMachine.h"
 #include "window/HelpMenu.h"
 #include "window/MainWindow.h"
 #include "window/ScreenshotScript.h"
@@ -85,7 +87,11 @@ int main(int argc, char** argv)
         QStringLiteral("Open the machine described in FILE (docs/machines.md) and connect its "
                        "controllers."),
         QStringLiteral("FILE"));
-    parser.addOptions({simulate, model, port, machineFile, screenshot, lang, pollInterval});
+    const QCommandLineOption demo(
+        QStringLiteral("demo"),
+        QStringLiteral("Open the built-in demo: a simulated plotting table in mm with a program "
+                       "(what tools/run starts)."));
+    parser.addOptions({simulate, model, port, machineFile, demo, screenshot, lang, pollInterval});
     if (asksForTextOnly(argc, argv)) {
         const QCoreApplication textOnly(argc, argv);
         parser.process(textOnly); // prints help or version (or the usage error) and exits
@@ -135,7 +141,11 @@ int main(int argc, char** argv)
     }
     if (!modelId.isEmpty())
         window.connectionBar()->setSelectedModel(modelId);
-    if (parser.isSet(machineFile)) {
+    if (parser.isSet(demo) && !parser.isSet(machineFile) && portSpec.isEmpty()) {
+        QString error;
+        if (!ui::DemoMachine::open(&window, &error))
+            QTextStream(stderr) << error << "\n";
+    } else if (parser.isSet(machineFile)) {
         // An invalid file is named in the window's message line (and here); nothing is opened.
         if (window.openMachine(parser.value(machineFile)))
             window.machineControl()->connect();

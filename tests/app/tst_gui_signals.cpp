@@ -91,6 +91,7 @@ void TestGuiSignals::startGui(QProcess* gui, const QTemporaryDir& config, const 
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
     env.insert(QStringLiteral("XDG_CONFIG_HOME"), config.path()); // the user's settings
+    env.insert(QStringLiteral("XDG_DATA_HOME"), config.filePath(QStringLiteral("data")));
     gui->setProcessEnvironment(env);
     gui->setProcessChannelMode(QProcess::ForwardedErrorChannel);
     gui->start(guiPath(), args);
@@ -100,19 +101,24 @@ void TestGuiSignals::startGui(QProcess* gui, const QTemporaryDir& config, const 
 void TestGuiSignals::signal_onSimulator_exitsZeroAndSavesSettings_data()
 {
     QTest::addColumn<int>("signalNumber");
-    QTest::newRow("SIGTERM") << int(SIGTERM);
-    QTest::newRow("SIGHUP") << int(SIGHUP);
+    QTest::addColumn<QStringList>("args");
+    const QStringList simulate{QStringLiteral("--simulate"), QStringLiteral("elab")};
+    QTest::newRow("SIGTERM") << int(SIGTERM) << simulate;
+    QTest::newRow("SIGHUP") << int(SIGHUP) << simulate;
+    // tools/run's demo (issue 31): its files are written into the data folder.
+    QTest::newRow("SIGTERM, demo") << int(SIGTERM) << QStringList{QStringLiteral("--demo")};
 }
 
 void TestGuiSignals::signal_onSimulator_exitsZeroAndSavesSettings()
 {
     QFETCH(int, signalNumber);
+    QFETCH(QStringList, args);
     QTemporaryDir config;
     QVERIFY(config.isValid());
     const QString settingsFile = config.filePath(QStringLiteral("StepDeck/StepDeck.conf"));
     QVERIFY(!QFile::exists(settingsFile));
     QProcess gui;
-    startGui(&gui, config, {QStringLiteral("--simulate"), QStringLiteral("elab")});
+    startGui(&gui, config, args);
     QTRY_VERIFY_WITH_TIMEOUT(catchesSignal(gui.processId(), signalNumber), 20000);
 
     QCOMPARE(::kill(pid_t(gui.processId()), signalNumber), 0);
@@ -123,6 +129,11 @@ void TestGuiSignals::signal_onSimulator_exitsZeroAndSavesSettings()
     QFile settings(settingsFile);
     QVERIFY2(settings.open(QIODevice::ReadOnly), qPrintable(settingsFile));
     QVERIFY(settings.readAll().contains("geometry"));
+    if (args.contains(QStringLiteral("--demo"))) {
+        const QString data = config.filePath(QStringLiteral("data/StepDeck/StepDeck/demo/"));
+        for (const char* name : {"demo.machine.json", "demo-table.setup.json", "demo.ngc"})
+            QVERIFY2(QFile::exists(data + QLatin1String(name)), name);
+    }
 }
 
 void TestGuiSignals::sigterm_onPtyDevice_deviceGetsStopThenPortClosed()

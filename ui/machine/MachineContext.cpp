@@ -1,5 +1,6 @@
 #include "MachineContext.h"
 #include "ConnectionMachine.h"
+#include "MachineMdi.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/Machine.h"
 #include "machine/MachineTools.h"
@@ -38,6 +39,7 @@ MachineContext::MachineContext(QObject* parent)
             addKnownParameters(r.value.value<ParameterSet>());
         }
     });
+    m_mdi = new MachineMdi(this, this);
 }
 
 RequestId MachineContext::writeParameters(const ParameterSet& values, bool verify)

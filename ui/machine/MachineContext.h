@@ -11,6 +11,7 @@ enum class PositionKnowledge;
 
 namespace stepdeck::ui {
 
+class MachineMdi;
 class MachineTools;
 class MachineWorkOffsets;
 
@@ -96,6 +97,8 @@ public:
     // one set for the position display, Go to and programs (issue 28, item 3).
     MachineWorkOffsets* workOffsets() const { return m_workOffsets; }
     MachineTools* tools() const { return m_tools; } // the machine's tool table (issue 29)
+    // One G-code line at a time on the machine: the MDI line and Go to (issue 31).
+    MachineMdi* mdi() const { return m_mdi; }
     QString selectedController() const { return m_selectedId; }
     void selectController(const QString& controllerId);
     void connectMachine();
@@ -157,6 +160,7 @@ private:
     QString m_machinePath;
     MachineWorkOffsets* m_workOffsets;
     MachineTools* m_tools;
+    MachineMdi* m_mdi = nullptr;              // made last: it follows machineChanged()
     const ModelInfo* m_singleModel = nullptr; // the connection bar's model while a file is open
     QList<QMetaObject::Connection> m_relay;
     const ModelInfo* m_model = nullptr;

@@ -3,6 +3,7 @@
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineMdi.h"
 #include "machine/MachineWorkOffsets.h"
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -40,6 +41,13 @@ MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, Q
     connect(m_axis, &QComboBox::currentIndexChanged, this, &MachineGoTo::updateUnit);
     connect(context, &MachineContext::machineChanged, this, &MachineGoTo::rebuild);
     connect(offsets, &MachineWorkOffsets::changed, this, &MachineGoTo::updateUnit);
+    connect(context->mdi(), &MachineMdi::started, this, [this](quint64 id) {
+        if (id != m_pending)
+            return;
+        m_moveStarted = true;
+        m_result->setText(m_movingText);
+    });
+    connect(context->mdi(), &MachineMdi::ended, this, &MachineGoTo::onEnded);
     rebuild();
 }
 
@@ -55,8 +63,6 @@ void MachineGoTo::rebuild()
         return;
     for (const machine::MachineAxis& a : m->description().axes)
         m_axis->addItem(a.name, a.name);
-    connect(m, &machine::Machine::moveFinished, this, &MachineGoTo::onFinished,
-            Qt::UniqueConnection);
     updateUnit();
 }
 
@@ -101,38 +107,47 @@ void MachineGoTo::go()
         return;
     }
     const QString axis = m_axis->currentData().toString();
-    QString refusal;
-    // Work coordinates to machine coordinates: the soft limits Machine::move checks are the
-    // machine's.
-    const double target = m_offsets->toMachine(axis, m_target->value());
-    // Refused as a whole before anything is sent: unknown or unreferenced axis, a controller
-    // not connected, a target outside the soft limits (Machine::move).
-    m_pending = m->move({{axis, target}}, true, &refusal);
-    m_pendingAxis = axis;
-    m_pendingTarget = target;
     const machine::MachineAxis* a = m->description().axis(axis);
-    const QString machineTarget = a && a->unit == machine::AxisUnit::Step
-                                      ? QString::number(qRound64(target))
-                                      : QString::number(target, 'f', 3);
+    if (!a)
+        return;
+    const bool steps = a->unit == machine::AxisUnit::Step;
+    // A G0 of its own in G-code's defaults (G90, G21: millimetre axes take mm, rotary axes
+    // degrees, step axes steps), in the active coordinate system, through the same check and
+    // path as a program's G0 (issue 30): refused as a whole before anything is sent when the
+    // axis is not referenced, a controller not connected or the target outside the soft limits.
+    const QString target = QString::number(m_target->value(), 'f', steps ? 0 : 3);
+    QString refusal;
+    m_moveStarted = false;
+    m_pending = m_context->mdi()->runOwnLine(QStringLiteral("G0 %1%2").arg(axis, target), &refusal);
+    m_pendingAxis = axis;
+    // The soft limits and the arrival are judged in machine coordinates.
+    m_pendingTarget = m_offsets->toMachine(axis, m_target->value());
+    const QString machineTarget = steps ? QString::number(qRound64(m_pendingTarget))
+                                        : QString::number(m_pendingTarget, 'f', 3);
     m_go->setEnabled(m_pending == 0);
-    m_result->setText(!m_pending ? tr("Go-to refused: %1").arg(refusal)
-                      : m_offsets->hasOffset(axis)
-                          ? tr("Moving %1 to %2 (work; machine %3)\u2026")
-                                .arg(axis, m_target->text(), machineTarget)
-                          : tr("Moving %1 to %2\u2026").arg(axis, m_target->text()));
+    m_movingText = m_offsets->hasOffset(axis)
+                       ? tr("Moving %1 to %2 (work; machine %3)\u2026")
+                             .arg(axis, m_target->text(), machineTarget)
+                       : tr("Moving %1 to %2\u2026").arg(axis, m_target->text());
+    // Nothing moves before the check has passed (MachineMdi::started).
+    m_result->setText(!m_pending
+                          ? tr("Go-to refused: %1").arg(refusal)
+                          : tr("Checking the go-to of %1 to %2\u2026").arg(axis, m_target->text()));
 }
 
-void MachineGoTo::onFinished(quint64 id, bool ok, const QString& message)
+void MachineGoTo::onEnded(quint64 id, bool ok, const QString& message)
 {
     if (id == 0 || id != m_pending)
         return;
     m_pending = 0;
     m_go->setEnabled(true);
     if (!ok) {
-        m_result->setText(tr("Go-to failed: %1").arg(message));
+        // The check's refusal (nothing sent) or the run's end short of the target.
+        m_result->setText(m_moveStarted ? tr("Go-to failed: %1").arg(message)
+                                        : tr("Go-to refused: %1").arg(message));
         return;
     }
-    // Machine::moveFinished says the axis stands. "Arrived" only where a status read asked
+    // The run's move ended with the axis standing. "Arrived" only where a status read asked
     // for after that counts it at the target: a STOP ends a move short of it, and a board
     // that reports no position (the E-LAB) corrects its count only after the stop
     // (RequestRelPosition), ahead of that read.

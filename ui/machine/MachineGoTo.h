@@ -12,11 +12,12 @@ class ElidedLabel;
 class MachineContext;
 class MachineWorkOffsets;
 
-// Go-to of one machine axis in its unit (issue 19): an absolute target through Machine::move,
-// which refuses it with the reason (nothing sent) unless the axis is referenced and the target
-// within its soft limits. With a work zero set on the axis (MachineWorkOffsets) the target is
-// in work coordinates, and the label says so ("Go to (work)"): it becomes machine
-// coordinates before Machine::move, whose soft limits stay in machine coordinates. Enter in
+// Go-to of one machine axis in its unit (issue 19): an absolute target as a G0 line of its own
+// through MachineMdi (issue 30: the same check and path as a program's G0), which refuses it
+// with the reason (nothing sent) unless the axis is referenced and the target within its soft
+// limits. With a work zero set (MachineWorkOffsets) the target is in work coordinates of the
+// active system, and the label says so ("Go to (work)"); the soft limits stay in machine
+// coordinates. Enter in
 // the target field goes like the button. The line below says what happened, on one line
 // (elided): "arrived" only once the machine confirmed the arrival.
 class MachineGoTo : public QWidget
@@ -40,7 +41,7 @@ protected:
 private:
     void rebuild();
     void updateUnit();
-    void onFinished(quint64 id, bool ok, const QString& message);
+    void onEnded(quint64 id, bool ok, const QString& message); // MachineMdi::ended
     void judgeArrival(bool read); // after the status read that follows the move's end
 
     MachineContext* m_context;
@@ -50,9 +51,11 @@ private:
     QDoubleSpinBox* m_target;
     QPushButton* m_go;
     ElidedLabel* m_result;
-    QString m_pendingAxis;      // the axis of the go-to under way
-    double m_pendingTarget = 0; // its target in machine coordinates (the axis' unit)
-    quint64 m_pending = 0;
+    QString m_pendingAxis;             // the axis of the go-to under way
+    double m_pendingTarget = 0;        // its target in machine coordinates (the axis' unit)
+    quint64 m_pending = 0;             // its line (MachineMdi)
+    bool m_moveStarted = false;        // its check passed and the run began
+    QString m_movingText;              // said once it did
     QMetaObject::Connection m_confirm; // the status read that judges the arrival
 };
 

@@ -7,6 +7,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QVBoxLayout>
 
 namespace stepdeck::ui {
 
@@ -62,20 +63,27 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_progress->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 18);
     m_timeLeft->setMinimumTextWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 30);
 
-    // One row of buttons and progress: the page's editor and preview get the height.
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(0, 0, 0, 0);
+    // Two rows, so that the page fits the Run workspace's width at 1366x768 (issue 31): the
+    // run's buttons and the feed override, then where to start, M1 and the progress.
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(0, 0, 0, 0);
+    rows->setSpacing(2);
+    auto* buttons = new QHBoxLayout;
     for (QPushButton* b : {m_run, m_pause, m_hold, m_resume, m_step, m_abort})
-        row->addWidget(b);
-    row->addSpacing(8);
-    row->addWidget(m_fromLine);
-    row->addWidget(m_runFrom);
-    row->addSpacing(8);
-    row->addWidget(m_optionalStops);
-    row->addWidget(m_feedOverride);
-    row->addSpacing(8);
-    row->addWidget(m_progress, 1);
-    row->addWidget(m_timeLeft);
+        buttons->addWidget(b);
+    buttons->addSpacing(8);
+    buttons->addWidget(m_feedOverride);
+    buttons->addStretch(1);
+    auto* where = new QHBoxLayout;
+    where->addWidget(m_fromLine);
+    where->addWidget(m_runFrom);
+    where->addSpacing(8);
+    where->addWidget(m_optionalStops);
+    where->addSpacing(8);
+    where->addWidget(m_progress, 1);
+    where->addWidget(m_timeLeft);
+    rows->addLayout(buttons);
+    rows->addLayout(where);
 
     connect(m_run, &QPushButton::clicked, this, &ProgramControls::runRequested);
     connect(m_pause, &QPushButton::clicked, this, &ProgramControls::pauseRequested);

@@ -1,6 +1,7 @@
 // ProgramPage, part 1: the layout, the machine the page works on, and the check while editing.
 // The run itself is in ProgramPageRun.cpp.
 #include "ProgramPage.h"
+#include "MdiLine.h"
 #include "ProgramBackgroundCheck.h"
 #include "ProgramCheckStatus.h"
 #include "ProgramControls.h"
@@ -14,6 +15,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineMdi.h"
 #include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
@@ -34,8 +36,9 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this)),
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
       m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
-      m_controls(new ProgramControls(this)), m_recheck(new QTimer(this)),
-      m_checker(new ProgramBackgroundCheck(this)), m_starter(new ProgramStarter(this))
+      m_controls(new ProgramControls(this)), m_mdiLine(new MdiLine(context, this)),
+      m_recheck(new QTimer(this)), m_checker(new ProgramBackgroundCheck(this)),
+      m_starter(new ProgramStarter(this))
 {
     setObjectName(QStringLiteral("programPage"));
     m_files = new ProgramFiles(m_editor, this);
@@ -46,6 +49,10 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     buildLayout();
 
     connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
+    // One run at a time on the machine: the MDI line's or the program's.
+    context->mdi()->setBusyElsewhere(
+        [this] { return isRunning() || isStarting() ? tr("a program runs") : QString(); });
+    connect(context->mdi(), &MachineMdi::busyChanged, this, &ProgramPage::updateControls);
     connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
     connect(m_checker, &ProgramBackgroundCheck::progress, m_checkStatus,
             &ProgramCheckStatus::setProgress);
@@ -130,6 +137,7 @@ void ProgramPage::buildLayout()
     v->setSpacing(3);
     v->addLayout(top);
     v->addWidget(m_controls);
+    v->addWidget(m_mdiLine);
     v->addLayout(lines);
     v->addWidget(split, 1);
 }

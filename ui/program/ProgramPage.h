@@ -18,6 +18,7 @@ namespace stepdeck::ui {
 
 class ElidedLabel;
 class MachineContext;
+class MdiLine;
 class ProgramBackgroundCheck;
 class ProgramStarter;
 class ProgramCheckStatus;
@@ -49,6 +50,7 @@ public:
     ProgramControls* controls() const { return m_controls; }
     ProgramPromptBanner* promptBanner() const { return m_banner; }
     ProgramFiles* files() const { return m_files; }
+    MdiLine* mdiLine() const { return m_mdiLine; }
     program::ProgramRunner* runner() const { return m_runner; }
     QString checkText() const;
     QString messageText() const;
@@ -112,6 +114,7 @@ private:
     ProgramPreviewView* m_preview;
     ProgramPromptBanner* m_banner;
     ProgramControls* m_controls;
+    MdiLine* m_mdiLine;
     QTimer* m_recheck;
     ProgramBackgroundCheck* m_checker;
     ProgramStarter* m_starter;

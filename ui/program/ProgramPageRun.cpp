@@ -13,6 +13,7 @@
 #include "common/ElidedLabel.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "machine/MachineMdi.h"
 #include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramReader.h"
@@ -92,6 +93,10 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
 {
     if (!m_runner || isRunning() || isStarting())
         return false;
+    if (m_context->mdi()->isBusy()) {
+        onStartRefused({program::ProgramError{0, 0, tr("an MDI line runs")}});
+        return false;
+    }
     m_recheck->stop();
     QList<program::ProgramError> errors;
     const std::optional<program::Program> parsed = parse(&errors);
@@ -195,7 +200,8 @@ void ProgramPage::updateControls()
     const bool connected =
         ms != machine::MachineState::Disconnected && ms != machine::MachineState::LinkLost;
     const bool pausePending = m_runner && m_runner->pausePending();
-    m_controls->setState(state, pausePending, m_checkOk && connected && !isStarting());
+    m_controls->setState(state, pausePending,
+                         m_checkOk && connected && !isStarting() && !m_context->mdi()->isBusy());
     if (!m_runner)
         return;
     const int line = m_runner->currentLine();

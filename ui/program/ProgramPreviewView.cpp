@@ -4,7 +4,6 @@
 #include "common/ElidedLabel.h"
 #include <QChart>
 #include <QChartView>
-#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLineSeries>
 #include <QTabWidget>
@@ -73,11 +72,9 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     m_tabs->addTab(extents, tr("Extents"));
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
-    // The coordinates share the figures' line: the page must fit a 768-pixel screen.
-    auto* figures = new QHBoxLayout;
-    figures->addWidget(m_figures, 1);
-    figures->addWidget(m_coordinates, 1);
-    v->addLayout(figures);
+    // One above the other: each in full in the Run workspace's half of the page (issue 31).
+    v->addWidget(m_figures);
+    v->addWidget(m_coordinates);
     v->addWidget(m_tabs, 1);
     clear(tr("No program checked yet."));
 }

@@ -17,11 +17,13 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineControl.h"
 #include "machine/MachineFileActions.h"
+#include "machine/MachineMdi.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
+#include "program/ProgramFiles.h"
 #include "program/ProgramPage.h"
 #include "programs/InputProgramsPage.h"
 #include "records/RecordsPage.h"
@@ -33,6 +35,7 @@
 #include "window/ScreenBound.h"
 #include "window/SimulatorMenu.h"
 #include "window/Translations.h"
+#include "window/Workspaces.h"
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -156,15 +159,42 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
     new ScreenBound(this); // and never grows past it by itself (issue 16)
-    applyDefaultDockSizes();
-    m_defaultState = saveState();
     const QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     onLinkState(LinkState::Disconnected, {});
     m_linkLabel->setText(m_connection->linkText());
     updateTitle();
     updateModelDocks();
+    buildWorkspaces();
+}
+
+void MainWindow::buildWorkspaces()
+{
+    const QStringList run{QStringLiteral("positionDock"), QStringLiteral("referenceDock"),
+                          QStringLiteral("programDock")};
+    QStringList setup;
+    for (QDockWidget* dock : std::as_const(m_docks))
+        if (dock != dockOf(m_programPage))
+            setup << dock->objectName();
+    m_workspaces = new Workspaces(this, run, setup);
+    menuBar()->setCornerWidget(m_workspaces->tabBar(), Qt::TopRightCorner);
+    QAction* first = m_viewMenu->actions().value(0);
+    m_viewMenu->insertAction(first, m_workspaces->action(Workspaces::Workspace::Run));
+    m_viewMenu->insertAction(first, m_workspaces->action(Workspaces::Workspace::Setup));
+    m_viewMenu->insertSeparator(first);
+    connect(m_workspaces, &Workspaces::switched, this, &MainWindow::updateModelDocks);
+    // Once the panels have their rows for the machine's axes.
+    connect(m_context, &MachineContext::machineChanged, m_workspaces, &Workspaces::fitContent,
+            Qt::QueuedConnection);
+    m_workspaces->initialise();
+    // Run becomes the default once there is a job to run or the machine is referenced,
+    // unless the operator chose a workspace by hand (issue 31).
+    const auto suggestRun = [this] { m_workspaces->suggest(Workspaces::Workspace::Run); };
+    connect(m_programPage->files(), &ProgramFiles::loaded, this, suggestRun);
+    connect(m_reference, &ReferencePanel::finished, this, [suggestRun](bool ok) {
+        if (ok)
+            suggestRun();
+    });
 }
 
 MainWindow::~MainWindow() = default;
@@ -269,26 +299,15 @@ void MainWindow::buildDocks()
                                  tr("Program line %1: %2").arg(line).arg(text),
                                  StatusMessages::Severity::Info, 30000);
             });
+    connect(m_context->mdi(), &MachineMdi::operatorMessage, this, [this](int, const QString& text) {
+        m_messages->show(StatusMessages::Owner::General, tr("MDI: %1").arg(text),
+                         StatusMessages::Severity::Info, 30000);
+    });
     tabifyDockWidget(setup, addDock(m_programPage, tr("Program"), QStringLiteral("programDock"),
                                     Qt::BottomDockWidgetArea));
     connect(log, &QDockWidget::visibilityChanged, m_messageLine, &MessageLine::setLogOnScreen);
     setup->raise();
     setDockNestingEnabled(true);
-}
-
-void MainWindow::applyDefaultDockSizes()
-{
-    // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
-    // side docks a third and a fifth of the width, the bottom tabs a third of the height.
-    QDockWidget* position = findChild<QDockWidget*>(QStringLiteral("positionDock"));
-    QDockWidget* status = findChild<QDockWidget*>(QStringLiteral("statusDock"));
-    QDockWidget* setup = findChild<QDockWidget*>(QStringLiteral("setupDock"));
-    // The read-out needs the room (issue 16: its state badge and Zero were cut at 1366x768);
-    // the status lamps arrange themselves in one column when narrow.
-    resizeDocks({position, status},
-                {qBound(220, width() * 32 / 100, 480), qBound(220, width() * 20 / 100, 470)},
-                Qt::Horizontal);
-    resizeDocks({setup}, {qBound(160, height() / 3, 320)}, Qt::Vertical);
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,
@@ -407,10 +426,16 @@ QList<QPair<QString, QWidget*>> MainWindow::pages() const
 
 void MainWindow::raisePage(QWidget* page)
 {
-    if (QDockWidget* dock = dockOf(page)) {
-        dock->show();
-        dock->raise();
-    }
+    QDockWidget* dock = dockOf(page);
+    if (!dock)
+        return;
+    // A page of the other workspace: that workspace comes up, with the page on top.
+    if (m_workspaces && dock->isHidden() && !m_workspaces->belongsToCurrent(dock))
+        m_workspaces->switchTo(m_workspaces->current() == Workspaces::Workspace::Run
+                                   ? Workspaces::Workspace::Setup
+                                   : Workspaces::Workspace::Run);
+    dock->show();
+    dock->raise();
 }
 
 QDockWidget* MainWindow::addPage(QWidget* page, const QString& title, const QString& name,
@@ -430,9 +455,10 @@ void MainWindow::stopAll()
     // Every controller at once; sent, not confirmed: "stopped" follows only once each
     // reports standstill (MachineControl).
     m_machineControl->stop();
-    // Then a running program ends as aborted (not failed by the stop it did not ask for): its
-    // results come later, queued from the controller threads.
+    // Then a running program or MDI line ends as aborted (not failed by the stop it did not
+    // ask for): its results come later, queued from the controller threads.
     m_programPage->abortRun();
+    m_context->mdi()->abort();
 }
 
 void MainWindow::panicAll()
@@ -441,6 +467,7 @@ void MainWindow::panicAll()
     m_machineControl->panic(); // every controller at once
     // After the panic, so that the program's own stop never goes ahead of it.
     m_programPage->abortRun();
+    m_context->mdi()->abort();
     m_reference->stopped(tr("Referencing stopped."));
 }
 
@@ -485,6 +512,7 @@ void MainWindow::closeMachine()
 {
     m_jogPanel->releaseAll();
     m_programPage->abortRun();
+    m_context->mdi()->abort();
     m_reference->stopped(tr("Referencing stopped."));
     m_context->closeMachine();
 }
@@ -509,10 +537,7 @@ void MainWindow::updateTitle()
 
 void MainWindow::resetLayout()
 {
-    restoreState(m_defaultState);
-    applyDefaultDockSizes(); // for the window's size now
-    for (QDockWidget* dock : std::as_const(m_docks))
-        dock->show();
+    m_workspaces->resetCurrent(); // its default, sized for the window now
     updateModelDocks();
 }
 
@@ -524,10 +549,13 @@ void MainWindow::updateModelDocks()
                                                  {m_recordsDock, caps.records},
                                                  {m_programsDock, caps.inputPrograms}};
     for (const auto& [dock, available] : docks) {
+        const bool wasAvailable = dock->toggleViewAction()->isVisible();
         dock->toggleViewAction()->setVisible(available);
         if (!available)
             dock->hide();
-        else if (dock->isHidden())
+        // A page the model brings shows where it belongs (the Setup workspace), once.
+        else if (!wasAvailable && dock->isHidden() &&
+                 (!m_workspaces || m_workspaces->belongsToCurrent(dock)))
             dock->show();
     }
 }
@@ -544,7 +572,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
+    m_workspaces->save(); // each workspace's layout
     QMainWindow::closeEvent(event);
 }
 

@@ -37,6 +37,7 @@ class StatusMessages;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
+class Workspaces;
 
 // The main window: connection bar, STOP/PANIC and the jog panel in the centre (always
 // visible), and docks for position, referencing, status, setup, traffic and charts.
@@ -79,6 +80,7 @@ public:
     StatusMessages* messages() const { return m_messages; }
     MessageLine* messageLine() const { return m_messageLine; }
     MessageLog* messageLog() const { return m_log; }
+    Workspaces* workspaces() const { return m_workspaces; } // Run and Setup (issue 31)
 
     // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
     // central jog panel).
@@ -113,7 +115,7 @@ private:
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);
     static QWidget* pageOf(QDockWidget* dock);
-    void applyDefaultDockSizes();
+    void buildWorkspaces();
     void updateTitle();
     void updateModelDocks(); // docks only some models have (drives, records)
     void onLinkState(LinkState state, const QString& reason);
@@ -159,7 +161,7 @@ private:
     StatusMessages* m_messages;
     MessageLine* m_messageLine;
     MessageLog* m_log = nullptr;
-    QByteArray m_defaultState;
+    Workspaces* m_workspaces = nullptr;
 };
 
 } // namespace stepdeck::ui

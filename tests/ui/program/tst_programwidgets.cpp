@@ -39,7 +39,7 @@ private Q_SLOTS:
     void times();
     void controls_states_onlyUsefulButtonsEnabled_data();
     void controls_states_onlyUsefulButtonsEnabled();
-    void controls_optionalStops_onByDefaultRememberedInOneRow();
+    void controls_optionalStops_onByDefaultRememberedBesideRunFrom();
     void banner_prompt_keepsItsHeight();
     void backgroundCheck_twoRequests_onlyTheNewestReports();
     void progress_blocksOfARepeat_timeLeftFollowsThePath();
@@ -187,8 +187,9 @@ void TestProgramWidgets::controls_states_onlyUsefulButtonsEnabled()
 }
 
 // Issue 29: the optional-stop switch (M1) is on when nothing was stored, says when it is
-// switched, is remembered for the next window, and sits in the controls' one row.
-void TestProgramWidgets::controls_optionalStops_onByDefaultRememberedInOneRow()
+// switched, is remembered for the next window, and sits in the row of "Run from line" (the
+// controls take two rows since issue 31, so that the page fits the Run workspace).
+void TestProgramWidgets::controls_optionalStops_onByDefaultRememberedBesideRunFrom()
 {
     QSettings().remove(QStringLiteral("programs/optionalStops"));
     {
@@ -199,9 +200,9 @@ void TestProgramWidgets::controls_optionalStops_onByDefaultRememberedInOneRow()
         controls.resize(controls.sizeHint());
         controls.show();
         QVERIFY(QTest::qWaitForWindowExposed(&controls));
-        // One row: the switch beside the buttons, no taller than they are.
+        // The switch beside "Run from line", no taller than it is.
         const QRect box = controls.optionalStopsBox()->geometry();
-        const QRect run = controls.runButton()->geometry();
+        const QRect run = controls.runFromButton()->geometry();
         QVERIFY2(box.top() >= run.top() - 2 && box.bottom() <= run.bottom() + 2,
                  qPrintable(QStringLiteral("box %1..%2, run %3..%4")
                                 .arg(box.top())

@@ -25,3 +25,15 @@ stepdeck_add_test(tst_menuclickthrough SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_men
 stepdeck_add_test(tst_helpmenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_helpmenu.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# Issue 31: the Run and Setup workspaces on a 1366x768 screen with a machine of two controllers
+# on pseudo-terminals.
+stepdeck_add_test(tst_workspaces SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_workspaces.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
+# Issue 31: the built-in demo that tools/run opens.
+stepdeck_add_test(tst_demomachine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_demomachine.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

@@ -1,0 +1,182 @@
+// The Run and Setup workspaces (issue 31) on a 1366x768 laptop screen, with a machine of two
+// controllers and four axes (MachineWindowRig) and a program open: one click or key switches,
+// each shows its docks, each remembers its layout (also across sessions), a program opened
+// brings up Run unless the operator chose by hand, and the Run workspace fits: no scroll bar
+// in its docks and no text cut.
+#include "../LaptopScreen.h"
+#include "../LayoutChecks.h"
+#include "../machine/MachineWindowRig.h"
+#include "machine/MachineContext.h"
+#include "program/ProgramEditor.h"
+#include "program/ProgramFiles.h"
+#include "program/ProgramPage.h"
+#include "window/Translations.h"
+#include "window/Workspaces.h"
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTabBar>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+using Workspace = ui::Workspaces::Workspace;
+
+class TestWorkspaces : public QObject
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init() { QVERIFY(m_rig.start()); }
+    void cleanup() { m_rig.stop(); }
+    void firstStart_setup_thenKeysAndTabsSwitch();
+    void layout_rememberedPerWorkspaceAndAcrossSessions();
+    void programOpened_bringsUpRun_unlessChosenByHand();
+    void run_at1366x768_noScrollBarNoTextCut_data();
+    void run_at1366x768_noScrollBarNoTextCut();
+
+private:
+    ui::MainWindow* window() const { return m_rig.window(); }
+    ui::Workspaces* workspaces() const { return window()->workspaces(); }
+    QDockWidget* dock(const char* name) const
+    {
+        return window()->findChild<QDockWidget*>(QLatin1String(name));
+    }
+    bool shown(const char* name) const { return dock(name) && dock(name)->isVisible(); }
+    QString programFile(const QString& text) const
+    {
+        return m_rig.writeFile(text.toUtf8(), QStringLiteral("job.ngc"));
+    }
+    // Docks of the window whose page scrolls, "name: w x h in w x h".
+    QStringList scrollingDocks() const
+    {
+        QStringList out;
+        for (QDockWidget* d : window()->findChildren<QDockWidget*>()) {
+            auto* area = qobject_cast<QScrollArea*>(d->widget());
+            if (!d->isVisible() || !area)
+                continue;
+            if (area->verticalScrollBar()->isVisible() || area->horizontalScrollBar()->isVisible())
+                out << QStringLiteral("%1: %2x%3 in %4x%5")
+                           .arg(d->objectName())
+                           .arg(area->widget()->minimumSizeHint().width())
+                           .arg(area->widget()->minimumSizeHint().height())
+                           .arg(area->viewport()->width())
+                           .arg(area->viewport()->height());
+        }
+        return out;
+    }
+    void saveShot(const QString& name) const
+    {
+        const QByteArray dir = qgetenv("STEPDECK_SHOT_DIR");
+        if (!dir.isEmpty())
+            window()->grab().save(QString::fromLocal8Bit(dir) + QLatin1Char('/') + name);
+    }
+
+    MachineWindowRig m_rig;
+};
+
+void TestWorkspaces::firstStart_setup_thenKeysAndTabsSwitch()
+{
+    // Nothing referenced, no program: the setup pages (where a new machine starts).
+    QCOMPARE(workspaces()->current(), Workspace::Setup);
+    QVERIFY(shown("setupDock"));
+    QVERIFY(!shown("programDock"));
+    QTest::keyClick(window(), Qt::Key_1, Qt::ControlModifier);
+    QCOMPARE(workspaces()->current(), Workspace::Run);
+    QCOMPARE(workspaces()->tabBar()->currentIndex(), 0);
+    for (const char* name : {"programDock", "positionDock", "referenceDock"})
+        QVERIFY2(shown(name), name);
+    for (const char* name : {"setupDock", "trafficDock", "chartsDock", "statusDock"})
+        QVERIFY2(!shown(name), name);
+    // The tab bar in the menu bar's corner: one click.
+    QTabBar* tabs = workspaces()->tabBar();
+    QVERIFY(tabs->isVisible());
+    QTest::mouseClick(tabs, Qt::LeftButton, {}, tabs->tabRect(1).center());
+    QCOMPARE(workspaces()->current(), Workspace::Setup);
+    QVERIFY(shown("setupDock"));
+    QVERIFY(!shown("programDock"));
+    QTest::keyClick(window(), Qt::Key_1, Qt::ControlModifier);
+    QTest::keyClick(window(), Qt::Key_2, Qt::ControlModifier);
+    QCOMPARE(workspaces()->current(), Workspace::Setup);
+}
+
+void TestWorkspaces::layout_rememberedPerWorkspaceAndAcrossSessions()
+{
+    workspaces()->switchTo(Workspace::Run);
+    dock("referenceDock")->hide(); // the operator's change to Run
+    workspaces()->switchTo(Workspace::Setup);
+    QVERIFY(shown("referenceDock")); // Setup's own layout
+    dock("chartsDock")->raise();
+    workspaces()->switchTo(Workspace::Run);
+    QVERIFY(!shown("referenceDock"));
+    QVERIFY(shown("programDock"));
+    // Another session: the window opens in the workspace it closed in, each as it was left.
+    window()->close();
+    m_rig.f = std::make_unique<UiFixture>();
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QCOMPARE(workspaces()->current(), Workspace::Run);
+    QVERIFY(!shown("referenceDock"));
+    QVERIFY(shown("programDock"));
+    workspaces()->switchTo(Workspace::Setup);
+    QVERIFY(shown("referenceDock"));
+    QVERIFY(!shown("programDock"));
+    // View > Reset layout: the current workspace's default.
+    window()->resetLayout();
+    QVERIFY(shown("setupDock"));
+    workspaces()->switchTo(Workspace::Run);
+    window()->resetLayout();
+    QVERIFY(shown("referenceDock"));
+}
+
+void TestWorkspaces::programOpened_bringsUpRun_unlessChosenByHand()
+{
+    QVERIFY(window()->programPage()->files()->load(programFile(QStringLiteral("G0 X1\nM2\n"))));
+    QCOMPARE(workspaces()->current(), Workspace::Run);
+    QVERIFY(shown("programDock"));
+    // Chosen by hand: the next program does not take the workspace away.
+    QTest::keyClick(window(), Qt::Key_2, Qt::ControlModifier);
+    QVERIFY(window()->programPage()->files()->load(programFile(QStringLiteral("G0 X2\nM2\n"))));
+    QCOMPARE(workspaces()->current(), Workspace::Setup);
+}
+
+void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << QStringLiteral("en");
+    QTest::newRow("de") << QStringLiteral("de");
+}
+
+void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut()
+{
+    QFETCH(QString, language);
+    // The window in that language (built again: its texts are set when it is made).
+    ui::translations::install(qApp, language);
+    m_rig.f = std::make_unique<UiFixture>();
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable()); // an arc needs its plane's positions known
+    // A pocket's outline (relative: the rotary axis is not referenced) and a turn of A.
+    QVERIFY(window()->programPage()->files()->load(programFile(QStringLiteral(
+        "(Pocket outline, in the style of a CAM post)\nG21 G91 G17\nG0 Z2\nG0 X5 Y5\n"
+        "G1 Z-3 F6\nG1 X3\nG2 X3 Y3 I0 J3\nG1 X-6\nG1 Y-3\nG0 Z3\nG0 A90\nM2\n"))));
+    QCOMPARE(workspaces()->current(), Workspace::Run);
+    QTRY_VERIFY(!window()->programPage()->isChecking());
+    // The layout settles (the read-out's height follows the machine's axes, queued).
+    QTRY_VERIFY2(scrollingDocks().isEmpty(),
+                 qPrintable(scrollingDocks().join(QStringLiteral("; "))));
+    saveShot(QStringLiteral("run-1366x768%1.png")
+                 .arg(language == QLatin1String("en") ? QString() : QLatin1Char('-') + language));
+    QStringList cut;
+    for (const char* name : {"positionDock", "referenceDock", "programDock"})
+        cut += clippedTexts(dock(name));
+    cut += clippedTexts(window()->centralWidget());
+    QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+    ui::translations::install(qApp, QStringLiteral("en"));
+}
+
+int main(int argc, char** argv)
+{
+    return runOnLaptopScreen<TestWorkspaces>(argc, argv);
+}
+#include "tst_workspaces.moc"

@@ -1,0 +1,217 @@
+#include "Workspaces.h"
+#include <QAction>
+#include <QActionGroup>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QScrollArea>
+#include <QSettings>
+#include <QTabBar>
+
+namespace stepdeck::ui {
+
+namespace {
+// A layout's version: a layout saved by another arrangement of docks is not restored.
+constexpr int kLayoutVersion = 31;
+const char* const kKeys[2] = {"window/workspace/run", "window/workspace/setup"};
+const char* const kCurrentKey = "window/workspace/current";
+} // namespace
+
+Workspaces::Workspaces(QMainWindow* window, const QStringList& runDocks,
+                       const QStringList& setupDocks)
+    : QObject(window), m_window(window), m_tabs(new QTabBar(window))
+{
+    m_docks[0] = runDocks;
+    m_docks[1] = setupDocks;
+    m_tabs->setObjectName(QStringLiteral("workspaceTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->setDrawBase(false);
+    m_tabs->setFocusPolicy(Qt::NoFocus); // the arrows keep jogging
+    m_tabs->addTab(tr("Run"));
+    m_tabs->addTab(tr("Setup"));
+    m_tabs->setTabToolTip(0, tr("The program, its preview, the position and the jog pad "
+                                "(Ctrl+1)"));
+    m_tabs->setTabToolTip(1, tr("Parameters, drives, records, traffic, charts and status "
+                                "(Ctrl+2)"));
+    auto* group = new QActionGroup(this);
+    const QString names[2] = {tr("&Run workspace"), tr("&Setup workspace")};
+    const QKeySequence keys[2] = {QKeySequence(Qt::CTRL | Qt::Key_1),
+                                  QKeySequence(Qt::CTRL | Qt::Key_2)};
+    for (int i = 0; i < 2; ++i) {
+        m_actions[i] = new QAction(names[i], this);
+        m_actions[i]->setCheckable(true);
+        m_actions[i]->setShortcut(keys[i]);
+        m_actions[i]->setShortcutContext(Qt::ApplicationShortcut);
+        group->addAction(m_actions[i]);
+        const Workspace w = i == 0 ? Workspace::Run : Workspace::Setup;
+        connect(m_actions[i], &QAction::triggered, this, [this, w] {
+            m_byHand = true;
+            switchTo(w);
+        });
+        window->addAction(m_actions[i]);
+    }
+    connect(m_tabs, &QTabBar::tabBarClicked, this, [this](int i) {
+        if (i < 0)
+            return;
+        m_byHand = true;
+        switchTo(i == 0 ? Workspace::Run : Workspace::Setup);
+    });
+}
+
+QAction* Workspaces::action(Workspace workspace) const
+{
+    return m_actions[index(workspace)];
+}
+
+bool Workspaces::belongsToCurrent(QDockWidget* dock) const
+{
+    return dock && m_docks[index(m_current)].contains(dock->objectName());
+}
+
+QDockWidget* Workspaces::dock(const QString& name) const
+{
+    return m_window->findChild<QDockWidget*>(name);
+}
+
+QByteArray Workspaces::defaultLayout(Workspace workspace)
+{
+    const QStringList& shown = m_docks[index(workspace)];
+    for (QDockWidget* d : m_window->findChildren<QDockWidget*>())
+        d->setVisible(shown.contains(d->objectName()) && d->toggleViewAction()->isVisible());
+    m_current = workspace;
+    setCorners(workspace);
+    arrange(workspace);
+    return m_window->saveState(kLayoutVersion);
+}
+
+void Workspaces::setCorners(Workspace workspace)
+{
+    // Run: the position column runs the whole height, the program spans the rest below the
+    // centre. Setup: the setup pages span the whole width below.
+    m_window->setCorner(Qt::BottomLeftCorner, workspace == Workspace::Run
+                                                  ? Qt::LeftDockWidgetArea
+                                                  : Qt::BottomDockWidgetArea);
+}
+
+void Workspaces::arrange(Workspace workspace)
+{
+    const int width = m_window->width();
+    const int height = m_window->height();
+    QDockWidget* position = dock(QStringLiteral("positionDock"));
+    if (workspace == Workspace::Run) {
+        // The program (its lines and preview) gets half the height; the position the left
+        // column, the read-out's room (issue 16).
+        QDockWidget* program = dock(QStringLiteral("programDock"));
+        QDockWidget* reference = dock(QStringLiteral("referenceDock"));
+        m_window->resizeDocks({position}, {qBound(300, width * 30 / 100, 480)}, Qt::Horizontal);
+        m_window->resizeDocks({program}, {qBound(200, height * 48 / 100, 600)}, Qt::Vertical);
+        Q_UNUSED(reference)
+        fitContent();
+        return;
+    }
+    // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
+    // side docks a third and a fifth of the width, the bottom tabs a third of the height. The
+    // status lamps arrange themselves in one column when narrow.
+    QDockWidget* status = dock(QStringLiteral("statusDock"));
+    QDockWidget* setup = dock(QStringLiteral("setupDock"));
+    m_window->resizeDocks({position, status},
+                          {qBound(220, width * 32 / 100, 480), qBound(220, width * 20 / 100, 470)},
+                          Qt::Horizontal);
+    m_window->resizeDocks({setup}, {qBound(160, height / 3, 320)}, Qt::Vertical);
+}
+
+void Workspaces::initialise()
+{
+    // Both defaults from the layout as built (every dock in place), the Setup one first.
+    const QByteArray built = m_window->saveState(kLayoutVersion);
+    m_default[1] = defaultLayout(Workspace::Setup);
+    m_window->restoreState(built, kLayoutVersion);
+    m_default[0] = defaultLayout(Workspace::Run);
+    const QSettings settings;
+    for (int i = 0; i < 2; ++i) {
+        const QByteArray saved = settings.value(QLatin1String(kKeys[i])).toByteArray();
+        m_state[i] = saved.isEmpty() ? m_default[i] : saved;
+    }
+    const bool run =
+        settings.value(QLatin1String(kCurrentKey), QStringLiteral("setup")).toString() ==
+        QLatin1String("run");
+    const Workspace start = run ? Workspace::Run : Workspace::Setup;
+    apply(start, m_state[index(start)]);
+    announce();
+}
+
+void Workspaces::apply(Workspace workspace, const QByteArray& state)
+{
+    setCorners(workspace);
+    // A layout that does not restore (another version) falls back to the default.
+    if (!m_window->restoreState(state, kLayoutVersion))
+        m_window->restoreState(m_default[index(workspace)], kLayoutVersion);
+    m_current = workspace;
+}
+
+void Workspaces::switchTo(Workspace workspace)
+{
+    if (workspace != m_current) {
+        m_state[index(m_current)] = m_window->saveState(kLayoutVersion);
+        apply(workspace, m_state[index(workspace)]);
+    }
+    announce();
+}
+
+void Workspaces::announce()
+{
+    m_tabs->setCurrentIndex(index(m_current));
+    m_actions[index(m_current)]->setChecked(true);
+    // Once the restored layout has its geometry.
+    QMetaObject::invokeMethod(this, &Workspaces::fitContent, Qt::QueuedConnection);
+    Q_EMIT switched(m_current);
+}
+
+void Workspaces::suggest(Workspace workspace)
+{
+    if (!m_byHand && workspace != m_current)
+        switchTo(workspace);
+}
+
+void Workspaces::resetCurrent()
+{
+    m_state[index(m_current)] = m_default[index(m_current)];
+    apply(m_current, m_default[index(m_current)]);
+    arrange(m_current); // for the window's size now
+    announce();
+}
+
+void Workspaces::fitContent()
+{
+    QDockWidget* position = dock(QStringLiteral("positionDock"));
+    QDockWidget* reference = dock(QStringLiteral("referenceDock"));
+    auto* scroll = position ? qobject_cast<QScrollArea*>(position->widget()) : nullptr;
+    if (m_current != Workspace::Run || !scroll || !scroll->widget() || !reference ||
+        !position->isVisible() || !reference->isVisible() || position->isFloating() ||
+        reference->isFloating())
+        return;
+    // The read-out as high as its content asks (every axis, Go to), referencing below it.
+    const int needed = scroll->widget()->minimumSizeHint().height() +
+                       (position->height() - scroll->viewport()->height());
+    const int column = position->height() + reference->height();
+    m_window->resizeDocks({position, reference}, {needed, qMax(0, column - needed)}, Qt::Vertical);
+    // As wide as its content asks, too (longer German texts), at least as wide as it is.
+    const int wide = scroll->widget()->minimumSizeHint().width() +
+                     (position->width() - scroll->viewport()->width());
+    if (wide > position->width())
+        m_window->resizeDocks({position}, {wide}, Qt::Horizontal);
+}
+
+void Workspaces::save() const
+{
+    QSettings settings;
+    for (int i = 0; i < 2; ++i) {
+        const QByteArray state =
+            i == index(m_current) ? m_window->saveState(kLayoutVersion) : m_state[i];
+        settings.setValue(QLatin1String(kKeys[i]), state);
+    }
+    settings.setValue(QLatin1String(kCurrentKey), m_current == Workspace::Run
+                                                      ? QStringLiteral("run")
+                                                      : QStringLiteral("setup"));
+}
+
+} // namespace stepdeck::ui
