@@ -16,9 +16,11 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -77,15 +79,14 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     connect(m_otherAxis, &QComboBox::activated, this,
             [this] { m_jog->axisMap()->setOtherStickAxis(m_otherAxis->currentText()); });
     layout->addLayout(pads, 3);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidget(buildSidePanel());
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // Never clip the controls (longer labels in German): the pads give way instead.
-    scroll->setMinimumWidth(qMax(300, scroll->widget()->minimumSizeHint().width() +
-                                          scroll->verticalScrollBar()->sizeHint().width() + 6));
-    layout->addWidget(scroll, 2);
+    m_sideScroll = new QScrollArea(this);
+    m_sideScroll->setObjectName(QStringLiteral("jogSideScroll"));
+    m_sideScroll->setWidget(buildSidePanel());
+    m_sideScroll->setWidgetResizable(true);
+    m_sideScroll->setFrameShape(QFrame::NoFrame);
+    m_sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    arrangeSide(false);
+    layout->addWidget(m_sideScroll, 2);
 
     connect(m_settings, &JogSettingsWidget::responseChanged, this, [this](const JogResponse& r) {
         for (PadJogSource* source : std::as_const(m_padSources))
@@ -146,16 +147,82 @@ void JogPanel::showKeyboardState()
     setStyleSheetIfChanged(m_keyboardState, QStringLiteral("QLabel { %1 }").arg(style));
 }
 
+void JogPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitSide();
+}
+
+void JogPanel::fitSide()
+{
+    // Side by side where one column does not fit the height (the Run workspace at 1366x768,
+    // issue 31: every jog control visible without scrolling); the decision follows the height
+    // only, so the width it asks never turns it back.
+    const int spacing = m_sideGrid->verticalSpacing();
+    const int oneColumn = m_sideA->minimumSizeHint().height() +
+                          m_sideB->minimumSizeHint().height() +
+                          m_sideC->minimumSizeHint().height() + 2 * spacing;
+    // Only where the pads keep their room beside the columns (they are what the operator
+    // holds); otherwise the column scrolls.
+    auto* row = qobject_cast<QHBoxLayout*>(layout());
+    const int padsMinimum = row ? row->itemAt(0)->minimumSize().width() : 0;
+    const QMargins margins = contentsMargins() + (row ? row->contentsMargins() : QMargins());
+    const int room =
+        width() - margins.left() - margins.right() - padsMinimum - (row ? row->spacing() : 0);
+    arrangeSide(oneColumn > m_sideScroll->height() && room >= sideWidth(true));
+}
+
+int JogPanel::sideWidth(bool sideBySide) const
+{
+    const int a = m_sideA->minimumSizeHint().width();
+    const int b = m_sideB->minimumSizeHint().width();
+    const int c = m_sideC->minimumSizeHint().width();
+    const int content =
+        sideBySide ? a + b + c + 2 * m_sideGrid->horizontalSpacing() : qMax(a, qMax(b, c));
+    // Side by side nothing scrolls: no room for a scroll bar.
+    return qMax(300, content + 6 +
+                         (sideBySide ? 0 : m_sideScroll->verticalScrollBar()->sizeHint().width()));
+}
+
+void JogPanel::arrangeSide(bool sideBySide)
+{
+    if (sideBySide == m_sideBySide && m_sideGrid->indexOf(m_sideC) >= 0)
+        return;
+    m_sideBySide = sideBySide;
+    m_sideGrid->removeWidget(m_sideB);
+    m_sideGrid->removeWidget(m_sideC);
+    m_sideGrid->addWidget(m_sideB, sideBySide ? 0 : 1, sideBySide ? 1 : 0);
+    m_sideGrid->addWidget(m_sideC, sideBySide ? 0 : 2, sideBySide ? 2 : 0);
+    m_sideGrid->setRowStretch(3, 1);
+    // Never clip the controls (longer labels in German): the pads give way instead.
+    m_sideScroll->setMinimumWidth(sideWidth(sideBySide));
+    // Side by side, the columns share the width with the pads: each wide enough that its
+    // texts need few lines.
+    if (auto* row = qobject_cast<QHBoxLayout*>(layout()))
+        row->setStretch(1, sideBySide ? 3 : 2);
+}
+
 QWidget* JogPanel::buildSidePanel()
 {
     auto* side = new QWidget(this);
-    auto* v = new QVBoxLayout(side);
+    m_sideGrid = new QGridLayout(side);
+    m_sideGrid->setContentsMargins(0, 0, 0, 0);
+    // A: what the jog does (velocity, override); B: keyboard jog and settings; C: steps.
+    m_sideA = new QWidget(side);
+    m_sideB = new QWidget(side);
+    m_sideC = new QWidget(side);
+    m_sideGrid->addWidget(m_sideA, 0, 0);
+    auto* vc = new QVBoxLayout(m_sideC);
+    vc->setContentsMargins(0, 0, 0, 0);
+    auto* va = new QVBoxLayout(m_sideA);
+    va->setContentsMargins(0, 0, 0, 0);
+    auto* v = new QVBoxLayout(m_sideB);
     v->setContentsMargins(0, 0, 0, 0);
 
-    m_velocity->setParent(side);
-    v->addWidget(m_velocity);
+    m_velocity->setParent(m_sideA);
+    va->addWidget(m_velocity);
 
-    auto* speed = new QGroupBox(tr("Speed override"), side);
+    auto* speed = new QGroupBox(tr("Speed override"), m_sideA);
     auto* speedRows = new QVBoxLayout(speed);
     auto* sv = new QHBoxLayout;
     speedRows->addLayout(sv);
@@ -176,7 +243,8 @@ QWidget* JogPanel::buildSidePanel()
     applyOverride(m_override->value());
     // The stopping distance at this speed (issue 28 item 6), below the slider that sets it.
     speedRows->addWidget(m_stopDistance);
-    v->addWidget(speed);
+    va->addWidget(speed);
+    va->addStretch(1);
 
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
     m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
@@ -209,7 +277,9 @@ QWidget* JogPanel::buildSidePanel()
     m_refusal->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
     v->addWidget(m_refusal);
-    v->addWidget(m_incremental);
+    m_incremental->setParent(m_sideC);
+    vc->addWidget(m_incremental);
+    vc->addStretch(1);
     // Tuning lives in a dialog: the panel stays narrow enough for the pads.
     m_settingsDialog->setWindowTitle(tr("Jog settings"));
     auto* dialogLayout = new QVBoxLayout(m_settingsDialog);
@@ -217,7 +287,7 @@ QWidget* JogPanel::buildSidePanel()
     auto* close = new QDialogButtonBox(QDialogButtonBox::Close, m_settingsDialog);
     connect(close, &QDialogButtonBox::rejected, m_settingsDialog, &QDialog::hide);
     dialogLayout->addWidget(close);
-    auto* settingsButton = new QPushButton(tr("Jog settings\u2026"), side);
+    auto* settingsButton = new QPushButton(tr("Jog settings\u2026"), m_sideB);
     settingsButton->setFocusPolicy(Qt::NoFocus);
     settingsButton->setToolTip(tr("Max jog speed per axis, dead zone, response curve, keyboard "
                                   "speed"));
@@ -262,6 +332,8 @@ void JogPanel::rebuild()
     }
     m_otherAxis->setVisible(!choices.isEmpty());
     showKeyboardState();
+    // The velocity rows follow the axes: the side's columns once they are laid out.
+    QMetaObject::invokeMethod(this, &JogPanel::fitSide, Qt::QueuedConnection);
 }
 
 void JogPanel::releaseAll()

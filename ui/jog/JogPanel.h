@@ -5,6 +5,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
+class QScrollArea;
 class QDialog;
 class QLabel;
 class QSlider;
@@ -53,8 +55,14 @@ public:
 public Q_SLOTS:
     void releaseAll(); // pads back to centre and every jog input released
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     QWidget* buildSidePanel();
+    void fitSide(); // one column, or side by side where one does not fit the height
+    void arrangeSide(bool sideBySide);
+    int sideWidth(bool sideBySide) const; // the side's minimum width either way
     void rebuild();
     void onStatus();
     void showRefusal(const QString& reason);
@@ -83,6 +91,12 @@ private:
     IncrementalJogWidget* m_incremental;
     QDialog* m_settingsDialog;
     JogSettingsWidget* m_settings;
+    QScrollArea* m_sideScroll = nullptr;
+    QGridLayout* m_sideGrid = nullptr;
+    QWidget* m_sideA = nullptr; // the velocity and the speed override
+    QWidget* m_sideB = nullptr; // keyboard jog and the settings
+    QWidget* m_sideC = nullptr; // incremental jog
+    bool m_sideBySide = false;
 };
 
 } // namespace stepdeck::ui

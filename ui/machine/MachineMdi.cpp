@@ -39,6 +39,7 @@ void MachineMdi::onMachineChanged()
         return;
     m_runner = new program::ProgramRunner(machine, this);
     m_runnerMachine = machine;
+    m_runner->setFeedOverride(m_feedOverride);
     connect(m_runner, &program::ProgramRunner::finished, this, &MachineMdi::onFinished);
     connect(m_runner, &program::ProgramRunner::paused, this, [this](int, const QString& text) {
         if (m_runner->pausedAtOperatorStop())
@@ -126,6 +127,13 @@ void MachineMdi::end(bool ok, const QString& message)
     }
     Q_EMIT busyChanged(false);
     Q_EMIT ended(id, ok, message);
+}
+
+void MachineMdi::setFeedOverride(int percent)
+{
+    m_feedOverride = percent;
+    if (m_runner)
+        m_runner->setFeedOverride(percent);
 }
 
 void MachineMdi::resume()

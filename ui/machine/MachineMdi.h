@@ -35,6 +35,9 @@ public:
     quint64 runLine(const QString& line, QString* refusal);
     // A line of its own (Go to), in G-code's defaults; the MDI's state and history unchanged.
     quint64 runOwnLine(const QString& line, QString* refusal);
+    // The window's feed override (10..200 %, the Program page's), for the lines' feed moves as
+    // for a program's.
+    void setFeedOverride(int percent);
     void resume(); // a line held at M0 or M6 goes on
     void abort();  // the window's STOP and PANIC, a closed machine
 
@@ -65,6 +68,7 @@ private:
     QPointer<QObject> m_runnerMachine;
     program::MdiSession m_session;
     std::function<QString()> m_busyElsewhere;
+    int m_feedOverride = 100;
     quint64 m_lastId = 0;
     quint64 m_current = 0;       // the line being checked or run (0: none)
     bool m_currentIsMdi = false; // its state is taken when it finishes

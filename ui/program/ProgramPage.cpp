@@ -206,6 +206,7 @@ void ProgramPage::connectFeedControls()
     connect(m_controls, &ProgramControls::feedOverrideChanged, this, [this](int percent) {
         if (m_runner)
             m_runner->setFeedOverride(percent);
+        m_context->mdi()->setFeedOverride(percent); // MDI lines run at it too
     });
 }
 

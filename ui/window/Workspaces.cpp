@@ -98,12 +98,13 @@ void Workspaces::arrange(Workspace workspace)
     const int height = m_window->height();
     QDockWidget* position = dock(QStringLiteral("positionDock"));
     if (workspace == Workspace::Run) {
-        // The program (its lines and preview) gets half the height; the position the left
+        // The program (its lines and preview) gets 37 % of the height, the centre (the jog
+        // pad and its controls) the rest above it; the position the left
         // column, the read-out's room (issue 16).
         QDockWidget* program = dock(QStringLiteral("programDock"));
         QDockWidget* reference = dock(QStringLiteral("referenceDock"));
         m_window->resizeDocks({position}, {qBound(300, width * 30 / 100, 480)}, Qt::Horizontal);
-        m_window->resizeDocks({program}, {qBound(200, height * 48 / 100, 600)}, Qt::Vertical);
+        m_window->resizeDocks({program}, {qBound(200, height * 37 / 100, 600)}, Qt::Vertical);
         Q_UNUSED(reference)
         fitContent();
         return;
@@ -194,6 +195,16 @@ void Workspaces::fitContent()
                        (position->height() - scroll->viewport()->height());
     const int column = position->height() + reference->height();
     m_window->resizeDocks({position, reference}, {needed, qMax(0, column - needed)}, Qt::Vertical);
+    // The program's page at least as high as its content asks.
+    QDockWidget* program = dock(QStringLiteral("programDock"));
+    auto* programScroll = program ? qobject_cast<QScrollArea*>(program->widget()) : nullptr;
+    if (programScroll && programScroll->widget() && program->isVisible() &&
+        !program->isFloating()) {
+        const int high = programScroll->widget()->minimumSizeHint().height() +
+                         (program->height() - programScroll->viewport()->height());
+        if (high > program->height())
+            m_window->resizeDocks({program}, {high}, Qt::Vertical);
+    }
     // As wide as its content asks, too (longer German texts), at least as wide as it is.
     const int wide = scroll->widget()->minimumSizeHint().width() +
                      (position->width() - scroll->viewport()->width());

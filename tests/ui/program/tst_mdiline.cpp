@@ -26,6 +26,7 @@ private Q_SLOTS:
     void m0_holdsUntilResume();
     void up_bringsBackTheLastLine();
     void programRun_whileLineRuns_refused();
+    void feedOverride_ofThePage_reachesTheLinesRunner();
 
 private:
     ui::MdiLine* mdi() const { return page()->mdiLine(); }
@@ -162,6 +163,19 @@ void TestMdiLine::programRun_whileLineRuns_refused()
     QTRY_VERIFY2_WITH_TIMEOUT(done(), qPrintable(mdi()->resultText()), 30000);
     QCOMPARE(m_rig.elab->position(Axis::Y), 0); // the program never ran
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+}
+
+void TestMdiLine::feedOverride_ofThePage_reachesTheLinesRunner()
+{
+    QVERIFY(m_rig.openAndConnect());
+    page()->controls()->feedOverrideBox()->setValue(50);
+    QVERIFY(machineMdi()->runner());
+    QCOMPARE(machineMdi()->runner()->feedOverride(), 50.0);
+    // A machine opened again keeps it: the next runner starts at the window's value.
+    window()->closeMachine();
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(machineMdi()->runner());
+    QCOMPARE(machineMdi()->runner()->feedOverride(), 50.0);
 }
 
 QTEST_MAIN(TestMdiLine)

@@ -6,6 +6,8 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
+#include "jog/JogPanel.h"
+#include "jog/JoystickPad.h"
 #include "machine/MachineContext.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
@@ -165,6 +167,17 @@ void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut()
     // The layout settles (the read-out's height follows the machine's axes, queued).
     QTRY_VERIFY2(scrollingDocks().isEmpty(),
                  qPrintable(scrollingDocks().join(QStringLiteral("; "))));
+    // The centre too: the jog controls beside the pads (in two columns where one does not fit).
+    auto* side =
+        window()->centralWidget()->findChild<QScrollArea*>(QStringLiteral("jogSideScroll"));
+    QVERIFY(side);
+    // Known gap (issue 31, left open): in German the three columns need 623 px beside the
+    // pads and the read-out's 428, more than 1366 px hold, so the column stays one and scrolls.
+    QEXPECT_FAIL("de", "German: the jog column scrolls at 1366x768 (issue 31, open)", Continue);
+    QTRY_VERIFY2(!side->verticalScrollBar()->isVisible(),
+                 qPrintable(QStringLiteral("jog side %1 high in %2")
+                                .arg(side->widget()->minimumSizeHint().height())
+                                .arg(side->viewport()->height())));
     saveShot(QStringLiteral("run-1366x768%1.png")
                  .arg(language == QLatin1String("en") ? QString() : QLatin1Char('-') + language));
     QStringList cut;
