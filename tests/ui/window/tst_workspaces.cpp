@@ -1,4 +1,5 @@
-// The Run and Setup workspaces (issue 31) on a 1366x768 laptop screen, with a machine of two
+// The Run and Setup workspaces (issue 31) on a 1366x768 laptop screen (tst_workspaces_fullhd:
+// the fit on a 1920x1080 screen), with a machine of two
 // controllers and four axes (MachineWindowRig) and a program open: one click or key switches,
 // each shows its docks, each remembers its layout (also across sessions), a program opened
 // brings up Run unless the operator chose by hand, and the Run workspace fits: no scroll bar
@@ -33,8 +34,8 @@ private Q_SLOTS:
     void firstStart_setup_thenKeysAndTabsSwitch();
     void layout_rememberedPerWorkspaceAndAcrossSessions();
     void programOpened_bringsUpRun_unlessChosenByHand();
-    void run_at1366x768_noScrollBarNoTextCut_data();
-    void run_at1366x768_noScrollBarNoTextCut();
+    void run_onTheScreen_noScrollBarNoTextCut_data();
+    void run_onTheScreen_noScrollBarNoTextCut();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -141,14 +142,14 @@ void TestWorkspaces::programOpened_bringsUpRun_unlessChosenByHand()
     QCOMPARE(workspaces()->current(), Workspace::Setup);
 }
 
-void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut_data()
+void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut_data()
 {
     QTest::addColumn<QString>("language");
     QTest::newRow("en") << QStringLiteral("en");
     QTest::newRow("de") << QStringLiteral("de");
 }
 
-void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut()
+void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
 {
     QFETCH(QString, language);
     // The window in that language (built again: its texts are set when it is made).
@@ -173,12 +174,16 @@ void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut()
     QVERIFY(side);
     // Known gap (issue 31, left open): in German the three columns need 623 px beside the
     // pads and the read-out's 428, more than 1366 px hold, so the column stays one and scrolls.
-    QEXPECT_FAIL("de", "German: the jog column scrolls at 1366x768 (issue 31, open)", Continue);
+    if (QGuiApplication::primaryScreen()->size().width() < 1920)
+        QEXPECT_FAIL("de", "German: the jog column scrolls at 1366x768 (issue 31, open)", Continue);
     QTRY_VERIFY2(!side->verticalScrollBar()->isVisible(),
                  qPrintable(QStringLiteral("jog side %1 high in %2")
                                 .arg(side->widget()->minimumSizeHint().height())
                                 .arg(side->viewport()->height())));
-    saveShot(QStringLiteral("run-1366x768%1.png")
+    const QSize screen = QGuiApplication::primaryScreen()->size();
+    saveShot(QStringLiteral("run-%1x%2%3.png")
+                 .arg(screen.width())
+                 .arg(screen.height())
                  .arg(language == QLatin1String("en") ? QString() : QLatin1Char('-') + language));
     QStringList cut;
     for (const char* name : {"positionDock", "referenceDock", "programDock"})
@@ -190,6 +195,10 @@ void TestWorkspaces::run_at1366x768_noScrollBarNoTextCut()
 
 int main(int argc, char** argv)
 {
+#ifdef STEPDECK_FULL_HD
+    return runOnScreen<TestWorkspaces>(argc, argv, 1920, 1080); // tst_workspaces_fullhd
+#else
     return runOnLaptopScreen<TestWorkspaces>(argc, argv);
+#endif
 }
 #include "tst_workspaces.moc"
