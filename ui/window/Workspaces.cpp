@@ -99,13 +99,11 @@ void Workspaces::arrange(Workspace workspace)
     QDockWidget* position = dock(QStringLiteral("positionDock"));
     if (workspace == Workspace::Run) {
         // The program (its lines and preview) gets 37 % of the height, the centre (the jog
-        // pad and its controls) the rest above it; the position the left
-        // column, the read-out's room (issue 16).
+        // pad and its controls) the rest above it; the position the left column, the
+        // read-out's room (issue 16).
         QDockWidget* program = dock(QStringLiteral("programDock"));
-        QDockWidget* reference = dock(QStringLiteral("referenceDock"));
         m_window->resizeDocks({position}, {qBound(300, width * 30 / 100, 480)}, Qt::Horizontal);
         m_window->resizeDocks({program}, {qBound(200, height * 37 / 100, 600)}, Qt::Vertical);
-        Q_UNUSED(reference)
         fitContent();
         return;
     }
@@ -181,35 +179,55 @@ void Workspaces::resetCurrent()
     announce();
 }
 
+namespace {
+// How much larger than now a dock must be for its page not to scroll (0: it fits), in height
+// or width.
+int missing(QDockWidget* dock, Qt::Orientation orientation)
+{
+    auto* scroll = dock ? qobject_cast<QScrollArea*>(dock->widget()) : nullptr;
+    if (!scroll || !scroll->widget() || !dock->isVisible() || dock->isFloating())
+        return 0;
+    const QSize needed = scroll->widget()->minimumSizeHint();
+    const QSize has = scroll->viewport()->size();
+    return qMax(0, orientation == Qt::Vertical ? needed.height() - has.height()
+                                               : needed.width() - has.width());
+}
+} // namespace
+
 void Workspaces::fitContent()
 {
+    if (m_current != Workspace::Run)
+        return;
+    // Only what would scroll grows (a machine of more axes, longer German texts); a dock the
+    // operator made larger stays so.
     QDockWidget* position = dock(QStringLiteral("positionDock"));
     QDockWidget* reference = dock(QStringLiteral("referenceDock"));
-    auto* scroll = position ? qobject_cast<QScrollArea*>(position->widget()) : nullptr;
-    if (m_current != Workspace::Run || !scroll || !scroll->widget() || !reference ||
-        !position->isVisible() || !reference->isVisible() || position->isFloating() ||
-        reference->isFloating())
-        return;
-    // The read-out as high as its content asks (every axis, Go to), referencing below it.
-    const int needed = scroll->widget()->minimumSizeHint().height() +
-                       (position->height() - scroll->viewport()->height());
-    const int column = position->height() + reference->height();
-    m_window->resizeDocks({position, reference}, {needed, qMax(0, column - needed)}, Qt::Vertical);
-    // The program's page at least as high as its content asks.
     QDockWidget* program = dock(QStringLiteral("programDock"));
-    auto* programScroll = program ? qobject_cast<QScrollArea*>(program->widget()) : nullptr;
-    if (programScroll && programScroll->widget() && program->isVisible() &&
-        !program->isFloating()) {
-        const int high = programScroll->widget()->minimumSizeHint().height() +
-                         (program->height() - programScroll->viewport()->height());
-        if (high > program->height())
-            m_window->resizeDocks({program}, {high}, Qt::Vertical);
+    // The read-out as high as its content asks (every axis, Go to), referencing below it.
+    if (const int more = missing(position, Qt::Vertical); more > 0) {
+        if (reference && reference->isVisible() && !reference->isFloating())
+            m_window->resizeDocks({position, reference},
+                                  {position->height() + more, qMax(0, reference->height() - more)},
+                                  Qt::Vertical);
+        else
+            m_window->resizeDocks({position}, {position->height() + more}, Qt::Vertical);
     }
-    // As wide as its content asks, too (longer German texts), at least as wide as it is.
-    const int wide = scroll->widget()->minimumSizeHint().width() +
-                     (position->width() - scroll->viewport()->width());
-    if (wide > position->width())
-        m_window->resizeDocks({position}, {wide}, Qt::Horizontal);
+    // Referencing likewise, from what the read-out has to spare.
+    auto* positionScroll = position ? qobject_cast<QScrollArea*>(position->widget()) : nullptr;
+    if (const int more = missing(reference, Qt::Vertical);
+        more > 0 && positionScroll && positionScroll->widget() && !position->isFloating()) {
+        const int spare = positionScroll->viewport()->height() -
+                          positionScroll->widget()->minimumSizeHint().height();
+        const int moved = qMin(more, spare);
+        if (moved > 0)
+            m_window->resizeDocks({position, reference},
+                                  {position->height() - moved, reference->height() + moved},
+                                  Qt::Vertical);
+    }
+    if (const int more = missing(program, Qt::Vertical); more > 0)
+        m_window->resizeDocks({program}, {program->height() + more}, Qt::Vertical);
+    if (const int more = missing(position, Qt::Horizontal); more > 0)
+        m_window->resizeDocks({position}, {position->width() + more}, Qt::Horizontal);
 }
 
 void Workspaces::save() const

@@ -46,8 +46,8 @@ public:
     // opened, the machine referenced: Run becomes the default, issue 31).
     void suggest(Workspace workspace);
     void resetCurrent(); // the current workspace's default layout
-    // Run: the position column's read-out as high and wide as its content (a machine of more
-    // axes was opened), referencing below it.
+    // Run: the read-out's and the program's docks grown where their page would scroll (a
+    // machine of more axes was opened, longer German texts), referencing below the read-out.
     void fitContent();
     void save() const; // into the settings (at close)
 

@@ -105,13 +105,20 @@ void TestWorkspaces::firstStart_setup_thenKeysAndTabsSwitch()
 void TestWorkspaces::layout_rememberedPerWorkspaceAndAcrossSessions()
 {
     workspaces()->switchTo(Workspace::Run);
-    dock("referenceDock")->hide(); // the operator's change to Run
+    // The operator's changes to Run: the program's dock made higher, referencing closed.
+    const int programHeight = dock("programDock")->height() + 40;
+    window()->resizeDocks({dock("programDock")}, {programHeight}, Qt::Vertical);
+    QCoreApplication::processEvents();
+    QCOMPARE(dock("programDock")->height(), programHeight);
+    dock("referenceDock")->hide();
     workspaces()->switchTo(Workspace::Setup);
     QVERIFY(shown("referenceDock")); // Setup's own layout
     dock("chartsDock")->raise();
     workspaces()->switchTo(Workspace::Run);
     QVERIFY(!shown("referenceDock"));
     QVERIFY(shown("programDock"));
+    QCoreApplication::processEvents(); // the fit after a switch (queued) grows, never shrinks
+    QCOMPARE(dock("programDock")->height(), programHeight);
     // Another session: the window opens in the workspace it closed in, each as it was left.
     window()->close();
     m_rig.f = std::make_unique<UiFixture>();
