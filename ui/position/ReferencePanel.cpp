@@ -215,7 +215,6 @@ void ReferencePanel::onFinished(bool ok, const QString& message)
         m_progress->setValue(0);
     m_cancel->setEnabled(false);
     onStatus(m_context->status());
-    Q_EMIT finished(ok);
 }
 
 } // namespace stepdeck::ui

@@ -37,9 +37,6 @@ public Q_SLOTS:
     // this is what the panel shows before that arrives).
     void stopped(const QString& message);
 
-Q_SIGNALS:
-    void finished(bool ok); // a reference run of the machine ended (ok: every axis asked for)
-
 private:
     void referenceMachine(machine::Machine* m, const QStringList& axes);
     void showMachineOrNot();

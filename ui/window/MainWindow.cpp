@@ -187,14 +187,11 @@ void MainWindow::buildWorkspaces()
     connect(m_context, &MachineContext::machineChanged, m_workspaces, &Workspaces::fitContent,
             Qt::QueuedConnection);
     m_workspaces->initialise();
-    // Run becomes the default once there is a job to run or the machine is referenced,
-    // unless the operator chose a workspace by hand (issue 31).
-    const auto suggestRun = [this] { m_workspaces->suggest(Workspaces::Workspace::Run); };
-    connect(m_programPage->files(), &ProgramFiles::loaded, this, suggestRun);
-    connect(m_reference, &ReferencePanel::finished, this, [suggestRun](bool ok) {
-        if (ok)
-            suggestRun();
-    });
+    // Run comes up when a program is opened, unless the operator chose a workspace by hand
+    // (issue 31). Not when a reference run ends: that happens seconds after the click, while
+    // the operator may reach for the jog pad, and nothing moves under the operator's hand.
+    connect(m_programPage->files(), &ProgramFiles::loaded, this,
+            [this] { m_workspaces->suggest(Workspaces::Workspace::Run); });
 }
 
 MainWindow::~MainWindow() = default;

@@ -43,7 +43,7 @@ public:
     void initialise();
     void switchTo(Workspace workspace);
     // As switchTo, unless the operator chose a workspace by hand in this session (a program
-    // opened, the machine referenced: Run becomes the default, issue 31).
+    // opened brings up Run, issue 31).
     void suggest(Workspace workspace);
     void resetCurrent(); // the current workspace's default layout
     // Run: the read-out's and the program's docks grown where their page would scroll (a
