@@ -125,11 +125,19 @@ void ElabCtlMotionOps::correctPositions(const AxisVector& stopped)
 {
     // ForceStopMove: "Dann kann er mit RequestRelPosition die jeweils noch verbleibenden
     // Schritte abfragen" -- the signed steps of the interrupted move that were not executed.
+    // Until the answer the count is the interrupted move's target, not where the board stands:
+    // estimated, so that no absolute move is computed from it (Machine::move refuses one; a
+    // move computed from it once landed the whole remainder short, tst_machinestop).
+    for (auto it = stopped.cbegin(); it != stopped.cend(); ++it)
+        m_line.status().axes[it.key()].positionEstimated = true;
     ElabExchange etx = ElabCtlLine::exchange(0, encode::requestRelPosition(), Expect::RelPosition);
     etx.droppable = false;
     etx.onReply = [this, stopped](const Reply& r) {
-        for (auto it = stopped.cbegin(); it != stopped.cend(); ++it)
-            m_line.status().axes[it.key()].position -= r.positions[size_t(it.key())];
+        for (auto it = stopped.cbegin(); it != stopped.cend(); ++it) {
+            AxisStatus& axis = m_line.status().axes[it.key()];
+            axis.position -= r.positions[size_t(it.key())];
+            axis.positionEstimated = false;
+        }
         m_line.hooks().publish();
     };
     etx.onError = [this, stopped](ErrorKind, const QString& why) {
