@@ -202,27 +202,9 @@ void JogPanel::arrangeSide(bool sideBySide)
         row->setStretch(1, sideBySide ? 3 : 2);
 }
 
-QWidget* JogPanel::buildSidePanel()
+QGroupBox* JogPanel::buildSpeedOverride(QWidget* parent)
 {
-    auto* side = new QWidget(this);
-    m_sideGrid = new QGridLayout(side);
-    m_sideGrid->setContentsMargins(0, 0, 0, 0);
-    // A: what the jog does (velocity, override); B: keyboard jog and settings; C: steps.
-    m_sideA = new QWidget(side);
-    m_sideB = new QWidget(side);
-    m_sideC = new QWidget(side);
-    m_sideGrid->addWidget(m_sideA, 0, 0);
-    auto* vc = new QVBoxLayout(m_sideC);
-    vc->setContentsMargins(0, 0, 0, 0);
-    auto* va = new QVBoxLayout(m_sideA);
-    va->setContentsMargins(0, 0, 0, 0);
-    auto* v = new QVBoxLayout(m_sideB);
-    v->setContentsMargins(0, 0, 0, 0);
-
-    m_velocity->setParent(m_sideA);
-    va->addWidget(m_velocity);
-
-    auto* speed = new QGroupBox(tr("Speed override"), m_sideA);
+    auto* speed = new QGroupBox(tr("Speed override"), parent);
     auto* speedRows = new QVBoxLayout(speed);
     auto* sv = new QHBoxLayout;
     speedRows->addLayout(sv);
@@ -243,6 +225,30 @@ QWidget* JogPanel::buildSidePanel()
     applyOverride(m_override->value());
     // The stopping distance at this speed (issue 28 item 6), below the slider that sets it.
     speedRows->addWidget(m_stopDistance);
+    return speed;
+}
+
+QWidget* JogPanel::buildSidePanel()
+{
+    auto* side = new QWidget(this);
+    m_sideGrid = new QGridLayout(side);
+    m_sideGrid->setContentsMargins(0, 0, 0, 0);
+    // A: what the jog does (velocity, override); B: keyboard jog and settings; C: steps.
+    m_sideA = new QWidget(side);
+    m_sideB = new QWidget(side);
+    m_sideC = new QWidget(side);
+    m_sideGrid->addWidget(m_sideA, 0, 0);
+    auto* vc = new QVBoxLayout(m_sideC);
+    vc->setContentsMargins(0, 0, 0, 0);
+    auto* va = new QVBoxLayout(m_sideA);
+    va->setContentsMargins(0, 0, 0, 0);
+    auto* v = new QVBoxLayout(m_sideB);
+    v->setContentsMargins(0, 0, 0, 0);
+
+    m_velocity->setParent(m_sideA);
+    va->addWidget(m_velocity);
+
+    QGroupBox* speed = buildSpeedOverride(m_sideA);
     va->addWidget(speed);
     va->addStretch(1);
 

@@ -6,6 +6,7 @@
 class QCheckBox;
 class QComboBox;
 class QGridLayout;
+class QGroupBox;
 class QScrollArea;
 class QDialog;
 class QLabel;
@@ -60,6 +61,7 @@ protected:
 
 private:
     QWidget* buildSidePanel();
+    QGroupBox* buildSpeedOverride(QWidget* parent); // the slider and the stopping distance
     void fitSide(); // one column, or side by side where one does not fit the height
     void arrangeSide(bool sideBySide);
     int sideWidth(bool sideBySide) const; // the side's minimum width either way
