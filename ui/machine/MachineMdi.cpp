@@ -3,7 +3,6 @@
 #include "MachineTools.h"
 #include "MachineWorkOffsets.h"
 #include "machine/Machine.h"
-#include "program/ProgramParser.h"
 #include "program/ProgramStarter.h"
 #include <QLoggingCategory>
 

@@ -3,6 +3,7 @@
 #include "common/ReservedSize.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineMdi.h"
+#include "program/ProgramParser.h"
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
@@ -19,7 +20,7 @@ MdiLine::MdiLine(MachineContext* context, QWidget* parent)
     setObjectName(QStringLiteral("mdiLine"));
     m_line->setObjectName(QStringLiteral("mdiText"));
     m_line->setPlaceholderText(tr("G-code line, e.g. G0 X10 Y5 (Enter runs it, Up: the last)"));
-    m_line->setMaxLength(1024); // ProgramParser::kMaxLineLength
+    m_line->setMaxLength(program::ProgramParser::kMaxLineLength);
     m_line->setClearButtonEnabled(true);
     m_run->setToolTip(tr("Runs the line on the machine after the same check a program has"));
     m_modal->setToolTip(tr("The modal state the next line starts in (LinuxCNC's active "
