@@ -11,6 +11,17 @@
 
 namespace stepdeck::test {
 
+// The scroll area w is shown in (its widget or inside it), or nullptr.
+inline QAbstractScrollArea* enclosingScrollArea(QWidget* w)
+{
+    for (QWidget* p = w; p; p = p->parentWidget()) {
+        if (auto* area = qobject_cast<QAbstractScrollArea*>(p->parentWidget());
+            area && area->viewport() == p)
+            return area;
+    }
+    return nullptr;
+}
+
 // Why w's text cannot be read in full (narrower than its text, cut off on the right or left
 // by the scroll area it sits in, elided), or an empty string. Vertical scrolling is allowed.
 inline QString textProblem(QWidget* w)
