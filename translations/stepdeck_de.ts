@@ -5367,7 +5367,7 @@ Regelung für Achse %1 einschalten?</translation>
         <name>stepdeck::ui::IncrementalJogWidget</name>
         <message>
             <source>Incremental jog</source>
-            <translation>Schrittweises Verfahren</translation>
+            <translation>Schrittmaß</translation>
         </message>
         <message>
             <source>Custom</source>
@@ -5551,11 +5551,11 @@ W1500</translation>
         </message>
         <message>
             <source>Jog settings</source>
-            <translation>Einstellungen Tippbetrieb</translation>
+            <translation>Tipp-Einstellungen</translation>
         </message>
         <message>
             <source>Jog settings…</source>
-            <translation>Einstellungen Tippbetrieb…</translation>
+            <translation>Tipp-Einstellungen…</translation>
         </message>
         <message>
             <source>Max jog speed per axis, dead zone, response curve, keyboard speed</source>
@@ -5602,7 +5602,7 @@ W1500</translation>
         <name>stepdeck::ui::JogSettingsWidget</name>
         <message>
             <source>Jog settings</source>
-            <translation>Einstellungen Tippbetrieb</translation>
+            <translation>Tipp-Einstellungen</translation>
         </message>
         <message>
             <source>Deflection of the pad that gives no motion</source>
@@ -5669,14 +5669,14 @@ W1500</translation>
         </message>
         <message>
             <source>Stops within %1</source>
-            <translation>Hält an innerhalb von %1</translation>
+            <translation>Anhalteweg: %1</translation>
         </message>
     </context>
     <context>
         <name>stepdeck::ui::JogVelocityReadout</name>
         <message>
             <source>Commanded jog velocity</source>
-            <translation>Vorgegebene Tippgeschwindigkeit</translation>
+            <translation>Soll-Tippgeschwindigkeit</translation>
         </message>
         <message>
             <source>%1/s</source>

@@ -153,15 +153,26 @@ void JogPanel::resizeEvent(QResizeEvent* event)
     fitSide();
 }
 
+namespace {
+// A column's height at a width (its texts wrap: the keyboard state, the stopping distance).
+int heightAt(const QWidget* column, int width)
+{
+    const int atLeast = column->minimumSizeHint().height();
+    return column->hasHeightForWidth()
+               ? qMax(atLeast, column->heightForWidth(qMax(width, column->minimumWidth())))
+               : atLeast;
+}
+} // namespace
+
 void JogPanel::fitSide()
 {
     // Side by side where one column does not fit the height (the Run workspace at 1366x768,
     // issue 31: every jog control visible without scrolling); the decision follows the height
     // only, so the width it asks never turns it back.
     const int spacing = m_sideGrid->verticalSpacing();
-    const int oneColumn = m_sideA->minimumSizeHint().height() +
-                          m_sideB->minimumSizeHint().height() +
-                          m_sideC->minimumSizeHint().height() + 2 * spacing;
+    const int columnWidth = m_sideScroll->viewport()->width();
+    const int oneColumn = heightAt(m_sideA, columnWidth) + heightAt(m_sideB, columnWidth) +
+                          heightAt(m_sideC, columnWidth) + 2 * spacing;
     // Only where the pads keep their room beside the columns (they are what the operator
     // holds); otherwise the column scrolls.
     auto* row = qobject_cast<QHBoxLayout*>(layout());
@@ -174,9 +185,12 @@ void JogPanel::fitSide()
 
 int JogPanel::sideWidth(bool sideBySide) const
 {
-    const int a = m_sideA->minimumSizeHint().width();
-    const int b = m_sideB->minimumSizeHint().width();
-    const int c = m_sideC->minimumSizeHint().width();
+    const auto least = [](const QWidget* w) {
+        return qMax(w->minimumSizeHint().width(), w->minimumWidth());
+    };
+    const int a = least(m_sideA);
+    const int b = least(m_sideB);
+    const int c = least(m_sideC);
     const int content =
         sideBySide ? a + b + c + 2 * m_sideGrid->horizontalSpacing() : qMax(a, qMax(b, c));
     // Side by side nothing scrolls: no room for a scroll bar.
@@ -233,25 +247,58 @@ QWidget* JogPanel::buildSidePanel()
     auto* side = new QWidget(this);
     m_sideGrid = new QGridLayout(side);
     m_sideGrid->setContentsMargins(0, 0, 0, 0);
-    // A: what the jog does (velocity, override); B: keyboard jog and settings; C: steps.
-    m_sideA = new QWidget(side);
-    m_sideB = new QWidget(side);
+    // A: what the jog does (velocity, why it was refused, its settings); B: the override and
+    // keyboard jog; C: steps. Side by side the columns share the height about evenly (1366x768
+    // less a panel and a title bar, issue 31).
+    m_sideA = buildJogColumn(side);
+    m_sideB = buildKeyboardColumn(side);
     m_sideC = new QWidget(side);
     m_sideGrid->addWidget(m_sideA, 0, 0);
     auto* vc = new QVBoxLayout(m_sideC);
     vc->setContentsMargins(0, 0, 0, 0);
-    auto* va = new QVBoxLayout(m_sideA);
-    va->setContentsMargins(0, 0, 0, 0);
-    auto* v = new QVBoxLayout(m_sideB);
+    m_incremental->setParent(m_sideC);
+    vc->addWidget(m_incremental);
+    vc->addStretch(1);
+    return side;
+}
+
+QWidget* JogPanel::buildJogColumn(QWidget* parent)
+{
+    auto* column = new QWidget(parent);
+    auto* v = new QVBoxLayout(column);
     v->setContentsMargins(0, 0, 0, 0);
+    m_velocity->setParent(column);
+    v->addWidget(m_velocity);
+    m_refusal->setParent(column);
+    m_refusal->setObjectName(QStringLiteral("jogRefusal"));
+    // Two lines reserved, a longer reason elided (full text in the tooltip and the log).
+    m_refusal->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
+    v->addWidget(m_refusal);
+    // Tuning lives in a dialog: the panel stays narrow enough for the pads.
+    m_settingsDialog->setWindowTitle(tr("Jog settings"));
+    auto* dialogLayout = new QVBoxLayout(m_settingsDialog);
+    dialogLayout->addWidget(m_settings);
+    auto* close = new QDialogButtonBox(QDialogButtonBox::Close, m_settingsDialog);
+    connect(close, &QDialogButtonBox::rejected, m_settingsDialog, &QDialog::hide);
+    dialogLayout->addWidget(close);
+    auto* settingsButton = new QPushButton(tr("Jog settings\u2026"), column);
+    settingsButton->setFocusPolicy(Qt::NoFocus);
+    settingsButton->setToolTip(tr("Max jog speed per axis, dead zone, response curve, keyboard "
+                                  "speed"));
+    connect(settingsButton, &QPushButton::clicked, m_settingsDialog, &QDialog::show);
+    v->addWidget(settingsButton);
+    v->addStretch(1);
+    return column;
+}
 
-    m_velocity->setParent(m_sideA);
-    va->addWidget(m_velocity);
-
-    QGroupBox* speed = buildSpeedOverride(m_sideA);
-    va->addWidget(speed);
-    va->addStretch(1);
-
+QWidget* JogPanel::buildKeyboardColumn(QWidget* parent)
+{
+    auto* column = new QWidget(parent);
+    auto* v = new QVBoxLayout(column);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(buildSpeedOverride(column));
+    m_keyboardCheck->setParent(column);
     m_keyboardCheck->setFocusPolicy(Qt::NoFocus);
     m_keyboardCheck->setToolTip(tr("Arrows jog X/Y, Page Up/Down jog Z while this window is "
                                    "active and no text field has the focus (Ctrl+J)"));
@@ -265,12 +312,13 @@ QWidget* JogPanel::buildSidePanel()
     connect(m_keyboard, &KeyboardJog::pausedChanged, this, &JogPanel::showKeyboardState);
     v->addWidget(m_keyboardCheck);
     // On or off, and which keys: on the panel itself, not only in a tooltip.
+    m_keyboardState->setParent(column);
     m_keyboardState->setObjectName(QStringLiteral("keyboardJogState"));
-    // The room of its longest state: the step buttons below never move (issue 16).
+    // The room of its longest state: the controls below never move (issue 16).
     m_keyboardState->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_keyboardState->setReservedTexts(keyboardStateTexts());
     v->addWidget(m_keyboardState);
-
+    m_jogModeNote->setParent(column);
     m_jogModeNote->setObjectName(QStringLiteral("jogModeNote"));
     m_jogModeNote->setWordWrap(true);
     m_jogModeNote->setText(
@@ -278,29 +326,10 @@ QWidget* JogPanel::buildSidePanel()
            "targets, each sent only after the previous one arrived. Releasing ends jogging "
            "after the short move under way. Incremental jog moves by the step size."));
     v->addWidget(m_jogModeNote);
-    m_refusal->setObjectName(QStringLiteral("jogRefusal"));
-    // Two lines reserved, a longer reason elided (full text in the tooltip and the log).
-    m_refusal->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    m_refusal->setStyleSheet(QStringLiteral("QLabel { color: #e53935; font-weight: bold; }"));
-    v->addWidget(m_refusal);
-    m_incremental->setParent(m_sideC);
-    vc->addWidget(m_incremental);
-    vc->addStretch(1);
-    // Tuning lives in a dialog: the panel stays narrow enough for the pads.
-    m_settingsDialog->setWindowTitle(tr("Jog settings"));
-    auto* dialogLayout = new QVBoxLayout(m_settingsDialog);
-    dialogLayout->addWidget(m_settings);
-    auto* close = new QDialogButtonBox(QDialogButtonBox::Close, m_settingsDialog);
-    connect(close, &QDialogButtonBox::rejected, m_settingsDialog, &QDialog::hide);
-    dialogLayout->addWidget(close);
-    auto* settingsButton = new QPushButton(tr("Jog settings\u2026"), m_sideB);
-    settingsButton->setFocusPolicy(Qt::NoFocus);
-    settingsButton->setToolTip(tr("Max jog speed per axis, dead zone, response curve, keyboard "
-                                  "speed"));
-    connect(settingsButton, &QPushButton::clicked, m_settingsDialog, &QDialog::show);
-    v->addWidget(settingsButton);
     v->addStretch(1);
-    return side;
+    // Wide enough that the keyboard's longest state takes a few lines, not a tall column.
+    column->setMinimumWidth(fontMetrics().averageCharWidth() * 28);
+    return column;
 }
 
 QMap<Axis, QString> JogPanel::slotLabels() const

@@ -61,6 +61,8 @@ protected:
 
 private:
     QWidget* buildSidePanel();
+    QWidget* buildJogColumn(QWidget* parent);       // A: velocity, refusal, settings
+    QWidget* buildKeyboardColumn(QWidget* parent);  // B: override, keyboard jog
     QGroupBox* buildSpeedOverride(QWidget* parent); // the slider and the stopping distance
     void fitSide(); // one column, or side by side where one does not fit the height
     void arrangeSide(bool sideBySide);

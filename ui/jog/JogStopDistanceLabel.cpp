@@ -23,7 +23,7 @@ double tickOf(const ControllerSession* session)
 
 JogStopDistanceLabel::JogStopDistanceLabel(MachineContext* context, JogController* jog,
                                            QWidget* parent)
-    : ElidedLabel(parent, 2), m_context(context), m_jog(jog)
+    : ElidedLabel(parent, 3), m_context(context), m_jog(jog)
 {
     setObjectName(QStringLiteral("jogStopDistance"));
     setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);

@@ -69,7 +69,9 @@ QSize JoystickPad::sizeHint() const
 
 QSize JoystickPad::minimumSizeHint() const
 {
-    return m_mode == Mode::TwoAxis ? QSize(180, 180) : QSize(76, 180);
+    // Small enough that the pads and the jog controls in three columns share the centre
+    // beside the German read-out at 1366x768 (issue 31); the pad's travel stays over 120 px.
+    return m_mode == Mode::TwoAxis ? QSize(168, 168) : QSize(68, 168);
 }
 
 QRectF JoystickPad::travelIn(const QRectF& frame) const

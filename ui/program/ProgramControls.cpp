@@ -24,8 +24,8 @@ ProgramControls::ProgramControls(QWidget* parent)
       m_abort(new QPushButton(tr("&Abort"), this)), m_fromLine(new QSpinBox(this)),
       m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
       m_optionalStops(new QCheckBox(tr("Optional stops (M1)"), this)),
-      m_feedOverride(new QSpinBox(this)), m_progress(new QProgressBar(this)),
-      m_timeLeft(new ElidedLabel(this))
+      m_feedOverride(new QSpinBox(this)), m_progressRow(new QWidget(this)),
+      m_progress(new QProgressBar(m_progressRow)), m_timeLeft(new ElidedLabel(m_progressRow))
 {
     setObjectName(QStringLiteral("programControls"));
     m_run->setObjectName(QStringLiteral("programRun"));
@@ -60,11 +60,14 @@ ProgramControls::ProgramControls(QWidget* parent)
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
     m_progress->setTextVisible(true);
-    m_progress->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 18);
-    m_timeLeft->setMinimumTextWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 30);
+    // Narrow minimums: the row shares the page with the run's buttons at 1366x768; wider, the
+    // time left gets its whole text.
+    m_progress->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 14);
+    m_timeLeft->setMinimumTextWidth(fontMetrics().horizontalAdvance(QStringLiteral("0")) * 22);
 
     // Two rows, so that the page fits the Run workspace's width at 1366x768 (issue 31): the
-    // run's buttons and the feed override, then where to start, M1 and the progress.
+    // run's buttons and the feed override, then where to start and M1. The progress in a row
+    // of its own.
     auto* rows = new QVBoxLayout(this);
     rows->setContentsMargins(0, 0, 0, 0);
     rows->setSpacing(2);
@@ -79,9 +82,11 @@ ProgramControls::ProgramControls(QWidget* parent)
     where->addWidget(m_runFrom);
     where->addSpacing(8);
     where->addWidget(m_optionalStops);
-    where->addSpacing(8);
-    where->addWidget(m_progress, 1);
-    where->addWidget(m_timeLeft);
+    where->addStretch(1);
+    auto* progress = new QHBoxLayout(m_progressRow);
+    progress->setContentsMargins(0, 0, 0, 0);
+    progress->addWidget(m_progress, 1);
+    progress->addWidget(m_timeLeft);
     rows->addLayout(buttons);
     rows->addLayout(where);
 

@@ -14,7 +14,8 @@ class ElidedLabel;
 
 // Run, Pause, Resume, Step, Abort and "Run from line" of the Program page (issue 20), the
 // optional-stop switch for M1 (issue 29), and the progress ("line n of m") with the estimated
-// time left, in one row. Only buttons that do
+// time left, in progressRow() for the page to place (issue 31: over the preview, where the
+// operator watches the run; the buttons' two rows then fit beside it). Only buttons that do
 // something in the state shown are enabled; the buttons never move (one-line texts). The
 // controls only ask (signals): the page owns the runner.
 class ProgramControls : public QWidget
@@ -45,6 +46,7 @@ public:
     QSpinBox* feedOverrideBox() const { return m_feedOverride; }
     int feedOverride() const; // percent
     QProgressBar* progressBar() const { return m_progress; }
+    QWidget* progressRow() const { return m_progressRow; }
     QString progressText() const;
     QString timeLeftText() const;
 
@@ -71,6 +73,7 @@ private:
     QCheckBox* m_optionalStops;
     QSpinBox* m_feedOverride;
     void setUpFeedOverride();
+    QWidget* m_progressRow;
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
 };

@@ -33,7 +33,7 @@ constexpr int kRecheckDelayMs = 400;
 } // namespace
 
 ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this)),
+    : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this, 2)),
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
       m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
       m_controls(new ProgramControls(this)), m_mdiLine(new MdiLine(context, this)),
@@ -113,33 +113,54 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
 
 ProgramPage::~ProgramPage() = default;
 
+namespace {
+// A column that asks for no more than it needs: the splitter gives the rest to the preview.
+class CompactColumn : public QWidget
+{
+public:
+    using QWidget::QWidget;
+    QSize sizeHint() const override { return minimumSizeHint(); }
+};
+} // namespace
+
 void ProgramPage::buildLayout()
 {
-    // Three rows above the text: files and the check, the run's buttons and progress, the
-    // run's message (M0's prompt) and the machine the page runs on.
-    auto* top = new QHBoxLayout;
-    top->addWidget(m_files, 1);
-    m_checkStatus = new ProgramCheckStatus(m_check, ProgramBackgroundCheck::kProgressSteps, this);
-    top->addWidget(m_checkStatus, 1);
-    auto* lines = new QHBoxLayout;
-    lines->addWidget(m_banner, 2);
-    lines->addWidget(m_machineNote, 1);
+    // Left, the rows of the run over the program's text: the files, the run's buttons and
+    // progress, the MDI line, the run's message (M0's prompt), the program's figures. Right,
+    // the check and the machine over the preview: the toolpath is what the operator watches,
+    // and the Run workspace's program dock is wide and low (issue 31).
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->setObjectName(QStringLiteral("programSplitter"));
-    split->addWidget(m_editor);
-    split->addWidget(m_preview);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 1);
-    split->setChildrenCollapsible(false);
-    m_editor->setMinimumSize(200, 60);
-    auto* v = new QVBoxLayout(this);
-    v->setContentsMargins(4, 4, 4, 4);
+    auto* run = new CompactColumn(split);
+    auto* v = new QVBoxLayout(run);
+    v->setContentsMargins(0, 0, 0, 0);
     v->setSpacing(3);
-    v->addLayout(top);
+    v->addWidget(m_files);
     v->addWidget(m_controls);
     v->addWidget(m_mdiLine);
-    v->addLayout(lines);
-    v->addWidget(split, 1);
+    v->addWidget(m_banner);
+    v->addWidget(m_preview->summary());
+    v->addWidget(m_editor, 1);
+    auto* watch = new QWidget(split);
+    auto* w = new QVBoxLayout(watch);
+    w->setContentsMargins(0, 0, 0, 0);
+    w->setSpacing(3);
+    m_checkStatus = new ProgramCheckStatus(m_check, ProgramBackgroundCheck::kProgressSteps, this);
+    w->addWidget(m_checkStatus);
+    w->addWidget(m_controls->progressRow());
+    w->addWidget(m_machineNote);
+    w->addWidget(m_preview, 1);
+    split->addWidget(run);
+    split->addWidget(watch);
+    // Width beyond the columns' least: a third to the text and the MDI line, the rest to the
+    // preview.
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2);
+    split->setChildrenCollapsible(false);
+    m_editor->setMinimumSize(200, 60);
+    auto* page = new QVBoxLayout(this);
+    page->setContentsMargins(4, 4, 4, 4);
+    page->addWidget(split);
 }
 
 bool ProgramPage::isShowingCheckProgress() const

@@ -35,8 +35,9 @@ std::optional<std::pair<double, double>> workLimits(const machine::MachineAxis& 
 ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     : QWidget(parent), m_path(new ProgramPathView(this)), m_chart(new QChart),
       m_chartView(new QChartView(m_chart, this)), m_extents(new QTableWidget(0, 4, this)),
-      m_tabs(new QTabWidget(this)), m_figures(new ElidedLabel(this)),
-      m_motionNote(new ElidedLabel(this)), m_coordinates(new ElidedLabel(this))
+      m_tabs(new QTabWidget(this)), m_summary(new QWidget(this)),
+      m_figures(new ElidedLabel(m_summary)), m_motionNote(new ElidedLabel(this)),
+      m_coordinates(new ElidedLabel(m_summary))
 {
     setObjectName(QStringLiteral("programPreview"));
     m_chart->legend()->setAlignment(Qt::AlignRight);
@@ -70,11 +71,13 @@ ProgramPreviewView::ProgramPreviewView(QWidget* parent)
     ev->addWidget(m_extents, 1);
     ev->addWidget(m_motionNote);
     m_tabs->addTab(extents, tr("Extents"));
+    auto* summary = new QVBoxLayout(m_summary);
+    summary->setContentsMargins(0, 0, 0, 0);
+    summary->setSpacing(3);
+    summary->addWidget(m_figures);
+    summary->addWidget(m_coordinates);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
-    // One above the other: each in full in the Run workspace's half of the page (issue 31).
-    v->addWidget(m_figures);
-    v->addWidget(m_coordinates);
     v->addWidget(m_tabs, 1);
     clear(tr("No program checked yet."));
 }

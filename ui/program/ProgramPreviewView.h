@@ -17,9 +17,9 @@ class ProgramPathView;
 // The preview of a checked program beside the editor (issue 20), in tabs: the path to scale
 // from the top, front, side or isometric (ProgramPathView, issue 29), the axes besides X and Y
 // over the estimated time (a chart), each moved axis' extent against its soft limits; above
-// them the figures: lines, blocks run, the estimated duration and how the axes of a block move
-// together; below them the coordinates
-// (work coordinates, as the position display and the program's targets: issue 28, item 3).
+// them, in summary() which the page places, the figures: lines, blocks run, the estimated
+// duration and how the axes of a block move together; below them the coordinates (work
+// coordinates, as the position display and the program's targets: issue 28, item 3).
 // While a program runs the current position is drawn in both, and the running line's segments
 // in the path.
 class ProgramPreviewView : public QWidget
@@ -43,6 +43,9 @@ public:
     QChartView* chartView() const { return m_chartView; }
     QTableWidget* extentsTable() const { return m_extents; }
     QTabWidget* tabs() const { return m_tabs; }
+    // The figures and the coordinates, one line each, for the page to place (issue 31: beside
+    // the controls, so the path gets the preview's whole height).
+    QWidget* summary() const { return m_summary; }
     QString figuresText() const;
     // Which coordinates the preview shows: work coordinates, each work zero's machine position.
     QString coordinatesText() const;
@@ -61,6 +64,7 @@ private:
     QLineSeries* m_now = nullptr; // the vertical line at the time reached
     QTableWidget* m_extents;
     QTabWidget* m_tabs;
+    QWidget* m_summary;
     ElidedLabel* m_figures;
     ElidedLabel* m_motionNote;
     ElidedLabel* m_coordinates;

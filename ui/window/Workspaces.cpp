@@ -11,9 +11,13 @@ namespace stepdeck::ui {
 
 namespace {
 // A layout's version: a layout saved by another arrangement of docks is not restored.
-constexpr int kLayoutVersion = 31;
+constexpr int kLayoutVersion = 32;
 const char* const kKeys[2] = {"window/workspace/run", "window/workspace/setup"};
 const char* const kCurrentKey = "window/workspace/current";
+// The window height from which the Run workspace's left column holds the position and
+// referencing one above the other (four axes each; a Full HD screen less a panel and a title
+// bar has 1020).
+constexpr int kBothInTheColumn = 900;
 } // namespace
 
 Workspaces::Workspaces(QMainWindow* window, const QStringList& runDocks,
@@ -102,6 +106,14 @@ void Workspaces::arrange(Workspace workspace)
         // pad and its controls) the rest above it; the position the left column, the
         // read-out's room (issue 16).
         QDockWidget* program = dock(QStringLiteral("programDock"));
+        // Below a Full HD height, referencing behind the position, one click away: the
+        // position of four axes with Go to takes the column's height at 1366x768 less a panel
+        // and a title bar, and "Reference all" stands in the centre.
+        if (QDockWidget* reference = dock(QStringLiteral("referenceDock"));
+            reference && position && height < kBothInTheColumn) {
+            m_window->tabifyDockWidget(position, reference);
+            position->raise();
+        }
         m_window->resizeDocks({position}, {qBound(300, width * 30 / 100, 480)}, Qt::Horizontal);
         m_window->resizeDocks({program}, {qBound(200, height * 37 / 100, 600)}, Qt::Vertical);
         fitContent();
@@ -185,7 +197,7 @@ namespace {
 int missing(QDockWidget* dock, Qt::Orientation orientation)
 {
     auto* scroll = dock ? qobject_cast<QScrollArea*>(dock->widget()) : nullptr;
-    if (!scroll || !scroll->widget() || !dock->isVisible() || dock->isFloating())
+    if (!scroll || !scroll->widget() || !Workspaces::isOnScreen(dock) || dock->isFloating())
         return 0;
     const QSize needed = scroll->widget()->minimumSizeHint();
     const QSize has = scroll->viewport()->size();
@@ -193,6 +205,12 @@ int missing(QDockWidget* dock, Qt::Orientation orientation)
                                                : needed.width() - has.width());
 }
 } // namespace
+
+bool Workspaces::isOnScreen(const QDockWidget* dock)
+{
+    // A dock behind another's tab is visible too, moved off the window (QWidgetAnimator).
+    return dock && dock->isVisible() && !dock->visibleRegion().isEmpty();
+}
 
 void Workspaces::fitContent()
 {
@@ -205,7 +223,7 @@ void Workspaces::fitContent()
     QDockWidget* program = dock(QStringLiteral("programDock"));
     // The read-out as high as its content asks (every axis, Go to), referencing below it.
     if (const int more = missing(position, Qt::Vertical); more > 0) {
-        if (reference && reference->isVisible() && !reference->isFloating())
+        if (isOnScreen(reference) && !reference->isFloating())
             m_window->resizeDocks({position, reference},
                                   {position->height() + more, qMax(0, reference->height() - more)},
                                   Qt::Vertical);

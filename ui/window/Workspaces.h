@@ -47,9 +47,12 @@ public:
     void suggest(Workspace workspace);
     void resetCurrent(); // the current workspace's default layout
     // Run: the read-out's and the program's docks grown where their page would scroll (a
-    // machine of more axes was opened, longer German texts), referencing below the read-out.
+    // machine of more axes was opened, longer German texts), referencing below the read-out
+    // where the operator put it there (by default it is behind the read-out's tab).
     void fitContent();
     void save() const; // into the settings (at close)
+    // Shown and not behind another dock's tab.
+    static bool isOnScreen(const QDockWidget* dock);
 
 Q_SIGNALS:
     void switched(stepdeck::ui::Workspaces::Workspace workspace);
