@@ -5102,6 +5102,14 @@ Regelung für Achse %1 einschalten?</translation>
             <source>Load and write</source>
             <translation>Laden und schreiben</translation>
         </message>
+        <message>
+            <source>Changes only</source>
+            <translation>Nur Änderungen</translation>
+        </message>
+        <message>
+            <source>Hide the values the file leaves as they are</source>
+            <translation>Werte ausblenden, die die Datei nicht ändert</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DigitalIoGroup</name>
