@@ -345,8 +345,9 @@ bool SetupPage::writeSet(const ParameterSet& set, bool verify, bool confirm)
         send(set, verify);
         return true;
     }
-    auto* dialog = new WritePreview(m_schema, set,
-                                    m_context->session()->spec().options.axisAddresses, window());
+    auto* dialog =
+        new WritePreview(m_schema, set, m_context->session()->spec().options.axisAddresses,
+                         {m_context->readBackParameters(), m_context->knownParameters()}, window());
     connect(dialog, &QDialog::finished, this, [this, set, verify](int result) {
         if (result == QDialog::Accepted)
             send(set, verify);

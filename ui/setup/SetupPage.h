@@ -24,7 +24,7 @@ class WritePreview;
 // values are never written. What counts as already on the device is
 // MachineContext::knownParameters() (forgotten on every reconnect, reset and power cycle);
 // what Write sends is a WritePlan. A multi-drive model previews exactly what goes to which
-// drive before anything is sent (WritePreview).
+// drive, old -> new, before anything is sent (WritePreview).
 class SetupPage : public QWidget
 {
     Q_OBJECT

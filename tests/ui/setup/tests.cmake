@@ -6,5 +6,7 @@ stepdeck_add_test(tst_nanotecsetup SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotec
 stepdeck_add_test(tst_emissetup SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emissetup.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
-# The load-from-file diff (changes only), as a unit.
-stepdeck_add_test(tst_diffdialog SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_diffdialog.cpp LABELS ui LIBS stepdeck_ui)
+# The load-from-file diff (changes only) and the write confirmation (old -> new), as units.
+foreach(_t tst_diffdialog tst_writepreview)
+  stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp LABELS ui LIBS stepdeck_ui)
+endforeach()
