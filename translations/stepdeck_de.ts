@@ -5102,6 +5102,14 @@ Regelung für Achse %1 einschalten?</translation>
             <source>Load and write</source>
             <translation>Laden und schreiben</translation>
         </message>
+        <message>
+            <source>Changes only</source>
+            <translation>Nur Änderungen</translation>
+        </message>
+        <message>
+            <source>Hide the values the file leaves as they are</source>
+            <translation>Werte ausblenden, die die Datei nicht ändert</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::DigitalIoGroup</name>
@@ -8192,10 +8200,6 @@ hält die Steuerung nicht an</translation>
             <translation>Parameter</translation>
         </message>
         <message>
-            <source>Value</source>
-            <translation>Wert</translation>
-        </message>
-        <message>
             <source>Unit</source>
             <translation>Einheit</translation>
         </message>
@@ -8206,6 +8210,26 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Write</source>
             <translation>Schreiben</translation>
+        </message>
+        <message>
+            <source>%1 (written, not read back)</source>
+            <translation>%1 (geschrieben, nicht zurückgelesen)</translation>
+        </message>
+        <message>
+            <source>unknown (not read)</source>
+            <translation>unbekannt (nicht gelesen)</translation>
+        </message>
+        <message>
+            <source>unknown (cannot be read back)</source>
+            <translation>unbekannt (kann nicht zurückgelesen werden)</translation>
+        </message>
+        <message>
+            <source>Old</source>
+            <translation>Alt</translation>
+        </message>
+        <message>
+            <source>New</source>
+            <translation>Neu</translation>
         </message>
     </context>
     <context>

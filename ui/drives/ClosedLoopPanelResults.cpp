@@ -68,7 +68,7 @@ void ClosedLoopPanel::onResult(const CommandResult& result)
         ParameterValue known;
         if (axis)
             known.perAxis.insert(*axis, on); // the setup page shows what the drive kept
-        m_context->addKnownParameters({{value.value(cl::kParameter).toString(), known}});
+        m_context->addKnownParameters({{value.value(cl::kParameter).toString(), known}}, true);
         text = on ? tr("Closed loop is on (read back).") : tr("Closed loop is off (read back).");
     } else if (result.ok() && step == Step::ResetError) {
         text = tr("Position error cleared; the position is the encoder's now.");

@@ -33,10 +33,17 @@ MachineContext::MachineContext(QObject* parent)
     connect(m_session, &ControllerSession::requestFinished, this, [this](const CommandResult& r) {
         if (m_pendingWrites.contains(r.id)) {
             const ParameterSet written = m_pendingWrites.take(r.id);
+            const bool verified = m_pendingVerified.remove(r.id);
+            if (r.ok()) {
+                addKnownParameters(written, false);
+                if (verified) // read back and compared by the adapter
+                    merge(&m_readBack, readableOnly(written));
+            }
+        } else if (m_pendingReads.remove(r.id) && r.value.canConvert<ParameterSet>()) {
             if (r.ok())
-                addKnownParameters(written);
-        } else if (m_pendingReads.remove(r.id) && r.ok() && r.value.canConvert<ParameterSet>()) {
-            addKnownParameters(r.value.value<ParameterSet>());
+                addKnownParameters(r.value.value<ParameterSet>(), true);
+            else // some drives answered: what did come back was read back
+                merge(&m_readBack, r.value.value<ParameterSet>());
         }
     });
     m_mdi = new MachineMdi(this, this);
@@ -46,6 +53,8 @@ RequestId MachineContext::writeParameters(const ParameterSet& values, bool verif
 {
     const RequestId id = session()->writeParameters(values, verify);
     m_pendingWrites.insert(id, values);
+    if (verify)
+        m_pendingVerified.insert(id);
     return id;
 }
 
@@ -197,15 +206,45 @@ void MachineContext::reset()
     forgetKnownParameters();
 }
 
-void MachineContext::addKnownParameters(const ParameterSet& set)
+void MachineContext::merge(ParameterSet* into, const ParameterSet& set)
 {
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
-        ParameterValue& known = m_known[it.key()];
+        ParameterValue& known = (*into)[it.key()];
         if (it.value().isPerAxis()) {
             for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
                 known.perAxis.insert(a.key(), a.value());
         } else {
             known.global = it.value().global;
+        }
+    }
+}
+
+ParameterSet MachineContext::readableOnly(const ParameterSet& set) const
+{
+    const ParameterSchema s = schema();
+    ParameterSet out;
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = s.find(it.key());
+        if (spec && spec->readable)
+            out.insert(it.key(), it.value());
+    }
+    return out;
+}
+
+void MachineContext::addKnownParameters(const ParameterSet& set, bool readBack)
+{
+    merge(&m_known, set);
+    if (readBack) {
+        merge(&m_readBack, set);
+    } else { // the device holds what was written now, not what was read before
+        for (auto it = set.cbegin(); it != set.cend(); ++it) {
+            if (!m_readBack.contains(it.key()))
+                continue;
+            ParameterValue& old = m_readBack[it.key()];
+            for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
+                old.perAxis.remove(a.key());
+            if (!it.value().isPerAxis())
+                old.global = QVariant();
         }
     }
     Q_EMIT knownParametersChanged();
@@ -214,7 +253,9 @@ void MachineContext::addKnownParameters(const ParameterSet& set)
 void MachineContext::forgetKnownParameters()
 {
     m_known.clear();
+    m_readBack.clear();
     m_pendingWrites.clear(); // answers to requests of an earlier link count for nothing
+    m_pendingVerified.clear();
     m_pendingReads.clear();
     Q_EMIT knownParametersChanged();
 }

@@ -69,8 +69,14 @@ public:
     // adds what was written, a read adds what came back.
     RequestId writeParameters(const ParameterSet& values, bool verify);
     RequestId readParameters(const QStringList& names);
-    void addKnownParameters(const ParameterSet& set); // merged per axis
+    // Merged per axis; readBack: the device reported these values (a read), else they were
+    // written and not read back since.
+    void addKnownParameters(const ParameterSet& set, bool readBack = false);
     void forgetKnownParameters();
+    // The values the device itself last reported in this link session: a read (also one that
+    // failed for some drives), or a Write & verify that succeeded. A value written since
+    // without reading it back is in knownParameters() only. Forgotten with knownParameters().
+    const ParameterSet& readBackParameters() const { return m_readBack; }
 
     // What the model's machine positions count, translated ("steps"; laser axes: "units"):
     // Capabilities::positionUnit, never a guess from the model id.
@@ -149,6 +155,8 @@ private:
     void openIdleConnectionMachine(const ModelInfo* model);
     void relayFrom(ControllerSession* selected);
     void announceLink(); // the selected session's link state and status to every listener
+    static void merge(ParameterSet* into, const ParameterSet& set); // per axis
+    ParameterSet readableOnly(const ParameterSet& set) const;       // what the schema reads back
 
     // The panels' signal source: the connection machine's own session (lent to its Machine),
     // and with a machine file open the relay of its selected controller's session.
@@ -165,7 +173,9 @@ private:
     QList<QMetaObject::Connection> m_relay;
     const ModelInfo* m_model = nullptr;
     ParameterSet m_known;
+    ParameterSet m_readBack;
     QMap<RequestId, ParameterSet> m_pendingWrites;
+    QSet<RequestId> m_pendingVerified; // writes that read their values back
     QSet<RequestId> m_pendingReads;
     bool m_setupIncomplete = false;
 };

@@ -1,4 +1,5 @@
 #include "DiffDialog.h"
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QHeaderView>
@@ -50,31 +51,26 @@ QList<DiffDialog::Row> DiffDialog::compare(const ParameterSchema& schema,
 }
 
 DiffDialog::DiffDialog(const QList<Row>& rows, const QString& fileName, QWidget* parent)
-    : QDialog(parent)
+    : QDialog(parent), m_rows(rows), m_table(new QTableWidget(int(rows.size()), 4, this)),
+      m_changesOnly(new QCheckBox(tr("Changes only"), this))
 {
     setWindowTitle(tr("Load parameters"));
-    auto* table = new QTableWidget(int(rows.size()), 4, this);
+    QTableWidget* table = m_table;
     table->setHorizontalHeaderLabels({tr("Parameter"), tr("Axis"), tr("Form"), tr("File")});
     table->verticalHeader()->hide();
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table->setSelectionMode(QAbstractItemView::NoSelection);
-    for (int r = 0; r < rows.size(); ++r) {
-        const Row& row = rows.at(r);
-        const QStringList cells{row.parameter, row.axis, row.current, row.loaded};
-        for (int c = 0; c < cells.size(); ++c) {
-            auto* item = new QTableWidgetItem(cells.at(c));
-            if (row.differs) {
-                item->setBackground(QColor(0xff, 0xf5, 0x9d));
-                QFont f = item->font();
-                f.setBold(c == 3);
-                item->setFont(f);
-            }
-            table->setItem(r, c, item);
-        }
-        m_changed += row.differs ? 1 : 0;
-    }
+    fillTable();
     table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     table->resizeColumnsToContents();
+    // On at first: a technician loading a file asks "what does it change?", and a full
+    // parameter file (every parameter, every axis or drive) buries the few rows that differ
+    // among dozens that do not. Off shows the whole file, the changes highlighted.
+    m_changesOnly->setObjectName(QStringLiteral("diffChangesOnly"));
+    m_changesOnly->setToolTip(tr("Hide the values the file leaves as they are"));
+    m_changesOnly->setChecked(true);
+    connect(m_changesOnly, &QCheckBox::toggled, this, &DiffDialog::showRows);
+    showRows(true);
 
     auto* summary = new QLabel(
         m_changed == 0
@@ -92,9 +88,43 @@ DiffDialog::DiffDialog(const QList<Row>& rows, const QString& fileName, QWidget*
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(summary);
+    layout->addWidget(m_changesOnly);
     layout->addWidget(table);
     layout->addWidget(buttons);
     resize(620, 420);
+}
+
+void DiffDialog::fillTable()
+{
+    for (int r = 0; r < m_rows.size(); ++r) {
+        const Row& row = m_rows.at(r);
+        const QStringList cells{row.parameter, row.axis, row.current, row.loaded};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells.at(c));
+            if (row.differs) {
+                item->setBackground(QColor(0xff, 0xf5, 0x9d));
+                QFont f = item->font();
+                f.setBold(c == 3);
+                item->setFont(f);
+            }
+            m_table->setItem(r, c, item);
+        }
+        m_changed += row.differs ? 1 : 0;
+    }
+}
+
+void DiffDialog::showRows(bool changesOnly)
+{
+    for (int r = 0; r < m_rows.size(); ++r)
+        m_table->setRowHidden(r, changesOnly && !m_rows.at(r).differs);
+}
+
+int DiffDialog::visibleRowCount() const
+{
+    int n = 0;
+    for (int r = 0; r < m_table->rowCount(); ++r)
+        n += m_table->isRowHidden(r) ? 0 : 1;
+    return n;
 }
 
 } // namespace stepdeck::ui

@@ -153,8 +153,11 @@ void SetupPage::showWhetherAnythingIsSettable()
     for (const ParameterSpec& spec : m_schema.specs())
         anyWritable = anyWritable || spec.writable;
     const bool none = !anyWritable && m_context->model();
-    for (QPushButton* b : {m_write, m_writeVerify, m_writeAll})
+    for (QPushButton* b : {m_write, m_writeAll})
         b->setVisible(!none);
+    // Write & verify only where something can be read back (issue 31): on a write-only
+    // controller (E-LAB, EMIS SMC-IC4) it would verify nothing, so Write is the only write.
+    m_writeVerify->setVisible(!none && m_anyReadable);
     for (QPushButton* b : std::as_const(m_formButtons))
         b->setVisible(!none);
     if (none) {
@@ -342,8 +345,9 @@ bool SetupPage::writeSet(const ParameterSet& set, bool verify, bool confirm)
         send(set, verify);
         return true;
     }
-    auto* dialog = new WritePreview(m_schema, set,
-                                    m_context->session()->spec().options.axisAddresses, window());
+    auto* dialog =
+        new WritePreview(m_schema, set, m_context->session()->spec().options.axisAddresses,
+                         {m_context->readBackParameters(), m_context->knownParameters()}, window());
     connect(dialog, &QDialog::finished, this, [this, set, verify](int result) {
         if (result == QDialog::Accepted)
             send(set, verify);
@@ -360,8 +364,9 @@ void SetupPage::send(const ParameterSet& set, bool verify)
     m_pendingSet = set;
     m_pendingVerify = verify;
     m_pendingWrite = m_context->writeParameters(set, verify);
-    setMessage(verify ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
-                      : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
+    setMessage(verify && WriteResultText::anyVerifiable(m_schema, set)
+                   ? tr("Writing and verifying %n parameter(s)\u2026", nullptr, int(set.size()))
+                   : tr("Writing %n parameter(s)\u2026", nullptr, int(set.size())),
                false);
 }
 

@@ -19,11 +19,12 @@ class WritePreview;
 
 // Setup pages for technicians, generated from the model's ParameterSchema: one group box per
 // schema group, one column per axis, range-checked editors, changed fields highlighted;
-// Read (where the protocol can), Write, Write & verify, Write all, and Save/Load in the CLI's
-// JSON format with a diff before a loaded file is written. Invalid values are never written.
-// What counts as already on the device is MachineContext::knownParameters() (forgotten on
-// every reconnect, reset and power cycle); what Write sends is a WritePlan. A multi-drive
-// model previews exactly what goes to which drive before anything is sent (WritePreview).
+// Read and Write & verify (only where the protocol can read back), Write, Write all, and
+// Save/Load in the CLI's JSON format with a diff before a loaded file is written. Invalid
+// values are never written. What counts as already on the device is
+// MachineContext::knownParameters() (forgotten on every reconnect, reset and power cycle);
+// what Write sends is a WritePlan. A multi-drive model previews exactly what goes to which
+// drive, old -> new, before anything is sent (WritePreview).
 class SetupPage : public QWidget
 {
     Q_OBJECT

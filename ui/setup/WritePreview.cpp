@@ -25,10 +25,32 @@ QString shown(const ParameterSpec& spec, const QVariant& v)
     }
     return v.toString();
 }
+
+QVariant valueOf(const ParameterSet& set, const QString& name, std::optional<Axis> axis)
+{
+    const ParameterValue v = set.value(name);
+    return axis ? v.perAxis.value(*axis) : v.global;
+}
+
+// The old value: the one the device last reported; one written since and not read back
+// says so; never a default: what is not known says so.
+QString oldText(const ParameterSpec& spec, const WritePreview::OnDevice& onDevice,
+                std::optional<Axis> axis)
+{
+    const QVariant read = valueOf(onDevice.readBack, spec.name, axis);
+    if (read.isValid())
+        return shown(spec, read);
+    const QVariant known = valueOf(onDevice.known, spec.name, axis);
+    if (known.isValid())
+        return WritePreview::tr("%1 (written, not read back)").arg(shown(spec, known));
+    return spec.readable ? WritePreview::tr("unknown (not read)")
+                         : WritePreview::tr("unknown (cannot be read back)");
+}
 } // namespace
 
 QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const ParameterSet& set,
-                                            const QMap<Axis, int>& driveAddresses)
+                                            const QMap<Axis, int>& driveAddresses,
+                                            const OnDevice& onDevice)
 {
     QMap<QString, QList<Row>> byDrive; // grouped per drive, drives in axis order
     QList<Row> global;
@@ -38,7 +60,8 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
         const ParameterValue& v = set.value(spec.name);
         if (!v.isPerAxis()) {
             global << Row{tr("all"), ParameterSchema::displayText(spec.label),
-                          shown(spec, v.global), ParameterSchema::displayText(spec.unit)};
+                          oldText(spec, onDevice, std::nullopt), shown(spec, v.global),
+                          ParameterSchema::displayText(spec.unit)};
             continue;
         }
         for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
@@ -46,9 +69,9 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
                 driveAddresses.contains(a.key())
                     ? tr("Drive %1 (%2)").arg(driveAddresses.value(a.key())).arg(axisName(a.key()))
                     : axisName(a.key());
-            byDrive[QString::number(int(a.key())) + drive]
-                << Row{drive, ParameterSchema::displayText(spec.label), shown(spec, a.value()),
-                       ParameterSchema::displayText(spec.unit)};
+            byDrive[QString::number(int(a.key())) + drive] << Row{
+                drive, ParameterSchema::displayText(spec.label), oldText(spec, onDevice, a.key()),
+                shown(spec, a.value()), ParameterSchema::displayText(spec.unit)};
         }
     }
     QList<Row> out = global;
@@ -58,23 +81,25 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
 }
 
 WritePreview::WritePreview(const ParameterSchema& schema, const ParameterSet& set,
-                           const QMap<Axis, int>& driveAddresses, QWidget* parent)
+                           const QMap<Axis, int>& driveAddresses, const OnDevice& onDevice,
+                           QWidget* parent)
     : QDialog(parent), m_table(new QTableWidget(this))
 {
     setObjectName(QStringLiteral("writePreview"));
     setWindowTitle(tr("Write parameters"));
-    const QList<Row> list = rows(schema, set, driveAddresses);
+    const QList<Row> list = rows(schema, set, driveAddresses, onDevice);
     auto* intro = new QLabel(
         tr("These %n value(s) will be sent, and nothing else:", nullptr, int(list.size())), this);
     intro->setWordWrap(true);
-    m_table->setColumnCount(4);
-    m_table->setHorizontalHeaderLabels({tr("Drive"), tr("Parameter"), tr("Value"), tr("Unit")});
+    m_table->setColumnCount(5);
+    m_table->setHorizontalHeaderLabels(
+        {tr("Drive"), tr("Parameter"), tr("Old"), tr("New"), tr("Unit")});
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setRowCount(int(list.size()));
     for (int r = 0; r < list.size(); ++r) {
         const Row& row = list.at(r);
-        const QStringList cells{row.drive, row.parameter, row.value, row.unit};
+        const QStringList cells{row.drive, row.parameter, row.old, row.value, row.unit};
         for (int c = 0; c < cells.size(); ++c)
             m_table->setItem(r, c, new QTableWidgetItem(cells.at(c)));
     }

@@ -18,6 +18,16 @@ QString WriteResultText::describe(const ParameterSchema& schema, const Parameter
     return parts.join(QStringLiteral(", "));
 }
 
+bool WriteResultText::anyVerifiable(const ParameterSchema& schema, const ParameterSet& set)
+{
+    for (auto it = set.cbegin(); it != set.cend(); ++it) {
+        const ParameterSpec* spec = schema.find(it.key());
+        if (spec && spec->readable)
+            return true;
+    }
+    return false;
+}
+
 QString WriteResultText::success(const ParameterSchema& schema, const ParameterSet& set,
                                  bool verify)
 {

@@ -14,6 +14,9 @@ class WriteResultText
 public:
     // set: what was written; verify: it was a Write & verify.
     static QString success(const ParameterSchema& schema, const ParameterSet& set, bool verify);
+    // Something in set can be read back, so a Write & verify verifies it (issue 31: a
+    // write-only controller's "verifying" message would promise what it cannot do).
+    static bool anyVerifiable(const ParameterSchema& schema, const ParameterSet& set);
     // "Max speed (X, Y, Z), Drive power": the parameters by their translated labels.
     static QString describe(const ParameterSchema& schema, const ParameterSet& set);
 };

@@ -44,6 +44,7 @@ private Q_SLOTS:
     void oneFieldEdit_withSilentDrive_previewAndWriteOnlyThatValue();
     void preview_cancelled_sendsNothing();
     void writeAndVerify_saysWhatWasReadBack();
+    void preview_nanotec_showsOldAndNew();
 
 private:
     ui::SetupPage* page() const { return m_f->window->setupPage(); }
@@ -52,6 +53,7 @@ private:
         return page()->field(QStringLiteral("phase-current"), axis);
     }
     void silenceDrive2AndRead();
+    QString previewOld(const QString& typed); // types into X, opens the preview: its old value
     std::unique_ptr<NanotecUiFixture> m_f;
 };
 
@@ -113,7 +115,7 @@ void TestNanotecSetup::oneFieldEdit_withSilentDrive_previewAndWriteOnlyThatValue
     QVERIFY(!preview->isModal());
     QCOMPARE(preview->rowCount(), 1); // exactly what will be sent
     QCOMPARE(preview->table()->item(0, 0)->text(), QStringLiteral("Drive 1 (X)"));
-    QCOMPARE(preview->table()->item(0, 2)->text(), QStringLiteral("60"));
+    QCOMPARE(preview->table()->item(0, 3)->text(), QStringLiteral("60")); // Old, New
     QList<QByteArray> frames;
     QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
     QVERIFY(writes(frames).isEmpty()); // nothing before the technician says so
@@ -158,6 +160,42 @@ void TestNanotecSetup::writeAndVerify_saysWhatWasReadBack()
     const qsizetype written = frames.indexOf(QByteArray("#2i66\r"));
     QVERIFY2(written >= 0, frames.join(' ').constData());
     QVERIFY(frames.mid(written).contains(QByteArray("#2Zi\r")));
+}
+
+QString TestNanotecSetup::previewOld(const QString& typed)
+{
+    if (!QTest::qWaitFor([this] { return page()->isEnabled(); }, 5000)) // a dialog closing
+        return QStringLiteral("page disabled");
+    QLineEdit* edit = current(Axis::X)->lineEdit();
+    edit->setFocus();
+    edit->selectAll();
+    QTest::keyClicks(edit, typed);
+    page()->writeButton()->click();
+    ui::WritePreview* preview = page()->openPreview();
+    if (!preview || preview->rowCount() != 1)
+        return QStringLiteral("no preview of one row");
+    if (preview->table()->item(0, 3)->text() != typed)
+        return QStringLiteral("new value %1").arg(preview->table()->item(0, 3)->text());
+    return preview->table()->item(0, 2)->text();
+}
+
+void TestNanotecSetup::preview_nanotec_showsOldAndNew()
+{
+    // Issue 31: old -> new, the old value being what drive 1 last reported.
+    m_f->session->sendRaw(QByteArrayLiteral("#1i44\r"));
+    page()->read();
+    QTRY_COMPARE_WITH_TIMEOUT(current(Axis::X)->value().toLongLong(), qint64(44), 15000);
+    QCOMPARE(previewOld(QStringLiteral("60")), QStringLiteral("44"));
+    page()->openPreview()->accept();
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Written")), 10000);
+    // A plain write is not read back (drives echo values they then ignore): it says so.
+    QCOMPARE(previewOld(QStringLiteral("61")), QStringLiteral("60 (written, not read back)"));
+    page()->openPreview()->reject();
+    // Write & verify reads it back: the value the drive reported again.
+    QVERIFY(page()->write(true, false));
+    QTRY_VERIFY_WITH_TIMEOUT(page()->messageText().startsWith(QStringLiteral("Written")), 10000);
+    QCOMPARE(previewOld(QStringLiteral("62")), QStringLiteral("61"));
+    page()->openPreview()->reject();
 }
 
 QTEST_MAIN(TestNanotecSetup)
