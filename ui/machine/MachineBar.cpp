@@ -1,4 +1,5 @@
 #include "MachineBar.h"
+#include "common/ElidedLabel.h"
 #include "common/LayoutItems.h"
 #include "common/LedIndicator.h"
 #include "machine/Machine.h"
@@ -12,7 +13,7 @@
 namespace stepdeck::ui {
 
 MachineBar::MachineBar(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_name(new QLabel(this)), m_lamps(new QHBoxLayout),
+    : QWidget(parent), m_context(context), m_name(new ElidedLabel(this)), m_lamps(new QHBoxLayout),
       m_controllerLabel(new QLabel(tr("Pages show:"), this)), m_controllers(new QComboBox(this)),
       m_connect(new QPushButton(this))
 {
@@ -29,7 +30,9 @@ MachineBar::MachineBar(MachineContext* context, QWidget* parent)
     m_connect->setMinimumWidth(130);
     m_connect->setToolTip(tr("Connect or disconnect every controller of the machine"));
     layout->addWidget(new QLabel(tr("Machine:"), this));
-    layout->addWidget(m_name);
+    // The name takes the room the bar has (up to its whole text), elided below that (issue 31:
+    // it was cut at a fixed width even at 1920 px).
+    layout->addWidget(m_name, 1);
     layout->addSpacing(8);
     layout->addLayout(m_lamps);
     layout->addStretch(1);
@@ -69,8 +72,11 @@ void MachineBar::rebuild()
     const QFontMetrics metrics = fontMetrics();
     const int nameWidth = metrics.horizontalAdvance(QLatin1Char('M')) * kNameChars;
     const int portWidth = metrics.horizontalAdvance(QLatin1Char('M')) * kPortChars;
-    m_name->setText(metrics.elidedText(m->description().name, Qt::ElideRight, nameWidth));
-    m_name->setToolTip(m->description().name);
+    m_name->setMinimumTextWidth(nameWidth);
+    m_name->setText(m->description().name);
+    const QFontMetrics bold = m_name->fontMetrics();
+    m_name->setMaximumWidth(bold.horizontalAdvance(m->description().name) +
+                            bold.horizontalAdvance(QLatin1Char(' ')));
     for (const machine::MachineController& c : m->description().controllers) {
         ControllerSession* session = m->session(c.id);
         const QString port = c.isSimulated() ? tr("simulator") : c.port;

@@ -9,6 +9,7 @@ class QPushButton;
 
 namespace stepdeck::ui {
 
+class ElidedLabel;
 class LedIndicator;
 class MachineContext;
 
@@ -20,7 +21,7 @@ class MachineBar : public QWidget
 {
     Q_OBJECT
 public:
-    static constexpr int kNameChars = 16; // widths in 'M's beyond which a text is elided
+    static constexpr int kNameChars = 16; // widths in 'M's: the name's least, a port's most
     static constexpr int kPortChars = 12;
 
     explicit MachineBar(MachineContext* context, QWidget* parent = nullptr);
@@ -32,6 +33,7 @@ public:
     QComboBox* controllerCombo() const { return m_controllers; }
     QPushButton* connectButton() const { return m_connect; }
     LedIndicator* lamp(const QString& controllerId) const;
+    ElidedLabel* nameLabel() const { return m_name; }
     QString lampText(const QString& controllerId) const;
 
 public Q_SLOTS:
@@ -49,7 +51,7 @@ private:
     void updateButton();
 
     MachineContext* m_context;
-    QLabel* m_name;
+    ElidedLabel* m_name;
     QHBoxLayout* m_lamps;
     QLabel* m_controllerLabel;
     QComboBox* m_controllers;

@@ -46,6 +46,7 @@ private Q_SLOTS:
     void closeMachine_connectionBarBackItsMachineOfOneConnectable();
     void layout_sixAxisMachineAt1366x768_fitsAndNothingIsCut();
     void machineBar_longNamesAndPorts_elidedFullTextInTooltip();
+    void machineBar_nameWithRoom_shownInFull();
     void connect_machineFileWithSetup_windowSaysItWroteIt();
 
 private:
@@ -188,8 +189,28 @@ void TestMachineWindow::machineBar_longNamesAndPorts_elidedFullTextInTooltip()
     const ui::LedIndicator* lamp = bar->lamp(QStringLiteral("wrist"));
     QVERIFY(lamp->text().startsWith(QStringLiteral("wrist @ /dev/")));
     QVERIFY(lamp->text().contains(QChar(0x2026)));
+    QTRY_VERIFY(bar->nameLabel()->isElided());
+    QVERIFY(bar->nameLabel()->toolTipText().startsWith(QStringLiteral("Gantry of the second")));
     QVERIFY2(bar->sizeHint().width() < 1366 / 2,
              qPrintable(QString::number(bar->sizeHint().width())));
+    const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
+    QVERIFY2(minimum.width() <= 1366, qPrintable(QString::number(minimum.width())));
+}
+
+// Issue 31 finding: the name was cut at 16 'M's even at 1920 px. A name of 45 characters on
+// the 1366 px screen, with two controllers, has the room: shown in full; the machine of the
+// test above (an 80-character name, three long ports) still gets its name elided with the
+// whole of it in the tooltip.
+void TestMachineWindow::machineBar_nameWithRoom_shownInFull()
+{
+    const QString name = QStringLiteral("Gantry of the second assembly line, hall 4 XY");
+    QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson(name))));
+    ui::ElidedLabel* label = window()->machineBar()->nameLabel();
+    QTRY_VERIFY(label->isVisible());
+    QCOMPARE(label->text(), name);
+    QTRY_VERIFY2(!label->isElided(), qPrintable(label->shownLines().join(QLatin1Char(' '))));
+    QVERIFY(label->width() >
+            label->fontMetrics().horizontalAdvance(QLatin1Char('M')) * ui::MachineBar::kNameChars);
     const QSize minimum = window()->minimumSizeHint().expandedTo(window()->minimumSize());
     QVERIFY2(minimum.width() <= 1366, qPrintable(QString::number(minimum.width())));
 }
