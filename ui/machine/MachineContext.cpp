@@ -265,4 +265,25 @@ QString MachineContext::machineUnitName() const
     return QCoreApplication::translate("Units", capabilities().positionUnit);
 }
 
+QString MachineContext::axisCountName(const machine::MachineAxis& axis) const
+{
+    // What the controller counts (Capabilities::positionUnit: laser axes count "units").
+    const ControllerSession* s = m_machine ? m_machine->session(axis.controller) : nullptr;
+    return s ? QCoreApplication::translate("Units", s->capabilities().positionUnit)
+             : QCoreApplication::translate("stepdeck::ui::MachineDro", "steps");
+}
+
+QString MachineContext::axisUnitName(const machine::MachineAxis& axis) const
+{
+    switch (axis.unit) {
+    case machine::AxisUnit::Millimetre:
+        return QCoreApplication::translate("stepdeck::ui::MachineDro", "mm");
+    case machine::AxisUnit::Degree:
+        return QCoreApplication::translate("stepdeck::ui::MachineDro", "deg");
+    case machine::AxisUnit::Step:
+        break;
+    }
+    return axisCountName(axis);
+}
+
 } // namespace stepdeck::ui

@@ -6,6 +6,7 @@
 namespace stepdeck::machine {
 class Machine;
 struct MachineDescription;
+struct MachineAxis;
 enum class PositionKnowledge;
 } // namespace stepdeck::machine
 
@@ -81,6 +82,10 @@ public:
     // What the model's machine positions count, translated ("steps"; laser axes: "units"):
     // Capabilities::positionUnit, never a guess from the model id.
     QString machineUnitName() const;
+    // An axis' unit as the read-out shows it, translated: mm, deg, or what its controller
+    // counts (axisCountName: "steps", laser axes "units").
+    QString axisUnitName(const machine::MachineAxis& axis) const;
+    QString axisCountName(const machine::MachineAxis& axis) const;
 
     // A machine file (issue 19). openMachine reads and validates the file (MachineFile) and,
     // only if all of it is valid, closes the machine open now and creates the new one's

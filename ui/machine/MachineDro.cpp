@@ -22,19 +22,6 @@ const QString kAmber = QStringLiteral("background:#ffe082; color:#4e3400;");
 const QString kGreen = QStringLiteral("background:#c8e6c9; color:#1b5e20;");
 const QString kGrey = QStringLiteral("background:#eceff1; color:#37474f;");
 
-QString unitWord(machine::AxisUnit unit)
-{
-    switch (unit) {
-    case machine::AxisUnit::Millimetre:
-        return QCoreApplication::translate("stepdeck::ui::MachineDro", "mm");
-    case machine::AxisUnit::Degree:
-        return QCoreApplication::translate("stepdeck::ui::MachineDro", "deg");
-    case machine::AxisUnit::Step:
-        break;
-    }
-    return QCoreApplication::translate("stepdeck::ui::MachineDro", "steps");
-}
-
 QString format(const machine::MachineAxis& axis, double value)
 {
     return axis.unit == machine::AxisUnit::Step ? QString::number(qRound64(value))
@@ -187,16 +174,12 @@ void MachineDro::refresh()
 
 QString MachineDro::countWord(const machine::MachineAxis& axis) const
 {
-    // What the controller counts (Capabilities::positionUnit: laser axes count "units").
-    const ControllerSession* s =
-        m_context->machine() ? m_context->machine()->session(axis.controller) : nullptr;
-    return s ? QCoreApplication::translate("Units", s->capabilities().positionUnit)
-             : unitWord(machine::AxisUnit::Step);
+    return m_context->axisCountName(axis);
 }
 
 QString MachineDro::unitOf(const machine::MachineAxis& axis) const
 {
-    return axis.unit == machine::AxisUnit::Step ? countWord(axis) : unitWord(axis.unit);
+    return m_context->axisUnitName(axis);
 }
 
 MoveProfile MachineDro::rampOf(const machine::MachineAxis& axis) const

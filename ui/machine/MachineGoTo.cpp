@@ -82,7 +82,7 @@ void MachineGoTo::updateUnit()
         return;
     const bool steps = a->unit == machine::AxisUnit::Step;
     m_target->setDecimals(steps ? 0 : 3);
-    m_target->setSuffix(QLatin1Char(' ') + machine::unitKey(a->unit));
+    m_target->setSuffix(QLatin1Char(' ') + m_context->axisUnitName(*a)); // as the read-out
 }
 
 bool MachineGoTo::eventFilter(QObject* watched, QEvent* event)
