@@ -7,6 +7,7 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineEditor.h"
 #include "machine/MachineFileActions.h"
+#include "machine/MachineMdi.h"
 #include "messages/StatusMessages.h"
 #include <QPointer>
 #include <QPushButton>
@@ -23,6 +24,7 @@ private Q_SLOTS:
     void cleanup() { m_rig.stop(); }
     void reopen_idle_opensTheSavedFileReconnectedPositionsUnknown();
     void reopen_whileMoving_refusesWithTheReason();
+    void reopen_mdiLineHeldAtM0_refusesWithTheReason();
 
 private:
     // Edit machine… on the open machine, renamed and saved over its file.
@@ -91,6 +93,30 @@ void TestMachineReopen::reopen_whileMoving_refusesWithTheReason()
     QCOMPARE(running->description().name, QStringLiteral("Table with rotary axis"));
     m_rig.window()->stopAll();
     QTRY_VERIFY_WITH_TIMEOUT(!table->status().anyMoving(), 10000);
+    editor->close();
+}
+
+// Nothing moves, but a line runs (held at its M0): the machine is not replaced under it.
+void TestMachineReopen::reopen_mdiLineHeldAtM0_refusesWithTheReason()
+{
+    QVERIFY(m_rig.openAndConnect());
+    ui::MachineEditor* editor = editAndSave(QStringLiteral("Renamed table"));
+    QVERIFY(editor);
+    machine::Machine* running = m_rig.machine();
+    ui::MachineMdi* mdi = m_rig.window()->context()->mdi();
+    QString refusal;
+    QVERIFY2(mdi->runLine(QStringLiteral("M0"), &refusal), qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(mdi->isPausedAtOperatorStop(), 5000);
+    editor->reopenButton()->click();
+    QVERIFY2(editor->messageText().contains(QStringLiteral("an MDI line runs")),
+             qPrintable(editor->messageText()));
+    QCOMPARE(m_rig.machine(), running);
+    mdi->abort();
+    QTRY_VERIFY(!mdi->isBusy());
+    editor->reopenButton()->click(); // now it may
+    QVERIFY2(editor->messageText().contains(QStringLiteral("re-opened")),
+             qPrintable(editor->messageText()));
+    QCOMPARE(m_rig.machine()->description().name, QStringLiteral("Renamed table"));
     editor->close();
 }
 
