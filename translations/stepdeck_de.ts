@@ -1076,6 +1076,14 @@
             <source>Operating mode (5.5, 8.1). Moves, jog and reference runs switch the mode themselves; the closed-loop workflow runs calibration and closed-loop-reference and sets the mode of before again afterwards.</source>
             <translation>Betriebsart (5.5, 8.1). Fahrten, Tippbetrieb und Referenzfahrten stellen den Modus selbst um; die Inbetriebnahme der Regelung fährt Kalibrierfahrt und Regelungs-Referenzfahrt und stellt danach den vorherigen Modus wieder ein.</translation>
         </message>
+        <message>
+            <source>(no unit)</source>
+            <translation>(keine Einheit)</translation>
+        </message>
+        <message>
+            <source>The E-LAB manual gives no unit for the acceleration, only its scale: the larger the value, the steeper the ramp (SetAcceleration).</source>
+            <translation>Das E-LAB-Handbuch nennt für die Beschleunigung keine Einheit, nur ihre Skala: je größer der Wert, desto steiler die Rampe (SetAcceleration).</translation>
+        </message>
     </context>
     <context>
         <name>Units</name>
@@ -4612,6 +4620,14 @@
             <source>%1/s</source>
             <translation>%1/s</translation>
         </message>
+        <message>
+            <source>deg</source>
+            <translation>°</translation>
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ClosedLoopPanel</name>
@@ -6230,6 +6246,14 @@ W1500</translation>
             <source>Allow feed moves (G1, G2, G3) whose axes sit on several controllers. They start together but share no clock, so their path is only approximate; off, the program check refuses them.</source>
             <translation>Vorschubbewegungen (G1, G2, G3) erlauben, deren Achsen an mehreren Steuerungen hängen. Sie starten gemeinsam, haben aber keinen gemeinsamen Takt, daher ist ihre Bahn nur ungefähr; aus: die Programmprüfung lehnt sie ab.</translation>
         </message>
+        <message>
+            <source>Re-open machine</source>
+            <translation>Maschine neu öffnen</translation>
+        </message>
+        <message>
+            <source>Close the machine the window runs and open it again from the saved file. Its positions are unknown until the axes are referenced again, as after any reconnect.</source>
+            <translation>Die Maschine, mit der das Fenster arbeitet, schließen und aus der gespeicherten Datei neu öffnen. Ihre Positionen sind unbekannt, bis die Achsen erneut referenziert sind, wie nach jedem Neuverbinden.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineFileActions</name>
@@ -6280,6 +6304,22 @@ W1500</translation>
         <message>
             <source>The machine's tools: the lengths G43 applies, the texts M6 shows</source>
             <translation>Die Werkzeuge der Maschine: die Längen, die G43 anwendet, die Texte, die M6 zeigt</translation>
+        </message>
+        <message>
+            <source>Saved. The open machine "%1" still runs on the description it was opened with: re-open it to use the saved file.</source>
+            <translation>Gespeichert. Die geöffnete Maschine „%1“ läuft weiter mit der Beschreibung, mit der sie geöffnet wurde: Öffnen Sie sie neu, um die gespeicherte Datei zu verwenden.</translation>
+        </message>
+        <message>
+            <source>not possible here</source>
+            <translation>hier nicht möglich</translation>
+        </message>
+        <message>
+            <source>Machine re-opened from the saved file: its positions are unknown until the axes are referenced again.</source>
+            <translation>Maschine aus der gespeicherten Datei neu geöffnet: Ihre Positionen sind unbekannt, bis die Achsen erneut referenziert sind.</translation>
+        </message>
+        <message>
+            <source>Not re-opened: %1</source>
+            <translation>Nicht neu geöffnet: %1</translation>
         </message>
     </context>
     <context>
@@ -6610,6 +6650,42 @@ W1500</translation>
         <message>
             <source>MDI: %1</source>
             <translation>MDI: %1</translation>
+        </message>
+        <message>
+            <source>a program runs</source>
+            <translation>ein Programm läuft</translation>
+        </message>
+        <message>
+            <source>an MDI line runs</source>
+            <translation>eine MDI-Zeile läuft</translation>
+        </message>
+        <message>
+            <source>the laser bridge runs</source>
+            <translation>die Laserbrücke läuft</translation>
+        </message>
+        <message>
+            <source>a reference run is under way</source>
+            <translation>eine Referenzfahrt läuft</translation>
+        </message>
+        <message>
+            <source>a stop is still waiting for its confirmation</source>
+            <translation>ein Stopp wartet noch auf seine Bestätigung</translation>
+        </message>
+        <message>
+            <source>the machine is moving (%1): stop it first</source>
+            <translation>die Maschine bewegt sich (%1): zuerst anhalten</translation>
+        </message>
+        <message>
+            <source>Machine not re-opened: %1</source>
+            <translation>Maschine nicht neu geöffnet: %1</translation>
+        </message>
+        <message>
+            <source>the saved file does not open: see the message line</source>
+            <translation>die gespeicherte Datei lässt sich nicht öffnen: siehe Meldungszeile</translation>
+        </message>
+        <message>
+            <source>Machine re-opened from %1: positions are unknown until the axes are referenced again.</source>
+            <translation>Maschine aus %1 neu geöffnet: Die Positionen sind unbekannt, bis die Achsen erneut referenziert sind.</translation>
         </message>
     </context>
     <context>

@@ -41,6 +41,16 @@ QString ParameterSchema::displayUnitSuffix(const ParameterSpec& spec)
     return spec.unit.isEmpty() ? QString() : QStringLiteral(" ") + displayText(spec.unit);
 }
 
+QString ParameterSchema::displayUnitColumn(const ParameterSpec& spec)
+{
+    return displayText(spec.unit.isEmpty() ? spec.unitNote : spec.unit);
+}
+
+QString ParameterSchema::displayUnitToolTip(const ParameterSpec& spec)
+{
+    return spec.unit.isEmpty() ? displayText(spec.unitNoteDetail) : QString();
+}
+
 QString ParameterSchema::displayLabel(const QString& name) const
 {
     const ParameterSpec* spec = find(name);

@@ -20,6 +20,10 @@ struct ParameterSpec
     QString label; // e.g. "Start speed"
     QString group; // "Speeds", "Acceleration", "Switch polarity", "Power & spindle", ...
     QString unit;  // "steps/s", "%", "rpm", ...
+    // A parameter whose manual names no unit: what the unit column shows instead ("(no unit)")
+    // and, as its tooltip, what the manual does say about the scale. Never a guessed unit.
+    QString unitNote;
+    QString unitNoteDetail;
     ParameterType type = ParameterType::Integer;
     qint64 minimum = 0;
     qint64 maximum = 0;
@@ -62,6 +66,10 @@ public:
     static QString displayLabel(const ParameterSpec& spec) { return displayText(spec.label); }
     // " steps/s" (translated, with its leading space) or "" for parameters without a unit.
     static QString displayUnitSuffix(const ParameterSpec& spec);
+    // The unit column's text: the translated unit, or the unit note when there is no unit.
+    static QString displayUnitColumn(const ParameterSpec& spec);
+    // Its tooltip: what the manual says when the parameter has no unit ("" otherwise).
+    static QString displayUnitToolTip(const ParameterSpec& spec);
 
     const QList<ParameterSpec>& specs() const { return m_specs; }
     const ParameterSpec* find(const QString& name) const;

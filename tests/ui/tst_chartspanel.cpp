@@ -1,11 +1,19 @@
 // Charts: samples follow the status, the time window limits what is shown, pause freezes
 // it, and the visible data exports to CSV and the charts to PNG.
+#include "MachineTestSupport.h"
 #include "UiTestSupport.h"
 #include "charts/ChartsPanel.h"
+#include "machine/Machine.h"
+#include "machine/MachineBar.h"
 #include "setup/SetupPage.h"
+#include <QChart>
+#include <QChartView>
 #include <QCheckBox>
 #include <QImage>
+#include <QLineSeries>
+#include <QPushButton>
 #include <QTemporaryDir>
+#include <QValueAxis>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -18,7 +26,37 @@ private Q_SLOTS:
     void sampler_window_keepsNewestSeconds();
     void sampler_csv_headerAndRows();
     void panel_followsStatus_exportsCsvAndPng();
+    void charts_machineInMm_plotsEachAxisInItsUnit();
 };
+
+namespace {
+// The chart of that title on the panel.
+QChart* chartTitled(ui::ChartsPanel* panel, const QString& title)
+{
+    for (QChartView* view : panel->findChildren<QChartView*>()) {
+        if (view->chart()->title() == title)
+            return view->chart();
+    }
+    return nullptr;
+}
+
+QString valueAxisTitle(QChart* chart)
+{
+    const QList<QAbstractAxis*> axes = chart->axes(Qt::Vertical);
+    return axes.isEmpty() ? QString() : axes.first()->titleText();
+}
+
+// The newest point of the series of that name (NaN: none).
+double lastValue(QChart* chart, const QString& series)
+{
+    for (QAbstractSeries* s : chart->series()) {
+        auto* line = qobject_cast<QLineSeries*>(s);
+        if (line && line->name() == series && line->count() > 0)
+            return line->at(line->count() - 1).y();
+    }
+    return qQNaN();
+}
+} // namespace
 
 void TestChartsPanel::sampler_window_keepsNewestSeconds()
 {
@@ -86,6 +124,54 @@ void TestChartsPanel::panel_followsStatus_exportsCsvAndPng()
     const QString png = dir.filePath(QStringLiteral("c.png"));
     QVERIFY2(charts->exportPng(png, &error), qPrintable(error));
     QVERIFY(!QImage(png).isNull());
+}
+
+// Issue 31: "the charts show a machine in mm in steps". A bare controller is plotted in steps;
+// a machine in mm is plotted in mm (its axes' names and units, the unit in the value axis'
+// title), the way the Position read-out converts: a move of 2.5 mm is 2.5, not 1000 steps.
+void TestChartsPanel::charts_machineInMm_plotsEachAxisInItsUnit()
+{
+    QSettings().clear();
+    UiFixture f;
+    f.window->show();
+    ui::ChartsPanel* charts = f.window->chartsPanel();
+    f.window->raisePage(charts);
+    QCOMPARE(valueAxisTitle(chartTitled(charts, QStringLiteral("Position"))),
+             QStringLiteral("steps"));
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("mm.machine.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Table in mm",
+  "controllers": [ { "id": "table", "model": "elab", "port": "sim" } ],
+  "axes": [
+    { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Y", "controller": "table", "axis": "Y", "unit": "mm", "stepsPerUnit": 400 },
+    { "name": "Z", "controller": "table", "axis": "Z", "unit": "mm", "stepsPerUnit": 800 }
+  ]
+})");
+    file.close();
+    QVERIFY(f.window->openMachine(path));
+    f.window->machineBar()->connectButton()->click();
+    machine::Machine* m = f.window->context()->machine();
+    ControllerSession* table = m->session(QStringLiteral("table"));
+    QTRY_VERIFY_WITH_TIMEOUT(table->linkState() == LinkState::Connected, 10000);
+    QVERIFY(writeSetupBeforeMotion(table));
+
+    QChart* position = chartTitled(charts, QStringLiteral("Position"));
+    QVERIFY(position);
+    QCOMPARE(valueAxisTitle(position), QStringLiteral("mm"));
+    QCOMPARE(valueAxisTitle(chartTitled(charts, QStringLiteral("Commanded velocity"))),
+             QStringLiteral("mm/s"));
+    QString refusal;
+    QVERIFY2(m->move({{QStringLiteral("X"), 2.5}}, false, &refusal), qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(table->status().axes.value(Axis::X).position == 1000 &&
+                                 !table->status().anyMoving(),
+                             10000);
+    QTRY_COMPARE_WITH_TIMEOUT(lastValue(position, QStringLiteral("X")), 2.5, 5000);
+    QCOMPARE(lastValue(position, QStringLiteral("Y")), 0.0);
 }
 
 QTEST_MAIN(TestChartsPanel)

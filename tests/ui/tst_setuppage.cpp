@@ -9,6 +9,7 @@
 #include "setup/SetupPage.h"
 #include "setup/WriteWarnings.h"
 #include <QJsonDocument>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTemporaryDir>
@@ -34,6 +35,7 @@ private Q_SLOTS:
     void cleanup() { m_f.reset(); }
 
     void form_generatedFromSchema_groupsAndAxisColumns();
+    void acceleration_unitColumn_saysNoUnitWithManualTooltip();
     void write_firstTime_sendsEveryParameterWithExactBytes_data();
     void write_firstTime_sendsEveryParameterWithExactBytes();
     void write_changedField_sendsOnlyItsCommand();
@@ -98,6 +100,20 @@ void TestSetupPage::form_generatedFromSchema_groupsAndAxisColumns()
     }
     // E-LAB cannot read parameters back: no Read button.
     QVERIFY(!page()->readButton()->isVisible());
+}
+
+// Issue 31: "The Acceleration row has no unit". The manual gives none, so the row says so
+// (the schema's unit note) and its tooltip quotes what the manual says about the scale.
+void TestSetupPage::acceleration_unitColumn_saysNoUnitWithManualTooltip()
+{
+    auto* unit = page()->findChild<QLabel*>(QStringLiteral("unit-acceleration"));
+    QVERIFY(unit);
+    QCOMPARE(unit->text(), QStringLiteral("(no unit)"));
+    QVERIFY2(unit->toolTip().contains(QStringLiteral("the steeper the ramp")),
+             qPrintable(unit->toolTip()));
+    auto* speed = page()->findChild<QLabel*>(QStringLiteral("unit-start-speed"));
+    QVERIFY(speed);
+    QCOMPARE(speed->text(), QStringLiteral("steps/s"));
 }
 
 void TestSetupPage::write_firstTime_sendsEveryParameterWithExactBytes_data()

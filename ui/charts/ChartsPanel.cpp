@@ -92,13 +92,18 @@ void ChartsPanel::rebuild()
     for (const Plot& p : std::as_const(m_plots))
         delete p.view; // owns its chart
     m_plots.clear();
+    // Each axis in its machine unit (mm, deg), else in the model's position unit (steps;
+    // laser axes: units, issue 16).
+    m_axes = chartAxes(*m_context);
     QStringList axes;
-    for (Axis a : m_context->axes())
-        axes << axisName(a);
-    // In the model's position unit (laser axes: units, issue 16).
-    const QString unit = m_context->machineUnitName();
-    m_plots << makePlot(tr("Position"), unit, axes);
-    m_plots << makePlot(tr("Commanded velocity"), tr("%1/s").arg(unit), axes);
+    for (const ChartAxis& a : std::as_const(m_axes))
+        axes << a.name;
+    const QStringList units = chartUnits(m_axes); // several: each named in the title
+    QStringList rates;
+    for (const QString& unit : units)
+        rates << tr("%1/s").arg(unit);
+    m_plots << makePlot(tr("Position"), units.join(QStringLiteral(", ")), axes);
+    m_plots << makePlot(tr("Commanded velocity"), rates.join(QStringLiteral(", ")), axes);
     m_plots << makePlot(tr("Temperature"), tr("°C"), {tr("Temperature")});
     m_plots << makePlot(tr("Poll rate"), tr("Hz"), {tr("Poll rate")});
     auto* grid = static_cast<QGridLayout*>(m_grid->layout());
@@ -180,11 +185,15 @@ void ChartsPanel::refresh()
     if (m_pause->isChecked() || m_plots.size() < 4)
         return;
     m_shown = m_sampler->window(windowSeconds());
-    const QList<Axis> axes = m_context->axes();
-    fill(m_plots[0], m_shown,
-         [&](const ChartSample& s, int i) { return s.position.value(axes.value(i), qQNaN()); });
-    fill(m_plots[1], m_shown,
-         [&](const ChartSample& s, int i) { return s.velocity.value(axes.value(i), qQNaN()); });
+    const QList<ChartAxis>& axes = m_axes;
+    fill(m_plots[0], m_shown, [&](const ChartSample& s, int i) {
+        const ChartAxis& a = axes.at(i);
+        return a.position(s.position.value(a.axis, qQNaN()));
+    });
+    fill(m_plots[1], m_shown, [&](const ChartSample& s, int i) {
+        const ChartAxis& a = axes.at(i);
+        return a.velocity(s.velocity.value(a.axis, qQNaN()));
+    });
     fill(m_plots[2], m_shown, [](const ChartSample& s, int) { return s.temperature; });
     fill(m_plots[3], m_shown, [](const ChartSample& s, int) { return s.pollRate; });
 }

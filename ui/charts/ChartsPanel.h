@@ -1,4 +1,5 @@
 #pragma once
+#include "charts/ChartAxes.h"
 #include "charts/ChartSampler.h"
 #include <QWidget>
 
@@ -28,6 +29,8 @@ public:
     bool exportPng(const QString& path, QString* error);
     QCheckBox* pauseCheck() const { return m_pause; }
     int pointCount(int chart) const; // points shown in chart 0..3 (tests)
+    // What the Position and Commanded velocity charts plot per axis, and in which unit.
+    const QList<ChartAxis>& plottedAxes() const { return m_axes; }
 
 public Q_SLOTS:
     void refresh();
@@ -68,6 +71,7 @@ private:
     QCheckBox* m_pause;
     QTimer* m_timer;
     QVector<ChartSample> m_shown;
+    QList<ChartAxis> m_axes;
 };
 
 } // namespace stepdeck::ui

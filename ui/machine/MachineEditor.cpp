@@ -148,9 +148,17 @@ QWidget* MachineEditor::buildButtons()
     connect(save, &QPushButton::clicked, this, &MachineEditor::save);
     connect(saveAs, &QPushButton::clicked, this, &MachineEditor::saveAs);
     connect(close, &QPushButton::clicked, this, &QWidget::close);
+    m_reopen = new QPushButton(tr("Re-open machine"), box);
+    m_reopen->setObjectName(QStringLiteral("reopenMachineButton"));
+    m_reopen->setToolTip(tr("Close the machine the window runs and open it again from the saved "
+                            "file. Its positions are unknown until the axes are referenced "
+                            "again, as after any reconnect."));
+    m_reopen->hide(); // until the open machine's file was saved (offerReopen)
+    connect(m_reopen, &QPushButton::clicked, this, [this] { Q_EMIT reopenRequested(m_path); });
     for (QPushButton* b : {open, save, saveAs})
         row->addWidget(b);
     row->addStretch(1);
+    row->addWidget(m_reopen);
     row->addWidget(close);
     return box;
 }
@@ -158,6 +166,7 @@ QWidget* MachineEditor::buildButtons()
 void MachineEditor::setMachine(const MachineDescription& machine, const QString& path)
 {
     m_path = path;
+    m_reopen->hide(); // another file: offered again once it is saved
     m_name->setText(machine.name);
     m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
                                                                QLocale::FloatingPointShortest)
@@ -274,6 +283,12 @@ void MachineEditor::showMessage(const QString& text, bool isError)
 {
     m_message->setText(text);
     m_message->setStyleSheet(isError ? QStringLiteral("color: #b71c1c;") : QString());
+}
+
+void MachineEditor::offerReopen(const QString& note)
+{
+    showMessage(note, false);
+    m_reopen->show();
 }
 
 QString MachineEditor::messageText() const

@@ -8,6 +8,7 @@
 class QCheckBox;
 class QHBoxLayout;
 class QLineEdit;
+class QPushButton;
 
 namespace stepdeck::ui {
 
@@ -64,6 +65,14 @@ public:
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }
+    // "Re-open machine": shown once the file of the machine the window runs was saved
+    // (offerReopen); asks the window to open that machine again from the file.
+    QPushButton* reopenButton() const { return m_reopen; }
+    // The machine the window runs is the file just saved: note says it still runs on the
+    // description it was opened with, and Re-open machine appears.
+    void offerReopen(const QString& note);
+    // A note in the message line (the outcome of a re-open).
+    void showNote(const QString& text, bool isError) { showMessage(text, isError); }
 
 public Q_SLOTS:
     void save();       // to path(), or Save as when there is none
@@ -72,6 +81,7 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void saved(const QString& path);
+    void reopenRequested(const QString& path);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -94,6 +104,7 @@ private:
     ControllersTable* m_controllers = nullptr;
     AxesTable* m_axes = nullptr;
     ElidedLabel* m_message = nullptr;
+    QPushButton* m_reopen = nullptr;
     QString m_path;
     bool m_modified = false;
     bool m_closing = false; // the operator already answered the unsaved-changes question

@@ -4,6 +4,7 @@
 #include <QCloseEvent>
 #include <QFileInfo>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 
 namespace stepdeck::ui {
@@ -60,6 +61,7 @@ bool MachineEditor::saveTo(const QString& path)
     m_path = path;
     setModified(false);
     showMessage(tr("Saved to %1").arg(path), false);
+    m_reopen->hide(); // offered again by whoever knows this file is the machine open now
     Q_EMIT saved(path);
     return true;
 }

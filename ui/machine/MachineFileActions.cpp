@@ -75,6 +75,14 @@ void MachineFileActions::setCurrentMachine(const QString& path)
     m_current = path;
 }
 
+QString MachineFileActions::currentMachine() const
+{
+    // The machine the window runs, however it was opened (File menu, --machine, the demo).
+    if (m_context && m_context->hasMachineFile() && !m_context->machinePath().isEmpty())
+        return m_context->machinePath();
+    return m_current;
+}
+
 MachineEditor* MachineFileActions::showEditor(MachineEditor* editor)
 {
     if (m_editor) // one editor at a time: the one open may hold unsaved changes
@@ -86,10 +94,10 @@ MachineEditor* MachineFileActions::showEditor(MachineEditor* editor)
     }
     m_editor = editor;
     editor->setAttribute(Qt::WA_DeleteOnClose);
-    connect(editor, &MachineEditor::saved, this, [this](const QString& path) {
-        recentmachines::add(path);
-        rebuildRecentMenu();
-    });
+    connect(editor, &MachineEditor::saved, this,
+            [this, editor](const QString& path) { onSaved(editor, path); });
+    connect(editor, &MachineEditor::reopenRequested, this,
+            [this, editor](const QString& path) { reopen(editor, path); });
     editor->resize(editor->sizeHint());
     editor->show();
     editor->raise();
@@ -122,8 +130,8 @@ void MachineFileActions::editMachine()
         editor->openFile(path); // an invalid file: the editor says why
         showEditor(editor);
     };
-    if (!m_current.isEmpty()) {
-        edit(m_current);
+    if (!currentMachine().isEmpty()) {
+        edit(currentMachine());
     } else if (m_context && m_context->isConnectionMachine()) {
         // The connection bar's machine of one (issue 28, item 0): its axes as they are now,
         // saved as a machine file of its own, which then opens in its place.
@@ -134,6 +142,33 @@ void MachineFileActions::editMachine()
     } else
         dialogs::openFile(m_window, QStringLiteral("machines"), tr("Edit machine"),
                           tr("StepDeck machines (*.machine.json);;JSON files (*.json)"), edit);
+}
+
+void MachineFileActions::onSaved(MachineEditor* editor, const QString& path)
+{
+    recentmachines::add(path);
+    rebuildRecentMenu();
+    if (!m_context || !m_context->hasMachineFile() || m_context->machinePath().isEmpty() ||
+        QFileInfo(path) != QFileInfo(m_context->machinePath()))
+        return;
+    // The running machine was built from the file as it was: saving does not change it.
+    const QString text =
+        tr("Saved. The open machine \"%1\" still runs on the description it was opened with: "
+           "re-open it to use the saved file.")
+            .arg(m_context->machine()->description().name);
+    editor->offerReopen(text);
+    Q_EMIT openMachineSaved(text);
+}
+
+void MachineFileActions::reopen(MachineEditor* editor, const QString& path)
+{
+    const QString refusal = m_reopenMachine ? m_reopenMachine(path) : tr("not possible here");
+    if (refusal.isEmpty())
+        editor->showNote(tr("Machine re-opened from the saved file: its positions are unknown "
+                            "until the axes are referenced again."),
+                         false);
+    else
+        editor->showNote(tr("Not re-opened: %1").arg(refusal), true);
 }
 
 void MachineFileActions::open(const QString& path)

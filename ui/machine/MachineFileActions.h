@@ -37,9 +37,18 @@ public:
     // closed). Otherwise false: the editor comes to the front and asks first, and `then` runs
     // once it closed (saved or discarded); after Cancel nothing runs and the window stays.
     bool closeEditorThen(std::function<void()> then);
+    // The file Edit machine… edits: the open machine's own file, else the one last opened here.
+    QString currentMachine() const;
+    // How the window re-opens its machine from the saved file (issue 31): empty when it did,
+    // otherwise why not (something moves, a program runs). Unset: Re-open is refused.
+    void setReopen(std::function<QString(const QString& path)> reopen)
+    {
+        m_reopenMachine = std::move(reopen);
+    }
 
 public Q_SLOTS:
-    // The machine the window runs now: Edit machine… edits it. Empty: none.
+    // The machine file last opened through these actions: Edit machine… edits it when the
+    // window runs no machine file (currentMachine()). Empty: none.
     void setCurrentMachine(const QString& path);
     void newMachine();
     void chooseMachineToOpen();
@@ -49,10 +58,15 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void openRequested(const QString& path);
+    // The file of the machine the window runs was saved: text says it still runs on the
+    // description it was opened with and how to re-open it.
+    void openMachineSaved(const QString& text);
 
 private:
     MachineEditor* showEditor(MachineEditor* editor);
     void rebuildRecentMenu();
+    void onSaved(MachineEditor* editor, const QString& path);
+    void reopen(MachineEditor* editor, const QString& path);
 
     MachineContext* m_context;
     QWidget* m_window;
@@ -64,6 +78,7 @@ private:
     QString m_current;
     QPointer<MachineEditor> m_editor;
     QPointer<ToolTableDialog> m_toolDialog;
+    std::function<QString(const QString&)> m_reopenMachine;
 };
 
 } // namespace stepdeck::ui

@@ -205,8 +205,10 @@ QWidget* SetupPage::buildGroup(const QString& group)
         } else {
             add(std::nullopt, 1, qMax(1, int(axes.size())));
         }
-        grid->addWidget(new QLabel(ParameterSchema::displayText(spec.unit), box), row,
-                        1 + int(axes.size()));
+        auto* unit = new QLabel(ParameterSchema::displayUnitColumn(spec), box);
+        unit->setObjectName(QStringLiteral("unit-") + spec.name);
+        unit->setToolTip(ParameterSchema::displayUnitToolTip(spec));
+        grid->addWidget(unit, row, 1 + int(axes.size()));
         ++row;
     }
     grid->setColumnStretch(0, 2);

@@ -331,15 +331,7 @@ void MainWindow::buildMenus()
     auto* machineFiles = new MachineFileActions(m_context, this);
     m_machineFiles = machineFiles;
     machineFiles->addTo(file);
-    connect(m_position, &PositionPanel::editMachineRequested, machineFiles,
-            &MachineFileActions::editMachine);
-    // An opened machine is the one "Edit machine…" edits; an invalid file opens nothing and
-    // its message names the field.
-    connect(machineFiles, &MachineFileActions::openRequested, this,
-            [this, machineFiles](const QString& path) {
-                if (openMachine(path))
-                    machineFiles->setCurrentMachine(path);
-            });
+    connectMachineFiles(machineFiles);
     file->addSeparator();
     file->addAction(m_connectAction);
     file->addSeparator();

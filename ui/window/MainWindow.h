@@ -99,6 +99,11 @@ public Q_SLOTS:
     bool openMachine(const QString& path);
     // Every controller of the machine stops and closes; the single-controller bar returns.
     void closeMachine();
+    // The machine editor's Re-open machine (issue 31): the machine open now is closed and
+    // opened again from path (its saved file), reconnected if it was connected, its positions
+    // unknown until referenced as after any reconnect. Refused while anything moves or runs:
+    // then the reason (also in the message line); empty when it was re-opened.
+    QString reopenMachine(const QString& path);
     void stopAll();
     void panicAll();
     void showError(const QString& message);
@@ -111,6 +116,10 @@ protected:
 private:
     void buildActions();
     void buildMenus();
+    void connectMachineFiles(MachineFileActions* files);
+    // Why the machine may not be replaced now (something moves, a program or run is under
+    // way), or empty.
+    QString machineBusyText() const;
     void buildDocks();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
                          Qt::DockWidgetArea area);

@@ -49,7 +49,14 @@ ParameterSchema parameterSchema()
                                 "Ramp steepness of positioning moves; sensible values are 500 to "
                                 "2000 (SetAcceleration, <ESC>A)"),
               1000);
+    // The manual gives no unit (SetAcceleration: "Je größer die Werte desto steiler ist die
+    // Rampe"): the column says so instead of guessing one.
     accel.unit = QString();
+    accel.unitNote = QString::fromUtf8(QT_TRANSLATE_NOOP("Parameters", "(no unit)"));
+    accel.unitNoteDetail = QString::fromUtf8(
+        QT_TRANSLATE_NOOP("Parameters", "The E-LAB manual gives no unit for the acceleration, "
+                                        "only its scale: the larger the value, the steeper the "
+                                        "ramp (SetAcceleration)."));
     specs << accel;
 
     auto polarity = [](const char* name, const char* label, const char* desc) {

@@ -31,6 +31,7 @@ class TestParameterSchema : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void elabSchema_hasTheDocumentedNames();
+    void elabAcceleration_noUnitInManual_notesItInsteadOfGuessing();
     void validateScalar_ranges_data();
     void validateScalar_ranges();
     void parseAssignment_perAxisValues();
@@ -58,6 +59,25 @@ void TestParameterSchema::elabSchema_hasTheDocumentedNames()
           "reference-polarity", "drive-power", "spindle-rpm", "coolant"})
         QVERIFY2(m_schema.find(QString::fromLatin1(name)), name);
     QVERIFY(!m_schema.find(QStringLiteral("warp-speed")));
+}
+
+// Issue 31: the manual gives the acceleration no unit ("Je größer die Werte desto steiler
+// ist die Rampe"). The unit column says so, with the manual's words as its tooltip; the unit
+// itself stays empty (no guessed unit in messages or files), and a parameter with a unit
+// shows only its unit.
+void TestParameterSchema::elabAcceleration_noUnitInManual_notesItInsteadOfGuessing()
+{
+    const ParameterSpec* accel = m_schema.find(QStringLiteral("acceleration"));
+    QVERIFY(accel);
+    QVERIFY(accel->unit.isEmpty());
+    QCOMPARE(ParameterSchema::displayUnitColumn(*accel), QStringLiteral("(no unit)"));
+    QVERIFY2(ParameterSchema::displayUnitToolTip(*accel).contains(
+                 QStringLiteral("the larger the value, the steeper the ramp")),
+             qPrintable(ParameterSchema::displayUnitToolTip(*accel)));
+    QCOMPARE(ParameterSchema::displayUnitSuffix(*accel), QString());
+    const ParameterSpec* start = m_schema.find(QStringLiteral("start-speed"));
+    QCOMPARE(ParameterSchema::displayUnitColumn(*start), QStringLiteral("steps/s"));
+    QCOMPARE(ParameterSchema::displayUnitToolTip(*start), QString());
 }
 
 void TestParameterSchema::validateScalar_ranges_data()

@@ -16,7 +16,8 @@ stepdeck_add_test(tst_machinefileactions SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_m
 target_compile_definitions(tst_machinefileactions PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The main window running a machine of several controllers (issue 19, ui/machine/): an E-LAB
 # and a Nanotec simulator on two pseudo-terminals (MachineWindowRig), on a 1366x768 screen.
-foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machinejog)
+foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machinejog
+              tst_machinereopen)
   stepdeck_add_test(${_test} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_test}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/MachineWindowRig.h ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
@@ -24,6 +25,8 @@ foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machin
                     ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
+# Re-open machine edits through the editor (MachineEditorTestSupport.h names the examples).
+target_compile_definitions(tst_machinereopen PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
 stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
                   LABELS unit LIBS stepdeck_ui)

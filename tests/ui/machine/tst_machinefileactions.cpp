@@ -13,6 +13,7 @@
 #include <QAbstractButton>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QTemporaryDir>
 
 using namespace stepdeck;
@@ -38,8 +39,24 @@ private Q_SLOTS:
     void newMachine_whileEditorHasChanges_asksFirst();
     void closeWindow_editorHasChanges_asksCancelKeepsBothDiscardClosesBoth();
     void editorOpen_escInACell_stillStops();
+    void editMachine_machineOpen_opensItsFile();
+    void editorSaved_machineOpen_saysItStillRunsAndOffersReopen();
 
 private:
+    // A machine of one simulated E-LAB in mm, written to dir.
+    static QString writeSimMachine(const QTemporaryDir& dir)
+    {
+        const QString path = dir.filePath(QStringLiteral("sim.machine.json"));
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly))
+            return {};
+        file.write(R"({
+  "format": "stepdeck-machine", "version": 1, "name": "Simulated table",
+  "controllers": [ { "id": "table", "model": "elab", "port": "sim" } ],
+  "axes": [ { "name": "X", "controller": "table", "axis": "X", "unit": "mm", "stepsPerUnit": 400 } ]
+})");
+        return path;
+    }
     static ui::MachineFileActions* actionsOf(ui::MainWindow* window)
     {
         return window->findChild<ui::MachineFileActions*>();
@@ -290,6 +307,57 @@ void TestMachineFileActions::editorOpen_escInACell_stillStops()
     QTest::keyClick(cell, Qt::Key_F1);
     QCOMPARE(panic.size(), 1);
     editor->close();
+}
+
+// Issue 31: with a machine open (here opened as `stepdeck --machine FILE` and the demo open
+// it, not through the File menu), Edit machine… asked for a file. It edits that machine's own
+// file at once, no file dialog.
+void TestMachineFileActions::editMachine_machineOpen_opensItsFile()
+{
+    UiFixture f;
+    QTemporaryDir dir;
+    const QString path = writeSimMachine(dir);
+    QVERIFY(f.window->openMachine(path));
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    actions->editAction()->trigger();
+    for (QWidget* w : QApplication::topLevelWidgets())
+        QVERIFY2(!w->inherits("QFileDialog") || !w->isVisible(), "a file dialog opened");
+    ui::MachineEditor* editor = actions->editor();
+    QVERIFY(editor);
+    QCOMPARE(editor->path(), path);
+    QCOMPARE(editor->nameEdit()->text(), QStringLiteral("Simulated table"));
+    editor->close();
+    QTRY_VERIFY(!actions->editor());
+}
+
+// Issue 31: saving the open machine's file does not change the machine that runs; the editor
+// and the window's message line say so, and the editor offers Re-open machine. Saved as
+// another file, it is not the open machine's and nothing is offered.
+void TestMachineFileActions::editorSaved_machineOpen_saysItStillRunsAndOffersReopen()
+{
+    UiFixture f;
+    QTemporaryDir dir;
+    const QString path = writeSimMachine(dir);
+    QVERIFY(f.window->openMachine(path));
+    ui::MachineFileActions* actions = actionsOf(f.window.get());
+    actions->editAction()->trigger();
+    ui::MachineEditor* editor = actions->editor();
+    QVERIFY(editor);
+    QVERIFY(!editor->reopenButton()->isVisible());
+    typeInto(editor->nameEdit(), QStringLiteral("Renamed table"));
+    QVERIFY(editor->saveTo(dir.filePath(QStringLiteral("other.machine.json"))));
+    QVERIFY(!editor->reopenButton()->isVisible());
+    QVERIFY(editor->saveTo(path));
+    QVERIFY(editor->reopenButton()->isVisible());
+    QVERIFY2(editor->messageText().contains(
+                 QStringLiteral("still runs on the description it was opened with")),
+             qPrintable(editor->messageText()));
+    QVERIFY2(f.window->messages()->currentText().contains(QStringLiteral("re-open it")),
+             qPrintable(f.window->messages()->currentText()));
+    QCOMPARE(f.window->context()->machine()->description().name,
+             QStringLiteral("Simulated table")); // the running machine is unchanged
+    editor->close();
+    QTRY_VERIFY(!actions->editor());
 }
 
 QTEST_MAIN(TestMachineFileActions)
