@@ -8194,6 +8194,17 @@ hält die Steuerung nicht an</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::WorkspaceFit</name>
+        <message>
+            <source>Jog controls</source>
+            <translation>Tipp-Bedienelemente</translation>
+        </message>
+        <message>
+            <source>The window is too small for these pages, they scroll: %1. A larger window, or View &gt; Reset layout, gives them room.</source>
+            <translation>Das Fenster ist zu klein für diese Seiten, sie rollen: %1. Ein größeres Fenster oder Ansicht &gt; Layout zurücksetzen gibt ihnen Platz.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::Workspaces</name>
         <message>
             <source>Run</source>

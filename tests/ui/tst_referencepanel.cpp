@@ -6,6 +6,7 @@
 #include "machine/MachineReferenceRows.h"
 #include "position/ReferencePanel.h"
 #include "protocols/laser/LaserAxisSimulator.h"
+#include <QProgressBar>
 #include <QPushButton>
 
 using namespace stepdeck;
@@ -66,6 +67,10 @@ void TestReferencePanel::referenceAll_runsStagesInOrder_allReferenced()
     QVERIFY2(referenceAll(), qPrintable(m_f->window->referencePanel()->messageText()));
     for (const AxisStatus& a : m_f->window->context()->status().axes)
         QVERIFY(a.referenced);
+    // The bar says the run is complete (issue 31: it showed 0 % after success).
+    const QProgressBar* bar = m_f->window->referencePanel()->progressBar();
+    QCOMPARE(bar->value(), bar->maximum());
+    QVERIFY(bar->maximum() > 0);
     // <US> reference moves: Z alone first, then X and Y together (manual: -1/0/+1 per axis).
     const QList<elab::Command> runs = m_f->commands(elab::ctrl::US, start);
     QCOMPARE(runs.size(), 2);
@@ -88,6 +93,7 @@ void TestReferencePanel::referenceAxis_rowButton_onlyThatAxisAtTheBoard()
     QCOMPARE(runs[0].values, (std::array<qint64, 3>{0, -1, 0}));
     QVERIFY(m_f->window->context()->status().axes.value(Axis::Y).referenced);
     QVERIFY(!m_f->window->context()->status().axes.value(Axis::X).referenced);
+    QCOMPARE(panel->progressBar()->value(), panel->progressBar()->maximum());
 }
 
 void TestReferencePanel::successMessage_afterPanic_replaced()
@@ -98,6 +104,7 @@ void TestReferencePanel::successMessage_afterPanic_replaced()
     QTRY_VERIFY2(panel->messageText().contains(QStringLiteral("no longer referenced")),
                  qPrintable(panel->messageText()));
     QTRY_VERIFY(!m_f->window->context()->status().axes.value(Axis::X).referenced);
+    QCOMPARE(panel->progressBar()->value(), 0); // no longer complete
 }
 
 void TestReferencePanel::cancel_duringRun_saysCancelledAndBoardStops()

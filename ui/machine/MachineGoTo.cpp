@@ -34,6 +34,10 @@ MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, Q
     layout->addLayout(row);
     layout->addWidget(m_result);
     m_target->setRange(-1e6, 1e6);
+    // Its width from the row, not from the range and unit: the widest value with the longest
+    // unit (German "Einheiten") would widen the read-out's page (tst_layoutholdsstill).
+    m_target->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_target->setMinimumWidth(m_target->fontMetrics().averageCharWidth() * 14 + 36);
     m_go->setFocusPolicy(Qt::NoFocus);
     // Enter in the target field goes there, like the button (issue 16).
     m_target->installEventFilter(this);

@@ -17,7 +17,7 @@ class StatusMessages : public QObject
 {
     Q_OBJECT
 public:
-    enum class Owner { General, Link, Controller, Request, Jog, Safety, Setup };
+    enum class Owner { General, Link, Controller, Request, Jog, Safety, Setup, Layout };
     enum class Severity { Info, Error };
     static constexpr int kLifetimeMs = 60000;
     static constexpr int kLogLimit = 500;

@@ -211,8 +211,9 @@ void ReferencePanel::onFinished(bool ok, const QString& message)
     m_message->setText(message);
     m_message->setStyleSheet(ok ? QStringLiteral("QLabel { color: #2e7d32; }")
                                 : QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
-    if (!ok)
-        m_progress->setValue(0);
+    // A run that succeeded is complete whatever stage was reported last (issue 31: the bar
+    // stayed at 0 % after success); a failed one starts over.
+    m_progress->setValue(ok ? m_progress->maximum() : 0);
     m_cancel->setEnabled(false);
     onStatus(m_context->status());
 }

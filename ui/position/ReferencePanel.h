@@ -27,6 +27,7 @@ public:
     explicit ReferencePanel(MachineContext* context, QWidget* parent = nullptr);
 
     QString messageText() const;
+    QProgressBar* progressBar() const { return m_progress; }
     bool isRunning() const { return m_machineRun != 0; }
     MachineReferenceRows* machineRows() const { return m_machineRows; }
 

@@ -35,6 +35,7 @@
 #include "window/ScreenBound.h"
 #include "window/SimulatorMenu.h"
 #include "window/Translations.h"
+#include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
 #include <QAction>
 #include <QActionGroup>
@@ -187,6 +188,18 @@ void MainWindow::buildWorkspaces()
     connect(m_context, &MachineContext::machineChanged, m_workspaces, &Workspaces::fitContent,
             Qt::QueuedConnection);
     m_workspaces->initialise();
+    // A page that cannot have its room says so in the message line (issue 31), and the
+    // message ends when everything fits again.
+    m_fit = new WorkspaceFit(this);
+    connect(m_workspaces, &Workspaces::switched, m_fit, &WorkspaceFit::schedule);
+    connect(m_context, &MachineContext::machineChanged, m_fit, &WorkspaceFit::schedule);
+    connect(m_fit, &WorkspaceFit::fitRequested, m_workspaces, &Workspaces::fitContent);
+    connect(m_fit, &WorkspaceFit::fitChanged, this, [this](const QString& text) {
+        if (text.isEmpty())
+            m_messages->clear(StatusMessages::Owner::Layout);
+        else
+            m_messages->show(StatusMessages::Owner::Layout, text, StatusMessages::Severity::Info);
+    });
     // Run comes up when a program is opened, unless the operator chose a workspace by hand
     // (issue 31). Not when a reference run ends: that happens seconds after the click, while
     // the operator may reach for the jog pad, and nothing moves under the operator's hand.

@@ -37,6 +37,7 @@ class StatusMessages;
 class SetupPage;
 class StatusPanel;
 class TrafficConsole;
+class WorkspaceFit;
 class Workspaces;
 
 // The main window: connection bar, STOP/PANIC and the jog panel in the centre (always
@@ -81,6 +82,7 @@ public:
     MessageLine* messageLine() const { return m_messageLine; }
     MessageLog* messageLog() const { return m_log; }
     Workspaces* workspaces() const { return m_workspaces; } // Run and Setup (issue 31)
+    WorkspaceFit* workspaceFit() const { return m_fit; }    // says when a page scrolls
 
     // Pages for --screenshot: a file stem and the page widget (the dock's content, or the
     // central jog panel).
@@ -170,6 +172,7 @@ private:
     StatusMessages* m_messages;
     MessageLine* m_messageLine;
     MessageLog* m_log = nullptr;
+    WorkspaceFit* m_fit = nullptr;
     Workspaces* m_workspaces = nullptr;
 };
 

@@ -10,10 +10,12 @@
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "machine/MachineContext.h"
+#include "messages/StatusMessages.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPage.h"
 #include "window/Translations.h"
+#include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
 #include <QDockWidget>
 #include <QScrollArea>
@@ -40,6 +42,7 @@ private Q_SLOTS:
     void programOpened_bringsUpRun_unlessChosenByHand();
     void run_onTheScreen_noScrollBarNoTextCut_data();
     void run_onTheScreen_noScrollBarNoTextCut();
+    void run_windowTooSmall_saysWhichPagesScroll();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -216,6 +219,32 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
     cut += clippedTexts(window()->centralWidget());
     QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
     ui::translations::install(qApp, QStringLiteral("en"));
+}
+
+// "A layout that cannot fit says so instead of clipping" (issue 31): made smaller than its
+// pages need, the window names the pages that scroll in the message line; given the room
+// again, the docks take it back and the message ends.
+void TestWorkspaces::run_windowTooSmall_saysWhichPagesScroll()
+{
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QVERIFY(m_rig.openAndConnect());
+    workspaces()->switchTo(Workspace::Run);
+    QTRY_VERIFY2(scrollingDocks().isEmpty(), qPrintable(scrollingDocks().join(u';')));
+    ui::WorkspaceFit* fit = window()->workspaceFit();
+    QTRY_VERIFY(fit->lastReported().isEmpty());
+    const QSize full = window()->size();
+    window()->resize(full.width(), full.height() * 2 / 3);
+    const QString position = dock("positionDock")->windowTitle();
+    QTRY_VERIFY2(fit->lastReported().contains(position),
+                 qPrintable(fit->lastReported().join(u',')));
+    const QString shown = window()->messages()->currentText();
+    QVERIFY2(shown.contains(position) && shown.contains(QStringLiteral("too small")),
+             qPrintable(shown));
+    window()->resize(full);
+    QTRY_VERIFY(fit->lastReported().isEmpty());
+    QVERIFY2(!window()->messages()->currentText().contains(QStringLiteral("too small")),
+             qPrintable(window()->messages()->currentText()));
 }
 
 int main(int argc, char** argv)
