@@ -5301,7 +5301,7 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
         <message>
             <source>not used</source>
-            <translation>nicht benutzt</translation>
+            <translation>ungenutzt</translation>
         </message>
         <message>
             <source>stick axis %1</source>

@@ -11,7 +11,7 @@ namespace stepdeck::ui {
 
 namespace {
 // A layout's version: a layout saved by another arrangement of docks is not restored.
-constexpr int kLayoutVersion = 32;
+constexpr int kLayoutVersion = 33;
 const char* const kKeys[2] = {"window/workspace/run", "window/workspace/setup"};
 const char* const kCurrentKey = "window/workspace/current";
 // The window height from which the Run workspace's left column holds the position and
@@ -120,12 +120,13 @@ void Workspaces::arrange(Workspace workspace)
         return;
     }
     // Shares of the window, so the default layout suits 1024x768 as well as Full HD: the
-    // side docks a third and a fifth of the width, the bottom tabs a third of the height. The
-    // status lamps arrange themselves in one column when narrow.
+    // side docks a third and a fifth of the width (a little more: the German gamepad page's
+    // mapping at 1366), the bottom tabs a third of the height. The status lamps arrange
+    // themselves in one column when narrow.
     QDockWidget* status = dock(QStringLiteral("statusDock"));
     QDockWidget* setup = dock(QStringLiteral("setupDock"));
     m_window->resizeDocks({position, status},
-                          {qBound(220, width * 32 / 100, 480), qBound(220, width * 20 / 100, 470)},
+                          {qBound(220, width * 32 / 100, 480), qBound(220, width * 21 / 100, 470)},
                           Qt::Horizontal);
     m_window->resizeDocks({setup}, {qBound(160, height / 3, 320)}, Qt::Vertical);
 }
