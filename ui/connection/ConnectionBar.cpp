@@ -61,10 +61,12 @@ ConnectionBar::ConnectionBar(MachineContext* context, QWidget* parent)
     m_rate->setToolTip(tr("Achieved status poll rate"));
 
     layout->addWidget(new QLabel(tr("Model:"), this));
-    layout->addWidget(m_model, 1);
+    // The model's name takes most of the room to spare (issue 31: the German names were
+    // clipped at 1366 px), a port's path less: it scrolls in its line edit.
+    layout->addWidget(m_model, 3);
     layout->addSpacing(8);
     layout->addWidget(new QLabel(tr("Port:"), this));
-    layout->addWidget(m_port, 2);
+    layout->addWidget(m_port, 1);
     layout->addWidget(m_options);
     layout->addWidget(m_resetLabel);
     layout->addWidget(m_resetLine);

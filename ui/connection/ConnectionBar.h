@@ -43,6 +43,7 @@ public:
     void setSelectedModel(const QString& modelId);
 
     QComboBox* portCombo() const { return m_port; }
+    QComboBox* modelCombo() const { return m_model; }
     // RTS or DTR (issue 7, E-LAB); hidden for models without a reset line.
     QComboBox* resetLineCombo() const { return m_resetLine; }
     QToolButton* optionsButton() const { return m_options; }

@@ -7,6 +7,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
+#include "connection/ConnectionBar.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "machine/MachineContext.h"
@@ -17,10 +18,12 @@
 #include "window/Translations.h"
 #include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
+#include <QComboBox>
 #include <QDockWidget>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QStyleOptionComboBox>
 #include <QTabBar>
 
 using namespace stepdeck;
@@ -46,6 +49,8 @@ private Q_SLOTS:
     void run_windowTooSmall_saysWhichPagesScroll();
     void setup_sidePages_noSidewaysScroll_data();
     void setup_sidePages_noSidewaysScroll();
+    void connectionBar_modelNamesInFull_data();
+    void connectionBar_modelNamesInFull();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -283,6 +288,38 @@ void TestWorkspaces::setup_sidePages_noSidewaysScroll()
                                     .arg(QLatin1String(name))
                                     .arg(area->widget()->minimumSizeHint().width())
                                     .arg(area->viewport()->width())));
+    }
+    ui::translations::install(qApp, QStringLiteral("en"));
+}
+
+void TestWorkspaces::connectionBar_modelNamesInFull_data()
+{
+    setup_sidePages_noSidewaysScroll_data();
+}
+
+// Issue 31 finding: the model combo was clipped in German. Every model's name shows in full
+// in the tool bar of the window on the laptop screen.
+void TestWorkspaces::connectionBar_modelNamesInFull()
+{
+    QFETCH(QString, language);
+    ui::translations::install(qApp, language);
+    m_rig.f = std::make_unique<UiFixture>();
+    window()->show();
+    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QComboBox* combo = window()->connectionBar()->modelCombo();
+    QTRY_VERIFY(combo->isVisible());
+    for (int i = 0; i < combo->count(); ++i) {
+        combo->setCurrentIndex(i);
+        QCoreApplication::processEvents();
+        QStyleOptionComboBox option;
+        option.initFrom(combo);
+        const QRect text = combo->style()->subControlRect(QStyle::CC_ComboBox, &option,
+                                                          QStyle::SC_ComboBoxEditField, combo);
+        const int needed = combo->fontMetrics().horizontalAdvance(combo->currentText());
+        QVERIFY2(text.width() >= needed, qPrintable(QStringLiteral("\"%1\": %2 px of %3")
+                                                        .arg(combo->currentText())
+                                                        .arg(text.width())
+                                                        .arg(needed)));
     }
     ui::translations::install(qApp, QStringLiteral("en"));
 }
