@@ -73,6 +73,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
         // Another program: what was said of the last one (its run's end, "too large to edit")
         // goes, and its preview is fitted to the view, whatever the last one's zoom.
         m_banner->setStatus(QString());
+        m_controls->clearProgress();
         m_preview->pathView()->fitToView();
         checkNow();
     });
