@@ -6975,6 +6975,24 @@ W1500</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ProgramErrorList</name>
+        <message>
+            <source>line %1: %2</source>
+            <translation>Zeile %1: %2</translation>
+        </message>
+        <message>
+            <source>No errors.</source>
+            <translation>Keine Fehler.</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n error(s); click one to go to its line.</source>
+            <translation>
+                <numerusform>%n Fehler; ein Klick springt zu seiner Zeile.</numerusform>
+                <numerusform>%n Fehler; ein Klick springt zur Zeile des Fehlers.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ProgramFiles</name>
         <message>
             <source>Motion programs (*.ngc *.nc *.gcode);;All files (*)</source>

@@ -59,6 +59,16 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::ProgramErrorList</name>
+        <message numerus="yes">
+            <source>%n error(s); click one to go to its line.</source>
+            <translation>
+                <numerusform>%n error; click it to go to its line.</numerusform>
+                <numerusform>%n errors; click one to go to its line.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ProgramPage</name>
         <message numerus="yes">
             <source>%n error(s); line %1: %2</source>

@@ -173,6 +173,30 @@ void ProgramEditor::setRunningLine(int line)
     }
 }
 
+void ProgramEditor::goToLine(int line, int column)
+{
+    const QTextBlock block = document()->findBlockByNumber(line - 1);
+    if (line < 1 || !block.isValid())
+        return;
+    const QString text = block.text();
+    int from = column >= 1 ? qMin(column - 1, int(text.size())) : 0;
+    int to = from;
+    while (to < text.size() && !text.at(to).isSpace())
+        ++to;
+    if (column < 1 || to == from) { // no word there: the whole line
+        from = 0;
+        to = int(text.size());
+    }
+    // Anchored at the word's end, the cursor at its start: the caret stands at the column.
+    QTextCursor cursor(block);
+    cursor.setPosition(block.position() + to);
+    cursor.setPosition(block.position() + from, QTextCursor::KeepAnchor);
+    setTextCursor(cursor);
+    ensureCursorVisible();
+    window()->activateWindow();
+    setFocus(Qt::OtherFocusReason);
+}
+
 void ProgramEditor::setExcerpt(bool excerpt)
 {
     m_excerpt = excerpt;

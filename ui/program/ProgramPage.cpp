@@ -6,6 +6,7 @@
 #include "ProgramCheckStatus.h"
 #include "ProgramControls.h"
 #include "ProgramEditor.h"
+#include "ProgramErrorList.h"
 #include "ProgramFiles.h"
 #include "ProgramMachinePositions.h"
 #include "ProgramPathView.h"
@@ -23,6 +24,7 @@
 #include <QPushButton>
 #include <QShortcut>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -35,10 +37,10 @@ constexpr int kRecheckDelayMs = 400;
 ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_context(context), m_machineNote(new ElidedLabel(this, 2)),
       m_check(new ElidedLabel(this)), m_editor(new ProgramEditor(this)),
-      m_preview(new ProgramPreviewView(this)), m_banner(new ProgramPromptBanner(this)),
-      m_controls(new ProgramControls(this)), m_mdiLine(new MdiLine(context, this)),
-      m_recheck(new QTimer(this)), m_checker(new ProgramBackgroundCheck(this)),
-      m_starter(new ProgramStarter(this))
+      m_errorList(new ProgramErrorList(m_editor, this)), m_preview(new ProgramPreviewView(this)),
+      m_banner(new ProgramPromptBanner(this)), m_controls(new ProgramControls(this)),
+      m_mdiLine(new MdiLine(context, this)), m_recheck(new QTimer(this)),
+      m_checker(new ProgramBackgroundCheck(this)), m_starter(new ProgramStarter(this))
 {
     setObjectName(QStringLiteral("programPage"));
     m_files = new ProgramFiles(m_editor, this);
@@ -71,6 +73,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
         // Another program: what was said of the last one (its run's end, "too large to edit")
         // goes, and its preview is fitted to the view, whatever the last one's zoom.
         m_banner->setStatus(QString());
+        m_controls->clearProgress();
         m_preview->pathView()->fitToView();
         checkNow();
     });
@@ -149,7 +152,11 @@ void ProgramPage::buildLayout()
     w->addWidget(m_checkStatus);
     w->addWidget(m_controls->progressRow());
     w->addWidget(m_machineNote);
-    w->addWidget(m_preview, 1);
+    // A program with errors has no preview: the list of its errors takes its place.
+    m_previewOrErrors = new QStackedWidget(watch);
+    m_previewOrErrors->addWidget(m_preview);
+    m_previewOrErrors->addWidget(m_errorList);
+    w->addWidget(m_previewOrErrors, 1);
     split->addWidget(run);
     split->addWidget(watch);
     // Width beyond the columns' least: a third to the text and the MDI line, the rest to the
@@ -315,7 +322,7 @@ void ProgramPage::checkNow()
         m_checker->cancel();
         m_checkStatus->finished();
         m_checkOk = false;
-        m_editor->setErrors({});
+        showErrors({});
         m_check->setText(tr("Not checked: no machine open."));
         m_preview->clear(tr("The preview needs a machine: its axes and soft limits."));
         updateControls();
@@ -359,7 +366,7 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
     m_checkedProgram = result.ok() ? result.program : std::nullopt;
     if (large)
         m_controls->setLineCount(result.preview.lines);
-    m_editor->setErrors(result.errors);
+    showErrors(result.errors);
     if (result.ok()) {
         m_check->setText(m_checkOk ? tr("Checked against the machine: no errors.")
                                    : tr("No program."));
@@ -382,6 +389,14 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
         m_preview->clear(tr("No preview: the program has errors."));
     }
     updateControls();
+}
+
+void ProgramPage::showErrors(const QList<program::ProgramError>& errors)
+{
+    m_editor->setErrors(errors);
+    m_errorList->setErrors(errors);
+    m_previewOrErrors->setCurrentWidget(errors.isEmpty() ? static_cast<QWidget*>(m_preview)
+                                                         : m_errorList);
 }
 
 void ProgramPage::onMachineStatus()

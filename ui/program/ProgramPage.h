@@ -8,6 +8,7 @@
 
 class QProgressBar;
 class QPushButton;
+class QStackedWidget;
 class QTimer;
 
 namespace stepdeck::machine {
@@ -24,20 +25,21 @@ class ProgramStarter;
 class ProgramCheckStatus;
 class ProgramControls;
 class ProgramEditor;
+class ProgramErrorList;
 class ProgramFiles;
 class ProgramPreviewView;
 class ProgramPromptBanner;
 
 // The Program page (issue 20, docs/programs.md): a motion program's file and text, checked
 // against the open machine while it is edited (debounced: ProgramParser, then ProgramCheck
-// with factsOf(machine)), the errors marked at their lines, the preview beside it, and the
-// run through a ProgramRunner on the context's machine: Run, Pause, Resume, Step, Abort, Run
-// from line N (after a confirmation naming where the axes stand), the running line
-// highlighted, "line n of m" with the estimated time left, M0's prompt in a banner with
-// Resume. The text is read-only while a program runs. STOP and PANIC of the window end a
-// running program as aborted (MainWindow calls abortRun() before it stops the machine).
-// Programs run on the machine (every connection is one, issue 28 item 0). "(MSG, text)" lines
-// reach the window as operatorMessage().
+// with factsOf(machine)), the errors marked at their lines and listed in the preview's place
+// (ProgramErrorList), the preview beside it, and the run through a ProgramRunner on the
+// context's machine: Run, Pause, Resume, Step, Abort, Run from line N (after a confirmation
+// naming where the axes stand), the running line highlighted, "line n of m" with the estimated
+// time left, M0's prompt in a banner with Resume. The text is read-only while a program runs.
+// STOP and PANIC of the window end a running program as aborted (MainWindow calls abortRun()
+// before it stops the machine). Programs run on the machine (every connection is one, issue 28
+// item 0). "(MSG, text)" lines reach the window as operatorMessage().
 class ProgramPage : public QWidget
 {
     Q_OBJECT
@@ -46,6 +48,7 @@ public:
     ~ProgramPage() override;
 
     ProgramEditor* editor() const { return m_editor; }
+    ProgramErrorList* errorList() const { return m_errorList; }
     ProgramPreviewView* preview() const { return m_preview; }
     ProgramControls* controls() const { return m_controls; }
     ProgramPromptBanner* promptBanner() const { return m_banner; }
@@ -92,6 +95,7 @@ private:
     void onStarted(const program::Program& program);
     void onStartRefused(const QList<program::ProgramError>& errors);
     void showCheck(const program::ProgramCheckResult& result);
+    void showErrors(const QList<program::ProgramError>& errors); // marked, listed
     void cancelCheck();
     void updateControls();
     void updateProgress();
@@ -111,7 +115,9 @@ private:
     ElidedLabel* m_check;
     ProgramCheckStatus* m_checkStatus = nullptr; // m_check, or a long check's progress
     ProgramEditor* m_editor;
+    ProgramErrorList* m_errorList;
     ProgramPreviewView* m_preview;
+    QStackedWidget* m_previewOrErrors = nullptr; // the errors in the preview's place
     ProgramPromptBanner* m_banner;
     ProgramControls* m_controls;
     MdiLine* m_mdiLine;

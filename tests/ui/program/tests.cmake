@@ -3,8 +3,9 @@
 stepdeck_add_test(tst_programwidgets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programwidgets.cpp
                   LABELS ui LIBS stepdeck_ui)
 # The page in the main window running programs on a machine of two simulated controllers on
-# pseudo-terminals (MachineWindowRig), on a 1366x768 screen; the MDI line (issue 31) likewise.
-foreach(_t tst_programpage tst_programpagerun tst_mdiline)
+# pseudo-terminals (MachineWindowRig), on a 1366x768 screen; the MDI line and the check's error
+# list (issue 31) likewise.
+foreach(_t tst_programpage tst_programpagerun tst_mdiline tst_programerrors)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/ProgramPageFixture.h
                     ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h

@@ -5,6 +5,7 @@
 // a lost link fails naming the line; closing the machine aborts.
 #include "../LayoutChecks.h"
 #include "ProgramPageFixture.h"
+#include "program/ProgramFiles.h"
 #include <QScrollBar>
 
 using namespace stepdeck;
@@ -30,6 +31,7 @@ private Q_SLOTS:
     void stop_duringReferencedProgram_positionsStayKnownAtTheBoard();
     void closeMachine_whileRunning_programAbortedAndAxisStill_data();
     void closeMachine_whileRunning_programAbortedAndAxisStill();
+    void openAnother_afterRun_oldResultCleared();
 };
 
 void TestProgramPageRun::pause_duringBlock_holdsAfterItThenResumeFinishes()
@@ -311,6 +313,32 @@ void TestProgramPageRun::closeMachine_whileRunning_programAbortedAndAxisStill()
              qPrintable(page()->messageText()));
     QVERIFY(m_rig.elab->receivedStop());
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+}
+
+// Issue 31 finding: how the last program's run ended ("Finished: ...", "line n of m") is not
+// said of another program opened after it, which has not run.
+void TestProgramPageRun::openAnother_afterRun_oldResultCleared()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nG0 X0.5\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QVERIFY2(page()->messageText().startsWith(QStringLiteral("Finished")),
+             qPrintable(page()->messageText()));
+    QVERIFY2(page()->controls()->progressText().startsWith(QStringLiteral("line ")),
+             qPrintable(page()->controls()->progressText()));
+    QVERIFY(!page()->controls()->timeLeftText().isEmpty());
+
+    const QString other =
+        m_rig.writeFile(QByteArrayLiteral("G91\nG0 Y0.25\nG0 Y0.25\nM2\n"), "other.ngc");
+    QVERIFY(page()->files()->load(other));
+    QTRY_VERIFY(!page()->isChecking());
+    QVERIFY2(page()->messageText().isEmpty(), qPrintable(page()->messageText()));
+    QCOMPARE(page()->controls()->progressText(), QStringLiteral("not running"));
+    QVERIFY2(page()->controls()->timeLeftText().isEmpty(),
+             qPrintable(page()->controls()->timeLeftText()));
+    QVERIFY(page()->controls()->runButton()->isEnabled()); // the new one is checked, not run
 }
 
 int main(int argc, char** argv)

@@ -1,0 +1,140 @@
+// The check's errors on the Program page (issue 31 finding: the check line named only the
+// first error and there was no list): the check line counts them, the list of every error,
+// "line N: message", stands in the preview's place (a program with errors has none); a click
+// or Enter on one puts the editor's cursor at its line and column with the focus; the list
+// follows each check; nothing of the page moves.
+#include "ProgramPageFixture.h"
+#include "program/ProgramErrorList.h"
+#include <QListWidget>
+
+using namespace stepdeck;
+using namespace stepdeck::test;
+
+namespace {
+// Line 3: Q is no word of G0 (at column 4); line 5: B is no axis of the machine (column 4).
+const QString kTwoErrors = QStringLiteral("G91\nG0 X1\nG0 Q1 X2\nG0 Y1\nG0 B2\n");
+} // namespace
+
+class TestProgramErrors : public ProgramPageFixture
+{
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { isolateSettings(); }
+    void init()
+    {
+        QVERIFY(m_rig.start());
+        QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
+    }
+    void cleanup() { m_rig.stop(); }
+    void checkErrors_listInThePreviewsPlace_namesEach();
+    void checkErrors_clickEntry_editorAtThatLine();
+    void checkErrors_enterOnEntry_editorAtThatLine();
+    void checkErrors_fixed_listFollowsTheCheck();
+
+private:
+    ui::ProgramErrorList* list() const { return page()->errorList(); }
+    QStringList entries() const
+    {
+        QStringList texts;
+        for (int i = 0; i < list()->list()->count(); ++i)
+            texts << list()->list()->item(i)->text();
+        return texts;
+    }
+    // Where a widget of the page stands in the window.
+    QRect placeOf(const QWidget* w) const { return QRect(w->mapTo(window(), QPoint()), w->size()); }
+    // The editor's cursor: "line:column" (1-based) and the selected text.
+    QString cursorPlace() const
+    {
+        const QTextCursor c = page()->editor()->textCursor();
+        return QStringLiteral("%1:%2 '%3'")
+            .arg(c.blockNumber() + 1)
+            .arg(c.positionInBlock() + 1)
+            .arg(c.selectedText());
+    }
+};
+
+void TestProgramErrors::checkErrors_listInThePreviewsPlace_namesEach()
+{
+    setProgram(QStringLiteral("G91\nG0 X1\n"));
+    QVERIFY(page()->preview()->isVisible());
+    QVERIFY(!list()->isVisible()); // nothing to list
+    const QRect preview = placeOf(page()->preview());
+    const QRect run = placeOf(page()->controls()->runButton());
+    const QRect check = placeOf(page()->findChild<QWidget*>(QStringLiteral("programCheckNow")));
+    const QRect editor = placeOf(page()->editor());
+
+    setProgram(kTwoErrors);
+    // (Tests load no translation: English plurals read "error(s)".)
+    QVERIFY2(page()->checkText().startsWith(QStringLiteral("2 error")) &&
+                 page()->checkText().contains(QStringLiteral("line 3: ")),
+             qPrintable(page()->checkText()));
+    QTRY_VERIFY(list()->isVisible());
+    QVERIFY(!page()->preview()->isVisible());
+    const QStringList texts = entries();
+    QCOMPARE(texts.size(), 2);
+    QVERIFY2(texts.at(0).startsWith(QStringLiteral("line 3: ")) &&
+                 texts.at(0).contains(QLatin1Char('Q')) &&
+                 texts.at(1).startsWith(QStringLiteral("line 5: ")) &&
+                 texts.at(1).contains(QLatin1Char('B')),
+             qPrintable(texts.join(QLatin1Char('|'))));
+    QVERIFY2(list()->headerText().startsWith(QStringLiteral("2 error")),
+             qPrintable(list()->headerText()));
+    // Exactly where the preview was; nothing else of the page moved.
+    QCOMPARE(placeOf(list()), preview);
+    QCOMPARE(placeOf(page()->controls()->runButton()), run);
+    QCOMPARE(placeOf(page()->findChild<QWidget*>(QStringLiteral("programCheckNow"))), check);
+    QCOMPARE(placeOf(page()->editor()), editor);
+}
+
+void TestProgramErrors::checkErrors_clickEntry_editorAtThatLine()
+{
+    setProgram(kTwoErrors);
+    QTRY_VERIFY(list()->isVisible());
+    QListWidget* entries = list()->list();
+    QCOMPARE(entries->count(), 2);
+    const QRect second = entries->visualItemRect(entries->item(1));
+    QTest::mouseClick(entries->viewport(), Qt::LeftButton, {}, second.center());
+    // Line 5 at B's column, the word selected, the editor with the focus.
+    QCOMPARE(cursorPlace(), QStringLiteral("5:4 'B2'"));
+    QTRY_VERIFY(page()->editor()->hasFocus());
+    QVERIFY(list()->isVisible()); // there for the next one
+}
+
+void TestProgramErrors::checkErrors_enterOnEntry_editorAtThatLine()
+{
+    setProgram(kTwoErrors);
+    QTRY_VERIFY(list()->isVisible());
+    list()->list()->setFocus(); // Tab from the editor's column
+    QTRY_VERIFY(list()->list()->hasFocus());
+    QCOMPARE(list()->list()->currentRow(), 0);
+    QTest::keyClick(list()->list(), Qt::Key_Return);
+    QCOMPARE(cursorPlace(), QStringLiteral("3:4 'Q1'"));
+    QTRY_VERIFY(page()->editor()->hasFocus());
+}
+
+void TestProgramErrors::checkErrors_fixed_listFollowsTheCheck()
+{
+    setProgram(kTwoErrors);
+    QTRY_VERIFY(list()->isVisible());
+    QCOMPARE(entries().size(), 2);
+    // Line 3 fixed by typing: the debounced check drops its entry.
+    QTextCursor c(page()->editor()->document()->findBlockByNumber(2));
+    c.select(QTextCursor::LineUnderCursor);
+    c.insertText(QStringLiteral("G0 X2"));
+    QTRY_COMPARE(entries().size(), 1);
+    QVERIFY2(entries().at(0).startsWith(QStringLiteral("line 5: ")), qPrintable(entries().at(0)));
+    QTRY_VERIFY(page()->checkText().startsWith(QStringLiteral("1 error")));
+    // And the last: the preview is back in the list's place.
+    c = QTextCursor(page()->editor()->document()->findBlockByNumber(4));
+    c.select(QTextCursor::LineUnderCursor);
+    c.insertText(QStringLiteral("G0 Y2"));
+    QTRY_VERIFY(entries().isEmpty());
+    QTRY_VERIFY(page()->preview()->isVisible());
+    QVERIFY(!list()->isVisible());
+}
+
+int main(int argc, char** argv)
+{
+    return runOnLaptopScreen<TestProgramErrors>(argc, argv);
+}
+#include "tst_programerrors.moc"

@@ -1,0 +1,68 @@
+#include "ProgramErrorList.h"
+#include "ProgramEditor.h"
+#include "common/ElidedLabel.h"
+#include <QListWidget>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+namespace {
+constexpr int kLineRole = Qt::UserRole;
+constexpr int kColumnRole = Qt::UserRole + 1;
+} // namespace
+
+ProgramErrorList::ProgramErrorList(ProgramEditor* editor, QWidget* parent)
+    : QWidget(parent), m_editor(editor), m_header(new ElidedLabel(this)),
+      m_list(new QListWidget(this))
+{
+    setObjectName(QStringLiteral("programErrorList"));
+    m_header->setObjectName(QStringLiteral("programErrorHeader"));
+    m_header->setStyleSheet(QStringLiteral("QLabel { color: #b00000; }")); // as the check line
+    m_list->setObjectName(QStringLiteral("programErrorEntries"));
+    m_list->setUniformItemSizes(true);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(m_header);
+    v->addWidget(m_list, 1);
+    // A click, or Enter (activated) on the entry with the keyboard's focus.
+    connect(m_list, &QListWidget::itemClicked, this, &ProgramErrorList::goTo);
+    connect(m_list, &QListWidget::itemActivated, this, &ProgramErrorList::goTo);
+    setErrors({});
+}
+
+void ProgramErrorList::setErrors(const QList<program::ProgramError>& errors)
+{
+    m_list->clear();
+    for (const program::ProgramError& e : errors) {
+        // An error of no line (the program as a whole): its message alone.
+        const QString text = e.line > 0 ? tr("line %1: %2").arg(e.line).arg(e.message) : e.message;
+        auto* item = new QListWidgetItem(text, m_list);
+        item->setData(kLineRole, e.line);
+        item->setData(kColumnRole, e.column);
+        item->setToolTip(item->text());
+    }
+    m_header->setText(errors.isEmpty() ? tr("No errors.")
+                                       : tr("%n error(s); click one to go to its line.", nullptr,
+                                            int(errors.size())));
+    if (m_list->count() > 0)
+        m_list->setCurrentRow(0);
+}
+
+int ProgramErrorList::errorCount() const
+{
+    return m_list->count();
+}
+
+QString ProgramErrorList::headerText() const
+{
+    return m_header->text();
+}
+
+void ProgramErrorList::goTo(const QListWidgetItem* item)
+{
+    if (!item)
+        return;
+    m_editor->goToLine(item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
+}
+
+} // namespace stepdeck::ui
