@@ -4620,14 +4620,6 @@
             <source>%1/s</source>
             <translation>%1/s</translation>
         </message>
-        <message>
-            <source>deg</source>
-            <translation>°</translation>
-        </message>
-        <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
     </context>
     <context>
         <name>stepdeck::ui::ClosedLoopPanel</name>

@@ -1,19 +1,9 @@
 #include "ChartAxes.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
-#include <QCoreApplication>
 #include <QtMath>
 
 namespace stepdeck::ui {
-
-namespace {
-QString unitWord(machine::AxisUnit unit)
-{
-    return unit == machine::AxisUnit::Degree
-               ? QCoreApplication::translate("stepdeck::ui::ChartsPanel", "deg")
-               : QCoreApplication::translate("stepdeck::ui::ChartsPanel", "mm");
-}
-} // namespace
 
 double ChartAxis::position(double steps) const
 {
@@ -45,7 +35,7 @@ QList<ChartAxis> chartAxes(const MachineContext& context)
                     continue;
                 line.name = axis.name;
                 if (axis.unit != machine::AxisUnit::Step) {
-                    line.unit = unitWord(axis.unit);
+                    line.unit = context.axisUnitName(axis); // as the read-out names it
                     line.inMachine = axis;
                 }
                 break;

@@ -83,6 +83,21 @@ private:
         }
         return out;
     }
+    // The rows "en" and "de" of a test that runs in both languages.
+    static void addLanguageRows()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("de") << QStringLiteral("de");
+    }
+    // The window built again in that language (its texts are set when it is made), shown.
+    bool showIn(const QString& language)
+    {
+        ui::translations::install(qApp, language);
+        m_rig.f = std::make_unique<UiFixture>();
+        window()->show();
+        return QTest::qWaitForWindowActive(window());
+    }
     void saveShot(const QString& name) const
     {
         const QByteArray dir = qgetenv("STEPDECK_SHOT_DIR");
@@ -182,19 +197,13 @@ void TestWorkspaces::programOpened_bringsUpRun_unlessChosenByHand()
 
 void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut_data()
 {
-    QTest::addColumn<QString>("language");
-    QTest::newRow("en") << QStringLiteral("en");
-    QTest::newRow("de") << QStringLiteral("de");
+    addLanguageRows();
 }
 
 void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
 {
     QFETCH(QString, language);
-    // The window in that language (built again: its texts are set when it is made).
-    ui::translations::install(qApp, language);
-    m_rig.f = std::make_unique<UiFixture>();
-    window()->show();
-    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QVERIFY(showIn(language));
     QVERIFY(m_rig.openAndConnect());
     QVERIFY(m_rig.referenceTable()); // an arc needs its plane's positions known
     // A pocket's outline (relative: the rotary axis is not referenced) and a turn of A.
@@ -260,9 +269,7 @@ void TestWorkspaces::run_windowTooSmall_saysWhichPagesScroll()
 
 void TestWorkspaces::setup_sidePages_noSidewaysScroll_data()
 {
-    QTest::addColumn<QString>("language");
-    QTest::newRow("en") << QStringLiteral("en");
-    QTest::newRow("de") << QStringLiteral("de");
+    addLanguageRows();
 }
 
 // Issue 31 finding: the Gamepad page needed a horizontal scroll bar in German. The Setup
@@ -270,10 +277,7 @@ void TestWorkspaces::setup_sidePages_noSidewaysScroll_data()
 void TestWorkspaces::setup_sidePages_noSidewaysScroll()
 {
     QFETCH(QString, language);
-    ui::translations::install(qApp, language);
-    m_rig.f = std::make_unique<UiFixture>();
-    window()->show();
-    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QVERIFY(showIn(language));
     QVERIFY(m_rig.openAndConnect());
     workspaces()->switchTo(Workspace::Setup);
     for (const char* name : {"gamepadDock", "statusDock"}) {
@@ -294,7 +298,7 @@ void TestWorkspaces::setup_sidePages_noSidewaysScroll()
 
 void TestWorkspaces::connectionBar_modelNamesInFull_data()
 {
-    setup_sidePages_noSidewaysScroll_data();
+    addLanguageRows();
 }
 
 // Issue 31 finding: the model combo was clipped in German. Every model's name shows in full
@@ -302,10 +306,7 @@ void TestWorkspaces::connectionBar_modelNamesInFull_data()
 void TestWorkspaces::connectionBar_modelNamesInFull()
 {
     QFETCH(QString, language);
-    ui::translations::install(qApp, language);
-    m_rig.f = std::make_unique<UiFixture>();
-    window()->show();
-    QVERIFY(QTest::qWaitForWindowActive(window()));
+    QVERIFY(showIn(language));
     QComboBox* combo = window()->connectionBar()->modelCombo();
     QTRY_VERIFY(combo->isVisible());
     for (int i = 0; i < combo->count(); ++i) {
