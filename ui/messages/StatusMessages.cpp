@@ -74,10 +74,17 @@ void StatusMessages::expire()
 
 const StatusMessages::Message* StatusMessages::newest() const
 {
+    // A notice about the window's own layout (a page that scrolls) never covers an error
+    // about the machine, however old; against other notices the newest shows.
+    bool errorLive = false;
+    for (const Message& m : m_messages)
+        errorLive = errorLive || m.severity == Severity::Error;
     const Message* best = nullptr;
-    for (const Message& m : m_messages) {
-        if (!best || m.order > best->order)
-            best = &m;
+    for (auto it = m_messages.cbegin(); it != m_messages.cend(); ++it) {
+        if (it.key() == Owner::Layout && errorLive)
+            continue;
+        if (!best || it->order > best->order)
+            best = &*it;
     }
     return best;
 }

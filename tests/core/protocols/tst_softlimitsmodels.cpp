@@ -150,17 +150,28 @@ qint64 TestSoftLimitsModels::jogIntoTheLimit(Bench& b, qint64 offset, qint64* hi
                 return highest;
         }
     }
-    // A held input: the lease renewed every 20 ms, until the device stands still after the
-    // soft limit was named, and 300 ms more of pushing.
+    // A held input: the lease renewed every 20 ms, until the device stood still in one place
+    // through 300 ms of pushing after the soft limit was named. A stall of the test process
+    // (CI's sanitizer run) stretches the controller's look-ahead, which may stop the jog
+    // early, on the safe side; the push goes on, the jog resumes and the wait starts again.
     QElapsedTimer pushedAfter;
+    qint64 stoodAt = 0;
     while (!deadline.hasExpired()) {
         b.ctl->setJogVelocity({{Axis::X, 1000}});
         b.results->wait(20);
-        highest = qMax(highest, b.simX() - offset);
-        if (b.saidSoftLimit() && b.sim->standingStill() && !pushedAfter.isValid())
+        const qint64 x = b.simX() - offset;
+        highest = qMax(highest, x);
+        if (!b.saidSoftLimit() || !b.sim->standingStill() ||
+            (pushedAfter.isValid() && x != stoodAt)) {
+            pushedAfter.invalidate();
+            continue;
+        }
+        if (!pushedAfter.isValid()) {
             pushedAfter.start();
-        if (pushedAfter.isValid() && pushedAfter.elapsed() > 300)
+            stoodAt = x;
+        } else if (pushedAfter.elapsed() > 300) {
             break;
+        }
     }
     b.ctl->endJog();
     return highest;
