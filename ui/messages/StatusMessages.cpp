@@ -74,19 +74,18 @@ void StatusMessages::expire()
 
 const StatusMessages::Message* StatusMessages::newest() const
 {
-    // A notice about the window's own layout (a page that scrolls) never covers an error
-    // about the machine, however old; against other notices the newest shows.
-    bool errorLive = false;
-    for (const Message& m : m_messages)
-        errorLive = errorLive || m.severity == Severity::Error;
+    // A notice about the window's own layout (a page that scrolls) never covers a message
+    // about the machine, however old (a position error, "Stop sent", "Stopped: ..."): it
+    // shows when nothing else is live. The log has it at once either way.
     const Message* best = nullptr;
     for (auto it = m_messages.cbegin(); it != m_messages.cend(); ++it) {
-        if (it.key() == Owner::Layout && errorLive)
-            continue;
-        if (!best || it->order > best->order)
+        if (it.key() != Owner::Layout && (!best || it->order > best->order))
             best = &*it;
     }
-    return best;
+    if (best)
+        return best;
+    const auto layout = m_messages.constFind(Owner::Layout);
+    return layout != m_messages.cend() ? &*layout : nullptr;
 }
 
 QString StatusMessages::currentText() const

@@ -11,7 +11,7 @@ namespace stepdeck::ui {
 // clears or replaces it (a link error when the link is back, a jog refusal when jogging
 // works), and every message also expires after its lifetime (default kLifetimeMs), so an
 // error from minutes ago is never shown as current. The line shows the newest live message
-// with its time (a Layout notice not while an error is live); every message also
+// with its time (a Layout notice only while no other message is live); every message also
 // goes into the log (time-stamped, the newest kLogLimit kept) that the window's message log
 // shows, so nothing is lost when a message ends.
 class StatusMessages : public QObject

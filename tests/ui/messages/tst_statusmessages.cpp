@@ -14,7 +14,7 @@ class TestStatusMessages : public QObject
 private Q_SLOTS:
     void newest_isShown_andOwnerClearsOnlyItsOwn();
     void sameOwner_replaces();
-    void layoutNotice_neverCoversAnError();
+    void layoutNotice_neverCoversAMachineMessage();
     void message_expires();
     void log_keepsEveryMessageWithItsTime();
     void log_isBounded_oldestDropped();
@@ -44,24 +44,22 @@ void TestStatusMessages::sameOwner_replaces()
     QCOMPARE(m.currentText(), QStringLiteral("link")); // the NAK is gone with it
 }
 
-// A page that scrolls after a resize is worth saying, but not over a position error that came
-// a moment before (CI saw the layout notice hide a Nanotec drive's position error).
-void TestStatusMessages::layoutNotice_neverCoversAnError()
+// A page that scrolls after a resize is worth saying, but not over a position error or a stop
+// that came a moment before (CI saw the layout notice hide a Nanotec drive's position error).
+void TestStatusMessages::layoutNotice_neverCoversAMachineMessage()
 {
     StatusMessages m;
     m.show(Owner::Layout, QStringLiteral("Position scrolls"), StatusMessages::Severity::Info);
     QCOMPARE(m.currentText(), QStringLiteral("Position scrolls")); // alone: shown
-    m.show(Owner::General, QStringLiteral("Machine opened."), StatusMessages::Severity::Info);
-    QCOMPARE(m.currentText(), QStringLiteral("Machine opened.")); // notices: the newest
-    m.show(Owner::Layout, QStringLiteral("Position scrolls"), StatusMessages::Severity::Info);
-    QCOMPARE(m.currentText(), QStringLiteral("Position scrolls"));
     m.show(Owner::Controller, QStringLiteral("drive 2 reports a position error"));
-    QCOMPARE(m.currentText(), QStringLiteral("drive 2 reports a position error"));
+    m.show(Owner::Safety, QStringLiteral("Stop sent"), StatusMessages::Severity::Info);
     m.show(Owner::Layout, QStringLiteral("Position and Status scroll"),
            StatusMessages::Severity::Info); // newer, still behind
+    QCOMPARE(m.currentText(), QStringLiteral("Stop sent"));
+    QCOMPARE(m.log().constLast().text, QStringLiteral("Position and Status scroll")); // logged
+    m.clear(Owner::Safety);
     QCOMPARE(m.currentText(), QStringLiteral("drive 2 reports a position error"));
     QCOMPARE(m.currentSeverity(), StatusMessages::Severity::Error);
-    QCOMPARE(m.log().constLast().text, QStringLiteral("Position and Status scroll")); // logged
     m.clear(Owner::Controller);
     QCOMPARE(m.currentText(), QStringLiteral("Position and Status scroll"));
 }
