@@ -6325,20 +6325,8 @@ W1500</translation>
             <translation>Anfahren:</translation>
         </message>
         <message>
-            <source>Absolute target in the axis' unit; the axis must be referenced</source>
-            <translation>Absolutes Ziel in der Einheit der Achse; die Achse muss referenziert sein</translation>
-        </message>
-        <message>
-            <source>Moving %1 to %2…</source>
-            <translation>Fahre %1 nach %2…</translation>
-        </message>
-        <message>
             <source>Go-to refused: %1</source>
             <translation>Anfahren abgelehnt: %1</translation>
-        </message>
-        <message>
-            <source>%1 arrived.</source>
-            <translation>%1 ist angekommen.</translation>
         </message>
         <message>
             <source>Go-to failed: %1</source>
@@ -6347,14 +6335,6 @@ W1500</translation>
         <message>
             <source>Go to (work):</source>
             <translation>Anfahren (Werkstück):</translation>
-        </message>
-        <message>
-            <source>Target in work coordinates (the work zero of the axis is subtracted from machine positions); the axis must be referenced</source>
-            <translation>Ziel in Werkstückkoordinaten (der Werkstück-Nullpunkt der Achse wird von den Maschinenpositionen abgezogen); die Achse muss referenziert sein</translation>
-        </message>
-        <message>
-            <source>Moving %1 to %2 (work; machine %3)…</source>
-            <translation>%1 fährt nach %2 (Werkstück; Maschine %3)…</translation>
         </message>
         <message>
             <source>Go-to refused: the last go-to is still moving.</source>
@@ -6369,12 +6349,56 @@ W1500</translation>
             <translation>%1 steht; die Position konnte nicht gelesen werden.</translation>
         </message>
         <message>
-            <source>%1 stopped at %2 before its target %3.</source>
-            <translation>%1 hielt bei %2 vor dem Ziel %3 an.</translation>
+            <source>The checked axes go together, in one rapid move (G0)</source>
+            <translation>Die angehakten Achsen fahren gemeinsam, in einer Eilgangbewegung (G0)</translation>
         </message>
         <message>
-            <source>Checking the go-to of %1 to %2…</source>
-            <translation>Anfahren von %1 auf %2 wird geprüft…</translation>
+            <source>Axis %1 goes with the others checked</source>
+            <translation>Achse %1 fährt mit den anderen angehakten</translation>
+        </message>
+        <message>
+            <source>Target of %1 in work coordinates (its work zero is subtracted from machine positions); the axis must be referenced</source>
+            <translation>Ziel von %1 in Werkstückkoordinaten (ihr Werkstücknullpunkt wird von den Maschinenpositionen abgezogen); die Achse muss referenziert sein</translation>
+        </message>
+        <message>
+            <source>Absolute target of %1 in its unit; the axis must be referenced</source>
+            <translation>Absolutes Ziel von %1 in ihrer Einheit; die Achse muss referenziert sein</translation>
+        </message>
+        <message>
+            <source>%1 to %2 (work; machine %3)</source>
+            <translation>%1 nach %2 (Werkstück; Maschine %3)</translation>
+        </message>
+        <message>
+            <source>%1 to %2</source>
+            <translation>%1 nach %2</translation>
+        </message>
+        <message>
+            <source>Go-to refused: no axis is checked.</source>
+            <translation>Anfahren abgelehnt: keine Achse ist angehakt.</translation>
+        </message>
+        <message>
+            <source>Moving %1…</source>
+            <translation>Fahre %1…</translation>
+        </message>
+        <message>
+            <source>Checking the go-to of %1…</source>
+            <translation>Prüfe das Anfahren von %1…</translation>
+        </message>
+        <message>
+            <source>%1 stand: reading their positions…</source>
+            <translation>%1 stehen: Positionen werden gelesen…</translation>
+        </message>
+        <message>
+            <source>%1 stand; their positions could not be read.</source>
+            <translation>%1 stehen; die Positionen konnten nicht gelesen werden.</translation>
+        </message>
+        <message>
+            <source>%1 stopped at %2 before its target %3</source>
+            <translation>%1 hielt bei %2 vor dem Ziel %3 an</translation>
+        </message>
+        <message>
+            <source>%1 arrived</source>
+            <translation>%1 angekommen</translation>
         </message>
     </context>
     <context>

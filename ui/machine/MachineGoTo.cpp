@@ -5,8 +5,9 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineMdi.h"
 #include "machine/MachineWorkOffsets.h"
-#include <QComboBox>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
@@ -15,36 +16,38 @@
 
 namespace stepdeck::ui {
 
+namespace {
+constexpr int kColumns = 2; // axis targets side by side: two fit the Position dock at 1366 px
+
+QString axisValue(double value, bool steps)
+{
+    return steps ? QString::number(qRound64(value)) : QString::number(value, 'f', 3);
+}
+} // namespace
+
 MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
     : QWidget(parent), m_context(context), m_offsets(offsets), m_label(new QLabel(this)),
-      m_axis(new QComboBox(this)), m_target(new QDoubleSpinBox(this)),
-      m_go(new QPushButton(tr("Go to"), this)), m_result(new ElidedLabel(this))
+      m_grid(new QGridLayout), m_go(new QPushButton(tr("Go to"), this)),
+      m_result(new ElidedLabel(this))
 {
     setObjectName(QStringLiteral("machineGoTo"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto* row = new QHBoxLayout;
-    // As wide as its longer text: switching to work coordinates moves nothing in the row.
-    m_label->setMinimumWidth(qMax(m_label->fontMetrics().horizontalAdvance(tr("Go to:")),
-                                  m_label->fontMetrics().horizontalAdvance(tr("Go to (work):"))));
     row->addWidget(m_label);
-    row->addWidget(m_axis);
-    row->addWidget(m_target, 1);
+    row->addStretch(1);
     row->addWidget(m_go);
     layout->addLayout(row);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    for (int c = 0; c < kColumns; ++c)
+        m_grid->setColumnStretch(2 * c + 1, 1);
+    layout->addLayout(m_grid);
     layout->addWidget(m_result);
-    m_target->setRange(-1e6, 1e6);
-    // Its width from the row, not from the range and unit: the widest value with the longest
-    // unit (German "Einheiten") would widen the read-out's page (tst_layoutholdsstill).
-    m_target->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    m_target->setMinimumWidth(m_target->fontMetrics().averageCharWidth() * 14 + 36);
     m_go->setFocusPolicy(Qt::NoFocus);
-    // Enter in the target field goes there, like the button (issue 16).
-    m_target->installEventFilter(this);
+    m_go->setToolTip(tr("The checked axes go together, in one rapid move (G0)"));
     connect(m_go, &QPushButton::clicked, this, &MachineGoTo::go);
-    connect(m_axis, &QComboBox::currentIndexChanged, this, &MachineGoTo::updateUnit);
     connect(context, &MachineContext::machineChanged, this, &MachineGoTo::rebuild);
-    connect(offsets, &MachineWorkOffsets::changed, this, &MachineGoTo::updateUnit);
+    connect(offsets, &MachineWorkOffsets::changed, this, &MachineGoTo::updateLabel);
     connect(context->mdi(), &MachineMdi::started, this, [this](quint64 id) {
         if (id != m_pending)
             return;
@@ -57,86 +60,193 @@ MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, Q
 
 void MachineGoTo::rebuild()
 {
-    m_axis->clear();
+    for (const Row& r : std::as_const(m_rows)) {
+        delete r.check;
+        delete r.target;
+    }
+    m_rows.clear();
     m_pending = 0;
-    disconnect(m_confirm);
+    m_pendingAxes.clear();
+    for (const QMetaObject::Connection& c : std::as_const(m_confirm))
+        disconnect(c);
+    m_confirm.clear();
+    m_reads.clear();
     m_go->setEnabled(true);
     m_result->clear();
     machine::Machine* m = m_context->machine();
-    if (!m)
-        return;
-    for (const machine::MachineAxis& a : m->description().axes)
-        m_axis->addItem(a.name, a.name);
-    updateUnit();
+    const QList<machine::MachineAxis> axes =
+        m ? m->description().axes : QList<machine::MachineAxis>();
+    for (const machine::MachineAxis& a : axes) {
+        Row r{a.name, new QCheckBox(a.name, this), new QDoubleSpinBox(this)};
+        r.check->setObjectName(QStringLiteral("goToCheck_") + a.name);
+        r.check->setToolTip(tr("Axis %1 goes with the others checked").arg(a.name));
+        r.target->setObjectName(QStringLiteral("goToTarget_") + a.name);
+        r.target->setRange(-1e6, 1e6);
+        // Its width from the grid, not from the range and unit: the widest value with the
+        // longest unit (German "Einheiten") would widen the read-out's page.
+        r.target->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        r.target->setMinimumWidth(r.target->fontMetrics().averageCharWidth() * 12 + 36);
+        r.target->installEventFilter(this);
+        const int i = int(m_rows.size());
+        m_grid->addWidget(r.check, i / kColumns, 2 * (i % kColumns));
+        m_grid->addWidget(r.target, i / kColumns, 2 * (i % kColumns) + 1);
+        connect(r.check, &QCheckBox::toggled, this, &MachineGoTo::updateLabel);
+        m_rows.append(r);
+    }
+    if (!m_rows.isEmpty())
+        m_rows.first().check->setChecked(true); // one axis at first, as a single go-to
+    updateUnits();
+    updateLabel();
 }
 
-void MachineGoTo::updateUnit()
+void MachineGoTo::updateUnits()
 {
     const machine::Machine* m = m_context->machine();
-    const machine::MachineAxis* a =
-        m ? m->description().axis(m_axis->currentData().toString()) : nullptr;
-    const bool work = a && m_offsets->hasOffset(a->name);
-    m_label->setText(work ? tr("Go to (work):") : tr("Go to:"));
-    m_target->setToolTip(work ? tr("Target in work coordinates (the work zero of the axis is "
-                                   "subtracted from machine positions); the axis must be "
-                                   "referenced")
-                              : tr("Absolute target in the axis' unit; the axis must be "
-                                   "referenced"));
-    if (!a)
-        return;
-    const bool steps = a->unit == machine::AxisUnit::Step;
-    m_target->setDecimals(steps ? 0 : 3);
-    m_target->setSuffix(QLatin1Char(' ') + m_context->axisUnitName(*a)); // as the read-out
+    for (const Row& r : std::as_const(m_rows)) {
+        const machine::MachineAxis* a = m ? m->description().axis(r.axis) : nullptr;
+        if (!a)
+            continue;
+        const bool steps = a->unit == machine::AxisUnit::Step;
+        r.target->setDecimals(steps ? 0 : 3);
+        r.target->setSuffix(QLatin1Char(' ') + m_context->axisUnitName(*a)); // as the read-out
+    }
 }
 
+void MachineGoTo::updateLabel()
+{
+    bool work = false;
+    for (const Row& r : std::as_const(m_rows)) {
+        const bool hasOffset = m_offsets->hasOffset(r.axis);
+        work = work || (hasOffset && r.check->isChecked());
+        r.target->setToolTip(hasOffset ? tr("Target of %1 in work coordinates (its work zero "
+                                            "is subtracted from machine positions); the axis "
+                                            "must be referenced")
+                                             .arg(r.axis)
+                                       : tr("Absolute target of %1 in its unit; the axis must "
+                                            "be referenced")
+                                             .arg(r.axis));
+    }
+    m_label->setText(work ? tr("Go to (work):") : tr("Go to:"));
+}
+
+QCheckBox* MachineGoTo::axisCheck(const QString& axis) const
+{
+    for (const Row& r : m_rows) {
+        if (r.axis == axis)
+            return r.check;
+    }
+    return nullptr;
+}
+
+QDoubleSpinBox* MachineGoTo::targetBox(const QString& axis) const
+{
+    for (const Row& r : m_rows) {
+        if (r.axis == axis)
+            return r.target;
+    }
+    return nullptr;
+}
+
+QStringList MachineGoTo::checkedAxes() const
+{
+    QStringList out;
+    for (const Row& r : m_rows) {
+        if (r.check->isChecked())
+            out << r.axis;
+    }
+    return out;
+}
+
+void MachineGoTo::choose(const QStringList& axes)
+{
+    for (const Row& r : std::as_const(m_rows))
+        r.check->setChecked(axes.contains(r.axis));
+}
+
+// A target changed by hand (a digit, a sign, the arrows, the wheel) says its axis is to go;
+// a value set by the program does not.
 bool MachineGoTo::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == m_target && event->type() == QEvent::KeyPress) {
-        const int key = static_cast<QKeyEvent*>(event)->key();
-        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+    auto* box = qobject_cast<QDoubleSpinBox*>(watched);
+    if (!box)
+        return QWidget::eventFilter(watched, event);
+    QCheckBox* check = nullptr;
+    for (const Row& r : std::as_const(m_rows))
+        check = r.target == box ? r.check : check;
+    if (event->type() == QEvent::KeyPress) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter) {
             go();
             return true;
         }
+        static const QList<int> editing{Qt::Key_Up,       Qt::Key_Down,      Qt::Key_PageUp,
+                                        Qt::Key_PageDown, Qt::Key_Backspace, Qt::Key_Delete};
+        const QString text = key->text();
+        if (check && (editing.contains(key->key()) ||
+                      (!text.isEmpty() &&
+                       (text.at(0).isDigit() || QStringLiteral("+-.,").contains(text.at(0))))))
+            check->setChecked(true);
+    } else if (event->type() == QEvent::Wheel && check) {
+        check->setChecked(true);
     }
     return QWidget::eventFilter(watched, event);
+}
+
+QString MachineGoTo::targetsText(bool withMachine) const
+{
+    const machine::Machine* m = m_context->machine();
+    QStringList parts;
+    for (const Pending& p : m_pendingAxes) {
+        const QDoubleSpinBox* box = targetBox(p.axis);
+        const machine::MachineAxis* a = m ? m->description().axis(p.axis) : nullptr;
+        if (!box || !a)
+            continue;
+        const QString machineTarget =
+            axisValue(p.machineTarget, a->unit == machine::AxisUnit::Step);
+        parts << (withMachine && m_offsets->hasOffset(p.axis)
+                      ? tr("%1 to %2 (work; machine %3)").arg(p.axis, box->text(), machineTarget)
+                      : tr("%1 to %2").arg(p.axis, box->text()));
+    }
+    return parts.join(QStringLiteral(", "));
 }
 
 void MachineGoTo::go()
 {
     machine::Machine* m = m_context->machine();
-    if (!m || m_axis->currentIndex() < 0)
+    if (!m || m_rows.isEmpty())
         return;
     if (m_pending != 0) { // one go-to at a time: the next waits for the arrival of this one
         m_result->setText(tr("Go-to refused: the last go-to is still moving."));
         return;
     }
-    const QString axis = m_axis->currentData().toString();
-    const machine::MachineAxis* a = m->description().axis(axis);
-    if (!a)
+    const QStringList axes = checkedAxes();
+    if (axes.isEmpty()) {
+        m_result->setText(tr("Go-to refused: no axis is checked."));
         return;
-    const bool steps = a->unit == machine::AxisUnit::Step;
-    // A G0 of its own in G-code's defaults (G90, G21: millimetre axes take mm, rotary axes
-    // degrees, step axes steps), in the active coordinate system, through the same check and
-    // path as a program's G0 (issue 30): refused as a whole before anything is sent when the
-    // axis is not referenced, a controller not connected or the target outside the soft limits.
-    const QString target = QString::number(m_target->value(), 'f', steps ? 0 : 3);
+    }
+    // One G0 in G-code's defaults (G90, G21: millimetre axes take mm, rotary axes degrees, step
+    // axes steps), in the active coordinate system, through the same check and path as a
+    // program's G0 (issue 30): refused as a whole before anything is sent when an axis is not
+    // referenced, a controller not connected or a target outside the soft limits.
+    QString line = QStringLiteral("G0");
+    m_pendingAxes.clear();
+    for (const QString& axis : axes) {
+        const machine::MachineAxis* a = m->description().axis(axis);
+        const QDoubleSpinBox* box = targetBox(axis);
+        if (!a || !box)
+            return;
+        line += QStringLiteral(" %1%2").arg(
+            axis, axisValue(box->value(), a->unit == machine::AxisUnit::Step));
+        m_pendingAxes.append({axis, m_offsets->toMachine(axis, box->value())});
+    }
     QString refusal;
     m_moveStarted = false;
-    m_pending = m_context->mdi()->runOwnLine(QStringLiteral("G0 %1%2").arg(axis, target), &refusal);
-    m_pendingAxis = axis;
-    // The soft limits and the arrival are judged in machine coordinates.
-    m_pendingTarget = m_offsets->toMachine(axis, m_target->value());
-    const QString machineTarget = steps ? QString::number(qRound64(m_pendingTarget))
-                                        : QString::number(m_pendingTarget, 'f', 3);
+    m_pending = m_context->mdi()->runOwnLine(line, &refusal);
     m_go->setEnabled(m_pending == 0);
-    m_movingText = m_offsets->hasOffset(axis)
-                       ? tr("Moving %1 to %2 (work; machine %3)\u2026")
-                             .arg(axis, m_target->text(), machineTarget)
-                       : tr("Moving %1 to %2\u2026").arg(axis, m_target->text());
+    m_movingText = tr("Moving %1\u2026").arg(targetsText(true));
     // Nothing moves before the check has passed (MachineMdi::started).
-    m_result->setText(!m_pending
-                          ? tr("Go-to refused: %1").arg(refusal)
-                          : tr("Checking the go-to of %1 to %2\u2026").arg(axis, m_target->text()));
+    m_result->setText(!m_pending ? tr("Go-to refused: %1").arg(refusal)
+                                 : tr("Checking the go-to of %1\u2026").arg(targetsText(false)));
 }
 
 void MachineGoTo::onEnded(quint64 id, bool ok, const QString& message)
@@ -146,46 +256,98 @@ void MachineGoTo::onEnded(quint64 id, bool ok, const QString& message)
     m_pending = 0;
     m_go->setEnabled(true);
     if (!ok) {
-        // The check's refusal (nothing sent) or the run's end short of the target.
+        // The check's refusal (nothing sent) or the run's end short of the targets.
         m_result->setText(m_moveStarted ? tr("Go-to failed: %1").arg(message)
                                         : tr("Go-to refused: %1").arg(message));
         return;
     }
-    // The run's move ended with the axis standing. "Arrived" only where a status read asked
-    // for after that counts it at the target: a STOP ends a move short of it, and a board
-    // that reports no position (the E-LAB) corrects its count only after the stop
-    // (RequestRelPosition), ahead of that read.
-    const machine::Machine* m = m_context->machine();
-    const machine::MachineAxis* a = m ? m->description().axis(m_pendingAxis) : nullptr;
-    ControllerSession* session = a ? m->session(a->controller) : nullptr;
-    if (!session)
-        return;
-    m_result->setText(tr("%1 stands: reading its position\u2026").arg(a->name));
-    disconnect(m_confirm);
-    const RequestId read = session->refreshStatus();
-    m_confirm = connect(session, &ControllerSession::requestFinished, this,
-                        [this, read](const CommandResult& r) {
-                            if (r.id != read)
-                                return;
-                            disconnect(m_confirm);
-                            judgeArrival(r.ok());
-                        });
+    readPositions();
 }
 
-void MachineGoTo::judgeArrival(bool read)
+// The run's move ended with the axes standing. "Arrived" only where a status read asked for
+// after that counts an axis at its target: a STOP ends a move short of it, and a board that
+// reports no position (the E-LAB) corrects its count only after the stop (RequestRelPosition),
+// ahead of that read. One read per controller the go-to moved.
+void MachineGoTo::readPositions()
 {
     const machine::Machine* m = m_context->machine();
-    const machine::MachineAxis* a = m ? m->description().axis(m_pendingAxis) : nullptr;
-    if (!a)
+    if (!m)
         return;
-    const machine::MachineAxisStatus status = m->axisStatus(*a);
-    const bool atTarget = read && status.known != machine::PositionKnowledge::Unknown &&
-                          qAbs(status.position - m_pendingTarget) * a->stepsPerUnit < 0.5;
-    m_result->setText(atTarget ? tr("%1 arrived.").arg(a->name)
-                      : !read  ? tr("%1 stands; its position could not be read.").arg(a->name)
-                               : tr("%1 stopped at %2 before its target %3.")
-                                    .arg(a->name, QString::number(status.position, 'f', 3),
-                                         QString::number(m_pendingTarget, 'f', 3)));
+    QList<ControllerSession*> sessions;
+    for (const Pending& p : std::as_const(m_pendingAxes)) {
+        const machine::MachineAxis* a = m->description().axis(p.axis);
+        ControllerSession* session = a ? m->session(a->controller) : nullptr;
+        if (session && !sessions.contains(session))
+            sessions << session;
+    }
+    if (sessions.isEmpty())
+        return;
+    const QString names = axisNames();
+    m_result->setText(m_pendingAxes.size() == 1
+                          ? tr("%1 stands: reading its position\u2026").arg(names)
+                          : tr("%1 stand: reading their positions\u2026").arg(names));
+    for (const QMetaObject::Connection& c : std::as_const(m_confirm))
+        disconnect(c);
+    m_confirm.clear();
+    m_reads.clear();
+    m_readFailed = false;
+    for (ControllerSession* session : std::as_const(sessions)) {
+        const RequestId read = session->refreshStatus();
+        m_reads << read;
+        m_confirm << connect(session, &ControllerSession::requestFinished, this,
+                             [this, read](const CommandResult& r) {
+                                 if (r.id != read || !m_reads.removeOne(read))
+                                     return;
+                                 m_readFailed = m_readFailed || !r.ok();
+                                 if (m_reads.isEmpty())
+                                     judgeArrival();
+                             });
+    }
+}
+
+void MachineGoTo::judgeArrival()
+{
+    for (const QMetaObject::Connection& c : std::as_const(m_confirm))
+        disconnect(c);
+    m_confirm.clear();
+    const machine::Machine* m = m_context->machine();
+    if (!m)
+        return;
+    if (m_readFailed) {
+        m_result->setText(
+            m_pendingAxes.size() == 1
+                ? tr("%1 stands; its position could not be read.").arg(axisNames())
+                : tr("%1 stand; their positions could not be read.").arg(axisNames()));
+        return;
+    }
+    QStringList arrived;
+    QStringList short_;
+    for (const Pending& p : std::as_const(m_pendingAxes)) {
+        const machine::MachineAxis* a = m->description().axis(p.axis);
+        if (!a)
+            continue;
+        const machine::MachineAxisStatus status = m->axisStatus(*a);
+        if (status.known != machine::PositionKnowledge::Unknown &&
+            qAbs(status.position - p.machineTarget) * a->stepsPerUnit < 0.5)
+            arrived << a->name;
+        else
+            short_ << tr("%1 stopped at %2 before its target %3")
+                          .arg(a->name, QString::number(status.position, 'f', 3),
+                               QString::number(p.machineTarget, 'f', 3));
+    }
+    QStringList sentences;
+    if (!arrived.isEmpty())
+        sentences << tr("%1 arrived").arg(arrived.join(QStringLiteral(", ")));
+    sentences += short_;
+    m_result->setText(sentences.join(QStringLiteral("; ")) + QLatin1Char('.'));
+}
+
+QString MachineGoTo::axisNames() const
+{
+    QStringList names;
+    for (const Pending& p : m_pendingAxes)
+        names << p.axis;
+    return names.join(QStringLiteral(", "));
 }
 
 QString MachineGoTo::labelText() const

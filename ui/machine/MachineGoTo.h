@@ -1,8 +1,10 @@
 #pragma once
+#include <QList>
 #include <QWidget>
 
-class QComboBox;
+class QCheckBox;
 class QDoubleSpinBox;
+class QGridLayout;
 class QLabel;
 class QPushButton;
 
@@ -12,22 +14,26 @@ class ElidedLabel;
 class MachineContext;
 class MachineWorkOffsets;
 
-// Go-to of one machine axis in its unit (issue 19): an absolute target as a G0 line of its own
-// through MachineMdi (issue 30: the same check and path as a program's G0), which refuses it
-// with the reason (nothing sent) unless the axis is referenced and the target within its soft
-// limits. With a work zero set (MachineWorkOffsets) the target is in work coordinates of the
-// active system, and the label says so ("Go to (work)"); the soft limits stay in machine
-// coordinates. Enter in
-// the target field goes like the button. The line below says what happened, on one line
-// (elided): "arrived" only once the machine confirmed the arrival.
+// Go-to of machine axes in their units (issues 19 and 31): a target box per axis with a check
+// that says whether the axis goes; the checked axes go together as one G0 line of its own
+// through MachineMdi (issue 30: the same check and path as a program's G0), which refuses the
+// whole line with the reason (nothing sent) unless every axis is referenced and its target
+// within its soft limits. Changing a target by hand (typing, arrows, wheel) checks its axis;
+// Enter in a target goes like the button. With a work zero set (MachineWorkOffsets) a target
+// is in work coordinates of the active system, and the label says so ("Go to (work)"); the
+// soft limits stay in machine coordinates. The line below says what happened, on one line
+// (elided): "arrived" only for an axis whose controller confirmed it at its target, read
+// after the move ended.
 class MachineGoTo : public QWidget
 {
     Q_OBJECT
 public:
     MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent = nullptr);
 
-    QComboBox* axisCombo() const { return m_axis; }
-    QDoubleSpinBox* targetBox() const { return m_target; }
+    QCheckBox* axisCheck(const QString& axis) const;      // nullptr: no such axis
+    QDoubleSpinBox* targetBox(const QString& axis) const; // nullptr: no such axis
+    QStringList checkedAxes() const;                      // in the machine's order
+    void choose(const QStringList& axes);                 // checks these, unchecks the rest
     QPushButton* goButton() const { return m_go; }
     QString resultText() const;
     QString labelText() const;
@@ -36,27 +42,43 @@ public Q_SLOTS:
     void go(); // refused while its last go-to still moves (one at a time)
 
 protected:
-    bool eventFilter(QObject* watched, QEvent* event) override; // Enter in the target: go()
+    bool eventFilter(QObject* watched, QEvent* event) override; // typing, Enter in a target
 
 private:
+    struct Row
+    {
+        QString axis;
+        QCheckBox* check = nullptr;
+        QDoubleSpinBox* target = nullptr;
+    };
+    struct Pending
+    {
+        QString axis;
+        double machineTarget = 0; // the arrival is judged in machine coordinates
+    };
     void rebuild();
-    void updateUnit();
+    void updateUnits();
+    void updateLabel();
+    QString targetsText(bool withMachine) const;               // "X to 1.000 mm, Y to 2.000 mm"
+    QString axisNames() const;                                 // of the go-to under way: "X, Y"
     void onEnded(quint64 id, bool ok, const QString& message); // MachineMdi::ended
-    void judgeArrival(bool read); // after the status read that follows the move's end
+    void readPositions(); // once the move ended: a status read per controller involved
+    void judgeArrival();  // once every read finished
 
     MachineContext* m_context;
     MachineWorkOffsets* m_offsets;
     QLabel* m_label;
-    QComboBox* m_axis;
-    QDoubleSpinBox* m_target;
+    QGridLayout* m_grid;
     QPushButton* m_go;
     ElidedLabel* m_result;
-    QString m_pendingAxis;             // the axis of the go-to under way
-    double m_pendingTarget = 0;        // its target in machine coordinates (the axis' unit)
-    quint64 m_pending = 0;             // its line (MachineMdi)
-    bool m_moveStarted = false;        // its check passed and the run began
-    QString m_movingText;              // said once it did
-    QMetaObject::Connection m_confirm; // the status read that judges the arrival
+    QList<Row> m_rows;
+    QList<Pending> m_pendingAxes;             // the axes of the go-to under way
+    quint64 m_pending = 0;                    // its line (MachineMdi)
+    bool m_moveStarted = false;               // its check passed and the run began
+    QString m_movingText;                     // said once it did
+    QList<quint64> m_reads;                   // status reads still to finish (request ids)
+    bool m_readFailed = false;                // one of them failed
+    QList<QMetaObject::Connection> m_confirm; // the reads that judge the arrival
 };
 
 } // namespace stepdeck::ui

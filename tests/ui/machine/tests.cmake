@@ -17,7 +17,7 @@ target_compile_definitions(tst_machinefileactions PRIVATE STEPDECK_SOURCE_DIR="$
 # The main window running a machine of several controllers (issue 19, ui/machine/): an E-LAB
 # and a Nanotec simulator on two pseudo-terminals (MachineWindowRig), on a 1366x768 screen.
 foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machinejog
-              tst_machinereopen)
+              tst_machinereopen tst_machinegotoaxes)
   stepdeck_add_test(${_test} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_test}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/MachineWindowRig.h ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h

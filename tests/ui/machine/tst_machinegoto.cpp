@@ -6,7 +6,7 @@
 #include "machine/MachineGoTo.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
-#include <QComboBox>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 
@@ -34,13 +34,15 @@ private:
                    m_f->deviceCommands(elab::ctrl::FF, mark).size() +
                    m_f->deviceCommands(elab::ctrl::BS, mark).size());
     }
+    // As an operator does: typing a target checks its axis.
     void typeTarget(const QString& axis, const QString& text)
     {
-        goTo()->axisCombo()->setCurrentIndex(goTo()->axisCombo()->findData(axis));
-        QDoubleSpinBox* box = goTo()->targetBox();
+        QDoubleSpinBox* box = goTo()->targetBox(axis);
+        QVERIFY(box);
         box->setFocus();
         box->selectAll();
         QTest::keyClicks(box, text);
+        QVERIFY(goTo()->axisCheck(axis)->isChecked());
     }
     std::unique_ptr<UiFixture> m_f;
 };
@@ -72,7 +74,7 @@ void TestMachineGoTo::enter_inTargetField_movesLikeGo()
 {
     typeTarget(QStringLiteral("X"), QStringLiteral("400"));
     const qsizetype mark = m_f->deviceMark();
-    QTest::keyClick(goTo()->targetBox(), Qt::Key_Return);
+    QTest::keyClick(goTo()->targetBox(QStringLiteral("X")), Qt::Key_Return);
     QTRY_COMPARE(movesSince(mark), 1);
     QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     QString why;
@@ -83,12 +85,12 @@ void TestMachineGoTo::enter_inTargetField_movesLikeGo()
 void TestMachineGoTo::enter_whileMoving_sendsNothing()
 {
     typeTarget(QStringLiteral("X"), QStringLiteral("3000"));
-    QTest::keyClick(goTo()->targetBox(), Qt::Key_Enter); // the keypad's Enter
+    QTest::keyClick(goTo()->targetBox(QStringLiteral("X")), Qt::Key_Enter); // the keypad's
     QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     QVERIFY(!goTo()->goButton()->isEnabled());
     const qsizetype mark = m_f->deviceMark();
     typeTarget(QStringLiteral("Y"), QStringLiteral("200"));
-    QTest::keyClick(goTo()->targetBox(), Qt::Key_Return);
+    QTest::keyClick(goTo()->targetBox(QStringLiteral("Y")), Qt::Key_Return);
     QVERIFY2(goTo()->resultText().contains(QStringLiteral("still moving")),
              qPrintable(goTo()->resultText()));
     QString why;

@@ -87,8 +87,8 @@ void TestMachinePosition::goTo_unreferencedAxis_refusedNothingSent()
     QVERIFY(m_rig.openAndConnect());
     ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
     QVERIFY(goTo->isVisibleTo(window()));
-    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
-    goTo->targetBox()->setValue(1.25);
+    goTo->choose({QStringLiteral("X")});
+    goTo->targetBox(QStringLiteral("X"))->setValue(1.25);
     goTo->goButton()->click();
     // Refused by the check a program's G0 has, off the GUI thread: said once it ran.
     QTRY_VERIFY2(goTo->resultText().contains(QStringLiteral("Go-to refused: X: the position is "
@@ -110,8 +110,8 @@ void TestMachinePosition::goTo_referencedX_deviceAtTheNearestStep()
         table->status().axes.value(Axis::X).referenced && !table->status().anyMoving(), 20000);
     const qint64 origin = m_rig.elab->position();
     ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
-    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
-    goTo->targetBox()->setValue(1.25);
+    goTo->choose({QStringLiteral("X")});
+    goTo->targetBox(QStringLiteral("X"))->setValue(1.25);
     goTo->goButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
     QCOMPARE(m_rig.elab->position() - origin, qint64(500)); // 1.25 mm x 400 steps/mm
@@ -185,9 +185,9 @@ void TestMachinePosition::zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOff
     QVERIFY(m_rig.referenceTable());
     const qint64 origin = m_rig.elab->position();
     ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
-    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
+    goTo->choose({QStringLiteral("X")});
     QCOMPARE(goTo->labelText(), QStringLiteral("Go to:"));
-    goTo->targetBox()->setValue(2.5);
+    goTo->targetBox(QStringLiteral("X"))->setValue(2.5);
     goTo->goButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
     QCOMPARE(m_rig.elab->position() - origin, qint64(1000));
@@ -207,7 +207,7 @@ void TestMachinePosition::zero_referencedX_digitsZeroAndGoToWorkMovesDeviceToOff
     QCOMPARE(dro->unitText(QStringLiteral("Y")), QStringLiteral("mm"));
     QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
     // Go to (work) X = 1: machine 3.5 mm, 1400 steps from the origin at the board.
-    goTo->targetBox()->setValue(1.0);
+    goTo->targetBox(QStringLiteral("X"))->setValue(1.0);
     goTo->goButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(goTo->resultText() == QStringLiteral("X arrived."), 30000);
     QCOMPARE(m_rig.elab->position() - origin, qint64(1400));
@@ -259,7 +259,7 @@ void TestMachinePosition::zero_reopenMachine_offsetsRemembered()
     // Not connected: the last value known, in work coordinates, marked as such.
     QCOMPARE(dro->stateText(QStringLiteral("Y")), QStringLiteral("NO LINK"));
     ui::MachineGoTo* goTo = window()->positionPanel()->machineGoTo();
-    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("Y")));
+    goTo->choose({QStringLiteral("Y")});
     QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
 }
 

@@ -78,8 +78,8 @@ void TestSoftLimitsUi::limits_refuseMovesAndStopJogInside()
     // Go to a position inside: it goes there.
     ui::MachineGoTo* goTo = w->positionPanel()->machineGoTo();
     QVERIFY(goTo->goButton()->isEnabled());
-    goTo->axisCombo()->setCurrentIndex(goTo->axisCombo()->findData(QStringLiteral("X")));
-    goTo->targetBox()->setValue(2000);
+    goTo->choose({QStringLiteral("X")});
+    goTo->targetBox(QStringLiteral("X"))->setValue(2000);
     goTo->goButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(m_f->simAxis(Axis::X).moving, 3000);
     QTRY_VERIFY_WITH_TIMEOUT(!m_f->simAxis(Axis::X).moving, 10000);
@@ -87,7 +87,7 @@ void TestSoftLimitsUi::limits_refuseMovesAndStopJogInside()
     // ... and not beyond.
     QTRY_VERIFY(goTo->goButton()->isEnabled());
     mark = m_f->deviceMark();
-    goTo->targetBox()->setValue(5000);
+    goTo->targetBox(QStringLiteral("X"))->setValue(5000);
     goTo->goButton()->click();
     QTRY_VERIFY2(goTo->resultText().contains(QStringLiteral("soft limit")),
                  qPrintable(goTo->resultText()));

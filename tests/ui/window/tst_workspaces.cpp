@@ -256,12 +256,20 @@ void TestWorkspaces::run_windowTooSmall_saysWhichPagesScroll()
     window()->messages()->clearAll();
     const QSize full = window()->size();
     window()->resize(full.width(), full.height() * 2 / 3);
-    const QString position = dock("positionDock")->windowTitle();
-    QTRY_VERIFY2(fit->lastReported().contains(position),
-                 qPrintable(fit->lastReported().join(u',')));
+    // Which pages give way first depends on the docks' minimum sizes: whichever scroll, the
+    // message names each of them.
+    QTRY_VERIFY(!fit->lastReported().isEmpty());
+    for (QDockWidget* d : window()->findChildren<QDockWidget*>()) {
+        auto* area = qobject_cast<QScrollArea*>(d->widget());
+        if (area && fit->lastReported().contains(d->windowTitle()))
+            QVERIFY2(area->verticalScrollBar()->isVisible() ||
+                         area->horizontalScrollBar()->isVisible(),
+                     qPrintable(d->windowTitle())); // named, and it does scroll
+    }
     QVERIFY(!said.isEmpty());
     const QString text = said.constLast().at(0).toString();
-    QVERIFY2(text.contains(position), qPrintable(text));
+    for (const QString& page : fit->lastReported())
+        QVERIFY2(text.contains(page), qPrintable(text));
     QCOMPARE(window()->messages()->currentText(), text);
     window()->resize(full);
     QTRY_VERIFY(fit->lastReported().isEmpty());
