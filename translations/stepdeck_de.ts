@@ -7007,6 +7007,13 @@ W1500</translation>
                 <numerusform>%n Fehler; ein Klick springt zur Zeile des Fehlers.</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Line %1 is not in the editor, which shows the first %n line(s) of this large file.</source>
+            <translation>
+                <numerusform>Zeile %1 steht nicht im Editor, der von dieser großen Datei nur die erste Zeile zeigt.</numerusform>
+                <numerusform>Zeile %1 steht nicht im Editor, der von dieser großen Datei nur die ersten %n Zeilen zeigt.</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramFiles</name>

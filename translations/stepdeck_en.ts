@@ -67,6 +67,13 @@
                 <numerusform>%n errors; click one to go to its line.</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Line %1 is not in the editor, which shows the first %n line(s) of this large file.</source>
+            <translation>
+                <numerusform>Line %1 is not in the editor, which shows the first line of this large file.</numerusform>
+                <numerusform>Line %1 is not in the editor, which shows the first %n lines of this large file.</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPage</name>

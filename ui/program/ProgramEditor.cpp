@@ -173,11 +173,11 @@ void ProgramEditor::setRunningLine(int line)
     }
 }
 
-void ProgramEditor::goToLine(int line, int column)
+bool ProgramEditor::goToLine(int line, int column)
 {
     const QTextBlock block = document()->findBlockByNumber(line - 1);
     if (line < 1 || !block.isValid())
-        return;
+        return false;
     const QString text = block.text();
     int from = column >= 1 ? qMin(column - 1, int(text.size())) : 0;
     int to = from;
@@ -195,6 +195,7 @@ void ProgramEditor::goToLine(int line, int column)
     ensureCursorVisible();
     window()->activateWindow();
     setFocus(Qt::OtherFocusReason);
+    return true;
 }
 
 void ProgramEditor::setExcerpt(bool excerpt)

@@ -20,7 +20,8 @@ public:
     QString errorAt(int line) const { return m_errors.value(line); }
     // The cursor to a line (1-based) and column (1-based; 0: unknown), the word there selected
     // (the whole line without a column), shown, and the focus to the text: where an error is.
-    void goToLine(int line, int column = 0);
+    // False when the line is not in the text (past the excerpt of a large file).
+    bool goToLine(int line, int column = 0);
     // The block running (1-based line; 0: none). The view follows it while it runs.
     void setRunningLine(int line);
     int runningLine() const { return m_runningLine; }

@@ -19,7 +19,11 @@ ProgramErrorList::ProgramErrorList(ProgramEditor* editor, QWidget* parent)
     m_header->setObjectName(QStringLiteral("programErrorHeader"));
     m_header->setStyleSheet(QStringLiteral("QLabel { color: #b00000; }")); // as the check line
     m_list->setObjectName(QStringLiteral("programErrorEntries"));
-    m_list->setUniformItemSizes(true);
+    // A long entry wraps (German reasons run to twice the list's width) instead of scrolling
+    // sideways; the tooltip still has it whole.
+    m_list->setWordWrap(true);
+    m_list->setResizeMode(QListView::Adjust);
+    m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(m_header);
@@ -62,7 +66,15 @@ void ProgramErrorList::goTo(const QListWidgetItem* item)
 {
     if (!item)
         return;
-    m_editor->goToLine(item->data(kLineRole).toInt(), item->data(kColumnRole).toInt());
+    const int line = item->data(kLineRole).toInt();
+    if (line < 1 || m_editor->goToLine(line, item->data(kColumnRole).toInt()))
+        return;
+    // A file too large to edit shows its first lines only (ProgramFiles): say so rather than
+    // doing nothing.
+    m_header->setText(tr("Line %1 is not in the editor, which shows the first %n line(s) of "
+                         "this large file.",
+                         nullptr, m_editor->document()->blockCount())
+                          .arg(line));
 }
 
 } // namespace stepdeck::ui

@@ -4,8 +4,10 @@
 // or Enter on one puts the editor's cursor at its line and column with the focus; the list
 // follows each check; nothing of the page moves.
 #include "ProgramPageFixture.h"
+#include "program/ProgramEditor.h"
 #include "program/ProgramErrorList.h"
 #include <QListWidget>
+#include <QScrollBar>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -30,6 +32,8 @@ private Q_SLOTS:
     void checkErrors_clickEntry_editorAtThatLine();
     void checkErrors_enterOnEntry_editorAtThatLine();
     void checkErrors_fixed_listFollowsTheCheck();
+    void longEntry_wraps_noSidewaysScroll();
+    void entryPastTheExcerpt_saysSo();
 
 private:
     ui::ProgramErrorList* list() const { return page()->errorList(); }
@@ -131,6 +135,51 @@ void TestProgramErrors::checkErrors_fixed_listFollowsTheCheck()
     QTRY_VERIFY(entries().isEmpty());
     QTRY_VERIFY(page()->preview()->isVisible());
     QVERIFY(!list()->isVisible());
+}
+
+// A reason longer than the list is wide wraps onto more lines; the list never scrolls sideways.
+void TestProgramErrors::longEntry_wraps_noSidewaysScroll()
+{
+    ui::ProgramEditor editor;
+    ui::ProgramErrorList errors(&editor, nullptr);
+    errors.resize(240, 300);
+    errors.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&errors));
+    const QString reason = QStringLiteral("X: the position is unknown, so an absolute move "
+                                          "could go anywhere: reference the axis first");
+    errors.setErrors({{4, 1, reason}, {6, 1, QStringLiteral("B is no axis")}});
+    QListWidget* entries = errors.list();
+    const int lineHeight = entries->fontMetrics().height();
+    QVERIFY(entries->fontMetrics().horizontalAdvance(entries->item(0)->text()) >
+            entries->viewport()->width()); // it would not fit on one line
+    QTRY_VERIFY2(entries->visualItemRect(entries->item(0)).height() >= 2 * lineHeight,
+                 qPrintable(QString::number(entries->visualItemRect(entries->item(0)).height())));
+    QVERIFY(entries->visualItemRect(entries->item(0)).width() <= entries->viewport()->width());
+    QVERIFY(!entries->horizontalScrollBar()->isVisible());
+    QVERIFY(entries->visualItemRect(entries->item(1)).height() < 2 * lineHeight);
+}
+
+// A file too large to edit shows its first lines only: an error past them is listed, and a
+// click on it says why the editor does not go there (it did nothing, silently).
+void TestProgramErrors::entryPastTheExcerpt_saysSo()
+{
+    ui::ProgramEditor editor;
+    editor.setPlainText(QStringLiteral("G0 X1\nG0 X2\nG0 X3"));
+    ui::ProgramErrorList errors(&editor, nullptr);
+    errors.setErrors({{2, 4, QStringLiteral("bad X")}, {25000, 1, QStringLiteral("B is no axis")}});
+    errors.resize(400, 200);
+    errors.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&errors));
+    QListWidget* entries = errors.list();
+    QTest::mouseClick(entries->viewport(), Qt::LeftButton, {},
+                      entries->visualItemRect(entries->item(1)).center());
+    QVERIFY2(errors.headerText().startsWith(QStringLiteral("Line 25000 is not in the editor")) &&
+                 errors.headerText().contains(QStringLiteral("first 3 line")),
+             qPrintable(errors.headerText()));
+    QCOMPARE(editor.textCursor().blockNumber(), 0); // not moved
+    QTest::mouseClick(entries->viewport(), Qt::LeftButton, {},
+                      entries->visualItemRect(entries->item(0)).center());
+    QCOMPARE(editor.textCursor().blockNumber(), 1); // a line it has: there
 }
 
 int main(int argc, char** argv)
