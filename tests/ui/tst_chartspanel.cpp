@@ -79,13 +79,26 @@ void TestChartsPanel::sampler_csv_headerAndRows()
     a.velocity = {{Axis::X, 100}, {Axis::Y, 0}};
     a.temperature = 31;
     a.pollRate = 19.5;
-    const QString csv = ui::ChartSampler::toCsv({a}, {Axis::X, Axis::Y});
+    // X a machine's axis in mm (400 steps/mm), Y a controller's own axis in steps: each in
+    // what the charts plot it in (issue 31).
+    ui::ChartAxis x;
+    x.axis = Axis::X;
+    x.name = QStringLiteral("X");
+    machine::MachineAxis mm;
+    mm.name = QStringLiteral("X");
+    mm.unit = machine::AxisUnit::Millimetre;
+    mm.stepsPerUnit = 400;
+    x.inMachine = mm;
+    ui::ChartAxis y;
+    y.axis = Axis::Y;
+    y.name = QStringLiteral("Y");
+    const QString csv = ui::ChartSampler::toCsv({a}, {x, y});
     const QStringList lines = csv.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 2);
-    QCOMPARE(lines[0], QStringLiteral("time_s,position_X_steps,position_Y_steps,"
-                                      "velocity_X_steps_per_s,velocity_Y_steps_per_s,"
+    QCOMPARE(lines[0], QStringLiteral("time_s,position_X_mm,position_Y_steps,"
+                                      "velocity_X_mm_per_s,velocity_Y_steps_per_s,"
                                       "temperature_c,poll_rate_hz"));
-    QCOMPARE(lines[1], QStringLiteral("1.500,10,-20,100.0,0.0,31.0,19.5"));
+    QCOMPARE(lines[1], QStringLiteral("1.500,0.0250,-20,0.250,0.0,31.0,19.5"));
 }
 
 void TestChartsPanel::panel_followsStatus_exportsCsvAndPng()
@@ -172,6 +185,20 @@ void TestChartsPanel::charts_machineInMm_plotsEachAxisInItsUnit()
                              10000);
     QTRY_COMPARE_WITH_TIMEOUT(lastValue(position, QStringLiteral("X")), 2.5, 5000);
     QCOMPARE(lastValue(position, QStringLiteral("Y")), 0.0);
+    // The CSV export as the charts plot it: in mm, the header saying so.
+    QString error;
+    const QString csv = dir.filePath(QStringLiteral("mm.csv"));
+    QVERIFY2(charts->exportCsv(csv, &error), qPrintable(error));
+    QFile exported(csv);
+    QVERIFY(exported.open(QIODevice::ReadOnly));
+    const QStringList lines =
+        QString::fromUtf8(exported.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY(lines.size() >= 2);
+    const QStringList header = lines.first().split(QLatin1Char(','));
+    const int column = int(header.indexOf(QStringLiteral("position_X_mm")));
+    QVERIFY2(column > 0, qPrintable(lines.first()));
+    QVERIFY(header.contains(QStringLiteral("velocity_Z_mm_per_s")));
+    QCOMPARE(lines.last().split(QLatin1Char(',')).value(column), QStringLiteral("2.5000"));
 }
 
 QTEST_MAIN(TestChartsPanel)

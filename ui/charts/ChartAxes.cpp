@@ -20,6 +20,11 @@ double ChartAxis::velocity(double stepsPerSecond) const
     return inMachine->invert ? -rate : rate;
 }
 
+QString ChartAxis::csvUnit() const
+{
+    return inMachine ? machine::unitKey(inMachine->unit) : QStringLiteral("steps");
+}
+
 QList<ChartAxis> chartAxes(const MachineContext& context)
 {
     const machine::Machine* m = context.machine();

@@ -23,6 +23,9 @@ struct ChartAxis
 
     double position(double steps) const;
     double velocity(double stepsPerSecond) const;
+    // The unit as a CSV header spells it, untranslated: "mm", "deg" (the machine file's
+    // words), else "steps".
+    QString csvUnit() const;
 };
 
 // The selected controller's axes as the charts plot them.

@@ -44,21 +44,23 @@ void ChartSampler::clear()
     m_lastMs = -1;
 }
 
-QString ChartSampler::toCsv(const QVector<ChartSample>& samples, const QList<Axis>& axes)
+QString ChartSampler::toCsv(const QVector<ChartSample>& samples, const QList<ChartAxis>& axes)
 {
+    // Each axis in what the charts plot it in (issue 31): a machine's axes in their unit, the
+    // header naming it ("position_X_mm"), a controller's own axes in steps.
     QStringList header{QStringLiteral("time_s")};
-    for (Axis a : axes)
-        header << QStringLiteral("position_%1_steps").arg(axisName(a));
-    for (Axis a : axes)
-        header << QStringLiteral("velocity_%1_steps_per_s").arg(axisName(a));
+    for (const ChartAxis& a : axes)
+        header << QStringLiteral("position_%1_%2").arg(a.name, a.csvUnit());
+    for (const ChartAxis& a : axes)
+        header << QStringLiteral("velocity_%1_%2_per_s").arg(a.name, a.csvUnit());
     header << QStringLiteral("temperature_c") << QStringLiteral("poll_rate_hz");
     QString out = header.join(QLatin1Char(',')) + QLatin1Char('\n');
     for (const ChartSample& s : samples) {
         QStringList row{QString::number(s.t, 'f', 3)};
-        for (Axis a : axes)
-            row << QString::number(s.position.value(a), 'f', 0);
-        for (Axis a : axes)
-            row << QString::number(s.velocity.value(a), 'f', 1);
+        for (const ChartAxis& a : axes)
+            row << QString::number(a.position(s.position.value(a.axis)), 'f', a.inMachine ? 4 : 0);
+        for (const ChartAxis& a : axes)
+            row << QString::number(a.velocity(s.velocity.value(a.axis)), 'f', a.inMachine ? 3 : 1);
         row << (qIsNaN(s.temperature) ? QString() : QString::number(s.temperature, 'f', 1));
         row << QString::number(s.pollRate, 'f', 1);
         out += row.join(QLatin1Char(',')) + QLatin1Char('\n');

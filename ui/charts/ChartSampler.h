@@ -1,4 +1,5 @@
 #pragma once
+#include "ChartAxes.h"
 #include "model/MachineStatus.h"
 #include <QElapsedTimer>
 #include <QObject>
@@ -32,7 +33,7 @@ public:
     QVector<ChartSample> window(double seconds) const; // the newest `seconds`
     void clear();
     // CSV of the given samples: header and one row per sample.
-    static QString toCsv(const QVector<ChartSample>& samples, const QList<Axis>& axes);
+    static QString toCsv(const QVector<ChartSample>& samples, const QList<ChartAxis>& axes);
 
 private:
     QElapsedTimer m_clock;

@@ -213,7 +213,7 @@ bool ChartsPanel::exportCsv(const QString& path, QString* error) const
         return false;
     }
     // The visible data: what the charts show now (frozen while paused).
-    file.write(ChartSampler::toCsv(m_shown, m_context->axes()).toUtf8());
+    file.write(ChartSampler::toCsv(m_shown, chartAxes(*m_context)).toUtf8());
     return true;
 }
 
