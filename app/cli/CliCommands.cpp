@@ -246,29 +246,34 @@ Outcome cmdParams(CliContext& c, QStringList args)
         return Outcome::usage(CliText::tr("params takes no arguments"));
     QJsonArray list;
     for (const ParameterSpec& spec : c.model->schema.specs()) {
-        list.append(QJsonObject{{"name", spec.name},
-                                {"label", spec.label},
-                                {"group", spec.group},
-                                {"unit", spec.unit},
-                                {"type", typeName(spec.type)},
-                                {"range", ParameterSchema::rangeText(spec)},
-                                {"perAxis", spec.perAxis},
-                                {"readable", spec.readable},
-                                {"writable", spec.writable},
-                                {"default", QJsonValue::fromVariant(spec.defaultValue)},
-                                {"description", spec.description}});
+        // A value the manual gives no unit says so ("(no unit)"), as the setup page does.
+        const QString unit = spec.unit.isEmpty() ? spec.unitNote : spec.unit;
+        QJsonObject entry{{"name", spec.name},
+                          {"label", spec.label},
+                          {"group", spec.group},
+                          {"unit", spec.unit},
+                          {"type", typeName(spec.type)},
+                          {"range", ParameterSchema::rangeText(spec)},
+                          {"perAxis", spec.perAxis},
+                          {"readable", spec.readable},
+                          {"writable", spec.writable},
+                          {"default", QJsonValue::fromVariant(spec.defaultValue)},
+                          {"description", spec.description}};
+        if (!spec.unitNote.isEmpty() && spec.unit.isEmpty())
+            entry.insert("unitNote",
+                         spec.unitNoteDetail.isEmpty() ? spec.unitNote : spec.unitNoteDetail);
+        list.append(entry);
         if (c.json())
             continue;
-        printLine(QStringLiteral("%1  %2  %3  %4  %5  %6")
-                      .arg(spec.name, -19)
-                      .arg(spec.perAxis ? CliText::tr("per axis") : CliText::tr("global"), -8)
-                      .arg(QStringLiteral("%1 %2")
-                               .arg(ParameterSchema::rangeText(spec), spec.unit)
-                               .trimmed(),
-                           -19)
-                      .arg(CliText::tr("default %1").arg(defaultText(spec)), -14)
-                      .arg(spec.readable ? CliText::tr("readable") : CliText::tr("write-only"), -10)
-                      .arg(spec.label));
+        printLine(
+            QStringLiteral("%1  %2  %3  %4  %5  %6")
+                .arg(spec.name, -19)
+                .arg(spec.perAxis ? CliText::tr("per axis") : CliText::tr("global"), -8)
+                .arg(QStringLiteral("%1 %2").arg(ParameterSchema::rangeText(spec), unit).trimmed(),
+                     -19)
+                .arg(CliText::tr("default %1").arg(defaultText(spec)), -14)
+                .arg(spec.readable ? CliText::tr("readable") : CliText::tr("write-only"), -10)
+                .arg(spec.label));
     }
     if (c.json())
         printJson(QJsonObject{{"model", c.model->id}, {"parameters", list}});

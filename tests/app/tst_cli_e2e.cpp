@@ -40,6 +40,7 @@ private Q_SLOTS:
     void import_brokenFile_refusedAndNothingWritten_data();
     void import_brokenFile_refusedAndNothingWritten();
     void get_writeOnlyParameter_saysItCannot();
+    void params_valueWithoutUnit_saysNoUnit();
     void set_writeOnlyModel_saysNothingVerified();
     void scan_modelWithoutBus_unsupportedInOneLine();
     void usageErrors_exitTwoWithOneLine_data();
@@ -410,6 +411,33 @@ void TestCliEndToEnd::get_writeOnlyParameter_saysItCannot()
     QCOMPARE(run.exitCode, 8);
     QCOMPARE(run.err.count('\n'), 1);
     QVERIFY2(run.err.contains("cannot be read back"), run.err.constData());
+}
+
+// The E-LAB manual gives the acceleration no unit: the listing says so, in its text and JSON.
+void TestCliEndToEnd::params_valueWithoutUnit_saysNoUnit()
+{
+    Run run = cli({"params"});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const QList<QByteArray> lines = run.out.split('\n');
+    const auto acceleration = std::find_if(lines.cbegin(), lines.cend(), [](const QByteArray& l) {
+        return l.startsWith("acceleration ");
+    });
+    QVERIFY2(acceleration != lines.cend(), run.out.constData());
+    QVERIFY2(acceleration->contains("(no unit)"), acceleration->constData());
+    run = cli({"--json", "params"});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const QJsonArray list = QJsonDocument::fromJson(run.out).object().value("parameters").toArray();
+    bool found = false;
+    for (const QJsonValue& v : list) {
+        const QJsonObject p = v.toObject();
+        if (p.value("name").toString() != QLatin1String("acceleration"))
+            continue;
+        found = true;
+        QCOMPARE(p.value("unit").toString(), QString());
+        QVERIFY2(p.value("unitNote").toString().contains(QLatin1String("no unit")),
+                 qPrintable(p.value("unitNote").toString()));
+    }
+    QVERIFY(found);
 }
 
 void TestCliEndToEnd::set_writeOnlyModel_saysNothingVerified()

@@ -61,7 +61,7 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
         if (!v.isPerAxis()) {
             global << Row{tr("all"), ParameterSchema::displayText(spec.label),
                           oldText(spec, onDevice, std::nullopt), shown(spec, v.global),
-                          ParameterSchema::displayText(spec.unit)};
+                          ParameterSchema::displayUnitColumn(spec)};
             continue;
         }
         for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
@@ -71,7 +71,7 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
                     : axisName(a.key());
             byDrive[QString::number(int(a.key())) + drive] << Row{
                 drive, ParameterSchema::displayText(spec.label), oldText(spec, onDevice, a.key()),
-                shown(spec, a.value()), ParameterSchema::displayText(spec.unit)};
+                shown(spec, a.value()), ParameterSchema::displayUnitColumn(spec)};
         }
     }
     QList<Row> out = global;

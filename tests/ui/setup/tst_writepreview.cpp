@@ -44,6 +44,7 @@ private Q_SLOTS:
     void rows_writtenNotReadBack_saysSo();
     void rows_writeOnlyParameter_cannotBeReadBack();
     void dialog_columns_oldBeforeNew();
+    void rows_valueWithoutUnit_saysNoUnit();
 };
 
 void TestWritePreview::rows_readBack_showsOldAndNew()
@@ -89,6 +90,19 @@ void TestWritePreview::dialog_columns_oldBeforeNew()
     QCOMPARE(table->horizontalHeaderItem(3)->text(), QStringLiteral("New"));
     QCOMPARE(table->item(0, 2)->text(), QStringLiteral("50"));
     QCOMPARE(table->item(0, 3)->text(), QStringLiteral("70"));
+}
+
+// The E-LAB manual gives the acceleration no unit: the preview says so, as the setup page does
+// (issue 31 leftover: the preview's unit column was empty).
+void TestWritePreview::rows_valueWithoutUnit_saysNoUnit()
+{
+    ParameterValue value;
+    value.global = 1200;
+    const QList<WritePreview::Row> rows =
+        WritePreview::rows(schemaOf("elab"), {{QStringLiteral("acceleration"), value}}, {}, {});
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(rows.first().unit, QStringLiteral("(no unit)"));
+    QCOMPARE(rows.first().value, QStringLiteral("1200"));
 }
 
 QTEST_MAIN(TestWritePreview)
