@@ -25,16 +25,16 @@ ContourMoves::ContourMoves(const MachineFacts& facts)
         Stream s;
         s.controller = c.id;
         s.axisOfSlot.fill(-1);
-        for (Axis a : caps->axes)
-            s.scale.axisCount = std::max(s.scale.axisCount, int(a) + 1);
+        s.slotAxes = caps->axes;
+        s.scale.axisCount = int(caps->axes.size());
         if (s.scale.axisCount > motion::kMaxAxes)
             continue;
         for (int i = 0; i < s.scale.axisCount; ++i)
             s.scale.stepsPerUnit[size_t(i)] = 1; // a slot no machine axis uses never steps
         for (int i = 0; i < facts.description.axes.size(); ++i) {
             const machine::MachineAxis& axis = facts.description.axes.at(i);
-            const int slot = int(axis.axis);
-            if (axis.controller != c.id || slot >= s.scale.axisCount)
+            const int slot = int(s.slotAxes.indexOf(axis.axis));
+            if (axis.controller != c.id || slot < 0)
                 continue;
             s.axisOfSlot[size_t(slot)] = i;
             s.scale.stepsPerUnit[size_t(slot)] =

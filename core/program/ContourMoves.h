@@ -27,6 +27,9 @@ public:
         QString controller;
         motion::StepScale scale; // a slot's steps per unit, < 0 on an inverted axis
         std::array<int, motion::kMaxAxes> axisOfSlot; // machine axis index, -1: none
+        // The controller axis of each slot: the controller's axes in their order
+        // (Capabilities::axes), never the axis' value (issue 32).
+        QList<Axis> slotAxes;
         double tickRate = 0; // ticks/s; 0: none can be chosen (tickRefusal says why)
         QString tickRefusal;
     };

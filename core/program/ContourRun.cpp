@@ -33,7 +33,7 @@ void ContourRun::start(const AxisPositions& current, double feedFactor)
     const machine::MachineDescription& d = m_machine->description();
     motion::StepPosition steps{};
     for (int slot = 0; slot < m_stream.scale.axisCount; ++slot) {
-        const qint64 count = s->status().axes.value(Axis(slot)).position;
+        const qint64 count = s->status().axes.value(m_stream.slotAxes.at(slot)).position;
         steps[size_t(slot)] = count;
         const int a = m_stream.axisOfSlot[size_t(slot)];
         if (a < 0)
@@ -186,7 +186,7 @@ void ContourRun::onSettleRead(const CommandResult& result)
     ControllerSession* s = m_machine->session(m_stream.controller);
     bool moving = false;
     for (int slot = 0; slot < m_stream.scale.axisCount; ++slot)
-        moving = moving || s->status().axes.value(Axis(slot)).moving;
+        moving = moving || s->status().axes.value(m_stream.slotAxes.at(slot)).moving;
     if (moving && m_settling.elapsed() < kSettleMs) {
         m_settleRead = s->refreshStatus(); // the board still runs the ticks it holds
         return;

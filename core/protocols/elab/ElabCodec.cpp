@@ -158,6 +158,34 @@ template <typename T> QByteArray triple(char code, const Triple<T>& v, int digit
 
 } // namespace
 
+namespace {
+constexpr WireAxis kWireAxes[] = {
+    {Axis::X, 0, axe::XMove, axe::XJog, machine::LimSwX, machine::RefSwX},
+    {Axis::Y, 1, axe::YMove, axe::YJog, machine::LimSwY, machine::RefSwY},
+    {Axis::Z, 2, axe::ZMove, axe::ZJog, machine::LimSwZ, machine::RefSwZ},
+};
+} // namespace
+
+const QList<Axis>& boardAxes()
+{
+    static const QList<Axis> list = [] {
+        QList<Axis> out;
+        for (const WireAxis& w : kWireAxes)
+            out << w.axis;
+        return out;
+    }();
+    return list;
+}
+
+const WireAxis& wireAxis(Axis axis)
+{
+    for (const WireAxis& w : kWireAxes) {
+        if (w.axis == axis)
+            return w;
+    }
+    qFatal("E-LAB: axis %s is not one of the board's", qPrintable(axisName(axis)));
+}
+
 quint8 encodeStepByte(int dx, int dy, int dz)
 {
     // SetFeedStepXYZ: Bit7 0, Bit6 StepZ, Bit5 StepY, Bit4 StepX, Bit3 0, Bit2 DirZ,

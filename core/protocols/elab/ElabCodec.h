@@ -1,4 +1,5 @@
 #pragma once
+#include "model/Axis.h"
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QList>
@@ -98,6 +99,26 @@ QString describeAxeState(quint8 byte);
 enum class RampKind : char { StartSpeed = 'S', MaxSpeed = 'M', Acceleration = 'A' };
 
 template <typename T> using Triple = std::array<T, 3>; // X, Y, Z
+
+// The board's axes and where each stands on the wire (issue 32: a table, not the axis' value):
+// its place in the X;Y;Z triples of commands and replies, and its status bits by the manual's
+// names (RequestAxeState taXMove .. taZJog, RequestMachineState tmLimSwX .. tmRefSwZ).
+struct WireAxis
+{
+    Axis axis;
+    std::size_t index; // in a Triple
+    quint8 moveBit;
+    quint8 jogBit;
+    quint16 limitSwitchBit;
+    quint16 referenceSwitchBit;
+};
+const QList<Axis>& boardAxes(); // X, Y, Z
+// The board's axis (a programming error for another: it has no place on the wire).
+const WireAxis& wireAxis(Axis axis);
+inline std::size_t wireIndex(Axis axis)
+{
+    return wireAxis(axis).index;
+}
 
 // DC2 step byte: bit7 0, StepZ, StepY, StepX, bit3 0, DirZ, DirY, DirX (Dir set = negative).
 quint8 encodeStepByte(int dx, int dy, int dz); // each -1, 0, +1

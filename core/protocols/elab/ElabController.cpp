@@ -153,21 +153,26 @@ void ElabController::feedContour(RequestId id, std::shared_ptr<motion::ContourFe
         }
         // The contour counts in the board's steps from where the axes stand now; the soft
         // limits then hold for every tick (the check refuses a program beyond them first).
+        // Its slots are the board's axes in their order (Capabilities::axes, ContourMoves),
+        // which is the order of the wire's step byte (wireIndex: X 0, Y 1, Z 2).
         const motion::StepPosition from = contour->steps();
-        for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+        const QList<Axis> axes = capabilities().axes;
+        for (int slot = 0; slot < int(axes.size()); ++slot) {
+            const Axis a = axes.at(slot);
+            Q_ASSERT(wireIndex(a) == size_t(slot));
             const qint64 here = status().axes.value(a).position;
-            if (contour->ticks() == 0 && from[size_t(a)] != here) {
+            if (contour->ticks() == 0 && from[size_t(slot)] != here) {
                 finishError(id, ErrorKind::Refused,
                             tr("refused: the contour starts with %1 at %2 steps, but it stands "
                                "at %3")
                                 .arg(axisName(a))
-                                .arg(from[size_t(a)])
+                                .arg(from[size_t(slot)])
                                 .arg(here));
                 return;
             }
             if (softLimits().isActive(a, status())) {
                 const AxisSoftLimit l = softLimits().limit(a);
-                contour->setStepLimits(int(a), axisName(a), l.minimum, l.maximum);
+                contour->setStepLimits(slot, axisName(a), l.minimum, l.maximum);
             }
         }
         QPointer<ElabController> self(this);

@@ -14,7 +14,7 @@ void ElabCtlJog::apply(const AxisVelocities& stepsPerS)
     for (Axis a : ElabCtlStatusMapper::axes()) {
         const double v = qBound(double(std::numeric_limits<qint16>::min()), stepsPerS.value(a),
                                 double(std::numeric_limits<qint16>::max()));
-        m_rates[size_t(a)] = qint16(qRound(v));
+        m_rates[wireIndex(a)] = qint16(qRound(v));
     }
     if (m_queued || !m_hooks.connected())
         return; // the queued <DC4> picks the newest rates up when it is written

@@ -15,7 +15,7 @@ template <typename T> Triple<T> triple(const AxisVector& values)
 {
     Triple<T> t{};
     for (Axis a : ElabCtlStatusMapper::axes())
-        t[size_t(a)] = T(values.value(a));
+        t[wireIndex(a)] = T(values.value(a));
     return t;
 }
 
@@ -338,7 +338,7 @@ void ElabCtlMotionOps::pumpStream()
     m_stream.chunkInFlight = true;
     ex.onReply = [this, id, delta](const Reply&) {
         for (Axis a : ElabCtlStatusMapper::axes())
-            m_line.status().axes[a].position += (*delta)[size_t(a)];
+            m_line.status().axes[a].position += (*delta)[wireIndex(a)];
         if (!m_stream.isActive() || m_stream.requestId != id)
             return; // that stream has ended
         m_stream.chunkInFlight = false;

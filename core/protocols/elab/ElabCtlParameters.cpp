@@ -39,7 +39,7 @@ Triple<quint16> words(const ParameterValue& v)
 {
     Triple<quint16> t{};
     for (Axis a : ElabCtlStatusMapper::axes())
-        t[size_t(a)] = quint16(v.perAxis.value(a).toLongLong());
+        t[wireIndex(a)] = quint16(v.perAxis.value(a).toLongLong());
     return t;
 }
 
@@ -47,7 +47,7 @@ Triple<bool> activeHigh(const ParameterValue& v)
 {
     Triple<bool> t{};
     for (Axis a : ElabCtlStatusMapper::axes())
-        t[size_t(a)] = v.perAxis.value(a).toString() == QLatin1String("high");
+        t[wireIndex(a)] = v.perAxis.value(a).toString() == QLatin1String("high");
     return t;
 }
 

@@ -5,23 +5,21 @@
 namespace stepdeck::elab {
 
 namespace {
-// Bit positions per axis: taXMove=0, taXJog=1, taYMove=2, ... (RequestAxeState);
-// tmLimSwX=8.., tmRefSwX=11.. (RequestMachineState).
 quint8 moveBit(Axis axis)
 {
-    return quint8(1u << (2 * int(axis)));
+    return wireAxis(axis).moveBit;
 }
 quint8 jogBit(Axis axis)
 {
-    return quint8(1u << (2 * int(axis) + 1));
+    return wireAxis(axis).jogBit;
 }
 quint16 limitBit(Axis axis)
 {
-    return quint16(machine::LimSwX << int(axis));
+    return wireAxis(axis).limitSwitchBit;
 }
 quint16 referenceBit(Axis axis)
 {
-    return quint16(machine::RefSwX << int(axis));
+    return wireAxis(axis).referenceSwitchBit;
 }
 constexpr quint8 kMoveBits = axe::XMove | axe::YMove | axe::ZMove;
 constexpr quint8 kJogBits = axe::XJog | axe::YJog | axe::ZJog;
@@ -30,8 +28,7 @@ constexpr quint16 kLimitBits = machine::LimSwX | machine::LimSwY | machine::LimS
 
 const QList<Axis>& ElabCtlStatusMapper::axes()
 {
-    static const QList<Axis> list{Axis::X, Axis::Y, Axis::Z};
-    return list;
+    return boardAxes();
 }
 
 bool ElabCtlStatusMapper::axisMoving(quint8 axeState, Axis axis)

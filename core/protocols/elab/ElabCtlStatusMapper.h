@@ -11,7 +11,7 @@ class ElabCtlStatusMapper
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlStatusMapper)
 public:
-    static const QList<Axis>& axes(); // X, Y, Z
+    static const QList<Axis>& axes(); // X, Y, Z (boardAxes())
     static int index(Axis axis) { return int(axis); }
 
     // RequestMachineState (tm* bits). hostPanic: the host sent ForcePanicStop and nothing has

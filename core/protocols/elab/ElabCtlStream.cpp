@@ -97,7 +97,7 @@ QList<Axis> ElabCtlStream::axes() const
         return ElabCtlStatusMapper::axes();
     QList<Axis> out;
     for (Axis a : ElabCtlStatusMapper::axes()) {
-        bool used = m_line[size_t(a)] != 0;
+        bool used = m_line[wireIndex(a)] != 0;
         for (int i = 0; !used && i < m_steps.size(); ++i)
             used = m_steps[i].value(a) != 0;
         if (used)
@@ -112,7 +112,7 @@ Triple<int> ElabCtlStream::stepAt(qint64 index) const
     if (!m_steps.isEmpty()) {
         const AxisVector& v = m_steps.at(int(index));
         for (Axis a : ElabCtlStatusMapper::axes())
-            step[size_t(a)] = int(v.value(a));
+            step[wireIndex(a)] = int(v.value(a));
         return step;
     }
     // Axis a steps at i when floor((i+1)*|d|/N) passes an integer: exactly |d| steps in N.

@@ -24,7 +24,7 @@ LineSettings lineSettings()
 Capabilities capabilities()
 {
     Capabilities caps;
-    caps.axes = {Axis::X, Axis::Y, Axis::Z};
+    caps.axes = boardAxes(); // the codec's table (issue 32)
     caps.motionModes = {MotionMode::Jog,     MotionMode::RelativeMove, MotionMode::AbsoluteMove,
                         MotionMode::Feed,    MotionMode::FeedStream,   MotionMode::Reference,
                         MotionMode::Velocity};

@@ -33,8 +33,8 @@ public:
     static constexpr size_t kMaxTrace = 1000000;
     std::vector<Triple<qint64>> trace;
 
-    ElabSimAxis& axis(Axis a) { return axes[size_t(a)]; }
-    const ElabSimAxis& axis(Axis a) const { return axes[size_t(a)]; }
+    ElabSimAxis& axis(Axis a) { return axes[wireIndex(a)]; }
+    const ElabSimAxis& axis(Axis a) const { return axes[wireIndex(a)]; }
     // Power-on: setup incomplete, parameters cleared, relays off, buffer empty. The machine
     // (switch positions, wiring, buttons, temperature) stays.
     void powerOn();

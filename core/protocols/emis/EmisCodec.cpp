@@ -22,44 +22,72 @@ bool isText(char c)
 }
 } // namespace
 
+namespace {
+// Manual 9.x: the axes x, y, z, u; arrivals <DC1> .. <DC4> (9.6) and reference switches on
+// IN1 .. IN4 (5.2.2) in that order.
+constexpr WireAxis kWireAxes[] = {
+    {Axis::X, 'x', 1},
+    {Axis::Y, 'y', 2},
+    {Axis::Z, 'z', 3},
+    {Axis::U, 'u', 4},
+};
+const WireAxis* find(Axis axis)
+{
+    for (const WireAxis& w : kWireAxes) {
+        if (w.axis == axis)
+            return &w;
+    }
+    return nullptr;
+}
+} // namespace
+
+const QList<Axis>& emisAxes()
+{
+    static const QList<Axis> list = [] {
+        QList<Axis> out;
+        for (const WireAxis& w : kWireAxes)
+            out << w.axis;
+        return out;
+    }();
+    return list;
+}
+
+int axisNumber(Axis axis)
+{
+    const WireAxis* w = find(axis);
+    if (!w)
+        qFatal("EMIS: axis %s is not one of the controller's", qPrintable(axisName(axis)));
+    return w->number;
+}
+
+std::optional<Axis> axisOfNumber(int number)
+{
+    for (const WireAxis& w : kWireAxes) {
+        if (w.number == number)
+            return w.axis;
+    }
+    return std::nullopt;
+}
+
 char axisLetter(Axis axis)
 {
-    switch (axis) {
-    case Axis::X:
-        return 'x';
-    case Axis::Y:
-        return 'y';
-    case Axis::Z:
-        return 'z';
-    case Axis::U:
-        return 'u';
-    }
-    return '?';
+    const WireAxis* w = find(axis);
+    return w ? w->letter : '?';
 }
 
 std::optional<Axis> axisFromLetter(char letter)
 {
-    switch (letter) {
-    case 'x':
-    case 'X':
-        return Axis::X;
-    case 'y':
-    case 'Y':
-        return Axis::Y;
-    case 'z':
-    case 'Z':
-        return Axis::Z;
-    case 'u':
-    case 'U':
-        return Axis::U;
-    default:
-        return std::nullopt;
+    const char lower = (letter >= 'A' && letter <= 'Z') ? char(letter - 'A' + 'a') : letter;
+    for (const WireAxis& w : kWireAxes) {
+        if (w.letter == lower)
+            return w.axis;
     }
+    return std::nullopt;
 }
 
 char arrivalCode(Axis axis)
 {
-    return char(kDc1 + int(axis));
+    return char(kDc1 + axisNumber(axis) - 1);
 }
 
 // ---------------------------------------------------------------- encoder
@@ -128,7 +156,7 @@ QByteArray current(Axis axis, qint64 runPercent, qint64 idlePercent)
 QByteArray home(const QList<Axis>& axes, bool simultaneous)
 {
     QByteArray out("$H");
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         if (axes.contains(axis))
             out += axisLetter(axis);
     }
@@ -264,7 +292,7 @@ QList<Event> ReplyDecoder::feed(const QByteArray& bytes)
             flushGarbage(&out);
             Event e;
             e.kind = Event::Kind::Arrived;
-            e.axis = Axis(c - kDc1);
+            e.axis = *axisOfNumber(c - kDc1 + 1); // <DC1> .. <DC4>: 1 .. 4
             out.append(e);
             continue;
         }

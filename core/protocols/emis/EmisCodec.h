@@ -30,6 +30,17 @@ constexpr int kStoredAcks = 4;
 constexpr int kOutputCount = 7; // 5.3: outputs 1..7
 
 // 'x', 'y', 'z', 'u' as in every per-axis command of chapter 9.
+// The controller's own axes (issue 32: its list, not the application's): each with its letter
+// and its number 1..4 (<DC1>..<DC4> arrivals, IN1..IN4 reference inputs).
+struct WireAxis
+{
+    Axis axis;
+    char letter; // lower case, as in "$Hxyzu"
+    int number;
+};
+const QList<Axis>& emisAxes();           // X, Y, Z, U
+int axisNumber(Axis axis);               // 1..4 (a programming error for another axis)
+std::optional<Axis> axisOfNumber(int n); // 1..4, else none
 char axisLetter(Axis axis);
 std::optional<Axis> axisFromLetter(char letter); // either case
 // <DC1>..<DC4> for X..U (9.9: "<DC2>, <DC3>, <DC4> bei Y-, Z- und U-Motor").

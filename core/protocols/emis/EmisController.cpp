@@ -17,7 +17,7 @@ EmisController::EmisController(Transport* transport, const ControllerOptions& op
       m_parameters(*this, m_exchange, m_known, m_tracker),
       m_operations(*this, m_exchange, m_known, m_tracker, m_motion, m_parameters)
 {
-    for (Axis axis : allAxes())
+    for (Axis axis : emisAxes())
         mutableStatus().axes.insert(axis, AxisStatus{});
     for (int i = 0; i < kOutputCount; ++i)
         mutableStatus().outputs << std::nullopt;

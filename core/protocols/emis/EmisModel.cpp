@@ -23,7 +23,7 @@ LineSettings lineSettings()
 Capabilities capabilities()
 {
     Capabilities caps;
-    caps.axes = {Axis::X, Axis::Y, Axis::Z, Axis::U};
+    caps.axes = emisAxes(); // the codec's table (issue 32)
     // Jog is a chain of short vector moves (EmisController); no feed and no velocity move:
     // without a stop command nothing may run that does not end by itself.
     caps.motionModes = {MotionMode::Jog, MotionMode::RelativeMove, MotionMode::AbsoluteMove,
@@ -291,7 +291,7 @@ ModelPresentation presentation()
                                                     "Input %1: reference switch of axis %2 (or a "
                                                     "free input when no switch is wired).")
                             .arg(i + 1)
-                            .arg(axisName(Axis(i)))
+                            .arg(axisName(*axisOfNumber(i + 1)))
                       : QCoreApplication::translate("stepdeck::emis::Presentation",
                                                     "Input %1: free input.")
                             .arg(i + 1);

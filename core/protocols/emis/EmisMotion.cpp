@@ -25,7 +25,7 @@ QString EmisMotion::busyAxes(const QList<Axis>& axes, bool forReference) const
             return tr("axis %1 is still moving (its arrival <DC%2> has not come; the board would "
                       "answer <BEL>)")
                 .arg(axisName(axis))
-                .arg(int(axis) + 1);
+                .arg(axisNumber(axis));
         }
         if (m_hooks.jogging(axis))
             return tr("axis %1 is jogging").arg(axisName(axis));
@@ -207,7 +207,7 @@ void EmisMotion::startHome(RequestId id, const QList<Axis>& axes, bool simultane
                        [this, id, bytes, axes, simultaneous](const EmisLink::Result& r) {
                            const qint64 now = m_tracker.now();
                            int index = 0;
-                           for (Axis axis : allAxes()) { // $Hxyzu runs in X, Y, Z, U order (9.9)
+                           for (Axis axis : emisAxes()) { // $Hxyzu runs in X, Y, Z, U order (9.9)
                                if (axes.contains(axis)) {
                                    const qint64 due =
                                        now + qint64(m_tracker.referenceDeadlineMs()) *

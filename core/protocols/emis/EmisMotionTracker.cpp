@@ -10,7 +10,7 @@ EmisMotionTracker::EmisMotionTracker(EmisHost& host, EmisKnownValues& known, QOb
                                      Hooks hooks)
     : m_host(host), m_known(known), m_hooks(std::move(hooks))
 {
-    for (Axis axis : allAxes())
+    for (Axis axis : emisAxes())
         m_tracks.insert(axis, Track{});
     m_deadlineTimer.setParent(owner);
     m_deadlineTimer.setSingleShot(true);

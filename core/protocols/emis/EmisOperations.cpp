@@ -145,7 +145,7 @@ void EmisOperations::writeInputProgram(RequestId id, const QVariantMap& args)
                               "can make the controller misbehave (manual 5.2.2); force it only "
                               "if no switch is wired there")
                                .arg(*input)
-                               .arg(axisName(Axis(*input - 1))));
+                               .arg(axisName(*axisOfNumber(*input))));
     }
     if (!m_host.requireLink(id))
         return;
@@ -285,10 +285,10 @@ void EmisOperations::sendConsoleCommand(RequestId id, const QByteArray& frame, c
             } else if (c.kind == Command::Kind::Ramp) {
                 m_known.ramp = c.value;
             } else if (c.kind == Command::Kind::StartSpeed) {
-                for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
+                for (Axis a : c.axis ? QList<Axis>{*c.axis} : emisAxes())
                     m_known.startSpeed.insert(a, c.value);
             } else if (c.kind == Command::Kind::WorkSpeed) {
-                for (Axis a : c.axis ? QList<Axis>{*c.axis} : allAxes())
+                for (Axis a : c.axis ? QList<Axis>{*c.axis} : emisAxes())
                     m_known.speeds.setWritten(a, c.value);
             }
             m_host.publish();

@@ -24,7 +24,7 @@ QMap<Axis, qint64> perAxis(const ParameterValue& value)
         for (auto it = value.perAxis.cbegin(); it != value.perAxis.cend(); ++it)
             out.insert(it.key(), intOf(it.value()));
     } else {
-        for (Axis axis : allAxes())
+        for (Axis axis : emisAxes())
             out.insert(axis, intOf(value.global));
     }
     return out;
@@ -32,7 +32,7 @@ QMap<Axis, qint64> perAxis(const ParameterValue& value)
 
 bool allEqualOnFourAxes(const QMap<Axis, qint64>& values)
 {
-    if (values.size() != allAxes().size())
+    if (values.size() != emisAxes().size())
         return false;
     for (qint64 v : values) {
         if (v != values.first())
@@ -92,7 +92,7 @@ QMap<Axis, bool> switchTypes(const ParameterValue& value)
         for (auto it = value.perAxis.cbegin(); it != value.perAxis.cend(); ++it)
             out.insert(it.key(), it.value().toString().toUpper() == QLatin1String("NC"));
     } else {
-        for (Axis axis : allAxes())
+        for (Axis axis : emisAxes())
             out.insert(axis, value.global.toString().toUpper() == QLatin1String("NC"));
     }
     return out;

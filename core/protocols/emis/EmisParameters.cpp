@@ -76,7 +76,7 @@ void EmisParameters::write(RequestId id, const ParameterSet& values)
 {
     if (!m_host.requireLink(id))
         return;
-    if (const QString e = parameterSchema().validate(values, allAxes()); !e.isEmpty())
+    if (const QString e = parameterSchema().validate(values, emisAxes()); !e.isEmpty())
         return m_host.fail(id, ErrorKind::InvalidValue, e);
     if (busy()) {
         return m_host.fail(id, ErrorKind::Refused,
@@ -215,7 +215,7 @@ void EmisParameters::store(RequestId id, const QVariantMap& args)
     }
     if (set.isEmpty())
         return m_host.fail(id, ErrorKind::InvalidValue, tr("no parameters to store"));
-    if (const QString e = parameterSchema().validate(set, allAxes()); !e.isEmpty())
+    if (const QString e = parameterSchema().validate(set, emisAxes()); !e.isEmpty())
         return m_host.fail(id, ErrorKind::InvalidValue, e);
     if (busy()) {
         return m_host.fail(id, ErrorKind::Refused,

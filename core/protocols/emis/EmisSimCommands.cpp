@@ -21,7 +21,7 @@ QList<Axis> axesOf(const Command& c)
 {
     if (c.axis)
         return {*c.axis};
-    return allAxes();
+    return emisAxes();
 }
 } // namespace
 

@@ -9,7 +9,7 @@ namespace {
 ParameterValue perAxis(qint64 value)
 {
     ParameterValue v;
-    for (Axis a : allAxes())
+    for (Axis a : emisAxes())
         v.perAxis.insert(a, value);
     return v;
 }
@@ -41,7 +41,7 @@ SoakProfile soakProfile()
                {QStringLiteral("ramp"), ParameterValue{QVariant(qint64(50)), {}}}};
     m.prepare = [](Simulator* s) {
         if (auto* sim = qobject_cast<EmisSimulator*>(s)) {
-            for (Axis a : allAxes())
+            for (Axis a : emisAxes())
                 sim->setSwitchPosition(a, std::nullopt); // no reference switch within reach
         }
     };

@@ -10,8 +10,8 @@ constexpr qint64 kPowerOnDistance = 200; // steps between carriage and switch at
 EmisSimulator::EmisSimulator(const SimulatorOptions& options, QObject* parent)
     : Simulator(options, parent)
 {
-    for (Axis axis : allAxes()) {
-        m_switchAt[size_t(axis)] = 0;
+    for (Axis axis : emisAxes()) {
+        m_switchAt[slot(axis)] = 0;
         axisRef(axis).setPhysical(kPowerOnDistance);
     }
     m_timer.setTimerType(Qt::PreciseTimer);
@@ -28,7 +28,7 @@ EmisSimulator::~EmisSimulator() = default;
 
 qint64 EmisSimulator::position(Axis axis) const
 {
-    return axisRef(axis).physical() - m_origin[size_t(axis)];
+    return axisRef(axis).physical() - m_origin[slot(axis)];
 }
 
 bool EmisSimulator::isMoving(Axis axis) const
@@ -38,7 +38,7 @@ bool EmisSimulator::isMoving(Axis axis) const
 
 bool EmisSimulator::anyMoving() const
 {
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         if (isMoving(axis))
             return true;
     }
@@ -48,7 +48,7 @@ bool EmisSimulator::anyMoving() const
 QList<bool> EmisSimulator::inputLevels() const
 {
     QList<bool> levels;
-    for (Axis axis : allAxes())
+    for (Axis axis : emisAxes())
         levels << switchLevel(axis, axisRef(axis).physical());
     for (bool level : m_freeInputs)
         levels << level;
@@ -73,17 +73,17 @@ void EmisSimulator::setPhysicalPosition(Axis axis, qint64 steps)
 {
     const qint64 counter = position(axis);
     axisRef(axis).setPhysical(steps);
-    m_origin[size_t(axis)] = steps - counter;
+    m_origin[slot(axis)] = steps - counter;
 }
 
 void EmisSimulator::setSwitchPosition(Axis axis, std::optional<qint64> steps)
 {
-    m_switchAt[size_t(axis)] = steps;
+    m_switchAt[slot(axis)] = steps;
 }
 
 void EmisSimulator::setSwitchWiring(Axis axis, bool normallyClosed)
 {
-    m_wiredNc[size_t(axis)] = normallyClosed;
+    m_wiredNc[slot(axis)] = normallyClosed;
 }
 
 void EmisSimulator::setInput(int number, bool level)
@@ -108,10 +108,10 @@ void EmisSimulator::dropArrivals(int count)
 void EmisSimulator::emergencyStop()
 {
     m_referenceQueue.clear();
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         EmisSimAxis& a = axisRef(axis);
         a.setPhysical(a.physical()); // idle where it stands
-        m_referencing[size_t(axis)] = false;
+        m_referencing[slot(axis)] = false;
     }
 }
 
@@ -125,11 +125,11 @@ void EmisSimulator::externalReset(int bootMs)
 
 void EmisSimulator::powerCycle()
 {
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         axisRef(axis).setPhysical(axisRef(axis).physical()); // stands still
-        m_origin[size_t(axis)] = axisRef(axis).physical();
-        m_referenced[size_t(axis)] = false;
-        m_referencing[size_t(axis)] = false;
+        m_origin[slot(axis)] = axisRef(axis).physical();
+        m_referenced[slot(axis)] = false;
+        m_referencing[slot(axis)] = false;
     }
     m_referenceQueue.clear();
     m_outputs.fill(false);
@@ -144,7 +144,7 @@ void EmisSimulator::powerCycle()
 void EmisSimulator::loadWorkingFromStored()
 {
     Working w;
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         w.startSpeed[axis] = 200;
         w.workSpeed[axis] = 1000;
         w.offset[axis] = 10;
@@ -187,9 +187,9 @@ void EmisSimulator::loadWorkingFromStored()
 
 bool EmisSimulator::switchLevel(Axis axis, qint64 physical) const
 {
-    const auto at = m_switchAt[size_t(axis)];
+    const auto at = m_switchAt[slot(axis)];
     const bool actuated = at && physical <= *at;
-    return m_wiredNc[size_t(axis)] ? !actuated : actuated;
+    return m_wiredNc[slot(axis)] ? !actuated : actuated;
 }
 
 bool EmisSimulator::switchActive(Axis axis, qint64 physical) const
@@ -223,10 +223,10 @@ void EmisSimulator::arrived(Axis axis)
             break;
         }
     }
-    if (m_referencing[size_t(axis)]) {
-        m_referencing[size_t(axis)] = false;
-        m_referenced[size_t(axis)] = true;
-        m_origin[size_t(axis)] = axisRef(axis).physical(); // counter 0 after the offset
+    if (m_referencing[slot(axis)]) {
+        m_referencing[slot(axis)] = false;
+        m_referenced[slot(axis)] = true;
+        m_origin[slot(axis)] = axisRef(axis).physical(); // counter 0 after the offset
     }
     if (m_dropArrivals > 0) {
         --m_dropArrivals;
@@ -244,7 +244,7 @@ void EmisSimulator::startNextReference()
     const Axis axis = m_referenceQueue.takeFirst();
     EmisSimAxis::Profile p = profile(axis);
     p.workSpeed = double(m_working.referenceSpeed);
-    m_referencing[size_t(axis)] = true;
+    m_referencing[slot(axis)] = true;
     axisRef(axis).startReference(p, m_working.offset.value(axis));
     ensureTicking();
 }
@@ -255,9 +255,9 @@ void EmisSimulator::tick()
     const double dt = qMax<qint64>(1, nowUs - m_lastTickUs) / 1e6;
     m_lastTickUs = nowUs;
     bool sequentialDone = false;
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         EmisSimAxis& a = axisRef(axis);
-        const bool wasReferencing = m_referencing[size_t(axis)];
+        const bool wasReferencing = m_referencing[slot(axis)];
         if (a.advance(dt, [this, axis](qint64 p) { return switchActive(axis, p); })) {
             arrived(axis);
             sequentialDone = sequentialDone || wasReferencing;

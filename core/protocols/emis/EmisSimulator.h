@@ -63,7 +63,7 @@ public:
     bool isMoving(Axis axis) const;
     bool isMoving(Axis axis) override { return std::as_const(*this).isMoving(axis); }
     bool anyMoving() const;
-    bool isReferenced(Axis axis) const { return m_referenced[int(axis)]; }
+    bool isReferenced(Axis axis) const { return m_referenced[slot(axis)]; }
     QList<bool> inputLevels() const;
     bool output(int number) const; // 1..7
     const Working& working() const { return m_working; }
@@ -120,8 +120,10 @@ public:
     void externalReset(int bootMs);
 
 private:
-    EmisSimAxis& axisRef(Axis axis) { return m_axes[size_t(axis)]; }
-    const EmisSimAxis& axisRef(Axis axis) const { return m_axes[size_t(axis)]; }
+    // An axis' place in the per-axis arrays: its number 1..4 less one (the codec's table).
+    static std::size_t slot(Axis axis) { return std::size_t(axisNumber(axis) - 1); }
+    EmisSimAxis& axisRef(Axis axis) { return m_axes[slot(axis)]; }
+    const EmisSimAxis& axisRef(Axis axis) const { return m_axes[slot(axis)]; }
     void execute(const CommandDecoder::Frame& frame);
     QByteArray run(const Command& c); // the reply; empty: none
     QByteArray runProgramming(const Command& c, char terminator);

@@ -1,4 +1,5 @@
 #include "EmisWorkSpeeds.h"
+#include "EmisCodec.h"
 
 namespace stepdeck::emis {
 
@@ -32,7 +33,7 @@ std::optional<qint64> EmisWorkSpeeds::knownMoveSpeed(Axis axis) const
 QList<EmisWorkSpeeds::Write> EmisWorkSpeeds::writesForMove(const QList<Axis>& axes) const
 {
     QList<Write> out;
-    for (Axis axis : allAxes()) {
+    for (Axis axis : emisAxes()) {
         if (!axes.contains(axis))
             continue;
         const qint64 speed = moveSpeed(axis);
