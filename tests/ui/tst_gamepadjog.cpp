@@ -69,7 +69,7 @@ void TestGamepadJog::stick_withDeadman_jogsAndReleaseRampsToZero()
 {
     m_f->gamepad->moveAxis(kLeftX, 1.0);
     m_f->gamepad->press(kDeadman, true);
-    const double max = m_f->window->jogController()->maxSpeed(Axis::X);
+    const double max = m_f->window->jogController()->maxSpeed(ui::JogSlot::PadHorizontal);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
     QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     const qsizetype released = m_f->records.size();
@@ -108,7 +108,7 @@ void TestGamepadJog::deadZone_restNoise_movesNothing()
     QVERIFY(m_f->window->gamepadSource()->fractions().isEmpty());
     QVERIFY(!m_f->window->jogController()->isJogging());
     m_f->gamepad->moveAxis(kLeftX, 0.5);
-    QVERIFY(m_f->window->gamepadSource()->fractions().value(Axis::X) > 0);
+    QVERIFY(m_f->window->gamepadSource()->fractions().value(ui::JogSlot::PadHorizontal) > 0);
     m_f->gamepad->press(kDeadman, false);
 }
 
@@ -126,7 +126,7 @@ void TestGamepadJog::calibration_offsetRest_becomesZero()
     QCOMPARE(source->calibration(kLeftX).apply(0.3), 0.0);
     QVERIFY(source->fractions().isEmpty()); // at rest after calibration
     m_f->gamepad->moveAxis(kLeftX, 1.0);
-    QCOMPARE(source->fractions().value(Axis::X), 1.0);
+    QCOMPARE(source->fractions().value(ui::JogSlot::PadHorizontal), 1.0);
     m_f->gamepad->press(kDeadman, false);
 }
 

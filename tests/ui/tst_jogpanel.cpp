@@ -77,7 +77,7 @@ void TestJogPanel::jog_draggedKnob_rampsUpThenReleaseRampsToZero()
 {
     QVERIFY(connectAndSetUp());
     ui::JoystickPad* pad = m_f->window->jogPanel()->xyPad();
-    const double max = m_f->window->jogController()->maxSpeed(Axis::X);
+    const double max = m_f->window->jogController()->maxSpeed(ui::JogSlot::PadHorizontal);
     const qsizetype start = m_f->records.size();
 
     pointerPress(pad, pad->centre());
@@ -113,7 +113,7 @@ void TestJogPanel::jog_heldKnob_leaseRenewedSpeedHeld()
 {
     QVERIFY(connectAndSetUp());
     ui::JoystickPad* z = m_f->window->jogPanel()->zStick();
-    const double max = m_f->window->jogController()->maxSpeed(Axis::Z);
+    const double max = m_f->window->jogController()->maxSpeed(ui::JogSlot::ZStick);
     pointerPress(z, z->centre());
     pointerMove(z, z->pointFor(QPointF(0.0, -1.0)));
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::Z), -max, 5000);

@@ -19,10 +19,10 @@ GamepadJogSource::GamepadJogSource(GamepadDevice* device, QObject* parent)
     // SDL game-controller layout: left stick X/Y for X/Y, right stick Y for Z, right stick X
     // for U. SDL reports stick Y positive downwards, hence the inversion. Dead-man: left
     // shoulder button (SDL_CONTROLLER_BUTTON_LEFTSHOULDER = 9).
-    m_bindings.insert(Axis::X, {0, false});
-    m_bindings.insert(Axis::Y, {1, true});
-    m_bindings.insert(Axis::Z, {3, true});
-    m_bindings.insert(Axis::U, {2, false});
+    m_bindings.insert(JogSlot::PadHorizontal, {0, false});
+    m_bindings.insert(JogSlot::PadVertical, {1, true});
+    m_bindings.insert(JogSlot::ZStick, {3, true});
+    m_bindings.insert(JogSlot::OtherStick, {2, false});
     m_response.deadZone = 0.12; // physical sticks rarely rest at exactly zero
     m_clock.start();
     // Every change is a sample too.
@@ -62,7 +62,7 @@ bool GamepadJogSource::isProven() const
     return m_provenMs >= 0 && m_clock.elapsed() - m_provenMs <= kSampleWindowMs;
 }
 
-AxisVelocities GamepadJogSource::heldDeflection()
+SlotVelocities GamepadJogSource::heldDeflection()
 {
     if (m_last.isEmpty()) {
         m_latched = false; // back in neutral (or dead-man released): the latch is over
@@ -102,7 +102,7 @@ void GamepadJogSource::setResponse(const JogResponse& response)
     update();
 }
 
-void GamepadJogSource::setBinding(Axis axis, const StickBinding& binding)
+void GamepadJogSource::setBinding(JogSlot axis, const StickBinding& binding)
 {
     m_bindings.insert(axis, binding);
     update();
@@ -135,9 +135,9 @@ void GamepadJogSource::finishCalibration()
     update();
 }
 
-AxisVelocities GamepadJogSource::readSticks() const
+SlotVelocities GamepadJogSource::readSticks() const
 {
-    AxisVelocities fractions;
+    SlotVelocities fractions;
     // No dead-man, no motion: the button must be held for as long as the axes move.
     if (m_enabled && !m_calibrating && deadmanHeld()) {
         for (auto it = m_bindings.cbegin(); it != m_bindings.cend(); ++it) {
@@ -157,7 +157,7 @@ AxisVelocities GamepadJogSource::readSticks() const
 
 void GamepadJogSource::update()
 {
-    const AxisVelocities fractions = readSticks();
+    const SlotVelocities fractions = readSticks();
     if (fractions.isEmpty())
         m_latched = false;
     if (fractions != m_last) {
@@ -176,8 +176,8 @@ void GamepadJogSource::loadSettings()
         s.value(QStringLiteral("gamepad/deadZone"), m_response.deadZone).toDouble();
     m_response.exponent =
         s.value(QStringLiteral("gamepad/exponent"), m_response.exponent).toDouble();
-    for (Axis a : allAxes()) {
-        const QString key = QStringLiteral("gamepad/binding/%1/").arg(axisName(a));
+    for (JogSlot a : allJogSlots()) {
+        const QString key = QStringLiteral("gamepad/binding/%1/").arg(jogSlotKey(a));
         StickBinding b = m_bindings.value(a);
         b.index = s.value(key + QStringLiteral("index"), b.index).toInt();
         b.invert = s.value(key + QStringLiteral("invert"), b.invert).toBool();
@@ -201,7 +201,7 @@ void GamepadJogSource::saveSettings() const
     s.setValue(QStringLiteral("gamepad/deadZone"), m_response.deadZone);
     s.setValue(QStringLiteral("gamepad/exponent"), m_response.exponent);
     for (auto it = m_bindings.cbegin(); it != m_bindings.cend(); ++it) {
-        const QString key = QStringLiteral("gamepad/binding/%1/").arg(axisName(it.key()));
+        const QString key = QStringLiteral("gamepad/binding/%1/").arg(jogSlotKey(it.key()));
         s.setValue(key + QStringLiteral("index"), it.value().index);
         s.setValue(key + QStringLiteral("invert"), it.value().invert);
     }

@@ -40,7 +40,7 @@ public:
     explicit GamepadJogSource(GamepadDevice* device, QObject* parent = nullptr);
 
     QString sourceName() const override { return tr("Gamepad"); }
-    AxisVelocities heldDeflection() override;
+    SlotVelocities heldDeflection() override;
     void latch() override;
     bool isLatched() const { return m_latched; }
     GamepadDevice* device() const { return m_device; }
@@ -52,8 +52,8 @@ public:
     bool deadmanHeld() const;
     void setResponse(const JogResponse& response);
     JogResponse response() const { return m_response; }
-    void setBinding(Axis axis, const StickBinding& binding);
-    StickBinding binding(Axis axis) const { return m_bindings.value(axis); }
+    void setBinding(JogSlot axis, const StickBinding& binding);
+    StickBinding binding(JogSlot axis) const { return m_bindings.value(axis); }
     AxisCalibration calibration(int rawAxis) const { return m_calibration.value(rawAxis); }
 
     void startCalibration(); // takes the current stick positions as rest, learns extents
@@ -61,7 +61,7 @@ public:
     bool isCalibrating() const { return m_calibrating; }
 
     // The stick deflection now (dead-man held), whether or not it is proven or latched.
-    AxisVelocities fractions() const { return m_last; }
+    SlotVelocities fractions() const { return m_last; }
     void loadSettings();
     void saveSettings() const;
 
@@ -72,16 +72,16 @@ private:
     void update();
     void onSample();
     bool isProven() const;
-    AxisVelocities readSticks() const;
+    SlotVelocities readSticks() const;
 
     QPointer<GamepadDevice> m_device;
     bool m_enabled = true;
     int m_deadman = 9; // SDL_CONTROLLER_BUTTON_LEFTSHOULDER
     JogResponse m_response;
-    QMap<Axis, StickBinding> m_bindings;
+    QMap<JogSlot, StickBinding> m_bindings;
     QMap<int, AxisCalibration> m_calibration;
     bool m_calibrating = false;
-    AxisVelocities m_last;
+    SlotVelocities m_last;
     bool m_latched = false;
     QElapsedTimer m_clock;
     qint64 m_provenMs = -1; // last sample with the dead-man held

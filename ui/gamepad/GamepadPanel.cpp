@@ -48,7 +48,7 @@ GamepadPanel::GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidg
     auto* mapping = new QGroupBox(tr("Stick mapping"), this);
     auto* grid = new QGridLayout(mapping);
     int row = 0;
-    for (Axis axis : {Axis::X, Axis::Y, Axis::Z, Axis::U}) {
+    for (JogSlot axis : allJogSlots()) {
         auto* combo = new QComboBox(mapping);
         combo->addItem(tr("not used"), -1);
         for (int i = 0; i < kMaxStickAxes; ++i)
@@ -63,7 +63,7 @@ GamepadPanel::GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidg
         };
         connect(combo, &QComboBox::currentIndexChanged, this, apply);
         connect(invert, &QCheckBox::toggled, this, apply);
-        m_rowName.insert(axis, new QLabel(axisName(axis), mapping));
+        m_rowName.insert(axis, new QLabel(jogSlotKey(axis), mapping));
         grid->addWidget(m_rowName.value(axis), row, 0);
         grid->addWidget(combo, row, 1);
         grid->addWidget(invert, row, 2);
@@ -107,7 +107,7 @@ GamepadPanel::GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidg
     refresh();
 }
 
-QString GamepadPanel::rowName(Axis slot) const
+QString GamepadPanel::rowName(JogSlot slot) const
 {
     const QLabel* label = m_rowName.value(slot);
     return label ? label->text() : QString();
@@ -118,7 +118,7 @@ void GamepadPanel::nameRows()
     // With a machine open a row moves the machine axis on its jog slot (JogAxisMap).
     for (auto it = m_rowName.cbegin(); it != m_rowName.cend(); ++it) {
         const QString name = m_slots ? m_slots->label(it.key()) : QString();
-        it.value()->setText(name.isEmpty() ? axisName(it.key()) : name);
+        it.value()->setText(name.isEmpty() ? jogSlotKey(it.key()) : name);
     }
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "model/Axis.h"
+#include "jog/JogSlot.h"
 #include <QWidget>
 
 class QCheckBox;
@@ -26,7 +26,7 @@ public:
     // jogSlots: what each stick mapping row moves (with a machine open, its axis names); may
     // be null (rows named X, Y, Z, U).
     GamepadPanel(GamepadJogSource* source, JogAxisMap* jogSlots, QWidget* parent = nullptr);
-    QString rowName(Axis slot) const; // what the stick mapping row of a slot moves
+    QString rowName(JogSlot slot) const; // what the stick mapping row of a slot moves
 
     QString deviceText() const;
 
@@ -44,9 +44,9 @@ private:
     QSpinBox* m_deadZone;
     QPushButton* m_calibrate;
     ElidedLabel* m_hint;
-    QMap<Axis, QLabel*> m_rowName;
-    QMap<Axis, QComboBox*> m_binding;
-    QMap<Axis, QCheckBox*> m_invert;
+    QMap<JogSlot, QLabel*> m_rowName;
+    QMap<JogSlot, QComboBox*> m_binding;
+    QMap<JogSlot, QCheckBox*> m_invert;
     QList<QProgressBar*> m_bars;
     QFormLayout* m_rawForm;
 };

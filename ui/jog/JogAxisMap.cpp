@@ -57,14 +57,14 @@ void JogAxisMap::rebuild()
         const machine::MachineDescription& d = m_context->machine()->description();
         const QStringList pad = padAxes(d);
         if (!pad.isEmpty())
-            m_slots.insert(Axis::X, pad.first());
+            m_slots.insert(JogSlot::PadHorizontal, pad.first());
         if (pad.size() > 1)
-            m_slots.insert(Axis::Y, pad.at(1));
+            m_slots.insert(JogSlot::PadVertical, pad.at(1));
         if (d.axis(QStringLiteral("Z")))
-            m_slots.insert(Axis::Z, QStringLiteral("Z"));
+            m_slots.insert(JogSlot::ZStick, QStringLiteral("Z"));
         const QStringList others = otherStickChoices();
         if (!others.isEmpty())
-            m_slots.insert(Axis::U, others.first());
+            m_slots.insert(JogSlot::OtherStick, others.first());
         const QSettings settings;
         for (const machine::MachineAxis& a : d.axes) {
             const double fallback =
@@ -76,19 +76,19 @@ void JogAxisMap::rebuild()
     Q_EMIT changed();
 }
 
-QList<Axis> JogAxisMap::jogSlots() const
+QList<JogSlot> JogAxisMap::jogSlots() const
 {
     return m_slots.keys();
 }
 
-const machine::MachineAxis* JogAxisMap::machineAxis(Axis slot) const
+const machine::MachineAxis* JogAxisMap::machineAxis(JogSlot slot) const
 {
     if (!isMachine() || !m_slots.contains(slot))
         return nullptr;
     return m_context->machine()->description().axis(m_slots.value(slot));
 }
 
-QString JogAxisMap::label(Axis slot) const
+QString JogAxisMap::label(JogSlot slot) const
 {
     return m_slots.value(slot);
 }
@@ -99,8 +99,9 @@ QStringList JogAxisMap::otherStickChoices() const
     if (!isMachine())
         return out;
     for (const machine::MachineAxis& a : m_context->machine()->description().axes) {
-        const bool taken = (m_slots.value(Axis::X) == a.name || m_slots.value(Axis::Y) == a.name ||
-                            m_slots.value(Axis::Z) == a.name);
+        const bool taken = (m_slots.value(JogSlot::PadHorizontal) == a.name ||
+                            m_slots.value(JogSlot::PadVertical) == a.name ||
+                            m_slots.value(JogSlot::ZStick) == a.name);
         if (!taken)
             out << a.name;
     }
@@ -109,10 +110,10 @@ QStringList JogAxisMap::otherStickChoices() const
 
 void JogAxisMap::setOtherStickAxis(const QString& name)
 {
-    if (!otherStickChoices().contains(name) || m_slots.value(Axis::U) == name)
+    if (!otherStickChoices().contains(name) || m_slots.value(JogSlot::OtherStick) == name)
         return;
     // Whatever the stick held moved the old axis: the caller releases it first (changed()).
-    m_slots.insert(Axis::U, name);
+    m_slots.insert(JogSlot::OtherStick, name);
     Q_EMIT changed();
 }
 
@@ -124,19 +125,19 @@ double JogAxisMap::ceilingOf(const machine::MachineAxis& axis) const
     return s->capabilities().maxJogSpeed / axis.stepsPerUnit;
 }
 
-double JogAxisMap::ceiling(Axis slot) const
+double JogAxisMap::ceiling(JogSlot slot) const
 {
     const machine::MachineAxis* a = machineAxis(slot);
     return a ? ceilingOf(*a) : 0.0;
 }
 
-double JogAxisMap::maxSpeed(Axis slot) const
+double JogAxisMap::maxSpeed(JogSlot slot) const
 {
     const machine::MachineAxis* a = machineAxis(slot);
     return a ? m_maxSpeed.value(a->name) : 0.0;
 }
 
-void JogAxisMap::setMaxSpeed(Axis slot, double unitsPerSecond)
+void JogAxisMap::setMaxSpeed(JogSlot slot, double unitsPerSecond)
 {
     const machine::MachineAxis* a = machineAxis(slot);
     if (!a)
@@ -152,7 +153,7 @@ QString JogAxisMap::settingsKey(const QString& axisName) const
         .arg(m_context->machine()->description().name, axisName);
 }
 
-QMap<QString, double> JogAxisMap::machineRates(const AxisVelocities& slotRates) const
+QMap<QString, double> JogAxisMap::machineRates(const SlotVelocities& slotRates) const
 {
     QMap<QString, double> out;
     for (auto it = slotRates.cbegin(); it != slotRates.cend(); ++it) {
@@ -162,7 +163,7 @@ QMap<QString, double> JogAxisMap::machineRates(const AxisVelocities& slotRates) 
     return out;
 }
 
-AxisStatus JogAxisMap::slotStatus(Axis slot, double* velocity) const
+AxisStatus JogAxisMap::slotStatus(JogSlot slot, double* velocity) const
 {
     AxisStatus status;
     if (const machine::MachineAxis* a = machineAxis(slot)) {

@@ -1,4 +1,5 @@
 #pragma once
+#include "jog/JogSlot.h"
 #include "model/Axis.h"
 #include "model/MachineStatus.h"
 #include <QMap>
@@ -30,25 +31,25 @@ public:
     // Some axis it jogs is on a controller without a jog command (short targets instead).
     bool jogsByTargets() const;
     // The slots that move something (none without a machine).
-    QList<Axis> jogSlots() const;
-    const machine::MachineAxis* machineAxis(Axis slot) const; // null without a machine
-    QString label(Axis slot) const; // what the slot moves: "A", or the controller's "U"
+    QList<JogSlot> jogSlots() const;
+    const machine::MachineAxis* machineAxis(JogSlot slot) const; // null without a machine
+    QString label(JogSlot slot) const; // what the slot moves: "A", or the controller's "U"
 
     // The machine axes the other stick can take (not on the pad or the Z stick).
     QStringList otherStickChoices() const;
-    QString otherStickAxis() const { return m_slots.value(Axis::U); }
+    QString otherStickAxis() const { return m_slots.value(JogSlot::OtherStick); }
     void setOtherStickAxis(const QString& name);
 
     // Machine: the operator's max jog speed of the slot's axis in unit/s (persisted per
     // machine axis name), within ceiling(): the file's maxJogSpeed, or else the controller's
     // jog maximum in the axis' unit.
-    double maxSpeed(Axis slot) const;
-    void setMaxSpeed(Axis slot, double unitsPerSecond);
-    double ceiling(Axis slot) const;
+    double maxSpeed(JogSlot slot) const;
+    void setMaxSpeed(JogSlot slot, double unitsPerSecond);
+    double ceiling(JogSlot slot) const;
     // Slot rates (unit/s) as the machine axes' rates for Machine::jog.
-    QMap<QString, double> machineRates(const AxisVelocities& slotRates) const;
+    QMap<QString, double> machineRates(const SlotVelocities& slotRates) const;
     // The status of what the slot moves, its commanded velocity in the slot's rate unit.
-    AxisStatus slotStatus(Axis slot, double* velocity) const;
+    AxisStatus slotStatus(JogSlot slot, double* velocity) const;
 
 public Q_SLOTS:
     void rebuild(); // the machine was opened or closed
@@ -61,7 +62,7 @@ private:
     QString settingsKey(const QString& axisName) const;
 
     MachineContext* m_context;
-    QMap<Axis, QString> m_slots; // machine only: slot -> machine axis name
+    QMap<JogSlot, QString> m_slots; // machine only: slot -> machine axis name
     QMap<QString, double> m_maxSpeed;
 };
 

@@ -76,14 +76,14 @@ void JogController::releaseAll()
     }
 }
 
-void JogController::setMaxSpeed(Axis slot, double unitsPerSecond)
+void JogController::setMaxSpeed(JogSlot slot, double unitsPerSecond)
 {
     m_map->setMaxSpeed(slot, unitsPerSecond);
     Q_EMIT speedSettingsChanged();
     update();
 }
 
-double JogController::maxSpeed(Axis slot) const
+double JogController::maxSpeed(JogSlot slot) const
 {
     return m_map->maxSpeed(slot);
 }
@@ -138,26 +138,26 @@ void JogController::checkRefusalCause()
     Q_EMIT refusalEnded();
 }
 
-AxisVelocities JogController::provenTargets()
+SlotVelocities JogController::provenTargets()
 {
     // Focus loss stops jogging: no StepDeck window active, no source counts as held.
     if (QGuiApplication::applicationState() != Qt::ApplicationActive)
         return {};
-    QList<AxisVelocities> inputs;
+    QList<SlotVelocities> inputs;
     for (JogInputSource* source : sources())
         inputs << source->heldDeflection();
-    AxisVelocities targets;
-    for (Axis axis : m_map->jogSlots()) {
+    SlotVelocities targets;
+    for (JogSlot slot : m_map->jogSlots()) {
         double fraction = 0.0;
-        for (const AxisVelocities& input : std::as_const(inputs)) {
-            const double f = qBound(-1.0, input.value(axis, 0.0), 1.0);
+        for (const SlotVelocities& input : std::as_const(inputs)) {
+            const double f = qBound(-1.0, input.value(slot, 0.0), 1.0);
             if (qAbs(f) > qAbs(fraction))
                 fraction = f;
         }
-        const double v = fraction * maxSpeed(axis) * m_override;
+        const double v = fraction * maxSpeed(slot) * m_override;
         // Unit/s; Machine::jog makes them the nearest step rate.
         if (v != 0.0)
-            targets.insert(axis, v);
+            targets.insert(slot, v);
     }
     return targets;
 }
@@ -197,7 +197,7 @@ void JogController::update(bool renewal)
 
 void JogController::updateOnce(bool renewal)
 {
-    const AxisVelocities targets = provenTargets();
+    const SlotVelocities targets = provenTargets();
     if (targets.isEmpty()) {
         stopSending();
         return;
@@ -214,10 +214,10 @@ void JogController::updateOnce(bool renewal)
     }
     m_lastRefusal.clear();
     m_refusalCause = RefusalCause::None;
-    // Axes no longer deflected get an explicit zero so they ramp down.
-    AxisVelocities full;
-    for (Axis axis : m_map->jogSlots())
-        full.insert(axis, targets.value(axis, 0.0));
+    // Slots no longer deflected get an explicit zero so they ramp down.
+    SlotVelocities full;
+    for (JogSlot slot : m_map->jogSlots())
+        full.insert(slot, targets.value(slot, 0.0));
     const bool changed = full != m_targets;
     m_targets = full;
     m_active = true;

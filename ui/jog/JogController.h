@@ -1,5 +1,5 @@
 #pragma once
-#include "model/Axis.h"
+#include "jog/JogSlot.h"
 #include <QList>
 #include <QObject>
 #include <QPointer>
@@ -11,7 +11,7 @@ class JogAxisMap;
 class JogInputSource;
 class MachineContext;
 
-// Combines every jog input into per-axis velocities and sends them to the controller
+// Combines every jog input into per-slot velocities and sends them to the controller
 // session. The core's jog lease (ControllerOptions::jogLeaseMs) is renewed only with proof:
 // every kRenewMs the controller asks each source what it can prove is still held
 // (JogInputSource::heldDeflection()) and sends only that; a source without fresh proof
@@ -30,18 +30,18 @@ public:
 
     explicit JogController(MachineContext* context, QObject* parent = nullptr);
 
-    // Per axis the largest magnitude over all sources wins.
+    // Per slot the largest magnitude over all sources wins.
     void addSource(JogInputSource* source);
     QList<JogInputSource*> sources() const;
 
     // Per jog slot, in the slot's machine axis' unit/s (JogAxisMap::maxSpeed).
-    void setMaxSpeed(Axis slot, double unitsPerSecond);
-    double maxSpeed(Axis slot) const;
+    void setMaxSpeed(JogSlot slot, double unitsPerSecond);
+    double maxSpeed(JogSlot slot) const;
     JogAxisMap* axisMap() const { return m_map; }
     void setOverride(double fraction); // 0..1, scales every jog speed
     double override() const { return m_override; }
 
-    AxisVelocities targets() const { return m_targets; }
+    SlotVelocities targets() const { return m_targets; }
     bool isJogging() const;
 
 public Q_SLOTS:
@@ -54,7 +54,7 @@ Q_SIGNALS:
     // The cause of the last refusal has ended (emergency stop released, link back): whatever
     // shows it is to be cleared.
     void refusalEnded();
-    void targetsChanged(const stepdeck::AxisVelocities& targets);
+    void targetsChanged(const stepdeck::ui::SlotVelocities& targets);
     void speedSettingsChanged(); // a max speed or the override changed
 
 private:
@@ -62,7 +62,7 @@ private:
     // (this renews the core lease, and only with what was just proven).
     void update(bool renewal = false);
     void updateOnce(bool renewal);
-    AxisVelocities provenTargets();
+    SlotVelocities provenTargets();
     void stopSending();
     bool sendToMachine(); // false: refused, every input released
     void endJog();
@@ -76,7 +76,7 @@ private:
     JogAxisMap* m_map;
     QList<QPointer<JogInputSource>> m_sources;
     double m_override = 1.0;
-    AxisVelocities m_targets;
+    SlotVelocities m_targets;
     bool m_active = false;
     bool m_releasing = false;
     bool m_updating = false;

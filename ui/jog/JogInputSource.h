@@ -1,11 +1,11 @@
 #pragma once
-#include "model/Axis.h"
+#include "jog/JogSlot.h"
 #include <QObject>
 
 namespace stepdeck::ui {
 
 // Anything that can request jog motion: the on-screen pad and sticks, the keyboard, a
-// physical gamepad. A source reports speed fractions per axis (-1..1, already shaped by its
+// physical gamepad. A source reports speed fractions per jog slot (-1..1, already shaped by its
 // dead zone and response curve); an empty map or all zeros means "released".
 //
 // Proof of holding (issue 7, rule 3): the JogController renews the core's jog lease only for
@@ -29,7 +29,7 @@ public:
     using QObject::QObject;
     virtual QString sourceName() const = 0;
     // The deflection this source proves right now (zeros for anything unproven or latched).
-    virtual AxisVelocities heldDeflection() = 0;
+    virtual SlotVelocities heldDeflection() = 0;
     // STOP, PANIC, focus loss: no motion from what is held now until it is released.
     virtual void latch() = 0;
 

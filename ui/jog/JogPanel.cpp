@@ -52,9 +52,9 @@ JogPanel::JogPanel(MachineContext* context, JogController* jog, KeyboardJog* key
     m_xy->setToolTip(tr("Drag the knob to jog X and Y; speed follows the deflection. Release "
                         "to stop (ramped)."));
     m_z->setToolTip(tr("Drag to jog Z; release to stop (ramped)."));
-    m_padSources = {new PadJogSource(m_xy, Axis::X, Axis::Y, this),
-                    new PadJogSource(m_z, std::nullopt, Axis::Z, this),
-                    new PadJogSource(m_u, std::nullopt, Axis::U, this)};
+    m_padSources = {new PadJogSource(m_xy, JogSlot::PadHorizontal, JogSlot::PadVertical, this),
+                    new PadJogSource(m_z, std::nullopt, JogSlot::ZStick, this),
+                    new PadJogSource(m_u, std::nullopt, JogSlot::OtherStick, this)};
     for (PadJogSource* source : std::as_const(m_padSources)) {
         source->setResponse(m_settings->response());
         m_jog->addSource(source);
@@ -332,11 +332,11 @@ QWidget* JogPanel::buildKeyboardColumn(QWidget* parent)
     return column;
 }
 
-QMap<Axis, QString> JogPanel::slotLabels() const
+QMap<JogSlot, QString> JogPanel::slotLabels() const
 {
-    QMap<Axis, QString> labels;
+    QMap<JogSlot, QString> labels;
     const JogAxisMap* map = m_jog->axisMap();
-    for (Axis slot : map->jogSlots())
+    for (JogSlot slot : map->jogSlots())
         labels.insert(slot, map->label(slot));
     return labels;
 }
@@ -347,23 +347,24 @@ void JogPanel::rebuild()
     m_jogModeNote->setVisible(m_jog->axisMap()->jogsByTargets());
     // The slots' axes: the machine's (JogAxisMap). Without a model chosen yet, the pad alone
     // (it moves nothing and says so when used).
-    const QMap<Axis, QString> labels = slotLabels();
+    const QMap<JogSlot, QString> labels = slotLabels();
     const bool none = !m_context->hasMachine();
-    m_xy->setVisible(labels.contains(Axis::X) || none);
-    m_xy->setAxisLabels(
-        labels.value(Axis::X, QStringLiteral("X")),
-        labels.contains(Axis::Y) || none ? labels.value(Axis::Y, QStringLiteral("Y")) : QString());
-    m_z->setVisible(labels.contains(Axis::Z));
-    m_u->setVisible(labels.contains(Axis::U));
-    m_u->setAxisLabels(QString(), labels.value(Axis::U, QStringLiteral("U")));
+    m_xy->setVisible(labels.contains(JogSlot::PadHorizontal) || none);
+    m_xy->setAxisLabels(labels.value(JogSlot::PadHorizontal, QStringLiteral("X")),
+                        labels.contains(JogSlot::PadVertical) || none
+                            ? labels.value(JogSlot::PadVertical, QStringLiteral("Y"))
+                            : QString());
+    m_z->setVisible(labels.contains(JogSlot::ZStick));
+    m_u->setVisible(labels.contains(JogSlot::OtherStick));
+    m_u->setAxisLabels(QString(), labels.value(JogSlot::OtherStick, QStringLiteral("U")));
     m_u->setToolTip(tr("Drag to jog %1; release to stop (ramped).")
-                        .arg(labels.value(Axis::U, QStringLiteral("U"))));
+                        .arg(labels.value(JogSlot::OtherStick, QStringLiteral("U"))));
     const QStringList choices = m_jog->axisMap()->otherStickChoices();
     {
         const QSignalBlocker blocker(m_otherAxis);
         m_otherAxis->clear();
         m_otherAxis->addItems(choices);
-        m_otherAxis->setCurrentText(labels.value(Axis::U));
+        m_otherAxis->setCurrentText(labels.value(JogSlot::OtherStick));
     }
     m_otherAxis->setVisible(!choices.isEmpty());
     showKeyboardState();
@@ -380,7 +381,7 @@ void JogPanel::onStatus()
 {
     // Each slot's axis, in its machine axis' unit/s.
     const JogAxisMap* map = m_jog->axisMap();
-    auto slot = [&](Axis axis, double* fraction) {
+    auto slot = [&](JogSlot axis, double* fraction) {
         double v = 0.0;
         const AxisStatus status = map->slotStatus(axis, &v);
         const double max = m_jog->maxSpeed(axis);
@@ -388,10 +389,10 @@ void JogPanel::onStatus()
         return status.limitSwitch;
     };
     double x = 0, y = 0, z = 0, u = 0;
-    m_xy->setLimitActive(0, slot(Axis::X, &x));
-    m_xy->setLimitActive(1, slot(Axis::Y, &y));
-    m_z->setLimitActive(1, slot(Axis::Z, &z));
-    m_u->setLimitActive(1, slot(Axis::U, &u));
+    m_xy->setLimitActive(0, slot(JogSlot::PadHorizontal, &x));
+    m_xy->setLimitActive(1, slot(JogSlot::PadVertical, &y));
+    m_z->setLimitActive(1, slot(JogSlot::ZStick, &z));
+    m_u->setLimitActive(1, slot(JogSlot::OtherStick, &u));
     m_xy->setVelocityHint(QPointF(x, y));
     m_z->setVelocityHint(QPointF(0, z));
     m_u->setVelocityHint(QPointF(0, u));

@@ -1,5 +1,6 @@
 #pragma once
 #include "common/ElidedLabel.h"
+#include "jog/JogSlot.h"
 #include "model/MachineStatus.h"
 #include <QWidget>
 
@@ -71,8 +72,8 @@ private:
     void onStatus();
     void showRefusal(const QString& reason);
     void showKeyboardState();
-    QStringList keyboardStateTexts() const; // every text m_keyboardState can show
-    QMap<Axis, QString> slotLabels() const; // jog slot -> the axis it moves (JogAxisMap)
+    QStringList keyboardStateTexts() const;    // every text m_keyboardState can show
+    QMap<JogSlot, QString> slotLabels() const; // jog slot -> the axis it moves (JogAxisMap)
 
     MachineContext* m_context;
     JogController* m_jog;

@@ -81,7 +81,7 @@ void JogSettingsWidget::addMachineRows()
     // (or the controller's jog maximum in that unit).
     const JogAxisMap* map = m_jog->axisMap();
     int row = 0;
-    for (Axis slot : map->jogSlots()) {
+    for (JogSlot slot : map->jogSlots()) {
         const machine::MachineAxis* axis = map->machineAxis(slot);
         if (!axis)
             continue;

@@ -1,6 +1,6 @@
 #pragma once
 #include "jog/JogResponse.h"
-#include "model/Axis.h"
+#include "jog/JogSlot.h"
 #include <QGroupBox>
 
 class QComboBox;

@@ -36,7 +36,7 @@ JogStopDistanceLabel::JogStopDistanceLabel(MachineContext* context, JogControlle
     refresh();
 }
 
-std::optional<double> JogStopDistanceLabel::stopDistance(Axis slot, double speed) const
+std::optional<double> JogStopDistanceLabel::stopDistance(JogSlot slot, double speed) const
 {
     const JogAxisMap* map = m_jog->axisMap();
     const machine::MachineAxis* axis = map->machineAxis(slot);
@@ -50,7 +50,7 @@ std::optional<double> JogStopDistanceLabel::stopDistance(Axis slot, double speed
     return JogRamp::stopDistance(stepsPerS, rampOf(s, caps), tickOf(s)) / axis->stepsPerUnit;
 }
 
-QString JogStopDistanceLabel::slotText(Axis slot) const
+QString JogStopDistanceLabel::slotText(JogSlot slot) const
 {
     const std::optional<double> d = stopDistance(slot, m_jog->maxSpeed(slot) * m_jog->override());
     if (!d)
@@ -72,7 +72,7 @@ QString JogStopDistanceLabel::slotText(Axis slot) const
 void JogStopDistanceLabel::refresh()
 {
     QStringList parts;
-    for (Axis slot : m_jog->axisMap()->jogSlots()) {
+    for (JogSlot slot : m_jog->axisMap()->jogSlots()) {
         const QString part = slotText(slot);
         if (!part.isEmpty())
             parts << part;

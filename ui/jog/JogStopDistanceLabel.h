@@ -1,6 +1,6 @@
 #pragma once
 #include "common/ElidedLabel.h"
-#include "model/Axis.h"
+#include "jog/JogSlot.h"
 #include <optional>
 
 namespace stepdeck::ui {
@@ -23,13 +23,13 @@ public:
 
     // The slot's stopping distance in its unit (steps without a machine) at `speed` (the
     // slot's rate unit); none where the host ramp does not brake it.
-    std::optional<double> stopDistance(Axis slot, double speed) const;
+    std::optional<double> stopDistance(JogSlot slot, double speed) const;
 
 public Q_SLOTS:
     void refresh();
 
 private:
-    QString slotText(Axis slot) const;
+    QString slotText(JogSlot slot) const;
 
     MachineContext* m_context;
     JogController* m_jog;

@@ -11,21 +11,22 @@
 namespace stepdeck::ui {
 
 namespace {
-struct KeyAxis
+struct KeySlot
 {
     int key;
-    Axis axis;
+    JogSlot slot;
     double sign;
 };
-constexpr KeyAxis kKeys[] = {
-    {Qt::Key_Right, Axis::X, 1}, {Qt::Key_Left, Axis::X, -1},  {Qt::Key_Up, Axis::Y, 1},
-    {Qt::Key_Down, Axis::Y, -1}, {Qt::Key_PageUp, Axis::Z, 1}, {Qt::Key_PageDown, Axis::Z, -1},
-    {Qt::Key_Home, Axis::U, 1},  {Qt::Key_End, Axis::U, -1},
+constexpr KeySlot kKeys[] = {
+    {Qt::Key_Right, JogSlot::PadHorizontal, 1}, {Qt::Key_Left, JogSlot::PadHorizontal, -1},
+    {Qt::Key_Up, JogSlot::PadVertical, 1},      {Qt::Key_Down, JogSlot::PadVertical, -1},
+    {Qt::Key_PageUp, JogSlot::ZStick, 1},       {Qt::Key_PageDown, JogSlot::ZStick, -1},
+    {Qt::Key_Home, JogSlot::OtherStick, 1},     {Qt::Key_End, JogSlot::OtherStick, -1},
 };
 
-const KeyAxis* lookup(int key)
+const KeySlot* lookup(int key)
 {
-    for (const KeyAxis& k : kKeys) {
+    for (const KeySlot& k : kKeys) {
         if (k.key == key)
             return &k;
     }
@@ -137,21 +138,21 @@ bool KeyboardJog::isFresh(const HeldKey& key, qint64 now) const
     return now - key.provenMs <= (key.repeating ? repeatWindowMs() : firstRepeatWindowMs());
 }
 
-AxisVelocities KeyboardJog::heldDeflection()
+SlotVelocities KeyboardJog::heldDeflection()
 {
     const qint64 now = m_clock.elapsed();
-    AxisVelocities fractions;
+    SlotVelocities fractions;
     for (auto it = m_held.cbegin(); it != m_held.cend(); ++it) {
-        const KeyAxis* k = lookup(it.key());
+        const KeySlot* k = lookup(it.key());
         if (k && isFresh(it.value(), now))
-            fractions[k->axis] += k->sign * m_fraction;
+            fractions[k->slot] += k->sign * m_fraction;
     }
     return fractions;
 }
 
 bool KeyboardJog::handleKey(QKeyEvent* key)
 {
-    const KeyAxis* k = lookup(key->key());
+    const KeySlot* k = lookup(key->key());
     if (!k || key->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
         return false;
     const bool press = key->type() == QEvent::KeyPress;
@@ -199,25 +200,17 @@ bool KeyboardJog::eventFilter(QObject* watched, QEvent* event)
     return JogInputSource::eventFilter(watched, event);
 }
 
-QString KeyboardJog::keyLegend(const QList<Axis>& axes)
-{
-    QMap<Axis, QString> labels;
-    for (Axis axis : axes)
-        labels.insert(axis, axisName(axis));
-    return keyLegend(labels);
-}
-
-QString KeyboardJog::keyLegend(const QMap<Axis, QString>& slotLabels)
+QString KeyboardJog::keyLegend(const QMap<JogSlot, QString>& slotLabels)
 {
     QStringList parts;
-    if (slotLabels.contains(Axis::X))
-        parts << tr("\u2190/\u2192 %1").arg(slotLabels.value(Axis::X));
-    if (slotLabels.contains(Axis::Y))
-        parts << tr("\u2193/\u2191 %1").arg(slotLabels.value(Axis::Y));
-    if (slotLabels.contains(Axis::Z))
-        parts << tr("Page Down/Up %1").arg(slotLabels.value(Axis::Z));
-    if (slotLabels.contains(Axis::U))
-        parts << tr("End/Home %1").arg(slotLabels.value(Axis::U));
+    if (slotLabels.contains(JogSlot::PadHorizontal))
+        parts << tr("\u2190/\u2192 %1").arg(slotLabels.value(JogSlot::PadHorizontal));
+    if (slotLabels.contains(JogSlot::PadVertical))
+        parts << tr("\u2193/\u2191 %1").arg(slotLabels.value(JogSlot::PadVertical));
+    if (slotLabels.contains(JogSlot::ZStick))
+        parts << tr("Page Down/Up %1").arg(slotLabels.value(JogSlot::ZStick));
+    if (slotLabels.contains(JogSlot::OtherStick))
+        parts << tr("End/Home %1").arg(slotLabels.value(JogSlot::OtherStick));
     return parts.join(QStringLiteral(", "));
 }
 

@@ -38,7 +38,7 @@ public:
     ~KeyboardJog() override;
 
     QString sourceName() const override { return tr("Keyboard"); }
-    AxisVelocities heldDeflection() override;
+    SlotVelocities heldDeflection() override;
     void latch() override { releaseAll(); }
 
     void setEnabled(bool enabled);
@@ -54,11 +54,9 @@ public:
     void setProofWindows(int firstRepeatMs, int repeatMs);
     int firstRepeatWindowMs() const;
     int repeatWindowMs() const;
-    // "←/→ X, ↑/↓ Y, ..." for the axes given: what the panel shows.
-    static QString keyLegend(const QList<Axis>& axes);
-    // The same for the jog slots (JogAxisMap) and the machine axis each one moves: "←/→ X,
-    // ↓/↑ Y, Page Down/Up Z, End/Home A".
-    static QString keyLegend(const QMap<Axis, QString>& slotLabels);
+    // What the panel shows for the jog slots (JogAxisMap) and the machine axis each one moves:
+    // "←/→ X, ↓/↑ Y, Page Down/Up Z, End/Home A".
+    static QString keyLegend(const QMap<JogSlot, QString>& slotLabels);
 
 public Q_SLOTS:
     void releaseAll();

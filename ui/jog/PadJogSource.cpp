@@ -4,8 +4,8 @@
 
 namespace stepdeck::ui {
 
-PadJogSource::PadJogSource(JoystickPad* pad, std::optional<Axis> horizontal,
-                           std::optional<Axis> vertical, QObject* parent)
+PadJogSource::PadJogSource(JoystickPad* pad, std::optional<JogSlot> horizontal,
+                           std::optional<JogSlot> vertical, QObject* parent)
     : JogInputSource(parent), m_pad(pad), m_horizontal(horizontal), m_vertical(vertical)
 {
     connect(pad, &JoystickPad::deflectionChanged, this, &JogInputSource::changed);
@@ -28,7 +28,7 @@ void PadJogSource::setResponse(const JogResponse& response)
     Q_EMIT changed();
 }
 
-AxisVelocities PadJogSource::heldDeflection()
+SlotVelocities PadJogSource::heldDeflection()
 {
     if (!m_pad || !m_pad->isDragging())
         return {};
@@ -42,7 +42,7 @@ AxisVelocities PadJogSource::heldDeflection()
     if (!m_pad->confirmFrameHeld())
         return {};
     const QPointF d = m_pad->deflection();
-    AxisVelocities fractions;
+    SlotVelocities fractions;
     if (m_horizontal)
         fractions.insert(*m_horizontal, m_response.apply(d.x()));
     if (m_vertical)

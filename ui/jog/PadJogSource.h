@@ -21,11 +21,11 @@ class PadJogSource : public JogInputSource
 public:
     // horizontal/vertical: the machine axes of the pad's two directions (a stick has only
     // a vertical one).
-    PadJogSource(JoystickPad* pad, std::optional<Axis> horizontal, std::optional<Axis> vertical,
-                 QObject* parent = nullptr);
+    PadJogSource(JoystickPad* pad, std::optional<JogSlot> horizontal,
+                 std::optional<JogSlot> vertical, QObject* parent = nullptr);
 
     QString sourceName() const override;
-    AxisVelocities heldDeflection() override;
+    SlotVelocities heldDeflection() override;
     void latch() override;
 
     void setResponse(const JogResponse& response);
@@ -37,8 +37,8 @@ Q_SIGNALS:
 
 private:
     QPointer<JoystickPad> m_pad;
-    std::optional<Axis> m_horizontal;
-    std::optional<Axis> m_vertical;
+    std::optional<JogSlot> m_horizontal;
+    std::optional<JogSlot> m_vertical;
     JogResponse m_response;
 };
 

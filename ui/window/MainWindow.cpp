@@ -120,7 +120,7 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     connect(session, &ControllerSession::requestFinished, this, &MainWindow::onResult);
     connect(session, &ControllerSession::jogRefused, this,
             [this](const QString& text) { m_messages->show(Owner::Jog, text); });
-    connect(m_jog, &JogController::targetsChanged, this, [this](const AxisVelocities& t) {
+    connect(m_jog, &JogController::targetsChanged, this, [this](const SlotVelocities& t) {
         if (!t.isEmpty())
             m_messages->clear(Owner::Jog); // jogging works again
     });

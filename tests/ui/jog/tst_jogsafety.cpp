@@ -247,7 +247,7 @@ void TestJogSafety::keyboard_autoRepeat_keepsJoggingPastTheLease()
     KeyRepeater repeat(Qt::Key_Right);
     QTimer::singleShot(450, &repeat, [&repeat] { repeat.start(); });
     const double target = m_f->window->keyboardJog()->speedFraction() *
-                          m_f->window->jogController()->maxSpeed(Axis::X);
+                          m_f->window->jogController()->maxSpeed(ui::JogSlot::PadHorizontal);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), target, 5000);
     double slowest = target;
     QObject ctx;
@@ -271,7 +271,7 @@ void TestJogSafety::gamepad_freshSamples_keepJoggingPastTheLease()
     m_f->gamepad->plug(true);
     m_f->gamepad->moveAxis(kLeftX, 1.0);
     m_f->gamepad->press(kDeadman, true);
-    const double max = m_f->window->jogController()->maxSpeed(Axis::X);
+    const double max = m_f->window->jogController()->maxSpeed(ui::JogSlot::PadHorizontal);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
     double slowest = max;
     QObject ctx;

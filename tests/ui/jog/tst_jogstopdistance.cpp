@@ -67,9 +67,9 @@ void TestJogStopDistance::machine_followsSpeedAndOverride_inTheAxisUnit()
     ui::JogController jog(&context);
     ui::JogStopDistanceLabel label(&context, &jog);
     const ui::JogAxisMap* map = jog.axisMap();
-    QCOMPARE(map->label(Axis::X), QStringLiteral("X"));
-    jog.setMaxSpeed(Axis::X, 10);
-    jog.setMaxSpeed(Axis::Z, 5);
+    QCOMPARE(map->label(ui::JogSlot::PadHorizontal), QStringLiteral("X"));
+    jog.setMaxSpeed(ui::JogSlot::PadHorizontal, 10);
+    jog.setMaxSpeed(ui::JogSlot::ZStick, 5);
     jog.setOverride(1.0);
     // X sets the table's ramp (10^2 / 2 mm/s^2 x 400 = 20000 steps/s^2): 1 mm from 10 mm/s.
     // Z on the same ramp (the steeper of the two): 4000^2 / 40000 / 800 = 0.5 mm. A's drive
@@ -82,7 +82,7 @@ void TestJogStopDistance::machine_followsSpeedAndOverride_inTheAxisUnit()
              qPrintable(label.text()));
     // A lower max speed of X alone.
     jog.setOverride(1.0);
-    jog.setMaxSpeed(Axis::X, 4);
+    jog.setMaxSpeed(ui::JogSlot::PadHorizontal, 4);
     QVERIFY2(label.text().startsWith(QStringLiteral("Stops within X 0.16 mm")),
              qPrintable(label.text()));
 }
@@ -93,7 +93,7 @@ void TestJogStopDistance::singleElab_modelsDefaultRamp_inSteps()
     context.selectModel(QStringLiteral("elab"));
     ui::JogController jog(&context);
     ui::JogStopDistanceLabel label(&context, &jog);
-    jog.setMaxSpeed(Axis::X, 1000);
+    jog.setMaxSpeed(ui::JogSlot::PadHorizontal, 1000);
     jog.setOverride(1.0);
     // The E-LAB's default host ramp, 2000 steps/s^2: 1000^2 / 4000 = 250 steps.
     QVERIFY2(label.text().startsWith(QStringLiteral("Stops within X 250 steps")),
@@ -115,7 +115,7 @@ void TestJogStopDistance::size_doesNotDependOnTheText()
     QVERIFY(QTest::qWaitForWindowExposed(&holder));
     const QSize hint = label->sizeHint();
     const QRect geometry = label->geometry();
-    jog.setMaxSpeed(Axis::X, 10);
+    jog.setMaxSpeed(ui::JogSlot::PadHorizontal, 10);
     jog.setOverride(0.01);
     const QString shortText = label->text();
     jog.setOverride(1.0);

@@ -22,16 +22,16 @@ class HeldStick : public ui::JogInputSource
 {
 public:
     QString sourceName() const override { return QStringLiteral("test stick"); }
-    AxisVelocities heldDeflection() override { return m_held; }
+    ui::SlotVelocities heldDeflection() override { return m_held; }
     void latch() override { m_held.clear(); }
-    void hold(const AxisVelocities& deflection)
+    void hold(const ui::SlotVelocities& deflection)
     {
         m_held = deflection;
         Q_EMIT changed();
     }
 
 private:
-    AxisVelocities m_held;
+    ui::SlotVelocities m_held;
 };
 } // namespace
 
@@ -140,10 +140,10 @@ void TestTargetJogger::deflect_shortTargetsOneAfterTheOther_releaseStops()
     QVERIFY(connectLaser());
     QVERIFY(homeX());
     ui::JogController* jog = m_f->window->jogController();
-    jog->setMaxSpeed(Axis::X, 1000);
+    jog->setMaxSpeed(ui::JogSlot::PadHorizontal, 1000);
     HeldStick stick;
     jog->addSource(&stick);
-    stick.hold({{Axis::X, 1.0}});
+    stick.hold({{ui::JogSlot::PadHorizontal, 1.0}});
     QTRY_VERIFY_WITH_TIMEOUT(received().size() >= 4, 5000); // home + at least three targets
     stick.hold({});
     // The target in flight arrives; none follows it (the machine jogs by targets).
@@ -179,7 +179,7 @@ void TestTargetJogger::deflect_positionUnknown_refusedWithReason()
     QSignalSpy refused(m_f->window->jogController(), &ui::JogController::refused);
     HeldStick stick;
     m_f->window->jogController()->addSource(&stick);
-    stick.hold({{Axis::Y, -0.5}});
+    stick.hold({{ui::JogSlot::PadVertical, -0.5}});
     QTRY_VERIFY(!refused.isEmpty());
     QVERIFY(refused.last().first().toString().contains("unknown"));
     QTest::qWait(100);

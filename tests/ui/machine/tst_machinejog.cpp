@@ -102,14 +102,14 @@ void TestMachineJog::slots_tableAndRotary_padXYStickZOtherStickAKeysSayWhich()
     QVERIFY(openAndConnect());
     ui::JogPanel* panel = window()->jogPanel();
     const ui::JogAxisMap* map = window()->jogController()->axisMap();
-    QCOMPARE(map->label(Axis::X), QStringLiteral("X"));
-    QCOMPARE(map->label(Axis::Y), QStringLiteral("Y"));
-    QCOMPARE(map->label(Axis::Z), QStringLiteral("Z"));
-    QCOMPARE(map->label(Axis::U), QStringLiteral("A"));
+    QCOMPARE(map->label(ui::JogSlot::PadHorizontal), QStringLiteral("X"));
+    QCOMPARE(map->label(ui::JogSlot::PadVertical), QStringLiteral("Y"));
+    QCOMPARE(map->label(ui::JogSlot::ZStick), QStringLiteral("Z"));
+    QCOMPARE(map->label(ui::JogSlot::OtherStick), QStringLiteral("A"));
     QVERIFY(panel->uStick()->isVisibleTo(window()));
     QVERIFY(panel->otherStickAxis()->isVisibleTo(window()));
     QCOMPARE(panel->otherStickAxis()->currentText(), QStringLiteral("A"));
-    QCOMPARE(window()->gamepadPanel()->rowName(Axis::U), QStringLiteral("A"));
+    QCOMPARE(window()->gamepadPanel()->rowName(ui::JogSlot::OtherStick), QStringLiteral("A"));
     panel->keyboardCheck()->setChecked(true);
     QTRY_VERIFY2(panel->keyboardStateText().contains(QStringLiteral("End/Home A")),
                  qPrintable(panel->keyboardStateText()));
@@ -198,7 +198,7 @@ void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768()
     other->setCurrentIndex(2);
     Q_EMIT other->activated(2);
     const ui::JogAxisMap* map = window()->jogController()->axisMap();
-    QCOMPARE(map->label(Axis::U), QStringLiteral("C"));
+    QCOMPARE(map->label(ui::JogSlot::OtherStick), QStringLiteral("C"));
     QCOMPARE(other->currentText(), QStringLiteral("C"));
     // The read-out has every machine axis in its unit.
     if (language == QLatin1String("en"))

@@ -265,8 +265,8 @@ void TestMachineSafety::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
         QTRY_COMPARE_WITH_TIMEOUT(s->linkState(), LinkState::Connected, 10000);
     }
     // Home/End jog the other stick's machine axis, A here (on whichever page is shown).
-    window()->jogController()->setMaxSpeed(Axis::U, 50.0);
-    QCOMPARE(window()->jogController()->maxSpeed(Axis::U), 4.0);
+    window()->jogController()->setMaxSpeed(ui::JogSlot::OtherStick, 50.0);
+    QCOMPARE(window()->jogController()->maxSpeed(ui::JogSlot::OtherStick), 4.0);
     window()->keyboardJog()->setSpeedFraction(1.0);
     window()->jogPanel()->keyboardCheck()->setChecked(true);
     window()->jogPanel()->xyPad()->window()->setFocus();

@@ -175,7 +175,7 @@ void TestSafetyShortcuts::stop_whileJogging_endsJogAtOnce()
     m_f->gamepad->plug(true); // a held jog input that proves itself with fresh samples
     m_f->gamepad->moveAxis(0, 1.0);
     m_f->gamepad->press(9, true);
-    const double max = m_f->window->jogController()->maxSpeed(Axis::X);
+    const double max = m_f->window->jogController()->maxSpeed(ui::JogSlot::PadHorizontal);
     QTRY_COMPARE_WITH_TIMEOUT(m_f->commanded(Axis::X), max, 5000);
     QTRY_VERIFY(m_f->simAxis(Axis::X).moving);
     const qsizetype atDevice = m_f->deviceMark();
