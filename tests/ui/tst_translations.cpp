@@ -36,6 +36,7 @@ private Q_SLOTS:
     void german_validationMessages_nameLabelsNotKeys();
     void german_elabRules_nameLabelsNotKeys();
     void german_typedOrFiledNames_keepTheKey();
+    void english_afterGerman_noGermanLeftPluralsSpelledOut();
 };
 
 namespace {
@@ -303,6 +304,24 @@ void TestTranslations::german_typedOrFiledNames_keepTheKey()
     ParameterSet set;
     QVERIFY(!schema.fromJson(file, QStringLiteral("elab"), {Axis::X}, &set, &error));
     QVERIFY2(error.startsWith(QStringLiteral("drive-power: Wert '101'")), qPrintable(error));
+}
+
+// Switching back to English takes the German catalogue out (a test's rows after a German row
+// ran in German), and English reads its plural forms: "2 errors", not "2 error(s)".
+void TestTranslations::english_afterGerman_noGermanLeftPluralsSpelledOut()
+{
+    const char* context = "stepdeck::ui::ProgramErrorList";
+    const char* plural = "%n error(s); click one to go to its line.";
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("de")), QStringLiteral("de"));
+    QCOMPARE(QCoreApplication::translate("stepdeck::ui::MachineGoTo", "Go to"),
+             QStringLiteral("Anfahren"));
+    QCOMPARE(ui::translations::install(qApp, QStringLiteral("en")), QStringLiteral("en"));
+    QCOMPARE(QCoreApplication::translate("stepdeck::ui::MachineGoTo", "Go to"),
+             QStringLiteral("Go to"));
+    QCOMPARE(QCoreApplication::translate(context, plural, nullptr, 2),
+             QStringLiteral("2 errors; click one to go to its line."));
+    QCOMPARE(QCoreApplication::translate(context, plural, nullptr, 1),
+             QStringLiteral("1 error; click it to go to its line."));
 }
 
 QTEST_MAIN(TestTranslations)

@@ -2,6 +2,7 @@
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QPointer>
 #include <QSettings>
 #include <QTranslator>
 
@@ -37,23 +38,44 @@ QString effective(const QString& configuredCode)
     return available().contains(system) ? system : QStringLiteral("en");
 }
 
+namespace {
+// What install() put in place, taken out again by the next install(): switching back to
+// English leaves no German behind.
+QList<QPointer<QTranslator>>& installedTranslators()
+{
+    static QList<QPointer<QTranslator>> list;
+    return list;
+}
+
+void installTranslator(QCoreApplication* app, const QString& file, const QString& directory)
+{
+    auto* translator = new QTranslator(app);
+    if (!translator->load(file, directory)) {
+        delete translator;
+        return;
+    }
+    QCoreApplication::installTranslator(translator);
+    installedTranslators() << translator;
+}
+} // namespace
+
 QString install(QCoreApplication* app, const QString& code)
 {
     const QString lang = effective(code);
     QLocale::setDefault(QLocale(lang));
-    if (lang == QLatin1String("en"))
-        return lang;
-    auto* own = new QTranslator(app);
-    if (own->load(QStringLiteral(":/i18n/stepdeck_%1.qm").arg(lang)))
-        QCoreApplication::installTranslator(own);
-    else
-        delete own;
-    auto* qt = new QTranslator(app);
-    if (qt->load(QStringLiteral("qtbase_%1").arg(lang),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(qt);
-    else
-        delete qt;
+    for (const QPointer<QTranslator>& t : std::as_const(installedTranslators())) {
+        if (t) {
+            QCoreApplication::removeTranslator(t);
+            delete t;
+        }
+    }
+    installedTranslators().clear();
+    // English too: its catalogue holds the plural forms ("1 error", "2 errors"); without it
+    // the source's "%n error(s)" showed.
+    installTranslator(app, QStringLiteral(":/i18n/stepdeck_%1.qm").arg(lang), QString());
+    if (lang != QLatin1String("en"))
+        installTranslator(app, QStringLiteral("qtbase_%1").arg(lang),
+                          QLibraryInfo::path(QLibraryInfo::TranslationsPath));
     return lang;
 }
 

@@ -14,7 +14,8 @@ QString languageName(const QString& code); // "English", "Deutsch"
 QString configured();                      // "" = follow the system locale
 void setConfigured(const QString& code);
 QString effective(const QString& configured); // the code actually used
-// Installs the application's and Qt's own translators; returns the code in use.
+// Installs the application's translators (English: its plural forms) and Qt's own, in place of
+// those an earlier install() put in; returns the code in use.
 QString install(QCoreApplication* app, const QString& code);
 } // namespace translations
 
