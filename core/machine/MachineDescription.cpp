@@ -149,6 +149,15 @@ const MachineAxis* MachineDescription::axis(const QString& axisNameInMachine) co
     return nullptr;
 }
 
+int MachineDescription::axisIndex(const QString& axisNameInMachine) const
+{
+    for (int i = 0; i < axes.size(); ++i) {
+        if (axes.at(i).name == axisNameInMachine)
+            return i;
+    }
+    return -1;
+}
+
 QList<QList<const MachineAxis*>> MachineDescription::referenceGroups() const
 {
     QMap<int, QList<const MachineAxis*>> byOrder;

@@ -97,6 +97,8 @@ struct MachineDescription
 
     const MachineController* controller(const QString& id) const;
     const MachineAxis* axis(const QString& name) const;
+    int
+    axisIndex(const QString& axisNameInMachine) const; // its place in `axes`, -1 when there is none
     // The axes in referencing order: groups of equal order, lowest first, file order inside.
     QList<QList<const MachineAxis*>> referenceGroups() const;
     // The jog ramp of controller `id` in steps/s^2 (ControllerOptions::jogAccelerationStepsPerS2;

@@ -4,16 +4,6 @@
 
 namespace stepdeck::program {
 
-namespace {
-int axisIndex(const machine::MachineDescription& d, const QString& name)
-{
-    for (int i = 0; i < d.axes.size(); ++i)
-        if (d.axes.at(i).name == name)
-            return i;
-    return -1;
-}
-} // namespace
-
 ContourMoves::ContourMoves(const MachineFacts& facts)
     : m_facts(facts), m_streamOfAxis(size_t(facts.description.axes.size()), -1),
       m_slotOfAxis(size_t(facts.description.axes.size()), -1)
@@ -76,7 +66,7 @@ double ContourMoves::tickRate(const Capabilities& caps, const ParameterSchema& s
 
 int ContourMoves::slotOf(const QString& axisName) const
 {
-    const int i = axisIndex(m_facts.description, axisName);
+    const int i = m_facts.description.axisIndex(axisName);
     return i < 0 ? -1 : m_slotOfAxis[size_t(i)];
 }
 
@@ -92,7 +82,7 @@ const ContourMoves::Stream* ContourMoves::streamOf(const ProgramBlock& block) co
     // False: the block runs on its own (an axis without a stream, axes of two controllers
     // whose parts run apart, millimetres and degrees without one path speed).
     const auto joins = [&](const QString& name) {
-        const int i = axisIndex(m_facts.description, name);
+        const int i = m_facts.description.axisIndex(name);
         if (i < 0 || m_streamOfAxis[size_t(i)] < 0 ||
             (stream >= 0 && m_streamOfAxis[size_t(i)] != stream))
             return false;

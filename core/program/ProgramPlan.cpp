@@ -9,16 +9,6 @@
 
 namespace stepdeck::program {
 
-namespace {
-int axisIndex(const machine::MachineDescription& d, const QString& name)
-{
-    for (int i = 0; i < d.axes.size(); ++i)
-        if (d.axes.at(i).name == name)
-            return i;
-    return -1;
-}
-} // namespace
-
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
     : m_facts(facts), m_out(*out), m_errors(errors), m_contours(facts),
       m_known(facts.knownParameters)
@@ -97,7 +87,7 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
     out->contour = stream;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         AxisMove m;
-        m.axis = axisIndex(d, it.key());
+        m.axis = d.axisIndex(it.key());
         m.column = block.columnOf(it.key());
         if (m.axis < 0) { // the parser knew other axes than these facts
             error(block, m.column,
@@ -158,7 +148,7 @@ void ProgramPlan::planArc(const ProgramBlock& block, PlannedBlock* out)
 {
     ProgramBlock rates = ArcPath::rateBlock(block);
     for (const QString& name : rates.axes.keys())
-        if (axisIndex(m_facts.description, name) < 0)
+        if (m_facts.description.axisIndex(name) < 0)
             rates.axes.remove(name);
     planMove(rates, out);
 }
@@ -171,7 +161,7 @@ void ProgramPlan::planCycle(const ProgramBlock& block, PlannedBlock* out)
     const machine::MachineDescription& d = m_facts.description;
     planMove(DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d), out);
     const ProgramBlock feed = DrillCycle::rateBlock(block, DrillCycle::Kind::Feed, d);
-    const int z = axisIndex(d, QStringLiteral("Z"));
+    const int z = d.axisIndex(QStringLiteral("Z"));
     if (z >= 0 && checkRate(feed, z, &out->feedSpeed))
         checkFeedWrite(feed);
 }
@@ -264,7 +254,7 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
         return;
     }
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
-        const int index = axisIndex(d, it.key());
+        const int index = d.axisIndex(it.key());
         if (index < 0)
             error(block, block.columnOf(it.key()),
                   [&] { return ProgramCheck::tr("the machine has no axis %1").arg(it.key()); });

@@ -110,6 +110,9 @@ void TestMachineFile::parse_example_givesEveryField()
     QCOMPARE(m->axes.size(), 4);
     const MachineAxis* x = m->axis("X");
     QVERIFY(x);
+    QCOMPARE(m->axisIndex("X"), 0); // the file's order
+    QCOMPARE(m->axisIndex("A"), 3);
+    QCOMPARE(m->axisIndex("B"), -1);
     QCOMPARE(x->unit, AxisUnit::Millimetre);
     QCOMPARE(x->stepsPerUnit, 400.0);
     QCOMPARE(x->softMinimum, 0.0);
