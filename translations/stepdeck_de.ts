@@ -5159,6 +5159,29 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::DocumentationDialog</name>
+        <message>
+            <source>Overview and quick start</source>
+            <translation>Überblick und Schnellstart (englisch)</translation>
+        </message>
+        <message>
+            <source>Machines</source>
+            <translation>Maschinen (englisch)</translation>
+        </message>
+        <message>
+            <source>Programs (G-code)</source>
+            <translation>Programme (G-Code, englisch)</translation>
+        </message>
+        <message>
+            <source>Command line</source>
+            <translation>Kommandozeile (englisch)</translation>
+        </message>
+        <message>
+            <source>StepDeck documentation</source>
+            <translation>StepDeck-Dokumentation</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DrivePanel</name>
         <message>
             <source>Address</source>
@@ -5377,6 +5400,10 @@ Regelung für Achse %1 einschalten?</translation>
         <message>
             <source>Command line: stepdeck-cli</source>
             <translation>Kommandozeile: stepdeck-cli</translation>
+        </message>
+        <message>
+            <source>&amp;Documentation…</source>
+            <translation>&amp;Dokumentation…</translation>
         </message>
     </context>
     <context>

@@ -1,5 +1,6 @@
 // The window's Help menu (HelpMenu.h).
 #include "HelpMenu.h"
+#include "DocumentationDialog.h"
 #include "ShortcutsDialog.h"
 #include "common/Dialogs.h"
 #include "jog/JogPanel.h"
@@ -14,6 +15,10 @@ namespace stepdeck::ui {
 HelpMenu::HelpMenu(QWidget* window, JogPanel* jog, QWidget* parent)
     : QMenu(tr("&Help"), parent), m_window(window), m_jog(jog)
 {
+    // Not on F1: F1 is PANIC.
+    m_documentation = addAction(tr("&Documentation\u2026"), this, [this] {
+        dialogs::showForPart(new DocumentationDialog(m_window), m_window);
+    });
     m_shortcuts = addAction(tr("&Keyboard shortcuts\u2026"), this, &HelpMenu::showShortcuts);
     m_commandLine = addAction(tr("&Command line\u2026"), this, &HelpMenu::showCommandLine);
     m_commandLine->setVisible(false);

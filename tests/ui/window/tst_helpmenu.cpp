@@ -3,12 +3,16 @@
 // they move), and the command line's usage; each opens non-modal.
 #include "../UiTestSupport.h"
 #include "jog/JogPanel.h"
+#include "window/DocumentationDialog.h"
 #include "window/HelpMenu.h"
 #include "window/ShortcutsDialog.h"
 #include <QAction>
 #include <QApplication>
+#include <QImage>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QTableWidget>
+#include <QTextBrowser>
 #include <QtTest>
 
 using namespace stepdeck;
@@ -22,6 +26,7 @@ private Q_SLOTS:
     void shortcuts_fromTheWindowsActions_safetyFirstJogKeysListed();
     void shortcuts_action_opensNonModalTableOfThem();
     void commandLine_hiddenWithoutText_showsTheUsageGiven();
+    void documentation_action_opensEveryDocumentWithItsImages();
 };
 
 namespace {
@@ -88,6 +93,37 @@ void TestHelpMenu::commandLine_hiddenWithoutText_showsTheUsageGiven()
     QCOMPARE(dialog->windowModality(), Qt::NonModal);
     QCOMPARE(dialog->findChild<QPlainTextEdit*>()->toPlainText(),
              QStringLiteral("Usage: stepdeck-cli COMMAND"));
+    dialog->close();
+}
+
+// The operator's documents are in the program (an installed StepDeck has no source tree): each
+// opens with its text, and the README's screenshot is found next to it.
+void TestHelpMenu::documentation_action_opensEveryDocumentWithItsImages()
+{
+    UiFixture f;
+    f.window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(f.window.get()));
+    f.window->helpMenu()->documentationAction()->trigger();
+    ui::DocumentationDialog* dialog = nullptr;
+    QTRY_VERIFY((dialog = f.window->findChild<ui::DocumentationDialog*>()));
+    QTRY_VERIFY(dialog->isVisible());
+    QCOMPARE(dialog->windowModality(), Qt::NonModal);
+    const QList<ui::DocumentationDialog::Document> docs = ui::DocumentationDialog::documents();
+    QCOMPARE(dialog->list()->count(), int(docs.size()));
+    const QStringList expected{QStringLiteral("tools/run"), QStringLiteral("stepsPerUnit"),
+                               QStringLiteral("G54"), QStringLiteral("stepdeck-cli")};
+    for (int i = 0; i < docs.size(); ++i) {
+        dialog->list()->setCurrentRow(i);
+        QCOMPARE(dialog->browser()->source(), docs.at(i).source);
+        const QString text = dialog->browser()->toPlainText();
+        QVERIFY2(text.size() > 2000 && text.contains(expected.at(i)),
+                 qPrintable(docs.at(i).title + QStringLiteral(": ") + text.left(200)));
+        QVERIFY2(!text.contains(QStringLiteral("](")), qPrintable(docs.at(i).title)); // rendered
+    }
+    dialog->list()->setCurrentRow(0);
+    const QVariant image = dialog->browser()->loadResource(
+        QTextDocument::ImageResource, QUrl(QStringLiteral("docs/screenshots/run-1366x768.png")));
+    QVERIFY(!QImage::fromData(image.toByteArray()).isNull());
     dialog->close();
 }
 

@@ -1,0 +1,55 @@
+#include "DocumentationDialog.h"
+#include <QDialogButtonBox>
+#include <QHBoxLayout>
+#include <QListWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace stepdeck::ui {
+
+QList<DocumentationDialog::Document> DocumentationDialog::documents()
+{
+    // The paths as in the source tree (ui/CMakeLists.txt embeds them with that base), so the
+    // README's "docs/machines.md" and "docs/screenshots/..." resolve as they do on GitHub.
+    return {
+        {tr("Overview and quick start"), QUrl(QStringLiteral("qrc:/docs/README.md"))},
+        {tr("Machines"), QUrl(QStringLiteral("qrc:/docs/docs/machines.md"))},
+        {tr("Programs (G-code)"), QUrl(QStringLiteral("qrc:/docs/docs/programs.md"))},
+        {tr("Command line"), QUrl(QStringLiteral("qrc:/docs/docs/cli.md"))},
+    };
+}
+
+DocumentationDialog::DocumentationDialog(QWidget* parent)
+    : QDialog(parent), m_list(new QListWidget(this)), m_browser(new QTextBrowser(this))
+{
+    setObjectName(QStringLiteral("documentation"));
+    setWindowTitle(tr("StepDeck documentation"));
+    m_list->setObjectName(QStringLiteral("documentationList"));
+    m_browser->setObjectName(QStringLiteral("documentationText"));
+    m_browser->setOpenLinks(true);
+    m_browser->setOpenExternalLinks(true); // a web link goes to the system's browser
+    for (const Document& d : documents())
+        m_list->addItem(d.title);
+    m_list->setMaximumWidth(m_list->sizeHintForColumn(0) + 2 * m_list->frameWidth() + 24);
+    connect(m_list, &QListWidget::currentRowChanged, this, &DocumentationDialog::show);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_list);
+    row->addWidget(m_browser, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(row, 1);
+    layout->addWidget(buttons);
+    resize(960, 640);
+    m_list->setCurrentRow(0);
+}
+
+void DocumentationDialog::show(int document)
+{
+    const QList<Document> docs = documents();
+    if (document < 0 || document >= docs.size())
+        return;
+    m_browser->setSource(docs.at(document).source, QTextDocument::MarkdownResource);
+}
+
+} // namespace stepdeck::ui
