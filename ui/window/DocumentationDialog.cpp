@@ -1,8 +1,12 @@
 #include "DocumentationDialog.h"
 #include <QDialogButtonBox>
+#include <QEvent>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QListWidget>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
 #include <QVBoxLayout>
 
 namespace stepdeck::ui {
@@ -28,10 +32,11 @@ DocumentationDialog::DocumentationDialog(QWidget* parent)
     m_browser->setObjectName(QStringLiteral("documentationText"));
     m_browser->setOpenLinks(true);
     m_browser->setOpenExternalLinks(true); // a web link goes to the system's browser
+    m_browser->viewport()->installEventFilter(this);
     for (const Document& d : documents())
         m_list->addItem(d.title);
     m_list->setMaximumWidth(m_list->sizeHintForColumn(0) + 2 * m_list->frameWidth() + 24);
-    connect(m_list, &QListWidget::currentRowChanged, this, &DocumentationDialog::show);
+    connect(m_list, &QListWidget::currentRowChanged, this, &DocumentationDialog::showDocument);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* row = new QHBoxLayout;
@@ -44,12 +49,46 @@ DocumentationDialog::DocumentationDialog(QWidget* parent)
     m_list->setCurrentRow(0);
 }
 
-void DocumentationDialog::show(int document)
+void DocumentationDialog::showDocument(int document)
 {
     const QList<Document> docs = documents();
     if (document < 0 || document >= docs.size())
         return;
     m_browser->setSource(docs.at(document).source, QTextDocument::MarkdownResource);
+    fitImages();
+}
+
+bool DocumentationDialog::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_browser->viewport() && event->type() == QEvent::Resize)
+        fitImages();
+    return QDialog::eventFilter(watched, event);
+}
+
+// A screenshot 1366 px wide would make the page scroll sideways: each image is shown at most as
+// wide as the page, its height in proportion.
+void DocumentationDialog::fitImages()
+{
+    const double room = qMax(200, m_browser->viewport()->width() - 24);
+    QTextDocument* doc = m_browser->document();
+    for (QTextBlock block = doc->begin(); block.isValid(); block = block.next()) {
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            QTextImageFormat image = fragment.charFormat().toImageFormat();
+            if (!image.isValid())
+                continue;
+            const QImage picture =
+                doc->resource(QTextDocument::ImageResource, QUrl(image.name())).value<QImage>();
+            if (picture.isNull() || picture.width() <= room)
+                continue;
+            image.setWidth(room);
+            image.setHeight(room * picture.height() / picture.width());
+            QTextCursor cursor(doc);
+            cursor.setPosition(fragment.position());
+            cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
+            cursor.setCharFormat(image);
+        }
+    }
 }
 
 } // namespace stepdeck::ui

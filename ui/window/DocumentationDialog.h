@@ -25,11 +25,16 @@ public:
     static QList<Document> documents();
 
     explicit DocumentationDialog(QWidget* parent = nullptr);
-    void show(int document); // its index in documents()
+    void showDocument(int document); // its index in documents()
     QTextBrowser* browser() const { return m_browser; }
     QListWidget* list() const { return m_list; }
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override; // images follow the page width
+
 private:
+    void fitImages();
+
     QListWidget* m_list;
     QTextBrowser* m_browser;
 };

@@ -12,6 +12,7 @@
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QTableWidget>
+#include <QTextBlock>
 #include <QTextBrowser>
 #include <QtTest>
 
@@ -124,6 +125,20 @@ void TestHelpMenu::documentation_action_opensEveryDocumentWithItsImages()
     const QVariant image = dialog->browser()->loadResource(
         QTextDocument::ImageResource, QUrl(QStringLiteral("docs/screenshots/run-1366x768.png")));
     QVERIFY(!QImage::fromData(image.toByteArray()).isNull());
+    // Shown no wider than the page (the screenshot is 1366 px wide).
+    int images = 0;
+    const int page = dialog->browser()->viewport()->width();
+    for (QTextBlock b = dialog->browser()->document()->begin(); b.isValid(); b = b.next()) {
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextImageFormat format = it.fragment().charFormat().toImageFormat();
+            if (!format.isValid())
+                continue;
+            ++images;
+            QVERIFY2(format.width() > 0 && format.width() <= page,
+                     qPrintable(QStringLiteral("%1 in %2").arg(format.width()).arg(page)));
+        }
+    }
+    QVERIFY(images >= 1);
     dialog->close();
 }
 
