@@ -14,13 +14,12 @@ namespace stepdeck::ui {
 class MachineContext;
 
 // Which axis each jog slot moves, and how fast it may (issue 19). The jog inputs (the pad,
-// the sticks, the keyboard, a gamepad) always speak of four slots, named by the Axis values
-// they used before machines existed: X and Y the pad's two directions, Z the Z stick, U the
-// other stick. Every slot is one of the machine's named axes (every connection is a machine,
-// issue 28 item 0), on whichever controller drives it, and its rates are in that axis' unit/s: the
-// pad its first two axes (X and Y when it has them), the Z stick Z, the other stick the axis the
-// operator picks among the rest (otherStickChoices()), so every axis of a six-axis machine can be
-// reached.
+// the sticks, the keyboard, a gamepad) always speak of four slots (JogSlot, issue 32): the
+// pad's two directions, the Z stick and the other stick. Every slot is one of the machine's
+// named axes (every connection is a machine, issue 28 item 0), on whichever controller drives
+// it, and its rates are in that axis' unit/s: the pad its first two axes (X and Y when it has
+// them), the Z stick Z, the other stick the axis the operator picks among the rest
+// (otherStickChoices()), so every axis of a six-axis machine can be reached.
 class JogAxisMap : public QObject
 {
     Q_OBJECT

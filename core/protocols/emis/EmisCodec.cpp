@@ -23,8 +23,9 @@ bool isText(char c)
 } // namespace
 
 namespace {
-// Manual 9.x: the axes x, y, z, u; arrivals <DC1> .. <DC4> (9.6) and reference switches on
-// IN1 .. IN4 (5.2.2) in that order.
+// The manual's axes x, y, z, u in that order: their arrivals <DC1> .. <DC4> (9, replies; 9.9:
+// "<DC2>, <DC3>, <DC4> bei Y-, Z-, und U-Motor") and their reference switches on inputs 1 .. 4
+// (5.2.2; 9.14's example: "X-Motor: Referenzschalter am Eingang 1").
 constexpr WireAxis kWireAxes[] = {
     {Axis::X, 'x', 1},
     {Axis::Y, 'y', 2},
