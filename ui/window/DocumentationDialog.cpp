@@ -79,10 +79,13 @@ void DocumentationDialog::fitImages()
                 continue;
             const QImage picture =
                 doc->resource(QTextDocument::ImageResource, QUrl(image.name())).value<QImage>();
-            if (picture.isNull() || picture.width() <= room)
+            // Never wider than the page, never wider than itself (a page made wider again
+            // gives a shrunk image its room back); unchanged: left as it is.
+            const double width = qMin(double(picture.width()), room);
+            if (picture.isNull() || image.width() == width)
                 continue;
-            image.setWidth(room);
-            image.setHeight(room * picture.height() / picture.width());
+            image.setWidth(width);
+            image.setHeight(width * picture.height() / picture.width());
             QTextCursor cursor(doc);
             cursor.setPosition(fragment.position());
             cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);

@@ -139,6 +139,22 @@ void TestHelpMenu::documentation_action_opensEveryDocumentWithItsImages()
         }
     }
     QVERIFY(images >= 1);
+    // Narrower, then wide again: the screenshot takes the room back.
+    const auto firstImageWidth = [dialog] {
+        for (QTextBlock b = dialog->browser()->document()->begin(); b.isValid(); b = b.next()) {
+            for (auto it = b.begin(); !it.atEnd(); ++it) {
+                const QTextImageFormat format = it.fragment().charFormat().toImageFormat();
+                if (format.isValid())
+                    return format.width();
+            }
+        }
+        return 0.0;
+    };
+    const double wide = firstImageWidth();
+    dialog->resize(dialog->width() / 2, dialog->height());
+    QTRY_VERIFY(firstImageWidth() < wide);
+    dialog->resize(dialog->width() * 2, dialog->height());
+    QTRY_COMPARE(firstImageWidth(), wide);
     dialog->close();
 }
 
