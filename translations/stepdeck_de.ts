@@ -1104,6 +1104,41 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::AxisNames</name>
+        <message>
+            <source>'%1' is not an axis name (X, Y, Z, U, or a letter and then letters, digits or _, 2 to %2 characters)</source>
+            <translation>„%1“ ist kein Achsname (X, Y, Z, U oder ein Buchstabe, dann Buchstaben, Ziffern oder _, 2 bis %2 Zeichen)</translation>
+        </message>
+        <message>
+            <source>%1 is the name of another axis</source>
+            <translation>%1 ist der Name einer anderen Achse</translation>
+        </message>
+        <message>
+            <source>%1 names two axes</source>
+            <translation>%1 benennt zwei Achsen</translation>
+        </message>
+        <message>
+            <source>%1 is given twice</source>
+            <translation>%1 ist zweimal angegeben</translation>
+        </message>
+        <message>
+            <source>more than %1 axes</source>
+            <translation>mehr als %1 Achsen</translation>
+        </message>
+        <message>
+            <source>expected NAME=ADDRESS (e.g. feeder=5), got '%1'</source>
+            <translation>NAME=ADRESSE erwartet (z. B. feeder=5), erhalten: „%1“</translation>
+        </message>
+        <message>
+            <source>%1: '%2' is not a whole bus address</source>
+            <translation>%1: „%2“ ist keine ganze Busadresse</translation>
+        </message>
+        <message>
+            <source>no axis given (e.g. X=1,Y=2 or feeder=5,gate=6)</source>
+            <translation>keine Achse angegeben (z. B. X=1,Y=2 oder feeder=5,gate=6)</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::Controller</name>
         <message>
             <source>this machine has no axis %1</source>
@@ -2805,10 +2840,6 @@
             <translation>muss "stepdeck-machine" sein</translation>
         </message>
         <message>
-            <source>must be 1 (the version this StepDeck reads)</source>
-            <translation>muss 1 sein (die Version, die dieses StepDeck liest)</translation>
-        </message>
-        <message>
             <source>must be a list of controllers</source>
             <translation>muss eine Liste von Steuerungen sein</translation>
         </message>
@@ -2999,6 +3030,26 @@
         <message>
             <source>no controller of this machine switches a spindle: leave "spindle" out</source>
             <translation>keine Steuerung dieser Maschine schaltet eine Spindel: "spindle" weglassen</translation>
+        </message>
+        <message>
+            <source>must be 1 or 2 (the versions this StepDeck reads)</source>
+            <translation>muss 1 oder 2 sein (die Versionen, die dieses StepDeck liest)</translation>
+        </message>
+        <message>
+            <source>must list the controller's axes, e.g. [{"name": "X", "address": 1}]</source>
+            <translation>muss die Achsen der Steuerung auflisten, z. B. [{"name": "X", "address": 1}]</translation>
+        </message>
+        <message>
+            <source>must be an object {"name", "address"}</source>
+            <translation>muss ein Objekt {"name", "address"} sein</translation>
+        </message>
+        <message>
+            <source>must be X, Y, Z, U or a letter and then letters, digits or _ (2 to 32 characters)</source>
+            <translation>muss X, Y, Z, U oder ein Buchstabe, dann Buchstaben, Ziffern oder _ sein (2 bis 32 Zeichen)</translation>
+        </message>
+        <message>
+            <source>not an axis of its controller (X, Y, Z, U, axis5 … or a name the controller gives)</source>
+            <translation>keine Achse ihrer Steuerung (X, Y, Z, U, axis5 … oder ein Name, den die Steuerung vergibt)</translation>
         </message>
     </context>
     <context>
@@ -5022,16 +5073,8 @@ Regelung für Achse %1 einschalten?</translation>
             <translation>Vorgabe</translation>
         </message>
         <message>
-            <source>Controller axis = bus address, e.g. X=1 Y=2 (empty: X=1, Y=2, Z=3)</source>
-            <translation>Steuerungsachse = Busadresse, z. B. X=1 Y=2 (leer: X=1, Y=2, Z=3)</translation>
-        </message>
-        <message>
             <source>none</source>
             <translation>keine</translation>
-        </message>
-        <message>
-            <source>write controller axis = bus address, like X=1 Y=2 (is "%1")</source>
-            <translation>Steuerungsachse = Busadresse schreiben, z. B. X=1 Y=2 (ist "%1")</translation>
         </message>
         <message>
             <source>Setup file</source>
@@ -5040,6 +5083,14 @@ Regelung für Achse %1 einschalten?</translation>
         <message>
             <source>A parameter file (as Export writes it), relative to the machine file's folder: written to the controller on every connect</source>
             <translation>Eine Parameterdatei (wie Export sie schreibt), relativ zum Ordner der Maschinendatei: bei jedem Verbinden in die Steuerung geschrieben</translation>
+        </message>
+        <message>
+            <source>Controller axis = bus address, e.g. X=1 Y=2 or feeder=5 gate=6 (names: a letter, then letters, digits or _; empty: X=1, Y=2, Z=3)</source>
+            <translation>Steuerungsachse = Busadresse, z. B. X=1 Y=2 oder feeder=5 gate=6 (Namen: ein Buchstabe, dann Buchstaben, Ziffern oder _; leer: X=1, Y=2, Z=3)</translation>
+        </message>
+        <message>
+            <source>write controller axis = bus address, like X=1 Y=2 or feeder=5 (is "%1": %2)</source>
+            <translation>Steuerungsachse = Busadresse schreiben, etwa X=1 Y=2 oder feeder=5 (ist „%1“: %2)</translation>
         </message>
     </context>
     <context>

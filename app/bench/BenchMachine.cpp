@@ -8,7 +8,7 @@ bool openTable(machine::Machine& m, const QString& name, const QString& modelId,
 {
     machine::MachineDescription d;
     d.name = name;
-    d.controllers = {{"table", modelId, port, {}, {}, {}, {}}};
+    d.controllers = {{"table", modelId, port, {}, {}, {}, {}, {}}};
     for (Axis a : axes) {
         machine::MachineAxis axis;
         axis.name = axisName(a);

@@ -86,7 +86,10 @@ void matchMoves(const QList<SimulatedMove>& journal, const QList<CommandedMove>&
 {
     const QList<int> indices = commandMoveIndices(int(journal.size()), jogRanges, fig);
     fig->deviceMoves += indices.size();
-    for (Axis axis : allAxes()) {
+    QMap<Axis, bool> commandedAxes; // every axis a command went to, in axis order
+    for (const CommandedMove& c : commanded)
+        commandedAxes.insert(c.axis, true);
+    for (Axis axis : commandedAxes.keys()) {
         QList<CommandedMove> wanted;
         for (const CommandedMove& c : commanded) {
             if (c.axis == axis)

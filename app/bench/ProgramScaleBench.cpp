@@ -60,7 +60,7 @@ program::MachineFacts benchFacts()
         machine::MachineAxis a;
         a.name = QLatin1String(names[i]);
         a.controller = c.id;
-        a.axis = Axis(i);
+        a.axis = Axis::at(i);
         a.unit = machine::AxisUnit::Millimetre;
         a.stepsPerUnit = 100;
         a.softMinimum = i == 2 ? -100 : 0;

@@ -198,7 +198,7 @@ bool applyValue(const QString& name, const QString& value, CliOptions* o, QStrin
     } else if (name == QLatin1String("controller")) {
         o->controller = value;
     } else if (name == QLatin1String("axes")) {
-        return parseAxisMap(value, &o->axisAddresses, error);
+        return parseAxisMap(value, &o->axisAddresses, &o->axisNames, error);
     } else if (name == QLatin1String("reset-line")) {
         const std::optional<LineSettings::ResetLine> line = resetLineFromName(value);
         if (!line) {

@@ -1,6 +1,6 @@
 #pragma once
 #include "CliOutput.h"
-#include "model/Axis.h"
+#include "model/AxisNames.h"
 #include "model/LineSettings.h"
 #include <QList>
 #include <QMap>
@@ -34,7 +34,8 @@ struct CliOptions
     QString machineFile;           // --machine FILE: the machine path (CliMachineRun.cpp)
     QString controller;            // --controller ID: per-controller commands on a machine
     std::optional<int> address;    // --address N: X=N for a single-drive model
-    QMap<Axis, int> axisAddresses; // --axes X=1,Y=2,Z=3
+    QMap<Axis, int> axisAddresses; // --axes X=1,Y=2,Z=3 or feeder=5,gate=6
+    AxisNames axisNames;           // the names --axes gave (issue 32)
     bool json = false;
     bool setupDefaults = false;
     bool verbose = false;
@@ -76,9 +77,10 @@ Outcome parseAxisIntegers(const QString& command, const QStringList& args, const
 // The same for decimal rates ("X=-1500.5", "Y=1e3").
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
                          AxisVelocities* out);
-// "X=1,Y=2,Z=3" (the --axes map; CliAxisArguments.cpp like the two above). Only the syntax is
-// checked here; which addresses a bus allows is the model's (Capabilities::minBusAddress..
-// maxBusAddress), checked when the controller is created.
-bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error);
+// "X=1,Y=2,Z=3" or "feeder=5,gate=6" (the --axes list; assignBusAxes says which axis each name
+// is). Only the syntax and the names are checked here; which addresses a bus allows is the
+// model's (Capabilities::minBusAddress..maxBusAddress), checked when the controller is created.
+bool parseAxisMap(const QString& text, QMap<Axis, int>* addresses, AxisNames* names,
+                  QString* error);
 
 } // namespace stepdeck::cli

@@ -92,22 +92,14 @@ Outcome parseAxisDoubles(const QString& command, const QStringList& args, const 
                  }));
 }
 
-bool parseAxisMap(const QString& text, QMap<Axis, int>* out, QString* error)
+bool parseAxisMap(const QString& text, QMap<Axis, int>* addresses, AxisNames* names, QString* error)
 {
-    QMap<Axis, qint64> parsed;
-    const Outcome read = parseAxisAssignments<qint64>(
-        text.split(QLatin1Char(','), Qt::SkipEmptyParts), allAxes(), &parsed,
-        [](QStringView s, qint64* v) {
-            return numbers::parseInteger(s, 0, std::numeric_limits<int>::max(), v);
-        });
-    if (!read.ok()) {
-        *error = CliAxisArguments::tr("--axes: %1").arg(read.message);
+    QList<NamedAddress> list;
+    QString why;
+    if (!parseNamedAddresses(text, &list, &why) || !assignBusAxes(list, addresses, names, &why)) {
+        *error = CliAxisArguments::tr("--axes: %1").arg(why);
         return false;
     }
-    QMap<Axis, int> result;
-    for (auto it = parsed.cbegin(); it != parsed.cend(); ++it)
-        result.insert(it.key(), int(it.value()));
-    *out = result;
     return true;
 }
 

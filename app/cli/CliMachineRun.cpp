@@ -81,6 +81,7 @@ Outcome controllerOptions(const CliOptions& o, const machine::MachineDescription
     out->model = c->modelId;
     out->port = c->port;
     out->axisAddresses = c->busAddresses;
+    out->axisNames = c->axisNames;
     if (c->resetLine)
         out->resetLine = *c->resetLine;
     return Outcome::success();
@@ -121,7 +122,7 @@ Outcome singleControllerMachine(const CliOptions& o, machine::MachineDescription
     QMap<Axis, int> addresses = o.axisAddresses;
     if (o.address)
         addresses.insert(Axis::X, *o.address);
-    *out = machine::MachineDescription::singleController(*model, o.port, addresses);
+    *out = machine::MachineDescription::singleController(*model, o.port, addresses, o.axisNames);
     if (model->capabilities.resetLine)
         out->controllers.first().resetLine = o.resetLine;
     return Outcome::success();

@@ -68,6 +68,7 @@ Outcome CliSession::create()
     spec.port = m_options.port;
     spec.options = baseControllerOptions(m_options);
     spec.options.axisAddresses = m_options.axisAddresses;
+    spec.options.axisNames = m_options.axisNames;
     spec.options.resetLine = m_options.resetLine;
     if (m_options.address)
         spec.options.axisAddresses.insert(Axis::X, *m_options.address);

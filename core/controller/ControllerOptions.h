@@ -1,5 +1,5 @@
 #pragma once
-#include "model/Axis.h"
+#include "model/AxisNames.h"
 #include "model/LineSettings.h"
 
 namespace stepdeck {
@@ -8,6 +8,9 @@ struct ControllerOptions
 {
     // Bus address per axis for multi-drive links (Nanotec: X=1,Y=2,Z=3). Empty: model default.
     QMap<Axis, int> axisAddresses;
+    // The names the operator gave the axes ("feeder", "gate"; issue 32): shown and accepted
+    // instead of the default names. Empty: every axis by its default name.
+    AxisNames axisNames;
     int pollIntervalMs = 50;
     int missedPollsForLinkLoss = 3;
     int commandTimeoutMs = 500;

@@ -34,6 +34,7 @@ ConnectionSpec specOf(const MachineController& c, const ControllerOptions& base)
     spec.port = c.port;
     spec.options = base;
     spec.options.axisAddresses = c.busAddresses;
+    spec.options.axisNames = c.axisNames;
     if (c.resetLine)
         spec.options.resetLine = *c.resetLine;
     spec.simulator.addresses = c.busAddresses.values();

@@ -21,10 +21,10 @@ QJsonObject controllerJson(const MachineController& c)
 {
     QJsonObject o{{"id", c.id}, {"model", c.modelId}, {"port", c.port}};
     if (!c.busAddresses.isEmpty()) {
-        QJsonObject map;
-        for (auto it = c.busAddresses.cbegin(); it != c.busAddresses.cend(); ++it)
-            map.insert(axisName(it.key()), it.value());
-        o.insert("axes", map);
+        QJsonArray list; // in axis order, each axis by its name (version 2)
+        for (const NamedAddress& e : namedAddresses(c.busAddresses, c.axisNames))
+            list.append(QJsonObject{{"name", e.name}, {"address", e.address}});
+        o.insert("axes", list);
     }
     if (c.resetLine)
         o.insert("resetLine", resetLineName(*c.resetLine));
@@ -33,11 +33,11 @@ QJsonObject controllerJson(const MachineController& c)
     return o;
 }
 
-QJsonObject axisJson(const MachineAxis& a)
+QJsonObject axisJson(const MachineAxis& a, const AxisNames& names)
 {
     QJsonObject o{{"name", a.name},
                   {"controller", a.controller},
-                  {"axis", axisName(a.axis)},
+                  {"axis", names.name(a.axis)},
                   {"unit", unitKey(a.unit)},
                   {"stepsPerUnit", a.stepsPerUnit}};
     if (a.invert)
@@ -166,8 +166,15 @@ QList<QList<const MachineAxis*>> MachineDescription::referenceGroups() const
     return byOrder.values();
 }
 
+const QStringList& MachineDescription::axisLetters()
+{
+    static const QStringList letters = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
+    return letters;
+}
+
 MachineDescription MachineDescription::singleController(const ModelInfo& model, const QString& port,
-                                                        const QMap<Axis, int>& addresses)
+                                                        const QMap<Axis, int>& addresses,
+                                                        const AxisNames& names)
 {
     MachineDescription d;
     d.name = model.displayName;
@@ -176,11 +183,20 @@ MachineDescription MachineDescription::singleController(const ModelInfo& model, 
     c.modelId = model.id;
     c.port = port;
     c.busAddresses = addresses;
+    c.axisNames = names;
     d.controllers << c;
     const QList<Axis> axes = addresses.isEmpty() ? model.capabilities.axes : addresses.keys();
+    QStringList free = axisLetters();
+    for (Axis axis : axes) {
+        if (free.contains(axisName(axis)))
+            free.removeOne(axisName(axis));
+    }
     for (Axis axis : axes) {
         MachineAxis a;
-        a.name = axisName(axis);
+        a.name = axisLetters().contains(axisName(axis)) ? axisName(axis) : free.value(0);
+        if (a.name.isEmpty())
+            break; // nine machine axes at most
+        free.removeOne(a.name);
         a.controller = c.id;
         a.axis = axis;
         d.axes << a;
@@ -195,9 +211,10 @@ QJsonObject MachineDescription::toJson() const
         controllerList.append(controllerJson(c));
     QJsonArray axisList;
     for (const MachineAxis& a : axes)
-        axisList.append(axisJson(a));
+        axisList.append(axisJson(a, controller(a.controller) ? controller(a.controller)->axisNames
+                                                             : AxisNames()));
     QJsonObject o{{"format", "stepdeck-machine"},
-                  {"version", 1},
+                  {"version", 2},
                   {"name", name},
                   {"controllers", controllerList},
                   {"axes", axisList}};
@@ -211,8 +228,8 @@ QJsonObject MachineDescription::toJson() const
 bool operator==(const MachineController& a, const MachineController& b)
 {
     return a.id == b.id && a.modelId == b.modelId && a.port == b.port &&
-           a.busAddresses == b.busAddresses && a.resetLine == b.resetLine &&
-           a.setupFile == b.setupFile;
+           a.busAddresses == b.busAddresses && a.axisNames == b.axisNames &&
+           a.resetLine == b.resetLine && a.setupFile == b.setupFile;
 }
 
 bool operator==(const MachineAxis& a, const MachineAxis& b)

@@ -1,5 +1,5 @@
 #pragma once
-#include "model/Axis.h"
+#include "model/AxisNames.h"
 #include "model/LineSettings.h"
 #include "model/ParameterSchema.h"
 #include <QCoreApplication>
@@ -35,6 +35,8 @@ struct MachineController
     // its values once MachineFile::load / parse read and validated it.
     QString setupFile;
     ParameterSet setup;
+    // The names given to its bus axes (version 2 files: [{"name": "feeder", "address": 5}]).
+    AxisNames axisNames;
 
     bool isSimulated() const { return port == QLatin1String("sim"); }
 };
@@ -106,10 +108,16 @@ struct MachineDescription
     double jogRampAcceleration(const QString& controllerId,
                                double controllerCeilingStepsPerS) const;
 
-    // A machine of one controller: its axes keep their controller names, unit steps, 1 step
-    // per unit, no limits. `addresses` as for MachineController::busAddresses.
+    // A machine of one controller: unit steps, 1 step per unit, no limits. `addresses` and
+    // `names` as for MachineController. An axis whose default name is a machine axis' letter
+    // (X, Y, Z, U) keeps it; the others take the free letters of X Y Z A B C U V W in axis
+    // order (a program addresses axes by letter). A bus of more than nine drives has nine
+    // machine axes; the drive pages reach every drive.
     static MachineDescription singleController(const ModelInfo& model, const QString& port,
-                                               const QMap<Axis, int>& addresses = {});
+                                               const QMap<Axis, int>& addresses = {},
+                                               const AxisNames& names = {});
+    // The letters a machine axis may have: X Y Z A B C U V W.
+    static const QStringList& axisLetters();
     // The file form (MachineFile::parse reads it back to an equal description).
     QJsonObject toJson() const;
 };

@@ -35,7 +35,8 @@ private:
     bool number(const QJsonObject& o, const QString& path, const char* key,
                 std::optional<double>* out);
     bool readController(const QJsonValue& v, const QString& path, MachineController* c);
-    bool readAddresses(const QJsonValue& v, const QString& path, QMap<Axis, int>* out);
+    bool readAddresses(const QJsonValue& v, const QString& path, MachineController* c);
+    bool readAddressesV1(const QJsonValue& v, const QString& path, MachineController* c);
     bool readAxis(const QJsonValue& v, const QString& path, MachineAxis* a);
     bool readAxisValues(const QJsonObject& o, const QString& path, MachineAxis* a);
     bool readReference(const QJsonValue& v, const QString& path, MachineAxis* a);
@@ -43,6 +44,8 @@ private:
     bool readSpindle(const QJsonValue& v, MachineSpindle* s);
 
     MachineFileError* m_error;
+    int m_version = 0;
+    const QList<MachineController>* m_controllers = nullptr; // read before the axes
 };
 
 QString join(const QString& path, const char* key)
@@ -103,8 +106,13 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
     const QJsonValue version = top.value("version");
-    if (!version.isDouble() || version.toDouble() != 1)
-        return fail("version", MachineFile::tr("must be 1 (the version this StepDeck reads)"));
+    // Version 1 (before issue 32) mapped default axis names to addresses in an object; it is
+    // read as it stands and written back as version 2.
+    if (!version.isDouble() || (version.toDouble() != 1 && version.toDouble() != 2))
+        return fail("version",
+                    MachineFile::tr("must be 1 or 2 (the versions this StepDeck reads)"));
+    m_version = int(version.toDouble());
+    m_controllers = &d->controllers;
     if (!string(top, {}, "name", &d->name))
         return false;
     const QJsonValue controllers = top.value("controllers");
@@ -154,7 +162,7 @@ bool Reader::readController(const QJsonValue& v, const QString& path, MachineCon
     if (!string(o, path, "id", &c->id) || !string(o, path, "model", &c->modelId) ||
         !string(o, path, "port", &c->port))
         return false;
-    if (o.contains("axes") && !readAddresses(o.value("axes"), join(path, "axes"), &c->busAddresses))
+    if (o.contains("axes") && !readAddresses(o.value("axes"), join(path, "axes"), c))
         return false;
     QString line;
     if (!string(o, path, "resetLine", &line, false))
@@ -167,7 +175,7 @@ bool Reader::readController(const QJsonValue& v, const QString& path, MachineCon
     return true;
 }
 
-bool Reader::readAddresses(const QJsonValue& v, const QString& path, QMap<Axis, int>* out)
+bool Reader::readAddressesV1(const QJsonValue& v, const QString& path, MachineController* c)
 {
     if (!v.isObject() || v.toObject().isEmpty())
         return fail(path, MachineFile::tr("must map controller axes to bus addresses, e.g. "
@@ -180,8 +188,43 @@ bool Reader::readAddresses(const QJsonValue& v, const QString& path, QMap<Axis, 
             return fail(field, MachineFile::tr("not a controller axis (X, Y, Z or U)"));
         if (!it.value().isDouble() || !isWhole(it.value().toDouble()))
             return fail(field, MachineFile::tr("must be a whole bus address"));
-        out->insert(*axis, int(it.value().toDouble()));
+        c->busAddresses.insert(*axis, int(it.value().toDouble()));
     }
+    return true;
+}
+
+// Version 2: an ordered list [{"name": "feeder", "address": 5}, ...] (assignBusAxes).
+bool Reader::readAddresses(const QJsonValue& v, const QString& path, MachineController* c)
+{
+    if (m_version == 1)
+        return readAddressesV1(v, path, c);
+    if (!v.isArray() || v.toArray().isEmpty())
+        return fail(path, MachineFile::tr("must list the controller's axes, e.g. "
+                                          "[{\"name\": \"X\", \"address\": 1}]"));
+    QList<NamedAddress> list;
+    const QJsonArray entries = v.toArray();
+    for (qsizetype i = 0; i < entries.size(); ++i) {
+        const QString field = path + QStringLiteral("[%1]").arg(i);
+        const QJsonObject e = entries.at(i).toObject();
+        if (!entries.at(i).isObject())
+            return fail(field, MachineFile::tr("must be an object {\"name\", \"address\"}"));
+        NamedAddress entry;
+        std::optional<double> address;
+        if (!onlyKeys(e, field, {"name", "address"}) || !string(e, field, "name", &entry.name) ||
+            !number(e, field, "address", &address))
+            return false;
+        if (!AxisNames::isValidName(entry.name))
+            return fail(join(field, "name"),
+                        MachineFile::tr("must be X, Y, Z, U or a letter and then letters, digits "
+                                        "or _ (2 to 32 characters)"));
+        if (!address || !isWhole(*address))
+            return fail(join(field, "address"), MachineFile::tr("must be a whole bus address"));
+        entry.address = int(*address);
+        list << entry;
+    }
+    QString why;
+    if (!assignBusAxes(list, &c->busAddresses, &c->axisNames, &why))
+        return fail(path, why);
     return true;
 }
 
@@ -204,9 +247,18 @@ bool Reader::readAxisValues(const QJsonObject& o, const QString& path, MachineAx
     if (!string(o, path, "name", &a->name) || !string(o, path, "controller", &a->controller) ||
         !string(o, path, "axis", &controllerAxis) || !string(o, path, "unit", &unit))
         return false;
-    const std::optional<Axis> axis = axisFromName(controllerAxis);
-    if (!axis || axisName(*axis) != controllerAxis)
-        return fail(join(path, "axis"), MachineFile::tr("not a controller axis (X, Y, Z or U)"));
+    // The controller's own names first ("feeder"), read before the axes; an unknown
+    // controller is reported by the validation.
+    AxisNames names;
+    for (const MachineController& c : *m_controllers) {
+        if (c.id == a->controller)
+            names = c.axisNames;
+    }
+    const std::optional<Axis> axis = names.find(controllerAxis);
+    if (!axis || names.name(*axis) != controllerAxis)
+        return fail(join(path, "axis"),
+                    MachineFile::tr("not an axis of its controller (X, Y, Z, U, axis5 \u2026 or "
+                                    "a name the controller gives)"));
     a->axis = *axis;
     const std::optional<AxisUnit> parsedUnit = unitFromKey(unit);
     if (!parsedUnit)

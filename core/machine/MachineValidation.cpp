@@ -13,8 +13,7 @@ namespace {
 
 const QStringList& machineAxisNames()
 {
-    static const QStringList names = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
-    return names;
+    return MachineDescription::axisLetters();
 }
 
 class Checker
@@ -94,7 +93,7 @@ bool Checker::addresses(const MachineController& c, const ModelInfo& model, cons
             MachineFile::tr("%1 has no drives on a bus: leave \"axes\" out").arg(c.modelId));
     QSet<int> used;
     for (auto it = c.busAddresses.cbegin(); it != c.busAddresses.cend(); ++it) {
-        const QString field = path + QStringLiteral(".axes.") + axisName(it.key());
+        const QString field = path + QStringLiteral(".axes.") + c.axisNames.name(it.key());
         if (it.value() < caps.minBusAddress || it.value() > caps.maxBusAddress)
             return fail(field, MachineFile::tr("bus address %1 is outside %2..%3")
                                    .arg(it.value())
@@ -146,16 +145,16 @@ bool Checker::axis(const MachineDescription& d, const MachineAxis& a, const QStr
     if (!have.contains(a.axis)) {
         QStringList names;
         for (Axis each : have)
-            names << axisName(each);
+            names << c->axisNames.name(each);
         return fail(path + QStringLiteral(".axis"),
                     MachineFile::tr("controller \"%1\" has no axis %2 (it has %3)")
-                        .arg(c->id, axisName(a.axis), names.join(" ")));
+                        .arg(c->id, c->axisNames.name(a.axis), names.join(" ")));
     }
     const QString used = c->id + QLatin1Char('/') + axisName(a.axis);
     if (m_controllerAxes.contains(used))
         return fail(path + QStringLiteral(".axis"),
                     MachineFile::tr("axis %1 of controller \"%2\" already drives another axis")
-                        .arg(axisName(a.axis), c->id));
+                        .arg(c->axisNames.name(a.axis), c->id));
     m_controllerAxes.insert(used);
     return axisValues(a, model, path);
 }

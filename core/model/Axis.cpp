@@ -2,32 +2,40 @@
 
 namespace stepdeck {
 
+namespace {
+const char kLetters[] = "XYZU";
+constexpr QLatin1StringView kPrefix("axis");
+} // namespace
+
 QString axisName(Axis axis)
 {
-    switch (axis) {
-    case Axis::X:
-        return QStringLiteral("X");
-    case Axis::Y:
-        return QStringLiteral("Y");
-    case Axis::Z:
-        return QStringLiteral("Z");
-    case Axis::U:
-        return QStringLiteral("U");
-    }
-    return QStringLiteral("?");
+    if (axis.index() < 4)
+        return QString(QLatin1Char(kLetters[axis.index()]));
+    return kPrefix + QString::number(axis.index() + 1);
 }
 
 std::optional<Axis> axisFromName(QStringView name)
 {
     const QString upper = name.trimmed().toString().toUpper();
-    for (Axis axis : allAxes()) {
-        if (axisName(axis) == upper)
-            return axis;
+    if (upper.size() == 1) {
+        const int letter = QByteArray(kLetters).indexOf(upper.at(0).toLatin1());
+        return letter >= 0 ? Axis::fromIndex(letter) : std::nullopt;
     }
-    return std::nullopt;
+    if (!upper.startsWith(QString(kPrefix).toUpper()))
+        return std::nullopt;
+    const QStringView digits = QStringView(upper).mid(kPrefix.size());
+    if (digits.isEmpty() || digits.startsWith(QLatin1Char('0')) ||
+        digits.startsWith(QLatin1Char('+')))
+        return std::nullopt;
+    bool ok = false;
+    const int number = digits.toInt(&ok);
+    // axis1..axis4 have letters; only the letters name them.
+    if (!ok || number <= 4)
+        return std::nullopt;
+    return Axis::fromIndex(number - 1);
 }
 
-const QList<Axis>& allAxes()
+const QList<Axis>& letterAxes()
 {
     static const QList<Axis> axes{Axis::X, Axis::Y, Axis::Z, Axis::U};
     return axes;

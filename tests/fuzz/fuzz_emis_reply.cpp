@@ -25,7 +25,7 @@ QString describe(const Event& e)
     return QStringLiteral("%1 '%2' %3 [%4] %5")
         .arg(int(e.kind))
         .arg(fuzz::hex(e.text))
-        .arg(int(e.axis))
+        .arg(e.axis.index())
         .arg(fuzz::hex(e.raw), e.error);
 }
 
@@ -109,7 +109,7 @@ void checkEncoders(const QByteArray& data)
     ramp.ramp = qint64(in.next(2));
     SystemEntry speeds;
     speeds.key = SystemEntry::Key::WorkSpeed;
-    for (Axis a : allAxes()) {
+    for (Axis a : letterAxes()) {
         if (in.next(1) & 1)
             speeds.values.insert(a, qint64(in.next(2)));
     }

@@ -9,12 +9,18 @@ namespace stepdeck::test {
 class NanotecUiFixture : public UiFixture
 {
 public:
-    bool connectNanotec()
+    // busText: the drives as --axes lists them; default X=1,Y=2,Z=3.
+    bool connectNanotec(const QString& busText = QStringLiteral("X=1,Y=2,Z=3"))
     {
         ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
-        spec.options.axisAddresses = {{Axis::X, 1}, {Axis::Y, 2}, {Axis::Z, 3}};
-        spec.simulator.addresses = {1, 2, 3};
+        QList<NamedAddress> bus;
         QString error;
+        if (!parseNamedAddresses(busText, &bus, &error) ||
+            !assignBusAxes(bus, &spec.options.axisAddresses, &spec.options.axisNames, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        spec.simulator.addresses = spec.options.axisAddresses.values();
         if (!window->context()->connectTo(*findModel(QStringLiteral("nanotec")), spec, &error)) {
             qWarning() << error;
             return false;

@@ -190,8 +190,8 @@ void LaserBridgePage::rebuildAxisChoices()
         map->clear();
         map->addItem(tr("not used"), -1);
         for (Axis a : axes)
-            map->addItem(axisName(a), int(a));
-        const int same = map->findData(int(laserAxis));
+            map->addItem(axisName(a), a.index());
+        const int same = map->findData(laserAxis.index());
         map->setCurrentIndex(same >= 0 ? same : 0);
         QComboBox* home = m_home.value(laserAxis);
         home->clear();
@@ -219,11 +219,12 @@ bool LaserBridgePage::configFromForm(LaserBridgeConfig* config, QString* error) 
     c.axisMap.clear();
     for (Axis laserAxis : kLaserAxes) {
         const int axis = m_map.value(laserAxis)->currentData().toInt();
-        if (axis < 0)
-            continue;
-        c.axisMap.insert(laserAxis, Axis(axis));
+        const std::optional<Axis> target = Axis::fromIndex(axis);
+        if (!target)
+            continue; // "not used"
+        c.axisMap.insert(laserAxis, *target);
         if (const int direction = m_home.value(laserAxis)->currentData().toInt(); direction != 0)
-            c.homeDirections.insert(Axis(axis), direction);
+            c.homeDirections.insert(*target, direction);
     }
     c.scale = m_scale->value();
     if (m_doorInput->value() > 0)
@@ -311,7 +312,7 @@ void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
 {
     int row = -1;
     for (int r = 0; r < m_table->rowCount(); ++r) {
-        if (m_table->item(r, ColLaser)->data(Qt::UserRole).toInt() == int(view.laserAxis))
+        if (m_table->item(r, ColLaser)->data(Qt::UserRole).toInt() == view.laserAxis.index())
             row = r;
     }
     if (row < 0) {
@@ -319,7 +320,7 @@ void LaserBridgePage::showAxis(const LaserBridge::AxisView& view)
         m_table->insertRow(row);
         for (int c = 0; c < ColCount; ++c)
             m_table->setItem(row, c, new QTableWidgetItem);
-        m_table->item(row, ColLaser)->setData(Qt::UserRole, int(view.laserAxis));
+        m_table->item(row, ColLaser)->setData(Qt::UserRole, view.laserAxis.index());
     }
     m_table->item(row, ColLaser)->setText(QString::number(laser::axisNumber(view.laserAxis)));
     m_table->item(row, ColAxis)->setText(axisName(view.controllerAxis));

@@ -32,7 +32,7 @@ QList<ChartAxis> chartAxes(const MachineContext& context)
     for (Axis a : context.axes()) {
         ChartAxis line;
         line.axis = a;
-        line.name = axisName(a);
+        line.name = context.controllerAxisName(a);
         line.unit = context.machineUnitName();
         if (m) {
             for (const machine::MachineAxis& axis : m->description().axes) {

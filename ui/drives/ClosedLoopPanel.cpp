@@ -148,7 +148,7 @@ QString ClosedLoopPanel::nextStepText() const
 
 QVariantMap ClosedLoopPanel::axisArgs() const
 {
-    return {{cl::kAxis, m_axis->currentText()}};
+    return {{cl::kAxis, m_axis->currentData().toString()}};
 }
 
 void ClosedLoopPanel::onModelChanged()
@@ -158,7 +158,7 @@ void ClosedLoopPanel::onModelChanged()
     const QSignalBlocker block(m_axis);
     m_axis->clear();
     for (Axis a : caps.axes)
-        m_axis->addItem(axisName(a));
+        m_axis->addItem(m_context->controllerAxisName(a), axisName(a)); // data: the operation's
     clearTexts();
     updateEnabled();
 }

@@ -208,7 +208,7 @@ void DrivePanel::onStatus(const MachineStatus& status)
         const DriveStatus& d = status.drives.at(r);
         QStringList axes;
         for (Axis a : d.axes)
-            axes << axisName(a);
+            axes << m_context->controllerAxisName(a);
         m_drives->setItem(r, Address, cell(QString::number(d.address)));
         m_drives->setItem(r, Axes, cell(axes.join(QLatin1Char(','))));
         // A silent drive must stand out at a glance: red cell, cross mark, capitals.

@@ -62,11 +62,11 @@ void PositionErrorResetButton::onResult(const CommandResult& result)
     if (!m_pending.contains(result.id))
         return;
     const Axis axis = m_pending.take(result.id);
-    Q_EMIT message(
-        result.ok()
-            ? tr("Position error of axis %1 reset: its position is the encoder's now.")
-                  .arg(axisName(axis))
-            : tr("Position error of axis %1 not reset: %2").arg(axisName(axis), result.message));
+    Q_EMIT message(result.ok()
+                       ? tr("Position error of axis %1 reset: its position is the encoder's now.")
+                             .arg(m_context->controllerAxisName(axis))
+                       : tr("Position error of axis %1 not reset: %2")
+                             .arg(m_context->controllerAxisName(axis), result.message));
     updateEnabled();
 }
 

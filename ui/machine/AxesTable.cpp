@@ -5,6 +5,7 @@
 #include <QLocale>
 #include <QSet>
 #include <QSpinBox>
+#include <algorithm>
 
 namespace stepdeck::ui {
 
@@ -44,11 +45,11 @@ QString optionalText(const std::optional<double>& value)
 
 // The first controller axis that drives no machine axis yet ("<id>/<axis>" in used), in the
 // order of the controllers; false (and nothing changed) when every one is taken.
-bool firstFreeAxis(const QStringList& ids, const QMap<QString, QList<Axis>>& axes,
+bool firstFreeAxis(const QStringList& ids, const QMap<QString, ControllerAxes>& axes,
                    const QSet<QString>& used, QString* id, Axis* axis)
 {
     for (const QString& each : ids) {
-        for (Axis candidate : axes.value(each)) {
+        for (Axis candidate : axes.value(each).axes) {
             if (!used.contains(each + QLatin1Char('/') + axisName(candidate))) {
                 *id = each;
                 *axis = candidate;
@@ -111,7 +112,7 @@ void AxesTable::addRow(const MachineAxis& a)
         controller->addItem(a.controller);
     controller->setCurrentText(a.controller);
     QComboBox* axis = addComboCell(row, "axis", 50);
-    axis->addItem(axisName(a.axis), int(a.axis));
+    axis->addItem(m_controllerAxes.value(a.controller).names.name(a.axis), a.axis.index());
     refreshAxisChoices(row);
     connect(controller, &QComboBox::currentIndexChanged, this,
             [this, controller] { refreshAxisChoices(rowOf(controller, "controller")); });
@@ -181,7 +182,8 @@ bool AxesTable::readRow(int r, MachineAxis* a, MachineFileError* error) const
     const QString path = QStringLiteral("axes[%1].").arg(r);
     a->name = as<QComboBox>(cell(r, "name"))->currentText();
     a->controller = as<QComboBox>(cell(r, "controller"))->currentText();
-    a->axis = Axis(as<QComboBox>(cell(r, "axis"))->currentData().toInt());
+    a->axis =
+        Axis::fromIndex(as<QComboBox>(cell(r, "axis"))->currentData().toInt()).value_or(Axis::X);
     a->unit = AxisUnit(as<QComboBox>(cell(r, "unit"))->currentData().toInt());
     a->invert = as<QCheckBox>(cell(r, "invert"))->isChecked();
     a->referenceDirection = as<QComboBox>(cell(r, "reference.direction"))->currentData().toInt();
@@ -215,7 +217,7 @@ void AxesTable::setControllerIds(const QStringList& ids)
     }
 }
 
-void AxesTable::setControllerAxes(const QMap<QString, QList<Axis>>& axes)
+void AxesTable::setControllerAxes(const QMap<QString, ControllerAxes>& axes)
 {
     m_controllerAxes = axes;
     for (int r = 0; r < rowCount(); ++r)
@@ -228,22 +230,32 @@ void AxesTable::refreshAxisChoices(int row)
     if (!combo)
         return;
     const QString controller = as<QComboBox>(cell(row, "controller"))->currentText();
-    const QList<Axis> offered = m_controllerAxes.value(controller, allAxes());
+    const ControllerAxes known =
+        m_controllerAxes.value(controller, ControllerAxes{letterAxes(), {}});
+    const QList<Axis>& offered = known.axes;
     const int current = combo->currentData().toInt();
     QList<int> wanted;
-    for (Axis each : allAxes()) {
-        if (offered.contains(each) || int(each) == current)
-            wanted << int(each);
+    for (Axis each : offered)
+        wanted << each.index();
+    if (Axis::fromIndex(current) && !wanted.contains(current)) {
+        wanted << current; // the file's choice stays visible, even if the controller lacks it
+        std::sort(wanted.begin(), wanted.end());
     }
+    QStringList wantedTexts;
+    for (int each : wanted)
+        wantedTexts << known.names.name(Axis::at(each));
     QList<int> shown;
-    for (int i = 0; i < combo->count(); ++i)
+    QStringList shownTexts;
+    for (int i = 0; i < combo->count(); ++i) {
         shown << combo->itemData(i).toInt();
-    if (shown == wanted)
+        shownTexts << combo->itemText(i);
+    }
+    if (shown == wanted && shownTexts == wantedTexts)
         return; // unchanged: an open list stays as it is
     const QSignalBlocker block(combo);
     combo->clear();
-    for (int each : wanted)
-        combo->addItem(axisName(Axis(each)), each);
+    for (qsizetype i = 0; i < wanted.size(); ++i)
+        combo->addItem(wantedTexts.at(i), wanted.at(i));
     combo->setCurrentIndex(combo->findData(current));
 }
 

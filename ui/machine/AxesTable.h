@@ -1,4 +1,5 @@
 #pragma once
+#include "ControllersTable.h"
 #include "EditorTable.h"
 
 namespace stepdeck::ui {
@@ -23,7 +24,7 @@ public:
     void renameController(const QString& from, const QString& to);
     // The axes each controller has (ControllersTable::controllerAxes): the axis column offers
     // those of the row's controller; a choice that is no longer offered stays, marked invalid.
-    void setControllerAxes(const QMap<QString, QList<Axis>>& axes);
+    void setControllerAxes(const QMap<QString, ControllerAxes>& axes);
 
     void addAxis(); // the next free name on the first controller, counted in steps
     void removeCurrentAxis();
@@ -36,7 +37,7 @@ private:
     bool readRow(int row, machine::MachineAxis* a, machine::MachineFileError* error) const;
 
     QStringList m_controllerIds;
-    QMap<QString, QList<Axis>> m_controllerAxes;
+    QMap<QString, ControllerAxes> m_controllerAxes;
 };
 
 } // namespace stepdeck::ui

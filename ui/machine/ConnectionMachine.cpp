@@ -40,10 +40,13 @@ void applyStoredUnits(const QSettings& settings, const QString& modelId, machine
 machine::MachineDescription connectionMachineOf(const ModelInfo& model, const ConnectionSpec& spec)
 {
     QMap<Axis, int> addresses;
-    if (model.capabilities.multiDrive)
+    AxisNames names;
+    if (model.capabilities.multiDrive) {
         addresses = spec.options.axisAddresses;
+        names = spec.options.axisNames;
+    }
     machine::MachineDescription d =
-        machine::MachineDescription::singleController(model, spec.port, addresses);
+        machine::MachineDescription::singleController(model, spec.port, addresses, names);
     if (model.capabilities.resetLine)
         d.controllers.first().resetLine = spec.options.resetLine;
     const QSettings settings;

@@ -20,27 +20,32 @@ QStringList keys()
 }
 } // namespace
 
-QString busAddressText(const QMap<Axis, int>& addresses)
+QString busAddressText(const QMap<Axis, int>& addresses, const AxisNames& names)
 {
     QStringList pairs;
-    for (auto it = addresses.cbegin(); it != addresses.cend(); ++it)
-        pairs << QStringLiteral("%1=%2").arg(axisName(it.key())).arg(it.value());
+    for (const NamedAddress& e : namedAddresses(addresses, names))
+        pairs << QStringLiteral("%1=%2").arg(e.name).arg(e.address);
     return pairs.join(QLatin1Char(' '));
 }
 
-bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses)
+bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses, AxisNames* names,
+                       QString* error)
 {
     addresses->clear();
+    *names = AxisNames();
     static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
-    for (const QString& pair : text.split(separators, Qt::SkipEmptyParts)) {
-        const QStringList parts = pair.split(QLatin1Char('='));
-        const std::optional<Axis> axis =
-            parts.size() == 2 ? axisFromName(parts.at(0).trimmed()) : std::nullopt;
-        int address = 0;
-        if (!axis || addresses->contains(*axis) ||
-            numbers::parseInt(parts.at(1), 0, 9999, &address) != NumberError::None)
-            return false;
-        addresses->insert(*axis, address);
+    const QStringList pairs = text.split(separators, Qt::SkipEmptyParts);
+    if (pairs.isEmpty())
+        return true; // the model's default addresses
+    QList<NamedAddress> list;
+    QString why;
+    if (!parseNamedAddresses(pairs.join(QLatin1Char(',')), &list, &why) ||
+        !assignBusAxes(list, addresses, names, &why)) {
+        addresses->clear();
+        *names = AxisNames();
+        if (error)
+            *error = why;
+        return false;
     }
     return true;
 }
@@ -82,9 +87,10 @@ void ControllersTable::addRow(const MachineController& c)
     }
     model->setCurrentIndex(model->findData(c.modelId));
     addLineCell(row, "port", c.port, 170)->setPlaceholderText(tr("/dev/ttyUSB0, tcp://…, sim"));
-    QLineEdit* bus = addLineCell(row, "axes", busAddressText(c.busAddresses), 120);
+    QLineEdit* bus = addLineCell(row, "axes", busAddressText(c.busAddresses, c.axisNames), 120);
     bus->setPlaceholderText(tr("default"));
-    bus->setToolTip(tr("Controller axis = bus address, e.g. X=1 Y=2 (empty: X=1, Y=2, Z=3)"));
+    bus->setToolTip(tr("Controller axis = bus address, e.g. X=1 Y=2 or feeder=5 gate=6 (names: a "
+                       "letter, then letters, digits or _; empty: X=1, Y=2, Z=3)"));
     QComboBox* reset = addComboCell(row, "resetLine", 90);
     reset->addItem(tr("none"), QString());
     reset->addItem(QStringLiteral("RTS"), resetLineName(LineSettings::ResetLine::Rts));
@@ -128,10 +134,12 @@ bool ControllersTable::read(QList<MachineController>* out, MachineFileError* err
         c.modelId = qobject_cast<QComboBox*>(cell(r, "model"))->currentData().toString();
         c.port = qobject_cast<QLineEdit*>(cell(r, "port"))->text().trimmed();
         const QString bus = qobject_cast<QLineEdit*>(cell(r, "axes"))->text();
-        if (!parseBusAddresses(bus, &c.busAddresses))
+        QString why;
+        if (!parseBusAddresses(bus, &c.busAddresses, &c.axisNames, &why))
             return MachineFileError::report(
                 error, path + QStringLiteral("axes"),
-                tr("write controller axis = bus address, like X=1 Y=2 (is \"%1\")").arg(bus));
+                tr("write controller axis = bus address, like X=1 Y=2 or feeder=5 (is \"%1\": %2)")
+                    .arg(bus, why));
         const QString reset =
             qobject_cast<QComboBox*>(cell(r, "resetLine"))->currentData().toString();
         c.resetLine = resetLineFromName(reset);
@@ -149,19 +157,21 @@ QStringList ControllersTable::ids() const
     return list;
 }
 
-QMap<QString, QList<Axis>> ControllersTable::controllerAxes() const
+QMap<QString, ControllerAxes> ControllersTable::controllerAxes() const
 {
-    QMap<QString, QList<Axis>> axes;
+    QMap<QString, ControllerAxes> axes;
     for (int r = 0; r < rowCount(); ++r) {
         const QString id = qobject_cast<QLineEdit*>(cell(r, "id"))->text().trimmed();
         const ModelInfo* model =
             findModel(qobject_cast<QComboBox*>(cell(r, "model"))->currentData().toString());
         QMap<Axis, int> addresses;
-        if (parseBusAddresses(qobject_cast<QLineEdit*>(cell(r, "axes"))->text(), &addresses) &&
+        AxisNames names;
+        if (parseBusAddresses(qobject_cast<QLineEdit*>(cell(r, "axes"))->text(), &addresses,
+                              &names) &&
             !addresses.isEmpty())
-            axes.insert(id, addresses.keys());
+            axes.insert(id, ControllerAxes{addresses.keys(), names});
         else if (model)
-            axes.insert(id, model->capabilities.axes);
+            axes.insert(id, ControllerAxes{model->capabilities.axes, {}});
     }
     return axes;
 }

@@ -6,6 +6,13 @@ namespace stepdeck::ui {
 // The machine editor's controllers: id, model (from the registry), port, the bus address map
 // of multi-drive models ("X=1 Y=2", like the CLI's --axes) and the reset line of models that
 // have one. Cells a model cannot use are disabled and empty.
+// A controller's axes and the names they go by (the axes table's axis column offers them).
+struct ControllerAxes
+{
+    QList<Axis> axes;
+    AxisNames names;
+};
+
 class ControllersTable : public EditorTable
 {
     Q_OBJECT
@@ -18,7 +25,7 @@ public:
     bool read(QList<machine::MachineController>* out, machine::MachineFileError* error) const;
     QStringList ids() const;
     // The controller axes of each id: the keys of its bus address map, else its model's axes.
-    QMap<QString, QList<Axis>> controllerAxes() const;
+    QMap<QString, ControllerAxes> controllerAxes() const;
 
     void addController(); // a new row with an unused id, the first model, port "sim"
     void removeCurrentController();
@@ -33,8 +40,10 @@ private:
     void applyModel(int row); // enables the cells the row's model can use
 };
 
-// "X=1 Y=2" <-> bus address map; false when the text is not such a list.
-QString busAddressText(const QMap<Axis, int>& addresses);
-bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses);
+// "X=1 Y=2", "feeder=5 gate=6" <-> bus address map and names (assignBusAxes); false with the
+// reason when the text is not such a list.
+QString busAddressText(const QMap<Axis, int>& addresses, const AxisNames& names);
+bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses, AxisNames* names,
+                       QString* error = nullptr);
 
 } // namespace stepdeck::ui

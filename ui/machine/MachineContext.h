@@ -48,6 +48,12 @@ public:
     QString portName() const;
     bool isConnected() const;
     const MachineStatus& status() const { return session()->status(); }
+    // The selected controller's name for one of its axes ("feeder" where the operator named
+    // it, issue 32; else X, Y, ...). Model operations keep taking the default names.
+    QString controllerAxisName(Axis axis) const
+    {
+        return session()->spec().options.axisNames.name(axis);
+    }
 
     // Chooses the connection bar's model: without a machine file open, its machine of one
     // controller (connectionMachineOf), unconnected, is what the panels show.

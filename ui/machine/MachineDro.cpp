@@ -235,6 +235,10 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
     if (!row.value || !a.axis)
         return;
     const machine::MachineAxis& axis = *a.axis;
+    const machine::MachineController* c =
+        m_context->machine() ? m_context->machine()->description().controller(axis.controller)
+                             : nullptr;
+    const QString controllerAxis = c ? c->axisNames.name(axis.axis) : axisName(axis.axis);
     // The digits: the work position once a work zero is set, as certain as the machine
     // position it comes from (same mark, same badge); the line below: the machine position.
     const bool work = m_offsets->hasOffset(axis.name);
@@ -250,9 +254,9 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
     row.detail->setText(
         axis.unit == machine::AxisUnit::Step
             ? tr("machine %1 %2 (%3 %4)")
-                  .arg(format(axis, a.position), unitOf(axis), axis.controller, axisName(axis.axis))
+                  .arg(format(axis, a.position), unitOf(axis), axis.controller, controllerAxis)
             : tr("machine %1 %2, %3 axis %4: %5 %6")
-                  .arg(format(axis, a.position), unitOf(axis), axis.controller, axisName(axis.axis))
+                  .arg(format(axis, a.position), unitOf(axis), axis.controller, controllerAxis)
                   .arg(a.steps)
                   .arg(countWord(axis)));
     if (!linked) {

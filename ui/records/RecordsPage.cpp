@@ -119,7 +119,7 @@ void RecordsPage::rebuild()
     const QString current = m_axis->currentData().toString();
     m_axis->clear();
     for (Axis a : m_context->axes())
-        m_axis->addItem(tr("Axis %1").arg(axisName(a)), axisName(a));
+        m_axis->addItem(tr("Axis %1").arg(m_context->controllerAxisName(a)), axisName(a));
     const int keep = m_axis->findData(current);
     if (keep >= 0)
         m_axis->setCurrentIndex(keep);
@@ -149,7 +149,8 @@ void RecordsPage::readAll()
           {{operation::arg::kAxis, m_axis->currentData().toString()}},
           tr("Reading records 1..%1 of axis %2\u2026")
               .arg(kRecords)
-              .arg(m_axis->currentData().toString()));
+              .arg(m_context->controllerAxisName(
+                  axisFromName(m_axis->currentData().toString()).value_or(Axis::X))));
 }
 
 void RecordsPage::writeRecord()

@@ -25,7 +25,8 @@ QString displayValue(const ParameterSpec& spec, const QVariant& v)
 } // namespace
 
 QList<DiffDialog::Row> DiffDialog::compare(const ParameterSchema& schema,
-                                           const ParameterSet& current, const ParameterSet& loaded)
+                                           const ParameterSet& current, const ParameterSet& loaded,
+                                           const AxisNames& names)
 {
     QList<Row> rows;
     for (const ParameterSpec& spec : schema.specs()) {
@@ -37,7 +38,7 @@ QList<DiffDialog::Row> DiffDialog::compare(const ParameterSchema& schema,
         if (spec.perAxis) {
             for (auto it = then.perAxis.cbegin(); it != then.perAxis.cend(); ++it) {
                 const QVariant before = now.perAxis.value(it.key());
-                rows << Row{label, axisName(it.key()), displayValue(spec, before),
+                rows << Row{label, names.name(it.key()), displayValue(spec, before),
                             displayValue(spec, it.value()),
                             schema.normalise(spec, before) != schema.normalise(spec, it.value())};
             }

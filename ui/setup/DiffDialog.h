@@ -1,4 +1,5 @@
 #pragma once
+#include "model/AxisNames.h"
 #include "model/ParameterSchema.h"
 #include <QDialog>
 
@@ -24,8 +25,9 @@ public:
         QString loaded;
         bool differs = false;
     };
+    // names: the controller's names of its axes.
     static QList<Row> compare(const ParameterSchema& schema, const ParameterSet& current,
-                              const ParameterSet& loaded);
+                              const ParameterSet& loaded, const AxisNames& names = {});
 
     DiffDialog(const QList<Row>& rows, const QString& fileName, QWidget* parent = nullptr);
     int changedCount() const { return m_changed; }

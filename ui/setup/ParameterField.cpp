@@ -64,7 +64,10 @@ QString ParameterField::translatedChoice(const QString& choice)
 QString ParameterField::displayName() const
 {
     const QString label = ParameterSchema::displayText(m_spec.label);
-    return m_axis ? QStringLiteral("%1 %2").arg(label, axisName(*m_axis)) : label;
+    if (!m_axis)
+        return label;
+    return QStringLiteral("%1 %2").arg(label,
+                                       m_axisName.isEmpty() ? axisName(*m_axis) : m_axisName);
 }
 
 QWidget* ParameterField::editor() const

@@ -24,6 +24,8 @@ public:
 
     const ParameterSpec& spec() const { return m_spec; }
     std::optional<Axis> axis() const { return m_axis; }
+    // The name its axis goes by in messages (the controller's; default: axisName).
+    void setAxisName(const QString& name) { m_axisName = name; }
 
     QVariant value() const; // normalised; invalid when the entry is invalid or unknown
     // explicitValue: the technician's choice (typed, file, defaults), not a read-back.
@@ -58,6 +60,7 @@ private:
     const ParameterSchema& m_schema;
     ParameterSpec m_spec;
     std::optional<Axis> m_axis;
+    QString m_axisName; // empty: axisName(*m_axis)
     QLineEdit* m_line = nullptr;
     QCheckBox* m_check = nullptr;
     QComboBox* m_combo = nullptr;

@@ -178,7 +178,7 @@ QWidget* SetupPage::buildGroup(const QString& group)
         anyPerAxis = anyPerAxis || (spec.group == group && spec.perAxis);
     if (anyPerAxis) {
         for (int i = 0; i < axes.size(); ++i) {
-            auto* header = new QLabel(axisName(axes[i]), box);
+            auto* header = new QLabel(m_context->controllerAxisName(axes[i]), box);
             header->setAlignment(Qt::AlignCenter);
             QFont f = header->font();
             f.setBold(true);
@@ -195,6 +195,8 @@ QWidget* SetupPage::buildGroup(const QString& group)
         grid->addWidget(label, row, 0);
         auto add = [&](std::optional<Axis> axis, int column, int span) {
             auto* f = new ParameterField(m_schema, spec, axis, box);
+            if (axis)
+                f->setAxisName(m_context->controllerAxisName(*axis));
             connect(f, &ParameterField::edited, this, &SetupPage::refreshButtons);
             m_fields << f;
             grid->addWidget(f, row, column, 1, span);
@@ -349,7 +351,8 @@ bool SetupPage::writeSet(const ParameterSet& set, bool verify, bool confirm)
     }
     auto* dialog =
         new WritePreview(m_schema, set, m_context->session()->spec().options.axisAddresses,
-                         {m_context->readBackParameters(), m_context->knownParameters()}, window());
+                         {m_context->readBackParameters(), m_context->knownParameters()},
+                         m_context->session()->spec().options.axisNames, window());
     connect(dialog, &QDialog::finished, this, [this, set, verify](int result) {
         if (result == QDialog::Accepted)
             send(set, verify);
@@ -393,7 +396,9 @@ void SetupPage::onResult(const CommandResult& result)
         m_pendingWrite = 0;
         if (result.ok()) {
             // The context now knows the values (its baselines follow, applyKnown()).
-            setMessage(WriteResultText::success(m_schema, m_pendingSet, m_pendingVerify), false);
+            setMessage(WriteResultText::success(m_schema, m_pendingSet, m_pendingVerify,
+                                                m_context->session()->spec().options.axisNames),
+                       false);
         } else {
             setMessage(tr("Write failed: %1").arg(result.message), true);
         }

@@ -61,7 +61,10 @@ DiffDialog* SetupPage::loadFile(const QString& path)
     ParameterSet current;
     formValues(&current, nullptr);
     const QString name = QFileInfo(path).fileName();
-    auto* dialog = new DiffDialog(DiffDialog::compare(m_schema, current, loaded), name, window());
+    auto* dialog =
+        new DiffDialog(DiffDialog::compare(m_schema, current, loaded,
+                                           m_context->session()->spec().options.axisNames),
+                       name, window());
     connect(dialog, &QDialog::finished, this, [this, loaded, name](int choice) {
         if (choice == DiffDialog::Cancel)
             return;

@@ -50,7 +50,7 @@ QString oldText(const ParameterSpec& spec, const WritePreview::OnDevice& onDevic
 
 QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const ParameterSet& set,
                                             const QMap<Axis, int>& driveAddresses,
-                                            const OnDevice& onDevice)
+                                            const OnDevice& onDevice, const AxisNames& names)
 {
     QMap<QString, QList<Row>> byDrive; // grouped per drive, drives in axis order
     QList<Row> global;
@@ -65,13 +65,15 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
             continue;
         }
         for (auto a = v.perAxis.cbegin(); a != v.perAxis.cend(); ++a) {
-            const QString drive =
-                driveAddresses.contains(a.key())
-                    ? tr("Drive %1 (%2)").arg(driveAddresses.value(a.key())).arg(axisName(a.key()))
-                    : axisName(a.key());
-            byDrive[QString::number(int(a.key())) + drive] << Row{
-                drive, ParameterSchema::displayText(spec.label), oldText(spec, onDevice, a.key()),
-                shown(spec, a.value()), ParameterSchema::displayUnitColumn(spec)};
+            const QString drive = driveAddresses.contains(a.key())
+                                      ? tr("Drive %1 (%2)")
+                                            .arg(driveAddresses.value(a.key()))
+                                            .arg(names.name(a.key()))
+                                      : names.name(a.key());
+            byDrive[QStringLiteral("%1").arg(a.key().index(), 3, 10, QLatin1Char('0')) + drive]
+                << Row{drive, ParameterSchema::displayText(spec.label),
+                       oldText(spec, onDevice, a.key()), shown(spec, a.value()),
+                       ParameterSchema::displayUnitColumn(spec)};
         }
     }
     QList<Row> out = global;
@@ -82,12 +84,12 @@ QList<WritePreview::Row> WritePreview::rows(const ParameterSchema& schema, const
 
 WritePreview::WritePreview(const ParameterSchema& schema, const ParameterSet& set,
                            const QMap<Axis, int>& driveAddresses, const OnDevice& onDevice,
-                           QWidget* parent)
+                           const AxisNames& names, QWidget* parent)
     : QDialog(parent), m_table(new QTableWidget(this))
 {
     setObjectName(QStringLiteral("writePreview"));
     setWindowTitle(tr("Write parameters"));
-    const QList<Row> list = rows(schema, set, driveAddresses, onDevice);
+    const QList<Row> list = rows(schema, set, driveAddresses, onDevice, names);
     auto* intro = new QLabel(
         tr("These %n value(s) will be sent, and nothing else:", nullptr, int(list.size())), this);
     intro->setWordWrap(true);

@@ -1,4 +1,5 @@
 #pragma once
+#include "model/AxisNames.h"
 #include "model/ParameterSchema.h"
 #include <QDialog>
 
@@ -28,13 +29,15 @@ public:
         ParameterSet readBack;
         ParameterSet known;
     };
-    // driveAddresses: bus address per axis (empty: rows name the axis only).
+    // driveAddresses: bus address per axis (empty: rows name the axis only); names: the
+    // controller's names of its axes.
     static QList<Row> rows(const ParameterSchema& schema, const ParameterSet& set,
-                           const QMap<Axis, int>& driveAddresses, const OnDevice& onDevice = {});
+                           const QMap<Axis, int>& driveAddresses, const OnDevice& onDevice = {},
+                           const AxisNames& names = {});
 
     WritePreview(const ParameterSchema& schema, const ParameterSet& set,
                  const QMap<Axis, int>& driveAddresses, const OnDevice& onDevice,
-                 QWidget* parent = nullptr);
+                 const AxisNames& names, QWidget* parent = nullptr);
 
     QTableWidget* table() const { return m_table; }
     int rowCount() const;

@@ -2,7 +2,8 @@
 
 namespace stepdeck::ui {
 
-QString WriteResultText::describe(const ParameterSchema& schema, const ParameterSet& set)
+QString WriteResultText::describe(const ParameterSchema& schema, const ParameterSet& set,
+                                  const AxisNames& names)
 {
     QStringList parts;
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
@@ -10,7 +11,7 @@ QString WriteResultText::describe(const ParameterSchema& schema, const Parameter
         const QString label = spec ? ParameterSchema::displayLabel(*spec) : it.key();
         QStringList axes;
         for (auto a = it.value().perAxis.cbegin(); a != it.value().perAxis.cend(); ++a)
-            axes << axisName(a.key());
+            axes << names.name(a.key());
         parts << (axes.isEmpty()
                       ? label
                       : QStringLiteral("%1 (%2)").arg(label, axes.join(QStringLiteral(", "))));
@@ -29,10 +30,10 @@ bool WriteResultText::anyVerifiable(const ParameterSchema& schema, const Paramet
 }
 
 QString WriteResultText::success(const ParameterSchema& schema, const ParameterSet& set,
-                                 bool verify)
+                                 bool verify, const AxisNames& names)
 {
     if (!verify)
-        return tr("Written: %1.").arg(describe(schema, set));
+        return tr("Written: %1.").arg(describe(schema, set, names));
     ParameterSet readBack;
     ParameterSet writeOnly;
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
@@ -42,12 +43,13 @@ QString WriteResultText::success(const ParameterSchema& schema, const ParameterS
     if (readBack.isEmpty())
         return tr("Written: %1. Nothing could be verified: this controller cannot read these "
                   "values back.")
-            .arg(describe(schema, writeOnly));
+            .arg(describe(schema, writeOnly, names));
     if (writeOnly.isEmpty())
-        return tr("Written and verified by reading back: %1.").arg(describe(schema, readBack));
+        return tr("Written and verified by reading back: %1.")
+            .arg(describe(schema, readBack, names));
     return tr("Written and verified by reading back: %1. Written but not verified (this "
               "controller cannot read them back): %2.")
-        .arg(describe(schema, readBack), describe(schema, writeOnly));
+        .arg(describe(schema, readBack, names), describe(schema, writeOnly, names));
 }
 
 } // namespace stepdeck::ui

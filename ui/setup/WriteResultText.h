@@ -1,4 +1,5 @@
 #pragma once
+#include "model/AxisNames.h"
 #include "model/ParameterSchema.h"
 #include <QCoreApplication>
 
@@ -13,12 +14,15 @@ class WriteResultText
     Q_DECLARE_TR_FUNCTIONS(stepdeck::ui::WriteResultText)
 public:
     // set: what was written; verify: it was a Write & verify.
-    static QString success(const ParameterSchema& schema, const ParameterSet& set, bool verify);
+    // names: the controller's names of its axes.
+    static QString success(const ParameterSchema& schema, const ParameterSet& set, bool verify,
+                           const AxisNames& names = {});
     // Something in set can be read back, so a Write & verify verifies it (issue 31: a
     // write-only controller's "verifying" message would promise what it cannot do).
     static bool anyVerifiable(const ParameterSchema& schema, const ParameterSet& set);
     // "Max speed (X, Y, Z), Drive power": the parameters by their translated labels.
-    static QString describe(const ParameterSchema& schema, const ParameterSet& set);
+    static QString describe(const ParameterSchema& schema, const ParameterSet& set,
+                            const AxisNames& names = {});
 };
 
 } // namespace stepdeck::ui

@@ -197,7 +197,7 @@ QWidget* StatusPanel::buildAxesGroup()
     auto* grid = new QGridLayout(group);
     int column = 1;
     for (Axis axis : m_context->axes()) {
-        auto* name = new QLabel(axisName(axis), group);
+        auto* name = new QLabel(m_context->controllerAxisName(axis), group);
         QFont bold = name->font();
         bold.setBold(true);
         name->setFont(bold);
@@ -211,7 +211,8 @@ QWidget* StatusPanel::buildAxesGroup()
         column = 1;
         for (Axis axis : m_context->axes()) {
             auto* lamp = new LedIndicator({}, group);
-            lamp->setToolTip(QStringLiteral("%1: %2").arg(axisName(axis), tr(f.tip)));
+            lamp->setToolTip(
+                QStringLiteral("%1: %2").arg(m_context->controllerAxisName(axis), tr(f.tip)));
             m_axes[axis].insert(QString::fromLatin1(f.key), lamp);
             grid->addWidget(lamp, row, column++, Qt::AlignCenter);
         }

@@ -14,7 +14,7 @@ namespace {
 // The table: its reference switches are the simulator's (negative ends), each run ends at 0.
 const char kMachine[] = R"json({
   "format": "stepdeck-machine",
-  "version": 1,
+  "version": 2,
   "name": "Demo plotter (simulated)",
   "controllers": [
     { "id": "table", "model": "elab", "port": "sim", "setup": "demo-table.setup.json" }

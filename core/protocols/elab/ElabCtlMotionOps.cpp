@@ -135,7 +135,7 @@ void ElabCtlMotionOps::correctPositions(const AxisVector& stopped)
     etx.onReply = [this, stopped](const Reply& r) {
         for (auto it = stopped.cbegin(); it != stopped.cend(); ++it) {
             AxisStatus& axis = m_line.status().axes[it.key()];
-            axis.position -= r.positions[size_t(it.key())];
+            axis.position -= r.positions[wireIndex(it.key())];
             axis.positionEstimated = false;
         }
         m_line.hooks().publish();

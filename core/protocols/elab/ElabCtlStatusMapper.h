@@ -12,7 +12,7 @@ class ElabCtlStatusMapper
     Q_DECLARE_TR_FUNCTIONS(stepdeck::elab::ElabCtlStatusMapper)
 public:
     static const QList<Axis>& axes(); // X, Y, Z (boardAxes())
-    static int index(Axis axis) { return int(axis); }
+    static int index(Axis axis) { return wireIndex(axis); }
 
     // RequestMachineState (tm* bits). hostPanic: the host sent ForcePanicStop and nothing has
     // re-initialised the machine since; status.panic stays true meanwhile.

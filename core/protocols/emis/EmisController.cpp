@@ -352,7 +352,7 @@ void EmisController::syncStatus()
         a.limitSwitch = false; // the SMC-IC4 has no limit switch inputs
         // 5.2.1: inputs 1-4 are the reference switches X, Y, Z, U; a normally open switch is
         // active at high level, a normally closed one at low level.
-        const int index = int(it.key());
+        const int index = axisNumber(it.key()) - 1; // IN1..IN4 (5.2.2)
         const bool level = s.inputs && index < s.inputs->size() && s.inputs->at(index);
         a.referenceSwitch = m_known.switchNc.value(it.key(), false) ? !level : level;
         busy = busy || running;

@@ -202,7 +202,7 @@ void EmisMotionTracker::checkDeadlines()
                "the machine's emergency stop if it does); its position is unknown until it is "
                "referenced")
                 .arg(axisName(it.key()))
-                .arg(int(it.key()) + 1);
+                .arg(axisNumber(it.key()));
         Q_EMIT m_host.controller().errorOccurred(why);
         if (t.jogChunk)
             m_hooks.chunkLost(why);

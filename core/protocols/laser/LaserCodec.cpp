@@ -72,16 +72,8 @@ std::optional<Axis> axisFromNumber(int number)
 
 int axisNumber(Axis axis)
 {
-    switch (axis) {
-    case Axis::X:
-        return 1;
-    case Axis::Y:
-        return 2;
-    case Axis::Z:
-        return 3;
-    default:
-        return 0;
-    }
+    // Axis numbers 1..3 for the first three axes ("up to 3 motoraxis"); 0: none.
+    return axis.index() < 3 ? axis.index() + 1 : 0;
 }
 
 bool isValidPosition(qint64 position)

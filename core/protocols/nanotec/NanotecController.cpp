@@ -75,7 +75,12 @@ ParameterSchema NanotecController::schema() const
 
 QString NanotecController::driveName(Axis axis) const
 {
-    return tr("drive %1 (axis %2)").arg(m_drives.value(axis).address).arg(axisName(axis));
+    return tr("drive %1 (axis %2)").arg(m_drives.value(axis).address).arg(nameOf(axis));
+}
+
+QString NanotecController::nameOf(Axis axis) const
+{
+    return options().axisNames.name(axis);
 }
 
 void NanotecController::setPollInterval(int ms)
@@ -100,8 +105,9 @@ void NanotecController::finishWith(RequestId id, const Failure& failure, const Q
 
 HostDrive* NanotecController::driveFor(const QVariantMap& args, RequestId id)
 {
+    // The operator's name ("feeder", issue 32) or the default name the window sends.
     const auto axis =
-        axisFromName(args.value(operation::arg::kAxis, QStringLiteral("X")).toString());
+        options().axisNames.find(args.value(operation::arg::kAxis, QStringLiteral("X")).toString());
     if (!axis || !m_drives.contains(*axis)) {
         finishError(id, ErrorKind::InvalidValue,
                     tr("unknown axis '%1' (this machine has %2)")
@@ -109,7 +115,7 @@ HostDrive* NanotecController::driveFor(const QVariantMap& args, RequestId id)
                         .arg([this] {
                             QStringList n;
                             for (Axis a : m_drives.keys())
-                                n << axisName(a);
+                                n << options().axisNames.name(a);
                             return n.join(QLatin1Char(','));
                         }()));
         return nullptr;

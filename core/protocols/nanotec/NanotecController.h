@@ -123,6 +123,8 @@ private:
 
     void onTransportOpened();
     void finishWith(RequestId id, const Failure& failure, const QVariant& value = {});
+    // The axis' name in messages: the operator's ("feeder", issue 32) or the default.
+    QString nameOf(Axis axis) const;
     QString driveName(Axis axis) const;
     qint64 nowMs() const { return m_clock.elapsed(); } // for m_held
     // The drive named by args["axis"] (default X), or null after failing the request.

@@ -10,8 +10,8 @@ Step NanotecExchange::exchange(Axis axis, const QByteArray& body, Check check,
 {
     return [this, axis, body, check, priority, retries, timeoutMs](const Done& done) {
         if (!m_ctl.m_drives.contains(axis))
-            return done(
-                {ErrorKind::InvalidValue, tr("this machine has no axis %1").arg(axisName(axis))});
+            return done({ErrorKind::InvalidValue,
+                         tr("this machine has no axis %1").arg(m_ctl.nameOf(axis))});
         NanotecBus::Request r;
         r.address = m_ctl.m_drives[axis].address; // looked up now: 'm' may have moved the drive
         r.body = body;

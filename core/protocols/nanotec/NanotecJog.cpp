@@ -40,7 +40,7 @@ QList<Step> NanotecJog::rampDownSteps(HostDrive& d, NanotecBus::Priority priorit
             Q_EMIT m_ctl.errorOccurred(
                 tr("axis %1 was stopped at speed (ramp too long); its position "
                    "is suspect until referenced")
-                    .arg(axisName(axis)));
+                    .arg(m_ctl.nameOf(axis)));
             done({});
         };
     }
@@ -85,7 +85,7 @@ void NanotecJog::applyJogVelocity(const AxisVelocities& stepsPerS)
         if (d.velocityMove) {
             if (it.value() != 0)
                 Q_EMIT m_ctl.jogRefused(
-                    tr("axis %1 is in a velocity move; stop it first").arg(axisName(it.key())));
+                    tr("axis %1 is in a velocity move; stop it first").arg(m_ctl.nameOf(it.key())));
             continue;
         }
         d.jogDesired = it.value();
@@ -107,7 +107,8 @@ Done NanotecJog::jogDone(Axis axis, JogPhase next, double applied)
             const bool commFault = f.kind == ErrorKind::Timeout || f.kind == ErrorKind::Protocol ||
                                    f.kind == ErrorKind::LinkDown;
             if (commFault)
-                Q_EMIT m_ctl.errorOccurred(tr("jog on axis %1: %2").arg(axisName(axis), f.message));
+                Q_EMIT m_ctl.errorOccurred(
+                    tr("jog on axis %1: %2").arg(m_ctl.nameOf(axis), f.message));
             else
                 Q_EMIT m_ctl.jogRefused(f.message);
             // 'A' or a speed change may have reached the drive: never leave it running

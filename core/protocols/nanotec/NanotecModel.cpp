@@ -93,7 +93,7 @@ ModelPresentation presentation()
     ModelPresentation p;
     p.statusWords = [] {
         QList<StatusWordInfo> words;
-        for (Axis axis : allAxes()) {
+        for (Axis axis : letterAxes()) {
             StatusWordInfo w;
             w.key = QStringLiteral("status") + axisName(axis);
             w.title = QCoreApplication::translate("stepdeck::nanotec::Presentation",

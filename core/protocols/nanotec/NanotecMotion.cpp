@@ -14,7 +14,7 @@ QString NanotecMotion::unknownAxes(const QList<Axis>& axes) const
 {
     for (Axis a : axes) {
         if (!m_ctl.m_drives.contains(a))
-            return tr("this machine has no axis %1").arg(axisName(a));
+            return tr("this machine has no axis %1").arg(m_ctl.nameOf(a));
     }
     return {};
 }
@@ -22,7 +22,7 @@ QString NanotecMotion::unknownAxes(const QList<Axis>& axes) const
 QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition, bool referenceRun) const
 {
     if (!m_ctl.m_drives.contains(axis))
-        return tr("this machine has no axis %1").arg(axisName(axis));
+        return tr("this machine has no axis %1").arg(m_ctl.nameOf(axis));
     if (m_ctl.m_panic)
         return tr("emergency stop is active; reset it first");
     const HostDrive& d = m_ctl.m_drives[axis];
@@ -30,10 +30,10 @@ QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition, bool referen
         return tr("%1 is not answering").arg(m_ctl.driveName(axis));
     if (d.jog != JogPhase::Idle)
         return tr("axis %1 runs in speed mode (jog or velocity move); stop it first")
-            .arg(axisName(axis));
+            .arg(m_ctl.nameOf(axis));
     const DriveState s = decodeStatus(d.status.value_or(0x01));
     if (d.motionPending || !s.ready)
-        return tr("axis %1 is still moving (the drive is not ready)").arg(axisName(axis));
+        return tr("axis %1 is still moving (the drive is not ready)").arg(m_ctl.nameOf(axis));
     if (s.positionError && !referenceRun) {
         const QString how =
             m_ctl.options().actionNames.value(QStringLiteral("reset-position-error"));
@@ -44,7 +44,7 @@ QString NanotecMotion::motionRefusal(Axis axis, bool needsPosition, bool referen
     }
     if (needsPosition && !m_ctl.status().axes.value(axis).positionKnown)
         return tr("absolute move refused: position of axis %1 is unknown, reference it first")
-            .arg(axisName(axis));
+            .arg(m_ctl.nameOf(axis));
     return {};
 }
 
@@ -62,7 +62,7 @@ void NanotecMotion::moveRelative(RequestId id, const AxisVector& steps)
         if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
             return m_ctl.finishError(id, ErrorKind::InvalidValue,
                                      tr("move of axis %1: %2 steps exceed the 32-bit range (6.7)")
-                                         .arg(axisName(it.key()))
+                                         .arg(m_ctl.nameOf(it.key()))
                                          .arg(it.value()));
         const QString why = motionRefusal(it.key(), false);
         if (!why.isEmpty())
@@ -93,7 +93,7 @@ void NanotecMotion::moveAbsolute(RequestId id, const AxisVector& targets)
         if (qAbs(it.value()) > std::numeric_limits<qint32>::max())
             return m_ctl.finishError(
                 id, ErrorKind::InvalidValue,
-                tr("target of axis %1 exceeds the 32-bit range (6.7)").arg(axisName(it.key())));
+                tr("target of axis %1 exceeds the 32-bit range (6.7)").arg(m_ctl.nameOf(it.key())));
         const QString why = motionRefusal(it.key(), true);
         if (!why.isEmpty())
             return m_ctl.finishError(id, ErrorKind::Refused, why);
@@ -216,7 +216,7 @@ QString NanotecMotion::belowStartFrequency(Axis axis, double stepsPerS) const
     if (stepsPerS == 0 || qAbs(stepsPerS) >= double(u))
         return {};
     return tr("axis %1: %2 steps/s is below the drive's start frequency u=%3 steps/s; refused")
-        .arg(axisName(axis))
+        .arg(m_ctl.nameOf(axis))
         .arg(qAbs(stepsPerS))
         .arg(u);
 }
@@ -232,7 +232,7 @@ void NanotecMotion::velocityMove(RequestId id, const AxisVector& stepsPerS)
         if (qAbs(it.value()) > kMaxFrequency)
             return m_ctl.finishError(id, ErrorKind::InvalidValue,
                                      tr("velocity of axis %1: %2 steps/s is outside 0..25000 (6.9)")
-                                         .arg(axisName(it.key()))
+                                         .arg(m_ctl.nameOf(it.key()))
                                          .arg(it.value()));
         if (it.value() == 0 && m_ctl.m_drives.contains(it.key()))
             continue;

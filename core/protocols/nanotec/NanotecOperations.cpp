@@ -143,7 +143,7 @@ void NanotecOperations::modelOperation(RequestId id, const QString& name, const 
         QMap<Axis, int> dirs;
         const QVariantMap axes = args.value(operation::arg::kAxes).toMap();
         for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
-            if (const auto axis = axisFromName(it.key()))
+            if (const auto axis = m_ctl.options().axisNames.find(it.key()))
                 dirs.insert(*axis, it.value().toInt());
         }
         return m_ctl.m_motion.referenceWithType(

@@ -319,7 +319,7 @@ void NanotecStatus::noteAnswer(HostDrive& d, bool answered)
                 Q_EMIT m_ctl.errorOccurred(
                     tr("%1 answers again after a silence: it may have been switched off and on; "
                        "its position is unknown, reference axis %2")
-                        .arg(m_ctl.driveName(d.axis), axisName(d.axis)));
+                        .arg(m_ctl.driveName(d.axis), m_ctl.nameOf(d.axis)));
             }
         }
         return;

@@ -158,13 +158,15 @@ void TestCliArguments::parse_usageErrors_data()
     QTest::newRow("dash word is no number") << QStringList{"output", "-x"} << "unknown option '-x'";
     QTest::newRow("address fraction")
         << QStringList{"--address", "2.5", "status"} << "--address needs a non-negative number";
-    QTest::newRow("axes not a number")
-        << QStringList{"--axes", "X=abc", "status"} << "--axes: X: 'abc' is not a decimal number";
+    QTest::newRow("axes not a number") << QStringList{"--axes", "X=abc", "status"}
+                                       << "--axes: X: 'abc' is not a whole bus address";
     QTest::newRow("axes nan") << QStringList{"--axes", "X=nan", "status"} << "--axes: X:";
     QTest::newRow("axes unknown axis")
-        << QStringList{"--axes", "Q=1", "status"} << "--axes: this machine has no axis Q";
+        << QStringList{"--axes", "Q=1", "status"} << "--axes: 'Q' is not an axis name";
     QTest::newRow("axes not an assignment")
-        << QStringList{"--axes", "XY=1", "status"} << "expected AXIS=VALUE";
+        << QStringList{"--axes", "feeder", "status"} << "expected NAME=ADDRESS";
+    QTest::newRow("axes name twice")
+        << QStringList{"--axes", "feeder=5,FEEDER=6", "status"} << "--axes: FEEDER is given twice";
     QTest::newRow("address and axes")
         << QStringList{"--address", "2", "--axes", "X=1", "status"} << "either --address or --axes";
     QTest::newRow("reset line") << QStringList{"--reset-line", "cts", "reset"}
@@ -208,6 +210,18 @@ void TestCliArguments::parse_globalValues()
     QCOMPARE(options.resetLine, LineSettings::ResetLine::Dtr);
     QCOMPARE(options.arrivalTimeoutMs, 900);
     QVERIFY(!options.address);
+    QVERIFY(options.axisNames.isEmpty());
+
+    // Issue 32: names for the drives, in order.
+    CliOptions named;
+    QVERIFY2(parseArguments({"stepdeck-cli", "--model", "nanotec", "--axes",
+                             "feeder=5,gate=6,axis5=9", "status"},
+                            commandSyntax(), &named, &error),
+             qPrintable(error));
+    QCOMPARE(named.axisAddresses, (QMap<Axis, int>{{Axis::X, 5}, {Axis::Y, 6}, {Axis::at(4), 9}}));
+    QCOMPARE(named.axisNames.name(Axis::X), QStringLiteral("feeder"));
+    QCOMPARE(named.axisNames.name(Axis::Y), QStringLiteral("gate"));
+    QCOMPARE(named.axisNames.name(Axis::at(4)), QStringLiteral("axis5"));
 
     for (const QStringList& args :
          {QStringList{"--help"}, QStringList{"status", "-h"}, QStringList{"--version"}}) {

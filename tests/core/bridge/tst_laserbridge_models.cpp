@@ -39,7 +39,7 @@ qint64 deviceFromReference(LaserBridgeRig& rig, const QString& model, Axis axis)
     if (model == QLatin1String("elab"))
         return rig.simOnPty<elab::ElabSimulator>()->position(axis) - kElabReference;
     if (model == QLatin1String("nanotec"))
-        return rig.simOnPty<nanotec::NanotecSimulator>()->drive(int(axis) + 1)->position();
+        return rig.simOnPty<nanotec::NanotecSimulator>()->drive(axis.index() + 1)->position();
     if (model == QLatin1String("emis"))
         return rig.simOnPty<emis::EmisSimulator>()->position(axis);
     return rig.simOnPty<LaserAxisSimulator>()->position(axis);

@@ -27,8 +27,14 @@ MachineDescription table(const QList<MachineAxis>& axes)
 {
     MachineDescription d;
     d.name = QStringLiteral("Table");
-    d.controllers = {
-        {QStringLiteral("table"), QStringLiteral("elab"), QStringLiteral("sim"), {}, {}, {}, {}}};
+    d.controllers = {{QStringLiteral("table"),
+                      QStringLiteral("elab"),
+                      QStringLiteral("sim"),
+                      {},
+                      {},
+                      {},
+                      {},
+                      {}}};
     d.axes = axes;
     return d;
 }

@@ -118,11 +118,12 @@ MachineDescription TestMachine::description() const
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
     MachineController table{
-        QStringLiteral("table"), QStringLiteral("elab"), m_elab->path(), {}, {}, {}, {}};
+        QStringLiteral("table"), QStringLiteral("elab"), m_elab->path(), {}, {}, {}, {}, {}};
     MachineController rotary{QStringLiteral("rotary"),
                              QStringLiteral("nanotec"),
                              m_nanotec->path(),
                              {{Axis::X, 1}},
+                             {},
                              {},
                              {},
                              {}};
@@ -299,8 +300,8 @@ void TestMachine::jog_laserAxisByTargets_withElab_oneInputEndsBoth()
     });
     MachineDescription d;
     d.name = QStringLiteral("Table and marker");
-    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}},
-                     {"marker", "laser-axis", laser.path(), {}, {}, {}, {}}};
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}, {}},
+                     {"marker", "laser-axis", laser.path(), {}, {}, {}, {}, {}}};
     d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
               test::machineAxis("U", "marker", Axis::X, AxisUnit::Step, 1)};
     m_machine = std::make_unique<Machine>();

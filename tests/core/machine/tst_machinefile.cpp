@@ -3,6 +3,7 @@
 #include "machine/MachineFile.h"
 #include "protocols/Registry.h"
 #include <QDir>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -85,6 +86,10 @@ private Q_SLOTS:
     void parse_brokenJson_givesLineAndColumn();
     void parse_emptyFile_saysSo();
     void saveAndLoad_roundTrip_equal();
+    void version1_busObject_readAsItStandsWrittenAsVersion2();
+    void version2_namedBus_readWrittenAndReadBack();
+    void version2_namedBus_invalid_namesTheField_data();
+    void version2_namedBus_invalid_namesTheField();
     void spindle_maxRpm_roundTripAndOldFilesUnchanged();
     void spindle_maxRpmWithoutASpindleController_refused();
     void crossControllerFeed_roundTripAndOldFilesUnchanged();
@@ -139,8 +144,8 @@ void TestMachineFile::parse_invalid_namesTheField_data()
 
     QTest::newRow("wrong format") << withEdit("format", "stepdeck-parameters") << "format"
                                   << "stepdeck-machine";
-    QTest::newRow("version 2") << withEdit("version", 2) << "version"
-                               << "must be 1";
+    QTest::newRow("version 3") << withEdit("version", 3) << "version"
+                               << "must be 1 or 2";
     QTest::newRow("no name") << withEdit("name", {}, true) << "name"
                              << "missing";
     QTest::newRow("unknown top key") << withEdit("axis", QJsonArray()) << "axis"
@@ -198,7 +203,7 @@ void TestMachineFile::parse_invalid_namesTheField_data()
     QTest::newRow("elab has no U") << withEdit("axes.2.axis", "U") << "axes[2].axis"
                                    << "has no axis U";
     QTest::newRow("axis word") << withEdit("axes.2.axis", "x") << "axes[2].axis"
-                               << "controller axis";
+                               << "not an axis of its controller";
     QTest::newRow("controller axis twice") << withEdit("axes.1.axis", "X") << "axes[1].axis"
                                            << "already drives";
     QTest::newRow("unit inch") << withEdit("axes.0.unit", "inch") << "axes[0].unit"
@@ -332,6 +337,146 @@ void TestMachineFile::saveAndLoad_roundTrip_equal()
     QVERIFY(error.message.contains("missing.json"));
 }
 
+// Issue 32: a version 1 bus object {"X": 1} reads as the same axes and addresses and is
+// written back as version 2, a list in axis order, which reads back equal.
+void TestMachineFile::version1_busObject_readAsItStandsWrittenAsVersion2()
+{
+    MachineFileError error;
+    QJsonObject v1 = tableAndRotary();
+    QJsonArray controllers = v1.value("controllers").toArray();
+    QJsonObject rotary = controllers.at(1).toObject();
+    rotary.insert("axes", QJsonObject{{"Y", 7}, {"X", 1}});
+    controllers[1] = rotary;
+    v1.insert("controllers", controllers);
+    const std::optional<MachineDescription> old = MachineFile::parse(bytes(v1), &error);
+    QVERIFY2(old, qPrintable(error.text()));
+    QCOMPARE(old->controllers.at(1).busAddresses, (QMap<Axis, int>{{Axis::X, 1}, {Axis::Y, 7}}));
+    QVERIFY(old->controllers.at(1).axisNames.isEmpty());
+    const QJsonObject written = old->toJson();
+    QCOMPARE(written.value("version").toInt(), 2);
+    const QJsonArray bus =
+        written.value("controllers").toArray().at(1).toObject().value("axes").toArray();
+    QCOMPARE(bus, (QJsonArray{QJsonObject{{"name", "X"}, {"address", 1}},
+                              QJsonObject{{"name", "Y"}, {"address", 7}}}));
+    const std::optional<MachineDescription> back = MachineFile::parse(bytes(written), &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *old);
+    // A version 2 file does not take the version 1 object, nor version 1 the list.
+    QJsonObject mixed = written;
+    mixed.insert("version", 1);
+    QVERIFY(!MachineFile::parse(bytes(mixed), &error));
+    QCOMPARE(error.field, QStringLiteral("controllers[1].axes"));
+    v1.insert("version", 2);
+    QVERIFY(!MachineFile::parse(bytes(v1), &error));
+    QCOMPARE(error.field, QStringLiteral("controllers[1].axes"));
+}
+
+namespace {
+// The rotary controller as a named bus: lift (5), tilt (6); machine axis A is tilt.
+QJsonObject namedBus(const QJsonArray& bus, const QString& axisOfA)
+{
+    QJsonObject o = tableAndRotary();
+    o.insert("version", 2);
+    QJsonArray controllers = o.value("controllers").toArray();
+    QJsonObject rotary = controllers.at(1).toObject();
+    rotary.insert("axes", bus);
+    controllers[1] = rotary;
+    o.insert("controllers", controllers);
+    QJsonArray axes = o.value("axes").toArray();
+    QJsonObject a = axes.at(3).toObject();
+    a.insert("axis", axisOfA);
+    axes[3] = a;
+    o.insert("axes", axes);
+    return o;
+}
+
+QJsonArray liftAndTilt()
+{
+    return {QJsonObject{{"name", "lift"}, {"address", 5}},
+            QJsonObject{{"name", "tilt"}, {"address", 6}}};
+}
+} // namespace
+
+void TestMachineFile::version2_namedBus_readWrittenAndReadBack()
+{
+    MachineFileError error;
+    const std::optional<MachineDescription> m =
+        MachineFile::parse(bytes(namedBus(liftAndTilt(), "tilt")), &error);
+    QVERIFY2(m, qPrintable(error.text()));
+    const MachineController& rotary = m->controllers.at(1);
+    QCOMPARE(rotary.busAddresses, (QMap<Axis, int>{{Axis::X, 5}, {Axis::Y, 6}}));
+    QCOMPARE(rotary.axisNames.name(Axis::X), QStringLiteral("lift"));
+    QCOMPARE(rotary.axisNames.name(Axis::Y), QStringLiteral("tilt"));
+    QCOMPARE(m->axis("A")->axis, Axis::Y);
+    const QJsonObject written = m->toJson();
+    QCOMPARE(written.value("axes").toArray().at(3).toObject().value("axis").toString(),
+             QStringLiteral("tilt"));
+    QCOMPARE(written.value("controllers").toArray().at(1).toObject().value("axes").toArray(),
+             liftAndTilt());
+    QTemporaryDir dir;
+    const QString path = dir.filePath("named.machine.json");
+    QString why;
+    QVERIFY2(MachineFile::save(*m, path, &why), qPrintable(why));
+    const std::optional<MachineDescription> back = MachineFile::load(path, &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *m);
+    // The names are part of the machine: renaming a drive is a change (the editor's
+    // "modified"), and Machine passes them to the controller's options.
+    MachineDescription renamed = *m;
+    QVERIFY(renamed.controllers[1].axisNames.setName(Axis::X, QStringLiteral("raise"), &why));
+    QVERIFY(!(renamed == *m));
+}
+
+void TestMachineFile::version2_namedBus_invalid_namesTheField_data()
+{
+    QTest::addColumn<QJsonArray>("bus");
+    QTest::addColumn<QString>("axisOfA");
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("says");
+    const QJsonArray good = liftAndTilt();
+    QTest::newRow("default name of the named axis") << good << "Y"
+                                                    << "axes[3].axis"
+                                                    << "not an axis of its controller";
+    QTest::newRow("name not on the bus") << good << "press"
+                                         << "axes[3].axis"
+                                         << "not an axis of its controller";
+    QTest::newRow("object form") << QJsonArray() << "tilt"
+                                 << "controllers[1].axes"
+                                 << "must list the controller's axes";
+    QTest::newRow("name twice") << QJsonArray{good.at(0),
+                                              QJsonObject{{"name", "LIFT"}, {"address", 6}}}
+                                << "lift"
+                                << "controllers[1].axes"
+                                << "LIFT is given twice";
+    QTest::newRow("bad name") << QJsonArray{QJsonObject{{"name", "2nd"}, {"address", 5}}} << "X"
+                              << "controllers[1].axes[0].name"
+                              << "must be X, Y, Z, U or a letter";
+    QTest::newRow("fractional address")
+        << QJsonArray{QJsonObject{{"name", "lift"}, {"address", 5.5}}} << "lift"
+        << "controllers[1].axes[0].address"
+        << "whole bus address";
+    QTest::newRow("unknown key") << QJsonArray{QJsonObject{{"name", "lift"}, {"adress", 5}}}
+                                 << "lift"
+                                 << "controllers[1].axes[0].adress"
+                                 << "did you mean address";
+    QTest::newRow("address twice")
+        << QJsonArray{good.at(0), QJsonObject{{"name", "tilt"}, {"address", 5}}} << "tilt"
+        << "controllers[1]"
+        << "";
+}
+
+void TestMachineFile::version2_namedBus_invalid_namesTheField()
+{
+    QFETCH(QJsonArray, bus);
+    QFETCH(QString, axisOfA);
+    QFETCH(QString, field);
+    QFETCH(QString, says);
+    MachineFileError error;
+    QVERIFY(!MachineFile::parse(bytes(namedBus(bus, axisOfA)), &error));
+    QVERIFY2(error.field.startsWith(field), qPrintable(error.text()));
+    QVERIFY2(error.message.contains(says), qPrintable(error.text()));
+}
+
 // Issue 29: "spindle": {"maxRpm": ...} is read, written and read back; a file without it
 // reads as before (no scale) and is written without the key, as older versions read it.
 void TestMachineFile::spindle_maxRpm_roundTripAndOldFilesUnchanged()
@@ -358,7 +503,7 @@ void TestMachineFile::spindle_maxRpm_roundTripAndOldFilesUnchanged()
     QVERIFY(!(*old == *scaled)); // the scale counts in equality (the editor's "modified")
     const QJsonObject written = old->toJson();
     QVERIFY(!written.contains("spindle"));
-    QCOMPARE(written.value("version").toInt(), 1);
+    QCOMPARE(written.value("version").toInt(), 2);
 }
 
 // Issue 30: "crossControllerFeed": false is read, written and read back; a file without it

@@ -24,7 +24,7 @@ MachineDescription table(const QString& port, double maxJogSpeed,
 {
     MachineDescription d;
     d.name = QStringLiteral("Jog table");
-    d.controllers = {{QStringLiteral("table"), QStringLiteral("elab"), port, {}, {}, {}, {}}};
+    d.controllers = {{QStringLiteral("table"), QStringLiteral("elab"), port, {}, {}, {}, {}, {}}};
     MachineAxis x;
     x.name = QStringLiteral("X");
     x.controller = QStringLiteral("table");

@@ -3,3 +3,5 @@ stepdeck_add_test(tst_machinestatus SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machin
 stepdeck_add_test(tst_numberparsing SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_numberparsing.cpp LABELS unit)
 stepdeck_add_test(tst_parameterfile SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_parameterfile.cpp LABELS unit)
 stepdeck_add_test(tst_nearestname SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nearestname.cpp LABELS unit)
+stepdeck_add_test(tst_axis SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_axis.cpp LABELS unit)
+stepdeck_add_test(tst_axisnames SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_axisnames.cpp LABELS unit)

@@ -79,8 +79,8 @@ inline MachineDescription ProgramRunnerFixture::description() const
 {
     MachineDescription d;
     d.name = QStringLiteral("Table with rotary axis");
-    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}},
-                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}, {}, {}}};
+    d.controllers = {{"table", "elab", m_elab->path(), {}, {}, {}, {}, {}},
+                     {"rotary", "nanotec", m_nanotec->path(), {{Axis::X, 1}}, {}, {}, {}, {}}};
     d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, 400),
               test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, 400),
               test::machineAxis("A", "rotary", Axis::X, AxisUnit::Degree, 100)};

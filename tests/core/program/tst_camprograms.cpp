@@ -85,7 +85,7 @@ bool TestCamPrograms::setUp(const QString& model)
     m_elab = std::make_unique<Device>(model);
     MachineDescription d;
     d.name = QStringLiteral("CAM table");
-    d.controllers = {{"table", model, m_elab->path(), {}, {}, {}, {}}};
+    d.controllers = {{"table", model, m_elab->path(), {}, {}, {}, {}, {}}};
     if (model == QLatin1String("elab"))
         d.spindle.maxRpm = 24000; // CAM programs' S in rpm (the SMC-IC4 has no spindle)
     d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
@@ -136,7 +136,7 @@ bool TestCamPrograms::prepare()
         return false;
     return m_elab->probe([&] {
         for (int i = 0; i < 3; ++i)
-            m_origin[i] = m_elab->sim()->position(Axis(i));
+            m_origin[i] = m_elab->sim()->position(Axis::at(i));
         return true;
     });
 }

@@ -77,7 +77,7 @@ bool TestProgramCoordinated::setUp(const QString& model)
     m_device = std::make_unique<test::PtyDevice>(model, emis ? QList<int>{1} : QList<int>{1, 2, 3});
     MachineDescription d;
     d.name = QStringLiteral("coordinated");
-    d.controllers = {{"table", model, m_device->path(), {}, {}, {}, {}}};
+    d.controllers = {{"table", model, m_device->path(), {}, {}, {}, {}, {}}};
     d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
               test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kStepsPerMm)};
     m_machine = std::make_unique<Machine>();

@@ -21,6 +21,7 @@ private Q_SLOTS:
 
     void driveList_showsThreeDrivesWithAxes();
     void driveList_silentDriveMarkedRed();
+    void driveList_sixNamedDrives_showsTheirNames();
     void driveList_sameStatus_tableNotRebuilt();
     void driveList_reconnect_showsDrivesAgain();
     void scan_listsDrivesOnTheBus();
@@ -71,6 +72,27 @@ void TestDrivePanel::driveList_silentDriveMarkedRed()
 
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, false); }));
     QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 0, 10000);
+}
+
+// Issue 32: six drives on one bus, named as the plant calls them: each row shows its drive's
+// name, and the sixth (an axis past the four letters) is polled and marked when it is silent.
+void TestDrivePanel::driveList_sixNamedDrives_showsTheirNames()
+{
+    m_f.reset();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    QTRY_COMPARE_WITH_TIMEOUT(panel()->driveTable()->rowCount(), 6, 5000);
+    const QStringList names{"feeder", "gate", "press", "lift", "tilt", "stacker"};
+    for (int r = 0; r < 6; ++r) {
+        QCOMPARE(text(r, ui::DrivePanel::Address), QString::number(r + 1));
+        QCOMPARE(text(r, ui::DrivePanel::Axes), names.at(r));
+    }
+    QCOMPARE(panel()->silentCount(), 0);
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(6, true); }));
+    QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 1, 10000);
+    QVERIFY(text(5, ui::DrivePanel::Responding).contains(QStringLiteral("NOT RESPONDING")));
+    QVERIFY(!text(4, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
 }
 
 // Every poll brings the same drives: the table keeps its items (rebuilding it and sizing its

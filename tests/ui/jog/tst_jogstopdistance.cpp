@@ -32,15 +32,22 @@ machine::MachineDescription tableAndRotary()
 {
     machine::MachineDescription d;
     d.name = QStringLiteral("Stop distance table");
-    d.controllers = {
-        {QStringLiteral("table"), QStringLiteral("elab"), QStringLiteral("sim"), {}, {}, {}, {}},
-        {QStringLiteral("rotary"),
-         QStringLiteral("nanotec"),
-         QStringLiteral("sim"),
-         {{Axis::X, 1}},
-         {},
-         {},
-         {}}};
+    d.controllers = {{QStringLiteral("table"),
+                      QStringLiteral("elab"),
+                      QStringLiteral("sim"),
+                      {},
+                      {},
+                      {},
+                      {},
+                      {}},
+                     {QStringLiteral("rotary"),
+                      QStringLiteral("nanotec"),
+                      QStringLiteral("sim"),
+                      {{Axis::X, 1}},
+                      {},
+                      {},
+                      {},
+                      {}}};
     d.axes = {axis("X", "table", Axis::X, machine::AxisUnit::Millimetre, 400, 10),
               axis("Z", "table", Axis::Z, machine::AxisUnit::Millimetre, 800, 5),
               axis("A", "rotary", Axis::X, machine::AxisUnit::Degree, 100, 90)};

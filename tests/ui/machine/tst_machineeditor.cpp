@@ -26,6 +26,7 @@ private Q_SLOTS:
     void crossControllerFeed_shownAndClicked_inTheMachine();
     void controllerId_renamed_axesFollow();
     void axisChoices_areTheControllersAxes();
+    void namedBus_axisChoicesByName_machineKeepsTheNames();
     void removeAxis_removesTheRowBeingEdited();
     void removeController_removesTheRowBeingEdited();
     void addAxis_takesFreeNameAndControllerAxis();
@@ -237,6 +238,35 @@ void TestMachineEditor::axisChoices_areTheControllersAxes()
     QCOMPARE(choices(3), QStringList{"X"});
 }
 
+// Issue 32: the bus cell names the drives; the axis column offers them by those names, and
+// the machine read from the editor keeps them (saved as a version 2 list).
+void TestMachineEditor::namedBus_axisChoicesByName_machineKeepsTheNames()
+{
+    auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
+    auto* combo = qobject_cast<QComboBox*>(editor->axesTable()->cell(3, "axis"));
+    typeInto(editor->controllersTable()->cell(1, "axes"), QStringLiteral("lift=5, tilt=6"));
+    QStringList items;
+    for (int i = 0; i < combo->count(); ++i)
+        items << combo->itemText(i);
+    QCOMPARE(items, (QStringList{"lift", "tilt"}));
+    choose(combo, QStringLiteral("tilt"));
+    const std::optional<machine::MachineDescription> m = editor->machine();
+    QVERIFY2(m, qPrintable(editor->messageText()));
+    QCOMPARE(m->axis(QStringLiteral("A"))->axis, Axis::Y);
+    QCOMPARE(m->controllers.at(1).busAddresses, (QMap<Axis, int>{{Axis::X, 5}, {Axis::Y, 6}}));
+    QCOMPARE(m->controllers.at(1).axisNames.name(Axis::Y), QStringLiteral("tilt"));
+    // Renaming the drive renames the choice and keeps it chosen.
+    typeInto(editor->controllersTable()->cell(1, "axes"), QStringLiteral("lift=5 swivel=6"));
+    QCOMPARE(combo->currentText(), QStringLiteral("swivel"));
+    QVERIFY2(editor->machine(), qPrintable(editor->messageText()));
+    // A name used twice is refused with the reason, at the bus cell.
+    typeInto(editor->controllersTable()->cell(1, "axes"), QStringLiteral("lift=5 LIFT=6"));
+    QVERIFY(!editor->machine());
+    QCOMPARE(editor->error().field, QStringLiteral("controllers[1].axes"));
+    QVERIFY2(editor->messageText().contains(QStringLiteral("LIFT is given twice")),
+             qPrintable(editor->messageText()));
+}
+
 void TestMachineEditor::removeAxis_removesTheRowBeingEdited()
 {
     auto editor = editorWith(QStringLiteral("elab-xyz-nanotec-rotary.machine.json"));
@@ -321,7 +351,7 @@ void TestMachineEditor::sixAxes_fit1366x768()
     for (const char* name : {"B", "C"}) {
         machine::MachineAxis a = six.axes.last();
         a.name = QString::fromLatin1(name);
-        a.axis = Axis(int(a.axis) + 1);
+        a.axis = Axis::at(a.axis.index() + 1);
         six.axes << a;
     }
     QVERIFY(MachineFile::validate(six, nullptr));

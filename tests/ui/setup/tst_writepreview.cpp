@@ -83,7 +83,7 @@ void TestWritePreview::dialog_columns_oldBeforeNew()
 {
     const ParameterSet read = perAxis(kCurrent, Axis::Y, 50);
     WritePreview dialog(schemaOf("nanotec"), perAxis(kCurrent, Axis::Y, 70), {{Axis::Y, 2}},
-                        {read, read});
+                        {read, read}, {});
     QTableWidget* table = dialog.table();
     QCOMPARE(dialog.rowCount(), 1);
     QCOMPARE(table->horizontalHeaderItem(2)->text(), QStringLiteral("Old"));

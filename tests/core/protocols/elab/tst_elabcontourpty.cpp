@@ -315,7 +315,7 @@ void TestElabContourPty::contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason
     const qint64 boardOrigin = m_sim->position(Axis::X);
     StepPosition from{};
     for (Axis a : {Axis::X, Axis::Y, Axis::Z})
-        from[size_t(a)] = m_ctl->status().axes.value(a).position;
+        from[size_t(a.index())] = m_ctl->status().axes.value(a).position;
     QCOMPARE(from[0], qint64(0));
     m_sim->clearStreamCounters();
     auto feed = std::make_shared<ContourFeed>(ContourSteps(scale(), {}, from, kTickRate));

@@ -339,7 +339,7 @@ void TestElabControllerMotion::dc2Stream_xoffXon_noStepLostOrDuplicated()
         AxisVector s{
             {Axis::X, i % 2 ? 1 : 0}, {Axis::Y, i % 3 ? -1 : 1}, {Axis::Z, i % 5 ? 0 : -1}};
         for (auto it = s.cbegin(); it != s.cend(); ++it)
-            expected[int(it.key())] += it.value();
+            expected[it.key().index()] += it.value();
         steps << s;
     }
     const CommandResult r = rig.run([&](RequestId id) { rig.ctl->feedStream(id, steps); }, 20000);
@@ -350,8 +350,8 @@ void TestElabControllerMotion::dc2Stream_xoffXon_noStepLostOrDuplicated()
     QCOMPARE(rig.sim->streamOverflows(), 0);
     QCOMPARE(rig.sim->streamRejected(), 0);
     for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
-        QCOMPARE(rig.sim->position(a), expected[int(a)]);
-        QCOMPARE(rig.ctl->status().axes.value(a).position, expected[int(a)]);
+        QCOMPARE(rig.sim->position(a), expected[a.index()]);
+        QCOMPARE(rig.ctl->status().axes.value(a).position, expected[a.index()]);
     }
     // The board did throttle the host.
     int xoff = 0;

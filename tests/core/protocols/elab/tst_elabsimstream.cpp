@@ -218,8 +218,8 @@ void TestElabSimStream::dc2Stream_sendsXoffXon_andExecutesEveryStep()
     QCOMPARE(sim.streamRejected(), qint64(0));
     QCOMPARE(sim.executedStepBytes(), qint64(steps.size()));
     for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
-        QCOMPARE(sim.executedSteps(a), count[size_t(a)]);
-        QCOMPARE(sim.position(a), net[size_t(a)]);
+        QCOMPARE(sim.executedSteps(a), count[size_t(a.index())]);
+        QCOMPARE(sim.position(a), net[size_t(a.index())]);
     }
     QCOMPARE(sim.axeState(), quint8(0));
 }

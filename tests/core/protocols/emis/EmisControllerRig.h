@@ -74,7 +74,7 @@ struct EmisRig
         for (const QString& a : assignments) {
             QString name, error;
             ParameterValue value;
-            if (!schema.parseAssignment(a, allAxes(), &name, &value, &error))
+            if (!schema.parseAssignment(a, letterAxes(), &name, &value, &error))
                 return CommandResult::failure(0, ErrorKind::InvalidValue, error);
             set.insert(name, value);
         }

@@ -60,7 +60,7 @@ QStringList describe(const QList<Event>& events)
             out << "B:" + QString::fromLatin1(e.text);
             break;
         case Event::Kind::Arrived:
-            out << QStringLiteral("DC%1").arg(int(e.axis) + 1);
+            out << QStringLiteral("DC%1").arg(e.axis.index() + 1);
             break;
         case Event::Kind::Invalid:
             out << "INVALID";

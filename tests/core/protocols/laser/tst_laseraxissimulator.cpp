@@ -185,7 +185,7 @@ void TestLaserAxisSimulator::threeAxes_independent()
     QVERIFY(waitForStatuses(3));
     QList<StatusFrame> got = statuses();
     std::sort(got.begin(), got.end(),
-              [](const StatusFrame& a, const StatusFrame& b) { return int(a.axis) < int(b.axis); });
+              [](const StatusFrame& a, const StatusFrame& b) { return a.axis < b.axis; });
     QCOMPARE(got, (QList<StatusFrame>{{Axis::X, 10, Status::TargetReached},
                                       {Axis::Y, 20, Status::TargetReached},
                                       {Axis::Z, 30, Status::TargetReached}}));
