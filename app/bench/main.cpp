@@ -1,6 +1,7 @@
 // stepdeck-bench: figures, never pass/fail (issue #2, section 7; docs/benchmark.md).
 #include "BenchOutput.h"
 #include "BenchUsage.h"
+#include "BusSchedule.h"
 #include "BusyLoad.h"
 #include "ContourBench.h"
 #include "GuiIdle.h"
@@ -47,6 +48,7 @@ struct Results
     Figure poll;
     Figure pollWire;
     QList<PollWireFigure> pollWireByModel; // every model against its wire (issue 21)
+    QList<BusScheduleFigure> busSchedule;  // a bus of many drives, one moving (issue 32)
     LatencyFigure panic;
     LatencyFigure panicUnderLoad; // with loadThreads busy threads beside it (issue 21)
     int loadThreads = 0;
@@ -89,6 +91,9 @@ void measurePolls(const ModelInfo& model, const RunOptions& options, Results& r,
     r.pollWire = measurePollRate(model, true);
     progress("poll rate against the wire, every model");
     r.pollWireByModel = measurePollWire(options.pollWindowMs);
+    progress("a Nanotec bus of 8, 32 and 254 drives, one moving");
+    // Long enough to see a full bus' idle round (5 s) at the default window.
+    r.busSchedule = measureBusSchedule(2 * options.pollWindowMs + 2000);
 }
 
 template <typename Progress>
@@ -204,6 +209,7 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
         {"machineStopLatencyMs", machineStop},
         {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
         {"pollWire", pollWireJson(r.pollWireByModel)},
+        {"busSchedule", busScheduleJson(r.busSchedule)},
         {"panicLatencyMs", latencyJson(r.panic)},
         {"panicLatencyUnderLoadMs", latencyJson(r.panicUnderLoad)},
         {"feedStepsPerSecond", json(r.feed.value, 0)},
@@ -237,6 +243,10 @@ void printPanicAndWire(const Results& r)
                       .arg(text(r.pollWire.value, 1, hz, r.pollWire.note)));
     for (const QString& line : pollWireText(r.pollWireByModel))
         print(stdout, line);
+    if (!r.busSchedule.isEmpty()) {
+        for (const QString& line : busScheduleText(r.busSchedule))
+            print(stdout, line);
+    }
     if (r.panicRuns == 0) // --poll-only
         return;
     print(stdout,

@@ -15,7 +15,8 @@ private Q_SLOTS:
     void initTestCase();
     void pollOnly_everyModel_achievedAndLimitPositive_data();
     void pollOnly_everyModel_achievedAndLimitPositive();
-    void pollOnly_eightDrives_saysWhyNotMeasured();
+    void pollOnly_busSchedule_everyBusSize_movingDriveAndIdleDrivesRead_data();
+    void pollOnly_busSchedule_everyBusSize_movingDriveAndIdleDrivesRead();
     void pollOnly_eLab_keepsTheOldFigures();
     void badArguments_exitTwo_data();
     void badArguments_exitTwo();
@@ -31,7 +32,7 @@ void TestPollWireSmoke::initTestCase()
     QVERIFY2(QFileInfo(m_bench).isExecutable(), qPrintable(m_bench));
     // A short window: the run proves every model is measured, not how fast.
     const auto run = stepdeck::testing::runProcess(
-        m_bench, {"--poll-only", "--poll-window", "400", "--json"}, 90000);
+        m_bench, {"--poll-only", "--poll-window", "400", "--json"}, 180000);
     QCOMPARE(run.exitCode, 0);
     m_out = QJsonDocument::fromJson(run.out.trimmed()).object();
     QVERIFY2(!m_out.isEmpty(), run.out.constData());
@@ -45,6 +46,7 @@ void TestPollWireSmoke::pollOnly_everyModel_achievedAndLimitPositive_data()
     QTest::newRow("nanotec, 1 drive") << "nanotec1" << 1;
     QTest::newRow("nanotec, 3 drives") << "nanotec3" << 3;
     QTest::newRow("nanotec, 4 drives") << "nanotec4" << 4;
+    QTest::newRow("nanotec, 8 drives") << "nanotec8" << 8; // issue 32: axes past X, Y, Z, U
     QTest::newRow("emis") << "emis" << 0;
 }
 
@@ -64,15 +66,34 @@ void TestPollWireSmoke::pollOnly_everyModel_achievedAndLimitPositive()
     QVERIFY2(!figure.contains("note"), text.constData());
 }
 
-void TestPollWireSmoke::pollOnly_eightDrives_saysWhyNotMeasured()
+void TestPollWireSmoke::pollOnly_busSchedule_everyBusSize_movingDriveAndIdleDrivesRead_data()
 {
-    // One link addresses one drive per axis (X, Y, Z, U): eight cannot be polled today, and
-    // the figure must say so rather than show a number.
-    const QJsonObject figure = m_out.value("pollWire").toObject().value("nanotec8").toObject();
-    QCOMPARE(figure.value("drives").toInt(), 8);
-    QVERIFY(figure.value("hz").isNull());
-    QVERIFY(figure.value("limitHz").isNull());
-    QVERIFY(!figure.value("note").toString().isEmpty());
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<int>("drives");
+    QTest::addColumn<int>("idleReadTwice"); // at least; the short window is not a full round
+    QTest::newRow("8") << "nanotec8" << 8 << 7;
+    QTest::newRow("32") << "nanotec32" << 32 << 1;
+    QTest::newRow("254") << "nanotec254" << 254 << 0;
+}
+
+// Issue 32, step 4: each bus size is measured at the device: the moving drive's reads and
+// intervals, the idle drives' reads, the wire's use. The figures are in docs/benchmark.md.
+void TestPollWireSmoke::pollOnly_busSchedule_everyBusSize_movingDriveAndIdleDrivesRead()
+{
+    QFETCH(QString, key);
+    QFETCH(int, drives);
+    QFETCH(int, idleReadTwice);
+    const QJsonObject figure = m_out.value("busSchedule").toObject().value(key).toObject();
+    const QByteArray text = QJsonDocument(figure).toJson(QJsonDocument::Compact);
+    QVERIFY2(!figure.contains("note"), text.constData());
+    QCOMPARE(figure.value("drives").toInt(), drives);
+    QVERIFY2(figure.value("movingReads").toInt() >= 3, text.constData());
+    QVERIFY2(figure.value("movingMedianMs").toDouble(-1) > 0, text.constData());
+    QVERIFY2(figure.value("movingP99Ms").toDouble(-1) >= figure.value("movingMedianMs").toDouble(),
+             text.constData());
+    QVERIFY2(figure.value("idleDrivesRead").toInt() >= idleReadTwice, text.constData());
+    QVERIFY2(figure.value("wireUse").toDouble(-1) > 0, text.constData());
+    QVERIFY2(figure.value("wireUse").toDouble(2) <= 1.0, text.constData());
 }
 
 void TestPollWireSmoke::pollOnly_eLab_keepsTheOldFigures()

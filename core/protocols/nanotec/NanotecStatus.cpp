@@ -20,7 +20,7 @@ constexpr qint64 kSwitchInput = 0x20;
 } // namespace
 
 NanotecStatus::NanotecStatus(NanotecController& controller)
-    : m_ctl(controller), m_link(controller.m_exchange)
+    : m_plan(lineSettings().characterTimeUs()), m_ctl(controller), m_link(controller.m_exchange)
 {}
 
 int NanotecStatus::sweepBudgetMs() const
@@ -172,34 +172,25 @@ void NanotecStatus::onPollDue()
     if (m_ctl.m_bus->hasQueued(NanotecBus::Priority::Urgent) ||
         m_ctl.m_bus->hasQueued(NanotecBus::Priority::Command))
         return; // commands first; the poller reminds us after an interval
-    ++m_sweeps;
-    // While a positioning run is pending, three sweeps of four read only the drives that run
-    // or jog (issue 30: the next chord waits for the sweep that sees the last one arrive; at 19200
-    // baud each exchange costs about 6 ms), and every other one of those reads the position
-    // 'C' only of a drive whose '$' shows it arrived. Every fourth sweep reads every drive
-    // with position and inputs, as every sweep does otherwise.
-    const bool full = m_sweeps % 4 == 1;
+    // Issue 32: the plan bounds the sweep (NanotecPollPlan.h): moving drives every sweep, the
+    // idle ones in turn. While a positioning run is pending the running drives' positions are
+    // read every other sweep (issue 30: the next chord waits for the sweep that sees the last
+    // one arrive).
     bool anyRuns = false; // never an empty sweep: that would count as a miss
-    for (const HostDrive& d : m_ctl.m_drives)
+    QList<NanotecPollPlan::Drive> drives;
+    for (const HostDrive& d : std::as_const(m_ctl.m_drives)) {
         anyRuns = anyRuns || (d.motionPending && d.responding);
-    const bool runsOnly = !full && anyRuns && m_ctl.m_poller.isExpedited();
-    QList<Axis> axes;
-    bool anyResponding = false;
-    for (const HostDrive& d : m_ctl.m_drives)
-        anyResponding = anyResponding || d.responding;
-    for (const HostDrive& d : m_ctl.m_drives) {
-        // A jogging drive stays in every sweep: its soft limits are judged on its position.
-        if (runsOnly && !(d.motionPending && d.responding) && d.jog == JogPhase::Idle)
-            continue;
-        // A silent drive costs a full timeout: ask it only every tenth sweep.
-        if (d.responding || !anyResponding || m_sweeps % 10 == 0)
-            axes << d.axis;
+        // A jogging drive is active too: its soft limits are judged on its position.
+        const bool active = d.motionPending || d.jog != JogPhase::Idle || d.velocityMove;
+        drives << NanotecPollPlan::Drive{d.axis, active, d.responding};
     }
+    const QList<NanotecPollPlan::Read> sweep =
+        m_plan.next(drives, anyRuns && m_ctl.m_poller.isExpedited());
     m_ctl.m_poller.pollStarted();
-    pollDrive(axes, full, !runsOnly || m_sweeps % 2 == 0, std::make_shared<bool>(false));
+    pollDrive(sweep, std::make_shared<bool>(false));
 }
 
-void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool positionWhileRunning,
+void NanotecStatus::pollDrive(QList<NanotecPollPlan::Read> remaining,
                               std::shared_ptr<bool> answered)
 {
     if (remaining.isEmpty()) {
@@ -209,7 +200,8 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool posit
         m_ctl.publishStatus();
         return;
     }
-    const Axis axis = remaining.takeFirst();
+    const NanotecPollPlan::Read read = remaining.takeFirst();
+    const Axis axis = read.axis;
     const PollRequest request = [this, axis](const QByteArray& body, NanotecBus::Handler done) {
         NanotecBus::Request r;
         r.address = m_ctl.m_drives[axis].address;
@@ -220,9 +212,7 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool posit
         r.done = std::move(done);
         m_ctl.m_bus->submit(r);
     };
-    auto next = [this, remaining, withInputs, positionWhileRunning, answered] {
-        pollDrive(remaining, withInputs, positionWhileRunning, answered);
-    };
+    auto next = [this, remaining, answered] { pollDrive(remaining, answered); };
     using O = NanotecBus::Outcome;
     request("$", [=](O o, const Reply& r) {
         if (o == O::Cancelled)
@@ -233,9 +223,14 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool posit
             return next();
         *answered = true;
         const bool wasPending = d.motionPending;
+        const bool changed = d.status != r.value;
         applyStatusWord(d, *r.value);
-        if (d.motionPending && !positionWhileRunning && !withInputs)
-            return next();
+        // 'C' of a running drive as the plan says; of a drive at rest on its turn, and
+        // always when its status changed or its run just ended (the arrival's position).
+        const bool position =
+            d.motionPending ? read.positionWhileRunning : read.position || changed || wasPending;
+        if (!position)
+            return read.inputs ? readInputs(axis, request, next) : next();
         request("C", [=](O o2, const Reply& r2) {
             if (o2 == O::Cancelled)
                 return m_ctl.m_poller.pollFinished(true);
@@ -243,7 +238,7 @@ void NanotecStatus::pollDrive(QList<Axis> remaining, bool withInputs, bool posit
                 m_ctl.m_drives[axis].position = *r2.value;
             if (wasPending && !m_ctl.m_drives[axis].motionPending)
                 publishIfArrived();
-            if (!withInputs)
+            if (!read.inputs)
                 return next();
             readInputs(axis, request, next);
         });

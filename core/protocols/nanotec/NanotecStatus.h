@@ -1,6 +1,7 @@
 #pragma once
 #include "NanotecBus.h"
 #include "NanotecHostDrive.h"
+#include "NanotecPollPlan.h"
 #include "NanotecSteps.h"
 #include "model/CommandResult.h"
 #include <QCoreApplication>
@@ -36,9 +37,8 @@ public:
 private:
     Step initialiseDrive(Axis axis);
     void finishInitialising();
-    // positionWhileRunning: 'C' also of a drive whose run is still pending.
-    void pollDrive(QList<Axis> remaining, bool withInputs, bool positionWhileRunning,
-                   std::shared_ptr<bool> answered);
+    // The plan's reads, one drive after the other; the sweep ends with the last.
+    void pollDrive(QList<NanotecPollPlan::Read> remaining, std::shared_ptr<bool> answered);
     // Publishes the status at once when no run is pending any more (mid-sweep).
     void publishIfArrived();
     // One poll exchange with the drive of a sweep's axis.
@@ -46,7 +46,7 @@ private:
     // 'ZY' (5.30); a changed switch input is read twice (noise).
     void readInputs(Axis axis, const PollRequest& request, const std::function<void()>& next);
 
-    quint64 m_sweeps = 0;
+    NanotecPollPlan m_plan;
 
     NanotecController& m_ctl;
     NanotecExchange& m_link;

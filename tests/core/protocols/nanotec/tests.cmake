@@ -13,3 +13,4 @@ stepdeck_add_test(tst_nanotecsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanote
 stepdeck_add_test(tst_nanotecpositionerror SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecpositionerror.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
 stepdeck_add_test(tst_nanotecheldsettings SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecheldsettings.cpp LABELS unit)
+stepdeck_add_test(tst_nanotecpollplan SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecpollplan.cpp LABELS unit)

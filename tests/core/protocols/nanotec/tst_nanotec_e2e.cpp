@@ -34,6 +34,7 @@ private Q_SLOTS:
     void status_human_silentDriveNamed();
     void records_byAddress_allThirtyTwo();
     void setupDefaults_keepsDriveAddresses();
+    void bus32_namedDrives_oneMovesAndArrives_everyDriveAnswers();
 
 private:
     using Run = stepdeck::testing::ProcessRun;
@@ -354,6 +355,35 @@ void TestNanotecEndToEnd::setupDefaults_keepsDriveAddresses()
     }
     const Run scan = cli({"--json", "scan", "--last", "4"}, QString());
     QCOMPARE(QJsonDocument::fromJson(scan.out).array().size(), 3);
+}
+
+// Issue 32: 32 drives on one bus, named by the plant (d1..d32): the sixth (machine axis B of
+// the connection's machine, controller axis axis6: past the four letters) moves, and its
+// arrival ends the command (the status sweeps serve it first among 32); then every drive
+// answers its status, the moved one at its target, the others where they were.
+void TestNanotecEndToEnd::bus32_namedDrives_oneMovesAndArrives_everyDriveAnswers()
+{
+    QStringList addresses, bus;
+    for (int a = 1; a <= 32; ++a) {
+        addresses << QString::number(a);
+        bus << QStringLiteral("d%1=%1").arg(a);
+    }
+    startSim(addresses.join(','));
+    const Run r = cli({"move", "B=500"}, bus.join(','));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("B=500"), r.out.constData());
+    const QJsonObject status = statusJson(bus.join(','));
+    const QJsonArray drives = status["drives"].toArray();
+    QCOMPARE(drives.size(), 32);
+    for (const QJsonValue& d : drives)
+        QVERIFY(d.toObject()["responding"].toBool());
+    // The connection's machine has nine axes (X Y Z U A B C V W); the rest are drives only.
+    const QJsonObject axes = status["axes"].toObject();
+    QCOMPARE(axes.size(), 9);
+    QCOMPARE(axes["B"].toObject()["position"].toInt(), 500);
+    QCOMPARE(axes["B"].toObject()["moving"].toBool(), false);
+    QCOMPARE(axes["X"].toObject()["position"].toInt(), 0);
+    QCOMPARE(axes["W"].toObject()["position"].toInt(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestNanotecEndToEnd)
