@@ -62,6 +62,13 @@ QString markText(PositionKnowledge known)
     return CliText::tr(" (unknown)");
 }
 
+// The controller's name of a machine axis' controller axis ("feeder"; issue 32).
+QString controllerAxisName(CliMachineSession& m, const MachineAxis& a)
+{
+    const machine::MachineController* c = m.description().controller(a.controller);
+    return c ? c->axisNames.name(a.axis) : axisName(a.axis);
+}
+
 QJsonArray axesJson(CliMachineSession& m)
 {
     QJsonArray axes;
@@ -69,7 +76,7 @@ QJsonArray axesJson(CliMachineSession& m)
         const MachineAxisStatus s = m.machine().axisStatus(a);
         axes.append(QJsonObject{{"name", a.name},
                                 {"controller", a.controller},
-                                {"axis", axisName(a.axis)},
+                                {"axis", controllerAxisName(m, a)},
                                 {"unit", machine::unitKey(a.unit)},
                                 {"position", s.position},
                                 {"steps", s.steps},
@@ -123,7 +130,7 @@ void printAxisTable(CliMachineSession& m)
                       .arg(valueText(a, s.position), 12)
                       .arg(machine::unitKey(a.unit), -5)
                       .arg(s.steps)
-                      .arg(a.controller, axisName(a.axis))
+                      .arg(a.controller, controllerAxisName(m, a))
                       .arg(markText(s.known))
                       .arg(s.moving ? CliText::tr(" moving") : QString()));
     }
@@ -134,7 +141,7 @@ void printControllerDetail(CliMachineSession& m, const machine::MachineControlle
 {
     const ControllerSession* s = m.machine().session(c.id);
     printLine(formatStatus(s->status(), *findModel(c.modelId), s->capabilities(), c.port,
-                           linkStateName(s->linkState())));
+                           linkStateName(s->linkState()), c.axisNames));
 }
 
 QString positionsText(CliMachineSession& m)

@@ -140,11 +140,11 @@ void printError(const QString& message)
 }
 
 namespace {
-QString driveLabel(const DriveStatus& drive)
+QString driveLabel(const DriveStatus& drive, const AxisNames& names)
 {
     QStringList axes;
     for (Axis a : drive.axes)
-        axes << axisName(a);
+        axes << names.name(a);
     return axes.isEmpty() ? CliText::tr("drive %1").arg(drive.address)
                           : CliText::tr("drive %1 (axis %2)")
                                 .arg(drive.address)
@@ -152,12 +152,17 @@ QString driveLabel(const DriveStatus& drive)
 }
 
 // "Drives: 2 of 3 answering; silent: drive 2 (axis Y)" and one row per drive.
-QStringList driveLines(const QList<DriveStatus>& drives)
+QStringList driveLines(const QList<DriveStatus>& drives, const AxisNames& names)
 {
     QStringList silent;
+    int width = 4; // "Axes"
     for (const DriveStatus& d : drives) {
         if (!d.responding)
-            silent << driveLabel(d);
+            silent << driveLabel(d, names);
+        QStringList axes;
+        for (Axis a : d.axes)
+            axes << names.name(a);
+        width = qMax(width, int(axes.join(QLatin1Char(',')).size()));
     }
     QStringList lines;
     lines << (silent.isEmpty() ? CliText::tr("Drives:       %1 answering").arg(drives.size())
@@ -165,14 +170,17 @@ QStringList driveLines(const QList<DriveStatus>& drives)
                                      .arg(drives.size() - silent.size())
                                      .arg(drives.size())
                                      .arg(silent.join(QStringLiteral(", "))));
-    lines << CliText::tr("Drive  Axes  Responding  Firmware                    State");
+    lines << QStringLiteral("%1  %2  %3")
+                 .arg(CliText::tr("Drive"), -5)
+                 .arg(CliText::tr("Axes"), -width)
+                 .arg(CliText::tr("Responding  Firmware                    State"));
     for (const DriveStatus& d : drives) {
         QStringList axes;
         for (Axis a : d.axes)
-            axes << axisName(a);
+            axes << names.name(a);
         lines << QStringLiteral("%1  %2  %3  %4  %5")
                      .arg(d.address, -5)
-                     .arg(axes.join(QLatin1Char(',')), -4)
+                     .arg(axes.join(QLatin1Char(',')), -width)
                      .arg(d.responding ? CliText::tr("yes") : CliText::tr("NO"), -10)
                      .arg(d.firmware.isEmpty() ? QStringLiteral("-") : d.firmware, -26)
                      .arg(d.detail.isEmpty() ? QStringLiteral("-") : d.detail);
@@ -183,7 +191,7 @@ QStringList driveLines(const QList<DriveStatus>& drives)
 
 QString formatStatus(const MachineStatus& status, const ModelInfo& model,
                      const Capabilities& capabilities, const QString& port,
-                     const QString& linkState)
+                     const QString& linkState, const AxisNames& names)
 {
     QStringList machine;
     machine << (status.driveOn ? CliText::tr("drive on") : CliText::tr("drive off"));
@@ -237,12 +245,17 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
         lines << CliText::tr("Door:         %1")
                      .arg(*status.doorOpen ? CliText::tr("OPEN") : CliText::tr("closed"));
     if (capabilities.multiDrive && !status.drives.isEmpty())
-        lines << driveLines(status.drives);
-    lines << CliText::tr("Axis  Moving  Jogging  Limit  Reference  Referenced  Position");
+        lines << driveLines(status.drives, names);
+    int width = 4; // "Axis"
+    for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it)
+        width = qMax(width, int(names.name(it.key()).size()));
+    lines << QStringLiteral("%1  %2")
+                 .arg(CliText::tr("Axis"), -width)
+                 .arg(CliText::tr("Moving  Jogging  Limit  Reference  Referenced  Position"));
     for (auto it = status.axes.cbegin(); it != status.axes.cend(); ++it) {
         const AxisStatus& a = it.value();
         lines << QStringLiteral("%1  %2  %3  %4  %5  %6  %7")
-                     .arg(axisName(it.key()), -4)
+                     .arg(names.name(it.key()), -width)
                      .arg(yesNo(a.moving), -6)
                      .arg(yesNo(a.jogging), -7)
                      .arg(yesNo(a.limitSwitch), -5)

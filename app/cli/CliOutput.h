@@ -1,4 +1,5 @@
 #pragma once
+#include "model/AxisNames.h"
 #include "model/Capabilities.h"
 #include "model/CommandResult.h"
 #include "model/MachineStatus.h"
@@ -59,9 +60,10 @@ void printError(const QString& message);
 // Human-readable `status`: machine flags, per-axis flags and positions (marked "unknown" or
 // "estimated"), temperature (where the model reports one), one row per drive on multi-drive
 // links (silent drives named), raw words.
+// names: the controller's names of its axes (issue 32: "feeder"; default X, Y, ...).
 QString formatStatus(const MachineStatus& status, const ModelInfo& model,
                      const Capabilities& capabilities, const QString& port,
-                     const QString& linkState);
+                     const QString& linkState, const AxisNames& names = {});
 // "X=100 Y=0 Z=-5" with the same marks, for move/home/feed.
 QString formatPositions(const MachineStatus& status);
 

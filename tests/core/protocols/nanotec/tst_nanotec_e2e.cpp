@@ -35,6 +35,7 @@ private Q_SLOTS:
     void records_byAddress_allThirtyTwo();
     void setupDefaults_keepsDriveAddresses();
     void bus32_namedDrives_oneMovesAndArrives_everyDriveAnswers();
+    void status_human_namedDrives_rowsAndMachineLinesShowNames();
 
 private:
     using Run = stepdeck::testing::ProcessRun;
@@ -355,6 +356,22 @@ void TestNanotecEndToEnd::setupDefaults_keepsDriveAddresses()
     }
     const Run scan = cli({"--json", "scan", "--last", "4"}, QString());
     QCOMPARE(QJsonDocument::fromJson(scan.out).array().size(), 3);
+}
+
+// Issue 32: the drives' names in the status: the drive rows, the axis rows (columns as wide
+// as the longest name) and the machine lines ("on nanotec.feeder").
+void TestNanotecEndToEnd::status_human_namedDrives_rowsAndMachineLinesShowNames()
+{
+    startSim("1,2,3");
+    const Run r = cli({"status"}, QStringLiteral("feeder=1,lifter_one=2,X=3"));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QString out = QString::fromUtf8(r.out);
+    QVERIFY2(out.contains(QStringLiteral("on nanotec.feeder)")), r.out.constData());
+    QVERIFY2(out.contains(QStringLiteral("on nanotec.X)")), r.out.constData());
+    static const QRegularExpression driveRow(QStringLiteral("\\n2 +lifter_one +yes "));
+    QVERIFY2(driveRow.match(out).hasMatch(), r.out.constData());
+    static const QRegularExpression axisRow(QStringLiteral("\\nfeeder {6}no {6}no "));
+    QVERIFY2(axisRow.match(out).hasMatch(), r.out.constData());
 }
 
 // Issue 32: 32 drives on one bus, named by the plant (d1..d32): the sixth (machine axis B of
