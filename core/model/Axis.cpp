@@ -1,4 +1,5 @@
 #include "Axis.h"
+#include <algorithm>
 
 namespace stepdeck {
 
@@ -25,7 +26,7 @@ std::optional<Axis> axisFromName(QStringView name)
         return std::nullopt;
     const QStringView digits = QStringView(upper).mid(kPrefix.size());
     if (digits.isEmpty() || digits.startsWith(QLatin1Char('0')) ||
-        digits.startsWith(QLatin1Char('+')))
+        !std::all_of(digits.cbegin(), digits.cend(), [](QChar c) { return c.isDigit(); }))
         return std::nullopt;
     bool ok = false;
     const int number = digits.toInt(&ok);

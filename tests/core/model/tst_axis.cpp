@@ -71,7 +71,7 @@ void TestAxis::axisFromName_notADefaultName_isNone_data()
 {
     QTest::addColumn<QString>("name");
     for (const char* name : {"", "A", "Q", "XY", "axis", "axis0", "axis1", "axis4", "axis05",
-                             "axis+5", "axis-5", "axis255", "axis5x", "feeder", "5"})
+                             "axis+5", "axis-5", "axis 5", "axis255", "axis5x", "feeder", "5"})
         QTest::newRow(name) << QString::fromLatin1(name);
 }
 
