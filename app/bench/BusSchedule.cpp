@@ -82,6 +82,26 @@ void evaluate(const QMap<int, QList<qint64>>& reads, BusScheduleFigure* f)
     }
 }
 
+// The paced bus, counting its characters and recording its '$' reads.
+BenchDevice::Config deviceConfig(const QList<int>& addresses, WireCounter* counter,
+                                 StatusReads* reads)
+{
+    BenchDevice::Config config;
+    config.paced = true;
+    config.wireCounter = counter;
+    config.addresses = addresses;
+    config.received = [reads](Simulator* sim, qint64 ns) { reads->record(sim, ns); };
+    // The simulated drives' switches sit at +-3000 steps: far away, the move runs through the
+    // window.
+    config.prepare = [](Simulator* sim) {
+        if (auto* bus = qobject_cast<nanotec::NanotecSimulator*>(sim)) {
+            for (nanotec::NanotecDrive* d : bus->drives())
+                d->setSwitches(-1e9, 1e9);
+        }
+    };
+    return config;
+}
+
 BusScheduleFigure measureBus(const ModelInfo& model, int drives, int windowMs)
 {
     BusScheduleFigure f;
@@ -92,20 +112,7 @@ BusScheduleFigure measureBus(const ModelInfo& model, int drives, int windowMs)
         addresses.insert(Axis::at(i), i + 1);
     WireCounter counter; // outlives the device, which counts into it
     StatusReads reads;
-    BenchDevice::Config config;
-    config.paced = true;
-    config.wireCounter = &counter;
-    config.addresses = addresses.values();
-    config.received = [&reads](Simulator* sim, qint64 ns) { reads.record(sim, ns); };
-    // The simulated drives' switches sit at +-3000 steps: far away, the move runs through the
-    // window.
-    config.prepare = [](Simulator* sim) {
-        if (auto* bus = qobject_cast<nanotec::NanotecSimulator*>(sim)) {
-            for (nanotec::NanotecDrive* d : bus->drives())
-                d->setSwitches(-1e9, 1e9);
-        }
-    };
-    BenchDevice device(model, config);
+    BenchDevice device(model, deviceConfig(addresses.values(), &counter, &reads));
     BenchHost host;
     QString error;
     if (!device.start(&error)) {

@@ -82,19 +82,10 @@ QList<NanotecPollPlan::Read> NanotecPollPlan::next(const QList<Drive>& drives, b
     bool anyResponding = false;
     for (const Drive& d : drives)
         anyResponding = anyResponding || d.responding;
-    QList<Read> sweep;
+    QList<Read> sweep = activeReads(drives, lean);
     double spent = 0;
-    for (const Drive& d : drives) {
-        if (!d.active || !d.responding)
-            continue;
-        Read r;
-        r.axis = d.axis;
-        r.active = true;
-        r.positionWhileRunning = !lean || m_sweeps % 2 == 0;
-        r.inputs = m_sweeps % 4 == 1;
+    for (const Read& r : sweep)
         spent += costOf(r);
-        sweep << r;
-    }
     // Nobody answers: walk every drive in turn (each sweep a miss until the link is lost).
     QList<Drive> candidates = drives;
     if (!anyResponding) {
@@ -137,6 +128,23 @@ QList<NanotecPollPlan::Read> NanotecPollPlan::next(const QList<Drive>& drives, b
         }
     }
     return sweep;
+}
+
+QList<NanotecPollPlan::Read> NanotecPollPlan::activeReads(const QList<Drive>& drives,
+                                                          bool lean) const
+{
+    QList<Read> reads;
+    for (const Drive& d : drives) {
+        if (!d.active || !d.responding)
+            continue;
+        Read r;
+        r.axis = d.axis;
+        r.active = true;
+        r.positionWhileRunning = !lean || m_sweeps % 2 == 0;
+        r.inputs = m_sweeps % 4 == 1;
+        reads << r;
+    }
+    return reads;
 }
 
 } // namespace stepdeck::nanotec

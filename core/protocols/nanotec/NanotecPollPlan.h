@@ -65,6 +65,8 @@ public:
 
 private:
     double costOf(const Read& r) const;
+    // The responding active drives, in axis order: in every sweep, first.
+    QList<Read> activeReads(const QList<Drive>& drives, bool lean) const;
     // Idle drives in round-robin order after the last one visited.
     QList<Axis> idleInTurn(const QList<Drive>& drives) const;
     Read idleRead(Axis axis);
