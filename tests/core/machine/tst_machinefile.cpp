@@ -461,8 +461,8 @@ void TestMachineFile::version2_namedBus_invalid_namesTheField_data()
                                  << "did you mean address";
     QTest::newRow("address twice")
         << QJsonArray{good.at(0), QJsonObject{{"name", "tilt"}, {"address", 5}}} << "tilt"
-        << "controllers[1]"
-        << "";
+        << "controllers[1].axes.tilt"
+        << "bus address 5 is given to two axes";
 }
 
 void TestMachineFile::version2_namedBus_invalid_namesTheField()
