@@ -156,14 +156,6 @@ BusScheduleFigure measureBus(const ModelInfo& model, int drives, int windowMs)
     return f;
 }
 
-QJsonValue rounded(const std::optional<double>& value, int decimals)
-{
-    if (!value)
-        return QJsonValue();
-    const double scale = std::pow(10.0, decimals);
-    return std::round(*value * scale) / scale;
-}
-
 QString ms(const std::optional<double>& value)
 {
     return value ? QString::number(*value, 'f', 1) : QStringLiteral("n/a");
@@ -194,14 +186,14 @@ QJsonObject busScheduleJson(const QList<BusScheduleFigure>& figures)
         QJsonObject o{{"drives", f.drives},
                       {"movingAddress", f.movingAddress},
                       {"movingReads", f.movingReads},
-                      {"movingMedianMs", rounded(f.movingMedianMs, 1)},
-                      {"movingP99Ms", rounded(f.movingP99Ms, 1)},
-                      {"movingMaxMs", rounded(f.movingMaxMs, 1)},
+                      {"movingMedianMs", roundedJson(f.movingMedianMs, 1)},
+                      {"movingP99Ms", roundedJson(f.movingP99Ms, 1)},
+                      {"movingMaxMs", roundedJson(f.movingMaxMs, 1)},
                       {"idleDrivesRead", f.idleDrivesRead},
-                      {"idleRoundMedianMs", rounded(f.idleRoundMedianMs, 0)},
-                      {"idleRoundMaxMs", rounded(f.idleRoundMaxMs, 0)},
-                      {"wireUse", rounded(f.wireUse, 3)},
-                      {"windowMs", rounded(f.windowMs, 0)}};
+                      {"idleRoundMedianMs", roundedJson(f.idleRoundMedianMs, 0)},
+                      {"idleRoundMaxMs", roundedJson(f.idleRoundMaxMs, 0)},
+                      {"wireUse", roundedJson(f.wireUse, 3)},
+                      {"windowMs", roundedJson(f.windowMs, 0)}};
         if (!f.note.isEmpty())
             o.insert("note", f.note);
         out.insert(QStringLiteral("nanotec%1").arg(f.drives), o);

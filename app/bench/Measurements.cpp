@@ -4,8 +4,17 @@
 #include "sim/TrafficMeter.h"
 #include <QtMath>
 #include <algorithm>
+#include <cmath>
 
 namespace stepdeck::bench {
+
+QJsonValue roundedJson(const std::optional<double>& value, int decimals)
+{
+    if (!value)
+        return QJsonValue();
+    const double scale = std::pow(10.0, decimals);
+    return std::round(*value * scale) / scale;
+}
 
 namespace {
 QVector<AxisVector> stepStream(int steps)

@@ -1,5 +1,6 @@
 #pragma once
 #include "model/ParameterSchema.h"
+#include <QJsonValue>
 #include <QList>
 #include <QString>
 #include <optional>
@@ -38,6 +39,9 @@ struct LatencyFigure
 // defaults: the E-LAB simulator powers on with setup incomplete and refuses a feed stream or a
 // jog until its ramp and feed parameters are written. Empty for models that need nothing.
 ParameterSet setupParameters(const ModelInfo& model);
+
+// A figure for the --json output: rounded to `decimals`, null when there is none.
+QJsonValue roundedJson(const std::optional<double>& value, int decimals);
 
 // Nearest-rank percentile (fraction 0..1) and median of latency samples, in their unit.
 double percentile(QList<double> samples, double fraction);

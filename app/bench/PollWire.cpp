@@ -141,14 +141,6 @@ PollWireFigure measureCase(const PollWireCase& c, int windowMs)
     return f;
 }
 
-QJsonValue rounded(const std::optional<double>& value, int decimals)
-{
-    if (!value)
-        return QJsonValue();
-    const double scale = std::pow(10.0, decimals);
-    return std::round(*value * scale) / scale;
-}
-
 QString number(const std::optional<double>& value, int decimals)
 {
     return value ? QString::number(*value, 'f', decimals) : QStringLiteral("n/a");
@@ -167,13 +159,13 @@ QJsonObject pollWireJson(const QList<PollWireFigure>& figures)
 {
     QJsonObject out;
     for (const PollWireFigure& f : figures) {
-        QJsonObject o{{"hz", rounded(f.hz, 1)},
-                      {"limitHz", rounded(f.limitHz, 1)},
-                      {"ratio", rounded(f.ratio(), 3)},
-                      {"charsPerPoll", rounded(f.charsPerPoll, 2)},
-                      {"characterUs", rounded(f.characterUs, 2)},
+        QJsonObject o{{"hz", roundedJson(f.hz, 1)},
+                      {"limitHz", roundedJson(f.limitHz, 1)},
+                      {"ratio", roundedJson(f.ratio(), 3)},
+                      {"charsPerPoll", roundedJson(f.charsPerPoll, 2)},
+                      {"characterUs", roundedJson(f.characterUs, 2)},
                       {"polls", f.polls},
-                      {"pollerHz", rounded(f.pollerHz, 1)},
+                      {"pollerHz", roundedJson(f.pollerHz, 1)},
                       {"line", f.line}};
         if (f.drives > 0)
             o.insert("drives", f.drives);

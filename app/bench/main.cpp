@@ -27,14 +27,6 @@ using namespace stepdeck::bench;
 
 namespace {
 
-QJsonValue json(const std::optional<double>& value, int decimals)
-{
-    if (!value)
-        return QJsonValue();
-    const double scale = std::pow(10.0, decimals);
-    return std::round(*value * scale) / scale;
-}
-
 QString text(const std::optional<double>& value, int decimals, const QString& unit,
              const QString& note)
 {
@@ -151,8 +143,8 @@ Results measureAll(const ModelInfo& model, const RunOptions& options)
 
 QJsonObject latencyJson(const LatencyFigure& figure)
 {
-    return QJsonObject{{"median", json(figure.medianMs, 3)},
-                       {"p99", json(figure.p99Ms, 3)},
+    return QJsonObject{{"median", roundedJson(figure.medianMs, 3)},
+                       {"p99", roundedJson(figure.p99Ms, 3)},
                        {"samples", figure.samples},
                        {"pausedByXoff", figure.pausedByXoff},
                        {"deviceRealtime", figure.deviceRealtime}};
@@ -195,8 +187,8 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
     QJsonArray machineStop;
     for (const auto& [controllers, figure] : r.machineStop) {
         machineStop.append(QJsonObject{{"controllers", controllers},
-                                       {"median", json(figure.medianMs, 3)},
-                                       {"p99", json(figure.p99Ms, 3)},
+                                       {"median", roundedJson(figure.medianMs, 3)},
+                                       {"p99", roundedJson(figure.p99Ms, 3)},
                                        {"samples", figure.samples},
                                        {"deviceRealtime", figure.deviceRealtime}});
         if (!figure.note.isEmpty())
@@ -205,15 +197,15 @@ void printJson(const Results& r, const ModelInfo& model, const RunOptions& optio
                              .arg(figure.note));
     }
     QJsonObject out{
-        {"pollRateHz", json(r.poll.value, 1)},
+        {"pollRateHz", roundedJson(r.poll.value, 1)},
         {"machineStopLatencyMs", machineStop},
-        {"pollRateWireMaxHz", json(r.pollWire.value, 1)},
+        {"pollRateWireMaxHz", roundedJson(r.pollWire.value, 1)},
         {"pollWire", pollWireJson(r.pollWireByModel)},
         {"busSchedule", busScheduleJson(r.busSchedule)},
         {"panicLatencyMs", latencyJson(r.panic)},
         {"panicLatencyUnderLoadMs", latencyJson(r.panicUnderLoad)},
-        {"feedStepsPerSecond", json(r.feed.value, 0)},
-        {"feedWireMaxStepsPerSecond", json(r.feedWire.value, 0)},
+        {"feedStepsPerSecond", roundedJson(r.feed.value, 0)},
+        {"feedWireMaxStepsPerSecond", roundedJson(r.feedWire.value, 0)},
         {"conditions", QJsonObject{{"model", model.id},
                                    {"line", model.line.text()},
                                    {"transport", "QSerialPort on a pseudo-terminal"},
