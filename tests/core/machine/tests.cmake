@@ -1,5 +1,8 @@
 # Machine descriptions: the "stepdeck-machine" file, its validation and unit conversion.
-stepdeck_add_test(tst_machinefile SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefile.cpp LABELS unit)
+stepdeck_add_test(tst_machinefile SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefile.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/MachineFileTestSupport.h LABELS unit)
+stepdeck_add_test(tst_machinefileformat SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefileformat.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/MachineFileTestSupport.h LABELS unit)
 target_compile_definitions(tst_machinefile PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # A machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
 stepdeck_add_test(tst_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machine.cpp
