@@ -62,13 +62,6 @@ QString markText(PositionKnowledge known)
     return CliText::tr(" (unknown)");
 }
 
-// The controller's name of a machine axis' controller axis ("feeder"; issue 32).
-QString controllerAxisName(CliMachineSession& m, const MachineAxis& a)
-{
-    const machine::MachineController* c = m.description().controller(a.controller);
-    return c ? c->axisNames.name(a.axis) : axisName(a.axis);
-}
-
 QJsonArray axesJson(CliMachineSession& m)
 {
     QJsonArray axes;
@@ -76,7 +69,7 @@ QJsonArray axesJson(CliMachineSession& m)
         const MachineAxisStatus s = m.machine().axisStatus(a);
         axes.append(QJsonObject{{"name", a.name},
                                 {"controller", a.controller},
-                                {"axis", controllerAxisName(m, a)},
+                                {"axis", m.description().controllerAxisName(a)},
                                 {"unit", machine::unitKey(a.unit)},
                                 {"position", s.position},
                                 {"steps", s.steps},
@@ -130,7 +123,7 @@ void printAxisTable(CliMachineSession& m)
                       .arg(valueText(a, s.position), 12)
                       .arg(machine::unitKey(a.unit), -5)
                       .arg(s.steps)
-                      .arg(a.controller, controllerAxisName(m, a))
+                      .arg(a.controller, m.description().controllerAxisName(a))
                       .arg(markText(s.known))
                       .arg(s.moving ? CliText::tr(" moving") : QString()));
     }

@@ -149,6 +149,12 @@ const MachineAxis* MachineDescription::axis(const QString& axisNameInMachine) co
     return nullptr;
 }
 
+QString MachineDescription::controllerAxisName(const MachineAxis& a) const
+{
+    const MachineController* c = controller(a.controller);
+    return c ? c->axisNames.name(a.axis) : axisName(a.axis);
+}
+
 int MachineDescription::axisIndex(const QString& axisNameInMachine) const
 {
     for (int i = 0; i < axes.size(); ++i) {

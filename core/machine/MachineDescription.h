@@ -99,6 +99,8 @@ struct MachineDescription
 
     const MachineController* controller(const QString& id) const;
     const MachineAxis* axis(const QString& name) const;
+    // The name its controller gives the controller axis of `a` ("feeder"; issue 32).
+    QString controllerAxisName(const MachineAxis& a) const;
     int
     axisIndex(const QString& axisNameInMachine) const; // its place in `axes`, -1 when there is none
     // The axes in referencing order: groups of equal order, lowest first, file order inside.

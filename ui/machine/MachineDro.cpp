@@ -235,10 +235,9 @@ void MachineDro::showAxis(const Row& row, const machine::MachineAxisStatus& a, b
     if (!row.value || !a.axis)
         return;
     const machine::MachineAxis& axis = *a.axis;
-    const machine::MachineController* c =
-        m_context->machine() ? m_context->machine()->description().controller(axis.controller)
-                             : nullptr;
-    const QString controllerAxis = c ? c->axisNames.name(axis.axis) : axisName(axis.axis);
+    const QString controllerAxis =
+        m_context->machine() ? m_context->machine()->description().controllerAxisName(axis)
+                             : axisName(axis.axis);
     // The digits: the work position once a work zero is set, as certain as the machine
     // position it comes from (same mark, same badge); the line below: the machine position.
     const bool work = m_offsets->hasOffset(axis.name);

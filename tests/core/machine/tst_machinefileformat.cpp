@@ -95,6 +95,8 @@ void TestMachineFileFormat::version2_namedBus_readWrittenAndReadBack()
     QCOMPARE(rotary.axisNames.name(Axis::X), QStringLiteral("lift"));
     QCOMPARE(rotary.axisNames.name(Axis::Y), QStringLiteral("tilt"));
     QCOMPARE(m->axis("A")->axis, Axis::Y);
+    QCOMPARE(m->controllerAxisName(*m->axis("A")), QStringLiteral("tilt"));
+    QCOMPARE(m->controllerAxisName(*m->axis("X")), QStringLiteral("X")); // the E-LAB's
     const QJsonObject written = m->toJson();
     QCOMPARE(written.value("axes").toArray().at(3).toObject().value("axis").toString(),
              QStringLiteral("tilt"));
