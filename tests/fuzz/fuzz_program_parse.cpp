@@ -30,7 +30,7 @@ machine::MachineDescription mill()
         machine::MachineAxis a;
         a.name = QLatin1String(names[i]);
         a.controller = QStringLiteral("table");
-        a.axis = Axis(i % 4);
+        a.axis = Axis::at(i % 4);
         a.unit = i == 3 ? machine::AxisUnit::Degree : machine::AxisUnit::Millimetre;
         a.stepsPerUnit = 100;
         d.axes << a;
