@@ -7,6 +7,7 @@
 #include "model/ModelOperations.h"
 #include <QElapsedTimer>
 #include <QRandomGenerator>
+#include <QSet>
 #include <cstdio>
 
 namespace stepdeck::bench {
@@ -26,6 +27,39 @@ bool traceEnabled()
     return trace;
 }
 
+// --drives N (issue 32): a bus of N drives at addresses 1..N, axis i at address i+1 (as the
+// simulator's probes name them, NanotecSimulator::probeAddress), every per-axis setup value
+// of the profile for each of them.
+QMap<Axis, int> busAddresses(int drives)
+{
+    QMap<Axis, int> out;
+    for (int i = 0; i < drives; ++i)
+        out.insert(Axis::at(i), i + 1);
+    return out;
+}
+
+BenchDevice::Config busConfig(BenchDevice::Config config, int drives)
+{
+    if (drives > 0)
+        config.addresses = busAddresses(drives).values();
+    return config;
+}
+
+SoakProfile busProfile(SoakProfile profile, int drives)
+{
+    if (drives <= 0)
+        return profile;
+    for (auto it = profile.setup.begin(); it != profile.setup.end(); ++it) {
+        if (!it.value().isPerAxis() || it.value().perAxis.isEmpty())
+            continue;
+        const QVariant value = it.value().perAxis.first();
+        it.value().perAxis.clear();
+        for (Axis a : busAddresses(drives).keys())
+            it.value().perAxis.insert(a, value);
+    }
+    return profile;
+}
+
 QString kindName(ErrorKind kind)
 {
     static const char* names[] = {"ok",        "refused",      "nak",         "timeout",
@@ -37,14 +71,17 @@ QString kindName(ErrorKind kind)
 class SoakRun
 {
 public:
-    SoakRun(const ModelInfo& model, int commands, quint32 seed,
+    SoakRun(const ModelInfo& model, int commands, quint32 seed, int drives,
             const std::function<void(const QString&)>& progress)
-        : m_model(model), m_profile(model.soak),
-          m_device(model, BenchDevice::soakConfig(model, seed)), m_rng(seed), m_progress(progress)
+        : m_model(model), m_profile(busProfile(model.soak, drives)),
+          m_device(model, busConfig(BenchDevice::soakConfig(model, seed), drives)), m_rng(seed),
+          m_progress(progress)
     {
-        m_fig.model = model.id;
+        m_fig.model = drives > 0 ? QStringLiteral("%1/%2").arg(model.id).arg(drives) : model.id;
         m_fig.commands = commands;
         m_fig.seed = seed;
+        if (drives > 0)
+            m_host.setAxisAddresses(busAddresses(drives));
     }
 
     SoakFigures run();
@@ -56,7 +93,9 @@ private:
     QString injectFault();
     void clearFaults();
     void record(const BenchHost::Outcome& outcome);
-    void recoverIfRefused(const BenchHost::Outcome& outcome);
+    void recoverIfRefused(const BenchHost::Outcome& outcome, const QList<Axis>& axes);
+    QList<Axis> someAxes(const QList<Axis>& axes);
+    ParameterSet setupOf(const QList<Axis>& axes) const;
     void cmdMove(bool wait);
     void cmdJog();
     void cmdVelocity();
@@ -68,7 +107,7 @@ private:
     int between(int low, int high) { return low + int(m_rng.bounded(high - low + 1)); }
 
     const ModelInfo& m_model;
-    const SoakProfile& m_profile;
+    const SoakProfile m_profile;
     BenchDevice m_device;
     BenchHost m_host;
     QRandomGenerator m_rng;
@@ -109,7 +148,12 @@ SoakFigures SoakRun::run()
                            .arg(m_fig.commands));
     }
     closeJogRange();
-    matchMoves(m_device.moves(), m_commanded, m_jogRanges, &m_fig);
+    const QList<SimulatedMove> deviceMoves = m_device.moves();
+    matchMoves(deviceMoves, m_commanded, m_jogRanges, &m_fig);
+    QSet<Axis> moved;
+    for (const SimulatedMove& move : deviceMoves)
+        moved.insert(move.axis);
+    m_fig.axesMoved = moved.size();
     m_fig.seconds = clock.elapsed() / 1000.0;
     return m_fig;
 }
@@ -305,7 +349,45 @@ void SoakRun::record(const BenchHost::Outcome& outcome)
 }
 
 // What an operator does after a refusal the model's manual says how to clear.
-void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome)
+// A random non-empty subset: any of a few axes; on a bus of many drives one to three of them,
+// as a plant moves a few drives at a time.
+QList<Axis> SoakRun::someAxes(const QList<Axis>& axes)
+{
+    constexpr int kFewAxes = 4;
+    QList<Axis> out;
+    if (axes.size() <= kFewAxes) {
+        for (Axis a : axes) {
+            if (out.isEmpty() || m_rng.bounded(2))
+                out << a;
+        }
+        return out;
+    }
+    const int count = between(1, 3);
+    while (out.size() < count) {
+        const Axis a = axes.at(int(m_rng.bounded(int(axes.size()))));
+        if (!out.contains(a))
+            out << a;
+    }
+    return out;
+}
+
+// The profile's setup for `axes` only (global values as they are).
+ParameterSet SoakRun::setupOf(const QList<Axis>& axes) const
+{
+    ParameterSet out = m_profile.setup;
+    for (auto it = out.begin(); it != out.end(); ++it) {
+        if (!it.value().isPerAxis())
+            continue;
+        for (Axis a : it.value().perAxis.keys()) {
+            if (!axes.contains(a))
+                it.value().perAxis.remove(a);
+        }
+    }
+    return out;
+}
+
+// The axes of the refused command get the operator's recovery.
+void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome, const QList<Axis>& axes)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
         return;
@@ -316,7 +398,7 @@ void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome)
         record(m_host.call([&](ControllerSession& s) { return s.moveAbsolute(here); }));
     }
     for (const QString& operation : m_profile.recovery) {
-        for (Axis a : m_host.session().capabilities().axes) {
+        for (Axis a : axes) {
             ++m_fig.recoveries;
             record(m_host.call([&](ControllerSession& s) {
                 return s.modelOperation(operation, {{operation::arg::kAxis, axisName(a)}});
@@ -330,16 +412,13 @@ void SoakRun::cmdMove(bool wait)
     // Sizes unique within kMoveWindow moves, so the device's journal can be matched.
     const qint64 size = 20 + (m_moveIndex++ % kMoveWindow);
     AxisVector steps;
-    const Capabilities caps = m_host.session().capabilities();
-    for (Axis a : caps.axes) {
-        if (steps.isEmpty() || m_rng.bounded(2))
-            steps.insert(a, m_rng.bounded(2) ? size : -size);
-    }
+    for (Axis a : someAxes(m_host.session().capabilities().axes))
+        steps.insert(a, m_rng.bounded(2) ? size : -size);
     const int journalBefore = int(m_device.moves().size());
     const BenchHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.moveRelative(steps); });
     record(out);
-    recoverIfRefused(out);
+    recoverIfRefused(out, steps.keys());
     const bool ok = out.finished && out.result.ok();
     for (auto it = steps.cbegin(); it != steps.cend(); ++it)
         m_commanded.append({it.key(), it.value(), ok, journalBefore});
@@ -375,7 +454,7 @@ void SoakRun::cmdVelocity()
     const BenchHost::Outcome out =
         m_host.call([&](ControllerSession& s) { return s.velocityMove(rates); });
     record(out);
-    recoverIfRefused(out);
+    recoverIfRefused(out, rates.keys());
     if (!out.finished || !out.result.ok())
         return;
     m_host.idle(between(50, 300));
@@ -392,8 +471,11 @@ void SoakRun::cmdParameters(bool write)
     }
     if (write && !m_profile.setup.isEmpty()) {
         const bool verify = !m_profile.readable.isEmpty() && m_rng.bounded(2);
-        record(m_host.call(
-            [&](ControllerSession& s) { return s.writeParameters(m_profile.setup, verify); }));
+        // A bus of many drives: the setup of a few of them, as a technician rewrites one drive.
+        const ParameterSet set = m_host.session().capabilities().axes.size() > 4
+                                     ? setupOf(someAxes(m_host.session().capabilities().axes))
+                                     : m_profile.setup;
+        record(m_host.call([&](ControllerSession& s) { return s.writeParameters(set, verify); }));
     } else {
         const QStringList names = m_profile.readable.isEmpty()
                                       ? QStringList{m_profile.setup.firstKey()}
@@ -404,10 +486,10 @@ void SoakRun::cmdParameters(bool write)
 
 } // namespace
 
-SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed,
+SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed, int drives,
                     const std::function<void(const QString&)>& progress)
 {
-    SoakRun run(model, commands, seed, progress);
+    SoakRun run(model, commands, seed, drives, progress);
     return run.run();
 }
 

@@ -33,6 +33,7 @@ struct SoakFigures
     qint64 recoveries = 0;         // operator actions after refused moves (SoakProfile::recovery)
     qint64 jogMoves = 0;           // device moves made by jogs (EMIS, laser: target chunks)
     qint64 emergencyStops = 0;     // no stop command: axes still moving after a lost link
+    qint64 axesMoved = 0;          // distinct device axes that started a move (a bus: drives)
     QMap<QString, qint64> faults;  // injected, by kind
     QMap<QString, qint64> results; // command results, by error kind
     double seconds = 0;
@@ -49,8 +50,9 @@ struct SoakFigures
 
 // Runs `commands` random commands against the model's simulator over a pseudo-terminal with
 // ~1 % injected faults, as its ModelInfo::soak profile says; progress lines go to `progress`
-// (may be empty).
-SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed,
+// (may be empty). drives > 0 (a multi-drive model; --drives N): a bus of that many drives at
+// addresses 1..N instead of the profile's (issue 32); the figures' model reads "nanotec/N".
+SoakFigures runSoak(const ModelInfo& model, int commands, quint32 seed, int drives,
                     const std::function<void(const QString&)>& progress);
 
 } // namespace stepdeck::bench

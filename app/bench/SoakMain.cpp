@@ -26,6 +26,7 @@ struct Options
     bool json = false;
     bool child = false;
     bool machine = false; // --soak N --machine: one machine of an E-LAB and a Nanotec
+    int drives = 0;       // --drives N: a bus of N drives (multi-drive models; issue 32)
 };
 
 // Returns false with *error on a malformed value; unknown arguments are left to main.cpp.
@@ -56,6 +57,12 @@ bool parse(const QStringList& args, Options* o, QString* error)
             o->child = true;
         } else if (a == QLatin1String("--machine")) {
             o->machine = true;
+        } else if (a == QLatin1String("--drives")) {
+            if (numbers::parseInteger(value(), 1, Axis::kMaxCount, &n) != NumberError::None) {
+                *error = QStringLiteral("--drives needs a count from 1 to %1").arg(Axis::kMaxCount);
+                return false;
+            }
+            o->drives = int(n);
         } else {
             *error = QStringLiteral("unknown argument '%1'").arg(a);
             return false;
@@ -85,6 +92,8 @@ SoakFigures soakInChild(const QString& program, const ModelInfo* model, const Op
     QStringList args{"--soak-child", "--soak", QString::number(o.soak), "--seed",
                      QString::number(o.seed)};
     args << (model ? QStringList{"--model", model->id} : QStringList{"--machine"});
+    if (o.drives > 0)
+        args << QStringLiteral("--drives") << QString::number(o.drives);
     child.start(program, args);
     // Generous: a command takes well under a second even with its faults.
     const int boundMs =
@@ -125,13 +134,20 @@ int soak(const QString& program, const Options& o)
         print(stderr, QStringLiteral("stepdeck-bench: %1").arg(error));
         return 2;
     }
+    if (o.drives > 0 &&
+        (chosen.size() != 1 || !chosen.first() || !chosen.first()->capabilities.multiDrive)) {
+        print(stderr, QStringLiteral("stepdeck-bench: --drives N needs --model of a bus of "
+                                     "drives (nanotec)"));
+        return 2;
+    }
     const auto progress = [&](const QString& line) {
         if (!o.json)
             print(stderr, line);
     };
     if (o.child) { // one model, in this process; the parent reads the last line
-        const SoakFigures fig = o.machine ? runMachineSoak(o.soak, o.seed, progress)
-                                          : runSoak(*chosen.first(), o.soak, o.seed, progress);
+        const SoakFigures fig = o.machine
+                                    ? runMachineSoak(o.soak, o.seed, progress)
+                                    : runSoak(*chosen.first(), o.soak, o.seed, o.drives, progress);
         print(stdout,
               QString::fromUtf8(QJsonDocument(fig.toJson()).toJson(QJsonDocument::Compact)));
         return 0;

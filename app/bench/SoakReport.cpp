@@ -49,6 +49,7 @@ template <typename F> void eachCounter(F f, SoakFigures& s)
     f("recoveries", s.recoveries);
     f("jogMoves", s.jogMoves);
     f("emergencyStops", s.emergencyStops);
+    f("axesMoved", s.axesMoved);
 }
 } // namespace
 
@@ -87,7 +88,8 @@ QString SoakFigures::toText() const
                "axes found moving after a vanish %15\n"
                "  moves (per axis): host told success %16, device started %17, started although "
                "the host was told it failed %18, device moves matching no command %19; operator "
-               "recoveries after refusals %20; device moves made by jogs (not matched) %21\n"
+               "recoveries after refusals %20; device moves made by jogs (not matched) %21; "
+               "axes that moved at the device %24\n"
                "  emergency stops at the device (models without a stop command, axes still "
                "moving after a lost link) %22\n"
                "  results: %23")
@@ -113,7 +115,8 @@ QString SoakFigures::toText() const
         .arg(recoveries)
         .arg(jogMoves)
         .arg(emergencyStops)
-        .arg(mapText(results));
+        .arg(mapText(results))
+        .arg(axesMoved);
 }
 
 } // namespace stepdeck::bench

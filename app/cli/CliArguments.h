@@ -71,12 +71,13 @@ QString unknownCommandText(const QString& name, const QList<CommandSyntax>& comm
 // "X=N Y=N" -> per-axis integers (decimal, NumberParsing.h). Axes must belong to `axes`, none
 // twice, at least one. A failure's message starts with `command`; a malformed or non-finite
 // number ("abc", "0x40", "nan", "inf") is a usage error (exit 2), a decimal number beyond
-// what the type holds an invalid value (exit 7).
+// what the type holds an invalid value (exit 7). An axis goes by its name in `names`
+// ("feeder=100") or its default name.
 Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                          AxisVector* out);
+                          AxisVector* out, const AxisNames& names = {});
 // The same for decimal rates ("X=-1500.5", "Y=1e3").
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                         AxisVelocities* out);
+                         AxisVelocities* out, const AxisNames& names = {});
 // "X=1,Y=2,Z=3" or "feeder=5,gate=6" (the --axes list; assignBusAxes says which axis each name
 // is). Only the syntax and the names are checked here; which addresses a bus allows is the
 // model's (Capabilities::minBusAddress..maxBusAddress), checked when the controller is created.

@@ -16,12 +16,12 @@ struct CliAxisArguments
 // Parse: (QStringView text, T* value) -> NumberError. A failure is an Outcome whose message
 // does not name the command yet.
 template <typename T, typename Parse>
-Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, QMap<Axis, T>* out,
-                             Parse parse)
+Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes,
+                             const AxisNames& axisNames, QMap<Axis, T>* out, Parse parse)
 {
     QStringList names;
     for (Axis a : axes)
-        names << axisName(a);
+        names << axisNames.name(a);
     const auto noSuchAxis = [&names](const QString& name) {
         return Outcome::usage(CliAxisArguments::tr("this machine has no axis %1 (its axes: %2)")
                                   .arg(name, names.join(QStringLiteral(", "))));
@@ -30,7 +30,7 @@ Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, Q
     for (const QString& arg : args) {
         const int eq = arg.indexOf(QLatin1Char('='));
         const QString name = eq > 0 ? arg.left(eq).trimmed() : QString();
-        const auto axis = axisFromName(name);
+        const auto axis = axisNames.find(name); // "feeder", or a default name (issue 32)
         // One letter before '=' is meant as an axis ("Q=5"): say there is no such axis.
         if (!axis && name.size() == 1 && name.at(0).isLetter())
             return noSuchAxis(name.toUpper());
@@ -38,9 +38,10 @@ Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, Q
             return Outcome::usage(
                 CliAxisArguments::tr("expected AXIS=VALUE (e.g. X=100), got '%1'").arg(arg));
         if (!axes.contains(*axis))
-            return noSuchAxis(axisName(*axis));
+            return noSuchAxis(axisNames.name(*axis));
         if (result.contains(*axis))
-            return Outcome::usage(CliAxisArguments::tr("axis %1 given twice").arg(axisName(*axis)));
+            return Outcome::usage(
+                CliAxisArguments::tr("axis %1 given twice").arg(axisNames.name(*axis)));
         T value{};
         const QString text = arg.mid(eq + 1);
         switch (parse(QStringView(text), &value)) {
@@ -48,14 +49,14 @@ Outcome parseAxisAssignments(const QStringList& args, const QList<Axis>& axes, Q
             break;
         case NumberError::Malformed:
             return Outcome::usage(CliAxisArguments::tr("%1: '%2' is not a decimal number")
-                                      .arg(axisName(*axis), text));
+                                      .arg(axisNames.name(*axis), text));
         case NumberError::NonFinite:
-            return Outcome::usage(
-                CliAxisArguments::tr("%1: '%2' is not a finite number").arg(axisName(*axis), text));
+            return Outcome::usage(CliAxisArguments::tr("%1: '%2' is not a finite number")
+                                      .arg(axisNames.name(*axis), text));
         case NumberError::OutOfRange:
             return Outcome::failure(
                 ExitInvalidValue,
-                CliAxisArguments::tr("%1: '%2' is out of range").arg(axisName(*axis), text));
+                CliAxisArguments::tr("%1: '%2' is out of range").arg(axisNames.name(*axis), text));
         }
         result.insert(*axis, value);
     }
@@ -75,19 +76,19 @@ Outcome named(const QString& command, Outcome outcome)
 } // namespace
 
 Outcome parseAxisIntegers(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                          AxisVector* out)
+                          AxisVector* out, const AxisNames& names)
 {
     return named(command,
-                 parseAxisAssignments<qint64>(args, axes, out, [](QStringView s, qint64* v) {
+                 parseAxisAssignments<qint64>(args, axes, names, out, [](QStringView s, qint64* v) {
                      return numbers::parseInteger(s, v);
                  }));
 }
 
 Outcome parseAxisDoubles(const QString& command, const QStringList& args, const QList<Axis>& axes,
-                         AxisVelocities* out)
+                         AxisVelocities* out, const AxisNames& names)
 {
     return named(command,
-                 parseAxisAssignments<double>(args, axes, out, [](QStringView s, double* v) {
+                 parseAxisAssignments<double>(args, axes, names, out, [](QStringView s, double* v) {
                      return numbers::parseReal(s, v);
                  }));
 }

@@ -62,6 +62,55 @@ QString valueText(const QVariant& value)
         return value.toBool() ? QStringLiteral("on") : QStringLiteral("off");
     return value.toString();
 }
+
+// Each drive found under the name --axes gives its address ("axis": "feeder"; issue 32), so a
+// technician sees which configured drive answered and which address is a stranger.
+QVariantList withDriveNames(const CliOptions& o, QVariantList drives)
+{
+    for (QVariant& entry : drives) {
+        QVariantMap d = entry.toMap();
+        const int address = d.value(QStringLiteral("address")).toInt();
+        for (auto it = o.axisAddresses.cbegin(); it != o.axisAddresses.cend(); ++it) {
+            if (it.value() == address)
+                d.insert(QStringLiteral("axis"), o.axisNames.name(it.key()));
+        }
+        if (o.address && *o.address == address)
+            d.insert(QStringLiteral("axis"), axisName(Axis::X)); // --address N: the one drive
+        entry = d;
+    }
+    return drives;
+}
+
+// The drives found, one row each; with a bus list (--axes, --address) the name each has there.
+void printScan(const CliOptions& o, const QVariantList& drives)
+{
+    if (o.axisAddresses.isEmpty() && !o.address) {
+        // No bus list given: nothing to name the drives by.
+        printLine(CliText::tr("Address  Firmware"));
+        for (const QVariant& entry : drives) {
+            const QVariantMap d = entry.toMap();
+            printLine(QStringLiteral("%1  %2")
+                          .arg(d.value(QStringLiteral("address")).toInt(), 7)
+                          .arg(d.value(QStringLiteral("firmware")).toString()));
+        }
+        return;
+    }
+    int width = CliText::tr("Drive").size();
+    for (const QVariant& entry : drives)
+        width = qMax(width, int(entry.toMap().value(QStringLiteral("axis")).toString().size()));
+    printLine(QStringLiteral("%1  %2  %3")
+                  .arg(CliText::tr("Address"), 7)
+                  .arg(CliText::tr("Drive"), -width)
+                  .arg(CliText::tr("Firmware")));
+    for (const QVariant& entry : drives) {
+        const QVariantMap d = entry.toMap();
+        const QString axis = d.value(QStringLiteral("axis")).toString();
+        printLine(QStringLiteral("%1  %2  %3")
+                      .arg(d.value(QStringLiteral("address")).toInt(), 7)
+                      .arg(axis.isEmpty() ? QStringLiteral("-") : axis, -width)
+                      .arg(d.value(QStringLiteral("firmware")).toString()));
+    }
+}
 } // namespace
 
 Outcome cmdScan(CliContext& c, QStringList args)
@@ -98,7 +147,7 @@ Outcome cmdScan(CliContext& c, QStringList args)
         timeoutMs);
     if (!result.ok())
         return Outcome::from(result);
-    const QVariantList drives = result.value.toList();
+    const QVariantList drives = withDriveNames(c.options, result.value.toList());
     if (c.json()) {
         printJson(QJsonArray::fromVariantList(drives));
         return Outcome::success();
@@ -110,13 +159,7 @@ Outcome cmdScan(CliContext& c, QStringList args)
                       .arg(c.options.port));
         return Outcome::success();
     }
-    printLine(CliText::tr("Address  Firmware"));
-    for (const QVariant& entry : drives) {
-        const QVariantMap d = entry.toMap();
-        printLine(QStringLiteral("%1  %2")
-                      .arg(d.value(QStringLiteral("address")).toInt(), 7)
-                      .arg(d.value(QStringLiteral("firmware")).toString()));
-    }
+    printScan(c.options, drives);
     return Outcome::success();
 }
 
@@ -127,7 +170,7 @@ Outcome driveAxis(const CliContext& c, const QString& command, const QStringList
     const QList<Axis> axes = c.axes();
     std::optional<Axis> axis;
     if (args.size() == 1)
-        axis = axisFromName(args.first().toUpper());
+        axis = c.options.axisNames.find(args.first()); // "feeder", or a default name
     else if (args.isEmpty() && axes.size() == 1)
         axis = axes.first();
     if (args.size() > 1 || (args.isEmpty() && !axis))

@@ -38,7 +38,7 @@ Outcome axisAndWord(const CliContext& c, const QString& command, QStringList arg
     const QList<Axis> axes = c.axes();
     std::optional<Axis> chosen;
     if (args.size() == 1)
-        chosen = axisFromName(args.first().toUpper());
+        chosen = c.options.axisNames.find(args.first()); // "feeder", or a default name
     else if (args.isEmpty() && axes.size() == 1)
         chosen = axes.first();
     if (args.size() > 1 || (args.isEmpty() && !chosen))
@@ -239,8 +239,8 @@ Outcome cmdCalibrate(CliContext& c, QStringList args)
 Outcome homeClosedLoop(CliContext& c, const QStringList& args)
 {
     AxisVector directions;
-    Outcome result =
-        parseAxisIntegers(QStringLiteral("home --closed-loop"), args, c.axes(), &directions);
+    Outcome result = parseAxisIntegers(QStringLiteral("home --closed-loop"), args, c.axes(),
+                                       &directions, c.options.axisNames);
     for (auto it = directions.cbegin(); result.ok() && it != directions.cend(); ++it) {
         if (qAbs(it.value()) > 1)
             result = Outcome::failure(ExitInvalidValue,

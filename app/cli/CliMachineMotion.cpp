@@ -60,12 +60,13 @@ Outcome parseHomeAxes(const machine::MachineDescription& d, const QStringList& a
 {
     for (const QString& arg : args) {
         const int eq = arg.indexOf(QLatin1Char('='));
-        const QString name = (eq < 0 ? arg : arg.left(eq)).trimmed().toUpper();
-        const MachineAxis* a = d.axis(name);
+        const QString given = (eq < 0 ? arg : arg.left(eq)).trimmed();
+        const MachineAxis* a = d.findAxis(given);
         if (!a)
             return Outcome::usage(CliText::tr("home: the machine has no axis %1 (home takes axis "
                                               "names, home Z X, or directions, home X=1 Z=-1)")
-                                      .arg(name));
+                                      .arg(given));
+        const QString name = a->name;
         qint64 direction = 0;
         if (eq < 0) {
             *axes << name;

@@ -46,6 +46,19 @@ Outcome parseValue(const QString& command, const MachineAxis& axis, const QStrin
 }
 } // namespace
 
+namespace {
+// A bus of 254 drives: the first names and how many there are, not a page of them.
+QString axisList(const QStringList& names)
+{
+    constexpr int kShown = 12;
+    if (names.size() <= kShown)
+        return names.join(QStringLiteral(", "));
+    return CliText::tr("%1, ... (%2 in all)")
+        .arg(names.mid(0, kShown).join(QStringLiteral(", ")))
+        .arg(names.size());
+}
+} // namespace
+
 Outcome parseUnits(const QString& command, const QStringList& args,
                    const machine::MachineDescription& d, bool wholeSteps,
                    QMap<QString, double>* out)
@@ -55,17 +68,18 @@ Outcome parseUnits(const QString& command, const QStringList& args,
         names << a.name;
     if (args.isEmpty())
         return Outcome::usage(CliText::tr("%1 needs at least one AXIS=VALUE (axes: %2)")
-                                  .arg(command, names.join(QStringLiteral(", "))));
+                                  .arg(command, axisList(names)));
     for (const QString& arg : args) {
         const int eq = arg.indexOf(QLatin1Char('='));
-        const QString name = eq > 0 ? arg.left(eq).trimmed().toUpper() : QString();
-        if (name.isEmpty())
+        const QString given = eq > 0 ? arg.left(eq).trimmed() : QString();
+        if (given.isEmpty())
             return Outcome::usage(
                 CliText::tr("%1: expected AXIS=VALUE (e.g. X=12.5), got '%2'").arg(command, arg));
-        const MachineAxis* axis = d.axis(name);
+        const MachineAxis* axis = d.findAxis(given);
         if (!axis)
             return Outcome::usage(CliText::tr("%1: this machine has no axis %2 (its axes: %3)")
-                                      .arg(command, name, names.join(QStringLiteral(", "))));
+                                      .arg(command, given, axisList(names)));
+        const QString name = axis->name;
         if (out->contains(name))
             return Outcome::usage(CliText::tr("%1: axis %2 given twice").arg(command, name));
         double value = 0;

@@ -122,7 +122,13 @@ Outcome singleControllerMachine(const CliOptions& o, machine::MachineDescription
     QMap<Axis, int> addresses = o.axisAddresses;
     if (o.address)
         addresses.insert(Axis::X, *o.address);
-    *out = machine::MachineDescription::singleController(*model, o.port, addresses, o.axisNames);
+    // Every drive of a bus by its name for move, jog, home and status (issue 32); a program
+    // (run) addresses axes by letter, so only the first nine.
+    const auto drives = o.command == QLatin1String("run")
+                            ? machine::MachineDescription::DriveAxes::Letters
+                            : machine::MachineDescription::DriveAxes::All;
+    *out = machine::MachineDescription::singleController(*model, o.port, addresses, o.axisNames,
+                                                         drives);
     if (model->capabilities.resetLine)
         out->controllers.first().resetLine = o.resetLine;
     return Outcome::success();

@@ -116,10 +116,13 @@ QJsonObject oneControllerJson(CliMachineSession& m)
 
 void printAxisTable(CliMachineSession& m)
 {
+    int width = 1; // a letter; a bus's drives past the ninth go by their names (issue 32)
+    for (const MachineAxis& a : m.description().axes)
+        width = qMax(width, int(a.name.size()));
     for (const MachineAxis& a : m.description().axes) {
         const MachineAxisStatus s = m.machine().axisStatus(a);
         printLine(CliText::tr("  %1  %2 %3  (%4 steps on %5.%6)%7%8")
-                      .arg(a.name)
+                      .arg(a.name, -width)
                       .arg(valueText(a, s.position), 12)
                       .arg(machine::unitKey(a.unit), -5)
                       .arg(s.steps)

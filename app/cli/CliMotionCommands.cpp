@@ -118,7 +118,9 @@ Outcome positioning(CliContext& c, const QStringList& args, const QString& comma
         return Outcome::usage(
             CliText::tr("%1 --timeout needs a positive number of milliseconds").arg(command));
     AxisVector steps;
-    if (const Outcome parsed = parseAxisIntegers(command, args, c.axes(), &steps); !parsed.ok())
+    if (const Outcome parsed =
+            parseAxisIntegers(command, args, c.axes(), &steps, c.options.axisNames);
+        !parsed.ok())
         return parsed;
     if (check) {
         if (const Outcome checked = check(steps); !checked.ok())
@@ -233,8 +235,8 @@ Outcome cmdVelocity(CliContext& c, QStringList args)
         return Outcome::usage(
             CliText::tr("velocity --for needs a positive number of milliseconds"));
     AxisVector rates;
-    if (const Outcome parsed =
-            parseAxisIntegers(QStringLiteral("velocity"), args, c.axes(), &rates);
+    if (const Outcome parsed = parseAxisIntegers(QStringLiteral("velocity"), args, c.axes(), &rates,
+                                                 c.options.axisNames);
         !parsed.ok())
         return parsed;
     Outcome result = connectAndRun(c, [&](ControllerSession& s) { return s.velocityMove(rates); });

@@ -29,23 +29,20 @@ QString positionText(const AxisStatus& axis)
 
 // A status word in hex with the manual's names of its set bits ("0x0080 tmInvSetup"); any
 // other raw value as it is.
-QString rawValueText(const QString& key, const QVariant& value, const ModelInfo& model)
+QString rawValueText(const QString& key, const QVariant& value, const QList<StatusWordInfo>& words)
 {
-    if (model.presentation.statusWords) {
-        for (const StatusWordInfo& word : model.presentation.statusWords()) {
-            if (word.key != key)
-                continue;
-            const qulonglong bits = value.toULongLong();
-            QStringList set;
-            for (const StatusBitInfo& bit : word.bits) {
-                if (bits & (1ull << bit.bit))
-                    set << bit.name;
-            }
-            const QString hex =
-                QStringLiteral("0x%1").arg(bits, (word.width + 3) / 4, 16, QLatin1Char('0'));
-            return set.isEmpty() ? hex
-                                 : QStringLiteral("%1 (%2)").arg(hex, set.join(QLatin1Char(' ')));
+    for (const StatusWordInfo& word : words) {
+        if (word.key != key)
+            continue;
+        const qulonglong bits = value.toULongLong();
+        QStringList set;
+        for (const StatusBitInfo& bit : word.bits) {
+            if (bits & (1ull << bit.bit))
+                set << bit.name;
         }
+        const QString hex =
+            QStringLiteral("0x%1").arg(bits, (word.width + 3) / 4, 16, QLatin1Char('0'));
+        return set.isEmpty() ? hex : QStringLiteral("%1 (%2)").arg(hex, set.join(QLatin1Char(' ')));
     }
     return value.toString();
 }
@@ -264,8 +261,12 @@ QString formatStatus(const MachineStatus& status, const ModelInfo& model,
                      .arg(positionText(a));
     }
     QStringList raw;
+    // Every drive's word decoded, not only the first four (issue 32).
+    const QList<StatusWordInfo> words = model.presentation.statusWords
+                                            ? model.presentation.statusWords(status.axes.keys())
+                                            : QList<StatusWordInfo>();
     for (auto it = status.raw.cbegin(); it != status.raw.cend(); ++it)
-        raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.key(), it.value(), model));
+        raw << QStringLiteral("%1=%2").arg(it.key(), rawValueText(it.key(), it.value(), words));
     if (!raw.isEmpty())
         lines << CliText::tr("Raw:          %1").arg(raw.join(QStringLiteral(" ")));
     return lines.join(QLatin1Char('\n'));

@@ -149,6 +149,23 @@ const MachineAxis* MachineDescription::axis(const QString& axisNameInMachine) co
     return nullptr;
 }
 
+const MachineAxis* MachineDescription::findAxis(const QString& wanted) const
+{
+    if (const MachineAxis* exact = axis(wanted))
+        return exact;
+    const MachineAxis* found = nullptr;
+    for (const MachineAxis& a : axes) {
+        if (a.name.compare(wanted, Qt::CaseInsensitive) == 0)
+            return &a;
+        if (controllerAxisName(a).compare(wanted, Qt::CaseInsensitive) == 0) {
+            if (found)
+                return nullptr; // two controllers give an axis that name
+            found = &a;
+        }
+    }
+    return found;
+}
+
 QString MachineDescription::controllerAxisName(const MachineAxis& a) const
 {
     const MachineController* c = controller(a.controller);
@@ -180,10 +197,11 @@ const QStringList& MachineDescription::axisLetters()
 
 MachineDescription MachineDescription::singleController(const ModelInfo& model, const QString& port,
                                                         const QMap<Axis, int>& addresses,
-                                                        const AxisNames& names)
+                                                        const AxisNames& names, DriveAxes drives)
 {
     MachineDescription d;
     d.name = model.displayName;
+    d.driveNamedAxes = drives == DriveAxes::All;
     MachineController c;
     c.id = model.id;
     c.modelId = model.id;
@@ -200,8 +218,10 @@ MachineDescription MachineDescription::singleController(const ModelInfo& model, 
     for (Axis axis : axes) {
         MachineAxis a;
         a.name = axisLetters().contains(axisName(axis)) ? axisName(axis) : free.value(0);
-        if (a.name.isEmpty())
+        if (a.name.isEmpty() && drives == DriveAxes::Letters)
             break; // nine machine axes at most
+        if (a.name.isEmpty())
+            a.name = names.name(axis);
         free.removeOne(a.name);
         a.controller = c.id;
         a.axis = axis;
@@ -255,7 +275,8 @@ bool operator==(const MachineSpindle& a, const MachineSpindle& b)
 bool operator==(const MachineDescription& a, const MachineDescription& b)
 {
     return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes &&
-           a.spindle == b.spindle && a.crossControllerFeed == b.crossControllerFeed;
+           a.spindle == b.spindle && a.crossControllerFeed == b.crossControllerFeed &&
+           a.driveNamedAxes == b.driveNamedAxes;
 }
 
 } // namespace stepdeck::machine

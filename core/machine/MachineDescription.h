@@ -96,9 +96,16 @@ struct MachineDescription
     // says so with an estimate). False (file: "crossControllerFeed": false): the check refuses
     // them.
     bool crossControllerFeed = true;
+    // singleController(..., DriveAxes::All): axes past the ninth go by their drive names
+    // (validation accepts them; no file has them, so toJson leaves this out).
+    bool driveNamedAxes = false;
 
     const MachineController* controller(const QString& id) const;
     const MachineAxis* axis(const QString& name) const;
+    // The axis a person means by `name` (CLI move, jog, home; issue 32): its machine name, as
+    // given or in any case, else the name its controller gives it ("feeder"), when exactly one
+    // axis has that name. nullptr: none, or several.
+    const MachineAxis* findAxis(const QString& name) const;
     // The name its controller gives the controller axis of `a` ("feeder"; issue 32).
     QString controllerAxisName(const MachineAxis& a) const;
     int
@@ -114,10 +121,14 @@ struct MachineDescription
     // `names` as for MachineController. An axis whose default name is a machine axis' letter
     // (X, Y, Z, U) keeps it; the others take the free letters of X Y Z A B C U V W in axis
     // order (a program addresses axes by letter). A bus of more than nine drives has nine
-    // machine axes; the drive pages reach every drive.
+    // machine axes; the drive pages reach every drive. With DriveAxes::All (the CLI's move,
+    // jog, home and status without a machine file) every further drive is a machine axis too,
+    // under its controller name (axis10, "feeder"): nothing in a program can address it.
+    enum class DriveAxes { Letters, All };
     static MachineDescription singleController(const ModelInfo& model, const QString& port,
                                                const QMap<Axis, int>& addresses = {},
-                                               const AxisNames& names = {});
+                                               const AxisNames& names = {},
+                                               DriveAxes drives = DriveAxes::Letters);
     // The letters a machine axis may have: X Y Z A B C U V W.
     static const QStringList& axisLetters();
     // The file form (MachineFile::parse reads it back to an equal description).

@@ -1,9 +1,11 @@
 #pragma once
+#include "model/Axis.h"
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QList>
 #include <QString>
 #include <functional>
+#include <optional>
 
 namespace stepdeck {
 
@@ -28,12 +30,16 @@ struct StatusWordInfo
     QString title;  // translated heading, e.g. "Machine state (RequestMachineState)"
     int width = 16; // bits, for the hex display width
     QList<StatusBitInfo> bits;
+    // The axis a word of one drive belongs to (Nanotec `$` of each drive); nullopt: a word of
+    // the controller. The title then names no axis: the view says whose word it shows.
+    std::optional<Axis> axis;
 };
 
 struct ModelPresentation
 {
-    // The raw words with their bit names, built when called so the current language applies.
-    std::function<QList<StatusWordInfo>()> statusWords;
+    // The raw words with their bit names for a controller of `axes`, built when called so the
+    // current language applies (a bus of 254 drives has 254 drive words; issue 32).
+    std::function<QList<StatusWordInfo>(const QList<Axis>& axes)> statusWords;
     // Traffic bytes as console text (E-LAB: "<ESC>S0064,0064;0064.").
     std::function<QString(const QByteArray&)> formatTraffic;
     // The console's send line back into bytes; false and a reason on bad notation.

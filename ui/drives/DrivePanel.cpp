@@ -1,6 +1,9 @@
 #include "DrivePanel.h"
 #include "ClosedLoopPanel.h"
+#include "common/AxisListBar.h"
+#include "common/AxisRowFilter.h"
 #include "common/ElidedLabel.h"
+#include "drives/DriveListModel.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
@@ -8,6 +11,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QTableView>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -20,17 +24,6 @@ QTableWidgetItem* cell(const QString& text)
     auto* item = new QTableWidgetItem(text);
     item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     return item;
-}
-
-bool sameDrive(const DriveStatus& a, const DriveStatus& b)
-{
-    return a.address == b.address && a.axes == b.axes && a.responding == b.responding &&
-           a.firmware == b.firmware && a.detail == b.detail;
-}
-
-bool sameDrives(const QList<DriveStatus>& a, const QList<DriveStatus>& b)
-{
-    return std::equal(a.cbegin(), a.cend(), b.cbegin(), b.cend(), sameDrive);
 }
 
 QTableWidget* makeTable(const QStringList& headers, QWidget* parent)
@@ -46,9 +39,8 @@ QTableWidget* makeTable(const QStringList& headers, QWidget* parent)
 } // namespace
 
 DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
-    : QWidget(parent), m_context(context),
-      m_drives(makeTable({tr("Address"), tr("Axes"), tr("Responding"), tr("Firmware"), tr("State")},
-                         this)),
+    : QWidget(parent), m_context(context), m_drives(new QTableView(this)),
+      m_driveModel(new DriveListModel(this)), m_driveFilter(new AxisRowFilter(this)),
       m_found(makeTable({tr("Address"), tr("Hardware"), tr("Firmware"), tr("Date")}, this)),
       m_closedLoop(new ClosedLoopPanel(context, this)),
       m_scan(new QPushButton(tr("Scan bus"), this)),
@@ -61,6 +53,16 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     showAddressRange();
     auto* v = new QVBoxLayout(this);
     v->addWidget(new QLabel(tr("Drives of this machine"), this));
+    // A bus of up to 254 drives (issue 32, step 5): filtered by name or address; moving ones
+    // first only on request, so a row the operator is about to pick does not jump away.
+    m_driveFilter->setSourceModel(m_driveModel);
+    m_drives->setModel(m_driveFilter);
+    m_drives->verticalHeader()->hide();
+    m_drives->horizontalHeader()->setStretchLastSection(true);
+    m_drives->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_drives->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_driveBar = new AxisListBar(m_driveFilter, this);
+    v->addWidget(m_driveBar);
     v->addWidget(m_drives, 2);
     // Named by the core's position-error messages (ControllerOptions::actionNames).
     m_resetError = new PositionErrorResetButton(context, m_drives, this);
@@ -197,43 +199,34 @@ void DrivePanel::onStatus(const MachineStatus& status)
 {
     if (!m_context->isConnected())
         return; // a last status queued behind the disconnect
-    // Every poll brings the drives; the table (and its column widths, which lay out every
-    // header and cell text) is rebuilt only when what it shows changed (issue 21, idle cost).
-    if (m_shownDrives && sameDrives(*m_shownDrives, status.drives))
-        return;
-    m_shownDrives = status.drives;
-    m_drives->setRowCount(int(status.drives.size()));
-    m_silent = 0;
-    for (int r = 0; r < status.drives.size(); ++r) {
-        const DriveStatus& d = status.drives.at(r);
+    QList<DriveListModel::Row> rows;
+    rows.reserve(status.drives.size());
+    int silent = 0;
+    for (const DriveStatus& d : status.drives) {
+        DriveListModel::Row row{d, {}, false};
         QStringList axes;
-        for (Axis a : d.axes)
+        for (Axis a : d.axes) {
             axes << m_context->controllerAxisName(a);
-        m_drives->setItem(r, Address, cell(QString::number(d.address)));
-        m_drives->setItem(r, Axes, cell(axes.join(QLatin1Char(','))));
-        // A silent drive must stand out at a glance: red cell, cross mark, capitals.
-        QTableWidgetItem* answer =
-            cell(d.responding ? tr("\u2714 yes") : tr("\u2716 NOT RESPONDING"));
-        if (!d.responding) {
-            answer->setBackground(QColor(0xc6, 0x28, 0x28));
-            answer->setForeground(Qt::white);
-            answer->setToolTip(tr("The drive stopped answering; check its power, address and "
-                                  "the RS485 wiring. The other drives keep working."));
-            ++m_silent;
+            const AxisStatus as = status.axes.value(a);
+            row.moving = row.moving || as.moving || as.jogging;
         }
-        m_drives->setItem(r, Responding, answer);
-        m_drives->setItem(r, Firmware, cell(d.firmware));
-        m_drives->setItem(r, Detail, cell(d.detail));
+        row.axisNames = axes.join(QLatin1Char(','));
+        silent += d.responding ? 0 : 1;
+        rows << row;
     }
-    m_drives->resizeColumnsToContents();
+    m_silent = silent;
+    // Every poll brings the drives; only what changed is signalled, and the column widths
+    // (which lay out every header and cell text) follow a new set of drives only (issue 21).
+    const int before = m_driveModel->rowCount();
+    if (m_driveModel->setRows(rows) && before != m_driveModel->rowCount())
+        m_drives->resizeColumnsToContents();
 }
 
 void DrivePanel::onLinkState(LinkState state)
 {
     // Without a link the last answers say nothing about the drives any more.
     if (state == LinkState::Disconnected) {
-        m_drives->setRowCount(0);
-        m_shownDrives.reset();
+        m_driveModel->setRows({});
         m_silent = 0;
     }
     updateEnabled();

@@ -8,11 +8,15 @@
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QTableView;
 class QTableWidget;
 
 namespace stepdeck::ui {
 
+class AxisListBar;
+class AxisRowFilter;
 class ClosedLoopPanel;
+class DriveListModel;
 class ElidedLabel;
 class MachineContext;
 class PositionErrorResetButton;
@@ -26,12 +30,13 @@ class DrivePanel : public QWidget
 {
     Q_OBJECT
 public:
-    enum Column { Address, Axes, Responding, Firmware, Detail, ColumnCount };
     enum FoundColumn { FoundAddress, FoundHardware, FoundFirmware, FoundDate, FoundColumnCount };
 
     explicit DrivePanel(MachineContext* context, QWidget* parent = nullptr);
 
-    QTableWidget* driveTable() const { return m_drives; }
+    // The drives as listed: filtered, in the order shown (DriveListModel's columns).
+    QTableView* driveTable() const { return m_drives; }
+    AxisListBar* driveBar() const { return m_driveBar; }
     QTableWidget* foundTable() const { return m_found; }
     // Commissioning of closed loop (models with Capabilities::closedLoop; hidden otherwise).
     ClosedLoopPanel* closedLoopPanel() const { return m_closedLoop; }
@@ -63,7 +68,10 @@ private:
     void endScan(const QString& text);
 
     MachineContext* m_context;
-    QTableWidget* m_drives;
+    QTableView* m_drives;
+    DriveListModel* m_driveModel;
+    AxisRowFilter* m_driveFilter;
+    AxisListBar* m_driveBar = nullptr;
     QTableWidget* m_found;
     ClosedLoopPanel* m_closedLoop;
     QPushButton* m_scan;
@@ -77,8 +85,6 @@ private:
     int m_scanLast = 0;
     bool m_scanCancelled = false;
     QVariantList m_foundDrives;
-    // The drives the table shows (nullopt: none shown since the link came up).
-    std::optional<QList<DriveStatus>> m_shownDrives;
     int m_silent = 0;
 };
 

@@ -1,19 +1,23 @@
 #include "PositionErrorResetButton.h"
+#include "common/AxisRowFilter.h"
 #include "drives/DrivePanel.h"
 #include "machine/MachineContext.h"
-#include <QTableWidget>
+#include <QAbstractItemView>
+#include <QItemSelectionModel>
 
 namespace stepdeck::ui {
 
-PositionErrorResetButton::PositionErrorResetButton(MachineContext* context, QTableWidget* drives,
-                                                   QWidget* parent)
+PositionErrorResetButton::PositionErrorResetButton(MachineContext* context,
+                                                   QAbstractItemView* drives, QWidget* parent)
     : QPushButton(tr("Reset position error"), parent), m_context(context), m_drives(drives)
 {
     setObjectName(QStringLiteral("resetPositionErrorButton"));
     setToolTip(tr("For the drives selected above: take over the encoder position as the "
                   "position and clear the position error (manual 5.14)"));
     connect(this, &QPushButton::clicked, this, &PositionErrorResetButton::resetSelected);
-    connect(m_drives, &QTableWidget::itemSelectionChanged, this,
+    connect(m_drives->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &PositionErrorResetButton::updateEnabled);
+    connect(m_drives->model(), &QAbstractItemModel::modelReset, this,
             &PositionErrorResetButton::updateEnabled);
     ControllerSession* session = context->session();
     connect(session, &ControllerSession::requestFinished, this,
@@ -32,11 +36,13 @@ QString PositionErrorResetButton::actionName()
 
 QList<Axis> PositionErrorResetButton::selectedAxes() const
 {
+    // The rows say which axes they are: the list may be filtered and sorted.
     QList<Axis> axes;
-    const MachineStatus& status = m_context->status();
     for (const QModelIndex& row : m_drives->selectionModel()->selectedRows()) {
-        if (row.row() < status.drives.size())
-            axes += status.drives.at(row.row()).axes;
+        for (const QVariant& index : row.data(AxisRowFilter::AxesRole).toList()) {
+            if (const std::optional<Axis> axis = Axis::fromIndex(index.toInt()))
+                axes << *axis;
+        }
     }
     return axes;
 }

@@ -4,13 +4,13 @@
 #include "model/ModelOperations.h"
 #include <QPushButton>
 
-class QTableWidget;
+class QAbstractItemView;
 
 namespace stepdeck::ui {
 
 class MachineContext;
 
-// "Reset position error" for the drives selected in the drive table (Nanotec 'D', manual
+// "Reset position error" for the drives selected in the drive list (Nanotec 'D', manual
 // 5.14: the position becomes the encoder's and the error is cleared), through the model
 // operation operation::kResetPositionError. The core's messages name this button (actionName(),
 // passed in ControllerOptions::actionNames by MachineContext) where the CLI names its command.
@@ -18,7 +18,7 @@ class PositionErrorResetButton : public QPushButton
 {
     Q_OBJECT
 public:
-    PositionErrorResetButton(MachineContext* context, QTableWidget* drives,
+    PositionErrorResetButton(MachineContext* context, QAbstractItemView* drives,
                              QWidget* parent = nullptr);
 
     static QString operationName() { return operation::kResetPositionError; }
@@ -35,7 +35,7 @@ private:
     QList<Axis> selectedAxes() const;
 
     MachineContext* m_context;
-    QTableWidget* m_drives;
+    QAbstractItemView* m_drives; // rows with AxisRowFilter::AxesRole
     QMap<RequestId, Axis> m_pending;
 };
 

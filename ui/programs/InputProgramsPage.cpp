@@ -23,7 +23,7 @@ QString inputDescription(const ModelInfo* model, int n)
 {
     if (!model || !model->presentation.statusWords)
         return {};
-    for (const StatusWordInfo& word : model->presentation.statusWords()) {
+    for (const StatusWordInfo& word : model->presentation.statusWords({})) {
         if (word.key != QLatin1String("inputs"))
             continue;
         for (const StatusBitInfo& bit : word.bits) {

@@ -3,11 +3,13 @@
 #include "machine/MachineContext.h"
 #include "model/ModelOperations.h"
 #include <QComboBox>
+#include <QCompleter>
 #include <QCoreApplication>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -118,12 +120,37 @@ void RecordsPage::rebuild()
 {
     const QString current = m_axis->currentData().toString();
     m_axis->clear();
-    for (Axis a : m_context->axes())
+    const QList<Axis> axes = m_context->axes();
+    for (Axis a : axes)
         m_axis->addItem(tr("Axis %1").arg(m_context->controllerAxisName(a)), axisName(a));
+    makeFindable(axes.size() > kPlainListAxes);
     const int keep = m_axis->findData(current);
     if (keep >= 0)
         m_axis->setCurrentIndex(keep);
     updateEnabled();
+}
+
+void RecordsPage::makeFindable(bool findable)
+{
+    // A bus of many drives (issue 32, step 5): the drive is found by typing part of its name;
+    // the list offers every drive whose name contains it. Typing never picks a drive by
+    // itself: the text goes back to the chosen drive's when the field is left, so what shows
+    // is the drive the records are read from.
+    if (findable == m_axis->isEditable())
+        return;
+    m_axis->setEditable(findable);
+    if (!findable)
+        return;
+    m_axis->setInsertPolicy(QComboBox::NoInsert);
+    m_axis->lineEdit()->setPlaceholderText(tr("Type part of a drive's name"));
+    QCompleter* completer = m_axis->completer();
+    completer->setFilterMode(Qt::MatchContains);
+    completer->setCaseSensitivity(Qt::CaseInsensitive);
+    completer->setCompletionMode(QCompleter::PopupCompletion);
+    connect(m_axis->lineEdit(), &QLineEdit::editingFinished, this, [this] {
+        if (!m_axis->lineEdit()->hasFocus()) // left, not Enter (which picks a matching drive)
+            m_axis->setEditText(m_axis->itemText(m_axis->currentIndex()));
+    });
 }
 
 QVariantMap RecordsPage::target() const

@@ -42,6 +42,9 @@ public Q_SLOTS:
 private:
     enum class Pending { None, ReadAll, Write, Save, Load, Errors };
     QVariantMap target() const;
+    // More drives than this: the drive combo filters by typed name (issue 32, step 5).
+    static constexpr int kPlainListAxes = 4;
+    void makeFindable(bool findable);
     void start(Pending what, const QString& operation, const QVariantMap& args,
                const QString& message);
     void onResult(const CommandResult& result);

@@ -2,6 +2,7 @@
 #include "common/Dialogs.h"
 #include "machine/MachineContext.h"
 #include "setup/ParameterField.h"
+#include "setup/SetupDriveChooser.h"
 #include "setup/SetupMessageLine.h"
 #include "setup/StoredParametersBar.h"
 #include "setup/WritePlan.h"
@@ -23,7 +24,7 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
       m_read(new QPushButton(tr("Read"), this)), m_write(new QPushButton(tr("Write"), this)),
       m_writeVerify(new QPushButton(tr("Write && verify"), this)),
       m_writeAll(new QPushButton(tr("Write all"), this)), m_info(new QLabel(this)),
-      m_message(new SetupMessageLine(this))
+      m_message(new SetupMessageLine(this)), m_driveChooser(new SetupDriveChooser(context, this))
 {
     auto* defaults = new QPushButton(tr("Defaults"), this);
     auto* save = new QPushButton(tr("Save to file\u2026"), this);
@@ -50,6 +51,7 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     layout->addLayout(bar);
     layout->addWidget(new StoredParametersBar(context, this, this)); // hidden unless the model
     layout->addWidget(m_info);                                       // keeps power-on values
+    layout->addWidget(m_driveChooser); // a bus of more drives than columns (issue 32)
     layout->addLayout(m_groups, 1);
     layout->addWidget(m_message);
 
@@ -61,6 +63,7 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
     connect(save, &QPushButton::clicked, this, &SetupPage::saveAs);
     connect(loadButton, &QPushButton::clicked, this, &SetupPage::load);
     connect(context, &MachineContext::modelChanged, this, &SetupPage::rebuild);
+    connect(m_driveChooser, &SetupDriveChooser::shownAxesChanged, this, &SetupPage::showDrives);
     connect(context->session(), &ControllerSession::requestFinished, this, &SetupPage::onResult);
     connect(context, &MachineContext::knownParametersChanged, this, &SetupPage::applyKnown);
     connect(context->session(), &ControllerSession::linkStateChanged, this, [this](LinkState st) {
@@ -77,9 +80,35 @@ SetupPage::SetupPage(MachineContext* context, QWidget* parent)
 
 void SetupPage::rebuild()
 {
+    m_schema = m_context->schema();
+    const QList<Axis> axes = m_context->axes();
+    m_driveChooser->setAxes(axes);
+    m_driveChooser->setVisible(axes.size() > SetupDriveChooser::kColumns);
+    buildForm();
+}
+
+void SetupPage::showDrives()
+{
+    // Other drives' columns replace these: what the technician typed and did not write would
+    // be gone, so the page keeps its columns until it is written (or set back).
+    for (ParameterField* f : std::as_const(m_fields)) {
+        if (f->isExplicit() && f->isChanged()) {
+            m_driveChooser->revert();
+            setMessage(tr("Write or undo the changes of %1 before showing other drives.")
+                           .arg(f->displayName()),
+                       true);
+            return;
+        }
+    }
+    buildForm();
+    // What was read of the drives now shown, as it was read; the rest unknown.
+    showRead(m_context->readBackParameters());
+}
+
+void SetupPage::buildForm()
+{
     delete m_content;
     m_fields.clear();
-    m_schema = m_context->schema();
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -172,7 +201,7 @@ QWidget* SetupPage::buildGroup(const QString& group)
     auto* box = new QGroupBox(
         ParameterSchema::displayText(group).replace(QLatin1Char('&'), QStringLiteral("&&")));
     auto* grid = new QGridLayout(box);
-    const QList<Axis> axes = m_context->axes();
+    const QList<Axis> axes = m_driveChooser->shownAxes();
     bool anyPerAxis = false;
     for (const ParameterSpec& spec : m_schema.specs())
         anyPerAxis = anyPerAxis || (spec.group == group && spec.perAxis);

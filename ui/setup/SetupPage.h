@@ -14,14 +14,16 @@ namespace stepdeck::ui {
 class DiffDialog;
 class MachineContext;
 class ParameterField;
+class SetupDriveChooser;
 class SetupMessageLine;
 class WritePreview;
 
 // Setup pages for technicians, generated from the model's ParameterSchema: one group box per
-// schema group, one column per axis, range-checked editors, changed fields highlighted;
-// Read and Write & verify (only where the protocol can read back), Write, Write all, and
-// Save/Load in the CLI's JSON format with a diff before a loaded file is written. Invalid
-// values are never written. What counts as already on the device is
+// schema group, one column per axis (a bus of more drives: the drives SetupDriveChooser
+// shows; Write, Write all and Save take those and the global values), range-checked editors,
+// changed fields highlighted; Read and Write & verify (only where the protocol can read back),
+// Write, Write all, and Save/Load in the CLI's JSON format with a diff before a loaded file is
+// written. Invalid values are never written. What counts as already on the device is
 // MachineContext::knownParameters() (forgotten on every reconnect, reset and power cycle);
 // what Write sends is a WritePlan. A multi-drive model previews exactly what goes to which
 // drive, old -> new, before anything is sent (WritePreview).
@@ -31,7 +33,9 @@ class SetupPage : public QWidget
 public:
     explicit SetupPage(MachineContext* context, QWidget* parent = nullptr);
 
+    // nullptr also for an axis whose column is not shown (a bus of many drives).
     ParameterField* field(const QString& name, std::optional<Axis> axis = std::nullopt) const;
+    SetupDriveChooser* driveChooser() const { return m_driveChooser; }
     QPushButton* writeButton() const { return m_write; }
     QPushButton* writeVerifyButton() const { return m_writeVerify; }
     QPushButton* readButton() const { return m_read; }
@@ -69,6 +73,8 @@ Q_SIGNALS:
 
 private:
     void rebuild();
+    void buildForm();  // the groups for the drives shown
+    void showDrives(); // the chooser picked other drives: their columns, unless edits pending
     QWidget* buildGroup(const QString& group);
     void refreshButtons();
     void onResult(const CommandResult& result);
@@ -97,6 +103,7 @@ private:
     QPointer<WritePreview> m_preview;
     QLabel* m_info;
     SetupMessageLine* m_message;
+    SetupDriveChooser* m_driveChooser;
     bool m_anyReadable = false;
     RequestId m_pendingWrite = 0;
     RequestId m_pendingRead = 0;

@@ -7,7 +7,8 @@
 namespace stepdeck::ui {
 
 RawWordView::RawWordView(const StatusWordInfo& info, QWidget* parent)
-    : QGroupBox(info.title, parent), m_info(info), m_hex(new QLabel(this))
+    : QGroupBox(info.title, parent), m_info(info), m_title(info.title),
+      m_key(new QLabel(tr("Raw %1:").arg(info.key), this)), m_hex(new QLabel(this))
 {
     auto* layout = new QGridLayout(this);
     QFont mono(QStringLiteral("monospace"));
@@ -17,7 +18,7 @@ RawWordView::RawWordView(const StatusWordInfo& info, QWidget* parent)
     m_hex->setTextInteractionFlags(Qt::TextSelectableByMouse);
     // The heading spans the lamp columns: it does not widen the first one.
     auto* heading = new QHBoxLayout;
-    heading->addWidget(new QLabel(tr("Raw %1:").arg(info.key), this));
+    heading->addWidget(m_key);
     heading->addWidget(m_hex);
     heading->addStretch(1);
     layout->addLayout(heading, 0, 0, 1, 2);
@@ -49,13 +50,29 @@ QSize RawWordView::minimumSizeHint() const
 void RawWordView::resizeEvent(QResizeEvent* event)
 {
     QGroupBox::resizeEvent(event);
+    showTitle();
+}
+
+void RawWordView::showTitle()
+{
     // Room for the title: the frame's width less the space around the title (about 3 em).
-    const QString shown = fontMetrics().elidedText(m_info.title, Qt::ElideRight,
-                                                   width() - 3 * fontMetrics().height());
+    const QString shown =
+        fontMetrics().elidedText(m_title, Qt::ElideRight, width() - 3 * fontMetrics().height());
     if (shown != title()) {
         setTitle(shown);
-        setToolTip(shown == m_info.title ? QString() : m_info.title);
+        setToolTip(shown == m_title ? QString() : m_title);
     }
+}
+
+void RawWordView::retarget(const QString& key, const QString& title)
+{
+    if (key == m_info.key && title == m_title)
+        return;
+    m_info.key = key;
+    m_title = title;
+    m_key->setText(tr("Raw %1:").arg(key));
+    showTitle();
+    setValue({});
 }
 
 void RawWordView::setColumns(int columns)

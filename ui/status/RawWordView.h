@@ -21,6 +21,11 @@ public:
     QString hexText() const;
     LedIndicator* lamp(const QString& bitName) const;
     const StatusWordInfo& info() const { return m_info; }
+    // The same kind of word of another drive (issue 32: one view follows the drive chosen in a
+    // list of many): its key in MachineStatus::raw and the title to show. The value is unknown
+    // until setValue().
+    void retarget(const QString& key, const QString& title);
+    QString fullTitle() const { return m_title; }
     // Two lamp columns if they fit into room pixels (the width the view may take), else one.
     void fitWidth(int room);
     int columns() const { return m_columns; }
@@ -34,7 +39,11 @@ protected:
 private:
     void setColumns(int columns);
 
+    void showTitle();
+
     StatusWordInfo m_info;
+    QString m_title; // the whole title; the frame shows it elided to its width
+    QLabel* m_key;
     QLabel* m_hex;
     QGridLayout* m_grid = nullptr;
     int m_columns = 0;

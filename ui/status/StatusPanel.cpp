@@ -2,6 +2,7 @@
 #include "common/IfChanged.h"
 #include "common/LedIndicator.h"
 #include "machine/MachineContext.h"
+#include "status/AxisStatusList.h"
 #include "status/DigitalIoGroup.h"
 #include "status/RawWordView.h"
 #include <QEvent>
@@ -92,6 +93,7 @@ void StatusPanel::rebuild()
     m_machineGroup = nullptr;
     m_machineGrid = nullptr;
     m_axes.clear();
+    m_axisList = nullptr;
     m_words.clear();
     m_genericRaw = nullptr;
     m_io = nullptr;
@@ -101,15 +103,36 @@ void StatusPanel::rebuild()
     auto* inner = new QWidget(scroll);
     auto* v = new QVBoxLayout(inner);
     v->addWidget(buildMachineGroup());
-    v->addWidget(buildAxesGroup());
+    const ModelInfo* model = m_context->model();
+    const QList<Axis> axes = m_context->axes();
+    QList<StatusWordInfo> words;
+    if (model && model->presentation.statusWords)
+        words = model->presentation.statusWords(axes);
+    // Up to kGridAxes axes fit the lamp grid; a bus of more drives gets a filtered list with
+    // one drive's words below it (issue 32, step 5).
+    QList<StatusWordInfo> axisWords;
+    if (axes.size() > kGridAxes) {
+        for (const StatusWordInfo& w : std::as_const(words)) {
+            if (w.axis)
+                axisWords << w;
+        }
+        m_axisList = new AxisStatusList(m_context, axisWords, inner);
+        v->addWidget(m_axisList, 1);
+    } else {
+        v->addWidget(buildAxesGroup());
+    }
     const Capabilities caps = m_context->capabilities();
     if (caps.digitalInputs > 0 || caps.digitalOutputs > 0) {
         m_io = new DigitalIoGroup(m_context, caps.digitalInputs, caps.digitalOutputs, inner);
         v->addWidget(m_io);
     }
-    const ModelInfo* model = m_context->model();
     if (model && model->presentation.statusWords) {
-        for (const StatusWordInfo& info : model->presentation.statusWords()) {
+        for (StatusWordInfo info : std::as_const(words)) {
+            if (m_axisList && info.axis)
+                continue; // the list's view shows the chosen drive's
+            if (info.axis)
+                info.title =
+                    tr("%1: %2").arg(m_context->controllerAxisName(*info.axis), info.title);
             auto* view = new RawWordView(info, inner);
             m_words << view;
             v->addWidget(view);
@@ -261,7 +284,10 @@ QWidget* StatusPanel::buildTemperatureGroup()
 
 RawWordView* StatusPanel::rawWord(const QString& key) const
 {
-    for (RawWordView* view : m_words) {
+    QList<RawWordView*> views = m_words;
+    if (m_axisList)
+        views += m_axisList->wordViews();
+    for (RawWordView* view : std::as_const(views)) {
         if (view->info().key == key)
             return view;
     }
@@ -331,6 +357,8 @@ void StatusPanel::onStatus(const MachineStatus& s)
         axisSet("refSwitch", a.referenceSwitch, S::Warning);
         axisSet("referenced", a.referenced, S::On);
     }
+    if (m_axisList)
+        m_axisList->setStatus(s, live);
     for (RawWordView* view : std::as_const(m_words))
         view->setValue(live ? s.raw.value(view->info().key) : QVariant());
     if (m_genericRaw) {
@@ -346,7 +374,7 @@ void StatusPanel::onStatus(const MachineStatus& s)
                             .arg(s.resyncCount)
                             .arg(m_context->session()->pollRateHz(), 0, 'f', 1));
     QStringList drives;
-    if (s.drives.size() > 1) {
+    if (s.drives.size() > 1 && !m_axisList) { // the list has a drive column
         for (const DriveStatus& d : s.drives)
             drives << tr("Drive %1: %2 %3")
                           .arg(d.address)

@@ -10,6 +10,7 @@ class QVBoxLayout;
 
 namespace stepdeck::ui {
 
+class AxisStatusList;
 class DigitalIoGroup;
 class LedIndicator;
 class MachineContext;
@@ -25,11 +26,14 @@ class StatusPanel : public QWidget
 public:
     static constexpr double kTemperatureWarningC = 45.0;
     static constexpr double kTemperatureLimitC = 50.0;
+    // More axes than this: a filtered list instead of the lamp grid (issue 32, step 5).
+    static constexpr int kGridAxes = 4;
 
     explicit StatusPanel(MachineContext* context, QWidget* parent = nullptr);
 
     LedIndicator* machineLamp(const QString& key) const { return m_machine.value(key); }
     RawWordView* rawWord(const QString& key) const;
+    AxisStatusList* axisList() const { return m_axisList; } // nullptr: the lamp grid
     QString temperatureText() const;
     QString countersText() const;
     QString temperatureNote() const;
@@ -58,6 +62,7 @@ private:
     QGridLayout* m_machineGrid = nullptr;
     int m_machineColumns = 0;
     QMap<Axis, QMap<QString, LedIndicator*>> m_axes;
+    AxisStatusList* m_axisList = nullptr;
     QList<RawWordView*> m_words;
     QLabel* m_genericRaw = nullptr;
     QLabel* m_temperature = nullptr;

@@ -195,7 +195,7 @@ template <size_t N> QList<StatusBitInfo> bitList(const BitText (&table)[N])
 ModelPresentation presentation()
 {
     ModelPresentation p;
-    p.statusWords = [] {
+    p.statusWords = [](const QList<Axis>&) {
         // Keys as the adapter publishes them in MachineStatus::raw.
         StatusWordInfo machineWord{
             QStringLiteral("machineState"),

@@ -277,7 +277,7 @@ QString noStopNoteDetail()
 ModelPresentation presentation()
 {
     ModelPresentation p;
-    p.statusWords = [] {
+    p.statusWords = [](const QList<Axis>&) {
         StatusWordInfo w;
         w.key = QStringLiteral("inputs");
         w.title = QCoreApplication::translate("stepdeck::emis::Presentation", "Inputs (@IG, 9.2)");

@@ -91,14 +91,14 @@ const BitText kStatusBits[] = {
 ModelPresentation presentation()
 {
     ModelPresentation p;
-    p.statusWords = [] {
+    p.statusWords = [](const QList<Axis>& axes) {
         QList<StatusWordInfo> words;
-        for (Axis axis : letterAxes()) {
+        for (Axis axis : axes) {
             StatusWordInfo w;
             w.key = QStringLiteral("status") + axisName(axis);
             w.title = QCoreApplication::translate("stepdeck::nanotec::Presentation",
-                                                  "Drive status %1 ($, 5.21)")
-                          .arg(axisName(axis));
+                                                  "Drive status ($, 5.21)");
+            w.axis = axis;
             w.width = 8;
             for (const BitText& b : kStatusBits) {
                 StatusBitInfo info;

@@ -242,25 +242,24 @@ void NanotecSimulator::noteArrival(int address, qint64 us)
 
 bool NanotecSimulator::isMoving(Axis axis)
 {
-    const NanotecDrive* d = drive(defaultAxisAddresses().value(axis, -1));
+    const NanotecDrive* d = drive(probeAddress(axis));
     return d && d->isActive();
 }
 
 qint64 NanotecSimulator::position(Axis axis)
 {
-    const NanotecDrive* d = drive(defaultAxisAddresses().value(axis, -1));
+    const NanotecDrive* d = drive(probeAddress(axis));
     return d ? d->position() : 0;
 }
 
 QList<SimulatedMove> NanotecSimulator::acceptedMoves() const
 {
-    QMap<int, Axis> axisAt;
-    const QMap<Axis, int> addresses = defaultAxisAddresses();
-    for (auto it = addresses.cbegin(); it != addresses.cend(); ++it)
-        axisAt.insert(it.value(), it.key());
     QList<SimulatedMove> out;
-    for (const StartedMove& move : m_startedMoves)
-        out.append({axisAt.value(move.address, Axis::U), move.steps});
+    for (const StartedMove& move : m_startedMoves) {
+        // Every address 1..254 is an axis (probeAddress), so every move has one.
+        if (const std::optional<Axis> axis = Axis::fromIndex(move.address - 1))
+            out.append({*axis, move.steps});
+    }
     return out;
 }
 

@@ -28,9 +28,11 @@ public:
     QList<NanotecDrive*> drives() const;
     bool standingStill() override; // no drive turns its motor (after advancing to now)
 
-    // The probes of the base class name axes as the default machine does (X=1, Y=2, Z=3,
-    // defaultAxisAddresses()); an axis without a drive at its address neither moves nor has
-    // a position, and started moves of drives at other addresses are journaled as axis U.
+    // The probes of the base class name the drive at address n axis n-1: X=1, Y=2, Z=3 as the
+    // default machine (defaultAxisAddresses()), then U=4, axis5=5, ... axis254=254, as a bus
+    // of drives numbered 1..N is mapped by --axes (issue 32). An axis without a drive at its
+    // address neither moves nor has a position.
+    static int probeAddress(Axis axis) { return axis.index() + 1; }
     bool isMoving(Axis axis) override; // the drive is active (moving, settling, pausing)
     qint64 position(Axis axis) override;
     QList<SimulatedMove> acceptedMoves() const override;      // startedMoves() by axis

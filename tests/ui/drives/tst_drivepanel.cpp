@@ -2,10 +2,17 @@
 // silent is marked while the others keep answering; the dock exists only for multi-drive
 // models.
 #include "../NanotecUiFixture.h"
+#include "common/AxisListBar.h"
+#include "common/AxisRowFilter.h"
+#include "drives/DriveListModel.h"
 #include "drives/DrivePanel.h"
+#include <QCheckBox>
 #include <QDockWidget>
+#include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalSpy>
+#include <QTableView>
 #include <QTableWidget>
 
 using namespace stepdeck;
@@ -23,6 +30,7 @@ private Q_SLOTS:
     void driveList_silentDriveMarkedRed();
     void driveList_sixNamedDrives_showsTheirNames();
     void driveList_sameStatus_tableNotRebuilt();
+    void driveList_filterByNameOrAddress_movingFirstOnRequest();
     void driveList_reconnect_showsDrivesAgain();
     void scan_listsDrivesOnTheBus();
     void scan_showsProgressAndCanBeCancelled();
@@ -31,11 +39,9 @@ private Q_SLOTS:
 
 private:
     ui::DrivePanel* panel() const { return m_f->window->drivePanel(); }
-    QString text(int row, int column) const
-    {
-        const QTableWidgetItem* item = panel()->driveTable()->item(row, column);
-        return item ? item->text() : QString();
-    }
+    QAbstractItemModel* list() const { return panel()->driveTable()->model(); }
+    int rows() const { return list()->rowCount(); }
+    QString text(int row, int column) const { return list()->index(row, column).data().toString(); }
     std::unique_ptr<NanotecUiFixture> m_f;
 };
 
@@ -50,25 +56,25 @@ void TestDrivePanel::init()
 
 void TestDrivePanel::driveList_showsThreeDrivesWithAxes()
 {
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
-    QCOMPARE(text(0, ui::DrivePanel::Address), QStringLiteral("1"));
-    QCOMPARE(text(0, ui::DrivePanel::Axes), QStringLiteral("X"));
-    QCOMPARE(text(2, ui::DrivePanel::Address), QStringLiteral("3"));
-    QCOMPARE(text(2, ui::DrivePanel::Axes), QStringLiteral("Z"));
+    QTRY_COMPARE(rows(), 3);
+    QCOMPARE(text(0, ui::DriveListModel::Address), QStringLiteral("1"));
+    QCOMPARE(text(0, ui::DriveListModel::Axes), QStringLiteral("X"));
+    QCOMPARE(text(2, ui::DriveListModel::Address), QStringLiteral("3"));
+    QCOMPARE(text(2, ui::DriveListModel::Axes), QStringLiteral("Z"));
     QCOMPARE(panel()->silentCount(), 0);
     QVERIFY(!m_f->window->findChild<QDockWidget*>(QStringLiteral("drivesDock"))->isHidden());
 }
 
 void TestDrivePanel::driveList_silentDriveMarkedRed()
 {
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    QTRY_COMPARE(rows(), 3);
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, true); }));
     QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 1, 10000);
-    const QTableWidgetItem* silent = panel()->driveTable()->item(1, ui::DrivePanel::Responding);
-    QVERIFY(silent->text().contains(QStringLiteral("NOT RESPONDING")));
-    QCOMPARE(silent->background().color(), QColor(0xc6, 0x28, 0x28));
-    QVERIFY(!text(0, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
-    QVERIFY(!text(2, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
+    const QModelIndex silent = list()->index(1, ui::DriveListModel::Responding);
+    QVERIFY(silent.data().toString().contains(QStringLiteral("NOT RESPONDING")));
+    QCOMPARE(silent.data(Qt::BackgroundRole).value<QColor>(), QColor(0xc6, 0x28, 0x28));
+    QVERIFY(!text(0, ui::DriveListModel::Responding).contains(QStringLiteral("NOT")));
+    QVERIFY(!text(2, ui::DriveListModel::Responding).contains(QStringLiteral("NOT")));
 
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, false); }));
     QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 0, 10000);
@@ -82,17 +88,17 @@ void TestDrivePanel::driveList_sixNamedDrives_showsTheirNames()
     m_f = std::make_unique<NanotecUiFixture>();
     m_f->window->show();
     QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
-    QTRY_COMPARE_WITH_TIMEOUT(panel()->driveTable()->rowCount(), 6, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(rows(), 6, 5000);
     const QStringList names{"feeder", "gate", "press", "lift", "tilt", "stacker"};
     for (int r = 0; r < 6; ++r) {
-        QCOMPARE(text(r, ui::DrivePanel::Address), QString::number(r + 1));
-        QCOMPARE(text(r, ui::DrivePanel::Axes), names.at(r));
+        QCOMPARE(text(r, ui::DriveListModel::Address), QString::number(r + 1));
+        QCOMPARE(text(r, ui::DriveListModel::Axes), names.at(r));
     }
     QCOMPARE(panel()->silentCount(), 0);
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(6, true); }));
     QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 1, 10000);
-    QVERIFY(text(5, ui::DrivePanel::Responding).contains(QStringLiteral("NOT RESPONDING")));
-    QVERIFY(!text(4, ui::DrivePanel::Responding).contains(QStringLiteral("NOT")));
+    QVERIFY(text(5, ui::DriveListModel::Responding).contains(QStringLiteral("NOT RESPONDING")));
+    QVERIFY(!text(4, ui::DriveListModel::Responding).contains(QStringLiteral("NOT")));
 }
 
 // Every poll brings the same drives: the table keeps its items (rebuilding it and sizing its
@@ -100,27 +106,74 @@ void TestDrivePanel::driveList_sixNamedDrives_showsTheirNames()
 // driveList_silentDriveMarkedRed.
 void TestDrivePanel::driveList_sameStatus_tableNotRebuilt()
 {
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
-    const QTableWidgetItem* shown = panel()->driveTable()->item(1, ui::DrivePanel::Responding);
+    QTRY_COMPARE(rows(), 3);
+    QSignalSpy changed(list(), &QAbstractItemModel::dataChanged);
+    QSignalSpy reset(list(), &QAbstractItemModel::modelReset);
     const int from = m_f->statusCount;
     QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount - from >= 5, 5000);
-    QCOMPARE(panel()->driveTable()->item(1, ui::DrivePanel::Responding), shown);
+    QCOMPARE(changed.count(), 0);
+    QCOMPARE(reset.count(), 0);
 
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->setDriveSilent(2, true); }));
     QTRY_COMPARE_WITH_TIMEOUT(panel()->silentCount(), 1, 10000);
-    QVERIFY(text(1, ui::DrivePanel::Responding).contains(QStringLiteral("NOT RESPONDING")));
+    QVERIFY(text(1, ui::DriveListModel::Responding).contains(QStringLiteral("NOT RESPONDING")));
+    QVERIFY(changed.count() > 0);
+    QCOMPARE(reset.count(), 0);
+}
+
+// Issue 32, step 5: a bus of many drives is found by name or address, and lists the moving
+// ones first when the operator asks for it (off by default: a row about to be picked does not
+// jump away). "Moving" is what the device reports: the drive is active at the simulator.
+void TestDrivePanel::driveList_filterByNameOrAddress_movingFirstOnRequest()
+{
+    m_f.reset();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    QTRY_COMPARE_WITH_TIMEOUT(rows(), 6, 5000);
+    ui::AxisListBar* bar = panel()->driveBar();
+    bar->filterEdit()->setText(QStringLiteral("ST"));
+    QCOMPARE(rows(), 1);
+    QCOMPARE(text(0, ui::DriveListModel::Axes), QStringLiteral("stacker"));
+    QCOMPARE(bar->countText(), QStringLiteral("1 of 6"));
+    bar->filterEdit()->setText(QStringLiteral("5"));
+    QCOMPARE(rows(), 1);
+    QCOMPARE(text(0, ui::DriveListModel::Axes), QStringLiteral("tilt"));
+    bar->filterEdit()->clear();
+    QCOMPARE(rows(), 6);
+
+    QVERIFY(!bar->movingFirstBox()->isChecked());
+    const Axis tilt = Axis::at(4);
+    m_f->window->context()->session()->velocityMove({{tilt, 400}});
+    auto tiltActive = [this] {
+        bool active = false;
+        m_f->withBus([&](nanotec::NanotecSimulator* s) { active = s->drive(5)->isActive(); });
+        return active;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(tiltActive(), 3000);
+    QTRY_VERIFY_WITH_TIMEOUT(list()->index(4, 0).data(ui::AxisRowFilter::MovingRole).toBool(),
+                             3000);
+    QCOMPARE(text(0, ui::DriveListModel::Axes), QStringLiteral("feeder")); // not on request
+    bar->movingFirstBox()->setChecked(true);
+    QCOMPARE(text(0, ui::DriveListModel::Axes), QStringLiteral("tilt"));
+    QCOMPARE(text(1, ui::DriveListModel::Axes), QStringLiteral("feeder"));
+
+    m_f->window->context()->session()->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(!tiltActive(), 3000);
+    QTRY_COMPARE_WITH_TIMEOUT(text(0, ui::DriveListModel::Axes), QStringLiteral("feeder"), 3000);
+    QCOMPARE(text(4, ui::DriveListModel::Axes), QStringLiteral("tilt"));
 }
 
 // The table forgets what it showed with the link: the same drives after a reconnect are
 // listed again.
 void TestDrivePanel::driveList_reconnect_showsDrivesAgain()
 {
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    QTRY_COMPARE(rows(), 3);
     m_f->window->context()->disconnectFromController();
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 0);
+    QTRY_COMPARE(rows(), 0);
     QVERIFY(m_f->connectNanotec());
-    QTRY_COMPARE_WITH_TIMEOUT(panel()->driveTable()->rowCount(), 3, 5000);
-    QCOMPARE(text(2, ui::DrivePanel::Axes), QStringLiteral("Z"));
+    QTRY_COMPARE_WITH_TIMEOUT(rows(), 3, 5000);
+    QCOMPARE(text(2, ui::DriveListModel::Axes), QStringLiteral("Z"));
 }
 
 void TestDrivePanel::scan_listsDrivesOnTheBus()
@@ -171,9 +224,9 @@ void TestDrivePanel::scan_showsProgressAndCanBeCancelled()
 
 void TestDrivePanel::disconnect_clearsDriveList()
 {
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 3);
+    QTRY_COMPARE(rows(), 3);
     m_f->window->context()->disconnectFromController();
-    QTRY_COMPARE(panel()->driveTable()->rowCount(), 0);
+    QTRY_COMPARE(rows(), 0);
     QVERIFY(!panel()->scanButton()->isEnabled());
 }
 

@@ -5,7 +5,7 @@
 #include "drives/DrivePanel.h"
 #include "drives/PositionErrorResetButton.h"
 #include "protocols/nanotec/NanotecCodec.h"
-#include <QTableWidget>
+#include <QTableView>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -54,7 +54,7 @@ void TestPositionErrorReset::positionError_messageNamesTheButton_buttonClearsIt(
              qPrintable(message));
     QVERIFY2(!message.contains(QStringLiteral("reset-position-error")), qPrintable(message));
 
-    QTRY_COMPARE(panel->driveTable()->rowCount(), 3);
+    QTRY_COMPARE(panel->driveTable()->model()->rowCount(), 3);
     panel->driveTable()->selectRow(1); // drive 2, axis Y
     QTRY_VERIFY(button->isEnabled());
     QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));

@@ -3,7 +3,10 @@
 #include "../NanotecUiFixture.h"
 #include "records/RecordsPage.h"
 #include <QComboBox>
+#include <QCompleter>
 #include <QDockWidget>
+#include <QLineEdit>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QTableWidget>
 
@@ -22,6 +25,7 @@ private Q_SLOTS:
     void writeRecord_editedValueStored();
     void errorMemory_decoded();
     void choiceCell_editedFromSchemaChoices();
+    void driveChoice_manyDrives_foundByTypedName();
 
 private:
     ui::RecordsPage* page() const { return m_f->window->recordsPage(); }
@@ -108,6 +112,48 @@ void TestRecordsPage::choiceCell_editedFromSchemaChoices()
     page()->readAll();
     QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
     QCOMPARE(table->item(2, col)->data(Qt::EditRole).toString(), QStringLiteral("right"));
+}
+
+// Issue 32, step 5: on a bus of many drives the drive is found by typing part of its name;
+// the records are then read from that drive (its address in the frames at the simulator), and
+// text typed without picking goes back to the chosen drive's name.
+void TestRecordsPage::driveChoice_manyDrives_foundByTypedName()
+{
+    QVERIFY(!page()->axisCombo()->isEditable()); // three drives: a plain list
+    m_f.reset();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    QComboBox* combo = page()->axisCombo();
+    QTRY_COMPARE(combo->count(), 6);
+    QVERIFY(combo->isEditable());
+    QCompleter* completer = combo->completer();
+    completer->setCompletionPrefix(QStringLiteral("TACK"));
+    QCOMPARE(completer->completionCount(), 1);
+    QCOMPARE(completer->currentCompletion(), QStringLiteral("Axis stacker"));
+    Q_EMIT completer->activated(completer->currentIndex()); // as the popup does on a pick
+    QCOMPARE(combo->currentData().toString(), QStringLiteral("axis6"));
+
+    combo->setEditText(QStringLiteral("gat"));
+    Q_EMIT combo->lineEdit()->editingFinished(); // left without picking
+    QCOMPARE(combo->currentText(), QStringLiteral("Axis stacker"));
+
+    QVERIFY(m_f->withBus([](nanotec::NanotecSimulator* s) { s->clearReceivedFrames(); }));
+    page()->readAll();
+    QTRY_VERIFY_WITH_TIMEOUT(!page()->busy(), 20000);
+    QList<QByteArray> frames;
+    QVERIFY(m_f->withBus([&](nanotec::NanotecSimulator* s) { frames = s->receivedFrames(); }));
+    int toStacker = 0;
+    int toFeeder = 0;
+    // Status polls go to every drive; a record read ("Z<n>|", 5.2) to the chosen one.
+    const QRegularExpression recordRead(QStringLiteral("^#(\\d+)Z\\d+\\|"));
+    for (const QByteArray& f : frames) {
+        const QRegularExpressionMatch m = recordRead.match(QString::fromLatin1(f));
+        toStacker += m.hasMatch() && m.captured(1) == QLatin1String("6") ? 1 : 0;
+        toFeeder += m.hasMatch() && m.captured(1) == QLatin1String("1") ? 1 : 0;
+    }
+    QVERIFY2(toStacker >= 32, qPrintable(QString::number(toStacker)));
+    QCOMPARE(toFeeder, 0);
 }
 
 QTEST_MAIN(TestRecordsPage)

@@ -10,3 +10,7 @@ stepdeck_add_test(tst_emissetup SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emissetup.
 foreach(_t tst_diffdialog tst_writepreview)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp LABELS ui LIBS stepdeck_ui)
 endforeach()
+# Which drives' columns the setup page shows on a bus of many drives (issue 32, step 5).
+stepdeck_add_test(tst_setupdrivechooser SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_setupdrivechooser.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../NanotecUiFixture.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)

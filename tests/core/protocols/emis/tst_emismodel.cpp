@@ -93,8 +93,8 @@ void TestEmisModel::presentation_checksProgramCommands()
     QVERIFY(!p.checkProgramCommand("@IG").isEmpty());
     QVERIFY(!p.checkProgramCommand("W-5").isEmpty());
     QVERIFY(!p.checkProgramCommand(QStringLiteral("L1,x\u00e41")).isEmpty());
-    QCOMPARE(p.statusWords().first().key, QStringLiteral("inputs"));
-    QCOMPARE(p.statusWords().first().bits.size(), 8);
+    QCOMPARE(p.statusWords({}).first().key, QStringLiteral("inputs"));
+    QCOMPARE(p.statusWords({}).first().bits.size(), 8);
 }
 
 QTEST_GUILESS_MAIN(TestEmisModel)

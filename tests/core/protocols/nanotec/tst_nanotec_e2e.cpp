@@ -35,6 +35,7 @@ private Q_SLOTS:
     void records_byAddress_allThirtyTwo();
     void setupDefaults_keepsDriveAddresses();
     void bus32_namedDrives_oneMovesAndArrives_everyDriveAnswers();
+    void bus12_moveJogHomeScanStatus_byDriveName();
     void status_human_namedDrives_rowsAndMachineLinesShowNames();
 
 private:
@@ -394,13 +395,61 @@ void TestNanotecEndToEnd::bus32_namedDrives_oneMovesAndArrives_everyDriveAnswers
     QCOMPARE(drives.size(), 32);
     for (const QJsonValue& d : drives)
         QVERIFY(d.toObject()["responding"].toBool());
-    // The connection's machine has nine axes (X Y Z U A B C V W); the rest are drives only.
+    // Every drive is an axis of the CLI's status: the first nine by the program letters
+    // (X Y Z U A B C V W), the rest by their names (issue 32, step 5).
     const QJsonObject axes = status["axes"].toObject();
-    QCOMPARE(axes.size(), 9);
+    QCOMPARE(axes.size(), 32);
+    QCOMPARE(axes["d32"].toObject()["position"].toInt(), 0);
     QCOMPARE(axes["B"].toObject()["position"].toInt(), 500);
     QCOMPARE(axes["B"].toObject()["moving"].toBool(), false);
     QCOMPARE(axes["X"].toObject()["position"].toInt(), 0);
     QCOMPARE(axes["W"].toObject()["position"].toInt(), 0);
+}
+
+// Issue 32, step 5: the CLI takes a bus's drives by their names, past the ninth too (no
+// program letter). Positions are what the drives report (status read over the pty).
+void TestNanotecEndToEnd::bus12_moveJogHomeScanStatus_byDriveName()
+{
+    startSim("1,2,3,4,5,6,7,8,9,10,11,12");
+    QStringList bus;
+    for (int a = 1; a <= 11; ++a)
+        bus << QStringLiteral("d%1=%1").arg(a);
+    bus << QStringLiteral("stacker=12");
+    const QString axes = bus.join(',');
+    Run r = cli({"move", "stacker=300", "d2=-120"}, axes);
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QJsonObject status = statusJson(axes);
+    QCOMPARE(status["axes"].toObject()["stacker"].toObject()["position"].toInt(), 300);
+    QCOMPARE(status["axes"].toObject()["Y"].toObject()["position"].toInt(), -120); // d2
+    QCOMPARE(status["axes"].toObject()["d11"].toObject()["position"].toInt(), 0);
+
+    r = cli({"jog", "STACKER=400", "--for", "300"}, axes); // names in any case
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    status = statusJson(axes);
+    const QJsonObject stacker = status["axes"].toObject()["stacker"].toObject();
+    QVERIFY2(stacker["position"].toInt() > 300,
+             qPrintable(QString::number(stacker["position"].toInt())));
+    QCOMPARE(stacker["moving"].toBool(), false);
+
+    r = cli({"move", "nobody=5"}, axes);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("no axis nobody (its axes: X, Y, Z, U, A, B, C, V, W, d10, d11, "
+                            "stacker)"),
+             r.err.constData());
+
+    r = cli({"scan", "--first", "10", "--last", "13"}, axes);
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    static const QRegularExpression named(QStringLiteral("\\n +12  stacker +SMCI"));
+    QVERIFY2(named.match(QString::fromUtf8(r.out)).hasMatch(), r.out.constData());
+    QVERIFY2(!r.out.contains("\n     13"), r.out.constData()); // no drive at 13
+
+    // Every drive's status word decoded, the twelfth's too ($, 5.21: bit 0 "ready").
+    r = cli({"status"}, axes);
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.out.contains("statusaxis12=0x"), r.out.constData());
+    static const QRegularExpression decoded(
+        QStringLiteral("statusaxis12=0x[0-9a-f]+ \\([^)]*ready"));
+    QVERIFY2(decoded.match(QString::fromUtf8(r.out)).hasMatch(), r.out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestNanotecEndToEnd)
