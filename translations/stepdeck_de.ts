@@ -3722,12 +3722,12 @@
             <translation>Modus, Bit 2.</translation>
         </message>
         <message>
-            <source>Drive status %1 ($, 5.21)</source>
-            <translation>Antriebsstatus %1 ($, 5.21)</translation>
-        </message>
-        <message>
             <source>Send a command, e.g. #1$ (status of drive 1) or #2Zo (top speed of drive 2); the final CR is added (1.1).</source>
             <translation>Befehl senden, z. B. #1$ (Status von Antrieb 1) oder #2Zo (Maximalfrequenz von Antrieb 2); das abschließende CR wird angehängt (1.1).</translation>
+        </message>
+        <message>
+            <source>Drive status ($, 5.21)</source>
+            <translation>Antriebsstatus ($, 5.21)</translation>
         </message>
     </context>
     <context>
@@ -4590,6 +4590,115 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::AxisListBar</name>
+        <message>
+            <source>Moving first</source>
+            <translation>Bewegte zuerst</translation>
+        </message>
+        <message>
+            <source>Filter: name or address</source>
+            <translation>Filter: Name oder Adresse</translation>
+        </message>
+        <message>
+            <source>Shows the drives whose name or bus address contains this text.</source>
+            <translation>Zeigt die Antriebe, deren Name oder Busadresse diesen Text enthält.</translation>
+        </message>
+        <message>
+            <source>Lists the drives that move now above the others.</source>
+            <translation>Listet die Antriebe, die sich gerade bewegen, über den anderen.</translation>
+        </message>
+        <message>
+            <source>%1 of %2</source>
+            <translation>%1 von %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::AxisStatusList</name>
+        <message>
+            <source>Axes</source>
+            <translation>Achsen</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::AxisStatusModel</name>
+        <message>
+            <source>%1 ✖ silent</source>
+            <translation>%1 ✖ stumm</translation>
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation>Achse</translation>
+        </message>
+        <message>
+            <source>Moving</source>
+            <translation>Fährt</translation>
+        </message>
+        <message>
+            <source>Jog</source>
+            <translation>Tippen</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Endschalter</translation>
+        </message>
+        <message>
+            <source>Ref. switch</source>
+            <translation>Ref.-Schalter</translation>
+        </message>
+        <message>
+            <source>Referenced</source>
+            <translation>Referenziert</translation>
+        </message>
+        <message>
+            <source>Position</source>
+            <translation>Position</translation>
+        </message>
+        <message>
+            <source>Drive</source>
+            <translation>Antrieb</translation>
+        </message>
+        <message>
+            <source>Positioning, feed, reference or velocity move</source>
+            <translation>Positionier-, Vorschub-, Referenz- oder Geschwindigkeitsfahrt</translation>
+        </message>
+        <message>
+            <source>Jogging at a non-zero rate</source>
+            <translation>Tippbetrieb mit einer Rate ungleich null</translation>
+        </message>
+        <message>
+            <source>A limit switch of this axis is active</source>
+            <translation>Ein Endschalter dieser Achse ist aktiv</translation>
+        </message>
+        <message>
+            <source>The reference switch is active</source>
+            <translation>Der Referenzschalter ist aktiv</translation>
+        </message>
+        <message>
+            <source>Referenced since the last panic, reset or reconnect</source>
+            <translation>Referenziert seit dem letzten Panik-Stopp, Reset oder Neuverbinden</translation>
+        </message>
+        <message>
+            <source>Estimated from the commanded rates, not read back.</source>
+            <translation>Aus den vorgegebenen Geschwindigkeiten geschätzt, nicht zurückgelesen.</translation>
+        </message>
+        <message>
+            <source>Not referenced: the count is not tied to the machine's zero.</source>
+            <translation>Nicht referenziert: die Zählung ist nicht an den Nullpunkt der Maschine gebunden.</translation>
+        </message>
+        <message>
+            <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
+            <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
+        </message>
+        <message>
+            <source>Referenced: the count is tied to the machine's zero.</source>
+            <translation>Referenziert: die Zählung ist an den Nullpunkt der Maschine gebunden.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::ChartsPanel</name>
         <message>
             <source>Pause</source>
@@ -5233,7 +5342,19 @@ Regelung für Achse %1 einschalten?</translation>
         </message>
     </context>
     <context>
-        <name>stepdeck::ui::DrivePanel</name>
+        <name>stepdeck::ui::DriveListModel</name>
+        <message>
+            <source>✔ yes</source>
+            <translation>✔ ja</translation>
+        </message>
+        <message>
+            <source>✖ NOT RESPONDING</source>
+            <translation>✖ ANTWORTET NICHT</translation>
+        </message>
+        <message>
+            <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
+            <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
+        </message>
         <message>
             <source>Address</source>
             <translation>Adresse</translation>
@@ -5253,6 +5374,17 @@ Regelung für Achse %1 einschalten?</translation>
         <message>
             <source>State</source>
             <translation>Zustand</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::DrivePanel</name>
+        <message>
+            <source>Address</source>
+            <translation>Adresse</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
         </message>
         <message>
             <source>Hardware</source>
@@ -5280,18 +5412,6 @@ Regelung für Achse %1 einschalten?</translation>
                 <numerusform>%n Antrieb gefunden</numerusform>
                 <numerusform>%n Antriebe gefunden</numerusform>
             </translation>
-        </message>
-        <message>
-            <source>✔ yes</source>
-            <translation>✔ ja</translation>
-        </message>
-        <message>
-            <source>✖ NOT RESPONDING</source>
-            <translation>✖ ANTWORTET NICHT</translation>
-        </message>
-        <message>
-            <source>The drive stopped answering; check its power, address and the RS485 wiring. The other drives keep working.</source>
-            <translation>Der Antrieb antwortet nicht mehr; Versorgung, Adresse und RS485-Verdrahtung prüfen. Die anderen Antriebe arbeiten weiter.</translation>
         </message>
         <message>
             <source>Cancel</source>
@@ -7618,6 +7738,10 @@ W1500</translation>
             <source>Last entry: slot %1</source>
             <translation>Letzter Eintrag: Platz %1</translation>
         </message>
+        <message>
+            <source>Type part of a drive's name</source>
+            <translation>Teil eines Antriebsnamens eingeben</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ReferencePanel</name>
@@ -7788,6 +7912,29 @@ hält die Steuerung nicht an</translation>
         </message>
     </context>
     <context>
+        <name>stepdeck::ui::SetupDriveChooser</name>
+        <message>
+            <source>Drives: name or address</source>
+            <translation>Antriebe: Name oder Adresse</translation>
+        </message>
+        <message>
+            <source>The setup shows the first %1 drives whose name or bus address contains this text.</source>
+            <translation>Die Einrichtung zeigt die ersten %1 Antriebe, deren Name oder Busadresse diesen Text enthält.</translation>
+        </message>
+        <message>
+            <source>Drives shown:</source>
+            <translation>Gezeigte Antriebe:</translation>
+        </message>
+        <message>
+            <source>No drive matches “%1”; still shown: %2</source>
+            <translation>Kein Antrieb passt zu „%1“; weiter gezeigt: %2</translation>
+        </message>
+        <message>
+            <source>%1 (%2 of %3 drives)</source>
+            <translation>%1 (%2 von %3 Antrieben)</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::SetupPage</name>
         <message>
             <source>Read</source>
@@ -7925,6 +8072,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>This controller's protocol has no parameters to set: there is nothing to write, read, save or load here.</source>
             <translation>Das Protokoll dieser Steuerung hat keine einstellbaren Parameter: Hier gibt es nichts zu schreiben, zu lesen, zu speichern oder zu laden.</translation>
+        </message>
+        <message>
+            <source>Write or undo the changes of %1 before showing other drives.</source>
+            <translation>Schreiben oder verwerfen Sie die Änderungen an %1, bevor andere Antriebe gezeigt werden.</translation>
         </message>
     </context>
     <context>
@@ -8146,6 +8297,10 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Firmware: %1</source>
             <translation>Firmware: %1</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
         </message>
     </context>
     <context>
