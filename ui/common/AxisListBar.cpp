@@ -1,7 +1,7 @@
 #include "AxisListBar.h"
 #include "common/AxisRowFilter.h"
 #include <QCheckBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
 
@@ -22,11 +22,10 @@ AxisListBar::AxisListBar(AxisRowFilter* filter, QWidget* parent)
     m_count->setMinimumWidth(
         m_count->fontMetrics().horizontalAdvance(tr("%1 of %2").arg(254).arg(254)));
     m_count->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    auto* h = new QHBoxLayout(this);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(m_edit, 1);
-    h->addWidget(m_movingFirst);
-    h->addWidget(m_count);
+    m_grid = new QGridLayout(this);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_grid->setColumnStretch(0, 1);
+    arrange(false);
     connect(m_edit, &QLineEdit::textChanged, filter, &AxisRowFilter::setText);
     connect(m_movingFirst, &QCheckBox::toggled, filter, &AxisRowFilter::setMovingFirst);
     for (auto signal : {&QAbstractItemModel::rowsInserted, &QAbstractItemModel::rowsRemoved})
@@ -40,6 +39,35 @@ AxisListBar::AxisListBar(AxisRowFilter* filter, QWidget* parent)
         connect(source, &QAbstractItemModel::modelReset, this, &AxisListBar::updateCount);
     }
     updateCount();
+}
+
+void AxisListBar::arrange(bool twoRows)
+{
+    if (m_grid->count() > 0 && twoRows == m_twoRows)
+        return;
+    m_twoRows = twoRows;
+    for (QWidget* w : {static_cast<QWidget*>(m_edit), static_cast<QWidget*>(m_movingFirst),
+                       static_cast<QWidget*>(m_count)})
+        m_grid->removeWidget(w);
+    if (twoRows) {
+        m_grid->addWidget(m_edit, 0, 0, 1, 2);
+        m_grid->addWidget(m_movingFirst, 1, 0);
+        m_grid->addWidget(m_count, 1, 1);
+    } else {
+        m_grid->addWidget(m_edit, 0, 0);
+        m_grid->addWidget(m_movingFirst, 0, 1);
+        m_grid->addWidget(m_count, 0, 2);
+    }
+}
+
+void AxisListBar::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    // A narrow dock: the filter field gets the whole width, the rest a row below. Only a
+    // resize changes it; what the bar shows never does.
+    const int oneRow = 8 * fontMetrics().averageCharWidth() + m_movingFirst->sizeHint().width() +
+                       m_count->minimumWidth() + 2 * m_grid->horizontalSpacing();
+    arrange(width() < oneRow);
 }
 
 QString AxisListBar::countText() const

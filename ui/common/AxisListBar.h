@@ -2,6 +2,7 @@
 #include <QWidget>
 
 class QCheckBox;
+class QGridLayout;
 class QLabel;
 class QLineEdit;
 
@@ -11,7 +12,8 @@ class AxisRowFilter;
 
 // Above a list of many axes or drives (issue 32, step 5): a filter field (name or bus
 // address), "Moving first", and how many rows show of how many. Its size never depends on
-// what it shows, so typing or a count that changes moves nothing around it.
+// what it shows, so typing or a count that changes moves nothing around it; in a narrow dock
+// the filter field takes a row of its own.
 class AxisListBar : public QWidget
 {
     Q_OBJECT
@@ -22,13 +24,19 @@ public:
     QCheckBox* movingFirstBox() const { return m_movingFirst; }
     QString countText() const;
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void updateCount();
+    void arrange(bool twoRows); // the filter field and the rest in one row or two
 
     AxisRowFilter* m_filter;
     QLineEdit* m_edit;
     QCheckBox* m_movingFirst;
     QLabel* m_count;
+    QGridLayout* m_grid = nullptr;
+    bool m_twoRows = false;
 };
 
 } // namespace stepdeck::ui

@@ -61,6 +61,10 @@ DrivePanel::DrivePanel(MachineContext* context, QWidget* parent)
     m_drives->horizontalHeader()->setStretchLastSection(true);
     m_drives->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_drives->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // At least four drives in view: in a short dock the page scrolls, the list is not squeezed.
+    m_drives->setMinimumHeight(m_drives->horizontalHeader()->sizeHint().height() +
+                               4 * m_drives->verticalHeader()->defaultSectionSize() +
+                               2 * m_drives->frameWidth());
     m_driveBar = new AxisListBar(m_driveFilter, this);
     v->addWidget(m_driveBar);
     v->addWidget(m_drives, 2);

@@ -103,6 +103,20 @@ void StatusPanel::rebuild()
     auto* inner = new QWidget(scroll);
     auto* v = new QVBoxLayout(inner);
     v->addWidget(buildMachineGroup());
+    addAxesAndWords(v, inner);
+    v->addWidget(buildTemperatureGroup());
+    v->addStretch(1);
+    scroll->setWidget(inner);
+    m_content = scroll;
+    m_body->addWidget(scroll);
+    m_viewport = scroll->viewport();
+    m_viewport->installEventFilter(this); // machine lamps: two columns if they fit
+    arrangeColumns();
+    onStatus(m_context->status());
+}
+
+void StatusPanel::addAxesAndWords(QVBoxLayout* v, QWidget* inner)
+{
     const ModelInfo* model = m_context->model();
     const QList<Axis> axes = m_context->axes();
     QList<StatusWordInfo> words;
@@ -144,15 +158,6 @@ void StatusPanel::rebuild()
         (new QVBoxLayout(group))->addWidget(m_genericRaw);
         v->addWidget(group);
     }
-    v->addWidget(buildTemperatureGroup());
-    v->addStretch(1);
-    scroll->setWidget(inner);
-    m_content = scroll;
-    m_body->addWidget(scroll);
-    m_viewport = scroll->viewport();
-    m_viewport->installEventFilter(this); // machine lamps: two columns if they fit
-    arrangeColumns();
-    onStatus(m_context->status());
 }
 
 QWidget* StatusPanel::buildMachineGroup()
@@ -373,6 +378,17 @@ void StatusPanel::onStatus(const MachineStatus& s)
                             .arg(s.commFaultCount)
                             .arg(s.resyncCount)
                             .arg(m_context->session()->pollRateHz(), 0, 'f', 1));
+    showDrives(s);
+    m_firmware->setText(s.deviceFirmware.isEmpty() ? QString()
+                                                   : tr("Firmware: %1").arg(s.deviceFirmware));
+    m_firmware->setVisible(!s.deviceFirmware.isEmpty());
+    if (m_io)
+        m_io->setStatus(s, live);
+}
+
+// A bus's drives as lines under the counters (the list has a Drive column instead).
+void StatusPanel::showDrives(const MachineStatus& s)
+{
     QStringList drives;
     if (s.drives.size() > 1 && !m_axisList) { // the list has a drive column
         for (const DriveStatus& d : s.drives)
@@ -382,11 +398,6 @@ void StatusPanel::onStatus(const MachineStatus& s)
     }
     m_drives->setText(drives.join(QLatin1Char('\n')));
     m_drives->setVisible(!drives.isEmpty());
-    m_firmware->setText(s.deviceFirmware.isEmpty() ? QString()
-                                                   : tr("Firmware: %1").arg(s.deviceFirmware));
-    m_firmware->setVisible(!s.deviceFirmware.isEmpty());
-    if (m_io)
-        m_io->setStatus(s, live);
 }
 
 void StatusPanel::updateTemperature(const MachineStatus& s)

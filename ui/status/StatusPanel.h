@@ -46,6 +46,9 @@ protected:
 private:
     void rebuild();
     QWidget* buildMachineGroup();
+    // The lamp grid or, above kGridAxes axes, the list; then the model's raw words.
+    void addAxesAndWords(QVBoxLayout* v, QWidget* inner);
+    void showDrives(const MachineStatus& s);
     void arrangeColumns(); // lamps in two columns where they fit, else one
     QWidget* buildAxesGroup();
     QWidget* buildTemperatureGroup();

@@ -32,6 +32,7 @@ private Q_SLOTS:
     void movingFirst_theDriveTheDeviceMoves();
     void silentDrive_markedAndNeverIdle();
     void fourDrives_keepTheLampGrid();
+    void fullBus_254Drives_listedAndFound();
 
 private:
     ui::StatusPanel* panel() const { return m_f->window->statusPanel(); }
@@ -154,6 +155,27 @@ void TestAxisStatusList::fourDrives_keepTheLampGrid()
         QVERIFY2(word, key);
         QVERIFY(word->fullTitle().startsWith(QString::fromLatin1(key).mid(6) + ": "));
     }
+}
+
+// A full bus (1.1: addresses 1..254): every drive a row, each found by its address, its
+// Drive column filled from what the drive answered.
+void TestAxisStatusList::fullBus_254Drives_listedAndFound()
+{
+    QStringList bus{"X=1", "Y=2", "Z=3", "U=4"};
+    for (int a = 5; a <= 254; ++a)
+        bus << QStringLiteral("axis%1=%1").arg(a);
+    m_f.reset();
+    m_f = std::make_unique<NanotecUiFixture>();
+    m_f->window->show();
+    QVERIFY(m_f->connectNanotec(bus.join(',')));
+    QVERIFY(axisList());
+    QCOMPARE(rows()->rowCount(), 254);
+    axisList()->bar()->filterEdit()->setText(QStringLiteral("axis254"));
+    QCOMPARE(rows()->rowCount(), 1);
+    QCOMPARE(axisList()->bar()->countText(), QStringLiteral("1 of 254"));
+    // The idle drives are read in turn (NanotecPollPlan): the last one within seconds.
+    QTRY_COMPARE_WITH_TIMEOUT(text(0, Model::Drive), QStringLiteral("254"), 15000);
+    QTRY_COMPARE_WITH_TIMEOUT(lamp(0, Model::Moving), State::Off, 15000);
 }
 
 QTEST_MAIN(TestAxisStatusList)
