@@ -111,6 +111,14 @@ RecordsPage::RecordsPage(MachineContext* context, QWidget* parent)
     rebuild();
 }
 
+RecordsPage::~RecordsPage()
+{
+    // The drive field's "left without picking" must not run while QWidget deletes the combo
+    // (a focused, edited field loses its focus then).
+    if (m_axis->lineEdit())
+        m_axis->lineEdit()->disconnect(this);
+}
+
 QString RecordsPage::stateText() const
 {
     return m_state->text();

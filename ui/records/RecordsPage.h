@@ -22,6 +22,7 @@ class RecordsPage : public QWidget
     Q_OBJECT
 public:
     explicit RecordsPage(MachineContext* context, QWidget* parent = nullptr);
+    ~RecordsPage() override;
 
     QComboBox* axisCombo() const { return m_axis; }
     QSpinBox* recordSpin() const { return m_record; }

@@ -80,6 +80,14 @@ AxisStatusList::AxisStatusList(MachineContext* context, const QList<StatusWordIn
     followSelection();
 }
 
+AxisStatusList::~AxisStatusList()
+{
+    // QWidget deletes the children (model, filter, view) after this object's members are gone:
+    // none of their signals may reach followSelection() then.
+    m_filter->disconnect(this);
+    m_view->selectionModel()->disconnect(this);
+}
+
 void AxisStatusList::setStatus(const MachineStatus& status, bool live)
 {
     m_status = status;

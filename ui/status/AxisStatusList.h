@@ -24,6 +24,7 @@ public:
     // `axisWords`: the model's words that belong to one axis each (StatusWordInfo::axis).
     AxisStatusList(MachineContext* context, const QList<StatusWordInfo>& axisWords,
                    QWidget* parent = nullptr);
+    ~AxisStatusList() override;
 
     void setStatus(const MachineStatus& status, bool live);
     QTableView* view() const { return m_view; }
