@@ -348,7 +348,6 @@ void SoakRun::record(const BenchHost::Outcome& outcome)
     }
 }
 
-// What an operator does after a refusal the model's manual says how to clear.
 // A random non-empty subset: any of a few axes; on a bus of many drives one to three of them,
 // as a plant moves a few drives at a time.
 QList<Axis> SoakRun::someAxes(const QList<Axis>& axes)
@@ -386,7 +385,8 @@ ParameterSet SoakRun::setupOf(const QList<Axis>& axes) const
     return out;
 }
 
-// The axes of the refused command get the operator's recovery.
+// What an operator does after a refusal the model's manual says how to clear, for the axes of
+// the refused command.
 void SoakRun::recoverIfRefused(const BenchHost::Outcome& outcome, const QList<Axis>& axes)
 {
     if (!outcome.finished || outcome.result.error != ErrorKind::Refused)
