@@ -28,6 +28,12 @@ public:
         return waitConnected();
     }
 
+    // Six drives named as a plant calls them (issue 32), at addresses 1..6.
+    static QString sixNamedDrives()
+    {
+        return QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6");
+    }
+
     bool withBus(std::function<void(nanotec::NanotecSimulator*)> fn)
     {
         return withSimulatorAs<nanotec::NanotecSimulator>(std::move(fn));

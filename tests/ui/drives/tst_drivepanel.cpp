@@ -42,6 +42,13 @@ private:
     QAbstractItemModel* list() const { return panel()->driveTable()->model(); }
     int rows() const { return list()->rowCount(); }
     QString text(int row, int column) const { return list()->index(row, column).data().toString(); }
+    void reconnectSixNamedDrives()
+    {
+        m_f.reset();
+        m_f = std::make_unique<NanotecUiFixture>();
+        m_f->window->show();
+        QVERIFY(m_f->connectNanotec(NanotecUiFixture::sixNamedDrives()));
+    }
     std::unique_ptr<NanotecUiFixture> m_f;
 };
 
@@ -84,10 +91,7 @@ void TestDrivePanel::driveList_silentDriveMarkedRed()
 // name, and the sixth (an axis past the four letters) is polled and marked when it is silent.
 void TestDrivePanel::driveList_sixNamedDrives_showsTheirNames()
 {
-    m_f.reset();
-    m_f = std::make_unique<NanotecUiFixture>();
-    m_f->window->show();
-    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    reconnectSixNamedDrives();
     QTRY_COMPARE_WITH_TIMEOUT(rows(), 6, 5000);
     const QStringList names{"feeder", "gate", "press", "lift", "tilt", "stacker"};
     for (int r = 0; r < 6; ++r) {
@@ -126,10 +130,7 @@ void TestDrivePanel::driveList_sameStatus_tableNotRebuilt()
 // jump away). "Moving" is what the device reports: the drive is active at the simulator.
 void TestDrivePanel::driveList_filterByNameOrAddress_movingFirstOnRequest()
 {
-    m_f.reset();
-    m_f = std::make_unique<NanotecUiFixture>();
-    m_f->window->show();
-    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    reconnectSixNamedDrives();
     QTRY_COMPARE_WITH_TIMEOUT(rows(), 6, 5000);
     ui::AxisListBar* bar = panel()->driveBar();
     bar->filterEdit()->setText(QStringLiteral("ST"));

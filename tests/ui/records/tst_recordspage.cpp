@@ -123,7 +123,7 @@ void TestRecordsPage::driveChoice_manyDrives_foundByTypedName()
     m_f.reset();
     m_f = std::make_unique<NanotecUiFixture>();
     m_f->window->show();
-    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    QVERIFY(m_f->connectNanotec(NanotecUiFixture::sixNamedDrives()));
     QComboBox* combo = page()->axisCombo();
     QTRY_COMPARE(combo->count(), 6);
     QVERIFY(combo->isEditable());

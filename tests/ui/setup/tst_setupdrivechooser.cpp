@@ -75,7 +75,7 @@ void TestSetupDriveChooser::choose_firstMatchesByNameOrAddress()
 
 void TestSetupDriveChooser::sixDrives_chosenDriveShowsItsReadValue_writeGoesToIt()
 {
-    connect(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6"));
+    connect(NanotecUiFixture::sixNamedDrives());
     SetupDriveChooser* chooser = page()->driveChooser();
     QVERIFY(chooser->isVisibleTo(page()));
     QVERIFY(current(Axis::X) && current(Axis::U));
@@ -112,7 +112,7 @@ void TestSetupDriveChooser::sixDrives_chosenDriveShowsItsReadValue_writeGoesToIt
 
 void TestSetupDriveChooser::unwrittenEdit_keepsTheColumns()
 {
-    connect(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6"));
+    connect(NanotecUiFixture::sixNamedDrives());
     SetupDriveChooser* chooser = page()->driveChooser();
     QLineEdit* edit = current(Axis::Y)->lineEdit();
     edit->selectAll();

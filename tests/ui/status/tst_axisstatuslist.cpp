@@ -57,7 +57,7 @@ void TestAxisStatusList::init()
     QSettings().clear();
     m_f = std::make_unique<NanotecUiFixture>();
     m_f->window->show();
-    QVERIFY(m_f->connectNanotec(QStringLiteral("feeder=1,gate=2,press=3,lift=4,tilt=5,stacker=6")));
+    QVERIFY(m_f->connectNanotec(NanotecUiFixture::sixNamedDrives()));
     QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount > 2, 5000);
 }
 
