@@ -63,9 +63,9 @@ void AxisListBar::arrange(bool twoRows)
 void AxisListBar::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
-    // A narrow dock: the filter field gets the whole width, the rest a row below. Only a
-    // resize changes it; what the bar shows never does.
-    const int oneRow = 8 * fontMetrics().averageCharWidth() + m_movingFirst->sizeHint().width() +
+    // A narrow dock (room for less than ~16 typed characters): the filter field gets the whole
+    // width, the rest a row below. Only a resize changes it; what the bar shows never does.
+    const int oneRow = 16 * fontMetrics().averageCharWidth() + m_movingFirst->sizeHint().width() +
                        m_count->minimumWidth() + 2 * m_grid->horizontalSpacing();
     arrange(width() < oneRow);
 }
