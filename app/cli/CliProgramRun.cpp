@@ -10,6 +10,7 @@
 #include "model/NumberParsing.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramReader.h"
+#include "program/language/ProgramExpansion.h"
 #include <QFile>
 #include <QFileInfo>
 #include <QSocketNotifier>
@@ -124,6 +125,34 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
     return Outcome::success();
 }
 
+// A program in LinuxCNC's language (issue 33): worked out against the run's offsets and the
+// machine's subroutine folder, then parsed; its blocks name the file's lines.
+Outcome readWorkedOut(const RunRequest& r, const machine::MachineDescription& d,
+                      const QStringList& axisNames, Program* out)
+{
+    program::NgcContext context;
+    context.coordinateSystems = r.systems;
+    context.activeSystem = 0;
+    context.subroutineFolder = d.subroutineFolderPath;
+    QList<program::ProgramError> errors;
+    const std::optional<program::ProgramExpansion::Result> expanded =
+        program::ProgramExpansion::expand(program::ProgramSource::file(r.path), context, &errors);
+    std::optional<Program> parsed;
+    if (expanded) {
+        program::ProgramReader reader(expanded->source, axisNames, expanded->info->lines);
+        parsed = reader.finish(&errors);
+    }
+    if (!parsed) {
+        printProgramErrors(r.path, errors);
+        return Outcome::failure(
+            ExitInvalidValue,
+            CliText::tr("%1 is not a valid program; nothing was sent").arg(r.path));
+    }
+    parsed->expansion = expanded->info;
+    *out = *parsed;
+    return Outcome::success();
+}
+
 // The whole file through the streaming parser, before any link is opened: exit 12 when it
 // cannot be read, 7 with every FILE:LINE:COL error.
 Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, Program* out)
@@ -134,6 +163,13 @@ Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, P
     QStringList axisNames;
     for (const machine::MachineAxis& a : d.axes)
         axisNames << a.name;
+    QString why;
+    const std::optional<bool> language =
+        program::ProgramExpansion::usesLanguage(program::ProgramSource::file(r.path), &why);
+    if (!language)
+        return Outcome::failure(ExitFile, CliText::tr("cannot read %1: %2").arg(r.path, why));
+    if (*language)
+        return readWorkedOut(r, d, axisNames, out);
     // Streamed (issue 29): only the parser's index stays in memory, whatever the length.
     program::ProgramParser parser(axisNames);
     TerminalProgress progress(CliText::tr("reading %1").arg(r.path));
@@ -311,7 +347,7 @@ Outcome endOutcome(CliMachineSession& m, const ProgramRunner& runner, const Paus
 Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, bool json)
 {
     ProgramRunner runner(&m.machine());
-    ProgramReport report(runner, p.lines, json);
+    ProgramReport report(runner, p.expansion ? p.expansion->sourceLines : p.lines, json);
     runner.setOptionalStops(r.optionalStops);
     runner.setFeedOverride(r.feedOverride);
     runner.setCoordinateSystems(r.systems, 0);
@@ -365,11 +401,11 @@ Outcome machineRunProgram(CliMachineSession& m, const CliOptions& o)
     Program p;
     if (Outcome read = readProgram(r, m.description(), &p); !read.ok())
         return read;
-    if (r.fromLine > p.lines)
+    if (r.fromLine > (p.expansion ? p.expansion->sourceLines : p.lines))
         return Outcome::usage(CliText::tr("run --from-line %1: %2 has %3 lines")
                                   .arg(r.fromLine)
                                   .arg(r.path)
-                                  .arg(p.lines));
+                                  .arg(p.expansion ? p.expansion->sourceLines : p.lines));
     if (Outcome allowed = refusePausesWithoutTerminal(p, r); !allowed.ok())
         return allowed;
     if (Outcome connected = m.connectAll(); !connected.ok())

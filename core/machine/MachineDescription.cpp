@@ -248,6 +248,8 @@ QJsonObject MachineDescription::toJson() const
         o.insert("spindle", QJsonObject{{"maxRpm", *spindle.maxRpm}});
     if (!crossControllerFeed) // optional as well: written only where it differs from the default
         o.insert("crossControllerFeed", false);
+    if (!subroutineFolder.isEmpty())
+        o.insert("subroutineFolder", subroutineFolder);
     return o;
 }
 
@@ -276,7 +278,7 @@ bool operator==(const MachineDescription& a, const MachineDescription& b)
 {
     return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes &&
            a.spindle == b.spindle && a.crossControllerFeed == b.crossControllerFeed &&
-           a.driveNamedAxes == b.driveNamedAxes;
+           a.subroutineFolder == b.subroutineFolder && a.driveNamedAxes == b.driveNamedAxes;
 }
 
 } // namespace stepdeck::machine

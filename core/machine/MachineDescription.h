@@ -96,6 +96,11 @@ struct MachineDescription
     // says so with an estimate). False (file: "crossControllerFeed": false): the check refuses
     // them.
     bool crossControllerFeed = true;
+    // LinuxCNC's SUBROUTINE_PATH (issue 33; file: "subroutineFolder"): where "O<name> call"
+    // finds <name>.ngc when the program does not define it. As written (relative: to the
+    // machine file), and resolved when the file is read. Empty: none.
+    QString subroutineFolder;
+    QString subroutineFolderPath;
     // singleController(..., DriveAxes::All): axes past the ninth go by their drive names
     // (validation accepts them; no file has them, so toJson leaves this out).
     bool driveNamedAxes = false;

@@ -101,7 +101,8 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
     if (!onlyKeys(
             top, {},
-            {"format", "version", "name", "controllers", "axes", "spindle", "crossControllerFeed"}))
+            {"format", "version", "name", "controllers", "axes", "spindle", "crossControllerFeed",
+             "subroutineFolder"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
@@ -138,6 +139,8 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
     if (!cross.isUndefined() && !cross.isBool())
         return fail("crossControllerFeed", MachineFile::tr("must be true or false"));
     d->crossControllerFeed = cross.toBool(true);
+    if (!string(top, {}, "subroutineFolder", &d->subroutineFolder, false))
+        return false;
     return !top.contains("spindle") || readSpindle(top.value("spindle"), &d->spindle);
 }
 
@@ -357,6 +360,10 @@ MachineFile::parse(const QByteArray& json, MachineFileError* error, const QStrin
     std::optional<MachineDescription> d = readStructure(json, e);
     if (!d || !validate(*d, e) || !loadSetups(&*d, baseDir, e))
         return std::nullopt;
+    if (!d->subroutineFolder.isEmpty())
+        d->subroutineFolderPath = QDir::cleanPath(
+            QDir(baseDir.isEmpty() ? QDir::currentPath() : baseDir)
+                .absoluteFilePath(d->subroutineFolder));
     return d;
 }
 

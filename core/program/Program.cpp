@@ -20,6 +20,15 @@ ProgramSource ProgramSource::bytes(const QByteArray& text)
     return s;
 }
 
+ProgramSource ProgramSource::temporaryFile(std::shared_ptr<QFile> file)
+{
+    ProgramSource s;
+    s.m_path = file->fileName();
+    s.m_isFile = true;
+    s.m_keep = std::move(file);
+    return s;
+}
+
 qint64 ProgramSource::size() const
 {
     if (!m_isFile)

@@ -13,6 +13,9 @@ class QFile;
 
 namespace stepdeck::program {
 
+class NgcLineMap;
+struct ProgramExpansionInfo;
+
 // Where a program's text comes from (issue 29, "streamed, any length"): a file, read again by
 // every pass (the check, the run, a run from line N), or bytes held in memory (the editor's
 // text, tests). Cheap to copy: the bytes are shared.
@@ -22,6 +25,8 @@ public:
     ProgramSource() = default;
     static ProgramSource file(const QString& path);
     static ProgramSource bytes(const QByteArray& text);
+    // A file that lives as long as a copy of the source does (a worked-out program, issue 33).
+    static ProgramSource temporaryFile(std::shared_ptr<QFile> file);
 
     bool isFile() const { return m_isFile; }
     QString path() const { return m_path; }
@@ -33,6 +38,7 @@ private:
     QString m_path;
     QByteArray m_bytes;
     bool m_isFile = false;
+    std::shared_ptr<QFile> m_keep;
 };
 
 // Reads byte ranges of a source: a file opened once and kept open, or the bytes themselves.
@@ -89,6 +95,8 @@ struct ProgramIndex
     std::vector<ProgramCheckpoint> checkpoints; // the first at line 0, byte 0
     std::unordered_map<int, int> partners;      // RepeatStart <-> RepeatEnd block indices
     qint64 bytes = 0;                           // the source's length when it was read
+    // A worked-out program (issue 33): its lines' source lines; null: the text is the source.
+    std::shared_ptr<const NgcLineMap> lineMap;
 
     int partner(int block) const
     {
@@ -111,6 +119,9 @@ struct Program
     int lines = 0;         // lines in the file
     int blockCount = 0;    // blocks in the file (lines with words)
     std::shared_ptr<const ProgramIndex> index;
+    // A program in LinuxCNC's language: what it was worked out from and against (its blocks'
+    // lines are the source's); null: the source is the text (ProgramExpansion).
+    std::shared_ptr<const ProgramExpansionInfo> expansion;
 
     // Every block, read into memory (tests and small tools: a long program takes its size;
     // ProgramReader reads one window at a time).

@@ -7,6 +7,7 @@
 #include "ProgramParser.h"
 #include "ProgramReader.h"
 #include "ProgramSimulation.h"
+#include "language/ProgramExpansion.h"
 #include <QSet>
 #include <algorithm>
 
@@ -242,11 +243,50 @@ QList<ProgramError> CheckErrors::take()
     return out;
 }
 
+namespace {
+
+// A program in LinuxCNC's language runs its lines in the order its control flow gives (issue 33):
+// a run starts at its start, and its values were worked out against the offsets it reads.
+bool refuseForExpansion(const ProgramExpansionInfo* info, const MachineFacts& facts, int fromLine,
+                        QList<ProgramError>* errors)
+{
+    if (fromLine > 1) {
+        *errors << ProgramError{
+            fromLine, 1,
+            ProgramCheck::tr("run from line %1: a program with parameters or O words runs its "
+                             "lines in the order its control flow gives; run it from its start")
+                .arg(fromLine)};
+        return true;
+    }
+    if (info && (info->coordinateSystems != facts.coordinateSystems ||
+                 info->activeSystem != facts.activeSystem)) {
+        *errors << ProgramError{0, 0,
+                                ProgramCheck::tr("the offsets changed since the program's "
+                                                 "parameters were worked out: check it again")};
+        return true;
+    }
+    return false;
+}
+
+NgcContext contextOf(const MachineFacts& facts)
+{
+    NgcContext context;
+    context.coordinateSystems = facts.coordinateSystems;
+    context.activeSystem = facts.activeSystem;
+    context.subroutineFolder = facts.description.subroutineFolderPath;
+    return context;
+}
+
+} // namespace
+
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
                                        int fromLine, const CheckProgress& progress)
 {
     ProgramCheckResult result;
-    result.preview.lines = program.lines;
+    result.preview.lines = program.expansion ? program.expansion->sourceLines : program.lines;
+    if (program.expansion &&
+        refuseForExpansion(program.expansion.get(), facts, fromLine, &result.errors))
+        return result;
     ProgramReader reader(program);
     walk(reader, facts, fromLine, progress, &result);
     if (result.ok())
@@ -259,7 +299,27 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
                                        const CheckProgress& progress)
 {
     ProgramCheckResult result;
-    ProgramReader reader(source, axisNames);
+    QString why;
+    const std::optional<bool> language = ProgramExpansion::usesLanguage(source, &why);
+    if (!language) {
+        result.errors = {ProgramError{0, 0, why}};
+        return result;
+    }
+    std::optional<ProgramExpansion::Result> expanded;
+    if (*language) {
+        if (refuseForExpansion(nullptr, facts, fromLine, &result.errors))
+            return result;
+        // Working out has no bytes to count: the progress stays at 0 but can cancel it.
+        const qint64 total = source.size();
+        expanded = ProgramExpansion::expand(source, contextOf(facts), &result.errors, 100,
+                                            [&] { return !progress || progress(0, total); });
+        if (!expanded) {
+            result.cancelled = result.errors.isEmpty();
+            return result;
+        }
+    }
+    ProgramReader reader(expanded ? expanded->source : source, axisNames,
+                         expanded ? expanded->info->lines : nullptr);
     walk(reader, facts, fromLine, progress, &result);
     if (result.cancelled)
         return result;
@@ -269,6 +329,10 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
     if (!result.program)
         result.errors = parseErrors;
     result.preview.lines = result.program ? result.program->lines : 0;
+    if (result.program && expanded) {
+        result.program->expansion = expanded->info;
+        result.preview.lines = expanded->info->sourceLines;
+    }
     if (!result.ok())
         result.program.reset();
     return result;

@@ -186,6 +186,11 @@ private:
             return {};
         }
         const std::optional<BlockKind> action = g ? actionOfG(code) : actionOfM(code);
+        if (!g && (code == 98 || code == 99)) // issue 33
+            return ProgramLine::tr("%1 (a Fanuc-style subprogram) is not supported: write the "
+                                   "subprogram as O<name> sub … endsub and call it with O<name> "
+                                   "call")
+                .arg(w.valueText());
         if (!action)
             return ProgramLine::tr("%1 is not supported").arg(w.valueText());
         if (action == BlockKind::DrillCycle)

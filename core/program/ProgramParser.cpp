@@ -1,5 +1,6 @@
 #include "ProgramParser.h"
 #include "ProgramLine.h"
+#include "language/ProgramExpansion.h"
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -14,8 +15,21 @@ ProgramParser::ProgramParser(const QStringList& axisNames, const ModalState& sta
 
 ProgramParser::ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
                              const ProgramCheckpoint& from)
-    : m_axisNames(axisNames), m_lineOffset(from.offset), m_state(from.state), m_replayIndex(&index)
+    : m_axisNames(axisNames), m_lineMap(index.lineMap), m_lineOffset(from.offset),
+      m_state(from.state), m_replayIndex(&index)
 {}
+
+void ProgramParser::setLineMap(std::shared_ptr<const NgcLineMap> map)
+{
+    m_lineMap = std::move(map);
+    if (m_index)
+        m_index->lineMap = m_lineMap;
+}
+
+int ProgramParser::sourceLine(int line) const
+{
+    return m_lineMap ? m_lineMap->sourceLine(line) : line;
+}
 
 std::optional<Program> ProgramParser::parse(const QByteArray& text, const QStringList& axisNames,
                                             QList<ProgramError>* errors, const ModalState& start)
@@ -131,7 +145,7 @@ void ProgramParser::parseLine(const QString& text)
     m_state.anyWords = m_state.anyWords || !lexed.words.isEmpty();
     if (!lexed.words.isEmpty() && m_state.endLine > 0) {
         error(m_state.line, lexed.words.first().column,
-              tr("nothing may follow the program's end (line %1)").arg(m_state.endLine));
+              tr("nothing may follow the program's end (line %1)").arg(sourceLine(m_state.endLine)));
         return;
     }
     std::optional<ProgramError> failure;
@@ -146,8 +160,10 @@ void ProgramParser::parseLine(const QString& text)
     if (!block)
         return; // blank or only a comment
     m_state.modal = modal;
-    block->line = m_state.line;
-    block->text = text.trimmed();
+    block->line = sourceLine(m_state.line);
+    // A worked-out line keeps its words at their source columns (NgcLineExpander): shown
+    // without the padding.
+    block->text = m_lineMap ? text.simplified() : text.trimmed();
     if (block->kind == BlockKind::End)
         m_state.endLine = m_state.line;
     addBlock(std::move(*block));
@@ -230,7 +246,7 @@ void ProgramParser::error(int line, int column, const QString& message)
         m_tooManyErrors = true;
         return;
     }
-    m_errors << ProgramError{line, column, message};
+    m_errors << ProgramError{sourceLine(line), column, message};
 }
 
 std::optional<Program> ProgramParser::finish(QList<ProgramError>* errors)

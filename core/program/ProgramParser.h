@@ -41,6 +41,9 @@ public:
     ProgramParser(const QStringList& axisNames, const ProgramIndex& index,
                   const ProgramCheckpoint& from);
 
+    // A worked-out program (issue 33): blocks and errors name the source's lines, and the index
+    // keeps the map for the replays.
+    void setLineMap(std::shared_ptr<const NgcLineMap> map);
     // Where each block goes (by default nowhere: only the index and the errors are kept).
     void setSink(Sink sink) { m_sink = std::move(sink); }
     void feed(const QByteArray& bytes);
@@ -74,8 +77,10 @@ private:
     bool linkRepeat(ProgramBlock& block, int index);
     void noteBrokenRepeat(const LexedLine& lexed);
     void error(int line, int column, const QString& message);
+    int sourceLine(int line) const;
 
     QStringList m_axisNames;
+    std::shared_ptr<const NgcLineMap> m_lineMap;
     Sink m_sink;
     QByteArray m_pending;
     bool m_pendingTooLong = false;

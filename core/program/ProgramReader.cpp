@@ -29,7 +29,8 @@ ProgramReader::ProgramReader(const Program& program)
     m_size = m_reader->size();
 }
 
-ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axisNames)
+ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axisNames,
+                             std::shared_ptr<const NgcLineMap> lineMap)
     : m_source(source), m_axisNames(axisNames),
       m_reader(std::make_unique<ProgramSourceReader>(source)),
       m_live(std::make_unique<ProgramParser>(axisNames)), m_window(kWindowBlocks)
@@ -38,6 +39,8 @@ ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axi
     if (!m_reader->open(&why))
         fail(why);
     m_size = m_reader->size();
+    if (lineMap)
+        m_live->setLineMap(std::move(lineMap));
     m_live->setSink([this](ProgramBlock&& block) {
         if (!m_window.push(std::move(block)))
             ++m_windowFirst;

@@ -26,7 +26,10 @@ public:
     static constexpr qint64 kReadBytes = 16 * 1024;
 
     explicit ProgramReader(const Program& program);
-    ProgramReader(const ProgramSource& source, const QStringList& axisNames);
+    // lineMap: the source is a worked-out program (ProgramExpansion) whose blocks name these
+    // lines.
+    ProgramReader(const ProgramSource& source, const QStringList& axisNames,
+                  std::shared_ptr<const NgcLineMap> lineMap = {});
     ~ProgramReader();
 
     // The block at `index` (0-based, file order); nullptr past the last block, or when the text

@@ -166,6 +166,8 @@ QWidget* MachineEditor::buildButtons()
 void MachineEditor::setMachine(const MachineDescription& machine, const QString& path)
 {
     m_path = path;
+    m_subroutineFolder = machine.subroutineFolder;
+    m_subroutineFolderPath = machine.subroutineFolderPath;
     m_reopen->hide(); // another file: offered again once it is saved
     m_name->setText(machine.name);
     m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
@@ -203,6 +205,8 @@ bool MachineEditor::readMachine(MachineDescription* out, MachineFileError* error
 {
     out->name = m_name->text().trimmed();
     out->crossControllerFeed = m_crossFeed->isChecked();
+    out->subroutineFolder = m_subroutineFolder;
+    out->subroutineFolderPath = m_subroutineFolderPath;
     return m_controllers->read(&out->controllers, error) && m_axes->read(&out->axes, error) &&
            readDecimal(m_maxRpm, QStringLiteral("spindle.maxRpm"), true, &out->spindle.maxRpm,
                        error) &&

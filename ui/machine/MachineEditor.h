@@ -62,6 +62,9 @@ public:
     QLineEdit* nameEdit() const { return m_name; }
     QLineEdit* maxRpmEdit() const { return m_maxRpm; } // spindle.maxRpm; empty: none
     QCheckBox* m_crossFeed = nullptr;                  // MachineDescription::crossControllerFeed
+    // Kept as the file has them (no field of their own: set in the file, docs/machines.md).
+    QString m_subroutineFolder;
+    QString m_subroutineFolderPath;
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }

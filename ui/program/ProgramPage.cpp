@@ -20,6 +20,7 @@
 #include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
+#include "program/language/ProgramExpansion.h"
 #include <QHBoxLayout>
 #include <QPushButton>
 #include <QShortcut>
@@ -307,7 +308,17 @@ std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>*
             *errors = {program::ProgramError{0, 0, tr("the program is not checked yet")}};
         return std::nullopt;
     }
-    return program::ProgramParser::parse(m_editor->toPlainText().toUtf8(), axes, errors);
+    const QByteArray text = m_editor->toPlainText().toUtf8();
+    if (program::ProgramExpansion::usesLanguage(text)) {
+        // Parameters and O words are worked out against the machine's offsets by the check
+        // (issue 33): the program its check read is the one that runs.
+        if (m_checkOk && m_checkedProgram)
+            return m_checkedProgram;
+        if (errors)
+            *errors = {program::ProgramError{0, 0, tr("the program is not checked yet")}};
+        return std::nullopt;
+    }
+    return program::ProgramParser::parse(text, axes, errors);
 }
 
 void ProgramPage::checkNow()

@@ -36,6 +36,7 @@ private Q_SLOTS:
     void run_progressLinePerBlockOnStderr();
     void run_json_eventPerBlockThenSummary();
     void fromLine_beyondTheFile_exit2();
+    void linuxcncLanguage_workedOut_deviceMovesAndFileLines();
     void feedHold_signals_holdOverrideResumeAsJsonEvents();
 
 private:
@@ -288,6 +289,35 @@ void TestCliRun::dryRun_toolTableAndOffsets_appliedToTheCheck()
     QCOMPARE(badTable.exitCode, 7);
     QVERIFY2(badTable.err.contains("is not a tool table"), badTable.err.constData());
     QVERIFY(m_device->moves().isEmpty());
+}
+
+// Issue 33: a loop with parameters runs its passes (the board saw each move's steps) and the
+// progress names the file's lines; a runaway loop is refused before anything is sent.
+void TestCliRun::linuxcncLanguage_workedOut_deviceMovesAndFileLines()
+{
+    const QString path = writeProgram(*m_dir, "loop.ngc",
+                                      "G28 X0\n#<step>=40\nG91\no1 repeat [3]\n  G0 X#<step>\n"
+                                      "  #<step>=[#<step>+10]\no1 endrepeat\nM2\n");
+    const CliRun r = runCli(args(path));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.err.contains("line 5/8: G0 X40\n") && r.err.contains("line 5/8: G0 X50\n") &&
+                 r.err.contains("line 5/8: G0 X60\n"),
+             r.err.constData());
+    QList<qint64> steps;
+    for (const DeviceMove& m : m_device->moves())
+        if (m.axis == Axis::X)
+            steps << m.steps;
+    QVERIFY2(steps.size() >= 3, qPrintable(QString::number(steps.size())));
+    QCOMPARE(steps.mid(steps.size() - 3), QList<qint64>({40, 50, 60}));
+
+    m_device = std::make_unique<RunDevice>(QStringLiteral("elab"));
+    const QString runaway =
+        writeProgram(*m_dir, "runaway.ngc", "G91\no7 while [1]\n  #1=[#1+1]\no7 endwhile\n");
+    const CliRun refused = runCli(args(runaway));
+    QCOMPARE(refused.exitCode, 7);
+    QVERIFY2(refused.err.contains(runaway.toUtf8() + ":2:1: O7 while (line 2) has run 1000000"),
+             refused.err.constData());
+    QCOMPARE(m_device->receivedCount(), 0);
 }
 
 void TestCliRun::run_progressLinePerBlockOnStderr()

@@ -1,0 +1,83 @@
+#pragma once
+#include "NgcLineExpander.h"
+#include "NgcParameters.h"
+#include "NgcStatement.h"
+#include <QCoreApplication>
+#include <functional>
+#include <memory>
+
+namespace stepdeck::program {
+
+// What a program in LinuxCNC's language is worked out against (ProgramExpansion).
+struct NgcContext
+{
+    CoordinateSystems coordinateSystems; // #5221.. (MachineFacts)
+    int activeSystem = 0;                // #5220 - 1
+    // LinuxCNC's SUBROUTINE_PATH: "O<name> call" of a subroutine the file does not hold reads
+    // <folder>/<name>.ngc (MachineDescription::subroutineFolder). Empty: none.
+    QString subroutineFolder;
+};
+
+// Runs the control flow of a program in LinuxCNC's language (issue 33): O-word subroutines,
+// branches and loops, parameters and expressions, and gives out its ordinary lines in the order
+// they run, their values worked out (NgcLineExpander). The check and the run both take what it
+// gives out (ProgramExpansion), so what runs is what was checked. Bounded: a loop runs at most
+// kMaxPasses times each time it is entered, calls nest kMaxCallDepth deep (LinuxCNC's
+// INTERP_SUB_ROUTINE_LEVELS), at most kMaxSteps lines run and kMaxLines are given out; past a
+// bound the program is refused with an error naming the line. The first error ends the work.
+class NgcInterpreter
+{
+    Q_DECLARE_TR_FUNCTIONS(stepdeck::program::NgcInterpreter)
+public:
+    static constexpr int kMaxCallDepth = 10;
+    static constexpr qint64 kMaxPasses = 1000000;
+    static constexpr qint64 kMaxSteps = 50000000;
+    static constexpr qint64 kMaxLines = 5000000;
+    static constexpr qint64 kMaxSubroutineBytes = 1024 * 1024;
+
+    // text, sourceLine (1-based, of the main file; a folder subroutine's lines: its call's).
+    // false: stop (the receiver failed).
+    using Output = std::function<bool(const QString& text, int sourceLine)>;
+
+    NgcInterpreter(const QStringList& lines, const NgcContext& context, Output output);
+    ~NgcInterpreter();
+    // Asked every few thousand lines run; false ends the work (cancelled(), no error).
+    void setKeepGoing(std::function<bool()> keepGoing) { m_keepGoing = std::move(keepGoing); }
+    // Every structure error of the main file, or the first error of the run.
+    bool run(QList<ProgramError>* errors, int maxErrors);
+    bool cancelled() const { return m_cancelled; }
+
+private:
+    struct File;
+    struct Frame;
+    bool step();
+    bool ordinary(const QString& text);
+    bool statement(const NgcStatement& s);
+    bool branch(int line);
+    bool loopStatement(const NgcStatement& s);
+    bool jumpOut(const NgcStatement& s);
+    bool call(const NgcStatement& s);
+    bool leave(const NgcStatement& s);
+    std::optional<double> condition(const NgcStatement& s, bool required);
+    const File* findSubroutine(const QString& label, int* line);
+    bool fail(int column, const QString& message);
+    bool failAt(const std::optional<ProgramError>& error);
+    int sourceLine() const;
+
+    NgcContext m_context;
+    Output m_output;
+    std::function<bool()> m_keepGoing;
+    bool m_cancelled = false;
+    NgcParameters m_parameters;
+    std::vector<std::unique_ptr<File>> m_files; // [0]: the main file
+    QList<Frame> m_frames;
+    int m_pc = 0;
+    const File* m_file = nullptr;
+    qint64 m_steps = 0;
+    qint64 m_lines = 0;
+    bool m_ended = false;
+    bool m_percentOpen = false;
+    std::optional<ProgramError> m_error;
+};
+
+} // namespace stepdeck::program

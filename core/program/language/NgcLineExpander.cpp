@@ -1,0 +1,163 @@
+#include "NgcLineExpander.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+bool NgcExpandedLine::has(char letter, double value) const
+{
+    for (const Word& w : words)
+        if (w.letter == QLatin1Char(letter) && std::fabs(w.value - value) < 1e-9)
+            return true;
+    return false;
+}
+
+QString NgcLineExpander::format(double value)
+{
+    QString s = QString::number(value, 'f', 6);
+    while (s.endsWith(QLatin1Char('0')))
+        s.chop(1);
+    if (s.endsWith(QLatin1Char('.')))
+        s.chop(1);
+    return s == QLatin1String("-0") ? QStringLiteral("0") : s;
+}
+
+QString NgcLineExpander::substitute(QStringView text, const NgcParameters& parameters)
+{
+    QString out;
+    qsizetype pos = 0;
+    while (pos < text.size()) {
+        const qsizetype hash = text.indexOf(QLatin1Char('#'), pos);
+        if (hash < 0) {
+            out += text.mid(pos);
+            break;
+        }
+        out += text.mid(pos, hash - pos);
+        NgcExpression e(text, parameters);
+        qsizetype p = hash + 1;
+        // A reference that does not read (a '#' in the text, an unset name) stays as written.
+        std::optional<double> v;
+        if (p < text.size() && (text.at(p) == QLatin1Char('<') || text.at(p).isDigit())) {
+            qsizetype q = hash;
+            v = e.readValue(&q);
+            while (v && q > p && text.at(q - 1).isSpace())
+                --q; // the value reader leaves out the spaces after a number
+            if (v)
+                p = q;
+        }
+        out += v ? format(*v) : QString(QLatin1Char('#'));
+        pos = v ? p : hash + 1;
+    }
+    return out;
+}
+
+namespace {
+
+qsizetype skipSpaces(QStringView line, qsizetype pos)
+{
+    while (pos < line.size() && line.at(pos).isSpace())
+        ++pos;
+    return pos;
+}
+
+// Where the text of the line goes: each piece at its source column where the text before it
+// leaves room.
+void place(QString* out, qsizetype column, const QString& piece)
+{
+    if (out->size() < column)
+        out->append(QString(column - out->size(), QLatin1Char(' ')));
+    else if (!out->isEmpty())
+        out->append(QLatin1Char(' '));
+    out->append(piece);
+}
+
+} // namespace
+
+std::optional<NgcExpandedLine> NgcLineExpander::expand(QStringView line, int lineNumber,
+                                                       const NgcParameters& parameters,
+                                                       std::optional<ProgramError>* error)
+{
+    NgcExpandedLine out;
+    auto fail = [&](qsizetype pos, const QString& message) -> std::optional<NgcExpandedLine> {
+        *error = ProgramError{lineNumber, int(pos) + 1, message};
+        return std::nullopt;
+    };
+    auto failed = [&](const NgcExpression& e) -> std::optional<NgcExpandedLine> {
+        *error = e.error();
+        return std::nullopt;
+    };
+    if (line.trimmed() == QLatin1String("%")) {
+        out.text = line.toString();
+        out.keep = true;
+        return out;
+    }
+    qsizetype pos = 0;
+    for (;;) {
+        pos = skipSpaces(line, pos);
+        if (pos >= line.size())
+            break;
+        const QChar c = line.at(pos);
+        if (c == QLatin1Char(';')) {
+            place(&out.text, pos, line.mid(pos).toString());
+            out.keep = true;
+            break;
+        }
+        if (c == QLatin1Char('(')) {
+            const qsizetype close = line.indexOf(QLatin1Char(')'), pos);
+            if (close < 0)
+                return fail(pos, tr("the comment is not closed: \")\" is missing"));
+            const QStringView body = line.mid(pos + 1, close - pos - 1);
+            const QStringView t = body.trimmed();
+            const bool debug = t.startsWith(QLatin1String("debug,"), Qt::CaseInsensitive);
+            const bool print = t.startsWith(QLatin1String("print,"), Qt::CaseInsensitive);
+            place(&out.text, pos,
+                  debug || print
+                      ? QStringLiteral("(MSG, %1)").arg(substitute(t.mid(6).trimmed(), parameters))
+                      : line.mid(pos, close - pos + 1).toString());
+            out.keep = true;
+            pos = close + 1;
+            continue;
+        }
+        NgcExpression e(line, parameters);
+        e.setLineNumber(lineNumber);
+        if (c == QLatin1Char('#')) {
+            qsizetype p = pos + 1;
+            const std::optional<NgcExpression::Reference> target = e.readReference(&p);
+            if (!target)
+                return failed(e);
+            p = skipSpaces(line, p);
+            if (p >= line.size() || line.at(p) != QLatin1Char('='))
+                return fail(p, tr("\"=\" is missing: a parameter is set with #…=value"));
+            ++p;
+            const std::optional<double> v = e.readValue(&p);
+            if (!v)
+                return failed(e);
+            out.assignments << NgcExpandedLine::Assignment{*target, *v};
+            pos = p;
+            continue;
+        }
+        if (!(c.unicode() < 128 && c.isLetter()))
+            return fail(pos, tr("unexpected character \"%1\"").arg(c));
+        const QChar letter = c.toUpper();
+        qsizetype p = pos + 1;
+        const std::optional<double> v = e.readValue(&p);
+        if (!v)
+            return failed(e);
+        if (std::fabs(*v) > kMaxWordValue)
+            return fail(pos, tr("%1%2 is beyond the values StepDeck takes (±%3)")
+                                 .arg(letter)
+                                 .arg(*v)
+                                 .arg(kMaxWordValue));
+        if (letter == QLatin1Char('M') && (std::fabs(*v - 98) < 1e-9 || std::fabs(*v - 99) < 1e-9))
+            return fail(pos, tr("M%1 (a Fanuc-style subprogram) is not supported: write the "
+                                "subprogram as O<name> sub … endsub and call it with O<name> "
+                                "call")
+                                 .arg(format(*v)));
+        place(&out.text, pos, QString(letter) + format(*v));
+        out.words.push_back(NgcExpandedLine::Word{letter, *v});
+        out.keep = true;
+        pos = p;
+    }
+    return out;
+}
+
+} // namespace stepdeck::program

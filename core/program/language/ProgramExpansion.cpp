@@ -1,0 +1,251 @@
+#include "ProgramExpansion.h"
+#include "program/ProgramLogging.h"
+#include <QRegularExpression>
+#include <QTemporaryFile>
+#include <algorithm>
+
+namespace stepdeck::program {
+
+void NgcLineMap::add(int expandedLine, int sourceLine)
+{
+    if (!m_runs.empty() && expandedLine == m_lastExpanded + 1 && sourceLine == m_lastSource + 1) {
+        m_lastExpanded = expandedLine;
+        m_lastSource = sourceLine;
+        return;
+    }
+    m_runs.push_back(Run{expandedLine, sourceLine});
+    m_lastExpanded = expandedLine;
+    m_lastSource = sourceLine;
+}
+
+int NgcLineMap::sourceLine(int expandedLine) const
+{
+    const auto it = std::upper_bound(m_runs.begin(), m_runs.end(), expandedLine,
+                                     [](int line, const Run& r) { return line < r.expanded; });
+    if (it == m_runs.begin())
+        return expandedLine; // before the first line given out (none there)
+    const Run& r = *std::prev(it);
+    // A line after the last one given out (the parser's "end of program" errors): the last
+    // source line's.
+    return r.source + std::min(expandedLine - r.expanded, m_lastExpanded - r.expanded);
+}
+
+namespace {
+
+bool startsWithNoCase(QByteArrayView text, const char* prefix)
+{
+    const QByteArrayView p(prefix);
+    return text.size() >= p.size() && text.first(p.size()).compare(p, Qt::CaseInsensitive) == 0;
+}
+
+// One line: does it use the language?
+bool lineUsesLanguage(QByteArrayView line)
+{
+    qsizetype i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+        ++i;
+    // An O word first (after an N number): anything but repeat/endrepeat is the language.
+    qsizetype o = i;
+    if (o < line.size() && (line[o] == 'N' || line[o] == 'n')) {
+        ++o;
+        while (o < line.size() && (line[o] == ' ' || (line[o] >= '0' && line[o] <= '9')))
+            ++o;
+    }
+    if (o < line.size() && (line[o] == 'O' || line[o] == 'o')) {
+        const QString text = QString::fromUtf8(line);
+        std::optional<ProgramError> error;
+        const std::optional<NgcStatement> s = NgcStatement::read(text, 1, &error);
+        if (s && s->kind != NgcStatement::Repeat && s->kind != NgcStatement::EndRepeat)
+            return true;
+        // "O1 repeat [3]" with a plain count is the parser's own (issue 20): read as it is.
+        static const QRegularExpression plainCount(
+            QStringLiteral("^\\s*(\\[\\s*[0-9.]+\\s*\\]|[0-9.]+)?\\s*(\\(.*|;.*)?$"));
+        if (s)
+            return !plainCount.match(QStringView(text).mid(s->rest)).hasMatch();
+    }
+    for (; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == ';')
+            return false;
+        if (c == '#' || c == '[')
+            return true;
+        if (c == '(') {
+            const qsizetype close = line.indexOf(')', i);
+            QByteArrayView body = line.sliced(i + 1, (close < 0 ? line.size() : close) - i - 1);
+            body = body.trimmed();
+            if (startsWithNoCase(body, "debug,") || startsWithNoCase(body, "print,"))
+                return true;
+            if (close < 0)
+                return false;
+            i = close;
+        }
+    }
+    return false;
+}
+
+// Where the worked-out text goes: memory, then a temporary file once it grows.
+class ExpandedWriter
+{
+public:
+    bool append(const QString& text)
+    {
+        m_buffer += text.toUtf8();
+        m_buffer += '\n';
+        if (m_buffer.size() < ProgramExpansion::kMemoryBytes)
+            return true;
+        return spill();
+    }
+    std::optional<ProgramSource> finish(QString* why)
+    {
+        if (!m_file)
+            return ProgramSource::bytes(m_buffer);
+        if (!spill() || !m_file->flush()) {
+            *why = m_file->errorString();
+            return std::nullopt;
+        }
+        return ProgramSource::temporaryFile(m_file);
+    }
+    QString error() const { return m_file ? m_file->errorString() : QString(); }
+
+private:
+    bool spill()
+    {
+        if (!m_file) {
+            m_file = std::make_shared<QTemporaryFile>();
+            if (!m_file->open()) {
+                qCWarning(lcProgram) << "cannot open a temporary file:" << m_file->errorString();
+                return false;
+            }
+        }
+        if (m_file->write(m_buffer) != m_buffer.size()) {
+            qCWarning(lcProgram) << "cannot write the worked-out program:" << m_file->errorString();
+            return false;
+        }
+        m_buffer.clear();
+        return true;
+    }
+
+    QByteArray m_buffer;
+    std::shared_ptr<QTemporaryFile> m_file;
+};
+
+QStringList splitLines(const QByteArray& bytes)
+{
+    QByteArrayView text = bytes;
+    if (text.startsWith("\xEF\xBB\xBF"))
+        text = text.sliced(3);
+    QStringList lines;
+    for (qsizetype start = 0; start <= text.size();) {
+        qsizetype end = text.indexOf('\n', start);
+        if (end < 0)
+            end = text.size();
+        QByteArrayView l = text.sliced(start, end - start);
+        if (l.endsWith('\r'))
+            l.chop(1);
+        lines << QString::fromUtf8(l);
+        start = end + 1;
+    }
+    if (!lines.isEmpty() && lines.last().isEmpty() && text.endsWith('\n'))
+        lines.removeLast();
+    return lines;
+}
+
+} // namespace
+
+bool ProgramExpansion::usesLanguage(QByteArrayView text)
+{
+    qsizetype start = 0;
+    while (start < text.size()) {
+        qsizetype end = text.indexOf('\n', start);
+        if (end < 0)
+            end = text.size();
+        if (lineUsesLanguage(text.sliced(start, end - start)))
+            return true;
+        start = end + 1;
+    }
+    return false;
+}
+
+std::optional<bool> ProgramExpansion::usesLanguage(const ProgramSource& source, QString* error)
+{
+    ProgramSourceReader reader(source);
+    if (!reader.open(error))
+        return std::nullopt;
+    constexpr qint64 kChunk = 1024 * 1024;
+    QByteArray carry;
+    for (qint64 offset = 0;;) {
+        QString why;
+        const QByteArray bytes = reader.read(offset, kChunk, &why);
+        if (!why.isEmpty()) {
+            *error = why;
+            return std::nullopt;
+        }
+        if (bytes.isEmpty())
+            return lineUsesLanguage(carry);
+        offset += bytes.size();
+        const qsizetype lastNewline = bytes.lastIndexOf('\n');
+        if (lastNewline < 0) {
+            carry += bytes;
+            if (carry.size() > 64 * 1024) // a line this long is the parser's error
+                carry = carry.right(4096);
+            continue;
+        }
+        if (lineUsesLanguage(carry + bytes.left(bytes.indexOf('\n'))) ||
+            usesLanguage(QByteArrayView(bytes).sliced(0, lastNewline)))
+            return true;
+        carry = bytes.mid(lastNewline + 1);
+    }
+}
+
+std::optional<ProgramExpansion::Result>
+ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
+                         QList<ProgramError>* errors, int maxErrors,
+                         const std::function<bool()>& keepGoing)
+{
+    QString why;
+    ProgramSourceReader reader(source);
+    if (!reader.open(&why)) {
+        *errors = {ProgramError{0, 0, why}};
+        return std::nullopt;
+    }
+    if (reader.size() > kMaxSourceBytes) {
+        *errors = {ProgramError{
+            0, 0,
+            tr("a program with parameters or O words is read into memory whole: at most %1 MB, "
+               "this one has %2 MB")
+                .arg(kMaxSourceBytes / (1024 * 1024))
+                .arg(double(reader.size()) / (1024 * 1024), 0, 'f', 1)}};
+        return std::nullopt;
+    }
+    const QByteArray bytes = reader.read(0, reader.size(), &why);
+    if (!why.isEmpty()) {
+        *errors = {ProgramError{0, 0, why}};
+        return std::nullopt;
+    }
+    const QStringList lines = splitLines(bytes);
+    auto map = std::make_shared<NgcLineMap>();
+    ExpandedWriter writer;
+    int given = 0;
+    NgcInterpreter interpreter(lines, context, [&](const QString& text, int sourceLine) {
+        map->add(++given, sourceLine);
+        return writer.append(text);
+    });
+    interpreter.setKeepGoing(keepGoing);
+    if (!interpreter.run(errors, maxErrors))
+        return std::nullopt;
+    std::optional<ProgramSource> text = writer.finish(&why);
+    if (!text) {
+        *errors = {ProgramError{0, 0, tr("the worked-out program cannot be kept: %1").arg(why)}};
+        return std::nullopt;
+    }
+    auto info = std::make_shared<ProgramExpansionInfo>();
+    info->lines = map;
+    info->sourceLines = int(lines.size());
+    info->coordinateSystems = context.coordinateSystems;
+    info->activeSystem = context.activeSystem;
+    qCDebug(lcProgram) << "worked out" << lines.size() << "lines into" << given << "lines,"
+                       << map->runs() << "runs";
+    return Result{*text, info};
+}
+
+} // namespace stepdeck::program
