@@ -22,6 +22,7 @@ private Q_SLOTS:
     void spindle_maxRpm_roundTripAndOldFilesUnchanged();
     void spindle_maxRpmWithoutASpindleController_refused();
     void crossControllerFeed_roundTripAndOldFilesUnchanged();
+    void subroutineFolder_resolvedAgainstTheFileAndWrittenAsItStands();
 };
 
 // Issue 32: a version 1 bus object {"X": 1} reads as the same axes and addresses and is
@@ -218,6 +219,33 @@ void TestMachineFileFormat::crossControllerFeed_roundTripAndOldFilesUnchanged()
     QVERIFY(old->crossControllerFeed);
     QVERIFY(!(*old == *strict));
     QVERIFY(!old->toJson().contains("crossControllerFeed"));
+}
+
+// Issue 33: "subroutineFolder" is read as written, resolved against the machine file's folder,
+// written back as written; a file without it has none.
+void TestMachineFileFormat::subroutineFolder_resolvedAgainstTheFileAndWrittenAsItStands()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("machine.json");
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(withEdit("subroutineFolder", "subs"));
+    file.close();
+    MachineFileError error;
+    const std::optional<MachineDescription> d = MachineFile::load(path, &error);
+    QVERIFY2(d, qPrintable(error.text()));
+    QCOMPARE(d->subroutineFolder, QStringLiteral("subs"));
+    QCOMPARE(d->subroutineFolderPath, QDir(dir.path()).filePath("subs"));
+    QCOMPARE(d->toJson().value("subroutineFolder"), QJsonValue("subs"));
+    const std::optional<MachineDescription> old =
+        MachineFile::parse(bytes(tableAndRotary()), &error);
+    QVERIFY2(old, qPrintable(error.text()));
+    QVERIFY(old->subroutineFolderPath.isEmpty());
+    QVERIFY(!old->toJson().contains("subroutineFolder"));
+    QVERIFY(!(*old == *d));
+    QVERIFY(!MachineFile::parse(withEdit("subroutineFolder", 3), &error));
+    QCOMPARE(error.field, QStringLiteral("subroutineFolder"));
 }
 
 void TestMachineFileFormat::spindle_maxRpmWithoutASpindleController_refused()
