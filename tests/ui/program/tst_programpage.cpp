@@ -26,6 +26,7 @@ private Q_SLOTS:
     void connection_keepsTheControllersUnitsLimitsAndReferencing();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
     void run_afterZeroXY_programInWorkCoordinatesAtTheBoard();
+    void linuxcncLanguage_errorsAtFileLines_runMovesTheDevice();
 };
 
 void TestProgramPage::check_errorInProgram_markedAtItsLine()
@@ -283,6 +284,31 @@ void TestProgramPage::run_afterZeroXY_programInWorkCoordinatesAtTheBoard()
     setProgram(QStringLiteral("G90 G0 X-2.5\nM2\n"));
     QVERIFY2(page()->checkText().contains(QStringLiteral("in machine coordinates")),
              qPrintable(page()->checkText()));
+}
+
+// Issue 33: a program with parameters and an O-word loop is checked with its errors at the
+// file's lines, previewed with the file's line count, and run: the board moved each pass.
+void TestProgramPage::linuxcncLanguage_errorsAtFileLines_runMovesTheDevice()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\no1 repeat [2]\n  G0 X[1/#5]\no1 endrepeat\nM2\n"));
+    QTRY_COMPARE(page()->editor()->errorLines(), QList<int>{3});
+    QVERIFY2(page()->editor()->errorAt(3).contains(QStringLiteral("division by zero")),
+             qPrintable(page()->editor()->errorAt(3)));
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+
+    const qint64 x0 = m_rig.elab->position(Axis::X);
+    setProgram(QStringLiteral("G91\n#<d>=0.25\no1 repeat [2]\n  G0 X#<d>\n  #<d>=[#<d>*2]\n"
+                              "o1 endrepeat\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    QVERIFY2(page()->editor()->errorLines().isEmpty(), qPrintable(page()->checkText()));
+    const QString figures = page()->preview()->figuresText();
+    QVERIFY2(figures.contains(QStringLiteral("7 line")), qPrintable(figures));
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    // 0.25 mm then 0.5 mm at 400 steps/mm.
+    QCOMPARE(m_rig.elab->position(Axis::X) - x0, 300);
+    QVERIFY(m_rig.elab->still());
 }
 
 int main(int argc, char** argv)
