@@ -1,4 +1,5 @@
 #include "NgcExpression.h"
+#include <QHash>
 #include <QVarLengthArray>
 #include <cmath>
 
@@ -242,38 +243,36 @@ bool NgcExpression::failed(int column, const QString& message)
     return false;
 }
 
+// AND OR XOR and the comparisons: 1 or 0 (LinuxCNC).
+double NgcExpression::logical(int op, double l, double r)
+{
+    switch (op) {
+    case And:
+        return (l == 0.0 || r == 0.0) ? 0.0 : 1.0;
+    case Or:
+        return (l != 0.0 || r != 0.0) ? 1.0 : 0.0;
+    case Xor:
+        return ((l == 0.0) != (r == 0.0)) ? 1.0 : 0.0;
+    case Eq:
+        return std::fabs(l - r) < kEqualTolerance ? 1.0 : 0.0;
+    case Ne:
+        return std::fabs(l - r) >= kEqualTolerance ? 1.0 : 0.0;
+    case Gt:
+        return l > r ? 1.0 : 0.0;
+    case Ge:
+        return l >= r ? 1.0 : 0.0;
+    case Lt:
+        return l < r ? 1.0 : 0.0;
+    default:
+        return l <= r ? 1.0 : 0.0; // Le
+    }
+}
+
 bool NgcExpression::apply(int op, double* left, double right, int column)
 {
     const double l = *left;
     double r = 0;
     switch (op) {
-    case And:
-        r = (l == 0.0 || right == 0.0) ? 0.0 : 1.0;
-        break;
-    case Or:
-        r = (l != 0.0 || right != 0.0) ? 1.0 : 0.0;
-        break;
-    case Xor:
-        r = ((l == 0.0) != (right == 0.0)) ? 1.0 : 0.0;
-        break;
-    case Eq:
-        r = std::fabs(l - right) < kEqualTolerance ? 1.0 : 0.0;
-        break;
-    case Ne:
-        r = std::fabs(l - right) >= kEqualTolerance ? 1.0 : 0.0;
-        break;
-    case Gt:
-        r = l > right ? 1.0 : 0.0;
-        break;
-    case Ge:
-        r = l >= right ? 1.0 : 0.0;
-        break;
-    case Lt:
-        r = l < right ? 1.0 : 0.0;
-        break;
-    case Le:
-        r = l <= right ? 1.0 : 0.0;
-        break;
     case Plus:
         r = l + right;
         break;
@@ -301,6 +300,9 @@ bool NgcExpression::apply(int op, double* left, double right, int column)
             return failed(column, tr("a negative number to a fractional power"));
         r = std::pow(l, right);
         break;
+    default:
+        r = logical(op, l, right);
+        break;
     }
     if (!std::isfinite(r))
         return failed(column, tr("the result is not a finite number"));
@@ -313,33 +315,12 @@ std::optional<double> NgcExpression::function(const QString& name, int column, i
     skipSpaces();
     if (peek() != QLatin1Char('['))
         return fail(column, tr("\"%1\" is not a value: a number, #, [ or a function").arg(name));
-    if (name == QLatin1String("exists")) {
-        const int open = this->column();
-        ++m_pos;
-        skipSpaces();
-        if (peek() != QLatin1Char('#'))
-            return fail(this->column(), tr("EXISTS takes a named parameter: EXISTS[#<name>]"));
-        ++m_pos;
-        skipSpaces();
-        const QString n = readName(&m_pos);
-        if (n.isEmpty())
-            return std::nullopt;
-        skipSpaces();
-        if (peek() != QLatin1Char(']'))
-            return fail(atEnd() ? open : this->column(), tr("\"[\" is not closed by \"]\""));
-        ++m_pos;
-        return m_parameters.exists(n) ? 1.0 : 0.0;
-    }
-    const std::optional<double> a = bracketed(depth);
-    if (!a)
+    if (name == QLatin1String("exists"))
+        return exists();
+    const std::optional<double> x = bracketed(depth);
+    if (!x)
         return std::nullopt;
-    const double x = *a;
-    auto domain = [&](bool ok, const QString& why) -> bool {
-        if (!ok)
-            fail(column, tr("%1[%2]: %3").arg(name.toUpper()).arg(x).arg(why));
-        return ok;
-    };
-    double r = 0;
+    std::optional<double> r;
     if (name == QLatin1String("atan")) {
         skipSpaces();
         if (peek() != QLatin1Char('/'))
@@ -351,45 +332,67 @@ std::optional<double> NgcExpression::function(const QString& name, int column, i
         const std::optional<double> b = bracketed(depth);
         if (!b)
             return std::nullopt;
-        r = std::atan2(x, *b) / kDegree;
-    } else if (name == QLatin1String("abs")) {
-        r = std::fabs(x);
-    } else if (name == QLatin1String("acos")) {
-        if (!domain(x >= -1.0 && x <= 1.0, tr("outside -1..1")))
-            return std::nullopt;
-        r = std::acos(x) / kDegree;
-    } else if (name == QLatin1String("asin")) {
-        if (!domain(x >= -1.0 && x <= 1.0, tr("outside -1..1")))
-            return std::nullopt;
-        r = std::asin(x) / kDegree;
-    } else if (name == QLatin1String("cos")) {
-        r = std::cos(x * kDegree);
-    } else if (name == QLatin1String("sin")) {
-        r = std::sin(x * kDegree);
-    } else if (name == QLatin1String("tan")) {
-        r = std::tan(x * kDegree);
-    } else if (name == QLatin1String("exp")) {
-        r = std::exp(x);
-    } else if (name == QLatin1String("ln")) {
-        if (!domain(x > 0.0, tr("needs a value above 0")))
-            return std::nullopt;
-        r = std::log(x);
-    } else if (name == QLatin1String("sqrt")) {
-        if (!domain(x >= 0.0, tr("needs a value of 0 or more")))
-            return std::nullopt;
-        r = std::sqrt(x);
-    } else if (name == QLatin1String("fix")) {
-        r = std::floor(x);
-    } else if (name == QLatin1String("fup")) {
-        r = std::ceil(x);
-    } else if (name == QLatin1String("round")) {
-        r = std::trunc(x + (x < 0.0 ? -0.5 : 0.5)); // LinuxCNC: half away from zero
+        r = std::atan2(*x, *b) / kDegree;
     } else {
-        return fail(column, tr("unknown function \"%1\"").arg(name.toUpper()));
+        r = unary(name, *x, column);
     }
-    if (!std::isfinite(r))
+    if (r && !std::isfinite(*r))
         return fail(column, tr("%1: the result is not a finite number").arg(name.toUpper()));
     return r;
+}
+
+// "EXISTS[#<name>]", at its "[".
+std::optional<double> NgcExpression::exists()
+{
+    const int open = column();
+    ++m_pos;
+    skipSpaces();
+    if (peek() != QLatin1Char('#'))
+        return fail(column(), tr("EXISTS takes a named parameter: EXISTS[#<name>]"));
+    ++m_pos;
+    skipSpaces();
+    const QString n = readName(&m_pos);
+    if (n.isEmpty())
+        return std::nullopt;
+    skipSpaces();
+    if (peek() != QLatin1Char(']'))
+        return fail(atEnd() ? open : column(), tr("\"[\" is not closed by \"]\""));
+    ++m_pos;
+    return m_parameters.exists(n) ? 1.0 : 0.0;
+}
+
+// LinuxCNC's unary functions; angles in degrees.
+std::optional<double> NgcExpression::unary(const QString& name, double x, int column)
+{
+    using Function = double (*)(double);
+    static const QHash<QString, Function> functions{
+        {QStringLiteral("abs"), [](double v) { return std::fabs(v); }},
+        {QStringLiteral("acos"), [](double v) { return std::acos(v) / kDegree; }},
+        {QStringLiteral("asin"), [](double v) { return std::asin(v) / kDegree; }},
+        {QStringLiteral("cos"), [](double v) { return std::cos(v * kDegree); }},
+        {QStringLiteral("sin"), [](double v) { return std::sin(v * kDegree); }},
+        {QStringLiteral("tan"), [](double v) { return std::tan(v * kDegree); }},
+        {QStringLiteral("exp"), [](double v) { return std::exp(v); }},
+        {QStringLiteral("ln"), [](double v) { return std::log(v); }},
+        {QStringLiteral("sqrt"), [](double v) { return std::sqrt(v); }},
+        {QStringLiteral("fix"), [](double v) { return std::floor(v); }},
+        {QStringLiteral("fup"), [](double v) { return std::ceil(v); }},
+        // LinuxCNC: half away from zero.
+        {QStringLiteral("round"), [](double v) { return std::trunc(v + (v < 0.0 ? -0.5 : 0.5)); }},
+    };
+    const Function f = functions.value(name);
+    if (!f)
+        return fail(column, tr("unknown function \"%1\"").arg(name.toUpper()));
+    QString why;
+    if ((name == QLatin1String("acos") || name == QLatin1String("asin")) && (x < -1.0 || x > 1.0))
+        why = tr("outside -1..1");
+    else if (name == QLatin1String("ln") && x <= 0.0)
+        why = tr("needs a value above 0");
+    else if (name == QLatin1String("sqrt") && x < 0.0)
+        why = tr("needs a value of 0 or more");
+    if (!why.isEmpty())
+        return fail(column, tr("%1[%2]: %3").arg(name.toUpper()).arg(x).arg(why));
+    return f(x);
 }
 
 QString NgcExpression::readName(qsizetype* pos)

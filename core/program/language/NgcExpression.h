@@ -56,6 +56,9 @@ private:
     std::optional<double> bracketed(int depth); // "[expr]"
     std::optional<double> binary(int depth);    // up to the closing ']'
     std::optional<double> function(const QString& name, int column, int depth);
+    std::optional<double> exists();
+    std::optional<double> unary(const QString& name, double x, int column);
+    static double logical(int op, double l, double r);
     std::optional<double> parameter(int depth);
     std::optional<double> number();
     bool apply(int op, double* left, double right, int column);

@@ -231,74 +231,46 @@ bool NgcInterpreter::branch(int line)
     }
 }
 
+bool NgcInterpreter::pass(const NgcStatement& s, int loop)
+{
+    if (++m_frames.last().passes[loop] <= kMaxPasses)
+        return true;
+    return fail(s.column, tr("%1 (line %2) has run %3 passes: a runaway loop? (the check stops a "
+                             "loop there)")
+                              .arg(m_file->structure.statement(loop)->name())
+                              .arg(loop + 1)
+                              .arg(kMaxPasses));
+}
+
 bool NgcInterpreter::loopStatement(const NgcStatement& s)
 {
     const NgcStructure& st = m_file->structure;
     Frame& f = m_frames.last();
-    auto pass = [&](int loop) {
-        if (++f.passes[loop] <= kMaxPasses)
-            return true;
-        const NgcStatement* start = st.statement(loop);
-        return fail(s.column, tr("%1 (line %2) has run %3 passes: a runaway loop? (the check "
-                                 "stops a loop there)")
-                                  .arg(start->name())
-                                  .arg(loop + 1)
-                                  .arg(kMaxPasses));
-    };
     switch (s.kind) {
-    case NgcStatement::While: {
+    case NgcStatement::While:
+    case NgcStatement::DoWhile: {
         const std::optional<double> c = condition(s, true);
         if (!c)
             return false;
+        const int loop = s.kind == NgcStatement::While ? m_pc : st.partner(m_pc);
         if (*c == 0.0) {
-            f.passes.remove(m_pc);
-            m_pc = st.partner(m_pc) + 1;
+            f.passes.remove(loop);
+            m_pc = s.kind == NgcStatement::While ? st.partner(m_pc) + 1 : m_pc + 1;
             return true;
         }
-        if (!pass(m_pc))
-            return false;
-        ++m_pc;
-        return true;
+        if (s.kind == NgcStatement::DoWhile) {
+            m_pc = loop; // the do counts the pass
+            return true;
+        }
+        return pass(s, m_pc) && (++m_pc, true);
     }
     case NgcStatement::EndWhile:
         m_pc = st.partner(m_pc);
         return true;
     case NgcStatement::Do:
-        if (!pass(m_pc))
-            return false;
-        ++m_pc;
-        return true;
-    case NgcStatement::DoWhile: {
-        const std::optional<double> c = condition(s, true);
-        if (!c)
-            return false;
-        if (*c != 0.0) {
-            m_pc = st.partner(m_pc);
-        } else {
-            f.passes.remove(st.partner(m_pc));
-            ++m_pc;
-        }
-        return true;
-    }
-    case NgcStatement::Repeat: {
-        const std::optional<double> n = condition(s, true);
-        if (!n)
-            return false;
-        const double count = std::round(*n);
-        if (std::fabs(*n - count) >= NgcExpression::kEqualTolerance || count < 0 ||
-            count > double(kMaxPasses))
-            return fail(s.column, tr("%1 needs a whole count from 0 to %2, got %3")
-                                      .arg(s.name())
-                                      .arg(kMaxPasses)
-                                      .arg(*n));
-        if (count == 0) {
-            m_pc = st.partner(m_pc) + 1;
-            return true;
-        }
-        f.left[m_pc] = qint64(count);
-        ++m_pc;
-        return true;
-    }
+        return pass(s, m_pc) && (++m_pc, true);
+    case NgcStatement::Repeat:
+        return repeat(s);
     case NgcStatement::EndRepeat: {
         const int r = st.partner(m_pc);
         if (--f.left[r] > 0) {
@@ -312,6 +284,27 @@ bool NgcInterpreter::loopStatement(const NgcStatement& s)
     default:
         return fail(s.column, tr("internal: %1 is not a loop statement").arg(s.name()));
     }
+}
+
+bool NgcInterpreter::repeat(const NgcStatement& s)
+{
+    const std::optional<double> n = condition(s, true);
+    if (!n)
+        return false;
+    const double count = std::round(*n);
+    if (std::fabs(*n - count) >= NgcExpression::kEqualTolerance || count < 0 ||
+        count > double(kMaxPasses))
+        return fail(s.column, tr("%1 needs a whole count from 0 to %2, got %3")
+                                  .arg(s.name())
+                                  .arg(kMaxPasses)
+                                  .arg(*n));
+    if (count == 0) {
+        m_pc = m_file->structure.partner(m_pc) + 1;
+        return true;
+    }
+    m_frames.last().left[m_pc] = qint64(count);
+    ++m_pc;
+    return true;
 }
 
 bool NgcInterpreter::jumpOut(const NgcStatement& s)

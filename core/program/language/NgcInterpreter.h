@@ -55,6 +55,8 @@ private:
     bool statement(const NgcStatement& s);
     bool branch(int line);
     bool loopStatement(const NgcStatement& s);
+    bool pass(const NgcStatement& s, int loop); // one more pass of `loop`, within the bound
+    bool repeat(const NgcStatement& s);
     bool jumpOut(const NgcStatement& s);
     bool call(const NgcStatement& s);
     bool leave(const NgcStatement& s);

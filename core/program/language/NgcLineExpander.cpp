@@ -72,72 +72,92 @@ void place(QString* out, qsizetype column, const QString& piece)
 
 } // namespace
 
-std::optional<NgcExpandedLine> NgcLineExpander::expand(QStringView line, int lineNumber,
-                                                       const NgcParameters& parameters,
-                                                       std::optional<ProgramError>* error)
+// Reads one line piece by piece into an NgcExpandedLine; each piece returns where the next
+// starts, or -1 with the error set.
+class NgcLineExpander::Reader
 {
-    NgcExpandedLine out;
-    auto fail = [&](qsizetype pos, const QString& message) -> std::optional<NgcExpandedLine> {
-        *error = ProgramError{lineNumber, int(pos) + 1, message};
-        return std::nullopt;
-    };
-    auto failed = [&](const NgcExpression& e) -> std::optional<NgcExpandedLine> {
-        *error = e.error();
-        return std::nullopt;
-    };
-    if (line.trimmed() == QLatin1String("%")) {
-        out.text = line.toString();
-        out.keep = true;
-        return out;
+public:
+    Reader(QStringView line, int lineNumber, const NgcParameters& parameters,
+           std::optional<ProgramError>* error)
+        : m_line(line), m_lineNumber(lineNumber), m_parameters(parameters), m_error(error)
+    {}
+
+    bool run(NgcExpandedLine* out)
+    {
+        m_out = out;
+        for (qsizetype pos = skipSpaces(m_line, 0); pos >= 0 && pos < m_line.size();) {
+            const QChar c = m_line.at(pos);
+            if (c == QLatin1Char(';')) {
+                place(&out->text, pos, m_line.mid(pos).toString());
+                out->keep = true;
+                break;
+            }
+            pos = c == QLatin1Char('(')   ? comment(pos)
+                  : c == QLatin1Char('#') ? assignment(pos)
+                                          : word(pos);
+            if (pos >= 0)
+                pos = skipSpaces(m_line, pos);
+        }
+        return !*m_error;
     }
-    qsizetype pos = 0;
-    for (;;) {
-        pos = skipSpaces(line, pos);
-        if (pos >= line.size())
-            break;
-        const QChar c = line.at(pos);
-        if (c == QLatin1Char(';')) {
-            place(&out.text, pos, line.mid(pos).toString());
-            out.keep = true;
-            break;
-        }
-        if (c == QLatin1Char('(')) {
-            const qsizetype close = line.indexOf(QLatin1Char(')'), pos);
-            if (close < 0)
-                return fail(pos, tr("the comment is not closed: \")\" is missing"));
-            const QStringView body = line.mid(pos + 1, close - pos - 1);
-            const QStringView t = body.trimmed();
-            const bool debug = t.startsWith(QLatin1String("debug,"), Qt::CaseInsensitive);
-            const bool print = t.startsWith(QLatin1String("print,"), Qt::CaseInsensitive);
-            place(&out.text, pos,
-                  debug || print
-                      ? QStringLiteral("(MSG, %1)").arg(substitute(t.mid(6).trimmed(), parameters))
-                      : line.mid(pos, close - pos + 1).toString());
-            out.keep = true;
-            pos = close + 1;
-            continue;
-        }
-        NgcExpression e(line, parameters);
-        e.setLineNumber(lineNumber);
-        if (c == QLatin1Char('#')) {
-            qsizetype p = pos + 1;
-            const std::optional<NgcExpression::Reference> target = e.readReference(&p);
-            if (!target)
-                return failed(e);
-            p = skipSpaces(line, p);
-            if (p >= line.size() || line.at(p) != QLatin1Char('='))
-                return fail(p, tr("\"=\" is missing: a parameter is set with #…=value"));
-            ++p;
-            const std::optional<double> v = e.readValue(&p);
-            if (!v)
-                return failed(e);
-            out.assignments << NgcExpandedLine::Assignment{*target, *v};
-            pos = p;
-            continue;
-        }
+
+private:
+    qsizetype fail(qsizetype pos, const QString& message)
+    {
+        *m_error = ProgramError{m_lineNumber, int(pos) + 1, message};
+        return -1;
+    }
+    qsizetype failed(const NgcExpression& e)
+    {
+        *m_error = e.error();
+        return -1;
+    }
+
+    // "( … )": kept; (DEBUG, …) and (PRINT, …) become (MSG, …) with the values (LinuxCNC).
+    qsizetype comment(qsizetype pos)
+    {
+        const qsizetype close = m_line.indexOf(QLatin1Char(')'), pos);
+        if (close < 0)
+            return fail(pos, tr("the comment is not closed: \")\" is missing"));
+        const QStringView t = m_line.mid(pos + 1, close - pos - 1).trimmed();
+        const bool debug = t.startsWith(QLatin1String("debug,"), Qt::CaseInsensitive);
+        const bool print = t.startsWith(QLatin1String("print,"), Qt::CaseInsensitive);
+        place(&m_out->text, pos,
+              debug || print
+                  ? QStringLiteral("(MSG, %1)").arg(substitute(t.mid(6).trimmed(), m_parameters))
+                  : m_line.mid(pos, close - pos + 1).toString());
+        m_out->keep = true;
+        return close + 1;
+    }
+
+    // "#<ref> = value": applied after the line (the caller).
+    qsizetype assignment(qsizetype pos)
+    {
+        NgcExpression e(m_line, m_parameters);
+        e.setLineNumber(m_lineNumber);
+        qsizetype p = pos + 1;
+        const std::optional<NgcExpression::Reference> target = e.readReference(&p);
+        if (!target)
+            return failed(e);
+        p = skipSpaces(m_line, p);
+        if (p >= m_line.size() || m_line.at(p) != QLatin1Char('='))
+            return fail(p, tr("\"=\" is missing: a parameter is set with #…=value"));
+        ++p;
+        const std::optional<double> v = e.readValue(&p);
+        if (!v)
+            return failed(e);
+        m_out->assignments << NgcExpandedLine::Assignment{*target, *v};
+        return p;
+    }
+
+    qsizetype word(qsizetype pos)
+    {
+        const QChar c = m_line.at(pos);
         if (!(c.unicode() < 128 && c.isLetter()))
             return fail(pos, tr("unexpected character \"%1\"").arg(c));
         const QChar letter = c.toUpper();
+        NgcExpression e(m_line, m_parameters);
+        e.setLineNumber(m_lineNumber);
         qsizetype p = pos + 1;
         const std::optional<double> v = e.readValue(&p);
         if (!v)
@@ -152,11 +172,32 @@ std::optional<NgcExpandedLine> NgcLineExpander::expand(QStringView line, int lin
                                 "subprogram as O<name> sub … endsub and call it with O<name> "
                                 "call")
                                  .arg(format(*v)));
-        place(&out.text, pos, QString(letter) + format(*v));
-        out.words.push_back(NgcExpandedLine::Word{letter, *v});
-        out.keep = true;
-        pos = p;
+        place(&m_out->text, pos, QString(letter) + format(*v));
+        m_out->words.push_back(NgcExpandedLine::Word{letter, *v});
+        m_out->keep = true;
+        return p;
     }
+
+    QStringView m_line;
+    int m_lineNumber;
+    const NgcParameters& m_parameters;
+    std::optional<ProgramError>* m_error;
+    NgcExpandedLine* m_out = nullptr;
+};
+
+std::optional<NgcExpandedLine> NgcLineExpander::expand(QStringView line, int lineNumber,
+                                                       const NgcParameters& parameters,
+                                                       std::optional<ProgramError>* error)
+{
+    NgcExpandedLine out;
+    if (line.trimmed() == QLatin1String("%")) {
+        out.text = line.toString();
+        out.keep = true;
+        return out;
+    }
+    error->reset();
+    if (!Reader(line, lineNumber, parameters, error).run(&out))
+        return std::nullopt;
     return out;
 }
 

@@ -44,6 +44,9 @@ public:
     static QString format(double value);
     // "#1", "#<name>" in a DEBUG/PRINT text replaced by their values (LinuxCNC).
     static QString substitute(QStringView text, const NgcParameters& parameters);
+
+private:
+    class Reader;
 };
 
 } // namespace stepdeck::program

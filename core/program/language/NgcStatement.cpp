@@ -136,25 +136,6 @@ struct Open
     QList<int> branches; // an if's if/elseif/else lines
 };
 
-class Scanner
-{
-public:
-    Scanner(QList<ProgramError>* errors, int maxErrors) : m_errors(errors), m_maxErrors(maxErrors)
-    {}
-    bool failed = false;
-
-    void error(int line, int column, const QString& message)
-    {
-        failed = true;
-        if (m_errors->size() < m_maxErrors)
-            *m_errors << ProgramError{line + 1, column, message};
-    }
-
-private:
-    QList<ProgramError>* m_errors;
-    int m_maxErrors;
-};
-
 bool isLoop(NgcStatement::Kind k)
 {
     return k == NgcStatement::While || k == NgcStatement::Do || k == NgcStatement::Repeat;
@@ -162,138 +143,201 @@ bool isLoop(NgcStatement::Kind k)
 
 } // namespace
 
-std::optional<NgcStructure> NgcStructure::scan(const QStringList& lines,
-                                               QList<ProgramError>* errors, int maxErrors)
+// Matches a file's O words line by line over a stack of the open ones.
+class NgcStructure::Scanner
 {
-    NgcStructure out;
-    const qsizetype firstError = errors->size();
-    Scanner scanner(errors, maxErrors);
-    QList<Open> stack;
-    auto closes = [&](const NgcStatement& s, int line,
-                      std::initializer_list<NgcStatement::Kind> kinds) {
-        if (!stack.isEmpty() && stack.last().label == s.label)
-            for (const NgcStatement::Kind k : kinds)
-                if (stack.last().kind == k)
-                    return true;
-        scanner.error(
-            line, s.column,
-            stack.isEmpty()
-                ? tr("%1 closes nothing that is open").arg(s.name())
-                : tr("%1 does not close %2 (line %3)")
-                      .arg(s.name(),
-                           NgcStatement{stack.last().kind, stack.last().label, 0, 0}.name())
-                      .arg(stack.last().line + 1));
-        return false;
-    };
-    for (int i = 0; i < lines.size(); ++i) {
+public:
+    Scanner(NgcStructure* out, QList<ProgramError>* errors, int maxErrors)
+        : m_out(*out), m_errors(errors), m_firstError(errors->size()), m_maxErrors(maxErrors)
+    {}
+
+    void line(int i, const QString& text)
+    {
         std::optional<ProgramError> broken;
-        std::optional<NgcStatement> read = NgcStatement::read(lines.at(i), i + 1, &broken);
-        if (broken) {
-            scanner.error(i, broken->column, broken->message);
-            continue;
-        }
-        if (!read)
-            continue;
-        NgcStatement s = *read;
+        std::optional<NgcStatement> read = NgcStatement::read(text, i + 1, &broken);
+        if (broken)
+            error(i, broken->column, broken->message);
+        else if (read)
+            statement(i, *read);
+    }
+
+    // false: the structure is broken (the errors in line order, as the parser lists its own).
+    bool finish()
+    {
+        for (const Open& o : std::as_const(m_stack))
+            error(o.line, 1, tr("%1 is not closed").arg(name(o)));
+        std::stable_sort(
+            m_errors->begin() + m_firstError, m_errors->end(),
+            [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
+        return !m_failed;
+    }
+
+private:
+    static QString name(const Open& o) { return NgcStatement{o.kind, o.label, 0, 0}.name(); }
+
+    void error(int line, int column, const QString& message)
+    {
+        m_failed = true;
+        if (m_errors->size() < m_maxErrors)
+            *m_errors << ProgramError{line + 1, column, message};
+    }
+
+    void statement(int i, NgcStatement s)
+    {
         switch (s.kind) {
         case NgcStatement::Sub:
-            for (const Open& o : std::as_const(stack))
-                if (o.kind == NgcStatement::Sub)
-                    scanner.error(i, s.column,
-                                  tr("%1 inside %2 sub (line %3): subroutines do "
-                                     "not nest")
-                                      .arg(s.name(), NgcStatement::labelText(o.label))
-                                      .arg(o.line + 1));
-            if (out.m_subs.contains(s.label))
-                scanner.error(i, s.column,
-                              tr("%1 is defined twice (line %2 first)")
-                                  .arg(s.name())
-                                  .arg(out.m_subs.value(s.label) + 1));
-            out.m_subs.insert(s.label, i);
-            stack << Open{s.kind, s.label, i, {}};
+            openSub(i, s);
             break;
-        case NgcStatement::If:
         case NgcStatement::While:
-            if (s.kind == NgcStatement::While && !stack.isEmpty() &&
-                stack.last().kind == NgcStatement::Do && stack.last().label == s.label) {
+            if (closesDo(i, s)) {
                 s.kind = NgcStatement::DoWhile;
-                out.m_partner.insert(stack.last().line, i);
-                out.m_partner.insert(i, stack.last().line);
-                stack.removeLast();
                 break;
             }
             [[fallthrough]];
+        case NgcStatement::If:
         case NgcStatement::Do:
         case NgcStatement::Repeat:
-            stack << Open{s.kind, s.label, i, {i}};
+            m_stack << Open{s.kind, s.label, i, {i}};
             break;
         case NgcStatement::ElseIf:
         case NgcStatement::Else:
-            if (closes(s, i, {NgcStatement::If, NgcStatement::ElseIf})) {
-                out.m_partner.insert(stack.last().branches.last(), i);
-                stack.last().branches << i;
-                stack.last().kind = s.kind;
-            }
+            branch(i, s);
             break;
         case NgcStatement::EndIf:
-            if (closes(s, i, {NgcStatement::If, NgcStatement::ElseIf, NgcStatement::Else})) {
-                out.m_partner.insert(stack.last().branches.last(), i);
-                for (const int b : std::as_const(stack.last().branches))
-                    out.m_endIf.insert(b, i);
-                stack.removeLast();
-            }
+            endIf(i, s);
             break;
         case NgcStatement::EndSub:
         case NgcStatement::EndWhile:
-        case NgcStatement::EndRepeat: {
-            const NgcStatement::Kind opens = s.kind == NgcStatement::EndSub ? NgcStatement::Sub
-                                             : s.kind == NgcStatement::EndWhile
-                                                 ? NgcStatement::While
-                                                 : NgcStatement::Repeat;
-            if (closes(s, i, {opens})) {
-                out.m_partner.insert(stack.last().line, i);
-                out.m_partner.insert(i, stack.last().line);
-                stack.removeLast();
-            }
+        case NgcStatement::EndRepeat:
+            end(i, s);
             break;
-        }
         case NgcStatement::Break:
         case NgcStatement::Continue:
-        case NgcStatement::Return: {
-            int found = -1;
-            for (qsizetype k = stack.size() - 1; k >= 0 && found < 0; --k) {
-                const Open& o = stack.at(k);
-                const bool fits =
-                    s.kind == NgcStatement::Return ? o.kind == NgcStatement::Sub : isLoop(o.kind);
-                if (fits && o.label == s.label)
-                    found = o.line;
-            }
-            if (found < 0)
-                scanner.error(
-                    i, s.column,
-                    s.kind == NgcStatement::Return
-                        ? tr("%1 is outside %2 sub").arg(s.name(), NgcStatement::labelText(s.label))
-                        : tr("%1 is outside a loop %2")
-                              .arg(s.name(), NgcStatement::labelText(s.label)));
-            out.m_loopOf.insert(i, found);
+        case NgcStatement::Return:
+            jumpOut(i, s);
             break;
-        }
         case NgcStatement::Call:
         case NgcStatement::DoWhile:
             break;
         }
-        out.m_statements.insert(i, s);
+        m_out.m_statements.insert(i, s);
     }
-    for (const Open& o : std::as_const(stack))
-        scanner.error(o.line, 1,
-                      tr("%1 is not closed").arg(NgcStatement{o.kind, o.label, 0, 0}.name()));
-    if (scanner.failed) {
-        // In line order, as the parser lists its errors.
-        std::stable_sort(
-            errors->begin() + firstError, errors->end(),
-            [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
+
+    bool closes(const NgcStatement& s, int line, std::initializer_list<NgcStatement::Kind> kinds)
+    {
+        if (!m_stack.isEmpty() && m_stack.last().label == s.label)
+            for (const NgcStatement::Kind k : kinds)
+                if (m_stack.last().kind == k)
+                    return true;
+        error(line, s.column,
+              m_stack.isEmpty() ? tr("%1 closes nothing that is open").arg(s.name())
+                                : tr("%1 does not close %2 (line %3)")
+                                      .arg(s.name(), name(m_stack.last()))
+                                      .arg(m_stack.last().line + 1));
+        return false;
+    }
+
+    void pair(int a, int b)
+    {
+        m_out.m_partner.insert(a, b);
+        m_out.m_partner.insert(b, a);
+    }
+
+    void openSub(int i, const NgcStatement& s)
+    {
+        for (const Open& o : std::as_const(m_stack))
+            if (o.kind == NgcStatement::Sub)
+                error(i, s.column,
+                      tr("%1 inside %2 sub (line %3): subroutines do not nest")
+                          .arg(s.name(), NgcStatement::labelText(o.label))
+                          .arg(o.line + 1));
+        if (m_out.m_subs.contains(s.label))
+            error(i, s.column,
+                  tr("%1 is defined twice (line %2 first)")
+                      .arg(s.name())
+                      .arg(m_out.m_subs.value(s.label) + 1));
+        m_out.m_subs.insert(s.label, i);
+        m_stack << Open{s.kind, s.label, i, {}};
+    }
+
+    // "O1 while" right after "O1 do" ... : the end of the do.
+    bool closesDo(int i, const NgcStatement& s)
+    {
+        if (m_stack.isEmpty() || m_stack.last().kind != NgcStatement::Do ||
+            m_stack.last().label != s.label)
+            return false;
+        pair(m_stack.last().line, i);
+        m_stack.removeLast();
+        return true;
+    }
+
+    void branch(int i, const NgcStatement& s)
+    {
+        if (!closes(s, i, {NgcStatement::If, NgcStatement::ElseIf}))
+            return;
+        m_out.m_partner.insert(m_stack.last().branches.last(), i);
+        m_stack.last().branches << i;
+        m_stack.last().kind = s.kind;
+    }
+
+    void endIf(int i, const NgcStatement& s)
+    {
+        if (!closes(s, i, {NgcStatement::If, NgcStatement::ElseIf, NgcStatement::Else}))
+            return;
+        m_out.m_partner.insert(m_stack.last().branches.last(), i);
+        for (const int b : std::as_const(m_stack.last().branches))
+            m_out.m_endIf.insert(b, i);
+        m_stack.removeLast();
+    }
+
+    void end(int i, const NgcStatement& s)
+    {
+        const NgcStatement::Kind opens = s.kind == NgcStatement::EndSub     ? NgcStatement::Sub
+                                         : s.kind == NgcStatement::EndWhile ? NgcStatement::While
+                                                                            : NgcStatement::Repeat;
+        if (!closes(s, i, {opens}))
+            return;
+        pair(m_stack.last().line, i);
+        m_stack.removeLast();
+    }
+
+    // break/continue: the loop of its label around it; return: its sub.
+    void jumpOut(int i, const NgcStatement& s)
+    {
+        int found = -1;
+        for (qsizetype k = m_stack.size() - 1; k >= 0 && found < 0; --k) {
+            const Open& o = m_stack.at(k);
+            const bool fits =
+                s.kind == NgcStatement::Return ? o.kind == NgcStatement::Sub : isLoop(o.kind);
+            if (fits && o.label == s.label)
+                found = o.line;
+        }
+        if (found < 0)
+            error(i, s.column,
+                  s.kind == NgcStatement::Return
+                      ? tr("%1 is outside %2 sub").arg(s.name(), NgcStatement::labelText(s.label))
+                      : tr("%1 is outside a loop %2")
+                            .arg(s.name(), NgcStatement::labelText(s.label)));
+        m_out.m_loopOf.insert(i, found);
+    }
+
+    NgcStructure& m_out;
+    QList<ProgramError>* m_errors;
+    qsizetype m_firstError;
+    int m_maxErrors;
+    bool m_failed = false;
+    QList<Open> m_stack;
+};
+
+std::optional<NgcStructure> NgcStructure::scan(const QStringList& lines,
+                                               QList<ProgramError>* errors, int maxErrors)
+{
+    NgcStructure out;
+    Scanner scanner(&out, errors, maxErrors);
+    for (int i = 0; i < lines.size(); ++i)
+        scanner.line(i, lines.at(i));
+    if (!scanner.finish())
         return std::nullopt;
-    }
     return out;
 }
 

@@ -69,6 +69,7 @@ public:
     bool usesControl() const { return !m_statements.isEmpty(); }
 
 private:
+    class Scanner;
     QHash<int, NgcStatement> m_statements;
     QHash<int, int> m_partner;
     QHash<int, int> m_endIf;
