@@ -127,6 +127,25 @@
         </message>
     </context>
     <context>
+        <name>NgcStructure</name>
+        <message>
+            <source>the O word's name is not closed by "&gt;"</source>
+            <translation>der Name des O-Worts wird nicht durch „&gt;“ geschlossen</translation>
+        </message>
+        <message>
+            <source>O needs a number or a &lt;name&gt;</source>
+            <translation>O braucht eine Nummer oder einen &lt;name&gt;</translation>
+        </message>
+        <message>
+            <source>O%1 needs a keyword: sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, break, continue, repeat or endrepeat</source>
+            <translation>O%1 braucht ein Schlüsselwort: sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, break, continue, repeat oder endrepeat</translation>
+        </message>
+        <message>
+            <source>"%1" is not an O-word keyword</source>
+            <translation>„%1“ ist kein O-Wort-Schlüsselwort</translation>
+        </message>
+    </context>
+    <context>
         <name>Parameters</name>
         <message>
             <source>steps/s</source>
@@ -3731,6 +3750,37 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program</name>
+        <message>
+            <source>%1 is not closed</source>
+            <translation>%1 ist nicht geschlossen</translation>
+        </message>
+        <message>
+            <source>%1 closes nothing that is open</source>
+            <translation>%1 schließt nichts, was offen ist</translation>
+        </message>
+        <message>
+            <source>%1 does not close %2 (line %3)</source>
+            <translation>%1 schließt nicht %2 (Zeile %3)</translation>
+        </message>
+        <message>
+            <source>%1 inside %2 sub (line %3): subroutines do not nest</source>
+            <translation>%1 innerhalb von %2 sub (Zeile %3): Unterprogramme lassen sich nicht verschachteln</translation>
+        </message>
+        <message>
+            <source>%1 is defined twice (line %2 first)</source>
+            <translation>%1 ist zweimal definiert (zuerst in Zeile %2)</translation>
+        </message>
+        <message>
+            <source>%1 is outside %2 sub</source>
+            <translation>%1 steht außerhalb von %2 sub</translation>
+        </message>
+        <message>
+            <source>%1 is outside a loop %2</source>
+            <translation>%1 steht außerhalb einer Schleife %2</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::ArcPath</name>
         <message>
             <source>%1: the position of %2 is unknown, so the arc has no start: reference the axis first (G28 %2)</source>
@@ -3827,6 +3877,262 @@
         <message>
             <source>the line has nothing to run</source>
             <translation>die Zeile enthält nichts auszuführen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::NgcExpression</name>
+        <message>
+            <source>the expression nests deeper than %1</source>
+            <translation>der Ausdruck ist tiefer als %1 verschachtelt</translation>
+        </message>
+        <message>
+            <source>a value is missing at the end of the line</source>
+            <translation>am Ende der Zeile fehlt ein Wert</translation>
+        </message>
+        <message>
+            <source>"%1" does not start a value</source>
+            <translation>mit „%1“ beginnt kein Wert</translation>
+        </message>
+        <message>
+            <source>%1 is not a finite number</source>
+            <translation>%1 ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>"[" is not closed by "]"</source>
+            <translation>„[“ wird nicht durch „]“ geschlossen</translation>
+        </message>
+        <message>
+            <source>an operator or "]" is missing before "%1"</source>
+            <translation>vor „%1“ fehlt ein Operator oder „]“</translation>
+        </message>
+        <message>
+            <source>division by zero</source>
+            <translation>Division durch null</translation>
+        </message>
+        <message>
+            <source>MOD by zero</source>
+            <translation>MOD durch null</translation>
+        </message>
+        <message>
+            <source>a negative number to a fractional power</source>
+            <translation>eine negative Zahl hoch einen gebrochenen Exponenten</translation>
+        </message>
+        <message>
+            <source>the result is not a finite number</source>
+            <translation>das Ergebnis ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>"%1" is not a value: a number, #, [ or a function</source>
+            <translation>„%1“ ist kein Wert: eine Zahl, #, [ oder eine Funktion</translation>
+        </message>
+        <message>
+            <source>EXISTS takes a named parameter: EXISTS[#&lt;name&gt;]</source>
+            <translation>EXISTS nimmt einen benannten Parameter: EXISTS[#&lt;name&gt;]</translation>
+        </message>
+        <message>
+            <source>%1[%2]: %3</source>
+            <translation>%1[%2]: %3</translation>
+        </message>
+        <message>
+            <source>ATAN takes two values: ATAN[y]/[x]</source>
+            <translation>ATAN nimmt zwei Werte: ATAN[y]/[x]</translation>
+        </message>
+        <message>
+            <source>outside -1..1</source>
+            <translation>außerhalb von -1..1</translation>
+        </message>
+        <message>
+            <source>needs a value above 0</source>
+            <translation>braucht einen Wert über 0</translation>
+        </message>
+        <message>
+            <source>needs a value of 0 or more</source>
+            <translation>braucht einen Wert von 0 oder mehr</translation>
+        </message>
+        <message>
+            <source>unknown function "%1"</source>
+            <translation>unbekannte Funktion „%1“</translation>
+        </message>
+        <message>
+            <source>%1: the result is not a finite number</source>
+            <translation>%1: das Ergebnis ist keine endliche Zahl</translation>
+        </message>
+        <message>
+            <source>a parameter name is written #&lt;name&gt;</source>
+            <translation>ein Parametername wird #&lt;name&gt; geschrieben</translation>
+        </message>
+        <message>
+            <source>the parameter name is not closed by "&gt;"</source>
+            <translation>der Parametername wird nicht durch „&gt;“ geschlossen</translation>
+        </message>
+        <message>
+            <source>the parameter name is empty</source>
+            <translation>der Parametername ist leer</translation>
+        </message>
+        <message>
+            <source>#%1 is not a parameter: parameters are whole numbers from 1</source>
+            <translation>#%1 ist kein Parameter: Parameter sind ganze Zahlen ab 1</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::NgcInterpreter</name>
+        <message>
+            <source>%1:%2:%3: %4</source>
+            <translation>%1:%2:%3: %4</translation>
+        </message>
+        <message>
+            <source>internal: no reason</source>
+            <translation>intern: kein Grund</translation>
+        </message>
+        <message>
+            <source>the subroutine's file ends before its endsub</source>
+            <translation>die Datei des Unterprogramms endet vor seinem endsub</translation>
+        </message>
+        <message>
+            <source>the program runs more than %1 lines: a runaway loop? (the check stops there)</source>
+            <translation>das Programm führt mehr als %1 Zeilen aus: eine Endlosschleife? (die Prüfung bricht dort ab)</translation>
+        </message>
+        <message>
+            <source>the program gives out more than %1 lines to run: a runaway loop? (the check stops there)</source>
+            <translation>das Programm gibt mehr als %1 auszuführende Zeilen aus: eine Endlosschleife? (die Prüfung bricht dort ab)</translation>
+        </message>
+        <message>
+            <source>the worked-out program cannot be kept (see the log)</source>
+            <translation>das ausgewertete Programm kann nicht zwischengespeichert werden (siehe Protokoll)</translation>
+        </message>
+        <message>
+            <source>#&lt;%1&gt; is LinuxCNC's, read-only</source>
+            <translation>#&lt;%1&gt; gehört LinuxCNC und ist nur lesbar</translation>
+        </message>
+        <message>
+            <source>%1 needs a value: [ … ]</source>
+            <translation>%1 braucht einen Wert: [ … ]</translation>
+        </message>
+        <message>
+            <source>%1 takes one value; "%2" follows it</source>
+            <translation>%1 nimmt einen Wert; danach folgt „%2“</translation>
+        </message>
+        <message>
+            <source>%1 (line %2) has run %3 passes: a runaway loop? (the check stops a loop there)</source>
+            <translation>%1 (Zeile %2) hat %3 Durchläufe ausgeführt: eine Endlosschleife? (die Prüfung bricht eine Schleife dort ab)</translation>
+        </message>
+        <message>
+            <source>%1 needs a whole count from 0 to %2, got %3</source>
+            <translation>%1 braucht eine ganze Anzahl von 0 bis %2, erhalten: %3</translation>
+        </message>
+        <message>
+            <source>internal: %1 is not a loop statement</source>
+            <translation>intern: %1 ist keine Schleifenanweisung</translation>
+        </message>
+        <message>
+            <source>a call takes at most %1 arguments (#1..#%1)</source>
+            <translation>ein Aufruf nimmt höchstens %1 Argumente (#1..#%1)</translation>
+        </message>
+        <message>
+            <source>%1: calls nest deeper than %2 (LinuxCNC's limit)</source>
+            <translation>%1: Aufrufe sind tiefer als %2 verschachtelt (Grenze von LinuxCNC)</translation>
+        </message>
+        <message>
+            <source>%1: the program has no %2 sub</source>
+            <translation>%1: das Programm enthält kein %2 sub</translation>
+        </message>
+        <message>
+            <source>%1: neither the program nor %2 has %3 sub</source>
+            <translation>%1: weder das Programm noch %2 enthält %3 sub</translation>
+        </message>
+        <message>
+            <source>%1 outside a call</source>
+            <translation>%1 außerhalb eines Aufrufs</translation>
+        </message>
+        <message>
+            <source>%1 is larger than %2 bytes</source>
+            <translation>%1 ist größer als %2 Bytes</translation>
+        </message>
+        <message>
+            <source>cannot read %1: %2</source>
+            <translation>%1 kann nicht gelesen werden: %2</translation>
+        </message>
+        <message>
+            <source>%1 does not define O&lt;%2&gt; sub</source>
+            <translation>%1 definiert kein O&lt;%2&gt; sub</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::NgcLineExpander</name>
+        <message>
+            <source>the comment is not closed: ")" is missing</source>
+            <translation>der Kommentar ist nicht geschlossen: „)“ fehlt</translation>
+        </message>
+        <message>
+            <source>"=" is missing: a parameter is set with #…=value</source>
+            <translation>„=“ fehlt: ein Parameter wird mit #…=Wert gesetzt</translation>
+        </message>
+        <message>
+            <source>unexpected character "%1"</source>
+            <translation>unerwartetes Zeichen „%1“</translation>
+        </message>
+        <message>
+            <source>%1%2 is beyond the values StepDeck takes (±%3)</source>
+            <translation>%1%2 liegt außerhalb der Werte, die StepDeck annimmt (±%3)</translation>
+        </message>
+        <message>
+            <source>M%1 (a Fanuc-style subprogram) is not supported: write the subprogram as O&lt;name&gt; sub … endsub and call it with O&lt;name&gt; call</source>
+            <translation>M%1 (ein Unterprogramm im Fanuc-Stil) wird nicht unterstützt: das Unterprogramm als O&lt;name&gt; sub … endsub schreiben und mit O&lt;name&gt; call aufrufen</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::NgcParameters</name>
+        <message>
+            <source>#%1 holds a probing result (G38), which StepDeck does not run</source>
+            <translation>#%1 enthält ein Antastergebnis (G38); StepDeck führt G38 nicht aus</translation>
+        </message>
+        <message>
+            <source>#%1 is LinuxCNC's stored G28/G30 position; StepDeck's G28 is the reference run and keeps none</source>
+            <translation>#%1 ist die in LinuxCNC gespeicherte G28/G30-Position; G28 ist in StepDeck die Referenzfahrt und speichert keine</translation>
+        </message>
+        <message>
+            <source>#%1 is G92's offset, which line %2 set from where the axes stand: only the run knows it</source>
+            <translation>#%1 ist der G92-Nullpunkt, den Zeile %2 aus der Position der Achsen gesetzt hat: nur der Lauf kennt ihn</translation>
+        </message>
+        <message>
+            <source>#%1: StepDeck has the coordinate systems G54..G59 (#5221..#5330)</source>
+            <translation>#%1: StepDeck hat die Koordinatensysteme G54..G59 (#5221..#5330)</translation>
+        </message>
+        <message>
+            <source>#%1 is an offset that line %2 changed (G10): only the run knows it</source>
+            <translation>#%1 ist ein Nullpunkt, den Zeile %2 geändert hat (G10): nur der Lauf kennt ihn</translation>
+        </message>
+        <message>
+            <source>#5399 holds what M66 reads at run time; StepDeck works out a program's path before the machine moves, so a path that depends on an input cannot be checked</source>
+            <translation>#5399 enthält, was M66 zur Laufzeit liest; StepDeck wertet die Bahn eines Programms aus, bevor die Maschine fährt, daher kann eine Bahn, die von einem Eingang abhängt, nicht geprüft werden</translation>
+        </message>
+        <message>
+            <source>#%1 is the loaded tool's, known only at run time</source>
+            <translation>#%1 gehört zum eingesetzten Werkzeug und ist erst zur Laufzeit bekannt</translation>
+        </message>
+        <message>
+            <source>#%1 is the current position, known only at run time</source>
+            <translation>#%1 ist die aktuelle Position und erst zur Laufzeit bekannt</translation>
+        </message>
+        <message>
+            <source>#%1 is not a parameter: numbered parameters are #1..#%2</source>
+            <translation>#%1 ist kein Parameter: nummerierte Parameter sind #1..#%2</translation>
+        </message>
+        <message>
+            <source>#&lt;%1&gt; is not set (LinuxCNC's predefined values of the machine's state are known only at run time, and StepDeck works a program out before it runs)</source>
+            <translation>#&lt;%1&gt; ist nicht gesetzt (die vordefinierten Werte von LinuxCNC zum Zustand der Maschine sind erst zur Laufzeit bekannt, und StepDeck wertet ein Programm aus, bevor es läuft)</translation>
+        </message>
+        <message>
+            <source>#&lt;%1&gt; is not set here (a name without "_" is local to its subroutine)</source>
+            <translation>#&lt;%1&gt; ist hier nicht gesetzt (ein Name ohne „_“ ist lokal in seinem Unterprogramm)</translation>
+        </message>
+        <message>
+            <source>#%1 is a coordinate system's offset, read-only here: set it with G10 L2 or at the position display</source>
+            <translation>#%1 ist der Nullpunkt eines Koordinatensystems, hier nur lesbar: mit G10 L2 oder in der Positionsanzeige setzen</translation>
+        </message>
+        <message>
+            <source>#%1 is reserved by LinuxCNC and read-only</source>
+            <translation>#%1 ist von LinuxCNC reserviert und nur lesbar</translation>
         </message>
     </context>
     <context>
@@ -3987,6 +4293,14 @@
             <source>feed moves across controllers (%1 in all, the first on line %2) follow their path only approximately: up to about %3 %4 off</source>
             <translation>Vorschubbewegungen über mehrere Steuerungen (%1 insgesamt, die erste in Zeile %2) folgen ihrer Bahn nur ungefähr: bis etwa %3 %4 daneben</translation>
         </message>
+        <message>
+            <source>run from line %1: a program with parameters or O words runs its lines in the order its control flow gives; run it from its start</source>
+            <translation>Start ab Zeile %1: ein Programm mit Parametern oder O-Worten führt seine Zeilen in der Reihenfolge seines Programmablaufs aus; von Anfang an starten</translation>
+        </message>
+        <message>
+            <source>the offsets changed since the program's parameters were worked out: check it again</source>
+            <translation>die Nullpunkte haben sich geändert, seit die Parameter des Programms ausgewertet wurden: erneut prüfen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramCoordinates</name>
@@ -3997,6 +4311,17 @@
         <message>
             <source>G92: the position of %1 is unknown: reference it first (G28 %1)</source>
             <translation>G92: Die Position von %1 ist unbekannt: zuerst referenzieren (G28 %1)</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramExpansion</name>
+        <message>
+            <source>a program with parameters or O words is read into memory whole: at most %1 MB, this one has %2 MB</source>
+            <translation>ein Programm mit Parametern oder O-Worten wird ganz in den Speicher gelesen: höchstens %1 MB, dieses hat %2 MB</translation>
+        </message>
+        <message>
+            <source>the worked-out program cannot be kept: %1</source>
+            <translation>das ausgewertete Programm kann nicht zwischengespeichert werden: %1</translation>
         </message>
     </context>
     <context>
@@ -4295,6 +4620,10 @@
         <message>
             <source>a drilling cycle cannot run in inverse time (G93), as in LinuxCNC: switch to G94 and give F before the cycle</source>
             <translation>ein Bohrzyklus kann nicht in inverser Zeit (G93) laufen, wie in LinuxCNC: vor dem Zyklus auf G94 schalten und F angeben</translation>
+        </message>
+        <message>
+            <source>%1 (a Fanuc-style subprogram) is not supported: write the subprogram as O&lt;name&gt; sub … endsub and call it with O&lt;name&gt; call</source>
+            <translation>%1 (ein Unterprogramm im Fanuc-Stil) wird nicht unterstützt: das Unterprogramm als O&lt;name&gt; sub … endsub schreiben und mit O&lt;name&gt; call aufrufen</translation>
         </message>
     </context>
     <context>
