@@ -137,15 +137,19 @@ bool ProgramParser::percentLine(const QString& text)
 
 void ProgramParser::parseLine(const QString& text)
 {
-    const LexedLine lexed = ProgramLexer::lex(text, m_state.line);
+    LexedLine lexed = ProgramLexer::lex(text, m_state.line);
+    if (m_lineMap) // a worked-out line: its words' columns in the file (issue 33)
+        for (qsizetype k = 0; k < lexed.words.size(); ++k)
+            lexed.words[k].column = m_lineMap->wordColumn(sourceLine(m_state.line), k);
     if (lexed.error) {
         error(lexed.error->line, lexed.error->column, lexed.error->message);
         return;
     }
     m_state.anyWords = m_state.anyWords || !lexed.words.isEmpty();
     if (!lexed.words.isEmpty() && m_state.endLine > 0) {
-        error(m_state.line, lexed.words.first().column,
-              tr("nothing may follow the program's end (line %1)").arg(sourceLine(m_state.endLine)));
+        error(
+            m_state.line, lexed.words.first().column,
+            tr("nothing may follow the program's end (line %1)").arg(sourceLine(m_state.endLine)));
         return;
     }
     std::optional<ProgramError> failure;

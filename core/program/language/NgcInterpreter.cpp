@@ -113,7 +113,11 @@ bool NgcInterpreter::ordinary(const QString& text)
             return fail(1, tr("the program gives out more than %1 lines to run: a runaway loop? "
                               "(the check stops there)")
                                .arg(kMaxLines));
-        if (!m_output(line->text, sourceLine()))
+        QList<int> columns;
+        if (m_file == m_files.front().get())
+            for (const NgcExpandedLine::Word& w : line->words)
+                columns << w.column;
+        if (!m_output(line->text, sourceLine(), columns))
             return fail(1, tr("the worked-out program cannot be kept (see the log)"));
     }
     for (const NgcExpandedLine::Assignment& a : line->assignments) {

@@ -35,9 +35,11 @@ public:
     static constexpr qint64 kMaxLines = 5000000;
     static constexpr qint64 kMaxSubroutineBytes = 1024 * 1024;
 
-    // text, sourceLine (1-based, of the main file; a folder subroutine's lines: its call's).
-    // false: stop (the receiver failed).
-    using Output = std::function<bool(const QString& text, int sourceLine)>;
+    // text, sourceLine (1-based, of the main file; a folder subroutine's lines: its call's) and
+    // the source columns of the text's words in their order (none for a folder subroutine's
+    // line: its words stand in another file). false: stop (the receiver failed).
+    using Output =
+        std::function<bool(const QString& text, int sourceLine, const QList<int>& columns)>;
 
     NgcInterpreter(const QStringList& lines, const NgcContext& context, Output output);
     ~NgcInterpreter();

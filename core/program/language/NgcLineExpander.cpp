@@ -173,7 +173,7 @@ private:
                                 "call")
                                  .arg(format(*v)));
         place(&m_out->text, pos, QString(letter) + format(*v));
-        m_out->words.push_back(NgcExpandedLine::Word{letter, *v});
+        m_out->words.push_back(NgcExpandedLine::Word{letter, *v, int(pos) + 1});
         m_out->keep = true;
         return p;
     }

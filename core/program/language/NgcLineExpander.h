@@ -17,6 +17,7 @@ struct NgcExpandedLine
     {
         QChar letter;
         double value = 0;
+        int column = 0; // in the source line (1-based)
     };
     QVarLengthArray<Word, 8> words;
     struct Assignment

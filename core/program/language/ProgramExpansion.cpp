@@ -18,6 +18,18 @@ void NgcLineMap::add(int expandedLine, int sourceLine)
     m_lastSource = sourceLine;
 }
 
+void NgcLineMap::setWordColumns(int sourceLine, const QList<int>& columns)
+{
+    if (!columns.isEmpty() && !m_wordColumns.contains(sourceLine))
+        m_wordColumns.insert(sourceLine, columns);
+}
+
+int NgcLineMap::wordColumn(int sourceLine, qsizetype index) const
+{
+    const auto it = m_wordColumns.constFind(sourceLine);
+    return it != m_wordColumns.cend() && index < it->size() ? it->at(index) : 1;
+}
+
 int NgcLineMap::sourceLine(int expandedLine) const
 {
     const auto it = std::upper_bound(m_runs.begin(), m_runs.end(), expandedLine,
@@ -60,8 +72,9 @@ bool lineUsesLanguage(QByteArrayView line)
         // "O1 repeat [3]" with a plain count is the parser's own (issue 20): read as it is.
         static const QRegularExpression plainCount(
             QStringLiteral("^\\s*(\\[\\s*[0-9.]+\\s*\\]|[0-9.]+)?\\s*(\\(.*|;.*)?$"));
-        if (s)
-            return !plainCount.match(QStringView(text).mid(s->rest)).hasMatch();
+        if (s) // a named label ("o<x> repeat") is the language's, not the parser's
+            return !s->label.at(0).isDigit() ||
+                   !plainCount.match(QStringView(text).mid(s->rest)).hasMatch();
     }
     for (; i < line.size(); ++i) {
         const char c = line[i];
@@ -226,10 +239,12 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
     auto map = std::make_shared<NgcLineMap>();
     ExpandedWriter writer;
     int given = 0;
-    NgcInterpreter interpreter(lines, context, [&](const QString& text, int sourceLine) {
-        map->add(++given, sourceLine);
-        return writer.append(text);
-    });
+    NgcInterpreter interpreter(lines, context,
+                               [&](const QString& text, int sourceLine, const QList<int>& columns) {
+                                   map->add(++given, sourceLine);
+                                   map->setWordColumns(sourceLine, columns);
+                                   return writer.append(text);
+                               });
     interpreter.setKeepGoing(keepGoing);
     if (!interpreter.run(errors, maxErrors))
         return std::nullopt;

@@ -2,6 +2,7 @@
 #include "NgcInterpreter.h"
 #include "program/Program.h"
 #include <QCoreApplication>
+#include <QHash>
 #include <memory>
 #include <vector>
 
@@ -16,6 +17,13 @@ public:
     void add(int expandedLine, int sourceLine);
     int sourceLine(int expandedLine) const;
     size_t runs() const { return m_runs.size(); }
+    // The source columns of a source line's words, in their order (a line gives out the same
+    // letters each time it runs; its values may be longer than what was written, so the
+    // worked-out text's columns are not the file's).
+    void setWordColumns(int sourceLine, const QList<int>& columns);
+    // The source column of word `index` of a line given out from `sourceLine`; 1 where none is
+    // known (a folder subroutine's line, named by its call).
+    int wordColumn(int sourceLine, qsizetype index) const;
 
 private:
     struct Run
@@ -26,6 +34,7 @@ private:
     std::vector<Run> m_runs;
     int m_lastExpanded = 0;
     int m_lastSource = 0;
+    QHash<int, QList<int>> m_wordColumns; // bounded by the source's size
 };
 
 // What a program in LinuxCNC's language was worked out against; a run refuses a program

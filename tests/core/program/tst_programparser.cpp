@@ -360,10 +360,14 @@ void TestProgramParser::parse_severalErrors_everyOneListedInLineOrder()
 {
     QList<ProgramError> errors;
     QVERIFY(!ProgramParser::parse("O7 repeat [2]\nG0 Q1\nG0 X1\nM99\nG1 Y1\n", kAxes, &errors));
-    QCOMPARE(texts(errors), (QStringList{"1:1: O7 repeat is not closed by O7 endrepeat",
-                                         "2:4: Q1 is not used by G0", "4:1: M99 is not supported",
-                                         "5:1: G1 needs a feed rate: F on this line or an "
-                                         "earlier one"}));
+    QCOMPARE(
+        texts(errors),
+        (QStringList{
+            "1:1: O7 repeat is not closed by O7 endrepeat", "2:4: Q1 is not used by G0",
+            "4:1: M99 (a Fanuc-style subprogram) is not supported: write the subprogram as O<name> "
+            "sub … endsub and call it with O<name> call",
+            "5:1: G1 needs a feed rate: F on this line or an "
+            "earlier one"}));
 }
 
 void TestProgramParser::parse_repeats_nestedPartners()

@@ -26,7 +26,7 @@ QString run(const QString& program, const NgcContext& context = {})
 {
     QStringList out;
     NgcInterpreter interpreter(program.split(QLatin1Char('\n')), context,
-                               [&](const QString& text, int line) {
+                               [&](const QString& text, int line, const QList<int>&) {
                                    out << QStringLiteral("%1:%2").arg(line).arg(text.simplified());
                                    return true;
                                });
@@ -200,7 +200,7 @@ void TestNgcInterpreter::run_brokenStructure_everyErrorListed()
                                            "o7 frobnicate\n"       // 9: no keyword
                                            "o3 sub\no3 endsub\n"); // 10: twice
     NgcInterpreter interpreter(program.split(QLatin1Char('\n')), {},
-                               [](const QString&, int) { return true; });
+                               [](const QString&, int, const QList<int>&) { return true; });
     QList<ProgramError> errors;
     QVERIFY(!interpreter.run(&errors, 20));
     QStringList lines;
@@ -248,7 +248,7 @@ void TestNgcInterpreter::run_outputRefuses_stops()
 {
     int given = 0;
     NgcInterpreter interpreter(QStringLiteral("G0 X1\nG0 X2\nG0 X3").split(QLatin1Char('\n')), {},
-                               [&](const QString&, int) { return ++given < 2; });
+                               [&](const QString&, int, const QList<int>&) { return ++given < 2; });
     QList<ProgramError> errors;
     QVERIFY(!interpreter.run(&errors, 10));
     QCOMPARE(given, 2);

@@ -58,6 +58,7 @@ void TestProgramExpansion::usesLanguage_text_detected_data()
     QTest::addColumn<bool>("uses");
     QTest::newRow("plain") << "G0 X1\nG1 Y2 F100" << false;
     QTest::newRow("repeat stays plain") << "O1 repeat [3]\nG0 X1\nO1 endrepeat" << false;
+    QTest::newRow("repeat with a named label") << "o<x> repeat [2]\no<x> endrepeat" << true;
     QTest::newRow("repeat by a parameter") << "O1 repeat [#1]\nO1 endrepeat" << true;
     QTest::newRow("repeat by an expression") << "O1 repeat [2*3]\nO1 endrepeat" << true;
     QTest::newRow("# in a comment") << "G0 X1 (part #3)\n; #4 here" << false;
@@ -192,6 +193,15 @@ void TestProgramExpansion::check_errorInWorkedOutLine_namesSourceLineAndColumn_d
                                                        << "2:8: ";
     QTest::newRow("expression error") << "G21\nG0 X[1/0]"
                                       << "2:7: ";
+    // A value longer than what was written moves the words after it in the worked-out text:
+    // errors still name the file's columns, once per word.
+    QTest::newRow("word after a longer value") << "#<a> = 1.23456\nG0 X#<a> Y-5"
+                                               << "2:10: Y reaches -5 mm";
+    QTest::newRow("parser error after a longer value") << "#<a> = 1.23456\nG0 X#<a> Q5"
+                                                       << "2:10: ";
+    QTest::newRow("one error per word over passes")
+        << "#1 = 1\no1 while [#1 LT 200]\nG0 X#1 Y-5\n#1 = [#1 * 10]\no1 endwhile"
+        << "3:8: Y reaches -5 mm";
 }
 
 void TestProgramExpansion::check_errorInWorkedOutLine_namesSourceLineAndColumn()
@@ -202,6 +212,7 @@ void TestProgramExpansion::check_errorInWorkedOutLine_namesSourceLineAndColumn()
     QVERIFY(!r.ok());
     QVERIFY(!r.program);
     QVERIFY2(r.errors.first().text().startsWith(error), qPrintable(r.errors.first().text()));
+    QVERIFY2(r.errors.size() == 1, qPrintable(texts(r.errors).join(QLatin1Char('\n'))));
 }
 
 void TestProgramExpansion::check_runFromLine_refused()
