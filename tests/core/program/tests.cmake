@@ -60,3 +60,15 @@ stepdeck_add_test(tst_contourmoves SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contour
 # The MDI line's program of one line and its modal state (issue 31).
 stepdeck_add_test(tst_mdisession SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_mdisession.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+# Programs in LinuxCNC's language (issue 33), our own in ngc/: checked, their preview path and
+# blocks against moves worked out in the test, and broken copies refused at the source line.
+stepdeck_add_test(tst_ngcprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_ngcprograms.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/NgcProgramsTestSupport.h
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+target_compile_definitions(tst_ngcprograms PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# The same programs run end to end on an E-LAB and an EMIS simulator, asserted at the device;
+# a copy beyond the soft limits refused before anything moved.
+stepdeck_add_test(tst_ngcrun SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_ngcrun.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/NgcProgramsTestSupport.h
+                  ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
+target_compile_definitions(tst_ngcrun PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
