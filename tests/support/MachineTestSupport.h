@@ -4,6 +4,7 @@
 // board wants before it moves, written and acknowledged.
 #include "ModelBench.h"
 #include "controller/ControllerSession.h"
+#include "machine/Machine.h"
 #include "machine/MachineDescription.h"
 #include <QSignalSpy>
 #include <QTest>
@@ -59,6 +60,30 @@ inline bool raiseElabFeedLimits(ControllerSession* table)
     }
     return writeParametersAndWait(
         table, {{QStringLiteral("start-speed"), start}, {QStringLiteral("feed-speed"), feed}});
+}
+
+// What a program run on a table of one E-LAB or EMIS controller wants first (tst_camprograms,
+// tst_ngcrun). E-LAB: the ramp setup the board needs, start speeds that allow feeds up to
+// 2000 steps/s (feed mode runs below the start speed, manual). EMIS: the work speed of
+// positioning moves, as a technician's setup writes it (the fast speed a program's G0 runs at
+// and G1's F replaces). Then a reference run of every axis.
+inline bool prepareTableForPrograms(machine::Machine* machine, const QString& controller)
+{
+    ControllerSession* table = machine->session(controller);
+    if (table->model()->id == QLatin1String("elab")) {
+        if (!writeSetupBeforeMotion(table) || !raiseElabFeedLimits(table))
+            return false;
+    } else {
+        ParameterValue work;
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+            work.perAxis.insert(a, 4000);
+        if (!writeParametersAndWait(table, {{QStringLiteral("work-speed"), work}}))
+            return false;
+    }
+    QSignalSpy referenced(machine, &machine::Machine::referenceFinished);
+    QString refusal;
+    return machine->reference({}, &refusal) != 0 && referenced.wait(60000) &&
+           referenced.first().at(1).toBool();
 }
 
 } // namespace stepdeck::test

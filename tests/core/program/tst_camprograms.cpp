@@ -112,27 +112,11 @@ void TestCamPrograms::cleanup()
     m_elab.reset();
 }
 
-// E-LAB: the ramp setup the board needs, start speeds that allow feeds up to 2000 steps/s
-// (feed mode runs below the start speed, manual). EMIS: the work speed of positioning moves, as
-// a technician's setup writes it (the fast speed a program's G0 runs at and G1's F replaces).
-// Then a reference run of every axis.
+// The setup and reference run (test::prepareTableForPrograms), then the board's count at the
+// reference.
 bool TestCamPrograms::prepare()
 {
-    ControllerSession* table = m_machine->session("table");
-    if (table->model()->id == QLatin1String("elab")) {
-        if (!test::writeSetupBeforeMotion(table) || !test::raiseElabFeedLimits(table))
-            return false;
-    } else {
-        ParameterValue work;
-        for (Axis a : {Axis::X, Axis::Y, Axis::Z})
-            work.perAxis.insert(a, 4000);
-        if (!test::writeParametersAndWait(table, {{QStringLiteral("work-speed"), work}}))
-            return false;
-    }
-    QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
-    QString refusal;
-    if (m_machine->reference({}, &refusal) == 0 || !referenced.wait(60000) ||
-        !referenced.first().at(1).toBool())
+    if (!test::prepareTableForPrograms(m_machine.get(), QStringLiteral("table")))
         return false;
     return m_elab->probe([&] {
         for (int i = 0; i < 3; ++i)
