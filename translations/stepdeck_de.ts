@@ -7732,6 +7732,10 @@ W1500</translation>
             <source>an MDI line runs</source>
             <translation>eine MDI-Zeile läuft</translation>
         </message>
+        <message>
+            <source>This program has parameters or O words: its lines run in the order its control flow gives, so it runs from its start</source>
+            <translation>Dieses Programm hat Parameter oder O-Worte: Seine Zeilen laufen in der Reihenfolge, die sein Ablauf vorgibt, daher läuft es von seinem Anfang an</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>

@@ -122,6 +122,14 @@ void ProgramControls::setUpFeedOverride()
             &ProgramControls::feedOverrideChanged);
 }
 
+void ProgramControls::setRunFromRefusal(const QString& why)
+{
+    m_runFromRefusal = why;
+    m_runFrom->setToolTip(why.isEmpty() ? tr("Run from the first block on or after this line, "
+                                             "starting where the axes stand now")
+                                        : why);
+}
+
 int ProgramControls::feedOverride() const
 {
     return m_feedOverride->value();
@@ -136,7 +144,7 @@ void ProgramControls::setState(RunState state, bool pausePending, bool canStart)
 {
     const bool ended = state == RunState::Idle || program::isEnded(state);
     m_run->setEnabled(ended && canStart);
-    m_runFrom->setEnabled(ended && canStart);
+    m_runFrom->setEnabled(ended && canStart && m_runFromRefusal.isEmpty());
     m_fromLine->setEnabled(ended);
     m_pause->setEnabled(state == RunState::Running && !pausePending);
     m_hold->setEnabled(state == RunState::Running);

@@ -26,6 +26,8 @@ public:
 
     // The runner's state; canStart: a checked program and a connected machine are there.
     void setState(program::RunState state, bool pausePending, bool canStart);
+    // Why the checked program cannot run from a line (its tooltip then); empty: it can.
+    void setRunFromRefusal(const QString& why);
     // The line running of lines in the file; secondsLeft: the estimate (nullopt: unknown).
     void setProgress(int line, int lines, std::optional<double> secondsLeft);
     void clearProgress();
@@ -70,6 +72,7 @@ private:
     QPushButton* m_abort;
     QSpinBox* m_fromLine;
     QPushButton* m_runFrom;
+    QString m_runFromRefusal;
     QCheckBox* m_optionalStops;
     QSpinBox* m_feedOverride;
     void setUpFeedOverride();

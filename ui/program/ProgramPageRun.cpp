@@ -200,6 +200,12 @@ void ProgramPage::updateControls()
     const bool connected =
         ms != machine::MachineState::Disconnected && ms != machine::MachineState::LinkLost;
     const bool pausePending = m_runner && m_runner->pausePending();
+    // Issue 33: a program in LinuxCNC's language runs its lines in its control flow's order.
+    m_controls->setRunFromRefusal(
+        m_checkOk && m_checkedProgram && m_checkedProgram->expansion
+            ? tr("This program has parameters or O words: its lines run in the order its "
+                 "control flow gives, so it runs from its start")
+            : QString());
     m_controls->setState(state, pausePending,
                          m_checkOk && connected && !isStarting() && !m_context->mdi()->isBusy());
     if (!m_runner)

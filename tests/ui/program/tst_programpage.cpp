@@ -304,6 +304,10 @@ void TestProgramPage::linuxcncLanguage_errorsAtFileLines_runMovesTheDevice()
     QVERIFY2(page()->editor()->errorLines().isEmpty(), qPrintable(page()->checkText()));
     const QString figures = page()->preview()->figuresText();
     QVERIFY2(figures.contains(QStringLiteral("7 line")), qPrintable(figures));
+    // Its lines do not run in file order: no run from a line, and the button says why.
+    QVERIFY(!page()->controls()->runFromButton()->isEnabled());
+    QVERIFY2(page()->controls()->runFromButton()->toolTip().contains(QStringLiteral("O words")),
+             qPrintable(page()->controls()->runFromButton()->toolTip()));
     page()->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
     // 0.25 mm then 0.5 mm at 400 steps/mm.
