@@ -3989,10 +3989,6 @@
             <translation>die Datei des Unterprogramms endet vor seinem endsub</translation>
         </message>
         <message>
-            <source>the program runs more than %1 lines: a runaway loop? (the check stops there)</source>
-            <translation>das Programm führt mehr als %1 Zeilen aus: eine Endlosschleife? (die Prüfung bricht dort ab)</translation>
-        </message>
-        <message>
             <source>the program gives out more than %1 lines to run: a runaway loop? (the check stops there)</source>
             <translation>das Programm gibt mehr als %1 auszuführende Zeilen aus: eine Endlosschleife? (die Prüfung bricht dort ab)</translation>
         </message>
@@ -4056,6 +4052,10 @@
             <source>%1 does not define O&lt;%2&gt; sub</source>
             <translation>%1 definiert kein O&lt;%2&gt; sub</translation>
         </message>
+        <message>
+            <source>the program runs more than %1 lines (a long line counts once per 64 characters): a runaway loop? (the check stops there)</source>
+            <translation>das Programm führt mehr als %1 Zeilen aus (eine lange Zeile zählt je 64 Zeichen einmal): eine Endlosschleife? (die Prüfung bricht dort ab)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::NgcLineExpander</name>
@@ -4078,6 +4078,10 @@
         <message>
             <source>M%1 (a Fanuc-style subprogram) is not supported: write the subprogram as O&lt;name&gt; sub … endsub and call it with O&lt;name&gt; call</source>
             <translation>M%1 (ein Unterprogramm im Fanuc-Stil) wird nicht unterstützt: das Unterprogramm als O&lt;name&gt; sub … endsub schreiben und mit O&lt;name&gt; call aufrufen</translation>
+        </message>
+        <message>
+            <source>an O word stands first on its line (after an N number at most)</source>
+            <translation>ein O-Wort steht als erstes in seiner Zeile (höchstens nach einer N-Nummer)</translation>
         </message>
     </context>
     <context>

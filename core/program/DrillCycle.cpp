@@ -134,7 +134,10 @@ void DrillCycle::drill(const CycleWords& c, double r, double bottom, double peck
     }
     double depth = r;
     while (depth > bottom) {
-        const double next = std::max(bottom, depth - peck);
+        double next = std::max(bottom, depth - peck);
+        if (next >= depth) // Q below the resolution of a double at this depth (R far beyond any
+            next = bottom; // soft limit): one feed to the bottom instead of a peck that never ends
+
         if (c.code == 83 && depth < r && depth + clearance < r)
             moveTo(Kind::Rapid, {{z, depth + clearance}}); // back down, short of the chips
         moveTo(Kind::Feed, {{z, next}});

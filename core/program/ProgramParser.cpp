@@ -264,12 +264,12 @@ std::optional<Program> ProgramParser::finish(QList<ProgramError>* errors)
     if (m_state.percentOpen > 0 && !m_state.percentClosed && m_state.endLine == 0)
         error(m_state.line, 1,
               tr("the program opened with \"%\" (line %1) ends with neither \"%\" nor M2/M30")
-                  .arg(m_state.percentOpen));
+                  .arg(sourceLine(m_state.percentOpen)));
     std::stable_sort(m_errors.begin(), m_errors.end(),
                      [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
     if (m_tooManyErrors)
         m_errors << ProgramError{
-            m_state.line, 1,
+            sourceLine(m_state.line), 1,
             tr("more errors follow; only the first %1 are listed").arg(kMaxErrors)};
     if (errors)
         *errors = m_errors;

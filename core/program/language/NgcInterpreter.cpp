@@ -75,15 +75,20 @@ bool NgcInterpreter::run(QList<ProgramError>* errors, int maxErrors)
             fail(1, tr("the subroutine's file ends before its endsub"));
             break;
         }
-        if (++m_steps > kMaxSteps) {
-            fail(1, tr("the program runs more than %1 lines: a runaway loop? (the check stops "
-                       "there)")
-                        .arg(kMaxSteps));
+        // A long line counts once per 64 characters: the bound is on the work, not the lines.
+        m_steps += 1 + m_file->lines.at(m_pc).size() / 64;
+        if (m_steps > m_context.limits.steps) {
+            fail(1, tr("the program runs more than %1 lines (a long line counts once per 64 "
+                       "characters): a runaway loop? (the check stops there)")
+                        .arg(m_context.limits.steps));
             break;
         }
-        if (m_keepGoing && m_steps % 4096 == 0 && !m_keepGoing()) {
-            m_cancelled = true;
-            return false;
+        if (m_keepGoing && ++m_sinceAsked >= 4096) {
+            m_sinceAsked = 0;
+            if (!m_keepGoing()) {
+                m_cancelled = true;
+                return false;
+            }
         }
         step();
     }
@@ -109,10 +114,10 @@ bool NgcInterpreter::ordinary(const QString& text)
     if (!line)
         return failAt(error);
     if (line->keep) {
-        if (++m_lines > kMaxLines)
+        if (++m_lines > m_context.limits.lines)
             return fail(1, tr("the program gives out more than %1 lines to run: a runaway loop? "
                               "(the check stops there)")
-                               .arg(kMaxLines));
+                               .arg(m_context.limits.lines));
         QList<int> columns;
         if (m_file == m_files.front().get())
             for (const NgcExpandedLine::Word& w : line->words)
@@ -237,13 +242,13 @@ bool NgcInterpreter::branch(int line)
 
 bool NgcInterpreter::pass(const NgcStatement& s, int loop)
 {
-    if (++m_frames.last().passes[loop] <= kMaxPasses)
+    if (++m_frames.last().passes[loop] <= m_context.limits.passes)
         return true;
     return fail(s.column, tr("%1 (line %2) has run %3 passes: a runaway loop? (the check stops a "
                              "loop there)")
                               .arg(m_file->structure.statement(loop)->name())
                               .arg(loop + 1)
-                              .arg(kMaxPasses));
+                              .arg(m_context.limits.passes));
 }
 
 bool NgcInterpreter::loopStatement(const NgcStatement& s)
@@ -297,10 +302,10 @@ bool NgcInterpreter::repeat(const NgcStatement& s)
         return false;
     const double count = std::round(*n);
     if (std::fabs(*n - count) >= NgcExpression::kEqualTolerance || count < 0 ||
-        count > double(kMaxPasses))
+        count > double(m_context.limits.passes))
         return fail(s.column, tr("%1 needs a whole count from 0 to %2, got %3")
                                   .arg(s.name())
-                                  .arg(kMaxPasses)
+                                  .arg(m_context.limits.passes)
                                   .arg(*n));
     if (count == 0) {
         m_pc = m_file->structure.partner(m_pc) + 1;

@@ -8,9 +8,19 @@
 
 namespace stepdeck::program {
 
+// The bounds of working a program out (NgcInterpreter): a loop's passes each time it is
+// entered, the lines run and the lines given out. Lower ones serve tests and the fuzz target.
+struct NgcLimits
+{
+    qint64 passes = 1000000;
+    qint64 steps = 20000000; // a long line counts once per 64 characters
+    qint64 lines = 5000000;
+};
+
 // What a program in LinuxCNC's language is worked out against (ProgramExpansion).
 struct NgcContext
 {
+    NgcLimits limits;
     CoordinateSystems coordinateSystems; // #5221.. (MachineFacts)
     int activeSystem = 0;                // #5220 - 1
     // LinuxCNC's SUBROUTINE_PATH: "O<name> call" of a subroutine the file does not hold reads
@@ -23,16 +33,17 @@ struct NgcContext
 // they run, their values worked out (NgcLineExpander). The check and the run both take what it
 // gives out (ProgramExpansion), so what runs is what was checked. Bounded: a loop runs at most
 // kMaxPasses times each time it is entered, calls nest kMaxCallDepth deep (LinuxCNC's
-// INTERP_SUB_ROUTINE_LEVELS), at most kMaxSteps lines run and kMaxLines are given out; past a
+// INTERP_SUB_ROUTINE_LEVELS), at most kMaxSteps lines run (a long line counting once per 64
+// characters) and kMaxLines are given out (NgcContext::limits); past a
 // bound the program is refused with an error naming the line. The first error ends the work.
 class NgcInterpreter
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::NgcInterpreter)
 public:
     static constexpr int kMaxCallDepth = 10;
-    static constexpr qint64 kMaxPasses = 1000000;
-    static constexpr qint64 kMaxSteps = 50000000;
-    static constexpr qint64 kMaxLines = 5000000;
+    static constexpr qint64 kMaxPasses = NgcLimits{}.passes;
+    static constexpr qint64 kMaxSteps = NgcLimits{}.steps;
+    static constexpr qint64 kMaxLines = NgcLimits{}.lines;
     static constexpr qint64 kMaxSubroutineBytes = 1024 * 1024;
 
     // text, sourceLine (1-based, of the main file; a folder subroutine's lines: its call's) and
@@ -78,6 +89,7 @@ private:
     int m_pc = 0;
     const File* m_file = nullptr;
     qint64 m_steps = 0;
+    int m_sinceAsked = 0; // lines run since keepGoing was asked
     qint64 m_lines = 0;
     bool m_ended = false;
     bool m_percentOpen = false;

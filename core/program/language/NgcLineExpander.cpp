@@ -21,6 +21,8 @@ QString NgcLineExpander::format(double value)
     return s == QLatin1String("-0") ? QStringLiteral("0") : s;
 }
 
+// LinuxCNC's DEBUG and PRINT: "#123" (digits only, as written) and "#<name>" are replaced by
+// their values; anything else, or a reference that does not read, stays as written.
 QString NgcLineExpander::substitute(QStringView text, const NgcParameters& parameters)
 {
     QString out;
@@ -32,20 +34,30 @@ QString NgcLineExpander::substitute(QStringView text, const NgcParameters& param
             break;
         }
         out += text.mid(pos, hash - pos);
-        NgcExpression e(text, parameters);
-        qsizetype p = hash + 1;
-        // A reference that does not read (a '#' in the text, an unset name) stays as written.
+        qsizetype end = hash + 1;
         std::optional<double> v;
-        if (p < text.size() && (text.at(p) == QLatin1Char('<') || text.at(p).isDigit())) {
-            qsizetype q = hash;
-            v = e.readValue(&q);
-            while (v && q > p && text.at(q - 1).isSpace())
-                --q; // the value reader leaves out the spaces after a number
-            if (v)
-                p = q;
+        QString why;
+        if (end < text.size() && text.at(end) == QLatin1Char('<')) {
+            const qsizetype close = text.indexOf(QLatin1Char('>'), end);
+            if (close > end + 1) {
+                QString name;
+                for (const QChar c : text.mid(end + 1, close - end - 1))
+                    if (!c.isSpace())
+                        name += c.toLower();
+                v = parameters.named(name, &why);
+                end = close + 1;
+            }
+        } else {
+            while (end < text.size() && text.at(end).unicode() < 128 && text.at(end).isDigit())
+                ++end;
+            if (end > hash + 1 && end - hash <= 6)
+                v = parameters.numbered(text.mid(hash + 1, end - hash - 1).toInt(), &why);
         }
-        out += v ? format(*v) : QString(QLatin1Char('#'));
-        pos = v ? p : hash + 1;
+        // A value too long to read in a message (LinuxCNC prints %lf) goes in exponent form.
+        out += !v                    ? text.mid(hash, end - hash).toString()
+               : std::fabs(*v) < 1e9 ? format(*v)
+                                     : QString::number(*v, 'g', 9);
+        pos = end;
     }
     return out;
 }
@@ -156,6 +168,8 @@ private:
         if (!(c.unicode() < 128 && c.isLetter()))
             return fail(pos, tr("unexpected character \"%1\"").arg(c));
         const QChar letter = c.toUpper();
+        if (letter == QLatin1Char('O')) // NgcStatement reads it where it stands first
+            return fail(pos, tr("an O word stands first on its line (after an N number at most)"));
         NgcExpression e(m_line, m_parameters);
         e.setLineNumber(m_lineNumber);
         qsizetype p = pos + 1;

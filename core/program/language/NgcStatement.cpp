@@ -307,6 +307,8 @@ private:
         int found = -1;
         for (qsizetype k = m_stack.size() - 1; k >= 0 && found < 0; --k) {
             const Open& o = m_stack.at(k);
+            if (o.kind == NgcStatement::Sub && s.kind != NgcStatement::Return)
+                break; // a loop outside the subroutine is not this one's to leave
             const bool fits =
                 s.kind == NgcStatement::Return ? o.kind == NgcStatement::Sub : isLoop(o.kind);
             if (fits && o.label == s.label)

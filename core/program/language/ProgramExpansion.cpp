@@ -1,5 +1,6 @@
 #include "ProgramExpansion.h"
 #include "program/ProgramLogging.h"
+#include "program/ProgramParser.h"
 #include <QRegularExpression>
 #include <QTemporaryFile>
 #include <algorithm>
@@ -236,6 +237,15 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
         return std::nullopt;
     }
     const QStringList lines = splitLines(bytes);
+    // The parser's limit, here before anything runs: a line is read again at every pass.
+    const qsizetype before = errors->size();
+    for (qsizetype i = 0; i < lines.size() && errors->size() - before < maxErrors; ++i)
+        if (lines.at(i).size() > ProgramParser::kMaxLineLength)
+            *errors << ProgramError{int(i) + 1, ProgramParser::kMaxLineLength + 1,
+                                    ProgramParser::tr("the line is longer than %1 characters")
+                                        .arg(ProgramParser::kMaxLineLength)};
+    if (errors->size() > before)
+        return std::nullopt;
     auto map = std::make_shared<NgcLineMap>();
     ExpandedWriter writer;
     int given = 0;

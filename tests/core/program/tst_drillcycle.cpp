@@ -63,6 +63,7 @@ private Q_SLOTS:
     void plan_moves_data();
     void plan_moves();
     void plan_manyPecks_refusedBeforeAnyMove();
+    void plan_peckBelowTheResolutionOfR_oneFeedToTheBottom();
 };
 
 void DrillCycleTest::parse_cycleWords_data()
@@ -216,6 +217,16 @@ void DrillCycleTest::plan_manyPecks_refusedBeforeAnyMove()
              QStringLiteral("R X101 | R Z21 | F Z19 | R Z21"));
     QCOMPARE(movesOf("F100\nG83 Z-1000 R1 Q0.001", {0.0, 0.0, 50.0}),
              QStringLiteral("error: G83 takes more than 100000 moves: make Q larger or L smaller"));
+}
+
+// Found by fuzzing (issue 33): in G91, R 10^18 above Z puts the bottom 200 below it, where a
+// peck of 1 is below a double's resolution (depth - Q == depth): the cycle feeds to the bottom
+// once instead of pecking for ever.
+void DrillCycleTest::plan_peckBelowTheResolutionOfR_oneFeedToTheBottom()
+{
+    const QString moves = movesOf("F100\nG91 G83 Z-200 R1000000000000000000 Q1", {0.0, 0.0, 10.0});
+    QCOMPARE(moves.count(QStringLiteral("F Z")), 1);
+    QVERIFY2(moves.startsWith(QStringLiteral("R Z1e+18 | F Z")), qPrintable(moves));
 }
 
 QTEST_GUILESS_MAIN(DrillCycleTest)

@@ -16,6 +16,7 @@ private Q_SLOTS:
     void run_brokenStructure_everyErrorListed();
     void run_subroutineFolder_callsFileAndNamesIt();
     void run_outputRefuses_stops();
+    void run_lowerLimits_eachBoundNamesItsLine();
 };
 
 namespace {
@@ -110,6 +111,12 @@ void TestNgcInterpreter::run_program_givesOutLines_data()
                                        << "3:(MSG, hole 3 at 2.5 mm)";
     QTest::newRow("PRINT like DEBUG") << "(print, v=#1)"
                                       << "1:(MSG, v=0)";
+    QTest::newRow("DEBUG: a number is its digits as written") << "#1=3\n(DEBUG, #1 2 #12)"
+                                                              << "2:(MSG, 3 2 0)";
+    QTest::newRow("DEBUG: unreadable references stay") << "(DEBUG, # #<> #<nope> #1234567)"
+                                                       << "1:(MSG, # #<> #<nope> #1234567)";
+    QTest::newRow("DEBUG: a huge value in exponent form") << "#1=[10**300]\n(DEBUG, #1)"
+                                                          << "2:(MSG, 1e+300)";
     QTest::newRow("MSG kept") << "(MSG, change the clamp)"
                               << "1:(MSG, change the clamp)";
     QTest::newRow("comment kept on a line") << "G0 X[1+1] (rapid)"
@@ -175,6 +182,13 @@ void TestNgcInterpreter::run_brokenProgram_errorAtLine_data()
     QTest::newRow("value too large") << "G0 X[10**12]"
                                      << "E 1:4 X1e+12 is beyond the values";
     // "#1 5": LinuxCNC leaves the space out, so this is #15 without its "=".
+    QTest::newRow("O word after another word") << "#1=2 O1"
+                                               << "E 1:6 an O word stands first on its line";
+    QTest::newRow("O word after a decimal N") << "N1.0 O1"
+                                              << "E 1:6 an O word stands first on its line";
+    QTest::newRow("break to a loop outside the sub")
+        << "o2 call\nM2\no1 do\no2 sub\no1 break\no2 endsub\no1 while [0]"
+        << "E 5:1 O1 break is outside a loop O1";
     QTest::newRow("missing =") << "#1 5"
                                << "E 1:5 \"=\" is missing";
 }
@@ -253,6 +267,34 @@ void TestNgcInterpreter::run_outputRefuses_stops()
     QVERIFY(!interpreter.run(&errors, 10));
     QCOMPARE(given, 2);
     QCOMPARE(errors.value(0).line, 2);
+}
+
+// The three bounds, lowered (NgcContext::limits): each ends the work with the line it was
+// reached on.
+void TestNgcInterpreter::run_lowerLimits_eachBoundNamesItsLine()
+{
+    NgcContext context;
+    context.limits = NgcLimits{5, 50, 3};
+    // Within the bound: no error, nothing given out.
+    QCOMPARE(run(QStringLiteral("o1 repeat [5]\n#1=[#1+1]\no1 endrepeat"), context), QString());
+    QVERIFY(run(QStringLiteral("o1 repeat [6]\no1 endrepeat"), context)
+                .startsWith(QStringLiteral("E 1:1 O1 repeat needs a whole count from 0 to 5")));
+    const QString passes = run(QStringLiteral("o1 while [1]\no1 endwhile"), context);
+    QVERIFY2(passes.startsWith(QStringLiteral("E 1:1 O1 while (line 1) has run 5 passes")),
+             qPrintable(passes));
+    const QString steps =
+        run(QStringLiteral("o1 repeat [5]\no2 repeat [5]\n#1=1\n#2=2\no2 endrepeat\no1 "
+                           "endrepeat"),
+            context);
+    QVERIFY2(steps.contains(QStringLiteral("runs more than 50 lines")), qPrintable(steps));
+    // A long line counts once per 64 characters: 3200 characters are 51 lines' work.
+    const QString longLine =
+        run(QStringLiteral("(%1)").arg(QString(3198, QLatin1Char('x'))), context);
+    QVERIFY2(longLine.startsWith(QStringLiteral("E 1:1 the program runs more than 50 lines")),
+             qPrintable(longLine));
+    const QString lines = run(QStringLiteral("G0 X1\nG0 X2\nG0 X3\nG0 X4"), context);
+    QVERIFY2(lines.startsWith(QStringLiteral("E 4:1 the program gives out more than 3 lines")),
+             qPrintable(lines));
 }
 
 QTEST_GUILESS_MAIN(TestNgcInterpreter)

@@ -19,6 +19,7 @@ private Q_SLOTS:
     void lineMap_runs_mapBack();
     void expand_longOutput_spillsToATemporaryFile();
     void expand_largeSource_refused();
+    void expand_longLine_refusedBeforeItRuns();
     void check_workedOut_blocksNameSourceLines();
     void check_errorInWorkedOutLine_namesSourceLineAndColumn_data();
     void check_errorInWorkedOutLine_namesSourceLineAndColumn();
@@ -156,6 +157,14 @@ void TestProgramExpansion::expand_largeSource_refused()
     QCOMPARE(errors.size(), 1);
     QVERIFY2(errors.first().message.contains(QStringLiteral("at most 8 MB")),
              qPrintable(errors.first().message));
+}
+
+void TestProgramExpansion::expand_longLine_refusedBeforeItRuns()
+{
+    const QByteArray text = "G0 X#1\n(" + QByteArray(1100, 'x') + ")\nG0 X1\n";
+    QList<ProgramError> errors;
+    QVERIFY(!ProgramExpansion::expand(ProgramSource::bytes(text), {}, &errors));
+    QCOMPARE(texts(errors), QStringList{"2:1025: the line is longer than 1024 characters"});
 }
 
 void TestProgramExpansion::check_workedOut_blocksNameSourceLines()
