@@ -7,6 +7,7 @@
 // so its own trace (every executed vector, every move's rest) must pass within a step of every
 // planned point, in order. Both also reach points worked out by hand.
 #include "MachineTestSupport.h"
+#include "PathTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
@@ -33,27 +34,17 @@ struct Point3
     double x = 0, y = 0, z = 0;
 };
 
-QString text(const Point3& p)
-{
-    return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
-}
-
-bool near(const Point3& a, const Point3& b, double d)
-{
-    return std::abs(a.x - b.x) <= d && std::abs(a.y - b.y) <= d && std::abs(a.z - b.z) <= d;
-}
+using test::near;
+using test::pointText;
 
 // The first of `points` that `path` does not pass within `tolerance`, in order (empty: all).
 QString firstNotPassed(const QList<Point3>& path, const QList<Point3>& points, double tolerance)
 {
-    qsizetype at = 0;
-    for (int i = 0; i < points.size(); ++i) {
-        while (at < path.size() && !near(path.at(at), points.at(i), tolerance))
-            ++at;
-        if (at == path.size())
-            return QStringLiteral("planned point %1 %2 not passed").arg(i).arg(text(points.at(i)));
-    }
-    return {};
+    const qsizetype i = test::firstNotPassed(path, points, tolerance);
+    return i < 0 ? QString()
+                 : QStringLiteral("planned point %1 %2 not passed")
+                       .arg(i)
+                       .arg(pointText(points.at(i)));
 }
 
 } // namespace
@@ -307,10 +298,11 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
     } else {
         QCOMPARE(arrived.size(), plannedMachine.size());
         for (int i = 0; i < arrived.size(); ++i)
-            QVERIFY2(near(arrived.at(i), plannedMachine.at(i), step),
-                     qPrintable(QStringLiteral("move %1: board %2, planned %3")
-                                    .arg(i)
-                                    .arg(text(arrived.at(i)), text(plannedMachine.at(i)))));
+            QVERIFY2(
+                near(arrived.at(i), plannedMachine.at(i), step),
+                qPrintable(QStringLiteral("move %1: board %2, planned %3")
+                               .arg(i)
+                               .arg(pointText(arrived.at(i)), pointText(plannedMachine.at(i)))));
     }
     // And the points worked out by hand, in their order (a contour's corner within a step).
     const double spot = elab ? step : 1e-6;
@@ -355,13 +347,13 @@ void TestCamPrograms::pause_duringPeckCycle_holdsBetweenMovesResumeFinishesIt()
     QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
     QCOMPARE(arrived.size(), held); // nothing moved while held
     const Point3 still = boardMm();
-    QCOMPARE(text(still), text(arrived.last()));
+    QCOMPARE(pointText(still), pointText(arrived.last()));
     m_runner->resume();
     QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 60000);
     QVERIFY2(m_runner->state() == RunState::Finished, qPrintable(m_runner->endMessage()));
     QCOMPARE(arrived.size(), 18);
     QCOMPARE(m_runner->preview().path.size(), 1 + 18); // the start, then one point a move
-    QCOMPARE(text(arrived.last()), text(Point3{10, 10, -2}));
+    QCOMPARE(pointText(arrived.last()), pointText(Point3{10, 10, -2}));
 }
 
 QTEST_MAIN(TestCamPrograms)

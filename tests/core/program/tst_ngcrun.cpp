@@ -11,6 +11,7 @@
 // the runner's check at the source line, and the device saw no move.
 #include "MachineTestSupport.h"
 #include "NgcProgramsTestSupport.h"
+#include "PathTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
 #include "program/ProgramCheck.h"
@@ -38,27 +39,15 @@ constexpr double kStepsPerMm = 100;
 constexpr double kStep = 1 / kStepsPerMm + 1e-9;
 const Point kG54{5, 5, -20}; // machine position of the work zero
 
-QString text(const Point& p)
-{
-    return QStringLiteral("(%1, %2, %3)").arg(p.x).arg(p.y).arg(p.z);
-}
-
-bool near(const Point& a, const Point& b, double d)
-{
-    return std::abs(a.x - b.x) <= d && std::abs(a.y - b.y) <= d && std::abs(a.z - b.z) <= d;
-}
+using test::near;
+using test::pointText;
 
 // The first of `points` that `path` does not pass within `tolerance`, in order (empty: all).
 QString firstNotPassed(const QList<Point>& path, const QList<Point>& points, double tolerance)
 {
-    qsizetype at = 0;
-    for (int i = 0; i < points.size(); ++i) {
-        while (at < path.size() && !near(path.at(at), points.at(i), tolerance))
-            ++at;
-        if (at == path.size())
-            return QStringLiteral("target %1 %2 not passed").arg(i).arg(text(points.at(i)));
-    }
-    return {};
+    const qsizetype i = test::firstNotPassed(path, points, tolerance);
+    return i < 0 ? QString()
+                 : QStringLiteral("target %1 %2 not passed").arg(i).arg(pointText(points.at(i)));
 }
 
 // The targets a program's moves reach from `start` (work coordinates), a move that goes
@@ -242,14 +231,14 @@ void TestNgcRun::comparePath(const QList<Point>& expected, qsizetype from, const
             QVERIFY2(near(device.at(i), expected.at(i), kStep),
                      qPrintable(QStringLiteral("move %1: device %2, computed %3")
                                     .arg(i)
-                                    .arg(text(device.at(i)), text(expected.at(i)))));
+                                    .arg(pointText(device.at(i)), pointText(expected.at(i)))));
         return;
     }
     const QList<Point> trace = boardTrace(from);
     const QString missed = firstNotPassed(trace, expected, kStep);
     QVERIFY2(missed.isEmpty(), qPrintable(missed));
     QVERIFY(!trace.isEmpty());
-    QVERIFY2(near(trace.last(), expected.last(), kStep), qPrintable(text(trace.last())));
+    QVERIFY2(near(trace.last(), expected.last(), kStep), qPrintable(pointText(trace.last())));
     Point low = expected.first(), high = expected.first();
     for (const Point& p : expected) {
         low = Point{std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
@@ -258,7 +247,7 @@ void TestNgcRun::comparePath(const QList<Point>& expected, qsizetype from, const
     for (const Point& p : trace)
         QVERIFY2(p.x >= low.x - kStep && p.x <= high.x + kStep && p.y >= low.y - kStep &&
                      p.y <= high.y + kStep && p.z >= low.z - kStep && p.z <= high.z + kStep,
-                 qPrintable(QStringLiteral("the board strayed to %1").arg(text(p))));
+                 qPrintable(QStringLiteral("the board strayed to %1").arg(pointText(p))));
 }
 
 void TestNgcRun::run_ngcProgram_deviceSawEveryTargetInOrder_data()
@@ -289,7 +278,7 @@ void TestNgcRun::run_ngcProgram_deviceSawEveryTargetInOrder()
     connect(m_runner.get(), &ProgramRunner::blockStarted, this,
             [&](int line, const QString&) { started << line; });
     const Point start = boardWork();
-    QVERIFY2(near(start, Point{-kG54.x, -kG54.y, -kG54.z}, 1e-9), qPrintable(text(start)));
+    QVERIFY2(near(start, Point{-kG54.x, -kG54.y, -kG54.z}, 1e-9), qPrintable(pointText(start)));
     const qsizetype from = journalSize();
     QList<ProgramError> errors;
     QVERIFY2(m_runner->start(*checked.program, 1, &errors), qPrintable(errors.value(0).text()));
@@ -355,7 +344,7 @@ void TestNgcRun::run_ngcProgramBeyondTheLimits_refusedBeforeAnythingMoved()
     QTRY_VERIFY_WITH_TIMEOUT(polled.size() >= 3, 10000);
     QCOMPARE(journalSize(), journal);
     QCOMPARE(motionReceived(), motion);
-    QCOMPARE(text(boardWork()), text(before));
+    QCOMPARE(pointText(boardWork()), pointText(before));
     QVERIFY(m_device->still());
     QCOMPARE(state.size(), 0);
 }
