@@ -4107,10 +4107,6 @@
             <translation>#%1 ist ein Nullpunkt, den Zeile %2 geändert hat (G10): nur der Lauf kennt ihn</translation>
         </message>
         <message>
-            <source>#5399 holds what M66 reads at run time; StepDeck works out a program's path before the machine moves, so a path that depends on an input cannot be checked</source>
-            <translation>#5399 enthält, was M66 zur Laufzeit liest; StepDeck wertet die Bahn eines Programms aus, bevor die Maschine fährt, daher kann eine Bahn, die von einem Eingang abhängt, nicht geprüft werden</translation>
-        </message>
-        <message>
             <source>#%1 is the loaded tool's, known only at run time</source>
             <translation>#%1 gehört zum eingesetzten Werkzeug und ist erst zur Laufzeit bekannt</translation>
         </message>
@@ -4137,6 +4133,10 @@
         <message>
             <source>#%1 is reserved by LinuxCNC and read-only</source>
             <translation>#%1 ist von LinuxCNC reserviert und nur lesbar</translation>
+        </message>
+        <message>
+            <source>#5399 holds what M66 read, and no M66 has run before this line</source>
+            <translation>#5399 enthält, was M66 gelesen hat, und vor dieser Zeile ist kein M66 gelaufen</translation>
         </message>
     </context>
     <context>

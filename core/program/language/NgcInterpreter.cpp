@@ -147,6 +147,7 @@ bool NgcInterpreter::ordinary(const QString& text)
     for (const double g : {92.0, 92.1, 92.2, 92.3})
         if (line->has('G', g))
             m_parameters.noteAxisOffsetChanged(sourceLine());
+    noteInput(*line);
     // M2/M30 end the program; LinuxCNC reads nothing after them (subroutines after them are
     // found by their definition). A second "%" ends it likewise.
     if (line->has('M', 2) || line->has('M', 30))
@@ -157,6 +158,19 @@ bool NgcInterpreter::ordinary(const QString& text)
     }
     ++m_pc;
     return true;
+}
+
+// M66 in StepDeck waits for its input's state (L3 high, L4 low) and stops the run when Q runs
+// out (docs/programs.md "Inputs and outputs"): a run that goes on past it has read 1 or 0.
+// LinuxCNC's -1 (timed out) never reaches the next line, so the only path on is the checked one.
+void NgcInterpreter::noteInput(const NgcExpandedLine& line)
+{
+    if (!line.has('M', 66))
+        return;
+    if (line.has('L', 3))
+        m_parameters.noteInput(1.0, sourceLine());
+    else if (line.has('L', 4))
+        m_parameters.noteInput(0.0, sourceLine());
 }
 
 bool NgcInterpreter::statement(const NgcStatement& s)

@@ -65,6 +65,7 @@ private:
     struct Frame;
     bool step();
     bool ordinary(const QString& text);
+    void noteInput(const NgcExpandedLine& line);
     bool statement(const NgcStatement& s);
     bool branch(int line);
     bool loopStatement(const NgcStatement& s);

@@ -55,10 +55,11 @@ std::optional<double> NgcParameters::reserved(int n, QString* why) const
         const QString letter = QString(QLatin1Char("XYZABCUVW"[axis]));
         return m_systems[size_t(system)].value(letter, 0.0);
     }
-    if (n == 5399)
-        return refuse(tr("#5399 holds what M66 reads at run time; StepDeck works out a "
-                         "program's path before the machine moves, so a path that depends "
-                         "on an input cannot be checked"));
+    if (n == 5399) {
+        if (m_inputLine > 0)
+            return m_input;
+        return refuse(tr("#5399 holds what M66 read, and no M66 has run before this line"));
+    }
     if (n >= 5400 && n <= 5413)
         return refuse(tr("#%1 is the loaded tool's, known only at run time").arg(n));
     if (n >= 5420 && n <= 5428)

@@ -12,9 +12,9 @@ namespace stepdeck::program {
 // - #1..#30 are a call's arguments: saved at a call and given back at its return.
 // - #31..#5060 are the program's; #5061..#5399 are LinuxCNC's reserved ones: read-only, and
 //   either tied to what StepDeck knows before the run (#5220 the coordinate system, #5221..
-//   #5350 G54..G59's offsets, #5210..#5219 G92's offset, none at the start) or refused with the
-//   reason where only the run can know them (#5399 M66's input, #5400.. the tool, #5420.. the
-//   position, #5061.. probing).
+//   #5350 G54..G59's offsets, #5210..#5219 G92's offset, none at the start, #5399 what the
+//   last M66 read) or refused with the reason where only the run can know them (#5400.. the
+//   tool, #5420.. the position, #5061.. probing).
 // - Assignments are applied after their line (NgcInterpreter), as LinuxCNC does.
 class NgcParameters : public NgcParameterSource
 {
@@ -45,6 +45,12 @@ public:
     void noteSystem(int system) { m_system = system; }
     void noteOffsetsChanged(int line) { m_offsetsChangedAt = line; }
     void noteAxisOffsetChanged(int line) { m_axisOffsetChangedAt = line; }
+    // An M66 on `line` that goes on only once its input reads `value` (NgcInterpreter).
+    void noteInput(double value, int line)
+    {
+        m_input = value;
+        m_inputLine = line;
+    }
 
 private:
     std::optional<double> reserved(int number, QString* why) const;
@@ -53,6 +59,8 @@ private:
     int m_system = 0;
     int m_offsetsChangedAt = 0;
     int m_axisOffsetChangedAt = 0;
+    double m_input = 0;
+    int m_inputLine = 0;
     std::vector<double> m_numbered;
     QHash<QString, double> m_globals;
     struct Frame

@@ -73,6 +73,7 @@ private Q_SLOTS:
     void cleanup();
     void run_ngcProgram_deviceSawEveryTargetInOrder_data();
     void run_ngcProgram_deviceSawEveryTargetInOrder();
+    void run_branchOnM66_emisTakesThePathOfItsInput();
     void run_ngcProgramBeyondTheLimits_refusedBeforeAnythingMoved_data();
     void run_ngcProgramBeyondTheLimits_refusedBeforeAnythingMoved();
 
@@ -297,6 +298,30 @@ void TestNgcRun::run_ngcProgram_deviceSawEveryTargetInOrder()
     started.removeIf([&](int line) { return !moveLines.contains(line); });
     QCOMPARE(started, moveOrder);
     QCOMPARE(messages, expected.messages);
+}
+
+// A branch on what M66 read (#5399), on the EMIS with its input 5 high: the check followed the
+// path past the M66 (StepDeck's M66 stops the run when Q runs out), and the device went there
+// and nowhere else.
+void TestNgcRun::run_branchOnM66_emisTakesThePathOfItsInput()
+{
+    QVERIFY(setUp(QStringLiteral("emis")));
+    m_device->probe([&] {
+        static_cast<emis::EmisSimulator*>(m_device->sim())->setInput(5, true);
+        return true;
+    });
+    const QByteArray program = "G21 G90 G54\nM66 P5 L3 Q5\no1 if [#5399 EQ 1]\n  G0 X12 Y7\n"
+                               "o1 else\n  G0 X40 Y40\no1 endif\nM2\n";
+    const ProgramCheckResult checked =
+        ProgramCheck::check(ProgramSource::bytes(program), {"X", "Y", "Z"}, m_runner->startFacts());
+    QVERIFY2(checked.ok(), qPrintable(checked.errors.value(0).text()));
+    const Point start = boardWork();
+    const qsizetype from = journalSize();
+    QList<ProgramError> errors;
+    QVERIFY2(m_runner->start(*checked.program, 1, &errors), qPrintable(errors.value(0).text()));
+    QTRY_VERIFY_WITH_TIMEOUT(isEnded(m_runner->state()), 60000);
+    QVERIFY2(m_runner->state() == RunState::Finished, qPrintable(m_runner->endMessage()));
+    comparePath({Point{12, 7, start.z}}, from, start);
 }
 
 void TestNgcRun::run_ngcProgramBeyondTheLimits_refusedBeforeAnythingMoved_data()

@@ -125,6 +125,14 @@ void TestNgcInterpreter::run_program_givesOutLines_data()
                                           << "1:G0 X1 | 2:M30";
     QTest::newRow("second percent ends it") << "%\nG0 X1\n%\nG0 X2"
                                             << "1:% | 2:G0 X1 | 3:%";
+    // StepDeck's M66 stops the run when Q runs out: past it, the input reads as waited for.
+    QTest::newRow("#5399 after M66 L3 (high)")
+        << "M66 P1 L3 Q5\no1 if [#5399 EQ 1]\nG0 X1\no1 else\nG0 X2\no1 endif"
+        << "1:M66 P1 L3 Q5 | 3:G0 X1";
+    QTest::newRow("#5399 after M66 L4 (low)")
+        << "M66 P1 L4 Q5\no1 if [#5399 EQ 1]\nG0 X1\no1 elseif [#5399 LT 0]\nG0 X9\no1 "
+           "else\nG0 X2\no1 endif"
+        << "1:M66 P1 L4 Q5 | 7:G0 X2";
     QTest::newRow("G54 changes #5220") << "G54\nG0 X#5220"
                                        << "1:G54 | 2:G0 X1";
     QTest::newRow("values six decimals") << "G0 X[1/3] Y[-0.0000001]"
@@ -173,8 +181,8 @@ void TestNgcInterpreter::run_brokenProgram_errorAtLine_data()
                                  << "E 1:1 M99 (a Fanuc-style subprogram) is not supported";
     QTest::newRow("read-only named") << "#<_value>=1"
                                      << "E 1:2 #<_value> is LinuxCNC's, read-only";
-    QTest::newRow("#5399 refused") << "M66 P1 L3 Q5\no1 if [#5399 EQ 1]\nG0 X1\no1 endif"
-                                   << "E 2:8 #5399 holds what M66 reads at run time";
+    QTest::newRow("#5399 before any M66") << "o1 if [#5399 EQ 1]\nG0 X1\no1 endif"
+                                          << "E 1:8 #5399 holds what M66 read, and no M66 has run";
     QTest::newRow("read-only offset") << "#5221=1"
                                       << "E 1:2 #5221 is a coordinate system's offset";
     QTest::newRow("offset after G10") << "G10 L2 P1 X5\nG0 X#5221"

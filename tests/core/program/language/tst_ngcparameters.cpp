@@ -17,6 +17,7 @@ private Q_SLOTS:
     void call_arguments_savedAndGivenBack();
     void named_localPerCall_globalShared();
     void offsets_changedByTheProgram_refused();
+    void input_afterM66_whatItWaitedFor();
     void returned_valueAndFlag();
 };
 
@@ -55,7 +56,7 @@ void TestNgcParameters::numbered_reserved_tiedOrRefused_data()
     QTest::newRow("#5211 G92 X at the start") << 5211 << 0.0 << "";
     QTest::newRow("#5321 G59 X") << 5321 << 0.0 << "";
     QTest::newRow("#5341 G59.1 X") << 5341 << refused << "G54..G59";
-    QTest::newRow("#5399 M66's input") << 5399 << refused << "M66";
+    QTest::newRow("#5399 before any M66") << 5399 << refused << "no M66 has run";
     QTest::newRow("#5400 tool") << 5400 << refused << "tool";
     QTest::newRow("#5421 position") << 5421 << refused << "position";
     QTest::newRow("#5061 probing") << 5061 << refused << "prob";
@@ -154,6 +155,17 @@ void TestNgcParameters::offsets_changedByTheProgram_refused()
     p.noteAxisOffsetChanged(14);
     QVERIFY(!p.numbered(5211, &why));
     QVERIFY2(why.contains(QStringLiteral("line 14")), qPrintable(why));
+}
+
+void TestNgcParameters::input_afterM66_whatItWaitedFor()
+{
+    NgcParameters p = withOffsets();
+    QString why;
+    p.noteInput(1.0, 4);
+    QCOMPARE(p.numbered(5399, &why), std::optional<double>(1.0));
+    p.noteInput(0.0, 9);
+    QCOMPARE(p.numbered(5399, &why), std::optional<double>(0.0));
+    QVERIFY(!p.setNumbered(5399, 1.0).isEmpty());
 }
 
 void TestNgcParameters::returned_valueAndFlag()

@@ -26,6 +26,7 @@ private Q_SLOTS:
     void check_runFromLine_refused();
     void check_offsetsChangedSinceWorkedOut_refused();
     void check_plainProgram_notWorkedOut();
+    void check_branchOnM66_takesThePathTheRunCanReach();
     void check_progressFalse_cancelsWorkingOut();
 };
 
@@ -253,6 +254,26 @@ void TestProgramExpansion::check_plainProgram_notWorkedOut()
     const ProgramCheckResult r = checkText(QStringLiteral("G0 X1 (part #3)\nG0 X2"), mill(), 2);
     QVERIFY2(r.ok(), qPrintable(texts(r.errors).join(QLatin1Char('\n'))));
     QVERIFY(!r.program->expansion);
+}
+
+// A branch on what M66 read: StepDeck's M66 stops the run when Q runs out, so past it the input
+// reads as waited for (L3: 1) and the check follows that path, the only one the run can take.
+void TestProgramExpansion::check_branchOnM66_takesThePathTheRunCanReach()
+{
+    MachineFacts facts = machineFacts(QStringLiteral("io"));
+    facts.knownPositions = positions(QStringLiteral("X=0 U=0 V=0"));
+    const ProgramCheckResult r = checkText(QStringLiteral("M66 P1 L3 Q5\n"
+                                                          "o1 if [#5399 EQ 1]\n"
+                                                          "  G0 X10\n"
+                                                          "o1 else\n"
+                                                          "  G0 X500\n"
+                                                          "o1 endif\n"),
+                                           facts);
+    QVERIFY2(r.ok(), qPrintable(texts(r.errors).join(QLatin1Char('\n'))));
+    QStringList blocks;
+    for (const ProgramBlock& b : ProgramReader::readAll(*r.program))
+        blocks << QStringLiteral("%1:%2").arg(b.line).arg(b.text);
+    QCOMPARE(blocks, QStringList({"1:M66 P1 L3 Q5", "3:G0 X10"}));
 }
 
 // A long loop is ended by the check's progress (the window's Cancel, a newer text), not run out.
