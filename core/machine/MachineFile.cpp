@@ -99,10 +99,9 @@ bool Reader::number(const QJsonObject& o, const QString& path, const char* key,
 
 bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
-    if (!onlyKeys(
-            top, {},
-            {"format", "version", "name", "controllers", "axes", "spindle", "crossControllerFeed",
-             "subroutineFolder"}))
+    if (!onlyKeys(top, {},
+                  {"format", "version", "name", "controllers", "axes", "spindle",
+                   "crossControllerFeed", "subroutineFolder"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
@@ -361,9 +360,9 @@ MachineFile::parse(const QByteArray& json, MachineFileError* error, const QStrin
     if (!d || !validate(*d, e) || !loadSetups(&*d, baseDir, e))
         return std::nullopt;
     if (!d->subroutineFolder.isEmpty())
-        d->subroutineFolderPath = QDir::cleanPath(
-            QDir(baseDir.isEmpty() ? QDir::currentPath() : baseDir)
-                .absoluteFilePath(d->subroutineFolder));
+        d->subroutineFolderPath =
+            QDir::cleanPath(QDir(baseDir.isEmpty() ? QDir::currentPath() : baseDir)
+                                .absoluteFilePath(d->subroutineFolder));
     return d;
 }
 
