@@ -4076,10 +4076,6 @@
             <translation>%1%2 liegt außerhalb der Werte, die StepDeck annimmt (±%3)</translation>
         </message>
         <message>
-            <source>M%1 (a Fanuc-style subprogram) is not supported: write the subprogram as O&lt;name&gt; sub … endsub and call it with O&lt;name&gt; call</source>
-            <translation>M%1 (ein Unterprogramm im Fanuc-Stil) wird nicht unterstützt: das Unterprogramm als O&lt;name&gt; sub … endsub schreiben und mit O&lt;name&gt; call aufrufen</translation>
-        </message>
-        <message>
             <source>an O word stands first on its line (after an N number at most)</source>
             <translation>ein O-Wort steht als erstes in seiner Zeile (höchstens nach einer N-Nummer)</translation>
         </message>

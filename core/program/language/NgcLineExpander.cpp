@@ -181,11 +181,6 @@ private:
                                  .arg(letter)
                                  .arg(*v)
                                  .arg(kMaxWordValue));
-        if (letter == QLatin1Char('M') && (std::fabs(*v - 98) < 1e-9 || std::fabs(*v - 99) < 1e-9))
-            return fail(pos, tr("M%1 (a Fanuc-style subprogram) is not supported: write the "
-                                "subprogram as O<name> sub … endsub and call it with O<name> "
-                                "call")
-                                 .arg(format(*v)));
         place(&m_out->text, pos, QString(letter) + format(*v));
         m_out->words.push_back(NgcExpandedLine::Word{letter, *v, int(pos) + 1});
         m_out->keep = true;

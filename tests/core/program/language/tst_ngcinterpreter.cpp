@@ -175,10 +175,6 @@ void TestNgcInterpreter::run_brokenProgram_errorAtLine_data()
                                                      << "E 2:7 division by zero";
     QTest::newRow("unset local in a sub") << "#<a>=1\no<s> sub\nG0 X#<a>\no<s> endsub\no<s> call"
                                           << "E 3:5 #<a> is not set here";
-    QTest::newRow("M98 refused") << "G0 X1\nM98 P100"
-                                 << "E 2:1 M98 (a Fanuc-style subprogram) is not supported";
-    QTest::newRow("M99 refused") << "M99"
-                                 << "E 1:1 M99 (a Fanuc-style subprogram) is not supported";
     QTest::newRow("read-only named") << "#<_value>=1"
                                      << "E 1:2 #<_value> is LinuxCNC's, read-only";
     QTest::newRow("#5399 before any M66") << "o1 if [#5399 EQ 1]\nG0 X1\no1 endif"

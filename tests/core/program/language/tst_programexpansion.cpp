@@ -201,6 +201,11 @@ void TestProgramExpansion::check_errorInWorkedOutLine_namesSourceLineAndColumn_d
         << "3:6: X reaches 120 mm";
     QTest::newRow("unsupported word keeps its column") << "#1=2\nG0 X#1 G5"
                                                        << "2:8: ";
+    // M98/M99: refused by the parser (ProgramLine), in a worked-out program as in any.
+    QTest::newRow("M98 refused") << "#1=1\nG0 X#1\nM98 P100"
+                                 << "3:1: M98 (a Fanuc-style subprogram) is not supported";
+    QTest::newRow("M99 refused") << "#1=1\n  M99"
+                                 << "2:3: M99 (a Fanuc-style subprogram) is not supported";
     QTest::newRow("expression error") << "G21\nG0 X[1/0]"
                                       << "2:7: ";
     // A value longer than what was written moves the words after it in the worked-out text:
