@@ -69,7 +69,7 @@ program::MachineFacts benchFacts()
         facts.knownPositions.insert(a.name, 0.0);
     }
     // The board's setup as written before a run (issue 30: its feed moves are contour streams
-    // that tick below the start speed, here at the wire's 2400/s).
+    // that tick below the start speed, here at the wire's 2100/s).
     ParameterValue start;
     for (Axis axis : elab->capabilities.axes)
         start.perAxis.insert(axis, 2401);

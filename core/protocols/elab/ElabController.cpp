@@ -30,6 +30,7 @@ ElabController::ElabController(Transport* transport, const ControllerOptions& op
 
     m_queue.setTimeoutMs(options.commandTimeoutMs);
     m_queue.setCharacterTimeUs(elab::lineSettings().characterTimeUs());
+    m_userPollMs = options.pollIntervalMs;
     m_poller.setInterval(options.pollIntervalMs);
     m_poller.setMissLimit(options.missedPollsForLinkLoss);
     connect(&m_poller, &StatusPoller::pollDue, this, &ElabController::startPoll);
@@ -92,6 +93,7 @@ ElabCtlHooks ElabController::hooks()
     };
     h.requireLink = [this](RequestId id) { return requireLink(id); };
     h.error = [this](const QString& message) { Q_EMIT errorOccurred(message); };
+    h.streamChanged = [this] { applyPollInterval(); };
     return h;
 }
 
@@ -139,6 +141,15 @@ void ElabController::feedContour(RequestId id, std::shared_ptr<motion::ContourFe
     if (contour) {
         const ParameterValue feed = m_written.value(QStringLiteral("feed-speed"));
         const double rate = contour->tickRate();
+        if (rate > ElabCtlMotionOps::kContourMaxTickRate) {
+            // Faster, the pairs would leave the status polls no room (issue 47 item 4).
+            finishError(id, ErrorKind::Refused,
+                        tr("refused: the contour runs at %1 ticks/s; beside the status polls "
+                           "the line carries at most %2")
+                            .arg(rate)
+                            .arg(ElabCtlMotionOps::kContourMaxTickRate));
+            return;
+        }
         for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
             const QVariant v = feed.perAxis.value(a);
             if (!v.isValid() || std::fabs(v.toDouble() - rate) > 1e-9) {
@@ -275,9 +286,13 @@ void ElabController::startPoll()
     // The poll goes behind queued commands; it never has more than one cycle in flight.
     if (linkState() != LinkState::Connected || !m_poller.isDue())
         return;
-    if (m_ops.contourNeedsWire()) {
+    if (m_ops.contourNeedsWire() && !pollDeferralSpent()) {
         // A contour's pairs first while its reserve at the board is short (a poll's round
-        // trip would let the board run dry); the poll follows within milliseconds.
+        // trip would let the board run dry); the poll follows within milliseconds, and after
+        // kMaxPollDeferralMs whatever the reserve: a moving machine's limit switches, positions
+        // and panic are read at least 10 times a second (issue 47). Feed mode runs below the
+        // start ramp, so a board that runs dry for a poll's round trip loses no step ("ohne
+        // dass Schrittverluste auftreten").
         if (!m_pollDeferred) {
             m_pollDeferred = true;
             QTimer::singleShot(kDeferredPollMs, this, [this] {
@@ -287,6 +302,7 @@ void ElabController::startPoll()
         }
         return;
     }
+    m_pollDeferredSince.invalidate();
     m_poller.pollStarted();
     ++m_pollCount;
     ElabCtlLine::StatusRead how;
@@ -311,9 +327,30 @@ void ElabController::startPoll()
         });
 }
 
+bool ElabController::pollDeferralSpent()
+{
+    if (!m_pollDeferredSince.isValid()) {
+        m_pollDeferredSince.start();
+        return false;
+    }
+    return m_pollDeferredSince.elapsed() >= kMaxPollDeferralMs;
+}
+
 void ElabController::setPollInterval(int ms)
 {
-    m_poller.setInterval(ms);
+    m_userPollMs = ms;
+    applyPollInterval();
+}
+
+// While a stream runs the status is read at least kStreamPollsPerSecond times a second,
+// whatever interval was asked for (issue 47: limit switches go unread otherwise); the
+// interval asked for comes back when the stream ends.
+void ElabController::applyPollInterval()
+{
+    const int streamMs = 1000 / ElabCtlMotionOps::kStreamPollsPerSecond;
+    const int ms = m_ops.streaming() ? qMin(m_userPollMs, streamMs) : m_userPollMs;
+    if (m_poller.interval() != ms)
+        m_poller.setInterval(ms);
 }
 
 void ElabController::refreshStatus(RequestId id)

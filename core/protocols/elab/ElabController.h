@@ -6,6 +6,8 @@
 #include "ElabExchangeQueue.h"
 #include "controller/Controller.h"
 #include "controller/StatusPoller.h"
+#include <QDeadlineTimer>
+#include <QElapsedTimer>
 
 namespace stepdeck::elab {
 
@@ -35,7 +37,14 @@ namespace stepdeck::elab {
 // - Stop (STOP, close, link loss): <XOFF> ForceStopMove for moves, feeds and streams
 //   ("stoppt sofort jegliche Bewegung mit Bremsrampen"), and <DC4> with zero rates whenever the
 //   board may be in jog mode: the jog section lists only SetJogSpeed and ForcePanicStop, and
-//   "Nullwerte stoppen den betreffenden Motor". See ElabControllerStop.cpp.
+//   "Nullwerte stoppen den betreffenden Motor". STOP during a contour instead ends the stream
+//   as a feed hold would (no further pair, EndOfFeed; the board runs out at most
+//   ElabCtlMotionOps::kContourLeadSeconds of ticks), so every position stays known (issue 47);
+//   close and link loss keep <XOFF>. See ElabControllerStop.cpp.
+// - Polls while a stream runs (issue 47): at least ElabCtlMotionOps::kStreamPollsPerSecond a
+//   second whatever the interval set, each deferred for a contour's reserve at most
+//   kMaxPollDeferralMs; the contour's tick rate is capped (kContourMaxTickRate) so that the
+//   wire leaves them their share.
 // - Whenever a status read shows move or jog bits the host did not command (a lost jog ACK, a
 //   motion from before this session), the host stops them and says so.
 class ElabController : public Controller
@@ -95,9 +104,22 @@ private:
     bool jogMayRun() const; // host jog, board jog mode, an unanswered <DC4>, jog bits
     // Writes the stop for whatever may move ahead of queued work. done(acknowledged, failure
     // kind, failure text): failure is Nak when the board refused a stop frame, else the error
-    // of the exchange that got no answer.
+    // of the exchange that got no answer. endFeed: flush the buffer and end the feed after the
+    // board's ACK even when no stream runs on the host's side any more (a STOP during a
+    // contour that fell back to it); a stream that runs always gets them.
     using StopDone = std::function<void(bool acknowledged, ErrorKind failure, const QString&)>;
-    void writeStop(RequestId owner, StopDone done);
+    void writeStop(RequestId owner, StopDone done, bool endFeed = false);
+    StopDone stopResult(RequestId id); // finishes a stop request by what writeStop heard
+    void flushAndEndFeed(std::function<void()> then);
+    // STOP during a contour (issue 47 item 3): the stream ends as a hold stops it, the stop is
+    // finished once a status read shows the axes at rest.
+    void stopContour(RequestId id);
+    void awaitContourStandstill(quint64 epoch, QDeadlineTimer deadline);
+    void contourStopFailed(const QString& why);
+    void finishContourStops(bool standstill);
+    // Polls while a stream runs (issue 47 item 4).
+    void applyPollInterval();
+    bool pollDeferralSpent();
     // A status read showed motion the host does not track: stop it and say so (once until
     // the board reports standstill again).
     void checkUntrackedMotion();
@@ -119,6 +141,12 @@ private:
     ParameterSet m_written;
     bool m_pollDeferred = false; // a poll waits for a contour's reserve (startPoll)
     static constexpr int kDeferredPollMs = 5;
+    // The longest a due poll waits for a contour's reserve: with the stream's interval of
+    // 1000 / kStreamPollsPerSecond = 50 ms a poll starts at least every 75 ms (13/s).
+    static constexpr int kMaxPollDeferralMs = 20;
+    QElapsedTimer m_pollDeferredSince; // invalid: no poll waits
+    int m_userPollMs = 50;             // the interval asked for (setPollInterval)
+    QList<RequestId> m_contourStops;   // STOP requests waiting for a contour's end
     // Per running parameter write: the names already acknowledged, for the failure message.
     QHash<RequestId, QStringList> m_writeProgress;
     quint64 m_pollCount = 0;

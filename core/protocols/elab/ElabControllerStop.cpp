@@ -5,7 +5,9 @@
 #include "ElabLogging.h"
 #include "Logging.h"
 #include "transport/Transport.h"
+#include <QDeadlineTimer>
 #include <QTimer>
+#include <utility>
 
 namespace stepdeck::elab {
 
@@ -18,6 +20,12 @@ constexpr int kResetSettleMs = 120;
 
 constexpr quint8 kMotionBits = axe::XMove | axe::YMove | axe::ZMove;
 constexpr quint8 kJogBits = axe::XJog | axe::YJog | axe::ZJog;
+
+// STOP during a contour (stopContour): the board runs out at most kContourLeadSeconds of ticks
+// after the EndOfFeed; a board still moving this long after it is a fault, and the documented
+// stop follows. The status is read this often meanwhile.
+constexpr int kContourStandstillMs = 1000;
+constexpr int kContourStandstillPollMs = 10;
 
 // What one stop sequence has heard back so far.
 struct StopReplies
@@ -39,6 +47,28 @@ struct StopReplies
         std::exchange(done, nullptr)(acknowledged, failure, failureText);
     }
 };
+
+// "Der Modus wird automatisch wieder verlassen, wenn alle 3 Achsen eine Steprate mit dem Wert 0
+// erhalten." The only documented way to stop a jog short of a panic.
+ElabExchange jogZero(RequestId owner, const std::shared_ptr<StopReplies>& replies, bool streaming)
+{
+    ElabExchange zero = ElabCtlLine::exchange(owner, encode::jogSpeed({}), Expect::AckNak);
+    zero.droppable = false;
+    zero.tolerateStray = streaming;
+    ++replies->pending;
+    zero.onReply = [replies](const Reply& r) {
+        replies->jogAck = r.kind == Reply::Kind::Ack;
+        if (!replies->jogAck)
+            replies->failure = ErrorKind::Nak;
+        replies->settle();
+    };
+    zero.onError = [replies](ErrorKind kind, const QString& why) {
+        replies->failure = kind;
+        replies->failureText = why;
+        replies->settle();
+    };
+    return zero;
+}
 } // namespace
 
 bool ElabController::jogMayRun() const
@@ -52,9 +82,10 @@ bool ElabController::motionMayBeRunning() const
            (m_line.axeWord() & kMotionBits) != 0 || status().motionUnconfirmed;
 }
 
-void ElabController::writeStop(RequestId owner, StopDone done)
+void ElabController::writeStop(RequestId owner, StopDone done, bool endFeed)
 {
     const bool streaming = m_ops.streaming();
+    endFeed = endFeed || streaming;
     auto replies = std::make_shared<StopReplies>();
     replies->needJog = jogMayRun();
     replies->needXoff = !replies->needJog || m_ops.motionTracked() || streaming ||
@@ -89,23 +120,17 @@ void ElabController::writeStop(RequestId owner, StopDone done)
     xoff.droppable = false;
     xoff.tolerateStray = streaming;
     ++replies->pending;
-    xoff.onReply = [this, replies, streaming](const Reply& r) {
+    xoff.onReply = [this, replies, endFeed](const Reply& r) {
         replies->xoffAck = r.kind == Reply::Kind::Ack;
         if (!replies->xoffAck && replies->needXoff)
             replies->failure = ErrorKind::Nak;
         if (replies->xoffAck)
             m_ops.onStopAccepted(); // after the reply of what was in flight (FIFO)
-        if (!streaming || !replies->xoffAck) {
+        if (!endFeed || !replies->xoffAck) {
             replies->settle();
             return;
         }
-        // A stop during <DC2>: the buffer still holds single steps; flush it and end the feed
-        // ("Der Buffer kann jetzt mit folgendem Kommando geleert werden": <GS>; "Den Abschluss
-        // ... muss immer ein EndOfFeed Kommando sein").
-        const ElabCtlLine::Op internal = m_line.op(0);
-        m_line.sendCommand(internal, encode::flushBuffer(), [this, replies, internal] {
-            m_line.sendCommand(internal, encode::endOfFeed(), [replies] { replies->settle(); });
-        });
+        flushAndEndFeed([replies] { replies->settle(); });
     };
     xoff.onError = [replies](ErrorKind kind, const QString& why) {
         replies->failure = kind;
@@ -113,28 +138,21 @@ void ElabController::writeStop(RequestId owner, StopDone done)
         replies->settle();
     };
     m_queue.overtake(std::move(xoff), false);
-
-    if (replies->needJog) {
-        // "Der Modus wird automatisch wieder verlassen, wenn alle 3 Achsen eine Steprate mit
-        // dem Wert 0 erhalten." The only documented way to stop a jog short of a panic.
-        ElabExchange zero = ElabCtlLine::exchange(owner, encode::jogSpeed({}), Expect::AckNak);
-        zero.droppable = false;
-        zero.tolerateStray = streaming;
-        ++replies->pending;
-        zero.onReply = [replies](const Reply& r) {
-            replies->jogAck = r.kind == Reply::Kind::Ack;
-            if (!replies->jogAck)
-                replies->failure = ErrorKind::Nak;
-            replies->settle();
-        };
-        zero.onError = [replies](ErrorKind kind, const QString& why) {
-            replies->failure = kind;
-            replies->failureText = why;
-            replies->settle();
-        };
-        m_queue.overtake(std::move(zero), false);
-    }
+    if (replies->needJog)
+        m_queue.overtake(jogZero(owner, replies, streaming), false);
     publishStatus();
+}
+
+// A stop during <DC2>: the buffer still holds single steps; flush it and end the feed ("Der
+// Buffer kann jetzt mit folgendem Kommando geleert werden": <GS>; "Den Abschluss ... muss immer
+// ein EndOfFeed Kommando sein"). then() once both are answered, ACK or NAK (a NAK, e.g. with a
+// limit switch active, changes nothing about the stop the board acknowledged), or not at all.
+void ElabController::flushAndEndFeed(std::function<void()> then)
+{
+    ElabExchange gs = ElabCtlLine::exchange(0, encode::flushBuffer(), Expect::AckNak);
+    ElabExchange cr = ElabCtlLine::exchange(0, encode::endOfFeed(), Expect::AckNak);
+    gs.droppable = cr.droppable = false;
+    m_line.chain({gs, cr}, true, then, [then](ErrorKind, const QString&) { then(); });
 }
 
 void ElabController::sendSafetyStop(std::function<void(bool)> done)
@@ -236,7 +254,19 @@ void ElabController::stop(RequestId id)
         finishError(id, ErrorKind::LinkDown, tr("not connected"));
         return;
     }
-    writeStop(id, [this, id](bool acknowledged, ErrorKind failure, const QString& why) {
+    // A contour stops as a feed hold does, every position kept (issue 47; PANIC stays the
+    // immediate stop). A STOP while one such stop is under way joins it.
+    const bool linkUp = linkState() == LinkState::Connected && !isClosing() && !isLosingLink();
+    if (!m_contourStops.isEmpty() || (linkUp && m_ops.contourStreaming() && !jogMayRun())) {
+        stopContour(id);
+        return;
+    }
+    writeStop(id, stopResult(id));
+}
+
+ElabController::StopDone ElabController::stopResult(RequestId id)
+{
+    return [this, id](bool acknowledged, ErrorKind failure, const QString& why) {
         if (acknowledged) {
             finishOk(id);
             return;
@@ -249,7 +279,106 @@ void ElabController::stop(RequestId id)
         finishError(id, failure == ErrorKind::None ? ErrorKind::Timeout : failure,
                     tr("stop sent, not acknowledged by the board (%1): %2")
                         .arg(why, mayStillBeMovingText()));
+    };
+}
+
+// STOP during a contour (issue 47 item 3). ForceStopMove would halt the board with single steps
+// in its buffer; ForceFlushBuffer then throws an unknown number of them away, and no reply says
+// how many pairs ran, so every axis would be unknown (ElabCtlMotion: a stopped stream loses its
+// axes). Instead no further pair is sent and the stream ends with EndOfFeed: the board runs
+// the pairs it holds, at most ElabCtlMotionOps::kContourLeadSeconds of ticks, at its feed rate
+// below the start ramp, "ohne dass Schrittverluste auftreten", and stands where the host's
+// count of the pairs it sent says. The stop is confirmed by a status read that shows the axes
+// at rest; if the board does not end the stream or come to rest, the documented stop follows
+// (contourStopFailed) and its positions are unknown, never claimed.
+void ElabController::stopContour(RequestId id)
+{
+    m_contourStops << id;
+    if (m_contourStops.size() > 1)
+        return; // joins the one under way
+    // A sequence under way (a pre-flight and its command) ends here; polls stay.
+    m_line.newEpoch();
+    m_queue.dropQueued(ErrorKind::Cancelled, tr("cancelled by stop"), false);
+    const quint64 epoch = m_line.epoch();
+    m_ops.stopContour([this, epoch](bool ended) {
+        if (m_contourStops.isEmpty())
+            return;
+        if (epoch != m_line.epoch()) {
+            finishContourStops(false);
+            return;
+        }
+        if (!ended) {
+            contourStopFailed(tr("the stopped contour did not end with EndOfFeed"));
+            return;
+        }
+        awaitContourStandstill(epoch, QDeadlineTimer(kContourStandstillMs));
     });
+    publishStatus();
+}
+
+void ElabController::awaitContourStandstill(quint64 epoch, QDeadlineTimer deadline)
+{
+    if (m_contourStops.isEmpty())
+        return;
+    ElabCtlLine::StatusRead how; // observes: a stop or panic leaves it queued
+    m_line.readStatus(
+        0, how,
+        [this, epoch, deadline] {
+            if (m_contourStops.isEmpty())
+                return;
+            if (epoch != m_line.epoch()) {
+                finishContourStops(false);
+            } else if ((m_line.axeWord() & (kMotionBits | kJogBits)) == 0) {
+                finishContourStops(true);
+            } else if (deadline.hasExpired()) {
+                contourStopFailed(tr("the board still moved %1 ms after the stopped contour "
+                                     "ended")
+                                      .arg(kContourStandstillMs));
+            } else {
+                QTimer::singleShot(kContourStandstillPollMs, this, [this, epoch, deadline] {
+                    awaitContourStandstill(epoch, deadline);
+                });
+            }
+        },
+        [this, epoch](ErrorKind, const QString& why) {
+            if (m_contourStops.isEmpty())
+                return;
+            if (epoch != m_line.epoch())
+                finishContourStops(false);
+            else
+                contourStopFailed(tr("no status after the stopped contour ended: %1").arg(why));
+        });
+}
+
+// The board did not end the stopped contour or come to rest: ForceStopMove, ForceFlushBuffer
+// and EndOfFeed as for any stream (writeStop), and the stream's axes are unknown from there
+// (ElabCtlMotion: a stopped stream) -- the host cannot know which pairs ran.
+void ElabController::contourStopFailed(const QString& why)
+{
+    qCWarning(lcElab) << why;
+    Q_EMIT errorOccurred(tr("%1: ForceStopMove sent, positions unknown").arg(why));
+    const QList<RequestId> ids = std::exchange(m_contourStops, {});
+    writeStop(
+        ids.first(),
+        [this, ids](bool acknowledged, ErrorKind failure, const QString& text) {
+            for (RequestId id : ids)
+                stopResult(id)(acknowledged, failure, text);
+        },
+        true);
+}
+
+// standstill: a status read showed the axes at rest; else a panic, reset or lost link came
+// first (it stopped the board its own way).
+void ElabController::finishContourStops(bool standstill)
+{
+    const QList<RequestId> ids = std::exchange(m_contourStops, {});
+    for (RequestId id : ids) {
+        if (standstill)
+            finishOk(id);
+        else
+            finishError(id, ErrorKind::Cancelled,
+                        tr("stop overtaken by a panic stop, a reset or a lost link"));
+    }
 }
 
 void ElabController::panic(RequestId id)

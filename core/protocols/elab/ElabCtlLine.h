@@ -16,6 +16,7 @@ struct ElabCtlHooks
     std::function<void()> statusRead;           // both words were read: motion bookkeeping
     std::function<bool(RequestId)> requireLink; // false: the request was failed LinkDown
     std::function<void(const QString&)> error;  // errorOccurred
+    std::function<void()> streamChanged;        // a <DC2> stream started or ended (may be null)
 };
 
 // The request sequences of the E-LAB adapter, built from exchanges on the queue: status

@@ -67,7 +67,10 @@ ElabCtlMotion::Outcome ElabCtlMotion::update(quint16 machineState, quint8 axeSta
         out.readRemaining = m_stopped && lost.isEmpty();
         break;
     case Kind::Stream:
-        // Steps flushed from the board's buffer after a stop were sent but never run.
+        // Steps flushed from the board's buffer after a stop were sent but never run, and no
+        // reply says how many (ForceStopMove then ForceFlushBuffer: close, link loss, a limit
+        // switch, a STOP whose contour did not end). A STOP during a contour ends the stream
+        // without them (ElabCtlMotionOps::stopContour): not stopped here, every axis kept.
         if (m_stopped)
             lost.unite(QSet<Axis>(m_values.keyBegin(), m_values.keyEnd()));
         break;

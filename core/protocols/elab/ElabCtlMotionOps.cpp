@@ -4,6 +4,7 @@
 #include <QTimer>
 #include <limits>
 #include <memory>
+#include <utility>
 
 namespace stepdeck::elab {
 
@@ -272,6 +273,7 @@ void ElabCtlMotionOps::startStream(RequestId id, const QVector<AxisVector>& step
             for (Axis a : m_stream.axes())
                 axes.insert(a, 1);
             accepted(ElabCtlMotion::Kind::Stream, axes);
+            streamChanged();
             pumpStream();
         });
     });
@@ -290,6 +292,10 @@ void ElabCtlMotionOps::pumpStream()
     if (!m_stream.isActive() || m_stream.chunkInFlight || m_stream.pausedByDevice)
         return;
     const RequestId id = m_stream.requestId;
+    if (m_stream.stopAsked) {
+        endStream(id); // STOP during a contour (stopContour): nothing more, not even if held
+        return;
+    }
     if (m_stream.waiting())
         return; // the contour's next move is not given yet: its wake-up pumps again
     if (m_stream.atEnd()) {
@@ -322,8 +328,12 @@ void ElabCtlMotionOps::pumpStream()
     auto delta = std::make_shared<Triple<qint64>>();
     ElabExchange ex = ElabCtlLine::exchange(id, {}, Expect::None);
     ex.wireRoom = 2; // one <DC2> pair
+    // A stop does not drop it: it builds nothing once the stream ended or stops, and a STOP
+    // during a contour keeps the stream alive until its end (stopContour).
+    ex.droppable = false;
     ex.build = [this, id, delta, lead] {
-        if (!m_stream.isActive() || m_stream.requestId != id || m_stream.pausedByDevice)
+        if (!m_stream.isActive() || m_stream.requestId != id || m_stream.pausedByDevice ||
+            m_stream.stopAsked)
             return QByteArray();
         qint64 pairs = m_line.queue().wireRoomBytes() / 2;
         if (m_stream.contour() && m_stream.sent() == 0) {
@@ -386,8 +396,8 @@ double ElabCtlMotionOps::contourAhead()
 bool ElabCtlMotionOps::contourNeedsWire() const
 {
     const std::shared_ptr<motion::ContourFeed>& contour = m_stream.contour();
-    if (!m_stream.isActive() || !contour || m_stream.pausedByDevice)
-        return false; // after an XOFF the board holds a full buffer
+    if (!m_stream.isActive() || !contour || m_stream.pausedByDevice || m_stream.stopAsked)
+        return false; // after an XOFF the board holds a full buffer; after a STOP none follow
     if (m_stream.sent() == 0 || !m_contourClock.isValid())
         return m_stream.total() > 0; // about to start; not while its first move is not given
     const double ahead = double(m_stream.sent() - m_contourBase) / contour->tickRate() -
@@ -401,22 +411,71 @@ void ElabCtlMotionOps::endStream(RequestId id)
 {
     // "Den Abschluss eines solchen Arbeitsvorgangs muss immer ein EndOfFeed Kommando sein."
     m_stream.chunkInFlight = true; // nothing more until EndOfFeed is answered
+    // Cut short by STOP (a STOP after the last pair leaves the contour whole).
+    const bool stopped = m_stream.stopAsked;
     ElabExchange end = ElabCtlLine::exchange(id, encode::endOfFeed(), Expect::AckNak);
-    end.onReply = [this, id](const Reply& r) {
+    end.droppable = false; // a STOP during a contour waits for it (stopContour)
+    end.onReply = [this, id, stopped](const Reply& r) {
+        if (!m_stream.isActive() || m_stream.requestId != id)
+            return; // ended otherwise meanwhile (abortStream: a stop, a limit switch)
         const qint64 sent = m_stream.sent();
         // A contour that ended short of a soft limit: ended, but the request fails with why.
         const QString fault = m_stream.contour() ? m_stream.contour()->fault() : QString();
         m_stream.clear();
         m_motion.endStream();
-        if (r.kind == Reply::Kind::Ack && !fault.isEmpty())
+        streamChanged();
+        const bool ack = r.kind == Reply::Kind::Ack;
+        if (ack && stopped)
+            m_line.hooks().fail(id, ErrorKind::Cancelled,
+                                tr("contour stopped after %1 ticks: the board runs out the ticks "
+                                   "it holds, every position stays known")
+                                    .arg(sent));
+        else if (ack && !fault.isEmpty())
             m_line.hooks().fail(id, ErrorKind::Refused, fault);
-        else if (r.kind == Reply::Kind::Ack)
+        else if (ack)
             m_line.hooks().ok(id, sent);
         else
             m_line.failWithNak(m_line.op(id), encode::endOfFeed());
+        notifyContourStopped(ack);
     };
     end.onError = [this](ErrorKind kind, const QString& why) { abortStream(kind, why); };
     m_line.submit(std::move(end), false);
+}
+
+void ElabCtlMotionOps::stopContour(std::function<void(bool ended)> done)
+{
+    if (!contourStreaming()) {
+        done(false);
+        return;
+    }
+    // Why not ForceStopMove: after an <XOFF> the buffer "enthält ... mit grosser
+    // Wahrscheinlichkeit noch Einzelschritte" (manual, ForceStopMove), ForceFlushBuffer
+    // discards an unknown number of them, and no reply says how many pairs the board ran
+    // (RequestRelPosition gives the steps left of a FastMove), so every axis of the stream
+    // would be unknown. Feed mode runs below the start ramp ("a. Der Arbeits-Mode": "Er kann
+    // jederzeit sofort gestartet und gestoppt werden, ohne dass Schrittverluste auftreten") and
+    // the board "leert seinen XYZ Step Buffer mit der vorgegebenen Feedrate" (SetFeedStepXYZ):
+    // without new pairs it stops where the last pair the host counted puts it, within
+    // kContourLeadSeconds. EndOfFeed closes the stream ("Den Abschluss eines solchen
+    // Arbeitsvorgangs muss immer ein EndOfFeed Kommando sein").
+    m_contourStopped.append(std::move(done));
+    m_stream.stopAsked = true;
+    // Ends it now, unless a chunk is on its way (its completion pumps again) or the board said
+    // XOFF (its XON does).
+    pumpStream();
+}
+
+void ElabCtlMotionOps::notifyContourStopped(bool ended)
+{
+    const QList<std::function<void(bool)>> waiting = std::exchange(m_contourStopped, {});
+    for (const std::function<void(bool)>& done : waiting)
+        done(ended);
+}
+
+void ElabCtlMotionOps::streamChanged()
+{
+    if (m_line.hooks().streamChanged)
+        m_line.hooks().streamChanged();
 }
 
 void ElabCtlMotionOps::abortStream(ErrorKind kind, const QString& message)
@@ -429,7 +488,9 @@ void ElabCtlMotionOps::abortStream(ErrorKind kind, const QString& message)
     m_stream.clear();
     m_motion.markStopped();
     m_motion.endStream();
+    streamChanged();
     m_line.hooks().fail(id, kind, text);
+    notifyContourStopped(false); // a STOP under way falls back to ForceStopMove (if still due)
 }
 
 void ElabCtlMotionOps::reference(RequestId id, const AxisVector& directions)

@@ -54,8 +54,43 @@ public:
     static constexpr double kContourReserveSeconds = 0.04;
     bool contourNeedsWire() const;
     // At most this much of a contour's ticks go beyond the board (issue 30: a feed hold, which
-    // stops giving ticks, takes effect within it whatever the board's buffer holds).
+    // stops giving ticks, takes effect within it whatever the board's buffer holds; issue 47:
+    // so does STOP during a contour, stopContour()).
     static constexpr double kContourLeadSeconds = 0.2;
+
+    // The wire's share of the status polls while a stream runs (issue 47 item 4). 57600 8N2
+    // carries 57600 / 11 = 5 236 characters/s towards the board. A tick is one <DC2> pair (2
+    // characters). A status read sends <HT> and <ENQ> (2 characters), and nothing else leaves
+    // until both replies (<HT>BB#, <ENQ>BBBB#: 10 characters) are in: with the host's
+    // turnaround about 16 character times of the line. kStreamPollsPerSecond is twice the 10/s
+    // a moving machine must be read at, so a poll deferred for the board's reserve
+    // (kContourReserveSeconds) or lost to noise still leaves 10/s.
+    static constexpr double kWireCharsPerSecond = 57600.0 / 11;
+    static constexpr int kStreamPollsPerSecond = 20;
+    static constexpr double kPollWireChars = 16;
+    // The highest tick rate of a contour (Capabilities::contourMaxTickRate, so the program
+    // check's rate and note are this too): 2 100 ticks/s = 4 200 characters/s, 80 % of the
+    // line; the polls take 320 characters/s; the rest (about 14 %) is what the chunks lose to
+    // their pacing in whole milliseconds with at most one chunk on its way
+    // (ElabExchangeQueue::kWireWindowBytes) and the headroom that rebuilds the board's reserve
+    // after each poll. At 2 400 ticks/s (the cap before issue 47) the stream used the line to
+    // its pacing's limit: its reserve never grew, and every poll waited for it.
+    // (tst_elabcontourpty counts the polls at the simulator at this rate.)
+    static constexpr double kContourMaxTickRate = 2100;
+    static_assert(2 * kContourMaxTickRate + kStreamPollsPerSecond * kPollWireChars <=
+                      0.87 * kWireCharsPerSecond,
+                  "a contour's ticks must leave the status polls their share of the wire");
+
+    // A contour streams (not a line or steps given whole).
+    bool contourStreaming() const { return m_stream.isActive() && m_stream.contour(); }
+    // STOP during a contour (issue 47 item 3), as a feed hold stops it: no further pair is
+    // built, the chunk on its way leaves whole, and the stream ends with EndOfFeed. The board
+    // runs the pairs it holds -- at most kContourLeadSeconds of ticks (one tick below 5
+    // ticks/s) -- and stands; every pair it received is one the host counted, so every
+    // position stays known. done(true): the EndOfFeed was acknowledged (standstill follows
+    // within the lead); done(false): the stream ended otherwise (NAK, no reply, a limit
+    // switch, panic, link loss) and the positions are what that path leaves.
+    void stopContour(std::function<void(bool ended)> done);
     // A motion the host started and has not yet seen end (any kind), a velocity axis that
     // still brakes after its rate 0 included.
     bool motionTracked() const { return m_motion.isActive() || !m_velocitySign.isEmpty(); }
@@ -84,6 +119,8 @@ private:
     void startStream(RequestId id, const QVector<AxisVector>& steps, const Triple<qint64>& line,
                      std::shared_ptr<motion::ContourFeed> contour = {});
     void endStream(RequestId id);
+    void streamChanged(); // the hook, once a stream started or ended
+    void notifyContourStopped(bool ended);
     void correctPositions(const AxisVector& stopped);
     // Validated non-zero steps, or nullopt when the request is already finished.
     std::optional<AxisVector> stepsToSend(RequestId id, const AxisVector& steps);
@@ -101,6 +138,7 @@ private:
     QElapsedTimer m_contourClock; // since the contour's first <DC2>, or since it ran dry
     qint64 m_contourBase = 0;     // the ticks sent when m_contourClock started
     bool m_leadWait = false;      // a pump waits for the board to run some of the lead
+    QList<std::function<void(bool)>> m_contourStopped; // stopContour() callers waiting
     ElabCtlMotion m_motion;
     ElabCtlStream m_stream;
     // Per axis the sign of the last non-zero velocity the board accepted, until a status read

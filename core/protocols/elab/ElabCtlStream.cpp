@@ -88,6 +88,7 @@ void ElabCtlStream::clear()
     m_sent = 0;
     pausedByDevice = false;
     chunkInFlight = false;
+    stopAsked = false;
     requestId = 0;
 }
 

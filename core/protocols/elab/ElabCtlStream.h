@@ -47,6 +47,9 @@ public:
     // Flow control from the board (XOFF/XON) and the chunk inside the transport.
     bool pausedByDevice = false;
     bool chunkInFlight = false;
+    // STOP during a contour (issue 47): no further pair is built; the stream ends with
+    // EndOfFeed once the chunk on its way has left (ElabCtlMotionOps::stopContour).
+    bool stopAsked = false;
     quint64 requestId = 0;
 
 private:

@@ -47,10 +47,13 @@ Capabilities capabilities()
     caps.spindleSpeedParameter = "spindle-rpm";
     // A contour is one <DC2> stream (manual, "SetFeedStepXYZ": the board empties its step
     // buffer at the feed rate, one vector per tick). 57600 8N2 carries 5 236 characters/s,
-    // 2 618 <DC2> pairs: 2 400 ticks/s leave room for the status polls.
+    // 2 618 <DC2> pairs; at most 2 100 ticks/s, so that the status polls keep their share of
+    // the wire while it streams (issue 47: at least 10 reads a second; the arithmetic is at
+    // ElabCtlMotionOps::kContourMaxTickRate). The program check takes the same number
+    // (ContourMoves::tickRate).
     caps.contourStream = true;
     caps.contourTickBelow = "start-speed";
-    caps.contourMaxTickRate = 2400;
+    caps.contourMaxTickRate = ElabCtlMotionOps::kContourMaxTickRate;
     return caps;
 }
 

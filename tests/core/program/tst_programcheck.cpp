@@ -130,26 +130,28 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << "G61 G20\nG28 X0\nG1 X1 F1600"
         << QStringList{"3:7: F1600 is 67733 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
-    // G64 (the default): the E-LAB runs the feed moves as one stream ticking at 2400/s, one step
-    // per tick at most: X (100 steps/mm) at most 24 mm/s, Y (200 steps/mm) 12 mm/s.
+    // G64 (the default): the E-LAB runs the feed moves as one stream ticking at 2100/s (the wire's
+    // share left after the status polls, issue 47), one step per tick at most: X (100 steps/mm)
+    // at most 21 mm/s, Y (200 steps/mm) 10.5 mm/s.
     QTest::newRow("contour: F beyond the tick, named with the highest")
         << "mill"
         << ""
         << "G28 X0\nG1 X10 F40000"
         << QStringList{"2:8: F40000 is too fast for the contour stream of controller \"table\": "
-                       "at its 2400 ticks/s (one step per tick at most) this move's highest feed "
-                       "is F1439.9"};
+                       "at its 2100 ticks/s (one step per tick at most) this move's highest feed "
+                       "is F1259.9"};
     QTest::newRow("contour: G20 converts F")
         << "mill"
         << ""
         << "G20\nG28 Y0\nG1 Y1 F30"
         << QStringList{"3:7: F30 is too fast for the contour stream of controller \"table\": at "
-                       "its 2400 ticks/s (one step per tick at most) this move's highest feed is "
-                       "F28.3"};
+                       "its 2100 ticks/s (one step per tick at most) this move's highest feed is "
+                       "F24.8"};
+    // F800 along the diagonal: Y (200 steps/mm) alone takes at most F630 at 2100 ticks/s.
     QTest::newRow("contour: the diagonal runs faster than either axis")
         << "mill"
         << ""
-        << "G28 X0 Y0\nG1 X10 Y10 F1000" << QStringList{};
+        << "G28 X0 Y0\nG1 X10 Y10 F800" << QStringList{};
     QTest::newRow("G1 below the Nanotec max-frequency")
         << "nanotec"
         << "X=0"

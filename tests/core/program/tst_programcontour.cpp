@@ -4,7 +4,8 @@
 // compared, tick by tick, with the ideal path worked out here (lines and a circle by their
 // arc length at F); the blocks are reported as their ticks pass; a pause holds at a block's
 // end with the board still exactly there; STOP and a lost link leave the board still with no
-// step after the stop.
+// step after the stop; STOP keeps every axis referenced, the host's count the board's (issue
+// 47).
 #include "ProgramRunnerTestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include <cmath>
@@ -24,6 +25,7 @@ private Q_SLOTS:
     void contour_feedHold_stopsOnThePathResumeGoesOnNoTickLost();
     void contour_abort_boardStillNoStepAfterTheStop();
     void contour_otherControllersLinkLost_failsLinkDownBoardStops();
+    void contour_stop_boardStillEveryAxisStaysReferenced();
 
 private:
     QPoint boardPosition() const;
@@ -31,6 +33,8 @@ private:
     QList<QPoint> executedPath() const; // after each executed step byte, from the first
     // The board received the stop, stands, and executes no vector over three status polls.
     void stoppedNoStepAfter();
+    // The board's last frames ended the stream: an EndOfFeed after its last <DC2> pair.
+    bool streamEndedAtBoard() const;
 };
 
 namespace {
@@ -71,10 +75,21 @@ qsizetype TestProgramContour::executedSteps() const
     });
 }
 
+bool TestProgramContour::streamEndedAtBoard() const
+{
+    const QList<QByteArray> frames = m_elab->frames();
+    qsizetype lastPair = -1;
+    for (qsizetype i = 0; i < frames.size(); ++i)
+        lastPair = frames.at(i).startsWith(elab::ctrl::DC2) ? i : lastPair;
+    return frames.lastIndexOf(elab::encode::endOfFeed()) > lastPair;
+}
+
 void TestProgramContour::stoppedNoStepAfter()
 {
     QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
-    QVERIFY(m_elab->receivedStop());
+    // The model's stop, or (a STOP during a contour, issue 47) the stream ended after its last
+    // pair: the board ran out what it held, as after a feed hold.
+    QVERIFY(m_elab->receivedStop() || streamEndedAtBoard());
     const qsizetype executed = executedSteps();
     QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
     QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
@@ -266,6 +281,50 @@ void TestProgramContour::contour_otherControllersLinkLost_failsLinkDownBoardStop
     stoppedNoStepAfter();
     if (QTest::currentTestFailed())
         return;
+}
+
+// Issue 47 item 3: STOP (the runner's abort, as the window's STOP does) during a contour on
+// referenced axes: the board stands after at most 0.25 s of ticks, no step after, and X and Y
+// stay referenced with the host's count where the board stands (before issue 47 every axis of
+// the board was unknown after it).
+void TestProgramContour::contour_stop_boardStillEveryAxisStaysReferenced()
+{
+    QVERIFY(run("G28 X0 Y0\nM30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    ControllerSession* table = m_machine->session("table");
+    const auto known = [table] {
+        bool all = true;
+        for (Axis a : {Axis::X, Axis::Y}) {
+            const AxisStatus s = table->status().axes.value(a);
+            all = all && s.referenced && s.positionKnown && !s.positionEstimated;
+        }
+        return all;
+    };
+    const auto host = [table] {
+        return QPoint(int(table->status().axes.value(Axis::X).position),
+                      int(table->status().axes.value(Axis::Y).position));
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(known(), 10000);
+    const QPoint hostOrigin = host();
+    const QPoint boardOrigin = boardPosition();
+    QVERIFY(run(zigzag(20)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    const qsizetype atStop = executedSteps();
+    m_runner->abort();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Aborted);
+    stoppedNoStepAfter();
+    if (QTest::currentTestFailed())
+        return;
+    const qsizetype after = executedSteps() - atStop;
+    QVERIFY2(after <= qsizetype(0.25 * kTick),
+             qPrintable(QStringLiteral("%1 ticks after the STOP").arg(after)));
+    QVERIFY(boardPosition().x() - boardOrigin.x() < 200 * 20); // short of the zigzag's end
+    QTRY_VERIFY_WITH_TIMEOUT(known(), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(host() - hostOrigin, boardPosition() - boardOrigin, 10000);
+    QVERIFY(known());
 }
 
 QTEST_MAIN(TestProgramContour)

@@ -5,6 +5,9 @@
 // (written to the tick rate), no overflow, the end exact.
 // A move given late makes the stream wait, not end; STOP ends it with the board still; a feed
 // speed other than the tick rate is refused before anything is sent.
+// Issue 47: STOP during a contour keeps every axis referenced, the board standing within the
+// stream's lead where the host counts it; at the highest tick rate the status polls still reach
+// the board at least 10 times a second.
 #include "TestSupport.h"
 #include "controller/SoftLimits.h"
 #include "motion/ContourFeed.h"
@@ -34,6 +37,8 @@ private Q_SLOTS:
     void contour_feedSpeedNotTheTickRate_refusedNothingSent();
     void contour_beyondSoftLimit_endsAtTheLimitRefusedWithReason();
     void contour_noMoveGivenYet_statusPollsGoOn();
+    void stop_duringContour_keepsReference();
+    void contour_topTickRate_statusPollsTenPerSecond();
 
 private:
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000);
@@ -344,6 +349,124 @@ void TestElabContourPty::contour_noMoveGivenYet_statusPollsGoOn()
     QCOMPARE(m_sim->executedStepBytes(), qint64(0));
     feed->close();
     QTRY_VERIFY_WITH_TIMEOUT(result(id).has_value(), 5000);
+}
+
+// Issue 47 item 3: STOP during a contour on referenced axes. At the board: no <DC2> pair after
+// the stream's EndOfFeed, the buffer run empty, no ForceStopMove or ForceFlushBuffer, the axes
+// standing after at most 0.25 s of ticks and no step over further polls. At the host: every
+// axis still referenced, its count the board's, not estimated.
+void TestElabContourPty::stop_duringContour_keepsReference()
+{
+    const QList<Axis> axes{Axis::X, Axis::Y, Axis::Z};
+    for (Axis a : axes)
+        m_sim->setReferencePosition(a, -500, 10); // short reference runs
+    CommandResult r = run([&](RequestId id) {
+        m_ctl->reference(id, {{Axis::X, -1}, {Axis::Y, -1}, {Axis::Z, -1}});
+    });
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    const auto referenced = [&] {
+        bool all = true;
+        for (Axis a : axes) {
+            const AxisStatus s = m_ctl->status().axes.value(a);
+            all = all && s.referenced && s.positionKnown && !s.positionEstimated;
+        }
+        return all;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(referenced(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 10000);
+    StepPosition from{};
+    StepPosition boardOrigin{};
+    for (Axis a : axes) {
+        from[wireIndex(a)] = m_ctl->status().axes.value(a).position;
+        boardOrigin[wireIndex(a)] = m_sim->position(a);
+    }
+    // Out and back on all three axes at 10 mm/s (at most 816 steps/s on X): 7 s in all.
+    auto feed = std::make_shared<ContourFeed>(ContourSteps(scale(), {}, from, kTickRate));
+    const Position out{10, 5, 5};
+    for (int i = 0; i < 6; ++i) {
+        const bool back = i % 2 == 1;
+        QVERIFY(feed->append(CanonicalMove::straight(3, back ? out : Position{},
+                                                     back ? Position{} : out, 10, i + 1))
+                    .isEmpty());
+    }
+    feed->close();
+    m_sim->clearStreamCounters();
+    m_sim->clearReceivedFrames();
+    const RequestId id = start([&](RequestId rid) { m_ctl->feedContour(rid, feed); });
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->executedStepBytes() >= qint64(kTickRate), 10000);
+    m_sim->position(Axis::X); // the board up to now
+    const qint64 atStop = m_sim->executedStepBytes();
+    const RequestId stopId = start([&](RequestId rid) { m_ctl->stop(rid); });
+    QTRY_VERIFY_WITH_TIMEOUT(result(stopId).has_value(), 5000);
+    QVERIFY2(result(stopId)->ok(), qPrintable(result(stopId)->message));
+    QTRY_VERIFY_WITH_TIMEOUT(result(id).has_value(), 5000);
+    QCOMPARE(result(id)->error, ErrorKind::Cancelled); // the contour did not finish
+    // Confirmed only once the board stood (a status read after the EndOfFeed).
+    QVERIFY(m_sim->standingStill());
+    const qint64 executed = m_sim->executedStepBytes();
+    QVERIFY2(executed - atStop <= qint64(0.25 * kTickRate),
+             qPrintable(QStringLiteral("%1 ticks after the STOP").arg(executed - atStop)));
+    QCOMPARE(m_sim->streamBuffered(), 0);
+    const QList<QByteArray> frames = m_sim->receivedFrames();
+    int lastPair = -1;
+    for (int i = 0; i < frames.size(); ++i)
+        lastPair = frames.at(i).startsWith(ctrl::DC2) ? i : lastPair;
+    const int end = int(frames.lastIndexOf(encode::endOfFeed()));
+    QVERIFY2(lastPair >= 0 && end > lastPair,
+             qPrintable(QStringLiteral("%1 %2").arg(lastPair).arg(end)));
+    QCOMPARE(m_sim->countReceived(encode::stopMove()), 0);
+    QCOMPARE(m_sim->countReceived(encode::flushBuffer()), 0);
+    // Every axis still referenced, the host's count where the board stands.
+    const CommandResult poll = run([&](RequestId rid) { m_ctl->refreshStatus(rid); });
+    QVERIFY2(poll.ok(), qPrintable(poll.message));
+    QVERIFY(referenced());
+    for (Axis a : axes)
+        QCOMPARE(m_ctl->status().axes.value(a).position,
+                 m_sim->position(a) - boardOrigin[wireIndex(a)]);
+    QVERIFY(m_sim->position(Axis::X) != boardOrigin[0]); // it did move
+    QSignalSpy polled(m_ctl.get(), &Controller::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polled.size() >= 3, 5000);
+    QCOMPARE(m_sim->executedStepBytes(), executed);
+    QVERIFY(m_sim->standingStill());
+    QVERIFY(referenced());
+}
+
+// Issue 47 item 4: a contour at the highest tick rate the model allows (the check's too), the
+// board's replies paced at 57600 8N2: RequestAxeState reaches the board at least 10 times per
+// second of the board's own time (the ticks it executed at that rate), counted at the board.
+void TestElabContourPty::contour_topTickRate_statusPollsTenPerSecond()
+{
+    const double top = elab::capabilities().contourMaxTickRate;
+    QCOMPARE(top, ElabCtlMotionOps::kContourMaxTickRate);
+    QVERIFY(top < 3000); // below the start speed written in init()
+    QVERIFY(writeFeedSpeed(qint64(top)));
+    m_sim->setPacing(true, lineSettings());
+    // 40 mm diagonally at 20 mm/s (1 414 steps/s on X and Y): 2.8 s.
+    auto feed = std::make_shared<ContourFeed>(ContourSteps(scale(), {}, {}, top));
+    QVERIFY(feed->append(CanonicalMove::straight(3, {}, {40, 40, 0}, 20, 1)).isEmpty());
+    feed->close();
+    m_sim->clearStreamCounters();
+    m_sim->clearReceivedFrames();
+    const QByteArray poll = encode::requestAxeState();
+    const RequestId id = start([&](RequestId rid) { m_ctl->feedContour(rid, feed); });
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->executedStepBytes() >= qint64(0.2 * top), 10000);
+    const qint64 ticks0 = m_sim->executedStepBytes();
+    const int polls0 = m_sim->countReceived(poll);
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->executedStepBytes() >= ticks0 + qint64(2 * top), 20000);
+    const qint64 ticks = m_sim->executedStepBytes() - ticks0;
+    const int polls = m_sim->countReceived(poll) - polls0;
+    const double seconds = double(ticks) / top;
+    QVERIFY2(polls >= 10 * seconds,
+             qPrintable(QStringLiteral("%1 status reads in %2 s of the board's ticks")
+                            .arg(polls)
+                            .arg(seconds)));
+    QTRY_VERIFY_WITH_TIMEOUT(result(id).has_value(), 20000);
+    QVERIFY2(result(id)->ok(), qPrintable(result(id)->message));
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->standingStill(), 10000);
+    QCOMPARE(m_sim->streamOverflows(), qint64(0));
+    QCOMPARE(m_sim->position(Axis::X), qint64(4000));
+    QCOMPARE(m_sim->position(Axis::Y), qint64(4000));
+    QCOMPARE(m_ctl->status().axes.value(Axis::X).position, qint64(4000));
 }
 
 QTEST_GUILESS_MAIN(TestElabContourPty)
