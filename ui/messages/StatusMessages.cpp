@@ -94,6 +94,14 @@ QString StatusMessages::currentText() const
     return m ? m->text : QString();
 }
 
+QString StatusMessages::text(Owner owner) const
+{
+    const auto it = m_messages.constFind(owner);
+    if (it == m_messages.cend() || it->expires <= QDateTime::currentDateTime())
+        return {};
+    return it->text;
+}
+
 QString StatusMessages::currentLine() const
 {
     const Message* m = newest();

@@ -38,6 +38,8 @@ public:
     void clearAll();
 
     QString currentText() const; // the newest live message, without its time
+    // The live message of owner (shown or covered by a newer one); empty without one.
+    QString text(Owner owner) const;
     QString currentLine() const; // "HH:mm:ss  text"
     Severity currentSeverity() const;
     // Every message shown, oldest first, at most kLogLimit (the oldest are dropped).

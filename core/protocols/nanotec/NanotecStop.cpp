@@ -121,6 +121,10 @@ void NanotecStop::stop(RequestId id)
     QMap<Axis, double> speeds;
     for (Axis a : speedMode)
         speeds[a] = qAbs(m_ctl.m_drives[a].jogApplied);
+    // A stop still confirming is taken over (NanotecStop.h): its request ends with this run's
+    // confirmation, not "cancelled" by the cancelAll() below, which drops its exchanges.
+    m_stopIds << id;
+    const quint64 run = ++m_stopRun;
     m_ctl.m_bus->cancelAll();
     m_ctl.m_closedLoop->abortAll(ErrorKind::Cancelled, tr("stopped"));
     const auto urgent = NanotecBus::Priority::Urgent;
@@ -136,15 +140,18 @@ void NanotecStop::stop(RequestId id)
     // Every drive, a silent one included: it may have stopped answering but still listen.
     for (const HostDrive& d : m_ctl.m_drives)
         steps << tolerant(m_link.exchange(d.axis, "S", {}, urgent, d.responding ? 2 : 0));
-    QList<Axis> encoderChecked;
+    // An older stop's drives still waiting for their encoder check are checked by this one.
+    QList<Axis> encoderChecked = m_stopEncoderChecked;
     for (Axis a : positioning) {
         // 6.2: no ramp; steps may be lost at speed, so the position is suspect until the
         // drive's encoder confirms it (confirmByEncoder).
         AxisStatus& st = m_ctl.mutableStatus().axes[a];
-        if (st.referenced && st.positionKnown && !st.positionEstimated)
+        if (st.referenced && st.positionKnown && !st.positionEstimated &&
+            !encoderChecked.contains(a))
             encoderChecked << a;
         st.referenced = st.positionKnown = false;
     }
+    m_stopEncoderChecked = encoderChecked;
     if (wait > NanotecJog::kMaxRampWaitMs)
         positioning << speedMode;
     for (Axis a : speedMode) {
@@ -158,11 +165,24 @@ void NanotecStop::stop(RequestId id)
     }
     if (!positioning.isEmpty())
         qCInfo(lcNanotec) << "stopped without ramp; positions suspect:" << positioning.size();
-    runSteps(steps, [this, id, encoderChecked](const Failure& f) {
+    runSteps(steps, [this, run, encoderChecked](const Failure& f) {
+        if (run != m_stopRun)
+            return; // a newer stop took this one over: it ends it
         if (!f.ok())
-            return m_ctl.finishWith(id, f);
-        confirmStopped(id, m_ctl.m_drives.keys(), tr("stop"), encoderChecked);
+            return finishStops(run, f);
+        confirmStopped([this, run](const Failure& done) { finishStops(run, done); },
+                       m_ctl.m_drives.keys(), tr("stop"), encoderChecked);
     });
+}
+
+void NanotecStop::finishStops(quint64 run, const Failure& f)
+{
+    if (run != m_stopRun)
+        return; // taken over by a newer stop, which ends these requests
+    const QList<RequestId> ids = std::exchange(m_stopIds, {});
+    m_stopEncoderChecked.clear();
+    for (RequestId id : ids)
+        m_ctl.finishWith(id, f);
 }
 
 void NanotecStop::panic(RequestId id)
@@ -172,6 +192,11 @@ void NanotecStop::panic(RequestId id)
     m_ctl.haltJogImmediately();
     for (HostDrive& d : m_ctl.m_drives)
         d.jogDesired = 0;
+    // A stop still confirming is taken over as by a newer stop: its request ends with the
+    // panic's confirmation, and after a panic no encoder check gives a position back.
+    const QList<RequestId> stops = std::exchange(m_stopIds, {});
+    ++m_stopRun;
+    m_stopEncoderChecked.clear();
     m_ctl.m_bus->cancelAll();
     m_ctl.m_bus->discardOutput(); // the stop must not wait behind queued bytes
     m_ctl.m_panic = true;
@@ -189,8 +214,14 @@ void NanotecStop::panic(RequestId id)
     r.address = kBroadcast; // '#*S': every drive on the bus stops at once (1.1, 6.2)
     r.body = "S";
     r.priority = NanotecBus::Priority::Urgent;
-    r.done = [this, id, restore](NanotecBus::Outcome, const Reply&) {
-        confirmStopped(id, m_ctl.m_drives.keys(), tr("emergency stop"));
+    r.done = [this, id, stops, restore](NanotecBus::Outcome, const Reply&) {
+        confirmStopped(
+            [this, id, stops](const Failure& f) {
+                m_ctl.finishWith(id, f);
+                for (RequestId taken : stops)
+                    m_ctl.finishWith(taken, f);
+            },
+            m_ctl.m_drives.keys(), tr("emergency stop"));
         for (Axis a : restore) {
             tolerant(
                 m_link.exchange(a, commandWithValue("o", m_ctl.m_drives[a].savedMaxFrequency)))(
@@ -200,7 +231,7 @@ void NanotecStop::panic(RequestId id)
     m_ctl.m_bus->submit(r);
 }
 
-void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& context,
+void NanotecStop::confirmStopped(Finish finish, QList<Axis> axes, const QString& context,
                                  QList<Axis> encoderChecked)
 {
     // Per drive: ready ('$' bit 0) means stopped; otherwise stop it individually, ask again.
@@ -236,19 +267,19 @@ void NanotecStop::confirmStopped(RequestId id, QList<Axis> axes, const QString& 
                 return done({}); // a drive may still move: no position is confirmed now
             confirmByEncoder(axis)(done);
         };
-    runSteps(steps, [this, id, unconfirmed, context](const Failure& f) {
+    runSteps(steps, [this, finish, unconfirmed, context](const Failure& f) {
         m_ctl.m_sweep.updateStatus();
         m_ctl.publishStatus();
         if (!f.ok())
-            return m_ctl.finishWith(id, f);
+            return finish(f);
         if (!unconfirmed->isEmpty()) {
             m_ctl.markMotionUnconfirmed();
-            return m_ctl.finishError(id, ErrorKind::Timeout,
-                                     tr("%1 sent; not confirmed by %2: %3")
+            return finish(
+                {ErrorKind::Timeout, tr("%1 sent; not confirmed by %2: %3")
                                          .arg(context, unconfirmed->join(QStringLiteral(", ")),
-                                              m_ctl.mayStillBeMovingText()));
+                                              m_ctl.mayStillBeMovingText())});
         }
-        m_ctl.finishOk(id);
+        finish({});
     });
 }
 

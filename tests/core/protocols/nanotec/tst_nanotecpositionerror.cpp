@@ -5,6 +5,9 @@
 // STOP of a positioning run ('S' has no ramp, 6.2) keeps the position only where the drive's
 // encoder confirms its count (issue 28, item 4), and a reference run clears a position error
 // itself instead of being refused.
+// A second stop while the first still confirms (issue 47 item 7: a program's abort right behind
+// the window's STOP) takes the first over: both end confirmed, never "'I' to drive 1 was
+// cancelled", and the encoder check the first was making is made by the second.
 #include "NanotecRig.h"
 
 using namespace stepdeck;
@@ -21,6 +24,8 @@ private Q_SLOTS:
     void stop_positioningRun_positionKeptWhereTheEncoderAgrees_data();
     void stop_positioningRun_positionKeptWhereTheEncoderAgrees();
     void reference_afterStopWithPositionError_clearsItAndReferences();
+    void stop_secondStopBackToBack_bothConfirmed_driveStands();
+    void stop_secondStopDuringTheEncoderCheck_firstTakenOver_positionKept();
 
 private:
     // Drive 1 (X) referenced at 0, then a long relative run stopped at full speed.
@@ -162,6 +167,87 @@ void TestNanotecPositionError::reference_afterStopWithPositionError_clearsItAndR
     QVERIFY(!decodeStatus(d->statusWord()).positionError);
     QCOMPARE(d->position(), qint64(0));
     QCOMPARE(d->encoderPosition(), qint64(0));
+}
+
+namespace {
+std::optional<CommandResult> resultOf(const QSignalSpy& finished, RequestId id)
+{
+    for (const QList<QVariant>& args : finished) {
+        const auto r = args.at(0).value<CommandResult>();
+        if (r.id == id)
+            return r;
+    }
+    return std::nullopt;
+}
+} // namespace
+
+void TestNanotecPositionError::stop_secondStopBackToBack_bothConfirmed_driveStands()
+{
+    NanotecRig rig;
+    QVERIFY(rig.connect());
+    NanotecDrive* d = rig.sim->drive(1);
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->moveRelative(id, {{Axis::X, 20000}}); }).ok());
+    QVERIFY(QTest::qWaitFor([&] { return d->speed() >= 999 && d->position() > 500; }, 5000));
+    QSignalSpy finished(rig.ctl, &Controller::requestFinished);
+    const RequestId first = ++rig.nextId;
+    const RequestId second = ++rig.nextId;
+    // As MainWindow::stopAll posts them: the window's STOP, then the program's abort. The
+    // second cancels the first's 'S' on the bus.
+    rig.ctl->stop(first);
+    rig.ctl->stop(second);
+    QTRY_VERIFY_WITH_TIMEOUT(resultOf(finished, first) && resultOf(finished, second), 10000);
+    const CommandResult r1 = *resultOf(finished, first);
+    const CommandResult r2 = *resultOf(finished, second);
+    QVERIFY2(r1.ok(), qPrintable(r1.message));
+    QVERIFY2(r2.ok(), qPrintable(r2.message));
+    // At the drive: it stands short of its target, and stays there.
+    QVERIFY(d->ready());
+    const qint64 stoppedAt = d->position();
+    QVERIFY(stoppedAt > 0 && stoppedAt < 20000);
+    QTest::qWait(200);
+    QVERIFY(d->ready());
+    QCOMPARE(d->position(), stoppedAt);
+    QVERIFY(!rig.ctl->status().motionUnconfirmed);
+}
+
+void TestNanotecPositionError::stop_secondStopDuringTheEncoderCheck_firstTakenOver_positionKept()
+{
+    NanotecRig rig;
+    QVERIFY(rig.connect());
+    NanotecDrive* d = rig.sim->drive(1);
+    d->handle("u1000"); // stopped on the spot: the encoder agrees with the count
+    QVERIFY(referenceX(rig));
+    QVERIFY(rig.run([&](RequestId id) { rig.ctl->moveRelative(id, {{Axis::X, 20000}}); }).ok());
+    QVERIFY(QTest::qWaitFor([&] { return d->speed() >= 999 && d->position() > 500; }, 5000));
+    QSignalSpy finished(rig.ctl, &Controller::requestFinished);
+    const RequestId first = ++rig.nextId;
+    const RequestId second = ++rig.nextId;
+    // The second stop comes the moment the first asks drive 1 for its encoder count ('I'):
+    // it cancels that read on the bus, as in issue 47's report.
+    bool posted = false;
+    QObject::connect(rig.ctl, &Controller::traffic, rig.ctl, [&](const TrafficRecord& r) {
+        if (posted || r.direction != TrafficRecord::Direction::Out || r.bytes != "#1I\r")
+            return;
+        posted = true;
+        QMetaObject::invokeMethod(
+            rig.ctl, [&] { rig.ctl->stop(second); }, Qt::QueuedConnection);
+    });
+    rig.ctl->stop(first);
+    QTRY_VERIFY_WITH_TIMEOUT(resultOf(finished, first) && resultOf(finished, second), 10000);
+    QVERIFY(posted);
+    const CommandResult r1 = *resultOf(finished, first);
+    const CommandResult r2 = *resultOf(finished, second);
+    QVERIFY2(r1.ok(), qPrintable(r1.message));
+    QVERIFY2(r2.ok(), qPrintable(r2.message));
+    // At the drive: it stands; the second stop asked 'I' again, and the count the encoder
+    // confirmed is kept (no reference run needed).
+    QVERIFY(d->ready());
+    QVERIFY(rig.countFrames("#1I\r") >= 2);
+    QVERIFY(qAbs(d->encoderPosition() - d->position()) <= 2);
+    const AxisStatus x = rig.ctl->status().axes.value(Axis::X);
+    QVERIFY(x.referenced);
+    QVERIFY(x.positionKnown);
+    QCOMPARE(x.position, d->position());
 }
 
 QTEST_GUILESS_MAIN(TestNanotecPositionError)
