@@ -3,6 +3,7 @@
 #include "MachineReferenceRun.h"
 #include "MachineSetup.h"
 #include "MachineSimulation.h"
+#include "MachineSwitchOff.h"
 #include "protocols/Registry.h"
 #include <utility>
 
@@ -57,7 +58,8 @@ void simulateMachine(const MachineDescription& d, const MachineController& c,
 } // namespace
 
 Machine::Machine(QObject* parent)
-    : QObject(parent), m_references(std::make_unique<MachineReferenceRun>(*this))
+    : QObject(parent), m_references(std::make_unique<MachineReferenceRun>(*this)),
+      m_switchOff(std::make_unique<MachineSwitchOff>(*this))
 {}
 
 Machine::~Machine()
@@ -113,6 +115,7 @@ void Machine::destroy()
     for (auto& s : m_sessions)
         s->disconnect(this);
     delete std::exchange(m_setup, nullptr); // before the sessions it listens to
+    m_switchOff->cancel();
     m_jogSessions.clear();
     m_targetJogs.clear(); // before the sessions they send to
     for (auto& s : m_sessions) {
@@ -167,6 +170,7 @@ QMap<QString, RequestId> Machine::stop()
         ids.insert(controllerIdOf(s.get()), s->stop());
     releaseTargetJogs(); // no further jog targets (a target under way ends by itself)
     m_references->fail(nullptr, tr("referencing stopped"), false);
+    switchOffSpindleAndCoolant(); // LinuxCNC's abort: once the axes stand
     return ids;
 }
 
@@ -177,7 +181,18 @@ QMap<QString, RequestId> Machine::panic()
         ids.insert(controllerIdOf(s.get()), s->panic());
     releaseTargetJogs();
     m_references->fail(nullptr, tr("referencing stopped by the panic stop"), false);
+    switchOffSpindleAndCoolant(); // LinuxCNC's emergency stop
     return ids;
+}
+
+void Machine::switchOffSpindleAndCoolant()
+{
+    m_switchOff->start();
+}
+
+bool Machine::isSwitchingOff() const
+{
+    return m_switchOff->isRunning();
 }
 
 void Machine::watch(const QString& controllerId, ControllerSession* session)
@@ -189,12 +204,14 @@ void Machine::watch(const QString& controllerId, ControllerSession* session)
     connect(session, &ControllerSession::statusChanged, this, [this, session] {
         onStatus(session);
         m_references->onStatus(session);
+        m_switchOff->onStatus(session);
         Q_EMIT statusChanged();
     });
     connect(session, &ControllerSession::requestFinished, this,
             [this, session](const CommandResult& r) {
                 onResult(session, r);
                 m_references->onResult(session, r);
+                m_switchOff->onResult(session, r);
             });
 }
 
@@ -203,7 +220,8 @@ void Machine::onLinkState(const QString& controllerId, LinkState state, const QS
     Q_EMIT statusChanged();
     if (state != LinkState::Lost)
         return;
-    const ControllerSession* lost = session(controllerId);
+    ControllerSession* lost = session(controllerId);
+    m_switchOff->onLinkLost(lost);
     stopAllBut(lost);
     const QString message = tr("controller \"%1\" lost its link (%2): the other controllers were "
                                "told to stop")

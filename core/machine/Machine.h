@@ -14,6 +14,7 @@ namespace stepdeck::machine {
 
 class MachineReferenceRun;
 class MachineSetup;
+class MachineSwitchOff;
 
 // How a shown position is known (docs/machines.md): read back or confirmed by a reference
 // run, estimated by the host, or unknown until the axis is referenced.
@@ -63,8 +64,15 @@ public:
     void close();
     // Both return each controller's request (controller id -> id), so that a caller can wait
     // for the acknowledgements; nothing is awaited here.
+    // Both also switch the spindle and the coolant off (switchOffSpindleAndCoolant), as
+    // LinuxCNC's abort and emergency stop do (issue 47).
     QMap<QString, RequestId> stop();
     QMap<QString, RequestId> panic();
+    // Spindle and coolant off on every connected controller that has them, each controller's
+    // once its axes stand (the E-LAB board takes SetSpindleRPM and SetCoolOnOff only at
+    // standstill). Ends with spindleAndCoolantOff; a call while one runs starts it anew.
+    void switchOffSpindleAndCoolant();
+    bool isSwitchingOff() const;
 
     // Positioning in the axes' units (absolute or relative). Checked as a whole first: every
     // axis known, its controller connected, an absolute target only on a referenced axis,
@@ -119,9 +127,13 @@ Q_SIGNALS:
     // A controller that jogs by targets refused the next target (position unknown, a soft
     // limit, an end switch): its jog ended; the message says why.
     void jogRefused(const QString& controllerId, const QString& message);
+    // switchOffSpindleAndCoolant() ended: every controller acknowledged (ok), or why not (the
+    // message names the controller; the operator must switch it off by hand).
+    void spindleAndCoolantOff(bool ok, const QString& message);
 
 private:
     friend class MachineReferenceRun; // the run reaches the sessions as the machine does
+    friend class MachineSwitchOff;    // likewise
 
     // One controller's share of a move: sent, then (for models whose move request ends when
     // the device accepted it) settling until a fresh status shows its axes at rest.
@@ -188,6 +200,7 @@ private:
     void releaseTargetJogs();
     quint64 m_lastMove = 0;
     std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
+    std::unique_ptr<MachineSwitchOff> m_switchOff;     // spindle and coolant off after a stop
     MachineSetup* m_setup = nullptr;     // the controllers' setups, written on connect (a child)
     ControllerSession* m_lent = nullptr; // not owned (lendSession)
 };

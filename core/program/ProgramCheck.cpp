@@ -173,23 +173,29 @@ private:
     QList<Rapid> m_rapids;
 };
 
-// The walk of a check over a reader (the program's blocks, or the one pass over its text).
+// The walk of a check over a reader (the program's blocks, or the one pass over its text) from
+// its block `start` (-1: none, *errors says why).
+void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
+              const CheckProgress& progress, CheckErrors* errors, ProgramCheckResult* result)
+{
+    if (start >= 0) {
+        FastSpeedPutBack putBack(facts);
+        ProgramSimulation simulation(facts, &reader, errors);
+        simulation.setFirstVisit([&putBack](const ProgramBlock& b) { putBack.visit(b); });
+        result->cancelled = !simulation.run(start, &result->preview, progress);
+        putBack.report(errors);
+    }
+    if (!reader.error().isEmpty())
+        *errors << ProgramError{0, 0, reader.error()};
+    result->errors = errors->take();
+}
+
 void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
           const CheckProgress& progress, ProgramCheckResult* result)
 {
-    ProgramPreview& preview = result->preview;
     CheckErrors errors;
     const int start = startIndex(reader, fromLine, &errors);
-    if (start >= 0) {
-        FastSpeedPutBack putBack(facts);
-        ProgramSimulation simulation(facts, &reader, &errors);
-        simulation.setFirstVisit([&putBack](const ProgramBlock& b) { putBack.visit(b); });
-        result->cancelled = !simulation.run(start, &preview, progress);
-        putBack.report(&errors);
-    }
-    if (!reader.error().isEmpty())
-        errors << ProgramError{0, 0, reader.error()};
-    result->errors = errors.take();
+    walkFrom(reader, facts, start, progress, &errors, result);
 }
 
 } // namespace
@@ -289,6 +295,29 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
         return result;
     ProgramReader reader(program);
     walk(reader, facts, fromLine, progress, &result);
+    if (result.ok())
+        result.program = program;
+    return result;
+}
+
+ProgramCheckResult ProgramCheck::checkRest(const Program& program, const MachineFacts& facts,
+                                           int fromBlock, const CheckProgress& progress)
+{
+    ProgramCheckResult result;
+    result.preview.lines = program.expansion ? program.expansion->sourceLines : program.lines;
+    if (program.expansion && refuseForExpansion(program.expansion.get(), facts, 1, &result.errors))
+        return result;
+    ProgramReader reader(program);
+    const ProgramBlock* first = reader.at(fromBlock);
+    if (first && reader.enclosingRepeat(fromBlock) >= 0) {
+        result.errors << ProgramError{first->line, 1,
+                                      tr("the run holds inside a repeat, whose passes a check "
+                                         "from here cannot count: the new offsets cannot be "
+                                         "checked for the rest")};
+        return result;
+    }
+    CheckErrors errors; // no block left (first null): nothing left to refuse
+    walkFrom(reader, facts, first ? fromBlock : -1, progress, &errors, &result);
     if (result.ok())
         result.program = program;
     return result;

@@ -145,6 +145,13 @@ public:
     // A parsed program (its blocks read again from its source).
     static ProgramCheckResult check(const Program& program, const MachineFacts& facts,
                                     int fromLine = 1, const CheckProgress& progress = {});
+    // The rest of a run that holds (issue 47: offsets or tools changed while it held at M0 or
+    // M6): from the program's block `fromBlock` (ProgramReader's index), the axes where the
+    // facts put them. Refused inside a repeat (its passes are not counted from a block), and
+    // for a program in LinuxCNC's language whose offsets changed (its values were worked out
+    // against the old ones).
+    static ProgramCheckResult checkRest(const Program& program, const MachineFacts& facts,
+                                        int fromBlock, const CheckProgress& progress = {});
     // The one pass (issue 29): the text parsed and checked as it is read, in bounded memory
     // whatever its length; result.program is the program when it parsed. The parser's errors,
     // where there are any, are the result's errors (the check's are then left out).

@@ -6,6 +6,7 @@
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
 #include "ProgramReader.h"
+#include "RunFromLine.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include <algorithm>
@@ -92,10 +93,9 @@ ProgramCheckResult ProgramRunner::checkForStart(const Program& program, const Ma
     return ProgramCheck::check(program, facts, fromLine, progress);
 }
 
-namespace {
-// What can change on an open machine between a check and the start: where the axes stand and
-// which are known, what the devices hold, the offsets and tools the run takes. The description,
-// models and capabilities are the machine's own for as long as it is open.
+// Where the axes stand and which are known, what the devices hold, the offsets and tools the
+// run takes. The description, models and capabilities are the machine's own for as long as it
+// is open.
 bool sameStartFacts(const MachineFacts& a, const MachineFacts& b)
 {
     return a.knownPositions == b.knownPositions && a.knownParameters == b.knownParameters &&
@@ -103,7 +103,6 @@ bool sameStartFacts(const MachineFacts& a, const MachineFacts& b)
            a.activeSystem == b.activeSystem && a.tools == b.tools &&
            a.description.axes.size() == b.description.axes.size();
 }
-} // namespace
 
 bool ProgramRunner::startChecked(const Program& program, int fromLine,
                                  const MachineFacts& checkedFacts,
@@ -142,7 +141,12 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
                                         : reader->error()}};
         return false;
     }
+    m_prelude = first > 0 ? RunFromState::before(*reader, first).switches(reader->at(first)->line)
+                          : QList<ProgramBlock>{};
     m_reader = std::move(reader);
+    m_program = program;
+    m_restChanged = false;
+    m_endSwitching = false;
     m_block = ProgramBlock{};
     m_preview = checked.preview;
     resetRun(facts);
@@ -200,6 +204,8 @@ void ProgramRunner::connectMachine()
                              &ProgramRunner::onMotionFinished);
     m_connections << connect(m_machine, &machine::Machine::controllerFailed, this,
                              &ProgramRunner::onControllerFailed);
+    m_connections << connect(m_machine, &machine::Machine::spindleAndCoolantOff, this,
+                             &ProgramRunner::onSwitchedOff);
     for (const machine::MachineController& c : m_machine->description().controllers) {
         ControllerSession* s = m_machine->session(c.id);
         const QString id = c.id;
@@ -260,6 +266,11 @@ void ProgramRunner::resume()
     }
     if (m_state != RunState::Paused)
         return;
+    if (restNeedsCheck()) {
+        const MachineFacts facts = restFacts();
+        resumeChecked(facts, ProgramCheck::checkRest(m_program, facts, restBlock()));
+        return;
+    }
     if (std::exchange(m_feedHeld, false) && m_contour) {
         m_prompt.clear();
         setState(RunState::Running);
@@ -280,6 +291,11 @@ void ProgramRunner::step()
 {
     if (m_state != RunState::Paused)
         return;
+    if (restNeedsCheck()) {
+        const MachineFacts facts = restFacts();
+        resumeChecked(facts, ProgramCheck::checkRest(m_program, facts, restBlock()), true);
+        return;
+    }
     if (std::exchange(m_feedHeld, false) && m_contour) {
         // The rest of the moves already appended is the step; then it holds.
         m_pauseAsked = true;
@@ -339,6 +355,13 @@ QStringList ProgramRunner::controllersWithoutStop() const
 
 void ProgramRunner::runNext()
 {
+    if (!m_prelude.isEmpty() && m_state == RunState::Running && !m_aborting) {
+        // Run from line: what the lines before it switched on, before its first block.
+        m_block = m_prelude.takeFirst();
+        Q_EMIT blockStarted(m_block.line, m_block.text);
+        startSwitch(m_block, [this] { runNext(); });
+        return;
+    }
     while (m_state == RunState::Running && !m_aborting) {
         if (m_contour && !m_contour->isClosed() && !m_contour->hasRoom())
             return; // ContourRun::roomForMoves calls again
@@ -415,7 +438,7 @@ void ProgramRunner::blockDone()
         m_coordinates.advance(block, m_machine->description(), &m_programmed);
     Q_EMIT blockFinished(block.line);
     if (block.kind == BlockKind::End) {
-        finishProgram();
+        finishProgram(true);
         return;
     }
     const bool operatorStop = waitsForOperator(block.kind, m_optionalStops);
@@ -430,16 +453,42 @@ void ProgramRunner::blockDone()
     runNext();
 }
 
-void ProgramRunner::finishProgram()
+void ProgramRunner::finishProgram(bool programEnd)
 {
-    // The fast speeds a G1 changed go back before the run says it finished.
+    // The fast speeds a G1 changed go back before the run says it finished; at M2/M30 the
+    // spindle and the coolant go off then, as LinuxCNC's program end switches them off (a
+    // Fusion 360 post ends "G0 Z15 / M30" with no M5). A program that runs out without M2 (an
+    // MDI line) leaves them as they are.
     m_requests.clear();
     const QMap<RequestId, QString> writes = m_rates->restore();
     for (auto it = writes.cbegin(); it != writes.cend(); ++it)
         m_requests.insert(it.key());
-    m_afterRequests = [this] { end(RunState::Finished, tr("finished")); };
+    const auto then = [this, programEnd] {
+        if (!programEnd) {
+            end(RunState::Finished, tr("finished"));
+            return;
+        }
+        m_spindleOn = false;
+        m_endSwitching = true;
+        m_machine->switchOffSpindleAndCoolant();
+        if (!m_machine->isSwitchingOff()) // nothing to switch on this machine
+            onSwitchedOff(true, {});
+    };
+    m_afterRequests = then;
     if (m_requests.isEmpty())
+        then();
+}
+
+void ProgramRunner::onSwitchedOff(bool ok, const QString& message)
+{
+    if (!std::exchange(m_endSwitching, false) || m_state != RunState::Running || m_aborting)
+        return;
+    if (ok) {
         end(RunState::Finished, tr("finished"));
+        return;
+    }
+    m_failureKind = ErrorKind::Timeout;
+    end(RunState::Failed, lineText(message));
 }
 
 void ProgramRunner::fail(ErrorKind kind, const QString& message)
@@ -472,6 +521,9 @@ void ProgramRunner::end(RunState state, const QString& message)
     dropContour();
     m_heldBlock = false;
     m_feedHeld = false;
+    m_endSwitching = false;
+    m_restChanged = false;
+    m_prelude.clear();
     m_requests.clear();
     m_afterRequests = nullptr;
     if (state != RunState::Finished && m_rates)

@@ -35,7 +35,10 @@ enum class RunState {
 };
 
 QString runStateText(RunState state); // "running", ... (translated, for screens and the CLI)
-bool isEnded(RunState state);         // Finished, Failed, Aborted
+// What can change on an open machine between a check and the start (or the resume that took
+// it): the positions, what the devices hold, the offsets and tools.
+bool sameStartFacts(const MachineFacts& a, const MachineFacts& b);
+bool isEnded(RunState state); // Finished, Failed, Aborted
 
 // Runs a checked program on a machine (issue 20, docs/programs.md "Running"), one block at a
 // time: a block starts only when the devices confirmed the previous one (arrival and
@@ -60,7 +63,8 @@ public:
 
     // Checks the program against the machine as it stands (ProgramCheck) and starts it at the
     // first block on or after fromLine (the modal state is the block's own, rebuilt by the
-    // parser from the lines before it). stepOnly: run one block, then pause. False with
+    // parser from the lines before it; the spindle and coolant those lines left on are
+    // switched on first, RunFromState). stepOnly: run one block, then pause. False with
     // *errors when the check fails or a program runs already: nothing is sent.
     bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
                bool stepOnly = false);
@@ -79,15 +83,18 @@ public:
     // one): taken at start() for the whole run, so that a zero set while the run holds does
     // not move the rest of the path. G10 changes the run's copy and says so
     // (coordinateSystemSet).
-    void setCoordinateSystems(const CoordinateSystems& systems, int active)
-    {
-        m_nextSystems = systems;
-        m_nextActive = active;
-    }
+    //
+    // While the run holds (Paused) they are for the rest of this run too (issue 47: a touch-off
+    // at M6 or M0, by the DRO's Zero or a G10 L20): restNeedsCheck() then, and resume() and
+    // step() first check the rest of the program with them from the held block, the axes where
+    // they stand now, and go on only if that check passes; else the run stays held and
+    // resumeRefused says why.
+    void setCoordinateSystems(const CoordinateSystems& systems, int active);
     // Told how far start()'s check is (a long program takes seconds); it may cancel it.
     void setCheckProgress(CheckProgress progress) { m_checkProgress = std::move(progress); }
     // The machine's tool table (G43's lengths, M6's prompts), taken at start().
-    void setToolTable(const ToolTable& tools) { m_nextTools = tools; }
+    // While the run holds, as setCoordinateSystems (a tool's length measured at M6).
+    void setToolTable(const ToolTable& tools);
     // Only G54's offsets, G54 active.
     void setWorkOffsets(const QMap<QString, double>& offsets)
     {
@@ -120,9 +127,23 @@ public:
     // time.
     void setFeedOverride(double percent);
     double feedOverride() const { return m_feedOverride * 100; }
-    void resume(); // from Paused: on with the next block; while a pause is pending: withdrawn
-    void step();   // from Paused: run one block, then pause again
-    void abort();  // stop every controller; ends Aborted once the axes stand
+    // From Paused: on with the next block; while a pause is pending: withdrawn. With
+    // restNeedsCheck(), the rest is checked first, here on the caller's thread (a front end that
+    // must not wait checks restFacts() from restBlock() elsewhere and calls resumeChecked()).
+    void resume();
+    bool restNeedsCheck() const { return m_restChanged && m_state == RunState::Paused; }
+    MachineFacts restFacts() const; // the machine now, with the offsets and tools given while held
+    int restBlock() const;          // the block the rest's check starts at (the next one)
+    const Program& program() const { return m_program; }
+    // Goes on with the rest checked (ProgramCheck::checkRest) as restFacts() from restBlock();
+    // refused (false, and
+    // resumeRefused with the reason) when the check failed, the machine changed meanwhile, or
+    // the run holds where the rest cannot be checked from a block (inside a repeat, an arc, a
+    // cycle or a feed hold, with a G92 offset in effect). stepOnly: as step().
+    bool resumeChecked(const MachineFacts& checkedFacts, const ProgramCheckResult& checked,
+                       bool stepOnly = false);
+    void step();  // from Paused: run one block, then pause again
+    void abort(); // stop every controller; ends Aborted once the axes stand
 
     RunState state() const { return m_state; }
     int currentLine() const; // the block running or about to run (0: none)
@@ -153,6 +174,11 @@ Q_SIGNALS:
     // work zero per axis): the window keeps them for the next runs, as LinuxCNC does.
     void coordinateSystemSet(int system, const QMap<QString, double>& offsets);
     void finished(stepdeck::program::RunState state, const QString& message);
+    // resume() or step() with offsets changed while held: the rest's check failed, or cannot
+    // be made where the run holds; the run stays held.
+    void resumeRefused(const QString& reason);
+    // The rest of the run takes the offsets and tools given while it held (its check passed).
+    void restChecked(const QString& message);
 
 private:
     struct Loop
@@ -167,7 +193,11 @@ private:
     void runNext();
     bool advance(); // onto the next block that does something; false at the end
     void blockDone();
-    void finishProgram();
+    void finishProgram(bool programEnd = false); // programEnd: M2/M30, spindle and coolant off
+    void onSwitchedOff(bool ok, const QString& message); // M2/M30: spindle and coolant off
+    QString restUncheckable() const; // why the rest cannot be checked from a block (empty: can)
+    void takeRest(const MachineFacts& facts); // the new offsets and tools, the axes as they stand
+    void go(bool stepOnly);                   // on from Paused (resume / step)
     void fail(ErrorKind kind, const QString& message);
     void failSoon(ErrorKind kind, const QString& message); // once the signal emission is over
     void end(RunState state, const QString& message);
@@ -214,8 +244,14 @@ private:
 
     machine::Machine* m_machine;
     std::unique_ptr<ProgramReader> m_reader; // the running program's blocks, read as it goes
-    ProgramBlock m_block;                    // the block at m_index
-    CoordinateSystems m_nextSystems;         // setCoordinateSystems()
+    Program m_program;                       // the running program (the rest's check reads it)
+    bool m_restChanged = false;  // offsets or tools given while held, not yet checked for the rest
+    bool m_endSwitching = false; // M2/M30 or the end: waiting for spindle and coolant off
+    // Run from line (issue 47 item 5): the spindle and coolant the lines before it switched on,
+    // switched before its first block (RunFromState).
+    QList<ProgramBlock> m_prelude;
+    ProgramBlock m_block;        // the block at m_index
+    CoordinateSystems m_nextSystems; // setCoordinateSystems()
     int m_nextActive = 0;
     ToolTable m_nextTools;
     CheckProgress m_checkProgress;

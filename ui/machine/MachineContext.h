@@ -137,6 +137,8 @@ Q_SIGNALS:
     void machineChanged(); // a machine was opened or closed
     // A controller of the machine failed; the others were told to stop (Machine).
     void machineControllerFailed(const QString& controllerId, const QString& message);
+    // After a stop, a panic or M2/M30: spindle and coolant off, or why not (Machine).
+    void machineSpindleAndCoolantOff(bool ok, const QString& message);
     void machineStatusChanged();
     // The machine refused or ended a jog of a controller (Machine::jogRefused: a jog by
     // targets whose axis position is unknown, a target the controller refused).

@@ -1,4 +1,5 @@
 #pragma once
+#include "messages/StatusMessages.h"
 #include "model/CommandResult.h"
 #include <QMap>
 #include <QObject>
@@ -8,15 +9,17 @@ namespace stepdeck::ui {
 
 class MachineContext;
 class MachineStopWatch;
-class StatusMessages;
 
 // What the main window does with a machine of several controllers (issue 19), kept out of
 // MainWindow: opening a machine file (an invalid one is reported naming the field, nothing
 // is opened), STOP and PANIC to every controller at once with a message that names the
 // controllers that cannot be stopped, the failure of one controller, and the window title.
-// After STOP or PANIC the message first says it was sent, then -- only once every controller
-// acknowledged its request and reported standstill (MachineStopWatch) -- that the machine
-// stopped, or names the controller that did not confirm and why.
+// After STOP or PANIC the message first says it was sent, then -- only once a status read of
+// every controller after its request reported standstill (MachineStopWatch) -- that the
+// machine stopped, or names the controller that did not confirm and why. That "not confirmed"
+// line (issue 47 item 7) is no longer shown once the devices have confirmed standstill since:
+// a later status read (MachineStopWatch::confirmedLater), a reference run that ended well, or
+// a later STOP or PANIC that was confirmed.
 class MachineControl : public QObject
 {
     Q_OBJECT
@@ -42,10 +45,17 @@ public:
 private:
     QString notStoppedText(const QStringList& unstoppable) const;
     enum class Kind { Stop, Panic };
+    static StatusMessages::Owner ownerOf(Kind kind); // where its messages go
     void follow(Kind kind, const QMap<QString, RequestId>& requests, const QStringList& stoppable,
                 const QStringList& unstoppable);
-    void onConfirmed();
+    void onConfirmed(const QStringList& controllers);
     void onNotConfirmed(const QString& controllerId, const QString& reason);
+    void onConfirmedLater(const QStringList& controllers);
+    void onMachineChanged();
+    // The "not confirmed" line, while it is still the one its owner shows (nothing replaced it
+    // and it has not expired).
+    bool notConfirmedShown() const;
+    void clearNotConfirmed(); // the line goes (if still shown) and is no longer followed
 
     MachineContext* m_context;
     StatusMessages* m_messages;
@@ -54,6 +64,16 @@ private:
     Kind m_kind = Kind::Stop;
     QStringList m_stoppable;
     QStringList m_unstoppable;
+    // The "not confirmed" line shown last (empty text: none followed).
+    struct NotConfirmed
+    {
+        Kind kind = Kind::Stop;
+        StatusMessages::Owner owner = StatusMessages::Owner::General;
+        QString text;
+        QStringList controllers; // those that had not confirmed
+    };
+    NotConfirmed m_notConfirmed;
+    QMetaObject::Connection m_referenceConnection; // the open machine's referenceFinished
 };
 
 } // namespace stepdeck::ui

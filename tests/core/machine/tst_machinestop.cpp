@@ -8,6 +8,8 @@
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
+#include "protocols/elab/ElabCodec.h"
+#include "protocols/elab/ElabSimulator.h"
 #include "protocols/nanotec/NanotecSimulator.h"
 #include <QSignalSpy>
 #include <QtTest>
@@ -22,6 +24,8 @@ class TestMachineStop : public QObject
 private Q_SLOTS:
     void stop_midMove_absoluteMoveLandsWhereTheDeviceSays_data();
     void stop_midMove_absoluteMoveLandsWhereTheDeviceSays();
+    void stopOrPanic_spindleAndCoolantOn_boardSwitchesThemOffOnceStanding_data();
+    void stopOrPanic_spindleAndCoolantOn_boardSwitchesThemOffOnceStanding();
 };
 
 void TestMachineStop::stop_midMove_absoluteMoveLandsWhereTheDeviceSays_data()
@@ -117,6 +121,65 @@ void TestMachineStop::stop_midMove_absoluteMoveLandsWhereTheDeviceSays()
     QCOMPARE(device.position(Axis::X) - zero,
              qint64(100)); // at the device, without a new reference
     QCOMPARE(m.axisStatus(x).steps, qint64(100));
+}
+
+// Issue 47, item 1: STOP and PANIC switch spindle and coolant off, as LinuxCNC's abort and
+// emergency stop do, after the axes stand (the board takes <SOH> and <SI> only at standstill).
+// Asserted at the simulated board: its relays, and that the switch-off frames came after the
+// stop and while nothing moved.
+void TestMachineStop::stopOrPanic_spindleAndCoolantOn_boardSwitchesThemOffOnceStanding_data()
+{
+    QTest::addColumn<bool>("panic");
+    QTest::newRow("STOP") << false;
+    QTest::newRow("PANIC") << true;
+}
+
+void TestMachineStop::stopOrPanic_spindleAndCoolantOn_boardSwitchesThemOffOnceStanding()
+{
+    QFETCH(bool, panic);
+    test::PtyDevice device("elab");
+    const auto board = [&] { return static_cast<elab::ElabSimulator*>(device.sim()); };
+    Machine m;
+    QString error;
+    QVERIFY2(m.create(MachineDescription::singleController(*findModel("elab"), device.path(), {}),
+                      &error),
+             qPrintable(error));
+    m.open();
+    QTRY_COMPARE_WITH_TIMEOUT(m.state(), MachineState::Idle, 10000);
+    ControllerSession* s = m.session(m.description().controllers.first().id);
+    QVERIFY(test::writeSetupBeforeMotion(s));
+    QSignalSpy results(s, &ControllerSession::requestFinished);
+    const RequestId spindle = s->setSpindle(1000);
+    const RequestId coolant = s->setCoolant(true);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        device.probe([&] { return board()->spindleRpm() == 1000 && board()->coolant(); }), 10000);
+    QVERIFY(spindle != 0 && coolant != 0);
+
+    QVERIFY2(m.move({{QStringLiteral("X"), 20000.0}}, false, &error) != 0, qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(device.moving(Axis::X), 10000);
+    const int before = device.frames().size();
+    QSignalSpy off(&m, &Machine::spindleAndCoolantOff);
+    panic ? m.panic() : m.stop();
+    QVERIFY(m.isSwitchingOff());
+    QTRY_VERIFY_WITH_TIMEOUT(!off.isEmpty(), 20000);
+    QVERIFY2(off.first().at(0).toBool(), qPrintable(off.first().at(1).toString()));
+    QVERIFY(device.still());
+    QCOMPARE(device.probe([&] { return board()->spindleRpm(); }), quint32(0));
+    QVERIFY(!device.probe([&] { return board()->coolant(); }));
+    // The stop first, then <SOH>00000000# and <SI>00: never the other way round.
+    const QList<QByteArray> frames = device.frames().mid(before);
+    const auto first = [&](const QByteArray& part) {
+        for (int i = 0; i < frames.size(); ++i)
+            if (frames.at(i).startsWith(part))
+                return i;
+        return -1;
+    };
+    const int stopAt = first(panic ? elab::encode::panicStop() : elab::encode::stopMove());
+    const int spindleAt = first(elab::encode::spindleRpm(0));
+    const int coolantAt = first(elab::encode::coolant(false));
+    QVERIFY2(stopAt >= 0 && spindleAt > stopAt && coolantAt > stopAt,
+             qPrintable(QStringLiteral("%1 %2 %3").arg(stopAt).arg(spindleAt).arg(coolantAt)));
+    QVERIFY(!m.isSwitchingOff());
 }
 
 QTEST_MAIN(TestMachineStop)

@@ -31,6 +31,7 @@ private Q_SLOTS:
     void fault_moveEndsAtLimitSwitch_failsAtThatLineLaterBlocksNeverArrive();
     void fault_boardNaksTheMove_failedAsNakAtThatLine();
     void runFromLine_afterFault_startsThereWithItsModalState();
+    void runFromLine_afterM3M8_spindleAndCoolantOnBeforeTheFirstMove();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
 };
@@ -350,6 +351,23 @@ void TestProgramRunner::abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockN
     QCOMPARE(acceptedSteps(emis, Axis::X), (QList<qint64>{2000}));
     m_runner.reset();
     m_machine.reset(); // before the device goes
+}
+
+// Issue 47 item 5: from a line after "M3 S500" and "M8" the cut runs with the spindle and the
+// coolant on: both are switched at the board before the first move of the run.
+void TestProgramRunner::runFromLine_afterM3M8_spindleAndCoolantOnBeforeTheFirstMove()
+{
+    const int before = int(m_elab->frames().size());
+    QVERIFY(run("M3 S500\nM8\nG91 G0 X1\nG0 X1\nM5\nM9\n", 4));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400})); // line 4 only
+    const int spindleOn = frameIndex(*m_elab, elab::encode::spindleRpm(500), before);
+    const int coolantOn = frameIndex(*m_elab, elab::encode::coolant(true), before);
+    const int move = frameIndex(*m_elab, QByteArray(1, '\x0c'), before); // <FF>: SetFastMoveXY
+    QVERIFY2(spindleOn >= 0 && coolantOn > spindleOn && move > coolantOn,
+             qPrintable(QStringLiteral("%1 %2 %3").arg(spindleOn).arg(coolantOn).arg(move)));
+    QCOMPARE(boardRpm(), quint32(0)); // line 5's M5
 }
 
 QTEST_MAIN(TestProgramRunner)

@@ -26,6 +26,11 @@ private Q_SLOTS:
     void run_coordinateSystems_boardGetsTheTargetsOfG55G10G92G53();
     void arc_fullCircle_boardGetsChordsOnTheCircleBackAtTheStart();
     void pause_duringArc_holdsBetweenChordsResumeFinishesTheArc();
+    void end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only_data();
+    void end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only();
+    void abort_duringMove_boardSwitchesSpindleOffOnceStanding();
+    void toolChange_zeroSetWhileHeld_restRunsInTheNewZero();
+    void toolChange_zeroFailsTheRestsCheck_resumeRefusedUntilPutBack();
 };
 
 // Issue 29: with "spindle": {"maxRpm": 24000} a program's S is in rpm: the board receives
@@ -300,6 +305,114 @@ void TestProgramRunnerMotion::pause_duringArc_holdsBetweenChordsResumeFinishesTh
     QCOMPARE(log.points.size(), 1 + 23 + 1);
     QCOMPARE(log.points.at(23), log.points.first());                   // the circle closed
     QCOMPARE(log.points.last(), log.points.first() - QPoint(4000, 0)); // then the G0 X0
+}
+
+// Issue 47, item 1: M2/M30 end with spindle and coolant off, as in LinuxCNC (a Fusion 360
+// post ends "G0 Z15 / M30" with no M5), and the run says "finished" only after the board
+// acknowledged both; a program that just runs out (an MDI line) leaves them as they are.
+void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only_data()
+{
+    QTest::addColumn<QByteArray>("program");
+    QTest::addColumn<bool>("switchedOff");
+    QTest::newRow("M30 without M5") << QByteArray("M3 S1000\nM8\nG91 G0 X1\nM30\n") << true;
+    QTest::newRow("M2 without M5 and M9") << QByteArray("M3 S1000\nM8\nG91 G0 X1\nM2\n") << true;
+    QTest::newRow("no program end (an MDI line)") << QByteArray("M3 S1000\nM8\n") << false;
+}
+
+void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only()
+{
+    QFETCH(QByteArray, program);
+    QFETCH(bool, switchedOff);
+    const auto coolant = [this] {
+        return m_elab->probe(
+            [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->coolant(); });
+    };
+    QVERIFY(run(program));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    // Finished is said after the acknowledgements: the relays are off at the board by then.
+    QCOMPARE(boardRpm(), switchedOff ? quint32(0) : quint32(1000));
+    QCOMPARE(coolant(), !switchedOff);
+    QCOMPARE(frameIndex(*m_elab, elab::encode::spindleRpm(0)) >= 0, switchedOff);
+}
+
+// Issue 47, item 1: STOP during a program's move: the board brakes, then its spindle relay goes
+// off (SetSpindleRPM is taken only at standstill).
+void TestProgramRunnerMotion::abort_duringMove_boardSwitchesSpindleOffOnceStanding()
+{
+    QVERIFY(run("M3 S1000\nG91 G0 X200\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    QCOMPARE(boardRpm(), quint32(1000));
+    m_runner->abort();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Aborted);
+    QTRY_COMPARE_WITH_TIMEOUT(boardRpm(), quint32(0), 20000);
+    QVERIFY(still(*m_elab));
+    const int stopAt = frameIndex(*m_elab, elab::encode::stopMove());
+    QVERIFY(stopAt >= 0);
+    QVERIFY(frameIndex(*m_elab, elab::encode::spindleRpm(0), stopAt) > stopAt);
+}
+
+// Issue 47, item 2: a touch-off at M6. The run holds; the operator moves X by 0.5 mm and sets
+// the work zero there (the DRO's Zero X: G54's X = where X stands); Resume checks the rest with
+// it and the rest runs in it. At the board (400 steps/mm): X1 in the old zero (machine 3 mm),
+// the operator's 0.5 mm, then X1 in the new zero (machine 4.5 mm): 1 mm on.
+void TestProgramRunnerMotion::toolChange_zeroSetWhileHeld_restRunsInTheNewZero()
+{
+    CoordinateSystems systems;
+    systems[0] = {{QStringLiteral("X"), 2.0}};
+    m_runner->setCoordinateSystems(systems, 0);
+    QSignalSpy checked(m_runner.get(), &ProgramRunner::restChecked);
+    QVERIFY(run("G28 X0 Y0\nG90 G0 X1\nT2 M6\nG0 X1\nM30\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QVERIFY(m_runner->pausedAtOperatorStop());
+    QString error;
+    QSignalSpy moved(m_machine.get(), &Machine::moveFinished);
+    QVERIFY2(m_machine->move({{QStringLiteral("X"), 0.5}}, false, &error) != 0, qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(!moved.isEmpty(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    systems[0] = {{QStringLiteral("X"), 3.5}};
+    m_runner->setCoordinateSystems(systems, 0);
+    QVERIFY(m_runner->restNeedsCheck());
+    m_runner->resume();
+    QCOMPARE(checked.size(), 1);
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 200, 400}));
+    QCOMPARE(m_runner->workOffsets().value(QStringLiteral("X")), 3.5);
+}
+
+// The same with a zero that puts the rest beyond X's soft limit (10 mm): Resume refuses with
+// the check's reason and nothing more reaches the board; with the zero put back it goes on
+// (X2: machine 4 mm).
+void TestProgramRunnerMotion::toolChange_zeroFailsTheRestsCheck_resumeRefusedUntilPutBack()
+{
+    MachineDescription d = description();
+    d.axes[0].softMinimum = 0.0;
+    d.axes[0].softMaximum = 10.0;
+    recreateMachine(d);
+    CoordinateSystems systems;
+    systems[0] = {{QStringLiteral("X"), 2.0}};
+    m_runner->setCoordinateSystems(systems, 0);
+    QSignalSpy refused(m_runner.get(), &ProgramRunner::resumeRefused);
+    QVERIFY(run("G28 X0 Y0\nG90 G0 X1\nM0\nG0 X2\nM30\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    CoordinateSystems moved = systems;
+    moved[0] = {{QStringLiteral("X"), 9.8}};
+    m_runner->setCoordinateSystems(moved, 0);
+    m_runner->resume();
+    QCOMPARE(refused.size(), 1);
+    QVERIFY2(refused.first().at(0).toString().contains(QStringLiteral("line 4")),
+             qPrintable(refused.first().at(0).toString()));
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200}));
+    m_runner->setCoordinateSystems(systems, 0);
+    QVERIFY(!m_runner->restNeedsCheck());
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 400}));
 }
 
 QTEST_MAIN(TestProgramRunnerMotion)

@@ -1,0 +1,124 @@
+// ProgramRunner: offsets and tools changed while the run holds (issue 47, docs/programs.md
+// "Touch-off while the run holds"). LinuxCNC's AXIS refuses a touch-off while a program is
+// paused; Candle and UGS take a new zero for the rest of the job. StepDeck takes it, but only
+// after the rest of the program passed its check with it, from where the axes stand now.
+#include "ProgramLogging.h"
+#include "ProgramReader.h"
+#include "ProgramRunner.h"
+#include "machine/Machine.h"
+#include <cmath>
+
+namespace stepdeck::program {
+
+void ProgramRunner::setCoordinateSystems(const CoordinateSystems& systems, int active)
+{
+    m_nextSystems = systems;
+    m_nextActive = active;
+    if (m_state == RunState::Paused)
+        m_restChanged =
+            m_nextSystems != m_coordinates.systems() || !(m_nextTools == m_runFacts.tools);
+}
+
+void ProgramRunner::setToolTable(const ToolTable& tools)
+{
+    m_nextTools = tools;
+    if (m_state == RunState::Paused)
+        m_restChanged =
+            m_nextSystems != m_coordinates.systems() || !(m_nextTools == m_runFacts.tools);
+}
+
+MachineFacts ProgramRunner::restFacts() const
+{
+    MachineFacts facts = startFacts();
+    // The system the run's blocks without a G54..G59 of their own run in is the one active at
+    // its start, whatever the window selected since.
+    facts.activeSystem = m_coordinates.activeAtStart();
+    return facts;
+}
+
+int ProgramRunner::restBlock() const
+{
+    return m_heldBlock ? m_index : m_index + 1; // a block read ahead of a contour has not run
+}
+
+QString ProgramRunner::restUncheckable() const
+{
+    if (m_feedHeld || m_contour)
+        return tr("the run holds in the middle of a contour (feed hold), where new offsets "
+                  "cannot start: put them back to resume, or stop");
+    if (m_heldInPath)
+        return tr("the run holds in the middle of an arc or a drilling cycle, where new offsets "
+                  "cannot start: put them back to resume, or stop");
+    const QMap<QString, double> g92 = m_coordinates.axisOffset();
+    for (auto it = g92.cbegin(); it != g92.cend(); ++it)
+        if (it.value() != 0.0)
+            return tr("a G92 offset is in effect, which a check of the rest cannot follow: put "
+                      "the offsets back to resume, or stop");
+    return {};
+}
+
+bool ProgramRunner::resumeChecked(const MachineFacts& checkedFacts,
+                                  const ProgramCheckResult& checked, bool stepOnly)
+{
+    if (m_state != RunState::Paused)
+        return false;
+    QString why = restUncheckable();
+    const MachineFacts now = restFacts();
+    if (why.isEmpty() && !sameStartFacts(checkedFacts, now))
+        why = tr("the machine changed while the rest was checked: resume again to check it anew");
+    if (why.isEmpty() && !checked.ok())
+        why = checked.cancelled || checked.errors.isEmpty()
+                  ? tr("the check was cancelled")
+                  : tr("the rest of the program fails its check with them, line %1: %2")
+                        .arg(checked.errors.constFirst().line)
+                        .arg(checked.errors.constFirst().message);
+    if (!why.isEmpty()) {
+        const QString message =
+            tr("Not resumed: the offsets or tools changed while the run held; %1").arg(why);
+        qCInfo(lcProgram) << message;
+        Q_EMIT resumeRefused(message);
+        return false;
+    }
+    takeRest(now);
+    const ProgramBlock* next = m_reader->at(restBlock());
+    const QString message =
+        next ? tr("The rest of the program runs with the new offsets and tools (checked from "
+                  "line %1).")
+                   .arg(next->line)
+             : tr("The new offsets and tools are taken; no move is left to run.");
+    qCInfo(lcProgram) << message;
+    Q_EMIT restChecked(message);
+    go(stepOnly);
+    return true;
+}
+
+void ProgramRunner::takeRest(const MachineFacts& facts)
+{
+    m_coordinates = ProgramCoordinates(facts.coordinateSystems, facts.activeSystem, facts.tools);
+    m_runFacts.coordinateSystems = facts.coordinateSystems;
+    m_runFacts.tools = facts.tools;
+    // The current point: where the axes stand now, where the operator moved them during the
+    // hold (a jog to touch off); within a step it stays the program's unrounded point.
+    const machine::MachineDescription& d = facts.description;
+    for (qsizetype i = 0; i < d.axes.size() && size_t(i) < m_programmed.size(); ++i) {
+        const machine::MachineAxis& a = d.axes.at(i);
+        const auto it = facts.knownPositions.constFind(a.name);
+        if (it == facts.knownPositions.cend())
+            continue;
+        const double step = std::abs(a.toUnits(1) - a.toUnits(0));
+        std::optional<double>& point = m_programmed[size_t(i)];
+        if (!point || std::abs(*point - it.value()) > step)
+            point = it.value();
+    }
+    m_restChanged = false;
+}
+
+void ProgramRunner::go(bool stepOnly)
+{
+    if (stepOnly)
+        step();
+    else
+        resume();
+}
+
+} // namespace stepdeck::program
