@@ -82,6 +82,8 @@ void MachineContext::install(std::unique_ptr<machine::Machine> created, const QS
             &MachineContext::machineControllerFailed);
     connect(m_machine.get(), &machine::Machine::statusChanged, this,
             &MachineContext::machineStatusChanged);
+    connect(m_machine.get(), &machine::Machine::spindleAndCoolantOff, this,
+            &MachineContext::machineSpindleAndCoolantOff);
     connect(m_machine.get(), &machine::Machine::jogRefused, this,
             &MachineContext::machineJogRefused);
     connect(m_machine->setupWriter(), &machine::MachineSetup::written, this,
@@ -121,6 +123,18 @@ void MachineContext::selectController(const QString& controllerId)
     m_model = chosen->model();
     forgetKnownParameters(); // they were another controller's
     Q_EMIT modelChanged();
+    // Still known: this controller's setup from the machine file, written when its link came
+    // up. The written signal (install) counts it only for the controller selected then, so a
+    // Setup page chosen later showed the defaults as if nothing were on the device (issue 47,
+    // item 9). Not once the board reports its setup incomplete: it may have lost it (power
+    // cycle) while another controller was shown.
+    const machine::MachineSetup* writer = m_machine->setupWriter();
+    const std::optional<CommandResult> setup =
+        writer ? writer->lastResult(controllerId) : std::nullopt;
+    const machine::MachineController* c = m_machine->description().controller(controllerId);
+    if (c && setup && setup->ok() && chosen->isCreated() &&
+        chosen->linkState() == LinkState::Connected && !chosen->status().setupIncomplete)
+        addKnownParameters(c->setup);
     announceLink();
 }
 

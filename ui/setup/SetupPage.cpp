@@ -153,6 +153,22 @@ void SetupPage::applyKnown()
     for (ParameterField* f : std::as_const(m_fields)) {
         const ParameterValue v = known.value(f->spec().name);
         f->setBaseline(f->axis() ? v.perAxis.value(*f->axis()) : v.global);
+        const QVariant held = f->baseline();
+        if (!held.isValid() || f->isUnknown())
+            continue; // nothing known, or a read failed since (only a read fills it)
+        if (!f->isExplicit()) {
+            // What the device holds, also where someone else wrote it (the machine file's
+            // setup on every connect, issue 47 item 9): a field without a choice of the
+            // technician's shows it. Kept at the schema's default it was marked as differing,
+            // and Write all sent the defaults over the file's values.
+            if (f->value() != held)
+                f->setValue(held);
+        } else if (!f->spec().readable && f->value() == held) {
+            // A write-only choice that reached the device is no pending edit any more, so the
+            // values written on the next connect replace it as well. (Readable fields keep
+            // their mark: their values come from the page's reads of the device.)
+            f->setValue(held);
+        }
     }
     refreshButtons();
 }

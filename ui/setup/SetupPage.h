@@ -80,7 +80,9 @@ private:
     void onResult(const CommandResult& result);
     void setMessage(const QString& text, bool error, const QStringList& details = {});
     static QString invalidText(const QStringList& errors);
-    void applyKnown();                    // baselines from what the context knows on the device
+    // Baselines from what the context knows on the device; fields without the technician's
+    // choice show those values (also ones written elsewhere: the machine file's setup).
+    void applyKnown();
     void markReadableUnknown();           // readable values not read (yet): unknown, not defaults
     void showWhetherAnythingIsSettable(); // no writable parameter: no form buttons, a reason
     bool hasSettableParameters();         // false: says why

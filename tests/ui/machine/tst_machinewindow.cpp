@@ -17,13 +17,17 @@
 #include "machine/MachineDro.h"
 #include "machine/MachineGoTo.h"
 #include "machine/MachineReferenceRows.h"
+#include "machine/MachineSetup.h"
 #include "messages/StatusMessages.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "safety/SafetyBar.h"
+#include "setup/ParameterField.h"
+#include "setup/SetupPage.h"
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QToolButton>
@@ -48,6 +52,7 @@ private Q_SLOTS:
     void machineBar_longNamesAndPorts_elidedFullTextInTooltip();
     void machineBar_nameWithRoom_shownInFull();
     void connect_machineFileWithSetup_windowSaysItWroteIt();
+    void setup_machineFileWrittenOnConnect_formShowsTheWrittenValues();
 
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
@@ -242,6 +247,85 @@ void TestMachineWindow::connect_machineFileWithSetup_windowSaysItWroteIt()
         m_rig.machine()->session(QStringLiteral("table"))->status().knownParameters;
     QCOMPARE(known.value("start-speed").perAxis.value(Axis::X).toLongLong(), 150);
     QTRY_VERIFY(!m_rig.machine()->session(QStringLiteral("table"))->status().setupIncomplete);
+}
+
+// Issue 47, item 9: after the machine file's setup was written on connect (start speed 2500),
+// the Setup page showed the schema's defaults (start speed 100) marked as differing from the
+// device, and Write all would have sent them over the file's values. The form shows what was
+// written as what the board holds, also after choosing another controller and back, and
+// Write all sends it.
+void TestMachineWindow::setup_machineFileWrittenOnConnect_formShowsTheWrittenValues()
+{
+    m_rig.writeFile(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+        "parameters": {"start-speed": {"X": 2500, "Y": 2500, "Z": 2500},
+                       "max-speed": {"X": 5000, "Y": 5000, "Z": 5000},
+                       "acceleration": {"X": 1000, "Y": 1000, "Z": 1000}}})",
+                    QStringLiteral("table.setup.json"));
+    QByteArray json = m_rig.machineJson();
+    json.replace(R"("model": "elab", "port": ")",
+                 R"("model": "elab", "setup": "table.setup.json", "port": ")");
+    QVERIFY(json.contains("table.setup.json"));
+    QVERIFY(m_rig.openAndConnect(json, {QStringLiteral("table"), QStringLiteral("rotary")}));
+    const QString table = QStringLiteral("table");
+    // At the board: SetStartSpeed 2500 (0x09C4) on every axis, from the file.
+    const QByteArray startSpeed2500("\x1bS09C4,09C4;09C4.");
+    const QByteArray startSpeedDefault("\x1bS0064,0064;0064.");
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->frames().contains(startSpeed2500), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(machine()->setupWriter()->lastResult(table).has_value(), 10000);
+    QVERIFY(machine()->setupWriter()->lastResult(table)->ok());
+    QTRY_VERIFY_WITH_TIMEOUT(!machine()->session(table)->status().setupIncomplete, 10000);
+    QCOMPARE(window()->context()->selectedController(), table);
+
+    ui::SetupPage* page = window()->setupPage();
+    auto showsWritten = [page](const QString& name, qint64 value) {
+        for (Axis a : {Axis::X, Axis::Y, Axis::Z}) {
+            const ui::ParameterField* field = page->field(name, a);
+            if (!field || field->lineEdit()->text() != QString::number(value) ||
+                field->baseline().toLongLong() != value || field->isChanged() ||
+                field->lineEdit()->property("fieldState").toString() != QLatin1String("clean"))
+                return false;
+        }
+        return true;
+    };
+    auto describe = [page](const QString& name) {
+        const ui::ParameterField* field = page->field(name, Axis::X);
+        if (!field)
+            return QStringLiteral("no field %1 X").arg(name);
+        return QStringLiteral("%1 X: shows '%2', device %3, state %4")
+            .arg(name, field->lineEdit()->text(), field->baseline().toString(),
+                 field->lineEdit()->property("fieldState").toString());
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(showsWritten(QStringLiteral("start-speed"), 2500),
+                              qPrintable(describe(QStringLiteral("start-speed"))), 5000);
+    QVERIFY2(showsWritten(QStringLiteral("max-speed"), 5000),
+             qPrintable(describe(QStringLiteral("max-speed"))));
+    QVERIFY2(showsWritten(QStringLiteral("acceleration"), 1000),
+             qPrintable(describe(QStringLiteral("acceleration"))));
+    // Write sends nothing of what the file wrote: it is on the board.
+    QVERIFY(!page->changedValues().contains(QStringLiteral("start-speed")));
+
+    // Another controller shown and this one again: what its link was set up with still counts.
+    QComboBox* selector = window()->machineBar()->controllerCombo();
+    selector->setCurrentIndex(selector->findData(QStringLiteral("rotary")));
+    Q_EMIT selector->activated(selector->currentIndex());
+    QCOMPARE(window()->context()->selectedController(), QStringLiteral("rotary"));
+    selector->setCurrentIndex(selector->findData(table));
+    Q_EMIT selector->activated(selector->currentIndex());
+    QCOMPARE(window()->context()->selectedController(), table);
+    QVERIFY2(showsWritten(QStringLiteral("start-speed"), 2500),
+             qPrintable(describe(QStringLiteral("start-speed"))));
+
+    // Write all sends the start speed the board holds, never the schema's default.
+    const qsizetype before = m_rig.elab->frames().count(startSpeed2500);
+    QVERIFY(!page->writeAllButton()->isHidden()); // the page may sit behind another one
+    QVERIFY(page->writeAllButton()->isEnabled());
+    page->writeAllButton()->click();
+    QTRY_VERIFY2_WITH_TIMEOUT(page->messageText().startsWith(QStringLiteral("Written")),
+                              qPrintable(page->messageText()), 10000);
+    const QList<QByteArray> frames = m_rig.elab->frames();
+    QCOMPARE(frames.count(startSpeed2500), before + 1);
+    QVERIFY(!frames.contains(startSpeedDefault));
+    QVERIFY(showsWritten(QStringLiteral("start-speed"), 2500));
 }
 
 int main(int argc, char** argv)
