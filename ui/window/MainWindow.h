@@ -25,6 +25,7 @@ class MachineBar;
 class MachineContext;
 class MachineControl;
 class MachineFileActions;
+class MachineShortcutGuard;
 class MessageLine;
 class MessageLog;
 class PositionPanel;
@@ -43,6 +44,8 @@ class Workspaces;
 // The main window: connection bar, STOP/PANIC and the jog panel in the centre (always
 // visible), and docks for position, referencing, status, setup, traffic and charts.
 // Esc (STOP) and F1 (PANIC) are application-wide shortcuts: they work whatever has focus.
+// The keys of actions that move the machine or change its link (Reference all, Connect /
+// Disconnect, Quit) do nothing while a text field has the focus (MachineShortcutGuard).
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -76,6 +79,10 @@ public:
     GamepadJogSource* gamepadSource() const { return m_gamepadSource; }
     QAction* stopAction() const { return m_stopAction; }
     QAction* panicAction() const { return m_panicAction; }
+    QAction* referenceAction() const { return m_referenceAction; }
+    QAction* connectAction() const { return m_connectAction; }
+    // Holds the machine's keys back while a text field has the focus (issue 47, item 6).
+    MachineShortcutGuard* machineShortcuts() const { return m_machineKeys; }
     // The status bar's current message (empty when its cause has ended or it expired).
     QString lastError() const;
     StatusMessages* messages() const { return m_messages; }
@@ -141,6 +148,7 @@ private:
     MachineFileActions* m_machineFiles = nullptr;
     SafetyBar* m_safety = nullptr;
     SafetyKeyFilter* m_safetyKeys = nullptr;
+    MachineShortcutGuard* m_machineKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
     HelpMenu* m_helpMenu = nullptr;
     PositionPanel* m_position = nullptr;

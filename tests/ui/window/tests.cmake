@@ -40,3 +40,8 @@ target_compile_definitions(tst_workspaces_fullhd PRIVATE STEPDECK_FULL_HD)
 stepdeck_add_test(tst_demomachine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_demomachine.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
+# Issue 47, item 6 (safety): the keys of actions that move the machine or change its link do
+# not fire from a text field (program editor, MDI line, a form); STOP and PANIC still do.
+stepdeck_add_test(tst_machineshortcuts SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineshortcuts.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  LABELS ui LIBS stepdeck_ui)
