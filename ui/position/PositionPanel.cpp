@@ -2,6 +2,7 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineGoTo.h"
+#include "machine/SpindleCoolantBar.h"
 #include <QHBoxLayout>
 #include <QToolButton>
 
@@ -9,7 +10,8 @@ namespace stepdeck::ui {
 
 PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     : QWidget(parent), m_machineDro(new MachineDro(context, context->workOffsets(), this)),
-      m_machineGoTo(new MachineGoTo(context, context->workOffsets(), this))
+      m_machineGoTo(new MachineGoTo(context, context->workOffsets(), this)),
+      m_spindleCoolant(new SpindleCoolantBar(context, this))
 {
     auto* outer = new QVBoxLayout(this);
     outer->addWidget(m_machineDro);
@@ -25,6 +27,7 @@ PositionPanel::PositionPanel(MachineContext* context, QWidget* parent)
     buttons->addWidget(edit);
     buttons->addStretch(1);
     outer->addLayout(buttons);
+    outer->addWidget(m_spindleCoolant);
     outer->addStretch(1);
     connect(edit, &QToolButton::clicked, this, &PositionPanel::editMachineRequested);
 }

@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QVBoxLayout>
 
 namespace stepdeck::ui {
 
@@ -30,14 +31,20 @@ MdiLine::MdiLine(MachineContext* context, QWidget* parent)
     reserveTextSize(m_modal, {QStringLiteral("G91 G20 G19 G61.1 G93 G43 F88888.888")});
     auto* label = new QLabel(tr("MDI:"), this);
     label->setBuddy(m_line);
-    // One row: the Program page holds it above the text at 1366x768 (issue 31).
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(0, 0, 0, 0);
+    // The line, then its result in a row of its own (issue 47 item 10: beside the line, at
+    // 1366x768, the result was cut to "Not done: …" and the reason lived in the tooltip). One
+    // line high always: a result never re-flows the page.
+    m_result->setObjectName(QStringLiteral("mdiResult"));
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(0, 0, 0, 0);
+    rows->setSpacing(1);
+    auto* row = new QHBoxLayout;
     row->addWidget(label);
-    row->addWidget(m_line, 3);
+    row->addWidget(m_line, 1);
     row->addWidget(m_run);
     row->addWidget(m_modal);
-    row->addWidget(m_result, 2);
+    rows->addLayout(row);
+    rows->addWidget(m_result);
     m_line->installEventFilter(this);
     connect(m_line, &QLineEdit::returnPressed, this, &MdiLine::run);
     connect(m_run, &QPushButton::clicked, this, &MdiLine::run);
@@ -133,6 +140,11 @@ void MdiLine::browseHistory(int step)
 QString MdiLine::resultText() const
 {
     return m_result->text();
+}
+
+QString MdiLine::shownResultText() const
+{
+    return m_result->shownLines().join(QLatin1Char(' '));
 }
 
 QString MdiLine::modalText() const

@@ -26,6 +26,7 @@ public:
     QLineEdit* lineEdit() const { return m_line; }
     QPushButton* runButton() const { return m_run; }
     QString resultText() const;
+    QString shownResultText() const; // as drawn at the current width (elided)
     QString modalText() const;
 
 public Q_SLOTS:

@@ -103,9 +103,20 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
     connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
     // A new work zero or tool table moves the program's path on the machine: checked again.
+    // While a run holds they are the rest's too, checked at Resume (ProgramRunner, issue 47).
     const auto recheck = [this] {
-        if (!isRunning())
+        if (!isRunning()) {
             m_recheck->start();
+        } else if (m_runner->state() == program::RunState::Paused) {
+            m_runner->setToolTable(m_context->tools()->table());
+            m_runner->setCoordinateSystems(m_context->workOffsets()->systems(),
+                                           m_context->workOffsets()->active());
+            m_holdNote = m_runner->restNeedsCheck()
+                             ? tr("The offsets or tools changed while the run holds: Resume "
+                                  "checks the rest of the program with them first.")
+                             : QString();
+            updateControls();
+        }
     };
     connect(m_context->workOffsets(), &MachineWorkOffsets::changed, this, recheck);
     connect(m_context->tools(), &MachineTools::changed, this, recheck);
@@ -276,6 +287,15 @@ void ProgramPage::onMachineChanged()
         // A program's G10 sets a coordinate system for the next runs too (LinuxCNC).
         connect(m_runner, &ProgramRunner::coordinateSystemSet, m_context->workOffsets(),
                 &MachineWorkOffsets::setSystem);
+        // A touch-off while the run holds (issue 47): the rest of the run takes the new zero
+        // or tool length once its check passed (ProgramRunner::resume); the banner says which.
+        connect(m_runner, &ProgramRunner::resumeRefused, this, [this](const QString& message) {
+            m_holdNote = message; // said while the run stays held
+            updateControls();
+        });
+        connect(m_runner, &ProgramRunner::restChecked, this, [this](const QString& message) {
+            Q_EMIT operatorMessage(m_runner->currentLine(), message); // the window's log
+        });
     }
     if (machine) {
         QStringList axes;

@@ -76,6 +76,8 @@ public:
 Q_SIGNALS:
     // The run reached a line with "(MSG, text)" (LinuxCNC): the window shows it.
     void operatorMessage(int line, const QString& text);
+    // A program runs (not held at M0/M6 or paused): it owns spindle and coolant meanwhile.
+    void programRunning(bool running);
 
 public Q_SLOTS:
     // The window's STOP or PANIC: a running program ends as aborted.
@@ -119,6 +121,8 @@ private:
     ProgramPreviewView* m_preview;
     QStackedWidget* m_previewOrErrors = nullptr; // the errors in the preview's place
     ProgramPromptBanner* m_banner;
+    // While the run holds: why Resume did not go on, or that it checks new offsets first.
+    QString m_holdNote;
     ProgramControls* m_controls;
     MdiLine* m_mdiLine;
     QTimer* m_recheck;

@@ -17,6 +17,7 @@
 #include "machine/MachineTools.h"
 #include "machine/MachineWorkOffsets.h"
 #include "program/ProgramReader.h"
+#include "program/RunFromLine.h"
 #include <QPushButton>
 
 namespace stepdeck::ui {
@@ -58,16 +59,26 @@ QString ProgramPage::runFromText(int line) const
     const std::optional<program::Program> parsed = parse(&errors);
     std::optional<program::ProgramReader> reader;
     const program::ProgramBlock* first = nullptr;
+    int index = -1;
     if (parsed) {
         reader.emplace(*parsed);
-        first = reader->at(reader->firstBlockAtLine(line));
+        index = reader->firstBlockAtLine(line);
+        first = reader->at(index);
     }
     if (!first)
         return tr("Line %1: no block runs on or after it.").arg(line);
+    const int firstLine = first->line;
+    const QString firstText = first->text;
+    // Issue 47 item 5: what the lines before it left switched on is switched on first.
+    const QString restored = program::RunFromState::before(*reader, index).text();
     return tr("Run from line %1 (%2). The lines before it do not run; the axes start from where "
               "they stand now: %3.")
-        .arg(first->line)
-        .arg(first->text, ProgramMachinePositions::text(*m_context->machine()));
+               .arg(firstLine)
+               .arg(firstText, ProgramMachinePositions::text(*m_context->machine())) +
+           (restored.isEmpty()
+                ? QString()
+                : QLatin1Char(' ') +
+                      tr("First, as the lines before it left them: %1.").arg(restored));
 }
 
 void ProgramPage::runFromLine(int line)
@@ -142,6 +153,9 @@ void ProgramPage::onStartRefused(const QList<program::ProgramError>& errors)
 void ProgramPage::onState(RunState state)
 {
     const bool running = isRunning();
+    Q_EMIT programRunning(running && state != RunState::Paused);
+    if (state != RunState::Paused)
+        m_holdNote.clear();
     m_editor->setRunning(running);
     m_files->setEnabled(!running);
     if (state == RunState::Running)
@@ -216,7 +230,14 @@ void ProgramPage::updateControls()
             pausePending ? tr("Pausing: line %1 finishes first, then the program holds.").arg(line)
                          : tr("Running line %1.").arg(line));
     else if (state == RunState::Paused)
-        m_banner->setStatus(tr("Paused after line %1: Resume or Step goes on.").arg(line));
+        m_banner->setStatus(
+            !m_holdNote.isEmpty() ? m_holdNote
+            // Issue 47 item 8: a feed hold stands in the middle of its line, not after it.
+            : m_runner->feedHeld()
+                ? tr("Feed hold in line %1: the tool stands on its path; Resume goes on from "
+                     "there.")
+                      .arg(line)
+                : tr("Paused after line %1: Resume or Step goes on.").arg(line));
     else if (state == RunState::Stopping)
         m_banner->setStatus(m_stoppingText.isEmpty()
                                 ? tr("Aborting: waiting for the axes to stand.")

@@ -18,6 +18,7 @@
 #include "machine/MachineControl.h"
 #include "machine/MachineFileActions.h"
 #include "machine/MachineMdi.h"
+#include "machine/SpindleCoolantBar.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
 #include "messages/StatusMessages.h"
@@ -32,6 +33,7 @@
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include "window/HelpMenu.h"
+#include "window/MachineShortcutGuard.h"
 #include "window/ScreenBound.h"
 #include "window/SimulatorMenu.h"
 #include "window/Translations.h"
@@ -230,6 +232,13 @@ void MainWindow::buildActions()
     m_referenceAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
     m_connectAction = new QAction(tr("&Connect / Disconnect"), this);
     m_connectAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    // Keys that start motion or drop the link are for the machine, not for a text field: typed
+    // into the program editor or the MDI line they once started referencing or disconnected
+    // (issue 47, item 6). STOP and PANIC above are not held back; the keyboard jog (Ctrl+J)
+    // moves nothing itself and pauses in text fields on its own (KeyboardJog).
+    m_machineKeys = new MachineShortcutGuard(this);
+    m_machineKeys->add(m_referenceAction);
+    m_machineKeys->add(m_connectAction);
     connect(m_connectAction, &QAction::triggered, this, [this] {
         if (m_context->hasMachineFile())
             m_machineBar->toggleConnection();
@@ -309,6 +318,9 @@ void MainWindow::buildDocks()
                                  tr("Program line %1: %2").arg(line).arg(text),
                                  StatusMessages::Severity::Info, 30000);
             });
+    // A running program owns spindle and coolant: the Position dock's switches wait (issue 47).
+    connect(m_programPage, &ProgramPage::programRunning, m_position->spindleCoolant(),
+            &SpindleCoolantBar::setProgramRunning);
     connect(m_context->mdi(), &MachineMdi::operatorMessage, this, [this](int, const QString& text) {
         m_messages->show(StatusMessages::Owner::General, tr("MDI: %1").arg(text),
                          StatusMessages::Severity::Info, 30000);
@@ -354,6 +366,8 @@ void MainWindow::buildMenus()
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+    // Quitting closes every link (and ends a running program) like Disconnect does.
+    m_machineKeys->add(quit);
 
     QMenu* machine = menuBar()->addMenu(tr("&Machine"));
     machine->addAction(m_stopAction);
@@ -363,6 +377,7 @@ void MainWindow::buildMenus()
     machine->addAction(m_keyboardAction);
     QAction* refresh = machine->addAction(tr("Refresh &status"), this,
                                           [this] { m_context->session()->refreshStatus(); });
+    // Not held back in text fields: a status read changes nothing on the machine.
     refresh->setShortcut(QKeySequence::Refresh);
     // These need a connection; STOP and PANIC never are disabled (they say why instead).
     auto* gate = new ConnectionGate(m_context, this);

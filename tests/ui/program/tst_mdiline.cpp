@@ -94,6 +94,9 @@ void TestMdiLine::line_checkRefuses_nothingSentAndReasonShown()
     QTRY_VERIFY_WITH_TIMEOUT(!machineMdi()->isBusy(), 10000);
     QVERIFY2(mdi()->resultText().contains(reason), qPrintable(mdi()->resultText()));
     QVERIFY(!mdi()->resultText().startsWith(QStringLiteral("Done")));
+    // Issue 47 item 10: the reason is on screen at 1366x768, not only in the tooltip.
+    window()->resize(1366, 768);
+    QTRY_VERIFY2(mdi()->shownResultText().contains(reason), qPrintable(mdi()->shownResultText()));
     // Polls go on; no move reached the board.
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->receivedCount() > before + 3, 10000);
     QCOMPARE(m_rig.elab->probe([this] { return m_rig.elab->acceptedMoveCount(); }), moves);

@@ -5,6 +5,8 @@
 // a lost link fails naming the line; closing the machine aborts.
 #include "../LayoutChecks.h"
 #include "ProgramPageFixture.h"
+#include "machine/SpindleCoolantBar.h"
+#include "position/PositionPanel.h"
 #include "program/ProgramFiles.h"
 #include <QScrollBar>
 
@@ -32,6 +34,7 @@ private Q_SLOTS:
     void closeMachine_whileRunning_programAbortedAndAxisStill_data();
     void closeMachine_whileRunning_programAbortedAndAxisStill();
     void openAnother_afterRun_oldResultCleared();
+    void spindleBar_switchesAtTheBoardLockedWhileRunningOffAfterStop();
 };
 
 void TestProgramPageRun::pause_duringBlock_holdsAfterItThenResumeFinishes()
@@ -339,6 +342,42 @@ void TestProgramPageRun::openAnother_afterRun_oldResultCleared()
     QVERIFY2(page()->controls()->timeLeftText().isEmpty(),
              qPrintable(page()->controls()->timeLeftText()));
     QVERIFY(page()->controls()->runButton()->isEnabled()); // the new one is checked, not run
+}
+
+// Issue 47: the Run workspace's spindle and coolant switches reach the board's relays and
+// show the board's state; a running program owns them; STOP switches both off at the board.
+void TestProgramPageRun::spindleBar_switchesAtTheBoardLockedWhileRunningOffAfterStop()
+{
+    QVERIFY(m_rig.openAndConnect());
+    ui::SpindleCoolantBar* bar = window()->positionPanel()->spindleCoolant();
+    const auto board = [this] {
+        return m_rig.elab->probe([&] {
+            const auto* sim = static_cast<elab::ElabSimulator*>(m_rig.elab->sim());
+            return std::make_pair(sim->spindleRpm(), sim->coolant());
+        });
+    };
+    QTRY_VERIFY(bar->spindleButton()->isEnabled());
+    QCOMPARE(bar->coolantText(), QStringLiteral("Coolant: unknown")); // not read back
+    bar->spindleButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(board().first > 0, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(bar->spindleText(), QStringLiteral("Spindle: on"), 10000);
+    bar->coolantButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(board().second, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(bar->coolantText(), QStringLiteral("Coolant: on"), 10000);
+
+    setProgram(QStringLiteral("G91\nG0 X100\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->moving(Axis::X), 10000);
+    QVERIFY(!bar->spindleButton()->isEnabled());
+    QVERIFY(!bar->coolantButton()->isEnabled());
+    stopBy(QStringLiteral("stop"));
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(board() == std::make_pair(quint32(0), false), 20000);
+    QVERIFY(m_rig.elab->still());
+    QTRY_COMPARE_WITH_TIMEOUT(bar->spindleText(), QStringLiteral("Spindle: off"), 10000);
+    QCOMPARE(bar->coolantText(), QStringLiteral("Coolant: off"));
+    QTRY_VERIFY(bar->spindleButton()->isEnabled());
 }
 
 int main(int argc, char** argv)
