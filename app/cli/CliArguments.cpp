@@ -413,7 +413,11 @@ QString programHelp()
         "                              Ctrl-Z holds the feed, SIGCONT (fg) resumes it\n"
         "      [--tool-table FILE] [--offsets G54:X=N,Y=N;G55:...]\n"
         "                              the tool table (LinuxCNC tool.tbl) G43 and M6 use,\n"
-        "                              and the work zeros of G54..G59 (G54 active)\n"
+        "                              and the work zeros of G54..G59 (G54 active); without\n"
+        "                              --offsets a machine file's zeros as the window keeps\n"
+        "                              them (said on stderr)\n"
+        "      [--reference]           references every axis first (the file's order and\n"
+        "                              directions), as home without axes\n"
         "\n");
 }
 } // namespace

@@ -42,7 +42,7 @@ const CommandEntry kCommands[] = {
     {cmdFeed, true, {"feed", kPositioningOptions}},
     {nullptr, true, {"stop", {}}},
     {nullptr, true, {"panic", {}}},
-    {nullptr, true, {"run", {{"dry-run"}, {"from-line", "N"}, {"skip-pauses"},
+    {nullptr, true, {"run", {{"dry-run"}, {"from-line", "N"}, {"skip-pauses"}, {"reference"},
                              {"optional-stops", "ON|OFF"}, {"feed-override", "PERCENT"},
                              {"tool-table", "FILE"},
                              {"offsets", "G54:X=N,...;G55:..."}}}},

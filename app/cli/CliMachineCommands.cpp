@@ -14,13 +14,15 @@ using machine::MachineAxis;
 using machine::MachineController;
 using machine::MachineDescription;
 
+// Axes go by the names the file gives them (issue 47, 11b: "feed1=1", "bus.feed1"), and by their
+// default names (X, Y, Z, U, axis5, ...) where it gives none.
 QString controllerLine(const MachineController& c)
 {
     QStringList extra;
     if (!c.busAddresses.isEmpty()) {
         QStringList map;
         for (auto it = c.busAddresses.cbegin(); it != c.busAddresses.cend(); ++it)
-            map << QStringLiteral("%1=%2").arg(axisName(it.key())).arg(it.value());
+            map << QStringLiteral("%1=%2").arg(c.axisNames.name(it.key())).arg(it.value());
         extra << CliText::tr("drives %1").arg(map.join(QLatin1Char(',')));
     }
     if (c.resetLine)
@@ -33,14 +35,14 @@ QString controllerLine(const MachineController& c)
         .trimmed();
 }
 
-QString axisLine(const MachineAxis& a)
+QString axisLine(const MachineDescription& m, const MachineAxis& a)
 {
     const QString limits = a.hasSoftLimits()
                                ? QStringLiteral("%1..%2").arg(*a.softMinimum).arg(*a.softMaximum)
                                : CliText::tr("no limits");
     return QStringLiteral("  %1  %2 %3 %4 %5 %6 %7")
         .arg(a.name)
-        .arg(a.controller + QLatin1Char('.') + axisName(a.axis), -14)
+        .arg(a.controller + QLatin1Char('.') + m.controllerAxisName(a), -14)
         .arg(machine::unitKey(a.unit), -5)
         .arg(CliText::tr("%1 steps/%2").arg(a.stepsPerUnit).arg(machine::unitKey(a.unit)), -20)
         .arg(a.invert ? CliText::tr("inverted") : QString(), -8)
@@ -60,7 +62,7 @@ void printMachineTable(const MachineDescription& m)
         printLine(controllerLine(c));
     for (const QList<const MachineAxis*>& group : m.referenceGroups()) {
         for (const MachineAxis* a : group)
-            printLine(axisLine(*a));
+            printLine(axisLine(m, *a));
     }
 }
 

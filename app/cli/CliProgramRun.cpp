@@ -4,12 +4,14 @@
 #include "CliProgramRun.h"
 #include "CliEventWait.h"
 #include "CliFeedHold.h"
+#include "CliMachineMotion.h"
 #include "CliMachineRun.h"
 #include "CliProgramOutput.h"
 #include "CliText.h"
 #include "model/NumberParsing.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramReader.h"
+#include "program/WorkOffsetStore.h"
 #include "program/language/ProgramExpansion.h"
 #include <QFile>
 #include <QFileInfo>
@@ -40,6 +42,8 @@ struct RunRequest
     // The window keeps these per machine; the CLI takes them per call (issue 29).
     program::ToolTable tools;           // --tool-table FILE (LinuxCNC's tool.tbl)
     program::CoordinateSystems systems; // --offsets "G54:X=10,Y=5;G55:X=20" (G54 active)
+    int activeSystem = 0;               // 0 = G54
+    bool reference = false;             // --reference: every axis first, in the file's order
 };
 
 // "G54:X=10,Y=5;G55:X=20": each system's work zero per axis, in the axis' unit; axes the machine
@@ -71,6 +75,34 @@ QString parseOffsets(const QString& text, const machine::MachineDescription& d,
     return {};
 }
 
+// Without --offsets, a machine file's work offsets as the window keeps them (issue 47 item 16:
+// a CAM file runs in the coordinates the window shows), said on stderr.
+void takeWindowOffsets(const CliOptions& o, RunRequest* r)
+{
+    if (o.machineFile.isEmpty())
+        return;
+    const program::StoredOffsets stored = program::WorkOffsetStore::load(
+        *program::WorkOffsetStore::windowSettings(), QFileInfo(o.machineFile).absoluteFilePath());
+    if (stored.isEmpty())
+        return;
+    r->systems = stored.systems;
+    r->activeSystem = stored.active;
+    QStringList systems;
+    for (int i = 0; i < program::kCoordinateSystems; ++i) {
+        QStringList axes;
+        const QMap<QString, double>& s = stored.systems[size_t(i)];
+        for (auto it = s.cbegin(); it != s.cend(); ++it)
+            axes << QStringLiteral("%1=%2").arg(it.key()).arg(it.value());
+        if (!axes.isEmpty() || i == stored.active)
+            systems << QStringLiteral("%1:%2").arg(program::coordinateSystemWord(i),
+                                                   axes.join(QLatin1Char(',')));
+    }
+    printError(
+        CliText::tr("work offsets as the window keeps them for this machine: %1 (%2 "
+                    "active; --offsets overrides)")
+            .arg(systems.join(QLatin1Char(';')), program::coordinateSystemWord(stored.active)));
+}
+
 // --tool-table and --offsets, which need the machine's axes; exit 12 for an unreadable file.
 Outcome readTablesArguments(const CliOptions& o, const machine::MachineDescription& d,
                             RunRequest* r)
@@ -78,6 +110,8 @@ Outcome readTablesArguments(const CliOptions& o, const machine::MachineDescripti
     if (const std::optional<QString> offsets = o.value("offsets")) {
         if (const QString why = parseOffsets(*offsets, d, &r->systems); !why.isEmpty())
             return Outcome::usage(why);
+    } else {
+        takeWindowOffsets(o, r);
     }
     const std::optional<QString> path = o.value("tool-table");
     if (!path)
@@ -103,9 +137,11 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
         return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
                                           "[--from-line N] [--skip-pauses] "
                                           "[--optional-stops on|off] [--feed-override PERCENT] "
-                                          "[--tool-table FILE] [--offsets G54:X=N,...;G55:...])"));
+                                          "[--tool-table FILE] [--offsets G54:X=N,...;G55:...] "
+                                          "[--reference])"));
     r->path = o.args.constFirst();
     r->dryRun = o.flag("dry-run");
+    r->reference = o.flag("reference");
     r->skipPauses = o.flag("skip-pauses");
     if (const std::optional<QString> stops = o.value("optional-stops")) {
         if (*stops != QLatin1String("on") && *stops != QLatin1String("off"))
@@ -132,7 +168,7 @@ Outcome readWorkedOut(const RunRequest& r, const machine::MachineDescription& d,
 {
     program::NgcContext context;
     context.coordinateSystems = r.systems;
-    context.activeSystem = 0;
+    context.activeSystem = r.activeSystem;
     context.subroutineFolder = d.subroutineFolderPath;
     QList<program::ProgramError> errors;
     const std::optional<program::ProgramExpansion::Result> expanded =
@@ -298,7 +334,7 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
 {
     program::MachineFacts facts = program::factsOf(m.machine());
     facts.coordinateSystems = r.systems;
-    facts.activeSystem = 0;
+    facts.activeSystem = r.activeSystem;
     facts.tools = r.tools;
     TerminalProgress progress(CliText::tr("checking %1").arg(r.path));
     const program::ProgramCheckResult checked =
@@ -350,7 +386,7 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
     ProgramReport report(runner, p.expansion ? p.expansion->sourceLines : p.lines, json);
     runner.setOptionalStops(r.optionalStops);
     runner.setFeedOverride(r.feedOverride);
-    runner.setCoordinateSystems(r.systems, 0);
+    runner.setCoordinateSystems(r.systems, r.activeSystem);
     runner.setToolTable(r.tools);
     CliFeedHold feedHold(runner, m, json);
     PauseAnswer pauses(runner, m, feedHold, r.skipPauses, json);
@@ -410,6 +446,20 @@ Outcome machineRunProgram(CliMachineSession& m, const CliOptions& o)
         return allowed;
     if (Outcome connected = m.connectAll(); !connected.ok())
         return connected;
+    if (r.reference && !r.dryRun) {
+        // Every axis in the file's order and directions (as `home` without axes), before the
+        // check: an ordinary CAM file runs without a G28 of its own.
+        QString refusal;
+        const quint64 id = m.machine().reference({}, &refusal);
+        if (id == 0)
+            return Outcome::failure(
+                ExitRefused,
+                CliText::tr("run --reference refused, nothing was sent: %1").arg(refusal));
+        if (Outcome done =
+                machinemotion::waitMotion(m, &machine::Machine::referenceFinished, id, -1);
+            !done.ok())
+            return done;
+    }
     return r.dryRun ? dryRun(m, p, r, o.json) : runProgram(m, p, r, o.json);
 }
 

@@ -17,6 +17,7 @@ private Q_SLOTS:
     void check_json_givesTheFileForm();
     void check_invalid_exit7NamesTheField();
     void check_missingFile_exit12();
+    void machineCheck_namedDrives_namesShownAsWritten();
 
 private:
     int run(const QStringList& args, QByteArray* out, QByteArray* err);
@@ -87,6 +88,47 @@ void TestCliMachine::check_missingFile_exit12()
     QByteArray out, err;
     QCOMPARE(run({"machine", "check", "/nonexistent/machine.json"}, &out, &err), 12);
     QVERIFY2(err.contains("/nonexistent/machine.json"), err.constData());
+}
+
+// Issue 47, item 11b: the names the file gives a bus' drives are the names shown, in the
+// controller's drive list and in the machine axes' mapping, by `machine check FILE` and by
+// `--machine FILE machine` (nothing is opened for either).
+void TestCliMachine::machineCheck_namedDrives_namesShownAsWritten()
+{
+    QTemporaryDir dir;
+    QFile file(dir.filePath("feeders.machine.json"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format":"stepdeck-machine","version":2,"name":"feeders",
+        "controllers":[{"id":"bus","model":"nanotec","port":"sim","axes":[
+            {"name":"feed1","address":1},{"name":"feed2","address":2},
+            {"name":"feed3","address":3},{"name":"feed4","address":4},
+            {"name":"feed5","address":5},{"name":"feed6","address":6}]}],
+        "axes":[
+            {"name":"X","controller":"bus","axis":"feed1","unit":"mm","stepsPerUnit":100},
+            {"name":"Y","controller":"bus","axis":"feed2","unit":"mm","stepsPerUnit":100},
+            {"name":"Z","controller":"bus","axis":"feed3","unit":"mm","stepsPerUnit":100},
+            {"name":"U","controller":"bus","axis":"feed4","unit":"mm","stepsPerUnit":100},
+            {"name":"V","controller":"bus","axis":"feed5","unit":"mm","stepsPerUnit":100},
+            {"name":"W","controller":"bus","axis":"feed6","unit":"mm","stepsPerUnit":100}]})");
+    file.close();
+
+    const QList<QStringList> commands = {
+        {"machine", "check", file.fileName()},
+        {"--machine", file.fileName(), "machine"},
+    };
+    for (const QStringList& command : commands) {
+        QByteArray out, err;
+        QCOMPARE(run(command, &out, &err), 0);
+        QVERIFY2(out.contains("drives feed1=1,feed2=2,feed3=3,feed4=4,feed5=5,feed6=6"),
+                 out.constData());
+        for (const char* mapped :
+             {"bus.feed1", "bus.feed2", "bus.feed3", "bus.feed4", "bus.feed5", "bus.feed6"})
+            QVERIFY2(out.contains(mapped), out.constData());
+        QVERIFY2(!out.contains("axis5") && !out.contains("axis6"), out.constData());
+        QVERIFY2(!out.contains("X=1") && !out.contains("U=4"), out.constData());
+        for (const char* letter : {"bus.X ", "bus.Y ", "bus.Z ", "bus.U "})
+            QVERIFY2(!out.contains(letter), out.constData());
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCliMachine)

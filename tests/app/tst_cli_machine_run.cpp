@@ -1,15 +1,18 @@
 // stepdeck-cli --machine FILE (issue 19): an E-LAB X/Y/Z table and a Nanotec drive as rotary A,
 // each simulator on a real pty in this process, the CLI as a process. Every motion test
 // asserts what the DEVICES saw and that they end standing still.
+#include "program/WorkOffsetStore.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
 #include "sim/Simulator.h"
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
@@ -95,6 +98,8 @@ private Q_SLOTS:
     void connect_portMissing_exit6NamesTheControllerNothingMoves();
     void machineFile_invalidOrUnreadable_exit7Or12_data();
     void machineFile_invalidOrUnreadable_exit7Or12();
+    void run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero_data();
+    void run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero();
 
 private:
     void writeMachineFile();
@@ -185,6 +190,10 @@ void TestCliMachineRun::startCli(const QStringList& command)
     connect(m_process.get(), &QProcess::readyReadStandardOutput, this,
             [this] { m_out += m_process->readAllStandardOutput(); });
     // A generous link timeout: the machine shares two cores with builds.
+    // The window's settings of this test only (the CLI reads its work offsets: issue 47).
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), m_dir->filePath(QStringLiteral("config")));
+    m_process->setProcessEnvironment(env);
     m_process->start(m_cli,
                      QStringList{"--machine", m_file, "--setup-defaults", "--timeout", "10000"} +
                          command);
@@ -384,6 +393,47 @@ void TestCliMachineRun::machineFile_invalidOrUnreadable_exit7Or12()
     }
     QCOMPARE(run({"status"}), exitCode);
     QVERIFY2(m_err.contains(message.toUtf8()), m_err.constData());
+}
+
+// Issue 47 item 16: an ordinary CAM file (no G28, absolute moves) runs from the CLI as in the
+// window: --reference references every axis first, and the work zero the window keeps for
+// this machine file is used unless --offsets gives another. At the board (400 steps/mm): X1 in
+// the window's zero X=2 is machine 3 mm, 1200 steps from the reference point.
+void TestCliMachineRun::run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero_data()
+{
+    QTest::addColumn<QStringList>("offsets");
+    QTest::addColumn<qint64>("steps");
+    QTest::addColumn<bool>("saidFromWindow");
+    QTest::newRow("the window's zero") << QStringList() << qint64(1200) << true;
+    QTest::newRow("--offsets overrides it")
+        << QStringList{"--offsets", "G54:X=0.5"} << qint64(600) << false;
+}
+
+void TestCliMachineRun::run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero()
+{
+    QFETCH(QStringList, offsets);
+    QFETCH(qint64, steps);
+    QFETCH(bool, saidFromWindow);
+    {
+        // Where the window keeps it: $XDG_CONFIG_HOME/StepDeck/StepDeck.conf.
+        QSettings settings(m_dir->filePath(QStringLiteral("config/StepDeck/StepDeck.conf")),
+                           QSettings::IniFormat);
+        program::StoredOffsets stored;
+        stored.systems[0] = {{QStringLiteral("X"), 2.0}};
+        program::WorkOffsetStore::save(settings, QFileInfo(m_file).absoluteFilePath(), stored);
+    }
+    const QString program = m_dir->filePath(QStringLiteral("part.ngc"));
+    {
+        QFile file(program);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("G90 G21\nG0 X1\nM30\n");
+    }
+    const int code = run(QStringList{"run", program, "--reference"} + offsets);
+    QVERIFY2(code == 0, m_err.constData());
+    QCOMPARE(acceptedSteps(*m_elab.sim, Axis::X), steps);
+    QVERIFY(qAbs(m_elab.sim->position(Axis::X) - (-20000 + steps)) <= 10);
+    QVERIFY(m_elab.sim->standingStill());
+    QCOMPARE(m_err.contains("as the window keeps them"), saidFromWindow);
 }
 
 QTEST_GUILESS_MAIN(TestCliMachineRun)

@@ -1,5 +1,6 @@
 #include "MachineWorkOffsets.h"
 #include "machine/Machine.h"
+#include "program/WorkOffsetStore.h"
 #include <QFileInfo>
 #include <QSettings>
 
@@ -7,44 +8,12 @@ namespace stepdeck::ui {
 
 MachineWorkOffsets::MachineWorkOffsets(QObject* parent) : QObject(parent) {}
 
-namespace {
-QMap<QString, double> offsetsOf(const QVariantMap& axes)
-{
-    QMap<QString, double> out;
-    for (auto it = axes.cbegin(); it != axes.cend(); ++it) {
-        bool ok = false;
-        const double value = it.value().toDouble(&ok);
-        if (ok && qIsFinite(value) && value != 0.0)
-            out.insert(it.key(), value);
-    }
-    return out;
-}
-
-QVariantMap variantOf(const QMap<QString, double>& offsets)
-{
-    QVariantMap axes;
-    for (auto it = offsets.cbegin(); it != offsets.cend(); ++it)
-        axes.insert(it.key(), it.value());
-    return axes;
-}
-} // namespace
-
 void MachineWorkOffsets::load(const QString& machinePath)
 {
     m_path = machinePath.isEmpty() ? QString() : QFileInfo(machinePath).absoluteFilePath();
-    m_systems = {};
-    m_active = 0;
-    if (!m_path.isEmpty()) {
-        // One map of files -> (axis -> offset): a file path as a QSettings key would be split
-        // into groups at its slashes.
-        const QSettings settings;
-        m_systems[0] = offsetsOf(settings.value(settingsKey()).toMap().value(m_path).toMap());
-        const QVariantMap more = settings.value(systemsKey()).toMap().value(m_path).toMap();
-        for (int i = 1; i < program::kCoordinateSystems; ++i)
-            m_systems[size_t(i)] = offsetsOf(more.value(program::coordinateSystemWord(i)).toMap());
-        const int active = more.value(QStringLiteral("active"), 0).toInt();
-        m_active = active >= 0 && active < program::kCoordinateSystems ? active : 0;
-    }
+    const program::StoredOffsets stored = program::WorkOffsetStore::load(QSettings(), m_path);
+    m_systems = stored.systems;
+    m_active = stored.active;
     Q_EMIT changed();
 }
 
@@ -122,27 +91,8 @@ double MachineWorkOffsets::toMachine(const QString& axis, double workUnits) cons
 
 void MachineWorkOffsets::save() const
 {
-    if (m_path.isEmpty())
-        return;
     QSettings settings;
-    QVariantMap files = settings.value(settingsKey()).toMap();
-    if (m_systems[0].isEmpty())
-        files.remove(m_path);
-    else
-        files.insert(m_path, variantOf(m_systems[0]));
-    settings.setValue(settingsKey(), files);
-    QVariantMap more;
-    for (int i = 1; i < program::kCoordinateSystems; ++i)
-        if (!m_systems[size_t(i)].isEmpty())
-            more.insert(program::coordinateSystemWord(i), variantOf(m_systems[size_t(i)]));
-    if (m_active != 0)
-        more.insert(QStringLiteral("active"), m_active);
-    QVariantMap systems = settings.value(systemsKey()).toMap();
-    if (more.isEmpty())
-        systems.remove(m_path);
-    else
-        systems.insert(m_path, more);
-    settings.setValue(systemsKey(), systems);
+    program::WorkOffsetStore::save(settings, m_path, program::StoredOffsets{m_systems, m_active});
 }
 
 } // namespace stepdeck::ui

@@ -1,5 +1,6 @@
 #pragma once
 #include "program/ProgramCoordinates.h"
+#include "program/WorkOffsetStore.h"
 #include <QMap>
 #include <QObject>
 #include <QString>
@@ -54,9 +55,9 @@ public:
     double toWork(const QString& axis, double machineUnits) const;
     double toMachine(const QString& axis, double workUnits) const;
 
-    static QString settingsKey() { return QStringLiteral("machine/workOffsets"); } // G54
-    // G55..G59 and the active system: files -> {"active": n, "G55": {axis: offset}, ...}.
-    static QString systemsKey() { return QStringLiteral("machine/coordinateSystems"); }
+    // Where they are kept (program::WorkOffsetStore, which the CLI reads too).
+    static QString settingsKey() { return program::WorkOffsetStore::settingsKey(); }
+    static QString systemsKey() { return program::WorkOffsetStore::systemsKey(); }
 
 Q_SIGNALS:
     void changed();
