@@ -1969,6 +1969,30 @@
             <source>refused: the contour starts with %1 at %2 steps, but it stands at %3</source>
             <translation>abgelehnt: die Kontur beginnt mit %1 bei %2 Schritten, die Achse steht aber bei %3</translation>
         </message>
+        <message>
+            <source>refused: the contour runs at %1 ticks/s; beside the status polls the line carries at most %2</source>
+            <translation>abgelehnt: die Kontur läuft mit %1 Takten/s; neben den Statusabfragen trägt die Leitung höchstens %2</translation>
+        </message>
+        <message>
+            <source>the stopped contour did not end with EndOfFeed</source>
+            <translation>die angehaltene Kontur endete nicht mit EndOfFeed</translation>
+        </message>
+        <message>
+            <source>the board still moved %1 ms after the stopped contour ended</source>
+            <translation>die Karte bewegte sich %1 ms nach dem Ende der angehaltenen Kontur noch</translation>
+        </message>
+        <message>
+            <source>no status after the stopped contour ended: %1</source>
+            <translation>kein Status nach dem Ende der angehaltenen Kontur: %1</translation>
+        </message>
+        <message>
+            <source>%1: ForceStopMove sent, positions unknown</source>
+            <translation>%1: ForceStopMove gesendet, Positionen unbekannt</translation>
+        </message>
+        <message>
+            <source>stop overtaken by a panic stop, a reset or a lost link</source>
+            <translation>Stopp überholt von einem Panik-Stopp, einem Reset oder einer verlorenen Verbindung</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::elab::ElabCtlJog</name>
@@ -2053,6 +2077,10 @@
         <message>
             <source>no contour to run</source>
             <translation>keine Kontur zu fahren</translation>
+        </message>
+        <message>
+            <source>contour stopped after %1 ticks: the board runs out the ticks it holds, every position stays known</source>
+            <translation>Kontur nach %1 Takten angehalten: die Karte fährt die gespeicherten Takte aus, jede Position bleibt bekannt</translation>
         </message>
     </context>
     <context>
@@ -2830,6 +2858,30 @@
         <message>
             <source>%1: controller "%2" takes no feed rate</source>
             <translation>%1: Steuerung „%2“ nimmt keinen Vorschub an</translation>
+        </message>
+        <message>
+            <source>controller "%1" did not confirm spindle and coolant off within %2 s: switch them off at the machine</source>
+            <translation>Steuerung "%1" hat Spindel und Kühlmittel aus nicht innerhalb von %2 s bestätigt: an der Maschine ausschalten</translation>
+        </message>
+        <message>
+            <source>controller "%1" did not switch the %2 off (%3): switch it off at the machine</source>
+            <translation>Steuerung "%1" hat %2 nicht ausgeschaltet (%3): an der Maschine ausschalten</translation>
+        </message>
+        <message>
+            <source>spindle</source>
+            <translation>die Spindel</translation>
+        </message>
+        <message>
+            <source>coolant</source>
+            <translation>das Kühlmittel</translation>
+        </message>
+        <message>
+            <source>controller "%1" lost its link before it switched spindle and coolant off: switch them off at the machine</source>
+            <translation>Steuerung "%1" verlor die Verbindung, bevor sie Spindel und Kühlmittel ausschaltete: an der Maschine ausschalten</translation>
+        </message>
+        <message>
+            <source>spindle and coolant switched off</source>
+            <translation>Spindel und Kühlmittel ausgeschaltet</translation>
         </message>
     </context>
     <context>
@@ -4301,6 +4353,10 @@
             <source>the offsets changed since the program's parameters were worked out: check it again</source>
             <translation>die Nullpunkte haben sich geändert, seit die Parameter des Programms ausgewertet wurden: erneut prüfen</translation>
         </message>
+        <message>
+            <source>the run holds inside a repeat, whose passes a check from here cannot count: the new offsets cannot be checked for the rest</source>
+            <translation>der Lauf hält innerhalb einer Wiederholung, deren Durchläufe eine Prüfung ab hier nicht zählen kann: die neuen Nullpunkte lassen sich für den Rest nicht prüfen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramCoordinates</name>
@@ -4800,6 +4856,38 @@
             <source>Feed hold: the path stops where it is; Resume goes on from there</source>
             <translation>Vorschub-Halt: Die Bahn bleibt stehen, wo sie ist; Fortsetzen fährt von dort weiter</translation>
         </message>
+        <message>
+            <source>the run holds in the middle of a contour (feed hold), where new offsets cannot start: put them back to resume, or stop</source>
+            <translation>der Lauf hält mitten in einer Kontur (Vorschub-Halt), wo neue Nullpunkte nicht beginnen können: zum Fortsetzen zurücksetzen oder stoppen</translation>
+        </message>
+        <message>
+            <source>the run holds in the middle of an arc or a drilling cycle, where new offsets cannot start: put them back to resume, or stop</source>
+            <translation>der Lauf hält mitten in einem Bogen oder Bohrzyklus, wo neue Nullpunkte nicht beginnen können: zum Fortsetzen zurücksetzen oder stoppen</translation>
+        </message>
+        <message>
+            <source>a G92 offset is in effect, which a check of the rest cannot follow: put the offsets back to resume, or stop</source>
+            <translation>ein G92-Versatz ist aktiv, dem eine Prüfung des Rests nicht folgen kann: zum Fortsetzen die Nullpunkte zurücksetzen oder stoppen</translation>
+        </message>
+        <message>
+            <source>the machine changed while the rest was checked: resume again to check it anew</source>
+            <translation>die Maschine hat sich während der Prüfung des Rests geändert: erneut fortsetzen, um neu zu prüfen</translation>
+        </message>
+        <message>
+            <source>the rest of the program fails its check with them, line %1: %2</source>
+            <translation>der Rest des Programms besteht die Prüfung damit nicht, Zeile %1: %2</translation>
+        </message>
+        <message>
+            <source>Not resumed: the offsets or tools changed while the run held; %1</source>
+            <translation>Nicht fortgesetzt: Nullpunkte oder Werkzeuge änderten sich während des Halts; %1</translation>
+        </message>
+        <message>
+            <source>The rest of the program runs with the new offsets and tools (checked from line %1).</source>
+            <translation>Der Rest des Programms läuft mit den neuen Nullpunkten und Werkzeugen (geprüft ab Zeile %1).</translation>
+        </message>
+        <message>
+            <source>The new offsets and tools are taken; no move is left to run.</source>
+            <translation>Die neuen Nullpunkte und Werkzeuge sind übernommen; keine Bewegung bleibt übrig.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramSourceReader</name>
@@ -4810,6 +4898,21 @@
         <message>
             <source>cannot read %1: %2</source>
             <translation>%1 kann nicht gelesen werden: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::RunFromState</name>
+        <message>
+            <source>spindle on at S%1 (%2)</source>
+            <translation>Spindel ein mit S%1 (%2)</translation>
+        </message>
+        <message>
+            <source>coolant on (%1)</source>
+            <translation>Kühlmittel ein (%1)</translation>
+        </message>
+        <message>
+            <source>tool %1 loaded</source>
+            <translation>Werkzeug %1 eingesetzt</translation>
         </message>
     </context>
     <context>
@@ -6535,6 +6638,14 @@ W1500</translation>
             <source>STOP not confirmed by "%1": %2</source>
             <translation>STOPP nicht bestätigt von „%1“: %2</translation>
         </message>
+        <message>
+            <source>PANIC STOP: %1 confirmed standstill since; positions are lost, reference all axes before moving.</source>
+            <translation>PANIK-STOPP: %1 hat inzwischen den Stillstand bestätigt; Positionen sind verloren, vor dem Verfahren alle Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>STOP: %1 confirmed standstill since.</source>
+            <translation>STOPP: %1 hat inzwischen den Stillstand bestätigt.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineDro</name>
@@ -7736,6 +7847,18 @@ W1500</translation>
             <source>This program has parameters or O words: its lines run in the order its control flow gives, so it runs from its start</source>
             <translation>Dieses Programm hat Parameter oder O-Worte: Seine Zeilen laufen in der Reihenfolge, die sein Ablauf vorgibt, daher läuft es von seinem Anfang an</translation>
         </message>
+        <message>
+            <source>The offsets or tools changed while the run holds: Resume checks the rest of the program with them first.</source>
+            <translation>Nullpunkte oder Werkzeuge änderten sich während des Halts: Fortsetzen prüft zuerst den Rest des Programms damit.</translation>
+        </message>
+        <message>
+            <source>First, as the lines before it left them: %1.</source>
+            <translation>Zuerst, wie die Zeilen davor sie hinterließen: %1.</translation>
+        </message>
+        <message>
+            <source>Feed hold in line %1: the tool stands on its path; Resume goes on from there.</source>
+            <translation>Vorschub-Halt in Zeile %1: das Werkzeug steht auf seiner Bahn; Fortsetzen fährt von dort weiter.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>
@@ -8455,6 +8578,81 @@ hält die Steuerung nicht an</translation>
         <message>
             <source>Checked as the controller last reported the input</source>
             <translation>Angehakt, wie die Steuerung den Eingang zuletzt gemeldet hat</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::SpindleCoolantBar</name>
+        <message>
+            <source>S </source>
+            <translation>S </translation>
+        </message>
+        <message>
+            <source>The speed the spindle switch starts it at, as a program's M3 S</source>
+            <translation>Die Drehzahl, mit der der Spindelschalter sie startet, wie M3 S eines Programms</translation>
+        </message>
+        <message>
+            <source>Spindle on</source>
+            <translation>Spindel ein</translation>
+        </message>
+        <message>
+            <source>Spindle off</source>
+            <translation>Spindel aus</translation>
+        </message>
+        <message>
+            <source>Coolant on</source>
+            <translation>Kühlmittel ein</translation>
+        </message>
+        <message>
+            <source>Coolant off</source>
+            <translation>Kühlmittel aus</translation>
+        </message>
+        <message>
+            <source>Spindle: unknown</source>
+            <translation>Spindel: unbekannt</translation>
+        </message>
+        <message>
+            <source>Coolant: unknown</source>
+            <translation>Kühlmittel: unbekannt</translation>
+        </message>
+        <message>
+            <source> rpm</source>
+            <translation> U/min</translation>
+        </message>
+        <message>
+            <source>Spindle: on</source>
+            <translation>Spindel: ein</translation>
+        </message>
+        <message>
+            <source>Spindle: off</source>
+            <translation>Spindel: aus</translation>
+        </message>
+        <message>
+            <source>As the controller reports it</source>
+            <translation>Wie die Steuerung sie meldet</translation>
+        </message>
+        <message>
+            <source>No connected controller of this machine has a spindle</source>
+            <translation>Keine verbundene Steuerung dieser Maschine hat eine Spindel</translation>
+        </message>
+        <message>
+            <source>No machine is open</source>
+            <translation>Keine Maschine ist geöffnet</translation>
+        </message>
+        <message>
+            <source>Coolant: on</source>
+            <translation>Kühlmittel: ein</translation>
+        </message>
+        <message>
+            <source>Coolant: off</source>
+            <translation>Kühlmittel: aus</translation>
+        </message>
+        <message>
+            <source>As last switched in this session: the controller cannot read its relay back</source>
+            <translation>Wie zuletzt in dieser Sitzung geschaltet: die Steuerung kann ihr Relais nicht zurücklesen</translation>
+        </message>
+        <message>
+            <source>No connected controller of this machine has coolant</source>
+            <translation>Keine verbundene Steuerung dieser Maschine hat Kühlmittel</translation>
         </message>
     </context>
     <context>
