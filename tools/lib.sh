@@ -11,7 +11,7 @@ STEPDECK_PACKAGES=(
     g++ cmake ninja-build
     qt6-base-dev qt6-serialport-dev qt6-charts-dev qt6-tools-dev libqt6opengl6-dev
     qt6-translations-l10n libsdl2-dev
-    socat xvfb xauth ccache
+    socat xvfb xauth
 )
 
 stepdeck_log() { printf '==> %s\n' "$*" >&2; }
