@@ -35,6 +35,30 @@ SafetyBannerText SafetyBanner::disconnected(const SafetyBannerInput& in)
     return {tr("Not connected."), QStringLiteral("idle")};
 }
 
+// A program that runs or holds: what the operator watches then, in place of "Ready" (issue 47
+// item 15). Faults, a panic and an incomplete setup still come first.
+std::optional<SafetyBannerText> SafetyBanner::job(const SafetyBannerInput& in)
+{
+    using program::RunState;
+    switch (in.job) {
+    case RunState::Running:
+        return SafetyBannerText{tr("Program running, line %1: STOP (Esc) ends it, Hold (F2) stops "
+                                   "it on its path.")
+                                    .arg(in.jobLine),
+                                QStringLiteral("job")};
+    case RunState::Paused:
+        return SafetyBannerText{
+            tr("Program held at line %1: Resume goes on, STOP (Esc) ends it.").arg(in.jobLine),
+            QStringLiteral("job")};
+    case RunState::Stopping:
+        return SafetyBannerText{
+            tr("Program stopping at line %1: waiting for the axes to stand.").arg(in.jobLine),
+            QStringLiteral("warning")};
+    default:
+        return std::nullopt;
+    }
+}
+
 SafetyBannerText SafetyBanner::compute(const SafetyBannerInput& in)
 {
     if (in.link != LinkState::Connected)
@@ -56,6 +80,8 @@ SafetyBannerText SafetyBanner::compute(const SafetyBannerInput& in)
                    "on the %1 page first. The controller refuses every move until then.")
                     .arg(setupPageTitle()),
                 QStringLiteral("warning")};
+    if (const std::optional<SafetyBannerText> running = job(in))
+        return *running;
     if (in.positions == machine::PositionKnowledge::Referenced)
         return {tr("Ready: all axes referenced."), QStringLiteral("ok")};
     if (in.positions == machine::PositionKnowledge::Estimated)
@@ -82,14 +108,19 @@ QStringList SafetyBanner::possibleTexts()
             in.movingWhenLinkEnded = flags & 2;
             in.status.panic = flags & 4;
             in.hostPanicSent = flags & 8;
+            in.jobLine = 8888888; // the widest line number a program has
             in.status.setupIncomplete = flags & 16;
             in.positionsLost = flags & 32;
             in.positions = (flags & 64)    ? machine::PositionKnowledge::Referenced
                            : (flags & 128) ? machine::PositionKnowledge::Estimated
                                            : machine::PositionKnowledge::Unknown;
-            const QString text = compute(in).text;
-            if (!out.contains(text))
-                out << text;
+            for (program::RunState job : {program::RunState::Idle, program::RunState::Running,
+                                          program::RunState::Paused, program::RunState::Stopping}) {
+                in.job = job;
+                const QString text = compute(in).text;
+                if (!out.contains(text))
+                    out << text;
+            }
         }
     }
     return out;

@@ -1,6 +1,7 @@
 #pragma once
 #include "controller/Controller.h"
 #include "machine/Machine.h"
+#include "program/ProgramRunner.h"
 #include <QCoreApplication>
 
 namespace stepdeck::ui {
@@ -22,12 +23,16 @@ struct SafetyBannerInput
     bool positionsLost = false;       // panic or reconnect since the last full referencing
     bool movingWhenLinkEnded = false; // the last status before the link ended showed motion
     bool hostPanicSent = false;       // PANIC pressed here, no motion started since
+    // A program's run (issue 47 item 15): while it runs or holds the banner says so, not
+    // "Ready". jobLine: the line running or held at.
+    program::RunState job = program::RunState::Idle;
+    int jobLine = 0;
 };
 
 struct SafetyBannerText
 {
     QString text;
-    QString severity; // "fault", "warning", "ok", "idle"
+    QString severity; // "fault", "warning", "ok", "idle", "job"
     bool offerReference = false;
 };
 
@@ -46,6 +51,7 @@ public:
 
 private:
     static SafetyBannerText disconnected(const SafetyBannerInput& in);
+    static std::optional<SafetyBannerText> job(const SafetyBannerInput& in);
 };
 
 } // namespace stepdeck::ui

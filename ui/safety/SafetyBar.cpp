@@ -164,6 +164,15 @@ void SafetyBar::onLinkState(LinkState state)
     refresh();
 }
 
+void SafetyBar::setJob(program::RunState state, int line)
+{
+    if (state == m_job && line == m_jobLine)
+        return;
+    m_job = state;
+    m_jobLine = line;
+    refresh();
+}
+
 void SafetyBar::refresh()
 {
     // With a machine open the banner speaks of all of it, not of the controller the pages show.
@@ -180,12 +189,15 @@ void SafetyBar::refresh()
     in.positionsLost = m_positionsLost;
     in.movingWhenLinkEnded = m_movingWhenLinkEnded;
     in.hostPanicSent = m_hostPanicSent;
+    in.job = m_job;
+    in.jobLine = m_jobLine;
     const SafetyBannerText banner = SafetyBanner::compute(in);
     static const QMap<QString, QString> colours{
         {QStringLiteral("fault"), QStringLiteral("background:#ffcdd2; color:#8e0000;")},
         {QStringLiteral("warning"), QStringLiteral("background:#ffe082; color:#4e3400;")},
         {QStringLiteral("ok"), QStringLiteral("background:#c8e6c9; color:#1b5e20;")},
         {QStringLiteral("idle"), QStringLiteral("background:#eceff1; color:#37474f;")},
+        {QStringLiteral("job"), QStringLiteral("background:#bbdefb; color:#0d47a1;")},
     };
     m_banner->setText(banner.text);
     setStyleSheetIfChanged(m_banner,

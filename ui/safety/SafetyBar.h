@@ -2,6 +2,7 @@
 #include "common/ElidedLabel.h"
 #include "controller/Controller.h"
 #include "model/ModelPresentation.h"
+#include "program/ProgramRunner.h"
 #include <QWidget>
 
 class QAction;
@@ -41,6 +42,8 @@ public:
     // Labels and the permanent note for a model's capabilities (called on every model and
     // link change with the context's). `presentation`: the model's own no-stop note, if any.
     void showCapabilities(const Capabilities& caps, const ModelPresentation& presentation = {});
+    // A program's run and its line (ProgramPage::jobChanged): the banner says it runs or holds.
+    void setJob(program::RunState state, int line);
 
 private:
     void refresh();
@@ -60,6 +63,8 @@ private:
     bool m_hostPanicSent = false;
     bool m_sawPanic = false;
     bool m_hadReferenced = false; // some axis was referenced in this window's lifetime
+    program::RunState m_job = program::RunState::Idle;
+    int m_jobLine = 0;
 };
 
 } // namespace stepdeck::ui

@@ -105,6 +105,27 @@ void TestSafetyBanner::compute_data()
     QTest::newRow("estimated") << in << "Positions estimated"
                                << "Ready"
                                << "warning";
+    // Issue 47 item 15: while a program runs or holds the banner says so, not "Ready"; a fault
+    // or a panic still comes first.
+    in.positions = machine::PositionKnowledge::Referenced;
+    in.job = program::RunState::Running;
+    in.jobLine = 12;
+    QTest::newRow("program running") << in << "Program running, line 12"
+                                     << "Ready"
+                                     << "job";
+    in.job = program::RunState::Paused;
+    QTest::newRow("program held") << in << "Program held at line 12"
+                                  << "Ready"
+                                  << "job";
+    in.job = program::RunState::Finished;
+    QTest::newRow("program finished") << in << "Ready: all axes referenced"
+                                      << "Program"
+                                      << "ok";
+    in.job = program::RunState::Running;
+    in.status.motionUnconfirmed = true;
+    QTest::newRow("program running, stop unconfirmed") << in << "No standstill confirmed"
+                                                       << "Program running"
+                                                       << "fault";
 }
 
 void TestSafetyBanner::compute()
