@@ -8,7 +8,6 @@
 
 class QProgressBar;
 class QPushButton;
-class QStackedWidget;
 class QTimer;
 
 namespace stepdeck::machine {
@@ -32,7 +31,7 @@ class ProgramPromptBanner;
 
 // The Program page (issue 20, docs/programs.md): a motion program's file and text, checked
 // against the open machine while it is edited (debounced: ProgramParser, then ProgramCheck
-// with factsOf(machine)), the errors marked at their lines and listed in the preview's place
+// with factsOf(machine)), the errors marked at their lines and listed in the preview's Errors tab
 // (ProgramErrorList), the preview beside it, and the run through a ProgramRunner on the
 // context's machine: Run, Pause, Resume, Step, Abort, Run from line N (after a confirmation
 // naming where the axes stand), the running line highlighted, "line n of m" with the estimated
@@ -78,6 +77,8 @@ Q_SIGNALS:
     void operatorMessage(int line, const QString& text);
     // A program runs (not held at M0/M6 or paused): it owns spindle and coolant meanwhile.
     void programRunning(bool running);
+    // The run's state and its line, for the safety banner (issue 47 item 15).
+    void jobChanged(stepdeck::program::RunState state, int line);
 
 public Q_SLOTS:
     // The window's STOP or PANIC: a running program ends as aborted.
@@ -119,7 +120,6 @@ private:
     ProgramEditor* m_editor;
     ProgramErrorList* m_errorList;
     ProgramPreviewView* m_preview;
-    QStackedWidget* m_previewOrErrors = nullptr; // the errors in the preview's place
     ProgramPromptBanner* m_banner;
     // While the run holds: why Resume did not go on, or that it checks new offsets first.
     QString m_holdNote;

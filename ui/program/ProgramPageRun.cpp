@@ -193,9 +193,14 @@ void ProgramPage::onPaused(int line, const QString& prompt)
 void ProgramPage::onFinished(RunState state, const QString& message)
 {
     QString text;
+    // Issue 47, item 11: the count the preview names ("n block(s) run", ProgramPreview::
+    // blocksRun: every block in run order, repeats counted out, lines of modal words only
+    // included), of the check the run started with (from its first line). A run that finished
+    // ran each of them; ProgramRunner::blocksDone() leaves out the modal-only lines it passes
+    // by, so it would name fewer than the preview for the same run.
     if (state == RunState::Finished)
         text = tr("Finished: %n block(s) run.", nullptr,
-                  int(qMin<qint64>(m_runner->blocksDone(), INT_MAX)));
+                  int(qMin<qint64>(m_runner->preview().blocksRun, INT_MAX)));
     else if (state == RunState::Failed)
         text = tr("Failed: %1").arg(message);
     else
@@ -242,6 +247,7 @@ void ProgramPage::updateControls()
         m_banner->setStatus(m_stoppingText.isEmpty()
                                 ? tr("Aborting: waiting for the axes to stand.")
                                 : tr("Aborting: %1").arg(m_stoppingText));
+    Q_EMIT jobChanged(isStarting() ? RunState::Idle : state, line);
 }
 
 void ProgramPage::updateProgress()
@@ -250,9 +256,14 @@ void ProgramPage::updateProgress()
         m_controls->clearProgress();
         return;
     }
-    std::optional<double> left = m_progress.secondsLeft();
+    // Issue 47, item 11: the feed moves' rest at the run's override; ProgramControls shows it
+    // again at once when the override changes.
+    m_progress.setFeedOverride(m_runner->feedOverride());
+    std::optional<ProgramTimeLeft> left = m_progress.timeLeft();
     if (program::isEnded(m_runner->state()))
-        left = m_runner->state() == RunState::Finished ? std::optional<double>(0.0) : std::nullopt;
+        left = m_runner->state() == RunState::Finished
+                   ? std::optional<ProgramTimeLeft>(ProgramTimeLeft{})
+                   : std::nullopt;
     const int line =
         m_runner->currentLine() > 0 ? m_runner->currentLine() : m_editor->runningLine();
     m_controls->setProgress(line, m_running.lines, left);

@@ -321,6 +321,7 @@ void MainWindow::buildDocks()
     // A running program owns spindle and coolant: the Position dock's switches wait (issue 47).
     connect(m_programPage, &ProgramPage::programRunning, m_position->spindleCoolant(),
             &SpindleCoolantBar::setProgramRunning);
+    connect(m_programPage, &ProgramPage::jobChanged, m_safety, &SafetyBar::setJob);
     connect(m_context->mdi(), &MachineMdi::operatorMessage, this, [this](int, const QString& text) {
         m_messages->show(StatusMessages::Owner::General, tr("MDI: %1").arg(text),
                          StatusMessages::Severity::Info, 30000);
