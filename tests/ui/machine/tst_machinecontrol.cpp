@@ -90,7 +90,9 @@ void TestMachineControl::recordMessages()
         Shown shown{messages->currentText(), false};
         QSemaphore done;
         m_f->session->withSimulator([&shown, &done](Simulator* s) {
-            shown.deviceMoving = s->isMoving(Axis::X); // the board's X, or drive 1
+            // Moving, not merely busy: a Nanotec drive settling after 'S' stands (its settle
+            // time is "busy, not moving", NanotecDrive::isActive), and "stopped" is true then.
+            shown.deviceMoving = !s->standingStill();
             done.release();
         });
         done.tryAcquire(1, 5000);
