@@ -115,12 +115,13 @@ FrameFigures measure(ProgramPathView& view, PreviewViewKind kind, int frames)
                 QApplication::sendEvent(&view, &wheel);
             } else {
                 const QPointF to = dragAt + QPointF(i % 3 == 0 ? 6 : -6, i % 5 == 0 ? 4 : -4);
+                // A pan (Shift+left: a plain left drag orbits since issue 47).
                 QMouseEvent press(QEvent::MouseButtonPress, dragAt, dragAt, Qt::LeftButton,
-                                  Qt::LeftButton, Qt::NoModifier);
+                                  Qt::LeftButton, Qt::ShiftModifier);
                 QMouseEvent move(QEvent::MouseMove, to, to, Qt::NoButton, Qt::LeftButton,
-                                 Qt::NoModifier);
+                                 Qt::ShiftModifier);
                 QMouseEvent release(QEvent::MouseButtonRelease, to, to, Qt::LeftButton,
-                                    Qt::NoButton, Qt::NoModifier);
+                                    Qt::NoButton, Qt::ShiftModifier);
                 QApplication::sendEvent(&view, &press);
                 QApplication::sendEvent(&view, &move);
                 QApplication::sendEvent(&view, &release);

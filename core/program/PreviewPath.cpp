@@ -2,18 +2,17 @@
 
 namespace stepdeck::program {
 
-void PreviewPath::add(int line, double seconds, bool rapid, const std::vector<qint64>& steps,
+void PreviewPath::add(const PreviewPoint& at, const std::vector<qint64>& steps,
                       const std::vector<char>& known)
 {
-    const bool merged = rapid && m_mergedRapid;
+    PreviewPoint merged = at; // its times and count are the run's up to here: kept as they are
+    merged.rapid = at.rapid && m_mergedRapid;
     if (++m_sinceKept < m_stride) {
         // Not kept (yet): only what it takes to draw it should it be the run's end; the point
         // itself (a map of positions) is made at finish().
-        m_mergedRapid = merged;
+        m_mergedRapid = merged.rapid;
         m_pending.valid = true;
-        m_pending.line = line;
-        m_pending.seconds = seconds;
-        m_pending.rapid = merged;
+        m_pending.at = merged;
         m_pending.steps = steps;
         m_pending.known = known;
         return;
@@ -21,19 +20,16 @@ void PreviewPath::add(int line, double seconds, bool rapid, const std::vector<qi
     m_sinceKept = 0;
     m_mergedRapid = true;
     m_pending.valid = false;
-    m_path << pointAt(line, seconds, merged, steps, known);
+    m_path << pointAt(merged, steps, known);
     if (m_path.size() >= ProgramPreview::kMaxPathPoints)
         thin();
 }
 
-PreviewPoint PreviewPath::pointAt(int line, double seconds, bool rapid,
-                                  const std::vector<qint64>& steps,
+PreviewPoint PreviewPath::pointAt(const PreviewPoint& at, const std::vector<qint64>& steps,
                                   const std::vector<char>& known) const
 {
-    PreviewPoint point;
-    point.line = line;
-    point.seconds = seconds;
-    point.rapid = rapid;
+    PreviewPoint point = at;
+    point.position.clear();
     for (qsizetype i = 0; i < m_axes.size(); ++i)
         if (known[size_t(i)])
             point.position.insert(m_axes.at(i).name,
@@ -60,8 +56,7 @@ void PreviewPath::finish(ProgramPreview* preview) const
 {
     preview->path = m_path;
     if (m_pending.valid) // the run's end, between two kept points
-        preview->path << pointAt(m_pending.line, m_pending.seconds, m_pending.rapid,
-                                 m_pending.steps, m_pending.known);
+        preview->path << pointAt(m_pending.at, m_pending.steps, m_pending.known);
     preview->pathDecimated = m_decimated;
 }
 

@@ -19,13 +19,14 @@ public:
         : m_axes(axes), m_offsets(offsets)
     {}
 
-    // The position after the block of `line` (steps per axis, known per axis), at `seconds`.
-    void add(int line, double seconds, bool rapid, const std::vector<qint64>& steps,
+    // The position after the block of at.line (steps per axis, known per axis), with at's
+    // times, count and kind (its position is filled in here).
+    void add(const PreviewPoint& at, const std::vector<qint64>& steps,
              const std::vector<char>& known);
     void finish(ProgramPreview* preview) const; // path and pathDecimated
 
 private:
-    PreviewPoint pointAt(int line, double seconds, bool rapid, const std::vector<qint64>& steps,
+    PreviewPoint pointAt(const PreviewPoint& at, const std::vector<qint64>& steps,
                          const std::vector<char>& known) const;
     void thin();
 
@@ -39,9 +40,7 @@ private:
     struct Pending             // the last point, not kept (yet)
     {
         bool valid = false;
-        int line = 0;
-        double seconds = 0;
-        bool rapid = false;
+        PreviewPoint at; // without its position
         std::vector<qint64> steps;
         std::vector<char> known;
     } m_pending;

@@ -173,6 +173,21 @@ private:
     QList<Rapid> m_rapids;
 };
 
+// The preview as the walk left it (issue 47 item 12): with errors it stays, flagged, where the
+// walk went through the program (soft limits, rates, unknown positions leave its path); where it
+// did not (walked false: no start, the file could not be read, the program does not parse) or
+// was cancelled, only the line count is kept.
+void settlePreview(ProgramCheckResult* result, bool walked)
+{
+    ProgramPreview& preview = result->preview;
+    if (!walked || result->cancelled) {
+        ProgramPreview none;
+        none.lines = preview.lines;
+        preview = none;
+    }
+    preview.hasErrors = !result->errors.isEmpty();
+}
+
 // The walk of a check over a reader (the program's blocks, or the one pass over its text) from
 // its block `start` (-1: none, *errors says why).
 void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
@@ -188,6 +203,7 @@ void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
     if (!reader.error().isEmpty())
         *errors << ProgramError{0, 0, reader.error()};
     result->errors = errors->take();
+    settlePreview(result, start >= 0 && reader.error().isEmpty());
 }
 
 void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
@@ -291,8 +307,10 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
     ProgramCheckResult result;
     result.preview.lines = program.expansion ? program.expansion->sourceLines : program.lines;
     if (program.expansion &&
-        refuseForExpansion(program.expansion.get(), facts, fromLine, &result.errors))
+        refuseForExpansion(program.expansion.get(), facts, fromLine, &result.errors)) {
+        settlePreview(&result, false);
         return result;
+    }
     ProgramReader reader(program);
     walk(reader, facts, fromLine, progress, &result);
     if (result.ok())
@@ -305,8 +323,11 @@ ProgramCheckResult ProgramCheck::checkRest(const Program& program, const Machine
 {
     ProgramCheckResult result;
     result.preview.lines = program.expansion ? program.expansion->sourceLines : program.lines;
-    if (program.expansion && refuseForExpansion(program.expansion.get(), facts, 1, &result.errors))
+    if (program.expansion &&
+        refuseForExpansion(program.expansion.get(), facts, 1, &result.errors)) {
+        settlePreview(&result, false);
         return result;
+    }
     ProgramReader reader(program);
     const ProgramBlock* first = reader.at(fromBlock);
     if (first && reader.enclosingRepeat(fromBlock) >= 0) {
@@ -314,6 +335,7 @@ ProgramCheckResult ProgramCheck::checkRest(const Program& program, const Machine
                                       tr("the run holds inside a repeat, whose passes a check "
                                          "from here cannot count: the new offsets cannot be "
                                          "checked for the rest")};
+        settlePreview(&result, false);
         return result;
     }
     CheckErrors errors; // no block left (first null): nothing left to refuse
@@ -332,18 +354,22 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
     const std::optional<bool> language = ProgramExpansion::usesLanguage(source, &why);
     if (!language) {
         result.errors = {ProgramError{0, 0, why}};
+        settlePreview(&result, false);
         return result;
     }
     std::optional<ProgramExpansion::Result> expanded;
     if (*language) {
-        if (refuseForExpansion(nullptr, facts, fromLine, &result.errors))
+        if (refuseForExpansion(nullptr, facts, fromLine, &result.errors)) {
+            settlePreview(&result, false);
             return result;
+        }
         // Working out has no bytes to count: the progress stays at 0 but can cancel it.
         const qint64 total = source.size();
         expanded = ProgramExpansion::expand(source, contextOf(facts), &result.errors, 100,
                                             [&] { return !progress || progress(0, total); });
         if (!expanded) {
             result.cancelled = result.errors.isEmpty();
+            settlePreview(&result, false);
             return result;
         }
     }
@@ -355,8 +381,10 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
     // The parser's errors come first: a program that does not parse is not checked further.
     QList<ProgramError> parseErrors;
     result.program = reader.finish(&parseErrors);
-    if (!result.program)
+    if (!result.program) {
         result.errors = parseErrors;
+        settlePreview(&result, false); // the walk stopped at the first parse error: no path
+    }
     result.preview.lines = result.program ? result.program->lines : 0;
     if (result.program && expanded) {
         result.program->expansion = expanded->info;

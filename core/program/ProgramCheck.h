@@ -66,6 +66,15 @@ struct PreviewPoint
     // How the path reaches this point from the one before: G0 (true) or a feed move, an arc's
     // chord, a dwell or a reference run (false); previews draw rapids apart from the cut.
     bool rapid = false;
+    // Of `seconds`, those of feed moves (G1, arcs' chords, drilling cycles' feeds): the time
+    // the feed override re-times (issue 47, item 11); rapids and dwells are the rest.
+    double feedSeconds = 0;
+    // The blocks a run has finished once it is here, this point's own included, counted as
+    // ProgramRunner::blocksDone() counts them: every block that does something, in run order,
+    // repeats counted out; lines of modal words only (G90, F…) and the O repeat lines are not
+    // blocks of their own there. Where a run stands by its finished blocks (ProgramProgress),
+    // also on a thinned path.
+    qint64 blocksDone = 0;
 };
 
 struct AxisExtent
@@ -84,8 +93,12 @@ struct ProgramPreview
     // these offsets (the system active at the start, MachineFacts::workOffsets(); an axis not
     // listed: none).
     QMap<QString, double> workOffsets;
-    int lines = 0;        // lines in the file
-    qint64 blocksRun = 0; // blocks the run will execute (repeats counted out)
+    int lines = 0; // lines in the file
+    // Blocks the run will execute, repeats counted out: every block in run order but the O
+    // repeat lines, lines of modal words only included (PreviewPoint::blocksDone leaves those
+    // out, as ProgramRunner::blocksDone() does). "n block(s) run" and the Program page's
+    // "Finished: n block(s) run" both name this count.
+    qint64 blocksRun = 0;
     double estimatedSeconds = 0;
     QMap<QString, AxisExtent> extents; // per axis, in its unit, where the position is known
     // The path of the whole run, bounded: past kMaxPathPoints it is thinned to every 2^k-th
@@ -96,6 +109,12 @@ struct ProgramPreview
     // maps onto each model"), and how approximate the program's feed moves across
     // controllers are.
     QString motionNote;
+    // The check found errors (issue 47 item 12). The figures are then the run as the check's
+    // walk followed it: soft limits, rates, unknown positions and the like leave the whole
+    // path, which is shown with the errors so that the operator sees where the program goes
+    // (before a work zero is set, say). Never a plan to run: ProgramCheckResult::ok() is false
+    // and its program empty.
+    bool hasErrors = false;
 
     static constexpr int kMaxPathPoints = 20000;
 };
@@ -103,11 +122,17 @@ struct ProgramPreview
 struct ProgramCheckResult
 {
     QList<ProgramError> errors; // every problem, in line order (line, column of the word)
-    ProgramPreview preview;     // valid only without errors
+    // Without errors the run's figures. With errors (preview.hasErrors) the path and figures as
+    // the check walked the program, to be shown beside the errors and never run; where nothing
+    // was walked (the program does not parse, its start or its file was refused, cancelled)
+    // only the line count: hasPreview() false.
+    ProgramPreview preview;
     // The one pass over a source: the program read (its index, for the run), when it parsed.
     std::optional<Program> program;
     bool cancelled = false; // the progress callback ended the check: nothing is known
     bool ok() const { return errors.isEmpty() && !cancelled; }
+    // A path to show: the run's, or with errors the one the check walked (not runnable).
+    bool hasPreview() const { return !cancelled && !preview.path.isEmpty(); }
 };
 
 // How far a check is (bytes of the text read, of its length); false ends the check

@@ -79,6 +79,8 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
         }
         const bool first = visit(i, *block);
         ++m_blocksRun;
+        if (kind != BlockKind::Modal) // as ProgramRunner::advance() passes modal words by
+            ++m_blocksDone;
         if (!first && ++m_repeatedBlocks > ProgramCheck::kMaxRepeatedBlocks) {
             tooManyBlocks(*block);
             walking = false;
@@ -240,6 +242,8 @@ void ProgramSimulation::move(PlannedBlock& planned)
         noteControllers(block, moving);
     m_coordinates.advance(block, m_facts.description, &m_programmed);
     m_seconds += seconds;
+    if (block.kind == BlockKind::Feed)
+        m_feedSeconds += seconds;
     addPoint(block.line, block.kind == BlockKind::Rapid);
 }
 
@@ -338,7 +342,13 @@ double ProgramSimulation::workOf(size_t a) const
 
 void ProgramSimulation::addPoint(int line, bool rapid)
 {
-    m_path.add(line, m_seconds, rapid, m_steps, m_known);
+    PreviewPoint at;
+    at.line = line;
+    at.seconds = m_seconds;
+    at.rapid = rapid;
+    at.feedSeconds = m_feedSeconds;
+    at.blocksDone = m_blocksDone;
+    m_path.add(at, m_steps, m_known);
 }
 
 void ProgramSimulation::tooManyBlocks(const ProgramBlock& block)

@@ -267,9 +267,11 @@ private:
     ProgramCoordinates m_coordinates; // G54..G59, G92 as the program changes them
     std::vector<Loop> m_loops;
     qint64 m_blocksRun = 0;
+    qint64 m_blocksDone = 0;     // of them, those that do something (PreviewPoint::blocksDone)
     qint64 m_repeatedBlocks = 0; // run again by a repeat's next passes
     qint64 m_chordsRun = 0;      // arcs' chords, counted out like blocks
     double m_seconds = 0;
+    double m_feedSeconds = 0; // of m_seconds, the feed moves' (PreviewPoint::feedSeconds)
     PreviewPath m_path{m_axes, m_offset}; // after m_offset: it reads the offsets
 };
 

@@ -116,7 +116,9 @@ void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
             if (k == path.chords())
                 m_programmed[a] = value; // the programmed end exactly
         }
-        m_seconds += coordinated ? std::sqrt(squares) : seconds;
+        const double chord = coordinated ? std::sqrt(squares) : seconds;
+        m_seconds += chord;
+        m_feedSeconds += chord;
         addPoint(block.line);
     }
 }
@@ -162,6 +164,8 @@ void ProgramSimulation::cycle(PlannedBlock& planned)
             noteExtent(axis);
         }
         m_seconds += seconds;
+        if (s.kind == DrillCycle::Kind::Feed)
+            m_feedSeconds += seconds;
         addPoint(block.line, s.kind == DrillCycle::Kind::Rapid);
     }
     for (const auto& [axis, value] : cycle.end())

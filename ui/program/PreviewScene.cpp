@@ -29,6 +29,7 @@ void PreviewScene::clear()
     m_points.clear();
     m_axes.clear();
     m_limits = {};
+    m_centre.reset();
 }
 
 void PreviewScene::setPreview(const program::ProgramPreview& preview,
@@ -61,13 +62,59 @@ void PreviewScene::setPreview(const program::ProgramPreview& preview,
         }
         m_points << point;
     }
+    m_centre = computeCentre();
 }
 
-PreviewScene::Projected PreviewScene::project(PreviewViewKind kind) const
+template <typename ToPlane>
+void PreviewScene::softLimitBox(const ToPlane& toPlane, const QList<int>& axes,
+                                QPainterPath& box) const
 {
-    Projected out;
-    const QList<int> axes = PreviewProjection::axesOf(kind);
+    box.clear();
+    // A flat view needs both of its axes limited; the isometric one (and a turned one) draws
+    // the box of the axes that are limited (an axis without limits flat at its zero) when two
+    // or three are.
+    int limited = 0;
+    int limitedBits = 0;
+    for (int axis : axes)
+        if (m_limits[axis]) {
+            ++limited;
+            limitedBits |= 1 << axis;
+        }
+    if (limited < 2)
+        return;
+    auto corner = [&](int bits) {
+        PreviewPosition p{};
+        for (int axis : axes)
+            if (m_limits[axis])
+                p[axis] = (bits & (1 << axis)) ? m_limits[axis]->second : m_limits[axis]->first;
+        return toPlane(p);
+    };
+    // The box's edges: corners that differ in one limited axis, each edge once.
+    for (int bits = 0; bits < 8; ++bits)
+        for (int axis : axes)
+            if (!(bits & ~limitedBits) && m_limits[axis] && !(bits & (1 << axis))) {
+                box.moveTo(corner(bits));
+                box.lineTo(corner(bits | (1 << axis)));
+            }
+}
+
+template <typename ToPlane>
+void PreviewScene::projectWith(const ToPlane& toPlane, const QList<int>& axes, Projected& out) const
+{
+    // Emptied, not replaced: the lists keep their capacity and the paths their elements' memory
+    // (Qt 6), so projecting again allocates nothing per point.
+    out.feeds.clear();
+    out.rapids.clear();
+    out.points.clear();
+    out.lines.clear();
+    out.rapid.clear();
+    out.joined.clear();
+    out.start.reset();
+    out.bounds.reset();
     out.points.reserve(m_points.size());
+    out.lines.reserve(m_points.size());
+    out.rapid.reserve(m_points.size());
+    out.joined.reserve(m_points.size());
     bool previousDrawn = false;
     for (const Point& point : m_points) {
         // A point without a known position on one of the view's axes breaks the path there.
@@ -75,7 +122,7 @@ PreviewScene::Projected PreviewScene::project(PreviewViewKind kind) const
             previousDrawn = false;
             continue;
         }
-        const QPointF p = PreviewProjection::project(kind, point.position);
+        const QPointF p = toPlane(point.position);
         if (previousDrawn) {
             QPainterPath& path = point.rapid ? out.rapids : out.feeds;
             const QPointF from = out.points.constLast();
@@ -92,44 +139,59 @@ PreviewScene::Projected PreviewScene::project(PreviewViewKind kind) const
         out.bounds = spanned(out.bounds, p);
         previousDrawn = true;
     }
-    out.softLimits = softLimitBox(kind);
+    softLimitBox(toPlane, axes, out.softLimits);
     if (!out.softLimits.isEmpty()) {
         const QRectF box = out.softLimits.boundingRect();
         out.bounds = spanned(spanned(out.bounds, box.topLeft()), box.bottomRight());
     }
+}
+
+PreviewScene::Projected PreviewScene::project(PreviewViewKind kind) const
+{
+    Projected out;
+    projectWith([kind](const PreviewPosition& p) { return PreviewProjection::project(kind, p); },
+                PreviewProjection::axesOf(kind), out);
     return out;
 }
 
-QPainterPath PreviewScene::softLimitBox(PreviewViewKind kind) const
+void PreviewScene::project(const PreviewOrientation& orientation, const QList<int>& axes,
+                           Projected& out) const
 {
-    const QList<int> axes = PreviewProjection::axesOf(kind);
-    // A flat view needs both of its axes limited; the isometric one draws the box of the axes
-    // that are limited (an axis without limits flat at its zero) when two or three are.
-    int limited = 0;
-    int limitedBits = 0;
-    for (int axis : axes)
-        if (m_limits[axis]) {
-            ++limited;
-            limitedBits |= 1 << axis;
+    projectWith([&orientation](const PreviewPosition& p) { return orientation.project(p); }, axes,
+                out);
+}
+
+std::optional<PreviewPosition> PreviewScene::computeCentre() const
+{
+    std::optional<std::pair<PreviewPosition, PreviewPosition>> box; // lowest, highest
+    for (const Point& point : m_points) {
+        if (point.known != 7u)
+            continue;
+        if (!box) {
+            box = std::make_pair(point.position, point.position);
+            continue;
         }
-    if (limited < 2)
-        return {};
-    auto corner = [&](int bits) {
-        PreviewPosition p{};
-        for (int axis : axes)
-            if (m_limits[axis])
-                p[axis] = (bits & (1 << axis)) ? m_limits[axis]->second : m_limits[axis]->first;
-        return PreviewProjection::project(kind, p);
-    };
-    QPainterPath box;
-    // The box's edges: corners that differ in one limited axis, each edge once.
-    for (int bits = 0; bits < 8; ++bits)
-        for (int axis : axes)
-            if (!(bits & ~limitedBits) && m_limits[axis] && !(bits & (1 << axis))) {
-                box.moveTo(corner(bits));
-                box.lineTo(corner(bits | (1 << axis)));
+        for (size_t i = 0; i < 3; ++i) {
+            box->first[i] = qMin(box->first[i], point.position[i]);
+            box->second[i] = qMax(box->second[i], point.position[i]);
+        }
+    }
+    if (!box) {
+        bool anyLimits = false;
+        box = std::make_pair(PreviewPosition{}, PreviewPosition{});
+        for (size_t i = 0; i < 3; ++i)
+            if (m_limits[i]) {
+                anyLimits = true;
+                box->first[i] = m_limits[i]->first;
+                box->second[i] = m_limits[i]->second;
             }
-    return box;
+        if (!anyLimits)
+            return std::nullopt;
+    }
+    PreviewPosition middle{};
+    for (size_t i = 0; i < 3; ++i)
+        middle[i] = (box->first[i] + box->second[i]) / 2;
+    return middle;
 }
 
 QPainterPath PreviewScene::segmentsOfLine(const Projected& projected, int line)
@@ -156,6 +218,20 @@ std::optional<QPointF> PreviewScene::projectPosition(PreviewViewKind kind,
         p[axis] = it.value();
     }
     return PreviewProjection::project(kind, p);
+}
+
+std::optional<QPointF> PreviewScene::projectPosition(const PreviewOrientation& orientation,
+                                                     const QList<int>& axes,
+                                                     const QMap<QString, double>& position)
+{
+    PreviewPosition p{};
+    for (int axis : axes) {
+        const auto it = position.constFind(kAxisNames[axis]);
+        if (it == position.cend())
+            return std::nullopt;
+        p[axis] = it.value();
+    }
+    return orientation.project(p);
 }
 
 QString PreviewScene::unitOf(PreviewViewKind kind) const

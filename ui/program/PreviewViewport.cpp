@@ -45,4 +45,9 @@ void PreviewViewport::panBy(const QPointF& widgetDelta)
     m_offset += widgetDelta;
 }
 
+void PreviewViewport::placeAt(const QPointF& plane, const QPointF& widget)
+{
+    m_offset += widget - map(plane);
+}
+
 } // namespace stepdeck::ui

@@ -24,6 +24,9 @@ public:
     // Scales by factor about a widget point: the plane point under it stays under it.
     void zoomAt(const QPointF& widget, double factor);
     void panBy(const QPointF& widgetDelta);
+    // Pans so that the plane point lands on the widget point (the scale kept): a turned view
+    // keeps the point it turns about where it was on the screen.
+    void placeAt(const QPointF& plane, const QPointF& widget);
 
     bool operator==(const PreviewViewport& o) const
     {

@@ -120,6 +120,9 @@ void ProgramControls::setUpFeedOverride()
            "at most as fast as one step per tick allows); a block of its own runs at its F"));
     connect(m_feedOverride, qOverload<int>(&QSpinBox::valueChanged), this,
             &ProgramControls::feedOverrideChanged);
+    // The time left follows the override at once, not at the next block's end.
+    connect(m_feedOverride, qOverload<int>(&QSpinBox::valueChanged), this,
+            &ProgramControls::showTimeLeft);
 }
 
 void ProgramControls::setRunFromRefusal(const QString& why)
@@ -154,13 +157,24 @@ void ProgramControls::setState(RunState state, bool pausePending, bool canStart)
     m_abort->setEnabled(state == RunState::Running || state == RunState::Paused);
 }
 
-void ProgramControls::setProgress(int line, int lines, std::optional<double> secondsLeft)
+void ProgramControls::setProgress(int line, int lines, std::optional<ProgramTimeLeft> left)
 {
     m_progress->setRange(0, qMax(1, lines));
     m_progress->setValue(qBound(0, line, qMax(1, lines)));
     m_progress->setFormat(tr("line %1 of %2").arg(line).arg(lines));
-    m_timeLeft->setText(secondsLeft ? ProgramTimes::estimatedLeft(*secondsLeft)
-                                    : tr("time left unknown"));
+    m_showsProgress = true;
+    m_left = left;
+    showTimeLeft();
+}
+
+// The feed moves' part at the override the spin box shows, which is the runner's
+// (ProgramPage passes every change on to ProgramRunner::setFeedOverride).
+void ProgramControls::showTimeLeft()
+{
+    if (!m_showsProgress)
+        return;
+    m_timeLeft->setText(m_left ? ProgramTimes::estimatedLeft(m_left->at(feedOverride()))
+                               : tr("time left unknown"));
 }
 
 void ProgramControls::clearProgress()
@@ -168,6 +182,8 @@ void ProgramControls::clearProgress()
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
     m_progress->setFormat(tr("not running"));
+    m_showsProgress = false;
+    m_left.reset();
     m_timeLeft->setText(QString());
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include "ProgramTimes.h"
 #include "program/ProgramRunner.h"
 #include <QWidget>
 #include <optional>
@@ -28,8 +29,9 @@ public:
     void setState(program::RunState state, bool pausePending, bool canStart);
     // Why the checked program cannot run from a line (its tooltip then); empty: it can.
     void setRunFromRefusal(const QString& why);
-    // The line running of lines in the file; secondsLeft: the estimate (nullopt: unknown).
-    void setProgress(int line, int lines, std::optional<double> secondsLeft);
+    // The line running of lines in the file; left: the estimate's rest (nullopt: unknown),
+    // shown at the feed override set here, and again whenever it changes (issue 47, item 11).
+    void setProgress(int line, int lines, std::optional<ProgramTimeLeft> left);
     void clearProgress();
     void setLineCount(int lines); // the range of "Run from line"
 
@@ -76,9 +78,12 @@ private:
     QCheckBox* m_optionalStops;
     QSpinBox* m_feedOverride;
     void setUpFeedOverride();
+    void showTimeLeft();
     QWidget* m_progressRow;
     QProgressBar* m_progress;
     ElidedLabel* m_timeLeft;
+    bool m_showsProgress = false;
+    std::optional<ProgramTimeLeft> m_left; // of the progress shown
 };
 
 } // namespace stepdeck::ui

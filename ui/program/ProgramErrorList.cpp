@@ -24,6 +24,9 @@ ProgramErrorList::ProgramErrorList(ProgramEditor* editor, QWidget* parent)
     m_list->setWordWrap(true);
     m_list->setResizeMode(QListView::Adjust);
     m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // As small as the preview's other tabs may get (issue 47 item 12: the list is one of them),
+    // so that it does not make the page taller than a bottom dock on a 768-pixel screen.
+    m_list->setMinimumSize(120, 40);
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(m_header);

@@ -25,7 +25,6 @@
 #include <QPushButton>
 #include <QShortcut>
 #include <QSplitter>
-#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -164,11 +163,11 @@ void ProgramPage::buildLayout()
     w->addWidget(m_checkStatus);
     w->addWidget(m_controls->progressRow());
     w->addWidget(m_machineNote);
-    // A program with errors has no preview: the list of its errors takes its place.
-    m_previewOrErrors = new QStackedWidget(watch);
-    m_previewOrErrors->addWidget(m_preview);
-    m_previewOrErrors->addWidget(m_errorList);
-    w->addWidget(m_previewOrErrors, 1);
+    // The preview holds its place whatever the check finds (issue 47 item 12): a program with
+    // errors keeps the path its check walked, and the list of the errors is the preview's last
+    // tab; a program that does not parse has no path, and the list is then the one tab shown.
+    m_preview->setErrorList(m_errorList);
+    w->addWidget(m_preview, 1);
     split->addWidget(run);
     split->addWidget(watch);
     // Width beyond the columns' least: a third to the text and the MDI line, the rest to the
@@ -397,7 +396,6 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
     m_checkedProgram = result.ok() ? result.program : std::nullopt;
     if (large)
         m_controls->setLineCount(result.preview.lines);
-    showErrors(result.errors);
     if (result.ok()) {
         m_check->setText(m_checkOk ? tr("Checked against the machine: no errors.")
                                    : tr("No program."));
@@ -417,8 +415,16 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
         for (const program::ProgramError& e : result.errors)
             all << e.text();
         m_check->setToolTip(all.join(QLatin1Char('\n')));
-        m_preview->clear(tr("No preview: the program has errors."));
+        // Issue 47 item 12: errors that leave a path (soft limits, rates, unknown positions)
+        // keep it in view, marked as not runnable, so that the operator sees where the program
+        // goes (the part, to place a work zero); Run stays off (m_checkOk). A program that does
+        // not parse has none: the list alone.
+        if (result.hasPreview())
+            m_preview->setPreview(result.preview, m_context->machine()->description());
+        else
+            m_preview->clear(tr("No preview: the program has errors."));
     }
+    showErrors(result.errors); // after the preview: the errors' tab follows whether it has one
     updateControls();
 }
 
@@ -426,8 +432,7 @@ void ProgramPage::showErrors(const QList<program::ProgramError>& errors)
 {
     m_editor->setErrors(errors);
     m_errorList->setErrors(errors);
-    m_previewOrErrors->setCurrentWidget(errors.isEmpty() ? static_cast<QWidget*>(m_preview)
-                                                         : m_errorList);
+    m_preview->setErrorCount(int(errors.size()));
 }
 
 void ProgramPage::onMachineStatus()

@@ -24,13 +24,18 @@ ProgramPathView::ProgramPathView(QWidget* parent)
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     // Keys zoom, pan and fit once the drawing has the focus (a click or Tab gives it).
     setFocusPolicy(Qt::StrongFocus);
-    setToolTip(tr("Wheel: zoom about the pointer \u00b7 drag: pan \u00b7 F or a double click: "
-                  "fit \u00b7 + and -: zoom \u00b7 arrow keys: pan"));
+    setToolTip(tr("Drag: turn (X, Y and Z) \u00b7 Shift+drag or the middle button: pan \u00b7 "
+                  "wheel: zoom about the pointer \u00b7 F or a double click: fit \u00b7 + and -: "
+                  "zoom \u00b7 arrow keys: pan \u00b7 Ctrl+arrow keys: turn"));
     // Over the drawing, not above it: the page must not grow taller (1366x768).
     m_viewSelector->setObjectName(QStringLiteral("programPreviewViewSelector"));
     m_viewSelector->setFocusPolicy(Qt::StrongFocus);
     for (PreviewViewKind kind : PreviewProjection::kAll)
         m_viewSelector->addItem(PreviewProjection::title(kind), int(kind));
+    // Shown while the path is turned, never chosen (disabled): choosing a standard view turns
+    // the path back. Chosen over keeping the last view's name, which would claim a view the
+    // drawing no longer is.
+    m_viewSelector->addItem(tr("Orbit"), kOrbitItem);
     m_fit->setObjectName(QStringLiteral("programPreviewFit"));
     m_fit->setText(tr("Fit"));
     m_fit->setToolTip(tr("Fit the path to the view (F)"));
@@ -38,8 +43,13 @@ ProgramPathView::ProgramPathView(QWidget* parent)
     m_chosen = PreviewProjection::fromSettingsName(
         QSettings().value(QLatin1String(kSettingsKey)).toString(), PreviewViewKind::Top);
     m_kind = m_chosen;
+    m_orientation = PreviewOrientation::of(m_kind);
     connect(m_viewSelector, qOverload<int>(&QComboBox::activated), this, [this](int index) {
-        chooseView(PreviewViewKind(m_viewSelector->itemData(index).toInt()));
+        const int data = m_viewSelector->itemData(index).toInt();
+        if (data == kOrbitItem)
+            updateSelector(); // not a view to choose
+        else
+            chooseView(PreviewViewKind(data));
     });
     connect(m_fit, &QToolButton::clicked, this, &ProgramPathView::fitToView);
     updateSelector();
@@ -48,6 +58,7 @@ ProgramPathView::ProgramPathView(QWidget* parent)
 void ProgramPathView::setPreview(const program::ProgramPreview& preview,
                                  const machine::MachineDescription& machine)
 {
+    const bool turned = isTurned();
     m_scene.setPreview(preview, machine);
     m_empty.clear();
     // The operator's choice where this machine allows it, else the first view it allows.
@@ -59,6 +70,9 @@ void ProgramPathView::setPreview(const program::ProgramPreview& preview,
                 break;
             }
     m_kind = kind;
+    // A turned view stays turned (as a zoomed one stays zoomed) where the machine allows it.
+    if (!turned || !canTurn())
+        m_orientation = PreviewOrientation::of(kind);
     updateSelector();
     reproject();
     if (!m_userView)
@@ -78,7 +92,7 @@ QString ProgramPathView::emptyText() const
     if (!m_empty.isEmpty() || !m_projected.points.isEmpty())
         return m_empty;
     QStringList axes;
-    for (int axis : PreviewProjection::axesOf(m_kind))
+    for (int axis : PreviewProjection::axesOf(axesKind()))
         axes << QStringLiteral("XYZ").mid(axis, 1);
     return tr("The program reaches no known position of the axes %1.")
         .arg(axes.join(QStringLiteral(", ")));
@@ -104,6 +118,7 @@ bool ProgramPathView::chooseView(PreviewViewKind kind)
 void ProgramPathView::setViewKind(PreviewViewKind kind)
 {
     m_kind = kind;
+    m_orientation = PreviewOrientation::of(kind); // a turned view turned back
     updateSelector();
     reproject();
     fitToView(); // another plane: the old zoom means nothing there
@@ -113,7 +128,21 @@ void ProgramPathView::updateSelector()
 {
     auto* model = qobject_cast<QStandardItemModel*>(m_viewSelector->model());
     QStringList reasons;
+    const bool turned = isTurned();
     for (int i = 0; i < m_viewSelector->count(); ++i) {
+        if (m_viewSelector->itemData(i).toInt() == kOrbitItem) {
+            if (model)
+                model->item(i)->setEnabled(false);
+            m_viewSelector->setItemData(
+                i,
+                canTurn() ? tr("Turned with the mouse: drag the drawing to turn it, choose a view "
+                               "above to turn it back")
+                          : tr("Turning the path needs the axes X, Y and Z."),
+                Qt::ToolTipRole);
+            if (turned)
+                m_viewSelector->setCurrentIndex(i);
+            continue;
+        }
         const auto kind = PreviewViewKind(m_viewSelector->itemData(i).toInt());
         const QString reason = PreviewProjection::unavailableReason(kind, m_scene.axes());
         // Without a machine (no preview yet) every view stays choosable.
@@ -123,7 +152,7 @@ void ProgramPathView::updateSelector()
         m_viewSelector->setItemData(i, enabled ? QVariant() : QVariant(reason), Qt::ToolTipRole);
         if (!enabled)
             reasons << QStringLiteral("%1: %2").arg(PreviewProjection::title(kind), reason);
-        if (kind == m_kind)
+        if (kind == m_kind && !turned)
             m_viewSelector->setCurrentIndex(i);
     }
     m_viewSelector->setToolTip(reasons.isEmpty()
@@ -134,9 +163,15 @@ void ProgramPathView::updateSelector()
 
 void ProgramPathView::reproject()
 {
-    m_projected = m_scene.isEmpty() ? PreviewScene::Projected{} : m_scene.project(m_kind);
-    m_runningSegments = PreviewScene::segmentsOfLine(m_projected, m_runningLine);
-    m_current = PreviewScene::projectPosition(m_kind, m_currentPosition);
+    // Into the same lists and paths: a turn projects again on every mouse move.
+    const QList<int> axes = PreviewProjection::axesOf(axesKind());
+    if (m_scene.isEmpty())
+        m_projected = PreviewScene::Projected{};
+    else
+        m_scene.project(m_orientation, axes, m_projected);
+    m_runningSegments = m_runningLine > 0 ? PreviewScene::segmentsOfLine(m_projected, m_runningLine)
+                                          : QPainterPath();
+    m_current = PreviewScene::projectPosition(m_orientation, axes, m_currentPosition);
     m_cacheValid = false;
     update();
 }
@@ -146,7 +181,8 @@ void ProgramPathView::setCurrent(const QMap<QString, double>& position)
     if (position == m_currentPosition)
         return;
     m_currentPosition = position;
-    m_current = PreviewScene::projectPosition(m_kind, m_currentPosition);
+    m_current = PreviewScene::projectPosition(m_orientation, PreviewProjection::axesOf(axesKind()),
+                                              m_currentPosition);
     update();
 }
 
@@ -206,6 +242,27 @@ void ProgramPathView::panBy(const QPointF& delta)
     update();
 }
 
+void ProgramPathView::turnBy(double azimuth, double elevation)
+{
+    if (!canTurn())
+        return;
+    const PreviewOrientation next = m_orientation.turned(azimuth, elevation);
+    if (next == m_orientation)
+        return; // the elevation at its end
+    viewport(); // fitted to the size first
+    // The path turns about its middle, which stays where it is on the screen: one point
+    // projected twice, the scale kept.
+    const PreviewPosition pivot = m_scene.centre().value_or(PreviewPosition{});
+    const QPointF at = m_viewport.map(m_orientation.project(pivot));
+    const bool wasTurned = isTurned();
+    m_orientation = next;
+    m_viewport.placeAt(m_orientation.project(pivot), at);
+    m_userView = true;
+    if (isTurned() != wasTurned)
+        updateSelector(); // "Orbit", or the standard view the turn came back to
+    reproject();
+}
+
 void ProgramPathView::resizeEvent(QResizeEvent*)
 {
     m_viewSelector->adjustSize();
@@ -227,25 +284,39 @@ void ProgramPathView::wheelEvent(QWheelEvent* event)
 
 void ProgramPathView::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton) {
-        m_dragFrom = event->position();
-        setCursor(Qt::ClosedHandCursor);
+    const bool left = event->button() == Qt::LeftButton;
+    // A second button pressed during a drag leaves that drag alone.
+    const bool dragging =
+        m_drag && m_drag->button != event->button() && (event->buttons() & m_drag->button);
+    if (!dragging && (left || event->button() == Qt::MiddleButton)) {
+        // The left button turns (where there is X, Y and Z to turn); Shift+left and the middle
+        // button pan.
+        const bool turn = left && !(event->modifiers() & Qt::ShiftModifier) && canTurn();
+        m_drag = Drag{event->position(), event->button(), turn};
+        setCursor(turn ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
+        event->accept();
+        return;
     }
     QWidget::mousePressEvent(event);
 }
 
 void ProgramPathView::mouseMoveEvent(QMouseEvent* event)
 {
-    if (m_dragFrom && (event->buttons() & Qt::LeftButton)) {
-        panBy(event->position() - *m_dragFrom);
-        m_dragFrom = event->position();
-    }
+    if (!m_drag || !(event->buttons() & m_drag->button))
+        return;
+    const QPointF delta = event->position() - m_drag->from;
+    m_drag->from = event->position();
+    if (m_drag->turn)
+        // Across: about Z, the way the pointer goes; down: looked at from higher up.
+        turnBy(delta.x() * kDegreesPerDragPixel, delta.y() * kDegreesPerDragPixel);
+    else
+        panBy(delta);
 }
 
 void ProgramPathView::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton) {
-        m_dragFrom.reset();
+    if (m_drag && event->button() == m_drag->button) {
+        m_drag.reset();
         unsetCursor();
     }
 }
@@ -259,6 +330,7 @@ void ProgramPathView::keyPressEvent(QKeyEvent* event)
 {
     const QPointF centre = fitArea().center();
     const double step = width() * kKeyPanFraction;
+    const bool turnKey = (event->modifiers() & Qt::ControlModifier) && canTurn();
     switch (event->key()) {
     case Qt::Key_F:
     case Qt::Key_Home:
@@ -271,17 +343,30 @@ void ProgramPathView::keyPressEvent(QKeyEvent* event)
     case Qt::Key_Minus:
         zoomBy(centre, 1.0 / kKeyZoom);
         break;
+    // Ctrl+arrows turn the path as a drag the same way would.
     case Qt::Key_Left:
-        panBy({step, 0});
+        if (turnKey)
+            turnBy(-kKeyTurnDegrees, 0);
+        else
+            panBy({step, 0});
         break;
     case Qt::Key_Right:
-        panBy({-step, 0});
+        if (turnKey)
+            turnBy(kKeyTurnDegrees, 0);
+        else
+            panBy({-step, 0});
         break;
     case Qt::Key_Up:
-        panBy({0, step});
+        if (turnKey)
+            turnBy(0, -kKeyTurnDegrees);
+        else
+            panBy({0, step});
         break;
     case Qt::Key_Down:
-        panBy({0, -step});
+        if (turnKey)
+            turnBy(0, kKeyTurnDegrees);
+        else
+            panBy({0, -step});
         break;
     default:
         QWidget::keyPressEvent(event);

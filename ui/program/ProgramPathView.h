@@ -17,10 +17,19 @@ namespace stepdeck::ui {
 // colour, the soft limits' box (machine limits converted to work coordinates) dash-dotted, the
 // start, a legend and a scale bar; while a program runs the tool where the machine stands and
 // the running line's segments highlighted. Fitted to the path when a preview arrives (until
-// the operator zooms or pans) and by "Fit" (F, Home, a double click); the wheel zooms about the
-// pointer, a drag pans, + - and the arrow keys do the same from the keyboard.
-// The projected path is built once per preview and view (PreviewScene); zoom and pan draw it
-// through a transform, and a moving marker does not draw the path again (a cached picture).
+// the operator zooms, pans or turns) and by "Fit" (F, Home, a double click) in the orientation
+// it has; the wheel zooms about the pointer.
+// Turning (issue 47 item 14), where the machine has X, Y and Z: a drag with the left button
+// turns the path about its middle (PreviewOrientation: kDegreesPerDragPixel of azimuth per
+// pixel across, of elevation per pixel down, the elevation within +-90), a drag with the
+// middle button or Shift+left pans (on a machine without X, Y and Z the left button pans too);
+// Ctrl+arrow keys turn by kKeyTurnDegrees, + - and the arrow keys zoom and pan. The standard
+// views are presets of the orientation: choosing one in the selector turns the path back to it
+// and fits; a turned view shows "Orbit" in the selector (an entry that is not chosen, only
+// shown: the angles are not remembered) until a standard view is chosen.
+// The projected path is built once per preview, view and step of a turn (PreviewScene, into
+// the same memory); zoom and pan draw it through a transform, and a moving marker does not draw
+// the path again (a cached picture).
 class ProgramPathView : public QWidget
 {
     Q_OBJECT
@@ -35,7 +44,14 @@ public:
     // The block that runs now (0: none): its segments are highlighted.
     void setRunningLine(int line);
 
+    // The standard view last chosen (or the first the machine has); turned, the orientation
+    // differs from its preset.
     PreviewViewKind viewKind() const { return m_kind; }
+    PreviewOrientation orientation() const { return m_orientation; }
+    bool isTurned() const { return m_orientation != PreviewOrientation::of(m_kind); }
+    bool canTurn() const { return isAvailable(PreviewViewKind::Isometric); } // X, Y and Z
+    // Turns the path further about its middle, which stays where it is on the screen.
+    void turnBy(double azimuth, double elevation);
     // Chosen by the operator (remembered in QSettings kSettingsKey); an unavailable view is
     // refused (false).
     bool chooseView(PreviewViewKind kind);
@@ -58,6 +74,9 @@ public:
     int pathRenders() const { return m_pathRenders; }
 
     static constexpr const char* kSettingsKey = "program/previewView";
+    static constexpr double kDegreesPerDragPixel = 0.5;
+    static constexpr double kKeyTurnDegrees = 15;
+    static constexpr int kOrbitItem = -1; // the selector's data of the "Orbit" entry
 
     QSize sizeHint() const override { return {320, 240}; }
     QSize minimumSizeHint() const override { return {120, 60}; }
@@ -77,6 +96,8 @@ private:
     // operator has not zoomed or panned (a hidden widget gets its resize events late).
     const PreviewViewport& viewport() const;
     void setViewKind(PreviewViewKind kind);
+    // The axes a drawn point needs: the view's, all three when turned.
+    PreviewViewKind axesKind() const { return isTurned() ? PreviewViewKind::Isometric : m_kind; }
     void reproject();
     void updateSelector();
     void zoomBy(const QPointF& at, double factor);
@@ -95,7 +116,14 @@ private:
     mutable PreviewViewport m_viewport;
     mutable QSize m_fittedSize; // the size the viewport was last fitted to
     bool m_userView = false;    // zoomed or panned: a new preview keeps the view
-    std::optional<QPointF> m_dragFrom;
+    PreviewOrientation m_orientation;
+    struct Drag
+    {
+        QPointF from;
+        Qt::MouseButton button = Qt::LeftButton;
+        bool turn = false; // else pan
+    };
+    std::optional<Drag> m_drag;
     QMap<QString, double> m_currentPosition;
     std::optional<QPointF> m_current;
     int m_runningLine = 0;

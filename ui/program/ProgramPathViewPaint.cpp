@@ -117,7 +117,7 @@ QString ProgramPathView::scaleText() const
 {
     return QStringLiteral("%1 %2")
         .arg(QLocale().toString(PreviewStyle::scaleBarLength(viewport().scale()), 'g', 6),
-             m_scene.unitOf(m_kind))
+             m_scene.unitOf(axesKind()))
         .trimmed();
 }
 

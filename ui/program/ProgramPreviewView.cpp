@@ -4,12 +4,18 @@
 #include "common/ElidedLabel.h"
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
+#include <QFontMetrics>
 #include <QHeaderView>
 #include <QLineSeries>
+#include <QPainter>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -30,10 +36,237 @@ std::optional<std::pair<double, double>> workLimits(const machine::MachineAxis& 
     const double offset = offsets.value(axis.name, 0.0);
     return std::make_pair(*axis.softMinimum - offset, *axis.softMaximum - offset);
 }
+
+// Issue 47 item 12: what lies beyond the soft limits, drawn and written in the colour of the
+// check's errors (the check line's and the list's #b00000, a little lighter on the drawing).
+const QColor kErrorText(0xb0, 0, 0);
+QColor errorColor()
+{
+    return QColor(210, 0, 0);
+}
+constexpr int kMaxLimitExits = 100; // rings where the path leaves the soft limits
+
+// Whether a work position lies beyond the axis' soft limits (work limits), with half a step of
+// room: the path holds whole steps, the check judged the programmed target.
+bool beyond(const machine::MachineAxis& axis, const std::pair<double, double>& work, double at)
+{
+    const double room = 0.5 / axis.stepsPerUnit;
+    return at < work.first - room || at > work.second + room;
+}
+
+// Per point of the path whether it lies beyond a soft limit of one of its axes.
+QList<bool> beyondLimits(const program::ProgramPreview& preview,
+                         const machine::MachineDescription& machine)
+{
+    struct Limited
+    {
+        const machine::MachineAxis* axis;
+        std::pair<double, double> work;
+    };
+    QList<Limited> limited;
+    for (const machine::MachineAxis& axis : machine.axes)
+        if (const auto work = workLimits(axis, preview.workOffsets))
+            limited.append(Limited{&axis, *work});
+    QList<bool> out;
+    out.reserve(preview.path.size());
+    for (const program::PreviewPoint& p : preview.path) {
+        bool outside = false;
+        for (const Limited& l : limited) {
+            const auto it = p.position.constFind(l.axis->name);
+            if (it != p.position.cend() && beyond(*l.axis, l.work, it.value())) {
+                outside = true;
+                break;
+            }
+        }
+        out << outside;
+    }
+    return out;
+}
 } // namespace
 
+// Over the path view (its child, below its selector and Fit, transparent to the mouse): the
+// path of a program with errors where it lies beyond the soft limits (issue 47 item 12), the
+// segments to and from such points in the error colour, a ring where the path leaves the
+// limits, and a legend line at the top right (the view's own legend is at the bottom left).
+// It draws the view's own plane points (ProgramPathView::projected(), whatever view or turn the
+// view shows) through the view's own mapping (toWidget), so zoom, pan and turns follow.
+class PreviewLimitsOverlay : public QWidget
+{
+public:
+    explicit PreviewLimitsOverlay(ProgramPathView* view) : QWidget(view), m_view(view)
+    {
+        setObjectName(QStringLiteral("programPreviewLimits"));
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setFocusPolicy(Qt::NoFocus);
+        setGeometry(view->rect());
+        view->installEventFilter(this);
+        lower(); // under the view's selector and Fit
+    }
+
+    void setPath(const QList<program::PreviewPoint>& points, const QList<bool>& outside,
+                 const QString& legend)
+    {
+        static const QString kXyz[3] = {QStringLiteral("X"), QStringLiteral("Y"),
+                                        QStringLiteral("Z")};
+        m_known.clear();
+        m_lines.clear();
+        m_known.reserve(points.size());
+        m_lines.reserve(points.size());
+        for (const program::PreviewPoint& p : points) {
+            unsigned known = 0;
+            for (unsigned axis = 0; axis < 3; ++axis)
+                if (p.position.contains(kXyz[axis]))
+                    known |= 1u << axis;
+            m_known << known;
+            m_lines << p.line;
+        }
+        m_beyond = outside;
+        m_legend = legend;
+        m_count = int(std::count(outside.cbegin(), outside.cend(), true));
+        update();
+    }
+    void clear() { setPath({}, {}, QString()); }
+    int count() const { return m_count; }
+    QList<QPointF> exits() const
+    {
+        QPainterPath segments;
+        QList<QPointF> out;
+        inPlane(&segments, &out);
+        return out;
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == m_view && event->type() == QEvent::Resize)
+            setGeometry(m_view->rect());
+        return QWidget::eventFilter(watched, event);
+    }
+
+    void paintEvent(QPaintEvent*) override
+    {
+        QPainterPath segments;
+        QList<QPointF> rings;
+        if (!inPlane(&segments, &rings))
+            return; // nothing beyond, or the view draws no path (it says why instead)
+        // The view's plane -> widget mapping (one scale, an offset): three points give it.
+        const QPointF origin = m_view->toWidget(QPointF(0, 0));
+        const QPointF right = m_view->toWidget(QPointF(1, 0)) - origin;
+        const QPointF up = m_view->toWidget(QPointF(0, 1)) - origin;
+        const QTransform toWidget(right.x(), right.y(), up.x(), up.y(), origin.x(), origin.y());
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setBrush(Qt::NoBrush);
+        if (!segments.isEmpty()) {
+            // Cosmetic and 1 px, as the view's own pens (the raster engine's fast stroker),
+            // over the view's line.
+            QPen pen(errorColor(), 1);
+            pen.setCosmetic(true);
+            painter.save();
+            painter.setTransform(toWidget);
+            painter.setPen(pen);
+            painter.drawPath(segments);
+            painter.restore();
+        }
+        painter.setPen(QPen(errorColor(), 2));
+        for (const QPointF& ring : rings)
+            painter.drawEllipse(toWidget.map(ring), 5, 5);
+        paintLegend(painter);
+    }
+
+private:
+    // The view draws the points known on its axes, in path order (PreviewScene::project): the
+    // axes (bits 0 X, 1 Y, 2 Z) whose points are exactly the drawn ones, line by line.
+    std::optional<unsigned> drawnAxes(const PreviewScene::Projected& drawn) const
+    {
+        for (unsigned axes : {0b011u, 0b101u, 0b110u, 0b111u}) {
+            qsizetype j = 0;
+            bool same = true;
+            for (qsizetype i = 0; i < m_known.size() && same; ++i)
+                if ((m_known.at(i) & axes) == axes) {
+                    same = j < drawn.lines.size() && drawn.lines.at(j) == m_lines.at(i);
+                    ++j;
+                }
+            if (same && j == drawn.points.size())
+                return axes;
+        }
+        return std::nullopt;
+    }
+
+    // The segments to and from points beyond the limits, and where the path leaves them, in
+    // the view's plane; false: nothing to draw.
+    bool inPlane(QPainterPath* segments, QList<QPointF>* rings) const
+    {
+        const PreviewScene::Projected& drawn = m_view->projected();
+        if (m_count == 0 || drawn.points.isEmpty() || m_beyond.size() != m_known.size())
+            return false;
+        const std::optional<unsigned> axes = drawnAxes(drawn);
+        if (!axes)
+            return false; // not the path this view draws
+        qsizetype j = -1;
+        bool previousDrawn = false;
+        bool previousBeyond = false;
+        for (qsizetype i = 0; i < m_known.size(); ++i) {
+            if ((m_known.at(i) & *axes) != *axes) { // not drawn: the path breaks there
+                previousDrawn = false;
+                previousBeyond = false;
+                continue;
+            }
+            ++j;
+            const QPointF at = drawn.points.at(j);
+            const bool outside = m_beyond.at(i);
+            if (previousDrawn && (outside || previousBeyond)) {
+                const QPointF from = drawn.points.at(j - 1);
+                if (segments->elementCount() == 0 || segments->currentPosition() != from)
+                    segments->moveTo(from);
+                segments->lineTo(at);
+            }
+            if (outside && !previousBeyond && rings->size() < kMaxLimitExits)
+                *rings << at;
+            previousDrawn = true;
+            previousBeyond = outside;
+        }
+        return true;
+    }
+
+    void paintLegend(QPainter& painter) const
+    {
+        constexpr int kSample = 22;
+        const QFontMetrics metrics(font());
+        const int left = m_view->fitButton()->geometry().right() + 8;
+        const int right = width() - 6;
+        const int room = right - left - kSample - 12;
+        if (room < 40 || m_legend.isEmpty())
+            return;
+        const QString text = metrics.elidedText(m_legend, Qt::ElideRight, room);
+        const int textWidth = metrics.horizontalAdvance(text);
+        const int top = 4;
+        const QRect box(right - textWidth - kSample - 12, top - 2, textWidth + kSample + 12,
+                        metrics.height() + 4);
+        QColor backdrop = palette().color(QPalette::Base);
+        backdrop.setAlpha(210);
+        painter.fillRect(box, backdrop);
+        const double mid = top + metrics.height() / 2.0;
+        painter.setPen(QPen(errorColor(), 2));
+        painter.drawLine(QPointF(box.left() + 4, mid), QPointF(box.left() + 4 + kSample, mid));
+        painter.setPen(palette().color(QPalette::Text));
+        painter.drawText(QRect(box.left() + kSample + 8, top, textWidth + 1, metrics.height()),
+                         Qt::AlignLeft | Qt::AlignVCenter, text);
+    }
+
+    ProgramPathView* m_view;
+    // Per point of the preview's path: its known axes among X, Y, Z (bits), its line, and
+    // whether it lies beyond the soft limits.
+    QList<unsigned> m_known;
+    QList<int> m_lines;
+    QList<bool> m_beyond;
+    QString m_legend;
+    int m_count = 0; // points beyond
+};
+
 ProgramPreviewView::ProgramPreviewView(QWidget* parent)
-    : QWidget(parent), m_path(new ProgramPathView(this)), m_chart(new QChart),
+    : QWidget(parent), m_path(new ProgramPathView(this)),
+      m_limits(new PreviewLimitsOverlay(m_path)), m_chart(new QChart),
       m_chartView(new QChartView(m_chart, this)), m_extents(new QTableWidget(0, 4, this)),
       m_tabs(new QTabWidget(this)), m_summary(new QWidget(this)),
       m_figures(new ElidedLabel(m_summary)), m_motionNote(new ElidedLabel(this)),
@@ -96,6 +329,9 @@ void ProgramPreviewView::clearChart()
 
 void ProgramPreviewView::clear(const QString& reason)
 {
+    m_hasPreview = false;
+    m_showsErrors = false;
+    m_limits->clear();
     m_path->clearPath(reason);
     clearChart();
     m_extents->setRowCount(0);
@@ -103,6 +339,71 @@ void ProgramPreviewView::clear(const QString& reason)
     m_motionNote->clear();
     m_coordinates->clear();
     m_figures->setToolTip(QString());
+    updateErrorsTab();
+}
+
+void ProgramPreviewView::setErrorList(QWidget* list)
+{
+    if (m_errorsTab >= 0 || !list)
+        return;
+    m_errorsTab = m_tabs->addTab(list, tr("Errors"));
+    updateErrorsTab();
+}
+
+void ProgramPreviewView::setErrorCount(int count)
+{
+    m_errorCount = count;
+    updateErrorsTab();
+}
+
+// Nothing moves when errors come and go: only which tab can be chosen, and which is shown.
+void ProgramPreviewView::updateErrorsTab()
+{
+    if (m_errorsTab < 0)
+        return;
+    const bool any = m_errorCount > 0;
+    const bool listOnly = any && !m_hasPreview; // no path (it does not parse): the list alone
+    m_tabs->setTabText(m_errorsTab, any ? tr("Errors (%1)").arg(m_errorCount) : tr("Errors"));
+    m_tabs->tabBar()->setTabTextColor(m_errorsTab, any ? kErrorText : QColor());
+    m_tabs->setTabToolTip(m_errorsTab,
+                          any ? tr("The check's errors: Run stays off until there are none.")
+                              : tr("The check found no errors."));
+    // Enabled, then shown, then the others disabled: a tab disabled while it is shown hands
+    // the view to another.
+    if (any)
+        m_tabs->setTabEnabled(m_errorsTab, true);
+    if (!listOnly)
+        for (int i = 0; i < m_tabs->count(); ++i)
+            if (i != m_errorsTab)
+                m_tabs->setTabEnabled(i, true);
+    if (listOnly && !m_errorsChosen) {
+        m_tabBeforeErrors = m_tabs->currentIndex() == m_errorsTab ? 0 : m_tabs->currentIndex();
+        m_errorsChosen = true;
+        m_tabs->setCurrentIndex(m_errorsTab);
+    } else if (!listOnly && m_errorsChosen) {
+        // A path again: the tab the operator had, the path with the errors marked on it.
+        m_errorsChosen = false;
+        if (m_tabs->currentIndex() == m_errorsTab)
+            m_tabs->setCurrentIndex(m_tabBeforeErrors);
+    }
+    if (!any && m_tabs->currentIndex() == m_errorsTab)
+        m_tabs->setCurrentIndex(0);
+    if (listOnly)
+        for (int i = 0; i < m_tabs->count(); ++i)
+            if (i != m_errorsTab)
+                m_tabs->setTabEnabled(i, false);
+    if (!any)
+        m_tabs->setTabEnabled(m_errorsTab, false);
+}
+
+int ProgramPreviewView::pointsBeyondLimits() const
+{
+    return m_limits->count();
+}
+
+QList<QPointF> ProgramPreviewView::limitExits() const
+{
+    return m_limits->exits();
 }
 
 QString ProgramPreviewView::coordinatesText() const
@@ -115,6 +416,14 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
 {
     m_hasX = machine.axis(QStringLiteral("X")) != nullptr;
     m_hasY = machine.axis(QStringLiteral("Y")) != nullptr;
+    m_hasPreview = true;
+    m_showsErrors = preview.hasErrors;
+    // A program with errors (issue 47 item 12): what lies beyond the soft limits marked.
+    if (preview.hasErrors)
+        m_limits->setPath(preview.path, beyondLimits(preview, machine),
+                          tr("Beyond the soft limits"));
+    else
+        m_limits->clear();
     m_path->setPreview(preview, machine);
     bool anyView = false;
     for (PreviewViewKind kind : PreviewProjection::kAll)
@@ -145,10 +454,14 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
         QStringLiteral(" \u00b7 ") + ProgramTimes::estimatedDuration(preview.estimatedSeconds);
     if (preview.pathDecimated)
         figures += QStringLiteral(" \u00b7 ") + tr("path simplified");
+    // The path as checked, not a plan: said first (Run stays off while there are errors).
+    if (preview.hasErrors)
+        figures = tr("Has errors, not runnable") + QStringLiteral(" \u00b7 ") + figures;
     m_figures->setText(figures);
     m_motionNote->setText(preview.motionNote);
     m_motionNote->setToolTip(preview.motionNote);
     m_figures->setToolTip(preview.motionNote);
+    updateErrorsTab();
 }
 
 void ProgramPreviewView::fillChart(const program::ProgramPreview& preview,
@@ -225,6 +538,12 @@ void ProgramPreviewView::fillExtents(const program::ProgramPreview& preview,
             QStringLiteral("%1 %2").arg(it->maximum, 0, 'f', 3).arg(unit), limits};
         for (int c = 0; c < cells.size(); ++c)
             m_extents->setItem(row, c, new QTableWidgetItem(cells.at(c)));
+        // An end beyond the limits (a program with errors, issue 47 item 12) in the error
+        // colour.
+        if (work && beyond(axis, *work, it->minimum))
+            m_extents->item(row, 1)->setForeground(kErrorText);
+        if (work && beyond(axis, *work, it->maximum))
+            m_extents->item(row, 2)->setForeground(kErrorText);
     }
 }
 

@@ -18,6 +18,10 @@ private Q_SLOTS:
     void preview_cycle_movesRapidsAndDwellTimed();
     void check_workOffsets_targetsInWorkLimitsInMachine_data();
     void check_workOffsets_targetsInWorkLimitsInMachine();
+    void preview_softLimitErrors_pathKeptFlaggedWithErrors();
+    void preview_parseErrorsOrRefusedStart_noPath();
+    void preview_points_feedSecondsAndBlocksDoneAsTheRunnerCounts();
+    void preview_thinnedPath_pointsKeepTheirFeedSecondsAndBlockCounts();
 };
 
 void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
@@ -200,6 +204,137 @@ void TestProgramPreview::check_workOffsets_targetsInWorkLimitsInMachine()
     QCOMPARE(result.preview.extents["X"].minimum, xFrom);
     QCOMPARE(result.preview.extents["X"].maximum, xTo);
     QCOMPARE(result.preview.path.first().position.value("X"), -10.0);
+}
+
+// Issue 47, item 11: each point carries the estimate's seconds of feed moves up to it (what
+// the feed override re-times; rapids and dwells not) and the blocks a run has finished there,
+// counted as ProgramRunner::blocksDone() counts them: lines of modal words only are not blocks
+// of their own there, repeats are counted out. blocksRun, the preview's figure, counts every
+// block but the repeat lines.
+void TestProgramPreview::preview_points_feedSecondsAndBlocksDoneAsTheRunnerCounts()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p = parsed("G28 X0 Y0\n"     // 1: no time; block 1
+                             "G91\n"           // 2: modal words only
+                             "O1 repeat [2]\n" // 3
+                             "  G1 X10 F600\n" // 4: 10 mm at 10 mm/s: 1 s of feed
+                             "  G4 P0.5\n"     // 5: 0.5 s of dwell
+                             "  G0 X-10\n"     // 6: 10 mm at 50 mm/s: 0.2 s of rapid
+                             "O1 endrepeat\n"  // 7
+                             "M2\n",           // 8: no point; the last block
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const ProgramPreview& v = result.preview;
+    QCOMPARE(v.blocksRun, qint64(1 + 1 + 2 * 3 + 1));
+    struct Expected
+    {
+        int line;
+        double seconds;
+        double feedSeconds;
+        qint64 blocksDone;
+    };
+    const QList<Expected> expected{{0, 0, 0, 0},   {1, 0, 0, 1},   {4, 1, 1, 2},   {5, 1.5, 1, 3},
+                                   {6, 1.7, 1, 4}, {4, 2.7, 2, 5}, {5, 3.2, 2, 6}, {6, 3.4, 2, 7}};
+    QCOMPARE(v.path.size(), expected.size());
+    for (qsizetype i = 0; i < expected.size(); ++i) {
+        const PreviewPoint& point = v.path.at(i);
+        const Expected& e = expected.at(i);
+        QCOMPARE(point.line, e.line);
+        QVERIFY2(qAbs(point.seconds - e.seconds) < 1e-9, qPrintable(QString::number(i)));
+        QVERIFY2(qAbs(point.feedSeconds - e.feedSeconds) < 1e-9, qPrintable(QString::number(i)));
+        QCOMPARE(point.blocksDone, e.blocksDone);
+    }
+    QVERIFY(qAbs(v.estimatedSeconds - 3.4) < 1e-9);
+}
+
+// A path thinned to its bound keeps each kept point's times and count as the run has them
+// there: counts and seconds rise, and the last point is the run's end.
+void TestProgramPreview::preview_thinnedPath_pointsKeepTheirFeedSecondsAndBlockCounts()
+{
+    const MachineFacts facts = machineFacts("mill");
+    const Program p =
+        parsed("G28 X0\nG91\nO1 repeat [15000]\n  G1 X1 F600\n  G0 X-1\nO1 endrepeat\n", facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    const QList<PreviewPoint>& path = result.preview.path;
+    QVERIFY(result.preview.pathDecimated);
+    for (qsizetype i = 1; i < path.size(); ++i) {
+        QVERIFY(path.at(i).blocksDone > path.at(i - 1).blocksDone);
+        QVERIFY(path.at(i).seconds >= path.at(i - 1).seconds);
+        QVERIFY(path.at(i).feedSeconds >= path.at(i - 1).feedSeconds);
+        QVERIFY(path.at(i).feedSeconds <= path.at(i).seconds + 1e-9);
+    }
+    QCOMPARE(path.last().blocksDone, qint64(1 + 2 * 15000)); // G91 is no block of its own
+    QCOMPARE(result.preview.blocksRun, qint64(2 + 2 * 15000));
+    // 1 mm at 10 mm/s of feed, 1 mm at 50 mm/s of rapid, 15000 times.
+    QVERIFY(qAbs(path.last().feedSeconds - 15000 * 0.1) < 1e-6);
+    QVERIFY(qAbs(path.last().seconds - 15000 * (0.1 + 0.02)) < 1e-6);
+    QCOMPARE(path.last().seconds, result.preview.estimatedSeconds);
+}
+
+// Issue 47 item 12: a program beyond the soft limits (a CAM job before its work zero is set)
+// keeps the path the check walked, flagged as having errors so that nothing runs it: its
+// points and extents as the walk reached them, the error listed as ever.
+void TestProgramPreview::preview_softLimitErrors_pathKeptFlaggedWithErrors()
+{
+    const MachineFacts facts = machineFacts("mill"); // X 0..100 mm, Y 0..200 mm
+    const Program p = parsed("G28 X0 Y0\n"
+                             "G0 X50 Y20\n"
+                             "G0 X120 Y20\n" // X beyond its soft limits
+                             "G0 X10 Y20\n"
+                             "M30\n",
+                             facts);
+    const ProgramCheckResult result = ProgramCheck::check(p, facts);
+    QCOMPARE(texts(result.errors),
+             QStringList{"3:4: X reaches 120 mm, outside the soft limits 0..100 mm"});
+    QVERIFY(!result.ok());
+    QVERIFY(!result.program); // nothing to run
+    QVERIFY(result.hasPreview());
+    const ProgramPreview& v = result.preview;
+    QVERIFY(v.hasErrors);
+    QCOMPARE(v.lines, 5);
+    QCOMPARE(v.path.size(), 5); // the start, G28, the three G0
+    QCOMPARE(v.path.at(3).line, 3);
+    QCOMPARE(v.path.at(3).position, (QMap<QString, double>{{"X", 120}, {"Y", 20}}));
+    QCOMPARE(v.path.last().position, (QMap<QString, double>{{"X", 10}, {"Y", 20}}));
+    QCOMPARE(v.extents["X"].minimum, 0.0);
+    QCOMPARE(v.extents["X"].maximum, 120.0);
+    QCOMPARE(v.extents["Y"].minimum, 0.0);
+    QCOMPARE(v.extents["Y"].maximum, 20.0);
+
+    // Within the limits: the same path, no errors, not flagged.
+    const ProgramCheckResult fits =
+        ProgramCheck::check(parsed("G28 X0 Y0\nG0 X50 Y20\nG0 X90 Y20\nM30\n", facts), facts);
+    QVERIFY2(fits.ok(), qPrintable(texts(fits.errors).join('\n')));
+    QVERIFY(fits.hasPreview());
+    QVERIFY(!fits.preview.hasErrors);
+}
+
+// Where the check walked nothing, there is no path to show: a program that does not parse (the
+// one pass stops walking at its first parse error), a run from a line past the last block.
+void TestProgramPreview::preview_parseErrorsOrRefusedStart_noPath()
+{
+    const MachineFacts facts = machineFacts("mill");
+    QStringList names;
+    for (const MachineAxis& a : facts.description.axes)
+        names << a.name;
+    const ProgramCheckResult parse = ProgramCheck::check(
+        ProgramSource::bytes("G28 X0\nG0 X10\nG0 Q1 X20\nG0 X120\n"), names, facts);
+    QVERIFY(!parse.ok());
+    QCOMPARE(parse.errors.size(), 1);
+    QCOMPARE(parse.errors.first().line, 3);
+    QVERIFY(!parse.program);
+    QVERIFY(!parse.hasPreview());
+    QVERIFY(parse.preview.path.isEmpty());
+    QVERIFY(parse.preview.extents.isEmpty());
+    QVERIFY(parse.preview.hasErrors);
+
+    const ProgramCheckResult from =
+        ProgramCheck::check(parsed("G28 X0\nG0 X10\nM30\n", facts), facts, 90);
+    QVERIFY(!from.ok());
+    QVERIFY(!from.hasPreview());
+    QCOMPARE(from.preview.lines, 3);
 }
 
 QTEST_GUILESS_MAIN(TestProgramPreview)

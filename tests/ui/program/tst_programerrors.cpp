@@ -1,13 +1,16 @@
 // The check's errors on the Program page (issue 31 finding: the check line named only the
 // first error and there was no list): the check line counts them, the list of every error,
-// "line N: message", stands in the preview's place (a program with errors has none); a click
-// or Enter on one puts the editor's cursor at its line and column with the focus; the list
-// follows each check; nothing of the page moves.
+// "line N: message", is the preview's last tab (issue 47 item 12: a program with errors that
+// leave a path keeps it beside the list, tst_programpage); a program that does not parse has
+// no path, and the list is then the one tab, shown where the path was drawn; a click or Enter
+// on one puts the editor's cursor at its line and column with the focus; the list follows each
+// check; nothing of the page moves.
 #include "ProgramPageFixture.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramErrorList.h"
 #include <QListWidget>
 #include <QScrollBar>
+#include <QTabWidget>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -28,7 +31,7 @@ private Q_SLOTS:
         QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
     }
     void cleanup() { m_rig.stop(); }
-    void checkErrors_listInThePreviewsPlace_namesEach();
+    void checkErrors_parseErrors_listAloneWhereThePathWas_namesEach();
     void checkErrors_clickEntry_editorAtThatLine();
     void checkErrors_enterOnEntry_editorAtThatLine();
     void checkErrors_fixed_listFollowsTheCheck();
@@ -57,12 +60,19 @@ private:
     }
 };
 
-void TestProgramErrors::checkErrors_listInThePreviewsPlace_namesEach()
+void TestProgramErrors::checkErrors_parseErrors_listAloneWhereThePathWas_namesEach()
 {
     setProgram(QStringLiteral("G91\nG0 X1\n"));
-    QVERIFY(page()->preview()->isVisible());
-    QVERIFY(!list()->isVisible()); // nothing to list
-    const QRect preview = placeOf(page()->preview());
+    ui::ProgramPreviewView* preview = page()->preview();
+    QTabWidget* tabs = preview->tabs();
+    const int errorsTab = preview->errorsTabIndex();
+    QVERIFY(errorsTab >= 0);
+    QVERIFY(preview->isVisible());
+    QVERIFY(preview->pathView()->isVisible());
+    QVERIFY(!list()->isVisible());           // nothing to list
+    QVERIFY(!tabs->isTabEnabled(errorsTab)); // nor to choose
+    const QRect place = placeOf(preview);
+    const QRect drawing = placeOf(tabs->currentWidget());
     const QRect run = placeOf(page()->controls()->runButton());
     const QRect check = placeOf(page()->findChild<QWidget*>(QStringLiteral("programCheckNow")));
     const QRect editor = placeOf(page()->editor());
@@ -73,7 +83,13 @@ void TestProgramErrors::checkErrors_listInThePreviewsPlace_namesEach()
                  page()->checkText().contains(QStringLiteral("line 3: ")),
              qPrintable(page()->checkText()));
     QTRY_VERIFY(list()->isVisible());
-    QVERIFY(!page()->preview()->isVisible());
+    // It does not parse, so it has no path: the list alone, the other tabs not to be chosen.
+    QVERIFY(!preview->pathView()->isVisible());
+    QVERIFY(!preview->showsErrors());
+    QCOMPARE(tabs->currentIndex(), errorsTab);
+    for (int i = 0; i < tabs->count(); ++i)
+        QCOMPARE(tabs->isTabEnabled(i), i == errorsTab);
+    QCOMPARE(tabs->tabText(errorsTab), QStringLiteral("Errors (2)"));
     const QStringList texts = entries();
     QCOMPARE(texts.size(), 2);
     QVERIFY2(texts.at(0).startsWith(QStringLiteral("line 3: ")) &&
@@ -83,8 +99,9 @@ void TestProgramErrors::checkErrors_listInThePreviewsPlace_namesEach()
              qPrintable(texts.join(QLatin1Char('|'))));
     QVERIFY2(list()->headerText().startsWith(QStringLiteral("2 error")),
              qPrintable(list()->headerText()));
-    // Exactly where the preview was; nothing else of the page moved.
-    QCOMPARE(placeOf(list()), preview);
+    // Exactly where the path was drawn; the preview and the rest of the page did not move.
+    QCOMPARE(placeOf(list()), drawing);
+    QCOMPARE(placeOf(preview), place);
     QCOMPARE(placeOf(page()->controls()->runButton()), run);
     QCOMPARE(placeOf(page()->findChild<QWidget*>(QStringLiteral("programCheckNow"))), check);
     QCOMPARE(placeOf(page()->editor()), editor);
@@ -128,13 +145,14 @@ void TestProgramErrors::checkErrors_fixed_listFollowsTheCheck()
     QTRY_COMPARE(entries().size(), 1);
     QVERIFY2(entries().at(0).startsWith(QStringLiteral("line 5: ")), qPrintable(entries().at(0)));
     QTRY_VERIFY(page()->checkText().startsWith(QStringLiteral("1 error")));
-    // And the last: the preview is back in the list's place.
+    // And the last: the path is back in the list's place, the errors' tab not to be chosen.
     c = QTextCursor(page()->editor()->document()->findBlockByNumber(4));
     c.select(QTextCursor::LineUnderCursor);
     c.insertText(QStringLiteral("G0 Y2"));
     QTRY_VERIFY(entries().isEmpty());
-    QTRY_VERIFY(page()->preview()->isVisible());
+    QTRY_VERIFY(page()->preview()->pathView()->isVisible());
     QVERIFY(!list()->isVisible());
+    QVERIFY(!page()->preview()->tabs()->isTabEnabled(page()->preview()->errorsTabIndex()));
 }
 
 // A reason longer than the list is wide wraps onto more lines; the list never scrolls sideways.

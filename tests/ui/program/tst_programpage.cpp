@@ -2,8 +2,13 @@
 // (ProgramPageFixture): the check's errors are marked at their lines; Run sends the moves
 // (asserted at the simulated device); the position is drawn in the path; Run from line confirms
 // where it starts; the page fits a 1366x768 laptop; the connection's machine is the one
-// programs run on. Holding, stopping and faults while a program runs: tst_programpagerun.
+// programs run on; a program with errors keeps the path its check walked beside the list of
+// its errors (issue 47 item 12). Holding, stopping and faults while a program runs:
+// tst_programpagerun.
 #include "ProgramPageFixture.h"
+#include "program/ProgramErrorList.h"
+#include <QListWidget>
+#include <QTabWidget>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -27,7 +32,29 @@ private Q_SLOTS:
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
     void run_afterZeroXY_programInWorkCoordinatesAtTheBoard();
     void linuxcncLanguage_errorsAtFileLines_runMovesTheDevice();
+    void preview_softLimitErrors_pathShownWithTheErrors();
+    void preview_parseErrors_listOnly();
+    void preview_errorsComeAndGo_layoutHoldsStill();
+
+private:
+    // The table with X's soft limits 0..100 mm, connected, X, Y and Z referenced (at 0).
+    bool openLimitedTable()
+    {
+        return m_rig.openAndConnect(
+                   m_rig.machineJson(QStringLiteral("Limited table"),
+                                     QStringLiteral(", \"softLimits\": [0, 100]"))) &&
+               m_rig.referenceTable();
+    }
+    // Where a widget of the page stands in the window.
+    QRect placeOf(const QWidget* w) const { return QRect(w->mapTo(window(), QPoint()), w->size()); }
 };
+
+namespace {
+// Issue 47 item 12: X goes to 120 mm, beyond its soft limits 0..100 mm, on line 3 (column 4).
+const QString kBeyondTheLimits = QStringLiteral("G90\nG0 X10 Y5\nG0 X120 Y5\nG0 X10 Y5\nM2\n");
+const QString kWithinTheLimits = QStringLiteral("G90\nG0 X10 Y5\nG0 X90 Y5\nG0 X10 Y5\nM2\n");
+const QString kDoesNotParse = QStringLiteral("G90\nG0 Q1 X10\nM2\n"); // Q is no word of G0
+} // namespace
 
 void TestProgramPage::check_errorInProgram_markedAtItsLine()
 {
@@ -313,6 +340,129 @@ void TestProgramPage::linuxcncLanguage_errorsAtFileLines_runMovesTheDevice()
     // 0.25 mm then 0.5 mm at 400 steps/mm.
     QCOMPARE(m_rig.elab->position(Axis::X) - x0, 300);
     QVERIFY(m_rig.elab->still());
+}
+
+// Issue 47 item 12: before a work zero is set a CAM job fails the soft limits, and the operator
+// must still see the part to place the zero: the path as the check walked it, in work
+// coordinates, what lies beyond the limits in the error colour, the extents, and the list of
+// the errors in the preview's last tab. Run stays off.
+void TestProgramPage::preview_softLimitErrors_pathShownWithTheErrors()
+{
+    QVERIFY(openLimitedTable());
+    setProgram(kBeyondTheLimits);
+    QVERIFY2(page()->checkText().startsWith(QStringLiteral("1 error")) &&
+                 page()->checkText().contains(QStringLiteral("line 3: X reaches 120 mm")),
+             qPrintable(page()->checkText()));
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+    ui::ProgramPreviewView* preview = page()->preview();
+    // The path stays in view, marked as not runnable.
+    QVERIFY(preview->pathView()->isVisible());
+    QVERIFY(preview->showsErrors());
+    const QList<QPointF> points = preview->pathView()->points();
+    QVERIFY(points.contains(QPointF(10, 5)));
+    QVERIFY(points.contains(QPointF(120, 5)));
+    QVERIFY2(preview->figuresText().contains(QStringLiteral("not runnable")),
+             qPrintable(preview->figuresText()));
+    // The one point beyond the limits, marked where the path leaves them.
+    QCOMPARE(preview->pointsBeyondLimits(), 1);
+    QCOMPARE(preview->limitExits(), QList<QPointF>{QPointF(120, 5)});
+    // The extents as the walk reached them, X's end beyond its limits in the error colour.
+    QTableWidget* extents = preview->extentsTable();
+    QTableWidgetItem* xTo = nullptr;
+    for (int r = 0; r < extents->rowCount(); ++r)
+        if (extents->item(r, 0)->text() == QLatin1String("X"))
+            xTo = extents->item(r, 2);
+    QVERIFY(xTo);
+    QCOMPARE(xTo->text(), QStringLiteral("120.000 mm"));
+    QCOMPARE(xTo->foreground().color(), QColor(0xb0, 0, 0));
+    // The list of the errors, one tab away, with the error.
+    QTabWidget* tabs = preview->tabs();
+    const int errorsTab = preview->errorsTabIndex();
+    QVERIFY(tabs->isTabEnabled(errorsTab));
+    QVERIFY(tabs->isTabEnabled(0));
+    QCOMPARE(tabs->tabText(errorsTab), QStringLiteral("Errors (1)"));
+    ui::ProgramErrorList* list = page()->errorList();
+    QCOMPARE(list->errorCount(), 1);
+    const QString entry = list->list()->item(0)->text();
+    QVERIFY2(entry.startsWith(QStringLiteral("line 3: X reaches 120 mm")) &&
+                 entry.contains(QStringLiteral("soft limits 0..100 mm")),
+             qPrintable(entry));
+    tabs->setCurrentIndex(errorsTab);
+    QTRY_VERIFY(list->isVisible());
+    QVERIFY(!page()->controls()->runButton()->isEnabled()); // the check means what it says
+
+    // Within the limits: the same path, nothing marked, Run on.
+    tabs->setCurrentIndex(0);
+    setProgram(kWithinTheLimits);
+    QTRY_VERIFY2(page()->controls()->runButton()->isEnabled(), qPrintable(page()->checkText()));
+    QVERIFY(!preview->showsErrors());
+    QCOMPARE(preview->pointsBeyondLimits(), 0);
+    QVERIFY(!tabs->isTabEnabled(errorsTab));
+    QVERIFY(preview->pathView()->points().contains(QPointF(90, 5)));
+}
+
+// A program that does not parse has no path: the list of its errors alone.
+void TestProgramPage::preview_parseErrors_listOnly()
+{
+    QVERIFY(window()->openMachine(m_rig.writeFile(m_rig.machineJson())));
+    setProgram(kDoesNotParse);
+    QVERIFY2(page()->checkText().startsWith(QStringLiteral("1 error")),
+             qPrintable(page()->checkText()));
+    ui::ProgramPreviewView* preview = page()->preview();
+    QTabWidget* tabs = preview->tabs();
+    QTRY_VERIFY(page()->errorList()->isVisible());
+    QCOMPARE(tabs->currentIndex(), preview->errorsTabIndex());
+    for (int i = 0; i < tabs->count(); ++i)
+        QCOMPARE(tabs->isTabEnabled(i), i == preview->errorsTabIndex());
+    QVERIFY(!preview->showsErrors());
+    QVERIFY(!preview->pathView()->isVisible());
+    QVERIFY(preview->pathView()->points().isEmpty());
+    QCOMPARE(preview->pointsBeyondLimits(), 0);
+    QCOMPARE(page()->errorList()->errorCount(), 1);
+    QVERIFY(!page()->controls()->runButton()->isEnabled());
+}
+
+// No errors, errors beside a path, errors without one, and back: the page, the preview and the
+// room the path (or the list) is shown in keep their size and place.
+void TestProgramPage::preview_errorsComeAndGo_layoutHoldsStill()
+{
+    QVERIFY(openLimitedTable());
+    ui::ProgramPreviewView* preview = page()->preview();
+    QTabWidget* tabs = preview->tabs();
+    const auto places = [&] {
+        return QList<QRect>{placeOf(page()),
+                            placeOf(preview),
+                            placeOf(tabs),
+                            placeOf(tabs->currentWidget()),
+                            placeOf(page()->editor()),
+                            placeOf(page()->controls()->runButton()),
+                            placeOf(page()->findChild<QWidget*>(QStringLiteral("programCheck"))),
+                            placeOf(preview->summary()),
+                            QRect(QPoint(), window()->size())};
+    };
+    setProgram(kWithinTheLimits);
+    QTRY_VERIFY2(page()->controls()->runButton()->isEnabled(), qPrintable(page()->checkText()));
+    QCoreApplication::processEvents();
+    const QList<QRect> clean = places();
+    const QRect drawing = placeOf(preview->pathView());
+
+    setProgram(kBeyondTheLimits);
+    QTRY_VERIFY(preview->showsErrors());
+    QCoreApplication::processEvents();
+    QCOMPARE(places(), clean);
+    QCOMPARE(placeOf(preview->pathView()), drawing); // the path kept its room
+
+    setProgram(kDoesNotParse);
+    QTRY_VERIFY(page()->errorList()->isVisible());
+    QCoreApplication::processEvents();
+    QCOMPARE(places(), clean);
+    QCOMPARE(placeOf(page()->errorList()), drawing); // the list where the path was
+
+    setProgram(kWithinTheLimits);
+    QTRY_VERIFY(preview->pathView()->isVisible());
+    QCoreApplication::processEvents();
+    QCOMPARE(places(), clean);
+    QCOMPARE(placeOf(preview->pathView()), drawing);
 }
 
 int main(int argc, char** argv)

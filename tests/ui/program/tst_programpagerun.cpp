@@ -35,6 +35,8 @@ private Q_SLOTS:
     void closeMachine_whileRunning_programAbortedAndAxisStill();
     void openAnother_afterRun_oldResultCleared();
     void spindleBar_switchesAtTheBoardLockedWhileRunningOffAfterStop();
+    void timeLeft_override50_feedTimeDoublesAtOnce();
+    void finished_repeatAndModalLines_countsAsThePreview();
 };
 
 void TestProgramPageRun::pause_duringBlock_holdsAfterItThenResumeFinishes()
@@ -378,6 +380,64 @@ void TestProgramPageRun::spindleBar_switchesAtTheBoardLockedWhileRunningOffAfter
     QTRY_COMPARE_WITH_TIMEOUT(bar->spindleText(), QStringLiteral("Spindle: off"), 10000);
     QCOMPARE(bar->coolantText(), QStringLiteral("Coolant: off"));
     QTRY_VERIFY(bar->spindleButton()->isEnabled());
+}
+
+// Issue 47, item 11: held after its first block, the run's time left is the G1's; the feed
+// override box doubles it at 50 % at once, not at the next block's end (the page's runner gets
+// the override too).
+void TestProgramPageRun::timeLeft_override50_feedTimeDoublesAtOnce()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QSpinBox* override = page()->controls()->feedOverrideBox();
+    override->setValue(100);
+    // The G1: 1 mm at 0.2 mm/s (80 steps/s), about 5 s of feed.
+    setProgram(QStringLiteral("G91\nG0 X0.25\nG1 X1 F12\nM2\n"));
+    QTRY_VERIFY(page()->controls()->stepButton()->isEnabled());
+    page()->controls()->stepButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused), 20000);
+    QCOMPARE(runner()->currentLine(), 2);
+    // What is left in the run's estimate: the G1 (feed) and nothing else.
+    const program::ProgramPreview& v = runner()->preview();
+    const program::PreviewPoint* g0 = nullptr;
+    for (const program::PreviewPoint& point : v.path)
+        if (point.line == 2)
+            g0 = &point;
+    QVERIFY(g0);
+    const double feedLeft = v.path.last().feedSeconds - g0->feedSeconds;
+    const double otherLeft = (v.estimatedSeconds - g0->seconds) - feedLeft;
+    QVERIFY2(feedLeft > 4 && feedLeft < 6, qPrintable(QString::number(feedLeft)));
+    QVERIFY2(qAbs(otherLeft) < 1e-9, qPrintable(QString::number(otherLeft)));
+    QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(feedLeft));
+    override->setValue(50);
+    QCOMPARE(runner()->feedOverride(), 50.0);
+    QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(2 * feedLeft));
+    override->setValue(80); // about 6.25 s: away from a rounding edge
+    QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(feedLeft / 0.8));
+    override->setValue(100);
+    QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(feedLeft));
+    page()->controls()->abortButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Aborted), 20000);
+}
+
+// Issue 47, item 11: "Finished: n block(s) run" names the count the preview names, for a
+// program with a repeat and lines of modal words only (ProgramPreview::blocksRun: G91, F600,
+// three passes of G91 and G0, M2). The runner passes the modal-only lines by without running
+// them: it counts the 3 G0 and M2 it executed.
+void TestProgramPageRun::finished_repeatAndModalLines_countsAsThePreview()
+{
+    QVERIFY(m_rig.openAndConnect());
+    setProgram(QStringLiteral("G91\nF600\nO1 repeat [3]\nG91\nG0 X0.25\nO1 endrepeat\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    const QString figures = page()->preview()->figuresText();
+    QVERIFY2(figures.contains(ui::ProgramPreviewView::tr("%n block(s) run", nullptr, 9)),
+             qPrintable(figures));
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QCOMPARE(m_rig.elab->position(Axis::X), 300); // 3 x 0.25 mm at 400 steps/mm
+    QCOMPARE(runner()->preview().blocksRun, qint64(9));
+    QCOMPARE(page()->messageText(), ui::ProgramPage::tr("Finished: %n block(s) run.", nullptr, 9));
+    QCOMPARE(runner()->blocksDone(), qint64(4));
+    QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(0));
 }
 
 int main(int argc, char** argv)

@@ -1,6 +1,7 @@
 // PreviewViewport (issue 29): fitting shows the whole of a rectangle, centred, Y up; zooming
 // about a point keeps the plane point under it; panning moves the drawing by the drag; the
-// scale stays within its bounds.
+// scale stays within its bounds; a plane point is placed on a widget point (a turned view
+// keeps its middle where it was, issue 47 item 14).
 #include "program/PreviewViewport.h"
 #include <QtTest>
 
@@ -17,6 +18,8 @@ private Q_SLOTS:
     void panBy_delta_movesEveryPointByIt();
     void transform_samePlaceAsMap();
     void zoomAt_farOut_scaleStaysWithinBounds();
+    void placeAt_planePoint_landsOnTheWidgetPointScaleKept_data();
+    void placeAt_planePoint_landsOnTheWidgetPointScaleKept();
 };
 
 namespace {
@@ -98,6 +101,30 @@ void TestPreviewViewport::zoomAt_farOut_scaleStaysWithinBounds()
     for (int i = 0; i < 400; ++i)
         v.zoomAt({10, 10}, 2);
     QCOMPARE(v.scale(), PreviewViewport::kMaxScale);
+}
+
+void TestPreviewViewport::placeAt_planePoint_landsOnTheWidgetPointScaleKept_data()
+{
+    QTest::addColumn<QPointF>("plane");
+    QTest::addColumn<QPointF>("widget");
+    QTest::addRow("origin to the centre") << QPointF(0, 0) << QPointF(200, 100);
+    QTest::addRow("far point to a corner") << QPointF(-1e4, 2.5e3) << QPointF(3, 197);
+    QTest::addRow("where it is") << QPointF(50, 25) << QPointF(200, 100);
+}
+
+void TestPreviewViewport::placeAt_planePoint_landsOnTheWidgetPointScaleKept()
+{
+    QFETCH(QPointF, plane);
+    QFETCH(QPointF, widget);
+    PreviewViewport v;
+    v.fit(QRectF(0, 0, 100, 50), QRectF(0, 0, 400, 200));
+    v.zoomAt({17, 33}, 3);
+    const double scale = v.scale();
+    const QPointF other = v.map({1, 2}) - v.map(plane); // how far another point is from it
+    v.placeAt(plane, widget);
+    QVERIFY(near(v.map(plane), widget, 1e-6));
+    QCOMPARE(v.scale(), scale);
+    QVERIFY(near(v.map({1, 2}) - v.map(plane), other, 1e-6)); // moved along, not scaled
 }
 
 QTEST_GUILESS_MAIN(TestPreviewViewport)

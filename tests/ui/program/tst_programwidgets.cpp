@@ -16,11 +16,13 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTextBlock>
 #include <QThreadPool>
 #include <QtTest>
+#include <tuple>
 
 using namespace stepdeck;
 using namespace stepdeck::ui;
@@ -43,6 +45,10 @@ private Q_SLOTS:
     void banner_prompt_keepsItsHeight();
     void backgroundCheck_twoRequests_onlyTheNewestReports();
     void progress_blocksOfARepeat_timeLeftFollowsThePath();
+    void timeLeft_override50_feedTimeDoubles();
+    void timeLeft_longLine_countsItsSecondsNotOneStep();
+    void timeLeft_thinnedPath_followsTheKeptPointsTimes();
+    void controls_timeLeft_followsTheOverrideBoxAtOnce();
 };
 
 void TestProgramWidgets::initTestCase()
@@ -281,12 +287,13 @@ void TestProgramWidgets::backgroundCheck_twoRequests_onlyTheNewestReports()
 
 void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
 {
-    // O1 repeat [2] around line 2 (G0, 1 s), line 3 (M64: no point), line 4 (G4 P2).
+    // O1 repeat [2] around line 2 (G0, 1 s), line 3 (M64: no point), line 4 (G4 P2); each
+    // point with the blocks finished there (PreviewPoint::blocksDone).
     program::ProgramPreview preview;
     preview.estimatedSeconds = 6;
-    for (const auto& [line, seconds] :
-         QList<QPair<int, double>>{{0, 0}, {2, 1}, {4, 3}, {2, 4}, {4, 6}})
-        preview.path << program::PreviewPoint{line, seconds, {}, false};
+    for (const auto& [line, seconds, blocks] : QList<std::tuple<int, double, qint64>>{
+             {0, 0, 0}, {2, 1, 1}, {4, 3, 3}, {2, 4, 4}, {4, 6, 6}})
+        preview.path << program::PreviewPoint{line, seconds, {}, false, 0, blocks};
     ProgramProgress progress;
     progress.reset(preview);
     QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
@@ -301,19 +308,138 @@ void TestProgramWidgets::progress_blocksOfARepeat_timeLeftFollowsThePath()
     progress.blockFinished(3);
     progress.blockFinished(4);
     QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
-    preview.pathDecimated = true; // a thinned path: by the share of blocks still to run
-    preview.blocksRun = 8;
+    // A thinned path (issue 47, item 11: by time, not by the share of blocks): the points of
+    // blocks 1 and 4 left out, the blocks between two kept points share their time.
+    preview.pathDecimated = true;
+    preview.blocksRun = 6;
+    preview.path = {program::PreviewPoint{0, 0, {}, false, 0, 0},
+                    program::PreviewPoint{4, 3, {}, false, 0, 3},
+                    program::PreviewPoint{4, 6, {}, false, 0, 6}};
     progress.reset(preview);
     QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
     progress.blockFinished(2);
     progress.blockFinished(3);
-    QCOMPARE(progress.secondsLeft().value_or(-1), 4.5); // 6 s x 6/8 blocks
-    for (int i = 0; i < 6; ++i)
+    QCOMPARE(progress.secondsLeft().value_or(-1), 4.0); // 2 of the 3 blocks to 3 s
+    for (int i = 0; i < 4; ++i)
         progress.blockFinished(4);
     QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
-    preview.blocksRun = 0;
+    preview.estimatedSeconds = 0; // no estimate: nothing to tell
     progress.reset(preview);
     QVERIFY(!progress.secondsLeft());
+}
+
+namespace {
+// A G1 of 10 s (line 1), a G0 of 2 s (line 2), a G4 P3 (line 3), a G1 of 10 s (line 4).
+program::ProgramPreview feedsRapidAndDwell()
+{
+    program::ProgramPreview preview;
+    preview.lines = 4;
+    preview.blocksRun = 4;
+    preview.estimatedSeconds = 25;
+    preview.path = {program::PreviewPoint{0, 0, {}, false, 0, 0},
+                    program::PreviewPoint{1, 10, {}, false, 10, 1},
+                    program::PreviewPoint{2, 12, {}, true, 10, 2},
+                    program::PreviewPoint{3, 15, {}, false, 10, 3},
+                    program::PreviewPoint{4, 25, {}, false, 20, 4}};
+    return preview;
+}
+} // namespace
+
+// Issue 47, item 11: at a feed override of 50 % the feed moves take twice their time, at
+// 200 % half; the rapid and the dwell keep theirs.
+void TestProgramWidgets::timeLeft_override50_feedTimeDoubles()
+{
+    ProgramProgress progress;
+    progress.reset(feedsRapidAndDwell());
+    QCOMPARE(progress.feedOverride(), 100.0);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 25.0);
+    QCOMPARE(progress.timeLeft()->feedSeconds, 20.0);
+    QCOMPARE(progress.timeLeft()->otherSeconds, 5.0);
+    progress.setFeedOverride(50);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 2 * 20.0 + 5);
+    progress.blockFinished(1);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 2 * 10.0 + 5);
+    progress.setFeedOverride(100);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 15.0);
+    progress.blockFinished(2); // the rapid
+    progress.setFeedOverride(50);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 2 * 10.0 + 3);
+    progress.setFeedOverride(200);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 10.0 / 2 + 3);
+    // Where the run stands on the preview's clock does not depend on the override.
+    QCOMPARE(progress.secondsDone(), 12.0);
+    progress.blockFinished(3);
+    progress.blockFinished(4);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 0.0);
+    // A new run keeps the override (the runner's); the estimate starts again.
+    progress.reset(feedsRapidAndDwell());
+    QCOMPARE(progress.secondsLeft().value_or(-1), 20.0 / 2 + 5);
+}
+
+// A block of 10 s is 10 s of the time left, not a quarter of it (one block of four).
+void TestProgramWidgets::timeLeft_longLine_countsItsSecondsNotOneStep()
+{
+    program::ProgramPreview preview = feedsRapidAndDwell();
+    preview.path[1].seconds = 20; // line 1 takes 20 s, the rest as before
+    preview.path[1].feedSeconds = 20;
+    for (qsizetype i = 2; i < preview.path.size(); ++i) {
+        preview.path[i].seconds += 10;
+        preview.path[i].feedSeconds += 10;
+    }
+    preview.estimatedSeconds = 35;
+    ProgramProgress progress;
+    progress.reset(preview);
+    progress.blockFinished(1);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 15.0);
+    progress.blockFinished(2);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 13.0);
+}
+
+// A thinned path: between two kept points the blocks share the time by their count; a kept
+// point's block is where its seconds say.
+void TestProgramWidgets::timeLeft_thinnedPath_followsTheKeptPointsTimes()
+{
+    program::ProgramPreview preview;
+    preview.estimatedSeconds = 38;
+    preview.blocksRun = 9;
+    preview.pathDecimated = true;
+    // Block 1 a G1 of 30 s; blocks 2..5 and 6..9 of 1 s each, their points thinned out but
+    // for the last of each.
+    preview.path = {program::PreviewPoint{0, 0, {}, false, 0, 0},
+                    program::PreviewPoint{1, 30, {}, false, 30, 1},
+                    program::PreviewPoint{5, 34, {}, false, 34, 5},
+                    program::PreviewPoint{9, 38, {}, false, 38, 9}};
+    ProgramProgress progress;
+    progress.reset(preview);
+    progress.blockFinished(1);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 8.0); // not 38 x 8/9 blocks
+    progress.blockFinished(2);
+    progress.blockFinished(3);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 6.0);
+    progress.setFeedOverride(50);
+    QCOMPARE(progress.secondsLeft().value_or(-1), 12.0);
+}
+
+// The Program page's time left follows the feed override box as soon as it changes, at the
+// feed moves' share; without a run it says nothing.
+void TestProgramWidgets::controls_timeLeft_followsTheOverrideBoxAtOnce()
+{
+    ProgramControls controls;
+    QCOMPARE(controls.feedOverride(), 100);
+    controls.setProgress(3, 10, ProgramTimeLeft{60, 10});
+    QCOMPARE(controls.timeLeftText(), ProgramTimes::estimatedLeft(70));
+    controls.feedOverrideBox()->setValue(50);
+    QCOMPARE(controls.timeLeftText(), ProgramTimes::estimatedLeft(130));
+    controls.feedOverrideBox()->setValue(200);
+    QCOMPARE(controls.timeLeftText(), ProgramTimes::estimatedLeft(40));
+    controls.setProgress(4, 10, std::nullopt);
+    QCOMPARE(controls.timeLeftText(), QStringLiteral("time left unknown"));
+    controls.feedOverrideBox()->setValue(100);
+    QCOMPARE(controls.timeLeftText(), QStringLiteral("time left unknown"));
+    controls.clearProgress();
+    controls.feedOverrideBox()->setValue(50);
+    QVERIFY(controls.timeLeftText().isEmpty());
+    QCOMPARE(controls.progressText(), QStringLiteral("not running"));
 }
 
 QTEST_MAIN(TestProgramWidgets)
