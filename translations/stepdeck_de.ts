@@ -7863,10 +7863,6 @@ W1500</translation>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>
         <message>
-            <source>Wheel: zoom about the pointer · drag: pan · F or a double click: fit · + and -: zoom · arrow keys: pan</source>
-            <translation>Mausrad: um den Mauszeiger zoomen · Ziehen: verschieben · F oder Doppelklick: einpassen · + und -: zoomen · Pfeiltasten: verschieben</translation>
-        </message>
-        <message>
             <source>Fit</source>
             <translation>Einpassen</translation>
         </message>
@@ -7907,6 +7903,22 @@ W1500</translation>
         <message>
             <source>Tool</source>
             <translation>Werkzeug</translation>
+        </message>
+        <message>
+            <source>Drag: turn (X, Y and Z) · Shift+drag or the middle button: pan · wheel: zoom about the pointer · F or a double click: fit · + and -: zoom · arrow keys: pan · Ctrl+arrow keys: turn</source>
+            <translation>Ziehen: drehen (X, Y und Z) · Umschalt+Ziehen oder mittlere Taste: verschieben · Mausrad: um den Zeiger zoomen · F oder Doppelklick: einpassen · + und -: zoomen · Pfeiltasten: verschieben · Strg+Pfeiltasten: drehen</translation>
+        </message>
+        <message>
+            <source>Orbit</source>
+            <translation>Gedreht</translation>
+        </message>
+        <message>
+            <source>Turned with the mouse: drag the drawing to turn it, choose a view above to turn it back</source>
+            <translation>Mit der Maus gedreht: die Zeichnung ziehen, um sie zu drehen; oben eine Ansicht wählen, um zurückzudrehen</translation>
+        </message>
+        <message>
+            <source>Turning the path needs the axes X, Y and Z.</source>
+            <translation>Zum Drehen der Bahn braucht es die Achsen X, Y und Z.</translation>
         </message>
     </context>
     <context>
@@ -8000,6 +8012,30 @@ W1500</translation>
         <message>
             <source>path simplified</source>
             <translation>Pfad vereinfacht</translation>
+        </message>
+        <message>
+            <source>Errors</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>Errors (%1)</source>
+            <translation>Fehler (%1)</translation>
+        </message>
+        <message>
+            <source>The check's errors: Run stays off until there are none.</source>
+            <translation>Die Fehler der Prüfung: Starten bleibt aus, bis keine mehr da sind.</translation>
+        </message>
+        <message>
+            <source>The check found no errors.</source>
+            <translation>Die Prüfung hat keine Fehler gefunden.</translation>
+        </message>
+        <message>
+            <source>Beyond the soft limits</source>
+            <translation>Jenseits der Software-Endlagen</translation>
+        </message>
+        <message>
+            <source>Has errors, not runnable</source>
+            <translation>Hat Fehler, nicht ausführbar</translation>
         </message>
     </context>
     <context>
@@ -8315,6 +8351,18 @@ W1500</translation>
         <message>
             <source>Positions estimated, not confirmed by the controller: reference the axes before any absolute move.</source>
             <translation>Positionen geschätzt, nicht von der Steuerung bestätigt: vor jeder absoluten Bewegung die Achsen referenzieren.</translation>
+        </message>
+        <message>
+            <source>Program running, line %1: STOP (Esc) ends it, Hold (F2) stops it on its path.</source>
+            <translation>Programm läuft, Zeile %1: STOPP (Esc) beendet es, Halt (F2) hält es auf seiner Bahn an.</translation>
+        </message>
+        <message>
+            <source>Program held at line %1: Resume goes on, STOP (Esc) ends it.</source>
+            <translation>Programm hält in Zeile %1: Fortsetzen fährt weiter, STOPP (Esc) beendet es.</translation>
+        </message>
+        <message>
+            <source>Program stopping at line %1: waiting for the axes to stand.</source>
+            <translation>Programm stoppt in Zeile %1: wartet auf den Stillstand der Achsen.</translation>
         </message>
     </context>
     <context>
