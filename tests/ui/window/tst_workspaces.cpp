@@ -12,9 +12,11 @@
 #include "jog/JoystickPad.h"
 #include "machine/MachineContext.h"
 #include "messages/StatusMessages.h"
+#include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPage.h"
+#include "safety/SafetyBar.h"
 #include "window/Translations.h"
 #include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
@@ -208,7 +210,7 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
     QVERIFY(m_rig.referenceTable()); // an arc needs its plane's positions known
     // A pocket's outline (relative: the rotary axis is not referenced) and a turn of A.
     QVERIFY(window()->programPage()->files()->load(programFile(QStringLiteral(
-        "(Pocket outline, in the style of a CAM post)\nG21 G91 G17\nG0 Z2\nG0 X5 Y5\n"
+        "(Pocket outline, in the style of a CAM post)\nG21 G91 G17\nM3 S500\nG0 Z2\nG0 X5 Y5\n"
         "G1 Z-3 F6\nG1 X3\nG2 X3 Y3 I0 J3\nG1 X-6\nG1 Y-3\nG0 Z3\nG0 A90\nM2\n"))));
     QCOMPARE(workspaces()->current(), Workspace::Run);
     QTRY_VERIFY(!window()->programPage()->isChecking());
@@ -235,6 +237,23 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
         cut += clippedTexts(dock(name));
     cut += clippedTexts(window()->centralWidget());
     QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
+    // Issue 47: the same workspace while the job runs (the banner names the run and its line,
+    // the spindle is on), then STOP.
+    ui::ProgramPage* page = window()->programPage();
+    QTRY_VERIFY(page->controls()->runButton()->isEnabled());
+    page->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(page->runner() &&
+                                 page->runner()->state() == program::RunState::Running &&
+                                 page->runner()->currentLine() >= 5 && m_rig.elab->moving(Axis::Z),
+                             20000);
+    QTRY_VERIFY(window()->safetyBar()->bannerSeverity() == QLatin1String("job"));
+    saveShot(QStringLiteral("run-%1x%2-running%3.png")
+                 .arg(screen.width())
+                 .arg(screen.height() + kPanelAndTitleBar)
+                 .arg(language == QLatin1String("en") ? QString() : QLatin1Char('-') + language));
+    window()->safetyBar()->stopButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(!page->isRunning(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
     ui::translations::install(qApp, QStringLiteral("en"));
 }
 
