@@ -1,4 +1,5 @@
 #include "KeyboardJog.h"
+#include "common/TextFieldFocus.h"
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
@@ -111,12 +112,7 @@ bool KeyboardJog::windowActive() const
 
 bool KeyboardJog::textFieldHasFocus() const
 {
-    QWidget* focus = QApplication::focusWidget();
-    if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
-        qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QTextEdit*>(focus))
-        return true;
-    auto* combo = qobject_cast<QComboBox*>(focus);
-    return combo && combo->isEditable();
+    return ui::textFieldHasFocus();
 }
 
 bool KeyboardJog::accepts() const

@@ -1,4 +1,5 @@
 #include "MachineShortcutGuard.h"
+#include "common/TextFieldFocus.h"
 #include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
@@ -38,12 +39,7 @@ bool MachineShortcutGuard::guards(const QAction* action) const
 
 bool MachineShortcutGuard::textFieldHasFocus()
 {
-    QWidget* focus = QApplication::focusWidget();
-    if (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
-        qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QTextEdit*>(focus))
-        return true;
-    auto* combo = qobject_cast<QComboBox*>(focus);
-    return combo && combo->isEditable();
+    return ui::textFieldHasFocus();
 }
 
 bool MachineShortcutGuard::isGuardedKey(const QKeyEvent* key) const

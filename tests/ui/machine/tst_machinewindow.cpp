@@ -57,6 +57,7 @@ private Q_SLOTS:
 private:
     ui::MainWindow* window() const { return m_rig.window(); }
     machine::Machine* machine() const { return m_rig.machine(); }
+    bool openWithTableSetup(int startSpeed, int maxSpeed);
 
     MachineWindowRig m_rig;
 };
@@ -220,21 +221,32 @@ void TestMachineWindow::machineBar_nameWithRoom_shownInFull()
     QVERIFY2(minimum.width() <= 1366, qPrintable(QString::number(minimum.width())));
 }
 
+// The machine with the table's setup file (start and max speed on X, Y, Z; acceleration 1000),
+// opened and connected.
+bool TestMachineWindow::openWithTableSetup(int startSpeed, int maxSpeed)
+{
+    m_rig.writeFile(
+        QStringLiteral(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
+        "parameters": {"start-speed": {"X": %1, "Y": %1, "Z": %1},
+                       "max-speed": {"X": %2, "Y": %2, "Z": %2},
+                       "acceleration": {"X": 1000, "Y": 1000, "Z": 1000}}})")
+            .arg(startSpeed)
+            .arg(maxSpeed)
+            .toUtf8(),
+        QStringLiteral("table.setup.json"));
+    QByteArray json = m_rig.machineJson();
+    json.replace(R"("model": "elab", "port": ")",
+                 R"("model": "elab", "setup": "table.setup.json", "port": ")");
+    return json.contains("table.setup.json") &&
+           m_rig.openAndConnect(json, {QStringLiteral("table"), QStringLiteral("rotary")});
+}
+
 // Issue 28, item 1: the machine file's setup for the table is written on connect, and the
 // window says so (the message log names the controller and the file); the board's start
 // speed is the file's, and the Program page's check judges by it.
 void TestMachineWindow::connect_machineFileWithSetup_windowSaysItWroteIt()
 {
-    m_rig.writeFile(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
-        "parameters": {"start-speed": {"X": 150, "Y": 150, "Z": 150},
-                       "max-speed": {"X": 4000, "Y": 4000, "Z": 4000},
-                       "acceleration": {"X": 1000, "Y": 1000, "Z": 1000}}})",
-                    QStringLiteral("table.setup.json"));
-    QByteArray json = m_rig.machineJson();
-    json.replace(R"("model": "elab", "port": ")",
-                 R"("model": "elab", "setup": "table.setup.json", "port": ")");
-    QVERIFY(json.contains("table.setup.json"));
-    QVERIFY(m_rig.openAndConnect(json, {QStringLiteral("table"), QStringLiteral("rotary")}));
+    QVERIFY(openWithTableSetup(150, 4000));
     auto said = [this] {
         const auto& log = window()->messages()->log();
         return std::any_of(log.cbegin(), log.cend(), [](const auto& entry) {
@@ -256,16 +268,7 @@ void TestMachineWindow::connect_machineFileWithSetup_windowSaysItWroteIt()
 // Write all sends it.
 void TestMachineWindow::setup_machineFileWrittenOnConnect_formShowsTheWrittenValues()
 {
-    m_rig.writeFile(R"({"format": "stepdeck-parameters", "version": 1, "model": "elab",
-        "parameters": {"start-speed": {"X": 2500, "Y": 2500, "Z": 2500},
-                       "max-speed": {"X": 5000, "Y": 5000, "Z": 5000},
-                       "acceleration": {"X": 1000, "Y": 1000, "Z": 1000}}})",
-                    QStringLiteral("table.setup.json"));
-    QByteArray json = m_rig.machineJson();
-    json.replace(R"("model": "elab", "port": ")",
-                 R"("model": "elab", "setup": "table.setup.json", "port": ")");
-    QVERIFY(json.contains("table.setup.json"));
-    QVERIFY(m_rig.openAndConnect(json, {QStringLiteral("table"), QStringLiteral("rotary")}));
+    QVERIFY(openWithTableSetup(2500, 5000));
     const QString table = QStringLiteral("table");
     // At the board: SetStartSpeed 2500 (0x09C4) on every axis, from the file.
     const QByteArray startSpeed2500("\x1bS09C4,09C4;09C4.");

@@ -5,6 +5,7 @@
 // a lost link fails naming the line; closing the machine aborts.
 #include "../LayoutChecks.h"
 #include "ProgramPageFixture.h"
+#include "machine/MachineDro.h"
 #include "machine/SpindleCoolantBar.h"
 #include "position/PositionPanel.h"
 #include "program/ProgramFiles.h"
@@ -35,6 +36,7 @@ private Q_SLOTS:
     void closeMachine_whileRunning_programAbortedAndAxisStill();
     void openAnother_afterRun_oldResultCleared();
     void spindleBar_switchesAtTheBoardLockedWhileRunningOffAfterStop();
+    void touchOff_zeroXAtM6_restCutsInTheNewZeroAtTheBoard();
     void timeLeft_override50_feedTimeDoublesAtOnce();
     void finished_repeatAndModalLines_countsAsThePreview();
 };
@@ -438,6 +440,36 @@ void TestProgramPageRun::finished_repeatAndModalLines_countsAsThePreview()
     QCOMPARE(page()->messageText(), ui::ProgramPage::tr("Finished: %n block(s) run.", nullptr, 9));
     QCOMPARE(runner()->blocksDone(), qint64(4));
     QCOMPARE(page()->controls()->timeLeftText(), ui::ProgramTimes::estimatedLeft(0));
+}
+
+// Issue 47 item 2, through the window: the run holds at M6, the operator moves X by 0.5 mm and
+// presses Zero X on the read-out; Resume checks the rest with the new zero and the rest runs in
+// it. At the board (400 steps/mm): X2 in the new zero is 2 mm on from where X was zeroed, not
+// the 0.5 mm the old zero would have left.
+void TestProgramPageRun::touchOff_zeroXAtM6_restCutsInTheNewZeroAtTheBoard()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable());
+    setProgram(QStringLiteral("G90 G0 X1\nT2 M6\nG0 X2\nM2\n"));
+    QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
+    page()->controls()->runButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused) && runner()->pausedAtOperatorStop(), 20000);
+    QString refusal;
+    QSignalSpy moved(m_rig.machine(), &machine::Machine::moveFinished);
+    QVERIFY2(m_rig.machine()->move({{QStringLiteral("X"), 0.5}}, false, &refusal) != 0,
+             qPrintable(refusal));
+    QTRY_VERIFY_WITH_TIMEOUT(!moved.isEmpty(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    QTRY_VERIFY(m_rig.machine()->axisStatus(*m_rig.machine()->description().axis("X")).known ==
+                machine::PositionKnowledge::Referenced);
+    const qint64 zeroedAt = m_rig.elab->position(Axis::X);
+    QVERIFY(window()->positionPanel()->machineDro()->zeroAxis(QStringLiteral("X")));
+    QTRY_VERIFY2(page()->messageText().contains(QStringLiteral("Resume checks the rest")),
+                 qPrintable(page()->messageText()));
+    page()->controls()->resumeButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Finished), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    QCOMPARE(m_rig.elab->position(Axis::X) - zeroedAt, qint64(800));
 }
 
 int main(int argc, char** argv)
