@@ -2,6 +2,7 @@
 #include "CliCommands.h"
 #include "CliText.h"
 #include "machine/MachineSetup.h"
+#include "machine/MachineSwitchOff.h"
 #include "protocols/Registry.h"
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -321,6 +322,22 @@ Outcome CliMachineSession::stopAll()
             ++it;
     }
     const Outcome result = waitAll(ids, kStopWaitMs);
+    // Spindle and coolant go off once the axes stand (Machine::stop, issue 47): the command
+    // waits for the controllers' acknowledgements, so the process never ends with them on
+    // unsaid.
+    QString switchOffFailure;
+    QObject guard;
+    connect(&m_machine, &Machine::spindleAndCoolantOff, &guard,
+            [this, &switchOffFailure](bool ok, const QString& message) {
+                if (!ok)
+                    switchOffFailure = message;
+                wake();
+            });
+    if (m_machine.isSwitchingOff())
+        waitFor([this] { return !m_machine.isSwitchingOff(); },
+                machine::MachineSwitchOff::kWaitMs + 1000);
+    if (!switchOffFailure.isEmpty())
+        printError(switchOffFailure);
     m_interrupted = wasInterrupted;
     return result;
 }
