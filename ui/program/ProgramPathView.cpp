@@ -15,6 +15,13 @@ constexpr int kMargin = 12;
 constexpr int kControlsHeight = 24; // the view selector and Fit over the top of the drawing
 constexpr double kKeyZoom = 1.25;
 constexpr double kKeyPanFraction = 0.1;
+// The legend's room (ProgramPathViewPaint.cpp draws it so).
+constexpr int kLegendPadding = 4;
+constexpr int kLegendSample = 22; // a pen's sample line
+constexpr int kLegendGap = 4;     // between the sample and the text
+// A fit area smaller than this either way is no place for the path: the legend then goes
+// elsewhere or not at all.
+constexpr int kLeastDrawing = 40;
 } // namespace
 
 ProgramPathView::ProgramPathView(QWidget* parent)
@@ -197,12 +204,92 @@ void ProgramPathView::setRunningLine(int line)
 
 QRectF ProgramPathView::fitArea() const
 {
-    return QRectF(rect()).adjusted(kMargin, kMargin + kControlsHeight, -kMargin, -kMargin);
+    return fitAreaIn(drawingRect());
+}
+
+QRectF ProgramPathView::fitAreaIn(const QRect& drawing) const
+{
+    return QRectF(drawing).adjusted(kMargin, kMargin + kControlsHeight, -kMargin, -kMargin);
+}
+
+QStringList ProgramPathView::legendTexts()
+{
+    return {tr("Feed (G1, arcs)"), tr("Rapid (G0)"),
+            tr("Soft limits (machine travel, in work coordinates)"), tr("Running line"),
+            tr("Tool")};
+}
+
+void ProgramPathView::placeLegend() const
+{
+    m_placedSize = size();
+    const QRect all = rect();
+    m_legendRect = QRect();
+    m_drawingRect = all;
+    m_legendBeside = false;
+    // Room for every entry the legend can show, one a row.
+    const QFontMetrics metrics(font());
+    const QStringList texts = legendTexts();
+    int textWidth = 0;
+    for (const QString& text : texts)
+        textWidth = qMax(textWidth, metrics.horizontalAdvance(text));
+    const int entriesHeight = int(texts.size()) * metrics.height() + 2 * kLegendPadding;
+    const int entriesWidth = kLegendSample + kLegendGap + textWidth + 2 * kLegendPadding;
+    // Beside: a column at the right, at most a third of the width (longer texts elided), its
+    // entries below the row of the selector (the view's notes sit top right).
+    const int columnWidth = qMin(entriesWidth, all.width() / 3);
+    const QRect column(all.right() - columnWidth + 1, all.top(), columnWidth, all.height());
+    const QRect besideColumn = all.adjusted(0, 0, -columnWidth, 0);
+    const bool columnFits = kControlsHeight + entriesHeight <= all.height();
+    // Below: a strip along the bottom.
+    const QRect strip(all.left(), all.bottom() - entriesHeight + 1, all.width(), entriesHeight);
+    const QRect aboveStrip = all.adjusted(0, 0, 0, -entriesHeight);
+    // Whichever lets the fit draw the path larger (what Fit shows, drawn to scale).
+    const QRectF bounds = fitBounds();
+    const auto scaleIn = [&](const QRect& drawing) {
+        const QRectF area = fitAreaIn(drawing);
+        if (area.width() < kLeastDrawing || area.height() < kLeastDrawing)
+            return 0.0;
+        return qMin(area.width() / qMax(bounds.width(), 1e-9),
+                    area.height() / qMax(bounds.height(), 1e-9));
+    };
+    const double beside = columnFits ? scaleIn(besideColumn) : 0.0;
+    const double below = scaleIn(aboveStrip);
+    if (beside <= 0.0 && below <= 0.0)
+        return; // too small for a legend: the path keeps the whole view
+    m_legendBeside = beside >= below;
+    m_legendRect = m_legendBeside ? column : strip;
+    m_drawingRect = m_legendBeside ? besideColumn : aboveStrip;
+}
+
+void ProgramPathView::placeLegendIfResized() const
+{
+    if (m_placedSize != size())
+        placeLegend();
+}
+
+QRect ProgramPathView::legendRect() const
+{
+    viewport(); // fitted (and the legend placed) for this size first
+    placeLegendIfResized();
+    return m_legendRect;
+}
+
+QRect ProgramPathView::drawingRect() const
+{
+    placeLegendIfResized();
+    return m_drawingRect;
+}
+
+bool ProgramPathView::legendBeside() const
+{
+    legendRect();
+    return m_legendBeside;
 }
 
 const PreviewViewport& ProgramPathView::viewport() const
 {
     if (!m_userView && m_fittedSize != size()) {
+        placeLegend(); // for what this fit shows
         m_viewport.fit(fitBounds(), fitArea());
         m_fittedSize = size();
     }

@@ -30,6 +30,11 @@ namespace stepdeck::ui {
 // The projected path is built once per preview, view and step of a turn (PreviewScene, into
 // the same memory); zoom and pan draw it through a transform, and a moving marker does not draw
 // the path again (a cached picture).
+// The legend has a room of its own beside or below the drawing (issue 47 item 13: it covered
+// the path): a column at the right or a strip along the bottom, whichever lets the fit draw the
+// path larger, placed when the view fits the path or changes size (never during a turn), with
+// room for every entry it can show (a run adds two: nothing moves when a run starts). The path
+// is drawn only in the rest (drawingRect()), however it is zoomed, panned or turned.
 class ProgramPathView : public QWidget
 {
     Q_OBJECT
@@ -68,6 +73,11 @@ public:
     const PreviewScene::Projected& projected() const { return m_projected; }
     QString scaleText() const; // the scale bar's length and unit ("10 mm")
     QStringList legendEntries() const;
+    // The legend's room; empty when the view is too small for one (the path keeps the room).
+    QRect legendRect() const;
+    // Where the path is drawn: the view less the legend's room.
+    QRect drawingRect() const;
+    bool legendBeside() const; // a column at the right (else a strip along the bottom)
     QComboBox* viewSelector() const { return m_viewSelector; }
     QToolButton* fitButton() const { return m_fit; }
     // How often the path itself was drawn (tests: a moving marker does not redraw it).
@@ -102,11 +112,18 @@ private:
     void updateSelector();
     void zoomBy(const QPointF& at, double factor);
     void panBy(const QPointF& delta);
-    QRectF fitArea() const;
-    QRectF fitBounds() const; // what Fit shows, in the plane
+    QRectF fitArea() const;                       // in drawingRect()
+    QRectF fitAreaIn(const QRect& drawing) const; // the drawing less margins and controls
+    QRectF fitBounds() const;                     // what Fit shows, in the plane
+    // The legend's room and the drawing's for this size and what Fit shows.
+    void placeLegend() const;
+    void placeLegendIfResized() const;
+    // Every text the legend can show, in its order.
+    static QStringList legendTexts();
     // ProgramPathViewPaint.cpp
     void renderPath(QPainter& painter) const;
     void paintOverlay(QPainter& painter) const;
+    void paintLegend(QPainter& painter) const;
     QList<PreviewStyle::LegendEntry> legendItems() const;
 
     PreviewScene m_scene;
@@ -115,7 +132,11 @@ private:
     PreviewViewKind m_chosen = PreviewViewKind::Top; // the operator's choice (remembered)
     mutable PreviewViewport m_viewport;
     mutable QSize m_fittedSize; // the size the viewport was last fitted to
-    bool m_userView = false;    // zoomed or panned: a new preview keeps the view
+    mutable QSize m_placedSize; // the size the legend was last placed for
+    mutable QRect m_legendRect;
+    mutable QRect m_drawingRect;
+    mutable bool m_legendBeside = false;
+    bool m_userView = false; // zoomed or panned: a new preview keeps the view
     PreviewOrientation m_orientation;
     struct Drag
     {
@@ -131,6 +152,7 @@ private:
     // The path drawn once per preview, view, size and viewport; the marker over it.
     QPixmap m_cache;
     std::optional<PreviewViewport> m_cacheViewport;
+    QRect m_cacheDrawing; // the drawing's room the cache was clipped to
     bool m_cacheValid = false;
     int m_pathRenders = 0;
     QString m_empty;

@@ -9,7 +9,11 @@ using namespace PreviewStyle;
 
 namespace {
 constexpr int kMargin = 12;
-constexpr int kLegendMinHeight = 140; // smaller drawings keep the room for the path
+// The legend's rows (as ProgramPathView::placeLegend reserves them).
+constexpr int kLegendPadding = 4;
+constexpr int kLegendSample = 22;
+constexpr int kLegendGap = 4;
+constexpr int kScaleBarRoom = 110; // the scale bar beside the entries of a strip
 } // namespace
 
 void ProgramPathView::paintEvent(QPaintEvent*)
@@ -26,20 +30,29 @@ void ProgramPathView::paintEvent(QPaintEvent*)
         return;
     }
     viewport(); // fitted to this size first, unless the operator zoomed or panned
+    // The path only in the drawing's room: never under the legend.
+    const QRect drawing = drawingRect();
     const QSize pixels = size() * devicePixelRatio();
-    if (!m_cacheValid || m_cacheViewport != m_viewport || m_cache.size() != pixels) {
+    if (!m_cacheValid || m_cacheViewport != m_viewport || m_cache.size() != pixels ||
+        m_cacheDrawing != drawing) {
         m_cache = QPixmap(pixels);
         m_cache.setDevicePixelRatio(devicePixelRatio());
         m_cache.fill(Qt::transparent);
         QPainter cached(&m_cache);
         cached.setRenderHint(QPainter::Antialiasing);
+        cached.setClipRect(drawing);
         renderPath(cached);
         m_cacheViewport = m_viewport;
+        m_cacheDrawing = drawing;
         m_cacheValid = true;
         ++m_pathRenders;
     }
     painter.drawPixmap(0, 0, m_cache);
+    painter.save();
+    painter.setClipRect(drawing);
     paintOverlay(painter);
+    painter.restore();
+    paintLegend(painter);
 }
 
 void ProgramPathView::renderPath(QPainter& painter) const
@@ -63,8 +76,8 @@ void ProgramPathView::renderPath(QPainter& painter) const
     }
 }
 
-// What changes while a program runs (the running line, the tool), the legend and the scale:
-// drawn over the cached path on every repaint.
+// What changes while a program runs (the running line, the tool): drawn over the cached path
+// on every repaint.
 void ProgramPathView::paintOverlay(QPainter& painter) const
 {
     if (!m_runningSegments.isEmpty()) {
@@ -83,25 +96,80 @@ void ProgramPathView::paintOverlay(QPainter& painter) const
         painter.drawLine(c - QPointF(9, 0), c + QPointF(9, 0));
         painter.drawLine(c - QPointF(0, 9), c + QPointF(0, 9));
     }
-    if (height() >= kLegendMinHeight)
-        PreviewStyle::paintLegend(painter, legendItems(), rect(), palette(), font());
-    PreviewStyle::paintScaleBar(painter, rect(), m_viewport.scale(), scaleText(), palette(),
+}
+
+// The legend in its own room beside or below the drawing (placeLegend), and the scale bar: in a
+// strip beside the entries where they leave it the room, else in the drawing's lower right.
+void ProgramPathView::paintLegend(QPainter& painter) const
+{
+    const QRect room = legendRect();
+    const QRect drawing = drawingRect();
+    QRect scaleArea = drawing;
+    if (!room.isEmpty()) {
+        painter.save();
+        // The line between the drawing and the legend.
+        painter.setPen(palette().color(QPalette::Mid));
+        if (m_legendBeside)
+            painter.drawLine(room.topLeft(), room.bottomLeft());
+        else
+            painter.drawLine(room.topLeft(), room.topRight());
+        const QFontMetrics metrics(font());
+        const int rowHeight = metrics.height();
+        // The entries from the top of the rows reserved for all of them: an entry that comes
+        // with a run is added below, nothing above it moves.
+        const int rows = int(legendTexts().size());
+        int y = room.bottom() + 1 - kLegendPadding - rows * rowHeight;
+        const int sampleLeft = room.left() + kLegendPadding;
+        const int textLeft = sampleLeft + kLegendSample + kLegendGap;
+        int textRight = room.right() - kLegendPadding;
+        const QList<PreviewStyle::LegendEntry> entries = legendItems();
+        if (!m_legendBeside) {
+            int widest = 0;
+            for (const auto& entry : entries)
+                widest = qMax(widest, metrics.horizontalAdvance(entry.text));
+            // The scale bar at the strip's right end, where the texts leave it the room.
+            if (textLeft + widest + kScaleBarRoom <= room.right()) {
+                textRight = textLeft + widest;
+                scaleArea = room.adjusted(textRight + 1 - room.left(), 0, 0, 0);
+            } else {
+                textRight = qMin(qMax(textLeft + 40, room.right() - kScaleBarRoom),
+                                 room.right() - kLegendPadding);
+                if (textRight + kScaleBarRoom <= room.right())
+                    scaleArea = room.adjusted(textRight + 1 - room.left(), 0, 0, 0);
+            }
+        }
+        const int textRoom = qMax(0, textRight - textLeft + 1);
+        for (const auto& entry : entries) {
+            const double mid = y + rowHeight / 2.0;
+            painter.setPen(entry.pen);
+            painter.drawLine(QPointF(sampleLeft, mid), QPointF(sampleLeft + kLegendSample, mid));
+            painter.setPen(palette().color(QPalette::Text));
+            painter.drawText(QRect(textLeft, y, textRoom, rowHeight),
+                             Qt::AlignLeft | Qt::AlignVCenter,
+                             metrics.elidedText(entry.text, Qt::ElideRight, textRoom));
+            y += rowHeight;
+        }
+        painter.restore();
+    }
+    PreviewStyle::paintScaleBar(painter, scaleArea, m_viewport.scale(), scaleText(), palette(),
                                 font());
 }
 
 QList<PreviewStyle::LegendEntry> ProgramPathView::legendItems() const
 {
+    // In the order of legendTexts(): feed, rapid, soft limits, running line, tool.
+    const QStringList texts = legendTexts();
     QList<PreviewStyle::LegendEntry> items;
     if (!m_projected.feeds.isEmpty())
-        items.append({tr("Feed (G1, arcs)"), feedPen()});
+        items.append({texts.at(0), feedPen()});
     if (!m_projected.rapids.isEmpty())
-        items.append({tr("Rapid (G0)"), rapidPen()});
+        items.append({texts.at(1), rapidPen()});
     if (!m_projected.softLimits.isEmpty())
-        items.append({tr("Soft limits (machine travel, in work coordinates)"), limitsPen()});
+        items.append({texts.at(2), limitsPen()});
     if (!m_runningSegments.isEmpty())
-        items.append({tr("Running line"), runningPen()});
+        items.append({texts.at(3), runningPen()});
     if (m_current)
-        items.append({tr("Tool"), markerPen()});
+        items.append({texts.at(4), markerPen()});
     return items;
 }
 

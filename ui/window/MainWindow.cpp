@@ -34,6 +34,7 @@
 #include "status/StatusPanel.h"
 #include "window/HelpMenu.h"
 #include "window/MachineShortcutGuard.h"
+#include "window/MainWindowJogArea.h"
 #include "window/ScreenBound.h"
 #include "window/SimulatorMenu.h"
 #include "window/Translations.h"
@@ -49,6 +50,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
@@ -102,7 +104,10 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     // F1 panics whatever is open.
     m_safetyKeys->addButton(m_safety->stopButton(), m_stopAction);
     v->addWidget(m_safety);
-    v->addWidget(m_jogPanel, 1);
+    // The jog panel as high as it needs, unless the operator drags the Program dock's
+    // separator up: then it scrolls below STOP, PANIC and the banner (issue 47 item 13).
+    m_jogArea = new JogArea(m_jogPanel, central);
+    v->addWidget(m_jogArea, 1);
     setCentralWidget(central);
 
     buildDocks();
@@ -157,13 +162,28 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
             &QAction::setChecked);
 
     // Fit the screen (issue 11): at most 1600x1000, never more than the screen offers.
-    QSize size(1600, 1000);
-    if (const QScreen* screen = QGuiApplication::primaryScreen())
+    const QSize largest(1600, 1000);
+    QSize size = largest;
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    if (screen)
         size = size.boundedTo(screen->availableGeometry().size());
     resize(size);
-    new ScreenBound(this); // and never grows past it by itself (issue 16)
+    // Never grows past it by itself (issue 16), and once a window manager framed it, the frame
+    // is on the screen too (ScreenBound).
+    new ScreenBound(this);
     const QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    const QByteArray savedGeometry =
+        settings.value(QStringLiteral("window/geometry")).toByteArray();
+    const bool restored = !savedGeometry.isEmpty() && restoreGeometry(savedGeometry);
+    // The first start (issue 47 item 13: the first --demo start opened a 1366x768 window whose
+    // status bar was below a 768-px screen, the title bar on top of the screen's height): on a
+    // screen no larger than that size, maximised, the window manager fitting the frame to the
+    // screen's available geometry. Platforms without a window manager (offscreen, minimal:
+    // the tests, screenshots) keep the size, which ScreenBound fits.
+    if (!restored && screen && hasWindowManager() &&
+        (screen->availableGeometry().width() <= largest.width() ||
+         screen->availableGeometry().height() <= largest.height()))
+        setWindowState(windowState() | Qt::WindowMaximized);
     onLinkState(LinkState::Disconnected, {});
     m_linkLabel->setText(m_connection->linkText());
     updateTitle();
@@ -180,6 +200,7 @@ void MainWindow::buildWorkspaces()
         if (dock != dockOf(m_programPage))
             setup << dock->objectName();
     m_workspaces = new Workspaces(this, run, setup);
+    m_workspaces->setJogArea(m_jogArea); // each workspace keeps the operator's room for it
     menuBar()->setCornerWidget(m_workspaces->tabBar(), Qt::TopRightCorner);
     QAction* first = m_viewMenu->actions().value(0);
     m_viewMenu->insertAction(first, m_workspaces->action(Workspaces::Workspace::Run));
@@ -193,6 +214,11 @@ void MainWindow::buildWorkspaces()
     // A page that cannot have its room says so in the message line (issue 31), and the
     // message ends when everything fits again.
     m_fit = new WorkspaceFit(this);
+    // The Setup workspace's forms and lists scroll up and down by nature (issue 47 item 13).
+    m_fit->setSidewaysOnly(m_workspaces->current() == Workspaces::Workspace::Setup);
+    connect(m_workspaces, &Workspaces::switched, m_fit, [this](Workspaces::Workspace workspace) {
+        m_fit->setSidewaysOnly(workspace == Workspaces::Workspace::Setup);
+    });
     connect(m_workspaces, &Workspaces::switched, m_fit, &WorkspaceFit::schedule);
     connect(m_context, &MachineContext::machineChanged, m_fit, &WorkspaceFit::schedule);
     connect(m_fit, &WorkspaceFit::fitRequested, m_workspaces, &Workspaces::fitContent);
@@ -594,12 +620,40 @@ void MainWindow::closeEvent(QCloseEvent* event)
     QMainWindow::closeEvent(event);
 }
 
+bool MainWindow::hasWindowManager()
+{
+    const QString platform = QGuiApplication::platformName();
+    return platform != QLatin1String("offscreen") && platform != QLatin1String("minimal");
+}
+
+bool MainWindow::event(QEvent* event)
+{
+    const QEvent::Type type = event->type();
+    const bool handled = QMainWindow::event(event);
+    // A press the main window itself accepts is one on a dock separator (QMainWindow starts
+    // moving it; elsewhere the press is ignored): while it is dragged the jog panel may give
+    // its height to the Program dock, and the height it has at the release is kept (issue 47
+    // item 13: the separator above the Program dock did not move, the centre's minimum held it).
+    if (!m_jogArea)
+        return handled;
+    if (type == QEvent::MouseButtonPress && event->isAccepted() &&
+        static_cast<QMouseEvent*>(event)->button() == Qt::LeftButton)
+        m_jogArea->beginDrag();
+    else if (type == QEvent::MouseButtonRelease && m_jogArea->isDragged())
+        m_jogArea->endDrag();
+    return handled;
+}
+
 void MainWindow::changeEvent(QEvent* event)
 {
     // Deactivating the window ends every jog at once: the key-up or mouse release would go to
     // another window and the axis would keep running until the lease expires.
-    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) {
         m_jogPanel->releaseAll();
+        // Nor does a separator's drag see its release: it ends where it is.
+        if (m_jogArea && m_jogArea->isDragged())
+            m_jogArea->endDrag();
+    }
     QMainWindow::changeEvent(event);
 }
 

@@ -17,6 +17,7 @@ class GamepadJogSource;
 class GamepadPanel;
 class HelpMenu;
 class InputProgramsPage;
+class JogArea;
 class JogController;
 class JogPanel;
 class KeyboardJog;
@@ -61,6 +62,9 @@ public:
     MachineControl* machineControl() const { return m_machineControl; }
     SafetyBar* safetyBar() const { return m_safety; }
     JogPanel* jogPanel() const { return m_jogPanel; }
+    // The jog panel's room in the centre: scrolls when the operator gave its height to the
+    // Program dock (issue 47 item 13).
+    JogArea* jogArea() const { return m_jogArea; }
     HelpMenu* helpMenu() const { return m_helpMenu; }
     JogController* jogController() const { return m_jog; }
     KeyboardJog* keyboardJog() const { return m_keyboard; }
@@ -119,10 +123,13 @@ public Q_SLOTS:
     void resetLayout();
 
 protected:
+    bool event(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
 
 private:
+    // Whether the platform has a window manager that maximises (not offscreen or minimal).
+    static bool hasWindowManager();
     void buildActions();
     void buildMenus();
     void connectMachineFiles(MachineFileActions* files);
@@ -150,6 +157,7 @@ private:
     SafetyKeyFilter* m_safetyKeys = nullptr;
     MachineShortcutGuard* m_machineKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
+    JogArea* m_jogArea = nullptr;
     HelpMenu* m_helpMenu = nullptr;
     PositionPanel* m_position = nullptr;
     ReferencePanel* m_reference = nullptr;

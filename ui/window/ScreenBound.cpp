@@ -3,6 +3,7 @@
 #include <QLayout>
 #include <QScreen>
 #include <QWidget>
+#include <QWindowStateChangeEvent>
 
 namespace stepdeck::ui {
 
@@ -33,7 +34,9 @@ void ScreenBound::boundMinimum()
 void ScreenBound::fitOnScreen()
 {
     const QScreen* screen = m_window->screen();
-    if (!screen)
+    // A maximised window is the window manager's to fit (a resize or move here would end the
+    // maximised state).
+    if (!screen || (m_window->windowState() & (Qt::WindowMaximized | Qt::WindowFullScreen)))
         return;
     const QSize size = m_window->size().boundedTo(room(m_window));
     if (size != m_window->size())
@@ -59,6 +62,28 @@ bool ScreenBound::eventFilter(QObject* watched, QEvent* event)
         case QEvent::Show:
             boundMinimum();
             fitOnScreen();
+            m_awaitingFrame = !frameKnown();
+            break;
+        case QEvent::Move:
+        case QEvent::Resize:
+            // The window manager has framed (or restored) the window: fitted again, frame and
+            // all, once it is done with this move (not from inside its event).
+            if (m_awaitingFrame && m_window->isVisible() && frameKnown()) {
+                m_awaitingFrame = false;
+                QMetaObject::invokeMethod(this, &ScreenBound::fitOnScreen, Qt::QueuedConnection);
+            }
+            break;
+        case QEvent::WindowStateChange:
+            // Restored from maximised: its normal size, frame and all, on the screen too, now
+            // and once the window manager has restored it (its next move or resize).
+            if (m_window->isVisible() &&
+                !(m_window->windowState() &
+                  (Qt::WindowMaximized | Qt::WindowFullScreen | Qt::WindowMinimized)) &&
+                static_cast<QWindowStateChangeEvent*>(event)->oldState().testAnyFlags(
+                    Qt::WindowMaximized | Qt::WindowFullScreen)) {
+                m_awaitingFrame = true;
+                QMetaObject::invokeMethod(this, &ScreenBound::fitOnScreen, Qt::QueuedConnection);
+            }
             break;
         default:
             break;

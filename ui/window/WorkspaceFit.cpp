@@ -1,4 +1,5 @@
 #include "WorkspaceFit.h"
+#include "MainWindowJogArea.h"
 #include <QDockWidget>
 #include <QEvent>
 #include <QMainWindow>
@@ -20,6 +21,16 @@ QString pageTitle(const QScrollArea* area)
     }
     return WorkspaceFit::tr("Jog controls"); // the centre's one page
 }
+
+// The centre's jog area w is (or is in), or nullptr.
+const JogArea* enclosingJogArea(const QWidget* w)
+{
+    for (; w; w = w->parentWidget()) {
+        if (auto* jog = qobject_cast<const JogArea*>(w))
+            return jog;
+    }
+    return nullptr;
+}
 } // namespace
 
 WorkspaceFit::WorkspaceFit(QMainWindow* window) : QObject(window), m_window(window)
@@ -36,6 +47,11 @@ void WorkspaceFit::schedule()
     m_settle.start();
 }
 
+void WorkspaceFit::setSidewaysOnly(bool on)
+{
+    m_sidewaysOnly = on;
+}
+
 bool WorkspaceFit::eventFilter(QObject* watched, QEvent* event)
 {
     if (watched == m_window && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
@@ -49,7 +65,12 @@ QStringList WorkspaceFit::scrollingPages() const
     for (const QScrollArea* area : m_window->findChildren<QScrollArea*>()) {
         if (!area->widgetResizable() || !area->isVisible() || area->visibleRegion().isEmpty())
             continue;
-        if (area->verticalScrollBar()->isVisible() || area->horizontalScrollBar()->isVisible()) {
+        // The operator gave the jog pad's height to the Program dock: no news, for the pad nor
+        // for its column of controls (the pad at its least height).
+        if (const JogArea* jog = enclosingJogArea(area); jog && jog->isShortByChoice())
+            continue;
+        const bool upAndDown = !m_sidewaysOnly && area->verticalScrollBar()->isVisible();
+        if (upAndDown || area->horizontalScrollBar()->isVisible()) {
             const QString title = pageTitle(area);
             if (!pages.contains(title))
                 pages << title;

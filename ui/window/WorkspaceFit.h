@@ -12,7 +12,11 @@ namespace stepdeck::ui {
 // the layout settled after a resize, a new machine or a workspace switch, so the operator
 // learns why something is out of sight. A page is a QScrollArea that sizes its widget to
 // itself (the docks' pages, the jog panel's column) and is on screen; editors, tables and
-// views scroll by nature and do not count.
+// views scroll by nature and do not count, nor does the jog pad the operator gave some of its
+// height to the Program dock (JogArea::isShortByChoice). In the Setup workspace only a page
+// that scrolls sideways counts (setSidewaysOnly): its forms and lists (every axis' parameters,
+// the status lamps, the records) are longer than any screen, and a Full HD window said "too
+// small" for them (issue 47 item 13).
 class WorkspaceFit : public QObject
 {
     Q_OBJECT
@@ -21,6 +25,9 @@ public:
 
     // Checks again once the layout settled.
     void schedule();
+    // Only pages that scroll sideways count (the Setup workspace); else either way.
+    void setSidewaysOnly(bool on);
+    bool sidewaysOnly() const { return m_sidewaysOnly; }
     // The titles of the pages that scroll now (empty: everything fits).
     QStringList scrollingPages() const;
     QStringList lastReported() const { return m_reported; }
@@ -41,6 +48,7 @@ private:
     QMainWindow* m_window;
     QTimer m_settle;
     bool m_fitAsked = false; // the first phase done: fitRequested() was sent
+    bool m_sidewaysOnly = false;
     QStringList m_reported;
 };
 

@@ -1,4 +1,5 @@
 #include "Workspaces.h"
+#include "MainWindowJogArea.h"
 #include <QAction>
 #include <QActionGroup>
 #include <QDockWidget>
@@ -11,8 +12,9 @@ namespace stepdeck::ui {
 
 namespace {
 // A layout's version: a layout saved by another arrangement of docks is not restored.
-constexpr int kLayoutVersion = 33;
+constexpr int kLayoutVersion = 34;
 const char* const kKeys[2] = {"window/workspace/run", "window/workspace/setup"};
+const char* const kJogRoomKeys[2] = {"window/jogRoom/run", "window/jogRoom/setup"};
 const char* const kCurrentKey = "window/workspace/current";
 // The window height from which the Run workspace's left column holds the position and
 // referencing one above the other (four axes each; a Full HD screen less a panel and a title
@@ -82,6 +84,8 @@ QByteArray Workspaces::defaultLayout(Workspace workspace)
     for (QDockWidget* d : m_window->findChildren<QDockWidget*>())
         d->setVisible(shown.contains(d->objectName()) && d->toggleViewAction()->isVisible());
     m_current = workspace;
+    if (m_jogArea)
+        m_jogArea->setRoom(JogArea::kWhole); // the whole jog pad, the rest to the docks
     setCorners(workspace);
     arrange(workspace);
     return m_window->saveState(kLayoutVersion);
@@ -102,9 +106,11 @@ void Workspaces::arrange(Workspace workspace)
     const int height = m_window->height();
     QDockWidget* position = dock(QStringLiteral("positionDock"));
     if (workspace == Workspace::Run) {
-        // The program (its lines and preview) gets 37 % of the height, the centre (the jog
-        // pad and its controls) the rest above it; the position the left column, the
-        // read-out's room (issue 16).
+        // The program (its lines and preview) gets 37 % of the height, from a Full HD height
+        // half of it (issue 47 item 13: the toolpath is what a running job is watched by), the
+        // centre (the jog pad and its controls) the rest above it, never less than the jog
+        // pad needs; the position the left column, the read-out's room (issue 16). Dragging
+        // the separator gives the program more, the jog pad then scrolls (JogArea).
         QDockWidget* program = dock(QStringLiteral("programDock"));
         // Below a Full HD height, referencing behind the position, one click away: the
         // position of four axes with Go to takes the column's height at 1366x768 less a panel
@@ -115,7 +121,9 @@ void Workspaces::arrange(Workspace workspace)
             position->raise();
         }
         m_window->resizeDocks({position}, {qBound(300, width * 30 / 100, 480)}, Qt::Horizontal);
-        m_window->resizeDocks({program}, {qBound(200, height * 37 / 100, 600)}, Qt::Vertical);
+        const int programShare = height < kBothInTheColumn ? qBound(200, height * 37 / 100, 600)
+                                                           : qBound(200, height / 2, 900);
+        m_window->resizeDocks({program}, {programShare}, Qt::Vertical);
         fitContent();
         return;
     }
@@ -142,21 +150,33 @@ void Workspaces::initialise()
     for (int i = 0; i < 2; ++i) {
         const QByteArray saved = settings.value(QLatin1String(kKeys[i])).toByteArray();
         m_state[i] = saved.isEmpty() ? m_default[i] : saved;
+        m_jogRoom[i] =
+            saved.isEmpty()
+                ? JogArea::kWhole
+                : settings.value(QLatin1String(kJogRoomKeys[i]), JogArea::kWhole).toInt();
     }
     const bool run =
         settings.value(QLatin1String(kCurrentKey), QStringLiteral("setup")).toString() ==
         QLatin1String("run");
     const Workspace start = run ? Workspace::Run : Workspace::Setup;
-    apply(start, m_state[index(start)]);
+    apply(start, m_state[index(start)], m_jogRoom[index(start)]);
     announce();
 }
 
-void Workspaces::apply(Workspace workspace, const QByteArray& state)
+void Workspaces::apply(Workspace workspace, const QByteArray& state, int jogRoom)
 {
     setCorners(workspace);
+    // The jog pad's room first: the layout restored may give the program more than the centre
+    // would let it have with the whole pad.
+    if (m_jogArea)
+        m_jogArea->setRoom(jogRoom);
     // A layout that does not restore (another version) falls back to the default.
-    if (!m_window->restoreState(state, kLayoutVersion))
+    if (!m_window->restoreState(state, kLayoutVersion)) {
+        if (m_jogArea)
+            m_jogArea->setRoom(JogArea::kWhole);
+        m_jogRoom[index(workspace)] = JogArea::kWhole;
         m_window->restoreState(m_default[index(workspace)], kLayoutVersion);
+    }
     m_current = workspace;
 }
 
@@ -164,7 +184,9 @@ void Workspaces::switchTo(Workspace workspace)
 {
     if (workspace != m_current) {
         m_state[index(m_current)] = m_window->saveState(kLayoutVersion);
-        apply(workspace, m_state[index(workspace)]);
+        if (m_jogArea)
+            m_jogRoom[index(m_current)] = m_jogArea->room();
+        apply(workspace, m_state[index(workspace)], m_jogRoom[index(workspace)]);
     }
     announce();
 }
@@ -187,7 +209,8 @@ void Workspaces::suggest(Workspace workspace)
 void Workspaces::resetCurrent()
 {
     m_state[index(m_current)] = m_default[index(m_current)];
-    apply(m_current, m_default[index(m_current)]);
+    m_jogRoom[index(m_current)] = JogArea::kWhole;
+    apply(m_current, m_default[index(m_current)], JogArea::kWhole);
     arrange(m_current); // for the window's size now
     announce();
 }
@@ -253,9 +276,11 @@ void Workspaces::save() const
 {
     QSettings settings;
     for (int i = 0; i < 2; ++i) {
-        const QByteArray state =
-            i == index(m_current) ? m_window->saveState(kLayoutVersion) : m_state[i];
+        const bool current = i == index(m_current);
+        const QByteArray state = current ? m_window->saveState(kLayoutVersion) : m_state[i];
         settings.setValue(QLatin1String(kKeys[i]), state);
+        settings.setValue(QLatin1String(kJogRoomKeys[i]),
+                          current && m_jogArea ? m_jogArea->room() : m_jogRoom[i]);
     }
     settings.setValue(QLatin1String(kCurrentKey), m_current == Workspace::Run
                                                       ? QStringLiteral("run")

@@ -11,6 +11,8 @@ class QTabBar;
 
 namespace stepdeck::ui {
 
+class JogArea;
+
 // The window's two workspaces (issue 31), as Candle's and UGS's tabs or AXIS's notebook:
 // - Run: what a running job needs (the program with its preview, the position, the jog pad
 //   and STOP/PANIC in the centre), the setup pages out of the way;
@@ -19,8 +21,9 @@ namespace stepdeck::ui {
 // Each workspace is a layout of the window's docks (QMainWindow::saveState): its own default,
 // and the operator's changes to it remembered while switching and across sessions
 // (QSettings "window/workspace/run|setup"). The centre (STOP, PANIC, the banner, the jog
-// pad) and the message line stay in both. Switching: the tab bar in the menu bar's corner,
-// Ctrl+1 and Ctrl+2, or View > Run / Setup.
+// pad) and the message line stay in both; the room the operator left the jog pad by dragging
+// the separator below the centre (JogArea) is each workspace's too ("window/jogRoom/run|setup").
+// Switching: the tab bar in the menu bar's corner, Ctrl+1 and Ctrl+2, or View > Run / Setup.
 class Workspaces : public QObject
 {
     Q_OBJECT
@@ -35,6 +38,8 @@ public:
     bool chosenByHand() const { return m_byHand; }
     QTabBar* tabBar() const { return m_tabs; }
     QAction* action(Workspace workspace) const;
+    // The centre's jog area, whose room each workspace keeps (before initialise()).
+    void setJogArea(JogArea* area) { m_jogArea = area; }
     // Whether the dock shows in the current workspace's default layout.
     bool belongsToCurrent(QDockWidget* dock) const;
 
@@ -58,7 +63,7 @@ Q_SIGNALS:
     void switched(stepdeck::ui::Workspaces::Workspace workspace);
 
 private:
-    void apply(Workspace workspace, const QByteArray& state);
+    void apply(Workspace workspace, const QByteArray& state, int jogRoom);
     void announce(); // the tabs, the actions and switched() for the current workspace
     QByteArray defaultLayout(Workspace workspace);
     // The default layout's dock sizes, as shares of the window's size now.
@@ -71,6 +76,8 @@ private:
     QStringList m_docks[2];
     QByteArray m_default[2];
     QByteArray m_state[2];
+    int m_jogRoom[2] = {-1, -1}; // JogArea::room() of each workspace (-1: the whole pad)
+    JogArea* m_jogArea = nullptr;
     Workspace m_current = Workspace::Setup;
     bool m_byHand = false;
     QTabBar* m_tabs;

@@ -5,7 +5,9 @@
 // again for them. Turning (issue 47 item 14): a left drag turns by half a degree per pixel
 // about the path's middle (which stays put), the selector says "Orbit" until a standard view
 // turns it back, Fit fits the turned path, the wheel zooms about the pointer when turned, a new
-// check keeps the turn, and a turn projects into the same memory.
+// check keeps the turn, and a turn projects into the same memory. The legend (issue 47 item 13)
+// has a room of its own beside or below the drawing, never over the path, and keeps it when a
+// run adds its entries.
 #include "PreviewTestData.h"
 #include "program/PreviewStyle.h"
 #include "program/ProgramPathView.h"
@@ -52,6 +54,9 @@ private Q_SLOTS:
     void orbit_ctrlArrowKeys_turnByTheKeyStep();
     void orbit_newCheck_keepsTheTurn();
     void orbit_drag_projectsIntoTheSameMemory();
+    void legend_ownRoom_neverOverThePath_data();
+    void legend_ownRoom_neverOverThePath();
+    void legend_runStarts_nothingMoves();
 
 private:
     static QImage render(ProgramPathView& view);
@@ -150,16 +155,23 @@ void TestProgramPathView::fit_onPreview_coversThePathsExtents()
     ProgramPathView view;
     view.resize(400, 300);
     view.setPreview(squarePreview(), machineXyz(true));
-    // The path's corners inside the drawing, and it fills one direction of it (not the
-    // machine's much larger soft-limit box).
+    // The path's corners inside the drawing (the view less the legend's room), and it fills
+    // one direction of it (not the machine's much larger soft-limit box).
+    const QRect drawing = view.drawingRect();
     const QPointF low = view.toWidget({0, 0}), high = view.toWidget({40, 20});
-    QVERIFY(view.rect().contains(low.toPoint()));
-    QVERIFY(view.rect().contains(high.toPoint()));
-    QVERIFY2(high.x() - low.x() > 0.8 * view.width(), qPrintable(QString::number(high.x())));
+    QVERIFY(drawing.contains(low.toPoint()));
+    QVERIFY(drawing.contains(high.toPoint()));
+    QVERIFY2(high.x() - low.x() > 0.8 * drawing.width() ||
+                 low.y() - high.y() > 0.6 * drawing.height(),
+             qPrintable(QStringLiteral("%1 x %2 in %3 x %4")
+                            .arg(high.x() - low.x())
+                            .arg(low.y() - high.y())
+                            .arg(drawing.width())
+                            .arg(drawing.height())));
     // Another size fits again (until the operator zooms).
     view.resize(600, 300);
     QVERIFY(view.toWidget({40, 20}).x() > high.x());
-    QVERIFY(view.rect().contains(view.toWidget({40, 20}).toPoint()));
+    QVERIFY(view.drawingRect().contains(view.toWidget({40, 20}).toPoint()));
 }
 
 void TestProgramPathView::fit_afterZoom_byButtonAndKey()
@@ -482,17 +494,23 @@ void TestProgramPathView::orbit_fit_showsTheTurnedPathWhole()
     view.fitButton()->click();
     QVERIFY(view.isTurned()); // Fit keeps the orientation
     double left = 1e9, right = -1e9, top = 1e9, bottom = -1e9;
+    view.legendRect(); // the fit (and the legend's place for it) happens on first use
+    const QRect drawing = view.drawingRect(); // the view less the legend's room
     for (const QPointF& p : view.points()) {
         const QPointF w = view.toWidget(p);
-        QVERIFY2(view.rect().contains(w.toPoint()), qPrintable(text(w)));
+        QVERIFY2(drawing.contains(w.toPoint()), qPrintable(text(w)));
         left = qMin(left, w.x());
         right = qMax(right, w.x());
         top = qMin(top, w.y());
         bottom = qMax(bottom, w.y());
     }
     // One direction of the drawing filled (its margins and the selector's row aside).
-    QVERIFY2(right - left > 0.8 * view.width() || bottom - top > 0.7 * view.height(),
-             qPrintable(QStringLiteral("%1 x %2").arg(right - left).arg(bottom - top)));
+    QVERIFY2(right - left > 0.8 * drawing.width() || bottom - top > 0.6 * drawing.height(),
+             qPrintable(QStringLiteral("%1 x %2 in %3 x %4")
+                            .arg(right - left)
+                            .arg(bottom - top)
+                            .arg(drawing.width())
+                            .arg(drawing.height())));
 }
 
 void TestProgramPathView::zoom_wheelWhenTurned_keepsPointUnderCursor_data()
@@ -588,6 +606,101 @@ void TestProgramPathView::orbit_drag_projectsIntoTheSameMemory()
     QVERIFY(view.points().at(0) != first);       // projected again
     QCOMPARE(view.points().constData(), points); // into the same list
     QCOMPARE(view.points().size(), qsizetype(8));
+}
+
+void TestProgramPathView::legend_ownRoom_neverOverThePath_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<bool>("shown"); // room enough for a legend beside or below the path
+    // The Run workspace's preview at 1366x768 (issue 47 item 13: about 360 x 150, the legend
+    // covered the drawing), a larger one, one wide and low, one narrow and high, and one too
+    // small for a legend.
+    QTest::newRow("1366x768's preview") << QSize(360, 150) << true;
+    QTest::newRow("400x300") << QSize(400, 300) << true;
+    QTest::newRow("wide and low") << QSize(900, 200) << true;
+    QTest::newRow("narrow and high") << QSize(300, 600) << true;
+    QTest::newRow("too small") << QSize(150, 70) << false;
+}
+
+// Issue 47 item 13: "the toolpath about 360x150 px with its legend over the drawing". The legend
+// has its own room beside or below the drawing; the fitted path lies in the drawing; zoomed and
+// panned, the path is not drawn over the legend.
+void TestProgramPathView::legend_ownRoom_neverOverThePath()
+{
+    QFETCH(QSize, size);
+    QFETCH(bool, shown);
+    ProgramPathView view;
+    view.resize(size);
+    program::ProgramPreview preview = squarePreview();
+    preview.workOffsets = {{QStringLiteral("X"), 5.0}, {QStringLiteral("Y"), 5.0}};
+    view.setPreview(preview, machineWith({{QStringLiteral("X"), std::make_pair(0.0, 50.0)},
+                                          {QStringLiteral("Y"), std::make_pair(0.0, 30.0)}}));
+    const QRect legend = view.legendRect();
+    const QRect drawing = view.drawingRect();
+    QCOMPARE(!legend.isEmpty(), shown);
+    QVERIFY(view.rect().contains(drawing));
+    if (!shown) {
+        QCOMPARE(drawing, view.rect()); // the path keeps the whole view
+        return;
+    }
+    QVERIFY(view.rect().contains(legend));
+    QVERIFY2(!legend.intersects(drawing),
+             qPrintable(QStringLiteral("legend %1,%2 %3x%4 over the drawing %5,%6 %7x%8")
+                            .arg(legend.x())
+                            .arg(legend.y())
+                            .arg(legend.width())
+                            .arg(legend.height())
+                            .arg(drawing.x())
+                            .arg(drawing.y())
+                            .arg(drawing.width())
+                            .arg(drawing.height())));
+    // Beside (a column at the right) or below (a strip along the bottom), the drawing the rest.
+    if (view.legendBeside())
+        QCOMPARE(legend.right(), view.rect().right());
+    else
+        QCOMPARE(legend.bottom(), view.rect().bottom());
+    QCOMPARE(drawing.united(legend), view.rect());
+    // The fitted path in the drawing.
+    for (const QPointF& p : view.points())
+        QVERIFY2(drawing.contains(view.toWidget(p).toPoint()), qPrintable(text(view.toWidget(p))));
+    // The legend's entries are drawn in its room: a sample of the feed's pen.
+    const QImage image = render(view);
+    bool feedSample = false;
+    for (int y = legend.top(); y <= legend.bottom() && !feedSample; ++y)
+        for (int x = legend.left(); x < legend.left() + 40 && !feedSample; ++x)
+            feedSample = colourNear(image, QPointF(x, y), PreviewStyle::feedColor(), 0);
+    QVERIFY(feedSample);
+    // Zoomed far in about the drawing's right edge: the feeds reach into the legend's room but
+    // are not drawn there (away from its samples, its texts are black).
+    for (int i = 0; i < 6; ++i)
+        wheel(&view, QPointF(drawing.right() - 2, drawing.center().y()), 240);
+    const QImage zoomed = render(view);
+    const QRect textPart = legend.adjusted(40, 0, 0, 0);
+    int feedPixels = 0;
+    for (int y = textPart.top(); y <= textPart.bottom(); ++y)
+        for (int x = textPart.left(); x <= textPart.right(); ++x)
+            feedPixels += colourNear(zoomed, QPointF(x, y), PreviewStyle::feedColor(), 0);
+    QCOMPARE(feedPixels, 0);
+}
+
+// The legend's room is kept for the entries a run adds (the running line, the tool): when a run
+// starts, nothing moves and the path is not fitted again.
+void TestProgramPathView::legend_runStarts_nothingMoves()
+{
+    ProgramPathView view;
+    view.resize(360, 150);
+    view.setPreview(squarePreview(), machineXyz(false));
+    const QRect legend = view.legendRect();
+    const QRect drawing = view.drawingRect();
+    const QPointF corner = view.toWidget({40, 20});
+    QCOMPARE(view.legendEntries().size(), 2);
+    view.setRunningLine(4);
+    view.setCurrent({{QStringLiteral("X"), 20.0}, {QStringLiteral("Y"), 5.0}});
+    view.grab();
+    QCOMPARE(view.legendEntries().size(), 4);
+    QCOMPARE(view.legendRect(), legend);
+    QCOMPARE(view.drawingRect(), drawing);
+    QCOMPARE(view.toWidget({40, 20}), corner);
 }
 
 QTEST_MAIN(TestProgramPathView)

@@ -26,7 +26,9 @@ stepdeck_add_test(tst_helpmenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_helpmenu.cp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
                   LABELS ui LIBS stepdeck_ui)
 # Issue 31: the Run and Setup workspaces on a 1366x768 screen with a machine of two controllers
-# on pseudo-terminals, and the Run workspace's fit on a 1920x1080 screen.
+# on pseudo-terminals, and the Run workspace's fit on a 1920x1080 screen. Issue 47 item 13: the
+# Program dock's separator moves (the toolpath half the workspace's height), and a maximised
+# Full HD window's Setup workspace names no page as scrolling.
 set(_workspaces_sources ${CMAKE_CURRENT_LIST_DIR}/tst_workspaces.cpp
     ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
     ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
@@ -34,7 +36,8 @@ set(_workspaces_sources ${CMAKE_CURRENT_LIST_DIR}/tst_workspaces.cpp
     ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h)
 stepdeck_add_test(tst_workspaces SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui)
 stepdeck_add_test(tst_workspaces_fullhd SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui
-                  SPLIT run_onTheScreen_noScrollBarNoTextCut)
+                  SPLIT run_onTheScreen_noScrollBarNoTextCut
+                        setup_fullHdMaximised_noPageSaidToScroll)
 target_compile_definitions(tst_workspaces_fullhd PRIVATE STEPDECK_FULL_HD)
 # Issue 31: the built-in demo that tools/run opens.
 stepdeck_add_test(tst_demomachine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_demomachine.cpp

@@ -3,7 +3,10 @@
 // and four axes (MachineWindowRig) and a program open: one click or key switches, each shows its
 // docks, each remembers its layout (also across sessions), a program opened brings up Run
 // unless the operator chose by hand, and the Run workspace fits: no scroll bar in its docks or
-// the jog column and no text cut, in English and German.
+// the jog column and no text cut, in English and German. Issue 47 item 13: the first start's
+// window and its frame are on the screen; the separator above the Program dock moves, and the
+// toolpath can be made half the workspace's height, its legend beside or below it; the Setup
+// workspace of a maximised Full HD window names no page as scrolling.
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
@@ -16,15 +19,20 @@
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
 #include "program/ProgramPage.h"
+#include "program/ProgramPathView.h"
+#include "program/ProgramPreviewView.h"
 #include "safety/SafetyBar.h"
+#include "window/MainWindowJogArea.h"
 #include "window/Translations.h"
 #include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
 #include <QComboBox>
 #include <QDockWidget>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QStyleOptionComboBox>
 #include <QTabBar>
 
@@ -49,6 +57,8 @@ private Q_SLOTS:
     void run_onTheScreen_noScrollBarNoTextCut_data();
     void run_onTheScreen_noScrollBarNoTextCut();
     void run_windowTooSmall_saysWhichPagesScroll();
+    void run_separatorDragged_toolpathHalfTheWorkspace();
+    void setup_fullHdMaximised_noPageSaidToScroll();
     void setup_sidePages_noSidewaysScroll_data();
     void setup_sidePages_noSidewaysScroll();
     void connectionBar_modelNamesInFull_data();
@@ -66,6 +76,18 @@ private:
     QString programFile(const QString& text) const
     {
         return m_rig.writeFile(text.toUtf8(), QStringLiteral("job.ngc"));
+    }
+    // A pocket's outline (relative: the rotary axis is not referenced) and a turn of A.
+    static QString pocketProgram()
+    {
+        return QStringLiteral(
+            "(Pocket outline, in the style of a CAM post)\nG21 G91 G17\nM3 S500\nG0 Z2\n"
+            "G0 X5 Y5\nG1 Z-3 F6\nG1 X3\nG2 X3 Y3 I0 J3\nG1 X-6\nG1 Y-3\nG0 Z3\nG0 A90\n"
+            "M2\n");
+    }
+    static QString rectText(const QRect& r)
+    {
+        return QStringLiteral("%1,%2 %3x%4").arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height());
     }
     // Docks of the window whose page scrolls, "name: w x h in w x h".
     QStringList scrollingDocks() const
@@ -112,6 +134,15 @@ private:
 
 void TestWorkspaces::firstStart_setup_thenKeysAndTabsSwitch()
 {
+    // The first start (no geometry saved): the window, its frame and its status bar on the
+    // screen's available geometry (issue 47 item 13: the status bar was below the screen).
+    const QRect available = QGuiApplication::primaryScreen()->availableGeometry();
+    QVERIFY2(available.contains(window()->frameGeometry()),
+             qPrintable(rectText(window()->frameGeometry()) + QStringLiteral(" on ") +
+                        rectText(available)));
+    QStatusBar* statusBar = window()->statusBar();
+    QVERIFY2(available.contains(QRect(statusBar->mapToGlobal(QPoint()), statusBar->size())),
+             qPrintable(rectText(QRect(statusBar->mapToGlobal(QPoint()), statusBar->size()))));
     // Nothing referenced, no program: the setup pages (where a new machine starts).
     QCOMPARE(workspaces()->current(), Workspace::Setup);
     QVERIFY(shown("setupDock"));
@@ -208,10 +239,7 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
     QVERIFY(showIn(language));
     QVERIFY(m_rig.openAndConnect());
     QVERIFY(m_rig.referenceTable()); // an arc needs its plane's positions known
-    // A pocket's outline (relative: the rotary axis is not referenced) and a turn of A.
-    QVERIFY(window()->programPage()->files()->load(programFile(QStringLiteral(
-        "(Pocket outline, in the style of a CAM post)\nG21 G91 G17\nM3 S500\nG0 Z2\nG0 X5 Y5\n"
-        "G1 Z-3 F6\nG1 X3\nG2 X3 Y3 I0 J3\nG1 X-6\nG1 Y-3\nG0 Z3\nG0 A90\nM2\n"))));
+    QVERIFY(window()->programPage()->files()->load(programFile(pocketProgram())));
     QCOMPARE(workspaces()->current(), Workspace::Run);
     QTRY_VERIFY(!window()->programPage()->isChecking());
     // The layout settles (the read-out's height follows the machine's axes, queued).
@@ -226,6 +254,20 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
                                 .arg(side->widget()->minimumSizeHint().height())
                                 .arg(side->widget()->heightForWidth(side->viewport()->width()))
                                 .arg(side->viewport()->height())));
+    // The jog pad whole below STOP, PANIC and the banner (it scrolls only where the operator
+    // gives its height to the Program dock, issue 47 item 13).
+    ui::JogArea* jog = window()->jogArea();
+    QVERIFY(!jog->isShortByChoice());
+    QTRY_VERIFY2(!jog->verticalScrollBar()->isVisible() && !jog->horizontalScrollBar()->isVisible(),
+                 qPrintable(QStringLiteral("jog pad %1 high in %2")
+                                .arg(jog->neededHeight())
+                                .arg(jog->viewport()->height())));
+    // The toolpath's legend has a room of its own (issue 47 item 13: it covered the drawing).
+    ui::ProgramPathView* path = window()->programPage()->preview()->pathView();
+    const QRect legendIdle = path->legendRect();
+    const QRect drawingIdle = path->drawingRect();
+    QVERIFY2(!legendIdle.intersects(drawingIdle),
+             qPrintable(rectText(legendIdle) + QStringLiteral(" over ") + rectText(drawingIdle)));
     // Named by the screen the window is on (less its panel and title bar).
     const QSize screen = QGuiApplication::primaryScreen()->size();
     saveShot(QStringLiteral("run-%1x%2%3.png")
@@ -247,6 +289,9 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
                                  page->runner()->currentLine() >= 5 && m_rig.elab->moving(Axis::Z),
                              20000);
     QTRY_VERIFY(window()->safetyBar()->bannerSeverity() == QLatin1String("job"));
+    // The run's entries (the running line, the tool) had their room: nothing moved.
+    QCOMPARE(path->legendRect(), legendIdle);
+    QCOMPARE(path->drawingRect(), drawingIdle);
     saveShot(QStringLiteral("run-%1x%2-running%3.png")
                  .arg(screen.width())
                  .arg(screen.height() + kPanelAndTitleBar)
@@ -295,6 +340,120 @@ void TestWorkspaces::run_windowTooSmall_saysWhichPagesScroll()
     QCOMPARE(said.constLast().at(0).toString(), QString());
     QVERIFY2(window()->messages()->currentText() != text,
              qPrintable(window()->messages()->currentText()));
+}
+
+// Issue 47 item 13: "the splitter above the Program dock does not move" (the centre's minimum,
+// the jog pad's, held it) and the toolpath was about 150 px high at 1366x768. Dragged up as far
+// as it goes, the separator gives the toolpath at least half the Run workspace's height (from
+// the tool bar to the status bar); STOP, PANIC and the banner stay whole, the jog pad scrolls up
+// and down below them (no "too small" for a room the operator chose), the legend keeps its own
+// room, the room stays the workspace's across a switch, and Reset layout gives the jog pad its
+// height back.
+void TestWorkspaces::run_separatorDragged_toolpathHalfTheWorkspace()
+{
+    QVERIFY(m_rig.openAndConnect());
+    QVERIFY(m_rig.referenceTable());
+    QVERIFY(window()->programPage()->files()->load(programFile(pocketProgram())));
+    QCOMPARE(workspaces()->current(), Workspace::Run);
+    QTRY_VERIFY(!window()->programPage()->isChecking());
+    QTRY_VERIFY2(scrollingDocks().isEmpty(), qPrintable(scrollingDocks().join(u';')));
+    ui::JogArea* jog = window()->jogArea();
+    QTRY_VERIFY(!jog->verticalScrollBar()->isVisible());
+    QWidget* centre = window()->centralWidget();
+    QDockWidget* program = dock("programDock");
+    ui::ProgramPathView* path = window()->programPage()->preview()->pathView();
+    const int workspace = window()->statusBar()->geometry().top() - centre->geometry().top();
+    const int before = path->height();
+
+    // The separator between the centre and the Program dock, pressed and dragged up to the top
+    // of the centre (it stops where STOP, PANIC and the banner need their room).
+    const QRect centreRect = centre->geometry();
+    const QPoint grip(centreRect.center().x(),
+                      (centreRect.bottom() + program->geometry().top()) / 2);
+    QTest::mousePress(window(), Qt::LeftButton, Qt::NoModifier, grip);
+    QVERIFY2(jog->isDragged(), qPrintable(QStringLiteral("no separator at %1,%2 (centre %3, "
+                                                         "program %4)")
+                                              .arg(grip.x())
+                                              .arg(grip.y())
+                                              .arg(rectText(centreRect))
+                                              .arg(rectText(program->geometry()))));
+    const QPoint top(grip.x(), centreRect.top() + 10);
+    QTest::mouseMove(window(), QPoint(grip.x(), (grip.y() + top.y()) / 2));
+    QTest::qWait(50); // QMainWindow moves the separator on a timer
+    QTest::mouseMove(window(), top);
+    QTest::qWait(50);
+    QTest::mouseRelease(window(), Qt::LeftButton, Qt::NoModifier, top);
+    QVERIFY(!jog->isDragged());
+    QTRY_VERIFY2(path->height() >= workspace / 2,
+                 qPrintable(QStringLiteral("the toolpath %1 px high (%2 before) in a workspace "
+                                           "%3 px high")
+                                .arg(path->height())
+                                .arg(before)
+                                .arg(workspace)));
+    QVERIFY(jog->isShortByChoice());
+    // STOP, PANIC and the banner whole; the jog pad never scrolls sideways.
+    for (QWidget* w : {static_cast<QWidget*>(window()->safetyBar()->stopButton()),
+                       static_cast<QWidget*>(window()->safetyBar()->panicButton()),
+                       window()->findChild<QWidget*>(QStringLiteral("safetyBanner"))}) {
+        QVERIFY(w);
+        QVERIFY2(w->visibleRegion().boundingRect() == w->rect(),
+                 qPrintable(w->objectName() + QStringLiteral(": ") +
+                            rectText(w->visibleRegion().boundingRect())));
+    }
+    QVERIFY(!jog->horizontalScrollBar()->isVisible());
+    // The legend in its room beside or below the drawing, the path in the rest.
+    QVERIFY(!path->legendRect().isEmpty());
+    QVERIFY2(!path->legendRect().intersects(path->drawingRect()),
+             qPrintable(rectText(path->legendRect()) + QStringLiteral(" over ") +
+                        rectText(path->drawingRect())));
+    for (const QPointF& p : path->points())
+        QVERIFY2(path->drawingRect().contains(path->toWidget(p).toPoint()),
+                 qPrintable(QStringLiteral("%1, %2 outside %3")
+                                .arg(path->toWidget(p).x())
+                                .arg(path->toWidget(p).y())
+                                .arg(rectText(path->drawingRect()))));
+    // The operator chose the jog pad's room: no page is said to scroll.
+    ui::WorkspaceFit* fit = window()->workspaceFit();
+    fit->schedule();
+    QTest::qWait(500); // the fit looks twice, once the layout settled
+    QVERIFY2(fit->scrollingPages().isEmpty(), qPrintable(fit->scrollingPages().join(u',')));
+    // The room stays Run's across a switch.
+    const int dragged = path->height();
+    workspaces()->switchTo(Workspace::Setup);
+    QVERIFY(!jog->isShortByChoice()); // Setup's own: the whole jog pad
+    workspaces()->switchTo(Workspace::Run);
+    QVERIFY(jog->isShortByChoice());
+    QTRY_COMPARE(path->height(), dragged);
+    // Reset layout: the jog pad whole again.
+    window()->resetLayout();
+    QVERIFY(!jog->isShortByChoice());
+    QTRY_VERIFY(!jog->verticalScrollBar()->isVisible());
+    QTRY_VERIFY(path->height() < dragged);
+}
+
+// Issue 47 item 13: the Setup workspace said "The window is too small for these pages, they
+// scroll" even maximised at 1920x1080: its forms and lists (every axis' parameters, referencing,
+// the status lamps) scroll up and down by nature. There only a page that scrolls sideways is
+// named (WorkspaceFit::setSidewaysOnly), and at Full HD none does.
+void TestWorkspaces::setup_fullHdMaximised_noPageSaidToScroll()
+{
+    if (QGuiApplication::primaryScreen()->availableGeometry().width() < 1920)
+        QSKIP("on the Full HD screen (tst_workspaces_fullhd)");
+    window()->showMaximized();
+    QTRY_VERIFY(window()->isMaximized());
+    QVERIFY(m_rig.openAndConnect());
+    workspaces()->switchTo(Workspace::Setup);
+    ui::WorkspaceFit* fit = window()->workspaceFit();
+    QVERIFY(fit->sidewaysOnly());
+    fit->schedule();
+    QTest::qWait(500); // the fit looks twice, once the layout settled
+    QVERIFY2(fit->scrollingPages().isEmpty(), qPrintable(fit->scrollingPages().join(u',')));
+    QVERIFY2(fit->lastReported().isEmpty(), qPrintable(fit->lastReported().join(u',')));
+    QVERIFY2(!window()->messages()->currentText().contains(QStringLiteral("too small")),
+             qPrintable(window()->messages()->currentText()));
+    // Run counts every page again.
+    workspaces()->switchTo(Workspace::Run);
+    QVERIFY(!fit->sidewaysOnly());
 }
 
 void TestWorkspaces::setup_sidePages_noSidewaysScroll_data()
