@@ -250,7 +250,7 @@ private:
     // Run from line (issue 47 item 5): the spindle and coolant the lines before it switched on,
     // switched before its first block (RunFromState).
     QList<ProgramBlock> m_prelude;
-    ProgramBlock m_block;        // the block at m_index
+    ProgramBlock m_block;            // the block at m_index
     CoordinateSystems m_nextSystems; // setCoordinateSystems()
     int m_nextActive = 0;
     ToolTable m_nextTools;

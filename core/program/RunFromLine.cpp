@@ -25,7 +25,8 @@ RunFromState RunFromState::before(ProgramReader& reader, int first)
         if (!b)
             break;
         // A line's own switch (M3 beside a move) and its action, in that order.
-        for (const std::optional<BlockKind> k : {b->switchFirst, std::optional<BlockKind>(b->kind)}) {
+        for (const std::optional<BlockKind> k :
+             {b->switchFirst, std::optional<BlockKind>(b->kind)}) {
             if (!k)
                 continue;
             if (isSpindle(*k))
@@ -70,8 +71,9 @@ QString RunFromState::text() const
     QStringList parts;
     if (spindle && *spindle != BlockKind::SpindleOff)
         parts << tr("spindle on at S%1 (%2)")
-                     .arg(figure(rpm), *spindle == BlockKind::SpindleReverse ? QStringLiteral("M4")
-                                                                            : QStringLiteral("M3"));
+                     .arg(figure(rpm), *spindle == BlockKind::SpindleReverse
+                                           ? QStringLiteral("M4")
+                                           : QStringLiteral("M3"));
     if (coolant && *coolant != BlockKind::CoolantOff)
         parts << tr("coolant on (%1)")
                      .arg(*coolant == BlockKind::CoolantMist ? QStringLiteral("M7")

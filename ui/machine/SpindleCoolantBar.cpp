@@ -95,10 +95,10 @@ void SpindleCoolantBar::fitSpeedRange(const machine::Machine* m, const Controlle
     } else {
         const ParameterSchema schema = s->schema();
         const Capabilities caps = s->capabilities();
-        if (const ParameterSpec* spec = caps.spindleSpeedParameter
-                                            ? schema.find(QString::fromLatin1(
-                                                  caps.spindleSpeedParameter))
-                                            : nullptr;
+        if (const ParameterSpec* spec =
+                caps.spindleSpeedParameter
+                    ? schema.find(QString::fromLatin1(caps.spindleSpeedParameter))
+                    : nullptr;
             spec && spec->maximum >= 1)
             top = int(std::min<double>(spec->maximum, 1.0e6));
         m_rpm->setSuffix(QString()); // the controller's own unit: no scale in the machine file

@@ -16,12 +16,12 @@ namespace stepdeck::ui {
 class LedIndicator;
 class MachineContext;
 
-// The spindle and the coolant in the Run workspace's Position dock (issue 47): each one's state, marked by how
-// it is known -- the spindle as the board reads it back (E-LAB tmSpindleOn), S as last written
-// in rpm (the machine file's spindle scale; the board cannot read a speed back), the coolant as
-// last switched in this session (the board cannot read its relay back; unknown before) -- and a
-// switch each. The switches work while no program runs (at M0 or M6 too); while one runs the
-// program owns them and STOP switches both off (Machine::stop). Nothing moves: the texts keep
+// The spindle and the coolant in the Run workspace's Position dock (issue 47): each one's state,
+// marked by how it is known -- the spindle as the board reads it back (E-LAB tmSpindleOn), S as
+// last written in rpm (the machine file's spindle scale; the board cannot read a speed back), the
+// coolant as last switched in this session (the board cannot read its relay back; unknown before)
+// -- and a switch each. The switches work while no program runs (at M0 or M6 too); while one runs
+// the program owns them and STOP switches both off (Machine::stop). Nothing moves: the texts keep
 // their room.
 class SpindleCoolantBar : public QWidget
 {
