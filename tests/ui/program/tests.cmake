@@ -29,5 +29,8 @@ foreach(_t tst_programpreviewprojection tst_programpreviewviewport tst_programpr
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/PreviewTestData.h LABELS unit LIBS stepdeck_ui)
 endforeach()
-stepdeck_add_test(tst_programpathview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpathview.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/PreviewTestData.h LABELS ui LIBS stepdeck_ui)
+foreach(_t tst_programpathview tst_programpathvieworbit)
+  stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
+                    ${CMAKE_CURRENT_LIST_DIR}/PathViewTestSupport.h
+                    ${CMAKE_CURRENT_LIST_DIR}/PreviewTestData.h LABELS ui LIBS stepdeck_ui)
+endforeach()
