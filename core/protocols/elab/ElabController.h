@@ -45,6 +45,11 @@ namespace stepdeck::elab {
 //   second whatever the interval set, each deferred for a contour's reserve at most
 //   kMaxPollDeferralMs; the contour's tick rate is capped (kContourMaxTickRate) so that the
 //   wire leaves them their share.
+// - A feed hold (issue 47 item 8) keeps the <DC2> stream open, and the board's RequestAxeState
+//   reads feed mode (taXMove ...) until EndOfFeed: it cannot say that its axes stand. Once the
+//   host sent nothing for longer than the ticks sent take at the tick rate (and a margin), the
+//   stream's axes are shown standing at the host's count (ElabCtlMotionOps::showHeldAtRest),
+//   moving again with the first pair after the hold.
 // - Whenever a status read shows move or jog bits the host did not command (a lost jog ACK, a
 //   motion from before this session), the host stops them and says so.
 class ElabController : public Controller

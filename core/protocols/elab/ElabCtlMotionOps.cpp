@@ -114,6 +114,51 @@ void ElabCtlMotionOps::onStatusRead()
         m_line.hooks().error(out.limitMessage);
     if (out.readRemaining)
         correctPositions(values);
+    showHeldAtRest();
+}
+
+// Issue 47 item 8: during a feed hold every axis read "≈ ... MOVING" for as long as the
+// hold lasted. The board cannot say that its axes stand while the stream is open: its
+// RequestAxeState bits taXMove/taYMove/taZMove mean "ist im FastMove oder Feed Mode", and a
+// <DC2> stream is feed mode until EndOfFeed, with its buffer empty or not (the simulator's
+// ElabSimBoard::axeState likewise, and tmBusy with it); applyAxeState took that for motion,
+// and the read-out then estimated a ramp towards the count. The host knows more: since the
+// hold it sent no pair, and the board "leert seinen XYZ Step Buffer mit der vorgegebenen
+// Feedrate" (SetFeedStepXYZ), so once the ticks sent have had their time (heldAtRest) the
+// buffer is empty, and feed mode stops "ohne dass Schrittverluste auftreten" ("a. Der
+// Arbeits-Mode"). From the first status read after that the stream's axes are shown standing,
+// at the host's count of the pairs it sent: no read-back exists (RequestRelPosition gives a
+// FastMove's steps left), but the board ran every pair counted, so the count is where it
+// stands -- not an estimate, as for every stream. What the board says stays as it says it
+// (status.raw's axeState, busy). Not EndOfFeed at the hold, which would let the board confirm
+// it: the resume would then be a new stream with its own pre-flight and SetClearPosition.
+void ElabCtlMotionOps::showHeldAtRest()
+{
+    if (!heldAtRest())
+        return;
+    for (Axis a : m_stream.axes())
+        m_line.status().axes[a].moving = false;
+    m_restShown = true;
+}
+
+// The hold released: the pair about to go out moves the axes again (and the next status read
+// shows the open stream's taXMove as before the hold).
+void ElabCtlMotionOps::showStreamMoving()
+{
+    if (!std::exchange(m_restShown, false))
+        return;
+    for (Axis a : m_stream.axes())
+        m_line.status().axes[a].moving = true;
+    m_line.hooks().publish();
+}
+
+bool ElabCtlMotionOps::heldAtRest() const
+{
+    const std::shared_ptr<motion::ContourFeed>& contour = m_stream.contour();
+    if (!m_stream.isActive() || !contour || !contour->isHeld() || m_stream.chunkInFlight ||
+        m_stream.stopAsked || m_stream.sent() == 0 || !m_contourClock.isValid())
+        return false; // a STOP's end is the board's to confirm (ElabController::stopContour)
+    return contourAheadNow() <= -kHeldRestMarginSeconds;
 }
 
 void ElabCtlMotionOps::onStopAccepted()
@@ -269,6 +314,7 @@ void ElabCtlMotionOps::startStream(RequestId id, const QVector<AxisVector>& step
             else
                 m_stream.startSteps(steps);
             m_stream.requestId = op.id;
+            m_restShown = false; // a hold of an earlier stream's is over
             AxisVector axes;
             for (Axis a : m_stream.axes())
                 axes.insert(a, 1);
@@ -360,6 +406,7 @@ void ElabCtlMotionOps::pumpStream()
         m_stream.chunkInFlight = false;
         abortStream(kind, why);
     };
+    showStreamMoving();
     m_line.submit(std::move(ex), false);
 }
 
@@ -382,10 +429,15 @@ double ElabCtlMotionOps::contourLead(RequestId id)
     return 0;
 }
 
+double ElabCtlMotionOps::contourAheadNow() const
+{
+    return double(m_stream.sent() - m_contourBase) / m_stream.contour()->tickRate() -
+           double(m_contourClock.nsecsElapsed()) / 1e9;
+}
+
 double ElabCtlMotionOps::contourAhead()
 {
-    const double ahead = double(m_stream.sent() - m_contourBase) / m_stream.contour()->tickRate() -
-                         double(m_contourClock.nsecsElapsed()) / 1e9;
+    const double ahead = contourAheadNow();
     if (ahead >= 0)
         return ahead;
     m_contourBase = m_stream.sent();
@@ -400,8 +452,7 @@ bool ElabCtlMotionOps::contourNeedsWire() const
         return false; // after an XOFF the board holds a full buffer; after a STOP none follow
     if (m_stream.sent() == 0 || !m_contourClock.isValid())
         return m_stream.total() > 0; // about to start; not while its first move is not given
-    const double ahead = double(m_stream.sent() - m_contourBase) / contour->tickRate() -
-                         double(m_contourClock.nsecsElapsed()) / 1e9;
+    const double ahead = contourAheadNow();
     // Far behind (the contour waits for its next move, the board ran dry): polls go on, so
     // that limit switches and positions are read while nothing can be sent anyway.
     return ahead < kContourReserveSeconds && ahead > -kContourReserveSeconds && !m_stream.atEnd();

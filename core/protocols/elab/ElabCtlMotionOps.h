@@ -91,6 +91,14 @@ public:
     // within the lead); done(false): the stream ended otherwise (NAK, no reply, a limit
     // switch, panic, link loss) and the positions are what that path leaves.
     void stopContour(std::function<void(bool ended)> done);
+    // A feed hold (issue 47 item 8): the contour is held, no chunk is on its way, and the
+    // board has had the time to run every tick sent, kHeldRestMarginSeconds more included
+    // (onStatusRead then shows the stream's axes standing, showHeldAtRest). The margin is the
+    // last chunk's way to the board (a pair on the wire, a USB adapter's FIFO and its latency
+    // timer, 16 ms by default) and the board's clock against the host's over the lead
+    // (kContourLeadSeconds): two status polls of a stream (kStreamPollsPerSecond).
+    static constexpr double kHeldRestMarginSeconds = 0.1;
+    bool heldAtRest() const;
     // A motion the host started and has not yet seen end (any kind), a velocity axis that
     // still brakes after its rate 0 included.
     bool motionTracked() const { return m_motion.isActive() || !m_velocitySign.isEmpty(); }
@@ -120,6 +128,10 @@ private:
                      std::shared_ptr<motion::ContourFeed> contour = {});
     void endStream(RequestId id);
     void streamChanged(); // the hook, once a stream started or ended
+    // A held contour at rest (heldAtRest): its axes shown standing; the first pair after the
+    // hold shows them moving again.
+    void showHeldAtRest();
+    void showStreamMoving();
     void notifyContourStopped(bool ended);
     void correctPositions(const AxisVector& stopped);
     // Validated non-zero steps, or nullopt when the request is already finished.
@@ -134,10 +146,13 @@ private:
     // How far the contour's ticks sent run ahead of the board, in seconds; re-counted from now
     // when the board ran dry (a late move, a hold).
     double contourAhead();
+    // The same without re-counting: < 0 when the board ran dry that long ago.
+    double contourAheadNow() const;
     double contourLead(RequestId id);
     QElapsedTimer m_contourClock; // since the contour's first <DC2>, or since it ran dry
     qint64 m_contourBase = 0;     // the ticks sent when m_contourClock started
     bool m_leadWait = false;      // a pump waits for the board to run some of the lead
+    bool m_restShown = false;     // a feed hold's axes are shown standing (showHeldAtRest)
     QList<std::function<void(bool)>> m_contourStopped; // stopContour() callers waiting
     ElabCtlMotion m_motion;
     ElabCtlStream m_stream;

@@ -5,7 +5,8 @@
 // arc length at F); the blocks are reported as their ticks pass; a pause holds at a block's
 // end with the board still exactly there; STOP and a lost link leave the board still with no
 // step after the stop; STOP keeps every axis referenced, the host's count the board's (issue
-// 47).
+// 47); a feed hold shows the axes standing at the board's position while it lasts (issue 47
+// item 8).
 #include "ProgramRunnerTestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include <cmath>
@@ -26,6 +27,7 @@ private Q_SLOTS:
     void contour_abort_boardStillNoStepAfterTheStop();
     void contour_otherControllersLinkLost_failsLinkDownBoardStops();
     void contour_stop_boardStillEveryAxisStaysReferenced();
+    void feedHold_contour_axesShowStanding();
 
 private:
     QPoint boardPosition() const;
@@ -325,6 +327,86 @@ void TestProgramContour::contour_stop_boardStillEveryAxisStaysReferenced()
     QTRY_VERIFY_WITH_TIMEOUT(known(), 10000);
     QTRY_COMPARE_WITH_TIMEOUT(host() - hostOrigin, boardPosition() - boardOrigin, 10000);
     QVERIFY(known());
+}
+
+// Issue 47 item 8: a feed hold on referenced axes showed every axis "≈ ... MOVING" for as long
+// as it lasted. Held, (ii) the controller reports every axis of the board not moving (the
+// read-out's X and Y: not moving, referenced, not estimated) with the host's count where the
+// board stands, and (i) the board stands: its buffer empty, no vector executed and its
+// position unchanged over three status polls (its stream still open: feed mode until
+// EndOfFeed). Resumed, the axes are reported moving again and the zigzag ends at its end.
+void TestProgramContour::feedHold_contour_axesShowStanding()
+{
+    QVERIFY(run("G28 X0 Y0\nM30\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    ControllerSession* table = m_machine->session("table");
+    const QList<Axis> boardAxes = table->capabilities().axes; // X, Y, Z
+    const auto host = [table] {
+        return QPoint(int(table->status().axes.value(Axis::X).position),
+                      int(table->status().axes.value(Axis::Y).position));
+    };
+    const auto anyReportedMoving = [table, boardAxes] {
+        bool any = false;
+        for (Axis a : boardAxes)
+            any = any || table->status().axes.value(a).moving;
+        return any;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(table->status().axes.value(Axis::X).referenced, 10000);
+    const QPoint hostOrigin = host();
+    const QPoint boardOrigin = boardPosition();
+    const int segments = 12;
+    QVERIFY(run(zigzag(segments)));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 4, 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(anyReportedMoving(), 10000); // the stream runs
+    QVERIFY(m_runner->holdFeed());
+    QVERIFY(m_runner->feedHeld());
+    // (ii) first: the host says so once the board has run every tick sent.
+    QTRY_VERIFY_WITH_TIMEOUT(!anyReportedMoving(), 10000);
+    // (i) at the board.
+    const auto buffered = [this] {
+        return m_elab->probe([&] {
+            auto* sim = static_cast<elab::ElabSimulator*>(m_elab->sim());
+            sim->position(Axis::X); // brings the board up to now
+            return sim->streamBuffered();
+        });
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(buffered(), 0, 10000);
+    const qsizetype held = executedSteps();
+    const QPoint stood = boardPosition();
+    QSignalSpy polls(table, &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(polls.size() >= 3, 10000);
+    QCOMPARE(executedSteps(), held);
+    QCOMPARE(boardPosition(), stood);
+    QVERIFY(stood.x() - boardOrigin.x() < 200 * segments); // mid-way
+    QVERIFY(m_runner->feedHeld());
+    // (ii) over those polls: standing, where the board stands, as known as before the run.
+    QVERIFY(!anyReportedMoving());
+    QCOMPARE(host() - hostOrigin, stood - boardOrigin);
+    for (const QString& name : {QStringLiteral("X"), QStringLiteral("Y")}) {
+        const machine::MachineAxis* axis = m_machine->description().axis(name);
+        QVERIFY(axis);
+        const machine::MachineAxisStatus shown = m_machine->axisStatus(*axis);
+        QVERIFY2(!shown.moving, qPrintable(name));
+        QCOMPARE(shown.known, machine::PositionKnowledge::Referenced);
+    }
+    // Resumed: moving again, to the zigzag's end.
+    bool movingAgain = false;
+    QObject watcher;
+    connect(table, &ControllerSession::statusChanged, &watcher,
+            [&movingAgain](const MachineStatus& s) {
+                movingAgain = movingAgain || s.axes.value(Axis::X).moving;
+            });
+    m_runner->resume();
+    QVERIFY(!m_runner->feedHeld());
+    QTRY_VERIFY_WITH_TIMEOUT(movingAgain, 10000);
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(boardPosition() - boardOrigin, QPoint(200 * segments, 0));
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(host() - hostOrigin, boardPosition() - boardOrigin, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!anyReportedMoving(), 10000);
 }
 
 QTEST_MAIN(TestProgramContour)
