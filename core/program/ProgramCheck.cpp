@@ -7,6 +7,7 @@
 #include "ProgramParser.h"
 #include "ProgramReader.h"
 #include "ProgramSimulation.h"
+#include "RunFromLine.h"
 #include "language/ProgramExpansion.h"
 #include <QSet>
 #include <algorithm>
@@ -189,14 +190,16 @@ void settlePreview(ProgramCheckResult* result, bool walked)
 }
 
 // The walk of a check over a reader (the program's blocks, or the one pass over its text) from
-// its block `start` (-1: none, *errors says why).
+// its block `start` (-1: none, *errors says why), after the blocks a run from line sends first.
 void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
-              const CheckProgress& progress, CheckErrors* errors, ProgramCheckResult* result)
+              const CheckProgress& progress, CheckErrors* errors, ProgramCheckResult* result,
+              const QList<ProgramBlock>& prelude = {})
 {
     if (start >= 0) {
         FastSpeedPutBack putBack(facts);
         ProgramSimulation simulation(facts, &reader, errors);
         simulation.setFirstVisit([&putBack](const ProgramBlock& b) { putBack.visit(b); });
+        simulation.setPrelude(prelude);
         result->cancelled = !simulation.run(start, &result->preview, progress);
         putBack.report(errors);
     }
@@ -206,12 +209,25 @@ void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
     settlePreview(result, start >= 0 && reader.error().isEmpty());
 }
 
+// Run from line (issue 47 item 5): what the run sends before its start block (the switches the
+// lines before it left on, the rapids to its start point), from the one function the runner
+// takes it from (ProgramRunner::startChecked), with the same facts: the check judges what the
+// run will do first. None from the first block.
+QList<ProgramBlock> runFromPrelude(ProgramReader& reader, const MachineFacts& facts, int start)
+{
+    if (start <= 0)
+        return {};
+    const RunFromState state = RunFromState::before(reader, start, facts);
+    const ProgramBlock* first = reader.at(start);
+    return first ? state.prelude(facts, first->line) : QList<ProgramBlock>{};
+}
+
 void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
           const CheckProgress& progress, ProgramCheckResult* result)
 {
     CheckErrors errors;
     const int start = startIndex(reader, fromLine, &errors);
-    walkFrom(reader, facts, start, progress, &errors, result);
+    walkFrom(reader, facts, start, progress, &errors, result, runFromPrelude(reader, facts, start));
 }
 
 } // namespace

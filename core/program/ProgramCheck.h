@@ -154,7 +154,10 @@ using CheckProgress = std::function<bool(qint64 done, qint64 total)>;
 // - feed moves across controllers only where the machine file allows them
 //   (MachineDescription::crossControllerFeed; the preview notes their path error).
 // fromLine > 1: the run starts at the first block on or after that line (run from line N);
-// blocks before it are not checked, positions are the machine's as they stand.
+// blocks before it are not checked, positions are the machine's as they stand. What the run
+// sends before that block is checked first, as it will be sent (RunFromState::prelude, issue 47
+// item 5): the spindle and coolant the lines before it left on (M3 S within the spindle's
+// range), then the rapids to where those lines leave the tool (soft limits, known positions).
 class ProgramCheck
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramCheck)

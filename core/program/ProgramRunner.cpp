@@ -141,8 +141,14 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
                                         : reader->error()}};
         return false;
     }
-    m_prelude = first > 0 ? RunFromState::before(*reader, first).switches(reader->at(first)->line)
-                          : QList<ProgramBlock>{};
+    // Run from line (issue 47 item 5): the blocks the check walked before its start block, from
+    // the same function and the facts it judged (sameStartFacts: the machine's now).
+    m_prelude.clear();
+    m_approaching = false;
+    if (first > 0) {
+        const RunFromState from = RunFromState::before(*reader, first, checkedFacts);
+        m_prelude = from.prelude(checkedFacts, reader->at(first)->line);
+    }
     m_reader = std::move(reader);
     m_program = program;
     m_restChanged = false;
@@ -356,10 +362,7 @@ QStringList ProgramRunner::controllersWithoutStop() const
 void ProgramRunner::runNext()
 {
     if (!m_prelude.isEmpty() && m_state == RunState::Running && !m_aborting) {
-        // Run from line: what the lines before it switched on, before its first block.
-        m_block = m_prelude.takeFirst();
-        Q_EMIT blockStarted(m_block.line, m_block.text);
-        startSwitch(m_block, [this] { runNext(); });
+        runPrelude();
         return;
     }
     while (m_state == RunState::Running && !m_aborting) {
@@ -388,6 +391,37 @@ void ProgramRunner::runNext()
         startBlock(m_block);
         return;
     }
+}
+
+// Run from line: what the lines before it switched on, then the rapids to where they leave the
+// tool (RunFromState::prelude), before its first block. They are no blocks of the program: not
+// counted, not reported finished; a step runs them with the first block.
+void ProgramRunner::runPrelude()
+{
+    m_block = m_prelude.takeFirst();
+    Q_EMIT blockStarted(m_block.line, m_block.text);
+    if (m_block.kind == BlockKind::Rapid) {
+        m_approaching = true; // blockDone() hands its end to approachDone()
+        startBlock(m_block);
+        return;
+    }
+    startSwitch(m_block, [this] { runNext(); });
+}
+
+// A rapid of the approach arrived: the current point is the machine position it went to (G53),
+// so that the first block's arcs and relative moves start from the start point, as checked.
+void ProgramRunner::approachDone()
+{
+    m_coordinates.advance(m_block, m_machine->description(), &m_programmed);
+    if (m_pauseAsked) { // Pause while on the way: held there, Resume goes on to the start point
+        m_pauseAsked = false;
+        m_operatorStop = false;
+        m_prompt.clear();
+        setState(RunState::Paused);
+        Q_EMIT paused(m_block.line, m_prompt);
+        return;
+    }
+    runNext();
 }
 
 // Onto the next block that does something; repeats are counted here.
@@ -430,6 +464,10 @@ void ProgramRunner::blockDone()
     if (m_state != RunState::Running || m_aborting)
         return;
     m_motion = 0;
+    if (std::exchange(m_approaching, false)) {
+        approachDone();
+        return;
+    }
     ++m_blocksDone;
     const ProgramBlock& block = m_block;
     if (m_arc || m_cycle)
@@ -524,6 +562,7 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_endSwitching = false;
     m_restChanged = false;
     m_prelude.clear();
+    m_approaching = false;
     m_requests.clear();
     m_afterRequests = nullptr;
     if (state != RunState::Finished && m_rates)

@@ -64,8 +64,10 @@ public:
     // Checks the program against the machine as it stands (ProgramCheck) and starts it at the
     // first block on or after fromLine (the modal state is the block's own, rebuilt by the
     // parser from the lines before it; the spindle and coolant those lines left on are
-    // switched on first, RunFromState). stepOnly: run one block, then pause. False with
-    // *errors when the check fails or a program runs already: nothing is sent.
+    // switched on first, then the axes go at rapid to where those lines leave the tool, Z up
+    // first or down last: RunFromState::prelude, which the check walked first). stepOnly: run
+    // one block, then pause. False with *errors when the check fails or a program runs
+    // already: nothing is sent.
     bool start(const Program& program, int fromLine, QList<ProgramError>* errors,
                bool stepOnly = false);
     // start() in two halves, so that a long program's check runs off the GUI thread (issue 29:
@@ -191,7 +193,9 @@ private:
     void connectMachine();
     void disconnectMachine();
     void runNext();
-    bool advance(); // onto the next block that does something; false at the end
+    void runPrelude();   // the next block of m_prelude
+    void approachDone(); // a rapid of m_prelude arrived
+    bool advance();      // onto the next block that does something; false at the end
     void blockDone();
     void finishProgram(bool programEnd = false); // programEnd: M2/M30, spindle and coolant off
     void onSwitchedOff(bool ok, const QString& message); // M2/M30: spindle and coolant off
@@ -248,8 +252,10 @@ private:
     bool m_restChanged = false;  // offsets or tools given while held, not yet checked for the rest
     bool m_endSwitching = false; // M2/M30 or the end: waiting for spindle and coolant off
     // Run from line (issue 47 item 5): the spindle and coolant the lines before it switched on,
-    // switched before its first block (RunFromState).
+    // switched before its first block, then the rapids to its start point (RunFromState::
+    // prelude, as the check walked them).
     QList<ProgramBlock> m_prelude;
+    bool m_approaching = false;      // m_block is one of m_prelude's rapids
     ProgramBlock m_block;            // the block at m_index
     CoordinateSystems m_nextSystems; // setCoordinateSystems()
     int m_nextActive = 0;

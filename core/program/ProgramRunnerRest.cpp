@@ -49,6 +49,10 @@ QString ProgramRunner::restUncheckable() const
     if (m_heldInPath)
         return tr("the run holds in the middle of an arc or a drilling cycle, where new offsets "
                   "cannot start: put them back to resume, or stop");
+    // Its start point was worked out in the old offsets (RunFromState), in machine positions.
+    if (!m_prelude.isEmpty())
+        return tr("the run holds on its way to the start point of the line it runs from, which "
+                  "new offsets would move: put them back to resume, or stop");
     const QMap<QString, double> g92 = m_coordinates.axisOffset();
     for (auto it = g92.cbegin(); it != g92.cend(); ++it)
         if (it.value() != 0.0)

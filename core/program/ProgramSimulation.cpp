@@ -44,6 +44,7 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
 {
     constexpr int kProgressBlocks = 4096;
     addPoint(0);
+    runPrelude();
     m_firstUnvisited = start;
     bool cancelled = false;
     bool walking = true; // false past the bound of repeated blocks: the rest is only planned
@@ -94,6 +95,44 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
     }
     finish(preview);
     return !cancelled;
+}
+
+namespace {
+// An error of a block the run sends before its start block, named so: its own words are not on
+// the line the error stands at.
+QString preludeError(const ProgramBlock& block, const QString& why)
+{
+    if (block.kind == BlockKind::Rapid)
+        return ProgramCheck::tr("run from line %1: the move to its start point first (%2): %3")
+            .arg(block.line)
+            .arg(block.text, why);
+    return ProgramCheck::tr("run from line %1: %2 first, as the lines before it left it: %3")
+        .arg(block.line)
+        .arg(block.text, why);
+}
+} // namespace
+
+// The prelude's blocks planned and executed as any block, the current point following them, so
+// that the start block is judged from where the run will have put the axes. Their errors are
+// gathered apart: CheckErrors::once keys of their own (a start block's word at the same column
+// is not taken for told already), and each named as the prelude's.
+void ProgramSimulation::runPrelude()
+{
+    if (m_prelude.isEmpty())
+        return;
+    CheckErrors walk;
+    std::swap(*m_errors, walk); // the plan (m_plan) adds to *m_errors as well
+    QList<ProgramError> found;
+    for (const ProgramBlock& block : std::as_const(m_prelude)) {
+        m_plan.plan(block);
+        execute(m_planned.block);
+        const QList<ProgramError> errors = m_errors->take();
+        for (const ProgramError& e : errors)
+            found << ProgramError{block.line, 1, preludeError(block, e.message)};
+    }
+    std::swap(*m_errors, walk);
+    for (const ProgramError& e : std::as_const(found))
+        *m_errors << e;
 }
 
 // At an O repeat: its first pass begins (the index of the block after it), or a repeat of no

@@ -188,6 +188,12 @@ public:
     {
         m_firstVisit = std::move(visit);
     }
+    // Run from line (issue 47 item 5): the blocks the run sends before its start block
+    // (RunFromState::prelude: the switches the lines before it left on, the rapids to its start
+    // point), walked first from where the axes stand, as the run will send them. Their errors
+    // name them at the start block's line; they are no blocks of the program (not counted, as
+    // ProgramRunner does not count them), but the preview's path and time include their moves.
+    void setPrelude(QList<ProgramBlock> prelude) { m_prelude = std::move(prelude); }
     // false: cancelled (by progress, asked every few thousand blocks).
     bool run(int start, ProgramPreview* preview, const CheckProgress& progress = {});
 
@@ -202,6 +208,7 @@ private:
     };
     // The block at i planned (reporting on its first visit); false at the end.
     bool visit(int i, const ProgramBlock& block);
+    void runPrelude();
     void skipBody(int from, int end); // a repeat of no passes: its blocks planned, not walked
     int repeatStart(int i, const ProgramBlock& block);
     bool repeatEnd(int* i, int partner);
@@ -248,6 +255,7 @@ private:
     ProgramPlan m_plan;
     const ContourMoves& m_contours; // m_plan's
     std::function<void(const ProgramBlock&)> m_firstVisit;
+    QList<ProgramBlock> m_prelude; // setPrelude()
     // The feed moves across controllers (noteControllers): the first line, and the largest
     // distance one axis covers while its controllers' starts may differ.
     qint64 m_crossMoves = 0;

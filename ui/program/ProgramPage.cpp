@@ -365,11 +365,7 @@ void ProgramPage::checkNow()
     m_checkOk = false;
     updateControls();
     m_checkedPositions = positionsSignature();
-    program::MachineFacts facts = program::factsOf(*machine);
-    // The position display's coordinates: the active system, and the others for G54..G59.
-    facts.coordinateSystems = m_context->workOffsets()->systems();
-    facts.activeSystem = m_context->workOffsets()->active();
-    facts.tools = m_context->tools()->table();
+    const program::MachineFacts facts = machineFacts(*machine);
     m_checkedParameters = facts.knownParameters;
     m_checkedIncomplete = facts.setupIncomplete;
     const QString large = m_files->largePath();
@@ -378,6 +374,16 @@ void ProgramPage::checkNow()
                          ? program::ProgramSource::bytes(m_editor->toPlainText().toUtf8())
                          : program::ProgramSource::file(large),
                      axes, facts);
+}
+
+program::MachineFacts ProgramPage::machineFacts(const machine::Machine& machine) const
+{
+    program::MachineFacts facts = program::factsOf(machine);
+    // The position display's coordinates: the active system, and the others for G54..G59.
+    facts.coordinateSystems = m_context->workOffsets()->systems();
+    facts.activeSystem = m_context->workOffsets()->active();
+    facts.tools = m_context->tools()->table();
+    return facts;
 }
 
 bool ProgramPage::isChecking() const

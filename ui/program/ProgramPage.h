@@ -93,6 +93,9 @@ private:
     void connectFeedControls();
     void onMachineStatus();
     bool rulesFactsChanged() const; // since the last check (m_checkedParameters, ...)
+    // The open machine's facts in the position display's coordinates and with the machine's
+    // tool table: what the check judges and a run takes (ProgramRunner::startFacts).
+    program::MachineFacts machineFacts(const machine::Machine& machine) const;
     std::optional<program::Program> parse(QList<program::ProgramError>* errors) const;
     bool start(int fromLine, bool stepOnly);
     void onStarted(const program::Program& program);

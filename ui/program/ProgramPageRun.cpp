@@ -65,20 +65,30 @@ QString ProgramPage::runFromText(int line) const
         index = reader->firstBlockAtLine(line);
         first = reader->at(index);
     }
-    if (!first)
+    const machine::Machine* machine = m_context->machine();
+    if (!first || !machine)
         return tr("Line %1: no block runs on or after it.").arg(line);
     const int firstLine = first->line;
     const QString firstText = first->text;
-    // Issue 47 item 5: what the lines before it left switched on is switched on first.
-    const QString restored = program::RunFromState::before(*reader, index).text();
-    return tr("Run from line %1 (%2). The lines before it do not run; the axes start from where "
-              "they stand now: %3.")
-               .arg(firstLine)
-               .arg(firstText, ProgramMachinePositions::text(*m_context->machine())) +
-           (restored.isEmpty()
-                ? QString()
-                : QLatin1Char(' ') +
-                      tr("First, as the lines before it left them: %1.").arg(restored));
+    // Issue 47 item 5: what the lines before it left switched on is switched on first, then the
+    // axes go to where those lines leave the tool: what the run will send (RunFromState).
+    const program::MachineFacts facts = machineFacts(*machine);
+    const program::RunFromState from = program::RunFromState::before(*reader, index, facts);
+    const QString restored = from.text();
+    const QString approach = from.approachText(facts);
+    QString text = tr("Run from line %1 (%2). The lines before it do not run; the axes start from "
+                      "where they stand now: %3.")
+                       .arg(firstLine)
+                       .arg(firstText, ProgramMachinePositions::text(*machine));
+    if (!restored.isEmpty())
+        text += QLatin1Char(' ') + tr("First, as the lines before it left them: %1.").arg(restored);
+    if (!approach.isEmpty())
+        text += QLatin1Char(' ') +
+                (restored.isEmpty()
+                     ? tr("Moves first, to where the lines before it leave the tool: %1.")
+                     : tr("Then moves to where the lines before it leave the tool: %1."))
+                    .arg(approach);
+    return text;
 }
 
 void ProgramPage::runFromLine(int line)

@@ -129,8 +129,10 @@ inline void ProgramRunnerFixture::writeElabSetup()
 inline bool ProgramRunnerFixture::run(const QByteArray& text, int fromLine, bool stepOnly)
 {
     QList<ProgramError> errors;
-    const std::optional<Program> program = ProgramParser::parse(
-        text, {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("A")}, &errors);
+    QStringList axes; // the machine's: X, Y, A, and Z where a test adds it
+    for (const MachineAxis& a : m_machine->description().axes)
+        axes << a.name;
+    const std::optional<Program> program = ProgramParser::parse(text, axes, &errors);
     if (!program) {
         qWarning() << "parse:" << (errors.isEmpty() ? QString() : errors.first().text());
         return false;

@@ -17,6 +17,10 @@ target_compile_definitions(tst_programcheck PRIVATE STEPDECK_SOURCE_DIR="${CMAKE
 # The check of the dialect's coordinates, tools and spindle scale (issue 29).
 stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckdialect.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+# Run from line N (issue 47 item 5): the start point the lines before it leave, the rapids to
+# it (Z up first or down last) and the check of them and of the restored spindle.
+stepdeck_add_test(tst_runfromline SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_runfromline.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The check's preview and the work coordinates it uses.
 stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpreview.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)

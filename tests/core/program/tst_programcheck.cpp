@@ -395,10 +395,12 @@ void TestProgramCheck::check_fromLine_startOrRefusal_data()
         << "X=0" << program << 11
         << QStringList{"11:1: run from line 11: the program's last block is on line 10"}
         << qint64(0);
+    // Issue 47 item 5: the run goes first to where line 1 leaves X (0), which needs X known.
     QTest::newRow("G28 skipped: the position is the machine's (unknown)")
         << ""
         << "G28 X0\nG0 X10" << 2
-        << QStringList{"2:4: X: the position is unknown, so an absolute move could go anywhere: "
+        << QStringList{"2:1: run from line 2: the move to its start point first (G53 G0 X0): X: "
+                       "the position is unknown, so an absolute move could go anywhere: "
                        "reference the axis first (G28 X) or move it relatively (G91)"}
         << qint64(1);
 }

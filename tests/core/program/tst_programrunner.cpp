@@ -32,6 +32,9 @@ private Q_SLOTS:
     void fault_boardNaksTheMove_failedAsNakAtThatLine();
     void runFromLine_afterFault_startsThereWithItsModalState();
     void runFromLine_afterM3M8_spindleAndCoolantOnBeforeTheFirstMove();
+    void runFromLine_toTheStartPoint_zUpFirstOrXYFirst_data();
+    void runFromLine_toTheStartPoint_zUpFirstOrXYFirst();
+    void runFromLine_restoredSpindleOutOfRange_refusedByTheCheckNothingSent();
     void linkLost_duringDwell_failsLinkDownAndTheTableStops();
     void abort_emisWithoutStopCommand_moveRunsOutSaidSoNextBlockNeverArrives();
 };
@@ -368,6 +371,92 @@ void TestProgramRunner::runFromLine_afterM3M8_spindleAndCoolantOnBeforeTheFirstM
     QVERIFY2(spindleOn >= 0 && coolantOn > spindleOn && move > coolantOn,
              qPrintable(QStringLiteral("%1 %2 %3").arg(spindleOn).arg(coolantOn).arg(move)));
     QCOMPARE(boardRpm(), quint32(0)); // line 5's M5
+}
+
+void TestProgramRunner::runFromLine_toTheStartPoint_zUpFirstOrXYFirst_data()
+{
+    QTest::addColumn<QByteArray>("before"); // run first: where the tool stands at the start
+    QTest::addColumn<QByteArray>("program");
+    QTest::addColumn<int>("fromLine");
+    QTest::addColumn<QStringList>("started");  // the texts of blockStarted
+    QTest::addColumn<QStringList>("arrivals"); // the board's X,Y,Z steps as each move arrived
+    // The start point is X2 Y1 Z0.5 (800, 400, 200 steps); the line run from goes to X3 (1200).
+    QTest::newRow("start above: Z up first, then X Y")
+        << QByteArray("G28 X0 Y0 Z0\n") << QByteArray("G0 Z1\nG0 X2 Y1 Z0.5\nG0 X3\n") << 3
+        << QStringList{"G53 G0 Z0.5", "G53 G0 X2 Y1", "G0 X3"}
+        << QStringList{"0,0,200", "800,400,200", "1200,400,200"};
+    QTest::newRow("start below: X Y first at the tool's height, then Z down")
+        << QByteArray("G28 X0 Y0 Z0\nG0 Z2\n") << QByteArray("G0 Z3\nG0 X2 Y1\nG0 Z0.5\nG0 X3\n")
+        << 4 << QStringList{"G53 G0 X2 Y1", "G53 G0 Z0.5", "G0 X3"}
+        << QStringList{"800,400,800", "800,400,200", "1200,400,200"};
+    // An axis already there does not move: tst_runfromline (RunFromState::approach).
+}
+
+// Issue 47 item 5: a run from line N goes first to where the lines before it leave the tool, as
+// gSender and UGS do: Z up first when the start is higher, else X Y at the tool's height and Z
+// down last. Asserted at the board (a Z on the table, 400 steps/mm) each time a move arrived;
+// the rapids are announced, and they are no blocks of the program.
+void TestProgramRunner::runFromLine_toTheStartPoint_zUpFirstOrXYFirst()
+{
+    QFETCH(QByteArray, before);
+    QFETCH(QByteArray, program);
+    QFETCH(int, fromLine);
+    QFETCH(QStringList, started);
+    QFETCH(QStringList, arrivals);
+    MachineDescription d = description();
+    d.axes.insert(2, test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, 400));
+    recreateMachine(d);
+    QVERIFY(run(before)); // referenced: the check counts only on confirmed positions
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    // The board's counts from where its reference run left them (the machine's 0).
+    const auto board = [&](Axis a) {
+        return m_elab->probe([&] { return m_elab->sim()->position(a); });
+    };
+    const qint64 x0 = board(Axis::X) - m_machine->axisStatus(d.axes.at(0)).steps;
+    const qint64 y0 = board(Axis::Y) - m_machine->axisStatus(d.axes.at(1)).steps;
+    const qint64 z0 = board(Axis::Z) - m_machine->axisStatus(d.axes.at(2)).steps;
+    QStringList texts;
+    QStringList arrived;
+    QObject guard; // the connections end before the lists they fill
+    connect(m_runner.get(), &ProgramRunner::blockStarted, &guard,
+            [&](int, const QString& text) { texts << text; });
+    // Read inside the machine's report, before the runner (connected later) sends the next move.
+    connect(m_machine.get(), &Machine::moveFinished, &guard, [&] {
+        arrived << QStringLiteral("%1,%2,%3")
+                       .arg(board(Axis::X) - x0)
+                       .arg(board(Axis::Y) - y0)
+                       .arg(board(Axis::Z) - z0);
+    });
+    QVERIFY(run(program, fromLine));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(texts, started);
+    QCOMPARE(arrived, arrivals);
+    QCOMPARE(m_runner->blocksDone(), qint64(1));
+    QVERIFY(still(*m_elab));
+}
+
+// The spindle the lines before the start left on is switched on first at their S: beyond the
+// board's 0..1000 the check refuses the run, naming it at the start line, before anything is
+// sent (the run would refuse it at the switch).
+void TestProgramRunner::runFromLine_restoredSpindleOutOfRange_refusedByTheCheckNothingSent()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("M3 S2000\nG91 G0 X1\nG0 X1\n", {"X", "Y", "A"}, &errors);
+    QVERIFY(p);
+    QVERIFY(!m_runner->start(*p, 3, &errors));
+    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.first().line, 3);
+    QVERIFY2(errors.first().message.contains("M3 S2000") &&
+                 errors.first().message.contains("out of range"),
+             qPrintable(errors.first().text()));
+    QCOMPARE(m_runner->state(), RunState::Idle);
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 3, 10000);
+    QCOMPARE(acceptedCount(*m_elab), 0);
+    QCOMPARE(boardRpm(), quint32(0));
 }
 
 QTEST_MAIN(TestProgramRunner)
