@@ -64,6 +64,7 @@ SafetyBar::SafetyBar(MachineContext* context, QAction* stop, QAction* panic, QAc
     layout->setContentsMargins(6, 6, 6, 6);
     layout->setSpacing(4);
     auto* buttons = new QHBoxLayout;
+    m_buttonRow = buttons;
     buttons->addWidget(m_stop);
     buttons->addWidget(m_panic);
     buttons->addStretch(1);
@@ -205,6 +206,11 @@ void SafetyBar::refresh()
                                .arg(colours.value(banner.severity)));
     m_banner->setProperty("severity", banner.severity);
     m_reference->setVisible(banner.offerReference);
+}
+
+void SafetyBar::addRowButton(QWidget* button)
+{
+    m_buttonRow->insertWidget(m_buttonRow->indexOf(m_reference), button, 0, Qt::AlignBottom);
 }
 
 } // namespace stepdeck::ui

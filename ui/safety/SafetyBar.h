@@ -7,6 +7,7 @@
 
 class QAction;
 class QLabel;
+class QHBoxLayout;
 class QPushButton;
 
 namespace stepdeck::ui {
@@ -44,6 +45,9 @@ public:
     void showCapabilities(const Capabilities& caps, const ModelPresentation& presentation = {});
     // A program's run and its line (ProgramPage::jobChanged): the banner says it runs or holds.
     void setJob(program::RunState state, int line);
+    // A window's button in the row of STOP and PANIC, before "Reference all" (the job's "Show
+    // jog pad", JobLayout): in that row's free width it takes no height from the jog pad.
+    void addRowButton(QWidget* button);
 
 private:
     void refresh();
@@ -55,6 +59,7 @@ private:
     QPushButton* m_stop;
     QPushButton* m_panic;
     QPushButton* m_reference;
+    QHBoxLayout* m_buttonRow = nullptr;
     ElidedLabel* m_banner;
     ElidedLabel* m_noStop;
     bool m_positionsLost = false;

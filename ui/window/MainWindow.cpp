@@ -33,6 +33,7 @@
 #include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include "window/HelpMenu.h"
+#include "window/JobLayout.h"
 #include "window/MachineShortcutGuard.h"
 #include "window/MainWindowJogArea.h"
 #include "window/ScreenBound.h"
@@ -47,6 +48,7 @@
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDockWidget>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -106,6 +108,9 @@ MainWindow::MainWindow(GamepadDevice* gamepad, QWidget* parent)
     v->addWidget(m_safety);
     // The jog panel as high as it needs, unless the operator drags the Program dock's
     // separator up: then it scrolls below STOP, PANIC and the banner (issue 47 item 13).
+    // During a job the pad's room is the program's; this brings it back by hand (JobLayout).
+    m_jobPadToggle = new QPushButton(central);
+    m_safety->addRowButton(m_jobPadToggle);
     m_jogArea = new JogArea(m_jogPanel, central);
     v->addWidget(m_jogArea, 1);
     setCentralWidget(central);
@@ -211,6 +216,10 @@ void MainWindow::buildWorkspaces()
     connect(m_context, &MachineContext::machineChanged, m_workspaces, &Workspaces::fitContent,
             Qt::QueuedConnection);
     m_workspaces->initialise();
+    m_jobLayout =
+        new JobLayout(this, m_jogArea, dockOf(m_programPage), m_workspaces, m_jobPadToggle);
+    connect(m_programPage, &ProgramPage::jobChanged, m_jobLayout,
+            [this](program::RunState state) { m_jobLayout->setJob(state); });
     // A page that cannot have its room says so in the message line (issue 31), and the
     // message ends when everything fits again.
     m_fit = new WorkspaceFit(this);

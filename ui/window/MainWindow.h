@@ -6,6 +6,7 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QPushButton;
 
 namespace stepdeck::ui {
 
@@ -17,6 +18,7 @@ class GamepadJogSource;
 class GamepadPanel;
 class HelpMenu;
 class InputProgramsPage;
+class JobLayout;
 class JogArea;
 class JogController;
 class JogPanel;
@@ -65,6 +67,8 @@ public:
     // The jog panel's room in the centre: scrolls when the operator gave its height to the
     // Program dock (issue 47 item 13).
     JogArea* jogArea() const { return m_jogArea; }
+    // While a job runs the Program dock has the jog pad's room (issue 47 item 15).
+    JobLayout* jobLayout() const { return m_jobLayout; }
     HelpMenu* helpMenu() const { return m_helpMenu; }
     JogController* jogController() const { return m_jog; }
     KeyboardJog* keyboardJog() const { return m_keyboard; }
@@ -158,6 +162,8 @@ private:
     MachineShortcutGuard* m_machineKeys = nullptr;
     JogPanel* m_jogPanel = nullptr;
     JogArea* m_jogArea = nullptr;
+    JobLayout* m_jobLayout = nullptr;
+    QPushButton* m_jobPadToggle = nullptr;
     HelpMenu* m_helpMenu = nullptr;
     PositionPanel* m_position = nullptr;
     ReferencePanel* m_reference = nullptr;

@@ -40,11 +40,24 @@ void JogArea::beginDrag()
     changed();
 }
 
+void JogArea::setJobCollapsed(bool collapsed)
+{
+    if (collapsed == m_jobCollapsed)
+        return;
+    m_jobCollapsed = collapsed;
+    changed();
+}
+
 void JogArea::endDrag()
 {
     if (!m_dragged)
         return;
     m_dragged = false;
+    // During a job the drag moved the job's split only; the operator's room stays for its end.
+    if (m_jobCollapsed) {
+        changed();
+        return;
+    }
     // What the drag left: the whole panel, or the operator's share of it. A press that moved
     // nothing (another separator, a click) changes nothing.
     if (height() != m_heightAtDrag) {
@@ -66,11 +79,13 @@ QSize JogArea::minimumSizeHint() const
     if (!panel)
         return QScrollArea::minimumSizeHint();
     const int need = neededHeight();
-    const int least = m_dragged ? 0 : m_room == kWhole ? need : qMin(m_room, need);
+    const int least = m_dragged || m_jobCollapsed ? 0
+                      : m_room == kWhole          ? need
+                                                  : qMin(m_room, need);
     int wide = qMax(panel->minimumSizeHint().width(), panel->minimumWidth());
     // Short of the panel the scroll bar shows beside it: room for both, nothing cut on the
     // right (no scrolling sideways).
-    if (m_dragged || least < need)
+    if (m_dragged || m_jobCollapsed || least < need)
         wide += verticalScrollBar()->sizeHint().width();
     return QSize(wide, least) + QSize(2 * frameWidth(), 2 * frameWidth());
 }

@@ -29,12 +29,19 @@ public:
     void setRoom(int height);
     // The operator gave some of the panel's height to the Program dock: the panel scrolls, and
     // that is no "window too small" (WorkspaceFit).
-    bool isShortByChoice() const { return m_room != kWhole && m_room < neededHeight(); }
+    bool isShortByChoice() const
+    {
+        return m_jobCollapsed || (m_room != kWhole && m_room < neededHeight());
+    }
     // A dock separator is being dragged: any height down to none, until endDrag() keeps the
     // height the area has then.
     void beginDrag();
     void endDrag();
     bool isDragged() const { return m_dragged; }
+    // A job has the pad's room (JobLayout, issue 47 item 15): any height down to none, the
+    // operator's room() kept for the job's end.
+    void setJobCollapsed(bool collapsed);
+    bool isJobCollapsed() const { return m_jobCollapsed; }
     // The panel's whole height (what it takes not to scroll).
     int neededHeight() const;
 
@@ -51,6 +58,7 @@ private:
 
     int m_room = kWhole;
     bool m_dragged = false;
+    bool m_jobCollapsed = false;
     int m_heightAtDrag = 0;
 };
 

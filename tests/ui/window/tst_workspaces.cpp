@@ -22,12 +22,14 @@
 #include "program/ProgramPathView.h"
 #include "program/ProgramPreviewView.h"
 #include "safety/SafetyBar.h"
+#include "window/JobLayout.h"
 #include "window/MainWindowJogArea.h"
 #include "window/Translations.h"
 #include "window/WorkspaceFit.h"
 #include "window/Workspaces.h"
 #include <QComboBox>
 #include <QDockWidget>
+#include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -282,6 +284,8 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
     // Issue 47: the same workspace while the job runs (the banner names the run and its line,
     // the spindle is on), then STOP.
     ui::ProgramPage* page = window()->programPage();
+    const int programIdle = dock("programDock")->height();
+    const int workspaceHeight = window()->centralWidget()->height() + programIdle;
     QTRY_VERIFY(page->controls()->runButton()->isEnabled());
     page->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(page->runner() &&
@@ -289,16 +293,35 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
                                  page->runner()->currentLine() >= 5 && m_rig.elab->moving(Axis::Z),
                              20000);
     QTRY_VERIFY(window()->safetyBar()->bannerSeverity() == QLatin1String("job"));
-    // The run's entries (the running line, the tool) had their room: nothing moved.
-    QCOMPARE(path->legendRect(), legendIdle);
-    QCOMPARE(path->drawingRect(), drawingIdle);
+    // Issue 47 item 15: the job has the jog pad's room. The toolpath is at least half the Run
+    // workspace's height (the centre and the Program dock below it), its legend still beside it.
+    QVERIFY(window()->jobLayout()->isJobLayout());
+    QVERIFY(!window()->jobLayout()->isPadShown());
+    QTRY_VERIFY2(
+        path->height() * 2 >= workspaceHeight,
+        qPrintable(
+            QStringLiteral("toolpath %1 high of %2").arg(path->height()).arg(workspaceHeight)));
+    QVERIFY(!path->legendRect().intersects(path->drawingRect()));
     saveShot(QStringLiteral("run-%1x%2-running%3.png")
                  .arg(screen.width())
                  .arg(screen.height() + kPanelAndTitleBar)
                  .arg(language == QLatin1String("en") ? QString() : QLatin1Char('-') + language));
+    // The pad comes back only by the operator's hand (a touch-off during a hold), and goes again.
+    auto* toggle = window()->findChild<QPushButton*>(QStringLiteral("jobJogPadToggle"));
+    QVERIFY(toggle && toggle->isVisible());
+    toggle->click();
+    QVERIFY(window()->jobLayout()->isPadShown());
+    QTRY_VERIFY(!jog->isShortByChoice() && !jog->verticalScrollBar()->isVisible());
+    toggle->click();
+    QTRY_VERIFY(path->height() * 2 >= workspaceHeight);
     window()->safetyBar()->stopButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(!page->isRunning(), 20000);
     QTRY_VERIFY_WITH_TIMEOUT(m_rig.elab->still(), 10000);
+    // The job over, the layout is the operator's again: the whole pad, the dock as it was.
+    QTRY_VERIFY(!window()->jobLayout()->isJobLayout());
+    QVERIFY(!toggle->isVisible());
+    QTRY_COMPARE(dock("programDock")->height(), programIdle);
+    QVERIFY(!jog->isShortByChoice());
     ui::translations::install(qApp, QStringLiteral("en"));
 }
 
