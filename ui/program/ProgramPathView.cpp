@@ -52,11 +52,11 @@ ProgramPathView::ProgramPathView(QWidget* parent)
     m_kind = m_chosen;
     m_orientation = PreviewOrientation::of(m_kind);
     connect(m_viewSelector, qOverload<int>(&QComboBox::activated), this, [this](int index) {
-        const int data = m_viewSelector->itemData(index).toInt();
-        if (data == kOrbitItem)
+        const int item = m_viewSelector->itemData(index).toInt();
+        if (item == kOrbitItem)
             updateSelector(); // not a view to choose
         else
-            chooseView(PreviewViewKind(data));
+            chooseView(PreviewViewKind(item));
     });
     connect(m_fit, &QToolButton::clicked, this, &ProgramPathView::fitToView);
     updateSelector();

@@ -204,11 +204,11 @@ ModelPresentation presentation()
             QStringLiteral("machineState"),
             QCoreApplication::translate("stepdeck::elab::Presentation",
                                         "Machine state (RequestMachineState)"),
-            16, bitList(kMachineBits)};
+            16, bitList(kMachineBits), std::nullopt};
         StatusWordInfo axeWord{QStringLiteral("axeState"),
                                QCoreApplication::translate("stepdeck::elab::Presentation",
                                                            "Axis state (RequestAxeState)"),
-                               8, bitList(kAxeBits)};
+                               8, bitList(kAxeBits), std::nullopt};
         return QList<StatusWordInfo>{machineWord, axeWord};
     };
     p.formatTraffic = [](const QByteArray& bytes) { return toMnemonics(bytes); };
