@@ -54,7 +54,10 @@ void MachineStopWatch::watch(const machine::Machine* machine,
         if (!session || it.value() == 0)
             continue;
         const QString id = it.key();
-        m_watched.insert(id, Watched{session, it.value()});
+        Watched watched;
+        watched.session = session;
+        watched.stop = it.value();
+        m_watched.insert(id, watched);
         m_connections << connect(session, &ControllerSession::requestFinished, this,
                                  [this, id](const CommandResult& r) { onResult(id, r); });
         m_connections << connect(session, &ControllerSession::statusChanged, this,

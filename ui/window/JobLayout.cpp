@@ -10,13 +10,22 @@ namespace stepdeck::ui {
 using program::RunState;
 
 JobLayout::JobLayout(QMainWindow* window, JogArea* jogArea, QDockWidget* programDock,
-                     Workspaces* workspaces, QPushButton* toggle)
+                     Workspaces* workspaces, QPushButton* toggle, QWidget* above)
     : QObject(window), m_window(window), m_jogArea(jogArea), m_programDock(programDock),
-      m_workspaces(workspaces), m_toggle(toggle)
+      m_workspaces(workspaces), m_toggle(toggle), m_above(above)
 {
     m_toggle->setObjectName(QStringLiteral("jobJogPadToggle"));
     m_toggle->setFocusPolicy(Qt::NoFocus); // the arrows keep jogging
     connect(m_toggle, &QPushButton::clicked, this, [this] { showPad(!m_padShown); });
+    // As wide as its longer text, so that it does not move when its text changes.
+    int wide = 0;
+    for (const bool shown : {false, true}) {
+        m_padShown = shown;
+        updateToggle();
+        wide = qMax(wide, m_toggle->sizeHint().width());
+    }
+    m_padShown = false;
+    m_toggle->setMinimumWidth(wide);
     updateToggle();
 }
 
@@ -35,9 +44,13 @@ void JobLayout::setJob(RunState state)
         m_active = true;
         m_padShown = false;
         m_dockHeightBefore = m_programDock->height();
+        // With the pad's room gone the centre stands at its minimum, which would squeeze STOP's
+        // row and the banner and move them under the operator's hand: they keep their height.
+        m_above->setMinimumHeight(m_above->height());
         give();
     } else {
         m_active = false;
+        m_above->setMinimumHeight(0);
         m_jogArea->setJobCollapsed(false);
         if (m_workspaces->current() == Workspaces::Workspace::Run)
             restoreDock();
