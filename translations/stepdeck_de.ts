@@ -3122,6 +3122,14 @@
             <source>not an axis of its controller (X, Y, Z, U, axis5 … or a name the controller gives)</source>
             <translation>keine Achse ihrer Steuerung (X, Y, Z, U, axis5 … oder ein Name, den die Steuerung vergibt)</translation>
         </message>
+        <message>
+            <source>must be "clamp" (run a feed or S above the machine's highest at that highest, the default) or "refuse" (refuse it in the check)</source>
+            <translation>muss "clamp" (ein Vorschub oder S über dem Höchsten der Maschine läuft mit diesem Höchsten, Vorgabe) oder "refuse" (die Prüfung weist ihn ab) sein</translation>
+        </message>
+        <message>
+            <source>must be "table" (G43 takes the tool table's lengths, the default) or "touchOff" (Z is touched off after each tool change)</source>
+            <translation>muss "table" (G43 nimmt die Längen der Werkzeugtabelle, Vorgabe) oder "touchOff" (Z wird nach jedem Werkzeugwechsel angetastet) sein</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineSetup</name>
@@ -4357,6 +4365,64 @@
             <source>the run holds inside a repeat, whose passes a check from here cannot count: the new offsets cannot be checked for the rest</source>
             <translation>der Lauf hält innerhalb einer Wiederholung, deren Durchläufe eine Prüfung ab hier nicht zählen kann: die neuen Nullpunkte lassen sich für den Rest nicht prüfen</translation>
         </message>
+        <message>
+            <source>tool lengths by touch-off (the machine file's toolLength): G43 adds no length; set the work Z for the tool in the spindle before the run</source>
+            <translation>Werkzeuglängen durch Antasten (toolLength der Maschinendatei): G43 addiert keine Länge; den Werkstück-Nullpunkt von Z vor dem Lauf für das Werkzeug in der Spindel setzen</translation>
+        </message>
+        <message numerus="yes">
+            <source>tool lengths by touch-off (the machine file's toolLength): the run holds at %n tool change(s) (M6, line(s) %1) until the work Z is set for the new tool; G43 adds no length</source>
+            <translation>
+                <numerusform>Werkzeuglängen durch Antasten (toolLength der Maschinendatei): der Lauf hält an %n Werkzeugwechsel (M6, Zeile %1), bis der Werkstück-Nullpunkt von Z für das neue Werkzeug gesetzt ist; G43 addiert keine Länge</numerusform>
+                <numerusform>Werkzeuglängen durch Antasten (toolLength der Maschinendatei): der Lauf hält an %n Werkzeugwechseln (M6, Zeilen %1), bis der Werkstück-Nullpunkt von Z für das neue Werkzeug gesetzt ist; G43 addiert keine Länge</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 (also on %n more line(s))</source>
+            <translation>
+                <numerusform>%1 (auch in %n weiteren Zeile)</numerusform>
+                <numerusform>%1 (auch in %n weiteren Zeilen)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>below its %1: feed mode has no ramp</source>
+            <translation>unter ihrer %1: der Vorschubmodus hat keine Rampe</translation>
+        </message>
+        <message>
+            <source>%1 at most</source>
+            <translation>höchstens %1</translation>
+        </message>
+        <message>
+            <source>above the %1 steps/s controller "%2" takes (%3)</source>
+            <translation>über den %1 Schritten/s, die Steuerung "%2" annimmt (%3)</translation>
+        </message>
+        <message>
+            <source>G93 F%1 (the move in %2 s) moves %3 at %4 steps/s, %5: the move takes %6 s</source>
+            <translation>G93 F%1 (die Bewegung in %2 s) bewegt %3 mit %4 Schritten/s, %5: die Bewegung dauert %6 s</translation>
+        </message>
+        <message>
+            <source>F%1 moves %2 at %3 steps/s, %4: the move runs at F%5</source>
+            <translation>F%1 bewegt %2 mit %3 Schritten/s, %4: die Bewegung läuft mit F%5</translation>
+        </message>
+        <message>
+            <source>F%1 is %2 steps/s on %3, %4: %3 runs at F%5</source>
+            <translation>F%1 sind %2 Schritte/s auf %3, %4: %3 läuft mit F%5</translation>
+        </message>
+        <message>
+            <source>S%1 runs at S%2, the spindle's maxRpm (the machine file's spindle scale)</source>
+            <translation>S%1 läuft mit S%2, der maxRpm der Spindel (Spindelskala der Maschinendatei)</translation>
+        </message>
+        <message>
+            <source>run from line %1: the move to its start point first (%2): %3</source>
+            <translation>Start ab Zeile %1: zuerst die Fahrt zu ihrem Startpunkt (%2): %3</translation>
+        </message>
+        <message>
+            <source>run from line %1: %2 first, as the lines before it left it: %3</source>
+            <translation>Start ab Zeile %1: zuerst %2, wie die Zeilen davor es hinterließen: %3</translation>
+        </message>
+        <message>
+            <source>F%1 runs at F%2, the highest this move can run at in the contour stream of controller "%3" (%4 ticks/s, one step per tick at most)</source>
+            <translation>F%1 läuft mit F%2, dem Höchsten, mit dem diese Bewegung im Konturstrom von Steuerung "%3" laufen kann (%4 Takte/s, höchstens ein Schritt je Takt)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramCoordinates</name>
@@ -4693,10 +4759,6 @@
             <translation>die Zeile ist länger als %1 Zeichen</translation>
         </message>
         <message>
-            <source>nothing may follow the program's end (line %1)</source>
-            <translation>nach dem Programmende (Zeile %1) darf nichts folgen</translation>
-        </message>
-        <message>
             <source>repeats nest deeper than %1</source>
             <translation>Wiederholungen sind tiefer als %1 verschachtelt</translation>
         </message>
@@ -4723,6 +4785,39 @@
         <message>
             <source>the program opened with "%" (line %1) ends with neither "%" nor M2/M30</source>
             <translation>das mit „%“ (Zeile %1) eröffnete Programm endet weder mit „%“ noch mit M2/M30</translation>
+        </message>
+        <message>
+            <source>%1 is a GRBL command (a setting, the alarm lock, a report or a jog): not run</source>
+            <translation>%1 ist ein GRBL-Befehl (eine Einstellung, die Alarmsperre, ein Bericht oder ein Tippbetrieb): wird nicht ausgeführt</translation>
+        </message>
+        <message>
+            <source>$H cannot run here</source>
+            <translation>$H kann hier nicht laufen</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n line(s) after the program's end are not read, as in LinuxCNC (nothing after M2, M30 or the closing "%" runs)</source>
+            <translation>
+                <numerusform>%n Zeile nach dem Programmende wird nicht gelesen, wie in LinuxCNC (nichts nach M2, M30 oder dem schließenden "%" läuft)</numerusform>
+                <numerusform>%n Zeilen nach dem Programmende werden nicht gelesen, wie in LinuxCNC (nichts nach M2, M30 oder dem schließenden "%" läuft)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>block delete is on: %n line(s) starting with "/" are skipped, this one the first (switch it off to run them)</source>
+            <translation>
+                <numerusform>Satz ausblenden ist ein: %n Zeile, die mit "/" beginnt, wird übersprungen, diese (ausschalten, um sie auszuführen)</numerusform>
+                <numerusform>Satz ausblenden ist ein: %n Zeilen, die mit "/" beginnen, werden übersprungen, diese als erste (ausschalten, um sie auszuführen)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 on %n arc(s), this one the first: an offset along the plane's normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; any other value is refused)</source>
+            <translation>
+                <numerusform>%1 an %n Bogen, diesem: ein Versatz entlang der Normalen der Ebene, der 0 ist, wird weggelassen, wie GRBL es tut (LinuxCNC weist ihn ab; jeder andere Wert wird abgewiesen)</numerusform>
+                <numerusform>%1 an %n Bögen, diesem als erstem: ein Versatz entlang der Normalen der Ebene, der 0 ist, wird weggelassen, wie GRBL es tut (LinuxCNC weist ihn ab; jeder andere Wert wird abgewiesen)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>more GRBL commands follow; only the first %1 are named</source>
+            <translation>weitere GRBL-Befehle folgen; nur die ersten %1 sind genannt</translation>
         </message>
     </context>
     <context>
@@ -4888,6 +4983,26 @@
             <source>The new offsets and tools are taken; no move is left to run.</source>
             <translation>Die neuen Nullpunkte und Werkzeuge sind übernommen; keine Bewegung bleibt übrig.</translation>
         </message>
+        <message>
+            <source>the run holds on its way to the start point of the line it runs from, which new offsets would move: put them back to resume, or stop</source>
+            <translation>der Lauf hält auf dem Weg zum Startpunkt der Zeile, ab der er läuft, den neue Verschiebungen verschieben würden: sie zurücksetzen, um fortzusetzen, oder stoppen</translation>
+        </message>
+        <message>
+            <source>%1, then set the work Z for it (Zero Z)</source>
+            <translation>%1, dann den Werkstück-Nullpunkt von Z dafür setzen (Z nullen)</translation>
+        </message>
+        <message>
+            <source>Not resumed: tool %1 takes its length from a touch-off, and the work Z of %2 was not set since the run held: set it for tool %1 (Zero Z on the position display)</source>
+            <translation>Nicht fortgesetzt: Werkzeug %1 erhält seine Länge durch Antasten, und der Werkstück-Nullpunkt von Z in %2 wurde seit dem Halt nicht gesetzt: ihn für Werkzeug %1 setzen (Z nullen in der Positionsanzeige)</translation>
+        </message>
+        <message>
+            <source>; or, with the tool Z was set for still in, resume keeping Z</source>
+            <translation>; oder, wenn noch das Werkzeug eingesetzt ist, für das Z gesetzt wurde, mit „Z behalten“ fortsetzen</translation>
+        </message>
+        <message>
+            <source>Not resumed keeping Z: tool %1 follows tool %2, whose length it does not have: set the work Z for tool %1 first</source>
+            <translation>Nicht mit Z fortgesetzt: Werkzeug %1 folgt auf Werkzeug %2, dessen Länge es nicht hat: zuerst den Werkstück-Nullpunkt von Z für Werkzeug %1 setzen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramSourceReader</name>
@@ -4913,6 +5028,26 @@
         <message>
             <source>tool %1 loaded</source>
             <translation>Werkzeug %1 eingesetzt</translation>
+        </message>
+        <message>
+            <source>%1 to %2</source>
+            <translation>%1 nach %2</translation>
+        </message>
+        <message>
+            <source>%1 up to %2</source>
+            <translation>%1 hoch auf %2</translation>
+        </message>
+        <message>
+            <source>%1 down to %2</source>
+            <translation>%1 runter auf %2</translation>
+        </message>
+        <message>
+            <source>%1, then %2</source>
+            <translation>%1, dann %2</translation>
+        </message>
+        <message>
+            <source>%1 at rapid</source>
+            <translation>%1 im Eilgang</translation>
         </message>
     </context>
     <context>
@@ -6141,6 +6276,25 @@ W1500</translation>
         <message>
             <source>The program of input %1 is stored in the controller.</source>
             <translation>Das Programm von Eingang %1 ist in der Steuerung gespeichert.</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::ui::JobLayout</name>
+        <message>
+            <source>Hide jog pad</source>
+            <translation>Tippfeld ausblenden</translation>
+        </message>
+        <message>
+            <source>Show jog pad</source>
+            <translation>Tippfeld zeigen</translation>
+        </message>
+        <message>
+            <source>Give the jog pad's room to the program's lines and toolpath until the job ends.</source>
+            <translation>Den Platz des Tippfelds bis zum Ende des Auftrags den Programmzeilen und der Werkzeugbahn geben.</translation>
+        </message>
+        <message>
+            <source>The job has the jog pad's room. Show it to jog during a hold (a touch-off at a tool change); the keyboard jog works either way.</source>
+            <translation>Der Auftrag hat den Platz des Tippfelds. Es zeigen, um während eines Halts zu tippen (Antasten beim Werkzeugwechsel); das Tippen mit der Tastatur geht in jedem Fall.</translation>
         </message>
     </context>
     <context>
@@ -7627,6 +7781,14 @@ W1500</translation>
             <source>F </source>
             <translation>F </translation>
         </message>
+        <message>
+            <source>Block delete (/)</source>
+            <translation>Satz ausblenden (/)</translation>
+        </message>
+        <message>
+            <source>On: lines starting with "/" are skipped (LinuxCNC's block delete, on as LinuxCNC starts). Off: they run without the "/". The program is checked again when it changes; a run keeps what its check read.</source>
+            <translation>Ein: Zeilen, die mit "/" beginnen, werden übersprungen (Satz ausblenden wie in LinuxCNC, eingeschaltet wie beim Start von LinuxCNC). Aus: sie laufen ohne das "/". Das Programm wird bei einer Änderung neu geprüft; ein Lauf behält, was seine Prüfung las.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramErrorList</name>
@@ -7859,6 +8021,21 @@ W1500</translation>
             <source>Feed hold in line %1: the tool stands on its path; Resume goes on from there.</source>
             <translation>Vorschub-Halt in Zeile %1: das Werkzeug steht auf seiner Bahn; Fortsetzen fährt von dort weiter.</translation>
         </message>
+        <message numerus="yes">
+            <source>Checked against the machine: no errors; %n note(s), line %1: %2</source>
+            <translation>
+                <numerusform>Gegen die Maschine geprüft: keine Fehler; %n Hinweis, Zeile %1: %2</numerusform>
+                <numerusform>Gegen die Maschine geprüft: keine Fehler; %n Hinweise, Zeile %1: %2</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Moves first, to where the lines before it leave the tool: %1.</source>
+            <translation>Fährt zuerst dorthin, wo die Zeilen davor das Werkzeug lassen: %1.</translation>
+        </message>
+        <message>
+            <source>Then moves to where the lines before it leave the tool: %1.</source>
+            <translation>Fährt dann dorthin, wo die Zeilen davor das Werkzeug lassen: %1.</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::ProgramPathView</name>
@@ -8051,6 +8228,14 @@ W1500</translation>
         <message>
             <source>Line %1 (M0): %2</source>
             <translation>Zeile %1 (M0): %2</translation>
+        </message>
+        <message>
+            <source>Keep Z</source>
+            <translation>Z behalten</translation>
+        </message>
+        <message>
+            <source>Go on with the work Z as it is: only when the tool in the spindle is the one Z was set for. Another tool needs its touch-off (Zero Z).</source>
+            <translation>Mit dem Werkstück-Nullpunkt von Z weiterfahren, wie er ist: nur wenn das Werkzeug in der Spindel das ist, für das Z gesetzt wurde. Ein anderes Werkzeug muss angetastet werden (Z nullen).</translation>
         </message>
     </context>
     <context>

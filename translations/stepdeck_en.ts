@@ -32,6 +32,47 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::ProgramCheck</name>
+        <message numerus="yes">
+            <source>tool lengths by touch-off (the machine file's toolLength): the run holds at %n tool change(s) (M6, line(s) %1) until the work Z is set for the new tool; G43 adds no length</source>
+            <translation>
+                <numerusform>tool lengths by touch-off (the machine file's toolLength): the run holds at %n tool change (M6, line %1) until the work Z is set for the new tool; G43 adds no length</numerusform>
+                <numerusform>tool lengths by touch-off (the machine file's toolLength): the run holds at %n tool changes (M6, lines %1) until the work Z is set for the new tool; G43 adds no length</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 (also on %n more line(s))</source>
+            <translation>
+                <numerusform>%1 (also on %n more line)</numerusform>
+                <numerusform>%1 (also on %n more lines)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::program::ProgramParser</name>
+        <message numerus="yes">
+            <source>%n line(s) after the program's end are not read, as in LinuxCNC (nothing after M2, M30 or the closing "%" runs)</source>
+            <translation>
+                <numerusform>%n line after the program's end is not read, as in LinuxCNC (nothing after M2, M30 or the closing "%" runs)</numerusform>
+                <numerusform>%n lines after the program's end are not read, as in LinuxCNC (nothing after M2, M30 or the closing "%" runs)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>block delete is on: %n line(s) starting with "/" are skipped, this one the first (switch it off to run them)</source>
+            <translation>
+                <numerusform>block delete is on: %n line starting with "/" is skipped, this one (switch it off to run it)</numerusform>
+                <numerusform>block delete is on: %n lines starting with "/" are skipped, this one the first (switch it off to run them)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 on %n arc(s), this one the first: an offset along the plane's normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; any other value is refused)</source>
+            <translation>
+                <numerusform>%1 on %n arc, this one: an offset along the plane's normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; any other value is refused)</numerusform>
+                <numerusform>%1 on %n arcs, this one the first: an offset along the plane's normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; any other value is refused)</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::ui::DiffDialog</name>
         <message numerus="yes">
             <source>%1 changes %n value(s) (highlighted).</source>
@@ -89,6 +130,13 @@
             <translation>
                 <numerusform>Finished: %n block run.</numerusform>
                 <numerusform>Finished: %n blocks run.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Checked against the machine: no errors; %n note(s), line %1: %2</source>
+            <translation>
+                <numerusform>Checked against the machine: no errors; %n note, line %1: %2</numerusform>
+                <numerusform>Checked against the machine: no errors; %n notes, line %1: %2</numerusform>
             </translation>
         </message>
     </context>

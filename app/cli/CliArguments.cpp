@@ -407,6 +407,8 @@ QString programHelp()
         "                              failing line, 130 on Ctrl-C; M0 waits for Enter\n"
         "                              (without a terminal: exit 2 unless --skip-pauses);\n"
         "                              M1 too while --optional-stops is on (the default)\n"
+        "      [--block-delete on|off] lines starting with \"/\" are skipped while on (the\n"
+        "                              default, as LinuxCNC), run while off\n"
         "                              --dry-run prints lines, extents and the estimated\n"
         "                              duration and moves nothing\n"
         "                              --feed-override 10..200: contours at that share of F;\n"

@@ -101,6 +101,19 @@ void printProgramErrors(const QString& path, const QList<program::ProgramError>&
         printProgress(QStringLiteral("%1:%2").arg(path, e.text()));
 }
 
+void printProgramNotes(const QString& path, const QList<program::ProgramError>& notes, bool json)
+{
+    for (const program::ProgramError& n : notes) {
+        if (json)
+            printJson(QJsonObject{
+                {"event", "note"}, {"line", n.line}, {"column", n.column}, {"message", n.message}});
+        else
+            printProgress(
+                CliText::tr("%1:%2:%3: note: %4")
+                    .arg(path, QString::number(n.line), QString::number(n.column), n.message));
+    }
+}
+
 void printProgramPreview(const QString& path, const program::ProgramPreview& preview,
                          const machine::MachineDescription& description, bool json)
 {
@@ -119,7 +132,8 @@ void printProgramPreview(const QString& path, const program::ProgramPreview& pre
                               {"blocks", preview.blocksRun},
                               {"estimatedSeconds", preview.estimatedSeconds},
                               {"extents", extents},
-                              {"motion", preview.motionNote}});
+                              {"motion", preview.motionNote},
+                              {"tools", preview.toolNote}});
         return;
     }
     printLine(CliText::tr("%1: %2 lines, %3 blocks to run")
@@ -142,6 +156,8 @@ void printProgramPreview(const QString& path, const program::ProgramPreview& pre
                   .arg(durationText(preview.estimatedSeconds)));
     if (!preview.motionNote.isEmpty())
         printLine(preview.motionNote);
+    if (!preview.toolNote.isEmpty()) // tool lengths by touch-off (issue 50 item 4)
+        printLine(preview.toolNote);
 }
 
 ProgramReport::ProgramReport(ProgramRunner& runner, int lines, bool json)

@@ -15,6 +15,11 @@ namespace stepdeck::cli {
 // editor can jump to it); FILE as it was given on the command line.
 void printProgramErrors(const QString& path, const QList<program::ProgramError>& errors);
 
+// The check's notes (ProgramCheckResult::notes, issue 50: a feed above the machine's highest
+// runs at it) as "FILE:LINE:COL: note: message" on stderr, the compilers' form of a note; with
+// --json one {"event": "note", "line", "column", "message"} object each on stdout.
+void printProgramNotes(const QString& path, const QList<program::ProgramError>& notes, bool json);
+
 // --dry-run: lines, blocks, extents per axis in its unit, the estimated duration; one JSON
 // object with --json.
 void printProgramPreview(const QString& path, const program::ProgramPreview& preview,

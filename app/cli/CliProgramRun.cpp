@@ -38,7 +38,10 @@ struct RunRequest
     bool dryRun = false;
     bool skipPauses = false;
     bool optionalStops = true; // M1 holds like M0 (ProgramRunner::setOptionalStops)
-    int feedOverride = 100;    // percent (ProgramRunner::setFeedOverride)
+    // LinuxCNC's block delete: "/" lines skipped (ProgramParser::setBlockDelete); read with the
+    // file, so the run runs what the check read.
+    bool blockDelete = true;
+    int feedOverride = 100; // percent (ProgramRunner::setFeedOverride)
     // The window keeps these per machine; the CLI takes them per call (issue 29).
     program::ToolTable tools;           // --tool-table FILE (LinuxCNC's tool.tbl)
     program::CoordinateSystems systems; // --offsets "G54:X=10,Y=5;G55:X=20" (G54 active)
@@ -136,7 +139,8 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
     if (o.args.size() != 1)
         return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
                                           "[--from-line N] [--skip-pauses] "
-                                          "[--optional-stops on|off] [--feed-override PERCENT] "
+                                          "[--optional-stops on|off] [--block-delete on|off] "
+                                          "[--feed-override PERCENT] "
                                           "[--tool-table FILE] [--offsets G54:X=N,...;G55:...] "
                                           "[--reference])"));
     r->path = o.args.constFirst();
@@ -148,6 +152,12 @@ Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
             return Outcome::usage(
                 CliText::tr("run --optional-stops takes on or off, got '%1'").arg(*stops));
         r->optionalStops = *stops == QLatin1String("on");
+    }
+    if (const std::optional<QString> skip = o.value("block-delete")) {
+        if (*skip != QLatin1String("on") && *skip != QLatin1String("off"))
+            return Outcome::usage(
+                CliText::tr("run --block-delete takes on or off, got '%1'").arg(*skip));
+        r->blockDelete = *skip == QLatin1String("on");
     }
     if (const std::optional<QString> feed = o.value("feed-override");
         feed && numbers::parseInt(*feed, 10, 200, &r->feedOverride) != NumberError::None)
@@ -170,6 +180,7 @@ Outcome readWorkedOut(const RunRequest& r, const machine::MachineDescription& d,
     context.coordinateSystems = r.systems;
     context.activeSystem = r.activeSystem;
     context.subroutineFolder = d.subroutineFolderPath;
+    context.blockDelete = r.blockDelete;
     QList<program::ProgramError> errors;
     const std::optional<program::ProgramExpansion::Result> expanded =
         program::ProgramExpansion::expand(program::ProgramSource::file(r.path), context, &errors);
@@ -208,6 +219,7 @@ Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, P
         return readWorkedOut(r, d, axisNames, out);
     // Streamed (issue 29): only the parser's index stays in memory, whatever the length.
     program::ProgramParser parser(axisNames);
+    parser.setBlockDelete(r.blockDelete);
     TerminalProgress progress(CliText::tr("reading %1").arg(r.path));
     const qint64 size = file.size();
     while (!file.atEnd()) {
@@ -232,6 +244,36 @@ Outcome readProgram(const RunRequest& r, const machine::MachineDescription& d, P
     return Outcome::success();
 }
 
+// Tool lengths by touch-off (issue 50 item 4): an M6 of another tool than the run's M6 before it
+// holds until the work Z is set for that tool, which the CLI cannot do (no position display, no
+// MDI while a program runs), so such a run is refused before anything is opened, whatever would
+// answer the prompts (a terminal, --skip-pauses). The run's first M6, and an M6 of the tool the
+// one before it loaded, go on with the work Z as it is (ProgramRunner::resumeSameTool): as the
+// window's Keep Z, on Enter or with --skip-pauses, for a shop that touched off before the run.
+Outcome refuseTouchOffs(const Program& p, const RunRequest& r, const machine::MachineDescription& d)
+{
+    if (r.dryRun || d.toolLength != machine::ToolLength::TouchOff ||
+        !d.axis(program::ProgramCoordinates::toolAxis()))
+        return Outcome::success();
+    program::ProgramReader reader(p);
+    std::optional<int> before;
+    for (int i = std::max(0, reader.firstBlockAtLine(r.fromLine));
+         const program::ProgramBlock* at = reader.at(i); ++i) {
+        if (at->kind != program::BlockKind::ToolChange)
+            continue;
+        if (before && *before != at->number)
+            return Outcome::usage(
+                CliText::tr("run: line %1 holds M6 \"%2\" with tool lengths by touch-off (the "
+                            "machine file's toolLength): the run would wait there until the "
+                            "work Z is set for tool %3, which the CLI cannot do; run it in the "
+                            "window, or from the line after it (--from-line) once Z is set for "
+                            "tool %3")
+                    .arg(QString::number(at->line), at->prompt, QString::number(at->number)));
+        before = at->number;
+    }
+    return Outcome::success();
+}
+
 // M0 (M6, and M1 with optional stops on) waits for Enter on a terminal; without one it would wait
 // forever or read a script's input as the operator's, so such a run is refused before anything is
 // opened.
@@ -251,11 +293,15 @@ Outcome refusePausesWithoutTerminal(const Program& p, const RunRequest& r)
                                               "one (--optional-stops off passes it, --skip-pauses "
                                               "runs on without stopping)")
                                       .arg(b.line));
+        // An M6 names its tool and the line's comment ("Load tool 2 (6 mm end mill)").
+        const QString what = b.kind == program::BlockKind::ToolChange
+                                 ? QStringLiteral("M6 \"%1\"").arg(b.prompt)
+                                 : program::blockWord(b.kind);
         return Outcome::usage(CliText::tr("run: line %1 holds %2, which waits for Enter on a "
                                           "terminal, and stdin is not one (--skip-pauses "
                                           "runs on without stopping there)")
                                   .arg(b.line)
-                                  .arg(program::blockWord(b.kind)));
+                                  .arg(what));
     }
     return Outcome::success();
 }
@@ -271,6 +317,11 @@ public:
     {
         QObject::connect(&runner, &ProgramRunner::paused, &m_guard,
                          [this](int line, const QString& prompt) { paused(line, prompt); });
+        QObject::connect(&runner, &ProgramRunner::resumeRefused, &m_guard,
+                         [this](const QString& message) {
+                             if (!m_json)
+                                 printProgress(message);
+                         });
     }
     bool stdinClosed() const { return m_closed; }
 
@@ -279,18 +330,26 @@ private:
     {
         if (m_hold.holding())
             return; // the operator's Ctrl-Z: SIGCONT resumes (CliFeedHold)
+        const bool touchOff = m_runner.awaitsTouchOff();
         if (m_skip) {
             if (!m_json)
-                printProgress(CliText::tr("line %1: pause passed (--skip-pauses)").arg(line));
+                printProgress(touchOff
+                                  ? CliText::tr("line %1: tool change passed with the work Z "
+                                                "as it is (--skip-pauses)")
+                                        .arg(line)
+                                  : CliText::tr("line %1: pause passed (--skip-pauses)").arg(line));
             // Not from inside the runner's own signal.
             QMetaObject::invokeMethod(
-                &m_guard, [this] { m_runner.resume(); }, Qt::QueuedConnection);
+                &m_guard, [this] { goOn(); }, Qt::QueuedConnection);
             return;
         }
         // Only an Enter pressed after the prompt answers it: typed-ahead lines are dropped.
         ::tcflush(STDIN_FILENO, TCIFLUSH);
         printProgress(
-            prompt.isEmpty()
+            touchOff ? CliText::tr("line %1: %2 -- the CLI cannot set a work Z: Enter goes on "
+                                   "with Z as it is, for the tool it was set for (Ctrl-C stops)")
+                           .arg(QString::number(line), prompt)
+            : prompt.isEmpty()
                 ? CliText::tr("line %1: paused; press Enter to go on (Ctrl-C stops)").arg(line)
                 : CliText::tr("line %1: %2 -- press Enter to go on (Ctrl-C stops)")
                       .arg(line)
@@ -312,12 +371,22 @@ private:
         if (m_runner.state() != RunState::Paused)
             return;
         if (n > 0) {
-            m_runner.resume();
+            goOn();
         } else {
             m_closed = true;
             m_runner.abort();
         }
         m_session.wake();
+    }
+
+    // On from the hold. A touch-off M6 goes on with the work Z as it is: refuseTouchOffs let only
+    // those through where that is offered (the run's first M6, the same tool again).
+    void goOn()
+    {
+        if (!m_runner.awaitsTouchOff())
+            m_runner.resume();
+        else if (!m_runner.resumeSameTool())
+            m_runner.abort(); // not offered after all: the CLI cannot set a Z (said above)
     }
 
     ProgramRunner& m_runner;
@@ -336,6 +405,7 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
     facts.coordinateSystems = r.systems;
     facts.activeSystem = r.activeSystem;
     facts.tools = r.tools;
+    facts.blockDelete = r.blockDelete; // the program read with it already
     TerminalProgress progress(CliText::tr("checking %1").arg(r.path));
     const program::ProgramCheckResult checked =
         program::ProgramCheck::check(p, facts, r.fromLine, progress.callback());
@@ -346,6 +416,7 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
             ExitInvalidValue,
             CliText::tr("%1 cannot run on this machine; nothing was sent").arg(r.path));
     }
+    printProgramNotes(r.path, checked.notes, json); // issue 50: what runs otherwise, not refused
     printProgramPreview(r.path, checked.preview, m.description(), json);
     return Outcome::success();
 }
@@ -407,6 +478,7 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
             ExitInvalidValue,
             CliText::tr("%1 cannot run on this machine; nothing was sent").arg(r.path));
     }
+    printProgramNotes(r.path, runner.checkNotes(), json); // the run's check (issue 50)
     m.waitFor([&runner] { return program::isEnded(runner.state()); }, -1);
     Outcome outcome;
     if (m.interrupted()) {
@@ -442,6 +514,8 @@ Outcome machineRunProgram(CliMachineSession& m, const CliOptions& o)
                                   .arg(r.fromLine)
                                   .arg(r.path)
                                   .arg(p.expansion ? p.expansion->sourceLines : p.lines));
+    if (Outcome touchOff = refuseTouchOffs(p, r, m.description()); !touchOff.ok())
+        return touchOff;
     if (Outcome allowed = refusePausesWithoutTerminal(p, r); !allowed.ok())
         return allowed;
     if (Outcome connected = m.connectAll(); !connected.ok())

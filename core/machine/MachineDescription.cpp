@@ -74,6 +74,34 @@ std::optional<AxisUnit> unitFromKey(const QString& key)
     return std::nullopt;
 }
 
+QString limitPolicyKey(LimitPolicy policy)
+{
+    return policy == LimitPolicy::Refuse ? QStringLiteral("refuse") : QStringLiteral("clamp");
+}
+
+std::optional<LimitPolicy> limitPolicyFromKey(const QString& key)
+{
+    if (key == QLatin1String("clamp"))
+        return LimitPolicy::Clamp;
+    if (key == QLatin1String("refuse"))
+        return LimitPolicy::Refuse;
+    return std::nullopt;
+}
+
+QString toolLengthKey(ToolLength mode)
+{
+    return mode == ToolLength::TouchOff ? QStringLiteral("touchOff") : QStringLiteral("table");
+}
+
+std::optional<ToolLength> toolLengthFromKey(const QString& key)
+{
+    if (key == QLatin1String("table"))
+        return ToolLength::Table;
+    if (key == QLatin1String("touchOff"))
+        return ToolLength::TouchOff;
+    return std::nullopt;
+}
+
 qint64 MachineAxis::toSteps(double units) const
 {
     // Clamped far beyond any controller's range (which the caller checks), so that a wild
@@ -248,8 +276,12 @@ QJsonObject MachineDescription::toJson() const
         o.insert("spindle", QJsonObject{{"maxRpm", *spindle.maxRpm}});
     if (!crossControllerFeed) // optional as well: written only where it differs from the default
         o.insert("crossControllerFeed", false);
+    if (limits != LimitPolicy::Clamp) // the default: files before issue 50 stay as they were
+        o.insert("limits", limitPolicyKey(limits));
     if (!subroutineFolder.isEmpty())
         o.insert("subroutineFolder", subroutineFolder);
+    if (toolLength != ToolLength::Table) // the default is left out, as crossControllerFeed
+        o.insert("toolLength", toolLengthKey(toolLength));
     return o;
 }
 
@@ -278,6 +310,7 @@ bool operator==(const MachineDescription& a, const MachineDescription& b)
 {
     return a.name == b.name && a.controllers == b.controllers && a.axes == b.axes &&
            a.spindle == b.spindle && a.crossControllerFeed == b.crossControllerFeed &&
+           a.toolLength == b.toolLength && a.limits == b.limits &&
            a.subroutineFolder == b.subroutineFolder && a.driveNamedAxes == b.driveNamedAxes;
 }
 

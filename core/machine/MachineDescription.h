@@ -19,6 +19,15 @@ enum class AxisUnit { Millimetre, Degree, Step };
 QString unitKey(AxisUnit unit); // "mm", "deg", "steps": the file's words
 std::optional<AxisUnit> unitFromKey(const QString& key);
 
+// What a program's feed above the highest a move can run at, or its S above the spindle's
+// maxRpm, does (issue 50; file: "limits"). Clamp: it runs at that highest, and the check says
+// so in a note, as LinuxCNC limits a move to the axes' maximum velocities and GRBL to its
+// $110..$112 and $30. Refuse: the check refuses it, as StepDeck did before issue 50.
+enum class LimitPolicy { Clamp, Refuse };
+
+QString limitPolicyKey(LimitPolicy policy); // "clamp", "refuse": the file's words
+std::optional<LimitPolicy> limitPolicyFromKey(const QString& key);
+
 // One controller of a machine (docs/machines.md, "controllers").
 struct MachineController
 {
@@ -76,11 +85,21 @@ struct MachineAxis
 // The machine's spindle (docs/machines.md, "spindle"; issue 29). maxRpm: the speed the
 // controller's full spindle-speed range stands for, as GRBL's $30 does: a program's S in rpm
 // is mapped linearly onto that range (program::ProgramRules::spindleValue), and an S above it
-// is a check error. Without it, S is sent as written, in the controller's own units.
+// runs at maxRpm with a note (a check error with "limits": "refuse", issue 50). Without it, S
+// is sent as written, in the controller's own units.
 struct MachineSpindle
 {
     std::optional<double> maxRpm; // > 0, finite
 };
+
+// Where a tool's length comes from (issue 50 item 4; file: "toolLength", docs/programs.md
+// "Tools"). Table: the machine's tool table, G43 H adding the tool's length (LinuxCNC's way).
+// TouchOff: most hobby shops keep no table and touch off Z after each tool change: M6 holds
+// until the operator set the work Z for the new tool, and G43 adds nothing.
+enum class ToolLength { Table, TouchOff };
+
+QString toolLengthKey(ToolLength mode); // "table", "touchOff": the file's words
+std::optional<ToolLength> toolLengthFromKey(const QString& key);
 
 // A machine: a name, its controllers and its named axes (docs/machines.md). Built by
 // MachineFile from a "stepdeck-machine" file, or by singleController() for --model/--port,
@@ -96,11 +115,17 @@ struct MachineDescription
     // says so with an estimate). False (file: "crossControllerFeed": false): the check refuses
     // them.
     bool crossControllerFeed = true;
+    // Feeds and spindle speeds above what the machine can run (issue 50, program::FeedLimit):
+    // run at its highest with a note (file: no "limits", or "clamp"), or refused ("refuse").
+    LimitPolicy limits = LimitPolicy::Clamp;
     // LinuxCNC's SUBROUTINE_PATH (issue 33; file: "subroutineFolder"): where "O<name> call"
     // finds <name>.ngc when the program does not define it. As written (relative: to the
     // machine file), and resolved when the file is read. Empty: none.
     QString subroutineFolder;
     QString subroutineFolderPath;
+    // How tools get their length (issue 50 item 4; file: "toolLength", "table" by default and
+    // then left out, so older versions still read the file).
+    ToolLength toolLength = ToolLength::Table;
     // singleController(..., DriveAxes::All): axes past the ninth go by their drive names
     // (validation accepts them; no file has them, so toJson leaves this out).
     bool driveNamedAxes = false;

@@ -42,6 +42,8 @@ private:
     bool readReference(const QJsonValue& v, const QString& path, MachineAxis* a);
     bool readSoftLimits(const QJsonValue& v, const QString& path, MachineAxis* a);
     bool readSpindle(const QJsonValue& v, MachineSpindle* s);
+    bool readLimits(const QJsonObject& top, MachineDescription* d);
+    bool readToolLength(const QJsonObject& top, MachineDescription* d);
 
     MachineFileError* m_error;
     int m_version = 0;
@@ -101,7 +103,7 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
 {
     if (!onlyKeys(top, {},
                   {"format", "version", "name", "controllers", "axes", "spindle",
-                   "crossControllerFeed", "subroutineFolder"}))
+                   "crossControllerFeed", "limits", "subroutineFolder", "toolLength"}))
         return false;
     if (top.value("format").toString() != QLatin1String("stepdeck-machine"))
         return fail("format", MachineFile::tr("must be \"stepdeck-machine\""));
@@ -138,9 +140,48 @@ bool Reader::readTop(const QJsonObject& top, MachineDescription* d)
     if (!cross.isUndefined() && !cross.isBool())
         return fail("crossControllerFeed", MachineFile::tr("must be true or false"));
     d->crossControllerFeed = cross.toBool(true);
-    if (!string(top, {}, "subroutineFolder", &d->subroutineFolder, false))
+    if (!readLimits(top, d))
+        return false;
+    if (!string(top, {}, "subroutineFolder", &d->subroutineFolder, false) ||
+        !readToolLength(top, d))
         return false;
     return !top.contains("spindle") || readSpindle(top.value("spindle"), &d->spindle);
+}
+
+// "limits" (issue 50): "clamp" (the default without the key) or "refuse"; any other word is
+// refused, so that a typo never leaves a shop that wants refusals clamping.
+bool Reader::readLimits(const QJsonObject& top, MachineDescription* d)
+{
+    const QJsonValue v = top.value("limits");
+    if (v.isUndefined())
+        return true;
+    const std::optional<LimitPolicy> policy =
+        v.isString() ? limitPolicyFromKey(v.toString()) : std::nullopt;
+    if (!policy)
+        return fail("limits", MachineFile::tr("must be \"clamp\" (run a feed or S above the "
+                                              "machine's highest at that highest, the default) "
+                                              "or \"refuse\" (refuse it in the check)"));
+    d->limits = *policy;
+    return true;
+}
+
+// "toolLength" (issue 50 item 4): "table" (the default without the key) or "touchOff"; any
+// other word is refused, so that a typo never leaves a touch-off shop cutting with a table's
+// lengths (or none).
+bool Reader::readToolLength(const QJsonObject& top, MachineDescription* d)
+{
+    const QJsonValue v = top.value("toolLength");
+    if (v.isUndefined())
+        return true;
+    const std::optional<ToolLength> mode =
+        v.isString() ? toolLengthFromKey(v.toString()) : std::nullopt;
+    if (!mode)
+        return fail("toolLength",
+                    MachineFile::tr("must be \"table\" (G43 takes the tool table's lengths, the "
+                                    "default) or \"touchOff\" (Z is touched off after each tool "
+                                    "change)"));
+    d->toolLength = *mode;
+    return true;
 }
 
 bool Reader::readSpindle(const QJsonValue& v, MachineSpindle* s)

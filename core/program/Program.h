@@ -74,6 +74,7 @@ struct ParserState
     bool anyWords = false;      // a line with words was read
     int percentOpen = 0;        // the line of the first "%", if any
     bool percentClosed = false; // the second "%": LinuxCNC ignores what follows it
+    bool named = false;         // a Fanuc program number was read (ProgramParser::programNumber)
 };
 
 // A point the program's text can be read again from: the state before line `state.line + 1`,
@@ -95,6 +96,9 @@ struct ProgramIndex
     std::vector<ProgramCheckpoint> checkpoints; // the first at line 0, byte 0
     std::unordered_map<int, int> partners;      // RepeatStart <-> RepeatEnd block indices
     qint64 bytes = 0;                           // the source's length when it was read
+    // LinuxCNC's block delete switch the program was read with (ProgramParser::setBlockDelete):
+    // every reading of it again skips the same "/" lines.
+    bool blockDelete = true;
     // A worked-out program (issue 33): its lines' source lines; null: the text is the source.
     std::shared_ptr<const NgcLineMap> lineMap;
 
@@ -122,6 +126,13 @@ struct Program
     // A program in LinuxCNC's language: what it was worked out from and against (its blocks'
     // lines are the source's); null: the source is the text (ProgramExpansion).
     std::shared_ptr<const ProgramExpansionInfo> expansion;
+    // A Fanuc-style program number before the first block ("O1001 (BRACKET)", ":1001"), as
+    // written; empty: none.
+    QString name;
+    // What the parser read and does not run, or reads otherwise than LinuxCNC (the lines after
+    // the program's end, "/" lines skipped, GRBL's "$" lines, a zero arc offset along the
+    // plane's normal): the check's notes, in line order (ProgramCheckResult::notes).
+    QList<ProgramError> notes;
 
     // Every block, read into memory (tests and small tools: a long program takes its size;
     // ProgramReader reads one window at a time).

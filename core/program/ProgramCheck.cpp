@@ -11,6 +11,7 @@
 #include "language/ProgramExpansion.h"
 #include <QSet>
 #include <algorithm>
+#include <limits>
 
 namespace stepdeck::program {
 
@@ -174,6 +175,54 @@ private:
     QList<Rapid> m_rapids;
 };
 
+// Tool lengths by touch-off (issue 50 item 4, MachineDescription::toolLength): what the run does
+// instead of taking a table's lengths, said with the preview (ProgramPreview::toolNote): it holds
+// at each M6 until the work Z is set for the new tool (ProgramRunner), and G43 adds nothing. The
+// first M6 lines are named; a machine without Z has nothing to touch off.
+class TouchOffNote
+{
+public:
+    explicit TouchOffNote(const MachineFacts& facts)
+        : m_on(facts.description.toolLength == machine::ToolLength::TouchOff &&
+               facts.description.axis(ProgramCoordinates::toolAxis()))
+    {}
+
+    void visit(const ProgramBlock& block)
+    {
+        if (!m_on)
+            return;
+        if (block.kind == BlockKind::ToolChange && ++m_changes <= kNamed)
+            m_lines << QString::number(block.line);
+        m_lengthOffset = m_lengthOffset || (block.appliesLengthOffset && block.lengthTool > 0);
+    }
+
+    QString text() const
+    {
+        if (m_changes == 0 && !m_lengthOffset)
+            return {};
+        if (m_changes == 0)
+            return ProgramCheck::tr("tool lengths by touch-off (the machine file's toolLength): "
+                                    "G43 adds no length; set the work Z for the tool in the "
+                                    "spindle before the run");
+        QString lines = m_lines.join(QStringLiteral(", "));
+        if (m_changes > kNamed)
+            lines += QStringLiteral(", \u2026");
+        const int changes = int(std::min<qint64>(m_changes, std::numeric_limits<int>::max()));
+        return ProgramCheck::tr("tool lengths by touch-off (the machine file's toolLength): the "
+                                "run holds at %n tool change(s) (M6, line(s) %1) until the work "
+                                "Z is set for the new tool; G43 adds no length",
+                                nullptr, changes)
+            .arg(lines);
+    }
+
+private:
+    static constexpr qint64 kNamed = 5;
+    bool m_on = false;
+    qint64 m_changes = 0;
+    QStringList m_lines;
+    bool m_lengthOffset = false; // a G43 with a tool, which a table would have given a length
+};
+
 // The preview as the walk left it (issue 47 item 12): with errors it stays, flagged, where the
 // walk went through the program (soft limits, rates, unknown positions leave its path); where it
 // did not (walked false: no start, the file could not be read, the program does not parse) or
@@ -197,15 +246,21 @@ void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
 {
     if (start >= 0) {
         FastSpeedPutBack putBack(facts);
+        TouchOffNote touchOff(facts);
         ProgramSimulation simulation(facts, &reader, errors);
-        simulation.setFirstVisit([&putBack](const ProgramBlock& b) { putBack.visit(b); });
+        simulation.setFirstVisit([&putBack, &touchOff](const ProgramBlock& b) {
+            putBack.visit(b);
+            touchOff.visit(b);
+        });
         simulation.setPrelude(prelude);
         result->cancelled = !simulation.run(start, &result->preview, progress);
         putBack.report(errors);
+        result->preview.toolNote = touchOff.text();
     }
     if (!reader.error().isEmpty())
         *errors << ProgramError{0, 0, reader.error()};
     result->errors = errors->take();
+    result->notes << errors->takeNotes(); // the walk's (issue 50: feeds and S limited)
     settlePreview(result, start >= 0 && reader.error().isEmpty());
 }
 
@@ -281,6 +336,23 @@ QList<ProgramError> CheckErrors::take()
     return out;
 }
 
+QList<ProgramError> CheckErrors::takeNotes()
+{
+    for (const NoteAt& at : std::as_const(m_noteAt))
+        if (at.moreLines > 0) {
+            ProgramError& n = m_notes[at.index];
+            const int more = int(std::min<qint64>(at.moreLines, std::numeric_limits<int>::max()));
+            n.message =
+                ProgramCheck::tr("%1 (also on %n more line(s))", nullptr, more).arg(n.message);
+        }
+    std::stable_sort(m_notes.begin(), m_notes.end(),
+                     [](const ProgramError& a, const ProgramError& b) {
+                         return a.line != b.line ? a.line < b.line : a.column < b.column;
+                     });
+    m_noteAt.clear();
+    return std::exchange(m_notes, {});
+}
+
 namespace {
 
 // A program in LinuxCNC's language runs its lines in the order its control flow gives (issue 33):
@@ -312,7 +384,21 @@ NgcContext contextOf(const MachineFacts& facts)
     context.coordinateSystems = facts.coordinateSystems;
     context.activeSystem = facts.activeSystem;
     context.subroutineFolder = facts.description.subroutineFolderPath;
+    context.blockDelete = facts.blockDelete;
     return context;
+}
+
+// What the parser and the working out read and do not run (Program::notes,
+// ProgramExpansionInfo::notes) among the walk's notes, in line order.
+void addProgramNotes(const Program& program, ProgramCheckResult* result)
+{
+    result->notes << program.notes;
+    if (program.expansion)
+        result->notes << program.expansion->notes;
+    std::stable_sort(result->notes.begin(), result->notes.end(),
+                     [](const ProgramError& a, const ProgramError& b) {
+                         return a.line != b.line ? a.line < b.line : a.column < b.column;
+                     });
 }
 
 } // namespace
@@ -329,6 +415,7 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
     }
     ProgramReader reader(program);
     walk(reader, facts, fromLine, progress, &result);
+    addProgramNotes(program, &result);
     if (result.ok())
         result.program = program;
     return result;
@@ -390,7 +477,7 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
         }
     }
     ProgramReader reader(expanded ? expanded->source : source, axisNames,
-                         expanded ? expanded->info->lines : nullptr);
+                         expanded ? expanded->info->lines : nullptr, facts.blockDelete);
     walk(reader, facts, fromLine, progress, &result);
     if (result.cancelled)
         return result;
@@ -406,6 +493,8 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
         result.program->expansion = expanded->info;
         result.preview.lines = expanded->info->sourceLines;
     }
+    if (result.program)
+        addProgramNotes(*result.program, &result);
     if (!result.ok())
         result.program.reset();
     return result;

@@ -45,9 +45,21 @@ struct MachineFacts
     // there (issue 28, item 3; issue 29: ProgramCoordinates).
     CoordinateSystems coordinateSystems;
     int activeSystem = 0;
+    // LinuxCNC's block delete switch (issue 50 item 6; the window's "Block delete (/)", the
+    // CLI's --block-delete): on (LinuxCNC's default), lines starting with "/" are skipped. A
+    // check of a text reads it with this (ProgramParser::setBlockDelete), and the program it
+    // gives keeps it for the run; a check of a program goes by the program's own.
+    bool blockDelete = true;
     // The machine's tool table (issue 29): G43's lengths; when it holds any tool, every T an M6
-    // loads and every H must be in it.
+    // loads and every H must be in it. With tool lengths by touch-off (issue 50 item 4,
+    // MachineDescription::toolLength) only its texts count (M6's prompts).
     ToolTable tools;
+    // The tools whose lengths G43 applies (ProgramCoordinates): the table, or none where the
+    // work Z is touched off for each tool instead.
+    ToolTable lengthTools() const
+    {
+        return description.toolLength == machine::ToolLength::TouchOff ? ToolTable() : tools;
+    }
     const QMap<QString, double>& workOffsets() const
     {
         return coordinateSystems[size_t(activeSystem)];
@@ -109,6 +121,9 @@ struct ProgramPreview
     // maps onto each model"), and how approximate the program's feed moves across
     // controllers are.
     QString motionNote;
+    // With tool lengths by touch-off (issue 50 item 4): the M6s the run holds at until the work
+    // Z is set for the new tool, and that G43 adds no length. Empty otherwise.
+    QString toolNote;
     // The check found errors (issue 47 item 12). The figures are then the run as the check's
     // walk followed it: soft limits, rates, unknown positions and the like leave the whole
     // path, which is shown with the errors so that the operator sees where the program goes
@@ -122,6 +137,11 @@ struct ProgramPreview
 struct ProgramCheckResult
 {
     QList<ProgramError> errors; // every problem, in line order (line, column of the word)
+    // What the run does other than the program says, without refusing it (issue 50), in line
+    // order: a feed or S above the machine's highest runs at that highest (FeedLimit), and what
+    // the parser reads and does not run (Program::notes). The window's check line and the
+    // CLI show them beside a clean check; they never keep a program from running.
+    QList<ProgramError> notes;
     // Without errors the run's figures. With errors (preview.hasErrors) the path and figures as
     // the check walked the program, to be shown beside the errors and never run; where nothing
     // was walked (the program does not parse, its start or its file was refused, cancelled)

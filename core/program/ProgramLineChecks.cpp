@@ -188,6 +188,11 @@ private:
             const ProgramWord* w = m_words.parameters.value(l);
             if (!w)
                 continue;
+            // The offset along the plane's normal: GRBL leaves it out, and FreeCAD's grbl post
+            // writes K0 on every G17 arc; LinuxCNC refuses it. Left out when 0 (the parser
+            // notes it), refused otherwise.
+            if (!plane.centre.contains(l) && w->value == 0)
+                continue;
             if (!plane.centre.contains(l))
                 return {w->column, ProgramLine::tr("%1 is not used by %2 in the %3 plane (%4): "
                                                    "its centre takes %5 and %6")

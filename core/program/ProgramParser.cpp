@@ -17,7 +17,16 @@ ProgramParser::ProgramParser(const QStringList& axisNames, const ProgramIndex& i
                              const ProgramCheckpoint& from)
     : m_axisNames(axisNames), m_lineMap(index.lineMap), m_lineOffset(from.offset),
       m_state(from.state), m_replayIndex(&index)
-{}
+{
+    m_blockDelete = index.blockDelete; // skips the lines the first reading skipped
+}
+
+void ProgramParser::setBlockDelete(bool on)
+{
+    m_blockDelete = on;
+    if (m_index)
+        m_index->blockDelete = on;
+}
 
 void ProgramParser::setLineMap(std::shared_ptr<const NgcLineMap> map)
 {
@@ -32,9 +41,11 @@ int ProgramParser::sourceLine(int line) const
 }
 
 std::optional<Program> ProgramParser::parse(const QByteArray& text, const QStringList& axisNames,
-                                            QList<ProgramError>* errors, const ModalState& start)
+                                            QList<ProgramError>* errors, const ModalState& start,
+                                            bool blockDelete)
 {
     ProgramParser parser(axisNames, start);
+    parser.setBlockDelete(blockDelete);
     parser.feed(text);
     std::optional<Program> program = parser.finish(errors);
     if (program)
@@ -90,7 +101,14 @@ void ProgramParser::endLine()
         return;
     }
     ++m_state.line;
-    if (!m_state.percentClosed) { // after the closing "%", LinuxCNC ignores the rest
+    if (m_state.percentClosed || m_state.endLine > 0) {
+        // LinuxCNC reads nothing after M2/M30 or the closing "%" (a line too long to keep has
+        // text too).
+        if (tooLong)
+            ++m_unread;
+        else
+            noteUnread(raw);
+    } else {
         if (raw.endsWith('\r'))
             raw.chop(1);
         if (m_state.line == 1 && raw.startsWith("\xEF\xBB\xBF"))
@@ -99,8 +117,8 @@ void ProgramParser::endLine()
         if (tooLong || text.size() > kMaxLineLength)
             error(m_state.line, kMaxLineLength + 1,
                   tr("the line is longer than %1 characters").arg(kMaxLineLength));
-        else if (!percentLine(text))
-            parseLine(text);
+        else
+            readLine(text);
     }
     if (m_index && m_state.line % ProgramIndex::kCheckpointLines == 0)
         noteCheckpoint();
@@ -128,11 +146,188 @@ bool ProgramParser::percentLine(const QString& text)
     }
     if (m_state.percentOpen > 0) {
         m_state.percentClosed = true;
+        m_endedAt = m_state.line;
         return true;
     }
     error(m_state.line, int(text.indexOf(QLatin1Char('%'))) + 1,
           tr("\"%\" stands only on the program's first line and, closing it, its last"));
     return true;
+}
+
+// One line before the program's end: block delete, "%", GRBL's "$", a program number, words.
+void ProgramParser::readLine(QString text)
+{
+    qsizetype first = 0;
+    while (first < text.size() && text.at(first).isSpace())
+        ++first;
+    // LinuxCNC's block delete: "/" first on the line (canon starts with the switch on).
+    if (first < text.size() && text.at(first) == QLatin1Char('/')) {
+        if (m_blockDelete) {
+            if (m_deleted.count++ == 0)
+                m_deleted.line = sourceLine(m_state.line);
+            return;
+        }
+        text[first] = QLatin1Char(' '); // the words keep their columns
+    }
+    if (percentLine(text) || dollarLine(text, first) || programNumberLine(text))
+        return;
+    parseLine(text);
+}
+
+void ProgramParser::noteUnread(QByteArrayView raw)
+{
+    const QByteArrayView t = raw.trimmed();
+    if (t.isEmpty())
+        return;
+    // The "%" after M2/M30 that closes a program opened with one (a Fanuc-style post's last
+    // line) is where LinuxCNC expects the file to end, not text left over.
+    if (t == QByteArrayView("%") && m_state.percentOpen > 0 && !m_state.percentClosed) {
+        m_state.percentClosed = true;
+        return;
+    }
+    ++m_unread;
+}
+
+// GRBL's system commands, which senders' files carry: "$H" is GRBL's homing cycle, StepDeck's
+// reference run of every axis (a bare G28). The others ("$X" the alarm lock, "$32=1" a
+// setting, "$$" a report, "$J=" a jog) act on GRBL's own state, which StepDeck's controllers
+// do not have: not run, each named in a note.
+bool ProgramParser::dollarLine(const QString& text, qsizetype first)
+{
+    if (first >= text.size() || text.at(first) != QLatin1Char('$'))
+        return false;
+    m_state.anyWords = true;
+    QString command; // as GRBL reads it: without white space or comments, in upper case
+    for (const QChar c : QStringView(text).sliced(first)) {
+        if (c == QLatin1Char('(') || c == QLatin1Char(';'))
+            break;
+        if (!c.isSpace())
+            command += c.toUpper();
+    }
+    if (command == QLatin1String("$H")) {
+        homeLine(text, int(first) + 1);
+        return true;
+    }
+    note(m_state.line, int(first) + 1,
+         tr("%1 is a GRBL command (a setting, the alarm lock, a report or a jog): not run")
+             .arg(command));
+    return true;
+}
+
+// "$H" as the block of a bare G28, in the modal state of its line, at the "$"'s column.
+void ProgramParser::homeLine(const QString& text, int column)
+{
+    LexedLine lexed = ProgramLexer::lex(QStringLiteral("G28"), m_state.line);
+    lexed.words[0].column = column;
+    std::optional<ProgramError> failure;
+    ModalState modal = m_state.modal;
+    std::optional<ProgramBlock> block =
+        ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &failure);
+    if (failure || !block) {
+        error(m_state.line, column, failure ? failure->message : tr("$H cannot run here"));
+        return;
+    }
+    m_state.modal = modal;
+    block->line = sourceLine(m_state.line);
+    block->text = text.trimmed();
+    addBlock(std::move(*block));
+}
+
+// Fanuc-style posts (Vectric, Fusion's fanuc) write the program's number before its first
+// block; LinuxCNC's O words need a keyword, so a number alone there is only the name.
+bool ProgramParser::programNumberLine(const QString& text)
+{
+    if (m_state.anyWords || m_state.named)
+        return false;
+    std::optional<QString> name = programNumber(text);
+    if (!name)
+        return false;
+    m_state.named = true;
+    m_name = *name;
+    return true;
+}
+
+std::optional<QString> ProgramParser::programNumber(QStringView line)
+{
+    const QStringView t = line.trimmed();
+    if (t.isEmpty() || (t.front().toUpper() != QLatin1Char('O') && t.front() != QLatin1Char(':')))
+        return std::nullopt;
+    qsizetype end = 1;
+    while (end < t.size() && t.at(end).unicode() < 128 && t.at(end).isDigit())
+        ++end;
+    if (end == 1)
+        return std::nullopt;
+    // Only a comment may follow: the program's title ("O1001 (BRACKET)").
+    const LexedLine rest = ProgramLexer::lex(t.sliced(end), 1);
+    if (rest.error || !rest.words.isEmpty())
+        return std::nullopt;
+    return t.toString();
+}
+
+ProgramError ProgramParser::unreadNote(int lines, int endLine)
+{
+    return ProgramError{endLine, 1,
+                        tr("%n line(s) after the program's end are not read, as in LinuxCNC "
+                           "(nothing after M2, M30 or the closing \"%\" runs)",
+                           nullptr, lines)};
+}
+
+ProgramError ProgramParser::blockDeleteNote(int lines, int firstLine)
+{
+    return ProgramError{firstLine, 1,
+                        tr("block delete is on: %n line(s) starting with \"/\" are skipped, this "
+                           "one the first (switch it off to run them)",
+                           nullptr, lines)};
+}
+
+// An arc's offset along its plane's normal that is 0 ("K0.000" on a G17 arc, as FreeCAD's grbl
+// post writes): ProgramLine leaves it out as GRBL does (LinuxCNC refuses it); counted for one
+// note.
+void ProgramParser::noteZeroNormal(const LexedLine& lexed, Plane plane)
+{
+    const QChar normal = plane == Plane::XY   ? QLatin1Char('K')
+                         : plane == Plane::XZ ? QLatin1Char('J')
+                                              : QLatin1Char('I');
+    for (const ProgramWord& w : lexed.words) {
+        if (w.letter != normal)
+            continue;
+        if (m_zeroNormal.count++ == 0)
+            m_zeroNormal = Counted{1, sourceLine(m_state.line), w.column, w.valueText()};
+        return;
+    }
+}
+
+void ProgramParser::note(int line, int column, const QString& message)
+{
+    if (m_notes.size() >= kMaxErrors) {
+        m_tooManyNotes = true;
+        return;
+    }
+    m_notes << ProgramError{sourceLine(line), column, message};
+}
+
+// The notes in line order, the counted ones among them.
+QList<ProgramError> ProgramParser::takeNotes()
+{
+    QList<ProgramError> out = m_notes;
+    if (m_deleted.count > 0)
+        out << blockDeleteNote(m_deleted.count, m_deleted.line);
+    if (m_zeroNormal.count > 0)
+        out << ProgramError{m_zeroNormal.line, m_zeroNormal.column,
+                            tr("%1 on %n arc(s), this one the first: an offset along the plane's "
+                               "normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; "
+                               "any other value is refused)",
+                               nullptr, m_zeroNormal.count)
+                                .arg(m_zeroNormal.word)};
+    if (m_unread > 0)
+        out << unreadNote(m_unread, sourceLine(m_endedAt));
+    std::stable_sort(out.begin(), out.end(),
+                     [](const ProgramError& a, const ProgramError& b) { return a.line < b.line; });
+    if (m_tooManyNotes)
+        out << ProgramError{
+            sourceLine(m_state.line), 1,
+            tr("more GRBL commands follow; only the first %1 are named").arg(kMaxErrors)};
+    return out;
 }
 
 void ProgramParser::parseLine(const QString& text)
@@ -146,12 +341,6 @@ void ProgramParser::parseLine(const QString& text)
         return;
     }
     m_state.anyWords = m_state.anyWords || !lexed.words.isEmpty();
-    if (!lexed.words.isEmpty() && m_state.endLine > 0) {
-        error(
-            m_state.line, lexed.words.first().column,
-            tr("nothing may follow the program's end (line %1)").arg(sourceLine(m_state.endLine)));
-        return;
-    }
     std::optional<ProgramError> failure;
     ModalState modal = m_state.modal;
     std::optional<ProgramBlock> block =
@@ -169,7 +358,9 @@ void ProgramParser::parseLine(const QString& text)
     // without the padding.
     block->text = m_lineMap ? text.simplified() : text.trimmed();
     if (block->kind == BlockKind::End)
-        m_state.endLine = m_state.line;
+        m_state.endLine = m_endedAt = m_state.line;
+    if (isArc(block->kind))
+        noteZeroNormal(lexed, block->plane);
     addBlock(std::move(*block));
 }
 
@@ -282,6 +473,8 @@ std::optional<Program> ProgramParser::finish(QList<ProgramError>* errors)
     program.lines = m_state.line;
     program.blockCount = m_state.blocks;
     program.index = m_index;
+    program.name = m_name;
+    program.notes = takeNotes();
     return program;
 }
 

@@ -10,13 +10,15 @@
 namespace stepdeck::program {
 
 // Reads a motion program (issue 20, docs/programs.md): UTF-8, one block per line, LinuxCNC's
-// words (docs/programs.md "Words"), N numbers, O<n> repeat/endrepeat and comments. Streaming
-// (issue 29): bytes may arrive in any chunks, each block goes to the sink as soon as its line
-// is read, and what the parser keeps is bounded whatever the program's length: the line being
-// read (kMaxLineLength), the open repeats (kMaxNesting), the errors (kMaxErrors) and the sparse
-// index (ProgramIndex). Every line that is not valid gets one error naming its line and column;
-// a program with any error gives no Program. Pure: no I/O, no machine, only the names of the
-// machine's axes.
+// words (docs/programs.md "Words"), N numbers, O<n> repeat/endrepeat and comments, and what
+// posts and senders write around them (issue 50, "Around the program": a program number, "%",
+// the text after the end, block delete's "/", GRBL's "$" lines; notes in Program::notes).
+// Streaming (issue 29): bytes may arrive in any chunks, each block goes to the sink as soon as
+// its line is read, and what the parser keeps is bounded whatever the program's length: the
+// line being read (kMaxLineLength), the open repeats (kMaxNesting), the errors (kMaxErrors) and
+// the sparse index (ProgramIndex). Every line that is not valid gets one error naming its line and
+// column; a program with any error gives no Program. Pure: no I/O, no machine, only the names of
+// the machine's axes.
 //
 // Replay: constructed at a checkpoint of a finished index, the parser reads on from there as if
 // it had read every line before (ProgramReader), taking the repeats' partners from the index.
@@ -44,6 +46,10 @@ public:
     // A worked-out program (issue 33): blocks and errors name the source's lines, and the index
     // keeps the map for the replays.
     void setLineMap(std::shared_ptr<const NgcLineMap> map);
+    // LinuxCNC's block delete switch (on by default, as LinuxCNC's canon starts): on, a line
+    // whose first character is "/" is skipped whole; off, it runs without the "/". Set before
+    // the first byte; the index keeps it for every reading again.
+    void setBlockDelete(bool on);
     // Where each block goes (by default nowhere: only the index and the errors are kept).
     void setSink(Sink sink) { m_sink = std::move(sink); }
     void feed(const QByteArray& bytes);
@@ -55,7 +61,18 @@ public:
 
     // Parses text held in memory: the Program's source is those bytes.
     static std::optional<Program> parse(const QByteArray& text, const QStringList& axisNames,
-                                        QList<ProgramError>* errors, const ModalState& start = {});
+                                        QList<ProgramError>* errors, const ModalState& start = {},
+                                        bool blockDelete = true);
+
+    // A Fanuc-style program number alone on a line ("O1234", ":1234", a comment after it
+    // allowed): the line trimmed, else nullopt. Before the program's first block it is the
+    // program's name (Program::name), not one of LinuxCNC's O words.
+    static std::optional<QString> programNumber(QStringView line);
+    // The notes of lines not run, one form for the parser and the worked-out programs
+    // (ProgramExpansion): `lines` after the program's end at `endLine`, and `lines` skipped by
+    // block delete from `firstLine` on.
+    static ProgramError unreadNote(int lines, int endLine);
+    static ProgramError blockDeleteNote(int lines, int firstLine);
 
     const ParserState& state() const { return m_state; }
     qsizetype errorCount() const { return m_errors.size(); }
@@ -70,9 +87,20 @@ public:
 private:
     void endLine();
     void noteCheckpoint();
+    void readLine(QString text);
     void parseLine(const QString& text);
     // A line of only "%": the program's first or last line (LinuxCNC); true when handled.
     bool percentLine(const QString& text);
+    // A line after the program's end: not read (LinuxCNC), counted for a note.
+    void noteUnread(QByteArrayView raw);
+    // GRBL's "$" lines ($H, $X, $32=1, ...); true when handled. `first`: the line's first
+    // character that is not white space.
+    bool dollarLine(const QString& text, qsizetype first);
+    void homeLine(const QString& text, int column);
+    bool programNumberLine(const QString& text);
+    void noteZeroNormal(const LexedLine& lexed, Plane plane);
+    void note(int line, int column, const QString& message);
+    QList<ProgramError> takeNotes();
     void addBlock(ProgramBlock&& block);
     bool linkRepeat(ProgramBlock& block, int index);
     void noteBrokenRepeat(const LexedLine& lexed);
@@ -99,6 +127,23 @@ private:
     const ProgramIndex* m_replayIndex = nullptr;
     QList<ProgramError> m_errors;
     bool m_tooManyErrors = false;
+    bool m_blockDelete = true;
+    // For the notes (not replayed: a reading again gives out blocks only).
+    QString m_name;
+    QList<ProgramError> m_notes;
+    bool m_tooManyNotes = false;
+    int m_endedAt = 0; // the line of M2/M30 or of the closing "%"
+    int m_unread = 0;  // lines with text after it
+    // Lines counted for one note each: the first one's line and column, and its word.
+    struct Counted
+    {
+        int count = 0;
+        int line = 0;
+        int column = 0;
+        QString word;
+    };
+    Counted m_deleted;    // "/" lines skipped
+    Counted m_zeroNormal; // arcs with a zero offset along the plane's normal
 };
 
 } // namespace stepdeck::program

@@ -193,7 +193,11 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* sp
     }
     if (!block.feed) // the parser refuses G1 without F
         return true;
-    const qint64 rate = ProgramRules::axisRate(axis, block, spec);
+    // As the run writes it (ProgramRules::feedRateWrite): above the controller's highest at that
+    // highest, with a note, unless the machine file refuses (issue 50).
+    const FeedLimit::AxisRate limited = FeedLimit::axisRate(
+        m_facts.description, axis, *facts.caps, spec, m_known.value(axis.controller), block);
+    const qint64 rate = limited.runs;
     if (rate == 0)
         return true; // G93 on an axis that does not move (or from an unknown position)
     if (block.inverseTime && (rate < spec->minimum || rate > spec->maximum)) {
@@ -223,8 +227,60 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* sp
         });
         return false;
     }
+    if (limited.limited)
+        noteRate(block, axis, limited);
     *speed = double(rate) / axis.stepsPerUnit;
     return true;
+}
+
+namespace {
+// The F (program unit per minute) an axis moves at `stepsPerSecond`.
+double feedOf(const machine::MachineAxis& axis, qint64 stepsPerSecond, bool inches)
+{
+    const double perMinute = double(stepsPerSecond) / axis.stepsPerUnit * 60.0;
+    return inches && axis.unit == machine::AxisUnit::Millimetre
+               ? perMinute / units::kMillimetresPerInch
+               : perMinute;
+}
+} // namespace
+
+// Named once per programmed F (CheckErrors::note), at the F word: what the axis would need, the
+// highest its controller takes and why, and the F (or G93's time) the move runs at.
+void ProgramPlan::noteRate(const ProgramBlock& block, const machine::MachineAxis& axis,
+                           const FeedLimit::AxisRate& rate)
+{
+    const auto message = [&] {
+        const Capabilities caps = m_facts.capabilities.value(axis.controller);
+        const QString why =
+            rate.ceiling.belowParameter
+                ? ProgramCheck::tr("below its %1: feed mode has no ramp")
+                      .arg(m_facts.schemas.value(axis.controller)
+                               .displayLabel(QString::fromLatin1(caps.contourTickBelow)))
+                : ProgramCheck::tr("%1 at most")
+                      .arg(m_facts.schemas.value(axis.controller)
+                               .displayLabel(QString::fromLatin1(caps.feedRateParameter)));
+        const QString above = ProgramCheck::tr("above the %1 steps/s controller \"%2\" takes (%3)")
+                                  .arg(rate.ceiling.rate)
+                                  .arg(axis.controller, why);
+        if (block.inverseTime)
+            return ProgramCheck::tr("G93 F%1 (the move in %2 s) moves %3 at %4 steps/s, %5: the "
+                                    "move takes %6 s")
+                .arg(figure(*block.feed), figure(60.0 / *block.feed), axis.name)
+                .arg(rate.programmed)
+                .arg(above, figure(60.0 / *block.feed / rate.feedFactor));
+        if (!block.axisRates.isEmpty())
+            return ProgramCheck::tr("F%1 moves %2 at %3 steps/s, %4: the move runs at F%5")
+                .arg(figure(*block.feed), axis.name)
+                .arg(rate.programmed)
+                .arg(above, figure(*block.feed * rate.feedFactor));
+        return ProgramCheck::tr("F%1 is %2 steps/s on %3, %4: %3 runs at F%5")
+            .arg(figure(*block.feed))
+            .arg(rate.programmed)
+            .arg(axis.name, above, figure(feedOf(axis, rate.runs, block.inches)));
+    };
+    note(block, block.columnOf(QStringLiteral("F")),
+         block.inverseTime ? CheckErrors::kInverseTimeNote : CheckErrors::kRateNote, *block.feed,
+         message);
 }
 
 void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)

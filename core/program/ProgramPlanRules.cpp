@@ -139,17 +139,31 @@ void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
             return;
         }
     }
-    const QString why = ProgramRules::spindleSpeed(caps, m_facts.schemas.value(controller),
-                                                   m_facts.description.spindle.maxRpm, block.rpm);
-    if (!why.isEmpty())
+    const std::optional<double> maxRpm = m_facts.description.spindle.maxRpm;
+    const QString why = ProgramRules::spindleSpeed(caps, m_facts.schemas.value(controller), maxRpm,
+                                                   block.rpm, m_facts.description.limits);
+    if (!why.isEmpty()) {
         error(block, block.columnOf(QStringLiteral("S")),
               [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });
+        return;
+    }
+    // Above maxRpm the spindle runs at maxRpm, as GRBL clamps S at $30 (issue 50).
+    if (const double runs = FeedLimit::spindleRpm(block.rpm, maxRpm); runs < block.rpm)
+        note(block, block.columnOf(QStringLiteral("S")), CheckErrors::kSpindleNote, block.rpm, [&] {
+            return ProgramCheck::tr("S%1 runs at S%2, the spindle's maxRpm (the machine file's "
+                                    "spindle scale)")
+                .arg(figure(block.rpm), figure(runs));
+        });
 }
 
 // M6's T and G43's H name tools of the machine's table once it holds any (issue 29); a G43
 // with a length needs the tool axis.
 void ProgramPlan::checkTools(const ProgramBlock& block)
 {
+    // Tool lengths by touch-off (issue 50 item 4): G43 takes no length from the table and M6
+    // holds for the work Z instead, so a T or an H needs no entry (an empty table is no error).
+    if (m_facts.description.toolLength == machine::ToolLength::TouchOff)
+        return;
     const ToolTable& tools = m_facts.tools;
     if (block.kind == BlockKind::ToolChange && !tools.isEmpty() && !tools.find(block.number)) {
         error(block, block.columnOf({}), [&] {

@@ -30,7 +30,7 @@ ProgramReader::ProgramReader(const Program& program)
 }
 
 ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axisNames,
-                             std::shared_ptr<const NgcLineMap> lineMap)
+                             std::shared_ptr<const NgcLineMap> lineMap, bool blockDelete)
     : m_source(source), m_axisNames(axisNames),
       m_reader(std::make_unique<ProgramSourceReader>(source)),
       m_live(std::make_unique<ProgramParser>(axisNames)), m_window(kWindowBlocks)
@@ -39,6 +39,7 @@ ProgramReader::ProgramReader(const ProgramSource& source, const QStringList& axi
     if (!m_reader->open(&why))
         fail(why);
     m_size = m_reader->size();
+    m_live->setBlockDelete(blockDelete);
     if (lineMap)
         m_live->setLineMap(std::move(lineMap));
     m_live->setSink([this](ProgramBlock&& block) {

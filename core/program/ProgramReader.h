@@ -27,9 +27,9 @@ public:
 
     explicit ProgramReader(const Program& program);
     // lineMap: the source is a worked-out program (ProgramExpansion) whose blocks name these
-    // lines.
+    // lines. blockDelete: LinuxCNC's switch (ProgramParser::setBlockDelete).
     ProgramReader(const ProgramSource& source, const QStringList& axisNames,
-                  std::shared_ptr<const NgcLineMap> lineMap = {});
+                  std::shared_ptr<const NgcLineMap> lineMap = {}, bool blockDelete = true);
     ~ProgramReader();
 
     // The block at `index` (0-based, file order); nullptr past the last block, or when the text

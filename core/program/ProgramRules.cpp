@@ -1,5 +1,5 @@
 #include "ProgramRules.h"
-#include "ProgramUnits.h"
+#include "FeedLimit.h"
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -18,7 +18,7 @@ ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& desc
         const machine::MachineAxis* a = description.axis(it.key());
         if (!a || a->controller != controller)
             continue;
-        const qint64 r = axisRate(*a, block, rateSpec);
+        const qint64 r = FeedLimit::axisRate(description, *a, caps, rateSpec, known, block).runs;
         if (r == 0)
             continue; // G93 on an axis that does not move: no rate
         rate.perAxis.insert(a->axis, r);
@@ -36,19 +36,6 @@ ParameterSet ProgramRules::feedRateWrite(const machine::MachineDescription& desc
         }
     }
     return {{name, rate}};
-}
-
-qint64 ProgramRules::axisRate(const machine::MachineAxis& axis, const ProgramBlock& block,
-                              const ParameterSpec* rateSpec)
-{
-    const auto resolved = block.axisRates.find(axis.name);
-    if (resolved == block.axisRates.end())
-        return block.inverseTime ? 0 : units::feedStepsPerSecond(axis, *block.feed, block.inches);
-    const qint64 r = units::feedStepsPerSecond(axis, resolved.value(), false);
-    // A share (G94) within the parameter's range: below its minimum it runs at it; above its
-    // maximum only under a feed override (the check judged F at 100 %), clamped there as
-    // LinuxCNC clamps at the axes' limits.
-    return !block.inverseTime && rateSpec ? std::clamp(r, rateSpec->minimum, rateSpec->maximum) : r;
 }
 
 QString ProgramRules::parameterWrite(const ParameterSchema& schema, const Capabilities& caps,
@@ -75,14 +62,15 @@ int ProgramRules::spindleValue(const Capabilities& caps, const ParameterSchema& 
     // The program's S is 0..1 000 000 (ProgramLineChecks), so every value here fits an int.
     if (!maxRpm || *maxRpm <= 0 || !spec || spec->maximum <= 0 || s <= 0)
         return qRound(s);
-    const double scaled = std::min(s, *maxRpm) / *maxRpm * double(spec->maximum);
+    const double scaled = FeedLimit::spindleRpm(s, maxRpm) / *maxRpm * double(spec->maximum);
     return std::max(1, qRound(scaled));
 }
 
 QString ProgramRules::spindleSpeed(const Capabilities& caps, const ParameterSchema& schema,
-                                   std::optional<double> maxRpm, double s)
+                                   std::optional<double> maxRpm, double s,
+                                   machine::LimitPolicy limits)
 {
-    if (maxRpm && s > *maxRpm)
+    if (maxRpm && s > *maxRpm && limits == machine::LimitPolicy::Refuse)
         return tr("S%1 is above the spindle's maxRpm %2 (the machine file's spindle scale)")
             .arg(s)
             .arg(*maxRpm);

@@ -23,18 +23,13 @@ public:
     // the one the device is known to hold (known), else the block's slowest rate on that
     // controller (a rate the moving axes are refused for first), so the write never depends on
     // a value nobody wrote. Empty when the controller takes no rate or the block has no F.
-    // rateSpec: the feed-rate parameter's spec in the model's schema (null: not known).
+    // rateSpec: the feed-rate parameter's spec in the model's schema (null: not known). Each
+    // axis' rate is FeedLimit::axisRate's: above the highest the controller runs it at, that
+    // highest (issue 50), unless the machine file refuses such feeds.
     static ParameterSet feedRateWrite(const machine::MachineDescription& description,
                                       const QString& controller, const Capabilities& caps,
                                       const ProgramBlock& block, const ParameterSet& known,
                                       const ParameterSpec* rateSpec);
-    // The rate of one axis of a G1 in steps/s: F, or its resolved rate (ProgramBlock::axisRates:
-    // G93, or its share of F where the controller coordinates). A coordinated share below the
-    // parameter's minimum runs at that minimum (the axis arrives a little early: it moves
-    // little, docs/programs.md), one above its maximum (a feed override) at that maximum; 0:
-    // the axis gets no rate (G93, it does not move).
-    static qint64 axisRate(const machine::MachineAxis& axis, const ProgramBlock& block,
-                           const ParameterSpec* rateSpec);
 
     // Why the controller would refuse writing `set`: the schema's ranges, then the model's own
     // rules (ModelInfo::parameterRules) against what the device is known to hold. Empty: it
@@ -51,10 +46,14 @@ public:
     // such a parameter) S is sent as written, as a whole number.
     static int spindleValue(const Capabilities& caps, const ParameterSchema& schema,
                             std::optional<double> maxRpm, double s);
-    // Why M3 S would be refused: S above maxRpm, or spindleValue outside the schema range of
-    // the spindle-speed parameter. Empty: the controller takes it.
+    // Why M3 S would be refused: S above maxRpm where the machine refuses it (limits: Refuse;
+    // with Clamp it runs at maxRpm, FeedLimit::spindleRpm, and the check notes it: issue 50),
+    // or spindleValue outside the schema range of the spindle-speed parameter. Empty: the
+    // controller takes it. A program passes the machine's MachineDescription::limits; the
+    // default refuses, as the window's spindle switch does with an S typed above maxRpm.
     static QString spindleSpeed(const Capabilities& caps, const ParameterSchema& schema,
-                                std::optional<double> maxRpm, double s);
+                                std::optional<double> maxRpm, double s,
+                                machine::LimitPolicy limits = machine::LimitPolicy::Refuse);
     // M4: why `controller` cannot turn its spindle in reverse (Capabilities::spindleReverse).
     // Empty: it can.
     static QString spindleReverse(const Capabilities& caps, const QString& controller);

@@ -155,6 +155,7 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
     m_endSwitching = false;
     m_block = ProgramBlock{};
     m_preview = checked.preview;
+    m_checkNotes = checked.notes;
     resetRun(facts);
     m_arc.reset();
     m_cycle.reset();
@@ -168,6 +169,8 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
     m_stepOnly = stepOnly;
     m_aborting = false;
     m_prompt.clear();
+    m_touchOff = {};
+    m_lastTool.reset(); // which tool is in at the start is not known
     m_endMessage.clear();
     m_failureKind = ErrorKind::None;
     ++m_run;
@@ -182,7 +185,7 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
 // The run's coordinates, current point and contour streams from the facts it was checked with.
 void ProgramRunner::resetRun(const MachineFacts& facts)
 {
-    m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, m_nextTools);
+    m_coordinates = ProgramCoordinates(m_nextSystems, m_nextActive, facts.lengthTools());
     // The current point starts where the check started it: the machine's known positions.
     m_programmed.assign(size_t(facts.description.axes.size()), std::nullopt);
     for (qsizetype i = 0; i < facts.description.axes.size(); ++i)
@@ -270,7 +273,7 @@ void ProgramRunner::resume()
         Q_EMIT stateChanged(m_state);
         return;
     }
-    if (m_state != RunState::Paused)
+    if (m_state != RunState::Paused || refuseWithoutTouchOff())
         return;
     if (restNeedsCheck()) {
         const MachineFacts facts = restFacts();
@@ -295,7 +298,7 @@ void ProgramRunner::resume()
 
 void ProgramRunner::step()
 {
-    if (m_state != RunState::Paused)
+    if (m_state != RunState::Paused || refuseWithoutTouchOff())
         return;
     if (restNeedsCheck()) {
         const MachineFacts facts = restFacts();
@@ -484,6 +487,7 @@ void ProgramRunner::blockDone()
         m_prompt = operatorStop ? promptOf(block) : QString();
         m_operatorStop = operatorStop;
         m_pauseAsked = false;
+        startTouchOff(block);
         setState(RunState::Paused);
         Q_EMIT paused(block.line, m_prompt);
         return;
@@ -578,6 +582,8 @@ void ProgramRunner::setState(RunState state)
 {
     if (m_state == state)
         return;
+    if (state != RunState::Paused)
+        m_touchOff = {}; // a touch-off hold ends with the hold
     m_state = state;
     Q_EMIT stateChanged(state);
 }

@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace stepdeck {
 class ControllerSession;
@@ -144,7 +145,23 @@ public:
     // cycle or a feed hold, with a G92 offset in effect). stepOnly: as step().
     bool resumeChecked(const MachineFacts& checkedFacts, const ProgramCheckResult& checked,
                        bool stepOnly = false);
-    void step();  // from Paused: run one block, then pause again
+    void step(); // from Paused: run one block, then pause again
+    // Tool lengths by touch-off (issue 50 item 4, MachineDescription::toolLength, on a machine
+    // with Z): at M6 the run holds as at M0, its prompt naming the tool, and resume() and
+    // step() are refused (resumeRefused says why) until the work Z of the system the run cuts
+    // in was set for the new tool while it held: the DRO's Zero Z or a G10 L20 Z, given here
+    // by setCoordinateSystems() with another Z. awaitsTouchOff(): held there, Z not set yet.
+    bool awaitsTouchOff() const;
+    // The one way on from such a hold without a new Z, on the operator's word that the tool in
+    // the spindle is the one the work Z was set for. Offered only where that can be so
+    // (sameToolResumable): the M6 loads the same T as the run's M6 before it (nothing to
+    // change), or it is the run's first M6, where StepDeck cannot know which tool is in and a
+    // shop touches off before pressing Run (a CAM file opens with "T1 M6"; zeroing Z again at
+    // the same spot would change nothing). An M6 of another T always needs its touch-off: its
+    // length differs, and a forgotten one cuts at the wrong depth. False (and resumeRefused)
+    // where it is not offered; else on as resume() (step() with stepOnly).
+    bool sameToolResumable() const { return awaitsTouchOff() && m_touchOff.sameTool; }
+    bool resumeSameTool(bool stepOnly = false);
     void abort(); // stop every controller; ends Aborted once the axes stand
 
     RunState state() const { return m_state; }
@@ -161,6 +178,9 @@ public:
     QString endMessage() const { return m_endMessage; }
     ErrorKind failureKind() const { return m_failureKind; }
     const ProgramPreview& preview() const { return m_preview; } // of the check at start()
+    // The notes of the check at start() (ProgramCheckResult::notes: a feed above the machine's
+    // highest runs at it, issue 50), for a front end that did not check it itself.
+    const QList<ProgramError>& checkNotes() const { return m_checkNotes; }
 
 Q_SIGNALS:
     void stateChanged(stepdeck::program::RunState state);
@@ -208,6 +228,9 @@ private:
     void setState(RunState state);
     QString lineText(const QString& message) const;
     QString promptOf(const ProgramBlock& block) const;
+    // Touch-off holds (ProgramRunnerRest.cpp).
+    void startTouchOff(const ProgramBlock& block); // at a hold: an M6 that waits for Z?
+    bool refuseWithoutTouchOff();                  // resume/step: refused while it waits
     QStringList controllersWithoutStop() const;
     // What each block sends (ProgramRunnerBlocks.cpp).
     void startBlock(const ProgramBlock& block);  // a new S first, then startAction()
@@ -263,6 +286,7 @@ private:
     CheckProgress m_checkProgress;
     ProgramCoordinates m_coordinates; // the running program's
     ProgramPreview m_preview;
+    QList<ProgramError> m_checkNotes;
     RunState m_state = RunState::Idle;
     int m_index = -1; // the block running (or the one before the next)
     QList<Loop> m_loops;
@@ -274,6 +298,19 @@ private:
     bool m_aborting = false;
     QString m_prompt;
     bool m_operatorStop = false; // the last pause was at M0, M6 or M1
+    // The touch-off hold the run is in (awaitsTouchOff), if any.
+    struct TouchOff
+    {
+        bool pending = false;          // held at an M6 that waits for its work Z
+        int tool = 0;                  // the M6's T
+        std::optional<int> toolBefore; // the T of the run's M6 before it (none: its first)
+        bool sameTool = false;         // resumeSameTool() is offered
+        int system = 0;                // the coordinate system the run cuts in there (0 = G54)
+        double z = 0;                  // that system's Z offset when the hold began
+        bool zSet = false;             // setCoordinateSystems() gave it another Z since
+    };
+    TouchOff m_touchOff;
+    std::optional<int> m_lastTool; // the T of the run's last M6 (none before its first)
     QString m_endMessage;
     ErrorKind m_failureKind = ErrorKind::None;
     quint64 m_run = 0; // counts start(): a queued fault of an earlier run is dropped

@@ -170,7 +170,8 @@ QString ProgramRunner::spindleRefusal(const ProgramBlock& block, const QString& 
             return why;
     }
     return ProgramRules::spindleSpeed(s.capabilities(), s.schema(),
-                                      facts.description.spindle.maxRpm, block.rpm);
+                                      facts.description.spindle.maxRpm, block.rpm,
+                                      facts.description.limits);
 }
 
 // Spindle, coolant and outputs: one request, done when the controller acknowledged it.

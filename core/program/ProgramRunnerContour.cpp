@@ -2,6 +2,7 @@
 // blocks are appended as the stream makes room; a block of another kind (or a pause, a step,
 // a switch on the line) waits until the stream ended.
 #include "ContourRun.h"
+#include "FeedLimit.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
 
@@ -57,6 +58,9 @@ bool ProgramRunner::appendToContour(const ProgramBlock& block)
         for (const auto& [axis, value] : path.end())
             m_programmed[size_t(axis)] = value;
     }
+    // Above the highest feed its tick allows, the move runs at that highest, as the check said
+    // in its note and estimated (issue 50: the one function both take it from).
+    move.feed = FeedLimit::contourFeed(stream, move, d.limits);
     if (const QString why = m_contour->append(move, block.text); !why.isEmpty()) {
         fail(ErrorKind::Refused, why); // the check refused it first (its feed, its start)
         return false;

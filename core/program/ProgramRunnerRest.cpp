@@ -2,11 +2,14 @@
 // "Touch-off while the run holds"). LinuxCNC's AXIS refuses a touch-off while a program is
 // paused; Candle and UGS take a new zero for the rest of the job. StepDeck takes it, but only
 // after the rest of the program passed its check with it, from where the axes stand now.
+// Issue 50 item 4: with tool lengths by touch-off an M6 holds until the work Z was set for the
+// new tool (docs/programs.md "Tools").
 #include "ProgramLogging.h"
 #include "ProgramReader.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
 #include <cmath>
+#include <utility>
 
 namespace stepdeck::program {
 
@@ -14,9 +17,14 @@ void ProgramRunner::setCoordinateSystems(const CoordinateSystems& systems, int a
 {
     m_nextSystems = systems;
     m_nextActive = active;
-    if (m_state == RunState::Paused)
-        m_restChanged =
-            m_nextSystems != m_coordinates.systems() || !(m_nextTools == m_runFacts.tools);
+    if (m_state != RunState::Paused)
+        return;
+    m_restChanged = m_nextSystems != m_coordinates.systems() || !(m_nextTools == m_runFacts.tools);
+    // A Zero Z or G10 L20 Z is told here as the window's systems: set for the new tool once
+    // the Z of the system the run cuts in differs from the one the hold began with.
+    if (m_touchOff.pending)
+        m_touchOff.zSet = m_nextSystems[size_t(m_touchOff.system)].value(
+                              ProgramCoordinates::toolAxis(), 0.0) != m_touchOff.z;
 }
 
 void ProgramRunner::setToolTable(const ToolTable& tools)
@@ -64,7 +72,7 @@ QString ProgramRunner::restUncheckable() const
 bool ProgramRunner::resumeChecked(const MachineFacts& checkedFacts,
                                   const ProgramCheckResult& checked, bool stepOnly)
 {
-    if (m_state != RunState::Paused)
+    if (m_state != RunState::Paused || refuseWithoutTouchOff())
         return false;
     QString why = restUncheckable();
     const MachineFacts now = restFacts();
@@ -98,7 +106,8 @@ bool ProgramRunner::resumeChecked(const MachineFacts& checkedFacts,
 
 void ProgramRunner::takeRest(const MachineFacts& facts)
 {
-    m_coordinates = ProgramCoordinates(facts.coordinateSystems, facts.activeSystem, facts.tools);
+    m_coordinates =
+        ProgramCoordinates(facts.coordinateSystems, facts.activeSystem, facts.lengthTools());
     m_runFacts.coordinateSystems = facts.coordinateSystems;
     m_runFacts.tools = facts.tools;
     // The current point: where the axes stand now, where the operator moved them during the
@@ -115,6 +124,70 @@ void ProgramRunner::takeRest(const MachineFacts& facts)
             point = it.value();
     }
     m_restChanged = false;
+}
+
+// At a hold (blockDone): an M6 with tool lengths by touch-off, on a machine with Z, waits for
+// the work Z of the system it cuts in to be set for its tool (awaitsTouchOff).
+void ProgramRunner::startTouchOff(const ProgramBlock& block)
+{
+    m_touchOff = {};
+    if (block.kind != BlockKind::ToolChange)
+        return;
+    const std::optional<int> before = std::exchange(m_lastTool, block.number);
+    const machine::MachineDescription& d = m_machine->description();
+    if (d.toolLength != machine::ToolLength::TouchOff || !d.axis(ProgramCoordinates::toolAxis()))
+        return;
+    m_touchOff.pending = true;
+    m_touchOff.tool = block.number;
+    m_touchOff.toolBefore = before;
+    m_touchOff.sameTool = !before || *before == block.number;
+    m_touchOff.system = m_coordinates.systemOf(block);
+    // The run's own copy: it holds the program's G10s, which the window keeps too.
+    m_touchOff.z = m_coordinates.systems()[size_t(m_touchOff.system)].value(
+        ProgramCoordinates::toolAxis(), 0.0);
+    m_prompt = tr("%1, then set the work Z for it (Zero Z)").arg(m_prompt);
+}
+
+bool ProgramRunner::awaitsTouchOff() const
+{
+    return m_state == RunState::Paused && m_touchOff.pending && !m_touchOff.zSet;
+}
+
+// resume(), step(), resumeChecked(): refused (resumeRefused) while the hold waits for its Z.
+bool ProgramRunner::refuseWithoutTouchOff()
+{
+    if (!awaitsTouchOff())
+        return false;
+    QString message = tr("Not resumed: tool %1 takes its length from a touch-off, and the work "
+                         "Z of %2 was not set since the run held: set it for tool %1 (Zero Z on "
+                         "the position display)")
+                          .arg(m_touchOff.tool)
+                          .arg(coordinateSystemWord(m_touchOff.system));
+    if (m_touchOff.sameTool)
+        message += tr("; or, with the tool Z was set for still in, resume keeping Z");
+    qCInfo(lcProgram) << message;
+    Q_EMIT resumeRefused(message);
+    return true;
+}
+
+bool ProgramRunner::resumeSameTool(bool stepOnly)
+{
+    if (!awaitsTouchOff())
+        return false;
+    if (!m_touchOff.sameTool) {
+        const QString message =
+            tr("Not resumed keeping Z: tool %1 follows tool %2, whose length it does not have: "
+               "set the work Z for tool %1 first")
+                .arg(m_touchOff.tool)
+                .arg(m_touchOff.toolBefore.value_or(0));
+        qCInfo(lcProgram) << message;
+        Q_EMIT resumeRefused(message);
+        return false;
+    }
+    qCInfo(lcProgram) << "tool" << m_touchOff.tool << "goes on with the work Z as it is";
+    m_touchOff.pending = false; // the operator's word: the tool Z was set for is in
+    go(stepOnly);
+    return true;
 }
 
 void ProgramRunner::go(bool stepOnly)

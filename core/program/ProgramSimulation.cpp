@@ -12,7 +12,7 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* r
                                      CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_reader(*reader), m_moves(m_planned.moves),
       m_errors(errors), m_plan(facts, &m_planned, errors), m_contours(m_plan.contours()),
-      m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools)
+      m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.lengthTools())
 {
     const size_t n = size_t(m_axes.size());
     m_steps.assign(n, 0);
@@ -264,7 +264,7 @@ void ProgramSimulation::move(PlannedBlock& planned)
         const motion::CanonicalMove line = m_contours.lineMove(
             *stream, block, m_contours.positionOf(*stream, m_programmed),
             [&](const QString& axis) { return m_coordinates.offset(block, axis); });
-        checkContourFeed(block, *stream, line);
+        checkContourFeed(planned, *stream, line);
     }
     AxisMove* const first = m_moves.data() + planned.firstMove;
     // Across controllers only on a machine of several (the check's rate: no list otherwise).
@@ -419,13 +419,31 @@ void ProgramSimulation::finish(ProgramPreview* preview) const
 }
 
 // The stream runs every tick at one rate, at most one step per tick on each axis: a feed whose
-// path needs more on some axis is refused (ContourMoves::feedRefusal), once per line.
-void ProgramSimulation::checkContourFeed(const ProgramBlock& block,
-                                         const ContourMoves::Stream& stream,
+// path needs more on some axis runs at the highest the tick allows, as LinuxCNC limits a move
+// to its axes' velocities (FeedLimit::contourFeed, the same function the run streams by), with
+// a note; where the machine file refuses such feeds it is refused (ContourMoves::feedRefusal),
+// once per line.
+void ProgramSimulation::checkContourFeed(PlannedBlock& planned, const ContourMoves::Stream& stream,
                                          const motion::CanonicalMove& move)
 {
-    const QString why = m_contours.feedRefusal(stream, move, block);
+    const ProgramBlock& block = *planned.block;
     const int column = block.columnOf(QStringLiteral("F"));
+    const double feed = FeedLimit::contourFeed(stream, move, m_facts.description.limits);
+    if (feed < move.feed && block.feed) {
+        const double share = feed / move.feed;
+        m_errors->note(block.line, column, CheckErrors::kContourNote, *block.feed, [&] {
+            return ProgramCheck::tr("F%1 runs at F%2, the highest this move can run at in the "
+                                    "contour stream of controller \"%3\" (%4 ticks/s, one step "
+                                    "per tick at most)")
+                .arg(figure(*block.feed), figure(*block.feed * share), stream.controller)
+                .arg(stream.tickRate);
+        });
+        AxisMove* const first = m_moves.data() + planned.firstMove;
+        for (AxisMove* m = first; m != first + planned.moveCount; ++m)
+            m->speed *= share; // the estimate at the feed that runs
+        return;
+    }
+    const QString why = m_contours.feedRefusal(stream, move, block);
     if (!why.isEmpty() && m_errors->once(block.line, column, kContourFeed))
         m_errors->add(block.line, column, [&] { return why; });
 }

@@ -5,6 +5,7 @@
 #include "ArcPath.h"
 #include "ContourMoves.h"
 #include "DrillCycle.h"
+#include "FeedLimit.h"
 #include "PreviewPath.h"
 #include "ProgramCheck.h"
 #include "ProgramReader.h"
@@ -66,6 +67,30 @@ public:
     bool once(int line, int column, int kind);
     bool any() const { return !m_errors.isEmpty() || m_dropped; }
 
+    // The check's notes (issue 50: a feed or S above the machine's highest runs at it). One
+    // per kind and programmed value (a CAM program's F6000 on a thousand lines is one note): at
+    // the first line it holds for, counting the further lines (a repeat's next passes are not
+    // counted again); message() is called once per note. At most kMaxNotes.
+    enum NoteKind { kContourNote = 1, kRateNote = 2, kInverseTimeNote = 3, kSpindleNote = 4 };
+    static constexpr int kMaxNotes = 100;
+    template <typename Message>
+    void note(int line, int column, NoteKind kind, double value, const Message& message)
+    {
+        const auto it = m_noteAt.find({int(kind), value});
+        if (it != m_noteAt.end()) {
+            if (line > it->lastLine) {
+                it->lastLine = line;
+                ++it->moreLines;
+            }
+            return;
+        }
+        if (m_notes.size() >= kMaxNotes)
+            return;
+        m_noteAt.insert({int(kind), value}, NoteAt{int(m_notes.size()), line, 0});
+        m_notes << ProgramError{line, column, message()};
+    }
+    QList<ProgramError> takeNotes(); // in line order, each with the lines more it holds for
+
 private:
     void prune();
     QSet<quint64> m_once;
@@ -73,6 +98,14 @@ private:
     bool m_dropped = false;
     int m_lastLine = 0;
     int m_cutoffLine = 0; // once pruned: errors after this line can never be listed
+    struct NoteAt
+    {
+        int index = 0;    // in m_notes
+        int lastLine = 0; // the last line counted
+        qint64 moreLines = 0;
+    };
+    QMap<std::pair<int, double>, NoteAt> m_noteAt;
+    QList<ProgramError> m_notes;
 };
 
 // Plans one block against the machine (the part of the check that needs no positions): what
@@ -94,6 +127,9 @@ private:
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
     bool checkRate(const ProgramBlock& block, int axisIndex, double* speed);
+    // A rate FeedLimit lowered (issue 50): the note naming the F the axis or move runs at.
+    void noteRate(const ProgramBlock& block, const machine::MachineAxis& axis,
+                  const FeedLimit::AxisRate& rate);
     void checkContourTick(const ProgramBlock& block, const ContourMoves::Stream& stream);
     void checkFeedWrite(const ProgramBlock& block);
     QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,
@@ -112,6 +148,13 @@ private:
     {
         if (m_reporting)
             m_errors->add(block.line, column, message);
+    }
+    template <typename Message>
+    void note(const ProgramBlock& block, int column, CheckErrors::NoteKind kind, double value,
+              const Message& message)
+    {
+        if (m_reporting)
+            m_errors->note(block.line, column, kind, value, message);
     }
 
     const MachineFacts& m_facts;
@@ -219,8 +262,10 @@ private:
     void arc(PlannedBlock& planned);
     void coordinates(PlannedBlock& planned);
     void arcChords(const ArcPath& path, PlannedBlock& planned);
-    // A block of a contour stream (ContourMoves): its feed against the stream's tick.
-    void checkContourFeed(const ProgramBlock& block, const ContourMoves::Stream& stream,
+    // A block of a contour stream (ContourMoves): its feed against the stream's tick. Where
+    // FeedLimit::contourFeed limits it (issue 50), the block's planned speeds are scaled to the
+    // feed it runs at, for the estimate.
+    void checkContourFeed(PlannedBlock& planned, const ContourMoves::Stream& stream,
                           const motion::CanonicalMove& move);
     // A feed move of `axes` (the axes that move, each with its speed in its unit/s): across
     // controllers it is refused where the machine file forbids it, else noted for the preview

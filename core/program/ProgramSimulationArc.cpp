@@ -40,7 +40,7 @@ void ProgramSimulation::arc(PlannedBlock& planned)
     const ArcPath& path = std::get<ArcPath>(planning);
     if (const ContourMoves::Stream* stream = planned.contour)
         checkContourFeed(
-            block, *stream,
+            planned, *stream,
             m_contours.arcMove(*stream, block, path, m_contours.positionOf(*stream, m_programmed)));
     // The soft limits where the curve reaches furthest on each axis, not only at its chords.
     for (const auto& [axis, range] : path.bounds()) {

@@ -135,7 +135,8 @@ RunFromState RunFromState::before(ProgramReader& reader, int first, const Machin
     state.startPoint.assign(size_t(facts.description.axes.size()), std::nullopt);
     // The run's coordinates as it starts (ProgramRunner::resetRun): the G10s and G92s of the
     // lines before the start do not run, so neither the run nor its start point follows them.
-    const ProgramCoordinates coordinates(facts.coordinateSystems, facts.activeSystem, facts.tools);
+    const ProgramCoordinates coordinates(facts.coordinateSystems, facts.activeSystem,
+                                         facts.lengthTools());
     std::vector<qint64> passes; // of each repeat around the block (a start is outside them all)
     for (int i = 0; i < first; ++i) {
         const ProgramBlock* b = reader.at(i);

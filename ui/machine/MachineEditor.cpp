@@ -168,6 +168,8 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     m_path = path;
     m_subroutineFolder = machine.subroutineFolder;
     m_subroutineFolderPath = machine.subroutineFolderPath;
+    m_limits = machine.limits;
+    m_toolLength = machine.toolLength;
     m_reopen->hide(); // another file: offered again once it is saved
     m_name->setText(machine.name);
     m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
@@ -207,6 +209,8 @@ bool MachineEditor::readMachine(MachineDescription* out, MachineFileError* error
     out->crossControllerFeed = m_crossFeed->isChecked();
     out->subroutineFolder = m_subroutineFolder;
     out->subroutineFolderPath = m_subroutineFolderPath;
+    out->limits = m_limits;
+    out->toolLength = m_toolLength;
     return m_controllers->read(&out->controllers, error) && m_axes->read(&out->axes, error) &&
            readDecimal(m_maxRpm, QStringLiteral("spindle.maxRpm"), true, &out->spindle.maxRpm,
                        error) &&

@@ -65,6 +65,8 @@ public:
     // Kept as the file has them (no field of their own: set in the file, docs/machines.md).
     QString m_subroutineFolder;
     QString m_subroutineFolderPath;
+    machine::LimitPolicy m_limits = machine::LimitPolicy::Clamp;   // "limits" (issue 50)
+    machine::ToolLength m_toolLength = machine::ToolLength::Table; // "toolLength" (issue 50)
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }

@@ -137,7 +137,13 @@ void MachineMdi::setFeedOverride(int percent)
 
 void MachineMdi::resume()
 {
-    if (m_runner && m_current != 0 && m_runner->state() == RunState::Paused)
+    if (!m_runner || m_current == 0 || m_runner->state() != RunState::Paused)
+        return;
+    // An MDI line's M6 with tool lengths by touch-off (issue 50 item 4): nothing of the line
+    // cuts after it, and the next line or program takes the work Z as the operator sets it.
+    if (m_runner->awaitsTouchOff())
+        m_runner->resumeSameTool();
+    else
         m_runner->resume();
 }
 

@@ -15,7 +15,8 @@ using program::RunState;
 
 namespace {
 const QString kOptionalStopsKey = QStringLiteral("programs/optionalStops");
-}
+const QString kBlockDeleteKey = QStringLiteral("programs/blockDelete");
+} // namespace
 
 ProgramControls::ProgramControls(QWidget* parent)
     : QWidget(parent), m_run(new QPushButton(tr("Run"), this)),
@@ -24,6 +25,7 @@ ProgramControls::ProgramControls(QWidget* parent)
       m_abort(new QPushButton(tr("&Abort"), this)), m_fromLine(new QSpinBox(this)),
       m_runFrom(new QPushButton(tr("Run from line\u2026"), this)),
       m_optionalStops(new QCheckBox(tr("Optional stops (M1)"), this)),
+      m_blockDelete(new QCheckBox(tr("Block delete (/)"), this)),
       m_feedOverride(new QSpinBox(this)), m_progressRow(new QWidget(this)),
       m_progress(new QProgressBar(m_progressRow)), m_timeLeft(new ElidedLabel(m_progressRow))
 {
@@ -55,6 +57,12 @@ ProgramControls::ProgramControls(QWidget* parent)
            "past every M1. Counts when the run reaches the M1."));
     // On unless the operator switched it off: a forgotten stop is safer than a missed one.
     m_optionalStops->setChecked(QSettings().value(kOptionalStopsKey, true).toBool());
+    m_blockDelete->setObjectName(QStringLiteral("programBlockDelete"));
+    m_blockDelete->setToolTip(
+        tr("On: lines starting with \"/\" are skipped (LinuxCNC's block delete, on as LinuxCNC "
+           "starts). Off: they run without the \"/\". The program is checked again when it "
+           "changes; a run keeps what its check read."));
+    m_blockDelete->setChecked(QSettings().value(kBlockDeleteKey, true).toBool());
     m_fromLine->setRange(1, 1);
     m_fromLine->setPrefix(tr("line "));
     m_progress->setRange(0, 1);
@@ -82,6 +90,7 @@ ProgramControls::ProgramControls(QWidget* parent)
     where->addWidget(m_runFrom);
     where->addSpacing(8);
     where->addWidget(m_optionalStops);
+    where->addWidget(m_blockDelete);
     where->addStretch(1);
     auto* progress = new QHBoxLayout(m_progressRow);
     progress->setContentsMargins(0, 0, 0, 0);
@@ -101,6 +110,10 @@ ProgramControls::ProgramControls(QWidget* parent)
     connect(m_optionalStops, &QCheckBox::toggled, this, [this](bool on) {
         QSettings().setValue(kOptionalStopsKey, on);
         Q_EMIT optionalStopsChanged(on);
+    });
+    connect(m_blockDelete, &QCheckBox::toggled, this, [this](bool on) {
+        QSettings().setValue(kBlockDeleteKey, on);
+        Q_EMIT blockDeleteChanged(on);
     });
     clearProgress();
     setState(RunState::Idle, false, false);
@@ -143,12 +156,18 @@ bool ProgramControls::optionalStops() const
     return m_optionalStops->isChecked();
 }
 
+bool ProgramControls::blockDelete() const
+{
+    return m_blockDelete->isChecked();
+}
+
 void ProgramControls::setState(RunState state, bool pausePending, bool canStart)
 {
     const bool ended = state == RunState::Idle || program::isEnded(state);
     m_run->setEnabled(ended && canStart);
     m_runFrom->setEnabled(ended && canStart && m_runFromRefusal.isEmpty());
     m_fromLine->setEnabled(ended);
+    m_blockDelete->setEnabled(ended); // read by the check: a run keeps what its check read
     m_pause->setEnabled(state == RunState::Running && !pausePending);
     m_hold->setEnabled(state == RunState::Running);
     m_resume->setEnabled(state == RunState::Paused);

@@ -47,6 +47,12 @@ public:
     // ("programs/optionalStops"); on when nothing was stored, as the runner's default.
     QCheckBox* optionalStopsBox() const { return m_optionalStops; }
     bool optionalStops() const;
+    // LinuxCNC's block delete switch (issue 50 item 6): on, lines starting with "/" are skipped.
+    // It is read by the check (MachineFacts::blockDelete), so the page checks again when it
+    // changes; a run keeps what its check read. Remembered in QSettings ("programs/blockDelete");
+    // on when nothing was stored, as LinuxCNC starts.
+    QCheckBox* blockDeleteBox() const { return m_blockDelete; }
+    bool blockDelete() const;
     QSpinBox* feedOverrideBox() const { return m_feedOverride; }
     int feedOverride() const; // percent
     QProgressBar* progressBar() const { return m_progress; }
@@ -63,6 +69,7 @@ Q_SIGNALS:
     void stepRequested();
     void abortRequested();
     void optionalStopsChanged(bool on);
+    void blockDeleteChanged(bool on);
     void feedOverrideChanged(int percent);
 
 private:
@@ -76,6 +83,7 @@ private:
     QPushButton* m_runFrom;
     QString m_runFromRefusal;
     QCheckBox* m_optionalStops;
+    QCheckBox* m_blockDelete;
     QSpinBox* m_feedOverride;
     void setUpFeedOverride();
     void showTimeLeft();

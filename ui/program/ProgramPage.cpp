@@ -81,6 +81,11 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
         if (m_runner)
             m_runner->resume();
     });
+    // Issue 50 item 4: on from a touch-off M6 without a new Z, where the runner offers it.
+    connect(m_banner, &ProgramPromptBanner::keepZRequested, this, [this] {
+        if (m_runner)
+            m_runner->resumeSameTool();
+    });
     connect(m_controls, &ProgramControls::runRequested, this, &ProgramPage::run);
     connect(m_controls, &ProgramControls::runFromLineRequested, this, &ProgramPage::runFromLine);
     connect(m_controls, &ProgramControls::stepRequested, this, &ProgramPage::step);
@@ -99,6 +104,12 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
         if (m_runner)
             m_runner->setOptionalStops(on); // also while a program runs: counts at its next M1
     });
+    // Block delete decides which lines the check reads (issue 50 item 6): checked again. The
+    // switch is off while a program runs (ProgramControls), whose check read it already.
+    connect(m_controls, &ProgramControls::blockDeleteChanged, this, [this] {
+        if (!isRunning())
+            m_recheck->start();
+    });
     connect(m_context, &MachineContext::machineChanged, this, &ProgramPage::onMachineChanged);
     connect(m_context, &MachineContext::machineStatusChanged, this, &ProgramPage::onMachineStatus);
     // A new work zero or tool table moves the program's path on the machine: checked again.
@@ -114,6 +125,7 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
                              ? tr("The offsets or tools changed while the run holds: Resume "
                                   "checks the rest of the program with them first.")
                              : QString();
+            m_banner->showKeepZ(m_runner->sameToolResumable()); // a Zero Z ends the offer
             updateControls();
         }
     };
@@ -290,6 +302,8 @@ void ProgramPage::onMachineChanged()
         // or tool length once its check passed (ProgramRunner::resume); the banner says which.
         connect(m_runner, &ProgramRunner::resumeRefused, this, [this](const QString& message) {
             m_holdNote = message; // said while the run stays held
+            // and in the window's log: at M0 or M6 the banner shows the prompt over it.
+            Q_EMIT operatorMessage(m_runner->currentLine(), message);
             updateControls();
         });
         connect(m_runner, &ProgramRunner::restChecked, this, [this](const QString& message) {
@@ -337,7 +351,7 @@ std::optional<program::Program> ProgramPage::parse(QList<program::ProgramError>*
             *errors = {program::ProgramError{0, 0, tr("the program is not checked yet")}};
         return std::nullopt;
     }
-    return program::ProgramParser::parse(text, axes, errors);
+    return program::ProgramParser::parse(text, axes, errors, {}, m_controls->blockDelete());
 }
 
 void ProgramPage::checkNow()
@@ -383,6 +397,7 @@ program::MachineFacts ProgramPage::machineFacts(const machine::Machine& machine)
     facts.coordinateSystems = m_context->workOffsets()->systems();
     facts.activeSystem = m_context->workOffsets()->active();
     facts.tools = m_context->tools()->table();
+    facts.blockDelete = m_controls->blockDelete();
     return facts;
 }
 
@@ -407,6 +422,8 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
                                    : tr("No program."));
         m_check->setStyleSheet(QString());
         m_check->setToolTip(QString());
+        if (m_checkOk && !result.notes.isEmpty())
+            showNotes(result.notes); // issue 50: e.g. a feed above the machine's highest
         if (m_checkOk)
             m_preview->setPreview(result.preview, m_context->machine()->description());
         else
@@ -432,6 +449,22 @@ void ProgramPage::showCheck(const program::ProgramCheckResult& result)
     }
     showErrors(result.errors); // after the preview: the errors' tab follows whether it has one
     updateControls();
+}
+
+// What runs otherwise than written without being refused (issue 50: a feed above the machine's
+// highest runs at it, as LinuxCNC and GRBL do) is said, not hidden: the operator sees it before
+// Run, but nothing turns red and Run stays on.
+void ProgramPage::showNotes(const QList<program::ProgramError>& notes)
+{
+    const program::ProgramError& first = notes.first();
+    m_check->setText(tr("Checked against the machine: no errors; %n note(s), line %1: %2", nullptr,
+                        int(notes.size()))
+                         .arg(first.line)
+                         .arg(first.message));
+    QStringList all;
+    for (const program::ProgramError& n : notes)
+        all << n.text();
+    m_check->setToolTip(all.join(QLatin1Char('\n')));
 }
 
 void ProgramPage::showErrors(const QList<program::ProgramError>& errors)

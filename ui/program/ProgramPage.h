@@ -102,6 +102,8 @@ private:
     void onStartRefused(const QList<program::ProgramError>& errors);
     void showCheck(const program::ProgramCheckResult& result);
     void showErrors(const QList<program::ProgramError>& errors); // marked, listed
+    // A clean check's notes on the check line: the count and the first, every one in its tip.
+    void showNotes(const QList<program::ProgramError>& notes);
     void cancelCheck();
     void updateControls();
     void updateProgress();

@@ -195,8 +195,10 @@ void ProgramPage::onBlockFinished(int line)
 
 void ProgramPage::onPaused(int line, const QString& prompt)
 {
-    if (m_runner->pausedAtOperatorStop())
+    if (m_runner->pausedAtOperatorStop()) {
         m_banner->showPrompt(line, prompt);
+        m_banner->showKeepZ(m_runner->sameToolResumable()); // a touch-off M6 (issue 50)
+    }
     updateControls();
 }
 

@@ -458,9 +458,16 @@ void ProgramPreviewView::setPreview(const program::ProgramPreview& preview,
     if (preview.hasErrors)
         figures = tr("Has errors, not runnable") + QStringLiteral(" \u00b7 ") + figures;
     m_figures->setText(figures);
-    m_motionNote->setText(preview.motionNote);
-    m_motionNote->setToolTip(preview.motionNote);
-    m_figures->setToolTip(preview.motionNote);
+    // Issue 50 item 4: how tools get their length (touch-off: the holds at M6) goes with how
+    // the axes move together.
+    QStringList notes;
+    for (const QString& part : {preview.motionNote, preview.toolNote})
+        if (!part.isEmpty())
+            notes << part;
+    const QString note = notes.join(QStringLiteral("; "));
+    m_motionNote->setText(note);
+    m_motionNote->setToolTip(note);
+    m_figures->setToolTip(note);
     updateErrorsTab();
 }
 

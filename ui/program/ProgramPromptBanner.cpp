@@ -6,11 +6,16 @@
 namespace stepdeck::ui {
 
 ProgramPromptBanner::ProgramPromptBanner(QWidget* parent)
-    : QWidget(parent), m_text(new ElidedLabel(this)), m_resume(new QPushButton(tr("Resume"), this))
+    : QWidget(parent), m_text(new ElidedLabel(this)), m_resume(new QPushButton(tr("Resume"), this)),
+      m_keepZ(new QPushButton(tr("Keep Z"), this))
 {
     setObjectName(QStringLiteral("programPromptBanner"));
     m_text->setObjectName(QStringLiteral("programPrompt"));
     m_resume->setObjectName(QStringLiteral("programPromptResume"));
+    m_keepZ->setObjectName(QStringLiteral("programPromptKeepZ"));
+    m_keepZ->setToolTip(tr("Go on with the work Z as it is: only when the tool in the spindle is "
+                           "the one Z was set for. Another tool needs its touch-off (Zero Z)."));
+    m_keepZ->hide();
     // The button's room stays when it is hidden: the prompt's arrival moves nothing.
     QSizePolicy keep = m_resume->sizePolicy();
     keep.setRetainSizeWhenHidden(true);
@@ -18,9 +23,11 @@ ProgramPromptBanner::ProgramPromptBanner(QWidget* parent)
     auto* h = new QHBoxLayout(this);
     h->setContentsMargins(4, 2, 4, 2);
     h->addWidget(m_text, 1);
+    h->addWidget(m_keepZ);
     h->addWidget(m_resume);
     setAttribute(Qt::WA_StyledBackground); // the prompt's background (style sheet)
     connect(m_resume, &QPushButton::clicked, this, &ProgramPromptBanner::resumeRequested);
+    connect(m_keepZ, &QPushButton::clicked, this, &ProgramPromptBanner::keepZRequested);
     clearPrompt();
 }
 
@@ -48,6 +55,12 @@ void ProgramPromptBanner::clearPrompt()
     m_text->setText(m_status);
     setStyleSheet(QString());
     m_resume->hide();
+    m_keepZ->hide();
+}
+
+void ProgramPromptBanner::showKeepZ(bool shown)
+{
+    m_keepZ->setVisible(shown && m_showing);
 }
 
 QString ProgramPromptBanner::text() const

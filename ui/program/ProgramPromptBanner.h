@@ -27,13 +27,20 @@ public:
     bool isShowingPrompt() const { return m_showing; }
     QString text() const;
     QPushButton* resumeButton() const { return m_resume; }
+    // At an M6 that waits for its touch-off (issue 50 item 4): "Keep Z" beside Resume, where
+    // program::ProgramRunner::sameToolResumable() offers going on without a new work Z. Takes
+    // no room while hidden (the prompt's text gives it).
+    void showKeepZ(bool shown);
+    QPushButton* keepZButton() const { return m_keepZ; }
 
 Q_SIGNALS:
     void resumeRequested();
+    void keepZRequested();
 
 private:
     ElidedLabel* m_text;
     QPushButton* m_resume;
+    QPushButton* m_keepZ;
     QString m_status;
     bool m_showing = false;
 };

@@ -26,8 +26,10 @@ class JobLayout : public QObject
     Q_OBJECT
 public:
     // toggle: the centre's "Show jog pad" / "Hide jog pad" button, shown during a job only.
+    // above: what stands above the jog pad in the centre (STOP, PANIC, the banner), kept at its
+    // height during the job.
     JobLayout(QMainWindow* window, JogArea* jogArea, QDockWidget* programDock,
-              Workspaces* workspaces, QPushButton* toggle);
+              Workspaces* workspaces, QPushButton* toggle, QWidget* above);
 
     // ProgramPage::jobChanged: Running, Paused and Stopping are a job; anything else ends it.
     void setJob(stepdeck::program::RunState state);
@@ -45,6 +47,7 @@ private:
     QPointer<QDockWidget> m_programDock;
     Workspaces* m_workspaces;
     QPushButton* m_toggle;
+    QWidget* m_above;
     bool m_active = false;
     bool m_padShown = false;
     int m_dockHeightBefore = 0; // the Program dock's height at the job's start

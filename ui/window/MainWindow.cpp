@@ -216,8 +216,8 @@ void MainWindow::buildWorkspaces()
     connect(m_context, &MachineContext::machineChanged, m_workspaces, &Workspaces::fitContent,
             Qt::QueuedConnection);
     m_workspaces->initialise();
-    m_jobLayout =
-        new JobLayout(this, m_jogArea, dockOf(m_programPage), m_workspaces, m_jobPadToggle);
+    m_jobLayout = new JobLayout(this, m_jogArea, dockOf(m_programPage), m_workspaces,
+                                m_jobPadToggle, m_safety);
     connect(m_programPage, &ProgramPage::jobChanged, m_jobLayout,
             [this](program::RunState state) { m_jobLayout->setJob(state); });
     // A page that cannot have its room says so in the message line (issue 31), and the

@@ -21,12 +21,41 @@ struct NgcInterpreter::Frame
     QHash<int, qint64> left;   // repeat line -> passes still to run
 };
 
+namespace {
+
+// LinuxCNC's block delete over a file's lines before anything is read (NgcContext::blockDelete):
+// on, a line whose first character is "/" becomes blank (the line numbers stay); off, the "/"
+// becomes a space (the words keep their columns). The lines blanked; *first: the first (1-based).
+int applyBlockDelete(QStringList* lines, bool on, int* first)
+{
+    int count = 0;
+    for (qsizetype i = 0; i < lines->size(); ++i) {
+        QString& line = (*lines)[i];
+        qsizetype p = 0;
+        while (p < line.size() && line.at(p).isSpace())
+            ++p;
+        if (p >= line.size() || line.at(p) != QLatin1Char('/'))
+            continue;
+        if (!on) {
+            line[p] = QLatin1Char(' ');
+            continue;
+        }
+        line.clear();
+        if (count++ == 0 && first)
+            *first = int(i) + 1;
+    }
+    return count;
+}
+
+} // namespace
+
 NgcInterpreter::NgcInterpreter(const QStringList& lines, const NgcContext& context, Output output)
     : m_context(context), m_output(std::move(output)),
       m_parameters(context.coordinateSystems, context.activeSystem)
 {
     auto main = std::make_unique<File>();
     main->lines = lines;
+    m_deleted = applyBlockDelete(&main->lines, context.blockDelete, &m_firstDeleted);
     m_files.push_back(std::move(main));
     m_file = m_files.front().get();
     m_frames.push_back(Frame{});
@@ -156,8 +185,40 @@ bool NgcInterpreter::ordinary(const QString& text)
         m_ended = m_percentOpen;
         m_percentOpen = true;
     }
+    if (m_ended && m_frames.size() == 1) { // outside any call: where the lines not read start
+        m_endLine = m_pc + 1;
+        m_endedAtPercent = text.trimmed() == QLatin1String("%");
+    }
     ++m_pc;
     return true;
+}
+
+int NgcInterpreter::unreadLines() const
+{
+    if (m_endLine <= 0)
+        return 0;
+    const File& main = *m_files.front();
+    bool closing = m_percentOpen && !m_endedAtPercent; // the "%" after M2/M30 still to come
+    int count = 0;
+    for (int i = m_endLine; i < main.lines.size(); ++i) { // from the line after the end
+        const NgcStatement* s = main.structure.statement(i);
+        if (s && s->kind == NgcStatement::Sub) { // found there by its calls (LinuxCNC)
+            const int end = main.structure.partner(i);
+            if (end < i)
+                break;
+            i = end;
+            continue;
+        }
+        const QString t = main.lines.at(i).trimmed();
+        if (t.isEmpty())
+            continue;
+        if (closing && t == QLatin1String("%")) {
+            closing = false;
+            continue;
+        }
+        ++count;
+    }
+    return count;
 }
 
 // M66 in StepDeck waits for its input's state (L3 high, L4 low) and stops the run when Q runs
@@ -445,6 +506,7 @@ const NgcInterpreter::File* NgcInterpreter::findSubroutine(const QString& label,
             l.chop(1);
         file->lines << l;
     }
+    applyBlockDelete(&file->lines, m_context.blockDelete, nullptr);
     QList<ProgramError> errors;
     std::optional<NgcStructure> structure = NgcStructure::scan(file->lines, &errors, 1);
     if (!structure) {

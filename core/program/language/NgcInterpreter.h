@@ -26,6 +26,9 @@ struct NgcContext
     // LinuxCNC's SUBROUTINE_PATH: "O<name> call" of a subroutine the file does not hold reads
     // <folder>/<name>.ngc (MachineDescription::subroutineFolder). Empty: none.
     QString subroutineFolder;
+    // LinuxCNC's block delete switch (ProgramParser::setBlockDelete): on, a line whose first
+    // character is "/" is skipped whole, O words and assignments too; off, it runs without it.
+    bool blockDelete = true;
 };
 
 // Runs the control flow of a program in LinuxCNC's language (issue 33): O-word subroutines,
@@ -59,6 +62,15 @@ public:
     // Every structure error of the main file, or the first error of the run.
     bool run(QList<ProgramError>* errors, int maxErrors);
     bool cancelled() const { return m_cancelled; }
+    // After run(), for the check's notes: the main file's lines block delete skipped and the
+    // first of them (1-based); the line the program ended at outside any call (M2, M30 or the
+    // closing "%"; 0: it ran to the file's end or ended in a subroutine), and the lines with
+    // text after it that LinuxCNC does not read (subroutine definitions there are read, and a
+    // "%" closing a program opened with one is its end).
+    int deletedLines() const { return m_deleted; }
+    int firstDeletedLine() const { return m_firstDeleted; }
+    int endLine() const { return m_endLine; }
+    int unreadLines() const;
 
 private:
     struct File;
@@ -94,6 +106,10 @@ private:
     qint64 m_lines = 0;
     bool m_ended = false;
     bool m_percentOpen = false;
+    int m_endLine = 0;
+    bool m_endedAtPercent = false;
+    int m_deleted = 0;
+    int m_firstDeleted = 0;
     std::optional<ProgramError> m_error;
 };
 

@@ -199,7 +199,8 @@ std::optional<NgcExpandedLine> NgcLineExpander::expand(QStringView line, int lin
                                                        std::optional<ProgramError>* error)
 {
     NgcExpandedLine out;
-    if (line.trimmed() == QLatin1String("%")) {
+    // "%" and GRBL's "$" lines go to the parser as written (ProgramParser reads them).
+    if (line.trimmed() == QLatin1String("%") || line.trimmed().startsWith(QLatin1Char('$'))) {
         out.text = line.toString();
         out.keep = true;
         return out;

@@ -57,6 +57,11 @@ bool lineUsesLanguage(QByteArrayView line)
     qsizetype i = 0;
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
         ++i;
+    if (i < line.size() && line[i] == '/') { // block delete's mark (NgcInterpreter) before it
+        ++i;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+    }
     // An O word first (after an N number): anything but repeat/endrepeat is the language.
     qsizetype o = i;
     if (o < line.size() && (line[o] == 'N' || line[o] == 'n')) {
@@ -65,7 +70,7 @@ bool lineUsesLanguage(QByteArrayView line)
             ++o;
     }
     if (o < line.size() && (line[o] == 'O' || line[o] == 'o')) {
-        const QString text = QString::fromUtf8(line);
+        const QString text = QString::fromUtf8(line.sliced(i));
         std::optional<ProgramError> error;
         const std::optional<NgcStatement> s = NgcStatement::read(text, 1, &error);
         if (s && s->kind != NgcStatement::Repeat && s->kind != NgcStatement::EndRepeat)
@@ -164,6 +169,36 @@ QStringList splitLines(const QByteArray& bytes)
     return lines;
 }
 
+// The line of a Fanuc program number before the first block (ProgramParser::programNumber),
+// -1: none. It is not one of LinuxCNC's O words (they take a keyword).
+int programNumberLine(const QStringList& lines, bool blockDelete)
+{
+    for (int i = 0; i < lines.size(); ++i) {
+        const QString t = lines.at(i).trimmed();
+        if (t.isEmpty() || t == QLatin1String("%") ||
+            (blockDelete && t.startsWith(QLatin1Char('/'))))
+            continue;
+        if (ProgramParser::programNumber(t))
+            return i;
+        const LexedLine lexed = ProgramLexer::lex(t, i + 1);
+        if (lexed.error || !lexed.words.isEmpty() || !lexed.message.isEmpty())
+            return -1; // a block came first
+    }
+    return -1;
+}
+
+// The notes of the lines the parser never sees (ProgramExpansionInfo::notes).
+QList<ProgramError> expansionNotes(const NgcInterpreter& interpreter)
+{
+    QList<ProgramError> notes;
+    if (interpreter.deletedLines() > 0)
+        notes << ProgramParser::blockDeleteNote(interpreter.deletedLines(),
+                                                interpreter.firstDeletedLine());
+    if (const int unread = interpreter.unreadLines(); unread > 0)
+        notes << ProgramParser::unreadNote(unread, interpreter.endLine());
+    return notes;
+}
+
 } // namespace
 
 bool ProgramExpansion::usesLanguage(QByteArrayView text)
@@ -236,7 +271,7 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
         *errors = {ProgramError{0, 0, why}};
         return std::nullopt;
     }
-    const QStringList lines = splitLines(bytes);
+    QStringList lines = splitLines(bytes);
     // The parser's limit, here before anything runs: a line is read again at every pass.
     const qsizetype before = errors->size();
     for (qsizetype i = 0; i < lines.size() && errors->size() - before < maxErrors; ++i)
@@ -249,6 +284,13 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
     auto map = std::make_shared<NgcLineMap>();
     ExpandedWriter writer;
     int given = 0;
+    // A program number goes to the parser first, which takes it as the name, and not to the
+    // interpreter.
+    if (const int name = programNumberLine(lines, context.blockDelete); name >= 0) {
+        map->add(++given, name + 1);
+        writer.append(lines.at(name)); // the first line: in memory, cannot fail
+        lines[name].clear();
+    }
     NgcInterpreter interpreter(lines, context,
                                [&](const QString& text, int sourceLine, const QList<int>& columns) {
                                    map->add(++given, sourceLine);
@@ -268,6 +310,7 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
     info->sourceLines = int(lines.size());
     info->coordinateSystems = context.coordinateSystems;
     info->activeSystem = context.activeSystem;
+    info->notes = expansionNotes(interpreter);
     qCDebug(lcProgram) << "worked out" << lines.size() << "lines into" << given << "lines,"
                        << map->runs() << "runs";
     return Result{*text, info};

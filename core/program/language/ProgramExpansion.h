@@ -45,6 +45,9 @@ struct ProgramExpansionInfo
     int sourceLines = 0;
     CoordinateSystems coordinateSystems;
     int activeSystem = 0;
+    // The lines working out did not give out and the parser never sees: those block delete
+    // skipped and those after the program's end (ProgramParser::blockDeleteNote, unreadNote).
+    QList<ProgramError> notes;
 };
 
 // A program in LinuxCNC's language (issue 33: parameters, expressions, O words) worked out

@@ -38,6 +38,8 @@ private Q_SLOTS:
     void fromLine_beyondTheFile_exit2();
     void linuxcncLanguage_workedOut_deviceMovesAndFileLines();
     void feedHold_signals_holdOverrideResumeAsJsonEvents();
+    void touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ_data();
+    void touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ();
 
 private:
     QStringList args(const QString& program, const QStringList& more = {}) const
@@ -411,6 +413,75 @@ void TestCliRun::feedHold_signals_holdOverrideResumeAsJsonEvents()
     QVERIFY2(cli.exitCode() == 0, err.constData());
     QCOMPARE(x(), qint64(40));
     QVERIFY2(out.contains("\"state\":\"finished\""), out.constData());
+}
+
+// Issue 50 item 4: with "toolLength": "touchOff" in the machine file an M6 holds until the work Z
+// is set for the new tool, which the CLI cannot do: an M6 of another tool than the one before
+// it is refused before anything is opened (exit 2, its line and tool named), also with
+// --skip-pauses. The run's first M6 and the same tool again go on with Z as it is: passed with
+// --skip-pauses, refused without a terminal like M0 (naming the tool too).
+void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ_data()
+{
+    QTest::addColumn<QByteArray>("program");
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QByteArray>("says");
+    QTest::addColumn<QList<qint64>>("moves"); // X's steps at the board
+    const QByteArray twoTools =
+        "T1 M6 (3 mm drill)\nG91 G0 X10\nT2 M6 (6 mm end mill)\nG0 X20\nM2\n";
+    const QByteArray oneTool = "T1 M6 (3 mm drill)\nG91 G0 X10\nT1 M6\nG0 X20\nM2\n";
+    const QByteArray refusal = "run: line 3 holds M6 \"Load tool 2 (6 mm end mill)\" with tool "
+                               "lengths by touch-off";
+    QTest::newRow("another tool, --skip-pauses")
+        << twoTools << QStringList{"--skip-pauses"} << 2 << refusal << QList<qint64>{};
+    QTest::newRow("another tool, no terminal")
+        << twoTools << QStringList{} << 2 << refusal << QList<qint64>{};
+    QTest::newRow("the same tool, --skip-pauses")
+        << oneTool << QStringList{"--skip-pauses"} << 0
+        << QByteArray("line 1: tool change passed with the work Z as it is (--skip-pauses)")
+        << QList<qint64>{10, 20};
+    QTest::newRow("the same tool, no terminal")
+        << oneTool << QStringList{} << 2
+        << QByteArray("run: line 1 holds M6 \"Load tool 1 (3 mm drill)\", which waits for Enter")
+        << QList<qint64>{};
+}
+
+void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ()
+{
+    QFETCH(QByteArray, program);
+    QFETCH(QStringList, options);
+    QFETCH(int, exitCode);
+    QFETCH(QByteArray, says);
+    QFETCH(QList<qint64>, moves);
+    const QJsonObject machine{
+        {"format", "stepdeck-machine"},
+        {"version", 2},
+        {"name", "Touch-off mill"},
+        {"controllers",
+         QJsonArray{QJsonObject{{"id", "table"}, {"model", "elab"}, {"port", m_device->path()}}}},
+        {"axes",
+         QJsonArray{
+             QJsonObject{{"name", "X"}, {"controller", "table"}, {"axis", "X"}, {"unit", "steps"}},
+             QJsonObject{
+                 {"name", "Z"}, {"controller", "table"}, {"axis", "Z"}, {"unit", "steps"}}}},
+        {"toolLength", "touchOff"}};
+    const QString file = writeProgram(*m_dir, "touchoff.json", QJsonDocument(machine).toJson());
+    const QString path = writeProgram(*m_dir, "tools.ngc", program);
+    const CliRun r = runCli(
+        QStringList{"--machine", file, "--timeout", "10000", "--setup-defaults", "run", path} +
+        options);
+    QVERIFY2(r.exitCode == exitCode, r.err.constData());
+    QVERIFY2(r.err.contains(says), r.err.constData());
+    if (exitCode != 0) {
+        QCOMPARE(m_device->receivedCount(), 0);
+        return;
+    }
+    QList<qint64> steps;
+    for (const DeviceMove& m : m_device->moves())
+        if (m.axis == Axis::X)
+            steps << m.steps;
+    QCOMPARE(steps, moves);
+    QVERIFY(m_device->still());
 }
 
 QTEST_GUILESS_MAIN(TestCliRun)

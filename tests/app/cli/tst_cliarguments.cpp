@@ -98,6 +98,9 @@ void TestCliArguments::parse_goodInvocations_data()
         << QStringList{"run", "part.ngc", "--optional-stops", "off", "--from-line=3"} << "run"
         << QStringList{"part.ngc"} << QStringList{"from-line=3", "optional-stops=off"} << "sim"
         << false << 3000;
+    QTest::newRow("run --block-delete")
+        << QStringList{"run", "part.ngc", "--block-delete", "off"} << "run"
+        << QStringList{"part.ngc"} << QStringList{"block-delete=off"} << "sim" << false << 3000;
 }
 
 void TestCliArguments::parse_goodInvocations()

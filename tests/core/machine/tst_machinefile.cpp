@@ -206,6 +206,15 @@ void TestMachineFile::parse_invalid_namesTheField_data()
     QTest::newRow("crossControllerFeed text")
         << withEdit("crossControllerFeed", "no") << "crossControllerFeed"
         << "must be true or false";
+    // Issue 50 item 4: where tool lengths come from.
+    QTest::newRow("toolLength unknown")
+        << withEdit("toolLength", "probe") << "toolLength"
+        << "must be \"table\" (G43 takes the tool table's lengths, the default) or \"touchOff\"";
+    QTest::newRow("toolLength in another case")
+        << withEdit("toolLength", "touchoff") << "toolLength"
+        << "must be \"table\"";
+    QTest::newRow("toolLength not a text") << withEdit("toolLength", true) << "toolLength"
+                                           << "must be \"table\"";
 }
 
 void TestMachineFile::parse_invalid_namesTheField()

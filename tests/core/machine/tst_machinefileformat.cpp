@@ -22,7 +22,12 @@ private Q_SLOTS:
     void spindle_maxRpm_roundTripAndOldFilesUnchanged();
     void spindle_maxRpmWithoutASpindleController_refused();
     void crossControllerFeed_roundTripAndOldFilesUnchanged();
+    void limits_readWrittenAndReadBack_data();
+    void limits_readWrittenAndReadBack();
+    void limits_unknownValue_refusedNamingTheField_data();
+    void limits_unknownValue_refusedNamingTheField();
     void subroutineFolder_resolvedAgainstTheFileAndWrittenAsItStands();
+    void toolLength_touchOffRoundTripTableLeftOut();
 };
 
 // Issue 32: a version 1 bus object {"X": 1} reads as the same axes and addresses and is
@@ -221,6 +226,66 @@ void TestMachineFileFormat::crossControllerFeed_roundTripAndOldFilesUnchanged()
     QVERIFY(!old->toJson().contains("crossControllerFeed"));
 }
 
+// Issue 50: "limits" is "clamp" (the default, also without the key: a feed above the machine's
+// highest runs at it) or "refuse"; read, written and read back equal. A clamping machine is
+// written without the key, so files of before issue 50 stay as they were.
+void TestMachineFileFormat::limits_readWrittenAndReadBack_data()
+{
+    QTest::addColumn<QJsonValue>("value"); // undefined: the key left out
+    QTest::addColumn<int>("policy");       // LimitPolicy
+    QTest::addColumn<QJsonValue>("written");
+    QTest::newRow("no key: clamp") << QJsonValue(QJsonValue::Undefined) << int(LimitPolicy::Clamp)
+                                   << QJsonValue(QJsonValue::Undefined);
+    QTest::newRow("clamp") << QJsonValue("clamp") << int(LimitPolicy::Clamp)
+                           << QJsonValue(QJsonValue::Undefined);
+    QTest::newRow("refuse") << QJsonValue("refuse") << int(LimitPolicy::Refuse)
+                            << QJsonValue("refuse");
+}
+
+void TestMachineFileFormat::limits_readWrittenAndReadBack()
+{
+    QFETCH(QJsonValue, value);
+    QFETCH(int, policy);
+    QFETCH(QJsonValue, written);
+    MachineFileError error;
+    const std::optional<MachineDescription> d = MachineFile::parse(
+        value.isUndefined() ? bytes(tableAndRotary()) : withEdit("limits", value), &error);
+    QVERIFY2(d, qPrintable(error.text()));
+    QCOMPARE(int(d->limits), policy);
+    QCOMPARE(d->toJson().value("limits"), written);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("machine.json");
+    QString why;
+    QVERIFY2(MachineFile::save(*d, path, &why), qPrintable(why));
+    const std::optional<MachineDescription> back = MachineFile::load(path, &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *d);
+    MachineDescription other = *d;
+    other.limits = other.limits == LimitPolicy::Clamp ? LimitPolicy::Refuse : LimitPolicy::Clamp;
+    QVERIFY(!(other == *d));
+}
+
+// Any other value is refused at the field, naming the two words: a typo must not leave a shop
+// that wants refusals clamping.
+void TestMachineFileFormat::limits_unknownValue_refusedNamingTheField_data()
+{
+    QTest::addColumn<QJsonValue>("value");
+    QTest::newRow("another word") << QJsonValue("clip");
+    QTest::newRow("wrong case") << QJsonValue("Refuse");
+    QTest::newRow("a boolean") << QJsonValue(true);
+    QTest::newRow("a number") << QJsonValue(1);
+}
+
+void TestMachineFileFormat::limits_unknownValue_refusedNamingTheField()
+{
+    QFETCH(QJsonValue, value);
+    MachineFileError error;
+    QVERIFY(!MachineFile::parse(withEdit("limits", value), &error));
+    QCOMPARE(error.field, QStringLiteral("limits"));
+    QVERIFY2(error.message.contains("\"clamp\"") && error.message.contains("\"refuse\""),
+             qPrintable(error.message));
+}
+
 // Issue 33: "subroutineFolder" is read as written, resolved against the machine file's folder,
 // written back as written; a file without it has none.
 void TestMachineFileFormat::subroutineFolder_resolvedAgainstTheFileAndWrittenAsItStands()
@@ -246,6 +311,36 @@ void TestMachineFileFormat::subroutineFolder_resolvedAgainstTheFileAndWrittenAsI
     QVERIFY(!(*old == *d));
     QVERIFY(!MachineFile::parse(withEdit("subroutineFolder", 3), &error));
     QCOMPARE(error.field, QStringLiteral("subroutineFolder"));
+}
+
+// Issue 50 item 4: "toolLength": "touchOff" is read, written and read back; "table" is the
+// default, the same as no key, and is written without it (older versions still read the file).
+void TestMachineFileFormat::toolLength_touchOffRoundTripTableLeftOut()
+{
+    MachineFileError error;
+    const std::optional<MachineDescription> touchOff =
+        MachineFile::parse(withEdit("toolLength", "touchOff"), &error);
+    QVERIFY2(touchOff, qPrintable(error.text()));
+    QCOMPARE(touchOff->toolLength, ToolLength::TouchOff);
+    QCOMPARE(touchOff->toJson().value("toolLength"), QJsonValue("touchOff"));
+    QTemporaryDir dir;
+    const QString path = dir.filePath("machine.json");
+    QString why;
+    QVERIFY2(MachineFile::save(*touchOff, path, &why), qPrintable(why));
+    const std::optional<MachineDescription> back = MachineFile::load(path, &error);
+    QVERIFY2(back, qPrintable(error.text()));
+    QVERIFY(*back == *touchOff);
+    const std::optional<MachineDescription> table =
+        MachineFile::parse(withEdit("toolLength", "table"), &error);
+    QVERIFY2(table, qPrintable(error.text()));
+    QCOMPARE(table->toolLength, ToolLength::Table);
+    QVERIFY(!table->toJson().contains("toolLength"));
+    const std::optional<MachineDescription> old =
+        MachineFile::parse(bytes(tableAndRotary()), &error);
+    QVERIFY2(old, qPrintable(error.text()));
+    QCOMPARE(old->toolLength, ToolLength::Table);
+    QVERIFY(*old == *table);
+    QVERIFY(!(*old == *touchOff));
 }
 
 void TestMachineFileFormat::spindle_maxRpmWithoutASpindleController_refused()

@@ -74,8 +74,15 @@ inline MachineAxis axis(const QString& name, const QString& controller, Axis on,
 // "emis", "nanotec": one controller in its steps (MachineDescription::singleController);
 // "emisKnown": the EMIS whose adapter knows its work speed (written in this session);
 // "emisKnownX": the same for X only.
+// Any of them with "Refuse" appended ("millRefuse"): the machine file's "limits": "refuse"
+// (issue 50), a feed or S above the machine's highest refused as before instead of run at it.
 inline MachineFacts machineFacts(const QString& name)
 {
+    if (name.endsWith(QLatin1String("Refuse"))) {
+        MachineFacts f = machineFacts(name.chopped(6));
+        f.description.limits = machine::LimitPolicy::Refuse;
+        return f;
+    }
     MachineFacts f;
     if (name == QLatin1String("emisKnown") || name == QLatin1String("emisKnownX")) {
         f = machineFacts(QStringLiteral("emis"));

@@ -224,6 +224,19 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                         << "Load tool 1 (3 mm flat end mill)" << pockets;
         row("Estlcam") << "estlcam_style.nc" << QString()
                        << QList<double>{13, 13, -20.5, 15, 15, -20.5, 17, 13, -20.5};
+        // Issue 50: "%" and O1001 around it, a sender's $X, $H (the reference run, at the
+        // reference already) and $32=0, arcs with K0.000, a "/M0" that block delete skips (no
+        // pause: no prompt), and a G0 after the closing "%" that is never read.
+        row("GRBL sender, Fanuc wrapper")
+            << "grbl_sender_style.nc" << QString()
+            << QList<double>{0,  0,  -15,   // G0 Z5 after $H
+                             13, 13, -15,   // G0 X3 Y3
+                             13, 13, -20.5, // G1 Z-0.5
+                             19, 13, -20.5, // G1 X9
+                             21, 15, -20.5, // the first G3 K0.000's end
+                             21, 17, -20.5, //
+                             19, 19, -20.5, // the second's end
+                             13, 19, -20.5, 13, 13, -20.5, 13, 13, -15};
     }
 }
 

@@ -2,7 +2,9 @@
 // ContourMoves), and the check's refusal of a feed the stream's tick cannot carry. The
 // expected figures are worked out here by hand from the machine's steps per unit.
 #include "ProgramCheckTestSupport.h"
+#include "motion/ContourSteps.h"
 #include "program/ContourMoves.h"
+#include "program/FeedLimit.h"
 #include "program/ProgramReader.h"
 #include <QtTest>
 #include <cmath>
@@ -24,6 +26,10 @@ private Q_SLOTS:
     void check_feedAboveTheTick_refusedNamingTheHighest_data();
     void check_feedAboveTheTick_refusedNamingTheHighest();
     void check_startSpeedNotKnown_refusedWithReason();
+    void contourFeed_aboveTheTick_theHighestTheStreamTakes_data();
+    void contourFeed_aboveTheTick_theHighestTheStreamTakes();
+    void check_feedAboveTheTick_runsAtTheHighestWithNote_data();
+    void check_feedAboveTheTick_runsAtTheHighestWithNote();
 };
 
 namespace {
@@ -193,7 +199,8 @@ void TestContourMoves::check_feedAboveTheTick_refusedNamingTheHighest()
 {
     QFETCH(QString, program);
     QFETCH(QString, error);
-    const MachineFacts facts = mill(500);
+    MachineFacts facts = mill(500);
+    facts.description.limits = machine::LimitPolicy::Refuse; // issue 50: refused as before
     const ProgramCheckResult r = ProgramCheck::check(parsed(program, facts), facts);
     const QStringList errors = texts(r.errors);
     if (error.isEmpty()) {
@@ -216,6 +223,79 @@ void TestContourMoves::check_startSpeedNotKnown_refusedWithReason()
     const QStringList errors = texts(r.errors);
     QCOMPARE(errors.size(), 1);
     QVERIFY2(errors.first().contains("Start speed is not known"), qPrintable(errors.first()));
+}
+
+// Issue 50, FeedLimit::contourFeed: a move's feed where its tick carries it, else the highest
+// feed (mm/s) its tick allows, which the stream then takes (no slot steps more than once a
+// tick); with "limits": "refuse" the feed as programmed (the check refuses it). Tick 499/s:
+// along X (100 steps/mm) 4.99 mm/s, along Y (200) 2.495, the diagonal 2.495 x sqrt 2.
+void TestContourMoves::contourFeed_aboveTheTick_theHighestTheStreamTakes_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<bool>("refuse");
+    QTest::addColumn<double>("feed"); // mm/s the move runs at
+    QTest::newRow("within: as programmed") << "G91 G1 X1 F240" << false << 4.0;
+    QTest::newRow("along X") << "G91 G1 X1 F600" << false << 4.99;
+    QTest::newRow("along Y") << "G91 G1 Y1 F600" << false << 2.495;
+    QTest::newRow("the diagonal") << "G91 G1 X1 Y1 F600" << false << 2.495 * std::sqrt(2.0);
+    QTest::newRow("refuse: as programmed") << "G91 G1 X1 F600" << true << 10.0;
+}
+
+void TestContourMoves::contourFeed_aboveTheTick_theHighestTheStreamTakes()
+{
+    QFETCH(QString, program);
+    QFETCH(bool, refuse);
+    QFETCH(double, feed);
+    const MachineFacts facts = mill(500);
+    const ContourMoves contours(facts);
+    const ProgramBlock b = block(program, facts);
+    const ContourMoves::Stream* s = contours.streamOf(b);
+    QVERIFY(s);
+    QCOMPARE(s->tickRate, 499.0);
+    motion::CanonicalMove move =
+        contours.lineMove(*s, b, motion::Position{}, [](const QString&) { return 0.0; });
+    const double runs = FeedLimit::contourFeed(
+        *s, move, refuse ? machine::LimitPolicy::Refuse : machine::LimitPolicy::Clamp);
+    QVERIFY2(std::abs(runs - feed) < 1e-6, qPrintable(QString::number(runs, 'g', 12)));
+    move.feed = runs;
+    if (!refuse) // the stream takes it: within the tick
+        QVERIFY(motion::ContourSteps::neededTickRate(move, s->scale) <= s->tickRate);
+}
+
+// The same moves as check_feedAboveTheTick_refusedNamingTheHighest, by default: no error, a
+// note naming the F that runs (unrounded: the F the stream runs at, 3 decimals at most).
+void TestContourMoves::check_feedAboveTheTick_runsAtTheHighestWithNote_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("runsAt"); // empty: no note
+    QTest::newRow("along X, within") << "G91 G1 X1 F299"
+                                     << "";
+    QTest::newRow("along X, beyond") << "G91 G1 X1 F300"
+                                     << "F300 runs at F299.4,";
+    QTest::newRow("along Y, beyond") << "G91 G1 Y1 F150"
+                                     << "F150 runs at F149.7,";
+    QTest::newRow("the diagonal, beyond") << "G91 G1 X1 Y1 F212"
+                                          << "F212 runs at F211.708,";
+    QTest::newRow("a circle, beyond") << "G91 G2 X0 Y0 I1 F150"
+                                      << "F150 runs at F149.7,";
+}
+
+void TestContourMoves::check_feedAboveTheTick_runsAtTheHighestWithNote()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, runsAt);
+    const MachineFacts facts = mill(500);
+    const ProgramCheckResult r = ProgramCheck::check(parsed(program, facts), facts);
+    QVERIFY2(r.ok(), qPrintable(texts(r.errors).join('\n')));
+    const QStringList notes = texts(r.notes);
+    if (runsAt.isEmpty()) {
+        QVERIFY2(notes.isEmpty(), qPrintable(notes.join('\n')));
+        return;
+    }
+    QCOMPARE(notes.size(), 1);
+    QVERIFY2(notes.first().contains(runsAt), qPrintable(notes.first()));
+    QVERIFY2(notes.first().contains("contour stream of controller \"table\" (499 ticks/s"),
+             qPrintable(notes.first()));
 }
 
 QTEST_MAIN(TestContourMoves)

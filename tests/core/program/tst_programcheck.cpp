@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QSignalSpy>
 #include <QtTest>
+#include <cmath>
 
 using namespace stepdeck;
 using namespace stepdeck::machine;
@@ -24,12 +25,16 @@ class TestProgramCheck : public QObject
 private Q_SLOTS:
     void check_errors_lineColumnAndMessage_data();
     void check_errors_lineColumnAndMessage();
+    void check_feedAboveTheHighest_runsAtItWithNote_data();
+    void check_feedAboveTheHighest_runsAtItWithNote();
     void check_fromLine_startOrRefusal_data();
     void check_fromLine_startOrRefusal();
     void check_axisTheMachineLacks_named();
     void check_nestedEmptyRepeats_endQuickly();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
     void check_manyErrors_listedUpToTheParsersLimit();
+    void check_aroundTheProgram_blockDeleteAndNotes_data();
+    void check_aroundTheProgram_blockDeleteAndNotes();
     void machineIo_numberedOverTheControllers_data();
     void machineIo_numberedOverTheControllers();
     void examples_eachChecksCleanOnItsModel();
@@ -101,14 +106,16 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
                                                    << ""
                                                    << "G20 G28 A0\nG0 A80" << QStringList{};
     // G61: each block on its own, its rate written to the board (docs/programs.md "How F maps").
+    // Feeds above the highest are refused with "limits": "refuse" ("millRefuse", issue 50); the
+    // default runs them at it: check_feedAboveTheHighest_runsAtItWithNote.
     QTest::newRow("G1 rate above the E-LAB feed speed")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G61\nG28 X0\nG1 X10 F40000"
         << QStringList{"3:8: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("a refused rate still moves the axis in the walk")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G61\nG28 X0\nG91 G1 X101 F40000"
         << QStringList{"3:8: X reaches 101 mm, outside the soft limits 0..100 mm",
@@ -119,13 +126,13 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << ""
         << "G61\nG28 X0\nG1 X10 F39000" << QStringList{};
     QTest::newRow("G1 rate from an earlier line: named at G1")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G61\nG28 X0\nF40000\nG1 X10"
         << QStringList{"4:1: F40000 is 66667 steps/s on X; controller \"table\" takes 0..65535 "
                        "steps/s (Feed speed)"};
     QTest::newRow("G20 converts the rate")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G61 G20\nG28 X0\nG1 X1 F1600"
         << QStringList{"3:7: F1600 is 67733 steps/s on X; controller \"table\" takes 0..65535 "
@@ -134,14 +141,14 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
     // share left after the status polls, issue 47), one step per tick at most: X (100 steps/mm)
     // at most 21 mm/s, Y (200 steps/mm) 10.5 mm/s.
     QTest::newRow("contour: F beyond the tick, named with the highest")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G28 X0\nG1 X10 F40000"
         << QStringList{"2:8: F40000 is too fast for the contour stream of controller \"table\": "
                        "at its 2100 ticks/s (one step per tick at most) this move's highest feed "
                        "is F1259.9"};
     QTest::newRow("contour: G20 converts F")
-        << "mill"
+        << "millRefuse"
         << ""
         << "G20\nG28 Y0\nG1 Y1 F30"
         << QStringList{"3:7: F30 is too fast for the contour stream of controller \"table\": at "
@@ -333,7 +340,7 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << QStringList{"1:13: G81: the position of Z is unknown, so the cycle has no start: "
                        "reference the axis first (G28 Z)"};
     QTest::newRow("cycle's feed beyond Z's rate")
-        << "mill"
+        << "millRefuse"
         << "X=0 Y=0 Z=0"
         << "G81 X10 Y10 Z-5 R-1 F600000"
         << QStringList{"1:21: F600000 is 1000000 steps/s on Z; controller \"table\" takes "
@@ -357,6 +364,97 @@ void TestProgramCheck::check_errors_lineColumnAndMessage()
     const ProgramCheckResult result = ProgramCheck::check(p, facts);
     QCOMPARE(texts(result.errors), errors);
     QCOMPARE(result.ok(), errors.isEmpty());
+}
+
+// Issue 50: a feed above the highest a move can run at runs at that highest, as LinuxCNC and
+// GRBL limit it: a note (line, column of F, programmed F, the F that runs), no error, and the
+// estimate at the feed that runs. The mill's E-LAB holds start speed 2401: its contour ticks at
+// 2100/s (X 100 steps/mm: at most 21 mm/s, F1260; Y 200: F630, in inches F24.803), a G61 block
+// runs below the start speed (2400 steps/s: X at F1440). The Nanotec in steps slows both shares
+// of a diagonal by one factor (o at most 25 000), so they still arrive together.
+void TestProgramCheck::check_feedAboveTheHighest_runsAtItWithNote_data()
+{
+    QTest::addColumn<QString>("machine");
+    QTest::addColumn<QString>("known");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("notes");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("seconds"); // the estimate; < 0: not asserted
+    const QString contour = "F40000 runs at F1260, the highest this move can run at in the "
+                            "contour stream of controller \"table\" (2100 ticks/s, one step per "
+                            "tick at most)";
+    QTest::newRow("contour: F above the tick runs at the highest")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F40000" << QStringList{"2:8: " + contour} << QStringList{} << 10.0 / 21;
+    QTest::newRow("contour: one note for the F, the further lines counted")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F40000\nG1 X0\nG1 X10"
+        << QStringList{"2:8: " + contour + " (also on 2 more line(s))"} << QStringList{}
+        << 30.0 / 21;
+    QTest::newRow("contour: G20 converts F")
+        << "mill"
+        << ""
+        << "G20\nG28 Y0\nG1 Y1 F30"
+        << QStringList{"3:7: F30 runs at F24.803, the highest this move can run at in the "
+                       "contour stream of controller \"table\" (2100 ticks/s, one step per tick "
+                       "at most)"}
+        << QStringList{} << 25.4 / 10.5;
+    QTest::newRow("G61: below the start speed")
+        << "mill"
+        << ""
+        << "G61\nG28 X0\nG1 X10 F40000"
+        << QStringList{"3:8: F40000 is 66667 steps/s on X, above the 2400 steps/s controller "
+                       "\"table\" takes (below its Start speed: feed mode has no ramp): X runs "
+                       "at F1440"}
+        << QStringList{} << 10.0 / 24;
+    QTest::newRow("Nanotec: both shares slowed by one factor")
+        << "nanotec"
+        << "X=0 Y=0"
+        << "G1 X30000 Y40000 F3000000"
+        << QStringList{"1:18: F3000000 moves X at 30000 steps/s, above the 25000 steps/s "
+                       "controller \"nanotec\" takes (Maximum frequency at most): the move runs "
+                       "at F1875000"}
+        << QStringList{} << 1.6;
+    QTest::newRow("within the highest: no note")
+        << "mill"
+        << ""
+        << "G28 X0\nG1 X10 F1200" << QStringList{} << QStringList{} << 0.5;
+    // What the device cannot do more slowly stays an error (o at least 60 steps/s).
+    QTest::newRow("below the lowest: still refused")
+        << "nanotec"
+        << "X=0"
+        << "G1 X100 F3000" << QStringList{}
+        << QStringList{"1:9: F3000 is 50 steps/s on X; controller \"nanotec\" takes 60..25000 "
+                       "steps/s (Maximum frequency)"}
+        << -1.0;
+    QTest::newRow("\"limits\": \"refuse\": the error of before, no note")
+        << "millRefuse"
+        << ""
+        << "G28 X0\nG1 X10 F40000" << QStringList{}
+        << QStringList{"2:8: F40000 is too fast for the contour stream of controller \"table\": "
+                       "at its 2100 ticks/s (one step per tick at most) this move's highest feed "
+                       "is F1259.9"}
+        << -1.0;
+}
+
+void TestProgramCheck::check_feedAboveTheHighest_runsAtItWithNote()
+{
+    QFETCH(QString, machine);
+    QFETCH(QString, known);
+    QFETCH(QString, program);
+    QFETCH(QStringList, notes);
+    QFETCH(QStringList, errors);
+    QFETCH(double, seconds);
+    MachineFacts facts = machineFacts(machine);
+    facts.knownPositions = positions(known);
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    QCOMPARE(texts(result.notes), notes);
+    if (seconds >= 0)
+        QVERIFY2(std::abs(result.preview.estimatedSeconds - seconds) < 1e-3,
+                 qPrintable(QString::number(result.preview.estimatedSeconds)));
 }
 
 void TestProgramCheck::check_fromLine_startOrRefusal_data()
@@ -418,6 +516,82 @@ void TestProgramCheck::check_fromLine_startOrRefusal()
     QCOMPARE(texts(result.errors), errors);
     if (errors.isEmpty() || blocksRun > 0)
         QCOMPARE(result.preview.blocksRun, blocksRun);
+}
+
+// Issue 50 items 3, 6 and 8, through the check of a text (the window's, ProgramCheck::check of
+// a source) and the check of the program it read (the run's): the block delete switch of the
+// facts decides whether a "/" line is checked and run, plain or in LinuxCNC's language; the
+// parser's and the working out's notes reach the result's notes, in line order.
+void TestProgramCheck::check_aroundTheProgram_blockDeleteAndNotes_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<bool>("blockDelete");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<QStringList>("notes");
+    QTest::addColumn<QString>("name");
+    const QString plain = "G0 X10\n/G0 X150\nM30\nG0 X200\n(trailer)\n";
+    const QString language = "#<x> = 10\nG0 X#<x>\n/G0 X150\nM30\nG0 X200\n";
+    const QString beyond = "X reaches 150 mm, outside the soft limits 0..100 mm";
+    QTest::newRow("plain, block delete on: the slash line is skipped")
+        << plain << true << QStringList{}
+        << QStringList{ProgramParser::blockDeleteNote(1, 2).text(),
+                       ProgramParser::unreadNote(2, 3).text()}
+        << QString();
+    QTest::newRow("plain, block delete off: the slash line is checked")
+        << plain << false << QStringList{"2:5: " + beyond}
+        << QStringList{ProgramParser::unreadNote(2, 3).text()} << QString();
+    QTest::newRow("LinuxCNC's language, block delete on")
+        << language << true << QStringList{}
+        << QStringList{ProgramParser::blockDeleteNote(1, 3).text(),
+                       ProgramParser::unreadNote(1, 4).text()}
+        << QString();
+    QTest::newRow("LinuxCNC's language, block delete off")
+        << language << false << QStringList{"3:5: " + beyond}
+        << QStringList{ProgramParser::unreadNote(1, 4).text()} << QString();
+    QTest::newRow("Fanuc wrapper, GRBL's $ lines, K0 on an arc")
+        << "%\nO1001 (BRACKET)\n$H\n$32=1\nG0 X10\nG2 X20 Y0 I5 J0 K0.000 F300\nM30\n%\nG0 X500\n"
+        << true << QStringList{}
+        << QStringList{"4:1: $32=1 is a GRBL command (a setting, the alarm lock, a report or a "
+                       "jog): not run",
+                       "6:17: K0.000 on 1 arc(s), this one the first: an offset along the "
+                       "plane's normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; "
+                       "any other value is refused)",
+                       ProgramParser::unreadNote(1, 7).text()}
+        << "O1001 (BRACKET)";
+    QTest::newRow("LinuxCNC's language with a program number and a $ line")
+        << "O1001\n#<x> = 10\n$X\nG0 X#<x>\nM2\n"
+        << true << QStringList{}
+        << QStringList{"3:1: $X is a GRBL command (a setting, the alarm lock, a report or a jog): "
+                       "not run"}
+        << "O1001";
+}
+
+void TestProgramCheck::check_aroundTheProgram_blockDeleteAndNotes()
+{
+    QFETCH(QString, program);
+    QFETCH(bool, blockDelete);
+    QFETCH(QStringList, errors);
+    QFETCH(QStringList, notes);
+    QFETCH(QString, name);
+    MachineFacts facts = machineFacts(QStringLiteral("mill"));
+    facts.knownPositions = positions(QStringLiteral("X=0 Y=0 Z=0 A=0"));
+    facts.blockDelete = blockDelete;
+    QStringList axes;
+    for (const MachineAxis& a : facts.description.axes)
+        axes << a.name;
+    const ProgramCheckResult result =
+        ProgramCheck::check(ProgramSource::bytes(program.toUtf8()), axes, facts);
+    QCOMPARE(texts(result.errors), errors);
+    QCOMPARE(texts(result.notes), notes);
+    if (!errors.isEmpty())
+        return;
+    QVERIFY(result.program);
+    QCOMPARE(result.program->name, name);
+    // The run's check reads the program as it was read, whatever the switch says now.
+    facts.blockDelete = !blockDelete;
+    const ProgramCheckResult again = ProgramCheck::check(*result.program, facts);
+    QCOMPARE(texts(again.errors), errors);
+    QCOMPARE(texts(again.notes), notes);
 }
 
 // A program parsed for other axes than the machine checked against (the machine file changed

@@ -22,8 +22,12 @@ private Q_SLOTS:
     void check_coordinates_targetsLimitsAndErrors();
     void check_tools_lengthOffsetAndTable_data();
     void check_tools_lengthOffsetAndTable();
+    void check_toolLength_touchOffTakesNoLengthTableAsBefore_data();
+    void check_toolLength_touchOffTakesNoLengthTableAsBefore();
     void check_spindleAboveMaxRpm_refusedAtS_data();
     void check_spindleAboveMaxRpm_refusedAtS();
+    void check_spindleAboveMaxRpm_runsAtMaxRpmWithNote_data();
+    void check_spindleAboveMaxRpm_runsAtMaxRpmWithNote();
     void check_inverseTime_eachAxisItsRate_data();
     void check_inverseTime_eachAxisItsRate();
     void check_coordinatedFeed_alongThePathAtF_data();
@@ -164,9 +168,69 @@ void TestProgramCheckDialect::check_tools_lengthOffsetAndTable()
         QCOMPARE(result.preview.path.last().position.value("Z"), endZ);
 }
 
+// Issue 50 item 4: the machine file's toolLength. With "touchOff" G43 H adds no length and needs
+// no table entry (an empty table is no error), an M6 needs none either, and the preview's note
+// names the M6s the run holds at for the work Z; with "table" (the default) as before.
+void TestProgramCheckDialect::check_toolLength_touchOffTakesNoLengthTableAsBefore_data()
+{
+    QTest::addColumn<bool>("touchOff");
+    QTest::addColumn<QByteArray>("tools");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("errors");
+    QTest::addColumn<double>("endZ");  // work coordinates
+    QTest::addColumn<QString>("note"); // ProgramPreview::toolNote
+    const QString twoChanges = "tool lengths by touch-off (the machine file's toolLength): the "
+                               "run holds at 2 tool change(s) (M6, line(s) 1, 3) until the work "
+                               "Z is set for the new tool; G43 adds no length";
+    QTest::newRow("table: G43 H2 with an empty table refused")
+        << false << QByteArray() << "T1 M6\nG0 Z-1\nT2 M6\nG43 H2 G0 Z-5"
+        << QStringList{"4:5: G43: the machine's tool table is empty: enter tool 2's length first"}
+        << -5.0 << QString();
+    QTest::newRow("touchOff: G43 H2 with an empty table")
+        << true << QByteArray() << "T1 M6\nG0 Z-1\nT2 M6\nG43 H2 G0 Z-5" << QStringList{} << -5.0
+        << twoChanges;
+    QTest::newRow("table: the table's length")
+        << false << QByteArray("T2 Z-20 ;short\n") << "T2 M6\nG43 H2 G0 Z-5" << QStringList{}
+        << -25.0 << QString();
+    QTest::newRow("touchOff: the table's length adds nothing")
+        << true << QByteArray("T2 Z-20 ;short\n") << "T2 M6\nG43 H2 G0 Z-5" << QStringList{} << -5.0
+        << "tool lengths by touch-off (the machine file's toolLength): the run holds at 1 tool "
+           "change(s) (M6, line(s) 1) until the work Z is set for the new tool; G43 adds no "
+           "length";
+    QTest::newRow("touchOff: T and H not in the table")
+        << true << QByteArray("T1 Z10\n") << "T3 M6\nG0 Z-1\nT3 M6\nG43 H3 G0 Z-5" << QStringList{}
+        << -5.0 << twoChanges;
+    QTest::newRow("touchOff: G43 without M6")
+        << true << QByteArray() << "G43 H1 G0 Z-5" << QStringList{} << -5.0
+        << "tool lengths by touch-off (the machine file's toolLength): G43 adds no length; set "
+           "the work Z for the tool in the spindle before the run";
+    QTest::newRow("touchOff: no tool words")
+        << true << QByteArray() << "G0 Z-5" << QStringList{} << -5.0 << QString();
+}
+
+void TestProgramCheckDialect::check_toolLength_touchOffTakesNoLengthTableAsBefore()
+{
+    QFETCH(bool, touchOff);
+    QFETCH(QByteArray, tools);
+    QFETCH(QString, program);
+    QFETCH(QStringList, errors);
+    QFETCH(double, endZ);
+    QFETCH(QString, note);
+    MachineFacts facts = machineFacts("mill");
+    facts.description.toolLength = touchOff ? ToolLength::TouchOff : ToolLength::Table;
+    facts.knownPositions = positions("Z=0");
+    const std::optional<ToolTable> table = ToolTable::parse(tools, nullptr);
+    QVERIFY(table);
+    facts.tools = *table;
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    QCOMPARE(result.preview.path.last().position.value("Z"), endZ);
+    QCOMPARE(result.preview.toolNote, note);
+}
+
 // Issue 29: with the machine's spindle scale, S is in rpm up to maxRpm (mapped onto the
-// E-LAB's 0..1000); above it, an error at the S word naming maxRpm. Without the scale, S is the
-// controller's own value.
+// E-LAB's 0..1000); above it, with the machine file's "limits": "refuse" (issue 50), an error at
+// the S word naming maxRpm. Without the scale, S is the controller's own value.
 void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS_data()
 {
     QTest::addColumn<double>("maxRpm"); // 0: none
@@ -204,12 +268,52 @@ void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS()
     QFETCH(double, maxRpm);
     QFETCH(QString, program);
     QFETCH(QStringList, errors);
+    MachineFacts facts = machineFacts("millRefuse");
+    if (maxRpm > 0)
+        facts.description.spindle.maxRpm = maxRpm;
+    facts.knownPositions = positions("X=0");
+    const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
+    QCOMPARE(texts(result.errors), errors);
+    QVERIFY(result.notes.isEmpty());
+}
+
+// Issue 50: by default an S above maxRpm runs at maxRpm, as GRBL clamps S at $30: a note at the
+// S word (programmed S, the S that runs), once per S value, and no error. The controller's own
+// range without a scale stays an error (the E-LAB's 0..1000).
+void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote_data()
+{
+    QTest::addColumn<double>("maxRpm"); // 0: none
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("notes");
+    QTest::addColumn<QStringList>("errors");
+    const QString at24000 = "S30000 runs at S24000, the spindle's maxRpm (the machine file's "
+                            "spindle scale)";
+    QTest::newRow("M3 S30000 of 24000")
+        << 24000.0 << "G0 X1\nN20 M3 S30000" << QStringList{"2:8: " + at24000} << QStringList{};
+    QTest::newRow("S on G1, twice")
+        << 24000.0 << "M3 S1000\nG1 X1 S30000 F100\nG1 X2 S30000"
+        << QStringList{"2:7: " + at24000 + " (also on 1 more line(s))"} << QStringList{};
+    QTest::newRow("S24000 of 24000: none")
+        << 24000.0 << "M3 S24000" << QStringList{} << QStringList{};
+    QTest::newRow("no scale: S12000 beyond the E-LAB's 1000")
+        << 0.0 << "M3 S12000" << QStringList{}
+        << QStringList{"1:4: controller \"table\": Spindle speed: value '12000' is out of range "
+                       "(allowed: 0..1000 rpm)"};
+}
+
+void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote()
+{
+    QFETCH(double, maxRpm);
+    QFETCH(QString, program);
+    QFETCH(QStringList, notes);
+    QFETCH(QStringList, errors);
     MachineFacts facts = machineFacts("mill");
     if (maxRpm > 0)
         facts.description.spindle.maxRpm = maxRpm;
     facts.knownPositions = positions("X=0");
     const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
     QCOMPARE(texts(result.errors), errors);
+    QCOMPARE(texts(result.notes), notes);
 }
 
 // G93 (docs/programs.md "Inverse time"): a G1 takes 1/F minutes, each axis at its distance times
@@ -237,12 +341,11 @@ void TestProgramCheckDialect::check_inverseTime_eachAxisItsRate_data()
     QTest::newRow("the same F, other distances")
         << "X=0"
         << "G93 G1 X1 F60\nG1 X3 F60" << QStringList{} << 2.0;
-    QTest::newRow("too fast for the board")
+    // Issue 50: X would need 166 667 steps/s; it runs below the start speed 2401 (feed mode has
+    // no ramp), at 2400 steps/s = 24 mm/s, and the move takes longer (a note says so).
+    QTest::newRow("too fast for the board: runs at the highest")
         << "X=0"
-        << "G93 G1 X100 F1000"
-        << QStringList{"1:13: G93 F1000 (the move in 0.06 s) moves X at 166667 steps/s; "
-                       "controller \"table\" takes 0..65535 steps/s (Feed speed)"}
-        << 0.0;
+        << "G93 G1 X100 F1000" << QStringList{} << 100.0 / 24;
     QTest::newRow("back to G94 and its own F")
         << "X=0"
         << "G93 G1 X1 F60\nG94 G1 X2 F60" << QStringList{} << 2.0;

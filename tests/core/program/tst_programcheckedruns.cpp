@@ -5,7 +5,10 @@
 // (X, Y in mm) and a Nanotec rotary axis (A in degrees), each simulator on a pseudo-terminal.
 // Every program the check passes must run to its end: a rule refusal mid-run (after the machine
 // moved) fails the test, naming the program. Both sides must occur (some programs refused by
-// the check, some run), so the table exercises the rules rather than passing vacuously.
+// the check, some run), so the table exercises the rules rather than passing vacuously. Since
+// issue 50 a feed above the machine's highest runs at it (FeedLimit, the same function for the
+// check and the run): those programs run, noted, and are refused only by the check of a machine
+// file with "limits": "refuse".
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
 #include "machine/Machine.h"
@@ -128,6 +131,8 @@ void TestProgramCheckedRuns::cleanupTestCase()
 void TestProgramCheckedRuns::checkedClean_runsToItsEnd()
 {
     int refusedByCheck = 0;
+    int refusedWhenRefusing = 0; // by the check of "limits": "refuse" (issue 50)
+    int clamped = 0;             // ran with a feed limited to the machine's highest, noted
     int ran = 0;
     for (quint32 seed = 1; seed <= kPrograms; ++seed) {
         const QByteArray text = generated(seed);
@@ -135,11 +140,17 @@ void TestProgramCheckedRuns::checkedClean_runsToItsEnd()
         const std::optional<Program> program = ProgramParser::parse(
             text, {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("A")}, &errors);
         QVERIFY2(program, qPrintable(QString::fromUtf8(text)));
-        const ProgramCheckResult checked = ProgramCheck::check(*program, factsOf(*m_machine));
+        // Issue 50: this machine runs a feed above its highest at that highest (the default);
+        // the same program checked as "limits": "refuse" is refused as before issue 50.
+        MachineFacts facts = factsOf(*m_machine);
+        const ProgramCheckResult checked = ProgramCheck::check(*program, facts);
+        facts.description.limits = LimitPolicy::Refuse;
+        refusedWhenRefusing += ProgramCheck::check(*program, facts).ok() ? 0 : 1;
         if (!checked.ok()) {
             ++refusedByCheck;
             continue;
         }
+        clamped += checked.notes.isEmpty() ? 0 : 1;
         ProgramRunner runner(m_machine.get());
         QVERIFY2(runner.start(*program, 1, &errors),
                  qPrintable(QStringLiteral("seed %1: the check passed, start refused: %2\n%3")
@@ -153,9 +164,11 @@ void TestProgramCheckedRuns::checkedClean_runsToItsEnd()
                                 .arg(runner.endMessage(), QString::fromUtf8(text))));
         ++ran;
     }
-    qInfo("%d programs: %d refused by the check, %d ran to their end", kPrograms, refusedByCheck,
-          ran);
-    QVERIFY(refusedByCheck >= 3);
+    qInfo("%d programs: %d refused by the check (%d with \"limits\": \"refuse\"), %d ran to their "
+          "end, %d of them with a feed limited",
+          kPrograms, refusedByCheck, refusedWhenRefusing, ran, clamped);
+    QVERIFY(refusedWhenRefusing >= 3);
+    QVERIFY(clamped >= 3);
     QVERIFY(ran >= 3);
 }
 

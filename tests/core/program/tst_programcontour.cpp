@@ -28,6 +28,7 @@ private Q_SLOTS:
     void contour_otherControllersLinkLost_failsLinkDownBoardStops();
     void contour_stop_boardStillEveryAxisStaysReferenced();
     void feedHold_contour_axesShowStanding();
+    void contour_camFeedAboveTheStreamsHighest_runsAtItBoardStepsEveryTick();
 
 private:
     QPoint boardPosition() const;
@@ -407,6 +408,52 @@ void TestProgramContour::feedHold_contour_axesShowStanding()
     QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
     QTRY_COMPARE_WITH_TIMEOUT(host() - hostOrigin, boardPosition() - boardOrigin, 10000);
     QTRY_VERIFY_WITH_TIMEOUT(!anyReportedMoving(), 10000);
+}
+
+// Issue 50: a program as a Fusion 360 post writes it, F6000 (100 mm/s) for a generic machine.
+// This table's stream ticks at 1999/s (start speed 2000, raiseElabFeedLimits), one step a tick at
+// most: along the 2:1 diagonal X (400 steps/mm) allows F335.242, along X alone F299.85. The check
+// names the F that runs in a note and refuses nothing; the run streams each move at its highest
+// feed, so the board steps X on every tick it executes: as many ticks as X steps (two moves of
+// 2 mm, 1600), at the feed speed 1999 the tick was written as. At F6000 the stream could not
+// carry the moves; at any lower feed they would take more ticks.
+void TestProgramContour::contour_camFeedAboveTheStreamsHighest_runsAtItBoardStepsEveryTick()
+{
+    QVERIFY(run("(1001)\n"
+                "(T1 D=3.175 CR=0. - ZMIN=-1. - flat end mill)\n"
+                "G90 G94 G17\n"
+                "G21\n"
+                "G28 X0 Y0\n"
+                "G0 X10. Y10.\n"
+                "(2D Contour1)\n"
+                "G1 X12. Y11. F6000.\n"
+                "X10.\n"
+                "G0 X12.\n"
+                "M30\n"));
+    const QList<ProgramError> notes = m_runner->checkNotes();
+    QCOMPARE(notes.size(), 1);
+    QCOMPARE(notes.first().line, 8);
+    const QString& note = notes.first().message;
+    QVERIFY2(note.startsWith("F6000 runs at F335.242,") && note.contains("1999 ticks/s") &&
+                 note.endsWith("(also on 1 more line(s))"),
+             qPrintable(note));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    const std::vector<quint8> record = m_elab->probe(
+        [&] { return static_cast<elab::ElabSimulator*>(m_elab->sim())->executedStepRecord(); });
+    qint64 xSteps = 0;
+    for (const quint8 byte : record)
+        xSteps += std::abs(elab::decodeStepByte(byte)[0]);
+    QCOMPARE(xSteps, qint64(1600));
+    QVERIFY2(record.size() >= 1600 && record.size() <= 1602,
+             qPrintable(QString::number(record.size())));
+    QCOMPARE(executedPath().last(), QPoint(0, 400)); // X+2 Y+1, then X-2
+    const int written = m_elab->probe([&] {
+        return int(
+            static_cast<elab::ElabSimulator*>(m_elab->sim())->rampParameters(Axis::X).feedSpeed);
+    });
+    QCOMPARE(written, int(kTick));
+    QVERIFY(still(*m_elab));
 }
 
 QTEST_MAIN(TestProgramContour)

@@ -121,6 +121,16 @@ void TestProgramParser::parse_everyWord_golden_data()
         << QStringList{"1: G3 Y=1 Z=1 abs mm F60 G19 J0 K1 P1 G90.1"};
     QTest::newRow("inch arc") << "G20 G2 X1 Y1 I0.5 J0.5 F10"
                               << QStringList{"1: G2 X=1 Y=1 abs in F10 G17 I0.5 J0.5 P1"};
+    // Issue 50 item 8: a zero offset along the plane's normal is left out, as GRBL does.
+    QTest::newRow("G17 arc with K0.000 (FreeCAD's grbl post)")
+        << "G2 X10.000 Y0.000 I5.000 J0.000 K0.000 F300.000"
+        << QStringList{"1: G2 X=10 Y=0 abs mm F300 G17 I5 J0 P1"};
+    QTest::newRow("G18 arc with J0")
+        << "G18 G3 X2 Z0 I1 J0 K0 F60" << QStringList{"1: G3 X=2 Z=0 abs mm F60 G18 I1 K0 P1"};
+    QTest::newRow("G19 arc with I-0, modal")
+        << "G19 G2 Y2 Z0 J1 F60\nY0 Z2 I-0 J0 K1"
+        << QStringList{"1: G2 Y=2 Z=0 abs mm F60 G19 J1 P1",
+                       "2: G2 Y=0 Z=2 abs mm F60 G19 J0 K1 P1"};
     // Coordinates (issue 29): G54..G59 modal, G53 for one block, G10 L2/L20, G92 and its kin.
     QTest::newRow("G55 then G54") << "G0 X1\nG55 G0 X2\nX3\nG54"
                                   << QStringList{"1: G0 X=1 abs mm F-", "2: G0 X=2 abs mm F- G55",
@@ -207,6 +217,11 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("arc J in G18") << "G18 G2 X1 J1 F10"
                                   << "1:11: J1 is not used by G2 in the XZ plane (G18): its "
                                      "centre takes K and I";
+    QTest::newRow("arc K0.001 in G17: only 0 is left out")
+        << "G2 X1 I1 K0.001 F10"
+        << "1:10: K0.001 is not used by G2 in the XY plane (G17): its centre takes I and J";
+    QTest::newRow("arc with K0 alone has no centre") << "G2 X1 K0 F10"
+                                                     << "1:1: G2 needs its centre: I and J, or R";
     QTest::newRow("arc R without end in plane")
         << "G2 Z1 R3 F10"
         << "1:7: G2 with R needs an end point in the plane (X or Y); a full circle takes I and J";
@@ -289,8 +304,14 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                  << "1:4: N (a line number) stands only";
     QTest::newRow("N fraction") << "N1.5 G0"
                                 << "1:1: N1.5: N takes a whole number";
-    QTest::newRow("after M2") << "M2\nG0 X1"
-                              << "2:1: nothing may follow the program's end (line 1)";
+    // Issue 50 item 3: a program number is the name only before the first block.
+    QTest::newRow("program number after a block")
+        << "G0 X1\nO1001"
+        << "2:6: only \"O1001 repeat [count]\" and \"O1001 endrepeat\"";
+    QTest::newRow("a second program number") << "O1001\nO1002"
+                                             << "2:6: only \"O1002 repeat [count]\"";
+    QTest::newRow("colon not before the first block") << "G0 X1\n:1001"
+                                                      << "2:1: unexpected character \":\"";
     QTest::newRow("lexer error") << "G0\nG0 X1 #"
                                  << "2:7: unexpected character";
     QTest::newRow("missing value") << "G0 Y"

@@ -21,6 +21,9 @@ private Q_SLOTS:
     void parse_switchBesideMotion_keptToRunFirst();
     void parse_inverseTime_fOnEveryG1_data();
     void parse_inverseTime_fOnEveryG1();
+    void parse_aroundTheProgram_blocksNameAndNotes_data();
+    void parse_aroundTheProgram_blocksNameAndNotes();
+    void parse_dollarHAndSlashOff_keepTheirColumns();
 };
 
 void TestProgramParserDialect::parse_modalGroups_stateOnEveryBlock_data()
@@ -175,6 +178,136 @@ void TestProgramParserDialect::parse_inverseTime_fOnEveryG1()
     const ProgramBlock last = p->allBlocks().last();
     QVERIFY(last.kind == BlockKind::Feed || isArc(last.kind));
     QVERIFY(last.inverseTime);
+}
+
+namespace {
+// The parser's notes (issue 50), as ProgramError::text() gives them: "line:column: message".
+QString unreadNote(const char* at, int lines)
+{
+    return QStringLiteral("%1: %2 line(s) after the program's end are not read, as in LinuxCNC "
+                          "(nothing after M2, M30 or the closing \"%\" runs)")
+        .arg(QLatin1String(at))
+        .arg(lines);
+}
+QString deletedNote(const char* at, int lines)
+{
+    return QStringLiteral("%1: block delete is on: %2 line(s) starting with \"/\" are skipped, "
+                          "this one the first (switch it off to run them)")
+        .arg(QLatin1String(at))
+        .arg(lines);
+}
+QString grblNote(const char* at, const char* command)
+{
+    return QStringLiteral("%1: %2 is a GRBL command (a setting, the alarm lock, a report or a "
+                          "jog): not run")
+        .arg(QLatin1String(at), QLatin1String(command));
+}
+QString zeroNormalNote(const char* at, const char* word, int arcs)
+{
+    return QStringLiteral("%1: %2 on %3 arc(s), this one the first: an offset along the plane's "
+                          "normal that is 0 is left out, as GRBL does (LinuxCNC refuses it; any "
+                          "other value is refused)")
+        .arg(QLatin1String(at), QLatin1String(word))
+        .arg(arcs);
+}
+} // namespace
+
+// Issue 50 items 3, 6 and 8: what CAM posts and senders write around the G-code. A Fanuc
+// program number before the first block is the name; nothing after M2/M30 or the closing "%"
+// is read (LinuxCNC), one note counts it; "/" lines follow the block delete switch; GRBL's "$H"
+// references, its other "$" lines are named; a zero offset along the arc plane's normal is left
+// out with one note for the program. The blocks are read back through the index (allBlocks), so
+// a reading again skips what the first one skipped.
+void TestProgramParserDialect::parse_aroundTheProgram_blocksNameAndNotes_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<bool>("blockDelete");
+    QTest::addColumn<QStringList>("blocks");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QStringList>("notes");
+    QTest::newRow("Fanuc wrapper: % and the program number")
+        << "%\nO1001 (BRACKET)\nG0 X1\nM30\n%\n"
+        << true << QStringList{"3: G0 X=1 abs mm F-", "4: M2 abs mm F-"} << "O1001 (BRACKET)"
+        << QStringList{};
+    QTest::newRow("colon number after a comment")
+        << "(T1 D=3)\n:0012\nG0 X1\n"
+        << true << QStringList{"3: G0 X=1 abs mm F-"} << ":0012" << QStringList{};
+    QTest::newRow("number before the opening %")
+        << "O1001\n%\nG0 X1\n%\n"
+        << true << QStringList{"3: G0 X=1 abs mm F-"} << "O1001" << QStringList{};
+    QTest::newRow("after M30: not read, counted")
+        << "G0 X1\nM30\nG0 X2\n\n(the post's trailer)\nM99\n"
+        << true << QStringList{"1: G0 X=1 abs mm F-", "2: M2 abs mm F-"} << QString()
+        << QStringList{unreadNote("2:1", 3)};
+    QTest::newRow("after the closing %: not read, counted")
+        << "%\nG0 X1\n%\nG0 X2\n%\n"
+        << true << QStringList{"2: G0 X=1 abs mm F-"} << QString()
+        << QStringList{unreadNote("3:1", 2)};
+    QTest::newRow("the % closing after M2 is the end")
+        << "%\nG0 X1\nM2\n%\n\n"
+        << true << QStringList{"2: G0 X=1 abs mm F-", "3: M2 abs mm F-"} << QString()
+        << QStringList{};
+    QTest::newRow("block delete on: skipped, modal words too")
+        << "G0 X1\n/G91\n / M0 (clamps)\nG0 X2\n"
+        << true << QStringList{"1: G0 X=1 abs mm F-", "4: G0 X=2 abs mm F-"} << QString()
+        << QStringList{deletedNote("2:1", 2)};
+    QTest::newRow("block delete off: run without the slash")
+        << "G0 X1\n/G91\n / M0 (clamps)\nG0 X2\n"
+        << false
+        << QStringList{"1: G0 X=1 abs mm F-", "2: modal rel mm F-", "3: M0 rel mm F- \"clamps\"",
+                       "4: G0 X=2 rel mm F-"}
+        << QString() << QStringList{};
+    QTest::newRow("GRBL sender: $H references, the others are named")
+        << "$X\n$H\n$32=1\n$$\nG0 X1\n"
+        << true << QStringList{"2: G28 abs mm F-", "5: G0 X=1 abs mm F-"} << QString()
+        << QStringList{grblNote("1:1", "$X"), grblNote("3:1", "$32=1"), grblNote("4:1", "$$")};
+    QTest::newRow("$h in lower case with a comment")
+        << "  $h (home first)\nG0 X1" << true
+        << QStringList{"1: G28 abs mm F-", "2: G0 X=1 abs mm F-"} << QString() << QStringList{};
+    QTest::newRow("K0.000 on every G17 arc: one note")
+        << "G1 X0 Y0 F300\nG2 X10 Y0 I5 J0 K0.000\nG3 X0 Y0 I-5 J0 K0.000\n"
+        << true
+        << QStringList{"1: G1 X=0 Y=0 abs mm F300", "2: G2 X=10 Y=0 abs mm F300 G17 I5 J0 P1",
+                       "3: G3 X=0 Y=0 abs mm F300 G17 I-5 J0 P1"}
+        << QString() << QStringList{zeroNormalNote("2:17", "K0.000", 2)};
+    QTest::newRow("J0 on a G18 arc") << "G18 G2 X2 Z0 I1 J0 K0 F60" << true
+                                     << QStringList{"1: G2 X=2 Z=0 abs mm F60 G18 I1 K0 P1"}
+                                     << QString() << QStringList{zeroNormalNote("1:17", "J0", 1)};
+}
+
+void TestProgramParserDialect::parse_aroundTheProgram_blocksNameAndNotes()
+{
+    QFETCH(QString, program);
+    QFETCH(bool, blockDelete);
+    QFETCH(QStringList, blocks);
+    QFETCH(QString, name);
+    QFETCH(QStringList, notes);
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse(program.toUtf8(), kAxes, &errors, {}, blockDelete);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QCOMPARE(describeAll(*p), blocks);
+    QCOMPARE(p->name, name);
+    QCOMPARE(texts(p->notes), notes);
+}
+
+// "$H" is a G28 block at the "$"'s column, its text as written; with block delete off a "/"
+// line's words keep their columns, so that the check names them where they stand.
+void TestProgramParserDialect::parse_dollarHAndSlashOff_keepTheirColumns()
+{
+    QList<ProgramError> errors;
+    const std::optional<Program> p =
+        ProgramParser::parse("  $h (home first)\n/G0 X15\n", kAxes, &errors, {}, false);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    const QList<ProgramBlock> blocks = p->allBlocks();
+    QCOMPARE(blocks.size(), 2);
+    QCOMPARE(blocks.at(0).kind, BlockKind::Home);
+    QVERIFY(blocks.at(0).axes.isEmpty());
+    QCOMPARE(blocks.at(0).columnOf({}), 3);
+    QCOMPARE(blocks.at(0).text, QStringLiteral("$h (home first)"));
+    QCOMPARE(blocks.at(1).kind, BlockKind::Rapid);
+    QCOMPARE(blocks.at(1).columnOf(QStringLiteral("X")), 5);
+    QVERIFY(!p->index->blockDelete); // kept for every reading again
 }
 
 QTEST_APPLESS_MAIN(TestProgramParserDialect)

@@ -69,6 +69,8 @@ class TestProgramReader : public QObject
 private Q_SLOTS:
     void index_checkpointsEveryFewThousandLines();
     void at_anyOrder_theBlocksTheParserGaveOut();
+    void at_blockDeleteEitherWay_readBackAsTheParserRead_data();
+    void at_blockDeleteEitherWay_readBackAsTheParserRead();
     void at_fileChangedSinceRead_refusedWithReason_data();
     void at_fileChangedSinceRead_refusedWithReason();
     void firstBlockAtLine_andEnclosingRepeat_bothModes_data();
@@ -145,6 +147,49 @@ void TestProgramReader::at_anyOrder_theBlocksTheParserGaveOut()
     const int start = p->blockCount - 4;
     QCOMPARE(reader.partner(start), start + 2);
     QCOMPARE(reader.at(start + 2)->partner, start);
+}
+
+void TestProgramReader::at_blockDeleteEitherWay_readBackAsTheParserRead_data()
+{
+    QTest::addColumn<bool>("blockDelete");
+    QTest::newRow("on: the slash lines skipped") << true;
+    QTest::newRow("off: the slash lines run") << false;
+}
+
+// Block delete (issue 50 item 6) decides which lines are blocks: every reading again from a
+// checkpoint (the run's, a repeat's) skips what the first reading skipped, whatever the
+// reader's own default, and the check's one pass reads as the parser does.
+void TestProgramReader::at_blockDeleteEitherWay_readBackAsTheParserRead()
+{
+    QFETCH(bool, blockDelete);
+    const int lines = 3 * ProgramIndex::kCheckpointLines;
+    QByteArray text = "G21 G90 G0 X0 Y0 Z5\n";
+    for (int line = 2; line <= lines; ++line)
+        text += line % 10 == 0 ? QByteArray("/G91 G0 Z0.1\n")
+                               : "G90 G1 X" + QByteArray::number(line % 50) + " F600\n";
+    QList<ProgramBlock> given;
+    ProgramParser parser(kAxes);
+    parser.setBlockDelete(blockDelete);
+    parser.setSink([&given](ProgramBlock&& b) { given << b; });
+    parser.feed(text);
+    std::optional<Program> p = parser.finish(nullptr);
+    QVERIFY(p);
+    p->source = ProgramSource::bytes(text);
+    const int slashes = lines / 10;
+    QCOMPARE(p->blockCount, blockDelete ? lines - slashes : lines);
+    QCOMPARE(int(given.size()), p->blockCount);
+    ProgramReader reader(*p);
+    for (int i = p->blockCount - 1; i >= 0; --i) { // backwards: each checkpoint read again
+        const ProgramBlock* b = reader.at(i);
+        QVERIFY2(b, qPrintable(reader.error()));
+        QCOMPARE(*b, given.at(i));
+    }
+    ProgramReader pass(ProgramSource::bytes(text), kAxes, {}, blockDelete);
+    const std::optional<Program> again = pass.finish(nullptr);
+    QVERIFY(again);
+    QCOMPARE(again->blockCount, p->blockCount);
+    QCOMPARE(again->index->blockDelete, blockDelete);
+    QCOMPARE(again->notes.size(), qsizetype(blockDelete ? 1 : 0)); // "block delete is on: …"
 }
 
 void TestProgramReader::at_fileChangedSinceRead_refusedWithReason_data()

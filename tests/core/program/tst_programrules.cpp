@@ -1,11 +1,14 @@
 // The rules both the check and the run go by (issue 28, ProgramRules): the feed-rate write a
 // G1 makes, the model's parameter rules judged against what the device holds, the spindle
-// range and an incomplete setup, and the check refusing with them what the run would refuse.
+// range and an incomplete setup, and the check refusing with them what the run would refuse;
+// the limits both take a feed or S above the machine's highest by (issue 50, FeedLimit).
+#include "program/FeedLimit.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRules.h"
 #include "protocols/Registry.h"
 #include <QtTest>
+#include <cmath>
 
 using namespace stepdeck;
 using namespace stepdeck::machine;
@@ -95,6 +98,13 @@ private Q_SLOTS:
     void spindleReverse_noModelCanReverse_refusedNamingTheController();
     void check_elab_refusesWhatTheRunWould_data();
     void check_elab_refusesWhatTheRunWould();
+    void feedLimit_axisAtF_runsAtTheHighest_data();
+    void feedLimit_axisAtF_runsAtTheHighest();
+    void feedLimit_coordinatedShares_slowedByOneFactor();
+    void feedLimit_spindleAboveMaxRpm_runsAtMaxRpm_data();
+    void feedLimit_spindleAboveMaxRpm_runsAtMaxRpm();
+    void check_elab_feedAboveTheHighest_runsAtItWithNote_data();
+    void check_elab_feedAboveTheHighest_runsAtItWithNote();
 };
 
 void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue_data()
@@ -145,12 +155,14 @@ void TestProgramRules::feedRateWrite_perAxisModel_onlyTheBlocksAxes()
         d, "nanotec", info->capabilities, shares, {}, info->schema.find("max-frequency"));
     QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 100);
     QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 60);
-    // Above the maximum (a feed override of 200 %): o's 25 000.
+    // Above the maximum (a feed override of 200 %): o's 25 000, and (issue 50, as LinuxCNC
+    // slows the whole move) Y slowed by the same factor, 25 000 / 33 333, so both still arrive
+    // together.
     shares.axisRates = {{"X", 2000000.0}, {"Y", 6000.0}};
     const ParameterSet fast = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares,
                                                           {}, info->schema.find("max-frequency"));
     QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 25000);
-    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 100);
+    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 75);
     shares.axisRates = {{"X", 5999.7}, {"Y", 59.997}};
     // Without the spec (not known) the share stands as it is.
     QCOMPARE(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, nullptr)
@@ -335,9 +347,186 @@ void TestProgramRules::check_elab_refusesWhatTheRunWould()
     QFETCH(QString, program);
     QFETCH(QStringList, errors);
     MachineFacts f = elabFacts(known(held));
+    f.description.limits = LimitPolicy::Refuse; // issue 50: the refusals of "limits": "refuse"
     if (setupIncomplete)
         f.setupIncomplete.insert("elab");
     QCOMPARE(checked(program, f), errors);
+}
+
+// Issue 50, FeedLimit::axisRate: an axis at F (an E-LAB block of its own, in steps) runs at most
+// one below the start speed the device holds (feed mode has no ramp), else at most its
+// feed-rate parameter's top (65 535); with "limits": "refuse" as programmed. The rate
+// feedRateWrite writes is the same.
+void TestProgramRules::feedLimit_axisAtF_runsAtTheHighest_data()
+{
+    QTest::addColumn<QString>("held");
+    QTest::addColumn<double>("feed"); // steps/min
+    QTest::addColumn<bool>("refuse");
+    QTest::addColumn<qint64>("runs");
+    QTest::addColumn<bool>("limited");
+    QTest::addColumn<bool>("belowParameter");
+    QTest::newRow("within") << "start=100,100,100" << 5000.0 << false << qint64(83) << false
+                            << true;
+    QTest::newRow("at the start speed: one below")
+        << "start=100,100,100" << 6000.0 << false << qint64(99) << true << true;
+    QTest::newRow("start speed unknown: the range's top")
+        << "" << 6000000.0 << false << qint64(65535) << true << false;
+    QTest::newRow("start speed above the range: the range's top")
+        << "start=70000,70000,70000" << 6000000.0 << false << qint64(65535) << true << false;
+    QTest::newRow("refuse: as programmed")
+        << "start=100,100,100" << 6000.0 << true << qint64(100) << false << false;
+}
+
+void TestProgramRules::feedLimit_axisAtF_runsAtTheHighest()
+{
+    QFETCH(QString, held);
+    QFETCH(double, feed);
+    QFETCH(bool, refuse);
+    QFETCH(qint64, runs);
+    QFETCH(bool, limited);
+    QFETCH(bool, belowParameter);
+    MachineFacts f = elabFacts(known(held));
+    if (refuse)
+        f.description.limits = LimitPolicy::Refuse;
+    const Capabilities& caps = f.capabilities["elab"];
+    const ParameterSpec* spec = f.schemas["elab"].find("feed-speed");
+    QVERIFY(spec);
+    const ProgramBlock b = feedBlock({{"X", 10}}, feed);
+    const FeedLimit::AxisRate rate =
+        FeedLimit::axisRate(f.description, *f.description.axis("X"), caps, spec, known(held), b);
+    QCOMPARE(rate.programmed, qint64(std::llround(feed / 60)));
+    QCOMPARE(rate.runs, runs);
+    QCOMPARE(rate.limited, limited);
+    if (limited)
+        QCOMPARE(rate.ceiling.belowParameter, belowParameter);
+    const ParameterSet write =
+        ProgramRules::feedRateWrite(f.description, "elab", caps, b, known(held), spec);
+    QCOMPARE(write.value("feed-speed").perAxis.value(Axis::X).toLongLong(), runs);
+}
+
+// Shares of F on a coordinating controller (a Nanotec bus in steps, o at most 25 000): a
+// diagonal whose Y share would be 40 000 steps/s slows X and Y by one factor (0.625), so they
+// still arrive together, as LinuxCNC slows the whole move; refused, each share is clamped at o
+// on its own as before (a feed override's case).
+void TestProgramRules::feedLimit_coordinatedShares_slowedByOneFactor()
+{
+    const ModelInfo* info = findModel(QStringLiteral("nanotec"));
+    MachineDescription d = MachineDescription::singleController(*info, "sim");
+    const ParameterSpec* spec = info->schema.find("max-frequency");
+    QVERIFY(spec);
+    ProgramBlock shares = feedBlock({{"X", 30000}, {"Y", 40000}}, 3000000);
+    shares.axisRates = {{"X", 1800000.0}, {"Y", 2400000.0}}; // per minute: 30 000, 40 000 /s
+    const FeedLimit::AxisRate x =
+        FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares);
+    const FeedLimit::AxisRate y =
+        FeedLimit::axisRate(d, *d.axis("Y"), info->capabilities, spec, {}, shares);
+    QCOMPARE(x.programmed, qint64(30000));
+    QCOMPARE(x.runs, qint64(18750));
+    QCOMPARE(y.runs, qint64(25000));
+    QCOMPARE(x.feedFactor, 0.625);
+    QVERIFY(x.limited && y.limited);
+    const ParameterSet write =
+        ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, spec);
+    QCOMPARE(write.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 18750);
+    QCOMPARE(write.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 25000);
+    d.limits = LimitPolicy::Refuse;
+    QCOMPARE(FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).runs,
+             qint64(25000));
+    QVERIFY(!FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).limited);
+}
+
+// GRBL's $30: S above maxRpm runs at maxRpm; the spindle's controller gets its full scale and
+// takes it, unless the machine file refuses (then the error of issue 29).
+void TestProgramRules::feedLimit_spindleAboveMaxRpm_runsAtMaxRpm_data()
+{
+    QTest::addColumn<double>("maxRpm"); // 0: none
+    QTest::addColumn<double>("rpm");
+    QTest::addColumn<double>("runs");
+    QTest::addColumn<int>("sent");
+    QTest::newRow("below") << 24000.0 << 12000.0 << 12000.0 << 500;
+    QTest::newRow("above: maxRpm, full scale") << 24000.0 << 30000.0 << 24000.0 << 1000;
+    QTest::newRow("no scale: as written") << 0.0 << 800.0 << 800.0 << 800;
+}
+
+void TestProgramRules::feedLimit_spindleAboveMaxRpm_runsAtMaxRpm()
+{
+    QFETCH(double, maxRpm);
+    QFETCH(double, rpm);
+    QFETCH(double, runs);
+    QFETCH(int, sent);
+    const ModelInfo* info = findModel(QStringLiteral("elab"));
+    const std::optional<double> scale = maxRpm > 0 ? std::optional<double>(maxRpm) : std::nullopt;
+    QCOMPARE(FeedLimit::spindleRpm(rpm, scale), runs);
+    QCOMPARE(ProgramRules::spindleValue(info->capabilities, info->schema, scale, rpm), sent);
+    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, scale, rpm,
+                                        LimitPolicy::Clamp),
+             QString());
+    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, scale, rpm,
+                                        LimitPolicy::Refuse)
+                 .isEmpty(),
+             runs == rpm);
+}
+
+// The rows of check_elab_refusesWhatTheRunWould that were too fast, by default (issue 50): no
+// error, a note naming the F (or G93's time) that runs. The board in its own steps, start speed
+// 100: a rate of its own at most 99 steps/s, a contour's tick 99/s.
+void TestProgramRules::check_elab_feedAboveTheHighest_runsAtItWithNote_data()
+{
+    QTest::addColumn<QString>("held");
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("notes");
+    QTest::addColumn<QStringList>("errors");
+    QTest::newRow("G61: Z at the start speed runs one below")
+        << "start=100,100,100"
+        << "G61 G91 G1 Z-1 F6000"
+        << QStringList{"1:16: F6000 is 100 steps/s on Z, above the 99 steps/s controller "
+                       "\"elab\" takes (below its Start speed: feed mode has no ramp): Z runs at "
+                       "F5940"}
+        << QStringList{};
+    QTest::newRow("contour: beyond the tick")
+        << "start=100,100,100"
+        << "G91 G1 Z-1 F6000"
+        << QStringList{"1:12: F6000 runs at F5940, the highest this move can run at in the "
+                       "contour stream of controller \"elab\" (99 ticks/s, one step per tick at "
+                       "most)"}
+        << QStringList{};
+    QTest::newRow("G93: the move takes longer")
+        << "start=100,100,100"
+        << "G91 G93 G1 X100 Y50 F60"
+        << QStringList{"1:21: G93 F60 (the move in 1 s) moves X at 100 steps/s, above the 99 "
+                       "steps/s controller \"elab\" takes (below its Start speed: feed mode has "
+                       "no ramp): the move takes 1.01 s"}
+        << QStringList{};
+    // What it cannot do otherwise stays an error: the start speed must be known.
+    QTest::newRow("start speed never written")
+        << ""
+        << "G61 G91 G1 X10 F600" << QStringList{}
+        << QStringList{"1:16: F600: controller \"elab\" would refuse its rate: Feed speed must be "
+                       "below Start speed (feed mode has no ramp), but Start speed is not known: "
+                       "write Start speed in the same set; set it on the Setup page first"};
+}
+
+void TestProgramRules::check_elab_feedAboveTheHighest_runsAtItWithNote()
+{
+    QFETCH(QString, held);
+    QFETCH(QString, program);
+    QFETCH(QStringList, notes);
+    QFETCH(QStringList, errors);
+    const MachineFacts f = elabFacts(known(held));
+    QStringList names;
+    for (const MachineAxis& a : f.description.axes)
+        names << a.name;
+    QList<ProgramError> parseErrors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), names, &parseErrors);
+    QVERIFY(p);
+    const ProgramCheckResult r = ProgramCheck::check(*p, f);
+    QStringList errorTexts, noteTexts;
+    for (const ProgramError& e : r.errors)
+        errorTexts << e.text();
+    for (const ProgramError& n : r.notes)
+        noteTexts << n.text();
+    QCOMPARE(errorTexts, errors);
+    QCOMPARE(noteTexts, notes);
 }
 
 QTEST_GUILESS_MAIN(TestProgramRules)

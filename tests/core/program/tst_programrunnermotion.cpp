@@ -31,6 +31,12 @@ private Q_SLOTS:
     void abort_duringMove_boardSwitchesSpindleOffOnceStanding();
     void toolChange_zeroSetWhileHeld_restRunsInTheNewZero();
     void toolChange_zeroFailsTheRestsCheck_resumeRefusedUntilPutBack();
+    void touchOff_m6_holdsUntilZeroZRestCutsAtTheNewZ();
+    void touchOff_tableMode_g43WithAnEmptyTableRefusedNothingSent();
+
+private:
+    // The rig's machine with a Z on the table (400 steps/mm) and tool lengths as given.
+    void recreateWithZ(ToolLength toolLength);
 };
 
 // Issue 29: with "spindle": {"maxRpm": 24000} a program's S is in rpm: the board receives
@@ -413,6 +419,96 @@ void TestProgramRunnerMotion::toolChange_zeroFailsTheRestsCheck_resumeRefusedUnt
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 400}));
+}
+
+void TestProgramRunnerMotion::recreateWithZ(ToolLength toolLength)
+{
+    MachineDescription d = description();
+    d.axes.insert(2, test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, 400));
+    d.toolLength = toolLength;
+    recreateMachine(d);
+}
+
+// Issue 50 item 4: tool lengths by touch-off ("toolLength": "touchOff"), no tool table. The run
+// holds at each M6 with the tool and its comment; Resume is refused until the work Z was set
+// for it. At the first M6 the operator says the tool is the one Z was set for before the run
+// (resumeSameTool); at T2 that is refused (another tool), so the operator jogs Z 1.5 mm up and
+// zeroes Z there (G54's Z = machine 3.5 mm); G43 H2 adds nothing, and the rest cuts in the new
+// zero. At the board (400 steps/mm): Z2 in the old zero (+800), the jog (+600), then Z1 in the
+// new zero, machine 4.5 mm (+400; the old zero would have gone down 1000 steps).
+void TestProgramRunnerMotion::touchOff_m6_holdsUntilZeroZRestCutsAtTheNewZ()
+{
+    recreateWithZ(ToolLength::TouchOff);
+    QSignalSpy refused(m_runner.get(), &ProgramRunner::resumeRefused);
+    QVERIFY(run("G28 X0 Y0 Z0\nT1 M6 (3 mm drill)\nG0 Z2\nT2 M6 (6 mm end mill)\nG43 H2\n"
+                "G0 Z1\nM30\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(m_runner->currentLine(), 2);
+    QVERIFY(m_runner->awaitsTouchOff());
+    m_runner->resume();
+    QCOMPARE(refused.size(), 1);
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    QVERIFY(m_runner->sameToolResumable()); // the run's first M6
+    QVERIFY(m_runner->resumeSameTool());
+    QTRY_VERIFY_WITH_TIMEOUT(m_runner->state() == RunState::Paused && m_runner->currentLine() == 4,
+                             30000);
+    QVERIFY2(m_runner->prompt().startsWith(QStringLiteral("Load tool 2 (6 mm end mill)")),
+             qPrintable(m_runner->prompt()));
+    QVERIFY(m_runner->pausedAtOperatorStop());
+    QVERIFY(m_runner->awaitsTouchOff());
+    QVERIFY(!m_runner->sameToolResumable()); // tool 1 was in
+    m_runner->resume();
+    QVERIFY(!m_runner->resumeSameTool());
+    m_runner->step();
+    QCOMPARE(refused.size(), 4);
+    QVERIFY2(refused.at(1).at(0).toString().contains(QStringLiteral("tool 2")),
+             qPrintable(refused.at(1).at(0).toString()));
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::Z), (QList<qint64>{800}));
+    QString error;
+    QSignalSpy moved(m_machine.get(), &Machine::moveFinished);
+    QVERIFY2(m_machine->move({{QStringLiteral("Z"), 1.5}}, false, &error) != 0, qPrintable(error));
+    QTRY_VERIFY_WITH_TIMEOUT(!moved.isEmpty(), 20000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    CoordinateSystems systems;
+    systems[0] = {{QStringLiteral("X"), 0.5}}; // another axis' zero is no touch-off of Z
+    m_runner->setCoordinateSystems(systems, 0);
+    QVERIFY(m_runner->awaitsTouchOff());
+    systems[0] = {{QStringLiteral("Z"), 3.5}}; // the DRO's Zero Z where Z stands
+    m_runner->setCoordinateSystems(systems, 0);
+    QVERIFY(!m_runner->awaitsTouchOff());
+    QVERIFY(m_runner->restNeedsCheck());
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(refused.size(), 4);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::Z), (QList<qint64>{800, 600, 400}));
+    QVERIFY2(m_runner->preview().toolNote.contains(QStringLiteral("touch-off")),
+             qPrintable(m_runner->preview().toolNote));
+}
+
+// The same program on a machine that keeps a tool table (the default): G43 H2 with the table
+// empty is refused before the run, as before issue 50; nothing reaches the board.
+void TestProgramRunnerMotion::touchOff_tableMode_g43WithAnEmptyTableRefusedNothingSent()
+{
+    recreateWithZ(ToolLength::Table);
+    QStringList axes;
+    for (const MachineAxis& a : m_machine->description().axes)
+        axes << a.name;
+    QList<ProgramError> errors;
+    const std::optional<Program> program = ProgramParser::parse(
+        "G28 X0 Y0 Z0\nT1 M6 (3 mm drill)\nG0 Z2\nT2 M6 (6 mm end mill)\nG43 H2\nG0 Z1\nM30\n",
+        axes, &errors);
+    QVERIFY(program);
+    QVERIFY(!m_runner->start(*program, 1, &errors));
+    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.first().text(),
+             QStringLiteral("5:5: G43: the machine's tool table is empty: enter tool 2's length "
+                            "first"));
+    QCOMPARE(m_runner->state(), RunState::Idle);
+    QCOMPARE(acceptedCount(*m_elab), 0);
+    QVERIFY(still(*m_elab));
 }
 
 QTEST_MAIN(TestProgramRunnerMotion)

@@ -16,6 +16,11 @@ namespace {
 // The test machines by name: checktest's, and "mill" with a work offset or a spindle scale.
 MachineFacts factsNamed(const QString& name)
 {
+    if (name.endsWith(QLatin1String("Refuse"))) { // issue 50: "limits": "refuse"
+        MachineFacts f = factsNamed(name.chopped(6));
+        f.description.limits = machine::LimitPolicy::Refuse;
+        return f;
+    }
     if (name == QLatin1String("millOffset")) {
         MachineFacts f = machineFacts(QStringLiteral("mill"));
         f.coordinateSystems[0] = {{QStringLiteral("X"), 20.0}, {QStringLiteral("Z"), -30.0}};
@@ -192,14 +197,20 @@ void TestRunFromLine::check_approachOrRestoredSpindleRefused_namedAtTheStartLine
         << QStringList{"2:1: run from line 2: the move to its start point first (G53 G0 Z-5): "
                        "Z: the position is unknown, so an absolute move could go anywhere: "
                        "reference the axis first (G28 Z) or move it relatively (G91)"};
+    // With "limits": "refuse" (issue 50); clamped, the S runs at maxRpm with a note.
     QTest::newRow("the spindle restored at an S above the spindle's maxRpm")
-        << "millSpindle"
+        << "millSpindleRefuse"
         << "X=0 Y=0 Z=0"
         << "M3 S30000\nG0 X1\nG0 X2\n"
         << 3
         << QStringList{"3:1: run from line 3: M3 S30000 first, as the lines before it left it: "
                        "controller \"table\": S30000 is above the spindle's maxRpm 24000 (the "
                        "machine file's spindle scale)"};
+    QTest::newRow("the spindle restored at an S above maxRpm, clamped: no error")
+        << "millSpindle"
+        << "X=0 Y=0 Z=0"
+        << "M3 S30000\nG0 X1\nG0 X2\n"
+        << 3 << QStringList{};
     QTest::newRow("from the first line: nothing first") << "mill"
                                                         << "X=0 Y=0 Z=0"
                                                         << "G0 X50\nG0 X60\n"

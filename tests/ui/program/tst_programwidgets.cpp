@@ -42,6 +42,7 @@ private Q_SLOTS:
     void controls_states_onlyUsefulButtonsEnabled_data();
     void controls_states_onlyUsefulButtonsEnabled();
     void controls_optionalStops_onByDefaultRememberedBesideRunFrom();
+    void controls_blockDelete_onByDefaultRememberedOffWhileRunning();
     void banner_prompt_keepsItsHeight();
     void backgroundCheck_twoRequests_onlyTheNewestReports();
     void progress_blocksOfARepeat_timeLeftFollowsThePath();
@@ -232,6 +233,30 @@ void TestProgramWidgets::controls_optionalStops_onByDefaultRememberedBesideRunFr
         again.optionalStopsBox()->click();
     }
     QVERIFY(ProgramControls().optionalStops());
+}
+
+// Issue 50 item 6: the block delete switch is on when nothing was stored (as LinuxCNC starts),
+// says when it is switched, is remembered, and cannot change while a program runs (the check
+// read it).
+void TestProgramWidgets::controls_blockDelete_onByDefaultRememberedOffWhileRunning()
+{
+    QSettings().remove(QStringLiteral("programs/blockDelete"));
+    {
+        ProgramControls controls;
+        QVERIFY(controls.blockDelete());
+        QVERIFY(controls.blockDeleteBox()->text().contains(QStringLiteral("/")));
+        controls.setState(program::RunState::Running, false, true);
+        QVERIFY(!controls.blockDeleteBox()->isEnabled());
+        controls.setState(program::RunState::Finished, false, true);
+        QVERIFY(controls.blockDeleteBox()->isEnabled());
+        QSignalSpy changed(&controls, &ProgramControls::blockDeleteChanged);
+        controls.blockDeleteBox()->click();
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(changed.at(0).at(0).toBool(), false);
+        QVERIFY(!controls.blockDelete());
+    }
+    QVERIFY(!ProgramControls().blockDelete()); // the next window: as the operator left it
+    QSettings().remove(QStringLiteral("programs/blockDelete"));
 }
 
 void TestProgramWidgets::banner_prompt_keepsItsHeight()

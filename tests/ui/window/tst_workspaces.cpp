@@ -309,9 +309,15 @@ void TestWorkspaces::run_onTheScreen_noScrollBarNoTextCut()
     // The pad comes back only by the operator's hand (a touch-off during a hold), and goes again.
     auto* toggle = window()->findChild<QPushButton*>(QStringLiteral("jobJogPadToggle"));
     QVERIFY(toggle && toggle->isVisible());
+    auto place = [this](QWidget* w) { return QRect(w->mapTo(window(), QPoint()), w->size()); };
+    const QRect stopPlace = place(window()->safetyBar()->stopButton());
+    const QRect togglePlace = place(toggle);
     toggle->click();
     QVERIFY(window()->jobLayout()->isPadShown());
     QTRY_VERIFY(!jog->isShortByChoice() && !jog->verticalScrollBar()->isVisible());
+    // STOP and the button stay where the operator's hand is.
+    QCOMPARE(place(window()->safetyBar()->stopButton()), stopPlace);
+    QCOMPARE(place(toggle).topLeft(), togglePlace.topLeft());
     toggle->click();
     QTRY_VERIFY(path->height() * 2 >= workspaceHeight);
     window()->safetyBar()->stopButton()->click();

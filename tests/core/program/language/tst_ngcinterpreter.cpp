@@ -11,6 +11,8 @@ class TestNgcInterpreter : public QObject
 private Q_SLOTS:
     void run_program_givesOutLines_data();
     void run_program_givesOutLines();
+    void run_aroundTheProgram_blockDeleteAndUnreadLines_data();
+    void run_aroundTheProgram_blockDeleteAndUnreadLines();
     void run_brokenProgram_errorAtLine_data();
     void run_brokenProgram_errorAtLine();
     void run_brokenStructure_everyErrorListed();
@@ -146,6 +148,57 @@ void TestNgcInterpreter::run_program_givesOutLines()
     NgcContext context;
     context.activeSystem = 2;
     QCOMPARE(run(program, context), lines);
+}
+
+// Issue 50: block delete skips a "/" line whole, O words and assignments too (off: the line runs
+// without the "/"); GRBL's "$" lines go to the parser as written; the lines after the program's
+// end that LinuxCNC does not read are counted, but not a subroutine defined there nor the "%"
+// closing a program opened with one.
+void TestNgcInterpreter::run_aroundTheProgram_blockDeleteAndUnreadLines_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<bool>("blockDelete");
+    QTest::addColumn<QString>("lines");
+    QTest::addColumn<QList<int>>("counts"); // deleted, the first of them, end line, unread
+    const QString slashes = "/o1 if [1]\nG0 X1\n/o1 endif\n/#1=5\nG0 X#1";
+    QTest::newRow("block delete on")
+        << slashes << true << "2:G0 X1 | 5:G0 X0" << QList<int>{3, 1, 0, 0};
+    QTest::newRow("block delete off")
+        << slashes << false << "2:G0 X1 | 5:G0 X5" << QList<int>{0, 0, 0, 0};
+    QTest::newRow("$ lines as written")
+        << "$H\nG0 X1\n$32=1" << true << "1:$H | 2:G0 X1 | 3:$32=1" << QList<int>{0, 0, 0, 0};
+    QTest::newRow("after M2: a sub is read, the rest counted")
+        << "o1 call\nM2\nG0 X9\no1 sub\nG0 X1\no1 endsub\n\n(trailer)" << true << "5:G0 X1 | 2:M2"
+        << QList<int>{0, 0, 2, 2};
+    QTest::newRow("the % after M30 closes")
+        << "%\nG0 X1\nM30\n%\n"
+        << true << "1:% | 2:G0 X1 | 3:M30" << QList<int>{0, 0, 3, 0};
+    QTest::newRow("after the closing %")
+        << "%\nG0 X1\n%\nG0 X2\n%" << true << "1:% | 2:G0 X1 | 3:%" << QList<int>{0, 0, 3, 2};
+    QTest::newRow("M2 in a call: nothing counted") << "o<e> sub\nM2\no<e> endsub\no<e> call\nG0 X1"
+                                                   << true << "2:M2" << QList<int>{0, 0, 0, 0};
+}
+
+void TestNgcInterpreter::run_aroundTheProgram_blockDeleteAndUnreadLines()
+{
+    QFETCH(QString, program);
+    QFETCH(bool, blockDelete);
+    QFETCH(QString, lines);
+    QFETCH(QList<int>, counts);
+    NgcContext context;
+    context.blockDelete = blockDelete;
+    QStringList out;
+    NgcInterpreter interpreter(program.split(QLatin1Char('\n')), context,
+                               [&](const QString& text, int line, const QList<int>&) {
+                                   out << QStringLiteral("%1:%2").arg(line).arg(text.simplified());
+                                   return true;
+                               });
+    QList<ProgramError> errors;
+    QVERIFY2(interpreter.run(&errors, 10), qPrintable(errors.value(0).text()));
+    QCOMPARE(out.join(QStringLiteral(" | ")), lines);
+    QCOMPARE((QList<int>{interpreter.deletedLines(), interpreter.firstDeletedLine(),
+                         interpreter.endLine(), interpreter.unreadLines()}),
+             counts);
 }
 
 void TestNgcInterpreter::run_brokenProgram_errorAtLine_data()

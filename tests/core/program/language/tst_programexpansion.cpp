@@ -62,6 +62,10 @@ void TestProgramExpansion::usesLanguage_text_detected_data()
     QTest::newRow("repeat stays plain") << "O1 repeat [3]\nG0 X1\nO1 endrepeat" << false;
     QTest::newRow("repeat with a named label") << "o<x> repeat [2]\no<x> endrepeat" << true;
     QTest::newRow("repeat by a parameter") << "O1 repeat [#1]\nO1 endrepeat" << true;
+    // Issue 50: block delete's "/" before an O word; a Fanuc program number is not the language.
+    QTest::newRow("O word after a slash") << "/o100 call\nG0 X1" << true;
+    QTest::newRow("program number") << "%\nO1001 (BRACKET)\nG0 X1\n%" << false;
+    QTest::newRow("GRBL $ lines") << "$H\n$32=1\nG0 X1" << false;
     QTest::newRow("repeat by an expression") << "O1 repeat [2*3]\nO1 endrepeat" << true;
     QTest::newRow("# in a comment") << "G0 X1 (part #3)\n; #4 here" << false;
     QTest::newRow("[ in a comment") << "(see [1])" << false;
