@@ -284,15 +284,25 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
     auto map = std::make_shared<NgcLineMap>();
     ExpandedWriter writer;
     int given = 0;
-    // A program number goes to the parser first, which takes it as the name, and not to the
-    // interpreter.
-    if (const int name = programNumberLine(lines, context.blockDelete); name >= 0) {
-        map->add(++given, name + 1);
-        writer.append(lines.at(name)); // the first line: in memory, cannot fail
+    // A program number goes to the parser, which takes it as the name, and not to the
+    // interpreter. In its place among the lines (the comments, "%" and blank lines before it
+    // come first): the worked-out lines keep the file's order (tools/fuzz, program_expand).
+    const int name = programNumberLine(lines, context.blockDelete);
+    QString nameText;
+    if (name >= 0) {
+        nameText = lines.at(name);
         lines[name].clear();
     }
+    bool nameGiven = name < 0;
+    const auto giveName = [&] {
+        nameGiven = true;
+        map->add(++given, name + 1);
+        return writer.append(nameText);
+    };
     NgcInterpreter interpreter(lines, context,
                                [&](const QString& text, int sourceLine, const QList<int>& columns) {
+                                   if (!nameGiven && sourceLine > name + 1 && !giveName())
+                                       return false;
                                    map->add(++given, sourceLine);
                                    map->setWordColumns(sourceLine, columns);
                                    return writer.append(text);
@@ -300,6 +310,8 @@ ProgramExpansion::expand(const ProgramSource& source, const NgcContext& context,
     interpreter.setKeepGoing(keepGoing);
     if (!interpreter.run(errors, maxErrors))
         return std::nullopt;
+    if (!nameGiven)
+        giveName(); // nothing after it ran; a failure shows in finish()
     std::optional<ProgramSource> text = writer.finish(&why);
     if (!text) {
         *errors = {ProgramError{0, 0, tr("the worked-out program cannot be kept: %1").arg(why)}};
