@@ -15,8 +15,8 @@
 // so a runaway loop of a few bytes ends in milliseconds, with the error naming its line, instead
 // of the minutes the full bounds allow under the sanitizers (docs/fuzzing.md).
 #include "FuzzSupport.h"
-#include "program/ProgramReader.h"
 #include "program/ProgramParser.h"
+#include "program/ProgramReader.h"
 #include "program/language/ProgramExpansion.h"
 #include <QDir>
 
