@@ -62,6 +62,10 @@ bool lineUsesLanguage(QByteArrayView line)
         while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
             ++i;
     }
+    // GRBL's system commands ("$#" its parameter report, "$32=1") are not G-code: they go to
+    // the parser as written (NgcLineExpander), which runs "$H" and names the others.
+    if (i < line.size() && line[i] == '$')
+        return false;
     // An O word first (after an N number): anything but repeat/endrepeat is the language.
     qsizetype o = i;
     if (o < line.size() && (line[o] == 'N' || line[o] == 'n')) {

@@ -21,6 +21,7 @@ private Q_SLOTS:
     void expand_largeSource_refused();
     void expand_longLine_refusedBeforeItRuns();
     void check_workedOut_blocksNameSourceLines();
+    void check_grblReportInWorkedOutProgram_keptAsWrittenAndNoted();
     void check_errorInWorkedOutLine_namesSourceLineAndColumn_data();
     void check_errorInWorkedOutLine_namesSourceLineAndColumn();
     void check_runFromLine_refused();
@@ -66,6 +67,8 @@ void TestProgramExpansion::usesLanguage_text_detected_data()
     QTest::newRow("O word after a slash") << "/o100 call\nG0 X1" << true;
     QTest::newRow("program number") << "%\nO1001 (BRACKET)\nG0 X1\n%" << false;
     QTest::newRow("GRBL $ lines") << "$H\n$32=1\nG0 X1" << false;
+    // GRBL's parameter report is no parameter of the language (found by fuzzing).
+    QTest::newRow("GRBL $# report") << "$#\n$[x]\nG0 X1" << false;
     QTest::newRow("repeat by an expression") << "O1 repeat [2*3]\nO1 endrepeat" << true;
     QTest::newRow("# in a comment") << "G0 X1 (part #3)\n; #4 here" << false;
     QTest::newRow("[ in a comment") << "(see [1])" << false;
@@ -194,6 +197,23 @@ void TestProgramExpansion::check_workedOut_blocksNameSourceLines()
              QStringList({"1:G21 G90", "4:G1 X5 F300", "4:G1 X15 F300", "4:G1 X25 F300", "7:M2"}));
     // The run checks the same Program again (ProgramRunner::start).
     QVERIFY(ProgramCheck::check(*r.program, facts).ok());
+}
+
+// GRBL's "$#" (its parameter report) in a program that uses the language: not a parameter, so
+// it reaches the parser as written, which names it and runs nothing for it (found by fuzzing).
+void TestProgramExpansion::check_grblReportInWorkedOutProgram_keptAsWrittenAndNoted()
+{
+    const ProgramCheckResult r = checkText(QStringLiteral("#1=2\n$#\nG0 X#1\n"), mill());
+    QVERIFY2(r.ok(), qPrintable(texts(r.errors).join(QLatin1Char('\n'))));
+    QVERIFY(r.program && r.program->expansion);
+    QStringList blocks;
+    for (const ProgramBlock& b : ProgramReader::readAll(*r.program))
+        blocks << QStringLiteral("%1:%2").arg(b.line).arg(b.text);
+    QCOMPARE(blocks, QStringList({"3:G0 X2"}));
+    QCOMPARE(r.notes.size(), 1);
+    QCOMPARE(r.notes.first().line, 2);
+    QVERIFY2(r.notes.first().message.contains(QLatin1String("$#")),
+             qPrintable(r.notes.first().message));
 }
 
 void TestProgramExpansion::check_errorInWorkedOutLine_namesSourceLineAndColumn_data()
