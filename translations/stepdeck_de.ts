@@ -4512,10 +4512,6 @@
             <translation>G20 und G21 in einer Zeile</translation>
         </message>
         <message>
-            <source>one action per line: %1 and %2</source>
-            <translation>eine Aktion pro Zeile: %1 und %2</translation>
-        </message>
-        <message>
             <source>%1: N takes a whole number</source>
             <translation>%1: N nimmt eine ganze Zahl</translation>
         </message>
@@ -4746,6 +4742,18 @@
         <message>
             <source>%1 (a Fanuc-style subprogram) is not supported: write the subprogram as O&lt;name&gt; sub … endsub and call it with O&lt;name&gt; call</source>
             <translation>%1 (ein Unterprogramm im Fanuc-Stil) wird nicht unterstützt: das Unterprogramm als O&lt;name&gt; sub … endsub schreiben und mit O&lt;name&gt; call aufrufen</translation>
+        </message>
+        <message>
+            <source>%1: more than %2 M words on one line (LinuxCNC runs at most %2)</source>
+            <translation>%1: mehr als %2 M-Wörter in einer Zeile (LinuxCNC führt höchstens %2 aus)</translation>
+        </message>
+        <message>
+            <source>%1 and %2 both take axis words: write them on two lines</source>
+            <translation>%1 und %2 nehmen beide Achsworte: in zwei Zeilen schreiben</translation>
+        </message>
+        <message>
+            <source>%1 and %2 both take P: write them on two lines</source>
+            <translation>%1 und %2 nehmen beide P: in zwei Zeilen schreiben</translation>
         </message>
     </context>
     <context>

@@ -98,23 +98,12 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            inverseTime == o.inverseTime && axisRates == o.axisRates && plane == o.plane &&
            pathMode == o.pathMode && pathTolerance == o.pathTolerance && seconds == o.seconds &&
            number == o.number && inputHigh == o.inputHigh && rpm == o.rpm &&
-           spindleChange == o.spindleChange && switchFirst == o.switchFirst &&
-           switchColumn == o.switchColumn && prompt == o.prompt && arc == o.arc &&
+           spindleChange == o.spindleChange && prompt == o.prompt && arc == o.arc &&
            cycle == o.cycle && coordinateSystem == o.coordinateSystem &&
            machineCoordinates == o.machineCoordinates && fromPosition == o.fromPosition &&
            lengthTool == o.lengthTool && appliesLengthOffset == o.appliesLengthOffset &&
            message == o.message && oNumber == o.oNumber && count == o.count &&
            partner == o.partner && columns == o.columns && actionColumn == o.actionColumn;
-}
-
-ProgramBlock switchBlock(const ProgramBlock& block)
-{
-    ProgramBlock out = block;
-    out.kind = block.switchFirst.value_or(BlockKind::Modal);
-    out.switchFirst.reset();
-    out.axes.clear();
-    out.actionColumn = block.switchColumn;
-    return out;
 }
 
 QString ProgramError::text() const

@@ -7,9 +7,9 @@
 
 namespace stepdeck::program {
 
-// What one line of a motion program does (issue 20, docs/programs.md). The words are a
-// G-code subset with LinuxCNC's meanings; a line holds at most one action besides the modal
-// words G90/G91, G20/G21 and F.
+// What one block of a motion program does (issue 20, docs/programs.md). The words are a
+// G-code subset with LinuxCNC's meanings; a line of several actions ("M5 M9") gives a block
+// for each, in LinuxCNC's order of execution (ProgramLine).
 enum class BlockKind : quint8 {
     Modal,               // only modal words (G90, G21, F...) or an N number: nothing runs
     Rapid,               // G0: positioning at the axes' fast speed
@@ -132,11 +132,9 @@ struct ProgramBlock
     int number = 0;                      // M64/M65/M66 P: output or input number; M6: the tool (T)
     bool inputHigh = true;               // M66 L3 (high) or L4 (low)
     double rpm = 0;                      // S in effect (modal; 0 until a line sets it)
-    bool spindleChange = false;          // S is on this line (a running spindle changes speed)
-    // M3, M4, M5, M7, M8 or M9 beside this block's motion: switched before it (LinuxCNC's order
-    // of execution), at its column.
-    std::optional<BlockKind> switchFirst;
-    int switchColumn = 0;
+    // S is on this line, for this block (a running spindle changes speed): the first of the
+    // line's blocks, or its M3/M4/M5 (ProgramLine).
+    bool spindleChange = false;
     QString prompt;   // M0, M1: the comment on its line
     ArcWords arc;     // G2/G3
     CycleWords cycle; // G81..G83, G73 (Z is here, not in axes)
@@ -165,9 +163,6 @@ struct ProgramBlock
 
     bool operator==(const ProgramBlock& o) const;
 };
-
-// The switch of a block's line (switchFirst) as a block of its own, for the check and the run.
-ProgramBlock switchBlock(const ProgramBlock& block);
 
 // "12.5", "-3", "1234567": a figure for messages and previews (at most 3 decimals).
 QString figure(double value);

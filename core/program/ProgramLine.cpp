@@ -1,6 +1,7 @@
 #include "ProgramLine.h"
 #include "ProgramLineChecks.h"
 #include <QSet>
+#include <algorithm>
 #include <cmath>
 
 namespace stepdeck::program {
@@ -198,29 +199,104 @@ private:
         return setAction(*action, w, out);
     }
 
+    // LinuxCNC's whole line (issue 50, docs/programs.md "Several words on one line"): the
+    // line's actions, at most one of each modal group (M7 and M8 together), at most four M
+    // words, and of the actions that take words at most one that takes axis words and one
+    // that takes P. The one with axis words is the main action, the others run beside it.
     QString setAction(BlockKind action, const ProgramWord& w, Words* out)
     {
-        // A spindle or coolant word beside a motion ("G0 X0 Y0 S12000 M3", as Vectric's posts
-        // write it): LinuxCNC runs it before the motion.
-        if (out->action && !out->switchWord && isMotion(*out->action) && isSwitch(action)) {
-            out->switchWord = &w;
-            out->switchAction = action;
-            return {};
-        }
-        if (out->action && !out->switchWord && isSwitch(*out->action) && isMotion(action)) {
-            out->switchWord = out->actionWord;
-            out->switchAction = *out->action;
-            out->action.reset();
-        }
-        if (out->action)
-            return ProgramLine::tr("one action per line: %1 and %2")
-                .arg(out->actionWord->valueText(), w.valueText());
+        if (w.letter == QLatin1Char('M') && ++out->mWords > kMaxMWords)
+            return ProgramLine::tr("%1: more than %2 M words on one line (LinuxCNC runs at most "
+                                   "%2)")
+                .arg(w.valueText())
+                .arg(kMaxMWords);
+        const int group = groupOf(action);
+        const auto clashes = [&](BlockKind other) {
+            const bool mistAndFlood =
+                other != action &&
+                (other == BlockKind::CoolantMist || other == BlockKind::CoolantFlood) &&
+                (action == BlockKind::CoolantMist || action == BlockKind::CoolantFlood);
+            return groupOf(other) == group && !mistAndFlood;
+        };
+        if (out->action && clashes(*out->action))
+            return twoOfOneGroup(out->actionWord, w);
+        for (const LineAction& other : std::as_const(out->others))
+            if (clashes(other.kind))
+                return twoOfOneGroup(other.word, w);
         if (isMotion(action) && out->groups.contains(kMotionGroup))
             return twoOfOneGroup(out->groups.value(kMotionGroup), w);
-        out->action = action;
-        out->actionWord = &w;
+        if (!takesWords(action)) {
+            out->others << LineAction{action, &w};
+            return {};
+        }
+        if (!out->action) {
+            out->action = action;
+            out->actionWord = &w;
+            return {};
+        }
+        const BlockKind main = *out->action;
+        if (takesAxisWords(main) && takesAxisWords(action))
+            return ProgramLine::tr("%1 and %2 both take axis words: write them on two lines")
+                .arg(out->actionWord->valueText(), w.valueText());
+        if (takesP(main) && takesP(action))
+            return ProgramLine::tr("%1 and %2 both take P: write them on two lines")
+                .arg(out->actionWord->valueText(), w.valueText());
+        if (takesAxisWords(action)) { // "G4 P1 G1 X5": the move is the main action
+            out->others << LineAction{main, out->actionWord};
+            out->action = action;
+            out->actionWord = &w;
+        } else {
+            out->others << LineAction{action, &w};
+        }
         return {};
     }
+
+    // The modal group of an action as LinuxCNC groups its words (G: 0 non-modal, 1 motion;
+    // M: 4 stopping, 5 inputs and outputs, 6 tool change, 7 spindle, 8 coolant), M's offset by
+    // 100 so that they meet no G group.
+    static int groupOf(BlockKind kind)
+    {
+        switch (kind) {
+        case BlockKind::Pause:
+        case BlockKind::OptionalPause:
+        case BlockKind::End:
+            return 104;
+        case BlockKind::OutputOn:
+        case BlockKind::OutputOff:
+        case BlockKind::WaitInput:
+            return 105;
+        case BlockKind::ToolChange:
+            return 106;
+        case BlockKind::SpindleOn:
+        case BlockKind::SpindleReverse:
+        case BlockKind::SpindleOff:
+            return 107;
+        case BlockKind::CoolantMist:
+        case BlockKind::CoolantFlood:
+        case BlockKind::CoolantOff:
+            return 108;
+        default:
+            return isMotion(kind) ? kMotionGroup : 0;
+        }
+    }
+
+    static bool takesAxisWords(BlockKind kind)
+    {
+        return isMotion(kind) || kind == BlockKind::Home || kind == BlockKind::SetCoordinates ||
+               kind == BlockKind::AxisOffset;
+    }
+
+    static bool takesP(BlockKind kind)
+    {
+        return kind == BlockKind::Dwell || kind == BlockKind::OutputOn ||
+               kind == BlockKind::OutputOff || kind == BlockKind::WaitInput ||
+               kind == BlockKind::SetCoordinates || isArc(kind) || kind == BlockKind::DrillCycle;
+    }
+
+    // Whether an action has words of its own (axis words or parameters) on its line.
+    static bool takesWords(BlockKind kind) { return takesAxisWords(kind) || takesP(kind); }
+
+    static constexpr int kMaxMWords = 4;
 
     // The G words of LinuxCNC's modal groups that set a mode and move nothing (issue 29):
     // empty when sorted, a refusal with its reason, or nullopt for any other code.
@@ -347,14 +423,6 @@ private:
                action == BlockKind::DrillCycle || (action && isArc(*action));
     }
 
-    // M3, M4, M5, M7, M8, M9: what may stand beside a motion on one line.
-    static bool isSwitch(BlockKind kind)
-    {
-        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
-               kind == BlockKind::SpindleOff || kind == BlockKind::CoolantMist ||
-               kind == BlockKind::CoolantFlood || kind == BlockKind::CoolantOff;
-    }
-
     static QString twoOfOneGroup(const ProgramWord* first, const ProgramWord& second)
     {
         return ProgramLine::tr("%1 and %2 on one line: they are of one modal group")
@@ -426,7 +494,9 @@ std::pair<int, QString> fillBlock(const Words& sorted, ModalState* modal, Progra
     b->coordinateSystem = modal->coordinateSystem; // G10 P0 names it
     if (const auto [column, why] = machineCoordinates(sorted, *modal, b); column > 0)
         return {column, why};
-    if (const auto [column, why] = checkActionWords(sorted, b); column > 0)
+    if (const auto [column, why] = checkUnusedWords(sorted, b->kind); column > 0)
+        return {column, why};
+    if (const auto [column, why] = checkActionWords(sorted, sorted.actionWord, b); column > 0)
         return {column, why};
     const bool arc = isArc(b->kind);
     const bool cycle = b->kind == BlockKind::DrillCycle;
@@ -478,26 +548,109 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->pathTolerance = modal.pathTolerance;
 }
 
+// LinuxCNC's order of execution (docs/programs.md "Several words on one line"): where an
+// action of a line runs among the others (its step in LinuxCNC's table).
+int executionStep(BlockKind kind)
+{
+    switch (kind) {
+    case BlockKind::SpindleSpeed:
+        return 5;
+    case BlockKind::OutputOn:
+    case BlockKind::OutputOff:
+    case BlockKind::WaitInput:
+        return 7;
+    case BlockKind::ToolChange:
+        return 8;
+    case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
+    case BlockKind::SpindleOff:
+        return 9;
+    case BlockKind::CoolantMist:
+    case BlockKind::CoolantFlood:
+    case BlockKind::CoolantOff:
+        return 11;
+    case BlockKind::Dwell:
+        return 14;
+    case BlockKind::Home:
+    case BlockKind::SetCoordinates:
+    case BlockKind::AxisOffset:
+    case BlockKind::AxisOffsetReset:
+    case BlockKind::AxisOffsetSuspend:
+    case BlockKind::AxisOffsetRestore:
+        return 23;
+    case BlockKind::Pause:
+    case BlockKind::OptionalPause:
+    case BlockKind::End:
+        return 25;
+    default: // the motion, or modal words only
+        return 24;
+    }
+}
+
+bool isSpindleSwitch(BlockKind kind)
+{
+    return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
+           kind == BlockKind::SpindleOff;
+}
+
+// M0, M1: the line's comment; M6: the tool (T on this line or an earlier one) and its prompt.
+std::optional<ProgramError> fillPrompt(const QString& comment, const ModalState& modal,
+                                       ProgramBlock* b)
+{
+    if (b->kind == BlockKind::Pause || b->kind == BlockKind::OptionalPause)
+        b->prompt = comment;
+    if (b->kind != BlockKind::ToolChange)
+        return std::nullopt;
+    // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by hand:
+    // the program holds until the operator loaded it and resumes.
+    if (!modal.tool)
+        return ProgramError{0, b->actionColumn,
+                            ProgramLine::tr("M6 needs a tool: T on this line or an earlier one")};
+    b->number = *modal.tool;
+    b->prompt = comment.isEmpty()
+                    ? ProgramLine::tr("Load tool %1").arg(*modal.tool)
+                    : ProgramLine::tr("Load tool %1 (%2)").arg(*modal.tool).arg(comment);
+    return std::nullopt;
+}
+
+// An action beside the line's main one as a block of its own: the line's modal state and
+// columns, the action's values.
+std::optional<ProgramError> actionBlock(const Words& sorted, const LineAction& action,
+                                        const ProgramBlock& main, const QString& comment,
+                                        const ModalState& modal, ProgramBlock* out)
+{
+    out->kind = action.kind;
+    out->actionColumn = action.word->column;
+    out->columns = main.columns;
+    carryModal(modal, out);
+    if (const auto [column, why] = checkActionWords(sorted, action.word, out); column > 0)
+        return ProgramError{0, column, why};
+    return fillPrompt(comment, modal, out);
+}
+
 } // namespace
 
-std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNumber,
-                                               const QStringList& axisNames, ModalState* modal,
-                                               std::optional<ProgramError>* error)
+bool ProgramLine::parse(const LexedLine& line, int lineNumber, const QStringList& axisNames,
+                        ModalState* modal, std::vector<ProgramBlock>* blocks,
+                        std::optional<ProgramError>* error)
 {
+    blocks->clear();
     const auto fail = [&](int column, const QString& message) {
         *error = ProgramError{lineNumber, column, message};
-        return std::nullopt;
+        blocks->clear();
+        return false;
     };
     // The words after an N number (Words point into line.words).
     const ProgramWord* first = line.words.cbegin();
     const ProgramWord* const last = line.words.cend();
     if (first == last && line.message.isEmpty())
-        return std::nullopt;
+        return true;
     if (first == last) { // only "(MSG, text)": a block that says it and does nothing else
         ProgramBlock b;
         b.message = line.message;
         carryModal(*modal, &b);
-        return b;
+        blocks->push_back(std::move(b));
+        return true;
     }
     if (first->letter == QLatin1Char('N')) {
         if (!isWhole(first->value) || first->value < 0)
@@ -508,11 +661,14 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
         if (last - first > 1)
             return fail(first[1].column,
                         tr("O%1 stands alone on its line").arg(first->valueText().mid(1)));
-        return repeatBlock(line, *first, lineNumber, error);
+        std::optional<ProgramBlock> repeat = repeatBlock(line, *first, lineNumber, error);
+        if (repeat)
+            blocks->push_back(std::move(*repeat));
+        return repeat.has_value();
     }
     Words sorted;
     if (!LineWords(lineNumber, axisNames).sort(first, last, &sorted, error))
-        return std::nullopt;
+        return false;
     ModalState next = *modal;
     if (const auto [column, why] = applyModalWords(&sorted, &next); column > 0)
         return fail(column, why);
@@ -520,26 +676,44 @@ std::optional<ProgramBlock> ProgramLine::parse(const LexedLine& line, int lineNu
     if (const auto [column, why] = fillBlock(sorted, &next, &b); column > 0)
         return fail(column, why);
     carryModal(next, &b);
-    b.message = line.message;
-    b.appliesLengthOffset = sorted.lengthOffset == true;
-    if (sorted.switchWord) {
-        b.switchFirst = sorted.switchAction;
-        b.switchColumn = sorted.switchWord->column;
+    if (const std::optional<ProgramError> e = fillPrompt(line.comment, next, &b))
+        return fail(e->column, e->message);
+    // The actions beside the main one, each a block of the line, in LinuxCNC's order.
+    const bool speed = b.spindleChange;
+    bool spindleSwitch = false;
+    for (const LineAction& action : std::as_const(sorted.others)) {
+        ProgramBlock o;
+        if (const std::optional<ProgramError> e =
+                actionBlock(sorted, action, b, line.comment, next, &o))
+            return fail(e->column, e->message);
+        spindleSwitch = spindleSwitch || isSpindleSwitch(o.kind);
+        blocks->push_back(std::move(o));
     }
-    if (b.kind == BlockKind::Pause || b.kind == BlockKind::OptionalPause)
-        b.prompt = line.comment;
-    if (b.kind == BlockKind::ToolChange) {
-        // LinuxCNC: T selects the tool, M6 changes to it. StepDeck's machines change tools by
-        // hand: the program holds until the operator loaded it and resumes.
-        if (!next.tool)
-            return fail(b.actionColumn, tr("M6 needs a tool: T on this line or an earlier one"));
-        b.number = *next.tool;
-        b.prompt = line.comment.isEmpty()
-                       ? tr("Load tool %1").arg(*next.tool)
-                       : tr("Load tool %1 (%2)").arg(*next.tool).arg(line.comment);
+    // The main block runs unless the others do all it would: modal words only, or S that a
+    // spindle switch on the line takes.
+    const bool mainRuns =
+        blocks->empty() ||
+        (b.kind != BlockKind::Modal && !(b.kind == BlockKind::SpindleSpeed && spindleSwitch));
+    if (mainRuns)
+        blocks->push_back(b);
+    std::stable_sort(blocks->begin(), blocks->end(),
+                     [](const ProgramBlock& x, const ProgramBlock& y) {
+                         return executionStep(x.kind) < executionStep(y.kind);
+                     });
+    // S goes out once, first (LinuxCNC's step 5), or with the line's M3/M4/M5; the message at
+    // the line's start; G43 applies after the tool change (step 18), with the line's last block.
+    for (ProgramBlock& each : *blocks)
+        each.spindleChange = false;
+    if (speed) {
+        const auto taker = std::find_if(blocks->begin(), blocks->end(), [](const ProgramBlock& x) {
+            return isSpindleSwitch(x.kind);
+        });
+        (taker != blocks->end() ? *taker : blocks->front()).spindleChange = true;
     }
+    blocks->front().message = line.message;
+    blocks->back().appliesLengthOffset = sorted.lengthOffset == true;
     *modal = next;
-    return b;
+    return true;
 }
 
 } // namespace stepdeck::program

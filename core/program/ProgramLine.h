@@ -2,6 +2,7 @@
 #include "ProgramBlock.h"
 #include "ProgramLexer.h"
 #include <QCoreApplication>
+#include <vector>
 
 namespace stepdeck::program {
 
@@ -31,17 +32,21 @@ struct ModalState
     std::optional<double> cycleR, cycleBottom, cyclePeck, cycleDwell;
 };
 
-// One lexed line to its block (ProgramParser's line step): which words it has, whether they
-// fit together, and the values each action needs. On success *modal holds the state after
-// the line; on failure nothing changes and the error names the word's column.
+// One lexed line to its blocks (ProgramParser's line step): which words it has, whether they
+// fit together, and the values each action needs. A line of several actions ("M5 M9",
+// "G0 Z2 S10000 M3", "T1 M6 G43 H1") gives a block per action in LinuxCNC's order of execution
+// (issue 50, docs/programs.md "Several words on one line"), each naming the line. On success
+// *modal holds the state after the line; on failure nothing changes and the error names the
+// word's column.
 class ProgramLine
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ProgramLine)
 public:
-    // nullopt: a line without words (blank or only a comment); otherwise the block or error.
-    static std::optional<ProgramBlock> parse(const LexedLine& line, int lineNumber,
-                                             const QStringList& axisNames, ModalState* modal,
-                                             std::optional<ProgramError>* error);
+    // false with *error; true with the line's blocks in *blocks (cleared first; none for a
+    // blank line or one of only a comment). The caller keeps *blocks to reuse its room.
+    static bool parse(const LexedLine& line, int lineNumber, const QStringList& axisNames,
+                      ModalState* modal, std::vector<ProgramBlock>* blocks,
+                      std::optional<ProgramError>* error);
 };
 
 } // namespace stepdeck::program

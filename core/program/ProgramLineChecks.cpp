@@ -1,5 +1,6 @@
 #include "ProgramLineChecks.h"
 #include "ProgramLine.h"
+#include <algorithm>
 
 namespace stepdeck::program {
 
@@ -64,26 +65,28 @@ PlaneWords planeWords(Plane plane)
             QStringLiteral("XY")};
 }
 
+// "X5 is not used by G4": named by the line's main action, else the first beside it.
+QString notTaken(const Words& words, const QString& word)
+{
+    const ProgramWord* action = words.actionWord         ? words.actionWord
+                                : words.others.isEmpty() ? nullptr
+                                                         : words.others.first().word;
+    return action ? ProgramLine::tr("%1 is not used by %2").arg(word, action->valueText())
+                  : ProgramLine::tr("%1 is not used on a line without an action").arg(word);
+}
+
 class Checker
 {
 public:
-    Checker(const Words& words, ProgramBlock* block) : m_words(words), m_block(block) {}
+    Checker(const Words& words, const ProgramWord* action, ProgramBlock* block)
+        : m_words(words), m_action(action), m_block(block)
+    {}
 
-    // The first misplaced or missing word: (column, message); column 0: none.
+    // The first missing or out-of-range word of the block's action: (column, message);
+    // column 0: none.
     std::pair<int, QString> check()
     {
-        const BlockKind kind = m_block->kind;
-        for (auto it = m_words.parameters.cbegin(); it != m_words.parameters.cend(); ++it) {
-            if (it.key() == QLatin1Char('H') && m_words.lengthOffset == true)
-                continue; // G43's (ProgramLine)
-            if (it.key() == QLatin1Char('S'))
-                continue; // modal, as F: any line may set the spindle's speed (LinuxCNC)
-            if (!allowedParameters(kind).contains(it.key()))
-                return {it.value()->column, notTaken(it.value()->valueText())};
-        }
-        if (!takesAxes(kind) && !m_words.axes.isEmpty())
-            return {m_words.axes.first()->column, notTaken(m_words.axes.first()->valueText())};
-        switch (kind) {
+        switch (m_block->kind) {
         case BlockKind::Dwell:
             return number('P', 0, 1e6, false, &m_block->seconds);
         case BlockKind::OutputOn:
@@ -98,7 +101,7 @@ public:
             return setCoordinates();
         case BlockKind::AxisOffset:
             if (m_words.axes.isEmpty())
-                return {m_words.actionWord->column,
+                return {m_action->column,
                         ProgramLine::tr("G92 needs axis words: the values the axes' present "
                                         "positions get")};
             return {};
@@ -108,19 +111,10 @@ public:
     }
 
 private:
-    QString notTaken(const QString& word) const
-    {
-        return m_words.actionWord
-                   ? ProgramLine::tr("%1 is not used by %2")
-                         .arg(word, m_words.actionWord->valueText())
-                   : ProgramLine::tr("%1 is not used on a line without an action").arg(word);
-    }
-
     std::pair<int, QString> missing(QChar letter) const
     {
-        return {
-            m_words.actionWord->column,
-            ProgramLine::tr("%1 needs %2").arg(m_words.actionWord->valueText(), QString(letter))};
+        return {m_action->column,
+                ProgramLine::tr("%1 needs %2").arg(m_action->valueText(), QString(letter))};
     }
 
     std::pair<int, QString> number(QChar letter, double min, double max, bool open, double* out)
@@ -210,7 +204,7 @@ private:
             out = w->value;
         }
         if (!r && !anyCentre)
-            return {m_words.actionWord ? m_words.actionWord->column : m_words.axes.first()->column,
+            return {m_action ? m_action->column : m_words.axes.first()->column,
                     ProgramLine::tr("%1 needs its centre: %2 and %3, or R")
                         .arg(g)
                         .arg(plane.centre.at(0))
@@ -268,14 +262,36 @@ private:
     }
 
     const Words& m_words;
+    const ProgramWord* m_action;
     ProgramBlock* m_block;
 };
 
 } // namespace
 
-std::pair<int, QString> checkActionWords(const Words& words, ProgramBlock* block)
+std::pair<int, QString> checkUnusedWords(const Words& words, BlockKind mainKind)
 {
-    return Checker(words, block).check();
+    const auto anyTakes = [&](const auto& takes) {
+        return takes(mainKind) || std::any_of(words.others.cbegin(), words.others.cend(),
+                                              [&](const LineAction& a) { return takes(a.kind); });
+    };
+    for (auto it = words.parameters.cbegin(); it != words.parameters.cend(); ++it) {
+        if (it.key() == QLatin1Char('H') && words.lengthOffset == true)
+            continue; // G43's (ProgramLine)
+        if (it.key() == QLatin1Char('S'))
+            continue; // modal, as F: any line may set the spindle's speed (LinuxCNC)
+        const QChar letter = it.key();
+        if (!anyTakes([letter](BlockKind k) { return allowedParameters(k).contains(letter); }))
+            return {it.value()->column, notTaken(words, it.value()->valueText())};
+    }
+    if (!words.axes.isEmpty() && !anyTakes(takesAxes))
+        return {words.axes.first()->column, notTaken(words, words.axes.first()->valueText())};
+    return {};
+}
+
+std::pair<int, QString> checkActionWords(const Words& words, const ProgramWord* action,
+                                         ProgramBlock* block)
+{
+    return Checker(words, action, block).check();
 }
 
 std::optional<ProgramBlock> repeatBlock(const LexedLine& line, const ProgramWord& o, int lineNumber,

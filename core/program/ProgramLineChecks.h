@@ -3,6 +3,7 @@
 // words (ProgramLineChecks.cpp).
 #include "ProgramLexer.h"
 #include <QMap>
+#include <QVarLengthArray>
 #include <cmath>
 
 namespace stepdeck::program {
@@ -16,14 +17,24 @@ inline bool isWhole(double v)
     return std::floor(v) == v && std::fabs(v) < 1e9;
 }
 
-// A line's words sorted by role: at most one action, the modal words, the parameters and the
-// axes, each at most once.
+// An action word of a line that runs beside its main action (issue 50, LinuxCNC's order of
+// execution): M3..M9, M6, M0/M1/M2/M30, G92.1..G92.3, and G4 or M64..M66 beside a move.
+struct LineAction
+{
+    BlockKind kind = BlockKind::Modal;
+    const ProgramWord* word = nullptr;
+};
+
+// A line's words sorted by role: its main action (the one its axis words or parameters belong
+// to), the actions beside it, the modal words, the parameters and the axes, each at most once.
 struct Words
 {
     std::optional<BlockKind> action;
     const ProgramWord* actionWord = nullptr;
-    std::optional<bool> relative; // G90 / G91
-    std::optional<bool> inches;   // G21 / G20
+    QVarLengthArray<LineAction, 4> others; // as written; ProgramLine orders them
+    int mWords = 0;                        // M words on the line (LinuxCNC: at most 4)
+    std::optional<bool> relative;          // G90 / G91
+    std::optional<bool> inches;            // G21 / G20
     // LinuxCNC's other modal groups, each at most once a line (issue 29): the word of each
     // group given (group number as LinuxCNC numbers them), and what it sets.
     QMap<int, const ProgramWord*> groups;
@@ -37,9 +48,7 @@ struct Words
     std::optional<bool> lengthOffset;                // G43 (true) / G49 (false)
     std::optional<bool> retractToR;                  // G99 (true) / G98 (false)
     std::optional<bool> inverseTime;                 // G93 (true) / G94 (false)
-    const ProgramWord* switchWord = nullptr;         // M3..M9 beside a motion (ProgramLine)
-    BlockKind switchAction = BlockKind::Modal;
-    int cycleCode = 0; // G81, G82, G83, G73: its number
+    int cycleCode = 0;                               // G81, G82, G83, G73: its number
     WordMap<QChar, const ProgramWord*> parameters;
     WordMap<QString, const ProgramWord*> axes;
 };
@@ -53,9 +62,14 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal);
 // *modal (ProgramLineModes.cpp).
 std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, ProgramBlock* block);
 
-// The first misplaced or missing word of a sorted line for block->kind: (column, message);
-// column 0: none. Fills the action's values into *block.
-std::pair<int, QString> checkActionWords(const Words& words, ProgramBlock* block);
+// The first word of a sorted line that none of its actions takes (its main block's kind, the
+// others beside it): (column, message); column 0: none.
+std::pair<int, QString> checkUnusedWords(const Words& words, BlockKind mainKind);
+// The first missing or out-of-range word of block->kind, whose word is `action` (null: a line
+// of axis words moving with the modal motion): (column, message); column 0: none. Fills the
+// action's values into *block.
+std::pair<int, QString> checkActionWords(const Words& words, const ProgramWord* action,
+                                         ProgramBlock* block);
 
 // "O<n> repeat [count]" / "O<n> endrepeat": the block, or nullopt with *error.
 std::optional<ProgramBlock> repeatBlock(const LexedLine& line, const ProgramWord& o, int lineNumber,

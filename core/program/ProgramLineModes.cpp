@@ -3,6 +3,7 @@
 // state a program carries from line to line.
 #include "ProgramLine.h"
 #include "ProgramLineChecks.h"
+#include <algorithm>
 
 namespace stepdeck::program {
 
@@ -39,7 +40,11 @@ std::pair<int, QString> applyPathMode(Words* words, ModalState* modal)
 // the offset).
 std::pair<int, QString> applyLengthOffset(const Words* words, ModalState* modal)
 {
-    if (words->action == BlockKind::ToolChange && modal->tool)
+    const bool toolChange =
+        words->action == BlockKind::ToolChange ||
+        std::any_of(words->others.cbegin(), words->others.cend(),
+                    [](const LineAction& a) { return a.kind == BlockKind::ToolChange; });
+    if (toolChange && modal->tool)
         modal->loadedTool = modal->tool;
     const ProgramWord* h = words->parameters.value('H');
     if (!words->lengthOffset || !*words->lengthOffset) {

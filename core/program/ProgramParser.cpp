@@ -221,16 +221,16 @@ void ProgramParser::homeLine(const QString& text, int column)
     lexed.words[0].column = column;
     std::optional<ProgramError> failure;
     ModalState modal = m_state.modal;
-    std::optional<ProgramBlock> block =
-        ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &failure);
-    if (failure || !block) {
+    if (!ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &m_lineBlocks, &failure) ||
+        m_lineBlocks.size() != 1) {
         error(m_state.line, column, failure ? failure->message : tr("$H cannot run here"));
         return;
     }
     m_state.modal = modal;
-    block->line = sourceLine(m_state.line);
-    block->text = text.trimmed();
-    addBlock(std::move(*block));
+    ProgramBlock& block = m_lineBlocks.front();
+    block.line = sourceLine(m_state.line);
+    block.text = text.trimmed();
+    addBlock(std::move(block));
 }
 
 // Fanuc-style posts (Vectric, Fusion's fanuc) write the program's number before its first
@@ -343,25 +343,26 @@ void ProgramParser::parseLine(const QString& text)
     m_state.anyWords = m_state.anyWords || !lexed.words.isEmpty();
     std::optional<ProgramError> failure;
     ModalState modal = m_state.modal;
-    std::optional<ProgramBlock> block =
-        ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &failure);
-    if (failure) {
+    if (!ProgramLine::parse(lexed, m_state.line, m_axisNames, &modal, &m_lineBlocks, &failure)) {
         error(failure->line, failure->column, failure->message);
         noteBrokenRepeat(lexed);
         return;
     }
-    if (!block)
+    if (m_lineBlocks.empty())
         return; // blank or only a comment
     m_state.modal = modal;
-    block->line = sourceLine(m_state.line);
     // A worked-out line keeps its words at their source columns (NgcLineExpander): shown
     // without the padding.
-    block->text = m_lineMap ? text.simplified() : text.trimmed();
-    if (block->kind == BlockKind::End)
-        m_state.endLine = m_endedAt = m_state.line;
-    if (isArc(block->kind))
-        noteZeroNormal(lexed, block->plane);
-    addBlock(std::move(*block));
+    const QString shown = m_lineMap ? text.simplified() : text.trimmed();
+    for (ProgramBlock& block : m_lineBlocks) { // in LinuxCNC's order of execution
+        block.line = sourceLine(m_state.line);
+        block.text = shown;
+        if (block.kind == BlockKind::End)
+            m_state.endLine = m_endedAt = m_state.line;
+        if (isArc(block.kind))
+            noteZeroNormal(lexed, block.plane);
+        addBlock(std::move(block));
+    }
 }
 
 // An "O<n> repeat" line with an error still opens its repeat, so that its endrepeat is not

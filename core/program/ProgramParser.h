@@ -115,6 +115,7 @@ private:
     qint64 m_lineBytes = 0;  // bytes of the line being read (kept or not)
     qint64 m_lineOffset = 0; // where it starts
     ParserState m_state;
+    std::vector<ProgramBlock> m_lineBlocks; // the blocks of the line read (its room reused)
     quint64 m_hash = 0;
     struct OpenRepeat
     {

@@ -44,8 +44,6 @@ void ProgramPlan::plan(const ProgramBlock& block, bool reporting)
     out.block = &block;
     checkTools(block);
     checkSpindleChange(block);
-    if (block.switchFirst)
-        planSwitch(switchBlock(block));
     if (planSwitch(block))
         return;
     switch (block.kind) {
@@ -350,7 +348,7 @@ void ProgramPlan::checkSpindleChange(const ProgramBlock& block)
     const auto startsSpindle = [](std::optional<BlockKind> kind) {
         return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse;
     };
-    if (!block.spindleChange || startsSpindle(block.kind) || startsSpindle(block.switchFirst))
+    if (!block.spindleChange || startsSpindle(block.kind))
         return;
     if (block.kind != BlockKind::SpindleOff &&
         !checkAnyController(block, &Capabilities::spindle, QStringLiteral("S")))

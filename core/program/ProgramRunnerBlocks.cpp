@@ -14,28 +14,20 @@ namespace stepdeck::program {
 void ProgramRunner::startBlock(const ProgramBlock& block)
 {
     m_blockError = ErrorKind::None;
-    // In LinuxCNC's order of execution: S, then M3/M4/M5, M7/M8/M9 on the line, then its action.
-    // S on a line with another action ("G1 X5 S500"): while the program has the spindle on, its
-    // new speed goes out first. With the spindle off, S is only the speed the next M3 starts at.
-    const auto spindleSwitch = [](std::optional<BlockKind> kind) {
-        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
-               kind == BlockKind::SpindleOff;
-    };
-    const auto thenSwitch = [this] {
-        if (!m_block.switchFirst) {
-            startAction(m_block);
-            return;
-        }
-        startSwitch(switchBlock(m_block), [this] { startAction(m_block); });
-    };
-    if (block.spindleChange && m_spindleOn && !spindleSwitch(block.kind) &&
-        !spindleSwitch(block.switchFirst)) {
+    // A line's actions are blocks of their own in LinuxCNC's order of execution (ProgramLine),
+    // S with the first of them. S on a block of another action ("G1 X5 S500"): while the program
+    // has the spindle on, its new speed goes out first. With the spindle off, S is only the
+    // speed the next M3 starts at.
+    const bool spindleSwitch = block.kind == BlockKind::SpindleOn ||
+                               block.kind == BlockKind::SpindleReverse ||
+                               block.kind == BlockKind::SpindleOff;
+    if (block.spindleChange && m_spindleOn && !spindleSwitch) {
         ProgramBlock speed = block;
         speed.kind = BlockKind::SpindleOn;
-        startSwitch(speed, thenSwitch);
+        startSwitch(speed, [this] { startAction(m_block); });
         return;
     }
-    thenSwitch();
+    startAction(m_block);
 }
 
 void ProgramRunner::startAction(const ProgramBlock& block)

@@ -8,14 +8,14 @@
 
 namespace stepdeck::program {
 
-// Whether `block` continues the open contour: a feed move of the same stream with nothing
-// to switch first, while no pause or step asks to hold after the block under way.
+// Whether `block` continues the open contour: a feed move of the same stream with no spindle
+// speed to change first, while no pause or step asks to hold after the block under way.
 bool ProgramRunner::joinsContour(const ProgramBlock& block) const
 {
     if (!m_contour || m_contour->isClosed() || m_pauseAsked || m_stepOnly)
         return false;
     const ContourMoves::Stream* stream = m_contourMoves->streamOf(block);
-    return stream && stream->controller == m_contour->stream().controller && !block.switchFirst &&
+    return stream && stream->controller == m_contour->stream().controller &&
            !(block.spindleChange && m_spindleOn);
 }
 

@@ -20,24 +20,21 @@ bool isCoolant(BlockKind k)
            k == BlockKind::CoolantOff;
 }
 
-// A block's switches: a line's own switch (M3 beside a move) and its action, in that order.
+// A block's switch (a line of several actions gives a block each, ProgramLine).
 void noteSwitches(const ProgramBlock& b, RunFromState* state)
 {
-    for (const std::optional<BlockKind> k : {b.switchFirst, std::optional<BlockKind>(b.kind)}) {
-        if (!k)
-            continue;
-        if (isSpindle(*k)) {
-            state->spindle = *k;
-        } else if (isCoolant(*k)) {
-            state->coolant = *k;
-        } else if (*k == BlockKind::ToolChange) {
-            state->tool = b.number;
-        } else if (*k == BlockKind::End) {
-            // LinuxCNC's M2: spindle and coolant off (the positions stay).
-            state->spindle.reset();
-            state->coolant.reset();
-            state->tool = 0;
-        }
+    const BlockKind k = b.kind;
+    if (isSpindle(k)) {
+        state->spindle = k;
+    } else if (isCoolant(k)) {
+        state->coolant = k;
+    } else if (k == BlockKind::ToolChange) {
+        state->tool = b.number;
+    } else if (k == BlockKind::End) {
+        // LinuxCNC's M2: spindle and coolant off (the positions stay).
+        state->spindle.reset();
+        state->coolant.reset();
+        state->tool = 0;
     }
 }
 

@@ -213,7 +213,8 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                                                    15,    15,    -10,   // G98: the initial level
                                                    17.54, 15,    -21.8, 20.08, 15,
                                                    -21.8, 20.08, 15,    -10};
-        // LinuxCNC's own style: G10 L2 sets G55 (X20 Y10 Z-20), T1 (5 mm) with G43, a repeat
+        // LinuxCNC's own style: G10 L2 sets G55 (X20 Y10 Z-20), T1 (5 mm) with G43 on its M6 line,
+        // "S12000 M3 M8" and "M5 M9" (issue 50: several words on one line), a repeat
         // of incremental squares, G53 at the end.
         QList<double> pockets{0, 0, -10, 20, 10, -10};
         for (double x : {20, 24, 28})

@@ -152,7 +152,7 @@ void DrillCycleTest::parse_badCycle_namesWord_data()
     QTest::newRow("after G80") << "F100\nG81 Z-1 R1\nG80\nX2"
                                << "4:1: axis words need G0, G1, G2 or G3 before them";
     QTest::newRow("with G1") << "F100\nG1 G81 Z-1 R1"
-                             << "2:4: one action per line: G1 and G81";
+                             << "2:4: G1 and G81 on one line: they are of one modal group";
     QTest::newRow("G53") << "F100\nG53 G81 Z-1 R1"
                          << "2:1: G53 moves in machine coordinates with G0 or G1 only";
 }

@@ -202,8 +202,11 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                            << "1:11: R45: G10 R (a rotated coordinate system) is not supported";
     QTest::newRow("G92 without axes") << "G92"
                                       << "1:1: G92 needs axis words";
+    // Issue 50: G92.1 takes no axis words; with a motion in effect they are its move.
     QTest::newRow("G92.1 with axes") << "G92.1 X0"
-                                     << "1:7: X0 is not used by G92.1";
+                                     << "1:7: axis words need G0, G1, G2 or G3 before them";
+    QTest::newRow("G92.1 with P") << "G92.1 P2"
+                                  << "1:7: P2 is not used by G92.1";
     QTest::newRow("arc without centre") << "G0 X1\nG2 X1 Y1 F10"
                                         << "2:1: G2 needs its centre: I and J, or R";
     QTest::newRow("arc without F") << "G3 X1 I1"
@@ -237,7 +240,7 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("I with G1") << "G1 X1 I1 F10"
                                << "1:7: I1 is not used by G1";
     QTest::newRow("arc plus G0") << "G0 G2 X1 I1 F10"
-                                 << "1:4: one action per line: G0 and G2";
+                                 << "1:4: G0 and G2 on one line: they are of one modal group";
     QTest::newRow("unknown M") << "M19"
                                << "1:1: M19 is not supported";
     QTest::newRow("M6 without T") << "G0 X1\nM6"
@@ -258,8 +261,9 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                 << "1:7: axis X appears twice";
     QTest::newRow("parameter twice") << "G4 P1 P2"
                                      << "1:7: P appears twice";
-    QTest::newRow("two actions") << "G0 X1 M0"
-                                 << "1:7: one action per line: G0 and M0";
+    // Issue 50: LinuxCNC's whole line ("G0 X1 M0" moves, then holds): two motions do not.
+    QTest::newRow("two motions") << "G0 X1 G1 Y1 F10"
+                                 << "1:7: G0 and G1 on one line: they are of one modal group";
     QTest::newRow("G90 and G91") << "G90 G91"
                                  << "1:5: G90 and G91 on one line";
     QTest::newRow("G20 and G21") << "G20 G21"
@@ -281,9 +285,11 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("S below 0") << "G0 X1 S-100"
                                << "1:7: S-100 must lie within 0..1000000";
     QTest::newRow("M4 with an axis") << "M4 S100 X1"
-                                     << "1:9: X1 is not used by M4";
+                                     << "1:9: axis words need G0, G1, G2 or G3 before them";
+    QTest::newRow("M4 with an axis and P") << "G0 X0\nM4 S100 X1 P2"
+                                           << "2:12: P2 is not used by M4";
     QTest::newRow("M3 and M4") << "M3 M4 S100"
-                               << "1:4: one action per line: M3 and M4";
+                               << "1:4: M3 and M4 on one line: they are of one modal group";
     QTest::newRow("M1 with P") << "M1 P2"
                                << "1:4: P2 is not used by M1";
     QTest::newRow("M64 without P") << "M64"

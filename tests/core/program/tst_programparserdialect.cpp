@@ -1,6 +1,6 @@
 // The parser on the CAM dialect's lines (issue 29, docs/programs.md "The modes CAM posts set",
 // "Lines"): LinuxCNC's modal groups on every block, a CAM post's header (byte-order mark, "%",
-// N numbers, CRLF), S on any line, and a spindle or coolant word beside a motion. The words
+// N numbers, CRLF), S on any line, and LinuxCNC's whole line (several actions, issue 50). The words
 // and errors of every line: tst_programparser; drilling cycles: tst_drillcycle.
 #include "ProgramParserTestSupport.h"
 #include "program/ProgramParser.h"
@@ -18,7 +18,11 @@ private Q_SLOTS:
     void parse_modalGroups_stateOnEveryBlock();
     void parse_camHeader_percentBomAndModes_blocksAsWithout();
     void parse_spindleSpeed_modalOnAnyLine();
-    void parse_switchBesideMotion_keptToRunFirst();
+    void parse_wholeLine_blocksInExecutionOrder_data();
+    void parse_wholeLine_blocksInExecutionOrder();
+    void parse_wholeLine_lengthOffsetAfterToolChange();
+    void parse_wholeLine_refusedAsLinuxCNC_data();
+    void parse_wholeLine_refusedAsLinuxCNC();
     void parse_inverseTime_fOnEveryG1_data();
     void parse_inverseTime_fOnEveryG1();
     void parse_aroundTheProgram_blocksNameAndNotes_data();
@@ -102,32 +106,125 @@ void TestProgramParserDialect::parse_spindleSpeed_modalOnAnyLine()
                                "M5 0"}));
 }
 
-// M3/M4/M5/M7/M8/M9 beside a motion (Vectric's "G0X0.000Y0.000S12000M3"): the motion is the
-// block, the switch is kept to run before it (LinuxCNC's order), at its own column. Beside
-// anything else, or two of them, it stays an error.
-void TestProgramParserDialect::parse_switchBesideMotion_keptToRunFirst()
+// LinuxCNC's whole line (issue 50, docs/programs.md "Several words on one line"): a block per
+// action, in LinuxCNC's order of execution (I/O, M6, spindle, coolant, G4, G28/G10/G92,
+// motion, stop), each at its word's column; S with the line's M3/M4/M5, else with its first
+// block; G43 with its last; the line's text on each.
+void TestProgramParserDialect::parse_wholeLine_blocksInExecutionOrder_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QStringList>("blocks"); // line:word@column, "S" where the speed goes out
+    QTest::newRow("Vectric's spindle beside a rapid")
+        << "G0X0.000Y0.000S12000M3" << QStringList{"1:M3@21 S", "1:G0@1"};
+    QTest::newRow("coolant before a feed") << "M8 G1 X1 F100" << QStringList{"1:M8@1", "1:G1@4"};
+    QTest::newRow("coolant off before an arc")
+        << "G2 X2 I0.5 M9 F100" << QStringList{"1:M9@12", "1:G2@1"};
+    QTest::newRow("spindle and coolant off") << "M5 M9" << QStringList{"1:M5@1", "1:M9@4"};
+    QTest::newRow("as written the other way") << "M9 M5" << QStringList{"1:M5@4", "1:M9@1"};
+    QTest::newRow("spindle with S, coolant") << "M8 M3 S1000" << QStringList{"1:M3@4 S", "1:M8@1"};
+    QTest::newRow("mist and flood") << "M7 M8" << QStringList{"1:M7@1", "1:M8@4"};
+    QTest::newRow("tool change then spindle")
+        << "T1 M3 M6 S9000" << QStringList{"1:M6@7", "1:M3@4 S"};
+    QTest::newRow("tool change, then the end") << "T1 M6 M2" << QStringList{"1:M6@4", "1:M2@7"};
+    QTest::newRow("move, then hold") << "G0 X1 M0" << QStringList{"1:G0@1", "1:M0@7"};
+    QTest::newRow("move, then the end") << "M2 G0 Z10" << QStringList{"1:G0@4", "1:M2@1"};
+    QTest::newRow("dwell, then a move") << "G1 X5 F100 G4 P1" << QStringList{"1:G4@12", "1:G1@1"};
+    QTest::newRow("output, then a move") << "G0 X1 M64 P2" << QStringList{"1:M64@7", "1:G0@1"};
+    QTest::newRow("spindle before the modal move")
+        << "G1 F100\nX5 M3 S500" << QStringList{"1:modal@1", "2:M3@4 S", "2:G1@0"};
+    QTest::newRow("S first, then the tool change")
+        << "T2 M6 S800" << QStringList{"1:S@0 S", "1:M6@4"};
+    QTest::newRow("S with the move when nothing switches")
+        << "M3 S100\nG1 X1 S200 F100" << QStringList{"1:M3@1 S", "2:G1@1 S"};
+    QTest::newRow("after an N number") << "N10 M5 M9" << QStringList{"1:M5@5", "1:M9@8"};
+    QTest::newRow("four M words") << "T1 M6 M3 M7 M8 S100"
+                                  << QStringList{"1:M6@4", "1:M3@7 S", "1:M7@10", "1:M8@13"};
+    QTest::newRow("G92.1 and a move") << "G92.1 G0 X0" << QStringList{"1:G92.1@1", "1:G0@7"};
+}
+
+void TestProgramParserDialect::parse_wholeLine_blocksInExecutionOrder()
+{
+    QFETCH(QString, program);
+    QFETCH(QStringList, blocks);
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
+    QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
+    QStringList got;
+    const QStringList lines = program.split(QLatin1Char('\n'));
+    for (const ProgramBlock& b : p->allBlocks()) {
+        const QString word = blockWord(b.kind).isEmpty() ? QStringLiteral("modal") : blockWord(b);
+        got << QStringLiteral("%1:%2@%3%4")
+                   .arg(b.line)
+                   .arg(word)
+                   .arg(b.actionColumn)
+                   .arg(b.spindleChange ? QStringLiteral(" S") : QString());
+        QCOMPARE(b.text, lines.at(b.line - 1).trimmed());
+    }
+    QCOMPARE(got, blocks);
+}
+
+// G43 on a tool change's line applies after the change (LinuxCNC's steps 8 and 18): the line's
+// last block names it; the modal state is the line's on every block.
+void TestProgramParserDialect::parse_wholeLine_lengthOffsetAfterToolChange()
 {
     QList<ProgramError> errors;
-    const std::optional<Program> p = ProgramParser::parse(
-        "G0X0.000Y0.000S12000M3\nM8 G1 X1 F100\nG2 X2 I0.5 M9\n", kAxes, &errors);
+    const std::optional<Program> p =
+        ProgramParser::parse("T1 M6 G43 H1 M8 (drill)\nG0 Z5", kAxes, &errors);
     QVERIFY2(p, qPrintable(texts(errors).join(QLatin1Char('\n'))));
-    QCOMPARE(p->allBlocks().size(), 3);
-    QCOMPARE(p->allBlocks().at(0).kind, BlockKind::Rapid);
-    QCOMPARE(p->allBlocks().at(0).switchFirst, std::optional<BlockKind>(BlockKind::SpindleOn));
-    QCOMPARE(p->allBlocks().at(0).switchColumn, 21);
-    QCOMPARE(p->allBlocks().at(0).rpm, 12000.0);
-    QCOMPARE(switchBlock(p->allBlocks().at(0)).kind, BlockKind::SpindleOn);
-    QCOMPARE(switchBlock(p->allBlocks().at(0)).columnOf({}), 21);
-    QVERIFY(switchBlock(p->allBlocks().at(0)).axes.isEmpty());
-    QCOMPARE(p->allBlocks().at(1).kind, BlockKind::Feed);
-    QCOMPARE(p->allBlocks().at(1).switchFirst, std::optional<BlockKind>(BlockKind::CoolantFlood));
-    QCOMPARE(p->allBlocks().at(2).kind, BlockKind::ArcClockwise);
-    QCOMPARE(p->allBlocks().at(2).switchFirst, std::optional<BlockKind>(BlockKind::CoolantOff));
-    for (const char* bad : {"M3 M8", "G4 P1 M3", "G0 X1 M3 M8", "G0 X1 M6"}) {
-        QVERIFY2(!ProgramParser::parse(bad, kAxes, &errors), bad);
-        QVERIFY2(errors.first().message.startsWith(QStringLiteral("one action per line")),
-                 qPrintable(errors.first().text()));
-    }
+    const QList<ProgramBlock> blocks = p->allBlocks();
+    QCOMPARE(blocks.size(), 3);
+    QCOMPARE(blocks.at(0).kind, BlockKind::ToolChange);
+    QCOMPARE(blocks.at(0).prompt, QStringLiteral("Load tool 1 (drill)"));
+    QCOMPARE(blocks.at(1).kind, BlockKind::CoolantFlood);
+    for (const ProgramBlock& b : blocks)
+        QCOMPARE(b.lengthTool, 1);
+    QVERIFY(!blocks.at(0).appliesLengthOffset);
+    QVERIFY(blocks.at(1).appliesLengthOffset);
+    QVERIFY(!blocks.at(2).appliesLengthOffset);
+}
+
+// Words LinuxCNC refuses together stay refused, with its reason.
+void TestProgramParserDialect::parse_wholeLine_refusedAsLinuxCNC_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("two spindle words") << "M3 M5"
+                                       << "1:4: M3 and M5 on one line: they are of one modal group";
+    QTest::newRow("coolant off with flood")
+        << "M8 M9"
+        << "1:4: M8 and M9 on one line: they are of one modal group";
+    QTest::newRow("two stops") << "M0 M2"
+                               << "1:4: M0 and M2 on one line: they are of one modal group";
+    QTest::newRow("two outputs") << "M64 P1 M65"
+                                 << "1:8: M64 and M65 on one line: they are of one modal group";
+    QTest::newRow("two motions") << "G0 X1 G1 Y1 F10"
+                                 << "1:7: G0 and G1 on one line: they are of one modal group";
+    QTest::newRow("two of group 0") << "G4 P1 G28"
+                                    << "1:7: G4 and G28 on one line: they are of one modal group";
+    QTest::newRow("G28 beside a move")
+        << "G0 G28 X0"
+        << "1:4: G0 and G28 both take axis words: write them on two lines";
+    QTest::newRow("G92 beside a move")
+        << "G92 X0 G1 Y1 F10"
+        << "1:8: G92 and G1 both take axis words: write them on two lines";
+    QTest::newRow("dwell and an output") << "G4 P1 M64"
+                                         << "1:7: G4 and M64 both take P: write them on two lines";
+    QTest::newRow("five M words") << "T1 M6 M3 M7 M8 M2"
+                                  << "1:16: M2: more than 4 M words on one line (LinuxCNC runs at "
+                                     "most 4)";
+    QTest::newRow("M6 without T") << "M3 M6"
+                                  << "1:4: M6 needs a tool: T on this line or an earlier one";
+    QTest::newRow("a word none takes") << "M5 M9 Q2"
+                                       << "1:7: Q2 is not used by M5";
+}
+
+void TestProgramParserDialect::parse_wholeLine_refusedAsLinuxCNC()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, error);
+    QList<ProgramError> errors;
+    QVERIFY(!ProgramParser::parse(program.toUtf8(), kAxes, &errors));
+    QCOMPARE(texts(errors), QStringList{error});
 }
 
 // G93 (LinuxCNC): F is the move's inverse time and stands on every G1, G2, G3 that moves;

@@ -316,6 +316,7 @@ void TestProgramRunnerMotion::pause_duringArc_holdsBetweenChordsResumeFinishesTh
 // Issue 47, item 1: M2/M30 end with spindle and coolant off, as in LinuxCNC (a Fusion 360
 // post ends "G0 Z15 / M30" with no M5), and the run says "finished" only after the board
 // acknowledged both; a program that just runs out (an MDI line) leaves them as they are.
+// "M5 M9" switch off as the program's end does; without any, the board keeps both on.
 void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only_data()
 {
     QTest::addColumn<QByteArray>("program");
@@ -323,6 +324,12 @@ void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M3
     QTest::newRow("M30 without M5") << QByteArray("M3 S1000\nM8\nG91 G0 X1\nM30\n") << true;
     QTest::newRow("M2 without M5 and M9") << QByteArray("M3 S1000\nM8\nG91 G0 X1\nM2\n") << true;
     QTest::newRow("no program end (an MDI line)") << QByteArray("M3 S1000\nM8\n") << false;
+    // Issue 50: LinuxCNC's whole line: several switches, and M2 after the line's move.
+    QTest::newRow("on one line, M2 after the move")
+        << QByteArray("M8 M3 S1000\nG91 G0 X1 M2\n") << true;
+    QTest::newRow("on one line, then M5 M9")
+        << QByteArray("M3 M8 S1000\nG91 G0 X1\nM5 M9\n") << true;
+    QTest::newRow("on one line (an MDI line)") << QByteArray("M3 M8 S1000\n") << false;
 }
 
 void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M30Only()
@@ -340,6 +347,9 @@ void TestProgramRunnerMotion::end_spindleAndCoolantOn_boardSwitchesThemOffAtM2M3
     QCOMPARE(boardRpm(), switchedOff ? quint32(0) : quint32(1000));
     QCOMPARE(coolant(), !switchedOff);
     QCOMPARE(frameIndex(*m_elab, elab::encode::spindleRpm(0)) >= 0, switchedOff);
+    // The move ran (M2 on its line comes after it) with the spindle on.
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X),
+             program.contains("X1") ? QList<qint64>{400} : QList<qint64>{});
 }
 
 // Issue 47, item 1: STOP during a program's move: the board brakes, then its spindle relay goes
