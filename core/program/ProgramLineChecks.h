@@ -55,6 +55,11 @@ struct Words
 
 struct ModalState;
 
+// A line's words after its N number, [first, last), sorted into *out (ProgramLineWords.cpp);
+// false with *error at the first that does not fit.
+bool sortLineWords(int line, const QStringList& axisNames, const ProgramWord* first,
+                   const ProgramWord* last, Words* out, std::optional<ProgramError>* error);
+
 // The line's modal words into *modal (ProgramLineModes.cpp): (column, message) of the first
 // that does not fit; column 0: none.
 std::pair<int, QString> applyModalWords(Words* words, ModalState* modal);
