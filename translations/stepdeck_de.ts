@@ -3130,6 +3130,10 @@
             <source>must be "table" (G43 takes the tool table's lengths, the default) or "touchOff" (Z is touched off after each tool change)</source>
             <translation>muss "table" (G43 nimmt die Längen der Werkzeugtabelle, Vorgabe) oder "touchOff" (Z wird nach jedem Werkzeugwechsel angetastet) sein</translation>
         </message>
+        <message>
+            <source>must be true (the spindle output drives a laser) or false</source>
+            <translation>muss true (der Spindelausgang steuert einen Laser) oder false sein</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineSetup</name>
@@ -4422,6 +4426,14 @@
         <message>
             <source>F%1 runs at F%2, the highest this move can run at in the contour stream of controller "%3" (%4 ticks/s, one step per tick at most)</source>
             <translation>F%1 läuft mit F%2, dem Höchsten, mit dem diese Bewegung im Konturstrom von Steuerung "%3" laufen kann (%4 Takte/s, höchstens ein Schritt je Takt)</translation>
+        </message>
+        <message>
+            <source>M4 runs as M3 on this laser: the beam's power is S, constant (GRBL's M4 lowers the power where the feed slows; StepDeck's controllers have no such power)</source>
+            <translation>M4 läuft auf diesem Laser als M3: die Leistung des Strahls ist S, gleichbleibend (GRBLs M4 senkt die Leistung, wo der Vorschub langsamer wird; StepDecks Steuerungen haben keine solche Leistung)</translation>
+        </message>
+        <message>
+            <source>S%1 runs at S%2, the laser's full power (the machine file's spindle scale)</source>
+            <translation>S%1 läuft mit S%2, der vollen Leistung des Lasers (Spindelskala der Maschinendatei)</translation>
         </message>
     </context>
     <context>

@@ -272,8 +272,13 @@ QJsonObject MachineDescription::toJson() const
                   {"name", name},
                   {"controllers", controllerList},
                   {"axes", axisList}};
-    if (spindle.maxRpm) // optional: a machine without it writes the file older readers read
-        o.insert("spindle", QJsonObject{{"maxRpm", *spindle.maxRpm}});
+    QJsonObject spindleObject; // optional: a machine without it writes the file older readers read
+    if (spindle.maxRpm)
+        spindleObject.insert("maxRpm", *spindle.maxRpm);
+    if (spindle.laser)
+        spindleObject.insert("laser", true);
+    if (!spindleObject.isEmpty())
+        o.insert("spindle", spindleObject);
     if (!crossControllerFeed) // optional as well: written only where it differs from the default
         o.insert("crossControllerFeed", false);
     if (limits != LimitPolicy::Clamp) // the default: files before issue 50 stay as they were
@@ -303,7 +308,7 @@ bool operator==(const MachineAxis& a, const MachineAxis& b)
 
 bool operator==(const MachineSpindle& a, const MachineSpindle& b)
 {
-    return a.maxRpm == b.maxRpm;
+    return a.maxRpm == b.maxRpm && a.laser == b.laser;
 }
 
 bool operator==(const MachineDescription& a, const MachineDescription& b)

@@ -87,9 +87,14 @@ struct MachineAxis
 // is mapped linearly onto that range (program::ProgramRules::spindleValue), and an S above it
 // runs at maxRpm with a note (a check error with "limits": "refuse", issue 50). Without it, S
 // is sent as written, in the controller's own units.
+//
+// laser (issue 50 item 5; file: "laser": true): the spindle output drives a laser. M4 (GRBL's
+// dynamic power) then runs as M3 with the power S maps to, since no controller of StepDeck's has
+// dynamic power (the check notes it), and the check speaks of S as the beam's power.
 struct MachineSpindle
 {
     std::optional<double> maxRpm; // > 0, finite
+    bool laser = false;
 };
 
 // Where a tool's length comes from (issue 50 item 4; file: "toolLength", docs/programs.md

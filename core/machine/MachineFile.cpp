@@ -189,7 +189,14 @@ bool Reader::readSpindle(const QJsonValue& v, MachineSpindle* s)
     if (!v.isObject())
         return fail("spindle", MachineFile::tr("must be an object {\"maxRpm\": 24000}"));
     const QJsonObject o = v.toObject();
-    return onlyKeys(o, "spindle", {"maxRpm"}) && number(o, "spindle", "maxRpm", &s->maxRpm);
+    if (!onlyKeys(o, "spindle", {"maxRpm", "laser"}) || !number(o, "spindle", "maxRpm", &s->maxRpm))
+        return false;
+    const QJsonValue laser = o.value("laser");
+    if (!laser.isUndefined() && !laser.isBool())
+        return fail("spindle.laser", MachineFile::tr("must be true (the spindle output drives a "
+                                                     "laser) or false"));
+    s->laser = laser.toBool(false);
+    return true;
 }
 
 bool Reader::readController(const QJsonValue& v, const QString& path, MachineController* c)

@@ -216,15 +216,15 @@ bool Checker::axisValues(const MachineAxis& a, const ModelInfo& model, const QSt
 bool Checker::spindle(const MachineDescription& d)
 {
     const std::optional<double>& maxRpm = d.spindle.maxRpm;
-    if (!maxRpm)
+    if (!maxRpm && !d.spindle.laser)
         return true;
-    if (!std::isfinite(*maxRpm) || *maxRpm <= 0)
+    if (maxRpm && (!std::isfinite(*maxRpm) || *maxRpm <= 0))
         return fail(QStringLiteral("spindle.maxRpm"),
                     MachineFile::tr("must be a speed greater than 0 in rpm (is %1)").arg(*maxRpm));
     for (const MachineController& c : d.controllers)
         if (const ModelInfo* model = findModel(c.modelId); model && model->capabilities.spindle)
             return true;
-    return fail(QStringLiteral("spindle.maxRpm"),
+    return fail(maxRpm ? QStringLiteral("spindle.maxRpm") : QStringLiteral("spindle.laser"),
                 MachineFile::tr("no controller of this machine switches a spindle: leave "
                                 "\"spindle\" out"));
 }

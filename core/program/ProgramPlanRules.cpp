@@ -133,11 +133,19 @@ void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
         return; // checkAnyController named it
     const Capabilities caps = m_facts.capabilities.value(controller);
     if (block.kind == BlockKind::SpindleReverse) {
-        if (const QString why = ProgramRules::spindleReverse(caps, controller); !why.isEmpty()) {
+        if (const QString why =
+                ProgramRules::spindleReverse(caps, controller, m_facts.description.spindle);
+            !why.isEmpty()) {
             error(block, block.columnOf({}),
                   [&] { return QStringLiteral("%1: %2").arg(blockWord(block.kind), why); });
             return;
         }
+        if (!caps.spindleReverse) // a laser's (issue 50 item 5)
+            note(block, block.columnOf({}), CheckErrors::kLaserNote, 0, [] {
+                return ProgramCheck::tr("M4 runs as M3 on this laser: the beam's power is S, "
+                                        "constant (GRBL's M4 lowers the power where the feed "
+                                        "slows; StepDeck's controllers have no such power)");
+            });
     }
     const std::optional<double> maxRpm = m_facts.description.spindle.maxRpm;
     const QString why = ProgramRules::spindleSpeed(caps, m_facts.schemas.value(controller), maxRpm,
@@ -147,12 +155,17 @@ void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
               [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });
         return;
     }
-    // Above maxRpm the spindle runs at maxRpm, as GRBL clamps S at $30 (issue 50).
+    // Above maxRpm the spindle runs at maxRpm, as GRBL clamps S at $30 (issue 50); a laser's S
+    // is its power.
     if (const double runs = FeedLimit::spindleRpm(block.rpm, maxRpm); runs < block.rpm)
         note(block, block.columnOf(QStringLiteral("S")), CheckErrors::kSpindleNote, block.rpm, [&] {
-            return ProgramCheck::tr("S%1 runs at S%2, the spindle's maxRpm (the machine file's "
-                                    "spindle scale)")
-                .arg(figure(block.rpm), figure(runs));
+            const QString text =
+                m_facts.description.spindle.laser
+                    ? ProgramCheck::tr("S%1 runs at S%2, the laser's full power (the machine "
+                                       "file's spindle scale)")
+                    : ProgramCheck::tr("S%1 runs at S%2, the spindle's maxRpm (the machine file's "
+                                       "spindle scale)");
+            return text.arg(figure(block.rpm), figure(runs));
         });
 }
 

@@ -80,9 +80,10 @@ QString ProgramRules::spindleSpeed(const Capabilities& caps, const ParameterSche
     return schema.validateScalar(*spec, spindleValue(caps, schema, maxRpm, s));
 }
 
-QString ProgramRules::spindleReverse(const Capabilities& caps, const QString& controller)
+QString ProgramRules::spindleReverse(const Capabilities& caps, const QString& controller,
+                                     const machine::MachineSpindle& spindle)
 {
-    if (caps.spindleReverse)
+    if (caps.spindleReverse || spindle.laser)
         return {};
     return tr("controller \"%1\" cannot reverse its spindle: use M3").arg(controller);
 }

@@ -55,8 +55,10 @@ public:
                                 std::optional<double> maxRpm, double s,
                                 machine::LimitPolicy limits = machine::LimitPolicy::Refuse);
     // M4: why `controller` cannot turn its spindle in reverse (Capabilities::spindleReverse).
-    // Empty: it can.
-    static QString spindleReverse(const Capabilities& caps, const QString& controller);
+    // Empty: it can, or the spindle output drives a laser (MachineSpindle::laser), where M4 is
+    // GRBL's dynamic power and runs as M3 (issue 50 item 5).
+    static QString spindleReverse(const Capabilities& caps, const QString& controller,
+                                  const machine::MachineSpindle& spindle);
 
     // A move on a controller that reports its setup incomplete (MachineStatus::setupIncomplete,
     // E-LAB tmInvSetup) is refused by the device: the parameters to write first

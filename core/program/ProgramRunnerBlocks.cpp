@@ -157,7 +157,8 @@ QString ProgramRunner::spindleRefusal(const ProgramBlock& block, const QString& 
     if (block.kind == BlockKind::SpindleOff)
         return {};
     if (block.kind == BlockKind::SpindleReverse) {
-        if (const QString why = ProgramRules::spindleReverse(s.capabilities(), controller);
+        if (const QString why = ProgramRules::spindleReverse(s.capabilities(), controller,
+                                                             facts.description.spindle);
             !why.isEmpty())
             return why;
     }

@@ -71,7 +71,13 @@ public:
     // per kind and programmed value (a CAM program's F6000 on a thousand lines is one note): at
     // the first line it holds for, counting the further lines (a repeat's next passes are not
     // counted again); message() is called once per note. At most kMaxNotes.
-    enum NoteKind { kContourNote = 1, kRateNote = 2, kInverseTimeNote = 3, kSpindleNote = 4 };
+    enum NoteKind {
+        kContourNote = 1,
+        kRateNote = 2,
+        kInverseTimeNote = 3,
+        kSpindleNote = 4,
+        kLaserNote = 5
+    };
     static constexpr int kMaxNotes = 100;
     template <typename Message>
     void note(int line, int column, NoteKind kind, double value, const Message& message)

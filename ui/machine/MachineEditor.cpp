@@ -170,6 +170,7 @@ void MachineEditor::setMachine(const MachineDescription& machine, const QString&
     m_subroutineFolderPath = machine.subroutineFolderPath;
     m_limits = machine.limits;
     m_toolLength = machine.toolLength;
+    m_spindleLaser = machine.spindle.laser;
     m_reopen->hide(); // another file: offered again once it is saved
     m_name->setText(machine.name);
     m_maxRpm->setText(machine.spindle.maxRpm ? QString::number(*machine.spindle.maxRpm, 'g',
@@ -211,6 +212,7 @@ bool MachineEditor::readMachine(MachineDescription* out, MachineFileError* error
     out->subroutineFolderPath = m_subroutineFolderPath;
     out->limits = m_limits;
     out->toolLength = m_toolLength;
+    out->spindle.laser = m_spindleLaser;
     return m_controllers->read(&out->controllers, error) && m_axes->read(&out->axes, error) &&
            readDecimal(m_maxRpm, QStringLiteral("spindle.maxRpm"), true, &out->spindle.maxRpm,
                        error) &&

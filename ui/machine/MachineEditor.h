@@ -67,6 +67,7 @@ public:
     QString m_subroutineFolderPath;
     machine::LimitPolicy m_limits = machine::LimitPolicy::Clamp;   // "limits" (issue 50)
     machine::ToolLength m_toolLength = machine::ToolLength::Table; // "toolLength" (issue 50)
+    bool m_spindleLaser = false; // "spindle": {"laser"} (issue 50), kept as the file has it
     ControllersTable* controllersTable() const { return m_controllers; }
     AxesTable* axesTable() const { return m_axes; }
     QMessageBox* pendingPrompt() const { return m_prompt.data(); }

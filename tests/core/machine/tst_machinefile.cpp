@@ -195,7 +195,10 @@ void TestMachineFile::parse_invalid_namesTheField_data()
     QTest::newRow("spindle not an object") << withEdit("spindle", 24000) << "spindle"
                                            << "must be an object";
     QTest::newRow("spindle key") << withEdit("spindle.maxRPM", 24000) << "spindle.maxRPM"
-                                 << "unknown key (known: maxRpm)";
+                                 << "unknown key (known: maxRpm, laser)";
+    // Issue 50 item 5: a laser on the spindle output.
+    QTest::newRow("laser text") << withEdit("spindle.laser", "yes") << "spindle.laser"
+                                << "must be true";
     QTest::newRow("maxRpm zero") << withEdit("spindle.maxRpm", 0) << "spindle.maxRpm"
                                  << "must be a speed greater than 0 in rpm (is 0)";
     QTest::newRow("maxRpm negative") << withEdit("spindle.maxRpm", -100) << "spindle.maxRpm"

@@ -190,6 +190,15 @@ void TestMachineFileFormat::spindle_maxRpm_roundTripAndOldFilesUnchanged()
     QVERIFY2(back, qPrintable(error.text()));
     QCOMPARE(back->spindle.maxRpm, 24000.5);
     QVERIFY(*back == *scaled);
+    // Issue 50 item 5: "laser" with the scale, read, written and read back; it counts in equality.
+    const std::optional<MachineDescription> laser = MachineFile::parse(
+        withEdit("spindle", QJsonObject{{"maxRpm", 1000}, {"laser", true}}), &error);
+    QVERIFY2(laser, qPrintable(error.text()));
+    QVERIFY(laser->spindle.laser);
+    QCOMPARE(laser->toJson().value("spindle").toObject(),
+             (QJsonObject{{"maxRpm", 1000}, {"laser", true}}));
+    QVERIFY(!(*laser == *scaled));
+    QVERIFY(!scaled->spindle.laser);
 
     const std::optional<MachineDescription> old =
         MachineFile::parse(bytes(tableAndRotary()), &error);
@@ -354,6 +363,10 @@ void TestMachineFileFormat::spindle_maxRpmWithoutASpindleController_refused()
     QCOMPARE(error.message,
              QStringLiteral("no controller of this machine switches a spindle: leave \"spindle\" "
                             "out"));
+    d.spindle.maxRpm.reset();
+    d.spindle.laser = true; // a laser needs the spindle output as well (issue 50 item 5)
+    QVERIFY(!MachineFile::validate(d, &error));
+    QCOMPARE(error.field, QStringLiteral("spindle.laser"));
     d = MachineDescription::singleController(*findModel("elab"), "sim");
     d.spindle.maxRpm = std::numeric_limits<double>::infinity();
     QVERIFY(!MachineFile::validate(d, &error));

@@ -279,10 +279,11 @@ void TestProgramCheckDialect::check_spindleAboveMaxRpm_refusedAtS()
 
 // Issue 50: by default an S above maxRpm runs at maxRpm, as GRBL clamps S at $30: a note at the
 // S word (programmed S, the S that runs), once per S value, and no error. The controller's own
-// range without a scale stays an error (the E-LAB's 0..1000).
+// range without a scale stays an error (the E-LAB's 0..1000). Issue 50 item 5: on a laser, M4
+// runs as M3 (one note) and S is the beam's power.
 void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote_data()
 {
-    QTest::addColumn<double>("maxRpm"); // 0: none
+    QTest::addColumn<double>("maxRpm"); // 0: none; < 0: a laser's, -maxRpm
     QTest::addColumn<QString>("program");
     QTest::addColumn<QStringList>("notes");
     QTest::addColumn<QStringList>("errors");
@@ -299,6 +300,15 @@ void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote_data
         << 0.0 << "M3 S12000" << QStringList{}
         << QStringList{"1:4: controller \"table\": Spindle speed: value '12000' is out of range "
                        "(allowed: 0..1000 rpm)"};
+    const QString asM3 = "M4 runs as M3 on this laser: the beam's power is S, constant (GRBL's M4 "
+                         "lowers the power where the feed slows; StepDeck's controllers have no "
+                         "such power)";
+    QTest::newRow("a laser: M4 as M3, S as power")
+        << -1000.0 << "M4 S500\nG1 X1 F100\nM5\nM4 S2000"
+        << QStringList{"1:1: " + asM3 + " (also on 1 more line(s))",
+                       "4:4: S2000 runs at S1000, the laser's full power (the machine file's "
+                       "spindle scale)"}
+        << QStringList{};
 }
 
 void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote()
@@ -308,8 +318,9 @@ void TestProgramCheckDialect::check_spindleAboveMaxRpm_runsAtMaxRpmWithNote()
     QFETCH(QStringList, notes);
     QFETCH(QStringList, errors);
     MachineFacts facts = machineFacts("mill");
-    if (maxRpm > 0)
-        facts.description.spindle.maxRpm = maxRpm;
+    if (maxRpm != 0)
+        facts.description.spindle.maxRpm = std::abs(maxRpm);
+    facts.description.spindle.laser = maxRpm < 0;
     facts.knownPositions = positions("X=0");
     const ProgramCheckResult result = ProgramCheck::check(parsed(program, facts), facts);
     QCOMPARE(texts(result.errors), errors);

@@ -269,22 +269,27 @@ void TestProgramRules::spindleValue_maxRpm_mappedOntoTheFullScale()
     QCOMPARE(ProgramRules::spindleValue(info->capabilities, info->schema, scale, rpm), sent);
 }
 
-// M4: no model's capabilities say its spindle can reverse (the E-LAB switches a relay only).
+// M4: no model's capabilities say its spindle can reverse (the E-LAB switches a relay only); on
+// a laser (issue 50 item 5) M4 runs as M3, so nothing refuses it.
 void TestProgramRules::spindleReverse_noModelCanReverse_refusedNamingTheController()
 {
     int spindles = 0;
     for (const ModelInfo& info : models()) {
-        QVERIFY2(!ProgramRules::spindleReverse(info.capabilities, info.id).isEmpty(),
+        QVERIFY2(!ProgramRules::spindleReverse(info.capabilities, info.id, {}).isEmpty(),
                  qPrintable(info.id));
         spindles += info.capabilities.spindle ? 1 : 0;
     }
     QVERIFY(spindles > 0);
     const ModelInfo* elab = findModel(QStringLiteral("elab"));
-    QCOMPARE(ProgramRules::spindleReverse(elab->capabilities, QStringLiteral("table")),
+    QCOMPARE(ProgramRules::spindleReverse(elab->capabilities, QStringLiteral("table"), {}),
              QStringLiteral("controller \"table\" cannot reverse its spindle: use M3"));
+    machine::MachineSpindle laser;
+    laser.laser = true;
+    QCOMPARE(ProgramRules::spindleReverse(elab->capabilities, QStringLiteral("table"), laser),
+             QString());
     Capabilities reversible = elab->capabilities;
     reversible.spindleReverse = true;
-    QCOMPARE(ProgramRules::spindleReverse(reversible, QStringLiteral("table")), QString());
+    QCOMPARE(ProgramRules::spindleReverse(reversible, QStringLiteral("table"), {}), QString());
 }
 
 void TestProgramRules::check_elab_refusesWhatTheRunWould_data()

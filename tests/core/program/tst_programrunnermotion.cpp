@@ -17,7 +17,8 @@ private Q_SLOTS:
     void cleanup() { tearDownRig(); }
     void spindle_maxRpm_boardGetsSMappedOntoItsFullScale();
     void spindle_sOnAnyLine_runningSpindleChangesOffOneWaits();
-    void spindle_m4_refusedNothingSent();
+    void spindle_m4_refusedUnlessALaser_data();
+    void spindle_m4_refusedUnlessALaser();
     void g1_nanotec_rateWrittenBeforeTheMoveFastSpeedPutBackBeforeG0();
     void g1_elab_feedMoveAtItsFeedSpeed();
     void g93_elab_eachAxisItsRateFromItsDistance();
@@ -100,9 +101,34 @@ void TestProgramRunnerMotion::spindle_sOnAnyLine_runningSpindleChangesOffOneWait
 }
 
 // No controller can reverse its spindle (the E-LAB switches a relay): M4 is refused before
-// anything is sent, and the board's spindle stays off.
-void TestProgramRunnerMotion::spindle_m4_refusedNothingSent()
+// anything is sent, and the board's spindle stays off. On a machine whose spindle output drives
+// a laser (issue 50 item 5), M4 (GRBL's dynamic power) runs as M3: the board's spindle output
+// at S (500 of the E-LAB's 0..1000, no scale), and M5 switches the beam off.
+void TestProgramRunnerMotion::spindle_m4_refusedUnlessALaser_data()
 {
+    QTest::addColumn<bool>("laser");
+    QTest::newRow("a spindle") << false;
+    QTest::newRow("a laser") << true;
+}
+
+void TestProgramRunnerMotion::spindle_m4_refusedUnlessALaser()
+{
+    QFETCH(bool, laser);
+    if (laser) {
+        MachineDescription d = description();
+        d.spindle.laser = true;
+        recreateMachine(d);
+        QVERIFY(run("M4 S500\nG91 G0 X1\n"));
+        WAIT_ENDED();
+        VERIFY_STATE(RunState::Finished);
+        QCOMPARE(boardRpm(), quint32(500)); // no M2: the beam stays on, as after an MDI line
+        QCOMPARE(acceptedSteps(*m_elab, Axis::X), QList<qint64>{400});
+        QVERIFY(run("M5\n"));
+        WAIT_ENDED();
+        VERIFY_STATE(RunState::Finished);
+        QCOMPARE(boardRpm(), quint32(0));
+        return;
+    }
     QList<ProgramError> errors;
     const std::optional<Program> p = ProgramParser::parse("M4 S500\n", {"X", "Y", "A"}, &errors);
     QVERIFY(p);

@@ -171,12 +171,15 @@ void TestMachineEditor::spindleMaxRpm_shownTypedAndCleared_inTheMachine()
 
     machine::MachineDescription d = *editor->machine();
     d.spindle.maxRpm = 18000.5;
+    d.spindle.laser = true; // no field of its own (issue 50): kept as the file has it
     editor->setMachine(d);
     QCOMPARE(maxRpm->text(), QStringLiteral("18000.5"));
     QCOMPARE(editor->machine()->spindle.maxRpm, 18000.5);
+    QVERIFY(editor->machine()->spindle.laser);
     typeInto(maxRpm, QString());
     QVERIFY(editor->machine());
     QVERIFY(!editor->machine()->spindle.maxRpm);
+    QVERIFY(editor->machine()->spindle.laser);
 }
 
 // Issue 30: the box shows the file's crossControllerFeed (on without the key) and a click is the
