@@ -301,17 +301,26 @@ private:
         m_stack.removeLast();
     }
 
-    // break/continue: the loop of its label around it; return: its sub.
+    // break/continue: the loop of its label around it; return: its sub, named by the sub's
+    // label or by that of a block of the sub around the return ("o110 return [5]" inside
+    // "o110 if", as LinuxCNC runs it, issue 50 item 9).
     void jumpOut(int i, const NgcStatement& s)
     {
         int found = -1;
+        bool labelled = false; // return: a block around it has its label
         for (qsizetype k = m_stack.size() - 1; k >= 0 && found < 0; --k) {
             const Open& o = m_stack.at(k);
-            if (o.kind == NgcStatement::Sub && s.kind != NgcStatement::Return)
+            labelled = labelled || o.label == s.label;
+            if (s.kind == NgcStatement::Return) {
+                if (o.kind != NgcStatement::Sub)
+                    continue;
+                if (labelled)
+                    found = o.line;
+                break; // subroutines do not nest: the innermost is the one to leave
+            }
+            if (o.kind == NgcStatement::Sub)
                 break; // a loop outside the subroutine is not this one's to leave
-            const bool fits =
-                s.kind == NgcStatement::Return ? o.kind == NgcStatement::Sub : isLoop(o.kind);
-            if (fits && o.label == s.label)
+            if (isLoop(o.kind) && o.label == s.label)
                 found = o.line;
         }
         if (found < 0)

@@ -100,6 +100,12 @@ void TestNgcInterpreter::run_program_givesOutLines_data()
         << "o<f> sub\no<f> return [#1*#1]\nG0 X99\no<f> endsub\no<f> call [3]\nG0 "
            "X#<_value> Y#<_value_returned>"
         << "6:G0 X9 Y1";
+    // Issue 50 item 9: return named by a block of the sub around it (LinuxCNC runs it).
+    QTest::newRow("return with the label of an if or a loop")
+        << "o100 sub\no110 if [#1 GT 5]\no110 return [5]\no110 endif\no120 while [1]\no120 "
+           "return [#1]\no120 endwhile\no100 endsub\no100 call [9]\nG0 X#<_value>\no100 call "
+           "[2]\nG0 Y#<_value>"
+        << "10:G0 X5 | 12:G0 Y2";
     QTest::newRow("recursion within the depth")
         << "o<r> sub\no1 if [#1 GT 0]\nG0 X#1\no<r> call [#1-1]\no1 endif\no<r> endsub\no<r> "
            "call [3]"
@@ -246,6 +252,9 @@ void TestNgcInterpreter::run_brokenProgram_errorAtLine_data()
     QTest::newRow("break to a loop outside the sub")
         << "o2 call\nM2\no1 do\no2 sub\no1 break\no2 endsub\no1 while [0]"
         << "E 5:1 O1 break is outside a loop O1";
+    QTest::newRow("return named by a block outside the sub")
+        << "o1 if [1]\no2 call\no1 endif\no2 sub\no1 return\no2 endsub"
+        << "E 5:1 O1 return is outside O1 sub";
     QTest::newRow("missing =") << "#1 5"
                                << "E 1:5 \"=\" is missing";
 }
