@@ -4767,6 +4767,34 @@
             <source>%1 and %2 both take P: write them on two lines</source>
             <translation>%1 und %2 nehmen beide P: in zwei Zeilen schreiben</translation>
         </message>
+        <message>
+            <source>polar coordinates (@, ^) need the axes X and Y (the machine has %1)</source>
+            <translation>Polarkoordinaten (@, ^) brauchen die Achsen X und Y (die Maschine hat %1)</translation>
+        </message>
+        <message>
+            <source>%1 is not used by %2: polar coordinates give a move's end</source>
+            <translation>%1 wird von %2 nicht verwendet: Polarkoordinaten geben das Ende einer Bewegung an</translation>
+        </message>
+        <message>
+            <source>polar coordinates (@, ^) work in the XY plane (G17) only, as in LinuxCNC</source>
+            <translation>Polarkoordinaten (@, ^) gelten nur in der XY-Ebene (G17), wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>%1 beside polar coordinates (@, ^): give one or the other, as in LinuxCNC</source>
+            <translation>%1 neben Polarkoordinaten (@, ^): eines von beiden angeben, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>polar coordinates (@, ^) are not machine coordinates: not with G53, as in LinuxCNC</source>
+            <translation>Polarkoordinaten (@, ^) sind keine Maschinenkoordinaten: nicht mit G53, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>polar coordinates in G91 add to where the tool stands: not supported; write @ and ^ in G90</source>
+            <translation>Polarkoordinaten in G91 addieren sich zur Stelle, an der das Werkzeug steht: nicht unterstützt; @ und ^ in G90 schreiben</translation>
+        </message>
+        <message>
+            <source>%1 alone takes the other from where the tool stands: not supported; give both @ (the distance) and ^ (the angle)</source>
+            <translation>%1 allein nimmt das andere von der Stelle, an der das Werkzeug steht: nicht unterstützt; beide angeben, @ (den Abstand) und ^ (den Winkel)</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>

@@ -140,7 +140,9 @@ private:
     {
         const QChar c = peek();
         const int letterColumn = column();
-        if (!(c.unicode() < 128 && c.isLetter())) {
+        // "@" and "^": LinuxCNC's polar coordinates (ProgramLine, issue 50 item 6).
+        const bool polar = c == QLatin1Char('@') || c == QLatin1Char('^');
+        if (!polar && !(c.unicode() < 128 && c.isLetter())) {
             fail(letterColumn, ProgramLexer::tr("unexpected character \"%1\"").arg(QString(c)));
             return;
         }

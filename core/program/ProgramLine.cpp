@@ -7,6 +7,20 @@ namespace stepdeck::program {
 
 namespace {
 
+// A polar coordinate's X or Y as the axis word it stands for, at the polar word's column; a
+// value within rounding of 0 is 0 (cos 90 degrees is 6e-17, not 0).
+ProgramWord polarWord(QChar letter, double value, double scale, int column)
+{
+    if (std::fabs(value) < 1e-12 * std::max(1.0, std::fabs(scale)))
+        value = 0;
+    ProgramWord w;
+    w.letter = letter;
+    w.value = value;
+    w.column = column;
+    w.written = (QString(letter) + figure(value)).toStdString();
+    return w;
+}
+
 // G53 (LinuxCNC): the words of this G0 or G1 are machine coordinates, absolute.
 std::pair<int, QString> machineCoordinates(const Words& sorted, const ModalState& modal,
                                            ProgramBlock* b)
@@ -242,6 +256,57 @@ std::optional<ProgramError> lineBlocks(const Words& sorted, const ProgramBlock& 
 
 } // namespace
 
+// LinuxCNC's polar coordinates (issue 50 item 6, docs/programs.md "Polar coordinates"): "@r ^a"
+// is the point X = r cos a, Y = r sin a of the program's coordinates (its origin the work
+// zero), a in degrees from +X, on any move. LinuxCNC also takes "@" or "^" alone (the other
+// from where the tool stands) and G91's increments of both; those depend on the current point,
+// which only the check and the run know, so they are refused with what to write instead.
+std::pair<int, QString> applyPolar(Words* words, const ModalState& modal,
+                                   const QStringList& axisNames)
+{
+    const ProgramWord* r = words->polarRadius;
+    const ProgramWord* a = words->polarAngle;
+    if (!r && !a)
+        return {};
+    const ProgramWord* first = r && a ? (r->column < a->column ? r : a) : (r ? r : a);
+    const auto refuse = [first](const QString& why) { return std::pair{first->column, why}; };
+    if (!axisNames.contains(QStringLiteral("X")) || !axisNames.contains(QStringLiteral("Y")))
+        return refuse(ProgramLine::tr("polar coordinates (@, ^) need the axes X and Y (the "
+                                      "machine has %1)")
+                          .arg(axisNames.join(QStringLiteral(", "))));
+    const std::optional<BlockKind> action = words->action;
+    if (action && action != BlockKind::Rapid && action != BlockKind::Feed && !isArc(*action) &&
+        action != BlockKind::DrillCycle)
+        return refuse(ProgramLine::tr("%1 is not used by %2: polar coordinates give a move's end")
+                          .arg(first->valueText(), words->actionWord->valueText()));
+    if (modal.plane != Plane::XY)
+        return refuse(ProgramLine::tr("polar coordinates (@, ^) work in the XY plane (G17) only, "
+                                      "as in LinuxCNC"));
+    for (const QString& axis : {QStringLiteral("X"), QStringLiteral("Y")})
+        if (const ProgramWord* w = words->axes.value(axis))
+            return {w->column, ProgramLine::tr("%1 beside polar coordinates (@, ^): give one or "
+                                               "the other, as in LinuxCNC")
+                                   .arg(w->valueText())};
+    if (words->machineCoordinates)
+        return refuse(ProgramLine::tr("polar coordinates (@, ^) are not machine coordinates: not "
+                                      "with G53, as in LinuxCNC"));
+    if (modal.relative)
+        return refuse(ProgramLine::tr("polar coordinates in G91 add to where the tool stands: "
+                                      "not supported; write @ and ^ in G90"));
+    if (!r || !a)
+        return refuse(ProgramLine::tr("%1 alone takes the other from where the tool stands: not "
+                                      "supported; give both @ (the distance) and ^ (the angle)")
+                          .arg(first->valueText()));
+    const double angle = a->value * M_PI / 180.0;
+    words->polarXY[0] =
+        polarWord(QLatin1Char('X'), r->value * std::cos(angle), r->value, r->column);
+    words->polarXY[1] =
+        polarWord(QLatin1Char('Y'), r->value * std::sin(angle), r->value, a->column);
+    words->axes.insert(QStringLiteral("X"), &words->polarXY[0]);
+    words->axes.insert(QStringLiteral("Y"), &words->polarXY[1]);
+    return {};
+}
+
 bool ProgramLine::parse(const LexedLine& line, int lineNumber, const QStringList& axisNames,
                         ModalState* modal, std::vector<ProgramBlock>* blocks,
                         std::optional<ProgramError>* error)
@@ -283,6 +348,8 @@ bool ProgramLine::parse(const LexedLine& line, int lineNumber, const QStringList
         return false;
     ModalState next = *modal;
     if (const auto [column, why] = applyModalWords(&sorted, &next); column > 0)
+        return fail(column, why);
+    if (const auto [column, why] = applyPolar(&sorted, next, axisNames); column > 0)
         return fail(column, why);
     ProgramBlock b;
     if (const auto [column, why] = fillBlock(sorted, &next, &b); column > 0)

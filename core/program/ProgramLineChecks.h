@@ -51,6 +51,11 @@ struct Words
     int cycleCode = 0;                               // G81, G82, G83, G73: its number
     WordMap<QChar, const ProgramWord*> parameters;
     WordMap<QString, const ProgramWord*> axes;
+    // LinuxCNC's polar coordinates: "@" the distance from the origin, "^" the angle in degrees
+    // from +X; applyPolar turns them into X and Y (polarXY, which axes then point to).
+    const ProgramWord* polarRadius = nullptr;
+    const ProgramWord* polarAngle = nullptr;
+    ProgramWord polarXY[2];
 };
 
 struct ModalState;
@@ -63,6 +68,11 @@ bool sortLineWords(int line, const QStringList& axisNames, const ProgramWord* fi
 // The line's modal words into *modal (ProgramLineModes.cpp): (column, message) of the first
 // that does not fit; column 0: none.
 std::pair<int, QString> applyModalWords(Words* words, ModalState* modal);
+// "@" and "^" (LinuxCNC's polar coordinates) as the X and Y words they stand for, with the
+// modal state after the line's words (ProgramLine.cpp): (column, message) of a refusal;
+// column 0: none.
+std::pair<int, QString> applyPolar(Words* words, const ModalState& modal,
+                                   const QStringList& axisNames);
 // G81, G82, G83, G73: the cycle's numbers (this line's, or sticky) into block->cycle and
 // *modal (ProgramLineModes.cpp).
 std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, ProgramBlock* block);

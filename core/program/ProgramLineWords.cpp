@@ -142,6 +142,13 @@ private:
             out->tool = &w;
             return {};
         }
+        if (l == QLatin1Char('@') || l == QLatin1Char('^')) {
+            const ProgramWord*& polar = l == QLatin1Char('@') ? out->polarRadius : out->polarAngle;
+            if (polar)
+                return ProgramLine::tr("%1 appears twice on the line").arg(l);
+            polar = &w;
+            return {};
+        }
         if (l == QLatin1Char('N'))
             return ProgramLine::tr("N (a line number) stands only at the start of a line");
         if (l == QLatin1Char('O'))

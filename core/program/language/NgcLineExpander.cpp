@@ -165,7 +165,8 @@ private:
     qsizetype word(qsizetype pos)
     {
         const QChar c = m_line.at(pos);
-        if (!(c.unicode() < 128 && c.isLetter()))
+        const bool polar = c == QLatin1Char('@') || c == QLatin1Char('^'); // ProgramLine
+        if (!polar && !(c.unicode() < 128 && c.isLetter()))
             return fail(pos, tr("unexpected character \"%1\"").arg(c));
         const QChar letter = c.toUpper();
         if (letter == QLatin1Char('O')) // NgcStatement reads it where it stands first

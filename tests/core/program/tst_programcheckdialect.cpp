@@ -57,6 +57,15 @@ void TestProgramCheckDialect::check_coordinates_targetsLimitsAndErrors_data()
         << QStringList{"1:8: X reaches 60 mm in work coordinates, 110 mm in machine coordinates: "
                        "outside the soft limits 0..100 mm (machine)"}
         << 110.0;
+    // Issue 50 item 6: polar coordinates from the work zero, checked and previewed as X and Y.
+    QTest::newRow("polar in G55") << "X=0 Y=0"
+                                  << "1:X=50" << 0 << "G55 G0 @10 ^60" << QStringList{} << 55.0;
+    QTest::newRow("polar past the soft limit")
+        << "X=0 Y=0"
+        << "1:X=50" << 0 << "G55 G0 @60 ^0"
+        << QStringList{"1:8: X reaches 60 mm in work coordinates, 110 mm in machine coordinates: "
+                       "outside the soft limits 0..100 mm (machine)"}
+        << 110.0;
     QTest::newRow("no G5x: the active system")
         << "X=0"
         << "1:X=50" << 1 << "G0 X10" << QStringList{} << 10.0;

@@ -21,6 +21,8 @@ private Q_SLOTS:
     void parse_wholeLine_blocksInExecutionOrder_data();
     void parse_wholeLine_blocksInExecutionOrder();
     void parse_wholeLine_lengthOffsetAfterToolChange();
+    void parse_polar_axisWordsOfThePoint_data();
+    void parse_polar_axisWordsOfThePoint();
     void parse_wholeLine_refusedAsLinuxCNC_data();
     void parse_wholeLine_refusedAsLinuxCNC();
     void parse_inverseTime_fOnEveryG1_data();
@@ -181,6 +183,67 @@ void TestProgramParserDialect::parse_wholeLine_lengthOffsetAfterToolChange()
     QVERIFY(!blocks.at(0).appliesLengthOffset);
     QVERIFY(blocks.at(1).appliesLengthOffset);
     QVERIFY(!blocks.at(2).appliesLengthOffset);
+}
+
+// LinuxCNC's polar coordinates (issue 50 item 6): "@r ^a" is X = r cos a, Y = r sin a, at the
+// columns of @ and ^, on any move in G90 and G17; what depends on where the tool stands (one of
+// the two alone, G91) and what LinuxCNC refuses is refused with what to write instead.
+void TestProgramParserDialect::parse_polar_axisWordsOfThePoint_data()
+{
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("result"); // the last block's X@column Y@column, or the error
+    QTest::newRow("on +X") << "G0 @10 ^0"
+                           << "X10@4 Y0@8";
+    QTest::newRow("a right angle is exactly 0 on X") << "G1 @10 ^90 F100"
+                                                     << "X0@4 Y10@8";
+    QTest::newRow("the angle first, negative") << "G0 ^-45 @2"
+                                               << "X1.414@9 Y-1.414@4";
+    QTest::newRow("with the modal motion and Z") << "G1 F100\n@5 ^180 Z-1"
+                                                 << "X-5@1 Y0@4";
+    QTest::newRow("an arc's end") << "G3 @10 ^90 I-10 J0 F100"
+                                  << "X0@4 Y10@8";
+    QTest::newRow("a drilling cycle's hole") << "G81 @3 ^270 Z-2 R1 F100"
+                                             << "X0@5 Y-3@8";
+    QTest::newRow("one alone")
+        << "G0 @10"
+        << "1:4: @10 alone takes the other from where the tool stands: not supported; "
+           "give both @ (the distance) and ^ (the angle)";
+    QTest::newRow("in G91") << "G91 G0 @1 ^2"
+                            << "1:8: polar coordinates in G91 add to where the tool stands: not "
+                               "supported; write @ and ^ in G90";
+    QTest::newRow("another plane") << "G18 G0 @1 ^2"
+                                   << "1:8: polar coordinates (@, ^) work in the XY plane (G17) "
+                                      "only, as in LinuxCNC";
+    QTest::newRow("beside Y") << "G0 @1 ^2 Y3"
+                              << "1:10: Y3 beside polar coordinates (@, ^): give one or the "
+                                 "other, as in LinuxCNC";
+    QTest::newRow("with G53") << "G53 G0 @1 ^2"
+                              << "1:8: polar coordinates (@, ^) are not machine coordinates: not "
+                                 "with G53, as in LinuxCNC";
+    QTest::newRow("not a move") << "G92 @1 ^2"
+                                << "1:5: @1 is not used by G92: polar coordinates give a move's "
+                                   "end";
+    QTest::newRow("twice") << "G0 @1 ^2 @3"
+                           << "1:10: @ appears twice on the line";
+}
+
+void TestProgramParserDialect::parse_polar_axisWordsOfThePoint()
+{
+    QFETCH(QString, program);
+    QFETCH(QString, result);
+    QList<ProgramError> errors;
+    const std::optional<Program> p = ProgramParser::parse(program.toUtf8(), kAxes, &errors);
+    if (!p) {
+        QCOMPARE(texts(errors).join(QLatin1Char('\n')), result);
+        return;
+    }
+    const ProgramBlock b = p->allBlocks().last();
+    QStringList got;
+    for (const QString& axis : {QStringLiteral("X"), QStringLiteral("Y")})
+        got << QStringLiteral("%1%2@%3")
+                   .arg(axis, figure(b.axes.value(axis)))
+                   .arg(b.columnOf(axis));
+    QCOMPARE(got.join(QLatin1Char(' ')), result);
 }
 
 // Words LinuxCNC refuses together stay refused, with its reason.

@@ -17,6 +17,7 @@ private Q_SLOTS:
     void init() { setUpRig(); }
     void cleanup() { tearDownRig(); }
     void run_homeMovesRepeatDwell_devicesGetTheBlocksInOrder();
+    void polar_boltCircle_boardGetsThePointsOfTheCircle();
     void start_absoluteMoveOnUnknownAxis_refusedNothingSent();
     void startChecked_machineChangedSinceTheCheck_refusedNothingSent_data();
     void startChecked_machineChangedSinceTheCheck_refusedNothingSent();
@@ -42,6 +43,21 @@ private Q_SLOTS:
 // Reference, moves on both controllers, a 3x repeat of a relative move and a dwell: each
 // device accepted exactly these moves, in this order (a block starts only after the previous
 // one arrived, so no two moves overlap on an axis).
+// Issue 50 item 6: LinuxCNC's polar coordinates, "@r ^a" from the work zero (X's at machine
+// 2 mm): three holes of a bolt circle of radius 1 mm at 0, 90 and 180 degrees. At the board
+// (400 steps/mm) from the reference: X to machine 3 (1200); X to 2 and Y to 1 (-400, +400);
+// X to 1 and Y back to 0 (-400, -400).
+void TestProgramRunner::polar_boltCircle_boardGetsThePointsOfTheCircle()
+{
+    m_runner->setWorkOffsets({{QStringLiteral("X"), 2.0}});
+    QVERIFY(run("G28 X0 Y0\nG90 G0 @1 ^0\nG0 @1 ^90\nG0 ^180 @1\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, -400, -400}));
+    QCOMPARE(acceptedSteps(*m_elab, Axis::Y), (QList<qint64>{400, -400}));
+    QVERIFY(still(*m_elab));
+}
+
 void TestProgramRunner::run_homeMovesRepeatDwell_devicesGetTheBlocksInOrder()
 {
     QSignalSpy started(m_runner.get(), &ProgramRunner::blockStarted);

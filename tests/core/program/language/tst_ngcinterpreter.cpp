@@ -106,6 +106,9 @@ void TestNgcInterpreter::run_program_givesOutLines_data()
            "return [#1]\no120 endwhile\no100 endsub\no100 call [9]\nG0 X#<_value>\no100 call "
            "[2]\nG0 Y#<_value>"
         << "10:G0 X5 | 12:G0 Y2";
+    QTest::newRow("polar words take values") // issue 50 item 6
+        << "#<r>=5\nG0 @#<r> ^[45*3]"
+        << "2:G0 @5 ^135";
     QTest::newRow("recursion within the depth")
         << "o<r> sub\no1 if [#1 GT 0]\nG0 X#1\no<r> call [#1-1]\no1 endif\no<r> endsub\no<r> "
            "call [3]"
