@@ -51,6 +51,20 @@ bool startsWithNoCase(QByteArrayView text, const char* prefix)
     return text.size() >= p.size() && text.first(p.size()).compare(p, Qt::CaseInsensitive) == 0;
 }
 
+// GRBL's "$" lines as NgcLineExpander and the parser find them: "$" the first character that
+// is not white space (QString::trimmed's: ASCII's, and Unicode's past ASCII).
+bool dollarLine(QByteArrayView line)
+{
+    for (const char c : line) {
+        if (c == ' ' || (c >= '\t' && c <= '\r'))
+            continue;
+        if (uchar(c) >= 0x80)
+            return QString::fromUtf8(line).trimmed().startsWith(QLatin1Char('$'));
+        return c == '$';
+    }
+    return false;
+}
+
 // One line: does it use the language?
 bool lineUsesLanguage(QByteArrayView line)
 {
@@ -64,7 +78,7 @@ bool lineUsesLanguage(QByteArrayView line)
     }
     // GRBL's system commands ("$#" its parameter report, "$32=1") are not G-code: they go to
     // the parser as written (NgcLineExpander), which runs "$H" and names the others.
-    if (i < line.size() && line[i] == '$')
+    if (dollarLine(line.sliced(i)))
         return false;
     // An O word first (after an N number): anything but repeat/endrepeat is the language.
     qsizetype o = i;

@@ -69,6 +69,7 @@ void TestProgramExpansion::usesLanguage_text_detected_data()
     QTest::newRow("GRBL $ lines") << "$H\n$32=1\nG0 X1" << false;
     // GRBL's parameter report is no parameter of the language (found by fuzzing).
     QTest::newRow("GRBL $# report") << "$#\n$[x]\nG0 X1" << false;
+    QTest::newRow("GRBL $ after white space of any kind") << "\r $\r0[\f\n\xC2\xA0$[1]" << false;
     QTest::newRow("repeat by an expression") << "O1 repeat [2*3]\nO1 endrepeat" << true;
     QTest::newRow("# in a comment") << "G0 X1 (part #3)\n; #4 here" << false;
     QTest::newRow("[ in a comment") << "(see [1])" << false;
