@@ -4795,6 +4795,98 @@
             <source>%1 alone takes the other from where the tool stands: not supported; give both @ (the distance) and ^ (the angle)</source>
             <translation>%1 allein nimmt das andere von der Stelle, an der das Werkzeug steht: nicht unterstützt; beide angeben, @ (den Abstand) und ^ (den Winkel)</translation>
         </message>
+        <message>
+            <source>%1 (a spline or NURBS curve) is not supported: let the CAM post write lines and arcs (G1, G2, G3)</source>
+            <translation>%1 (eine Spline- oder NURBS-Kurve) wird nicht unterstützt: den CAM-Postprozessor Geraden und Bögen schreiben lassen (G1, G2, G3)</translation>
+        </message>
+        <message>
+            <source>%1 (a lathe's diameter or radius mode) is not supported: StepDeck drives mills, routers, lasers and plotters</source>
+            <translation>%1 (Durchmesser- oder Radiusmodus einer Drehmaschine) wird nicht unterstützt: StepDeck steuert Fräsen, Portalfräsen, Laser und Plotter</translation>
+        </message>
+        <message>
+            <source>%1 (a circular pocket of some controllers) is not supported: let the CAM post write the pocket's arcs (G2, G3)</source>
+            <translation>%1 (eine Kreistasche mancher Steuerungen) wird nicht unterstützt: den CAM-Postprozessor die Bögen der Tasche schreiben lassen (G2, G3)</translation>
+        </message>
+        <message>
+            <source>%1 (Fanuc's polar coordinates) is not supported: write LinuxCNC's @ (the distance) and ^ (the angle)</source>
+            <translation>%1 (Fanucs Polarkoordinaten) wird nicht unterstützt: LinuxCNCs @ (den Abstand) und ^ (den Winkel) schreiben</translation>
+        </message>
+        <message>
+            <source>%1 (a stored position) is not supported: StepDeck's G28 references the axes; go to a machine position with G53 G0</source>
+            <translation>%1 (eine gespeicherte Position) wird nicht unterstützt: StepDecks G28 referenziert die Achsen; eine Maschinenposition mit G53 G0 anfahren</translation>
+        </message>
+        <message>
+            <source>%1 (threading with the spindle) is not supported: no controller of StepDeck's reads its spindle's revolutions</source>
+            <translation>%1 (Gewindeschneiden mit der Spindel) wird nicht unterstützt: keine Steuerung von StepDeck liest die Umdrehungen ihrer Spindel</translation>
+        </message>
+        <message>
+            <source>%1 (a probing move) is not supported: no controller of StepDeck's has a probe input; touch off by hand (the DRO's Zero) or with G10 L20</source>
+            <translation>%1 (eine Antastbewegung) wird nicht unterstützt: keine Steuerung von StepDeck hat einen Tastereingang; von Hand antasten (Null in der Positionsanzeige) oder mit G10 L20</translation>
+        </message>
+        <message>
+            <source>%1 (a tool length written in the program) is not supported: G43 H takes the tool table's length, or touch off Z (the machine file's "toolLength": "touchOff")</source>
+            <translation>%1 (eine im Programm geschriebene Werkzeuglänge) wird nicht unterstützt: G43 H nimmt die Länge aus der Werkzeugtabelle, oder Z antasten ("toolLength": "touchOff" der Maschinendatei)</translation>
+        </message>
+        <message>
+            <source>%1 (a local offset) is not supported: use G92 or a coordinate system (G10 L2, G54 to G59)</source>
+            <translation>%1 (eine lokale Verschiebung) wird nicht unterstützt: G92 oder ein Koordinatensystem verwenden (G10 L2, G54 bis G59)</translation>
+        </message>
+        <message>
+            <source>%1 (a rotated coordinate system) is not supported: let the CAM post rotate the path</source>
+            <translation>%1 (ein gedrehtes Koordinatensystem) wird nicht unterstützt: den CAM-Postprozessor die Bahn drehen lassen</translation>
+        </message>
+        <message>
+            <source>%1 (a lathe cycle in LinuxCNC, inch or millimetre mode in old Fanuc programs) is not supported: write G20 (inch) or G21 (mm) for the units</source>
+            <translation>%1 (ein Drehzyklus in LinuxCNC, Zoll- oder Millimetermodus in alten Fanuc-Programmen) wird nicht unterstützt: für die Einheiten G20 (Zoll) oder G21 (mm) schreiben</translation>
+        </message>
+        <message>
+            <source>%1 (a tapping cycle) is not supported: no controller of StepDeck's turns its spindle with the feed; G81, G82, G83 and G73 are</source>
+            <translation>%1 (ein Gewindebohrzyklus) wird nicht unterstützt: keine Steuerung von StepDeck dreht ihre Spindel mit dem Vorschub; G81, G82, G83 und G73 werden unterstützt</translation>
+        </message>
+        <message>
+            <source>%1 (a boring cycle) is not supported: write the holes with G81, or G82 for a dwell at the bottom</source>
+            <translation>%1 (ein Ausdrehzyklus) wird nicht unterstützt: die Bohrungen mit G81 schreiben, oder mit G82 für eine Verweilzeit am Grund</translation>
+        </message>
+        <message>
+            <source>%1 (constant surface speed, a lathe's) is not supported: S is the spindle's rpm (G97)</source>
+            <translation>%1 (konstante Schnittgeschwindigkeit, die einer Drehmaschine) wird nicht unterstützt: S ist die Drehzahl der Spindel (G97)</translation>
+        </message>
+        <message>
+            <source>%1 is a 3D printer's word (temperatures, fans, the extruder): not one of machine control; leave it out, or slice for a printer</source>
+            <translation>%1 ist ein Wort eines 3D-Druckers (Temperaturen, Lüfter, Extruder): keines der Maschinensteuerung; weglassen oder für einen Drucker slicen</translation>
+        </message>
+        <message>
+            <source>%1 (orienting the spindle) is not supported: no controller of StepDeck's can</source>
+            <translation>%1 (die Spindel ausrichten) wird nicht unterstützt: keine Steuerung von StepDeck kann das</translation>
+        </message>
+        <message>
+            <source>%1 (switching the overrides) is not supported: the feed override is always the operator's</source>
+            <translation>%1 (die Overrides schalten) wird nicht unterstützt: der Vorschub-Override liegt immer beim Bediener</translation>
+        </message>
+        <message>
+            <source>%1 (a pallet change) is not supported: write M0 to hold for the operator</source>
+            <translation>%1 (ein Palettenwechsel) wird nicht unterstützt: M0 schreiben, um für den Bediener anzuhalten</translation>
+        </message>
+        <message>
+            <source>%1 (the loaded tool set without a change) is not supported: write T&lt;n&gt; M6</source>
+            <translation>%1 (das geladene Werkzeug ohne Wechsel setzen) wird nicht unterstützt: T&lt;n&gt; M6 schreiben</translation>
+        </message>
+        <message>
+            <source>%1 (an output switched with the next move) is not supported: M64 and M65 switch it at once</source>
+            <translation>%1 (ein mit der nächsten Bewegung geschalteter Ausgang) wird nicht unterstützt: M64 und M65 schalten ihn sofort</translation>
+        </message>
+        <message>
+            <source>%1 (an analog output) is not supported: StepDeck's controllers have digital outputs (M64, M65)</source>
+            <translation>%1 (ein Analogausgang) wird nicht unterstützt: StepDecks Steuerungen haben digitale Ausgänge (M64, M65)</translation>
+        </message>
+        <message>
+            <source>%1 (saving or restoring the modal state) is not supported: set the modes again where they change</source>
+            <translation>%1 (den modalen Zustand sichern oder wiederherstellen) wird nicht unterstützt: die Modi dort neu setzen, wo sie sich ändern</translation>
+        </message>
+        <message>
+            <source>%1 (a user-defined M code, a program of a LinuxCNC configuration) is not supported</source>
+            <translation>%1 (ein benutzerdefinierter M-Code, ein Programm einer LinuxCNC-Konfiguration) wird nicht unterstützt</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramParser</name>

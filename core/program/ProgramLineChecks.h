@@ -60,6 +60,10 @@ struct Words
 
 struct ModalState;
 
+// Why a G or M word (its code in tenths) is not run: what it is and what to write instead,
+// where StepDeck knows the word (ProgramLineUnsupported.cpp); "G38.2 is not supported" else.
+QString unsupportedWord(const ProgramWord& word, int tenths);
+
 // A line's words after its N number, [first, last), sorted into *out (ProgramLineWords.cpp);
 // false with *error at the first that does not fit.
 bool sortLineWords(int line, const QStringList& axisNames, const ProgramWord* first,

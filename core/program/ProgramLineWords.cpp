@@ -180,7 +180,7 @@ private:
                                              : BlockKind::AxisOffsetRestore,
                              w, out);
         if (tenths % 10 != 0)
-            return ProgramLine::tr("%1 is not supported").arg(w.valueText());
+            return unsupportedWord(w, tenths);
         const int code = tenths / 10;
         if (g && (code == 90 || code == 91)) {
             if (out->relative)
@@ -201,7 +201,7 @@ private:
                                    "call")
                 .arg(w.valueText());
         if (!action)
-            return ProgramLine::tr("%1 is not supported").arg(w.valueText());
+            return unsupportedWord(w, tenths);
         if (action == BlockKind::DrillCycle)
             out->cycleCode = code;
         return setAction(*action, w, out);
@@ -313,7 +313,7 @@ private:
         const std::optional<int> group = modalGroupOf(tenths);
         if (!group)
             return std::nullopt;
-        if (const QString why = refusalOf(tenths); !why.isEmpty())
+        if (const QString why = refusalOf(tenths, w); !why.isEmpty())
             return why;
         if (const ProgramWord* other = out->groups.value(*group))
             return twoOfOneGroup(other, w);
@@ -387,6 +387,9 @@ private:
         case 940:
         case 950:
             return 5;
+        case 960:
+        case 970:
+            return 14; // G97 (rpm, LinuxCNC's default) is StepDeck's only spindle mode
         case 400:
         case 410:
         case 420:
@@ -407,7 +410,7 @@ private:
     }
 
     // Modes of those groups that StepDeck does not run, with what to do instead.
-    static QString refusalOf(int tenths)
+    static QString refusalOf(int tenths, const ProgramWord& w)
     {
         switch (tenths) {
         case 410:
@@ -418,6 +421,8 @@ private:
         case 950:
             return ProgramLine::tr("G95 (feed per revolution) is not supported: no controller "
                                    "reports its spindle's revolutions; use G94");
+        case 960:
+            return unsupportedWord(w, tenths);
         default:
             return {};
         }

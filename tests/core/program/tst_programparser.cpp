@@ -179,8 +179,32 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
 {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("error"); // "line:column: message" starts with this
-    QTest::newRow("unknown G") << "G0 X1\nG5 X1 Y1"
-                               << "2:1: G5 is not supported";
+    QTest::newRow("unknown G") << "G0 X1\nG12.5 X1 Y1"
+                               << "2:1: G12.5 is not supported";
+    // Issue 50: what StepDeck knows it does not run is named with what to do instead.
+    QTest::newRow("a spline") << "G0 X1\nG5 X1 Y1"
+                              << "2:1: G5 (a spline or NURBS curve) is not supported: let the CAM "
+                                 "post write lines and arcs (G1, G2, G3)";
+    QTest::newRow("probing") << "G38.2 Z-5 F10"
+                             << "1:1: G38.2 (a probing move) is not supported: no controller of "
+                                "StepDeck's has a probe input";
+    QTest::newRow("tapping") << "G84 Z-1 R1 F10"
+                             << "1:1: G84 (a tapping cycle) is not supported";
+    QTest::newRow("boring")
+        << "G85 Z-1 R1 F10"
+        << "1:1: G85 (a boring cycle) is not supported: write the holes with G81";
+    QTest::newRow("threading") << "G76 P1 Z-1"
+                               << "1:1: G76 (threading with the spindle) is not supported";
+    QTest::newRow("a lathe's surface speed") << "G96 S100"
+                                             << "1:1: G96 (constant surface speed, a lathe's) is "
+                                                "not supported: S is the spindle's rpm (G97)";
+    QTest::newRow("a 3D printer's temperature") << "M104 S200"
+                                                << "1:1: M104 is a 3D printer's word";
+    QTest::newRow("a user M code") << "M101"
+                                   << "1:1: M101 (a user-defined M code";
+    QTest::newRow("synchronized output") << "M62 P1"
+                                         << "1:1: M62 (an output switched with the next move) is "
+                                            "not supported: M64 and M65 switch it at once";
     QTest::newRow("G54 and G55") << "G54 G55"
                                  << "1:5: G54 and G55 on one line: they are of one modal group";
     QTest::newRow("G59.1") << "G59.1"
@@ -241,8 +265,10 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                << "1:7: I1 is not used by G1";
     QTest::newRow("arc plus G0") << "G0 G2 X1 I1 F10"
                                  << "1:4: G0 and G2 on one line: they are of one modal group";
-    QTest::newRow("unknown M") << "M19"
-                               << "1:1: M19 is not supported";
+    QTest::newRow("unknown M") << "M18"
+                               << "1:1: M18 is not supported";
+    QTest::newRow("spindle orientation") << "M19"
+                                         << "1:1: M19 (orienting the spindle) is not supported";
     QTest::newRow("M6 without T") << "G0 X1\nM6"
                                   << "2:1: M6 needs a tool: T on this line or an earlier one";
     QTest::newRow("T fraction") << "T1.5 M6"
@@ -356,7 +382,8 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
     QTest::newRow("H fraction") << "G43 H1.5"
                                 << "1:5: H1.5: H takes a tool number, whole, 0..99999";
     QTest::newRow("G43.1") << "G43.1 Z1"
-                           << "1:1: G43.1 is not supported";
+                           << "1:1: G43.1 (a tool length written in the program) is not "
+                              "supported";
     QTest::newRow("G95") << "G95"
                          << "1:1: G95 (feed per revolution) is not supported";
     QTest::newRow("G64 P negative") << "G64 P-0.1"

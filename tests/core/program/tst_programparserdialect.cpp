@@ -45,6 +45,10 @@ void TestProgramParserDialect::parse_modalGroups_stateOnEveryBlock_data()
                                                "XY exact-stop -", "XY blend 0.02",
                                                "XY blend 0.02",   "XY blend -",
                                                "XY blend -"};
+    // Issue 50: G97 (rpm, LinuxCNC's default; Fanuc-style posts write "G97 S10000 M3") is the
+    // spindle mode StepDeck runs in: accepted, nothing changes.
+    QTest::newRow("G97 with S and M3")
+        << "G97 S10000 M3\nG0 X1" << QStringList{"XY blend -", "XY blend -"};
 }
 
 void TestProgramParserDialect::parse_modalGroups_stateOnEveryBlock()
