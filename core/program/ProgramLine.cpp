@@ -134,45 +134,6 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->pathTolerance = modal.pathTolerance;
 }
 
-// LinuxCNC's order of execution (docs/programs.md "Several words on one line"): where an
-// action of a line runs among the others (its step in LinuxCNC's table).
-int executionStep(BlockKind kind)
-{
-    switch (kind) {
-    case BlockKind::SpindleSpeed:
-        return 5;
-    case BlockKind::OutputOn:
-    case BlockKind::OutputOff:
-    case BlockKind::WaitInput:
-        return 7;
-    case BlockKind::ToolChange:
-        return 8;
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-    case BlockKind::SpindleOff:
-        return 9;
-    case BlockKind::CoolantMist:
-    case BlockKind::CoolantFlood:
-    case BlockKind::CoolantOff:
-        return 11;
-    case BlockKind::Dwell:
-        return 14;
-    case BlockKind::Home:
-    case BlockKind::SetCoordinates:
-    case BlockKind::AxisOffset:
-    case BlockKind::AxisOffsetReset:
-    case BlockKind::AxisOffsetSuspend:
-    case BlockKind::AxisOffsetRestore:
-        return 23;
-    case BlockKind::Pause:
-    case BlockKind::OptionalPause:
-    case BlockKind::End:
-        return 25;
-    default: // the motion, or modal words only
-        return 24;
-    }
-}
-
 bool isSpindleSwitch(BlockKind kind)
 {
     return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
@@ -239,7 +200,7 @@ std::optional<ProgramError> lineBlocks(const Words& sorted, const ProgramBlock& 
         blocks->push_back(main);
     std::stable_sort(blocks->begin(), blocks->end(),
                      [](const ProgramBlock& x, const ProgramBlock& y) {
-                         return executionStep(x.kind) < executionStep(y.kind);
+                         return actionRole(x.kind).step < actionRole(y.kind).step;
                      });
     for (ProgramBlock& each : *blocks)
         each.spindleChange = false;

@@ -60,6 +60,17 @@ struct Words
 
 struct ModalState;
 
+// An action's place in LinuxCNC's tables (issue 50, docs/programs.md "Several words on one
+// line"): its modal group (G: 0 non-modal, 1 motion; M: 4 stopping, 5 inputs and outputs,
+// 6 tool change, 7 spindle, 8 coolant, offset by 100 so that they meet no G group; -1: none)
+// and its step in LinuxCNC's order of execution.
+struct ActionRole
+{
+    int group = -1;
+    int step = 24;
+};
+ActionRole actionRole(BlockKind kind);
+
 // Why a G or M word (its code in tenths) is not run: what it is and what to write instead,
 // where StepDeck knows the word (ProgramLineUnsupported.cpp); "G38.2 is not supported" else.
 QString unsupportedWord(const ProgramWord& word, int tenths);

@@ -218,13 +218,13 @@ private:
                                    "%2)")
                 .arg(w.valueText())
                 .arg(kMaxMWords);
-        const int group = groupOf(action);
+        const int group = actionRole(action).group;
         const auto clashes = [&](BlockKind other) {
             const bool mistAndFlood =
                 other != action &&
                 (other == BlockKind::CoolantMist || other == BlockKind::CoolantFlood) &&
                 (action == BlockKind::CoolantMist || action == BlockKind::CoolantFlood);
-            return groupOf(other) == group && !mistAndFlood;
+            return actionRole(other).group == group && !mistAndFlood;
         };
         if (out->action && clashes(*out->action))
             return twoOfOneGroup(out->actionWord, w);
@@ -257,35 +257,6 @@ private:
             out->others << LineAction{action, &w};
         }
         return {};
-    }
-
-    // The modal group of an action as LinuxCNC groups its words (G: 0 non-modal, 1 motion;
-    // M: 4 stopping, 5 inputs and outputs, 6 tool change, 7 spindle, 8 coolant), M's offset by
-    // 100 so that they meet no G group.
-    static int groupOf(BlockKind kind)
-    {
-        switch (kind) {
-        case BlockKind::Pause:
-        case BlockKind::OptionalPause:
-        case BlockKind::End:
-            return 104;
-        case BlockKind::OutputOn:
-        case BlockKind::OutputOff:
-        case BlockKind::WaitInput:
-            return 105;
-        case BlockKind::ToolChange:
-            return 106;
-        case BlockKind::SpindleOn:
-        case BlockKind::SpindleReverse:
-        case BlockKind::SpindleOff:
-            return 107;
-        case BlockKind::CoolantMist:
-        case BlockKind::CoolantFlood:
-        case BlockKind::CoolantOff:
-            return 108;
-        default:
-            return isMotion(kind) ? kMotionGroup : 0;
-        }
     }
 
     static bool takesAxisWords(BlockKind kind)
@@ -448,6 +419,49 @@ private:
     const QStringList& m_axisNames;
 };
 } // namespace
+
+ActionRole actionRole(BlockKind kind)
+{
+    switch (kind) {
+    case BlockKind::SpindleSpeed: // S, no action word
+        return {-1, 5};
+    case BlockKind::OutputOn:
+    case BlockKind::OutputOff:
+    case BlockKind::WaitInput:
+        return {105, 7};
+    case BlockKind::ToolChange:
+        return {106, 8};
+    case BlockKind::SpindleOn:
+    case BlockKind::SpindleReverse:
+    case BlockKind::SpindleOff:
+        return {107, 9};
+    case BlockKind::CoolantMist:
+    case BlockKind::CoolantFlood:
+    case BlockKind::CoolantOff:
+        return {108, 11};
+    case BlockKind::Dwell:
+        return {0, 14};
+    case BlockKind::Home:
+    case BlockKind::SetCoordinates:
+    case BlockKind::AxisOffset:
+    case BlockKind::AxisOffsetReset:
+    case BlockKind::AxisOffsetSuspend:
+    case BlockKind::AxisOffsetRestore:
+        return {0, 23};
+    case BlockKind::Rapid:
+    case BlockKind::Feed:
+    case BlockKind::ArcClockwise:
+    case BlockKind::ArcCounterClockwise:
+    case BlockKind::DrillCycle:
+        return {1, 24};
+    case BlockKind::Pause:
+    case BlockKind::OptionalPause:
+    case BlockKind::End:
+        return {104, 25};
+    default: // modal words only, repeats: no action word
+        return {-1, 24};
+    }
+}
 
 bool sortLineWords(int line, const QStringList& axisNames, const ProgramWord* first,
                    const ProgramWord* last, Words* out, std::optional<ProgramError>* error)
