@@ -144,8 +144,9 @@ QString unsupportedM(int code)
 QString unsupportedWord(const ProgramWord& word, int tenths)
 {
     const bool g = word.letter == QLatin1Char('G');
-    const QString why =
-        g ? unsupportedG(tenths) : tenths % 10 == 0 ? unsupportedM(tenths / 10) : QString();
+    const QString why = g                  ? unsupportedG(tenths)
+                        : tenths % 10 == 0 ? unsupportedM(tenths / 10)
+                                           : QString();
     return why.isEmpty() ? ProgramLine::tr("%1 is not supported").arg(word.valueText())
                          : why.arg(word.valueText());
 }
