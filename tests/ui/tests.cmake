@@ -1,5 +1,5 @@
 # GUI tests (offscreen) against the in-process simulator through ControllerSession.
-set(_ui_test_support ${CMAKE_CURRENT_LIST_DIR}/UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/FakeGamepadDevice.h)
+set(_ui_test_support ${CMAKE_CURRENT_LIST_DIR}/UiTestSupport.h)
 foreach(_t tst_jogpanel tst_setuppage tst_gamepadjog tst_trafficconsole tst_statuspanel
            tst_referencepanel tst_chartspanel tst_translations)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp ${_ui_test_support}

@@ -1,5 +1,5 @@
 # The main window on an EMIS SMC-IC4 (in-process simulator).
 stepdeck_add_test(tst_emismainwindow SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emismainwindow.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
                   LABELS ui LIBS stepdeck_ui)
 target_include_directories(tst_emismainwindow PRIVATE ${CMAKE_CURRENT_LIST_DIR}/..)

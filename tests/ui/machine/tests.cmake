@@ -1,17 +1,17 @@
 # The machine editor and the File menu's machine actions (issue 19).
 stepdeck_add_test(tst_machineeditor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineeditor.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 target_compile_definitions(tst_machineeditor PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 stepdeck_add_test(tst_machineeditorfiles SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineeditorfiles.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 target_compile_definitions(tst_machineeditorfiles PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 stepdeck_add_test(tst_machinefileactions SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefileactions.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 target_compile_definitions(tst_machinefileactions PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The main window running a machine of several controllers (issue 19, ui/machine/): an E-LAB
@@ -21,7 +21,7 @@ foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machin
   stepdeck_add_test(${_test} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_test}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/MachineWindowRig.h ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
-                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                     ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
@@ -34,7 +34,7 @@ stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_m
 # against the in-process simulator.
 foreach(_test tst_machinedro tst_machinegoto tst_machinecontrol)
   stepdeck_add_test(${_test} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_test}.cpp
-                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
 # The read-out's estimate of a positioning move without position read-back (pure).

@@ -12,7 +12,7 @@ foreach(_t tst_programpage tst_programpagerun tst_mdiline tst_programerrors)
                     ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
                     ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
-                    ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+
                     ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
@@ -21,7 +21,7 @@ endforeach()
 stepdeck_add_test(tst_programpagelarge SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpagelarge.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui TIMEOUT 300)
 # The preview's path (issue 29): the views' projections, the zoom and pan arithmetic, the scene
 # drawn from a preview, and the widget with its mouse, keys, colours and remembered view.

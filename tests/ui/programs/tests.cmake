@@ -1,5 +1,5 @@
 # The input-program editor (EMIS SMC-IC4) against the in-process simulator.
 stepdeck_add_test(tst_inputprogramspage SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_inputprogramspage.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
                   LABELS ui LIBS stepdeck_ui)
 target_include_directories(tst_inputprogramspage PRIVATE ${CMAKE_CURRENT_LIST_DIR}/..)

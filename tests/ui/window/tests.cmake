@@ -1,13 +1,13 @@
 # The main window (ui/window/).
 # Main window: fits ordinary screens (issue 11).
 stepdeck_add_test(tst_windowfit SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_windowfit.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 # Issue 16: on a 1366x768 screen a long message moves nothing, the window stays on the screen,
 # and safety texts, DRO rows and status lamps show in full (every model, English and German).
 stepdeck_add_test(tst_layoutholdsstill SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_layoutholdsstill.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+
                   LABELS ui LIBS stepdeck_ui)
 # Issue 16: a window whose layout minimum grows stays on its screen.
 stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbound.cpp
@@ -15,15 +15,15 @@ stepdeck_add_test(tst_screenbound SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_screenbo
 # Issue 28: the Simulator menu sets the inputs the simulated machine drives.
 stepdeck_add_test(tst_simulatormenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simulatormenu.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
-                  ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+
                   LABELS ui LIBS stepdeck_ui)
 # Issue 31 (safety): the click that closes a menu does not reach the window under it.
 stepdeck_add_test(tst_menuclickthrough SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_menuclickthrough.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 # Issue 31 (a finding): Help lists the keyboard shortcuts and the command line's usage.
 stepdeck_add_test(tst_helpmenu SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_helpmenu.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 # Issue 31: the Run and Setup workspaces on a 1366x768 screen with a machine of two controllers
 # on pseudo-terminals, and the Run workspace's fit on a 1920x1080 screen. Issue 47 item 13: the
@@ -33,7 +33,7 @@ set(_workspaces_sources ${CMAKE_CURRENT_LIST_DIR}/tst_workspaces.cpp
     ${CMAKE_CURRENT_LIST_DIR}/../machine/MachineWindowRig.h
     ${CMAKE_CURRENT_LIST_DIR}/../LaptopScreen.h ${CMAKE_CURRENT_LIST_DIR}/../LayoutChecks.h
     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
-    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h)
+    ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h)
 stepdeck_add_test(tst_workspaces SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui)
 stepdeck_add_test(tst_workspaces_fullhd SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui
                   SPLIT run_onTheScreen_noScrollBarNoTextCut
@@ -41,10 +41,10 @@ stepdeck_add_test(tst_workspaces_fullhd SOURCES ${_workspaces_sources} LABELS ui
 target_compile_definitions(tst_workspaces_fullhd PRIVATE STEPDECK_FULL_HD)
 # Issue 31: the built-in demo that tools/run opens.
 stepdeck_add_test(tst_demomachine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_demomachine.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
 # Issue 47, item 6 (safety): the keys of actions that move the machine or change its link do
 # not fire from a text field (program editor, MDI line, a form); STOP and PANIC still do.
 stepdeck_add_test(tst_machineshortcuts SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineshortcuts.cpp
-                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h ${CMAKE_CURRENT_LIST_DIR}/../FakeGamepadDevice.h
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
