@@ -9027,6 +9027,30 @@ hält die Steuerung nicht an</translation>
             <source>No connected controller of this machine has coolant</source>
             <translation>Keine verbundene Steuerung dieser Maschine hat Kühlmittel</translation>
         </message>
+        <message>
+            <source>Laser on</source>
+            <translation>Laser ein</translation>
+        </message>
+        <message>
+            <source>Laser off</source>
+            <translation>Laser aus</translation>
+        </message>
+        <message>
+            <source>Laser: unknown</source>
+            <translation>Laser: unbekannt</translation>
+        </message>
+        <message>
+            <source>Laser: on</source>
+            <translation>Laser: ein</translation>
+        </message>
+        <message>
+            <source>Laser: off</source>
+            <translation>Laser: aus</translation>
+        </message>
+        <message>
+            <source>The power the laser switch turns the beam on at, as a program's M3 S</source>
+            <translation>Die Leistung, mit der der Laserschalter den Strahl einschaltet, wie das M3 S eines Programms</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::StatusPanel</name>

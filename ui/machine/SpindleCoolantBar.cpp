@@ -47,13 +47,15 @@ SpindleCoolantBar::SpindleCoolantBar(MachineContext* context, QWidget* parent)
     const QFontMetrics fm = fontMetrics();
     const int onOff =
         std::max({fm.horizontalAdvance(tr("Spindle on")), fm.horizontalAdvance(tr("Spindle off")),
+                  fm.horizontalAdvance(tr("Laser on")), fm.horizontalAdvance(tr("Laser off")),
                   fm.horizontalAdvance(tr("Coolant on")),
                   fm.horizontalAdvance(tr("Coolant off"))}) +
         24;
     m_spindleSwitch->setFixedWidth(onOff);
     m_coolantSwitch->setFixedWidth(onOff);
-    const int state = std::max(fm.horizontalAdvance(tr("Spindle: unknown")),
-                               fm.horizontalAdvance(tr("Coolant: unknown"))) +
+    const int state = std::max({fm.horizontalAdvance(tr("Spindle: unknown")),
+                                fm.horizontalAdvance(tr("Laser: unknown")),
+                                fm.horizontalAdvance(tr("Coolant: unknown"))}) +
                       28;
     m_spindle->setFixedWidth(state);
     m_coolant->setFixedWidth(state);
@@ -91,7 +93,8 @@ void SpindleCoolantBar::fitSpeedRange(const machine::Machine* m, const Controlle
     int top = 100000;
     if (maxRpm && *maxRpm >= 1) {
         top = int(std::min(*maxRpm, 1.0e6));
-        m_rpm->setSuffix(tr(" rpm"));
+        // A laser's S is its power, scaled as a spindle's: no rpm (issue 50 item 5).
+        m_rpm->setSuffix(m->description().spindle.laser ? QString() : tr(" rpm"));
     } else {
         const ParameterSchema schema = s->schema();
         const Capabilities caps = s->capabilities();
@@ -117,19 +120,26 @@ void SpindleCoolantBar::refresh()
         fitSpeedRange(m, spindle);
     const ControllerSession* coolant = switchSession(m, &Capabilities::coolant);
     using State = LedIndicator::State;
+    // A laser on the spindle output (issue 50 item 5): M3/M5 switch its beam, S is its power.
+    const bool laser = m && m->description().spindle.laser;
     if (spindle) {
         const bool on = spindle->status().spindleOn; // read back (tmSpindleOn)
         m_spindle->setState(on ? State::On : State::Off);
-        m_spindle->setText(on ? tr("Spindle: on") : tr("Spindle: off"));
+        m_spindle->setText(laser ? (on ? tr("Laser: on") : tr("Laser: off"))
+                                 : (on ? tr("Spindle: on") : tr("Spindle: off")));
         m_spindle->setToolTip(tr("As the controller reports it"));
-        m_spindleSwitch->setText(on ? tr("Spindle off") : tr("Spindle on"));
+        m_spindleSwitch->setText(laser ? (on ? tr("Laser off") : tr("Laser on"))
+                                       : (on ? tr("Spindle off") : tr("Spindle on")));
     } else {
         m_spindle->setState(State::Unknown);
-        m_spindle->setText(tr("Spindle: unknown"));
+        m_spindle->setText(laser ? tr("Laser: unknown") : tr("Spindle: unknown"));
         m_spindle->setToolTip(m ? tr("No connected controller of this machine has a spindle")
                                 : tr("No machine is open"));
-        m_spindleSwitch->setText(tr("Spindle on"));
+        m_spindleSwitch->setText(laser ? tr("Laser on") : tr("Spindle on"));
     }
+    m_rpm->setToolTip(laser ? tr("The power the laser switch turns the beam on at, as a "
+                                 "program's M3 S")
+                            : tr("The speed the spindle switch starts it at, as a program's M3 S"));
     std::optional<bool> coolantOn;
     if (coolant)
         if (const auto it = coolant->status().knownParameters.constFind(QStringLiteral("coolant"));

@@ -43,3 +43,6 @@ stepdeck_add_test(tst_moveestimate SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_moveest
 # The machine's tool table: kept per machine, edited as LinuxCNC tool.tbl text (issue 29).
 stepdeck_add_test(tst_tooltabledialog SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltabledialog.cpp
                   LABELS ui LIBS stepdeck_ui)
+# The spindle and coolant bar on a laser machine (issue 50 item 5), at the in-process E-LAB.
+stepdeck_add_test(tst_spindlecoolantbar SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_spindlecoolantbar.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h LABELS ui LIBS stepdeck_ui)
