@@ -53,6 +53,13 @@ inline bool isArc(BlockKind kind)
     return kind == BlockKind::ArcClockwise || kind == BlockKind::ArcCounterClockwise;
 }
 
+// M3, M4, M5.
+inline bool isSpindleSwitch(BlockKind kind)
+{
+    return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
+           kind == BlockKind::SpindleOff;
+}
+
 // The centre and turns of a G2/G3 as written (LinuxCNC): I J K (the centre; incremental from
 // the start unless G90.1) or R (the radius: + the shorter arc, - the longer one), P turns.
 struct ArcWords

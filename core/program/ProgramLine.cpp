@@ -134,12 +134,6 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->pathTolerance = modal.pathTolerance;
 }
 
-bool isSpindleSwitch(BlockKind kind)
-{
-    return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse ||
-           kind == BlockKind::SpindleOff;
-}
-
 // M0, M1: the line's comment; M6: the tool (T on this line or an earlier one) and its prompt.
 std::optional<ProgramError> fillPrompt(const QString& comment, const ModalState& modal,
                                        ProgramBlock* b)

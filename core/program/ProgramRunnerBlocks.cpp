@@ -18,10 +18,7 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     // S with the first of them. S on a block of another action ("G1 X5 S500"): while the program
     // has the spindle on, its new speed goes out first. With the spindle off, S is only the
     // speed the next M3 starts at.
-    const bool spindleSwitch = block.kind == BlockKind::SpindleOn ||
-                               block.kind == BlockKind::SpindleReverse ||
-                               block.kind == BlockKind::SpindleOff;
-    if (block.spindleChange && m_spindleOn && !spindleSwitch) {
+    if (block.spindleChange && m_spindleOn && !isSpindleSwitch(block.kind)) {
         ProgramBlock speed = block;
         speed.kind = BlockKind::SpindleOn;
         startSwitch(speed, [this] { startAction(m_block); });

@@ -8,12 +8,6 @@
 namespace stepdeck::program {
 
 namespace {
-bool isSpindle(BlockKind k)
-{
-    return k == BlockKind::SpindleOn || k == BlockKind::SpindleReverse ||
-           k == BlockKind::SpindleOff;
-}
-
 bool isCoolant(BlockKind k)
 {
     return k == BlockKind::CoolantMist || k == BlockKind::CoolantFlood ||
@@ -24,7 +18,7 @@ bool isCoolant(BlockKind k)
 void noteSwitches(const ProgramBlock& b, RunFromState* state)
 {
     const BlockKind k = b.kind;
-    if (isSpindle(k)) {
+    if (isSpindleSwitch(k)) {
         state->spindle = k;
     } else if (isCoolant(k)) {
         state->coolant = k;
