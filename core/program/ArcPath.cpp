@@ -62,8 +62,8 @@ double targetOf(const ProgramBlock& block, const machine::MachineAxis& axis, dou
     const auto it = block.axes.constFind(axis.name);
     if (it == block.axes.cend())
         return start;
-    const double value = units::toAxisUnits(axis, it.value(), block.inches);
-    return block.relative ? start + value : value + workOffsets.value(axis.name, 0.0);
+    return *units::wordTarget(axis, it.value(), block.inches, block.relative,
+                              workOffsets.value(axis.name, 0.0), start);
 }
 
 // The angle in [0, 2 pi) from `from` to `to`, turning counter-clockwise.

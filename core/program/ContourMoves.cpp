@@ -105,16 +105,12 @@ const ContourMoves::Stream* ContourMoves::streamOf(const ProgramBlock& block) co
     return stream < 0 ? nullptr : &m_streams[size_t(stream)];
 }
 
-double ContourMoves::toUnits(const machine::MachineAxis& axis, double value, bool inches)
-{
-    return units::toAxisUnits(axis, value, inches);
-}
-
 double ContourMoves::feedPerSecond(const Stream& stream, const ProgramBlock& block) const
 {
     for (int i = 0; i < stream.scale.axisCount; ++i)
         if (const int a = stream.axisOfSlot[size_t(i)]; a >= 0 && block.feed)
-            return toUnits(m_facts.description.axes.at(a), *block.feed, block.inches) / 60.0;
+            return units::toAxisUnits(m_facts.description.axes.at(a), *block.feed, block.inches) /
+                   60.0;
     return 0;
 }
 

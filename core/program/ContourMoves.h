@@ -1,6 +1,7 @@
 #pragma once
 #include "ArcPath.h"
 #include "ProgramCheck.h"
+#include "ProgramUnits.h"
 #include "motion/CanonicalMove.h"
 #include "motion/ContourSteps.h"
 #include <QCoreApplication>
@@ -63,9 +64,9 @@ public:
                 continue;
             const machine::MachineAxis& axis =
                 m_facts.description.axes.at(stream.axisOfSlot[size_t(slot)]);
-            const double value = toUnits(axis, it.value(), block.inches);
             move.end[size_t(slot)] =
-                block.relative ? from[size_t(slot)] + value : value + offset(it.key());
+                *units::wordTarget(axis, it.value(), block.inches, block.relative,
+                                   block.relative ? 0.0 : offset(it.key()), from[size_t(slot)]);
         }
         return move;
     }
@@ -81,7 +82,6 @@ private:
     int slotOf(const QString& axisName) const;
     motion::CanonicalMove startMove(const Stream& stream, const ProgramBlock& block,
                                     const motion::Position& from) const;
-    static double toUnits(const machine::MachineAxis& axis, double value, bool inches);
 
     const MachineFacts& m_facts;
     std::vector<Stream> m_streams;

@@ -93,9 +93,10 @@ DrillCycle::plan(const ProgramBlock& block, const machine::MachineDescription& d
             if (cycle.m_axis[a] < 0 || !block.axes.contains(name))
                 continue;
             const machine::MachineAxis& axis = d.axes.at(cycle.m_axis[a]);
-            const double word = units::toAxisUnits(axis, block.axes.value(name), block.inches);
-            xy << std::pair{cycle.m_axis[a], block.relative ? *cycle.m_position[a] + word
-                                                            : word + workOffsets.value(name)};
+            xy << std::pair{cycle.m_axis[a],
+                            *units::wordTarget(axis, block.axes.value(name), block.inches,
+                                               block.relative, workOffsets.value(name),
+                                               cycle.m_position[a])};
         }
         cycle.moveTo(Kind::Rapid, xy);
         cycle.moveTo(Kind::Rapid, {{cycle.m_axis[2], r}});

@@ -18,8 +18,8 @@ QMap<QString, double> distances(const ProgramBlock& block, const machine::Machin
         const machine::MachineAxis& axis = d.axes.at(index);
         const double value = units::toAxisUnits(axis, it.value(), block.inches);
         const std::optional<double> from = start.at(size_t(index));
-        const double to = block.relative ? (from ? *from : 0.0) + value
-                                         : value + workOffsets.value(axis.name, 0.0);
+        const double to = *units::wordTarget(axis, it.value(), block.inches, block.relative,
+                                             workOffsets.value(axis.name, 0.0), from.value_or(0.0));
         double distance = 0;
         if (from && (wholeSteps || !block.relative))
             distance = wholeSteps ? double(std::abs(axis.toSteps(to) - axis.toSteps(*from))) /

@@ -10,6 +10,17 @@ double toAxisUnits(const machine::MachineAxis& axis, double value, bool inches)
                                                                 : value;
 }
 
+std::optional<double> wordTarget(const machine::MachineAxis& axis, double word, bool inches,
+                                 bool relative, double offset, std::optional<double> from)
+{
+    const double value = toAxisUnits(axis, word, inches);
+    if (!relative)
+        return value + offset;
+    if (from)
+        return *from + value;
+    return std::nullopt;
+}
+
 qint64 feedStepsPerSecond(const machine::MachineAxis& axis, double feedPerMinute, bool inches)
 {
     const double unitsPerSecond = toAxisUnits(axis, feedPerMinute, inches) / 60.0;
