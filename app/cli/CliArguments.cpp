@@ -411,6 +411,8 @@ QString programHelp()
         "                              default, as LinuxCNC), run while off\n"
         "                              --dry-run prints lines, extents and the estimated\n"
         "                              duration and moves nothing\n"
+        "      [--dry-run --canon]     the program's motion commands instead, one per line\n"
+        "                              as LinuxCNC's rs274 prints them (docs/cli.md)\n"
         "                              --feed-override 10..200: contours at that share of F;\n"
         "                              Ctrl-Z holds the feed, SIGCONT (fg) resumes it\n"
         "      [--tool-table FILE] [--offsets G54:X=N,Y=N;G55:...]\n"

@@ -42,7 +42,7 @@ const CommandEntry kCommands[] = {
     {cmdFeed, true, {"feed", kPositioningOptions}},
     {nullptr, true, {"stop", {}}},
     {nullptr, true, {"panic", {}}},
-    {nullptr, true, {"run", {{"dry-run"}, {"from-line", "N"}, {"skip-pauses"}, {"reference"},
+    {nullptr, true, {"run", {{"dry-run"}, {"canon"}, {"from-line", "N"}, {"skip-pauses"}, {"reference"},
                              {"optional-stops", "ON|OFF"}, {"block-delete", "ON|OFF"},
                              {"feed-override", "PERCENT"},
                              {"tool-table", "FILE"},

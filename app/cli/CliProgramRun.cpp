@@ -9,6 +9,8 @@
 #include "CliProgramOutput.h"
 #include "CliText.h"
 #include "model/NumberParsing.h"
+#include "program/CanonText.h"
+#include "program/ProgramLowering.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramReader.h"
 #include "program/WorkOffsetStore.h"
@@ -16,6 +18,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSocketNotifier>
+#include <QTextStream>
 #include <limits>
 #include <memory>
 #include <termios.h>
@@ -36,6 +39,7 @@ struct RunRequest
     QString path;
     int fromLine = 1;
     bool dryRun = false;
+    bool canon = false; // --canon: the motion commands as rs274 prints them (issue 49)
     bool skipPauses = false;
     bool optionalStops = true; // M1 holds like M0 (ProgramRunner::setOptionalStops)
     // LinuxCNC's block delete: "/" lines skipped (ProgramParser::setBlockDelete); read with the
@@ -137,14 +141,18 @@ Outcome readTablesArguments(const CliOptions& o, const machine::MachineDescripti
 Outcome parseRunArguments(const CliOptions& o, RunRequest* r)
 {
     if (o.args.size() != 1)
-        return Outcome::usage(CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run] "
-                                          "[--from-line N] [--skip-pauses] "
-                                          "[--optional-stops on|off] [--block-delete on|off] "
-                                          "[--feed-override PERCENT] "
-                                          "[--tool-table FILE] [--offsets G54:X=N,...;G55:...] "
-                                          "[--reference])"));
+        return Outcome::usage(
+            CliText::tr("run needs one PROGRAM file (run PROGRAM [--dry-run [--canon]] "
+                        "[--from-line N] [--skip-pauses] "
+                        "[--optional-stops on|off] [--block-delete on|off] "
+                        "[--feed-override PERCENT] "
+                        "[--tool-table FILE] [--offsets G54:X=N,...;G55:...] "
+                        "[--reference])"));
     r->path = o.args.constFirst();
     r->dryRun = o.flag("dry-run");
+    r->canon = o.flag("canon");
+    if (r->canon && !r->dryRun)
+        return Outcome::usage(CliText::tr("run --canon needs --dry-run"));
     r->reference = o.flag("reference");
     r->skipPauses = o.flag("skip-pauses");
     if (const std::optional<QString> stops = o.value("optional-stops")) {
@@ -407,8 +415,19 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
     facts.tools = r.tools;
     facts.blockDelete = r.blockDelete; // the program read with it already
     TerminalProgress progress(CliText::tr("checking %1").arg(r.path));
+    // --canon: each motion command as the check's walk lowers it, streamed (a long program's
+    // commands are never all held).
+    QTextStream out(stdout);
+    program::CanonText canon(m.description());
+    motion::CommandSink lowered;
+    if (r.canon)
+        lowered = [&out, &canon](const motion::MotionCommand& c) {
+            for (const QString& line : canon.lines(c))
+                out << line << '\n';
+        };
     const program::ProgramCheckResult checked =
-        program::ProgramCheck::check(p, facts, r.fromLine, progress.callback());
+        program::ProgramCheck::check(p, facts, r.fromLine, progress.callback(), lowered);
+    out.flush();
     progress.done();
     if (!checked.ok()) {
         printProgramErrors(r.path, checked.errors);
@@ -416,6 +435,8 @@ Outcome dryRun(CliMachineSession& m, const Program& p, const RunRequest& r, bool
             ExitInvalidValue,
             CliText::tr("%1 cannot run on this machine; nothing was sent").arg(r.path));
     }
+    if (r.canon)
+        return Outcome::success();
     printProgramNotes(r.path, checked.notes, json); // issue 50: what runs otherwise, not refused
     printProgramPreview(r.path, checked.preview, m.description(), json);
     return Outcome::success();

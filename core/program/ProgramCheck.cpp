@@ -242,7 +242,7 @@ void settlePreview(ProgramCheckResult* result, bool walked)
 // its block `start` (-1: none, *errors says why), after the blocks a run from line sends first.
 void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
               const CheckProgress& progress, CheckErrors* errors, ProgramCheckResult* result,
-              const QList<ProgramBlock>& prelude = {})
+              const QList<ProgramBlock>& prelude = {}, const motion::CommandSink& lowered = {})
 {
     if (start >= 0) {
         FastSpeedPutBack putBack(facts);
@@ -253,6 +253,7 @@ void walkFrom(ProgramReader& reader, const MachineFacts& facts, int start,
             touchOff.visit(b);
         });
         simulation.setPrelude(prelude);
+        simulation.setLowered(lowered);
         result->cancelled = !simulation.run(start, &result->preview, progress);
         putBack.report(errors);
         result->preview.toolNote = touchOff.text();
@@ -278,11 +279,13 @@ QList<ProgramBlock> runFromPrelude(ProgramReader& reader, const MachineFacts& fa
 }
 
 void walk(ProgramReader& reader, const MachineFacts& facts, int fromLine,
-          const CheckProgress& progress, ProgramCheckResult* result)
+          const CheckProgress& progress, ProgramCheckResult* result,
+          const motion::CommandSink& lowered = {})
 {
     CheckErrors errors;
     const int start = startIndex(reader, fromLine, &errors);
-    walkFrom(reader, facts, start, progress, &errors, result, runFromPrelude(reader, facts, start));
+    walkFrom(reader, facts, start, progress, &errors, result, runFromPrelude(reader, facts, start),
+             lowered);
 }
 
 } // namespace
@@ -404,7 +407,8 @@ void addProgramNotes(const Program& program, ProgramCheckResult* result)
 } // namespace
 
 ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFacts& facts,
-                                       int fromLine, const CheckProgress& progress)
+                                       int fromLine, const CheckProgress& progress,
+                                       const motion::CommandSink& lowered)
 {
     ProgramCheckResult result;
     result.preview.lines = program.expansion ? program.expansion->sourceLines : program.lines;
@@ -414,7 +418,7 @@ ProgramCheckResult ProgramCheck::check(const Program& program, const MachineFact
         return result;
     }
     ProgramReader reader(program);
-    walk(reader, facts, fromLine, progress, &result);
+    walk(reader, facts, fromLine, progress, &result, lowered);
     addProgramNotes(program, &result);
     if (result.ok())
         result.program = program;

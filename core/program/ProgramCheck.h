@@ -6,6 +6,7 @@
 #include "model/Capabilities.h"
 #include "model/ModelInfo.h"
 #include "model/ParameterSchema.h"
+#include "motion/MotionCommand.h"
 #include <QCoreApplication>
 #include <QMap>
 #include <QSet>
@@ -190,9 +191,12 @@ public:
     static constexpr qint64 kMaxChordsRun = 20000000;
     static constexpr qint64 kChordsPerBlock = 100;
 
-    // A parsed program (its blocks read again from its source).
+    // A parsed program (its blocks read again from its source). lowered: each block's motion
+    // commands as the walk lowers it (ProgramLowering; issue 49, `stepdeck-cli run --dry-run
+    // --canon`), repeats counted out, a run from line's moves to its start first.
     static ProgramCheckResult check(const Program& program, const MachineFacts& facts,
-                                    int fromLine = 1, const CheckProgress& progress = {});
+                                    int fromLine = 1, const CheckProgress& progress = {},
+                                    const motion::CommandSink& lowered = {});
     // The rest of a run that holds (issue 47: offsets or tools changed while it held at M0 or
     // M6): from the program's block `fromBlock` (ProgramReader's index), the axes where the
     // facts put them. Refused inside a repeat (its passes are not counted from a block), and

@@ -30,10 +30,25 @@ double ProgramCoordinates::offset(const ProgramBlock& block, const QString& axis
     double offset = m_systems[size_t(systemOf(block))].value(axis, 0.0);
     if (m_axisOffsetApplied)
         offset += m_axisOffset.value(axis, 0.0);
-    if (block.lengthTool > 0 && axis == toolAxis())
-        if (const Tool* tool = m_tools.find(block.lengthTool))
-            offset += tool->length; // a longer tool stands higher: Z goes up by its length
+    if (axis == toolAxis())
+        offset += toolLength(block); // a longer tool stands higher: Z goes up by its length
     return offset;
+}
+
+double ProgramCoordinates::toolLength(const ProgramBlock& block) const
+{
+    if (block.lengthTool > 0)
+        if (const Tool* tool = m_tools.find(block.lengthTool))
+            return tool->length;
+    return 0.0;
+}
+
+std::optional<double> ProgramCoordinates::target(const ProgramBlock& block,
+                                                 const machine::MachineAxis& axis, double word,
+                                                 std::optional<double> at) const
+{
+    return units::wordTarget(axis, word, block.inches, block.relative,
+                             block.relative ? 0.0 : offset(block, axis.name), at);
 }
 
 QMap<QString, double> ProgramCoordinates::offsets(const ProgramBlock& block,
@@ -62,11 +77,7 @@ void ProgramCoordinates::advance(const ProgramBlock& block, const machine::Machi
         if (!axis)
             continue;
         std::optional<double>& at = (*positions)[size_t(axis - d.axes.constData())];
-        const double value = units::toAxisUnits(*axis, it.value(), block.inches);
-        if (!block.relative)
-            at = value + offset(block, it.key());
-        else if (at)
-            *at += value;
+        at = target(block, *axis, it.value(), at);
     }
 }
 

@@ -44,6 +44,15 @@ public:
     QString apply(const ProgramBlock& block, const machine::MachineDescription& d,
                   const AxisPositions& current);
 
+    // The machine position an axis word of `block` names (the axis' unit): an absolute word
+    // at word + offset, a relative one from `at`; nullopt where `at` is unknown. The one place
+    // a word becomes a target (issue 49): advance() and ProgramLowering take it from here.
+    std::optional<double> target(const ProgramBlock& block, const machine::MachineAxis& axis,
+                                 double word, std::optional<double> at) const;
+    // The length G43 H adds on the tool axis for `block` (0: none, or no such tool).
+    double toolLength(const ProgramBlock& block) const;
+    bool axisOffsetApplied() const { return m_axisOffsetApplied; } // G92.2 suspends it
+
     // The current point after a G0/G1 (its axis words: absolute ones at word + offset,
     // relative ones from where the axis stands; unknown stays unknown) or a G28 (0 on the axes
     // it references). The check's walk and the run both follow the program with this.

@@ -218,9 +218,31 @@ bool ProgramSimulation::repeatEnd(int* i, int partner)
     return false;
 }
 
+void ProgramSimulation::setLowered(motion::CommandSink lowered)
+{
+    m_lowered = std::move(lowered);
+    m_lowering = m_lowered ? std::make_unique<ProgramLowering>(m_facts.description) : nullptr;
+}
+
+// The block's motion commands to the sink. An arc or cycle the lowering cannot lay is the
+// check's error already (arc(), cycle()): its commands are left out.
+void ProgramSimulation::lower(const ProgramBlock& block)
+{
+    m_lowerOut.clear();
+    m_lowering->lower(block, m_coordinates, m_programmed, &m_lowerOut);
+    for (const motion::MotionCommand& c : m_lowerOut)
+        m_lowered(c);
+}
+
 void ProgramSimulation::execute(PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
+    const bool framing =
+        block.kind == BlockKind::SetCoordinates || block.kind == BlockKind::AxisOffset ||
+        block.kind == BlockKind::AxisOffsetReset || block.kind == BlockKind::AxisOffsetSuspend ||
+        block.kind == BlockKind::AxisOffsetRestore;
+    if (m_lowering && !framing)
+        lower(block);
     switch (block.kind) {
     case BlockKind::Rapid:
     case BlockKind::Feed:
@@ -242,6 +264,8 @@ void ProgramSimulation::execute(PlannedBlock& planned)
     case BlockKind::AxisOffsetSuspend:
     case BlockKind::AxisOffsetRestore:
         coordinates(planned);
+        if (m_lowering)
+            lower(block);
         break;
     case BlockKind::Dwell:
         m_seconds += block.seconds;

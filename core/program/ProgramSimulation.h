@@ -8,10 +8,12 @@
 #include "FeedLimit.h"
 #include "PreviewPath.h"
 #include "ProgramCheck.h"
+#include "ProgramLowering.h"
 #include "ProgramReader.h"
 #include <QVarLengthArray>
 #include <algorithm>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace stepdeck::program {
@@ -243,6 +245,10 @@ public:
     // name them at the start block's line; they are no blocks of the program (not counted, as
     // ProgramRunner does not count them), but the preview's path and time include their moves.
     void setPrelude(QList<ProgramBlock> prelude) { m_prelude = std::move(prelude); }
+    // Each executed block lowered to motion commands (ProgramLowering; issue 49), from the
+    // current point the walk follows, before the walk executes it (a G10 or G92 block: after,
+    // its offsets in the frame). None: nothing lowered.
+    void setLowered(motion::CommandSink lowered);
     // false: cancelled (by progress, asked every few thousand blocks).
     bool run(int start, ProgramPreview* preview, const CheckProgress& progress = {});
 
@@ -262,6 +268,7 @@ private:
     int repeatStart(int i, const ProgramBlock& block);
     bool repeatEnd(int* i, int partner);
     void execute(PlannedBlock& planned);
+    void lower(const ProgramBlock& block);
     void move(PlannedBlock& planned);
     void home(const PlannedBlock& planned);
     void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
@@ -307,6 +314,9 @@ private:
     const ContourMoves& m_contours; // m_plan's
     std::function<void(const ProgramBlock&)> m_firstVisit;
     QList<ProgramBlock> m_prelude; // setPrelude()
+    motion::CommandSink m_lowered; // setLowered()
+    std::unique_ptr<ProgramLowering> m_lowering;
+    std::vector<motion::MotionCommand> m_lowerOut;
     // The feed moves across controllers (noteControllers): the first line, and the largest
     // distance one axis covers while its controllers' starts may differ.
     qint64 m_crossMoves = 0;

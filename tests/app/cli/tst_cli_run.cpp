@@ -32,6 +32,7 @@ private Q_SLOTS:
     void dryRun_json_previewFiguresNoMotion();
     void dryRun_human_linesExtentsDuration();
     void dryRun_toolTableAndOffsets_appliedToTheCheck();
+    void dryRun_canon_motionCommandsAsRs274PrintsThemNoMotion();
     void dryRun_longProgramStderrATerminal_checkProgressShownThenErased();
     void run_progressLinePerBlockOnStderr();
     void run_json_eventPerBlockThenSummary();
@@ -263,6 +264,36 @@ void TestCliRun::dryRun_human_linesExtentsDuration()
     QVERIFY2(r.out.contains("3 lines"), r.out.constData());
     QVERIFY2(r.out.contains("X: 0.000 .. 200.000 steps"), r.out.constData());
     QVERIFY2(r.out.contains("estimated duration"), r.out.constData());
+    QVERIFY(m_device->moves().isEmpty());
+}
+
+// Issue 49: --canon prints the motion commands the check's walk lowers, repeats counted out
+// (the repeat's G0 twice); Y and Z, never referenced, are not known. Worked out by hand: the
+// E-LAB's axes X Y Z in steps, so the program's units change nothing. Nothing reaches the board.
+// --canon without --dry-run is a usage error.
+void TestCliRun::dryRun_canon_motionCommandsAsRs274PrintsThemNoMotion()
+{
+    const QString path = writeProgram(
+        *m_dir, "canon.ngc", "G28 X0\nO1 repeat [2]\n  G0 X100\nO1 endrepeat\nG4 P0.5\nM2\n");
+    const CliRun r = runCli(args(path, {"--dry-run", "--canon"}));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QByteArray expected = "    1 N00001 USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+                                "    2 N00001 SELECT_PLANE(CANON_PLANE_XY)\n"
+                                "    3 N00001 REFERENCE_AXES(X)\n"
+                                "    4 N00003 STRAIGHT_TRAVERSE(100.0000, ?, ?)\n"
+                                "    5 N00003 STRAIGHT_TRAVERSE(100.0000, ?, ?)\n"
+                                "    6 N00005 DWELL(0.5000)\n"
+                                "    7 N00006 STOP_SPINDLE_TURNING(0)\n"
+                                "    8 N00006 MIST_OFF()\n"
+                                "    9 N00006 FLOOD_OFF()\n"
+                                "   10 N00006 PROGRAM_END()\n";
+    QCOMPARE(r.out, expected);
+    QVERIFY(m_device->moves().isEmpty());
+    QVERIFY(m_device->still());
+
+    const CliRun alone = runCli(args(path, {"--canon"}));
+    QCOMPARE(alone.exitCode, 2);
+    QVERIFY2(alone.err.contains("--canon needs --dry-run"), alone.err.constData());
     QVERIFY(m_device->moves().isEmpty());
 }
 

@@ -21,6 +21,9 @@ stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_
 # it (Z up first or down last) and the check of them and of the restored spindle.
 stepdeck_add_test(tst_runfromline SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_runfromline.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+# Blocks lowered to motion commands, as rs274's canonical text (issue 49): goldens by hand.
+stepdeck_add_test(tst_programlowering SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlowering.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The check's preview and the work coordinates it uses.
 stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programpreview.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
