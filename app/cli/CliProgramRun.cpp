@@ -10,7 +10,6 @@
 #include "CliText.h"
 #include "model/NumberParsing.h"
 #include "program/CanonText.h"
-#include "program/ProgramLowering.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramReader.h"
 #include "program/WorkOffsetStore.h"

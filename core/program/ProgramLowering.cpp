@@ -9,9 +9,8 @@ using namespace stepdeck::motion;
 
 namespace {
 // Whether a block's action comes after plane, units, tool length and coordinate system in
-// LinuxCNC's order of execution (14-18: motion, G10, G92, G28, the stops), or is one whose
-// words the frame changes; a tool change, spindle, coolant, outputs, inputs and dwell (7-13)
-// come before them.
+// LinuxCNC's order of execution (docs/programs.md, steps 15-22: before G10, G92, G28, motion
+// and the stops, steps 23-25), or before them (outputs, M6, spindle, coolant, dwell: 7-14).
 bool dependsOnFrame(BlockKind kind)
 {
     switch (kind) {
@@ -55,7 +54,8 @@ std::optional<ProgramLowering::Error> ProgramLowering::lower(const ProgramBlock&
         lowerFrame(*m_pending, out); // the line before ended: its frame holds from here
         m_pending.reset();
     }
-    // LinuxCNC's order of execution: the message (1), feed (2, 3), S (4), then the action.
+    // LinuxCNC's order of execution (docs/programs.md): the message (2), feed (3, 4), S (5),
+    // then the action.
     if (!block.message.isEmpty())
         out->push_back(Message{block.line, block.message});
     lowerFeed(block, out);
