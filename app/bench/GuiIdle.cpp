@@ -173,11 +173,17 @@ QString startSimulator(const QString& appDir, QProcess* sim)
 {
     sim->start(QDir(appDir).filePath(QStringLiteral("stepdeck-sim")),
                {QStringLiteral("--model"), idleModel().id});
+    // Up to 5 s for its first line (the pty's path): a slow start (a sanitized build on a busy
+    // machine) is waited for, not taken for a failure at the first 200 ms without output.
     QString ptyPath;
     QElapsedTimer t;
     t.start();
-    while (ptyPath.isEmpty() && t.elapsed() < 5000 && sim->waitForReadyRead(200))
-        ptyPath = QString::fromUtf8(sim->readLine()).trimmed();
+    while (ptyPath.isEmpty() && t.elapsed() < 5000 && sim->state() != QProcess::NotRunning) {
+        if (sim->canReadLine())
+            ptyPath = QString::fromUtf8(sim->readLine()).trimmed();
+        else
+            sim->waitForReadyRead(200);
+    }
     return ptyPath;
 }
 
