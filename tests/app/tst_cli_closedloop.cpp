@@ -2,6 +2,7 @@
 // process on a real pty with QSerialPort, the simulated drive runs in this process, so every
 // test asserts what the DRIVE received and did -- calibrated, referenced, closed loop kept,
 // standing still.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/nanotec/NanotecModel.h"
@@ -220,5 +221,5 @@ void TestCliClosedLoop::usage_badAxisOrDirection()
     QVERIFY(!m_sim->receivedFrames().contains("#1A\r"));
 }
 
-QTEST_GUILESS_MAIN(TestCliClosedLoop)
+STEPDECK_TEST_GUILESS_MAIN(TestCliClosedLoop)
 #include "tst_cli_closedloop.moc"

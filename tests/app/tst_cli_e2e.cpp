@@ -3,6 +3,7 @@
 // invocation is its own session, so positions are only observable within one invocation
 // (move prints where it ended) -- between invocations only the device state persists.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "sim/PtyEndpoint.h"
 #include <QDir>
 #include <QJsonArray>
@@ -562,5 +563,5 @@ void TestCliEndToEnd::resetPositionError_nanotecDrive_orUnsupported()
     QCOMPARE(elab.err.count('\n'), 1);
 }
 
-QTEST_GUILESS_MAIN(TestCliEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestCliEndToEnd)
 #include "tst_cli_e2e.moc"

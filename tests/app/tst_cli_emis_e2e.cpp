@@ -2,6 +2,7 @@
 // (QSerialPort at 115200 8N1). Each CLI invocation is its own session; the board's state
 // (positions, stored parameters, programs, outputs) persists in the simulator process.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -251,5 +252,5 @@ void TestCliEmisEndToEnd::numbers_decimalOnly_exitCodes()
                  QStringLiteral("exit %1: %2").arg(r.exitCode).arg(QString::fromLocal8Bit(r.err))));
 }
 
-QTEST_GUILESS_MAIN(TestCliEmisEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestCliEmisEndToEnd)
 #include "tst_cli_emis_e2e.moc"

@@ -2,6 +2,7 @@
 // `stepdeck-sim --model laser-axis`, and `stepdeck-cli laser-bridge` with a scripted laser on a
 // pty of this test and the E-LAB simulator process behind it.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "protocols/laser/LaserCodec.h"
 #include "sim/PtyEndpoint.h"
 #include <QDir>
@@ -300,5 +301,5 @@ void TestCliLaserEndToEnd::bridge_usageErrors()
     QCOMPARE(r.err.count('\n'), 1);
 }
 
-QTEST_GUILESS_MAIN(TestCliLaserEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestCliLaserEndToEnd)
 #include "tst_cli_laser_e2e.moc"

@@ -1,5 +1,6 @@
 // stepdeck-cli machine check FILE (issue 19): a valid file prints its resolved axes, an
 // invalid one exits 7 with the field named, an unreadable one exits 12; nothing is opened.
+#include "TestMain.h"
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -131,5 +132,5 @@ void TestCliMachine::machineCheck_namedDrives_namesShownAsWritten()
     }
 }
 
-QTEST_GUILESS_MAIN(TestCliMachine)
+STEPDECK_TEST_GUILESS_MAIN(TestCliMachine)
 #include "tst_cli_machine.moc"

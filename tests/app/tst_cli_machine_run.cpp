@@ -1,6 +1,7 @@
 // stepdeck-cli --machine FILE (issue 19): an E-LAB X/Y/Z table and a Nanotec drive as rotary A,
 // each simulator on a real pty in this process, the CLI as a process. Every motion test
 // asserts what the DEVICES saw and that they end standing still.
+#include "TestMain.h"
 #include "program/WorkOffsetStore.h"
 #include "protocols/Registry.h"
 #include "sim/PtyEndpoint.h"
@@ -436,5 +437,5 @@ void TestCliMachineRun::run_referenceWithTheWindowsOffsets_boardCutsInTheWindows
     QCOMPARE(m_err.contains("as the window keeps them"), saidFromWindow);
 }
 
-QTEST_GUILESS_MAIN(TestCliMachineRun)
+STEPDECK_TEST_GUILESS_MAIN(TestCliMachineRun)
 #include "tst_cli_machine_run.moc"

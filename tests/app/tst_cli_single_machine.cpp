@@ -1,6 +1,7 @@
 // stepdeck-cli --model M --port P without a machine file (issue 19): the machine commands run
 // on a machine of that one controller, its axes under their controller names in steps -- the
 // same code path as --machine FILE. The E-LAB simulator is on a real pty in this process.
+#include "TestMain.h"
 #include "protocols/Registry.h"
 #include "protocols/elab/ElabCodec.h"
 #include "sim/PtyEndpoint.h"
@@ -197,5 +198,5 @@ void TestCliSingleMachine::setupDefaults_emis_writesWhatTheBoardTakes()
     QVERIFY2(!err.contains("idle-current"), err.constData());
 }
 
-QTEST_GUILESS_MAIN(TestCliSingleMachine)
+STEPDECK_TEST_GUILESS_MAIN(TestCliSingleMachine)
 #include "tst_cli_single_machine.moc"

@@ -2,6 +2,7 @@
 // SIGTERM/SIGHUP end it cleanly (exit 0, settings saved) through the window's close path,
 // which sends the model's stop to the DEVICE before the port is closed.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabModel.h"
 #include "protocols/elab/ElabSimulator.h"
@@ -177,5 +178,5 @@ void TestGuiSignals::sigterm_onPtyDevice_deviceGetsStopThenPortClosed()
     QVERIFY2(again.open(QIODevice::ReadWrite), qPrintable(again.errorString()));
 }
 
-QTEST_GUILESS_MAIN(TestGuiSignals)
+STEPDECK_TEST_GUILESS_MAIN(TestGuiSignals)
 #include "tst_gui_signals.moc"

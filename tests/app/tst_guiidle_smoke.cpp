@@ -2,6 +2,7 @@
 // (offscreen), finds the link polling and prints its figures. Nothing here is timed: the
 // figures and their limits are in docs/benchmark.md.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -39,5 +40,5 @@ void TestGuiIdleSmoke::guiIdle_badValue_exitTwo()
     QCOMPARE(run.exitCode, 2);
 }
 
-QTEST_GUILESS_MAIN(TestGuiIdleSmoke)
+STEPDECK_TEST_GUILESS_MAIN(TestGuiIdleSmoke)
 #include "tst_guiidle_smoke.moc"

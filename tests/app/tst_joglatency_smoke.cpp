@@ -3,6 +3,7 @@
 // there, and both models' figures are printed. Nothing here is timed: the figures and the goal
 // are in docs/benchmark.md.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -74,5 +75,5 @@ void TestJogLatencySmoke::badArguments_exitTwo()
     QCOMPARE(run.exitCode, 2);
 }
 
-QTEST_GUILESS_MAIN(TestJogLatencySmoke)
+STEPDECK_TEST_GUILESS_MAIN(TestJogLatencySmoke)
 #include "tst_joglatency_smoke.moc"

@@ -3,6 +3,7 @@
 // prints the machine STOP latency for every machine size. Nothing here is timed: the
 // figures and the goal are in docs/benchmark.md.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -86,5 +87,5 @@ void TestPanicLoadSmoke::badArguments_exitTwo()
     QCOMPARE(run.exitCode, 2);
 }
 
-QTEST_GUILESS_MAIN(TestPanicLoadSmoke)
+STEPDECK_TEST_GUILESS_MAIN(TestPanicLoadSmoke)
 #include "tst_panicload_smoke.moc"

@@ -1,6 +1,7 @@
 // Peer vanishes (issue #2, section 6): the pty master closes under a connected adapter -- the
 // USB adapter pulled mid-move. Expected: one error report, port closed, link Lost, nothing
 // pending left unfinished, no crash, and quiet afterwards (Qt 6.4 would spin on ReadError).
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "controller/ControllerSession.h"
@@ -207,5 +208,5 @@ void TestPeerVanish::peerVanishes_throughSession_linkLostReportedOnce()
     QCOMPARE(errors.count(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestPeerVanish)
+STEPDECK_TEST_GUILESS_MAIN(TestPeerVanish)
 #include "tst_peer_vanish.moc"

@@ -2,6 +2,7 @@
 // measured on its paced wire, with the limit its own frames allow. Nothing here is timed and
 // no ratio is judged: the figures and the goal are in docs/benchmark.md.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -119,5 +120,5 @@ void TestPollWireSmoke::badArguments_exitTwo()
     QCOMPARE(run.exitCode, 2);
 }
 
-QTEST_GUILESS_MAIN(TestPollWireSmoke)
+STEPDECK_TEST_GUILESS_MAIN(TestPollWireSmoke)
 #include "tst_pollwire_smoke.moc"

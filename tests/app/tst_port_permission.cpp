@@ -3,6 +3,7 @@
 // The device is a pseudo-terminal given the rights of a Debian serial port (root:dialout 0660);
 // as root the CLI is run as `nobody` (setpriv), otherwise the pty's rights are taken away.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "sim/PtyEndpoint.h"
 #include <QStandardPaths>
 #include <QtTest>
@@ -71,5 +72,5 @@ void TestPortPermission::cli_portWithoutRights_asMember_namesPermissions()
     QVERIFY2(err.contains("ls -l " + device.slavePath()), qPrintable(err));
 }
 
-QTEST_GUILESS_MAIN(TestPortPermission)
+STEPDECK_TEST_GUILESS_MAIN(TestPortPermission)
 #include "tst_port_permission.moc"

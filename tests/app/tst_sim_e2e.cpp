@@ -1,6 +1,7 @@
 // stepdeck-sim's fault options (issue 12): --drop, --corrupt, --noise, --freeze-after, --seed,
 // run as processes on a real pseudo-terminal against stepdeck-cli and QSerialPort.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -285,5 +286,5 @@ void TestSimEndToEnd::noise_emisAndLaser()
     QVERIFY2(received.size() >= 50, qPrintable(QString::number(received.size())));
 }
 
-QTEST_GUILESS_MAIN(TestSimEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestSimEndToEnd)
 #include "tst_sim_e2e.moc"

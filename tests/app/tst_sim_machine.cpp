@@ -2,6 +2,7 @@
 // pseudo-terminal, and a copy of the machine file whose ports point at them (first stdout
 // line, and --out). Each port is proven by stepdeck-cli talking to the device behind it.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "machine/MachineFile.h"
 #include <QDir>
 #include <QFile>
@@ -145,5 +146,5 @@ void TestSimMachine::machine_refusedArguments_exitCodes()
     QVERIFY(run.out.isEmpty()); // no machine to connect to
 }
 
-QTEST_GUILESS_MAIN(TestSimMachine)
+STEPDECK_TEST_GUILESS_MAIN(TestSimMachine)
 #include "tst_sim_machine.moc"

@@ -3,6 +3,7 @@
 // left moving at the device. The figures themselves (docs/benchmark.md) come from long runs
 // by hand; nothing here is timed.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include "protocols/Registry.h"
 #include <QDir>
 #include <QFileInfo>
@@ -171,5 +172,5 @@ void TestSoakSmoke::badArguments_exitTwo()
     QCOMPARE(run.err.count('\n'), 1);
 }
 
-QTEST_GUILESS_MAIN(TestSoakSmoke)
+STEPDECK_TEST_GUILESS_MAIN(TestSoakSmoke)
 #include "tst_soak_smoke.moc"

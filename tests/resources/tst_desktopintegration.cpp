@@ -1,6 +1,7 @@
 // resources/: the desktop entry and the AppStream metainfo pass the validators a Debian
 // desktop and software centre use (desktop-file-validate, appstreamcli validate --no-net),
 // and they agree with each other and with the installed icon and binary names.
+#include "TestMain.h"
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -89,5 +90,5 @@ void TestDesktopIntegration::metainfo_launchesTheDesktopEntry_andItsScreenshotsE
     QVERIFY(count >= 1);
 }
 
-QTEST_GUILESS_MAIN(TestDesktopIntegration)
+STEPDECK_TEST_GUILESS_MAIN(TestDesktopIntegration)
 #include "tst_desktopintegration.moc"

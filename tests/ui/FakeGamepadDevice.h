@@ -9,6 +9,11 @@
 
 namespace stepdeck::test {
 
+// The gamepad's default dead-man button (SDL_CONTROLLER_BUTTON_LEFTSHOULDER) and the axis of the
+// X slot (the left stick's horizontal), as the jog tests press and tilt them.
+constexpr int kDeadman = 9;
+constexpr int kLeftX = 0;
+
 class FakeGamepadDevice : public ui::GamepadDevice
 {
     Q_OBJECT

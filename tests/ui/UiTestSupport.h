@@ -29,9 +29,12 @@ inline void isolateSettings()
 {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("StepDeckTest"));
-    QCoreApplication::setApplicationName(
-        QStringLiteral("StepDeckUiTest-%1")
-            .arg(QFileInfo(QCoreApplication::applicationFilePath()).fileName()));
+    // Per test: tests run side by side (ctest -j). The application's name, not its file: the
+    // tests of a group share one program, whose main gives each test its own name as argv[0]
+    // (tests/support/TestGroupMain.cpp), which Qt's default application name is taken from.
+    const QString prefix = QStringLiteral("StepDeckUiTest-");
+    if (!QCoreApplication::applicationName().startsWith(prefix)) // once per process
+        QCoreApplication::setApplicationName(prefix + QCoreApplication::applicationName());
     QSettings().clear();
 }
 

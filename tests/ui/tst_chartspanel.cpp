@@ -1,6 +1,7 @@
 // Charts: samples follow the status, the time window limits what is shown, pause freezes
 // it, and the visible data exports to CSV and the charts to PNG.
 #include "MachineTestSupport.h"
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "charts/ChartsPanel.h"
 #include "machine/Machine.h"
@@ -201,5 +202,5 @@ void TestChartsPanel::charts_machineInMm_plotsEachAxisInItsUnit()
     QCOMPARE(lines.last().split(QLatin1Char(',')).value(column), QStringLiteral("2.5000"));
 }
 
-QTEST_MAIN(TestChartsPanel)
+STEPDECK_TEST_MAIN(TestChartsPanel)
 #include "tst_chartspanel.moc"

@@ -2,6 +2,7 @@
 // common/Dialogs.h (non-modal, non-native, the page it belongs to disabled meanwhile); this
 // test rejects the calls that open a modal or native dialog, in every source file, so pages
 // added later cannot bring one back.
+#include "TestMain.h"
 #include <QDirIterator>
 #include <QFile>
 #include <QRegularExpression>
@@ -108,5 +109,5 @@ void TestDialogPolicy::pattern_catchesModalCalls()
     QCOMPARE(!violations(line).isEmpty(), rejected);
 }
 
-QTEST_MAIN(TestDialogPolicy)
+STEPDECK_TEST_MAIN(TestDialogPolicy)
 #include "tst_dialogpolicy.moc"

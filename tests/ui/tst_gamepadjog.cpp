@@ -1,6 +1,7 @@
 // The physical gamepad as a jog source, through a fake device: nothing moves without the
 // dead-man button, the dead zone swallows rest noise, calibration re-centres a stick, and
 // unplugging the pad mid-jog ramps the axes to zero -- checked at the simulated axis too.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "gamepad/GamepadJogSource.h"
 #include "gamepad/GamepadPanel.h"
@@ -9,10 +10,7 @@
 using namespace stepdeck;
 using namespace stepdeck::test;
 
-namespace {
-constexpr int kDeadman = 9; // SDL_CONTROLLER_BUTTON_LEFTSHOULDER, the default
-constexpr int kLeftX = 0;
-} // namespace
+namespace {} // namespace
 
 class TestGamepadJog : public QObject
 {
@@ -137,5 +135,5 @@ void TestGamepadJog::panel_showsDeviceState()
     QVERIFY(m_f->window->gamepadPanel()->deviceText().contains(QStringLiteral("No gamepad")));
 }
 
-QTEST_MAIN(TestGamepadJog)
+STEPDECK_TEST_MAIN(TestGamepadJog)
 #include "tst_gamepadjog.moc"

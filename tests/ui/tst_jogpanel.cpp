@@ -3,6 +3,7 @@
 // while held (the pointer proves it), refusals are visible, keyboard jog ends on focus loss
 // and a repeat of a key that is not held starts nothing. Every end is checked at the
 // simulated axis, not only at the host's commanded velocity.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include "jog/IncrementalJogWidget.h"
@@ -295,5 +296,5 @@ void TestJogPanel::incrementalJog_plusButton_movesByStepSize()
     QCOMPARE(move.values[1], qint64(1000));
 }
 
-QTEST_MAIN(TestJogPanel)
+STEPDECK_TEST_MAIN(TestJogPanel)
 #include "tst_jogpanel.moc"

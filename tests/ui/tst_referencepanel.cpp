@@ -2,6 +2,7 @@
 // machine of one controller (issue 28, item 0): Reference all runs the machine's order (Z
 // first, then X and Y together, asserted at the board's commands), laser axes finish on their
 // own reports, and a success message does not outlive a panic.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "machine/MachineReferenceRows.h"
 #include "position/ReferencePanel.h"
@@ -142,5 +143,5 @@ void TestReferencePanel::referenceAll_laserAxes_finishOnTheirReports()
         QVERIFY(m_f->window->context()->status().axes.value(a).referenced);
 }
 
-QTEST_MAIN(TestReferencePanel)
+STEPDECK_TEST_MAIN(TestReferencePanel)
 #include "tst_referencepanel.moc"

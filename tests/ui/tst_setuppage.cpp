@@ -3,6 +3,7 @@
 // in the CLI's JSON format, and a loaded file is compared with the form before anything is
 // written. E-LAB is write-only: after a reconnect or power cycle nothing counts as written,
 // Write all always exists, and load-and-write writes the whole file.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "setup/DiffDialog.h"
 #include "setup/ParameterField.h"
@@ -472,5 +473,5 @@ void TestSetupPage::invalid_everyReasonListed_messageStaysOneLine()
     QVERIFY(!page()->write(false));
 }
 
-QTEST_MAIN(TestSetupPage)
+STEPDECK_TEST_MAIN(TestSetupPage)
 #include "tst_setuppage.moc"

@@ -1,5 +1,6 @@
 // Status panel: the raw E-LAB words with the manual's bit names, the normalised flags, the
 // temperature warning before the 50 degC bit, and the counters.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "common/LedIndicator.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -126,5 +127,5 @@ void TestStatusPanel::machineLamps_onlyWhatTheModelHas_doorFollowsTheSwitch()
     QTRY_COMPARE(door->state(), State::Off);
 }
 
-QTEST_MAIN(TestStatusPanel)
+STEPDECK_TEST_MAIN(TestStatusPanel)
 #include "tst_statuspanel.moc"

@@ -1,5 +1,6 @@
 // Traffic console: E-LAB mnemonics through the model's presentation, hex toggle, hidden
 // polls, pause, and a send line that accepts the same notation and refuses bad input.
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "console/TrafficConsole.h"
 #include <QCheckBox>
@@ -179,5 +180,5 @@ void TestTrafficConsole::sendHint_inTheConnectedModelsNotation()
     QVERIFY(!send->placeholderText().contains(QStringLiteral("<ENQ>")));
 }
 
-QTEST_MAIN(TestTrafficConsole)
+STEPDECK_TEST_MAIN(TestTrafficConsole)
 #include "tst_trafficconsole.moc"

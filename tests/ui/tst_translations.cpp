@@ -2,6 +2,7 @@
 // the model's parameter labels and core messages (tr() of Q_DECLARE_TR_FUNCTIONS classes and
 // codec texts included: lupdate files each string under its run-time context).
 #include "SchemaWords.h"
+#include "TestMain.h"
 #include "UiTestSupport.h"
 #include "model/ParameterFile.h"
 #include "protocols/elab/ElabCodec.h"
@@ -324,5 +325,5 @@ void TestTranslations::english_afterGerman_noGermanLeftPluralsSpelledOut()
              QStringLiteral("1 error; click it to go to its line."));
 }
 
-QTEST_MAIN(TestTranslations)
+STEPDECK_TEST_MAIN(TestTranslations)
 #include "tst_translations.moc"

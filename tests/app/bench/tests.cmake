@@ -4,4 +4,4 @@ stepdeck_add_test(tst_wirepacer
                           ${CMAKE_SOURCE_DIR}/app/bench/WirePacer.cpp
                           ${CMAKE_SOURCE_DIR}/app/bench/PreciseWakeup.cpp
                   LABELS unit)
-target_include_directories(tst_wirepacer PRIVATE ${CMAKE_SOURCE_DIR}/app/bench)
+stepdeck_test_includes(tst_wirepacer ${CMAKE_SOURCE_DIR}/app/bench)

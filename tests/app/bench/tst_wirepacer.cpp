@@ -3,6 +3,7 @@
 // by, at most PreciseWakeup::kMaxLatencyNs), and towards the host whole writes at once.
 // Lower bounds only: how late a wake-up comes is the machine's, not a property to assert.
 #include "PreciseWakeup.h"
+#include "TestMain.h"
 #include "WirePacer.h"
 #include <QtTest>
 
@@ -111,5 +112,5 @@ void TestWirePacer::wholeWrites_deliveredWholeOnceTheLastByteArrived()
     QVERIFY(double(wire.got.at(1).atNs) >= secondEnd - kEarliestNs);
 }
 
-QTEST_GUILESS_MAIN(TestWirePacer)
+STEPDECK_TEST_GUILESS_MAIN(TestWirePacer)
 #include "tst_wirepacer.moc"

@@ -4,6 +4,7 @@
 // running what an earlier host started. The assertions are about what the DEVICE did and
 // received, and what the CLI printed and exited with (docs/cli.md).
 #include "CliRunRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
@@ -110,5 +111,5 @@ void TestCliDevices::status_motionTheHostDidNotCommand_printsTheReadSaysItStoppe
     QVERIFY(device.moves().isEmpty());
 }
 
-QTEST_GUILESS_MAIN(TestCliDevices)
+STEPDECK_TEST_GUILESS_MAIN(TestCliDevices)
 #include "tst_cli_devices.moc"

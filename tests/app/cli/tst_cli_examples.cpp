@@ -4,6 +4,7 @@
 // example machine file on its built-in simulators (port "sim"): referenced, moved into its
 // travel and back by a program made from its axes, exit 0 and the positions the run reports.
 #include "CliRunRig.h"
+#include "TestMain.h"
 #include "machine/MachineDescription.h"
 #include "machine/MachineFile.h"
 #include "protocols/elab/ElabSimulator.h"
@@ -181,5 +182,5 @@ void TestCliExamples::exampleMachine_onItsSimulators_referencesAndRuns()
     }
 }
 
-QTEST_GUILESS_MAIN(TestCliExamples)
+STEPDECK_TEST_GUILESS_MAIN(TestCliExamples)
 #include "tst_cli_examples.moc"

@@ -3,6 +3,7 @@
 // what a run prints. The E-LAB simulator is on a real pty in a thread of this process; every
 // test asserts what the DEVICE received.
 #include "CliRunRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabSimulator.h"
 #include <QFileInfo>
 #include <QJsonArray>
@@ -515,5 +516,5 @@ void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ()
     QVERIFY(m_device->still());
 }
 
-QTEST_GUILESS_MAIN(TestCliRun)
+STEPDECK_TEST_GUILESS_MAIN(TestCliRun)
 #include "tst_cli_run.moc"

@@ -3,6 +3,7 @@
 // a signal, a refused block and M66 end the run as docs/cli.md says. Each simulator is on a real
 // pty in a thread of this process (CliRunRig.h); the assertions are about what the DEVICE did.
 #include "CliRunRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
 #include <QtTest>
@@ -268,5 +269,5 @@ void TestCliRunDevices::waitInput_goesHighAfterASecond_runOnThenTimeoutExit5()
     QCOMPARE(device.moves().size(), 1);
 }
 
-QTEST_GUILESS_MAIN(TestCliRunDevices)
+STEPDECK_TEST_GUILESS_MAIN(TestCliRunDevices)
 #include "tst_cli_run_devices.moc"

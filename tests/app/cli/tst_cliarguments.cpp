@@ -2,6 +2,7 @@
 // command's own (the real command table, commandSyntax()), decimal numbers from NumberParsing.
 #include "CliArguments.h"
 #include "CliCommands.h"
+#include "TestMain.h"
 #include <QtTest>
 
 using namespace stepdeck;
@@ -336,5 +337,5 @@ void TestCliArguments::axisValues_decimalOnly()
         QCOMPARE(steps.value(Axis::X), args.first() == "X=010" ? 10 : 100);
 }
 
-QTEST_GUILESS_MAIN(TestCliArguments)
+STEPDECK_TEST_GUILESS_MAIN(TestCliArguments)
 #include "tst_cliarguments.moc"

@@ -1,5 +1,6 @@
 // LaserAnswerPolicy (pure): a frame only with a position the controller knows, in the laser's
 // range, with the status the controller reported; otherwise nothing and the reason.
+#include "TestMain.h"
 #include "bridge/LaserAnswerPolicy.h"
 #include <QtTest>
 
@@ -139,5 +140,5 @@ void TestLaserAnswerPolicy::referenceAndDoor_needAKnownPosition()
              "-|the door opened (axis Z), but its position is unknown");
 }
 
-QTEST_GUILESS_MAIN(TestLaserAnswerPolicy)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserAnswerPolicy)
 #include "tst_laseranswerpolicy.moc"

@@ -1,6 +1,7 @@
 // LaserBridge end to end: a scripted laser on a real pty (QSerialPort on the bridge's side),
 // the E-LAB and Nanotec simulators behind a ControllerSession.
 #include "LaserBridgeRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/nanotec/NanotecSimulator.h"
@@ -305,5 +306,5 @@ void TestLaserBridgeEndToEnd::nanotec_retargetWhileMoving_arrivesThenNewest()
     QVERIFY(!rig.toController.contains("#1S\r"));
 }
 
-QTEST_MAIN(TestLaserBridgeEndToEnd)
+STEPDECK_TEST_MAIN(TestLaserBridgeEndToEnd)
 #include "tst_laserbridge_e2e.moc"

@@ -3,6 +3,7 @@
 // says why at once (log error, AxisView::failure). The controllers behind run on a second
 // pseudo-terminal or in the session (port "sim"), the laser on a real pty.
 #include "LaserBridgeRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -151,5 +152,5 @@ void TestLaserBridgeFailures::controllerFailsMidMove_noAnswer_failureAtOnce()
     sim->faults().silent = false; // the close at the end gets its stop acknowledged
 }
 
-QTEST_MAIN(TestLaserBridgeFailures)
+STEPDECK_TEST_MAIN(TestLaserBridgeFailures)
 #include "tst_laserbridge_failures.moc"

@@ -3,6 +3,7 @@
 // axis is homed and moved; the test asserts the frames the laser got and where the simulated
 // device stands.
 #include "LaserBridgeRig.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -14,14 +15,14 @@ using stepdeck::test::LaserBridgeRig;
 using Kind = stepdeck::bridge::LaserBridge::LogEntry::Kind;
 
 namespace {
-constexpr qint64 kElabReference = -300; // E-LAB reference switches (device steps)
+constexpr qint64 kModelsElabReference = -300; // E-LAB reference switches (device steps)
 
 // The device behind made quick and given reference switches, as a machine would have them.
 void prepareDevice(LaserBridgeRig& rig, const QString& model)
 {
     if (model == QLatin1String("elab")) {
         for (Axis a : {Axis::X, Axis::Y, Axis::Z})
-            rig.simOnPty<elab::ElabSimulator>()->setReferencePosition(a, kElabReference, 5);
+            rig.simOnPty<elab::ElabSimulator>()->setReferencePosition(a, kModelsElabReference, 5);
     } else if (model == QLatin1String("nanotec")) {
         for (nanotec::NanotecDrive* d : rig.simOnPty<nanotec::NanotecSimulator>()->drives())
             d->setSwitches(-150, 50000);
@@ -37,7 +38,7 @@ void prepareDevice(LaserBridgeRig& rig, const QString& model)
 qint64 deviceFromReference(LaserBridgeRig& rig, const QString& model, Axis axis)
 {
     if (model == QLatin1String("elab"))
-        return rig.simOnPty<elab::ElabSimulator>()->position(axis) - kElabReference;
+        return rig.simOnPty<elab::ElabSimulator>()->position(axis) - kModelsElabReference;
     if (model == QLatin1String("nanotec"))
         return rig.simOnPty<nanotec::NanotecSimulator>()->drive(axis.index() + 1)->position();
     if (model == QLatin1String("emis"))
@@ -102,5 +103,5 @@ void TestLaserBridgeModels::everyModel_homeAndMovePerAxis_answeredAndDeviceThere
     QCOMPARE(rig.logCount(Kind::Note, "referencing it first"), 0);
 }
 
-QTEST_MAIN(TestLaserBridgeModels)
+STEPDECK_TEST_MAIN(TestLaserBridgeModels)
 #include "tst_laserbridge_models.moc"

@@ -1,5 +1,6 @@
 // LaserBridgeConfig: the axis map, scale, reference directions and door input as typed on the
 // command line and in the GUI, checked against the controller behind.
+#include "TestMain.h"
 #include "bridge/LaserBridgeConfig.h"
 #include <QtTest>
 
@@ -187,5 +188,5 @@ void TestLaserBridgeConfig::defaults_identityMapScaleOne()
     QVERIFY(!cfg.doorInput);
 }
 
-QTEST_GUILESS_MAIN(TestLaserBridgeConfig)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserBridgeConfig)
 #include "tst_laserbridgeconfig.moc"

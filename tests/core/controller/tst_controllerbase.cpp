@@ -1,6 +1,7 @@
 // The Controller base class's jog machinery (lease, ramp, refusal, link loss) and its safety
 // contract (stop before close, flush, link loss keeps the port open, unconfirmed motion),
 // through a tiny fake adapter and a transport that record what happens in which order.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "transport/LoopbackTransport.h" // complete Transport type first
@@ -422,5 +423,5 @@ void TestControllerBase::motionUnconfirmed_clearedOnlyByDeviceStandstill()
     QVERIFY(!c.status().motionUnconfirmed);
 }
 
-QTEST_GUILESS_MAIN(TestControllerBase)
+STEPDECK_TEST_GUILESS_MAIN(TestControllerBase)
 #include "tst_controllerbase.moc"

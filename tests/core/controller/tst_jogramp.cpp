@@ -1,4 +1,5 @@
 // JogRamp: the host-side jog ramp the E-LAB manual demands ("Befehle im Jogbetrieb").
+#include "TestMain.h"
 #include "controller/JogRamp.h"
 #include <QtTest>
 
@@ -315,5 +316,5 @@ void TestJogRamp::heldRates_changeSinceLastSent_boundedByAcceleration()
     QCOMPARE(ramp.heldRates(0.02, sent, 0.0).value(Axis::Y), 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestJogRamp)
+STEPDECK_TEST_GUILESS_MAIN(TestJogRamp)
 #include "tst_jogramp.moc"

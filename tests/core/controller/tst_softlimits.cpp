@@ -2,6 +2,7 @@
 // nothing is enforced before the axis is referenced, a stream is checked at every step, a
 // velocity move is refused on a limited axis, and jog brakes early enough to stop inside the
 // limit but may always move back inside.
+#include "TestMain.h"
 #include "controller/JogRamp.h"
 #include "controller/SoftLimits.h"
 #include <QtTest>
@@ -177,5 +178,5 @@ void TestSoftLimits::clip_chunkEndsAtTheLimit()
     QCOMPARE(l.room(Axis::X, +1, at(90, false)), qint64(-1));
 }
 
-QTEST_MAIN(TestSoftLimits)
+STEPDECK_TEST_MAIN(TestSoftLimits)
 #include "tst_softlimits.moc"

@@ -1,4 +1,5 @@
 // StatusPoller: one poll in flight, link loss after N unanswered polls, achieved rate.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/StatusPoller.h"
 #include <QElapsedTimer>
@@ -197,5 +198,5 @@ void TestStatusPoller::answeredPolls_rateReported()
     QCOMPARE(rate.last().at(0).toDouble(), 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestStatusPoller)
+STEPDECK_TEST_GUILESS_MAIN(TestStatusPoller)
 #include "tst_statuspoller.moc"

@@ -3,7 +3,7 @@ stepdeck_add_test(tst_machinefile SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinef
                   ${CMAKE_CURRENT_LIST_DIR}/MachineFileTestSupport.h LABELS unit)
 stepdeck_add_test(tst_machinefileformat SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefileformat.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineFileTestSupport.h LABELS unit)
-target_compile_definitions(tst_machinefile PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_machinefile STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # A machine of an E-LAB and a Nanotec simulator on two pseudo-terminals.
 stepdeck_add_test(tst_machine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machine.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)

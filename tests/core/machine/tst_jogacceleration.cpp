@@ -1,6 +1,7 @@
 // A machine axis' jog acceleration (issue 28 item 6): the file's jogAcceleration, or the
 // default that stops a release from the axis' top jog speed within one unit, and the one
 // ramp per controller (steps/s^2) that keeps every axis of it within its distance.
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "protocols/Registry.h"
 #include <QtTest>
@@ -137,5 +138,5 @@ void TestJogAcceleration::create_rampReachesTheControllersOptions()
     QCOMPARE(machine.session("table")->spec().options.jogAccelerationStepsPerS2, 20000.0);
 }
 
-QTEST_MAIN(TestJogAcceleration)
+STEPDECK_TEST_MAIN(TestJogAcceleration)
 #include "tst_jogacceleration.moc"

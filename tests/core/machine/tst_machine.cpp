@@ -4,6 +4,7 @@
 // stand still.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineSetup.h"
 #include "program/ProgramCheck.h"
@@ -544,5 +545,5 @@ void TestMachine::connect_setupFromTheFile_writtenOnEveryConnectAndKnown()
     QVERIFY(!m_machine->setupWriter()->pending());
 }
 
-QTEST_GUILESS_MAIN(TestMachine)
+STEPDECK_TEST_GUILESS_MAIN(TestMachine)
 #include "tst_machine.moc"

@@ -2,6 +2,7 @@
 // names the exact field; valid files come back as the description they spell. The format's
 // versions and optional keys: tst_machinefileformat.
 #include "MachineFileTestSupport.h"
+#include "TestMain.h"
 #include "machine/MachineFile.h"
 #include "protocols/Registry.h"
 #include <QDir>
@@ -421,5 +422,5 @@ void TestMachineFile::load_setupFile_invalid_namesTheField()
     QVERIFY2(error.message.contains(contains, Qt::CaseInsensitive), qPrintable(error.text()));
 }
 
-QTEST_GUILESS_MAIN(TestMachineFile)
+STEPDECK_TEST_GUILESS_MAIN(TestMachineFile)
 #include "tst_machinefile.moc"

@@ -2,6 +2,7 @@
 // written as version 2 (issue 32), version 2 named buses, the spindle scale (issue 29) and
 // crossControllerFeed (issue 30), each read, written and read back.
 #include "MachineFileTestSupport.h"
+#include "TestMain.h"
 #include "machine/MachineFile.h"
 #include "protocols/Registry.h"
 #include <QTemporaryDir>
@@ -375,5 +376,5 @@ void TestMachineFileFormat::spindle_maxRpmWithoutASpindleController_refused()
     QVERIFY2(MachineFile::validate(d, &error), qPrintable(error.text()));
 }
 
-QTEST_GUILESS_MAIN(TestMachineFileFormat)
+STEPDECK_TEST_GUILESS_MAIN(TestMachineFileFormat)
 #include "tst_machinefileformat.moc"

@@ -7,6 +7,7 @@
 // written below) is for positioning moves and plays no part.
 #include "ModelBench.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "protocols/elab/ElabCodec.h"
 #include <QSignalSpy>
@@ -123,5 +124,5 @@ void TestMachineJogStop::release_fromMaxJogSpeed_boardStandsWithinTheStoppingDis
     QVERIFY(travelled > 0); // it did run at full speed when let go
 }
 
-QTEST_MAIN(TestMachineJogStop)
+STEPDECK_TEST_MAIN(TestMachineJogStop)
 #include "tst_machinejogstop.moc"

@@ -7,6 +7,7 @@
 // frequency: 'S' has no ramp, 6.2), that the position is unknown and the move refused.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabSimulator.h"
@@ -182,5 +183,5 @@ void TestMachineStop::stopOrPanic_spindleAndCoolantOn_boardSwitchesThemOffOnceSt
     QVERIFY(!m.isSwitchingOff());
 }
 
-QTEST_MAIN(TestMachineStop)
+STEPDECK_TEST_MAIN(TestMachineStop)
 #include "tst_machinestop.moc"

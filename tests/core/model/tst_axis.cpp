@@ -1,5 +1,6 @@
 // A controller axis is an index with a default name (issue 32, step 2): X, Y, Z, U for the
 // first four, axis5 ... axis254 after them, each name back to its axis and nothing else.
+#include "TestMain.h"
 #include "model/Axis.h"
 #include <QtTest>
 
@@ -100,5 +101,5 @@ void TestAxis::order_isTheIndexOrder()
     QVERIFY(qHash(Axis::X) != qHash(Axis::Y));
 }
 
-QTEST_GUILESS_MAIN(TestAxis)
+STEPDECK_TEST_GUILESS_MAIN(TestAxis)
 #include "tst_axis.moc"

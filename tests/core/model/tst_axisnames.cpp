@@ -1,5 +1,6 @@
 // A controller's names for its axes (issue 32, step 3): valid names, default names kept for
 // their own axes, and the ordered bus list of --axes and machine files ("feeder=5,gate=6").
+#include "TestMain.h"
 #include "model/AxisNames.h"
 #include <QtTest>
 
@@ -232,5 +233,5 @@ void TestAxisNames::namedAddresses_roundTrip()
     QCOMPARE(againNames, names);
 }
 
-QTEST_GUILESS_MAIN(TestAxisNames)
+STEPDECK_TEST_GUILESS_MAIN(TestAxisNames)
 #include "tst_axisnames.moc"

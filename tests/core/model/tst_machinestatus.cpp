@@ -1,4 +1,5 @@
 // MachineStatus::toJson: the `stepdeck-cli status --json` contract (issue #2, section 5).
+#include "TestMain.h"
 #include "model/MachineStatus.h"
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -185,5 +186,5 @@ void TestMachineStatus::toJson_digitalIo_onlyWhenReported()
     QCOMPARE(json["device"].toObject()["firmware"].toString(), QStringLiteral("SMC-IC4 v1.07"));
 }
 
-QTEST_GUILESS_MAIN(TestMachineStatus)
+STEPDECK_TEST_GUILESS_MAIN(TestMachineStatus)
 #include "tst_machinestatus.moc"

@@ -1,5 +1,6 @@
 // "Did you mean ...?" (issue 16): the nearest known name within a small edit distance or the
 // only name the typed text begins, nothing when no name is close or the choice is a guess.
+#include "TestMain.h"
 #include "model/NearestName.h"
 #include <QtTest>
 
@@ -81,5 +82,5 @@ void TestNearestName::nearest_commands()
     QTEST(names::nearest(typed, commands), "expected");
 }
 
-QTEST_GUILESS_MAIN(TestNearestName)
+STEPDECK_TEST_GUILESS_MAIN(TestNearestName)
 #include "tst_nearestname.moc"

@@ -1,12 +1,12 @@
 // NumberParsing: the one place user input becomes a number (issue 12, "a leading zero makes a
 // value octal", "huge JSON numbers are undefined behaviour", "jog X=nan").
+#include "NumberErrorMetaType.h"
+#include "TestMain.h"
 #include "model/NumberParsing.h"
 #include <QtTest>
 #include <limits>
 
 using namespace stepdeck;
-
-Q_DECLARE_METATYPE(stepdeck::NumberError)
 
 namespace {
 constexpr qint64 kMax = std::numeric_limits<qint64>::max();
@@ -225,5 +225,5 @@ void TestNumberParsing::integerFromVariant_byType()
     QCOMPARE(out, expected);
 }
 
-QTEST_GUILESS_MAIN(TestNumberParsing)
+STEPDECK_TEST_GUILESS_MAIN(TestNumberParsing)
 #include "tst_numberparsing.moc"

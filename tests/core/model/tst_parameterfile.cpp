@@ -1,5 +1,6 @@
 // ParameterFile: the one reader and writer of parameter files (GUI setup pages and CLI
 // export/import), with the E-LAB schema as the real-world example.
+#include "TestMain.h"
 #include "model/ParameterFile.h"
 #include "protocols/elab/ElabModel.h"
 #include <QJsonDocument>
@@ -16,7 +17,7 @@ using Status = ParameterFile::Status;
 Q_DECLARE_METATYPE(stepdeck::ParameterFile::Status)
 
 namespace {
-const QList<Axis> kXyz{Axis::X, Axis::Y, Axis::Z};
+const QList<Axis> kFileXyz{Axis::X, Axis::Y, Axis::Z};
 
 ParameterSet sampleSet()
 {
@@ -67,7 +68,7 @@ Status TestParameterFile::write(const QString& name, const QByteArray& content, 
     if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
         return Status::FileError;
     file.close();
-    return ParameterFile::load(m_schema, QStringLiteral("elab"), kXyz, path, set, error);
+    return ParameterFile::load(m_schema, QStringLiteral("elab"), kFileXyz, path, set, error);
 }
 
 void TestParameterFile::roundTrip_keepsEveryValueAndExtraKeys()
@@ -85,7 +86,7 @@ void TestParameterFile::roundTrip_keepsEveryValueAndExtraKeys()
              QStringLiteral("stepdeck-parameters"));
     QCOMPARE(json.value(QStringLiteral("origin")).toObject(), origin);
     ParameterSet loaded;
-    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kXyz, path, &loaded, &error),
+    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kFileXyz, path, &loaded, &error),
              Status::Ok);
     QCOMPARE(loaded, sampleSet());
 }
@@ -95,7 +96,7 @@ void TestParameterFile::load_missingFile_isFileError()
     const QString path = m_dir->filePath(QStringLiteral("nothing-here.json"));
     ParameterSet set;
     QString error;
-    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kXyz, path, &set, &error),
+    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kFileXyz, path, &set, &error),
              Status::FileError);
     QVERIFY2(error.startsWith(QStringLiteral("Cannot open ") + path + QStringLiteral(": ")),
              qPrintable(error));
@@ -228,12 +229,12 @@ void TestParameterFile::save_overwrites_noTemporaryFilesLeft()
     QCOMPARE(ParameterFile::save(m_schema, QStringLiteral("elab"), sampleSet(), path, &error),
              Status::Ok);
     ParameterSet loaded;
-    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kXyz, path, &loaded, &error),
+    QCOMPARE(ParameterFile::load(m_schema, QStringLiteral("elab"), kFileXyz, path, &loaded, &error),
              Status::Ok);
     QCOMPARE(loaded, sampleSet());
     QCOMPARE(QDir(m_dir->path()).entryList(QDir::Files),
              QStringList{QStringLiteral("machine.json")});
 }
 
-QTEST_GUILESS_MAIN(TestParameterFile)
+STEPDECK_TEST_GUILESS_MAIN(TestParameterFile)
 #include "tst_parameterfile.moc"

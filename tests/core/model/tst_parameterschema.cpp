@@ -1,13 +1,13 @@
 // ParameterSchema: validation, CLI assignments and the JSON file format, using the E-LAB
 // schema (issue #2, section 5) as the real-world example.
+#include "NumberErrorMetaType.h"
+#include "TestMain.h"
 #include "model/ParameterSchema.h"
 #include "protocols/elab/ElabModel.h"
 #include <QJsonDocument>
 #include <QtTest>
 
 using namespace stepdeck;
-
-Q_DECLARE_METATYPE(stepdeck::NumberError)
 
 namespace {
 const QList<Axis> kXyz{Axis::X, Axis::Y, Axis::Z};
@@ -391,5 +391,5 @@ void TestParameterSchema::fromJson_numbers()
         QVERIFY2(error.contains(mention), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestParameterSchema)
+STEPDECK_TEST_GUILESS_MAIN(TestParameterSchema)
 #include "tst_parameterschema.moc"

@@ -1,6 +1,7 @@
 // CanonicalMove and MotionQueue (issue 30): a move's length, its point along the path and the
 // rate each slot moves at per unit of feed, against geometry worked out by hand; the queue's
 // bound.
+#include "TestMain.h"
 #include "motion/CanonicalMove.h"
 #include "motion/MotionQueue.h"
 #include <QtTest>
@@ -149,5 +150,5 @@ void TestCanonicalMove::queue_bounded_refusesWhenFullClearDropsAll()
     QVERIFY(q.isEmpty());
 }
 
-QTEST_GUILESS_MAIN(TestCanonicalMove)
+STEPDECK_TEST_GUILESS_MAIN(TestCanonicalMove)
 #include "tst_canonicalmove.moc"

@@ -2,6 +2,7 @@
 // consumer gets while a producer thread appends moves are the ticks of the same moves laid in
 // one thread; the wake-up is called for every move given and for the close; a consumer that
 // finds nothing counts it (the stream had to wait).
+#include "TestMain.h"
 #include "motion/ContourFeed.h"
 #include <QThread>
 #include <QtTest>
@@ -20,14 +21,14 @@ private Q_SLOTS:
 
 namespace {
 
-constexpr double kTickRate = 2000;
+constexpr double kFeedTickRate = 2000;
 
 ContourSteps fresh()
 {
     StepScale s;
     s.axisCount = 2;
     s.stepsPerUnit = {100, 100};
-    return ContourSteps(s, {}, {}, kTickRate, 1.0, 8);
+    return ContourSteps(s, {}, {}, kFeedTickRate, 1.0, 8);
 }
 
 // A zigzag of 200 short lines, 1 mm each, at 5 mm/s.
@@ -151,5 +152,5 @@ void TestContourFeed::hold_noTickUntilReleasedThenTheSameTicks()
     QCOMPARE(held.ticks(), plain.ticks());
 }
 
-QTEST_GUILESS_MAIN(TestContourFeed)
+STEPDECK_TEST_GUILESS_MAIN(TestContourFeed)
 #include "tst_contourfeed.moc"

@@ -4,6 +4,7 @@
 // step of the path; the path speed is the feed (the tick count is the path's time at F); no
 // axis steps twice in a tick; the end is the programmed end exactly. Pulled in random chunks,
 // with underruns, refusals and a feed override.
+#include "TestMain.h"
 #include "motion/ContourSteps.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -466,5 +467,5 @@ void TestContourSteps::movesDoneAndQueuedSeconds_followTheTicks()
     QCOMPARE(c.queuedSeconds(), 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestContourSteps)
+STEPDECK_TEST_GUILESS_MAIN(TestContourSteps)
 #include "tst_contoursteps.moc"

@@ -1,6 +1,7 @@
 #pragma once
 // The machines the program check's tests run against (tst_programcheck, tst_programpreview),
 // and small helpers to parse and print.
+#include "ProgramParserTestSupport.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include "protocols/Registry.h"
@@ -154,12 +155,7 @@ inline Program parsed(const QString& text, const MachineFacts& facts)
     return *p;
 }
 
-inline QStringList texts(const QList<ProgramError>& errors)
-{
-    QStringList out;
-    for (const ProgramError& e : errors)
-        out << e.text();
-    return out;
-}
+// One function for both helpers' users: a file of a test batch may see both namespaces.
+using parsertest::texts;
 
 } // namespace stepdeck::program::checktest

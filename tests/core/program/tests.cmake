@@ -13,7 +13,7 @@ stepdeck_add_test(tst_programparserdialect SOURCES
 # source tree.
 stepdeck_add_test(tst_programcheck SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheck.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
-target_compile_definitions(tst_programcheck PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_programcheck STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The check of the dialect's coordinates, tools and spindle scale (issue 29).
 stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckdialect.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
@@ -56,7 +56,7 @@ stepdeck_add_test(tst_tooltable SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tooltable.
 # Programs in the styles CAM posts write, run end to end on an E-LAB simulator (issue 29).
 stepdeck_add_test(tst_camprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_camprograms.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
-target_compile_definitions(tst_camprograms PRIVATE
+stepdeck_test_definitions(tst_camprograms
                            STEPDECK_CAM_DIR="${CMAKE_CURRENT_LIST_DIR}/cam")
 # Drilling cycles G81, G82, G83, G73 (issue 29): the words and the moves the check and the run
 # share.
@@ -74,10 +74,10 @@ stepdeck_add_test(tst_mdisession SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_mdisessio
 stepdeck_add_test(tst_ngcprograms SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_ngcprograms.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NgcProgramsTestSupport.h
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
-target_compile_definitions(tst_ngcprograms PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_ngcprograms STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The same programs run end to end on an E-LAB and an EMIS simulator, asserted at the device;
 # a copy beyond the soft limits refused before anything moved.
 stepdeck_add_test(tst_ngcrun SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_ngcrun.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NgcProgramsTestSupport.h
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 600)
-target_compile_definitions(tst_ngcrun PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_ngcrun STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")

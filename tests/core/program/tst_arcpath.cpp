@@ -4,6 +4,7 @@
 // work offsets and inches, the chords within the tolerance of the true curve, and the bounds
 // the soft limits are checked at.
 #include "MillTestSupport.h"
+#include "TestMain.h"
 #include "program/ArcPath.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
@@ -262,5 +263,5 @@ void TestArcPath::rateBlock_arcAxes_asAG1()
     QCOMPARE(rates.line, block.line);
 }
 
-QTEST_APPLESS_MAIN(TestArcPath)
+STEPDECK_TEST_APPLESS_MAIN(TestArcPath)
 #include "tst_arcpath.moc"

@@ -9,6 +9,7 @@
 #include "MachineTestSupport.h"
 #include "PathTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRunner.h"
@@ -27,7 +28,7 @@ using namespace stepdeck::program;
 namespace {
 
 using Device = test::PtyDevice;
-constexpr double kStepsPerMm = 100;
+constexpr double kCamStepsPerMm = 100;
 
 struct Point3
 {
@@ -79,9 +80,9 @@ bool TestCamPrograms::setUp(const QString& model)
     d.controllers = {{"table", model, m_elab->path(), {}, {}, {}, {}, {}}};
     if (model == QLatin1String("elab"))
         d.spindle.maxRpm = 24000; // CAM programs' S in rpm (the SMC-IC4 has no spindle)
-    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
-              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kStepsPerMm),
-              test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, kStepsPerMm)};
+    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kCamStepsPerMm),
+              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kCamStepsPerMm),
+              test::machineAxis("Z", "table", Axis::Z, AxisUnit::Millimetre, kCamStepsPerMm)};
     m_machine = std::make_unique<Machine>();
     QString error;
     if (!m_machine->create(d, &error)) {
@@ -120,9 +121,9 @@ Point3 TestCamPrograms::boardMm()
 {
     return m_elab->probe([&] {
         Point3 p;
-        p.x = double(m_elab->sim()->position(Axis::X) - m_origin[0]) / kStepsPerMm;
-        p.y = double(m_elab->sim()->position(Axis::Y) - m_origin[1]) / kStepsPerMm;
-        p.z = double(m_elab->sim()->position(Axis::Z) - m_origin[2]) / kStepsPerMm;
+        p.x = double(m_elab->sim()->position(Axis::X) - m_origin[0]) / kCamStepsPerMm;
+        p.y = double(m_elab->sim()->position(Axis::Y) - m_origin[1]) / kCamStepsPerMm;
+        p.z = double(m_elab->sim()->position(Axis::Z) - m_origin[2]) / kCamStepsPerMm;
         return p;
     });
 }
@@ -140,9 +141,9 @@ QList<Point3> TestCamPrograms::boardTrace(qsizetype from)
         QList<Point3> out;
         const auto& trace = static_cast<elab::ElabSimulator*>(m_elab->sim())->positionTrace();
         for (size_t i = size_t(from); i < trace.size(); ++i)
-            out << Point3{double(trace[i][0] - m_origin[0]) / kStepsPerMm,
-                          double(trace[i][1] - m_origin[1]) / kStepsPerMm,
-                          double(trace[i][2] - m_origin[2]) / kStepsPerMm};
+            out << Point3{double(trace[i][0] - m_origin[0]) / kCamStepsPerMm,
+                          double(trace[i][1] - m_origin[1]) / kCamStepsPerMm,
+                          double(trace[i][2] - m_origin[2]) / kCamStepsPerMm};
         return out;
     });
 }
@@ -294,7 +295,7 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
         if (p.position.size() == 3 && p.line > 0 && !dwells.contains(p.line))
             plannedMachine << Point3{p.position.value("X") + 10, p.position.value("Y") + 10,
                                      p.position.value("Z") - 20};
-    const double step = 1 / kStepsPerMm + 1e-9;
+    const double step = 1 / kCamStepsPerMm + 1e-9;
     if (elab) {
         // The board's path passes within a step of each planned point, in the plan's order,
         // from where it stood at the start (a first move may not move it at all).
@@ -370,5 +371,5 @@ void TestCamPrograms::pause_duringPeckCycle_holdsBetweenMovesResumeFinishesIt()
     QCOMPARE(pointText(arrived.last()), pointText(Point3{10, 10, -2}));
 }
 
-QTEST_MAIN(TestCamPrograms)
+STEPDECK_TEST_MAIN(TestCamPrograms)
 #include "tst_camprograms.moc"

@@ -2,6 +2,7 @@
 // ContourMoves), and the check's refusal of a feed the stream's tick cannot carry. The
 // expected figures are worked out here by hand from the machine's steps per unit.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "motion/ContourSteps.h"
 #include "program/ContourMoves.h"
 #include "program/FeedLimit.h"
@@ -41,11 +42,11 @@ ParameterSet startSpeeds(qint64 x, qint64 y, qint64 z)
     return {{QStringLiteral("start-speed"), v}};
 }
 
-// The "mill" of the check's tests (E-LAB X 100, Y 200, Z 100 steps/mm; laser axis A) with
+// The "contourMill" of the check's tests (E-LAB X 100, Y 200, Z 100 steps/mm; laser axis A) with
 // the board's start speed known.
-MachineFacts mill(qint64 startSpeed = 2000)
+MachineFacts contourMill(qint64 startSpeed = 2000)
 {
-    MachineFacts f = machineFacts(QStringLiteral("mill"));
+    MachineFacts f = machineFacts(QStringLiteral("contourMill"));
     f.knownParameters[QStringLiteral("table")] = startSpeeds(startSpeed, startSpeed, startSpeed);
     f.knownPositions = positions(QStringLiteral("X=10 Y=10 Z=-1"));
     return f;
@@ -105,7 +106,7 @@ void TestContourMoves::streamOf_whichBlocksJoin()
 {
     QFETCH(QString, line);
     QFETCH(bool, joins);
-    const MachineFacts facts = mill();
+    const MachineFacts facts = contourMill();
     const ContourMoves contours(facts);
     const ProgramBlock b = block(line, facts);
     const ContourMoves::Stream* s = contours.streamOf(b);
@@ -121,7 +122,7 @@ void TestContourMoves::streamOf_whichBlocksJoin()
 // a relative one a distance from where the contour stands; F is per minute.
 void TestContourMoves::lineMove_absoluteAndRelative_machineUnitsInvertedScale()
 {
-    MachineFacts facts = mill();
+    MachineFacts facts = contourMill();
     facts.description.axes[0].invert = true;
     const ContourMoves contours(facts);
     const ProgramBlock absolute = block(QStringLiteral("G1 X10 Y5 F600"), facts);
@@ -150,7 +151,7 @@ void TestContourMoves::lineMove_absoluteAndRelative_machineUnitsInvertedScale()
 // at X11 Y11 (clockwise from the left goes up), half way at X12 Y10.
 void TestContourMoves::arcMove_fullCircle_pointsOnTheCircle()
 {
-    MachineFacts facts = mill();
+    MachineFacts facts = contourMill();
     const ContourMoves contours(facts);
     const ProgramBlock b = block(QStringLiteral("G2 X10 Y10 I1 F60"), facts);
     const ContourMoves::Stream* s = contours.streamOf(b);
@@ -199,7 +200,7 @@ void TestContourMoves::check_feedAboveTheTick_refusedNamingTheHighest()
 {
     QFETCH(QString, program);
     QFETCH(QString, error);
-    MachineFacts facts = mill(500);
+    MachineFacts facts = contourMill(500);
     facts.description.limits = machine::LimitPolicy::Refuse; // issue 50: refused as before
     const ProgramCheckResult r = ProgramCheck::check(parsed(program, facts), facts);
     const QStringList errors = texts(r.errors);
@@ -216,7 +217,7 @@ void TestContourMoves::check_feedAboveTheTick_refusedNamingTheHighest()
 
 void TestContourMoves::check_startSpeedNotKnown_refusedWithReason()
 {
-    MachineFacts facts = machineFacts(QStringLiteral("mill"));
+    MachineFacts facts = machineFacts(QStringLiteral("contourMill"));
     facts.knownParameters.remove(QStringLiteral("table")); // this session wrote no setup
     const ProgramCheckResult r =
         ProgramCheck::check(parsed(QStringLiteral("G91 G1 X1 F60"), facts), facts);
@@ -246,7 +247,7 @@ void TestContourMoves::contourFeed_aboveTheTick_theHighestTheStreamTakes()
     QFETCH(QString, program);
     QFETCH(bool, refuse);
     QFETCH(double, feed);
-    const MachineFacts facts = mill(500);
+    const MachineFacts facts = contourMill(500);
     const ContourMoves contours(facts);
     const ProgramBlock b = block(program, facts);
     const ContourMoves::Stream* s = contours.streamOf(b);
@@ -284,7 +285,7 @@ void TestContourMoves::check_feedAboveTheTick_runsAtTheHighestWithNote()
 {
     QFETCH(QString, program);
     QFETCH(QString, runsAt);
-    const MachineFacts facts = mill(500);
+    const MachineFacts facts = contourMill(500);
     const ProgramCheckResult r = ProgramCheck::check(parsed(program, facts), facts);
     QVERIFY2(r.ok(), qPrintable(texts(r.errors).join('\n')));
     const QStringList notes = texts(r.notes);
@@ -298,5 +299,5 @@ void TestContourMoves::check_feedAboveTheTick_runsAtTheHighestWithNote()
              qPrintable(notes.first()));
 }
 
-QTEST_MAIN(TestContourMoves)
+STEPDECK_TEST_MAIN(TestContourMoves)
 #include "tst_contourmoves.moc"

@@ -2,6 +2,7 @@
 // that coordinate, each axis gets the share of F that its distance has of the path (measured
 // over the linear axes; over the rotary ones when only they move), so all take length / F. The
 // figures are worked out by hand.
+#include "TestMain.h"
 #include "machine/MachineDescription.h"
 #include "program/CoordinatedFeed.h"
 #include "program/ProgramParser.h"
@@ -175,5 +176,5 @@ void TestCoordinatedFeed::resolve_feedOverride_scalesEveryShare()
              QString()); // not a coordinating controller's
 }
 
-QTEST_GUILESS_MAIN(TestCoordinatedFeed)
+STEPDECK_TEST_GUILESS_MAIN(TestCoordinatedFeed)
 #include "tst_coordinatedfeed.moc"

@@ -3,6 +3,7 @@
 // DrillCycle expands them into from the current point: retract planes, pecks, dwell, repeats in
 // G90 and G91, work offsets and inches, unknown positions and the bound on moves.
 #include "MillTestSupport.h"
+#include "TestMain.h"
 #include "program/DrillCycle.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
@@ -14,12 +15,12 @@ namespace {
 
 using pathtest::mill;
 
-const QStringList kAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z"),
-                        QStringLiteral("A")};
+const QStringList kDrillAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z"),
+                             QStringLiteral("A")};
 
 std::optional<Program> parse(const QString& text, QList<ProgramError>* errors)
 {
-    return ProgramParser::parse(text.toUtf8(), kAxes, errors);
+    return ProgramParser::parse(text.toUtf8(), kDrillAxes, errors);
 }
 
 // The moves of the last block of `program` from (x, y, z): "R Z5 | F Z-2 | D0.5 | R X10 Y5".
@@ -229,5 +230,5 @@ void DrillCycleTest::plan_peckBelowTheResolutionOfR_oneFeedToTheBottom()
     QVERIFY2(moves.startsWith(QStringLiteral("R Z1e+18 | F Z")), qPrintable(moves));
 }
 
-QTEST_GUILESS_MAIN(DrillCycleTest)
+STEPDECK_TEST_GUILESS_MAIN(DrillCycleTest)
 #include "tst_drillcycle.moc"

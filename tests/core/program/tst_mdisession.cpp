@@ -2,6 +2,7 @@
 // run"): a line is a program of one line in the state the last finished line left; a refused or
 // failed line leaves that state; the check of the line follows from that state.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/MdiSession.h"
 #include "program/ProgramReader.h"
 #include <QtTest>
@@ -11,7 +12,7 @@ using namespace stepdeck::program::checktest;
 
 namespace {
 
-const QStringList kAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+const QStringList kMdiAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
 
 ProgramBlock onlyBlock(const Program& program)
 {
@@ -66,9 +67,9 @@ void TestMdiSession::prepare_afterFinishedLine_keepsItsModalWords()
     QFETCH(int, plane);
     MdiSession mdi;
     QList<ProgramError> errors;
-    QVERIFY(mdi.prepare(first, kAxes, &errors));
+    QVERIFY(mdi.prepare(first, kMdiAxes, &errors));
     mdi.lineRan(true);
-    const std::optional<Program> program = mdi.prepare(second, kAxes, &errors);
+    const std::optional<Program> program = mdi.prepare(second, kMdiAxes, &errors);
     QVERIFY2(program, qPrintable(texts(errors).join('\n')));
     const ProgramBlock block = onlyBlock(*program);
     QCOMPARE(block.line, 1);
@@ -89,12 +90,12 @@ void TestMdiSession::prepare_afterFailedLine_keepsTheStateBefore()
 {
     MdiSession mdi;
     QList<ProgramError> errors;
-    QVERIFY(mdi.prepare(QStringLiteral("G91 G1 X1 F100"), kAxes, &errors));
+    QVERIFY(mdi.prepare(QStringLiteral("G91 G1 X1 F100"), kMdiAxes, &errors));
     mdi.lineRan(false); // refused, failed or aborted: LinuxCNC's state is not what it asked
-    std::optional<Program> next = mdi.prepare(QStringLiteral("G1 X1"), kAxes, &errors);
+    std::optional<Program> next = mdi.prepare(QStringLiteral("G1 X1"), kMdiAxes, &errors);
     QVERIFY(!next); // G1 without F: the state has no feed, so the line is refused as a program
     QVERIFY(!errors.isEmpty());
-    next = mdi.prepare(QStringLiteral("G0 X1"), kAxes, &errors);
+    next = mdi.prepare(QStringLiteral("G0 X1"), kMdiAxes, &errors);
     QVERIFY(next);
     QCOMPARE(onlyBlock(*next).relative, false);
     QVERIFY(!mdi.modal().relative);
@@ -117,7 +118,7 @@ void TestMdiSession::prepare_badLine_errorAtItsColumn()
     QFETCH(QString, text);
     MdiSession mdi;
     QList<ProgramError> errors;
-    QVERIFY(!mdi.prepare(line, kAxes, &errors));
+    QVERIFY(!mdi.prepare(line, kMdiAxes, &errors));
     QVERIFY(!errors.isEmpty());
     QCOMPARE(errors.first().line, 1);
     QCOMPARE(errors.first().column, column);
@@ -130,10 +131,10 @@ void TestMdiSession::lineRan_selectedSystem_givenOnceThenTheWindowsActiveOne()
 {
     MdiSession mdi;
     QList<ProgramError> errors;
-    QVERIFY(mdi.prepare(QStringLiteral("G55"), kAxes, &errors));
+    QVERIFY(mdi.prepare(QStringLiteral("G55"), kMdiAxes, &errors));
     QCOMPARE(mdi.lineRan(true), std::optional<int>(1));
     QCOMPARE(mdi.modal().coordinateSystem, -1);
-    QVERIFY(mdi.prepare(QStringLiteral("G0 X1"), kAxes, &errors));
+    QVERIFY(mdi.prepare(QStringLiteral("G0 X1"), kMdiAxes, &errors));
     QCOMPARE(mdi.lineRan(true), std::nullopt);
 }
 
@@ -166,12 +167,12 @@ void TestMdiSession::history_boundedWithoutRepeatsInARow()
 {
     MdiSession mdi;
     QList<ProgramError> errors;
-    mdi.prepare(QStringLiteral("G0 X1"), kAxes, &errors);
-    mdi.prepare(QStringLiteral("  G0 X1 "), kAxes, &errors);
-    mdi.prepare(QStringLiteral("G0 X2 Q"), kAxes, &errors); // a refused line too: Up corrects it
+    mdi.prepare(QStringLiteral("G0 X1"), kMdiAxes, &errors);
+    mdi.prepare(QStringLiteral("  G0 X1 "), kMdiAxes, &errors);
+    mdi.prepare(QStringLiteral("G0 X2 Q"), kMdiAxes, &errors); // a refused line too: Up corrects it
     QCOMPARE(mdi.history(), QStringList({QStringLiteral("G0 X1"), QStringLiteral("G0 X2 Q")}));
     for (int i = 0; i < MdiSession::kHistoryLines + 5; ++i)
-        mdi.prepare(QStringLiteral("G0 X%1").arg(i), kAxes, &errors);
+        mdi.prepare(QStringLiteral("G0 X%1").arg(i), kMdiAxes, &errors);
     QCOMPARE(mdi.history().size(), MdiSession::kHistoryLines);
     QCOMPARE(mdi.history().last(), QStringLiteral("G0 X%1").arg(MdiSession::kHistoryLines + 4));
 }
@@ -181,12 +182,12 @@ void TestMdiSession::modalText_saysTheActiveWords()
     MdiSession mdi;
     QCOMPARE(MdiSession::modalText(mdi.modal()), QStringLiteral("G90 G21 G17 G64"));
     QList<ProgramError> errors;
-    QVERIFY(mdi.prepare(QStringLiteral("G91 G20 G19 G61 F12.5"), kAxes, &errors));
+    QVERIFY(mdi.prepare(QStringLiteral("G91 G20 G19 G61 F12.5"), kMdiAxes, &errors));
     mdi.lineRan(true);
     QCOMPARE(MdiSession::modalText(mdi.modal()), QStringLiteral("G91 G20 G19 G61 F12.5"));
     mdi.reset();
     QCOMPARE(MdiSession::modalText(mdi.modal()), QStringLiteral("G90 G21 G17 G64"));
 }
 
-QTEST_GUILESS_MAIN(TestMdiSession)
+STEPDECK_TEST_GUILESS_MAIN(TestMdiSession)
 #include "tst_mdisession.moc"

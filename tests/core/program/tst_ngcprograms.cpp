@@ -1,13 +1,14 @@
 // Programs in LinuxCNC's language (issue 33), our own, in tests/core/program/ngc/: a bolt circle
 // by a while loop with COS and SIN, pockets by a subroutine called twice, an engraving placed
 // and scaled by parameters with if/else and a repeat. Each is checked as the window and the CLI
-// check it (ProgramCheck over the file: worked out, then parsed and checked against the mill of
+// check it (ProgramCheck over the file: worked out, then parsed and checked against the ngcMill of
 // the check's tests) and must pass; its preview path and the blocks read back must be the moves
 // worked out here independently (NgcProgramsTestSupport.h), each block naming the source line it
 // came from (the loop's or the subroutine's body), and its (DEBUG, …)/(PRINT, …) lines messages
 // with the values in place. A copy of each with a deliberate error is refused at the source line.
 #include "NgcProgramsTestSupport.h"
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramReader.h"
 #include "program/language/ProgramExpansion.h"
@@ -20,12 +21,12 @@ using namespace stepdeck::program::ngctest;
 
 namespace {
 
-// The mill of the check's tests (X 0..100, Y 0..200, Z -50..0 mm; X and Z 100 steps/mm, Y 200)
+// The ngcMill of the check's tests (X 0..100, Y 0..200, Z -50..0 mm; X and Z 100 steps/mm, Y 200)
 // standing at machine 0, with G54's zero 20 mm below it on Z: the programs' Z from +2 down to -3
 // lie within the soft limits.
-MachineFacts mill()
+MachineFacts ngcMill()
 {
-    MachineFacts f = checktest::machineFacts(QStringLiteral("mill"));
+    MachineFacts f = checktest::machineFacts(QStringLiteral("ngcMill"));
     f.knownPositions = {{"X", 0}, {"Y", 0}, {"Z", 0}};
     f.coordinateSystems[0] = {{"Z", -20.0}};
     return f;
@@ -39,7 +40,7 @@ QStringList axisNames(const MachineFacts& facts)
     return names;
 }
 
-// Within half a step of the mill's axis (the preview's positions are whole steps).
+// Within half a step of the ngcMill's axis (the preview's positions are whole steps).
 bool nearOnAxis(const QString& axis, double actual, double expected)
 {
     const double steps = axis == QLatin1String("Y") ? 200 : 100;
@@ -95,7 +96,7 @@ void TestNgcPrograms::check_ngcProgram_passesWithTheComputedPath()
     QVERIFY2(!lines.isEmpty(), qPrintable(ngcPath(file)));
     const Expected expected = expectedOf(file, lines);
     QVERIFY(linesFound(expected));
-    const MachineFacts facts = mill();
+    const MachineFacts facts = ngcMill();
     const ProgramCheckResult result =
         ProgramCheck::check(ProgramSource::file(ngcPath(file)), axisNames(facts), facts);
     QVERIFY2(result.ok(), qPrintable(checktest::texts(result.errors).join('\n')));
@@ -136,7 +137,7 @@ void TestNgcPrograms::check_ngcProgram_blocksNameTheirSourceLines()
     const QStringList lines = sourceLines(ngcText(file));
     const Expected expected = expectedOf(file, lines);
     QVERIFY(linesFound(expected));
-    const MachineFacts facts = mill();
+    const MachineFacts facts = ngcMill();
     const ProgramCheckResult result =
         ProgramCheck::check(ProgramSource::file(ngcPath(file)), axisNames(facts), facts);
     QVERIFY2(result.ok(), qPrintable(checktest::texts(result.errors).join('\n')));
@@ -223,7 +224,7 @@ void TestNgcPrograms::check_brokenNgcProgram_refusedAtItsSourceLine()
     QString text = QString::fromUtf8(ngcText(file));
     QCOMPARE(text.count(from + '\n'), 1);
     text.replace(from + '\n', to + '\n');
-    const MachineFacts facts = mill();
+    const MachineFacts facts = ngcMill();
     const ProgramCheckResult result =
         ProgramCheck::check(ProgramSource::bytes(text.toUtf8()), axisNames(facts), facts);
     QCOMPARE(checktest::texts(result.errors), errors);
@@ -251,12 +252,12 @@ void TestNgcPrograms::check_wordAfterALongerValue_namedAtItsSourceColumnOnce()
 {
     QFETCH(QString, program);
     QFETCH(QStringList, errors);
-    const MachineFacts facts = mill();
+    const MachineFacts facts = ngcMill();
     const ProgramCheckResult result =
         ProgramCheck::check(ProgramSource::bytes(program.toUtf8()), axisNames(facts), facts);
     QVERIFY(!result.ok());
     QCOMPARE(checktest::texts(result.errors), errors);
 }
 
-QTEST_MAIN(TestNgcPrograms)
+STEPDECK_TEST_MAIN(TestNgcPrograms)
 #include "tst_ngcprograms.moc"

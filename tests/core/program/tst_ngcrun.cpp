@@ -13,6 +13,7 @@
 #include "NgcProgramsTestSupport.h"
 #include "PathTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramReader.h"
@@ -35,8 +36,8 @@ using namespace stepdeck::program::ngctest;
 namespace {
 
 using Device = test::PtyDevice;
-constexpr double kStepsPerMm = 100;
-constexpr double kStep = 1 / kStepsPerMm + 1e-9;
+constexpr double kNgcStepsPerMm = 100;
+constexpr double kStep = 1 / kNgcStepsPerMm + 1e-9;
 const Point kG54{5, 5, -20}; // machine position of the work zero
 
 using test::near;
@@ -108,7 +109,8 @@ bool TestNgcRun::setUp(const QString& model)
     for (const auto& [name, axis, low, high] : {std::tuple{"X", Axis::X, 0.0, 60.0},
                                                 {"Y", Axis::Y, 0.0, 60.0},
                                                 {"Z", Axis::Z, -30.0, 0.0}}) {
-        MachineAxis a = test::machineAxis(name, "table", axis, AxisUnit::Millimetre, kStepsPerMm);
+        MachineAxis a =
+            test::machineAxis(name, "table", axis, AxisUnit::Millimetre, kNgcStepsPerMm);
         a.softMinimum = low;
         a.softMaximum = high;
         d.axes << a;
@@ -154,9 +156,9 @@ Point TestNgcRun::boardWork()
 {
     return m_device->probe([&] {
         Simulator* sim = m_device->sim();
-        return Point{double(sim->position(Axis::X) - m_origin[0]) / kStepsPerMm - kG54.x,
-                     double(sim->position(Axis::Y) - m_origin[1]) / kStepsPerMm - kG54.y,
-                     double(sim->position(Axis::Z) - m_origin[2]) / kStepsPerMm - kG54.z};
+        return Point{double(sim->position(Axis::X) - m_origin[0]) / kNgcStepsPerMm - kG54.x,
+                     double(sim->position(Axis::Y) - m_origin[1]) / kNgcStepsPerMm - kG54.y,
+                     double(sim->position(Axis::Z) - m_origin[2]) / kNgcStepsPerMm - kG54.z};
     });
 }
 
@@ -192,18 +194,18 @@ QList<Point> TestNgcRun::deviceTargets(qsizetype from, const Point& start)
     const QList<emis::EmisSimulator::AcceptedMove> moves = m_device->probe([&] {
         return static_cast<emis::EmisSimulator*>(m_device->sim())->acceptedMovesWithSpeed();
     });
-    qint64 steps[3] = {std::llround((start.x + kG54.x) * kStepsPerMm),
-                       std::llround((start.y + kG54.y) * kStepsPerMm),
-                       std::llround((start.z + kG54.z) * kStepsPerMm)};
+    qint64 steps[3] = {std::llround((start.x + kG54.x) * kNgcStepsPerMm),
+                       std::llround((start.y + kG54.y) * kNgcStepsPerMm),
+                       std::llround((start.z + kG54.z) * kNgcStepsPerMm)};
     QList<Point> out;
     for (qsizetype i = from; i < moves.size(); ++i) {
         const int axis = moves.at(i).axis.index(); // X, Y, Z: 0, 1, 2
         if (axis < 3)
             steps[axis] += moves.at(i).steps;
         if (i + 1 == moves.size() || moves.at(i + 1).acceptedUs != moves.at(i).acceptedUs)
-            out << Point{double(steps[0]) / kStepsPerMm - kG54.x,
-                         double(steps[1]) / kStepsPerMm - kG54.y,
-                         double(steps[2]) / kStepsPerMm - kG54.z};
+            out << Point{double(steps[0]) / kNgcStepsPerMm - kG54.x,
+                         double(steps[1]) / kNgcStepsPerMm - kG54.y,
+                         double(steps[2]) / kNgcStepsPerMm - kG54.z};
     }
     return out;
 }
@@ -214,9 +216,9 @@ QList<Point> TestNgcRun::boardTrace(qsizetype from)
         QList<Point> out;
         const auto& trace = static_cast<elab::ElabSimulator*>(m_device->sim())->positionTrace();
         for (size_t i = size_t(from); i < trace.size(); ++i)
-            out << Point{double(trace[i][0] - m_origin[0]) / kStepsPerMm - kG54.x,
-                         double(trace[i][1] - m_origin[1]) / kStepsPerMm - kG54.y,
-                         double(trace[i][2] - m_origin[2]) / kStepsPerMm - kG54.z};
+            out << Point{double(trace[i][0] - m_origin[0]) / kNgcStepsPerMm - kG54.x,
+                         double(trace[i][1] - m_origin[1]) / kNgcStepsPerMm - kG54.y,
+                         double(trace[i][2] - m_origin[2]) / kNgcStepsPerMm - kG54.z};
         return out;
     });
 }
@@ -374,5 +376,5 @@ void TestNgcRun::run_ngcProgramBeyondTheLimits_refusedBeforeAnythingMoved()
     QCOMPARE(state.size(), 0);
 }
 
-QTEST_MAIN(TestNgcRun)
+STEPDECK_TEST_MAIN(TestNgcRun)
 #include "tst_ngcrun.moc"

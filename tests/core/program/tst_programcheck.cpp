@@ -4,6 +4,7 @@
 // their model. The preview's figures: tst_programpreview; coordinates, tools and the spindle
 // scale: tst_programcheckdialect.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
@@ -749,5 +750,5 @@ void TestProgramCheck::factsOf_machineReferencedX_onlyXKnownAtZero()
     machine.destroy();
 }
 
-QTEST_GUILESS_MAIN(TestProgramCheck)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramCheck)
 #include "tst_programcheck.moc"

@@ -3,6 +3,7 @@
 // land, G43 with the tool table, and S within the machine's spindle scale. The check's
 // other errors: tst_programcheck.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
@@ -481,5 +482,5 @@ void TestProgramCheckDialect::check_acrossControllers_approximateOrForbidden()
     QVERIFY2(motion.contains("table: contours (G64)"), qPrintable(motion));
 }
 
-QTEST_GUILESS_MAIN(TestProgramCheckDialect)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramCheckDialect)
 #include "tst_programcheckdialect.moc"

@@ -11,6 +11,7 @@
 // file with "limits": "refuse".
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRunner.h"
@@ -172,5 +173,5 @@ void TestProgramCheckedRuns::checkedClean_runsToItsEnd()
     QVERIFY(ran >= 3);
 }
 
-QTEST_MAIN(TestProgramCheckedRuns)
+STEPDECK_TEST_MAIN(TestProgramCheckedRuns)
 #include "tst_programcheckedruns.moc"

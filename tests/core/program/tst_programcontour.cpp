@@ -8,6 +8,7 @@
 // 47); a feed hold shows the axes standing at the board's position while it lasts (issue 47
 // item 8).
 #include "ProgramRunnerTestSupport.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
 #include <cmath>
 
@@ -42,7 +43,7 @@ private:
 
 namespace {
 
-constexpr double kStepsPerMm = 400;
+constexpr double kContourStepsPerMm = 400;
 constexpr double kTick = 1999; // below the raised start speed 2000 (raiseElabFeedLimits)
 
 // A zigzag of `segments` moves of 0.5 mm in X and +-0.5 mm in Y at F240 (4 mm/s: 1 600
@@ -158,8 +159,8 @@ void TestProgramContour::contour_lineCircleLine_oneStreamWithinHalfAStepAtFTheBo
     double worst = 0;
     for (qsizetype k = 0; k < path.size(); ++k) {
         const auto [x, y] = ideal(std::min(double(k + 1) * feed / kTick, total));
-        worst = std::max({worst, std::fabs(path.at(k).x() - x * kStepsPerMm),
-                          std::fabs(path.at(k).y() - y * kStepsPerMm)});
+        worst = std::max({worst, std::fabs(path.at(k).x() - x * kContourStepsPerMm),
+                          std::fabs(path.at(k).y() - y * kContourStepsPerMm)});
     }
     QVERIFY2(worst <= 0.5 + 1e-6, qPrintable(QString::number(worst)));
     QCOMPARE(path.last(), QPoint(0, 400));               // X-1 Y1 after X1 and the circle
@@ -247,8 +248,8 @@ void TestProgramContour::contour_feedHold_stopsOnThePathResumeGoesOnNoTickLost()
         const double t = (s - n * segment) / segment; // 0..1 along segment n
         const double x = 0.5 * (n + t);
         const double y = n % 2 == 0 ? 0.5 * t : 0.5 * (1 - t);
-        worst = std::max({worst, std::fabs(path.at(k).x() - x * kStepsPerMm),
-                          std::fabs(path.at(k).y() - y * kStepsPerMm)});
+        worst = std::max({worst, std::fabs(path.at(k).x() - x * kContourStepsPerMm),
+                          std::fabs(path.at(k).y() - y * kContourStepsPerMm)});
     }
     QVERIFY2(worst <= 0.5 + 1e-6, qPrintable(QString::number(worst)));
 }
@@ -456,5 +457,5 @@ void TestProgramContour::contour_camFeedAboveTheStreamsHighest_runsAtItBoardStep
     QVERIFY(still(*m_elab));
 }
 
-QTEST_MAIN(TestProgramContour)
+STEPDECK_TEST_MAIN(TestProgramContour)
 #include "tst_programcontour.moc"

@@ -11,6 +11,7 @@
 // fails the run LinkDown.
 #include "MachineTestSupport.h"
 #include "PtyDevice.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "program/ArcPath.h"
 #include "program/ProgramParser.h"
@@ -27,7 +28,7 @@ using namespace stepdeck::machine;
 using namespace stepdeck::program;
 
 namespace {
-constexpr double kStepsPerMm = 100;
+constexpr double kCoordinatedStepsPerMm = 100;
 } // namespace
 
 class TestProgramCoordinated : public QObject
@@ -78,8 +79,9 @@ bool TestProgramCoordinated::setUp(const QString& model)
     MachineDescription d;
     d.name = QStringLiteral("coordinated");
     d.controllers = {{"table", model, m_device->path(), {}, {}, {}, {}, {}}};
-    d.axes = {test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kStepsPerMm),
-              test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kStepsPerMm)};
+    d.axes = {
+        test::machineAxis("X", "table", Axis::X, AxisUnit::Millimetre, kCoordinatedStepsPerMm),
+        test::machineAxis("Y", "table", Axis::Y, AxisUnit::Millimetre, kCoordinatedStepsPerMm)};
     m_machine = std::make_unique<Machine>();
     QString error;
     if (!m_machine->create(d, &error))
@@ -152,8 +154,9 @@ qsizetype TestProgramCoordinated::countFrames(const QByteArray& prefix)
 QPointF TestProgramCoordinated::boardMm()
 {
     return m_device->probe([&] {
-        return QPointF(double(m_device->sim()->position(Axis::X) - m_origin[0]) / kStepsPerMm,
-                       double(m_device->sim()->position(Axis::Y) - m_origin[1]) / kStepsPerMm);
+        return QPointF(
+            double(m_device->sim()->position(Axis::X) - m_origin[0]) / kCoordinatedStepsPerMm,
+            double(m_device->sim()->position(Axis::Y) - m_origin[1]) / kCoordinatedStepsPerMm);
     });
 }
 
@@ -191,7 +194,8 @@ void TestProgramCoordinated::emis_lineAndArc_interpolatedAtFArriveTogether()
             continue;
         ++pairs;
         // Along the whole steps the board runs: F within 2 % (the rates are whole steps/s).
-        const double speed = std::hypot(a.runSpeed, b.runSpeed) / kStepsPerMm * 60; // mm/min
+        const double speed =
+            std::hypot(a.runSpeed, b.runSpeed) / kCoordinatedStepsPerMm * 60; // mm/min
         QVERIFY2(std::abs(speed - 600) <= 12,
                  qPrintable(QStringLiteral("%1 mm/min over %2, %3 steps")
                                 .arg(speed)
@@ -252,8 +256,10 @@ void TestProgramCoordinated::emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes
         double end[2] = {};
         for (const auto& [axis, value] : arc->pointAt(k))
             end[axis] = value;
-        atChordEnd = qRound64(end[0] * kStepsPerMm) == qRound64(held.x() * kStepsPerMm) &&
-                     qRound64(end[1] * kStepsPerMm) == qRound64(held.y() * kStepsPerMm);
+        atChordEnd = qRound64(end[0] * kCoordinatedStepsPerMm) ==
+                         qRound64(held.x() * kCoordinatedStepsPerMm) &&
+                     qRound64(end[1] * kCoordinatedStepsPerMm) ==
+                         qRound64(held.y() * kCoordinatedStepsPerMm);
     }
     QVERIFY2(atChordEnd, qPrintable(QStringLiteral("%1, %2").arg(held.x()).arg(held.y())));
     const qsizetype accepted =
@@ -373,5 +379,5 @@ void TestProgramCoordinated::linkLostMidArc_runFailsLinkDownNoChordAfter()
     QVERIFY(boardMm() != QPointF(0, 0));
 }
 
-QTEST_GUILESS_MAIN(TestProgramCoordinated)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramCoordinated)
 #include "tst_programcoordinated.moc"

@@ -1,5 +1,6 @@
 // The program lexer (issue 20): words, values and columns as LinuxCNC reads a line, comments,
 // and the first thing on a line that is not G-code, with its column.
+#include "TestMain.h"
 #include "program/ProgramLexer.h"
 #include <QtTest>
 #include <cstring>
@@ -143,5 +144,5 @@ void TestProgramLexer::lex_repeat_keywordAndCount()
     QVERIFY(!l.keywordValue);
 }
 
-QTEST_APPLESS_MAIN(TestProgramLexer)
+STEPDECK_TEST_APPLESS_MAIN(TestProgramLexer)
 #include "tst_programlexer.moc"

@@ -3,6 +3,7 @@
 // by hand from the program, the machine "mill" (X 0..100, Y 0..200, Z -50..0 mm, A degrees) and
 // the offsets the row sets: one row per block kind the lowering emits.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/CanonText.h"
 #include "program/ProgramLowering.h"
 #include "program/ProgramReader.h"
@@ -314,5 +315,5 @@ void TestProgramLowering::lower_arcThatCannotBeLaid_errorAndNoMotion()
         QVERIFY(!std::holds_alternative<motion::ArcFeed>(c));
 }
 
-QTEST_GUILESS_MAIN(TestProgramLowering)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramLowering)
 #include "tst_programlowering.moc"

@@ -2,6 +2,7 @@
 // state each block carries, every error with its line and column, repeats and their
 // partners, and the stream: byte by byte, random chunks and garbage give the same result.
 #include "ProgramParserTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramParser.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -567,5 +568,5 @@ void TestProgramParser::parse_wordColumns_keptForTheCheck()
     QCOMPARE(p->allBlocks().at(0).columnOf({}), 5);
 }
 
-QTEST_APPLESS_MAIN(TestProgramParser)
+STEPDECK_TEST_APPLESS_MAIN(TestProgramParser)
 #include "tst_programparser.moc"

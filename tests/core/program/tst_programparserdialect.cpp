@@ -3,6 +3,7 @@
 // N numbers, CRLF), S on any line, and LinuxCNC's whole line (several actions, issue 50). The words
 // and errors of every line: tst_programparser; drilling cycles: tst_drillcycle.
 #include "ProgramParserTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramParser.h"
 #include <QtTest>
 
@@ -474,5 +475,5 @@ void TestProgramParserDialect::parse_dollarHAndSlashOff_keepTheirColumns()
     QVERIFY(!p->index->blockDelete); // kept for every reading again
 }
 
-QTEST_APPLESS_MAIN(TestProgramParserDialect)
+STEPDECK_TEST_APPLESS_MAIN(TestProgramParserDialect)
 #include "tst_programparserdialect.moc"

@@ -2,6 +2,7 @@
 // (extents, path, estimated time), its bounds over a million-pass repeat, and the work
 // coordinates it and the check use (issue 28, item 3).
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include <QtTest>
 
 using namespace stepdeck;
@@ -337,5 +338,5 @@ void TestProgramPreview::preview_parseErrorsOrRefusedStart_noPath()
     QCOMPARE(from.preview.lines, 3);
 }
 
-QTEST_GUILESS_MAIN(TestProgramPreview)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramPreview)
 #include "tst_programpreview.moc"

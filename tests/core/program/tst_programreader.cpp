@@ -3,6 +3,7 @@
 // it was read is refused, never run; the check's one pass gives what the check of the parsed
 // program gives, also where a repeat reads back more than the reader keeps.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramReader.h"
 #include <QRandomGenerator>
 #include <QTemporaryDir>
@@ -13,7 +14,7 @@ using namespace stepdeck::program::checktest;
 
 namespace {
 
-const QStringList kAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+const QStringList kReaderAxes{QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
 
 // `lines` lines in the style of a CAM finishing pass, with what makes the index matter: modal
 // words that change (G91/G90, F, G20/G21), comments and blank lines, and a repeat.
@@ -40,7 +41,7 @@ QByteArray longProgram(int lines)
 QList<ProgramBlock> streamedBlocks(const QByteArray& text, std::optional<Program>* program)
 {
     QList<ProgramBlock> out;
-    ProgramParser parser(kAxes);
+    ProgramParser parser(kReaderAxes);
     parser.setSink([&out](ProgramBlock&& b) { out << b; });
     parser.feed(text);
     *program = parser.finish(nullptr);
@@ -168,7 +169,7 @@ void TestProgramReader::at_blockDeleteEitherWay_readBackAsTheParserRead()
         text += line % 10 == 0 ? QByteArray("/G91 G0 Z0.1\n")
                                : "G90 G1 X" + QByteArray::number(line % 50) + " F600\n";
     QList<ProgramBlock> given;
-    ProgramParser parser(kAxes);
+    ProgramParser parser(kReaderAxes);
     parser.setBlockDelete(blockDelete);
     parser.setSink([&given](ProgramBlock&& b) { given << b; });
     parser.feed(text);
@@ -184,7 +185,7 @@ void TestProgramReader::at_blockDeleteEitherWay_readBackAsTheParserRead()
         QVERIFY2(b, qPrintable(reader.error()));
         QCOMPARE(*b, given.at(i));
     }
-    ProgramReader pass(ProgramSource::bytes(text), kAxes, {}, blockDelete);
+    ProgramReader pass(ProgramSource::bytes(text), kReaderAxes, {}, blockDelete);
     const std::optional<Program> again = pass.finish(nullptr);
     QVERIFY(again);
     QCOMPARE(again->blockCount, p->blockCount);
@@ -277,7 +278,7 @@ void TestProgramReader::firstBlockAtLine_andEnclosingRepeat_bothModes()
     streamedBlocks(text, &p);
     QVERIFY(p);
     std::unique_ptr<ProgramReader> reader =
-        onePass ? std::make_unique<ProgramReader>(ProgramSource::bytes(text), kAxes)
+        onePass ? std::make_unique<ProgramReader>(ProgramSource::bytes(text), kReaderAxes)
                 : std::make_unique<ProgramReader>(*p);
     QCOMPARE(reader->firstBlockAtLine(1), 0);
     QCOMPARE(reader->firstBlockAtLine(2), 1); // line 3
@@ -326,7 +327,7 @@ void TestProgramReader::check_onePass_sameAsParsedProgram()
     QVERIFY(p);
     const ProgramCheckResult parsed = ProgramCheck::check(*p, facts, fromLine);
     const ProgramCheckResult onePass =
-        ProgramCheck::check(ProgramSource::bytes(text), kAxes, facts, fromLine);
+        ProgramCheck::check(ProgramSource::bytes(text), kReaderAxes, facts, fromLine);
     QCOMPARE(texts(onePass.errors), texts(parsed.errors));
     QCOMPARE(onePass.ok(), parsed.ok());
     QCOMPARE(onePass.program.has_value(), parsed.ok());
@@ -344,7 +345,7 @@ void TestProgramReader::check_progressCancels_nothingKnown()
     int calls = 0;
     qint64 last = -1;
     const ProgramCheckResult result = ProgramCheck::check(
-        ProgramSource::bytes(text), kAxes, longMill(), 1, [&](qint64 done, qint64 total) {
+        ProgramSource::bytes(text), kReaderAxes, longMill(), 1, [&](qint64 done, qint64 total) {
             // Progress grows and never passes the length.
             [&] {
                 QVERIFY(done >= last);
@@ -369,11 +370,11 @@ void TestProgramReader::check_onePassParseError_parserErrorsOnly()
     text.replace("%\nG21", "%\nG0 X5000\nG21");
     text.replace("M2\n", "G1 X1 Q5\nM2\n");
     const ProgramCheckResult result =
-        ProgramCheck::check(ProgramSource::bytes(text), kAxes, longMill());
+        ProgramCheck::check(ProgramSource::bytes(text), kReaderAxes, longMill());
     QCOMPARE(result.errors.size(), 1);
     QCOMPARE(result.errors.first().line, 10000);
     QVERIFY(!result.program);
 }
 
-QTEST_GUILESS_MAIN(TestProgramReader)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramReader)
 #include "tst_programreader.moc"

@@ -2,6 +2,7 @@
 // G1 makes, the model's parameter rules judged against what the device holds, the spindle
 // range and an incomplete setup, and the check refusing with them what the run would refuse;
 // the limits both take a feed or S above the machine's highest by (issue 50, FeedLimit).
+#include "TestMain.h"
 #include "program/FeedLimit.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
@@ -534,5 +535,5 @@ void TestProgramRules::check_elab_feedAboveTheHighest_runsAtItWithNote()
     QCOMPARE(noteTexts, notes);
 }
 
-QTEST_GUILESS_MAIN(TestProgramRules)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramRules)
 #include "tst_programrules.moc"

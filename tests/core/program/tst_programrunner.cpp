@@ -4,6 +4,7 @@
 // moves they accepted and in which order, the frames they received, whether they stand still.
 // What each block sends (spindle, rates, G93, coordinates, arcs): tst_programrunnermotion.
 #include "ProgramRunnerTestSupport.h"
+#include "TestMain.h"
 
 using namespace stepdeck;
 using namespace stepdeck::machine;
@@ -475,5 +476,5 @@ void TestProgramRunner::runFromLine_restoredSpindleOutOfRange_refusedByTheCheckN
     QCOMPARE(boardRpm(), quint32(0));
 }
 
-QTEST_MAIN(TestProgramRunner)
+STEPDECK_TEST_MAIN(TestProgramRunner)
 #include "tst_programrunner.moc"

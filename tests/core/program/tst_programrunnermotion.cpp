@@ -3,6 +3,7 @@
 // work offsets and coordinate systems, and arcs as chords, asserted at the devices (the frames
 // they received, where they stand, whether they stand still).
 #include "ProgramRunnerTestSupport.h"
+#include "TestMain.h"
 
 using namespace stepdeck;
 using namespace stepdeck::machine;
@@ -547,5 +548,5 @@ void TestProgramRunnerMotion::touchOff_tableMode_g43WithAnEmptyTableRefusedNothi
     QVERIFY(still(*m_elab));
 }
 
-QTEST_MAIN(TestProgramRunnerMotion)
+STEPDECK_TEST_MAIN(TestProgramRunnerMotion)
 #include "tst_programrunnermotion.moc"

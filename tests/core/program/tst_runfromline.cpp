@@ -4,6 +4,7 @@
 // restored spindle as the run will send them (RunFromState::prelude, one function for both).
 // The run itself, asserted at the device: tst_programrunner's runFromLine_ tests.
 #include "ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramReader.h"
 #include "program/RunFromLine.h"
 
@@ -260,5 +261,5 @@ void TestRunFromLine::check_fromLine_previewWalksTheApproachNotCountedAsBlocks()
     QVERIFY(result.preview.estimatedSeconds > 0);
 }
 
-QTEST_MAIN(TestRunFromLine)
+STEPDECK_TEST_MAIN(TestRunFromLine)
 #include "tst_runfromline.moc"

@@ -1,6 +1,7 @@
 // A machine's tool table in LinuxCNC's tool.tbl format (ToolTable, issue 29): the columns
 // StepDeck uses, the ones it reads past, comments, CRLF, every error at its line and column,
 // and the text it writes reads back to the same table.
+#include "TestMain.h"
 #include "program/ToolTable.h"
 #include <QtTest>
 
@@ -89,5 +90,5 @@ void TestToolTable::text_writtenTable_readsBackTheSame()
     QVERIFY(table.text().startsWith("T1 P1 Z-0.5 D0\n"));
 }
 
-QTEST_APPLESS_MAIN(TestToolTable)
+STEPDECK_TEST_APPLESS_MAIN(TestToolTable)
 #include "tst_tooltable.moc"

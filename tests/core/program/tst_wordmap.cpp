@@ -1,5 +1,6 @@
 // WordMap: QMap's interface and order for a line's few words, kept in place (issue 29). Each
 // sequence of operations is run on a WordMap and on a QMap; both must agree at every step.
+#include "TestMain.h"
 #include "program/WordMap.h"
 #include <QMap>
 #include <QRandomGenerator>
@@ -145,5 +146,5 @@ void TestWordMap::iterators_rangeForAndKeys_giveValuesInKeyOrder()
     QCOMPARE(m.keys(), (QStringList{"X", "Z"}));
 }
 
-QTEST_GUILESS_MAIN(TestWordMap)
+STEPDECK_TEST_GUILESS_MAIN(TestWordMap)
 #include "tst_wordmap.moc"

@@ -9,4 +9,4 @@ stepdeck_add_test(tst_softlimitsmodels SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sof
 stepdeck_add_test(tst_modelcompleteness
                   SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_modelcompleteness.cpp
                   LABELS integration TIMEOUT 120)
-target_compile_definitions(tst_modelcompleteness PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_modelcompleteness STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")

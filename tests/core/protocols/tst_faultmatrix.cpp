@@ -4,6 +4,7 @@
 // simulated axes standing still -- or, where nothing can reach the device (the port vanished),
 // that the host says the motion is unconfirmed instead of claiming a stop.
 #include "ModelBench.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
@@ -31,9 +32,9 @@ const char* motionName(Motion m)
 }
 
 // One model's adapter against its simulator over an in-memory link.
-struct Bench : test::ModelBench
+struct FaultBench : test::ModelBench
 {
-    explicit Bench(const ModelInfo* model) : ModelBench(model, 150) {}
+    explicit FaultBench(const ModelInfo* model) : ModelBench(model, 150) {}
 
     CommandResult run(const std::function<void(RequestId)>& call, int timeoutMs = 5000)
     {
@@ -127,7 +128,7 @@ void TestFaultMatrix::fault_duringMotion_deviceEndsStillOrHostSaysUnconfirmed()
     QFETCH(QString, model);
     QFETCH(Fault, fault);
     QFETCH(Motion, motion);
-    Bench b(findModel(model));
+    FaultBench b(findModel(model));
     QVERIFY(b.prepare());
     QVERIFY(b.start(motion));
     b.sim->clearReceivedFrames();
@@ -163,5 +164,5 @@ void TestFaultMatrix::fault_duringMotion_deviceEndsStillOrHostSaysUnconfirmed()
     QTRY_VERIFY_WITH_TIMEOUT(b.sim->standingStill(), 5000);
 }
 
-QTEST_GUILESS_MAIN(TestFaultMatrix)
+STEPDECK_TEST_GUILESS_MAIN(TestFaultMatrix)
 #include "tst_faultmatrix.moc"

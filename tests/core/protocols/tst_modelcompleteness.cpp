@@ -4,6 +4,7 @@
 // fault soak, the fault matrix, the benchmarks or the German setup pages.
 #include "ModelBench.h"
 #include "SchemaWords.h"
+#include "TestMain.h"
 #include "model/ModelOperations.h"
 #include "protocols/Registry.h"
 #include "sim/TrafficMeter.h"
@@ -233,5 +234,5 @@ void TestModelCompleteness::schemaWords_everyOneTranslated()
     QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QStringLiteral(" | "))));
 }
 
-QTEST_GUILESS_MAIN(TestModelCompleteness)
+STEPDECK_TEST_GUILESS_MAIN(TestModelCompleteness)
 #include "tst_modelcompleteness.moc"

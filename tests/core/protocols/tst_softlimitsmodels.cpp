@@ -8,6 +8,7 @@
 // Every model runs the same code: what differs comes from its descriptor (ModelInfo: the
 // set-up before motion, the soak profile's speeds, Capabilities), so a new model needs no edit.
 #include "ModelBench.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/Controller.h"
 #include "protocols/Registry.h"
@@ -26,9 +27,9 @@ constexpr qint64 kTravel = 2000; // the limit lies this far from the referenced 
 // of varying serial latency on a loaded machine (CI has seen 1 to 3 steps).
 constexpr qint64 kEstimateSlack = 25;
 
-struct Bench : test::ModelBench
+struct SoftLimitBench : test::ModelBench
 {
-    explicit Bench(const ModelInfo* model) : ModelBench(model, 500)
+    explicit SoftLimitBench(const ModelInfo* model) : ModelBench(model, 500)
     {
         refusals = std::make_unique<QSignalSpy>(ctl.get(), &Controller::jogRefused);
     }
@@ -107,7 +108,7 @@ private:
     // Jogs X towards +; returns the highest device position seen (machine steps). For a model
     // that jogs by targets, *highestTarget is the farthest target the device accepted for X
     // (Simulator::acceptedMoves: each move's length from where the axis stood).
-    qint64 jogIntoTheLimit(Bench& b, qint64 offset, qint64* highestTarget);
+    qint64 jogIntoTheLimit(SoftLimitBench& b, qint64 offset, qint64* highestTarget);
 };
 
 void TestSoftLimitsModels::limits_holdAtTheDevice_data()
@@ -117,7 +118,8 @@ void TestSoftLimitsModels::limits_holdAtTheDevice_data()
         QTest::newRow(qPrintable(m.id)) << m.id;
 }
 
-qint64 TestSoftLimitsModels::jogIntoTheLimit(Bench& b, qint64 offset, qint64* highestTarget)
+qint64 TestSoftLimitsModels::jogIntoTheLimit(SoftLimitBench& b, qint64 offset,
+                                             qint64* highestTarget)
 {
     qint64 highest = std::numeric_limits<qint64>::min();
     *highestTarget = highest;
@@ -180,7 +182,7 @@ qint64 TestSoftLimitsModels::jogIntoTheLimit(Bench& b, qint64 offset, qint64* hi
 void TestSoftLimitsModels::limits_holdAtTheDevice()
 {
     QFETCH(QString, model);
-    Bench b(findModel(model));
+    SoftLimitBench b(findModel(model));
     QVERIFY(b.prepareAndReference());
     const qint64 home = b.hostX();
     const qint64 offset = b.simX() - home; // device counter vs. machine steps
@@ -262,5 +264,5 @@ void TestSoftLimitsModels::limits_holdAtTheDevice()
     QVERIFY2(!y.message.contains(QLatin1String("soft limit")), qPrintable(y.message));
 }
 
-QTEST_MAIN(TestSoftLimitsModels)
+STEPDECK_TEST_MAIN(TestSoftLimitsModels)
 #include "tst_softlimitsmodels.moc"

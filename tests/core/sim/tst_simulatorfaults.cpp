@@ -1,5 +1,6 @@
 // Simulator base: the random faults of issue 12 (drop, corrupt, delay, noise, freeze), drawn
 // from the seeded generator so that a run can be repeated.
+#include "TestMain.h"
 #include "sim/Simulator.h"
 #include <QSignalSpy>
 #include <QtTest>
@@ -178,5 +179,5 @@ void TestSimulatorFaults::freeze_answersUntilTheTimeThenNothing()
     QCOMPARE(exchange(sim, 1).last(), request(0));
 }
 
-QTEST_GUILESS_MAIN(TestSimulatorFaults)
+STEPDECK_TEST_GUILESS_MAIN(TestSimulatorFaults)
 #include "tst_simulatorfaults.moc"

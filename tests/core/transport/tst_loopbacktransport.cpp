@@ -1,4 +1,5 @@
 // LoopbackTransport: the in-memory pair used by unit tests and the in-process simulator.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "transport/LoopbackTransport.h"
 #include <QtTest>
@@ -115,5 +116,5 @@ void TestLoopbackTransport::close_emitsClosedOnce()
     delete device;
 }
 
-QTEST_GUILESS_MAIN(TestLoopbackTransport)
+STEPDECK_TEST_GUILESS_MAIN(TestLoopbackTransport)
 #include "tst_loopbacktransport.moc"

@@ -1,5 +1,6 @@
 // SerialPortAccess: the message for a serial port the user may not open (names the group to
 // join) and the probe that gathers its facts from the device node and the user's groups.
+#include "TestMain.h"
 #include "transport/SerialPortAccess.h"
 #include <QTemporaryFile>
 #include <QtTest>
@@ -111,5 +112,5 @@ void TestSerialPortAccess::probe_missingDevice_groupUnknown_textNamesDialout()
     QVERIFY(a.deniedText().contains("'dialout'"));
 }
 
-QTEST_GUILESS_MAIN(TestSerialPortAccess)
+STEPDECK_TEST_GUILESS_MAIN(TestSerialPortAccess)
 #include "tst_serialportaccess.moc"

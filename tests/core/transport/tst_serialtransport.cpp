@@ -1,5 +1,6 @@
 // SerialTransport over a real pseudo-terminal (PtyEndpoint is the device side), the way the
 // end-to-end tests and stepdeck-sim use it. Line: E-LAB's 57600 8N2.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabModel.h"
 #include "sim/PtyEndpoint.h"
@@ -206,5 +207,5 @@ void TestSerialTransport::open_secondTimeSamePath_fails()
     QVERIFY(first.isOpen());
 }
 
-QTEST_GUILESS_MAIN(TestSerialTransport)
+STEPDECK_TEST_GUILESS_MAIN(TestSerialTransport)
 #include "tst_serialtransport.moc"

@@ -1,4 +1,5 @@
 // TcpTransport against a local QTcpServer standing in for a serial device server.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "transport/TcpTransport.h"
 #include <QTcpServer>
@@ -175,5 +176,5 @@ void TestTcpTransport::discardOutput_dropsQueuedBytes()
              qPrintable(QString::number(atPeer.size())));
 }
 
-QTEST_GUILESS_MAIN(TestTcpTransport)
+STEPDECK_TEST_GUILESS_MAIN(TestTcpTransport)
 #include "tst_tcptransport.moc"

@@ -1,4 +1,5 @@
 // WireBudget: what a serial line can have carried of the host's bytes, on an invented clock.
+#include "TestMain.h"
 #include "transport/WireBudget.h"
 #include <QtTest>
 
@@ -131,5 +132,5 @@ void TestWireBudget::write_clockFarPastTwoSeconds_exactTimes()
     QVERIFY(wire.nsUntilBacklog(0, nowNs) <= characters(12000032) + 2);
 }
 
-QTEST_GUILESS_MAIN(TestWireBudget)
+STEPDECK_TEST_GUILESS_MAIN(TestWireBudget)
 #include "tst_wirebudget.moc"

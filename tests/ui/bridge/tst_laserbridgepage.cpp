@@ -2,6 +2,7 @@
 // laser on a real pty; start, a home and a move answered, the live log and the axis table,
 // stop; refusals in the form; German labels.
 #include "../EmisUiFixture.h"
+#include "TestMain.h"
 #include "bridge/LaserBridgePage.h"
 #include "connection/ConnectionBar.h"
 #include "connection/PortScanner.h"
@@ -248,5 +249,5 @@ void TestLaserBridgePage::window_withPage_fitsSmallScreen()
              qPrintable(QStringLiteral("%1x%2").arg(page.width()).arg(page.height())));
 }
 
-QTEST_MAIN(TestLaserBridgePage)
+STEPDECK_TEST_MAIN(TestLaserBridgePage)
 #include "tst_laserbridgepage.moc"

@@ -1,6 +1,7 @@
 // File dialogs remember the last folder (issue 11): per dialog key, a key used for the first
 // time starts where any file dialog was last used, a folder that no longer exists is not
 // offered, and every dialog stays non-native and non-modal (issue 7, rule 5).
+#include "TestMain.h"
 #include "common/Dialogs.h"
 #include <QApplication>
 #include <QFileDialog>
@@ -119,5 +120,5 @@ void TestDialogs::documentsCannotBeMade_homeOffered()
     QVERIFY(QFile::remove(documents));
 }
 
-QTEST_MAIN(TestDialogs)
+STEPDECK_TEST_MAIN(TestDialogs)
 #include "tst_dialogs.moc"

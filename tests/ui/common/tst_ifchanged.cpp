@@ -1,6 +1,7 @@
 // The setters for panels that refresh on every status poll (issue 21, idle cost): the same
 // value sends the widget nothing, a new value is set as before.
 #include "EventCounter.h"
+#include "TestMain.h"
 #include "common/IfChanged.h"
 #include <QEvent>
 #include <QLabel>
@@ -70,5 +71,5 @@ void TestIfChanged::styleSheet_repolishedOnlyWhenChanged()
     QCOMPARE(label.styleSheet(), next);
 }
 
-QTEST_MAIN(TestIfChanged)
+STEPDECK_TEST_MAIN(TestIfChanged)
 #include "tst_ifchanged.moc"

@@ -2,6 +2,7 @@
 // pseudo-terminal (QSerialPort), and shows the disconnected state without freezing when the
 // peer vanishes (the USB adapter pulled), then reconnects.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "common/LedIndicator.h"
 #include "console/TrafficConsole.h"
 #include "jog/IncrementalJogWidget.h"
@@ -245,5 +246,5 @@ void TestConnectionBar::pollRate_newRate_shownWithoutRelayout()
     QCOMPARE(bar->rateLabel()->size(), size);
 }
 
-QTEST_MAIN(TestConnectionBar)
+STEPDECK_TEST_MAIN(TestConnectionBar)
 #include "tst_connectionbar.moc"

@@ -4,6 +4,7 @@
 // back -- positions unknown, nothing resumed, the operator told. Settings are isolated
 // (QStandardPaths test mode): the user's files are never touched.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "connection/ConnectionSettings.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
@@ -317,5 +318,5 @@ void TestConnectionSettings::operatorDisconnect_deviceBack_staysDisconnected()
     QCOMPARE(f.session->linkState(), LinkState::Disconnected);
 }
 
-QTEST_MAIN(TestConnectionSettings)
+STEPDECK_TEST_MAIN(TestConnectionSettings)
 #include "tst_connectionsettings.moc"

@@ -1,5 +1,6 @@
 // Auto-reconnect's matching (issue 10): the watcher follows one USB device by VID:PID and
 // serial number through fake port lists, and the scanner lists ports off the GUI thread.
+#include "TestMain.h"
 #include "connection/PortScanner.h"
 #include "connection/PortWatcher.h"
 #include <QSignalSpy>
@@ -186,5 +187,5 @@ void TestPortWatcher::scanner_listsOffTheGuiThread_andReportsChangesOnly()
     QVERIFY(scanner.ports().isEmpty());
 }
 
-QTEST_GUILESS_MAIN(TestPortWatcher)
+STEPDECK_TEST_GUILESS_MAIN(TestPortWatcher)
 #include "tst_portwatcher.moc"

@@ -3,6 +3,7 @@
 // non-modal box, a run shows the progress the drive reports, STOP ends it with the drive
 // standing still, and closed loop on is what the drive read back.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "drives/ClosedLoopPanel.h"
 #include "drives/DrivePanel.h"
 #include <QComboBox>
@@ -208,5 +209,5 @@ void TestClosedLoopPanel::workflow_referenceThenClosedLoopOn_readBack()
              qPrintable(panel()->nextStepText()));
 }
 
-QTEST_MAIN(TestClosedLoopPanel)
+STEPDECK_TEST_MAIN(TestClosedLoopPanel)
 #include "tst_closedlooppanel.moc"

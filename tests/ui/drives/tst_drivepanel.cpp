@@ -2,6 +2,7 @@
 // silent is marked while the others keep answering; the dock exists only for multi-drive
 // models.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "common/AxisListBar.h"
 #include "common/AxisRowFilter.h"
 #include "drives/DriveListModel.h"
@@ -242,5 +243,5 @@ void TestDrivePanel::dock_hiddenForSingleBoardModel()
     QVERIFY(!listed);
 }
 
-QTEST_MAIN(TestDrivePanel)
+STEPDECK_TEST_MAIN(TestDrivePanel)
 #include "tst_drivepanel.moc"

@@ -2,6 +2,7 @@
 // "Reset position error" button (not the CLI's `reset-position-error`), and that button
 // clears the error at the simulated drive selected in the drive table.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "drives/DrivePanel.h"
 #include "drives/PositionErrorResetButton.h"
 #include "protocols/nanotec/NanotecCodec.h"
@@ -67,5 +68,5 @@ void TestPositionErrorReset::positionError_messageNamesTheButton_buttonClearsIt(
     QTRY_VERIFY(panel->scanState().contains(QStringLiteral("axis Y reset")));
 }
 
-QTEST_MAIN(TestPositionErrorReset)
+STEPDECK_TEST_MAIN(TestPositionErrorReset)
 #include "tst_positionerrorreset.moc"

@@ -2,4 +2,4 @@
 stepdeck_add_test(tst_emismainwindow SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_emismainwindow.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../EmisUiFixture.h
                   LABELS ui LIBS stepdeck_ui)
-target_include_directories(tst_emismainwindow PRIVATE ${CMAKE_CURRENT_LIST_DIR}/..)
+stepdeck_test_includes(tst_emismainwindow ${CMAKE_CURRENT_LIST_DIR}/..)

@@ -3,6 +3,7 @@
 // inputs and switchable outputs in the status panel, motion-unconfirmed, the refused stop,
 // and storing / reading the power-on values from the setup page.
 #include "EmisUiFixture.h"
+#include "TestMain.h"
 #include "common/LedIndicator.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -214,5 +215,5 @@ void TestEmisMainWindow::storedBar_hiddenForElab()
     QVERIFY(!programsDock->toggleViewAction()->isVisible());
 }
 
-QTEST_MAIN(TestEmisMainWindow)
+STEPDECK_TEST_MAIN(TestEmisMainWindow)
 #include "tst_emismainwindow.moc"

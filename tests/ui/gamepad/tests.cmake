@@ -2,5 +2,5 @@
 if(TARGET SDL2::SDL2)
   stepdeck_add_test(tst_sdlgamepaddevice SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sdlgamepaddevice.cpp
                     LABELS ui LIBS stepdeck_ui)
-  target_compile_definitions(tst_sdlgamepaddevice PRIVATE STEPDECK_HAVE_SDL2)
+  stepdeck_test_definitions(tst_sdlgamepaddevice STEPDECK_HAVE_SDL2)
 endif()

@@ -2,6 +2,7 @@
 // only asked a few times a second whether one was plugged in (issue 21: 100 polls a second
 // woke the idle GUI for nothing). No device can be plugged in here (no /dev/input): the test
 // checks the state without one, as on most operator stations.
+#include "TestMain.h"
 #include "gamepad/SdlGamepadDevice.h"
 #include <QtTest>
 
@@ -25,5 +26,5 @@ void TestSdlGamepadDevice::noDevice_pollsOnlyForHotplug()
     QVERIFY(SdlGamepadDevice::kIdlePollMs > SdlGamepadDevice::kSamplePollMs);
 }
 
-QTEST_MAIN(TestSdlGamepadDevice)
+STEPDECK_TEST_MAIN(TestSdlGamepadDevice)
 #include "tst_sdlgamepaddevice.moc"

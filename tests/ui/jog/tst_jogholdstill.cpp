@@ -9,6 +9,7 @@
 // another axis. A pointer input whose pad moved ends its jog (the device ramps to zero and
 // stands still while the button is still held) and stays ended until the button is released.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -21,8 +22,6 @@ using namespace stepdeck;
 using namespace stepdeck::test;
 
 namespace {
-constexpr int kDeadman = 9; // SDL_CONTROLLER_BUTTON_LEFTSHOULDER, the default
-constexpr int kLeftX = 0;
 constexpr int kSpacerHeight = 260;
 
 int valueIndex(Axis axis)
@@ -276,5 +275,5 @@ void TestJogHoldStill::pad_frameChangedWhileHeld_endsDragUntilRelease()
     QVERIFY2(m_f->simStandsStill(Axis::Y, 4, &why), qPrintable(why));
 }
 
-QTEST_MAIN(TestJogHoldStill)
+STEPDECK_TEST_MAIN(TestJogHoldStill)
 #include "tst_jogholdstill.moc"

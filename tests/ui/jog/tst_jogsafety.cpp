@@ -4,6 +4,7 @@
 // the device received the stop (zero jog rate, <XOFF> or <BEL>). After STOP, PANIC and focus
 // loss the same input, still held, does not restart the axis until it has been released.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -16,8 +17,6 @@ using namespace stepdeck;
 using namespace stepdeck::test;
 
 namespace {
-constexpr int kDeadman = 9; // SDL_CONTROLLER_BUTTON_LEFTSHOULDER, the default
-constexpr int kLeftX = 0;
 
 // Swallows the pad's mouse release: the window system saw it, the pad never does.
 class EatRelease : public QObject
@@ -287,5 +286,5 @@ void TestJogSafety::gamepad_freshSamples_keepJoggingPastTheLease()
     QVERIFY2(m_f->simStandsStill(Axis::X, 8, &why), qPrintable(why));
 }
 
-QTEST_MAIN(TestJogSafety)
+STEPDECK_TEST_MAIN(TestJogSafety)
 #include "tst_jogsafety.moc"

@@ -3,6 +3,7 @@
 // in a label whose size never depends on its text (docs/architecture.md, "Main window
 // layout"). No link is needed: the figures come from the description and the sessions' options.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogAxisMap.h"
 #include "jog/JogController.h"
 #include "jog/JogStopDistanceLabel.h"
@@ -133,5 +134,5 @@ void TestJogStopDistance::size_doesNotDependOnTheText()
     QCOMPARE(label->geometry(), geometry);
 }
 
-QTEST_MAIN(TestJogStopDistance)
+STEPDECK_TEST_MAIN(TestJogStopDistance)
 #include "tst_jogstopdistance.moc"

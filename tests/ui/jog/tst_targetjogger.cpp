@@ -2,6 +2,7 @@
 // each sent only after the previous one arrived; releasing stops sending. Asserted at the
 // simulated axes: what they received and that they stand still afterwards.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "controller/TargetJogger.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogController.h"
@@ -199,5 +200,5 @@ void TestTargetJogger::incremental_movesByStepSize()
     QTRY_VERIFY(!simMoving());
 }
 
-QTEST_MAIN(TestTargetJogger)
+STEPDECK_TEST_MAIN(TestTargetJogger)
 #include "tst_targetjogger.moc"

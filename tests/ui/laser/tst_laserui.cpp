@@ -5,6 +5,7 @@
 //   lights "motion unconfirmed" while every target is tracked;
 // - the setup page offers no buttons that would do nothing and says why.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "connection/ConnectionBar.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -154,5 +155,5 @@ void TestLaserUi::setupPage_noParameters_noButtonsAndSaysWhy()
              qPrintable(page->messageText()));
 }
 
-QTEST_MAIN(TestLaserUi)
+STEPDECK_TEST_MAIN(TestLaserUi)
 #include "tst_laserui.moc"

@@ -3,17 +3,17 @@ stepdeck_add_test(tst_machineeditor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machin
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
-target_compile_definitions(tst_machineeditor PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_machineeditor STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 stepdeck_add_test(tst_machineeditorfiles SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineeditorfiles.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
-target_compile_definitions(tst_machineeditorfiles PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_machineeditorfiles STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 stepdeck_add_test(tst_machinefileactions SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinefileactions.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/MachineEditorTestSupport.h
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h
                   LABELS ui LIBS stepdeck_ui)
-target_compile_definitions(tst_machinefileactions PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_machinefileactions STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The main window running a machine of several controllers (issue 19, ui/machine/): an E-LAB
 # and a Nanotec simulator on two pseudo-terminals (MachineWindowRig), on a 1366x768 screen.
 foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machinejog
@@ -26,7 +26,7 @@ foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machin
                     LABELS ui LIBS stepdeck_ui)
 endforeach()
 # Re-open machine edits through the editor (MachineEditorTestSupport.h names the examples).
-target_compile_definitions(tst_machinereopen PRIVATE STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+stepdeck_test_definitions(tst_machinereopen STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 # The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
 stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
                   LABELS unit LIBS stepdeck_ui)

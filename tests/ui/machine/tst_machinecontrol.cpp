@@ -8,6 +8,7 @@
 // confirmed" line (a drive that did not answer) goes once the device reports standstill later,
 // and does not outlive a reference run.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -292,5 +293,5 @@ void TestMachineControl::notConfirmed_nanotecReferenceRun_lineDoesNotOutliveIt()
              qPrintable(m_f->window->lastError()));
 }
 
-QTEST_MAIN(TestMachineControl)
+STEPDECK_TEST_MAIN(TestMachineControl)
 #include "tst_machinecontrol.moc"

@@ -4,6 +4,7 @@
 // positioning move -- which the E-LAB does not report -- an estimate or the target marked as
 // such, never the target as if reached.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "machine/MachineDro.h"
@@ -172,5 +173,5 @@ void TestMachineDro::disconnected_showsNoLinkNotReferenced()
         QTRY_COMPARE(dro()->stateText(a), QStringLiteral("NO LINK"));
 }
 
-QTEST_MAIN(TestMachineDro)
+STEPDECK_TEST_MAIN(TestMachineDro)
 #include "tst_machinedro.moc"

@@ -3,6 +3,7 @@
 // as the operator expects, a message that never re-flows the layout, and the 1366x768 fit.
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
+#include "TestMain.h"
 #include "common/ElidedLabel.h"
 #include <QCheckBox>
 #include <QHeaderView>
@@ -374,5 +375,5 @@ void TestMachineEditor::sixAxes_fit1366x768()
     QVERIFY(!axes->horizontalScrollBar()->isVisible());
 }
 
-QTEST_MAIN(TestMachineEditor)
+STEPDECK_TEST_MAIN(TestMachineEditor)
 #include "tst_machineeditor.moc"

@@ -4,6 +4,7 @@
 // the connected controller, and the unsaved-changes question.
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
+#include "TestMain.h"
 #include <QFileDialog>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -193,5 +194,5 @@ void TestMachineEditorFiles::close_withUnsavedChanges_asksFirst()
     QVERIFY(!editor->isVisible());
 }
 
-QTEST_MAIN(TestMachineEditorFiles)
+STEPDECK_TEST_MAIN(TestMachineEditorFiles)
 #include "tst_machineeditorfiles.moc"

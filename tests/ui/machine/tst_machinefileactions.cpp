@@ -3,6 +3,7 @@
 // the main window's File menu saying what the validator found in an opened file.
 #include "../UiTestSupport.h"
 #include "MachineEditorTestSupport.h"
+#include "TestMain.h"
 #include "connection/ConnectionSettings.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
@@ -360,5 +361,5 @@ void TestMachineFileActions::editorSaved_machineOpen_saysItStillRunsAndOffersReo
     QTRY_VERIFY(!actions->editor());
 }
 
-QTEST_MAIN(TestMachineFileActions)
+STEPDECK_TEST_MAIN(TestMachineFileActions)
 #include "tst_machinefileactions.moc"

@@ -3,6 +3,7 @@
 // go-to while the first still moves sends nothing; "arrived" is said only once the board
 // stands at the target, and Esc during a go-to says "stopped" only at the board's standstill.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "machine/MachineGoTo.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
@@ -155,5 +156,5 @@ void TestMachineGoTo::escDuringGo_saysStoppedAtDeviceStandstill()
                  qPrintable(goTo()->resultText()));
 }
 
-QTEST_MAIN(TestMachineGoTo)
+STEPDECK_TEST_MAIN(TestMachineGoTo)
 #include "tst_machinegoto.moc"

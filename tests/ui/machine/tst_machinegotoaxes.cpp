@@ -4,6 +4,7 @@
 // axis the controllers confirmed. An unreferenced axis among them refuses the whole line and
 // neither device gets a move. Typing a target checks its axis; nothing checked is refused.
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineGoTo.h"
 #include "position/PositionPanel.h"
@@ -107,5 +108,5 @@ void TestMachineGoToAxes::typing_checksItsAxis_noneChecked_refused()
     QCOMPARE(goTo()->resultText(), QStringLiteral("Go-to refused: no axis is checked."));
 }
 
-QTEST_MAIN(TestMachineGoToAxes)
+STEPDECK_TEST_MAIN(TestMachineGoToAxes)
 #include "tst_machinegotoaxes.moc"

@@ -4,6 +4,7 @@
 // drive (A, 100 steps/deg) simulator on two pseudo-terminals.
 #include "../LayoutChecks.h"
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "gamepad/GamepadPanel.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogAxisMap.h"
@@ -28,9 +29,7 @@ using namespace stepdeck::test;
 
 namespace {
 
-constexpr int kDeadman = 9; // the gamepad's default dead-man button
-constexpr int kLeftX = 0;   // gamepad axis of the X slot (the pad's horizontal)
-constexpr int kRightX = 2;  // gamepad axis of the U slot (the other stick)
+constexpr int kRightX = 2; // gamepad axis of the U slot (the other stick)
 
 // The highest X jog rate the E-LAB board received (<DC4>XXXX,YYYY;ZZZZ., manual: SetJogSpeed).
 int highestElabJogX(const QList<QByteArray>& frames)
@@ -218,5 +217,5 @@ void TestMachineJog::sixAxes_otherStickReachesABC_fitsAt1366x768()
     QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QStringLiteral("; "))));
 }
 
-QTEST_MAIN(TestMachineJog)
+STEPDECK_TEST_MAIN(TestMachineJog)
 #include "tst_machinejog.moc"

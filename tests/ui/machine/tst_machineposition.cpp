@@ -4,6 +4,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "common/LedIndicator.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
@@ -263,9 +264,6 @@ void TestMachinePosition::zero_reopenMachine_offsetsRemembered()
     QCOMPARE(goTo->labelText(), QStringLiteral("Go to (work):"));
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestMachinePosition>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestMachinePosition, runOnLaptopScreen<TestMachinePosition>)
 
 #include "tst_machineposition.moc"

@@ -4,6 +4,7 @@
 // until referenced as after any reconnect; refused with the reason while anything moves.
 #include "MachineEditorTestSupport.h"
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineEditor.h"
 #include "machine/MachineFileActions.h"
@@ -120,5 +121,5 @@ void TestMachineReopen::reopen_mdiLineHeldAtM0_refusesWithTheReason()
     editor->close();
 }
 
-QTEST_MAIN(TestMachineReopen)
+STEPDECK_TEST_MAIN(TestMachineReopen)
 #include "tst_machinereopen.moc"

@@ -6,6 +6,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "common/LedIndicator.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
@@ -288,9 +289,6 @@ void TestMachineSafety::jog_heldKeyOnRotary_limitedToMaxJogSpeedAtTheDrive()
     QTest::keyRelease(window(), Qt::Key_Home);
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestMachineSafety>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestMachineSafety, runOnLaptopScreen<TestMachineSafety>)
 
 #include "tst_machinesafety.moc"

@@ -7,6 +7,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "MachineWindowRig.h"
+#include "TestMain.h"
 #include "common/LedIndicator.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
@@ -331,9 +332,6 @@ void TestMachineWindow::setup_machineFileWrittenOnConnect_formShowsTheWrittenVal
     QVERIFY(showsWritten(QStringLiteral("start-speed"), 2500));
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestMachineWindow>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestMachineWindow, runOnLaptopScreen<TestMachineWindow>)
 
 #include "tst_machinewindow.moc"

@@ -1,5 +1,6 @@
 // The work offsets of a machine (issue 19): zero only at a known position, work <-> machine
 // coordinates in the axis' unit, remembered per machine file by its absolute path.
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineWorkOffsets.h"
 #include <QDir>
@@ -250,5 +251,5 @@ void TestMachineWorkOffsets::load_fileOfBeforeTheSystems_itsOriginsAreG54()
     QCOMPARE(offsets.offset(QStringLiteral("Z")), -3.5);
 }
 
-QTEST_GUILESS_MAIN(TestMachineWorkOffsets)
+STEPDECK_TEST_GUILESS_MAIN(TestMachineWorkOffsets)
 #include "tst_machineworkoffsets.moc"

@@ -1,6 +1,7 @@
 // The trapezoidal estimate of a positioning move: starts at the start speed, never passes
 // the target, arrives exactly at the computed duration, and takes the triangular shape when
 // the move is too short to reach the maximum speed.
+#include "TestMain.h"
 #include "machine/MoveEstimate.h"
 #include <QtTest>
 
@@ -62,5 +63,5 @@ void TestMoveEstimate::invalidProfile_estimatesNothing()
     QCOMPARE(MoveEstimate::duration(1000, MoveProfile{100, 1000, 0}), 0.0);
 }
 
-QTEST_MAIN(TestMoveEstimate)
+STEPDECK_TEST_MAIN(TestMoveEstimate)
 #include "tst_moveestimate.moc"

@@ -2,6 +2,7 @@
 // output drives a laser (issue 50 item 5): it names the laser, its switch turns the beam on at
 // the board (the in-process E-LAB simulator) and off again, as the board reports it.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineDescription.h"
@@ -76,5 +77,5 @@ void TestSpindleCoolantBar::laser_namedAndSwitchedAtTheBoard()
     context.closeMachine();
 }
 
-QTEST_MAIN(TestSpindleCoolantBar)
+STEPDECK_TEST_MAIN(TestSpindleCoolantBar)
 #include "tst_spindlecoolantbar.moc"

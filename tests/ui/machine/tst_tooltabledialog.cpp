@@ -1,6 +1,7 @@
 // The machine's tool table in the window (issue 29): MachineTools keeps LinuxCNC tool.tbl text
 // per machine, the dialog saves it only when every line reads and shows the first error in a
 // line reserved for it.
+#include "TestMain.h"
 #include "machine/MachineTools.h"
 #include "machine/ToolTableDialog.h"
 #include <QLabel>
@@ -123,5 +124,5 @@ void TestToolTableDialog::dialogOpen_otherMachineLoaded_showsItsTableNeverSavesT
     QVERIFY(dialog.errorText().isEmpty()); // nothing edited: nothing to say
 }
 
-QTEST_MAIN(TestToolTableDialog)
+STEPDECK_TEST_MAIN(TestToolTableDialog)
 #include "tst_tooltabledialog.moc"

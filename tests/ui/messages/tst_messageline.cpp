@@ -2,6 +2,7 @@
 // one line (elided, the full text in the tooltip), its size never depends on the text, a
 // label re-elides when its width changes, and the log keeps every message with date and time,
 // bounded.
+#include "TestMain.h"
 #include "common/ElidedLabel.h"
 #include "messages/MessageLine.h"
 #include "messages/MessageLog.h"
@@ -196,5 +197,5 @@ void TestMessageLine::log_everyMessageWithDateAndTime_bounded()
         QStringLiteral("message %1").arg(StatusMessages::kLogLimit + 4)));
 }
 
-QTEST_MAIN(TestMessageLine)
+STEPDECK_TEST_MAIN(TestMessageLine)
 #include "tst_messageline.moc"

@@ -1,6 +1,7 @@
 // The status bar's message line: every message has an owner that clears or replaces it,
 // every message expires, the newest live one is shown, and the log keeps them all with their
 // times, bounded.
+#include "TestMain.h"
 #include "messages/StatusMessages.h"
 #include <QSignalSpy>
 #include <QtTest>
@@ -111,5 +112,5 @@ void TestStatusMessages::log_isBounded_oldestDropped()
     QCOMPARE(m.log().constLast().text, QStringLiteral("message %1").arg(total - 1));
 }
 
-QTEST_MAIN(TestStatusMessages)
+STEPDECK_TEST_MAIN(TestStatusMessages)
 #include "tst_statusmessages.moc"

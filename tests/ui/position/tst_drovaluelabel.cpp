@@ -3,6 +3,7 @@
 // digits (issue 21: three DRO repaints and a relayout of the position dock per poll); a new
 // value does both as before.
 #include "EventCounter.h"
+#include "TestMain.h"
 #include "position/DroValueLabel.h"
 #include <QApplication>
 #include <QVBoxLayout>
@@ -79,5 +80,5 @@ void TestDroValueLabel::setter_sameValue_noRelayoutNoRepaint()
     QCOMPARE(paints.count > 0, repaint);
 }
 
-QTEST_MAIN(TestDroValueLabel)
+STEPDECK_TEST_MAIN(TestDroValueLabel)
 #include "tst_drovaluelabel.moc"

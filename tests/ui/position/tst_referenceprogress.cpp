@@ -3,6 +3,7 @@
 // runs at once, so its label has no "…". On the connection bar's E-LAB, a machine of one
 // controller (issue 28, item 0).
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "position/ReferencePanel.h"
@@ -93,5 +94,5 @@ void TestReferenceProgress::safetyBarButton_noEllipsis_runsAtOnce()
     QVERIFY(!m_f->window->referencePanel()->isRunning());
 }
 
-QTEST_MAIN(TestReferenceProgress)
+STEPDECK_TEST_MAIN(TestReferenceProgress)
 #include "tst_referenceprogress.moc"

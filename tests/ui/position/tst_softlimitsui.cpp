@@ -3,6 +3,7 @@
 // limit stops inside it (the simulated axis' position) and may move back; Go to position and
 // Go to work zero move a referenced machine.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/IncrementalJogWidget.h"
 #include "jog/JogPanel.h"
 #include "machine/MachineGoTo.h"
@@ -119,5 +120,5 @@ void TestSoftLimitsUi::limits_refuseMovesAndStopJogInside()
     QVERIFY2(m_f->simStandsStill(Axis::X, 5, &why), qPrintable(why));
 }
 
-QTEST_MAIN(TestSoftLimitsUi)
+STEPDECK_TEST_MAIN(TestSoftLimitsUi)
 #include "tst_softlimitsui.moc"

@@ -4,6 +4,7 @@
 // with the axis standing at the board, M0 holds it until Resume, Up brings back the last line,
 // and a program does not start while a line runs.
 #include "ProgramPageFixture.h"
+#include "TestMain.h"
 #include "machine/MachineMdi.h"
 #include "program/MdiLine.h"
 #include <QLineEdit>
@@ -179,5 +180,5 @@ void TestMdiLine::feedOverride_ofThePage_reachesTheLinesRunner()
     QCOMPARE(machineMdi()->runner()->feedOverride(), 50.0);
 }
 
-QTEST_MAIN(TestMdiLine)
+STEPDECK_TEST_MAIN(TestMdiLine)
 #include "tst_mdiline.moc"

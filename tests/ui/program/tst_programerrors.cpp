@@ -6,6 +6,7 @@
 // on one puts the editor's cursor at its line and column with the focus; the list follows each
 // check; nothing of the page moves.
 #include "ProgramPageFixture.h"
+#include "TestMain.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramErrorList.h"
 #include <QListWidget>
@@ -200,8 +201,5 @@ void TestProgramErrors::entryPastTheExcerpt_saysSo()
     QCOMPARE(editor.textCursor().blockNumber(), 1); // a line it has: there
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestProgramErrors>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestProgramErrors, runOnLaptopScreen<TestProgramErrors>)
 #include "tst_programerrors.moc"

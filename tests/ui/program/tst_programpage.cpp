@@ -6,6 +6,7 @@
 // its errors (issue 47 item 12). Holding, stopping and faults while a program runs:
 // tst_programpagerun.
 #include "ProgramPageFixture.h"
+#include "TestMain.h"
 #include "program/ProgramErrorList.h"
 #include <QListWidget>
 #include <QTabWidget>
@@ -465,8 +466,5 @@ void TestProgramPage::preview_errorsComeAndGo_layoutHoldsStill()
     QCOMPARE(placeOf(preview->pathView()), drawing);
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestProgramPage>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestProgramPage, runOnLaptopScreen<TestProgramPage>)
 #include "tst_programpage.moc"

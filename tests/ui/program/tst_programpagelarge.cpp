@@ -5,6 +5,7 @@
 // (the moves asserted at the simulated board); a file changed on disk after its check is
 // refused before anything reaches the board.
 #include "../machine/MachineWindowRig.h"
+#include "TestMain.h"
 #include "program/ProgramControls.h"
 #include "program/ProgramEditor.h"
 #include "program/ProgramFiles.h"
@@ -196,5 +197,5 @@ void TestProgramPageLarge::run_stoppedWhileCheckedBeforeIt_neverStartsNothingSen
     QCOMPARE(m_rig.elab->position(Axis::Y), 0);
 }
 
-QTEST_MAIN(TestProgramPageLarge)
+STEPDECK_TEST_MAIN(TestProgramPageLarge)
 #include "tst_programpagelarge.moc"

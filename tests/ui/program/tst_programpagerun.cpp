@@ -5,6 +5,7 @@
 // a lost link fails naming the line; closing the machine aborts.
 #include "../LayoutChecks.h"
 #include "ProgramPageFixture.h"
+#include "TestMain.h"
 #include "machine/MachineDro.h"
 #include "machine/SpindleCoolantBar.h"
 #include "position/PositionPanel.h"
@@ -482,8 +483,5 @@ void TestProgramPageRun::touchOff_zeroXAtM6_restCutsInTheNewZeroAtTheBoard()
     QCOMPARE(m_rig.elab->position(Axis::X) - zeroedAt, qint64(800));
 }
 
-int main(int argc, char** argv)
-{
-    return runOnLaptopScreen<TestProgramPageRun>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestProgramPageRun, runOnLaptopScreen<TestProgramPageRun>)
 #include "tst_programpagerun.moc"

@@ -7,6 +7,8 @@
 // run adds its entries.
 #include "PathViewTestSupport.h"
 #include "PreviewTestData.h"
+#include "PreviewViewKindMetaType.h"
+#include "TestMain.h"
 #include "program/PreviewStyle.h"
 #include "program/ProgramPathView.h"
 #include <QApplication>
@@ -21,8 +23,6 @@ using namespace stepdeck;
 using namespace stepdeck::ui;
 using namespace stepdeck::previewtest;
 using namespace stepdeck::pathviewtest;
-
-Q_DECLARE_METATYPE(stepdeck::ui::PreviewViewKind)
 
 class TestProgramPathView : public QObject
 {
@@ -398,5 +398,5 @@ void TestProgramPathView::legend_runStarts_nothingMoves()
     QCOMPARE(view.toWidget({40, 20}), corner);
 }
 
-QTEST_MAIN(TestProgramPathView)
+STEPDECK_TEST_MAIN(TestProgramPathView)
 #include "tst_programpathview.moc"

@@ -4,6 +4,8 @@
 // Ctrl+arrow keys turn by a step, a new check keeps the turn, and a turn projects into the same
 // memory.
 #include "PathViewTestSupport.h"
+#include "PreviewViewKindMetaType.h"
+#include "TestMain.h"
 #include <QComboBox>
 #include <QSettings>
 #include <QStandardPaths>
@@ -13,8 +15,6 @@ using namespace stepdeck;
 using namespace stepdeck::ui;
 using namespace stepdeck::previewtest;
 using namespace stepdeck::pathviewtest;
-
-Q_DECLARE_METATYPE(stepdeck::ui::PreviewViewKind)
 
 class TestProgramPathViewOrbit : public QObject
 {
@@ -261,5 +261,5 @@ void TestProgramPathViewOrbit::orbit_drag_projectsIntoTheSameMemory()
     QCOMPARE(view.points().size(), qsizetype(8));
 }
 
-QTEST_MAIN(TestProgramPathViewOrbit)
+STEPDECK_TEST_MAIN(TestProgramPathViewOrbit)
 #include "tst_programpathvieworbit.moc"

@@ -4,13 +4,13 @@
 // points, the isometric one at the true projection's scale), a quarter turn puts X where Y
 // was, the elevation stays within +-90 and the azimuth within (-180, 180], and every
 // orientation is a rotation (no length across the screen changes).
+#include "PreviewViewKindMetaType.h"
+#include "TestMain.h"
 #include "program/PreviewProjection.h"
 #include <QtTest>
 #include <cmath>
 
 using namespace stepdeck::ui;
-
-Q_DECLARE_METATYPE(stepdeck::ui::PreviewViewKind)
 
 class TestPreviewProjection : public QObject
 {
@@ -282,5 +282,5 @@ void TestPreviewProjection::orbit_anyOrientation_isARotation()
     QVERIFY2(near(o.project({3, -2, 0.5}), sum, 1e-12), qPrintable(text(sum)));
 }
 
-QTEST_GUILESS_MAIN(TestPreviewProjection)
+STEPDECK_TEST_GUILESS_MAIN(TestPreviewProjection)
 #include "tst_programpreviewprojection.moc"

@@ -2,14 +2,14 @@
 // only for axes with limits and in work coordinates, a point without a known position on a
 // view's axis breaks the path, and a block's segments are found for the running line.
 #include "PreviewTestData.h"
+#include "PreviewViewKindMetaType.h"
+#include "TestMain.h"
 #include "program/PreviewScene.h"
 #include <QtTest>
 
 using namespace stepdeck;
 using namespace stepdeck::ui;
 using namespace stepdeck::previewtest;
-
-Q_DECLARE_METATYPE(stepdeck::ui::PreviewViewKind)
 
 class TestPreviewScene : public QObject
 {
@@ -123,5 +123,5 @@ void TestPreviewScene::projectPosition_missingAxis_none()
     QVERIFY(!PreviewScene::projectPosition(PreviewViewKind::Front, xy));
 }
 
-QTEST_GUILESS_MAIN(TestPreviewScene)
+STEPDECK_TEST_GUILESS_MAIN(TestPreviewScene)
 #include "tst_programpreviewscene.moc"

@@ -2,6 +2,7 @@
 // about a point keeps the plane point under it; panning moves the drawing by the drag; the
 // scale stays within its bounds; a plane point is placed on a widget point (a turned view
 // keeps its middle where it was, issue 47 item 14).
+#include "TestMain.h"
 #include "program/PreviewViewport.h"
 #include <QtTest>
 
@@ -23,7 +24,7 @@ private Q_SLOTS:
 };
 
 namespace {
-bool near(const QPointF& a, const QPointF& b, double tolerance = 1e-9)
+bool nearPoint(const QPointF& a, const QPointF& b, double tolerance = 1e-9)
 {
     return std::abs(a.x() - b.x()) <= tolerance && std::abs(a.y() - b.y()) <= tolerance;
 }
@@ -35,9 +36,9 @@ void TestPreviewViewport::fit_bounds_insideTheAreaCentredYUp()
     const QRectF area(10, 20, 400, 200);
     v.fit(QRectF(QPointF(-10, 0), QPointF(30, 10)), area); // 40 x 10: width decides
     QCOMPARE(v.scale(), 10.0);
-    QVERIFY(near(v.map({-10, 0}), {10, 170}));    // lower left: the area's left, below centre
-    QVERIFY(near(v.map({30, 10}), {410, 70}));    // upper right
-    QVERIFY(near(v.map({10, 5}), area.center())); // centre on centre
+    QVERIFY(nearPoint(v.map({-10, 0}), {10, 170}));    // lower left: the area's left, below centre
+    QVERIFY(nearPoint(v.map({30, 10}), {410, 70}));    // upper right
+    QVERIFY(nearPoint(v.map({10, 5}), area.center())); // centre on centre
 }
 
 void TestPreviewViewport::fit_line_getsRoomAround()
@@ -68,7 +69,7 @@ void TestPreviewViewport::zoomAt_widgetPoint_keepsThePlanePointUnderIt()
     const QPointF under = v.unmap(at);
     const double before = v.scale();
     v.zoomAt(at, factor);
-    QVERIFY(near(v.map(under), at, 1e-6));
+    QVERIFY(nearPoint(v.map(under), at, 1e-6));
     QCOMPARE(v.scale(), before * factor);
 }
 
@@ -78,8 +79,8 @@ void TestPreviewViewport::panBy_delta_movesEveryPointByIt()
     v.fit(QRectF(0, 0, 100, 50), QRectF(0, 0, 400, 200));
     const QPointF a = v.map({0, 0}), b = v.map({70, -3});
     v.panBy({25, -7});
-    QVERIFY(near(v.map({0, 0}), a + QPointF(25, -7)));
-    QVERIFY(near(v.map({70, -3}), b + QPointF(25, -7)));
+    QVERIFY(nearPoint(v.map({0, 0}), a + QPointF(25, -7)));
+    QVERIFY(nearPoint(v.map({70, -3}), b + QPointF(25, -7)));
 }
 
 void TestPreviewViewport::transform_samePlaceAsMap()
@@ -89,7 +90,7 @@ void TestPreviewViewport::transform_samePlaceAsMap()
     v.zoomAt({40, 50}, 1.7);
     v.panBy({-9, 2});
     for (const QPointF& p : {QPointF(0, 0), QPointF(-5, 15), QPointF(3.25, -1)})
-        QVERIFY(near(v.transform().map(p), v.map(p)));
+        QVERIFY(nearPoint(v.transform().map(p), v.map(p)));
 }
 
 void TestPreviewViewport::zoomAt_farOut_scaleStaysWithinBounds()
@@ -122,10 +123,10 @@ void TestPreviewViewport::placeAt_planePoint_landsOnTheWidgetPointScaleKept()
     const double scale = v.scale();
     const QPointF other = v.map({1, 2}) - v.map(plane); // how far another point is from it
     v.placeAt(plane, widget);
-    QVERIFY(near(v.map(plane), widget, 1e-6));
+    QVERIFY(nearPoint(v.map(plane), widget, 1e-6));
     QCOMPARE(v.scale(), scale);
-    QVERIFY(near(v.map({1, 2}) - v.map(plane), other, 1e-6)); // moved along, not scaled
+    QVERIFY(nearPoint(v.map({1, 2}) - v.map(plane), other, 1e-6)); // moved along, not scaled
 }
 
-QTEST_GUILESS_MAIN(TestPreviewViewport)
+STEPDECK_TEST_GUILESS_MAIN(TestPreviewViewport)
 #include "tst_programpreviewviewport.moc"

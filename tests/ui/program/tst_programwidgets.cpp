@@ -2,6 +2,7 @@
 // with their messages and the running line, and is read-only while running; the files open,
 // save and remember programs and refuse what they cannot read; the estimated times are marked
 // as estimates (the path view: tst_programpathview).
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "program/ProgramBackgroundCheck.h"
 #include "program/ProgramControls.h"
@@ -467,5 +468,5 @@ void TestProgramWidgets::controls_timeLeft_followsTheOverrideBoxAtOnce()
     QCOMPARE(controls.progressText(), QStringLiteral("not running"));
 }
 
-QTEST_MAIN(TestProgramWidgets)
+STEPDECK_TEST_MAIN(TestProgramWidgets)
 #include "tst_programwidgets.moc"

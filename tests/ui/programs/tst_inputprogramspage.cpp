@@ -2,6 +2,7 @@
 // inputs, commands checked while typing (nothing is sent while one is invalid), writing and
 // erasing as the board sees it, and the deliberate override for reference-switch inputs.
 #include "EmisUiFixture.h"
+#include "TestMain.h"
 #include "programs/InputProgramsPage.h"
 #include <QLineEdit>
 #include <QListWidget>
@@ -130,5 +131,5 @@ void TestInputProgramsPage::drafts_keptPerInput()
     QCOMPARE(page()->commandsEdit()->toPlainText(), QStringLiteral("W7"));
 }
 
-QTEST_MAIN(TestInputProgramsPage)
+STEPDECK_TEST_MAIN(TestInputProgramsPage)
 #include "tst_inputprogramspage.moc"

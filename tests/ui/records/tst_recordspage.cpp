@@ -1,6 +1,7 @@
 // Records page: all 32 records of a drive in a table, a record edited and written (stored and
 // verified by the adapter), and the error memory decoded.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "records/RecordsPage.h"
 #include <QComboBox>
 #include <QCompleter>
@@ -156,5 +157,5 @@ void TestRecordsPage::driveChoice_manyDrives_foundByTypedName()
     QCOMPARE(toFeeder, 0);
 }
 
-QTEST_MAIN(TestRecordsPage)
+STEPDECK_TEST_MAIN(TestRecordsPage)
 #include "tst_recordspage.moc"

@@ -1,6 +1,7 @@
 // The safety bar's banner as a pure function: a machine that may still be moving is said
 // first and never called stopped; "Release the emergency stop" only when there is one to
 // release; setup before referencing; "Ready" only while connected and referenced.
+#include "TestMain.h"
 #include "safety/SafetyBanner.h"
 #include <QtTest>
 
@@ -166,5 +167,5 @@ void TestSafetyBanner::neverClaimsAStop()
     }
 }
 
-QTEST_MAIN(TestSafetyBanner)
+STEPDECK_TEST_MAIN(TestSafetyBanner)
 #include "tst_safetybanner.moc"

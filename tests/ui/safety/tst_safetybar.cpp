@@ -3,6 +3,7 @@
 // connection to a board whose setup is incomplete; the permanent note of a model without a
 // stop command.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "safety/SafetyBanner.h"
 #include "safety/SafetyBar.h"
 #include <QLabel>
@@ -122,5 +123,5 @@ void TestSafetyBar::noStopCommand_permanentNoteAndLabels()
     QVERIFY(bar()->stopButton()->isEnabled()); // still ends every jog input at once
 }
 
-QTEST_MAIN(TestSafetyBar)
+STEPDECK_TEST_MAIN(TestSafetyBar)
 #include "tst_safetybar.moc"

@@ -3,6 +3,7 @@
 // open, with a popup open -- by key and by clicking the buttons. Dialogs are non-modal, so
 // the buttons stay clickable. After a panic the UI says that positions are lost.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "console/TrafficConsole.h"
 #include "jog/JogController.h"
 #include "jog/JogPanel.h"
@@ -314,5 +315,5 @@ void TestSafetyShortcuts::popupOpen_clickOnStop_stops()
     combo->hidePopup();
 }
 
-QTEST_MAIN(TestSafetyShortcuts)
+STEPDECK_TEST_MAIN(TestSafetyShortcuts)
 #include "tst_safetyshortcuts.moc"

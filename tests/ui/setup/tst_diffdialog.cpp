@@ -1,5 +1,6 @@
 // DiffDialog: what a loaded parameter file changes; "Changes only" (on at first) hides the
 // rows the file leaves as they are (issue 31).
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "model/ModelInfo.h"
 #include "protocols/Registry.h"
@@ -59,5 +60,5 @@ void TestDiffDialog::changesOnly_off_showsEveryRow()
     QCOMPARE(dialog.visibleRowCount(), 1);
 }
 
-QTEST_MAIN(TestDiffDialog)
+STEPDECK_TEST_MAIN(TestDiffDialog)
 #include "tst_diffdialog.moc"

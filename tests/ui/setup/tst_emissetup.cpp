@@ -2,6 +2,7 @@
 // value back, so nothing on the page may claim a verification (issue 31): no Write & verify
 // button, and a write asked to verify says it verified nothing, from the first message on.
 #include "../EmisUiFixture.h"
+#include "TestMain.h"
 #include "setup/SetupPage.h"
 #include <QPushButton>
 
@@ -55,5 +56,5 @@ void TestEmisSetup::write_emisWriteOnly_saysNotVerified()
     QVERIFY(!page()->messageText().contains(QStringLiteral("verified by")));
 }
 
-QTEST_MAIN(TestEmisSetup)
+STEPDECK_TEST_MAIN(TestEmisSetup)
 #include "tst_emissetup.moc"

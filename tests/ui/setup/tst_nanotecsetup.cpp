@@ -3,6 +3,7 @@
 // bus writes that one value and nothing else; the preview lists exactly what will be sent,
 // per drive, before anything is sent. Checked at the simulated bus (frames it received).
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupPage.h"
 #include "setup/WritePreview.h"
@@ -198,5 +199,5 @@ void TestNanotecSetup::preview_nanotec_showsOldAndNew()
     page()->openPreview()->reject();
 }
 
-QTEST_MAIN(TestNanotecSetup)
+STEPDECK_TEST_MAIN(TestNanotecSetup)
 #include "tst_nanotecsetup.moc"

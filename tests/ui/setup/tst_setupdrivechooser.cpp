@@ -3,6 +3,7 @@
 // write goes to the drive shown (frames at the simulated bus); unwritten edits keep the
 // columns until they are written.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "setup/ParameterField.h"
 #include "setup/SetupDriveChooser.h"
 #include "setup/SetupPage.h"
@@ -136,5 +137,5 @@ void TestSetupDriveChooser::threeDrives_noChooser()
         QVERIFY(current(a));
 }
 
-QTEST_MAIN(TestSetupDriveChooser)
+STEPDECK_TEST_MAIN(TestSetupDriveChooser)
 #include "tst_setupdrivechooser.moc"

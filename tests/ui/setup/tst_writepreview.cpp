@@ -1,6 +1,7 @@
 // WritePreview: the confirmation before a setup write shows every value old -> new (issue 31).
 // The old value is what the device last reported; one written since and not read back, one
 // never read and one the protocol cannot read say so, never a default in their place.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "model/ModelInfo.h"
 #include "protocols/Registry.h"
@@ -105,5 +106,5 @@ void TestWritePreview::rows_valueWithoutUnit_saysNoUnit()
     QCOMPARE(rows.first().value, QStringLiteral("1200"));
 }
 
-QTEST_MAIN(TestWritePreview)
+STEPDECK_TEST_MAIN(TestWritePreview)
 #include "tst_writepreview.moc"

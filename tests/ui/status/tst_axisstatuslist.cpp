@@ -2,6 +2,7 @@
 // found by name or address, the moving drives first on request, the chosen drive's `$` word
 // (Nanotec 5.21) decoded below it. What the lamps say is what the simulated drives report.
 #include "../NanotecUiFixture.h"
+#include "TestMain.h"
 #include "common/AxisListBar.h"
 #include "common/AxisRowFilter.h"
 #include "common/LedIndicator.h"
@@ -178,5 +179,5 @@ void TestAxisStatusList::fullBus_254Drives_listedAndFound()
     QTRY_COMPARE_WITH_TIMEOUT(lamp(0, Model::Moving), State::Off, 15000);
 }
 
-QTEST_MAIN(TestAxisStatusList)
+STEPDECK_TEST_MAIN(TestAxisStatusList)
 #include "tst_axisstatuslist.moc"

@@ -35,10 +35,11 @@ set(_workspaces_sources ${CMAKE_CURRENT_LIST_DIR}/tst_workspaces.cpp
     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h
     ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h)
 stepdeck_add_test(tst_workspaces SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui)
-stepdeck_add_test(tst_workspaces_fullhd SOURCES ${_workspaces_sources} LABELS ui LIBS stepdeck_ui
+stepdeck_add_test(tst_workspaces_fullhd STANDALONE SOURCES ${_workspaces_sources} LABELS ui
+                  LIBS stepdeck_ui
                   SPLIT run_onTheScreen_noScrollBarNoTextCut
                         setup_fullHdMaximised_noPageSaidToScroll)
-target_compile_definitions(tst_workspaces_fullhd PRIVATE STEPDECK_FULL_HD)
+stepdeck_test_definitions(tst_workspaces_fullhd STEPDECK_FULL_HD)
 # Issue 31: the built-in demo that tools/run opens.
 stepdeck_add_test(tst_demomachine SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_demomachine.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/../UiTestSupport.h

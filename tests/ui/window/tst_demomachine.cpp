@@ -3,6 +3,7 @@
 // workspace; Reference all, and the program passes its check and runs; a demo file the
 // newcomer changed is kept.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "position/ReferencePanel.h"
@@ -84,5 +85,5 @@ void TestDemoMachine::open_keepsAnEditedProgram()
     QVERIFY(QFile::exists(ui::DemoMachine::machinePath()));
 }
 
-QTEST_MAIN(TestDemoMachine)
+STEPDECK_TEST_MAIN(TestDemoMachine)
 #include "tst_demomachine.moc"

@@ -2,6 +2,7 @@
 // from the window's own actions (STOP and PANIC first, the keyboard jog's keys with the axes
 // they move), and the command line's usage; each opens non-modal.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogPanel.h"
 #include "window/DocumentationDialog.h"
 #include "window/HelpMenu.h"
@@ -158,5 +159,5 @@ void TestHelpMenu::documentation_action_opensEveryDocumentWithItsImages()
     dialog->close();
 }
 
-QTEST_MAIN(TestHelpMenu)
+STEPDECK_TEST_MAIN(TestHelpMenu)
 #include "tst_helpmenu.moc"

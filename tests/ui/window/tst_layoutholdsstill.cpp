@@ -6,6 +6,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
 #include "machine/MachineControl.h"
@@ -228,9 +229,7 @@ void TestLayoutHoldsStill::longMessage_movesNothing_textsInFull()
 }
 
 // The window under test lives on a 1366x768 screen.
-int main(int argc, char** argv)
-{
-    return stepdeck::test::runOnLaptopScreen<TestLayoutHoldsStill>(argc, argv);
-}
+STEPDECK_TEST_MAIN_WITH(TestLayoutHoldsStill,
+                        stepdeck::test::runOnLaptopScreen<TestLayoutHoldsStill>)
 
 #include "tst_layoutholdsstill.moc"

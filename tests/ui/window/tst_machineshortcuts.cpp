@@ -6,6 +6,7 @@
 // no text the same keys work, and STOP (Esc) and PANIC (F1) work from the text fields too, on
 // a reference run under way (tst_safetyshortcuts has them from the other fields and dialogs).
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogPanel.h"
 #include "position/ReferencePanel.h"
 #include "program/MdiLine.h"
@@ -257,5 +258,5 @@ void TestMachineShortcuts::stopKeys_inTextField_stopTheReferenceRun()
     QVERIFY2(m_f->simStandsStill(Axis::Z, 5, &why), qPrintable(why));
 }
 
-QTEST_MAIN(TestMachineShortcuts)
+STEPDECK_TEST_MAIN(TestMachineShortcuts)
 #include "tst_machineshortcuts.moc"

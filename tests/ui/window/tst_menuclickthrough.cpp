@@ -4,6 +4,7 @@
 // menu bar's, context menus made later) takes the closing click for itself; STOP alone still
 // acts through a popup (tst_safetyshortcuts::popupOpen_clickOnStop_stops), F1 panics always.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "machine/MachineContext.h"
 #include "safety/SafetyBar.h"
 #include <QApplication>
@@ -64,5 +65,5 @@ void TestMenuClickThrough::closingClick_onPanic_closesTheMenuOnly()
     QTRY_COMPARE(panics.size(), 1);
 }
 
-QTEST_MAIN(TestMenuClickThrough)
+STEPDECK_TEST_MAIN(TestMenuClickThrough)
 #include "tst_menuclickthrough.moc"

@@ -2,6 +2,7 @@
 // past the screen was resized past the screen's edge (1366x871 on a 768-px screen after a
 // reconnect). With ScreenBound the minimum stays within the screen's available geometry and
 // the window stays on it; an explicit resize by the application is not its business.
+#include "TestMain.h"
 #include "window/ScreenBound.h"
 #include <QApplication>
 #include <QLabel>
@@ -81,5 +82,5 @@ void TestScreenBound::shown_offScreen_movedAndShrunkOntoIt()
                                 .arg(window.frameGeometry().height())));
 }
 
-QTEST_MAIN(TestScreenBound)
+STEPDECK_TEST_MAIN(TestScreenBound)
 #include "tst_screenbound.moc"

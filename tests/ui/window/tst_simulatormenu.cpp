@@ -2,6 +2,7 @@
 // inputs the machine drives (5..8, the part sensor of docs/examples/emis.ngc), sets them at the
 // simulated board, and shows each checked as the controller then reports it.
 #include "../EmisUiFixture.h"
+#include "TestMain.h"
 #include "window/SimulatorMenu.h"
 #include <QAction>
 #include <QtTest>
@@ -53,5 +54,5 @@ void TestSimulatorMenu::elab_noInputsToSet_saysSo()
     QVERIFY(!menu->actions().at(0)->isEnabled());
 }
 
-QTEST_MAIN(TestSimulatorMenu)
+STEPDECK_TEST_MAIN(TestSimulatorMenu)
 #include "tst_simulatormenu.moc"

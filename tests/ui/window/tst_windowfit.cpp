@@ -3,6 +3,7 @@
 // on screen. Checked offscreen with the default layout, connected to the simulator (the
 // pages are filled), in English and with the longer German texts.
 #include "../UiTestSupport.h"
+#include "TestMain.h"
 #include "jog/JogPanel.h"
 #include "safety/SafetyBar.h"
 #include "window/Translations.h"
@@ -133,5 +134,5 @@ void TestWindowFit::screen_fitsAndShowsSafetyWidgets()
     }
 }
 
-QTEST_MAIN(TestWindowFit)
+STEPDECK_TEST_MAIN(TestWindowFit)
 #include "tst_windowfit.moc"

@@ -10,6 +10,7 @@
 #include "../LaptopScreen.h"
 #include "../LayoutChecks.h"
 #include "../machine/MachineWindowRig.h"
+#include "TestMain.h"
 #include "connection/ConnectionBar.h"
 #include "jog/JogPanel.h"
 #include "jog/JoystickPad.h"
@@ -543,7 +544,8 @@ void TestWorkspaces::connectionBar_modelNamesInFull()
     ui::translations::install(qApp, QStringLiteral("en"));
 }
 
-int main(int argc, char** argv)
+namespace {
+int runWorkspaces(int argc, char** argv)
 {
 #ifdef STEPDECK_FULL_HD
     // tst_workspaces_fullhd
@@ -552,4 +554,7 @@ int main(int argc, char** argv)
     return runOnScreen<TestWorkspaces>(argc, argv, 1366, 768 - kPanelAndTitleBar);
 #endif
 }
+} // namespace
+
+STEPDECK_TEST_MAIN_WITH(TestWorkspaces, runWorkspaces)
 #include "tst_workspaces.moc"

@@ -1,5 +1,6 @@
 // LinuxCNC's expressions (issue 33): values, precedence, functions in degrees, and errors at
 // their line:column, against a fixed set of parameters.
+#include "TestMain.h"
 #include "program/language/NgcExpression.h"
 #include <QtTest>
 #include <cmath>
@@ -222,5 +223,5 @@ void TestNgcExpression::readReference_forms_numberOrName()
     QCOMPARE(text.at(pos), QLatin1Char('='));
 }
 
-QTEST_GUILESS_MAIN(TestNgcExpression)
+STEPDECK_TEST_GUILESS_MAIN(TestNgcExpression)
 #include "tst_ngcexpression.moc"

@@ -1,5 +1,6 @@
 // The control flow of LinuxCNC's language (issue 33): what lines a program gives out, in which
 // order and from which source line, its structure errors and its bounds.
+#include "TestMain.h"
 #include "program/language/NgcInterpreter.h"
 #include <QtTest>
 
@@ -366,5 +367,5 @@ void TestNgcInterpreter::run_lowerLimits_eachBoundNamesItsLine()
              qPrintable(lines));
 }
 
-QTEST_GUILESS_MAIN(TestNgcInterpreter)
+STEPDECK_TEST_GUILESS_MAIN(TestNgcInterpreter)
 #include "tst_ngcinterpreter.moc"

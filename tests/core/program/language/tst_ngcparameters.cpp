@@ -1,5 +1,6 @@
 // LinuxCNC's parameters as StepDeck keeps them (issue 33): numbered and named, a call's
 // arguments, and the reserved ranges tied to the offsets or refused with the reason.
+#include "TestMain.h"
 #include "program/language/NgcParameters.h"
 #include <QtTest>
 
@@ -179,5 +180,5 @@ void TestNgcParameters::returned_valueAndFlag()
     QCOMPARE(p.named(QStringLiteral("_value_returned"), &why), std::optional<double>(0.0));
 }
 
-QTEST_GUILESS_MAIN(TestNgcParameters)
+STEPDECK_TEST_GUILESS_MAIN(TestNgcParameters)
 #include "tst_ngcparameters.moc"

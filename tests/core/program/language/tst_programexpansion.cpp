@@ -2,6 +2,7 @@
 // worked out, the line map, the text kept in memory or a temporary file, and the check's
 // errors, blocks and refusals naming the source's lines.
 #include "../ProgramCheckTestSupport.h"
+#include "TestMain.h"
 #include "program/ProgramReader.h"
 #include "program/language/ProgramExpansion.h"
 #include <QtTest>
@@ -322,5 +323,5 @@ void TestProgramExpansion::check_progressFalse_cancelsWorkingOut()
     QCOMPARE(asked, 3);
 }
 
-QTEST_GUILESS_MAIN(TestProgramExpansion)
+STEPDECK_TEST_GUILESS_MAIN(TestProgramExpansion)
 #include "tst_programexpansion.moc"

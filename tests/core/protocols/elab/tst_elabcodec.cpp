@@ -1,5 +1,6 @@
 // ElabCodec against every example of the E-LAB manual, byte for byte, both directions.
 #include "ElabTestSupport.h"
+#include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -496,5 +497,5 @@ void TestElabCodec::describeMachineState_namesBits()
     QVERIFY(describeAxeState(axe::LimSw).contains(QStringLiteral("taLimSw")));
 }
 
-QTEST_GUILESS_MAIN(TestElabCodec)
+STEPDECK_TEST_GUILESS_MAIN(TestElabCodec)
 #include "tst_elabcodec.moc"

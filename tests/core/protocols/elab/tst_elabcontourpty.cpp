@@ -8,6 +8,7 @@
 // Issue 47: STOP during a contour keeps every axis referenced, the board standing within the
 // stream's lead where the host counts it; at the highest tick rate the status polls still reach
 // the board at least 10 times a second.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/SoftLimits.h"
 #include "motion/ContourFeed.h"
@@ -469,5 +470,5 @@ void TestElabContourPty::contour_topTickRate_statusPollsTenPerSecond()
     QCOMPARE(m_ctl->status().axes.value(Axis::X).position, qint64(4000));
 }
 
-QTEST_GUILESS_MAIN(TestElabContourPty)
+STEPDECK_TEST_GUILESS_MAIN(TestElabContourPty)
 #include "tst_elabcontourpty.moc"

@@ -1,6 +1,7 @@
 // ElabController against the real ElabSimulator over a LoopbackTransport pair: link,
 // status, parameters, NAK/timeout/garbage paths, link loss, reset, auxiliaries and console.
 #include "ElabControllerRig.h"
+#include "TestMain.h"
 
 class TestElabController : public QObject
 {
@@ -327,5 +328,5 @@ void TestElabController::closeLink_duringVelocityMove_sendsStopFirst()
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim->standingStill(), 5000);
 }
 
-QTEST_GUILESS_MAIN(TestElabController)
+STEPDECK_TEST_GUILESS_MAIN(TestElabController)
 #include "tst_elabcontroller.moc"

@@ -3,6 +3,7 @@
 // the simulator) and that the simulated axes stand still, not only the host's own variables.
 #include "ElabControllerRig.h"
 #include "KernelBufferTransport.h"
+#include "TestMain.h"
 #include <QRandomGenerator>
 
 namespace {
@@ -381,5 +382,5 @@ void TestElabControllerSafety::resetLine_dtrOption_reachesTransport()
     QCOMPARE(rig.hostEnd->lineSettings().resetLine, LineSettings::ResetLine::Dtr);
 }
 
-QTEST_GUILESS_MAIN(TestElabControllerSafety)
+STEPDECK_TEST_GUILESS_MAIN(TestElabControllerSafety)
 #include "tst_elabcontrollersafety.moc"

@@ -1,6 +1,7 @@
 // ElabExchangeQueue against a scripted peer: replies matched in order, overtaking, frames
 // without a reply, flow-control bytes between replies, timeouts and garbage with resync.
 #include "ElabTestSupport.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabExchangeQueue.h"
@@ -392,5 +393,5 @@ void TestElabExchangeQueue::pipelineGroup_stopOvertakesBothReads()
     QTRY_COMPARE(log, (QStringList{"ht:<HT>00#", "enq:<ENQ>0000#", "stop:<ACK>"}));
 }
 
-QTEST_GUILESS_MAIN(TestElabExchangeQueue)
+STEPDECK_TEST_GUILESS_MAIN(TestElabExchangeQueue)
 #include "tst_elabexchangequeue.moc"

@@ -1,5 +1,6 @@
 // ElabSimAxis: the per-axis motion model of the E-LAB simulator, driven with explicit time
 // slices (deterministic, no event loop).
+#include "TestMain.h"
 #include "protocols/elab/ElabSimAxis.h"
 #include <QtTest>
 
@@ -252,5 +253,5 @@ void TestElabSimAxis::feed_runsAtFeedSpeed_rampStopIsImmediate()
     QCOMPARE(axis.remaining(), 1000 - axis.position());
 }
 
-QTEST_GUILESS_MAIN(TestElabSimAxis)
+STEPDECK_TEST_GUILESS_MAIN(TestElabSimAxis)
 #include "tst_elabsimaxis.moc"

@@ -1,5 +1,6 @@
 // The <DC2> single-step stream of the E-LAB simulator: ElabSimStream's buffer bookkeeping and
 // the stream as the host sees it through ElabSimulator (XOFF/XON, EndOfFeed, stop, flush).
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/Registry.h"
 #include "protocols/elab/ElabCodec.h"
@@ -311,5 +312,5 @@ void TestElabSimStream::meter_stepBytesLikeBelOrXoff_areSteps_thenPanicAndStopSe
     QCOMPARE(meter->stopSeenNs(), qint64(-1));
 }
 
-QTEST_GUILESS_MAIN(TestElabSimStream)
+STEPDECK_TEST_GUILESS_MAIN(TestElabSimStream)
 #include "tst_elabsimstream.moc"

@@ -1,6 +1,7 @@
 // ElabSimulator: the device side of the E-LAB protocol, driven directly with encoded commands
 // (receive()) and observed through transmit() and its test accessors.
 #include "ElabTestSupport.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabCodec.h"
 #include "protocols/elab/ElabModel.h"
@@ -12,15 +13,15 @@ using namespace stepdeck;
 using namespace stepdeck::elab;
 
 namespace {
-const QByteArray kAck(1, ctrl::ACK);
+const QByteArray kSimAck(1, ctrl::ACK);
 const QByteArray kNak(1, ctrl::NAK);
 
 using stepdeck::elab::testing::bytes;
 
 // A simulator with a spy on its output; ask() returns what one command made it send at once.
-struct Rig
+struct SimRig
 {
-    explicit Rig(const SimulatorOptions& options = {}) : sim(options) {}
+    explicit SimRig(const SimulatorOptions& options = {}) : sim(options) {}
     ElabSimulator sim;
     QSignalSpy spy{&sim, &Simulator::transmit};
 
@@ -34,10 +35,10 @@ struct Rig
     // Start/max speed and acceleration (completes the setup) plus the feed speed.
     bool setup(quint16 start, quint16 max, quint16 accel, quint16 feed = 1000)
     {
-        return ask(encode::ramp(RampKind::StartSpeed, {start, start, start})) == kAck &&
-               ask(encode::ramp(RampKind::MaxSpeed, {max, max, max})) == kAck &&
-               ask(encode::ramp(RampKind::Acceleration, {accel, accel, accel})) == kAck &&
-               ask(encode::feedSpeed({feed, feed, feed})) == kAck;
+        return ask(encode::ramp(RampKind::StartSpeed, {start, start, start})) == kSimAck &&
+               ask(encode::ramp(RampKind::MaxSpeed, {max, max, max})) == kSimAck &&
+               ask(encode::ramp(RampKind::Acceleration, {accel, accel, accel})) == kSimAck &&
+               ask(encode::feedSpeed({feed, feed, feed})) == kSimAck;
     }
     Reply reply(const QByteArray& request)
     {
@@ -92,7 +93,7 @@ void TestElabSimulator::requests_replyFormat_matchesManual_data()
     QTest::newRow("ETX nothing left")
         << 25 << false << bytes("<ETX>") << bytes("<ETX>00000000,00000000;00000000.");
     QTest::newRow("LF not pressed") << 25 << false << bytes("<LF>") << kNak;
-    QTest::newRow("LF pressed") << 25 << true << bytes("<LF>") << kAck;
+    QTest::newRow("LF pressed") << 25 << true << bytes("<LF>") << kSimAck;
     QTest::newRow("SYN burst: no reply") << 25 << false << encode::requestSync(8) << QByteArray();
     QTest::newRow("SYN then ENQ") << 25 << false << bytes("<SYN><SYN><SYN><ENQ>")
                                   << bytes("<ENQ>0080#");
@@ -104,7 +105,7 @@ void TestElabSimulator::requests_replyFormat_matchesManual()
     QFETCH(bool, startButton);
     QFETCH(QByteArray, request);
     QFETCH(QByteArray, expected);
-    Rig rig;
+    SimRig rig;
     rig.sim.setTemperature(temperature);
     rig.sim.setStartButton(startButton);
     QCOMPARE(rig.ask(request), expected);
@@ -125,37 +126,37 @@ void TestElabSimulator::setup_incomplete_movesNak_data()
 void TestElabSimulator::setup_incomplete_movesNak()
 {
     QFETCH(QByteArray, move);
-    Rig rig;
+    SimRig rig;
     QCOMPARE(rig.ask(move), kNak);
     QVERIFY(rig.sim.lastNakReason().contains(QLatin1String("tmInvSetup")));
     // Start and max speed alone are not enough: the acceleration is part of the setup.
-    QCOMPARE(rig.ask("<ESC>S0064,0064;0064."), kAck);
-    QCOMPARE(rig.ask("<ESC>M1388,1388;1388."), kAck);
+    QCOMPARE(rig.ask("<ESC>S0064,0064;0064."), kSimAck);
+    QCOMPARE(rig.ask("<ESC>M1388,1388;1388."), kSimAck);
     QCOMPARE(rig.machineState(), machine::InvSetup);
     QCOMPARE(rig.ask(move), kNak);
-    QCOMPARE(rig.ask("<ESC>A03E8,03E8;03E8."), kAck);
-    QCOMPARE(rig.ask("<FS>0064,0064;0064."), kAck);
+    QCOMPARE(rig.ask("<ESC>A03E8,03E8;03E8."), kSimAck);
+    QCOMPARE(rig.ask("<FS>0064,0064;0064."), kSimAck);
     QCOMPARE(rig.machineState() & machine::InvSetup, 0);
-    QCOMPARE(rig.ask(move), kAck);
+    QCOMPARE(rig.ask(move), kSimAck);
     QVERIFY(rig.sim.isBusy());
 }
 
 void TestElabSimulator::auxiliary_setsMachineBits()
 {
-    Rig rig;
-    QCOMPARE(rig.ask("<SO>00,00;00."), kAck);
-    QCOMPARE(rig.ask("<DLE>00,00;00."), kAck);
-    QCOMPARE(rig.ask("<STX>18"), kAck); // 24 %: "<25 = off"
+    SimRig rig;
+    QCOMPARE(rig.ask("<SO>00,00;00."), kSimAck);
+    QCOMPARE(rig.ask("<DLE>00,00;00."), kSimAck);
+    QCOMPARE(rig.ask("<STX>18"), kSimAck); // 24 %: "<25 = off"
     QCOMPARE(rig.machineState() & machine::DriveOn, 0);
-    QCOMPARE(rig.ask("<STX>64"), kAck); // manual example: 100 %
+    QCOMPARE(rig.ask("<STX>64"), kSimAck); // manual example: 100 %
     QCOMPARE(rig.sim.drivePower(), 100);
-    QCOMPARE(rig.ask("<SOH>000003E8#"), kAck); // manual example: spindle on
-    QCOMPARE(rig.ask("<SI>FF"), kAck);
+    QCOMPARE(rig.ask("<SOH>000003E8#"), kSimAck); // manual example: spindle on
+    QCOMPARE(rig.ask("<SI>FF"), kSimAck);
     QVERIFY(rig.sim.coolant());
     QCOMPARE(rig.machineState(),
              quint16(machine::DriveOn | machine::SpindleOn | machine::InvSetup));
-    QCOMPARE(rig.ask("<SOH>00000000#"), kAck);
-    QCOMPARE(rig.ask("<SI>00"), kAck);
+    QCOMPARE(rig.ask("<SOH>00000000#"), kSimAck);
+    QCOMPARE(rig.ask("<SI>00"), kSimAck);
     QCOMPARE(rig.machineState(), quint16(machine::DriveOn | machine::InvSetup));
     QVERIFY(!rig.sim.coolant());
 }
@@ -178,7 +179,7 @@ void TestElabSimulator::malformedHex_naks_data()
 void TestElabSimulator::malformedHex_naks()
 {
     QFETCH(QByteArray, command);
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(100, 5000, 1000));
     const QByteArray reply = rig.ask(command);
     QVERIFY2(reply.startsWith(kNak), reply.toHex().constData());
@@ -189,17 +190,17 @@ void TestElabSimulator::malformedHex_naks()
 
 void TestElabSimulator::strayBytes_noReply_nextCommandAnswered()
 {
-    Rig rig;
+    SimRig rig;
     QCOMPARE(rig.ask(QByteArray("xyz!")), QByteArray());
     QCOMPARE(rig.ask("<HT>"), bytes("<HT>00#"));
 }
 
 void TestElabSimulator::fastMove_reachesTarget_andReportsIdle()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(1000, 20000, 60000));
-    QVERIFY(!rig.sim.isTicking());                                     // idle costs nothing
-    QCOMPARE(rig.ask(encode::fastMoveXYZ({12000, -2000, 500})), kAck); // ~0.9 s
+    QVERIFY(!rig.sim.isTicking());                                        // idle costs nothing
+    QCOMPARE(rig.ask(encode::fastMoveXYZ({12000, -2000, 500})), kSimAck); // ~0.9 s
     QVERIFY(rig.sim.isTicking());
     QCOMPARE(rig.machineState() & machine::Busy, machine::Busy);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
@@ -211,7 +212,7 @@ void TestElabSimulator::fastMove_reachesTarget_andReportsIdle()
     QCOMPARE(rig.ask("<ETX>"), bytes("<ETX>00000000,00000000;00000000."));
     QVERIFY(!rig.sim.isTicking());
     // Relative moves: Z only, from where the last one ended.
-    QCOMPARE(rig.ask(encode::fastMoveZ(-500)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveZ(-500)), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     QCOMPARE(rig.sim.position(Axis::Z), qint64(0));
     QCOMPARE(rig.sim.position(Axis::X), qint64(12000));
@@ -219,25 +220,25 @@ void TestElabSimulator::fastMove_reachesTarget_andReportsIdle()
 
 void TestElabSimulator::fastMove_whileMoving_naks()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(100, 1000, 1000));
-    QCOMPARE(rig.ask(encode::fastMoveXY(100000, 0)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(100000, 0)), kSimAck);
     QCOMPARE(rig.axeState(), axe::XMove);
     QCOMPARE(rig.ask(encode::fastMoveZ(10)), kNak);
     QCOMPARE(rig.ask(encode::jogSpeed({10, 0, 0})), kNak);
     QCOMPARE(rig.ask(encode::velocityMove({1000, 0, 0})), kNak);
     QVERIFY(rig.sim.lastNakReason().contains(QLatin1String("moving")));
-    QCOMPARE(rig.ask("<BEL>"), kAck);
+    QCOMPARE(rig.ask("<BEL>"), kSimAck);
 }
 
 void TestElabSimulator::forceStopMove_ramps_relPositionReportsRemaining()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(500, 20000, 20000));
-    QCOMPARE(rig.ask(encode::fastMoveXY(100000, -100000)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(100000, -100000)), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim.position(Axis::X) > 1000, 10000);
     const qint64 atStop = rig.sim.position(Axis::X);
-    QCOMPARE(rig.ask("<XOFF>"), kAck); // ForceStopMove
+    QCOMPARE(rig.ask("<XOFF>"), kSimAck); // ForceStopMove
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     const qint64 x = rig.sim.position(Axis::X);
     QVERIFY2(x > atStop, "the stop ramp still travels");
@@ -246,28 +247,28 @@ void TestElabSimulator::forceStopMove_ramps_relPositionReportsRemaining()
     QCOMPARE(rel.positions[0], qint32(100000 - x));
     QCOMPARE(rel.positions[1], qint32(-100000 - rig.sim.position(Axis::Y)));
     QCOMPARE(rel.positions[2], 0);
-    QCOMPARE(rig.ask("<RS>"), kAck); // SetClearPosition clears the counters
+    QCOMPARE(rig.ask("<RS>"), kSimAck); // SetClearPosition clears the counters
     QCOMPARE(rig.ask("<ETX>"), bytes("<ETX>00000000,00000000;00000000."));
 }
 
 void TestElabSimulator::panicStop_stopsAtOnce()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(500, 20000, 20000));
-    QCOMPARE(rig.ask(encode::fastMoveXYZ({100000, 100000, 100000})), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXYZ({100000, 100000, 100000})), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim.position(Axis::X) > 100, 10000);
-    QCOMPARE(rig.ask("<BEL>"), kAck);
+    QCOMPARE(rig.ask("<BEL>"), kSimAck);
     QCOMPARE(rig.ask("<HT>"), bytes("<HT>00#")); // no stop ramp
     QVERIFY(!rig.sim.isTicking());
 }
 
 void TestElabSimulator::limitSwitch_stopsMove_setsBits()
 {
-    Rig rig;
+    SimRig rig;
     rig.sim.setLimitPositions(Axis::X, -1000, 500);
     QVERIFY(rig.setup(2000, 30000, 60000));
     rig.sim.setStartButton(true);
-    QCOMPARE(rig.ask(encode::fastMoveXY(2000, 300)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(2000, 300)), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     QCOMPARE(rig.sim.position(Axis::X), qint64(500)); // stopped at the first active step
     QVERIFY(rig.sim.position(Axis::Y) <= 300);        // the whole move was aborted
@@ -277,46 +278,46 @@ void TestElabSimulator::limitSwitch_stopsMove_setsBits()
     QCOMPARE(rig.ask(encode::fastMoveXY(-10, 0)), kNak);
     QCOMPARE(rig.ask(encode::referenceMove({-1, 0, 0})), kNak);
     QCOMPARE(rig.ask("<RS>"), kNak);
-    QCOMPARE(rig.ask("<LF>"), kNak);                  // even with the start button pressed
-    QCOMPARE(rig.ask("<ESC>S07D0,07D0;07D0."), kAck); // no note: still accepted
+    QCOMPARE(rig.ask("<LF>"), kNak);                     // even with the start button pressed
+    QCOMPARE(rig.ask("<ESC>S07D0,07D0;07D0."), kSimAck); // no note: still accepted
 }
 
 void TestElabSimulator::limitPolarity_wrong_readsActive()
 {
-    Rig rig;
+    SimRig rig;
     rig.sim.setSwitchWiring(Axis::Y, false, false); // low-active switches
     QCOMPARE(rig.machineState(), machine::InvSetup);
-    QCOMPARE(rig.ask("<SO>00,FF;00."), kAck); // Y configured high-active: reads active at rest
+    QCOMPARE(rig.ask("<SO>00,FF;00."), kSimAck); // Y configured high-active: reads active at rest
     QVERIFY(rig.sim.limitSwitchLevelHigh(Axis::Y)); // free low-active switch: level high
     QCOMPARE(rig.machineState(), quint16(machine::InvSetup | machine::LimSwY));
-    QCOMPARE(rig.ask("<DLE>FF,00;00."), kAck);
+    QCOMPARE(rig.ask("<DLE>FF,00;00."), kSimAck);
     QCOMPARE(rig.machineState(), quint16(machine::InvSetup | machine::LimSwY | machine::RefSwX));
     QCOMPARE(rig.axeState(), quint8(axe::LimSw | axe::RefSw));
 }
 
 void TestElabSimulator::jog_allowedOnLimitSwitch()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(100, 5000, 1000));
     rig.sim.setLimitSwitchActuated(Axis::X, true);
     QCOMPARE(rig.ask(encode::fastMoveXY(-100, 0)), kNak);
-    QCOMPARE(rig.ask("<DC4>FC18,0000;0000."), kAck); // X -1000 steps/s
+    QCOMPARE(rig.ask("<DC4>FC18,0000;0000."), kSimAck); // X -1000 steps/s
     QCOMPARE(rig.axeState(), quint8(axe::XJog | axe::LimSw));
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim.position(Axis::X) < -50, 10000);
-    QCOMPARE(rig.ask("<DC4>FC18,0064;0000."), kAck); // Y joins, no standstill needed
+    QCOMPARE(rig.ask("<DC4>FC18,0064;0000."), kSimAck); // Y joins, no standstill needed
     QCOMPARE(rig.axeState(), quint8(axe::XJog | axe::YJog | axe::LimSw));
     rig.sim.setLimitSwitchActuated(Axis::X, false);
-    QCOMPARE(rig.ask(encode::jogSpeed({0, 0, 0})), kAck); // all zero: jog mode left
+    QCOMPARE(rig.ask(encode::jogSpeed({0, 0, 0})), kSimAck); // all zero: jog mode left
     QCOMPARE(rig.axeState(), quint8(0));
     QVERIFY(!rig.sim.isTicking());
-    QCOMPARE(rig.ask(encode::fastMoveXY(10, 0)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(10, 0)), kSimAck);
 }
 
 void TestElabSimulator::panicButton_naksMoves()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(100, 5000, 1000));
-    QCOMPARE(rig.ask(encode::fastMoveXY(100000, 0)), kAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(100000, 0)), kSimAck);
     rig.sim.setPanicButton(true);
     QVERIFY(!rig.sim.isBusy());
     QCOMPARE(rig.machineState(), machine::PanicStop);
@@ -325,19 +326,19 @@ void TestElabSimulator::panicButton_naksMoves()
     QCOMPARE(rig.ask("<STX>64"), kNak);
     QCOMPARE(rig.ask("<SOH>00000001#"), kNak);
     QVERIFY(rig.sim.lastNakReason().contains(QLatin1String("panic")));
-    QCOMPARE(rig.ask("<XOFF>"), kAck); // stop commands carry no note
-    QCOMPARE(rig.ask("<BEL>"), kAck);
+    QCOMPARE(rig.ask("<XOFF>"), kSimAck); // stop commands carry no note
+    QCOMPARE(rig.ask("<BEL>"), kSimAck);
     rig.sim.setPanicButton(false);
-    QCOMPARE(rig.ask(encode::jogSpeed({10, 0, 0})), kAck);
+    QCOMPARE(rig.ask(encode::jogSpeed({10, 0, 0})), kSimAck);
 }
 
 void TestElabSimulator::referenceMove_stopsAtSwitch()
 {
-    Rig rig;
+    SimRig rig;
     rig.sim.setReferencePosition(Axis::X, -300, 5);
     rig.sim.setReferencePosition(Axis::Z, 400, 5);
-    QVERIFY(rig.setup(200, 20000, 2000));           // slow enough to still run at the next poll
-    QCOMPARE(rig.ask("<US>FFFF,0000;0001."), kAck); // manual example: X -dir, Z +dir
+    QVERIFY(rig.setup(200, 20000, 2000));              // slow enough to still run at the next poll
+    QCOMPARE(rig.ask("<US>FFFF,0000;0001."), kSimAck); // manual example: X -dir, Z +dir
     QCOMPARE(rig.axeState(), quint8(axe::XMove | axe::ZMove));
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     QCOMPARE(rig.sim.position(Axis::X), qint64(-295));
@@ -349,32 +350,32 @@ void TestElabSimulator::referenceMove_stopsAtSwitch()
 
 void TestElabSimulator::velocityMove_repeatChangesRate_zeroStops()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(200, 5000, 20000));
-    QCOMPARE(rig.ask(encode::velocityMove({150, 0, 0})), kAck); // below start: no move
+    QCOMPARE(rig.ask(encode::velocityMove({150, 0, 0})), kSimAck); // below start: no move
     QVERIFY(!rig.sim.isBusy());
-    QCOMPARE(rig.ask(encode::velocityMove({-3000, 0, 0})), kAck);
+    QCOMPARE(rig.ask(encode::velocityMove({-3000, 0, 0})), kSimAck);
     QCOMPARE(rig.axeState(), axe::XMove);
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim.position(Axis::X) < -200, 10000);
-    QCOMPARE(rig.ask(encode::velocityMove({4000, 0, 0})), kAck); // sign ignored
+    QCOMPARE(rig.ask(encode::velocityMove({4000, 0, 0})), kSimAck); // sign ignored
     QCOMPARE(rig.ask(encode::fastMoveZ(10)), kNak);
     const qint64 before = rig.sim.position(Axis::X);
     QTRY_VERIFY_WITH_TIMEOUT(rig.sim.position(Axis::X) < before - 200, 10000);
-    QCOMPARE(rig.ask(encode::velocityMove({0, 0, 0})), kAck);
+    QCOMPARE(rig.ask(encode::velocityMove({0, 0, 0})), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     QCOMPARE(rig.ask("<HT>"), bytes("<HT>00#"));
 }
 
 void TestElabSimulator::feedSteps_reachTarget()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(100, 5000, 1000, 4000));
-    QCOMPARE(rig.ask("<EM>000003E8,"), kAck); // manual example: X +1000 steps, 0.25 s
+    QCOMPARE(rig.ask("<EM>000003E8,"), kSimAck); // manual example: X +1000 steps, 0.25 s
     QCOMPARE(rig.axeState(), axe::XMove);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
-    QCOMPARE(rig.ask("<SUB>FFFFFC18;"), kAck);
+    QCOMPARE(rig.ask("<SUB>FFFFFC18;"), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
-    QCOMPARE(rig.ask("<VT>00000010."), kAck);
+    QCOMPARE(rig.ask("<VT>00000010."), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     QCOMPARE(rig.sim.position(Axis::X), qint64(1000));
     QCOMPARE(rig.sim.position(Axis::Y), qint64(-1000));
@@ -383,7 +384,7 @@ void TestElabSimulator::feedSteps_reachTarget()
 
 void TestElabSimulator::temperature_overTemp()
 {
-    Rig rig;
+    SimRig rig;
     rig.sim.setTemperature(50);
     QCOMPARE(rig.machineState() & machine::OverTemp, 0);
     rig.sim.setTemperature(51);
@@ -393,7 +394,7 @@ void TestElabSimulator::temperature_overTemp()
 
 void TestElabSimulator::faults_dropCorruptDelayForceNak()
 {
-    Rig rig;
+    SimRig rig;
     rig.sim.faults().dropReplies = 1;
     QCOMPARE(rig.ask("<ENQ>"), QByteArray());
     QCOMPARE(rig.ask("<ENQ>"), bytes("<ENQ>0080#"));
@@ -409,7 +410,7 @@ void TestElabSimulator::faults_dropCorruptDelayForceNak()
     QCOMPARE(rig.ask("<STX>64"), kNak);
     QCOMPARE(rig.sim.drivePower(), 0); // a refused command is not executed
     QCOMPARE(rig.sim.forcedNaksPending(), 0);
-    QCOMPARE(rig.ask("<STX>64"), kAck);
+    QCOMPARE(rig.ask("<STX>64"), kSimAck);
 
     rig.sim.faults().delayMs = 30;
     QCOMPARE(rig.ask("<HT>"), QByteArray());
@@ -426,7 +427,7 @@ void TestElabSimulator::pacing_releasesAtLineRate()
     SimulatorOptions options;
     options.paceOutput = true;
     options.line = lineSettings(); // 57600 8N2: ~191 us per character
-    Rig rig(options);
+    SimRig rig(options);
     QCOMPARE(rig.ask("<ETX>"), QByteArray()); // 27 characters need ~5 ms on the wire
     QVERIFY(rig.sim.bytesPending() > 0);
     QTRY_COMPARE(test::joinedBytes(rig.spy), bytes("<ETX>00000000,00000000;00000000."));
@@ -434,10 +435,10 @@ void TestElabSimulator::pacing_releasesAtLineRate()
 
 void TestElabSimulator::powerOnReset_restoresPowerOnState()
 {
-    Rig rig;
+    SimRig rig;
     QVERIFY(rig.setup(1000, 20000, 60000));
-    QCOMPARE(rig.ask("<STX>64"), kAck);
-    QCOMPARE(rig.ask(encode::fastMoveXY(500, 500)), kAck);
+    QCOMPARE(rig.ask("<STX>64"), kSimAck);
+    QCOMPARE(rig.ask(encode::fastMoveXY(500, 500)), kSimAck);
     QTRY_VERIFY_WITH_TIMEOUT(!rig.sim.isBusy(), 10000);
     rig.sim.powerOnReset();
     QCOMPARE(rig.ask("<ENQ>"), bytes("<ENQ>0080#"));
@@ -445,5 +446,5 @@ void TestElabSimulator::powerOnReset_restoresPowerOnState()
     QCOMPARE(rig.ask(encode::fastMoveXY(500, 500)), kNak);
 }
 
-QTEST_GUILESS_MAIN(TestElabSimulator)
+STEPDECK_TEST_GUILESS_MAIN(TestElabSimulator)
 #include "tst_elabsimulator.moc"

@@ -3,6 +3,7 @@
 // (TIOCOUTQ is 0) and carries every byte at once, like a USB adapter whose own FIFO the driver
 // does not count: only the host's own wire budget keeps the stream from running ahead of the
 // line. Asserted at the device: after each of the board's XOFFs at most one chunk arrives.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/elab/ElabController.h"
 #include "protocols/elab/ElabCtlStream.h"
@@ -122,5 +123,5 @@ void TestElabStreamPty::stream_boardXoffAfter16Pairs_atMostOneChunkMoreArrives()
     QCOMPARE(m_sim->position(Axis::Z), -total);
 }
 
-QTEST_GUILESS_MAIN(TestElabStreamPty)
+STEPDECK_TEST_GUILESS_MAIN(TestElabStreamPty)
 #include "tst_elabstreampty.moc"

@@ -2,6 +2,7 @@
 // pseudo-terminal, the application side through the real QSerialPort (SerialTransport) at
 // 115200 8N1 -- also through the registry and ControllerSession, as the GUI and CLI run it.
 // The arrival bytes <DC1> and <DC3> are XON and XOFF: they must pass the real port.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "controller/ControllerSession.h"
 #include "protocols/Registry.h"
@@ -180,5 +181,5 @@ void TestEmisEndToEnd::registrySession_connectsAndMoves()
     session.destroy();
 }
 
-QTEST_GUILESS_MAIN(TestEmisEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisEndToEnd)
 #include "tst_emis_e2e.moc"

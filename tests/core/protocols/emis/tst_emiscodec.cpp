@@ -1,5 +1,6 @@
 // EmisCodec against every example of chapter 9 of the SMC-IC4 manual: the encoder byte for
 // byte, the reply decoder whole, byte by byte, in random chunks and with garbage.
+#include "TestMain.h"
 #include "protocols/emis/EmisCodec.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -335,5 +336,5 @@ void TestEmisCodec::answers_ready()
     QVERIFY(!isReady(""));
 }
 
-QTEST_GUILESS_MAIN(TestEmisCodec)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisCodec)
 #include "tst_emiscodec.moc"

@@ -2,6 +2,7 @@
 // stop, working values, system parameters, outputs, input programs and the console. Every
 // test asserts what the simulated board saw.
 #include "EmisControllerRig.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 
 using namespace stepdeck;
@@ -436,5 +437,5 @@ void TestEmisController::console_mixedVector_eachTargetAsTyped()
     QVERIFY(m_rig.axis(Axis::Y).positionKnown);
 }
 
-QTEST_GUILESS_MAIN(TestEmisController)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisController)
 #include "tst_emiscontroller.moc"

@@ -2,6 +2,7 @@
 // host-tracked positions, the chunked jog and its lease, lost arrivals and lost links. The
 // safety tests assert what the simulated board saw and that its motors stand still.
 #include "EmisControllerRig.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 
 using namespace stepdeck;
@@ -460,5 +461,5 @@ void TestEmisControllerMotion::externalReset_whileIdle_silenceSeen_positionsAndO
     QCOMPARE(absolute.error, ErrorKind::Refused);
 }
 
-QTEST_GUILESS_MAIN(TestEmisControllerMotion)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisControllerMotion)
 #include "tst_emiscontrollermotion.moc"

@@ -3,6 +3,7 @@
 // move ran at on the simulated board (AcceptedMove::workSpeed), also after a jog that could not
 // give its speed back (closed while a chunk ran), in the same session and in the next one.
 #include "EmisControllerRig.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/emis/EmisWorkSpeeds.h"
 
@@ -206,5 +207,5 @@ void TestEmisControllerWorkSpeed::speedWriteRefused_moveNotSent()
     QCOMPARE(lastMoveSpeed(Axis::X), 1000);
 }
 
-QTEST_GUILESS_MAIN(TestEmisControllerWorkSpeed)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisControllerWorkSpeed)
 #include "tst_emiscontrollerworkspeed.moc"

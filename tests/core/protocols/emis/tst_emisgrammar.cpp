@@ -1,6 +1,7 @@
 // The SMC-IC4 command grammar: every command example of chapter 9 parses to what it means,
 // malformed and out-of-range commands are named, the device-side framing (CR, STX, ETX) and
 // the system-parameter entries of 9.14 / 9.15.
+#include "TestMain.h"
 #include "protocols/emis/EmisGrammar.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -404,5 +405,5 @@ void TestEmisGrammar::decoder_everyByteAccountedFor()
     QCOMPARE(accounted + decoder.buffered() + decoder.skippedBytes(), in.size());
 }
 
-QTEST_GUILESS_MAIN(TestEmisGrammar)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisGrammar)
 #include "tst_emisgrammar.moc"

@@ -1,5 +1,6 @@
 // The SMC-IC4 model data: line settings, capabilities, the schema's ranges and the console
 // notation (that every schema word has a German translation: tst_translations).
+#include "TestMain.h"
 #include "protocols/emis/EmisModel.h"
 #include <QtTest>
 
@@ -97,5 +98,5 @@ void TestEmisModel::presentation_checksProgramCommands()
     QCOMPARE(p.statusWords({}).first().bits.size(), 8);
 }
 
-QTEST_GUILESS_MAIN(TestEmisModel)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisModel)
 #include "tst_emismodel.moc"

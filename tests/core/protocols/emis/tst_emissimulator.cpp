@@ -1,6 +1,7 @@
 // The SMC-IC4 simulator: replies byte for byte as in chapter 9, time-based motion with ramps,
 // reference runs against the switches on inputs 1-4, outputs, the "##" store, input programs,
 // <BEL> for invalid values and busy motors, and the faults.
+#include "TestMain.h"
 #include "protocols/emis/EmisSimAxis.h"
 #include "protocols/emis/EmisSimulator.h"
 #include <QtTest>
@@ -376,5 +377,5 @@ void TestEmisSimulator::faults_silentBellAndLostArrival()
     QCOMPARE(m_sim->position(Axis::X), 50);
 }
 
-QTEST_GUILESS_MAIN(TestEmisSimulator)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisSimulator)
 #include "tst_emissimulator.moc"

@@ -1,6 +1,7 @@
 // EmisWorkSpeeds: the move speed (written, else stored, else the assumed default) and the
 // speed the board is known to have, from which the #E1 writes of a move, a jog and its end
 // follow.
+#include "TestMain.h"
 #include "protocols/emis/EmisWorkSpeeds.h"
 #include <QtTest>
 
@@ -92,5 +93,5 @@ void TestEmisWorkSpeeds::forget_boardUnknown_nextMoveWritesAgain()
     QCOMPARE(s.moveSpeed(Axis::X), 800);    // the written value stays the one moves run at
 }
 
-QTEST_GUILESS_MAIN(TestEmisWorkSpeeds)
+STEPDECK_TEST_GUILESS_MAIN(TestEmisWorkSpeeds)
 #include "tst_emisworkspeeds.moc"

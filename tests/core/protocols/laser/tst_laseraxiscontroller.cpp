@@ -1,5 +1,6 @@
 // LaserAxisController against the in-process LaserAxisSimulator over a LoopbackTransport
 // pair. Every motion test asserts what the simulated axes received and where they stand.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/laser/LaserAxisController.h"
 #include "protocols/laser/LaserAxisSimulator.h"
@@ -533,5 +534,5 @@ void TestLaserAxisController::jogStep_commandedVelocity_untilEndOrLease()
     QVERIFY(!rig.sim->isMoving(Axis::X));
 }
 
-QTEST_GUILESS_MAIN(TestLaserAxisController)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserAxisController)
 #include "tst_laseraxiscontroller.moc"

@@ -1,5 +1,6 @@
 // LaserAxisSimulator: the device side of the laser motor-axis protocol, driven with the
 // laser's own frames (LaserCodec) and observed through the frames it transmits.
+#include "TestMain.h"
 #include "TestSupport.h"
 #include "protocols/laser/LaserAxisSimulator.h"
 #include <QtTest>
@@ -220,5 +221,5 @@ void TestLaserAxisSimulator::acceptedMoves_journalAndEmergencyStop()
     QCOMPARE(statuses().size(), before);
 }
 
-QTEST_GUILESS_MAIN(TestLaserAxisSimulator)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserAxisSimulator)
 #include "tst_laseraxissimulator.moc"

@@ -1,5 +1,6 @@
 // LaserCodec against the frames of the laser marker's motor-axis description, both
 // directions, fed whole, byte by byte, in random chunks and with garbage in between.
+#include "TestMain.h"
 #include "protocols/laser/LaserCodec.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -350,5 +351,5 @@ void TestLaserCodec::decode_everyByteAccountedFor()
     QCOMPARE(accounted + decoder.buffered() + decoder.droppedBytes(), in.size());
 }
 
-QTEST_GUILESS_MAIN(TestLaserCodec)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserCodec)
 #include "tst_lasercodec.moc"

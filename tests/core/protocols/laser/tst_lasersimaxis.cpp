@@ -1,4 +1,5 @@
 // LaserSimAxis: the mechanics of one simulated laser motor axis, fed explicit time slices.
+#include "TestMain.h"
 #include "protocols/laser/LaserSimAxis.h"
 #include <QtTest>
 
@@ -127,5 +128,5 @@ void TestLaserSimAxis::idle_advanceDoesNothing()
     QCOMPARE(m_axis.physical(), 200.0);
 }
 
-QTEST_GUILESS_MAIN(TestLaserSimAxis)
+STEPDECK_TEST_GUILESS_MAIN(TestLaserSimAxis)
 #include "tst_lasersimaxis.moc"

@@ -5,7 +5,7 @@ stepdeck_add_test(tst_nanoteccontroller SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_na
 stepdeck_add_test(tst_nanotecparameterio SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecparameterio.cpp ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
 stepdeck_add_test(tst_nanotec_e2e SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotec_e2e.cpp
                   LABELS integration TIMEOUT 300)
-add_dependencies(tst_nanotec_e2e stepdeck-cli stepdeck-sim)
+stepdeck_test_depends(tst_nanotec_e2e stepdeck-cli stepdeck-sim)
 stepdeck_add_test(tst_nanotecclosedloop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecclosedloop.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/NanotecRig.h LABELS unit)
 stepdeck_add_test(tst_nanotecsafety SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_nanotecsafety.cpp

@@ -2,6 +2,7 @@
 // pseudo-terminal (QSerialPort at 19200 8N1). Each CLI invocation is its own session; the
 // drives' settings persist in the simulator process between invocations.
 #include "ProcessSupport.h"
+#include "TestMain.h"
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -452,5 +453,5 @@ void TestNanotecEndToEnd::bus12_moveJogHomeScanStatus_byDriveName()
     QVERIFY2(decoded.match(QString::fromUtf8(r.out)).hasMatch(), r.out.constData());
 }
 
-QTEST_GUILESS_MAIN(TestNanotecEndToEnd)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecEndToEnd)
 #include "tst_nanotec_e2e.moc"

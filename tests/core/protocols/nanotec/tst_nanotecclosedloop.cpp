@@ -1,6 +1,7 @@
 // The closed-loop workflow of the Nanotec adapter (NanotecClosedLoop, manual 8.1) against the
 // simulated bus: what the drive received, how it turned and stands, and what the host says.
 #include "NanotecRig.h"
+#include "TestMain.h"
 #include "model/ClosedLoop.h"
 
 using namespace stepdeck;
@@ -9,7 +10,7 @@ using nanotectest::NanotecRig;
 namespace cl = stepdeck::closedloop;
 
 namespace {
-constexpr int kCalibrationMs = 300;
+constexpr int kClosedLoopCalibrationMs = 300;
 }
 
 class TestNanotecClosedLoop : public QObject
@@ -44,7 +45,7 @@ private:
 void TestNanotecClosedLoop::init()
 {
     m_rig = std::make_unique<NanotecRig>();
-    m_rig->sim->setCalibrationMs(kCalibrationMs);
+    m_rig->sim->setCalibrationMs(kClosedLoopCalibrationMs);
     QVERIFY(m_rig->connect());
     m_results = std::make_unique<QSignalSpy>(m_rig->ctl, &Controller::requestFinished);
 }
@@ -136,7 +137,7 @@ void TestNanotecClosedLoop::calibrate_progressVisible_resultReadBack_modeRestore
     QTRY_VERIFY_WITH_TIMEOUT(finished(id).has_value(), 5000);
     const CommandResult r = *finished(id);
     QVERIFY2(r.ok(), qPrintable(r.message));
-    QVERIFY(r.value.toMap().value(cl::kDurationMs).toLongLong() >= kCalibrationMs);
+    QVERIFY(r.value.toMap().value(cl::kDurationMs).toLongLong() >= kClosedLoopCalibrationMs);
     QVERIFY(drive->closedLoop().calibrated());
     QVERIFY(m_rig->sim->standingStill());
     const QList<QByteArray> f = m_rig->sim->receivedFrames();
@@ -274,5 +275,5 @@ void TestNanotecClosedLoop::enable_wrongMotorData_refusedNothingWritten()
     QVERIFY(!m_rig->sim->receivedFrames().contains("#1:CL_enable=1\r"));
 }
 
-QTEST_MAIN(TestNanotecClosedLoop)
+STEPDECK_TEST_MAIN(TestNanotecClosedLoop)
 #include "tst_nanotecclosedloop.moc"

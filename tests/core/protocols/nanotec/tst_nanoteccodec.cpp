@@ -1,5 +1,6 @@
 // NanotecCodec against every example of the SMCI33/SMCI47-S command reference, both
 // directions, fed whole, byte by byte, in random chunks and with garbage in between.
+#include "TestMain.h"
 #include "protocols/nanotec/NanotecCodec.h"
 #include <QRandomGenerator>
 #include <QtTest>
@@ -560,5 +561,5 @@ void TestNanotecCodec::parseNumber_digitsNotSignBound()
     }
 }
 
-QTEST_GUILESS_MAIN(TestNanotecCodec)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecCodec)
 #include "tst_nanoteccodec.moc"

@@ -3,6 +3,7 @@
 // reference run, panic broadcast, silent and misbehaving drives. (Parameters, records and the
 // error memory: tst_nanotecparameterio.)
 #include "NanotecRig.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 
 using namespace stepdeck;
@@ -462,5 +463,5 @@ void TestNanotecController::sendRaw_refusesForbiddenCommands()
     }
 }
 
-QTEST_GUILESS_MAIN(TestNanotecController)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecController)
 #include "tst_nanoteccontroller.moc"

@@ -2,6 +2,7 @@
 // NanotecDriveClosedLoop.h): the calibration run '!101' takes its time and shows its progress
 // in 'C' and 'I', fails without an encoder, the closed-loop reference run '!8' ends at the
 // index mark, ':CL_enable=1' is ignored until both ran, and 'S' stops either run.
+#include "TestMain.h"
 #include "protocols/nanotec/NanotecSimulator.h"
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -11,7 +12,7 @@ using namespace stepdeck;
 using namespace stepdeck::nanotec;
 
 namespace {
-constexpr int kCalibrationMs = 400;
+constexpr int kDriveCalibrationMs = 400;
 }
 
 class TestNanotecDriveClosedLoop : public QObject
@@ -42,7 +43,7 @@ void TestNanotecDriveClosedLoop::init()
     SimulatorOptions o;
     o.addresses = {1};
     m_sim = new NanotecSimulator(o);
-    m_sim->setCalibrationMs(kCalibrationMs);
+    m_sim->setCalibrationMs(kDriveCalibrationMs);
     m_tx = new QSignalSpy(m_sim, &Simulator::transmit);
 }
 
@@ -77,7 +78,7 @@ void TestNanotecDriveClosedLoop::calibrate()
     ask("#1!101\r");
     QCOMPARE(value("#1Z!\r", "001Z!"), qint64(101)); // the calibration mode, not positioning
     ask("#1A\r");
-    QTRY_VERIFY_WITH_TIMEOUT(m_sim->drive(1)->ready(), 10 * kCalibrationMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_sim->drive(1)->ready(), 10 * kDriveCalibrationMs);
 }
 
 void TestNanotecDriveClosedLoop::calibration_takesItsTime_progressShowsInPositionAndEncoder()
@@ -97,7 +98,7 @@ void TestNanotecDriveClosedLoop::calibration_takesItsTime_progressShowsInPositio
     QVERIFY(qAbs(value("#1I\r", "001I") - value("#1C\r", "001C")) <= 1);
     QTRY_VERIFY_WITH_TIMEOUT(d->ready(), 5000);
     // It cannot end before its time: the rotor went one revolution out and back.
-    QVERIFY2(clock.elapsed() >= kCalibrationMs, qPrintable(QString::number(clock.elapsed())));
+    QVERIFY2(clock.elapsed() >= kDriveCalibrationMs, qPrintable(QString::number(clock.elapsed())));
     QCOMPARE(d->position(), qint64(0));
     QCOMPARE(value("#1$\r", "001$") & 0x05, qint64(1)); // ready, no position error
     QVERIFY(d->closedLoop().calibrated());
@@ -191,5 +192,5 @@ void TestNanotecDriveClosedLoop::stop_duringCalibration_standsStill_notCalibrate
     QVERIFY(d->closedLoop().running() == DriveClosedLoop::Run::None); // nothing resumes
 }
 
-QTEST_MAIN(TestNanotecDriveClosedLoop)
+STEPDECK_TEST_MAIN(TestNanotecDriveClosedLoop)
 #include "tst_nanotecdriveclosedloop.moc"

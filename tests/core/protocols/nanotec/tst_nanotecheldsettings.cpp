@@ -1,6 +1,7 @@
 // NanotecHeldSettings: which read-back values survive which exchanges (issue 30: a chain of
 // chords need not write '!1' and 'p2' again), and that anything that may have changed them,
 // or may hide a reset of the drive (5.32), forgets them.
+#include "TestMain.h"
 #include "protocols/nanotec/NanotecCodec.h"
 #include "protocols/nanotec/NanotecHeldSettings.h"
 #include <QtTest>
@@ -132,5 +133,5 @@ void TestNanotecHeldSettings::heldValue_otherValue_notHeld()
     QVERIFY(!h.holds(2, 'p', 2, 1));      // another drive
 }
 
-QTEST_GUILESS_MAIN(TestNanotecHeldSettings)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecHeldSettings)
 #include "tst_nanotecheldsettings.moc"

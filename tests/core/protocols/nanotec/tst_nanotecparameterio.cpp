@@ -2,6 +2,7 @@
 // over LoopbackTransport: write & verify, read-back, limit-switch groups, motor address, records
 // and the error memory. (Link, motion and faults: tst_nanoteccontroller.)
 #include "NanotecRig.h"
+#include "TestMain.h"
 #include "TestSupport.h"
 
 using namespace stepdeck;
@@ -252,5 +253,5 @@ void TestNanotecParameterIo::errorMemory_decoded()
     QCOMPARE(entries[1].toMap()["code"].toInt(), error::Position);
 }
 
-QTEST_GUILESS_MAIN(TestNanotecParameterIo)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecParameterIo)
 #include "tst_nanotecparameterio.moc"

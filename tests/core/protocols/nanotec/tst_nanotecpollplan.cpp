@@ -1,6 +1,7 @@
 // The Nanotec poll plan (issue 32, step 4): moving drives in every sweep, the idle ones in
 // turn within the wire budget of one poll interval, silent ones now and then. The plan is pure,
 // so these tests walk sweeps, not time: at the poll interval of 50 ms, 100 sweeps are 5 s.
+#include "TestMain.h"
 #include "protocols/nanotec/NanotecPollPlan.h"
 #include <QtTest>
 
@@ -236,5 +237,5 @@ void TestNanotecPollPlan::nobodyAnswers_everyDriveInTurn()
     QCOMPARE(asked.size(), 20);
 }
 
-QTEST_GUILESS_MAIN(TestNanotecPollPlan)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecPollPlan)
 #include "tst_nanotecpollplan.moc"

@@ -9,6 +9,7 @@
 // the window's STOP) takes the first over: both end confirmed, never "'I' to drive 1 was
 // cancelled", and the encoder check the first was making is made by the second.
 #include "NanotecRig.h"
+#include "TestMain.h"
 
 using namespace stepdeck;
 using namespace stepdeck::nanotec;
@@ -250,5 +251,5 @@ void TestNanotecPositionError::stop_secondStopDuringTheEncoderCheck_firstTakenOv
     QCOMPARE(x.position, d->position());
 }
 
-QTEST_GUILESS_MAIN(TestNanotecPositionError)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecPositionError)
 #include "tst_nanotecpositionerror.moc"

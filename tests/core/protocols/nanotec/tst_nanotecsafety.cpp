@@ -2,6 +2,7 @@
 // contract") against the simulated bus: what every drive RECEIVED and whether its motor stands,
 // not only the host's own state.
 #include "NanotecRig.h"
+#include "TestMain.h"
 
 using namespace stepdeck;
 using namespace stepdeck::nanotec;
@@ -237,5 +238,5 @@ void TestNanotecSafety::silentDrive_answersAgain_positionUnknown_absoluteMoveRef
     QCOMPARE(m_rig->countFrames("#2A\r"), 0);
 }
 
-QTEST_GUILESS_MAIN(TestNanotecSafety)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecSafety)
 #include "tst_nanotecsafety.moc"

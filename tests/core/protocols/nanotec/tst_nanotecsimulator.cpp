@@ -1,5 +1,6 @@
 // The simulated Nanotec bus: echo, '?' and ignore-invalid exactly as the manual describes,
 // records, error memory, motion with the drive's ramp, switches, auto status and faults.
+#include "TestMain.h"
 #include "protocols/nanotec/NanotecDrive.h"
 #include "protocols/nanotec/NanotecSimulator.h"
 #include <QRandomGenerator>
@@ -347,5 +348,5 @@ void TestNanotecSimulator::neverSentCommands_behaveAsManualSays()
     QCOMPARE(ask("#1|1\r"), QByteArray("001|1\r"));
 }
 
-QTEST_GUILESS_MAIN(TestNanotecSimulator)
+STEPDECK_TEST_GUILESS_MAIN(TestNanotecSimulator)
 #include "tst_nanotecsimulator.moc"
