@@ -1,15 +1,19 @@
 // The test files' own names (issue 48): the tests of a part of the tree are built into one
-// program (tests/CMakeLists.txt, test groups), so a class, or an inline, constexpr or template
-// function, defined at file scope outside an anonymous namespace in two test files would be
-// one entity to the linker: it keeps one definition and one file's test silently runs the
-// other's code. Two such names in one compiled batch break the compile; in two batches nothing
-// does, so this test reads every test file and names each such entity defined twice.
+// program (tests/CMakeLists.txt, test groups), a directory's files a few at a time as one
+// translation unit. Two kinds of names then meet without a compiler error:
+// - a class, or an inline, constexpr or template function, defined at file scope outside an
+//   anonymous namespace in two test files is one entity to the linker: it keeps one definition
+//   and one file's test silently runs the other's code;
+// - two file-local functions (anonymous namespace, static) of one name and different parameters
+//   in one batch are overloads, and a call may take the other file's.
+// Same-named file-local classes and variables in one batch break the compile, so they need no
+// check. This test reads every test file and names each case.
 #include "TestMain.h"
 #include <QDirIterator>
+#include <QFileInfo>
 #include <QMap>
 #include <QRegularExpression>
 #include <QtTest>
-#include <algorithm>
 
 namespace {
 
@@ -92,40 +96,69 @@ QStringList declarationTokens(QStringList s)
     return s;
 }
 
-// What a definition at file scope outside anonymous namespaces shares with the other files of
-// its program: "class X" (a class's member functions defined in it are inline), "function f"
-// (inline, constexpr and template functions); empty for anything else.
-QString sharedEntity(const QStringList& statement)
+// The name of the function a statement before `{` defines, if it defines one that is not a
+// member (f in `inline int f(int x) const`); empty for classes, enums, lambdas, initializers.
+QString definedFunction(const QStringList& s)
+{
+    const int firstParen = int(s.indexOf(QLatin1String("(")));
+    if (firstParen <= 0 || s.contains(QLatin1String("class")) ||
+        s.contains(QLatin1String("struct")) || s.contains(QLatin1String("enum")) ||
+        s.mid(0, firstParen).contains(QLatin1String("=")))
+        return {};
+    const QString name = s.at(firstParen - 1);
+    static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_]\\w*$"));
+    static const QStringList notNames{"if", "for", "while", "switch", "return", "catch"};
+    return identifier.match(name).hasMatch() && !notNames.contains(name) ? name : QString();
+}
+
+struct Definitions
+{
+    // At file scope outside anonymous namespaces, where the linker shares them with the other
+    // files of the program: "class X" (a class's member functions defined in it are inline),
+    // "function f" (inline, constexpr and template functions); qualified by the named
+    // namespaces around them.
+    QStringList shared;
+    // Functions of the file's own (in an anonymous namespace, or static): in one batch with
+    // another file's function of the same name and other parameters, a call of either may
+    // silently take the other as the better overload.
+    QStringList local;
+};
+
+// What a definition at file scope adds to `out` (see Definitions).
+void classify(const QStringList& statement, bool anonymous, const QStringList& namedPath,
+              Definitions* out)
 {
     const QStringList s = declarationTokens(statement);
     int classAt = -1;
     for (int i = 0; i < s.size(); ++i)
         if (s.at(i) == QLatin1String("class") || s.at(i) == QLatin1String("struct"))
             classAt = i;
-    const int firstParen = int(s.indexOf(QLatin1String("(")));
-    const bool isEnum = s.contains(QLatin1String("enum"));
-    if (classAt >= 0 && !isEnum && int(s.lastIndexOf(QLatin1String("("))) < classAt &&
-        classAt + 1 < s.size())
-        return QLatin1String("class ") + s.at(classAt + 1);
-    if (classAt < 0 && !isEnum && firstParen > 0 && !s.contains(QLatin1String("static")) &&
-        !s.at(firstParen - 1).contains(QLatin1String("::")) &&
-        (s.first() == QLatin1String("template") ||
-         s.mid(0, firstParen).contains(QLatin1String("inline")) ||
-         s.mid(0, firstParen).contains(QLatin1String("constexpr"))))
-        return QLatin1String("function ") + s.at(firstParen - 1);
-    return {};
+    const QString prefix =
+        namedPath.isEmpty() ? QString() : namedPath.join(QLatin1String("::")) + QLatin1String("::");
+    const QString function = definedFunction(s);
+    const bool isStatic = s.contains(QLatin1String("static"));
+    if (!function.isEmpty() && (anonymous || isStatic))
+        out->local << QLatin1String("function ") + function;
+    if (anonymous)
+        return;
+    if (classAt >= 0 && !s.contains(QLatin1String("enum")) &&
+        int(s.lastIndexOf(QLatin1String("("))) < classAt && classAt + 1 < s.size())
+        out->shared << QLatin1String("class ") + prefix + s.at(classAt + 1);
+    else if (!function.isEmpty() && !isStatic &&
+             (s.first() == QLatin1String("template") || s.contains(QLatin1String("inline")) ||
+              s.contains(QLatin1String("constexpr"))))
+        out->shared << QLatin1String("function ") + prefix + function;
 }
 
-// The entities a file defines that the linker would share with other files (sharedEntity),
-// qualified by the named namespaces around them.
-QStringList sharedDefinitions(const QString& code)
+// The definitions of a file (see Definitions).
+Definitions definitions(const QString& code)
 {
     static const QRegularExpression token(QStringLiteral(R"([A-Za-z_]\w*(?:::[A-Za-z_]\w*)*|\S)"));
     enum class Scope { Named, Anonymous, Other };
     QVector<Scope> scopes;
     QStringList namedPath;
     QStringList statement; // the tokens since the last ; { or }
-    QStringList found;
+    Definitions found;
     auto it = token.globalMatch(code);
     while (it.hasNext()) {
         const QString t = it.next().captured();
@@ -135,15 +168,8 @@ QStringList sharedDefinitions(const QString& code)
                 scope = statement.size() == 1 ? Scope::Anonymous : Scope::Named;
                 if (scope == Scope::Named)
                     namedPath << statement.at(1);
-            } else if (!statement.isEmpty() &&
-                       std::all_of(scopes.cbegin(), scopes.cend(),
-                                   [](Scope s) { return s == Scope::Named; })) {
-                const QString entity = sharedEntity(statement);
-                const int space = int(entity.indexOf(QLatin1Char(' ')));
-                if (!entity.isEmpty())
-                    found << entity.left(space + 1) +
-                                 (namedPath + QStringList{entity.mid(space + 1)})
-                                     .join(QLatin1String("::"));
+            } else if (!statement.isEmpty() && !scopes.contains(Scope::Other)) {
+                classify(statement, scopes.contains(Scope::Anonymous), namedPath, &found);
             }
             scopes << scope;
             statement.clear();
@@ -160,60 +186,79 @@ QStringList sharedDefinitions(const QString& code)
     return found;
 }
 
+// "name: file, file" for each name more than one file defines.
+QStringList definedTwice(const QMap<QString, QStringList>& filesOf)
+{
+    QStringList twice;
+    for (auto e = filesOf.cbegin(); e != filesOf.cend(); ++e)
+        if (e.value().size() > 1)
+            twice << e.key() + QLatin1String(": ") + e.value().join(QLatin1String(", "));
+    return twice;
+}
+
 } // namespace
 
 class TestTestSourceNames : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void sharedDefinitions_foundWhereTheLinkerSharesThem_data();
-    void sharedDefinitions_foundWhereTheLinkerSharesThem();
-    void testFiles_noSharedDefinitionTwice();
+    void definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem_data();
+    void definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem();
+    void testFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory();
 };
 
-void TestTestSourceNames::sharedDefinitions_foundWhereTheLinkerSharesThem_data()
+void TestTestSourceNames::definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem_data()
 {
     QTest::addColumn<QString>("source");
-    QTest::addColumn<QStringList>("expected");
+    QTest::addColumn<QStringList>("shared");
+    QTest::addColumn<QStringList>("local");
     QTest::newRow("class at file scope")
-        << "struct Rig { int f() { return 1; } };" << QStringList{"class Rig"};
+        << "struct Rig { int f() { return 1; } };" << QStringList{"class Rig"} << QStringList{};
     QTest::newRow("in an anonymous namespace")
-        << "namespace { struct Rig {}; inline int f() {} }" << QStringList{};
+        << "namespace { struct Rig {}; inline int f() {} QString g(int a) { return {}; } }"
+        << QStringList{} << QStringList{"function f", "function g"};
     QTest::newRow("in a named namespace")
         << "namespace a::b { class Bench : public QObject { void g() {} }; }"
-        << QStringList{"class a::b::Bench"};
-    QTest::newRow("inline, constexpr and template functions")
+        << QStringList{"class a::b::Bench"} << QStringList{};
+    QTest::newRow("inline, constexpr, template and static functions")
         << "inline int f(int x) { return x; } constexpr double g() { return 1; }\n"
            "template <typename T> T h(T t) { return t; } int plain() { return 0; }\n"
            "static inline int s() { return 0; }"
-        << QStringList{"function f", "function g", "function h"};
+        << QStringList{"function f", "function g", "function h"} << QStringList{"function s"};
     QTest::newRow("a template's class parameter, a macro in front")
         << "template <class T> T pick(T a) { return a; }\n"
            "Q_DECLARE_METATYPE(Foo) struct Bar {};"
-        << QStringList{"function pick", "class Bar"};
-    QTest::newRow("members, declarations, enums, lambdas are not")
+        << QStringList{"function pick", "class Bar"} << QStringList{};
+    QTest::newRow("members, declarations, enums, lambdas, initializers are not")
         << "class T; void TestX::run() { struct Local {}; auto l = [] { return 1; }; }\n"
-           "enum class Mode { A }; int TestX::f() const { return 0; }"
-        << QStringList{};
+           "enum class Mode { A }; int TestX::f() const { return 0; }\n"
+           "namespace { const QList<int> kList{1, 2}; const auto v = make(QList<int>{1}); }"
+        << QStringList{} << QStringList{};
     QTest::newRow("comments, strings, raw strings and directives")
         << "// struct A {\n/* class B { */ const char* s = \"struct C {\";\n"
            "const char* r = R\"x(struct D { } )x\";\n#define E struct E {\nstruct F {};"
-        << QStringList{"class F"};
+        << QStringList{"class F"} << QStringList{};
 }
 
-void TestTestSourceNames::sharedDefinitions_foundWhereTheLinkerSharesThem()
+void TestTestSourceNames::definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem()
 {
     QFETCH(QString, source);
-    QFETCH(QStringList, expected);
-    QCOMPARE(sharedDefinitions(codeOnly(source)), expected);
+    QFETCH(QStringList, shared);
+    QFETCH(QStringList, local);
+    const Definitions found = definitions(codeOnly(source));
+    QCOMPARE(found.shared, shared);
+    QCOMPARE(found.local, local);
 }
 
-void TestTestSourceNames::testFiles_noSharedDefinitionTwice()
+// A test group's batches hold files of one directory (tests/CMakeLists.txt): file-local
+// functions of one name are checked within a directory, shared definitions over all test files.
+void TestTestSourceNames::testFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory()
 {
-    QMap<QString, QStringList> filesOf;
+    QMap<QString, QStringList> sharedIn;
+    QMap<QString, QStringList> localIn; // key: directory and name
     int files = 0;
-    QDirIterator it(QStringLiteral(STEPDECK_SOURCE_DIR "/tests"), {QStringLiteral("*.cpp")},
-                    QDir::Files, QDirIterator::Subdirectories);
+    const QString root = QStringLiteral(STEPDECK_SOURCE_DIR "/tests");
+    QDirIterator it(root, {QStringLiteral("tst_*.cpp")}, QDir::Files, QDirIterator::Subdirectories);
     while (it.hasNext()) {
         const QString path = it.next();
         if (path.contains(QLatin1String("/tests/fuzz/"))) // built on their own, never grouped
@@ -221,21 +266,27 @@ void TestTestSourceNames::testFiles_noSharedDefinitionTwice()
         QFile file(path);
         QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(path));
         ++files;
-        const QString code = codeOnly(QString::fromUtf8(file.readAll()));
-        QStringList names = sharedDefinitions(code);
-        names.removeDuplicates(); // a file may reopen its own namespace
-        for (const QString& name : names)
-            filesOf[name] << path.mid(int(qstrlen(STEPDECK_SOURCE_DIR)) + 1);
+        const QString relative = path.mid(root.size() + 1);
+        const QString directory = QFileInfo(relative).path();
+        Definitions found = definitions(codeOnly(QString::fromUtf8(file.readAll())));
+        found.shared.removeDuplicates(); // a file may reopen its own namespace
+        found.local.removeDuplicates();  // and overload its own functions
+        for (const QString& name : std::as_const(found.shared))
+            sharedIn[name] << relative;
+        for (const QString& name : std::as_const(found.local))
+            localIn[directory + QLatin1String(": ") + name] << relative;
     }
     QVERIFY2(files > 150, qPrintable(QStringLiteral("only %1 test files found").arg(files)));
-    QStringList twice;
-    for (auto e = filesOf.cbegin(); e != filesOf.cend(); ++e)
-        if (e.value().size() > 1)
-            twice << e.key() + QLatin1String(": ") + e.value().join(QLatin1String(", "));
-    QVERIFY2(twice.isEmpty(),
+    const QStringList shared = definedTwice(sharedIn);
+    QVERIFY2(shared.isEmpty(),
              qPrintable(QLatin1String("defined at file scope in several test files (move them "
                                       "into an anonymous namespace or rename them):\n") +
-                        twice.join(QLatin1Char('\n'))));
+                        shared.join(QLatin1Char('\n'))));
+    const QStringList local = definedTwice(localIn);
+    QVERIFY2(local.isEmpty(),
+             qPrintable(QLatin1String("file-local functions of one name in one directory (a "
+                                      "batch may overload one with the other; rename them):\n") +
+                        local.join(QLatin1Char('\n'))));
 }
 
 STEPDECK_TEST_GUILESS_MAIN(TestTestSourceNames)

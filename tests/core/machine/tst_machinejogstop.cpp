@@ -20,8 +20,8 @@ using namespace stepdeck::machine;
 
 namespace {
 
-MachineDescription table(const QString& port, double maxJogSpeed,
-                         std::optional<double> jogAcceleration)
+MachineDescription jogStopMachine(const QString& port, double maxJogSpeed,
+                                  std::optional<double> jogAcceleration)
 {
     MachineDescription d;
     d.name = QStringLiteral("Jog table");
@@ -72,11 +72,12 @@ void TestMachineJogStop::release_fromMaxJogSpeed_boardStandsWithinTheStoppingDis
     test::PtyDevice board("elab");
     Machine machine;
     QString error;
-    QVERIFY2(machine.create(
-                 table(board.path(), maxJogSpeed,
-                       jogAcceleration > 0 ? std::optional<double>(jogAcceleration) : std::nullopt),
-                 &error),
-             qPrintable(error));
+    QVERIFY2(
+        machine.create(jogStopMachine(board.path(), maxJogSpeed,
+                                      jogAcceleration > 0 ? std::optional<double>(jogAcceleration)
+                                                          : std::nullopt),
+                       &error),
+        qPrintable(error));
     ControllerSession* session = machine.session(QStringLiteral("table"));
     machine.open();
     QTRY_COMPARE_WITH_TIMEOUT(session->linkState(), LinkState::Connected, 10000);

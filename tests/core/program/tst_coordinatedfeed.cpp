@@ -46,7 +46,7 @@ machine::MachineDescription bench()
 
 const CoordinatedFeed::Controllers kTable{QStringLiteral("table")};
 
-ProgramBlock lastBlock(const QString& program)
+ProgramBlock lastParsedBlock(const QString& program)
 {
     QList<ProgramError> errors;
     const std::optional<Program> p =
@@ -120,7 +120,7 @@ void TestCoordinatedFeed::resolve_g1_sharesOfF()
     AxisPositions start(size_t(d.axes.size()), 0.0);
     if (QTest::currentDataTag() == QByteArray("from where the block starts (X=1 Y=1)"))
         start[0] = start[1] = 1.0;
-    const ProgramBlock block = lastBlock(program);
+    const ProgramBlock block = lastParsedBlock(program);
     QCOMPARE(ratesText(CoordinatedFeed::resolve(block, d, kTable, start, {})), rates);
 }
 
@@ -130,7 +130,7 @@ void TestCoordinatedFeed::resolve_g1_sharesOfF()
 void TestCoordinatedFeed::resolveChord_arc_sharesAlongEachChord()
 {
     const machine::MachineDescription d = bench();
-    const ProgramBlock arc = lastBlock(QStringLiteral("G3 X0 Y10 I-10 J0 F600"));
+    const ProgramBlock arc = lastParsedBlock(QStringLiteral("G3 X0 Y10 I-10 J0 F600"));
     AxisPositions start(size_t(d.axes.size()), 0.0);
     start[0] = 10.0;
     const auto planned = ArcPath::plan(arc, d, start, {});
@@ -165,15 +165,18 @@ void TestCoordinatedFeed::resolve_feedOverride_scalesEveryShare()
 {
     const machine::MachineDescription d = bench();
     const AxisPositions start(size_t(d.axes.size()), 0.0);
+    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastParsedBlock("G1 X3 Y4 F300"), d, kTable, start,
+                                                {}, 0.5)),
+             QStringLiteral("X=90 Y=120"));
     QCOMPARE(
-        ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 Y4 F300"), d, kTable, start, {}, 0.5)),
-        QStringLiteral("X=90 Y=120"));
-    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 F300"), d, kTable, start, {}, 2)),
-             QStringLiteral("X=600"));
-    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 X3 F300"), d, kTable, start, {})),
-             QString()); // at 100 %: F as it stands
-    QCOMPARE(ratesText(CoordinatedFeed::resolve(lastBlock("G1 W3 F300"), d, kTable, start, {}, 2)),
-             QString()); // not a coordinating controller's
+        ratesText(CoordinatedFeed::resolve(lastParsedBlock("G1 X3 F300"), d, kTable, start, {}, 2)),
+        QStringLiteral("X=600"));
+    QCOMPARE(
+        ratesText(CoordinatedFeed::resolve(lastParsedBlock("G1 X3 F300"), d, kTable, start, {})),
+        QString()); // at 100 %: F as it stands
+    QCOMPARE(
+        ratesText(CoordinatedFeed::resolve(lastParsedBlock("G1 W3 F300"), d, kTable, start, {}, 2)),
+        QString()); // not a coordinating controller's
 }
 
 STEPDECK_TEST_GUILESS_MAIN(TestCoordinatedFeed)

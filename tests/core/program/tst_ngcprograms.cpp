@@ -47,7 +47,7 @@ bool nearOnAxis(const QString& axis, double actual, double expected)
     return std::abs(actual - expected) <= 0.5 / steps + 1e-9;
 }
 
-QString describe(const PreviewPoint& p)
+QString describePoint(const PreviewPoint& p)
 {
     return QStringLiteral("line %1 X%2 Y%3 Z%4")
         .arg(p.line)
@@ -110,7 +110,7 @@ void TestNgcPrograms::check_ngcProgram_passesWithTheComputedPath()
     const QList<Point> at = positionsAfter(expected.moves, Point{0, 0, 20});
     for (int i = 0; i < expected.moves.size(); ++i) {
         const PreviewPoint& p = path.at(i + 1);
-        const QString where = QStringLiteral("move %1: %2").arg(i).arg(describe(p));
+        const QString where = QStringLiteral("move %1: %2").arg(i).arg(describePoint(p));
         QVERIFY2(p.line == expected.moves.at(i).line, qPrintable(where));
         QVERIFY2(p.rapid == expected.moves.at(i).rapid, qPrintable(where));
         QVERIFY2(nearOnAxis("X", p.position.value("X", NAN), at.at(i).x) &&

@@ -44,7 +44,7 @@ using test::near;
 using test::pointText;
 
 // The first of `points` that `path` does not pass within `tolerance`, in order (empty: all).
-QString firstNotPassed(const QList<Point>& path, const QList<Point>& points, double tolerance)
+QString firstPointNotPassed(const QList<Point>& path, const QList<Point>& points, double tolerance)
 {
     const qsizetype i = test::firstNotPassed(path, points, tolerance);
     return i < 0 ? QString()
@@ -238,7 +238,7 @@ void TestNgcRun::comparePath(const QList<Point>& expected, qsizetype from, const
         return;
     }
     const QList<Point> trace = boardTrace(from);
-    const QString missed = firstNotPassed(trace, expected, kStep);
+    const QString missed = firstPointNotPassed(trace, expected, kStep);
     QVERIFY2(missed.isEmpty(), qPrintable(missed));
     QVERIFY(!trace.isEmpty());
     QVERIFY2(near(trace.last(), expected.last(), kStep), qPrintable(pointText(trace.last())));

@@ -8,7 +8,7 @@
 using namespace stepdeck::program;
 
 namespace {
-QString describe(const ToolTable& table)
+QString describeTools(const ToolTable& table)
 {
     QStringList out;
     for (const Tool& t : table.tools())
@@ -52,7 +52,7 @@ void TestToolTable::parse_tables_golden()
     QList<ProgramError> errors;
     const std::optional<ToolTable> table = ToolTable::parse(text, &errors);
     QVERIFY2(table, qPrintable(errors.isEmpty() ? QString() : errors.first().text()));
-    QCOMPARE(describe(*table), tools);
+    QCOMPARE(describeTools(*table), tools);
     QVERIFY(errors.isEmpty());
 }
 
