@@ -56,7 +56,7 @@ bool readAddress(const CliOptions& options, const char* option, const AddressRan
     return true;
 }
 
-QString valueText(const QVariant& value)
+QString busValueText(const QVariant& value)
 {
     if (value.typeId() == QMetaType::Bool)
         return value.toBool() ? QStringLiteral("on") : QStringLiteral("off");
@@ -230,7 +230,7 @@ Outcome cmdRecords(CliContext& c, QStringList args)
         const QVariantMap values = record.value(QStringLiteral("values")).toMap();
         QStringList parts;
         for (auto it = values.cbegin(); it != values.cend(); ++it)
-            parts << QStringLiteral("%1=%2").arg(it.key(), valueText(it.value()));
+            parts << QStringLiteral("%1=%2").arg(it.key(), busValueText(it.value()));
         printLine(CliText::tr("record %1: %2")
                       .arg(record.value(QStringLiteral("record")).toInt(), 2)
                       .arg(parts.join(QLatin1Char(' '))));

@@ -37,7 +37,7 @@ Outcome unsupported(const CliContext& c, const QString& what)
     return Outcome::failure(ExitUnsupported, CliEmis::tr("%1 has no %2").arg(c.model->id, what));
 }
 
-QString describe(const ParameterSchema& schema, const ParameterSet& set)
+QString describeEmis(const ParameterSchema& schema, const ParameterSet& set)
 {
     QStringList parts;
     for (auto it = set.cbegin(); it != set.cend(); ++it) {
@@ -111,7 +111,7 @@ Outcome cmdStore(CliContext& c, QStringList args)
                        {{operation::arg::kParameters, QVariant::fromValue(set)}}, &value);
     if (result.ok() && !c.json()) {
         printLine(CliEmis::tr("stored as power-on values: %1 (sent: %2)")
-                      .arg(describe(schema, set),
+                      .arg(describeEmis(schema, set),
                            toStrings(value.toMap().value(QStringLiteral("commands")))
                                .join(QLatin1Char(' '))));
     }
@@ -152,7 +152,7 @@ Outcome cmdGetStored(CliContext& c, QStringList args)
         printJson(json);
     } else {
         for (auto it = shown.cbegin(); it != shown.cend(); ++it)
-            printLine(describe(schema, ParameterSet{{it.key(), it.value()}}));
+            printLine(describeEmis(schema, ParameterSet{{it.key(), it.value()}}));
         for (const QString& name : notStored)
             printLine(CliEmis::tr("%1: not stored (the board uses its default)").arg(name));
         for (const QString& note : notes)

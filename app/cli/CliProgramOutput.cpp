@@ -14,7 +14,7 @@ using program::RunState;
 
 namespace {
 // The states of a run as --json names them (fixed words: scripts compare them).
-QString stateKey(RunState state)
+QString runStateKey(RunState state)
 {
     switch (state) {
     case RunState::Idle:
@@ -220,10 +220,10 @@ void ProgramReport::summary(const Outcome& outcome, const QString& positions)
             printJson(QJsonObject{{"event", "block"},
                                   {"line", m_line},
                                   {"text", m_text},
-                                  {"state", stateKey(state)},
+                                  {"state", runStateKey(state)},
                                   {"message", outcome.message}});
         printJson(QJsonObject{{"event", "summary"},
-                              {"state", stateKey(state)},
+                              {"state", runStateKey(state)},
                               {"exitCode", outcome.code},
                               {"line", outcome.ok() ? 0 : m_line},
                               {"blocksDone", m_runner.blocksDone()},

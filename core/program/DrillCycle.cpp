@@ -8,7 +8,7 @@ namespace {
 
 const char* const kAxisNames[3] = {"X", "Y", "Z"};
 
-int indexOf(const machine::MachineDescription& d, const QString& name)
+int axisIndexOf(const machine::MachineDescription& d, const QString& name)
 {
     for (int i = 0; i < d.axes.size(); ++i)
         if (d.axes.at(i).name == name)
@@ -30,7 +30,7 @@ ProgramBlock DrillCycle::rateBlock(const ProgramBlock& block, Kind kind,
     rates.kind = kind == Kind::Feed ? BlockKind::Feed : BlockKind::Rapid;
     rates.axes.clear();
     for (int a = kind == Kind::Feed ? 2 : 0; a < 3; ++a)
-        if (indexOf(d, QLatin1String(kAxisNames[a])) >= 0)
+        if (axisIndexOf(d, QLatin1String(kAxisNames[a])) >= 0)
             rates.axes.insert(QLatin1String(kAxisNames[a]), 0.0);
     return rates;
 }
@@ -56,7 +56,7 @@ DrillCycle::plan(const ProgramBlock& block, const machine::MachineDescription& d
     DrillCycle cycle;
     for (int a = 0; a < 3; ++a) {
         const QString name = QLatin1String(kAxisNames[a]);
-        cycle.m_axis[a] = indexOf(d, name);
+        cycle.m_axis[a] = axisIndexOf(d, name);
         if (cycle.m_axis[a] < 0)
             continue;
         cycle.m_position[a] = start.at(size_t(cycle.m_axis[a]));

@@ -1,13 +1,14 @@
 // The test files' own names (issue 48): the tests of a part of the tree are built into one
 // program (tests/CMakeLists.txt, test groups), a directory's files a few at a time as one
-// translation unit. Two kinds of names then meet without a compiler error:
+// translation unit, and the libraries' files are compiled in such batches too (CMakeLists.txt). Two
+// kinds of names then meet without a compiler error:
 // - a class, or an inline, constexpr or template function, defined at file scope outside an
 //   anonymous namespace in two test files is one entity to the linker: it keeps one definition
 //   and one file's test silently runs the other's code;
 // - two file-local functions (anonymous namespace, static) of one name and different parameters
 //   in one batch are overloads, and a call may take the other file's.
 // Same-named file-local classes and variables in one batch break the compile, so they need no
-// check. This test reads every test file and names each case.
+// check. This test reads every such file and names each case.
 #include "TestMain.h"
 #include <QDirIterator>
 #include <QFileInfo>
@@ -204,7 +205,8 @@ class TestTestSourceNames : public QObject
 private Q_SLOTS:
     void definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem_data();
     void definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem();
-    void testFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory();
+    void sourceFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory_data();
+    void sourceFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory();
 };
 
 void TestTestSourceNames::definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem_data()
@@ -250,37 +252,53 @@ void TestTestSourceNames::definitions_sharedAndLocalAsTheLinkerAndABatchSeeThem(
     QCOMPARE(found.local, local);
 }
 
-// A test group's batches hold files of one directory (tests/CMakeLists.txt): file-local
-// functions of one name are checked within a directory, shared definitions over all test files.
-void TestTestSourceNames::testFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory()
+// The files compiled in unity batches, which hold files of one directory (tests/CMakeLists.txt
+// and the libraries in CMakeLists.txt): file-local functions of one name are checked within a
+// directory, shared definitions over all files of a kind.
+void TestTestSourceNames::sourceFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory_data()
 {
+    QTest::addColumn<QStringList>("roots");
+    QTest::addColumn<QString>("pattern");
+    QTest::addColumn<int>("atLeast");
+    QTest::newRow("tests") << QStringList{"tests"} << "tst_*.cpp" << 150;
+    QTest::newRow("libraries") << QStringList{"core", "ui", "app/cli"} << "*.cpp" << 300;
+}
+
+void TestTestSourceNames::sourceFiles_noSharedDefinitionTwiceNoLocalFunctionTwiceInADirectory()
+{
+    QFETCH(QStringList, roots);
+    QFETCH(QString, pattern);
+    QFETCH(int, atLeast);
     QMap<QString, QStringList> sharedIn;
     QMap<QString, QStringList> localIn; // key: directory and name
     int files = 0;
-    const QString root = QStringLiteral(STEPDECK_SOURCE_DIR "/tests");
-    QDirIterator it(root, {QStringLiteral("tst_*.cpp")}, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString path = it.next();
-        if (path.contains(QLatin1String("/tests/fuzz/"))) // built on their own, never grouped
-            continue;
-        QFile file(path);
-        QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(path));
-        ++files;
-        const QString relative = path.mid(root.size() + 1);
-        const QString directory = QFileInfo(relative).path();
-        Definitions found = definitions(codeOnly(QString::fromUtf8(file.readAll())));
-        found.shared.removeDuplicates(); // a file may reopen its own namespace
-        found.local.removeDuplicates();  // and overload its own functions
-        for (const QString& name : std::as_const(found.shared))
-            sharedIn[name] << relative;
-        for (const QString& name : std::as_const(found.local))
-            localIn[directory + QLatin1String(": ") + name] << relative;
+    const QString source = QStringLiteral(STEPDECK_SOURCE_DIR);
+    for (const QString& root : std::as_const(roots)) {
+        QDirIterator it(source + QLatin1Char('/') + root, {pattern}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = it.next();
+            if (path.contains(QLatin1String("/tests/fuzz/"))) // built on their own
+                continue;
+            QFile file(path);
+            QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(path));
+            ++files;
+            const QString relative = path.mid(source.size() + 1);
+            const QString directory = QFileInfo(relative).path();
+            Definitions found = definitions(codeOnly(QString::fromUtf8(file.readAll())));
+            found.shared.removeDuplicates(); // a file may reopen its own namespace
+            found.local.removeDuplicates();  // and overload its own functions
+            for (const QString& name : std::as_const(found.shared))
+                sharedIn[name] << relative;
+            for (const QString& name : std::as_const(found.local))
+                localIn[directory + QLatin1String(": ") + name] << relative;
+        }
     }
-    QVERIFY2(files > 150, qPrintable(QStringLiteral("only %1 test files found").arg(files)));
+    QVERIFY2(files >= atLeast, qPrintable(QStringLiteral("only %1 files found").arg(files)));
     const QStringList shared = definedTwice(sharedIn);
     QVERIFY2(shared.isEmpty(),
-             qPrintable(QLatin1String("defined at file scope in several test files (move them "
-                                      "into an anonymous namespace or rename them):\n") +
+             qPrintable(QLatin1String("defined at file scope in several files (move them into "
+                                      "an anonymous namespace or rename them):\n") +
                         shared.join(QLatin1Char('\n'))));
     const QStringList local = definedTwice(localIn);
     QVERIFY2(local.isEmpty(),

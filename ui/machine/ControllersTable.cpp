@@ -14,7 +14,7 @@ using machine::MachineFileError;
 namespace {
 const char* const kLastId = "stepdeckLastId";
 
-QStringList keys()
+QStringList controllerKeys()
 {
     return {"id", "model", "port", "axes", "resetLine", "setup"};
 }
@@ -51,7 +51,7 @@ bool parseBusAddresses(const QString& text, QMap<Axis, int>* addresses, AxisName
 }
 
 ControllersTable::ControllersTable(QWidget* parent)
-    : EditorTable(keys(),
+    : EditorTable(controllerKeys(),
                   {tr("Id"), tr("Model"), tr("Port"), tr("Bus addresses"), tr("Reset line"),
                    tr("Setup file")},
                   3, parent)

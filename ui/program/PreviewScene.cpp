@@ -3,7 +3,7 @@
 namespace stepdeck::ui {
 
 namespace {
-const QString kAxisNames[3] = {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
+const QString kSceneAxisNames[3] = {QStringLiteral("X"), QStringLiteral("Y"), QStringLiteral("Z")};
 
 bool hasAll(unsigned known, const QList<int>& axes)
 {
@@ -37,10 +37,10 @@ void PreviewScene::setPreview(const program::ProgramPreview& preview,
 {
     clear();
     for (int i = 0; i < 3; ++i) {
-        const machine::MachineAxis* axis = machine.axis(kAxisNames[i]);
+        const machine::MachineAxis* axis = machine.axis(kSceneAxisNames[i]);
         if (!axis)
             continue;
-        m_axes << kAxisNames[i];
+        m_axes << kSceneAxisNames[i];
         m_units[i] = machine::unitKey(axis->unit);
         if (axis->hasSoftLimits()) {
             // Soft limits are machine coordinates; the path is work coordinates.
@@ -54,8 +54,8 @@ void PreviewScene::setPreview(const program::ProgramPreview& preview,
         point.rapid = p.rapid;
         point.line = p.line;
         for (int i = 0; i < 3; ++i) {
-            const auto it = p.position.constFind(kAxisNames[i]);
-            if (it != p.position.cend() && m_axes.contains(kAxisNames[i])) {
+            const auto it = p.position.constFind(kSceneAxisNames[i]);
+            if (it != p.position.cend() && m_axes.contains(kSceneAxisNames[i])) {
                 point.position[i] = it.value();
                 point.known |= 1u << i;
             }
@@ -212,7 +212,7 @@ std::optional<QPointF> PreviewScene::projectPosition(PreviewViewKind kind,
 {
     PreviewPosition p{};
     for (int axis : PreviewProjection::axesOf(kind)) {
-        const auto it = position.constFind(kAxisNames[axis]);
+        const auto it = position.constFind(kSceneAxisNames[axis]);
         if (it == position.cend())
             return std::nullopt;
         p[axis] = it.value();
@@ -226,7 +226,7 @@ std::optional<QPointF> PreviewScene::projectPosition(const PreviewOrientation& o
 {
     PreviewPosition p{};
     for (int axis : axes) {
-        const auto it = position.constFind(kAxisNames[axis]);
+        const auto it = position.constFind(kSceneAxisNames[axis]);
         if (it == position.cend())
             return std::nullopt;
         p[axis] = it.value();

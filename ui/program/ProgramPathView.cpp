@@ -1,4 +1,5 @@
 #include "ProgramPathView.h"
+#include "ProgramPathViewLayout.h"
 #include <QComboBox>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -10,15 +11,12 @@
 
 namespace stepdeck::ui {
 
+using namespace pathviewlayout;
+
 namespace {
-constexpr int kMargin = 12;
 constexpr int kControlsHeight = 24; // the view selector and Fit over the top of the drawing
 constexpr double kKeyZoom = 1.25;
 constexpr double kKeyPanFraction = 0.1;
-// The legend's room (ProgramPathViewPaint.cpp draws it so).
-constexpr int kLegendPadding = 4;
-constexpr int kLegendSample = 22; // a pen's sample line
-constexpr int kLegendGap = 4;     // between the sample and the text
 // A fit area smaller than this either way is no place for the path: the legend then goes
 // elsewhere or not at all.
 constexpr int kLeastDrawing = 40;

@@ -1,18 +1,15 @@
 // ProgramPathView's drawing: the cached path, then what changes while a program runs.
 #include "PreviewStyle.h"
 #include "ProgramPathView.h"
+#include "ProgramPathViewLayout.h"
 #include <QPainter>
 
 namespace stepdeck::ui {
 
 using namespace PreviewStyle;
+using namespace pathviewlayout; // the legend's rows, as ProgramPathView::placeLegend reserves them
 
 namespace {
-constexpr int kMargin = 12;
-// The legend's rows (as ProgramPathView::placeLegend reserves them).
-constexpr int kLegendPadding = 4;
-constexpr int kLegendSample = 22;
-constexpr int kLegendGap = 4;
 constexpr int kScaleBarRoom = 110; // the scale bar beside the entries of a strip
 } // namespace
 

@@ -64,7 +64,7 @@ QString NgcLineExpander::substitute(QStringView text, const NgcParameters& param
 
 namespace {
 
-qsizetype skipSpaces(QStringView line, qsizetype pos)
+qsizetype skipLineSpaces(QStringView line, qsizetype pos)
 {
     while (pos < line.size() && line.at(pos).isSpace())
         ++pos;
@@ -97,7 +97,7 @@ public:
     bool run(NgcExpandedLine* out)
     {
         m_out = out;
-        for (qsizetype pos = skipSpaces(m_line, 0); pos >= 0 && pos < m_line.size();) {
+        for (qsizetype pos = skipLineSpaces(m_line, 0); pos >= 0 && pos < m_line.size();) {
             const QChar c = m_line.at(pos);
             if (c == QLatin1Char(';')) {
                 place(&out->text, pos, m_line.mid(pos).toString());
@@ -108,7 +108,7 @@ public:
                   : c == QLatin1Char('#') ? assignment(pos)
                                           : word(pos);
             if (pos >= 0)
-                pos = skipSpaces(m_line, pos);
+                pos = skipLineSpaces(m_line, pos);
         }
         return !*m_error;
     }
@@ -151,7 +151,7 @@ private:
         const std::optional<NgcExpression::Reference> target = e.readReference(&p);
         if (!target)
             return failed(e);
-        p = skipSpaces(m_line, p);
+        p = skipLineSpaces(m_line, p);
         if (p >= m_line.size() || m_line.at(p) != QLatin1Char('='))
             return fail(p, tr("\"=\" is missing: a parameter is set with #…=value"));
         ++p;

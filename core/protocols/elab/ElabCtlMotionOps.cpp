@@ -12,7 +12,7 @@ using Rule = ElabCtlStatusMapper::Rule;
 using Op = ElabCtlLine::Op;
 
 namespace {
-template <typename T> Triple<T> triple(const AxisVector& values)
+template <typename T> Triple<T> toTriple(const AxisVector& values)
 {
     Triple<T> t{};
     for (Axis a : ElabCtlStatusMapper::axes())
@@ -178,7 +178,7 @@ void ElabCtlMotionOps::moveRelative(RequestId id, const AxisVector& steps)
     else if (!move.contains(Axis::Z))
         frame = encode::fastMoveXY(qint32(move.value(Axis::X)), qint32(move.value(Axis::Y)));
     else
-        frame = encode::fastMoveXYZ(triple<qint32>(move));
+        frame = encode::fastMoveXYZ(toTriple<qint32>(move));
     m_line.preflight(id, Rule::Move, [this, frame, move](Op op) {
         m_line.sendCommand(op, frame, [this, op, move] {
             accepted(ElabCtlMotion::Kind::FastMove, move);
@@ -194,7 +194,7 @@ void ElabCtlMotionOps::feed(RequestId id, const AxisVector& steps)
         return;
     const AxisVector& move = *checked;
     if (move.size() > 1) {
-        startStream(id, {}, triple<qint64>(move));
+        startStream(id, {}, toTriple<qint64>(move));
         return;
     }
     const Axis axis = move.firstKey();
@@ -227,7 +227,7 @@ void ElabCtlMotionOps::reference(RequestId id, const AxisVector& directions)
         return;
     }
     m_line.preflight(id, Rule::Move, [this, run](Op op) {
-        m_line.sendCommand(op, encode::referenceMove(triple<qint16>(run)), [this, op, run] {
+        m_line.sendCommand(op, encode::referenceMove(toTriple<qint16>(run)), [this, op, run] {
             accepted(ElabCtlMotion::Kind::Reference, run);
             m_line.hooks().ok(op.id, {});
         });
@@ -293,7 +293,7 @@ void ElabCtlMotionOps::sendVelocity(RequestId id, const AxisVector& rates, bool 
                 });
                 return;
             }
-            const QByteArray frame = encode::velocityMove(triple<qint16>(rates));
+            const QByteArray frame = encode::velocityMove(toTriple<qint16>(rates));
             m_line.sendCommand(op, frame, [this, op, rates] {
                 accepted(ElabCtlMotion::Kind::Velocity, rates);
                 m_line.hooks().ok(op.id, {});

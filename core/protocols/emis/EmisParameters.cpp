@@ -20,7 +20,7 @@ QVariantList texts(const QStringList& list)
 }
 
 // Read back and normalised values; decimal only, like every number (NumberParsing).
-qint64 intOf(const QVariant& v)
+qint64 integerOf(const QVariant& v)
 {
     qint64 n = 0;
     return numbers::integerFromVariant(v, &n) == NumberError::None ? n : 0;
@@ -30,7 +30,7 @@ QMap<Axis, qint64> intsOf(const ParameterValue& v)
 {
     QMap<Axis, qint64> out;
     for (auto it = v.perAxis.cbegin(); it != v.perAxis.cend(); ++it)
-        out.insert(it.key(), intOf(it.value()));
+        out.insert(it.key(), integerOf(it.value()));
     return out;
 }
 } // namespace
@@ -123,7 +123,7 @@ void EmisParameters::noteWritten(const ParameterSet& set)
     m_known.runCurrent.insert(axisInts("run-current"));
     m_known.idleCurrent.insert(axisInts("idle-current"));
     if (m_written.contains(QStringLiteral("ramp")))
-        m_known.ramp = intOf(m_written.value(QStringLiteral("ramp")).global);
+        m_known.ramp = integerOf(m_written.value(QStringLiteral("ramp")).global);
     if (set.contains(QStringLiteral("interpolation")))
         m_known.interpolation = set.value(QStringLiteral("interpolation")).global.toBool();
     const ParameterValue types = m_written.value(QStringLiteral("reference-switch-type"));
@@ -166,7 +166,7 @@ void EmisParameters::noteStored(const SystemParameters& stored)
     fill("run-current", &m_known.runCurrent);
     fill("idle-current", &m_known.idleCurrent);
     if (!m_written.contains(QStringLiteral("ramp")) && values.contains(QStringLiteral("ramp")))
-        m_known.ramp = intOf(values.value(QStringLiteral("ramp")).global);
+        m_known.ramp = integerOf(values.value(QStringLiteral("ramp")).global);
     // ##REFSW is the only way to set the switch type: the stored value is the working one.
     if (const SystemEntry* e = stored.find(SystemEntry::Key::ReferenceSwitch))
         m_known.switchNc.insert(e->normallyClosed);

@@ -6,7 +6,7 @@
 namespace stepdeck::emis {
 
 namespace {
-ParameterValue perAxis(qint64 value)
+ParameterValue sameOnEveryAxis(qint64 value)
 {
     ParameterValue v;
     for (Axis a : emisAxes())
@@ -36,8 +36,8 @@ ScenarioSupport scenarioSupport()
 SoakProfile soakProfile()
 {
     SoakProfile m;
-    m.setup = {{QStringLiteral("start-speed"), perAxis(500)},
-               {QStringLiteral("work-speed"), perAxis(4000)},
+    m.setup = {{QStringLiteral("start-speed"), sameOnEveryAxis(500)},
+               {QStringLiteral("work-speed"), sameOnEveryAxis(4000)},
                {QStringLiteral("ramp"), ParameterValue{QVariant(qint64(50)), {}}}};
     m.prepare = [](Simulator* s) {
         if (auto* sim = qobject_cast<EmisSimulator*>(s)) {

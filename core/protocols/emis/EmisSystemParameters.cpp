@@ -48,7 +48,7 @@ bool perAxisValues(const QList<QByteArray>& fields, QMap<Axis, qint64>* values)
     return true;
 }
 
-bool currents(const QList<QByteArray>& fields, SystemEntry* e)
+bool parseCurrents(const QList<QByteArray>& fields, SystemEntry* e)
 {
     // "x100,0,y100,0,..." (9.14): axis with run current, then the idle current.
     if (fields.isEmpty() || fields.size() % 2 != 0)
@@ -113,7 +113,7 @@ std::optional<SystemEntry> parseSystemEntry(const QByteArray& entry, QString* er
         ok = perAxisValues(fields, &e.values);
     } else if (key == "c") {
         e.key = Key::Currents;
-        ok = currents(fields, &e);
+        ok = parseCurrents(fields, &e);
     } else if (key == "REFSW") {
         e.key = Key::ReferenceSwitch;
         ok = referenceSwitches(fields, &e);

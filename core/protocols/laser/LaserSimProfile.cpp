@@ -10,7 +10,7 @@ namespace stepdeck::laser {
 
 namespace {
 constexpr qint64 kFar = 1'000'000'000; // switches out of reach of any soak run
-const QList<Axis> kAxes{Axis::X, Axis::Y, Axis::Z};
+const QList<Axis> kProfileAxes{Axis::X, Axis::Y, Axis::Z};
 
 bool applyScenario(const SimulatorScenario& scenario, Simulator* simulator, QString*)
 {
@@ -38,7 +38,7 @@ void prepareSoak(Simulator* s)
     const bool silent = s->faults().silent;
     s->faults().silent = true; // the status frames of the set-up reach nobody
     sim->setSpeed(1e9);
-    for (Axis a : kAxes) {
+    for (Axis a : kProfileAxes) {
         sim->config(a).endSwitch = kFar;
         sim->receive(encodeMove(a, kMaxPosition / 2));
     }

@@ -4,7 +4,7 @@
 namespace stepdeck::nanotec {
 
 namespace {
-bool isDigit(char c)
+bool isAsciiDigit(char c)
 {
     return c >= '0' && c <= '9';
 }
@@ -25,10 +25,10 @@ QByteArray frame(int address, const QByteArray& body)
     return '#' + addressText(address) + body + '\r';
 }
 
-int leadingDigits(const QByteArray& text)
+int leadingDigitCount(const QByteArray& text)
 {
     int n = 0;
-    while (n < text.size() && isDigit(text[n]))
+    while (n < text.size() && isAsciiDigit(text[n]))
         ++n;
     return n;
 }
@@ -109,7 +109,7 @@ QByteArray commandKey(const QByteArray& body)
     if (body.at(0) == 'Z' && body.size() >= 2) {
         if (body.at(1) == 'E')
             return "ZE"; // the error slot index follows the E (5.15)
-        const int digits = leadingDigits(body.mid(1));
+        const int digits = leadingDigitCount(body.mid(1));
         return body.left(qMin<qsizetype>(body.size(), 2 + digits));
     }
     if (body.startsWith("@A"))
@@ -128,7 +128,7 @@ bool parseNumber(const QByteArray& text, qint64* value)
     if (i == text.size() || text.size() - i > 11)
         return false;
     for (int k = i; k < text.size(); ++k) {
-        if (!isDigit(text[k]))
+        if (!isAsciiDigit(text[k]))
             return false;
     }
     bool ok = false;
