@@ -23,19 +23,17 @@
     static const bool stepdeckTestRegistered_##TestObject =                                        \
         stepdeck::test::registerTest(__FILE__, [](int argc, char** argv) -> int body)
 
+// QTEST_MAIN's choice of application (qtest.h).
 #if defined(QT_WIDGETS_LIB)
-#define STEPDECK_TEST_MAIN(TestObject)                                                             \
-    STEPDECK_TEST_REGISTER(TestObject, {                                                           \
-        QApplication app(argc, argv);                                                              \
-        app.setAttribute(Qt::AA_Use96Dpi, true);                                                   \
-        TestObject tc;                                                                             \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                 \
-        return QTest::qExec(&tc, argc, argv);                                                      \
-    });
+#define STEPDECK_TEST_GUI_APPLICATION QApplication
 #elif defined(QT_GUI_LIB)
+#define STEPDECK_TEST_GUI_APPLICATION QGuiApplication
+#endif
+
+#ifdef STEPDECK_TEST_GUI_APPLICATION
 #define STEPDECK_TEST_MAIN(TestObject)                                                             \
     STEPDECK_TEST_REGISTER(TestObject, {                                                           \
-        QGuiApplication app(argc, argv);                                                           \
+        STEPDECK_TEST_GUI_APPLICATION app(argc, argv);                                             \
         app.setAttribute(Qt::AA_Use96Dpi, true);                                                   \
         TestObject tc;                                                                             \
         QTEST_SET_MAIN_SOURCE_PATH                                                                 \

@@ -42,6 +42,8 @@ public:
     QPushButton* writeAllButton() const { return m_writeAll; }
     WritePreview* openPreview() const; // the last preview, while open
     QString messageText() const;
+    // A read of the parameters is on its way (Read, or the read-back after connecting).
+    bool isReading() const { return m_pendingRead != 0; }
 
     // Every field's value; false and the reasons when a field is invalid.
     bool formValues(ParameterSet* set, QStringList* errors) const;

@@ -168,8 +168,13 @@ void TestConnectionBar::failedConnect_thenConnected_oldErrorCleared()
     bar->setPortSpec(QStringLiteral("/dev/does-not-exist-stepdeck"));
     bar->connectNow();
     QTRY_VERIFY_WITH_TIMEOUT(!m_f->window->lastError().isEmpty(), 5000);
+    const QString failure = m_f->window->lastError();
+    QVERIFY2(failure.contains(QStringLiteral("does-not-exist-stepdeck")), qPrintable(failure));
     QVERIFY(m_f->connectSim());
-    QTRY_COMPARE(m_f->window->lastError(), QString()); // its cause has ended
+    // Its cause has ended. (Not "no message at all": this test's window is on the offscreen
+    // platform's default 800x600 screen, where the window says in its own time that pages
+    // scroll; on a sanitized build that came after the connection.)
+    QTRY_VERIFY2(!m_f->window->lastError().contains(failure), qPrintable(m_f->window->lastError()));
 }
 
 void TestConnectionBar::controlsNeedingALink_disabledWhileDisconnected()

@@ -10,6 +10,7 @@
 #include "machine/SpindleCoolantBar.h"
 #include "position/PositionPanel.h"
 #include "program/ProgramFiles.h"
+#include "window/JobLayout.h"
 #include <QScrollBar>
 
 using namespace stepdeck;
@@ -180,6 +181,14 @@ void TestProgramPageRun::m0_prompt_bannerWithResumeGoesOn()
     // first prompt on.)
     auto place = [this](QWidget* w) { return QRect(w->mapTo(window(), QPoint()), w->size()); };
     QTRY_VERIFY(page()->editor()->isReadOnly());
+    // The job's layout sizes the Program dock on a queued call (JobLayout::give), its layout
+    // requests follow as posted events: the places are taken after them. (A sanitized build
+    // reached the first prompt before the queued call ran, and the dock grew after it.)
+    QTRY_VERIFY(window()->jobLayout()->isJobLayout());
+    for (int i = 0; i < 4; ++i) {
+        QCoreApplication::sendPostedEvents();
+        QCoreApplication::processEvents();
+    }
     const QRect abort = place(page()->controls()->abortButton());
     const QRect editor = place(page()->editor());
     QCOMPARE(m_rig.elab->position(Axis::X), 0);

@@ -15,11 +15,13 @@
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
 #include "safety/SafetyBar.h"
+#include "setup/SetupPage.h"
 #include "status/StatusPanel.h"
 #include "window/Translations.h"
 #include <QDir>
 #include <QScreen>
 #include <QStatusBar>
+#include <algorithm>
 
 using namespace stepdeck;
 using namespace stepdeck::test;
@@ -107,6 +109,14 @@ void TestLayoutHoldsStill::connectModel(const QString& model)
     QVERIFY(m_f->waitConnected());
     // Laser axes report only when something happens: no status poll to wait for.
     QTRY_VERIFY_WITH_TIMEOUT(m_f->statusCount > 0, 5000);
+    // Where the model reads its parameters back, the Setup page does so after connecting; its
+    // "Read n parameters." would replace a message shown meanwhile when it comes late (seen
+    // under the sanitizers: "71 Parameter gelesen." instead of the long message).
+    const QList<ParameterSpec> specs = m_f->session->model()->schema.specs();
+    if (std::any_of(specs.cbegin(), specs.cend(),
+                    [](const ParameterSpec& s) { return s.readable; }))
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !w->setupPage()->messageText().isEmpty() && !w->setupPage()->isReading(), 10000);
 }
 
 void TestLayoutHoldsStill::startMove()
