@@ -14,6 +14,9 @@ stepdeck_add_test(tst_programparserdialect SOURCES
 stepdeck_add_test(tst_programcheck SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheck.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 stepdeck_test_definitions(tst_programcheck STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+# The check over a whole program: feed limits, run from a line, around the program, repeats.
+stepdeck_add_test(tst_programcheckwhole SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckwhole.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # The check of the dialect's coordinates, tools and spindle scale (issue 29).
 stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckdialect.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
