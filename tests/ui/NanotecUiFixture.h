@@ -9,8 +9,10 @@ namespace stepdeck::test {
 class NanotecUiFixture : public UiFixture
 {
 public:
-    // busText: the drives as --axes lists them; default X=1,Y=2,Z=3.
-    bool connectNanotec(const QString& busText = QStringLiteral("X=1,Y=2,Z=3"))
+    // busText: the drives as --axes lists them; default X=1,Y=2,Z=3. timeoutMs: how long to
+    // wait for the connection (a full bus under the sanitizers on a loaded machine needs more).
+    bool connectNanotec(const QString& busText = QStringLiteral("X=1,Y=2,Z=3"),
+                        int timeoutMs = 5000)
     {
         ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
         QList<NamedAddress> bus;
@@ -25,7 +27,7 @@ public:
             qWarning() << error;
             return false;
         }
-        return waitConnected();
+        return waitConnected(timeoutMs);
     }
 
     // Six drives named as a plant calls them (issue 32), at addresses 1..6.

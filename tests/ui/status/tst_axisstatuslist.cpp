@@ -168,15 +168,17 @@ void TestAxisStatusList::fullBus_254Drives_listedAndFound()
     m_f.reset();
     m_f = std::make_unique<NanotecUiFixture>();
     m_f->window->show();
-    QVERIFY(m_f->connectNanotec(bus.join(',')));
+    // The waits are generous: 254 drives under ASan+UBSan beside other tests took over 5 s to
+    // connect in CI (stop 53); what is asserted is that it happens, not how fast.
+    QVERIFY(m_f->connectNanotec(bus.join(','), 60000));
     QVERIFY(axisList());
     QCOMPARE(rows()->rowCount(), 254);
     axisList()->bar()->filterEdit()->setText(QStringLiteral("axis254"));
     QCOMPARE(rows()->rowCount(), 1);
     QCOMPARE(axisList()->bar()->countText(), QStringLiteral("1 of 254"));
     // The idle drives are read in turn (NanotecPollPlan): the last one within seconds.
-    QTRY_COMPARE_WITH_TIMEOUT(text(0, Model::Drive), QStringLiteral("254"), 15000);
-    QTRY_COMPARE_WITH_TIMEOUT(lamp(0, Model::Moving), State::Off, 15000);
+    QTRY_COMPARE_WITH_TIMEOUT(text(0, Model::Drive), QStringLiteral("254"), 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(lamp(0, Model::Moving), State::Off, 60000);
 }
 
 STEPDECK_TEST_MAIN(TestAxisStatusList)
