@@ -12,7 +12,7 @@ public:
     // busText: the drives as --axes lists them; default X=1,Y=2,Z=3. timeoutMs: how long to
     // wait for the connection (a full bus under the sanitizers on a loaded machine needs more).
     bool connectNanotec(const QString& busText = QStringLiteral("X=1,Y=2,Z=3"),
-                        int timeoutMs = 5000)
+                        int timeoutMs = 15000)
     {
         ConnectionSpec spec{QStringLiteral("sim"), {}, {}};
         QList<NamedAddress> bus;

@@ -162,7 +162,9 @@ public:
         return true;
     }
 
-    bool waitConnected(int timeoutMs = 5000)
+    // 15 s: a wait, not a measure; widget tests under ASan+UBSan on a loaded CI machine have
+    // needed more than 5 s to connect.
+    bool waitConnected(int timeoutMs = 15000)
     {
         QElapsedTimer t;
         t.start();
