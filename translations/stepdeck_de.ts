@@ -2883,6 +2883,14 @@
             <source>spindle and coolant switched off</source>
             <translation>Spindel und Kühlmittel ausgeschaltet</translation>
         </message>
+        <message>
+            <source>a reference run is under way</source>
+            <translation>eine Referenzfahrt läuft</translation>
+        </message>
+        <message>
+            <source>%1: the machine moves for it alone until it ends or holds</source>
+            <translation>%1: Bis zu dessen Ende oder Halt bewegt sich die Maschine nur dafür</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineFile</name>
@@ -5143,6 +5151,10 @@
             <source>Not resumed keeping Z: tool %1 follows tool %2, whose length it does not have: set the work Z for tool %1 first</source>
             <translation>Nicht mit Z fortgesetzt: Werkzeug %1 folgt auf Werkzeug %2, dessen Länge es nicht hat: zuerst den Werkstück-Nullpunkt von Z für Werkzeug %1 setzen</translation>
         </message>
+        <message>
+            <source>a program runs</source>
+            <translation>ein Programm läuft</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramSourceReader</name>
@@ -7355,6 +7367,10 @@ W1500</translation>
             <source>stopped while the line was checked</source>
             <translation>gestoppt, während die Zeile geprüft wurde</translation>
         </message>
+        <message>
+            <source>an MDI line runs</source>
+            <translation>eine MDI-Zeile läuft</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::ui::MachineReferenceRows</name>
@@ -7598,14 +7614,6 @@ W1500</translation>
         <message>
             <source>MDI: %1</source>
             <translation>MDI: %1</translation>
-        </message>
-        <message>
-            <source>a program runs</source>
-            <translation>ein Programm läuft</translation>
-        </message>
-        <message>
-            <source>an MDI line runs</source>
-            <translation>eine MDI-Zeile läuft</translation>
         </message>
         <message>
             <source>the laser bridge runs</source>
@@ -8136,14 +8144,6 @@ W1500</translation>
         <message>
             <source>Checking the program before the run…</source>
             <translation>Das Programm wird vor dem Lauf geprüft…</translation>
-        </message>
-        <message>
-            <source>a program runs</source>
-            <translation>ein Programm läuft</translation>
-        </message>
-        <message>
-            <source>an MDI line runs</source>
-            <translation>eine MDI-Zeile läuft</translation>
         </message>
         <message>
             <source>This program has parameters or O words: its lines run in the order its control flow gives, so it runs from its start</source>

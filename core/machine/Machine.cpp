@@ -110,6 +110,8 @@ bool Machine::create(const MachineDescription& description, QString* error)
 
 void Machine::destroy()
 {
+    // Whoever runs motion ends first, its stop posted while the sessions still exist.
+    requestAbort();
     // Every session's destroy() stops its controller and flushes the stop before it closes;
     // they are told in turn, but none of them waits for I/O of another.
     for (auto& s : m_sessions)
@@ -171,6 +173,7 @@ QMap<QString, RequestId> Machine::stop()
     releaseTargetJogs(); // no further jog targets (a target under way ends by itself)
     m_references->fail(nullptr, tr("referencing stopped"), false);
     switchOffSpindleAndCoolant(); // LinuxCNC's abort: once the axes stand
+    requestAbort();
     return ids;
 }
 
@@ -182,7 +185,47 @@ QMap<QString, RequestId> Machine::panic()
     releaseTargetJogs();
     m_references->fail(nullptr, tr("referencing stopped by the panic stop"), false);
     switchOffSpindleAndCoolant(); // LinuxCNC's emergency stop
+    requestAbort();
     return ids;
+}
+
+void Machine::requestAbort()
+{
+    // The holder's own abort stops the machine again (ProgramRunner::abort): told once.
+    if (std::exchange(m_abortRequesting, true))
+        return;
+    Q_EMIT abortRequested();
+    m_abortRequesting = false;
+}
+
+bool Machine::claimMotion(const QObject* owner, const QString& what, QString* why)
+{
+    if (m_owner.isFree() && isReferencing()) { // the operator's reference run moves the axes
+        if (why)
+            *why = tr("a reference run is under way");
+        return false;
+    }
+    const bool wasFree = m_owner.isFree();
+    if (!m_owner.claim(owner, what, why))
+        return false;
+    if (wasFree)
+        Q_EMIT motionHolderChanged();
+    return true;
+}
+
+QString Machine::motionRefusal(const QObject* owner) const
+{
+    if (m_owner.isHeldBy(owner) || m_owner.admitsManualMotion())
+        return {};
+    return tr("%1: the machine moves for it alone until it ends or holds").arg(m_owner.holder());
+}
+
+void Machine::releaseMotion(const QObject* owner)
+{
+    if (!m_owner.isHeldBy(owner))
+        return;
+    m_owner.release(owner);
+    Q_EMIT motionHolderChanged();
 }
 
 void Machine::switchOffSpindleAndCoolant()

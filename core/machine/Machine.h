@@ -1,5 +1,6 @@
 #pragma once
 #include "MachineDescription.h"
+#include "MotionOwnership.h"
 #include "controller/ControllerSession.h"
 #include "controller/TargetJogger.h"
 #include <QObject>
@@ -85,7 +86,7 @@ public:
     // move. A controller that takes no rate (no feedRateParameter) refuses the whole move.
     enum class MoveKind { Positioning, Feed };
     quint64 move(const QMap<QString, double>& units, bool absolute, QString* refusal,
-                 MoveKind kind = MoveKind::Positioning);
+                 MoveKind kind = MoveKind::Positioning, const QObject* owner = nullptr);
 
     // Jog rates in unit/s per machine axis, one input for every controller involved: the
     // caller renews them while its input is held (each controller's jog lease,
@@ -105,7 +106,7 @@ public:
     // ended referenced. Returns the run's id, or 0 with *refusal (nothing sent): an unknown
     // axis, a controller not connected or without reference runs, a run already going. Ends
     // with referenceFinished; a failed part stops every controller and names its controller.
-    quint64 reference(const QStringList& axes, QString* refusal);
+    quint64 reference(const QStringList& axes, QString* refusal, const QObject* owner = nullptr);
     bool isReferencing() const;
 
     MachineAxisStatus axisStatus(const MachineAxis& axis) const;
@@ -113,6 +114,19 @@ public:
 
     // Writes each controller's setup from the file on every connect (null before create()).
     MachineSetup* setupWriter() const { return m_setup; }
+
+    // Who runs motion on the machine (MotionOwnership, issue 49 item 4): a program or an MDI
+    // line takes it before its check and gives it back at its end, so that one refuses while
+    // the other holds it. stop(), panic() and destroy() tell the holder to end its work
+    // (abortRequested), after the stop went to every controller.
+    // Refused too while a reference run is under way. A holder's own moves and reference runs
+    // pass `owner` to move() and reference(); anyone else's are refused while it holds the
+    // motion, and so are jogs, unless the holder lends it (a run paused: lendMotion).
+    bool claimMotion(const QObject* owner, const QString& what, QString* why = nullptr);
+    void releaseMotion(const QObject* owner);
+    void lendMotion(const QObject* owner, bool lent) { m_owner.setLent(owner, lent); }
+    bool holdsMotion(const QObject* owner) const { return m_owner.isHeldBy(owner); }
+    QString motionHolder() const { return m_owner.holder(); } // empty: nobody runs motion
 
 Q_SIGNALS:
     void statusChanged();
@@ -130,8 +144,18 @@ Q_SIGNALS:
     // switchOffSpindleAndCoolant() ended: every controller acknowledged (ok), or why not (the
     // message names the controller; the operator must switch it off by hand).
     void spindleAndCoolantOff(bool ok, const QString& message);
+    // STOP, PANIC or close: whoever holds the machine's motion (claimMotion) ends its work now
+    // -- a program or MDI line aborts, a start being checked never begins. Emitted after the
+    // stop was posted to every controller, so nothing the holder does goes ahead of it; once
+    // per stop, also when the holder's abort stops the machine again.
+    void abortRequested();
+    void motionHolderChanged(); // claimed or released
 
 private:
+    void requestAbort();
+    // Empty when `owner` may move the machine now: it holds the motion, nobody does, or the
+    // holder lent it; else why not (the holder's name).
+    QString motionRefusal(const QObject* owner) const;
     friend class MachineReferenceRun; // the run reaches the sessions as the machine does
     friend class MachineSwitchOff;    // likewise
 
@@ -201,6 +225,8 @@ private:
     quint64 m_lastMove = 0;
     std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
     std::unique_ptr<MachineSwitchOff> m_switchOff;     // spindle and coolant off after a stop
+    MotionOwnership m_owner;
+    bool m_abortRequesting = false;      // abortRequested is being emitted
     MachineSetup* m_setup = nullptr;     // the controllers' setups, written on connect (a child)
     ControllerSession* m_lent = nullptr; // not owned (lendSession)
 };

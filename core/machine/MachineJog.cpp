@@ -12,6 +12,9 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
             *refusal = why;
         return false;
     };
+    // A run holds the machine (a program, an MDI line): no jog unless it lent it, paused.
+    if (const QString why = motionRefusal(nullptr); !why.isEmpty())
+        return refuse(why);
     QMap<ControllerSession*, AxisVelocities> rates;
     for (auto& s : m_sessions)
         rates.insert(s.get(), {});

@@ -19,10 +19,12 @@ bool restsAt(const MachineStatus& status, const QList<Axis>& axes)
 } // namespace
 
 quint64 Machine::move(const QMap<QString, double>& units, bool absolute, QString* refusal,
-                      MoveKind kind)
+                      MoveKind kind, const QObject* owner)
 {
     QList<StepTargets> plan;
-    const QString why = checkMove(units, absolute, kind, &plan);
+    QString why = motionRefusal(owner);
+    if (why.isEmpty())
+        why = checkMove(units, absolute, kind, &plan);
     if (!why.isEmpty()) {
         if (refusal)
             *refusal = why;

@@ -24,10 +24,12 @@ int referenceSearchDirection(const MachineAxis& axis, const Capabilities& capabi
     return axis.invert ? -machineDirection : machineDirection;
 }
 
-quint64 Machine::reference(const QStringList& axes, QString* refusal)
+quint64 Machine::reference(const QStringList& axes, QString* refusal, const QObject* owner)
 {
     const quint64 id = m_lastMove + 1;
-    const QString why = m_references->start(id, axes);
+    QString why = motionRefusal(owner);
+    if (why.isEmpty())
+        why = m_references->start(id, axes);
     if (!why.isEmpty()) {
         if (refusal)
             *refusal = why;

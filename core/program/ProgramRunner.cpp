@@ -47,7 +47,7 @@ bool isEnded(RunState state)
 }
 
 ProgramRunner::ProgramRunner(machine::Machine* machine, QObject* parent)
-    : QObject(parent), m_machine(machine)
+    : QObject(parent), m_machine(machine), m_ownerName(tr("a program runs"))
 {
     m_dwell.setSingleShot(true);
     m_dwell.setTimerType(Qt::PreciseTimer);
@@ -62,7 +62,20 @@ ProgramRunner::ProgramRunner(machine::Machine* machine, QObject* parent)
     });
 }
 
+// The machine's motion needs no release here: MotionOwnership forgets an owner that is deleted
+// (and the machine may have gone first).
 ProgramRunner::~ProgramRunner() = default;
+
+bool ProgramRunner::claimMotion(QString* why)
+{
+    return m_machine && m_machine->claimMotion(this, m_ownerName, why);
+}
+
+void ProgramRunner::releaseMotion()
+{
+    if (m_machine && (m_state == RunState::Idle || isEnded(m_state)))
+        m_machine->releaseMotion(this);
+}
 
 int ProgramRunner::currentLine() const
 {
@@ -82,6 +95,12 @@ void ProgramRunner::connectMachine()
                              &ProgramRunner::onControllerFailed);
     m_connections << connect(m_machine, &machine::Machine::spindleAndCoolantOff, this,
                              &ProgramRunner::onSwitchedOff);
+    // The machine's STOP, PANIC or close (whoever pressed it): this run holds the motion and
+    // ends. Its own abort stops the machine again, which tells nobody twice.
+    m_connections << connect(m_machine, &machine::Machine::abortRequested, this, [this] {
+        if (!m_aborting && !m_ownStop)
+            abort();
+    });
     for (const machine::MachineController& c : m_machine->description().controllers) {
         ControllerSession* s = m_machine->session(c.id);
         const QString id = c.id;
@@ -379,7 +398,11 @@ void ProgramRunner::fail(ErrorKind kind, const QString& message)
     }
     m_dwell.stop();
     m_inputTimeout.stop();
-    m_machine->stop(); // every controller: a program never continues after a fault
+    // Every controller: a program never continues after a fault. The machine's abortRequested
+    // that follows is this run's own stop, not an abort.
+    m_ownStop = true;
+    m_machine->stop();
+    m_ownStop = false;
     m_failureKind = kind;
     end(RunState::Failed, lineText(message));
 }
@@ -408,6 +431,7 @@ void ProgramRunner::end(RunState state, const QString& message)
     if (state != RunState::Finished && m_rates)
         m_rates->restore(); // best effort after a fault or abort: not awaited
     disconnectMachine();
+    m_machine->releaseMotion(this);
     m_endMessage = message;
     qCInfo(lcProgram) << "program" << runStateText(state) << message;
     setState(state);
@@ -421,6 +445,10 @@ void ProgramRunner::setState(RunState state)
     if (state != RunState::Paused)
         m_touchOff = {}; // a touch-off hold ends with the hold
     m_state = state;
+    // Held between blocks, the run lends the machine to the operator's hands (jogging Z to
+    // touch off at M6, issue 47 item 2); held in a path (a feed hold, an arc's chord, a
+    // cycle's segment) or running, not: the rest goes on from where the path stopped.
+    m_machine->lendMotion(this, state == RunState::Paused && !m_feedHeld && !m_heldInPath);
     Q_EMIT stateChanged(state);
 }
 

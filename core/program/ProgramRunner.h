@@ -61,6 +61,17 @@ class ProgramRunner : public QObject
 public:
     explicit ProgramRunner(machine::Machine* machine, QObject* parent = nullptr);
     ~ProgramRunner() override;
+    machine::Machine* machine() const { return m_machine; }
+
+    // The machine's motion (Machine::claimMotion, issue 49 item 4): a run holds it from its
+    // start to its end, so that a program and an MDI line exclude each other in core, and the
+    // machine's STOP, PANIC and close abort the run that holds it. ownerName: what the holder
+    // is called in a refusal ("a program runs", the default; "an MDI line runs").
+    void setOwnerName(const QString& what) { m_ownerName = what; }
+    // Takes it ahead of a start whose check runs first (ProgramStarter); false with *why naming
+    // the holder. releaseMotion() gives it back unless a run is under way.
+    bool claimMotion(QString* why);
+    void releaseMotion();
 
     // Checks the program against the machine as it stands (ProgramCheck) and starts it at the
     // first block on or after fromLine (the modal state is the block's own, rebuilt by the
@@ -229,6 +240,8 @@ private:
     QString lineText(const QString& message) const;
     QString promptOf(const ProgramBlock& block) const;
     // Touch-off holds (ProgramRunnerRest.cpp).
+    bool begin(const Program& program, int fromLine, const MachineFacts& checkedFacts,
+               const ProgramCheckResult& checked, QList<ProgramError>* errors, bool stepOnly);
     void startTouchOff(const ProgramBlock& block); // at a hold: an M6 that waits for Z?
     bool refuseWithoutTouchOff();                  // resume/step: refused while it waits
     QStringList controllersWithoutStop() const;
@@ -296,6 +309,8 @@ private:
     bool m_optionalStops = true;
     bool m_spindleOn = false; // an M3/M4 of this run is in effect (no M5 since)
     bool m_aborting = false;
+    QString m_ownerName;
+    bool m_ownStop = false; // fail() stops the machine: not an abort from outside
     QString m_prompt;
     bool m_operatorStop = false; // the last pause was at M0, M6 or M1
     // The touch-off hold the run is in (awaitsTouchOff), if any.

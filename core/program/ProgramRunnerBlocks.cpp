@@ -105,7 +105,7 @@ void ProgramRunner::sendMove(const ProgramBlock& block)
     QString refusal;
     const auto kind = block.kind == BlockKind::Feed ? machine::Machine::MoveKind::Feed
                                                     : machine::Machine::MoveKind::Positioning;
-    m_motion = m_machine->move(axisTargets(block), !block.relative, &refusal, kind);
+    m_motion = m_machine->move(axisTargets(block), !block.relative, &refusal, kind, this);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
 }
@@ -129,7 +129,8 @@ void ProgramRunner::applyCoordinates(const ProgramBlock& block)
 void ProgramRunner::startHome(const ProgramBlock& block)
 {
     QString refusal;
-    m_motion = m_machine->reference(block.axes.keys(), &refusal); // none named: every axis
+    // None named: every axis. As the holder of the machine's motion (this).
+    m_motion = m_machine->reference(block.axes.keys(), &refusal, this);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
 }

@@ -59,7 +59,7 @@ void ProgramRunner::moveChord()
     for (const auto& [axis, value] : m_arc->pointAt(m_chord))
         targets.insert(d.axes.at(axis).name, value);
     QString refusal;
-    m_motion = m_machine->move(targets, true, &refusal, machine::Machine::MoveKind::Feed);
+    m_motion = m_machine->move(targets, true, &refusal, machine::Machine::MoveKind::Feed, this);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
 }
@@ -114,7 +114,8 @@ void ProgramRunner::sendSegment()
     m_motion =
         m_machine->move(targets, true, &refusal,
                         s.kind == DrillCycle::Kind::Feed ? machine::Machine::MoveKind::Feed
-                                                         : machine::Machine::MoveKind::Positioning);
+                                                         : machine::Machine::MoveKind::Positioning,
+                        this);
     if (m_motion == 0)
         fail(ErrorKind::Refused, refusal);
 }

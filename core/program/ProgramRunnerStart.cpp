@@ -58,6 +58,24 @@ bool ProgramRunner::startChecked(const Program& program, int fromLine,
             *errors = {ProgramError{0, 0, tr("a program runs already")}};
         return false;
     }
+    QString holder;
+    if (!claimMotion(&holder)) { // another runner (a program, an MDI line) holds the machine
+        if (errors)
+            *errors = {ProgramError{0, 0, holder}};
+        return false;
+    }
+    if (!begin(program, fromLine, checkedFacts, checked, errors, stepOnly)) {
+        releaseMotion();
+        return false;
+    }
+    return true;
+}
+
+// startChecked() with the machine's motion held.
+bool ProgramRunner::begin(const Program& program, int fromLine, const MachineFacts& checkedFacts,
+                          const ProgramCheckResult& checked, QList<ProgramError>* errors,
+                          bool stepOnly)
+{
     const MachineFacts facts = startFacts();
     if (!sameStartFacts(checkedFacts, facts)) {
         if (errors)

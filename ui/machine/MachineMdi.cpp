@@ -15,6 +15,7 @@ using program::RunState;
 MachineMdi::MachineMdi(MachineContext* context, QObject* parent)
     : QObject(parent), m_context(context), m_starter(new ProgramStarter(this))
 {
+    m_starter->setStopReason(tr("stopped while the line was checked"));
     connect(m_starter, &ProgramStarter::refused, this, &MachineMdi::onStartRefused);
     connect(m_starter, &ProgramStarter::started, this, [this] { Q_EMIT started(m_current); });
     connect(context, &MachineContext::machineChanged, this, &MachineMdi::onMachineChanged);
@@ -37,6 +38,7 @@ void MachineMdi::onMachineChanged()
     if (!machine || m_runner)
         return;
     m_runner = new program::ProgramRunner(machine, this);
+    m_runner->setOwnerName(tr("an MDI line runs"));
     m_runnerMachine = machine;
     m_runner->setFeedOverride(m_feedOverride);
     connect(m_runner, &program::ProgramRunner::finished, this, &MachineMdi::onFinished);
@@ -62,7 +64,10 @@ quint64 MachineMdi::runOwnLine(const QString& line, QString* refusal)
 
 quint64 MachineMdi::start(const QString& line, bool mdi, QString* refusal)
 {
-    const QString busy = m_busyElsewhere ? m_busyElsewhere() : QString();
+    // Another runner holds the machine's motion (a program; Machine::claimMotion).
+    const machine::Machine* open = m_context->machine();
+    const QString busy =
+        open && m_runner && !open->holdsMotion(m_runner) ? open->motionHolder() : QString();
     QString why = !m_runner         ? tr("no machine is open")
                   : isBusy()        ? tr("the last line has not ended")
                   : !busy.isEmpty() ? busy

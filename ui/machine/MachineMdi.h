@@ -18,17 +18,15 @@ class ProgramStarter;
 // MDI lines keep their modal state from line to line (MdiSession); Go to's lines are lines of
 // their own, in G-code's defaults, outside the MDI's state and history.
 //
-// One line at a time, and none while something else runs a program (setBusyElsewhere: the
-// Program page). STOP and PANIC: abort(). M0 or M6 on a line hold it like a program: resume().
+// One line at a time, and none while something else holds the machine's motion (a program:
+// Machine::claimMotion). The machine's STOP, PANIC and close abort a line (its runner holds the
+// motion); abort() does it from here. M0 or M6 on a line hold it like a program: resume().
 class MachineMdi : public QObject
 {
     Q_OBJECT
 public:
     explicit MachineMdi(MachineContext* context, QObject* parent = nullptr);
     ~MachineMdi() override;
-
-    // Why a line cannot start now because of others (a program runs): empty when it can.
-    void setBusyElsewhere(std::function<QString()> why) { m_busyElsewhere = std::move(why); }
 
     // An MDI line, in the state the last finished one left; it goes into the history. The
     // id that ended() reports, or 0 and *refusal when refused at once (nothing sent).
@@ -39,7 +37,7 @@ public:
     // for a program's.
     void setFeedOverride(int percent);
     void resume(); // a line held at M0 or M6 goes on
-    void abort();  // the window's STOP and PANIC, a closed machine
+    void abort();  // the line being checked or run ends (the machine's stop does it too)
 
     bool isBusy() const; // a line is checked or runs
     bool isPausedAtOperatorStop() const;
@@ -67,7 +65,6 @@ private:
     program::ProgramRunner* m_runner = nullptr;
     QPointer<QObject> m_runnerMachine;
     program::MdiSession m_session;
-    std::function<QString()> m_busyElsewhere;
     int m_feedOverride = 100;
     quint64 m_lastId = 0;
     quint64 m_current = 0;       // the line being checked or run (0: none)

@@ -51,9 +51,9 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
     buildLayout();
 
     connect(m_recheck, &QTimer::timeout, this, &ProgramPage::checkNow);
-    // One run at a time on the machine: the MDI line's or the program's.
-    context->mdi()->setBusyElsewhere(
-        [this] { return isRunning() || isStarting() ? tr("a program runs") : QString(); });
+    // One run at a time on the machine, the MDI line's or the program's: the machine's motion
+    // has one holder (Machine::claimMotion), and its STOP, PANIC or close end the holder's.
+    m_starter->setStopReason(tr("stopped while the program was checked before the run"));
     connect(context->mdi(), &MachineMdi::busyChanged, this, &ProgramPage::updateControls);
     connect(m_checker, &ProgramBackgroundCheck::checked, this, &ProgramPage::showCheck);
     connect(m_checker, &ProgramBackgroundCheck::progress, m_checkStatus,

@@ -114,8 +114,10 @@ bool ProgramPage::start(int fromLine, bool stepOnly)
 {
     if (!m_runner || isRunning() || isStarting())
         return false;
-    if (m_context->mdi()->isBusy()) {
-        onStartRefused({program::ProgramError{0, 0, tr("an MDI line runs")}});
+    // Another runner holds the machine's motion (an MDI line, Go to): its words say which.
+    const machine::Machine* open = m_context->machine();
+    if (open && !open->motionHolder().isEmpty() && !open->holdsMotion(m_runner)) {
+        onStartRefused({program::ProgramError{0, 0, open->motionHolder()}});
         return false;
     }
     m_recheck->stop();

@@ -373,21 +373,18 @@ void MainWindow::stopAll()
     m_jogPanel->releaseAll();
     m_reference->stopped(tr("Referencing stopped."));
     // Every controller at once; sent, not confirmed: "stopped" follows only once each
-    // reports standstill (MachineControl).
+    // reports standstill (MachineControl). The machine then tells whoever holds its motion (a
+    // program, an MDI line, Go to; Machine::abortRequested) to end as aborted, not failed by
+    // the stop it did not ask for: no list of them here.
     m_machineControl->stop();
-    // Then a running program or MDI line ends as aborted (not failed by the stop it did not
-    // ask for): its results come later, queued from the controller threads.
-    m_programPage->abortRun();
-    m_context->mdi()->abort();
 }
 
 void MainWindow::panicAll()
 {
     m_jogPanel->releaseAll();
-    m_machineControl->panic(); // every controller at once
-    // After the panic, so that the program's own stop never goes ahead of it.
-    m_programPage->abortRun();
-    m_context->mdi()->abort();
+    // Every controller at once; the holder of the machine's motion aborts after it
+    // (Machine::abortRequested), so that its own stop never goes ahead of the panic.
+    m_machineControl->panic();
     m_reference->stopped(tr("Referencing stopped."));
 }
 
@@ -431,10 +428,8 @@ bool MainWindow::openMachine(const QString& path)
 void MainWindow::closeMachine()
 {
     m_jogPanel->releaseAll();
-    m_programPage->abortRun();
-    m_context->mdi()->abort();
     m_reference->stopped(tr("Referencing stopped."));
-    m_context->closeMachine();
+    m_context->closeMachine(); // the machine's close aborts the holder of its motion
 }
 
 void MainWindow::updateTitle()

@@ -33,13 +33,12 @@ void MainWindow::connectMachineFiles(MachineFileActions* files)
 
 QString MainWindow::machineBusyText() const
 {
-    if (m_programPage->isRunning() || m_programPage->isStarting())
-        return tr("a program runs");
-    if (m_context->mdi()->isBusy())
-        return tr("an MDI line runs");
+    const machine::Machine* m = m_context->machine();
+    // A program or an MDI line (Go to included), checked or running: what holds the motion.
+    if (m && !m->motionHolder().isEmpty())
+        return m->motionHolder();
     if (m_laserBridge && m_laserBridge->isRunning())
         return tr("the laser bridge runs");
-    const machine::Machine* m = m_context->machine();
     if (!m)
         return {};
     if (m->isReferencing())

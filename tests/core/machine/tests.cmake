@@ -17,3 +17,6 @@ stepdeck_add_test(tst_machinejogstop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machi
 # again, at the simulators on pseudo-terminals.
 stepdeck_add_test(tst_machinestop SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machinestop.cpp
                   ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration)
+# Who moves the machine (issue 49 item 4): one holder of its motion at a time (pure).
+stepdeck_add_test(tst_motionownership SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_motionownership.cpp
+                  LABELS unit)

@@ -34,7 +34,7 @@ stepdeck_add_test(tst_programpreview SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_progr
 # and what each block sends.
 # 300 s: tst_programrunnermotion runs about 100 s on its own (every row at the board), and
 # under tools/test's 4 tests per core it came close to the default 120.
-foreach(_t tst_programrunner tst_programrunnermotion tst_programcontour)
+foreach(_t tst_programrunner tst_programrunnermotion tst_programcontour tst_programrunnerowner)
   stepdeck_add_test(${_t} SOURCES ${CMAKE_CURRENT_LIST_DIR}/${_t}.cpp
                     ${CMAKE_CURRENT_LIST_DIR}/ProgramRunnerTestSupport.h
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 300)
