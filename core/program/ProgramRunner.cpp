@@ -428,10 +428,11 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_approaching = false;
     m_requests.clear();
     m_afterRequests = nullptr;
-    if (state != RunState::Finished && m_rates)
+    if (state != RunState::Finished && m_rates && m_machine)
         m_rates->restore(); // best effort after a fault or abort: not awaited
     disconnectMachine();
-    m_machine->releaseMotion(this);
+    if (m_machine)
+        m_machine->releaseMotion(this);
     m_endMessage = message;
     qCInfo(lcProgram) << "program" << runStateText(state) << message;
     setState(state);

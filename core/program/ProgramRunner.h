@@ -4,8 +4,10 @@
 #include "DrillCycle.h"
 #include "ProgramBlock.h"
 #include "ProgramCheck.h"
+#include "machine/Machine.h" // QPointer needs the whole class
 #include "model/CommandResult.h"
 #include <QObject>
+#include <QPointer>
 #include <QSet>
 #include <QTimer>
 #include <functional>
@@ -14,9 +16,6 @@
 
 namespace stepdeck {
 class ControllerSession;
-}
-namespace stepdeck::machine {
-class Machine;
 }
 
 namespace stepdeck::program {
@@ -282,7 +281,9 @@ private:
     void onContourFinished(bool ok, ErrorKind kind, const QString& message);
     void dropContour();
 
-    machine::Machine* m_machine;
+    // Watched: a window may close the machine under a run still stopping (its end then must not
+    // reach the machine that went).
+    QPointer<machine::Machine> m_machine;
     std::unique_ptr<ProgramReader> m_reader; // the running program's blocks, read as it goes
     Program m_program;                       // the running program (the rest's check reads it)
     bool m_restChanged = false;  // offsets or tools given while held, not yet checked for the rest
