@@ -3941,6 +3941,17 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::MachineWorkOffsets</name>
+        <message>
+            <source>Zero %1 refused: its position is unknown; reference it first.</source>
+            <translation>%1 nullen abgelehnt: die Position ist unbekannt; zuerst referenzieren.</translation>
+        </message>
+        <message>
+            <source>Zero %1 refused: the axis is moving.</source>
+            <translation>%1 nullen abgelehnt: die Achse fährt.</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::MdiSession</name>
         <message>
             <source>an MDI line is one line</source>
@@ -7444,17 +7455,6 @@ W1500</translation>
         <message>
             <source>the stop request failed</source>
             <translation>der Stopp-Befehl ist fehlgeschlagen</translation>
-        </message>
-    </context>
-    <context>
-        <name>stepdeck::ui::MachineWorkOffsets</name>
-        <message>
-            <source>Zero %1 refused: its position is unknown; reference it first.</source>
-            <translation>%1 nullen abgelehnt: die Position ist unbekannt; zuerst referenzieren.</translation>
-        </message>
-        <message>
-            <source>Zero %1 refused: the axis is moving.</source>
-            <translation>%1 nullen abgelehnt: die Achse fährt.</translation>
         </message>
     </context>
     <context>

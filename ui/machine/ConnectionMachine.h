@@ -15,8 +15,8 @@ namespace stepdeck::ui {
 // keys any more; a machine's axes are edited in the machine editor (Edit machine…).
 machine::MachineDescription connectionMachineOf(const ModelInfo& model, const ConnectionSpec& spec);
 
-// Where MachineWorkOffsets keeps a connection machine's work origins: per model, as a machine
-// file's are kept per file.
+// Where program::MachineWorkOffsets keeps a connection machine's work origins: per model, as a
+// machine file's are kept per file.
 QString connectionOffsetsKey(const QString& modelId);
 
 } // namespace stepdeck::ui

@@ -3,8 +3,8 @@
 #include "MachineMdi.h"
 #include "drives/PositionErrorResetButton.h"
 #include "machine/Machine.h"
-#include "machine/MachineTools.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineTools.h"
+#include "program/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <QCoreApplication>
 
@@ -18,7 +18,7 @@ QString modelDisplayName(const ModelInfo& model)
 
 MachineContext::MachineContext(QObject* parent)
     : QObject(parent), m_session(new ControllerSession(this)),
-      m_workOffsets(new MachineWorkOffsets(this)), m_tools(new MachineTools(this))
+      m_workOffsets(new program::MachineWorkOffsets(this)), m_tools(new program::MachineTools(this))
 {
     connect(m_session, &ControllerSession::linkStateChanged, this, [this](LinkState state) {
         if (state != LinkState::Connected)

@@ -10,11 +10,14 @@ struct MachineAxis;
 enum class PositionKnowledge;
 } // namespace stepdeck::machine
 
+namespace stepdeck::program {
+class MachineTools;
+class MachineWorkOffsets;
+} // namespace stepdeck::program
+
 namespace stepdeck::ui {
 
 class MachineMdi;
-class MachineTools;
-class MachineWorkOffsets;
 
 // A model's display name in the current language (context "Models").
 QString modelDisplayName(const ModelInfo& model);
@@ -112,8 +115,8 @@ public:
     QString machinePath() const { return m_machinePath; }
     // The open machine's work offsets (loaded for its file when it opens, none when closed):
     // one set for the position display, Go to and programs (issue 28, item 3).
-    MachineWorkOffsets* workOffsets() const { return m_workOffsets; }
-    MachineTools* tools() const { return m_tools; } // the machine's tool table (issue 29)
+    program::MachineWorkOffsets* workOffsets() const { return m_workOffsets; }
+    program::MachineTools* tools() const { return m_tools; } // the machine's tool table (issue 29)
     // One G-code line at a time on the machine: the MDI line and Go to (issue 31).
     MachineMdi* mdi() const { return m_mdi; }
     QString selectedController() const { return m_selectedId; }
@@ -179,8 +182,8 @@ private:
     ControllerSession* m_selected = nullptr; // the machine's selected controller
     QString m_selectedId;
     QString m_machinePath;
-    MachineWorkOffsets* m_workOffsets;
-    MachineTools* m_tools;
+    program::MachineWorkOffsets* m_workOffsets;
+    program::MachineTools* m_tools;
     MachineMdi* m_mdi = nullptr;              // made last: it follows machineChanged()
     const ModelInfo* m_singleModel = nullptr; // the connection bar's model while a file is open
     QList<QMetaObject::Connection> m_relay;

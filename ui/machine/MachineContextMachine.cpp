@@ -6,8 +6,8 @@
 #include "machine/MachineContext.h"
 #include "machine/MachineFile.h"
 #include "machine/MachineSetup.h"
-#include "machine/MachineTools.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineTools.h"
+#include "program/MachineWorkOffsets.h"
 #include "protocols/Registry.h"
 #include <optional>
 

@@ -4,8 +4,8 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineMoveTracker.h"
-#include "machine/MachineWorkOffsets.h"
 #include "position/DroValueLabel.h"
+#include "program/MachineWorkOffsets.h"
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QGridLayout>
@@ -29,7 +29,8 @@ QString format(const machine::MachineAxis& axis, double value)
 }
 } // namespace
 
-MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
+MachineDro::MachineDro(MachineContext* context, program::MachineWorkOffsets* offsets,
+                       QWidget* parent)
     : QWidget(parent), m_context(context), m_offsets(offsets), m_grid(new QGridLayout),
       m_system(new QComboBox(this)), m_clear(new QToolButton(this)),
       m_message(new ElidedLabel(this)), m_moves(new MachineMoveTracker),
@@ -52,7 +53,7 @@ MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWi
     m_system->setFocusPolicy(Qt::NoFocus);
     m_system->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_system->setCurrentIndex(offsets->active());
-    connect(m_system, &QComboBox::activated, offsets, &MachineWorkOffsets::setActive);
+    connect(m_system, &QComboBox::activated, offsets, &program::MachineWorkOffsets::setActive);
     bottom->addWidget(m_system);
     m_clear->setText(tr("Clear work offsets"));
     m_clear->setToolTip(tr("Show machine positions again (work origin = machine origin)"));
@@ -62,7 +63,7 @@ MachineDro::MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWi
     bottom->addWidget(m_message, 1);
     layout->addLayout(bottom);
     connect(m_clear, &QToolButton::clicked, this, &MachineDro::clearOffsets);
-    connect(offsets, &MachineWorkOffsets::changed, this, [this] {
+    connect(offsets, &program::MachineWorkOffsets::changed, this, [this] {
         m_system->setCurrentIndex(m_offsets->active());
         refresh();
     });

@@ -13,13 +13,16 @@ struct MachineAxis;
 struct MachineAxisStatus;
 } // namespace stepdeck::machine
 
+namespace stepdeck::program {
+class MachineWorkOffsets;
+}
+
 namespace stepdeck::ui {
 
 class DroValueLabel;
 class ElidedLabel;
 class MachineContext;
 class MachineMoveTracker;
-class MachineWorkOffsets;
 struct MoveProfile;
 
 // The read-out of a machine (issue 19): its logical axes in their units, from
@@ -29,15 +32,16 @@ struct MoveProfile;
 // while it moves; during a move of a controller that reports no position then (the E-LAB),
 // where the axis probably is (≈, from the ramp parameters known in this session) or else
 // where it is heading (→), never the target as if reached. Zero sets an axis' work origin at its
-// position (MachineWorkOffsets; refused while unknown): the digits then show the work position,
-// marked as known as the machine position it comes from, and the line below the machine position in
-// units and the controller's count. Nothing widens a row: the digits fit their box, the badge is as
-// wide as its longest word, the lines elide.
+// position (program::MachineWorkOffsets; refused while unknown): the digits then show the work
+// position, marked as known as the machine position it comes from, and the line below the machine
+// position in units and the controller's count. Nothing widens a row: the digits fit their box, the
+// badge is as wide as its longest word, the lines elide.
 class MachineDro : public QWidget
 {
     Q_OBJECT
 public:
-    MachineDro(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent = nullptr);
+    MachineDro(MachineContext* context, program::MachineWorkOffsets* offsets,
+               QWidget* parent = nullptr);
     ~MachineDro() override;
 
     QString displayedValue(const QString& axis) const; // the digits, for tests
@@ -71,7 +75,7 @@ private:
                   const QString& tip);
 
     MachineContext* m_context;
-    MachineWorkOffsets* m_offsets;
+    program::MachineWorkOffsets* m_offsets;
     QGridLayout* m_grid;
     QComboBox* m_system; // G54..G59: the coordinate system Zero, the digits and Go to use
     QToolButton* m_clear;

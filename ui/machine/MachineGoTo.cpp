@@ -4,7 +4,7 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineMdi.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineWorkOffsets.h"
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
@@ -25,7 +25,8 @@ QString axisValue(double value, bool steps)
 }
 } // namespace
 
-MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent)
+MachineGoTo::MachineGoTo(MachineContext* context, program::MachineWorkOffsets* offsets,
+                         QWidget* parent)
     : QWidget(parent), m_context(context), m_offsets(offsets), m_label(new QLabel(this)),
       m_grid(new QGridLayout), m_go(new QPushButton(tr("Go to"), this)),
       m_result(new ElidedLabel(this))
@@ -47,7 +48,7 @@ MachineGoTo::MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, Q
     m_go->setToolTip(tr("The checked axes go together, in one rapid move (G0)"));
     connect(m_go, &QPushButton::clicked, this, &MachineGoTo::go);
     connect(context, &MachineContext::machineChanged, this, &MachineGoTo::rebuild);
-    connect(offsets, &MachineWorkOffsets::changed, this, &MachineGoTo::updateLabel);
+    connect(offsets, &program::MachineWorkOffsets::changed, this, &MachineGoTo::updateLabel);
     connect(context->mdi(), &MachineMdi::started, this, [this](quint64 id) {
         if (id != m_pending)
             return;

@@ -8,19 +8,22 @@ class QGridLayout;
 class QLabel;
 class QPushButton;
 
+namespace stepdeck::program {
+class MachineWorkOffsets;
+}
+
 namespace stepdeck::ui {
 
 class ElidedLabel;
 class MachineContext;
-class MachineWorkOffsets;
 
 // Go-to of machine axes in their units (issues 19 and 31): a target box per axis with a check
 // that says whether the axis goes; the checked axes go together as one G0 line of its own
 // through MachineMdi (issue 30: the same check and path as a program's G0), which refuses the
 // whole line with the reason (nothing sent) unless every axis is referenced and its target
 // within its soft limits. Changing a target by hand (typing, arrows, wheel) checks its axis;
-// Enter in a target goes like the button. With a work zero set (MachineWorkOffsets) a target
-// is in work coordinates of the active system, and the label says so ("Go to (work)"); the
+// Enter in a target goes like the button. With a work zero set (program::MachineWorkOffsets) a
+// target is in work coordinates of the active system, and the label says so ("Go to (work)"); the
 // soft limits stay in machine coordinates. The line below says what happened, on one line
 // (elided): "arrived" only for an axis whose controller confirmed it at its target, read
 // after the move ended.
@@ -28,7 +31,8 @@ class MachineGoTo : public QWidget
 {
     Q_OBJECT
 public:
-    MachineGoTo(MachineContext* context, MachineWorkOffsets* offsets, QWidget* parent = nullptr);
+    MachineGoTo(MachineContext* context, program::MachineWorkOffsets* offsets,
+                QWidget* parent = nullptr);
 
     QCheckBox* axisCheck(const QString& axis) const;      // nullptr: no such axis
     QDoubleSpinBox* targetBox(const QString& axis) const; // nullptr: no such axis
@@ -66,7 +70,7 @@ private:
     void judgeArrival();  // once every read finished
 
     MachineContext* m_context;
-    MachineWorkOffsets* m_offsets;
+    program::MachineWorkOffsets* m_offsets;
     QLabel* m_label;
     QGridLayout* m_grid;
     QPushButton* m_go;

@@ -1,8 +1,8 @@
 #include "MachineMdi.h"
 #include "MachineContext.h"
-#include "MachineTools.h"
-#include "MachineWorkOffsets.h"
 #include "machine/Machine.h"
+#include "program/MachineTools.h"
+#include "program/MachineWorkOffsets.h"
 #include "program/ProgramStarter.h"
 #include <QLoggingCategory>
 
@@ -49,7 +49,7 @@ void MachineMdi::onMachineChanged()
     connect(m_runner, &program::ProgramRunner::operatorMessage, this, &MachineMdi::operatorMessage);
     // A line's G10 sets a coordinate system, as a program's does (LinuxCNC).
     connect(m_runner, &program::ProgramRunner::coordinateSystemSet, m_context->workOffsets(),
-            &MachineWorkOffsets::setSystem);
+            &program::MachineWorkOffsets::setSystem);
 }
 
 quint64 MachineMdi::runLine(const QString& line, QString* refusal)

@@ -1,5 +1,5 @@
 #include "ToolTableDialog.h"
-#include "machine/MachineTools.h"
+#include "program/MachineTools.h"
 #include <QDialogButtonBox>
 #include <QFontDatabase>
 #include <QLabel>
@@ -9,7 +9,7 @@
 
 namespace stepdeck::ui {
 
-ToolTableDialog::ToolTableDialog(MachineTools* tools, QWidget* parent)
+ToolTableDialog::ToolTableDialog(program::MachineTools* tools, QWidget* parent)
     : QDialog(parent), m_tools(tools), m_editor(new QPlainTextEdit(this)), m_error(new QLabel(this))
 {
     setWindowTitle(tr("Tool table"));
@@ -38,7 +38,7 @@ ToolTableDialog::ToolTableDialog(MachineTools* tools, QWidget* parent)
             accept();
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(tools, &MachineTools::machineChanged, this, &ToolTableDialog::machineChanged);
+    connect(tools, &program::MachineTools::machineChanged, this, &ToolTableDialog::machineChanged);
     resize(520, 360);
 }
 

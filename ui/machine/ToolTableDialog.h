@@ -4,9 +4,11 @@
 class QLabel;
 class QPlainTextEdit;
 
-namespace stepdeck::ui {
-
+namespace stepdeck::program {
 class MachineTools;
+}
+
+namespace stepdeck::ui {
 
 // Machine → Tool table…: the machine's tool table as LinuxCNC's tool.tbl text (issue 29,
 // docs/programs.md "Tools"), so a table can be typed or pasted from a LinuxCNC machine. Save
@@ -16,7 +18,7 @@ class ToolTableDialog : public QDialog
 {
     Q_OBJECT
 public:
-    ToolTableDialog(MachineTools* tools, QWidget* parent = nullptr);
+    ToolTableDialog(program::MachineTools* tools, QWidget* parent = nullptr);
 
     QPlainTextEdit* editor() const { return m_editor; }
     QString errorText() const;
@@ -27,7 +29,7 @@ private:
     // Save never gives one machine's table to another; unsaved edits are said to be dropped.
     void machineChanged();
 
-    MachineTools* m_tools;
+    program::MachineTools* m_tools;
     QPlainTextEdit* m_editor;
     QLabel* m_error;
 };

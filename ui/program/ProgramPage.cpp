@@ -17,8 +17,8 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineMdi.h"
-#include "machine/MachineTools.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineTools.h"
+#include "program/MachineWorkOffsets.h"
 #include "program/ProgramParser.h"
 #include "program/language/ProgramExpansion.h"
 #include <QHBoxLayout>
@@ -129,8 +129,8 @@ ProgramPage::ProgramPage(MachineContext* context, QWidget* parent)
             updateControls();
         }
     };
-    connect(m_context->workOffsets(), &MachineWorkOffsets::changed, this, recheck);
-    connect(m_context->tools(), &MachineTools::changed, this, recheck);
+    connect(m_context->workOffsets(), &program::MachineWorkOffsets::changed, this, recheck);
+    connect(m_context->tools(), &program::MachineTools::changed, this, recheck);
     // The single controller's link decides whether "Use the connected controller" can work.
     connect(m_context->session(), &ControllerSession::linkStateChanged, this,
             &ProgramPage::updateControls);
@@ -297,7 +297,7 @@ void ProgramPage::onMachineChanged()
         connect(m_runner, &ProgramRunner::operatorMessage, this, &ProgramPage::operatorMessage);
         // A program's G10 sets a coordinate system for the next runs too (LinuxCNC).
         connect(m_runner, &ProgramRunner::coordinateSystemSet, m_context->workOffsets(),
-                &MachineWorkOffsets::setSystem);
+                &program::MachineWorkOffsets::setSystem);
         // A touch-off while the run holds (issue 47): the rest of the run takes the new zero
         // or tool length once its check passed (ProgramRunner::resume); the banner says which.
         connect(m_runner, &ProgramRunner::resumeRefused, this, [this](const QString& message) {

@@ -14,8 +14,8 @@
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
 #include "machine/MachineMdi.h"
-#include "machine/MachineTools.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineTools.h"
+#include "program/MachineWorkOffsets.h"
 #include "program/ProgramReader.h"
 #include "program/RunFromLine.h"
 #include <QPushButton>

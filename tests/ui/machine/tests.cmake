@@ -27,9 +27,6 @@ foreach(_test tst_machinewindow tst_machinesafety tst_machineposition tst_machin
 endforeach()
 # Re-open machine edits through the editor (MachineEditorTestSupport.h names the examples).
 stepdeck_test_definitions(tst_machinereopen STEPDECK_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
-# The work offsets of a machine's axes in their units (pure: store, conversion, persistence).
-stepdeck_add_test(tst_machineworkoffsets SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_machineworkoffsets.cpp
-                  LABELS unit LIBS stepdeck_ui)
 # The machine's read-out and go-to on the connection bar's controller (issue 28, item 0),
 # against the in-process simulator.
 foreach(_test tst_machinedro tst_machinegoto tst_machinecontrol)

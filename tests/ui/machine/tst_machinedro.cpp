@@ -9,9 +9,9 @@
 #include "jog/JoystickPad.h"
 #include "machine/MachineDro.h"
 #include "machine/MachineReferenceRows.h"
-#include "machine/MachineWorkOffsets.h"
 #include "position/PositionPanel.h"
 #include "position/ReferencePanel.h"
+#include "program/MachineWorkOffsets.h"
 #include <QComboBox>
 #include <QPushButton>
 
@@ -107,7 +107,7 @@ void TestMachineDro::system_chosenInTheBox_zeroAndDigitsUseIt()
     QVERIFY(dro()->zeroAxis(QStringLiteral("X"))); // G54 zero at 400
     box->setCurrentIndex(1);
     Q_EMIT box->activated(1); // as a click on "G55" does
-    ui::MachineWorkOffsets* offsets = m_f->window->context()->workOffsets();
+    program::MachineWorkOffsets* offsets = m_f->window->context()->workOffsets();
     QCOMPARE(offsets->active(), 1);
     QCOMPARE(dro()->displayedValue(QStringLiteral("X")), QStringLiteral("400")); // G55: none
     offsets->setSystem(1, {{QStringLiteral("X"), 100.0}}); // as a program's G10 does

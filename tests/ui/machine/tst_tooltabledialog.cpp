@@ -1,9 +1,9 @@
-// The machine's tool table in the window (issue 29): MachineTools keeps LinuxCNC tool.tbl text
-// per machine, the dialog saves it only when every line reads and shows the first error in a
+// The machine's tool table in the window (issue 29): program::MachineTools keeps LinuxCNC tool.tbl
+// text per machine, the dialog saves it only when every line reads and shows the first error in a
 // line reserved for it.
 #include "TestMain.h"
-#include "machine/MachineTools.h"
 #include "machine/ToolTableDialog.h"
+#include "program/MachineTools.h"
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QSettings>
@@ -41,11 +41,11 @@ void TestToolTableDialog::initTestCase()
 void TestToolTableDialog::save_validTable_keptPerMachineAndRemembered()
 {
     const QString file = m_dir.filePath(QStringLiteral("mill.machine.json"));
-    MachineTools tools;
+    program::MachineTools tools;
     tools.load(file);
     QVERIFY(tools.table().isEmpty());
     ToolTableDialog dialog(&tools);
-    QSignalSpy changed(&tools, &MachineTools::changed);
+    QSignalSpy changed(&tools, &program::MachineTools::changed);
     dialog.editor()->setPlainText(QStringLiteral("T1 P1 Z12.5 D6 ;6 mm end mill\nT2 Z-3"));
     QVERIFY(dialog.save());
     QCOMPARE(changed.size(), 1);
@@ -53,7 +53,7 @@ void TestToolTableDialog::save_validTable_keptPerMachineAndRemembered()
     QCOMPARE(tools.table().tools().size(), 2);
     QCOMPARE(tools.table().find(1)->length, 12.5);
     QCOMPARE(tools.table().find(1)->text, QStringLiteral("6 mm end mill"));
-    MachineTools reopened;
+    program::MachineTools reopened;
     reopened.load(file);
     QCOMPARE(reopened.table(), tools.table());
     QCOMPARE(reopened.text(), tools.text());
@@ -61,7 +61,7 @@ void TestToolTableDialog::save_validTable_keptPerMachineAndRemembered()
 
 void TestToolTableDialog::save_invalidLine_errorShownNothingChangedLayoutStill()
 {
-    MachineTools tools;
+    program::MachineTools tools;
     tools.load(m_dir.filePath(QStringLiteral("b.machine.json")));
     QList<program::ProgramError> errors;
     QVERIFY(tools.setText("T4 Z1", &errors));
@@ -83,7 +83,7 @@ void TestToolTableDialog::save_invalidLine_errorShownNothingChangedLayoutStill()
 
 void TestToolTableDialog::load_otherMachine_itsOwnTable()
 {
-    MachineTools tools;
+    program::MachineTools tools;
     tools.load(m_dir.filePath(QStringLiteral("c.machine.json")));
     QVERIFY(tools.setText("T1 Z5", nullptr));
     tools.load(m_dir.filePath(QStringLiteral("d.machine.json")));
@@ -99,7 +99,7 @@ void TestToolTableDialog::load_otherMachine_itsOwnTable()
 // that unsaved edits were dropped, and Save then stores only what it shows, for the new machine.
 void TestToolTableDialog::dialogOpen_otherMachineLoaded_showsItsTableNeverSavesTheOldText()
 {
-    MachineTools tools;
+    program::MachineTools tools;
     const QString a = m_dir.filePath(QStringLiteral("e.machine.json"));
     const QString b = m_dir.filePath(QStringLiteral("f.machine.json"));
     tools.load(b);

@@ -1,10 +1,10 @@
 #include "MachineWorkOffsets.h"
+#include "WorkOffsetStore.h"
 #include "machine/Machine.h"
-#include "program/WorkOffsetStore.h"
 #include <QFileInfo>
 #include <QSettings>
 
-namespace stepdeck::ui {
+namespace stepdeck::program {
 
 MachineWorkOffsets::MachineWorkOffsets(QObject* parent) : QObject(parent) {}
 
@@ -95,4 +95,4 @@ void MachineWorkOffsets::save() const
     program::WorkOffsetStore::save(settings, m_path, program::StoredOffsets{m_systems, m_active});
 }
 
-} // namespace stepdeck::ui
+} // namespace stepdeck::program

@@ -1,8 +1,8 @@
 #pragma once
-#include "program/ToolTable.h"
+#include "ToolTable.h"
 #include <QObject>
 
-namespace stepdeck::ui {
+namespace stepdeck::program {
 
 // A machine's tool table (issue 29, docs/programs.md "Tools"): what G43 offsets Z by and what
 // M6 asks the operator to load, kept as LinuxCNC's tool.tbl text per machine file (QSettings,
@@ -32,4 +32,4 @@ private:
     program::ToolTable m_table;
 };
 
-} // namespace stepdeck::ui
+} // namespace stepdeck::program

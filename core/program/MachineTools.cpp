@@ -2,7 +2,7 @@
 #include <QFileInfo>
 #include <QSettings>
 
-namespace stepdeck::ui {
+namespace stepdeck::program {
 
 void MachineTools::load(const QString& machineKey)
 {
@@ -44,4 +44,4 @@ bool MachineTools::setText(const QByteArray& text, QList<program::ProgramError>*
     return true;
 }
 
-} // namespace stepdeck::ui
+} // namespace stepdeck::program

@@ -1,6 +1,6 @@
 #pragma once
-#include "program/ProgramCoordinates.h"
-#include "program/WorkOffsetStore.h"
+#include "ProgramCoordinates.h"
+#include "WorkOffsetStore.h"
 #include <QMap>
 #include <QObject>
 #include <QString>
@@ -9,7 +9,7 @@ namespace stepdeck::machine {
 struct MachineAxisStatus;
 }
 
-namespace stepdeck::ui {
+namespace stepdeck::program {
 
 // The operator's work origin per machine axis (issue 19), in the axis' unit: the machine
 // position at which the axis was zeroed. Work position = machine position - offset; a target
@@ -73,4 +73,4 @@ private:
     int m_active = 0;
 };
 
-} // namespace stepdeck::ui
+} // namespace stepdeck::program

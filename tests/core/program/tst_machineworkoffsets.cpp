@@ -2,7 +2,7 @@
 // coordinates in the axis' unit, remembered per machine file by its absolute path.
 #include "TestMain.h"
 #include "machine/Machine.h"
-#include "machine/MachineWorkOffsets.h"
+#include "program/MachineWorkOffsets.h"
 #include <QDir>
 #include <QSettings>
 #include <QSignalSpy>
@@ -11,7 +11,7 @@
 #include <QTest>
 
 using namespace stepdeck;
-using namespace stepdeck::ui;
+using namespace stepdeck::program;
 
 class TestMachineWorkOffsets : public QObject
 {
