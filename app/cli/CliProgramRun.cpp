@@ -502,10 +502,11 @@ Outcome runProgram(CliMachineSession& m, const Program& p, const RunRequest& r, 
     m.waitFor([&runner] { return program::isEnded(runner.state()); }, -1);
     Outcome outcome;
     if (m.interrupted()) {
-        // The runner stops every controller; the caller's stopAll() then reports whether
-        // each acknowledged it (as for every command).
+        // The machine stops every controller and aborts the run that holds its motion
+        // (Machine::abortRequested, as the window's STOP); the caller's stopAll() then reports
+        // whether each acknowledged it (as for every command).
         const int line = runner.currentLine();
-        runner.abort();
+        m.machine().stop();
         const bool never = false;
         settle.waitFor([&runner] { return program::isEnded(runner.state()); }, kAbortSettleMs,
                        never);

@@ -101,6 +101,7 @@ private Q_SLOTS:
     void machineFile_invalidOrUnreadable_exit7Or12();
     void run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero_data();
     void run_referenceWithTheWindowsOffsets_boardCutsInTheWindowsZero();
+    void signal_duringProgramRun_abortedAtItsLineBoardStandsRestNeverSent();
 
 private:
     void writeMachineFile();
@@ -435,6 +436,32 @@ void TestCliMachineRun::run_referenceWithTheWindowsOffsets_boardCutsInTheWindows
     QVERIFY(qAbs(m_elab.sim->position(Axis::X) - (-20000 + steps)) <= 10);
     QVERIFY(m_elab.sim->standingStill());
     QCOMPARE(m_err.contains("as the window keeps them"), saidFromWindow);
+}
+
+// Ctrl+C during `run` stops the machine, which aborts the run holding its motion (issue 49 item
+// 4): the board stands, the run got no further than line 2, and line 3 never reaches it.
+void TestCliMachineRun::signal_duringProgramRun_abortedAtItsLineBoardStandsRestNeverSent()
+{
+    const QString program = m_dir->filePath(QStringLiteral("long.ngc"));
+    {
+        QFile file(program);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("G91 G21\nG0 X100\nG0 X1\nM30\n");
+    }
+    startCli({"run", program});
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab.sim->isMoving(Axis::X), 30000);
+    m_elab.sim->clearReceivedFrames();
+    QCOMPARE(::kill(pid_t(m_process->processId()), SIGINT), 0);
+    QVERIFY(finished());
+    QCOMPARE(m_process->exitStatus(), QProcess::NormalExit); // handled, not killed
+    QVERIFY2(m_process->exitCode() == 130, m_err.constData());
+    QVERIFY2(m_err.contains("line 2/4: G0 X100") && !m_err.contains("line 3/4"), m_err.constData());
+    QVERIFY2(m_err.contains("interrupted: every controller acknowledged the stop"),
+             m_err.constData());
+    QVERIFY(receivedStop(*m_elab.sim));
+    QTRY_VERIFY_WITH_TIMEOUT(m_elab.sim->standingStill(), 5000);
+    QCOMPARE(m_elab.sim->acceptedMoves().size(), 1); // line 2's only
+    QCOMPARE(acceptedSteps(*m_elab.sim, Axis::X), 40000);
 }
 
 STEPDECK_TEST_GUILESS_MAIN(TestCliMachineRun)
