@@ -5148,7 +5148,7 @@
         </message>
         <message>
             <source>%1, then set the work Z for it (Zero Z)</source>
-            <translation>%1, dann den Werkstück-Nullpunkt von Z dafür setzen (Z nullen)</translation>
+            <translation>%1, dann Z dafür nullen</translation>
         </message>
         <message>
             <source>Not resumed: tool %1 takes its length from a touch-off, and the work Z of %2 was not set since the run held: set it for tool %1 (Zero Z on the position display)</source>
@@ -8362,20 +8362,20 @@ W1500</translation>
             <translation>Fortsetzen</translation>
         </message>
         <message>
-            <source>Line %1 (M0): the program holds. Resume when ready.</source>
-            <translation>Zeile %1 (M0): das Programm hält an. Fortsetzen, wenn bereit.</translation>
-        </message>
-        <message>
-            <source>Line %1 (M0): %2</source>
-            <translation>Zeile %1 (M0): %2</translation>
-        </message>
-        <message>
             <source>Keep Z</source>
             <translation>Z behalten</translation>
         </message>
         <message>
             <source>Go on with the work Z as it is: only when the tool in the spindle is the one Z was set for. Another tool needs its touch-off (Zero Z).</source>
             <translation>Mit dem Werkstück-Nullpunkt von Z weiterfahren, wie er ist: nur wenn das Werkzeug in der Spindel das ist, für das Z gesetzt wurde. Ein anderes Werkzeug muss angetastet werden (Z nullen).</translation>
+        </message>
+        <message>
+            <source>Line %1: the program holds. Resume when ready.</source>
+            <translation>Zeile %1: Das Programm hält an. Fortsetzen, wenn bereit.</translation>
+        </message>
+        <message>
+            <source>Line %1: %2</source>
+            <translation>Zeile %1: %2</translation>
         </message>
     </context>
     <context>

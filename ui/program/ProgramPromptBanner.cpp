@@ -34,9 +34,11 @@ ProgramPromptBanner::ProgramPromptBanner(QWidget* parent)
 void ProgramPromptBanner::showPrompt(int line, const QString& prompt)
 {
     m_showing = true;
+    // The line, not a word: the hold may be an M0, an M1 or a tool change (M6), and the
+    // prompt says which ("Load tool 2").
     m_text->setText(prompt.isEmpty()
-                        ? tr("Line %1 (M0): the program holds. Resume when ready.").arg(line)
-                        : tr("Line %1 (M0): %2").arg(line).arg(prompt));
+                        ? tr("Line %1: the program holds. Resume when ready.").arg(line)
+                        : tr("Line %1: %2").arg(line).arg(prompt));
     setStyleSheet(QStringLiteral("#programPromptBanner { background: #fff3c4; }"
                                  "#programPrompt { font-weight: bold; }"));
     m_resume->show();

@@ -473,6 +473,9 @@ void TestProgramPageRun::touchOff_zeroXAtM6_restCutsInTheNewZeroAtTheBoard()
     QTRY_VERIFY(page()->controls()->runButton()->isEnabled());
     page()->controls()->runButton()->click();
     QTRY_VERIFY_WITH_TIMEOUT(runState(RunState::Paused) && runner()->pausedAtOperatorStop(), 20000);
+    // The banner names the hold as what it is: a tool change, not an M0.
+    QVERIFY2(page()->promptBanner()->text().startsWith(QStringLiteral("Line 2: Load tool 2")),
+             qPrintable(page()->promptBanner()->text()));
     QString refusal;
     QSignalSpy moved(m_rig.machine(), &machine::Machine::moveFinished);
     QVERIFY2(m_rig.machine()->move({{QStringLiteral("X"), 0.5}}, false, &refusal) != 0,
