@@ -3212,6 +3212,37 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::motion::SwitchExecutor</name>
+        <message>
+            <source>%1: no controller of this machine has coolant</source>
+            <translation>%1: keine Steuerung dieser Maschine hat Kühlmittel</translation>
+        </message>
+        <message>
+            <source>%1: no controller of this machine has a spindle</source>
+            <translation>%1: keine Steuerung dieser Maschine hat eine Spindel</translation>
+        </message>
+        <message>
+            <source>controller "%1": %2</source>
+            <translation>Steuerung „%1“: %2</translation>
+        </message>
+        <message>
+            <source>%1: the machine has no digital outputs</source>
+            <translation>%1: die Maschine hat keine digitalen Ausgänge</translation>
+        </message>
+        <message>
+            <source>%1: the machine's outputs are 1..%2</source>
+            <translation>%1: die Ausgänge der Maschine sind 1..%2</translation>
+        </message>
+        <message>
+            <source>S%1 is above the spindle's maxRpm %2 (the machine file's spindle scale)</source>
+            <translation>S%1 liegt über maxRpm %2 der Spindel (Spindelskala der Maschinendatei)</translation>
+        </message>
+        <message>
+            <source>controller "%1" cannot reverse its spindle: use M3</source>
+            <translation>Steuerung "%1" kann die Drehrichtung ihrer Spindel nicht umkehren: M3 verwenden</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::nanotec::Codec</name>
         <message>
             <source>'|0' is never sent: the drive would stop answering (manual 6.4)</source>
@@ -4265,22 +4296,6 @@
             <translation>%1: Steuerung "%2" hat keine Referenzfahrt (G28)</translation>
         </message>
         <message>
-            <source>%1: no controller of this machine has a spindle</source>
-            <translation>%1: keine Steuerung dieser Maschine hat eine Spindel</translation>
-        </message>
-        <message>
-            <source>%1: no controller of this machine has coolant</source>
-            <translation>%1: keine Steuerung dieser Maschine hat Kühlmittel</translation>
-        </message>
-        <message>
-            <source>%1: the machine has no digital outputs</source>
-            <translation>%1: die Maschine hat keine digitalen Ausgänge</translation>
-        </message>
-        <message>
-            <source>%1: the machine's outputs are 1..%2</source>
-            <translation>%1: die Ausgänge der Maschine sind 1..%2</translation>
-        </message>
-        <message>
             <source>%1: the machine has no digital inputs</source>
             <translation>%1: die Maschine hat keine digitalen Eingänge</translation>
         </message>
@@ -4311,10 +4326,6 @@
         <message>
             <source>%1: controller "%2": %3</source>
             <translation>%1: Steuerung „%2“: %3</translation>
-        </message>
-        <message>
-            <source>controller "%1": %2</source>
-            <translation>Steuerung „%1“: %2</translation>
         </message>
         <message>
             <source>%1 reaches %2 %3 in work coordinates, %4 %3 in machine coordinates: outside the soft limits %5..%6 %3 (machine)</source>
@@ -5014,14 +5025,6 @@
         <message>
             <source>its setup is incomplete, so it refuses every move: write %1 on the Setup page first</source>
             <translation>ihr Setup ist unvollständig, daher lehnt sie jede Fahrt ab: zuerst %1 auf der Seite Setup schreiben</translation>
-        </message>
-        <message>
-            <source>S%1 is above the spindle's maxRpm %2 (the machine file's spindle scale)</source>
-            <translation>S%1 liegt über maxRpm %2 der Spindel (Spindelskala der Maschinendatei)</translation>
-        </message>
-        <message>
-            <source>controller "%1" cannot reverse its spindle: use M3</source>
-            <translation>Steuerung "%1" kann die Drehrichtung ihrer Spindel nicht umkehren: M3 verwenden</translation>
         </message>
     </context>
     <context>

@@ -84,7 +84,7 @@ struct MachineAxis
 
 // The machine's spindle (docs/machines.md, "spindle"; issue 29). maxRpm: the speed the
 // controller's full spindle-speed range stands for, as GRBL's $30 does: a program's S in rpm
-// is mapped linearly onto that range (program::ProgramRules::spindleValue), and an S above it
+// is mapped linearly onto that range (motion::SwitchExecutor::spindleValue), and an S above it
 // runs at maxRpm with a note (a check error with "limits": "refuse", issue 50). Without it, S
 // is sent as written, in the controller's own units.
 //

@@ -113,9 +113,4 @@ double contourFeed(const ContourMoves::Stream& stream, const motion::CanonicalMo
                         kBelowHighest);
 }
 
-double spindleRpm(double s, std::optional<double> maxRpm)
-{
-    return maxRpm && *maxRpm > 0 && s > *maxRpm ? *maxRpm : s;
-}
-
 } // namespace stepdeck::program::FeedLimit

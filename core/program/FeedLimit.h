@@ -65,8 +65,5 @@ AxisRate axisRate(const machine::MachineDescription& d, const machine::MachineAx
 double contourFeed(const ContourMoves::Stream& stream, const motion::CanonicalMove& move,
                    machine::LimitPolicy limits);
 
-// The S the spindle runs at (rpm): at most maxRpm (GRBL's $30), where the machine has a scale.
-double spindleRpm(double s, std::optional<double> maxRpm);
-
 } // namespace FeedLimit
 } // namespace stepdeck::program

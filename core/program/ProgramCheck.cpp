@@ -504,38 +504,4 @@ ProgramCheckResult ProgramCheck::check(const ProgramSource& source, const QStrin
     return result;
 }
 
-namespace {
-// The machine's inputs or outputs counted from 1 over the controllers in the file's order.
-std::optional<MachineIo> nthIo(const MachineFacts& facts, int n, int Capabilities::*count)
-{
-    if (n < 1)
-        return std::nullopt;
-    for (const machine::MachineController& c : facts.description.controllers) {
-        const int here = facts.capabilities.value(c.id).*count;
-        if (n <= here)
-            return MachineIo{c.id, n};
-        n -= here;
-    }
-    return std::nullopt;
-}
-} // namespace
-
-std::optional<MachineIo> machineOutput(const MachineFacts& facts, int n)
-{
-    return nthIo(facts, n, &Capabilities::digitalOutputs);
-}
-
-std::optional<MachineIo> machineInput(const MachineFacts& facts, int n)
-{
-    return nthIo(facts, n, &Capabilities::digitalInputs);
-}
-
-QString machineSwitchController(const MachineFacts& facts, bool Capabilities::*has)
-{
-    for (const machine::MachineController& c : facts.description.controllers)
-        if (facts.capabilities.value(c.id).*has)
-            return c.id;
-    return {};
-}
-
 } // namespace stepdeck::program

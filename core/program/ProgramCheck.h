@@ -212,19 +212,4 @@ public:
                                     const CheckProgress& progress = {});
 };
 
-// A machine output or input number (M64/M65/M66 P) on a controller: which one, and its own
-// number (1-based, as MachineStatus and the model operation kSetOutput count).
-struct MachineIo
-{
-    QString controller;
-    int number = 0;
-};
-// The machine's outputs / inputs counted from 1 over the controllers in the file's order
-// (docs/programs.md). nullopt: the machine has no such output / input.
-std::optional<MachineIo> machineOutput(const MachineFacts& facts, int n);
-std::optional<MachineIo> machineInput(const MachineFacts& facts, int n);
-// The controller that switches the machine's spindle (has = &Capabilities::spindle) or coolant
-// (&Capabilities::coolant): the first that has one, in the file's order; empty: none has.
-QString machineSwitchController(const MachineFacts& facts, bool Capabilities::*has);
-
 } // namespace stepdeck::program

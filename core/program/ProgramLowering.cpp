@@ -119,33 +119,40 @@ std::optional<ProgramLowering::Error> ProgramLowering::lower(const ProgramBlock&
 // nothing of their own: their offsets are the frame (lowerFrame).
 void ProgramLowering::lowerSwitch(const ProgramBlock& block, std::vector<MotionCommand>* out) const
 {
+    // Modal, SpindleSpeed (told above), G10, G92...: nothing beyond the frame.
+    if (std::optional<MotionCommand> command = switchCommand(block))
+        out->push_back(std::move(*command));
+}
+
+std::optional<MotionCommand> ProgramLowering::switchCommand(const ProgramBlock& block)
+{
     switch (block.kind) {
     case BlockKind::SpindleOn:
     case BlockKind::SpindleReverse:
-        out->push_back(SpindleOn{block.line, block.rpm, block.kind == BlockKind::SpindleReverse});
-        break;
+        return SpindleOn{block.line, block.rpm, block.kind == BlockKind::SpindleReverse};
     case BlockKind::SpindleOff:
-        out->push_back(SpindleOff{block.line});
-        break;
+        return SpindleOff{block.line};
     case BlockKind::CoolantMist:
-        out->push_back(Coolant{block.line, Coolant::Kind::Mist});
-        break;
+        return Coolant{block.line, Coolant::Kind::Mist};
     case BlockKind::CoolantFlood:
-        out->push_back(Coolant{block.line, Coolant::Kind::Flood});
-        break;
+        return Coolant{block.line, Coolant::Kind::Flood};
     case BlockKind::CoolantOff:
-        out->push_back(Coolant{block.line, Coolant::Kind::Off});
-        break;
+        return Coolant{block.line, Coolant::Kind::Off};
     case BlockKind::OutputOn:
     case BlockKind::OutputOff:
-        out->push_back(Output{block.line, block.number, block.kind == BlockKind::OutputOn});
-        break;
+        return Output{block.line, block.number, block.kind == BlockKind::OutputOn};
     case BlockKind::WaitInput:
-        out->push_back(WaitInput{block.line, block.number, block.inputHigh, block.seconds});
-        break;
-    default: // Modal, SpindleSpeed (told above), G10, G92...: nothing beyond the frame
-        break;
+        return WaitInput{block.line, block.number, block.inputHigh, block.seconds};
+    default:
+        return std::nullopt;
     }
+}
+
+std::optional<MotionCommand> ProgramLowering::speedChange(const ProgramBlock& block)
+{
+    if (!block.spindleChange || isSpindleSwitch(block.kind))
+        return std::nullopt;
+    return SpindleSpeed{block.line, block.rpm};
 }
 
 // The feed mode and rate: LinuxCNC sets them first on a line (its order of execution, 2 and 3).

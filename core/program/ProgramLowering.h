@@ -32,6 +32,12 @@ public:
     // out (its frame commands and message are told).
     std::optional<Error> lower(const ProgramBlock& block, const ProgramCoordinates& coordinates,
                                const AxisPositions& at, std::vector<motion::MotionCommand>* out);
+    // The switch a block makes (M3/M4 S, M5, M7/M8/M9, M64/M65 P, M66's wait), the same the
+    // lowering emits; nullopt for any other block. The check and the run hand it to the
+    // machine's SwitchExecutor, so that they judge one command.
+    static std::optional<motion::MotionCommand> switchCommand(const ProgramBlock& block);
+    // An S on a line of another action ("G1 X5 S500"): the new speed of a running spindle.
+    static std::optional<motion::MotionCommand> speedChange(const ProgramBlock& block);
 
 private:
     struct Frame

@@ -11,6 +11,7 @@ namespace stepdeck::program {
 
 ProgramPlan::ProgramPlan(const MachineFacts& facts, PlannedProgram* out, CheckErrors* errors)
     : m_facts(facts), m_out(*out), m_errors(errors), m_contours(facts),
+      m_switches(facts.description, facts.capabilities, facts.schemas),
       m_known(facts.knownParameters)
 {
     // m_facts outlives the plan unchanged: pointers into its maps stay valid.
@@ -65,10 +66,8 @@ void ProgramPlan::plan(const ProgramBlock& block, bool reporting)
         planHome(block, &out);
         checkSetup(block, out);
         break;
-    case BlockKind::OutputOn:
-    case BlockKind::OutputOff:
     case BlockKind::WaitInput:
-        checkIo(block);
+        checkInput(block);
         break;
     default:
         break;
@@ -317,77 +316,49 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
     }
 }
 
-// M3, M4, M5 and M7, M8, M9 (a block of their own, or beside a motion): a controller with a
-// spindle (its S within range) or coolant. false: `block` is none of them.
+// M3, M4, M5, M7, M8, M9, M64 and M65 (a block of their own, or beside a motion): the command
+// the lowering makes of the block, as the machine's SwitchExecutor accepts it -- the run asks
+// the same executor the same question. false: `block` is none of them.
 bool ProgramPlan::planSwitch(const ProgramBlock& block)
 {
-    switch (block.kind) {
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-        if (checkAnyController(block, &Capabilities::spindle))
-            checkSpindleSpeed(block);
-        return true;
-    case BlockKind::SpindleOff:
-        checkAnyController(block, &Capabilities::spindle);
-        return true;
-    case BlockKind::CoolantMist:
-    case BlockKind::CoolantFlood:
-    case BlockKind::CoolantOff:
-        checkAnyController(block, &Capabilities::coolant);
-        return true;
-    default:
+    const std::optional<motion::MotionCommand> command = ProgramLowering::switchCommand(block);
+    if (!command || std::holds_alternative<motion::WaitInput>(*command))
         return false;
-    }
+    if (acceptSwitch(block, *command))
+        if (const auto* on = std::get_if<motion::SpindleOn>(&*command))
+            noteSpindle(block, on->rpm, on->reverse);
+    return true;
 }
 
 // S on a line (LinuxCNC: any line; LightBurn's "G1 X5 S500", pcb2gcode's "G00 S10000"): the
-// speed a running spindle changes to, within the same rules as M3's S. M3 and M4 check their
-// own S.
+// speed a running spindle changes to (ProgramLowering::speedChange), within the same rules as
+// M3's S. M3 and M4 check their own S; M5 sends none.
 void ProgramPlan::checkSpindleChange(const ProgramBlock& block)
 {
-    const auto startsSpindle = [](std::optional<BlockKind> kind) {
-        return kind == BlockKind::SpindleOn || kind == BlockKind::SpindleReverse;
-    };
-    if (!block.spindleChange || startsSpindle(block.kind))
-        return;
-    if (block.kind != BlockKind::SpindleOff &&
-        !checkAnyController(block, &Capabilities::spindle, QStringLiteral("S")))
-        return;
-    checkSpindleSpeed(block);
+    if (const std::optional<motion::MotionCommand> speed = ProgramLowering::speedChange(block))
+        if (acceptSwitch(block, *speed))
+            noteSpindle(block, block.rpm, false);
 }
 
-bool ProgramPlan::checkAnyController(const ProgramBlock& block, bool Capabilities::*has,
-                                     const QString& word)
+bool ProgramPlan::acceptSwitch(const ProgramBlock& block, const motion::MotionCommand& command)
 {
-    for (const machine::MachineController& c : m_facts.description.controllers)
-        if (m_facts.capabilities.value(c.id).*has)
-            return true;
-    const QString name = word.isEmpty() ? blockWord(block.kind) : word;
-    error(block, block.columnOf(word), [&] {
-        return has == &Capabilities::spindle
-                   ? ProgramCheck::tr("%1: no controller of this machine has a spindle").arg(name)
-                   : ProgramCheck::tr("%1: no controller of this machine has coolant").arg(name);
-    });
+    const std::optional<motion::SwitchExecutor::Refusal> refusal = m_switches.accepts(command);
+    if (!refusal)
+        return true;
+    error(block, block.columnOf(refusal->word), [&] { return refusal->text; });
     return false;
 }
 
-void ProgramPlan::checkIo(const ProgramBlock& block)
+// M66 P: an input the machine has.
+void ProgramPlan::checkInput(const ProgramBlock& block)
 {
-    const bool output = block.kind != BlockKind::WaitInput;
-    if (output ? machineOutput(m_facts, block.number) : machineInput(m_facts, block.number))
+    if (m_switches.input(block.number))
         return;
     int count = 0;
-    for (const machine::MachineController& c : m_facts.description.controllers) {
-        const Capabilities caps = m_facts.capabilities.value(c.id);
-        count += output ? caps.digitalOutputs : caps.digitalInputs;
-    }
+    for (const machine::MachineController& c : m_facts.description.controllers)
+        count += m_facts.capabilities.value(c.id).digitalInputs;
     error(block, block.columnOf(QStringLiteral("P")), [&] {
         const QString word = QStringLiteral("%1 P%2").arg(blockWord(block.kind)).arg(block.number);
-        if (output)
-            return count == 0 ? ProgramCheck::tr("%1: the machine has no digital outputs").arg(word)
-                              : ProgramCheck::tr("%1: the machine's outputs are 1..%2")
-                                    .arg(word)
-                                    .arg(count);
         return count == 0
                    ? ProgramCheck::tr("%1: the machine has no digital inputs").arg(word)
                    : ProgramCheck::tr("%1: the machine's inputs are 1..%2").arg(word).arg(count);

@@ -124,40 +124,21 @@ void ProgramPlan::checkSetup(const ProgramBlock& block, const PlannedBlock& plan
     }
 }
 
-// M3 S (and M4 S) within the machine's spindle scale and the range the spindle's controller
-// takes (the run asks the same rules); M4 only where that controller can reverse.
-void ProgramPlan::checkSpindleSpeed(const ProgramBlock& block)
+// An accepted M3 S, M4 S or S (motion::SwitchExecutor::accepts named what it refuses): what
+// runs otherwise than written is noted.
+void ProgramPlan::noteSpindle(const ProgramBlock& block, double rpm, bool reverse)
 {
-    const QString controller = machineSwitchController(m_facts, &Capabilities::spindle);
-    if (controller.isEmpty())
-        return; // checkAnyController named it
-    const Capabilities caps = m_facts.capabilities.value(controller);
-    if (block.kind == BlockKind::SpindleReverse) {
-        if (const QString why =
-                ProgramRules::spindleReverse(caps, controller, m_facts.description.spindle);
-            !why.isEmpty()) {
-            error(block, block.columnOf({}),
-                  [&] { return QStringLiteral("%1: %2").arg(blockWord(block.kind), why); });
-            return;
-        }
-        if (!caps.spindleReverse) // a laser's (issue 50 item 5)
-            note(block, block.columnOf({}), CheckErrors::kLaserNote, 0, [] {
-                return ProgramCheck::tr("M4 runs as M3 on this laser: the beam's power is S, "
-                                        "constant (GRBL's M4 lowers the power where the feed "
-                                        "slows; StepDeck's controllers have no such power)");
-            });
-    }
-    const std::optional<double> maxRpm = m_facts.description.spindle.maxRpm;
-    const QString why = ProgramRules::spindleSpeed(caps, m_facts.schemas.value(controller), maxRpm,
-                                                   block.rpm, m_facts.description.limits);
-    if (!why.isEmpty()) {
-        error(block, block.columnOf(QStringLiteral("S")),
-              [&] { return ProgramCheck::tr("controller \"%1\": %2").arg(controller, why); });
-        return;
-    }
+    const QString controller = m_switches.switchController(&Capabilities::spindle);
+    if (reverse && !m_facts.capabilities.value(controller).spindleReverse) // a laser's (issue 50)
+        note(block, block.columnOf({}), CheckErrors::kLaserNote, 0, [] {
+            return ProgramCheck::tr("M4 runs as M3 on this laser: the beam's power is S, "
+                                    "constant (GRBL's M4 lowers the power where the feed "
+                                    "slows; StepDeck's controllers have no such power)");
+        });
     // Above maxRpm the spindle runs at maxRpm, as GRBL clamps S at $30 (issue 50); a laser's S
     // is its power.
-    if (const double runs = FeedLimit::spindleRpm(block.rpm, maxRpm); runs < block.rpm)
+    const std::optional<double> maxRpm = m_facts.description.spindle.maxRpm;
+    if (const double runs = motion::SwitchExecutor::spindleRpm(rpm, maxRpm); runs < rpm)
         note(block, block.columnOf(QStringLiteral("S")), CheckErrors::kSpindleNote, block.rpm, [&] {
             const QString text =
                 m_facts.description.spindle.laser

@@ -47,47 +47,6 @@ QString ProgramRules::parameterWrite(const ParameterSchema& schema, const Capabi
     return schema.validate(set, caps.axes);
 }
 
-namespace {
-const ParameterSpec* spindleSpec(const Capabilities& caps, const ParameterSchema& schema)
-{
-    return caps.spindleSpeedParameter ? schema.find(QString::fromLatin1(caps.spindleSpeedParameter))
-                                      : nullptr;
-}
-} // namespace
-
-int ProgramRules::spindleValue(const Capabilities& caps, const ParameterSchema& schema,
-                               std::optional<double> maxRpm, double s)
-{
-    const ParameterSpec* spec = spindleSpec(caps, schema);
-    // The program's S is 0..1 000 000 (ProgramLineChecks), so every value here fits an int.
-    if (!maxRpm || *maxRpm <= 0 || !spec || spec->maximum <= 0 || s <= 0)
-        return qRound(s);
-    const double scaled = FeedLimit::spindleRpm(s, maxRpm) / *maxRpm * double(spec->maximum);
-    return std::max(1, qRound(scaled));
-}
-
-QString ProgramRules::spindleSpeed(const Capabilities& caps, const ParameterSchema& schema,
-                                   std::optional<double> maxRpm, double s,
-                                   machine::LimitPolicy limits)
-{
-    if (maxRpm && s > *maxRpm && limits == machine::LimitPolicy::Refuse)
-        return tr("S%1 is above the spindle's maxRpm %2 (the machine file's spindle scale)")
-            .arg(s)
-            .arg(*maxRpm);
-    const ParameterSpec* spec = spindleSpec(caps, schema);
-    if (!spec)
-        return {};
-    return schema.validateScalar(*spec, spindleValue(caps, schema, maxRpm, s));
-}
-
-QString ProgramRules::spindleReverse(const Capabilities& caps, const QString& controller,
-                                     const machine::MachineSpindle& spindle)
-{
-    if (caps.spindleReverse || spindle.laser)
-        return {};
-    return tr("controller \"%1\" cannot reverse its spindle: use M3").arg(controller);
-}
-
 QString ProgramRules::setupIncomplete(const ParameterSchema& schema,
                                       const QStringList& setupBeforeMotion, bool incomplete)
 {

@@ -38,28 +38,6 @@ public:
                                   const ParameterRules& modelRules, const ParameterSet& set,
                                   const ParameterSet& known);
 
-    // M3 S as the value the spindle's controller is sent (docs/programs.md "Spindle speed",
-    // issue 29). With the machine's spindle scale (MachineSpindle::maxRpm) S in rpm maps
-    // linearly onto 0..the maximum of the controller's spindle-speed parameter
-    // (Capabilities::spindleSpeedParameter), S / maxRpm x full scale as GRBL's $30 does; an S
-    // above 0 maps to at least 1, since 0 switches the spindle off. Without a scale (or without
-    // such a parameter) S is sent as written, as a whole number.
-    static int spindleValue(const Capabilities& caps, const ParameterSchema& schema,
-                            std::optional<double> maxRpm, double s);
-    // Why M3 S would be refused: S above maxRpm where the machine refuses it (limits: Refuse;
-    // with Clamp it runs at maxRpm, FeedLimit::spindleRpm, and the check notes it: issue 50),
-    // or spindleValue outside the schema range of the spindle-speed parameter. Empty: the
-    // controller takes it. A program passes the machine's MachineDescription::limits; the
-    // default refuses, as the window's spindle switch does with an S typed above maxRpm.
-    static QString spindleSpeed(const Capabilities& caps, const ParameterSchema& schema,
-                                std::optional<double> maxRpm, double s,
-                                machine::LimitPolicy limits = machine::LimitPolicy::Refuse);
-    // M4: why `controller` cannot turn its spindle in reverse (Capabilities::spindleReverse).
-    // Empty: it can, or the spindle output drives a laser (MachineSpindle::laser), where M4 is
-    // GRBL's dynamic power and runs as M3 (issue 50 item 5).
-    static QString spindleReverse(const Capabilities& caps, const QString& controller,
-                                  const machine::MachineSpindle& spindle);
-
     // A move on a controller that reports its setup incomplete (MachineStatus::setupIncomplete,
     // E-LAB tmInvSetup) is refused by the device: the parameters to write first
     // (ModelInfo::setupBeforeMotion, by their labels). Empty when the setup is complete.

@@ -6,6 +6,7 @@
 #include "ProgramCheck.h"
 #include "machine/Machine.h" // QPointer needs the whole class
 #include "model/CommandResult.h"
+#include "motion/MotionCommand.h"
 #include <QObject>
 #include <QPointer>
 #include <QSet>
@@ -267,8 +268,7 @@ private:
     void startWaitInput(const ProgramBlock& block);
     void checkInput();
     void startSwitch(const ProgramBlock& block, std::function<void()> then);
-    QString spindleRefusal(const ProgramBlock& block, const QString& controller,
-                           const ControllerSession& s, const MachineFacts& facts) const;
+    void startSwitchCommand(const motion::MotionCommand& command, std::function<void()> then);
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
     void onMotionFinished(quint64 id, bool ok, const QString& message);

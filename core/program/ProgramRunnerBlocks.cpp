@@ -1,6 +1,7 @@
 // ProgramRunner: what each block sends and what it waits for before the next one starts.
 #include "CoordinatedFeed.h"
 #include "InverseTime.h"
+#include "ProgramLowering.h"
 #include "ProgramRates.h"
 #include "ProgramRules.h"
 #include "ProgramRunner.h"
@@ -8,6 +9,7 @@
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "model/ModelOperations.h"
+#include "motion/executors/SwitchExecutor.h"
 
 namespace stepdeck::program {
 
@@ -18,12 +20,12 @@ void ProgramRunner::startBlock(const ProgramBlock& block)
     // S with the first of them. S on a block of another action ("G1 X5 S500"): while the program
     // has the spindle on, its new speed goes out first. With the spindle off, S is only the
     // speed the next M3 starts at.
-    if (block.spindleChange && m_spindleOn && !isSpindleSwitch(block.kind)) {
-        ProgramBlock speed = block;
-        speed.kind = BlockKind::SpindleOn;
-        startSwitch(speed, [this] { startAction(m_block); });
-        return;
-    }
+    if (m_spindleOn)
+        if (const std::optional<motion::MotionCommand> speed =
+                ProgramLowering::speedChange(block)) {
+            startSwitchCommand(*speed, [this] { startAction(m_block); });
+            return;
+        }
     startAction(m_block);
 }
 
@@ -148,90 +150,51 @@ QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) cons
     return targets;
 }
 
-// Why the spindle's controller (session s) would refuse M3 S / M4 S: the check's rules.
-QString ProgramRunner::spindleRefusal(const ProgramBlock& block, const QString& controller,
-                                      const ControllerSession& s, const MachineFacts& facts) const
-{
-    if (block.kind == BlockKind::SpindleOff)
-        return {};
-    if (block.kind == BlockKind::SpindleReverse) {
-        if (const QString why = ProgramRules::spindleReverse(s.capabilities(), controller,
-                                                             facts.description.spindle);
-            !why.isEmpty())
-            return why;
-    }
-    return ProgramRules::spindleSpeed(s.capabilities(), s.schema(),
-                                      facts.description.spindle.maxRpm, block.rpm,
-                                      facts.description.limits);
-}
-
-// Spindle, coolant and outputs: one request, done when the controller acknowledged it.
+// Spindle, coolant and outputs: the command the lowering makes of the block.
 void ProgramRunner::startSwitch(const ProgramBlock& block, std::function<void()> then)
 {
-    const MachineFacts facts = factsOf(*m_machine);
-    const auto first = [&](bool Capabilities::*has) -> ControllerSession* {
-        const QString id = machineSwitchController(facts, has);
-        return id.isEmpty() ? nullptr : m_machine->session(id);
-    };
-    ControllerSession* s = nullptr;
-    RequestId id = 0;
-    switch (block.kind) {
-    case BlockKind::SpindleOn:
-    case BlockKind::SpindleReverse:
-    case BlockKind::SpindleOff:
-        if ((s = first(&Capabilities::spindle))) {
-            // The check's rules, asked again: refused here, nothing is sent.
-            const QString why = spindleRefusal(
-                block, machineSwitchController(facts, &Capabilities::spindle), *s, facts);
-            if (!why.isEmpty()) {
-                fail(block.kind == BlockKind::SpindleReverse ? ErrorKind::Unsupported
-                                                             : ErrorKind::InvalidValue,
-                     why);
-                return;
-            }
-            m_spindleOn = block.kind != BlockKind::SpindleOff;
-            id = s->setSpindle(block.kind == BlockKind::SpindleOff
-                                   ? 0
-                                   : ProgramRules::spindleValue(s->capabilities(), s->schema(),
-                                                                facts.description.spindle.maxRpm,
-                                                                block.rpm));
-        }
-        break;
-    case BlockKind::CoolantMist:
-    case BlockKind::CoolantFlood:
-    case BlockKind::CoolantOff:
-        if ((s = first(&Capabilities::coolant)))
-            id = s->setCoolant(block.kind != BlockKind::CoolantOff);
-        break;
-    case BlockKind::OutputOn:
-    case BlockKind::OutputOff:
-        if (const std::optional<MachineIo> io = machineOutput(facts, block.number)) {
-            s = m_machine->session(io->controller);
-            id = s->modelOperation(operation::kSetOutput,
-                                   {{operation::arg::kOutput, io->number},
-                                    {operation::arg::kOn, block.kind == BlockKind::OutputOn}});
-        }
-        break;
-    default:
-        break;
-    }
-    if (id == 0) {
+    const std::optional<motion::MotionCommand> command = ProgramLowering::switchCommand(block);
+    if (!command) {
         fail(ErrorKind::Unsupported,
              tr("%1: the machine has nothing to switch").arg(blockWord(block.kind)));
         return;
     }
-    QMap<RequestId, QString> one;
-    for (const machine::MachineController& c : facts.description.controllers)
-        if (m_machine->session(c.id) == s)
-            one.insert(id, c.id);
-    awaitRequests(one, std::move(then));
+    startSwitchCommand(*command, std::move(then));
+}
+
+// Refused by the machine's SwitchExecutor as the check was told (asked again of the machine as
+// it is now: nothing is sent), else one request, done when the controller acknowledged it.
+void ProgramRunner::startSwitchCommand(const motion::MotionCommand& command,
+                                       std::function<void()> then)
+{
+    const MachineFacts facts = factsOf(*m_machine);
+    const motion::SwitchExecutor switches(facts.description, facts.capabilities, facts.schemas);
+    if (const std::optional<motion::SwitchExecutor::Refusal> refusal = switches.accepts(command)) {
+        fail(refusal->kind, refusal->text);
+        return;
+    }
+    QString controller;
+    const RequestId id = switches.push(command, *m_machine, &controller);
+    if (id == 0) {
+        fail(ErrorKind::Unsupported, tr("%1: the machine has nothing to switch")
+                                         .arg(motion::SwitchExecutor::wordOf(command)));
+        return;
+    }
+    if (std::holds_alternative<motion::SpindleOn>(command))
+        m_spindleOn = true;
+    else if (std::holds_alternative<motion::SpindleOff>(command))
+        m_spindleOn = false;
+    awaitRequests({{id, controller}}, std::move(then));
 }
 
 // M66: the level counts only from a status read asked for after the block started, so a
 // level read before it (a part sensor of the previous cycle) does not end the wait.
 void ProgramRunner::startWaitInput(const ProgramBlock& block)
 {
-    const std::optional<MachineIo> io = machineInput(factsOf(*m_machine), block.number);
+    const MachineFacts facts = factsOf(*m_machine);
+    const std::optional<motion::SwitchExecutor::Io> io =
+        motion::SwitchExecutor(facts.description, facts.capabilities, facts.schemas)
+            .input(block.number);
     if (!io) {
         fail(ErrorKind::Unsupported, tr("the machine has no input %1").arg(block.number));
         return;

@@ -10,6 +10,7 @@
 #include "ProgramCheck.h"
 #include "ProgramLowering.h"
 #include "ProgramReader.h"
+#include "motion/executors/SwitchExecutor.h"
 #include <QVarLengthArray>
 #include <algorithm>
 #include <functional>
@@ -143,13 +144,12 @@ private:
     QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,
                              ParameterSet* set) const;
     void checkSetup(const ProgramBlock& block, const PlannedBlock& planned);
-    // false (and an error naming `word`, else the block's word) when no controller has it.
-    bool checkAnyController(const ProgramBlock& block, bool Capabilities::*has,
-                            const QString& word = {});
     void checkSpindleChange(const ProgramBlock& block);
     bool planSwitch(const ProgramBlock& block);
-    void checkSpindleSpeed(const ProgramBlock& block);
-    void checkIo(const ProgramBlock& block);
+    // false (and the executor's refusal at its word) when the machine would refuse `command`.
+    bool acceptSwitch(const ProgramBlock& block, const motion::MotionCommand& command);
+    void noteSpindle(const ProgramBlock& block, double rpm, bool reverse);
+    void checkInput(const ProgramBlock& block);
     void checkTools(const ProgramBlock& block);
     template <typename Message>
     void error(const ProgramBlock& block, int column, const Message& message)
@@ -169,6 +169,7 @@ private:
     PlannedProgram& m_out;
     CheckErrors* m_errors;
     ContourMoves m_contours;
+    motion::SwitchExecutor m_switches; // spindle, coolant, outputs: the run's executor too
     // Per machine axis (m_facts.description.axes): its controller's capabilities and feed
     // rate parameter, looked up once, not per block (issue 29: the check reads 10^6 lines/s).
     struct AxisFacts

@@ -3,6 +3,7 @@
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "machine/MachineContext.h"
+#include "motion/executors/SwitchExecutor.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramRules.h"
 #include <QGridLayout>
@@ -14,7 +15,7 @@ namespace stepdeck::ui {
 
 namespace {
 // The connected controller that switches the machine's spindle (has = &Capabilities::spindle)
-// or coolant, as a program's M3/M8 reach it (program::machineSwitchController); null: none.
+// or coolant, as a program's M3/M8 reach it (motion::SwitchExecutor::switchController); null: none.
 ControllerSession* switchSession(const machine::Machine* m, bool Capabilities::*has)
 {
     if (!m)
@@ -171,14 +172,14 @@ void SpindleCoolantBar::switchSpindle()
     }
     // As M3 S would be sent: scaled by the machine file's maxRpm, refused as the check would.
     const std::optional<double> maxRpm = m->description().spindle.maxRpm;
-    const QString why =
-        program::ProgramRules::spindleSpeed(s->capabilities(), s->schema(), maxRpm, m_rpm->value());
+    const QString why = motion::SwitchExecutor::spindleSpeed(s->capabilities(), s->schema(), maxRpm,
+                                                             m_rpm->value());
     if (!why.isEmpty()) {
         m_spindle->setToolTip(why);
         return;
     }
-    s->setSpindle(program::ProgramRules::spindleValue(s->capabilities(), s->schema(), maxRpm,
-                                                      m_rpm->value()));
+    s->setSpindle(motion::SwitchExecutor::spindleValue(s->capabilities(), s->schema(), maxRpm,
+                                                       m_rpm->value()));
 }
 
 void SpindleCoolantBar::switchCoolant()

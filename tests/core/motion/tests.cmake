@@ -3,3 +3,7 @@
 stepdeck_add_test(tst_canonicalmove SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_canonicalmove.cpp LABELS unit)
 stepdeck_add_test(tst_contoursteps SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contoursteps.cpp LABELS unit)
 stepdeck_add_test(tst_contourfeed SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contourfeed.cpp LABELS unit)
+# The switch executor (issue 49): spindle, coolant and outputs as the machine takes them, and
+# the check naming every refusal of the run.
+stepdeck_add_test(tst_switchexecutor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_switchexecutor.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/core/program/ProgramCheckTestSupport.h LABELS unit)

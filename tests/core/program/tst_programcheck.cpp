@@ -7,6 +7,7 @@
 #include "ProgramCheckTestSupport.h"
 #include "TestMain.h"
 #include "machine/Machine.h"
+#include "motion/executors/SwitchExecutor.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include "protocols/Registry.h"
@@ -390,7 +391,9 @@ void TestProgramCheck::machineIo_numberedOverTheControllers()
     QFETCH(QString, controller);
     QFETCH(int, number);
     const MachineFacts facts = machineFacts("io");
-    const std::optional<MachineIo> io = output ? machineOutput(facts, n) : machineInput(facts, n);
+    const motion::SwitchExecutor switches(facts.description, facts.capabilities, facts.schemas);
+    const std::optional<motion::SwitchExecutor::Io> io =
+        output ? switches.output(n) : switches.input(n);
     QCOMPARE(io.has_value(), !controller.isEmpty());
     if (io) {
         QCOMPARE(io->controller, controller);

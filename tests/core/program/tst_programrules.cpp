@@ -1,6 +1,7 @@
 // The rules both the check and the run go by (issue 28, ProgramRules): the feed-rate write a
-// G1 makes, the model's parameter rules judged against what the device holds, the spindle
-// range and an incomplete setup, and the check refusing with them what the run would refuse;
+// G1 makes, the model's parameter rules judged against what the device holds and an incomplete
+// setup, and the check refusing with them what the run would refuse (the spindle's range:
+// tst_switchexecutor);
 // the limits both take a feed or S above the machine's highest by (issue 50, FeedLimit).
 #include "TestMain.h"
 #include "program/FeedLimit.h"
@@ -92,18 +93,11 @@ private Q_SLOTS:
     void feedRateWrite_perAxisModel_onlyTheBlocksAxes();
     void parameterWrite_elabRules_sameAsTheAdapter_data();
     void parameterWrite_elabRules_sameAsTheAdapter();
-    void spindleSpeed_outsideTheSchemaRange_refused_data();
-    void spindleSpeed_outsideTheSchemaRange_refused();
-    void spindleValue_maxRpm_mappedOntoTheFullScale_data();
-    void spindleValue_maxRpm_mappedOntoTheFullScale();
-    void spindleReverse_noModelCanReverse_refusedNamingTheController();
     void check_elab_refusesWhatTheRunWould_data();
     void check_elab_refusesWhatTheRunWould();
     void feedLimit_axisAtF_runsAtTheHighest_data();
     void feedLimit_axisAtF_runsAtTheHighest();
     void feedLimit_coordinatedShares_slowedByOneFactor();
-    void feedLimit_spindleAboveMaxRpm_runsAtMaxRpm_data();
-    void feedLimit_spindleAboveMaxRpm_runsAtMaxRpm();
     void check_elab_feedAboveTheHighest_runsAtItWithNote_data();
     void check_elab_feedAboveTheHighest_runsAtItWithNote();
 };
@@ -201,96 +195,6 @@ void TestProgramRules::parameterWrite_elabRules_sameAsTheAdapter()
     QCOMPARE(ProgramRules::parameterWrite(info->schema, info->capabilities, info->parameterRules,
                                           {{"feed-speed", feed}}, known(held)),
              refusal);
-}
-
-void TestProgramRules::spindleSpeed_outsideTheSchemaRange_refused_data()
-{
-    QTest::addColumn<double>("maxRpm"); // 0: the machine has no spindle scale
-    QTest::addColumn<double>("rpm");
-    QTest::addColumn<QString>("refusal");
-    QTest::newRow("0") << 0.0 << 0.0 << "";
-    QTest::newRow("1000") << 0.0 << 1000.0 << "";
-    QTest::newRow("1000.4 rounds to 1000") << 0.0 << 1000.4 << "";
-    QTest::newRow("1001") << 0.0 << 1001.0
-                          << "Spindle speed: value '1001' is out of range (allowed: 0..1000 rpm)";
-    QTest::newRow("12000") << 0.0 << 12000.0
-                           << "Spindle speed: value '12000' is out of range (allowed: 0..1000 rpm)";
-    // Issue 29: with maxRpm, S is in rpm up to maxRpm, whatever the controller's own range.
-    QTest::newRow("maxRpm 24000: S12000") << 24000.0 << 12000.0 << "";
-    QTest::newRow("maxRpm 24000: S24000") << 24000.0 << 24000.0 << "";
-    QTest::newRow("maxRpm 24000: S0") << 24000.0 << 0.0 << "";
-    QTest::newRow("maxRpm 24000: S24000.5")
-        << 24000.0 << 24000.5
-        << "S24000.5 is above the spindle's maxRpm 24000 (the machine file's spindle scale)";
-    QTest::newRow("maxRpm 24000: S30000")
-        << 24000.0 << 30000.0
-        << "S30000 is above the spindle's maxRpm 24000 (the machine file's spindle scale)";
-    QTest::newRow("maxRpm 500: S800") << 500.0 << 800.0
-                                      << "S800 is above the spindle's maxRpm 500 (the machine "
-                                         "file's spindle scale)";
-}
-
-void TestProgramRules::spindleSpeed_outsideTheSchemaRange_refused()
-{
-    QFETCH(double, maxRpm);
-    QFETCH(double, rpm);
-    QFETCH(QString, refusal);
-    const ModelInfo* info = findModel(QStringLiteral("elab"));
-    const std::optional<double> scale = maxRpm > 0 ? std::optional<double>(maxRpm) : std::nullopt;
-    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, scale, rpm), refusal);
-}
-
-// S / maxRpm x the E-LAB's full scale 1000 (SetSpindleRPM "einen Wert zwischen 0 und 1000"),
-// as GRBL's $30 maps S onto its PWM range; an S above 0 is never sent as 0 (relay off).
-void TestProgramRules::spindleValue_maxRpm_mappedOntoTheFullScale_data()
-{
-    QTest::addColumn<double>("maxRpm"); // 0: none
-    QTest::addColumn<double>("rpm");
-    QTest::addColumn<int>("sent");
-    QTest::newRow("no scale: S as written") << 0.0 << 800.0 << 800;
-    QTest::newRow("no scale: rounded") << 0.0 << 999.6 << 1000;
-    QTest::newRow("no scale: S12000 sent as is") << 0.0 << 12000.0 << 12000;
-    QTest::newRow("24000: S0 off") << 24000.0 << 0.0 << 0;
-    QTest::newRow("24000: S12000 half scale") << 24000.0 << 12000.0 << 500;
-    QTest::newRow("24000: S24000 full scale") << 24000.0 << 24000.0 << 1000;
-    QTest::newRow("24000: S6000 a quarter") << 24000.0 << 6000.0 << 250;
-    QTest::newRow("24000: S18012 rounded") << 24000.0 << 18012.0 << 751;
-    QTest::newRow("24000: S5 at least 1") << 24000.0 << 5.0 << 1;
-    QTest::newRow("30000: S10000 a third") << 30000.0 << 10000.0 << 333;
-    QTest::newRow("500: S250 scaled up") << 500.0 << 250.0 << 500;
-}
-
-void TestProgramRules::spindleValue_maxRpm_mappedOntoTheFullScale()
-{
-    QFETCH(double, maxRpm);
-    QFETCH(double, rpm);
-    QFETCH(int, sent);
-    const ModelInfo* info = findModel(QStringLiteral("elab"));
-    const std::optional<double> scale = maxRpm > 0 ? std::optional<double>(maxRpm) : std::nullopt;
-    QCOMPARE(ProgramRules::spindleValue(info->capabilities, info->schema, scale, rpm), sent);
-}
-
-// M4: no model's capabilities say its spindle can reverse (the E-LAB switches a relay only); on
-// a laser (issue 50 item 5) M4 runs as M3, so nothing refuses it.
-void TestProgramRules::spindleReverse_noModelCanReverse_refusedNamingTheController()
-{
-    int spindles = 0;
-    for (const ModelInfo& info : models()) {
-        QVERIFY2(!ProgramRules::spindleReverse(info.capabilities, info.id, {}).isEmpty(),
-                 qPrintable(info.id));
-        spindles += info.capabilities.spindle ? 1 : 0;
-    }
-    QVERIFY(spindles > 0);
-    const ModelInfo* elab = findModel(QStringLiteral("elab"));
-    QCOMPARE(ProgramRules::spindleReverse(elab->capabilities, QStringLiteral("table"), {}),
-             QStringLiteral("controller \"table\" cannot reverse its spindle: use M3"));
-    machine::MachineSpindle laser;
-    laser.laser = true;
-    QCOMPARE(ProgramRules::spindleReverse(elab->capabilities, QStringLiteral("table"), laser),
-             QString());
-    Capabilities reversible = elab->capabilities;
-    reversible.spindleReverse = true;
-    QCOMPARE(ProgramRules::spindleReverse(reversible, QStringLiteral("table"), {}), QString());
 }
 
 void TestProgramRules::check_elab_refusesWhatTheRunWould_data()
@@ -439,38 +343,6 @@ void TestProgramRules::feedLimit_coordinatedShares_slowedByOneFactor()
     QCOMPARE(FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).runs,
              qint64(25000));
     QVERIFY(!FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).limited);
-}
-
-// GRBL's $30: S above maxRpm runs at maxRpm; the spindle's controller gets its full scale and
-// takes it, unless the machine file refuses (then the error of issue 29).
-void TestProgramRules::feedLimit_spindleAboveMaxRpm_runsAtMaxRpm_data()
-{
-    QTest::addColumn<double>("maxRpm"); // 0: none
-    QTest::addColumn<double>("rpm");
-    QTest::addColumn<double>("runs");
-    QTest::addColumn<int>("sent");
-    QTest::newRow("below") << 24000.0 << 12000.0 << 12000.0 << 500;
-    QTest::newRow("above: maxRpm, full scale") << 24000.0 << 30000.0 << 24000.0 << 1000;
-    QTest::newRow("no scale: as written") << 0.0 << 800.0 << 800.0 << 800;
-}
-
-void TestProgramRules::feedLimit_spindleAboveMaxRpm_runsAtMaxRpm()
-{
-    QFETCH(double, maxRpm);
-    QFETCH(double, rpm);
-    QFETCH(double, runs);
-    QFETCH(int, sent);
-    const ModelInfo* info = findModel(QStringLiteral("elab"));
-    const std::optional<double> scale = maxRpm > 0 ? std::optional<double>(maxRpm) : std::nullopt;
-    QCOMPARE(FeedLimit::spindleRpm(rpm, scale), runs);
-    QCOMPARE(ProgramRules::spindleValue(info->capabilities, info->schema, scale, rpm), sent);
-    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, scale, rpm,
-                                        LimitPolicy::Clamp),
-             QString());
-    QCOMPARE(ProgramRules::spindleSpeed(info->capabilities, info->schema, scale, rpm,
-                                        LimitPolicy::Refuse)
-                 .isEmpty(),
-             runs == rpm);
 }
 
 // The rows of check_elab_refusesWhatTheRunWould that were too fast, by default (issue 50): no
