@@ -200,12 +200,12 @@ void Machine::requestAbort()
 
 bool Machine::claimMotion(const QObject* owner, const QString& what, QString* why)
 {
-    if (m_owner.isFree() && isReferencing()) { // the operator's reference run moves the axes
+    const bool wasFree = m_owner.isFree();
+    if (wasFree && isReferencing()) { // the operator's reference run moves the axes
         if (why)
             *why = tr("a reference run is under way");
         return false;
     }
-    const bool wasFree = m_owner.isFree();
     if (!m_owner.claim(owner, what, why))
         return false;
     if (wasFree)

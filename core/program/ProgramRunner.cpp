@@ -449,7 +449,8 @@ void ProgramRunner::setState(RunState state)
     // Held between blocks, the run lends the machine to the operator's hands (jogging Z to
     // touch off at M6, issue 47 item 2); held in a path (a feed hold, an arc's chord, a
     // cycle's segment) or running, not: the rest goes on from where the path stopped.
-    m_machine->lendMotion(this, state == RunState::Paused && !m_feedHeld && !m_heldInPath);
+    if (m_machine) // end() may come after the window closed the machine
+        m_machine->lendMotion(this, state == RunState::Paused && !m_feedHeld && !m_heldInPath);
     Q_EMIT stateChanged(state);
 }
 
