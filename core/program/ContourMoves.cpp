@@ -5,63 +5,18 @@
 namespace stepdeck::program {
 
 ContourMoves::ContourMoves(const MachineFacts& facts)
-    : m_facts(facts), m_streamOfAxis(size_t(facts.description.axes.size()), -1),
+    : m_facts(facts),
+      m_streams(motion::StreamExecutor::streamsOf(facts.description, facts.capabilities,
+                                                  facts.schemas, facts.knownParameters)),
+      m_streamOfAxis(size_t(facts.description.axes.size()), -1),
       m_slotOfAxis(size_t(facts.description.axes.size()), -1)
 {
-    for (const machine::MachineController& c : facts.description.controllers) {
-        const auto caps = facts.capabilities.constFind(c.id);
-        if (caps == facts.capabilities.cend() || !caps->contourStream)
-            continue;
-        Stream s;
-        s.controller = c.id;
-        s.axisOfSlot.fill(-1);
-        s.slotAxes = caps->axes;
-        s.scale.axisCount = int(caps->axes.size());
-        if (s.scale.axisCount > motion::kMaxAxes)
-            continue;
-        for (int i = 0; i < s.scale.axisCount; ++i)
-            s.scale.stepsPerUnit[size_t(i)] = 1; // a slot no machine axis uses never steps
-        for (int i = 0; i < facts.description.axes.size(); ++i) {
-            const machine::MachineAxis& axis = facts.description.axes.at(i);
-            const int slot = int(s.slotAxes.indexOf(axis.axis));
-            if (axis.controller != c.id || slot < 0)
-                continue;
-            s.axisOfSlot[size_t(slot)] = i;
-            s.scale.stepsPerUnit[size_t(slot)] =
-                axis.invert ? -axis.stepsPerUnit : axis.stepsPerUnit;
-            m_streamOfAxis[size_t(i)] = int(m_streams.size());
-            m_slotOfAxis[size_t(i)] = slot;
-        }
-        s.tickRate = tickRate(*caps, facts.schemas.value(c.id), facts.knownParameters.value(c.id),
-                              &s.tickRefusal);
-        m_streams.push_back(s);
-    }
-}
-
-double ContourMoves::tickRate(const Capabilities& caps, const ParameterSchema& schema,
-                              const ParameterSet& known, QString* why)
-{
-    const QString name = QString::fromLatin1(caps.contourTickBelow);
-    double rate = caps.contourMaxTickRate;
-    if (!name.isEmpty()) {
-        const ParameterValue below = known.value(name);
-        for (Axis a : caps.axes) {
-            const QVariant v = below.perAxis.value(a);
-            if (!v.isValid()) {
-                *why = tr("a contour's steps run at one tick rate below %1 on every axis, and "
-                          "%1 is not known: write the controller's setup first")
-                           .arg(schema.displayLabel(name));
-                return 0;
+    for (size_t s = 0; s < m_streams.size(); ++s)
+        for (int slot = 0; slot < m_streams[s].scale.axisCount; ++slot)
+            if (const int axis = m_streams[s].axisOfSlot[size_t(slot)]; axis >= 0) {
+                m_streamOfAxis[size_t(axis)] = int(s);
+                m_slotOfAxis[size_t(axis)] = slot;
             }
-            rate = std::min(rate, std::floor(v.toDouble()) - 1);
-        }
-    }
-    if (rate < 1) {
-        *why = tr("%1 is too low for a contour's tick (at least 2 steps/s on every axis)")
-                   .arg(schema.displayLabel(name));
-        return 0;
-    }
-    return rate;
 }
 
 int ContourMoves::slotOf(const QString& axisName) const

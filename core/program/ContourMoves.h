@@ -4,8 +4,8 @@
 #include "ProgramUnits.h"
 #include "motion/CanonicalMove.h"
 #include "motion/ContourSteps.h"
+#include "motion/executors/StreamExecutor.h"
 #include <QCoreApplication>
-#include <array>
 #include <vector>
 
 namespace stepdeck::program {
@@ -21,27 +21,10 @@ class ContourMoves
 {
     Q_DECLARE_TR_FUNCTIONS(stepdeck::program::ContourMoves)
 public:
-    // A controller that runs contours as a step stream. Its slots are the controller's axes
-    // (slot = the Axis value, as Controller::feedContour counts them).
-    struct Stream
-    {
-        QString controller;
-        motion::StepScale scale; // a slot's steps per unit, < 0 on an inverted axis
-        std::array<int, motion::kMaxAxes> axisOfSlot; // machine axis index, -1: none
-        // The controller axis of each slot: the controller's axes in their order
-        // (Capabilities::axes), never the axis' value (issue 32).
-        QList<Axis> slotAxes;
-        double tickRate = 0; // ticks/s; 0: none can be chosen (tickRefusal says why)
-        QString tickRefusal;
-    };
+    // A controller that runs contours as a step stream (the stream executor's layout).
+    using Stream = motion::StepStream;
 
     explicit ContourMoves(const MachineFacts& facts);
-
-    // The tick rate a controller's stream runs at: the highest whole rate below
-    // Capabilities::contourTickBelow on every axis and at most contourMaxTickRate, from what
-    // the device is known to hold. 0 with *why when it cannot be chosen.
-    static double tickRate(const Capabilities& caps, const ParameterSchema& schema,
-                           const ParameterSet& known, QString* why);
 
     // The stream `block` runs in, or null (it runs on its own, as before issue 30).
     const Stream* streamOf(const ProgramBlock& block) const;

@@ -51,7 +51,7 @@ Ceiling highestRate(const Capabilities& caps, const ParameterSpec* rateSpec,
     if (!caps.feedRateUsesFeedMode || !caps.contourTickBelow)
         return c;
     // Feed mode has no ramp (E-LAB, SetFeedSpeed: "unterhalb der Startgeschwindigkeit"): the
-    // same bound a contour's tick keeps (ContourMoves::tickRate). Not known: the model's rules
+    // same bound a contour's tick keeps (motion::StreamExecutor::tickRate). Not known: the model's rules
     // refuse the write and say what to set up.
     const QVariant held =
         known.value(QString::fromLatin1(caps.contourTickBelow)).perAxis.value(axis);

@@ -2,7 +2,6 @@
 // abort, faults). Starting a run and run from line's prelude are in ProgramRunnerStart.cpp,
 // what each block sends in ProgramRunnerBlocks.cpp.
 #include "ProgramRunner.h"
-#include "ContourRun.h"
 #include "ProgramLine.h"
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
@@ -10,6 +9,7 @@
 #include "RunFromLine.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
+#include "motion/executors/StreamExecutor.h"
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -124,7 +124,8 @@ void ProgramRunner::pause()
         return;
     m_pauseAsked = true;
     if (m_contour)
-        m_contour->close(); // the blocks appended run, then it holds (ContourRun::kAheadSeconds)
+        m_contour
+            ->close(); // the blocks appended run, then it holds (StreamExecutor::kAheadSeconds)
     Q_EMIT stateChanged(m_state); // pausePending() changed: "pausing after this block"
 }
 
@@ -256,7 +257,7 @@ void ProgramRunner::runNext()
     }
     while (m_state == RunState::Running && !m_aborting) {
         if (m_contour && !m_contour->isClosed() && !m_contour->hasRoom())
-            return; // ContourRun::roomForMoves calls again
+            return; // StreamExecutor::roomForMoves calls again
         if (!std::exchange(m_heldBlock, false) && !advance()) {
             if (!m_reader->error().isEmpty())
                 fail(ErrorKind::InvalidValue, m_reader->error());

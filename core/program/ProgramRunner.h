@@ -18,10 +18,12 @@
 namespace stepdeck {
 class ControllerSession;
 }
+namespace stepdeck::motion {
+class StreamExecutor;
+}
 
 namespace stepdeck::program {
 
-class ContourRun;
 class ProgramRates;
 class ProgramReader;
 
@@ -46,8 +48,8 @@ bool isEnded(RunState state); // Finished, Failed, Aborted
 // standstill through Machine::move / Machine::reference, an acknowledged output, spindle or
 // rate write, a dwell's time, an input's level). Nothing is sent ahead, except that feed
 // moves of a contour (ContourMoves: G1/G2/G3 in G64 on a controller with a step stream) run
-// as one stream (ContourRun), their moves appended while it runs, at most
-// ContourRun::kAheadSeconds of path ahead. It reaches the controllers only through the Machine
+// as one stream (motion::StreamExecutor), their moves appended while it runs, at most
+// StreamExecutor::kAheadSeconds of path ahead. It reaches the controllers only through the Machine
 // and its ControllerSessions. No Widgets.
 //
 // Faults: a refused block, a failed request, a timeout or a lost link stops every controller
@@ -127,7 +129,7 @@ public:
 
     void pause(); // finish the current block, then hold (pausePending() until then)
     // Feed hold (issue 30): a contour running as a step stream stops on its path at once
-    // (ContourRun::hold: within ElabCtlMotionOps::kContourLeadSeconds at the board), Paused
+    // (StreamExecutor::hold: within ElabCtlMotionOps::kContourLeadSeconds at the board), Paused
     // with feedHeld(); resume() goes on along the path from there. Without a contour under way
     // it is pause(): a block of its own finishes first, an arc holds at the end of its running
     // chord (the EMIS and Nanotec executors: neither stops a positioning move on a ramp; the
@@ -360,7 +362,7 @@ private:
     MachineFacts m_runFacts;
     QSet<QString> m_coordinated; // controllers of m_runFacts that coordinate (CoordinatedFeed)
     std::unique_ptr<ContourMoves> m_contourMoves;
-    std::unique_ptr<ContourRun> m_contour; // the contour running, if any
+    std::unique_ptr<motion::StreamExecutor> m_contour; // the contour running, if any
     // m_block was read but waits for the contour to end (runNext takes it, not the next one).
     bool m_heldBlock = false;
     bool m_feedHeld = false; // holdFeed() held a contour on its path

@@ -1,10 +1,11 @@
-// ProgramRunner: feed moves of a contour (ContourMoves) as one step stream (ContourRun). The
+// ProgramRunner: feed moves of a contour (ContourMoves) as one step stream
+// (motion::StreamExecutor). The
 // blocks are appended as the stream makes room; a block of another kind (or a pause, a step,
 // a switch on the line) waits until the stream ended.
-#include "ContourRun.h"
 #include "FeedLimit.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
+#include "motion/executors/StreamExecutor.h"
 
 namespace stepdeck::program {
 
@@ -22,15 +23,15 @@ bool ProgramRunner::joinsContour(const ProgramBlock& block) const
 void ProgramRunner::openContour(const ContourMoves::Stream& stream)
 {
     dropContour();
-    m_contour = std::make_unique<ContourRun>(m_machine, stream);
-    ContourRun* c = m_contour.get();
-    connect(c, &ContourRun::blockStarted, this, &ProgramRunner::blockStarted);
-    connect(c, &ContourRun::blockFinished, this, [this](int line) {
+    m_contour = std::make_unique<motion::StreamExecutor>(m_machine, stream);
+    motion::StreamExecutor* c = m_contour.get();
+    connect(c, &motion::StreamExecutor::blockStarted, this, &ProgramRunner::blockStarted);
+    connect(c, &motion::StreamExecutor::blockFinished, this, [this](int line) {
         ++m_blocksDone;
         Q_EMIT blockFinished(line);
     });
-    connect(c, &ContourRun::roomForMoves, this, &ProgramRunner::runNext);
-    connect(c, &ContourRun::finished, this, &ProgramRunner::onContourFinished);
+    connect(c, &motion::StreamExecutor::roomForMoves, this, &ProgramRunner::runNext);
+    connect(c, &motion::StreamExecutor::finished, this, &ProgramRunner::onContourFinished);
     c->start(m_programmed, m_feedOverride);
 }
 

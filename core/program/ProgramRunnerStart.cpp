@@ -1,7 +1,6 @@
 // ProgramRunner: starting a run (the check it starts on, the facts it was checked with, the
 // coordinates and current point it takes from them) and run from line's prelude before the
 // first block. The walk is in ProgramRunner.cpp, what each block sends in ProgramRunnerBlocks.cpp.
-#include "ContourRun.h"
 #include "ProgramLogging.h"
 #include "ProgramRates.h"
 #include "ProgramReader.h"
@@ -9,6 +8,7 @@
 #include "RunFromLine.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
+#include "motion/executors/StreamExecutor.h"
 #include <algorithm>
 
 namespace stepdeck::program {

@@ -50,7 +50,7 @@ Capabilities capabilities()
     // 2 618 <DC2> pairs; at most 2 100 ticks/s, so that the status polls keep their share of
     // the wire while it streams (issue 47: at least 10 reads a second; the arithmetic is at
     // ElabCtlMotionOps::kContourMaxTickRate). The program check takes the same number
-    // (ContourMoves::tickRate).
+    // (motion::StreamExecutor::tickRate).
     caps.contourStream = true;
     caps.contourTickBelow = "start-speed";
     caps.contourMaxTickRate = ElabCtlMotionOps::kContourMaxTickRate;

@@ -7,3 +7,6 @@ stepdeck_add_test(tst_contourfeed SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_contourf
 # the check naming every refusal of the run.
 stepdeck_add_test(tst_switchexecutor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_switchexecutor.cpp
                   ${CMAKE_SOURCE_DIR}/tests/core/program/ProgramCheckTestSupport.h LABELS unit)
+# The stream executor (issue 49): a machine's step streams and their tick rates.
+stepdeck_add_test(tst_streamexecutor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_streamexecutor.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/core/program/ProgramCheckTestSupport.h LABELS unit)

@@ -33,7 +33,7 @@ inline ParameterSet setupDefaults(const ModelInfo& info)
 }
 
 // The machines' E-LAB tables are set up for contours (issue 30): start speed 2401 steps/s on
-// every axis, so a stream ticks at the wire's 2100/s (ContourMoves::tickRate).
+// every axis, so a stream ticks at the wire's 2100/s (motion::StreamExecutor::tickRate).
 inline void addController(MachineFacts* facts, const QString& id, const QString& model)
 {
     const ModelInfo* info = findModel(model);

@@ -18,8 +18,6 @@ class TestContourMoves : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void tickRate_fromTheStartSpeeds_data();
-    void tickRate_fromTheStartSpeeds();
     void streamOf_whichBlocksJoin_data();
     void streamOf_whichBlocksJoin();
     void lineMove_absoluteAndRelative_machineUnitsInvertedScale();
@@ -60,32 +58,6 @@ ProgramBlock block(const QString& text, const MachineFacts& facts)
 }
 
 } // namespace
-
-void TestContourMoves::tickRate_fromTheStartSpeeds_data()
-{
-    QTest::addColumn<ParameterSet>("known");
-    QTest::addColumn<double>("tick");
-    QTest::addColumn<QString>("why");
-    // Below the lowest start speed (feed mode has no ramp), at most the wire's 2100/s (what the
-    // status polls leave of it, issue 47).
-    QTest::newRow("500 on every axis") << startSpeeds(500, 500, 500) << 499.0 << "";
-    QTest::newRow("the lowest axis counts") << startSpeeds(800, 120, 900) << 119.0 << "";
-    QTest::newRow("the wire bounds it") << startSpeeds(5000, 5000, 5000) << 2100.0 << "";
-    QTest::newRow("not known") << ParameterSet{} << 0.0 << "not known";
-    QTest::newRow("too low") << startSpeeds(1, 500, 500) << 0.0 << "too low";
-}
-
-void TestContourMoves::tickRate_fromTheStartSpeeds()
-{
-    QFETCH(ParameterSet, known);
-    QFETCH(double, tick);
-    QFETCH(QString, why);
-    const ModelInfo* elab = findModel(QStringLiteral("elab"));
-    QVERIFY(elab);
-    QString reason;
-    QCOMPARE(ContourMoves::tickRate(elab->capabilities, elab->schema, known, &reason), tick);
-    QVERIFY2(why.isEmpty() ? reason.isEmpty() : reason.contains(why), qPrintable(reason));
-}
 
 void TestContourMoves::streamOf_whichBlocksJoin_data()
 {

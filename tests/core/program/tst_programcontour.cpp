@@ -1,4 +1,4 @@
-// Programs whose feed moves run as one <DC2> stream on the E-LAB (issue 30, ContourRun) on the
+// Programs whose feed moves run as one <DC2> stream on the E-LAB (issue 30, motion::StreamExecutor) on the
 // runner's rig: the E-LAB table (X, Y 400 steps/mm) and a Nanotec rotary axis, each simulator
 // on a real pseudo-terminal. The path is rebuilt from the step bytes the board executed and
 // compared, tick by tick, with the ideal path worked out here (lines and a circle by their

@@ -1,11 +1,12 @@
-#include "ContourRun.h"
-#include "ProgramLogging.h"
+#include "StreamExecutor.h"
+#include "Logging.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "motion/ContourFeed.h"
 #include <algorithm>
+#include <cmath>
 
-namespace stepdeck::program {
+namespace stepdeck::motion {
 
 namespace {
 constexpr int kWatchMs = 20; // how often the blocks passed are told and room is looked for
@@ -14,24 +15,83 @@ constexpr int kWatchMs = 20; // how often the blocks passed are told and room is
 constexpr qint64 kSettleMs = 5000;
 } // namespace
 
-ContourRun::ContourRun(machine::Machine* machine, const ContourMoves::Stream& stream,
-                       QObject* parent)
+std::vector<StepStream> StreamExecutor::streamsOf(const machine::MachineDescription& description,
+                                                  const QMap<QString, Capabilities>& capabilities,
+                                                  const QMap<QString, ParameterSchema>& schemas,
+                                                  const QMap<QString, ParameterSet>& known)
+{
+    std::vector<StepStream> streams;
+    for (const machine::MachineController& c : description.controllers) {
+        const auto caps = capabilities.constFind(c.id);
+        if (caps == capabilities.cend() || !caps->contourStream)
+            continue;
+        StepStream s;
+        s.controller = c.id;
+        s.axisOfSlot.fill(-1);
+        s.slotAxes = caps->axes;
+        s.scale.axisCount = int(caps->axes.size());
+        if (s.scale.axisCount > kMaxAxes)
+            continue;
+        for (int i = 0; i < s.scale.axisCount; ++i)
+            s.scale.stepsPerUnit[size_t(i)] = 1; // a slot no machine axis uses never steps
+        for (int i = 0; i < description.axes.size(); ++i) {
+            const machine::MachineAxis& axis = description.axes.at(i);
+            const int slot = int(s.slotAxes.indexOf(axis.axis));
+            if (axis.controller != c.id || slot < 0)
+                continue;
+            s.axisOfSlot[size_t(slot)] = i;
+            s.scale.stepsPerUnit[size_t(slot)] =
+                axis.invert ? -axis.stepsPerUnit : axis.stepsPerUnit;
+        }
+        s.tickRate = tickRate(*caps, schemas.value(c.id), known.value(c.id), &s.tickRefusal);
+        streams.push_back(s);
+    }
+    return streams;
+}
+
+double StreamExecutor::tickRate(const Capabilities& caps, const ParameterSchema& schema,
+                                const ParameterSet& known, QString* why)
+{
+    const QString name = QString::fromLatin1(caps.contourTickBelow);
+    double rate = caps.contourMaxTickRate;
+    if (!name.isEmpty()) {
+        const ParameterValue below = known.value(name);
+        for (Axis a : caps.axes) {
+            const QVariant v = below.perAxis.value(a);
+            if (!v.isValid()) {
+                *why = tr("a contour's steps run at one tick rate below %1 on every axis, and "
+                          "%1 is not known: write the controller's setup first")
+                           .arg(schema.displayLabel(name));
+                return 0;
+            }
+            rate = std::min(rate, std::floor(v.toDouble()) - 1);
+        }
+    }
+    if (rate < 1) {
+        *why = tr("%1 is too low for a contour's tick (at least 2 steps/s on every axis)")
+                   .arg(schema.displayLabel(name));
+        return 0;
+    }
+    return rate;
+}
+
+StreamExecutor::StreamExecutor(machine::Machine* machine, const StepStream& stream, QObject* parent)
     : QObject(parent), m_machine(machine), m_stream(stream)
 {
     m_watch.setInterval(kWatchMs);
-    connect(&m_watch, &QTimer::timeout, this, &ContourRun::watch);
+    connect(&m_watch, &QTimer::timeout, this, &StreamExecutor::watch);
 }
 
-ContourRun::~ContourRun()
+StreamExecutor::~StreamExecutor()
 {
     disconnect(m_results);
 }
 
-void ContourRun::start(const AxisPositions& current, double feedFactor)
+void StreamExecutor::start(const std::vector<std::optional<double>>& current, double feedFactor)
 {
     ControllerSession* s = m_machine->session(m_stream.controller);
     const machine::MachineDescription& d = m_machine->description();
-    motion::StepPosition steps{};
+    StepPosition steps{};
     for (int slot = 0; slot < m_stream.scale.axisCount; ++slot) {
         const qint64 count = s->status().axes.value(m_stream.slotAxes.at(slot)).position;
         steps[size_t(slot)] = count;
@@ -44,8 +104,8 @@ void ContourRun::start(const AxisPositions& current, double feedFactor)
     }
     // The stream counts from the device's steps here (ContourSteps rounds every position as
     // a whole, so a point the program reached exactly stays the step it stands on).
-    m_feed = std::make_shared<motion::ContourFeed>(
-        motion::ContourSteps(m_stream.scale, m_end, steps, m_stream.tickRate, kMaxFeedFactor));
+    m_feed = std::make_shared<ContourFeed>(
+        ContourSteps(m_stream.scale, m_end, steps, m_stream.tickRate, kMaxFeedFactor));
     m_feed->setFeedFactor(feedFactor);
     // The machine's soft limits hold at every tick too (the check refused a program beyond
     // them first; the controller adds its own when it takes the contour).
@@ -58,7 +118,7 @@ void ContourRun::start(const AxisPositions& current, double feedFactor)
         const qint64 high = axis.toSteps(*axis.softMaximum);
         m_feed->setStepLimits(slot, axis.name, std::min(low, high), std::max(low, high));
     }
-    m_results = connect(s, &ControllerSession::requestFinished, this, &ContourRun::onResult);
+    m_results = connect(s, &ControllerSession::requestFinished, this, &StreamExecutor::onResult);
 
     const Capabilities caps = s->capabilities();
     const QString name = QString::fromLatin1(caps.feedRateParameter);
@@ -77,15 +137,15 @@ void ContourRun::start(const AxisPositions& current, double feedFactor)
     m_tickWrite = s->writeParameters(ParameterSet{{name, tick}}, false);
 }
 
-void ContourRun::giveContour()
+void StreamExecutor::giveContour()
 {
     m_request = m_machine->session(m_stream.controller)->feedContour(m_feed);
     m_given = true;
-    qCDebug(lcProgram) << "contour on" << m_stream.controller << "at" << m_stream.tickRate
-                       << "ticks/s, request" << m_request;
+    qCDebug(lcMotion) << "contour on" << m_stream.controller << "at" << m_stream.tickRate
+                      << "ticks/s, request" << m_request;
 }
 
-QString ContourRun::append(const motion::CanonicalMove& move, const QString& text)
+QString StreamExecutor::append(const CanonicalMove& move, const QString& text)
 {
     if (m_closed || m_ended)
         return tr("the contour has ended");
@@ -102,12 +162,12 @@ QString ContourRun::append(const motion::CanonicalMove& move, const QString& tex
     return {};
 }
 
-bool ContourRun::hasRoom() const
+bool StreamExecutor::hasRoom() const
 {
     return !m_closed && !m_ended && m_feed->canAppend() && m_feed->queuedSeconds() < kAheadSeconds;
 }
 
-void ContourRun::close()
+void StreamExecutor::close()
 {
     if (m_closed)
         return;
@@ -115,7 +175,7 @@ void ContourRun::close()
     m_feed->close();
 }
 
-void ContourRun::cancel()
+void StreamExecutor::cancel()
 {
     close();
     if (!m_given && !m_ended) {
@@ -124,24 +184,24 @@ void ContourRun::cancel()
     }
 }
 
-void ContourRun::setFeedFactor(double factor)
+void StreamExecutor::setFeedFactor(double factor)
 {
     if (m_feed)
         m_feed->setFeedFactor(factor);
 }
 
-void ContourRun::hold(bool held)
+void StreamExecutor::hold(bool held)
 {
     if (m_feed)
         m_feed->setHeld(held);
 }
 
-int ContourRun::currentLine() const
+int StreamExecutor::currentLine() const
 {
     return m_blocks.empty() ? 0 : m_blocks.front().line;
 }
 
-void ContourRun::onResult(const CommandResult& result)
+void StreamExecutor::onResult(const CommandResult& result)
 {
     if (m_ended || result.id == 0)
         return;
@@ -166,7 +226,7 @@ void ContourRun::onResult(const CommandResult& result)
     }
 }
 
-void ContourRun::onStreamDone(const CommandResult& result)
+void StreamExecutor::onStreamDone(const CommandResult& result)
 {
     watch();
     if (!result.ok()) {
@@ -177,7 +237,7 @@ void ContourRun::onStreamDone(const CommandResult& result)
     m_settleRead = m_machine->session(m_stream.controller)->refreshStatus();
 }
 
-void ContourRun::onSettleRead(const CommandResult& result)
+void StreamExecutor::onSettleRead(const CommandResult& result)
 {
     if (!result.ok()) {
         finish(false, result.error, result.message);
@@ -205,7 +265,7 @@ void ContourRun::onSettleRead(const CommandResult& result)
     finish(true, ErrorKind::None, {});
 }
 
-void ContourRun::watch()
+void StreamExecutor::watch()
 {
     if (m_ended)
         return;
@@ -225,7 +285,7 @@ void ContourRun::watch()
         Q_EMIT roomForMoves();
 }
 
-void ContourRun::finish(bool ok, ErrorKind kind, const QString& message)
+void StreamExecutor::finish(bool ok, ErrorKind kind, const QString& message)
 {
     if (m_ended)
         return;
@@ -237,4 +297,4 @@ void ContourRun::finish(bool ok, ErrorKind kind, const QString& message)
     Q_EMIT finished(ok, kind, message);
 }
 
-} // namespace stepdeck::program
+} // namespace stepdeck::motion
