@@ -42,7 +42,7 @@ public:
     // The names of the axes an arc block moves: the plane's two and the helix axis when the
     // block names it, the machine's axis names as the block writes them.
     static QStringList movingAxes(const ProgramBlock& block);
-    // The arc's rates as a G1 over its moving axes (ProgramRules::feedRateWrite, the check's
+    // The arc's rates as a G1 over its moving axes (motion::MoveRates::feedRateWrite, the check's
     // rate rules): what is written before its first chord.
     static ProgramBlock rateBlock(const ProgramBlock& block);
 

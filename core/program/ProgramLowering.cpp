@@ -2,6 +2,7 @@
 // calls). docs/architecture.md "One motion path".
 #include "ProgramLowering.h"
 #include "DrillCycle.h"
+#include "ProgramUnits.h"
 
 namespace stepdeck::program {
 
@@ -153,6 +154,29 @@ std::optional<MotionCommand> ProgramLowering::speedChange(const ProgramBlock& bl
     if (!block.spindleChange || isSpindleSwitch(block.kind))
         return std::nullopt;
     return SpindleSpeed{block.line, block.rpm};
+}
+
+motion::RatedMove ProgramLowering::ratedMove(const ProgramBlock& block,
+                                             const machine::MachineDescription& d)
+{
+    motion::RatedMove move;
+    move.line = block.line;
+    move.feed = block.kind == BlockKind::Feed;
+    move.inverseTime = block.inverseTime;
+    if (!move.feed || !block.feed)
+        return move;
+    // The same figures units::feedStepsPerSecond takes: F per minute in the program's unit.
+    for (auto it = block.axisRates.cbegin(); it != block.axisRates.cend(); ++it)
+        if (const int a = d.axisIndex(it.key()); a >= 0)
+            move.speeds.push_back(
+                {a, units::toAxisUnits(d.axes.at(a), it.value(), false) / 60.0, true});
+    if (block.inverseTime)
+        return move; // G93: an axis without a resolved rate does not move
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+        if (const int a = d.axisIndex(it.key()); a >= 0 && !block.axisRates.contains(it.key()))
+            move.speeds.push_back(
+                {a, units::toAxisUnits(d.axes.at(a), *block.feed, block.inches) / 60.0, false});
+    return move;
 }
 
 // The feed mode and rate: LinuxCNC sets them first on a line (its order of execution, 2 and 3).

@@ -3,6 +3,7 @@
 #include "ProgramBlock.h"
 #include "ProgramCoordinates.h"
 #include "motion/MotionCommand.h"
+#include "motion/executors/MoveRates.h"
 #include <optional>
 #include <vector>
 
@@ -38,6 +39,13 @@ public:
     static std::optional<motion::MotionCommand> switchCommand(const ProgramBlock& block);
     // An S on a line of another action ("G1 X5 S500"): the new speed of a running spindle.
     static std::optional<motion::MotionCommand> speedChange(const ProgramBlock& block);
+    // A G0 or G1 of its own (or an arc's or a drilling cycle's rate block, ArcPath::rateBlock,
+    // DrillCycle::rateBlock) as the move executor takes its speeds (motion::MoveRates): a G1's
+    // F on each axis in the axis' unit per second, or the axis' resolved rate
+    // (ProgramBlock::axisRates: G93, the shares of F on a coordinating controller). Without
+    // targets: the run adds the machine targets it sends, the check needs none.
+    static motion::RatedMove ratedMove(const ProgramBlock& block,
+                                       const machine::MachineDescription& d);
 
 private:
     struct Frame

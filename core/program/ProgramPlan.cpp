@@ -82,6 +82,9 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
     const ContourMoves::Stream* stream =
         block.kind == BlockKind::Feed ? m_contours.streamOf(block) : nullptr;
     out->contour = stream;
+    const motion::RatedMove rated = block.kind == BlockKind::Feed && !stream
+                                        ? ProgramLowering::ratedMove(block, d)
+                                        : motion::RatedMove{};
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it) {
         AxisMove m;
         m.axis = d.axisIndex(it.key());
@@ -98,7 +101,7 @@ void ProgramPlan::planMove(const ProgramBlock& block, PlannedBlock* out)
         } else if (block.kind == BlockKind::Feed) {
             // A refused rate still moves the axis in the walk, so what follows is judged
             // from where the program means it to be (its time stays unknown).
-            ratesTaken = checkRate(block, m.axis, &m.speed) && ratesTaken;
+            ratesTaken = checkRate(block, rated, m.axis, &m.speed) && ratesTaken;
         } else if (axis.maxJogSpeed && *axis.maxJogSpeed > 0) {
             m.speed = *axis.maxJogSpeed;
         } else {
@@ -159,14 +162,15 @@ void ProgramPlan::planCycle(const ProgramBlock& block, PlannedBlock* out)
     planMove(DrillCycle::rateBlock(block, DrillCycle::Kind::Rapid, d), out);
     const ProgramBlock feed = DrillCycle::rateBlock(block, DrillCycle::Kind::Feed, d);
     const int z = d.axisIndex(QStringLiteral("Z"));
-    if (z >= 0 && checkRate(feed, z, &out->feedSpeed))
+    if (z >= 0 && checkRate(feed, ProgramLowering::ratedMove(feed, d), z, &out->feedSpeed))
         checkFeedWrite(feed);
 }
 
 // G1: the rate as the axis' controller takes it (Capabilities::feedRateParameter, steps/s
 // within the parameter's schema range). *speed: the rate the device runs, in unit/s (left 0
 // when refused).
-bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* speed)
+bool ProgramPlan::checkRate(const ProgramBlock& block, const motion::RatedMove& rated,
+                            int axisIndex, double* speed)
 {
     const machine::MachineAxis& axis = m_facts.description.axes.at(axisIndex);
     const AxisFacts& facts = m_axisFacts[size_t(axisIndex)];
@@ -190,10 +194,10 @@ bool ProgramPlan::checkRate(const ProgramBlock& block, int axisIndex, double* sp
     }
     if (!block.feed) // the parser refuses G1 without F
         return true;
-    // As the run writes it (ProgramRules::feedRateWrite): above the controller's highest at that
-    // highest, with a note, unless the machine file refuses (issue 50).
-    const FeedLimit::AxisRate limited = FeedLimit::axisRate(
-        m_facts.description, axis, *facts.caps, spec, m_known.value(axis.controller), block);
+    // As the run writes it (motion::MoveRates::feedRateWrite): above the controller's highest
+    // at that highest, with a note, unless the machine file refuses (issue 50).
+    const motion::MoveRates::AxisRate limited = motion::MoveRates::axisRate(
+        m_facts.description, axisIndex, *facts.caps, spec, m_known.value(axis.controller), rated);
     const qint64 rate = limited.runs;
     if (rate == 0)
         return true; // G93 on an axis that does not move (or from an unknown position)
@@ -244,7 +248,7 @@ double feedOf(const machine::MachineAxis& axis, qint64 stepsPerSecond, bool inch
 // Named once per programmed F (CheckErrors::note), at the F word: what the axis would need, the
 // highest its controller takes and why, and the F (or G93's time) the move runs at.
 void ProgramPlan::noteRate(const ProgramBlock& block, const machine::MachineAxis& axis,
-                           const FeedLimit::AxisRate& rate)
+                           const motion::MoveRates::AxisRate& rate)
 {
     const auto message = [&] {
         const Capabilities caps = m_facts.capabilities.value(axis.controller);

@@ -25,7 +25,9 @@ QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBl
     const ParameterSpec* spec = schema == m_facts.schemas.cend() || !caps.feedRateParameter
                                     ? nullptr
                                     : schema->find(QString::fromLatin1(caps.feedRateParameter));
-    *set = ProgramRules::feedRateWrite(m_facts.description, controller, caps, block, known, spec);
+    *set = motion::MoveRates::feedRateWrite(m_facts.description, controller, caps,
+                                            ProgramLowering::ratedMove(block, m_facts.description),
+                                            known, spec);
     if (set->isEmpty())
         return {};
     // A program's G1s mostly write the rate the one before wrote: judged once (the rules see
@@ -39,8 +41,8 @@ QString ProgramPlan::feedWriteRefusal(const QString& controller, const ProgramBl
     return last.why;
 }
 
-// G1's rate write on each controller of the block, as the run makes it (ProgramRates), against
-// the model's own rules (E-LAB: feed speed below start speed, a value for every axis). A
+// G1's rate write on each controller of the block, as the run makes it (motion::MoveExecutor),
+// against the model's own rules (E-LAB: feed speed below start speed, a value for every axis). A
 // refusal names the highest F that would pass, where one does.
 void ProgramPlan::checkFeedWrite(const ProgramBlock& block)
 {

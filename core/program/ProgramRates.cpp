@@ -1,5 +1,5 @@
 #include "ProgramRates.h"
-#include "ProgramRules.h"
+#include "ProgramLowering.h"
 #include "ProgramUnits.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
@@ -35,8 +35,9 @@ QMap<RequestId, QString> ProgramRates::before(const ProgramBlock& block)
             continue; // the check refused such a program; Machine::move refuses it again
         const QString name = QString::fromLatin1(caps.feedRateParameter);
         // The same write the check judged (ProgramRules), against what the device holds.
-        const ParameterSet rate = ProgramRules::feedRateWrite(
-            d, id, caps, block, s->status().knownParameters, s->model()->schema.find(name));
+        const ParameterSet rate = motion::MoveRates::feedRateWrite(
+            d, id, caps, ProgramLowering::ratedMove(block, d), s->status().knownParameters,
+            s->model()->schema.find(name));
         if (rate.isEmpty())
             continue;
         Controller& c = m_controllers[id];

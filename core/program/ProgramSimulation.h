@@ -135,10 +135,11 @@ private:
     void planCycle(const ProgramBlock& block, PlannedBlock* out);
     void planHome(const ProgramBlock& block, PlannedBlock* out);
     void addMove(const AxisMove& move, PlannedBlock* out);
-    bool checkRate(const ProgramBlock& block, int axisIndex, double* speed);
+    bool checkRate(const ProgramBlock& block, const motion::RatedMove& rated, int axisIndex,
+                   double* speed);
     // A rate FeedLimit lowered (issue 50): the note naming the F the axis or move runs at.
     void noteRate(const ProgramBlock& block, const machine::MachineAxis& axis,
-                  const FeedLimit::AxisRate& rate);
+                  const motion::MoveRates::AxisRate& rate);
     void checkContourTick(const ProgramBlock& block, const ContourMoves::Stream& stream);
     void checkFeedWrite(const ProgramBlock& block);
     QString feedWriteRefusal(const QString& controller, const ProgramBlock& block,

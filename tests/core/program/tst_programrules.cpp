@@ -1,22 +1,18 @@
-// The rules both the check and the run go by (issue 28, ProgramRules): the feed-rate write a
-// G1 makes, the model's parameter rules judged against what the device holds and an incomplete
-// setup, and the check refusing with them what the run would refuse (the spindle's range:
-// tst_switchexecutor);
-// the limits both take a feed or S above the machine's highest by (issue 50, FeedLimit).
+// The rules both the check and the run go by (issue 28, ProgramRules): the model's parameter
+// rules judged against what the device holds and an incomplete setup, and the check refusing
+// with them what the run would refuse (the spindle's range: tst_switchexecutor; a feed move's
+// rates: tst_moverates), or noting a feed above the machine's highest (issue 50).
 #include "TestMain.h"
-#include "program/FeedLimit.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
 #include "program/ProgramRules.h"
 #include "protocols/Registry.h"
 #include <QtTest>
-#include <cmath>
 
 using namespace stepdeck;
 using namespace stepdeck::machine;
 using namespace stepdeck::program;
 
-using AxisWords = QMap<QString, double>;
 
 namespace {
 
@@ -72,100 +68,19 @@ QStringList checked(const QString& text, const MachineFacts& facts)
     return out;
 }
 
-ProgramBlock feedBlock(const QMap<QString, double>& axes, double feed)
-{
-    ProgramBlock b;
-    b.kind = BlockKind::Feed;
-    for (auto it = axes.cbegin(); it != axes.cend(); ++it)
-        b.axes.insert(it.key(), it.value());
-    b.feed = feed;
-    return b;
-}
-
 } // namespace
 
 class TestProgramRules : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void feedRateWrite_wholeSetModel_everyAxisGetsAValue_data();
-    void feedRateWrite_wholeSetModel_everyAxisGetsAValue();
-    void feedRateWrite_perAxisModel_onlyTheBlocksAxes();
     void parameterWrite_elabRules_sameAsTheAdapter_data();
     void parameterWrite_elabRules_sameAsTheAdapter();
     void check_elab_refusesWhatTheRunWould_data();
     void check_elab_refusesWhatTheRunWould();
-    void feedLimit_axisAtF_runsAtTheHighest_data();
-    void feedLimit_axisAtF_runsAtTheHighest();
-    void feedLimit_coordinatedShares_slowedByOneFactor();
     void check_elab_feedAboveTheHighest_runsAtItWithNote_data();
     void check_elab_feedAboveTheHighest_runsAtItWithNote();
 };
-
-void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue_data()
-{
-    QTest::addColumn<QString>("held");
-    QTest::addColumn<AxisWords>("axes");
-    QTest::addColumn<ParameterValue>("expected");
-    // F6000 = 100 mm/min... in steps: 100 steps/s on an axis of 1 step per unit.
-    QTest::newRow("nothing known: the others at the same F")
-        << "" << AxisWords{{"X", 10}} << perAxis(100, 100, 100);
-    QTest::newRow("known values kept for the axes that do not move")
-        << "start=200,200,200 feed=40,30,20" << AxisWords{{"Y", 5}} << perAxis(40, 100, 20);
-    QTest::newRow("two axes at F") << "start=200,200,200 feed=40,30,20"
-                                   << AxisWords{{"X", 1}, {"Z", 2}} << perAxis(100, 30, 100);
-}
-
-void TestProgramRules::feedRateWrite_wholeSetModel_everyAxisGetsAValue()
-{
-    QFETCH(QString, held);
-    QFETCH(AxisWords, axes);
-    QFETCH(ParameterValue, expected);
-    const MachineFacts f = elabFacts(known(held));
-    const ParameterSet set = ProgramRules::feedRateWrite(
-        f.description, "elab", f.capabilities["elab"], feedBlock(axes, 6000), known(held), nullptr);
-    QCOMPARE(set.keys(), QStringList{"feed-speed"});
-    QCOMPARE(set.value("feed-speed"), expected);
-}
-
-void TestProgramRules::feedRateWrite_perAxisModel_onlyTheBlocksAxes()
-{
-    const ModelInfo* info = findModel(QStringLiteral("nanotec"));
-    const MachineDescription d = MachineDescription::singleController(*info, "sim");
-    const ParameterSet set = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities,
-                                                         feedBlock({{"Y", 5}}, 60000), {}, nullptr);
-    QCOMPARE(set.keys(), QStringList{"max-frequency"});
-    QCOMPARE(set.value("max-frequency").perAxis.keys(), QList<Axis>{Axis::Y});
-    QCOMPARE(set.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 1000);
-    // G0 writes no rate; G1 without F neither.
-    ProgramBlock rapid = feedBlock({{"Y", 5}}, 60000);
-    rapid.kind = BlockKind::Rapid;
-    QVERIFY(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, rapid, {}, nullptr)
-                .isEmpty());
-    // Issue 30: a coordinated G1's shares (ProgramBlock::axisRates, per minute); a share below
-    // the parameter's minimum (o: 60 steps/s) runs at it.
-    ProgramBlock shares = feedBlock({{"X", 6000}, {"Y", 60}}, 6000);
-    shares.axisRates = {{"X", 5999.7}, {"Y", 59.997}};
-    const ParameterSet coordinated = ProgramRules::feedRateWrite(
-        d, "nanotec", info->capabilities, shares, {}, info->schema.find("max-frequency"));
-    QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 100);
-    QCOMPARE(coordinated.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 60);
-    // Above the maximum (a feed override of 200 %): o's 25 000, and (issue 50, as LinuxCNC
-    // slows the whole move) Y slowed by the same factor, 25 000 / 33 333, so both still arrive
-    // together.
-    shares.axisRates = {{"X", 2000000.0}, {"Y", 6000.0}};
-    const ParameterSet fast = ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares,
-                                                          {}, info->schema.find("max-frequency"));
-    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 25000);
-    QCOMPARE(fast.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 75);
-    shares.axisRates = {{"X", 5999.7}, {"Y", 59.997}};
-    // Without the spec (not known) the share stands as it is.
-    QCOMPARE(ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, nullptr)
-                 .value("max-frequency")
-                 .perAxis.value(Axis::Y)
-                 .toLongLong(),
-             1);
-}
 
 void TestProgramRules::parameterWrite_elabRules_sameAsTheAdapter_data()
 {
@@ -261,88 +176,6 @@ void TestProgramRules::check_elab_refusesWhatTheRunWould()
     if (setupIncomplete)
         f.setupIncomplete.insert("elab");
     QCOMPARE(checked(program, f), errors);
-}
-
-// Issue 50, FeedLimit::axisRate: an axis at F (an E-LAB block of its own, in steps) runs at most
-// one below the start speed the device holds (feed mode has no ramp), else at most its
-// feed-rate parameter's top (65 535); with "limits": "refuse" as programmed. The rate
-// feedRateWrite writes is the same.
-void TestProgramRules::feedLimit_axisAtF_runsAtTheHighest_data()
-{
-    QTest::addColumn<QString>("held");
-    QTest::addColumn<double>("feed"); // steps/min
-    QTest::addColumn<bool>("refuse");
-    QTest::addColumn<qint64>("runs");
-    QTest::addColumn<bool>("limited");
-    QTest::addColumn<bool>("belowParameter");
-    QTest::newRow("within") << "start=100,100,100" << 5000.0 << false << qint64(83) << false
-                            << true;
-    QTest::newRow("at the start speed: one below")
-        << "start=100,100,100" << 6000.0 << false << qint64(99) << true << true;
-    QTest::newRow("start speed unknown: the range's top")
-        << "" << 6000000.0 << false << qint64(65535) << true << false;
-    QTest::newRow("start speed above the range: the range's top")
-        << "start=70000,70000,70000" << 6000000.0 << false << qint64(65535) << true << false;
-    QTest::newRow("refuse: as programmed")
-        << "start=100,100,100" << 6000.0 << true << qint64(100) << false << false;
-}
-
-void TestProgramRules::feedLimit_axisAtF_runsAtTheHighest()
-{
-    QFETCH(QString, held);
-    QFETCH(double, feed);
-    QFETCH(bool, refuse);
-    QFETCH(qint64, runs);
-    QFETCH(bool, limited);
-    QFETCH(bool, belowParameter);
-    MachineFacts f = elabFacts(known(held));
-    if (refuse)
-        f.description.limits = LimitPolicy::Refuse;
-    const Capabilities& caps = f.capabilities["elab"];
-    const ParameterSpec* spec = f.schemas["elab"].find("feed-speed");
-    QVERIFY(spec);
-    const ProgramBlock b = feedBlock({{"X", 10}}, feed);
-    const FeedLimit::AxisRate rate =
-        FeedLimit::axisRate(f.description, *f.description.axis("X"), caps, spec, known(held), b);
-    QCOMPARE(rate.programmed, qint64(std::llround(feed / 60)));
-    QCOMPARE(rate.runs, runs);
-    QCOMPARE(rate.limited, limited);
-    if (limited)
-        QCOMPARE(rate.ceiling.belowParameter, belowParameter);
-    const ParameterSet write =
-        ProgramRules::feedRateWrite(f.description, "elab", caps, b, known(held), spec);
-    QCOMPARE(write.value("feed-speed").perAxis.value(Axis::X).toLongLong(), runs);
-}
-
-// Shares of F on a coordinating controller (a Nanotec bus in steps, o at most 25 000): a
-// diagonal whose Y share would be 40 000 steps/s slows X and Y by one factor (0.625), so they
-// still arrive together, as LinuxCNC slows the whole move; refused, each share is clamped at o
-// on its own as before (a feed override's case).
-void TestProgramRules::feedLimit_coordinatedShares_slowedByOneFactor()
-{
-    const ModelInfo* info = findModel(QStringLiteral("nanotec"));
-    MachineDescription d = MachineDescription::singleController(*info, "sim");
-    const ParameterSpec* spec = info->schema.find("max-frequency");
-    QVERIFY(spec);
-    ProgramBlock shares = feedBlock({{"X", 30000}, {"Y", 40000}}, 3000000);
-    shares.axisRates = {{"X", 1800000.0}, {"Y", 2400000.0}}; // per minute: 30 000, 40 000 /s
-    const FeedLimit::AxisRate x =
-        FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares);
-    const FeedLimit::AxisRate y =
-        FeedLimit::axisRate(d, *d.axis("Y"), info->capabilities, spec, {}, shares);
-    QCOMPARE(x.programmed, qint64(30000));
-    QCOMPARE(x.runs, qint64(18750));
-    QCOMPARE(y.runs, qint64(25000));
-    QCOMPARE(x.feedFactor, 0.625);
-    QVERIFY(x.limited && y.limited);
-    const ParameterSet write =
-        ProgramRules::feedRateWrite(d, "nanotec", info->capabilities, shares, {}, spec);
-    QCOMPARE(write.value("max-frequency").perAxis.value(Axis::X).toLongLong(), 18750);
-    QCOMPARE(write.value("max-frequency").perAxis.value(Axis::Y).toLongLong(), 25000);
-    d.limits = LimitPolicy::Refuse;
-    QCOMPARE(FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).runs,
-             qint64(25000));
-    QVERIFY(!FeedLimit::axisRate(d, *d.axis("X"), info->capabilities, spec, {}, shares).limited);
 }
 
 // The rows of check_elab_refusesWhatTheRunWould that were too fast, by default (issue 50): no
