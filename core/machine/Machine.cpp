@@ -251,10 +251,11 @@ void Machine::watch(const QString& controllerId, ControllerSession* session)
         Q_EMIT statusChanged();
     });
     connect(session, &ControllerSession::requestFinished, this,
-            [this, session](const CommandResult& r) {
+            [this, session, controllerId](const CommandResult& r) {
                 onResult(session, r);
                 m_references->onResult(session, r);
                 m_switchOff->onResult(session, r);
+                Q_EMIT requestFinished(controllerId, r);
             });
 }
 

@@ -150,6 +150,10 @@ Q_SIGNALS:
     // per stop, also when the holder's abort stops the machine again.
     void abortRequested();
     void motionHolderChanged(); // claimed or released
+    // A request of one of the machine's controllers ended (a move's part, a parameter write or
+    // read, a status read, a switch), after the machine took its part of it: for the executors
+    // and the run, which reach the controllers through the machine.
+    void requestFinished(const QString& controllerId, const stepdeck::CommandResult& result);
 
 private:
     void requestAbort();

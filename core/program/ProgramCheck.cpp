@@ -70,9 +70,9 @@ QString unreadableFastSpeed(const MachineFacts& facts, const QString& controller
 }
 
 // A G1 on a controller whose rate is also its fast speed is followed by the fast speed put back
-// before a G0 (ProgramRates): only where it can be read back or is known. Where not, a G0 (or a
-// drilling cycle's rapid) on such a controller in a program that also has a G1 there would run
-// at the last F: refused at every such block. The walk streams the blocks, so a G0 is judged
+// before a G0 (motion::MoveExecutor): only where it can be read back or is known. Where not, a G0
+// (or a drilling cycle's rapid) on such a controller in a program that also has a G1 there would
+// run at the last F: refused at every such block. The walk streams the blocks, so a G0 is judged
 // once the whole program is read: what it needs of each block is kept, bounded (the first
 // kMaxErrors + 1 blocks per controller: more can never be listed).
 class FastSpeedPutBack

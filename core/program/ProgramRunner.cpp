@@ -4,11 +4,11 @@
 #include "ProgramRunner.h"
 #include "ProgramLine.h"
 #include "ProgramLogging.h"
-#include "ProgramRates.h"
 #include "ProgramReader.h"
 #include "RunFromLine.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
+#include "motion/executors/MoveExecutor.h"
 #include "motion/executors/StreamExecutor.h"
 #include <algorithm>
 
@@ -220,12 +220,13 @@ void ProgramRunner::abort()
     m_inputTimeout.stop();
     m_waitInput = 0;
     m_requests.clear();
+    m_moves->dropPending(); // a move's rates not taken yet: the move is never sent
     m_machine->stop();
     if (m_contour)
         m_contour->cancel(); // one not given yet ends the run here
     if (isEnded(m_state))
         return;
-    if (m_motion == 0 && !m_contour) {
+    if (m_motion == 0 && !m_moves->moveSent() && !m_contour) {
         end(RunState::Aborted, lineText(tr("aborted")));
         return;
     }
@@ -358,7 +359,7 @@ void ProgramRunner::finishProgram(bool programEnd)
     // Fusion 360 post ends "G0 Z15 / M30" with no M5). A program that runs out without M2 (an
     // MDI line) leaves them as they are.
     m_requests.clear();
-    const QMap<RequestId, QString> writes = m_rates->restore();
+    const QMap<RequestId, QString> writes = m_moves->restore();
     for (auto it = writes.cbegin(); it != writes.cend(); ++it)
         m_requests.insert(it.key());
     const auto then = [this, programEnd] {
@@ -429,8 +430,11 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_approaching = false;
     m_requests.clear();
     m_afterRequests = nullptr;
-    if (state != RunState::Finished && m_rates && m_machine)
-        m_rates->restore(); // best effort after a fault or abort: not awaited
+    if (m_moves) {
+        if (state != RunState::Finished && m_machine)
+            m_moves->restore(); // best effort after a fault or abort: not awaited
+        m_moves->forget();
+    }
     disconnectMachine();
     if (m_machine)
         m_machine->releaseMotion(this);

@@ -19,12 +19,13 @@ namespace stepdeck {
 class ControllerSession;
 }
 namespace stepdeck::motion {
+class MoveExecutor;
 class StreamExecutor;
-}
+struct RatedMove;
+} // namespace stepdeck::motion
 
 namespace stepdeck::program {
 
-class ProgramRates;
 class ProgramReader;
 
 enum class RunState {
@@ -251,15 +252,13 @@ private:
     void startBlock(const ProgramBlock& block);  // a new S first, then startAction()
     void startAction(const ProgramBlock& block); // what the block's action sends
     void startMove(const ProgramBlock& block);
-    void sendMove(const ProgramBlock& block);
+    void pushMove(const motion::RatedMove& move); // to the move executor
     void applyCoordinates(const ProgramBlock& block);
     // Blocks of many moves: an arc's chords, a cycle's moves (ProgramRunnerPaths.cpp).
     void startArc(const ProgramBlock& block);
     void sendChord();
-    void moveChord();
     void startCycle(const ProgramBlock& block);
-    void startSegment(); // the cycle's m_segment: its rates, then its move or dwell
-    void sendSegment();
+    void startSegment(); // the cycle's m_segment: its move or dwell
     // After a chord or a cycle's move arrived (or its dwell ended): true while the block goes
     // on, or holds there on pause().
     bool nextInPath();
@@ -273,9 +272,12 @@ private:
     void startSwitchCommand(const motion::MotionCommand& command, std::function<void()> then);
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
-    void onMotionFinished(quint64 id, bool ok, const QString& message);
+    void onMotionFinished(quint64 id, bool ok, const QString& message); // a reference run
+    void onMoveFinished(bool ok, ErrorKind kind, const QString& message);
     void onControllerFailed(const QString& controllerId, const QString& message);
-    QMap<QString, double> axisTargets(const ProgramBlock& block) const;
+    // A word's machine target on `axis` (absolute: work coordinates plus the offset).
+    double axisTarget(const ProgramBlock& block, const machine::MachineAxis& axis,
+                      double word) const;
     // Contours (ProgramRunnerContour.cpp).
     bool joinsContour(const ProgramBlock& block) const;
     void openContour(const ContourMoves::Stream& stream);
@@ -333,8 +335,8 @@ private:
     ErrorKind m_failureKind = ErrorKind::None;
     quint64 m_run = 0; // counts start(): a queued fault of an earlier run is dropped
     // What the current block waits for.
-    quint64 m_motion = 0;       // Machine::move / reference id
-    QSet<RequestId> m_requests; // session requests of the block (rates, output, spindle)
+    quint64 m_motion = 0;       // Machine::reference id
+    QSet<RequestId> m_requests; // session requests of the block (output, spindle; the end's)
     std::function<void()> m_afterRequests;
     // The last request of a controller that failed while the block ran (the ErrorKind of a
     // failed move: Machine::moveFinished says only why).
@@ -346,8 +348,8 @@ private:
     bool m_waitInputHigh = true; // M66 L3
     RequestId m_inputRead = 0;   // M66: the status read its level must be newer than
     QString m_inputController;
-    int m_inputNumber = 0; // on that controller
-    std::unique_ptr<ProgramRates> m_rates;
+    int m_inputNumber = 0;                         // on that controller
+    std::unique_ptr<motion::MoveExecutor> m_moves; // moves of their own, with their rates
     // The current point (ArcPath): where the blocks done put the axes, unrounded.
     AxisPositions m_programmed;
     std::optional<ArcPath> m_arc;      // the arc running, its chords sent one at a time

@@ -2,7 +2,6 @@
 #include "CoordinatedFeed.h"
 #include "InverseTime.h"
 #include "ProgramLowering.h"
-#include "ProgramRates.h"
 #include "ProgramRules.h"
 #include "ProgramRunner.h"
 #include "ProgramUnits.h"
@@ -81,14 +80,10 @@ void ProgramRunner::startAction(const ProgramBlock& block)
     }
 }
 
+// A G0 or G1 of its own: the move executor writes G1's rates (or puts G0's fast speed back)
+// first, and sends the move once they were taken.
 void ProgramRunner::startMove(const ProgramBlock& block)
 {
-    // G1's rates (and G0's fast speed put back) first; the move only once they were taken.
-    if (const QString why = m_rates->cannotPutBack(block);
-        block.kind == BlockKind::Rapid && !why.isEmpty()) {
-        fail(ErrorKind::Refused, why);
-        return;
-    }
     // G93, or a G1 on coordinating controllers: each axis' rate from where the block starts,
     // as the check resolved it.
     const machine::MachineDescription& d = m_machine->description();
@@ -98,18 +93,22 @@ void ProgramRunner::startMove(const ProgramBlock& block)
     else if (CoordinatedFeed::applies(block, d, m_coordinated, m_feedOverride != 1.0))
         resolved = CoordinatedFeed::resolve(block, d, m_coordinated, m_programmed,
                                             m_coordinates.offsets(block, d), m_feedOverride);
-    const QMap<RequestId, QString> rates = m_rates->before(resolved);
-    awaitRequests(rates, [this] { sendMove(m_block); });
+    motion::RatedMove move = ProgramLowering::ratedMove(resolved, d);
+    move.absolute = !block.relative;
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+        if (const int a = d.axisIndex(it.key()); a >= 0)
+            move.targets.emplace_back(a, axisTarget(block, d.axes.at(a), it.value()));
+    pushMove(move);
 }
 
-void ProgramRunner::sendMove(const ProgramBlock& block)
+// Refused when a G0 cannot run at the fast speed (the check refused it first).
+void ProgramRunner::pushMove(const motion::RatedMove& move)
 {
-    QString refusal;
-    const auto kind = block.kind == BlockKind::Feed ? machine::Machine::MoveKind::Feed
-                                                    : machine::Machine::MoveKind::Positioning;
-    m_motion = m_machine->move(axisTargets(block), !block.relative, &refusal, kind, this);
-    if (m_motion == 0)
-        fail(ErrorKind::Refused, refusal);
+    if (const QString why = m_moves->cannotPutBack(move); !move.feed && !why.isEmpty()) {
+        fail(ErrorKind::Refused, why);
+        return;
+    }
+    m_moves->push(move);
 }
 
 // G10, G92 and its kin change the coordinates of the blocks after them; nothing is sent. A G10
@@ -137,17 +136,12 @@ void ProgramRunner::startHome(const ProgramBlock& block)
         fail(ErrorKind::Refused, refusal);
 }
 
-QMap<QString, double> ProgramRunner::axisTargets(const ProgramBlock& block) const
+double ProgramRunner::axisTarget(const ProgramBlock& block, const machine::MachineAxis& axis,
+                                 double word) const
 {
-    QMap<QString, double> targets;
-    const machine::MachineDescription& d = m_machine->description();
-    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
-        if (const machine::MachineAxis* a = d.axis(it.key())) {
-            // An absolute target is in work coordinates (ProgramCheck): machine = work + offset.
-            const double offset = block.relative ? 0.0 : m_coordinates.offset(block, it.key());
-            targets.insert(it.key(), units::toAxisUnits(*a, it.value(), block.inches) + offset);
-        }
-    return targets;
+    // An absolute target is in work coordinates (ProgramCheck): machine = work + offset.
+    const double offset = block.relative ? 0.0 : m_coordinates.offset(block, axis.name);
+    return units::toAxisUnits(axis, word, block.inches) + offset;
 }
 
 // Spindle, coolant and outputs: the command the lowering makes of the block.
@@ -249,7 +243,6 @@ void ProgramRunner::onRequestFinished(const QString& controllerId, const Command
     }
     if (result.id == 0 || !m_requests.remove(result.id))
         return;
-    m_rates->onResult(controllerId, result);
     if (!result.ok()) {
         fail(result.error, tr("controller \"%1\": %2").arg(controllerId, result.message));
         return;
@@ -265,9 +258,20 @@ void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message
     if (id == 0 || id != m_motion)
         return;
     m_motion = 0;
+    onMoveFinished(ok, ErrorKind::None, message);
+}
+
+// A move of the move executor ended, or a reference run: the block goes on (an arc's next
+// chord, a cycle's next move) or is done.
+void ProgramRunner::onMoveFinished(bool ok, ErrorKind kind, const QString& message)
+{
     if (m_aborting) {
         end(RunState::Aborted,
             lineText(ok ? tr("aborted after the move under way ended") : tr("aborted")));
+        return;
+    }
+    if (!ok && kind != ErrorKind::None) {
+        fail(kind, message); // a write or the move refused
         return;
     }
     if (!ok) {

@@ -3,7 +3,7 @@
 // each move starts when the one before arrived, and a pause holds between two of them.
 #include "CoordinatedFeed.h"
 #include "InverseTime.h"
-#include "ProgramRates.h"
+#include "ProgramLowering.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
 
@@ -26,46 +26,38 @@ void ProgramRunner::startArc(const ProgramBlock& block)
     m_chordsCoordinated =
         !CoordinatedFeed::resolveChord(block, *m_arc, 1, m_machine->description(), m_coordinated)
              .axisRates.isEmpty();
-    if (m_chordsCoordinated) {
-        sendChord();
-        return;
-    }
-    // G93: the path speed that covers the curve in 1/F minutes (InverseTime), as the check.
-    const QMap<RequestId, QString> rates = m_rates->before(
-        ArcPath::rateBlock(block.inverseTime ? InverseTime::resolveArc(block, *m_arc) : block));
-    awaitRequests(rates, [this] { sendChord(); });
+    sendChord();
 }
 
+// A chord as a feed move: the first with the arc's rates (G93: the path speed that covers the
+// curve in 1/F minutes, InverseTime, as the check), the others at them; on coordinating
+// controllers each with its own shares of F.
 void ProgramRunner::sendChord()
 {
     if (!m_arc)
         return;
     ++m_chord;
-    if (m_chordsCoordinated) {
-        const QMap<RequestId, QString> rates = m_rates->before(CoordinatedFeed::resolveChord(
-            m_block, *m_arc, m_chord, m_machine->description(), m_coordinated, m_feedOverride));
-        awaitRequests(rates, [this] { moveChord(); });
-        return;
-    }
-    moveChord();
-}
-
-void ProgramRunner::moveChord()
-{
-    if (!m_arc)
-        return;
-    QMap<QString, double> targets;
     const machine::MachineDescription& d = m_machine->description();
+    motion::RatedMove chord;
+    if (m_chordsCoordinated)
+        chord =
+            ProgramLowering::ratedMove(CoordinatedFeed::resolveChord(m_block, *m_arc, m_chord, d,
+                                                                     m_coordinated, m_feedOverride),
+                                       d);
+    else if (m_chord == 1)
+        chord = ProgramLowering::ratedMove(
+            ArcPath::rateBlock(m_block.inverseTime ? InverseTime::resolveArc(m_block, *m_arc)
+                                                   : m_block),
+            d);
+    chord.line = m_block.line;
+    chord.feed = true;
     for (const auto& [axis, value] : m_arc->pointAt(m_chord))
-        targets.insert(d.axes.at(axis).name, value);
-    QString refusal;
-    m_motion = m_machine->move(targets, true, &refusal, machine::Machine::MoveKind::Feed, this);
-    if (m_motion == 0)
-        fail(ErrorKind::Refused, refusal);
+        chord.targets.emplace_back(axis, value);
+    pushMove(chord);
 }
 
-// G81..G83, G73: each move with the rates of a G0 or G1 over the axes it moves (ProgramRates
-// writes G1's rate, or puts the fast speed back before a rapid), the dwell by the timer.
+// G81..G83, G73: each move with the rates of a G0 or G1 over the axes it moves (the move
+// executor writes G1's rate, or puts the fast speed back before a rapid), the dwell by the timer.
 void ProgramRunner::startCycle(const ProgramBlock& block)
 {
     std::variant<DrillCycle, DrillCycle::Error> planning =
@@ -91,33 +83,11 @@ void ProgramRunner::startSegment()
         m_dwell.start(int(std::min(s.seconds * 1000.0, 2.0e9)));
         return;
     }
-    const ProgramBlock segment = DrillCycle::segmentBlock(m_block, s, m_machine->description());
-    if (const QString why = m_rates->cannotPutBack(segment);
-        s.kind == DrillCycle::Kind::Rapid && !why.isEmpty()) {
-        fail(ErrorKind::Refused, why);
-        return;
-    }
-    const QMap<RequestId, QString> rates = m_rates->before(segment);
-    awaitRequests(rates, [this] { sendSegment(); });
-}
-
-void ProgramRunner::sendSegment()
-{
-    if (!m_cycle)
-        return;
-    const DrillCycle::Segment& s = m_cycle->segments().at(m_segment);
-    QMap<QString, double> targets;
     const machine::MachineDescription& d = m_machine->description();
+    motion::RatedMove move = ProgramLowering::ratedMove(DrillCycle::segmentBlock(m_block, s, d), d);
     for (const auto& [axis, value] : s.targets)
-        targets.insert(d.axes.at(axis).name, value);
-    QString refusal;
-    m_motion =
-        m_machine->move(targets, true, &refusal,
-                        s.kind == DrillCycle::Kind::Feed ? machine::Machine::MoveKind::Feed
-                                                         : machine::Machine::MoveKind::Positioning,
-                        this);
-    if (m_motion == 0)
-        fail(ErrorKind::Refused, refusal);
+        move.targets.emplace_back(axis, value);
+    pushMove(move);
 }
 
 bool ProgramRunner::nextInPath()

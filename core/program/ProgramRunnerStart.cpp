@@ -2,12 +2,12 @@
 // coordinates and current point it takes from them) and run from line's prelude before the
 // first block. The walk is in ProgramRunner.cpp, what each block sends in ProgramRunnerBlocks.cpp.
 #include "ProgramLogging.h"
-#include "ProgramRates.h"
 #include "ProgramReader.h"
 #include "ProgramRunner.h"
 #include "RunFromLine.h"
 #include "controller/ControllerSession.h"
 #include "machine/Machine.h"
+#include "motion/executors/MoveExecutor.h"
 #include "motion/executors/StreamExecutor.h"
 #include <algorithm>
 
@@ -135,7 +135,8 @@ bool ProgramRunner::begin(const Program& program, int fromLine, const MachineFac
     m_endMessage.clear();
     m_failureKind = ErrorKind::None;
     ++m_run;
-    m_rates = std::make_unique<ProgramRates>(m_machine);
+    m_moves = std::make_unique<motion::MoveExecutor>(m_machine, this);
+    connect(m_moves.get(), &motion::MoveExecutor::finished, this, &ProgramRunner::onMoveFinished);
     connectMachine();
     setState(RunState::Running);
     // Queued: the caller sees start() return before the first block's signals.

@@ -359,7 +359,7 @@ void EmisController::syncStatus()
     }
     s.busy = busy;
     // The work speed every positioning move runs at (EmisWorkSpeeds), where the host knows it:
-    // a program's G1 overwrites it, and puts it back before G0 (ProgramRates).
+    // a program's G1 overwrites it, and puts it back before G0 (motion::MoveExecutor).
     ParameterValue work;
     for (auto it = tracks.cbegin(); it != tracks.cend(); ++it)
         if (const std::optional<qint64> speed = m_known.speeds.knownMoveSpeed(it.key()))
@@ -368,7 +368,7 @@ void EmisController::syncStatus()
         s.knownParameters.remove(QStringLiteral("work-speed"));
     else
         s.knownParameters.insert(QStringLiteral("work-speed"), work);
-    // Interpolation as written in this session (a program turns it on, ProgramRates).
+    // Interpolation as written in this session (a program turns it on, motion::MoveExecutor).
     if (m_known.interpolation)
         s.knownParameters.insert(QStringLiteral("interpolation"),
                                  ParameterValue{QVariant(*m_known.interpolation), {}});
