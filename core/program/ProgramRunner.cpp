@@ -6,10 +6,11 @@
 #include "ProgramLogging.h"
 #include "ProgramReader.h"
 #include "RunFromLine.h"
-#include "controller/ControllerSession.h"
+#include "machine/ControllerFacts.h"
 #include "machine/Machine.h"
 #include "motion/executors/MoveExecutor.h"
 #include "motion/executors/StreamExecutor.h"
+#include "motion/executors/WaitExecutor.h"
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -49,13 +50,6 @@ bool isEnded(RunState state)
 ProgramRunner::ProgramRunner(machine::Machine* machine, QObject* parent)
     : QObject(parent), m_machine(machine), m_ownerName(tr("a program runs"))
 {
-    m_dwell.setSingleShot(true);
-    m_dwell.setTimerType(Qt::PreciseTimer);
-    connect(&m_dwell, &QTimer::timeout, this, &ProgramRunner::onDwellDone);
-    m_inputTimeout.setSingleShot(true);
-    connect(&m_inputTimeout, &QTimer::timeout, this, [this] {
-        fail(ErrorKind::Timeout, tr("input %1 did not reach its level in time").arg(m_waitInput));
-    });
     m_abortSettle.setSingleShot(true);
     connect(&m_abortSettle, &QTimer::timeout, this, [this] {
         end(RunState::Aborted, tr("aborted; the controllers did not confirm standstill"));
@@ -101,14 +95,8 @@ void ProgramRunner::connectMachine()
         if (!m_aborting && !m_ownStop)
             abort();
     });
-    for (const machine::MachineController& c : m_machine->description().controllers) {
-        ControllerSession* s = m_machine->session(c.id);
-        const QString id = c.id;
-        m_connections << connect(s, &ControllerSession::requestFinished, this,
-                                 [this, id](const CommandResult& r) { onRequestFinished(id, r); });
-        m_connections << connect(s, &ControllerSession::statusChanged, this,
-                                 [this] { checkInput(); });
-    }
+    m_connections << connect(m_machine, &machine::Machine::requestFinished, this,
+                             &ProgramRunner::onRequestFinished);
 }
 
 void ProgramRunner::disconnectMachine()
@@ -216,9 +204,7 @@ void ProgramRunner::abort()
     if (m_state != RunState::Running && m_state != RunState::Paused)
         return;
     m_aborting = true;
-    m_dwell.stop();
-    m_inputTimeout.stop();
-    m_waitInput = 0;
+    m_waits->cancel();
     m_requests.clear();
     m_moves->dropPending(); // a move's rates not taken yet: the move is never sent
     m_machine->stop();
@@ -243,11 +229,7 @@ void ProgramRunner::abort()
 // The controllers of the motion under way that have no stop command (EMIS, laser axes).
 QStringList ProgramRunner::controllersWithoutStop() const
 {
-    QStringList ids;
-    for (const machine::MachineController& c : m_machine->description().controllers)
-        if (!m_machine->session(c.id)->capabilities().stopCommand)
-            ids << c.id;
-    return ids;
+    return machine::controllersWithoutStop(*m_machine);
 }
 
 void ProgramRunner::runNext()
@@ -398,8 +380,7 @@ void ProgramRunner::fail(ErrorKind kind, const QString& message)
         end(RunState::Aborted, lineText(tr("aborted")));
         return;
     }
-    m_dwell.stop();
-    m_inputTimeout.stop();
+    m_waits->cancel();
     // Every controller: a program never continues after a fault. The machine's abortRequested
     // that follows is this run's own stop, not an abort.
     m_ownStop = true;
@@ -414,9 +395,8 @@ void ProgramRunner::end(RunState state, const QString& message)
     if (isEnded(m_state))
         return;
     m_abortSettle.stop();
-    m_dwell.stop();
-    m_inputTimeout.stop();
-    m_waitInput = 0;
+    if (m_waits)
+        m_waits->cancel();
     m_motion = 0;
     m_arc.reset();
     m_cycle.reset();

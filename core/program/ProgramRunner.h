@@ -15,11 +15,9 @@
 #include <memory>
 #include <optional>
 
-namespace stepdeck {
-class ControllerSession;
-}
 namespace stepdeck::motion {
 class MoveExecutor;
+class WaitExecutor;
 class StreamExecutor;
 struct RatedMove;
 } // namespace stepdeck::motion
@@ -51,7 +49,7 @@ bool isEnded(RunState state); // Finished, Failed, Aborted
 // moves of a contour (ContourMoves: G1/G2/G3 in G64 on a controller with a step stream) run
 // as one stream (motion::StreamExecutor), their moves appended while it runs, at most
 // StreamExecutor::kAheadSeconds of path ahead. It reaches the controllers only through the Machine
-// and its ControllerSessions. No Widgets.
+// and its executors (core/motion/executors). No Widgets.
 //
 // Faults: a refused block, a failed request, a timeout or a lost link stops every controller
 // and ends the program Failed at that line with the reason and its ErrorKind; a program never
@@ -264,10 +262,8 @@ private:
     bool nextInPath();
     void resumePath();                       // on from where the block held (m_heldInPath)
     void endPath(AxisPositions* programmed); // the block done: its end as the current point
-    void onDwellDone();
+    void onWaitFinished(bool ok, ErrorKind kind, const QString& message);
     void startHome(const ProgramBlock& block);
-    void startWaitInput(const ProgramBlock& block);
-    void checkInput();
     void startSwitch(const ProgramBlock& block, std::function<void()> then);
     void startSwitchCommand(const motion::MotionCommand& command, std::function<void()> then);
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
@@ -341,15 +337,9 @@ private:
     // The last request of a controller that failed while the block ran (the ErrorKind of a
     // failed move: Machine::moveFinished says only why).
     ErrorKind m_blockError = ErrorKind::None;
-    QTimer m_dwell;
-    QTimer m_inputTimeout;
     QTimer m_abortSettle;
-    int m_waitInput = 0;         // M66: the machine input waited for (0: none)
-    bool m_waitInputHigh = true; // M66 L3
-    RequestId m_inputRead = 0;   // M66: the status read its level must be newer than
-    QString m_inputController;
-    int m_inputNumber = 0;                         // on that controller
     std::unique_ptr<motion::MoveExecutor> m_moves; // moves of their own, with their rates
+    std::unique_ptr<motion::WaitExecutor> m_waits; // dwells, input waits
     // The current point (ArcPath): where the blocks done put the axes, unrounded.
     AxisPositions m_programmed;
     std::optional<ArcPath> m_arc;      // the arc running, its chords sent one at a time

@@ -5,10 +5,11 @@
 #include "ProgramRules.h"
 #include "ProgramRunner.h"
 #include "ProgramUnits.h"
-#include "controller/ControllerSession.h"
+#include "machine/ControllerFacts.h"
 #include "machine/Machine.h"
 #include "model/ModelOperations.h"
 #include "motion/executors/SwitchExecutor.h"
+#include "motion/executors/WaitExecutor.h"
 
 namespace stepdeck::program {
 
@@ -61,11 +62,12 @@ void ProgramRunner::startAction(const ProgramBlock& block)
         return;
     case BlockKind::Dwell:
         // At least P between the previous block's confirmation and the next block's first
-        // byte: the timer starts only now.
-        m_dwell.start(int(std::min(block.seconds * 1000.0, 2.0e9)));
+        // byte: the wait starts only now.
+        m_waits->push(motion::Dwell{block.line, block.seconds});
         return;
     case BlockKind::WaitInput:
-        startWaitInput(block);
+        // M66: its level from a status read asked for now (WaitExecutor).
+        m_waits->push(motion::WaitInput{block.line, block.number, block.inputHigh, block.seconds});
         return;
     case BlockKind::Pause:
     case BlockKind::OptionalPause:
@@ -181,40 +183,6 @@ void ProgramRunner::startSwitchCommand(const motion::MotionCommand& command,
     awaitRequests({{id, controller}}, std::move(then));
 }
 
-// M66: the level counts only from a status read asked for after the block started, so a
-// level read before it (a part sensor of the previous cycle) does not end the wait.
-void ProgramRunner::startWaitInput(const ProgramBlock& block)
-{
-    const MachineFacts facts = factsOf(*m_machine);
-    const std::optional<motion::SwitchExecutor::Io> io =
-        motion::SwitchExecutor(facts.description, facts.capabilities, facts.schemas)
-            .input(block.number);
-    if (!io) {
-        fail(ErrorKind::Unsupported, tr("the machine has no input %1").arg(block.number));
-        return;
-    }
-    m_waitInput = block.number;
-    m_waitInputHigh = block.inputHigh;
-    m_inputController = io->controller;
-    m_inputNumber = io->number;
-    m_inputRead = m_machine->session(io->controller)->refreshStatus();
-    m_inputTimeout.start(int(std::min(block.seconds * 1000.0, 2.0e9)));
-}
-
-void ProgramRunner::checkInput()
-{
-    if (m_waitInput == 0 || m_inputRead != 0 || m_state != RunState::Running)
-        return;
-    const MachineStatus& status = m_machine->session(m_inputController)->status();
-    if (!status.inputs || m_inputNumber > status.inputs->size())
-        return;
-    if (status.inputs->at(m_inputNumber - 1) != m_waitInputHigh)
-        return;
-    m_waitInput = 0;
-    m_inputTimeout.stop();
-    blockDone();
-}
-
 void ProgramRunner::awaitRequests(const QMap<RequestId, QString>& requests,
                                   std::function<void()> then)
 {
@@ -232,15 +200,6 @@ void ProgramRunner::onRequestFinished(const QString& controllerId, const Command
 {
     if (!result.ok() && result.id != 0)
         m_blockError = result.error;
-    if (result.id != 0 && result.id == m_inputRead) {
-        if (!result.ok()) {
-            fail(result.error, tr("input %1: %2").arg(m_waitInput).arg(result.message));
-            return;
-        }
-        m_inputRead = 0;
-        checkInput();
-        return;
-    }
     if (result.id == 0 || !m_requests.remove(result.id))
         return;
     if (!result.ok()) {
@@ -301,8 +260,7 @@ void ProgramRunner::failSoon(ErrorKind kind, const QString& message)
 
 void ProgramRunner::onControllerFailed(const QString& controllerId, const QString& message)
 {
-    const ControllerSession* s = m_machine->session(controllerId);
-    const bool linkLost = s && s->linkState() != LinkState::Connected;
+    const bool linkLost = machine::linkDown(*m_machine, controllerId);
     if (m_aborting && !linkLost)
         return; // the stop's own effect on the motion under way; its end comes as usual
     if (linkLost) {

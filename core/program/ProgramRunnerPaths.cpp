@@ -6,6 +6,7 @@
 #include "ProgramLowering.h"
 #include "ProgramRunner.h"
 #include "machine/Machine.h"
+#include "motion/executors/WaitExecutor.h"
 
 namespace stepdeck::program {
 
@@ -80,7 +81,7 @@ void ProgramRunner::startSegment()
 {
     const DrillCycle::Segment& s = m_cycle->segments().at(m_segment);
     if (s.kind == DrillCycle::Kind::Dwell) {
-        m_dwell.start(int(std::min(s.seconds * 1000.0, 2.0e9)));
+        m_waits->push(motion::Dwell{m_block.line, s.seconds});
         return;
     }
     const machine::MachineDescription& d = m_machine->description();
@@ -127,8 +128,13 @@ void ProgramRunner::endPath(AxisPositions* programmed)
     m_cycle.reset();
 }
 
-void ProgramRunner::onDwellDone()
+// A dwell or an input wait (WaitExecutor) ended: the cycle's next move, or the block done.
+void ProgramRunner::onWaitFinished(bool ok, ErrorKind kind, const QString& message)
 {
+    if (!ok) {
+        fail(kind, message);
+        return;
+    }
     if (m_state != RunState::Running || m_aborting)
         return;
     if (m_cycle && nextInPath())

@@ -5,10 +5,10 @@
 #include "ProgramReader.h"
 #include "ProgramRunner.h"
 #include "RunFromLine.h"
-#include "controller/ControllerSession.h"
 #include "machine/Machine.h"
 #include "motion/executors/MoveExecutor.h"
 #include "motion/executors/StreamExecutor.h"
+#include "motion/executors/WaitExecutor.h"
 #include <algorithm>
 
 namespace stepdeck::program {
@@ -137,6 +137,8 @@ bool ProgramRunner::begin(const Program& program, int fromLine, const MachineFac
     ++m_run;
     m_moves = std::make_unique<motion::MoveExecutor>(m_machine, this);
     connect(m_moves.get(), &motion::MoveExecutor::finished, this, &ProgramRunner::onMoveFinished);
+    m_waits = std::make_unique<motion::WaitExecutor>(m_machine);
+    connect(m_waits.get(), &motion::WaitExecutor::finished, this, &ProgramRunner::onWaitFinished);
     connectMachine();
     setState(RunState::Running);
     // Queued: the caller sees start() return before the first block's signals.
