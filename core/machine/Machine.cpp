@@ -60,7 +60,11 @@ void simulateMachine(const MachineDescription& d, const MachineController& c,
 Machine::Machine(QObject* parent)
     : QObject(parent), m_references(std::make_unique<MachineReferenceRun>(*this)),
       m_switchOff(std::make_unique<MachineSwitchOff>(*this))
-{}
+{
+    // The operator's reference run gives the motion back at its end, before anyone who
+    // listens hears of it (connected first).
+    connect(this, &Machine::referenceFinished, this, [this] { releaseMotion(&m_referenceToken); });
+}
 
 Machine::~Machine()
 {
@@ -201,11 +205,6 @@ void Machine::requestAbort()
 bool Machine::claimMotion(const QObject* owner, const QString& what, QString* why)
 {
     const bool wasFree = m_owner.isFree();
-    if (wasFree && isReferencing()) { // the operator's reference run moves the axes
-        if (why)
-            *why = tr("a reference run is under way");
-        return false;
-    }
     if (!m_owner.claim(owner, what, why))
         return false;
     if (wasFree)

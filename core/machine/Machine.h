@@ -119,7 +119,10 @@ public:
     // line takes it before its check and gives it back at its end, so that one refuses while
     // the other holds it. stop(), panic() and destroy() tell the holder to end its work
     // (abortRequested), after the stop went to every controller.
-    // Refused too while a reference run is under way. A holder's own moves and reference runs
+    // The operator's jog (from its first nonzero rate to endJog()) and reference run (from
+    // reference() without an owner to its end) hold the motion themselves ("the axes are being
+    // jogged", "a reference run is under way"), so a program does not start beside them and
+    // they exclude each other. A holder's own moves and reference runs
     // pass `owner` to move() and reference(); anyone else's are refused while it holds the
     // motion, and so are jogs, unless the holder lends it (a run paused: lendMotion).
     bool claimMotion(const QObject* owner, const QString& what, QString* why = nullptr);
@@ -127,6 +130,9 @@ public:
     void lendMotion(const QObject* owner, bool lent) { m_owner.setLent(owner, lent); }
     bool holdsMotion(const QObject* owner) const { return m_owner.isHeldBy(owner); }
     QString motionHolder() const { return m_owner.holder(); } // empty: nobody runs motion
+    // The jog input is active (a controller jogged since the last endJog()), also while a held
+    // run lent the machine (a run does not go on under it: ProgramRunner::resume).
+    bool isJogging() const { return !m_jogSessions.isEmpty(); }
 
 Q_SIGNALS:
     void statusChanged();
@@ -230,6 +236,9 @@ private:
     std::unique_ptr<MachineReferenceRun> m_references; // the reference run, if any
     std::unique_ptr<MachineSwitchOff> m_switchOff;     // spindle and coolant off after a stop
     MotionOwnership m_owner;
+    // What the operator's jog and reference run hold the motion as.
+    QObject m_jogToken;
+    QObject m_referenceToken;
     bool m_abortRequesting = false;      // abortRequested is being emitted
     MachineSetup* m_setup = nullptr;     // the controllers' setups, written on connect (a child)
     ControllerSession* m_lent = nullptr; // not owned (lendSession)

@@ -12,8 +12,9 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
             *refusal = why;
         return false;
     };
-    // A run holds the machine (a program, an MDI line): no jog unless it lent it, paused.
-    if (const QString why = motionRefusal(nullptr); !why.isEmpty())
+    // A run holds the machine (a program, an MDI line) or a reference run goes: no jog, unless
+    // a run lent it (held between blocks). Else the jog holds the motion itself while it moves.
+    if (const QString why = motionRefusal(&m_jogToken); !why.isEmpty())
         return refuse(why);
     QMap<ControllerSession*, AxisVelocities> rates;
     for (auto& s : m_sessions)
@@ -33,6 +34,10 @@ bool Machine::jog(const QMap<QString, double>& unitsPerSecond, QString* refusal)
             rate = qBound(-*axis->maxJogSpeed, rate, *axis->maxJogSpeed);
         rates[s].insert(axis->axis, axis->toStepRate(rate));
     }
+    if (m_owner.isFree() && std::any_of(rates.cbegin(), rates.cend(), [](const AxisVelocities& v) {
+            return std::any_of(v.cbegin(), v.cend(), [](double rate) { return rate != 0; });
+        }))
+        claimMotion(&m_jogToken, tr("the axes are being jogged"));
     // The controllers jogged by this input hear from it each time (those without a named axis
     // now with zero rates: they ramp down); controllers it never jogged are left alone.
     for (auto it = rates.cbegin(); it != rates.cend(); ++it) {
@@ -59,6 +64,7 @@ void Machine::endJog()
             s->endJog();
     }
     m_jogSessions.clear();
+    releaseMotion(&m_jogToken);
 }
 
 // A controller without a jog command: short targets while the input is renewed (the lease

@@ -27,9 +27,16 @@ int referenceSearchDirection(const MachineAxis& axis, const Capabilities& capabi
 quint64 Machine::reference(const QStringList& axes, QString* refusal, const QObject* owner)
 {
     const quint64 id = m_lastMove + 1;
-    QString why = motionRefusal(owner);
+    // The operator's (no owner) holds the motion itself while it runs.
+    const QObject* holder = owner ? owner : &m_referenceToken;
+    QString why = motionRefusal(holder);
+    const bool claims = why.isEmpty() && !owner && m_owner.isFree();
+    if (claims)
+        claimMotion(holder, tr("a reference run is under way"));
     if (why.isEmpty())
         why = m_references->start(id, axes);
+    if (!why.isEmpty() && claims)
+        releaseMotion(holder);
     if (!why.isEmpty()) {
         if (refusal)
             *refusal = why;

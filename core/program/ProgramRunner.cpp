@@ -148,7 +148,7 @@ void ProgramRunner::resume()
         Q_EMIT stateChanged(m_state);
         return;
     }
-    if (m_state != RunState::Paused || refuseWithoutTouchOff())
+    if (m_state != RunState::Paused || refuseToGoOn())
         return;
     if (restNeedsCheck()) {
         const MachineFacts facts = restFacts();
@@ -173,7 +173,7 @@ void ProgramRunner::resume()
 
 void ProgramRunner::step()
 {
-    if (m_state != RunState::Paused || refuseWithoutTouchOff())
+    if (m_state != RunState::Paused || refuseToGoOn())
         return;
     if (restNeedsCheck()) {
         const MachineFacts facts = restFacts();

@@ -245,6 +245,7 @@ private:
                const ProgramCheckResult& checked, QList<ProgramError>* errors, bool stepOnly);
     void startTouchOff(const ProgramBlock& block); // at a hold: an M6 that waits for Z?
     bool refuseWithoutTouchOff();                  // resume/step: refused while it waits
+    bool refuseToGoOn(); // resume/step: refused while jogging, or waiting for a touch-off
     QStringList controllersWithoutStop() const;
     // What each block sends (ProgramRunnerBlocks.cpp).
     void startBlock(const ProgramBlock& block);  // a new S first, then startAction()

@@ -72,7 +72,7 @@ QString ProgramRunner::restUncheckable() const
 bool ProgramRunner::resumeChecked(const MachineFacts& checkedFacts,
                                   const ProgramCheckResult& checked, bool stepOnly)
 {
-    if (m_state != RunState::Paused || refuseWithoutTouchOff())
+    if (m_state != RunState::Paused || refuseToGoOn())
         return false;
     QString why = restUncheckable();
     const MachineFacts now = restFacts();
@@ -154,6 +154,25 @@ bool ProgramRunner::awaitsTouchOff() const
 }
 
 // resume(), step(), resumeChecked(): refused (resumeRefused) while the hold waits for its Z.
+// A run held between blocks lent the machine to the operator's hands (issue 49 item 4): it
+// does not go on while the operator jogs, nor before the axes moved by hand stand (a
+// controller refuses a move while an axis still runs out of its jog), since its next move
+// would run beside them.
+bool ProgramRunner::refuseToGoOn()
+{
+    QString why;
+    if (m_machine && m_machine->isJogging())
+        why = tr("Not resumed: the axes are being jogged; let go of the jog first");
+    else if (m_machine && !m_feedHeld && !m_heldInPath &&
+             m_machine->state() == machine::MachineState::Moving)
+        why = tr("Not resumed: the axes are still moving; resume once they stand");
+    if (why.isEmpty())
+        return refuseWithoutTouchOff();
+    qCInfo(lcProgram) << why;
+    Q_EMIT resumeRefused(why);
+    return true;
+}
+
 bool ProgramRunner::refuseWithoutTouchOff()
 {
     if (!awaitsTouchOff())

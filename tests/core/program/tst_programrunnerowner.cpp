@@ -1,8 +1,9 @@
 // The machine owns execution (issue 49 item 4): a run holds the machine's motion
 // (Machine::claimMotion) from its start to its end, so that a second runner (an MDI line, Go
 // to) is refused while it holds it, and the machine's own STOP and PANIC -- not the runner's
-// abort() -- end the run that holds it. Asserted at the devices: the E-LAB simulator on a
-// pseudo-terminal stands, and the blocks after the stop never arrive.
+// abort() -- end the run that holds it. The operator's jog and reference run hold it too. Asserted
+// at the devices: the E-LAB simulator on a pseudo-terminal stands, and the blocks after the stop
+// never arrive.
 #include "ProgramRunnerTestSupport.h"
 #include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
@@ -25,6 +26,9 @@ private Q_SLOTS:
     void fault_runnersOwnStop_failedNotAborted();
     void manualMotion_whileRunning_refusedPausedBetweenBlocksAdmitted();
     void start_duringTheOperatorsReferenceRun_refusedNothingSent();
+    void start_whileTheOperatorJogs_refusedUntilTheJogEnds();
+    void jogAndReference_excludeEachOther_namingTheHolder();
+    void resume_whileJoggingAtM0_refusedUntilTheJogEnds();
 
 private:
     static std::optional<Program> parsed(const QByteArray& text);
@@ -166,9 +170,89 @@ void TestProgramRunnerOwner::start_duringTheOperatorsReferenceRun_refusedNothing
     QVERIFY(!m_runner->start(*parsed("G91 G0 X1\n"), 1, &errors));
     QCOMPARE(errors.size(), 1);
     QCOMPARE(errors.first().message, Machine::tr("a reference run is under way"));
-    QVERIFY(m_machine->motionHolder().isEmpty());
+    QCOMPARE(m_machine->motionHolder(), Machine::tr("a reference run is under way"));
     QCOMPARE(acceptedCount(*m_elab), before);
     QCOMPARE(m_runner->state(), RunState::Idle);
+}
+
+// The operator's jog holds the motion from its first rate to endJog(): a program does not
+// start beside it (LinuxCNC runs no program while jogging), and starts once the jog ended.
+void TestProgramRunnerOwner::start_whileTheOperatorJogs_refusedUntilTheJogEnds()
+{
+    QString why;
+    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
+    QVERIFY(m_machine->isJogging());
+    QCOMPARE(m_machine->motionHolder(), Machine::tr("the axes are being jogged"));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    QList<ProgramError> errors;
+    QVERIFY(!m_runner->start(*parsed("G91 G0 X1\n"), 1, &errors));
+    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.first().message, Machine::tr("the axes are being jogged"));
+    QCOMPARE(m_runner->state(), RunState::Idle);
+    m_machine->endJog();
+    QVERIFY(m_machine->motionHolder().isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), QList<qint64>{}); // the program's move never came
+    QVERIFY(run("G91 G0 X1\n"));
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400}));
+}
+
+// The operator's reference run and jog exclude each other in core, each refused with what holds
+// the machine; the drive never got a move by hand during the reference run.
+void TestProgramRunnerOwner::jogAndReference_excludeEachOther_namingTheHolder()
+{
+    QString why;
+    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    QCOMPARE(m_machine->reference({QStringLiteral("A")}, &why), quint64(0));
+    QVERIFY2(why.startsWith(Machine::tr("the axes are being jogged")), qPrintable(why));
+    QVERIFY(!m_machine->isReferencing());
+    m_machine->endJog();
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
+    QVERIFY2(m_machine->reference({QStringLiteral("A")}, &why) != 0, qPrintable(why));
+    QCOMPARE(m_machine->motionHolder(), Machine::tr("a reference run is under way"));
+    QVERIFY(!m_machine->jog({{QStringLiteral("X"), 5.0}}, &why));
+    QVERIFY2(why.startsWith(Machine::tr("a reference run is under way")), qPrintable(why));
+    QVERIFY(!m_machine->isJogging());
+    QVERIFY(still(*m_elab)); // the jog was never sent
+    QTRY_VERIFY_WITH_TIMEOUT(!referenced.isEmpty(), 30000);
+    QVERIFY(m_machine->motionHolder().isEmpty()); // given back at its end
+    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
+    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    m_machine->endJog();
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+}
+
+// Held at M0 the run lends the machine, and a jog goes (a touch-off); the run does not go on
+// while the jog input is held, since its next move would run beside the jog.
+void TestProgramRunnerOwner::resume_whileJoggingAtM0_refusedUntilTheJogEnds()
+{
+    QVERIFY(run("G91\nG0 X1\nM0\nG0 X2\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(m_runner->state() == RunState::Paused, 20000);
+    QString why;
+    QVERIFY2(m_machine->jog({{QStringLiteral("Y"), 5.0}}, &why), qPrintable(why));
+    QCOMPARE(m_machine->motionHolder(), ProgramRunner::tr("a program runs")); // still the run's
+    QSignalSpy refused(m_runner.get(), &ProgramRunner::resumeRefused);
+    m_runner->resume();
+    QCOMPARE(refused.size(), 1);
+    QVERIFY2(refused.first().first().toString().contains(ProgramRunner::tr("jogged")),
+             qPrintable(refused.first().first().toString()));
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    m_machine->endJog();
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400})); // line 4 not sent
+    // The board's state read after Y came to rest (the adapter refuses a move until one
+    // shows it out of jog mode).
+    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
+    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 2, 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
+    QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400, 800}));
 }
 
 STEPDECK_TEST_MAIN(TestProgramRunnerOwner)
