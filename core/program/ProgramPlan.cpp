@@ -5,6 +5,7 @@
 #include "ProgramRules.h"
 #include "ProgramSimulation.h"
 #include "ProgramUnits.h"
+#include "motion/executors/MoveExecutor.h"
 #include <cmath>
 
 namespace stepdeck::program {
@@ -290,13 +291,11 @@ void ProgramPlan::planHome(const ProgramBlock& block, PlannedBlock* out)
     QStringList refused; // controllers named once per block
     const auto add = [&](int index, int column) {
         const machine::MachineAxis& axis = d.axes.at(index);
-        const Capabilities caps = m_facts.capabilities.value(axis.controller);
-        if (!caps.has(MotionMode::Reference)) {
+        if (const QString why = motion::MoveExecutor::referenceRefusal(
+                m_facts.capabilities.value(axis.controller), axis.name, axis.controller);
+            !why.isEmpty()) {
             if (!refused.contains(axis.controller))
-                error(block, column, [&] {
-                    return ProgramCheck::tr("%1: controller \"%2\" has no reference run (G28)")
-                        .arg(axis.name, axis.controller);
-                });
+                error(block, column, [&] { return why; });
             refused << axis.controller;
             return;
         }

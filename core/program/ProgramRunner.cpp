@@ -81,10 +81,6 @@ int ProgramRunner::currentLine() const
 void ProgramRunner::connectMachine()
 {
     disconnectMachine();
-    m_connections << connect(m_machine, &machine::Machine::moveFinished, this,
-                             &ProgramRunner::onMotionFinished);
-    m_connections << connect(m_machine, &machine::Machine::referenceFinished, this,
-                             &ProgramRunner::onMotionFinished);
     m_connections << connect(m_machine, &machine::Machine::controllerFailed, this,
                              &ProgramRunner::onControllerFailed);
     m_connections << connect(m_machine, &machine::Machine::spindleAndCoolantOff, this,
@@ -212,7 +208,7 @@ void ProgramRunner::abort()
         m_contour->cancel(); // one not given yet ends the run here
     if (isEnded(m_state))
         return;
-    if (m_motion == 0 && !m_moves->moveSent() && !m_contour) {
+    if (!m_moves->moveSent() && !m_contour) {
         end(RunState::Aborted, lineText(tr("aborted")));
         return;
     }
@@ -305,7 +301,6 @@ void ProgramRunner::blockDone()
 {
     if (m_state != RunState::Running || m_aborting)
         return;
-    m_motion = 0;
     if (std::exchange(m_approaching, false)) {
         approachDone();
         return;
@@ -397,7 +392,6 @@ void ProgramRunner::end(RunState state, const QString& message)
     m_abortSettle.stop();
     if (m_waits)
         m_waits->cancel();
-    m_motion = 0;
     m_arc.reset();
     m_cycle.reset();
     m_heldInPath = false;

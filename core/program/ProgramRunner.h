@@ -269,7 +269,6 @@ private:
     void startSwitchCommand(const motion::MotionCommand& command, std::function<void()> then);
     void awaitRequests(const QMap<RequestId, QString>& requests, std::function<void()> then);
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
-    void onMotionFinished(quint64 id, bool ok, const QString& message); // a reference run
     void onMoveFinished(bool ok, ErrorKind kind, const QString& message);
     void onControllerFailed(const QString& controllerId, const QString& message);
     // A word's machine target on `axis` (absolute: work coordinates plus the offset).
@@ -332,7 +331,6 @@ private:
     ErrorKind m_failureKind = ErrorKind::None;
     quint64 m_run = 0; // counts start(): a queued fault of an earlier run is dropped
     // What the current block waits for.
-    quint64 m_motion = 0;       // Machine::reference id
     QSet<RequestId> m_requests; // session requests of the block (output, spindle; the end's)
     std::function<void()> m_afterRequests;
     // The last request of a controller that failed while the block ran (the ErrorKind of a

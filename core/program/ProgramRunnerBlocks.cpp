@@ -131,11 +131,10 @@ void ProgramRunner::applyCoordinates(const ProgramBlock& block)
 
 void ProgramRunner::startHome(const ProgramBlock& block)
 {
-    QString refusal;
-    // None named: every axis. As the holder of the machine's motion (this).
-    m_motion = m_machine->reference(block.axes.keys(), &refusal, this);
-    if (m_motion == 0)
-        fail(ErrorKind::Refused, refusal);
+    motion::Reference reference{block.line, {}}; // none named: every axis
+    for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
+        reference.axes << m_machine->description().axisIndex(it.key());
+    m_moves->push(reference);
 }
 
 double ProgramRunner::axisTarget(const ProgramBlock& block, const machine::MachineAxis& axis,
@@ -212,15 +211,7 @@ void ProgramRunner::onRequestFinished(const QString& controllerId, const Command
     }
 }
 
-void ProgramRunner::onMotionFinished(quint64 id, bool ok, const QString& message)
-{
-    if (id == 0 || id != m_motion)
-        return;
-    m_motion = 0;
-    onMoveFinished(ok, ErrorKind::None, message);
-}
-
-// A move of the move executor ended, or a reference run: the block goes on (an arc's next
+// A move or a reference run of the move executor ended: the block goes on (an arc's next
 // chord, a cycle's next move) or is done.
 void ProgramRunner::onMoveFinished(bool ok, ErrorKind kind, const QString& message)
 {

@@ -10,6 +10,34 @@ MoveExecutor::MoveExecutor(machine::Machine* machine, const QObject* owner, QObj
 {
     connect(machine, &machine::Machine::requestFinished, this, &MoveExecutor::onRequestFinished);
     connect(machine, &machine::Machine::moveFinished, this, &MoveExecutor::onMoveFinished);
+    connect(machine, &machine::Machine::referenceFinished, this, &MoveExecutor::onMoveFinished);
+}
+
+void MoveExecutor::push(const Reference& reference)
+{
+    m_move = RatedMove{};
+    m_move.line = reference.line;
+    QStringList axes; // none: every axis
+    for (int a : reference.axes)
+        if (a >= 0 && a < m_machine->description().axes.size())
+            axes << m_machine->description().axes.at(a).name;
+    QString refusal;
+    started(m_machine->reference(axes, &refusal, m_owner), refusal);
+}
+
+QString MoveExecutor::referenceRefusal(const Capabilities& caps, const QString& axis,
+                                       const QString& controller)
+{
+    if (caps.has(MotionMode::Reference))
+        return {};
+    return tr("%1: controller \"%2\" has no reference run (G28)").arg(axis, controller);
+}
+
+void MoveExecutor::started(quint64 id, const QString& refusal)
+{
+    m_motion = id;
+    if (m_motion == 0)
+        Q_EMIT finished(false, ErrorKind::Refused, refusal);
 }
 
 // The controllers of a move's axes, in the machine's order.
@@ -156,12 +184,11 @@ void MoveExecutor::sendMove()
         if (axis >= 0 && axis < d.axes.size())
             targets.insert(d.axes.at(axis).name, value);
     QString refusal;
-    m_motion = m_machine->move(targets, m_move.absolute, &refusal,
-                               m_move.feed ? machine::Machine::MoveKind::Feed
-                                           : machine::Machine::MoveKind::Positioning,
-                               m_owner);
-    if (m_motion == 0)
-        Q_EMIT finished(false, ErrorKind::Refused, refusal);
+    started(m_machine->move(targets, m_move.absolute, &refusal,
+                            m_move.feed ? machine::Machine::MoveKind::Feed
+                                        : machine::Machine::MoveKind::Positioning,
+                            m_owner),
+            refusal);
 }
 
 void MoveExecutor::dropPending()

@@ -1,6 +1,7 @@
 #pragma once
 #include "MoveRates.h"
 #include "model/CommandResult.h"
+#include "motion/MotionCommand.h"
 #include <QMap>
 #include <QObject>
 #include <QPointer>
@@ -13,7 +14,8 @@ class Machine;
 namespace stepdeck::motion {
 
 // The move executor (issue 49 item 3, docs/architecture.md "One motion path"): moves of their
-// own -- a G0 or G1, an arc's chord, a drilling cycle's move -- one at a time through
+// own -- a G0 or G1, an arc's chord, a drilling cycle's move -- and reference runs (G28 in
+// StepDeck, Machine::reference), one at a time through
 // Machine::move on any model, the coordinating ones (EMIS IP1, Nanotec: shares of F) and the
 // per-move ones (laser axes) alike. Before a feed move each controller of its axes gets its
 // model's feed-rate parameter in steps/s per axis (MoveRates::feedRateWrite, docs/programs.md
@@ -39,6 +41,12 @@ public:
     // move. finished() at its end; at once (not ok, ErrorKind::Refused) when the machine
     // refuses the move. One at a time: a push while one runs is a programming error.
     void push(const RatedMove& move);
+    // A reference run of the axes named (every axis when none): finished() at its end.
+    void push(const Reference& reference);
+    // Why the model cannot run a reference run (Capabilities' MotionMode::Reference); empty:
+    // it can. The check asks it of every axis a G28 names, the machine refuses the same.
+    static QString referenceRefusal(const Capabilities& caps, const QString& axis,
+                                    const QString& controller);
     bool busy() const { return m_pending || m_motion != 0; }
     bool moveSent() const { return m_motion != 0; } // the machine moves for it now
     // The machine was stopped: the writes not yet acknowledged are not waited for (a move
@@ -78,6 +86,7 @@ private:
     void sendMove();
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
     void onMoveFinished(quint64 id, bool ok, const QString& message);
+    void started(quint64 id, const QString& refusal);
 
     QPointer<machine::Machine> m_machine;
     const QObject* m_owner;
@@ -85,7 +94,7 @@ private:
     RatedMove m_move;           // the move pushed last
     bool m_pending = false;     // pushed, its writes not all acknowledged yet
     QSet<RequestId> m_requests; // those writes (and reads)
-    quint64 m_motion = 0;       // Machine::move's id while it runs
+    quint64 m_motion = 0;       // Machine::move's or reference's id while it runs
 };
 
 } // namespace stepdeck::motion

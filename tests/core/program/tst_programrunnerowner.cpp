@@ -180,10 +180,11 @@ void TestProgramRunnerOwner::start_duringTheOperatorsReferenceRun_refusedNothing
 void TestProgramRunnerOwner::start_whileTheOperatorJogs_refusedUntilTheJogEnds()
 {
     QString why;
-    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
+    // The input held (renewed, as the jog pad does) until the board jogs.
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why) && moving(*m_elab),
+                             20000);
     QVERIFY(m_machine->isJogging());
     QCOMPARE(m_machine->motionHolder(), Machine::tr("the axes are being jogged"));
-    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
     QList<ProgramError> errors;
     QVERIFY(!m_runner->start(*parsed("G91 G0 X1\n"), 1, &errors));
     QCOMPARE(errors.size(), 1);
@@ -191,7 +192,7 @@ void TestProgramRunnerOwner::start_whileTheOperatorJogs_refusedUntilTheJogEnds()
     QCOMPARE(m_runner->state(), RunState::Idle);
     m_machine->endJog();
     QVERIFY(m_machine->motionHolder().isEmpty());
-    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 20000);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), QList<qint64>{}); // the program's move never came
     QVERIFY(run("G91 G0 X1\n"));
     WAIT_ENDED();
@@ -204,13 +205,13 @@ void TestProgramRunnerOwner::start_whileTheOperatorJogs_refusedUntilTheJogEnds()
 void TestProgramRunnerOwner::jogAndReference_excludeEachOther_namingTheHolder()
 {
     QString why;
-    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
-    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why) && moving(*m_elab),
+                             20000);
     QCOMPARE(m_machine->reference({QStringLiteral("A")}, &why), quint64(0));
     QVERIFY2(why.startsWith(Machine::tr("the axes are being jogged")), qPrintable(why));
     QVERIFY(!m_machine->isReferencing());
     m_machine->endJog();
-    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 20000);
     QSignalSpy referenced(m_machine.get(), &Machine::referenceFinished);
     QVERIFY2(m_machine->reference({QStringLiteral("A")}, &why) != 0, qPrintable(why));
     QCOMPARE(m_machine->motionHolder(), Machine::tr("a reference run is under way"));
@@ -220,10 +221,10 @@ void TestProgramRunnerOwner::jogAndReference_excludeEachOther_namingTheHolder()
     QVERIFY(still(*m_elab)); // the jog was never sent
     QTRY_VERIFY_WITH_TIMEOUT(!referenced.isEmpty(), 30000);
     QVERIFY(m_machine->motionHolder().isEmpty()); // given back at its end
-    QVERIFY2(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why), qPrintable(why));
-    QTRY_VERIFY_WITH_TIMEOUT(moving(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{QStringLiteral("X"), 5.0}}, &why) && moving(*m_elab),
+                             20000);
     m_machine->endJog();
-    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 20000);
 }
 
 // Held at M0 the run lends the machine, and a jog goes (a touch-off); the run does not go on
@@ -233,7 +234,8 @@ void TestProgramRunnerOwner::resume_whileJoggingAtM0_refusedUntilTheJogEnds()
     QVERIFY(run("G91\nG0 X1\nM0\nG0 X2\n"));
     QTRY_VERIFY_WITH_TIMEOUT(m_runner->state() == RunState::Paused, 20000);
     QString why;
-    QVERIFY2(m_machine->jog({{QStringLiteral("Y"), 5.0}}, &why), qPrintable(why));
+    QTRY_VERIFY_WITH_TIMEOUT(m_machine->jog({{QStringLiteral("Y"), 5.0}}, &why) && moving(*m_elab),
+                             20000);
     QCOMPARE(m_machine->motionHolder(), ProgramRunner::tr("a program runs")); // still the run's
     QSignalSpy refused(m_runner.get(), &ProgramRunner::resumeRefused);
     m_runner->resume();
@@ -242,12 +244,17 @@ void TestProgramRunnerOwner::resume_whileJoggingAtM0_refusedUntilTheJogEnds()
              qPrintable(refused.first().first().toString()));
     QCOMPARE(m_runner->state(), RunState::Paused);
     m_machine->endJog();
-    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 20000);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{400})); // line 4 not sent
-    // The board's state read after Y came to rest (the adapter refuses a move until one
+    // A state read of the board after Y came to rest (the adapter refuses a move until one
     // shows it out of jog mode).
-    QSignalSpy table(m_machine->session("table"), &ControllerSession::statusChanged);
-    QTRY_VERIFY_WITH_TIMEOUT(table.size() >= 2, 10000);
+    QSignalSpy results(m_machine.get(), &Machine::requestFinished);
+    const RequestId read = m_machine->session("table")->refreshStatus();
+    QTRY_VERIFY_WITH_TIMEOUT(std::any_of(results.cbegin(), results.cend(),
+                                         [&](const QList<QVariant>& r) {
+                                             return r.at(1).value<CommandResult>().id == read;
+                                         }),
+                             10000);
     QTRY_COMPARE_WITH_TIMEOUT(m_machine->state(), MachineState::Idle, 10000);
     m_runner->resume();
     WAIT_ENDED();
