@@ -2891,6 +2891,10 @@
             <source>%1: the machine moves for it alone until it ends or holds</source>
             <translation>%1: Bis zu dessen Ende oder Halt bewegt sich die Maschine nur dafür</translation>
         </message>
+        <message>
+            <source>the axes are being jogged</source>
+            <translation>die Achsen werden im Tippbetrieb verfahren</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::machine::MachineFile</name>
@@ -3212,6 +3216,48 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::motion::MoveExecutor</name>
+        <message>
+            <source>%1: controller "%2" has no reference run (G28)</source>
+            <translation>%1: Steuerung "%2" hat keine Referenzfahrt (G28)</translation>
+        </message>
+        <message>
+            <source>controller "%1": its fast speed is no longer known, so G0 would run at the last F; the program stops here</source>
+            <translation>Steuerung "%1": Ihre Eilganggeschwindigkeit ist nicht mehr bekannt, G0 liefe also mit dem letzten F; das Programm hält hier an</translation>
+        </message>
+        <message>
+            <source>controller "%1": %2</source>
+            <translation>Steuerung „%1“: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::motion::StreamExecutor</name>
+        <message>
+            <source>a contour's steps run at one tick rate below %1 on every axis, and %1 is not known: write the controller's setup first</source>
+            <translation>die Schritte einer Kontur laufen mit einem Takt unterhalb von %1 auf jeder Achse, und %1 ist nicht bekannt: zuerst die Einrichtung der Steuerung schreiben</translation>
+        </message>
+        <message>
+            <source>%1 is too low for a contour's tick (at least 2 steps/s on every axis)</source>
+            <translation>%1 ist zu niedrig für den Takt einer Kontur (mindestens 2 Schritte/s auf jeder Achse)</translation>
+        </message>
+        <message>
+            <source>the contour has ended</source>
+            <translation>die Kontur ist beendet</translation>
+        </message>
+        <message>
+            <source>cancelled before the contour was given</source>
+            <translation>abgebrochen, bevor die Kontur übergeben wurde</translation>
+        </message>
+        <message>
+            <source>the contour's tick rate %1 was not taken: %2</source>
+            <translation>der Takt %1 der Kontur wurde nicht übernommen: %2</translation>
+        </message>
+        <message>
+            <source>the board did not come to rest after the contour's last tick</source>
+            <translation>die Platine kam nach dem letzten Takt der Kontur nicht zum Stillstand</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::motion::SwitchExecutor</name>
         <message>
             <source>%1: no controller of this machine has coolant</source>
@@ -3240,6 +3286,21 @@
         <message>
             <source>controller "%1" cannot reverse its spindle: use M3</source>
             <translation>Steuerung "%1" kann die Drehrichtung ihrer Spindel nicht umkehren: M3 verwenden</translation>
+        </message>
+    </context>
+    <context>
+        <name>stepdeck::motion::WaitExecutor</name>
+        <message>
+            <source>input %1 did not reach its level in time</source>
+            <translation>Eingang %1 hat seinen Pegel nicht rechtzeitig erreicht</translation>
+        </message>
+        <message>
+            <source>the machine has no input %1</source>
+            <translation>die Maschine hat keinen Eingang %1</translation>
+        </message>
+        <message>
+            <source>input %1: %2</source>
+            <translation>Eingang %1: %2</translation>
         </message>
     </context>
     <context>
@@ -3925,35 +3986,8 @@
     <context>
         <name>stepdeck::program::ContourMoves</name>
         <message>
-            <source>a contour's steps run at one tick rate below %1 on every axis, and %1 is not known: write the controller's setup first</source>
-            <translation>die Schritte einer Kontur laufen mit einem Takt unterhalb von %1 auf jeder Achse, und %1 ist nicht bekannt: zuerst die Einrichtung der Steuerung schreiben</translation>
-        </message>
-        <message>
-            <source>%1 is too low for a contour's tick (at least 2 steps/s on every axis)</source>
-            <translation>%1 ist zu niedrig für den Takt einer Kontur (mindestens 2 Schritte/s auf jeder Achse)</translation>
-        </message>
-        <message>
             <source>F%1 is too fast for the contour stream of controller "%2": at its %3 ticks/s (one step per tick at most) this move's highest feed is F%4</source>
             <translation>F%1 ist zu schnell für den Konturstrom der Steuerung "%2": bei ihren %3 Takten/s (höchstens ein Schritt je Takt) ist der höchste Vorschub dieser Bewegung F%4</translation>
-        </message>
-    </context>
-    <context>
-        <name>stepdeck::program::ContourRun</name>
-        <message>
-            <source>the contour has ended</source>
-            <translation>die Kontur ist beendet</translation>
-        </message>
-        <message>
-            <source>cancelled before the contour was given</source>
-            <translation>abgebrochen, bevor die Kontur übergeben wurde</translation>
-        </message>
-        <message>
-            <source>the contour's tick rate %1 was not taken: %2</source>
-            <translation>der Takt %1 der Kontur wurde nicht übernommen: %2</translation>
-        </message>
-        <message>
-            <source>the board did not come to rest after the contour's last tick</source>
-            <translation>die Platine kam nach dem letzten Takt der Kontur nicht zum Stillstand</translation>
         </message>
     </context>
     <context>
@@ -4290,10 +4324,6 @@
         <message>
             <source>F%1 is %2 steps/s on %3; controller "%4" takes %5..%6 steps/s (%7)</source>
             <translation>F%1 ergibt %2 Schritte/s auf %3; Steuerung "%4" nimmt %5..%6 Schritte/s (%7)</translation>
-        </message>
-        <message>
-            <source>%1: controller "%2" has no reference run (G28)</source>
-            <translation>%1: Steuerung "%2" hat keine Referenzfahrt (G28)</translation>
         </message>
         <message>
             <source>%1: the machine has no digital inputs</source>
@@ -4991,13 +5021,6 @@
         </message>
     </context>
     <context>
-        <name>stepdeck::program::ProgramRates</name>
-        <message>
-            <source>controller "%1": its fast speed is no longer known, so G0 would run at the last F; the program stops here</source>
-            <translation>Steuerung "%1": Ihre Eilganggeschwindigkeit ist nicht mehr bekannt, G0 liefe also mit dem letzten F; das Programm hält hier an</translation>
-        </message>
-    </context>
-    <context>
         <name>stepdeck::program::ProgramReader</name>
         <message>
             <source>the program was not read</source>
@@ -5058,10 +5081,6 @@
             <translation>abgebrochen</translation>
         </message>
         <message>
-            <source>input %1 did not reach its level in time</source>
-            <translation>Eingang %1 hat seinen Pegel nicht rechtzeitig erreicht</translation>
-        </message>
-        <message>
             <source>aborted; the controllers did not confirm standstill</source>
             <translation>abgebrochen; die Steuerungen haben den Stillstand nicht bestätigt</translation>
         </message>
@@ -5080,14 +5099,6 @@
         <message>
             <source>%1: the machine has nothing to switch</source>
             <translation>%1: die Maschine hat nichts zu schalten</translation>
-        </message>
-        <message>
-            <source>the machine has no input %1</source>
-            <translation>die Maschine hat keinen Eingang %1</translation>
-        </message>
-        <message>
-            <source>input %1: %2</source>
-            <translation>Eingang %1: %2</translation>
         </message>
         <message>
             <source>controller "%1": %2</source>
@@ -5168,6 +5179,14 @@
         <message>
             <source>a program runs</source>
             <translation>ein Programm läuft</translation>
+        </message>
+        <message>
+            <source>Not resumed: the axes are being jogged; let go of the jog first</source>
+            <translation>Nicht fortgesetzt: die Achsen werden im Tippbetrieb verfahren; zuerst das Tippen loslassen</translation>
+        </message>
+        <message>
+            <source>Not resumed: the axes are still moving; resume once they stand</source>
+            <translation>Nicht fortgesetzt: die Achsen bewegen sich noch; fortsetzen, sobald sie stehen</translation>
         </message>
     </context>
     <context>
