@@ -3,6 +3,7 @@
 // runs, coordinated shares slowed by one factor. The check (ProgramPlan) and the run
 // (MoveExecutor) take a move's rates from these; the blocks here go through the lowering's
 // ProgramLowering::ratedMove as theirs do.
+#include "../program/ElabBoardTestSupport.h"
 #include "TestMain.h"
 #include "machine/MachineDescription.h"
 #include "motion/executors/MoveRates.h"
@@ -17,46 +18,11 @@ using namespace stepdeck;
 using namespace stepdeck::machine;
 using namespace stepdeck::motion;
 using namespace stepdeck::program;
+using namespace stepdeck::program::elabboard;
 
 using AxisWords = QMap<QString, double>;
 
 namespace {
-
-// An E-LAB board in its own steps (MachineDescription::singleController: X, Y, Z), with its
-// model's rules, and `known` the values the host knows it holds.
-MachineFacts boardFacts(const ParameterSet& known)
-{
-    const ModelInfo* info = findModel(QStringLiteral("elab"));
-    MachineFacts f;
-    f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
-    f.capabilities.insert("elab", info->capabilities);
-    f.schemas.insert("elab", info->schema);
-    f.models.insert("elab", info);
-    f.knownParameters.insert("elab", known);
-    return f;
-}
-
-ParameterValue boardValues(qint64 x, qint64 y, qint64 z)
-{
-    ParameterValue v;
-    v.perAxis = {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}};
-    return v;
-}
-
-// "start=100,100,100 feed=50,50,50": the known parameter values.
-ParameterSet heldValues(const QString& text)
-{
-    ParameterSet out;
-    for (const QString& pair : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-        const QStringList kv = pair.split(QLatin1Char('='));
-        const QStringList v = kv.at(1).split(QLatin1Char(','));
-        const QString name = kv.at(0) == QLatin1String("start") ? QStringLiteral("start-speed")
-                                                                : QStringLiteral("feed-speed");
-        out.insert(name,
-                   boardValues(v.at(0).toLongLong(), v.at(1).toLongLong(), v.at(2).toLongLong()));
-    }
-    return out;
-}
 
 ProgramBlock feedBlock(const QMap<QString, double>& axes, double feed)
 {
@@ -96,11 +62,11 @@ void TestMoveRates::feedRateWrite_wholeSetModel_everyAxisGetsAValue_data()
     QTest::addColumn<ParameterValue>("expected");
     // F6000 = 100 mm/min... in steps: 100 steps/s on an axis of 1 step per unit.
     QTest::newRow("nothing known: the others at the same F")
-        << "" << AxisWords{{"X", 10}} << boardValues(100, 100, 100);
+        << "" << AxisWords{{"X", 10}} << perAxis(100, 100, 100);
     QTest::newRow("known values kept for the axes that do not move")
-        << "start=200,200,200 feed=40,30,20" << AxisWords{{"Y", 5}} << boardValues(40, 100, 20);
+        << "start=200,200,200 feed=40,30,20" << AxisWords{{"Y", 5}} << perAxis(40, 100, 20);
     QTest::newRow("two axes at F") << "start=200,200,200 feed=40,30,20"
-                                   << AxisWords{{"X", 1}, {"Z", 2}} << boardValues(100, 30, 100);
+                                   << AxisWords{{"X", 1}, {"Z", 2}} << perAxis(100, 30, 100);
 }
 
 void TestMoveRates::feedRateWrite_wholeSetModel_everyAxisGetsAValue()
@@ -108,10 +74,10 @@ void TestMoveRates::feedRateWrite_wholeSetModel_everyAxisGetsAValue()
     QFETCH(QString, held);
     QFETCH(AxisWords, axes);
     QFETCH(ParameterValue, expected);
-    const MachineFacts f = boardFacts(heldValues(held));
-    const ParameterSet set = MoveRates::feedRateWrite(f.description, "elab", f.capabilities["elab"],
-                                                      g1(feedBlock(axes, 6000), f.description),
-                                                      heldValues(held), nullptr);
+    const MachineFacts f = elabFacts(known(held));
+    const ParameterSet set =
+        MoveRates::feedRateWrite(f.description, "elab", f.capabilities["elab"],
+                                 g1(feedBlock(axes, 6000), f.description), known(held), nullptr);
     QCOMPARE(set.keys(), QStringList{"feed-speed"});
     QCOMPARE(set.value("feed-speed"), expected);
 }
@@ -187,23 +153,22 @@ void TestMoveRates::feedLimit_axisAtF_runsAtTheHighest()
     QFETCH(qint64, runs);
     QFETCH(bool, limited);
     QFETCH(bool, belowParameter);
-    MachineFacts f = boardFacts(heldValues(held));
+    MachineFacts f = elabFacts(known(held));
     if (refuse)
         f.description.limits = LimitPolicy::Refuse;
     const Capabilities& caps = f.capabilities["elab"];
     const ParameterSpec* spec = f.schemas["elab"].find("feed-speed");
     QVERIFY(spec);
     const ProgramBlock b = feedBlock({{"X", 10}}, feed);
-    const MoveRates::AxisRate rate =
-        MoveRates::axisRate(f.description, f.description.axisIndex("X"), caps, spec,
-                            heldValues(held), g1(b, f.description));
+    const MoveRates::AxisRate rate = MoveRates::axisRate(
+        f.description, f.description.axisIndex("X"), caps, spec, known(held), g1(b, f.description));
     QCOMPARE(rate.programmed, qint64(std::llround(feed / 60)));
     QCOMPARE(rate.runs, runs);
     QCOMPARE(rate.limited, limited);
     if (limited)
         QCOMPARE(rate.ceiling.belowParameter, belowParameter);
-    const ParameterSet write = MoveRates::feedRateWrite(
-        f.description, "elab", caps, g1(b, f.description), heldValues(held), spec);
+    const ParameterSet write = MoveRates::feedRateWrite(f.description, "elab", caps,
+                                                        g1(b, f.description), known(held), spec);
     QCOMPARE(write.value("feed-speed").perAxis.value(Axis::X).toLongLong(), runs);
 }
 

@@ -40,7 +40,8 @@ foreach(_t tst_programrunner tst_programrunnermotion tst_programcontour tst_prog
                     ${CMAKE_SOURCE_DIR}/tests/support/PtyDevice.h LABELS integration TIMEOUT 300)
 endforeach()
 # The rules the check and the run share (issue 28).
-stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrules.cpp LABELS unit)
+stepdeck_add_test(tst_programrules SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programrules.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ElabBoardTestSupport.h LABELS unit)
 # Programs that check clean run to their end on the simulators: the check refuses first
 # whatever the run would refuse (issue 28, item 1).
 stepdeck_add_test(tst_programcheckedruns SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programcheckedruns.cpp

@@ -2,6 +2,7 @@
 // rules judged against what the device holds and an incomplete setup, and the check refusing
 // with them what the run would refuse (the spindle's range: tst_switchexecutor; a feed move's
 // rates: tst_moverates), or noting a feed above the machine's highest (issue 50).
+#include "ElabBoardTestSupport.h"
 #include "TestMain.h"
 #include "program/ProgramCheck.h"
 #include "program/ProgramParser.h"
@@ -12,44 +13,9 @@
 using namespace stepdeck;
 using namespace stepdeck::machine;
 using namespace stepdeck::program;
-
+using namespace stepdeck::program::elabboard;
 
 namespace {
-
-// An E-LAB board in its own steps (MachineDescription::singleController: X, Y, Z), with its
-// model's rules, and `known` the values the host knows it holds.
-MachineFacts elabFacts(const ParameterSet& known)
-{
-    const ModelInfo* info = findModel(QStringLiteral("elab"));
-    MachineFacts f;
-    f.description = MachineDescription::singleController(*info, QStringLiteral("sim"));
-    f.capabilities.insert("elab", info->capabilities);
-    f.schemas.insert("elab", info->schema);
-    f.models.insert("elab", info);
-    f.knownParameters.insert("elab", known);
-    return f;
-}
-
-ParameterValue perAxis(qint64 x, qint64 y, qint64 z)
-{
-    ParameterValue v;
-    v.perAxis = {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}};
-    return v;
-}
-
-// "start=100,100,100 feed=50,50,50": the known parameter values.
-ParameterSet known(const QString& text)
-{
-    ParameterSet out;
-    for (const QString& pair : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-        const QStringList kv = pair.split(QLatin1Char('='));
-        const QStringList v = kv.at(1).split(QLatin1Char(','));
-        const QString name = kv.at(0) == QLatin1String("start") ? QStringLiteral("start-speed")
-                                                                : QStringLiteral("feed-speed");
-        out.insert(name, perAxis(v.at(0).toLongLong(), v.at(1).toLongLong(), v.at(2).toLongLong()));
-    }
-    return out;
-}
 
 QStringList checked(const QString& text, const MachineFacts& facts)
 {
