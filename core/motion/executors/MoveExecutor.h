@@ -47,7 +47,6 @@ public:
     // it can. The check asks it of every axis a G28 names, the machine refuses the same.
     static QString referenceRefusal(const Capabilities& caps, const QString& axis,
                                     const QString& controller);
-    bool busy() const { return m_pending || m_motion != 0; }
     bool moveSent() const { return m_motion != 0; } // the machine moves for it now
     // The machine was stopped: the writes not yet acknowledged are not waited for (a move
     // already sent still reports its end).

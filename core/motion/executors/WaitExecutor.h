@@ -26,7 +26,6 @@ public:
     // A Dwell or a WaitInput; any other command is none of this executor's.
     void push(const MotionCommand& command);
     void cancel(); // nothing more is reported
-    bool busy() const { return m_dwell.isActive() || m_input != 0; }
 
 Q_SIGNALS:
     // The wait is over (ok), or why not: the machine has no such input (Unsupported), its
