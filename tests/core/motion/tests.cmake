@@ -9,6 +9,7 @@ stepdeck_add_test(tst_switchexecutor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_switc
                   ${CMAKE_SOURCE_DIR}/tests/core/program/ProgramCheckTestSupport.h LABELS unit)
 # The stream executor (issue 49): a machine's step streams and their tick rates.
 stepdeck_add_test(tst_streamexecutor SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_streamexecutor.cpp
+                  ${CMAKE_SOURCE_DIR}/tests/core/program/ElabBoardTestSupport.h
                   ${CMAKE_SOURCE_DIR}/tests/core/program/ProgramCheckTestSupport.h LABELS unit)
 # A move's rates (issue 49, issue 50): the feed-rate writes the check judges and the run sends.
 stepdeck_add_test(tst_moverates SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_moverates.cpp

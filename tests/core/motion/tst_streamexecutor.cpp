@@ -2,6 +2,7 @@
 // contours as a step stream, how their slots lie on the machine's axes, and the tick rate a
 // stream runs at from what the board holds. Its run at the board (tick write, <DC2> stream,
 // hold, override, settle) is asserted at the E-LAB simulator over a pty by tst_programcontour.
+#include "../program/ElabBoardTestSupport.h"
 #include "../program/ProgramCheckTestSupport.h"
 #include "TestMain.h"
 #include "motion/executors/StreamExecutor.h"
@@ -24,11 +25,10 @@ private Q_SLOTS:
 
 namespace {
 
+// The board's start speeds as the host knows them (ElabBoardTestSupport's text form).
 ParameterSet boardStartSpeeds(qint64 x, qint64 y, qint64 z)
 {
-    ParameterValue v;
-    v.perAxis = {{Axis::X, x}, {Axis::Y, y}, {Axis::Z, z}};
-    return {{QStringLiteral("start-speed"), v}};
+    return elabboard::known(QStringLiteral("start=%1,%2,%3").arg(x).arg(y).arg(z));
 }
 
 } // namespace
