@@ -214,18 +214,12 @@ void ProgramRunner::abort()
     }
     // The axes are still braking (or, without a stop command, running out): ended once the
     // machine reports the motion's end.
-    const QStringList runOut = controllersWithoutStop();
+    const QStringList runOut = machine::controllersWithoutStop(*m_machine);
     setState(RunState::Stopping);
     if (!runOut.isEmpty())
         Q_EMIT stopping(tr("%1 has no stop command: the move under way finishes by itself")
                             .arg(runOut.join(QStringLiteral(", "))));
     m_abortSettle.start(kAbortSettleMs);
-}
-
-// The controllers of the motion under way that have no stop command (EMIS, laser axes).
-QStringList ProgramRunner::controllersWithoutStop() const
-{
-    return machine::controllersWithoutStop(*m_machine);
 }
 
 void ProgramRunner::runNext()

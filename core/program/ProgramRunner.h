@@ -246,7 +246,6 @@ private:
     void startTouchOff(const ProgramBlock& block); // at a hold: an M6 that waits for Z?
     bool refuseWithoutTouchOff();                  // resume/step: refused while it waits
     bool refuseToGoOn(); // resume/step: refused while jogging, or waiting for a touch-off
-    QStringList controllersWithoutStop() const;
     // What each block sends (ProgramRunnerBlocks.cpp).
     void startBlock(const ProgramBlock& block);  // a new S first, then startAction()
     void startAction(const ProgramBlock& block); // what the block's action sends
@@ -271,9 +270,6 @@ private:
     void onRequestFinished(const QString& controllerId, const CommandResult& result);
     void onMoveFinished(bool ok, ErrorKind kind, const QString& message);
     void onControllerFailed(const QString& controllerId, const QString& message);
-    // A word's machine target on `axis` (absolute: work coordinates plus the offset).
-    double axisTarget(const ProgramBlock& block, const machine::MachineAxis& axis,
-                      double word) const;
     // Contours (ProgramRunnerContour.cpp).
     bool joinsContour(const ProgramBlock& block) const;
     void openContour(const ContourMoves::Stream& stream);

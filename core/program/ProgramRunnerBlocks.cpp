@@ -99,7 +99,11 @@ void ProgramRunner::startMove(const ProgramBlock& block)
     move.absolute = !block.relative;
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
         if (const int a = d.axisIndex(it.key()); a >= 0)
-            move.targets.emplace_back(a, axisTarget(block, d.axes.at(a), it.value()));
+            // Relative: the distance (a target from 0), as Machine::move takes it.
+            move.targets.emplace_back(
+                a,
+                *m_coordinates.target(block, d.axes.at(a), it.value(),
+                                      block.relative ? std::optional<double>(0.0) : std::nullopt));
     pushMove(move);
 }
 
@@ -135,14 +139,6 @@ void ProgramRunner::startHome(const ProgramBlock& block)
     for (auto it = block.axes.cbegin(); it != block.axes.cend(); ++it)
         reference.axes << m_machine->description().axisIndex(it.key());
     m_moves->push(reference);
-}
-
-double ProgramRunner::axisTarget(const ProgramBlock& block, const machine::MachineAxis& axis,
-                                 double word) const
-{
-    // An absolute target is in work coordinates (ProgramCheck): machine = work + offset.
-    const double offset = block.relative ? 0.0 : m_coordinates.offset(block, axis.name);
-    return units::toAxisUnits(axis, word, block.inches) + offset;
 }
 
 // Spindle, coolant and outputs: the command the lowering makes of the block.

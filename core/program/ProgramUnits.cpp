@@ -1,4 +1,5 @@
 #include "ProgramUnits.h"
+#include "motion/executors/MoveRates.h"
 #include <algorithm>
 #include <cmath>
 
@@ -23,14 +24,8 @@ std::optional<double> wordTarget(const machine::MachineAxis& axis, double word, 
 
 qint64 feedStepsPerSecond(const machine::MachineAxis& axis, double feedPerMinute, bool inches)
 {
-    const double unitsPerSecond = toAxisUnits(axis, feedPerMinute, inches) / 60.0;
-    const double steps = std::abs(unitsPerSecond * axis.stepsPerUnit);
-    // A rate beyond 9e15 (or not finite: a G93 rate of a huge distance) is out of every
-    // parameter's range anyway: kept at that bound, before rounding (llround of a value beyond
-    // qint64 gives no defined number).
-    if (!(steps <= 9.0e15))
-        return qint64(9.0e15);
-    return std::max<qint64>(1, std::llround(steps));
+    // The one rounding of a speed to steps/s (the move executor's, motion::MoveRates).
+    return motion::MoveRates::stepsPerSecond(axis, toAxisUnits(axis, feedPerMinute, inches) / 60.0);
 }
 
 } // namespace stepdeck::program::units

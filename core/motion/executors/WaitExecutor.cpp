@@ -1,6 +1,5 @@
 #include "WaitExecutor.h"
 #include "SwitchExecutor.h"
-#include "machine/ControllerFacts.h"
 #include "machine/Machine.h"
 #include <algorithm>
 
@@ -49,8 +48,8 @@ void WaitExecutor::startInput(const WaitInput& wait)
     const machine::MachineDescription& d = m_machine->description();
     QMap<QString, Capabilities> capabilities;
     for (const machine::MachineController& c : d.controllers)
-        if (const std::optional<machine::ControllerFacts> f = controllerFacts(*m_machine, c.id))
-            capabilities.insert(c.id, f->capabilities);
+        if (const ControllerSession* s = m_machine->session(c.id))
+            capabilities.insert(c.id, s->capabilities());
     const std::optional<SwitchExecutor::Io> io =
         SwitchExecutor(d, capabilities, {}).input(wait.number);
     if (!io) {

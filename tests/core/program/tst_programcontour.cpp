@@ -1,12 +1,11 @@
-// Programs whose feed moves run as one <DC2> stream on the E-LAB (issue 30, motion::StreamExecutor) on the
-// runner's rig: the E-LAB table (X, Y 400 steps/mm) and a Nanotec rotary axis, each simulator
-// on a real pseudo-terminal. The path is rebuilt from the step bytes the board executed and
-// compared, tick by tick, with the ideal path worked out here (lines and a circle by their
-// arc length at F); the blocks are reported as their ticks pass; a pause holds at a block's
-// end with the board still exactly there; STOP and a lost link leave the board still with no
-// step after the stop; STOP keeps every axis referenced, the host's count the board's (issue
-// 47); a feed hold shows the axes standing at the board's position while it lasts (issue 47
-// item 8).
+// Programs whose feed moves run as one <DC2> stream on the E-LAB (issue 30, motion::StreamExecutor)
+// on the runner's rig: the E-LAB table (X, Y 400 steps/mm) and a Nanotec rotary axis, each
+// simulator on a real pseudo-terminal. The path is rebuilt from the step bytes the board executed
+// and compared, tick by tick, with the ideal path worked out here (lines and a circle by their arc
+// length at F); the blocks are reported as their ticks pass; a pause holds at a block's end with
+// the board still exactly there; STOP and a lost link leave the board still with no step after the
+// stop; STOP keeps every axis referenced, the host's count the board's (issue 47); a feed hold
+// shows the axes standing at the board's position while it lasts (issue 47 item 8).
 #include "ProgramRunnerTestSupport.h"
 #include "TestMain.h"
 #include "protocols/elab/ElabCodec.h"
