@@ -23,6 +23,11 @@ std::optional<Program> MdiSession::prepare(const QString& line, const QStringLis
         std::optional<Program> program = parser.finish(&found);
         if (program && program->blockCount == 0)
             found << ProgramError{1, 1, tr("the line has nothing to run")};
+        // Cutter compensation follows a path: a line alone has none to look ahead on.
+        if (program && parser.state().modal.comp.on())
+            found << ProgramError{1, 1,
+                                  tr("cutter compensation (G41, G42) runs in programs, not "
+                                     "in MDI")};
         if (found.isEmpty() && program) {
             program->source = ProgramSource::bytes(text.toUtf8());
             m_pending = parser.state().modal;

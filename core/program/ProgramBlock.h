@@ -98,6 +98,25 @@ struct CycleWords
     }
 };
 
+// LinuxCNC's cutter radius compensation (modal group 7; docs/programs.md "Cutter
+// compensation"): the side of the programmed path the tool runs on and where its diameter comes
+// from. CutterCompensation moves the path by the tool's radius.
+enum class CompSide : quint8 { Off, Left, Right }; // G40, G41, G42
+struct CutterComp
+{
+    CompSide side = CompSide::Off;
+    int tool = -1;                  // G41/G42: the tool table's tool (D, or the one M6 loaded)
+    std::optional<double> diameter; // G41.1/G42.1 D: the diameter, program units
+    int activation = 0;             // counts the program's G41/G42: each begins a new entry
+
+    bool on() const { return side != CompSide::Off; }
+    bool operator==(const CutterComp& o) const
+    {
+        return side == o.side && tool == o.tool && diameter == o.diameter &&
+               activation == o.activation;
+    }
+};
+
 // M0 and M6: the program holds until the operator resumes (the block's prompt says why).
 inline bool waitsForOperator(BlockKind kind)
 {
@@ -153,6 +172,7 @@ struct ProgramBlock
     // G43: the tool whose length offsets the tool axis (Z), -1 none (G49); 0 (H0) none either.
     int lengthTool = -1;
     bool appliesLengthOffset = false; // G43 is on this line (the check names its tool here)
+    CutterComp comp;                  // G40 / G41 / G42 in effect
     QString message;  // "(MSG, text)": shown to the operator when the run reaches the line
     int oNumber = 0;  // O<n>
     qint64 count = 0; // O repeat: how many times

@@ -48,6 +48,16 @@ int startIndex(ProgramReader& reader, int fromLine, CheckErrors* errors)
                                     .arg(b ? b->line : 0)};
         return -1;
     }
+    // Cutter compensation enters the path at its first move (CutterCompensation): a run
+    // cannot join it halfway.
+    if (const ProgramBlock* b = reader.at(start); b && b->comp.on()) {
+        *errors << ProgramError{fromLine, 1,
+                                ProgramCheck::tr("run from line %1: cutter compensation (G41/G42) "
+                                                 "is on there; start on a line before it is "
+                                                 "turned on, or after its G40")
+                                    .arg(fromLine)};
+        return -1;
+    }
     return start;
 }
 

@@ -132,6 +132,7 @@ void carryModal(const ModalState& modal, ProgramBlock* block)
     block->lengthTool = modal.lengthTool;
     block->pathMode = modal.pathMode;
     block->pathTolerance = modal.pathTolerance;
+    block->comp = modal.comp;
 }
 
 // M0, M1: the line's comment; M6: the tool (T on this line or an earlier one) and its prompt.
@@ -290,6 +291,10 @@ bool ProgramLine::parse(const LexedLine& line, int lineNumber, const QStringList
         ++first;
     }
     if (first != last && first->letter == QLatin1Char('O')) {
+        if (modal->comp.on())
+            return fail(first->column, tr("O%1 with cutter compensation on: G40 before it (a "
+                                          "repeat's passes would enter the path anew)")
+                                           .arg(first->valueText().mid(1)));
         if (last - first > 1)
             return fail(first[1].column,
                         tr("O%1 stands alone on its line").arg(first->valueText().mid(1)));
@@ -314,6 +319,8 @@ bool ProgramLine::parse(const LexedLine& line, int lineNumber, const QStringList
         return fail(e->column, e->message);
     if (const std::optional<ProgramError> e = lineBlocks(sorted, b, line, next, blocks))
         return fail(e->column, e->message);
+    if (const auto [column, why] = checkCutterComp(sorted, *modal, &next, *blocks); column > 0)
+        return fail(column, why);
     *modal = next;
     return true;
 }

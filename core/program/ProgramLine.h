@@ -25,8 +25,13 @@ struct ModalState
     int coordinateSystem = -1;           // G54..G59 (-1: none yet, the run's active one)
     std::optional<int> loadedTool;       // the tool the last M6 loaded
     int lengthTool = -1;                 // G43's tool (-1: G49, none)
-    bool retractToR = false;             // G99 (G98 default): where a drilling cycle retracts
-    bool inverseTime = false;            // G93 (G94, units per minute, default)
+    CutterComp comp;                     // G40 / G41 / G42
+    int compActivations = 0;             // the G41/G42 so far (CutterComp::activation)
+    // After G41/G42 the first move in X or Y enters the path; after G40 the first move leaves it
+    // (LinuxCNC): neither may be an arc.
+    enum class CompMove : quint8 { None, Entry, Exit } compMove = CompMove::None;
+    bool retractToR = false;  // G99 (G98 default): where a drilling cycle retracts
+    bool inverseTime = false; // G93 (G94, units per minute, default)
     // The drilling cycle in effect (motion DrillCycle): its code and its sticky numbers.
     int cycleCode = 0;
     std::optional<double> cycleR, cycleBottom, cyclePeck, cycleDwell;

@@ -1,10 +1,12 @@
 #pragma once
 // Internal to ProgramLine: a line's words sorted by role, and the checks of each action's
 // words (ProgramLineChecks.cpp).
+#include "ProgramBlock.h"
 #include "ProgramLexer.h"
 #include <QMap>
 #include <QVarLengthArray>
 #include <cmath>
+#include <vector>
 
 namespace stepdeck::program {
 
@@ -31,10 +33,11 @@ struct Words
 {
     std::optional<BlockKind> action;
     const ProgramWord* actionWord = nullptr;
-    QVarLengthArray<LineAction, 4> others; // as written; ProgramLine orders them
-    int mWords = 0;                        // M words on the line (LinuxCNC: at most 4)
-    std::optional<bool> relative;          // G90 / G91
-    std::optional<bool> inches;            // G21 / G20
+    QVarLengthArray<LineAction, 4> others;  // as written; ProgramLine orders them
+    int mWords = 0;                         // M words on the line (LinuxCNC: at most 4)
+    std::optional<bool> relative;           // G90 / G91
+    std::optional<bool> inches;             // G21 / G20
+    const ProgramWord* unitsWord = nullptr; // its word
     // LinuxCNC's other modal groups, each at most once a line (issue 29): the word of each
     // group given (group number as LinuxCNC numbers them), and what it sets.
     QMap<int, const ProgramWord*> groups;
@@ -46,6 +49,7 @@ struct Words
     std::optional<int> coordinateSystem;             // G54..G59 (0 = G54)
     const ProgramWord* machineCoordinates = nullptr; // G53
     std::optional<bool> lengthOffset;                // G43 (true) / G49 (false)
+    std::optional<int> cutterComp;                   // G40, G41, G41.1, G42, G42.1 (tenths)
     std::optional<bool> retractToR;                  // G99 (true) / G98 (false)
     std::optional<bool> inverseTime;                 // G93 (true) / G94 (false)
     int cycleCode = 0;                               // G81, G82, G83, G73: its number
@@ -88,6 +92,13 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal);
 // column 0: none.
 std::pair<int, QString> applyPolar(Words* words, const ModalState& modal,
                                    const QStringList& axisNames);
+// G40, G41/G42 [D<tool>], G41.1/G42.1 D<diameter> into *modal (ProgramLineModes.cpp).
+std::pair<int, QString> applyCutterComp(Words* words, ModalState* modal);
+// What LinuxCNC refuses while cutter compensation is on, and an arc as its entry or exit move,
+// for the line's blocks (ProgramLineModes.cpp): (column, message); column 0: none. *after's
+// compMove is updated.
+std::pair<int, QString> checkCutterComp(const Words& words, const ModalState& before,
+                                        ModalState* after, const std::vector<ProgramBlock>& blocks);
 // G81, G82, G83, G73: the cycle's numbers (this line's, or sticky) into block->cycle and
 // *modal (ProgramLineModes.cpp).
 std::pair<int, QString> drillCycle(const Words& sorted, ModalState* modal, ProgramBlock* block);

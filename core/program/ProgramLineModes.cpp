@@ -69,6 +69,37 @@ std::pair<int, QString> applyLengthOffset(const Words* words, ModalState* modal)
     return {};
 }
 
+// A block LinuxCNC refuses while cutter compensation is on (interp_convert.cc: G28/G30, G53,
+// tool changes, coordinate system and axis offset changes, canned cycles), with what to do.
+QString refusedUnderComp(const ProgramBlock& b)
+{
+    const QString off = ProgramLine::tr("turn cutter compensation off (G40) before it");
+    switch (b.kind) {
+    case BlockKind::Home:
+        return ProgramLine::tr("G28 with cutter compensation on: %1, as in LinuxCNC").arg(off);
+    case BlockKind::ToolChange:
+        return ProgramLine::tr("M6 with cutter compensation on: %1, as in LinuxCNC").arg(off);
+    case BlockKind::DrillCycle:
+        return ProgramLine::tr("a drilling cycle with cutter compensation on: %1").arg(off);
+    case BlockKind::SetCoordinates:
+    case BlockKind::AxisOffset:
+    case BlockKind::AxisOffsetReset:
+    case BlockKind::AxisOffsetSuspend:
+    case BlockKind::AxisOffsetRestore:
+        return ProgramLine::tr("%1 changes the offsets under cutter compensation: %2, as in "
+                               "LinuxCNC")
+            .arg(blockWord(b), off);
+    default:
+        break;
+    }
+    if (b.machineCoordinates)
+        return ProgramLine::tr("G53 with cutter compensation on: %1, as in LinuxCNC").arg(off);
+    if (b.inverseTime)
+        return ProgramLine::tr("inverse time (G93) with cutter compensation is not supported: "
+                               "use G94");
+    return {};
+}
+
 // A drilling cycle's number `letter`: from this line, or (sticky) from the line before while
 // the same cycle stays the motion mode; into *keep. *missing: neither has it.
 const ProgramWord* cycleNumber(const Words& sorted, QChar letter, bool sticky,
@@ -144,6 +175,8 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
         modal->tool = int(words->tool->value);
     if (const auto [column, why] = applyLengthOffset(words, modal); column > 0)
         return {column, why};
+    if (const auto [column, why] = applyCutterComp(words, modal); column > 0)
+        return {column, why};
     if (words->relative)
         modal->relative = *words->relative;
     if (words->retractToR)
@@ -170,6 +203,112 @@ std::pair<int, QString> applyModalWords(Words* words, ModalState* modal)
                 f->column,
                 ProgramLine::tr("%1: the feed rate must be greater than 0").arg(f->valueText())};
         modal->feed = f->value;
+    }
+    return {};
+}
+
+// G40, G41/G42 [D<tool>], G41.1/G42.1 D<diameter> (LinuxCNC, docs/programs.md "Cutter
+// compensation"). G41 without D takes the tool the last M6 loaded (an M6 on this line counts);
+// LinuxCNC would then compensate by 0 where no tool is loaded, which StepDeck refuses as G43 does.
+std::pair<int, QString> applyCutterComp(Words* words, ModalState* modal)
+{
+    if (!words->cutterComp)
+        return {};
+    const int tenths = *words->cutterComp;
+    const ProgramWord* g = words->groups.value(7);
+    const ProgramWord* d = words->parameters.value('D');
+    if (tenths == 400) { // G40; D stays and is refused as a word no action takes
+        modal->comp = CutterComp{};
+        return {};
+    }
+    if (modal->comp.on())
+        return {g->column, ProgramLine::tr("%1: cutter compensation is on already: G40 first, as "
+                                           "in LinuxCNC")
+                               .arg(g->valueText())};
+    if (modal->plane != Plane::XY)
+        return {g->column, ProgramLine::tr("%1: cutter compensation works in the XY plane (G17) "
+                                           "only")
+                               .arg(g->valueText())};
+    CutterComp comp;
+    comp.side = tenths == 410 || tenths == 411 ? CompSide::Left : CompSide::Right;
+    if (tenths % 10 == 1) { // G41.1, G42.1: D is the diameter
+        if (!d)
+            return {g->column,
+                    ProgramLine::tr("%1 needs D: the tool's diameter").arg(g->valueText())};
+        if (d->value < 0 || d->value > 1e6)
+            return {
+                d->column,
+                ProgramLine::tr("%1: the diameter must lie within 0..1000000").arg(d->valueText())};
+        comp.diameter = d->value;
+    } else if (d) {
+        if (!isWhole(d->value) || d->value < 0 || d->value > kMaxTool)
+            return {d->column, ProgramLine::tr("%1: D takes a tool number, whole, 0..%2 (G41.1 "
+                                               "D takes a diameter)")
+                                   .arg(d->valueText())
+                                   .arg(kMaxTool)};
+        comp.tool = int(d->value);
+    } else if (modal->loadedTool) {
+        comp.tool = *modal->loadedTool;
+    } else {
+        return {g->column, ProgramLine::tr("%1 needs D<tool> or a tool loaded by M6 (T<n> M6) "
+                                           "before it")
+                               .arg(g->valueText())};
+    }
+    words->parameters.remove('D');
+    comp.activation = ++modal->compActivations;
+    modal->comp = comp;
+    modal->compMove = ModalState::CompMove::Entry;
+    return {};
+}
+
+std::pair<int, QString> checkCutterComp(const Words& words, const ModalState& before,
+                                        ModalState* after, const std::vector<ProgramBlock>& blocks)
+{
+    if (before.comp.on() && !after->comp.on())
+        after->compMove = ModalState::CompMove::Exit;
+    if (before.comp.on() && after->comp.on()) {
+        if (before.plane != after->plane)
+            return {words.groups.value(2)->column,
+                    ProgramLine::tr("the plane cannot change under cutter compensation: G40 "
+                                    "first, as in LinuxCNC")};
+        if (before.inches != after->inches)
+            return {words.unitsWord ? words.unitsWord->column : 1,
+                    ProgramLine::tr("the units cannot change under cutter compensation: G40 "
+                                    "first, as in LinuxCNC")};
+        if (before.coordinateSystem != after->coordinateSystem)
+            return {words.groups.value(12)->column,
+                    ProgramLine::tr("the coordinate system cannot change under cutter "
+                                    "compensation: G40 first, as in LinuxCNC")};
+    }
+    for (const ProgramBlock& b : blocks) {
+        const int column = b.actionColumn > 0 ? b.actionColumn : 1;
+        if (b.comp.on())
+            if (const QString why = refusedUnderComp(b); !why.isEmpty())
+                return {column, why};
+        const bool planeMove =
+            isArc(b.kind) ||
+            ((b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed) &&
+             (b.axes.contains(QStringLiteral("X")) || b.axes.contains(QStringLiteral("Y"))));
+        const ModalState::CompMove pending = after->compMove;
+        if (pending == ModalState::CompMove::None)
+            continue;
+        // LinuxCNC: after G40 the next move of any kind leaves the path; after G41/G42 the first
+        // move in X or Y enters it.
+        const bool leaves =
+            pending == ModalState::CompMove::Exit &&
+            (isArc(b.kind) || b.kind == BlockKind::Rapid || b.kind == BlockKind::Feed);
+        if (!planeMove && !leaves)
+            continue;
+        if (isArc(b.kind))
+            return {column,
+                    pending == ModalState::CompMove::Entry
+                        ? ProgramLine::tr("%1 enters cutter compensation: the first move after "
+                                          "G41/G42 must be a straight line (G0 or G1)")
+                              .arg(blockWord(b))
+                        : ProgramLine::tr("%1 leaves cutter compensation: the first move after "
+                                          "G40 must be a straight line (G0 or G1), as in LinuxCNC")
+                              .arg(blockWord(b))};
+        after->compMove = ModalState::CompMove::None;
     }
     return {};
 }

@@ -23,7 +23,7 @@ const QString& letterString(QChar l)
     }();
     return letters.at(l.unicode() - 'A'); // callers pass one of kAxisLetters
 }
-const QString kParameterLetters = QStringLiteral("FSPLQIJKRH");
+const QString kParameterLetters = QStringLiteral("FSPLQIJKRHD");
 
 std::optional<BlockKind> actionOfG(int code)
 {
@@ -192,6 +192,7 @@ private:
             if (out->inches)
                 return ProgramLine::tr("G20 and G21 on one line");
             out->inches = code == 20;
+            out->unitsWord = &w;
             return {};
         }
         const std::optional<BlockKind> action = g ? actionOfG(code) : actionOfM(code);
@@ -325,7 +326,14 @@ private:
         case 940:
             out->inverseTime = tenths == 930;
             break;
-        default: // G54..G59; G40: the mode StepDeck always runs in
+        case 400:
+        case 410:
+        case 411:
+        case 420:
+        case 421:
+            out->cutterComp = tenths;
+            break;
+        default: // G54..G59
             if (isCoordinateSystem(tenths))
                 out->coordinateSystem = tenths / 10 - 54;
             break;
@@ -363,7 +371,9 @@ private:
             return 14; // G97 (rpm, LinuxCNC's default) is StepDeck's only spindle mode
         case 400:
         case 410:
+        case 411:
         case 420:
+        case 421:
             return 7;
         case 430:
         case 490:
@@ -384,11 +394,6 @@ private:
     static QString refusalOf(int tenths, const ProgramWord& w)
     {
         switch (tenths) {
-        case 410:
-        case 420:
-            return ProgramLine::tr("G%1 (cutter radius compensation) is not supported: let the "
-                                   "CAM post compensate the path (G40 is accepted)")
-                .arg(tenths / 10);
         case 950:
             return ProgramLine::tr("G95 (feed per revolution) is not supported: no controller "
                                    "reports its spindle's revolutions; use G94");

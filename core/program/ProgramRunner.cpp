@@ -232,7 +232,9 @@ void ProgramRunner::runNext()
         if (m_contour && !m_contour->isClosed() && !m_contour->hasRoom())
             return; // StreamExecutor::roomForMoves calls again
         if (!std::exchange(m_heldBlock, false) && !advance()) {
-            if (!m_reader->error().isEmpty())
+            if (!m_compError.isEmpty())
+                fail(ErrorKind::InvalidValue, m_compError);
+            else if (!m_reader->error().isEmpty())
                 fail(ErrorKind::InvalidValue, m_reader->error());
             else if (m_contour)
                 m_contour->close(); // its end comes back here, and then the program's
@@ -259,6 +261,12 @@ void ProgramRunner::runNext()
 // Onto the next block that does something; repeats are counted here.
 bool ProgramRunner::advance()
 {
+    if (!m_compQueue.empty()) { // the move after a corner's arc (CutterCompensation)
+        m_block = std::move(m_compQueue.front());
+        m_compQueue.pop_front();
+        m_uncounted = false;
+        return true;
+    }
     for (;;) {
         const ProgramBlock* read = m_reader->at(++m_index);
         if (!read)
@@ -285,10 +293,28 @@ bool ProgramRunner::advance()
             }
             continue;
         default:
-            return true;
+            return !m_comp->applies(b) || compensate();
         }
     }
     return false;
+}
+
+// The block as the tool's path under cutter compensation, as the check walked it: a corner's
+// arc first (not counted as a block of its own), then the move. false: refused (m_compError).
+bool ProgramRunner::compensate()
+{
+    std::vector<ProgramBlock> out;
+    int next = m_index + 1;
+    const auto following = [this, &next]() { return m_reader->at(next++); };
+    if (const auto error = m_comp->lower(m_block, m_coordinates, m_programmed, following, &out)) {
+        m_compError = error->message;
+        return false;
+    }
+    m_block = std::move(out.front());
+    for (size_t i = 1; i < out.size(); ++i)
+        m_compQueue.push_back(std::move(out[i]));
+    m_uncounted = !m_compQueue.empty();
+    return true;
 }
 
 void ProgramRunner::blockDone()
@@ -299,7 +325,8 @@ void ProgramRunner::blockDone()
         approachDone();
         return;
     }
-    ++m_blocksDone;
+    if (!std::exchange(m_uncounted, false))
+        ++m_blocksDone;
     const ProgramBlock& block = m_block;
     if (m_arc || m_cycle)
         endPath(&m_programmed);

@@ -1,6 +1,7 @@
 #pragma once
 #include "ArcPath.h"
 #include "ContourMoves.h"
+#include "CutterCompensation.h"
 #include "DrillCycle.h"
 #include "ProgramBlock.h"
 #include "ProgramCheck.h"
@@ -11,6 +12,7 @@
 #include <QPointer>
 #include <QSet>
 #include <QTimer>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -228,6 +230,7 @@ private:
     void runPrelude();   // the next block of m_prelude
     void approachDone(); // a rapid of m_prelude arrived
     bool advance();      // onto the next block that does something; false at the end
+    bool compensate();   // m_block under G41/G42 (CutterCompensation)
     void blockDone();
     void finishProgram(bool programEnd = false); // programEnd: M2/M30, spindle and coolant off
     void onSwitchedOff(bool ok, const QString& message); // M2/M30: spindle and coolant off
@@ -352,6 +355,12 @@ private:
     std::unique_ptr<motion::StreamExecutor> m_contour; // the contour running, if any
     // m_block was read but waits for the contour to end (runNext takes it, not the next one).
     bool m_heldBlock = false;
+    // G41/G42 (CutterCompensation, from m_runFacts): the blocks a compensated block runs as after
+    // m_block, whether m_block is a corner's arc (not counted), and a refusal that ends the run.
+    std::unique_ptr<CutterCompensation> m_comp;
+    std::deque<ProgramBlock> m_compQueue;
+    bool m_uncounted = false;
+    QString m_compError;
     bool m_feedHeld = false; // holdFeed() held a contour on its path
     double m_feedOverride = 1.0;
 };

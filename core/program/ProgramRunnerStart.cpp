@@ -162,6 +162,10 @@ void ProgramRunner::resetRun(const MachineFacts& facts)
     m_contourMoves.reset(); // it refers to m_runFacts
     m_runFacts = facts;
     m_contourMoves = std::make_unique<ContourMoves>(m_runFacts);
+    m_comp = std::make_unique<CutterCompensation>(m_runFacts.description, m_runFacts.tools);
+    m_compQueue.clear();
+    m_uncounted = false;
+    m_compError.clear();
     m_coordinated.clear();
     for (auto c = facts.capabilities.cbegin(); c != facts.capabilities.cend(); ++c)
         if (c->coordinatedFeed)

@@ -12,7 +12,8 @@ ProgramSimulation::ProgramSimulation(const MachineFacts& facts, ProgramReader* r
                                      CheckErrors* errors)
     : m_facts(facts), m_axes(facts.description.axes), m_reader(*reader), m_moves(m_planned.moves),
       m_errors(errors), m_plan(facts, &m_planned, errors), m_contours(m_plan.contours()),
-      m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.lengthTools())
+      m_coordinates(facts.coordinateSystems, facts.activeSystem, facts.lengthTools()),
+      m_comp(facts.description, facts.tools)
 {
     const size_t n = size_t(m_axes.size());
     m_steps.assign(n, 0);
@@ -78,7 +79,14 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
                 ++i;
             continue;
         }
-        const bool first = visit(i, *block);
+        // Under cutter compensation the block runs as the tool's path (CutterCompensation),
+        // which looks at the blocks after it: the walk keeps its own copy.
+        const bool compensated = m_comp.applies(*block);
+        if (compensated) {
+            m_compBlock = *block;
+            block = &m_compBlock;
+        }
+        const bool first = compensated ? markVisit(i, *block) : visit(i, *block);
         ++m_blocksRun;
         if (kind != BlockKind::Modal) // as ProgramRunner::advance() passes modal words by
             ++m_blocksDone;
@@ -88,7 +96,10 @@ bool ProgramSimulation::run(int start, ProgramPreview* preview, const CheckProgr
             i = std::max(i + 1, m_firstUnvisited);
             continue;
         }
-        execute(m_planned.block);
+        if (compensated)
+            compensate(i, *block, first);
+        else
+            execute(m_planned.block);
         if (kind == BlockKind::End)
             walking = false; // nothing follows M2/M30 (the parser refuses it)
         ++i;
@@ -156,6 +167,13 @@ int ProgramSimulation::repeatStart(int i, const ProgramBlock& block)
 // without them.
 bool ProgramSimulation::visit(int i, const ProgramBlock& block)
 {
+    const bool first = markVisit(i, block);
+    plan(block, first);
+    return first;
+}
+
+bool ProgramSimulation::markVisit(int i, const ProgramBlock& block)
+{
     const bool first = i >= m_firstUnvisited;
     if (first) {
         m_firstUnvisited = i + 1;
@@ -163,6 +181,30 @@ bool ProgramSimulation::visit(int i, const ProgramBlock& block)
         if (m_firstVisit)
             m_firstVisit(block);
     }
+    return first;
+}
+
+// The blocks CutterCompensation runs in place of block i, each planned and executed as the run
+// sends them. Where it refuses, the block is walked as written so that the walk goes on.
+void ProgramSimulation::compensate(int i, const ProgramBlock& block, bool first)
+{
+    m_compOut.clear();
+    int next = i + 1;
+    const auto following = [this, &next]() { return m_reader.at(next++); };
+    if (const auto error =
+            m_comp.lower(block, m_coordinates, m_programmed, following, &m_compOut)) {
+        if (first)
+            m_errors->add(block.line, error->column, [&] { return error->message; });
+        m_compOut.assign(1, block);
+    }
+    for (const ProgramBlock& b : m_compOut) {
+        plan(b, first);
+        execute(m_planned.block);
+    }
+}
+
+void ProgramSimulation::plan(const ProgramBlock& block, bool first)
+{
     if (CoordinatedFeed::applies(block, m_facts.description, m_coordinated)) {
         // Each axis' share of F follows from where the block starts, as the run resolves it.
         const machine::MachineDescription& d = m_facts.description;
@@ -184,7 +226,6 @@ bool ProgramSimulation::visit(int i, const ProgramBlock& block)
     } else {
         m_plan.plan(block, first);
     }
-    return first;
 }
 
 // O repeat [0]: its blocks do not run, but they are checked as blocks (the plan's errors).

@@ -4,6 +4,7 @@
 // ProgramSimulationArc.cpp, moves across controllers in ProgramSimulationControllers.cpp).
 #include "ArcPath.h"
 #include "ContourMoves.h"
+#include "CutterCompensation.h"
 #include "DrillCycle.h"
 #include "FeedLimit.h"
 #include "PreviewPath.h"
@@ -265,6 +266,9 @@ private:
     };
     // The block at i planned (reporting on its first visit); false at the end.
     bool visit(int i, const ProgramBlock& block);
+    bool markVisit(int i, const ProgramBlock& block); // true on the first visit
+    void plan(const ProgramBlock& block, bool first); // into m_planned
+    void compensate(int i, const ProgramBlock& block, bool first);
     void runPrelude();
     void skipBody(int from, int end); // a repeat of no passes: its blocks planned, not walked
     int repeatStart(int i, const ProgramBlock& block);
@@ -337,6 +341,9 @@ private:
     AxisPositions m_programmed;       // the current point (unrounded), as the run follows it
     ProgramCoordinates m_coordinates; // G54..G59, G92 as the program changes them
     std::vector<Loop> m_loops;
+    CutterCompensation m_comp;
+    ProgramBlock m_compBlock;            // the block compensated (the look ahead reads on)
+    std::vector<ProgramBlock> m_compOut; // the blocks it runs as
     qint64 m_blocksRun = 0;
     qint64 m_blocksDone = 0;     // of them, those that do something (PreviewPoint::blocksDone)
     qint64 m_repeatedBlocks = 0; // run again by a repeat's next passes

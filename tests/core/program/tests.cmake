@@ -24,6 +24,9 @@ stepdeck_add_test(tst_programcheckdialect SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_
 # it (Z up first or down last) and the check of them and of the restored spindle.
 stepdeck_add_test(tst_runfromline SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_runfromline.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
+# G41/G42 (issue 50 item 7): the tool's path worked out by hand, and LinuxCNC's refusals.
+stepdeck_add_test(tst_cuttercompensation SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_cuttercompensation.cpp
+                  ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)
 # Blocks lowered to motion commands, as rs274's canonical text (issue 49): goldens by hand.
 stepdeck_add_test(tst_programlowering SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_programlowering.cpp
                   ${CMAKE_CURRENT_LIST_DIR}/ProgramCheckTestSupport.h LABELS unit)

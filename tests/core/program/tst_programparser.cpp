@@ -280,8 +280,10 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                              << "1:4: T appears twice on the line";
     QTest::newRow("fractional G") << "G0.5"
                                   << "1:1: G0.5 is not supported";
-    QTest::newRow("unknown letter") << "G0 X1 D2"
-                                    << "1:7: D2 is not a word";
+    QTest::newRow("unknown letter") << "G0 X1 E2"
+                                    << "1:7: E2 is not a word";
+    QTest::newRow("D without G41") << "G0 X1 D2"
+                                   << "1:7: D2 is not used by G0";
     QTest::newRow("axis not on machine") << "G0 B5"
                                          << "1:4: the machine has no axis B";
     QTest::newRow("axis twice") << "G0 X1 X2"
@@ -370,11 +372,14 @@ void TestProgramParser::parse_invalid_lineColumnAndMessage_data()
                                 << "1:4: G0 and G80 on one line";
     QTest::newRow("G80 cancels the motion") << "G0 X1\nG80\nX2"
                                             << "3:1: axis words need G0, G1, G2 or G3";
-    QTest::newRow("G41") << "G41 D1"
-                         << "1:1: G41 (cutter radius compensation) is not supported: "
-                            "let the CAM post compensate the path";
-    QTest::newRow("G42.1") << "G42.1"
-                           << "1:1: G42.1 is not supported";
+    // Issue 50 item 7: cutter compensation (tst_cuttercompensation has the rest).
+    QTest::newRow("G41 and G40") << "G41.1 D2 G40"
+                                 << "1:10: G41.1 and G40 on one line: they are of one modal group";
+    QTest::newRow("G42.1 without D") << "G42.1"
+                                     << "1:1: G42.1 needs D: the tool's diameter";
+    QTest::newRow("G41 D fraction") << "G41 D1.5"
+                                    << "1:5: D1.5: D takes a tool number, whole, 0..99999 (G41.1 "
+                                       "D takes a diameter)";
     QTest::newRow("G43 without H or a loaded tool")
         << "T1\nG0 X1\nG43 Z5"
         << "3:1: G43 needs H<n> or a tool loaded by M6 (T<n> M6) before it";
