@@ -3991,6 +3991,37 @@
         </message>
     </context>
     <context>
+        <name>stepdeck::program::CutterCompensation</name>
+        <message>
+            <source>cutter compensation needs the axes X and Y in millimetres</source>
+            <translation>die Werkzeugradiuskorrektur braucht die Achsen X und Y in Millimetern</translation>
+        </message>
+        <message>
+            <source>cutter compensation begins where X or Y is unknown: reference them first (G28)</source>
+            <translation>die Werkzeugradiuskorrektur beginnt, wo X oder Y unbekannt ist: zuerst referenzieren (G28)</translation>
+        </message>
+        <message>
+            <source>cutter compensation: tool %1 is not in the tool table; give its diameter with G41.1/G42.1 D&lt;diameter&gt;</source>
+            <translation>Werkzeugradiuskorrektur: Werkzeug %1 steht nicht in der Werkzeugtabelle; seinen Durchmesser mit G41.1/G42.1 D&lt;Durchmesser&gt; angeben</translation>
+        </message>
+        <message>
+            <source>cutter compensation: the tool (diameter %1) cannot reach the inside corner of lines %2 and %3 without cutting into the part</source>
+            <translation>Werkzeugradiuskorrektur: das Werkzeug (Durchmesser %1) erreicht die Innenecke der Zeilen %2 und %3 nicht, ohne ins Werkstück zu schneiden</translation>
+        </message>
+        <message>
+            <source>%1 enters cutter compensation: the first move after G41/G42 must be a straight line (G0 or G1)</source>
+            <translation>%1 beginnt die Werkzeugradiuskorrektur: die erste Bewegung nach G41/G42 muss eine Gerade sein (G0 oder G1)</translation>
+        </message>
+        <message>
+            <source>cutter compensation: the entry move (%1) is not longer than the tool's radius (%2), as LinuxCNC requires</source>
+            <translation>Werkzeugradiuskorrektur: die Anfahrbewegung (%1) ist nicht länger als der Werkzeugradius (%2), wie LinuxCNC es verlangt</translation>
+        </message>
+        <message>
+            <source>cutter compensation: the tool's radius (%1) is not less than the arc's (%2): the tool does not fit inside it, as LinuxCNC refuses</source>
+            <translation>Werkzeugradiuskorrektur: der Werkzeugradius (%1) ist nicht kleiner als der des Bogens (%2): das Werkzeug passt nicht hinein, wie LinuxCNC es ablehnt</translation>
+        </message>
+    </context>
+    <context>
         <name>stepdeck::program::DrillCycle</name>
         <message>
             <source>%1: the position of %2 is unknown, so the cycle has no start: reference the axis first (G28 %2)</source>
@@ -4025,6 +4056,10 @@
         <message>
             <source>the line has nothing to run</source>
             <translation>die Zeile enthält nichts auszuführen</translation>
+        </message>
+        <message>
+            <source>cutter compensation (G41, G42) runs in programs, not in MDI</source>
+            <translation>die Werkzeugradiuskorrektur (G41, G42) läuft in Programmen, nicht in MDI</translation>
         </message>
     </context>
     <context>
@@ -4495,6 +4530,10 @@
             <source>S%1 runs at S%2, the laser's full power (the machine file's spindle scale)</source>
             <translation>S%1 läuft mit S%2, der vollen Leistung des Lasers (Spindelskala der Maschinendatei)</translation>
         </message>
+        <message>
+            <source>run from line %1: cutter compensation (G41/G42) is on there; start on a line before it is turned on, or after its G40</source>
+            <translation>Start ab Zeile %1: dort ist die Werkzeugradiuskorrektur (G41/G42) an; auf einer Zeile vor ihrem Einschalten oder nach ihrem G40 beginnen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramCoordinates</name>
@@ -4634,10 +4673,6 @@
         <message>
             <source>the repeat count must be a whole number 0..1000000</source>
             <translation>die Anzahl der Wiederholungen muss eine ganze Zahl 0..1000000 sein</translation>
-        </message>
-        <message>
-            <source>G%1 (cutter radius compensation) is not supported: let the CAM post compensate the path (G40 is accepted)</source>
-            <translation>G%1 (Werkzeugradiuskorrektur) wird nicht unterstützt: den Pfad vom CAM-Postprozessor korrigieren lassen (G40 wird angenommen)</translation>
         </message>
         <message>
             <source>G95 (feed per revolution) is not supported: no controller reports its spindle's revolutions; use G94</source>
@@ -4946,6 +4981,82 @@
         <message>
             <source>%1 (a user-defined M code, a program of a LinuxCNC configuration) is not supported</source>
             <translation>%1 (ein benutzerdefinierter M-Code, ein Programm einer LinuxCNC-Konfiguration) wird nicht unterstützt</translation>
+        </message>
+        <message>
+            <source>O%1 with cutter compensation on: G40 before it (a repeat's passes would enter the path anew)</source>
+            <translation>O%1 bei eingeschalteter Werkzeugradiuskorrektur: G40 davor (jeder Durchlauf der Wiederholung würde die Bahn neu anfahren)</translation>
+        </message>
+        <message>
+            <source>turn cutter compensation off (G40) before it</source>
+            <translation>die Werkzeugradiuskorrektur davor ausschalten (G40)</translation>
+        </message>
+        <message>
+            <source>G28 with cutter compensation on: %1, as in LinuxCNC</source>
+            <translation>G28 bei eingeschalteter Werkzeugradiuskorrektur: %1, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>M6 with cutter compensation on: %1, as in LinuxCNC</source>
+            <translation>M6 bei eingeschalteter Werkzeugradiuskorrektur: %1, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>a drilling cycle with cutter compensation on: %1</source>
+            <translation>ein Bohrzyklus bei eingeschalteter Werkzeugradiuskorrektur: %1</translation>
+        </message>
+        <message>
+            <source>%1 changes the offsets under cutter compensation: %2, as in LinuxCNC</source>
+            <translation>%1 ändert die Verschiebungen unter Werkzeugradiuskorrektur: %2, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>G53 with cutter compensation on: %1, as in LinuxCNC</source>
+            <translation>G53 bei eingeschalteter Werkzeugradiuskorrektur: %1, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>inverse time (G93) with cutter compensation is not supported: use G94</source>
+            <translation>inverse Zeit (G93) mit Werkzeugradiuskorrektur wird nicht unterstützt: G94 verwenden</translation>
+        </message>
+        <message>
+            <source>%1: cutter compensation is on already: G40 first, as in LinuxCNC</source>
+            <translation>%1: die Werkzeugradiuskorrektur ist schon an: zuerst G40, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>%1: cutter compensation works in the XY plane (G17) only</source>
+            <translation>%1: die Werkzeugradiuskorrektur arbeitet nur in der XY-Ebene (G17)</translation>
+        </message>
+        <message>
+            <source>%1 needs D: the tool's diameter</source>
+            <translation>%1 braucht D: den Durchmesser des Werkzeugs</translation>
+        </message>
+        <message>
+            <source>%1: the diameter must lie within 0..1000000</source>
+            <translation>%1: der Durchmesser muss im Bereich 0..1000000 liegen</translation>
+        </message>
+        <message>
+            <source>%1: D takes a tool number, whole, 0..%2 (G41.1 D takes a diameter)</source>
+            <translation>%1: D nimmt eine ganze Werkzeugnummer 0..%2 (G41.1 D nimmt einen Durchmesser)</translation>
+        </message>
+        <message>
+            <source>%1 needs D&lt;tool&gt; or a tool loaded by M6 (T&lt;n&gt; M6) before it</source>
+            <translation>%1 braucht D&lt;Werkzeug&gt; oder ein zuvor mit M6 eingesetztes Werkzeug (T&lt;n&gt; M6)</translation>
+        </message>
+        <message>
+            <source>the plane cannot change under cutter compensation: G40 first, as in LinuxCNC</source>
+            <translation>die Ebene kann unter Werkzeugradiuskorrektur nicht wechseln: zuerst G40, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>the units cannot change under cutter compensation: G40 first, as in LinuxCNC</source>
+            <translation>die Einheiten können unter Werkzeugradiuskorrektur nicht wechseln: zuerst G40, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>the coordinate system cannot change under cutter compensation: G40 first, as in LinuxCNC</source>
+            <translation>das Koordinatensystem kann unter Werkzeugradiuskorrektur nicht wechseln: zuerst G40, wie in LinuxCNC</translation>
+        </message>
+        <message>
+            <source>%1 enters cutter compensation: the first move after G41/G42 must be a straight line (G0 or G1)</source>
+            <translation>%1 beginnt die Werkzeugradiuskorrektur: die erste Bewegung nach G41/G42 muss eine Gerade sein (G0 oder G1)</translation>
+        </message>
+        <message>
+            <source>%1 leaves cutter compensation: the first move after G40 must be a straight line (G0 or G1), as in LinuxCNC</source>
+            <translation>%1 beendet die Werkzeugradiuskorrektur: die erste Bewegung nach G40 muss eine Gerade sein (G0 oder G1), wie in LinuxCNC</translation>
         </message>
     </context>
     <context>

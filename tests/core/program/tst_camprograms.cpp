@@ -169,6 +169,27 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
                                            18, 18, -16, // N70 G2 R2's end
                                            12, 18, -10, // N80 G0 Z5
                                            12, 18, 0};  // N90 G53 G0 Z0
+        // Issue 50 item 7: G41 D1 (tool 1, 3 mm) round the outline (0,0) (0,8) arc (4,12) (10,12)
+        // (10,0), clockwise, the tool 1.5 mm outside it (worked out by hand in program
+        // coordinates, then + G54): the entry from (-5,0) meets the line at Y1.1007
+        // (inside corner); the arc grows to 5.5 about (4,8); arcs round the outside corners
+        // (10,12) and (10,0); G40 leaves from (0,-1.5) to (-5,0). Both boards follow the tool's
+        // path, not the outline.
+        row("Fanuc cutter compensation")
+            << "fanuc_cutter_comp_style.nc"
+            << "Load tool 1 (3 mm flat end mill)"
+            << QList<double>{5,    10,      -10, // G43 Z5 H1
+                             5,    10,      -16, // G1 Z-1
+                             8.5,  11.10,   -16, // the entry's end (11.1007), to the step
+                             8.5,  18,      -16, // N80
+                             14,   23.5,    -16, // N90's end
+                             20,   23.5,    -16, // N100
+                             21.5, 22,      -16, // round (10,12)
+                             21.5, 10,      -16, // N110
+                             20,   8.5,     -16, // round (10,0)
+                             10,   8.5,     -16, // N120
+                             5,    10,      -16, // G40's exit
+                             5,    10,      -10};
         row("FreeCAD") << "freecad_style.ngc"
                        << "Load tool 2 (2 mm ball nose)"
                        << QList<double>{16, 15, -20.5, // the full circle back at its start
@@ -259,7 +280,7 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath()
     systems[0] = {{"X", 10.0}, {"Y", 10.0}, {"Z", -20.0}};
     m_runner->setCoordinateSystems(systems, 0);
     m_runner->setToolTable(
-        *ToolTable::parse("T1 Z5 ;3 mm flat end mill\nT2 Z0 ;2 mm ball nose", nullptr));
+        *ToolTable::parse("T1 Z5 D3 ;3 mm flat end mill\nT2 Z0 ;2 mm ball nose", nullptr));
     QList<Point3> arrived;
     connect(m_machine.get(), &Machine::moveFinished, this, [&](quint64, bool ok) {
         if (ok)
