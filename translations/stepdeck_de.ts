@@ -5299,6 +5299,10 @@
             <source>Not resumed: the axes are still moving; resume once they stand</source>
             <translation>Nicht fortgesetzt: die Achsen bewegen sich noch; fortsetzen, sobald sie stehen</translation>
         </message>
+        <message>
+            <source>the run holds under cutter compensation (G41/G42), whose path new offsets or tools would move: put them back to resume, or stop</source>
+            <translation>der Lauf hält unter Werkzeugradiuskorrektur (G41/G42), deren Bahn neue Verschiebungen oder Werkzeuge verschieben würden: zum Fortsetzen zurückstellen oder stoppen</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::program::ProgramSourceReader</name>

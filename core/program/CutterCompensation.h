@@ -54,6 +54,9 @@ public:
     // Whether `block` goes through lower(): a G0..G3 while G41/G42 is in effect, or the first
     // G0/G1 after G40 while the tool still stands off the path.
     bool applies(const ProgramBlock& block) const;
+    // Whether the tool stands off the programmed path (G41/G42 entered, the move after G40
+    // not yet lowered).
+    bool isFollowing() const { return m_activation != 0; }
     // The blocks that run in place of `block` (one, or a corner's arc and the move), appended to
     // *out. `at`: the current point (machine coordinates), where the tool stands.
     std::optional<Error> lower(const ProgramBlock& block, const ProgramCoordinates& coordinates,

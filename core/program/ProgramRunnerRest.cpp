@@ -57,6 +57,10 @@ QString ProgramRunner::restUncheckable() const
     if (m_heldInPath)
         return tr("the run holds in the middle of an arc or a drilling cycle, where new offsets "
                   "cannot start: put them back to resume, or stop");
+    // The tool's path was laid from the old offsets and the next moves (CutterCompensation).
+    if ((m_comp && m_comp->isFollowing()) || m_block.comp.on())
+        return tr("the run holds under cutter compensation (G41/G42), whose path new offsets "
+                  "or tools would move: put them back to resume, or stop");
     // Its start point was worked out in the old offsets (RunFromState), in machine positions.
     if (!m_prelude.isEmpty())
         return tr("the run holds on its way to the start point of the line it runs from, which "

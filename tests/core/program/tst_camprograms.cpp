@@ -178,18 +178,18 @@ void TestCamPrograms::run_camStyles_boardFollowsThePlannedPath_data()
         row("Fanuc cutter compensation")
             << "fanuc_cutter_comp_style.nc"
             << "Load tool 1 (3 mm flat end mill)"
-            << QList<double>{5,    10,      -10, // G43 Z5 H1
-                             5,    10,      -16, // G1 Z-1
-                             8.5,  11.10,   -16, // the entry's end (11.1007), to the step
-                             8.5,  18,      -16, // N80
-                             14,   23.5,    -16, // N90's end
-                             20,   23.5,    -16, // N100
-                             21.5, 22,      -16, // round (10,12)
-                             21.5, 10,      -16, // N110
-                             20,   8.5,     -16, // round (10,0)
-                             10,   8.5,     -16, // N120
-                             5,    10,      -16, // G40's exit
-                             5,    10,      -10};
+            << QList<double>{5,    10,    -10, // G43 Z5 H1
+                             5,    10,    -16, // G1 Z-1
+                             8.5,  11.10, -16, // the entry's end (11.1007), to the step
+                             8.5,  18,    -16, // N80
+                             14,   23.5,  -16, // N90's end
+                             20,   23.5,  -16, // N100
+                             21.5, 22,    -16, // round (10,12)
+                             21.5, 10,    -16, // N110
+                             20,   8.5,   -16, // round (10,0)
+                             10,   8.5,   -16, // N120
+                             5,    10,    -16, // G40's exit
+                             5,    10,    -10};
         row("FreeCAD") << "freecad_style.ngc"
                        << "Load tool 2 (2 mm ball nose)"
                        << QList<double>{16, 15, -20.5, // the full circle back at its start

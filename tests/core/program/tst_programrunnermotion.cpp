@@ -33,6 +33,7 @@ private Q_SLOTS:
     void abort_duringMove_boardSwitchesSpindleOffOnceStanding();
     void toolChange_zeroSetWhileHeld_restRunsInTheNewZero();
     void toolChange_zeroFailsTheRestsCheck_resumeRefusedUntilPutBack();
+    void cutterComp_offsetsChangedAtM0_resumeRefusedUntilPutBack();
     void touchOff_m6_holdsUntilZeroZRestCutsAtTheNewZ();
     void touchOff_tableMode_g43WithAnEmptyTableRefusedNothingSent();
 
@@ -456,6 +457,34 @@ void TestProgramRunnerMotion::toolChange_zeroFailsTheRestsCheck_resumeRefusedUnt
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
     QCOMPARE(acceptedSteps(*m_elab, Axis::X), (QList<qint64>{1200, 400}));
+}
+
+// Issue 50 item 7: held at an M0 under cutter compensation, the tool's path was laid from the
+// offsets and the moves after it; new offsets cannot be checked into it. Resume is refused and
+// the board gets nothing more; with the offsets put back the run finishes.
+void TestProgramRunnerMotion::cutterComp_offsetsChangedAtM0_resumeRefusedUntilPutBack()
+{
+    QSignalSpy refused(m_runner.get(), &ProgramRunner::resumeRefused);
+    QVERIFY(run("G28 X0 Y0\nG0 X1 Y1\nG41.1 D0.5\nG0 X3 Y1\nM0\nG0 X3 Y3\n"
+                "G40 G0 X1 Y3\nM30\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(m_runner->currentLine(), 5);
+    QTRY_VERIFY_WITH_TIMEOUT(still(*m_elab), 10000);
+    const QList<qint64> before = acceptedSteps(*m_elab, Axis::Y);
+    CoordinateSystems moved;
+    moved[0] = {{QStringLiteral("X"), 0.5}};
+    m_runner->setCoordinateSystems(moved, 0);
+    m_runner->resume();
+    QCOMPARE(refused.size(), 1);
+    QVERIFY2(refused.first().at(0).toString().contains(QStringLiteral("cutter compensation")),
+             qPrintable(refused.first().at(0).toString()));
+    QCOMPARE(m_runner->state(), RunState::Paused);
+    QVERIFY(still(*m_elab));
+    QCOMPARE(acceptedSteps(*m_elab, Axis::Y), before);
+    m_runner->setCoordinateSystems(CoordinateSystems{}, 0);
+    m_runner->resume();
+    WAIT_ENDED();
+    VERIFY_STATE(RunState::Finished);
 }
 
 void TestProgramRunnerMotion::recreateWithZ(ToolLength toolLength)
