@@ -71,6 +71,7 @@ private Q_SLOTS:
     void canon_toolPath_asWorkedOutByHand_data();
     void canon_toolPath_asWorkedOutByHand();
     void preview_extents_followTheToolNotTheProgram();
+    void onePass_languageProgram_sameToolPath();
     void check_refusals_namedAtTheirLine_data();
     void check_refusals_namedAtTheirLine();
     void mdi_g41_refusedInMdi();
@@ -161,6 +162,30 @@ void TestCutterCompensation::preview_extents_followTheToolNotTheProgram()
     QCOMPARE(preview.extents.value("Y").minimum, 0.0);
     QCOMPARE(preview.extents.value("X").minimum, -10.0);
     QCOMPARE(preview.extents.value("X").maximum, 30.0);
+}
+
+// The one pass over a source (the window's and the CLI's check), here of a LinuxCNC-language
+// program worked out first, with 5000 comment lines between the entry and the square: the look
+// ahead reads on past the reader's window and the walk reads its blocks again; the same path.
+void TestCutterCompensation::onePass_languageProgram_sameToolPath()
+{
+    QString text = QStringLiteral("#<d> = 4\nG0 X-10 Y0\nG41.1 D[#<d>]\nG1 X0 Y0 F100\n");
+    for (int i = 0; i < 5000; ++i)
+        text += QStringLiteral("(between)\n");
+    text += QStringLiteral("G1 X0 Y20\nG1 X20 Y20\nG1 X20 Y0\nG40 G1 X30 Y0\nM2\n");
+    const ProgramCheckResult result = ProgramCheck::check(ProgramSource::bytes(text.toUtf8()),
+                                                          {"X", "Y", "Z", "A"}, millAt5050());
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    QCOMPARE(result.preview.extents.value("Y").maximum, 22.0);
+    QCOMPARE(result.preview.extents.value("X").maximum, 30.0);
+    QCOMPARE(result.preview.extents.value("X").minimum, -10.0);
+    // The entry's end, cut back to X-2 at Y1.633 (work coordinates), is on the path (to the
+    // step the board holds: 100 steps/mm).
+    bool entry = false;
+    for (const PreviewPoint& p : result.preview.path)
+        entry = entry || (std::abs(p.position.value("X") + 2) < 1e-9 &&
+                          std::abs(p.position.value("Y") - 1.633) <= 0.005);
+    QVERIFY(entry);
 }
 
 void TestCutterCompensation::check_refusals_namedAtTheirLine_data()

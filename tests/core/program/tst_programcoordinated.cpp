@@ -38,6 +38,7 @@ private Q_SLOTS:
     void cleanup();
     void emis_lineAndArc_interpolatedAtFArriveTogether();
     void nanotec_line_drivesAtTheirSharesStartedTogether();
+    void nanotec_cutterComp_drivesFollowTheToolsPath();
     void emis_feedHoldInAnArc_holdsAtAChordEndResumeFinishes();
     void emis_feedOverride_movesAtItsShareOfF();
     void emis_abortMidArc_runningChordEndsNoChordAfter();
@@ -231,6 +232,34 @@ void TestProgramCoordinated::nanotec_line_drivesAtTheirSharesStartedTogether()
     const qsizetype a2 = frames.indexOf("#2A\r");
     QVERIFY2(a1 >= 0 && a2 >= 0, frames.join(' ').constData());
     QCOMPARE(std::abs(a2 - a1), qsizetype(1));
+}
+
+// Issue 50 item 7 on the Nanotec family: G41.1 D2 round (10,10) (10,20) (20,20), entered from
+// (0,10), worked out by hand: the entry touches the circle of 1 about (10,10) at (9.9, 10.995)
+// and is cut back to the line X9 at Y10.9045 (inside corner); up X9 to Y20; round (10,20)
+// clockwise to (10,21) (outside corner, as chords); along Y21 to X20; G40 leaves to (25,20).
+// Each drive's position when each move ended, in order, within a step.
+void TestProgramCoordinated::nanotec_cutterComp_drivesFollowTheToolsPath()
+{
+    QVERIFY(setUp("nanotec"));
+    QList<QPointF> arrived;
+    connect(m_machine.get(), &Machine::moveFinished, this, [&](quint64, bool ok) {
+        if (ok)
+            arrived << boardMm();
+    });
+    QVERIFY(run("G21 G90 G0 X0 Y10\nG41.1 D2\nG1 X10 Y10 F600\nG1 X10 Y20\nG1 X20 Y20\n"
+                "G40 G1 X25 Y20\nM2\n"));
+    const QList<QPointF> spots{{0, 10}, {9, 10.90}, {9, 20}, {10, 21}, {20, 21}, {25, 20}};
+    qsizetype next = 0;
+    for (const QPointF& a : std::as_const(arrived))
+        if (next < spots.size() && std::abs(a.x() - spots.at(next).x()) <= 0.011 &&
+            std::abs(a.y() - spots.at(next).y()) <= 0.011)
+            ++next;
+    QStringList path;
+    for (const QPointF& a : std::as_const(arrived))
+        path << QStringLiteral("(%1, %2)").arg(a.x()).arg(a.y());
+    QVERIFY2(next == spots.size(), qPrintable(path.join(' ')));
+    QCOMPARE(boardMm(), QPointF(25, 20));
 }
 
 // Feed hold on the EMIS (issue 30): the running chord ends, the board stands at its end (a
