@@ -7,6 +7,7 @@
 #include "program/CanonText.h"
 #include "program/ProgramLowering.h"
 #include "program/ProgramReader.h"
+#include "program/language/ProgramExpansion.h"
 #include <QtTest>
 
 using namespace stepdeck;
@@ -47,6 +48,8 @@ class TestProgramLowering : public QObject
 private Q_SLOTS:
     void canon_blockKinds_asWorkedOutByHand_data();
     void canon_blockKinds_asWorkedOutByHand();
+    void canon_issue50Features_asWorkedOutByHand_data();
+    void canon_issue50Features_asWorkedOutByHand();
     void canon_lines_numberedWithTheProgramLine();
     void canon_relativeFromUnknown_questionMarks();
     void lower_arcThatCannotBeLaid_errorAndNoMotion();
@@ -262,6 +265,124 @@ void TestProgramLowering::canon_blockKinds_asWorkedOutByHand()
     QStringList errors;
     const QStringList lines = canonOf(program, facts, &errors);
     QCOMPARE(calls(lines).join('|'), expected);
+}
+
+// Issue 50's features in the canonical text, each worked out by hand on the mill (X 0..100,
+// Y 0..200, Z -50..0 mm, all at 0). --canon prints the program's reading, as LinuxCNC's
+// interpreter does: the machine's limits (a feed above the highest, a laser's M4 run as M3)
+// apply after it, at the executors, and the check's notes name them (docs/cli.md).
+void TestProgramLowering::canon_issue50Features_asWorkedOutByHand_data()
+{
+    QTest::addColumn<QString>("machine"); // "mill", "touchOff" (tool 1 of length 10), "laser"
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("expected");
+
+    // Item 1: F100000 is far above what the contour stream runs; the text keeps F100000 (the
+    // check notes the F it runs at).
+    QTest::newRow("1 limits: F above the highest")
+        << "mill"
+        << "G1 X10 F100000\n"
+        << kFrame + "N00001 SET_FEED_RATE(100000.0000)|"
+                    "N00001 STRAIGHT_FEED(10.0000, 0.0000, 0.0000, 0.0000)";
+    // Item 3: "%", the program number, and the G0 after M2 that is never read.
+    QTest::newRow("3 around the program")
+        << "mill"
+        << "%\nO1234 (NAME)\nG0 X1\nM2\nG0 X5\n%\n"
+        << QStringLiteral("N00003 USE_LENGTH_UNITS(CANON_UNITS_MM)|"
+                          "N00003 SELECT_PLANE(CANON_PLANE_XY)|"
+                          "N00003 STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000)|"
+                          "N00004 STOP_SPINDLE_TURNING(0)|N00004 MIST_OFF()|"
+                          "N00004 FLOOD_OFF()|N00004 PROGRAM_END()");
+    // Item 4, touch-off: G43 H1 is told with no length: the table's 10 mm is not added (Z was
+    // set for the tool by hand).
+    QTest::newRow("4 touch-off: G43 adds nothing")
+        << "touchOff"
+        << "T1 M6\nG43 H1\nG0 Z-20\n"
+        << kFrame + "N00001 CHANGE_TOOL(1)|"
+                    "N00002 USE_TOOL_LENGTH_OFFSET(0.0000, 0.0000, 0.0000, 0.0000)|"
+                    "N00003 STRAIGHT_TRAVERSE(0.0000, 0.0000, -20.0000, 0.0000)";
+    // Item 5: the program's M4 as written (the laser's executor switches the beam as M3).
+    QTest::newRow("5 laser M4")
+        << "laser"
+        << "M4 S500\nM5\n"
+        << kFrame + "N00001 SET_SPINDLE_SPEED(0, 500.0000)|"
+                    "N00001 START_SPINDLE_COUNTERCLOCKWISE(0)|N00002 STOP_SPINDLE_TURNING(0)";
+    // Item 6: block delete on (LinuxCNC's default) skips line 1; @10 ^90 is X0 Y10; $H
+    // references every axis, $32=1 is not run.
+    QTest::newRow("6 block delete")
+        << "mill"
+        << "/G0 X5\nG0 X1\n"
+        << QStringLiteral("N00002 USE_LENGTH_UNITS(CANON_UNITS_MM)|"
+                          "N00002 SELECT_PLANE(CANON_PLANE_XY)|"
+                          "N00002 STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000)");
+    QTest::newRow("6 polar") << "mill"
+                             << "G0 @10 ^90\nG0 @5 ^0\n"
+                             << kFrame +
+                                    "N00001 STRAIGHT_TRAVERSE(0.0000, 10.0000, 0.0000, 0.0000)|"
+                                    "N00002 STRAIGHT_TRAVERSE(5.0000, 0.0000, 0.0000, 0.0000)";
+    QTest::newRow("6 GRBL $ lines")
+        << "mill"
+        << "$H\n$32=1\nG0 X1\n"
+        << kFrame + "N00001 REFERENCE_AXES(X, Y, Z, A)|"
+                    "N00003 STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000)";
+    // Item 8: K0 on a G17 arc is no offset at all: the arc of the "G2" row.
+    QTest::newRow("8 K0 on a G17 arc")
+        << "mill"
+        << "G0 X10 Y10\nG2 X20 Y10 I5 J0 K0.000 F100\n"
+        << kFrame + "N00001 STRAIGHT_TRAVERSE(10.0000, 10.0000, 0.0000, 0.0000)|"
+                    "N00002 SET_FEED_RATE(100.0000)|"
+                    "N00002 ARC_FEED(20.0000, 10.0000, 15.0000, 10.0000, -1, 0.0000, "
+                    "0.0000)";
+    // Item 9: a return with a value inside the sub's if (#<_value> = 3 x 2), EXISTS of a named
+    // parameter that is set (Y5) and of one that is not (no Y7).
+    QTest::newRow("9 language: return in an if, EXISTS")
+        << "mill"
+        << "o100 sub\n  o101 if [#1 GT 0]\n    o100 return [#1 * 2]\n  o101 endif\n"
+           "  o100 return [0]\no100 endsub\no100 call [3]\nG0 X#<_value>\n#<set> = 1\n"
+           "o102 if [EXISTS[#<set>]]\n  G0 Y5\no102 endif\n"
+           "o103 if [EXISTS[#<unset>]]\n  G0 Y7\no103 endif\nM2\n"
+        << QStringLiteral("N00008 USE_LENGTH_UNITS(CANON_UNITS_MM)|"
+                          "N00008 SELECT_PLANE(CANON_PLANE_XY)|"
+                          "N00008 STRAIGHT_TRAVERSE(6.0000, 0.0000, 0.0000, 0.0000)|"
+                          "N00011 STRAIGHT_TRAVERSE(6.0000, 5.0000, 0.0000, 0.0000)|"
+                          "N00016 STOP_SPINDLE_TURNING(0)|N00016 MIST_OFF()|"
+                          "N00016 FLOOD_OFF()|N00016 PROGRAM_END()");
+}
+
+void TestProgramLowering::canon_issue50Features_asWorkedOutByHand()
+{
+    QFETCH(QString, machine);
+    QFETCH(QString, program);
+    QFETCH(QString, expected);
+    MachineFacts facts = machineFacts("mill");
+    facts.knownPositions = positions("X=0 Y=0 Z=0 A=0");
+    if (machine == QLatin1String("touchOff")) {
+        facts.description.toolLength = machine::ToolLength::TouchOff;
+        facts.tools.insert(Tool{1, 10, 0, {}});
+    }
+    if (machine == QLatin1String("laser"))
+        facts.description.spindle.laser = true;
+    Program p;
+    const QByteArray text = program.toUtf8();
+    if (ProgramExpansion::usesLanguage(text)) { // worked out first, as the CLI reads it
+        QList<ProgramError> errors;
+        const auto expanded =
+            ProgramExpansion::expand(ProgramSource::bytes(text), NgcContext{}, &errors);
+        QVERIFY2(expanded, qPrintable(texts(errors).join('\n')));
+        ProgramReader reader(expanded->source, {"X", "Y", "Z", "A"}, expanded->info->lines);
+        const std::optional<Program> parsedProgram = reader.finish(&errors);
+        QVERIFY2(parsedProgram, qPrintable(texts(errors).join('\n')));
+        p = *parsedProgram;
+        p.expansion = expanded->info;
+    } else {
+        p = parsed(program, facts);
+    }
+    CanonText canon(facts.description);
+    QStringList out;
+    const ProgramCheckResult result = ProgramCheck::check(
+        p, facts, 1, {}, [&](const motion::MotionCommand& c) { out << canon.lines(c); });
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    QCOMPARE(calls(out).join('|'), expected);
 }
 
 // "    3 N00002 STRAIGHT_TRAVERSE(...)": the sequence right-aligned in five, the program's line

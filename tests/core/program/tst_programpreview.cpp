@@ -4,6 +4,7 @@
 #include "ProgramCheckTestSupport.h"
 #include "TestMain.h"
 #include <QtTest>
+#include <cmath>
 
 using namespace stepdeck;
 using namespace stepdeck::program;
@@ -23,6 +24,8 @@ private Q_SLOTS:
     void preview_parseErrorsOrRefusedStart_noPath();
     void preview_points_feedSecondsAndBlocksDoneAsTheRunnerCounts();
     void preview_thinnedPath_pointsKeepTheirFeedSecondsAndBlockCounts();
+    void preview_issue50Features_pathAsWorkedOutByHand_data();
+    void preview_issue50Features_pathAsWorkedOutByHand();
 };
 
 void TestProgramPreview::preview_figures_extentsPathAndEstimatedSeconds()
@@ -336,6 +339,87 @@ void TestProgramPreview::preview_parseErrorsOrRefusedStart_noPath()
     QVERIFY(!from.ok());
     QVERIFY(!from.hasPreview());
     QCOMPARE(from.preview.lines, 3);
+}
+
+// Issue 50's features in the preview, worked out by hand on the mill (all at 0; "$H" from
+// unknown positions): the last point of each line "line:X,Y" (an arc's chords end at its end),
+// the highest Y, and the estimated seconds.
+void TestProgramPreview::preview_issue50Features_pathAsWorkedOutByHand_data()
+{
+    QTest::addColumn<QString>("machine"); // "mill", "laser"
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<QString>("points");
+    QTest::addColumn<double>("yMax");
+    QTest::addColumn<double>("seconds");
+
+    // Item 2: the line's switches, then its move; "M5 M9 G0 X0" moves back. X 10 mm at X's
+    // 50 mm/s, Y 5 mm at 25 mm/s: 0.2 s each way.
+    QTest::newRow("2 whole line") << "mill"
+                                  << "G0 X10 Y5 M3 S1000\nM5 M9 G0 X0 Y0\n"
+                                  << "1:10,5 2:0,0" << 5.0 << 0.4;
+    // Item 3: nothing after M2 is read.
+    QTest::newRow("3 around the program") << "mill"
+                                          << "%\nO1234\nG0 X1\nM2\nG0 X5\n%\n"
+                                          << "3:1,0" << 0.0 << 0.02;
+    // Item 5: a laser's M4 cuts as M3 does: 10 mm at F600 (10 mm/s), 1 s.
+    QTest::newRow("5 laser M4") << "laser"
+                                << "M4 S500\nG1 X10 F600\nM5\n"
+                                << "2:10,0" << 0.0 << 1.0;
+    // Item 6: the deleted line is not drawn; polar X0 Y10 (Y at 25 mm/s: 0.4 s); $H references.
+    QTest::newRow("6 block delete") << "mill"
+                                    << "/G0 X5\nG0 X1\n"
+                                    << "2:1,0" << 0.0 << 0.02;
+    QTest::newRow("6 polar") << "mill"
+                             << "G0 @10 ^90\n"
+                             << "1:0,10" << 10.0 << 0.4;
+    QTest::newRow("6 $H") << "unknown"
+                          << "$H\n$32=1\nG0 X1\n"
+                          << "1:0,0 3:1,0" << 0.0 << 0.02;
+    // Item 8: G2 K0 from (10,10) about (15,10) clockwise over the top: Y up to 15. The G0
+    // takes 0.4 s (Y); the check times each chord by its slowest axis at F600 (10 mm/s), which
+    // over a half circle of 5 mm is 5 x 2 sqrt 2 / 10 = 1.414 s (the E-LAB's stream runs the
+    // path itself at F: pi x 5 / 10 = 1.571 s; docs/programs.md "Preview": an estimate).
+    QTest::newRow("8 K0 on a G17 arc") << "mill"
+                                       << "G0 X10 Y10\nG2 X20 Y10 I5 J0 K0 F600\n"
+                                       << "1:10,10 2:20,10" << 15.0 << 1.814;
+    // Item 9: the sub's return inside its if gives X6; EXISTS of a set name gives Y5.
+    QTest::newRow("9 language")
+        << "mill"
+        << "o100 sub\n  o101 if [#1 GT 0]\n    o100 return [#1 * 2]\n  o101 endif\n"
+           "  o100 return [0]\no100 endsub\no100 call [3]\nG0 X#<_value>\n#<set> = 1\n"
+           "o102 if [EXISTS[#<set>]]\n  G0 Y5\no102 endif\nM2\n"
+        << "8:6,0 11:6,5" << 5.0 << 0.32;
+}
+
+void TestProgramPreview::preview_issue50Features_pathAsWorkedOutByHand()
+{
+    QFETCH(QString, machine);
+    QFETCH(QString, program);
+    QFETCH(QString, points);
+    QFETCH(double, yMax);
+    QFETCH(double, seconds);
+    MachineFacts facts = machineFacts("mill");
+    if (machine != QLatin1String("unknown"))
+        facts.knownPositions = positions("X=0 Y=0 Z=0 A=0");
+    if (machine == QLatin1String("laser"))
+        facts.description.spindle.laser = true;
+    // The one pass over the text, as the window checks a file (a LinuxCNC-language program is
+    // worked out first).
+    const ProgramCheckResult result =
+        ProgramCheck::check(ProgramSource::bytes(program.toUtf8()), {"X", "Y", "Z", "A"}, facts);
+    QVERIFY2(result.ok(), qPrintable(texts(result.errors).join('\n')));
+    QStringList ends;
+    const QList<PreviewPoint>& path = result.preview.path;
+    for (qsizetype i = 1; i < path.size(); ++i)
+        if (i + 1 == path.size() || path.at(i + 1).line != path.at(i).line)
+            ends << QStringLiteral("%1:%2,%3")
+                        .arg(path.at(i).line)
+                        .arg(figure(path.at(i).position.value("X")))
+                        .arg(figure(path.at(i).position.value("Y")));
+    QCOMPARE(ends.join(' '), points);
+    QCOMPARE(result.preview.extents.value("Y").maximum, yMax);
+    QVERIFY2(std::abs(result.preview.estimatedSeconds - seconds) < 0.01,
+             qPrintable(QString::number(result.preview.estimatedSeconds)));
 }
 
 STEPDECK_TEST_GUILESS_MAIN(TestProgramPreview)
