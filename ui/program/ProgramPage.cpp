@@ -236,6 +236,11 @@ QString ProgramPage::checkText() const
     return m_check->text();
 }
 
+QString ProgramPage::checkToolTip() const
+{
+    return m_check->toolTip();
+}
+
 QString ProgramPage::messageText() const
 {
     return m_banner->statusText();

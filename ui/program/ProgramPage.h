@@ -55,6 +55,7 @@ public:
     MdiLine* mdiLine() const { return m_mdiLine; }
     program::ProgramRunner* runner() const { return m_runner; }
     QString checkText() const;
+    QString checkToolTip() const; // every note of the check, a line each
     QString messageText() const;
     bool isRunning() const;
     // Run was pressed and the check before it runs (ProgramStarter): nothing moves yet.

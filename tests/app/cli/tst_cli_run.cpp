@@ -40,6 +40,7 @@ private Q_SLOTS:
     void fromLine_beyondTheFile_exit2();
     void linuxcncLanguage_workedOut_deviceMovesAndFileLines();
     void feedHold_signals_holdOverrideResumeAsJsonEvents();
+    void feedAboveTheHighest_runsWithTheNoteOnStderr();
     void touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ_data();
     void touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ();
 
@@ -166,6 +167,26 @@ void TestCliRun::optionalStop_m1WithoutTerminal_exit2UnlessSwitchedOff()
     QCOMPARE(moves.size(), 2);
     QCOMPARE(moves.at(0).steps, qint64(10));
     QCOMPARE(moves.at(1).steps, qint64(20));
+}
+
+// Issue 50 item 1: a feed far above what the E-LAB's contour stream runs (10^5 steps/s; the
+// board's default tick runs 99 a second) is not
+// refused: the run says, as FILE:LINE:COL: note, the F it runs at, and the board goes the whole
+// way (the ticks at the board: tst_programcontour); with --json the note is an event.
+void TestCliRun::feedAboveTheHighest_runsWithTheNoteOnStderr()
+{
+    const QString path = writeProgram(*m_dir, "fast.ngc", "G91 G1 X200 F6000000\nM2\n");
+    const qint64 before = m_device->position(Axis::X);
+    const CliRun r = runCli(args(path));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.err.contains(path.toUtf8() + ":1:13: note: F6000000 runs at F"), r.err.constData());
+    QVERIFY2(r.err.contains("the highest this move can run at in the contour stream"),
+             r.err.constData());
+    QTRY_VERIFY_WITH_TIMEOUT(m_device->still(), 5000);
+    QCOMPARE(m_device->position(Axis::X) - before, qint64(200));
+    const CliRun json = runCli(args(path, {"--dry-run"}) << "--json");
+    QVERIFY2(json.exitCode == 0, json.err.constData());
+    QVERIFY2(json.out.contains(R"("event":"note")"), json.out.constData());
 }
 
 // stdin a terminal (a pty): M0 prints its prompt and holds until Enter; the board gets the

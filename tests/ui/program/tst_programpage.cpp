@@ -31,6 +31,7 @@ private Q_SLOTS:
     void connection_singleController_isTheMachineProgramsRunOn();
     void connection_keepsTheControllersUnitsLimitsAndReferencing();
     void check_setupWrittenMeanwhile_checkedAgainRunEnabled();
+    void check_feedAboveTheHighest_noteShownRunStaysEnabled();
     void run_afterZeroXY_programInWorkCoordinatesAtTheBoard();
     void linuxcncLanguage_errorsAtFileLines_runMovesTheDevice();
     void preview_softLimitErrors_pathShownWithTheErrors();
@@ -273,6 +274,23 @@ void TestProgramPage::check_setupWrittenMeanwhile_checkedAgainRunEnabled()
     QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 10000);
     QVERIFY2(page()->checkText().contains(QStringLiteral("no errors")),
              qPrintable(page()->checkText()));
+}
+
+// Issue 50 item 1: a feed far above what the board's contour stream runs is no error: the
+// check's line says the note (its line and the F that runs), its tool tip every note, and Run
+// stays enabled.
+void TestProgramPage::check_feedAboveTheHighest_noteShownRunStaysEnabled()
+{
+    QVERIFY(m_rig.openAndConnect(m_rig.machineJson(),
+                                 {QStringLiteral("table"), QStringLiteral("rotary")}));
+    QVERIFY(m_rig.writeElabSetup());
+    setProgram(QStringLiteral("G91\nG1 X1 F600000\nM2\n"));
+    QTRY_VERIFY_WITH_TIMEOUT(page()->controls()->runButton()->isEnabled(), 10000);
+    const QString text = page()->checkText();
+    QVERIFY2(text.contains(QStringLiteral("no errors; 1 note(s), line 2: F600000 runs at F")),
+             qPrintable(text));
+    QVERIFY2(page()->checkToolTip().startsWith(QStringLiteral("2:7: F600000 runs at F")),
+             qPrintable(page()->checkToolTip()));
 }
 
 // Issue 28, item 3: after Zero X/Y, "G0 X0 Y0" goes to the work zero the position display
