@@ -6,6 +6,8 @@
 #include "TestMain.h"
 #include "protocols/elab/ElabSimulator.h"
 #include "protocols/emis/EmisSimulator.h"
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QtTest>
 #include <csignal>
 
@@ -47,6 +49,8 @@ private Q_SLOTS:
     void cleanup();
     void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld_data();
     void sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld();
+    void issue50Forms_eachModel_runAsLinuxCncReadsThem_data();
+    void issue50Forms_eachModel_runAsLinuxCncReadsThem();
     void sigint_duringABlock_deviceStandsStillNextBlockNeverArrives();
     void sigint_midArcChain_deviceStandsNoChordAfter_data();
     void sigint_midArcChain_deviceStandsNoChordAfter();
@@ -73,6 +77,105 @@ void TestCliRunDevices::init()
 void TestCliRunDevices::cleanup()
 {
     m_dir.reset();
+}
+
+// Issue 50's forms on every controller family, in its own steps.
+// - "forms": "%" and a program number around it (item 3), GRBL's $H (every axis referenced) and
+//   $32 (not run, a note), a deleted line (item 6, block delete on), polar words to X0 Y300 and
+//   X400 Y0, a feed far above the highest the controller runs (item 1: it runs at that
+//   highest, with a note), a G2 with K0.000 (item 8) from X500 round (550,0) to X600, M2, and
+//   a move after it that is never read. The laser axes take no F: their program stops after
+//   the polar moves. EMIS moves with G1 only (it cannot read its fast speed back,
+//   docs/programs.md), so its polar moves are G1s.
+// - "language" (item 9): a sub's return with a value inside its if (X = 3 x 100) and EXISTS of
+//   a named parameter that is set (Y200) and of one that is not (no Y999).
+void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem_data()
+{
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QByteArray>("program");
+    QTest::addColumn<QList<int>>("lines");  // the lines whose blocks ran, in order
+    QTest::addColumn<QList<qint64>>("end"); // where X and Y end, in steps from the reference
+    QTest::addColumn<QStringList>("notes"); // what the check's notes name
+    const QByteArray head = "%\nO5001 (ISSUE 50 FORMS)\nG90\n$H\n$32=1\n/G0 X999\n";
+    const QByteArray feed = "G1 X500 F60000000\nG2 X600 Y0 I50 J0 K0.000\n";
+    const QByteArray tail = "M2\nG0 X999\n%\n";
+    const QList<int> withFeed{4, 7, 8, 9, 10, 11};
+    const QStringList feedNotes{"$32=1", "F60000000 "};
+    const auto language = [](const char* move) {
+        return QByteArray("o100 sub\n  o101 if [#1 GT 0]\n    o100 return [#1 * 100]\n"
+                          "  o101 endif\n  o100 return [0]\no100 endsub\nG90\nG28\n"
+                          "o100 call [3]\n") +
+               move + " X#<_value>\n#<set> = 1\no102 if [EXISTS[#<set>]]\n  " + move +
+               " Y200\no102 endif\no103 if [EXISTS[#<unset>]]\n  " + move +
+               " Y999\no103 endif\nM2\n";
+    };
+    const QList<int> languageLines{8, 10, 13, 18};
+    for (const char* model : {"elab", "nanotec"}) {
+        QTest::newRow(QByteArray(model).append(" forms").constData())
+            << QString::fromLatin1(model) << head + "G0 @300 ^90\nG0 @400 ^0\n" + feed + tail
+            << withFeed << QList<qint64>{600, 0} << feedNotes;
+        QTest::newRow(QByteArray(model).append(" language").constData())
+            << QString::fromLatin1(model) << language("G0") << languageLines
+            << QList<qint64>{300, 200} << QStringList{};
+    }
+    QTest::newRow("emis forms") << "emis"
+                                << head + "G1 @300 ^90 F60000000\nG1 @400 ^0\n" + feed + tail
+                                << withFeed << QList<qint64>{600, 0} << feedNotes;
+    QTest::newRow("emis language") << "emis" << language("G1 F6000") << languageLines
+                                   << QList<qint64>{300, 200} << QStringList{};
+    QTest::newRow("laser-axis forms")
+        << "laser-axis" << head + "G0 @300 ^90\nG0 @400 ^0\n" + tail << QList<int>{4, 7, 8, 9}
+        << QList<qint64>{400, 0} << QStringList{"$32=1"};
+    QTest::newRow("laser-axis language") << "laser-axis" << language("G0") << languageLines
+                                         << QList<qint64>{300, 200} << QStringList{};
+}
+
+void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem()
+{
+    QFETCH(QString, model);
+    QFETCH(QByteArray, program);
+    QFETCH(QList<int>, lines);
+    QFETCH(QList<qint64>, end);
+    QFETCH(QStringList, notes);
+    const bool nanotec = model == QLatin1String("nanotec");
+    RunDevice device(model, nanotec ? QList<int>{1, 2, 3} : QList<int>{1});
+    qint64 reference = 0; // the E-LAB counts from power-on; its switches sit 20000 below
+    if (model == QLatin1String("elab"))
+        reference = device.probe([&device] {
+            auto* sim = static_cast<elab::ElabSimulator*>(device.sim());
+            for (Axis a : {Axis::X, Axis::Y, Axis::Z})
+                sim->setPosition(a, sim->switchConfig(a).referencePosition + 200); // a short $H
+            return sim->switchConfig(Axis::X).referencePosition;
+        });
+    QStringList args = cliArgs(model, device.path());
+    if (nanotec) // X and Y: the model's drives 1, 2, 3
+        args = QStringList{"--model", model, "--port", device.path(), "--timeout", "10000"};
+    const QString path = writeProgram(*m_dir, "forms.nc", program);
+    const CliRun r = runCli(args + QStringList{"--json", "run", path}, 120000);
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QList<int> ran;
+    QStringList noted;
+    for (const QByteArray& line : r.out.split('\n')) {
+        const QJsonObject o = QJsonDocument::fromJson(line).object();
+        if (o.value("event").toString() == QLatin1String("block") &&
+            o.value("state").toString() == QLatin1String("done") &&
+            (ran.isEmpty() || ran.last() != o.value("line").toInt()))
+            ran << o.value("line").toInt();
+        if (o.value("event").toString() == QLatin1String("note"))
+            noted << o.value("message").toString();
+    }
+    QCOMPARE(ran, lines);
+    for (const QString& what : std::as_const(notes))
+        QVERIFY2(std::any_of(noted.cbegin(), noted.cend(),
+                             [&](const QString& n) { return n.contains(what); }),
+                 qPrintable(what + " not in: " + noted.join('\n')));
+    QTRY_VERIFY_WITH_TIMEOUT(device.still(), 5000);
+    // The E-LAB's reference run stops within its switch's window (ElabSimSwitchConfig).
+    const qint64 slack = model == QLatin1String("elab") ? 10 : 0;
+    const qint64 x = device.position(Axis::X) - reference;
+    const qint64 y = device.position(Axis::Y) - reference;
+    QVERIFY2(qAbs(x - end.at(0)) <= slack && qAbs(y - end.at(1)) <= slack,
+             qPrintable(QStringLiteral("X %1, Y %2").arg(x).arg(y)));
 }
 
 void TestCliRunDevices::sameProgram_eachModel_blocksInOrderOneMotionAtATimeDwellHeld_data()
