@@ -3229,6 +3229,10 @@
             <source>controller "%1": %2</source>
             <translation>Steuerung „%1“: %2</translation>
         </message>
+        <message>
+            <source>%1: controller "%2" moves to targets only, so a relative move (G91) needs the axis' position: home it (G28 %1) or move it to an absolute target first</source>
+            <translation>%1: Steuerung "%2" fährt nur Ziele an, eine relative Bewegung (G91) braucht daher die Position der Achse: sie zuerst referenzieren (G28 %1) oder auf ein absolutes Ziel fahren</translation>
+        </message>
     </context>
     <context>
         <name>stepdeck::motion::StreamExecutor</name>

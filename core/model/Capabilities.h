@@ -80,6 +80,10 @@ struct Capabilities
     // No jog stream: jog inputs become short targets, the next one sent only after the
     // previous one arrived, never a target far ahead (laser motor axes).
     bool jogByTargets = false;
+    // A relative move is sent as an absolute target from where the axis said it is: refused
+    // while its position is unknown (laser motor axes: a move carries only a target, and the
+    // position is known from the first status frame, after a home or an absolute move).
+    bool relativeNeedsPosition = false;
     bool doorSwitch = false; // the device reports a door switch (MachineStatus::doorOpen)
     // How a program's G1 F (docs/programs.md, issue 20) reaches the device: the per-axis
     // parameter in steps/s (its schema range is the rate's range) that is written before the

@@ -3,6 +3,7 @@
 #include "ProgramSimulation.h"
 #include "CoordinatedFeed.h"
 #include "InverseTime.h"
+#include "motion/executors/MoveExecutor.h"
 #include <algorithm>
 #include <cmath>
 
@@ -376,6 +377,10 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
     } else if (wasKnown) {
         // As Machine::move counts a relative move: the difference of the whole steps.
         m_steps[a] += axis.toSteps(here + m.value) - axis.toSteps(here);
+    } else if (const QString why = motion::MoveExecutor::relativeRefusal(
+                   m_facts.capabilities.value(axis.controller), axis.name, axis.controller);
+               !why.isEmpty() && m_errors->once(block.line, m.column, kUnknownPosition)) {
+        m_errors->add(block.line, m.column, [&] { return why; });
     }
     if (m.speed > 0)
         *seconds = std::max(*seconds, distance / m.speed);

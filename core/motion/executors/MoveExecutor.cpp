@@ -33,6 +33,16 @@ QString MoveExecutor::referenceRefusal(const Capabilities& caps, const QString& 
     return tr("%1: controller \"%2\" has no reference run (G28)").arg(axis, controller);
 }
 
+QString MoveExecutor::relativeRefusal(const Capabilities& caps, const QString& axis,
+                                      const QString& controller)
+{
+    if (!caps.relativeNeedsPosition)
+        return {};
+    return tr("%1: controller \"%2\" moves to targets only, so a relative move (G91) needs the "
+              "axis' position: home it (G28 %1) or move it to an absolute target first")
+        .arg(axis, controller);
+}
+
 void MoveExecutor::started(quint64 id, const QString& refusal)
 {
     m_motion = id;

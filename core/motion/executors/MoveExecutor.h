@@ -47,6 +47,11 @@ public:
     // it can. The check asks it of every axis a G28 names, the machine refuses the same.
     static QString referenceRefusal(const Capabilities& caps, const QString& axis,
                                     const QString& controller);
+    // Why the model cannot move `axis` relatively from an unknown position
+    // (Capabilities::relativeNeedsPosition); empty: it can. The check asks it of a G91 move
+    // of an axis whose position it does not know; the adapter refuses the same.
+    static QString relativeRefusal(const Capabilities& caps, const QString& axis,
+                                   const QString& controller);
     bool moveSent() const { return m_motion != 0; } // the machine moves for it now
     // The machine was stopped: the writes not yet acknowledged are not waited for (a move
     // already sent still reports its end).

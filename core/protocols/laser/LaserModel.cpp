@@ -19,10 +19,11 @@ Capabilities capabilities()
     caps.rampedStop = false;
     caps.stopCommand = false; // only "move to home" and "move to position" exist
     caps.panic = false;
-    caps.statusQuery = false;   // "The axis can send at any time a status response"
-    caps.reportsArrival = true; // "... after having reached its last commanded target"
-    caps.jogByTargets = true;   // no jog command: short targets one after the other
-    caps.doorSwitch = true;     // status '3' door opened, '4' door closed
+    caps.statusQuery = false;          // "The axis can send at any time a status response"
+    caps.reportsArrival = true;        // "... after having reached its last commanded target"
+    caps.jogByTargets = true;          // no jog command: short targets one after the other
+    caps.relativeNeedsPosition = true; // LaserAxisMotion::moveRelative: targets only
+    caps.doorSwitch = true;            // status '3' door opened, '4' door closed
     // "target-position [0...99999]": a number without a unit (the axis gives it meaning).
     caps.positionUnit = QT_TRANSLATE_NOOP("Units", "units");
     // Position units per second a jog target may cover per second of stick deflection; the

@@ -497,6 +497,17 @@ void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ_data()
         << oneTool << QStringList{} << 2
         << QByteArray("run: line 1 holds M6 \"Load tool 1 (3 mm drill)\", which waits for Enter")
         << QList<qint64>{};
+    // The other families (item 4 at each): the same workflow, the same moves at their devices.
+    for (const char* model : {"emis", "nanotec"})
+        QTest::newRow(QByteArray("the same tool, --skip-pauses, ").append(model).constData())
+            << oneTool << QStringList{"--skip-pauses", "--model-under-test", model} << 0
+            << QByteArray("line 1: tool change passed with the work Z as it is (--skip-pauses)")
+            << QList<qint64>{10, 20};
+    // The laser axes move to targets only: X is homed first so that G91 knows where it starts.
+    QTest::newRow("the same tool, --skip-pauses, laser-axis")
+        << "G28 X0\n" + oneTool << QStringList{"--skip-pauses", "--model-under-test", "laser-axis"}
+        << 0 << QByteArray("line 2: tool change passed with the work Z as it is (--skip-pauses)")
+        << QList<qint64>{10, 20};
 }
 
 void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ()
@@ -506,12 +517,28 @@ void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ()
     QFETCH(int, exitCode);
     QFETCH(QByteArray, says);
     QFETCH(QList<qint64>, moves);
+    // "--model-under-test M" (this test's own, taken out): the controller family, E-LAB if not.
+    QString model = QStringLiteral("elab");
+    if (const qsizetype at = options.indexOf(QStringLiteral("--model-under-test")); at >= 0) {
+        model = options.at(at + 1);
+        options.remove(at, 2);
+    }
+    const bool nanotec = model == QLatin1String("nanotec");
+    std::unique_ptr<RunDevice> own;
+    RunDevice* device = m_device.get();
+    if (model != QLatin1String("elab")) {
+        own = std::make_unique<RunDevice>(model, nanotec ? QList<int>{1, 3} : QList<int>{1});
+        device = own.get();
+    }
+    QJsonObject controller{{"id", "table"}, {"model", model}, {"port", device->path()}};
+    if (nanotec)
+        controller.insert("axes", QJsonArray{QJsonObject{{"name", "X"}, {"address", 1}},
+                                             QJsonObject{{"name", "Z"}, {"address", 3}}});
     const QJsonObject machine{
         {"format", "stepdeck-machine"},
         {"version", 2},
         {"name", "Touch-off mill"},
-        {"controllers",
-         QJsonArray{QJsonObject{{"id", "table"}, {"model", "elab"}, {"port", m_device->path()}}}},
+        {"controllers", QJsonArray{controller}},
         {"axes",
          QJsonArray{
              QJsonObject{{"name", "X"}, {"controller", "table"}, {"axis", "X"}, {"unit", "steps"}},
@@ -520,21 +547,22 @@ void TestCliRun::touchOff_m6_anotherToolRefusedTheSameGoesOnKeepingZ()
         {"toolLength", "touchOff"}};
     const QString file = writeProgram(*m_dir, "touchoff.json", QJsonDocument(machine).toJson());
     const QString path = writeProgram(*m_dir, "tools.ngc", program);
-    const CliRun r = runCli(
-        QStringList{"--machine", file, "--timeout", "10000", "--setup-defaults", "run", path} +
-        options);
+    QStringList args{"--machine", file, "--timeout", "10000"};
+    if (model == QLatin1String("elab"))
+        args << "--setup-defaults";
+    const CliRun r = runCli(args + QStringList{"run", path} + options);
     QVERIFY2(r.exitCode == exitCode, r.err.constData());
     QVERIFY2(r.err.contains(says), r.err.constData());
     if (exitCode != 0) {
-        QCOMPARE(m_device->receivedCount(), 0);
+        QCOMPARE(device->receivedCount(), 0);
         return;
     }
     QList<qint64> steps;
-    for (const DeviceMove& m : m_device->moves())
+    for (const DeviceMove& m : device->moves())
         if (m.axis == Axis::X)
             steps << m.steps;
     QCOMPARE(steps, moves);
-    QVERIFY(m_device->still());
+    QVERIFY(device->still());
 }
 
 STEPDECK_TEST_GUILESS_MAIN(TestCliRun)

@@ -96,6 +96,7 @@ void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem_data()
     QTest::addColumn<QList<int>>("lines");  // the lines whose blocks ran, in order
     QTest::addColumn<QList<qint64>>("end"); // where X and Y end, in steps from the reference
     QTest::addColumn<QStringList>("notes"); // what the check's notes name
+    QTest::addColumn<QStringList>("options");
     const QByteArray head = "%\nO5001 (ISSUE 50 FORMS)\nG90\n$H\n$32=1\n/G0 X999\n";
     const QByteArray feed = "G1 X500 F60000000\nG2 X600 Y0 I50 J0 K0.000\n";
     const QByteArray tail = "M2\nG0 X999\n%\n";
@@ -110,24 +111,33 @@ void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem_data()
                " Y999\no103 endif\nM2\n";
     };
     const QList<int> languageLines{8, 10, 13, 18};
-    for (const char* model : {"elab", "nanotec"}) {
-        QTest::newRow(QByteArray(model).append(" forms").constData())
-            << QString::fromLatin1(model) << head + "G0 @300 ^90\nG0 @400 ^0\n" + feed + tail
-            << withFeed << QList<qint64>{600, 0} << feedNotes;
-        QTest::newRow(QByteArray(model).append(" language").constData())
-            << QString::fromLatin1(model) << language("G0") << languageLines
-            << QList<qint64>{300, 200} << QStringList{};
-    }
+    const QByteArray polar = "G0 @300 ^90\nG0 @400 ^0\n";
+    QTest::newRow("elab forms") << "elab" << head + polar + feed + tail << withFeed
+                                << QList<qint64>{600, 0} << feedNotes << QStringList{};
+    // LinuxCNC's switch off: the "/" line runs (X999) before the polar moves.
+    QTest::newRow("elab forms, block delete off")
+        << "elab" << head + polar + feed + tail << QList<int>{4, 6, 7, 8, 9, 10, 11}
+        << QList<qint64>{600, 0} << feedNotes << QStringList{"--block-delete", "off"};
+    QTest::newRow("elab language") << "elab" << language("G0") << languageLines
+                                   << QList<qint64>{300, 200} << QStringList{} << QStringList{};
+    // The program number in its other form, ":5001".
+    QByteArray colon = head;
+    colon.replace("O5001", ":5001");
+    QTest::newRow("nanotec forms") << "nanotec" << colon + polar + feed + tail << withFeed
+                                   << QList<qint64>{600, 0} << feedNotes << QStringList{};
+    QTest::newRow("nanotec language") << "nanotec" << language("G0") << languageLines
+                                      << QList<qint64>{300, 200} << QStringList{} << QStringList{};
     QTest::newRow("emis forms") << "emis"
                                 << head + "G1 @300 ^90 F60000000\nG1 @400 ^0\n" + feed + tail
-                                << withFeed << QList<qint64>{600, 0} << feedNotes;
+                                << withFeed << QList<qint64>{600, 0} << feedNotes << QStringList{};
     QTest::newRow("emis language") << "emis" << language("G1 F6000") << languageLines
-                                   << QList<qint64>{300, 200} << QStringList{};
+                                   << QList<qint64>{300, 200} << QStringList{} << QStringList{};
     QTest::newRow("laser-axis forms")
-        << "laser-axis" << head + "G0 @300 ^90\nG0 @400 ^0\n" + tail << QList<int>{4, 7, 8, 9}
-        << QList<qint64>{400, 0} << QStringList{"$32=1"};
-    QTest::newRow("laser-axis language") << "laser-axis" << language("G0") << languageLines
-                                         << QList<qint64>{300, 200} << QStringList{};
+        << "laser-axis" << head + polar + tail << QList<int>{4, 7, 8, 9} << QList<qint64>{400, 0}
+        << QStringList{"$32=1"} << QStringList{};
+    QTest::newRow("laser-axis language")
+        << "laser-axis" << language("G0") << languageLines << QList<qint64>{300, 200}
+        << QStringList{} << QStringList{};
 }
 
 void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem()
@@ -137,6 +147,7 @@ void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem()
     QFETCH(QList<int>, lines);
     QFETCH(QList<qint64>, end);
     QFETCH(QStringList, notes);
+    QFETCH(QStringList, options);
     const bool nanotec = model == QLatin1String("nanotec");
     RunDevice device(model, nanotec ? QList<int>{1, 2, 3} : QList<int>{1});
     qint64 reference = 0; // the E-LAB counts from power-on; its switches sit 20000 below
@@ -151,7 +162,7 @@ void TestCliRunDevices::issue50Forms_eachModel_runAsLinuxCncReadsThem()
     if (nanotec) // X and Y: the model's drives 1, 2, 3
         args = QStringList{"--model", model, "--port", device.path(), "--timeout", "10000"};
     const QString path = writeProgram(*m_dir, "forms.nc", program);
-    const CliRun r = runCli(args + QStringList{"--json", "run", path}, 120000);
+    const CliRun r = runCli(args + QStringList{"--json", "run", path} + options, 120000);
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QList<int> ran;
     QStringList noted;

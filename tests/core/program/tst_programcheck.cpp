@@ -279,6 +279,9 @@ void TestProgramCheck::check_errors_lineColumnAndMessage_data()
         << QStringList{"1:4: " + unknownX, "2:5: M64 P1: the machine has no digital outputs",
                        "3:8: A: controller \"tilt\" takes no feed rate, so G1 cannot move it; use "
                        "G0",
+                       "3:8: A: controller \"tilt\" moves to targets only, so a relative move "
+                       "(G91) needs the axis' position: home it (G28 A) or move it to an absolute "
+                       "target first",
                        "4:4: Y reaches 300 mm, outside the soft limits 0..200 mm"};
     // Arcs (issue 29): the same path as the run, from the current point.
     QTest::newRow("arc within the limits") << "mill"
@@ -359,12 +362,6 @@ void TestProgramCheck::check_errors_lineColumnAndMessage()
     QCOMPARE(result.ok(), errors.isEmpty());
 }
 
-// Issue 50: a feed above the highest a move can run at runs at that highest, as LinuxCNC and
-// GRBL limit it: a note (line, column of F, programmed F, the F that runs), no error, and the
-// estimate at the feed that runs. The mill's E-LAB holds start speed 2401: its contour ticks at
-// 2100/s (X 100 steps/mm: at most 21 mm/s, F1260; Y 200: F630, in inches F24.803), a G61 block
-// runs below the start speed (2400 steps/s: X at F1440). The Nanotec in steps slows both shares
-// of a diagonal by one factor (o at most 25 000), so they still arrive together.
 void TestProgramCheck::machineIo_numberedOverTheControllers_data()
 {
     QTest::addColumn<bool>("output");

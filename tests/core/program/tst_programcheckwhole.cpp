@@ -28,6 +28,7 @@ private Q_SLOTS:
     void check_fromLine_startOrRefusal_data();
     void check_fromLine_startOrRefusal();
     void check_axisTheMachineLacks_named();
+    void check_relativeFromUnknown_refusedWhereTheModelMovesToTargetsOnly();
     void check_nestedEmptyRepeats_endQuickly();
     void check_tooManyBlocks_namedAtTheOutermostRepeat();
     void check_manyErrors_listedUpToTheParsersLimit();
@@ -35,6 +36,12 @@ private Q_SLOTS:
     void check_aroundTheProgram_blockDeleteAndNotes();
 };
 
+// Issue 50: a feed above the highest a move can run at runs at that highest, as LinuxCNC and
+// GRBL limit it: a note (line, column of F, programmed F, the F that runs), no error, and the
+// estimate at the feed that runs. The mill's E-LAB holds start speed 2401: its contour ticks at
+// 2100/s (X 100 steps/mm: at most 21 mm/s, F1260; Y 200: F630, in inches F24.803), a G61 block
+// runs below the start speed (2400 steps/s: X at F1440). The Nanotec in steps slows both shares
+// of a diagonal by one factor (o at most 25 000), so they still arrive together.
 void TestProgramCheckWhole::check_feedAboveTheHighest_runsAtItWithNote_data()
 {
     QTest::addColumn<QString>("machine");
@@ -268,6 +275,22 @@ void TestProgramCheckWhole::check_axisTheMachineLacks_named()
     QVERIFY(p);
     QCOMPARE(texts(ProgramCheck::check(*p, facts).errors),
              (QStringList{"1:5: the machine has no axis B", "2:11: the machine has no axis B"}));
+}
+
+// A G91 move from an unknown position: the E-LAB counts it in steps from wherever it stands,
+// the laser axis (the mill's A) moves to targets only and its adapter refuses it
+// (LaserAxisMotion::moveRelative), so the check refuses it first; once A is referenced, or its
+// position known, it passes.
+void TestProgramCheckWhole::check_relativeFromUnknown_refusedWhereTheModelMovesToTargetsOnly()
+{
+    MachineFacts facts = machineFacts("mill");
+    QCOMPARE(texts(ProgramCheck::check(parsed("G91 G0 X1 A2\n", facts), facts).errors),
+             QStringList{"1:11: A: controller \"tilt\" moves to targets only, so a relative move "
+                         "(G91) needs the axis' position: home it (G28 A) or move it to an "
+                         "absolute target first"});
+    QVERIFY(ProgramCheck::check(parsed("G28 A0\nG91 G0 X1 A2\n", facts), facts).ok());
+    facts.knownPositions = positions("A=0");
+    QVERIFY(ProgramCheck::check(parsed("G91 G0 X1 A2\n", facts), facts).ok());
 }
 
 // 10^6 passes of 10^6 passes of nothing: no block runs, so the walk must not spin 10^12 times.

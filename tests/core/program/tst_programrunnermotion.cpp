@@ -43,13 +43,14 @@ private:
 };
 
 // Issue 29: with "spindle": {"maxRpm": 24000} a program's S is in rpm: the board receives
-// S / 24000 of its full scale 1000 (SetSpindleRPM, "einen Wert zwischen 0 und 1000").
+// S / 24000 of its full scale 1000 (SetSpindleRPM, "einen Wert zwischen 0 und 1000"); S30000
+// runs at 24000 (issue 50).
 void TestProgramRunnerMotion::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
 {
     MachineDescription d = description();
     d.spindle.maxRpm = 24000;
     recreateMachine(d);
-    QVERIFY(run("M3 S12000\nM0\nM3 S24000\nM0\nM3 S6000\nM0\nM5\n"));
+    QVERIFY(run("M3 S12000\nM0\nM3 S24000\nM0\nM3 S6000\nM0\nM3 S30000\nM0\nM5\n"));
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
     QCOMPARE(boardRpm(), quint32(500));
     QVERIFY(frameIndex(*m_elab, QByteArray("\x01"
@@ -62,6 +63,16 @@ void TestProgramRunnerMotion::spindle_maxRpm_boardGetsSMappedOntoItsFullScale()
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 6, 30000);
     QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
     QCOMPARE(boardRpm(), quint32(250));
+    // Issue 50 item 1: S above maxRpm runs at maxRpm (GRBL's $30), the board at its full scale,
+    // and the run's check said so in a note.
+    m_runner->resume();
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->currentLine(), 8, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_runner->state(), RunState::Paused, 30000);
+    QCOMPARE(boardRpm(), quint32(1000));
+    const QList<ProgramError> notes = m_runner->checkNotes();
+    QVERIFY(std::any_of(notes.cbegin(), notes.cend(), [](const ProgramError& n) {
+        return n.line == 7 && n.message.contains(QStringLiteral("S30000"));
+    }));
     m_runner->resume();
     WAIT_ENDED();
     VERIFY_STATE(RunState::Finished);
