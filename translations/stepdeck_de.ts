@@ -5055,10 +5055,6 @@
             <translation>das Koordinatensystem kann unter Werkzeugradiuskorrektur nicht wechseln: zuerst G40, wie in LinuxCNC</translation>
         </message>
         <message>
-            <source>%1 enters cutter compensation: the first move after G41/G42 must be a straight line (G0 or G1)</source>
-            <translation>%1 beginnt die Werkzeugradiuskorrektur: die erste Bewegung nach G41/G42 muss eine Gerade sein (G0 oder G1)</translation>
-        </message>
-        <message>
             <source>%1 leaves cutter compensation: the first move after G40 must be a straight line (G0 or G1), as in LinuxCNC</source>
             <translation>%1 beendet die Werkzeugradiuskorrektur: die erste Bewegung nach G40 muss eine Gerade sein (G0 oder G1), wie in LinuxCNC</translation>
         </message>

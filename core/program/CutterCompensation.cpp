@@ -136,6 +136,13 @@ CutterCompensation::CutterCompensation(const machine::MachineDescription& d, con
     }
 }
 
+QString CutterCompensation::arcEntryRefusal(const ProgramBlock& block)
+{
+    return tr("%1 enters cutter compensation: the first move after G41/G42 must be a straight "
+              "line (G0 or G1)")
+        .arg(blockWord(block));
+}
+
 bool CutterCompensation::applies(const ProgramBlock& block) const
 {
     const bool move = block.kind == BlockKind::Rapid || block.kind == BlockKind::Feed;
@@ -404,9 +411,7 @@ CutterCompensation::lower(const ProgramBlock& block, const ProgramCoordinates& c
         // The entry (convert_straight_comp1): to where a line from the tool touches the circle
         // of the tool's radius about the programmed end.
         if (path->arc)
-            return Error{column, tr("%1 enters cutter compensation: the first move after "
-                                    "G41/G42 must be a straight line (G0 or G1)")
-                                     .arg(blockWord(block))};
+            return Error{column, arcEntryRefusal(block)};
         const double distance = length(path->end - m_tool);
         if (distance <= m_radius)
             return Error{column, tr("cutter compensation: the entry move (%1) is not longer "

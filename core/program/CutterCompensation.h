@@ -51,6 +51,9 @@ public:
     // tool-length workflow the machine uses.
     CutterCompensation(const machine::MachineDescription& d, const ToolTable& tools);
 
+    // An arc as the entry move (LinuxCNC's convert_arc_comp1 is not run here): the parser
+    // refuses it (ProgramLine), and lower() too should a block come without the parser.
+    static QString arcEntryRefusal(const ProgramBlock& block);
     // Whether `block` goes through lower(): a G0..G3 while G41/G42 is in effect, or the first
     // G0/G1 after G40 while the tool still stands off the path.
     bool applies(const ProgramBlock& block) const;

@@ -1,6 +1,7 @@
 // ProgramLine's modal words (LinuxCNC's modal groups: path control, tool length offset,
 // units, distance, feed, spindle speed) and the drilling cycles' numbers, each into the modal
 // state a program carries from line to line.
+#include "CutterCompensation.h"
 #include "ProgramLine.h"
 #include "ProgramLineChecks.h"
 #include <algorithm>
@@ -302,9 +303,7 @@ std::pair<int, QString> checkCutterComp(const Words& words, const ModalState& be
         if (isArc(b.kind))
             return {column,
                     pending == ModalState::CompMove::Entry
-                        ? ProgramLine::tr("%1 enters cutter compensation: the first move after "
-                                          "G41/G42 must be a straight line (G0 or G1)")
-                              .arg(blockWord(b))
+                        ? CutterCompensation::arcEntryRefusal(b)
                         : ProgramLine::tr("%1 leaves cutter compensation: the first move after "
                                           "G40 must be a straight line (G0 or G1), as in LinuxCNC")
                               .arg(blockWord(b))};
