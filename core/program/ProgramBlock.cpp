@@ -102,8 +102,7 @@ bool ProgramBlock::operator==(const ProgramBlock& o) const
            cycle == o.cycle && coordinateSystem == o.coordinateSystem &&
            machineCoordinates == o.machineCoordinates && fromPosition == o.fromPosition &&
            lengthTool == o.lengthTool && appliesLengthOffset == o.appliesLengthOffset &&
-           comp == o.comp &&
-           message == o.message && oNumber == o.oNumber && count == o.count &&
+           comp == o.comp && message == o.message && oNumber == o.oNumber && count == o.count &&
            partner == o.partner && columns == o.columns && actionColumn == o.actionColumn;
 }
 
