@@ -324,8 +324,11 @@ void ProgramSimulation::move(PlannedBlock& planned)
     if (block.axes.isEmpty())
         return; // "G0" alone only sets the motion mode
     // The axes of a block start together, each at its own rate: the block lasts as long as
-    // its slowest axis (no acceleration: an estimate).
+    // its slowest axis (no acceleration: an estimate). A contour's block runs along its path
+    // at F (the stream's steps are the line's, every axis at its share): the root of the
+    // axes' times squared, as a coordinated chord (arcChords).
     double seconds = 0;
+    double squares = 0;
     if (const ContourMoves::Stream* stream = planned.contour) {
         const motion::CanonicalMove line = m_contours.lineMove(
             *stream, block, m_contours.positionOf(*stream, m_programmed),
@@ -339,20 +342,24 @@ void ProgramSimulation::move(PlannedBlock& planned)
     AxisList moving;
     for (AxisMove* m = first; m != first + planned.moveCount; ++m) {
         const qint64 before = m_steps[size_t(m->axis)];
-        moveAxis(block, *m, &seconds);
+        const double axisSeconds = moveAxis(block, *m);
+        seconds = std::max(seconds, axisSeconds);
+        squares += axisSeconds * axisSeconds;
         if (feed && m_steps[size_t(m->axis)] != before)
             moving.append({m->axis, m->speed});
     }
     if (moving.size() > 1)
         noteControllers(block, moving);
     m_coordinates.advance(block, m_facts.description, &m_programmed);
+    if (planned.contour)
+        seconds = std::sqrt(squares);
     m_seconds += seconds;
     if (block.kind == BlockKind::Feed)
         m_feedSeconds += seconds;
     addPoint(block.line, block.kind == BlockKind::Rapid);
 }
 
-void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds)
+double ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m)
 {
     const machine::MachineAxis& axis = m_axes.at(m.axis);
     const size_t a = size_t(m.axis);
@@ -382,14 +389,14 @@ void ProgramSimulation::moveAxis(const ProgramBlock& block, AxisMove& m, double*
                !why.isEmpty() && m_errors->once(block.line, m.column, kUnknownPosition)) {
         m_errors->add(block.line, m.column, [&] { return why; });
     }
-    if (m.speed > 0)
-        *seconds = std::max(*seconds, distance / m.speed);
+    const double seconds = m.speed > 0 ? distance / m.speed : 0.0;
     if (!m_known[a])
-        return; // a relative move from an unknown position: its target is unknown too
+        return seconds; // a relative move from an unknown position: its target is unknown too
     // The soft limits are machine coordinates.
     checkLimit(block, m,
                block.relative ? here + m.value : m.value + m_coordinates.offset(block, axis.name));
     noteExtent(m.axis);
+    return seconds;
 }
 
 void ProgramSimulation::checkLimit(const ProgramBlock& block, AxisMove& m, double to)

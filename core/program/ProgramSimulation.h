@@ -277,7 +277,7 @@ private:
     void lower(const ProgramBlock& block);
     void move(PlannedBlock& planned);
     void home(const PlannedBlock& planned);
-    void moveAxis(const ProgramBlock& block, AxisMove& m, double* seconds);
+    double moveAxis(const ProgramBlock& block, AxisMove& m); // its seconds at its speed
     void arc(PlannedBlock& planned);
     void coordinates(PlannedBlock& planned);
     void arcChords(const ArcPath& path, PlannedBlock& planned);

@@ -83,15 +83,18 @@ bool ProgramSimulation::countChords(qint64 chords, PlannedBlock& planned)
 }
 
 // Each chord as the run sends it: an absolute move of every moving axis. Its time: along the
-// chord at F where the controllers coordinate (CoordinatedFeed), else the slowest axis' (each
-// axis at its own rate: docs/programs.md "How F maps").
+// chord at F where the controllers coordinate (CoordinatedFeed) or the arc is a contour's
+// (the E-LAB's stream), else the slowest axis' (each axis at its own rate: docs/programs.md
+// "How F maps").
 void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
 {
     const ProgramBlock& block = *planned.block;
     if (!countChords(path.chords(), planned))
         return;
     std::vector<double> speed(m_axes.size(), 0.0);
+    // A contour's arc (the E-LAB's stream) runs along its path at F too.
     bool coordinated = !block.inverseTime;
+    const bool contour = planned.contour != nullptr;
     for (const auto& [axis, value] : path.end()) {
         Q_UNUSED(value);
         if (const AxisMove* m = plannedMove(planned, axis))
@@ -116,7 +119,7 @@ void ProgramSimulation::arcChords(const ArcPath& path, PlannedBlock& planned)
             if (k == path.chords())
                 m_programmed[a] = value; // the programmed end exactly
         }
-        const double chord = coordinated ? std::sqrt(squares) : seconds;
+        const double chord = coordinated || contour ? std::sqrt(squares) : seconds;
         m_seconds += chord;
         m_feedSeconds += chord;
         addPoint(block.line);

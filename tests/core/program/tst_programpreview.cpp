@@ -376,12 +376,11 @@ void TestProgramPreview::preview_issue50Features_pathAsWorkedOutByHand_data()
                           << "$H\n$32=1\nG0 X1\n"
                           << "1:0,0 3:1,0" << 0.0 << 0.02;
     // Item 8: G2 K0 from (10,10) about (15,10) clockwise over the top: Y up to 15. The G0
-    // takes 0.4 s (Y); the check times each chord by its slowest axis at F600 (10 mm/s), which
-    // over a half circle of 5 mm is 5 x 2 sqrt 2 / 10 = 1.414 s (the E-LAB's stream runs the
-    // path itself at F: pi x 5 / 10 = 1.571 s; docs/programs.md "Preview": an estimate).
+    // takes 0.4 s (Y); the arc, a contour of the E-LAB's stream, runs its path at F600
+    // (10 mm/s): pi x 5 / 10 = 1.571 s (its chords a hair shorter).
     QTest::newRow("8 K0 on a G17 arc") << "mill"
                                        << "G0 X10 Y10\nG2 X20 Y10 I5 J0 K0 F600\n"
-                                       << "1:10,10 2:20,10" << 15.0 << 1.814;
+                                       << "1:10,10 2:20,10" << 15.0 << 1.971;
     // Item 9: the sub's return inside its if gives X6; EXISTS of a set name gives Y5.
     QTest::newRow("9 language")
         << "mill"
