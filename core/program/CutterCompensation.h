@@ -1,5 +1,6 @@
 #pragma once
 #include "ArcPath.h"
+#include "CompensationGeometry.h"
 #include "ProgramBlock.h"
 #include "ProgramCoordinates.h"
 #include <QCoreApplication>
@@ -66,18 +67,8 @@ public:
                                const AxisPositions& at, const Following& following,
                                std::vector<ProgramBlock>* out);
 
-    struct Point
-    {
-        double x = 0, y = 0;
-    };
-    // A move in the XY plane, machine coordinates: a line, or an arc about `centre`.
-    struct Path
-    {
-        bool arc = false;
-        Point start, end, centre;
-        double sweep = 0; // radians, + counter-clockwise (arcs)
-        int line = 0;     // the block's line
-    };
+    using Point = compensation::Point;
+    using Path = compensation::Path;
 
 private:
     enum class Corner : quint8 { None, Outside, Inside };
