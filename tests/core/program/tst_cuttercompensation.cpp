@@ -278,8 +278,9 @@ void TestCutterCompensation::mdi_g41_refusedInMdi()
 }
 
 // Degenerate geometry must end in a path or an error, never a hang or a position that is not a
-// number: 3000 programs from a fixed seed, G41 or G42 with tools from 0 to 12 mm, lines and
-// arcs (some of no length, reversals, full circles, tiny and huge radii) in G90 and G91.
+// number: 1000 programs from a fixed seed (about 30 s under ASan), G41 or G42 with tools from 0 to
+// 12 mm, lines and arcs (some of no length, reversals, full circles, tiny and huge radii) in G90
+// and G91.
 void TestCutterCompensation::randomPaths_checkEndsFinite()
 {
     const MachineFacts facts = millAt5050();
@@ -287,7 +288,7 @@ void TestCutterCompensation::randomPaths_checkEndsFinite()
     const auto coordinate = [&rng] { return double(int(rng.bounded(41)) - 20) / 2; };
     int ok = 0;
     int refused = 0;
-    for (int n = 0; n < 3000; ++n) {
+    for (int n = 0; n < 1000; ++n) {
         QString text = QStringLiteral("G0 X0 Y0\nG%1.1 D%2\n")
                            .arg(rng.bounded(2) ? 41 : 42)
                            .arg(figure(double(rng.bounded(25)) / 2));
@@ -322,7 +323,7 @@ void TestCutterCompensation::randomPaths_checkEndsFinite()
                 QVERIFY2(std::isfinite(v), qPrintable(text));
     }
     // Both outcomes occur: the table exercises the geometry rather than one of its refusals.
-    QVERIFY2(ok > 100 && refused > 100,
+    QVERIFY2(ok > 30 && refused > 30,
              qPrintable(QStringLiteral("%1 ok, %2 refused").arg(ok).arg(refused)));
 }
 
