@@ -278,9 +278,16 @@ CutterCompensation::lower(const ProgramBlock& block, const ProgramCoordinates& c
         m_activation = 0;
         return std::nullopt;
     }
-    if (block.comp.activation != m_activation)
+    if (block.comp.activation != m_activation) {
+        // G40 then G41/G42 with no move between: the tool still stands off the path, but the
+        // program goes on from its programmed point (LinuxCNC's current point after G40).
+        const bool offPath = m_activation != 0;
+        const Point programmed = m_programmed;
         if (std::optional<Error> e = begin(block, at))
             return e;
+        if (offPath)
+            m_programmed = programmed;
+    }
     std::optional<Error> error;
     const std::optional<Path> path = pathOf(block, coordinates, at, m_programmed, &error);
     if (error)
@@ -306,14 +313,15 @@ CutterCompensation::lower(const ProgramBlock& block, const ProgramCoordinates& c
         // of the tool's radius about the programmed end.
         if (path->arc)
             return Error{column, arcEntryRefusal(block)};
-        const double distance = length(path->end - m_tool);
+        // From the programmed point (the tool's, but after a G40 with no move since).
+        const double distance = length(path->end - m_programmed);
         if (distance <= m_radius)
             return Error{column, tr("cutter compensation: the entry move (%1) is not longer "
                                     "than the tool's radius (%2), as LinuxCNC requires")
                                      .arg(figure(distance))
                                      .arg(figure(m_radius))};
         const double theta = std::acos(m_radius / distance);
-        const Point back = m_tool - path->end;
+        const Point back = m_programmed - path->end;
         const double alpha =
             std::atan2(back.y, back.x) + (m_side == CompSide::Left ? -theta : theta);
         nominalEnd = path->end + m_radius * Point{std::cos(alpha), std::sin(alpha)};

@@ -104,6 +104,16 @@ void TestCutterCompensation::canon_toolPath_asWorkedOutByHand_data()
            "N00007 ARC_FEED(22.0000, 20.0000, 20.0000, 20.0000, -1, -1.0000, 0.0000)|"
            "N00007 STRAIGHT_FEED(22.0000, 0.0000, -1.0000, 0.0000)|"
            "N00008 STRAIGHT_FEED(30.0000, 0.0000, -1.0000, 0.0000)";
+    // G40 and G41 again with no move between: the tool stands at (22,0), the program at (20,0).
+    // The new entry is laid from the programmed point, as LinuxCNC's current point after G40:
+    // from (20,0) to (30,0) it touches the circle of 2 at (29.6, 1.9596) (from the tool's
+    // (22,0) it would be (29.5, 1.9365)); G40 then leaves to (40,0).
+    QTest::newRow("G40 then G41 without a move")
+        << "G0 X-10 Y0\nG41.1 D4\nG1 X0 Y0 F100\nG1 X0 Y20\nG1 X20 Y20\nG1 X20 Y0\nG40\n"
+           "G41.1 D4\nG1 X30 Y0\nG40 G1 X40 Y0\n"
+        << kSquareCanon.section('|', 0, 7) +
+               "|N00009 STRAIGHT_FEED(29.6000, 1.9596, 0.0000, 0.0000)|"
+               "N00010 STRAIGHT_FEED(40.0000, 0.0000, 0.0000, 0.0000)";
     // A circle of radius 10 about (0,0) counter-clockwise with the tool (4 mm) on the left:
     // inside, on a circle of 8. The entry from (0,0) along +X touches the circle of 2 about
     // (10,0) at (9.6, 1.9596); the arc turns left at (10,0): inside, so the entry ends where
